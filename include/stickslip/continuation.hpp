@@ -1,0 +1,89 @@
+// Branches of periodic orbits and of steady sliding in one parameter, with
+// their special points located (not bracketed):
+//   GR  grazing-sliding: the stick phase of the stick-slip orbit shrinks to
+//       zero; the orbit touches x' = v at the exit point (x0, v);
+//   HB  Hopf point of steady sliding, where 2 beta + mu'(v) = 0;
+//   LP  fold: the branch turns back in the parameter (smooth, or at GR).
+// Stick-slip orbits are unique for given parameters (constant return map on
+// Omega), so that part of a branch is followed in the parameter itself.
+// Pure-slip orbits are followed by pseudo-arclength continuation (Keller 1977)
+// of G(a, p) = 0 in (a, p), a = x* - xbar the section amplitude, which starts
+// at (0, p_HB) with tangent (1, 0) and ends there.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/orbit.hpp"
+
+namespace stickslip {
+
+enum class PointKind { kStickSlip, kPureSlip, kEquilibrium };
+const char* PointKindName(PointKind k);  // "stick-slip", "pure-slip", "equilibrium"
+
+struct BranchPoint {
+  double p = 0;  // the continued parameter
+  PointKind kind = PointKind::kEquilibrium;
+  int branch = 0;  // which curve: rows of one branch are consecutive
+  double period = 0;  // nan for the equilibrium
+  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  double t_stick = 0;
+  // Nontrivial Floquet multiplier; for the equilibrium the largest real part
+  // of its eigenvalues.
+  double multiplier = 0;
+  bool stable = false;
+  double amplitude = 0;  // pure slip: section amplitude a; else (x_max - x_min) / 2
+};
+
+enum class SpecialKind { kGrazing, kHopf, kFold };
+const char* SpecialLabel(SpecialKind k);  // "GR", "HB", "LP"
+
+struct SpecialPoint {
+  SpecialKind kind = SpecialKind::kHopf;
+  double p = 0;
+  double period = 0, x_min = 0, x_max = 0, xdot_min = 0;
+  // GR: the nontrivial multiplier on the stick-slip side and on the pure-slip side.
+  double multiplier_before = 0, multiplier_after = 0;
+  std::string description;
+};
+
+struct ContinuationOptions {
+  std::string param = "v";
+  double from = 0.05;
+  double to = 0.5;
+  OrbitOptions orbit;
+  // Largest step, as a fraction of |to - from| (so at least 1/max_step points
+  // on a branch that spans the range).
+  double max_step = 0.01;
+  double min_step = 1e-7;      // fraction of |to - from| below which a branch fails
+  double locate_tol = 1e-11;   // special points, in the parameter
+  int max_points = 20000;      // per branch
+  // Stick-slip multipliers by the variational equations (otherwise 0, which
+  // S_in = diag(1, 0) makes exact).
+  bool stick_slip_floquet = false;
+  std::function<bool()> cancelled;                   // polled between points
+  std::function<void(const BranchPoint&)> progress;  // called for every point
+  // Empty if valid, else one line naming the offending value. base: the model.
+  std::string ValidationError(const Params& base) const;
+};
+
+enum class ContinuationStatus {
+  kOk,
+  kFailed,     // a numerical failure; message says where; points so far kept
+  kCancelled,  // cancelled() returned true; points so far kept
+};
+const char* ContinuationStatusName(ContinuationStatus s);
+
+struct ContinuationResult {
+  ContinuationStatus status = ContinuationStatus::kOk;
+  std::string message;
+  std::vector<BranchPoint> points;
+  std::vector<SpecialPoint> special;
+  bool partial() const { return status != ContinuationStatus::kOk; }
+};
+
+// Throws InvalidArgument if the options or the model at either end are invalid.
+ContinuationResult Continue(const Params& base, const ContinuationOptions& options);
+
+}  // namespace stickslip

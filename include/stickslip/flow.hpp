@@ -1,0 +1,117 @@
+// Exact event-driven integration of the Filippov belt model: each slip mode is
+// integrated with CVODE on its own smooth field; switches are located by
+// CVODE's root finding (CVodeRootInit); stick is solved in closed form (x' = v).
+// Optionally the variational equations ride along, and the saltation matrices
+// of the design notes are applied at every switch, giving d z(t) / d z(t0).
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stickslip/cvode.hpp"
+#include "stickslip/model.hpp"
+
+namespace stickslip {
+
+struct FlowOptions {
+  double rtol = 1e-11;  // CVODE relative tolerance
+  double atol = 1e-13;  // CVODE absolute tolerance
+  Method method = Method::kAdams;
+  long max_steps = 200000;     // CVODE steps per slip segment
+  long max_switches = 1000000;  // mode changes per run
+  // Empty if valid, otherwise one line naming the offending option.
+  std::string ValidationError() const;
+};
+
+// Where a run stops. The defaults integrate until t_max with all switching.
+struct StopRule {
+  double t_max = std::numeric_limits<double>::infinity();
+  bool at_stick = false;         // on arrival in Omega, before sticking
+  bool at_section = false;       // where x' crosses 0 downwards (a maximum of x)
+  bool at_velocity_max = false;  // at the first maximum of x' in slip below, after the start
+  bool switching = true;         // false: stay on the start mode's smooth field
+};
+
+enum class FlowStatus {
+  kTimeLimit,         // reached t_max
+  kStick,             // arrived in Omega (StopRule::at_stick)
+  kSection,           // x' = 0 downwards (StopRule::at_section)
+  kVelocityMax,       // a maximum of x' (StopRule::at_velocity_max)
+  kIntegratorFailed,  // CVODE returned an error; message says where
+  kTooManySwitches,   // more than FlowOptions::max_switches mode changes
+};
+const char* FlowStatusName(FlowStatus s);
+
+// One output point of a simulation.
+struct Sample {
+  double t;
+  Vec2 z;
+  Mode mode;
+};
+using Observer = std::function<void(const Sample&)>;
+
+struct FlowResult {
+  FlowStatus status = FlowStatus::kTimeLimit;
+  std::string message;  // for kIntegratorFailed / kTooManySwitches: where and what
+  double t = 0;
+  Vec2 z = Vec2::Zero();
+  Mode mode = Mode::kSlipBelow;
+  // Extremes over the run, located as roots (x' = 0 for x, x'' = 0 for x'),
+  // together with the segment end points.
+  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  double t_stick = 0;   // time spent in stick
+  int switches = 0;     // mode changes
+  int crossings = 0;    // crossings of x' = v without sticking
+  std::vector<Mode> modes;  // the mode sequence, start mode first
+  // d z(t) / d z(t0), saltation matrices included; only with variational.
+  Mat2 jacobian = Mat2::Identity();
+  bool ok() const {
+    return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches;
+  }
+};
+
+class Flow {
+ public:
+  // Throws InvalidArgument if options are invalid.
+  Flow(const Model& model, const FlowOptions& options);
+  ~Flow();
+  Flow(const Flow&) = delete;
+  Flow& operator=(const Flow&) = delete;
+
+  // Change the model; solvers are kept and reused.
+  void set_model(const Model& model) { model_ = model; }
+  const Model& model() const { return model_; }
+  const FlowOptions& options() const { return options_; }
+
+  // Integrate from (t0, z0) in mode m0 until `stop` says so. With variational,
+  // the result carries d z / d z0. With observer and output_dt > 0, samples are
+  // reported every output_dt and at every switch.
+  FlowResult Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, bool variational,
+                 double output_dt = 0, const Observer& observer = nullptr);
+  // Same, starting in the mode the Filippov rule gives z0.
+  FlowResult Run(double t0, const Vec2& z0, const StopRule& stop, bool variational = false) {
+    return Run(t0, z0, model_.ModeAt(z0), stop, variational);
+  }
+
+  long total_steps() const { return total_steps_; }
+
+ private:
+  struct SlipEnd;
+  SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational,
+               double output_dt, double& next_output, const Observer& observer, FlowResult& r);
+  Cvode& Solver(bool variational);
+  static int Rhs(double t, N_Vector y, N_Vector ydot, void* data);
+  static int RhsVar(double t, N_Vector y, N_Vector ydot, void* data);
+  static int Roots(double t, N_Vector y, double* g, void* data);
+
+  Model model_;
+  FlowOptions options_;
+  Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
+  std::unique_ptr<Cvode> plain_, var_;
+  long total_steps_ = 0;
+};
+
+}  // namespace stickslip

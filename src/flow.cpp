@@ -1,0 +1,326 @@
+#include "stickslip/flow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "stickslip/errors.hpp"
+#include "stickslip/roots.hpp"
+
+namespace stickslip {
+
+const char* FlowStatusName(FlowStatus s) {
+  switch (s) {
+    case FlowStatus::kTimeLimit:
+      return "time-limit";
+    case FlowStatus::kStick:
+      return "stick";
+    case FlowStatus::kSection:
+      return "section";
+    case FlowStatus::kVelocityMax:
+      return "velocity-max";
+    case FlowStatus::kIntegratorFailed:
+      return "integrator-failed";
+    case FlowStatus::kTooManySwitches:
+      return "too-many-switches";
+  }
+  return "?";
+}
+
+std::string FlowOptions::ValidationError() const {
+  std::ostringstream os;
+  if (!(rtol >= 1e-14 && rtol <= 1e-2)) {
+    os << "rtol = " << rtol << " must be in [1e-14, 1e-2]";
+  } else if (!(atol >= 1e-16 && atol <= 1e-2)) {
+    os << "atol = " << atol << " must be in [1e-16, 1e-2]";
+  } else if (max_steps < 10) {
+    os << "max_steps = " << max_steps << " must be >= 10";
+  } else if (max_switches < 1) {
+    os << "max_switches = " << max_switches << " must be >= 1";
+  }
+  return os.str();
+}
+
+// Root functions in a slip mode (design notes, hard cases):
+//   g0 = x' - v   arrival at the switching surface;
+//   g1 = x''      extremum of x': catches a touch of x' = v shorter than a step;
+//   g2 = x'       extremum of x, and the Poincare section of pure-slip orbits.
+constexpr int kNumRoots = 3;
+
+int Flow::Rhs(double /*t*/, N_Vector y, N_Vector ydot, void* data) {
+  const auto* self = static_cast<const Flow*>(data);
+  const double* z = N_VGetArrayPointer(y);
+  double* f = N_VGetArrayPointer(ydot);
+  f[0] = z[1];
+  f[1] = self->model_.Acceleration(self->mode_, z[0], z[1]);
+  return 0;
+}
+
+// State plus Phi' = J Phi, Phi stored column-major in z[2..5]. An augmented
+// system (rather than CVODES forward sensitivities) because it is one small
+// dense system whose error control covers Phi, with no extra solver set-up.
+int Flow::RhsVar(double t, N_Vector y, N_Vector ydot, void* data) {
+  Rhs(t, y, ydot, data);
+  const auto* self = static_cast<const Flow*>(data);
+  const double* z = N_VGetArrayPointer(y);
+  double* f = N_VGetArrayPointer(ydot);
+  const double c = -2.0 * self->model_.beta() + self->model_.SlipForceSlope(self->mode_, z[1]);
+  for (int col = 0; col < 2; ++col) {
+    const double p0 = z[2 + 2 * col], p1 = z[3 + 2 * col];
+    f[2 + 2 * col] = p1;
+    f[3 + 2 * col] = -p0 + c * p1;
+  }
+  return 0;
+}
+
+int Flow::Roots(double /*t*/, N_Vector y, double* g, void* data) {
+  const auto* self = static_cast<const Flow*>(data);
+  const double* z = N_VGetArrayPointer(y);
+  g[0] = z[1] - self->model_.v();
+  g[1] = self->model_.Acceleration(self->mode_, z[0], z[1]);
+  g[2] = z[1];
+  return 0;
+}
+
+Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), options_(options) {
+  const std::string err = options.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+}
+
+Flow::~Flow() = default;
+
+Cvode& Flow::Solver(bool variational) {
+  auto& slot = variational ? var_ : plain_;
+  if (!slot) {
+    slot = std::make_unique<Cvode>(variational ? 6 : 2, options_.method, options_.rtol,
+                                   options_.atol, options_.max_steps,
+                                   variational ? &Flow::RhsVar : &Flow::Rhs, kNumRoots,
+                                   &Flow::Roots, this);
+  }
+  return *slot;
+}
+
+struct Flow::SlipEnd {
+  enum Kind { kArrival, kSection, kVelocityMax, kTime, kFail } kind;
+  double t;
+  Vec2 z;
+  Mat2 phi;
+};
+
+namespace {
+void Extend(FlowResult& r, const Vec2& z) {
+  r.x_min = std::min(r.x_min, z[0]);
+  r.x_max = std::max(r.x_max, z[0]);
+  r.xdot_min = std::min(r.xdot_min, z[1]);
+  r.xdot_max = std::max(r.xdot_max, z[1]);
+}
+}  // namespace
+
+Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational,
+                         double output_dt, double& next_output, const Observer& observer,
+                         FlowResult& r) {
+  Cvode& cv = Solver(variational);
+  const int n = cv.size();
+  double init[6] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0};
+  cv.Reinit(t0, init);
+  const double t_end = std::min(stop.t_max, t0 + 1e9);
+  cv.SetStopTime(t_end);
+  const double v = model_.v();
+  long steps_before = cv.steps();
+
+  auto finish = [&](SlipEnd::Kind kind, double t, const double* y) {
+    SlipEnd e{kind, t, Vec2(y[0], y[1]), Mat2::Identity()};
+    if (variational) e.phi << y[2], y[4], y[3], y[5];
+    total_steps_ += cv.steps() - steps_before;
+    return e;
+  };
+  // Locate a level crossing of x' inside [a, b] of the last step on the
+  // interpolant, and end the segment there.
+  double buf[6];
+  auto locate = [&](double a, double b, double level, SlipEnd::Kind kind) {
+    auto f = [&](double t) {
+      cv.Interpolate(t, buf);
+      return buf[1] - level;
+    };
+    const RootResult root = FindRoot(f, a, b, 1e-15 * std::max(1.0, std::abs(b)));
+    cv.Interpolate(root.x, buf);
+    buf[1] = level;
+    return finish(kind, root.x, buf);
+  };
+
+  double t_lo = t0, y_lo = z0[1], t_start = t0;
+  bool restarted = false;
+  for (;;) {
+    const bool sampling = output_dt > 0 && observer;
+    const double tout = sampling ? std::min(next_output, t_end) : t_end;
+    double t = t0;
+    const int flag = cv.Advance(tout, &t);
+    const double* y = cv.y();
+    if (flag == CV_ILL_INPUT && !restarted && t_lo > t_start) {
+      // cvRcheck2 refuses a root function that is exactly zero at the last
+      // root and just after it (x' = v and x'' = 0 together at a grazing
+      // touch). Restart there: cvRcheck1 then sets such a function aside.
+      std::copy(cv.y(), cv.y() + n, buf);
+      cv.Interpolate(t_lo, buf);
+      total_steps_ += cv.steps() - steps_before;
+      cv.Reinit(t_lo, buf);
+      steps_before = 0;
+      cv.SetStopTime(t_end);
+      t_start = t_lo;
+      restarted = true;
+      continue;
+    }
+    if (flag < 0) {
+      std::ostringstream os;
+      os << "CVode failed (flag " << flag << ") at t = " << t << " in " << ModeName(mode_)
+         << " at x = " << y[0] << ", x' = " << y[1] << ": " << cv.last_error();
+      r.message = os.str();
+      return finish(SlipEnd::kFail, t, y);
+    }
+    if (flag == CV_ROOT_RETURN) {
+      int rf[kNumRoots];
+      cv.RootInfo(rf);
+      // A start on a root surface (x'' = 0 at the stick exit, say) holds only
+      // to rounding; an event at t = t0 is not an event.
+      if (t - t_start <= 64 * 2.2e-16 * std::max(1.0, std::abs(t_start))) continue;
+      if (rf[0] != 0 && stop.switching) {
+        double z[2] = {y[0], v};
+        std::copy(y + 2, y + n, buf + 2);
+        buf[0] = z[0];
+        buf[1] = z[1];
+        return finish(SlipEnd::kArrival, t, buf);
+      }
+      if (rf[1] != 0) {
+        r.xdot_min = std::min(r.xdot_min, y[1]);
+        r.xdot_max = std::max(r.xdot_max, y[1]);
+        const double a = std::max(t_lo, cv.LastStepStart());
+        // A touch of x' = v that began and ended within one step.
+        const bool beyond = mode_ == Mode::kSlipBelow ? y[1] > v : y[1] < v;
+        if (stop.switching && beyond) return locate(a, t, v, SlipEnd::kArrival);
+        // Likewise a double crossing of x' = 0 inside one step.
+        if (rf[2] == 0 && (y[1] > 0) != (y_lo > 0)) {
+          r.x_min = std::min(r.x_min, y[0]);
+          r.x_max = std::max(r.x_max, y[0]);
+          if (stop.at_section && y_lo > 0) return locate(a, t, 0.0, SlipEnd::kSection);
+        }
+        if (stop.at_velocity_max && rf[1] < 0 && mode_ == Mode::kSlipBelow) return finish(SlipEnd::kVelocityMax, t, y);
+      }
+      if (rf[2] != 0) {
+        r.x_min = std::min(r.x_min, y[0]);
+        r.x_max = std::max(r.x_max, y[0]);
+        if (stop.at_section && rf[2] < 0) {
+          std::copy(y, y + n, buf);
+          buf[1] = 0.0;
+          return finish(SlipEnd::kSection, t, buf);
+        }
+      }
+      t_lo = t;
+      y_lo = y[1];
+      restarted = false;
+      continue;
+    }
+    if (t >= t_end) return finish(SlipEnd::kTime, t, y);
+    // An output time.
+    observer(Sample{t, Vec2(y[0], y[1]), mode_});
+    next_output += output_dt;
+    t_lo = t;
+    y_lo = y[1];
+  }
+}
+
+FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, bool variational,
+                     double output_dt, const Observer& observer) {
+  if (!z0.allFinite()) throw InvalidArgument("Flow::Run: start state is not finite");
+  if (m0 == Mode::kStick && (z0[1] != model_.v() || !model_.InStickInterval(z0[0])))
+    throw InvalidArgument("Flow::Run: stick mode requested off the stick set");
+  if (!(stop.t_max > t0)) throw InvalidArgument("Flow::Run: t_max must be > t0");
+  FlowResult r;
+  r.x_min = r.x_max = z0[0];
+  r.xdot_min = r.xdot_max = z0[1];
+  r.modes.push_back(m0);
+  Mode mode = m0;
+  double t = t0;
+  Vec2 z = z0;
+  Mat2 M = Mat2::Identity();
+  const double v = model_.v();
+  const bool sampling = output_dt > 0 && observer;
+  double next_output = t0;
+  if (sampling) {
+    observer(Sample{t0, z0, m0});
+    next_output = t0 + output_dt;
+  }
+  auto done = [&](FlowStatus s) {
+    r.status = s;
+    r.t = t;
+    r.z = z;
+    r.mode = mode;
+    r.jacobian = M;
+    Extend(r, z);
+    if (sampling) observer(Sample{t, z, mode});
+    return r;
+  };
+
+  for (;;) {
+    if (r.switches > options_.max_switches) {
+      std::ostringstream os;
+      os << "more than " << options_.max_switches << " mode changes by t = " << t;
+      r.message = os.str();
+      return done(FlowStatus::kTooManySwitches);
+    }
+    if (mode == Mode::kStick) {
+      // Seed eq. (3.6): x = x(0) + v t until x + 2 beta v = mu_s.
+      const double x_exit = model_.ExitPoint()[0];
+      const double t_exit = t + (x_exit - z[0]) / v;
+      const double t_stop = std::min(t_exit, stop.t_max);
+      while (sampling && next_output < t_stop) {
+        observer(Sample{next_output, Vec2(z[0] + v * (next_output - t), v), Mode::kStick});
+        next_output += output_dt;
+      }
+      r.t_stick += t_stop - t;
+      if (t_exit >= stop.t_max) {
+        z[0] += v * (stop.t_max - t);
+        t = stop.t_max;
+        return done(FlowStatus::kTimeLimit);
+      }
+      t = t_exit;
+      z = model_.ExitPoint();
+      Extend(r, z);
+      if (variational) M = model_.SaltationStickOut() * M;
+      mode = Mode::kSlipBelow;  // v > 0: stick always ends at x0 into slip below
+      ++r.switches;
+      r.modes.push_back(mode);
+      if (sampling) observer(Sample{t, z, mode});
+      continue;
+    }
+    mode_ = mode;
+    const SlipEnd e = Slip(t, z, stop, variational, output_dt, next_output, observer, r);
+    if (variational) M = e.phi * M;
+    t = e.t;
+    z = e.z;
+    Extend(r, z);
+    switch (e.kind) {
+      case SlipEnd::kFail:
+        return done(FlowStatus::kIntegratorFailed);
+      case SlipEnd::kTime:
+        return done(FlowStatus::kTimeLimit);
+      case SlipEnd::kSection:
+        return done(FlowStatus::kSection);
+      case SlipEnd::kVelocityMax:
+        return done(FlowStatus::kVelocityMax);
+      case SlipEnd::kArrival:
+        break;
+    }
+    const Mode next = model_.ModeAfterArrival(mode, z[0]);
+    if (next == Mode::kStick && stop.at_stick) return done(FlowStatus::kStick);
+    if (variational)
+      M = (next == Mode::kStick ? Model::SaltationStickIn() : model_.SaltationCrossing(mode, next, z)) *
+          M;
+    if (next != Mode::kStick) ++r.crossings;
+    mode = next;
+    ++r.switches;
+    r.modes.push_back(mode);
+    if (sampling) observer(Sample{t, z, mode});
+  }
+}
+
+}  // namespace stickslip

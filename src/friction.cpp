@@ -1,0 +1,72 @@
+#include "stickslip/friction.hpp"
+
+#include <cmath>
+
+namespace stickslip {
+
+Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0) {
+  switch (law_) {
+    case LawKind::kCubic:
+      a_ = p.k1();
+      b_ = p.k3();
+      break;
+    case LawKind::kCoulomb:
+      a_ = p.mu_k;
+      break;
+    case LawKind::kStribeck:
+      a_ = p.mu_k;
+      b_ = p.v_s;
+      break;
+    case LawKind::kLeine:
+      a_ = p.delta;
+      break;
+  }
+}
+
+double Friction::Mu(double s) const {
+  switch (law_) {
+    case LawKind::kCubic:  // seed (3.3): mu_s - k1 s + k3 s^3
+      return mu_s_ - a_ * s + b_ * s * s * s;
+    case LawKind::kCoulomb:
+      return a_;
+    case LawKind::kStribeck:
+      return a_ + (mu_s_ - a_) * std::exp(-s / b_);
+    case LawKind::kLeine:  // Leine et al. (1998): mu_s / (1 + delta s)
+      return mu_s_ / (1.0 + a_ * s);
+  }
+  return 0;
+}
+
+double Friction::DMu(double s) const {
+  switch (law_) {
+    case LawKind::kCubic:
+      return -a_ + 3.0 * b_ * s * s;
+    case LawKind::kCoulomb:
+      return 0.0;
+    case LawKind::kStribeck:
+      return -(mu_s_ - a_) / b_ * std::exp(-s / b_);
+    case LawKind::kLeine: {
+      const double d = 1.0 + a_ * s;
+      return -mu_s_ * a_ / (d * d);
+    }
+  }
+  return 0;
+}
+
+double Friction::D3Mu(double s) const {
+  switch (law_) {
+    case LawKind::kCubic:
+      return 6.0 * b_;
+    case LawKind::kCoulomb:
+      return 0.0;
+    case LawKind::kStribeck:
+      return -(mu_s_ - a_) / (b_ * b_ * b_) * std::exp(-s / b_);
+    case LawKind::kLeine: {
+      const double d = 1.0 + a_ * s;
+      return -6.0 * mu_s_ * a_ * a_ * a_ / (d * d * d * d);
+    }
+  }
+  return 0;
+}
+
+}  // namespace stickslip

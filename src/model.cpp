@@ -1,0 +1,81 @@
+#include "stickslip/model.hpp"
+
+#include <cmath>
+
+namespace stickslip {
+
+const char* ModeName(Mode m) {
+  switch (m) {
+    case Mode::kSlipBelow:
+      return "slip-below";
+    case Mode::kStick:
+      return "stick";
+    case Mode::kSlipAbove:
+      return "slip-above";
+  }
+  return "?";
+}
+
+Model::Model(const Params& p) : p_(p), friction_((Validate(p), p)), two_beta_(2.0 * p.beta) {}
+
+Mat2 Model::Jacobian(Mode m, const Vec2& z) const {
+  Mat2 J;
+  if (m == Mode::kStick) {
+    J.setZero();
+    return J;
+  }
+  J << 0.0, 1.0, -1.0, -two_beta_ + SlipForceSlope(m, z[1]);
+  return J;
+}
+
+bool Model::InStickInterval(double x) const {
+  return std::abs(StickForce(x)) <= p_.mu_s;
+}
+
+Mode Model::ModeAt(const Vec2& z) const {
+  if (z[1] < p_.v) return Mode::kSlipBelow;
+  if (z[1] > p_.v) return Mode::kSlipAbove;
+  if (InStickInterval(z[0])) return Mode::kStick;
+  // Outside Omega both one-sided accelerations point the same way.
+  return StickForce(z[0]) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove;
+}
+
+Mode Model::ModeAfterArrival(Mode from, double x) const {
+  if (InStickInterval(x)) return Mode::kStick;
+  return from == Mode::kSlipBelow ? Mode::kSlipAbove : Mode::kSlipBelow;
+}
+
+Mat2 Model::SaltationStickIn() {
+  Mat2 S;
+  S << 1.0, 0.0, 0.0, 0.0;
+  return S;
+}
+
+Mat2 Model::SaltationStickOut() const {
+  // f_slip - f_stick at the exit point is (0, mu(0+) - mu_s); zero unless coulomb.
+  const Vec2 z = ExitPoint();
+  const Vec2 df = Field(Mode::kSlipBelow, z) - Field(Mode::kStick, z);
+  Mat2 S = Mat2::Identity();
+  S.col(0) += df / p_.v;  // g = (1, 0), g^T f_stick = v
+  return S;
+}
+
+Mat2 Model::SaltationCrossing(Mode before, Mode after, const Vec2& z) const {
+  const Vec2 fb = Field(before, z);
+  const Vec2 fa = Field(after, z);
+  Mat2 S = Mat2::Identity();
+  S.col(1) += (fa - fb) / fb[1];  // n = (0, 1)
+  return S;
+}
+
+Equilibrium Model::SteadySliding() const {
+  Equilibrium e;
+  e.x = friction_.Mu(p_.v);
+  e.damping = two_beta_ + friction_.DMu(p_.v);
+  const std::complex<double> disc = std::sqrt(std::complex<double>(e.damping * e.damping - 4.0));
+  e.lambda1 = 0.5 * (-e.damping + disc);
+  e.lambda2 = 0.5 * (-e.damping - disc);
+  return e;
+}
+
+}  // namespace stickslip

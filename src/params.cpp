@@ -1,0 +1,181 @@
+#include "stickslip/params.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+const char* LawName(LawKind law) {
+  switch (law) {
+    case LawKind::kCubic:
+      return "cubic";
+    case LawKind::kCoulomb:
+      return "coulomb";
+    case LawKind::kStribeck:
+      return "stribeck";
+    case LawKind::kLeine:
+      return "leine";
+  }
+  return "?";
+}
+
+LawKind LawFromName(const std::string& name) {
+  for (LawKind k : {LawKind::kCubic, LawKind::kCoulomb, LawKind::kStribeck, LawKind::kLeine}) {
+    if (name == LawName(k)) return k;
+  }
+  throw InvalidArgument("unknown friction law '" + name +
+                        "' (expected cubic, coulomb, stribeck or leine)");
+}
+
+double Params::k1() const { return 3.0 * (mu_s - mu_m) / (2.0 * v_m); }
+double Params::k3() const { return (mu_s - mu_m) / (2.0 * v_m * v_m * v_m); }
+
+std::vector<std::string> ParameterNames(LawKind law) {
+  std::vector<std::string> names = {"beta", "v", "mu_s"};
+  switch (law) {
+    case LawKind::kCubic:
+      names.insert(names.end(), {"mu_m", "v_m"});
+      break;
+    case LawKind::kCoulomb:
+      names.insert(names.end(), {"mu_k"});
+      break;
+    case LawKind::kStribeck:
+      names.insert(names.end(), {"mu_k", "v_s"});
+      break;
+    case LawKind::kLeine:
+      names.insert(names.end(), {"delta"});
+      break;
+  }
+  return names;
+}
+
+std::vector<std::string> AllParameterNames() {
+  return {"beta", "v", "mu_s", "mu_m", "v_m", "mu_k", "v_s", "delta"};
+}
+
+bool IsParameterName(const std::string& name) {
+  const auto all = AllParameterNames();
+  return std::find(all.begin(), all.end(), name) != all.end();
+}
+
+namespace {
+double* Field(Params& p, const std::string& name) {
+  if (name == "beta") return &p.beta;
+  if (name == "v") return &p.v;
+  if (name == "mu_s") return &p.mu_s;
+  if (name == "mu_m") return &p.mu_m;
+  if (name == "v_m") return &p.v_m;
+  if (name == "mu_k") return &p.mu_k;
+  if (name == "v_s") return &p.v_s;
+  if (name == "delta") return &p.delta;
+  throw InvalidArgument("unknown parameter '" + name +
+                        "' (expected beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta)");
+}
+
+std::string Num(double x) {
+  std::ostringstream os;
+  os.precision(12);
+  os << x;
+  return os.str();
+}
+}  // namespace
+
+double GetParameter(const Params& p, const std::string& name) {
+  return *Field(const_cast<Params&>(p), name);
+}
+
+void SetParameter(Params& p, const std::string& name, double value) { *Field(p, name) = value; }
+
+std::string ValidationError(const Params& p) {
+  for (const auto& name : ParameterNames(p.law)) {
+    const double x = GetParameter(p, name);
+    if (!std::isfinite(x)) return name + " = " + Num(x) + " is not a finite number";
+  }
+  if (p.beta < 0) return "beta = " + Num(p.beta) + " must be >= 0";
+  if (p.v <= 0) return "v = " + Num(p.v) + " must be > 0";
+  if (p.mu_s <= 0) return "mu_s = " + Num(p.mu_s) + " must be > 0";
+  switch (p.law) {
+    case LawKind::kCubic:
+      if (p.mu_m <= 0) return "mu_m = " + Num(p.mu_m) + " must be > 0";
+      if (p.mu_m >= p.mu_s) return "mu_m = " + Num(p.mu_m) + " must be < mu_s = " + Num(p.mu_s);
+      if (p.v_m <= 0) return "v_m = " + Num(p.v_m) + " must be > 0";
+      break;
+    case LawKind::kCoulomb:
+    case LawKind::kStribeck:
+      if (p.mu_k <= 0) return "mu_k = " + Num(p.mu_k) + " must be > 0";
+      if (p.mu_k >= p.mu_s) return "mu_k = " + Num(p.mu_k) + " must be < mu_s = " + Num(p.mu_s);
+      if (p.law == LawKind::kStribeck && p.v_s <= 0)
+        return "v_s = " + Num(p.v_s) + " must be > 0";
+      break;
+    case LawKind::kLeine:
+      if (p.delta < 0) return "delta = " + Num(p.delta) + " must be >= 0";
+      break;
+  }
+  return "";
+}
+
+void Validate(const Params& p) {
+  const std::string err = ValidationError(p);
+  if (!err.empty()) throw InvalidArgument(err);
+}
+
+double LengthScale(double mass, double stiffness, double gravity) {
+  return mass * gravity / stiffness;
+}
+double TimeScale(double mass, double stiffness) { return std::sqrt(mass / stiffness); }
+
+namespace {
+void RequirePositive(const char* name, double x) {
+  if (!std::isfinite(x) || x <= 0)
+    throw InvalidArgument(std::string(name) + " = " + Num(x) + " must be a finite number > 0");
+}
+}  // namespace
+
+Params ToDimensionless(const PhysicalParams& phys) {
+  RequirePositive("mass", phys.mass);
+  RequirePositive("stiffness", phys.stiffness);
+  RequirePositive("gravity", phys.gravity);
+  if (!std::isfinite(phys.damping) || phys.damping < 0)
+    throw InvalidArgument("damping = " + Num(phys.damping) + " must be a finite number >= 0");
+  const double L = LengthScale(phys.mass, phys.stiffness, phys.gravity);
+  const double t0 = TimeScale(phys.mass, phys.stiffness);
+  const double speed = L / t0;  // V = v L / t0
+  Params p;
+  p.law = phys.law;
+  p.beta = phys.damping / (2.0 * std::sqrt(phys.stiffness * phys.mass));
+  p.v = phys.belt_speed / speed;
+  p.mu_s = phys.mu_s;
+  p.mu_m = phys.mu_m;
+  p.v_m = phys.speed_m / speed;
+  p.mu_k = phys.mu_k;
+  p.v_s = phys.speed_s / speed;
+  p.delta = phys.delta * speed;  // delta s is dimensionless
+  return p;
+}
+
+PhysicalParams ToPhysical(const Params& p, double mass, double stiffness, double gravity) {
+  RequirePositive("mass", mass);
+  RequirePositive("stiffness", stiffness);
+  RequirePositive("gravity", gravity);
+  const double L = LengthScale(mass, stiffness, gravity);
+  const double speed = L / TimeScale(mass, stiffness);
+  PhysicalParams phys;
+  phys.law = p.law;
+  phys.mass = mass;
+  phys.stiffness = stiffness;
+  phys.gravity = gravity;
+  phys.damping = 2.0 * p.beta * std::sqrt(stiffness * mass);
+  phys.belt_speed = p.v * speed;
+  phys.mu_s = p.mu_s;
+  phys.mu_m = p.mu_m;
+  phys.speed_m = p.v_m * speed;
+  phys.mu_k = p.mu_k;
+  phys.speed_s = p.v_s * speed;
+  phys.delta = p.delta / speed;
+  return phys;
+}
+
+}  // namespace stickslip
