@@ -150,6 +150,8 @@ class Tracer {
   bool PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, double* a);
   // G and its partial derivatives at (a, p).
   OrbitStatus EvalG(double a, double p, double* g, double* ga, ReturnMap* map);
+  // dG/dp by a one-sided difference (forward, else backward); g = G(a, p).
+  bool DGDp(double a, double p, double g, double h, double* gp);
   double GrazingGapAt(double p, bool* ok);
   bool LocateGrazing(double p_in, double p_out, double gap_in, double gap_out, double* p_gr);
   void SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind came_from);
@@ -335,6 +337,17 @@ void Tracer::TraceStickSlip(Cursor& c) {
 OrbitStatus Tracer::EvalG(double a, double p, double* g, double* ga, ReturnMap* map) {
   SetP(p);
   return finder_.Desingularised(a, g, ga, map);
+}
+
+bool Tracer::DGDp(double a, double p, double g, double h, double* gp) {
+  for (double step : {h, -h}) {
+    double g2 = 0;
+    if (EvalG(a, p + step, &g2, nullptr, nullptr) == OrbitStatus::kOk) {
+      *gp = (g2 - g) / step;
+      return true;
+    }
+  }
+  return false;
 }
 
 bool Tracer::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, double* a) {
@@ -540,7 +553,8 @@ void Tracer::TracePureSlip(Cursor& c) {
   double a = c.a, p = c.p, ta = 0, tp = 0, ds = ds_max;
   ReturnMap map;
   double g = 0, ga = 0, gp = 0;
-  const double hp = 1e-7 * std::max(R, std::abs(p));
+  // Forward-difference step for dG/dp, balanced against the integration error.
+  const double hp = std::max(1e-7, std::sqrt(o_.orbit.flow.rtol)) * std::max(R, std::abs(p));
   bool last_stable = true;
   double last_xdot_max = 0, last_v = 0;
   if (c.from_hopf) {
@@ -553,12 +567,10 @@ void Tracer::TracePureSlip(Cursor& c) {
       Fail("pure-slip orbit at " + o_.param + " = " + Num(p), map.message);
       return;
     }
-    double g2 = 0;
-    if (EvalG(a, p + hp, &g2, nullptr, nullptr) != OrbitStatus::kOk) {
-      Fail("pure-slip orbit at " + o_.param + " = " + Num(p + hp), "dG/dp failed");
+    if (!DGDp(a, p, g, hp, &gp)) {
+      Fail("pure-slip orbit at " + o_.param + " = " + Num(p), "dG/dp failed on both sides");
       return;
     }
-    gp = (g2 - g) / hp;
     ta = -gp * R;
     tp = ga;
     const double n = std::hypot(ta, tp);
@@ -624,7 +636,7 @@ void Tracer::TracePureSlip(Cursor& c) {
     bool converged = false, stuck = false;
     std::string why;
     int it = 0;
-    double a_eval = aa, p_eval = pp;
+    double a_eval = aa, p_eval = pp, last_step = HUGE_VAL;
     for (it = 1; it <= 8; ++it) {
       a_eval = aa;
       p_eval = pp;
@@ -634,13 +646,9 @@ void Tracer::TracePureSlip(Cursor& c) {
         why = map.message;
         break;
       }
-      if (it == 1) {
-        double g2 = 0;
-        if (EvalG(aa, pp + hp, &g2, nullptr, nullptr) != OrbitStatus::kOk) {
-          why = "dG/dp failed";
-          break;
-        }
-        gp = (g2 - g) / hp;
+      if (it == 1 && !DGDp(aa, pp, g, hp, &gp)) {
+        why = "dG/dp failed on both sides";
+        break;
       }
       // [ga gp R^-1... ] in scaled p: dG/d(p/R) = gp R.
       const double r1 = -g, r2 = -(ta * (aa - a_pred) + tp * (pp - p_pred) / R);
@@ -653,10 +661,13 @@ void Tracer::TracePureSlip(Cursor& c) {
       const double da = (r1 * j22 - j12 * r2) / det, dps = (j11 * r2 - j21 * r1) / det;
       aa += da;
       pp += dps * R;
-      if (std::abs(da) + std::abs(dps) < 1e-11) {
+      // Converged, or stalled at the integration noise floor.
+      const double step = std::abs(da) + std::abs(dps), tol = o_.orbit.EffectiveNewtonTol();
+      if (step < tol || (it > 2 && step < 1e3 * tol && step > 0.5 * last_step)) {
         converged = true;
         break;
       }
+      last_step = step;
       if (aa <= 0) {
         why = "amplitude became negative";
         break;

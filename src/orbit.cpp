@@ -180,7 +180,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
   if (!(a_guess > 0) || !std::isfinite(a_guess))
     throw InvalidArgument("PureSlip: a_guess = " + std::to_string(a_guess) + " must be > 0");
   OrbitResult out;
-  double a = a_guess, a_prev = a_guess;
+  double a = a_guess, a_prev = a_guess, last_da = HUGE_VAL;
   ReturnMap map;
   for (int it = 1; it <= options_.max_newton; ++it) {
     out.iterations = it;
@@ -207,7 +207,10 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     if (!std::isfinite(da)) da = 0.0;
     // Keep a > 0: the orbit's section point lies right of the equilibrium.
     if (a + da < 0.2 * a) da = -0.8 * a;
-    if (std::abs(da) <= options_.newton_tol * std::max(1.0, a)) {
+    // Converged, or stalled at the integration noise floor.
+    const double tol = options_.EffectiveNewtonTol() * std::max(1.0, a);
+    if (std::abs(da) <= tol ||
+        (it > 2 && std::abs(da) < 1e3 * tol && std::abs(da) > 0.5 * std::abs(last_da))) {
       Orbit& o = out.orbit;
       o.kind = OrbitKind::kPureSlip;
       o.start = Vec2(model().SteadySliding().x + a, 0.0);
@@ -219,6 +222,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
       return out;
     }
     a_prev = a;
+    last_da = da;
     a += da;
     if (a < 1e-10) {
       out.status = OrbitStatus::kCollapsed;

@@ -8,6 +8,7 @@
 // G(a) = (P(xbar + a) - xbar - a) / a so that Newton cannot fall onto it.
 #pragma once
 
+#include <algorithm>
 #include <complex>
 #include <string>
 #include <vector>
@@ -44,7 +45,10 @@ struct OrbitOptions {
   bool floquet = false;      // variational equations and multipliers
   double max_return_time = 2e3;  // give up on a return after this time
   int max_newton = 40;
-  double newton_tol = 1e-11;  // on the section coordinate, relative to max(1, |a|)
+  // On the section coordinate, relative to max(1, |a|). Newton cannot beat the
+  // integration error, so the tolerance used is max(newton_tol, 10 rtol).
+  double newton_tol = 1e-11;
+  double EffectiveNewtonTol() const { return std::max(newton_tol, 10 * flow.rtol); }
   std::string ValidationError() const;
 };
 
