@@ -767,6 +767,7 @@ ContinuationResult Tracer::Run() {
   // Steady sliding: its rows go first unless a periodic orbit starts at `from`.
   if (!periodic_first) res_.points.clear();  // nothing was traced
   for (auto& pt : eq_rows) {
+    if (Stop()) break;
     pt.branch = eq_id;
     Add(pt);
   }

@@ -1,0 +1,182 @@
+// Branches and special points against closed forms and the reference integrator.
+#include "stickslip/continuation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "reference/reference_orbit.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+namespace {
+
+std::vector<SpecialPoint> Labelled(const ContinuationResult& r, SpecialKind k) {
+  std::vector<SpecialPoint> out;
+  for (const auto& s : r.special)
+    if (s.kind == k) out.push_back(s);
+  return out;
+}
+
+ContinuationResult Trace(const Params& p, const std::string& param, double from, double to) {
+  ContinuationOptions o;
+  o.param = param;
+  o.from = from;
+  o.to = to;
+  return Continue(p, o);
+}
+
+TEST(Continuation, SeedBranchHasOneGrazingAndOneHopfPoint) {
+  const Params p;
+  const ContinuationResult r = Trace(p, "v", 0.05, 0.5);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  EXPECT_NEAR(hb[0].p, v_max, 1e-7);
+  EXPECT_GT(gr[0].p, 0.39);
+  EXPECT_LT(gr[0].p, 0.40);
+  // GR against the independent long-double integrator.
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+  EXPECT_EQ(gr[0].multiplier_before, 0.0);
+  EXPECT_GT(gr[0].multiplier_after, 0.3);  // the jump of a discontinuous bifurcation
+  EXPECT_TRUE(Labelled(r, SpecialKind::kFold).empty());
+
+  EXPECT_GE(r.points.size(), 100u);
+  EXPECT_EQ(r.points.front().p, 0.05);
+  EXPECT_EQ(r.points.front().kind, PointKind::kStickSlip);
+  for (const auto& pt : r.points) {
+    ASSERT_TRUE(std::isfinite(pt.x_max));
+    switch (pt.kind) {
+      case PointKind::kStickSlip:
+        EXPECT_LE(pt.p, gr[0].p + 1e-12);
+        EXPECT_TRUE(pt.stable);
+        break;
+      case PointKind::kPureSlip:
+        EXPECT_GE(pt.p, gr[0].p - 1e-12);
+        EXPECT_LE(pt.p, hb[0].p + 1e-12);
+        EXPECT_TRUE(pt.stable);
+        EXPECT_EQ(pt.t_stick, 0.0);
+        break;
+      case PointKind::kEquilibrium:
+        EXPECT_EQ(pt.stable, pt.p > hb[0].p) << "v = " << pt.p;
+        break;
+    }
+  }
+  // x ranges continuous through GR, amplitude to zero at HB.
+  const BranchPoint* last_ss = nullptr;
+  const BranchPoint* first_ps = nullptr;
+  const BranchPoint* last_ps = nullptr;
+  for (const auto& pt : r.points) {
+    if (pt.kind == PointKind::kStickSlip) last_ss = &pt;
+    if (pt.kind == PointKind::kPureSlip && !first_ps) first_ps = &pt;
+    if (pt.kind == PointKind::kPureSlip) last_ps = &pt;
+  }
+  ASSERT_TRUE(last_ss && first_ps && last_ps);
+  EXPECT_NEAR(last_ss->x_max, first_ps->x_max, 0.02);
+  EXPECT_NEAR(last_ss->x_min, first_ps->x_min, 0.02);
+  EXPECT_NEAR(last_ps->p, hb[0].p, 1e-12);
+  EXPECT_EQ(last_ps->x_max - last_ps->x_min, 0.0);
+  EXPECT_NEAR(last_ps->period, 2 * M_PI, 1e-12);
+}
+
+TEST(Continuation, BackwardsGivesTheSameSpecialPoints) {
+  const Params p;
+  const ContinuationResult f = Trace(p, "v", 0.05, 0.5);
+  const ContinuationResult b = Trace(p, "v", 0.5, 0.05);
+  ASSERT_EQ(b.status, ContinuationStatus::kOk) << b.message;
+  ASSERT_EQ(f.special.size(), b.special.size());
+  EXPECT_EQ(b.points.front().p, 0.5);
+  for (size_t i = 0; i < f.special.size(); ++i) {
+    const SpecialPoint& sf = f.special[i];
+    const SpecialPoint& sb = b.special[f.special.size() - 1 - i];
+    EXPECT_EQ(sf.kind, sb.kind);
+    EXPECT_NEAR(sf.p, sb.p, 1e-9);
+  }
+}
+
+TEST(Continuation, BetaContinuationHopfAtClosedForm) {
+  const Params p;  // v = 0.25
+  const ContinuationResult r = Trace(p, "beta", 0.01, 0.3);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  ASSERT_EQ(hb.size(), 1u);
+  EXPECT_NEAR(hb[0].p, (p.k1() - 3 * p.k3() * p.v * p.v) / 2, 1e-9);
+  EXPECT_EQ(Labelled(r, SpecialKind::kGrazing).size(), 1u);
+}
+
+TEST(Continuation, StribeckSubcriticalHopfUnstableBranchAndFold) {
+  Params p;
+  p.law = LawKind::kStribeck;
+  p.mu_k = 0.25;
+  p.v_s = 0.5;
+  const ContinuationResult r = Trace(p, "v", 0.3, 0.8);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto lp = Labelled(r, SpecialKind::kFold);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(lp.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, -p.v_s * std::log(2 * p.beta * p.v_s / (p.mu_s - p.mu_k)), 1e-9);
+  EXPECT_NE(hb[0].description.find("subcritical"), std::string::npos);
+  EXPECT_NEAR(lp[0].p, gr[0].p, 1e-9);  // the fold is the grazing point
+  EXPECT_GT(lp[0].p, hb[0].p);
+  // Between HB and LP: stable stick-slip, unstable pure slip, stable equilibrium.
+  const double mid = 0.5 * (hb[0].p + lp[0].p);
+  bool ss = false, ps = false, eq = false;
+  for (const auto& pt : r.points) {
+    if (std::abs(pt.p - mid) > 0.03) continue;
+    if (pt.kind == PointKind::kStickSlip) ss = ss || pt.stable;
+    if (pt.kind == PointKind::kPureSlip) {
+      EXPECT_FALSE(pt.stable) << "v = " << pt.p;
+      EXPECT_GT(pt.multiplier, 1.0);
+      ps = true;
+    }
+    if (pt.kind == PointKind::kEquilibrium) eq = eq || pt.stable;
+  }
+  EXPECT_TRUE(ss && ps && eq);
+  // Backwards: same points.
+  const ContinuationResult b = Trace(p, "v", 0.8, 0.3);
+  ASSERT_EQ(b.status, ContinuationStatus::kOk) << b.message;
+  ASSERT_EQ(b.special.size(), r.special.size());
+  for (const auto& s : b.special)
+    EXPECT_NEAR(s.p, s.kind == SpecialKind::kHopf ? hb[0].p : gr[0].p, 1e-9);
+}
+
+TEST(Continuation, CancellationKeepsThePointsSoFar) {
+  ContinuationOptions o;
+  int calls = 0;
+  o.progress = [&](const BranchPoint&) { ++calls; };
+  o.cancelled = [&] { return calls >= 10; };
+  const ContinuationResult r = Continue(Params(), o);
+  EXPECT_EQ(r.status, ContinuationStatus::kCancelled);
+  EXPECT_TRUE(r.partial());
+  EXPECT_GE(r.points.size(), 10u);
+  EXPECT_LT(r.points.size(), 20u);
+}
+
+TEST(Continuation, InvalidOptionsThrowNamingTheValue) {
+  ContinuationOptions o;
+  o.param = "gamma";
+  EXPECT_THROW(Continue(Params(), o), InvalidArgument);
+  o.param = "v";
+  o.from = o.to = 0.3;
+  EXPECT_THROW(Continue(Params(), o), InvalidArgument);
+  o.from = -0.1;
+  try {
+    Continue(Params(), o);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("v = -0.1"), std::string::npos) << e.what();
+  }
+  o.param = "delta";  // not a cubic-law parameter
+  o.from = 1;
+  o.to = 2;
+  EXPECT_THROW(Continue(Params(), o), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace stickslip
