@@ -1,0 +1,39 @@
+// The continuation's outputs as text: branch.tsv, special_points.tsv and the
+// gnuplot script that draws the bifurcation diagrams. Writing them to disk is
+// the caller's (WriteFileAtomically in report.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/continuation.hpp"
+#include "stickslip/report.hpp"
+
+namespace stickslip {
+
+// An extra column of branch.tsv, one value per point (nan where it does not apply).
+struct ExtraColumn {
+  std::string name;
+  std::vector<double> values;
+};
+
+// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
+// t_stick, multiplier, stable, amplitude, then the extra columns. A partial
+// result says so in a comment line after the header.
+TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
+                     const std::string& model_description,
+                     const std::vector<ExtraColumn>& extra = {});
+
+// Columns: label, <param>, period, x_min, x_max, xdot_min, description.
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param);
+
+// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
+// directory: bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
+// period.png and multiplier.png against the parameter; stable solid, unstable
+// dashed, special points marked and labelled. The variable `suffix` (default
+// empty) is appended to every output name, so a caller can render to
+// temporary names and rename.
+std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
+                              const std::string& title);
+
+}  // namespace stickslip

@@ -1,0 +1,186 @@
+// ss_continue: the bifurcation diagram of a study in one parameter: branches
+// of stick-slip and pure-slip orbits and of steady sliding, their special
+// points (GR, HB, LP), TSV files and gnuplot figures in --out.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "cli/study.hpp"
+#include "stickslip/branch_report.hpp"
+#include "stickslip/continuation.hpp"
+#include "stickslip/report.hpp"
+
+namespace ss = stickslip;
+namespace cli = stickslip::cli;
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr const char* kProg = "ss_continue";
+constexpr const char* kNotes =
+    "Outputs in --out (each written whole or not at all): branch.tsv (one row per point;\n"
+    "kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet multiplier,\n"
+    "for the equilibrium the largest real part of its eigenvalues), special_points.tsv\n"
+    "(GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its figures\n"
+    "bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png.\n"
+    "Study files: model and solver keys at top level, this app's keys in [continue].\n"
+    "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM) or time\n"
+    "limit: the branch so far is written, marked partial; 2 bad input (nothing written).\n"
+    "Example: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5";
+
+volatile std::sig_atomic_t g_signal = 0;
+void OnSignal(int sig) { g_signal = sig; }
+
+po::options_description AppOptions() {
+  po::options_description d("Continuation (study section [continue])");
+  d.add_options()("param", cli::Value()->value_name("NAME"),
+                  "parameter to continue: beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta "
+                  "(default v)")(
+      "from", cli::Value()->value_name("A"), "start value; the first row is here (default 0.05)")(
+      "to", cli::Value()->value_name("B"), "end value, != from (default 0.5)")(
+      "out", cli::Value()->value_name("DIR"), "output directory (default plots)")(
+      "max_step", cli::Value()->value_name("F"),
+      "largest step as a fraction of |to - from| (default 0.01: >= 100 points)")(
+      "floquet", po::bool_switch(),
+      "compute stick-slip multipliers from the variational equations (else 0, exact)")(
+      "max_time", cli::Value()->value_name("S"),
+      "wall-time limit in seconds; the branch so far is kept (default none)")(
+      "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot");
+  return d;
+}
+
+// --out must be a writable directory; it is created if only it is missing.
+std::string CheckOutDir(const cli::Arguments& args) {
+  const std::string dir = args.Text("out", "plots");
+  const std::string src = args.Given("out") ? args.Source("out") : "--out";
+  auto bad = [&](const std::string& why) {
+    return cli::UsageError("invalid value '" + dir + "' for " + src + ": " + why);
+  };
+  if (dir.empty()) throw bad("empty");
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0) {
+    if (errno != ENOENT || ::mkdir(dir.c_str(), 0777) != 0)
+      throw bad(std::string("cannot create it: ") + std::strerror(errno));
+  } else if (!S_ISDIR(st.st_mode)) {
+    throw bad("not a directory");
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw bad(std::string("not writable: ") + std::strerror(errno));
+  return dir;
+}
+
+std::string Fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+int Main(int argc, char** argv) {
+  po::options_description desc;
+  desc.add(cli::GeneralOptions()).add(cli::ModelOptions()).add(cli::SolverOptions()).add(AppOptions());
+  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
+  if (args.map().count("help")) {
+    cli::PrintHelp(std::cout, "ss_continue [--study FILE] [options]", desc, kNotes);
+    return 0;
+  }
+  const ss::Params base = cli::ModelFromArguments(args);
+  ss::ContinuationOptions opts;
+  opts.orbit.flow = cli::FlowOptionsFromArguments(args);
+  opts.param = args.Text("param", "v");
+  opts.from = args.Number("from", 0.05);
+  opts.to = args.Number("to", 0.5);
+  opts.max_step = args.Number("max_step", opts.max_step);
+  opts.stick_slip_floquet = args.Flag("floquet");
+  const double max_time = args.Number("max_time", 0);
+  if (max_time < 0)
+    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
+                          args.Source("max_time") + ": must be >= 0");
+  const std::string err = opts.ValidationError(base);
+  if (!err.empty()) {
+    const bool is_param = err.find("parameter") != std::string::npos;
+    throw cli::UsageError(std::string(is_param ? "--param: " : "") + err);
+  }
+  const std::string dir = CheckOutDir(args);
+
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  opts.cancelled = [&] { return g_signal != 0 || (max_time > 0 && elapsed() > max_time); };
+  double next_report = 1.0;
+  opts.progress = [&](const ss::BranchPoint& pt) {
+    if (elapsed() < next_report) return;
+    next_report = elapsed() + 1.0;
+    std::cerr << kProg << ": " << opts.param << " = " << pt.p << " (" << ss::PointKindName(pt.kind)
+              << ") after " << Fixed(elapsed(), 1) << " s\n";
+  };
+
+  const ss::ContinuationResult r = ss::Continue(base, opts);
+  const double seconds = elapsed();
+
+  const std::string model = cli::DescribeModel(base);
+  ss::WriteFileAtomically(dir + "/branch.tsv",
+                          ss::BranchTable(r, opts.param, model).str());
+  ss::WriteFileAtomically(dir + "/special_points.tsv",
+                          ss::SpecialPointTable(r, opts.param).str());
+  const std::string title = model + (r.partial() ? " (partial)" : "");
+  ss::WriteFileAtomically(dir + "/bifurcation.gp", ss::BifurcationScript(r, opts.param, title));
+  bool plots_ok = true;
+  if (!args.Flag("no_plots")) {
+    // Render to temporary names, then rename: a reader never sees half a PNG.
+    const std::string wrapper = dir + "/.bifurcation.part.gp";
+    ss::WriteFileAtomically(wrapper, "suffix = '.part'\nload 'bifurcation.gp'\n");
+    std::string gp_error;
+    plots_ok = ss::RunGnuplot(wrapper, dir, &gp_error);
+    std::remove(wrapper.c_str());
+    for (const char* png : {"bifurcation_x.png", "bifurcation_xdot.png", "period.png",
+                            "multiplier.png"}) {
+      const std::string final_name = dir + "/" + png, part = final_name + ".part";
+      if (plots_ok && std::rename(part.c_str(), final_name.c_str()) != 0) plots_ok = false;
+      std::remove(part.c_str());
+    }
+    if (!plots_ok) cli::PrintError(kProg, "gnuplot failed: " + gp_error);
+  }
+
+  int counts[3] = {0, 0, 0};
+  for (const auto& pt : r.points) ++counts[static_cast<int>(pt.kind)];
+  std::cout << kProg << ": " << opts.param << " from " << opts.from << " to " << opts.to << "; "
+            << model << "\n"
+            << r.points.size() << " points: " << counts[0] << " stick-slip, " << counts[1]
+            << " pure-slip, " << counts[2] << " equilibrium, in " << Fixed(seconds * 1e3, 1)
+            << " ms\n";
+  std::cout << "special points:\n";
+  if (r.special.empty()) std::cout << "  none\n";
+  for (const auto& s : r.special) {
+    std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param << " = "
+              << Fixed(s.p, 12) << "  period " << Fixed(s.period, 6) << "  x in ["
+              << Fixed(s.x_min, 6) << ", " << Fixed(s.x_max, 6) << "]  " << s.description
+              << "\n";
+  }
+  std::cout << "wrote " << dir << "/branch.tsv, special_points.tsv, bifurcation.gp"
+            << (args.Flag("no_plots") || !plots_ok ? "" : " and 4 PNGs") << "\n";
+  if (r.partial()) {
+    const std::string why = g_signal ? std::string("interrupted by signal ") +
+                                           std::to_string(static_cast<int>(g_signal))
+                                     : r.message;
+    cli::PrintError(kProg, "partial branch written (" +
+                               std::string(ss::ContinuationStatusName(r.status)) + "): " + why);
+    return 1;
+  }
+  return plots_ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::RunApp(kProg, [&] { return Main(argc, argv); });
+}

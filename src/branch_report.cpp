@@ -1,0 +1,123 @@
+#include "stickslip/branch_report.hpp"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
+                     const std::string& model_description,
+                     const std::vector<ExtraColumn>& extra) {
+  std::vector<std::string> cols = {param,      "kind",     "branch",   "period",
+                                   "x_min",    "x_max",    "xdot_min", "xdot_max",
+                                   "t_stick",  "multiplier", "stable", "amplitude"};
+  for (const auto& c : extra) {
+    if (c.values.size() != r.points.size())
+      throw InvalidArgument("extra column '" + c.name + "' has " +
+                            std::to_string(c.values.size()) + " values for " +
+                            std::to_string(r.points.size()) + " points");
+    cols.push_back(c.name);
+  }
+  TsvTable t(cols);
+  t.AddComment("model: " + model_description);
+  if (r.partial())
+    t.AddComment(std::string("status: partial (") + ContinuationStatusName(r.status) +
+                 "): " + r.message);
+  else
+    t.AddComment("status: complete");
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    const BranchPoint& p = r.points[i];
+    std::vector<TsvTable::Cell> row = {p.p,        PointKindName(p.kind), p.branch,
+                                       p.period,   p.x_min,               p.x_max,
+                                       p.xdot_min, p.xdot_max,            p.t_stick,
+                                       p.multiplier, p.stable ? 1 : 0,    p.amplitude};
+    for (const auto& c : extra) row.emplace_back(c.values[i]);
+    t.AddRow(row);
+  }
+  return t;
+}
+
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param) {
+  TsvTable t({"label", param, "period", "x_min", "x_max", "xdot_min", "description"});
+  if (r.partial()) t.AddComment("status: partial: " + r.message);
+  for (const SpecialPoint& s : r.special)
+    t.AddRow({SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description});
+  return t;
+}
+
+namespace {
+// Column numbers of branch.tsv (1-based, as gnuplot counts).
+constexpr int kP = 1, kBranch = 3, kPeriod = 4, kXMin = 5, kXMax = 6, kXdMin = 7, kXdMax = 8,
+              kMult = 10, kStable = 11;
+
+// Curves of one quantity: per branch, stable solid and unstable dashed.
+// Steady sliding (gray) is branch 0.
+std::string Curves(const std::set<int>& branches, int col, const std::string& title, int color,
+                   int equilibrium = 0) {
+  std::ostringstream os;
+  bool first = true;
+  for (int b : branches) {
+    for (int stable : {1, 0}) {
+      os << (first ? "" : ", \\\n     ") << "'branch.tsv' using " << kP << ":(($" << kBranch
+         << "==" << b << " && $" << kStable << "==" << stable << ") ? $" << col
+         << " : NaN) with lines lc " << (b == equilibrium ? "rgb 'gray50'" : std::to_string(color))
+         << " lw 2 dt " << (stable ? 1 : 2) << " "
+         << (first ? "title \"" + title + "\"" : "notitle");
+      first = false;
+    }
+  }
+  return os.str();
+}
+
+// Columns of special_points.tsv: 2 the parameter, 3 period, 4 x_min, 5 x_max, 6 xdot_min.
+std::string Special(int col) {
+  std::ostringstream os;
+  os << "'special_points.tsv' using 2:" << col
+     << " with points pt 7 ps 1.2 lc rgb 'black' notitle, \\\n"
+     << "     'special_points.tsv' using 2:" << col
+     << ":1 with labels offset 0,1.2 font ',11' notitle";
+  return os.str();
+}
+}  // namespace
+
+std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
+                              const std::string& title) {
+  std::set<int> branches;
+  for (const auto& p : r.points) branches.insert(p.branch);
+  std::ostringstream os;
+  os << "# Bifurcation diagrams written by ss_continue; run `gnuplot " << "bifurcation.gp` in "
+     << "this directory.\n"
+     << "# Solid: stable, dashed: unstable, gray: steady sliding. GR grazing-sliding, HB Hopf,\n"
+     << "# LP fold.\n"
+     << "if (!exists('suffix')) suffix = ''\n"
+     << "set terminal pngcairo size 1000,700 enhanced font ',12'\n"
+     << "set datafile separator '\\t'\n"
+     << "set key top right\n"
+     << "set grid\n"
+     << "set xlabel '" << param << "'\n"
+     << "set title '" << title << "' noenhanced\n";
+  const bool any_special = !r.special.empty();
+  auto plot = [&](const std::string& out, const std::string& ylabel, const std::string& curves,
+                  const std::string& marks) {
+    os << "set output '" << out << "'.suffix\n"
+       << "set ylabel \"" << ylabel << "\"\n"
+       << "plot " << curves << (any_special && !marks.empty() ? ", \\\n     " + marks : "")
+       << "\nunset output\n";
+  };
+  plot("bifurcation_x.png", "x range (min and max)",
+       Curves(branches, kXMax, "x max", 1) + ", \\\n     " + Curves(branches, kXMin, "x min", 3),
+       Special(5) + ", \\\n     " + Special(4));
+  plot("bifurcation_xdot.png", "x' range (min and max)",
+       Curves(branches, kXdMax, "x' max", 1) + ", \\\n     " +
+           Curves(branches, kXdMin, "x' min", 3),
+       Special(6));
+  plot("period.png", "period", Curves(branches, kPeriod, "period", 1), Special(3));
+  plot("multiplier.png", "nontrivial Floquet multiplier (equilibrium: max Re lambda)",
+       Curves(branches, kMult, "multiplier", 1), "");
+  return os.str();
+}
+
+}  // namespace stickslip
