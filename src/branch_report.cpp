@@ -83,8 +83,15 @@ std::string Special(int col) {
 }
 }  // namespace
 
+std::vector<std::string> BifurcationFigures(bool estimates) {
+  std::vector<std::string> f = {"bifurcation_x.png", "bifurcation_xdot.png", "period.png",
+                                "multiplier.png"};
+  if (estimates) f.push_back("estimates.png");
+  return f;
+}
+
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
-                              const std::string& title) {
+                              const std::string& title, bool estimates) {
   std::set<int> branches;
   for (const auto& p : r.points) branches.insert(p.branch);
   std::ostringstream os;
@@ -117,6 +124,29 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
   plot("period.png", "period", Curves(branches, kPeriod, "period", 1), Special(3));
   plot("multiplier.png", "nontrivial Floquet multiplier (equilibrium: max Re lambda)",
        Curves(branches, kMult, "multiplier", 1), "");
+  if (estimates) {
+    // Extra columns of CompareEstimates: 13 r1, 15 a_ps, 17/18 seed's x bounds.
+    const std::string periodic = "(strcol(2) ne 'equilibrium')";
+    os << "set output 'estimates.png'.suffix\n"
+       << "set terminal pngcairo size 1000,1000 enhanced font ',12'\n"
+       << "set multiplot layout 2,1\n"
+       << "set title 'smallest slip velocity: computed and estimated' noenhanced\n"
+       << "set ylabel \"x' min\"\n"
+       << "plot 'branch.tsv' using 1:(" << periodic << " ? $" << kXdMin
+       << " : NaN) with lines lw 3 lc rgb 'black' title 'computed', \\\n"
+       << "     '' using 1:13 with lines lw 2 dt 2 lc rgb 'red' title 'seed (3.17): r_1', \\\n"
+       << "     '' using 1:(-$15) with lines lw 2 dt 3 lc rgb 'blue' "
+          "title 'averaging: -a_{ps}'\n"
+       << "set title 'x range: computed and the seed''s displacement bound' noenhanced\n"
+       << "set ylabel 'x'\n"
+       << "plot 'branch.tsv' using 1:(" << periodic << " ? $" << kXMax
+       << " : NaN) with lines lw 3 lc rgb 'black' title 'computed x max, x min', \\\n"
+       << "     '' using 1:(" << periodic << " ? $" << kXMin
+       << " : NaN) with lines lw 3 lc rgb 'black' notitle, \\\n"
+       << "     '' using 1:18 with lines lw 2 dt 2 lc rgb 'red' title 'seed bound x max', \\\n"
+       << "     '' using 1:17 with lines lw 2 dt 2 lc rgb 'dark-red' title 'seed bound x min'\n"
+       << "unset multiplot\nunset output\n";
+  }
   return os.str();
 }
 

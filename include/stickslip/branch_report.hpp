@@ -32,8 +32,12 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
 // period.png and multiplier.png against the parameter; stable solid, unstable
 // dashed, special points marked and labelled. The variable `suffix` (default
 // empty) is appended to every output name, so a caller can render to
-// temporary names and rename.
+// temporary names and rename. With estimates (the columns of
+// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
+// range of the branch against the seed's and the averaging estimates.
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
-                              const std::string& title);
+                              const std::string& title, bool estimates = false);
+// The output files BifurcationScript draws.
+std::vector<std::string> BifurcationFigures(bool estimates);
 
 }  // namespace stickslip

@@ -14,6 +14,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/branch_report.hpp"
+#include "stickslip/comparison.hpp"
 #include "stickslip/continuation.hpp"
 #include "stickslip/report.hpp"
 
@@ -52,7 +53,9 @@ po::options_description AppOptions() {
       "compute stick-slip multipliers from the variational equations (else 0, exact)")(
       "max_time", cli::Value()->value_name("S"),
       "wall-time limit in seconds; the branch so far is kept (default none)")(
-      "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot");
+      "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot")(
+      "no_estimates", po::bool_switch(),
+      "cubic law: skip the comparison with the seed's and the averaging estimates");
   return d;
 }
 
@@ -80,6 +83,37 @@ std::string Fixed(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
   return buf;
+}
+
+// A few rows of the estimate comparison, spread over the periodic branch.
+void PrintComparison(const ss::EstimateComparison& c, const std::string& param) {
+  std::cout << "estimates against the branch (x'_min; error = estimate - computed):\n"
+            << "  " << param << "        kind         computed   seed r1    error     "
+            << "averaging -a_ps  error\n";
+  const size_t n = c.rows.size();
+  auto cell = [](const ss::EstimateCell& e) {
+    if (!e.applies) return std::string("      n/a             ");
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%9.5f  %+9.5f", e.estimate, e.error);
+    return std::string(buf);
+  };
+  for (size_t k = 0; k < 7 && n > 0; ++k) {
+    const ss::ComparisonRow& row = c.rows[k * (n - 1) / 6];
+    char head[96];
+    std::snprintf(head, sizeof head, "  %-9.5f  %-11s  %9.5f  ", row.p, ss::PointKindName(row.kind),
+                  row.xdot_min);
+    std::cout << head << cell(row.r1) << "  " << cell(row.a_ps) << "\n";
+  }
+  std::cout << "  largest |error|: seed r1 " << Fixed(c.max_err_r1, 5) << " at " << param << " = "
+            << Fixed(c.p_max_err_r1, 5) << " (" << c.r1_applies << " points); averaging "
+            << Fixed(c.max_err_a_ps, 5) << " at " << param << " = " << Fixed(c.p_max_err_a_ps, 5)
+            << " (" << c.a_ps_applies << " pure-slip points; n/a on stick-slip orbits)\n"
+            << "  seed's displacement bound holds at " << c.bound_holds << " points, violated at "
+            << c.bound_fails << "\n";
+  for (const auto& s : c.special)
+    std::cout << "  " << s.label << ": computed " << Fixed(s.computed, 6) << ", " << s.estimate
+              << " = " << Fixed(s.estimated, 6) << " (error " << Fixed(s.estimated - s.computed, 6)
+              << ")\n";
 }
 
 int Main(int argc, char** argv) {
@@ -128,12 +162,15 @@ int Main(int argc, char** argv) {
   const double seconds = elapsed();
 
   const std::string model = cli::DescribeModel(base);
+  ss::EstimateComparison cmp;
+  if (!args.Flag("no_estimates")) cmp = ss::CompareEstimates(base, opts.param, r);
   ss::WriteFileAtomically(dir + "/branch.tsv",
-                          ss::BranchTable(r, opts.param, model).str());
+                          ss::BranchTable(r, opts.param, model, cmp.columns).str());
   ss::WriteFileAtomically(dir + "/special_points.tsv",
                           ss::SpecialPointTable(r, opts.param).str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
-  ss::WriteFileAtomically(dir + "/bifurcation.gp", ss::BifurcationScript(r, opts.param, title));
+  ss::WriteFileAtomically(dir + "/bifurcation.gp",
+                          ss::BifurcationScript(r, opts.param, title, cmp.applies));
   bool plots_ok = true;
   if (!args.Flag("no_plots")) {
     // Render to temporary names, then rename: a reader never sees half a PNG.
@@ -142,8 +179,7 @@ int Main(int argc, char** argv) {
     std::string gp_error;
     plots_ok = ss::RunGnuplot(wrapper, dir, &gp_error);
     std::remove(wrapper.c_str());
-    for (const char* png : {"bifurcation_x.png", "bifurcation_xdot.png", "period.png",
-                            "multiplier.png"}) {
+    for (const std::string& png : ss::BifurcationFigures(cmp.applies)) {
       const std::string final_name = dir + "/" + png, part = final_name + ".part";
       if (plots_ok && std::rename(part.c_str(), final_name.c_str()) != 0) plots_ok = false;
       std::remove(part.c_str());
@@ -167,7 +203,8 @@ int Main(int argc, char** argv) {
               << "\n";
   }
   std::cout << "wrote " << dir << "/branch.tsv, special_points.tsv, bifurcation.gp"
-            << (args.Flag("no_plots") || !plots_ok ? "" : " and 4 PNGs") << "\n";
+            << (args.Flag("no_plots") || !plots_ok ? "" : " and the PNGs") << "\n";
+  if (cmp.applies) PrintComparison(cmp, opts.param);
   if (r.partial()) {
     const std::string why = g_signal ? std::string("interrupted by signal ") +
                                            std::to_string(static_cast<int>(g_signal))

@@ -1,0 +1,75 @@
+// Output files: atomic writes, TSV tables, running gnuplot. No printing here;
+// failures are exceptions (stickslip::Error) or a returned message.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stickslip {
+
+// Writes `content` to a new file in the directory of `path`, then renames it
+// over `path`: readers see the old file or the whole new one, never a part.
+// On failure the temporary file is removed and Error is thrown, naming the
+// path and the reason (errno text); `path` is then unchanged.
+void WriteFileAtomically(const std::string& path, const std::string& content);
+
+// A number as TSV text: the shortest form that reads back to the same double
+// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
+std::string FormatNumber(double x);
+
+// A tab-separated table. Layout:
+//   # col1<TAB>col2<TAB>...     the header, always the first line
+//   # comment                   AddComment lines, in order
+//   1.5<TAB>0.25<TAB>...        one line per row
+// gnuplot reads it as is ('#' lines are comments; text cells are fine with
+// `using` expressions or strcol).
+class TsvTable {
+ public:
+  // Throws InvalidArgument if there are no columns or a name is empty or
+  // contains a tab or newline.
+  explicit TsvTable(std::vector<std::string> columns);
+
+  // One cell: a number (formatted by FormatNumber) or text without tabs or
+  // newlines.
+  class Cell {
+   public:
+    Cell(double x) : text_(FormatNumber(x)) {}                // NOLINT: implicit by design
+    Cell(int x) : text_(std::to_string(x)) {}                 // NOLINT
+    Cell(long x) : text_(std::to_string(x)) {}                // NOLINT
+    Cell(unsigned long x) : text_(std::to_string(x)) {}       // NOLINT
+    Cell(const char* s) : text_(s), is_text_(true) {}         // NOLINT
+    Cell(const std::string& s) : text_(s), is_text_(true) {}  // NOLINT
+    const std::string& text() const { return text_; }
+    bool is_text() const { return is_text_; }
+
+   private:
+    std::string text_;
+    bool is_text_ = false;
+  };
+
+  // Throws InvalidArgument if the text has a newline.
+  void AddComment(const std::string& text);
+  // Throws InvalidArgument if the cell count differs from the column count
+  // or a text cell has a tab or newline.
+  void AddRow(const std::vector<Cell>& cells);
+
+  const std::vector<std::string>& columns() const { return columns_; }
+  std::size_t rows() const { return rows_; }
+  // The whole table as text, ending with a newline.
+  std::string str() const;
+
+ private:
+  std::vector<std::string> columns_;
+  std::vector<std::string> comments_;
+  std::string body_;
+  std::size_t rows_ = 0;
+};
+
+// Runs `gnuplot script_path` with working directory `workdir` (empty: the
+// current one), so relative paths inside the script resolve there; a relative
+// script_path is taken relative to the caller's current directory. Returns
+// false and sets *error (if not null) to one line when gnuplot is missing,
+// cannot start, or exits non-zero (with the last line gnuplot wrote to stderr).
+bool RunGnuplot(const std::string& script_path, const std::string& workdir, std::string* error);
+
+}  // namespace stickslip

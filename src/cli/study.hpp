@@ -1,0 +1,135 @@
+// Command-line layer shared by the apps (Boost.Program_options): option
+// groups, study files, strict numbers, the model and solver options, and the
+// one-line error convention. Only apps and this layer parse and print.
+//
+// Study files (--study FILE) hold `key = value` lines; `#` starts a comment;
+// keys are long option names without "--". Keys outside any section are read
+// by every app, so they must be options every app registers (model, solver).
+// `[name]` starts a section read only by the app whose section name it is
+// (ss_simulate: [simulate]); sections of the other apps listed in
+// StudySections() are skipped; any other section is an error. The command
+// line overrides the study file. A key may appear once per file.
+//
+// An app with its own options:
+//   po::options_description mine("Continuation (study section [continue])");
+//   mine.add_options()("param", cli::Value(), "...")("from", cli::Value(), "...");
+//   po::options_description desc;
+//   desc.add(cli::GeneralOptions()).add(cli::ModelOptions()).add(cli::SolverOptions()).add(mine);
+//   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
+//   const double from = args.Number("from", 0.05);  // strict; errors name the source
+// and main() returns cli::RunApp("ss_continue", [&] { return Main(argc, argv); }).
+//
+// Physical inputs: if any of --mass --damping --stiffness --belt_speed
+// --gravity --speed_m --speed_s --delta_phys is given, the physical set is
+// used: --mass --stiffness --damping --belt_speed are required (--gravity
+// defaults to 9.81), plus --speed_m (cubic), --speed_s (stribeck) or
+// --delta_phys (leine), and they are converted by ToDimensionless. The
+// dimensionless --beta --v --v_m --v_s --delta are then an error. The
+// friction coefficients --mu_s --mu_m --mu_k are shared by both sets.
+// Parameters the chosen law does not use are ignored.
+#pragma once
+
+#include <boost/program_options.hpp>
+#include <functional>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "stickslip/errors.hpp"
+#include "stickslip/flow.hpp"
+#include "stickslip/params.hpp"
+
+namespace stickslip::cli {
+
+namespace po = boost::program_options;
+
+// Bad input from the command line or a study file. what() is one line that
+// names the option (and the study line) and the offending value.
+class UsageError : public InvalidArgument {
+ public:
+  using InvalidArgument::InvalidArgument;
+};
+
+// Option groups; an app adds the groups it needs, then its own options.
+// Values are taken as text (see Value()) and parsed strictly on use.
+po::options_description GeneralOptions();  // --help, --study
+po::options_description ModelOptions();    // --law, model and physical parameters
+po::options_description SolverOptions();   // --rtol --atol --method --max_steps
+
+// The value semantic for an app's own option: text, parsed on use by
+// Arguments::Number / Integer / Text. For flags use po::bool_switch().
+po::typed_value<std::string>* Value();
+
+// Section names of the apps; a study file may hold a section for each.
+const std::vector<std::string>& StudySections();
+
+// Parsed options with their origin, for messages that say where a value came from.
+class Arguments {
+ public:
+  const po::variables_map& map() const { return vm_; }
+  // Given on the command line or in the study file (a default does not count).
+  bool Given(const std::string& name) const;
+  // Where a given option came from: "--beta" or "beta (studies/seed.ini:7)".
+  std::string Source(const std::string& name) const;
+  // Just the place: "--beta" or "studies/seed.ini:7".
+  std::string Origin(const std::string& name) const;
+  // The text of an option; fallback if it was not given.
+  std::string Text(const std::string& name, const std::string& fallback = "") const;
+  // Strict numbers: the whole text must be a finite decimal number; throws
+  // UsageError naming Source(name) and the text otherwise.
+  double Number(const std::string& name, double fallback) const;
+  std::optional<double> OptionalNumber(const std::string& name) const;
+  long Integer(const std::string& name, long fallback) const;
+  // A po::bool_switch() flag.
+  bool Flag(const std::string& name) const;
+  // The study file read, empty if none.
+  const std::string& study() const { return study_; }
+
+ private:
+  friend Arguments ParseArguments(int, const char* const[], const po::options_description&,
+                                  const std::string&);
+  friend void ReadStudyFile(const std::string&, const po::options_description&, const std::string&,
+                            Arguments&);
+  po::variables_map vm_;
+  std::map<std::string, std::string> origin_;  // study key -> "file:line"
+  std::string study_;
+};
+
+// Parses argv against desc (exact long names only, no positional arguments),
+// then, unless --help was given, the study file named by --study (if desc has
+// that option). `section` is the app's study section (e.g. "simulate").
+// Throws UsageError.
+Arguments ParseArguments(int argc, const char* const argv[], const po::options_description& desc,
+                         const std::string& section);
+// Reads a study file into args; keys already given there are kept (the
+// command line wins). Throws UsageError naming the file and line.
+void ReadStudyFile(const std::string& path, const po::options_description& desc,
+                   const std::string& section, Arguments& args);
+
+// Strict number: the whole text is a finite decimal number ("1e-3", "-0.5",
+// "+2"); no spaces, no trailing characters, no nan or inf. `what` names the
+// source in the message, e.g. "--beta".
+double ParseNumber(const std::string& text, const std::string& what);
+
+// The model from ModelOptions(), validated (throws UsageError).
+Params ModelFromArguments(const Arguments& args);
+// The solver options from SolverOptions(), validated (throws UsageError).
+FlowOptions FlowOptionsFromArguments(const Arguments& args);
+// "law=cubic beta=0.05 v=0.25 ...": the law's parameters, for file headers.
+std::string DescribeModel(const Params& p);
+
+// Help text: a usage line, the options, then free-form notes.
+void PrintHelp(std::ostream& os, const std::string& usage, const po::options_description& desc,
+               const std::string& notes = "");
+
+// Prints "prog: error: message" to stderr as one line (line breaks become spaces).
+void PrintError(const std::string& prog, const std::string& message);
+// Prints e with PrintError and returns the exit code: 2 for bad input
+// (InvalidArgument, UsageError, Boost.PO errors), 1 for anything else.
+int ReportError(const std::string& prog, const std::exception& e);
+// Runs an app's body; an escaping exception goes through ReportError.
+int RunApp(const std::string& prog, const std::function<int()>& body);
+
+}  // namespace stickslip::cli

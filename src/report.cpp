@@ -1,0 +1,225 @@
+#include "stickslip/report.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+namespace {
+
+std::string ErrnoText(int err) { return std::strerror(err); }
+
+// Directory part and file part of a path ("." if there is no slash).
+void SplitPath(const std::string& path, std::string* dir, std::string* base) {
+  const auto slash = path.find_last_of('/');
+  if (slash == std::string::npos) {
+    *dir = ".";
+    *base = path;
+  } else {
+    *dir = slash == 0 ? "/" : path.substr(0, slash);
+    *base = path.substr(slash + 1);
+  }
+}
+
+bool HasControl(const std::string& s) { return s.find_first_of("\t\n\r") != std::string::npos; }
+
+}  // namespace
+
+void WriteFileAtomically(const std::string& path, const std::string& content) {
+  std::string dir, base;
+  SplitPath(path, &dir, &base);
+  if (base.empty() || base == "." || base == "..")
+    throw InvalidArgument("cannot write '" + path + "': not a file name");
+  auto fail = [&](const std::string& what, int err) {
+    throw Error("cannot write '" + path + "': " + ErrnoText(err) + " (" + what + ")");
+  };
+
+  // A fresh name beside the target: hidden, unique per process and call.
+  static std::atomic<unsigned long> counter{0};
+  std::string tmp;
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    tmp = (dir == "/" ? "" : dir) + "/." + base + ".tmp-" + std::to_string(::getpid()) + "-" +
+          std::to_string(counter++);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) fail("creating a temporary file in '" + dir + "'", errno);
+  }
+  if (fd < 0) fail("creating a temporary file in '" + dir + "'", EEXIST);
+
+  auto abandon = [&](const std::string& what, int err) {
+    if (fd >= 0) ::close(fd);
+    ::unlink(tmp.c_str());
+    fail(what, err);
+  };
+  const char* p = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      abandon("writing", errno);
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 && errno != EINVAL) abandon("flushing", errno);
+  const int closed = ::close(fd);
+  fd = -1;
+  if (closed != 0) abandon("closing", errno);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) abandon("renaming the temporary file", errno);
+}
+
+std::string FormatNumber(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round trip
+  return std::string(buf, r.ptr);
+}
+
+TsvTable::TsvTable(std::vector<std::string> columns) : columns_(std::move(columns)) {
+  if (columns_.empty()) throw InvalidArgument("TsvTable: no columns");
+  for (const auto& c : columns_)
+    if (c.empty() || HasControl(c)) throw InvalidArgument("TsvTable: bad column name '" + c + "'");
+}
+
+void TsvTable::AddComment(const std::string& text) {
+  if (text.find_first_of("\n\r") != std::string::npos)
+    throw InvalidArgument("TsvTable: comment has a line break");
+  comments_.push_back(text);
+}
+
+void TsvTable::AddRow(const std::vector<Cell>& cells) {
+  if (cells.size() != columns_.size())
+    throw InvalidArgument("TsvTable: row has " + std::to_string(cells.size()) +
+                          " cells, table has " + std::to_string(columns_.size()) + " columns");
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (cells[i].is_text() && HasControl(cells[i].text()))
+      throw InvalidArgument("TsvTable: cell in column '" + columns_[i] +
+                            "' has a tab or line break");
+    if (i > 0) body_ += '\t';
+    body_ += cells[i].text();
+  }
+  body_ += '\n';
+  ++rows_;
+}
+
+std::string TsvTable::str() const {
+  std::string out = "# ";
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    if (i > 0) out += '\t';
+    out += columns_[i];
+  }
+  out += '\n';
+  for (const auto& c : comments_) out += "# " + c + "\n";
+  return out + body_;
+}
+
+bool RunGnuplot(const std::string& script_path, const std::string& workdir, std::string* error) {
+  auto failed = [&](const std::string& msg) {
+    if (error) *error = msg;
+    return false;
+  };
+  std::string script = script_path;
+  if (!script.empty() && script[0] != '/') {
+    char cwd[4096];
+    if (!::getcwd(cwd, sizeof cwd)) return failed("gnuplot: cannot get the current directory");
+    script = std::string(cwd) + "/" + script;
+  }
+  int err_pipe[2], exec_pipe[2];
+  if (::pipe2(err_pipe, O_CLOEXEC) != 0) return failed("gnuplot: pipe: " + ErrnoText(errno));
+  if (::pipe2(exec_pipe, O_CLOEXEC) != 0) {
+    ::close(err_pipe[0]);
+    ::close(err_pipe[1]);
+    return failed("gnuplot: pipe: " + ErrnoText(errno));
+  }
+  // Everything the child needs, prepared before fork.
+  std::string prog = "gnuplot";
+  char* argv[] = {prog.data(), script.data(), nullptr};
+  const char* dir = workdir.empty() ? nullptr : workdir.c_str();
+
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int e = errno;
+    for (int fd : {err_pipe[0], err_pipe[1], exec_pipe[0], exec_pipe[1]}) ::close(fd);
+    return failed("gnuplot: fork: " + ErrnoText(e));
+  }
+  if (pid == 0) {
+    // Child: only async-signal-safe calls. Report a failed chdir/exec through
+    // exec_pipe as {stage, errno}.
+    int report[2] = {0, 0};
+    const int devnull = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (devnull >= 0) ::dup2(devnull, STDOUT_FILENO);
+    ::dup2(err_pipe[1], STDERR_FILENO);
+    if (dir && ::chdir(dir) != 0) {
+      report[0] = 1;
+      report[1] = errno;
+    } else {
+      ::execvp(argv[0], argv);
+      report[0] = 2;
+      report[1] = errno;
+    }
+    if (::write(exec_pipe[1], report, sizeof report) < 0) {
+    }
+    ::_exit(127);
+  }
+  ::close(err_pipe[1]);
+  ::close(exec_pipe[1]);
+  int report[2] = {0, 0};
+  ssize_t got;
+  do {
+    got = ::read(exec_pipe[0], report, sizeof report);
+  } while (got < 0 && errno == EINTR);
+  ::close(exec_pipe[0]);
+  std::string err_text;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(err_pipe[0], buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    if (err_text.size() < (1u << 20)) err_text.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(err_pipe[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return failed("gnuplot: waitpid: " + ErrnoText(errno));
+  }
+  if (got == static_cast<ssize_t>(sizeof report)) {
+    if (report[0] == 1)
+      return failed("gnuplot: cannot enter directory '" + workdir + "': " + ErrnoText(report[1]));
+    return failed(report[1] == ENOENT ? "gnuplot not found on PATH (install gnuplot)"
+                                      : "cannot run gnuplot: " + ErrnoText(report[1]));
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
+  // The last non-empty line gnuplot wrote, as the reason.
+  std::string last;
+  std::size_t end = err_text.size();
+  while (end > 0) {
+    const std::size_t start = err_text.rfind('\n', end - 1);
+    const std::size_t b = start == std::string::npos ? 0 : start + 1;
+    std::string line = err_text.substr(b, end - b);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (!line.empty()) {
+      last = line;
+      break;
+    }
+    if (start == std::string::npos) break;
+    end = start;
+  }
+  std::string why = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
+                                      : "killed by signal " + std::to_string(WTERMSIG(status));
+  return failed("gnuplot failed on '" + script_path + "' (" + why + ")" +
+                (last.empty() ? "" : ": " + last));
+}
+
+}  // namespace stickslip

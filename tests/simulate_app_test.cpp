@@ -1,0 +1,363 @@
+// End-to-end tests of the built ss_simulate: output format, and bad input
+// rejected with exit code 2, one line on stderr, and no output file.
+#include <dirent.h>
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::string kApp = STICKSLIP_BIN_DIR "/ss_simulate";
+const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
+
+::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
+}
+
+bool Exists(const std::string& path) {
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+void WriteFile(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string Quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// A fresh directory per test, removed afterwards.
+class SimulateApp : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(Exists(kApp)) << kApp << " not built";
+    std::string tmpl = ::testing::TempDir() + "ss_simulate_test_XXXXXX";
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override {
+    if (!dir_.empty()) {
+      EXPECT_EQ(std::system(("rm -rf " + Quote(dir_)).c_str()), 0);
+    }
+  }
+
+  struct Result {
+    int code = -1;
+    std::string out, err;
+    // stderr lines
+    std::vector<std::string> err_lines() const {
+      std::vector<std::string> lines;
+      std::istringstream is(err);
+      for (std::string l; std::getline(is, l);) lines.push_back(l);
+      return lines;
+    }
+  };
+
+  // Runs ss_simulate with the arguments (each quoted for the shell).
+  Result Run(const std::vector<std::string>& args) {
+    std::string cmd = Quote(kApp);
+    for (const auto& a : args) cmd += " " + Quote(a);
+    const std::string out = Path("stdout.txt"), err = Path("stderr.txt");
+    cmd += " >" + Quote(out) + " 2>" + Quote(err);
+    const int status = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = ReadFile(out);
+    r.err = ReadFile(err);
+    return r;
+  }
+
+  std::string Path(const std::string& name) const { return dir_ + "/" + name; }
+
+  // Expects a rejection: exit 2, one stderr line naming `part`, no output.
+  void ExpectRejected(std::vector<std::string> args, const std::string& part) {
+    const std::string out = Path("rejected.tsv");
+    args.push_back("--out");
+    args.push_back(out);
+    const Result r = Run(args);
+    std::string shown;
+    for (const auto& a : args) shown += a + " ";
+    EXPECT_EQ(r.code, 2) << shown << "\n" << r.err;
+    const auto lines = r.err_lines();
+    ASSERT_EQ(lines.size(), 1u) << shown << "\n" << r.err;
+    EXPECT_TRUE(Contains(lines[0], "ss_simulate: error: ")) << shown;
+    EXPECT_TRUE(Contains(lines[0], part)) << shown;
+    EXPECT_FALSE(Exists(out)) << shown;
+    EXPECT_EQ(r.out, "") << shown;
+  }
+
+  std::string dir_;
+};
+
+struct Row {
+  double t, x, xdot;
+  std::string mode;
+};
+
+// Data rows of a ss_simulate TSV (comment lines skipped).
+std::vector<Row> ReadRows(const std::string& text) {
+  std::vector<Row> rows;
+  std::istringstream is(text);
+  for (std::string line; std::getline(is, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::string t, x, xdot, mode;
+    std::getline(ls, t, '\t');
+    std::getline(ls, x, '\t');
+    std::getline(ls, xdot, '\t');
+    std::getline(ls, mode, '\t');
+    rows.push_back({std::strtod(t.c_str(), nullptr), std::strtod(x.c_str(), nullptr),
+                    std::strtod(xdot.c_str(), nullptr), mode});
+  }
+  return rows;
+}
+
+TEST_F(SimulateApp, HelpExitsZeroAndListsOptions) {
+  const Result r = Run({"--help"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.err, "");
+  for (const char* opt : {"--study", "--law", "--beta", "--v ", "--mu_s", "--mass", "--rtol",
+                          "--method", "--x0", "--xdot0", "--t_end", "--dt", "--out", "--plot"})
+    EXPECT_TRUE(Contains(r.out, opt));
+}
+
+TEST_F(SimulateApp, WritesTrajectoryWithExactStick) {
+  const std::string out = Path("seed.tsv");
+  const Result r = Run({"--study", kStudies + "/seed.ini", "--t_end", "30", "--out", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::string text = ReadFile(out);
+  EXPECT_EQ(text.substr(0, text.find('\n')), "# t\tx\txdot\tmode");
+  const auto rows = ReadRows(text);
+  ASSERT_GT(rows.size(), 3000u);
+  EXPECT_EQ(rows.front().t, 0.0);
+  EXPECT_EQ(rows.front().mode, "stick");  // (0, 0.25) lies in Omega
+  EXPECT_NEAR(rows.back().t, 30.0, 1e-9);
+  int stick = 0, below = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& row = rows[i];
+    ASSERT_TRUE(row.mode == "stick" || row.mode == "slip-below" || row.mode == "slip-above")
+        << row.mode;
+    if (i > 0) {
+      EXPECT_GE(row.t, rows[i - 1].t);
+    }
+    if (row.mode == "stick") {
+      ++stick;
+      EXPECT_EQ(row.xdot, 0.25) << "t = " << row.t;  // exactly v
+      EXPECT_LE(std::abs(row.x + 2 * 0.05 * 0.25), 0.4 + 1e-12);
+    } else if (row.mode == "slip-below") {
+      ++below;
+      EXPECT_LE(row.xdot, 0.25 + 1e-9);
+    }
+  }
+  EXPECT_GT(stick, 100);
+  EXPECT_GT(below, 100);
+}
+
+TEST_F(SimulateApp, CommandLineOverridesStudy) {
+  WriteFile(Path("s.ini"), "# test study\nlaw = cubic\nv = 0.3\n\n[simulate]\nxdot0 = 0.3\n");
+  const std::string out = Path("o.tsv");
+  const Result r = Run(
+      {"--study", Path("s.ini"), "--v", "0.2", "--xdot0", "0.2", "--t_end", "20", "--out", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  int stick = 0;
+  for (const Row& row : ReadRows(ReadFile(out))) {
+    if (row.mode == "stick") {
+      ++stick;
+      EXPECT_EQ(row.xdot, 0.2);
+    }
+  }
+  EXPECT_GT(stick, 0);
+}
+
+TEST_F(SimulateApp, StudySectionsOfOtherAppsAreSkipped) {
+  WriteFile(Path("s.ini"), "v = 0.25\n[continue]\nparam = v\nfrom = 0.05\n[simulate]\nt_end = 5\n");
+  const std::string out = Path("o.tsv");
+  const Result r = Run({"--study", Path("s.ini"), "--out", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NEAR(ReadRows(ReadFile(out)).back().t, 5.0, 1e-9);
+}
+
+TEST_F(SimulateApp, AllStudiesRun) {
+  for (const char* study : {"seed", "seed_beta", "stribeck", "coulomb", "leine"}) {
+    const std::string out = Path(std::string(study) + ".tsv");
+    const Result r =
+        Run({"--study", kStudies + "/" + study + ".ini", "--t_end", "20", "--out", out});
+    EXPECT_EQ(r.code, 0) << study << ": " << r.err;
+    EXPECT_TRUE(Exists(out)) << study;
+  }
+}
+
+TEST_F(SimulateApp, PhysicalInputsAtUnitScalesMatchTheSeedSet) {
+  // M = K = g = 1: the physical numbers are the dimensionless ones.
+  const Result a = Run({"--t_end", "10", "--out", Path("a.tsv")});
+  const Result b =
+      Run({"--mass", "1", "--stiffness", "1", "--gravity", "1", "--damping", "0.1", "--belt_speed",
+           "0.25", "--speed_m", "0.5", "--t_end", "10", "--out", Path("b.tsv")});
+  ASSERT_EQ(a.code, 0) << a.err;
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_EQ(ReadFile(Path("a.tsv")), ReadFile(Path("b.tsv")));
+}
+
+TEST_F(SimulateApp, RejectsUnknownOption) { ExpectRejected({"--gamma", "1"}, "--gamma"); }
+
+TEST_F(SimulateApp, RejectsAbbreviatedOption) { ExpectRejected({"--bet", "0.1"}, "--bet"); }
+
+TEST_F(SimulateApp, RejectsPositionalArgument) { ExpectRejected({"stray"}, "stray"); }
+
+TEST_F(SimulateApp, RejectsNonNumbers) {
+  ExpectRejected({"--beta", "abc"}, "'abc' for --beta");
+  ExpectRejected({"--beta", "1.2x"}, "'1.2x' for --beta");
+  ExpectRejected({"--x0", ""}, "--x0");
+  ExpectRejected({"--t_end", "1e999"}, "'1e999' for --t_end");
+}
+
+TEST_F(SimulateApp, RejectsNanAndInf) {
+  ExpectRejected({"--mu_s", "nan"}, "'nan' for --mu_s");
+  ExpectRejected({"--v", "inf"}, "'inf' for --v");
+  ExpectRejected({"--xdot0", "-inf"}, "'-inf' for --xdot0");
+}
+
+TEST_F(SimulateApp, RejectsInvalidModels) {
+  ExpectRejected({"--mu_m", "0.5"}, "mu_m = 0.5");
+  ExpectRejected({"--v", "0"}, "v = 0");
+  ExpectRejected({"--v", "-0.1"}, "v = -0.1");
+  ExpectRejected({"--beta", "-0.01"}, "beta = -0.01");
+  ExpectRejected({"--law", "coulomb", "--mu_k", "0.5"}, "mu_k = 0.5");
+  ExpectRejected({"--law", "viscous"}, "viscous");
+}
+
+TEST_F(SimulateApp, RejectsMixedPhysicalAndDimensionless) {
+  ExpectRejected({"--mass", "1", "--beta", "0.1"}, "--beta");
+  ExpectRejected({"--mass", "1", "--stiffness", "1", "--belt_speed", "1", "--speed_m", "1"},
+                 "--damping");
+  ExpectRejected({"--mass", "-1", "--stiffness", "1", "--damping", "0.1", "--belt_speed", "1",
+                  "--speed_m", "1"},
+                 "mass = -1");
+}
+
+TEST_F(SimulateApp, RejectsBadSolverOptions) {
+  ExpectRejected({"--rtol", "1"}, "rtol = 1");
+  ExpectRejected({"--rtol", "1e-20"}, "rtol = 1e-20");
+  ExpectRejected({"--atol", "0"}, "atol = 0");
+  ExpectRejected({"--method", "rk4"}, "'rk4'");
+  ExpectRejected({"--max_steps", "2.5"}, "'2.5'");
+}
+
+TEST_F(SimulateApp, RejectsBadRunOptions) {
+  ExpectRejected({"--t_end", "0"}, "--t_end");
+  ExpectRejected({"--dt", "-0.1"}, "--dt");
+  ExpectRejected({"--dt", "1e-9"}, "--dt");
+}
+
+TEST_F(SimulateApp, RejectsMissingStudyFile) {
+  ExpectRejected({"--study", Path("missing.ini")}, "missing.ini");
+  ExpectRejected({"--study", dir_}, dir_);
+}
+
+TEST_F(SimulateApp, RejectsMalformedStudyLineWithLineNumber) {
+  WriteFile(Path("bad.ini"), "# comment\nlaw = cubic\nbeta 0.05\nv = 0.25\n");
+  ExpectRejected({"--study", Path("bad.ini")}, "bad.ini:3");
+  WriteFile(Path("bad2.ini"), "v = 0.25\n\n[simulate\n");
+  ExpectRejected({"--study", Path("bad2.ini")}, "bad2.ini:3");
+  WriteFile(Path("bad3.ini"), "v =\n");
+  ExpectRejected({"--study", Path("bad3.ini")}, "bad3.ini:1");
+  WriteFile(Path("bad4.ini"), "v = 0.25\nbeta = 0.1\nv = 0.3\n");
+  ExpectRejected({"--study", Path("bad4.ini")}, "bad4.ini:3");
+}
+
+TEST_F(SimulateApp, RejectsUnknownStudyKey) {
+  WriteFile(Path("bad.ini"), "law = cubic\ngamma = 2\n");
+  ExpectRejected({"--study", Path("bad.ini")}, "'gamma'");
+  WriteFile(Path("bad2.ini"), "[simulation]\nx0 = 1\n");
+  ExpectRejected({"--study", Path("bad2.ini")}, "simulation");
+}
+
+TEST_F(SimulateApp, BadStudyValueNamesTheLine) {
+  WriteFile(Path("bad.ini"), "law = cubic\n\nbeta = fast\n");
+  ExpectRejected({"--study", Path("bad.ini")}, "'fast' for beta (" + Path("bad.ini") + ":3)");
+  WriteFile(Path("bad2.ini"), "mu_m = 0.45\n");
+  ExpectRejected({"--study", Path("bad2.ini")}, "mu_m = 0.45");
+}
+
+TEST_F(SimulateApp, RejectsUnwritableOutputDirectory) {
+  // Running as root defeats permission bits: use paths that cannot exist.
+  const Result r = Run({"--out", Path("no/such/dir/out.tsv")});
+  EXPECT_EQ(r.code, 2);
+  ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
+  EXPECT_TRUE(Contains(r.err, Path("no/such/dir/out.tsv")));
+  EXPECT_FALSE(Exists(Path("no")));
+  WriteFile(Path("plain"), "x");
+  const Result r2 = Run({"--out", Path("plain/out.tsv")});
+  EXPECT_EQ(r2.code, 2);
+  EXPECT_TRUE(Contains(r2.err, "plain/out.tsv"));
+  EXPECT_EQ(ReadFile(Path("plain")), "x");
+}
+
+TEST_F(SimulateApp, RequiresOut) {
+  const Result r = Run({"--t_end", "1"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(Contains(r.err, "--out"));
+}
+
+TEST_F(SimulateApp, LeavesExistingOutputUnchangedOnBadInput) {
+  const std::string out = Path("keep.tsv");
+  WriteFile(out, "precious\n");
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--beta", "nan"},
+                                              {"--mu_m", "0.5"},
+                                              {"--gamma", "1"},
+                                              {"--study", Path("missing.ini")}}) {
+    std::vector<std::string> args = bad;
+    args.push_back("--out");
+    args.push_back(out);
+    const Result r = Run(args);
+    EXPECT_EQ(r.code, 2) << bad[0];
+    EXPECT_EQ(ReadFile(out), "precious\n") << bad[0];
+  }
+}
+
+TEST_F(SimulateApp, IntegratorFailureExitsOneWithoutData) {
+  // 10 CVODE steps cannot cover an output interval of 50 at tight tolerance.
+  const std::string out = Path("fail.tsv");
+  WriteFile(out, "old\n");
+  const Result r =
+      Run({"--xdot0", "0.125", "--max_steps", "10", "--dt", "50", "--t_end", "100", "--out", out});
+  EXPECT_EQ(r.code, 1);
+  const auto lines = r.err_lines();
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_TRUE(Contains(lines[0], "at t = "));
+  EXPECT_TRUE(Contains(lines[0], "slip-below"));
+  EXPECT_EQ(ReadFile(out), "old\n");  // not replaced by a partial run
+}
+
+TEST_F(SimulateApp, NoTemporaryFilesLeftBehind) {
+  const Result r = Run({"--t_end", "2", "--out", Path("a.tsv")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  DIR* d = ::opendir(dir_.c_str());
+  ASSERT_NE(d, nullptr);
+  std::vector<std::string> names;
+  while (const dirent* e = ::readdir(d)) names.push_back(e->d_name);
+  ::closedir(d);
+  for (const auto& name : names) EXPECT_FALSE(Contains(name, ".tmp-")) << name;
+}
+
+}  // namespace
