@@ -54,18 +54,22 @@ constexpr int kP = 1, kBranch = 3, kPeriod = 4, kXMin = 5, kXMax = 6, kXdMin = 7
               kMult = 10, kStable = 11;
 
 // Curves of one quantity: per branch, stable solid and unstable dashed.
-// Steady sliding (gray) is branch 0.
+// Steady sliding (gray, titled once) is branch 0; the title goes on the
+// first curve of the other branches.
 std::string Curves(const std::set<int>& branches, int col, const std::string& title, int color,
-                   int equilibrium = 0) {
+                   bool with_equilibrium = true) {
   std::ostringstream os;
-  bool first = true;
+  bool first = true, titled = false;
   for (int b : branches) {
+    const bool eq = b == 0;
+    if (eq && !with_equilibrium) continue;
     for (int stable : {1, 0}) {
+      std::string t = "notitle";
+      if (!eq && !titled) t = "title \"" + title + "\"", titled = true;
       os << (first ? "" : ", \\\n     ") << "'branch.tsv' using " << kP << ":(($" << kBranch
          << "==" << b << " && $" << kStable << "==" << stable << ") ? $" << col
-         << " : NaN) with lines lc " << (b == equilibrium ? "rgb 'gray50'" : std::to_string(color))
-         << " lw 2 dt " << (stable ? 1 : 2) << " "
-         << (first ? "title \"" + title + "\"" : "notitle");
+         << " : NaN) with lines lc " << (eq ? "rgb 'gray50'" : std::to_string(color))
+         << " lw 2 dt " << (stable ? 1 : 2) << " " << t;
       first = false;
     }
   }
@@ -78,7 +82,9 @@ std::string Special(int col) {
   os << "'special_points.tsv' using 2:" << col
      << " with points pt 7 ps 1.2 lc rgb 'black' notitle, \\\n"
      << "     'special_points.tsv' using 2:" << col
-     << ":1 with labels offset 0,1.2 font ',11' notitle";
+     << ":(strcol(1) eq 'LP' ? '' : strcol(1)) with labels offset 0,1.2 font ',11' notitle, \\\n"
+     << "     'special_points.tsv' using 2:" << col
+     << ":(strcol(1) eq 'LP' ? 'LP' : '') with labels offset 0,-1.2 font ',11' notitle";
   return os.str();
 }
 }  // namespace
@@ -115,11 +121,12 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
        << "\nunset output\n";
   };
   plot("bifurcation_x.png", "x range (min and max)",
-       Curves(branches, kXMax, "x max", 1) + ", \\\n     " + Curves(branches, kXMin, "x min", 3),
+       Curves(branches, kXMax, "x max", 1) + ", \\\n     " +
+           Curves(branches, kXMin, "x min", 3, false),
        Special(5) + ", \\\n     " + Special(4));
   plot("bifurcation_xdot.png", "x' range (min and max)",
        Curves(branches, kXdMax, "x' max", 1) + ", \\\n     " +
-           Curves(branches, kXdMin, "x' min", 3),
+           Curves(branches, kXdMin, "x' min", 3, false),
        Special(6));
   plot("period.png", "period", Curves(branches, kPeriod, "period", 1), Special(3));
   plot("multiplier.png", "nontrivial Floquet multiplier (equilibrium: max Re lambda)",
@@ -130,6 +137,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
     os << "set output 'estimates.png'.suffix\n"
        << "set terminal pngcairo size 1000,1000 enhanced font ',12'\n"
        << "set multiplot layout 2,1\n"
+       << "set key bottom left\n"
        << "set title 'smallest slip velocity: computed and estimated' noenhanced\n"
        << "set ylabel \"x' min\"\n"
        << "plot 'branch.tsv' using 1:(" << periodic << " ? $" << kXdMin

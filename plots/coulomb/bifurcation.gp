@@ -1,0 +1,42 @@
+# Bifurcation diagrams written by ss_continue; run `gnuplot bifurcation.gp` in this directory.
+# Solid: stable, dashed: unstable, gray: steady sliding. GR grazing-sliding, HB Hopf,
+# LP fold.
+if (!exists('suffix')) suffix = ''
+set terminal pngcairo size 1000,700 enhanced font ',12'
+set datafile separator '\t'
+set key top right
+set grid
+set xlabel 'v'
+set title 'law=coulomb beta=0 v=0.25 mu_s=0.4 mu_k=0.25' noenhanced
+set output 'bifurcation_x.png'.suffix
+set ylabel "x range (min and max)"
+plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $6 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
+     'branch.tsv' using 1:(($3==0 && $11==0) ? $6 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
+     'branch.tsv' using 1:(($3==1 && $11==1) ? $6 : NaN) with lines lc 1 lw 2 dt 1 title "x max", \
+     'branch.tsv' using 1:(($3==1 && $11==0) ? $6 : NaN) with lines lc 1 lw 2 dt 2 notitle, \
+     'branch.tsv' using 1:(($3==1 && $11==1) ? $5 : NaN) with lines lc 3 lw 2 dt 1 title "x min", \
+     'branch.tsv' using 1:(($3==1 && $11==0) ? $5 : NaN) with lines lc 3 lw 2 dt 2 notitle
+unset output
+set output 'bifurcation_xdot.png'.suffix
+set ylabel "x' range (min and max)"
+plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $8 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
+     'branch.tsv' using 1:(($3==0 && $11==0) ? $8 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
+     'branch.tsv' using 1:(($3==1 && $11==1) ? $8 : NaN) with lines lc 1 lw 2 dt 1 title "x' max", \
+     'branch.tsv' using 1:(($3==1 && $11==0) ? $8 : NaN) with lines lc 1 lw 2 dt 2 notitle, \
+     'branch.tsv' using 1:(($3==1 && $11==1) ? $7 : NaN) with lines lc 3 lw 2 dt 1 title "x' min", \
+     'branch.tsv' using 1:(($3==1 && $11==0) ? $7 : NaN) with lines lc 3 lw 2 dt 2 notitle
+unset output
+set output 'period.png'.suffix
+set ylabel "period"
+plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $4 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
+     'branch.tsv' using 1:(($3==0 && $11==0) ? $4 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
+     'branch.tsv' using 1:(($3==1 && $11==1) ? $4 : NaN) with lines lc 1 lw 2 dt 1 title "period", \
+     'branch.tsv' using 1:(($3==1 && $11==0) ? $4 : NaN) with lines lc 1 lw 2 dt 2 notitle
+unset output
+set output 'multiplier.png'.suffix
+set ylabel "nontrivial Floquet multiplier (equilibrium: max Re lambda)"
+plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $10 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
+     'branch.tsv' using 1:(($3==0 && $11==0) ? $10 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
+     'branch.tsv' using 1:(($3==1 && $11==1) ? $10 : NaN) with lines lc 1 lw 2 dt 1 title "multiplier", \
+     'branch.tsv' using 1:(($3==1 && $11==0) ? $10 : NaN) with lines lc 1 lw 2 dt 2 notitle
+unset output
