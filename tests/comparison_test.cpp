@@ -79,8 +79,11 @@ TEST(Comparison, ColumnsAgreeWithAnIndependentRecomputation) {
   EXPECT_GE(checked, 5);
   EXPECT_GE(checked_ps, 3);
   // Averaging is not applied to stick-slip orbits.
-  for (size_t i = 0; i < r.points.size(); ++i)
-    if (r.points[i].kind == PointKind::kStickSlip) EXPECT_TRUE(std::isnan(err_a_ps[i]));
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    if (r.points[i].kind == PointKind::kStickSlip) {
+      EXPECT_TRUE(std::isnan(err_a_ps[i]));
+    }
+  }
   // GR and HB against their estimates.
   ASSERT_EQ(c.special.size(), 2u);
   EXPECT_NEAR(c.special[0].estimated, 2 * std::sqrt((k1 - 2 * b) / (15 * k3)), 1e-12);

@@ -11,9 +11,15 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <boost/numeric/odeint.hpp>
 
 #include "stickslip/params.hpp"
+
+// Odeint's steppers copy their uninitialized scratch arrays on construction; silence GCC's
+// -Wuninitialized about that for odeint and this header only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/numeric/odeint.hpp>
 
 namespace stickslip::reference {
 
@@ -24,6 +30,10 @@ using Real = long double;
 // delta = 3, v = 0.2.
 inline constexpr Real kLeineXMax = 1.133944669704L;
 inline constexpr Real kLeinePeriod = 12.001L;
+// The same x_max of the exact Filippov model, from a 30-digit Taylor integration (mpmath odefun)
+// of the first slip from (1, 0.2) to x' = 0. The published value is 6.7e-9 lower, presumably
+// the tolerance band of the switch model used by Leine et al.
+inline constexpr Real kLeineXMaxExact = 1.13394467644165683998L;
 
 // Coulomb law, beta = 0: slip is a circle about x = mu_k of radius sqrt(v^2 + (mu_s - mu_k)^2),
 // so T = pi + 2 atan(v / (mu_s - mu_k)) + 2 (mu_s - mu_k) / v.
@@ -194,12 +204,12 @@ struct Extremes {
 // Adds to e the extrema inside one step [0, h] from s0 to s1: x at roots of y, y at roots of y'
 // (sign changes between the step's ends, located by bisection), and the step end itself.
 template <std::size_t N>
-void AddStepExtremes(const Stepper<N>& st, const State<N>& s0, Real t0, Real h,
-                     const State<N>& s1, Extremes& e) {
+void AddStepExtremes(const Stepper<N>& st, const State<N>& s0, Real t0, Real h, const State<N>& s1,
+                     Extremes& e) {
   const auto& f = st.field();
   if ((s0[1] > 0) != (s1[1] > 0)) {
-    const Real hr = Bisect([&](Real hh) { return st.From(s0, t0, hh)[1] > 0; }, 0, h,
-                           s0[1] > 0, t0);
+    const Real hr =
+        Bisect([&](Real hh) { return st.From(s0, t0, hh)[1] > 0; }, 0, h, s0[1] > 0, t0);
     const State<N> r = st.From(s0, t0, hr);
     e.Add(r[0], r[1]);
   }
@@ -236,8 +246,8 @@ inline bool SlipSegment(const Model& m, int sigma, Real x_start, Real tol, Real 
     const bool dp1 = sigma * f(s)[1] > 0;
     Real a = 0, b = -1;  // bracket of the first crossing, d(a) > 0 >= d(b)
     if (!dp0 && dp1) {   // minimum of d inside the step
-      const Real hm = Bisect([&](Real hh) { return sigma * f(st.From(s0, t0, hh))[1] > 0; }, 0,
-                             h, false, t0);
+      const Real hm =
+          Bisect([&](Real hh) { return sigma * f(st.From(s0, t0, hh))[1] > 0; }, 0, h, false, t0);
       if (!d_at(hm)) {
         b = hm;
       } else if (d(s) <= 0) {
@@ -273,7 +283,7 @@ struct StickSlipOrbit {
 // The stick-slip orbit through the exit point (x0, v), x0 = mu_s - 2 beta v (design notes,
 // "The return map on Ω is constant"): slip from (x0, v) until the first arrival in Ω, crossing
 // x' = v outside the stick interval into the other slip mode, then stick for (x0 - x_a) / v.
-inline StickSlipOrbit StickSlip(const Params& p, Real tol = 1e-16L, Real t_max = 2000,
+inline StickSlipOrbit StickSlip(const Params& p, Real tol = 1e-17L, Real t_max = 2000,
                                 int max_crossings = 50) {
   const Model m(p);
   StickSlipOrbit o;
@@ -339,7 +349,7 @@ struct PureSlipOrbit {
   bool found = false;   // Newton converged to a pure-slip orbit
   bool sticks = false;  // the converged orbit reaches x' = v: it would stick (or cross)
   int iterations = 0;
-  Real x_section = 0;   // fixed point: x at y = 0, y decreasing (the x maximum)
+  Real x_section = 0;  // fixed point: x at y = 0, y decreasing (the x maximum)
   Real period = 0;
   Real x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
   Real multiplier = 0;      // exp(∮ (-2 beta + F'(y - v)) dt), the trace formula
@@ -348,8 +358,7 @@ struct PureSlipOrbit {
 
 // Pure-slip periodic orbit by Newton on the return map P of the section y = 0, y decreasing,
 // started at (x_guess, 0); x_guess must exceed the steady sliding position mu(v).
-inline PureSlipOrbit PureSlip(const Params& p, Real x_guess, Real tol = 1e-16L,
-                              Real t_max = 200) {
+inline PureSlipOrbit PureSlip(const Params& p, Real x_guess, Real tol = 1e-17L, Real t_max = 200) {
   const Model m(p);
   const Real x_bar = m.law.Mu(m.v);  // steady sliding: y = 0 is transversal only for x > x_bar
   PureSlipOrbit o;
@@ -395,8 +404,8 @@ inline Real FirstReturnMaxXdot(const Model& m, Real tol, Real t_max = 200) {
     const bool p1 = f(s)[1] > 0;
     if (!p0 && p1) seen_min = true;
     if (seen_min && p0 && !p1) {
-      const Real hm = Bisect([&](Real hh) { return f(st.From(s0, t0, hh))[1] > 0; }, 0, t - t0,
-                             true, t0);
+      const Real hm =
+          Bisect([&](Real hh) { return f(st.From(s0, t0, hh))[1] > 0; }, 0, t - t0, true, t0);
       return st.From(s0, t0, hm)[1];
     }
   }
@@ -406,7 +415,7 @@ inline Real FirstReturnMaxXdot(const Model& m, Real tol, Real t_max = 200) {
 // Grazing belt speed: the v in [lo, hi] where the slip phase from (x0, v) returns to x' = v
 // tangentially and the stick phase vanishes. Bisection on sign(FirstReturnMaxXdot - v) down to
 // v_tol. Returns NaN if the sign does not change over [lo, hi].
-inline Real GrazingSpeed(Params p, Real lo, Real hi, Real v_tol = 1e-13L, Real tol = 1e-16L) {
+inline Real GrazingSpeed(Params p, Real lo, Real hi, Real v_tol = 1e-13L, Real tol = 1e-17L) {
   auto g = [&](Real v) {
     Model m(p);
     m.v = v;
@@ -423,3 +432,5 @@ inline Real GrazingSpeed(Params p, Real lo, Real hi, Real v_tol = 1e-13L, Real t
 }
 
 }  // namespace stickslip::reference
+
+#pragma GCC diagnostic pop
