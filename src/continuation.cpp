@@ -157,7 +157,7 @@ class Tracer {
   void SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind came_from);
   void LocateFold(double a0, double p0, double a1, double p1, bool minimum);
   void FoldAt(double p, const FlowResult& run, const std::string& what);
-  void AddHopfEnd(double p_near, bool stable, bool at_start);
+  void AddHopfEnd(double p_near, bool stable);
   bool GrazingFromPureSlip(Cursor& c, double p, double dp_sign, double step);
   void Trace(Cursor c);
 
@@ -339,6 +339,20 @@ OrbitStatus Tracer::EvalG(double a, double p, double* g, double* ga, ReturnMap* 
   return finder_.Desingularised(a, g, ga, map);
 }
 
+// The pure-slip orbit a converged return map describes.
+Orbit PureSlipFromMap(const ReturnMap& map) {
+  Orbit o;
+  o.kind = OrbitKind::kPureSlip;
+  o.period = map.period;
+  o.x_min = map.flow.x_min;
+  o.x_max = map.flow.x_max;
+  o.xdot_min = map.flow.xdot_min;
+  o.xdot_max = map.flow.xdot_max;
+  o.multiplier = map.dpdx;
+  o.stable = std::abs(map.dpdx) < 1;
+  return o;
+}
+
 bool Tracer::DGDp(double a, double p, double g, double h, double* gp) {
   for (double step : {h, -h}) {
     double g2 = 0;
@@ -464,7 +478,7 @@ void Tracer::FoldAt(double p, const FlowResult& run, const std::string& what) {
 
 // The pure-slip branch shrinks onto the Hopf point: end it there with
 // amplitude zero and period 2 pi (lambda = +-i).
-void Tracer::AddHopfEnd(double p_near, bool stable, bool at_start) {
+void Tracer::AddHopfEnd(double p_near, bool stable) {
   int best = -1;
   for (size_t i = 0; i < hopf_.size(); ++i)
     if (best < 0 || std::abs(hopf_[i] - p_near) < std::abs(hopf_[best] - p_near)) best = i;
@@ -482,7 +496,6 @@ void Tracer::AddHopfEnd(double p_near, bool stable, bool at_start) {
   pt.multiplier = 1.0;
   pt.stable = stable;
   pt.amplitude = 0.0;
-  (void)at_start;
   Add(pt);
 }
 
@@ -580,15 +593,7 @@ void Tracer::TracePureSlip(Cursor& c) {
       ta = -ta;
       tp = -tp;
     }
-    Orbit o;
-    o.kind = OrbitKind::kPureSlip;
-    o.period = map.period;
-    o.x_min = map.flow.x_min;
-    o.x_max = map.flow.x_max;
-    o.xdot_min = map.flow.xdot_min;
-    o.xdot_max = map.flow.xdot_max;
-    o.multiplier = map.dpdx;
-    o.stable = std::abs(map.dpdx) < 1;
+    const Orbit o = PureSlipFromMap(map);
     last_stable = o.stable;
     last_xdot_max = o.xdot_max;
     last_v = Model(At(p)).v();
@@ -627,7 +632,7 @@ void Tracer::TracePureSlip(Cursor& c) {
       continue;
     }
     if (!hopf_start_pending && ta < 0 && a_pred < a_end) {
-      AddHopfEnd(p, last_stable, false);
+      AddHopfEnd(p, last_stable);
       c.phase = Cursor::kDone;
       return;
     }
@@ -695,17 +700,9 @@ void Tracer::TracePureSlip(Cursor& c) {
       nta = -nta;
       ntp = -ntp;
     }
-    Orbit o;
-    o.kind = OrbitKind::kPureSlip;
-    o.period = map.period;
-    o.x_min = map.flow.x_min;
-    o.x_max = map.flow.x_max;
-    o.xdot_min = map.flow.xdot_min;
-    o.xdot_max = map.flow.xdot_max;
-    o.multiplier = map.dpdx;
-    o.stable = std::abs(map.dpdx) < 1;
+    const Orbit o = PureSlipFromMap(map);
     if (hopf_start_pending) {
-      AddHopfEnd(p_hopf_start, o.stable, true);
+      AddHopfEnd(p_hopf_start, o.stable);
       hopf_start_pending = false;
     } else if (ntp * tp < 0) {
       LocateFold(a, p, a_eval, p_eval, tp < 0);
