@@ -105,6 +105,7 @@ class Tracer {
         hi_(std::max(o.from, o.to)),
         dir_(o.to > o.from ? 1.0 : -1.0) {
     finder_.set_floquet(false);
+    if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
   }
 
   ContinuationResult Run();
@@ -119,13 +120,14 @@ class Tracer {
   bool Stop() {
     if (o_.cancelled && o_.cancelled()) {
       res_.status = ContinuationStatus::kCancelled;
-      res_.message = "cancelled at " + o_.param + " = " + Num(last_p_);
+      res_.message = res_.points.empty() ? "cancelled before the first point"
+                                         : "cancelled at " + o_.param + " = " + Num(last_p_);
       return true;
     }
     return res_.status != ContinuationStatus::kOk;
   }
   void Fail(const std::string& where, const std::string& what) {
-    if (res_.status != ContinuationStatus::kOk) return;
+    if (res_.status != ContinuationStatus::kOk || Stop()) return;
     res_.status = ContinuationStatus::kFailed;
     res_.message = where + ": " + what;
   }

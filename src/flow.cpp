@@ -23,6 +23,8 @@ const char* FlowStatusName(FlowStatus s) {
       return "integrator-failed";
     case FlowStatus::kTooManySwitches:
       return "too-many-switches";
+    case FlowStatus::kCancelled:
+      return "cancelled";
   }
   return "?";
 }
@@ -101,7 +103,7 @@ Cvode& Flow::Solver(bool variational) {
 }
 
 struct Flow::SlipEnd {
-  enum Kind { kArrival, kSection, kVelocityMax, kTime, kFail } kind;
+  enum Kind { kArrival, kSection, kVelocityMax, kTime, kFail, kCancel } kind;
   double t;
   Vec2 z;
   Mat2 phi;
@@ -169,6 +171,12 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
       t_start = t_lo;
       restarted = true;
       continue;
+    }
+    if (cancel_ && cancel_()) {
+      std::ostringstream os;
+      os << "cancelled at t = " << t << " in " << ModeName(mode_);
+      r.message = os.str();
+      return finish(SlipEnd::kCancel, t, y);
     }
     if (flag < 0) {
       std::ostringstream os;
@@ -301,6 +309,8 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     switch (e.kind) {
       case SlipEnd::kFail:
         return done(FlowStatus::kIntegratorFailed);
+      case SlipEnd::kCancel:
+        return done(FlowStatus::kCancelled);
       case SlipEnd::kTime:
         return done(FlowStatus::kTimeLimit);
       case SlipEnd::kSection:

@@ -30,6 +30,8 @@ const char* OrbitStatusName(OrbitStatus s) {
       return "collapsed";
     case OrbitStatus::kMissed:
       return "missed";
+    case OrbitStatus::kCancelled:
+      return "cancelled";
   }
   return "?";
 }
@@ -59,6 +61,8 @@ OrbitStatus FromFlowStatus(FlowStatus s) {
     case FlowStatus::kIntegratorFailed:
     case FlowStatus::kTooManySwitches:
       return OrbitStatus::kIntegratorFailed;
+    case FlowStatus::kCancelled:
+      return OrbitStatus::kCancelled;
     case FlowStatus::kTimeLimit:
       return OrbitStatus::kNoReturn;
     case FlowStatus::kStick:

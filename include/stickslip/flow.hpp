@@ -42,6 +42,7 @@ enum class FlowStatus {
   kVelocityMax,       // a maximum of x' (StopRule::at_velocity_max)
   kIntegratorFailed,  // CVODE returned an error; message says where
   kTooManySwitches,   // more than FlowOptions::max_switches mode changes
+  kCancelled,         // the cancel hook returned true
 };
 const char* FlowStatusName(FlowStatus s);
 
@@ -69,7 +70,8 @@ struct FlowResult {
   // d z(t) / d z(t0), saltation matrices included; only with variational.
   Mat2 jacobian = Mat2::Identity();
   bool ok() const {
-    return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches;
+    return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches &&
+           status != FlowStatus::kCancelled;
   }
 };
 
@@ -97,6 +99,9 @@ class Flow {
   }
 
   long total_steps() const { return total_steps_; }
+  // Polled after every return of CVODE: a run stops with kCancelled once it
+  // returns true (interruption, wall-time limits). Empty: never.
+  void set_cancel(std::function<bool()> cancel) { cancel_ = std::move(cancel); }
 
  private:
   struct SlipEnd;
@@ -112,6 +117,7 @@ class Flow {
   Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
   std::unique_ptr<Cvode> plain_, var_;
   long total_steps_ = 0;
+  std::function<bool()> cancel_;
 };
 
 }  // namespace stickslip

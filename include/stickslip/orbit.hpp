@@ -60,6 +60,7 @@ enum class OrbitStatus {
   kNotConverged,      // Newton did not converge in max_newton steps
   kCollapsed,         // Newton ran into the equilibrium (amplitude -> 0)
   kMissed,            // StickSlip(first_return_only): the first return misses Omega
+  kCancelled,         // the flow's cancel hook fired
 };
 const char* OrbitStatusName(OrbitStatus s);
 

@@ -204,7 +204,7 @@ int Main(int argc, char** argv) {
   }
   std::cout << "wrote " << dir << "/branch.tsv, special_points.tsv, bifurcation.gp"
             << (args.Flag("no_plots") || !plots_ok ? "" : " and the PNGs") << "\n";
-  if (cmp.applies) PrintComparison(cmp, opts.param);
+  if (cmp.applies && !cmp.rows.empty()) PrintComparison(cmp, opts.param);
   if (r.partial()) {
     const std::string why = g_signal ? std::string("interrupted by signal ") +
                                            std::to_string(static_cast<int>(g_signal))
