@@ -337,6 +337,12 @@ void Tracer::TraceStickSlip(Cursor& c) {
 }
 
 OrbitStatus Tracer::EvalG(double a, double p, double* g, double* ga, ReturnMap* map) {
+  // A corrector may wander out of the model's domain (v <= 0, say): no orbit.
+  const std::string err = stickslip::ValidationError(At(p));
+  if (!err.empty()) {
+    if (map) map->message = "outside the model's domain: " + err;
+    return OrbitStatus::kNotConverged;
+  }
   SetP(p);
   return finder_.Desingularised(a, g, ga, map);
 }
@@ -689,6 +695,24 @@ void Tracer::TracePureSlip(Cursor& c) {
       if (ds < ds_min) {
         Fail("pure-slip branch at " + o_.param + " = " + Num(p),
              why.empty() ? "corrector did not converge" : why);
+        return;
+      }
+      continue;
+    }
+    // Converged beyond the range end: land on the end itself instead.
+    if (p_eval > hi_ || p_eval < lo_) {
+      const double end = p_eval > hi_ ? hi_ : lo_;
+      Orbit o;
+      double a_end_pt = 0;
+      if (PureSlipAtFixedP(end, std::max(0.5 * (a + a_eval), 1e-3), &o, &a_end_pt)) {
+        if (hopf_start_pending) AddHopfEnd(p_hopf_start, o.stable);
+        Add(FromOrbit(end, o, a_end_pt));
+        c.phase = Cursor::kDone;
+        return;
+      }
+      ds *= 0.5;
+      if (ds < ds_min) {
+        Fail("pure-slip orbit at " + o_.param + " = " + Num(end), "no convergence at the range end");
         return;
       }
       continue;

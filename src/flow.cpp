@@ -79,8 +79,14 @@ int Flow::Roots(double /*t*/, N_Vector y, double* g, void* data) {
   const auto* self = static_cast<const Flow*>(data);
   const double* z = N_VGetArrayPointer(y);
   g[0] = z[1] - self->model_.v();
-  g[1] = self->model_.Acceleration(self->mode_, z[0], z[1]);
-  g[2] = z[1];
+  // On steady sliding x'' and x' are both rounding noise: they chatter about 0
+  // and round to exactly 0 again and again, which CVODE's root finder refuses
+  // next to a root (cvRcheck2). There, and only there, neither is an event.
+  const double band = 64 * 2.2e-16 * (std::abs(z[0]) + std::abs(self->model_.v()) + 1.0);
+  const double acc = self->model_.Acceleration(self->mode_, z[0], z[1]);
+  const bool at_rest = std::abs(acc) <= band && std::abs(z[1]) <= band;
+  g[1] = at_rest ? band : acc;
+  g[2] = at_rest ? band : z[1];
   return 0;
 }
 
@@ -188,9 +194,15 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     if (flag == CV_ROOT_RETURN) {
       int rf[kNumRoots];
       cv.RootInfo(rf);
-      // A start on a root surface (x'' = 0 at the stick exit, say) holds only
-      // to rounding; an event at t = t0 is not an event.
-      if (t - t_start <= 64 * 2.2e-16 * std::max(1.0, std::abs(t_start))) continue;
+      // A root exactly at an output time: report the sample, or the next call
+      // would ask CVODE for tout = t.
+      if (sampling && t >= next_output) {
+        observer(Sample{t, Vec2(y[0], y[1]), mode_});
+        next_output += output_dt;
+      }
+      // A start on a root surface (x'' = 0 at the stick exit, x' = 0 on the
+      // section) holds only to rounding; an event at t = t0 is not an event.
+      if (t - t_start <= 1e-12 * std::max(1.0, std::abs(t_start))) continue;
       if (rf[0] != 0 && stop.switching) {
         double z[2] = {y[0], v};
         std::copy(y + 2, y + n, buf + 2);

@@ -185,6 +185,9 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     throw InvalidArgument("PureSlip: a_guess = " + std::to_string(a_guess) + " must be > 0");
   OrbitResult out;
   double a = a_guess, a_prev = a_guess, last_da = HUGE_VAL;
+  // A pure-slip orbit below the belt stays within |x'| < v + a bit, so its
+  // section amplitude is a few times (v + mu_s) at most.
+  const double a_max = std::max(10 * a_guess, 10 * (model().v() + model().params().mu_s + 1));
   ReturnMap map;
   for (int it = 1; it <= options_.max_newton; ++it) {
     out.iterations = it;
@@ -209,8 +212,11 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     }
     double da = dg != 0 ? -g / dg : 0.0;
     if (!std::isfinite(da)) da = 0.0;
-    // Keep a > 0: the orbit's section point lies right of the equilibrium.
+    // Keep a > 0 (the section point lies right of the equilibrium) and at most
+    // double it per step: where G is flat (overdamped sliding, no orbit) an
+    // unbounded step would send the shooting off to a ~ 1e14.
     if (a + da < 0.2 * a) da = -0.8 * a;
+    if (da > a) da = a;
     // Converged, or stalled at the integration noise floor.
     const double tol = options_.EffectiveNewtonTol() * std::max(1.0, a);
     if (std::abs(da) <= tol ||
@@ -228,6 +234,12 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     a_prev = a;
     last_da = da;
     a += da;
+    if (a > a_max) {
+      out.status = OrbitStatus::kNotConverged;
+      out.message = "pure-slip shooting left the plausible range (a > " + std::to_string(a_max) +
+                    "): no pure-slip orbit near the guess";
+      return out;
+    }
     if (a < 1e-10) {
       out.status = OrbitStatus::kCollapsed;
       out.message = "pure-slip shooting collapsed onto the equilibrium";
