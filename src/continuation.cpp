@@ -69,8 +69,9 @@ std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (from == to) return "from = to = " + Num(from) + ": the range is empty";
   if (!(max_step > 0 && max_step <= 0.5))
     return "max_step = " + Num(max_step) + " must be in (0, 0.5]";
-  if (!(min_step > 0 && min_step < max_step))
-    return "min_step = " + Num(min_step) + " must be in (0, max_step)";
+  if (!(min_step > 0)) return "min_step = " + Num(min_step) + " must be > 0";
+  if (!(max_step > min_step))
+    return "max_step = " + Num(max_step) + " must be > min_step = " + Num(min_step);
   if (!(locate_tol > 0 && locate_tol < 1e-3))
     return "locate_tol = " + Num(locate_tol) + " must be in (0, 1e-3)";
   if (max_points < 2) return "max_points = " + Num(max_points) + " must be >= 2";
@@ -789,8 +790,9 @@ ContinuationResult Tracer::Run() {
   }
   // Steady sliding: its rows go first unless a periodic orbit starts at `from`.
   if (!periodic_first) res_.points.clear();  // nothing was traced
+  // Steady sliding is exact and already computed: kept even in a partial result,
+  // with its Hopf points.
   for (auto& pt : eq_rows) {
-    if (Stop()) break;
     pt.branch = eq_id;
     Add(pt);
   }

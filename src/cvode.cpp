@@ -125,6 +125,12 @@ double Cvode::LastStepStart() {
   return tn - hu;
 }
 
+double Cvode::CurrentTime() {
+  double tn = 0;
+  Check(CVodeGetCurrentTime(mem_, &tn), "CVodeGetCurrentTime");
+  return tn;
+}
+
 long Cvode::steps() const {
   long n = 0;
   CVodeGetNumSteps(mem_, &n);

@@ -79,15 +79,24 @@ int Flow::Roots(double /*t*/, N_Vector y, double* g, void* data) {
   const auto* self = static_cast<const Flow*>(data);
   const double* z = N_VGetArrayPointer(y);
   g[0] = z[1] - self->model_.v();
-  // On steady sliding x'' and x' are both rounding noise: they chatter about 0
-  // and round to exactly 0 again and again, which CVODE's root finder refuses
-  // next to a root (cvRcheck2). There, and only there, neither is an event.
-  const double band = 64 * 2.2e-16 * (std::abs(z[0]) + std::abs(self->model_.v()) + 1.0);
+  // On steady sliding x'' and x' are both integration noise: they chatter
+  // about 0 and round to exactly 0 again and again, which CVODE's root finder
+  // refuses next to a root (cvRcheck2). There, and only there, neither is an
+  // event.
   const double acc = self->model_.Acceleration(self->mode_, z[0], z[1]);
-  const bool at_rest = std::abs(acc) <= band && std::abs(z[1]) <= band;
-  g[1] = at_rest ? band : acc;
-  g[2] = at_rest ? band : z[1];
+  const bool at_rest = self->AtRest(z[0], z[1], acc);
+  g[1] = at_rest ? 1.0 : acc;
+  g[2] = at_rest ? 1.0 : z[1];
   return 0;
+}
+
+// At rest on steady sliding to within the integration noise: x' ~ atol,
+// x'' ~ rtol |x| (the force balance -x + mu(v) of nearly equal terms).
+bool Flow::AtRest(double x, double xdot, double acc) const {
+  const double scale = std::abs(x) + std::abs(model_.v()) + 1.0;
+  const double band_v = std::max(64 * 2.2e-16 * scale, 10 * options_.atol);
+  const double band_a = std::max(64 * 2.2e-16 * scale, 10 * (options_.atol + options_.rtol * scale));
+  return std::abs(xdot) <= band_v && std::abs(acc) <= band_a;
 }
 
 Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), options_(options) {
@@ -184,7 +193,20 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
       r.message = os.str();
       return finish(SlipEnd::kCancel, t, y);
     }
+    if (flag == CV_TOO_MUCH_WORK && mode_ == Mode::kSlipBelow &&
+        model_.SteadySliding().stable() &&
+        AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]))) {
+      // Settled on stable steady sliding, where it stays: the rest of the
+      // segment is (xbar, 0), and no event can follow.
+      double rest[6] = {model_.SteadySliding().x, 0.0, 0.0, 0.0, 0.0, 0.0};
+      while (sampling && next_output < t_end) {
+        observer(Sample{next_output, Vec2(rest[0], 0.0), mode_});
+        next_output += output_dt;
+      }
+      return finish(SlipEnd::kTime, t_end, rest);
+    }
     if (flag < 0) {
+      t = cv.CurrentTime();
       std::ostringstream os;
       os << "CVode failed (flag " << flag << ") at t = " << t << " in " << ModeName(mode_)
          << " at x = " << y[0] << ", x' = " << y[1] << ": " << cv.last_error();

@@ -40,6 +40,8 @@ class Cvode {
   void RootInfo(int* roots_found);
   // [tn - hu, tn]: the last step, where Interpolate is valid.
   double LastStepStart();
+  // CVODE's internal time tn (also after a failed call).
+  double CurrentTime();
 
   double* y() { return N_VGetArrayPointer(y_); }
   int size() const { return n_; }

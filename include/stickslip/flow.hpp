@@ -111,6 +111,7 @@ class Flow {
   static int Rhs(double t, N_Vector y, N_Vector ydot, void* data);
   static int RhsVar(double t, N_Vector y, N_Vector ydot, void* data);
   static int Roots(double t, N_Vector y, double* g, void* data);
+  bool AtRest(double x, double xdot, double acc) const;
 
   Model model_;
   FlowOptions options_;

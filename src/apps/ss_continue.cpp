@@ -104,10 +104,15 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
                   row.xdot_min);
     std::cout << head << cell(row.r1) << "  " << cell(row.a_ps) << "\n";
   }
-  std::cout << "  largest |error|: seed r1 " << Fixed(c.max_err_r1, 5) << " at " << param << " = "
-            << Fixed(c.p_max_err_r1, 5) << " (" << c.r1_applies << " points); averaging "
-            << Fixed(c.max_err_a_ps, 5) << " at " << param << " = " << Fixed(c.p_max_err_a_ps, 5)
-            << " (" << c.a_ps_applies << " pure-slip points; n/a on stick-slip orbits)\n"
+  auto largest = [&](double err, double p, int n, const char* what) {
+    if (n == 0) return std::string("n/a (no ") + what + ")";
+    return Fixed(err, 5) + " at " + param + " = " + Fixed(p, 5) + " (" + std::to_string(n) +
+           " " + what + ")";
+  };
+  std::cout << "  largest |error|: seed r1 "
+            << largest(c.max_err_r1, c.p_max_err_r1, c.r1_applies, "points") << "; averaging "
+            << largest(c.max_err_a_ps, c.p_max_err_a_ps, c.a_ps_applies, "pure-slip points")
+            << ", n/a on stick-slip orbits\n"
             << "  seed's displacement bound holds at " << c.bound_holds << " points, violated at "
             << c.bound_fails << "\n";
   for (const auto& s : c.special)
