@@ -78,15 +78,20 @@ int Flow::RhsVar(double t, N_Vector y, N_Vector ydot, void* data) {
 int Flow::Roots(double /*t*/, N_Vector y, double* g, void* data) {
   const auto* self = static_cast<const Flow*>(data);
   const double* z = N_VGetArrayPointer(y);
-  g[0] = z[1] - self->model_.v();
+  // x' - v: an exact 0 (a start on the surface, or a tangential touch where
+  // x' = v to rounding for a while) counts as still on the mode's side.
+  const double rel = z[1] - self->model_.v();
+  g[0] = rel != 0 ? rel : (self->mode_ == Mode::kSlipBelow ? -1e-300 : 1e-300);
   // On steady sliding x'' and x' are both integration noise: they chatter
   // about 0 and round to exactly 0 again and again, which CVODE's root finder
   // refuses next to a root (cvRcheck2). There, and only there, neither is an
   // event.
+  // Elsewhere an exact 0 (x'' = x0 - x rounds to 0 near the exit point, where
+  // a grazing orbit returns) becomes a tiny bias that moves no root.
   const double acc = self->model_.Acceleration(self->mode_, z[0], z[1]);
   const bool at_rest = self->AtRest(z[0], z[1], acc);
-  g[1] = at_rest ? 1.0 : acc;
-  g[2] = at_rest ? 1.0 : z[1];
+  g[1] = at_rest ? 1.0 : (acc != 0 ? acc : 1e-300);
+  g[2] = at_rest ? 1.0 : (z[1] != 0 ? z[1] : 1e-300);
   return 0;
 }
 
