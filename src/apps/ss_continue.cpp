@@ -129,11 +129,11 @@ int Main(int argc, char** argv) {
     cli::PrintHelp(std::cout, "ss_continue [--study FILE] [options]", desc, kNotes);
     return 0;
   }
-  const ss::Params base = cli::ModelFromArguments(args);
   ss::ContinuationOptions opts;
-  opts.orbit.flow = cli::FlowOptionsFromArguments(args);
   opts.param = args.Text("param", "v");
   opts.from = args.Number("from", 0.05);
+  const ss::Params base = cli::ModelFromArguments(args, opts.param, opts.from);
+  opts.orbit.flow = cli::FlowOptionsFromArguments(args);
   opts.to = args.Number("to", 0.5);
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");

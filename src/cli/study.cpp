@@ -291,7 +291,9 @@ std::string FirstGiven(const Arguments& args, const std::vector<std::string>& na
 
 }  // namespace
 
-Params ModelFromArguments(const Arguments& args) {
+Params ModelFromArguments(const Arguments& args) { return ModelFromArguments(args, "", 0.0); }
+
+Params ModelFromArguments(const Arguments& args, const std::string& continued, double at) {
   LawKind law = LawKind::kCubic;
   if (args.Given("law")) {
     try {
@@ -338,7 +340,9 @@ Params ModelFromArguments(const Arguments& args) {
       throw UsageError("invalid physical inputs: " + WithOrigin(args, e.what()));
     }
   }
-  const std::string err = ValidationError(p);
+  Params checked = p;
+  if (!continued.empty() && IsParameterName(continued)) SetParameter(checked, continued, at);
+  const std::string err = ValidationError(checked);
   if (!err.empty()) throw UsageError("invalid model: " + WithOrigin(args, err));
   return p;
 }

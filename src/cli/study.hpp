@@ -115,6 +115,10 @@ double ParseNumber(const std::string& text, const std::string& what);
 
 // The model from ModelOptions(), validated (throws UsageError).
 Params ModelFromArguments(const Arguments& args);
+// The same for a continuation in `continued`: the model is validated with that
+// parameter set to `at` (its own base value is never used, so --param v --v -1
+// is fine; the range ends are validated by ContinuationOptions).
+Params ModelFromArguments(const Arguments& args, const std::string& continued, double at);
 // The solver options from SolverOptions(), validated (throws UsageError).
 FlowOptions FlowOptionsFromArguments(const Arguments& args);
 // "law=cubic beta=0.05 v=0.25 ...": the law's parameters, for file headers.
