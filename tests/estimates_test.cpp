@@ -224,3 +224,24 @@ TEST(Estimates, RejectsNonCubicLawsAndBadOptions) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// The README's claim: with the tightest a1 the chain (3.21)-(3.30), as printed,
+// completes at no belt speed below v_max.
+TEST(Estimates, PrintedChainCompletesNowhereBelowVMax) {
+  Params p;
+  const double v_max = SeedVMax(p);
+  int tried = 0;
+  for (double v = 0.01; v < v_max; v += 0.01, ++tried) {
+    p.v = v;
+    const SeedEstimate e = EstimateSeed(p);
+    EXPECT_FALSE(e.applies) << "v = " << v;
+    EXPECT_FALSE(e.reason.empty()) << "v = " << v;
+  }
+  EXPECT_GE(tried, 40);
+}
+
+}  // namespace
+}  // namespace stickslip
