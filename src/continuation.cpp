@@ -93,6 +93,7 @@ struct Cursor {
   double a = 0;      // pure slip: section amplitude
   double dir = 1;    // direction of travel in p (stick slip), or sign of the first dp (pure slip)
   bool from_hopf = false;
+  bool skip_first = false;  // stick slip: the start point is already on a branch
 };
 
 class Tracer {
@@ -161,8 +162,16 @@ class Tracer {
   void LocateFold(double a0, double p0, double a1, double p1, bool minimum);
   void FoldAt(double p, const FlowResult& run, const std::string& what);
   void AddHopfEnd(double p_near, bool stable);
+  // A located Hopf point lies within 5 % of the range of p.
+  bool NearHopf(double p) const {
+    for (double h : hopf_)
+      if (std::abs(h - p) <= 0.05 * range_) return true;
+    return false;
+  }
   bool GrazingFromPureSlip(Cursor& c, double p, double dp_sign, double step);
   void Trace(Cursor c);
+  // p lies between stick-slip points of one branch already traced.
+  bool CoveredByStickSlip(double p) const;
 
   Params base_;
   ContinuationOptions o_;
@@ -286,7 +295,7 @@ void Tracer::TraceStickSlip(Cursor& c) {
     Fail("stick-slip orbit at " + o_.param + " = " + Num(p), res.message);
     return;
   }
-  Add(FromOrbit(p, prev, 0));
+  if (!c.skip_first) Add(FromOrbit(p, prev, 0));
   int count = 1;
   while (!Stop() && std::abs(end - p) > 1e-15 * std::max(1.0, std::abs(p))) {
     if (++count > o_.max_points) {
@@ -385,6 +394,14 @@ bool Tracer::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, double* a)
 // At GR the stick phase has length zero and the orbit is the grazing orbit
 // through (x0, v). Record GR, then carry on along the other kind of orbit.
 void Tracer::SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind came_from) {
+  // A grazing point already passed closes a loop of branches (a pure-slip
+  // branch joining two grazing points): the branch ends here.
+  for (const SpecialPoint& sp : res_.special) {
+    if (sp.kind == SpecialKind::kGrazing && std::abs(sp.p - p_gr) <= 1e3 * o_.locate_tol) {
+      c.phase = Cursor::kDone;
+      return;
+    }
+  }
   SetP(p_gr);
   finder_.set_floquet(true);
   double gap = 0;
@@ -433,9 +450,15 @@ void Tracer::SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind 
   if (came_from == PointKind::kPureSlip) {
     // Stick-slip orbits exist where the gap is positive.
     const double d = std::max(1e-6 * range_, 10 * o_.locate_tol);
+    const double side = p_gr + d <= hi_ ? 1.0 : -1.0;  // probe inside the range
     bool ok = false;
-    const double gap_plus = GrazingGapAt(std::min(hi_, p_gr + d), &ok);
-    const double dir = gap_plus > 0 ? 1.0 : -1.0;
+    const double gap_probe = GrazingGapAt(p_gr + side * d, &ok);
+    if (!ok) {
+      Fail("grazing point at " + o_.param + " = " + Num(p_gr),
+           "the grazing test function failed beside it");
+      return;
+    }
+    const double dir = gap_probe > 0 ? side : -side;
     if (dir != came_dir) FoldAt(p_gr, run, "non-smooth fold at GR: the pure-slip branch turns into stick-slip");
     c.phase = Cursor::kStickSlip;
     c.dir = dir;
@@ -471,6 +494,12 @@ void Tracer::SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind 
     }
   }
   c.phase = Cursor::kDone;
+  // The grazing orbit is a pure-slip orbit of the smooth slip flow, so a
+  // pure-slip branch leaves it on one side unless that side is out of range.
+  const double q_in = p_gr + came_dir * std::max(1e-4 * range_, 100 * o_.locate_tol);
+  if (q_in >= lo_ && q_in <= hi_)
+    Fail("grazing point at " + o_.param + " = " + Num(p_gr),
+         "no pure-slip orbit found on either side of it");
 }
 
 void Tracer::FoldAt(double p, const FlowResult& run, const std::string& what) {
@@ -548,8 +577,9 @@ bool Tracer::GrazingFromPureSlip(Cursor& c, double p, double dp_sign, double ste
   bool ok = false;
   const double gap0 = GrazingGapAt(p, &ok);
   if (!ok) return false;
+  // Search only near the branch: the grazing point is within a few steps.
   double q = p;
-  for (int k = 0; k < 60; ++k) {
+  for (int k = 0; k < 12; ++k) {
     double q2 = p + dp_sign * step * std::pow(1.5, k);
     q2 = std::min(hi_, std::max(lo_, q2));
     const double gap2 = GrazingGapAt(q2, &ok);
@@ -641,6 +671,11 @@ void Tracer::TracePureSlip(Cursor& c) {
       continue;
     }
     if (!hopf_start_pending && ta < 0 && a_pred < a_end) {
+      if (!NearHopf(p)) {
+        Fail("pure-slip branch at " + o_.param + " = " + Num(p),
+             "the amplitude shrinks to zero away from any Hopf point");
+        return;
+      }
       AddHopfEnd(p, last_stable);
       c.phase = Cursor::kDone;
       return;
@@ -746,6 +781,23 @@ void Tracer::TracePureSlip(Cursor& c) {
   }
 }
 
+bool Tracer::CoveredByStickSlip(double p) const {
+  const double tol = 1e-12 * std::max(1.0, range_);
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  int branch = -1;
+  for (const BranchPoint& pt : res_.points) {
+    if (pt.kind != PointKind::kStickSlip) continue;
+    if (pt.branch != branch) {
+      if (p >= lo - tol && p <= hi + tol) return true;
+      branch = pt.branch;
+      lo = hi = pt.p;
+    }
+    lo = std::min(lo, pt.p);
+    hi = std::max(hi, pt.p);
+  }
+  return p >= lo - tol && p <= hi + tol;
+}
+
 void Tracer::Trace(Cursor c) {
   while (c.phase != Cursor::kDone && !Stop()) {
     if (c.phase == Cursor::kStickSlip)
@@ -788,10 +840,10 @@ ContinuationResult Tracer::Run() {
       Trace(c);
     }
   }
-  // Steady sliding: its rows go first unless a periodic orbit starts at `from`.
-  if (!periodic_first) res_.points.clear();  // nothing was traced
-  // Steady sliding is exact and already computed: kept even in a partial result,
-  // with its Hopf points.
+  (void)periodic_first;
+  // Steady sliding follows (or comes first, if nothing starts at `from`). It is
+  // exact and already computed: kept even in a partial result, with its Hopf
+  // points.
   for (auto& pt : eq_rows) {
     pt.branch = eq_id;
     Add(pt);
@@ -805,6 +857,24 @@ ContinuationResult Tracer::Run() {
     c.a = 0;
     c.from_hopf = true;
     Trace(c);
+  }
+  // Stick-slip orbits exist wherever the slip phase from (x0, v) returns to
+  // Omega. One first-return integration per grid point finds any that the
+  // branches so far did not reach; each is followed both ways.
+  for (const BranchPoint& g : eq_rows) {
+    if (Stop()) break;
+    if (CoveredByStickSlip(g.p)) continue;
+    Orbit o;
+    OrbitResult r;
+    if (!StickSlipAt(g.p, &o, &r)) continue;
+    for (double d : {-dir_, dir_}) {
+      Cursor c;
+      c.phase = Cursor::kStickSlip;
+      c.p = g.p;
+      c.dir = d;
+      c.skip_first = d == dir_;  // the point at g.p is on the first of the two
+      Trace(c);
+    }
   }
   Stop();
   std::stable_sort(res_.special.begin(), res_.special.end(),

@@ -160,12 +160,16 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   // interpolant, and end the segment there.
   double buf[6];
   auto locate = [&](double a, double b, double level, SlipEnd::Kind kind) {
-    auto f = [&](double t) {
-      cv.Interpolate(t, buf);
-      return buf[1] - level;
-    };
+    auto f = [&](double t) { return cv.Interpolate(t, buf) ? buf[1] - level : NAN; };
     const RootResult root = FindRoot(f, a, b, 1e-15 * std::max(1.0, std::abs(b)));
-    cv.Interpolate(root.x, buf);
+    if (!root.ok || !cv.Interpolate(root.x, buf)) {
+      std::ostringstream os;
+      os << "locating x' = " << level << " on CVODE's interpolant in [" << a << ", " << b
+         << "] failed in " << ModeName(mode_);
+      r.message = os.str();
+      std::copy(cv.y(), cv.y() + n, buf);
+      return finish(SlipEnd::kFail, b, buf);
+    }
     buf[1] = level;
     return finish(kind, root.x, buf);
   };
@@ -182,8 +186,10 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
       // cvRcheck2 refuses a root function that is exactly zero at the last
       // root and just after it (x' = v and x'' = 0 together at a grazing
       // touch). Restart there: cvRcheck1 then sets such a function aside.
-      std::copy(cv.y(), cv.y() + n, buf);
-      cv.Interpolate(t_lo, buf);
+      if (!cv.Interpolate(t_lo, buf)) {
+        r.message = "restarting CVODE after a close root: no state at t = " + std::to_string(t_lo);
+        return finish(SlipEnd::kFail, t_lo, cv.y());
+      }
       total_steps_ += cv.steps() - steps_before;
       cv.Reinit(t_lo, buf);
       steps_before = 0;

@@ -215,3 +215,49 @@ TEST(Continuation, SameStructureAtEveryTolerance) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// A stick-slip branch that touches neither `from` nor a Hopf point: found by the
+// first-return check on the grid, followed both ways to its two grazing
+// points, which an unstable pure-slip branch joins (a loop, traced once).
+TEST(Continuation, FindsBranchesAwayFromTheStartAndTheHopfPoints) {
+  Params p;
+  p.law = LawKind::kStribeck;
+  p.mu_k = 0.25;
+  p.v_s = 0.5;
+  p.v = 0.6;
+  const ContinuationResult r = Trace(p, "v_s", 0.1, 1.5);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(gr.size(), 2u);
+  EXPECT_EQ(Labelled(r, SpecialKind::kFold).size(), 2u);
+  int ss = 0, ps = 0;
+  for (const auto& pt : r.points) {
+    if (pt.kind == PointKind::kStickSlip) {
+      ++ss;
+      EXPECT_GE(pt.p, gr[0].p - 1e-9);
+      EXPECT_LE(pt.p, gr[1].p + 1e-9);
+    }
+    if (pt.kind == PointKind::kPureSlip) {
+      ++ps;
+      EXPECT_FALSE(pt.stable);
+    }
+  }
+  EXPECT_GT(ss, 20);
+  EXPECT_GT(ps, 5);
+  // Each grazing point against the stick-slip orbit just inside it.
+  for (const auto& g : gr) {
+    const double inside = g.p + (g.p < 0.5 ? 1e-4 : -1e-4);
+    Params q = p;
+    q.v_s = inside;
+    OrbitFinder f{Model(q), OrbitOptions()};
+    const OrbitResult o = f.StickSlip();
+    ASSERT_TRUE(o.ok()) << "v_s = " << inside << ": " << o.message;
+    EXPECT_LT(o.orbit.t_stick, 0.05);
+  }
+}
+
+}  // namespace
+}  // namespace stickslip
