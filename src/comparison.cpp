@@ -40,7 +40,9 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
   seed_opts.bounds.check_points = check_points;
   for (size_t i = 0; i < n; ++i) {
     const BranchPoint& pt = r.points[i];
-    if (pt.kind == PointKind::kEquilibrium) continue;
+    // Steady sliding, and the zero-amplitude end of a pure-slip branch at HB,
+    // are not orbits to compare with.
+    if (pt.kind == PointKind::kEquilibrium || pt.x_max == pt.x_min) continue;
     Params q = base;
     SetParameter(q, param, pt.p);
     ComparisonRow row;
