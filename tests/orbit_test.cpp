@@ -186,3 +186,38 @@ TEST(Orbit, StribeckCoexistenceOfThreeSolutions) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// A stick-slip orbit whose slip phase reaches x' = v left of Omega, crosses
+// into slip above the belt, and sticks on the way down (Leine law, v = 1):
+// the same machinery, segment by segment, with a crossing saltation matrix.
+TEST(Orbit, StickSlipThroughSlipAboveTheBelt) {
+  Params p;
+  p.law = LawKind::kLeine;
+  p.beta = 0;
+  p.mu_s = 1;
+  p.delta = 3;
+  p.v = 1;
+  OrbitFinder finder(Model(p), Tight(true));
+  const OrbitResult r = finder.StickSlip();
+  ASSERT_TRUE(r.ok()) << r.message;
+  const reference::StickSlipOrbit ref = reference::StickSlip(p);
+  ASSERT_TRUE(ref.found);
+  EXPECT_EQ(r.orbit.crossings, ref.crossings);
+  EXPECT_EQ(r.orbit.crossings, 1);
+  ASSERT_GE(r.orbit.modes.size(), 3u);
+  EXPECT_EQ(r.orbit.modes[0], Mode::kSlipBelow);
+  EXPECT_EQ(r.orbit.modes[1], Mode::kSlipAbove);
+  EXPECT_EQ(r.orbit.modes.back(), Mode::kStick);
+  EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9);
+  EXPECT_NEAR(r.orbit.xdot_max, static_cast<double>(ref.xdot_max), 1e-9);
+  EXPECT_NEAR(r.orbit.x_min, static_cast<double>(ref.x_min), 1e-9);
+  // Still superstable: S_in kills the velocity perturbation whatever came before.
+  EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-8);
+  EXPECT_NEAR(std::abs(r.orbit.eigenvalues[1]), 0.0, 1e-8);
+}
+
+}  // namespace
+}  // namespace stickslip
