@@ -640,6 +640,23 @@ void Tracer::TracePureSlip(Cursor& c) {
   }
   bool hopf_start_pending = c.from_hopf;
   const double p_hopf_start = p;
+  // The branch's last point on a range end; false if no orbit converges there.
+  auto land = [&](double end, double a_guess) {
+    Orbit o;
+    double a_end_pt = 0;
+    if (!PureSlipAtFixedP(end, std::max(a_guess, 1e-3), &o, &a_end_pt)) return false;
+    if (hopf_start_pending) AddHopfEnd(p_hopf_start, o.stable);
+    Add(FromOrbit(end, o, a_end_pt));
+    c.phase = Cursor::kDone;
+    return true;
+  };
+  // A smaller step towards the end; false (and the branch failed) below min_step.
+  auto shrink = [&](double end) {
+    ds *= 0.5;
+    if (ds >= ds_min) return true;
+    Fail("pure-slip orbit at " + o_.param + " = " + Num(end), "no convergence at the range end");
+    return false;
+  };
   int count = 0;
   while (!Stop()) {
     if (++count > o_.max_points) {
@@ -651,23 +668,11 @@ void Tracer::TracePureSlip(Cursor& c) {
     // The range ends inside this step: land on it exactly.
     if (p_pred > hi_ || p_pred < lo_) {
       const double end = p_pred > hi_ ? hi_ : lo_;
-      Orbit o;
-      double a_end_pt = 0;
-      const double a_guess = a + (end - p) / (tp * R) * ta;
-      if (std::abs(end - p) > 1e-13 * R && PureSlipAtFixedP(end, std::max(a_guess, 1e-3), &o, &a_end_pt)) {
-        Add(FromOrbit(end, o, a_end_pt));
-        c.phase = Cursor::kDone;
-        return;
-      }
       if (std::abs(end - p) <= 1e-13 * R) {
         c.phase = Cursor::kDone;
         return;
       }
-      ds *= 0.5;
-      if (ds < ds_min) {
-        Fail("pure-slip orbit at " + o_.param + " = " + Num(end), "no convergence at the range end");
-        return;
-      }
+      if (land(end, a + (end - p) / (tp * R) * ta) || !shrink(end)) return;
       continue;
     }
     if (!hopf_start_pending && ta < 0 && a_pred < a_end) {
@@ -738,19 +743,7 @@ void Tracer::TracePureSlip(Cursor& c) {
     // Converged beyond the range end: land on the end itself instead.
     if (p_eval > hi_ || p_eval < lo_) {
       const double end = p_eval > hi_ ? hi_ : lo_;
-      Orbit o;
-      double a_end_pt = 0;
-      if (PureSlipAtFixedP(end, std::max(0.5 * (a + a_eval), 1e-3), &o, &a_end_pt)) {
-        if (hopf_start_pending) AddHopfEnd(p_hopf_start, o.stable);
-        Add(FromOrbit(end, o, a_end_pt));
-        c.phase = Cursor::kDone;
-        return;
-      }
-      ds *= 0.5;
-      if (ds < ds_min) {
-        Fail("pure-slip orbit at " + o_.param + " = " + Num(end), "no convergence at the range end");
-        return;
-      }
+      if (land(end, 0.5 * (a + a_eval)) || !shrink(end)) return;
       continue;
     }
     // New tangent, oriented along the old one.
