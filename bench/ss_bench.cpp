@@ -668,8 +668,9 @@ bool MakeDir(const std::string& d) {
 void SingleOrbit(bool quick) {
   const ss::Params p = Seed(0.25);
   const double t_ref = static_cast<double>(ss::reference::StickSlip(p).period);
-  std::printf("\none stick-slip orbit of the seed set at v = 0.25 (Adams, atol = rtol/100; "
-              "median of repeated calls):\n  rtol      us/orbit  steps  period error\n");
+  std::printf(
+      "\none stick-slip orbit of the seed set at v = 0.25 (Adams, atol = rtol/100; "
+      "median of repeated calls):\n  rtol      us/orbit  steps  period error\n");
   for (double rtol : {1e-6, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
     ss::OrbitOptions o;
     o.flow.rtol = rtol;

@@ -9,16 +9,14 @@
 namespace stickslip {
 
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
-                     const std::string& model_description,
-                     const std::vector<ExtraColumn>& extra) {
-  std::vector<std::string> cols = {param,      "kind",     "branch",   "period",
-                                   "x_min",    "x_max",    "xdot_min", "xdot_max",
-                                   "t_stick",  "multiplier", "stable", "amplitude"};
+                     const std::string& model_description, const std::vector<ExtraColumn>& extra) {
+  std::vector<std::string> cols = {param,     "kind",       "branch",   "period",
+                                   "x_min",   "x_max",      "xdot_min", "xdot_max",
+                                   "t_stick", "multiplier", "stable",   "amplitude"};
   for (const auto& c : extra) {
     if (c.values.size() != r.points.size())
-      throw InvalidArgument("extra column '" + c.name + "' has " +
-                            std::to_string(c.values.size()) + " values for " +
-                            std::to_string(r.points.size()) + " points");
+      throw InvalidArgument("extra column '" + c.name + "' has " + std::to_string(c.values.size()) +
+                            " values for " + std::to_string(r.points.size()) + " points");
     cols.push_back(c.name);
   }
   TsvTable t(cols);
@@ -30,10 +28,18 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
     t.AddComment("status: complete");
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
-    std::vector<TsvTable::Cell> row = {p.p,        PointKindName(p.kind), p.branch,
-                                       p.period,   p.x_min,               p.x_max,
-                                       p.xdot_min, p.xdot_max,            p.t_stick,
-                                       p.multiplier, p.stable ? 1 : 0,    p.amplitude};
+    std::vector<TsvTable::Cell> row = {p.p,
+                                       PointKindName(p.kind),
+                                       p.branch,
+                                       p.period,
+                                       p.x_min,
+                                       p.x_max,
+                                       p.xdot_min,
+                                       p.xdot_max,
+                                       p.t_stick,
+                                       p.multiplier,
+                                       p.stable ? 1 : 0,
+                                       p.amplitude};
     for (const auto& c : extra) row.emplace_back(c.values[i]);
     t.AddRow(row);
   }
@@ -68,8 +74,8 @@ std::string Curves(const std::set<int>& branches, int col, const std::string& ti
       if (!eq && !titled) t = "title \"" + title + "\"", titled = true;
       os << (first ? "" : ", \\\n     ") << "'branch.tsv' using " << kP << ":(($" << kBranch
          << "==" << b << " && $" << kStable << "==" << stable << ") ? $" << col
-         << " : NaN) with lines lc " << (eq ? "rgb 'gray50'" : std::to_string(color))
-         << " lw 2 dt " << (stable ? 1 : 2) << " " << t;
+         << " : NaN) with lines lc " << (eq ? "rgb 'gray50'" : std::to_string(color)) << " lw 2 dt "
+         << (stable ? 1 : 2) << " " << t;
       first = false;
     }
   }
@@ -101,7 +107,8 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
   std::set<int> branches;
   for (const auto& p : r.points) branches.insert(p.branch);
   std::ostringstream os;
-  os << "# Bifurcation diagrams written by ss_continue; run `gnuplot " << "bifurcation.gp` in "
+  os << "# Bifurcation diagrams written by ss_continue; run `gnuplot "
+     << "bifurcation.gp` in "
      << "this directory.\n"
      << "# Solid: stable, dashed: unstable, gray: steady sliding. GR grazing-sliding, HB Hopf,\n"
      << "# LP fold.\n"

@@ -92,11 +92,10 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     SetParameter(at, param, s.p);
     const AveragingEstimate avg0 = EstimateAveraging(at);
     if (s.kind == SpecialKind::kGrazing && param == "v")
-      out.special.push_back({"GR", "averaging: a_ps = v, 2 sqrt((k1 - 2 beta)/(15 k3))", s.p,
-                             avg0.grazing_speed});
+      out.special.push_back(
+          {"GR", "averaging: a_ps = v, 2 sqrt((k1 - 2 beta)/(15 k3))", s.p, avg0.grazing_speed});
     if (s.kind == SpecialKind::kHopf && param == "v")
-      out.special.push_back({"HB", "seed (3.16): sqrt((k1 - 2 beta)/(3 k3))", s.p,
-                             SeedVMax(at)});
+      out.special.push_back({"HB", "seed (3.16): sqrt((k1 - 2 beta)/(3 k3))", s.p, SeedVMax(at)});
     if (s.kind == SpecialKind::kHopf && param == "beta")
       out.special.push_back({"HB", "(k1 - 3 k3 v^2) / 2", s.p, avg0.hopf_beta});
   }

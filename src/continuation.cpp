@@ -59,7 +59,8 @@ std::string Num(double x) {
 
 std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (!IsParameterName(param))
-    return "unknown parameter '" + param + "' (expected one of beta, v, mu_s, mu_m, v_m, mu_k, "
+    return "unknown parameter '" + param +
+           "' (expected one of beta, v, mu_s, mu_m, v_m, mu_k, "
            "v_s, delta)";
   const auto names = ParameterNames(base.law);
   if (std::find(names.begin(), names.end(), param) == names.end())
@@ -90,8 +91,8 @@ namespace {
 struct Cursor {
   enum Phase { kStickSlip, kPureSlip, kDone } phase = kDone;
   double p = 0;
-  double a = 0;      // pure slip: section amplitude
-  double dir = 1;    // direction of travel in p (stick slip), or sign of the first dp (pure slip)
+  double a = 0;    // pure slip: section amplitude
+  double dir = 1;  // direction of travel in p (stick slip), or sign of the first dp (pure slip)
   bool from_hopf = false;
   bool skip_first = false;  // stick slip: the start point is already on a branch
 };
@@ -178,7 +179,7 @@ class Tracer {
   OrbitFinder finder_;
   double range_, lo_, hi_, dir_;
   ContinuationResult res_;
-  std::vector<double> hopf_;       // located Hopf points
+  std::vector<double> hopf_;        // located Hopf points
   std::vector<bool> hopf_reached_;  // ended on by a traced branch
   int branch_ = 0;
   double last_p_ = 0;
@@ -269,8 +270,7 @@ double Tracer::GrazingGapAt(double p, bool* ok) {
   return gap;
 }
 
-bool Tracer::LocateGrazing(double p_in, double p_out, double gap_in, double gap_out,
-                           double* p_gr) {
+bool Tracer::LocateGrazing(double p_in, double p_out, double gap_in, double gap_out, double* p_gr) {
   bool ok = true;
   auto f = [&](double p) {
     bool fine = false;
@@ -308,11 +308,10 @@ void Tracer::TraceStickSlip(Cursor& c) {
     Orbit next;
     if (StickSlipAt(q, &next, &res)) {
       const double scale = std::max(0.1, prev.x_max - prev.x_min);
-      const double change =
-          std::max({std::abs(next.x_max - prev.x_max) / scale,
-                    std::abs(next.x_min - prev.x_min) / scale,
-                    std::abs(next.xdot_min - prev.xdot_min) / scale,
-                    std::abs(next.period - prev.period) / prev.period});
+      const double change = std::max({std::abs(next.x_max - prev.x_max) / scale,
+                                      std::abs(next.x_min - prev.x_min) / scale,
+                                      std::abs(next.xdot_min - prev.xdot_min) / scale,
+                                      std::abs(next.period - prev.period) / prev.period});
       if (change > 5 * o_.max_step && h > 4 * h_min) {
         h *= 0.5;
         continue;
@@ -442,8 +441,8 @@ void Tracer::SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind 
   gr.t_stick = 0.0;
   gr.multiplier = came_from == PointKind::kStickSlip ? 0.0 : mult_ps;
   gr.stable = came_from == PointKind::kStickSlip || std::abs(mult_ps) < 1.0;
-  gr.amplitude = came_from == PointKind::kStickSlip ? 0.5 * (run.x_max - run.x_min)
-                                                    : run.x_max - xbar;
+  gr.amplitude =
+      came_from == PointKind::kStickSlip ? 0.5 * (run.x_max - run.x_min) : run.x_max - xbar;
   Add(gr);
   if (Stop()) return;
 
@@ -459,7 +458,8 @@ void Tracer::SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind 
       return;
     }
     const double dir = gap_probe > 0 ? side : -side;
-    if (dir != came_dir) FoldAt(p_gr, run, "non-smooth fold at GR: the pure-slip branch turns into stick-slip");
+    if (dir != came_dir)
+      FoldAt(p_gr, run, "non-smooth fold at GR: the pure-slip branch turns into stick-slip");
     c.phase = Cursor::kStickSlip;
     c.dir = dir;
     c.p = p_gr;
@@ -562,8 +562,8 @@ void Tracer::LocateFold(double a0, double p0, double a1, double p1, bool minimum
     }
     return minimum ? q1 : -q1;
   };
-  const RootResult r = FindMinimum(p_of_a, std::min(a0, a1), std::max(a0, a1),
-                                   1e-7 * std::max(1.0, std::abs(a1)));
+  const RootResult r =
+      FindMinimum(p_of_a, std::min(a0, a1), std::max(a0, a1), 1e-7 * std::max(1.0, std::abs(a1)));
   if (!ok || !r.ok) return;  // the fold stays bracketed only; not reported as located
   const double p = minimum ? r.fx : -r.fx;
   ReturnMap map;
@@ -870,10 +870,9 @@ ContinuationResult Tracer::Run() {
     }
   }
   Stop();
-  std::stable_sort(res_.special.begin(), res_.special.end(),
-                   [&](const SpecialPoint& x, const SpecialPoint& y) {
-                     return (x.p - y.p) * dir_ < 0;
-                   });
+  std::stable_sort(
+      res_.special.begin(), res_.special.end(),
+      [&](const SpecialPoint& x, const SpecialPoint& y) { return (x.p - y.p) * dir_ < 0; });
   return res_;
 }
 

@@ -14,7 +14,8 @@ const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf";
 
 namespace {
 void Check(int flag, const char* call) {
-  if (flag < 0) throw ExternalError(std::string(call) + " failed with flag " + std::to_string(flag));
+  if (flag < 0)
+    throw ExternalError(std::string(call) + " failed with flag " + std::to_string(flag));
 }
 template <typename T>
 T* CheckPtr(T* p, const char* call) {
@@ -116,7 +117,9 @@ bool Cvode::Interpolate(double t, double* out) {
   return true;
 }
 
-void Cvode::RootInfo(int* roots_found) { Check(CVodeGetRootInfo(mem_, roots_found), "CVodeGetRootInfo"); }
+void Cvode::RootInfo(int* roots_found) {
+  Check(CVodeGetRootInfo(mem_, roots_found), "CVodeGetRootInfo");
+}
 
 double Cvode::LastStepStart() {
   double tn = 0, hu = 0;

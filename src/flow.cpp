@@ -100,7 +100,8 @@ int Flow::Roots(double /*t*/, N_Vector y, double* g, void* data) {
 bool Flow::AtRest(double x, double xdot, double acc) const {
   const double scale = std::abs(x) + std::abs(model_.v()) + 1.0;
   const double band_v = std::max(64 * 2.2e-16 * scale, 10 * options_.atol);
-  const double band_a = std::max(64 * 2.2e-16 * scale, 10 * (options_.atol + options_.rtol * scale));
+  const double band_a =
+      std::max(64 * 2.2e-16 * scale, 10 * (options_.atol + options_.rtol * scale));
   return std::abs(xdot) <= band_v && std::abs(acc) <= band_a;
 }
 
@@ -114,10 +115,9 @@ Flow::~Flow() = default;
 Cvode& Flow::Solver(bool variational) {
   auto& slot = variational ? var_ : plain_;
   if (!slot) {
-    slot = std::make_unique<Cvode>(variational ? 6 : 2, options_.method, options_.rtol,
-                                   options_.atol, options_.max_steps,
-                                   variational ? &Flow::RhsVar : &Flow::Rhs, kNumRoots,
-                                   &Flow::Roots, this);
+    slot = std::make_unique<Cvode>(
+        variational ? 6 : 2, options_.method, options_.rtol, options_.atol, options_.max_steps,
+        variational ? &Flow::RhsVar : &Flow::Rhs, kNumRoots, &Flow::Roots, this);
   }
   return *slot;
 }
@@ -204,8 +204,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
       r.message = os.str();
       return finish(SlipEnd::kCancel, t, y);
     }
-    if (flag == CV_TOO_MUCH_WORK && mode_ == Mode::kSlipBelow &&
-        model_.SteadySliding().stable() &&
+    if (flag == CV_TOO_MUCH_WORK && mode_ == Mode::kSlipBelow && model_.SteadySliding().stable() &&
         AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]))) {
       // Settled on stable steady sliding, where it stays: the rest of the
       // segment is (xbar, 0), and no event can follow.
@@ -256,7 +255,8 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
           r.x_max = std::max(r.x_max, y[0]);
           if (stop.at_section && y_lo > 0) return locate(a, t, 0.0, SlipEnd::kSection);
         }
-        if (stop.at_velocity_max && rf[1] < 0 && mode_ == Mode::kSlipBelow) return finish(SlipEnd::kVelocityMax, t, y);
+        if (stop.at_velocity_max && rf[1] < 0 && mode_ == Mode::kSlipBelow)
+          return finish(SlipEnd::kVelocityMax, t, y);
       }
       if (rf[2] != 0) {
         r.x_min = std::min(r.x_min, y[0]);
@@ -368,7 +368,8 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     const Mode next = model_.ModeAfterArrival(mode, z[0]);
     if (next == Mode::kStick && stop.at_stick) return done(FlowStatus::kStick);
     if (variational)
-      M = (next == Mode::kStick ? Model::SaltationStickIn() : model_.SaltationCrossing(mode, next, z)) *
+      M = (next == Mode::kStick ? Model::SaltationStickIn()
+                                : model_.SaltationCrossing(mode, next, z)) *
           M;
     if (next != Mode::kStick) ++r.crossings;
     mode = next;

@@ -28,9 +28,7 @@ Mat2 Model::Jacobian(Mode m, const Vec2& z) const {
   return J;
 }
 
-bool Model::InStickInterval(double x) const {
-  return std::abs(StickForce(x)) <= p_.mu_s;
-}
+bool Model::InStickInterval(double x) const { return std::abs(StickForce(x)) <= p_.mu_s; }
 
 Mode Model::ModeAt(const Vec2& z) const {
   if (z[1] < p_.v) return Mode::kSlipBelow;

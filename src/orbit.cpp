@@ -1,9 +1,8 @@
 #include "stickslip/orbit.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <sstream>
-
-#include <Eigen/Eigenvalues>
 
 #include "stickslip/errors.hpp"
 #include "stickslip/roots.hpp"
@@ -158,8 +157,8 @@ ReturnMap OrbitFinder::Return(double x, bool derivative) {
     // P' = [(I - f n^T / n^T f) Phi]_11 with n = (0, 1) and f_1 = x' = 0.
     if (derivative) map.dpdx = r.jacobian(0, 0);
   } else if (map.status == OrbitStatus::kNoReturn) {
-    map.message = "no return to the section x' = 0 within t = " +
-                  std::to_string(options_.max_return_time);
+    map.message =
+        "no return to the section x' = 0 within t = " + std::to_string(options_.max_return_time);
   } else if (map.status == OrbitStatus::kSticks) {
     map.message = "the trajectory sticks";
   } else {

@@ -107,8 +107,7 @@ std::string ValidationError(const Params& p) {
     case LawKind::kStribeck:
       if (p.mu_k <= 0) return "mu_k = " + Num(p.mu_k) + " must be > 0";
       if (p.mu_k >= p.mu_s) return "mu_k = " + Num(p.mu_k) + " must be < mu_s = " + Num(p.mu_s);
-      if (p.law == LawKind::kStribeck && p.v_s <= 0)
-        return "v_s = " + Num(p.v_s) + " must be > 0";
+      if (p.law == LawKind::kStribeck && p.v_s <= 0) return "v_s = " + Num(p.v_s) + " must be > 0";
       break;
     case LawKind::kLeine:
       if (p.delta < 0) return "delta = " + Num(p.delta) + " must be >= 0";

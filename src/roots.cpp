@@ -46,7 +46,10 @@ RootResult FindRoot(const std::function<double(double)>& f, double a, double b, 
         p = s * (2 * m * qq * (qq - rr) - (b - a) * (rr - 1));
         q = (qq - 1) * (rr - 1) * (s - 1);
       }
-      if (p > 0) q = -q; else p = -p;
+      if (p > 0)
+        q = -q;
+      else
+        p = -p;
       if (2 * p < std::min(3 * m * q - std::abs(tol * q), std::abs(e * q))) {
         e = d;
         d = p / q;
@@ -79,14 +82,17 @@ RootResult FindMinimum(const std::function<double(double)>& f, double a, double 
   r.evaluations = 1;
   while (r.evaluations < max_evaluations) {
     const double m = 0.5 * (a + b);
-    const double tol = 1e-3 * std::sqrt(std::numeric_limits<double>::epsilon()) * std::abs(x) +
-                       xtol / 3;
+    const double tol =
+        1e-3 * std::sqrt(std::numeric_limits<double>::epsilon()) * std::abs(x) + xtol / 3;
     if (std::abs(x - m) <= 2 * tol - 0.5 * (b - a)) return {true, x, fx, r.evaluations};
     bool golden_step = true;
     if (std::abs(e) > tol) {
       double rr = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * rr;
       q = 2 * (q - rr);
-      if (q > 0) p = -p; else q = -q;
+      if (q > 0)
+        p = -p;
+      else
+        q = -q;
       if (std::abs(p) < std::abs(0.5 * q * e) && p > q * (a - x) && p < q * (b - x)) {
         e = d;
         d = p / q;
@@ -104,13 +110,22 @@ RootResult FindMinimum(const std::function<double(double)>& f, double a, double 
     ++r.evaluations;
     if (fu <= fx) {
       (u < x ? b : a) = x;
-      v = w; fv = fw; w = x; fw = fx; x = u; fx = fu;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
     } else {
       (u < x ? a : b) = u;
       if (fu <= fw || w == x) {
-        v = w; fv = fw; w = u; fw = fu;
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
       } else if (fu <= fv || v == x || v == w) {
-        v = u; fv = fu;
+        v = u;
+        fv = fu;
       }
     }
   }

@@ -44,7 +44,7 @@ TEST(Comparison, ColumnsAgreeWithAnIndependentRecomputation) {
       continue;
     }
     const double d = 2.25 * v * v - (2 * b - k1 + 3 * k3 * v * v) / k3;
-    if (d <= 0 || 1.5 * v - std::sqrt(d) >= 0) {  // roots r1 < 0 < r2 only below v_max
+    if (d <= 0 || 1.5 * v - std::sqrt(d) >= 0) {      // roots r1 < 0 < r2 only below v_max
       EXPECT_TRUE(std::isnan(r1[i])) << "v = " << v;  // not applicable: no number
       continue;
     }

@@ -729,8 +729,8 @@ TEST_F(ContinueApp, ContinuedParameterBaseValueIsNotValidated) {
   const Result ok = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
                          OutDir(), "--no_plots"});
   EXPECT_EQ(ok.code, 0) << ok.err;
-  const Result bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2",
-                          "--out", OutDir(), "--no_plots"});
+  const Result bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2", "--out",
+                          OutDir(), "--no_plots"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("v = -1"), std::string::npos) << bad.err;
 }

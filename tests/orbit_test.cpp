@@ -116,8 +116,7 @@ TEST(Orbit, ConvergesCloseUnderTheHopfPoint) {
   EXPECT_LT(r.orbit.multiplier, 1.0);
   // Averaging (Thomsen & Fidlin 2003): amplitude 2 sqrt((k1 - 2b - 3 k3 v^2) / (3 k3)),
   // exact to leading order at the Hopf point.
-  const double a_avg =
-      2 * std::sqrt((p.k1() - 2 * p.beta - 3 * p.k3() * p.v * p.v) / (3 * p.k3()));
+  const double a_avg = 2 * std::sqrt((p.k1() - 2 * p.beta - 3 * p.k3() * p.v * p.v) / (3 * p.k3()));
   EXPECT_NEAR(r.orbit.xdot_max - r.orbit.xdot_min, 2 * a_avg, 0.05 * a_avg);
 }
 

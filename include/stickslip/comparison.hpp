@@ -26,9 +26,9 @@ struct EstimateCell {
 struct ComparisonRow {
   double p = 0;
   PointKind kind = PointKind::kStickSlip;
-  double xdot_min = 0;      // computed
-  EstimateCell r1;          // seed: x'_min ~ r1
-  EstimateCell a_ps;        // averaging: x'_min ~ -a_ps
+  double xdot_min = 0;       // computed
+  EstimateCell r1;           // seed: x'_min ~ r1
+  EstimateCell a_ps;         // averaging: x'_min ~ -a_ps
   EstimateCell x_max_bound;  // seed: x_max <= xbar + sqrt(y0^2 + (v - a1 y0)^2)
 };
 

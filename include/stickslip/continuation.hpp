@@ -25,7 +25,7 @@ const char* PointKindName(PointKind k);  // "stick-slip", "pure-slip", "equilibr
 struct BranchPoint {
   double p = 0;  // the continued parameter
   PointKind kind = PointKind::kEquilibrium;
-  int branch = 0;  // which curve: rows of one branch are consecutive
+  int branch = 0;     // which curve: rows of one branch are consecutive
   double period = 0;  // nan for the equilibrium
   double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
   double t_stick = 0;
@@ -56,9 +56,9 @@ struct ContinuationOptions {
   // Largest step, as a fraction of |to - from| (so at least 1/max_step points
   // on a branch that spans the range).
   double max_step = 0.01;
-  double min_step = 1e-7;      // fraction of |to - from| below which a branch fails
-  double locate_tol = 1e-11;   // special points, in the parameter
-  int max_points = 20000;      // per branch
+  double min_step = 1e-7;     // fraction of |to - from| below which a branch fails
+  double locate_tol = 1e-11;  // special points, in the parameter
+  int max_points = 20000;     // per branch
   // Stick-slip multipliers by the variational equations (otherwise 0, which
   // S_in = diag(1, 0) makes exact).
   bool stick_slip_floquet = false;

@@ -3,10 +3,10 @@
 // the call site; a failed set-up call throws ExternalError naming the call.
 #pragma once
 
-#include <string>
-
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
+
+#include <string>
 
 namespace stickslip {
 
@@ -50,8 +50,7 @@ class Cvode {
   long steps() const;
 
  private:
-  static void ErrHandler(int code, const char* module, const char* function, char* msg,
-                         void* data);
+  static void ErrHandler(int code, const char* module, const char* function, char* msg, void* data);
   void Release();
 
   int n_ = 0;

@@ -20,7 +20,7 @@ struct FlowOptions {
   double rtol = 1e-11;  // CVODE relative tolerance
   double atol = 1e-13;  // CVODE absolute tolerance
   Method method = Method::kAdams;
-  long max_steps = 200000;     // CVODE steps per slip segment
+  long max_steps = 200000;      // CVODE steps per slip segment
   long max_switches = 1000000;  // mode changes per run
   // Empty if valid, otherwise one line naming the offending option.
   std::string ValidationError() const;
@@ -63,9 +63,9 @@ struct FlowResult {
   // Extremes over the run, located as roots (x' = 0 for x, x'' = 0 for x'),
   // together with the segment end points.
   double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
-  double t_stick = 0;   // time spent in stick
-  int switches = 0;     // mode changes
-  int crossings = 0;    // crossings of x' = v without sticking
+  double t_stick = 0;       // time spent in stick
+  int switches = 0;         // mode changes
+  int crossings = 0;        // crossings of x' = v without sticking
   std::vector<Mode> modes;  // the mode sequence, start mode first
   // d z(t) / d z(t0), saltation matrices included; only with variational.
   Mat2 jacobian = Mat2::Identity();
@@ -105,8 +105,8 @@ class Flow {
 
  private:
   struct SlipEnd;
-  SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational,
-               double output_dt, double& next_output, const Observer& observer, FlowResult& r);
+  SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational, double output_dt,
+               double& next_output, const Observer& observer, FlowResult& r);
   Cvode& Solver(bool variational);
   static int Rhs(double t, N_Vector y, N_Vector ydot, void* data);
   static int RhsVar(double t, N_Vector y, N_Vector ydot, void* data);

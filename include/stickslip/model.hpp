@@ -3,9 +3,8 @@
 // State z = (x, x'); switching surface x' = v with normal n = (0, 1).
 #pragma once
 
-#include <complex>
-
 #include <Eigen/Dense>
+#include <complex>
 
 #include "stickslip/friction.hpp"
 #include "stickslip/params.hpp"

@@ -42,7 +42,7 @@ struct Orbit {
 
 struct OrbitOptions {
   FlowOptions flow;
-  bool floquet = false;      // variational equations and multipliers
+  bool floquet = false;          // variational equations and multipliers
   double max_return_time = 2e3;  // give up on a return after this time
   int max_newton = 40;
   // On the section coordinate, relative to max(1, |a|). Newton cannot beat the

@@ -60,17 +60,17 @@ void Validate(const Params& p);
 // v = V t0 / L. Speeds scale by L omega0; friction coefficients are unchanged.
 struct PhysicalParams {
   LawKind law = LawKind::kCubic;
-  double mass = 1.0;       // M [kg]
-  double damping = 0.1;    // C [N s / m]
-  double stiffness = 1.0;  // K [N / m]
+  double mass = 1.0;         // M [kg]
+  double damping = 0.1;      // C [N s / m]
+  double stiffness = 1.0;    // K [N / m]
   double belt_speed = 0.25;  // V [m / s]
-  double gravity = 9.81;   // g [m / s^2]
+  double gravity = 9.81;     // g [m / s^2]
   double mu_s = 0.4;
   double mu_m = 0.25;
-  double speed_m = 0.5;    // cubic: V_m [m / s], speed of minimum friction
+  double speed_m = 0.5;  // cubic: V_m [m / s], speed of minimum friction
   double mu_k = 0.25;
-  double speed_s = 0.5;    // stribeck: V_s [m / s]
-  double delta = 3.0;      // leine: [s / m]
+  double speed_s = 0.5;  // stribeck: V_s [m / s]
+  double delta = 3.0;    // leine: [s / m]
 };
 
 // Throws InvalidArgument if a physical input is not finite or not positive

@@ -43,8 +43,8 @@ po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
   d.add_options()("param", cli::Value()->value_name("NAME"),
                   "parameter to continue: beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta "
-                  "(default v)")(
-      "from", cli::Value()->value_name("A"), "start value; the first row is here (default 0.05)")(
+                  "(default v)")("from", cli::Value()->value_name("A"),
+                                 "start value; the first row is here (default 0.05)")(
       "to", cli::Value()->value_name("B"), "end value, != from (default 0.5)")(
       "out", cli::Value()->value_name("DIR"), "output directory (default plots)")(
       "max_step", cli::Value()->value_name("F"),
@@ -106,8 +106,8 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
   }
   auto largest = [&](double err, double p, int n, const char* what) {
     if (n == 0) return std::string("n/a (no ") + what + ")";
-    return Fixed(err, 5) + " at " + param + " = " + Fixed(p, 5) + " (" + std::to_string(n) +
-           " " + what + ")";
+    return Fixed(err, 5) + " at " + param + " = " + Fixed(p, 5) + " (" + std::to_string(n) + " " +
+           what + ")";
   };
   std::cout << "  largest |error|: seed r1 "
             << largest(c.max_err_r1, c.p_max_err_r1, c.r1_applies, "points") << "; averaging "
@@ -123,7 +123,10 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
 
 int Main(int argc, char** argv) {
   po::options_description desc;
-  desc.add(cli::GeneralOptions()).add(cli::ModelOptions()).add(cli::SolverOptions()).add(AppOptions());
+  desc.add(cli::GeneralOptions())
+      .add(cli::ModelOptions())
+      .add(cli::SolverOptions())
+      .add(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
   if (args.map().count("help")) {
     cli::PrintHelp(std::cout, "ss_continue [--study FILE] [options]", desc, kNotes);
@@ -171,8 +174,7 @@ int Main(int argc, char** argv) {
   if (!args.Flag("no_estimates")) cmp = ss::CompareEstimates(base, opts.param, r);
   ss::WriteFileAtomically(dir + "/branch.tsv",
                           ss::BranchTable(r, opts.param, model, cmp.columns).str());
-  ss::WriteFileAtomically(dir + "/special_points.tsv",
-                          ss::SpecialPointTable(r, opts.param).str());
+  ss::WriteFileAtomically(dir + "/special_points.tsv", ss::SpecialPointTable(r, opts.param).str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   ss::WriteFileAtomically(dir + "/bifurcation.gp",
                           ss::BifurcationScript(r, opts.param, title, cmp.applies));
@@ -202,10 +204,9 @@ int Main(int argc, char** argv) {
   std::cout << "special points:\n";
   if (r.special.empty()) std::cout << "  none\n";
   for (const auto& s : r.special) {
-    std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param << " = "
-              << Fixed(s.p, 12) << "  period " << Fixed(s.period, 6) << "  x in ["
-              << Fixed(s.x_min, 6) << ", " << Fixed(s.x_max, 6) << "]  " << s.description
-              << "\n";
+    std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param << " = " << Fixed(s.p, 12)
+              << "  period " << Fixed(s.period, 6) << "  x in [" << Fixed(s.x_min, 6) << ", "
+              << Fixed(s.x_max, 6) << "]  " << s.description << "\n";
   }
   std::cout << "wrote " << dir << "/branch.tsv, special_points.tsv, bifurcation.gp"
             << (args.Flag("no_plots") || !plots_ok ? "" : " and the PNGs") << "\n";
