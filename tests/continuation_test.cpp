@@ -261,3 +261,28 @@ TEST(Continuation, FindsBranchesAwayFromTheStartAndTheHopfPoints) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// The coulomb scene, beta = 0: every point of the branch against the exact period
+// pi + 2 atan(v/(mu_s - mu_k)) + 2 (mu_s - mu_k)/v.
+TEST(Continuation, CoulombBranchPeriodsAreExact) {
+  Params p;
+  p.law = LawKind::kCoulomb;
+  p.beta = 0;
+  p.mu_k = 0.25;
+  const ContinuationResult r = Trace(p, "v", 0.02, 1.0);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  int n = 0;
+  for (const auto& pt : r.points) {
+    if (pt.kind != PointKind::kStickSlip) continue;
+    ++n;
+    const double d = p.mu_s - p.mu_k;
+    EXPECT_NEAR(pt.period, M_PI + 2 * std::atan(pt.p / d) + 2 * d / pt.p, 1e-8) << "v = " << pt.p;
+  }
+  EXPECT_GE(n, 100);
+}
+
+}  // namespace
+}  // namespace stickslip
