@@ -27,31 +27,17 @@
 #include <thread>
 #include <vector>
 
+#include "app_test_util.hpp"
+
 namespace {
 
 const std::string kApp = STICKSLIP_BIN_DIR "/ss_continue";
 const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
-
-bool Exists(const std::string& path) {
-  struct stat st;
-  return ::stat(path.c_str(), &st) == 0;
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-void WriteFile(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+using stickslip::testing_util::Contains;
+using stickslip::testing_util::Exists;
+using stickslip::testing_util::ReadFile;
+using stickslip::testing_util::WriteFile;
 
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
