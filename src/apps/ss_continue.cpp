@@ -122,11 +122,7 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
 }
 
 int Main(int argc, char** argv) {
-  po::options_description desc;
-  desc.add(cli::GeneralOptions())
-      .add(cli::ModelOptions())
-      .add(cli::SolverOptions())
-      .add(AppOptions());
+  const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
   if (args.map().count("help")) {
     cli::PrintHelp(std::cout, "ss_continue [--study FILE] [options]", desc, kNotes);

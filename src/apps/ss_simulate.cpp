@@ -97,11 +97,7 @@ std::string PlotScript(const std::string& data, const std::string& png, const ss
 }
 
 int Main(int argc, char** argv) {
-  po::options_description desc;
-  desc.add(cli::GeneralOptions())
-      .add(cli::ModelOptions())
-      .add(cli::SolverOptions())
-      .add(AppOptions());
+  const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
   if (args.map().count("help")) {
     cli::PrintHelp(std::cout,

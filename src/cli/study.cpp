@@ -50,6 +50,12 @@ std::string Default(double x) { return " (default " + FormatNumber(x) + ")"; }
 
 po::typed_value<std::string>* Value() { return po::value<std::string>(); }
 
+po::options_description AppDescription(const po::options_description& app) {
+  po::options_description desc;
+  desc.add(GeneralOptions()).add(ModelOptions()).add(SolverOptions()).add(app);
+  return desc;
+}
+
 const std::vector<std::string>& StudySections() {
   static const std::vector<std::string> sections = {"simulate", "continue", "benchmark"};
   return sections;

@@ -57,6 +57,8 @@ class UsageError : public InvalidArgument {
 po::options_description GeneralOptions();  // --help, --study
 po::options_description ModelOptions();    // --law, model and physical parameters
 po::options_description SolverOptions();   // --rtol --atol --method --max_steps
+// General, model and solver options followed by an app's own.
+po::options_description AppDescription(const po::options_description& app);
 
 // The value semantic for an app's own option: text, parsed on use by
 // Arguments::Number / Integer / Text. For flags use po::bool_switch().
