@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "stickslip/errors.hpp"
@@ -94,7 +95,8 @@ struct Cursor {
   double a = 0;    // pure slip: section amplitude
   double dir = 1;  // direction of travel in p (stick slip), or sign of the first dp (pure slip)
   bool from_hopf = false;
-  bool skip_first = false;  // stick slip: the start point is already on a branch
+  bool skip_first = false;     // stick slip: the start point is already on a branch
+  std::optional<Orbit> start;  // stick slip: the orbit at p, if the caller has it
 };
 
 class Tracer {
@@ -291,7 +293,9 @@ void Tracer::TraceStickSlip(Cursor& c) {
   double h = h_max, p = c.p;
   Orbit prev;
   OrbitResult res;
-  if (!StickSlipAt(p, &prev, &res)) {
+  if (c.start) {
+    prev = *c.start;
+  } else if (!StickSlipAt(p, &prev, &res)) {
     Fail("stick-slip orbit at " + o_.param + " = " + Num(p), res.message);
     return;
   }
@@ -382,11 +386,12 @@ bool Tracer::DGDp(double a, double p, double g, double h, double* gp) {
 }
 
 bool Tracer::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, double* a) {
-  SetP(p);
+  const Model m(At(p));
+  finder_.set_model(m);
   const OrbitResult r = finder_.PureSlip(a_guess);
-  if (!r.ok() || r.orbit.xdot_max >= Model(At(p)).v()) return false;
+  if (!r.ok() || r.orbit.xdot_max >= m.v()) return false;
   *orbit = r.orbit;
-  *a = r.orbit.start[0] - Model(At(p)).SteadySliding().x;
+  *a = r.orbit.start[0] - m.SteadySliding().x;
   return true;
 }
 
@@ -472,6 +477,7 @@ void Tracer::SwitchAtGrazing(Cursor& c, double p_gr, double came_dir, PointKind 
       return;
     }
     c.p = q;
+    c.start = o;
     return;
   }
   // From stick-slip into pure slip: find the side where a pure-slip orbit exists.
@@ -810,13 +816,12 @@ ContinuationResult Tracer::Run() {
   // Omega; otherwise any pure-slip orbit a scan of the section finds.
   Orbit o;
   OrbitResult r;
-  bool periodic_first = false;
   if (StickSlipAt(o_.from, &o, &r)) {
-    periodic_first = true;
     Cursor c;
     c.phase = Cursor::kStickSlip;
     c.p = o_.from;
     c.dir = dir_;
+    c.start = o;
     Trace(c);
   } else {
     SetP(o_.from);
@@ -824,7 +829,6 @@ ContinuationResult Tracer::Run() {
     const double a_hi = 1.5 * (m.params().mu_s + m.v());
     for (const Orbit& ps : finder_.PureSlipScan(0.005, a_hi, 30)) {
       if (ps.xdot_max >= m.v() || Stop()) continue;
-      periodic_first = true;
       Cursor c;
       c.phase = Cursor::kPureSlip;
       c.p = o_.from;
@@ -833,7 +837,6 @@ ContinuationResult Tracer::Run() {
       Trace(c);
     }
   }
-  (void)periodic_first;
   // Steady sliding follows (or comes first, if nothing starts at `from`). It is
   // exact and already computed: kept even in a partial result, with its Hopf
   // points.
@@ -866,6 +869,7 @@ ContinuationResult Tracer::Run() {
       c.p = g.p;
       c.dir = d;
       c.skip_first = d == dir_;  // the point at g.p is on the first of the two
+      c.start = o;
       Trace(c);
     }
   }
