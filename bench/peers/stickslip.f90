@@ -33,7 +33,7 @@ SUBROUTINE FUNC(NDIM, U, ICP, PAR, IJAC, F, DFDU, DFDP)
 END SUBROUTINE FUNC
 
 SUBROUTINE STPNT(NDIM, U, PAR, T)
-  ! Near-Hopf orbit at v = 0.44 from first-harmonic averaging
+  ! Near-Hopf orbit at v = 0.4409 from first-harmonic averaging
   ! (Thomsen & Fidlin 2003): amplitude a = 2 sqrt((k1-2beta-3k3v^2)/(3k3)).
   ! The equilibrium run overrides v and U in its constants file.
   IMPLICIT NONE
@@ -46,7 +46,7 @@ SUBROUTINE STPNT(NDIM, U, PAR, T)
   mus = 0.4D0
   mum = 0.25D0
   vm = 0.5D0
-  v = 0.44D0
+  v = 0.4409D0
   PAR(1) = v
   PAR(2) = beta
   PAR(3) = mus
