@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 #include "stickslip/roots.hpp"
 
 namespace stickslip {
@@ -46,17 +47,6 @@ const char* ContinuationStatusName(ContinuationStatus s) {
   }
   return "?";
 }
-
-namespace {
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-
-std::string Num(double x) {
-  std::ostringstream os;
-  os.precision(10);
-  os << x;
-  return os.str();
-}
-}  // namespace
 
 std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (!IsParameterName(param))
@@ -203,7 +193,7 @@ BranchPoint Tracer::EquilibriumPoint(double p) const {
 }
 
 // Steady sliding x = mu(v) is explicit; its Hopf points are the roots of
-// 2 beta + mu'(v) (design notes), located by Brent's method.
+// 2 beta + mu'(v) (linearised seed eq. 3.5), located by Brent's method.
 std::vector<BranchPoint> Tracer::TraceEquilibrium() {
   const int n = static_cast<int>(std::ceil(1.0 / o_.max_step));
   std::vector<BranchPoint> rows;

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 
 namespace stickslip {
 
@@ -74,13 +74,6 @@ double* Field(Params& p, const std::string& name) {
   throw InvalidArgument("unknown parameter '" + name +
                         "' (expected beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta)");
 }
-
-std::string Num(double x) {
-  std::ostringstream os;
-  os.precision(12);
-  os << x;
-  return os.str();
-}
 }  // namespace
 
 double GetParameter(const Params& p, const std::string& name) {
@@ -92,25 +85,28 @@ void SetParameter(Params& p, const std::string& name, double value) { *Field(p, 
 std::string ValidationError(const Params& p) {
   for (const auto& name : ParameterNames(p.law)) {
     const double x = GetParameter(p, name);
-    if (!std::isfinite(x)) return name + " = " + Num(x) + " is not a finite number";
+    if (!std::isfinite(x)) return name + " = " + Num(x, 12) + " is not a finite number";
   }
-  if (p.beta < 0) return "beta = " + Num(p.beta) + " must be >= 0";
-  if (p.v <= 0) return "v = " + Num(p.v) + " must be > 0";
-  if (p.mu_s <= 0) return "mu_s = " + Num(p.mu_s) + " must be > 0";
+  if (p.beta < 0) return "beta = " + Num(p.beta, 12) + " must be >= 0";
+  if (p.v <= 0) return "v = " + Num(p.v, 12) + " must be > 0";
+  if (p.mu_s <= 0) return "mu_s = " + Num(p.mu_s, 12) + " must be > 0";
   switch (p.law) {
     case LawKind::kCubic:
-      if (p.mu_m <= 0) return "mu_m = " + Num(p.mu_m) + " must be > 0";
-      if (p.mu_m >= p.mu_s) return "mu_m = " + Num(p.mu_m) + " must be < mu_s = " + Num(p.mu_s);
-      if (p.v_m <= 0) return "v_m = " + Num(p.v_m) + " must be > 0";
+      if (p.mu_m <= 0) return "mu_m = " + Num(p.mu_m, 12) + " must be > 0";
+      if (p.mu_m >= p.mu_s)
+        return "mu_m = " + Num(p.mu_m, 12) + " must be < mu_s = " + Num(p.mu_s, 12);
+      if (p.v_m <= 0) return "v_m = " + Num(p.v_m, 12) + " must be > 0";
       break;
     case LawKind::kCoulomb:
     case LawKind::kStribeck:
-      if (p.mu_k <= 0) return "mu_k = " + Num(p.mu_k) + " must be > 0";
-      if (p.mu_k >= p.mu_s) return "mu_k = " + Num(p.mu_k) + " must be < mu_s = " + Num(p.mu_s);
-      if (p.law == LawKind::kStribeck && p.v_s <= 0) return "v_s = " + Num(p.v_s) + " must be > 0";
+      if (p.mu_k <= 0) return "mu_k = " + Num(p.mu_k, 12) + " must be > 0";
+      if (p.mu_k >= p.mu_s)
+        return "mu_k = " + Num(p.mu_k, 12) + " must be < mu_s = " + Num(p.mu_s, 12);
+      if (p.law == LawKind::kStribeck && p.v_s <= 0)
+        return "v_s = " + Num(p.v_s, 12) + " must be > 0";
       break;
     case LawKind::kLeine:
-      if (p.delta < 0) return "delta = " + Num(p.delta) + " must be >= 0";
+      if (p.delta < 0) return "delta = " + Num(p.delta, 12) + " must be >= 0";
       break;
   }
   return "";
@@ -129,7 +125,7 @@ double TimeScale(double mass, double stiffness) { return std::sqrt(mass / stiffn
 namespace {
 void RequirePositive(const char* name, double x) {
   if (!std::isfinite(x) || x <= 0)
-    throw InvalidArgument(std::string(name) + " = " + Num(x) + " must be a finite number > 0");
+    throw InvalidArgument(std::string(name) + " = " + Num(x, 12) + " must be a finite number > 0");
 }
 }  // namespace
 
@@ -138,7 +134,7 @@ Params ToDimensionless(const PhysicalParams& phys) {
   RequirePositive("stiffness", phys.stiffness);
   RequirePositive("gravity", phys.gravity);
   if (!std::isfinite(phys.damping) || phys.damping < 0)
-    throw InvalidArgument("damping = " + Num(phys.damping) + " must be a finite number >= 0");
+    throw InvalidArgument("damping = " + Num(phys.damping, 12) + " must be a finite number >= 0");
   const double L = LengthScale(phys.mass, phys.stiffness, phys.gravity);
   const double t0 = TimeScale(phys.mass, phys.stiffness);
   const double speed = L / t0;  // V = v L / t0

@@ -11,12 +11,6 @@
 
 namespace stickslip {
 
-// An extra column of branch.tsv, one value per point (nan where it does not apply).
-struct ExtraColumn {
-  std::string name;
-  std::vector<double> values;
-};
-
 // Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
 // t_stick, multiplier, stable, amplitude, then the extra columns. A partial
 // result says so in a comment line after the header.
