@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "stickslip/errors.hpp"
 #include "stickslip/numbers.hpp"
@@ -52,8 +53,36 @@ std::vector<std::string> ParameterNames(LawKind law) {
   return names;
 }
 
+namespace {
+// The one table of parameter names and the members they name.
+struct Entry {
+  const char* name;
+  double Params::*member;
+};
+constexpr Entry kTable[] = {{"beta", &Params::beta}, {"v", &Params::v},
+                            {"mu_s", &Params::mu_s}, {"mu_m", &Params::mu_m},
+                            {"v_m", &Params::v_m},   {"mu_k", &Params::mu_k},
+                            {"v_s", &Params::v_s},   {"delta", &Params::delta}};
+}  // namespace
+
 std::vector<std::string> AllParameterNames() {
-  return {"beta", "v", "mu_s", "mu_m", "v_m", "mu_k", "v_s", "delta"};
+  std::vector<std::string> names;
+  for (const Entry& e : kTable) names.push_back(e.name);
+  return names;
+}
+
+std::string ParameterNameList() {
+  std::string list;
+  const size_t n = std::size(kTable);
+  for (size_t i = 0; i < n; ++i)
+    list += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + kTable[i].name;
+  return list;
+}
+
+double Params::*ParameterMember(const std::string& name) {
+  for (const Entry& e : kTable)
+    if (name == e.name) return e.member;
+  throw InvalidArgument("unknown parameter '" + name + "' (expected " + ParameterNameList() + ")");
 }
 
 bool IsParameterName(const std::string& name) {
@@ -61,26 +90,11 @@ bool IsParameterName(const std::string& name) {
   return std::find(all.begin(), all.end(), name) != all.end();
 }
 
-namespace {
-double* Field(Params& p, const std::string& name) {
-  if (name == "beta") return &p.beta;
-  if (name == "v") return &p.v;
-  if (name == "mu_s") return &p.mu_s;
-  if (name == "mu_m") return &p.mu_m;
-  if (name == "v_m") return &p.v_m;
-  if (name == "mu_k") return &p.mu_k;
-  if (name == "v_s") return &p.v_s;
-  if (name == "delta") return &p.delta;
-  throw InvalidArgument("unknown parameter '" + name +
-                        "' (expected beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta)");
-}
-}  // namespace
+double GetParameter(const Params& p, const std::string& name) { return p.*ParameterMember(name); }
 
-double GetParameter(const Params& p, const std::string& name) {
-  return *Field(const_cast<Params&>(p), name);
+void SetParameter(Params& p, const std::string& name, double value) {
+  p.*ParameterMember(name) = value;
 }
-
-void SetParameter(Params& p, const std::string& name, double value) { *Field(p, name) = value; }
 
 std::string ValidationError(const Params& p) {
   for (const auto& name : ParameterNames(p.law)) {
