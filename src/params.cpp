@@ -113,6 +113,14 @@ std::string ValidationError(const Params& p) {
       if (p.delta < 0) return "delta = " + Num(p.delta) + " must be >= 0";
       break;
   }
+  // Beyond these scales k3 = (mu_s - mu_m) / (2 v_m^3) and the state over- or
+  // underflow and the results would be nan or inf.
+  for (const auto& name : ParameterNames(p.law)) {
+    const double x = GetParameter(p, name);
+    if (x != 0 && !(x >= kMinScale && x <= kMaxScale))
+      return name + " = " + Num(x) + " is outside [" + Num(kMinScale) + ", " + Num(kMaxScale) +
+             "]: scales beyond it make the computation meaningless";
+  }
   return "";
 }
 
