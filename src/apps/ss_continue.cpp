@@ -1,6 +1,7 @@
 // ss_continue: the bifurcation diagram of a study in one parameter: branches
 // of stick-slip and pure-slip orbits and of steady sliding, their special
 // points (GR, HB, LP), TSV files and gnuplot figures in --out.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -225,7 +226,12 @@ int Main(int argc, char** argv) {
     cli::PrintError(kProg, g.message + "; nothing replaced in '" + out.dir() + "'");
     return 1;
   }
-  out.Commit(g.ok() ? std::vector<std::string>{} : all_figures);
+  // Figures this run did not draw are stale beside its data: removed.
+  std::vector<std::string> stale;
+  for (const auto& f : all_figures)
+    if (!g.ok() || std::find(figures.begin(), figures.end(), f) == figures.end())
+      stale.push_back(f);
+  out.Commit(stale);
 
   PrintSummary(r, opts, model, seconds);
   std::cout << "wrote " << out.dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
