@@ -192,6 +192,17 @@ TEST_F(Reliability, SimulateStopsOnTimeLimitAndSignal) {
   EXPECT_EQ(Listing(Path("w")), std::set<std::string>{});
 }
 
+// Item 12 and issue 14: a slow phase with nothing else to report (the grid
+// search of --mu_s 1e6 --mu_m 1) still prints a line, and --max_time ends it.
+TEST_F(Reliability, SlowGridSearchShowsProgressAndStopsOnTime) {
+  const Outcome r = Run(kContinue, {"--mu_s", "1e6", "--mu_m", "1", "--max_time", "3", "--no_plots",
+                                    "--out", Path("w")});
+  EXPECT_EQ(r.code, 1) << err_;
+  EXPECT_LT(r.seconds, 20.0);
+  EXPECT_TRUE(Contains(err_, "ss_continue: still continuing (searching for a periodic orbit)"));
+  EXPECT_TRUE(Contains(ReadFile(Path("w/branch.tsv")), "status: partial (cancelled)"));
+}
+
 // Item 13: the memory bound on --max_step is stated up front.
 TEST_F(Reliability, MaxStepBeyondTheMemoryBoundIsRefused) {
   ExpectRefused(kContinue, {"--max_step", "1.1e-7", "--out", Path("w")}, "max_step");

@@ -130,12 +130,15 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) 
 ss::ContinuationResult RunContinuation(const ss::Params& base, ss::ContinuationOptions opts,
                                        cli::RunControl& run) {
   double last = opts.from;
+  bool periodic = false;  // steady sliding comes first; then the periodic branches
   long count = 0;
   opts.cancelled = [&] {
-    run.Heartbeat("last point " + opts.param + " = " + ss::FormatNumber(last));
+    run.Heartbeat(periodic ? "last periodic orbit at " + opts.param + " = " + ss::FormatNumber(last)
+                           : std::string("searching for a periodic orbit"));
     return run.Cancelled();
   };
   opts.progress = [&](const ss::BranchPoint& pt) {
+    if (pt.kind != ss::PointKind::kEquilibrium) periodic = true;
     last = pt.p;
     ++count;
     run.Progress(
