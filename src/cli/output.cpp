@@ -89,7 +89,9 @@ void OutputSet::CheckName(const std::string& name, const std::string& source) co
   throw bad("not a regular file (device, FIFO or socket); only regular files are replaced");
 }
 
-OutputSet::~OutputSet() {
+OutputSet::~OutputSet() { Discard(); }
+
+void OutputSet::Discard() {
   if (staging_.empty()) return;
   for (const auto& name : staged_) ::unlink((staging_ + "/" + name).c_str());
   // Anything else a failed gnuplot left behind.
@@ -101,6 +103,8 @@ OutputSet::~OutputSet() {
     ::closedir(d);
   }
   ::rmdir(staging_.c_str());
+  staged_.clear();
+  staging_.clear();
 }
 
 std::string OutputSet::Staging() {
@@ -167,6 +171,7 @@ void OutputSet::Commit(const std::vector<std::string>& stale) {
   }
   ::close(lock);  // releases the lock
   if (!error.empty()) throw Error(error);
+  Discard();  // the staging directory, now empty
 }
 
 }  // namespace stickslip::cli

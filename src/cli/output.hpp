@@ -61,6 +61,9 @@ class OutputSet {
   // regular files named in `stale` that this run did not write (figures of
   // an older run that no longer match its data). Throws Error.
   void Commit(const std::vector<std::string>& stale = {});
+  // Removes the staging directory and what is still in it (the destructor
+  // does this; for a process that ends without unwinding, e.g. _Exit).
+  void Discard();
 
  private:
   std::string Staging();  // creates dir and the staging directory on first use
