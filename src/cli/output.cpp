@@ -19,7 +19,8 @@ namespace stickslip::cli {
 
 namespace {
 
-constexpr std::size_t kStagingLength = 32;  // "/.<prog>-XXXXXX/", prog kept short
+constexpr std::size_t kStagingLength = 32;   // "/.<prog>-XXXXXX/", prog kept short
+constexpr std::size_t kTempNameLength = 32;  // ".<name>.tmp-<pid>-<counter>" beyond name
 
 bool HasControl(const std::string& s) {
   return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 32; });
@@ -74,10 +75,12 @@ void OutputSet::CheckName(const std::string& name, const std::string& source) co
   if (name.empty() || name.find('/') != std::string::npos || HasControl(name) || name == "." ||
       name == "..")
     throw bad("not a plain file name");
-  if (name.size() > NAME_MAX)
-    throw bad("file name longer than " + std::to_string(NAME_MAX) + " bytes");
-  if (path.size() + kStagingLength >= PATH_MAX)
-    throw bad("path longer than " + std::to_string(PATH_MAX - kStagingLength) + " bytes");
+  // Room for the temporary name of the atomic write, ".<name>.tmp-<pid>-<n>".
+  if (name.size() + kTempNameLength > NAME_MAX)
+    throw bad("file name longer than " + std::to_string(NAME_MAX - kTempNameLength) + " bytes");
+  if (path.size() + kStagingLength + kTempNameLength >= PATH_MAX)
+    throw bad("path longer than " + std::to_string(PATH_MAX - kStagingLength - kTempNameLength) +
+              " bytes");
   struct stat st;
   if (::lstat(path.c_str(), &st) != 0) {
     if (errno == ENOENT) return;

@@ -4,7 +4,7 @@
 // Promises (README, Reliability):
 // - Up front (UsageError, exit 2, nothing created): the destination directory
 //   exists or its parent does, and is writable; no control character in any
-//   path; every name fits NAME_MAX and PATH_MAX; at each file's place there
+//   path; every name fits NAME_MAX and PATH_MAX with its temporary suffix; at each file's place there
 //   is nothing or a regular file. A symbolic link, directory, device, FIFO or
 //   socket there is refused: a symlink is never followed nor replaced.
 // - Every file goes first into a fresh hidden directory `.<prog>-XXXXXX`
