@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -98,6 +99,24 @@ TEST_F(Reliability, FigureCutShortKeepsTheOldFiles) {
   for (const std::string name : {"t.tsv", "t.gp", "t.png"})
     EXPECT_EQ(ReadFile(Path("w/" + name)), "old\n") << name;
   EXPECT_EQ(Listing(Path("w")), (std::set<std::string>{"t.tsv", "t.gp", "t.png"}));
+}
+
+// Item 2 for ss_continue: the same with its set of four figures; an old,
+// whole set stays as it was.
+TEST_F(Reliability, ContinueFiguresCutShortKeepTheOldSet) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
+  const std::vector<std::string> args = {"--no_estimates", "--out", Path("w")};
+  ASSERT_EQ(Run(kContinue, args, Launch{}).code, 0) << err_;
+  std::map<std::string, std::string> before;
+  for (const auto& n : Listing(Path("w"))) before[n] = ReadFile(Path("w/" + n));
+  Launch l;
+  l.fsize_limit = 32000;  // branch.tsv (about 29 kB) fits, no figure (35 to 52 kB) does
+  const Outcome r = Run(kContinue, {"--beta", "0.06", "--no_estimates", "--out", Path("w")}, l);
+  EXPECT_EQ(r.code, 1) << err_;
+  EXPECT_TRUE(Contains(err_, "nothing replaced"));
+  std::map<std::string, std::string> after;
+  for (const auto& n : Listing(Path("w"))) after[n] = ReadFile(Path("w/" + n));
+  EXPECT_TRUE(after == before) << "the old set changed";
 }
 
 // Item 4: output-path problems are found before the run.
