@@ -222,6 +222,19 @@ TEST_F(Reliability, SlowGridSearchShowsProgressAndStopsOnTime) {
   EXPECT_TRUE(Contains(ReadFile(Path("w/branch.tsv")), "status: partial (cancelled)"));
 }
 
+// Issue 14: on a terminal, progress lines carry the rate and an ETA
+// (util-linux `script` gives the app a pseudo-terminal).
+TEST_F(Reliability, ProgressOnATerminalHasRateAndEta) {
+  if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
+  const std::string cmd = "script -qec '" + kContinue +
+                          " --max_step 1e-4 --max_time 2.5 --no_plots --no_estimates --out " +
+                          Path("w") + " >/dev/null' /dev/null > " + Path("tty.txt") + " 2>&1";
+  ASSERT_NE(std::system(cmd.c_str()), -1);
+  const std::string tty = ReadFile(Path("tty.txt"));
+  EXPECT_TRUE(Contains(tty, "points/s"));
+  EXPECT_TRUE(Contains(tty, "ETA"));
+}
+
 // Item 13: the memory bound on --max_step is stated up front.
 TEST_F(Reliability, MaxStepBeyondTheMemoryBoundIsRefused) {
   ExpectRefused(kContinue, {"--max_step", "1.1e-7", "--out", Path("w")}, "max_step");
