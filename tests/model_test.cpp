@@ -199,5 +199,27 @@ TEST(Model, StickFieldMovesWithTheBelt) {
   EXPECT_NEAR(m.Field(Mode::kSlipBelow, z)[1], -0.1 + mu, 1e-15);
 }
 
+// The stick set is closed: on x' = v, |x + 2 beta v| = mu_s still sticks
+// (seed, definition of Omega), 2^-50 beyond does not. beta = 1/8, v = 1/4,
+// mu_s = 1/2 make both ends, and the forces 2^-50 beyond, exact in binary:
+// x = 7/16 and x = -9/16.
+TEST(Model, StickSetBoundaryIsStick) {
+  Params p;
+  p.beta = 0.125;
+  p.v = 0.25;
+  p.mu_s = 0.5;
+  const Model m(p);
+  for (double edge : {0.4375, -0.5625}) {
+    SCOPED_TRACE(edge);
+    ASSERT_EQ(std::abs(m.StickForce(edge)), p.mu_s);  // exactly on the boundary
+    EXPECT_TRUE(m.InStickInterval(edge));
+    EXPECT_EQ(m.ModeAt(Vec2(edge, p.v)), Mode::kStick);
+    const double out = edge + std::copysign(std::ldexp(1.0, -50), edge);
+    ASSERT_EQ(std::abs(m.StickForce(out)), p.mu_s + std::ldexp(1.0, -50));
+    EXPECT_FALSE(m.InStickInterval(out));
+    EXPECT_NE(m.ModeAt(Vec2(out, p.v)), Mode::kStick);
+  }
+}
+
 }  // namespace
 }  // namespace stickslip
