@@ -300,8 +300,8 @@ void Charter::FoldCurves() {
 
 ChartResult Charter::Run() {
   const auto t0 = Clock::now();
-  HopfCurves();
-  if (r_.status == ChartStatus::kOk) GrazingCurves();
+  if (o_.hopf_curves) HopfCurves();
+  if (r_.status == ChartStatus::kOk && o_.grazing_curves) GrazingCurves();
   if (r_.status == ChartStatus::kOk && o_.fold_curves) FoldCurves();
   // Codim-2 points found twice (from two curves or start points) are one.
   std::vector<Codim2Point> unique;
@@ -318,7 +318,7 @@ ChartResult Charter::Run() {
   r_.seconds = Since(t0);
   if (r_.status == ChartStatus::kOk && o_.region_n1 > 0) {
     const auto t1 = Clock::now();
-    r_.regions = ClassifyGrid(base_, o_);
+    r_.regions = ClassifyGrid(base_, o_, r_.curves);
     r_.region_seconds = Since(t1);
   }
   return r_;

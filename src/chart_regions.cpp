@@ -59,20 +59,23 @@ Region ClassifyPoint(OrbitFinder& finder, const Params& p, bool pure_slip_check)
   return Region::kSteadyOnly;
 }
 
-RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o) {
+RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o,
+                        const std::vector<Curve>& curves) {
   const Plane& pl = o.plane;
   RegionGrid grid;
   grid.n1 = o.region_n1;
   grid.n2 = o.region_n2;
   for (int i = 0; i < grid.n1; ++i) grid.x1.push_back(pl.from1 + pl.width1() * (i + 0.5) / grid.n1);
   for (int j = 0; j < grid.n2; ++j) grid.x2.push_back(pl.from2 + pl.width2() * (j + 0.5) / grid.n2);
-  bool subcritical = false;
-  for (double x1 : grid.x1)
-    for (double x2 : grid.x2) subcritical = subcritical || HopfCriticality(pl.At(base, x1, x2)) > 0;
+  bool check = false;
+  for (const Curve& c : curves)
+    for (const CurvePoint& p : c.points)
+      check = check || c.kind == CurveKind::kFold ||
+              (p.type == "persistence" && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
   OrbitFinder finder(Model(base), o.orbit);
   for (double x1 : grid.x1)
     for (double x2 : grid.x2)
-      grid.cells.push_back(ClassifyPoint(finder, pl.At(base, x1, x2), subcritical));
+      grid.cells.push_back(ClassifyPoint(finder, pl.At(base, x1, x2), check));
   return grid;
 }
 

@@ -79,9 +79,9 @@ void ExpectRegionsAgreeWithContinuation(const Params& base, const Plane& plane, 
       if (cells.count(here)) continue;
       bool holds = true;
       for (double dv : {-kHalfRange, kHalfRange})
-        holds = holds && ClassifyPoint(finder, plane.At(base, r.regions.x1[i] + dv,
-                                                        r.regions.x2[j]),
-                                       true) == here;
+        holds =
+            holds && ClassifyPoint(finder, plane.At(base, r.regions.x1[i] + dv, r.regions.x2[j]),
+                                   true) == here;
       if (holds) cells.emplace(here, std::make_pair(i, j));
     }
   }

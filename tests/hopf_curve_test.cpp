@@ -93,7 +93,11 @@ TEST(HopfCurve, AnyParameterPair) {
 // The amplitude of the pure-slip orbit near HB: r^2 = -8 (2 beta + mu') / mu''' = d / (2 l1),
 // with a the section amplitude (x_max - xbar ~ r).
 void ExpectAmplitudeFollowsL1(Params p, double v_hopf) {
-  const double l1 = HopfCriticality([&] { Params q = p; q.v = v_hopf; return q; }());
+  const double l1 = HopfCriticality([&] {
+    Params q = p;
+    q.v = v_hopf;
+    return q;
+  }());
   // The orbit exists on the side where d = 2 beta + mu' has the sign of l1.
   const double d = l1 < 0 ? -2e-5 : 2e-5;
   // Solve HopfFunction(v) = d by Newton in v (mu'' is exact).
@@ -116,8 +120,8 @@ void ExpectAmplitudeFollowsL1(Params p, double v_hopf) {
   for (int i = 0; i < 50; ++i) q.v -= (HopfFunction(q) + d) / Friction(q).D2Mu(q.v);
   OrbitFinder other(Model(q), o);
   const OrbitResult none = other.PureSlip(r_pred);
-  EXPECT_FALSE(none.ok() && std::abs(none.orbit.start[0] - Model(q).SteadySliding().x - r_pred) <
-                                0.5 * r_pred);
+  EXPECT_FALSE(none.ok() &&
+               std::abs(none.orbit.start[0] - Model(q).SteadySliding().x - r_pred) < 0.5 * r_pred);
 }
 
 TEST(HopfCurve, CriticalityPredictsTheOrbitAmplitudeSupercritical) {

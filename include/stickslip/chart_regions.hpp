@@ -13,9 +13,11 @@ namespace stickslip {
 // a stable pure-slip orbit beside stable steady sliding (bistable).
 Region ClassifyPoint(OrbitFinder& finder, const Params& p, bool pure_slip_check);
 
-// The grid of options.region_n1 x options.region_n2 cell centres; the
-// pure-slip check runs where a subcritical Hopf point is in the rectangle's
-// law at all (mu''' < 0 somewhere on the grid).
-RegionGrid ClassifyGrid(const Params& base, const ChartOptions& options);
+// The grid of options.region_n1 x options.region_n2 cell centres. A stable
+// pure-slip orbit beside stable steady sliding needs a fold of pure-slip
+// orbits: an LP curve, or a GR point of persistence type where steady sliding
+// is stable; the pure-slip check runs only if `curves` has one.
+RegionGrid ClassifyGrid(const Params& base, const ChartOptions& options,
+                        const std::vector<Curve>& curves);
 
 }  // namespace stickslip
