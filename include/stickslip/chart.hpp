@@ -72,7 +72,7 @@ struct ChartOptions {
   Plane plane;
   OrbitOptions orbit;
   double max_step = 0.01;  // largest continuation step, fraction of the rectangle
-  int samples = 24;        // test-function samples per start line
+  int samples = 16;        // test-function samples per start line
   bool hopf_curves = true;     // HB curves and GH points
   bool grazing_curves = true;  // GR curves and GR-LP points
   bool fold_curves = true;     // LP curves from GH points
