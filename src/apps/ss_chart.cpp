@@ -16,6 +16,7 @@
 #include "stickslip/chart.hpp"
 #include "stickslip/chart_report.hpp"
 #include "stickslip/report.hpp"
+#include "stickslip/version.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;
@@ -24,9 +25,6 @@ namespace po = boost::program_options;
 namespace {
 
 constexpr const char* kProg = "ss_chart";
-#ifndef STICKSLIP_VERSION
-#define STICKSLIP_VERSION "unknown"
-#endif
 constexpr const char* kNotes =
     "Outputs in --out (each written whole or not at all): curves.tsv (one row per curve\n"
     "point: HB Hopf with its first Lyapunov coefficient l1, GR grazing with the pure-slip\n"
@@ -99,7 +97,7 @@ int Main(int argc, char** argv) {
     return 0;
   }
   if (args.map().count("version")) {
-    std::cout << kProg << " (stickslip) " << STICKSLIP_VERSION << "\n";
+    std::cout << kProg << " (stickslip) " << ss::VersionString() << "\n";
     return 0;
   }
   ss::ChartOptions opts;
