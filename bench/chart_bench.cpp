@@ -78,7 +78,6 @@ int main(int argc, char** argv) {
   stickslip::Params base;
   stickslip::ChartOptions o;
   o.plane = stickslip::Plane{"v", "beta", 0.02, 0.6, 0.0, 0.25};
-  o.orbit.max_return_time = 200;  // as ss_chart
   const stickslip::ChartResult r = stickslip::Chart(base, o);
   std::printf("Chart(): %d curves, %d points in %.3f s (wall)\n", static_cast<int>(r.curves.size()),
               r.points(), r.seconds);

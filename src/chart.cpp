@@ -113,10 +113,7 @@ std::vector<Start> StartPoints(const Plane& pl, int samples,
 }
 
 bool NonPositiveFriction(const Params& p, double max_slip) {
-  const Friction f(p);
-  for (int i = 0; i <= 64; ++i)
-    if (!(f.Mu(max_slip * i / 64.0) > 0)) return true;
-  return false;
+  return Friction(p).NonPositiveUpTo(max_slip);
 }
 
 class Charter {

@@ -69,7 +69,10 @@ struct RegionGrid {
 };
 
 struct ChartOptions {
+  ChartOptions() { orbit.max_return_time = 50; }
   Plane plane;
+  // max_return_time 50 (default): a first return takes about one revolution,
+  // 2 pi / sqrt(1 - beta^2); longer runs are orbits running away.
   OrbitOptions orbit;
   double max_step = 0.01;  // largest continuation step, fraction of the rectangle
   int samples = 16;        // test-function samples per start line

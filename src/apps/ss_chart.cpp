@@ -112,7 +112,9 @@ int Main(int argc, char** argv) {
   // the two axes are never used.
   const ss::Params base = cli::ModelFromArguments(args);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args);
-  opts.orbit.max_return_time = 200;
+  // One revolution takes a few hundred steps; where mu < 0 at large slip speeds
+  // (k5 > 0) an orbit can run away, and is given up after 20000.
+  if (!args.Given("max_steps")) opts.orbit.flow.max_steps = 20000;
   opts.max_step = args.Number("max_step", opts.max_step);
   const bool plots = !args.Flag("no_plots");
   const long grid = args.Integer("grid", 48);
