@@ -106,5 +106,12 @@ TEST(Chart, StribeckRegionsAgreeWithOneParameterRuns) {
   ExpectRegionsAgreeWithContinuation(p, Plane{"v", "beta", 0.05, 0.6, 0.01, 0.14}, 20, 3);
 }
 
+TEST(Chart, QuinticRegionsAgreeWithOneParameterRuns) {
+  Params p;
+  p.k5 = 0.24;
+  // All four: stick-slip, pure slip (above GR-LP), steady only, bistable (below GH).
+  ExpectRegionsAgreeWithContinuation(p, Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12}, 20, 4);
+}
+
 }  // namespace
 }  // namespace stickslip

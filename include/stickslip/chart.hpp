@@ -74,11 +74,11 @@ struct ChartOptions {
   // max_return_time 50 (default): a first return takes about one revolution,
   // 2 pi / sqrt(1 - beta^2); longer runs are orbits running away.
   OrbitOptions orbit;
-  double max_step = 0.01;  // largest continuation step, fraction of the rectangle
-  int samples = 16;        // test-function samples per start line
-  bool hopf_curves = true;     // HB curves and GH points
-  bool grazing_curves = true;  // GR curves and GR-LP points
-  bool fold_curves = true;     // LP curves from GH points
+  double max_step = 0.01;            // largest continuation step, fraction of the rectangle
+  int samples = 16;                  // test-function samples per start line
+  bool hopf_curves = true;           // HB curves and GH points
+  bool grazing_curves = true;        // GR curves and GR-LP points
+  bool fold_curves = true;           // LP curves from GH points
   int region_n1 = 0, region_n2 = 0;  // region grid; 0: none
   std::function<bool()> cancelled;   // polled between points
   // Empty if valid for base, else one line naming the violated constraint.
