@@ -28,8 +28,8 @@ Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0), 
 double Friction::Mu(double s) const {
   switch (law_) {
     case LawKind::kCubic: {  // seed (3.3): mu_s - k1 s + k3 s^3, with the quintic - k5 s^5
-      const double s2 = s * s;
-      return mu_s_ - a_ * s + b_ * s2 * s - c_ * s2 * s2 * s;
+      const double s2 = s * s, cubic = mu_s_ - a_ * s + b_ * s2 * s;
+      return c_ == 0 ? cubic : cubic - c_ * s2 * s2 * s;
     }
     case LawKind::kCoulomb:
       return a_;
@@ -44,8 +44,8 @@ double Friction::Mu(double s) const {
 double Friction::DMu(double s) const {
   switch (law_) {
     case LawKind::kCubic: {
-      const double s2 = s * s;
-      return -a_ + 3.0 * b_ * s2 - 5.0 * c_ * s2 * s2;
+      const double s2 = s * s, cubic = -a_ + 3.0 * b_ * s2;
+      return c_ == 0 ? cubic : cubic - 5.0 * c_ * s2 * s2;
     }
     case LawKind::kCoulomb:
       return 0.0;
