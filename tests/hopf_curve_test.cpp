@@ -1,5 +1,5 @@
 // HB curves and their criticality (hopf_curve.hpp) through the chart driver:
-// every point against the closed forms of the design notes, the first Lyapunov
+// every point against closed forms (seed 3.16 and its analogues), the first Lyapunov
 // coefficient against the amplitude of pure-slip orbits measured by shooting
 // just past the Hopf point, and the GH point of the quintic law.
 #include "stickslip/hopf_curve.hpp"

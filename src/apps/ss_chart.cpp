@@ -89,6 +89,30 @@ bool Plot(const std::string& dir, const std::string& script) {
   return ok;
 }
 
+// What was computed, per curve, and the codim-2 points, on stdout.
+void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::string& model,
+                  const std::string& dir, bool plots, bool plots_ok) {
+  std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, pl.p1.c_str(),
+              pl.p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
+              r.seconds * 1e3);
+  if (plots)
+    std::printf(" (regions %d x %d in %.1f ms)", r.regions.n1, r.regions.n2,
+                r.region_seconds * 1e3);
+  std::printf("\n");
+  for (size_t i = 0; i < r.curves.size(); ++i) {
+    const ss::Curve& c = r.curves[i];
+    std::printf("  curve %zu %s: %zu points, %d evaluations, %.1f ms, ends %s\n", i + 1,
+                ss::CurveLabel(c.kind), c.points.size(), c.evaluations, c.seconds * 1e3,
+                c.ends.c_str());
+  }
+  for (const ss::Codim2Point& p : r.codim2)
+    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", p.label.c_str(), pl.p1.c_str(), p.p1,
+                pl.p2.c_str(), p.p2, p.description.c_str());
+  std::printf(
+      "wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(),
+      plots ? (plots_ok ? ", regions.tsv, chart.gp, chart.png" : ", regions.tsv, chart.gp") : "");
+}
+
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "chart");
@@ -142,25 +166,7 @@ int Main(int argc, char** argv) {
     ss::WriteFileAtomically(dir + "/regions.tsv", ss::RegionsTable(r, pl, model).str());
     plots_ok = Plot(dir, ss::ChartScript(r, pl, model));
   }
-  std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, pl.p1.c_str(),
-              pl.p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
-              r.seconds * 1e3);
-  if (plots)
-    std::printf(" (regions %d x %d in %.1f ms)", r.regions.n1, r.regions.n2,
-                r.region_seconds * 1e3);
-  std::printf("\n");
-  for (size_t i = 0; i < r.curves.size(); ++i) {
-    const ss::Curve& c = r.curves[i];
-    std::printf("  curve %zu %s: %zu points, %d evaluations, %.1f ms, ends %s\n", i + 1,
-                ss::CurveLabel(c.kind), c.points.size(), c.evaluations, c.seconds * 1e3,
-                c.ends.c_str());
-  }
-  for (const ss::Codim2Point& p : r.codim2)
-    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", p.label.c_str(), pl.p1.c_str(), p.p1,
-                pl.p2.c_str(), p.p2, p.description.c_str());
-  std::printf(
-      "wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(),
-      plots ? (plots_ok ? ", regions.tsv, chart.gp, chart.png" : ", regions.tsv, chart.gp") : "");
+  PrintSummary(r, pl, model, dir, plots, plots_ok);
   if (r.unphysical_points > 0)
     cli::PrintError(kProg, std::to_string(r.unphysical_points) +
                                " curve points have orbits visiting slip speeds where mu <= 0 "
