@@ -9,7 +9,7 @@ set xlabel 'v' noenhanced
 set ylabel 'beta' noenhanced
 set xrange [0.05:1.5]
 set yrange [0:0.3]
-set title 'law=leine beta=0.05 v=0.25 mu_s=1 delta=3 (axes v in [0.05, 1.5], beta in [0, 0.3])' noenhanced
+set title 'law=leine mu_s=1 delta=3 v=[0.05, 1.5] beta=[0, 0.3]' noenhanced
 set key outside right top
 set palette defined (0 '#f2f2f2', 1 '#f2f2f2', 1 '#f4a6a6', 2 '#f4a6a6', 2 '#a6c8f4', 3 '#a6c8f4', 3 '#d9b3ef', 4 '#d9b3ef')
 set cbrange [-0.5:3.5]

@@ -9,7 +9,7 @@ set xlabel 'v' noenhanced
 set ylabel 'beta' noenhanced
 set xrange [0.05:1.2]
 set yrange [0.01:0.14]
-set title 'law=stribeck beta=0.05 v=0.25 mu_s=0.4 mu_k=0.25 v_s=0.5 (axes v in [0.05, 1.2], beta in [0.01, 0.14])' noenhanced
+set title 'law=stribeck mu_s=0.4 mu_k=0.25 v_s=0.5 v=[0.05, 1.2] beta=[0.01, 0.14]' noenhanced
 set key outside right top
 set palette defined (0 '#f2f2f2', 1 '#f2f2f2', 1 '#f4a6a6', 2 '#f4a6a6', 2 '#a6c8f4', 3 '#a6c8f4', 3 '#d9b3ef', 4 '#d9b3ef')
 set cbrange [-0.5:3.5]

@@ -155,10 +155,13 @@ int Main(int argc, char** argv) {
   opts.cancelled = [] { return g_signal != 0; };
   const ss::ChartResult r = ss::Chart(base, opts);
 
-  std::string model = cli::DescribeModel(base);
-  model += " (axes " + pl.p1 + " in [" + ss::FormatNumber(pl.from1) + ", " +
-           ss::FormatNumber(pl.to1) + "], " + pl.p2 + " in [" + ss::FormatNumber(pl.from2) + ", " +
-           ss::FormatNumber(pl.to2) + "])";
+  // The law's parameters but the two axes, then the axes' ranges.
+  std::string model = std::string("law=") + ss::LawName(base.law);
+  for (const auto& name : ss::ParameterNames(base.law))
+    if (name != pl.p1 && name != pl.p2)
+      model += " " + name + "=" + ss::FormatNumber(ss::GetParameter(base, name));
+  model += " " + pl.p1 + "=[" + ss::FormatNumber(pl.from1) + ", " + ss::FormatNumber(pl.to1) +
+           "] " + pl.p2 + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
   ss::WriteFileAtomically(dir + "/curves.tsv", ss::CurvesTable(r, pl, model).str());
   ss::WriteFileAtomically(dir + "/codim2.tsv", ss::Codim2Table(r, pl, model).str());
   bool plots_ok = true;
