@@ -28,8 +28,9 @@ Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0), 
 double Friction::Mu(double s) const {
   switch (law_) {
     case LawKind::kCubic: {  // seed (3.3): mu_s - k1 s + k3 s^3, with the quintic - k5 s^5
-      const double s2 = s * s, cubic = mu_s_ - a_ * s + b_ * s2 * s;
-      return c_ == 0 ? cubic : cubic - c_ * s2 * s2 * s;
+      // The cubic terms in the seed's order, so that k5 = 0 rounds as before.
+      const double cubic = mu_s_ - a_ * s + b_ * s * s * s;
+      return c_ == 0 ? cubic : cubic - c_ * s * s * s * s * s;
     }
     case LawKind::kCoulomb:
       return a_;
@@ -44,8 +45,8 @@ double Friction::Mu(double s) const {
 double Friction::DMu(double s) const {
   switch (law_) {
     case LawKind::kCubic: {
-      const double s2 = s * s, cubic = -a_ + 3.0 * b_ * s2;
-      return c_ == 0 ? cubic : cubic - 5.0 * c_ * s2 * s2;
+      const double cubic = -a_ + 3.0 * b_ * s * s;
+      return c_ == 0 ? cubic : cubic - 5.0 * c_ * s * s * s * s;
     }
     case LawKind::kCoulomb:
       return 0.0;
