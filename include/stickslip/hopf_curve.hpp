@@ -21,7 +21,9 @@
 
 namespace stickslip {
 
-// 2 beta + mu'(v): the trace of steady sliding's Jacobian, negated.
+// 2 beta + mu'(v): the trace of steady sliding's Jacobian, negated. The same as
+// HopfDamping (special_points.hpp) but from the friction law alone: no Model, no
+// validation, so difference quotients may step to the domain's edge.
 double HopfFunction(const Params& p);
 // First Lyapunov coefficient of the Hopf point, -mu'''(v) / 16 (see above).
 double HopfCriticality(const Params& p);
