@@ -1,7 +1,7 @@
 // LP curves (fold_curve.hpp) through the chart driver: the fold curve of the
 // quintic scene leaves the GH point and ends at the GR-LP point; its points
 // against folds solved independently with the long-double reference
-// integrator (tests/reference/reference_orbit.hpp): at the point's beta,
+// integrator (reference/reference_orbit.hpp): at the point's beta,
 // P(x) = x and P'(x) = 1 for the reference section map, by Newton in (x, v).
 #include "stickslip/fold_curve.hpp"
 

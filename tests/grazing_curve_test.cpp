@@ -1,6 +1,6 @@
 // GR curves and GR-LP points (grazing_curve.hpp) through the chart driver,
 // against the independent long-double reference integrator
-// (tests/reference/reference_orbit.hpp): the grazing speed at the curve
+// (reference/reference_orbit.hpp): the grazing speed at the curve
 // point's beta by bisection on the reference's first-return maximum of x', and
 // the pure-slip multiplier of the reference's grazing orbit.
 #include "stickslip/grazing_curve.hpp"
