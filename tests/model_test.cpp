@@ -51,6 +51,29 @@ TEST(Model, QuinticFrictionAndDerivatives) {
   }
 }
 
+TEST(Model, QuinticFrictionTurnsNonPositive) {
+  // k5 = 0.24: mu(s) = 0.4 - 0.45 s + 0.6 s^3 - 0.24 s^5 has one positive root near 1.46
+  // (mu(1.45) > 0 > mu(1.47)); the seed's law and the others stay positive.
+  Params p = Seed();
+  p.k5 = 0.24;
+  const Friction f(p);
+  EXPECT_GT(0.4 - 0.45 * 1.45 + 0.6 * std::pow(1.45, 3) - 0.24 * std::pow(1.45, 5), 0);
+  EXPECT_LT(0.4 - 0.45 * 1.47 + 0.6 * std::pow(1.47, 3) - 0.24 * std::pow(1.47, 5), 0);
+  EXPECT_FALSE(f.NonPositiveUpTo(1.45));
+  EXPECT_TRUE(f.NonPositiveUpTo(1.47));
+  EXPECT_TRUE(f.NonPositiveUpTo(10.0));
+  EXPECT_FALSE(Friction(Seed()).NonPositiveUpTo(100.0));
+  // A dip below zero between two positive ends: mu_s 0.1, mu_m 0.001 at v_m 0.25 (k1 0.594,
+  // k3 3.168), k5 2: mu(0.25) = 0.001 - 2 / 1024 < 0 < mu(0.5) = 0.1365.
+  Params q = Seed();
+  q.mu_s = 0.1, q.mu_m = 0.001, q.v_m = 0.25, q.v = 0.05, q.k5 = 2;
+  const Friction g(q);
+  ASSERT_NEAR(g.Mu(0.25), 0.001 - 2.0 / 1024, 1e-15);
+  ASSERT_NEAR(g.Mu(0.5), 0.1365, 1e-12);
+  EXPECT_TRUE(g.NonPositiveUpTo(0.5));
+  EXPECT_FALSE(g.NonPositiveUpTo(0.1));
+}
+
 TEST(Model, RejectsInvalidParameters) {
   Params p = Seed();
   p.mu_m = 0.5;
