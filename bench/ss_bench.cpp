@@ -153,7 +153,7 @@ Reference ComputeReference() {
 // ---------------------------------------------------------------- rows
 
 struct Row {
-  std::string method;  // ours-adams, ours-bdf, brute-adams, regularised-bdf
+  std::string method;  // ours-taylor, ours-adams, ours-bdf, brute-adams, regularised-bdf
   double rtol = kNan, eps = kNan;
   int runs = 0;
   double t = kNan;         // median wall time of the whole computation [s]
@@ -236,13 +236,17 @@ ss::PointKind KindOnBranch(const ss::ContinuationResult& res, double v) {
   return best ? best->kind : ss::PointKind::kEquilibrium;
 }
 
-Row RunOurs(const Reference& ref, ss::Method method, double rtol, int min_reps, int max_reps) {
+Row RunOurs(const Reference& ref, ss::Integrator integrator, ss::Method method, double rtol,
+            int min_reps, int max_reps) {
   Row row;
-  row.method = std::string("ours-") + ss::MethodName(method);
+  row.method =
+      std::string("ours-") + (integrator == ss::Integrator::kTaylor ? ss::IntegratorName(integrator)
+                                                                    : ss::MethodName(method));
   row.rtol = rtol;
   ss::ContinuationOptions co;  // param v, 0.05 -> 0.5, max_step 0.01
   co.orbit.flow.rtol = rtol;
   co.orbit.flow.atol = 1e-2 * rtol;
+  co.orbit.flow.integrator = integrator;
   co.orbit.flow.method = method;
   const ss::Params base = Seed(0.25);
 
@@ -322,6 +326,7 @@ Row RunBrute(const Reference& ref, double rtol, double t_cap, int min_reps, int 
   row.method = "brute-adams";
   row.rtol = rtol;
   bench::BruteOptions bo;
+  bo.flow.integrator = ss::Integrator::kCvode;
   bo.flow.rtol = rtol;
   bo.flow.atol = 1e-2 * rtol;
   bo.converge_tol = 10 * rtol;  // as tight as the integration allows
@@ -619,7 +624,7 @@ void PrintTargets(const std::vector<Row>& rows, const ProcessTimes& pt) {
         Ratio(lo_b).c_str());
   }
   // 3. Error proportional to tolerance down to 1e-10.
-  for (const char* m : {"ours-adams", "ours-bdf"}) {
+  for (const char* m : {"ours-taylor", "ours-adams", "ours-bdf"}) {
     const double sp = Slope(rows, m, &Row::err_period), sx = Slope(rows, m, &Row::err_xmax);
     std::printf(
         "  [%s] %s: slope of log err vs log rtol on [1e-10, 1e-4]: period %.2f, x_max "
@@ -669,27 +674,31 @@ void SingleOrbit(bool quick) {
   const ss::Params p = Seed(0.25);
   const double t_ref = static_cast<double>(ss::reference::StickSlip(p).period);
   std::printf(
-      "\none stick-slip orbit of the seed set at v = 0.25 (Adams, atol = rtol/100; "
-      "median of repeated calls):\n  rtol      us/orbit  steps  period error\n");
-  for (double rtol : {1e-6, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
-    ss::OrbitOptions o;
-    o.flow.rtol = rtol;
-    o.flow.atol = rtol * 1e-2;
-    ss::OrbitFinder finder{ss::Model(p), o};
-    ss::OrbitResult r = finder.StickSlip();
-    const long steps0 = finder.flow().total_steps();
-    r = finder.StickSlip();
-    const long steps = finder.flow().total_steps() - steps0;
-    const int n = quick ? 50 : 400;
-    std::vector<double> us;
-    for (int k = 0; k < 9; ++k) {
-      const double t0 = Now();
-      for (int i = 0; i < n; ++i) r = finder.StickSlip();
-      us.push_back((Now() - t0) / n * 1e6);
+      "\none stick-slip orbit of the seed set at v = 0.25 (atol = rtol/100; "
+      "median of repeated calls):\n  integrator  rtol      us/orbit  steps  period error\n");
+  for (ss::Integrator in : {ss::Integrator::kTaylor, ss::Integrator::kCvode})
+    for (double rtol : {1e-6, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14}) {
+      if (in == ss::Integrator::kCvode && rtol < 1e-12) continue;  // CVODE stalls below ~1e-13
+      ss::OrbitOptions o;
+      o.flow.integrator = in;
+      o.flow.rtol = rtol;
+      o.flow.atol = rtol * 1e-2;
+      ss::OrbitFinder finder{ss::Model(p), o};
+      ss::OrbitResult r = finder.StickSlip();
+      const long steps0 = finder.flow().total_steps();
+      r = finder.StickSlip();
+      const long steps = finder.flow().total_steps() - steps0;
+      const int n = quick ? 50 : 400;
+      std::vector<double> us;
+      for (int k = 0; k < 9; ++k) {
+        const double t0 = Now();
+        for (int i = 0; i < n; ++i) r = finder.StickSlip();
+        us.push_back((Now() - t0) / n * 1e6);
+      }
+      std::printf("  %-10s  %-8.0e  %8.2f  %5ld  %.1e\n",
+                  in == ss::Integrator::kTaylor ? "taylor" : "cvode-adams", rtol, Median(us), steps,
+                  std::abs(r.orbit.period - t_ref));
     }
-    std::printf("  %-8.0e  %8.1f  %5ld  %.1e\n", rtol, Median(us), steps,
-                std::abs(r.orbit.period - t_ref));
-  }
 }
 
 int Main(int argc, char** argv) {
@@ -760,8 +769,15 @@ int Main(int argc, char** argv) {
   std::fflush(stdout);
 
   std::vector<Row> rows;
+  for (double rtol : rtols)
+    rows.push_back(
+        RunOurs(ref, ss::Integrator::kTaylor, ss::Method::kAdams, rtol, min_reps, max_reps));
+  for (double rtol : {1e-13, 1e-14})
+    rows.push_back(
+        RunOurs(ref, ss::Integrator::kTaylor, ss::Method::kAdams, rtol, min_reps, max_reps));
   for (ss::Method m : {ss::Method::kAdams, ss::Method::kBdf})
-    for (double rtol : rtols) rows.push_back(RunOurs(ref, m, rtol, min_reps, max_reps));
+    for (double rtol : rtols)
+      rows.push_back(RunOurs(ref, ss::Integrator::kCvode, m, rtol, min_reps, max_reps));
   for (double rtol : brute_rtols) rows.push_back(RunBrute(ref, rtol, t_cap, slow_reps, max_reps));
   for (double eps : epss)
     rows.push_back(RunRegularised(ref, eps, RegularisedRtol(eps), slow_reps, max_reps));

@@ -325,14 +325,34 @@ TEST_F(SimulateApp, IntegratorFailureExitsOneWithoutData) {
   // 10 CVODE steps cannot cover an output interval of 50 at tight tolerance.
   const std::string out = Path("fail.tsv");
   WriteFile(out, "old\n");
-  const Result r =
-      Run({"--xdot0", "0.125", "--max_steps", "10", "--dt", "50", "--t_end", "100", "--out", out});
+  const Result r = Run({"--integrator", "cvode", "--xdot0", "0.125", "--max_steps", "10", "--dt",
+                        "50", "--t_end", "100", "--out", out});
   EXPECT_EQ(r.code, 1);
   const auto lines = r.err_lines();
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_TRUE(Contains(lines[0], "at t = "));
   EXPECT_TRUE(Contains(lines[0], "slip-below"));
   EXPECT_EQ(ReadFile(out), "old\n");  // not replaced by a partial run
+}
+
+TEST_F(SimulateApp, TaylorFailureExitsOneWithoutData) {
+  // x' = 1e200: the cubic law's Taylor coefficients overflow at once.
+  const std::string out = Path("fail.tsv");
+  WriteFile(out, "old\n");
+  const Result r = Run({"--xdot0", "1e200", "--t_end", "10", "--out", out});
+  EXPECT_EQ(r.code, 1);
+  const auto lines = r.err_lines();
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_TRUE(Contains(lines[0], "non-finite Taylor coefficients")) << lines[0];
+  EXPECT_TRUE(Contains(lines[0], "slip-above")) << lines[0];
+  EXPECT_EQ(ReadFile(out), "old\n");
+}
+
+TEST_F(SimulateApp, UnknownIntegratorIsRefused) {
+  const Result r = Run({"--integrator", "rk4", "--out", Path("a.tsv")});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(Contains(r.err, "rk4")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "--integrator")) << r.err;
 }
 
 TEST_F(SimulateApp, NoTemporaryFilesLeftBehind) {

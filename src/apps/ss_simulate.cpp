@@ -135,6 +135,7 @@ int Main(int argc, char** argv) {
   table.AddComment("start x0=" + ss::FormatNumber(x0) + " xdot0=" + ss::FormatNumber(xdot0) +
                    " t_end=" + ss::FormatNumber(t_end) + " dt=" + ss::FormatNumber(dt) + " rtol=" +
                    ss::FormatNumber(options.rtol) + " atol=" + ss::FormatNumber(options.atol) +
+                   " integrator=" + ss::IntegratorName(options.integrator) +
                    " method=" + ss::MethodName(options.method));
   ss::Sample last{std::nan(""), ss::Vec2::Zero(), ss::Mode::kStick};
   auto observer = [&](const ss::Sample& s) {
