@@ -4,7 +4,8 @@
 // default Params) at belt speeds kV, and the grazing (GR) and Hopf (HB)
 // points. Three methods:
 //   ours         stickslip::Continue (v from 0.05 to 0.5, default options)
-//                at rtol 1e-3 .. 1e-12, atol = 1e-2 rtol, CVODE Adams and BDF;
+//                at rtol 1e-3 .. 1e-12, atol = 1e-2 rtol, Taylor (also 1e-13,
+//                1e-14), CVODE Adams and BDF;
 //   brute force  stickslip::Flow from rest until cycles repeat (brute_force.hpp);
 //   regularised  tanh(u / eps) friction, BDF, transient + shooting
 //                (regularised.hpp), eps 1e-1 .. 1e-6.
