@@ -8,12 +8,13 @@
 #include <vector>
 
 #include "stickslip/continuation.hpp"
+#include "stickslip/numbers.hpp"
 #include "stickslip/report.hpp"
 
 namespace ssbench {
 
 namespace ss = stickslip;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+using ss::kNan;
 
 // The fixed belt speeds: stick-slip up to 0.39 (< GR ~ 0.3958), pure slip at
 // 0.42 and 0.44 (HB ~ 0.44096, multiplier ~0.993: slow transients there).

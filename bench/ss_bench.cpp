@@ -10,7 +10,7 @@
 //   regularised  tanh(u / eps) friction, BDF, transient + shooting
 //                (regularised.hpp), eps 1e-1 .. 1e-6.
 // Errors against references computed here by the independent long-double
-// integrator (tests/reference/reference_orbit.hpp) and the closed-form Hopf
+// integrator (reference/reference_orbit.hpp) and the closed-form Hopf
 // point sqrt((k1 - 2 beta) / (3 k3)) (seed 3.16). Wall times are medians.
 //
 // Usage: ss_bench [--out DIR] [--quick] [--no_plot]; or scripts/bench.sh, which

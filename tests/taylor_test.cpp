@@ -46,6 +46,9 @@ struct Case {
 std::vector<Case> EveryLaw() {
   std::vector<Case> cases;
   cases.push_back({"cubic (seed set)", Params()});
+  Params q;
+  q.k5 = 0.5;  // the quintic term -k5 s^5
+  cases.push_back({"cubic with k5", q});
   Params c;
   c.law = LawKind::kCoulomb;
   c.mu_k = 0.25;
