@@ -216,8 +216,8 @@ TEST(Taylor, ErrorIsProportionalToTheTolerance) {
   EXPECT_GT(slope, 0.8);
   EXPECT_LT(slope, 1.5);
   RecordProperty("slope", std::to_string(slope));
-  std::cout << "taylor: slope of log10(period error) against log10(rtol) on [1e-9, 1e-4]: "
-            << slope << std::endl;
+  std::cout << "taylor: slope of log10(period error) against log10(rtol) on [1e-9, 1e-4]: " << slope
+            << std::endl;
 }
 
 }  // namespace
