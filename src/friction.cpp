@@ -105,4 +105,77 @@ bool Friction::NonPositiveUpTo(double s_max) const {
   return false;
 }
 
+MuSeries::MuSeries(const Friction& f) : law_(f.law_), mu_s_(f.mu_s_), a_(f.a_), b_(f.b_) {
+  if (law_ == LawKind::kCubic) {  // seed (3.3): mu_s - k1 s + k3 s^3, and - k5 s^5
+    c_[1] = -a_;
+    c_[3] = b_;
+    c_[5] = -f.c_;
+    for (int j = 1; j <= 5; j += 2)
+      if (c_[j] != 0) degree_ = j;
+  }
+}
+
+namespace {
+// Coefficient k of the Cauchy product of p and q.
+inline double Cauchy(const double* p, const double* q, int k) {
+  double sum = 0;
+  for (int j = 0; j <= k; ++j) sum += p[j] * q[k - j];
+  return sum;
+}
+}  // namespace
+
+double MuSeries::Next(int k, const double* s, double* dmu) {
+  const double c0 = k == 0 ? 1.0 : 0.0;
+  switch (law_) {
+    case LawKind::kCubic: {
+      // w_[d - 2] holds s^d: s^2 = s s, s^3 = s^2 s, s^4 = s^2 s^2, s^5 = s^4 s.
+      if (degree_ >= 3 || dmu) w_[0][k] = Cauchy(s, s, k);
+      if (degree_ >= 3) w_[1][k] = Cauchy(w_[0], s, k);
+      if (degree_ >= 5) {
+        w_[2][k] = Cauchy(w_[0], w_[0], k);
+        w_[3][k] = Cauchy(w_[2], s, k);
+      }
+      double mu = c0 * mu_s_ + c_[1] * s[k];
+      if (degree_ >= 3) mu += c_[3] * w_[1][k];
+      if (degree_ >= 5) mu += c_[5] * w_[3][k];
+      if (dmu) {
+        *dmu = c0 * c_[1] + 3 * c_[3] * w_[0][k];
+        if (degree_ >= 5) *dmu += 5 * c_[5] * w_[2][k];
+      }
+      return mu;
+    }
+    case LawKind::kCoulomb:
+      if (dmu) *dmu = 0;
+      return c0 * a_;
+    case LawKind::kStribeck: {
+      double* u = w_[0];
+      double* e = w_[1];
+      u[k] = -s[k] / b_;
+      if (k == 0) {
+        e[0] = std::exp(u[0]);
+      } else {
+        double sum = 0;
+        for (int j = 1; j <= k; ++j) sum += j * u[j] * e[k - j];
+        e[k] = sum / k;
+      }
+      if (dmu) *dmu = -(mu_s_ - a_) / b_ * e[k];
+      return c0 * a_ + (mu_s_ - a_) * e[k];
+    }
+    case LawKind::kLeine: {
+      double* d = w_[0];
+      double* q = w_[1];
+      d[k] = c0 + a_ * s[k];
+      double sum = c0 * mu_s_;
+      for (int j = 1; j <= k; ++j) sum -= d[j] * q[k - j];
+      q[k] = sum / d[0];
+      if (dmu) {
+        w_[2][k] = Cauchy(q, q, k);
+        *dmu = -(a_ / mu_s_) * w_[2][k];
+      }
+      return q[k];
+    }
+  }
+  return 0;
+}
+
 }  // namespace stickslip

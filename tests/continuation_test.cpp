@@ -187,19 +187,25 @@ namespace stickslip {
 namespace {
 
 // The branch keeps its structure (one GR, one HB, stick-slip then pure slip)
-// from rtol 1e-3 to 1e-12, Adams and BDF: grazing touches where x' = v to
+// from rtol 1e-3 to 1e-12, Taylor, Adams and BDF: grazing touches where x' = v to
 // rounding once broke GR location at 1e-6 .. 1e-8.
 TEST(Continuation, SameStructureAtEveryTolerance) {
   const Params p;
   const double v_gr = static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L));
-  for (Method m : {Method::kAdams, Method::kBdf}) {
+  // Taylor (the default), then CVODE with Adams and BDF.
+  const std::pair<Integrator, Method> solvers[] = {{Integrator::kTaylor, Method::kAdams},
+                                                   {Integrator::kCvode, Method::kAdams},
+                                                   {Integrator::kCvode, Method::kBdf}};
+  for (const auto& [in, m] : solvers) {
     for (double rtol = 1e-3; rtol > 1e-12 * 0.5; rtol *= 0.1) {
       ContinuationOptions o;
+      o.orbit.flow.integrator = in;
       o.orbit.flow.method = m;
       o.orbit.flow.rtol = rtol;
       o.orbit.flow.atol = rtol * 1e-2;
       const ContinuationResult r = Continue(p, o);
-      const std::string at = std::string(MethodName(m)) + " rtol " + std::to_string(rtol);
+      const std::string at =
+          std::string(IntegratorName(in)) + " " + MethodName(m) + " rtol " + std::to_string(rtol);
       ASSERT_EQ(r.status, ContinuationStatus::kOk) << at << ": " << r.message;
       const auto gr = Labelled(r, SpecialKind::kGrazing);
       ASSERT_EQ(gr.size(), 1u) << at;

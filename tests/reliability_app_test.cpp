@@ -157,8 +157,9 @@ TEST_F(Reliability, ParametersOfAnotherLawAreValidated) {
 // Item 9: a cancelled run names where the branch stopped, which is the last
 // periodic row of branch.tsv.
 TEST_F(Reliability, CancelledRunNamesWhereTheBranchStopped) {
-  const Outcome r = Run(kContinue, {"--max_step", "0.002", "--max_time", "0.5", "--no_plots",
-                                    "--no_estimates", "--out", Path("w")});
+  // CVODE: a run long enough to be cut at any load (Taylor ends it in 0.1 s).
+  const Outcome r = Run(kContinue, {"--integrator", "cvode", "--max_step", "5e-5", "--max_time",
+                                    "0.5", "--no_plots", "--no_estimates", "--out", Path("w")});
   ASSERT_EQ(r.code, 1) << err_;
   std::istringstream rows(ReadFile(Path("w/branch.tsv")));
   std::string line, last;
@@ -184,7 +185,7 @@ TEST_F(Reliability, StdoutFailuresAreReportedAfterTheFilesAreWritten) {
   full.out_path = "/dev/full";
   r = Run(kContinue, {"--help"}, full);
   EXPECT_EQ(r.code, 1);
-  EXPECT_TRUE(Contains(err_, "No space left on device"));
+  EXPECT_TRUE(Contains(err_, "cannot write to standard output"));
   r = Run(kSimulate, {"--help"}, full);
   EXPECT_EQ(r.code, 1);
 }
@@ -227,7 +228,7 @@ TEST_F(Reliability, SlowGridSearchShowsProgressAndStopsOnTime) {
 TEST_F(Reliability, ProgressOnATerminalHasRateAndEta) {
   if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
   const std::string cmd = "script -qec '" + kContinue +
-                          " --max_step 1e-4 --max_time 2.5 --no_plots --no_estimates --out " +
+                          " --integrator cvode --max_step 1e-4 --max_time 2.5 --no_plots --no_estimates --out " +
                           Path("w") + " >/dev/null' /dev/null > " + Path("tty.txt") + " 2>&1";
   ASSERT_NE(std::system(cmd.c_str()), -1);
   const std::string tty = ReadFile(Path("tty.txt"));

@@ -235,6 +235,7 @@ int Main(int argc, char** argv) {
                    " t_end=" + ss::FormatNumber(s.t_end) + " dt=" + ss::FormatNumber(s.dt) +
                    " rtol=" + ss::FormatNumber(s.options.rtol) +
                    " atol=" + ss::FormatNumber(s.options.atol) +
+                   " integrator=" + ss::IntegratorName(s.options.integrator) +
                    " method=" + ss::MethodName(s.options.method));
   ss::Sample last{std::nan(""), ss::Vec2::Zero(), ss::Mode::kStick};
   std::string bad;

@@ -106,15 +106,16 @@ po::options_description ModelOptions() {
 
 po::options_description SolverOptions() {
   const FlowOptions f;
-  po::options_description d("Solver (CVODE)");
-  d.add_options()("rtol", Value()->value_name("X"),
-                  ("relative tolerance, in [1e-14, 1e-2]" + Default(f.rtol)).c_str())(
+  po::options_description d("Solver");
+  d.add_options()("integrator", Value()->value_name("NAME"),
+                  "slip phases by taylor (default: Taylor series) or cvode (CVODE, --method)")(
+      "rtol", Value()->value_name("X"),
+      ("relative tolerance, in [1e-14, 1e-2]" + Default(f.rtol)).c_str())(
       "atol", Value()->value_name("X"),
       ("absolute tolerance, in [1e-16, 1e-2]" + Default(f.atol)).c_str())(
-      "method", Value()->value_name("NAME"), "adams (default, non-stiff) or bdf (stiff)")(
+      "method", Value()->value_name("NAME"), "cvode: adams (default, non-stiff) or bdf (stiff)")(
       "max_steps", Value()->value_name("N"),
-      ("CVODE steps allowed per output interval, >= 10 (default " + std::to_string(f.max_steps) +
-       ")")
+      ("steps allowed per output interval, >= 10 (default " + std::to_string(f.max_steps) + ")")
           .c_str());
   return d;
 }
@@ -396,6 +397,17 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args) {
   f.rtol = args.Number("rtol", f.rtol);
   f.atol = args.Number("atol", f.atol);
   f.max_steps = args.Integer("max_steps", f.max_steps);
+  if (args.Given("integrator")) {
+    const std::string i = args.Text("integrator");
+    if (i == "taylor") {
+      f.integrator = Integrator::kTaylor;
+    } else if (i == "cvode") {
+      f.integrator = Integrator::kCvode;
+    } else {
+      throw UsageError("invalid value '" + i + "' for " + args.Source("integrator") +
+                       ": expected taylor or cvode");
+    }
+  }
   if (args.Given("method")) {
     const std::string m = args.Text("method");
     if (m == "adams") {
