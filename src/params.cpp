@@ -38,7 +38,7 @@ std::vector<std::string> ParameterNames(LawKind law) {
   std::vector<std::string> names = {"beta", "v", "mu_s"};
   switch (law) {
     case LawKind::kCubic:
-      names.insert(names.end(), {"mu_m", "v_m"});
+      names.insert(names.end(), {"mu_m", "v_m", "k5"});
       break;
     case LawKind::kCoulomb:
       names.insert(names.end(), {"mu_k"});
@@ -59,10 +59,10 @@ struct Entry {
   const char* name;
   double Params::*member;
 };
-constexpr Entry kTable[] = {{"beta", &Params::beta}, {"v", &Params::v},
-                            {"mu_s", &Params::mu_s}, {"mu_m", &Params::mu_m},
-                            {"v_m", &Params::v_m},   {"mu_k", &Params::mu_k},
-                            {"v_s", &Params::v_s},   {"delta", &Params::delta}};
+constexpr Entry kTable[] = {
+    {"beta", &Params::beta}, {"v", &Params::v},         {"mu_s", &Params::mu_s},
+    {"mu_m", &Params::mu_m}, {"v_m", &Params::v_m},     {"mu_k", &Params::mu_k},
+    {"v_s", &Params::v_s},   {"delta", &Params::delta}, {"k5", &Params::k5}};
 }  // namespace
 
 std::vector<std::string> AllParameterNames() {
@@ -96,6 +96,18 @@ void SetParameter(Params& p, const std::string& name, double value) {
   p.*ParameterMember(name) = value;
 }
 
+namespace {
+// The quintic term: k5 >= 0, and mu > 0 at the steady state's slip speed v.
+std::string QuinticError(const Params& p) {
+  if (p.k5 < 0) return "k5 = " + Num(p.k5, 12) + " must be >= 0";
+  const double v = p.v, mu = p.mu_s - p.k1() * v + p.k3() * v * v * v - p.k5 * std::pow(v, 5);
+  if (!(mu > 0))
+    return "k5 = " + Num(p.k5, 12) + " makes mu(v) = " + Num(mu, 12) +
+           " <= 0 at the belt speed v = " + Num(v, 12) + " (steady sliding is not physical)";
+  return "";
+}
+}  // namespace
+
 std::string ValidationError(const Params& p) {
   for (const auto& name : ParameterNames(p.law)) {
     const double x = GetParameter(p, name);
@@ -110,6 +122,7 @@ std::string ValidationError(const Params& p) {
       if (p.mu_m >= p.mu_s)
         return "mu_m = " + Num(p.mu_m, 12) + " must be < mu_s = " + Num(p.mu_s, 12);
       if (p.v_m <= 0) return "v_m = " + Num(p.v_m, 12) + " must be > 0";
+      if (const std::string e = QuinticError(p); !e.empty()) return e;
       break;
     case LawKind::kCoulomb:
     case LawKind::kStribeck:
