@@ -19,8 +19,11 @@ namespace tuning {
 // kGrowBelow * max_step.
 constexpr double kHalveAbove = 5, kGrowBelow = 2, kGrow = 1.5;
 // A pure-slip branch ends at a Hopf point below this section amplitude (closer,
-// shooting loses accuracy), if a Hopf point lies within kNearHopf * range.
-constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05;
+// shooting loses accuracy), if a Hopf point lies within kNearHopf * range or
+// within kHopfSlack times the distance to where a^2, extrapolated linearly,
+// vanishes. A step that would end it from above kHopfFrom * kAmplitudeEnd is
+// halved instead.
+constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05, kHopfSlack = 2, kHopfFrom = 2;
 // Pure-slip corrector: at most kMaxCorrector Newton steps; the step grows
 // (kGrow) after a correction in at most kFastCorrector steps.
 constexpr int kMaxCorrector = 8, kFastCorrector = 3;
@@ -108,7 +111,8 @@ class BranchContext {
 
   void AddHopf(double p) { hopf_.emplace_back(p, false); }
   const std::vector<std::pair<double, bool>>& hopf() const { return hopf_; }
-  bool NearHopf(double p) const;
+  // A located Hopf point within max(kNearHopf * range, slack) of p.
+  bool NearHopf(double p, double slack = 0) const;
   // The branch ends on the Hopf point nearest p_near, amplitude 0, period 2 pi.
   void AddHopfEnd(double p_near, bool stable);
   // A grazing point recorded within kSameGrazing * locate_tol of p.
@@ -116,7 +120,6 @@ class BranchContext {
   // p lies between stick-slip points of one branch already traced.
   bool CoveredByStickSlip(double p) const;
 
-  int branch() const { return branch_; }
   void NextBranch() { ++branch_; }
   void SetBranch(int b) { branch_ = b; }
   // Time from now on is charged to `phase`.

@@ -11,26 +11,23 @@ namespace stickslip {
 
 namespace {
 
-// The grazing row on the branch that reached it.
-BranchPoint GrazingRow(const BranchContext& ctx, const BranchEnd& end, const FlowResult& run,
-                       int branch) {
+// The grazing row on the branch that reached it: the grazing orbit, with a
+// stick phase of length zero.
+BranchPoint GrazingRow(const BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const Model m(ctx.At(end.p));
   const bool from_ss = end.came_from == PointKind::kStickSlip;
   const double mult_ps = run.jacobian.determinant();
-  BranchPoint gr;
-  gr.p = end.p;
-  gr.kind = end.came_from;
-  gr.branch = branch;
-  gr.period = run.t;
-  gr.x_min = run.x_min;
-  gr.x_max = run.x_max;
-  gr.xdot_min = run.xdot_min;
-  gr.xdot_max = m.v();
-  gr.t_stick = 0.0;
-  gr.multiplier = from_ss ? 0.0 : mult_ps;
-  gr.stable = from_ss || std::abs(mult_ps) < 1.0;
-  gr.amplitude = from_ss ? 0.5 * (run.x_max - run.x_min) : run.x_max - m.SteadySliding().x;
-  return gr;
+  Orbit o;
+  o.kind = from_ss ? OrbitKind::kStickSlip : OrbitKind::kPureSlip;
+  o.period = run.t;
+  o.x_min = run.x_min;
+  o.x_max = run.x_max;
+  o.xdot_min = run.xdot_min;
+  o.xdot_max = m.v();
+  o.t_stick = 0.0;
+  o.multiplier = from_ss ? 0.0 : mult_ps;
+  o.stable = from_ss || std::abs(mult_ps) < 1.0;
+  return ctx.FromOrbit(end.p, o, run.x_max - m.SteadySliding().x);
 }
 
 // From pure slip into stick slip: stick-slip orbits exist where the gap is positive.
@@ -113,7 +110,7 @@ BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
   }
   const bool from_ss = end.came_from == PointKind::kStickSlip;
   ctx.AddSpecial(GrazingPoint(end.p, run, from_ss));
-  ctx.Add(GrazingRow(ctx, end, run, ctx.branch()));
+  ctx.Add(GrazingRow(ctx, end, run));
   if (ctx.Stop()) return {};
   return from_ss ? IntoPureSlip(ctx, end, run) : IntoStickSlip(ctx, end, run);
 }

@@ -70,7 +70,8 @@ class PureSlipTracer {
   bool DGDp(double a, double p, double g, double* gp);
   Corrected Correct(double a_pred, double p_pred);
   bool Land(double end, double a_guess);
-  bool Shrink(double end);
+  // A smaller step; false (and the branch failed with `why`) below min_step.
+  bool Shrink(double p, const char* why);
   BranchEnd AtHopf();
   BranchEnd Rejected(const Corrected& c, double p_pred, bool* retry);
   void Accept(const Corrected& c);
@@ -180,17 +181,19 @@ bool PureSlipTracer::Land(double end, double a_guess) {
   return true;
 }
 
-// A smaller step towards the end; false (and the branch failed) below min_step.
-bool PureSlipTracer::Shrink(double end) {
+bool PureSlipTracer::Shrink(double p, const char* why) {
   ds_ *= 0.5;
   ++ctx_.counts().rejected_steps;
   if (ds_ >= ds_min_) return true;
-  ctx_.Fail("pure-slip orbit at " + ctx_.Where(end), "no convergence at the range end");
+  ctx_.Fail("pure-slip orbit at " + ctx_.Where(p), why);
   return false;
 }
 
+// Near a Hopf point a^2 is linear in p (the amplitude of a Hopf branch goes
+// like sqrt|p - p_HB|), so along the tangent a^2 vanishes a tp R / (2 |ta|) ahead.
 BranchEnd PureSlipTracer::AtHopf() {
-  if (!ctx_.NearHopf(p_)) {
+  const double to_zero = std::abs(a_ * tp_ * R_ / (2 * ta_));
+  if (!ctx_.NearHopf(p_, tuning::kHopfSlack * to_zero)) {
     ctx_.Fail("pure-slip branch at " + ctx_.Where(p_),
               "the amplitude shrinks to zero away from any Hopf point");
     return kStopped;
@@ -289,10 +292,14 @@ BranchEnd PureSlipTracer::Run(const BranchStart& s) {
       const double end = p_pred > hi ? hi : lo;
       if (std::abs(end - p_) <= 1e-13 * R_) return {BranchEnd::kRangeEnd};
       if (Land(end, a_ + (end - p_) / (tp_ * R_) * ta_)) return {BranchEnd::kRangeEnd};
-      if (!Shrink(end)) return kStopped;
+      if (!Shrink(end, "no convergence at the range end")) return kStopped;
       continue;
     }
-    if (!hopf_pending_ && ta_ < 0 && a_pred < tuning::kAmplitudeEnd) return AtHopf();
+    if (!hopf_pending_ && ta_ < 0 && a_pred < tuning::kAmplitudeEnd) {
+      if (a_ <= tuning::kHopfFrom * tuning::kAmplitudeEnd) return AtHopf();
+      if (!Shrink(p_, "no step approaches the Hopf point")) return kStopped;
+      continue;
+    }
     const Corrected c = Correct(a_pred, p_pred);
     if (!c.converged) {
       bool retry = false;
@@ -304,7 +311,7 @@ BranchEnd PureSlipTracer::Run(const BranchStart& s) {
     if (c.p > hi || c.p < lo) {
       const double end = c.p > hi ? hi : lo;
       if (Land(end, 0.5 * (a_ + c.a))) return {BranchEnd::kRangeEnd};
-      if (!Shrink(end)) return kStopped;
+      if (!Shrink(end, "no convergence at the range end")) return kStopped;
       continue;
     }
     Accept(c);

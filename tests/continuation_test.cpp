@@ -107,6 +107,40 @@ TEST(Continuation, BetaContinuationHopfAtClosedForm) {
   EXPECT_EQ(Labelled(r, SpecialKind::kGrazing).size(), 1u);
 }
 
+// Issue 15, item 19: a narrow range just below the Hopf point; the pure-slip
+// branch shrinks onto HB 1.2e-4 away, more than 5 % of the range.
+TEST(Continuation, NarrowRangeBelowTheHopfPointEndsOnIt) {
+  const Params p;
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  for (double to : {0.441, 0.442}) {
+    const ContinuationResult r = Trace(p, "v", 0.44, to);
+    ASSERT_EQ(r.status, ContinuationStatus::kOk) << "to " << to << ": " << r.message;
+    const auto hb = Labelled(r, SpecialKind::kHopf);
+    ASSERT_EQ(hb.size(), 1u);
+    EXPECT_NEAR(hb[0].p, v_max, 1e-9);
+    bool ends_on_hb = false;
+    for (const auto& pt : r.points)
+      if (pt.kind == PointKind::kPureSlip && pt.amplitude == 0) ends_on_hb = pt.p == hb[0].p;
+    EXPECT_TRUE(ends_on_hb) << "to " << to;
+  }
+}
+
+// Issue 15, item 18: the largest step allowed still ends the branch on HB,
+// with the same special points as the default step.
+TEST(Continuation, LargestStepKeepsTheSeedStructure) {
+  const Params p;
+  ContinuationOptions o;
+  o.max_step = 0.25;
+  const ContinuationResult r = Continue(p, o);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
 TEST(Continuation, StribeckSubcriticalHopfUnstableBranchAndFold) {
   Params p;
   p.law = LawKind::kStribeck;
