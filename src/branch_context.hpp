@@ -3,7 +3,9 @@
 // timings, the Hopf points found) and the tuning constants, named once.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,13 +26,10 @@ constexpr double kHalveAbove = 5, kGrowBelow = 2, kGrow = 1.5;
 // vanishes. A step that would end it from above kHopfFrom * kAmplitudeEnd is
 // halved instead.
 constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05, kHopfSlack = 2, kHopfFrom = 2;
-// Pure-slip corrector: at most kMaxCorrector Newton steps; the step grows
-// (kGrow) after a correction in at most kFastCorrector steps.
+// Pure-slip corrector: at most kMaxCorrector Newton steps (stall test:
+// NewtonConverged in palc.hpp); the step grows (kGrow) after a correction in
+// at most kFastCorrector steps.
 constexpr int kMaxCorrector = 8, kFastCorrector = 3;
-// Newton stalls at the integration noise floor: after kStallAfter steps, a
-// step below kStallFactor * tol that shrank by less than kStallRatio.
-constexpr int kStallAfter = 2;
-constexpr double kStallFactor = 1e3, kStallRatio = 0.5;
 // A pure-slip step that sticks looks for a grazing point when the last orbit
 // came within kNearTouch * max(kNearTouchMin, v) of the belt speed, or the
 // step is within kSmallStep * min_step; the search grows by kSearchGrow over
@@ -84,6 +83,9 @@ class BranchContext {
   const ParameterAxis& axis() const { return axis_; }
   const Params& base() const { return base_; }
   double range() const { return range_; }
+  // The scale of p-steps near p: the range, but no more than max(1, |p|), so
+  // that a range far wider than the branch (--to 1e6) does not set the steps.
+  double LocalScale(double p) const { return std::min(range_, std::max(1.0, std::abs(p))); }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
   double dir() const { return dir_; }

@@ -33,7 +33,7 @@ BranchPoint GrazingRow(const BranchContext& ctx, const BranchEnd& end, const Flo
 // From pure slip into stick slip: stick-slip orbits exist where the gap is positive.
 BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
-  const double d = std::max(tuning::kStickProbe * ctx.range(),
+  const double d = std::max(tuning::kStickProbe * ctx.LocalScale(p_gr),
                             tuning::kStickProbeTol * ctx.options().locate_tol);
   const double side = p_gr + d <= ctx.hi() ? 1.0 : -1.0;  // probe inside the range
   double gap_probe = 0;
@@ -63,8 +63,8 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
 BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
   const double a_gr = run.x_max - Model(ctx.At(p_gr)).SteadySliding().x;
-  const double d =
-      std::max(tuning::kSlipProbe * ctx.range(), tuning::kSlipProbeTol * ctx.options().locate_tol);
+  const double d = std::max(tuning::kSlipProbe * ctx.LocalScale(p_gr),
+                            tuning::kSlipProbeTol * ctx.options().locate_tol);
   for (double side : {end.dir, -end.dir}) {
     const double q = p_gr + side * d;
     if (q < ctx.lo() || q > ctx.hi()) continue;
@@ -92,6 +92,27 @@ BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowRes
 }
 
 }  // namespace
+
+bool GrazingAhead(BranchContext& ctx, double p, double dp_sign, double step, double* p_gr) {
+  double gap0 = 0;
+  if (!ctx.GrazingGapAt(p, &gap0)) return false;
+  double q = p;
+  for (int k = 0; k < tuning::kSearchSteps; ++k) {
+    double q2 = p + dp_sign * step * std::pow(tuning::kSearchGrow, k);
+    q2 = std::min(ctx.hi(), std::max(ctx.lo(), q2));
+    double gap2 = 0;
+    const bool ok = ctx.GrazingGapAt(q2, &gap2);
+    if (ok && gap0 * gap2 < 0) {
+      const RootResult r = LocateGrazing(ctx.finder(), ctx.base(), ctx.axis(), p, q2, gap0, gap2,
+                                         ctx.options().locate_tol);
+      *p_gr = r.x;
+      return r.ok;
+    }
+    if (q2 == q) break;  // at the range end
+    q = q2;
+  }
+  return false;
+}
 
 BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
   // A grazing point already passed closes a loop of branches (a pure-slip
