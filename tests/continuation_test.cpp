@@ -141,6 +141,35 @@ TEST(Continuation, LargestStepKeepsTheSeedStructure) {
   EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
 }
 
+// Issue 15, item 19: a range far wider than the branch (--to 1e6) does not
+// set the probes and steps beside GR: the same special points as over 0.05..0.5.
+TEST(Continuation, VeryWideRangeKeepsTheSeedStructure) {
+  const Params p;
+  const ContinuationResult r = Trace(p, "v", 0.05, 1e6);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// Issue 15, item 18: a tolerance looser than the tested range is flagged.
+TEST(Continuation, LooseToleranceIsWarned) {
+  const Params p;
+  ContinuationOptions o;
+  o.orbit.flow.rtol = 1e-2;
+  o.orbit.flow.atol = 1e-4;
+  o.max_step = 0.1;
+  const ContinuationResult loose = Continue(p, o);
+  ASSERT_EQ(loose.warnings.size(), 1u);
+  EXPECT_NE(loose.warnings[0].find("rtol = 0.01"), std::string::npos) << loose.warnings[0];
+  o.orbit.flow.rtol = 1e-4;
+  o.orbit.flow.atol = 1e-6;
+  EXPECT_TRUE(Continue(p, o).warnings.empty());
+}
+
 TEST(Continuation, StribeckSubcriticalHopfUnstableBranchAndFold) {
   Params p;
   p.law = LawKind::kStribeck;
