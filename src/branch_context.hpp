@@ -42,6 +42,8 @@ constexpr double kSameGrazing = 1e3;
 // stick-slip side, pure-slip side.
 constexpr double kStickProbe = 1e-6, kStickProbeTol = 10;
 constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100;
+// Smallest scale of p-steps, relative to max(1, |p|) (BranchContext::LocalScale).
+constexpr double kMinScale = 1e-3;
 // Landing on a range end: the step guess never below this amplitude.
 constexpr double kLandMinAmplitude = 1e-3;
 // Pure-slip orbits at `from`: a scan of a in (kScanLo, kScanHi (mu_s + v)) at kScanPoints.
@@ -83,9 +85,13 @@ class BranchContext {
   const ParameterAxis& axis() const { return axis_; }
   const Params& base() const { return base_; }
   double range() const { return range_; }
-  // The scale of p-steps near p: the range, but no more than max(1, |p|), so
-  // that a range far wider than the branch (--to 1e6) does not set the steps.
-  double LocalScale(double p) const { return std::min(range_, std::max(1.0, std::abs(p))); }
+  // The scale of p-steps near p: the range, but within [kMinScale, 1] times
+  // max(1, |p|), so that a range far wider than the branch (--to 1e6) does not
+  // set the steps, nor a tiny one (1e-10) the corrector's tolerance in p.
+  double LocalScale(double p) const {
+    const double s = std::max(1.0, std::abs(p));
+    return std::max(std::min(range_, s), tuning::kMinScale * s);
+  }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
   double dir() const { return dir_; }

@@ -270,6 +270,12 @@ BranchEnd PureSlipTracer::Run(const BranchStart& s) {
     if (c.u[1] > hi || c.u[1] < lo) {
       const double end = c.u[1] > hi ? hi : lo;
       if (Land(end, 0.5 * (a_ + c.u[0]))) return {BranchEnd::kRangeEnd};
+      if (hopf_pending_ && c.u[0] <= tuning::kHopfFrom * tuning::kAmplitudeEnd) {
+        // The branch leaves the range before its amplitude can be resolved
+        // (below kAmplitudeEnd): in range it is its Hopf point only.
+        ctx_.AddHopfEnd(p_hopf_start_, PureSlipFromMap(curve_.map).stable);
+        return {BranchEnd::kHopf, p_hopf_start_};
+      }
       if (!Shrink(end, "no convergence at the range end")) return kStopped;
       continue;
     }

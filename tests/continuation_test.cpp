@@ -125,6 +125,22 @@ TEST(Continuation, NarrowRangeBelowTheHopfPointEndsOnIt) {
   }
 }
 
+// Issue 15, item 19: a range of 1e-10 across HB: the pure-slip branch leaves
+// it at amplitudes too small to resolve, so HB alone stands for it.
+TEST(Continuation, TinyRangeAcrossTheHopfPoint) {
+  const Params p;
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  const ContinuationResult r = Trace(p, "v", 0.4409585518, 0.4409585519);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  ASSERT_EQ(hb.size(), 1u);
+  EXPECT_NEAR(hb[0].p, v_max, 1e-11);
+  for (const auto& pt : r.points) {
+    EXPECT_GE(pt.p, 0.4409585518);
+    EXPECT_LE(pt.p, 0.4409585519);
+  }
+}
+
 // Issue 15, item 18: the largest step allowed still ends the branch on HB,
 // with the same special points as the default step.
 TEST(Continuation, LargestStepKeepsTheSeedStructure) {
