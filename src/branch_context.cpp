@@ -108,9 +108,10 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
   return finder_.Desingularised(a, g, ga, map);
 }
 
-bool BranchContext::NearHopf(double p) const {
+bool BranchContext::NearHopf(double p, double slack) const {
+  const double d = std::max(tuning::kNearHopf * range_, slack);
   for (const auto& h : hopf_)
-    if (std::abs(h.first - p) <= tuning::kNearHopf * range_) return true;
+    if (std::abs(h.first - p) <= d) return true;
   return false;
 }
 
@@ -122,18 +123,15 @@ void BranchContext::AddHopfEnd(double p_near, bool stable) {
   if (best < 0) return;
   hopf_[best].second = true;
   const double p = hopf_[best].first;
-  BranchPoint pt;
-  pt.p = p;
-  pt.kind = PointKind::kPureSlip;
-  pt.branch = branch_;
-  pt.period = 2 * M_PI;  // lambda = +-i
-  pt.x_min = pt.x_max = Model(At(p)).SteadySliding().x;
-  pt.xdot_min = pt.xdot_max = 0.0;
-  pt.t_stick = 0.0;
-  pt.multiplier = 1.0;
-  pt.stable = stable;
-  pt.amplitude = 0.0;
-  Add(pt);
+  Orbit o;  // amplitude zero; lambda = +-i, so period 2 pi and multiplier 1
+  o.kind = OrbitKind::kPureSlip;
+  o.period = 2 * M_PI;
+  o.x_min = o.x_max = Model(At(p)).SteadySliding().x;
+  o.xdot_min = o.xdot_max = 0.0;
+  o.t_stick = 0.0;
+  o.multiplier = 1.0;
+  o.stable = stable;
+  Add(FromOrbit(p, o, 0.0));
 }
 
 bool BranchContext::GrazingVisited(double p) const {

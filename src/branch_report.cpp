@@ -95,6 +95,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                  "): " + r.message);
   else
     t.AddComment("status: complete");
+  for (const std::string& w : r.warnings) t.AddComment("warning: " + w);
   for (const auto& kv : SummaryFields(r)) t.AddComment(kv.first + ": " + kv.second);
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];

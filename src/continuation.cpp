@@ -175,7 +175,13 @@ ContinuationResult Continue(const Params& base, const ContinuationOptions& optio
   const std::string err = options.ValidationError(base);
   if (!err.empty()) throw InvalidArgument(err);
   BranchContext ctx(base, options);
-  return Run(ctx);
+  ContinuationResult r = Run(ctx);
+  const double rtol = options.orbit.flow.rtol;
+  if (rtol > kLoosestTrustedRtol)
+    r.warnings.push_back("rtol = " + Num(rtol) + " is looser than " + Num(kLoosestTrustedRtol) +
+                         ", the loosest tolerance the branch's structure is promised at: "
+                         "special points may be far off");
+  return r;
 }
 
 }  // namespace stickslip

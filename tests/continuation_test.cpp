@@ -107,6 +107,85 @@ TEST(Continuation, BetaContinuationHopfAtClosedForm) {
   EXPECT_EQ(Labelled(r, SpecialKind::kGrazing).size(), 1u);
 }
 
+// Issue 15, item 19: a narrow range just below the Hopf point; the pure-slip
+// branch shrinks onto HB 1.2e-4 away, more than 5 % of the range.
+TEST(Continuation, NarrowRangeBelowTheHopfPointEndsOnIt) {
+  const Params p;
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  for (double to : {0.441, 0.442}) {
+    const ContinuationResult r = Trace(p, "v", 0.44, to);
+    ASSERT_EQ(r.status, ContinuationStatus::kOk) << "to " << to << ": " << r.message;
+    const auto hb = Labelled(r, SpecialKind::kHopf);
+    ASSERT_EQ(hb.size(), 1u);
+    EXPECT_NEAR(hb[0].p, v_max, 1e-9);
+    bool ends_on_hb = false;
+    for (const auto& pt : r.points)
+      if (pt.kind == PointKind::kPureSlip && pt.amplitude == 0) ends_on_hb = pt.p == hb[0].p;
+    EXPECT_TRUE(ends_on_hb) << "to " << to;
+  }
+}
+
+// Issue 15, item 19: a range of 1e-10 across HB: the pure-slip branch leaves
+// it at amplitudes too small to resolve, so HB alone stands for it.
+TEST(Continuation, TinyRangeAcrossTheHopfPoint) {
+  const Params p;
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  const ContinuationResult r = Trace(p, "v", 0.4409585518, 0.4409585519);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  ASSERT_EQ(hb.size(), 1u);
+  EXPECT_NEAR(hb[0].p, v_max, 1e-11);
+  for (const auto& pt : r.points) {
+    EXPECT_GE(pt.p, 0.4409585518);
+    EXPECT_LE(pt.p, 0.4409585519);
+  }
+}
+
+// Issue 15, item 18: the largest step allowed still ends the branch on HB,
+// with the same special points as the default step.
+TEST(Continuation, LargestStepKeepsTheSeedStructure) {
+  const Params p;
+  ContinuationOptions o;
+  o.max_step = 0.25;
+  const ContinuationResult r = Continue(p, o);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// Issue 15, item 19: a range far wider than the branch (--to 1e6) does not
+// set the probes and steps beside GR: the same special points as over 0.05..0.5.
+TEST(Continuation, VeryWideRangeKeepsTheSeedStructure) {
+  const Params p;
+  const ContinuationResult r = Trace(p, "v", 0.05, 1e6);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// Issue 15, item 18: a tolerance looser than the tested range is flagged.
+TEST(Continuation, LooseToleranceIsWarned) {
+  const Params p;
+  ContinuationOptions o;
+  o.orbit.flow.rtol = 1e-2;
+  o.orbit.flow.atol = 1e-4;
+  o.max_step = 0.1;
+  const ContinuationResult loose = Continue(p, o);
+  ASSERT_EQ(loose.warnings.size(), 1u);
+  EXPECT_NE(loose.warnings[0].find("rtol = 0.01"), std::string::npos) << loose.warnings[0];
+  o.orbit.flow.rtol = 1e-4;
+  o.orbit.flow.atol = 1e-6;
+  EXPECT_TRUE(Continue(p, o).warnings.empty());
+}
+
 TEST(Continuation, StribeckSubcriticalHopfUnstableBranchAndFold) {
   Params p;
   p.law = LawKind::kStribeck;

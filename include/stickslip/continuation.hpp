@@ -98,12 +98,19 @@ struct ContinuationResult {
   ContinuationStatus status = ContinuationStatus::kOk;
   std::string message;
   std::string param;  // the parameter axis the points are on
+  // Conditions that make the result less trustworthy than its status says
+  // (a tolerance looser than kLoosestTrustedRtol), one line each.
+  std::vector<std::string> warnings;
   std::vector<BranchPoint> points;
   std::vector<SpecialPoint> special;
   ContinuationCounts counts;
   ContinuationTimes seconds;
   bool partial() const { return status != ContinuationStatus::kOk; }
 };
+
+// Looser than this rtol a result carries a warning: the README promises the
+// branch's structure (which special points, in which order) from here down.
+constexpr double kLoosestTrustedRtol = 1e-4;
 
 // Throws InvalidArgument if the options or the model at either end are invalid.
 ContinuationResult Continue(const Params& base, const ContinuationOptions& options);

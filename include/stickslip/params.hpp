@@ -45,7 +45,7 @@ std::vector<std::string> ParameterNames(LawKind law);
 // Every parameter name any law knows.
 std::vector<std::string> AllParameterNames();
 bool IsParameterName(const std::string& name);
-// "beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta", for messages.
+// "beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5", for messages.
 std::string ParameterNameList();
 // The member of Params a name stands for; throws InvalidArgument on an unknown name.
 double Params::*ParameterMember(const std::string& name);

@@ -265,6 +265,7 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
             << Fixed(t.stick_slip * 1e3, 1) << ", pure-slip " << Fixed(t.pure_slip * 1e3, 1)
             << ", switching " << Fixed(t.switching * 1e3, 1) << ", discovery "
             << Fixed(t.discovery * 1e3, 1) << "\n";
+  for (const std::string& w : r.warnings) std::cerr << kProg << ": warning: " << w << "\n";
   std::cout << "special points:\n";
   if (r.special.empty()) std::cout << "  none\n";
   for (const auto& s : r.special) {
