@@ -30,7 +30,7 @@ struct BasinOptions {
   // and is below settle times the innermost periodic orbit's amplitude. On a
   // stable pure-slip orbit: within settle of its amplitude (relative), closer
   // than at the last section crossing.
-  double settle = 0.05;
+  double settle = 0.5;
   std::function<bool()> cancelled;                    // polled by the flow
   std::function<void(int done, int total)> progress;  // after every start
   // Empty if valid, else one line naming the offending value.

@@ -57,7 +57,7 @@ po::options_description AppDescription(const po::options_description& app) {
 }
 
 const std::vector<std::string>& StudySections() {
-  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark"};
+  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "basin"};
   return sections;
 }
 
