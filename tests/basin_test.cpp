@@ -10,12 +10,16 @@
 #include <vector>
 
 #include "reference/reference_orbit.hpp"
+#include "reference_curve.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
 namespace {
 
 using reference::Real;
+using testing_util::Distance;
+using testing_util::Inside;
+using testing_util::ReferenceCurve;
 
 Params Stribeck(double beta, double v) {
   Params p;
@@ -23,45 +27,6 @@ Params Stribeck(double beta, double v) {
   p.beta = beta;
   p.v = v;
   return p;
-}
-
-// The reference pure-slip orbit through (x_guess, 0) as a polygon: every
-// RKF78 step split into `sub` pieces by its own dense steps.
-std::vector<std::array<Real, 2>> ReferenceCurve(const Params& p, double x_guess, int sub = 40) {
-  const reference::PureSlipOrbit o = reference::PureSlip(p, x_guess);
-  EXPECT_TRUE(o.found);
-  const reference::Model m(p);
-  reference::Stepper<2> st(reference::SlipField<2>{&m, -1}, 1e-16L);
-  reference::State<2> s{o.x_section, 0};
-  Real t = 0;
-  std::vector<std::array<Real, 2>> pts{{s[0], s[1]}};
-  while (t < o.period) {
-    const reference::State<2> s0 = s;
-    const Real t0 = t;
-    Real h = st.Step(s, t);
-    if (h <= 0) break;
-    if (t > o.period) h = o.period - t0;
-    for (int k = 1; k <= sub; ++k) {
-      const reference::State<2> q = st.From(s0, t0, h * k / sub);
-      pts.push_back({q[0], q[1]});
-    }
-  }
-  return pts;
-}
-
-bool Inside(const std::vector<std::array<Real, 2>>& poly, double x, double y) {
-  bool in = false;
-  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Real xi = poly[i][0], yi = poly[i][1], xj = poly[j][0], yj = poly[j][1];
-    if ((yi > y) != (yj > y) && x < (xj - xi) * (y - yi) / (yj - yi) + xi) in = !in;
-  }
-  return in;
-}
-
-double Distance(const std::vector<std::array<Real, 2>>& poly, double x, double y) {
-  Real d = 1e300;
-  for (const auto& q : poly) d = std::min(d, std::hypot(q[0] - x, q[1] - y));
-  return static_cast<double>(d);
 }
 
 BasinOptions Small(int n) {
@@ -77,6 +42,7 @@ TEST(Basin, EveryClassifiedStartLiesOnTheSideOfTheUnstableOrbit) {
   ASSERT_EQ(r.orbits.pure_slip.size(), 1u);
   ASSERT_FALSE(r.orbits.pure_slip[0].stable);
   const auto curve = ReferenceCurve(p, r.orbits.pure_slip[0].start[0]);
+  ASSERT_FALSE(curve.empty());
   int inside = 0, outside = 0;
   for (const BasinStart& s : r.starts) {
     const bool in = Inside(curve, s.x, s.xdot);
@@ -112,15 +78,9 @@ TEST(Basin, SmallestDisturbanceMatchesTheReferenceOrbit) {
     ASSERT_EQ(po.pure_slip.size(), 1u);
     const Disturbance d = SmallestDisturbance(Model(p), po.pure_slip[0], o.orbit.flow);
     const auto curve = ReferenceCurve(p, po.pure_slip[0].start[0], 400);
+    ASSERT_FALSE(curve.empty());
     const Real xbar = reference::Law(p).Mu(p.v);
-    Real dx = 1e300, dy = 1e300, e = 1e300;
-    for (size_t k = 0; k + 1 < curve.size(); ++k) {
-      const auto &a = curve[k], &b = curve[k + 1];
-      const Real ex = a[0] - xbar;
-      e = std::min(e, (ex * ex + a[1] * a[1]) / 2);
-      if ((a[1] > 0) != (b[1] > 0)) dx = std::min(dx, std::abs(ex));
-      if ((a[0] > xbar) != (b[0] > xbar)) dy = std::min(dy, std::abs(a[1]));
-    }
+    const auto [dx, dy, e] = testing_util::BruteDisturbance(curve, xbar);
     // The polygon's vertices are about 4e-5 apart: brute force is good to that.
     EXPECT_NEAR(d.x, static_cast<double>(dx), 1e-4);
     EXPECT_NEAR(d.xdot, static_cast<double>(dy), 1e-4);

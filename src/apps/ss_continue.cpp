@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/study.hpp"
+#include "stickslip/branch_disturbance.hpp"
 #include "stickslip/branch_report.hpp"
 #include "stickslip/comparison.hpp"
 #include "stickslip/continuation.hpp"
@@ -28,7 +29,9 @@ constexpr const char* kProg = "ss_continue";
 constexpr const char* kNotes =
     "Outputs in --out (each written whole or not at all): branch.tsv (one row per point;\n"
     "kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet multiplier,\n"
-    "for the equilibrium the largest real part of its eigenvalues), special_points.tsv\n"
+    "for the equilibrium the largest real part of its eigenvalues; dist_x, dist_xdot,\n"
+    "dist_energy on unstable pure-slip rows: the smallest disturbance of steady sliding\n"
+    "that reaches the orbit, along x' = 0, along x = xbar, in energy), special_points.tsv\n"
     "(GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its figures\n"
     "bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png.\n"
     "Study files: model and solver keys at top level, this app's keys in [continue].\n"
@@ -168,8 +171,11 @@ int Main(int argc, char** argv) {
   const std::string model = cli::DescribeModel(base);
   ss::EstimateComparison cmp;
   if (!args.Flag("no_estimates")) cmp = ss::CompareEstimates(base, opts.param, r);
-  ss::WriteFileAtomically(dir + "/branch.tsv",
-                          ss::BranchTable(r, opts.param, model, cmp.columns).str());
+  // Estimate columns first (the figure script counts on their numbers).
+  std::vector<ss::ExtraColumn> extra = cmp.columns;
+  for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow))
+    extra.push_back(std::move(c));
+  ss::WriteFileAtomically(dir + "/branch.tsv", ss::BranchTable(r, opts.param, model, extra).str());
   ss::WriteFileAtomically(dir + "/special_points.tsv", ss::SpecialPointTable(r, opts.param).str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   ss::WriteFileAtomically(dir + "/bifurcation.gp",
