@@ -73,6 +73,14 @@ class Scan {
     os << "orbit scan at section amplitude a = " << a << ": " << why;
     out_.message = os.str();
   }
+  // Both ends of a sign change are integration noise: G vanishes identically
+  // (a center, as for the coulomb law with beta = 0: a continuum of orbits,
+  // none isolated). G's noise is about rtol (|xbar| + a) / a.
+  bool Noise(double a0, double g0, double a1, double g1) const {
+    const double rtol = o_.orbit.flow.rtol;
+    auto noise = [&](double a) { return 1e3 * rtol * (1 + std::abs(xbar_) + a) / a; };
+    return std::abs(g0) < noise(a0) && std::abs(g1) < noise(a1);
+  }
   void Bracket(double a0, double g0, double a1, double g1);
   void LocateSticking(double a_ok, double g_ok, double a_sticks, double* a_last, double* g_last);
 
@@ -145,14 +153,15 @@ void Scan::Run() {
       if (!have0) break;
       double a_last = a0, g_last = g0;
       LocateSticking(a0, g0, a1, &a_last, &g_last);
-      if (out_.ok() && g0 * g_last <= 0 && a_last > a0) Bracket(a0, g0, a_last, g_last);
+      if (out_.ok() && g0 * g_last <= 0 && a_last > a0 && !Noise(a0, g0, a_last, g_last))
+        Bracket(a0, g0, a_last, g_last);
       break;
     }
     if (s != OrbitStatus::kOk) {
       have0 = false;  // no return: no value to bracket with
       continue;
     }
-    if (have0 && g0 * g1 <= 0) Bracket(a0, g0, a1, g1);
+    if (have0 && g0 * g1 <= 0 && !Noise(a0, g0, a1, g1)) Bracket(a0, g0, a1, g1);
     if (!out_.ok()) return;
     a0 = a1, g0 = g1, have0 = true;
   }

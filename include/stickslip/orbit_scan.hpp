@@ -39,8 +39,11 @@ struct PeriodicOrbits {
   std::string message;
   Equilibrium steady;  // steady sliding (xbar, 0) and its stability
   bool has_stick_slip = false;
-  Orbit stick_slip;              // superstable (multiplier 0) when it exists
-  std::vector<Orbit> pure_slip;  // by increasing section amplitude; stable or not
+  Orbit stick_slip;  // superstable (multiplier 0) when it exists
+  // By increasing section amplitude; stable or not. Isolated orbits only:
+  // where G vanishes identically within the integration noise (a center, as
+  // for the coulomb law with beta = 0) none is listed.
+  std::vector<Orbit> pure_slip;
   // Smallest sampled section amplitude whose trajectory sticks, located to
   // 1e-10 relative (inf: none up to a_max); pure-slip orbits lie below it.
   double a_stick = std::numeric_limits<double>::infinity();
