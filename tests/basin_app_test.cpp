@@ -1,7 +1,7 @@
 // End-to-end tests of the built ss_basin: the stribeck scene's basins.tsv
 // (metadata, one row per start, both basins present), bad input (exit 2, one
 // line naming the option, nothing written), --max_time and SIGINT (exit 1, a
-// whole basins.tsv marked partial), --help.
+// whole basins.tsv marked partial), the progress line, --help.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <sys/wait.h>
@@ -96,6 +96,7 @@ TEST_F(BasinApp, MaxTimeAndSigintLeaveAWholePartialFile) {
   EXPECT_EQ(tsv.back(), '\n');
   EXPECT_EQ(Run(big, "INT", 3), 1);
   EXPECT_TRUE(Contains(err_, "interrupted by signal 2"));
+  EXPECT_TRUE(Contains(err_, " of 90000 starts after "));  // the progress line
   tsv = ReadFile(Out() + "/basins.tsv");
   EXPECT_TRUE(Contains(tsv, "# status: partial (cancelled)"));
 }
