@@ -11,25 +11,23 @@ namespace stickslip {
 
 namespace {
 
-// The grazing row on the branch that reached it.
-BranchPoint GrazingRow(const BranchContext& ctx, const BranchEnd& end, const FlowResult& run,
-                       int branch) {
-  const Model m(ctx.At(end.p));
-  const bool from_ss = end.came_from == PointKind::kStickSlip;
-  const double mult_ps = run.jacobian.determinant();
+// The grazing row: the limit of the stick-slip orbits, whose stick phase
+// shrinks to zero at the exit point (or, inside the stick band, to the stick
+// from the touch to the exit point). One row, the same from either side.
+BranchPoint GrazingRow(const Model& m, const SpecialPoint& sp, const FlowResult& run, int branch) {
   BranchPoint gr;
-  gr.p = end.p;
-  gr.kind = end.came_from;
+  gr.p = sp.p;
+  gr.kind = PointKind::kStickSlip;
   gr.branch = branch;
-  gr.period = run.t;
-  gr.x_min = run.x_min;
-  gr.x_max = run.x_max;
+  gr.period = sp.period;
+  gr.x_min = sp.x_min;
+  gr.x_max = sp.x_max;
   gr.xdot_min = run.xdot_min;
   gr.xdot_max = m.v();
-  gr.t_stick = 0.0;
-  gr.multiplier = from_ss ? 0.0 : mult_ps;
-  gr.stable = from_ss || std::abs(mult_ps) < 1.0;
-  gr.amplitude = from_ss ? 0.5 * (run.x_max - run.x_min) : run.x_max - m.SteadySliding().x;
+  gr.t_stick = sp.period - run.t;
+  gr.multiplier = 0.0;
+  gr.stable = true;
+  gr.amplitude = 0.5 * (gr.x_max - gr.x_min);
   return gr;
 }
 
@@ -47,7 +45,7 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
   const double dir = gap_probe > 0 ? side : -side;
   if (dir != end.dir)
     ctx.AddSpecial(
-        FoldPoint(p_gr, run, "non-smooth fold at GR: the pure-slip branch turns into stick-slip"));
+        FoldPoint(p_gr, run, "non-smooth fold at GR: the stick-slip and pure-slip branches meet"));
   // Step off GR by one small step so the first orbit is a clear stick-slip orbit.
   BranchStart next;
   OrbitResult r;
@@ -76,7 +74,7 @@ BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowRes
     if (ctx.PureSlipAtFixedP(q, a_gr, &o, &a)) {
       if (side != end.dir)
         ctx.AddSpecial(FoldPoint(
-            p_gr, run, "non-smooth fold at GR: the stick-slip branch turns into pure slip"));
+            p_gr, run, "non-smooth fold at GR: the stick-slip and pure-slip branches meet"));
       BranchStart next;
       next.phase = BranchStart::kPureSlip;
       next.p = q;
@@ -112,9 +110,13 @@ BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
     return {};
   }
   const bool from_ss = end.came_from == PointKind::kStickSlip;
-  ctx.AddSpecial(GrazingPoint(end.p, run, from_ss));
-  ctx.Add(GrazingRow(ctx, end, run, ctx.branch()));
-  if (ctx.Stop()) return {};
+  const Model m(ctx.At(end.p));
+  const SpecialPoint gr = GrazingPoint(m, end.p, run);
+  ctx.AddSpecial(gr);
+  ctx.Add(GrazingRow(m, gr, run, ctx.branch()));
+  // Touching the belt inside the stick band, the orbit disappears: nothing
+  // to switch to (coulomb law with damping: slip is a damped linear oscillator).
+  if (ctx.Stop() || GrazesInsideStickBand(m, run)) return {};
   return from_ss ? IntoPureSlip(ctx, end, run) : IntoStickSlip(ctx, end, run);
 }
 

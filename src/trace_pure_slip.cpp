@@ -62,6 +62,7 @@ class PureSlipTracer {
  private:
   struct Corrected {
     bool converged = false, stuck = false;
+    bool stalled = false;  // accepted at the integration noise floor
     int iterations = 0;
     double a = 0, p = 0;  // where G was last evaluated
     std::string why;
@@ -158,6 +159,7 @@ PureSlipTracer::Corrected PureSlipTracer::Correct(double a_pred, double p_pred) 
     if (step < tol || (c.iterations > tuning::kStallAfter && step < tuning::kStallFactor * tol &&
                        step > tuning::kStallRatio * last_step)) {
       c.converged = true;
+      c.stalled = step >= tol;
       return c;
     }
     last_step = step;
@@ -248,7 +250,8 @@ BranchEnd PureSlipTracer::Rejected(const Corrected& c, double p_pred, bool* retr
 void PureSlipTracer::Accept(const Corrected& c) {
   double nta = 0, ntp = 0;
   Tangent(ga_, gp_ * R_, ta_, tp_, &nta, &ntp);
-  const Orbit o = PureSlipFromMap(map_);
+  Orbit o = PureSlipFromMap(map_);
+  o.newton_stalled = c.stalled;
   if (hopf_pending_) {
     ctx_.AddHopfEnd(p_hopf_start_, o.stable);
     hopf_pending_ = false;

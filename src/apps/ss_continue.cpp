@@ -31,7 +31,8 @@ constexpr const char* kNotes =
     "kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet multiplier,\n"
     "for the equilibrium the largest real part of its eigenvalues; dist_x, dist_xdot,\n"
     "dist_energy on unstable pure-slip rows: the smallest disturbance of steady sliding\n"
-    "that reaches the orbit, along x' = 0, along x = xbar, in energy), special_points.tsv\n"
+    "that reaches the orbit, along x' = 0, along x = xbar, in energy; newton_stalled 1\n"
+    "where Newton was accepted at the integration noise floor, see README), special_points.tsv\n"
     "(GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its figures\n"
     "bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png.\n"
     "Study files: model and solver keys at top level, this app's keys in [continue].\n"
@@ -174,6 +175,9 @@ int Main(int argc, char** argv) {
   std::vector<ss::ExtraColumn> extra = cmp.columns;
   for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow))
     extra.push_back(std::move(c));
+  ss::ExtraColumn stalled{"newton_stalled", {}};
+  for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
+  extra.push_back(std::move(stalled));
   ss::WriteFileAtomically(dir + "/branch.tsv", ss::BranchTable(r, opts.param, model, extra).str());
   ss::WriteFileAtomically(dir + "/special_points.tsv", ss::SpecialPointTable(r, opts.param).str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
