@@ -21,6 +21,9 @@ class Friction {
   double DMu(double s) const;
   double D2Mu(double s) const;
   double D3Mu(double s) const;
+  // Whether mu <= 0 somewhere on [0, s_max]: only the cubic law with k5 > 0 can
+  // (mu is then checked at s_max and at the roots of mu' = 0, a quadratic in s^2).
+  bool NonPositiveUpTo(double s_max) const;
   // Cubic law's quintic coefficient k5 (0 for the seed's law and the others).
   double k5() const { return c_; }
 

@@ -54,6 +54,11 @@ double Params::*ParameterMember(const std::string& name);
 double GetParameter(const Params& p, const std::string& name);
 void SetParameter(Params& p, const std::string& name, double value);
 
+// Every nonzero parameter of a law must lie in [kMinScale, kMaxScale] (k5 in
+// [0, kMaxScale]): beyond, the cubic law's k3 or the state over- or underflow
+// (nan or inf results).
+constexpr double kMinScale = 1e-6, kMaxScale = 1e6;
+
 // Returns an empty string if p is a valid model, otherwise one line naming
 // the offending value, e.g. "mu_m = 0.5 must be < mu_s = 0.4".
 std::string ValidationError(const Params& p);

@@ -7,11 +7,13 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "cli/run_control.hpp"
 #include "stickslip/report.hpp"
 
 namespace stickslip::cli {
@@ -57,7 +59,8 @@ po::options_description AppDescription(const po::options_description& app) {
 }
 
 const std::vector<std::string>& StudySections() {
-  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "basin"};
+  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "chart",
+                                                    "basin"};
   return sections;
 }
 
@@ -221,6 +224,12 @@ void ReadStudyFile(const std::string& path, const po::options_description& desc,
     throw UsageError("cannot read study file '" + path + "': " + std::strerror(errno));
   if (S_ISDIR(st.st_mode))
     throw UsageError("cannot read study file '" + path + "': it is a directory");
+  if (!S_ISREG(st.st_mode))
+    throw UsageError("cannot read study file '" + path +
+                     "': not a regular file (FIFO, device or socket)");
+  if (st.st_size > kMaxStudyBytes)
+    throw UsageError("cannot read study file '" + path + "': " + std::to_string(st.st_size) +
+                     " bytes, more than " + std::to_string(kMaxStudyBytes));
   std::ifstream in(path);
   if (!in) throw UsageError("cannot read study file '" + path + "': " + std::strerror(errno));
   args.study_ = path;
@@ -236,6 +245,10 @@ void ReadStudyFile(const std::string& path, const po::options_description& desc,
     auto malformed = [&](const std::string& why) {
       return UsageError("study file " + where + ": " + why);
     };
+    if (raw.find('\0') != std::string::npos)
+      throw malformed("a NUL byte (column " + std::to_string(raw.find('\0') + 1) +
+                      "): not a text file");
+    if (line > kMaxStudyBytes) throw malformed("the file grew while it was read");
     const std::string text = Trim(raw.substr(0, raw.find('#')));
     if (text.empty()) continue;
     if (text.front() == '[') {
@@ -297,6 +310,29 @@ std::string FirstGiven(const Arguments& args, const std::vector<std::string>& na
   return "";
 }
 
+// A value given for a parameter the law does not use is validated as its
+// own law would (so --v_s -1 is refused with the cubic law too).
+void CheckOtherLaws(const Arguments& args, const Params& p) {
+  const std::map<std::string, std::string> physical = {
+      {"v_m", "speed_m"}, {"v_s", "speed_s"}, {"delta", "delta_phys"}};
+  for (LawKind law : {LawKind::kCubic, LawKind::kCoulomb, LawKind::kStribeck, LawKind::kLeine}) {
+    if (law == p.law) continue;
+    const auto names = ParameterNames(law);
+    bool given = false;
+    for (std::size_t i = 3; i < names.size(); ++i) {  // past beta, v, mu_s
+      const auto it = physical.find(names[i]);
+      given = given || args.Given(names[i]) || (it != physical.end() && args.Given(it->second));
+    }
+    if (!given) continue;
+    Params q = p;
+    q.law = law;
+    const std::string err = ValidationError(q);
+    if (!err.empty())
+      throw UsageError("invalid model: " + WithOrigin(args, err) + " (a " + LawName(law) +
+                       " parameter, unused by the " + LawName(p.law) + " law)");
+  }
+}
+
 }  // namespace
 
 Params ModelFromArguments(const Arguments& args) { return ModelFromArguments(args, "", 0.0); }
@@ -352,6 +388,7 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
   if (!continued.empty() && IsParameterName(continued)) SetParameter(checked, continued, at);
   const std::string err = ValidationError(checked);
   if (!err.empty()) throw UsageError("invalid model: " + WithOrigin(args, err));
+  CheckOtherLaws(args, checked);
   return p;
 }
 
@@ -404,8 +441,11 @@ int ReportError(const std::string& prog, const std::exception& e) {
 }
 
 int RunApp(const std::string& prog, const std::function<int()>& body) {
+  std::signal(SIGPIPE, SIG_IGN);  // a closed stdout is reported below, not fatal
   try {
-    return body();
+    const int code = body();
+    CheckStdout();
+    return code;
   } catch (const std::exception& e) {
     return ReportError(prog, e);
   } catch (...) {
