@@ -101,10 +101,12 @@ TEST_F(BasinApp, MaxTimeAndSigintLeaveAWholePartialFile) {
   EXPECT_TRUE(Contains(tsv, "# status: partial (cancelled)"));
 }
 
-TEST_F(BasinApp, HelpNamesTheOutputs) {
+TEST_F(BasinApp, HelpNamesTheOutputsAndVersionPrintsIt) {
   EXPECT_EQ(Run("--help"), 0);
   EXPECT_TRUE(Contains(out_, "basins.tsv"));
   EXPECT_TRUE(Contains(out_, "[basin]"));
+  EXPECT_EQ(Run("--version"), 0);
+  EXPECT_EQ(out_.rfind("ss_basin (stickslip) ", 0), 0u) << out_;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/basin_report.hpp"
+#include "stickslip/version.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;
@@ -39,7 +40,8 @@ void OnSignal(int sig) { g_signal = sig; }
 
 po::options_description AppOptions() {
   po::options_description d("Basins (study section [basin])");
-  d.add_options()("nx", cli::Value()->value_name("N"), "starts along x (default 41)")(
+  d.add_options()("version", "print the version and exit")("nx", cli::Value()->value_name("N"),
+                                                           "starts along x (default 41)")(
       "ny", cli::Value()->value_name("N"), "starts along x' (default 41)")(
       "x_min", cli::Value()->value_name("X"),
       "grid box; give all four of x_min x_max xdot_min xdot_max, or none (default: the "
@@ -129,6 +131,10 @@ int Main(int argc, char** argv) {
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "basin");
   if (args.map().count("help")) {
     cli::PrintHelp(std::cout, "ss_basin [--study FILE] [options]", desc, kNotes);
+    return 0;
+  }
+  if (args.map().count("version")) {
+    std::cout << kProg << " (stickslip) " << ss::VersionString() << "\n";
     return 0;
   }
   const ss::Params p = cli::ModelFromArguments(args);
