@@ -69,6 +69,7 @@ BranchPoint BranchContext::FromOrbit(double p, const Orbit& o, double a) const {
   pt.multiplier = o.multiplier;
   pt.stable = o.stable;
   pt.amplitude = o.kind == OrbitKind::kPureSlip ? a : 0.5 * (o.x_max - o.x_min);
+  pt.newton_stalled = o.newton_stalled;
   return pt;
 }
 
@@ -93,7 +94,8 @@ bool BranchContext::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, dou
   if (!r.ok() || r.orbit.xdot_max >= m.v()) return false;
   *orbit = r.orbit;
   *a = r.orbit.start[0] - m.SteadySliding().x;
-  return true;
+  // Newton that ends on the equilibrium itself found no orbit.
+  return *a > 1e-6 * (m.params().mu_s + m.v());
 }
 
 OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, ReturnMap* map) {
@@ -146,6 +148,14 @@ bool BranchContext::CoveredByStickSlip(double p) const {
   const double tol = 1e-12 * std::max(1.0, range_);
   for (const Span& s : stick_slip_spans_)
     if (p >= s.lo - tol && p <= s.hi + tol) return true;
+  return false;
+}
+
+bool BranchContext::HasPureSlipPoint(double p, double a) const {
+  for (const BranchPoint& pt : res_.points)
+    if (pt.kind == PointKind::kPureSlip && pt.p == p &&
+        std::abs(pt.amplitude - a) <= 1e-6 * std::max(1.0, a))
+      return true;
   return false;
 }
 

@@ -46,9 +46,6 @@ constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100;
 constexpr double kMinScale = 1e-3;
 // Landing on a range end: the step guess never below this amplitude.
 constexpr double kLandMinAmplitude = 1e-3;
-// Pure-slip orbits at `from`: a scan of a in (kScanLo, kScanHi (mu_s + v)) at kScanPoints.
-constexpr double kScanLo = 0.005, kScanHi = 1.5;
-constexpr int kScanPoints = 30;
 }  // namespace tuning
 
 // Where a branch starts and what it is.
@@ -127,6 +124,8 @@ class BranchContext {
   bool GrazingVisited(double p) const;
   // p lies between stick-slip points of one branch already traced.
   bool CoveredByStickSlip(double p) const;
+  // A pure-slip point of section amplitude a at exactly p is already on a branch.
+  bool HasPureSlipPoint(double p, double a) const;
 
   void NextBranch() { ++branch_; }
   void SetBranch(int b) { branch_ = b; }

@@ -11,23 +11,22 @@ namespace stickslip {
 
 namespace {
 
-// The grazing row on the branch that reached it: the grazing orbit, with a
-// stick phase of length zero.
-BranchPoint GrazingRow(const BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
-  const Model m(ctx.At(end.p));
-  const bool from_ss = end.came_from == PointKind::kStickSlip;
-  const double mult_ps = run.jacobian.determinant();
+// The grazing row: the limit of the stick-slip orbits, whose stick phase
+// shrinks to zero at the exit point (or, inside the stick band, to the stick
+// from the touch to the exit point). One row, the same from either side.
+BranchPoint GrazingRow(const BranchContext& ctx, const Model& m, const SpecialPoint& sp,
+                       const FlowResult& run) {
   Orbit o;
-  o.kind = from_ss ? OrbitKind::kStickSlip : OrbitKind::kPureSlip;
-  o.period = run.t;
-  o.x_min = run.x_min;
-  o.x_max = run.x_max;
+  o.kind = OrbitKind::kStickSlip;
+  o.period = sp.period;
+  o.x_min = sp.x_min;
+  o.x_max = sp.x_max;
   o.xdot_min = run.xdot_min;
   o.xdot_max = m.v();
-  o.t_stick = 0.0;
-  o.multiplier = from_ss ? 0.0 : mult_ps;
-  o.stable = from_ss || std::abs(mult_ps) < 1.0;
-  return ctx.FromOrbit(end.p, o, run.x_max - m.SteadySliding().x);
+  o.t_stick = sp.period - run.t;
+  o.multiplier = 0.0;
+  o.stable = true;
+  return ctx.FromOrbit(sp.p, o, 0.0);
 }
 
 // From pure slip into stick slip: stick-slip orbits exist where the gap is positive.
@@ -44,7 +43,7 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
   const double dir = gap_probe > 0 ? side : -side;
   if (dir != end.dir)
     ctx.AddSpecial(
-        FoldPoint(p_gr, run, "non-smooth fold at GR: the pure-slip branch turns into stick-slip"));
+        FoldPoint(p_gr, run, "non-smooth fold at GR: the stick-slip and pure-slip branches meet"));
   // Step off GR by one small step so the first orbit is a clear stick-slip orbit.
   BranchStart next;
   OrbitResult r;
@@ -73,7 +72,7 @@ BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowRes
     if (ctx.PureSlipAtFixedP(q, a_gr, &o, &a)) {
       if (side != end.dir)
         ctx.AddSpecial(FoldPoint(
-            p_gr, run, "non-smooth fold at GR: the stick-slip branch turns into pure slip"));
+            p_gr, run, "non-smooth fold at GR: the stick-slip and pure-slip branches meet"));
       BranchStart next;
       next.phase = BranchStart::kPureSlip;
       next.p = q;
@@ -130,9 +129,13 @@ BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
     return {};
   }
   const bool from_ss = end.came_from == PointKind::kStickSlip;
-  ctx.AddSpecial(GrazingPoint(end.p, run, from_ss));
-  ctx.Add(GrazingRow(ctx, end, run));
-  if (ctx.Stop()) return {};
+  const Model m(ctx.At(end.p));
+  const SpecialPoint gr = GrazingPoint(m, end.p, run);
+  ctx.AddSpecial(gr);
+  ctx.Add(GrazingRow(ctx, m, gr, run));
+  // Touching the belt inside the stick band, the orbit disappears: nothing
+  // to switch to (coulomb law with damping: slip is a damped linear oscillator).
+  if (ctx.Stop() || GrazesInsideStickBand(m, run)) return {};
   return from_ss ? IntoPureSlip(ctx, end, run) : IntoStickSlip(ctx, end, run);
 }
 

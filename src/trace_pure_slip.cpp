@@ -210,7 +210,8 @@ BranchEnd PureSlipTracer::Rejected(const PalcCorrection& c, double p_pred, bool*
 // points if the tangent's p component changed sign.
 void PureSlipTracer::Accept(const PalcCorrection& c) {
   const Eigen::VectorXd t = palc_.Tangent(c.jac, t_);
-  const Orbit o = PureSlipFromMap(curve_.map);
+  Orbit o = PureSlipFromMap(curve_.map);
+  o.newton_stalled = c.stalled;
   if (hopf_pending_) {
     ctx_.AddHopfEnd(p_hopf_start_, o.stable);
     hopf_pending_ = false;

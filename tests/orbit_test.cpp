@@ -6,8 +6,10 @@
 
 #include <cmath>
 
+#include "coulomb_damped.hpp"
 #include "reference/reference_orbit.hpp"
 #include "stickslip/continuation.hpp"
+#include "stickslip/roots.hpp"
 
 namespace stickslip {
 namespace {
@@ -264,6 +266,57 @@ TEST(Orbit, SeedHopfPointIsLabelledSupercritical) {
   ASSERT_TRUE(ref.found);
   EXPECT_FALSE(ref.sticks);
   EXPECT_LT(std::abs(static_cast<double>(ref.multiplier)), 1.0);  // stable: supercritical
+}
+
+}  // namespace
+}  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// Coulomb law with damping: slip is a damped linear oscillator, so no
+// pure-slip orbit exists, and the stick-slip orbit disappears where its first
+// return touches x' = v tangentially at the fold x = mu_k - 2 beta v of the
+// slip field, inside the stick band (closed form: coulomb_damped.hpp).
+TEST(Orbit, CoulombWithDampingGrazesAtTheClosedFormInsideTheStickBand) {
+  for (double beta : {0.05, 0.2}) {
+    Params p;
+    p.law = LawKind::kCoulomb;
+    p.beta = beta;
+    const double v_end = static_cast<double>(coulomb_damped::EndSpeed(p.mu_s, p.mu_k, beta));
+    auto gap = [&](double v) {
+      p.v = v;
+      OrbitFinder finder(Model(p), Tight());
+      double g = NAN;
+      EXPECT_EQ(finder.GrazingGap(&g), OrbitStatus::kOk);
+      return g;
+    };
+    const RootResult root = FindRoot(gap, 0.5 * v_end, 1.5 * v_end, 1e-13);
+    ASSERT_TRUE(root.ok);
+    EXPECT_NEAR(root.x, v_end, 1e-9) << "beta = " << beta;
+    // Where it touches: the fold of the slip field, strictly inside the band.
+    p.v = v_end;
+    OrbitFinder finder(Model(p), Tight());
+    double g = 0;
+    FlowResult run;
+    ASSERT_EQ(finder.GrazingGap(&g, &run), OrbitStatus::kOk);
+    EXPECT_NEAR(run.z[0], p.mu_k - 2 * beta * v_end, 1e-7);
+    EXPECT_NEAR(run.t,
+                static_cast<double>(coulomb_damped::FirstMaxTime(p.mu_s, p.mu_k, beta, v_end)),
+                1e-7);
+    // Just below the end the orbit sticks, with about Delta / v of stick.
+    p.v = v_end * (1 - 1e-9);
+    finder.set_model(Model(p));
+    const OrbitResult r = finder.StickSlip();
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_NEAR(r.orbit.period,
+                static_cast<double>(coulomb_damped::EndPeriod(p.mu_s, p.mu_k, beta)), 1e-3);
+    EXPECT_GT(r.orbit.t_stick, 0.9 * (p.mu_s - p.mu_k) / v_end);
+    // Just above it the first return stays below the belt.
+    p.v = v_end * (1 + 1e-6);
+    finder.set_model(Model(p));
+    EXPECT_EQ(finder.StickSlip(true).status, OrbitStatus::kMissed);
+  }
 }
 
 }  // namespace

@@ -34,6 +34,10 @@ struct BranchPoint {
   double multiplier = 0;
   bool stable = false;
   double amplitude = 0;  // pure slip: section amplitude a; else (x_max - x_min) / 2
+  // Pure slip: Newton was accepted where its steps stalled at the integration
+  // noise floor (below 1000 x the tolerance, no longer shrinking) instead of
+  // falling below the tolerance: the point is only as accurate as that step.
+  bool newton_stalled = false;
 };
 
 enum class SpecialKind { kGrazing, kHopf, kFold };

@@ -18,9 +18,11 @@
 #include "cli/output.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
+#include "stickslip/branch_disturbance.hpp"
 #include "stickslip/branch_report.hpp"
 #include "stickslip/comparison.hpp"
 #include "stickslip/continuation.hpp"
+#include "stickslip/numbers.hpp"
 #include "stickslip/report.hpp"
 
 namespace ss = stickslip;
@@ -33,7 +35,8 @@ constexpr const char* kProg = "ss_continue";
 constexpr const char* kNotes =
     "Outputs in --out, written as one set (README, Reliability): branch.tsv (one row per\n"
     "point; kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet\n"
-    "multiplier, for the equilibrium the largest real part of its eigenvalues),\n"
+    "multiplier, for the equilibrium the largest real part of its eigenvalues; then\n"
+    "dist_x dist_xdot dist_energy newton_stalled, README),\n"
     "special_points.tsv (GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its\n"
     "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
     "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
@@ -326,8 +329,20 @@ int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Para
     run.Phase("comparing with the estimates");
     cmp = ss::CompareEstimates(base, opts.param, r);
   }
+  // Estimate columns first (the figure script counts on their numbers), then
+  // the smallest disturbance and the Newton-stall mark.
+  std::vector<ss::ExtraColumn> extra = cmp.columns;
+  run.Phase("smallest disturbances");
+  for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow)) {
+    // Cancelled: the columns are kept, without values.
+    if (run.Cancelled()) c.values.assign(r.points.size(), ss::kNan);
+    extra.push_back(std::move(c));
+  }
+  ss::ExtraColumn stalled{"newton_stalled", {}};
+  for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
+  extra.push_back(std::move(stalled));
   run.Phase("writing");
-  out.Write("branch.tsv", ss::BranchTable(r, opts.param, model, cmp.columns).str());
+  out.Write("branch.tsv", ss::BranchTable(r, opts.param, model, extra).str());
   out.Write("special_points.tsv", ss::SpecialPointTable(r, opts.param).str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   out.Write("bifurcation.gp", ss::BifurcationScript(r, opts.param, title, cmp.applies));

@@ -59,7 +59,8 @@ po::options_description AppDescription(const po::options_description& app) {
 }
 
 const std::vector<std::string>& StudySections() {
-  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "chart"};
+  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "chart",
+                                                    "basin"};
   return sections;
 }
 
