@@ -615,8 +615,9 @@ TEST_F(ContinueApp, MaxTimeWritesWholePartialBranch) {
 // A pathological model: v_m = 1e-6 makes k3 ~ 1e17, and one return of the
 // pure-slip scan at the start runs for many minutes. --max_time and SIGINT
 // must still stop it promptly (cancellation reaches into the flow).
-const std::vector<std::string> kPathological = {"--param", "v_m", "--from",     "1e-6",
-                                                "--to",    "1",   "--no_plots", "--no_estimates"};
+const std::vector<std::string> kPathological = {"--integrator", "cvode",         "--param", "v_m",
+                                                "--from",       "1e-6",          "--to",    "1",
+                                                "--no_plots",   "--no_estimates"};
 
 TEST_F(ContinueApp, MaxTimeStopsAPathologicalOrbit) {
   std::vector<std::string> args = kPathological;
