@@ -4,11 +4,12 @@
 
 namespace stickslip {
 
-Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0) {
+Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0), c_(0) {
   switch (law_) {
     case LawKind::kCubic:
       a_ = p.k1();
       b_ = p.k3();
+      c_ = p.k5;
       break;
     case LawKind::kCoulomb:
       a_ = p.mu_k;
@@ -25,8 +26,10 @@ Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0) {
 
 double Friction::Mu(double s) const {
   switch (law_) {
-    case LawKind::kCubic:  // seed (3.3): mu_s - k1 s + k3 s^3
-      return mu_s_ - a_ * s + b_ * s * s * s;
+    case LawKind::kCubic: {  // seed (3.3): mu_s - k1 s + k3 s^3, with the quintic - k5 s^5
+      const double s2 = s * s;
+      return mu_s_ - a_ * s + b_ * s2 * s - c_ * s2 * s2 * s;
+    }
     case LawKind::kCoulomb:
       return a_;
     case LawKind::kStribeck:
@@ -39,8 +42,10 @@ double Friction::Mu(double s) const {
 
 double Friction::DMu(double s) const {
   switch (law_) {
-    case LawKind::kCubic:
-      return -a_ + 3.0 * b_ * s * s;
+    case LawKind::kCubic: {
+      const double s2 = s * s;
+      return -a_ + 3.0 * b_ * s2 - 5.0 * c_ * s2 * s2;
+    }
     case LawKind::kCoulomb:
       return 0.0;
     case LawKind::kStribeck:
@@ -53,10 +58,26 @@ double Friction::DMu(double s) const {
   return 0;
 }
 
+double Friction::D2Mu(double s) const {
+  switch (law_) {
+    case LawKind::kCubic:
+      return s * (6.0 * b_ - 20.0 * c_ * s * s);
+    case LawKind::kCoulomb:
+      return 0.0;
+    case LawKind::kStribeck:
+      return (mu_s_ - a_) / (b_ * b_) * std::exp(-s / b_);
+    case LawKind::kLeine: {
+      const double d = 1.0 + a_ * s;
+      return 2.0 * mu_s_ * a_ * a_ / (d * d * d);
+    }
+  }
+  return 0;
+}
+
 double Friction::D3Mu(double s) const {
   switch (law_) {
     case LawKind::kCubic:
-      return 6.0 * b_;
+      return 6.0 * b_ - 60.0 * c_ * s * s;
     case LawKind::kCoulomb:
       return 0.0;
     case LawKind::kStribeck:

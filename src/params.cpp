@@ -37,7 +37,7 @@ std::vector<std::string> ParameterNames(LawKind law) {
   std::vector<std::string> names = {"beta", "v", "mu_s"};
   switch (law) {
     case LawKind::kCubic:
-      names.insert(names.end(), {"mu_m", "v_m"});
+      names.insert(names.end(), {"mu_m", "v_m", "k5"});
       break;
     case LawKind::kCoulomb:
       names.insert(names.end(), {"mu_k"});
@@ -53,7 +53,7 @@ std::vector<std::string> ParameterNames(LawKind law) {
 }
 
 std::vector<std::string> AllParameterNames() {
-  return {"beta", "v", "mu_s", "mu_m", "v_m", "mu_k", "v_s", "delta"};
+  return {"beta", "v", "mu_s", "mu_m", "v_m", "mu_k", "v_s", "delta", "k5"};
 }
 
 bool IsParameterName(const std::string& name) {
@@ -71,8 +71,9 @@ double* Field(Params& p, const std::string& name) {
   if (name == "mu_k") return &p.mu_k;
   if (name == "v_s") return &p.v_s;
   if (name == "delta") return &p.delta;
+  if (name == "k5") return &p.k5;
   throw InvalidArgument("unknown parameter '" + name +
-                        "' (expected beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta)");
+                        "' (expected beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5)");
 }
 
 std::string Num(double x) {
@@ -80,6 +81,16 @@ std::string Num(double x) {
   os.precision(12);
   os << x;
   return os.str();
+}
+
+// The quintic term: k5 >= 0, and mu > 0 at the steady state's slip speed v.
+std::string QuinticError(const Params& p) {
+  if (p.k5 < 0) return "k5 = " + Num(p.k5) + " must be >= 0";
+  const double v = p.v, mu = p.mu_s - p.k1() * v + p.k3() * v * v * v - p.k5 * std::pow(v, 5);
+  if (!(mu > 0))
+    return "k5 = " + Num(p.k5) + " makes mu(v) = " + Num(mu) +
+           " <= 0 at the belt speed v = " + Num(v) + " (steady sliding is not physical)";
+  return "";
 }
 }  // namespace
 
@@ -114,6 +125,7 @@ std::string ValidationError(const Params& p) {
       if (p.mu_m <= 0) return "mu_m = " + Num(p.mu_m) + " must be > 0";
       if (p.mu_m >= p.mu_s) return "mu_m = " + Num(p.mu_m) + " must be < mu_s = " + Num(p.mu_s);
       if (p.v_m <= 0) return "v_m = " + Num(p.v_m) + " must be > 0";
+      if (const std::string e = QuinticError(p); !e.empty()) return e;
       break;
     case LawKind::kCoulomb:
     case LawKind::kStribeck:

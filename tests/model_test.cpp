@@ -29,6 +29,28 @@ void ExpectMatNear(const Mat2& a, const Mat2& b, double tol) {
     for (int j = 0; j < 2; ++j) EXPECT_NEAR(a(i, j), b(i, j), tol) << "(" << i << "," << j << ")";
 }
 
+TEST(Model, QuinticFrictionAndDerivatives) {
+  // mu(s) = mu_s - k1 s + k3 s^3 - k5 s^5 with k1 = 0.45, k3 = 0.6, k5 = 0.24: at s = 0.5
+  // mu = 0.4 - 0.225 + 0.075 - 0.0075, mu' = -0.45 + 0.45 - 0.075, mu'' = 1.8 - 0.6,
+  // mu''' = 3.6 - 3.6 (the sign change at sqrt(k3 / (10 k5)) = 0.5).
+  Params p = Seed();
+  p.k5 = 0.24;
+  const Friction f(p);
+  EXPECT_NEAR(f.Mu(0.5), 0.2425, 1e-15);
+  EXPECT_NEAR(f.DMu(0.5), -0.075, 1e-15);
+  EXPECT_NEAR(f.D2Mu(0.5), 1.2, 1e-15);
+  EXPECT_NEAR(f.D3Mu(0.5), 0.0, 1e-15);
+  // The other laws' second derivatives against central differences of mu'.
+  for (LawKind law : {LawKind::kStribeck, LawKind::kLeine, LawKind::kCubic}) {
+    Params q = Seed();
+    q.law = law;
+    const Friction g(q);
+    const double s = 0.3, h = 1e-5;
+    EXPECT_NEAR(g.D2Mu(s), (g.DMu(s + h) - g.DMu(s - h)) / (2 * h), 1e-8) << LawName(law);
+    EXPECT_NEAR(g.D3Mu(s), (g.D2Mu(s + h) - g.D2Mu(s - h)) / (2 * h), 1e-7) << LawName(law);
+  }
+}
+
 TEST(Model, RejectsInvalidParameters) {
   Params p = Seed();
   p.mu_m = 0.5;

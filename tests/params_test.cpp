@@ -83,6 +83,20 @@ TEST(Params, RejectsMuKAtOrAboveMuS) {
   }
 }
 
+TEST(Params, QuinticTermValidated) {
+  Params p = Seed();
+  p.k5 = -0.1;
+  EXPECT_TRUE(Contains(Rejection(p), "k5 = -0.1 must be >= 0"));
+  // mu(v) = 0.4 - 0.45 v + 0.6 v^3 - k5 v^5 at v = 1: 0.55 - k5, so k5 = 0.55 is the limit.
+  p.v = 1.0;
+  p.k5 = 0.549;
+  EXPECT_EQ(Rejection(p), "");
+  p.k5 = 0.551;
+  EXPECT_TRUE(Contains(Rejection(p), "k5 = 0.551 makes mu(v)"));
+  p.law = LawKind::kStribeck;  // other laws ignore k5
+  EXPECT_EQ(Rejection(p), "");
+}
+
 TEST(Params, RejectsNanAndInfinity) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -133,7 +147,7 @@ TEST(Params, LawNamesRoundTrip) {
 
 TEST(Params, ParameterNamesPerLaw) {
   using V = std::vector<std::string>;
-  EXPECT_EQ(ParameterNames(LawKind::kCubic), (V{"beta", "v", "mu_s", "mu_m", "v_m"}));
+  EXPECT_EQ(ParameterNames(LawKind::kCubic), (V{"beta", "v", "mu_s", "mu_m", "v_m", "k5"}));
   EXPECT_EQ(ParameterNames(LawKind::kCoulomb), (V{"beta", "v", "mu_s", "mu_k"}));
   EXPECT_EQ(ParameterNames(LawKind::kStribeck), (V{"beta", "v", "mu_s", "mu_k", "v_s"}));
   EXPECT_EQ(ParameterNames(LawKind::kLeine), (V{"beta", "v", "mu_s", "delta"}));

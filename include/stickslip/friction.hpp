@@ -19,7 +19,10 @@ class Friction {
   // mu(s) and its first three derivatives in s, for s >= 0 (one-sided at 0).
   double Mu(double s) const;
   double DMu(double s) const;
+  double D2Mu(double s) const;
   double D3Mu(double s) const;
+  // Cubic law's quintic coefficient k5 (0 for the seed's law and the others).
+  double k5() const { return c_; }
 
   // Slip force F(u) = -sgn(u) mu(|u|) for u != 0, and F'(u) = -mu'(|u|).
   double Force(double u) const { return u < 0 ? Mu(-u) : -Mu(u); }
@@ -30,6 +33,7 @@ class Friction {
   double mu_s_;
   double a_;  // cubic: k1; coulomb, stribeck: mu_k; leine: delta
   double b_;  // cubic: k3; stribeck: v_s
+  double c_;  // cubic: k5 (the law stays an odd polynomial mu_s - k1 s + k3 s^3 - k5 s^5)
 };
 
 }  // namespace stickslip

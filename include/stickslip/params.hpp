@@ -8,7 +8,7 @@ namespace stickslip {
 
 // Friction laws mu(s), s = |x' - v| (design notes, section 1).
 enum class LawKind {
-  kCubic,     // mu_s - k1 s + k3 s^3, seed eq. (3.3), Thomsen & Fidlin (2003)
+  kCubic,     // mu_s - k1 s + k3 s^3 - k5 s^5, seed eq. (3.3) (k5 = 0), Thomsen & Fidlin (2003)
   kCoulomb,   // mu_k for s > 0, static mu_s
   kStribeck,  // mu_k + (mu_s - mu_k) exp(-s / v_s)
   kLeine,     // mu_s / (1 + delta s), Leine et al. (1998)
@@ -30,6 +30,7 @@ struct Params {
   double mu_k = 0.25;  // coulomb, stribeck: kinetic coefficient
   double v_s = 0.5;    // stribeck: decay speed
   double delta = 3.0;  // leine: decay rate
+  double k5 = 0.0;     // cubic: optional quintic term -k5 s^5, k5 >= 0
 
   // Cubic law coefficients, seed section 3: k1 = 3(mu_s - mu_m)/(2 v_m),
   // k3 = (mu_s - mu_m)/(2 v_m^3).
@@ -38,7 +39,7 @@ struct Params {
 };
 
 // Names of the parameters that apply to a law, in a fixed order:
-// beta, v, mu_s, then the law's own (cubic: mu_m, v_m; coulomb: mu_k;
+// beta, v, mu_s, then the law's own (cubic: mu_m, v_m, k5; coulomb: mu_k;
 // stribeck: mu_k, v_s; leine: delta).
 std::vector<std::string> ParameterNames(LawKind law);
 // Every parameter name any law knows.

@@ -21,7 +21,7 @@ namespace {
 // Physical inputs and the dimensionless parameters they replace.
 const std::vector<std::string> kPhysical = {"mass",    "damping", "stiffness", "belt_speed",
                                             "gravity", "speed_m", "speed_s",   "delta_phys"};
-const std::vector<std::string> kScaled = {"beta", "v", "v_m", "v_s", "delta"};
+const std::vector<std::string> kScaled = {"beta", "v", "v_m", "v_s", "delta", "k5"};
 
 std::string Trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -83,7 +83,9 @@ po::options_description ModelOptions() {
       "mu_k", Value()->value_name("X"),
       ("coulomb, stribeck: kinetic coefficient" + Default(p.mu_k)).c_str())(
       "v_s", Value()->value_name("X"), ("stribeck: decay speed" + Default(p.v_s)).c_str())(
-      "delta", Value()->value_name("X"), ("leine: decay rate" + Default(p.delta)).c_str());
+      "delta", Value()->value_name("X"), ("leine: decay rate" + Default(p.delta)).c_str())(
+      "k5", Value()->value_name("X"),
+      ("cubic: quintic term -k5 s^5, >= 0, mu(v) > 0" + Default(p.k5)).c_str());
   po::options_description phys(
       "Model, physical (any of these selects the physical set: mass, damping, stiffness,\n"
       "belt_speed and the law's speed_m / speed_s / delta_phys are then required, and\n"

@@ -67,12 +67,13 @@ struct Law {
         v_s(p.v_s),
         delta(p.delta),
         k1(CubicK1(p)),
-        k3(CubicK3(p)) {}
+        k3(CubicK3(p)),
+        k5(p.k5) {}
 
   Real Mu(Real s) const {
     switch (kind) {
       case LawKind::kCubic:
-        return mu_s - k1 * s + k3 * s * s * s;
+        return mu_s - k1 * s + k3 * s * s * s - k5 * s * s * s * s * s;
       case LawKind::kCoulomb:
         return mu_k;
       case LawKind::kStribeck:
@@ -85,7 +86,7 @@ struct Law {
   Real DMu(Real s) const {
     switch (kind) {
       case LawKind::kCubic:
-        return -k1 + 3 * k3 * s * s;
+        return -k1 + 3 * k3 * s * s - 5 * k5 * s * s * s * s;
       case LawKind::kCoulomb:
         return 0;
       case LawKind::kStribeck:
@@ -97,7 +98,7 @@ struct Law {
   }
 
   LawKind kind;
-  Real mu_s, mu_k, v_s, delta, k1, k3;
+  Real mu_s, mu_k, v_s, delta, k1, k3, k5;  // k5: the cubic law's optional quintic term
 };
 
 struct Model {

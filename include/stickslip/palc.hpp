@@ -1,0 +1,131 @@
+// Pseudo-arclength continuation (Keller 1977) of F(u) = 0, F: R^{n+1} -> R^n.
+// Physics-free: a problem supplies F and its Jacobian; the algorithm supplies
+// the tangent, the predictor, the bordered Newton corrector, step control and
+// fold detection. Used for branches of pure-slip orbits in (a, p) and for
+// curves of special points in (p1, p2) and (a, p1, p2).
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace stickslip {
+
+/// n equations in n + 1 unknowns.
+class PalcProblem {
+ public:
+  virtual ~PalcProblem() = default;
+  /// Number of unknowns, n + 1 (>= 2).
+  virtual int unknowns() const = 0;
+  /// F(u) (n entries) and dF/du (n x (n+1)). False if F cannot be evaluated at
+  /// u; then *why says what failed.
+  virtual bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
+                        std::string* why) = 0;
+  /// Called before each correction: a problem that keeps a derivative fixed
+  /// over one correction (a chord) refreshes it here.
+  virtual void BeginCorrection() {}
+  /// Empty if u lies in the problem's domain, else why not. Checked after every
+  /// Newton update, before the next evaluation.
+  virtual std::string DomainError(const Eigen::VectorXd& /*u*/) const { return {}; }
+};
+
+/// Options in scaled coordinates u_s = u ./ scale: ds is arclength there.
+struct PalcOptions {
+  double ds = 0.01;      ///< first step
+  double ds_min = 1e-7;  ///< below this a step failure ends the curve
+  double ds_max = 0.02;  ///< largest step
+  double grow = 1.5;     ///< step growth after a fast correction
+  int fast_iterations = 3;
+  int max_newton = 8;  ///< corrector iterations
+  /// Converged when the L1 norm of the scaled Newton update is below tol.
+  double tol = 1e-11;
+  int max_points = 20000;
+  Eigen::VectorXd scale;  ///< per unknown; empty means all 1
+  /// Empty if valid for `unknowns`, else one line naming the offending value.
+  std::string ValidationError(int unknowns) const;
+};
+
+/// Outcome of one bordered Newton correction.
+struct PalcCorrection {
+  bool ok = false;
+  /// Accepted because the updates stopped shrinking at the noise floor of F
+  /// (within 1e3 tol), not because they fell below tol.
+  bool stalled = false;
+  int iterations = 0;
+  /// The last point F was evaluated at (so f, jac and whatever the problem
+  /// cached belong to it), in unscaled coordinates.
+  Eigen::VectorXd u, f;
+  Eigen::MatrixXd jac;
+  std::string why;  ///< when !ok
+};
+
+/// Newton stall test shared by all correctors here: converged below tol, or
+/// stalled (after two iterations, within 1e3 tol and no longer halving).
+bool NewtonConverged(double step, double last_step, int iteration, double tol, bool* stalled);
+
+/// One accepted point of a curve.
+struct PalcPoint {
+  Eigen::VectorXd u;        ///< unscaled
+  Eigen::VectorXd tangent;  ///< unit, scaled coordinates
+  int iterations = 0;
+  bool stalled = false;
+  /// Components whose tangent changed sign since the previous point (folds
+  /// with respect to that unknown, between the two points).
+  std::vector<int> folds;
+};
+
+enum class PalcStatus {
+  kStopped,       ///< the monitor returned false
+  kClosed,        ///< the curve came back to its first point (a loop)
+  kMaxPoints,     ///< max_points accepted points
+  kStepTooSmall,  ///< correction failed with ds < ds_min; message says why
+  kStartFailed,   ///< the start point could not be evaluated
+};
+const char* PalcStatusName(PalcStatus s);
+
+struct PalcResult {
+  PalcStatus status = PalcStatus::kStopped;
+  std::string message;
+  std::vector<PalcPoint> points;
+  int newton_iterations = 0, rejected_steps = 0, evaluations = 0;
+};
+
+/// Called for each accepted point, the previous one first in `curve`;
+/// return false to stop.
+using PalcMonitor = std::function<bool(const std::vector<PalcPoint>& curve)>;
+
+class Palc {
+ public:
+  /// Throws InvalidArgument if the options do not fit the problem.
+  Palc(PalcProblem& problem, const PalcOptions& options);
+
+  const PalcOptions& options() const { return options_; }
+
+  /// Unit null vector of jac (unscaled Jacobian) in scaled coordinates,
+  /// oriented so that its dot product with `along` is >= 0 (if along != 0).
+  Eigen::VectorXd Tangent(const Eigen::MatrixXd& jac, const Eigen::VectorXd& along) const;
+  /// Bordered Newton on [F(u); t . (u_s - pred_s)] = 0 from pred (unscaled);
+  /// tangent in scaled coordinates.
+  PalcCorrection Correct(const Eigen::VectorXd& pred, const Eigen::VectorXd& tangent);
+  /// Newton on F(u) = 0 with component k held at pred[k] (a start point).
+  PalcCorrection CorrectFixed(const Eigen::VectorXd& pred, int k);
+
+  /// Follows the curve from u0 (which need not be exact: corrected with
+  /// component `fixed` held) in the direction of `direction` (scaled) until
+  /// the monitor stops it, it closes, or it fails.
+  PalcResult Trace(const Eigen::VectorXd& u0, int fixed, const Eigen::VectorXd& direction,
+                   const PalcMonitor& monitor);
+
+  int evaluations() const { return evaluations_; }
+
+ private:
+  bool Eval(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac, std::string* why);
+
+  PalcProblem& problem_;
+  PalcOptions options_;
+  Eigen::VectorXd scale_;
+  int evaluations_ = 0;
+};
+
+}  // namespace stickslip
