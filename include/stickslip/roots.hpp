@@ -1,5 +1,6 @@
-// Scalar root finding and minimisation on a bracket, after Brent (1973),
-// "Algorithms for Minimization without Derivatives", chapters 4 and 5.
+// Scalar root finding and minimisation on a bracket, through Boost.Math:
+// TOMS 748 (Alefeld, Potra & Shi 1995) for roots, Brent (1973, ch. 5) for
+// minima. Results carry an ok flag and the evaluation count.
 #pragma once
 
 #include <functional>
@@ -13,14 +14,16 @@ struct RootResult {
   int evaluations = 0;
 };
 
-// Root of f on [a, b] with f(a) f(b) <= 0, to |dx| <= xtol (Brent's zeroin).
+/// Root of f on [a, b] with f(a) f(b) <= 0, to a bracket of width <= xtol
+/// (boost::math::tools::toms748_solve); x is the point of smallest |f| seen.
 // fa, fb are f(a), f(b) if already known.
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double fa,
                     double fb, double xtol, int max_evaluations = 200);
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double xtol,
                     int max_evaluations = 200);
 
-// Minimum of f on [a, b] (Brent's fmin: golden section with parabolic steps).
+/// Minimum of f on [a, b] to about xtol (boost::math::tools::brent_find_minima:
+/// golden section with parabolic steps).
 RootResult FindMinimum(const std::function<double(double)>& f, double a, double b, double xtol,
                        int max_evaluations = 200);
 
