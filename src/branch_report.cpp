@@ -20,12 +20,12 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
     cols.push_back(c.name);
   }
   TsvTable t(cols);
-  t.AddComment("model: " + model_description);
+  t.AddMeta("model", model_description);
   if (r.partial())
-    t.AddComment(std::string("status: partial (") + ContinuationStatusName(r.status) +
-                 "): " + r.message);
+    t.AddMeta("status",
+              std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
   else
-    t.AddComment("status: complete");
+    t.AddMeta("status", "complete");
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
     std::vector<TsvTable::Cell> row = {p.p,
@@ -48,7 +48,11 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
 
 TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param) {
   TsvTable t({"label", param, "period", "x_min", "x_max", "xdot_min", "description"});
-  if (r.partial()) t.AddComment("status: partial: " + r.message);
+  if (r.partial())
+    t.AddMeta("status",
+              std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
+  else
+    t.AddMeta("status", "complete");
   for (const SpecialPoint& s : r.special)
     t.AddRow({SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description});
   return t;
@@ -115,6 +119,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
      << "if (!exists('suffix')) suffix = ''\n"
      << "set terminal pngcairo size 1000,700 enhanced font ',12'\n"
      << "set datafile separator '\\t'\n"
+     << "set datafile columnheaders\n"
      << "set key top right\n"
      << "set grid\n"
      << "set xlabel '" << param << "'\n"

@@ -109,6 +109,7 @@ ParameterRange DefaultRange(const Params& base, const std::string& name) {
     return {1.2 * lower, 2.0 * base.mu_s};
   }
   if (name == "mu_m" || name == "mu_k") return {0.2 * base.mu_s, 0.9 * base.mu_s};
+  if (name == "k5") return {0.0, std::max(1.0, 2.0 * x)};
   return {0.5 * x, 2.0 * x};  // v_m, v_s, delta: a factor of two each way
 }
 

@@ -37,6 +37,8 @@ const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::ReadFile;
+using stickslip::testing_util::ReadTsv;
+using stickslip::testing_util::Tsv;
 using stickslip::testing_util::WriteFile;
 
 std::vector<std::string> Lines(const std::string& text) {
@@ -44,15 +46,6 @@ std::vector<std::string> Lines(const std::string& text) {
   std::istringstream is(text);
   for (std::string l; std::getline(is, l);) lines.push_back(l);
   return lines;
-}
-
-std::vector<std::string> Split(const std::string& line, char sep = '\t') {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream is(line);
-  while (std::getline(is, cell, sep)) cells.push_back(cell);
-  if (!line.empty() && line.back() == sep) cells.push_back("");
-  return cells;
 }
 
 // Names in a directory, "." and ".." left out.
@@ -222,30 +215,14 @@ class ContinueApp : public ::testing::Test {
 };
 
 // branch.tsv split into header columns, comment lines and data rows.
-struct Branch {
-  std::vector<std::string> columns;
-  std::vector<std::string> comments;
-  std::vector<std::vector<std::string>> rows;
+struct Branch : Tsv {
   std::string first_line;
-  int Column(const std::string& name) const {
-    for (size_t i = 0; i < columns.size(); ++i)
-      if (columns[i] == name) return static_cast<int>(i);
-    return -1;
-  }
 };
 
 Branch ReadBranch(const std::string& text) {
   Branch b;
-  const auto lines = Lines(text);
-  if (lines.empty()) return b;
-  b.first_line = lines[0];
-  if (lines[0].rfind("# ", 0) == 0) b.columns = Split(lines[0].substr(2));
-  for (size_t i = 1; i < lines.size(); ++i) {
-    if (!lines[i].empty() && lines[i][0] == '#')
-      b.comments.push_back(lines[i]);
-    else
-      b.rows.push_back(Split(lines[i]));
-  }
+  static_cast<Tsv&>(b) = ReadTsv(text);
+  b.first_line = text.substr(0, text.find('\n'));
   return b;
 }
 
@@ -539,7 +516,16 @@ TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
                         "0.5", "--out", out, "--no_plots"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Branch b = ReadBranch(ReadFile(out + "/branch.tsv"));
-  EXPECT_EQ(b.first_line.rfind("# v\tkind", 0), 0u) << b.first_line;
+  // Metadata first, then the header line without '#' (pandas, csv.DictReader).
+  EXPECT_EQ(b.first_line.rfind("# tool: ss_continue ", 0), 0u) << b.first_line;
+  ASSERT_GE(b.columns.size(), 2u);
+  EXPECT_EQ(b.columns[0], "v");
+  EXPECT_EQ(b.columns[1], "kind");
+  EXPECT_EQ(b.meta.at("continued"), "v");
+  EXPECT_EQ(b.meta.at("from"), "0.05");
+  EXPECT_EQ(b.meta.at("to"), "0.5");
+  EXPECT_EQ(b.meta.at("beta"), "0.05");
+  EXPECT_EQ(b.meta.at("rtol"), "1e-11");
   ASSERT_FALSE(b.rows.empty());
   for (size_t i = 0; i < b.rows.size(); ++i)
     ASSERT_EQ(b.rows[i].size(), b.columns.size()) << "row " << i;
@@ -563,12 +549,13 @@ TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
   EXPECT_EQ(kinds, (std::set<std::string>{"stick-slip", "pure-slip", "equilibrium"}));
 
   int gr = 0, hb = 0, other = 0;
-  const auto special = Lines(ReadFile(out + "/special_points.tsv"));
-  ASSERT_FALSE(special.empty());
-  EXPECT_EQ(special[0].rfind("# label\tv", 0), 0u) << special[0];
-  for (const auto& line : special) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::string label = Split(line)[0];
+  const Tsv special = ReadTsv(ReadFile(out + "/special_points.tsv"));
+  ASSERT_GE(special.columns.size(), 2u);
+  EXPECT_EQ(special.columns[0], "label");
+  EXPECT_EQ(special.columns[1], "v");
+  EXPECT_EQ(special.meta.at("status"), "complete");
+  for (const auto& row : special.rows) {
+    const std::string label = row.at(0);
     (label == "GR" ? gr : label == "HB" ? hb : other)++;
   }
   EXPECT_EQ(gr, 1);

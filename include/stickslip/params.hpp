@@ -54,7 +54,8 @@ struct ParameterRange {
 /// The default range of a parameter around the model `base`, valid at both
 /// ends for base's other values: beta 0.01 -> 0.3, v 0.05 -> 0.5, mu_s from
 /// 1.2 x (mu_m or mu_k) to 2 mu_s, mu_m and mu_k 0.2 -> 0.9 x mu_s, the
-/// speeds v_m, v_s and delta 0.5 -> 2 x their base value. Throws
+/// speeds v_m, v_s and delta 0.5 -> 2 x their base value, k5 0 -> max(1,
+/// 2 k5). Throws
 /// InvalidArgument on an unknown name.
 ParameterRange DefaultRange(const Params& base, const std::string& name);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stickslip {
@@ -17,12 +18,13 @@ void WriteFileAtomically(const std::string& path, const std::string& content);
 // ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
 std::string FormatNumber(double x);
 
-// A tab-separated table. Layout:
-//   # col1<TAB>col2<TAB>...     the header, always the first line
-//   # comment                   AddComment lines, in order
-//   1.5<TAB>0.25<TAB>...        one line per row
-// gnuplot reads it as is ('#' lines are comments; text cells are fine with
-// `using` expressions or strcol).
+/// A tab-separated table that describes itself. Layout:
+///   # key: value                metadata (AddMeta / AddComment lines), in order
+///   col1<TAB>col2<TAB>...       the header line, without '#'
+///   1.5<TAB>0.25<TAB>...        one line per row
+/// pandas.read_csv(path, sep='\t', comment='#') and csv.DictReader (after
+/// dropping the '#' lines) read the header as the column names; gnuplot reads
+/// it with `set datafile columnheaders` ('#' lines are comments).
 class TsvTable {
  public:
   // Throws InvalidArgument if there are no columns or a name is empty or
@@ -47,8 +49,14 @@ class TsvTable {
     bool is_text_ = false;
   };
 
-  // Throws InvalidArgument if the text has a newline.
+  /// A "# text" line before the header. Throws InvalidArgument if the text
+  /// has a line break.
   void AddComment(const std::string& text);
+  /// A "# key: value" metadata line. Throws InvalidArgument if the key is
+  /// empty or has a colon, or either has a line break.
+  void AddMeta(const std::string& key, const std::string& value);
+  /// The same lines, placed before every line added so far.
+  void PrependMeta(const std::vector<std::pair<std::string, std::string>>& lines);
   // Throws InvalidArgument if the cell count differs from the column count
   // or a text cell has a tab or newline.
   void AddRow(const std::vector<Cell>& cells);

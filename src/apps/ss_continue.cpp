@@ -12,6 +12,8 @@
 #include <iostream>
 #include <string>
 
+#include "cli/about.hpp"
+#include "cli/physical.hpp"
 #include "cli/study.hpp"
 #include "stickslip/branch_report.hpp"
 #include "stickslip/comparison.hpp"
@@ -42,10 +44,11 @@ void OnSignal(int sig) { g_signal = sig; }
 po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
   d.add_options()("param", cli::Value()->value_name("NAME"),
-                  "parameter to continue: beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta "
+                  "parameter to continue: beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5 "
                   "(default v)")("from", cli::Value()->value_name("A"),
-                                 "start value; the first row is here (default 0.05)")(
-      "to", cli::Value()->value_name("B"), "end value, != from (default 0.5)")(
+                                 "start value; the first row is here (default: the parameter's "
+                                 "range, v 0.05, beta 0.01, mu_s 1.2 mu_m, ...)")(
+      "to", cli::Value()->value_name("B"), "end value, != from (default: v 0.5, beta 0.3, ...)")(
       "out", cli::Value()->value_name("DIR"), "output directory (default plots)")(
       "max_step", cli::Value()->value_name("F"),
       "largest step as a fraction of |to - from| (default 0.01: >= 100 points)")(
@@ -121,19 +124,58 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
               << ")\n";
 }
 
+// Physical inputs: the scales in the metadata, and physical copies of the
+// parameter axis (if it has units), x and the period as the last columns.
+void AddPhysical(const cli::Scales& s, const std::string& param, const ss::ContinuationResult& r,
+                 cli::Metadata& meta, std::vector<ss::ExtraColumn>& columns) {
+  meta.insert(meta.end(), {{"L", ss::FormatNumber(s.L) + " m (M g / K)"},
+                           {"t0", ss::FormatNumber(s.t0) + " s (sqrt(M / K))"}});
+  const auto axis = cli::AxisOf(param, s);
+  if (axis) {
+    meta.emplace_back("continued_physical",
+                      axis->physical + " = " + param + " / " + ss::FormatNumber(axis->factor));
+    columns.push_back({axis->physical, {}});
+  }
+  columns.push_back({"x_min_m", {}});
+  columns.push_back({"x_max_m", {}});
+  columns.push_back({"period_s", {}});
+  for (const ss::BranchPoint& pt : r.points) {
+    auto col = columns.end() - 3;
+    if (axis) col[-1].values.push_back(pt.p / axis->factor);
+    col[0].values.push_back(pt.x_min * s.L);
+    col[1].values.push_back(pt.x_max * s.L);
+    col[2].values.push_back(pt.period * s.t0);
+  }
+}
+
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
-  if (args.map().count("help")) {
-    cli::PrintHelp(std::cout, "ss_continue [--study FILE] [options]", desc, kNotes);
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
+                         kNotes))
     return 0;
-  }
   ss::ContinuationOptions opts;
-  opts.param = args.Text("param", "v");
-  opts.from = args.Number("from", 0.05);
+  // With physical inputs, --param belt_speed (damping, speed_m, ...) runs in
+  // physical units: its dimensionless parameter is continued over the range
+  // converted by the seed's scaling.
+  const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
+  const std::string asked = args.Text("param", "v");
+  const auto axis = cli::AxisOf(asked, scales.value_or(cli::Scales()));
+  const bool physical_param = axis && asked == axis->physical;
+  if (physical_param && !scales)
+    throw cli::UsageError("--param " + asked + " is a physical input: give the physical model " +
+                          "(--mass --damping --stiffness --belt_speed ...), or use --param " +
+                          axis->dimensionless);
+  const double to_param = physical_param ? axis->factor : 1.0;  // dimensionless per given
+  opts.param = physical_param ? axis->dimensionless : asked;
+  // Each parameter's own default range (v 0.05 -> 0.5, beta 0.01 -> 0.3, ...).
+  ss::ParameterRange range{0.05, 0.5};
+  if (ss::IsParameterName(opts.param))
+    range = ss::DefaultRange(cli::UncheckedModelFromArguments(args), opts.param);
+  opts.from = args.Number("from", range.from / to_param) * to_param;
   const ss::Params base = cli::ModelFromArguments(args, opts.param, opts.from);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args);
-  opts.to = args.Number("to", 0.5);
+  opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");
   const double max_time = args.Number("max_time", 0);
@@ -168,9 +210,23 @@ int Main(int argc, char** argv) {
   const std::string model = cli::DescribeModel(base);
   ss::EstimateComparison cmp;
   if (!args.Flag("no_estimates")) cmp = ss::CompareEstimates(base, opts.param, r);
-  ss::WriteFileAtomically(dir + "/branch.tsv",
-                          ss::BranchTable(r, opts.param, model, cmp.columns).str());
-  ss::WriteFileAtomically(dir + "/special_points.tsv", ss::SpecialPointTable(r, opts.param).str());
+  // How the files were made: tool, command, model, range, tolerances (then the status).
+  cli::Metadata meta =
+      cli::RunMetadata(kProg, cli::CommandLine(argc, argv), base, opts.orbit.flow, opts.param);
+  meta.insert(meta.end(), {{"continued", opts.param},
+                           {"from", ss::FormatNumber(opts.from)},
+                           {"to", ss::FormatNumber(opts.to)},
+                           {"max_step", ss::FormatNumber(opts.max_step)},
+                           {"newton_tol", ss::FormatNumber(opts.orbit.EffectiveNewtonTol())},
+                           {"locate_tol", ss::FormatNumber(opts.locate_tol)}});
+  std::vector<ss::ExtraColumn> columns = cmp.columns;
+  if (scales) AddPhysical(*scales, opts.param, r, meta, columns);
+  ss::TsvTable branch = ss::BranchTable(r, opts.param, model, columns);
+  branch.PrependMeta(meta);
+  ss::TsvTable special = ss::SpecialPointTable(r, opts.param);
+  special.PrependMeta(meta);
+  ss::WriteFileAtomically(dir + "/branch.tsv", branch.str());
+  ss::WriteFileAtomically(dir + "/special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   ss::WriteFileAtomically(dir + "/bifurcation.gp",
                           ss::BifurcationScript(r, opts.param, title, cmp.applies));

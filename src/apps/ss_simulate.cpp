@@ -9,6 +9,8 @@
 #include <iostream>
 #include <string>
 
+#include "cli/about.hpp"
+#include "cli/physical.hpp"
 #include "cli/study.hpp"
 #include "stickslip/flow.hpp"
 #include "stickslip/model.hpp"
@@ -23,9 +25,10 @@ namespace {
 constexpr const char* kProg = "ss_simulate";
 constexpr double kMaxRows = 1e7;  // rows are held in memory until the atomic write
 constexpr const char* kNotes =
-    "Output: a TSV whose first line is '# t<TAB>x<TAB>xdot<TAB>mode' (mode: slip-below,\n"
-    "stick, slip-above), then '#' comment lines with the model and run settings, then\n"
-    "one row every --dt and one at every switch. Stick rows have xdot == v exactly.\n"
+    "Output: a TSV that starts with '# key: value' lines (tool, command, model, run and\n"
+    "solver settings, status), then the header line 't<TAB>x<TAB>xdot<TAB>mode' (mode:\n"
+    "slip-below, stick, slip-above), then one row every --dt and one at every switch.\n"
+    "Stick rows have xdot == v exactly.\n"
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
     "Exit status: 0 done; 1 numerical or I/O failure (no data file written);\n"
@@ -79,7 +82,7 @@ std::string PlotScript(const std::string& data, const std::string& png, const ss
   std::string s;
   s += "set terminal pngcairo size 1400,600 noenhanced butt font 'Sans,11'\n";
   s += "set output " + GnuplotString(png) + "\n";
-  s += "set datafile separator '\\t'\n";
+  s += "set datafile separator '\\t'\n";  // the header line is skipped as non-numeric
   // The stick set: x' = v, |x + 2 beta v| <= mu_s.
   s += "$omega << EOD\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) + "\n" +
        ss::FormatNumber(mu_s - shift) + "\t" + ss::FormatNumber(v) + "\nEOD\n";
@@ -99,13 +102,11 @@ std::string PlotScript(const std::string& data, const std::string& png, const ss
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
-  if (args.map().count("help")) {
-    cli::PrintHelp(std::cout,
-                   "ss_simulate [--study FILE] [model options] [--x0 X] [--xdot0 Y] [--t_end T] "
-                   "[--dt DT] --out FILE.tsv [--plot]",
-                   desc, kNotes);
+  if (cli::HelpOrVersion(std::cout, args, kProg,
+                         "ss_simulate [--study FILE] [model options] [--x0 X] [--xdot0 Y] "
+                         "[--t_end T] [--dt DT] --out FILE.tsv [--plot]",
+                         desc, kNotes))
     return 0;
-  }
   // All input is checked before anything runs or is written.
   const ss::Params params = cli::ModelFromArguments(args);
   const ss::FlowOptions options = cli::FlowOptionsFromArguments(args);
@@ -130,16 +131,31 @@ int Main(int argc, char** argv) {
   const ss::Model model(params);
   ss::Flow flow(model, options);
   const ss::Vec2 z0(x0, xdot0);
-  ss::TsvTable table({"t", "x", "xdot", "mode"});
-  table.AddComment("ss_simulate " + cli::DescribeModel(params));
-  table.AddComment("start x0=" + ss::FormatNumber(x0) + " xdot0=" + ss::FormatNumber(xdot0) +
-                   " t_end=" + ss::FormatNumber(t_end) + " dt=" + ss::FormatNumber(dt) + " rtol=" +
-                   ss::FormatNumber(options.rtol) + " atol=" + ss::FormatNumber(options.atol) +
-                   " method=" + ss::MethodName(options.method));
+  // With physical inputs, physical copies of t, x and x' follow (seed section 3 scaling).
+  const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
+  std::vector<std::string> columns = {"t", "x", "xdot", "mode"};
+  if (scales) columns.insert(columns.end(), {"t_s", "x_m", "xdot_m_s"});
+  ss::TsvTable table(columns);
+  for (const auto& [key, value] :
+       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), params, options))
+    table.AddMeta(key, value);
+  table.AddMeta("model", cli::DescribeModel(params));
+  table.AddMeta("x0", ss::FormatNumber(x0));
+  table.AddMeta("xdot0", ss::FormatNumber(xdot0));
+  table.AddMeta("t_end", ss::FormatNumber(t_end));
+  table.AddMeta("dt", ss::FormatNumber(dt));
+  if (scales) {
+    table.AddMeta("L", ss::FormatNumber(scales->L) + " m (M g / K)");
+    table.AddMeta("t0", ss::FormatNumber(scales->t0) + " s (sqrt(M / K))");
+  }
   ss::Sample last{std::nan(""), ss::Vec2::Zero(), ss::Mode::kStick};
   auto observer = [&](const ss::Sample& s) {
     if (s.t == last.t && s.z == last.z && s.mode == last.mode) return;  // a repeated point
-    table.AddRow({s.t, s.z[0], s.z[1], ss::ModeName(s.mode)});
+    if (scales)
+      table.AddRow({s.t, s.z[0], s.z[1], ss::ModeName(s.mode), s.t * scales->t0, s.z[0] * scales->L,
+                    s.z[1] * scales->L / scales->t0});
+    else
+      table.AddRow({s.t, s.z[0], s.z[1], ss::ModeName(s.mode)});
     last = s;
   };
   ss::StopRule stop;
@@ -155,6 +171,7 @@ int Main(int argc, char** argv) {
                                "; no output written");
     return 1;
   }
+  table.AddMeta("status", "complete");  // a failed run writes no file
   ss::WriteFileAtomically(out, table.str());
   if (plot) {
     const std::string stem = out.size() > 4 && out.compare(out.size() - 4, 4, ".tsv") == 0
