@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -246,6 +247,68 @@ void ExpectWholePartialBranch(const std::string& path, const std::string& why) {
 
 // ---------------------------------------------------------------------------
 // Bad input: exit 2, one line, nothing written.
+
+TEST_F(ContinueApp, VersionAndShortHelp) {
+  const Result v = Run({"--version"});
+  ASSERT_EQ(v.code, 0) << v.err;
+  EXPECT_EQ(v.out.rfind("ss_continue 0.", 0), 0u) << v.out;
+  const Result h = Run({"-h"});
+  ASSERT_EQ(h.code, 0) << h.err;
+  EXPECT_TRUE(Contains(h.out, "--version"));
+}
+
+// --param mu_s without a range used to fail (0.05 < mu_m); it takes mu_s's own range.
+TEST_F(ContinueApp, ParamMuSRunsOnItsDefaultRange) {
+  const std::string out = OutDir();
+  const Result r = Run({"--param", "mu_s", "--out", out, "--no_plots", "--no_estimates"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
+  EXPECT_EQ(b.meta.at("from"), "0.3");  // 1.2 mu_m
+  EXPECT_EQ(b.meta.at("to"), "0.8");    // 2 mu_s
+  EXPECT_EQ(b.meta.at("mu_s"), "continued");
+}
+
+// Physical inputs, M = 2 kg, K = 8 N/m, g = 9.81: L = 2.4525 m, t0 = 0.5 s, and
+// speeds scale by L / t0 = 4.905 m/s. --param belt_speed finds HB at the closed
+// form sqrt((k1 - 2 beta) / (3 k3)) (seed 3.16) times L / t0.
+TEST_F(ContinueApp, BeltSpeedContinuesInPhysicalUnits) {
+  const std::string out = OutDir();
+  const Result r = Run({"--mass",    "2",      "--stiffness",  "8",
+                        "--damping", "0.4",    "--belt_speed", "1",
+                        "--speed_m", "2.4525", "--param",      "belt_speed",
+                        "--from",    "1.5",    "--to",         "2.4525",
+                        "--out",     out,      "--no_plots",   "--no_estimates"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
+  EXPECT_EQ(b.meta.at("L"), "2.4525 m (M g / K)");
+  EXPECT_EQ(b.meta.at("t0"), "0.5 s (sqrt(M / K))");
+  const int v = b.Column("v"), speed = b.Column("belt_speed"), x = b.Column("x_max"),
+            x_m = b.Column("x_max_m"), period = b.Column("period"), period_s = b.Column("period_s");
+  ASSERT_TRUE(v >= 0 && speed >= 0 && x >= 0 && x_m >= 0 && period >= 0 && period_s >= 0);
+  ASSERT_FALSE(b.rows.empty());
+  EXPECT_NEAR(std::stod(b.rows.front()[speed]), 1.5, 1e-12);
+  EXPECT_NEAR(std::stod(b.rows.back()[speed]), 2.4525, 1e-12);
+  for (const auto& row : b.rows) {
+    EXPECT_NEAR(std::stod(row[speed]), std::stod(row[v]) * 4.905, 1e-12);
+    EXPECT_NEAR(std::stod(row[x_m]), std::stod(row[x]) * 2.4525, 1e-12);
+    if (row[period] != "nan") {
+      EXPECT_NEAR(std::stod(row[period_s]), std::stod(row[period]) * 0.5, 1e-12);
+    }
+  }
+  const Tsv sp = ReadTsv(ReadFile(out + "/special_points.tsv"));
+  const double beta = 0.4 / (2 * std::sqrt(8.0 * 2.0)), k1 = 0.45, k3 = 0.6;
+  int hb = 0;
+  for (const auto& row : sp.rows)
+    if (row.at(0) == "HB") {
+      ++hb;
+      EXPECT_NEAR(std::stod(row.at(1)), std::sqrt((k1 - 2 * beta) / (3 * k3)), 1e-9);
+    }
+  EXPECT_EQ(hb, 1);
+}
+
+TEST_F(ContinueApp, BeltSpeedWithoutPhysicalInputsExits2) {
+  ExpectRejected({"--param", "belt_speed"}, {"--param belt_speed", "physical"});
+}
 
 TEST_F(ContinueApp, UnknownOptionExits2) { ExpectRejected({"--gamma", "1"}, {"--gamma"}); }
 

@@ -128,6 +128,15 @@ TEST_F(SimulateApp, HelpExitsZeroAndListsOptions) {
     EXPECT_TRUE(Contains(r.out, opt));
 }
 
+TEST_F(SimulateApp, VersionAndShortHelp) {
+  const Result v = Run({"--version"});
+  ASSERT_EQ(v.code, 0) << v.err;
+  EXPECT_EQ(v.out.rfind("ss_simulate 0.", 0), 0u) << v.out;
+  const Result h = Run({"-h"});
+  ASSERT_EQ(h.code, 0) << h.err;
+  EXPECT_TRUE(Contains(h.out, "--version"));
+}
+
 TEST_F(SimulateApp, WritesTrajectoryWithExactStick) {
   const std::string out = Path("seed.tsv");
   const Result r = Run({"--study", kStudies + "/seed.ini", "--t_end", "30", "--out", out});
