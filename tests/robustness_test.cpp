@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -228,8 +229,23 @@ class Watchdog {
   std::thread thread_;
 };
 
-double Seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+// The caps below measure this thread's CPU time, not wall time: a hang is
+// work that does not end, and a machine loaded by other jobs must not trip it.
+struct CpuClock {
+  using duration = std::chrono::nanoseconds;
+  using rep = duration::rep;
+  using period = duration::period;
+  using time_point = std::chrono::time_point<CpuClock>;
+  static constexpr bool is_steady = true;
+  static time_point now() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return time_point(duration(static_cast<rep>(ts.tv_sec) * 1000000000 + ts.tv_nsec));
+  }
+};
+
+double Seconds(CpuClock::time_point since) {
+  return std::chrono::duration<double>(CpuClock::now() - since).count();
 }
 
 int SamplesPerLaw() {
@@ -246,7 +262,7 @@ int SamplesPerLaw() {
 class Cap {
  public:
   explicit Cap(double seconds) : seconds_(seconds) { Restart(); }
-  void Restart() { start_ = std::chrono::steady_clock::now(); }
+  void Restart() { start_ = CpuClock::now(); }
   std::function<bool()> Hook() {
     return [this] { return Seconds(start_) > seconds_; };
   }
@@ -254,7 +270,7 @@ class Cap {
 
  private:
   double seconds_;
-  std::chrono::steady_clock::time_point start_;
+  CpuClock::time_point start_;
 };
 
 constexpr double kCallCap = 5.0 * kSlowdown;  // seconds for one Run / StickSlip / PureSlip...
@@ -358,7 +374,7 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally) {
       << what << ": status " << ss::OrbitStatusName(ssr.status) << " without a message";
   const double a_hi = 1.5 * (model.params().mu_s + model.v());
   cap.Restart();
-  const auto scan_start = std::chrono::steady_clock::now();
+  const auto scan_start = CpuClock::now();
   const std::vector<ss::Orbit> found = finder.PureSlipScan(0.005, a_hi, 12);
   if (Seconds(scan_start) > cap.seconds()) {  // the scan reports no statuses: its time tells
     ADD_FAILURE() << what << ": HANG: PureSlipScan(0.005, " << a_hi << ", 12) ran past "
@@ -392,7 +408,7 @@ void ContinueAround(const ss::Params& p, double cap_s, const std::string& what, 
   o.from = 0.8 * p.v;
   o.to = 1.25 * p.v;
   o.max_step = 0.05;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = CpuClock::now();
   o.cancelled = [&] { return Seconds(start) > cap_s; };
   const ss::ContinuationResult r = ss::Continue(p, o);
   tally.Add("continue", ss::ContinuationStatusName(r.status),
@@ -428,7 +444,7 @@ TEST(Robustness, RandomValidModelsEndWithResultOrStatus) {
   std::map<std::string, double> worst;  // slowest sample per stage
   const ss::LawKind laws[] = {ss::LawKind::kCubic, ss::LawKind::kCoulomb, ss::LawKind::kStribeck,
                               ss::LawKind::kLeine};
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = CpuClock::now();
   int samples = 0, exceptions = 0;
   for (int i = 0; i < per_law; ++i) {
     for (const ss::LawKind law : laws) {
@@ -438,7 +454,7 @@ TEST(Robustness, RandomValidModelsEndWithResultOrStatus) {
       ASSERT_EQ(ss::ValidationError(p), "") << what;
       watchdog.Start(what);
       auto stage = [&](const std::string& name, const std::function<void()>& body) {
-        const auto s0 = std::chrono::steady_clock::now();
+        const auto s0 = CpuClock::now();
         try {
           body();
         } catch (const ss::InvalidArgument& e) {
@@ -623,7 +639,7 @@ TEST(Robustness, ContinuePureSlipCorrectorStaysInValidRange) {
   o.from = 0.8 * p.v;
   o.to = 1.25 * p.v;
   o.max_step = 0.05;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = CpuClock::now();
   o.cancelled = [&] { return Seconds(start) > kCallCap; };
   ss::ContinuationResult r;
   EXPECT_NO_THROW(r = ss::Continue(p, o));
@@ -644,7 +660,7 @@ TEST(Robustness, ContinuePointsStayInRange) {
   o.from = 0.8 * p.v;
   o.to = 1.25 * p.v;
   o.max_step = 0.05;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = CpuClock::now();
   o.cancelled = [&] { return Seconds(start) > kCallCap; };
   const ss::ContinuationResult r = ss::Continue(p, o);
   EXPECT_EQ(r.status, ss::ContinuationStatus::kOk) << r.message;

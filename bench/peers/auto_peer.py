@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Times AUTO-07p's compiled executable and ss_continue on the smooth part of the seed
+branch and prints their accuracy side by side (called by auto_peer.sh, which compiles).
+
+References: HB from the closed form sqrt((k1 - 2 beta)/(3 k3)) (seed 3.16); periods and GR
+from ss_continue at rtol 1e-13, atol 1e-15, each period at the exact v of the point it
+checks; that GR is checked against the published 0.3957902888 first."""
+import argparse
+import math
+import os
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+BETA, MU_S, MU_M, V_M = 0.05, 0.4, 0.25, 0.5
+K1 = 3 * (MU_S - MU_M) / (2 * V_M)
+K3 = (MU_S - MU_M) / (2 * V_M**3)
+HB_EXACT = math.sqrt((K1 - 2 * BETA) / (3 * K3))
+GR_PUBLISHED = 0.3957902888  # 10 digits
+V_POINTS = (0.435, 0.42, 0.40)  # the UZR velocities of c.po
+RANGE = ["--param", "v", "--from", "0.39", "--to", "0.5", "--no_plots", "--no_estimates"]
+TIGHT = ["--rtol", "1e-13", "--atol", "1e-15"]
+# Largest HB error accepted from AUTO: its location tolerance EPSS is 1e-5 by default.
+HB_LIMIT = {"default": 1e-4, "tight": 1e-6}
+
+
+def die(msg):
+    print("auto_peer: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def timed(cmd, cwd=None, env=None):
+    t0 = time.perf_counter()
+    r = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.PIPE, text=True)
+    dt = time.perf_counter() - t0
+    if r.returncode != 0:
+        die(f"{' '.join(cmd)} failed (exit {r.returncode}): {r.stderr.strip()[-300:]}")
+    return dt
+
+
+def run_auto(work, settings, env):
+    """One HB run and one periodic run; returns the wall time of the two executables."""
+    total = 0.0
+    for stage in ("hb", "po"):
+        suffix = "" if settings == "default" else ".tight"
+        shutil.copy(os.path.join(work, f"c.{stage}{suffix}"), os.path.join(work, "fort.2"))
+        total += timed(["./stickslip.exe"], cwd=work, env=env)
+        os.replace(os.path.join(work, "fort.7"), os.path.join(work, f"b.{stage}.{settings}"))
+    return total
+
+
+def parse_b(path):
+    """Labelled points of an AUTO b-file (fort.7) as dicts: TY code and named columns."""
+    names, points = None, []
+    with open(path) as f:
+        for line in f:
+            tok = line.split()
+            if len(tok) > 4 and tok[0] == "0" and tok[1] == "PT":
+                names = re.findall(r"PAR\(\d+\)|L2-NORM|MAX U\(\d+\)|MIN U\(\d+\)|U\(\d+\)",
+                                   line)
+            elif names and tok and tok[0] != "0" and len(tok) == 4 + len(names):
+                if int(tok[3]) == 0:
+                    continue
+                p = dict(zip(names, map(float, tok[4:])))
+                p["TY"] = abs(int(tok[2]))
+                points.append(p)
+    return points
+
+
+def full(p, coarse, fine):
+    """v or T to all its digits: the equation file splits off the part below 1e-5."""
+    return round(p[coarse], 5) + p[fine]
+
+
+def auto_results(work, settings):
+    hb = [p for p in parse_b(os.path.join(work, f"b.hb.{settings}")) if p["TY"] == 3]
+    if len(hb) != 1:
+        die(f"AUTO ({settings}): {len(hb)} Hopf points on steady sliding, expected 1")
+    uz = [p for p in parse_b(os.path.join(work, f"b.po.{settings}")) if p["TY"] == 4]
+    pts = [(full(p, "PAR(1)", "PAR(7)"), full(p, "PAR(6)", "PAR(8)"), p["PAR(9)"]) for p in uz]
+    periods = []
+    for v0 in V_POINTS:
+        near = [(v, t) for v, t, _ in pts if abs(v - v0) < 1e-6]
+        if not near:
+            die(f"AUTO ({settings}): no periodic orbit at v = {v0} (branch empty?)")
+        periods.append(near[0])
+    gr = [v for v, _, g in pts if abs(g) < 1e-6]
+    if len(gr) != 1:
+        die(f"AUTO ({settings}): {len(gr)} points with max y = v, expected 1")
+    hb_v = full(hb[0], "PAR(1)", "PAR(7)")
+    if abs(hb_v - HB_EXACT) > HB_LIMIT[settings]:
+        die(f"AUTO ({settings}): HB at v = {hb_v!r}, closed form {HB_EXACT!r}: "
+            "the equation file is wrong")
+    return hb_v, gr[0], periods
+
+
+def rows(out_dir):
+    """branch.tsv rows (v, kind, period) and special points {label: v} of ss_continue."""
+    branch, special = [], {}
+    with open(os.path.join(out_dir, "branch.tsv")) as f:
+        for line in f:
+            if not line.startswith("#"):
+                c = line.rstrip("\n").split("\t")
+                branch.append((float(c[0]), c[1], float(c[3])))
+    with open(os.path.join(out_dir, "special_points.tsv")) as f:
+        for line in f:
+            if not line.startswith("#"):
+                c = line.split("\t")
+                special[c[0]] = float(c[1])
+    return branch, special
+
+
+def tool_period(tool, v, scratch):
+    """Reference period at exactly v: ss_continue at rtol 1e-13, first row."""
+    out = os.path.join(scratch, "ref")
+    timed([tool, "--param", "v", "--from", repr(v), "--to", repr(v + 1e-4), "--no_plots",
+           "--no_estimates", "--out", out] + TIGHT)
+    v_row, kind, period = rows(out)[0][0]
+    if kind != "pure-slip" or v_row != v:
+        die(f"reference at v = {v!r}: first row is {kind} at {v_row!r}")
+    return period
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--work", required=True)
+    ap.add_argument("--tool", required=True)
+    ap.add_argument("--reps", type=int, default=7)
+    ap.add_argument("--threads", default="1", help="OMP_NUM_THREADS for AUTO (default 1)")
+    a = ap.parse_args()
+    if a.reps < 1:
+        die(f"--reps {a.reps}: must be >= 1")
+    env = dict(os.environ, OMP_NUM_THREADS=a.threads)
+    scratch = tempfile.mkdtemp(prefix="auto_peer.")
+    try:
+        report(a, env, scratch)
+    finally:
+        shutil.rmtree(scratch)
+
+
+def report(a, env, scratch):
+    timed([a.tool] + RANGE + TIGHT + ["--out", os.path.join(scratch, "tight")])
+    gr_ref = rows(os.path.join(scratch, "tight"))[1].get("GR")
+    if gr_ref is None or abs(gr_ref - GR_PUBLISHED) > 1e-10:
+        die(f"reference GR {gr_ref!r} is not the published {GR_PUBLISHED}")
+    table = []
+    for settings in ("default", "tight"):
+        ms = statistics.median(run_auto(a.work, settings, env) for _ in range(a.reps)) * 1e3
+        hb, gr, periods = auto_results(a.work, settings)
+        errs = []
+        for v, t in periods:
+            ref = tool_period(a.tool, v, scratch)
+            errs.append(abs(t - ref) / ref)
+            print(f"AUTO {settings:7s} v {v:.12f}  T {t:.13f}  reference {ref:.13f}  "
+                  f"rel. error {errs[-1]:.1e}")
+        label = "NTST 20, EPS* defaults" if settings == "default" else \
+            "NTST 100, EPSL/EPSU/EPSS 1e-10"
+        table.append(("AUTO-07p (IPS 1 + IPS 4)", label, ms, abs(hb - HB_EXACT),
+                      abs(gr - gr_ref), max(errs)))
+        print(f"AUTO {settings:7s} HB {hb!r}  GR {gr!r}")
+
+    out = os.path.join(scratch, "ours")
+    ms = statistics.median(timed([a.tool] + RANGE + ["--out", out])
+                           for _ in range(a.reps)) * 1e3
+    branch, special = rows(out)
+    if "HB" not in special or "GR" not in special:
+        die(f"ss_continue found {sorted(special)}, expected GR and HB")
+    slip = [(v, t) for v, kind, t in branch if kind == "pure-slip"]
+    if not slip:
+        die("ss_continue: no pure-slip rows")
+    errs = []
+    for v0 in V_POINTS:
+        v, t = min(slip, key=lambda r: abs(r[0] - v0))
+        ref = tool_period(a.tool, v, scratch)
+        errs.append(abs(t - ref) / ref)
+        print(f"ours    default v {v:.12f}  T {t:.13f}  reference {ref:.13f}  "
+              f"rel. error {errs[-1]:.1e}")
+    table.append(("ss_continue", "defaults (rtol 1e-11)", ms, abs(special["HB"] - HB_EXACT),
+                  abs(special["GR"] - gr_ref), max(errs)))
+
+    print(f"\nReferences: HB {HB_EXACT!r} (closed form); GR {gr_ref!r} and periods from "
+          f"ss_continue {' '.join(TIGHT)}.\nMedian of {a.reps} runs of the executables "
+          f"(AUTO: OMP_NUM_THREADS={a.threads}, its HB run plus its periodic run).\n")
+    print("| tool | settings | median ms | HB error | GR error | max period error (rel.) |")
+    print("|---|---|---|---|---|---|")
+    for name, label, ms, e_hb, e_gr, e_t in table:
+        print(f"| {name} | {label} | {ms:.1f} | {e_hb:.1e} | {e_gr:.1e} | {e_t:.1e} |")
+
+
+if __name__ == "__main__":
+    main()
