@@ -46,15 +46,29 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
   return t;
 }
 
-TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param) {
-  TsvTable t({"label", param, "period", "x_min", "x_max", "xdot_min", "description"});
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
+                           const std::vector<ExtraColumn>& extra) {
+  std::vector<std::string> cols = {"label", param,      "period",     "x_min",
+                                   "x_max", "xdot_min", "description"};
+  for (const auto& c : extra) {
+    if (c.values.size() != r.special.size())
+      throw InvalidArgument("extra column '" + c.name + "' has " + std::to_string(c.values.size()) +
+                            " values for " + std::to_string(r.special.size()) + " special points");
+    cols.push_back(c.name);
+  }
+  TsvTable t(cols);
   if (r.partial())
     t.AddMeta("status",
               std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
   else
     t.AddMeta("status", "complete");
-  for (const SpecialPoint& s : r.special)
-    t.AddRow({SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description});
+  for (size_t i = 0; i < r.special.size(); ++i) {
+    const SpecialPoint& s = r.special[i];
+    std::vector<TsvTable::Cell> row = {
+        SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description};
+    for (const auto& c : extra) row.emplace_back(c.values[i]);
+    t.AddRow(row);
+  }
   return t;
 }
 

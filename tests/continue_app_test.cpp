@@ -302,6 +302,8 @@ TEST_F(ContinueApp, BeltSpeedContinuesInPhysicalUnits) {
     if (row.at(0) == "HB") {
       ++hb;
       EXPECT_NEAR(std::stod(row.at(1)), std::sqrt((k1 - 2 * beta) / (3 * k3)), 1e-9);
+      EXPECT_NEAR(std::stod(row.at(sp.Column("belt_speed"))),
+                  std::sqrt((k1 - 2 * beta) / (3 * k3)) * 4.905, 1e-8);
     }
   EXPECT_EQ(hb, 1);
 }

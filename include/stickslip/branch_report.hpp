@@ -24,8 +24,10 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::string& model_description,
                      const std::vector<ExtraColumn>& extra = {});
 
-// Columns: label, <param>, period, x_min, x_max, xdot_min, description.
-TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param);
+// Columns: label, <param>, period, x_min, x_max, xdot_min, description, then
+// the extra columns (one value per special point).
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
+                           const std::vector<ExtraColumn>& extra = {});
 
 // A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
 // directory: bifurcation_x.png (x range), bifurcation_xdot.png (x' range),

@@ -124,28 +124,32 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
               << ")\n";
 }
 
-// Physical inputs: the scales in the metadata, and physical copies of the
-// parameter axis (if it has units), x and the period as the last columns.
-void AddPhysical(const cli::Scales& s, const std::string& param, const ss::ContinuationResult& r,
-                 cli::Metadata& meta, std::vector<ss::ExtraColumn>& columns) {
-  meta.insert(meta.end(), {{"L", ss::FormatNumber(s.L) + " m (M g / K)"},
-                           {"t0", ss::FormatNumber(s.t0) + " s (sqrt(M / K))"}});
+// Physical copies of the parameter axis (if it has units), x and the period,
+// for branch points or special points.
+template <typename Point>
+std::vector<ss::ExtraColumn> PhysicalColumns(const cli::Scales& s, const std::string& param,
+                                             const std::vector<Point>& points) {
   const auto axis = cli::AxisOf(param, s);
-  if (axis) {
-    meta.emplace_back("continued_physical",
-                      axis->physical + " = " + param + " / " + ss::FormatNumber(axis->factor));
-    columns.push_back({axis->physical, {}});
-  }
-  columns.push_back({"x_min_m", {}});
-  columns.push_back({"x_max_m", {}});
-  columns.push_back({"period_s", {}});
-  for (const ss::BranchPoint& pt : r.points) {
-    auto col = columns.end() - 3;
+  std::vector<ss::ExtraColumn> c;
+  if (axis) c.push_back({axis->physical, {}});
+  c.insert(c.end(), {{"x_min_m", {}}, {"x_max_m", {}}, {"period_s", {}}});
+  for (const Point& pt : points) {
+    auto col = c.end() - 3;
     if (axis) col[-1].values.push_back(pt.p / axis->factor);
     col[0].values.push_back(pt.x_min * s.L);
     col[1].values.push_back(pt.x_max * s.L);
     col[2].values.push_back(pt.period * s.t0);
   }
+  return c;
+}
+
+// Physical inputs: the scales, and how the physical axis relates to the continued one.
+void AddScales(const cli::Scales& s, const std::string& param, cli::Metadata& meta) {
+  meta.insert(meta.end(), {{"L", ss::FormatNumber(s.L) + " m (M g / K)"},
+                           {"t0", ss::FormatNumber(s.t0) + " s (sqrt(M / K))"}});
+  if (const auto axis = cli::AxisOf(param, s))
+    meta.emplace_back("continued_physical",
+                      axis->physical + " = " + param + " / " + ss::FormatNumber(axis->factor));
 }
 
 int Main(int argc, char** argv) {
@@ -219,11 +223,16 @@ int Main(int argc, char** argv) {
                            {"max_step", ss::FormatNumber(opts.max_step)},
                            {"newton_tol", ss::FormatNumber(opts.orbit.EffectiveNewtonTol())},
                            {"locate_tol", ss::FormatNumber(opts.locate_tol)}});
-  std::vector<ss::ExtraColumn> columns = cmp.columns;
-  if (scales) AddPhysical(*scales, opts.param, r, meta, columns);
+  std::vector<ss::ExtraColumn> columns = cmp.columns, special_columns;
+  if (scales) {
+    AddScales(*scales, opts.param, meta);
+    const auto phys = PhysicalColumns(*scales, opts.param, r.points);
+    columns.insert(columns.end(), phys.begin(), phys.end());
+    special_columns = PhysicalColumns(*scales, opts.param, r.special);
+  }
   ss::TsvTable branch = ss::BranchTable(r, opts.param, model, columns);
   branch.PrependMeta(meta);
-  ss::TsvTable special = ss::SpecialPointTable(r, opts.param);
+  ss::TsvTable special = ss::SpecialPointTable(r, opts.param, special_columns);
   special.PrependMeta(meta);
   ss::WriteFileAtomically(dir + "/branch.tsv", branch.str());
   ss::WriteFileAtomically(dir + "/special_points.tsv", special.str());
