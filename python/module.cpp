@@ -63,6 +63,30 @@ ss::Params MakeParams(const std::string& law, const py::kwargs& kwargs) {
   return p;
 }
 
+// Physical inputs by name (seed section 3 scaling), as ss_continue's --mass ...
+ss::Params FromPhysical(const std::string& law, const py::kwargs& kwargs) {
+  ss::PhysicalParams ph;
+  ph.law = ss::LawFromName(law);
+  const std::pair<const char*, double*> fields[] = {
+      {"mass", &ph.mass},           {"damping", &ph.damping},
+      {"stiffness", &ph.stiffness}, {"belt_speed", &ph.belt_speed},
+      {"gravity", &ph.gravity},     {"mu_s", &ph.mu_s},
+      {"mu_m", &ph.mu_m},           {"speed_m", &ph.speed_m},
+      {"mu_k", &ph.mu_k},           {"speed_s", &ph.speed_s},
+      {"delta", &ph.delta}};
+  for (const auto& item : kwargs) {
+    const std::string name = py::cast<std::string>(item.first);
+    double* field = nullptr;
+    for (const auto& [n, f] : fields)
+      if (name == n) field = f;
+    if (!field) throw ss::InvalidArgument("unknown physical input '" + name + "'");
+    *field = py::cast<double>(item.second);
+  }
+  ss::Params p = ss::ToDimensionless(ph);
+  ss::Validate(p);
+  return p;
+}
+
 py::dict ParamsDict(const ss::Params& p) {
   py::dict d;
   d["law"] = ss::LawName(p.law);
@@ -261,6 +285,10 @@ PYBIND11_MODULE(stickslip, m) {
       .def_readwrite("mu_k", &ss::Params::mu_k)
       .def_readwrite("v_s", &ss::Params::v_s)
       .def_readwrite("delta", &ss::Params::delta)
+      .def_readwrite("k5", &ss::Params::k5)
+      .def_static("from_physical", &FromPhysical, py::arg("law") = "cubic",
+                  "From physical inputs (mass, damping, stiffness, belt_speed, gravity=9.81, "
+                  "mu_s, mu_m, speed_m, mu_k, speed_s, delta) by the seed's scaling; validated.")
       .def_property_readonly("k1", &ss::Params::k1, "cubic law: 3 (mu_s - mu_m) / (2 v_m)")
       .def_property_readonly("k3", &ss::Params::k3, "cubic law: (mu_s - mu_m) / (2 v_m^3)")
       .def("validation_error", &ss::ValidationError, "'' if valid, else one line naming the value")
@@ -284,6 +312,15 @@ PYBIND11_MODULE(stickslip, m) {
       },
       py::arg("params"), py::arg("name"),
       "(from, to): the default continuation range of a parameter around params.");
+
+  m.def(
+      "scales",
+      [](double mass, double stiffness, double gravity) {
+        return py::make_tuple(ss::LengthScale(mass, stiffness, gravity),
+                              ss::TimeScale(mass, stiffness));
+      },
+      py::arg("mass"), py::arg("stiffness"), py::arg("gravity") = 9.81,
+      "(L, t0) = (M g / K, sqrt(M / K)): lengths and times of the dimensionless model.");
 
   const double rtol = ss::FlowOptions().rtol, atol = ss::FlowOptions().atol;
   m.def("simulate", &Simulate, py::arg("params"), py::arg("x0") = 0.0, py::arg("xdot0") = 0.25,

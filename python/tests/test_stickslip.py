@@ -76,6 +76,16 @@ class Errors(unittest.TestCase):
             stickslip.Params(nope=1.0)
 
 
+class Physical(unittest.TestCase):
+    def test_unit_scales_give_the_seed_set(self):
+        p = stickslip.Params.from_physical(mass=1, stiffness=1, gravity=1, damping=0.1,
+                                           belt_speed=0.25, speed_m=0.5)
+        self.assertEqual(p.to_dict(), stickslip.Params().to_dict())
+        self.assertEqual(stickslip.scales(2, 8, 9.81), (2.4525, 0.5))
+        with self.assertRaises(ValueError):
+            stickslip.Params.from_physical(mass=-1)
+
+
 class Sweep(unittest.TestCase):
     def test_beta_sweep_in_threads_matches_the_closed_form(self):
         betas = [0.02, 0.05, 0.08]
