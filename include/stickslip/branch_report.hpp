@@ -11,35 +11,35 @@
 
 namespace stickslip {
 
-// An extra column of branch.tsv, one value per point (nan where it does not apply).
+/// An extra column of branch.tsv, one value per point (nan where it does not apply).
 struct ExtraColumn {
   std::string name;
   std::vector<double> values;
 };
 
-// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
-// t_stick, multiplier, stable, amplitude, then the extra columns. A partial
-// result says so in a comment line after the header.
+/// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
+/// t_stick, multiplier, stable, amplitude, then the extra columns. A partial
+/// result says so in a comment line after the header.
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::string& model_description,
                      const std::vector<ExtraColumn>& extra = {});
 
-// Columns: label, <param>, period, x_min, x_max, xdot_min, description, then
-// the extra columns (one value per special point).
+/// Columns: label, <param>, period, x_min, x_max, xdot_min, description, then
+/// the extra columns (one value per special point).
 TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
                            const std::vector<ExtraColumn>& extra = {});
 
-// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
-// directory: bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
-// period.png and multiplier.png against the parameter; stable solid, unstable
-// dashed, special points marked and labelled. The variable `suffix` (default
-// empty) is appended to every output name, so a caller can render to
-// temporary names and rename. With estimates (the columns of
-// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
-// range of the branch against the seed's and the averaging estimates.
+/// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
+/// directory: bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
+/// period.png and multiplier.png against the parameter; stable solid, unstable
+/// dashed, special points marked and labelled. The variable `suffix` (default
+/// empty) is appended to every output name, so a caller can render to
+/// temporary names and rename. With estimates (the columns of
+/// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
+/// range of the branch against the seed's and the averaging estimates.
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
                               const std::string& title, bool estimates = false);
-// The output files BifurcationScript draws.
+/// The output files BifurcationScript draws.
 std::vector<std::string> BifurcationFigures(bool estimates);
 
 }  // namespace stickslip

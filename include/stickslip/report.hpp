@@ -8,14 +8,14 @@
 
 namespace stickslip {
 
-// Writes `content` to a new file in the directory of `path`, then renames it
-// over `path`: readers see the old file or the whole new one, never a part.
-// On failure the temporary file is removed and Error is thrown, naming the
-// path and the reason (errno text); `path` is then unchanged.
+/// Writes `content` to a new file in the directory of `path`, then renames it
+/// over `path`: readers see the old file or the whole new one, never a part.
+/// On failure the temporary file is removed and Error is thrown, naming the
+/// path and the reason (errno text); `path` is then unchanged.
 void WriteFileAtomically(const std::string& path, const std::string& content);
 
-// A number as TSV text: the shortest form that reads back to the same double
-// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
+/// A number as TSV text: the shortest form that reads back to the same double
+/// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
 std::string FormatNumber(double x);
 
 /// A tab-separated table that describes itself. Layout:
@@ -27,12 +27,12 @@ std::string FormatNumber(double x);
 /// it with `set datafile columnheaders` ('#' lines are comments).
 class TsvTable {
  public:
-  // Throws InvalidArgument if there are no columns or a name is empty or
-  // contains a tab or newline.
+  /// Throws InvalidArgument if there are no columns or a name is empty or
+  /// contains a tab or newline.
   explicit TsvTable(std::vector<std::string> columns);
 
-  // One cell: a number (formatted by FormatNumber) or text without tabs or
-  // newlines.
+  /// One cell: a number (formatted by FormatNumber) or text without tabs or
+  /// newlines.
   class Cell {
    public:
     Cell(double x) : text_(FormatNumber(x)) {}                // NOLINT: implicit by design
@@ -57,13 +57,13 @@ class TsvTable {
   void AddMeta(const std::string& key, const std::string& value);
   /// The same lines, placed before every line added so far.
   void PrependMeta(const std::vector<std::pair<std::string, std::string>>& lines);
-  // Throws InvalidArgument if the cell count differs from the column count
-  // or a text cell has a tab or newline.
+  /// Throws InvalidArgument if the cell count differs from the column count
+  /// or a text cell has a tab or newline.
   void AddRow(const std::vector<Cell>& cells);
 
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t rows() const { return rows_; }
-  // The whole table as text, ending with a newline.
+  /// The whole table as text, ending with a newline.
   std::string str() const;
 
  private:
@@ -73,11 +73,11 @@ class TsvTable {
   std::size_t rows_ = 0;
 };
 
-// Runs `gnuplot script_path` with working directory `workdir` (empty: the
-// current one), so relative paths inside the script resolve there; a relative
-// script_path is taken relative to the caller's current directory. Returns
-// false and sets *error (if not null) to one line when gnuplot is missing,
-// cannot start, or exits non-zero (with the last line gnuplot wrote to stderr).
+/// Runs `gnuplot script_path` with working directory `workdir` (empty: the
+/// current one), so relative paths inside the script resolve there; a relative
+/// script_path is taken relative to the caller's current directory. Returns
+/// false and sets *error (if not null) to one line when gnuplot is missing,
+/// cannot start, or exits non-zero (with the last line gnuplot wrote to stderr).
 bool RunGnuplot(const std::string& script_path, const std::string& workdir, std::string* error);
 
 }  // namespace stickslip

@@ -7,6 +7,7 @@
 
 namespace stickslip {
 
+/// A root or a minimum: the point, f there, and the evaluations spent.
 struct RootResult {
   bool ok = false;  // false: no sign change on the bracket, or a non-finite value
   double x = 0;
@@ -16,7 +17,7 @@ struct RootResult {
 
 /// Root of f on [a, b] with f(a) f(b) <= 0, to a bracket of width <= xtol
 /// (boost::math::tools::toms748_solve); x is the point of smallest |f| seen.
-// fa, fb are f(a), f(b) if already known.
+/// fa, fb are f(a), f(b) if already known.
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double fa,
                     double fb, double xtol, int max_evaluations = 200);
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double xtol,
