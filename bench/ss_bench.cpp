@@ -9,7 +9,7 @@
 //   regularised  tanh(u / eps) friction, BDF, transient + shooting
 //                (regularised.hpp), eps 1e-1 .. 1e-6.
 // Errors against references computed here by the independent long-double
-// integrator (tests/reference/reference_orbit.hpp) and the closed-form Hopf
+// integrator (reference/reference_orbit.hpp) and the closed-form Hopf
 // point sqrt((k1 - 2 beta) / (3 k3)) (seed 3.16). Wall times are medians.
 //
 // Usage: ss_bench [--out DIR] [--quick] [--no_plot]; or scripts/bench.sh, which
@@ -38,6 +38,7 @@
 #include "regularised.hpp"
 #include "stickslip/continuation.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 #include "stickslip/report.hpp"
 #include "stickslip/version.hpp"
 
@@ -47,7 +48,7 @@ namespace {
 
 namespace ss = stickslip;
 namespace ref = stickslip::reference;
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+using ss::kNan;
 
 // The fixed belt speeds: stick-slip up to 0.39 (< GR ~ 0.3958), pure slip at
 // 0.42 and 0.44 (HB ~ 0.44096, multiplier ~0.993: slow transients there).

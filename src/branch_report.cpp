@@ -5,8 +5,26 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 
 namespace stickslip {
+
+std::vector<std::pair<std::string, std::string>> SummaryFields(const ContinuationResult& r) {
+  const ContinuationCounts& c = r.counts;
+  const ContinuationTimes& t = r.seconds;
+  auto sec = [](double x) { return Num(x, 3); };
+  return {{"orbit_solves", std::to_string(c.orbit_solves)},
+          {"return_maps", std::to_string(c.return_maps)},
+          {"newton_iterations", std::to_string(c.newton_iterations)},
+          {"rejected_steps", std::to_string(c.rejected_steps)},
+          {"integrator_steps", std::to_string(c.integrator_steps)},
+          {"seconds_equilibrium", sec(t.equilibrium)},
+          {"seconds_stick_slip", sec(t.stick_slip)},
+          {"seconds_pure_slip", sec(t.pure_slip)},
+          {"seconds_switching", sec(t.switching)},
+          {"seconds_discovery", sec(t.discovery)},
+          {"seconds_total", sec(t.total)}};
+}
 
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::string& model_description, const std::vector<ExtraColumn>& extra) {
@@ -26,6 +44,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
               std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
   else
     t.AddMeta("status", "complete");
+  for (const auto& kv : SummaryFields(r)) t.AddMeta(kv.first, kv.second);
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
     std::vector<TsvTable::Cell> row = {p.p,

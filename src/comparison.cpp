@@ -1,14 +1,13 @@
 #include "stickslip/comparison.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include "stickslip/estimates.hpp"
+#include "stickslip/numbers.hpp"
 
 namespace stickslip {
 
 namespace {
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
 void Track(const EstimateCell& c, double p, double* max_err, double* p_at, int* count) {
   if (!c.applies) return;

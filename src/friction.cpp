@@ -27,8 +27,8 @@ Friction::Friction(const Params& p) : law_(p.law), mu_s_(p.mu_s), a_(0), b_(0), 
 double Friction::Mu(double s) const {
   switch (law_) {
     case LawKind::kCubic: {  // seed (3.3): mu_s - k1 s + k3 s^3, with the quintic - k5 s^5
-      const double s2 = s * s;
-      return mu_s_ - a_ * s + b_ * s2 * s - c_ * s2 * s2 * s;
+      // The cubic terms in the seed's order, so that k5 = 0 rounds as before.
+      return mu_s_ - a_ * s + b_ * s * s * s - c_ * s * s * s * s * s;
     }
     case LawKind::kCoulomb:
       return a_;
@@ -43,8 +43,7 @@ double Friction::Mu(double s) const {
 double Friction::DMu(double s) const {
   switch (law_) {
     case LawKind::kCubic: {
-      const double s2 = s * s;
-      return -a_ + 3.0 * b_ * s2 - 5.0 * c_ * s2 * s2;
+      return -a_ + 3.0 * b_ * s * s - 5.0 * c_ * s * s * s * s;
     }
     case LawKind::kCoulomb:
       return 0.0;

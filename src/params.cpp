@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <iterator>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 
 namespace stickslip {
 
@@ -52,8 +53,36 @@ std::vector<std::string> ParameterNames(LawKind law) {
   return names;
 }
 
+namespace {
+// The one table of parameter names and the members they name.
+struct Entry {
+  const char* name;
+  double Params::*member;
+};
+constexpr Entry kTable[] = {
+    {"beta", &Params::beta}, {"v", &Params::v},         {"mu_s", &Params::mu_s},
+    {"mu_m", &Params::mu_m}, {"v_m", &Params::v_m},     {"mu_k", &Params::mu_k},
+    {"v_s", &Params::v_s},   {"delta", &Params::delta}, {"k5", &Params::k5}};
+}  // namespace
+
 std::vector<std::string> AllParameterNames() {
-  return {"beta", "v", "mu_s", "mu_m", "v_m", "mu_k", "v_s", "delta", "k5"};
+  std::vector<std::string> names;
+  for (const Entry& e : kTable) names.push_back(e.name);
+  return names;
+}
+
+std::string ParameterNameList() {
+  std::string list;
+  const size_t n = std::size(kTable);
+  for (size_t i = 0; i < n; ++i)
+    list += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + kTable[i].name;
+  return list;
+}
+
+double Params::*ParameterMember(const std::string& name) {
+  for (const Entry& e : kTable)
+    if (name == e.name) return e.member;
+  throw InvalidArgument("unknown parameter '" + name + "' (expected " + ParameterNameList() + ")");
 }
 
 bool IsParameterName(const std::string& name) {
@@ -61,44 +90,23 @@ bool IsParameterName(const std::string& name) {
   return std::find(all.begin(), all.end(), name) != all.end();
 }
 
+double GetParameter(const Params& p, const std::string& name) { return p.*ParameterMember(name); }
+
+void SetParameter(Params& p, const std::string& name, double value) {
+  p.*ParameterMember(name) = value;
+}
+
 namespace {
-double* Field(Params& p, const std::string& name) {
-  if (name == "beta") return &p.beta;
-  if (name == "v") return &p.v;
-  if (name == "mu_s") return &p.mu_s;
-  if (name == "mu_m") return &p.mu_m;
-  if (name == "v_m") return &p.v_m;
-  if (name == "mu_k") return &p.mu_k;
-  if (name == "v_s") return &p.v_s;
-  if (name == "delta") return &p.delta;
-  if (name == "k5") return &p.k5;
-  throw InvalidArgument("unknown parameter '" + name +
-                        "' (expected beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5)");
-}
-
-std::string Num(double x) {
-  std::ostringstream os;
-  os.precision(12);
-  os << x;
-  return os.str();
-}
-
 // The quintic term: k5 >= 0, and mu > 0 at the steady state's slip speed v.
 std::string QuinticError(const Params& p) {
-  if (p.k5 < 0) return "k5 = " + Num(p.k5) + " must be >= 0";
+  if (p.k5 < 0) return "k5 = " + Num(p.k5, 12) + " must be >= 0";
   const double v = p.v, mu = p.mu_s - p.k1() * v + p.k3() * v * v * v - p.k5 * std::pow(v, 5);
   if (!(mu > 0))
-    return "k5 = " + Num(p.k5) + " makes mu(v) = " + Num(mu) +
-           " <= 0 at the belt speed v = " + Num(v) + " (steady sliding is not physical)";
+    return "k5 = " + Num(p.k5, 12) + " makes mu(v) = " + Num(mu, 12) +
+           " <= 0 at the belt speed v = " + Num(v, 12) + " (steady sliding is not physical)";
   return "";
 }
 }  // namespace
-
-double GetParameter(const Params& p, const std::string& name) {
-  return *Field(const_cast<Params&>(p), name);
-}
-
-void SetParameter(Params& p, const std::string& name, double value) { *Field(p, name) = value; }
 
 ParameterRange DefaultRange(const Params& base, const std::string& name) {
   const double x = GetParameter(base, name);  // throws on an unknown name
@@ -116,26 +124,29 @@ ParameterRange DefaultRange(const Params& base, const std::string& name) {
 std::string ValidationError(const Params& p) {
   for (const auto& name : ParameterNames(p.law)) {
     const double x = GetParameter(p, name);
-    if (!std::isfinite(x)) return name + " = " + Num(x) + " is not a finite number";
+    if (!std::isfinite(x)) return name + " = " + Num(x, 12) + " is not a finite number";
   }
-  if (p.beta < 0) return "beta = " + Num(p.beta) + " must be >= 0";
-  if (p.v <= 0) return "v = " + Num(p.v) + " must be > 0";
-  if (p.mu_s <= 0) return "mu_s = " + Num(p.mu_s) + " must be > 0";
+  if (p.beta < 0) return "beta = " + Num(p.beta, 12) + " must be >= 0";
+  if (p.v <= 0) return "v = " + Num(p.v, 12) + " must be > 0";
+  if (p.mu_s <= 0) return "mu_s = " + Num(p.mu_s, 12) + " must be > 0";
   switch (p.law) {
     case LawKind::kCubic:
-      if (p.mu_m <= 0) return "mu_m = " + Num(p.mu_m) + " must be > 0";
-      if (p.mu_m >= p.mu_s) return "mu_m = " + Num(p.mu_m) + " must be < mu_s = " + Num(p.mu_s);
-      if (p.v_m <= 0) return "v_m = " + Num(p.v_m) + " must be > 0";
+      if (p.mu_m <= 0) return "mu_m = " + Num(p.mu_m, 12) + " must be > 0";
+      if (p.mu_m >= p.mu_s)
+        return "mu_m = " + Num(p.mu_m, 12) + " must be < mu_s = " + Num(p.mu_s, 12);
+      if (p.v_m <= 0) return "v_m = " + Num(p.v_m, 12) + " must be > 0";
       if (const std::string e = QuinticError(p); !e.empty()) return e;
       break;
     case LawKind::kCoulomb:
     case LawKind::kStribeck:
-      if (p.mu_k <= 0) return "mu_k = " + Num(p.mu_k) + " must be > 0";
-      if (p.mu_k >= p.mu_s) return "mu_k = " + Num(p.mu_k) + " must be < mu_s = " + Num(p.mu_s);
-      if (p.law == LawKind::kStribeck && p.v_s <= 0) return "v_s = " + Num(p.v_s) + " must be > 0";
+      if (p.mu_k <= 0) return "mu_k = " + Num(p.mu_k, 12) + " must be > 0";
+      if (p.mu_k >= p.mu_s)
+        return "mu_k = " + Num(p.mu_k, 12) + " must be < mu_s = " + Num(p.mu_s, 12);
+      if (p.law == LawKind::kStribeck && p.v_s <= 0)
+        return "v_s = " + Num(p.v_s, 12) + " must be > 0";
       break;
     case LawKind::kLeine:
-      if (p.delta < 0) return "delta = " + Num(p.delta) + " must be >= 0";
+      if (p.delta < 0) return "delta = " + Num(p.delta, 12) + " must be >= 0";
       break;
   }
   return "";
@@ -154,7 +165,7 @@ double TimeScale(double mass, double stiffness) { return std::sqrt(mass / stiffn
 namespace {
 void RequirePositive(const char* name, double x) {
   if (!std::isfinite(x) || x <= 0)
-    throw InvalidArgument(std::string(name) + " = " + Num(x) + " must be a finite number > 0");
+    throw InvalidArgument(std::string(name) + " = " + Num(x, 12) + " must be a finite number > 0");
 }
 }  // namespace
 
@@ -163,7 +174,7 @@ Params ToDimensionless(const PhysicalParams& phys) {
   RequirePositive("stiffness", phys.stiffness);
   RequirePositive("gravity", phys.gravity);
   if (!std::isfinite(phys.damping) || phys.damping < 0)
-    throw InvalidArgument("damping = " + Num(phys.damping) + " must be a finite number >= 0");
+    throw InvalidArgument("damping = " + Num(phys.damping, 12) + " must be a finite number >= 0");
   const double L = LengthScale(phys.mass, phys.stiffness, phys.gravity);
   const double t0 = TimeScale(phys.mass, phys.stiffness);
   const double speed = L / t0;  // V = v L / t0

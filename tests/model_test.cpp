@@ -1,5 +1,5 @@
 // The Filippov model: steady sliding, Hopf point, modes, saltation matrices
-// (design notes, section 1; seed eqs. 3.5-3.8, 3.16).
+// (seed eqs. 3.5-3.8, 3.16).
 #include "stickslip/model.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,8 @@
 // Parameters: validation messages, names, the seed's scaling (section 3).
 #include "stickslip/params.hpp"
 
+#include "stickslip/parameter_axis.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -265,6 +267,29 @@ TEST(Params, DefaultRangesAreValidAtBothEnds) {
   EXPECT_LT(v.from, hopf);
   EXPECT_GT(v.to, hopf);
   EXPECT_THROW(DefaultRange(Seed(), "gamma"), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+TEST(ParameterAxis, NamesTheSameMemberAsGetAndSet) {
+  Params base;
+  double x = 0.125;
+  for (const std::string& name : AllParameterNames()) {
+    const ParameterAxis axis(name);
+    const Params q = axis.At(base, x);
+    EXPECT_EQ(GetParameter(q, name), x) << name;
+    EXPECT_EQ(axis.Get(q), x) << name;
+    Params r = base;
+    SetParameter(r, name, x);
+    EXPECT_EQ(axis.Get(r), x) << name;
+    x += 0.5;
+  }
+  EXPECT_THROW(ParameterAxis("gamma"), InvalidArgument);
+  EXPECT_EQ(ParameterNameList(), "beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5");
 }
 
 }  // namespace

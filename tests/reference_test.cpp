@@ -1,4 +1,4 @@
-// The reference integrator against closed forms and published values (design notes, section 1).
+// The reference integrator against closed forms and published values (seed eqs. 3.5, 3.16; Leine et al. 1998).
 #include <gtest/gtest.h>
 
 #include <cmath>

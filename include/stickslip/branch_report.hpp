@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stickslip/continuation.hpp"
@@ -11,15 +12,15 @@
 
 namespace stickslip {
 
-/// An extra column of branch.tsv, one value per point (nan where it does not apply).
-struct ExtraColumn {
-  std::string name;
-  std::vector<double> values;
-};
+/// The result's counts and seconds per phase as (key, value) text, in a fixed
+/// order: orbit_solves, return_maps, newton_iterations, rejected_steps,
+/// integrator_steps, seconds_equilibrium, ..., seconds_total.
+std::vector<std::pair<std::string, std::string>> SummaryFields(const ContinuationResult& r);
 
 /// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
-/// t_stick, multiplier, stable, amplitude, then the extra columns. A partial
-/// result says so in a comment line after the header.
+/// t_stick, multiplier, stable, amplitude, then the extra columns. Metadata
+/// lines before the header: model, status (partial or complete), then the
+/// SummaryFields as `# key: value`.
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::string& model_description,
                      const std::vector<ExtraColumn>& extra = {});

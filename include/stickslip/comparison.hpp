@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/branch_report.hpp"
 #include "stickslip/continuation.hpp"
+#include "stickslip/report.hpp"
 
 namespace stickslip {
 

@@ -75,11 +75,33 @@ enum class ContinuationStatus {
 };
 const char* ContinuationStatusName(ContinuationStatus s);
 
+// Work done, for the summary and branch.tsv's metadata.
+struct ContinuationCounts {
+  long orbit_solves = 0;       // stick-slip orbits and fixed-p pure-slip shootings
+  long return_maps = 0;        // evaluations of G(a, p), the pure-slip return map
+  long newton_iterations = 0;  // pure-slip corrector and shooting iterations
+  long rejected_steps = 0;     // steps halved on any branch
+  long integrator_steps = 0;   // Flow::total_steps() over the whole run
+};
+
+// Wall-clock seconds per phase; each second is counted in one phase only.
+struct ContinuationTimes {
+  double equilibrium = 0;  // steady sliding and its Hopf points
+  double stick_slip = 0;   // stick-slip branches
+  double pure_slip = 0;    // pure-slip branches (PALC), their folds and Hopf ends
+  double switching = 0;    // grazing points: located, recorded, the next branch found
+  double discovery = 0;    // the periodic orbit at `from` and the grid scan for more
+  double total = 0;
+};
+
 struct ContinuationResult {
   ContinuationStatus status = ContinuationStatus::kOk;
   std::string message;
+  std::string param;  // the parameter axis the points are on
   std::vector<BranchPoint> points;
   std::vector<SpecialPoint> special;
+  ContinuationCounts counts;
+  ContinuationTimes seconds;
   bool partial() const { return status != ContinuationStatus::kOk; }
 };
 

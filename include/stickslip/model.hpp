@@ -23,7 +23,7 @@ enum class Mode {
 const char* ModeName(Mode m);  // "slip-below", "stick", "slip-above"
 
 /// Steady sliding x = mu(v), x' = 0; eigenvalues solve
-/// lambda^2 + (2 beta + mu'(v)) lambda + 1 = 0 (design notes, section 1).
+/// lambda^2 + (2 beta + mu'(v)) lambda + 1 = 0 (linearised seed eq. 3.5).
 struct Equilibrium {
   double x = 0;
   double damping = 0;  // 2 beta + mu'(v): stable when > 0, Hopf where it vanishes
@@ -72,9 +72,9 @@ class Model {
   /// The mode a trajectory takes after reaching x' = v at x coming from `from`.
   Mode ModeAfterArrival(Mode from, double x) const;
 
-  /// Saltation matrices (design notes): entering stick diag(1, 0); leaving stick
-  /// I + (f_slip - f_stick) g^T / (g^T f_stick) with g = (1, 0); crossing x' = v
-  /// I + (f_after - f_before) n^T / (n^T f_before).
+  /// Saltation matrices (Leine et al. 1998; di Bernardo et al. 2008): entering stick diag(1, 0);
+  /// leaving stick I + (f_slip - f_stick) g^T / (g^T f_stick) with g = (1, 0); crossing x' = v I +
+  /// (f_after - f_before) n^T / (n^T f_before).
   static Mat2 SaltationStickIn();
   Mat2 SaltationStickOut() const;
   Mat2 SaltationCrossing(Mode before, Mode after, const Vec2& z) const;

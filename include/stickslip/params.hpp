@@ -6,7 +6,7 @@
 
 namespace stickslip {
 
-/// Friction laws mu(s), s = |x' - v| (design notes, section 1).
+/// Friction laws mu(s), s = |x' - v| (seed eq. 3.3 and the README's table of laws).
 enum class LawKind {
   kCubic,     // mu_s - k1 s + k3 s^3 - k5 s^5, seed eq. (3.3) (k5 = 0), Thomsen & Fidlin (2003)
   kCoulomb,   // mu_k for s > 0, static mu_s
@@ -47,6 +47,10 @@ std::vector<std::string> ParameterNames(LawKind law);
 std::vector<std::string> AllParameterNames();
 /// True for any name in AllParameterNames().
 bool IsParameterName(const std::string& name);
+/// "beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta", for messages.
+std::string ParameterNameList();
+/// The member of Params a name stands for; throws InvalidArgument on an unknown name.
+double Params::*ParameterMember(const std::string& name);
 
 /// A continuation range of one parameter.
 struct ParameterRange {

@@ -18,6 +18,12 @@ void WriteFileAtomically(const std::string& path, const std::string& content);
 /// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
 std::string FormatNumber(double x);
 
+/// An extra column of a table, one value per row (nan where it does not apply).
+struct ExtraColumn {
+  std::string name;
+  std::vector<double> values;
+};
+
 /// A tab-separated table that describes itself. Layout:
 ///   # key: value                metadata (AddMeta / AddComment lines), in order
 ///   col1<TAB>col2<TAB>...       the header line, without '#'

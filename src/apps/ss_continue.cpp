@@ -44,11 +44,14 @@ void OnSignal(int sig) { g_signal = sig; }
 po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
   d.add_options()("param", cli::Value()->value_name("NAME"),
-                  "parameter to continue: beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5 "
-                  "(default v)")("from", cli::Value()->value_name("A"),
-                                 "start value; the first row is here (default: the parameter's "
-                                 "range, v 0.05, beta 0.01, mu_s 1.2 mu_m, ...)")(
-      "to", cli::Value()->value_name("B"), "end value, != from (default: v 0.5, beta 0.3, ...)")(
+                  ("parameter to continue: " + ss::ParameterNameList() +
+                   " (default v); with physical inputs also belt_speed, damping, speed_m, "
+                   "speed_s, delta_phys, in physical units")
+                      .c_str())(
+      "from", cli::Value()->value_name("A"),
+      "start value; the first row is here (default: the parameter's range, v 0.05, beta 0.01, "
+      "mu_s 1.2 mu_m, ...)")("to", cli::Value()->value_name("B"),
+                             "end value, != from (default: v 0.5, beta 0.3, ...)")(
       "out", cli::Value()->value_name("DIR"), "output directory (default plots)")(
       "max_step", cli::Value()->value_name("F"),
       "largest step as a fraction of |to - from| (default 0.01: >= 100 points)")(
@@ -262,6 +265,15 @@ int Main(int argc, char** argv) {
             << r.points.size() << " points: " << counts[0] << " stick-slip, " << counts[1]
             << " pure-slip, " << counts[2] << " equilibrium, in " << Fixed(seconds * 1e3, 1)
             << " ms\n";
+  const ss::ContinuationCounts& n = r.counts;
+  const ss::ContinuationTimes& t = r.seconds;
+  std::cout << "work: " << n.orbit_solves << " orbit solves, " << n.return_maps << " return maps, "
+            << n.newton_iterations << " Newton iterations, " << n.rejected_steps
+            << " rejected steps, " << n.integrator_steps << " integrator steps\n"
+            << "time (ms): equilibrium " << Fixed(t.equilibrium * 1e3, 1) << ", stick-slip "
+            << Fixed(t.stick_slip * 1e3, 1) << ", pure-slip " << Fixed(t.pure_slip * 1e3, 1)
+            << ", switching " << Fixed(t.switching * 1e3, 1) << ", discovery "
+            << Fixed(t.discovery * 1e3, 1) << "\n";
   std::cout << "special points:\n";
   if (r.special.empty()) std::cout << "  none\n";
   for (const auto& s : r.special) {

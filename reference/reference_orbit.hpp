@@ -1,6 +1,6 @@
-// Independent reference integrator for the belt model (design notes, section 1), used by the
+// Independent reference integrator for the belt model (seed eq. 3.5), used by the
 // tests and the benchmark to check the CVODE-based library. It shares no physics with the
-// library: the friction laws and the slip fields are re-derived here from the design notes, and
+// library: the friction laws and the slip fields are re-derived here from the seed (3.3), (3.5), and
 // stickslip::Params is only an input carrier. Integration is Boost.Odeint's Runge-Kutta-Fehlberg
 // 7(8) in long double with step control; every event (arrival at x' = v, extrema of x and x') is
 // located by re-stepping from the start of the accepted step and bisecting on the step length.
@@ -25,7 +25,7 @@ namespace stickslip::reference {
 
 using Real = long double;
 
-// Known answers (design notes, section 1, "Analytic estimates").
+// Known answers: closed forms and published values (README, "The seed's claims, tested").
 // Leine, van Campen, de Kraker, van den Steen (1998), leine law, beta = 0, mu_s = 1,
 // delta = 3, v = 0.2.
 inline constexpr Real kLeineXMax = 1.133944669704L;
@@ -57,7 +57,7 @@ inline Real CubicHopfSpeed(const Params& p) {
   return std::sqrt((CubicK1(p) - 2 * Real(p.beta)) / (3 * CubicK3(p)));
 }
 
-// Friction magnitude mu(s), s = |x' - v|, and mu'(s) (design notes, table of laws). The smooth
+// Friction magnitude mu(s), s = |x' - v|, and mu'(s) (README, friction laws). The smooth
 // branch is also evaluated at small s < 0 when a step overshoots the switching surface.
 struct Law {
   explicit Law(const Params& p)
@@ -115,7 +115,7 @@ using State = std::array<Real, N>;
 // Smooth slip field of one mode, seed (3.5): x' = y, y' = -x - 2 beta y + F(y - v) with
 // F(u) = -sgn(u) mu(|u|); sigma = -1 below the belt (F = +mu(v - y)), +1 above
 // (F = -mu(y - v)). With N = 5 it also carries q' = tr J = -2 beta - mu'(s) (trace formula,
-// design notes "Multipliers") and the variation (dx, dy) of the state w.r.t. the initial x.
+// Leine et al. 1998) and the variation (dx, dy) of the state w.r.t. the initial x.
 template <std::size_t N>
 struct SlipField {
   static_assert(N == 2 || N == 5, "state is (x, y) or (x, y, q, dx, dy)");
@@ -226,7 +226,7 @@ void AddStepExtremes(const Stepper<N>& st, const State<N>& s0, Real t0, Real h, 
 // Integrates mode sigma from (x, v) until the first arrival at y = v (d = sigma (y - v) falls
 // to 0). Near grazing the arrival is an almost tangential touch, so besides sign changes of d
 // at step ends it watches the minimum of d (root of d' = sigma y'): if that minimum is <= 0,
-// the crossing is located between the step start and the minimum (design notes, "Hard cases").
+// the crossing is located between the step start and the minimum (di Bernardo et al. 2008, grazing).
 // The start itself (d = 0) is not an event. Returns false if no arrival before t_max.
 inline bool SlipSegment(const Model& m, int sigma, Real x_start, Real tol, Real t_max, Real& t,
                         Real& x_arrival, Extremes& e) {
@@ -281,8 +281,8 @@ struct StickSlipOrbit {
   Real x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
 };
 
-// The stick-slip orbit through the exit point (x0, v), x0 = mu_s - 2 beta v (design notes,
-// "The return map on Ω is constant"): slip from (x0, v) until the first arrival in Ω, crossing
+// The stick-slip orbit through the exit point (x0, v), x0 = mu_s - 2 beta v (seed,
+// case 1: the return map on Ω is constant): slip from (x0, v) until the first arrival in Ω, crossing
 // x' = v outside the stick interval into the other slip mode, then stick for (x0 - x_a) / v.
 inline StickSlipOrbit StickSlip(const Params& p, Real tol = 1e-17L, Real t_max = 2000,
                                 int max_crossings = 50) {

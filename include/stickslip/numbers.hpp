@@ -1,0 +1,15 @@
+// Small numeric helpers shared by the library: the NaN that marks a value
+// that does not apply, and numbers as text in messages.
+#pragma once
+
+#include <limits>
+#include <string>
+
+namespace stickslip {
+
+inline constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+// x with `digits` significant digits (as printf's %.<digits>g).
+std::string Num(double x, int digits = 10);
+
+}  // namespace stickslip

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Compare two ss_continue output directories numerically, column by column.
+
+Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12]
+
+For branch.tsv and special_points.tsv: the same header, the same number of
+rows, text cells equal, and every numeric cell within tol (absolute, scaled
+by max(1, |base|)); nan must match nan. Either layout is read: the header as
+the first '#' line (before 0.1.0's metadata) or as the first line without '#'.
+Comment lines other than the header
+(# model, # status) must be equal too, except `# key: value` metadata lines
+that BASE does not have (counts and timings). Exit 0 if equal, 1 otherwise.
+"""
+import math
+import sys
+
+
+def read(path):
+    header, comments, rows = None, [], []
+    with open(path) as f:
+        for line in f:
+            line = line.rstrip("\n")
+            if line.startswith("#"):
+                if header is None and "\t" in line:  # the old layout: '# col1<TAB>col2...'
+                    header = line[1:].strip().split("\t")
+                else:
+                    comments.append(line)
+            elif line and header is None:  # '# key: value' lines, then the header line
+                header = line.split("\t")
+            elif line:
+                rows.append(line.split("\t"))
+    return header, comments, rows
+
+
+def number(s):
+    try:
+        return float(s)
+    except ValueError:
+        return None
+
+
+def compare(base, new, tol):
+    hb, cb, rb = read(base)
+    hn, cn, rn = read(new)
+    errors = []
+    if hb != hn:
+        errors.append(f"header differs: {hb} vs {hn}")
+    keys = {c.split(":")[0] for c in cb}
+    cn = [c for c in cn if c.split(":")[0] in keys]
+    if cb != cn:
+        errors.append(f"comment lines differ: {cb} vs {cn}")
+    if len(rb) != len(rn):
+        errors.append(f"{len(rb)} rows vs {len(rn)}")
+    worst = 0.0
+    for i, (a, b) in enumerate(zip(rb, rn)):
+        if len(a) != len(b):
+            errors.append(f"row {i}: {len(a)} cells vs {len(b)}")
+            continue
+        for j, (x, y) in enumerate(zip(a, b)):
+            fx, fy = number(x), number(y)
+            if fx is None or fy is None:
+                if x != y:
+                    errors.append(f"row {i} col {hb[j]}: '{x}' vs '{y}'")
+                continue
+            if math.isnan(fx) or math.isnan(fy):
+                if not (math.isnan(fx) and math.isnan(fy)):
+                    errors.append(f"row {i} col {hb[j]}: {x} vs {y}")
+                continue
+            d = abs(fx - fy) / max(1.0, abs(fx))
+            worst = max(worst, d)
+            if d > tol:
+                errors.append(f"row {i} col {hb[j]}: {x} vs {y} (diff {d:.3g})")
+    return errors, worst, len(rb)
+
+
+def main():
+    args = sys.argv[1:]
+    tol = 1e-12
+    if "--tol" in args:
+        k = args.index("--tol")
+        tol = float(args[k + 1])
+        del args[k:k + 2]
+    if len(args) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    ok = True
+    for name in ("branch.tsv", "special_points.tsv"):
+        errors, worst, n = compare(f"{args[0]}/{name}", f"{args[1]}/{name}", tol)
+        status = "equal" if not errors else f"{len(errors)} differences"
+        print(f"{args[1]}/{name}: {n} rows, largest relative difference {worst:.3g}: {status}")
+        for e in errors[:10]:
+            print("  " + e)
+        ok = ok and not errors
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,171 @@
+#include "branch_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stickslip/special_points.hpp"
+
+namespace stickslip {
+
+BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
+    : base_(base),
+      o_(o),
+      axis_(o.param),
+      finder_(Model(axis_.At(base, o.from)), o.orbit),
+      range_(std::abs(o.to - o.from)),
+      lo_(std::min(o.from, o.to)),
+      hi_(std::max(o.from, o.to)),
+      dir_(o.to > o.from ? 1.0 : -1.0),
+      phase_start_(std::chrono::steady_clock::now()) {
+  finder_.set_floquet(false);
+  if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
+  res_.param = o.param;
+}
+
+bool BranchContext::Stop() {
+  if (o_.cancelled && o_.cancelled()) {
+    res_.status = ContinuationStatus::kCancelled;
+    res_.message =
+        res_.points.empty() ? "cancelled before the first point" : "cancelled at " + Where(last_p_);
+    return true;
+  }
+  return res_.status != ContinuationStatus::kOk;
+}
+
+void BranchContext::Fail(const std::string& where, const std::string& what) {
+  if (res_.status != ContinuationStatus::kOk || Stop()) return;
+  res_.status = ContinuationStatus::kFailed;
+  res_.message = where + ": " + what;
+}
+
+void BranchContext::Add(const BranchPoint& pt) {
+  if (!std::isfinite(pt.p) || !std::isfinite(pt.x_min) || !std::isfinite(pt.x_max)) {
+    Fail(Where(pt.p), "non-finite values in a computed point");
+    return;
+  }
+  res_.points.push_back(pt);
+  last_p_ = pt.p;
+  if (pt.kind == PointKind::kStickSlip) {
+    if (stick_slip_spans_.empty() || stick_slip_spans_.back().branch != pt.branch)
+      stick_slip_spans_.push_back({pt.branch, pt.p, pt.p});
+    Span& s = stick_slip_spans_.back();
+    s.lo = std::min(s.lo, pt.p);
+    s.hi = std::max(s.hi, pt.p);
+  }
+  if (o_.progress) o_.progress(pt);
+}
+
+BranchPoint BranchContext::FromOrbit(double p, const Orbit& o, double a) const {
+  BranchPoint pt;
+  pt.p = p;
+  pt.kind = o.kind == OrbitKind::kStickSlip ? PointKind::kStickSlip : PointKind::kPureSlip;
+  pt.branch = branch_;
+  pt.period = o.period;
+  pt.x_min = o.x_min;
+  pt.x_max = o.x_max;
+  pt.xdot_min = o.xdot_min;
+  pt.xdot_max = o.xdot_max;
+  pt.t_stick = o.t_stick;
+  pt.multiplier = o.multiplier;
+  pt.stable = o.stable;
+  pt.amplitude = o.kind == OrbitKind::kPureSlip ? a : 0.5 * (o.x_max - o.x_min);
+  return pt;
+}
+
+bool BranchContext::StickSlipAt(double p, Orbit* orbit, OrbitResult* res) {
+  finder_.set_model(Model(At(p)));
+  finder_.set_floquet(o_.stick_slip_floquet);
+  *res = finder_.StickSlip(/*first_return_only=*/true);
+  finder_.set_floquet(false);
+  ++res_.counts.orbit_solves;
+  if (res->ok()) *orbit = res->orbit;
+  return res->ok();
+}
+
+bool BranchContext::GrazingGapAt(double p, double* gap) { return GrazingGap(finder_, At(p), gap); }
+
+bool BranchContext::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, double* a) {
+  const Model m(At(p));
+  finder_.set_model(m);
+  const OrbitResult r = finder_.PureSlip(a_guess);
+  ++res_.counts.orbit_solves;
+  res_.counts.newton_iterations += r.iterations;
+  if (!r.ok() || r.orbit.xdot_max >= m.v()) return false;
+  *orbit = r.orbit;
+  *a = r.orbit.start[0] - m.SteadySliding().x;
+  return true;
+}
+
+OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, ReturnMap* map) {
+  // A corrector may wander out of the model's domain (v <= 0, say): no orbit.
+  const std::string err = stickslip::ValidationError(At(p));
+  if (!err.empty()) {
+    if (map) map->message = "outside the model's domain: " + err;
+    return OrbitStatus::kNotConverged;
+  }
+  finder_.set_model(Model(At(p)));
+  ++res_.counts.return_maps;
+  return finder_.Desingularised(a, g, ga, map);
+}
+
+bool BranchContext::NearHopf(double p) const {
+  for (const auto& h : hopf_)
+    if (std::abs(h.first - p) <= tuning::kNearHopf * range_) return true;
+  return false;
+}
+
+void BranchContext::AddHopfEnd(double p_near, bool stable) {
+  int best = -1;
+  for (size_t i = 0; i < hopf_.size(); ++i)
+    if (best < 0 || std::abs(hopf_[i].first - p_near) < std::abs(hopf_[best].first - p_near))
+      best = i;
+  if (best < 0) return;
+  hopf_[best].second = true;
+  const double p = hopf_[best].first;
+  BranchPoint pt;
+  pt.p = p;
+  pt.kind = PointKind::kPureSlip;
+  pt.branch = branch_;
+  pt.period = 2 * M_PI;  // lambda = +-i
+  pt.x_min = pt.x_max = Model(At(p)).SteadySliding().x;
+  pt.xdot_min = pt.xdot_max = 0.0;
+  pt.t_stick = 0.0;
+  pt.multiplier = 1.0;
+  pt.stable = stable;
+  pt.amplitude = 0.0;
+  Add(pt);
+}
+
+bool BranchContext::GrazingVisited(double p) const {
+  for (const SpecialPoint& sp : res_.special)
+    if (sp.kind == SpecialKind::kGrazing &&
+        std::abs(sp.p - p) <= tuning::kSameGrazing * o_.locate_tol)
+      return true;
+  return false;
+}
+
+bool BranchContext::CoveredByStickSlip(double p) const {
+  const double tol = 1e-12 * std::max(1.0, range_);
+  for (const Span& s : stick_slip_spans_)
+    if (p >= s.lo - tol && p <= s.hi + tol) return true;
+  return false;
+}
+
+void BranchContext::Enter(Phase phase) {
+  const auto now = std::chrono::steady_clock::now();
+  const double dt = std::chrono::duration<double>(now - phase_start_).count();
+  ContinuationTimes& t = res_.seconds;
+  double* slot[] = {&t.equilibrium, &t.stick_slip, &t.pure_slip, &t.switching, &t.discovery};
+  *slot[static_cast<int>(phase_)] += dt;
+  t.total += dt;
+  phase_ = phase;
+  phase_start_ = now;
+}
+
+ContinuationResult BranchContext::Finish() {
+  Enter(phase_);
+  res_.counts.integrator_steps = finder_.flow().total_steps();
+  return res_;
+}
+
+}  // namespace stickslip
