@@ -2,57 +2,76 @@
 
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
 namespace stickslip {
 
-namespace {
-// Thrown out of Boost's solver when f is not finite: the bracket is lost.
-struct NotFinite {};
-}  // namespace
-
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double xtol,
                     int max_evaluations) {
   return FindRoot(f, a, b, f(a), f(b), xtol, max_evaluations - 2);
 }
 
-// Alefeld, Potra & Shi (1995), TOMS 748 (boost::math::tools::toms748_solve):
-// inverse cubic and quadratic steps in a bracket that shrinks every step.
+// Brent (1973), ch. 4: bisection safeguarding secant and inverse quadratic steps.
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double fa,
                     double fb, double xtol, int max_evaluations) {
   RootResult r;
   if (!std::isfinite(fa) || !std::isfinite(fb) || fa * fb > 0) return r;
   if (fa == 0) return {true, a, fa, 0};
   if (fb == 0) return {true, b, fb, 0};
-  if (a > b) std::swap(a, b), std::swap(fa, fb);
-  // The best point seen, as Brent's zeroin returns it: smallest |f|.
-  double best_x = std::abs(fa) < std::abs(fb) ? a : b;
-  double best_f = std::abs(fa) < std::abs(fb) ? fa : fb;
-  auto g = [&](double x) {
-    const double fx = f(x);
-    ++r.evaluations;
-    if (!std::isfinite(fx)) throw NotFinite{};
-    if (std::abs(fx) <= std::abs(best_f)) best_x = x, best_f = fx;
-    return fx;
-  };
-  // Stop when the bracket is below xtol (plus a few ulps, as zeroin's 2 eps |b|).
   const double eps = std::numeric_limits<double>::epsilon();
-  auto small = [&](double lo, double hi) {
-    return std::abs(hi - lo) <= xtol + 4 * eps * std::max(std::abs(lo), std::abs(hi));
-  };
-  std::uintmax_t iterations = static_cast<std::uintmax_t>(std::max(max_evaluations, 1));
-  try {
-    const auto bracket = boost::math::tools::toms748_solve(g, a, b, fa, fb, small, iterations);
-    r.ok = best_f == 0 || small(bracket.first, bracket.second);
-  } catch (const NotFinite&) {
-    return {false, best_x, best_f, r.evaluations};
+  double c = a, fc = fa, d = b - a, e = d;
+  for (int it = 0; it < max_evaluations; ++it) {
+    if ((fb > 0) == (fc > 0)) {
+      c = a;
+      fc = fa;
+      d = e = b - a;
+    }
+    if (std::abs(fc) < std::abs(fb)) {
+      a = b;
+      b = c;
+      c = a;
+      fa = fb;
+      fb = fc;
+      fc = fa;
+    }
+    const double tol = 2 * eps * std::abs(b) + 0.5 * xtol;
+    const double m = 0.5 * (c - b);
+    if (std::abs(m) <= tol || fb == 0) return {true, b, fb, r.evaluations};
+    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
+      double p, q, s = fb / fa;
+      if (a == c) {  // secant
+        p = 2 * m * s;
+        q = 1 - s;
+      } else {  // inverse quadratic interpolation
+        const double qq = fa / fc, rr = fb / fc;
+        p = s * (2 * m * qq * (qq - rr) - (b - a) * (rr - 1));
+        q = (qq - 1) * (rr - 1) * (s - 1);
+      }
+      if (p > 0)
+        q = -q;
+      else
+        p = -p;
+      if (2 * p < std::min(3 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = m;
+        e = m;
+      }
+    } else {
+      d = m;
+      e = m;
+    }
+    a = b;
+    fa = fb;
+    b += std::abs(d) > tol ? d : (m > 0 ? tol : -tol);
+    fb = f(b);
+    ++r.evaluations;
+    if (!std::isfinite(fb)) return r;
   }
-  r.x = best_x;
-  r.fx = best_f;
-  return r;
+  return {false, b, fb, r.evaluations};
 }
 
 // Brent (1973), ch. 5 (boost::math::tools::brent_find_minima): golden section

@@ -1,6 +1,8 @@
-// Scalar root finding and minimisation on a bracket, through Boost.Math:
-// TOMS 748 (Alefeld, Potra & Shi 1995) for roots, Brent (1973, ch. 5) for
-// minima. Results carry an ok flag and the evaluation count.
+// Scalar root finding and minimisation on a bracket, after Brent (1973),
+// "Algorithms for Minimization without Derivatives": zeroin (ch. 4) here, fmin
+// (ch. 5) through Boost.Math. Boost's toms748_solve in place of zeroin put a
+// spurious fold on the seed branch at BDF rtol 1e-3
+// (Continuation.SameStructureAtEveryTolerance), so zeroin stays.
 #pragma once
 
 #include <functional>
@@ -15,8 +17,7 @@ struct RootResult {
   int evaluations = 0;
 };
 
-/// Root of f on [a, b] with f(a) f(b) <= 0, to a bracket of width <= xtol
-/// (boost::math::tools::toms748_solve); x is the point of smallest |f| seen.
+/// Root of f on [a, b] with f(a) f(b) <= 0, to |dx| <= xtol (Brent's zeroin).
 /// fa, fb are f(a), f(b) if already known.
 RootResult FindRoot(const std::function<double(double)>& f, double a, double b, double fa,
                     double fb, double xtol, int max_evaluations = 200);
