@@ -5,7 +5,7 @@
 #include <limits>
 #include <sstream>
 
-#include "stickslip/cvode.hpp"
+#include "cvode.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/friction.hpp"
 

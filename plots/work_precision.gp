@@ -43,7 +43,9 @@ do for [panel = 1:2] {
     set arrow from first 0.05, graph 0 to first 0.05, first 1e-8 nohead dt 2 lc rgb "#555555"
     set label "target: full branch,\nerr < 10^{-8} in < 50 ms" at graph 0.02, first 1e-9 font ",9" tc rgb "#555555"
   }
-  plot data using (is("ours-adams", 5)):(is("ours-adams", ecol)) with linespoints lw 2 pt 7 lc rgb "#1f77b4" title "ours, Adams: branch + 8 orbits", \
+  plot data using (is("ours-taylor", 5)):(is("ours-taylor", ecol)) with linespoints lw 2 pt 9 lc rgb "#2ca02c" title "ours, Taylor: branch + 8 orbits", \
+       data using (is("ours-taylor", 8)):(is("ours-taylor", ecol)) with linespoints lw 1.5 dt 2 pt 8 lc rgb "#2ca02c" title "ours, Taylor: 8 orbits only", \
+       data using (is("ours-adams", 5)):(is("ours-adams", ecol)) with linespoints lw 2 pt 7 lc rgb "#1f77b4" title "ours, Adams: branch + 8 orbits", \
        data using (is("ours-adams", 5)):(is("ours-adams", ecol)):(rlab("ours-adams")) with labels left offset 0.7,0 font ",8" tc rgb "#1f77b4" notitle, \
        data using (is("ours-adams", 8)):(is("ours-adams", ecol)) with linespoints lw 1.5 dt 2 pt 6 lc rgb "#1f77b4" title "ours, Adams: 8 orbits only", \
        data using (is("ours-bdf", 5)):(is("ours-bdf", ecol)) with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "ours, BDF: branch + 8 orbits", \

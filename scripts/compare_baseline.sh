@@ -10,6 +10,7 @@ trap 'rm -rf "$out"' EXIT
 status=0
 for ini in studies/*.ini; do
   s=$(basename "$ini" .ini)
+  if [ ! -f "$base/$s/branch.tsv" ]; then echo "$s: no baseline in $base, skipped"; continue; fi
   "$build/ss_continue" --study "$ini" --out "$out/$s" --no_plots > "$out/$s.log" || true
   scripts/compare_branches.py "$base/$s" "$out/$s" --tol "$tol" || status=1
 done

@@ -69,6 +69,7 @@ BranchPoint BranchContext::FromOrbit(double p, const Orbit& o, double a) const {
   pt.multiplier = o.multiplier;
   pt.stable = o.stable;
   pt.amplitude = o.kind == OrbitKind::kPureSlip ? a : 0.5 * (o.x_max - o.x_min);
+  pt.newton_stalled = o.newton_stalled;
   return pt;
 }
 
@@ -93,7 +94,8 @@ bool BranchContext::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, dou
   if (!r.ok() || r.orbit.xdot_max >= m.v()) return false;
   *orbit = r.orbit;
   *a = r.orbit.start[0] - m.SteadySliding().x;
-  return true;
+  // Newton that ends on the equilibrium itself found no orbit.
+  return *a > 1e-6 * (m.params().mu_s + m.v());
 }
 
 OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, ReturnMap* map) {
@@ -108,9 +110,10 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
   return finder_.Desingularised(a, g, ga, map);
 }
 
-bool BranchContext::NearHopf(double p) const {
+bool BranchContext::NearHopf(double p, double slack) const {
+  const double d = std::max(tuning::kNearHopf * range_, slack);
   for (const auto& h : hopf_)
-    if (std::abs(h.first - p) <= tuning::kNearHopf * range_) return true;
+    if (std::abs(h.first - p) <= d) return true;
   return false;
 }
 
@@ -122,18 +125,15 @@ void BranchContext::AddHopfEnd(double p_near, bool stable) {
   if (best < 0) return;
   hopf_[best].second = true;
   const double p = hopf_[best].first;
-  BranchPoint pt;
-  pt.p = p;
-  pt.kind = PointKind::kPureSlip;
-  pt.branch = branch_;
-  pt.period = 2 * M_PI;  // lambda = +-i
-  pt.x_min = pt.x_max = Model(At(p)).SteadySliding().x;
-  pt.xdot_min = pt.xdot_max = 0.0;
-  pt.t_stick = 0.0;
-  pt.multiplier = 1.0;
-  pt.stable = stable;
-  pt.amplitude = 0.0;
-  Add(pt);
+  Orbit o;  // amplitude zero; lambda = +-i, so period 2 pi and multiplier 1
+  o.kind = OrbitKind::kPureSlip;
+  o.period = 2 * M_PI;
+  o.x_min = o.x_max = Model(At(p)).SteadySliding().x;
+  o.xdot_min = o.xdot_max = 0.0;
+  o.t_stick = 0.0;
+  o.multiplier = 1.0;
+  o.stable = stable;
+  Add(FromOrbit(p, o, 0.0));
 }
 
 bool BranchContext::GrazingVisited(double p) const {
@@ -148,6 +148,14 @@ bool BranchContext::CoveredByStickSlip(double p) const {
   const double tol = 1e-12 * std::max(1.0, range_);
   for (const Span& s : stick_slip_spans_)
     if (p >= s.lo - tol && p <= s.hi + tol) return true;
+  return false;
+}
+
+bool BranchContext::HasPureSlipPoint(double p, double a) const {
+  for (const BranchPoint& pt : res_.points)
+    if (pt.kind == PointKind::kPureSlip && pt.p == p &&
+        std::abs(pt.amplitude - a) <= 1e-6 * std::max(1.0, a))
+      return true;
   return false;
 }
 

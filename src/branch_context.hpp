@@ -3,7 +3,9 @@
 // timings, the Hopf points found) and the tuning constants, named once.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,15 +21,15 @@ namespace tuning {
 // kGrowBelow * max_step.
 constexpr double kHalveAbove = 5, kGrowBelow = 2, kGrow = 1.5;
 // A pure-slip branch ends at a Hopf point below this section amplitude (closer,
-// shooting loses accuracy), if a Hopf point lies within kNearHopf * range.
-constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05;
-// Pure-slip corrector: at most kMaxCorrector Newton steps; the step grows
-// (kGrow) after a correction in at most kFastCorrector steps.
+// shooting loses accuracy), if a Hopf point lies within kNearHopf * range or
+// within kHopfSlack times the distance to where a^2, extrapolated linearly,
+// vanishes. A step that would end it from above kHopfFrom * kAmplitudeEnd is
+// halved instead.
+constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05, kHopfSlack = 2, kHopfFrom = 2;
+// Pure-slip corrector: at most kMaxCorrector Newton steps (stall test:
+// NewtonConverged in palc.hpp); the step grows (kGrow) after a correction in
+// at most kFastCorrector steps.
 constexpr int kMaxCorrector = 8, kFastCorrector = 3;
-// Newton stalls at the integration noise floor: after kStallAfter steps, a
-// step below kStallFactor * tol that shrank by less than kStallRatio.
-constexpr int kStallAfter = 2;
-constexpr double kStallFactor = 1e3, kStallRatio = 0.5;
 // A pure-slip step that sticks looks for a grazing point when the last orbit
 // came within kNearTouch * max(kNearTouchMin, v) of the belt speed, or the
 // step is within kSmallStep * min_step; the search grows by kSearchGrow over
@@ -40,11 +42,10 @@ constexpr double kSameGrazing = 1e3;
 // stick-slip side, pure-slip side.
 constexpr double kStickProbe = 1e-6, kStickProbeTol = 10;
 constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100;
+// Smallest scale of p-steps, relative to max(1, |p|) (BranchContext::LocalScale).
+constexpr double kMinScale = 1e-3;
 // Landing on a range end: the step guess never below this amplitude.
 constexpr double kLandMinAmplitude = 1e-3;
-// Pure-slip orbits at `from`: a scan of a in (kScanLo, kScanHi (mu_s + v)) at kScanPoints.
-constexpr double kScanLo = 0.005, kScanHi = 1.5;
-constexpr int kScanPoints = 30;
 }  // namespace tuning
 
 // Where a branch starts and what it is.
@@ -81,6 +82,13 @@ class BranchContext {
   const ParameterAxis& axis() const { return axis_; }
   const Params& base() const { return base_; }
   double range() const { return range_; }
+  // The scale of p-steps near p: the range, but within [kMinScale, 1] times
+  // max(1, |p|), so that a range far wider than the branch (--to 1e6) does not
+  // set the steps, nor a tiny one (1e-10) the corrector's tolerance in p.
+  double LocalScale(double p) const {
+    const double s = std::max(1.0, std::abs(p));
+    return std::max(std::min(range_, s), tuning::kMinScale * s);
+  }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
   double dir() const { return dir_; }
@@ -108,15 +116,17 @@ class BranchContext {
 
   void AddHopf(double p) { hopf_.emplace_back(p, false); }
   const std::vector<std::pair<double, bool>>& hopf() const { return hopf_; }
-  bool NearHopf(double p) const;
+  // A located Hopf point within max(kNearHopf * range, slack) of p.
+  bool NearHopf(double p, double slack = 0) const;
   // The branch ends on the Hopf point nearest p_near, amplitude 0, period 2 pi.
   void AddHopfEnd(double p_near, bool stable);
   // A grazing point recorded within kSameGrazing * locate_tol of p.
   bool GrazingVisited(double p) const;
   // p lies between stick-slip points of one branch already traced.
   bool CoveredByStickSlip(double p) const;
+  // A pure-slip point of section amplitude a at exactly p is already on a branch.
+  bool HasPureSlipPoint(double p, double a) const;
 
-  int branch() const { return branch_; }
   void NextBranch() { ++branch_; }
   void SetBranch(int b) { branch_ = b; }
   // Time from now on is charged to `phase`.

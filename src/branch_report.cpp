@@ -1,5 +1,6 @@
 #include "stickslip/branch_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -26,6 +27,56 @@ std::vector<std::pair<std::string, std::string>> SummaryFields(const Continuatio
           {"seconds_total", sec(t.total)}};
 }
 
+namespace {
+// The first field that must be a number but is not: {name, value}; name empty if none.
+std::pair<std::string, double> FirstNonFinite(const BranchPoint& p) {
+  const bool eq = p.kind == PointKind::kEquilibrium;
+  const std::pair<const char*, double> fields[] = {{"parameter", p.p},
+                                                   {"x_min", p.x_min},
+                                                   {"x_max", p.x_max},
+                                                   {"xdot_min", p.xdot_min},
+                                                   {"xdot_max", p.xdot_max},
+                                                   {"multiplier", p.multiplier},
+                                                   {"amplitude", p.amplitude},
+                                                   {"period", eq ? 0.0 : p.period},
+                                                   {"t_stick", eq ? 0.0 : p.t_stick}};
+  for (const auto& [name, x] : fields)
+    if (!std::isfinite(x)) return {name, x};
+  return {"", 0.0};
+}
+}  // namespace
+
+void DropNonFinite(ContinuationResult* r, const std::string& param) {
+  std::string first;
+  std::size_t dropped = 0;
+  std::vector<BranchPoint> kept;
+  for (const BranchPoint& p : r->points) {
+    const auto [name, x] = FirstNonFinite(p);
+    if (name.empty()) {
+      kept.push_back(p);
+    } else if (dropped++ == 0) {
+      first = name + " = " + FormatNumber(x) + " at " + param + " = " + FormatNumber(p.p) + " (" +
+              PointKindName(p.kind) + ")";
+    }
+  }
+  std::vector<SpecialPoint> special;
+  for (const SpecialPoint& s : r->special) {
+    if (std::isfinite(s.p) && std::isfinite(s.period) && std::isfinite(s.x_min) &&
+        std::isfinite(s.x_max) && std::isfinite(s.xdot_min)) {
+      special.push_back(s);
+    } else if (dropped++ == 0) {
+      first = std::string("non-finite values at the special point ") + SpecialLabel(s.kind);
+    }
+  }
+  if (dropped == 0) return;
+  r->points = std::move(kept);
+  r->special = std::move(special);
+  const std::string what = "numerical failure: " + first + "; " + std::to_string(dropped) +
+                           " result(s) with non-finite numbers dropped";
+  if (r->status == ContinuationStatus::kOk) r->status = ContinuationStatus::kFailed;
+  r->message = r->message.empty() ? what : r->message + "; " + what;
+}
+
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::string& model_description, const std::vector<ExtraColumn>& extra) {
   std::vector<std::string> cols = {param,     "kind",       "branch",   "period",
@@ -44,6 +95,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
               std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
   else
     t.AddMeta("status", "complete");
+  for (const std::string& w : r.warnings) t.AddMeta("warning", w);
   for (const auto& kv : SummaryFields(r)) t.AddMeta(kv.first, kv.second);
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
@@ -119,6 +171,11 @@ std::string Curves(const std::set<int>& branches, int col, const std::string& ti
   return os.str();
 }
 
+// Two curve lists as one; either may be empty.
+std::string Join(const std::string& a, const std::string& b) {
+  return a.empty() || b.empty() ? a + b : a + ", \\\n     " + b;
+}
+
 // Columns of special_points.tsv: 2 the parameter, 3 period, 4 x_min, 5 x_max, 6 xdot_min.
 std::string Special(int col) {
   std::ostringstream os;
@@ -158,25 +215,45 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
      << "set xlabel '" << param << "'\n"
      << "set title '" << title << "' noenhanced\n";
   const bool any_special = !r.special.empty();
+  bool periodic = false;
+  double lo = 0, hi = 1;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    periodic = periodic || r.points[i].kind != PointKind::kEquilibrium;
+    lo = i == 0 ? r.points[i].p : std::min(lo, r.points[i].p);
+    hi = i == 0 ? r.points[i].p : std::max(hi, r.points[i].p);
+  }
+  if (!(hi > lo)) lo -= 0.5, hi += 0.5;
+  // gnuplot refuses a plot with no defined point: an empty frame that says so.
+  auto empty = [&](const std::string& why) {
+    os << "set label 1 '" << why << "' at graph 0.5,0.5 center\n"
+       << "set xrange [" << FormatNumber(lo) << ":" << FormatNumber(hi) << "]\nset yrange [0:1]\n"
+       << "plot NaN notitle\nunset label 1\nset autoscale\n";
+  };
   auto plot = [&](const std::string& out, const std::string& ylabel, const std::string& curves,
-                  const std::string& marks) {
+                  const std::string& marks, bool has_data) {
     os << "set output '" << out << "'.suffix\n"
-       << "set ylabel \"" << ylabel << "\"\n"
-       << "plot " << curves << (any_special && !marks.empty() ? ", \\\n     " + marks : "")
-       << "\nunset output\n";
+       << "set ylabel \"" << ylabel << "\"\n";
+    if (has_data)
+      os << "plot " << curves << (any_special && !marks.empty() ? ", \\\n     " + marks : "")
+         << "\n";
+    else
+      empty(r.points.empty() ? "no points computed" : "no periodic orbit in this range");
+    os << "unset output\n";
   };
   plot("bifurcation_x.png", "x range (min and max)",
-       Curves(branches, kXMax, "x max", 1) + ", \\\n     " +
-           Curves(branches, kXMin, "x min", 3, false),
-       Special(5) + ", \\\n     " + Special(4));
+       Join(Curves(branches, kXMax, "x max", 1), Curves(branches, kXMin, "x min", 3, false)),
+       Special(5) + ", \\\n     " + Special(4), !r.points.empty());
   plot("bifurcation_xdot.png", "x' range (min and max)",
-       Curves(branches, kXdMax, "x' max", 1) + ", \\\n     " +
-           Curves(branches, kXdMin, "x' min", 3, false),
-       Special(6));
-  plot("period.png", "period", Curves(branches, kPeriod, "period", 1), Special(3));
+       Join(Curves(branches, kXdMax, "x' max", 1), Curves(branches, kXdMin, "x' min", 3, false)),
+       Special(6), !r.points.empty());
+  plot("period.png", "period", Curves(branches, kPeriod, "period", 1), Special(3), periodic);
   plot("multiplier.png", "nontrivial Floquet multiplier (equilibrium: max Re lambda)",
-       Curves(branches, kMult, "multiplier", 1), "");
-  if (estimates) {
+       Curves(branches, kMult, "multiplier", 1), "", !r.points.empty());
+  if (estimates && !periodic) {
+    os << "set output 'estimates.png'.suffix\n";
+    empty("no periodic orbit in this range");
+    os << "unset output\n";
+  } else if (estimates) {
     // Extra columns of CompareEstimates: 13 r1, 15 a_ps, 17/18 seed's x bounds.
     const std::string periodic = "(strcol(2) ne 'equilibrium')";
     os << "set output 'estimates.png'.suffix\n"

@@ -22,6 +22,10 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start);
 // the range end, at a Hopf point, at a grazing point, or stopped.
 BranchEnd TracePureSlip(BranchContext& ctx, const BranchStart& start);
 
+// A pure-slip step from p sticks: a grazing point ahead in direction dp_sign,
+// searched within kSearchSteps steps growing from `step`, located by Brent.
+bool GrazingAhead(BranchContext& ctx, double p, double dp_sign, double step, double* p_gr);
+
 // At a grazing point the stick phase has length zero: records GR (and LP if
 // the branch turns back there) and the grazing row, and returns where the
 // other kind of orbit continues (phase kNone: nowhere).

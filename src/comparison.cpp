@@ -26,6 +26,10 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     out.reason = std::string("the estimates are for the cubic law, not ") + LawName(base.law);
     return out;
   }
+  if (base.k5 != 0) {
+    out.reason = "the estimates are for the cubic law without the quintic term (k5 = 0)";
+    return out;
+  }
   out.applies = true;
   const size_t n = r.points.size();
   ExtraColumn r1{"r1", std::vector<double>(n, kNan)};

@@ -6,6 +6,7 @@
 #include "branch_tracers.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/numbers.hpp"
+#include "stickslip/orbit_scan.hpp"
 
 namespace stickslip {
 
@@ -98,26 +99,32 @@ BranchStart StickSlipStart(double p, double dir, const Orbit& o, bool skip_first
   return s;
 }
 
-// The periodic orbit at `from`: stick-slip if the slip phase returns to
-// Omega; otherwise any pure-slip orbit a scan of the section finds.
+// The periodic orbits at `from`: the stick-slip orbit if the slip phase
+// returns to Omega, and every pure-slip orbit the scan of the section x' = 0
+// finds (inside a bistable band the unstable one lies between steady sliding
+// and stick-slip). Each starts a branch unless one has reached it already.
 void TraceFromStart(BranchContext& ctx) {
   const double from = ctx.options().from;
   ctx.Enter(BranchContext::Phase::kDiscovery);
   Orbit o;
   OrbitResult r;
-  if (ctx.StickSlipAt(from, &o, &r)) {
-    Trace(ctx, StickSlipStart(from, ctx.dir(), o, false));
-    return;
-  }
-  const Model m(ctx.At(from));
-  ctx.finder().set_model(m);
-  const double a_hi = tuning::kScanHi * (m.params().mu_s + m.v());
-  for (const Orbit& ps : ctx.finder().PureSlipScan(tuning::kScanLo, a_hi, tuning::kScanPoints)) {
-    if (ps.xdot_max >= m.v() || ctx.Stop()) continue;
+  if (ctx.StickSlipAt(from, &o, &r)) Trace(ctx, StickSlipStart(from, ctx.dir(), o, false));
+  if (ctx.Stop()) return;
+  ctx.Enter(BranchContext::Phase::kDiscovery);
+  OrbitScanOptions so;
+  so.orbit = ctx.options().orbit;
+  so.cancelled = ctx.options().cancelled;
+  const PeriodicOrbits found = FindPeriodicOrbits(Model(ctx.At(from)), so);
+  ctx.counts().return_maps += found.returns;
+  if (found.status == OrbitScanStatus::kFailed) ctx.Fail(ctx.Where(from), found.message);
+  for (const Orbit& ps : found.pure_slip) {
+    const double a = ps.start[0] - found.steady.x;
+    if (ctx.Stop() || ps.xdot_max >= ctx.At(from).v) continue;
+    if (ctx.HasPureSlipPoint(from, a)) continue;
     BranchStart s;
     s.phase = BranchStart::kPureSlip;
     s.p = from;
-    s.a = ps.start[0] - m.SteadySliding().x;
+    s.a = a;
     s.dir = ctx.dir();
     Trace(ctx, s);
     ctx.Enter(BranchContext::Phase::kDiscovery);
@@ -175,7 +182,13 @@ ContinuationResult Continue(const Params& base, const ContinuationOptions& optio
   const std::string err = options.ValidationError(base);
   if (!err.empty()) throw InvalidArgument(err);
   BranchContext ctx(base, options);
-  return Run(ctx);
+  ContinuationResult r = Run(ctx);
+  const double rtol = options.orbit.flow.rtol;
+  if (rtol > kLoosestTrustedRtol)
+    r.warnings.push_back("rtol = " + Num(rtol) + " is looser than " + Num(kLoosestTrustedRtol) +
+                         ", the loosest tolerance the branch's structure is promised at: "
+                         "special points may be far off");
+  return r;
 }
 
 }  // namespace stickslip

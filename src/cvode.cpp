@@ -1,4 +1,4 @@
-#include "stickslip/cvode.hpp"
+#include "cvode.hpp"
 
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
@@ -9,8 +9,6 @@
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
-
-const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf"; }
 
 namespace {
 void Check(int flag, const char* call) {

@@ -30,6 +30,9 @@ void RequireCubic(const Params& p) {
   if (p.law != LawKind::kCubic)
     throw InvalidArgument(std::string("estimates: law '") + LawName(p.law) +
                           "' is not cubic; the seed's estimates (3.9-3.30) need the cubic law");
+  if (p.k5 != 0)
+    throw InvalidArgument("estimates: k5 = " + std::to_string(p.k5) +
+                          ": the seed's estimates (3.9-3.30) are for the cubic law without k5");
 }
 
 // Linear coefficient of h (3.10): 2 beta - k1 + 3 k3 v^2 (the equilibrium's damping).

@@ -4,10 +4,21 @@
 #include <cmath>
 #include <sstream>
 
+#include "stepper.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/roots.hpp"
 
 namespace stickslip {
+
+const char* IntegratorName(Integrator i) { return i == Integrator::kTaylor ? "taylor" : "cvode"; }
+const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf"; }
+
+std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, bool variational);
+std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational);
+
+std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational) {
+  return options.integrator == Integrator::kTaylor ? MakeTaylorStepper(options, variational)
+                                                   : MakeCvodeStepper(options, variational);
+}
 
 const char* FlowStatusName(FlowStatus s) {
   switch (s) {
@@ -43,68 +54,6 @@ std::string FlowOptions::ValidationError() const {
   return os.str();
 }
 
-// Root functions in a slip mode (design notes, hard cases):
-//   g0 = x' - v   arrival at the switching surface;
-//   g1 = x''      extremum of x': catches a touch of x' = v shorter than a step;
-//   g2 = x'       extremum of x, and the Poincare section of pure-slip orbits.
-constexpr int kNumRoots = 3;
-
-int Flow::Rhs(double /*t*/, N_Vector y, N_Vector ydot, void* data) {
-  const auto* self = static_cast<const Flow*>(data);
-  const double* z = N_VGetArrayPointer(y);
-  double* f = N_VGetArrayPointer(ydot);
-  f[0] = z[1];
-  f[1] = self->model_.Acceleration(self->mode_, z[0], z[1]);
-  return 0;
-}
-
-// State plus Phi' = J Phi, Phi stored column-major in z[2..5]. An augmented
-// system (rather than CVODES forward sensitivities) because it is one small
-// dense system whose error control covers Phi, with no extra solver set-up.
-int Flow::RhsVar(double t, N_Vector y, N_Vector ydot, void* data) {
-  Rhs(t, y, ydot, data);
-  const auto* self = static_cast<const Flow*>(data);
-  const double* z = N_VGetArrayPointer(y);
-  double* f = N_VGetArrayPointer(ydot);
-  const double c = -2.0 * self->model_.beta() + self->model_.SlipForceSlope(self->mode_, z[1]);
-  for (int col = 0; col < 2; ++col) {
-    const double p0 = z[2 + 2 * col], p1 = z[3 + 2 * col];
-    f[2 + 2 * col] = p1;
-    f[3 + 2 * col] = -p0 + c * p1;
-  }
-  return 0;
-}
-
-int Flow::Roots(double /*t*/, N_Vector y, double* g, void* data) {
-  const auto* self = static_cast<const Flow*>(data);
-  const double* z = N_VGetArrayPointer(y);
-  // x' - v: an exact 0 (a start on the surface, or a tangential touch where
-  // x' = v to rounding for a while) counts as still on the mode's side.
-  const double rel = z[1] - self->model_.v();
-  g[0] = rel != 0 ? rel : (self->mode_ == Mode::kSlipBelow ? -1e-300 : 1e-300);
-  // On steady sliding x'' and x' are both integration noise: they chatter
-  // about 0 and round to exactly 0 again and again, which CVODE's root finder
-  // refuses next to a root (cvRcheck2). There, and only there, neither is an
-  // event.
-  // Elsewhere an exact 0 (x'' = x0 - x rounds to 0 near the exit point, where
-  // a grazing orbit returns) becomes a tiny bias that moves no root.
-  const double acc = self->model_.Acceleration(self->mode_, z[0], z[1]);
-  const bool at_rest = self->AtRest(z[0], z[1], acc);
-  g[1] = at_rest ? 1.0 : (acc != 0 ? acc : 1e-300);
-  g[2] = at_rest ? 1.0 : (z[1] != 0 ? z[1] : 1e-300);
-  return 0;
-}
-
-// At rest on steady sliding to within the integration noise: x' ~ atol,
-// x'' ~ rtol |x| (the force balance -x + mu(v) of nearly equal terms).
-bool Flow::AtRest(double x, double xdot, double acc) const {
-  const double scale = std::abs(x) + std::abs(model_.v()) + 1.0;
-  const double band_v = std::max(64 * 2.2e-16 * scale, 10 * options_.atol);
-  const double band_a =
-      std::max(64 * 2.2e-16 * scale, 10 * (options_.atol + options_.rtol * scale));
-  return std::abs(xdot) <= band_v && std::abs(acc) <= band_a;
-}
-
 Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), options_(options) {
   const std::string err = options.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
@@ -112,13 +61,9 @@ Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), opti
 
 Flow::~Flow() = default;
 
-Cvode& Flow::Solver(bool variational) {
+Stepper& Flow::Solver(bool variational) {
   auto& slot = variational ? var_ : plain_;
-  if (!slot) {
-    slot = std::make_unique<Cvode>(
-        variational ? 6 : 2, options_.method, options_.rtol, options_.atol, options_.max_steps,
-        variational ? &Flow::RhsVar : &Flow::Rhs, kNumRoots, &Flow::Roots, this);
-  }
+  if (!slot) slot = MakeStepper(options_, variational);
   return *slot;
 }
 
@@ -141,12 +86,20 @@ void Extend(FlowResult& r, const Vec2& z) {
 Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational,
                          double output_dt, double& next_output, const Observer& observer,
                          FlowResult& r) {
-  Cvode& cv = Solver(variational);
+  Stepper& cv = Solver(variational);
   const int n = cv.size();
+  const SlipProblem problem{&model_, mode_, options_.rtol, options_.atol,
+                            cancel_ ? &cancel_ : nullptr};
   double init[6] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0};
-  cv.Reinit(t0, init);
-  const double t_end = std::min(stop.t_max, t0 + 1e9);
+  cv.Reset(problem, t0, init);
+  // The stop time in chunks of 1e9 (a finite stop time for CVODE), extended
+  // until stop.t_max.
+  double t_end = std::min(stop.t_max, t0 + 1e9);
   cv.SetStopTime(t_end);
+  // A segment that starts at an output time (a switch there, to rounding) has
+  // that sample already: the switch's.
+  while (output_dt > 0 && observer && next_output <= t0 + 1e-14 * std::max(1.0, std::abs(t0)))
+    next_output += output_dt;
   const double v = model_.v();
   long steps_before = cv.steps();
 
@@ -156,74 +109,61 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     total_steps_ += cv.steps() - steps_before;
     return e;
   };
-  // Locate a level crossing of x' inside [a, b] of the last step on the
-  // interpolant, and end the segment there.
   double buf[6];
-  auto locate = [&](double a, double b, double level, SlipEnd::Kind kind) {
-    auto f = [&](double t) { return cv.Interpolate(t, buf) ? buf[1] - level : NAN; };
-    const RootResult root = FindRoot(f, a, b, 1e-15 * std::max(1.0, std::abs(b)));
-    if (!root.ok || !cv.Interpolate(root.x, buf)) {
-      std::ostringstream os;
-      os << "locating x' = " << level << " on CVODE's interpolant in [" << a << ", " << b
-         << "] failed in " << ModeName(mode_);
-      r.message = os.str();
-      std::copy(cv.y(), cv.y() + n, buf);
-      return finish(SlipEnd::kFail, b, buf);
-    }
-    buf[1] = level;
-    return finish(kind, root.x, buf);
-  };
 
-  double t_lo = t0, y_lo = z0[1], t_start = t0;
+  double t_lo = t0, t_start = t0;
   bool restarted = false;
   for (;;) {
     const bool sampling = output_dt > 0 && observer;
     const double tout = sampling ? std::min(next_output, t_end) : t_end;
     double t = t0;
-    const int flag = cv.Advance(tout, &t);
+    const StepOutcome flag = cv.Advance(tout, &t);
     const double* y = cv.y();
-    if (flag == CV_ILL_INPUT && !restarted && t_lo > t_start) {
+    if (flag == StepOutcome::kCloseRoots && !restarted && t_lo > t_start) {
       // cvRcheck2 refuses a root function that is exactly zero at the last
       // root and just after it (x' = v and x'' = 0 together at a grazing
       // touch). Restart there: cvRcheck1 then sets such a function aside.
       if (!cv.Interpolate(t_lo, buf)) {
-        r.message = "restarting CVODE after a close root: no state at t = " + std::to_string(t_lo);
+        r.message = "restarting after a close root: no state at t = " + std::to_string(t_lo);
         return finish(SlipEnd::kFail, t_lo, cv.y());
       }
       total_steps_ += cv.steps() - steps_before;
-      cv.Reinit(t_lo, buf);
+      cv.Reset(problem, t_lo, buf);
       steps_before = 0;
       cv.SetStopTime(t_end);
       t_start = t_lo;
       restarted = true;
       continue;
     }
-    if (cancel_ && cancel_()) {
+    if (flag == StepOutcome::kCancelled || (cancel_ && cancel_())) {
       std::ostringstream os;
       os << "cancelled at t = " << t << " in " << ModeName(mode_);
       r.message = os.str();
       return finish(SlipEnd::kCancel, t, y);
     }
-    if (flag == CV_TOO_MUCH_WORK && mode_ == Mode::kSlipBelow && model_.SteadySliding().stable() &&
-        AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]))) {
+    if (flag == StepOutcome::kTooMuchWork && mode_ == Mode::kSlipBelow &&
+        model_.SteadySliding().stable() &&
+        problem.AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]))) {
       // Settled on stable steady sliding, where it stays: the rest of the
       // segment is (xbar, 0), and no event can follow.
       double rest[6] = {model_.SteadySliding().x, 0.0, 0.0, 0.0, 0.0, 0.0};
-      while (sampling && next_output < t_end) {
+      const double t_rest = std::isfinite(stop.t_max) ? stop.t_max : t_end;
+      while (sampling && next_output < t_rest) {
         observer(Sample{next_output, Vec2(rest[0], 0.0), mode_});
         next_output += output_dt;
       }
-      return finish(SlipEnd::kTime, t_end, rest);
+      return finish(SlipEnd::kTime, t_rest, rest);
     }
-    if (flag < 0) {
+    if (flag == StepOutcome::kFailed || flag == StepOutcome::kTooMuchWork ||
+        flag == StepOutcome::kCloseRoots) {
       t = cv.CurrentTime();
       std::ostringstream os;
-      os << "CVode failed (flag " << flag << ") at t = " << t << " in " << ModeName(mode_)
-         << " at x = " << y[0] << ", x' = " << y[1] << ": " << cv.last_error();
+      os << IntegratorName(options_.integrator) << " failed at t = " << t << " in "
+         << ModeName(mode_) << " at x = " << y[0] << ", x' = " << y[1] << ": " << cv.last_error();
       r.message = os.str();
       return finish(SlipEnd::kFail, t, y);
     }
-    if (flag == CV_ROOT_RETURN) {
+    if (flag == StepOutcome::kRoot) {
       int rf[kNumRoots];
       cv.RootInfo(rf);
       // A root exactly at an output time: report the sample, or the next call
@@ -234,7 +174,9 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
       }
       // A start on a root surface (x'' = 0 at the stick exit, x' = 0 on the
       // section) holds only to rounding; an event at t = t0 is not an event.
-      if (t - t_start <= 1e-12 * std::max(1.0, std::abs(t_start))) continue;
+      // But a start just off x' = v that reaches it at once arrives there.
+      const bool arrives_at_once = rf[0] != 0 && stop.switching && z0[1] != v;
+      if (t - t_start <= 1e-12 * std::max(1.0, std::abs(t_start)) && !arrives_at_once) continue;
       if (rf[0] != 0 && stop.switching) {
         double z[2] = {y[0], v};
         std::copy(y + 2, y + n, buf + 2);
@@ -243,18 +185,12 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
         return finish(SlipEnd::kArrival, t, buf);
       }
       if (rf[1] != 0) {
+        // No fallback for a touch of x' = v within one step: both steppers
+        // test every root function wherever they test one (CVODE's
+        // cvRootfind; the first sign change of each Taylor step polynomial),
+        // so an arrival always comes before an extremum of x' beyond v.
         r.xdot_min = std::min(r.xdot_min, y[1]);
         r.xdot_max = std::max(r.xdot_max, y[1]);
-        const double a = std::max(t_lo, cv.LastStepStart());
-        // A touch of x' = v that began and ended within one step.
-        const bool beyond = mode_ == Mode::kSlipBelow ? y[1] > v : y[1] < v;
-        if (stop.switching && beyond) return locate(a, t, v, SlipEnd::kArrival);
-        // Likewise a double crossing of x' = 0 inside one step.
-        if (rf[2] == 0 && (y[1] > 0) != (y_lo > 0)) {
-          r.x_min = std::min(r.x_min, y[0]);
-          r.x_max = std::max(r.x_max, y[0]);
-          if (stop.at_section && y_lo > 0) return locate(a, t, 0.0, SlipEnd::kSection);
-        }
         if (stop.at_velocity_max && rf[1] < 0 && mode_ == Mode::kSlipBelow)
           return finish(SlipEnd::kVelocityMax, t, y);
       }
@@ -268,8 +204,12 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
         }
       }
       t_lo = t;
-      y_lo = y[1];
       restarted = false;
+      continue;
+    }
+    if (t >= t_end && t_end < stop.t_max) {  // the next chunk
+      t_end = std::min(stop.t_max, t_end + 1e9);
+      cv.SetStopTime(t_end);
       continue;
     }
     if (t >= t_end) return finish(SlipEnd::kTime, t, y);
@@ -277,7 +217,6 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     observer(Sample{t, Vec2(y[0], y[1]), mode_});
     next_output += output_dt;
     t_lo = t;
-    y_lo = y[1];
   }
 }
 

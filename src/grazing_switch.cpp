@@ -11,32 +11,28 @@ namespace stickslip {
 
 namespace {
 
-// The grazing row on the branch that reached it.
-BranchPoint GrazingRow(const BranchContext& ctx, const BranchEnd& end, const FlowResult& run,
-                       int branch) {
-  const Model m(ctx.At(end.p));
-  const bool from_ss = end.came_from == PointKind::kStickSlip;
-  const double mult_ps = run.jacobian.determinant();
-  BranchPoint gr;
-  gr.p = end.p;
-  gr.kind = end.came_from;
-  gr.branch = branch;
-  gr.period = run.t;
-  gr.x_min = run.x_min;
-  gr.x_max = run.x_max;
-  gr.xdot_min = run.xdot_min;
-  gr.xdot_max = m.v();
-  gr.t_stick = 0.0;
-  gr.multiplier = from_ss ? 0.0 : mult_ps;
-  gr.stable = from_ss || std::abs(mult_ps) < 1.0;
-  gr.amplitude = from_ss ? 0.5 * (run.x_max - run.x_min) : run.x_max - m.SteadySliding().x;
-  return gr;
+// The grazing row: the limit of the stick-slip orbits, whose stick phase
+// shrinks to zero at the exit point (or, inside the stick band, to the stick
+// from the touch to the exit point). One row, the same from either side.
+BranchPoint GrazingRow(const BranchContext& ctx, const Model& m, const SpecialPoint& sp,
+                       const FlowResult& run) {
+  Orbit o;
+  o.kind = OrbitKind::kStickSlip;
+  o.period = sp.period;
+  o.x_min = sp.x_min;
+  o.x_max = sp.x_max;
+  o.xdot_min = run.xdot_min;
+  o.xdot_max = m.v();
+  o.t_stick = sp.period - run.t;
+  o.multiplier = 0.0;
+  o.stable = true;
+  return ctx.FromOrbit(sp.p, o, 0.0);
 }
 
 // From pure slip into stick slip: stick-slip orbits exist where the gap is positive.
 BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
-  const double d = std::max(tuning::kStickProbe * ctx.range(),
+  const double d = std::max(tuning::kStickProbe * ctx.LocalScale(p_gr),
                             tuning::kStickProbeTol * ctx.options().locate_tol);
   const double side = p_gr + d <= ctx.hi() ? 1.0 : -1.0;  // probe inside the range
   double gap_probe = 0;
@@ -47,7 +43,7 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
   const double dir = gap_probe > 0 ? side : -side;
   if (dir != end.dir)
     ctx.AddSpecial(
-        FoldPoint(p_gr, run, "non-smooth fold at GR: the pure-slip branch turns into stick-slip"));
+        FoldPoint(p_gr, run, "non-smooth fold at GR: the stick-slip and pure-slip branches meet"));
   // Step off GR by one small step so the first orbit is a clear stick-slip orbit.
   BranchStart next;
   OrbitResult r;
@@ -66,8 +62,8 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
 BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
   const double a_gr = run.x_max - Model(ctx.At(p_gr)).SteadySliding().x;
-  const double d =
-      std::max(tuning::kSlipProbe * ctx.range(), tuning::kSlipProbeTol * ctx.options().locate_tol);
+  const double d = std::max(tuning::kSlipProbe * ctx.LocalScale(p_gr),
+                            tuning::kSlipProbeTol * ctx.options().locate_tol);
   for (double side : {end.dir, -end.dir}) {
     const double q = p_gr + side * d;
     if (q < ctx.lo() || q > ctx.hi()) continue;
@@ -76,7 +72,7 @@ BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowRes
     if (ctx.PureSlipAtFixedP(q, a_gr, &o, &a)) {
       if (side != end.dir)
         ctx.AddSpecial(FoldPoint(
-            p_gr, run, "non-smooth fold at GR: the stick-slip branch turns into pure slip"));
+            p_gr, run, "non-smooth fold at GR: the stick-slip and pure-slip branches meet"));
       BranchStart next;
       next.phase = BranchStart::kPureSlip;
       next.p = q;
@@ -96,6 +92,27 @@ BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowRes
 
 }  // namespace
 
+bool GrazingAhead(BranchContext& ctx, double p, double dp_sign, double step, double* p_gr) {
+  double gap0 = 0;
+  if (!ctx.GrazingGapAt(p, &gap0)) return false;
+  double q = p;
+  for (int k = 0; k < tuning::kSearchSteps; ++k) {
+    double q2 = p + dp_sign * step * std::pow(tuning::kSearchGrow, k);
+    q2 = std::min(ctx.hi(), std::max(ctx.lo(), q2));
+    double gap2 = 0;
+    const bool ok = ctx.GrazingGapAt(q2, &gap2);
+    if (ok && gap0 * gap2 < 0) {
+      const RootResult r = LocateGrazing(ctx.finder(), ctx.base(), ctx.axis(), p, q2, gap0, gap2,
+                                         ctx.options().locate_tol);
+      *p_gr = r.x;
+      return r.ok;
+    }
+    if (q2 == q) break;  // at the range end
+    q = q2;
+  }
+  return false;
+}
+
 BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
   // A grazing point already passed closes a loop of branches (a pure-slip
   // branch joining two grazing points): the branch ends here.
@@ -112,9 +129,13 @@ BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
     return {};
   }
   const bool from_ss = end.came_from == PointKind::kStickSlip;
-  ctx.AddSpecial(GrazingPoint(end.p, run, from_ss));
-  ctx.Add(GrazingRow(ctx, end, run, ctx.branch()));
-  if (ctx.Stop()) return {};
+  const Model m(ctx.At(end.p));
+  const SpecialPoint gr = GrazingPoint(m, end.p, run);
+  ctx.AddSpecial(gr);
+  ctx.Add(GrazingRow(ctx, m, gr, run));
+  // Touching the belt inside the stick band, the orbit disappears: nothing
+  // to switch to (coulomb law with damping: slip is a damped linear oscillator).
+  if (ctx.Stop() || GrazesInsideStickBand(m, run)) return {};
   return from_ss ? IntoPureSlip(ctx, end, run) : IntoStickSlip(ctx, end, run);
 }
 

@@ -218,9 +218,12 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     if (da > a) da = a;
     // Converged, or stalled at the integration noise floor.
     const double tol = options_.EffectiveNewtonTol() * std::max(1.0, a);
-    if (std::abs(da) <= tol ||
+    const bool converged = std::abs(da) <= tol;
+    if (converged ||
         (it > 2 && std::abs(da) < 1e3 * tol && std::abs(da) > 0.5 * std::abs(last_da))) {
       Orbit& o = out.orbit;
+      o.newton_stalled = !converged;
+      o.newton_step = std::abs(da);
       o.kind = OrbitKind::kPureSlip;
       o.start = Vec2(model().SteadySliding().x + a, 0.0);
       o.period = map.period;

@@ -83,20 +83,44 @@ bool Palc::Eval(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::string* why)
 VectorXd Palc::Tangent(const MatrixXd& jac, const VectorXd& along) const {
   const int m = static_cast<int>(scale_.size());
   const MatrixXd js = jac * scale_.asDiagonal();
-  // The last column of Q in J_s^T = Q R spans the null space of J_s.
-  const Eigen::HouseholderQR<MatrixXd> qr(js.transpose());
-  VectorXd t = qr.householderQ() * VectorXd::Unit(m, m - 1);
-  t.normalize();
+  VectorXd t(m);
+  if (m == 2) {
+    // One equation: the null vector of (j1, j2) is (-j2, j1).
+    const double n = std::hypot(js(0, 0), js(0, 1));
+    t << -js(0, 1) / n, js(0, 0) / n;
+  } else {
+    // The last column of Q in J_s^T = Q R spans the null space of J_s.
+    const Eigen::HouseholderQR<MatrixXd> qr(js.transpose());
+    t = qr.householderQ() * VectorXd::Unit(m, m - 1);
+    t.normalize();
+  }
   if (along.size() == m && t.dot(along) < 0) t = -t;
   return t;
 }
+
+namespace {
+// Solves a x = rhs; false if a is singular. 2 x 2 by Cramer's rule, larger by LU.
+bool SolveBordered(const MatrixXd& a, const VectorXd& rhs, VectorXd* x) {
+  if (a.rows() == 2) {
+    const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+    if (det == 0 || !std::isfinite(det)) return false;
+    x->resize(2);
+    *x << (rhs[0] * a(1, 1) - a(0, 1) * rhs[1]) / det, (a(0, 0) * rhs[1] - a(1, 0) * rhs[0]) / det;
+    return true;
+  }
+  const Eigen::PartialPivLU<MatrixXd> lu(a);
+  const double det = lu.determinant();
+  if (det == 0 || !std::isfinite(det)) return false;
+  *x = lu.solve(rhs);
+  return true;
+}
+}  // namespace
 
 PalcCorrection Palc::Correct(const VectorXd& pred, const VectorXd& tangent) {
   const int m = static_cast<int>(scale_.size());
   problem_.BeginCorrection();
   PalcCorrection c;
   VectorXd u = pred;
-  const VectorXd pred_s = pred.cwiseQuotient(scale_);
   double last_step = HUGE_VAL;
   MatrixXd a(m, m);
   VectorXd rhs(m);
@@ -108,14 +132,12 @@ PalcCorrection Palc::Correct(const VectorXd& pred, const VectorXd& tangent) {
     a.topRows(m - 1) = c.jac * scale_.asDiagonal();
     a.row(m - 1) = tangent.transpose();
     rhs.head(m - 1) = -c.f;
-    rhs[m - 1] = -tangent.dot(u.cwiseQuotient(scale_) - pred_s);
-    const Eigen::PartialPivLU<MatrixXd> lu(a);
-    const double det = lu.determinant();
-    if (det == 0 || !std::isfinite(det)) {
+    rhs[m - 1] = -tangent.dot((u - pred).cwiseQuotient(scale_));
+    VectorXd du_s;
+    if (!SolveBordered(a, rhs, &du_s)) {
       c.why = "singular corrector";
       return c;
     }
-    const VectorXd du_s = lu.solve(rhs);
     u += du_s.cwiseProduct(scale_);
     const double step = du_s.lpNorm<1>();
     if (NewtonConverged(step, last_step, it, options_.tol, &c.stalled)) {

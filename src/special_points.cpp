@@ -55,19 +55,29 @@ RootResult LocateGrazing(OrbitFinder& finder, const Params& base, const Paramete
   return r;
 }
 
-SpecialPoint GrazingPoint(double p, const FlowResult& run, bool from_stick_slip) {
+bool GrazesInsideStickBand(const Model& m, const FlowResult& run) {
+  const double x0 = m.ExitPoint()[0];
+  return x0 - run.z[0] > 1e-6 * (1 + std::abs(x0));
+}
+
+SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run) {
+  const bool inside = GrazesInsideStickBand(m, run);
+  const double x0 = m.ExitPoint()[0];
   const double mult_ps = run.jacobian.determinant();
   SpecialPoint sp;
   sp.kind = SpecialKind::kGrazing;
   sp.p = p;
-  sp.period = run.t;
-  sp.x_min = run.x_min;
-  sp.x_max = run.x_max;
+  sp.period = run.t + (inside ? (x0 - run.z[0]) / m.v() : 0.0);  // stick, seed eq. (3.6)
+  sp.x_min = std::min(run.x_min, run.z[0]);
+  sp.x_max = std::max(run.x_max, x0);
   sp.xdot_min = run.xdot_min;
-  sp.multiplier_before = from_stick_slip ? 0.0 : mult_ps;
-  sp.multiplier_after = from_stick_slip ? mult_ps : 0.0;
-  sp.description = "grazing-sliding: stick phase vanishes; multiplier jumps " +
-                   Num(sp.multiplier_before) + " -> " + Num(sp.multiplier_after);
+  sp.multiplier_before = 0.0;
+  sp.multiplier_after = inside ? kNan : mult_ps;
+  sp.description = inside ? "grazing inside the stick band at x = " + Num(run.z[0]) +
+                                ": the orbit disappears (no periodic orbit beyond)"
+                          : "grazing-sliding: stick phase vanishes; multiplier 0 on the "
+                            "stick-slip side, " +
+                                Num(mult_ps) + " on the pure-slip side";
   return sp;
 }
 

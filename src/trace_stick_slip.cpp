@@ -62,10 +62,12 @@ std::vector<BranchPoint> TraceEquilibrium(BranchContext& ctx) {
 
 BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
   const ContinuationOptions& o = ctx.options();
-  const double h_max = o.max_step * ctx.range(), h_min = o.min_step * ctx.range();
+  // Steps scale with the range, within LocalScale's bounds around p.
+  auto h_max = [&](double p) { return o.max_step * ctx.LocalScale(p); };
+  auto h_min = [&](double p) { return o.min_step * ctx.LocalScale(p); };
   const double end = start.dir > 0 ? ctx.hi() : ctx.lo();
   const BranchEnd stopped{BranchEnd::kStopped};
-  double h = h_max, p = start.p;
+  double p = start.p, h = h_max(p);
   Orbit prev;
   OrbitResult res;
   if (start.has_orbit) {
@@ -89,7 +91,7 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
     Orbit next;
     if (ctx.StickSlipAt(q, &next, &res)) {
       const double change = Change(prev, next);
-      if (change > tuning::kHalveAbove * o.max_step && h > 4 * h_min) {
+      if (change > tuning::kHalveAbove * o.max_step && h > 4 * h_min(p)) {
         h *= 0.5;
         ++ctx.counts().rejected_steps;
         continue;
@@ -97,7 +99,7 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
       ctx.Add(ctx.FromOrbit(q, next, 0));
       p = q;
       prev = next;
-      if (change < tuning::kGrowBelow * o.max_step) h = std::min(tuning::kGrow * h, h_max);
+      if (change < tuning::kGrowBelow * o.max_step) h = std::min(tuning::kGrow * h, h_max(p));
       continue;
     }
     if (res.status == OrbitStatus::kMissed) {
@@ -114,7 +116,7 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
       }
       return {BranchEnd::kGrazing, gr.x, start.dir, PointKind::kStickSlip};
     }
-    if (h > 2 * h_min) {
+    if (h > 2 * h_min(p)) {
       h *= 0.5;
       ++ctx.counts().rejected_steps;
       continue;

@@ -1,13 +1,23 @@
 // Small file helpers shared by the end-to-end tests of the apps.
 #pragma once
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace stickslip::testing_util {
@@ -72,6 +82,110 @@ inline Tsv ReadTsv(const std::string& text) {
     }
   }
   return t;
+}
+
+// Names in a directory, "." and ".." left out.
+inline std::set<std::string> Listing(const std::string& dir) {
+  std::set<std::string> names;
+  if (DIR* d = ::opendir(dir.c_str())) {
+    while (const dirent* e = ::readdir(d)) {
+      const std::string n = e->d_name;
+      if (n != "." && n != "..") names.insert(n);
+    }
+    ::closedir(d);
+  }
+  return names;
+}
+
+// How to run an app in a child process.
+struct Launch {
+  std::string out_path = "/dev/null", err_path = "/dev/null";  // stdout, stderr
+  bool closed_stdout = false;  // stdout: a pipe whose reading end is closed
+  double timeout = 120;        // then SIGKILL
+  int signal = 0;              // sent signal_after seconds after the start
+  double signal_after = 0;
+  long fsize_limit = -1;  // RLIMIT_FSIZE in bytes, with SIGXFSZ at its default
+  std::string path_env;   // PATH for the child, if not empty
+};
+
+struct Outcome {
+  int code = -1;   // exit status, -1 if ended by a signal
+  int signal = 0;  // the signal that ended it
+  bool timed_out = false;
+  double seconds = 0;
+  pid_t pid = 0;
+};
+
+// Starts app with args; returns at once with the pid (Outcome::pid), see Wait.
+inline pid_t Start(const std::string& app, const std::vector<std::string>& args, const Launch& l) {
+  std::vector<std::string> argv_s = {app};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int pipe_fds[2] = {-1, -1};
+  if (l.closed_stdout && ::pipe(pipe_fds) != 0) return -1;
+  const pid_t pid = ::fork();
+  if (pid == 0) {  // only async-signal-safe calls until exec
+    const int out = l.closed_stdout
+                        ? pipe_fds[1]
+                        : ::open(l.out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(l.err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
+    if (l.closed_stdout) ::close(pipe_fds[0]);
+    if (l.fsize_limit >= 0) {
+      struct rlimit lim = {static_cast<rlim_t>(l.fsize_limit), static_cast<rlim_t>(l.fsize_limit)};
+      if (::setrlimit(RLIMIT_FSIZE, &lim) != 0) ::_exit(125);
+    }
+    if (!l.path_env.empty()) ::setenv("PATH", l.path_env.c_str(), 1);
+    for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGXFSZ}) ::signal(s, SIG_DFL);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  if (l.closed_stdout) {
+    ::close(pipe_fds[0]);
+    ::close(pipe_fds[1]);
+  }
+  return pid;
+}
+
+// Waits for a started child, sending l.signal on time and SIGKILL at l.timeout.
+inline Outcome Wait(pid_t pid, const Launch& l) {
+  Outcome r;
+  r.pid = pid;
+  const auto start = std::chrono::steady_clock::now();
+  bool sent = false;
+  int status = 0;
+  for (;;) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) break;
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (l.signal != 0 && !sent && t >= l.signal_after) {
+      ::kill(pid, l.signal);
+      sent = true;
+    }
+    if (t > l.timeout) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      r.timed_out = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  return r;
+}
+
+inline Outcome RunChild(const std::string& app, const std::vector<std::string>& args,
+                        const Launch& l) {
+  const pid_t pid = Start(app, args, l);
+  if (pid < 0) {
+    ADD_FAILURE() << "fork failed";
+    return {};
+  }
+  return Wait(pid, l);
 }
 
 }  // namespace stickslip::testing_util

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "coulomb_damped.hpp"
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
 
@@ -107,6 +108,85 @@ TEST(Continuation, BetaContinuationHopfAtClosedForm) {
   EXPECT_EQ(Labelled(r, SpecialKind::kGrazing).size(), 1u);
 }
 
+// Issue 15, item 19: a narrow range just below the Hopf point; the pure-slip
+// branch shrinks onto HB 1.2e-4 away, more than 5 % of the range.
+TEST(Continuation, NarrowRangeBelowTheHopfPointEndsOnIt) {
+  const Params p;
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  for (double to : {0.441, 0.442}) {
+    const ContinuationResult r = Trace(p, "v", 0.44, to);
+    ASSERT_EQ(r.status, ContinuationStatus::kOk) << "to " << to << ": " << r.message;
+    const auto hb = Labelled(r, SpecialKind::kHopf);
+    ASSERT_EQ(hb.size(), 1u);
+    EXPECT_NEAR(hb[0].p, v_max, 1e-9);
+    bool ends_on_hb = false;
+    for (const auto& pt : r.points)
+      if (pt.kind == PointKind::kPureSlip && pt.amplitude == 0) ends_on_hb = pt.p == hb[0].p;
+    EXPECT_TRUE(ends_on_hb) << "to " << to;
+  }
+}
+
+// Issue 15, item 19: a range of 1e-10 across HB: the pure-slip branch leaves
+// it at amplitudes too small to resolve, so HB alone stands for it.
+TEST(Continuation, TinyRangeAcrossTheHopfPoint) {
+  const Params p;
+  const double v_max = std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3()));  // seed (3.16)
+  const ContinuationResult r = Trace(p, "v", 0.4409585518, 0.4409585519);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  ASSERT_EQ(hb.size(), 1u);
+  EXPECT_NEAR(hb[0].p, v_max, 1e-11);
+  for (const auto& pt : r.points) {
+    EXPECT_GE(pt.p, 0.4409585518);
+    EXPECT_LE(pt.p, 0.4409585519);
+  }
+}
+
+// Issue 15, item 18: the largest step allowed still ends the branch on HB,
+// with the same special points as the default step.
+TEST(Continuation, LargestStepKeepsTheSeedStructure) {
+  const Params p;
+  ContinuationOptions o;
+  o.max_step = 0.25;
+  const ContinuationResult r = Continue(p, o);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// Issue 15, item 19: a range far wider than the branch (--to 1e6) does not
+// set the probes and steps beside GR: the same special points as over 0.05..0.5.
+TEST(Continuation, VeryWideRangeKeepsTheSeedStructure) {
+  const Params p;
+  const ContinuationResult r = Trace(p, "v", 0.05, 1e6);
+  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+  const auto hb = Labelled(r, SpecialKind::kHopf);
+  const auto gr = Labelled(r, SpecialKind::kGrazing);
+  ASSERT_EQ(hb.size(), 1u);
+  ASSERT_EQ(gr.size(), 1u);
+  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
+  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// Issue 15, item 18: a tolerance looser than the tested range is flagged.
+TEST(Continuation, LooseToleranceIsWarned) {
+  const Params p;
+  ContinuationOptions o;
+  o.orbit.flow.rtol = 1e-2;
+  o.orbit.flow.atol = 1e-4;
+  o.max_step = 0.1;
+  const ContinuationResult loose = Continue(p, o);
+  ASSERT_EQ(loose.warnings.size(), 1u);
+  EXPECT_NE(loose.warnings[0].find("rtol = 0.01"), std::string::npos) << loose.warnings[0];
+  o.orbit.flow.rtol = 1e-4;
+  o.orbit.flow.atol = 1e-6;
+  EXPECT_TRUE(Continue(p, o).warnings.empty());
+}
+
 TEST(Continuation, StribeckSubcriticalHopfUnstableBranchAndFold) {
   Params p;
   p.law = LawKind::kStribeck;
@@ -187,19 +267,25 @@ namespace stickslip {
 namespace {
 
 // The branch keeps its structure (one GR, one HB, stick-slip then pure slip)
-// from rtol 1e-3 to 1e-12, Adams and BDF: grazing touches where x' = v to
+// from rtol 1e-3 to 1e-12, Taylor, Adams and BDF: grazing touches where x' = v to
 // rounding once broke GR location at 1e-6 .. 1e-8.
 TEST(Continuation, SameStructureAtEveryTolerance) {
   const Params p;
   const double v_gr = static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L));
-  for (Method m : {Method::kAdams, Method::kBdf}) {
+  // Taylor (the default), then CVODE with Adams and BDF.
+  const std::pair<Integrator, Method> solvers[] = {{Integrator::kTaylor, Method::kAdams},
+                                                   {Integrator::kCvode, Method::kAdams},
+                                                   {Integrator::kCvode, Method::kBdf}};
+  for (const auto& [in, m] : solvers) {
     for (double rtol = 1e-3; rtol > 1e-12 * 0.5; rtol *= 0.1) {
       ContinuationOptions o;
+      o.orbit.flow.integrator = in;
       o.orbit.flow.method = m;
       o.orbit.flow.rtol = rtol;
       o.orbit.flow.atol = rtol * 1e-2;
       const ContinuationResult r = Continue(p, o);
-      const std::string at = std::string(MethodName(m)) + " rtol " + std::to_string(rtol);
+      const std::string at =
+          std::string(IntegratorName(in)) + " " + MethodName(m) + " rtol " + std::to_string(rtol);
       ASSERT_EQ(r.status, ContinuationStatus::kOk) << at << ": " << r.message;
       const auto gr = Labelled(r, SpecialKind::kGrazing);
       ASSERT_EQ(gr.size(), 1u) << at;
@@ -282,6 +368,126 @@ TEST(Continuation, CoulombBranchPeriodsAreExact) {
     EXPECT_NEAR(pt.period, M_PI + 2 * std::atan(pt.p / d) + 2 * d / pt.p, 1e-8) << "v = " << pt.p;
   }
   EXPECT_GE(n, 100);
+}
+
+}  // namespace
+}  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+int CountKind(const ContinuationResult& r, PointKind k) {
+  int n = 0;
+  for (const auto& pt : r.points) n += pt.kind == k;
+  return n;
+}
+
+// Inside a bistable band a start finds the unstable pure-slip orbit too (by
+// the scan of the section), whichever way the range runs; its rows at the
+// range ends against the reference integrator's orbit.
+TEST(Continuation, StartsABranchFromEveryOrbitAtTheStartInEitherDirection) {
+  struct Case {
+    LawKind law;
+    double beta, mu_s, lo, hi;
+  };
+  for (const Case& c : {Case{LawKind::kStribeck, 0.02, 0.4, 1.3, 1.31},
+                        Case{LawKind::kLeine, 0.05, 1.0, 2.0, 2.01}}) {
+    Params p;
+    p.law = c.law;
+    p.beta = c.beta;
+    p.mu_s = c.mu_s;
+    for (bool forward : {true, false}) {
+      SCOPED_TRACE(std::string(LawName(c.law)) + (forward ? " forward" : " backward"));
+      const ContinuationResult r = forward ? Trace(p, "v", c.lo, c.hi) : Trace(p, "v", c.hi, c.lo);
+      ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+      EXPECT_GT(CountKind(r, PointKind::kStickSlip), 10);
+      ASSERT_GT(CountKind(r, PointKind::kPureSlip), 10);
+      for (const auto& pt : r.points) {
+        if (pt.kind != PointKind::kPureSlip) continue;
+        EXPECT_FALSE(pt.stable) << "v = " << pt.p;
+        if (pt.p != c.lo && pt.p != c.hi) continue;
+        Params q = p;
+        q.v = pt.p;
+        const reference::Real xbar = reference::Law(q).Mu(q.v);
+        const reference::PureSlipOrbit ref = reference::PureSlip(q, xbar + pt.amplitude);
+        ASSERT_TRUE(ref.found);
+        EXPECT_NEAR(pt.amplitude, static_cast<double>(ref.x_section - xbar), 1e-8);
+        EXPECT_NEAR(pt.period, static_cast<double>(ref.period), 1e-8);
+        EXPECT_NEAR(pt.multiplier, static_cast<double>(ref.multiplier), 1e-7);
+      }
+    }
+  }
+}
+
+// Coulomb law with damping: the stick-slip branch ends where the orbit
+// disappears (closed form of the damped oscillator, coulomb_damped.hpp); the
+// end row is the stick-slip orbit it is, with its stick; no pure-slip row;
+// forward and backward runs agree.
+TEST(Continuation, CoulombWithDampingEndsWhereTheOrbitDisappears) {
+  Params p;
+  p.law = LawKind::kCoulomb;
+  p.beta = 0.05;
+  const double v_end = static_cast<double>(coulomb_damped::EndSpeed(p.mu_s, p.mu_k, p.beta));
+  const double t_end = static_cast<double>(coulomb_damped::EndPeriod(p.mu_s, p.mu_k, p.beta));
+  std::vector<BranchPoint> ends;
+  for (bool forward : {true, false}) {
+    SCOPED_TRACE(forward ? "forward" : "backward");
+    const ContinuationResult r = forward ? Trace(p, "v", 0.05, 0.5) : Trace(p, "v", 0.5, 0.05);
+    ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+    EXPECT_EQ(CountKind(r, PointKind::kPureSlip), 0);
+    const auto gr = Labelled(r, SpecialKind::kGrazing);
+    ASSERT_EQ(gr.size(), 1u);
+    EXPECT_TRUE(Labelled(r, SpecialKind::kFold).empty());
+    EXPECT_NEAR(gr[0].p, v_end, 1e-9);
+    EXPECT_NE(gr[0].description.find("disappears"), std::string::npos) << gr[0].description;
+    EXPECT_NEAR(gr[0].period, t_end, 1e-7);
+    const BranchPoint* end = nullptr;
+    for (const auto& pt : r.points) {
+      if (pt.kind == PointKind::kStickSlip && std::abs(pt.p - gr[0].p) < 1e-12) end = &pt;
+    }
+    ASSERT_NE(end, nullptr);
+    EXPECT_NEAR(end->period, t_end, 1e-7);
+    EXPECT_NEAR(end->t_stick, (p.mu_s - p.mu_k) / v_end, 1e-7);  // stick from mu_k - 2 beta v
+    for (const auto& pt : r.points) {
+      if (pt.kind == PointKind::kStickSlip) {
+        EXPECT_LE(pt.p, gr[0].p + 1e-12);
+      }
+    }
+    ends.push_back(*end);
+  }
+  EXPECT_NEAR(ends[0].p, ends[1].p, 1e-10);
+  EXPECT_NEAR(ends[0].x_max, ends[1].x_max, 1e-9);
+  EXPECT_NEAR(ends[0].x_min, ends[1].x_min, 1e-9);
+}
+
+// The grazing point's row and description do not depend on which way the
+// continuation crosses it.
+TEST(Continuation, GrazingLabelsDoNotDependOnTheDirection) {
+  Params p;
+  p.law = LawKind::kStribeck;
+  const ContinuationResult f = Trace(p, "v", 0.3, 0.8), b = Trace(p, "v", 0.8, 0.3);
+  ASSERT_EQ(f.status, ContinuationStatus::kOk) << f.message;
+  ASSERT_EQ(b.status, ContinuationStatus::kOk) << b.message;
+  for (SpecialKind k : {SpecialKind::kGrazing, SpecialKind::kFold}) {
+    const auto sf = Labelled(f, k), sb = Labelled(b, k);
+    ASSERT_EQ(sf.size(), 1u);
+    ASSERT_EQ(sb.size(), 1u);
+    EXPECT_NEAR(sf[0].p, sb[0].p, 1e-10);
+    EXPECT_EQ(sf[0].description, sb[0].description);
+    EXPECT_EQ(sf[0].multiplier_before, sb[0].multiplier_before);
+    EXPECT_NEAR(sf[0].multiplier_after, sb[0].multiplier_after, 1e-8);
+  }
+  auto gr_row = [](const ContinuationResult& r, double p_gr) {
+    for (const auto& pt : r.points)
+      if (std::abs(pt.p - p_gr) < 1e-12 && pt.kind != PointKind::kEquilibrium) return pt;
+    return BranchPoint{};
+  };
+  const BranchPoint rf = gr_row(f, Labelled(f, SpecialKind::kGrazing)[0].p);
+  const BranchPoint rb = gr_row(b, Labelled(b, SpecialKind::kGrazing)[0].p);
+  EXPECT_EQ(rf.kind, PointKind::kStickSlip);
+  EXPECT_EQ(rb.kind, PointKind::kStickSlip);
+  EXPECT_EQ(rf.multiplier, rb.multiplier);
+  EXPECT_NEAR(rf.period, rb.period, 1e-8);
 }
 
 }  // namespace

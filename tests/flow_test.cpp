@@ -152,6 +152,7 @@ TEST(Flow, IntegratorFailureIsAStatusThatSaysWhere) {
   const Params p;
   const Model m(p);
   FlowOptions o;
+  o.integrator = Integrator::kCvode;
   o.max_steps = 10;
   Flow flow(m, o);
   StopRule stop;
@@ -161,6 +162,23 @@ TEST(Flow, IntegratorFailureIsAStatusThatSaysWhere) {
   EXPECT_EQ(r.status, FlowStatus::kIntegratorFailed);
   EXPECT_NE(r.message.find("CVode failed"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("slip-below"), std::string::npos) << r.message;
+}
+
+// A state whose Taylor coefficients overflow (x' = 1e200: the cubic law's
+// s^3 is inf) fails with a status that says what and where.
+TEST(Flow, TaylorFailureIsAStatusThatSaysWhere) {
+  const Params p;
+  const Model m(p);
+  FlowOptions o;
+  o.integrator = Integrator::kTaylor;
+  Flow flow(m, o);
+  StopRule stop;
+  stop.t_max = 10;
+  const FlowResult r = flow.Run(0.0, Vec2(0.0, 1e200), stop, false);
+  EXPECT_EQ(r.status, FlowStatus::kIntegratorFailed);
+  EXPECT_NE(r.message.find("non-finite Taylor coefficients"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("slip-above"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("at t = 0"), std::string::npos) << r.message;
 }
 
 TEST(Flow, InvalidOptionsAndMisuseThrow) {
@@ -173,6 +191,61 @@ TEST(Flow, InvalidOptionsAndMisuseThrow) {
   stop.t_max = 1;
   EXPECT_THROW(flow.Run(0.0, Vec2(0.0, 0.0), Mode::kStick, stop, false), InvalidArgument);
   EXPECT_THROW(flow.Run(0.0, Vec2(NAN, 0.0), Mode::kSlipBelow, stop, false), InvalidArgument);
+}
+
+// Issue 15, item 16: a start within rounding (or 1e-8) of the belt speed
+// reaches x' = v at once and sticks there (x = 0 is inside the stick
+// interval), with either integrator, sampled as ss_simulate samples.
+TEST(Flow, StartsWithinRoundingOfTheBeltSpeedStick) {
+  const Params p;
+  const Model m(p);
+  for (Integrator in : {Integrator::kTaylor, Integrator::kCvode}) {
+    FlowOptions o;
+    o.integrator = in;
+    Flow flow(m, o);
+    std::vector<double> starts = {p.v - 1e-8, p.v + 1e-8, p.v - 1e-9};
+    double up = p.v, down = p.v;
+    for (int k = 1; k <= 1000; k = k < 8 ? k + 1 : k * 2) {
+      while (up < p.v + k * 2.8e-17) up = std::nextafter(up, 1.0);
+      while (down > p.v - k * 2.8e-17) down = std::nextafter(down, 0.0);
+      starts.push_back(up);
+      starts.push_back(down);
+    }
+    for (double xdot0 : starts) {
+      StopRule stop;
+      stop.t_max = 20;
+      int samples = 0;
+      const FlowResult r = flow.Run(0.0, Vec2(0.0, xdot0), m.ModeAt(Vec2(0.0, xdot0)), stop, false,
+                                    0.01, [&](const Sample&) { ++samples; });
+      const std::string at = std::string(IntegratorName(in)) + " from x' = v + " +
+                             std::to_string((xdot0 - p.v) / 2.8e-17) + " * 2.8e-17";
+      ASSERT_TRUE(r.ok()) << at << ": " << r.message;
+      EXPECT_EQ(r.t, 20.0) << at;
+      ASSERT_GE(r.modes.size(), 2u) << at;
+      EXPECT_EQ(r.modes[1], Mode::kStick) << at;
+      EXPECT_GE(samples, 2000) << at;
+    }
+  }
+}
+
+// Issue 15, item 17: a run to t = 1e10 reaches 1e10 (it stopped at 1e9 and
+// reported success). Above the Hopf point it settles on steady sliding.
+TEST(Flow, RunsPastOneBillion) {
+  Params p;
+  p.v = 0.45;
+  const Model m(p);
+  // (CVODE takes 1e7 steps of ~1e3 on steady sliding for this: 80 s.)
+  for (Integrator in : {Integrator::kTaylor}) {
+    FlowOptions o;
+    o.integrator = in;
+    Flow flow(m, o);
+    StopRule stop;
+    stop.t_max = 1e10;
+    const FlowResult r = flow.Run(0.0, Vec2(0.0, 0.3), stop);
+    EXPECT_EQ(r.status, FlowStatus::kTimeLimit) << IntegratorName(in);
+    EXPECT_EQ(r.t, 1e10) << IntegratorName(in);
+    EXPECT_NEAR(r.z[0], m.SteadySliding().x, 1e-9) << IntegratorName(in);
+  }
 }
 
 }  // namespace

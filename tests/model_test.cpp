@@ -51,6 +51,29 @@ TEST(Model, QuinticFrictionAndDerivatives) {
   }
 }
 
+TEST(Model, QuinticFrictionTurnsNonPositive) {
+  // k5 = 0.24: mu(s) = 0.4 - 0.45 s + 0.6 s^3 - 0.24 s^5 has one positive root near 1.46
+  // (mu(1.45) > 0 > mu(1.47)); the seed's law and the others stay positive.
+  Params p = Seed();
+  p.k5 = 0.24;
+  const Friction f(p);
+  EXPECT_GT(0.4 - 0.45 * 1.45 + 0.6 * std::pow(1.45, 3) - 0.24 * std::pow(1.45, 5), 0);
+  EXPECT_LT(0.4 - 0.45 * 1.47 + 0.6 * std::pow(1.47, 3) - 0.24 * std::pow(1.47, 5), 0);
+  EXPECT_FALSE(f.NonPositiveUpTo(1.45));
+  EXPECT_TRUE(f.NonPositiveUpTo(1.47));
+  EXPECT_TRUE(f.NonPositiveUpTo(10.0));
+  EXPECT_FALSE(Friction(Seed()).NonPositiveUpTo(100.0));
+  // A dip below zero between two positive ends: mu_s 0.1, mu_m 0.001 at v_m 0.25 (k1 0.594,
+  // k3 3.168), k5 2: mu(0.25) = 0.001 - 2 / 1024 < 0 < mu(0.5) = 0.1365.
+  Params q = Seed();
+  q.mu_s = 0.1, q.mu_m = 0.001, q.v_m = 0.25, q.v = 0.05, q.k5 = 2;
+  const Friction g(q);
+  ASSERT_NEAR(g.Mu(0.25), 0.001 - 2.0 / 1024, 1e-15);
+  ASSERT_NEAR(g.Mu(0.5), 0.1365, 1e-12);
+  EXPECT_TRUE(g.NonPositiveUpTo(0.5));
+  EXPECT_FALSE(g.NonPositiveUpTo(0.1));
+}
+
 TEST(Model, RejectsInvalidParameters) {
   Params p = Seed();
   p.mu_m = 0.5;
@@ -197,6 +220,28 @@ TEST(Model, StickFieldMovesWithTheBelt) {
   const Vec2 z(0.1, 0.0);
   const double mu = 0.4 - 0.45 * 0.25 + 0.6 * 0.25 * 0.25 * 0.25;
   EXPECT_NEAR(m.Field(Mode::kSlipBelow, z)[1], -0.1 + mu, 1e-15);
+}
+
+// The stick set is closed: on x' = v, |x + 2 beta v| = mu_s still sticks
+// (seed, definition of Omega), 2^-50 beyond does not. beta = 1/8, v = 1/4,
+// mu_s = 1/2 make both ends, and the forces 2^-50 beyond, exact in binary:
+// x = 7/16 and x = -9/16.
+TEST(Model, StickSetBoundaryIsStick) {
+  Params p;
+  p.beta = 0.125;
+  p.v = 0.25;
+  p.mu_s = 0.5;
+  const Model m(p);
+  for (double edge : {0.4375, -0.5625}) {
+    SCOPED_TRACE(edge);
+    ASSERT_EQ(std::abs(m.StickForce(edge)), p.mu_s);  // exactly on the boundary
+    EXPECT_TRUE(m.InStickInterval(edge));
+    EXPECT_EQ(m.ModeAt(Vec2(edge, p.v)), Mode::kStick);
+    const double out = edge + std::copysign(std::ldexp(1.0, -50), edge);
+    ASSERT_EQ(std::abs(m.StickForce(out)), p.mu_s + std::ldexp(1.0, -50));
+    EXPECT_FALSE(m.InStickInterval(out));
+    EXPECT_NE(m.ModeAt(Vec2(out, p.v)), Mode::kStick);
+  }
 }
 
 }  // namespace

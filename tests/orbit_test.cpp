@@ -6,7 +6,10 @@
 
 #include <cmath>
 
+#include "coulomb_damped.hpp"
 #include "reference/reference_orbit.hpp"
+#include "stickslip/continuation.hpp"
+#include "stickslip/roots.hpp"
 
 namespace stickslip {
 namespace {
@@ -216,6 +219,104 @@ TEST(Orbit, StickSlipThroughSlipAboveTheBelt) {
   // Still superstable: S_in kills the velocity perturbation whatever came before.
   EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-8);
   EXPECT_NEAR(std::abs(r.orbit.eigenvalues[1]), 0.0, 1e-8);
+}
+
+// Pure-slip orbits at the options the apps use (not Tight), across
+// (GR, HB) including near both ends, against the long-double reference's
+// fixed point of the section map: the section point, period and x' range to
+// 1e-9. A Newton tolerance looser than the integration shows here.
+TEST(Orbit, PureSlipAtDefaultOptionsMatchesTheReferenceFixedPoint) {
+  for (double v : {0.397, 0.41, 0.43, 0.44}) {
+    const Params p = Seed(v);
+    const OrbitOptions defaults;
+    OrbitFinder finder(Model(p), defaults);
+    const OrbitResult r = finder.PureSlip(0.3);
+    ASSERT_TRUE(r.ok()) << "v = " << v << ": " << r.message;
+    const reference::PureSlipOrbit ref =
+        reference::PureSlip(p, static_cast<long double>(r.orbit.start[0]));
+    ASSERT_TRUE(ref.found) << "v = " << v;
+    EXPECT_NEAR(r.orbit.start[0], static_cast<double>(ref.x_section), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.xdot_max, static_cast<double>(ref.xdot_max), 1e-9) << "v = " << v;
+  }
+}
+
+// The seed's Hopf point is supercritical (mu''' = 6 k3 > 0; v_max of seed
+// (3.16)): stable pure-slip orbits are born where steady sliding is unstable
+// (v < v_max), which the reference confirms; the label must say so.
+TEST(Orbit, SeedHopfPointIsLabelledSupercritical) {
+  const Params base;
+  const double v_max = VMax(base);
+  ContinuationOptions o;
+  o.from = 0.43;
+  o.to = 0.45;
+  const ContinuationResult c = Continue(base, o);
+  ASSERT_FALSE(c.partial()) << c.message;
+  int hopf = 0;
+  for (const SpecialPoint& s : c.special) {
+    if (s.kind != SpecialKind::kHopf) continue;
+    ++hopf;
+    EXPECT_NEAR(s.p, v_max, 1e-9);
+    EXPECT_NE(s.description.find("supercritical"), std::string::npos) << s.description;
+    EXPECT_EQ(s.description.find("subcritical"), std::string::npos) << s.description;
+  }
+  EXPECT_EQ(hopf, 1);
+  const reference::PureSlipOrbit ref = reference::PureSlip(Seed(v_max - 1e-3), 0.3L);
+  ASSERT_TRUE(ref.found);
+  EXPECT_FALSE(ref.sticks);
+  EXPECT_LT(std::abs(static_cast<double>(ref.multiplier)), 1.0);  // stable: supercritical
+}
+
+}  // namespace
+}  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// Coulomb law with damping: slip is a damped linear oscillator, so no
+// pure-slip orbit exists, and the stick-slip orbit disappears where its first
+// return touches x' = v tangentially at the fold x = mu_k - 2 beta v of the
+// slip field, inside the stick band (closed form: coulomb_damped.hpp).
+TEST(Orbit, CoulombWithDampingGrazesAtTheClosedFormInsideTheStickBand) {
+  for (double beta : {0.05, 0.2}) {
+    Params p;
+    p.law = LawKind::kCoulomb;
+    p.beta = beta;
+    const double v_end = static_cast<double>(coulomb_damped::EndSpeed(p.mu_s, p.mu_k, beta));
+    auto gap = [&](double v) {
+      p.v = v;
+      OrbitFinder finder(Model(p), Tight());
+      double g = NAN;
+      EXPECT_EQ(finder.GrazingGap(&g), OrbitStatus::kOk);
+      return g;
+    };
+    const RootResult root = FindRoot(gap, 0.5 * v_end, 1.5 * v_end, 1e-13);
+    ASSERT_TRUE(root.ok);
+    EXPECT_NEAR(root.x, v_end, 1e-9) << "beta = " << beta;
+    // Where it touches: the fold of the slip field, strictly inside the band.
+    p.v = v_end;
+    OrbitFinder finder(Model(p), Tight());
+    double g = 0;
+    FlowResult run;
+    ASSERT_EQ(finder.GrazingGap(&g, &run), OrbitStatus::kOk);
+    EXPECT_NEAR(run.z[0], p.mu_k - 2 * beta * v_end, 1e-7);
+    EXPECT_NEAR(run.t,
+                static_cast<double>(coulomb_damped::FirstMaxTime(p.mu_s, p.mu_k, beta, v_end)),
+                1e-7);
+    // Just below the end the orbit sticks, with about Delta / v of stick.
+    p.v = v_end * (1 - 1e-9);
+    finder.set_model(Model(p));
+    const OrbitResult r = finder.StickSlip();
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_NEAR(r.orbit.period,
+                static_cast<double>(coulomb_damped::EndPeriod(p.mu_s, p.mu_k, beta)), 1e-3);
+    EXPECT_GT(r.orbit.t_stick, 0.9 * (p.mu_s - p.mu_k) / v_end);
+    // Just above it the first return stays below the belt.
+    p.v = v_end * (1 + 1e-6);
+    finder.set_model(Model(p));
+    EXPECT_EQ(finder.StickSlip(true).status, OrbitStatus::kMissed);
+  }
 }
 
 }  // namespace

@@ -275,9 +275,17 @@ class Cap {
 
 constexpr double kCallCap = 5.0 * kSlowdown;  // seconds for one Run / StickSlip / PureSlip...
 
+// Tally names of the CVODE runs carry " (cvode)"; Taylor is the default.
+std::string Tagged(const std::string& stage, ss::Integrator in) {
+  return in == ss::Integrator::kTaylor ? stage : stage + " (cvode)";
+}
+
 // (a) Simulation from a random start for a bounded time.
-void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& tally) {
-  ss::Flow flow(model, ss::FlowOptions{});
+void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& tally,
+              ss::Integrator in) {
+  ss::FlowOptions fo;
+  fo.integrator = in;
+  ss::Flow flow(model, fo);
   Cap cap(kCallCap);
   flow.set_cancel(cap.Hook());
   const ss::Params& p = model.params();
@@ -302,7 +310,7 @@ void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& 
   std::ostringstream start;
   start.precision(17);
   start << "from (" << z0[0] << ", " << z0[1] << ") to t = " << stop.t_max;
-  tally.Add(sampled ? "simulate (sampled)" : "simulate", ss::FlowStatusName(r.status),
+  tally.Add(Tagged(sampled ? "simulate (sampled)" : "simulate", in), ss::FlowStatusName(r.status),
             r.ok() ? "" : what + " " + start.str() + ": " + r.message);
   EXPECT_EQ(bad_samples, 0) << what << ": non-finite samples";
   if (r.status == ss::FlowStatus::kCancelled) {
@@ -339,9 +347,10 @@ void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& 
 }
 
 // (b) The stick-slip orbit, or else the pure-slip orbits of a section scan.
-void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally) {
+void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally, ss::Integrator in) {
   ss::OrbitOptions options;
   options.floquet = true;
+  options.flow.integrator = in;
   ss::OrbitFinder finder(model, options);
   Cap cap(kCallCap);
   finder.flow().set_cancel(cap.Hook());
@@ -352,7 +361,7 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally) {
     return true;
   };
   const ss::OrbitResult ssr = finder.StickSlip();
-  tally.Add("stick-slip", ss::OrbitStatusName(ssr.status),
+  tally.Add(Tagged("stick-slip", in), ss::OrbitStatusName(ssr.status),
             ssr.ok() || ssr.status == ss::OrbitStatus::kNoReturn ? "" : what + ": " + ssr.message);
   if (hung(ssr.status, "StickSlip()", ssr.message)) return;
   if (ssr.ok()) {
@@ -381,7 +390,7 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally) {
                   << cap.seconds() << " s";
     return;
   }
-  tally.Add("pure-slip scan", found.empty() ? "none" : "found");
+  tally.Add(Tagged("pure-slip scan", in), found.empty() ? "none" : "found");
   for (const ss::Orbit& o : found) {
     const std::string bad = NonFinite(o);
     EXPECT_TRUE(bad.empty()) << what << ": pure-slip orbit with " << bad;
@@ -390,7 +399,8 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally) {
   // One Newton shooting from a middle guess: converged or a clear status.
   cap.Restart();
   const ss::OrbitResult ps = finder.PureSlip(0.3 * a_hi);
-  tally.Add("pure-slip", ss::OrbitStatusName(ps.status), ps.ok() ? "" : what + ": " + ps.message);
+  tally.Add(Tagged("pure-slip", in), ss::OrbitStatusName(ps.status),
+            ps.ok() ? "" : what + ": " + ps.message);
   if (hung(ps.status, "PureSlip(" + std::to_string(0.3 * a_hi) + ")", ps.message)) return;
   if (ps.ok()) {
     const std::string bad = NonFinite(ps.orbit);
@@ -469,8 +479,11 @@ TEST(Robustness, RandomValidModelsEndWithResultOrStatus) {
         w = std::max(w, Seconds(s0));
       };
       const ss::Model model(p);
-      stage("simulate", [&] { Simulate(model, rng, what, tally); });
-      stage("orbits", [&] { FindOrbits(model, what, tally); });
+      // Both integrators (issue 11): Taylor, the default, and CVODE.
+      for (const ss::Integrator in : {ss::Integrator::kTaylor, ss::Integrator::kCvode}) {
+        stage(Tagged("simulate", in), [&] { Simulate(model, rng, what, tally, in); });
+        stage(Tagged("orbits", in), [&] { FindOrbits(model, what, tally, in); });
+      }
       stage("continue", [&] { ContinueAround(p, continuation_cap, what, tally); });
       if (HasFatalFailure()) return;
     }
@@ -485,7 +498,9 @@ TEST(Robustness, RandomValidModelsEndWithResultOrStatus) {
   RecordProperty("samples", samples);
   RecordProperty("seconds", std::to_string(total));
   for (const char* stage :
-       {"simulate", "simulate (sampled)", "stick-slip", "pure-slip scan", "pure-slip", "continue"})
+       {"simulate", "simulate (sampled)", "stick-slip", "pure-slip scan", "pure-slip", "continue",
+        "simulate (cvode)", "simulate (sampled) (cvode)", "stick-slip (cvode)",
+        "pure-slip scan (cvode)", "pure-slip (cvode)"})
     RecordProperty(stage, tally.Compact(stage));
   EXPECT_EQ(exceptions, 0);
 }

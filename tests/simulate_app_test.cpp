@@ -348,14 +348,57 @@ TEST_F(SimulateApp, IntegratorFailureExitsOneWithoutData) {
   // 10 CVODE steps cannot cover an output interval of 50 at tight tolerance.
   const std::string out = Path("fail.tsv");
   WriteFile(out, "old\n");
-  const Result r =
-      Run({"--xdot0", "0.125", "--max_steps", "10", "--dt", "50", "--t_end", "100", "--out", out});
+  const Result r = Run({"--integrator", "cvode", "--xdot0", "0.125", "--max_steps", "10", "--dt",
+                        "50", "--t_end", "100", "--out", out});
   EXPECT_EQ(r.code, 1);
   const auto lines = r.err_lines();
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_TRUE(Contains(lines[0], "at t = "));
   EXPECT_TRUE(Contains(lines[0], "slip-below"));
   EXPECT_EQ(ReadFile(out), "old\n");  // not replaced by a partial run
+}
+
+TEST_F(SimulateApp, TaylorFailureExitsOneWithoutData) {
+  // x' = 1e200: the cubic law's Taylor coefficients overflow at once.
+  const std::string out = Path("fail.tsv");
+  WriteFile(out, "old\n");
+  const Result r = Run({"--xdot0", "1e200", "--t_end", "10", "--out", out});
+  EXPECT_EQ(r.code, 1);
+  const auto lines = r.err_lines();
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_TRUE(Contains(lines[0], "non-finite Taylor coefficients")) << lines[0];
+  EXPECT_TRUE(Contains(lines[0], "slip-above")) << lines[0];
+  EXPECT_EQ(ReadFile(out), "old\n");
+}
+
+// Issue 15, item 16: starts within rounding (or 1e-8) of the belt speed.
+TEST_F(SimulateApp, StartsNextToTheBeltSpeedSucceed) {
+  for (const char* xdot0 : {"0.25000000000000006", "0.24999999", "0.24999999999999997"}) {
+    for (const char* in : {"taylor", "cvode"}) {
+      const Result r =
+          Run({"--integrator", in, "--xdot0", xdot0, "--t_end", "20", "--out", Path("a.tsv")});
+      EXPECT_EQ(r.code, 0) << in << " --xdot0 " << xdot0 << ": " << r.err;
+    }
+  }
+}
+
+// Issue 15, item 17: --t_end 1e10 reaches 1e10 (it stopped at 1e9 and said
+// nothing). Above the Hopf point the run settles on steady sliding.
+TEST_F(SimulateApp, RunsToTEndPastOneBillion) {
+  const std::string out = Path("long.tsv");
+  const Result r = Run({"--v", "0.45", "--t_end", "1e10", "--dt", "1e8", "--out", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = ReadFile(out);
+  const size_t last = text.rfind('\n', text.size() - 2);
+  ASSERT_NE(last, std::string::npos);
+  EXPECT_EQ(std::stod(text.substr(last + 1)), 1e10) << text.substr(last + 1);
+}
+
+TEST_F(SimulateApp, UnknownIntegratorIsRefused) {
+  const Result r = Run({"--integrator", "rk4", "--out", Path("a.tsv")});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(Contains(r.err, "rk4")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "--integrator")) << r.err;
 }
 
 TEST_F(SimulateApp, NoTemporaryFilesLeftBehind) {

@@ -17,6 +17,13 @@ namespace stickslip {
 /// integrator_steps, seconds_equilibrium, ..., seconds_total.
 std::vector<std::pair<std::string, std::string>> SummaryFields(const ContinuationResult& r);
 
+/// Removes every point and special point with a non-finite number where one
+/// must be (all fields but the equilibrium's period and t_stick, which are nan
+/// by design). If any is removed, r becomes kFailed (a cancelled r stays
+/// cancelled) and its message names the first such point and the count, so no
+/// nan or inf is ever written as a result.
+void DropNonFinite(ContinuationResult* r, const std::string& param);
+
 /// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
 /// t_stick, multiplier, stable, amplitude, then the extra columns. Metadata
 /// lines before the header: model, status (partial or complete), then the

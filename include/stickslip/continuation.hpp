@@ -36,6 +36,10 @@ struct BranchPoint {
   double multiplier = 0;
   bool stable = false;
   double amplitude = 0;  // pure slip: section amplitude a; else (x_max - x_min) / 2
+  // Pure slip: Newton was accepted where its steps stalled at the integration
+  // noise floor (below 1000 x the tolerance, no longer shrinking) instead of
+  // falling below the tolerance: the point is only as accurate as that step.
+  bool newton_stalled = false;
 };
 
 /// GR grazing-sliding, HB Hopf, LP fold.
@@ -106,12 +110,19 @@ struct ContinuationResult {
   ContinuationStatus status = ContinuationStatus::kOk;
   std::string message;
   std::string param;  // the parameter axis the points are on
+  // Conditions that make the result less trustworthy than its status says
+  // (a tolerance looser than kLoosestTrustedRtol), one line each.
+  std::vector<std::string> warnings;
   std::vector<BranchPoint> points;
   std::vector<SpecialPoint> special;
   ContinuationCounts counts;
   ContinuationTimes seconds;
   bool partial() const { return status != ContinuationStatus::kOk; }
 };
+
+/// Looser than this rtol a result carries a warning: the README promises the
+/// branch's structure (which special points, in which order) from here down.
+constexpr double kLoosestTrustedRtol = 1e-4;
 
 /// Throws InvalidArgument if the options or the model at either end are invalid.
 ContinuationResult Continue(const Params& base, const ContinuationOptions& options);

@@ -1,8 +1,8 @@
 // Exact event-driven integration of the Filippov belt model: each slip mode is
-// integrated with CVODE on its own smooth field; switches are located by
-// CVODE's root finding (CVodeRootInit); stick is solved in closed form (x' = v).
-// Optionally the variational equations ride along, and the saltation matrices
-// of the design notes are applied at every switch, giving d z(t) / d z(t0).
+// integrated on its own smooth field by a stepper (Taylor series by default,
+// CVODE selectable) that locates the switches as roots; stick is solved in
+// closed form (x' = v). Optionally the variational equations ride along, and
+// the saltation matrices are applied at every switch, giving d z(t) / d z(t0).
 #pragma once
 
 #include <functional>
@@ -11,16 +11,32 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/cvode.hpp"
 #include "stickslip/model.hpp"
 
 namespace stickslip {
 
+class Stepper;  // src/stepper.hpp: private
+
+// The integrator of the slip phases.
+enum class Integrator {
+  kTaylor,  // Taylor series, order and step from the tolerance (Jorba & Zou 2005)
+  kCvode,   // SUNDIALS CVODE with the linear multistep Method below
+};
+const char* IntegratorName(Integrator i);  // "taylor", "cvode"
+
+// CVODE's linear multistep method (only with Integrator::kCvode).
+enum class Method {
+  kAdams,  // Adams-Moulton with fixed-point iteration: non-stiff, the default
+  kBdf,    // BDF with Newton and a dense linear solver: for stiff problems
+};
+const char* MethodName(Method m);  // "adams", "bdf"
+
 struct FlowOptions {
-  double rtol = 1e-11;  // CVODE relative tolerance
-  double atol = 1e-13;  // CVODE absolute tolerance
+  double rtol = 1e-11;  // relative tolerance
+  double atol = 1e-13;  // absolute tolerance
+  Integrator integrator = Integrator::kTaylor;
   Method method = Method::kAdams;
-  long max_steps = 200000;      // CVODE steps per slip segment
+  long max_steps = 200000;      // steps per call of the stepper (per output interval)
   long max_switches = 1000000;  // mode changes per run
   // Empty if valid, otherwise one line naming the offending option.
   std::string ValidationError() const;
@@ -40,7 +56,7 @@ enum class FlowStatus {
   kStick,             // arrived in Omega (StopRule::at_stick)
   kSection,           // x' = 0 downwards (StopRule::at_section)
   kVelocityMax,       // a maximum of x' (StopRule::at_velocity_max)
-  kIntegratorFailed,  // CVODE returned an error; message says where
+  kIntegratorFailed,  // the stepper failed (e.g. step-size underflow); message says where
   kTooManySwitches,   // more than FlowOptions::max_switches mode changes
   kCancelled,         // the cancel hook returned true
 };
@@ -99,24 +115,20 @@ class Flow {
   }
 
   long total_steps() const { return total_steps_; }
-  // Polled after every return of CVODE: a run stops with kCancelled once it
-  // returns true (interruption, wall-time limits). Empty: never.
+  // Polled after every step: a run stops with kCancelled once it returns true
+  // (interruption, wall-time limits). Empty: never.
   void set_cancel(std::function<bool()> cancel) { cancel_ = std::move(cancel); }
 
  private:
   struct SlipEnd;
   SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational, double output_dt,
                double& next_output, const Observer& observer, FlowResult& r);
-  Cvode& Solver(bool variational);
-  static int Rhs(double t, N_Vector y, N_Vector ydot, void* data);
-  static int RhsVar(double t, N_Vector y, N_Vector ydot, void* data);
-  static int Roots(double t, N_Vector y, double* g, void* data);
-  bool AtRest(double x, double xdot, double acc) const;
+  Stepper& Solver(bool variational);
 
   Model model_;
   FlowOptions options_;
   Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
-  std::unique_ptr<Cvode> plain_, var_;
+  std::unique_ptr<Stepper> plain_, var_;
   long total_steps_ = 0;
   std::function<bool()> cancel_;
 };

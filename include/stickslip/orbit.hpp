@@ -40,6 +40,11 @@ struct Orbit {
   /// when the orbit stays below the belt.
   double multiplier = 0;
   bool stable = false;
+  // Pure slip: Newton was accepted where its steps stalled at the integration
+  // noise floor (below 1000 x the tolerance and no longer shrinking) instead
+  // of falling below the tolerance; newton_step is its last step |da|.
+  bool newton_stalled = false;
+  double newton_step = 0;
 };
 
 /// Integration and Newton settings of the orbit search, validated once.

@@ -47,7 +47,7 @@ std::vector<std::string> ParameterNames(LawKind law);
 std::vector<std::string> AllParameterNames();
 /// True for any name in AllParameterNames().
 bool IsParameterName(const std::string& name);
-/// "beta, v, mu_s, mu_m, v_m, mu_k, v_s or delta", for messages.
+/// "beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5", for messages.
 std::string ParameterNameList();
 /// The member of Params a name stands for; throws InvalidArgument on an unknown name.
 double Params::*ParameterMember(const std::string& name);
@@ -68,6 +68,11 @@ ParameterRange DefaultRange(const Params& base, const std::string& name);
 /// Get or set by name; throw InvalidArgument on an unknown name.
 double GetParameter(const Params& p, const std::string& name);
 void SetParameter(Params& p, const std::string& name, double value);
+
+/// Every nonzero parameter of a law must lie in [kMinScale, kMaxScale] (k5 in
+/// [0, kMaxScale]): beyond, the cubic law's k3 or the state over- or underflow
+/// (nan or inf results).
+constexpr double kMinScale = 1e-6, kMaxScale = 1e6;
 
 /// Returns an empty string if p is a valid model, otherwise one line naming
 /// the offending value, e.g. "mu_m = 0.5 must be < mu_s = 0.4".

@@ -36,10 +36,18 @@ bool GrazingGap(OrbitFinder& finder, const Params& at, double* gap);
 /// gap at both ends. ok is false without a sign change or if a gap fails.
 RootResult LocateGrazing(OrbitFinder& finder, const Params& base, const ParameterAxis& axis,
                          double p_in, double p_out, double gap_in, double gap_out, double tol);
-/// GR at p from the first-return run of the grazing orbit (variational):
-/// the pure-slip side's multiplier is det of its Jacobian (Liouville), the
-/// stick-slip side's is 0.
-SpecialPoint GrazingPoint(double p, const FlowResult& run, bool from_stick_slip);
+/// Where the grazing orbit (the first-return run from the exit point, stopped
+/// at its largest x') touches x' = v: at the exit point (x0, v) a pure-slip
+/// orbit continues the branch; strictly inside the stick band (the coulomb
+/// law, whose slip field jumps at the exit: the fold x = mu_k - 2 beta v of
+/// the slip field) nothing is born and the orbit disappears.
+bool GrazesInsideStickBand(const Model& m, const FlowResult& run);
+/// GR at p from that run (variational), the same whichever way the branch
+/// reached it: multiplier_before is the stick-slip side's (0), multiplier_after
+/// the pure-slip side's, det of the run's Jacobian (Liouville), or nan where
+/// the orbit disappears; period and extent include the stick from the touch to
+/// the exit point.
+SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run);
 
 /// LP at p, described by `what`, with the orbit's extent from run.
 SpecialPoint FoldPoint(double p, const FlowResult& run, const std::string& what);

@@ -1,23 +1,31 @@
 // ss_continue: the bifurcation diagram of a study in one parameter: branches
 // of stick-slip and pure-slip orbits and of steady sliding, their special
 // points (GR, HB, LP), TSV files and gnuplot figures in --out.
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
+#include <algorithm>
 #include <chrono>
-#include <csignal>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
-#include <cstring>
+#include <cstdlib>
+#include <exception>
 #include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "cli/about.hpp"
+#include "cli/output.hpp"
 #include "cli/physical.hpp"
+#include "cli/run_control.hpp"
 #include "cli/study.hpp"
+#include "stickslip/branch_disturbance.hpp"
 #include "stickslip/branch_report.hpp"
 #include "stickslip/comparison.hpp"
 #include "stickslip/continuation.hpp"
+#include "stickslip/numbers.hpp"
 #include "stickslip/report.hpp"
 
 namespace ss = stickslip;
@@ -28,18 +36,22 @@ namespace {
 
 constexpr const char* kProg = "ss_continue";
 constexpr const char* kNotes =
-    "Outputs in --out (each written whole or not at all): branch.tsv (one row per point;\n"
-    "kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet multiplier,\n"
-    "for the equilibrium the largest real part of its eigenvalues), special_points.tsv\n"
-    "(GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its figures\n"
-    "bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png.\n"
+    "Outputs in --out, written as one set (README, Reliability): branch.tsv (one row per\n"
+    "point; kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet\n"
+    "multiplier, for the equilibrium the largest real part of its eigenvalues; then\n"
+    "dist_x dist_xdot dist_energy newton_stalled, README),\n"
+    "special_points.tsv (GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its\n"
+    "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
+    "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
+    "a symlink at an output's place is refused.\n"
+    "Each TSV starts with '# key: value' lines (tool, command, model, range, tolerances,\n"
+    "integrator, status), then one header line without '#'.\n"
     "Study files: model and solver keys at top level, this app's keys in [continue].\n"
-    "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM) or time\n"
-    "limit: the branch so far is written, marked partial; 2 bad input (nothing written).\n"
+    "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM), time limit\n"
+    "or I/O failure (the branch so far is written, marked partial; if a figure cannot be\n"
+    "drawn whole, no file is replaced); 2 bad input (nothing written); 3 gnuplot is\n"
+    "missing (data files and script written, no figures).\n"
     "Example: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5";
-
-volatile std::sig_atomic_t g_signal = 0;
-void OnSignal(int sig) { g_signal = sig; }
 
 po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
@@ -63,26 +75,6 @@ po::options_description AppOptions() {
       "no_estimates", po::bool_switch(),
       "cubic law: skip the comparison with the seed's and the averaging estimates");
   return d;
-}
-
-// --out must be a writable directory; it is created if only it is missing.
-std::string CheckOutDir(const cli::Arguments& args) {
-  const std::string dir = args.Text("out", "plots");
-  const std::string src = args.Given("out") ? args.Source("out") : "--out";
-  auto bad = [&](const std::string& why) {
-    return cli::UsageError("invalid value '" + dir + "' for " + src + ": " + why);
-  };
-  if (dir.empty()) throw bad("empty");
-  struct stat st;
-  if (::stat(dir.c_str(), &st) != 0) {
-    if (errno != ENOENT || ::mkdir(dir.c_str(), 0777) != 0)
-      throw bad(std::string("cannot create it: ") + std::strerror(errno));
-  } else if (!S_ISDIR(st.st_mode)) {
-    throw bad("not a directory");
-  }
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw bad(std::string("not writable: ") + std::strerror(errno));
-  return dir;
 }
 
 std::string Fixed(double x, int digits) {
@@ -155,12 +147,8 @@ void AddScales(const cli::Scales& s, const std::string& param, cli::Metadata& me
                       axis->physical + " = " + param + " / " + ss::FormatNumber(axis->factor));
 }
 
-int Main(int argc, char** argv) {
-  const po::options_description desc = cli::AppDescription(AppOptions());
-  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
-  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
-                         kNotes))
-    return 0;
+// The options, validated (UsageError naming the option otherwise).
+ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) {
   ss::ContinuationOptions opts;
   // With physical inputs, --param belt_speed (damping, speed_m, ...) runs in
   // physical units: its dimensionless parameter is continued over the range
@@ -180,84 +168,144 @@ int Main(int argc, char** argv) {
   if (ss::IsParameterName(opts.param))
     range = ss::DefaultRange(cli::UncheckedModelFromArguments(args), opts.param);
   opts.from = args.Number("from", range.from / to_param) * to_param;
-  const ss::Params base = cli::ModelFromArguments(args, opts.param, opts.from);
+  *base = cli::ModelFromArguments(args, opts.param, opts.from);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args);
   opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");
-  const double max_time = args.Number("max_time", 0);
-  if (max_time < 0)
-    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
-                          args.Source("max_time") + ": must be >= 0");
-  const std::string err = opts.ValidationError(base);
+  const std::string err = opts.ValidationError(*base);
   if (!err.empty()) {
     const bool is_param = err.find("parameter") != std::string::npos;
     throw cli::UsageError(std::string(is_param ? "--param: " : "") + err);
   }
-  const std::string dir = CheckOutDir(args);
+  // Memory bound: the equilibrium branch alone has 1 / max_step rows.
+  if (std::ceil(1.0 / opts.max_step) > opts.max_points)
+    throw cli::UsageError("max_step = " + ss::FormatNumber(opts.max_step) + " (" +
+                          args.Source("max_step") + ") needs more than " +
+                          std::to_string(opts.max_points) +
+                          " points per branch, the memory bound; use max_step >= " +
+                          ss::FormatNumber(1.0 / opts.max_points));
+  return opts;
+}
 
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// What the continuation's worker thread shares with the main thread.
+struct Shared {
+  std::mutex m;
+  std::condition_variable cv;
+  bool done = false, abandoned = false;
+  std::vector<ss::BranchPoint> points;  // as reported, for an abandoned run
+  double last = 0;
+  bool periodic = false;  // steady sliding comes first; then the periodic branches
+  ss::ContinuationResult result;
+  std::exception_ptr error;
+};
+
+// The library polls cancellation between CVODE returns, and one return can
+// take seconds on a stiff model (v_m = 1e-6): past this grace after a signal
+// or --max_time, the app goes on with the points reported so far and leaves
+// the worker behind (it ends with the process, ExitLeavingWorker).
+constexpr double kGraceSeconds = 2.0;
+
+// Runs the continuation on a worker thread with cancellation and progress; an
+// InvalidArgument escaping the library after validation is a numerical
+// failure (exit 1). *abandoned: the worker is still running.
+ss::ContinuationResult RunContinuation(const ss::Params& base, ss::ContinuationOptions opts,
+                                       cli::RunControl& run, bool* abandoned) {
+  auto sh = std::make_shared<Shared>();
+  sh->last = opts.from;
+  const std::string param = opts.param;
+  opts.cancelled = [sh, &run, param] {
+    std::lock_guard<std::mutex> lock(sh->m);
+    if (sh->abandoned) return true;
+    run.Heartbeat(sh->periodic
+                      ? "last periodic orbit at " + param + " = " + ss::FormatNumber(sh->last)
+                      : std::string("searching for a periodic orbit"));
+    return run.Cancelled();
   };
-  opts.cancelled = [&] { return g_signal != 0 || (max_time > 0 && elapsed() > max_time); };
-  double next_report = 1.0;
-  opts.progress = [&](const ss::BranchPoint& pt) {
-    if (elapsed() < next_report) return;
-    next_report = elapsed() + 1.0;
-    std::cerr << kProg << ": " << opts.param << " = " << pt.p << " (" << ss::PointKindName(pt.kind)
-              << ") after " << Fixed(elapsed(), 1) << " s\n";
+  opts.progress = [sh, &run, opts](const ss::BranchPoint& pt) {
+    std::lock_guard<std::mutex> lock(sh->m);
+    if (sh->abandoned) return;
+    sh->periodic = sh->periodic || pt.kind != ss::PointKind::kEquilibrium;
+    sh->last = pt.p;
+    sh->points.push_back(pt);
+    run.Progress(
+        opts.param + " = " + ss::FormatNumber(pt.p) + " (" + ss::PointKindName(pt.kind) + ")",
+        (pt.p - opts.from) / (opts.to - opts.from), static_cast<double>(sh->points.size()),
+        "points");
   };
-
-  const ss::ContinuationResult r = ss::Continue(base, opts);
-  const double seconds = elapsed();
-
-  const std::string model = cli::DescribeModel(base);
-  ss::EstimateComparison cmp;
-  if (!args.Flag("no_estimates")) cmp = ss::CompareEstimates(base, opts.param, r);
-  // How the files were made: tool, command, model, range, tolerances (then the status).
-  cli::Metadata meta =
-      cli::RunMetadata(kProg, cli::CommandLine(argc, argv), base, opts.orbit.flow, opts.param);
-  meta.insert(meta.end(), {{"continued", opts.param},
-                           {"from", ss::FormatNumber(opts.from)},
-                           {"to", ss::FormatNumber(opts.to)},
-                           {"max_step", ss::FormatNumber(opts.max_step)},
-                           {"newton_tol", ss::FormatNumber(opts.orbit.EffectiveNewtonTol())},
-                           {"locate_tol", ss::FormatNumber(opts.locate_tol)}});
-  std::vector<ss::ExtraColumn> columns = cmp.columns, special_columns;
-  if (scales) {
-    AddScales(*scales, opts.param, meta);
-    const auto phys = PhysicalColumns(*scales, opts.param, r.points);
-    columns.insert(columns.end(), phys.begin(), phys.end());
-    special_columns = PhysicalColumns(*scales, opts.param, r.special);
-  }
-  ss::TsvTable branch = ss::BranchTable(r, opts.param, model, columns);
-  branch.PrependMeta(meta);
-  ss::TsvTable special = ss::SpecialPointTable(r, opts.param, special_columns);
-  special.PrependMeta(meta);
-  ss::WriteFileAtomically(dir + "/branch.tsv", branch.str());
-  ss::WriteFileAtomically(dir + "/special_points.tsv", special.str());
-  const std::string title = model + (r.partial() ? " (partial)" : "");
-  ss::WriteFileAtomically(dir + "/bifurcation.gp",
-                          ss::BifurcationScript(r, opts.param, title, cmp.applies));
-  bool plots_ok = true;
-  if (!args.Flag("no_plots")) {
-    // Render to temporary names, then rename: a reader never sees half a PNG.
-    const std::string wrapper = dir + "/.bifurcation.part.gp";
-    ss::WriteFileAtomically(wrapper, "suffix = '.part'\nload 'bifurcation.gp'\n");
-    std::string gp_error;
-    plots_ok = ss::RunGnuplot(wrapper, dir, &gp_error);
-    std::remove(wrapper.c_str());
-    for (const std::string& png : ss::BifurcationFigures(cmp.applies)) {
-      const std::string final_name = dir + "/" + png, part = final_name + ".part";
-      if (plots_ok && std::rename(part.c_str(), final_name.c_str()) != 0) plots_ok = false;
-      std::remove(part.c_str());
+  run.Phase("continuing");
+  std::thread worker([sh, base, opts] {
+    ss::ContinuationResult r;
+    std::exception_ptr error;
+    try {
+      r = ss::Continue(base, opts);
+    } catch (...) {
+      error = std::current_exception();
     }
-    if (!plots_ok) cli::PrintError(kProg, "gnuplot failed: " + gp_error);
+    std::lock_guard<std::mutex> lock(sh->m);
+    sh->result = std::move(r);
+    sh->error = error;
+    sh->done = true;
+    sh->cv.notify_all();
+  });
+  std::unique_lock<std::mutex> lock(sh->m);
+  double cancelled_at = -1;
+  while (!sh->done && !sh->abandoned) {
+    sh->cv.wait_for(lock, std::chrono::milliseconds(50));
+    if (cancelled_at < 0 && run.Cancelled()) cancelled_at = run.Elapsed();
+    if (cancelled_at >= 0 && run.Elapsed() > cancelled_at + kGraceSeconds) sh->abandoned = true;
   }
+  *abandoned = !sh->done;
+  lock.unlock();
+  if (*abandoned) {
+    worker.detach();
+  } else {
+    worker.join();
+  }
+  ss::ContinuationResult r;
+  if (sh->done && sh->error) {
+    try {
+      std::rethrow_exception(sh->error);
+    } catch (const ss::InvalidArgument& e) {
+      throw ss::Error("numerical failure in the continuation near " + param + " = " +
+                      ss::FormatNumber(sh->last) + ": " + e.what());
+    }
+  }
+  if (sh->done) {
+    r = std::move(sh->result);
+  } else {
+    r.points = sh->points;
+    r.status = ss::ContinuationStatus::kCancelled;
+  }
+  // Where the branch stopped, not where it was headed: the last periodic point.
+  if (r.status == ss::ContinuationStatus::kCancelled) {
+    const ss::BranchPoint* at = nullptr;
+    for (const auto& pt : r.points)
+      if (pt.kind != ss::PointKind::kEquilibrium) at = &pt;
+    r.message = (at ? "cancelled at " + param + " = " + ss::FormatNumber(at->p)
+                    : std::string("cancelled before the first periodic orbit")) +
+                " (" + run.Reason() + ")" +
+                (*abandoned ? "; the library did not return within 2 s, special points lost" : "");
+  }
+  ss::DropNonFinite(&r, param);
+  return r;
+}
 
+// Ends the process at once, with the worker thread still inside the library:
+// no destructor may run under it. stdout is checked first, as RunApp does.
+[[noreturn]] void ExitLeavingWorker(int code) {
+  try {
+    cli::CheckStdout();
+  } catch (const std::exception& e) {
+    cli::PrintError(kProg, e.what());
+    code = 1;
+  }
+  std::cerr.flush();
+  std::_Exit(code);
+}
+
+void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions& opts,
+                  const std::string& model, double seconds) {
   int counts[3] = {0, 0, 0};
   for (const auto& pt : r.points) ++counts[static_cast<int>(pt.kind)];
   std::cout << kProg << ": " << opts.param << " from " << opts.from << " to " << opts.to << "; "
@@ -274,6 +322,7 @@ int Main(int argc, char** argv) {
             << Fixed(t.stick_slip * 1e3, 1) << ", pure-slip " << Fixed(t.pure_slip * 1e3, 1)
             << ", switching " << Fixed(t.switching * 1e3, 1) << ", discovery "
             << Fixed(t.discovery * 1e3, 1) << "\n";
+  for (const std::string& w : r.warnings) std::cerr << kProg << ": warning: " << w << "\n";
   std::cout << "special points:\n";
   if (r.special.empty()) std::cout << "  none\n";
   for (const auto& s : r.special) {
@@ -281,18 +330,149 @@ int Main(int argc, char** argv) {
               << "  period " << Fixed(s.period, 6) << "  x in [" << Fixed(s.x_min, 6) << ", "
               << Fixed(s.x_max, 6) << "]  " << s.description << "\n";
   }
-  std::cout << "wrote " << dir << "/branch.tsv, special_points.tsv, bifurcation.gp"
-            << (args.Flag("no_plots") || !plots_ok ? "" : " and the PNGs") << "\n";
-  if (cmp.applies && !cmp.rows.empty()) PrintComparison(cmp, opts.param);
-  if (r.partial()) {
-    const std::string why = g_signal ? std::string("interrupted by signal ") +
-                                           std::to_string(static_cast<int>(g_signal))
-                                     : r.message;
-    cli::PrintError(kProg, "partial branch written (" +
-                               std::string(ss::ContinuationStatusName(r.status)) + "): " + why);
+}
+
+// How the files were made: tool, command, model, range, tolerances, and
+// with physical inputs the scales (then BranchTable adds the status).
+cli::Metadata FileMetadata(const std::string& command, const ss::Params& base,
+                           const ss::ContinuationOptions& opts,
+                           const std::optional<cli::Scales>& scales) {
+  cli::Metadata meta = cli::RunMetadata(kProg, command, base, opts.orbit.flow, opts.param);
+  meta.insert(meta.end(), {{"continued", opts.param},
+                           {"from", ss::FormatNumber(opts.from)},
+                           {"to", ss::FormatNumber(opts.to)},
+                           {"max_step", ss::FormatNumber(opts.max_step)},
+                           {"newton_tol", ss::FormatNumber(opts.orbit.EffectiveNewtonTol())},
+                           {"locate_tol", ss::FormatNumber(opts.locate_tol)}});
+  if (scales) AddScales(*scales, opts.param, meta);
+  return meta;
+}
+
+// What Outputs writes besides the result: the metadata and the scales (if physical).
+struct Provenance {
+  cli::Metadata meta;
+  std::optional<cli::Scales> scales;
+};
+
+int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Params& base,
+            const ss::ContinuationOptions& opts, const Provenance& prov, cli::RunControl& run,
+            bool estimates, bool plots);
+
+int Main(int argc, char** argv) {
+  const po::options_description desc = cli::AppDescription(AppOptions());
+  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
+                         kNotes))
+    return 0;
+  ss::Params base;
+  const ss::ContinuationOptions opts = Configure(args, &base);
+  Provenance prov;
+  prov.scales = cli::ScalesFromArguments(args);
+  prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);
+  const double max_time = args.Number("max_time", 0);
+  if (max_time < 0)
+    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
+                          args.Source("max_time") + ": must be >= 0");
+  const bool estimates = !args.Flag("no_estimates"), plots = !args.Flag("no_plots");
+  std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "bifurcation.gp"};
+  const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
+  names.insert(names.end(), all_figures.begin(), all_figures.end());
+  cli::OutputSet out(args.Text("out", "plots"), names,
+                     args.Given("out") ? args.Source("out") : "--out", kProg);
+
+  cli::RunControl run(kProg, max_time);
+  bool abandoned = false;
+  const ss::ContinuationResult r = RunContinuation(base, opts, run, &abandoned);
+  int code = 1;
+  try {
+    code = Outputs(out, r, base, opts, prov, run, estimates, plots);
+  } catch (const std::exception& e) {
+    if (!abandoned) throw;
+    code = cli::ReportError(kProg, e);
+  }
+  if (abandoned) {
+    out.Discard();
+    ExitLeavingWorker(code);
+  }
+  return code;
+}
+
+// Writes the set, draws the figures, prints the summary; returns the exit code.
+int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Params& base,
+            const ss::ContinuationOptions& opts, const Provenance& prov, cli::RunControl& run,
+            bool estimates, bool plots) {
+  const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
+  const double seconds = run.Elapsed();
+  const std::string model = cli::DescribeModel(base);
+  ss::EstimateComparison cmp;
+  if (estimates && !run.Cancelled()) {
+    run.Phase("comparing with the estimates");
+    cmp = ss::CompareEstimates(base, opts.param, r);
+  }
+  // Estimate columns first (the figure script counts on their numbers), then
+  // the smallest disturbance and the Newton-stall mark.
+  std::vector<ss::ExtraColumn> extra = cmp.columns;
+  run.Phase("smallest disturbances");
+  for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow)) {
+    // Cancelled: the columns are kept, without values.
+    if (run.Cancelled()) c.values.assign(r.points.size(), ss::kNan);
+    extra.push_back(std::move(c));
+  }
+  ss::ExtraColumn stalled{"newton_stalled", {}};
+  for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
+  extra.push_back(std::move(stalled));
+  std::vector<ss::ExtraColumn> special_extra;
+  if (prov.scales) {  // physical copies last
+    const auto phys = PhysicalColumns(*prov.scales, opts.param, r.points);
+    extra.insert(extra.end(), phys.begin(), phys.end());
+    special_extra = PhysicalColumns(*prov.scales, opts.param, r.special);
+  }
+  run.Phase("writing");
+  ss::TsvTable branch = ss::BranchTable(r, opts.param, model, extra);
+  branch.PrependMeta(prov.meta);
+  ss::TsvTable special = ss::SpecialPointTable(r, opts.param, special_extra);
+  special.PrependMeta(prov.meta);
+  out.Write("branch.tsv", branch.str());
+  out.Write("special_points.tsv", special.str());
+  const std::string title = model + (r.partial() ? " (partial)" : "");
+  out.Write("bifurcation.gp", ss::BifurcationScript(r, opts.param, title, cmp.applies));
+  const std::vector<std::string> figures = ss::BifurcationFigures(cmp.applies);
+  ss::GnuplotResult g{ss::GnuplotStatus::kCancelled, "figures not drawn (--no_plots)"};
+  if (plots && !run.Cancelled()) {
+    run.Phase("plotting");
+    g = out.Draw("bifurcation.gp", figures, [&] { return run.Cancelled(); });
+  }
+  if (g.status == ss::GnuplotStatus::kFailed) {
+    cli::PrintError(kProg, g.message + "; nothing replaced in '" + out.dir() + "'");
     return 1;
   }
-  return plots_ok ? 0 : 1;
+  // Figures this run did not draw are stale beside its data: removed.
+  std::vector<std::string> stale;
+  for (const auto& f : all_figures)
+    if (!g.ok() || std::find(figures.begin(), figures.end(), f) == figures.end())
+      stale.push_back(f);
+  out.Commit(stale);
+
+  PrintSummary(r, opts, model, seconds);
+  std::cout << "wrote " << out.dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
+            << (g.ok() ? " and the PNGs" : "") << "\n";
+  if (cmp.applies && !cmp.rows.empty()) PrintComparison(cmp, opts.param);
+  if (r.partial()) {
+    cli::PrintError(kProg, "partial branch written (" +
+                               std::string(ss::ContinuationStatusName(r.status)) +
+                               "): " + r.message);
+    return 1;
+  }
+  if (run.Cancelled()) {
+    cli::PrintError(kProg, run.Reason() + " while " + run.phase() + ": the branch is whole" +
+                               (g.ok() ? "" : ", figures not drawn"));
+    return 1;
+  }
+  if (g.status == ss::GnuplotStatus::kMissing) {
+    cli::PrintError(kProg, g.message + "; data files written, no figures");
+    return 3;
+  }
+  return 0;
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // ss_simulate: one trajectory of the belt model, written as a TSV
-// (# t, x, xdot, mode), optionally plotted with gnuplot.
+// (metadata lines, then the header t, x, xdot, mode), optionally plotted with gnuplot.
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -7,10 +7,14 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/about.hpp"
+#include "cli/output.hpp"
 #include "cli/physical.hpp"
+#include "cli/run_control.hpp"
 #include "cli/study.hpp"
 #include "stickslip/flow.hpp"
 #include "stickslip/model.hpp"
@@ -31,8 +35,11 @@ constexpr const char* kNotes =
     "Stick rows have xdot == v exactly.\n"
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
-    "Exit status: 0 done; 1 numerical or I/O failure (no data file written);\n"
-    "2 bad input (nothing written).\n"
+    "With --plot, FILE.gp names the TSV and the PNG by their plain names: run it in\n"
+    "FILE's directory. The files are written as one set (README, Reliability).\n"
+    "Exit status: 0 done; 1 numerical or I/O failure, interruption or time limit (no\n"
+    "data file written; if the figure cannot be drawn whole, no file is replaced);\n"
+    "2 bad input (nothing written); 3 gnuplot is missing (data and script written).\n"
     "Example: ss_simulate --study studies/seed.ini --xdot0 0.125 --out traj.tsv --plot";
 
 po::options_description AppOptions() {
@@ -45,7 +52,10 @@ po::options_description AppOptions() {
       "output interval, > 0 (default 0.01); switches are written too")(
       "out", cli::Value()->value_name("FILE"), "output TSV file (required), written atomically")(
       "plot", po::bool_switch(),
-      "also write FILE.gp and run gnuplot on it, giving FILE.png (phase portrait + time series)");
+      "also write FILE.gp and run gnuplot on it, giving FILE.png (phase portrait + time series)")(
+      "max_time", cli::Value()->value_name("S"),
+      "wall-time limit in seconds (default none); past it, or on SIGINT/SIGTERM, the run\n"
+      "stops and writes nothing");
   return d;
 }
 
@@ -99,93 +109,173 @@ std::string PlotScript(const std::string& data, const std::string& png, const ss
   return s;
 }
 
+// The output names: the TSV and, with --plot, FILE.gp and FILE.png beside it.
+struct OutNames {
+  std::string dir, tsv, gp, png;
+};
+OutNames SplitOut(const std::string& out) {
+  const auto slash = out.find_last_of('/');
+  OutNames n;
+  n.dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
+  n.tsv = slash == std::string::npos ? out : out.substr(slash + 1);
+  const bool ext = n.tsv.size() > 4 && n.tsv.compare(n.tsv.size() - 4, 4, ".tsv") == 0;
+  const std::string stem = ext ? n.tsv.substr(0, n.tsv.size() - 4) : n.tsv;
+  n.gp = stem + ".gp";
+  n.png = stem + ".png";
+  return n;
+}
+
+// The first row with a non-finite number, or empty.
+std::string NonFinite(const ss::Sample& s) {
+  if (std::isfinite(s.t) && std::isfinite(s.z[0]) && std::isfinite(s.z[1])) return "";
+  return "non-finite state at t = " + ss::FormatNumber(s.t) + ": x = " + ss::FormatNumber(s.z[0]) +
+         ", x' = " + ss::FormatNumber(s.z[1]);
+}
+
+// The run's settings, all checked before anything runs or is written.
+struct Settings {
+  ss::Params params;
+  ss::FlowOptions options;
+  double x0 = 0, xdot0 = 0.25, t_end = 100, dt = 0.01, max_time = 0;
+  std::string out;
+  bool plot = false;
+};
+
+Settings Configure(const cli::Arguments& args) {
+  Settings s;
+  s.params = cli::ModelFromArguments(args);
+  s.options = cli::FlowOptionsFromArguments(args);
+  s.x0 = args.Number("x0", s.x0);
+  s.xdot0 = args.Number("xdot0", s.xdot0);
+  s.t_end = args.Number("t_end", s.t_end);
+  s.dt = args.Number("dt", s.dt);
+  s.max_time = args.Number("max_time", 0);
+  for (const char* name : {"t_end", "dt"})
+    if (!(args.Number(name, 1) > 0))
+      throw cli::UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
+                            ": must be > 0");
+  if (s.max_time < 0)
+    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
+                          args.Source("max_time") + ": must be >= 0");
+  if (s.t_end / s.dt > kMaxRows)
+    throw cli::UsageError("t_end / dt = " + ss::FormatNumber(s.t_end / s.dt) +
+                          " rows is more than " + ss::FormatNumber(kMaxRows) +
+                          "; use a larger --dt");
+  if (!args.Given("out")) throw cli::UsageError("--out FILE is required");
+  s.out = args.Text("out");
+  CheckOutputPath(s.out, args.Source("out"));
+  s.plot = args.Flag("plot");
+  return s;
+}
+
+// Why a run gives no data: a non-finite row, or the flow's status and where.
+std::string Failure(const ss::FlowResult& r, const std::string& bad, const cli::RunControl& run) {
+  if (!bad.empty()) return bad;
+  std::string where;
+  if (r.status != ss::FlowStatus::kIntegratorFailed &&  // these messages already say where
+      r.status != ss::FlowStatus::kCancelled)
+    where = " (at t = " + ss::FormatNumber(r.t) + " in " + ss::ModeName(r.mode) +
+            ", x = " + ss::FormatNumber(r.z[0]) + ", x' = " + ss::FormatNumber(r.z[1]) + ")";
+  return std::string(ss::FlowStatusName(r.status)) + ": " + r.message + where +
+         (r.status == ss::FlowStatus::kCancelled ? " (" + run.Reason() + ")" : "");
+}
+
+// Writes the set (the TSV, and with --plot the script and the figure).
+int WriteOutputs(cli::OutputSet& files, const OutNames& names, const Settings& s,
+                 const ss::Model& model, const ss::TsvTable& table, cli::RunControl& run) {
+  run.Phase("writing");
+  files.Write(names.tsv, table.str());
+  ss::GnuplotResult g;
+  if (s.plot) {
+    files.Write(names.gp, PlotScript(names.tsv, names.png, model));
+    run.Phase("plotting");
+    g = files.Draw(names.gp, {names.png}, [&] { return run.Cancelled(); });
+    if (g.status == ss::GnuplotStatus::kFailed) {
+      cli::PrintError(kProg, g.message + "; nothing replaced");
+      return 1;
+    }
+  }
+  files.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{names.png});
+  if (g.status == ss::GnuplotStatus::kCancelled) {
+    cli::PrintError(kProg, run.Reason() + " while plotting: " + s.out + " written, no figure");
+    return 1;
+  }
+  if (g.status == ss::GnuplotStatus::kMissing) {
+    cli::PrintError(kProg, g.message + "; " + s.out + " and the script written, no figure");
+    return 3;
+  }
+  return 0;
+}
+
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
   if (cli::HelpOrVersion(std::cout, args, kProg,
                          "ss_simulate [--study FILE] [model options] [--x0 X] [--xdot0 Y] "
-                         "[--t_end T] [--dt DT] --out FILE.tsv [--plot]",
+                         "[--t_end T] [--dt DT] --out FILE.tsv [--plot] [--max_time S]",
                          desc, kNotes))
     return 0;
-  // All input is checked before anything runs or is written.
-  const ss::Params params = cli::ModelFromArguments(args);
-  const ss::FlowOptions options = cli::FlowOptionsFromArguments(args);
-  const double x0 = args.Number("x0", 0.0);
-  const double xdot0 = args.Number("xdot0", 0.25);
-  const double t_end = args.Number("t_end", 100.0);
-  const double dt = args.Number("dt", 0.01);
-  if (!(t_end > 0))
-    throw cli::UsageError("invalid value '" + args.Text("t_end") + "' for " + args.Source("t_end") +
-                          ": must be > 0");
-  if (!(dt > 0))
-    throw cli::UsageError("invalid value '" + args.Text("dt") + "' for " + args.Source("dt") +
-                          ": must be > 0");
-  if (t_end / dt > kMaxRows)
-    throw cli::UsageError("t_end / dt = " + ss::FormatNumber(t_end / dt) + " rows is more than " +
-                          ss::FormatNumber(kMaxRows) + "; use a larger --dt");
-  if (!args.Given("out")) throw cli::UsageError("--out FILE is required");
-  const std::string out = args.Text("out");
-  CheckOutputPath(out, args.Source("out"));
-  const bool plot = args.Flag("plot");
-
-  const ss::Model model(params);
-  ss::Flow flow(model, options);
-  const ss::Vec2 z0(x0, xdot0);
+  const Settings s = Configure(args);
   // With physical inputs, physical copies of t, x and x' follow (seed section 3 scaling).
   const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
+  const OutNames names = SplitOut(s.out);
+  cli::OutputSet files(names.dir,
+                       s.plot ? std::vector<std::string>{names.tsv, names.gp, names.png}
+                              : std::vector<std::string>{names.tsv},
+                       args.Source("out"), kProg);
+
+  const ss::Model model(s.params);
+  ss::Flow flow(model, s.options);
+  cli::RunControl run(kProg, s.max_time);
+  flow.set_cancel([&] {
+    run.Heartbeat("");
+    return run.Cancelled();
+  });
+  run.Phase("integrating");
+  const ss::Vec2 z0(s.x0, s.xdot0);
   std::vector<std::string> columns = {"t", "x", "xdot", "mode"};
   if (scales) columns.insert(columns.end(), {"t_s", "x_m", "xdot_m_s"});
   ss::TsvTable table(columns);
   for (const auto& [key, value] :
-       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), params, options))
+       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.params, s.options))
     table.AddMeta(key, value);
-  table.AddMeta("model", cli::DescribeModel(params));
-  table.AddMeta("x0", ss::FormatNumber(x0));
-  table.AddMeta("xdot0", ss::FormatNumber(xdot0));
-  table.AddMeta("t_end", ss::FormatNumber(t_end));
-  table.AddMeta("dt", ss::FormatNumber(dt));
+  table.AddMeta("model", cli::DescribeModel(s.params));
+  table.AddMeta("x0", ss::FormatNumber(s.x0));
+  table.AddMeta("xdot0", ss::FormatNumber(s.xdot0));
+  table.AddMeta("t_end", ss::FormatNumber(s.t_end));
+  table.AddMeta("dt", ss::FormatNumber(s.dt));
   if (scales) {
     table.AddMeta("L", ss::FormatNumber(scales->L) + " m (M g / K)");
     table.AddMeta("t0", ss::FormatNumber(scales->t0) + " s (sqrt(M / K))");
   }
   ss::Sample last{std::nan(""), ss::Vec2::Zero(), ss::Mode::kStick};
-  auto observer = [&](const ss::Sample& s) {
-    if (s.t == last.t && s.z == last.z && s.mode == last.mode) return;  // a repeated point
-    if (scales)
-      table.AddRow({s.t, s.z[0], s.z[1], ss::ModeName(s.mode), s.t * scales->t0, s.z[0] * scales->L,
-                    s.z[1] * scales->L / scales->t0});
-    else
-      table.AddRow({s.t, s.z[0], s.z[1], ss::ModeName(s.mode)});
-    last = s;
+  std::string bad;
+  auto observer = [&](const ss::Sample& x) {
+    if (x.t == last.t && x.z == last.z && x.mode == last.mode) return;  // a repeated point
+    if (bad.empty()) bad = NonFinite(x);
+    if (bad.empty() && scales)
+      table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode), x.t * scales->t0, x.z[0] * scales->L,
+                    x.z[1] * scales->L / scales->t0});
+    else if (bad.empty())
+      table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
+    last = x;
+    run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.t_end, x.t, "time units");
   };
   ss::StopRule stop;
-  stop.t_max = t_end;
-  const ss::FlowResult r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, dt, observer);
-  if (!r.ok()) {
+  stop.t_max = s.t_end;
+  ss::FlowResult r;
+  try {
+    r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, s.dt, observer);
+  } catch (const ss::InvalidArgument& e) {  // valid input: a numerical failure
+    throw ss::Error(std::string("numerical failure: ") + e.what());
+  }
+  if (!r.ok() || !bad.empty()) {
     // No data file: a truncated run must not pass for a complete one.
-    std::string where;
-    if (r.status != ss::FlowStatus::kIntegratorFailed)  // that message already says where
-      where = " (at t = " + ss::FormatNumber(r.t) + " in " + ss::ModeName(r.mode) +
-              ", x = " + ss::FormatNumber(r.z[0]) + ", x' = " + ss::FormatNumber(r.z[1]) + ")";
-    cli::PrintError(kProg, std::string(ss::FlowStatusName(r.status)) + ": " + r.message + where +
-                               "; no output written");
+    cli::PrintError(kProg, Failure(r, bad, run) + "; no output written");
     return 1;
   }
   table.AddMeta("status", "complete");  // a failed run writes no file
-  ss::WriteFileAtomically(out, table.str());
-  if (plot) {
-    const std::string stem = out.size() > 4 && out.compare(out.size() - 4, 4, ".tsv") == 0
-                                 ? out.substr(0, out.size() - 4)
-                                 : out;
-    const std::string gp = stem + ".gp";
-    ss::WriteFileAtomically(gp, PlotScript(out, stem + ".png", model));
-    std::string error;
-    if (!ss::RunGnuplot(gp, "", &error)) {
-      cli::PrintError(kProg, error);
-      return 1;
-    }
-  }
-  return 0;
+  return WriteOutputs(files, names, s, model, table, run);
 }
 
 }  // namespace

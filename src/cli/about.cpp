@@ -47,7 +47,9 @@ Metadata RunMetadata(const std::string& prog, const std::string& command, const 
   m.emplace_back("law", LawName(p.law));
   for (const auto& name : ParameterNames(p.law))
     m.emplace_back(name, name == continued ? "continued" : FormatNumber(GetParameter(p, name)));
-  m.emplace_back("integrator", std::string("CVODE ") + MethodName(flow.method));
+  m.emplace_back("integrator", flow.integrator == Integrator::kCvode
+                                   ? std::string("cvode ") + MethodName(flow.method)
+                                   : std::string(IntegratorName(flow.integrator)));
   m.emplace_back("rtol", FormatNumber(flow.rtol));
   m.emplace_back("atol", FormatNumber(flow.atol));
   m.emplace_back("max_steps", std::to_string(flow.max_steps));

@@ -7,11 +7,13 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "cli/run_control.hpp"
 #include "stickslip/report.hpp"
 
 namespace stickslip::cli {
@@ -57,7 +59,8 @@ po::options_description AppDescription(const po::options_description& app) {
 }
 
 const std::vector<std::string>& StudySections() {
-  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark"};
+  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "chart",
+                                                    "basin"};
   return sections;
 }
 
@@ -105,15 +108,16 @@ po::options_description ModelOptions() {
 
 po::options_description SolverOptions() {
   const FlowOptions f;
-  po::options_description d("Solver (CVODE)");
-  d.add_options()("rtol", Value()->value_name("X"),
-                  ("relative tolerance, in [1e-14, 1e-2]" + Default(f.rtol)).c_str())(
+  po::options_description d("Solver");
+  d.add_options()("integrator", Value()->value_name("NAME"),
+                  "slip phases by taylor (default: Taylor series) or cvode (CVODE, --method)")(
+      "rtol", Value()->value_name("X"),
+      ("relative tolerance, in [1e-14, 1e-2]" + Default(f.rtol)).c_str())(
       "atol", Value()->value_name("X"),
       ("absolute tolerance, in [1e-16, 1e-2]" + Default(f.atol)).c_str())(
-      "method", Value()->value_name("NAME"), "adams (default, non-stiff) or bdf (stiff)")(
+      "method", Value()->value_name("NAME"), "cvode: adams (default, non-stiff) or bdf (stiff)")(
       "max_steps", Value()->value_name("N"),
-      ("CVODE steps allowed per output interval, >= 10 (default " + std::to_string(f.max_steps) +
-       ")")
+      ("steps allowed per output interval, >= 10 (default " + std::to_string(f.max_steps) + ")")
           .c_str());
   return d;
 }
@@ -222,6 +226,12 @@ void ReadStudyFile(const std::string& path, const po::options_description& desc,
     throw UsageError("cannot read study file '" + path + "': " + std::strerror(errno));
   if (S_ISDIR(st.st_mode))
     throw UsageError("cannot read study file '" + path + "': it is a directory");
+  if (!S_ISREG(st.st_mode))
+    throw UsageError("cannot read study file '" + path +
+                     "': not a regular file (FIFO, device or socket)");
+  if (st.st_size > kMaxStudyBytes)
+    throw UsageError("cannot read study file '" + path + "': " + std::to_string(st.st_size) +
+                     " bytes, more than " + std::to_string(kMaxStudyBytes));
   std::ifstream in(path);
   if (!in) throw UsageError("cannot read study file '" + path + "': " + std::strerror(errno));
   args.study_ = path;
@@ -237,6 +247,10 @@ void ReadStudyFile(const std::string& path, const po::options_description& desc,
     auto malformed = [&](const std::string& why) {
       return UsageError("study file " + where + ": " + why);
     };
+    if (raw.find('\0') != std::string::npos)
+      throw malformed("a NUL byte (column " + std::to_string(raw.find('\0') + 1) +
+                      "): not a text file");
+    if (line > kMaxStudyBytes) throw malformed("the file grew while it was read");
     const std::string text = Trim(raw.substr(0, raw.find('#')));
     if (text.empty()) continue;
     if (text.front() == '[') {
@@ -298,6 +312,29 @@ std::string FirstGiven(const Arguments& args, const std::vector<std::string>& na
   return "";
 }
 
+// A value given for a parameter the law does not use is validated as its
+// own law would (so --v_s -1 is refused with the cubic law too).
+void CheckOtherLaws(const Arguments& args, const Params& p) {
+  const std::map<std::string, std::string> physical = {
+      {"v_m", "speed_m"}, {"v_s", "speed_s"}, {"delta", "delta_phys"}};
+  for (LawKind law : {LawKind::kCubic, LawKind::kCoulomb, LawKind::kStribeck, LawKind::kLeine}) {
+    if (law == p.law) continue;
+    const auto names = ParameterNames(law);
+    bool given = false;
+    for (std::size_t i = 3; i < names.size(); ++i) {  // past beta, v, mu_s
+      const auto it = physical.find(names[i]);
+      given = given || args.Given(names[i]) || (it != physical.end() && args.Given(it->second));
+    }
+    if (!given) continue;
+    Params q = p;
+    q.law = law;
+    const std::string err = ValidationError(q);
+    if (!err.empty())
+      throw UsageError("invalid model: " + WithOrigin(args, err) + " (a " + LawName(law) +
+                       " parameter, unused by the " + LawName(p.law) + " law)");
+  }
+}
+
 }  // namespace
 
 Params ModelFromArguments(const Arguments& args) { return ModelFromArguments(args, "", 0.0); }
@@ -308,6 +345,7 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
   if (!continued.empty() && IsParameterName(continued)) SetParameter(checked, continued, at);
   const std::string err = ValidationError(checked);
   if (!err.empty()) throw UsageError("invalid model: " + WithOrigin(args, err));
+  CheckOtherLaws(args, checked);
   return p;
 }
 
@@ -366,6 +404,17 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args) {
   f.rtol = args.Number("rtol", f.rtol);
   f.atol = args.Number("atol", f.atol);
   f.max_steps = args.Integer("max_steps", f.max_steps);
+  if (args.Given("integrator")) {
+    const std::string i = args.Text("integrator");
+    if (i == "taylor") {
+      f.integrator = Integrator::kTaylor;
+    } else if (i == "cvode") {
+      f.integrator = Integrator::kCvode;
+    } else {
+      throw UsageError("invalid value '" + i + "' for " + args.Source("integrator") +
+                       ": expected taylor or cvode");
+    }
+  }
   if (args.Given("method")) {
     const std::string m = args.Text("method");
     if (m == "adams") {
@@ -410,8 +459,11 @@ int ReportError(const std::string& prog, const std::exception& e) {
 }
 
 int RunApp(const std::string& prog, const std::function<int()>& body) {
+  std::signal(SIGPIPE, SIG_IGN);  // a closed stdout is reported below, not fatal
   try {
-    return body();
+    const int code = body();
+    CheckStdout();
+    return code;
   } catch (const std::exception& e) {
     return ReportError(prog, e);
   } catch (...) {

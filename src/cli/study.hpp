@@ -26,7 +26,7 @@
 // --delta_phys (leine), and they are converted by ToDimensionless. The
 // dimensionless --beta --v --v_m --v_s --delta are then an error. The
 // friction coefficients --mu_s --mu_m --mu_k are shared by both sets.
-// Parameters the chosen law does not use are ignored.
+// Parameters the chosen law does not use are ignored, but validated if given.
 #pragma once
 
 #include <boost/program_options.hpp>
@@ -106,7 +106,10 @@ class Arguments {
 Arguments ParseArguments(int argc, const char* const argv[], const po::options_description& desc,
                          const std::string& section);
 // Reads a study file into args; keys already given there are kept (the
-// command line wins). Throws UsageError naming the file and line.
+// command line wins). Throws UsageError naming the file and line. Only a
+// regular file of at most kMaxStudyBytes is read (a FIFO or device is refused
+// before it is opened); a NUL byte is an error naming its line.
+constexpr long kMaxStudyBytes = 1 << 20;
 void ReadStudyFile(const std::string& path, const po::options_description& desc,
                    const std::string& section, Arguments& args);
 
@@ -139,7 +142,8 @@ void PrintError(const std::string& prog, const std::string& message);
 // Prints e with PrintError and returns the exit code: 2 for bad input
 // (InvalidArgument, UsageError, Boost.PO errors), 1 for anything else.
 int ReportError(const std::string& prog, const std::exception& e);
-// Runs an app's body; an escaping exception goes through ReportError.
+// Runs an app's body with SIGPIPE ignored; an escaping exception goes through
+// ReportError, and a failed write to stdout (CheckStdout) makes it exit 1.
 int RunApp(const std::string& prog, const std::function<int()>& body);
 
 }  // namespace stickslip::cli

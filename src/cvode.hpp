@@ -1,4 +1,4 @@
-// A move-only owner of one CVODE integrator with root finding (SUNDIALS 6.4),
+// Private to src/: a move-only owner of one CVODE integrator with root finding (SUNDIALS 6.4),
 // after examples/cvode/serial/cvRoberts_dns.c: every return code is checked at
 // the call site; a failed set-up call throws ExternalError naming the call.
 #pragma once
@@ -8,13 +8,9 @@
 
 #include <string>
 
-namespace stickslip {
+#include "stickslip/flow.hpp"  // Method
 
-enum class Method {
-  kAdams,  // Adams-Moulton with fixed-point iteration: non-stiff, the default
-  kBdf,    // BDF with Newton and a dense linear solver: for stiff problems
-};
-const char* MethodName(Method m);
+namespace stickslip {
 
 class Cvode {
  public:

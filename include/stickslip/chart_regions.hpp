@@ -1,0 +1,23 @@
+// The regions of a stability chart, point by point (chart.hpp, RegionGrid).
+#pragma once
+
+#include "stickslip/chart.hpp"
+
+namespace stickslip {
+
+// The region at p: steady sliding stable where 2 beta + mu'(v) > 0; a
+// stick-slip orbit where the grazing gap is > 0. With stable steady sliding
+// and no stick-slip orbit, and only if pure_slip_check, the section map is
+// iterated from the exit trajectory's first maximum of x: a sequence that
+// settles on a pure-slip orbit (instead of decaying to the equilibrium) means
+// a stable pure-slip orbit beside stable steady sliding (bistable).
+Region ClassifyPoint(OrbitFinder& finder, const Params& p, bool pure_slip_check);
+
+// The grid of options.region_n1 x options.region_n2 cell centres. A stable
+// pure-slip orbit beside stable steady sliding needs a fold of pure-slip
+// orbits: an LP curve, or a GR point of persistence type where steady sliding
+// is stable; the pure-slip check runs only if `curves` has one.
+RegionGrid ClassifyGrid(const Params& base, const ChartOptions& options,
+                        const std::vector<Curve>& curves);
+
+}  // namespace stickslip

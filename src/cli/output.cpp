@@ -1,0 +1,180 @@
+#include "cli/output.hpp"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+#include "cli/study.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+constexpr std::size_t kStagingLength = 32;   // "/.<prog>-XXXXXX/", prog kept short
+constexpr std::size_t kTempNameLength = 32;  // ".<name>.tmp-<pid>-<counter>" beyond name
+
+bool HasControl(const std::string& s) {
+  return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 32; });
+}
+
+std::string Parent(const std::string& dir) {
+  std::string d = dir;
+  while (d.size() > 1 && d.back() == '/') d.pop_back();
+  const auto slash = d.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : d.substr(0, slash);
+}
+
+// A writable, searchable directory, or the reason it is not.
+std::string DirectoryProblem(const std::string& dir) {
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0) return std::strerror(errno);
+  if (!S_ISDIR(st.st_mode)) return "not a directory";
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    return std::string("not writable: ") + std::strerror(errno);
+  return "";
+}
+
+}  // namespace
+
+OutputSet::OutputSet(std::string dir, std::vector<std::string> names, const std::string& source,
+                     const std::string& prog)
+    : dir_(std::move(dir)), names_(std::move(names)), prog_(prog.substr(0, 16)) {
+  auto bad = [&](const std::string& why) {
+    return UsageError("invalid value '" + dir_ + "' for " + source + ": " + why);
+  };
+  if (dir_.empty()) throw bad("empty");
+  if (HasControl(dir_)) throw bad("a line break or control character in the path");
+  struct stat st;
+  if (::stat(dir_.c_str(), &st) == 0) {
+    const std::string why = DirectoryProblem(dir_);
+    if (!why.empty()) throw bad(why);
+  } else if (errno == ENOENT) {
+    const std::string why = DirectoryProblem(Parent(dir_));
+    if (!why.empty()) throw bad("cannot create it in '" + Parent(dir_) + "': " + why);
+  } else {
+    throw bad(std::strerror(errno));
+  }
+  for (const auto& name : names_) CheckName(name, source);
+}
+
+void OutputSet::CheckName(const std::string& name, const std::string& source) const {
+  const std::string path = dir_ + "/" + name;
+  auto bad = [&](const std::string& why) {
+    return UsageError("cannot write '" + path + "' (from " + source + "): " + why);
+  };
+  if (name.empty() || name.find('/') != std::string::npos || HasControl(name) || name == "." ||
+      name == "..")
+    throw bad("not a plain file name");
+  // Room for the temporary name of the atomic write, ".<name>.tmp-<pid>-<n>".
+  if (name.size() + kTempNameLength > NAME_MAX)
+    throw bad("file name longer than " + std::to_string(NAME_MAX - kTempNameLength) + " bytes");
+  if (path.size() + kStagingLength + kTempNameLength >= PATH_MAX)
+    throw bad("path longer than " + std::to_string(PATH_MAX - kStagingLength - kTempNameLength) +
+              " bytes");
+  struct stat st;
+  if (::lstat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return;
+    throw bad(std::strerror(errno));
+  }
+  if (S_ISREG(st.st_mode)) return;
+  if (S_ISLNK(st.st_mode)) throw bad("a symbolic link stands there (never followed nor replaced)");
+  if (S_ISDIR(st.st_mode)) throw bad("a directory stands there");
+  throw bad("not a regular file (device, FIFO or socket); only regular files are replaced");
+}
+
+OutputSet::~OutputSet() { Discard(); }
+
+void OutputSet::Discard() {
+  if (staging_.empty()) return;
+  for (const auto& name : staged_) ::unlink((staging_ + "/" + name).c_str());
+  // Anything else a failed gnuplot left behind.
+  if (DIR* d = ::opendir(staging_.c_str())) {
+    while (const dirent* e = ::readdir(d)) {
+      const std::string n = e->d_name;
+      if (n != "." && n != "..") ::unlink((staging_ + "/" + n).c_str());
+    }
+    ::closedir(d);
+  }
+  ::rmdir(staging_.c_str());
+  staged_.clear();
+  staging_.clear();
+}
+
+std::string OutputSet::Staging() {
+  if (!staging_.empty()) return staging_;
+  if (::mkdir(dir_.c_str(), 0777) != 0 && errno != EEXIST)
+    throw Error("cannot create '" + dir_ + "': " + std::strerror(errno));
+  std::string templ = dir_ + "/." + prog_ + "-XXXXXX";
+  if (::mkdtemp(templ.data()) == nullptr)
+    throw Error("cannot create a staging directory in '" + dir_ + "': " + std::strerror(errno));
+  staging_ = templ;
+  return staging_;
+}
+
+void OutputSet::Write(const std::string& name, const std::string& content) {
+  if (std::find(names_.begin(), names_.end(), name) == names_.end())
+    throw InvalidArgument("OutputSet: '" + name + "' was not declared");
+  const std::string path = Staging() + "/" + name;
+  try {
+    WriteFileAtomically(path, content);
+  } catch (const Error& e) {
+    throw Error("cannot write '" + dir_ + "/" + name + "': " + e.what());
+  }
+  if (std::find(staged_.begin(), staged_.end(), name) == staged_.end()) staged_.push_back(name);
+}
+
+GnuplotResult OutputSet::Draw(const std::string& script, const std::vector<std::string>& figures,
+                              const std::function<bool()>& cancelled) {
+  GnuplotResult r = RunGnuplot(Staging() + "/" + script, Staging(), cancelled);
+  for (const auto& f : figures) {
+    if (!r.ok()) break;
+    const std::string err = PngError(Staging() + "/" + f);
+    if (!err.empty())
+      r = {GnuplotStatus::kFailed,
+           "figure " + f + " not drawn whole (disk full?): " + err.substr(err.find("': ") + 3)};
+  }
+  for (const auto& f : figures) {
+    if (r.ok()) {
+      if (std::find(staged_.begin(), staged_.end(), f) == staged_.end()) staged_.push_back(f);
+    } else {
+      ::unlink((Staging() + "/" + f).c_str());
+    }
+  }
+  return r;
+}
+
+void OutputSet::Commit(const std::vector<std::string>& stale) {
+  const std::string where = Staging();
+  const int lock = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (lock < 0) throw Error("cannot open '" + dir_ + "': " + std::strerror(errno));
+  while (::flock(lock, LOCK_EX) != 0 && errno == EINTR) {
+  }
+  std::string error;
+  for (const auto& name : staged_) {
+    const std::string from = where + "/" + name, to = dir_ + "/" + name;
+    if (error.empty() && ::rename(from.c_str(), to.c_str()) != 0)
+      error = "cannot move '" + name + "' into '" + dir_ + "': " + std::strerror(errno);
+  }
+  if (error.empty()) staged_.clear();
+  for (const auto& name : stale) {
+    if (!error.empty()) break;
+    const std::string path = dir_ + "/" + name;
+    struct stat st;
+    if (::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::unlink(path.c_str());
+  }
+  ::close(lock);  // releases the lock
+  if (!error.empty()) throw Error(error);
+  Discard();  // the staging directory, now empty
+}
+
+}  // namespace stickslip::cli

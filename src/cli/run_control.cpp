@@ -1,0 +1,108 @@
+#include "cli/run_control.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+
+#include "stickslip/errors.hpp"
+#include "stickslip/report.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+
+void OnSignal(int sig) {
+  if (g_signal != 0) {  // the second one: the default action, at once
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+    return;
+  }
+  g_signal = sig;
+}
+
+std::string Seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, s < 100 ? "%.1f s" : "%.0f s", s);
+  return buf;
+}
+
+}  // namespace
+
+RunControl::RunControl(std::string prog, double max_time)
+    : prog_(std::move(prog)),
+      max_time_(max_time),
+      start_(std::chrono::steady_clock::now()),
+      terminal_(::isatty(STDERR_FILENO) == 1) {
+  g_signal = 0;
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
+  std::signal(SIGPIPE, SIG_IGN);
+}
+
+double RunControl::Elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool RunControl::Cancelled() const {
+  return g_signal != 0 || (max_time_ > 0 && Elapsed() > max_time_);
+}
+
+std::string RunControl::Reason() const {
+  if (g_signal != 0) {
+    const int s = g_signal;
+    return std::string("interrupted by signal ") + std::to_string(s) +
+           (s == SIGINT    ? " (SIGINT)"
+            : s == SIGTERM ? " (SIGTERM)"
+                           : "");
+  }
+  if (max_time_ > 0 && Elapsed() > max_time_)
+    return "time limit of " + FormatNumber(max_time_) + " s reached";
+  return "";
+}
+
+void RunControl::Phase(const std::string& name) { phase_ = name; }
+
+void RunControl::Line(const std::string& text) {
+  last_line_ = Elapsed();
+  std::cerr << prog_ << ": " << text << std::endl;
+}
+
+void RunControl::Progress(const std::string& what, double fraction, double count,
+                          const std::string& unit) {
+  const double t = Elapsed();
+  if (t < last_line_ + 1.0) return;
+  std::string text = what + " after " + Seconds(t);
+  if (terminal_) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, ", %.3g %s/s", t > 0 ? count / t : 0.0, unit.c_str());
+    text += buf;
+    if (fraction > 0.01 && fraction <= 1) text += ", ETA " + Seconds(t * (1 - fraction) / fraction);
+  }
+  Line(text);
+}
+
+void RunControl::Heartbeat(const std::string& detail) {
+  if (Elapsed() < last_line_ + 2.0) return;
+  Line("still " + phase_ + (detail.empty() ? "" : " (" + detail + ")") + " after " +
+       Seconds(Elapsed()));
+}
+
+void CheckStdout() {
+  errno = 0;
+  std::cout.flush();
+  const bool bad = !std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (bad) {
+    const int e = errno;
+    std::cout.clear();
+    throw Error(std::string("cannot write to standard output") +
+                (e != 0 ? std::string(": ") + std::strerror(e) : ""));
+  }
+}
+
+}  // namespace stickslip::cli

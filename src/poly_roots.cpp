@@ -1,0 +1,145 @@
+#include "poly_roots.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stickslip/roots.hpp"
+
+namespace stickslip {
+namespace {
+
+constexpr int kMaxDegree = 40;
+constexpr int kMaxDepth = 60;     // halvings: 2^-60 is below double resolution on [0, 1]
+constexpr int kMaxPieces = 2000;  // a bound on the work where g stays near 0
+
+struct Piece {
+  double u0, u1;
+  int depth;
+  double b[kMaxDegree + 1];
+};
+
+// b_i = sum_{k <= i} C(i, k) / C(n, k) c_k (Farouki & Rajan 1988).
+void ToBernstein(const double* c, int n, double* b) {
+  for (int i = 0; i <= n; ++i) {
+    double sum = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
+    for (int k = 0; k <= i; ++k) {
+      sum += ratio * c[k];
+      ratio *= static_cast<double>(i - k) / (n - k);
+    }
+    b[i] = sum;
+  }
+}
+
+// De Casteljau at 1/2: left half into l, right half into r.
+void Split(const double* b, int n, double* l, double* r) {
+  double w[kMaxDegree + 1];
+  std::copy(b, b + n + 1, w);
+  for (int j = 0; j <= n; ++j) {
+    l[j] = w[0];
+    r[n - j] = w[n - j];
+    for (int i = 0; i < n - j; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
+  }
+}
+
+int Sign(double x, int zero_sign) { return x > 0 ? 1 : (x < 0 ? -1 : zero_sign); }
+
+}  // namespace
+
+PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
+  PolyRoot out;
+  double scale = 0;
+  for (int k = 0; k <= n; ++k) scale += std::abs(c[k]);
+  if (scale == 0) return out;
+  // Rounding of the conversion and the halvings: a few ulp of sum |c_k| per degree.
+  const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
+  // The cheapest bound first: |g(u) - c_0| <= sum_{k>=1} |c_k| on [0, 1].
+  if (sign * c[0] - (scale - std::abs(c[0])) > margin) return out;
+  auto g = [&](double u) { return Horner(c, n, u); };
+  auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
+
+  // Depth-first, left half first: the first interval that holds a sign change
+  // holds the first root.
+  Piece stack[kMaxDepth + 2];
+  int top = 0, pieces = 0;
+  stack[0].u0 = 0;
+  stack[0].u1 = 1;
+  stack[0].depth = 0;
+  ToBernstein(c, n, stack[0].b);
+  while (top >= 0) {
+    Piece& p = stack[top];
+    const double* b = p.b;
+    double lower = INFINITY;  // min of sign * b_i: a lower bound of sign * g here
+    int variations = 0;
+    for (int i = 0; i <= n; ++i) {
+      lower = std::min(lower, sign * b[i]);
+      if (i > 0 && Sign(b[i], zero_sign) != Sign(b[i - 1], zero_sign)) ++variations;
+    }
+    if (lower > margin) {  // no root here
+      --top;
+      continue;
+    }
+    const double u0 = p.u0, u1 = p.u1;
+    const bool end_changed = changed(u1);
+    const bool isolated = variations == 1 && end_changed && !changed(u0);
+    // Within rounding of 0 (lower >= -margin), only a sign change that shows
+    // in the values counts: halving further would chase noise.
+    const bool noise = lower >= -margin || ++pieces > kMaxPieces;
+    if (isolated || noise || p.depth >= kMaxDepth || u1 - u0 <= 4e-16 * std::max(1.0, u1)) {
+      if (!end_changed) {  // a touch within rounding, or no root: nothing here
+        --top;
+        continue;
+      }
+      // Bracket [u0, u1]: g has `sign` at u0 (or u0 is the interval start) and not at u1.
+      if (changed(u0)) {
+        out.found = true;
+        out.u = u0;
+        return out;
+      }
+      // Zeros mapped to their counted sign, so Brent sees one sign change.
+      const RootResult r = FindRoot(
+          [&](double u) {
+            const double x = g(u);
+            return x != 0 ? x : zero_sign * 1e-300;
+          },
+          u0, u1, 1e-17);
+      // Then bisection to the first point where the sign has changed.
+      double lo = u0, hi = u1;
+      if (r.ok && r.x > lo && r.x < hi) {
+        const double x = r.x, d = 8e-16 * std::max(1.0, std::abs(x)) + 1e-17;
+        if (changed(x)) {
+          hi = x;
+          if (x - d > lo && !changed(x - d)) lo = x - d;
+        } else {
+          lo = x;
+          if (x + d < hi && changed(x + d)) hi = x + d;
+        }
+      }
+      for (int it = 0; it < 200 && std::nextafter(lo, 2.0) < hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (changed(mid) ? hi : lo) = mid;
+      }
+      out.found = true;
+      out.u = hi;
+      return out;
+    }
+    // Halve: the right half below the left one on the stack.
+    Piece& right = stack[top];
+    double lb[kMaxDegree + 1], rb[kMaxDegree + 1];
+    Split(b, n, lb, rb);
+    const double mid = 0.5 * (u0 + u1);
+    const int depth = p.depth + 1;
+    right.u0 = mid;
+    right.u1 = u1;
+    right.depth = depth;
+    std::copy(rb, rb + n + 1, right.b);
+    Piece& l = stack[++top];
+    l.u0 = u0;
+    l.u1 = mid;
+    l.depth = depth;
+    std::copy(lb, lb + n + 1, l.b);
+  }
+  return out;
+}
+
+}  // namespace stickslip

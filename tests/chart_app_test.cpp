@@ -1,0 +1,122 @@
+// End-to-end tests of the built ss_chart: bad input is rejected with exit code
+// 2, one stderr line naming the problem and nothing written; --help and
+// --version; the seed study writes curves.tsv and codim2.tsv with the
+// metadata lines of branch.tsv.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "app_test_util.hpp"
+
+namespace {
+
+const std::string kApp = STICKSLIP_BIN_DIR "/ss_chart";
+const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
+
+using stickslip::testing_util::Contains;
+using stickslip::testing_util::Exists;
+using stickslip::testing_util::ReadFile;
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+class ChartApp : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(Exists(kApp)) << kApp << " not built";
+    std::string tmpl = ::testing::TempDir() + "ss_chart_test_XXXXXX";
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
+
+  std::string Out() const { return dir_ + "/out"; }
+
+  // Runs the app (killed after 120 s) with stdout and stderr captured.
+  Result Run(const std::vector<std::string>& args) {
+    std::string cmd = "timeout -s KILL 120 '" + kApp + "'";
+    for (const auto& a : args) cmd += " '" + a + "'";
+    cmd += " > '" + dir_ + "/stdout.txt' 2> '" + dir_ + "/stderr.txt'";
+    const int status = std::system(cmd.c_str());
+    Result r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = ReadFile(dir_ + "/stdout.txt");
+    r.err = ReadFile(dir_ + "/stderr.txt");
+    return r;
+  }
+
+  // Exit 2, one line "ss_chart: error: ..." with every part, and no --out.
+  void ExpectRejected(std::vector<std::string> args, const std::vector<std::string>& parts) {
+    args.insert(args.end(), {"--out", Out(), "--no_plots"});
+    const Result r = Run(args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("ss_chart: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+    for (const auto& p : parts) EXPECT_TRUE(Contains(r.err, p));
+    EXPECT_FALSE(Exists(Out())) << "--out was created";
+  }
+
+  std::string dir_;
+};
+
+TEST_F(ChartApp, EqualAxesExit2) {
+  ExpectRejected({"--param", "v", "--param2", "v"}, {"param = param2 = 'v'", "must differ"});
+}
+
+TEST_F(ChartApp, UnknownParameterExits2) {
+  ExpectRejected({"--param2", "gamma"}, {"param2 = 'gamma'", "no parameter"});
+  ExpectRejected({"--param", "delta"}, {"'delta'", "does not apply to the cubic law"});
+}
+
+TEST_F(ChartApp, EmptyOrInvertedRectangleExits2) {
+  ExpectRejected({"--from", "0.3", "--to", "0.3"}, {"from = 0.3", "empty"});
+  ExpectRejected({"--from2", "0.2", "--to2", "0.1"}, {"from2 = 0.2", "inverted"});
+}
+
+TEST_F(ChartApp, RectangleLeavingTheDomainExits2) {
+  ExpectRejected({"--from2", "-0.1", "--to2", "0.1"}, {"leaves the model's domain", "beta = -0.1"});
+  ExpectRejected({"--param2", "mu_s", "--from2", "0.2", "--to2", "0.5"},
+                 {"leaves the model's domain", "mu_m = 0.25 must be < mu_s"});
+  ExpectRejected({"--k5", "0.24", "--to", "1.5"}, {"k5 = 0.24 makes mu(v)"});
+}
+
+TEST_F(ChartApp, BadNumbersAndOptionsExit2) {
+  ExpectRejected({"--to2", "abc"}, {"--to2", "'abc'"});
+  ExpectRejected({"--grid", "1"}, {"--grid", "[2, 1000]"});
+  ExpectRejected({"--k5", "-1"}, {"k5 = -1 must be >= 0"});
+  ExpectRejected({"--gamma", "1"}, {"gamma"});
+}
+
+TEST_F(ChartApp, HelpAndVersion) {
+  Result r = Run({"--help"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_TRUE(Contains(r.out, "usage: ss_chart"));
+  EXPECT_TRUE(Contains(r.out, "--param2"));
+  r = Run({"--version"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("ss_chart 0.", 0), 0u) << r.out;
+}
+
+TEST_F(ChartApp, SeedStudyWritesCurvesWithMetadata) {
+  const Result r = Run({"--study", kStudies + "/seed_chart.ini", "--out", Out(), "--no_plots"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string curves = ReadFile(Out() + "/curves.tsv");
+  // Metadata lines first, then the header line without '#'.
+  EXPECT_EQ(curves.rfind("# ", 0), 0u);
+  EXPECT_TRUE(Contains(curves, "\nv\tbeta\tcurve\tid\tperiod\tamplitude\tmultiplier\tl1\ttype\t"));
+  EXPECT_LT(curves.find("\n# status: complete\n"), curves.find("\nv\tbeta\tcurve\t"));
+  EXPECT_TRUE(Contains(curves, "# model: law=cubic "));
+  EXPECT_TRUE(Contains(curves, "\tHB\t1\t"));
+  EXPECT_TRUE(Contains(curves, "\tGR\t2\t"));
+  EXPECT_FALSE(Contains(curves, "nan"));
+  EXPECT_TRUE(Contains(ReadFile(Out() + "/codim2.tsv"), "\nlabel\tv\tbeta\tdescription\n"));
+  EXPECT_FALSE(Exists(Out() + "/chart.png"));
+}
+
+}  // namespace
