@@ -25,6 +25,7 @@
 #include "stickslip/continuation.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/report.hpp"
+#include "stickslip/version.hpp"
 namespace ssbench {
 
 namespace ref = stickslip::reference;
@@ -59,15 +60,18 @@ ss::TsvTable Table(const std::vector<Row>& rows, const Reference& ref, const Pro
        "speedup_branch", "note"});
   std::string vs;
   for (double v : kV) vs += (vs.empty() ? "" : " ") + ss::FormatNumber(v);
-  t.AddComment("ss_bench: seed set (cubic law), orbits at v = " + vs +
-               "; err_period relative, err_xmax absolute, max over v; times are medians");
-  t.AddComment("reference: GR v_g = " + ss::FormatNumber(ref.v_gr) +
-               ", HB v_H = " + ss::FormatNumber(ref.v_hb) +
-               "; reference spread (tol 1e-16 vs 1e-14): period " + Sci(ref.spread_period) +
-               ", x_max " + Sci(ref.spread_x) + ", GR " + Sci(ref.spread_gr));
-  t.AddComment("ss_continue process (default rtol 1e-11), medians: --no_plots " + Ms(pt.full) +
-               " ms, --no_plots --no_estimates " + Ms(pt.no_estimates) + " ms, start-up (--help) " +
-               Ms(pt.startup) + " ms");
+  t.AddMeta("tool", std::string("ss_bench ") + ss::Version());
+  if (*ss::GitCommit()) t.AddMeta("commit", ss::GitCommit());
+  t.AddMeta("setting",
+            "seed set (cubic law), orbits at v = " + vs +
+                "; err_period relative, err_xmax absolute, max over v; times are medians");
+  t.AddMeta("reference",
+            "GR v_g = " + ss::FormatNumber(ref.v_gr) + ", HB v_H = " + ss::FormatNumber(ref.v_hb) +
+                "; reference spread (tol 1e-16 vs 1e-14): period " + Sci(ref.spread_period) +
+                ", x_max " + Sci(ref.spread_x) + ", GR " + Sci(ref.spread_gr));
+  t.AddMeta("ss_continue", "process (default rtol 1e-11), medians: --no_plots " + Ms(pt.full) +
+                               " ms, --no_plots --no_estimates " + Ms(pt.no_estimates) +
+                               " ms, start-up (--help) " + Ms(pt.startup) + " ms");
   for (const Row& r : rows)
     t.AddRow({r.method,
               r.rtol,

@@ -10,6 +10,7 @@ data = "work_precision.tsv"
 set terminal pngcairo size 1500,800 enhanced font "Sans,11"
 set output "work_precision.png" . suffix
 set datafile separator "\t"
+set datafile columnheaders
 set datafile missing "nan"
 set logscale xy
 set format x "10^{%L}"

@@ -5,7 +5,9 @@ Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12]
 
 For branch.tsv and special_points.tsv: the same header, the same number of
 rows, text cells equal, and every numeric cell within tol (absolute, scaled
-by max(1, |base|)); nan must match nan. Comment lines other than the header
+by max(1, |base|)); nan must match nan. Either layout is read: the header as
+the first '#' line (before 0.1.0's metadata) or as the first line without '#'.
+Comment lines other than the header
 (# model, # status) must be equal too, except `# key: value` metadata lines
 that BASE does not have (counts and timings). Exit 0 if equal, 1 otherwise.
 """
@@ -19,10 +21,12 @@ def read(path):
         for line in f:
             line = line.rstrip("\n")
             if line.startswith("#"):
-                if header is None:
+                if header is None and "\t" in line:  # the old layout: '# col1<TAB>col2...'
                     header = line[1:].strip().split("\t")
                 else:
                     comments.append(line)
+            elif line and header is None:  # '# key: value' lines, then the header line
+                header = line.split("\t")
             elif line:
                 rows.append(line.split("\t"))
     return header, comments, rows

@@ -7,7 +7,8 @@ build=${1:-build}
 shift || true
 
 packages=(g++ make cmake libeigen3-dev libnlopt-cxx-dev libsundials-dev
-          libboost-program-options-dev libboost-dev libgtest-dev gnuplot-nox)
+          libboost-program-options-dev libboost-dev libgtest-dev gnuplot-nox
+          python3-dev pybind11-dev python3-pybind11 python3-numpy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

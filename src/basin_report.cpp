@@ -65,6 +65,7 @@ std::string BasinScript(const BasinResult& r, const Model& model,
      << "set terminal pngcairo size 1000,800 enhanced font ',12'\n"
      << "set output 'basins.png'.suffix\n"
      << "set datafile separator '\\t'\n"
+     << "set datafile columnheaders\n"
      << "set title '" << title << "' noenhanced\n"
      << "set xlabel 'x'\nset ylabel \"x'\"\n"
      << "set xrange [" << Num(r.x_lo - dx / 2) << ":" << Num(r.x_hi + dx / 2) << "]\n"

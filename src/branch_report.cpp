@@ -89,14 +89,14 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
     cols.push_back(c.name);
   }
   TsvTable t(cols);
-  t.AddComment("model: " + model_description);
+  t.AddMeta("model", model_description);
   if (r.partial())
-    t.AddComment(std::string("status: partial (") + ContinuationStatusName(r.status) +
-                 "): " + r.message);
+    t.AddMeta("status",
+              std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
   else
-    t.AddComment("status: complete");
-  for (const std::string& w : r.warnings) t.AddComment("warning: " + w);
-  for (const auto& kv : SummaryFields(r)) t.AddComment(kv.first + ": " + kv.second);
+    t.AddMeta("status", "complete");
+  for (const std::string& w : r.warnings) t.AddMeta("warning", w);
+  for (const auto& kv : SummaryFields(r)) t.AddMeta(kv.first, kv.second);
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
     std::vector<TsvTable::Cell> row = {p.p,
@@ -117,11 +117,29 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
   return t;
 }
 
-TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param) {
-  TsvTable t({"label", param, "period", "x_min", "x_max", "xdot_min", "description"});
-  if (r.partial()) t.AddComment("status: partial: " + r.message);
-  for (const SpecialPoint& s : r.special)
-    t.AddRow({SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description});
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
+                           const std::vector<ExtraColumn>& extra) {
+  std::vector<std::string> cols = {"label", param,      "period",     "x_min",
+                                   "x_max", "xdot_min", "description"};
+  for (const auto& c : extra) {
+    if (c.values.size() != r.special.size())
+      throw InvalidArgument("extra column '" + c.name + "' has " + std::to_string(c.values.size()) +
+                            " values for " + std::to_string(r.special.size()) + " special points");
+    cols.push_back(c.name);
+  }
+  TsvTable t(cols);
+  if (r.partial())
+    t.AddMeta("status",
+              std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
+  else
+    t.AddMeta("status", "complete");
+  for (size_t i = 0; i < r.special.size(); ++i) {
+    const SpecialPoint& s = r.special[i];
+    std::vector<TsvTable::Cell> row = {
+        SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description};
+    for (const auto& c : extra) row.emplace_back(c.values[i]);
+    t.AddRow(row);
+  }
   return t;
 }
 
@@ -191,6 +209,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
      << "if (!exists('suffix')) suffix = ''\n"
      << "set terminal pngcairo size 1000,700 enhanced font ',12'\n"
      << "set datafile separator '\\t'\n"
+     << "set datafile columnheaders\n"
      << "set key top right\n"
      << "set grid\n"
      << "set xlabel '" << param << "'\n"

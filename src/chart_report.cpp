@@ -62,6 +62,7 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "set terminal pngcairo size 1100,800 enhanced font ',12'\n"
      << "set output 'chart.png'.suffix\n"
      << "set datafile separator '\\t'\n"
+     << "set datafile columnheaders\n"
      << "set xlabel '" << plane.p1 << "' noenhanced\nset ylabel '" << plane.p2 << "' noenhanced\n"
      << "set xrange [" << plane.from1 << ":" << plane.to1 << "]\n"
      << "set yrange [" << plane.from2 << ":" << plane.to2 << "]\n"

@@ -4,6 +4,7 @@
 #include <nlopt.h>
 
 #include <algorithm>
+#include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -188,15 +189,9 @@ double FirstCrossing(double a1, double y0, double v, double r1) {
   return kNaN;
 }
 
-// The root s in (-1, 0) of (1 + s) e^{-s} = c, 0 < c < 1 (increasing there).
-double NegativeRoot326(double c) {
-  double lo = -1.0, hi = 0.0;
-  for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    ((1 + mid) * std::exp(-mid) < c ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
+// The root s in (-1, 0) of (1 + s) e^{-s} = c, 0 < c < 1: with w = -(1 + s)
+// it is w e^w = -c / e, w in (-1, 0), the principal Lambert W branch.
+double NegativeRoot326(double c) { return -1.0 - boost::math::lambert_w0(-c / std::exp(1.0)); }
 
 }  // namespace
 

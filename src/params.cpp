@@ -108,6 +108,19 @@ std::string QuinticError(const Params& p) {
 }
 }  // namespace
 
+ParameterRange DefaultRange(const Params& base, const std::string& name) {
+  const double x = GetParameter(base, name);  // throws on an unknown name
+  if (name == "beta") return {0.01, 0.3};
+  if (name == "v") return {0.05, 0.5};
+  if (name == "mu_s") {
+    const double lower = base.law == LawKind::kCubic ? base.mu_m : base.mu_k;
+    return {1.2 * lower, 2.0 * base.mu_s};
+  }
+  if (name == "mu_m" || name == "mu_k") return {0.2 * base.mu_s, 0.9 * base.mu_s};
+  if (name == "k5") return {0.0, std::max(1.0, 2.0 * x)};
+  return {0.5 * x, 2.0 * x};  // v_m, v_s, delta: a factor of two each way
+}
+
 std::string ValidationError(const Params& p) {
   for (const auto& name : ParameterNames(p.law)) {
     const double x = GetParameter(p, name);

@@ -101,6 +101,19 @@ void TsvTable::AddComment(const std::string& text) {
   comments_.push_back(text);
 }
 
+void TsvTable::AddMeta(const std::string& key, const std::string& value) {
+  if (key.empty() || key.find(':') != std::string::npos)
+    throw InvalidArgument("TsvTable: bad metadata key '" + key + "'");
+  AddComment(key + ": " + value);
+}
+
+void TsvTable::PrependMeta(const std::vector<std::pair<std::string, std::string>>& lines) {
+  std::vector<std::string> old;
+  old.swap(comments_);
+  for (const auto& [key, value] : lines) AddMeta(key, value);
+  comments_.insert(comments_.end(), old.begin(), old.end());
+}
+
 void TsvTable::AddRow(const std::vector<Cell>& cells) {
   if (cells.size() != columns_.size())
     throw InvalidArgument("TsvTable: row has " + std::to_string(cells.size()) +
@@ -117,14 +130,13 @@ void TsvTable::AddRow(const std::vector<Cell>& cells) {
 }
 
 std::string TsvTable::str() const {
-  std::string out = "# ";
+  std::string out;
+  for (const auto& c : comments_) out += "# " + c + "\n";
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i > 0) out += '\t';
     out += columns_[i];
   }
-  out += '\n';
-  for (const auto& c : comments_) out += "# " + c + "\n";
-  return out + body_;
+  return out + '\n' + body_;
 }
 
 namespace {

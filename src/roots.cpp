@@ -1,6 +1,9 @@
 #include "stickslip/roots.hpp"
 
+#include <algorithm>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace stickslip {
@@ -71,65 +74,22 @@ RootResult FindRoot(const std::function<double(double)>& f, double a, double b, 
   return {false, b, fb, r.evaluations};
 }
 
-// Brent (1973), ch. 5.
+// Brent (1973), ch. 5 (boost::math::tools::brent_find_minima): golden section
+// with parabolic steps, to about xtol.
 RootResult FindMinimum(const std::function<double(double)>& f, double a, double b, double xtol,
                        int max_evaluations) {
-  const double golden = 0.5 * (3 - std::sqrt(5.0));
-  double x = a + golden * (b - a), w = x, v = x;
-  double fx = f(x), fw = fx, fv = fx;
-  double d = 0, e = 0;
+  // Boost's tolerance is 2^(1 - bits) (|x| + 1/4): bits for xtol at |x| ~ 1.
+  const int bits =
+      std::clamp(static_cast<int>(1 - std::log2(xtol)), 1, std::numeric_limits<double>::digits / 2);
+  std::uintmax_t iterations = static_cast<std::uintmax_t>(std::max(max_evaluations - 1, 1));
   RootResult r;
-  r.evaluations = 1;
-  while (r.evaluations < max_evaluations) {
-    const double m = 0.5 * (a + b);
-    const double tol =
-        1e-3 * std::sqrt(std::numeric_limits<double>::epsilon()) * std::abs(x) + xtol / 3;
-    if (std::abs(x - m) <= 2 * tol - 0.5 * (b - a)) return {true, x, fx, r.evaluations};
-    bool golden_step = true;
-    if (std::abs(e) > tol) {
-      double rr = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * rr;
-      q = 2 * (q - rr);
-      if (q > 0)
-        p = -p;
-      else
-        q = -q;
-      if (std::abs(p) < std::abs(0.5 * q * e) && p > q * (a - x) && p < q * (b - x)) {
-        e = d;
-        d = p / q;
-        const double u = x + d;
-        if (u - a < 2 * tol || b - u < 2 * tol) d = x < m ? tol : -tol;
-        golden_step = false;
-      }
-    }
-    if (golden_step) {
-      e = (x < m ? b : a) - x;
-      d = golden * e;
-    }
-    const double u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol));
-    const double fu = f(u);
-    ++r.evaluations;
-    if (fu <= fx) {
-      (u < x ? b : a) = x;
-      v = w;
-      fv = fw;
-      w = x;
-      fw = fx;
-      x = u;
-      fx = fu;
-    } else {
-      (u < x ? a : b) = u;
-      if (fu <= fw || w == x) {
-        v = w;
-        fv = fw;
-        w = u;
-        fw = fu;
-      } else if (fu <= fv || v == x || v == w) {
-        v = u;
-        fv = fu;
-      }
-    }
-  }
-  return {false, x, fx, r.evaluations};
+  const auto [x, fx] = boost::math::tools::brent_find_minima(
+      [&](double u) { return f(u); }, std::min(a, b), std::max(a, b), bits, iterations);
+  r.ok = iterations < static_cast<std::uintmax_t>(std::max(max_evaluations - 1, 1));
+  r.x = x;
+  r.fx = fx;
+  r.evaluations = static_cast<int>(iterations) + 1;
+  return r;
 }
 
 }  // namespace stickslip

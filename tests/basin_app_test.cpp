@@ -55,7 +55,9 @@ TEST_F(BasinApp, StribeckSceneWritesBothBasinsAndTheOrbits) {
       Run("--study " + kStudies + "/stribeck_basin.ini --nx 9 --ny 9 --no_plots --out " + Out()), 0)
       << err_;
   const std::string tsv = ReadFile(Out() + "/basins.tsv");
-  EXPECT_EQ(tsv.rfind("# x\txdot\tfate\torbit\tt_settle\n", 0), 0u);
+  // Metadata lines first, then the header line without '#'.
+  EXPECT_EQ(tsv.rfind("# ", 0), 0u);
+  EXPECT_LT(tsv.find("# status: complete"), tsv.find("\nx\txdot\tfate\torbit\tt_settle\n"));
   EXPECT_TRUE(Contains(tsv, "# model: law=stribeck"));
   EXPECT_TRUE(Contains(tsv, "# status: complete"));
   EXPECT_TRUE(Contains(tsv, "# orbit: stick-slip, stable"));
@@ -106,7 +108,7 @@ TEST_F(BasinApp, HelpNamesTheOutputsAndVersionPrintsIt) {
   EXPECT_TRUE(Contains(out_, "basins.tsv"));
   EXPECT_TRUE(Contains(out_, "[basin]"));
   EXPECT_EQ(Run("--version"), 0);
-  EXPECT_EQ(out_.rfind("ss_basin (stickslip) ", 0), 0u) << out_;
+  EXPECT_EQ(out_.rfind("ss_basin 0.", 0), 0u) << out_;
 }
 
 }  // namespace

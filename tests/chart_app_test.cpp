@@ -100,21 +100,22 @@ TEST_F(ChartApp, HelpAndVersion) {
   EXPECT_TRUE(Contains(r.out, "--param2"));
   r = Run({"--version"});
   EXPECT_EQ(r.code, 0);
-  EXPECT_EQ(r.out.rfind("ss_chart (stickslip) ", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.rfind("ss_chart 0.", 0), 0u) << r.out;
 }
 
 TEST_F(ChartApp, SeedStudyWritesCurvesWithMetadata) {
-  const Result r =
-      Run({"--study", kStudies + "/seed_chart.ini", "--out", Out(), "--no_plots"});
+  const Result r = Run({"--study", kStudies + "/seed_chart.ini", "--out", Out(), "--no_plots"});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string curves = ReadFile(Out() + "/curves.tsv");
-  EXPECT_EQ(curves.rfind("# v\tbeta\tcurve\tid\tperiod\tamplitude\tmultiplier\tl1\ttype\t", 0), 0u);
-  EXPECT_TRUE(Contains(curves, "\n# model: law=cubic "));
-  EXPECT_TRUE(Contains(curves, "\n# status: complete\n"));
+  // Metadata lines first, then the header line without '#'.
+  EXPECT_EQ(curves.rfind("# ", 0), 0u);
+  EXPECT_TRUE(Contains(curves, "\nv\tbeta\tcurve\tid\tperiod\tamplitude\tmultiplier\tl1\ttype\t"));
+  EXPECT_LT(curves.find("\n# status: complete\n"), curves.find("\nv\tbeta\tcurve\t"));
+  EXPECT_TRUE(Contains(curves, "# model: law=cubic "));
   EXPECT_TRUE(Contains(curves, "\tHB\t1\t"));
   EXPECT_TRUE(Contains(curves, "\tGR\t2\t"));
   EXPECT_FALSE(Contains(curves, "nan"));
-  EXPECT_TRUE(Contains(ReadFile(Out() + "/codim2.tsv"), "# label\tv\tbeta\tdescription\n"));
+  EXPECT_TRUE(Contains(ReadFile(Out() + "/codim2.tsv"), "\nlabel\tv\tbeta\tdescription\n"));
   EXPECT_FALSE(Exists(Out() + "/chart.png"));
 }
 

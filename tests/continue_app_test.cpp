@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -37,6 +38,8 @@ const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::ReadFile;
+using stickslip::testing_util::ReadTsv;
+using stickslip::testing_util::Tsv;
 using stickslip::testing_util::WriteFile;
 
 std::vector<std::string> Lines(const std::string& text) {
@@ -44,15 +47,6 @@ std::vector<std::string> Lines(const std::string& text) {
   std::istringstream is(text);
   for (std::string l; std::getline(is, l);) lines.push_back(l);
   return lines;
-}
-
-std::vector<std::string> Split(const std::string& line, char sep = '\t') {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream is(line);
-  while (std::getline(is, cell, sep)) cells.push_back(cell);
-  if (!line.empty() && line.back() == sep) cells.push_back("");
-  return cells;
 }
 
 // Names in a directory, "." and ".." left out.
@@ -222,30 +216,14 @@ class ContinueApp : public ::testing::Test {
 };
 
 // branch.tsv split into header columns, comment lines and data rows.
-struct Branch {
-  std::vector<std::string> columns;
-  std::vector<std::string> comments;
-  std::vector<std::vector<std::string>> rows;
+struct Branch : Tsv {
   std::string first_line;
-  int Column(const std::string& name) const {
-    for (size_t i = 0; i < columns.size(); ++i)
-      if (columns[i] == name) return static_cast<int>(i);
-    return -1;
-  }
 };
 
 Branch ReadBranch(const std::string& text) {
   Branch b;
-  const auto lines = Lines(text);
-  if (lines.empty()) return b;
-  b.first_line = lines[0];
-  if (lines[0].rfind("# ", 0) == 0) b.columns = Split(lines[0].substr(2));
-  for (size_t i = 1; i < lines.size(); ++i) {
-    if (!lines[i].empty() && lines[i][0] == '#')
-      b.comments.push_back(lines[i]);
-    else
-      b.rows.push_back(Split(lines[i]));
-  }
+  static_cast<Tsv&>(b) = ReadTsv(text);
+  b.first_line = text.substr(0, text.find('\n'));
   return b;
 }
 
@@ -269,6 +247,70 @@ void ExpectWholePartialBranch(const std::string& path, const std::string& why) {
 
 // ---------------------------------------------------------------------------
 // Bad input: exit 2, one line, nothing written.
+
+TEST_F(ContinueApp, VersionAndShortHelp) {
+  const Result v = Run({"--version"});
+  ASSERT_EQ(v.code, 0) << v.err;
+  EXPECT_EQ(v.out.rfind("ss_continue 0.", 0), 0u) << v.out;
+  const Result h = Run({"-h"});
+  ASSERT_EQ(h.code, 0) << h.err;
+  EXPECT_TRUE(Contains(h.out, "--version"));
+}
+
+// --param mu_s without a range used to fail (0.05 < mu_m); it takes mu_s's own range.
+TEST_F(ContinueApp, ParamMuSRunsOnItsDefaultRange) {
+  const std::string out = OutDir();
+  const Result r = Run({"--param", "mu_s", "--out", out, "--no_plots", "--no_estimates"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
+  EXPECT_EQ(b.meta.at("from"), "0.3");  // 1.2 mu_m
+  EXPECT_EQ(b.meta.at("to"), "0.8");    // 2 mu_s
+  EXPECT_EQ(b.meta.at("mu_s"), "continued");
+}
+
+// Physical inputs, M = 2 kg, K = 8 N/m, g = 9.81: L = 2.4525 m, t0 = 0.5 s, and
+// speeds scale by L / t0 = 4.905 m/s. --param belt_speed finds HB at the closed
+// form sqrt((k1 - 2 beta) / (3 k3)) (seed 3.16) times L / t0.
+TEST_F(ContinueApp, BeltSpeedContinuesInPhysicalUnits) {
+  const std::string out = OutDir();
+  const Result r = Run({"--mass",    "2",      "--stiffness",  "8",
+                        "--damping", "0.4",    "--belt_speed", "1",
+                        "--speed_m", "2.4525", "--param",      "belt_speed",
+                        "--from",    "1.5",    "--to",         "2.4525",
+                        "--out",     out,      "--no_plots",   "--no_estimates"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
+  EXPECT_EQ(b.meta.at("L"), "2.4525 m (M g / K)");
+  EXPECT_EQ(b.meta.at("t0"), "0.5 s (sqrt(M / K))");
+  const int v = b.Column("v"), speed = b.Column("belt_speed"), x = b.Column("x_max"),
+            x_m = b.Column("x_max_m"), period = b.Column("period"), period_s = b.Column("period_s");
+  ASSERT_TRUE(v >= 0 && speed >= 0 && x >= 0 && x_m >= 0 && period >= 0 && period_s >= 0);
+  ASSERT_FALSE(b.rows.empty());
+  EXPECT_NEAR(std::stod(b.rows.front()[speed]), 1.5, 1e-12);
+  EXPECT_NEAR(std::stod(b.rows.back()[speed]), 2.4525, 1e-12);
+  for (const auto& row : b.rows) {
+    EXPECT_NEAR(std::stod(row[speed]), std::stod(row[v]) * 4.905, 1e-12);
+    EXPECT_NEAR(std::stod(row[x_m]), std::stod(row[x]) * 2.4525, 1e-12);
+    if (row[period] != "nan") {
+      EXPECT_NEAR(std::stod(row[period_s]), std::stod(row[period]) * 0.5, 1e-12);
+    }
+  }
+  const Tsv sp = ReadTsv(ReadFile(out + "/special_points.tsv"));
+  const double beta = 0.4 / (2 * std::sqrt(8.0 * 2.0)), k1 = 0.45, k3 = 0.6;
+  int hb = 0;
+  for (const auto& row : sp.rows)
+    if (row.at(0) == "HB") {
+      ++hb;
+      EXPECT_NEAR(std::stod(row.at(1)), std::sqrt((k1 - 2 * beta) / (3 * k3)), 1e-9);
+      EXPECT_NEAR(std::stod(row.at(sp.Column("belt_speed"))),
+                  std::sqrt((k1 - 2 * beta) / (3 * k3)) * 4.905, 1e-8);
+    }
+  EXPECT_EQ(hb, 1);
+}
+
+TEST_F(ContinueApp, BeltSpeedWithoutPhysicalInputsExits2) {
+  ExpectRejected({"--param", "belt_speed"}, {"--param belt_speed", "physical"});
+}
 
 TEST_F(ContinueApp, UnknownOptionExits2) { ExpectRejected({"--gamma", "1"}, {"--gamma"}); }
 
@@ -539,7 +581,16 @@ TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
                         "0.5", "--out", out, "--no_plots"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Branch b = ReadBranch(ReadFile(out + "/branch.tsv"));
-  EXPECT_EQ(b.first_line.rfind("# v\tkind", 0), 0u) << b.first_line;
+  // Metadata first, then the header line without '#' (pandas, csv.DictReader).
+  EXPECT_EQ(b.first_line.rfind("# tool: ss_continue ", 0), 0u) << b.first_line;
+  ASSERT_GE(b.columns.size(), 2u);
+  EXPECT_EQ(b.columns[0], "v");
+  EXPECT_EQ(b.columns[1], "kind");
+  EXPECT_EQ(b.meta.at("continued"), "v");
+  EXPECT_EQ(b.meta.at("from"), "0.05");
+  EXPECT_EQ(b.meta.at("to"), "0.5");
+  EXPECT_EQ(b.meta.at("beta"), "0.05");
+  EXPECT_EQ(b.meta.at("rtol"), "1e-11");
   ASSERT_FALSE(b.rows.empty());
   for (size_t i = 0; i < b.rows.size(); ++i)
     ASSERT_EQ(b.rows[i].size(), b.columns.size()) << "row " << i;
@@ -563,12 +614,13 @@ TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
   EXPECT_EQ(kinds, (std::set<std::string>{"stick-slip", "pure-slip", "equilibrium"}));
 
   int gr = 0, hb = 0, other = 0;
-  const auto special = Lines(ReadFile(out + "/special_points.tsv"));
-  ASSERT_FALSE(special.empty());
-  EXPECT_EQ(special[0].rfind("# label\tv", 0), 0u) << special[0];
-  for (const auto& line : special) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::string label = Split(line)[0];
+  const Tsv special = ReadTsv(ReadFile(out + "/special_points.tsv"));
+  ASSERT_GE(special.columns.size(), 2u);
+  EXPECT_EQ(special.columns[0], "label");
+  EXPECT_EQ(special.columns[1], "v");
+  EXPECT_EQ(special.meta.at("status"), "complete");
+  for (const auto& row : special.rows) {
+    const std::string label = row.at(0);
     (label == "GR" ? gr : label == "HB" ? hb : other)++;
   }
   EXPECT_EQ(gr, 1);

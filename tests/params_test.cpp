@@ -246,6 +246,29 @@ TEST(Params, PhysicalInputsMustBePositive) {
   EXPECT_THROW(ToDimensionless(phys), InvalidArgument);
 }
 
+// Every parameter of every law has a default range that is valid at both ends
+// for the law's defaults, and the seed's Hopf point lies inside v's range.
+TEST(Params, DefaultRangesAreValidAtBothEnds) {
+  for (LawKind law : {LawKind::kCubic, LawKind::kCoulomb, LawKind::kStribeck, LawKind::kLeine}) {
+    Params base;
+    base.law = law;
+    for (const auto& name : ParameterNames(law)) {
+      const ParameterRange r = DefaultRange(base, name);
+      EXPECT_LT(r.from, r.to) << name;
+      for (double x : {r.from, r.to}) {
+        Params q = base;
+        SetParameter(q, name, x);
+        EXPECT_EQ(ValidationError(q), "") << LawName(law) << " " << name << " = " << x;
+      }
+    }
+  }
+  const ParameterRange v = DefaultRange(Seed(), "v");
+  const double hopf = std::sqrt((Seed().k1() - 2 * Seed().beta) / (3 * Seed().k3()));  // (3.16)
+  EXPECT_LT(v.from, hopf);
+  EXPECT_GT(v.to, hopf);
+  EXPECT_THROW(DefaultRange(Seed(), "gamma"), InvalidArgument);
+}
+
 }  // namespace
 }  // namespace stickslip
 

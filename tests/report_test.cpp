@@ -1,5 +1,6 @@
-// Output primitives: the atomic write's error path, the PNG check, gnuplot
-// cancellation, and figures of results with nothing to draw.
+// Output primitives: the TSV layout (metadata lines, then a header without
+// '#'), the atomic write's error path, the PNG check, gnuplot cancellation,
+// and figures of results with nothing to draw.
 #include "stickslip/report.hpp"
 
 #include <dirent.h>
@@ -175,6 +176,23 @@ TEST(Report, NonFiniteResultsAreDroppedAndTheRunFails) {
   const std::string table = BranchTable(r, "v", "m").str();
   EXPECT_EQ(table.find("\tinf"), std::string::npos);
   EXPECT_EQ(table.find("0.2\t"), std::string::npos);
+}
+
+TEST(Report, TableStartsWithMetadataThenAHeaderWithoutHash) {
+  TsvTable t({"v", "kind"});
+  t.AddMeta("status", "complete");
+  t.AddRow({0.25, "stick-slip"});
+  t.PrependMeta({{"tool", "ss_continue 0.1.0"}, {"beta", "0.05"}});
+  EXPECT_EQ(t.str(),
+            "# tool: ss_continue 0.1.0\n# beta: 0.05\n# status: complete\n"
+            "v\tkind\n0.25\tstick-slip\n");
+}
+
+TEST(Report, MetadataKeyWithColonOrLineBreakIsRejected) {
+  TsvTable t({"v"});
+  EXPECT_THROW(t.AddMeta("a:b", "1"), InvalidArgument);
+  EXPECT_THROW(t.AddMeta("", "1"), InvalidArgument);
+  EXPECT_THROW(t.AddMeta("key", "two\nlines"), InvalidArgument);
 }
 
 }  // namespace

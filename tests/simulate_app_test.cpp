@@ -23,6 +23,8 @@ const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::ReadFile;
+using stickslip::testing_util::ReadTsv;
+using stickslip::testing_util::Tsv;
 using stickslip::testing_util::WriteFile;
 
 std::string Quote(const std::string& s) {
@@ -104,7 +106,7 @@ std::vector<Row> ReadRows(const std::string& text) {
   std::vector<Row> rows;
   std::istringstream is(text);
   for (std::string line; std::getline(is, line);) {
-    if (line.empty() || line[0] == '#') continue;
+    if (line.empty() || line[0] == '#' || line.rfind("t\t", 0) == 0) continue;  // header
     std::istringstream ls(line);
     std::string t, x, xdot, mode;
     std::getline(ls, t, '\t');
@@ -126,13 +128,26 @@ TEST_F(SimulateApp, HelpExitsZeroAndListsOptions) {
     EXPECT_TRUE(Contains(r.out, opt));
 }
 
+TEST_F(SimulateApp, VersionAndShortHelp) {
+  const Result v = Run({"--version"});
+  ASSERT_EQ(v.code, 0) << v.err;
+  EXPECT_EQ(v.out.rfind("ss_simulate 0.", 0), 0u) << v.out;
+  const Result h = Run({"-h"});
+  ASSERT_EQ(h.code, 0) << h.err;
+  EXPECT_TRUE(Contains(h.out, "--version"));
+}
+
 TEST_F(SimulateApp, WritesTrajectoryWithExactStick) {
   const std::string out = Path("seed.tsv");
   const Result r = Run({"--study", kStudies + "/seed.ini", "--t_end", "30", "--out", out});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   const std::string text = ReadFile(out);
-  EXPECT_EQ(text.substr(0, text.find('\n')), "# t\tx\txdot\tmode");
+  const Tsv tsv = ReadTsv(text);
+  EXPECT_EQ(tsv.columns, (std::vector<std::string>{"t", "x", "xdot", "mode"}));
+  EXPECT_EQ(text.rfind("# tool: ss_simulate ", 0), 0u);
+  EXPECT_EQ(tsv.meta.at("t_end"), "30");
+  EXPECT_EQ(tsv.meta.at("status"), "complete");
   const auto rows = ReadRows(text);
   ASSERT_GT(rows.size(), 3000u);
   EXPECT_EQ(rows.front().t, 0.0);
@@ -201,7 +216,15 @@ TEST_F(SimulateApp, PhysicalInputsAtUnitScalesMatchTheSeedSet) {
            "0.25", "--speed_m", "0.5", "--t_end", "10", "--out", Path("b.tsv")});
   ASSERT_EQ(a.code, 0) << a.err;
   ASSERT_EQ(b.code, 0) << b.err;
-  EXPECT_EQ(ReadFile(Path("a.tsv")), ReadFile(Path("b.tsv")));
+  // The same rows; b also carries the physical copies (t_s, x_m, xdot_m_s) and scales.
+  const Tsv ta = ReadTsv(ReadFile(Path("a.tsv"))), tb = ReadTsv(ReadFile(Path("b.tsv")));
+  ASSERT_EQ(ta.rows.size(), tb.rows.size());
+  ASSERT_GT(ta.rows.size(), 100u);
+  for (size_t i = 0; i < ta.rows.size(); ++i)
+    ASSERT_EQ(ta.rows[i], std::vector<std::string>(tb.rows[i].begin(), tb.rows[i].begin() + 4));
+  EXPECT_EQ(tb.meta.at("L"), "1 m (M g / K)");
+  EXPECT_EQ(tb.meta.at("t0"), "1 s (sqrt(M / K))");
+  EXPECT_EQ(tb.columns.at(4), "t_s");
 }
 
 TEST_F(SimulateApp, RejectsUnknownOption) { ExpectRejected({"--gamma", "1"}, "--gamma"); }

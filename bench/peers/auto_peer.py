@@ -6,6 +6,7 @@ References: HB from the closed form sqrt((k1 - 2 beta)/(3 k3)) (seed 3.16); peri
 from ss_continue at rtol 1e-13, atol 1e-15, each period at the exact v of the point it
 checks; that GR is checked against the published 0.3957902888 first."""
 import argparse
+import csv
 import math
 import os
 import re
@@ -101,17 +102,11 @@ def auto_results(work, settings):
 
 def rows(out_dir):
     """branch.tsv rows (v, kind, period) and special points {label: v} of ss_continue."""
-    branch, special = [], {}
-    with open(os.path.join(out_dir, "branch.tsv")) as f:
-        for line in f:
-            if not line.startswith("#"):
-                c = line.rstrip("\n").split("\t")
-                branch.append((float(c[0]), c[1], float(c[3])))
-    with open(os.path.join(out_dir, "special_points.tsv")) as f:
-        for line in f:
-            if not line.startswith("#"):
-                c = line.split("\t")
-                special[c[0]] = float(c[1])
+    def table(name):  # '# key: value' lines, then a header line (the README's format)
+        with open(os.path.join(out_dir, name)) as f:
+            return list(csv.DictReader((l for l in f if not l.startswith("#")), delimiter="\t"))
+    branch = [(float(r["v"]), r["kind"], float(r["period"])) for r in table("branch.tsv")]
+    special = {r["label"]: float(r["v"]) for r in table("special_points.tsv")}
     return branch, special
 
 

@@ -12,40 +12,42 @@
 
 namespace stickslip {
 
-// The result's counts and seconds per phase as (key, value) text, in a fixed
-// order: orbit_solves, return_maps, newton_iterations, rejected_steps,
-// integrator_steps, seconds_equilibrium, ..., seconds_total.
+/// The result's counts and seconds per phase as (key, value) text, in a fixed
+/// order: orbit_solves, return_maps, newton_iterations, rejected_steps,
+/// integrator_steps, seconds_equilibrium, ..., seconds_total.
 std::vector<std::pair<std::string, std::string>> SummaryFields(const ContinuationResult& r);
 
-// Removes every point and special point with a non-finite number where one
-// must be (all fields but the equilibrium's period and t_stick, which are nan
-// by design). If any is removed, r becomes kFailed (a cancelled r stays
-// cancelled) and its message names the first such point and the count, so no
-// nan or inf is ever written as a result.
+/// Removes every point and special point with a non-finite number where one
+/// must be (all fields but the equilibrium's period and t_stick, which are nan
+/// by design). If any is removed, r becomes kFailed (a cancelled r stays
+/// cancelled) and its message names the first such point and the count, so no
+/// nan or inf is ever written as a result.
 void DropNonFinite(ContinuationResult* r, const std::string& param);
 
-// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
-// t_stick, multiplier, stable, amplitude, then the extra columns. Comment
-// lines after the header: model, status (partial or complete), then the
-// SummaryFields as `# key: value`.
+/// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
+/// t_stick, multiplier, stable, amplitude, then the extra columns. Metadata
+/// lines before the header: model, status (partial or complete), then the
+/// SummaryFields as `# key: value`.
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::string& model_description,
                      const std::vector<ExtraColumn>& extra = {});
 
-// Columns: label, <param>, period, x_min, x_max, xdot_min, description.
-TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param);
+/// Columns: label, <param>, period, x_min, x_max, xdot_min, description, then
+/// the extra columns (one value per special point).
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
+                           const std::vector<ExtraColumn>& extra = {});
 
-// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
-// directory: bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
-// period.png and multiplier.png against the parameter; stable solid, unstable
-// dashed, special points marked and labelled. The variable `suffix` (default
-// empty) is appended to every output name, so a caller can render to
-// temporary names and rename. With estimates (the columns of
-// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
-// range of the branch against the seed's and the averaging estimates.
+/// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
+/// directory: bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
+/// period.png and multiplier.png against the parameter; stable solid, unstable
+/// dashed, special points marked and labelled. The variable `suffix` (default
+/// empty) is appended to every output name, so a caller can render to
+/// temporary names and rename. With estimates (the columns of
+/// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
+/// range of the branch against the seed's and the averaging estimates.
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
                               const std::string& title, bool estimates = false);
-// The output files BifurcationScript draws.
+/// The output files BifurcationScript draws.
 std::vector<std::string> BifurcationFigures(bool estimates);
 
 }  // namespace stickslip

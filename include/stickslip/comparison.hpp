@@ -13,8 +13,8 @@
 
 namespace stickslip {
 
-// One estimate at one point of the branch; `applies` false with a note says
-// why no number is given (past v_max, averaging on a stick-slip orbit, ...).
+/// One estimate at one point of the branch; `applies` false with a note says
+/// why no number is given (past v_max, averaging on a stick-slip orbit, ...).
 struct EstimateCell {
   bool applies = false;
   double estimate = 0;
@@ -23,6 +23,7 @@ struct EstimateCell {
   std::string note;
 };
 
+/// One periodic point of the branch against the estimates of its x'_min and x range.
 struct ComparisonRow {
   double p = 0;
   PointKind kind = PointKind::kStickSlip;
@@ -32,26 +33,28 @@ struct ComparisonRow {
   EstimateCell x_max_bound;  // seed: x_max <= xbar + sqrt(y0^2 + (v - a1 y0)^2)
 };
 
+/// A computed special point (GR, HB) against its closed-form estimate.
 struct SpecialComparison {
   std::string label;     // "GR", "HB"
   std::string estimate;  // what it is compared with
   double computed = 0, estimated = 0;
 };
 
+/// The whole comparison: per-point rows, largest errors and branch.tsv columns.
 struct EstimateComparison {
   bool applies = false;  // cubic law only
   std::string reason;
   std::vector<ExtraColumn> columns;  // for branch.tsv, one value per point
   std::vector<ComparisonRow> rows;   // every periodic point
   std::vector<SpecialComparison> special;
-  // Largest |error| over the branch where the estimate applies, and where.
+  /// Largest |error| over the branch where the estimate applies, and where.
   double max_err_r1 = 0, p_max_err_r1 = 0;
   double max_err_a_ps = 0, p_max_err_a_ps = 0;
   int r1_applies = 0, a_ps_applies = 0, bound_holds = 0, bound_fails = 0;
 };
 
-// base: the model; param: the continued parameter. check_points: the grid on
-// which each NLopt fit is verified (coarser than the default keeps it cheap).
+/// base: the model; param: the continued parameter. check_points: the grid on
+/// which each NLopt fit is verified (coarser than the default keeps it cheap).
 EstimateComparison CompareEstimates(const Params& base, const std::string& param,
                                     const ContinuationResult& r, int check_points = 2001);
 

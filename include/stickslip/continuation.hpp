@@ -19,9 +19,11 @@
 
 namespace stickslip {
 
+/// What a branch point is: a stick-slip or pure-slip orbit, or steady sliding.
 enum class PointKind { kStickSlip, kPureSlip, kEquilibrium };
 const char* PointKindName(PointKind k);  // "stick-slip", "pure-slip", "equilibrium"
 
+/// One point of a branch: the parameter, the orbit's measures and stability.
 struct BranchPoint {
   double p = 0;  // the continued parameter
   PointKind kind = PointKind::kEquilibrium;
@@ -29,8 +31,8 @@ struct BranchPoint {
   double period = 0;  // nan for the equilibrium
   double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
   double t_stick = 0;
-  // Nontrivial Floquet multiplier; for the equilibrium the largest real part
-  // of its eigenvalues.
+  /// Nontrivial Floquet multiplier; for the equilibrium the largest real part
+  /// of its eigenvalues.
   double multiplier = 0;
   bool stable = false;
   double amplitude = 0;  // pure slip: section amplitude a; else (x_max - x_min) / 2
@@ -40,46 +42,51 @@ struct BranchPoint {
   bool newton_stalled = false;
 };
 
+/// GR grazing-sliding, HB Hopf, LP fold.
 enum class SpecialKind { kGrazing, kHopf, kFold };
 const char* SpecialLabel(SpecialKind k);  // "GR", "HB", "LP"
 
+/// A located special point with the orbit there and a one-line description.
 struct SpecialPoint {
   SpecialKind kind = SpecialKind::kHopf;
   double p = 0;
   double period = 0, x_min = 0, x_max = 0, xdot_min = 0;
-  // GR: the nontrivial multiplier on the stick-slip side and on the pure-slip side.
+  /// GR: the nontrivial multiplier on the stick-slip side and on the pure-slip side.
   double multiplier_before = 0, multiplier_after = 0;
   std::string description;
 };
 
+/// The continued parameter, its range, steps and tolerances; validated once by Continue().
 struct ContinuationOptions {
   std::string param = "v";
   double from = 0.05;
   double to = 0.5;
   OrbitOptions orbit;
-  // Largest step, as a fraction of |to - from| (so at least 1/max_step points
-  // on a branch that spans the range).
+  /// Largest step, as a fraction of |to - from| (so at least 1/max_step points
+  /// on a branch that spans the range).
   double max_step = 0.01;
   double min_step = 1e-7;     // fraction of |to - from| below which a branch fails
   double locate_tol = 1e-11;  // special points, in the parameter
   int max_points = 20000;     // per branch
-  // Stick-slip multipliers by the variational equations (otherwise 0, which
-  // S_in = diag(1, 0) makes exact).
+  /// Stick-slip multipliers by the variational equations (otherwise 0, which
+  /// S_in = diag(1, 0) makes exact).
   bool stick_slip_floquet = false;
   std::function<bool()> cancelled;                   // polled between points
   std::function<void(const BranchPoint&)> progress;  // called for every point
-  // Empty if valid, else one line naming the offending value. base: the model.
+  /// Empty if valid, else one line naming the offending value. base: the model.
   std::string ValidationError(const Params& base) const;
 };
 
+/// How a continuation ended; kFailed and kCancelled keep the points so far.
 enum class ContinuationStatus {
   kOk,
   kFailed,     // a numerical failure; message says where; points so far kept
   kCancelled,  // cancelled() returned true; points so far kept
 };
+/// "ok", "failed", "cancelled".
 const char* ContinuationStatusName(ContinuationStatus s);
 
-// Work done, for the summary and branch.tsv's metadata.
+/// Work done, for the summary and branch.tsv's metadata.
 struct ContinuationCounts {
   long orbit_solves = 0;       // stick-slip orbits and fixed-p pure-slip shootings
   long return_maps = 0;        // evaluations of G(a, p), the pure-slip return map
@@ -88,7 +95,7 @@ struct ContinuationCounts {
   long integrator_steps = 0;   // Flow::total_steps() over the whole run
 };
 
-// Wall-clock seconds per phase; each second is counted in one phase only.
+/// Wall-clock seconds per phase; each second is counted in one phase only.
 struct ContinuationTimes {
   double equilibrium = 0;  // steady sliding and its Hopf points
   double stick_slip = 0;   // stick-slip branches
@@ -98,6 +105,7 @@ struct ContinuationTimes {
   double total = 0;
 };
 
+/// Branches, special points, status, counts and timings of one Continue() call.
 struct ContinuationResult {
   ContinuationStatus status = ContinuationStatus::kOk;
   std::string message;
@@ -112,11 +120,11 @@ struct ContinuationResult {
   bool partial() const { return status != ContinuationStatus::kOk; }
 };
 
-// Looser than this rtol a result carries a warning: the README promises the
-// branch's structure (which special points, in which order) from here down.
+/// Looser than this rtol a result carries a warning: the README promises the
+/// branch's structure (which special points, in which order) from here down.
 constexpr double kLoosestTrustedRtol = 1e-4;
 
-// Throws InvalidArgument if the options or the model at either end are invalid.
+/// Throws InvalidArgument if the options or the model at either end are invalid.
 ContinuationResult Continue(const Params& base, const ContinuationOptions& options);
 
 }  // namespace stickslip

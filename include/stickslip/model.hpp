@@ -14,6 +14,7 @@ namespace stickslip {
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
+/// The three modes of the Filippov system (seed regions Omega_-, Omega, Omega_+).
 enum class Mode {
   kSlipBelow,  // x' < v: region Omega_- of the seed, eq. (3.7)
   kStick,      // x' = v, |x + 2 beta v| <= mu_s: region Omega, eq. (3.6)
@@ -21,8 +22,8 @@ enum class Mode {
 };
 const char* ModeName(Mode m);  // "slip-below", "stick", "slip-above"
 
-// Steady sliding x = mu(v), x' = 0; eigenvalues solve
-// lambda^2 + (2 beta + mu'(v)) lambda + 1 = 0 (linearised seed eq. 3.5).
+/// Steady sliding x = mu(v), x' = 0; eigenvalues solve
+/// lambda^2 + (2 beta + mu'(v)) lambda + 1 = 0 (linearised seed eq. 3.5).
 struct Equilibrium {
   double x = 0;
   double damping = 0;  // 2 beta + mu'(v): stable when > 0, Hopf where it vanishes
@@ -31,9 +32,10 @@ struct Equilibrium {
   bool stable() const { return damping > 0; }
 };
 
+/// The belt model for one parameter set: fields, Jacobians, switching rules.
 class Model {
  public:
-  // Validates p (throws InvalidArgument naming the offending value).
+  /// Validates p (throws InvalidArgument naming the offending value).
   explicit Model(const Params& p);
 
   const Params& params() const { return p_; }
@@ -41,18 +43,18 @@ class Model {
   double v() const { return p_.v; }
   double beta() const { return p_.beta; }
 
-  // Slip fields use the mode's branch of the friction law, extended smoothly
-  // across x' = v, so that event location sees a smooth function.
+  /// Slip fields use the mode's branch of the friction law, extended smoothly
+  /// across x' = v, so that event location sees a smooth function.
   Vec2 Field(Mode m, const Vec2& z) const {
     if (m == Mode::kStick) return Vec2(p_.v, 0.0);
     return Vec2(z[1], -z[0] - two_beta_ * z[1] + SlipForce(m, z[1]));
   }
-  // x'' in a slip mode (the second component of Field).
+  /// x'' in a slip mode (the second component of Field).
   double Acceleration(Mode m, double x, double xdot) const {
     return -x - two_beta_ * xdot + SlipForce(m, xdot);
   }
   Mat2 Jacobian(Mode m, const Vec2& z) const;
-  // dF/dx' on the mode's branch.
+  /// dF/dx' on the mode's branch.
   double SlipForceSlope(Mode m, double xdot) const {
     return m == Mode::kSlipBelow ? -friction_.DMu(p_.v - xdot) : -friction_.DMu(xdot - p_.v);
   }
@@ -60,19 +62,19 @@ class Model {
     return m == Mode::kSlipBelow ? friction_.Mu(p_.v - xdot) : -friction_.Mu(xdot - p_.v);
   }
 
-  // Force needed to hold x' = v: x + 2 beta v. Stick holds while |.| <= mu_s.
+  /// Force needed to hold x' = v: x + 2 beta v. Stick holds while |.| <= mu_s.
   double StickForce(double x) const { return x + two_beta_ * p_.v; }
   bool InStickInterval(double x) const;
-  // Every stick segment leaves Omega at (x0, v), x0 = mu_s - 2 beta v (seed, case 1).
+  /// Every stick segment leaves Omega at (x0, v), x0 = mu_s - 2 beta v (seed, case 1).
   Vec2 ExitPoint() const { return Vec2(p_.mu_s - two_beta_ * p_.v, p_.v); }
-  // The mode of a state; on x' = v the Filippov rule decides.
+  /// The mode of a state; on x' = v the Filippov rule decides.
   Mode ModeAt(const Vec2& z) const;
-  // The mode a trajectory takes after reaching x' = v at x coming from `from`.
+  /// The mode a trajectory takes after reaching x' = v at x coming from `from`.
   Mode ModeAfterArrival(Mode from, double x) const;
 
-  // Saltation matrices (Leine et al. 1998; di Bernardo et al. 2008): entering stick diag(1, 0); leaving stick
-  // I + (f_slip - f_stick) g^T / (g^T f_stick) with g = (1, 0); crossing x' = v
-  // I + (f_after - f_before) n^T / (n^T f_before).
+  /// Saltation matrices (Leine et al. 1998; di Bernardo et al. 2008): entering stick diag(1, 0);
+  /// leaving stick I + (f_slip - f_stick) g^T / (g^T f_stick) with g = (1, 0); crossing x' = v I +
+  /// (f_after - f_before) n^T / (n^T f_before).
   static Mat2 SaltationStickIn();
   Mat2 SaltationStickOut() const;
   Mat2 SaltationCrossing(Mode before, Mode after, const Vec2& z) const;

@@ -7,9 +7,10 @@
 
 namespace stickslip {
 
+/// A quiet NaN, for "does not apply".
 inline constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-// x with `digits` significant digits (as printf's %.<digits>g).
+/// x with `digits` significant digits (as printf's %.<digits>g).
 std::string Num(double x, int digits = 10);
 
 }  // namespace stickslip

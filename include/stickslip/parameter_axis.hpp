@@ -8,15 +8,16 @@
 
 namespace stickslip {
 
+/// The continued parameter by name, resolved once to its member of Params.
 class ParameterAxis {
  public:
-  // Throws InvalidArgument naming the string if it is no parameter.
+  /// Throws InvalidArgument naming the string if it is no parameter.
   explicit ParameterAxis(const std::string& name) : name_(name), member_(ParameterMember(name)) {}
 
   const std::string& name() const { return name_; }
   double Get(const Params& p) const { return p.*member_; }
   void Set(Params& p, double value) const { p.*member_ = value; }
-  // base with this parameter set to value.
+  /// base with this parameter set to value.
   Params At(const Params& base, double value) const {
     Params q = base;
     Set(q, value);

@@ -6,7 +6,7 @@
 
 namespace stickslip {
 
-// Friction laws mu(s), s = |x' - v| (seed eq. 3.3 and the README's table of laws).
+/// Friction laws mu(s), s = |x' - v| (seed eq. 3.3 and the README's table of laws).
 enum class LawKind {
   kCubic,     // mu_s - k1 s + k3 s^3 - k5 s^5, seed eq. (3.3) (k5 = 0), Thomsen & Fidlin (2003)
   kCoulomb,   // mu_k for s > 0, static mu_s
@@ -14,12 +14,13 @@ enum class LawKind {
   kLeine,     // mu_s / (1 + delta s), Leine et al. (1998)
 };
 
+/// "cubic", "coulomb", "stribeck", "leine".
 const char* LawName(LawKind law);
-// Throws InvalidArgument naming the string if it is no law.
+/// Throws InvalidArgument naming the string if it is no law.
 LawKind LawFromName(const std::string& name);
 
-// All dimensionless. Defaults are the seed set (section 4 of the seed):
-// beta 0.05, v 0.25, mu_s 0.4, mu_m 0.25, v_m 0.5, so k1 = 0.45, k3 = 0.6.
+/// All dimensionless. Defaults are the seed set (section 4 of the seed):
+/// beta 0.05, v 0.25, mu_s 0.4, mu_m 0.25, v_m 0.5, so k1 = 0.45, k3 = 0.6.
 struct Params {
   LawKind law = LawKind::kCubic;
   double beta = 0.05;  // damping ratio, 2 beta = C / sqrt(K M)
@@ -32,42 +33,56 @@ struct Params {
   double delta = 3.0;  // leine: decay rate
   double k5 = 0.0;     // cubic: optional quintic term -k5 s^5, k5 >= 0
 
-  // Cubic law coefficients, seed section 3: k1 = 3(mu_s - mu_m)/(2 v_m),
-  // k3 = (mu_s - mu_m)/(2 v_m^3).
+  /// Cubic law coefficients, seed section 3: k1 = 3(mu_s - mu_m)/(2 v_m),
+  /// k3 = (mu_s - mu_m)/(2 v_m^3).
   double k1() const;
   double k3() const;
 };
 
-// Names of the parameters that apply to a law, in a fixed order:
-// beta, v, mu_s, then the law's own (cubic: mu_m, v_m, k5; coulomb: mu_k;
-// stribeck: mu_k, v_s; leine: delta).
+/// Names of the parameters that apply to a law, in a fixed order:
+/// beta, v, mu_s, then the law's own (cubic: mu_m, v_m, k5; coulomb: mu_k;
+/// stribeck: mu_k, v_s; leine: delta).
 std::vector<std::string> ParameterNames(LawKind law);
-// Every parameter name any law knows.
+/// Every parameter name any law knows.
 std::vector<std::string> AllParameterNames();
+/// True for any name in AllParameterNames().
 bool IsParameterName(const std::string& name);
-// "beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5", for messages.
+/// "beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5", for messages.
 std::string ParameterNameList();
-// The member of Params a name stands for; throws InvalidArgument on an unknown name.
+/// The member of Params a name stands for; throws InvalidArgument on an unknown name.
 double Params::*ParameterMember(const std::string& name);
 
-// Get or set by name; throw InvalidArgument on an unknown name.
+/// A continuation range of one parameter.
+struct ParameterRange {
+  double from = 0;
+  double to = 0;
+};
+/// The default range of a parameter around the model `base`, valid at both
+/// ends for base's other values: beta 0.01 -> 0.3, v 0.05 -> 0.5, mu_s from
+/// 1.2 x (mu_m or mu_k) to 2 mu_s, mu_m and mu_k 0.2 -> 0.9 x mu_s, the
+/// speeds v_m, v_s and delta 0.5 -> 2 x their base value, k5 0 -> max(1,
+/// 2 k5). Throws
+/// InvalidArgument on an unknown name.
+ParameterRange DefaultRange(const Params& base, const std::string& name);
+
+/// Get or set by name; throw InvalidArgument on an unknown name.
 double GetParameter(const Params& p, const std::string& name);
 void SetParameter(Params& p, const std::string& name, double value);
 
-// Every nonzero parameter of a law must lie in [kMinScale, kMaxScale] (k5 in
-// [0, kMaxScale]): beyond, the cubic law's k3 or the state over- or underflow
-// (nan or inf results).
+/// Every nonzero parameter of a law must lie in [kMinScale, kMaxScale] (k5 in
+/// [0, kMaxScale]): beyond, the cubic law's k3 or the state over- or underflow
+/// (nan or inf results).
 constexpr double kMinScale = 1e-6, kMaxScale = 1e6;
 
-// Returns an empty string if p is a valid model, otherwise one line naming
-// the offending value, e.g. "mu_m = 0.5 must be < mu_s = 0.4".
+/// Returns an empty string if p is a valid model, otherwise one line naming
+/// the offending value, e.g. "mu_m = 0.5 must be < mu_s = 0.4".
 std::string ValidationError(const Params& p);
-// Throws InvalidArgument with ValidationError(p) if it is not empty.
+/// Throws InvalidArgument with ValidationError(p) if it is not empty.
 void Validate(const Params& p);
 
-// Physical inputs and the seed's scaling (section 3): L = M g / K,
-// omega0 = sqrt(K / M), t0 = 1 / omega0, 2 beta = C / sqrt(K M),
-// v = V t0 / L. Speeds scale by L omega0; friction coefficients are unchanged.
+/// Physical inputs and the seed's scaling (section 3): L = M g / K,
+/// omega0 = sqrt(K / M), t0 = 1 / omega0, 2 beta = C / sqrt(K M),
+/// v = V t0 / L. Speeds scale by L omega0; friction coefficients are unchanged.
 struct PhysicalParams {
   LawKind law = LawKind::kCubic;
   double mass = 1.0;         // M [kg]
@@ -83,13 +98,13 @@ struct PhysicalParams {
   double delta = 3.0;    // leine: [s / m]
 };
 
-// Throws InvalidArgument if a physical input is not finite or not positive
-// where it must be.
+/// Throws InvalidArgument if a physical input is not finite or not positive
+/// where it must be.
 Params ToDimensionless(const PhysicalParams& phys);
-// The inverse, for given mass, stiffness and gravity.
+/// The inverse, for given mass, stiffness and gravity.
 PhysicalParams ToPhysical(const Params& p, double mass, double stiffness, double gravity);
 
-// Length and time scales of the seed's scaling.
+/// Length and time scales of the seed's scaling.
 double LengthScale(double mass, double stiffness, double gravity);  // L = M g / K
 double TimeScale(double mass, double stiffness);                    // t0 = sqrt(M / K)
 

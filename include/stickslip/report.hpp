@@ -4,40 +4,42 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stickslip {
 
-// Writes `content` to a new file in the directory of `path`, then renames it
-// over `path`: readers see the old file or the whole new one, never a part.
-// On failure the temporary file is removed and Error is thrown, naming the
-// path and the reason (errno text); `path` is then unchanged.
+/// Writes `content` to a new file in the directory of `path`, then renames it
+/// over `path`: readers see the old file or the whole new one, never a part.
+/// On failure the temporary file is removed and Error is thrown, naming the
+/// path and the reason (errno text); `path` is then unchanged.
 void WriteFileAtomically(const std::string& path, const std::string& content);
 
-// A number as TSV text: the shortest form that reads back to the same double
-// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
+/// A number as TSV text: the shortest form that reads back to the same double
+/// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
 std::string FormatNumber(double x);
 
-// An extra column of a table, one value per row (nan where it does not apply).
+/// An extra column of a table, one value per row (nan where it does not apply).
 struct ExtraColumn {
   std::string name;
   std::vector<double> values;
 };
 
-// A tab-separated table. Layout:
-//   # col1<TAB>col2<TAB>...     the header, always the first line
-//   # comment                   AddComment lines, in order
-//   1.5<TAB>0.25<TAB>...        one line per row
-// gnuplot reads it as is ('#' lines are comments; text cells are fine with
-// `using` expressions or strcol).
+/// A tab-separated table that describes itself. Layout:
+///   # key: value                metadata (AddMeta / AddComment lines), in order
+///   col1<TAB>col2<TAB>...       the header line, without '#'
+///   1.5<TAB>0.25<TAB>...        one line per row
+/// pandas.read_csv(path, sep='\t', comment='#') and csv.DictReader (after
+/// dropping the '#' lines) read the header as the column names; gnuplot reads
+/// it with `set datafile columnheaders` ('#' lines are comments).
 class TsvTable {
  public:
-  // Throws InvalidArgument if there are no columns or a name is empty or
-  // contains a tab or newline.
+  /// Throws InvalidArgument if there are no columns or a name is empty or
+  /// contains a tab or newline.
   explicit TsvTable(std::vector<std::string> columns);
 
-  // One cell: a number (formatted by FormatNumber) or text without tabs or
-  // newlines.
+  /// One cell: a number (formatted by FormatNumber) or text without tabs or
+  /// newlines.
   class Cell {
    public:
     Cell(double x) : text_(FormatNumber(x)) {}                // NOLINT: implicit by design
@@ -54,15 +56,21 @@ class TsvTable {
     bool is_text_ = false;
   };
 
-  // Throws InvalidArgument if the text has a newline.
+  /// A "# text" line before the header. Throws InvalidArgument if the text
+  /// has a line break.
   void AddComment(const std::string& text);
-  // Throws InvalidArgument if the cell count differs from the column count
-  // or a text cell has a tab or newline.
+  /// A "# key: value" metadata line. Throws InvalidArgument if the key is
+  /// empty or has a colon, or either has a line break.
+  void AddMeta(const std::string& key, const std::string& value);
+  /// The same lines, placed before every line added so far.
+  void PrependMeta(const std::vector<std::pair<std::string, std::string>>& lines);
+  /// Throws InvalidArgument if the cell count differs from the column count
+  /// or a text cell has a tab or newline.
   void AddRow(const std::vector<Cell>& cells);
 
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t rows() const { return rows_; }
-  // The whole table as text, ending with a newline.
+  /// The whole table as text, ending with a newline.
   std::string str() const;
 
  private:
@@ -84,16 +92,16 @@ struct GnuplotResult {
   bool ok() const { return status == GnuplotStatus::kOk; }
 };
 
-// Runs `gnuplot script_path` with working directory `workdir` (empty: the
-// current one), so relative paths inside the script resolve there; a relative
-// script_path is taken relative to the caller's current directory. The child
-// gets default SIGPIPE handling and no stdin/stdout; its stderr's last line is
-// the reason given on failure. `cancelled` (if set) is polled every 50 ms; when
-// it returns true the child is killed (SIGTERM, then SIGKILL) and reaped.
+/// Runs `gnuplot script_path` with working directory `workdir` (empty: the
+/// current one), so relative paths inside the script resolve there; a relative
+/// script_path is taken relative to the caller's current directory. The child
+/// gets default SIGPIPE handling and no stdin/stdout; its stderr's last line is
+/// the reason given on failure. `cancelled` (if set) is polled every 50 ms; when
+/// it returns true the child is killed (SIGTERM, then SIGKILL) and reaped.
 GnuplotResult RunGnuplot(const std::string& script_path, const std::string& workdir,
                          const std::function<bool()>& cancelled);
-// The same without cancellation: false and *error (if not null) set to the
-// message when the status is not kOk.
+/// The same without cancellation: false and *error (if not null) set to the
+/// message when the status is not kOk.
 bool RunGnuplot(const std::string& script_path, const std::string& workdir, std::string* error);
 
 // Empty if `path` holds a whole PNG image (the PNG signature first, the IEND

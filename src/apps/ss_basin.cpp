@@ -13,9 +13,9 @@
 #include <iostream>
 #include <string>
 
+#include "cli/about.hpp"
 #include "cli/study.hpp"
 #include "stickslip/basin_report.hpp"
-#include "stickslip/version.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;
@@ -40,8 +40,7 @@ void OnSignal(int sig) { g_signal = sig; }
 
 po::options_description AppOptions() {
   po::options_description d("Basins (study section [basin])");
-  d.add_options()("version", "print the version and exit")("nx", cli::Value()->value_name("N"),
-                                                           "starts along x (default 41)")(
+  d.add_options()("nx", cli::Value()->value_name("N"), "starts along x (default 41)")(
       "ny", cli::Value()->value_name("N"), "starts along x' (default 41)")(
       "x_min", cli::Value()->value_name("X"),
       "grid box; give all four of x_min x_max xdot_min xdot_max, or none (default: the "
@@ -129,14 +128,8 @@ bool Plot(const std::string& dir) {
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "basin");
-  if (args.map().count("help")) {
-    cli::PrintHelp(std::cout, "ss_basin [--study FILE] [options]", desc, kNotes);
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_basin [--study FILE] [options]", desc, kNotes))
     return 0;
-  }
-  if (args.map().count("version")) {
-    std::cout << kProg << " (stickslip) " << ss::VersionString() << "\n";
-    return 0;
-  }
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
   const double max_time = args.Number("max_time", 0);

@@ -12,11 +12,11 @@
 #include <iostream>
 #include <string>
 
+#include "cli/about.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart.hpp"
 #include "stickslip/chart_report.hpp"
 #include "stickslip/report.hpp"
-#include "stickslip/version.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;
@@ -40,8 +40,8 @@ void OnSignal(int sig) { g_signal = sig; }
 
 po::options_description AppOptions() {
   po::options_description d("Chart (study section [chart])");
-  d.add_options()("version", "print the version and exit")(
-      "param", cli::Value()->value_name("NAME"), "first axis, any model parameter (default v)")(
+  d.add_options()("param", cli::Value()->value_name("NAME"),
+                  "first axis, any model parameter (default v)")(
       "from", cli::Value()->value_name("A"), "first axis from (default 0.05)")(
       "to", cli::Value()->value_name("B"), "first axis to, > from (default 0.6)")(
       "param2", cli::Value()->value_name("NAME"), "second axis, != param (default beta)")(
@@ -116,14 +116,8 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "chart");
-  if (args.map().count("help")) {
-    cli::PrintHelp(std::cout, "ss_chart [--study FILE] [options]", desc, kNotes);
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_chart [--study FILE] [options]", desc, kNotes))
     return 0;
-  }
-  if (args.map().count("version")) {
-    std::cout << kProg << " (stickslip) " << ss::VersionString() << "\n";
-    return 0;
-  }
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
   pl.p1 = args.Text("param", "v");

@@ -11,11 +11,14 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "cli/about.hpp"
 #include "cli/output.hpp"
+#include "cli/physical.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
 #include "stickslip/branch_disturbance.hpp"
@@ -41,6 +44,8 @@ constexpr const char* kNotes =
     "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
     "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
     "a symlink at an output's place is refused.\n"
+    "Each TSV starts with '# key: value' lines (tool, command, model, range, tolerances,\n"
+    "integrator, status), then one header line without '#'.\n"
     "Study files: model and solver keys at top level, this app's keys in [continue].\n"
     "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM), time limit\n"
     "or I/O failure (the branch so far is written, marked partial; if a figure cannot be\n"
@@ -51,9 +56,14 @@ constexpr const char* kNotes =
 po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
   d.add_options()("param", cli::Value()->value_name("NAME"),
-                  ("parameter to continue: " + ss::ParameterNameList() + " (default v)").c_str())(
-      "from", cli::Value()->value_name("A"), "start value; the first row is here (default 0.05)")(
-      "to", cli::Value()->value_name("B"), "end value, != from (default 0.5)")(
+                  ("parameter to continue: " + ss::ParameterNameList() +
+                   " (default v); with physical inputs also belt_speed, damping, speed_m, "
+                   "speed_s, delta_phys, in physical units")
+                      .c_str())(
+      "from", cli::Value()->value_name("A"),
+      "start value; the first row is here (default: the parameter's range, v 0.05, beta 0.01, "
+      "mu_s 1.2 mu_m, ...)")("to", cli::Value()->value_name("B"),
+                             "end value, != from (default: v 0.5, beta 0.3, ...)")(
       "out", cli::Value()->value_name("DIR"), "output directory (default plots)")(
       "max_step", cli::Value()->value_name("F"),
       "largest step as a fraction of |to - from| (default 0.01: >= 100 points)")(
@@ -109,14 +119,58 @@ void PrintComparison(const ss::EstimateComparison& c, const std::string& param) 
               << ")\n";
 }
 
+// Physical copies of the parameter axis (if it has units), x and the period,
+// for branch points or special points.
+template <typename Point>
+std::vector<ss::ExtraColumn> PhysicalColumns(const cli::Scales& s, const std::string& param,
+                                             const std::vector<Point>& points) {
+  const auto axis = cli::AxisOf(param, s);
+  std::vector<ss::ExtraColumn> c;
+  if (axis) c.push_back({axis->physical, {}});
+  c.insert(c.end(), {{"x_min_m", {}}, {"x_max_m", {}}, {"period_s", {}}});
+  for (const Point& pt : points) {
+    auto col = c.end() - 3;
+    if (axis) col[-1].values.push_back(pt.p / axis->factor);
+    col[0].values.push_back(pt.x_min * s.L);
+    col[1].values.push_back(pt.x_max * s.L);
+    col[2].values.push_back(pt.period * s.t0);
+  }
+  return c;
+}
+
+// Physical inputs: the scales, and how the physical axis relates to the continued one.
+void AddScales(const cli::Scales& s, const std::string& param, cli::Metadata& meta) {
+  meta.insert(meta.end(), {{"L", ss::FormatNumber(s.L) + " m (M g / K)"},
+                           {"t0", ss::FormatNumber(s.t0) + " s (sqrt(M / K))"}});
+  if (const auto axis = cli::AxisOf(param, s))
+    meta.emplace_back("continued_physical",
+                      axis->physical + " = " + param + " / " + ss::FormatNumber(axis->factor));
+}
+
 // The options, validated (UsageError naming the option otherwise).
 ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) {
   ss::ContinuationOptions opts;
-  opts.param = args.Text("param", "v");
-  opts.from = args.Number("from", 0.05);
+  // With physical inputs, --param belt_speed (damping, speed_m, ...) runs in
+  // physical units: its dimensionless parameter is continued over the range
+  // converted by the seed's scaling.
+  const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
+  const std::string asked = args.Text("param", "v");
+  const auto axis = cli::AxisOf(asked, scales.value_or(cli::Scales()));
+  const bool physical_param = axis && asked == axis->physical;
+  if (physical_param && !scales)
+    throw cli::UsageError("--param " + asked + " is a physical input: give the physical model " +
+                          "(--mass --damping --stiffness --belt_speed ...), or use --param " +
+                          axis->dimensionless);
+  const double to_param = physical_param ? axis->factor : 1.0;  // dimensionless per given
+  opts.param = physical_param ? axis->dimensionless : asked;
+  // Each parameter's own default range (v 0.05 -> 0.5, beta 0.01 -> 0.3, ...).
+  ss::ParameterRange range{0.05, 0.5};
+  if (ss::IsParameterName(opts.param))
+    range = ss::DefaultRange(cli::UncheckedModelFromArguments(args), opts.param);
+  opts.from = args.Number("from", range.from / to_param) * to_param;
   *base = cli::ModelFromArguments(args, opts.param, opts.from);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args);
-  opts.to = args.Number("to", 0.5);
+  opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");
   const std::string err = opts.ValidationError(*base);
@@ -278,18 +332,43 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
   }
 }
 
+// How the files were made: tool, command, model, range, tolerances, and
+// with physical inputs the scales (then BranchTable adds the status).
+cli::Metadata FileMetadata(const std::string& command, const ss::Params& base,
+                           const ss::ContinuationOptions& opts,
+                           const std::optional<cli::Scales>& scales) {
+  cli::Metadata meta = cli::RunMetadata(kProg, command, base, opts.orbit.flow, opts.param);
+  meta.insert(meta.end(), {{"continued", opts.param},
+                           {"from", ss::FormatNumber(opts.from)},
+                           {"to", ss::FormatNumber(opts.to)},
+                           {"max_step", ss::FormatNumber(opts.max_step)},
+                           {"newton_tol", ss::FormatNumber(opts.orbit.EffectiveNewtonTol())},
+                           {"locate_tol", ss::FormatNumber(opts.locate_tol)}});
+  if (scales) AddScales(*scales, opts.param, meta);
+  return meta;
+}
+
+// What Outputs writes besides the result: the metadata and the scales (if physical).
+struct Provenance {
+  cli::Metadata meta;
+  std::optional<cli::Scales> scales;
+};
+
 int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Params& base,
-            const ss::ContinuationOptions& opts, cli::RunControl& run, bool estimates, bool plots);
+            const ss::ContinuationOptions& opts, const Provenance& prov, cli::RunControl& run,
+            bool estimates, bool plots);
 
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
-  if (args.map().count("help")) {
-    cli::PrintHelp(std::cout, "ss_continue [--study FILE] [options]", desc, kNotes);
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
+                         kNotes))
     return 0;
-  }
   ss::Params base;
   const ss::ContinuationOptions opts = Configure(args, &base);
+  Provenance prov;
+  prov.scales = cli::ScalesFromArguments(args);
+  prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);
   const double max_time = args.Number("max_time", 0);
   if (max_time < 0)
     throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
@@ -306,7 +385,7 @@ int Main(int argc, char** argv) {
   const ss::ContinuationResult r = RunContinuation(base, opts, run, &abandoned);
   int code = 1;
   try {
-    code = Outputs(out, r, base, opts, run, estimates, plots);
+    code = Outputs(out, r, base, opts, prov, run, estimates, plots);
   } catch (const std::exception& e) {
     if (!abandoned) throw;
     code = cli::ReportError(kProg, e);
@@ -320,7 +399,8 @@ int Main(int argc, char** argv) {
 
 // Writes the set, draws the figures, prints the summary; returns the exit code.
 int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Params& base,
-            const ss::ContinuationOptions& opts, cli::RunControl& run, bool estimates, bool plots) {
+            const ss::ContinuationOptions& opts, const Provenance& prov, cli::RunControl& run,
+            bool estimates, bool plots) {
   const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
   const double seconds = run.Elapsed();
   const std::string model = cli::DescribeModel(base);
@@ -341,9 +421,19 @@ int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Para
   ss::ExtraColumn stalled{"newton_stalled", {}};
   for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
   extra.push_back(std::move(stalled));
+  std::vector<ss::ExtraColumn> special_extra;
+  if (prov.scales) {  // physical copies last
+    const auto phys = PhysicalColumns(*prov.scales, opts.param, r.points);
+    extra.insert(extra.end(), phys.begin(), phys.end());
+    special_extra = PhysicalColumns(*prov.scales, opts.param, r.special);
+  }
   run.Phase("writing");
-  out.Write("branch.tsv", ss::BranchTable(r, opts.param, model, extra).str());
-  out.Write("special_points.tsv", ss::SpecialPointTable(r, opts.param).str());
+  ss::TsvTable branch = ss::BranchTable(r, opts.param, model, extra);
+  branch.PrependMeta(prov.meta);
+  ss::TsvTable special = ss::SpecialPointTable(r, opts.param, special_extra);
+  special.PrependMeta(prov.meta);
+  out.Write("branch.tsv", branch.str());
+  out.Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   out.Write("bifurcation.gp", ss::BifurcationScript(r, opts.param, title, cmp.applies));
   const std::vector<std::string> figures = ss::BifurcationFigures(cmp.applies);

@@ -1,5 +1,5 @@
 // ss_simulate: one trajectory of the belt model, written as a TSV
-// (# t, x, xdot, mode), optionally plotted with gnuplot.
+// (metadata lines, then the header t, x, xdot, mode), optionally plotted with gnuplot.
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -7,10 +7,13 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/about.hpp"
 #include "cli/output.hpp"
+#include "cli/physical.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
 #include "stickslip/flow.hpp"
@@ -26,9 +29,10 @@ namespace {
 constexpr const char* kProg = "ss_simulate";
 constexpr double kMaxRows = 1e7;  // rows are held in memory until the atomic write
 constexpr const char* kNotes =
-    "Output: a TSV whose first line is '# t<TAB>x<TAB>xdot<TAB>mode' (mode: slip-below,\n"
-    "stick, slip-above), then '#' comment lines with the model and run settings, then\n"
-    "one row every --dt and one at every switch. Stick rows have xdot == v exactly.\n"
+    "Output: a TSV that starts with '# key: value' lines (tool, command, model, run and\n"
+    "solver settings, status), then the header line 't<TAB>x<TAB>xdot<TAB>mode' (mode:\n"
+    "slip-below, stick, slip-above), then one row every --dt and one at every switch.\n"
+    "Stick rows have xdot == v exactly.\n"
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
     "With --plot, FILE.gp names the TSV and the PNG by their plain names: run it in\n"
@@ -88,7 +92,7 @@ std::string PlotScript(const std::string& data, const std::string& png, const ss
   std::string s;
   s += "set terminal pngcairo size 1400,600 noenhanced butt font 'Sans,11'\n";
   s += "set output " + GnuplotString(png) + "\n";
-  s += "set datafile separator '\\t'\n";
+  s += "set datafile separator '\\t'\n";  // the header line is skipped as non-numeric
   // The stick set: x' = v, |x + 2 beta v| <= mu_s.
   s += "$omega << EOD\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) + "\n" +
        ss::FormatNumber(mu_s - shift) + "\t" + ss::FormatNumber(v) + "\nEOD\n";
@@ -206,14 +210,14 @@ int WriteOutputs(cli::OutputSet& files, const OutNames& names, const Settings& s
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
-  if (args.map().count("help")) {
-    cli::PrintHelp(std::cout,
-                   "ss_simulate [--study FILE] [model options] [--x0 X] [--xdot0 Y] [--t_end T] "
-                   "[--dt DT] --out FILE.tsv [--plot] [--max_time S]",
-                   desc, kNotes);
+  if (cli::HelpOrVersion(std::cout, args, kProg,
+                         "ss_simulate [--study FILE] [model options] [--x0 X] [--xdot0 Y] "
+                         "[--t_end T] [--dt DT] --out FILE.tsv [--plot] [--max_time S]",
+                         desc, kNotes))
     return 0;
-  }
   const Settings s = Configure(args);
+  // With physical inputs, physical copies of t, x and x' follow (seed section 3 scaling).
+  const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
   const OutNames names = SplitOut(s.out);
   cli::OutputSet files(names.dir,
                        s.plot ? std::vector<std::string>{names.tsv, names.gp, names.png}
@@ -229,20 +233,31 @@ int Main(int argc, char** argv) {
   });
   run.Phase("integrating");
   const ss::Vec2 z0(s.x0, s.xdot0);
-  ss::TsvTable table({"t", "x", "xdot", "mode"});
-  table.AddComment("ss_simulate " + cli::DescribeModel(s.params));
-  table.AddComment("start x0=" + ss::FormatNumber(s.x0) + " xdot0=" + ss::FormatNumber(s.xdot0) +
-                   " t_end=" + ss::FormatNumber(s.t_end) + " dt=" + ss::FormatNumber(s.dt) +
-                   " rtol=" + ss::FormatNumber(s.options.rtol) +
-                   " atol=" + ss::FormatNumber(s.options.atol) +
-                   " integrator=" + ss::IntegratorName(s.options.integrator) +
-                   " method=" + ss::MethodName(s.options.method));
+  std::vector<std::string> columns = {"t", "x", "xdot", "mode"};
+  if (scales) columns.insert(columns.end(), {"t_s", "x_m", "xdot_m_s"});
+  ss::TsvTable table(columns);
+  for (const auto& [key, value] :
+       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.params, s.options))
+    table.AddMeta(key, value);
+  table.AddMeta("model", cli::DescribeModel(s.params));
+  table.AddMeta("x0", ss::FormatNumber(s.x0));
+  table.AddMeta("xdot0", ss::FormatNumber(s.xdot0));
+  table.AddMeta("t_end", ss::FormatNumber(s.t_end));
+  table.AddMeta("dt", ss::FormatNumber(s.dt));
+  if (scales) {
+    table.AddMeta("L", ss::FormatNumber(scales->L) + " m (M g / K)");
+    table.AddMeta("t0", ss::FormatNumber(scales->t0) + " s (sqrt(M / K))");
+  }
   ss::Sample last{std::nan(""), ss::Vec2::Zero(), ss::Mode::kStick};
   std::string bad;
   auto observer = [&](const ss::Sample& x) {
     if (x.t == last.t && x.z == last.z && x.mode == last.mode) return;  // a repeated point
     if (bad.empty()) bad = NonFinite(x);
-    if (bad.empty()) table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
+    if (bad.empty() && scales)
+      table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode), x.t * scales->t0, x.z[0] * scales->L,
+                    x.z[1] * scales->L / scales->t0});
+    else if (bad.empty())
+      table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
     last = x;
     run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.t_end, x.t, "time units");
   };
@@ -259,6 +274,7 @@ int Main(int argc, char** argv) {
     cli::PrintError(kProg, Failure(r, bad, run) + "; no output written");
     return 1;
   }
+  table.AddMeta("status", "complete");  // a failed run writes no file
   return WriteOutputs(files, names, s, model, table, run);
 }
 

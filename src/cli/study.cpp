@@ -66,7 +66,8 @@ const std::vector<std::string>& StudySections() {
 
 po::options_description GeneralOptions() {
   po::options_description d("General");
-  d.add_options()("help", "print this help and exit")(
+  d.add_options()("help,h", "print this help and exit")(
+      "version", po::bool_switch(), "print the version (and git commit) and exit")(
       "study", Value()->value_name("FILE"),
       "read options from a study file (key = value lines; the command line wins)");
   return d;
@@ -208,8 +209,8 @@ Arguments ParseArguments(int argc, const char* const argv[], const po::options_d
   } catch (const po::error& e) {
     throw UsageError(OneLine(e.what()));
   }
-  if (!args.vm_.count("help") && args.Given("study"))
-    ReadStudyFile(args.Text("study"), desc, section, args);
+  const bool info = args.vm_.count("help") || args.Flag("version");
+  if (!info && args.Given("study")) ReadStudyFile(args.Text("study"), desc, section, args);
   try {
     po::notify(args.vm_);
   } catch (const po::error& e) {
@@ -270,7 +271,7 @@ void ReadStudyFile(const std::string& path, const po::options_description& desc,
     if (!IsKey(key)) throw malformed("malformed key in '" + text + "'");
     if (value.empty()) throw malformed("key '" + key + "' has no value");
     if (!current.empty() && current != section) continue;  // another app's section
-    if (key == "study" || key == "help")
+    if (key == "study" || key == "help" || key == "version")
       throw malformed("key '" + key + "' is not allowed in a study file");
     const po::option_description* d = desc.find_nothrow(key, false);
     if (d == nullptr || d->long_name() != key) throw malformed("unknown key '" + key + "'");
@@ -339,6 +340,16 @@ void CheckOtherLaws(const Arguments& args, const Params& p) {
 Params ModelFromArguments(const Arguments& args) { return ModelFromArguments(args, "", 0.0); }
 
 Params ModelFromArguments(const Arguments& args, const std::string& continued, double at) {
+  const Params p = UncheckedModelFromArguments(args);
+  Params checked = p;
+  if (!continued.empty() && IsParameterName(continued)) SetParameter(checked, continued, at);
+  const std::string err = ValidationError(checked);
+  if (!err.empty()) throw UsageError("invalid model: " + WithOrigin(args, err));
+  CheckOtherLaws(args, checked);
+  return p;
+}
+
+Params UncheckedModelFromArguments(const Arguments& args) {
   LawKind law = LawKind::kCubic;
   if (args.Given("law")) {
     try {
@@ -385,11 +396,6 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
       throw UsageError("invalid physical inputs: " + WithOrigin(args, e.what()));
     }
   }
-  Params checked = p;
-  if (!continued.empty() && IsParameterName(continued)) SetParameter(checked, continued, at);
-  const std::string err = ValidationError(checked);
-  if (!err.empty()) throw UsageError("invalid model: " + WithOrigin(args, err));
-  CheckOtherLaws(args, checked);
   return p;
 }
 

@@ -124,6 +124,10 @@ Params ModelFromArguments(const Arguments& args);
 // parameter set to `at` (its own base value is never used, so --param v --v -1
 // is fine; the range ends are validated by ContinuationOptions).
 Params ModelFromArguments(const Arguments& args, const std::string& continued, double at);
+// The model as given (physical inputs converted), not validated: for
+// defaults that depend on it, such as a parameter's range (DefaultRange).
+// Throws UsageError on unreadable or inconsistent options.
+Params UncheckedModelFromArguments(const Arguments& args);
 // The solver options from SolverOptions(), validated (throws UsageError).
 FlowOptions FlowOptionsFromArguments(const Arguments& args);
 // "law=cubic beta=0.05 v=0.25 ...": the law's parameters, for file headers.
