@@ -4,10 +4,11 @@
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,700 enhanced font ',12'
 set datafile separator '\t'
+set datafile columnheaders
 set key top right
 set grid
 set xlabel 'v'
-set title 'law=cubic beta=0.05 v=0.25 mu_s=0.4 mu_m=0.25 v_m=0.5' noenhanced
+set title 'law=cubic beta=0.05 v=0.25 mu_s=0.4 mu_m=0.25 v_m=0.5 k5=0' noenhanced
 set output 'bifurcation_x.png'.suffix
 set ylabel "x range (min and max)"
 plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $6 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \

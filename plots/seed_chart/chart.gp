@@ -5,6 +5,7 @@ if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1100,800 enhanced font ',12'
 set output 'chart.png'.suffix
 set datafile separator '\t'
+set datafile columnheaders
 set xlabel 'v' noenhanced
 set ylabel 'beta' noenhanced
 set xrange [0.02:0.6]
