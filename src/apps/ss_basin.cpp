@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli/about.hpp"
+#include "cli/output.hpp"
 #include "cli/study.hpp"
 #include "stickslip/basin_report.hpp"
 
@@ -53,25 +54,6 @@ po::options_description AppOptions() {
       "wall-time limit in seconds; the starts so far are kept (default none)")(
       "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot");
   return d;
-}
-
-std::string CheckOutDir(const cli::Arguments& args) {
-  const std::string dir = args.Text("out", "plots/basin");
-  const std::string src = args.Given("out") ? args.Source("out") : "--out";
-  auto bad = [&](const std::string& why) {
-    return cli::UsageError("invalid value '" + dir + "' for " + src + ": " + why);
-  };
-  if (dir.empty()) throw bad("empty");
-  struct stat st;
-  if (::stat(dir.c_str(), &st) != 0) {
-    if (errno != ENOENT || ::mkdir(dir.c_str(), 0777) != 0)
-      throw bad(std::string("cannot create it: ") + std::strerror(errno));
-  } else if (!S_ISDIR(st.st_mode)) {
-    throw bad("not a directory");
-  }
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw bad(std::string("not writable: ") + std::strerror(errno));
-  return dir;
 }
 
 ss::BasinOptions OptionsFromArguments(const cli::Arguments& args) {
@@ -136,7 +118,8 @@ int Main(int argc, char** argv) {
   if (max_time < 0)
     throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
                           args.Source("max_time") + ": must be >= 0");
-  const std::string dir = CheckOutDir(args);
+  const std::string dir = cli::CheckedOutputDir(args.Text("out", "plots/basin"),
+                                                args.Given("out") ? args.Source("out") : "--out");
   const ss::Model model(p);
 
   std::signal(SIGINT, OnSignal);

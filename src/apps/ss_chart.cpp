@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/about.hpp"
+#include "cli/output.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart.hpp"
 #include "stickslip/chart_report.hpp"
@@ -54,25 +55,6 @@ po::options_description AppOptions() {
       "region grid: N x N cells for the shading (default 48)")(
       "no_plots", po::bool_switch(), "only curves.tsv and codim2.tsv: no regions, no gnuplot");
   return d;
-}
-
-std::string CheckOutDir(const cli::Arguments& args) {
-  const std::string dir = args.Text("out", "chart");
-  const std::string src = args.Given("out") ? args.Source("out") : "--out";
-  auto bad = [&](const std::string& why) {
-    return cli::UsageError("invalid value '" + dir + "' for " + src + ": " + why);
-  };
-  if (dir.empty()) throw bad("empty");
-  struct stat st;
-  if (::stat(dir.c_str(), &st) != 0) {
-    if (errno != ENOENT || ::mkdir(dir.c_str(), 0777) != 0)
-      throw bad(std::string("cannot create it: ") + std::strerror(errno));
-  } else if (!S_ISDIR(st.st_mode)) {
-    throw bad("not a directory");
-  }
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw bad(std::string("not writable: ") + std::strerror(errno));
-  return dir;
 }
 
 bool Plot(const std::string& dir, const std::string& script) {
@@ -142,7 +124,8 @@ int Main(int argc, char** argv) {
   if (plots) opts.region_n1 = opts.region_n2 = static_cast<int>(grid);
   const std::string err = opts.ValidationError(base);
   if (!err.empty()) throw cli::UsageError(err);
-  const std::string dir = CheckOutDir(args);
+  const std::string dir = cli::CheckedOutputDir(args.Text("out", "chart"),
+                                                args.Given("out") ? args.Source("out") : "--out");
 
   std::signal(SIGINT, OnSignal);
   std::signal(SIGTERM, OnSignal);

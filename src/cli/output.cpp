@@ -177,4 +177,21 @@ void OutputSet::Commit(const std::vector<std::string>& stale) {
   Discard();  // the staging directory, now empty
 }
 
+std::string CheckedOutputDir(const std::string& dir, const std::string& source) {
+  auto bad = [&](const std::string& why) {
+    return UsageError("invalid value '" + dir + "' for " + source + ": " + why);
+  };
+  if (dir.empty()) throw bad("empty");
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0) {
+    if (errno != ENOENT || ::mkdir(dir.c_str(), 0777) != 0)
+      throw bad(std::string("cannot create it: ") + std::strerror(errno));
+  } else if (!S_ISDIR(st.st_mode)) {
+    throw bad("not a directory");
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw bad(std::string("not writable: ") + std::strerror(errno));
+  return dir;
+}
+
 }  // namespace stickslip::cli

@@ -4,9 +4,9 @@
 // Promises (README, Reliability):
 // - Up front (UsageError, exit 2, nothing created): the destination directory
 //   exists or its parent does, and is writable; no control character in any
-//   path; every name fits NAME_MAX and PATH_MAX with its temporary suffix; at each file's place there
-//   is nothing or a regular file. A symbolic link, directory, device, FIFO or
-//   socket there is refused: a symlink is never followed nor replaced.
+//   path; every name fits NAME_MAX and PATH_MAX with its temporary suffix; at each file's place
+//   there is nothing or a regular file. A symbolic link, directory, device, FIFO or socket there is
+//   refused: a symlink is never followed nor replaced.
 // - Every file goes first into a fresh hidden directory `.<prog>-XXXXXX`
 //   inside the destination (mkdtemp: unique per run), created only when the
 //   first file is written. Commit() renames the staged files into place while
@@ -34,6 +34,11 @@
 #include "stickslip/report.hpp"
 
 namespace stickslip::cli {
+
+// A destination directory for an app that stages its own files (ss_chart,
+// ss_basin): made if missing. UsageError naming `source` (the option) if it
+// is empty, not a directory, or not writable.
+std::string CheckedOutputDir(const std::string& dir, const std::string& source);
 
 class OutputSet {
  public:
