@@ -150,8 +150,14 @@ int Main(int argc, char** argv) {
     dist.push_back(ss::SmallestDisturbance(model, o, flow));
   }
   const std::string desc_model = cli::DescribeModel(p);
-  ss::WriteFileAtomically(dir + "/basins.tsv", ss::BasinTable(r, desc_model, dist).str());
-  ss::WriteFileAtomically(dir + "/orbits.tsv", ss::OrbitTable(curves).str());
+  // Every file starts with the tool, the command, the model and the integrator.
+  const cli::Metadata meta = cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p, flow);
+  auto text = [&](ss::TsvTable t) {
+    t.PrependMeta(meta);
+    return t.str();
+  };
+  ss::WriteFileAtomically(dir + "/basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
+  ss::WriteFileAtomically(dir + "/orbits.tsv", text(ss::OrbitTable(curves)));
   ss::WriteFileAtomically(
       dir + "/basins.gp",
       ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : "")));

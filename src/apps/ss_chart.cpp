@@ -139,11 +139,20 @@ int Main(int argc, char** argv) {
       model += " " + name + "=" + ss::FormatNumber(ss::GetParameter(base, name));
   model += " " + pl.p1 + "=[" + ss::FormatNumber(pl.from1) + ", " + ss::FormatNumber(pl.to1) +
            "] " + pl.p2 + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
-  ss::WriteFileAtomically(dir + "/curves.tsv", ss::CurvesTable(r, pl, model).str());
-  ss::WriteFileAtomically(dir + "/codim2.tsv", ss::Codim2Table(r, pl, model).str());
+  // Every file starts with the tool, the command, the model and the integrator.
+  cli::Metadata meta = cli::RunMetadata(kProg, cli::CommandLine(argc, argv), base, opts.orbit.flow);
+  meta.push_back({"range", pl.p1 + " = [" + ss::FormatNumber(pl.from1) + ", " +
+                               ss::FormatNumber(pl.to1) + "], " + pl.p2 + " = [" +
+                               ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]"});
+  auto text = [&](ss::TsvTable t) {
+    t.PrependMeta(meta);
+    return t.str();
+  };
+  ss::WriteFileAtomically(dir + "/curves.tsv", text(ss::CurvesTable(r, pl, model)));
+  ss::WriteFileAtomically(dir + "/codim2.tsv", text(ss::Codim2Table(r, pl, model)));
   bool plots_ok = true;
   if (plots) {
-    ss::WriteFileAtomically(dir + "/regions.tsv", ss::RegionsTable(r, pl, model).str());
+    ss::WriteFileAtomically(dir + "/regions.tsv", text(ss::RegionsTable(r, pl, model)));
     plots_ok = Plot(dir, ss::ChartScript(r, pl, model));
   }
   PrintSummary(r, pl, model, dir, plots, plots_ok);
