@@ -6,23 +6,17 @@
 #include <algorithm>
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <vector>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 
 namespace stickslip {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kPi = 3.14159265358979323846;
-
-std::string Num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
+// Messages give 6 digits (%.6g).
+std::string Num6(double x) { return Num(x, 6); }
 
 // Validates p and insists on the cubic law: (3.9)-(3.30) are for it alone.
 void RequireCubic(const Params& p) {
@@ -47,21 +41,21 @@ void ValidateOptions(const BoundFitOptions& o) {
     throw InvalidArgument("check_points = " + std::to_string(o.check_points) +
                           " must be >= fit_points = " + std::to_string(o.fit_points));
   if (!(o.check_tolerance > 0) || !std::isfinite(o.check_tolerance))
-    throw InvalidArgument("check_tolerance = " + Num(o.check_tolerance) + " must be finite, > 0");
+    throw InvalidArgument("check_tolerance = " + Num6(o.check_tolerance) + " must be finite, > 0");
   if (!(o.xtol_abs > 0) || !std::isfinite(o.xtol_abs))
-    throw InvalidArgument("xtol_abs = " + Num(o.xtol_abs) + " must be finite, > 0");
+    throw InvalidArgument("xtol_abs = " + Num6(o.xtol_abs) + " must be finite, > 0");
   if (o.max_evaluations <= 0)
     throw InvalidArgument("max_evaluations = " + std::to_string(o.max_evaluations) +
                           " must be > 0");
   if (std::isinf(o.x1_low))
-    throw InvalidArgument("x1_low = " + Num(o.x1_low) + " must be finite (or NaN: 2 r1)");
+    throw InvalidArgument("x1_low = " + Num6(o.x1_low) + " must be finite (or NaN: 2 r1)");
 }
 
 // Move-only owner of an nlopt_opt (nlopt_destroy on scope exit).
 using NloptHandle = std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)>;
 
 void CheckNlopt(nlopt_result r, const char* call) {
-  if (r < 0) throw ExternalError(std::string(call) + " failed with nlopt_result " + Num(r));
+  if (r < 0) throw ExternalError(std::string(call) + " failed with nlopt_result " + Num6(r));
 }
 
 // One scalar a constrained by sampled values w_i of the seed's inequality,
@@ -124,7 +118,7 @@ BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<d
   // ROUNDOFF_LIMITED still returns the best point; the feasibility test below judges it.
   if (r < 0 && r != NLOPT_ROUNDOFF_LIMITED) {
     fit.status = BoundStatus::kOptimizerFailed;
-    fit.reason = "nlopt_optimize (LD_SLSQP) returned " + Num(r);
+    fit.reason = "nlopt_optimize (LD_SLSQP) returned " + Num6(r);
     return fit;
   }
   const double sampled = WorstViolation(side, w_fit, a);
@@ -132,21 +126,22 @@ BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<d
     // c_i grows with a for kUpper: if a = 0 already violates, no a >= 0 satisfies.
     const bool none = side == Side::kUpper && WorstViolation(side, w_fit, 0.0) > 0;
     fit.status = none ? BoundStatus::kNoPositiveBound : BoundStatus::kOptimizerFailed;
-    fit.reason = none ? "no a > 0 satisfies the sampled inequality (min bound " +
-                            Num(*std::min_element(w_fit.begin(), w_fit.end())) + " <= 0)"
-                      : "NLopt stopped at a = " + Num(a) + " violating a sample by " + Num(sampled);
+    fit.reason =
+        none ? "no a > 0 satisfies the sampled inequality (min bound " +
+                   Num6(*std::min_element(w_fit.begin(), w_fit.end())) + " <= 0)"
+             : "NLopt stopped at a = " + Num6(a) + " violating a sample by " + Num6(sampled);
     return fit;
   }
   if (!(a > o.xtol_abs)) {
     fit.status = BoundStatus::kNoPositiveBound;
-    fit.reason = "the optimal a = " + Num(a) + " is not positive";
+    fit.reason = "the optimal a = " + Num6(a) + " is not positive";
     return fit;
   }
   fit.status = BoundStatus::kFitted;
   fit.a = a;
   fit.worst_violation = WorstViolation(side, w_check, a);
   fit.holds = fit.worst_violation <= o.check_tolerance;
-  if (!fit.holds) fit.reason = "check grid violated by " + Num(fit.worst_violation);
+  if (!fit.holds) fit.reason = "check grid violated by " + Num6(fit.worst_violation);
   return fit;
 }
 
@@ -172,12 +167,12 @@ double FirstCrossing(double a1, double y0, double v, double r1) {
   auto yd = [&](double t) {
     return std::exp(a1 * t) * (v * std::cos(t) + (a1 * v - (1 + a1 * a1) * y0) * std::sin(t));
   };
-  const double dt = 1e-3, t_max = 20 * kPi;
+  const double dt = 1e-3, t_max = 20 * M_PI;
   bool below = false;
   for (double t = 0; t < t_max; t += dt) {
     const double next = yd(t + dt);
     if (next < v) below = true;
-    if (below && next > v) return kNaN;
+    if (below && next > v) return kNan;
     if (next > r1) continue;
     double lo = t, hi = t + dt;  // yd(lo) > r1 >= yd(hi)
     for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
@@ -186,7 +181,7 @@ double FirstCrossing(double a1, double y0, double v, double r1) {
     }
     return 0.5 * (lo + hi);
   }
-  return kNaN;
+  return kNan;
 }
 
 // The root s in (-1, 0) of (1 + s) e^{-s} = c, 0 < c < 1: with w = -(1 + s)
@@ -215,7 +210,7 @@ double SeedEquilibrium(const Params& p) {
 double SeedVMax(const Params& p) {
   RequireCubic(p);
   const double num = p.k1() - 2.0 * p.beta;
-  return num > 0 ? std::sqrt(num / (3.0 * p.k3())) : kNaN;  // (3.16)
+  return num > 0 ? std::sqrt(num / (3.0 * p.k3())) : kNan;  // (3.16)
 }
 
 SeedRoots ComputeSeedRoots(const Params& p, SeedDForm form) {
@@ -227,14 +222,14 @@ SeedRoots ComputeSeedRoots(const Params& p, SeedDForm form) {
   const double vpow = form == SeedDForm::kCorrected ? v * v : v * v * v;
   r.d = 1.5 * v * 1.5 * v - (2.0 * p.beta - p.k1() + 3.0 * k3 * vpow) / k3;
   if (!(r.d > 0)) {
-    r.reason = "D = " + Num(r.d) + " <= 0: h has no real roots besides 0";
+    r.reason = "D = " + Num6(r.d) + " <= 0: h has no real roots besides 0";
     return r;
   }
   r.r1 = 1.5 * v - std::sqrt(r.d);
   r.r2 = 1.5 * v + std::sqrt(r.d);
   if (!(r.r1 < 0)) {
-    r.reason = "r1 = " + Num(r.r1) + " >= 0: v = " + Num(v) +
-               " is not below v_max = " + Num(r.v_max) + " (3.16), the equilibrium is stable";
+    r.reason = "r1 = " + Num6(r.r1) + " >= 0: v = " + Num6(v) +
+               " is not below v_max = " + Num6(r.v_max) + " (3.16), the equilibrium is stable";
     return r;
   }
   r.applies = true;
@@ -295,7 +290,7 @@ SeedBounds FitSeedBounds(const Params& p, const BoundFitOptions& o) {
   b.a2.lo = lo;
   b.a2.hi = r1;
   if (x1_low >= r1 && b.a2.reason.empty())
-    b.a2.reason = "x1_low = " + Num(x1_low) + " >= r1 = " + Num(r1) +
+    b.a2.reason = "x1_low = " + Num6(x1_low) + " >= r1 = " + Num6(r1) +
                   ": the orbit does not enter D2; fitted at the limit x1 -> r1 alone";
   return b;
 }
@@ -332,8 +327,8 @@ SeedEstimate EstimateSeed(const Params& p, const SeedEstimateOptions& o) {
     const double rad = e.displacement_bound * e.displacement_bound - r1 * r1;
     if (rad < 0) {
       e.reason =
-          "y1 (3.22): y0^2 + (v - a1 y0)^2 = " + Num(e.displacement_bound * e.displacement_bound) +
-          " < r1^2 = " + Num(r1 * r1) + ": the a1 << 1 circle never reaches y' = r1";
+          "y1 (3.22): y0^2 + (v - a1 y0)^2 = " + Num6(e.displacement_bound * e.displacement_bound) +
+          " < r1^2 = " + Num6(r1 * r1) + ": the a1 << 1 circle never reaches y' = r1";
       return e;
     }
     e.y1 = std::sqrt(rad);
@@ -354,7 +349,7 @@ SeedEstimate EstimateSeed(const Params& p, const SeedEstimateOptions& o) {
   const double a2 = f2.a, y1 = e.y1;
   e.c = (1.0 + 2.0 * a2 * y1) * std::exp(-2.0 * a2 * y1);  // (3.26)
   if (!(e.c > 0 && e.c < 1)) {
-    e.reason = "c (3.26) = " + Num(e.c) + " is not in (0, 1): no second crossing of y' = r1";
+    e.reason = "c (3.26) = " + Num6(e.c) + " is not in (0, 1): no second crossing of y' = r1";
     return e;
   }
   e.y2 = -y1 / (1.0 + a2 * y1);             // (3.27) as printed
@@ -391,10 +386,10 @@ AveragingEstimate EstimateAveraging(const Params& p) {
   const double rad = k1 - two_beta - 3.0 * k3 * v * v;
   if (rad >= 0) e.amplitude = 2.0 * std::sqrt(rad / (3.0 * k3));
   if (!(rad > 0)) {
-    e.reason = "k1 - 2 beta - 3 k3 v^2 = " + Num(rad) +
+    e.reason = "k1 - 2 beta - 3 k3 v^2 = " + Num6(rad) +
                " <= 0: steady sliding is stable (v >= v_max), no limit cycle";
   } else if (e.amplitude >= v) {
-    e.reason = "a_ps = " + Num(e.amplitude) + " >= v = " + Num(v) +
+    e.reason = "a_ps = " + Num6(e.amplitude) + " >= v = " + Num6(v) +
                ": the first-harmonic orbit reaches belt speed, so the orbit sticks";
   } else {
     e.applies = true;
