@@ -2,23 +2,19 @@
 // of stick-slip and pure-slip orbits and of steady sliding, their special
 // points (GR, HB, LP), TSV files and gnuplot figures in --out.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
-#include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/about.hpp"
 #include "cli/output.hpp"
 #include "cli/physical.hpp"
+#include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
 #include "stickslip/branch_disturbance.hpp"
@@ -188,109 +184,6 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) 
   return opts;
 }
 
-// What the continuation's worker thread shares with the main thread.
-struct Shared {
-  std::mutex m;
-  std::condition_variable cv;
-  bool done = false, abandoned = false;
-  std::vector<ss::BranchPoint> points;  // as reported, for an abandoned run
-  double last = 0;
-  bool periodic = false;  // steady sliding comes first; then the periodic branches
-  ss::ContinuationResult result;
-  std::exception_ptr error;
-};
-
-// The library polls cancellation between CVODE returns, and one return can
-// take seconds on a stiff model (v_m = 1e-6): past this grace after a signal
-// or --max_time, the app goes on with the points reported so far and leaves
-// the worker behind (it ends with the process, ExitLeavingWorker).
-constexpr double kGraceSeconds = 2.0;
-
-// Runs the continuation on a worker thread with cancellation and progress; an
-// InvalidArgument escaping the library after validation is a numerical
-// failure (exit 1). *abandoned: the worker is still running.
-ss::ContinuationResult RunContinuation(const ss::Params& base, ss::ContinuationOptions opts,
-                                       cli::RunControl& run, bool* abandoned) {
-  auto sh = std::make_shared<Shared>();
-  sh->last = opts.from;
-  const std::string param = opts.param;
-  opts.cancelled = [sh, &run, param] {
-    std::lock_guard<std::mutex> lock(sh->m);
-    if (sh->abandoned) return true;
-    run.Heartbeat(sh->periodic
-                      ? "last periodic orbit at " + param + " = " + ss::FormatNumber(sh->last)
-                      : std::string("searching for a periodic orbit"));
-    return run.Cancelled();
-  };
-  opts.progress = [sh, &run, opts](const ss::BranchPoint& pt) {
-    std::lock_guard<std::mutex> lock(sh->m);
-    if (sh->abandoned) return;
-    sh->periodic = sh->periodic || pt.kind != ss::PointKind::kEquilibrium;
-    sh->last = pt.p;
-    sh->points.push_back(pt);
-    run.Progress(
-        opts.param + " = " + ss::FormatNumber(pt.p) + " (" + ss::PointKindName(pt.kind) + ")",
-        (pt.p - opts.from) / (opts.to - opts.from), static_cast<double>(sh->points.size()),
-        "points");
-  };
-  run.Phase("continuing");
-  std::thread worker([sh, base, opts] {
-    ss::ContinuationResult r;
-    std::exception_ptr error;
-    try {
-      r = ss::Continue(base, opts);
-    } catch (...) {
-      error = std::current_exception();
-    }
-    std::lock_guard<std::mutex> lock(sh->m);
-    sh->result = std::move(r);
-    sh->error = error;
-    sh->done = true;
-    sh->cv.notify_all();
-  });
-  std::unique_lock<std::mutex> lock(sh->m);
-  double cancelled_at = -1;
-  while (!sh->done && !sh->abandoned) {
-    sh->cv.wait_for(lock, std::chrono::milliseconds(50));
-    if (cancelled_at < 0 && run.Cancelled()) cancelled_at = run.Elapsed();
-    if (cancelled_at >= 0 && run.Elapsed() > cancelled_at + kGraceSeconds) sh->abandoned = true;
-  }
-  *abandoned = !sh->done;
-  lock.unlock();
-  if (*abandoned) {
-    worker.detach();
-  } else {
-    worker.join();
-  }
-  ss::ContinuationResult r;
-  if (sh->done && sh->error) {
-    try {
-      std::rethrow_exception(sh->error);
-    } catch (const ss::InvalidArgument& e) {
-      throw ss::Error("numerical failure in the continuation near " + param + " = " +
-                      ss::FormatNumber(sh->last) + ": " + e.what());
-    }
-  }
-  if (sh->done) {
-    r = std::move(sh->result);
-  } else {
-    r.points = sh->points;
-    r.status = ss::ContinuationStatus::kCancelled;
-  }
-  // Where the branch stopped, not where it was headed: the last periodic point.
-  if (r.status == ss::ContinuationStatus::kCancelled) {
-    const ss::BranchPoint* at = nullptr;
-    for (const auto& pt : r.points)
-      if (pt.kind != ss::PointKind::kEquilibrium) at = &pt;
-    r.message = (at ? "cancelled at " + param + " = " + ss::FormatNumber(at->p)
-                    : std::string("cancelled before the first periodic orbit")) +
-                " (" + run.Reason() + ")" +
-                (*abandoned ? "; the library did not return within 2 s, special points lost" : "");
-  }
-  ss::DropNonFinite(&r, param);
-  return r;
-}
-
 // Ends the process at once, with the worker thread still inside the library:
 // no destructor may run under it. stdout is checked first, as RunApp does.
 [[noreturn]] void ExitLeavingWorker(int code) {
@@ -382,7 +275,7 @@ int Main(int argc, char** argv) {
 
   cli::RunControl run(kProg, max_time);
   bool abandoned = false;
-  const ss::ContinuationResult r = RunContinuation(base, opts, run, &abandoned);
+  const ss::ContinuationResult r = cli::RunContinuation(base, opts, run, &abandoned);
   int code = 1;
   try {
     code = Outputs(out, r, base, opts, prov, run, estimates, plots);
