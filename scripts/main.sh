@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: set up, build, then the default study's continuation
-# (v from 0.05 to 0.5) and the seed's figures 5-10, all into plots/.
+# (v from 0.05 to 0.5), the seed's figures 5-10 and the stability charts, into plots/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
