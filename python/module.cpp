@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/chart.hpp"
 #include "stickslip/continuation.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow.hpp"
@@ -242,6 +243,49 @@ py::dict ContinueBranch(const ss::Params& base, const std::string& param,
   return d;
 }
 
+// The two-parameter chart (as ss_chart, without regions): curves and codim-2 points.
+py::dict ChartOf(const ss::Params& base, const std::string& param, double from_, double to,
+                 const std::string& param2, double from2, double to2, double max_step) {
+  ss::ChartOptions opts;
+  opts.plane = ss::Plane{param, param2, from_, to, from2, to2};
+  opts.max_step = max_step;
+  const std::string err = opts.ValidationError(base);
+  if (!err.empty()) throw ss::InvalidArgument(err);
+  ss::ChartResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = ss::Chart(base, opts);
+  }
+  py::list curves, codim2;
+  for (const ss::Curve& c : r.curves) {
+    std::vector<double> p1, p2, period, amplitude, multiplier, l1;
+    std::vector<std::string> type;
+    for (const ss::CurvePoint& q : c.points) {
+      p1.push_back(q.p1), p2.push_back(q.p2), period.push_back(q.period);
+      amplitude.push_back(q.amplitude), multiplier.push_back(q.multiplier), l1.push_back(q.l1);
+      type.push_back(q.type);
+    }
+    py::dict d;
+    d["label"] = ss::CurveLabel(c.kind);
+    d[param.c_str()] = Array(p1);
+    d[param2.c_str()] = Array(p2);
+    d["period"] = Array(period), d["amplitude"] = Array(amplitude);
+    d["multiplier"] = Array(multiplier), d["l1"] = Array(l1), d["type"] = StringArray(type);
+    d["ends"] = c.ends;
+    curves.append(d);
+  }
+  for (const ss::Codim2Point& c : r.codim2)
+    codim2.append(py::dict(py::arg("label") = c.label, py::arg(param.c_str()) = c.p1,
+                           py::arg(param2.c_str()) = c.p2, py::arg("description") = c.description));
+  py::dict d;
+  d["status"] = ss::ChartStatusName(r.status);
+  d["message"] = r.message;
+  d["curves"] = curves;
+  d["codim2"] = codim2;
+  if (r.status == ss::ChartStatus::kFailed) RaiseNumerical(r.message);
+  return d;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(stickslip, m) {
@@ -340,4 +384,10 @@ PYBIND11_MODULE(stickslip, m) {
         "Branches in one parameter (as ss_continue): dict with 'points' (dict of arrays), "
         "'special' (list of dicts: label GR/HB/LP, p, ...), 'status' and 'message'. "
         "from_/to default to default_range(param).");
+  m.def("chart", &ChartOf, py::arg("params"), py::arg("param") = "v", py::arg("from_") = 0.05,
+        py::arg("to") = 0.6, py::arg("param2") = "beta", py::arg("from2") = 0.0,
+        py::arg("to2") = 0.25, py::arg("max_step") = 0.01,
+        "The stability chart in two parameters (as ss_chart): dict with 'curves' (list of dicts: "
+        "label HB/GR/LP, arrays named for the two parameters, period, amplitude, multiplier, "
+        "l1, type) and 'codim2' (list of dicts: label GH/GR-LP, the two parameters).");
 }

@@ -102,6 +102,19 @@ class Sweep(unittest.TestCase):
             self.assertEqual(len(points), 1)
             self.assertAlmostEqual(points[0], hopf(stickslip.Params(beta=beta)), delta=1e-9)
 
+    def test_chart_hopf_curve_is_the_closed_form(self):
+        # Seed chart in (v, beta): every HB point on v = sqrt((k1 - 2 beta) / (3 k3)).
+        chart = stickslip.chart(stickslip.Params(), "v", 0.05, 0.6, "beta", 0.0, 0.25)
+        hb = [c for c in chart["curves"] if c["label"] == "HB"]
+        self.assertEqual(len(hb), 1)
+        self.assertGreater(len(hb[0]["v"]), 20)
+        for v, beta in zip(hb[0]["v"], hb[0]["beta"]):
+            k1, k3 = 0.45, 0.6
+            self.assertAlmostEqual(v, math.sqrt((k1 - 2 * beta) / (3 * k3)), delta=1e-10)
+        self.assertEqual([c["label"] for c in chart["curves"]].count("GR"), 1)
+        with self.assertRaises(ValueError):
+            stickslip.chart(stickslip.Params(), "v", 0.05, 0.6, "v", 0.0, 0.25)
+
     def test_version(self):
         self.assertRegex(stickslip.__version__, r"^\d+\.\d+\.\d+$")
 
