@@ -24,19 +24,8 @@ namespace stickslip {
 namespace {
 
 using testing_util::ReadFile;
+using testing_util::Listing;
 using testing_util::WriteFile;
-
-std::set<std::string> Listing(const std::string& dir) {
-  std::set<std::string> names;
-  if (DIR* d = ::opendir(dir.c_str())) {
-    while (const dirent* e = ::readdir(d)) {
-      const std::string n = e->d_name;
-      if (n != "." && n != "..") names.insert(n);
-    }
-    ::closedir(d);
-  }
-  return names;
-}
 
 // A fresh directory, removed with everything in it at the end of the scope.
 struct Scratch {
