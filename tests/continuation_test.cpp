@@ -142,13 +142,8 @@ TEST(Continuation, TinyRangeAcrossTheHopfPoint) {
   }
 }
 
-// Issue 15, item 18: the largest step allowed still ends the branch on HB,
-// with the same special points as the default step.
-TEST(Continuation, LargestStepKeepsTheSeedStructure) {
-  const Params p;
-  ContinuationOptions o;
-  o.max_step = 0.25;
-  const ContinuationResult r = Continue(p, o);
+// One HB at the closed form (seed 3.16) and one GR at the reference's grazing speed.
+void ExpectSeedStructure(const Params& p, const ContinuationResult& r) {
   ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
   const auto hb = Labelled(r, SpecialKind::kHopf);
   const auto gr = Labelled(r, SpecialKind::kGrazing);
@@ -156,6 +151,16 @@ TEST(Continuation, LargestStepKeepsTheSeedStructure) {
   ASSERT_EQ(gr.size(), 1u);
   EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
   EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// Issue 15, item 18: the largest step allowed still ends the branch on HB,
+// with the same special points as the default step.
+TEST(Continuation, LargestStepKeepsTheSeedStructure) {
+  const Params p;
+  ContinuationOptions o;
+  o.max_step = 0.25;
+  const ContinuationResult r = Continue(p, o);
+  ExpectSeedStructure(p, r);
 }
 
 // Issue 15, item 19: a range far wider than the branch (--to 1e6) does not
@@ -170,13 +175,7 @@ TEST(Continuation, VeryWideRangeKeepsTheSeedStructure) {
   o.to = 1e6;
   o.orbit.flow.integrator = Integrator::kCvode;
   const ContinuationResult r = Continue(p, o);
-  ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
-  const auto hb = Labelled(r, SpecialKind::kHopf);
-  const auto gr = Labelled(r, SpecialKind::kGrazing);
-  ASSERT_EQ(hb.size(), 1u);
-  ASSERT_EQ(gr.size(), 1u);
-  EXPECT_NEAR(hb[0].p, std::sqrt((p.k1() - 2 * p.beta) / (3 * p.k3())), 1e-9);
-  EXPECT_NEAR(gr[0].p, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+  ExpectSeedStructure(p, r);
 }
 
 // Issue 15, item 18: a tolerance looser than the tested range is flagged.
