@@ -88,8 +88,14 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
                          FlowResult& r) {
   Stepper& cv = Solver(variational);
   const int n = cv.size();
-  const SlipProblem problem{&model_, mode_, options_.rtol, options_.atol,
-                            cancel_ ? &cancel_ : nullptr};
+  // The roots that end the segment stop the stepper; extrema of x and x' it
+  // may pass, recording them.
+  Extrema extrema{r.x_min, r.x_max, r.xdot_min, r.xdot_max};
+  SlipProblem problem{&model_, mode_, options_.rtol, options_.atol, cancel_ ? &cancel_ : nullptr};
+  problem.stop_dir[0] = stop.switching ? kAnyRoot : 0;
+  problem.stop_dir[1] = stop.at_velocity_max && mode_ == Mode::kSlipBelow ? -1 : 0;
+  problem.stop_dir[2] = stop.at_section ? -1 : 0;
+  problem.extrema = &extrema;
   double init[6] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0};
   cv.Reset(problem, t0, init);
   // The stop time in chunks of 1e9 (a finite stop time for CVODE), extended
@@ -104,6 +110,10 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   long steps_before = cv.steps();
 
   auto finish = [&](SlipEnd::Kind kind, double t, const double* y) {
+    r.x_min = std::min(r.x_min, extrema.x_min);
+    r.x_max = std::max(r.x_max, extrema.x_max);
+    r.xdot_min = std::min(r.xdot_min, extrema.xdot_min);
+    r.xdot_max = std::max(r.xdot_max, extrema.xdot_max);
     SlipEnd e{kind, t, Vec2(y[0], y[1]), Mat2::Identity()};
     if (variational) e.phi << y[2], y[4], y[3], y[5];
     total_steps_ += cv.steps() - steps_before;

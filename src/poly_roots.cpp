@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stickslip/roots.hpp"
-
 namespace stickslip {
 namespace {
 
@@ -18,15 +16,43 @@ struct Piece {
   double b[kMaxDegree + 1];
 };
 
-// b_i = sum_{k <= i} C(i, k) / C(n, k) c_k (Farouki & Rajan 1988).
-void ToBernstein(const double* c, int n, double* b) {
-  for (int i = 0; i <= n; ++i) {
-    double sum = 0, ratio = 1;  // C(i, k) / C(n, k), from k = 0
-    for (int k = 0; k <= i; ++k) {
-      sum += ratio * c[k];
-      ratio *= static_cast<double>(i - k) / (n - k);
+// b_i = sum_{k <= i} C(i, k) / C(n, k) c_k (Farouki & Rajan 1988), with the
+// ratios tabulated once for every degree: rows of independent products.
+class BernsteinTable {
+ public:
+  BernsteinTable() {
+    int at = 0;
+    for (int n = 0; n <= kMaxDegree; ++n) {
+      start_[n] = at;
+      for (int i = 0; i <= n; ++i) {
+        double ratio = 1;  // C(i, k) / C(n, k), from k = 0
+        for (int k = 0; k <= i; ++k) {
+          ratio_[at++] = ratio;
+          if (k < i) ratio *= static_cast<double>(i - k) / (n - k);
+        }
+      }
     }
-    b[i] = sum;
+  }
+  const double* Row(int n, int i) const { return ratio_ + start_[n] + i * (i + 1) / 2; }
+
+ private:
+  static constexpr int kSize = (kMaxDegree + 1) * (kMaxDegree + 2) * (kMaxDegree + 3) / 6;
+  int start_[kMaxDegree + 1];
+  double ratio_[kSize];
+};
+
+void ToBernstein(const double* c, int n, double* b) {
+  static const BernsteinTable table;
+  for (int i = 0; i <= n; ++i) {
+    const double* r = table.Row(n, i);
+    double s0 = 0, s1 = 0;
+    int k = 0;
+    for (; k + 1 <= i; k += 2) {
+      s0 += r[k] * c[k];
+      s1 += r[k + 1] * c[k + 1];
+    }
+    if (k == i) s0 += r[k] * c[k];
+    b[i] = s0 + s1;
   }
 }
 
@@ -44,6 +70,14 @@ void Split(const double* b, int n, double* l, double* r) {
 int Sign(double x, int zero_sign) { return x > 0 ? 1 : (x < 0 ? -1 : zero_sign); }
 
 }  // namespace
+
+void RestrictToTail(const double* c, int n, double u, double* out) {
+  std::copy(c, c + n + 1, out);
+  for (int j = 0; j < n; ++j)
+    for (int k = n - 1; k >= j; --k) out[k] += u * out[k + 1];
+  double scale = 1;
+  for (int k = 1; k <= n; ++k) out[k] *= (scale *= 1 - u);
+}
 
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   PolyRoot out;
@@ -95,17 +129,31 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
         out.u = u0;
         return out;
       }
-      // Zeros mapped to their counted sign, so Brent sees one sign change.
-      const RootResult r = FindRoot(
-          [&](double u) {
-            const double x = g(u);
-            return x != 0 ? x : zero_sign * 1e-300;
-          },
-          u0, u1, 1e-17);
-      // Then bisection to the first point where the sign has changed.
-      double lo = u0, hi = u1;
-      if (r.ok && r.x > lo && r.x < hi) {
-        const double x = r.x, d = 8e-16 * std::max(1.0, std::abs(x)) + 1e-17;
+      // Newton on the polynomial, safeguarded by the bracket [lo, hi] (g has
+      // `sign` at lo and not at hi), then bisection to the first point where
+      // the sign has changed.
+      double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
+      const double g0 = g(u0), g1 = g(u1);
+      if (g0 != g1) {  // start from the secant (regula falsi) point
+        const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
+        if (xs > u0 && xs < u1) x = xs;
+      }
+      for (int it = 0; it < 100; ++it) {
+        double gx = c[n], dg = 0;
+        for (int k = n - 1; k >= 0; --k) {
+          dg = dg * x + gx;
+          gx = gx * x + c[k];
+        }
+        (Sign(gx, zero_sign) != sign ? hi : lo) = x;
+        double next = x - gx / dg;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        // Quadratic convergence: a step below 1e-9 leaves an error far below rounding.
+        const bool done = std::abs(next - x) <= 1e-9 * std::max(1.0, std::abs(x));
+        x = next;
+        if (done || !(hi - lo > 4e-16 * std::max(1.0, hi))) break;
+      }
+      if (x > lo && x < hi) {
+        const double d = 8e-16 * std::max(1.0, std::abs(x)) + 1e-17;
         if (changed(x)) {
           hi = x;
           if (x - d > lo && !changed(x - d)) lo = x - d;

@@ -18,6 +18,10 @@ struct PolyRoot {
 // g just after u = 0; zero_sign is the sign an exact 0 counts as.
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign);
 
+// The coefficients in w of c(u + (1 - u) w), w in [0, 1]: c on [u, 1]
+// (Taylor shift by repeated synthetic division, then scaling).
+void RestrictToTail(const double* c, int n, double u, double* out);
+
 // Horner's rule at u.
 inline double Horner(const double* c, int n, double u) {
   double s = c[n];

@@ -21,12 +21,26 @@ namespace stickslip {
 
 constexpr int kNumRoots = 3;
 
+// Which roots of g_i stop Advance (stop_dir): kAnyRoot, only those where g_i
+// rises (+1) or falls (-1), or none (0). A stepper may pass the others without
+// stopping (the CVODE stepper stops at every root); roots of g1 and g2 it
+// passes are extrema of x' and x, recorded in *extrema when it is set.
+constexpr int kAnyRoot = 2;
+struct Extrema {
+  double x_min, x_max, xdot_min, xdot_max;
+};
+
 // One slip mode of a model, with the noise bands of steady sliding.
 struct SlipProblem {
   const Model* model = nullptr;
   Mode mode = Mode::kSlipBelow;
   double rtol = 0, atol = 0;
   const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
+  int stop_dir[kNumRoots] = {kAnyRoot, kAnyRoot, kAnyRoot};
+  Extrema* extrema = nullptr;
+  bool Stops(int i, int direction) const {
+    return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
+  }
 
   double Acceleration(double x, double xdot) const { return model->Acceleration(mode, x, xdot); }
   // At rest on steady sliding to within the integration noise: x' ~ atol,

@@ -634,8 +634,10 @@ TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
 // Interruption and time limit: exit 1, a whole branch marked partial.
 
 // A run of several seconds: the seed's branch with 10^4 steps.
-const std::vector<std::string> kLongRun = {"--study", kStudies + "/seed.ini", "--max_step",
-                                           "0.0001", "--no_plots"};
+// Long enough to be interrupted: CVODE (Taylor takes 0.2 s for this).
+const std::vector<std::string> kLongRun = {"--study",   kStudies + "/seed.ini", "--max_step",
+                                           "0.0001",    "--integrator",         "cvode",
+                                           "--no_plots"};
 
 TEST_F(ContinueApp, SigintWritesWholePartialBranch) {
   std::vector<std::string> args = kLongRun;

@@ -41,27 +41,4 @@ class Friction {
   double c_;  // cubic: k5 (the law stays an odd polynomial mu_s - k1 s + k3 s^3 - k5 s^5)
 };
 
-// Taylor coefficients of mu(s(t)) and mu'(s(t)) from those of s(t), order by
-// order (automatic differentiation; Jorba & Zou 2005, section 2):
-//   cubic:    an odd polynomial mu_s + sum_j c_j s^j by Cauchy products;
-//   coulomb:  a constant;
-//   stribeck: E = exp(u), u = -s / v_s: k E_k = sum_{j=1..k} j u_j E_{k-j};
-//   leine:    Q = mu_s / D, D = 1 + delta s: Q_k = -sum_{j=1..k} D_j Q_{k-j} / D_0,
-//             and mu' = -(delta / mu_s) Q^2.
-class MuSeries {
- public:
-  static constexpr int kMaxOrder = 40;
-  explicit MuSeries(const Friction& f);
-  // With s[0..k] given and orders 0..k-1 done before: mu_k, and mu'_k in *dmu
-  // unless dmu is null (then later calls must pass null too).
-  double Next(int k, const double* s, double* dmu);
-
- private:
-  LawKind law_;
-  double mu_s_ = 0, a_ = 0, b_ = 0;
-  double c_[6] = {0, 0, 0, 0, 0, 0};  // cubic: odd coefficients c_1, c_3, c_5
-  int degree_ = 1;                    // cubic: highest odd degree with c_j != 0
-  double w_[5][kMaxOrder + 1];  // cubic: s^2..s^5 (rows 0..3); stribeck: u, E; leine: D, Q, Q^2
-};
-
 }  // namespace stickslip

@@ -1,0 +1,44 @@
+// Private to src/: coefficient k of products of Taylor series, the inner loop
+// of the Taylor recurrences (Jorba & Zou 2005, section 2).
+#pragma once
+
+namespace stickslip {
+
+// A Taylor series stored with kPad zeros before coefficient 0 and kPad
+// entries after the last, so that Cauchy() runs in whole blocks of four.
+constexpr int kPad = 4;
+template <int N>
+struct Series {
+  double buf[N + 1 + 2 * kPad] = {};
+  double* c() { return buf + kPad; }
+  const double* c() const { return buf + kPad; }
+  void Clear() {
+    for (double& b : buf) b = 0;
+  }
+};
+
+// Coefficient k of the Cauchy product of p and q: sum_{j <= k} p_j q_{k-j}.
+// q must be padded (q[-3..-1] = 0) and p[k+1..k+3] finite: the blocks of four
+// run past j = k with zero terms, in four partial sums (a single sum is one
+// chain of dependent multiply-adds).
+inline double Cauchy(const double* p, const double* q, int k) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  for (int j = 0; j <= k; j += 4) {
+    s0 += p[j] * q[k - j];
+    s1 += p[j + 1] * q[k - j - 1];
+    s2 += p[j + 2] * q[k - j - 2];
+    s3 += p[j + 3] * q[k - j - 3];
+  }
+  return (s0 + s1) + (s2 + s3);
+}
+
+// 1 / (k + 1) for k < kMax.
+template <int kMax>
+struct Reciprocals {
+  double r[kMax];
+  constexpr Reciprocals() : r() {
+    for (int k = 0; k < kMax; ++k) r[k] = 1.0 / (k + 1);
+  }
+};
+
+}  // namespace stickslip
