@@ -86,8 +86,16 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   if (scale == 0) return out;
   // Rounding of the conversion and the halvings: a few ulp of sum |c_k| per degree.
   const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
-  // The cheapest bound first: |g(u) - c_0| <= sum_{k>=1} |c_k| on [0, 1].
-  if (sign * c[0] - (scale - std::abs(c[0])) > margin) return out;
+  // Cheap bounds first: g = q + r with q the quadratic part and |r| <= sum_{k>=3}
+  // |c_k| on [0, 1]; sign q keeps its sign beyond that (its extremum on [0, 1]
+  // is at an end or at the vertex).
+  {
+    const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0;
+    const double tail = scale - std::abs(q0) - std::abs(q1) - std::abs(q2);
+    double q_min = std::min(q0, q0 + q1 + q2);
+    if (q2 > 0 && -q1 > 0 && -q1 < 2 * q2) q_min = std::min(q_min, q0 - q1 * q1 / (4 * q2));
+    if (q_min - tail > margin) return out;
+  }
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
 
