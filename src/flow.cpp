@@ -88,8 +88,12 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
                          FlowResult& r) {
   Stepper& cv = Solver(variational);
   const int n = cv.size();
-  const SlipProblem problem{&model_, mode_, options_.rtol, options_.atol,
-                            cancel_ ? &cancel_ : nullptr};
+  const SlipProblem problem{&model_,
+                            mode_,
+                            options_.rtol,
+                            options_.atol,
+                            cancel_ ? &cancel_ : nullptr,
+                            mode_ == Mode::kSlipBelow ? model_.SteadySliding().x : 0.0};
   double init[6] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0};
   cv.Reset(problem, t0, init);
   // The stop time in chunks of 1e9 (a finite stop time for CVODE), extended

@@ -275,6 +275,30 @@ TEST(Orbit, PureSlipAmplitudeIsAtTheIntegrationNoiseFromAnyGuess) {
   }
 }
 
+// The desingularised return map G(a) = (P(mu(v) + a) - mu(v) - a) / a of a
+// small orbit (a = 1e-4) next to each smooth law's Hopf point, at the default
+// options and without the variational equations (as for the dG/dp difference
+// and the section scans): the Taylor step measures x from steady sliding, so
+// the error of P is relative to a, not to mu(v) (it was 1.4e-10 .. 2.5e-10 in G).
+TEST(Orbit, ReturnMapOfASmallOrbitIsAccurateRelativeToItsAmplitude) {
+  Params seed = Seed(0.43896);  // v_max = 0.44096 (seed 3.16)
+  Params stribeck = seed, leine = seed;
+  stribeck.law = LawKind::kStribeck, stribeck.v = 0.5513;         // HB at 0.549306
+  leine.law = LawKind::kLeine, leine.mu_s = 1, leine.v = 1.4944;  // HB at 1.492409
+  const double a = 1e-4;
+  for (const Params& p : {seed, stribeck, leine}) {
+    SCOPED_TRACE(LawName(p.law));
+    OrbitFinder finder{Model(p), OrbitOptions{}};
+    double g = 0;
+    ASSERT_EQ(finder.Desingularised(a, &g, nullptr), OrbitStatus::kOk);
+    const reference::Model m(p);
+    const reference::Real xbar = m.law.Mu(m.v);
+    const reference::SectionReturn r = reference::ReturnToSection(m, xbar + a, 1e-18L, 100);
+    ASSERT_TRUE(r.ok);
+    EXPECT_NEAR(g, static_cast<double>((r.x - xbar - a) / a), 5e-11);
+  }
+}
+
 // The seed's Hopf point is supercritical (mu''' = 6 k3 > 0; v_max of seed
 // (3.16)): stable pure-slip orbits are born where steady sliding is unstable
 // (v < v_max), which the reference confirms; the label must say so.
