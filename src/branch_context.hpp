@@ -30,6 +30,9 @@ constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05, kHopfSlack = 2, kHopfFr
 // NewtonConverged in palc.hpp); the step grows (kGrow) after a correction in
 // at most kFastCorrector steps.
 constexpr int kMaxCorrector = 8, kFastCorrector = 3;
+// A row is read at its p: one more Newton step in a at fixed p when the
+// amplitude's correction -G / G_a exceeds kPolish * rtol * max(1, a).
+constexpr double kPolish = 0.1;
 // A pure-slip step that sticks looks for a grazing point when the last orbit
 // came within kNearTouch * max(kNearTouchMin, v) of the belt speed, or the
 // step is within kSmallStep * min_step; the search grows by kSearchGrow over

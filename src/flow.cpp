@@ -92,6 +92,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   // may pass, recording them.
   Extrema extrema{r.x_min, r.x_max, r.xdot_min, r.xdot_max};
   SlipProblem problem{&model_, mode_, options_.rtol, options_.atol, cancel_ ? &cancel_ : nullptr};
+  problem.x_center = mode_ == Mode::kSlipBelow ? model_.SteadySliding().x : 0.0;
   problem.stop_dir[0] = stop.switching ? kAnyRoot : 0;
   problem.stop_dir[1] = stop.at_velocity_max && mode_ == Mode::kSlipBelow ? -1 : 0;
   problem.stop_dir[2] = stop.at_section ? -1 : 0;

@@ -184,6 +184,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     throw InvalidArgument("PureSlip: a_guess = " + std::to_string(a_guess) + " must be > 0");
   OrbitResult out;
   double a = a_guess, a_prev = a_guess, last_da = HUGE_VAL;
+  bool polished = false;
   // A pure-slip orbit below the belt stays within |x'| < v + a bit, so its
   // section amplitude is a few times (v + mu_s) at most.
   const double a_max = std::max(10 * a_guess, 10 * (model().v() + model().params().mu_s + 1));
@@ -219,6 +220,14 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     // Converged, or stalled at the integration noise floor.
     const double tol = options_.EffectiveNewtonTol() * std::max(1.0, a);
     const bool converged = std::abs(da) <= tol;
+    // The orbit reported is the one at a, off by da: one more step while da is
+    // above the integration noise (0.1 rtol).
+    if (converged && !polished && it < options_.max_newton &&
+        std::abs(da) > 0.1 * options_.flow.rtol * std::max(1.0, a)) {
+      polished = true;
+      a += da;
+      continue;
+    }
     if (converged ||
         (it > 2 && std::abs(da) < 1e3 * tol && std::abs(da) > 0.5 * std::abs(last_da))) {
       Orbit& o = out.orbit;

@@ -36,6 +36,11 @@ struct SlipProblem {
   Mode mode = Mode::kSlipBelow;
   double rtol = 0, atol = 0;
   const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
+  // Steady sliding (mu(v), 0) for slip below (else 0): the Taylor step size
+  // measures x by XScale, so the error of a small orbit about it is relative
+  // to its amplitude, not to |mu(v)|, and never looser than relative to |x|.
+  double x_center = 0;
+  double XScale(double x) const { return std::min(std::abs(x), std::abs(x - x_center)); }
   int stop_dir[kNumRoots] = {kAnyRoot, kAnyRoot, kAnyRoot};
   Extrema* extrema = nullptr;
   bool Stops(int i, int direction) const {

@@ -197,14 +197,16 @@ void TaylorStepper::Coefficients(int order) {
 }
 
 // JZ section 3.2: rho = min over j = p-1, p of (eps / |z_j|)^(1/j), relative to
-// |z_0| when rtol |z_0| > atol; h = rho / e^2 exp(-0.7 / (p - 1)).
+// |z_0| when rtol |z_0| > atol; h = rho / e^2 exp(-0.7 / (p - 1)). |z_0|
+// takes x by SlipProblem::XScale.
 double TaylorStepper::StepSize(int order) const {
   auto norm = [&](int k) {
     double m = 0;
     for (int i = 0; i < n_; ++i) m = std::max(m, std::abs(c_[i][k]));
     return m;
   };
-  const double z0 = norm(0);
+  double z0 = p_.XScale(c_[0][0]);
+  for (int i = 1; i < n_; ++i) z0 = std::max(z0, std::abs(c_[i][0]));
   const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
   const double r1 = (log_scale - std::log(norm(order - 1))) / (order - 1);
@@ -220,7 +222,7 @@ bool TaylorStepper::NewStep() {
     tb_ = tstop_;
     return true;
   }
-  double z0 = std::max(std::abs(yend_[0]), std::abs(yend_[1]));
+  double z0 = std::max(p_.XScale(yend_[0]), std::abs(yend_[1]));
   if (n_ == 6)
     for (int i = 2; i < 6; ++i) z0 = std::max(z0, std::abs(yend_[i]));
   order_ = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;

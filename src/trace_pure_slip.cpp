@@ -114,6 +114,7 @@ class PureSlipTracer {
   BranchEnd AtHopf();
   BranchEnd Rejected(const PalcCorrection& c, double p_pred, bool* retry);
   void Accept(const PalcCorrection& c);
+  double Polish(const PalcCorrection& c);
 
   BranchContext& ctx_;
   const ContinuationOptions& o_;
@@ -206,10 +207,26 @@ BranchEnd PureSlipTracer::Rejected(const PalcCorrection& c, double p_pred, bool*
   return kStopped;
 }
 
+// The amplitude of a converged point at its own p. The corrector's step norm
+// in (a, p) leaves |G| ~ tol |G_p|, i.e. an amplitude error G / G_a at fixed p
+// that grows like 1 / a towards a Hopf point (G_a ~ a there). One Newton step
+// in a at fixed p takes it to the integration noise; curve_.map follows.
+double PureSlipTracer::Polish(const PalcCorrection& c) {
+  const double a = c.u[0], da = -c.f[0] / c.jac(0, 0);
+  if (!std::isfinite(da) || std::abs(da) <= tuning::kPolish * o_.orbit.flow.rtol * std::max(1.0, a))
+    return a;
+  double g = 0, ga = 0;  // ga: the map's multiplier P' comes with it
+  ReturnMap map;
+  if (ctx_.EvalG(a + da, c.u[1], &g, &ga, &map) != OrbitStatus::kOk) return a;
+  curve_.map = std::move(map);
+  return a + da;
+}
+
 // A converged point: new tangent along the old one, fold between the two
 // points if the tangent's p component changed sign.
 void PureSlipTracer::Accept(const PalcCorrection& c) {
   const Eigen::VectorXd t = palc_.Tangent(c.jac, t_);
+  const double a = Polish(c);
   Orbit o = PureSlipFromMap(curve_.map);
   o.newton_stalled = c.stalled;
   if (hopf_pending_) {
@@ -226,8 +243,8 @@ void PureSlipTracer::Accept(const PalcCorrection& c) {
         ctx_.EvalG(a_lp, p_lp, &gv, nullptr, &map) == OrbitStatus::kOk)
       ctx_.AddSpecial(FoldPoint(p_lp, map.flow, "fold of the pure-slip branch (smooth LP)"));
   }
-  ctx_.Add(ctx_.FromOrbit(c.u[1], o, c.u[0]));
-  a_ = c.u[0];
+  ctx_.Add(ctx_.FromOrbit(c.u[1], o, a));
+  a_ = a;
   p_ = c.u[1];
   t_ = t;
   last_stable_ = o.stable;

@@ -496,5 +496,76 @@ TEST(Continuation, GrazingLabelsDoNotDependOnTheDirection) {
   EXPECT_NEAR(rf.period, rb.period, 1e-8);
 }
 
+// Stick-slip rows at the default options, against the reference's orbit at
+// each row's p: period and x range within 1e-12 relative (to the period, to
+// max |x| on the orbit). Leine et al.'s scene at small v is the worst found
+// over the shipped studies (ss_accuracy, README).
+TEST(Continuation, StickSlipRowsAtTheDefaultsMatchTheReferenceTo1e12) {
+  Params seed, stribeck, leine;
+  stribeck.law = LawKind::kStribeck;
+  leine.law = LawKind::kLeine, leine.beta = 0, leine.mu_s = 1;
+  const struct {
+    Params p;
+    double from, to;
+  } cases[] = {{seed, 0.2, 0.3}, {stribeck, 0.3, 0.4}, {leine, 0.07, 0.1}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(LawName(c.p.law));
+    const ContinuationResult r = Trace(c.p, "v", c.from, c.to);
+    ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+    int rows = 0;
+    for (const auto& pt : r.points) {
+      if (pt.kind != PointKind::kStickSlip) continue;
+      ++rows;
+      Params q = c.p;
+      q.v = pt.p;
+      const reference::StickSlipOrbit ref = reference::StickSlip(q);
+      ASSERT_TRUE(ref.found) << "v = " << pt.p;
+      const double T = static_cast<double>(ref.period);
+      const double scale = static_cast<double>(std::max(std::abs(ref.x_min), std::abs(ref.x_max)));
+      EXPECT_NEAR(pt.period, T, 1e-12 * T) << "v = " << pt.p;
+      EXPECT_NEAR(pt.x_min, static_cast<double>(ref.x_min), 1e-12 * scale) << "v = " << pt.p;
+      EXPECT_NEAR(pt.x_max, static_cast<double>(ref.x_max), 1e-12 * scale) << "v = " << pt.p;
+    }
+    EXPECT_GT(rows, 40);
+  }
+}
+
+// Pure-slip rows next to a Hopf point at the default options, against the
+// reference's fixed point: the amplitude at the row's p is ill-conditioned
+// there (da/dp ~ 1 / a), so a corrector that stops on its step norm in (a, p)
+// left it 3e-11 .. 1e-9 off; each row is polished at fixed p.
+TEST(Continuation, PureSlipRowsNextToAHopfPointMatchTheReference) {
+  struct Case {
+    LawKind law;
+    double beta, mu_s;
+    const char* param;
+    double from, to;
+  };
+  for (const Case& c : {Case{LawKind::kCubic, 0.05, 0.4, "beta", 0.17, 0.16},
+                        Case{LawKind::kStribeck, 0.05, 0.4, "v", 0.549, 0.555},
+                        Case{LawKind::kLeine, 0.05, 1.0, "v", 1.5, 1.49}}) {
+    SCOPED_TRACE(LawName(c.law));
+    Params p;
+    p.law = c.law, p.beta = c.beta, p.mu_s = c.mu_s;
+    const ContinuationResult r = Trace(p, c.param, c.from, c.to);
+    ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
+    int rows = 0;
+    for (const auto& pt : r.points) {
+      if (pt.kind != PointKind::kPureSlip || pt.amplitude == 0) continue;
+      ++rows;
+      Params q = p;
+      SetParameter(q, c.param, pt.p);
+      const reference::Real xbar = reference::Law(q).Mu(q.v);
+      const reference::PureSlipOrbit ref = reference::PureSlip(q, xbar + pt.amplitude);
+      ASSERT_TRUE(ref.found) << c.param << " = " << pt.p;
+      EXPECT_NEAR(pt.amplitude, static_cast<double>(ref.x_section - xbar), 1e-11)
+          << c.param << " = " << pt.p << ", a = " << pt.amplitude;
+      EXPECT_NEAR(pt.period, static_cast<double>(ref.period), 1e-12 * pt.period)
+          << c.param << " = " << pt.p;
+    }
+    EXPECT_GT(rows, 3);
+  }
+}
+
 }  // namespace
 }  // namespace stickslip

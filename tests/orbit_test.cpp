@@ -242,6 +242,63 @@ TEST(Orbit, PureSlipAtDefaultOptionsMatchesTheReferenceFixedPoint) {
   }
 }
 
+// At the default options, the amplitude a = x* - mu(v) against the
+// reference's fixed point, from several guesses: small orbits just past the
+// Hopf point of each law with a smooth slip field (G_a ~ a there), and a large
+// one (leine, a = 2.5). The orbit reported is the Newton iterate before its
+// last step, so that step must be at the integration noise (0.1 rtol), not at
+// the Newton tolerance (1e-10 max(1, a)).
+TEST(Orbit, PureSlipAmplitudeIsAtTheIntegrationNoiseFromAnyGuess) {
+  Params seed = Seed(0.4405);  // v_max = 0.44096 (seed 3.16)
+  Params stribeck = seed, leine = seed, large = seed;
+  stribeck.law = LawKind::kStribeck, stribeck.v = 0.5496;         // HB at 0.549306
+  leine.law = LawKind::kLeine, leine.mu_s = 1, leine.v = 1.4927;  // HB at 1.492409
+  large.law = LawKind::kLeine, large.mu_s = 1, large.v = 2.5;
+  const struct {
+    Params p;
+    double a;
+  } cases[] = {{seed, 0.05}, {stribeck, 0.05}, {leine, 0.05}, {large, 2.5}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(std::string(LawName(c.p.law)) + " v " + std::to_string(c.p.v));
+    const reference::Real xbar = reference::Law(c.p).Mu(c.p.v);
+    const reference::PureSlipOrbit ref = reference::PureSlip(c.p, xbar + c.a);
+    ASSERT_TRUE(ref.found);
+    const double a_ref = static_cast<double>(ref.x_section - xbar);
+    for (double guess : {0.6 * a_ref, 0.9 * a_ref, 1.2 * a_ref}) {
+      OrbitFinder finder{Model(c.p), OrbitOptions{}};
+      const OrbitResult r = finder.PureSlip(guess);
+      ASSERT_TRUE(r.ok()) << r.message;
+      const double a = r.orbit.start[0] - Model(c.p).SteadySliding().x;
+      EXPECT_NEAR(a, a_ref, 1e-12 * std::max(1.0, a_ref)) << "guess " << guess;
+      EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-12 * r.orbit.period);
+    }
+  }
+}
+
+// The desingularised return map G(a) = (P(mu(v) + a) - mu(v) - a) / a of a
+// small orbit (a = 1e-4) next to each smooth law's Hopf point, at the default
+// options and without the variational equations (as for the dG/dp difference
+// and the section scans): the Taylor step measures x from steady sliding, so
+// the error of P is relative to a, not to mu(v) (it was 1.4e-10 .. 2.5e-10 in G).
+TEST(Orbit, ReturnMapOfASmallOrbitIsAccurateRelativeToItsAmplitude) {
+  Params seed = Seed(0.43896);  // v_max = 0.44096 (seed 3.16)
+  Params stribeck = seed, leine = seed;
+  stribeck.law = LawKind::kStribeck, stribeck.v = 0.5513;         // HB at 0.549306
+  leine.law = LawKind::kLeine, leine.mu_s = 1, leine.v = 1.4944;  // HB at 1.492409
+  const double a = 1e-4;
+  for (const Params& p : {seed, stribeck, leine}) {
+    SCOPED_TRACE(LawName(p.law));
+    OrbitFinder finder{Model(p), OrbitOptions{}};
+    double g = 0;
+    ASSERT_EQ(finder.Desingularised(a, &g, nullptr), OrbitStatus::kOk);
+    const reference::Model m(p);
+    const reference::Real xbar = m.law.Mu(m.v);
+    const reference::SectionReturn r = reference::ReturnToSection(m, xbar + a, 1e-18L, 100);
+    ASSERT_TRUE(r.ok);
+    EXPECT_NEAR(g, static_cast<double>((r.x - xbar - a) / a), 5e-11);
+  }
+}
+
 // The seed's Hopf point is supercritical (mu''' = 6 k3 > 0; v_max of seed
 // (3.16)): stable pure-slip orbits are born where steady sliding is unstable
 // (v < v_max), which the reference confirms; the label must say so.

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "reference/reference_orbit.hpp"
+#include "stickslip/continuation.hpp"
 
 namespace stickslip {
 namespace {
@@ -80,6 +81,35 @@ TEST(SpecialPoints, GrazingLocatorMatchesTheReferenceIntegrator) {
   const RootResult r = LocateGrazing(finder, p, axis, 0.39, 0.40, g0, g1, 1e-13);
   ASSERT_TRUE(r.ok);
   EXPECT_NEAR(r.x, static_cast<double>(reference::GrazingSpeed(p, 0.39L, 0.40L)), 1e-9);
+}
+
+// GR (and the non-smooth fold LP at it) at the default options and locate_tol,
+// against the reference's grazing speed, within 1e-11 in v: the seed, the
+// stribeck scene, its shallow grazing gap at beta = 0.02 (the gap's slope in v
+// is small there), and the leine law with damping.
+TEST(SpecialPoints, GrazingAtTheDefaultsIsWithin1e11OfTheReference) {
+  Params seed, stribeck, shallow, leine;
+  stribeck.law = shallow.law = LawKind::kStribeck;
+  shallow.beta = 0.02;
+  leine.law = LawKind::kLeine;
+  const struct {
+    Params p;
+    double lo, hi;
+  } cases[] = {
+      {seed, 0.39, 0.40}, {stribeck, 0.65, 0.655}, {shallow, 1.48, 1.485}, {leine, 1.33, 1.335}};
+  const ParameterAxis axis("v");
+  for (const auto& c : cases) {
+    SCOPED_TRACE(LawName(c.p.law) + std::string(" beta ") + std::to_string(c.p.beta));
+    OrbitFinder finder(Model(c.p), OrbitOptions{});
+    double g0 = 0, g1 = 0;
+    ASSERT_TRUE(GrazingGap(finder, axis.At(c.p, c.lo), &g0));
+    ASSERT_TRUE(GrazingGap(finder, axis.At(c.p, c.hi), &g1));
+    const RootResult r =
+        LocateGrazing(finder, c.p, axis, c.lo, c.hi, g0, g1, ContinuationOptions{}.locate_tol);
+    ASSERT_TRUE(r.ok);
+    const double ref = static_cast<double>(reference::GrazingSpeed(c.p, c.lo, c.hi, 1e-14L));
+    EXPECT_NEAR(r.x, ref, 1e-11);
+  }
 }
 
 TEST(SpecialPoints, FoldLocatorFindsTheTopOfAParabola) {
