@@ -3,134 +3,16 @@
 // 14, section 3.2, with heyoka's safety factor, Biscani & Izzo 2021, eq. 10),
 // events as the first sign changes of the step polynomials (poly_roots.hpp);
 // the step polynomial is the dense output.
+#include "taylor_stepper.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
 
-#include "mu_series.hpp"
 #include "poly_roots.hpp"
-#include "series.hpp"
-#include "stepper.hpp"
 
 namespace stickslip {
-namespace {
-
-constexpr int kMaxOrder = 36;
-constexpr Reciprocals<kMaxOrder> kInverse;
-
-// JZ (3.8): order p = ceil(-ln(eps) / 2 + 1).
-int OrderFor(double eps) {
-  return std::min(kMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
-}
-
-class TaylorStepper final : public Stepper {
- public:
-  TaylorStepper(const FlowOptions& o, bool variational)
-      : rtol_(o.rtol),
-        atol_(o.atol),
-        max_steps_(o.max_steps),
-        n_(variational ? 6 : 2),
-        order_rel_(OrderFor(o.rtol)),
-        order_abs_(OrderFor(o.atol)) {}
-
-  void Reset(const SlipProblem& problem, double t0, const double* y0) override {
-    p_ = problem;
-    sigma_ = p_.mode == Mode::kSlipBelow ? 1 : -1;
-    mu_.emplace(p_.model->friction());
-    s_.Clear();
-    cc_.Clear();
-    for (auto& row : c_) std::fill(row, row + kMaxOrder + 1 + kPad, 0.0);
-    std::copy(y0, y0 + n_, yend_);
-    std::copy(y0, y0 + n_, y_);
-    ta_ = tb_ = t_ = t0;
-    tstop_ = INFINITY;
-    steps_ = 0;
-    pending_ = passed_root_ = false;
-    for (auto& s : state_) s = kFresh;
-  }
-  void SetStopTime(double t) override { tstop_ = t; }
-  StepOutcome Advance(double tout, double* t) override;
-  const double* y() const override { return y_; }
-  void RootInfo(int* rf) const override { std::copy(rf_, rf_ + kNumRoots, rf); }
-  bool Interpolate(double t, double* out) override {
-    const double slack = 4e-16 * std::max(1.0, std::abs(t));
-    if (!(t >= ta_ - slack && t <= tb_ + slack)) return false;
-    Evaluate(t - ta_, out);
-    return true;
-  }
-  double LastStepStart() override { return ta_; }
-  double CurrentTime() override { return tb_; }
-  long steps() const override { return steps_; }
-  int size() const override { return n_; }
-  const std::string& last_error() const override { return error_; }
-
- private:
-  enum SignState { kFresh, kTracked, kDeflate, kInactive };
-  // The roots of one step: the first that stops (rf, first), and the
-  // extrema passed on the way.
-  struct Roots {
-    double first = 2;
-    int rf[kNumRoots] = {0, 0, 0};
-    struct Passed {
-      double u;
-      int i;
-    } passed[2 * kMaxOrder + 8];
-    int n_passed = 0;
-    // Returns whether the root stops.
-    bool Add(int i, double u, int direction, bool stops) {
-      if (!stops) {
-        if (n_passed < static_cast<int>(sizeof passed / sizeof passed[0]))
-          passed[n_passed++] = {u, i};
-        return false;
-      }
-      if (u > first) return true;
-      if (u < first) std::fill(rf, rf + kNumRoots, 0);
-      first = u;
-      rf[i] = direction;
-      return true;
-    }
-  };
-  void EventRoots(int i, const double* gi, int deg, Roots& roots);
-
-  bool NewStep();
-  void Coefficients(int order);
-  template <LawKind L, bool Var>
-  void Recurrences(int order);
-  double StepSize(int order) const;
-  void Events(double h);
-  void Evaluate(double tau, double* out) const {
-    for (int i = 0; i < n_; ++i) out[i] = Horner(c_[i], order_, tau);
-  }
-  bool Failed(const std::string& what) {
-    std::ostringstream os;
-    os << "taylor: " << what << " at t = " << ta_;
-    error_ = os.str();
-    return false;
-  }
-
-  double rtol_, atol_;
-  long max_steps_;
-  int n_, order_rel_, order_abs_;
-  int order_ = 0;
-  SlipProblem p_;
-  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
-  // This step's Taylor coefficients, kPad finite entries past the order for
-  // Cauchy(); the series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
-  double c_[6][kMaxOrder + 1 + kPad];
-  Series<kMaxOrder> s_, cc_;
-  std::optional<MuSeries> mu_;
-  double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
-  double tstop_ = INFINITY;
-  double yend_[6], y_[6];  // state at tb, at t
-  SignState state_[kNumRoots];
-  int sign_[kNumRoots] = {1, 1, 1};
-  bool pending_ = false;      // a root at tb not yet returned
-  bool passed_root_ = false;  // the last step passed a root
-  int rf_[kNumRoots] = {0, 0, 0};
-  long steps_ = 0;
-  std::string error_;
-};
 
 // Seed eq. (3.5) on one slip branch, x'' = -x - 2 beta x' + sigma mu(s), and
 // Phi' = J Phi with J = [0 1; -1 c], c = -2 beta - mu'(s): coefficient k + 1
@@ -152,7 +34,7 @@ void TaylorStepper::Recurrences(int order) {
   double damp = 0;  // 2 beta + mu'(s_0)
   for (int k = 0; k < order; ++k) {
     mu.Old<L, Var>(k, s);
-    const double inv = kInverse.r[k];
+    const double inv = kTaylorInverse.r[k];
     if (k > 0) {
       // mu_k = alpha + mu'(s_0) s_k with s_k = -sigma x'_k: x'_{k+1} without
       // waiting for the products of s_k (the chain from x'_k is short).
@@ -301,107 +183,6 @@ StepOutcome TaylorStepper::Advance(double tout, double* t) {
     }
   }
 }
-
-// The roots of g0 = x' - v, g1 = x'', g2 = x' on this step, in u = tau / h.
-// The first root that stops (SlipProblem::stop_dir) ends the step there; the
-// extrema before it that do not stop are recorded and passed.
-void TaylorStepper::Events(double h) {
-  const int n = order_;
-  double g[kNumRoots][kMaxOrder + 1];
-  double hk = 1;
-  for (int k = 0; k <= n; ++k, hk *= h) {
-    g[0][k] = g[2][k] = c_[1][k] * hk;
-    g[1][k] = k < n ? (k + 1) * c_[1][k + 1] * hk : 0.0;
-  }
-  g[0][0] -= p_.model->v();
-  const bool at_rest = p_.AtRest(c_[0][0], c_[1][0], c_[1][1]);
-  Roots roots;
-  for (int i = 0; i < kNumRoots; ++i) {
-    if (i > 0 && at_rest) {  // noise on steady sliding: no events
-      state_[i] = kInactive;
-      continue;
-    }
-    if (p_.stop_dir[i] == 0 && (i == 0 || !p_.extrema)) continue;  // not asked for
-    EventRoots(i, g[i], i == 1 ? n - 1 : n, roots);
-  }
-  // The passed extrema before the end of the step; each flips its sign.
-  passed_root_ = false;
-  for (int j = 0; j < roots.n_passed; ++j) {
-    const auto& r = roots.passed[j];
-    if (r.u >= roots.first) continue;
-    passed_root_ = true;
-    sign_[r.i] = -sign_[r.i];
-    Extrema& e = *p_.extrema;
-    if (r.i == 1) {
-      const double xdot = Horner(c_[1], order_, r.u * h);
-      e.xdot_min = std::min(e.xdot_min, xdot);
-      e.xdot_max = std::max(e.xdot_max, xdot);
-    } else {
-      const double x = Horner(c_[0], order_, r.u * h);
-      e.x_min = std::min(e.x_min, x);
-      e.x_max = std::max(e.x_max, x);
-    }
-  }
-  std::copy(roots.rf, roots.rf + kNumRoots, rf_);
-  if (roots.first > 1) return;
-  pending_ = true;
-  for (int i = 0; i < kNumRoots; ++i)
-    if (rf_[i] != 0) {
-      state_[i] = kDeflate;
-      sign_[i] = rf_[i];
-    }
-  tb_ = roots.first == 1 ? tb_ : ta_ + roots.first * h;
-}
-
-// The roots of g_i (degree deg) on (0, 1] in order, up to the first that
-// stops or beyond roots.first: passed ones go to roots.passed.
-void TaylorStepper::EventRoots(int i, const double* gi, int deg, Roots& roots) {
-  // g0: an exact 0 counts as the mode's side; g1, g2: as positive (as the CVODE stepper).
-  const int zero_sign = i == 0 && p_.mode == Mode::kSlipBelow ? -1 : 1;
-  if (state_[i] == kInactive) state_[i] = kFresh;
-  if (state_[i] == kFresh && gi[0] == 0) state_[i] = kDeflate;
-  int sign, start_sign;  // g's sign after u = 0; sign_[i] before the passed roots
-  if (state_[i] == kDeflate) {
-    // A root at the step start (a start on the surface, or the root just
-    // returned) is not an event: g / u from there on.
-    while (deg > 0 && gi[1] == 0) ++gi, --deg;
-    if (deg == 0) return;  // g vanishes identically
-    ++gi, --deg;
-    sign = start_sign = gi[0] > 0 ? 1 : -1;
-  } else {
-    sign = start_sign = gi[0] > 0 ? 1 : (gi[0] < 0 ? -1 : zero_sign);
-    if (state_[i] == kTracked && sign != sign_[i]) {
-      // Changed sign across the step boundary (the two step polynomials
-      // disagree within truncation): a root at the step start.
-      if (roots.Add(i, 0.0, sign, p_.Stops(i, sign))) return;
-      start_sign = -sign;  // passed: its flip comes with the others
-    }
-  }
-  sign_[i] = start_sign;
-  state_[i] = kTracked;
-  const double* poly = gi;
-  int d = deg;
-  double tail[kMaxOrder + 1];
-  double u0 = 0;
-  for (int guard = 0; guard <= 2 * deg + 2; ++guard) {
-    const PolyRoot r = FirstSignChange(poly, d, sign, zero_sign);
-    if (!r.found) return;
-    const double u = r.u == 1 ? 1.0 : u0 + (1 - u0) * r.u;
-    if (u > roots.first || roots.Add(i, u, -sign, p_.Stops(i, -sign)) || u >= 1) return;
-    // Passed: go on from u with g / (w - u) (the root is not an event twice).
-    sign = -sign;
-    RestrictToTail(gi, deg, u, tail);
-    poly = tail;
-    d = deg;
-    while (d > 0 && poly[1] == 0) ++poly, --d;
-    if (d == 0) return;
-    ++poly, --d;
-    if ((poly[0] > 0 ? 1 : -1) != sign) return;  // a touch, not a crossing: rounding
-    u0 = u;
-  }
-}
-
-}  // namespace
 
 std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational) {
   return std::make_unique<TaylorStepper>(options, variational);

@@ -170,6 +170,38 @@ FlowResult RunTouch(const Touch& t, const FlowOptions& o) {
   return flow.Run(0.0, t.Start(), Mode::kSlipBelow, stop, false);
 }
 
+// Coulomb law, beta = 0, belt faster than the orbit: x - mu_k = -R cos(t + s0),
+// x' = R sin(t + s0) never reaches v. From s0 = pi + 0.1 the stepper passes a
+// minimum of x (x' rising through 0) and both extrema of x' inside its steps,
+// records them, and stops at the next maximum of x (x' falling through 0) at
+// t = 2 pi - 0.1.
+TEST(Taylor, PassesExtremaAndStopsAtTheSectionOnTheClosedForm) {
+  Params p;
+  p.law = LawKind::kCoulomb;
+  p.beta = 0;
+  p.mu_s = 0.4;
+  p.mu_k = 0.25;
+  p.v = 1;
+  const double R = 0.5, s0 = M_PI + 0.1;
+  for (double rtol : {1e-6, 1e-12}) {
+    const Model m(p);
+    Flow flow(m, Taylor(rtol));
+    StopRule stop;
+    stop.at_section = true;
+    stop.t_max = 20;
+    const Vec2 start(p.mu_k - R * std::cos(s0), R * std::sin(s0));
+    const FlowResult r = flow.Run(0.0, start, Mode::kSlipBelow, stop, false);
+    ASSERT_EQ(r.status, FlowStatus::kSection) << r.message;
+    const double tol = 100 * rtol;
+    EXPECT_NEAR(r.t, 2 * M_PI - 0.1, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.x_min, p.mu_k - R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.x_max, p.mu_k + R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.xdot_min, -R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.xdot_max, R, tol) << "rtol " << rtol;
+    EXPECT_LT(flow.total_steps(), 40) << "rtol " << rtol;
+  }
+}
+
 // The arrival time of a touch 1e-6 high is conditioned like 1 / x'' ~ 1e3
 // times the error in x'; the Taylor steps here are about 1 long.
 TEST(Taylor, FindsATouchShorterThanAStep) {
