@@ -2,9 +2,11 @@
 // DIR/special_points.tsv) against the independent long-double reference integrator
 // (reference/reference_orbit.hpp, RKF78 at 1e-17) and the Hopf condition 2 beta + mu'(v) = 0
 // solved in long double. Prints the worst error of each quantity and where.
-// Usage: ss_accuracy DIR...
+// Usage: ss_accuracy [--rows] DIR...
+//        ss_accuracy --seed_references V...   (the AUTO-07p peer's references, see below)
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <fstream>
 #include <iostream>
@@ -181,13 +183,72 @@ void Measure(const std::string& dir, std::map<std::string, Worst>* worst) {
   }
 }
 
+// --seed_references: for the seed set (seed section 4), the grazing speed GR and, at each
+// given v, the period of the pure-slip orbit, from the reference integrator at tol 1e-17, each
+// with its spread against tol 1e-15 (an estimate of the reference's own error). Lines
+// "GR<TAB>v<TAB>spread" and "T<TAB>v<TAB>period<TAB>spread (rel)"; bench/peers/auto_peer.py
+// reads them. Exit 2 on a v that is no number or outside (GR, HB), 1 if an orbit is not found.
+int SeedReferences(int n, char** args) {
+  const Params seed;
+  const Real tols[2] = {1e-17L, 1e-15L};
+  double gr[2];
+  for (int k = 0; k < 2; ++k) {
+    auto gap = [&](double v) {  // > 0 below GR: the first slip overshoots the belt speed
+      Params q = seed;
+      q.v = v;
+      const ref::Model m(q);
+      return ref::FirstReturnMaxXdot(m, tols[k]) - m.v;
+    };
+    if ((gap(0.3) > 0) == (gap(0.44) > 0)) {
+      std::cerr << "ss_accuracy: reference GR not bracketed by v = 0.3 and 0.44\n";
+      return 1;
+    }
+    gr[k] = Bisect(gap, 0.3, 0.44);
+  }
+  const double hb = static_cast<double>(ref::CubicHopfSpeed(seed));  // seed (3.16)
+  std::vector<double> vs;
+  for (int i = 0; i < n; ++i) {
+    char* end = nullptr;
+    const double v = std::strtod(args[i], &end);
+    if (end == args[i] || *end != '\0' || !(v > gr[0] && v < hb)) {
+      std::cerr << "ss_accuracy: v = " << args[i]
+                << ": must be a number in the pure-slip range (GR " << gr[0] << ", HB " << hb
+                << ")\n";
+      return 2;
+    }
+    vs.push_back(v);
+  }
+  std::printf("GR\t%.17g\t%.1e\n", gr[0], std::abs(gr[0] - gr[1]));
+  for (const double v : vs) {
+    Params p = seed;
+    p.v = v;
+    // Guess: steady sliding + the first-harmonic amplitude (Thomsen & Fidlin 2003).
+    const Real k1 = ref::CubicK1(p), k3 = ref::CubicK3(p), vv = v;
+    const Real a = 2 * std::sqrt((k1 - 2 * Real(p.beta) - 3 * k3 * vv * vv) / (3 * k3));
+    Real period[2];
+    for (int k = 0; k < 2; ++k) {
+      const ref::PureSlipOrbit o = ref::PureSlip(p, ref::Law(p).Mu(vv) + a, tols[k]);
+      if (!o.found) {
+        std::fprintf(stderr, "ss_accuracy: reference pure-slip orbit not found at v = %.17g\n", v);
+        return 1;
+      }
+      period[k] = o.period;
+    }
+    std::printf("T\t%.17g\t%.21Lg\t%.1e\n", v, period[0],
+                static_cast<double>(std::abs(period[0] - period[1]) / period[0]));
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::cerr << "usage: ss_accuracy DIR...  (ss_continue output directories)\n";
+    std::cerr << "usage: ss_accuracy [--rows] DIR...  (ss_continue output directories)\n"
+                 "       ss_accuracy --seed_references V...\n";
     return 2;
   }
+  if (std::string(argv[1]) == "--seed_references") return SeedReferences(argc - 2, argv + 2);
   std::map<std::string, Worst> worst;
   for (int i = 1; i < argc; ++i) {
     try {

@@ -2,9 +2,10 @@
 """Times AUTO-07p's compiled executable and ss_continue on the smooth part of the seed
 branch and prints their accuracy side by side (called by auto_peer.sh, which compiles).
 
-References: HB from the closed form sqrt((k1 - 2 beta)/(3 k3)) (seed 3.16); periods and GR
-from ss_continue at rtol 1e-13, atol 1e-15, each period at the exact v of the point it
-checks; that GR is checked against the published 0.3957902888 first."""
+References, none from ss_continue: HB from the closed form sqrt((k1 - 2 beta)/(3 k3)) (seed
+3.16); GR and each period at the exact v of the point it checks from the independent
+long-double reference integrator (reference/reference_orbit.hpp, RKF78 at tol 1e-17), via
+`ss_accuracy --seed_references`; that GR is checked against the published 0.3957902888 first."""
 import argparse
 import csv
 import math
@@ -24,7 +25,6 @@ HB_EXACT = math.sqrt((K1 - 2 * BETA) / (3 * K3))
 GR_PUBLISHED = 0.3957902888  # 10 digits
 V_POINTS = (0.435, 0.42, 0.40)  # the UZR velocities of c.po
 RANGE = ["--param", "v", "--from", "0.39", "--to", "0.5", "--no_plots", "--no_estimates"]
-TIGHT = ["--rtol", "1e-13", "--atol", "1e-15"]
 # Largest HB error accepted from AUTO: its location tolerance EPSS is 1e-5 by default.
 HB_LIMIT = {"default": 1e-4, "tight": 1e-6}
 
@@ -110,21 +110,31 @@ def rows(out_dir):
     return branch, special
 
 
-def tool_period(tool, v, scratch):
-    """Reference period at exactly v: ss_continue at rtol 1e-13, first row."""
-    out = os.path.join(scratch, "ref")
-    timed([tool, "--param", "v", "--from", repr(v), "--to", repr(v + 1e-4), "--no_plots",
-           "--no_estimates", "--out", out] + TIGHT)
-    v_row, kind, period = rows(out)[0][0]
-    if kind != "pure-slip" or v_row != v:
-        die(f"reference at v = {v!r}: first row is {kind} at {v_row!r}")
-    return period
+def references(tool, vs):
+    """Reference GR (v, spread) and {v: (period, spread)} from `tool --seed_references`."""
+    r = subprocess.run([tool, "--seed_references"] + [repr(v) for v in vs],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        die(f"{tool} --seed_references failed (exit {r.returncode}): {r.stderr.strip()}")
+    gr, periods = None, {}
+    for line in r.stdout.splitlines():
+        tok = line.split("\t")
+        if tok[0] == "GR":
+            gr = (float(tok[1]), float(tok[2]))
+        elif tok[0] == "T":
+            periods[float(tok[1])] = (float(tok[2]), float(tok[3]))
+    if gr is None or abs(gr[0] - GR_PUBLISHED) > 1e-10:
+        die(f"reference GR {gr!r} is not the published {GR_PUBLISHED}")
+    if sorted(periods) != sorted(set(vs)):
+        die(f"{tool} --seed_references gave periods at {sorted(periods)}, asked {sorted(vs)}")
+    return gr, periods
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--work", required=True)
     ap.add_argument("--tool", required=True)
+    ap.add_argument("--reference", required=True, help="ss_accuracy (--seed_references)")
     ap.add_argument("--reps", type=int, default=7)
     ap.add_argument("--threads", default="1", help="OMP_NUM_THREADS for AUTO (default 1)")
     a = ap.parse_args()
@@ -139,25 +149,13 @@ def main():
 
 
 def report(a, env, scratch):
-    timed([a.tool] + RANGE + TIGHT + ["--out", os.path.join(scratch, "tight")])
-    gr_ref = rows(os.path.join(scratch, "tight"))[1].get("GR")
-    if gr_ref is None or abs(gr_ref - GR_PUBLISHED) > 1e-10:
-        die(f"reference GR {gr_ref!r} is not the published {GR_PUBLISHED}")
-    table = []
+    runs = []  # (tool, settings, ms, HB, GR, [(v, T)])
     for settings in ("default", "tight"):
         ms = statistics.median(run_auto(a.work, settings, env) for _ in range(a.reps)) * 1e3
         hb, gr, periods = auto_results(a.work, settings)
-        errs = []
-        for v, t in periods:
-            ref = tool_period(a.tool, v, scratch)
-            errs.append(abs(t - ref) / ref)
-            print(f"AUTO {settings:7s} v {v:.12f}  T {t:.13f}  reference {ref:.13f}  "
-                  f"rel. error {errs[-1]:.1e}")
         label = "NTST 20, EPS* defaults" if settings == "default" else \
             "NTST 100, EPSL/EPSU/EPSS 1e-10"
-        table.append(("AUTO-07p (IPS 1 + IPS 4)", label, ms, abs(hb - HB_EXACT),
-                      abs(gr - gr_ref), max(errs)))
-        print(f"AUTO {settings:7s} HB {hb!r}  GR {gr!r}")
+        runs.append((f"AUTO {settings}", ("AUTO-07p (IPS 1 + IPS 4)", label), ms, hb, gr, periods))
 
     out = os.path.join(scratch, "ours")
     ms = statistics.median(timed([a.tool] + RANGE + ["--out", out])
@@ -168,20 +166,30 @@ def report(a, env, scratch):
     slip = [(v, t) for v, kind, t in branch if kind == "pure-slip"]
     if not slip:
         die("ss_continue: no pure-slip rows")
-    errs = []
-    for v0 in V_POINTS:
-        v, t = min(slip, key=lambda r: abs(r[0] - v0))
-        ref = tool_period(a.tool, v, scratch)
-        errs.append(abs(t - ref) / ref)
-        print(f"ours    default v {v:.12f}  T {t:.13f}  reference {ref:.13f}  "
-              f"rel. error {errs[-1]:.1e}")
-    table.append(("ss_continue", "defaults (rtol 1e-11)", ms, abs(special["HB"] - HB_EXACT),
-                  abs(special["GR"] - gr_ref), max(errs)))
+    periods = [min(slip, key=lambda r: abs(r[0] - v0)) for v0 in V_POINTS]
+    runs.append(("ours default", ("ss_continue", "defaults (rtol 1e-11)"), ms, special["HB"],
+                 special["GR"], periods))
 
-    print(f"\nReferences: HB {HB_EXACT!r} (closed form); GR {gr_ref!r} and periods from "
-          f"ss_continue {' '.join(TIGHT)}.\nMedian of {a.reps} runs of the executables "
-          f"(AUTO: OMP_NUM_THREADS={a.threads}, its HB run plus its periodic run).\n")
-    print("| tool | settings | median ms | HB error | GR error | max period error (rel.) |")
+    (gr_ref, gr_spread), ref = references(a.reference, [v for r in runs for v, _ in r[5]])
+    table = []
+    for name, label, ms, hb, gr, periods in runs:
+        errs = []
+        for v, t in periods:
+            t_ref, spread = ref[v]
+            errs.append(abs(t - t_ref) / t_ref)
+            print(f"{name:12s} v {v:.12f}  T {t:.13f}  reference {t_ref:.13f} (spread "
+                  f"{spread:.0e})  rel. error {errs[-1]:.1e}")
+        print(f"{name:12s} HB {hb!r}  GR {gr!r}")
+        table.append(label + (ms, abs(hb - HB_EXACT), abs(gr - gr_ref), max(errs)))
+
+    print(f"\nReferences (none from ss_continue): HB {HB_EXACT!r} (closed form, seed 3.16); "
+          f"GR {gr_ref!r} and the periods at each point's own v from the long-double "
+          f"reference integrator (RKF78, tol 1e-17; spread against tol 1e-15: GR "
+          f"{gr_spread:.0e}, periods <= {max(s for _, s in ref.values()):.0e} rel.).\n"
+          f"Median of {a.reps} runs of the executables (AUTO: OMP_NUM_THREADS={a.threads}, "
+          "its HB run plus its periodic run).\n")
+    print("| tool | settings | median ms | HB error (closed form) | GR error (long-double ref.) "
+          "| max period error (rel., long-double ref.) |")
     print("|---|---|---|---|---|---|")
     for name, label, ms, e_hb, e_gr, e_t in table:
         print(f"| {name} | {label} | {ms:.1f} | {e_hb:.1e} | {e_gr:.1e} | {e_t:.1e} |")
