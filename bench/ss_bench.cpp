@@ -47,10 +47,16 @@ namespace {
 using namespace ssbench;
 namespace ref = stickslip::reference;
 
+// The fastest single orbit with period error below 1e-12 (issue 11's goal).
+struct OrbitGoal {
+  double us = kNan, rtol = kNan, err = kNan;
+};
+
 // One stick-slip orbit of the seed set (v = 0.25), the issue-3 figure: time per
 // orbit (median over repeats, solver reused as in continuation) and the period
 // error against the reference, at several tolerances.
-void SingleOrbit(bool quick) {
+OrbitGoal SingleOrbit(bool quick) {
+  OrbitGoal goal;
   const ss::Params p = Seed(0.25);
   const double t_ref = static_cast<double>(ss::reference::StickSlip(p).period);
   std::printf(
@@ -75,10 +81,26 @@ void SingleOrbit(bool quick) {
         for (int i = 0; i < n; ++i) r = finder.StickSlip();
         us.push_back((Now() - t0) / n * 1e6);
       }
+      const double err = std::abs(r.orbit.period - t_ref), t_us = Median(us);
       std::printf("  %-10s  %-8.0e  %8.2f  %5ld  %.1e\n",
-                  in == ss::Integrator::kTaylor ? "taylor" : "cvode-adams", rtol, Median(us), steps,
-                  std::abs(r.orbit.period - t_ref));
+                  in == ss::Integrator::kTaylor ? "taylor" : "cvode-adams", rtol, t_us, steps, err);
+      if (err < 1e-12 && !(t_us >= goal.us)) goal = {t_us, rtol, err};
     }
+  return goal;
+}
+
+// Continue() on the seed branch at the default options (issue 11's goal):
+// median wall and CPU time of reps calls.
+Times DefaultContinue(int reps, int* points) {
+  Times t;
+  for (int i = 0; i < reps; ++i) {
+    const double w0 = Now(), c0 = CpuNow();
+    const ss::ContinuationResult r = ss::Continue(ss::Params(), ss::ContinuationOptions());
+    t.wall.push_back(Now() - w0);
+    t.cpu.push_back(CpuNow() - c0);
+    *points = static_cast<int>(r.points.size());
+  }
+  return t;
 }
 
 int Main(int argc, char** argv) {
@@ -163,7 +185,9 @@ int Main(int argc, char** argv) {
     rows.push_back(RunRegularised(ref, eps, RegularisedRtol(eps), slow_reps, max_reps));
   const ProcessTimes pt = TimeSsContinue(quick ? 3 : 7);
   Speedups(rows);
-  SingleOrbit(quick);
+  const OrbitGoal orbit_goal = SingleOrbit(quick);
+  int default_points = 0;
+  const Times cont = DefaultContinue(quick ? 15 : 51, &default_points);
 
   std::printf("\n");
   PrintTable(rows);
@@ -183,6 +207,18 @@ int Main(int argc, char** argv) {
       pt.runs, Ms(pt.full).c_str(), Ms(pt.no_estimates).c_str(), Ms(pt.startup).c_str(),
       pt.note.c_str());
   PrintTargets(rows, pt);
+  std::printf(
+      "  [%s] one stick-slip orbit at period error < 1e-12 in <= 5 us: %s us (Taylor, rtol %s, "
+      "error %s)\n",
+      orbit_goal.us <= 5 ? "met" : "NOT met", Ratio(orbit_goal.us).c_str(),
+      Sci(orbit_goal.rtol, 0).c_str(), Sci(orbit_goal.err).c_str());
+  std::printf(
+      "  [%s] Continue() on the seed branch at the defaults in <= 3 ms: %s ms wall, %s ms CPU "
+      "(median of %zu, %d points)\n",
+      cont.Wall() <= 3e-3 ? "met" : "NOT met", Ms(cont.Wall()).c_str(), Ms(cont.Cpu()).c_str(),
+      cont.wall.size(), default_points);
+  std::printf("  [%s] ss_continue --no_plots --no_estimates process in <= 10 ms: %s ms\n",
+              pt.no_estimates <= 10e-3 ? "met" : "NOT met", Ms(pt.no_estimates).c_str());
 
   ss::WriteFileAtomically(out + "/work_precision.tsv", Table(rows, ref, pt).str());
   std::printf("\nwrote %s/work_precision.tsv", out.c_str());

@@ -45,11 +45,11 @@ class MuSeries {
   void Old(int k, const double* s);
   template <LawKind L, bool D>
   double New(int k, const double* s, double* dmu);
-  // mu_k = Alpha(k) + slope() s_k for k >= 1 (after Old(k), and New(0) for the
+  // mu_k = Alpha(k) + slope() s_k for k >= 1 (Alpha(k, sign) gives sign mu_k's part) (after Old(k), and New(0) for the
   // slope mu'(s_0)): mu_k is linear in s_k, so the recurrences need not wait
   // for New(k).
   template <LawKind L>
-  double Alpha(int k) const;
+  double Alpha(int k, double sign = 1) const;
   double slope() const { return slope_; }
 
  private:
@@ -87,6 +87,10 @@ inline void MuSeries::Old(int k, const double* s) {
 inline double Product(double old, double p0, double pk, double q0, double qk, int k) {
   return k == 0 ? p0 * q0 : old + (p0 * qk + pk * q0);
 }
+// The same for p = q: 2 p0 pk is exact doubling, one operation shorter.
+inline double SquareProduct(double old, double p0, double pk, int k) {
+  return k == 0 ? p0 * p0 : old + (2 * p0) * pk;
+}
 
 template <LawKind L, bool D>
 inline double MuSeries::New(int k, const double* s, double* dmu) {
@@ -96,7 +100,7 @@ inline double MuSeries::New(int k, const double* s, double* dmu) {
     double* w1 = w_[1].c();
     double* w2 = w_[2].c();
     double* w3 = w_[3].c();
-    w0[k] = Product(old_[0], s[0], s[k], s[0], s[k], k);
+    w0[k] = SquareProduct(old_[0], s[0], s[k], k);
     if (k == 0) {
       s0_ = s[0];
       slope_ = c_[1] + w0[0] * (3 * c_[3] + 5 * c_[5] * w0[0]);
@@ -107,7 +111,7 @@ inline double MuSeries::New(int k, const double* s, double* dmu) {
       mu += c_[3] * w1[k];
     }
     if (degree_ >= 5) {
-      w2[k] = Product(old_[2], w0[0], w0[k], w0[0], w0[k], k);
+      w2[k] = SquareProduct(old_[2], w0[0], w0[k], k);
       w3[k] = Product(old_[3], w2[0], w2[k], s[0], s[k], k);
       mu += c_[5] * w3[k];
     }
@@ -136,7 +140,7 @@ inline double MuSeries::New(int k, const double* s, double* dmu) {
     q[k] = (k == 0 ? mu_s_ : -(old_[0] + d[k] * q[0])) / d[0];
     if (k == 0) slope_ = -a_ * q[0] / d[0];
     if constexpr (D) {
-      w_[2].c()[k] = Product(old_[1], q[0], q[k], q[0], q[k], k);
+      w_[2].c()[k] = SquareProduct(old_[1], q[0], q[k], k);
       *dmu = -(a_ / mu_s_) * w_[2].c()[k];
     }
     return q[k];
@@ -144,17 +148,17 @@ inline double MuSeries::New(int k, const double* s, double* dmu) {
 }
 
 template <LawKind L>
-inline double MuSeries::Alpha(int k) const {
+inline double MuSeries::Alpha(int k, double sign) const {
   if constexpr (L == LawKind::kCubic) {
     // w1_k = old1 + s0 old0 + 3 s0^2 s_k, w3_k = old3 + s0 old2 + 2 s0^3 old0 + 5 s0^4 s_k.
-    double a = 0;
-    if (degree_ >= 3) a += c_[3] * (old_[1] + s0_ * old_[0]);
-    if (degree_ >= 5) a += c_[5] * (old_[3] + s0_ * old_[2] + 2 * s0_ * w_[0].c()[0] * old_[0]);
-    return a;
+    if (degree_ < 3) return 0.0;
+    const double a = (sign * c_[3]) * (old_[1] + s0_ * old_[0]);
+    if (degree_ < 5) return a;
+    return a + (sign * c_[5]) * (old_[3] + s0_ * old_[2] + 2 * s0_ * w_[0].c()[0] * old_[0]);
   } else if constexpr (L == LawKind::kStribeck) {
-    return (mu_s_ - a_) * old_[0] / k;
+    return (sign * (mu_s_ - a_)) * old_[0] / k;
   } else if constexpr (L == LawKind::kLeine) {
-    return -old_[0] / w_[0].c()[0];
+    return -(sign * old_[0]) / w_[0].c()[0];
   } else {
     return 0.0;
   }

@@ -38,8 +38,8 @@ void TaylorStepper::Recurrences(int order) {
     if (k > 0) {
       // mu_k = alpha + mu'(s_0) s_k with s_k = -sigma x'_k: x'_{k+1} without
       // waiting for the products of s_k (the chain from x'_k is short).
-      const double alpha = mu.Alpha<L>(k);
-      xd[k + 1] = ((sigma_ * alpha - x[k]) - damp * xd[k]) * inv;
+      const double sigma_alpha = mu.Alpha<L>(k, sigma_);
+      xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k]) * inv;
     }
     s[k] = sigma_ * ((k == 0 ? v : 0.0) - xd[k]);
     double dmu = 0;
