@@ -47,8 +47,10 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
   opts.cancelled = [sh, &run, param] {
     std::lock_guard<std::mutex> lock(sh->m);
     if (sh->abandoned) return true;
-    run.Heartbeat(sh->periodic ? "last periodic orbit at " + param + " = " + FormatNumber(sh->last)
-                               : std::string("searching for a periodic orbit"));
+    if (run.HeartbeatDue())  // polled after every step: the line is built only when due
+      run.Heartbeat(sh->periodic
+                        ? "last periodic orbit at " + param + " = " + FormatNumber(sh->last)
+                        : std::string("searching for a periodic orbit"));
     return run.Cancelled();
   };
   opts.progress = [sh, &run, opts](const BranchPoint& pt) {
@@ -57,9 +59,10 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
     sh->periodic = sh->periodic || pt.kind != PointKind::kEquilibrium;
     sh->last = pt.p;
     sh->points.push_back(pt);
-    run.Progress(opts.param + " = " + FormatNumber(pt.p) + " (" + PointKindName(pt.kind) + ")",
-                 (pt.p - opts.from) / (opts.to - opts.from), static_cast<double>(sh->points.size()),
-                 "points");
+    if (run.ProgressDue())
+      run.Progress(opts.param + " = " + FormatNumber(pt.p) + " (" + PointKindName(pt.kind) + ")",
+                   (pt.p - opts.from) / (opts.to - opts.from),
+                   static_cast<double>(sh->points.size()), "points");
   };
   run.Phase("continuing");
   std::thread worker([sh, base, opts] {

@@ -75,8 +75,8 @@ void RunControl::Line(const std::string& text) {
 
 void RunControl::Progress(const std::string& what, double fraction, double count,
                           const std::string& unit) {
+  if (!ProgressDue()) return;
   const double t = Elapsed();
-  if (t < last_line_ + 1.0) return;
   std::string text = what + " after " + Seconds(t);
   if (terminal_) {
     char buf[96];
@@ -88,7 +88,7 @@ void RunControl::Progress(const std::string& what, double fraction, double count
 }
 
 void RunControl::Heartbeat(const std::string& detail) {
-  if (Elapsed() < last_line_ + 2.0) return;
+  if (!HeartbeatDue()) return;
   Line("still " + phase_ + (detail.empty() ? "" : " (" + detail + ")") + " after " +
        Seconds(Elapsed()));
 }

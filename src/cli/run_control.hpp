@@ -34,10 +34,16 @@ class RunControl {
   // and the ETA on a terminal); fraction in [0, 1] of the phase done, or
   // negative if unknown; count: units done so far.
   void Progress(const std::string& what, double fraction, double count, const std::string& unit);
+  // Whether Progress would print now (at most one line a second).
+  bool ProgressDue() const { return Elapsed() >= last_line_ + 1.0; }
   // Prints "<prog>: still <phase> (<detail>) after N s" if no line came for 2 s.
   void Heartbeat(const std::string& detail);
+  // Whether Heartbeat would print now: a hook polled after every integration
+  // step builds its detail only then.
+  bool HeartbeatDue() const { return Elapsed() >= last_line_ + kHeartbeatSeconds; }
 
  private:
+  static constexpr double kHeartbeatSeconds = 2.0;
   void Line(const std::string& text);
   std::string prog_;
   double max_time_;
