@@ -6,6 +6,7 @@
 
 #include "stepper.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/parameter_axis.hpp"
 
 namespace stickslip {
 
@@ -13,11 +14,14 @@ const char* IntegratorName(Integrator i) { return i == Integrator::kTaylor ? "ta
 const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf"; }
 
 std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, bool variational);
-std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational);
+std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
+                                           const std::string& parameter);
 
-std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational) {
-  return options.integrator == Integrator::kTaylor ? MakeTaylorStepper(options, variational)
-                                                   : MakeCvodeStepper(options, variational);
+std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational,
+                                     const std::string& parameter) {
+  return options.integrator == Integrator::kTaylor
+             ? MakeTaylorStepper(options, variational, parameter)
+             : MakeCvodeStepper(options, variational);
 }
 
 const char* FlowStatusName(FlowStatus s) {
@@ -61,7 +65,32 @@ Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), opti
 
 Flow::~Flow() = default;
 
+bool ParameterColumnSupported(LawKind law, const std::string& name) {
+  return !((name == "v_m" && law == LawKind::kCubic) ||
+           (name == "v_s" && law == LawKind::kStribeck) ||
+           (name == "delta" && law == LawKind::kLeine));
+}
+
+void Flow::set_parameter_column(const std::string& name) {
+  if (!name.empty()) {
+    ParameterAxis{name};  // throws for an unknown name
+    if (!ParameterColumnSupported(model_.params().law, name))
+      throw InvalidArgument("parameter column: '" + name +
+                            "' enters the friction law non-affinely (not supported)");
+  }
+  // The stepper stays for when the same column is asked again.
+  if (!name.empty() && name != param_name_) {
+    param_.reset();
+    param_name_ = name;
+  }
+  parameter_ = name;
+}
+
 Stepper& Flow::Solver(bool variational) {
+  if (variational && has_parameter_column()) {
+    if (!param_) param_ = MakeStepper(options_, true, parameter_);
+    return *param_;
+  }
   auto& slot = variational ? var_ : plain_;
   if (!slot) slot = MakeStepper(options_, variational);
   return *slot;
@@ -72,6 +101,7 @@ struct Flow::SlipEnd {
   double t;
   Vec2 z;
   Mat2 phi;
+  Vec2 dzdp;  // with the parameter column
 };
 
 namespace {
@@ -90,7 +120,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   const int n = cv.size();
   const SlipProblem problem{&model_, mode_, options_.rtol, options_.atol,
                             cancel_ ? &cancel_ : nullptr};
-  double init[6] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0};
+  double init[8] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0};
   cv.Reset(problem, t0, init);
   // The stop time in chunks of 1e9 (a finite stop time for CVODE), extended
   // until stop.t_max.
@@ -104,12 +134,13 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   long steps_before = cv.steps();
 
   auto finish = [&](SlipEnd::Kind kind, double t, const double* y) {
-    SlipEnd e{kind, t, Vec2(y[0], y[1]), Mat2::Identity()};
+    SlipEnd e{kind, t, Vec2(y[0], y[1]), Mat2::Identity(), Vec2::Zero()};
     if (variational) e.phi << y[2], y[4], y[3], y[5];
+    if (n == 8) e.dzdp = Vec2(y[6], y[7]);
     total_steps_ += cv.steps() - steps_before;
     return e;
   };
-  double buf[6];
+  double buf[8];
 
   double t_lo = t0, t_start = t0;
   bool restarted = false;
@@ -146,7 +177,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
         problem.AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]))) {
       // Settled on stable steady sliding, where it stays: the rest of the
       // segment is (xbar, 0), and no event can follow.
-      double rest[6] = {model_.SteadySliding().x, 0.0, 0.0, 0.0, 0.0, 0.0};
+      double rest[8] = {model_.SteadySliding().x, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       const double t_rest = std::isfinite(stop.t_max) ? stop.t_max : t_end;
       while (sampling && next_output < t_rest) {
         observer(Sample{next_output, Vec2(rest[0], 0.0), mode_});
@@ -236,6 +267,7 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
   Mat2 M = Mat2::Identity();
   const double v = model_.v();
   const bool sampling = output_dt > 0 && observer;
+  const bool column = variational && has_parameter_column() && m0 != Mode::kStick;
   double next_output = t0;
   if (sampling) {
     observer(Sample{t0, z0, m0});
@@ -247,6 +279,8 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     r.z = z;
     r.mode = mode;
     r.jacobian = M;
+    r.has_dzdp = column && r.switches == 0;
+    if (!r.has_dzdp) r.dzdp = Vec2::Zero();
     Extend(r, z);
     if (sampling) observer(Sample{t, z, mode});
     return r;
@@ -287,6 +321,7 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     mode_ = mode;
     const SlipEnd e = Slip(t, z, stop, variational, output_dt, next_output, observer, r);
     if (variational) M = e.phi * M;
+    if (column && r.switches == 0) r.dzdp = e.dzdp;
     t = e.t;
     z = e.z;
     Extend(r, z);

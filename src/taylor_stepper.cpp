@@ -10,6 +10,8 @@
 
 #include "poly_roots.hpp"
 #include "stepper.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/parameter_axis.hpp"
 
 namespace stickslip {
 namespace {
@@ -23,17 +25,21 @@ int OrderFor(double eps) {
 
 class TaylorStepper final : public Stepper {
  public:
-  TaylorStepper(const FlowOptions& o, bool variational)
+  TaylorStepper(const FlowOptions& o, bool variational, const std::string& parameter)
       : rtol_(o.rtol),
         atol_(o.atol),
         max_steps_(o.max_steps),
-        n_(variational ? 6 : 2),
+        n_(!parameter.empty() ? 8
+           : variational      ? 6
+                              : 2),
         order_rel_(OrderFor(o.rtol)),
-        order_abs_(OrderFor(o.atol)) {}
+        order_abs_(OrderFor(o.atol)),
+        parameter_(parameter) {}
 
   void Reset(const SlipProblem& problem, double t0, const double* y0) override {
     p_ = problem;
     sigma_ = p_.mode == Mode::kSlipBelow ? 1 : -1;
+    if (n_ == 8) ResolveParameter();
     std::copy(y0, y0 + n_, yend_);
     std::copy(y0, y0 + n_, y_);
     ta_ = tb_ = t_ = t0;
@@ -62,7 +68,10 @@ class TaylorStepper final : public Stepper {
   enum SignState { kFresh, kTracked, kDeflate, kInactive };
 
   bool NewStep();
+  void ResolveParameter();
   void Coefficients(int order);
+  double ParamTerm(int k, const double* s, double muk, double dmu,
+                   std::optional<MuSeries>& shifted) const;
   double StepSize(int order) const;
   void Events(double h);
   void Evaluate(double tau, double* out) const {
@@ -80,11 +89,17 @@ class TaylorStepper final : public Stepper {
   int n_, order_rel_, order_abs_;
   int order_ = 0;
   SlipProblem p_;
-  int sigma_ = 1;                   // F = sigma mu(s), s = sigma (v - x')
-  double c_[6][kMaxOrder + 1];      // this step's Taylor coefficients
+  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
+  // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
+  enum class ParamKind { kBeta, kV, kAffine };
+  std::string parameter_;
+  ParamKind kind_ = ParamKind::kBeta;
+  std::optional<Friction> shifted_;  // kAffine: the law at p + dp_
+  double dp_ = 1;
+  double c_[8][kMaxOrder + 1];      // this step's Taylor coefficients
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double tstop_ = INFINITY;
-  double yend_[6], y_[6];  // state at tb, at t
+  double yend_[8], y_[8];  // state at tb, at t
   SignState state_[kNumRoots];
   int sign_[kNumRoots] = {1, 1, 1};
   bool pending_ = false;  // a root at tb not yet returned
@@ -93,14 +108,39 @@ class TaylorStepper final : public Stepper {
   std::string error_;
 };
 
+// df/dp of seed eq. (3.5) for the parameter column: beta gives (0, -2 x');
+// v enters through s = sigma (v - x') only, giving (0, mu'(s)); a law
+// parameter mu depends on affinely (mu_s, mu_m, mu_k, k5) gives
+// (0, sigma (mu(s; p + dp) - mu(s; p)) / dp), exact for any dp. v_m, v_s and
+// delta enter mu non-affinely: no column (InvalidArgument).
+void TaylorStepper::ResolveParameter() {
+  const ParameterAxis axis(parameter_);
+  const Params& q = p_.model->params();
+  if (!ParameterColumnSupported(q.law, parameter_))
+    throw InvalidArgument("parameter column: '" + parameter_ +
+                          "' enters the friction law non-affinely (not supported)");
+  shifted_.reset();
+  if (parameter_ == "beta") {
+    kind_ = ParamKind::kBeta;
+  } else if (parameter_ == "v") {
+    kind_ = ParamKind::kV;
+  } else {
+    kind_ = ParamKind::kAffine;
+    dp_ = std::max(1.0, std::abs(axis.Get(q)));
+    shifted_.emplace(axis.At(q, axis.Get(q) + dp_));
+  }
+}
+
 // Seed eq. (3.5) on one slip branch, x'' = -x - 2 beta x' + sigma mu(s), and
-// Phi' = J Phi with J = [0 1; -1 c], c = -2 beta - mu'(s): coefficient k + 1
-// from the coefficients up to k.
+// Phi' = J Phi with J = [0 1; -1 c], c = -2 beta - mu'(s), and the parameter
+// column z_p' = J z_p + df/dp: coefficient k + 1 from those up to k.
 void TaylorStepper::Coefficients(int order) {
   const Model& m = *p_.model;
   const double v = m.v(), two_beta = 2 * m.beta();
   MuSeries mu(m.friction());
-  const bool var = n_ == 6;
+  std::optional<MuSeries> mu_shifted;
+  if (shifted_) mu_shifted.emplace(*shifted_);
+  const bool var = n_ >= 6;
   double s[kMaxOrder + 1], cc[kMaxOrder + 1];
   for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
   for (int k = 0; k < order; ++k) {
@@ -112,13 +152,28 @@ void TaylorStepper::Coefficients(int order) {
     c_[1][k + 1] = (-c_[0][k] - two_beta * c_[1][k] + sigma_ * muk) * inv;
     if (!var) continue;
     cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-    for (int col = 2; col < 6; col += 2) {
+    for (int col = 2; col < n_; col += 2) {
       double cq = 0;
       for (int j = 0; j <= k; ++j) cq += cc[j] * c_[col + 1][k - j];
       c_[col][k + 1] = c_[col + 1][k] * inv;
       c_[col + 1][k + 1] = (-c_[col][k] + cq) * inv;
     }
+    if (n_ == 8) c_[7][k + 1] += ParamTerm(k, s, muk, dmu, mu_shifted) * inv;
   }
+}
+
+// Coefficient k of df_2/dp (ResolveParameter), from this step's series.
+double TaylorStepper::ParamTerm(int k, const double* s, double muk, double dmu,
+                                std::optional<MuSeries>& shifted) const {
+  switch (kind_) {
+    case ParamKind::kBeta:
+      return -2 * c_[1][k];
+    case ParamKind::kV:
+      return dmu;
+    case ParamKind::kAffine:
+      return sigma_ * (shifted->Next(k, s, nullptr) - muk) / dp_;
+  }
+  return 0;
 }
 
 // JZ section 3.2: rho = min over j = p-1, p of (eps / |z_j|)^(1/j), relative to
@@ -145,8 +200,8 @@ bool TaylorStepper::NewStep() {
     return true;
   }
   double z0 = std::max(std::abs(yend_[0]), std::abs(yend_[1]));
-  if (n_ == 6)
-    for (int i = 2; i < 6; ++i) z0 = std::max(z0, std::abs(yend_[i]));
+  if (n_ >= 6)
+    for (int i = 2; i < n_; ++i) z0 = std::max(z0, std::abs(yend_[i]));
   order_ = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
   Coefficients(order_);
   double h = StepSize(order_);
@@ -285,8 +340,9 @@ void TaylorStepper::Events(double h) {
 
 }  // namespace
 
-std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational) {
-  return std::make_unique<TaylorStepper>(options, variational);
+std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
+                                           const std::string& parameter) {
+  return std::make_unique<TaylorStepper>(options, variational, parameter);
 }
 
 }  // namespace stickslip
