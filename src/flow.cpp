@@ -144,6 +144,8 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
 
   double t_lo = t0, t_start = t0;
   bool restarted = false;
+  double t_root = NAN;  // the last root's time, and how often roots repeated there
+  int repeats = 0;
   for (;;) {
     const bool sampling = output_dt > 0 && observer;
     const double tout = sampling ? std::min(next_output, t_end) : t_end;
@@ -197,6 +199,19 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     if (flag == StepOutcome::kRoot) {
       int rf[kNumRoots];
       cv.RootInfo(rf);
+      // Each root function fires once per instant; roots that keep coming at
+      // one t (zero-length steps, each resetting the stepper's step count)
+      // would loop for ever: a failure that says where.
+      repeats = t == t_root ? repeats + 1 : 0;
+      t_root = t;
+      if (repeats > 2 * kNumRoots) {
+        std::ostringstream os;
+        os << IntegratorName(options_.integrator) << " failed at t = " << t << " in "
+           << ModeName(mode_) << " at x = " << y[0] << ", x' = " << y[1]
+           << ": events repeat at this time without progress";
+        r.message = os.str();
+        return finish(SlipEnd::kFail, t, y);
+      }
       // A root exactly at an output time: report the sample, or the next call
       // would ask CVODE for tout = t.
       if (sampling && t >= next_output) {
