@@ -89,13 +89,7 @@ class TaylorStepper final : public Stepper {
   int n_, order_rel_, order_abs_;
   int order_ = 0;
   SlipProblem p_;
-  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
-  // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
-  enum class ParamKind { kBeta, kV, kAffine };
-  std::string parameter_;
-  ParamKind kind_ = ParamKind::kBeta;
-  std::optional<Friction> shifted_;  // kAffine: the law at p + dp_
-  double dp_ = 1;
+  int sigma_ = 1;                   // F = sigma mu(s), s = sigma (v - x')
   double c_[8][kMaxOrder + 1];      // this step's Taylor coefficients
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double tstop_ = INFINITY;
@@ -106,6 +100,12 @@ class TaylorStepper final : public Stepper {
   int rf_[kNumRoots] = {0, 0, 0};
   long steps_ = 0;
   std::string error_;
+  // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
+  enum class ParamKind { kBeta, kV, kAffine };
+  std::string parameter_;
+  ParamKind kind_ = ParamKind::kBeta;
+  std::optional<Friction> shifted_;  // kAffine: the law at p + dp_
+  double dp_ = 1;
 };
 
 // df/dp of seed eq. (3.5) for the parameter column: beta gives (0, -2 x');
