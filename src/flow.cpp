@@ -105,6 +105,19 @@ struct Flow::SlipEnd {
 };
 
 namespace {
+// Each root function fires once per instant: roots that keep coming at one t
+// (zero-length steps, each resetting the stepper's step count) would loop for
+// ever, so they are a failure that says where.
+struct RootRepeats {
+  double t = NAN;
+  int count = 0;
+  bool Stuck(double t_root) {
+    count = t_root == t ? count + 1 : 0;
+    t = t_root;
+    return count > 2 * kNumRoots;
+  }
+};
+
 void Extend(FlowResult& r, const Vec2& z) {
   r.x_min = std::min(r.x_min, z[0]);
   r.x_max = std::max(r.x_max, z[0]);
@@ -144,8 +157,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
 
   double t_lo = t0, t_start = t0;
   bool restarted = false;
-  double t_root = NAN;  // the last root's time, and how often roots repeated there
-  int repeats = 0;
+  RootRepeats repeats;
   for (;;) {
     const bool sampling = output_dt > 0 && observer;
     const double tout = sampling ? std::min(next_output, t_end) : t_end;
@@ -199,12 +211,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     if (flag == StepOutcome::kRoot) {
       int rf[kNumRoots];
       cv.RootInfo(rf);
-      // Each root function fires once per instant; roots that keep coming at
-      // one t (zero-length steps, each resetting the stepper's step count)
-      // would loop for ever: a failure that says where.
-      repeats = t == t_root ? repeats + 1 : 0;
-      t_root = t;
-      if (repeats > 2 * kNumRoots) {
+      if (repeats.Stuck(t)) {
         std::ostringstream os;
         os << IntegratorName(options_.integrator) << " failed at t = " << t << " in "
            << ModeName(mode_) << " at x = " << y[0] << ", x' = " << y[1]
