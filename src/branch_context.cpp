@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stickslip/friction.hpp"
 #include "stickslip/special_points.hpp"
 
 namespace stickslip {
@@ -16,6 +17,8 @@ BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
       lo_(std::min(o.from, o.to)),
       hi_(std::max(o.from, o.to)),
       dir_(o.to > o.from ? 1.0 : -1.0),
+      column_(o.orbit.flow.integrator == Integrator::kTaylor &&
+              ParameterColumnSupported(base.law, o.param)),
       phase_start_(std::chrono::steady_clock::now()) {
   finder_.set_floquet(false);
   if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
@@ -98,16 +101,38 @@ bool BranchContext::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, dou
   return *a > 1e-6 * (m.params().mu_s + m.v());
 }
 
-OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, ReturnMap* map) {
+namespace {
+// d xbar / dp of steady sliding xbar = mu(v): mu'(v) for v, else exact as a
+// difference for beta (0) and the parameters mu depends on affinely.
+double SteadySlidingDp(const ParameterAxis& axis, const Params& q) {
+  const Friction f(q);
+  if (axis.name() == "v") return f.DMu(q.v);
+  const double d = std::max(1.0, std::abs(axis.Get(q)));
+  return (Friction(axis.At(q, axis.Get(q) + d)).Mu(q.v) - f.Mu(q.v)) / d;
+}
+}  // namespace
+
+OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, ReturnMap* map,
+                                 double* gp) {
   // A corrector may wander out of the model's domain (v <= 0, say): no orbit.
-  const std::string err = stickslip::ValidationError(At(p));
+  const Params q = At(p);
+  const std::string err = stickslip::ValidationError(q);
   if (!err.empty()) {
     if (map) map->message = "outside the model's domain: " + err;
     return OrbitStatus::kNotConverged;
   }
-  finder_.set_model(Model(At(p)));
+  finder_.set_model(Model(q));
   ++res_.counts.return_maps;
-  return finder_.Desingularised(a, g, ga, map);
+  if (!(gp && ga && column_)) return finder_.Desingularised(a, g, ga, map);
+  // G = (P(xbar + a; p) - xbar - a) / a, so dG/dp = (P_p + (P' - 1) xbar_p) / a.
+  ReturnMap local;
+  ReturnMap& rm = map ? *map : local;
+  finder_.flow().set_parameter_column(axis_.name());
+  const OrbitStatus s = finder_.Desingularised(a, g, ga, &rm);
+  finder_.flow().set_parameter_column("");
+  if (s == OrbitStatus::kOk && rm.has_dpdp)
+    *gp = (rm.dpdp + (rm.dpdx - 1.0) * SteadySlidingDp(axis_, q)) / a;
+  return s;
 }
 
 bool BranchContext::NearHopf(double p, double slack) const {

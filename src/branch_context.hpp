@@ -115,7 +115,13 @@ class BranchContext {
   // A pure-slip orbit by shooting at fixed p that stays below the belt.
   bool PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, double* a);
   // G(a, p) and dG/da; outside the model's domain no orbit (kNotConverged).
-  OrbitStatus EvalG(double a, double p, double* g, double* ga, ReturnMap* map);
+  // With gp (and ga) and column(): dG/dp from the flow's parameter column in
+  // the same run, set where the run carried it (map->has_dpdp).
+  OrbitStatus EvalG(double a, double p, double* g, double* ga, ReturnMap* map,
+                    double* gp = nullptr);
+  // Whether EvalG can give dG/dp from the parameter column: Taylor, and a
+  // parameter the law depends on affinely (ParameterColumnSupported).
+  bool column() const { return column_; }
 
   void AddHopf(double p) { hopf_.emplace_back(p, false); }
   const std::vector<std::pair<double, bool>>& hopf() const { return hopf_; }
@@ -152,6 +158,7 @@ class BranchContext {
   std::vector<Span> stick_slip_spans_;
   int branch_ = 0;
   double last_p_ = 0;
+  bool column_;
   Phase phase_ = Phase::kEquilibrium;
   std::chrono::steady_clock::time_point phase_start_;
 };

@@ -6,6 +6,7 @@
 
 #include "stepper.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/parameter_axis.hpp"
 
 namespace stickslip {
 
@@ -13,11 +14,14 @@ const char* IntegratorName(Integrator i) { return i == Integrator::kTaylor ? "ta
 const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf"; }
 
 std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, bool variational);
-std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational);
+std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
+                                           const std::string& parameter);
 
-std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational) {
-  return options.integrator == Integrator::kTaylor ? MakeTaylorStepper(options, variational)
-                                                   : MakeCvodeStepper(options, variational);
+std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational,
+                                     const std::string& parameter) {
+  return options.integrator == Integrator::kTaylor
+             ? MakeTaylorStepper(options, variational, parameter)
+             : MakeCvodeStepper(options, variational);
 }
 
 const char* FlowStatusName(FlowStatus s) {
@@ -61,7 +65,32 @@ Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), opti
 
 Flow::~Flow() = default;
 
+bool ParameterColumnSupported(LawKind law, const std::string& name) {
+  return !((name == "v_m" && law == LawKind::kCubic) ||
+           (name == "v_s" && law == LawKind::kStribeck) ||
+           (name == "delta" && law == LawKind::kLeine));
+}
+
+void Flow::set_parameter_column(const std::string& name) {
+  if (!name.empty()) {
+    ParameterAxis{name};  // throws for an unknown name
+    if (!ParameterColumnSupported(model_.params().law, name))
+      throw InvalidArgument("parameter column: '" + name +
+                            "' enters the friction law non-affinely (not supported)");
+  }
+  // The stepper stays for when the same column is asked again.
+  if (!name.empty() && name != param_name_) {
+    param_.reset();
+    param_name_ = name;
+  }
+  parameter_ = name;
+}
+
 Stepper& Flow::Solver(bool variational) {
+  if (variational && has_parameter_column()) {
+    if (!param_) param_ = MakeStepper(options_, true, parameter_);
+    return *param_;
+  }
   auto& slot = variational ? var_ : plain_;
   if (!slot) slot = MakeStepper(options_, variational);
   return *slot;
@@ -72,9 +101,24 @@ struct Flow::SlipEnd {
   double t;
   Vec2 z;
   Mat2 phi;
+  Vec2 dzdp;  // with the parameter column
 };
 
 namespace {
+// Each root function fires once per instant: roots that keep coming at one t,
+// to rounding (steps of zero or rounding length, each resetting the stepper's
+// step count), would loop for ever, so they are a failure that says where.
+struct RootRepeats {
+  double t = NAN;  // where the run of repeats began
+  int count = 0;
+  bool Stuck(double t_root) {
+    const bool same = std::abs(t_root - t) <= 64 * 2.2e-16 * std::max(1.0, std::abs(t));
+    count = same ? count + 1 : 0;
+    if (!same) t = t_root;
+    return count > 2 * kNumRoots;
+  }
+};
+
 void Extend(FlowResult& r, const Vec2& z) {
   r.x_min = std::min(r.x_min, z[0]);
   r.x_max = std::max(r.x_max, z[0]);
@@ -97,7 +141,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   problem.stop_dir[1] = stop.at_velocity_max && mode_ == Mode::kSlipBelow ? -1 : 0;
   problem.stop_dir[2] = stop.at_section ? -1 : 0;
   problem.extrema = &extrema;
-  double init[6] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0};
+  double init[8] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0};
   cv.Reset(problem, t0, init);
   // The stop time in chunks of 1e9 (a finite stop time for CVODE), extended
   // until stop.t_max.
@@ -115,15 +159,17 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     r.x_max = std::max(r.x_max, extrema.x_max);
     r.xdot_min = std::min(r.xdot_min, extrema.xdot_min);
     r.xdot_max = std::max(r.xdot_max, extrema.xdot_max);
-    SlipEnd e{kind, t, Vec2(y[0], y[1]), Mat2::Identity()};
+    SlipEnd e{kind, t, Vec2(y[0], y[1]), Mat2::Identity(), Vec2::Zero()};
     if (variational) e.phi << y[2], y[4], y[3], y[5];
+    if (n == 8) e.dzdp = Vec2(y[6], y[7]);
     total_steps_ += cv.steps() - steps_before;
     return e;
   };
-  double buf[6];
+  double buf[8];
 
   double t_lo = t0, t_start = t0;
   bool restarted = false;
+  RootRepeats repeats;
   for (;;) {
     const bool sampling = output_dt > 0 && observer;
     const double tout = sampling ? std::min(next_output, t_end) : t_end;
@@ -157,7 +203,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
         problem.AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]))) {
       // Settled on stable steady sliding, where it stays: the rest of the
       // segment is (xbar, 0), and no event can follow.
-      double rest[6] = {model_.SteadySliding().x, 0.0, 0.0, 0.0, 0.0, 0.0};
+      double rest[8] = {model_.SteadySliding().x, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       const double t_rest = std::isfinite(stop.t_max) ? stop.t_max : t_end;
       while (sampling && next_output < t_rest) {
         observer(Sample{next_output, Vec2(rest[0], 0.0), mode_});
@@ -177,6 +223,14 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
     if (flag == StepOutcome::kRoot) {
       int rf[kNumRoots];
       cv.RootInfo(rf);
+      if (repeats.Stuck(t)) {
+        std::ostringstream os;
+        os << IntegratorName(options_.integrator) << " failed at t = " << t << " in "
+           << ModeName(mode_) << " at x = " << y[0] << ", x' = " << y[1]
+           << ": events repeat at this time without progress";
+        r.message = os.str();
+        return finish(SlipEnd::kFail, t, y);
+      }
       // A root exactly at an output time: report the sample, or the next call
       // would ask CVODE for tout = t.
       if (sampling && t >= next_output) {
@@ -247,6 +301,7 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
   Mat2 M = Mat2::Identity();
   const double v = model_.v();
   const bool sampling = output_dt > 0 && observer;
+  const bool column = variational && has_parameter_column() && m0 != Mode::kStick;
   double next_output = t0;
   if (sampling) {
     observer(Sample{t0, z0, m0});
@@ -258,6 +313,8 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     r.z = z;
     r.mode = mode;
     r.jacobian = M;
+    r.has_dzdp = column && r.switches == 0;
+    if (!r.has_dzdp) r.dzdp = Vec2::Zero();
     Extend(r, z);
     if (sampling) observer(Sample{t, z, mode});
     return r;
@@ -298,6 +355,7 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     mode_ = mode;
     const SlipEnd e = Slip(t, z, stop, variational, output_dt, next_output, observer, r);
     if (variational) M = e.phi * M;
+    if (column && r.switches == 0) r.dzdp = e.dzdp;
     t = e.t;
     z = e.z;
     Extend(r, z);

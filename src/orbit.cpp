@@ -156,6 +156,10 @@ ReturnMap OrbitFinder::Return(double x, bool derivative) {
     map.period = r.t;
     // P' = [(I - f n^T / n^T f) Phi]_11 with n = (0, 1) and f_1 = x' = 0.
     if (derivative) map.dpdx = r.jacobian(0, 0);
+    // dP/dp = x_p + x' dT/dp, and x' = 0 on the section: the return time's
+    // dependence on p drops out.
+    map.has_dpdp = derivative && r.has_dzdp;
+    if (map.has_dpdp) map.dpdp = r.dzdp[0];
   } else if (map.status == OrbitStatus::kNoReturn) {
     map.message =
         "no return to the section x' = 0 within t = " + std::to_string(options_.max_return_time);

@@ -72,7 +72,7 @@ class Stepper {
  public:
   virtual ~Stepper() = default;
   // Restart at (t0, y0) on problem's field; y0 has size() entries, Phi
-  // column-major after z when size() == 6.
+  // column-major after z when size() >= 6, dz/dp after Phi when size() == 8.
   virtual void Reset(const SlipProblem& problem, double t0, const double* y0) = 0;
   virtual void SetStopTime(double t) = 0;
   // Integrate towards tout; *t is where it stopped, with state y().
@@ -89,7 +89,9 @@ class Stepper {
   virtual const std::string& last_error() const = 0;
 };
 
-// The stepper options.integrator names, for z alone or with Phi.
-std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational);
+// The stepper options.integrator names, for z alone or with Phi; with a
+// parameter name (Taylor only), also with the column dz/dp.
+std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational,
+                                     const std::string& parameter = "");
 
 }  // namespace stickslip

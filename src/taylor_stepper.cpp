@@ -11,12 +11,14 @@
 #include <sstream>
 
 #include "poly_roots.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/parameter_axis.hpp"
 
 namespace stickslip {
 
 // Seed eq. (3.5) on one slip branch, x'' = -x - 2 beta x' + sigma mu(s), and
-// Phi' = J Phi with J = [0 1; -1 c], c = -2 beta - mu'(s): coefficient k + 1
-// from the coefficients up to k.
+// Phi' = J Phi with J = [0 1; -1 c], c = -2 beta - mu'(s), and the parameter
+// column z_p' = J z_p + df/dp: coefficient k + 1 from those up to k.
 template <LawKind L, bool Var>
 void TaylorStepper::Recurrences(int order) {
   const Model& m = *p_.model;
@@ -32,8 +34,11 @@ void TaylorStepper::Recurrences(int order) {
   for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
   mu.Begin<L>(order);
   double damp = 0;  // 2 beta + mu'(s_0)
+  MuSeries* shifted = Var && n_ == 8 && mu_shifted_ ? &*mu_shifted_ : nullptr;
+  if (shifted) shifted->Begin<L>(order);
   for (int k = 0; k < order; ++k) {
     mu.Old<L, Var>(k, s);
+    if (shifted) shifted->Old<L, false>(k, s);
     const double inv = kTaylorInverse.r[k];
     if (k > 0) {
       // mu_k = alpha + mu'(s_0) s_k with s_k = -sigma x'_k: x'_{k+1} without
@@ -44,6 +49,7 @@ void TaylorStepper::Recurrences(int order) {
     s[k] = sigma_ * ((k == 0 ? v : 0.0) - xd[k]);
     double dmu = 0;
     const double muk = mu.New<L, Var>(k, s, &dmu);
+    const double muk_shifted = shifted ? shifted->New<L, false>(k, s, nullptr) : 0.0;
     x[k + 1] = xd[k] * inv;
     if (k == 0) {
       xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk;
@@ -51,17 +57,57 @@ void TaylorStepper::Recurrences(int order) {
     }
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-      for (int col = 2; col < 6; col += 2) {
+      for (int col = 2; col < n_; col += 2) {
         const double cq = Cauchy(c_[col + 1], cc, k);
         c_[col][k + 1] = c_[col + 1][k] * inv;
         c_[col + 1][k + 1] = (-c_[col][k] + cq) * inv;
+      }
+      if (n_ == 8) {
+        c_[7][k + 1] += ParamTerm(k, muk, muk_shifted, dmu) * inv;
       }
     }
   }
 }
 
+// df/dp of seed eq. (3.5) for the parameter column: beta gives (0, -2 x');
+// v enters through s = sigma (v - x') only, giving (0, mu'(s)); a law
+// parameter mu depends on affinely (mu_s, mu_m, mu_k, k5) gives
+// (0, sigma (mu(s; p + dp) - mu(s; p)) / dp), exact for any dp. v_m, v_s and
+// delta enter mu non-affinely: no column (InvalidArgument).
+void TaylorStepper::ResolveParameter() {
+  const ParameterAxis axis(parameter_);
+  const Params& q = p_.model->params();
+  if (!ParameterColumnSupported(q.law, parameter_))
+    throw InvalidArgument("parameter column: '" + parameter_ +
+                          "' enters the friction law non-affinely (not supported)");
+  mu_shifted_.reset();
+  if (parameter_ == "beta") {
+    kind_ = ParamKind::kBeta;
+  } else if (parameter_ == "v") {
+    kind_ = ParamKind::kV;
+  } else {
+    kind_ = ParamKind::kAffine;
+    dp_ = std::max(1.0, std::abs(axis.Get(q)));
+    mu_shifted_.emplace(Friction(axis.At(q, axis.Get(q) + dp_)));
+  }
+}
+
+// Coefficient k of df_2/dp (ResolveParameter), from this step's series; the
+// shifted law's coefficient k is computed in the same loop (Recurrences).
+double TaylorStepper::ParamTerm(int k, double muk, double muk_shifted, double dmu) const {
+  switch (kind_) {
+    case ParamKind::kBeta:
+      return -2 * c_[1][k];
+    case ParamKind::kV:
+      return dmu;
+    case ParamKind::kAffine:
+      return sigma_ * (muk_shifted - muk) / dp_;
+  }
+  return 0;
+}
+
 void TaylorStepper::Coefficients(int order) {
-  const bool var = n_ == 6;
+  const bool var = n_ >= 6;
   switch (p_.model->friction().law()) {
     case LawKind::kCubic:
       return var ? Recurrences<LawKind::kCubic, true>(order)
@@ -105,8 +151,8 @@ bool TaylorStepper::NewStep() {
     return true;
   }
   double z0 = std::max(p_.XScale(yend_[0]), std::abs(yend_[1]));
-  if (n_ == 6)
-    for (int i = 2; i < 6; ++i) z0 = std::max(z0, std::abs(yend_[i]));
+  if (n_ >= 6)
+    for (int i = 2; i < n_; ++i) z0 = std::max(z0, std::abs(yend_[i]));
   order_ = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
   Coefficients(order_);
   double h = StepSize(order_);
@@ -185,8 +231,9 @@ StepOutcome TaylorStepper::Advance(double tout, double* t) {
   }
 }
 
-std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational) {
-  return std::make_unique<TaylorStepper>(options, variational);
+std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
+                                           const std::string& parameter) {
+  return std::make_unique<TaylorStepper>(options, variational, parameter);
 }
 
 }  // namespace stickslip

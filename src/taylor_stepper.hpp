@@ -26,18 +26,23 @@ inline int OrderFor(double eps) {
 
 class TaylorStepper final : public Stepper {
  public:
-  TaylorStepper(const FlowOptions& o, bool variational)
+  // parameter: also the column dz/dp for that parameter (then size() is 8).
+  TaylorStepper(const FlowOptions& o, bool variational, const std::string& parameter)
       : rtol_(o.rtol),
         atol_(o.atol),
         max_steps_(o.max_steps),
-        n_(variational ? 6 : 2),
+        n_(!parameter.empty() ? 8
+           : variational      ? 6
+                              : 2),
         order_rel_(OrderFor(o.rtol)),
-        order_abs_(OrderFor(o.atol)) {}
+        order_abs_(OrderFor(o.atol)),
+        parameter_(parameter) {}
 
   void Reset(const SlipProblem& problem, double t0, const double* y0) override {
     p_ = problem;
     sigma_ = p_.mode == Mode::kSlipBelow ? 1 : -1;
     mu_.emplace(p_.model->friction());
+    if (n_ == 8) ResolveParameter();
     s_.Clear();
     cc_.Clear();
     for (auto& row : c_) std::fill(row, row + kTaylorMaxOrder + 1 + kPad, 0.0);
@@ -95,6 +100,8 @@ class TaylorStepper final : public Stepper {
 
   bool NewStep();
   void Coefficients(int order);
+  void ResolveParameter();
+  double ParamTerm(int k, double muk, double muk_shifted, double dmu) const;
   template <LawKind L, bool Var>
   void Recurrences(int order);
   double StepSize(int order) const;
@@ -117,12 +124,18 @@ class TaylorStepper final : public Stepper {
   int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
   // This step's Taylor coefficients, kPad finite entries past the order for
   // Cauchy(); the series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
-  double c_[6][kTaylorMaxOrder + 1 + kPad];
+  double c_[8][kTaylorMaxOrder + 1 + kPad];
   Series<kTaylorMaxOrder> s_, cc_;
   std::optional<MuSeries> mu_;
+  // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
+  enum class ParamKind { kBeta, kV, kAffine };
+  std::string parameter_;
+  ParamKind kind_ = ParamKind::kBeta;
+  std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_
+  double dp_ = 1;
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double tstop_ = INFINITY;
-  double yend_[6], y_[6];  // state at tb, at t
+  double yend_[8], y_[8];  // state at tb, at t
   SignState state_[kNumRoots];
   int sign_[kNumRoots] = {1, 1, 1};
   bool pending_ = false;      // a root at tb not yet returned

@@ -1,6 +1,8 @@
 // The pure-slip branch tracer: G(a, p) = 0, a = x* - xbar the section
 // amplitude, as a PALC problem (palc.hpp) in scaled coordinates
-// (a, p / |to - from|); dG/dp by a one-sided difference once per correction.
+// (a, p / |to - from|); dG/dp from the parameter column at every evaluation
+// (Taylor, BranchContext::column()), else by a one-sided difference once per
+// correction.
 // The tracer adds what the physics needs: landing on the range ends, ending
 // on a Hopf point, handing over at a grazing point.
 #include <algorithm>
@@ -28,7 +30,8 @@ Orbit PureSlipFromMap(const ReturnMap& map) {
   return o;
 }
 
-// G(a, p) = 0 for the PALC, with dG/dp held over one correction (a chord).
+// G(a, p) = 0 for the PALC; dG/dp from the parameter column, or by a
+// difference held over one correction (a chord).
 class PureSlipCurve : public PalcProblem {
  public:
   PureSlipCurve(BranchContext& ctx, double hp) : ctx_(ctx), hp_(hp) {}
@@ -37,13 +40,14 @@ class PureSlipCurve : public PalcProblem {
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override {
     double g = 0, ga = 0;
-    const OrbitStatus s = ctx_.EvalG(u[0], u[1], &g, &ga, &map);
+    const OrbitStatus s = ctx_.EvalG(u[0], u[1], &g, &ga, &map, ctx_.column() ? &gp_ : nullptr);
     stuck = s == OrbitStatus::kSticks;
     if (s != OrbitStatus::kOk) {
       *why = map.message;
       return false;
     }
-    if (fresh_ && !DGDp(u[0], u[1], g)) {
+    // The column's dG/dp is this evaluation's; the quotient is held (a chord).
+    if (!map.has_dpdp && fresh_ && !DGDp(u[0], u[1], g)) {
       *why = "dG/dp failed on both sides";
       return false;
     }

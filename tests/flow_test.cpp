@@ -181,6 +181,30 @@ TEST(Flow, TaylorFailureIsAStatusThatSaysWhere) {
   EXPECT_NE(r.message.find("at t = 0"), std::string::npos) << r.message;
 }
 
+// At v = 1e4 the exit point x0 = mu_s - 2 beta v (seed eq. 3.6) has x'' = 0
+// only to rounding (2e-14): x' = v and x'' = 0 then fired in turn at one t,
+// each a zero-length Taylor step that reset the step count, for ever (the hang
+// of Continuation.VeryWideRangeKeepsTheSeedStructure). Now a failure that says
+// where; the cancel hook only keeps a regression from hanging the suite.
+TEST(Flow, EventsRepeatingAtOneTimeFailInsteadOfLooping) {
+  Params p;
+  p.v = 1e4;
+  const Model m(p);
+  FlowOptions o;
+  o.integrator = Integrator::kTaylor;
+  Flow flow(m, o);
+  long polls = 0;
+  flow.set_cancel([&polls] { return ++polls > 100000; });
+  StopRule stop;
+  stop.at_stick = true;
+  stop.t_max = 100;
+  const FlowResult r = flow.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, false);
+  EXPECT_EQ(r.status, FlowStatus::kIntegratorFailed) << r.message;
+  EXPECT_LT(r.t, 1e-12);
+  EXPECT_NE(r.message.find("without progress"), std::string::npos) << r.message;
+  EXPECT_LT(flow.total_steps(), 100);
+}
+
 TEST(Flow, InvalidOptionsAndMisuseThrow) {
   const Model m{Params()};
   FlowOptions o;

@@ -6,7 +6,9 @@
 #include <iostream>
 
 #include "reference/reference_orbit.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/flow.hpp"
+#include "stickslip/params.hpp"
 
 namespace stickslip {
 namespace {
@@ -250,6 +252,86 @@ TEST(Taylor, ErrorIsProportionalToTheTolerance) {
   RecordProperty("slope", std::to_string(slope));
   std::cout << "taylor: slope of log10(period error) against log10(rtol) on [1e-9, 1e-4]: " << slope
             << std::endl;
+}
+
+// dP/dp of the section return x' = 0 from (x, 0) by the reference integrator:
+// central differences at h and h / 2, Richardson-extrapolated (error O(h^4)),
+// measured 2e-12 or better against the column at rtol 1e-13.
+double ReferenceDPDp(const Params& base, const std::string& name, double x, double h) {
+  auto P = [&](double dp) {
+    Params q = base;
+    SetParameter(q, name, GetParameter(base, name) + dp);
+    const reference::SectionReturn r =
+        reference::ReturnToSection(reference::Model(q), x, 1e-18L, 200);
+    EXPECT_TRUE(r.ok) << name;
+    return static_cast<double>(r.x);
+  };
+  const double d1 = (P(h) - P(-h)) / (2 * h), d2 = (P(h / 2) - P(-h / 2)) / h;
+  return (4 * d2 - d1) / 3;
+}
+
+struct ColumnCase {
+  const char* name;
+  Params p;
+  double a;  // section start xbar + a
+  std::vector<std::string> params;
+};
+
+TEST(Taylor, ParameterColumnMatchesTheReferenceReturnMap) {
+  Params cubic;
+  cubic.v = 0.42;  // between grazing and Hopf: pure slip
+  Params stribeck;
+  stribeck.law = LawKind::kStribeck;
+  stribeck.beta = 0.02;
+  stribeck.v = 0.2;
+  Params leine;
+  leine.law = LawKind::kLeine;
+  leine.beta = 0.01;
+  leine.mu_s = 1;
+  leine.delta = 3;
+  leine.v = 0.4;
+  const ColumnCase cases[] = {{"cubic", cubic, 0.05, {"beta", "v", "mu_s", "mu_m", "k5"}},
+                              {"stribeck", stribeck, 0.02, {"beta", "v", "mu_s", "mu_k"}},
+                              {"leine", leine, 0.02, {"beta", "v", "mu_s"}}};
+  for (const ColumnCase& c : cases) {
+    const Model m(c.p);
+    const double x = m.SteadySliding().x + c.a;
+    for (const std::string& name : c.params) {
+      Flow flow(m, Taylor(1e-13));
+      flow.set_parameter_column(name);
+      StopRule stop;
+      stop.at_section = true;
+      stop.switching = false;
+      stop.t_max = 200;
+      const FlowResult r = flow.Run(0.0, Vec2(x, 0.0), Mode::kSlipBelow, stop, true);
+      ASSERT_EQ(r.status, FlowStatus::kSection) << c.name << " " << name;
+      ASSERT_TRUE(r.has_dzdp) << c.name << " " << name;
+      const double ref = ReferenceDPDp(c.p, name, x, 2e-4);
+      EXPECT_NEAR(r.dzdp[0], ref, 1e-11 * std::max(1.0, std::abs(ref))) << c.name << " " << name;
+    }
+  }
+}
+
+TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
+  const Model m{Params()};  // seed set: the stick-slip orbit switches twice
+  Flow flow(m, Taylor());
+  flow.set_parameter_column("v");
+  StopRule stop;
+  stop.t_max = 1;
+  FlowResult r = flow.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true);
+  EXPECT_TRUE(r.has_dzdp);  // before the first arrival at the belt
+  stop.t_max = 30;
+  r = flow.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true);
+  EXPECT_GT(r.switches, 0);
+  EXPECT_FALSE(r.has_dzdp);
+  EXPECT_THROW(flow.set_parameter_column("not_a_parameter"), InvalidArgument);
+  Params s;
+  s.law = LawKind::kStribeck;
+  Flow fs{Model(s), Taylor()};
+  EXPECT_THROW(fs.set_parameter_column("v_s"), InvalidArgument);
+  Flow fc{Model(Params()), Cvode()};
+  fc.set_parameter_column("v");
+  EXPECT_FALSE(fc.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true).has_dzdp);
 }
 
 }  // namespace

@@ -17,6 +17,11 @@ namespace stickslip {
 
 class Stepper;  // src/stepper.hpp: private
 
+// Whether Flow's parameter column supports this parameter under this law:
+// beta, v, and every law parameter mu(s) depends on affinely (all but v_m,
+// v_s and delta of their own laws).
+bool ParameterColumnSupported(LawKind law, const std::string& name);
+
 // The integrator of the slip phases.
 enum class Integrator {
   kTaylor,  // Taylor series, order and step from the tolerance (Jorba & Zou 2005)
@@ -85,6 +90,11 @@ struct FlowResult {
   std::vector<Mode> modes;  // the mode sequence, start mode first
   // d z(t) / d z(t0), saltation matrices included; only with variational.
   Mat2 jacobian = Mat2::Identity();
+  // d z(t) / dp at fixed t and fixed start, for Flow's parameter column:
+  // has_dzdp only on a run without switches (one smooth slip segment; the
+  // saltation for a parameter is not modelled) and with the Taylor integrator.
+  Vec2 dzdp = Vec2::Zero();
+  bool has_dzdp = false;
   bool ok() const {
     return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches &&
            status != FlowStatus::kCancelled;
@@ -114,6 +124,15 @@ class Flow {
     return Run(t0, z0, model_.ModeAt(z0), stop, variational);
   }
 
+  // The parameter column: with variational runs on the Taylor integrator,
+  // dz/dp for this parameter (a ParameterAxis name) rides in the same
+  // recurrences. Empty: none (the column's stepper is kept for reuse). Throws InvalidArgument for
+  // an unknown name or one ParameterColumnSupported rejects for the model's law.
+  void set_parameter_column(const std::string& name);
+  bool has_parameter_column() const {
+    return !parameter_.empty() && options_.integrator == Integrator::kTaylor;
+  }
+
   long total_steps() const { return total_steps_; }
   // Polled after every step: a run stops with kCancelled once it returns true
   // (interruption, wall-time limits). Empty: never.
@@ -128,7 +147,8 @@ class Flow {
   Model model_;
   FlowOptions options_;
   Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
-  std::unique_ptr<Stepper> plain_, var_;
+  std::unique_ptr<Stepper> plain_, var_, param_;
+  std::string parameter_, param_name_;  // the active column; param_'s
   long total_steps_ = 0;
   std::function<bool()> cancel_;
 };

@@ -91,6 +91,9 @@ struct ReturnMap {
   double x = 0;       // P(x0)
   double dpdx = 0;    // P'(x0), with derivative
   double period = 0;  // return time
+  // dP/dp at fixed x0, with derivative and the flow's parameter column.
+  double dpdp = 0;
+  bool has_dpdp = false;
   FlowResult flow;
 };
 
