@@ -42,9 +42,12 @@ constexpr int kSearchSteps = 12;
 // Grazing points closer than kSameGrazing * locate_tol are the same point.
 constexpr double kSameGrazing = 1e3;
 // Probes beside a grazing point, as max(fraction * range, factor * locate_tol):
-// stick-slip side, pure-slip side.
+// stick-slip side, pure-slip side. The pure-slip probe also stays
+// kSlipProbeRtol * rtol * range away: the grazing point is the gap's root, the
+// probe a shooting, and the two place the touch as far apart as their
+// integration errors (8e-5 in v for stribeck, cvode, rtol 1e-4).
 constexpr double kStickProbe = 1e-6, kStickProbeTol = 10;
-constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100;
+constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100, kSlipProbeRtol = 10;
 // Smallest scale of p-steps, relative to max(1, |p|) (BranchContext::LocalScale).
 constexpr double kMinScale = 1e-3;
 // Landing on a range end: the step guess never below this amplitude.

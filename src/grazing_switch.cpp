@@ -62,8 +62,10 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
 BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
   const double a_gr = run.x_max - Model(ctx.At(p_gr)).SteadySliding().x;
-  const double d = std::max(tuning::kSlipProbe * ctx.LocalScale(p_gr),
-                            tuning::kSlipProbeTol * ctx.options().locate_tol);
+  const double scale = ctx.LocalScale(p_gr);
+  const double d =
+      std::max({tuning::kSlipProbe * scale, tuning::kSlipProbeTol * ctx.options().locate_tol,
+                tuning::kSlipProbeRtol * ctx.options().orbit.flow.rtol * scale});
   for (double side : {end.dir, -end.dir}) {
     const double q = p_gr + side * d;
     if (q < ctx.lo() || q > ctx.hi()) continue;

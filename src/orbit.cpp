@@ -189,6 +189,9 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
   OrbitResult out;
   double a = a_guess, a_prev = a_guess, last_da = HUGE_VAL;
   bool polished = false;
+  // a came back from an iterate that stuck: never accepted, its step may point
+  // past the belt (no orbit there, however small the step at a loose tol).
+  bool backtracked = false;
   // A pure-slip orbit below the belt stays within |x'| < v + a bit, so its
   // section amplitude is a few times (v + mu_s) at most.
   const double a_max = std::max(10 * a_guess, 10 * (model().v() + model().params().mu_s + 1));
@@ -205,6 +208,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
       } else {
         a = 0.5 * (a + a_prev);
       }
+      backtracked = true;
       continue;
     }
     if (s != OrbitStatus::kOk) {
@@ -223,7 +227,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     if (da > a) da = a;
     // Converged, or stalled at the integration noise floor.
     const double tol = options_.EffectiveNewtonTol() * std::max(1.0, a);
-    const bool converged = std::abs(da) <= tol;
+    const bool converged = !backtracked && std::abs(da) <= tol;
     // The orbit reported is the one at a, off by da: one more step while da is
     // above the integration noise (0.1 rtol).
     if (converged && !polished && it < options_.max_newton &&
@@ -232,8 +236,8 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
       a += da;
       continue;
     }
-    if (converged ||
-        (it > 2 && std::abs(da) < 1e3 * tol && std::abs(da) > 0.5 * std::abs(last_da))) {
+    if (converged || (!backtracked && it > 2 && std::abs(da) < 1e3 * tol &&
+                      std::abs(da) > 0.5 * std::abs(last_da))) {
       Orbit& o = out.orbit;
       o.newton_stalled = !converged;
       o.newton_step = std::abs(da);
@@ -249,6 +253,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     a_prev = a;
     last_da = da;
     a += da;
+    backtracked = false;
     if (a > a_max) {
       out.status = OrbitStatus::kNotConverged;
       out.message = "pure-slip shooting left the plausible range (a > " + std::to_string(a_max) +

@@ -303,6 +303,51 @@ TEST(Continuation, SameStructureAtEveryTolerance) {
   }
 }
 
+// The stribeck study's subcritical branch (studies/stribeck.ini) keeps HB, GR,
+// LP in that order at loose tolerances: the unstable pure-slip branch from HB
+// grows to GR (the reference integrator's grazing speed) and folds back there
+// as stick slip. HB: 2 beta + mu'(v) = 0, v = v_s ln 3. At rtol 1e-4 and 1e-6
+// the fixed-p shooting beside GR once took a point that sticks for an orbit
+// (Taylor), and at 1e-4 (CVODE) GR was taken for a touch inside the stick band.
+TEST(Continuation, SubcriticalStribeckKeepsItsFoldAtLooseTolerances) {
+  Params p;
+  p.law = LawKind::kStribeck;
+  p.mu_k = 0.25;
+  p.v_s = 0.5;
+  const double v_hb = p.v_s * std::log(3.0);
+  const double v_gr = static_cast<double>(reference::GrazingSpeed(p, 0.65L, 0.655L, 1e-11L));
+  for (Integrator in : {Integrator::kTaylor, Integrator::kCvode}) {
+    for (double rtol : {1e-4, 1e-6, 1e-8}) {
+      ContinuationOptions o;
+      o.from = 0.3;
+      o.to = 0.8;
+      o.orbit.flow.integrator = in;
+      o.orbit.flow.rtol = rtol;
+      o.orbit.flow.atol = rtol * 1e-2;
+      const ContinuationResult r = Continue(p, o);
+      const std::string at = std::string(IntegratorName(in)) + " rtol " + std::to_string(rtol);
+      ASSERT_EQ(r.status, ContinuationStatus::kOk) << at << ": " << r.message;
+      ASSERT_EQ(r.special.size(), 3u) << at;
+      EXPECT_EQ(r.special[0].kind, SpecialKind::kHopf) << at;
+      EXPECT_EQ(r.special[1].kind, SpecialKind::kGrazing) << at;
+      EXPECT_EQ(r.special[2].kind, SpecialKind::kFold) << at;
+      EXPECT_NEAR(r.special[0].p, v_hb, 1e-9) << at;
+      EXPECT_NEAR(r.special[1].p, v_gr, 10 * rtol) << at;
+      EXPECT_EQ(r.special[2].p, r.special[1].p) << at;
+      // The pure-slip branch lies between HB and GR (to the tolerance), below the belt.
+      int pure = 0;
+      for (const auto& pt : r.points) {
+        if (pt.kind != PointKind::kPureSlip) continue;
+        ++pure;
+        EXPECT_GE(pt.p, v_hb - 10 * rtol) << at;
+        EXPECT_LE(pt.p, r.special[1].p) << at;
+        EXPECT_LT(pt.xdot_max, pt.p) << at;
+      }
+      EXPECT_GE(pure, 10) << at;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stickslip
 
