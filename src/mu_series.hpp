@@ -45,9 +45,9 @@ class MuSeries {
   void Old(int k, const double* s);
   template <LawKind L, bool D>
   double New(int k, const double* s, double* dmu);
-  // mu_k = Alpha(k) + slope() s_k for k >= 1 (Alpha(k, sign) gives sign mu_k's part) (after Old(k), and New(0) for the
-  // slope mu'(s_0)): mu_k is linear in s_k, so the recurrences need not wait
-  // for New(k).
+  // mu_k = Alpha(k) + slope() s_k for k >= 1 (Alpha(k, sign) gives sign mu_k's part) (after Old(k),
+  // and New(0) for the slope mu'(s_0)): mu_k is linear in s_k, so the recurrences need not wait for
+  // New(k).
   template <LawKind L>
   double Alpha(int k, double sign = 1) const;
   double slope() const { return slope_; }

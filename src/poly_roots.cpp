@@ -81,21 +81,15 @@ void RestrictToTail(const double* c, int n, double u, double* out) {
 
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   PolyRoot out;
-  double scale = 0;
-  for (int k = 0; k <= n; ++k) scale += std::abs(c[k]);
+  double tail = 0;  // sum_{k>=3} |c_k|
+  for (int k = 3; k <= n; ++k) tail += std::abs(c[k]);
+  double scale = tail;
+  for (int k = 0; k <= std::min(n, 2); ++k) scale += std::abs(c[k]);
   if (scale == 0) return out;
   // Rounding of the conversion and the halvings: a few ulp of sum |c_k| per degree.
   const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
-  // Cheap bounds first: g = q + r with q the quadratic part and |r| <= sum_{k>=3}
-  // |c_k| on [0, 1]; sign q keeps its sign beyond that (its extremum on [0, 1]
-  // is at an end or at the vertex).
-  {
-    const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0;
-    const double tail = scale - std::abs(q0) - std::abs(q1) - std::abs(q2);
-    double q_min = std::min(q0, q0 + q1 + q2);
-    if (q2 > 0 && -q1 > 0 && -q1 < 2 * q2) q_min = std::min(q_min, q0 - q1 * q1 / (4 * q2));
-    if (q_min - tail > margin) return out;
-  }
+  // The cheap bound first, then the Bernstein hull.
+  if (QuadraticBoundExcludes(c, n, sign, tail)) return out;
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
 

@@ -7,6 +7,9 @@
 // for the Bernstein basis), which Brent's method then locates.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 namespace stickslip {
 
 struct PolyRoot {
@@ -22,11 +25,30 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign);
 // (Taylor shift by repeated synthetic division, then scaling).
 void RestrictToTail(const double* c, int n, double u, double* out);
 
-// Horner's rule at u.
+// Whether sign * c has no root on [0, 1], by its quadratic part: sign * (c0 +
+// c1 u + c2 u^2) stays above tail = sum_{k>=3} |c_k| by more than rounding (its
+// minimum on [0, 1] is at an end or at the vertex).
+inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail) {
+  const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0;
+  const double scale = std::abs(q0) + std::abs(q1) + std::abs(q2) + tail;
+  const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
+  double q_min = std::min(q0, q0 + q1 + q2);
+  if (q2 > 0 && -q1 > 0 && -q1 < 2 * q2) q_min = std::min(q_min, q0 - q1 * q1 / (4 * q2));
+  return q_min - tail > margin;
+}
+
+// The polynomial at u by Horner's rule in u^2 on its even and odd parts: two
+// independent chains of half the length (the latency of one chain bounds
+// plain Horner).
 inline double Horner(const double* c, int n, double u) {
-  double s = c[n];
-  for (int k = n - 1; k >= 0; --k) s = s * u + c[k];
-  return s;
+  const double u2 = u * u;
+  int k = n % 2 == 0 ? n : n - 1;  // highest even index
+  double even = c[k], odd = n % 2 == 1 ? c[n] : 0.0;
+  for (k -= 2; k >= 0; k -= 2) {
+    even = even * u2 + c[k];
+    odd = odd * u2 + c[k + 1];
+  }
+  return even + u * odd;
 }
 
 }  // namespace stickslip

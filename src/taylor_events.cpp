@@ -14,12 +14,20 @@ namespace stickslip {
 void TaylorStepper::Events(double h) {
   const int n = order_;
   double g[kNumRoots][kTaylorMaxOrder + 1];
-  double hk = 1;
-  for (int k = 0; k <= n; ++k, hk *= h) {
-    g[0][k] = g[2][k] = c_[1][k] * hk;
-    g[1][k] = k < n ? (k + 1) * c_[1][k + 1] * hk : 0.0;
+  g[0][0] = c_[1][0] - p_.model->v();
+  g[2][0] = c_[1][0];
+  g[1][0] = c_[1][1];
+  for (int k = 1; k <= n; ++k) {  // hp_: the powers of h
+    g[0][k] = g[2][k] = c_[1][k] * hp_[k];
+    g[1][k] = k < n ? (k + 1) * c_[1][k + 1] * hp_[k] : 0.0;
   }
-  g[0][0] -= p_.model->v();
+  // sum_{k>=3} |g_k| for the quadratic bound, once for g0 and g2 (they differ in g_0).
+  double tail02 = 0, tail1 = 0;
+  for (int k = 3; k <= n; ++k) {
+    tail02 += std::abs(g[2][k]);
+    tail1 += std::abs(g[1][k]);
+  }
+  const double tail[kNumRoots] = {tail02, tail1, tail02};
   const bool at_rest = p_.AtRest(c_[0][0], c_[1][0], c_[1][1]);
   Roots roots;
   for (int i = 0; i < kNumRoots; ++i) {
@@ -28,7 +36,7 @@ void TaylorStepper::Events(double h) {
       continue;
     }
     if (p_.stop_dir[i] == 0 && (i == 0 || !p_.extrema)) continue;  // not asked for
-    EventRoots(i, g[i], i == 1 ? n - 1 : n, roots);
+    EventRoots(i, g[i], i == 1 ? n - 1 : n, tail[i], roots);
   }
   // The passed extrema before the end of the step; each flips its sign.
   passed_root_ = false;
@@ -61,13 +69,14 @@ void TaylorStepper::Events(double h) {
 
 // The roots of g_i (degree deg) on (0, 1] in order, up to the first that
 // stops or beyond roots.first: passed ones go to roots.passed.
-void TaylorStepper::EventRoots(int i, const double* gi, int deg, Roots& roots) {
+void TaylorStepper::EventRoots(int i, const double* gi, int deg, double tail, Roots& roots) {
   // g0: an exact 0 counts as the mode's side; g1, g2: as positive (as the CVODE stepper).
   const int zero_sign = i == 0 && p_.mode == Mode::kSlipBelow ? -1 : 1;
   if (state_[i] == kInactive) state_[i] = kFresh;
   if (state_[i] == kFresh && gi[0] == 0) state_[i] = kDeflate;
   int sign, start_sign;  // g's sign after u = 0; sign_[i] before the passed roots
-  if (state_[i] == kDeflate) {
+  const bool deflated = state_[i] == kDeflate;
+  if (deflated) {
     // A root at the step start (a start on the surface, or the root just
     // returned) is not an event: g / u from there on.
     while (deg > 0 && gi[1] == 0) ++gi, --deg;
@@ -85,9 +94,10 @@ void TaylorStepper::EventRoots(int i, const double* gi, int deg, Roots& roots) {
   }
   sign_[i] = start_sign;
   state_[i] = kTracked;
+  if (!deflated && QuadraticBoundExcludes(gi, deg, sign, tail)) return;  // the common case
   const double* poly = gi;
   int d = deg;
-  double tail[kTaylorMaxOrder + 1];
+  double rest[kTaylorMaxOrder + 1];  // g on [u, 1] after a passed root
   double u0 = 0;
   for (int guard = 0; guard <= 2 * deg + 2; ++guard) {
     const PolyRoot r = FirstSignChange(poly, d, sign, zero_sign);
@@ -96,8 +106,8 @@ void TaylorStepper::EventRoots(int i, const double* gi, int deg, Roots& roots) {
     if (u > roots.first || roots.Add(i, u, -sign, p_.Stops(i, -sign)) || u >= 1) return;
     // Passed: go on from u with g / (w - u) (the root is not an event twice).
     sign = -sign;
-    RestrictToTail(gi, deg, u, tail);
-    poly = tail;
+    RestrictToTail(gi, deg, u, rest);
+    poly = rest;
     d = deg;
     while (d > 0 && poly[1] == 0) ++poly, --d;
     if (d == 0) return;

@@ -171,10 +171,26 @@ bool TaylorStepper::NewStep() {
     return Failed(os.str());
   }
   ++steps_;
-  tb_ = ta_ + h;
-  if (tb_ > tstop_) tb_ = tstop_;
+  tb_ = std::min(ta_ + h, tstop_);
+  h = tb_ - ta_;  // the step as t sees it
+  hp_[0] = 1;
+  for (int k = 1; k <= order_; ++k) hp_[k] = hp_[k - 1] * h;
+  for (int k = order_ + 1; k <= order_ + 3; ++k) hp_[k] = 0;  // the sums' blocks of four
   Events(h);
-  Evaluate(tb_ - ta_, yend_);
+  if (tb_ == ta_ + h) {  // not cut at a root: z(tb) = sum_k c_k h^k, in four partial sums
+    for (int i = 0; i < n_; ++i) {
+      double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+      for (int k = 0; k <= order_; k += 4) {  // past the order: finite c_, zero hp_
+        s0 += c_[i][k] * hp_[k];
+        s1 += c_[i][k + 1] * hp_[k + 1];
+        s2 += c_[i][k + 2] * hp_[k + 2];
+        s3 += c_[i][k + 3] * hp_[k + 3];
+      }
+      yend_[i] = (s0 + s1) + (s2 + s3);
+    }
+  } else {
+    Evaluate(tb_ - ta_, yend_);
+  }
   return true;
 }
 

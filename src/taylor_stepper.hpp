@@ -96,7 +96,8 @@ class TaylorStepper final : public Stepper {
       return true;
     }
   };
-  void EventRoots(int i, const double* gi, int deg, Roots& roots);
+  // tail: sum_{k>=3} |g_k| of gi (the quadratic bound).
+  void EventRoots(int i, const double* gi, int deg, double tail, Roots& roots);
 
   bool NewStep();
   void Coefficients(int order);
@@ -125,6 +126,7 @@ class TaylorStepper final : public Stepper {
   // This step's Taylor coefficients, kPad finite entries past the order for
   // Cauchy(); the series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
   double c_[8][kTaylorMaxOrder + 1 + kPad];
+  double hp_[kTaylorMaxOrder + 1 + kPad];  // powers of this step's h
   Series<kTaylorMaxOrder> s_, cc_;
   std::optional<MuSeries> mu_;
   // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
