@@ -66,7 +66,7 @@ struct ContinuationOptions {
   /// on a branch that spans the range).
   double max_step = 0.01;
   double min_step = 1e-7;     // fraction of |to - from| below which a branch fails
-  double locate_tol = 1e-11;  // special points, in the parameter
+  double locate_tol = 1e-13;  // special points, in the parameter (Brent's interval)
   int max_points = 20000;     // per branch
   /// Stick-slip multipliers by the variational equations (otherwise 0, which
   /// S_in = diag(1, 0) makes exact).
