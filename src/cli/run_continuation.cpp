@@ -21,6 +21,7 @@ struct Shared {
   std::mutex m;
   std::condition_variable cv;
   bool done = false, abandoned = false;
+  bool cancel = false;              // set by the main thread on a signal or --max_time
   std::vector<BranchPoint> points;  // as reported, for an abandoned run
   double last = 0;
   bool periodic = false;  // steady sliding comes first; then the periodic branches
@@ -44,14 +45,11 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
   auto sh = std::make_shared<Shared>();
   sh->last = opts.from;
   const std::string param = opts.param;
-  opts.cancelled = [sh, &run, param] {
+  // Polled after every integration step (a few microseconds): no clock here.
+  // The main thread below reads the clock every 50 ms and sets sh->cancel.
+  opts.cancelled = [sh, &run] {
     std::lock_guard<std::mutex> lock(sh->m);
-    if (sh->abandoned) return true;
-    if (run.HeartbeatDue())  // polled after every step: the line is built only when due
-      run.Heartbeat(sh->periodic
-                        ? "last periodic orbit at " + param + " = " + FormatNumber(sh->last)
-                        : std::string("searching for a periodic orbit"));
-    return run.Cancelled();
+    return sh->abandoned || sh->cancel || run.Signalled();
   };
   opts.progress = [sh, &run, opts](const BranchPoint& pt) {
     std::lock_guard<std::mutex> lock(sh->m);
@@ -83,7 +81,13 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
   double cancelled_at = -1;
   while (!sh->done && !sh->abandoned) {
     sh->cv.wait_for(lock, std::chrono::milliseconds(50));
-    if (cancelled_at < 0 && run.Cancelled()) cancelled_at = run.Elapsed();
+    if (sh->done) break;
+    run.Heartbeat(sh->periodic ? "last periodic orbit at " + param + " = " + FormatNumber(sh->last)
+                               : std::string("searching for a periodic orbit"));
+    if (cancelled_at < 0 && run.Cancelled()) {
+      cancelled_at = run.Elapsed();
+      sh->cancel = true;
+    }
     if (cancelled_at >= 0 && run.Elapsed() > cancelled_at + kGraceSeconds) sh->abandoned = true;
   }
   *abandoned = !sh->done;

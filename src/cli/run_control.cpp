@@ -49,6 +49,8 @@ double RunControl::Elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+bool RunControl::Signalled() const { return g_signal != 0; }
+
 bool RunControl::Cancelled() const {
   return g_signal != 0 || (max_time_ > 0 && Elapsed() > max_time_);
 }

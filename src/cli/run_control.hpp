@@ -23,6 +23,8 @@ class RunControl {
   // max_time <= 0: no limit.
   RunControl(std::string prog, double max_time);
   bool Cancelled() const;
+  // Whether a signal arrived (no clock read: for hooks polled very often).
+  bool Signalled() const;
   // Why Cancelled() is true: "interrupted by signal 2" or "time limit of 2 s
   // reached". Empty if it is not.
   std::string Reason() const;
