@@ -128,8 +128,11 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
   ReturnMap local;
   ReturnMap& rm = map ? *map : local;
   finder_.flow().set_parameter_column(axis_.name());
+  struct ColumnOff {  // also when Desingularised throws
+    Flow& flow;
+    ~ColumnOff() { flow.set_parameter_column(""); }
+  } off{finder_.flow()};
   const OrbitStatus s = finder_.Desingularised(a, g, ga, &rm);
-  finder_.flow().set_parameter_column("");
   if (s == OrbitStatus::kOk && rm.has_dpdp)
     *gp = (rm.dpdp + (rm.dpdx - 1.0) * SteadySlidingDp(axis_, q)) / a;
   return s;

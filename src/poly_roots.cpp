@@ -141,11 +141,13 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
         if (xs > u0 && xs < u1) x = xs;
       }
       for (int it = 0; it < 100; ++it) {
-        double gx = c[n], dg = 0;
-        for (int k = n - 1; k >= 0; --k) {
-          dg = dg * x + gx;
-          gx = gx * x + c[k];
+        double gk = c[n], dg = 0;  // g' by Horner; g itself as changed() evaluates it
+        for (int k = n - 1; k >= 1; --k) {
+          dg = dg * x + gk;
+          gk = gk * x + c[k];
         }
+        dg = dg * x + gk;
+        const double gx = g(x);
         (Sign(gx, zero_sign) != sign ? hi : lo) = x;
         double next = x - gx / dg;
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);

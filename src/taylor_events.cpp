@@ -45,6 +45,10 @@ void TaylorStepper::Events(double h) {
     if (r.u >= roots.first) continue;
     passed_root_ = true;
     sign_[r.i] = -sign_[r.i];
+    // A root passed at the step end, to rounding: the next step starts on it.
+    if (roots.first > 1 && (1 - r.u) * h <= 8e-16 * std::max(1.0, std::abs(tb_)))
+      state_[r.i] = kDeflate;
+    if (r.i == 0 || !p_.extrema) continue;  // x' = v passed (not switching): no extremum
     Extrema& e = *p_.extrema;
     if (r.i == 1) {
       const double xdot = Horner(c_[1], order_, r.u * h);

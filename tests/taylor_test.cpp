@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <utility>
 
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
@@ -185,7 +186,9 @@ TEST(Taylor, PassesExtremaAndStopsAtTheSectionOnTheClosedForm) {
   p.mu_k = 0.25;
   p.v = 1;
   const double R = 0.5, s0 = M_PI + 0.1;
-  for (double rtol : {1e-6, 1e-12}) {
+  // Steps measured: 16 at 1e-6, 9 at 1e-12; stopping at each of the three
+  // extrema passed would cost about three more.
+  for (auto [rtol, max_steps] : {std::pair{1e-6, 17L}, std::pair{1e-12, 10L}}) {
     const Model m(p);
     Flow flow(m, Taylor(rtol));
     StopRule stop;
@@ -200,7 +203,7 @@ TEST(Taylor, PassesExtremaAndStopsAtTheSectionOnTheClosedForm) {
     EXPECT_NEAR(r.x_max, p.mu_k + R, tol) << "rtol " << rtol;
     EXPECT_NEAR(r.xdot_min, -R, tol) << "rtol " << rtol;
     EXPECT_NEAR(r.xdot_max, R, tol) << "rtol " << rtol;
-    EXPECT_LT(flow.total_steps(), 40) << "rtol " << rtol;
+    EXPECT_LE(flow.total_steps(), max_steps) << "rtol " << rtol;
   }
 }
 

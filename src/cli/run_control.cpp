@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -15,7 +16,9 @@ namespace stickslip::cli {
 
 namespace {
 
-volatile std::sig_atomic_t g_signal = 0;
+// Read by the worker thread too: a lock-free atomic, safe in a signal handler.
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 void OnSignal(int sig) {
   if (g_signal != 0) {  // the second one: the default action, at once
