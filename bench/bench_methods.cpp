@@ -93,6 +93,36 @@ ss::PointKind KindOnBranch(const ss::ContinuationResult& res, double v) {
   return best ? best->kind : ss::PointKind::kEquilibrium;
 }
 
+// The 8 cycles of a simulation method at kV, timed (Repeat), into row: time,
+// steps, points, and the errors of what the cycles measured. touches(c): the
+// cycle reaches the belt speed (the GR bracket).
+template <class Cycle, class One, class Touches>
+std::vector<Cycle> TimeAndScore(const Reference& ref, One one, Touches touches, int min_reps,
+                                int max_reps, Row* row) {
+  std::vector<Cycle> cycles;
+  auto run = [&] {
+    cycles.clear();
+    for (double v : kV) cycles.push_back(one(Seed(v)));
+  };
+  const Times t = Repeat(run, min_reps, max_reps, 2.0);
+  row->t = t.Wall();
+  row->cpu = t.Cpu();
+  row->runs = t.runs();
+  std::vector<double> period, x_max, amplitude;
+  std::vector<bool> touch;
+  for (const Cycle& c : cycles) {
+    row->steps += c.steps;
+    row->points += c.ok;
+    period.push_back(c.ok ? c.period : kNan);
+    x_max.push_back(c.ok ? c.x_max : kNan);
+    amplitude.push_back(c.ok ? 0.5 * (c.x_max - c.x_min) : kNan);
+    touch.push_back(c.ok && touches(c));
+  }
+  Errors(ref, period, x_max, row);
+  SampledSpecialPoints(ref, touch, amplitude, row);
+  return cycles;
+}
+
 }  // namespace
 
 Row RunOurs(const Reference& ref, ss::Integrator integrator, ss::Method method, double rtol,
@@ -190,29 +220,11 @@ Row RunBrute(const Reference& ref, double rtol, double t_cap, int min_reps, int 
   bo.flow.atol = 1e-2 * rtol;
   bo.converge_tol = 10 * rtol;  // as tight as the integration allows
   bo.t_cap = t_cap;
-  std::vector<bench::BruteCycle> cycles;
-  auto run = [&] {
-    cycles.clear();
-    for (double v : kV) cycles.push_back(bench::BruteForce(Seed(v), bo));
-  };
-  const Times t = Repeat(run, min_reps, max_reps, 2.0);
-  row.t = t.Wall();
-  row.cpu = t.Cpu();
-  row.runs = t.runs();
-  std::vector<double> period, x_max, amplitude;
-  std::vector<bool> touches;
+  const auto cycles = TimeAndScore<bench::BruteCycle>(
+      ref, [&](const ss::Params& p) { return bench::BruteForce(p, bo); },
+      [](const bench::BruteCycle& c) { return c.t_stick > 0; }, min_reps, max_reps, &row);
   int capped = 0;
-  for (const auto& c : cycles) {
-    row.steps += c.steps;
-    row.points += c.ok;
-    capped += c.ok && !c.converged;
-    period.push_back(c.ok ? c.period : kNan);
-    x_max.push_back(c.ok ? c.x_max : kNan);
-    amplitude.push_back(c.ok ? 0.5 * (c.x_max - c.x_min) : kNan);
-    touches.push_back(c.ok && c.t_stick > 0);
-  }
-  Errors(ref, period, x_max, &row);
-  SampledSpecialPoints(ref, touches, amplitude, &row);
+  for (const auto& c : cycles) capped += c.ok && !c.converged;
   char buf[96];
   std::snprintf(buf, sizeof buf, "t_end %.0f at v=%.2f%s", cycles.back().t_end, kV.back(),
                 capped ? " (t_cap hit)" : "");
@@ -237,31 +249,13 @@ Row RunRegularised(const Reference& ref, double eps, double rtol, int min_reps, 
   so.eps = eps;
   so.rtol = rtol;
   so.atol = 1e-2 * rtol;
-  std::vector<bench::SmoothCycle> cycles;
-  auto run = [&] {
-    cycles.clear();
-    for (double v : kV) cycles.push_back(bench::RegularisedCycle(Seed(v), so));
-  };
-  const Times t = Repeat(run, min_reps, max_reps, 2.0);
-  row.t = t.Wall();
-  row.cpu = t.Cpu();
-  row.runs = t.runs();
-  std::vector<double> period, x_max, amplitude;
-  std::vector<bool> touches;
+  const auto cycles = TimeAndScore<bench::SmoothCycle>(
+      ref, [&](const ss::Params& p) { return bench::RegularisedCycle(p, so); },
+      [](const bench::SmoothCycle& c) { return c.touches; }, min_reps, max_reps, &row);
   std::string failed;
-  for (size_t i = 0; i < cycles.size(); ++i) {
-    const auto& c = cycles[i];
-    row.steps += c.steps;
-    row.points += c.ok;
-    if (!c.ok)
+  for (size_t i = 0; i < cycles.size(); ++i)
+    if (!cycles[i].ok)
       failed += (failed.empty() ? "no cycle at v=" : ",") + std::to_string(kV[i]).substr(0, 4);
-    period.push_back(c.ok ? c.period : kNan);
-    x_max.push_back(c.ok ? c.x_max : kNan);
-    amplitude.push_back(c.ok ? 0.5 * (c.x_max - c.x_min) : kNan);
-    touches.push_back(c.ok && c.touches);
-  }
-  Errors(ref, period, x_max, &row);
-  SampledSpecialPoints(ref, touches, amplitude, &row);
   row.note = failed;
   return row;
 }
