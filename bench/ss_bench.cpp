@@ -94,15 +94,12 @@ OrbitGoal SingleOrbit(bool quick) {
 // Continue() on the seed branch at the default options (issue 11's goal):
 // median wall and CPU time of reps calls.
 Times DefaultContinue(int reps, int* points) {
-  Times t;
-  for (int i = 0; i < reps; ++i) {
-    const double w0 = Now(), c0 = CpuNow();
-    const ss::ContinuationResult r = ss::Continue(ss::Params(), ss::ContinuationOptions());
-    t.wall.push_back(Now() - w0);
-    t.cpu.push_back(CpuNow() - c0);
-    *points = static_cast<int>(r.points.size());
-  }
-  return t;
+  return Repeat(
+      [&] {
+        const ss::ContinuationResult r = ss::Continue(ss::Params(), ss::ContinuationOptions());
+        *points = static_cast<int>(r.points.size());
+      },
+      reps, reps, 0.0);
 }
 
 int Main(int argc, char** argv) {

@@ -37,7 +37,7 @@ class MuSeries {
   // and mu'_k in *dmu when D (every call of this series passes the same D).
   template <LawKind L>
   void Begin(int order) {
-    const int rows = L == LawKind::kCubic ? (degree_ >= 5 ? 4 : 2) : L == LawKind::kCoulomb ? 0 : 3;
+    const int rows = L == LawKind::kCubic ? (degree_ >= 5 ? 3 : 1) : L == LawKind::kCoulomb ? 0 : 3;
     for (int r = 0; r < rows; ++r)
       for (int k = 0; k < order + kPad; ++k) w_[r].c()[k] = 0;
   }
@@ -57,7 +57,7 @@ class MuSeries {
   double mu_s_ = 0, a_ = 0, b_ = 0;
   double c_[6] = {0, 0, 0, 0, 0, 0};  // cubic: odd coefficients c_1, c_3, c_5
   int degree_ = 1;                    // cubic: highest odd degree with c_j != 0
-  // cubic: s^2..s^5 (rows 0..3); stribeck: u, E, j u_j; leine: D, Q, Q^2.
+  // cubic: s^2, -, s^4 (rows 0, 2); stribeck: u, E, j u_j; leine: D, Q, Q^2.
   Series<kMaxOrder> w_[4];
   double old_[4] = {0, 0, 0, 0};  // Old(k)'s sums, one per product
   double slope_ = 0;              // mu'(s_0)
@@ -67,7 +67,7 @@ class MuSeries {
 template <LawKind L, bool D>
 inline void MuSeries::Old(int k, const double* s) {
   if constexpr (L == LawKind::kCubic) {
-    // w_[d - 2] holds s^d: s^2 = s s, s^3 = s^2 s, s^4 = s^2 s^2, s^5 = s^4 s.
+    // Sums of the products s^2 = s s, s^3 = s^2 s, s^4 = s^2 s^2, s^5 = s^4 s.
     old_[0] = Cauchy(s, s, k);
     if (degree_ >= 3) old_[1] = Cauchy(w_[0].c(), s, k);
     if (degree_ >= 5) {
@@ -96,24 +96,20 @@ template <LawKind L, bool D>
 inline double MuSeries::New(int k, const double* s, double* dmu) {
   const double c0 = k == 0 ? 1.0 : 0.0;
   if constexpr (L == LawKind::kCubic) {
+    // Only s^2 and s^4 (rows 0, 2) enter later products; s^3 and s^5 are
+    // coefficient k of mu alone.
     double* w0 = w_[0].c();
-    double* w1 = w_[1].c();
     double* w2 = w_[2].c();
-    double* w3 = w_[3].c();
     w0[k] = SquareProduct(old_[0], s[0], s[k], k);
     if (k == 0) {
       s0_ = s[0];
       slope_ = c_[1] + w0[0] * (3 * c_[3] + 5 * c_[5] * w0[0]);
     }
     double mu = c0 * mu_s_ + c_[1] * s[k];
-    if (degree_ >= 3) {
-      w1[k] = Product(old_[1], w0[0], w0[k], s[0], s[k], k);
-      mu += c_[3] * w1[k];
-    }
+    if (degree_ >= 3) mu += c_[3] * Product(old_[1], w0[0], w0[k], s[0], s[k], k);
     if (degree_ >= 5) {
       w2[k] = SquareProduct(old_[2], w0[0], w0[k], k);
-      w3[k] = Product(old_[3], w2[0], w2[k], s[0], s[k], k);
-      mu += c_[5] * w3[k];
+      mu += c_[5] * Product(old_[3], w2[0], w2[k], s[0], s[k], k);
     }
     if constexpr (D) {
       *dmu = c0 * c_[1] + 3 * c_[3] * w0[k];
