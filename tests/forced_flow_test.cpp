@@ -44,7 +44,7 @@ void CompareWithReference(const Case& c, double tol, int min_events, double rtol
   const ForcedRun run = flow.Run(ForcedStart(m, 0, c.x0, c.xdot0), rq);
   ASSERT_EQ(run.status, ForcedStatus::kReached) << run.message;
 
-  ref::PieceSim<Piece> sim{SetupOf(c.p)};
+  ref::PieceSim<Piece> sim(SetupOf(c.p));
   Real t = 0, x = c.x0, y = c.xdot0;
   sim.Run(t, x, y, c.t_end);
   std::vector<ForcedEvent> lib;  // touches are no switch in the reference
@@ -125,7 +125,7 @@ TEST(ForcedFlow, JacobianMatchesClosedFormDifferences) {
     for (int col = 0; col < 2; ++col) {
       Real end[2][2];
       for (int sgn = 0; sgn < 2; ++sgn) {
-        ref::PieceSim<ref::CoulombPiece> sim{SetupOf(p)};
+        ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p));
         Real t = 0, x = x0 + (col == 0 ? (sgn ? d : -d) : 0),
              y = y0 + (col == 1 ? (sgn ? d : -d) : 0);
         sim.Run(t, x, y, rq.t_end);

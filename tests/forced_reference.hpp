@@ -117,6 +117,7 @@ Real Bisect(Pred pred, Real a, Real b) {
 // extrema of y - v and phi between grid points) and bisecting the first change.
 template <class Piece>
 struct PieceSim {
+  explicit PieceSim(const Setup& setup) : s(setup) {}
   Setup s;
   Real dt = 1e-3L;
   std::vector<Event> events;
