@@ -125,10 +125,12 @@ struct PieceSim {
   int sticks = 0, crossings = 0;
 
   // Runs to t_end; returns the state there.
-  void Run(Real& t, Real& x, Real& y, Real t_end) {
+  // start_sigma (+1 below, -1 above, 0 stick) overrides the start's mode.
+  void Run(Real& t, Real& x, Real& y, Real t_end, int start_sigma = 2) {
     int sigma = y < s.v ? 1 : (y > s.v ? -1 : 0);
     if (sigma == 0 && std::abs(s.StickForce(t, x)) > s.law.mu_s)  // not held: slips at once
       sigma = s.StickForce(t, x) > 0 ? 1 : -1;
+    if (start_sigma != 2) sigma = start_sigma;
     while (t < t_end) {
       x_max = std::max(x_max, x), x_min = std::min(x_min, x);
       if (sigma == 0) {

@@ -75,6 +75,7 @@ void Driver::Run(const ForcedPoint& start) {
     xd_ = m_.v();
     phi_ << 1, 0, 0, 0;  // stick has no x' direction
   }
+  on_surface_ = xd_ == m_.v();  // a slip start on x' = v (a stick exit): no event there
   run_.extremes.Add(x_, xd_);
   Sample();
   while (t_ < rq_.t_end && (mode_ == Mode::kStick ? Stick() : Slip())) {

@@ -51,3 +51,32 @@ ForcedOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0,
 void Multipliers(const Mat2& M, std::complex<double> out[2]);
 
 }  // namespace stickslip
+
+namespace stickslip {
+
+/// A stick-slip orbit as a fixed point of the exit-phase map (design.md
+/// section 5): from a stick exit at t_e, on the band's edge
+/// x_e = +-mu_s - 2 beta v + A cos(Omega t_e), x' = v, to the `sticks`-th
+/// next exit t'; the orbit closes when t' = t_e + m 2 pi / Omega.
+struct ForcedExitOrbit {
+  ForcedOrbitStatus status = ForcedOrbitStatus::kNoConvergence;
+  std::string message;
+  int m = 1, sticks = 1;  ///< forcing periods and stick phases per period of the orbit
+  double t_exit = 0;      ///< in [0, 2 pi / Omega)
+  double x_exit = 0;
+  Mode exit_mode = Mode::kSlipBelow;  ///< the slip mode it leaves into
+  /// dt'/dt_e = -(Phi w)_x / phi'(t'), w = (-phi'(t_e), -x''(t_e+)): the exit
+  /// map's derivative, the orbit's nontrivial multiplier (the other is 0).
+  double multiplier = 0;
+  bool stable = false;
+  int crossings = 0;
+  ForcedExtremes extremes;
+  int iterations = 0;
+  double update = 0;
+};
+
+/// Newton on t' - t_e - m T = 0 from the exit time t_guess into exit_mode.
+ForcedExitOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode exit_mode, int sticks,
+                               int m, const ForcedOrbitOptions& options);
+
+}  // namespace stickslip
