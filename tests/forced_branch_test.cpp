@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/orbit.hpp"
 
 namespace stickslip {
 namespace {
@@ -57,6 +58,52 @@ TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   EXPECT_EQ(p_max, 2.5);
   std::printf("[ measured ] %d non-stop rows: max |x_max - X| / max(1, X) = %.2e\n", compared,
               worst);
+}
+
+// A period doubling of stick-slip orbits on an undamped forced belt (coulomb
+// mu_s = 0.4, mu_k = 0.25, v = 0.2, beta = 0, A = 0.3): located on the
+// stroboscopic branch (det(DP + I) = 0), checked by the exit-phase map, whose
+// multiplier comes from the exit time's derivative instead.
+TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0, p.base.v = 0.2;
+  p.force = 0.3, p.omega = 0.8;
+  const ForcedModel m0(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m0.period();
+  const ForcedRun transient = ForcedFlow(m0, ForcedOptions()).Run(ForcedStart(m0, 0, 0, 0.2), rq);
+  ForcedBranchOptions o;
+  o.flow.rtol = o.flow.atol = 1e-14;
+  o.palc.ds_max = 0.05;
+  const ForcedBranch b =
+      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.x, transient.end.xdot, o);
+  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.special.size(), 1u);
+  const ForcedBranchRow& pd = b.special[0];
+  EXPECT_EQ(pd.label, ForcedLabel::kPD);
+  EXPECT_EQ(pd.sticks, 1);
+  EXPECT_NEAR(pd.multipliers[0].real(), -1, 1e-9);
+  // The exit-phase map at the located Omega: its multiplier is -1 there too.
+  p.omega = pd.p;
+  const ForcedModel m(p);
+  std::vector<ForcedEvent> events;
+  rq.t_end = m.period();
+  rq.events = &events;
+  ForcedFlow(m, o.flow).Run(ForcedStart(m, 0, pd.x0, pd.xdot0), rq);
+  double t_exit = -1;
+  Mode mode = Mode::kSlipBelow;
+  for (const auto& e : events)
+    if (e.kind == ForcedEventKind::kStickOut) t_exit = e.t, mode = e.after;
+  ASSERT_GE(t_exit, 0);
+  ForcedOrbitOptions oo;
+  oo.flow = o.flow;
+  const ForcedExitOrbit exit = ExitPhaseOrbit(m, t_exit, mode, 1, 1, oo);
+  ASSERT_EQ(exit.status, ForcedOrbitStatus::kConverged) << exit.message;
+  EXPECT_NEAR(exit.multiplier, -1, 1e-9);
+  EXPECT_NEAR(exit.extremes.x_max, pd.extremes.x_max, 1e-11);
+  std::printf("[ measured ] PD at Omega = %.15g: multiplier %.15g (strobe), %.15g (exit map)\n",
+              pd.p, pd.multipliers[0].real(), exit.multiplier);
 }
 
 }  // namespace

@@ -30,15 +30,15 @@ const char* ForcedBranchStatusName(ForcedBranchStatus s) {
 
 namespace {
 
-using forced_detail::StrobeProblem;
 using Eigen::VectorXd;
+using forced_detail::StrobeProblem;
 
 // Bisection on the chord a -> b for the sign change of test(): each point is
 // corrected onto the branch with the chord's direction held (Palc::Correct).
 bool Locate(Palc& palc, StrobeProblem& problem, const VectorXd& a, const VectorXd& b,
             double (StrobeProblem::*test)() const, double tol, ForcedBranchRow* out) {
-  const VectorXd chord = (b - a).cwiseQuotient(palc.options().scale.size() ? palc.options().scale
-                                                                            : VectorXd::Ones(3));
+  const VectorXd chord =
+      (b - a).cwiseQuotient(palc.options().scale.size() ? palc.options().scale : VectorXd::Ones(3));
   const VectorXd t = chord.normalized();
   auto at = [&](double s, double* g) {
     const PalcCorrection c = palc.Correct(a + s * (b - a), t);

@@ -72,8 +72,7 @@ std::string StrobeProblem::DomainError(const Eigen::VectorXd& u) const {
   std::string e = ValidationError(q);
   const double bound = 2 * o_.max_amplitude;  // rows stop at max_amplitude first
   if (e.empty() && !(std::abs(u[0]) <= bound && std::abs(u[1]) <= bound))
-    e = "|x| or |x'| = " + Num(std::max(std::abs(u[0]), std::abs(u[1]))) +
-        " beyond max_amplitude";
+    e = "|x| or |x'| = " + Num(std::max(std::abs(u[0]), std::abs(u[1]))) + " beyond max_amplitude";
   return e;
 }
 
