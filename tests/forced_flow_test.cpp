@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "forced_reference.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"
 
 namespace stickslip {
@@ -139,6 +140,65 @@ TEST(ForcedFlow, JacobianMatchesClosedFormDifferences) {
       }
     }
   }
+}
+
+// A = 0: the seed's belt. From the exit point (x0, v) to the next exit is the
+// belt's stick-slip orbit (long-double reference, reference/reference_orbit.hpp).
+TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
+  for (const LawKind law : {LawKind::kCubic, LawKind::kStribeck, LawKind::kCoulomb}) {
+    ForcedParams p;  // the seed set
+    p.base.law = law;
+    if (law == LawKind::kCoulomb) p.base.beta = 0;  // damped, its slip spirals into x = mu_k
+    const ForcedModel m(p);
+    ForcedOptions o;
+    o.rtol = o.atol = 1e-13;
+    ForcedRequest rq;
+    rq.t_end = 100;
+    rq.stop_at_exit = 1;
+    const double x0 = p.base.mu_s - 2 * p.base.beta * p.base.v;
+    const ForcedRun run = ForcedFlow(m, o).Run({0, x0, p.base.v, Mode::kSlipBelow}, rq);
+    ASSERT_EQ(run.exits, 1) << LawName(law) << ": " << run.message << " t = " << run.end.t;
+    const reference::StickSlipOrbit ref = reference::StickSlip(p.base);
+    ASSERT_TRUE(ref.found);
+    EXPECT_NEAR(run.end.t, static_cast<double>(ref.period), 1e-11) << LawName(law);
+    if (law == LawKind::kCoulomb)  // the closed form
+      EXPECT_NEAR(run.end.t, static_cast<double>(reference::CoulombPeriodBeta0(0.4L, 0.25L, 0.25L)),
+                  1e-12);
+    EXPECT_NEAR(run.extremes.x_max, static_cast<double>(ref.x_max), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.extremes.x_min, static_cast<double>(ref.x_min), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.extremes.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << LawName(law);
+  }
+}
+
+// v = 0 and |x| + A < mu_s: the block never leaves stick.
+TEST(ForcedFlow, HeldBlockStaysPut) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb, p.base.v = 0, p.base.mu_s = 0.4, p.base.mu_k = 0.3;
+  p.force = 0.2, p.omega = 1.7;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 50;
+  const ForcedRun run = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0.1, 0), rq);
+  EXPECT_EQ(run.end.mode, Mode::kStick);
+  EXPECT_EQ(run.end.x, 0.1);
+  EXPECT_EQ(run.end.t, 50);
+  EXPECT_EQ(run.exits, 0);
+}
+
+TEST(ForcedFlow, InvalidInputIsNamed) {
+  ForcedParams p;
+  p.force = -1;
+  EXPECT_NE(ValidationError(p).find("force"), std::string::npos);
+  p.force = 0.5, p.omega = 0;
+  EXPECT_NE(ValidationError(p).find("omega"), std::string::npos);
+  p.omega = 1, p.base.v = -0.1;
+  EXPECT_NE(ValidationError(p).find("v = "), std::string::npos);
+  EXPECT_THROW(ForcedModel{p}, InvalidArgument);
+  p.base.v = 0;
+  EXPECT_EQ(ValidationError(p), "");
+  ForcedOptions o;
+  o.rtol = 0;
+  EXPECT_THROW(ForcedFlow(ForcedModel(p), o), InvalidArgument);
 }
 
 }  // namespace
