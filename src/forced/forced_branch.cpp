@@ -7,6 +7,7 @@
 
 #include "forced_branch_problem.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/numbers.hpp"
 
 namespace stickslip {
 
@@ -137,6 +138,10 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
   if (!stopped) {
     out.status = FromPalc(r.status);
     out.message = r.message;
+    if (out.status == ForcedBranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
+      out.message += " after the row at " + std::string(ForcedAxisName(axis)) + " = " +
+                     Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
+                     " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
   }
   out.evaluations = palc.evaluations();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
