@@ -161,9 +161,10 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
     const reference::StickSlipOrbit ref = reference::StickSlip(p.base);
     ASSERT_TRUE(ref.found);
     EXPECT_NEAR(run.end.t, static_cast<double>(ref.period), 1e-11) << LawName(law);
-    if (law == LawKind::kCoulomb)  // the closed form
+    if (law == LawKind::kCoulomb) {  // the closed form
       EXPECT_NEAR(run.end.t, static_cast<double>(reference::CoulombPeriodBeta0(0.4L, 0.25L, 0.25L)),
                   1e-12);
+    }
     EXPECT_NEAR(run.extremes.x_max, static_cast<double>(ref.x_max), 1e-11) << LawName(law);
     EXPECT_NEAR(run.extremes.x_min, static_cast<double>(ref.x_min), 1e-11) << LawName(law);
     EXPECT_NEAR(run.extremes.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << LawName(law);

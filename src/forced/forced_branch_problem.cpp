@@ -82,6 +82,7 @@ bool StrobeProblem::End(const ForcedParams& q, const ForcedPoint& z, bool variat
   ForcedRequest rq;
   rq.t_end = o_.m * model.period();
   rq.variational = variational;
+  rq.extremes = variational;  // the parameter's differences need the end only
   *run = ForcedFlow(model, o_.flow).Run(ForcedStart(model, 0, z.x, z.xdot), rq);
   if (run->status == ForcedStatus::kReached) return true;
   *why = run->message;

@@ -173,11 +173,11 @@ bool Driver::SlipStep(double t_end) {
     run_.extremes.Add(out[0], out[1]);
     return true;
   };
-  if (m_.v() != 0) {  // x extrema (at v = 0 they are the arrivals)
+  if (rq_.extremes && m_.v() != 0) {  // x extrema (at v = 0 they are the arrivals)
     g0[0] = xd0;
     EachRoot(g0, n, xd0 > 0 ? 1 : -1, 1, extremum);
   }
-  EachRoot(g2, n - 1, g2[0] > 0 ? 1 : -1, 1, extremum);
+  if (rq_.extremes) EachRoot(g2, n - 1, g2[0] > 0 ? 1 : -1, 1, extremum);
   const bool hit = u_hit <= 1;
   const double tau = hit ? u_hit * h : h;
   series_.Evaluate(tau, out);

@@ -72,7 +72,9 @@ struct ForcedRun {
 struct ForcedRequest {
   double t_end = 0;
   bool variational = false;  ///< compute ForcedRun::jacobian
-  int stop_at_exit = 0;      ///< > 0: stop at that stick exit (end.mode is the slip mode)
+  /// Extremes inside steps too (roots of x' and x''); else only at step ends and events.
+  bool extremes = true;
+  int stop_at_exit = 0;  ///< > 0: stop at that stick exit (end.mode is the slip mode)
   std::vector<ForcedEvent>* events = nullptr;  ///< appended to when not null
   /// Step ends (and events) for drawing, appended to when not null.
   std::vector<ForcedPoint>* samples = nullptr;
