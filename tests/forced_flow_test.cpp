@@ -186,6 +186,42 @@ TEST(ForcedFlow, HeldBlockStaysPut) {
   EXPECT_EQ(run.exits, 0);
 }
 
+// A stick band edge reached for 1e-4 of a period only (max |phi| = mu_s + 1e-9):
+// the exit is still found, at its closed-form time acos(-(mu_s - x) / A) / Omega.
+TEST(ForcedFlow, BarelyReachedBandEdgeEndsTheStick) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb, p.base.v = 0, p.base.mu_s = 0.4, p.base.mu_k = 0.3;
+  p.force = 0.3 + 1e-9, p.omega = 1.7;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 10;
+  rq.stop_at_exit = 1;
+  const ForcedRun run = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0.1, 0), rq);
+  ASSERT_EQ(run.exits, 1);
+  EXPECT_NEAR(run.end.t, std::acos(-0.3 / p.force) / p.omega, 1e-9);
+  EXPECT_EQ(run.end.mode, Mode::kSlipBelow);
+}
+
+// A slip arc that rises above x' = v by 1e-10 only (coulomb, beta = 0, A = 0:
+// a circle of radius r = v + 1e-10 about (mu_k, 0)) arrives at
+// t = pi + asin(v / r): the touch is found inside a step.
+TEST(ForcedFlow, BarelyReachedSurfaceEndsTheSlip) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb, p.base.beta = 0, p.base.v = 0.25;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25;
+  p.force = 0;
+  const ForcedModel m(p);
+  const double r = 0.25 + 1e-10;
+  std::vector<ForcedEvent> events;
+  ForcedRequest rq;
+  rq.t_end = 10;
+  rq.events = &events;
+  ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0.25 + r, 0), rq);
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events[0].kind, ForcedEventKind::kStickIn);
+  EXPECT_NEAR(events[0].t, M_PI + std::asin(0.25 / r), 1e-9);
+}
+
 TEST(ForcedFlow, InvalidInputIsNamed) {
   ForcedParams p;
   p.force = -1;
