@@ -34,6 +34,8 @@ const char* ChartStatusName(ChartStatus s) {
       return "ok";
     case ChartStatus::kFailed:
       return "failed";
+    case ChartStatus::kPartial:
+      return "partial";
     case ChartStatus::kCancelled:
       return "cancelled";
   }
@@ -127,6 +129,10 @@ class Charter {
   void GrazingCurves();
   void FoldCurves();
   bool Stop(ChartResult& r, const TraceResult& t, CurveKind kind);
+  void CutShort(CurveKind kind, const Eigen::Vector2d& start, const std::string& why);
+  bool Halted() const {
+    return r_.status == ChartStatus::kFailed || r_.status == ChartStatus::kCancelled;
+  }
 
   Params base_;
   ChartOptions o_;
@@ -151,6 +157,16 @@ bool Charter::Stop(ChartResult& r, const TraceResult& t, CurveKind kind) {
   return false;
 }
 
+// The first curve cut short makes the chart partial; later ones are counted.
+void Charter::CutShort(CurveKind kind, const Eigen::Vector2d& start, const std::string& why) {
+  if (r_.status != ChartStatus::kOk) return;
+  r_.status = ChartStatus::kPartial;
+  std::ostringstream os;
+  os << CurveLabel(kind) << " curve from " << pl_.p1 << " = " << start[0] << ", " << pl_.p2 << " = "
+     << start[1] << " cut short: " << why;
+  r_.message = os.str();
+}
+
 void Charter::HopfCurves() {
   HopfCurveProblem problem(base_, pl_);
   TraceOptions to = TraceOpts();
@@ -163,6 +179,7 @@ void Charter::HopfCurves() {
     const auto t0 = Clock::now();
     const TraceResult t = TraceBothWays(problem, to, VectorXd(s.x), s.fixed);
     if (Stop(r_, t, CurveKind::kHopf)) return;
+    if (!t.cut.empty()) CutShort(CurveKind::kHopf, s.x, t.cut);
     Curve c;
     c.kind = CurveKind::kHopf;
     c.ends = t.ends;
@@ -202,6 +219,7 @@ void Charter::GrazingCurves() {
     const auto t0 = Clock::now();
     const TraceResult t = TraceBothWays(problem, TraceOpts(), VectorXd(s.x), s.fixed);
     if (Stop(r_, t, CurveKind::kGrazing)) return;
+    if (!t.cut.empty()) CutShort(CurveKind::kGrazing, s.x, t.cut);
     Curve c;
     c.kind = CurveKind::kGrazing;
     c.ends = t.ends;
@@ -290,6 +308,8 @@ void Charter::FoldCurves() {
         c.ends = "GH / GR-LP";
       }
     }
+    if (!t.cut.empty() && c.ends != "GH / GR-LP")
+      CutShort(CurveKind::kFold, Eigen::Vector2d(gh.p1, gh.p2), t.cut);
     c.seconds = Since(t0);
     r_.curves.push_back(std::move(c));
   }
@@ -298,8 +318,8 @@ void Charter::FoldCurves() {
 ChartResult Charter::Run() {
   const auto t0 = Clock::now();
   if (o_.hopf_curves) HopfCurves();
-  if (r_.status == ChartStatus::kOk && o_.grazing_curves) GrazingCurves();
-  if (r_.status == ChartStatus::kOk && o_.fold_curves) FoldCurves();
+  if (!Halted() && o_.grazing_curves) GrazingCurves();
+  if (!Halted() && o_.fold_curves) FoldCurves();
   // Codim-2 points found twice (from two curves or start points) are one.
   std::vector<Codim2Point> unique;
   for (const Codim2Point& p : r_.codim2) {
@@ -313,10 +333,15 @@ ChartResult Charter::Run() {
   for (const Curve& c : r_.curves)
     for (const CurvePoint& p : c.points) r_.unphysical_points += p.unphysical;
   r_.seconds = Since(t0);
-  if (r_.status == ChartStatus::kOk && o_.region_n1 > 0) {
+  if (!Halted() && o_.region_n1 > 0) {
     const auto t1 = Clock::now();
     r_.regions = ClassifyGrid(base_, o_, r_.curves);
     r_.region_seconds = Since(t1);
+    if (r_.regions.failed > 0 && r_.status == ChartStatus::kOk) {
+      r_.status = ChartStatus::kPartial;
+      r_.message = std::to_string(r_.regions.failed) +
+                   " region cells unclassified; first: " + r_.regions.failure;
+    }
   }
   return r_;
 }
