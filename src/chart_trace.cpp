@@ -15,7 +15,7 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   p.ds_min = 1e-6 * o.max_step;
   p.tol = o.tol;
   p.max_newton = 12;
-  p.max_points = 20000;
+  p.max_points = kMaxCurvePoints;
   p.scale = VectorXd::Constant(problem.unknowns(), o.other_scale);
   p.scale[o.i1] = o.plane.width1();
   p.scale[o.i1 + 1] = o.plane.width2();

@@ -157,7 +157,7 @@ std::string ValidationError(const Params& p) {
     const double x = GetParameter(p, name);
     const double lo = name == "k5" || name == "beta" ? 0.0 : kMinScale;
     if (x != 0 && !(x >= lo && x <= kMaxScale))
-      return name + " = " + Num(x) + " is outside [" + Num(kMinScale) + ", " + Num(kMaxScale) +
+      return name + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
              "]: scales beyond it make the computation meaningless";
   }
   return "";

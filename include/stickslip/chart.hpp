@@ -71,14 +71,19 @@ struct RegionGrid {
   Region at(int i, int j) const { return cells[static_cast<size_t>(i) * n2 + j]; }
 };
 
+// Points per way of a curve (PALC max_points): a way longer than this is cut
+// short, so max_step must be >= 1 / kMaxCurvePoints.
+constexpr int kMaxCurvePoints = 20000;
+
 struct ChartOptions {
   ChartOptions() { orbit.max_return_time = 50; }
   Plane plane;
   // max_return_time 50 (default): a first return takes about one revolution,
   // 2 pi / sqrt(1 - beta^2); longer runs are orbits running away.
   OrbitOptions orbit;
-  double max_step = 0.01;            // largest continuation step, fraction of the rectangle
-  int samples = 16;                  // test-function samples per start line
+  double max_step =
+      0.01;          // largest continuation step, fraction of the rectangle, >= 1/kMaxCurvePoints
+  int samples = 16;  // test-function samples per start line
   bool hopf_curves = true;           // HB curves and GH points
   bool grazing_curves = true;        // GR curves and GR-LP points
   bool fold_curves = true;           // LP curves from GH points
