@@ -1,5 +1,6 @@
 #include "stickslip/chart.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -259,8 +260,10 @@ void Charter::FoldCurves() {
   to.i1 = 1;
   to.other_scale = 0.5;
   // dG/da is noisy at small a (the integration error over a^2), the fold is
-  // ill-conditioned in a: Newton stalls at ~1e-7 in a, not in the parameters.
-  to.tol = 1e-10;
+  // ill-conditioned in a: Newton stalls at ~1e-7 in a, not in the parameters
+  // (stalls are accepted, palc.hpp). The stopping test follows the integration
+  // tolerance: a fixed 1e-10 left the rows 3e-12 off at any rtol.
+  to.tol = std::max(1e-13, 10 * o_.orbit.flow.rtol);
   // An orbit that reaches the belt speed is on the GR curve: the fold ends there.
   to.stop = [&](const VectorXd& u) {
     const FoldSample s = problem.Sample(u);
