@@ -94,6 +94,15 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
     throw cli::UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
                           ": must be in [2, 1000]");
   if (!args.Flag("no_plots")) opts.region_n1 = opts.region_n2 = static_cast<int>(grid);
+  // A plane error names the option it is about, with where it came from.
+  const ss::PlaneError pe = pl.Check(*base);
+  if (!pe.message.empty()) {
+    const std::string key = ss::PlaneInputKey(pe.input);
+    const std::string who = pe.input == ss::PlaneInput::kRectangle
+                                ? args.Source("to") + ", " + args.Source("to2")
+                                : args.Source(key.empty() ? "param" : key);
+    throw cli::UsageError(who + ": " + pe.message);
+  }
   const std::string err = opts.ValidationError(*base);
   if (!err.empty()) throw cli::UsageError(err);
   return opts;
