@@ -45,8 +45,8 @@ bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 
 // Small, quick runs of the two apps (about 0.5 s and 2 s).
 const std::vector<std::string> kChartArgs = {"--grid", "8"};
 const std::vector<std::string> kBasinArgs = {"--nx", "5", "--ny", "5"};
-const std::vector<std::string> kChartFiles = {"curves.tsv", "codim2.tsv", "regions.tsv",
-                                              "chart.gp", "chart.png"};
+const std::vector<std::string> kChartFiles = {"curves.tsv", "codim2.tsv", "regions.tsv", "chart.gp",
+                                              "chart.png"};
 const std::vector<std::string> kBasinFiles = {"basins.tsv", "orbits.tsv", "basins.gp",
                                               "basins.png"};
 
@@ -110,7 +110,8 @@ TEST_F(Skeleton, ChartAndBasinRefuseWhatIsNotARegularFile) {
     std::string app;
     std::vector<std::string> args, files;
   };
-  for (const Case& c : {Case{kChart, kChartArgs, kChartFiles}, Case{kBasin, kBasinArgs, kBasinFiles}})
+  for (const Case& c :
+       {Case{kChart, kChartArgs, kChartFiles}, Case{kBasin, kBasinArgs, kBasinFiles}})
     for (const std::string& name : c.files) {
       const std::string at = Path("w/" + name);
       for (const std::string kind : {"fifo", "symlink", "device"}) {
@@ -152,11 +153,14 @@ TEST_F(Skeleton, TwoRunsOnOneOutLeaveOneWholeSet) {
     std::string app;
     std::vector<std::string> a, b, tsvs;
   };
-  const Case cases[] = {
-      {kChart, With(kChartArgs, {"--to", "0.5"}), With(kChartArgs, {"--to", "0.45"}),
-       {"curves.tsv", "codim2.tsv", "regions.tsv"}},
-      {kBasin, With(kBasinArgs, {"--t_cap", "1000"}), With(kBasinArgs, {"--t_cap", "1500"}),
-       {"basins.tsv", "orbits.tsv"}}};
+  const Case cases[] = {{kChart,
+                         With(kChartArgs, {"--to", "0.5"}),
+                         With(kChartArgs, {"--to", "0.45"}),
+                         {"curves.tsv", "codim2.tsv", "regions.tsv"}},
+                        {kBasin,
+                         With(kBasinArgs, {"--t_cap", "1000"}),
+                         With(kBasinArgs, {"--t_cap", "1500"}),
+                         {"basins.tsv", "orbits.tsv"}}};
   for (const Case& c : cases) {
     const std::string out = Path(c.app == kChart ? "w/c" : "w/b");
     for (int pair = 0; pair < 2; ++pair) {
@@ -165,7 +169,8 @@ TEST_F(Skeleton, TwoRunsOnOneOutLeaveOneWholeSet) {
       EXPECT_EQ(Wait(a, Launch{}).code, 0) << c.app;
       EXPECT_EQ(Wait(b, Launch{}).code, 0) << c.app;
       std::set<std::string> commands;
-      for (const auto& t : c.tsvs) commands.insert(ReadTsv(ReadFile(out + "/" + t)).meta["command"]);
+      for (const auto& t : c.tsvs)
+        commands.insert(ReadTsv(ReadFile(out + "/" + t)).meta["command"]);
       EXPECT_EQ(commands.size(), 1u) << c.app << ": a mixed set";
       const bool first = commands.begin()->find(" " + c.a.back() + " ") != std::string::npos;
       // The chart's script belongs to the same run (its title names the range).
@@ -201,7 +206,8 @@ TEST_F(Skeleton, MissingGnuplotExitsThreeAndRemovesTheStaleFigure) {
 TEST_F(Skeleton, SignalAndTimeLimitStopGnuplotPromptly) {
   Launch l = Logged();
   l.path_env = FakeGnuplot() + ":/usr/bin:/bin";
-  for (const auto& [app, args] : {std::make_pair(kChart, kChartArgs), std::make_pair(kBasin, kBasinArgs)}) {
+  for (const auto& [app, args] :
+       {std::make_pair(kChart, kChartArgs), std::make_pair(kBasin, kBasinArgs)}) {
     ::unlink(Path("bin/pid").c_str());
     pid_t gp = 0;
     const pid_t pid = StartUntilPlotting(app, With(args, {"--out", Path("w")}), l, &gp);
@@ -292,7 +298,7 @@ TEST_F(Skeleton, ContinueStopsPromptlyInEveryPhase) {
   const std::vector<std::string> args = {"--max_step", "1e-4", "--no_plots", "--out", Path("w")};
   Outcome r = Run(kContinue, With(args, {"--max_time", "1"}));
   EXPECT_EQ(r.code, 1) << err_;
-  EXPECT_LT(r.seconds, 1.6) << err_;  // 1.2 s on an idle machine
+  EXPECT_LT(r.seconds, 2.0) << err_;  // 1.4 s at load 12 on 2 cores; before: 3.9 to 6.2 s
   EXPECT_TRUE(Contains(err_, "time limit of 1 s reached"));
   for (const double after : {0.5, 1.2, 2.0, 2.6, 3.2}) {
     Launch l;
@@ -300,7 +306,8 @@ TEST_F(Skeleton, ContinueStopsPromptlyInEveryPhase) {
     l.signal_after = after;
     r = Run(kContinue, args, l);
     if (r.seconds < after) continue;  // it ended before the signal
-    EXPECT_LT(r.seconds - after, 0.4) << "SIGINT at " << after << " s: " << err_;
+    // 0.25 to 0.36 s at load 12 on 2 cores (writing the branch so far); before: 1 to 4.8 s.
+    EXPECT_LT(r.seconds - after, 1.0) << "SIGINT at " << after << " s: " << err_;
     EXPECT_EQ(r.code, 1) << err_;
   }
 }
@@ -320,8 +327,9 @@ TEST_F(Skeleton, StiffCvodeRunStopsPromptlyOnSignal) {
   Launch l;
   l.signal = SIGINT;
   l.signal_after = 1.0;
-  const Outcome r = Run(kContinue, {"--integrator", "cvode", "--method", "adams", "--v_m", "1e-6",
-                                    "--no_plots", "--no_estimates", "--out", Path("w")},
+  const Outcome r = Run(kContinue,
+                        {"--integrator", "cvode", "--method", "adams", "--v_m", "1e-6",
+                         "--no_plots", "--no_estimates", "--out", Path("w")},
                         l);
   if (r.seconds < 1.0) GTEST_SKIP() << "ended before the signal";
   EXPECT_LT(r.seconds - 1.0, 0.5) << err_;

@@ -24,7 +24,7 @@ constexpr const char* kNotes =
     "value` lines list the periodic orbits and the smallest disturbance), orbits.tsv (each\n"
     "periodic orbit sampled), basins.gp and basins.png (.pdf, .svg with --format).\n"
     "A start is undecided if it has not settled by --t_cap.\n"
-    "The files are written as one set (README, Reliability).\n"
+    "The files are written as one set (docs/reliability.md).\n"
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
     "An interrupted or failed run writes the starts so far, marked partial.\n";
 constexpr const char* kExample = "\nExample: ss_basin --study studies/stribeck_basin.ini";
@@ -112,9 +112,14 @@ int Main(int argc, char** argv) {
     return 0;
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
+<<<<<<< HEAD
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::string figure = ss::FigureFile("basins", format);
   cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", figure});
+=======
+  cli::AppRun app(kProg, args, "plots/basin",
+                  {"basins.tsv", "orbits.tsv", "basins.gp", "basins.png"});
+>>>>>>> main
   cli::RunControl& run = app.run();
   const ss::Model model(p);
 

@@ -26,8 +26,10 @@ constexpr const char* kNotes =
     "multiplier and its type, LP fold of pure-slip orbits), codim2.tsv (GH generalized\n"
     "Hopf, GR-LP where the grazing type changes), regions.tsv, chart.gp and chart.png (.pdf, .svg "
     "with --format).\n"
-    "The files are written as one set (README, Reliability); with --no_plots the older\n"
+    "The files are written as one set (docs/reliability.md); with --no_plots the older\n"
     "regions.tsv, chart.gp and chart.png are removed.\n"
+    "Solver defaults of this app (the Solver group above states them): --max_steps 20000,\n"
+    "and a first return is given up after time 50; a longer run is an orbit running away.\n"
     "Study files: model and solver keys at top level, this app's keys in [chart].\n"
     "An interrupted or failed run writes the curves so far, marked partial.\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
@@ -93,6 +95,15 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
     throw cli::UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
                           ": must be in [2, 1000]");
   if (!args.Flag("no_plots")) opts.region_n1 = opts.region_n2 = static_cast<int>(grid);
+  // A plane error names the option it is about, with where it came from.
+  const ss::PlaneError pe = pl.Check(*base);
+  if (!pe.message.empty()) {
+    const std::string key = ss::PlaneInputKey(pe.input);
+    const std::string who = pe.input == ss::PlaneInput::kRectangle
+                                ? args.Source("to") + ", " + args.Source("to2")
+                                : args.Source(key.empty() ? "param" : key);
+    throw cli::UsageError(who + ": " + pe.message);
+  }
   const std::string err = opts.ValidationError(*base);
   if (!err.empty()) throw cli::UsageError(err);
   return opts;
