@@ -112,14 +112,9 @@ int Main(int argc, char** argv) {
     return 0;
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
-<<<<<<< HEAD
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::string figure = ss::FigureFile("basins", format);
   cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", figure});
-=======
-  cli::AppRun app(kProg, args, "plots/basin",
-                  {"basins.tsv", "orbits.tsv", "basins.gp", "basins.png"});
->>>>>>> main
   cli::RunControl& run = app.run();
   const ss::Model model(p);
 
