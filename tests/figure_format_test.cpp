@@ -87,6 +87,7 @@ TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
   const std::string seed = " --study " + kStudies + "/seed.ini";
   for (FigureFormat f : {FigureFormat::kPdf, FigureFormat::kSvg}) {
     const std::string ext = FigureFormatName(f), out = dir_ + "/" + ext;
+    ASSERT_EQ(::mkdir(out.c_str(), 0755), 0);
     ASSERT_EQ(Run("ss_continue", seed + " --format " + ext + " --out " + out + "/c"), 0) << err_;
     for (const std::string& fig : BifurcationFigures(true, f)) {
       EXPECT_EQ(cli::FigureError(out + "/c/" + fig), "") << fig;
