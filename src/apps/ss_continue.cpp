@@ -30,10 +30,10 @@ namespace {
 
 constexpr const char* kProg = "ss_continue";
 constexpr const char* kNotes =
-    "Outputs in --out, written as one set (README, Reliability): branch.tsv (one row per\n"
+    "Outputs in --out, written as one set (docs/reliability.md): branch.tsv (one row per\n"
     "point; kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet\n"
     "multiplier, for the equilibrium the largest real part of its eigenvalues; then\n"
-    "dist_x dist_xdot dist_energy newton_stalled, README),\n"
+    "dist_x dist_xdot dist_energy newton_stalled; every column in docs/formats.md),\n"
     "special_points.tsv (GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its\n"
     "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
     "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
@@ -273,7 +273,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
             const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates) {
   cli::RunControl& run = app.run();
   const double seconds = run.Elapsed();
-  const std::string model = cli::DescribeModel(base);
+  const std::string model = cli::DescribeModel(base, opts.param, opts.from, opts.to);
   ss::EstimateComparison cmp;
   if (estimates && !run.Cancelled()) cmp = Estimates(base, opts, r, run);
   // Estimate columns first (the figure script counts on their numbers), then
