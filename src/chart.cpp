@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "stickslip/chart_region_faces.hpp"
 #include "stickslip/chart_regions.hpp"
 #include "stickslip/chart_trace.hpp"
 #include "stickslip/errors.hpp"
@@ -317,6 +318,11 @@ ChartResult Charter::Run() {
     const auto t1 = Clock::now();
     r_.regions = ClassifyGrid(base_, o_, r_.curves);
     r_.region_seconds = Since(t1);
+  }
+  if (r_.status == ChartStatus::kOk && o_.region_faces) {
+    const auto t1 = Clock::now();
+    r_.faces = ClassifyFaces(base_, o_, r_.curves);
+    r_.face_seconds = Since(t1);
   }
   return r_;
 }

@@ -8,6 +8,8 @@
 #include <set>
 #include <utility>
 
+#include "chart_segments.hpp"
+
 namespace stickslip {
 
 namespace {
@@ -19,29 +21,6 @@ using Ring = std::vector<int>;
 P Sub(const P& a, const P& b) { return {a[0] - b[0], a[1] - b[1]}; }
 double Cross(const P& a, const P& b) { return a[0] * b[1] - a[1] * b[0]; }
 double Dot(const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1]; }
-
-// Liang-Barsky clipping of the segment ab to the unit square.
-bool Clip(P& a, P& b) {
-  double t0 = 0, t1 = 1;
-  const P d = Sub(b, a);
-  const double p[4] = {-d[0], d[0], -d[1], d[1]};
-  const double q[4] = {a[0], 1 - a[0], a[1], 1 - a[1]};
-  for (int k = 0; k < 4; ++k) {
-    if (p[k] == 0) {
-      if (q[k] < 0) return false;
-      continue;
-    }
-    const double r = q[k] / p[k];
-    if (p[k] < 0)
-      t0 = std::max(t0, r);
-    else
-      t1 = std::min(t1, r);
-    if (t0 > t1) return false;
-  }
-  b = {a[0] + t1 * d[0], a[1] + t1 * d[1]};
-  a = {a[0] + t0 * d[0], a[1] + t0 * d[1]};
-  return true;
-}
 
 // Points within kTol of each other are one vertex.
 class Vertices {
@@ -68,7 +47,7 @@ class Vertices {
 
 // The segments' graph: split at every crossing (and touching end), in the
 // unit square.
-std::vector<std::array<int, 2>> SplitSegments(std::vector<std::array<P, 2>> segs, Vertices& v) {
+std::vector<std::array<int, 2>> SplitSegments(const std::vector<Segment>& segs, Vertices& v) {
   std::vector<std::vector<double>> ts(segs.size(), std::vector<double>{0.0, 1.0});
   for (size_t i = 0; i < segs.size(); ++i) {
     const P r = Sub(segs[i][1], segs[i][0]);
@@ -299,20 +278,10 @@ P InteriorPoint(const std::vector<P>& v, const Ring& outer, const std::vector<Ri
 std::vector<Face> ArrangementFaces(const Plane& plane,
                                    const std::vector<std::vector<Point2>>& polylines,
                                    const std::function<int(const Point2&)>& label) {
-  auto unit = [&](const P& p) -> P {
-    return {(p[0] - plane.from1) / plane.width1(), (p[1] - plane.from2) / plane.width2()};
-  };
   auto real = [&](const P& u) -> P {
     return {plane.from1 + u[0] * plane.width1(), plane.from2 + u[1] * plane.width2()};
   };
-  std::vector<std::array<P, 2>> segs{
-      {P{0, 0}, P{1, 0}}, {P{1, 0}, P{1, 1}}, {P{1, 1}, P{0, 1}}, {P{0, 1}, P{0, 0}}};
-  for (const auto& line : polylines)
-    for (size_t i = 0; i + 1 < line.size(); ++i) {
-      P a = unit(line[i]), b = unit(line[i + 1]);
-      if (!std::isfinite(a[0] + a[1] + b[0] + b[1]) || !Clip(a, b)) continue;
-      if (std::hypot(b[0] - a[0], b[1] - a[1]) > kTol) segs.push_back({a, b});
-    }
+  const std::vector<Segment> segs = UnitSegments(plane, polylines);
   Vertices vertices;
   const std::vector<std::array<int, 2>> edges = SplitSegments(segs, vertices);
   const std::vector<P>& v = vertices.points();
