@@ -124,7 +124,10 @@ std::string AxisLabel(const std::string& name) {
 }
 
 std::string ChartTitle(const Params& base, const Plane& plane) {
-  std::string t = std::string("Stability chart, ") + LawName(base.law) + " law";
+  const char* law[] = {"cubic", "Coulomb", "Stribeck", "Leine"};  // LawKind's order
+  const int k = static_cast<int>(base.law);
+  std::string t = std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : LawName(base.law)) +
+                  " law";
   const char* sep = ": ";
   for (const auto& name : ParameterNames(base.law)) {
     if (name == plane.p1 || name == plane.p2) continue;
@@ -150,7 +153,10 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "set xrange [" << plane.from1 << ":" << plane.to1 << "]\n"
      << "set yrange [" << plane.from2 << ":" << plane.to2 << "]\n"
      << "set title \"" << title << "\"\n"
-     << "set key outside center bottom horizontal maxrows 3 width 1 samplen 3\n"
+     << "set lmargin at screen 0.11\nset rmargin at screen 0.96\n"
+     << "set tmargin at screen 0.93\nset bmargin at screen 0.25\n"
+     << "set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 "
+        "samplen 3\n"
      << "set tics out nomirror\nset border 3 front\n";
   Polygons(os, r);
   Codim2Labels(os, r, plane);

@@ -93,6 +93,18 @@ TEST(ChartFaces, DanglingCurvesDoNotSplit) {
   for (const Face& f : two) EXPECT_GT(Clearance(f, f.inside), 0.1);
 }
 
+TEST(ChartFaces, EndsNearTheBorderOrACurveAreJoined) {
+  // Traced curves end on the border or on another curve to the continuation's
+  // accuracy: 1e-4 short of x = 1, a curve still splits the square; a second
+  // one ending 1e-4 short of the first splits the right part.
+  const auto faces = Distinct(kUnit, {{{0, 0.5}, {0.9999, 0.5}}, {{0.6, 0}, {0.6, 0.4999}}});
+  ASSERT_EQ(faces.size(), 3u);
+  const auto a = Areas(faces);
+  EXPECT_NEAR(a[0], 0.2, 1e-12);
+  EXPECT_NEAR(a[1], 0.3, 1e-12);
+  EXPECT_NEAR(a[2], 0.5, 1e-12);
+}
+
 TEST(ChartFaces, ClosedCurveInsideIsAHole) {
   const auto faces =
       Distinct(kUnit, {{{0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}, {0.25, 0.25}}});
