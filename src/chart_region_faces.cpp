@@ -1,5 +1,7 @@
 #include "stickslip/chart_region_faces.hpp"
 
+#include <sstream>
+
 #include "stickslip/chart_faces.hpp"
 #include "stickslip/chart_regions.hpp"
 #include "stickslip/hopf_curve.hpp"
@@ -7,7 +9,7 @@
 namespace stickslip {
 
 std::vector<RegionFace> ClassifyFaces(const Params& base, const ChartOptions& o,
-                                      const std::vector<Curve>& curves) {
+                                      const std::vector<Curve>& curves, std::string* failure) {
   const Plane& pl = o.plane;
   std::vector<std::vector<Point2>> lines;
   // The pure-slip check needs a fold of pure-slip orbits (as ClassifyGrid).
@@ -22,7 +24,15 @@ std::vector<RegionFace> ClassifyFaces(const Params& base, const ChartOptions& o,
   }
   OrbitFinder finder(Model(base), o.orbit);
   const std::vector<Face> faces = ArrangementFaces(pl, lines, [&](const Point2& x) {
-    return static_cast<int>(ClassifyPoint(finder, pl.At(base, x[0], x[1]), check));
+    std::string why;
+    const Region region = ClassifyPoint(finder, pl.At(base, x[0], x[1]), check, &why);
+    if (!why.empty() && failure && failure->empty()) {
+      std::ostringstream os;
+      os << "region of the face classified at " << pl.p1 << " = " << x[0] << ", " << pl.p2 << " = "
+         << x[1] << ": stick-slip orbit: " << why;
+      *failure = os.str();
+    }
+    return static_cast<int>(region);
   });
   std::vector<RegionFace> out;
   for (const Face& f : faces) out.push_back({f, static_cast<Region>(f.label)});

@@ -15,7 +15,7 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   p.ds_min = 1e-6 * o.max_step;
   p.tol = o.tol;
   p.max_newton = 12;
-  p.max_points = 20000;
+  p.max_points = kMaxCurvePoints;
   p.scale = VectorXd::Constant(problem.unknowns(), o.other_scale);
   p.scale[o.i1] = o.plane.width1();
   p.scale[o.i1 + 1] = o.plane.width2();
@@ -25,6 +25,7 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
 struct Leg {
   std::vector<VectorXd> u;
   std::string end;
+  std::string cut;  // the way ended early (a PALC failure): why
   int evaluations = 0;
   bool cancelled = false, stopped = false, closed = false;
 };
@@ -107,6 +108,7 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
     leg.end = "border";
   } else if (!leg.cancelled) {
     leg.end = std::string(PalcStatusName(r.status)) + (r.message.empty() ? "" : ": " + r.message);
+    leg.cut = leg.end;
   }
   leg.evaluations = palc.evaluations() - before;
   return leg;
@@ -121,6 +123,7 @@ TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const
   TraceResult t;
   t.u = leg.u;
   t.ends = "start / " + leg.end;
+  t.cut = leg.cut;
   t.evaluations = leg.evaluations;
   t.cancelled = leg.cancelled;
   t.stopped = leg.stopped;
@@ -135,6 +138,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   const PalcCorrection c = palc.CorrectFixed(u0, fixed);
   if (!c.ok) {
     t.ends = "start failed: " + c.why;
+    t.cut = t.ends;
     t.evaluations = palc.evaluations();
     return t;
   }
@@ -156,6 +160,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   if (!t.u.empty() && !fwd.u.empty()) t.u.pop_back();  // the shared start
   t.u.insert(t.u.end(), fwd.u.begin(), fwd.u.end());
   t.ends = fwd.closed ? "closed" : (back.end.empty() ? "start" : back.end) + " / " + fwd.end;
+  t.cut = back.cut.empty() ? fwd.cut : back.cut;
   t.evaluations = palc.evaluations();
   return t;
 }

@@ -15,7 +15,9 @@ namespace {
 
 // The region from all the periodic orbits at p.
 Region RegionFromOrbits(const Params& p) {
-  const PeriodicOrbits o = FindPeriodicOrbits(Model(p), OrbitScanOptions{});
+  OrbitScanOptions options;
+  options.orbit.floquet = true;  // the pure-slip orbits' stability
+  const PeriodicOrbits o = FindPeriodicOrbits(Model(p), options);
   EXPECT_TRUE(o.ok()) << o.message;
   bool stable_pure_slip = false;
   for (const Orbit& orbit : o.pure_slip) stable_pure_slip = stable_pure_slip || orbit.stable;
@@ -53,6 +55,22 @@ TEST(ChartRegionFaces, QuinticChartFacesAgreeWithOrbitScan) {
   Params p;
   p.k5 = 0.24;
   ExpectFacesAgreeWithOrbits(p, Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12}, 4);
+}
+
+TEST(ChartRegionFaces, StribeckChartFacesAgreeWithOrbitScan) {
+  // studies/stribeck_chart.ini: subcritical, bistable between HB and GR.
+  Params p;
+  p.law = LawKind::kStribeck;
+  p.mu_s = 0.4, p.mu_k = 0.25, p.v_s = 0.5;
+  ExpectFacesAgreeWithOrbits(p, Plane{"v", "beta", 0.05, 1.2, 0.01, 0.14}, 3);
+}
+
+TEST(ChartRegionFaces, LeineChartFacesAgreeWithOrbitScan) {
+  // studies/leine_chart.ini: stick-slip below HB, bistable up to GR.
+  Params p;
+  p.law = LawKind::kLeine;
+  p.mu_s = 1, p.delta = 3;
+  ExpectFacesAgreeWithOrbits(p, Plane{"v", "beta", 0.05, 1.5, 0, 0.3}, 3);
 }
 
 }  // namespace

@@ -100,6 +100,15 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   // The regions are polygons between the curves; the grid only checks them.
   opts.region_faces = !args.Flag("no_plots");
   if (opts.region_faces) opts.region_n1 = opts.region_n2 = static_cast<int>(grid);
+  // A plane error names the option it is about, with where it came from.
+  const ss::PlaneError pe = pl.Check(*base);
+  if (!pe.message.empty()) {
+    const std::string key = ss::PlaneInputKey(pe.input);
+    const std::string who = pe.input == ss::PlaneInput::kRectangle
+                                ? args.Source("to") + ", " + args.Source("to2")
+                                : args.Source(key.empty() ? "param" : key);
+    throw cli::UsageError(who + ": " + pe.message);
+  }
   const std::string err = opts.ValidationError(*base);
   if (!err.empty()) throw cli::UsageError(err);
   return opts;
