@@ -292,7 +292,7 @@ TEST_F(Skeleton, ContinueStopsPromptlyInEveryPhase) {
   const std::vector<std::string> args = {"--max_step", "1e-4", "--no_plots", "--out", Path("w")};
   Outcome r = Run(kContinue, With(args, {"--max_time", "1"}));
   EXPECT_EQ(r.code, 1) << err_;
-  EXPECT_LT(r.seconds, 1.6) << err_;  // 1.2 s on an idle machine
+  EXPECT_LT(r.seconds, 2.0) << err_;  // 1.4 s at load 12 on 2 cores; before: 3.9 to 6.2 s
   EXPECT_TRUE(Contains(err_, "time limit of 1 s reached"));
   for (const double after : {0.5, 1.2, 2.0, 2.6, 3.2}) {
     Launch l;
@@ -300,7 +300,8 @@ TEST_F(Skeleton, ContinueStopsPromptlyInEveryPhase) {
     l.signal_after = after;
     r = Run(kContinue, args, l);
     if (r.seconds < after) continue;  // it ended before the signal
-    EXPECT_LT(r.seconds - after, 0.4) << "SIGINT at " << after << " s: " << err_;
+    // 0.25 to 0.36 s at load 12 on 2 cores (writing the branch so far); before: 1 to 4.8 s.
+    EXPECT_LT(r.seconds - after, 1.0) << "SIGINT at " << after << " s: " << err_;
     EXPECT_EQ(r.code, 1) << err_;
   }
 }

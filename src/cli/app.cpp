@@ -66,7 +66,8 @@ int AppRun::ExitCode(const std::string& partial) const {
     return kExitFailed;
   }
   if (run_.Cancelled()) {
-    PrintError(prog_, run_.Reason() + " while " + run_.phase() + ": the files are written" +
+    PrintError(prog_, run_.Reason() + " while " + run_.cancelled_phase() +
+                          ": the files are written" +
                           (gnuplot_.ok() ? "" : ", figures not drawn"));
     return kExitFailed;
   }
