@@ -28,8 +28,9 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     return out;
   }
   if (base.k5 != 0 || param == "k5") {
-    out.reason = std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
-                 (param == "k5" ? ", and k5 is the continued parameter" : "");
+    out.reason =
+        std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
+        (param == "k5" ? ", and k5 is the continued parameter" : "");
     return out;
   }
   out.applies = true;

@@ -45,8 +45,8 @@ bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 
 // Small, quick runs of the two apps (about 0.5 s and 2 s).
 const std::vector<std::string> kChartArgs = {"--grid", "8"};
 const std::vector<std::string> kBasinArgs = {"--nx", "5", "--ny", "5"};
-const std::vector<std::string> kChartFiles = {"curves.tsv", "codim2.tsv", "regions.tsv",
-                                              "chart.gp", "chart.png"};
+const std::vector<std::string> kChartFiles = {"curves.tsv", "codim2.tsv", "regions.tsv", "chart.gp",
+                                              "chart.png"};
 const std::vector<std::string> kBasinFiles = {"basins.tsv", "orbits.tsv", "basins.gp",
                                               "basins.png"};
 
@@ -110,7 +110,8 @@ TEST_F(Skeleton, ChartAndBasinRefuseWhatIsNotARegularFile) {
     std::string app;
     std::vector<std::string> args, files;
   };
-  for (const Case& c : {Case{kChart, kChartArgs, kChartFiles}, Case{kBasin, kBasinArgs, kBasinFiles}})
+  for (const Case& c :
+       {Case{kChart, kChartArgs, kChartFiles}, Case{kBasin, kBasinArgs, kBasinFiles}})
     for (const std::string& name : c.files) {
       const std::string at = Path("w/" + name);
       for (const std::string kind : {"fifo", "symlink", "device"}) {
@@ -152,11 +153,14 @@ TEST_F(Skeleton, TwoRunsOnOneOutLeaveOneWholeSet) {
     std::string app;
     std::vector<std::string> a, b, tsvs;
   };
-  const Case cases[] = {
-      {kChart, With(kChartArgs, {"--to", "0.5"}), With(kChartArgs, {"--to", "0.45"}),
-       {"curves.tsv", "codim2.tsv", "regions.tsv"}},
-      {kBasin, With(kBasinArgs, {"--t_cap", "1000"}), With(kBasinArgs, {"--t_cap", "1500"}),
-       {"basins.tsv", "orbits.tsv"}}};
+  const Case cases[] = {{kChart,
+                         With(kChartArgs, {"--to", "0.5"}),
+                         With(kChartArgs, {"--to", "0.45"}),
+                         {"curves.tsv", "codim2.tsv", "regions.tsv"}},
+                        {kBasin,
+                         With(kBasinArgs, {"--t_cap", "1000"}),
+                         With(kBasinArgs, {"--t_cap", "1500"}),
+                         {"basins.tsv", "orbits.tsv"}}};
   for (const Case& c : cases) {
     const std::string out = Path(c.app == kChart ? "w/c" : "w/b");
     for (int pair = 0; pair < 2; ++pair) {
@@ -165,7 +169,8 @@ TEST_F(Skeleton, TwoRunsOnOneOutLeaveOneWholeSet) {
       EXPECT_EQ(Wait(a, Launch{}).code, 0) << c.app;
       EXPECT_EQ(Wait(b, Launch{}).code, 0) << c.app;
       std::set<std::string> commands;
-      for (const auto& t : c.tsvs) commands.insert(ReadTsv(ReadFile(out + "/" + t)).meta["command"]);
+      for (const auto& t : c.tsvs)
+        commands.insert(ReadTsv(ReadFile(out + "/" + t)).meta["command"]);
       EXPECT_EQ(commands.size(), 1u) << c.app << ": a mixed set";
       const bool first = commands.begin()->find(" " + c.a.back() + " ") != std::string::npos;
       // The chart's script belongs to the same run (its title names the range).
@@ -201,7 +206,8 @@ TEST_F(Skeleton, MissingGnuplotExitsThreeAndRemovesTheStaleFigure) {
 TEST_F(Skeleton, SignalAndTimeLimitStopGnuplotPromptly) {
   Launch l = Logged();
   l.path_env = FakeGnuplot() + ":/usr/bin:/bin";
-  for (const auto& [app, args] : {std::make_pair(kChart, kChartArgs), std::make_pair(kBasin, kBasinArgs)}) {
+  for (const auto& [app, args] :
+       {std::make_pair(kChart, kChartArgs), std::make_pair(kBasin, kBasinArgs)}) {
     ::unlink(Path("bin/pid").c_str());
     pid_t gp = 0;
     const pid_t pid = StartUntilPlotting(app, With(args, {"--out", Path("w")}), l, &gp);
@@ -321,8 +327,9 @@ TEST_F(Skeleton, StiffCvodeRunStopsPromptlyOnSignal) {
   Launch l;
   l.signal = SIGINT;
   l.signal_after = 1.0;
-  const Outcome r = Run(kContinue, {"--integrator", "cvode", "--method", "adams", "--v_m", "1e-6",
-                                    "--no_plots", "--no_estimates", "--out", Path("w")},
+  const Outcome r = Run(kContinue,
+                        {"--integrator", "cvode", "--method", "adams", "--v_m", "1e-6",
+                         "--no_plots", "--no_estimates", "--out", Path("w")},
                         l);
   if (r.seconds < 1.0) GTEST_SKIP() << "ended before the signal";
   EXPECT_LT(r.seconds - 1.0, 0.5) << err_;

@@ -163,11 +163,17 @@ TEST_F(Reliability, CancelledRunNamesWhereTheBranchStopped) {
   ASSERT_EQ(r.code, 1) << err_;
   std::istringstream rows(ReadFile(Path("w/branch.tsv")));
   std::string line, last;
-  while (std::getline(rows, line))
-    if (!line.empty() && line[0] != '#' && line.find("\tequilibrium\t") == std::string::npos)
+  bool header = true;  // the first line without '#' names the columns
+  while (std::getline(rows, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header && line.find("\tequilibrium\t") == std::string::npos)
       last = line.substr(0, line.find('\t'));
-  ASSERT_FALSE(last.empty()) << "no periodic row after 0.5 s";
-  EXPECT_TRUE(Contains(err_, "cancelled at v = " + last + " "));
+    header = false;
+  }
+  if (last.empty())  // a heavily loaded machine: cut before the first orbit, and saying so
+    EXPECT_TRUE(Contains(err_, "cancelled before the first periodic orbit"));
+  else
+    EXPECT_TRUE(Contains(err_, "cancelled at v = " + last + " "));
   EXPECT_FALSE(Contains(err_, "cancelled at v = 0.5 "));
 }
 

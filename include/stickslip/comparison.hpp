@@ -43,7 +43,7 @@ struct SpecialComparison {
 
 /// The whole comparison: per-point rows, largest errors and branch.tsv columns.
 struct EstimateComparison {
-  bool applies = false;  // cubic law without k5 (and k5 not the continued parameter)
+  bool applies = false;    // cubic law without k5 (and k5 not the continued parameter)
   bool cancelled = false;  // cut short: the rows so far, nan in the columns after them
   std::string reason;
   std::vector<ExtraColumn> columns;  // for branch.tsv, one value per point

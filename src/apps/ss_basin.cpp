@@ -24,7 +24,7 @@ constexpr const char* kNotes =
     "value` lines list the periodic orbits and the smallest disturbance), orbits.tsv (each\n"
     "periodic orbit sampled), basins.gp and basins.png.\n"
     "A start is undecided if it has not settled by --t_cap.\n"
-    "The files are written as one set (README, Reliability).\n"
+    "The files are written as one set (docs/reliability.md).\n"
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
     "An interrupted or failed run writes the starts so far, marked partial.\n";
 constexpr const char* kExample = "\nExample: ss_basin --study studies/stribeck_basin.ini";
@@ -39,7 +39,8 @@ po::options_description AppOptions() {
       "xdot_min", cli::Value()->value_name("Y"), "")("xdot_max", cli::Value()->value_name("Y"), "")(
       "t_cap", cli::Value()->value_name("T"),
       "time after which a start is undecided (default 2000)");
-  cli::AddRunOptions(d, "plots/basin", "write the TSV files and the script, but do not run gnuplot");
+  cli::AddRunOptions(d, "plots/basin",
+                     "write the TSV files and the script, but do not run gnuplot");
   return d;
 }
 
@@ -111,7 +112,8 @@ int Main(int argc, char** argv) {
     return 0;
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
-  cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", "basins.png"});
+  cli::AppRun app(kProg, args, "plots/basin",
+                  {"basins.tsv", "orbits.tsv", "basins.gp", "basins.png"});
   cli::RunControl& run = app.run();
   const ss::Model model(p);
 

@@ -27,8 +27,10 @@ constexpr const char* kNotes =
     "multiplier and its type, LP fold of pure-slip orbits), codim2.tsv (GH generalized\n"
     "Hopf, GR-LP where the grazing type changes), regions.tsv (the regions as polygons\n"
     "between the curves, each classified at one interior point), chart.gp and chart.png.\n"
-    "The files are written as one set (README, Reliability); with --no_plots the older\n"
+    "The files are written as one set (docs/reliability.md); with --no_plots the older\n"
     "regions.tsv, chart.gp and chart.png are removed.\n"
+    "Solver defaults of this app (the Solver group above states them): --max_steps 20000,\n"
+    "and a first return is given up after time 50; a longer run is an orbit running away.\n"
     "Study files: model and solver keys at top level, this app's keys in [chart].\n"
     "An interrupted or failed run writes the curves so far, marked partial.\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
@@ -122,9 +124,8 @@ std::string DescribeChart(const ss::Params& base, const ss::Plane& pl) {
   for (const auto& name : ss::ParameterNames(base.law))
     if (name != pl.p1 && name != pl.p2)
       model += " " + name + "=" + ss::FormatNumber(ss::GetParameter(base, name));
-  return model + " " + pl.p1 + "=[" + ss::FormatNumber(pl.from1) + ", " +
-         ss::FormatNumber(pl.to1) + "] " + pl.p2 + "=[" + ss::FormatNumber(pl.from2) + ", " +
-         ss::FormatNumber(pl.to2) + "]";
+  return model + " " + pl.p1 + "=[" + ss::FormatNumber(pl.from1) + ", " + ss::FormatNumber(pl.to1) +
+         "] " + pl.p2 + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
 }
 
 int Main(int argc, char** argv) {

@@ -86,9 +86,9 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
     while (!sh->done) {
       sh->cv.wait_for(lock, std::chrono::milliseconds(50));
       if (sh->done) break;
-      run.Heartbeat(sh->periodic ? "last periodic orbit at " + param + " = " +
-                                       FormatNumber(sh->last)
-                                 : std::string("searching for a periodic orbit"));
+      run.Heartbeat(sh->periodic
+                        ? "last periodic orbit at " + param + " = " + FormatNumber(sh->last)
+                        : std::string("searching for a periodic orbit"));
       if (run.Cancelled()) sh->cancel = true;
     }
   }
