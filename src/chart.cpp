@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "stickslip/chart_region_faces.hpp"
 #include "stickslip/chart_regions.hpp"
 #include "stickslip/chart_trace.hpp"
 #include "stickslip/errors.hpp"
@@ -346,6 +347,16 @@ ChartResult Charter::Run() {
       r_.status = ChartStatus::kPartial;
       r_.message = std::to_string(r_.regions.failed) +
                    " region cells unclassified; first: " + r_.regions.failure;
+    }
+  }
+  if (!Halted() && o_.region_faces) {
+    const auto t1 = Clock::now();
+    std::string failure;
+    r_.faces = ClassifyFaces(base_, o_, r_.curves, &failure);
+    r_.face_seconds = Since(t1);
+    if (!failure.empty() && r_.status == ChartStatus::kOk) {
+      r_.status = ChartStatus::kPartial;
+      r_.message = failure;
     }
   }
   return r_;

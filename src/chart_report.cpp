@@ -48,67 +48,31 @@ TsvTable Codim2Table(const ChartResult& r, const Plane& plane, const std::string
 }
 
 TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::string& model) {
-  TsvTable t({plane.p1, plane.p2, "region", "name"});
+  TsvTable t({"face", "region", "name", "ring", plane.p1, plane.p2});
   Header(t, r, model);
-  const RegionGrid& g = r.regions;
-  for (int i = 0; i < g.n1; ++i)
-    for (int j = 0; j < g.n2; ++j)
-      t.AddRow({g.x1[i], g.x2[j], static_cast<int>(g.at(i, j)), RegionName(g.at(i, j))});
-  return t;
-}
-
-std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
-                        FigureFormat format) {
-  std::ostringstream os;
-  os << "# Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.\n"
-     << "# Shading: regions.tsv. Curves: HB black (solid supercritical, dashed subcritical),\n"
-     << "# GR red (solid persistence, dashed nonsmooth fold), LP blue. Points: codim2.tsv.\n"
-     << "if (!exists('suffix')) suffix = ''\n"
-     << FigureTerminal(format, 1100, 800)
-     << "set output '" << FigureFile("chart", format) << "'.suffix\n"
-     << "set datafile separator '\\t'\n"
-     << "set datafile columnheaders\n"
-     << "set xlabel '" << plane.p1 << "' noenhanced\nset ylabel '" << plane.p2 << "' noenhanced\n"
-     << "set xrange [" << plane.from1 << ":" << plane.to1 << "]\n"
-     << "set yrange [" << plane.from2 << ":" << plane.to2 << "]\n"
-     << "set title '" << title << "' noenhanced\n"
-     << "set key outside right top\n"
-     << "set palette defined (0 '#f2f2f2', 1 '#f2f2f2', 1 '#f4a6a6', 2 '#f4a6a6', "
-     << "2 '#a6c8f4', 3 '#a6c8f4', 3 '#d9b3ef', 4 '#d9b3ef')\n"
-     << "set cbrange [-0.5:3.5]\nunset colorbox\n"
-     << "plot ";
-  const char* names[] = {"steady sliding only", "stick-slip", "pure-slip oscillation", "bistable"};
-  const char* colors[] = {"#f2f2f2", "#f4a6a6", "#a6c8f4", "#d9b3ef"};
-  if (r.regions.n1 > 0) os << "'regions.tsv' using 1:2:3 with image notitle, \\\n     ";
-  for (int k = 0; k < 4; ++k)
-    os << "NaN with boxes fs solid 1.0 lc rgb '" << colors[k] << "' title '" << names[k]
-       << "', \\\n     ";
-  bool titled[3] = {false, false, false};
-  for (size_t i = 0; i < r.curves.size(); ++i) {
-    const CurveKind kind = r.curves[i].kind;
-    const int k = static_cast<int>(kind);
-    const char* color = kind == CurveKind::kHopf      ? "black"
-                        : kind == CurveKind::kGrazing ? "red"
-                                                      : "blue";
-    const char* solid = kind == CurveKind::kHopf      ? "supercritical"
-                        : kind == CurveKind::kGrazing ? "persistence"
-                                                      : "fold";
-    const char* what[] = {"HB (dashed: subcritical)", "GR (dashed: nonsmooth fold)",
-                          "LP (pure-slip fold)"};
-    for (int dashed : {0, 1}) {
-      if (kind == CurveKind::kFold && dashed) continue;
-      os << "'curves.tsv' using 1:(($4 == " << i + 1 << " && (strcol(9) eq '" << solid
-         << "') == " << (dashed ? 0 : 1) << ") ? $2 : NaN) with lines lw 2.5 lc rgb '" << color
-         << "' dt " << (dashed ? 2 : 1) << " "
-         << (titled[k] || dashed ? std::string("notitle") : "title '" + std::string(what[k]) + "'")
-         << ", \\\n     ";
-      titled[k] = titled[k] || !dashed;
-    }
+  t.AddComment(
+      "one row per polygon vertex, each ring closed (its first vertex repeated); ring 0 "
+      "is the face's outline, 1, 2, ... its holes; faces largest first");
+  for (size_t k = 0; k < r.faces.size(); ++k) {
+    const Face& f = r.faces[k].face;
+    std::ostringstream os;
+    os << "face " << k + 1 << ": " << RegionName(r.faces[k].region) << ", area "
+       << FormatNumber(f.area) << ", classified at " << plane.p1 << " = "
+       << FormatNumber(f.inside[0]) << ", " << plane.p2 << " = " << FormatNumber(f.inside[1]);
+    t.AddComment(os.str());
   }
-  os << "'codim2.tsv' using 2:3 with points pt 7 ps 1.5 lc rgb 'black' notitle, \\\n"
-     << "     'codim2.tsv' using 2:3:1 with labels offset 1.5,0.8 font ',12' notitle\n"
-     << "unset output\n";
-  return os.str();
+  for (size_t k = 0; k < r.faces.size(); ++k) {
+    const RegionFace& rf = r.faces[k];
+    std::vector<const std::vector<Point2>*> rings{&rf.face.outer};
+    for (const auto& h : rf.face.holes) rings.push_back(&h);
+    for (size_t ring = 0; ring < rings.size(); ++ring)
+      for (size_t i = 0; i <= rings[ring]->size(); ++i) {
+        const Point2& p = (*rings[ring])[i % rings[ring]->size()];
+        t.AddRow({static_cast<int>(k + 1), static_cast<int>(rf.region), RegionName(rf.region),
+                  static_cast<int>(ring), p[0], p[1]});
+      }
+  }
+  return t;
 }
 
 }  // namespace stickslip

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/chart_faces.hpp"
 #include "stickslip/orbit.hpp"
 #include "stickslip/plane.hpp"
 
@@ -71,6 +72,12 @@ struct RegionGrid {
   Region at(int i, int j) const { return cells[static_cast<size_t>(i) * n2 + j]; }
 };
 
+// A region as a polygon between the curves (chart_region_faces.hpp).
+struct RegionFace {
+  Face face;  // face.label is the region's number
+  Region region = Region::kSteadyOnly;
+};
+
 // Points per way of a curve (PALC max_points): a way longer than this is cut
 // short, so max_step must be >= 1 / kMaxCurvePoints.
 constexpr int kMaxCurvePoints = 20000;
@@ -94,7 +101,8 @@ struct ChartOptions {
   bool hopf_curves = true;           // HB curves and GH points
   bool grazing_curves = true;        // GR curves and GR-LP points
   bool fold_curves = true;           // LP curves from GH points
-  int region_n1 = 0, region_n2 = 0;  // region grid; 0: none
+  bool region_faces = false;         // the regions as polygons between the curves
+  int region_n1 = 0, region_n2 = 0;  // region grid, a check of the polygons; 0: none
   std::function<bool()> cancelled;   // polled between points
   // Empty if valid for base, else one line naming the violated constraint.
   std::string ValidationError(const Params& base) const;
@@ -114,9 +122,11 @@ struct ChartResult {
   std::string message;
   std::vector<Curve> curves;
   std::vector<Codim2Point> codim2;
+  std::vector<RegionFace> faces;  // region_faces: largest first (drawing order)
   RegionGrid regions;
   int unphysical_points = 0;  // curve points whose orbit visits mu <= 0
   double seconds = 0, region_seconds = 0;
+  double face_seconds = 0;  // region_faces: their arrangement and classification
   int points() const;
 };
 

@@ -10,6 +10,7 @@
 #include "cli/app.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart.hpp"
+#include "stickslip/chart_region_faces.hpp"
 #include "stickslip/chart_report.hpp"
 #include "stickslip/report.hpp"
 
@@ -24,8 +25,9 @@ constexpr const char* kNotes =
     "Outputs in --out (each written whole or not at all): curves.tsv (one row per curve\n"
     "point: HB Hopf with its first Lyapunov coefficient l1, GR grazing with the pure-slip\n"
     "multiplier and its type, LP fold of pure-slip orbits), codim2.tsv (GH generalized\n"
-    "Hopf, GR-LP where the grazing type changes), regions.tsv, chart.gp and chart.png (.pdf, .svg "
-    "with --format).\n"
+    "Hopf, GR-LP where the grazing type changes), regions.tsv (the regions as polygons\n"
+    "between the curves, each classified at one interior point), chart.gp and chart.png\n"
+    "(.pdf, .svg with --format).\n"
     "The files are written as one set (docs/reliability.md); with --no_plots the older\n"
     "regions.tsv, chart.gp and chart.png are removed.\n"
     "Solver defaults of this app (the Solver group above states them): --max_steps 20000,\n"
@@ -46,7 +48,9 @@ po::options_description AppOptions() {
       "max_step", cli::Value()->value_name("F"),
       "largest continuation step, fraction of the rectangle (default 0.01)")(
       "grid", cli::Value()->value_name("N"),
-      "region grid: N x N cells for the shading (default 48)");
+      "also classify an N x N grid of cell centres, a check of the region polygons: the "
+      "summary counts the cells whose region differs from the polygon drawn there "
+      "(default 0: none)");
   cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
   return d;
 }
@@ -57,10 +61,13 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
   std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, pl.p1.c_str(),
               pl.p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
               r.seconds * 1e3);
-  if (!figure.empty())
-    std::printf(" (regions %d x %d in %.1f ms)", r.regions.n1, r.regions.n2,
-                r.region_seconds * 1e3);
+  if (!figure.empty()) std::printf(" (%zu region polygons in %.1f ms)", r.faces.size(), r.face_seconds * 1e3);
   std::printf("\n");
+  if (r.regions.n1 > 0)
+    std::printf(
+        "grid check: %d of %d x %d cell centres differ from the polygon drawn there (%.1f ms)\n",
+        ss::GridDisagreements(r.faces, r.regions), r.regions.n1, r.regions.n2,
+        r.region_seconds * 1e3);
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ss::Curve& c = r.curves[i];
     std::printf("  curve %zu %s: %zu points, %d evaluations, %.1f ms, ends %s\n", i + 1,
@@ -90,11 +97,13 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   *base = cli::ModelFromArguments(args);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args, opts.orbit.flow);
   opts.max_step = args.Number("max_step", opts.max_step);
-  const long grid = args.Integer("grid", 48);
-  if (grid < 2 || grid > 1000)
+  const long grid = args.Integer("grid", 0);
+  if (grid != 0 && (grid < 2 || grid > 1000))
     throw cli::UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
-                          ": must be in [2, 1000]");
-  if (!args.Flag("no_plots")) opts.region_n1 = opts.region_n2 = static_cast<int>(grid);
+                          ": must be 0 (none) or in [2, 1000]");
+  // The regions are polygons between the curves; the grid only checks them.
+  opts.region_faces = !args.Flag("no_plots");
+  if (opts.region_faces) opts.region_n1 = opts.region_n2 = static_cast<int>(grid);
   // A plane error names the option it is about, with where it came from.
   const ss::PlaneError pe = pl.Check(*base);
   if (!pe.message.empty()) {
@@ -159,7 +168,7 @@ int Main(int argc, char** argv) {
   app.out().Write("codim2.tsv", text(ss::Codim2Table(r, pl, model)));
   if (app.plots()) {
     app.out().Write("regions.tsv", text(ss::RegionsTable(r, pl, model)));
-    app.out().Write("chart.gp", ss::ChartScript(r, pl, model, format));
+    app.out().Write("chart.gp", ss::ChartScript(r, pl, ss::ChartTitle(base, pl), format));
   }
   // Without plots, the older regions and figure do not belong to these curves.
   const std::vector<std::string> stale = app.plots()
