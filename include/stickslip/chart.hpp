@@ -80,7 +80,15 @@ struct ChartOptions {
   bool grazing_curves = true;        // GR curves and GR-LP points
   bool fold_curves = true;           // LP curves from GH points
   int region_n1 = 0, region_n2 = 0;  // region grid; 0: none
-  std::function<bool()> cancelled;   // polled between points
+  // Points given by the caller (a restart's HB or GR point), on or near a
+  // curve of their kind: each is followed (p2 held while it is corrected)
+  // before the start points the scan finds. LP seeds are not supported.
+  struct Seed {
+    CurveKind kind = CurveKind::kHopf;
+    double p1 = 0, p2 = 0;
+  };
+  std::vector<Seed> seeds;
+  std::function<bool()> cancelled;  // polled between points
   // Empty if valid for base, else one line naming the violated constraint.
   std::string ValidationError(const Params& base) const;
 };

@@ -14,6 +14,7 @@
 
 #include "cli/about.hpp"
 #include "cli/output.hpp"
+#include "cli/restart.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart.hpp"
 #include "stickslip/chart_report.hpp"
@@ -54,6 +55,7 @@ po::options_description AppOptions() {
       "grid", cli::Value()->value_name("N"),
       "region grid: N x N cells for the shading (default 48)")(
       "no_plots", po::bool_switch(), "only curves.tsv and codim2.tsv: no regions, no gnuplot");
+  cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;
 }
 
@@ -102,7 +104,8 @@ int Main(int argc, char** argv) {
     return 0;
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
-  pl.p1 = args.Text("param", "v");
+  const auto restart = cli::RestartFromArguments(args);
+  pl.p1 = args.Text("param", restart ? restart->param : "v");
   pl.p2 = args.Text("param2", "beta");
   pl.from1 = args.Number("from", 0.05);
   pl.to1 = args.Number("to", 0.6);
@@ -110,8 +113,11 @@ int Main(int argc, char** argv) {
   pl.to2 = args.Number("to2", 0.25);
   // The base model is validated at the rectangle's corner; its own values of
   // the two axes are never used.
-  const ss::Params base = cli::ModelFromArguments(args);
-  opts.orbit.flow = cli::FlowOptionsFromArguments(args);
+  const ss::Params base =
+      cli::ModelFromArguments(args, "", 0, restart ? restart->params : ss::Params());
+  opts.orbit.flow =
+      cli::FlowOptionsFromArguments(args, restart ? restart->flow : ss::FlowOptions());
+  if (restart) opts.seeds.push_back(cli::ChartSeed(args, *restart, pl, base));
   // One revolution takes a few hundred steps; where mu < 0 at large slip speeds
   // (k5 > 0) an orbit can run away, and is given up after 20000.
   if (!args.Given("max_steps")) opts.orbit.flow.max_steps = 20000;
