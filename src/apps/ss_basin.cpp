@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli/about.hpp"
+#include "cli/basin_curve.hpp"
 #include "cli/output.hpp"
 #include "cli/study.hpp"
 #include "stickslip/basin_report.hpp"
@@ -34,7 +35,13 @@ constexpr const char* kNotes =
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
     "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM) or time\n"
     "limit: the starts so far are written, marked partial; 2 bad input (nothing written).\n"
-    "Example: ss_basin --study studies/stribeck_basin.ini";
+    "Basin stability (exact): the fraction of the box reaching each attractor, from the\n"
+    "areas the unstable pure-slip orbits enclose in it; printed as `basin stability\n"
+    "<attractor> <fraction>` and written to orbits.tsv (comment lines and the column\n"
+    "basin_stability). With --param the curve of it against that parameter in the given\n"
+    "box: basin_stability.tsv, basin_stability.gp and basin_stability.png, no grid.\n"
+    "Example: ss_basin --study studies/stribeck_basin.ini\n"
+    "         ss_basin --study studies/stribeck_basin_stability.ini";
 
 volatile std::sig_atomic_t g_signal = 0;
 void OnSignal(int sig) { g_signal = sig; }
@@ -53,6 +60,7 @@ po::options_description AppOptions() {
       "max_time", cli::Value()->value_name("S"),
       "wall-time limit in seconds; the starts so far are kept (default none)")(
       "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot");
+  cli::AddBasinCurveOptions(d);
   return d;
 }
 
@@ -118,6 +126,10 @@ int Main(int argc, char** argv) {
   if (max_time < 0)
     throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
                           args.Source("max_time") + ": must be >= 0");
+  if (args.Given("param"))  // the curve of basin stability instead of the grid
+    return cli::RunBasinStabilityCurve(kProg, args, p, opts, max_time,
+                                       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p,
+                                                        opts.scan.orbit.flow, args.Text("param")));
   const std::string dir = cli::CheckedOutputDir(args.Text("out", "plots/basin"),
                                                 args.Given("out") ? args.Source("out") : "--out");
   const ss::Model model(p);
@@ -136,11 +148,16 @@ int Main(int argc, char** argv) {
     std::cerr << kProg << ": " << done << " of " << total << " starts after "
               << static_cast<int>(elapsed()) << " s\n";
   };
+  const ss::FlowOptions& flow = opts.scan.orbit.flow;
   const ss::BasinResult r = ss::ClassifyBasins(model, opts);
   const double seconds = elapsed();
+  // Exact basin stability: the basins' areas in the grid's box.
+  ss::BasinStability stability;
+  if (r.orbits.ok())
+    stability =
+        ss::ExactBasinStability(model, r.orbits, {r.x_lo, r.x_hi, r.xdot_lo, r.xdot_hi}, flow);
 
   // The orbits' curves and the smallest disturbances (cheap: one period each).
-  const ss::FlowOptions& flow = opts.scan.orbit.flow;
   std::vector<ss::OrbitCurveRows> curves;
   std::vector<ss::Disturbance> dist;
   if (r.orbits.has_stick_slip)
@@ -157,7 +174,8 @@ int Main(int argc, char** argv) {
     return t.str();
   };
   ss::WriteFileAtomically(dir + "/basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
-  ss::WriteFileAtomically(dir + "/orbits.tsv", text(ss::OrbitTable(curves)));
+  ss::WriteFileAtomically(dir + "/orbits.tsv",
+                          text(ss::OrbitTable(curves, r.orbits.ok() ? &stability : nullptr)));
   ss::WriteFileAtomically(
       dir + "/basins.gp",
       ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : "")));
@@ -180,7 +198,9 @@ int Main(int argc, char** argv) {
   std::cout << r.starts.size() << " starts in " << static_cast<int>(seconds * 1e3) << " ms:";
   for (int f = 0; f < 4; ++f)
     std::cout << " " << r.count[f] << " " << ss::FateName(static_cast<ss::Fate>(f));
-  std::cout << "\nwrote " << dir << "/basins.tsv, orbits.tsv, basins.gp"
+  std::cout << "\n";
+  for (const std::string& line : ss::BasinStabilityLines(stability)) std::cout << line << "\n";
+  std::cout << "wrote " << dir << "/basins.tsv, orbits.tsv, basins.gp"
             << (args.Flag("no_plots") || !plots_ok ? "" : " and basins.png") << "\n";
   if (r.partial()) {
     const std::string why = g_signal ? std::string("interrupted by signal ") +
