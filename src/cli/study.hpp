@@ -136,6 +136,9 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args,
                                      const FlowOptions& defaults = FlowOptions());
 // "law=cubic beta=0.05 v=0.25 ...": the law's parameters, for file headers.
 std::string DescribeModel(const Params& p);
+// The same with the continued parameter as its range, "... v=[0.05, 0.5] ...":
+// its base value is never used, so the line states none.
+std::string DescribeModel(const Params& p, const std::string& continued, double from, double to);
 
 // Help text: a usage line, the options, then free-form notes.
 void PrintHelp(std::ostream& os, const std::string& usage, const po::options_description& desc,
