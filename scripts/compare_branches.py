@@ -11,7 +11,7 @@ and the count is reported. Either layout is read: the header as
 the first '#' line (before 0.1.0's metadata) or as the first line without '#'.
 Comment lines other than the header
 (# model, # status) must be equal too, except `# key: value` metadata lines
-that BASE does not have, the command and the timings (seconds_*). Exit 0 if equal, 1 otherwise.
+that BASE does not have, the command, the commit and the timings (seconds_*). Exit 0 if equal, 1 otherwise.
 """
 import math
 import sys
@@ -51,8 +51,8 @@ def compare(base, new, tol):
         rn = [r[:len(hb)] for r in rn]
     else:
         errors.append(f"header differs: {hb} vs {hn}")
-    # The command line and the timings differ between any two runs.
-    volatile = lambda c: c.startswith(("# command:", "# seconds_"))
+    # The command line, the build commit and the timings differ between runs.
+    volatile = lambda c: c.startswith(("# command:", "# commit:", "# seconds_"))
     cb = [c for c in cb if not volatile(c)]
     keys = {c.split(":")[0] for c in cb}
     cn = [c for c in cn if c.split(":")[0] in keys]
