@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "app_test_util.hpp"
-#include "stickslip/report.hpp"
+#include "cli/gnuplot.hpp"
 
 namespace {
 
 const std::string kContinue = STICKSLIP_BIN_DIR "/ss_continue";
 const std::string kSimulate = STICKSLIP_BIN_DIR "/ss_simulate";
 
-using stickslip::PngError;
+using stickslip::cli::PngError;
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::Launch;
