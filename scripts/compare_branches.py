@@ -5,11 +5,13 @@ Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12]
 
 For branch.tsv and special_points.tsv: the same header, the same number of
 rows, text cells equal, and every numeric cell within tol (absolute, scaled
-by max(1, |base|)); nan must match nan. Either layout is read: the header as
+by max(1, |base|)); nan must match nan. NEW may have more columns after
+BASE's (new columns appended: pt, lab, x_start, ...): those are not compared,
+and the count is reported. Either layout is read: the header as
 the first '#' line (before 0.1.0's metadata) or as the first line without '#'.
 Comment lines other than the header
 (# model, # status) must be equal too, except `# key: value` metadata lines
-that BASE does not have (counts and timings). Exit 0 if equal, 1 otherwise.
+that BASE does not have, the command, the commit and the timings (seconds_*). Exit 0 if equal, 1 otherwise.
 """
 import math
 import sys
@@ -43,8 +45,15 @@ def compare(base, new, tol):
     hb, cb, rb = read(base)
     hn, cn, rn = read(new)
     errors = []
-    if hb != hn:
+    added = 0
+    if hn[:len(hb)] == hb:  # columns appended after BASE's: compare BASE's only
+        added = len(hn) - len(hb)
+        rn = [r[:len(hb)] for r in rn]
+    else:
         errors.append(f"header differs: {hb} vs {hn}")
+    # The command line, the build commit and the timings differ between runs.
+    volatile = lambda c: c.startswith(("# command:", "# commit:", "# seconds_"))
+    cb = [c for c in cb if not volatile(c)]
     keys = {c.split(":")[0] for c in cb}
     cn = [c for c in cn if c.split(":")[0] in keys]
     if cb != cn:
@@ -70,7 +79,7 @@ def compare(base, new, tol):
             worst = max(worst, d)
             if d > tol:
                 errors.append(f"row {i} col {hb[j]}: {x} vs {y} (diff {d:.3g})")
-    return errors, worst, len(rb)
+    return errors, worst, len(rb), added
 
 
 def main():
@@ -85,8 +94,10 @@ def main():
         return 2
     ok = True
     for name in ("branch.tsv", "special_points.tsv"):
-        errors, worst, n = compare(f"{args[0]}/{name}", f"{args[1]}/{name}", tol)
+        errors, worst, n, added = compare(f"{args[0]}/{name}", f"{args[1]}/{name}", tol)
         status = "equal" if not errors else f"{len(errors)} differences"
+        if added:
+            status += f" ({added} new columns not compared)"
         print(f"{args[1]}/{name}: {n} rows, largest relative difference {worst:.3g}: {status}")
         for e in errors[:10]:
             print("  " + e)

@@ -48,11 +48,29 @@ TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
   return t;
 }
 
-TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves) {
-  TsvTable t({"orbit", "kind", "stable", "x", "xdot"});
-  for (size_t i = 0; i < curves.size(); ++i)
-    for (const Vec2& z : curves[i].points)
-      t.AddRow({static_cast<int>(i), curves[i].kind, curves[i].stable ? 1 : 0, z[0], z[1]});
+TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves, const BasinStability* stability) {
+  std::vector<std::string> cols = {"orbit", "kind", "stable", "x", "xdot"};
+  if (stability) cols.push_back("basin_stability");
+  TsvTable t(cols);
+  if (stability)
+    for (const std::string& line : BasinStabilityLines(*stability)) t.AddComment(line);
+  int pure_slip = 0;
+  for (size_t i = 0; i < curves.size(); ++i) {
+    // The share of the attractor this curve is (stick-slip, or pure-slip k).
+    double share = 0;
+    const bool ps = curves[i].kind != "stick-slip";
+    if (stability)
+      for (const BasinShare& b : stability->shares)
+        if (ps ? b.fate == Fate::kPureSlip && b.orbit == pure_slip : b.fate == Fate::kStickSlip)
+          share = b.fraction;
+    pure_slip += ps;
+    for (const Vec2& z : curves[i].points) {
+      std::vector<TsvTable::Cell> row = {static_cast<int>(i), curves[i].kind,
+                                         curves[i].stable ? 1 : 0, z[0], z[1]};
+      if (stability) row.emplace_back(share);
+      t.AddRow(row);
+    }
+  }
   return t;
 }
 

@@ -73,6 +73,10 @@ BranchPoint BranchContext::FromOrbit(double p, const Orbit& o, double a) const {
   pt.stable = o.stable;
   pt.amplitude = o.kind == OrbitKind::kPureSlip ? a : 0.5 * (o.x_max - o.x_min);
   pt.newton_stalled = o.newton_stalled;
+  // Pure slip: the section point (xbar + a, 0) of G(a, p) (orbit.hpp).
+  const bool ps = o.kind == OrbitKind::kPureSlip;
+  pt.x_start = ps ? Model(At(p)).SteadySliding().x + a : o.start[0];
+  pt.xdot_start = ps ? 0.0 : o.start[1];
   return pt;
 }
 

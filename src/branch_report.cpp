@@ -9,6 +9,7 @@
 
 #include "stickslip/errors.hpp"
 #include "stickslip/figure_style.hpp"
+#include "stickslip/labels.hpp"
 #include "stickslip/numbers.hpp"
 
 namespace stickslip {
@@ -91,6 +92,8 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                             " values for " + std::to_string(r.points.size()) + " points");
     cols.push_back(c.name);
   }
+  // Point numbers and restart states last (labels.hpp), after the extras.
+  cols.insert(cols.end(), {"pt", "x_start", "xdot_start"});
   TsvTable t(cols);
   t.AddMeta("model", model_description);
   if (r.partial())
@@ -115,6 +118,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                                        p.stable ? 1 : 0,
                                        p.amplitude};
     for (const auto& c : extra) row.emplace_back(c.values[i]);
+    row.insert(row.end(), {static_cast<int>(i) + 1, p.x_start, p.xdot_start});
     t.AddRow(row);
   }
   return t;
@@ -130,6 +134,9 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
                             " values for " + std::to_string(r.special.size()) + " special points");
     cols.push_back(c.name);
   }
+  cols.insert(cols.end(), {"pt", "lab", "x_start", "xdot_start"});
+  const std::vector<int> rows = SpecialPointRows(r);
+  const std::vector<std::string> labels = SpecialPointLabels(r);
   TsvTable t(cols);
   if (r.partial())
     t.AddMeta("status",
@@ -141,6 +148,7 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
     std::vector<TsvTable::Cell> row = {
         SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description};
     for (const auto& c : extra) row.emplace_back(c.values[i]);
+    row.insert(row.end(), {rows[i], labels[i], s.x_start, s.xdot_start});
     t.AddRow(row);
   }
   return t;

@@ -64,6 +64,10 @@ std::string ChartOptions::ValidationError(const Params& base) const {
     os << "samples = " << samples << " must be >= 4";
   else if (region_n1 < 0 || region_n2 < 0 || (region_n1 == 0) != (region_n2 == 0))
     os << "region grid " << region_n1 << " x " << region_n2 << " must be empty or positive";
+  for (const Seed& s : seeds)
+    if (os.str().empty() && (s.kind == CurveKind::kFold || !plane.Contains(s.p1, s.p2)))
+      os << "seed " << CurveLabel(s.kind) << " at (" << s.p1 << ", " << s.p2 << ")"
+         << (s.kind == CurveKind::kFold ? ": LP seeds are not supported" : " is outside the plane");
   return os.str();
 }
 
@@ -115,6 +119,15 @@ std::vector<Start> StartPoints(const Plane& pl, int samples,
       g0 = g1;
     }
   }
+  return out;
+}
+
+// The caller's seeds of one kind first (holding p2), then the scan's.
+std::vector<Start> WithSeeds(const ChartOptions& o, CurveKind kind, std::vector<Start> scan) {
+  std::vector<Start> out;
+  for (const ChartOptions::Seed& s : o.seeds)
+    if (s.kind == kind) out.push_back({Eigen::Vector2d(s.p1, s.p2), 1});
+  out.insert(out.end(), scan.begin(), scan.end());
   return out;
 }
 
@@ -175,9 +188,10 @@ void Charter::HopfCurves() {
   HopfCurveProblem problem(base_, pl_);
   TraceOptions to = TraceOpts();
   to.tol = 1e-15;  // exact derivatives: Newton converges to rounding
-  const auto starts = StartPoints(pl_, 8 * o_.samples, [&](double x1, double x2) {
-    return HopfFunction(pl_.At(base_, x1, x2));
-  });
+  const auto starts =
+      WithSeeds(o_, CurveKind::kHopf, StartPoints(pl_, 8 * o_.samples, [&](double x1, double x2) {
+                  return HopfFunction(pl_.At(base_, x1, x2));
+                }));
   for (const Start& s : starts) {
     if (NearCurve(r_.curves, CurveKind::kHopf, pl_, s.x)) continue;
     const auto t0 = Clock::now();
@@ -214,10 +228,11 @@ void Charter::HopfCurves() {
 void Charter::GrazingCurves() {
   GrazingCurveProblem problem(base_, pl_, o_.orbit);
   OrbitFinder finder(Model(base_), o_.orbit);
-  const auto starts = StartPoints(pl_, o_.samples, [&](double x1, double x2) {
-    const GrazingSample g = SampleGrazing(finder, pl_.At(base_, x1, x2), false);
-    return g.ok() ? g.gap : NAN;
-  });
+  const auto starts =
+      WithSeeds(o_, CurveKind::kGrazing, StartPoints(pl_, o_.samples, [&](double x1, double x2) {
+                  const GrazingSample g = SampleGrazing(finder, pl_.At(base_, x1, x2), false);
+                  return g.ok() ? g.gap : NAN;
+                }));
   for (const Start& s : starts) {
     if (NearCurve(r_.curves, CurveKind::kGrazing, pl_, s.x)) continue;
     const auto t0 = Clock::now();

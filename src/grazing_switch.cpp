@@ -26,6 +26,7 @@ BranchPoint GrazingRow(const BranchContext& ctx, const Model& m, const SpecialPo
   o.t_stick = sp.period - run.t;
   o.multiplier = 0.0;
   o.stable = true;
+  o.start = m.ExitPoint();
   return ctx.FromOrbit(sp.p, o, 0.0);
 }
 

@@ -28,6 +28,7 @@ SpecialPoint HopfPoint(const Params& at, double p) {
   sp.period = 2 * M_PI;  // lambda = +-i at the Hopf point
   sp.x_min = sp.x_max = m.SteadySliding().x;
   sp.xdot_min = 0;
+  sp.x_start = sp.x_min;
   sp.multiplier_before = sp.multiplier_after = 1.0;
   const bool super = m.friction().D3Mu(m.v()) > 0;
   sp.description = std::string("Hopf point of steady sliding (2 beta + mu'(v) = 0), ") +
@@ -78,6 +79,8 @@ SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run) {
   sp.xdot_min = run.xdot_min;
   sp.multiplier_before = 0.0;
   sp.multiplier_after = inside ? kNan : mult_ps;
+  sp.x_start = x0;
+  sp.xdot_start = m.v();
   sp.description = inside ? "grazing inside the stick band at x = " + Num(run.z[0]) +
                                 ": the orbit disappears (no periodic orbit beyond)"
                           : "grazing-sliding: stick phase vanishes; multiplier 0 on the "
@@ -94,6 +97,8 @@ SpecialPoint FoldPoint(double p, const FlowResult& run, const std::string& what)
   lp.x_min = run.x_min;
   lp.x_max = run.x_max;
   lp.xdot_min = run.xdot_min;
+  lp.x_start = run.z[0];
+  lp.xdot_start = run.z[1];
   lp.description = what;
   return lp;
 }

@@ -21,6 +21,7 @@ BranchPoint EquilibriumPoint(const Params& at, double p) {
   pt.multiplier = e.max_real();
   pt.stable = e.stable();
   pt.amplitude = 0.0;
+  pt.x_start = e.x;
   return pt;
 }
 

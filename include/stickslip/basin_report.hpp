@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "stickslip/basin.hpp"
+#include "stickslip/basin_stability_report.hpp"
 #include "stickslip/report.hpp"
 
 namespace stickslip {
@@ -28,8 +29,12 @@ struct OrbitCurveRows {
   bool stable = false;
   std::vector<Vec2> points;
 };
-// Columns: orbit, kind, stable, x, xdot.
-TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves);
+// Columns: orbit, kind, stable, x, xdot. With `stability` (curves in the
+// order stick-slip, then PeriodicOrbits::pure_slip), also basin_stability:
+// the fraction of the box that reaches that orbit (0 for an unstable one),
+// and its "basin stability <attractor> <fraction>" lines as comments.
+TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves,
+                    const BasinStability* stability = nullptr);
 
 // gnuplot script (style of figure_style.hpp) drawing basins.png (.pdf, .svg) from basins.tsv and orbits.tsv in its own
 // directory: the starts coloured by fate, every orbit over them (stable solid,

@@ -26,7 +26,8 @@ std::vector<std::pair<std::string, std::string>> SummaryFields(const Continuatio
 void DropNonFinite(ContinuationResult* r, const std::string& param);
 
 /// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
-/// t_stick, multiplier, stable, amplitude, then the extra columns. Metadata
+/// t_stick, multiplier, stable, amplitude, then the extra columns, then pt
+/// (the 1-based row number), x_start, xdot_start (BranchPoint). Metadata
 /// lines before the header: model, status (partial or complete), then the
 /// SummaryFields as `# key: value`.
 TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
@@ -34,7 +35,8 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
                      const std::vector<ExtraColumn>& extra = {});
 
 /// Columns: label, <param>, period, x_min, x_max, xdot_min, description, then
-/// the extra columns (one value per special point).
+/// the extra columns (one value per special point), then pt (the row of
+/// branch.tsv it sits on), lab (GR1, HB1, ...; labels.hpp), x_start, xdot_start.
 TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
                            const std::vector<ExtraColumn>& extra = {});
 

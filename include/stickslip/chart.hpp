@@ -103,7 +103,15 @@ struct ChartOptions {
   bool fold_curves = true;           // LP curves from GH points
   bool region_faces = false;         // the regions as polygons between the curves
   int region_n1 = 0, region_n2 = 0;  // region grid, a check of the polygons; 0: none
-  std::function<bool()> cancelled;   // polled between points
+  // Points given by the caller (a restart's HB or GR point), on or near a
+  // curve of their kind: each is followed (p2 held while it is corrected)
+  // before the start points the scan finds. LP seeds are not supported.
+  struct Seed {
+    CurveKind kind = CurveKind::kHopf;
+    double p1 = 0, p2 = 0;
+  };
+  std::vector<Seed> seeds;
+  std::function<bool()> cancelled;  // polled between points
   // Empty if valid for base, else one line naming the violated constraint.
   std::string ValidationError(const Params& base) const;
 };

@@ -40,6 +40,9 @@ struct BranchPoint {
   // noise floor (below 1000 x the tolerance, no longer shrinking) instead of
   // falling below the tolerance: the point is only as accurate as that step.
   bool newton_stalled = false;
+  /// The state a restart starts from: stick-slip the exit point (x0, v),
+  /// pure slip the section point (x*, 0), steady sliding (xbar, 0).
+  double x_start = 0, xdot_start = 0;
 };
 
 /// GR grazing-sliding, HB Hopf, LP fold.
@@ -53,6 +56,9 @@ struct SpecialPoint {
   double period = 0, x_min = 0, x_max = 0, xdot_min = 0;
   /// GR: the nontrivial multiplier on the stick-slip side and on the pure-slip side.
   double multiplier_before = 0, multiplier_after = 0;
+  /// The point's state: HB (xbar, 0); GR the exit point (x0, v); LP the
+  /// start of the fold orbit's run (on the section x' = 0 for a smooth fold).
+  double x_start = 0, xdot_start = 0;
   std::string description;
 };
 

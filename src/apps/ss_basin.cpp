@@ -8,6 +8,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/basin_curve.hpp"
 #include "cli/study.hpp"
 #include "stickslip/basin_report.hpp"
 
@@ -24,10 +25,17 @@ constexpr const char* kNotes =
     "value` lines list the periodic orbits and the smallest disturbance), orbits.tsv (each\n"
     "periodic orbit sampled), basins.gp and basins.png (.pdf, .svg with --format).\n"
     "A start is undecided if it has not settled by --t_cap.\n"
+    "Basin stability (exact): the fraction of the box reaching each attractor, from the\n"
+    "areas the unstable pure-slip orbits enclose in it; printed as `basin stability\n"
+    "<attractor> <fraction>` and written to orbits.tsv (comment lines and the column\n"
+    "basin_stability). With --param the curve of it against that parameter in the given\n"
+    "box: basin_stability.tsv, basin_stability.gp and basin_stability.png, no grid.\n"
     "The files are written as one set (docs/reliability.md).\n"
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
     "An interrupted or failed run writes the starts so far, marked partial.\n";
-constexpr const char* kExample = "\nExample: ss_basin --study studies/stribeck_basin.ini";
+constexpr const char* kExample =
+    "\nExample: ss_basin --study studies/stribeck_basin.ini\n"
+    "         ss_basin --study studies/stribeck_basin_stability.ini";
 
 po::options_description AppOptions() {
   po::options_description d("Basins (study section [basin])");
@@ -41,6 +49,7 @@ po::options_description AppOptions() {
       "time after which a start is undecided (default 2000)");
   cli::AddRunOptions(d, "plots/basin",
                      "write the TSV files and the script, but do not run gnuplot");
+  cli::AddBasinCurveOptions(d);
   return d;
 }
 
@@ -83,7 +92,8 @@ ss::BasinOptions OptionsFromArguments(const cli::Arguments& args) {
 
 // The orbits and basins on stdout.
 void PrintSummary(const ss::BasinResult& r, const std::vector<ss::Disturbance>& dist,
-                  const std::string& desc_model, double seconds) {
+                  const ss::BasinStability& stability, const std::string& desc_model,
+                  double seconds) {
   std::cout << kProg << ": " << desc_model << "\n"
             << "steady sliding x = " << r.orbits.steady.x
             << (r.orbits.steady.stable() ? " (stable)" : " (unstable)") << "\n";
@@ -102,6 +112,7 @@ void PrintSummary(const ss::BasinResult& r, const std::vector<ss::Disturbance>& 
   for (int f = 0; f < 4; ++f)
     std::cout << " " << r.count[f] << " " << ss::FateName(static_cast<ss::Fate>(f));
   std::cout << "\n";
+  for (const std::string& line : ss::BasinStabilityLines(stability)) std::cout << line << "\n";
 }
 
 int Main(int argc, char** argv) {
@@ -112,6 +123,11 @@ int Main(int argc, char** argv) {
     return 0;
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
+  if (args.Given("param"))  // the curve of basin stability instead of the grid
+    return cli::RunBasinStabilityCurve(
+        kProg, args, p, opts, args.Number("max_time", 0),
+        cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p, opts.scan.orbit.flow,
+                         args.Text("param")));
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::string figure = ss::FigureFile("basins", format);
   cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", figure});
@@ -126,6 +142,11 @@ int Main(int argc, char** argv) {
   };
   const ss::BasinResult r = ss::ClassifyBasins(model, opts);
   const double seconds = run.Elapsed();
+  // Exact basin stability: the basins' areas in the grid's box.
+  ss::BasinStability stability;
+  if (r.orbits.ok())
+    stability = ss::ExactBasinStability(model, r.orbits, {r.x_lo, r.x_hi, r.xdot_lo, r.xdot_hi},
+                                        opts.scan.orbit.flow);
 
   // The orbits' curves and the smallest disturbances (cheap: one period each).
   run.Phase("sampling the orbits");
@@ -147,13 +168,13 @@ int Main(int argc, char** argv) {
   };
   run.Phase("writing");
   app.out().Write("basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
-  app.out().Write("orbits.tsv", text(ss::OrbitTable(curves)));
+  app.out().Write("orbits.tsv", text(ss::OrbitTable(curves, r.orbits.ok() ? &stability : nullptr)));
   app.out().Write(
       "basins.gp",
       ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""), format));
   if (!app.Finish("basins.gp", {figure}, {figure})) return cli::kExitFailed;
 
-  PrintSummary(r, dist, desc_model, seconds);
+  PrintSummary(r, dist, stability, desc_model, seconds);
   std::cout << "wrote " << app.out().dir() << "/basins.tsv, orbits.tsv, basins.gp"
             << (app.gnuplot().ok() ? " and " + figure : std::string()) << "\n";
   std::string partial;

@@ -8,6 +8,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/restart.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart.hpp"
 #include "stickslip/chart_region_faces.hpp"
@@ -52,6 +53,7 @@ po::options_description AppOptions() {
       "summary counts the cells whose region differs from the polygon drawn there "
       "(default 0: none)");
   cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
+  cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;
 }
 
@@ -86,7 +88,8 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
 ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
-  pl.p1 = args.Text("param", "v");
+  const auto restart = cli::RestartFromArguments(args);
+  pl.p1 = args.Text("param", restart ? restart->param : "v");
   pl.p2 = args.Text("param2", "beta");
   pl.from1 = args.Number("from", 0.05);
   pl.to1 = args.Number("to", 0.6);
@@ -94,8 +97,11 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   pl.to2 = args.Number("to2", 0.25);
   // The base model is validated at the rectangle's corner; its own values of
   // the two axes are never used.
-  *base = cli::ModelFromArguments(args);
-  opts.orbit.flow = cli::FlowOptionsFromArguments(args, opts.orbit.flow);
+  *base = cli::ModelFromArguments(args, "", 0, restart ? restart->params : ss::Params());
+  ss::FlowOptions flow = opts.orbit.flow;  // a restart's solver, with the chart's step cap
+  if (restart) flow = restart->flow, flow.max_steps = opts.orbit.flow.max_steps;
+  opts.orbit.flow = cli::FlowOptionsFromArguments(args, flow);
+  if (restart) opts.seeds.push_back(cli::ChartSeed(args, *restart, pl, *base));
   opts.max_step = args.Number("max_step", opts.max_step);
   const long grid = args.Integer("grid", 0);
   if (grid != 0 && (grid < 2 || grid > 1000))

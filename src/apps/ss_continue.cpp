@@ -12,6 +12,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/physical.hpp"
+#include "cli/restart.hpp"
 #include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
@@ -43,9 +44,14 @@ constexpr const char* kNotes =
     "integrator, status), then one header line without '#'.\n"
     "Study files: model and solver keys at top level, this app's keys in [continue].\n"
     "The estimates apply to the cubic law with k5 = 0; elsewhere they are skipped, with\n"
-    "a note on stderr.\n";
+    "a note on stderr.\n"
+    "Points: branch.tsv numbers its rows (pt); special_points.tsv gives each point its row\n"
+    "(pt) and a label (lab: GR1, HB1, LP1, ... per type in branch order). --restart DIR\n"
+    "--point HB1 starts at that point: its parameters, solver options and continued\n"
+    "parameter are the defaults, --from is its value (--to the far end of the range).\n";
 constexpr const char* kExample =
-    "\nExample: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5";
+    "\nExample: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5\n"
+    "         ss_continue --restart plots --point HB1 --param beta --out hb_beta";
 
 po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
@@ -65,6 +71,7 @@ po::options_description AppOptions() {
       "no_estimates", po::bool_switch(),
       "cubic law: skip the comparison with the seed's and the averaging estimates");
   cli::AddRunOptions(d, "plots", "write the TSV files and the script, but do not run gnuplot");
+  cli::AddRestartOptions(d);
   return d;
 }
 
@@ -139,13 +146,18 @@ void AddScales(const cli::Scales& s, const std::string& param, cli::Metadata& me
 }
 
 // The options, validated (UsageError naming the option otherwise).
-ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) {
+// With --restart, the point's parameters, solver options and continued
+// parameter are the defaults, and the run starts at the point.
+ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
+                                  std::optional<ss::LabelledPoint>* restart) {
   ss::ContinuationOptions opts;
+  *restart = cli::RestartFromArguments(args);
+  const ss::Params defaults = *restart ? (*restart)->params : ss::Params();
   // With physical inputs, --param belt_speed (damping, speed_m, ...) runs in
   // physical units: its dimensionless parameter is continued over the range
   // converted by the seed's scaling.
   const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
-  const std::string asked = args.Text("param", "v");
+  const std::string asked = args.Text("param", *restart ? (*restart)->param : "v");
   const auto axis = cli::AxisOf(asked, scales.value_or(cli::Scales()));
   const bool physical_param = axis && asked == axis->physical;
   if (physical_param && !scales)
@@ -156,11 +168,18 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) 
   opts.param = physical_param ? axis->dimensionless : asked;
   // Each parameter's own default range (v 0.05 -> 0.5, beta 0.01 -> 0.3, ...).
   ss::ParameterRange range{0.05, 0.5};
-  if (ss::IsParameterName(opts.param))
-    range = ss::DefaultRange(cli::UncheckedModelFromArguments(args), opts.param);
+  if (ss::IsParameterName(opts.param)) {
+    const ss::Params given = cli::UncheckedModelFromArguments(args, defaults);
+    range = ss::DefaultRange(given, opts.param);
+    if (*restart) {  // from the point to the far end of the default range
+      const double at = ss::GetParameter(given, opts.param);
+      range = {at, std::abs(range.to - at) >= std::abs(range.from - at) ? range.to : range.from};
+    }
+  }
   opts.from = args.Number("from", range.from / to_param) * to_param;
-  *base = cli::ModelFromArguments(args, opts.param, opts.from);
-  opts.orbit.flow = cli::FlowOptionsFromArguments(args);
+  *base = cli::ModelFromArguments(args, opts.param, opts.from, defaults);
+  opts.orbit.flow =
+      cli::FlowOptionsFromArguments(args, *restart ? (*restart)->flow : ss::FlowOptions());
   opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");
@@ -240,10 +259,12 @@ int Main(int argc, char** argv) {
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
   ss::Params base;
-  const ss::ContinuationOptions opts = Configure(args, &base);
+  std::optional<ss::LabelledPoint> restart;
+  const ss::ContinuationOptions opts = Configure(args, &base, &restart);
   Provenance prov;
   prov.scales = cli::ScalesFromArguments(args);
   prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);
+  if (restart) prov.meta.emplace_back("restart", cli::DescribeRestart(args, *restart));
   std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "bifurcation.gp"};
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::vector<std::string> all_figures = ss::BifurcationFigures(true, format);

@@ -55,8 +55,9 @@ void CheckOtherLaws(const Arguments& args, const Params& p) {
 
 Params ModelFromArguments(const Arguments& args) { return ModelFromArguments(args, "", 0.0); }
 
-Params ModelFromArguments(const Arguments& args, const std::string& continued, double at) {
-  const Params p = UncheckedModelFromArguments(args);
+Params ModelFromArguments(const Arguments& args, const std::string& continued, double at,
+                          const Params& defaults) {
+  const Params p = UncheckedModelFromArguments(args, defaults);
   Params checked = p;
   if (!continued.empty() && IsParameterName(continued)) SetParameter(checked, continued, at);
   const std::string err = ValidationError(checked);
@@ -65,8 +66,8 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
   return p;
 }
 
-Params UncheckedModelFromArguments(const Arguments& args) {
-  LawKind law = LawKind::kCubic;
+Params UncheckedModelFromArguments(const Arguments& args, const Params& defaults) {
+  LawKind law = defaults.law;
   if (args.Given("law")) {
     try {
       law = LawFromName(args.Text("law"));
@@ -75,7 +76,7 @@ Params UncheckedModelFromArguments(const Arguments& args) {
     }
   }
   const std::string physical = FirstGiven(args, kPhysical);
-  Params p;
+  Params p = defaults;
   if (physical.empty()) {
     p.law = law;
     for (const auto& name : AllParameterNames())

@@ -126,11 +126,13 @@ Params ModelFromArguments(const Arguments& args);
 // The same for a continuation in `continued`: the model is validated with that
 // parameter set to `at` (its own base value is never used, so --param v --v -1
 // is fine; the range ends are validated by ContinuationOptions).
-Params ModelFromArguments(const Arguments& args, const std::string& continued, double at);
+// Values not given default to `defaults` (a restart's point; --law too).
+Params ModelFromArguments(const Arguments& args, const std::string& continued, double at,
+                          const Params& defaults = Params());
 // The model as given (physical inputs converted), not validated: for
 // defaults that depend on it, such as a parameter's range (DefaultRange).
 // Throws UsageError on unreadable or inconsistent options.
-Params UncheckedModelFromArguments(const Arguments& args);
+Params UncheckedModelFromArguments(const Arguments& args, const Params& defaults = Params());
 // The solver options from SolverOptions(), validated (throws UsageError);
 // what is not given keeps its value in `defaults`.
 FlowOptions FlowOptionsFromArguments(const Arguments& args,

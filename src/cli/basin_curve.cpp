@@ -1,0 +1,104 @@
+#include "cli/basin_curve.hpp"
+
+#include <cstdio>
+#include <functional>
+#include <iostream>
+
+#include "cli/output.hpp"
+#include "cli/run_control.hpp"
+#include "stickslip/basin_stability_report.hpp"
+
+namespace stickslip::cli {
+
+void AddBasinCurveOptions(po::options_description& d) {
+  d.add_options()("param", Value()->value_name("NAME"),
+                  "basin stability against this parameter (needs the box --x_min ...); "
+                  "writes basin_stability.tsv/.gp/.png instead of the grid")(
+      "from", Value()->value_name("A"), "with --param: first value (default: its range)")(
+      "to", Value()->value_name("B"), "with --param: last value (default: its range)")(
+      "n", Value()->value_name("N"), "with --param: points, in [2, 10000] (default 41)");
+}
+
+namespace {
+
+struct Curve {
+  std::string param;
+  double from = 0, to = 0;
+  int n = 41;
+};
+
+Curve CurveFromArguments(const Arguments& args, const Params& base, const BasinOptions& opts) {
+  Curve c;
+  c.param = args.Text("param");
+  if (!IsParameterName(c.param))
+    throw UsageError("invalid value '" + c.param + "' for " + args.Source("param") + ": expected " +
+                     ParameterNameList());
+  if (opts.auto_range)
+    throw UsageError(args.Source("param") +
+                     " needs a fixed box: give --x_min --x_max --xdot_min --xdot_max");
+  const ParameterRange range = DefaultRange(base, c.param);
+  c.from = args.Number("from", range.from);
+  c.to = args.Number("to", range.to);
+  const long n = args.Integer("n", c.n);
+  if (n < 2 || n > 10000)
+    throw UsageError("invalid value '" + args.Text("n") + "' for " + args.Source("n") +
+                     ": must be in [2, 10000]");
+  c.n = static_cast<int>(n);
+  if (c.from == c.to)
+    throw UsageError("--from = --to = " + FormatNumber(c.from) + ": the range is empty");
+  for (const char* end : {"from", "to"}) {
+    Params q = base;
+    SetParameter(q, c.param, end[0] == 'f' ? c.from : c.to);
+    const std::string err = ValidationError(q);
+    if (!err.empty())
+      throw UsageError((args.Given(end) ? args.Source(end) : std::string("--") + end) + ": " + err);
+  }
+  return c;
+}
+
+}  // namespace
+
+int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const Params& base,
+                           const BasinOptions& opts, double max_time, const Metadata& meta) {
+  const Curve c = CurveFromArguments(args, base, opts);
+  const bool plots = !args.Flag("no_plots");
+  OutputSet out(args.Text("out", "plots/basin"),
+                {"basin_stability.tsv", "basin_stability.gp", "basin_stability.png"},
+                args.Given("out") ? args.Source("out") : "--out", prog);
+  RunControl run(prog, max_time);
+  const std::function<bool()> cancelled = [&] { return run.Cancelled(); };
+  OrbitScanOptions scan = opts.scan;
+  scan.cancelled = cancelled;
+  const Box box{opts.x_lo, opts.x_hi, opts.xdot_lo, opts.xdot_hi};
+  const BasinStabilityCurve r =
+      BasinStabilityAlong(base, ParameterAxis(c.param), c.from, c.to, c.n, box, scan);
+  std::string model = std::string("law=") + LawName(base.law);  // the varied one left out
+  for (const auto& name : ParameterNames(base.law))
+    if (name != c.param) model += " " + name + "=" + FormatNumber(GetParameter(base, name));
+  TsvTable t = BasinStabilityTable(r, c.param, model, box);
+  t.PrependMeta(meta);
+  out.Write("basin_stability.tsv", t.str());
+  out.Write("basin_stability.gp", BasinStabilityScript(c.param, "basin stability, " + model));
+  GnuplotResult g{GnuplotStatus::kCancelled, ""};
+  if (plots) g = out.Draw("basin_stability.gp", {"basin_stability.png"}, cancelled);
+  out.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{"basin_stability.png"});
+  for (size_t i = 0; i < r.p.size(); ++i) {
+    std::cout << c.param << " = " << FormatNumber(r.p[i]) << ":";
+    for (const std::string& line : BasinStabilityLines(r.at[i])) std::cout << "  " << line;
+    std::cout << "\n";
+  }
+  std::cout << "wrote " << out.dir() << "/basin_stability.tsv, basin_stability.gp"
+            << (g.ok() ? " and basin_stability.png" : "") << "\n";
+  if (r.status != BasinStatus::kOk) {
+    PrintError(prog, std::string("partial curve written (") + BasinStatusName(r.status) +
+                         "): " + (run.Cancelled() ? run.Reason() : r.message));
+    return 1;
+  }
+  if (plots && !g.ok()) {
+    PrintError(prog, "gnuplot: " + g.message);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace stickslip::cli
