@@ -141,6 +141,8 @@ int Main(int argc, char** argv) {
            "] " + pl.p2 + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
   // Every file starts with the tool, the command, the model and the integrator.
   cli::Metadata meta = cli::RunMetadata(kProg, cli::CommandLine(argc, argv), base, opts.orbit.flow);
+  for (auto& [key, value] : meta)  // the axes' base values are never used
+    if (key == pl.p1 || key == pl.p2) value = "axis";
   meta.push_back({"range", pl.p1 + " = [" + ss::FormatNumber(pl.from1) + ", " +
                                ss::FormatNumber(pl.to1) + "], " + pl.p2 + " = [" +
                                ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]"});

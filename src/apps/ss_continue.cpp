@@ -32,10 +32,10 @@ namespace {
 
 constexpr const char* kProg = "ss_continue";
 constexpr const char* kNotes =
-    "Outputs in --out, written as one set (README, Reliability): branch.tsv (one row per\n"
+    "Outputs in --out, written as one set (docs/reliability.md): branch.tsv (one row per\n"
     "point; kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet\n"
     "multiplier, for the equilibrium the largest real part of its eigenvalues; then\n"
-    "dist_x dist_xdot dist_energy newton_stalled, README),\n"
+    "dist_x dist_xdot dist_energy newton_stalled; every column in docs/formats.md),\n"
     "special_points.tsv (GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its\n"
     "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
     "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
@@ -296,7 +296,7 @@ int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Para
             bool estimates, bool plots) {
   const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
   const double seconds = run.Elapsed();
-  const std::string model = cli::DescribeModel(base);
+  const std::string model = cli::DescribeModel(base, opts.param, opts.from, opts.to);
   ss::EstimateComparison cmp;
   if (estimates && !run.Cancelled()) {
     run.Phase("comparing with the estimates");

@@ -36,7 +36,7 @@ constexpr const char* kNotes =
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
     "With --plot, FILE.gp names the TSV and the PNG by their plain names: run it in\n"
-    "FILE's directory. The files are written as one set (README, Reliability).\n"
+    "FILE's directory. The files are written as one set (docs/reliability.md).\n"
     "Exit status: 0 done; 1 numerical or I/O failure, interruption or time limit (no\n"
     "data file written; if the figure cannot be drawn whole, no file is replaced);\n"
     "2 bad input (nothing written); 3 gnuplot is missing (data and script written).\n"

@@ -147,10 +147,14 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args) {
   return f;
 }
 
-std::string DescribeModel(const Params& p) {
+std::string DescribeModel(const Params& p) { return DescribeModel(p, "", 0, 0); }
+
+std::string DescribeModel(const Params& p, const std::string& continued, double from, double to) {
   std::string s = std::string("law=") + LawName(p.law);
   for (const auto& name : ParameterNames(p.law))
-    s += " " + name + "=" + FormatNumber(GetParameter(p, name));
+    s += " " + name + "=" +
+         (name == continued ? "[" + FormatNumber(from) + ", " + FormatNumber(to) + "]"
+                            : FormatNumber(GetParameter(p, name)));
   return s;
 }
 

@@ -1,7 +1,7 @@
 // One run's output files, written as a set: checked before the run, staged
 // in a private directory, figures verified, then renamed into place together.
 //
-// Promises (README, Reliability):
+// Promises (docs/reliability.md):
 // - Up front (UsageError, exit 2, nothing created): the destination directory
 //   exists or its parent does, and is writable; no control character in any
 //   path; every name fits NAME_MAX and PATH_MAX with its temporary suffix; at each file's place

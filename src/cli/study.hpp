@@ -132,6 +132,9 @@ Params UncheckedModelFromArguments(const Arguments& args);
 FlowOptions FlowOptionsFromArguments(const Arguments& args);
 // "law=cubic beta=0.05 v=0.25 ...": the law's parameters, for file headers.
 std::string DescribeModel(const Params& p);
+// The same with the continued parameter as its range, "... v=[0.05, 0.5] ...":
+// its base value is never used, so the line states none.
+std::string DescribeModel(const Params& p, const std::string& continued, double from, double to);
 
 // Help text: a usage line, the options, then free-form notes.
 void PrintHelp(std::ostream& os, const std::string& usage, const po::options_description& desc,
