@@ -125,8 +125,7 @@ PYBIND11_MODULE(_core, m) {
         return s + ")";
       });
   m.def(
-      "parameter_names",
-      [](const py::object& law) { return ss::ParameterNames(LawOf(law)); },
+      "parameter_names", [](const py::object& law) { return ss::ParameterNames(LawOf(law)); },
       py::arg("law") = "cubic", "Names of the parameters of a law, in a fixed order.");
   m.def(
       "default_range",

@@ -25,7 +25,8 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
     throw InvalidArgument("x0, xdot0 = " + Num(x0) + ", " + Num(xdot0) + " must be finite");
   if (!(t_end > 0)) throw InvalidArgument("t_end = " + Num(t_end) + " must be > 0");
   if (!(dt > 0)) throw InvalidArgument("dt = " + Num(dt) + " must be > 0");
-  if (max_rows < 2) throw InvalidArgument("max_rows = " + std::to_string(max_rows) + " must be >= 2");
+  if (max_rows < 2)
+    throw InvalidArgument("max_rows = " + std::to_string(max_rows) + " must be >= 2");
   const double grid_rows = std::floor(t_end / dt) + 1;
   if (!(grid_rows <= static_cast<double>(max_rows)))
     throw InvalidArgument("t_end / dt = " + Num(t_end / dt) + " gives more rows than max_rows = " +
@@ -62,12 +63,12 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
     throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
                           " at t = " + Num(t.back()) + " (raise max_rows or dt)");
   if (!r.ok())
-    RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message + " (at t = " +
-                   Num(r.t) + " in " + ModeName(r.mode) + ")");
+    RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message +
+                   " (at t = " + Num(r.t) + " in " + ModeName(r.mode) + ")");
   Trajectory out;
   out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xdot);
-  py::array names = ReadOnlyStrings({ModeName(Mode::kSlipBelow), ModeName(Mode::kStick),
-                                     ModeName(Mode::kSlipAbove)});
+  py::array names = ReadOnlyStrings(
+      {ModeName(Mode::kSlipBelow), ModeName(Mode::kStick), ModeName(Mode::kSlipAbove)});
   out.mode = names.attr("__getitem__")(ReadOnly(mode));  // codes to names
   out.mode.attr("setflags")(py::arg("write") = false);
   out.status = r.status, out.t_stick = r.t_stick, out.switches = r.switches;
@@ -129,8 +130,8 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   }
   interrupt.RaiseIfInterrupted();
   if (r.status == ContinuationStatus::kFailed) RaiseNumerical(r.message);
-  return Branch{r.param,  r.status,   r.message, r.warnings,
-                BranchPoints(r.points), r.special, r.counts,  r.seconds};
+  return Branch{r.param,   r.status, r.message, r.warnings, BranchPoints(r.points),
+                r.special, r.counts, r.seconds};
 }
 
 OrbitScanOptions ScanOptions(std::optional<OrbitScanOptions> options, std::optional<int> samples,
@@ -166,8 +167,8 @@ using Range = std::optional<std::pair<double, double>>;
 
 Basins BasinsOf(const Params& p, std::optional<int> nx, std::optional<int> ny, Range x_range,
                 Range xdot_range, std::optional<double> t_cap, std::optional<double> rtol,
-                std::optional<double> atol, const py::object& integrator,
-                const py::object& method, std::optional<BasinOptions> options) {
+                std::optional<double> atol, const py::object& integrator, const py::object& method,
+                std::optional<BasinOptions> options) {
   BasinOptions o = options.value_or(BasinOptions());
   o.scan = ScanOptions(o.scan, std::nullopt, rtol, atol, integrator, method);
   if (nx) o.nx = *nx;

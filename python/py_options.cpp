@@ -21,8 +21,7 @@ py::enum_<E> Enum(py::module_& m, const char* name, const char* doc, const char*
 }
 
 void BindEnums(py::module_& m) {
-  Enum<LawKind>(m, "Law", "Friction law mu(s), s = |x' - v| (Params.law takes its name).",
-                &LawName)
+  Enum<LawKind>(m, "Law", "Friction law mu(s), s = |x' - v| (Params.law takes its name).", &LawName)
       .value("cubic", LawKind::kCubic, "mu_s - k1 s + k3 s^3 - k5 s^5 (seed eq. 3.3)")
       .value("coulomb", LawKind::kCoulomb, "mu_k in slip, static mu_s")
       .value("stribeck", LawKind::kStribeck, "mu_k + (mu_s - mu_k) exp(-s / v_s)")
@@ -62,8 +61,7 @@ void BindEnums(py::module_& m) {
       .value("ok", ContinuationStatus::kOk)
       .value("failed", ContinuationStatus::kFailed, "a numerical failure: message says where")
       .value("cancelled", ContinuationStatus::kCancelled);
-  Enum<CurveKind>(m, "CurveKind", "Curve of the stability chart (label HB, GR, LP).",
-                  &CurveLabel)
+  Enum<CurveKind>(m, "CurveKind", "Curve of the stability chart (label HB, GR, LP).", &CurveLabel)
       .value("hopf", CurveKind::kHopf)
       .value("grazing", CurveKind::kGrazing)
       .value("fold", CurveKind::kFold);

@@ -9,9 +9,9 @@ namespace stickslip::python {
 
 namespace {
 
-const char* const kPointColumns[] = {"p",        "kind",       "branch",   "period",   "x_min",
-                                     "x_max",    "xdot_min",   "xdot_max", "t_stick",  "multiplier",
-                                     "stable",   "amplitude",  "newton_stalled"};
+const char* const kPointColumns[] = {
+    "p",        "kind",    "branch",     "period", "x_min",     "x_max",         "xdot_min",
+    "xdot_max", "t_stick", "multiplier", "stable", "amplitude", "newton_stalled"};
 
 template <typename T>
 py::class_<T> Result(py::module_& m, const char* name, const char* doc) {
@@ -45,14 +45,18 @@ void BindOrbits(py::module_& m) {
       .def_readonly("xdot_min", &Orbit::xdot_min)
       .def_readonly("xdot_max", &Orbit::xdot_max)
       .def_property_readonly(
-          "start", [](const Orbit& o) { return ReadOnly(std::vector<double>{o.start[0], o.start[1]}); },
+          "start",
+          [](const Orbit& o) {
+            return ReadOnly(std::vector<double>{o.start[0], o.start[1]});
+          },
           "stick-slip: the exit point (x0, v); pure slip: the point on x' = 0")
       .def_readonly("modes", &Orbit::modes, "segment sequence from start")
       .def_readonly("crossings", &Orbit::crossings, "crossings of x' = v without sticking")
       .def_readonly("has_floquet", &Orbit::has_floquet)
       .def_property_readonly("monodromy", [](const Orbit& o) { return Matrix(o.monodromy); })
       .def_property_readonly(
-          "eigenvalues", [](const Orbit& o) { return py::make_tuple(o.eigenvalues[0], o.eigenvalues[1]); })
+          "eigenvalues",
+          [](const Orbit& o) { return py::make_tuple(o.eigenvalues[0], o.eigenvalues[1]); })
       .def_readonly("multiplier", &Orbit::multiplier, "the nontrivial Floquet multiplier")
       .def_readonly("stable", &Orbit::stable)
       .def_readonly("newton_stalled", &Orbit::newton_stalled);
@@ -60,14 +64,18 @@ void BindOrbits(py::module_& m) {
       .def_readonly("status", &PeriodicOrbits::status)
       .def_readonly("message", &PeriodicOrbits::message)
       .def_readonly("steady", &PeriodicOrbits::steady)
-      .def_property_readonly("stick_slip", [](const PeriodicOrbits& o) -> py::object {
-        return o.has_stick_slip ? py::cast(o.stick_slip) : py::none();
-      }, "the stick-slip orbit, or None")
+      .def_property_readonly(
+          "stick_slip",
+          [](const PeriodicOrbits& o) -> py::object {
+            return o.has_stick_slip ? py::cast(o.stick_slip) : py::none();
+          },
+          "the stick-slip orbit, or None")
       .def_readonly("pure_slip", &PeriodicOrbits::pure_slip, "by increasing amplitude")
       .def_readonly("a_stick", &PeriodicOrbits::a_stick, "smallest amplitude that sticks")
       .def_readonly("a_max", &PeriodicOrbits::a_max)
       .def_readonly("returns", &PeriodicOrbits::returns, "return-map evaluations");
-  Result<Disturbance>(m, "Disturbance", "Smallest disturbance of steady sliding that reaches an orbit.")
+  Result<Disturbance>(m, "Disturbance",
+                      "Smallest disturbance of steady sliding that reaches an orbit.")
       .def_readonly("x", &Disturbance::x, "along x' = 0")
       .def_readonly("xdot", &Disturbance::xdot, "along x = xbar")
       .def_readonly("energy", &Disturbance::energy, "((x - xbar)^2 + x'^2) / 2");
@@ -75,12 +83,16 @@ void BindOrbits(py::module_& m) {
 
 void BindBranch(py::module_& m) {
   Result<BranchPoints>(m, "BranchPoints", "The rows of a branch, one read-only array per column.")
-      .def("keys", [](const BranchPoints&) { return std::vector<std::string>(std::begin(kPointColumns), std::end(kPointColumns)); })
-      .def("items", [](const py::object& self) {
-        py::list out;
-        for (const char* k : kPointColumns) out.append(py::make_tuple(k, self.attr(k)));
-        return out;
-      })
+      .def("keys",
+           [](const BranchPoints&) {
+             return std::vector<std::string>(std::begin(kPointColumns), std::end(kPointColumns));
+           })
+      .def("items",
+           [](const py::object& self) {
+             py::list out;
+             for (const char* k : kPointColumns) out.append(py::make_tuple(k, self.attr(k)));
+             return out;
+           })
       .def("__len__", [](const BranchPoints& b) { return b.p.size(); })
       .def_readonly("p", &BranchPoints::p, "the continued parameter")
       .def_readonly("kind", &BranchPoints::kind, "'stick-slip', 'pure-slip', 'equilibrium'")
@@ -97,7 +109,8 @@ void BindBranch(py::module_& m) {
       .def_readonly("newton_stalled", &BranchPoints::newton_stalled);
   Result<SpecialPoint>(m, "SpecialPoint", "A located special point (GR, HB, LP).")
       .def_readonly("kind", &SpecialPoint::kind)
-      .def_property_readonly("label", [](const SpecialPoint& s) { return std::string(SpecialLabel(s.kind)); })
+      .def_property_readonly(
+          "label", [](const SpecialPoint& s) { return std::string(SpecialLabel(s.kind)); })
       .def_readonly("p", &SpecialPoint::p)
       .def_readonly("period", &SpecialPoint::period)
       .def_readonly("x_min", &SpecialPoint::x_min)
@@ -128,19 +141,22 @@ void BindBranch(py::module_& m) {
       .def_readonly("special", &Branch::special)
       .def_readonly("counts", &Branch::counts)
       .def_readonly("seconds", &Branch::seconds)
-      .def_property_readonly("partial", [](const Branch& b) { return b.status != ContinuationStatus::kOk; });
+      .def_property_readonly("partial",
+                             [](const Branch& b) { return b.status != ContinuationStatus::kOk; });
 }
 
 void BindChartAndBasins(py::module_& m) {
   py::class_<ChartCurve>(m, "ChartCurve", "One HB, GR or LP curve; curve[param1] is p1.")
-      .def("__getitem__", [](const py::object& self, const std::string& key) -> py::object {
-        const auto& c = self.cast<const ChartCurve&>();
-        if (key == c.param1) return self.attr("p1");
-        if (key == c.param2) return self.attr("p2");
-        return GetItem(self, key);
-      })
+      .def("__getitem__",
+           [](const py::object& self, const std::string& key) -> py::object {
+             const auto& c = self.cast<const ChartCurve&>();
+             if (key == c.param1) return self.attr("p1");
+             if (key == c.param2) return self.attr("p2");
+             return GetItem(self, key);
+           })
       .def_readonly("kind", &ChartCurve::kind)
-      .def_property_readonly("label", [](const ChartCurve& c) { return std::string(CurveLabel(c.kind)); })
+      .def_property_readonly("label",
+                             [](const ChartCurve& c) { return std::string(CurveLabel(c.kind)); })
       .def_readonly("param1", &ChartCurve::param1)
       .def_readonly("param2", &ChartCurve::param2)
       .def_readonly("p1", &ChartCurve::p1)
@@ -155,12 +171,13 @@ void BindChartAndBasins(py::module_& m) {
       .def_readonly("seconds", &ChartCurve::seconds)
       .def_readonly("evaluations", &ChartCurve::evaluations);
   py::class_<ChartPoint>(m, "ChartPoint", "A codimension-two point (GH, GR-LP).")
-      .def("__getitem__", [](const py::object& self, const std::string& key) -> py::object {
-        const auto& c = self.cast<const ChartPoint&>();
-        if (key == c.param1) return self.attr("p1");
-        if (key == c.param2) return self.attr("p2");
-        return GetItem(self, key);
-      })
+      .def("__getitem__",
+           [](const py::object& self, const std::string& key) -> py::object {
+             const auto& c = self.cast<const ChartPoint&>();
+             if (key == c.param1) return self.attr("p1");
+             if (key == c.param2) return self.attr("p2");
+             return GetItem(self, key);
+           })
       .def_readonly("label", &ChartPoint::label)
       .def_readonly("param1", &ChartPoint::param1)
       .def_readonly("param2", &ChartPoint::param2)

@@ -23,8 +23,8 @@ struct Trajectory {
 
 // The rows of continue_branch(), one array per branch.tsv column.
 struct BranchPoints {
-  py::array p, kind, branch, period, x_min, x_max, xdot_min, xdot_max, t_stick, multiplier,
-      stable, amplitude, newton_stalled;
+  py::array p, kind, branch, period, x_min, x_max, xdot_min, xdot_max, t_stick, multiplier, stable,
+      amplitude, newton_stalled;
   explicit BranchPoints(const std::vector<BranchPoint>& points);
   BranchPoints() = default;
 };
