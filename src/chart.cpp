@@ -317,6 +317,10 @@ ChartResult Charter::Run() {
     const auto t1 = Clock::now();
     r_.regions = ClassifyGrid(base_, o_, r_.curves);
     r_.region_seconds = Since(t1);
+    if (r_.regions.cells.size() < static_cast<size_t>(r_.regions.n1) * r_.regions.n2) {
+      r_.status = ChartStatus::kCancelled;  // ClassifyGrid stopped early
+      r_.message = "cancelled while classifying the regions";
+    }
   }
   return r_;
 }

@@ -74,8 +74,10 @@ RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o,
               (p.type == "persistence" && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
   OrbitFinder finder(Model(base), o.orbit);
   for (double x1 : grid.x1)
-    for (double x2 : grid.x2)
+    for (double x2 : grid.x2) {
+      if (o.cancelled && o.cancelled()) return grid;  // cells so far; Chart says cancelled
       grid.cells.push_back(ClassifyPoint(finder, pl.At(base, x1, x2), check));
+    }
   return grid;
 }
 

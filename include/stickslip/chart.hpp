@@ -80,7 +80,7 @@ struct ChartOptions {
   bool grazing_curves = true;        // GR curves and GR-LP points
   bool fold_curves = true;           // LP curves from GH points
   int region_n1 = 0, region_n2 = 0;  // region grid; 0: none
-  std::function<bool()> cancelled;   // polled between points
+  std::function<bool()> cancelled;   // polled between points and between region cells
   // Empty if valid for base, else one line naming the violated constraint.
   std::string ValidationError(const Params& base) const;
 };
