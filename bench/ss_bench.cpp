@@ -129,7 +129,7 @@ int Main(int argc, char** argv) {
       return 2;
     }
   }
-  // The full run updates the figure the README shows; a quick one stays in the build tree.
+  // The full run writes plots/ (not committed); a quick one stays in the build tree.
   if (out.empty())
     out = quick ? std::string(SS_BENCH_BINARY_DIR) + "/quick"
                 : std::string(STICKSLIP_SOURCE_DIR) + "/plots";

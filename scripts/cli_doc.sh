@@ -107,7 +107,11 @@ EOF
 
 target="$root/docs/cli.md"
 if ((check)); then
-  diff -u "$target" "$out" && echo "docs/cli.md is up to date"
+  if ! diff -u "$target" "$out"; then
+    echo "docs/cli.md differs from the apps' --help: run 'bash scripts/cli_doc.sh $build'" >&2
+    exit 1
+  fi
+  echo "docs/cli.md is up to date"
 else
   cp "$out" "$target"
   echo "wrote docs/cli.md"

@@ -1,5 +1,5 @@
-// End-to-end regression tests of the apps' reliability promises (README,
-// Reliability; issue "Reliability, second round"): what is refused before the
+// End-to-end regression tests of the apps' reliability promises
+// (docs/reliability.md): what is refused before the
 // run, full disks, closed or failing stdout, signals and time limits in every
 // phase, study files that are not text, and a missing gnuplot. Each test
 // names the item it guards.
