@@ -7,7 +7,7 @@
 # Usage: pip_test.sh SOURCE_DIR BUILD_DIR PYTHON
 set -euo pipefail
 src=$1 build=$2 python=$3
-if ! "$python" -c "import pip, setuptools, wheel, venv" 2>/dev/null; then
+if ! "$python" -c "import setuptools, wheel, venv" 2>/dev/null || ! "$python" -m pip --version >/dev/null 2>&1; then
   echo "pip_test: needs python3-pip, python3-setuptools, python3-wheel, python3-venv" >&2
   exit 77
 fi
