@@ -68,6 +68,7 @@ void BindEnums(py::module_& m) {
   Enum<ChartStatus>(m, "ChartStatus", "How a chart ended.", &ChartStatusName)
       .value("ok", ChartStatus::kOk)
       .value("failed", ChartStatus::kFailed, "a numerical failure: message says where")
+      .value("partial", ChartStatus::kPartial, "a curve cut short or a region cell failed")
       .value("cancelled", ChartStatus::kCancelled);
   Enum<Region>(m, "Region", "Region of the stability chart.", &RegionName)
       .value("steady_only", Region::kSteadyOnly, "stable steady sliding, no oscillation")

@@ -1,5 +1,6 @@
 #include "stickslip/chart.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -34,6 +35,8 @@ const char* ChartStatusName(ChartStatus s) {
       return "ok";
     case ChartStatus::kFailed:
       return "failed";
+    case ChartStatus::kPartial:
+      return "partial";
     case ChartStatus::kCancelled:
       return "cancelled";
   }
@@ -52,8 +55,10 @@ std::string ChartOptions::ValidationError(const Params& base) const {
   std::ostringstream os;
   if (!err.empty())
     os << err;
-  else if (!(max_step > 0 && max_step <= 0.2))
-    os << "max_step = " << max_step << " must be in (0, 0.2]";
+  else if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= 0.2))
+    os << "max_step = " << max_step << " must be in [" << 1.0 / kMaxCurvePoints
+       << ", 0.2]: a curve across the rectangle takes about 1 / max_step points, at most "
+       << kMaxCurvePoints;
   else if (samples < 4)
     os << "samples = " << samples << " must be >= 4";
   else if (region_n1 < 0 || region_n2 < 0 || (region_n1 == 0) != (region_n2 == 0))
@@ -127,6 +132,10 @@ class Charter {
   void GrazingCurves();
   void FoldCurves();
   bool Stop(ChartResult& r, const TraceResult& t, CurveKind kind);
+  void CutShort(CurveKind kind, const Eigen::Vector2d& start, const std::string& why);
+  bool Halted() const {
+    return r_.status == ChartStatus::kFailed || r_.status == ChartStatus::kCancelled;
+  }
 
   Params base_;
   ChartOptions o_;
@@ -151,6 +160,16 @@ bool Charter::Stop(ChartResult& r, const TraceResult& t, CurveKind kind) {
   return false;
 }
 
+// The first curve cut short makes the chart partial; later ones are counted.
+void Charter::CutShort(CurveKind kind, const Eigen::Vector2d& start, const std::string& why) {
+  if (r_.status != ChartStatus::kOk) return;
+  r_.status = ChartStatus::kPartial;
+  std::ostringstream os;
+  os << CurveLabel(kind) << " curve from " << pl_.p1 << " = " << start[0] << ", " << pl_.p2 << " = "
+     << start[1] << " cut short: " << why;
+  r_.message = os.str();
+}
+
 void Charter::HopfCurves() {
   HopfCurveProblem problem(base_, pl_);
   TraceOptions to = TraceOpts();
@@ -163,6 +182,7 @@ void Charter::HopfCurves() {
     const auto t0 = Clock::now();
     const TraceResult t = TraceBothWays(problem, to, VectorXd(s.x), s.fixed);
     if (Stop(r_, t, CurveKind::kHopf)) return;
+    if (!t.cut.empty()) CutShort(CurveKind::kHopf, s.x, t.cut);
     Curve c;
     c.kind = CurveKind::kHopf;
     c.ends = t.ends;
@@ -211,6 +231,7 @@ void Charter::GrazingCurves() {
     const auto t0 = Clock::now();
     const TraceResult t = TraceBothWays(problem, TraceOpts(), VectorXd(s.x), s.fixed);
     if (Stop(r_, t, CurveKind::kGrazing)) return;
+    if (!t.cut.empty()) CutShort(CurveKind::kGrazing, s.x, t.cut);
     Curve c;
     c.kind = CurveKind::kGrazing;
     c.ends = t.ends;
@@ -253,8 +274,10 @@ void Charter::FoldCurves() {
   to.i1 = 1;
   to.other_scale = 0.5;
   // dG/da is noisy at small a (the integration error over a^2), the fold is
-  // ill-conditioned in a: Newton stalls at ~1e-7 in a, not in the parameters.
-  to.tol = 1e-10;
+  // ill-conditioned in a: Newton stalls at ~1e-7 in a, not in the parameters
+  // (stalls are accepted, palc.hpp). The stopping test follows the integration
+  // tolerance: a fixed 1e-10 left the rows 3e-12 off at any rtol.
+  to.tol = std::max(1e-13, 10 * o_.orbit.flow.rtol);
   // An orbit that reaches the belt speed is on the GR curve: the fold ends there.
   to.stop = [&](const VectorXd& u) {
     const FoldSample s = problem.Sample(u);
@@ -304,6 +327,8 @@ void Charter::FoldCurves() {
         c.ends = "GH / GR-LP";
       }
     }
+    if (!t.cut.empty() && c.ends != "GH / GR-LP")
+      CutShort(CurveKind::kFold, Eigen::Vector2d(gh.p1, gh.p2), t.cut);
     c.seconds = Since(t0);
     r_.curves.push_back(std::move(c));
   }
@@ -312,9 +337,9 @@ void Charter::FoldCurves() {
 ChartResult Charter::Run() {
   const auto t0 = Clock::now();
   if (o_.hopf_curves) HopfCurves();
-  if (r_.status == ChartStatus::kOk && o_.grazing_curves) GrazingCurves();
-  if (r_.status == ChartStatus::kOk && o_.fold_curves) FoldCurves();
-  if (r_.status == ChartStatus::kOk && o_.cancelled && o_.cancelled()) {
+  if (!Halted() && o_.grazing_curves) GrazingCurves();
+  if (!Halted() && o_.fold_curves) FoldCurves();
+  if (!Halted() && o_.cancelled && o_.cancelled()) {
     r_.status = ChartStatus::kCancelled;  // evaluations may have failed for it: curves cut
     r_.message = "cancelled";
   }
@@ -331,13 +356,17 @@ ChartResult Charter::Run() {
   for (const Curve& c : r_.curves)
     for (const CurvePoint& p : c.points) r_.unphysical_points += p.unphysical;
   r_.seconds = Since(t0);
-  if (r_.status == ChartStatus::kOk && o_.region_n1 > 0) {
+  if (!Halted() && o_.region_n1 > 0) {
     const auto t1 = Clock::now();
     r_.regions = ClassifyGrid(base_, o_, r_.curves);
     r_.region_seconds = Since(t1);
     if (r_.regions.cells.size() < static_cast<size_t>(r_.regions.n1) * r_.regions.n2) {
       r_.status = ChartStatus::kCancelled;  // ClassifyGrid stopped early
       r_.message = "cancelled while classifying the regions";
+    } else if (r_.regions.failed > 0 && r_.status == ChartStatus::kOk) {
+      r_.status = ChartStatus::kPartial;
+      r_.message = std::to_string(r_.regions.failed) +
+                   " region cells unclassified; first: " + r_.regions.failure;
     }
   }
   return r_;

@@ -1,6 +1,8 @@
 #include "stickslip/chart_regions.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "stickslip/grazing_curve.hpp"
 #include "stickslip/hopf_curve.hpp"
@@ -49,10 +51,21 @@ bool Oscillation(OrbitFinder& finder) {
 }
 }  // namespace
 
-Region ClassifyPoint(OrbitFinder& finder, const Params& p, bool pure_slip_check) {
+Region ClassifyPoint(OrbitFinder& finder, const Params& p, bool pure_slip_check,
+                     std::string* failure) {
   const bool stable = HopfFunction(p) > 0;
-  const GrazingSample g = SampleGrazing(finder, p, false);
-  const bool stick_slip = g.ok() && g.gap > 0;
+  finder.set_model(Model(p));
+  finder.set_floquet(false);
+  // The first return of the slip phase from the exit point, switching
+  // honoured: it reaches the belt speed (stick-slip) or turns below it. Not
+  // the grazing gap's run, which ignores switching and so evaluates mu at
+  // negative slip speeds, where the Leine law mu_s / (1 + delta s) has a pole.
+  const OrbitResult ss = finder.StickSlip(true);
+  const bool stick_slip = ss.ok();
+  if (failure && ss.status != OrbitStatus::kOk && ss.status != OrbitStatus::kMissed &&
+      ss.status != OrbitStatus::kNoReturn)
+    *failure =
+        std::string(OrbitStatusName(ss.status)) + (ss.message.empty() ? "" : ": ") + ss.message;
   if (!stable) return stick_slip ? Region::kStickSlip : Region::kPureSlip;
   if (stick_slip) return Region::kBistable;
   if (pure_slip_check && Oscillation(finder)) return Region::kBistable;
@@ -76,7 +89,15 @@ RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o,
   for (double x1 : grid.x1)
     for (double x2 : grid.x2) {
       if (o.cancelled && o.cancelled()) return grid;  // cells so far; Chart says cancelled
-      grid.cells.push_back(ClassifyPoint(finder, pl.At(base, x1, x2), check));
+      std::string failure;
+      grid.cells.push_back(ClassifyPoint(finder, pl.At(base, x1, x2), check, &failure));
+      if (failure.empty()) continue;
+      if (grid.failed++ == 0) {
+        std::ostringstream os;
+        os << "region of the cell at " << pl.p1 << " = " << x1 << ", " << pl.p2 << " = " << x2
+           << ": stick-slip orbit: " << failure;
+        grid.failure = os.str();
+      }
     }
   return grid;
 }

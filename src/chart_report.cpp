@@ -7,7 +7,9 @@ namespace stickslip {
 namespace {
 void Header(TsvTable& t, const ChartResult& r, const std::string& model) {
   t.AddComment("model: " + model);
-  if (r.status != ChartStatus::kOk)
+  if (r.status == ChartStatus::kPartial)
+    t.AddComment("status: partial: " + r.message);
+  else if (r.status != ChartStatus::kOk)
     t.AddComment(std::string("status: partial (") + ChartStatusName(r.status) + "): " + r.message);
   else
     t.AddComment("status: complete");

@@ -15,7 +15,7 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   p.ds_min = 1e-6 * o.max_step;
   p.tol = o.tol;
   p.max_newton = 12;
-  p.max_points = 20000;
+  p.max_points = kMaxCurvePoints;
   p.scale = VectorXd::Constant(problem.unknowns(), o.other_scale);
   p.scale[o.i1] = o.plane.width1();
   p.scale[o.i1 + 1] = o.plane.width2();
@@ -26,6 +26,7 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
 struct Leg {
   std::vector<VectorXd> u;
   std::string end;
+  std::string cut;  // the way ended early (a PALC failure): why
   int evaluations = 0;
   bool cancelled = false, stopped = false, closed = false;
 };
@@ -109,6 +110,7 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
     leg.end = "border";
   } else if (!leg.cancelled) {
     leg.end = std::string(PalcStatusName(r.status)) + (r.message.empty() ? "" : ": " + r.message);
+    leg.cut = leg.end;
   }
   leg.evaluations = palc.evaluations() - before;
   return leg;
@@ -123,6 +125,7 @@ TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const
   TraceResult t;
   t.u = leg.u;
   t.ends = "start / " + leg.end;
+  t.cut = leg.cut;
   t.evaluations = leg.evaluations;
   t.cancelled = leg.cancelled;
   t.stopped = leg.stopped;
@@ -137,6 +140,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   const PalcCorrection c = palc.CorrectFixed(u0, fixed);
   if (!c.ok) {
     t.ends = "start failed: " + c.why;
+    t.cut = t.ends;
     t.evaluations = palc.evaluations();
     return t;
   }
@@ -158,6 +162,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   if (!t.u.empty() && !fwd.u.empty()) t.u.pop_back();  // the shared start
   t.u.insert(t.u.end(), fwd.u.begin(), fwd.u.end());
   t.ends = fwd.closed ? "closed" : (back.end.empty() ? "start" : back.end) + " / " + fwd.end;
+  t.cut = back.cut.empty() ? fwd.cut : back.cut;
   t.evaluations = palc.evaluations();
   return t;
 }

@@ -151,12 +151,13 @@ std::string ValidationError(const Params& p) {
   }
   // Beyond these scales k3 = (mu_s - mu_m) / (2 v_m^3) and the state over- or
   // underflow and the results would be nan or inf.
-  // A small quintic coefficient k5 is harmless: only its upper end counts.
+  // A small quintic coefficient k5 or damping ratio beta is harmless (beta = 0
+  // is the undamped oscillator): only their upper end counts.
   for (const auto& name : ParameterNames(p.law)) {
     const double x = GetParameter(p, name);
-    const double lo = name == "k5" ? 0.0 : kMinScale;
+    const double lo = name == "k5" || name == "beta" ? 0.0 : kMinScale;
     if (x != 0 && !(x >= lo && x <= kMaxScale))
-      return name + " = " + Num(x) + " is outside [" + Num(kMinScale) + ", " + Num(kMaxScale) +
+      return name + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
              "]: scales beyond it make the computation meaningless";
   }
   return "";

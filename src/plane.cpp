@@ -5,6 +5,8 @@
 #include <sstream>
 #include <vector>
 
+#include "stickslip/report.hpp"
+
 namespace stickslip {
 
 namespace {
@@ -34,27 +36,86 @@ std::string RangeError(double from, double to, const char* from_name, const char
   if (!(from < to))
     return std::string(from_name) + " = " + Num(from) + " must be < " + to_name + " = " + Num(to) +
            (from == to ? " (the rectangle is empty)" : " (the rectangle is inverted)");
+  const double scale = std::max(std::abs(from), std::abs(to));
+  if (to - from < kMinRelativeWidth * scale) {
+    std::ostringstream os;
+    os << to_name << " = " << FormatNumber(to) << " is too close to " << from_name << " = "
+       << FormatNumber(from) << ": the width " << Num(to - from)
+       << " must be >= " << Num(kMinRelativeWidth) << " max(|" << from_name << "|, |" << to_name
+       << "|)";
+    return os.str();
+  }
   return "";
+}
+
+// The model's error at (x1, x2), or "".
+std::string PointError(const Plane& pl, const Params& base, double x1, double x2) {
+  const std::string e = stickslip::ValidationError(pl.At(base, x1, x2));
+  if (e.empty()) return e;
+  return "the rectangle leaves the model's domain at " + pl.p1 + " = " + Num(x1) + ", " + pl.p2 +
+         " = " + Num(x2) + ": " + e;
 }
 }  // namespace
 
-std::string Plane::ValidationError(const Params& base) const {
-  for (const std::string& e :
-       {AxisError(base, p1, "param"), AxisError(base, p2, "param2"),
-        std::string(p1 == p2 ? "param = param2 = '" + p1 + "': the two axes must differ" : ""),
-        RangeError(from1, to1, "from", "to"), RangeError(from2, to2, "from2", "to2")})
-    if (!e.empty()) return e;
-  constexpr int kN = 33;
-  for (int i = 0; i < kN; ++i) {
-    for (int j = 0; j < kN; ++j) {
-      const double x1 = from1 + width1() * i / (kN - 1), x2 = from2 + width2() * j / (kN - 1);
-      const std::string e = stickslip::ValidationError(At(base, x1, x2));
-      if (!e.empty())
-        return "the rectangle leaves the model's domain at " + p1 + " = " + Num(x1) + ", " + p2 +
-               " = " + Num(x2) + ": " + e;
-    }
+const char* PlaneInputKey(PlaneInput input) {
+  switch (input) {
+    case PlaneInput::kParam:
+      return "param";
+    case PlaneInput::kParam2:
+      return "param2";
+    case PlaneInput::kFrom:
+      return "from";
+    case PlaneInput::kTo:
+      return "to";
+    case PlaneInput::kFrom2:
+      return "from2";
+    case PlaneInput::kTo2:
+      return "to2";
+    case PlaneInput::kNone:
+    case PlaneInput::kRectangle:
+      break;
   }
   return "";
+}
+
+PlaneError Plane::Check(const Params& base) const {
+  PlaneError out;
+  auto fail = [&](PlaneInput input, const std::string& message) {
+    out.input = input, out.message = message;
+    return out;
+  };
+  if (auto e = AxisError(base, p1, "param"); !e.empty()) return fail(PlaneInput::kParam, e);
+  if (auto e = AxisError(base, p2, "param2"); !e.empty()) return fail(PlaneInput::kParam2, e);
+  if (p1 == p2)
+    return fail(PlaneInput::kParam2, "param = param2 = '" + p1 + "': the two axes must differ");
+  if (auto e = RangeError(from1, to1, "from", "to"); !e.empty())
+    return fail(!std::isfinite(from1) ? PlaneInput::kFrom : PlaneInput::kTo, e);
+  if (auto e = RangeError(from2, to2, "from2", "to2"); !e.empty())
+    return fail(!std::isfinite(from2) ? PlaneInput::kFrom2 : PlaneInput::kTo2, e);
+  // The near corner; each edge from it, its far end (the value given) first,
+  // blamed on that end; then a 33 x 33 grid (edges included).
+  const std::string near = stickslip::ValidationError(At(base, from1, from2));
+  if (!near.empty()) {
+    // The end whose move to the far end cures it; else the one the error names.
+    const bool second =
+        stickslip::ValidationError(At(base, from1, to2)).empty() ||
+        (!stickslip::ValidationError(At(base, to1, from2)).empty() && near.rfind(p2 + " ", 0) == 0);
+    return fail(second ? PlaneInput::kFrom2 : PlaneInput::kFrom,
+                PointError(*this, base, from1, from2));
+  }
+  constexpr int kN = 33;
+  auto x1 = [&](int i) { return i == kN - 1 ? to1 : from1 + width1() * i / (kN - 1); };
+  auto x2 = [&](int j) { return j == kN - 1 ? to2 : from2 + width2() * j / (kN - 1); };
+  for (int i = kN - 1; i >= 1; --i)
+    if (auto e = PointError(*this, base, x1(i), from2); !e.empty()) return fail(PlaneInput::kTo, e);
+  for (int j = kN - 1; j >= 1; --j)
+    if (auto e = PointError(*this, base, from1, x2(j)); !e.empty())
+      return fail(PlaneInput::kTo2, e);
+  for (int i = kN - 1; i >= 1; --i)
+    for (int j = kN - 1; j >= 1; --j)
+      if (auto e = PointError(*this, base, x1(i), x2(j)); !e.empty())
+        return fail(PlaneInput::kRectangle, e);
+  return out;
 }
 
 Params Plane::At(const Params& base, double x1, double x2) const {

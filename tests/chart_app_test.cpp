@@ -93,6 +93,33 @@ TEST_F(ChartApp, BadNumbersAndOptionsExit2) {
   ExpectRejected({"--gamma", "1"}, {"gamma"});
 }
 
+TEST_F(ChartApp, DegenerateRangesAndStepsExit2) {
+  ExpectRejected({"--from", "0.05", "--to", "0.0500000000000001"},
+                 {"--to: ", "to = 0.0500000000000001 is too close to from = 0.05"});
+  ExpectRejected({"--max_step", "1e-9"}, {"max_step = 1e-09", "[5e-05, 0.2]"});
+}
+
+// N11: a range end outside the model's domain names its option and value.
+TEST_F(ChartApp, RangeEndErrorsNameTheOption) {
+  ExpectRejected({"--to2", "5e6"}, {"--to2: ", "beta = 5000000 is outside [0, 1000000]"});
+  const Result r = Run({"--to2", "5e6", "--out", Out(), "--no_plots"});
+  EXPECT_FALSE(Contains(r.err, "1062500") || Contains(r.err, "1093750")) << r.err;
+  ExpectRejected({"--from2", "-0.1"}, {"--from2: ", "beta = -0.1"});
+  ExpectRejected({"--k5", "0.24", "--to", "1.5"}, {"--to: ", "v = 1.5"});
+}
+
+// A curve cut short (here at max-points) makes the chart partial: exit 1, and
+// every file says so.
+TEST_F(ChartApp, CutShortChartExits1) {
+  const Result r = Run({"--from", "0.466", "--to", "0.5", "--from2", "0", "--to2", "0.03",
+                        "--max_step", "5e-5", "--no_plots", "--out", Out()});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(Contains(r.err, "partial"));
+  EXPECT_TRUE(Contains(r.err, "HB curve from v = 0.466"));
+  EXPECT_TRUE(Contains(ReadFile(Out() + "/curves.tsv"), "# status: partial: HB curve"));
+  EXPECT_TRUE(Contains(ReadFile(Out() + "/codim2.tsv"), "# status: partial: HB curve"));
+}
+
 TEST_F(ChartApp, HelpAndVersion) {
   Result r = Run({"--help"});
   EXPECT_EQ(r.code, 0);

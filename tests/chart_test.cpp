@@ -39,6 +39,60 @@ TEST(Chart, RectangleValidated) {
   EXPECT_THROW(Chart(base, o), InvalidArgument);
 }
 
+// Degenerate ranges and steps are refused up front: they once gave 10 curves
+// of 39,999 identical rows (--to 0.0500000000000001) or 160 MB of fragments
+// (--max_step 1e-9), reported complete.
+TEST(Chart, DegenerateRangesAndStepsRefused) {
+  const Params base;
+  const PlaneError e = Plane{"v", "beta", 0.05, 0.0500000000000001, 0, 0.25}.Check(base);
+  EXPECT_EQ(e.input, PlaneInput::kTo);
+  EXPECT_TRUE(Contains(e.message, "to = 0.0500000000000001 is too close to from = 0.05"))
+      << e.message;
+  EXPECT_TRUE(Contains(Plane{"v", "beta", 0.05, 0.6, 0.1, 0.1 + 1e-9}.ValidationError(base),
+                       "to2 = 0.100000001 is too close"));
+  const Plane tiny{"v", "beta", 0.05, 0.6, 0, 1e-12};  // from2 = 0: relative to 1e-12
+  EXPECT_EQ(tiny.ValidationError(base), "");
+  ChartOptions o;
+  o.max_step = 1e-9;
+  EXPECT_TRUE(Contains(o.ValidationError(base), "max_step = 1e-09 must be in [5e-05, 0.2]"));
+  o.max_step = 1.0 / kMaxCurvePoints;
+  EXPECT_EQ(o.ValidationError(base), "");
+}
+
+// A range end outside the model's domain is blamed on that end, at the value
+// given (not at a grid point such as beta = 1062500).
+TEST(Chart, RangeEndErrorsNameTheEnd) {
+  const Params base;
+  PlaneError e = Plane{"v", "beta", 0.05, 0.6, 0, 5e6}.Check(base);
+  EXPECT_EQ(e.input, PlaneInput::kTo2);
+  EXPECT_STREQ(PlaneInputKey(e.input), "to2");
+  EXPECT_TRUE(Contains(e.message, "beta = 5000000 is outside [0, 1000000]")) << e.message;
+  e = Plane{"v", "beta", 0.05, 0.6, -0.1, 0.1}.Check(base);
+  EXPECT_EQ(e.input, PlaneInput::kFrom2);
+  e = Plane{"v", "mu_s", 0.05, 0.6, 0.1, 0.5}.Check(base);  // mu_s < mu_m = 0.25
+  EXPECT_EQ(e.input, PlaneInput::kFrom2) << e.message;
+  Params quintic;
+  quintic.k5 = 0.24;
+  e = Plane{"v", "beta", 0.1, 1.5, 0, 0.1}.Check(quintic);
+  EXPECT_EQ(e.input, PlaneInput::kTo);
+  EXPECT_TRUE(Contains(e.message, "v = 1.5")) << e.message;
+}
+
+// A curve cut short inside the rectangle makes the chart partial, naming it.
+TEST(Chart, CutShortCurveMakesTheChartPartial) {
+  ChartOptions o;
+  o.plane = Plane{"v", "beta", 0.466, 0.5, 0, 0.03};  // HB crosses it diagonally
+  o.max_step = 1.0 / kMaxCurvePoints;                 // a crossing takes ~1.4 / max_step points
+  o.grazing_curves = o.fold_curves = false;
+  const ChartResult r = Chart(Params{}, o);
+  EXPECT_EQ(r.status, ChartStatus::kPartial);
+  EXPECT_STREQ(ChartStatusName(r.status), "partial");
+  EXPECT_TRUE(Contains(r.message, "HB curve from v = 0.466"));
+  EXPECT_TRUE(Contains(r.message, "cut short: max-points")) << r.message;
+  o.max_step = 0.01;
+  EXPECT_EQ(Chart(Params{}, o).status, ChartStatus::kOk);
+}
+
 constexpr double kHalfRange = 0.003;
 
 // The region at (v, beta) from one-parameter runs over v +- kHalfRange.

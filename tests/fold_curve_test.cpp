@@ -98,5 +98,29 @@ TEST(FoldCurve, PointsAgainstTheReference) {
   }
 }
 
+// At the tightest tolerances the LP rows follow the integration error down
+// (they stayed 3.3e-12 off at every tolerance: the corrector's fixed 1e-10
+// stopping test). Every row but the GH and GR-LP end points, against the
+// reference fold at its beta.
+TEST(FoldCurve, PointsAtTheTightestToleranceWithin1e13) {
+  ChartOptions o;
+  o.plane = Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12};
+  o.orbit.flow.rtol = 1e-14;
+  o.orbit.flow.atol = 1e-16;
+  o.hopf_curves = true;
+  const ChartResult r = Chart(Quintic(), o);
+  const Curve* lp = FoldCurve(r);
+  ASSERT_NE(lp, nullptr);
+  ASSERT_GT(lp->points.size(), 20u);
+  for (double frac : {0.2, 0.45, 0.7, 0.9}) {
+    const CurvePoint& c = lp->points[static_cast<size_t>(frac * lp->points.size())];
+    Params p = Quintic();
+    p.beta = c.p2;
+    Real v = c.p1, x = Friction(p).Mu(c.p1) + c.amplitude;
+    ASSERT_TRUE(ReferenceFold(p, x, v)) << "beta = " << c.p2;
+    EXPECT_NEAR(c.p1, static_cast<double>(v), 1e-13) << "beta = " << c.p2;
+  }
+}
+
 }  // namespace
 }  // namespace stickslip

@@ -70,6 +70,24 @@ TEST(GrazingCurve, SeedCurveOnTheReferenceGrazingCurve) {
   EXPECT_TRUE(r.codim2.empty());
 }
 
+// beta is a damping ratio: every beta >= 0 is a model, and the GR curve runs
+// into the rectangle's beta = 0 edge (it once stopped at beta = 1e-6, where a
+// lower scale bound refused the next step).
+TEST(GrazingCurve, SeedCurveReachesBetaZero) {
+  const ChartResult& r = SeedChart();
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(r.status, ChartStatus::kOk) << r.message;
+  const Curve& c = r.curves[0];
+  EXPECT_EQ(c.ends, "border / border");
+  const CurvePoint& end =
+      c.points.front().p2 < c.points.back().p2 ? c.points.front() : c.points.back();
+  ASSERT_EQ(end.p2, 0.0) << c.ends;
+  Params p;
+  p.beta = 0;
+  const long double v = ref::GrazingSpeed(p, end.p1 - 1e-4L, end.p1 + 1e-4L, 1e-15L);
+  EXPECT_NEAR(end.p1, static_cast<double>(v), 1e-10);
+}
+
 TEST(GrazingCurve, SeedGrazingAtBeta005AsTheOneParameterBranch) {
   // The averaging estimate 2 sqrt((k1 - 2 beta) / (15 k3)) = 0.3944 is near; the
   // one-parameter run (ss_continue) finds v_g a little under 0.40 at beta = 0.05.

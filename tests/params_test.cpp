@@ -1,8 +1,6 @@
 // Parameters: validation messages, names, the seed's scaling (section 3).
 #include "stickslip/params.hpp"
 
-#include "stickslip/parameter_axis.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <string>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/parameter_axis.hpp"
 
 namespace stickslip {
 namespace {
@@ -65,6 +64,11 @@ TEST(Params, RejectsNegativeBeta) {
   EXPECT_TRUE(Contains(Rejection(p), "beta = -0.1"));
   p.beta = 0;  // undamped is fine
   EXPECT_EQ(Rejection(p), "");
+  // A damping ratio, not a scale: any small beta >= 0 is a model too.
+  for (double beta : {1e-7, 9.99e-7, 1e-300, 4.9e-324}) {
+    p.beta = beta;
+    EXPECT_EQ(Rejection(p), "") << "beta = " << beta;
+  }
 }
 
 TEST(Params, RejectsNonPositiveBeltSpeed) {

@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "app_test_util.hpp"
-#include "stickslip/report.hpp"
+#include "cli/gnuplot.hpp"
 
 namespace {
 
 const std::string kContinue = STICKSLIP_BIN_DIR "/ss_continue";
 const std::string kSimulate = STICKSLIP_BIN_DIR "/ss_simulate";
 
-using stickslip::PngError;
+using stickslip::cli::PngError;
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::Launch;
@@ -163,11 +163,17 @@ TEST_F(Reliability, CancelledRunNamesWhereTheBranchStopped) {
   ASSERT_EQ(r.code, 1) << err_;
   std::istringstream rows(ReadFile(Path("w/branch.tsv")));
   std::string line, last;
-  while (std::getline(rows, line))
-    if (!line.empty() && line[0] != '#' && line.find("\tequilibrium\t") == std::string::npos)
+  bool header = true;  // the first line without '#' names the columns
+  while (std::getline(rows, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header && line.find("\tequilibrium\t") == std::string::npos)
       last = line.substr(0, line.find('\t'));
-  ASSERT_FALSE(last.empty()) << "no periodic row after 0.5 s";
-  EXPECT_TRUE(Contains(err_, "cancelled at v = " + last + " "));
+    header = false;
+  }
+  if (last.empty())  // a heavily loaded machine: cut before the first orbit, and saying so
+    EXPECT_TRUE(Contains(err_, "cancelled before the first periodic orbit"));
+  else
+    EXPECT_TRUE(Contains(err_, "cancelled at v = " + last + " "));
   EXPECT_FALSE(Contains(err_, "cancelled at v = 0.5 "));
 }
 

@@ -58,24 +58,39 @@ enum class Region {
 const char* RegionName(Region r);
 
 // Classification of a grid of points: steady sliding stable where
-// 2 beta + mu'(v) > 0; a stick-slip orbit where the grazing gap is > 0; with
+// 2 beta + mu'(v) > 0; a stick-slip orbit where the slip phase from the exit
+// point returns to the belt speed (chart_regions.hpp); with
 // stable steady sliding and no stick-slip, the section map iterated from the
 // exit point's first return tells a surviving (stable pure-slip) oscillation.
 struct RegionGrid {
   int n1 = 0, n2 = 0;
   std::vector<double> x1, x2;  // n1, n2 cell centres
   std::vector<Region> cells;   // n1 * n2, index i * n2 + j
+  int failed = 0;              // cells whose stick-slip test failed numerically
+  std::string failure;         // the first such cell and why
   Region at(int i, int j) const { return cells[static_cast<size_t>(i) * n2 + j]; }
 };
 
+// Points per way of a curve (PALC max_points): a way longer than this is cut
+// short, so max_step must be >= 1 / kMaxCurvePoints.
+constexpr int kMaxCurvePoints = 20000;
+
 struct ChartOptions {
-  ChartOptions() { orbit.max_return_time = 50; }
+  ChartOptions() {
+    orbit.max_return_time = kMaxReturnTime;
+    orbit.flow.max_steps = kMaxSteps;
+  }
+  // The chart's own orbit defaults (ss_chart --help states them): a first
+  // return takes about one revolution, 2 pi / sqrt(1 - beta^2), a few hundred
+  // steps; a longer run is an orbit running away (where mu < 0 at large slip
+  // speeds, k5 > 0), given up after this time or this many steps.
+  static constexpr double kMaxReturnTime = 50;
+  static constexpr long kMaxSteps = 20000;
   Plane plane;
-  // max_return_time 50 (default): a first return takes about one revolution,
-  // 2 pi / sqrt(1 - beta^2); longer runs are orbits running away.
   OrbitOptions orbit;
-  double max_step = 0.01;            // largest continuation step, fraction of the rectangle
-  int samples = 16;                  // test-function samples per start line
+  double max_step =
+      0.01;          // largest continuation step, fraction of the rectangle, >= 1/kMaxCurvePoints
+  int samples = 16;  // test-function samples per start line
   bool hopf_curves = true;           // HB curves and GH points
   bool grazing_curves = true;        // GR curves and GR-LP points
   bool fold_curves = true;           // LP curves from GH points
@@ -88,6 +103,8 @@ struct ChartOptions {
 enum class ChartStatus {
   kOk,
   kFailed,     // a numerical failure: message says where; curves so far kept
+  kPartial,    // done, but a curve was cut short inside the rectangle (max-points,
+               // step-too-small, start-failed) or a region cell failed: message says which
   kCancelled,  // cancelled() returned true
 };
 const char* ChartStatusName(ChartStatus s);

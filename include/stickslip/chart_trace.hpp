@@ -31,6 +31,9 @@ struct TraceOptions {
 struct TraceResult {
   std::vector<Eigen::VectorXd> u;  // the curve, in order
   std::string ends;                // "<first end> / <last end>"
+  // Empty, or why a way ended early (max-points, step-too-small, start-failed):
+  // the curve is cut short inside the rectangle.
+  std::string cut;
   int evaluations = 0;
   bool cancelled = false;
   bool stopped = false;  // the last way ended on TraceOptions::stop

@@ -58,7 +58,8 @@ class CurveKind(enum.IntEnum):
 class ChartStatus(enum.IntEnum):
     ok = 0
     failed = 1
-    cancelled = 2
+    partial = 2
+    cancelled = 3
 class Region(enum.IntEnum):
     steady_only = 0
     stick_slip = 1

@@ -115,8 +115,8 @@ Params UncheckedModelFromArguments(const Arguments& args) {
   return p;
 }
 
-FlowOptions FlowOptionsFromArguments(const Arguments& args) {
-  FlowOptions f;
+FlowOptions FlowOptionsFromArguments(const Arguments& args, const FlowOptions& defaults) {
+  FlowOptions f = defaults;
   f.rtol = args.Number("rtol", f.rtol);
   f.atol = args.Number("atol", f.atol);
   f.max_steps = args.Integer("max_steps", f.max_steps);

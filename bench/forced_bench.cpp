@@ -1,0 +1,139 @@
+// forced_bench: the forced oscillator's costs (issue 20): one stick-slip orbit
+// (one exit-map return, and the whole Newton solve), one non-stop orbit, and the
+// Den Hartog resonance run; each as the median of repeated runs in one process,
+// with the error against the coulomb closed form (tests/forced_reference.hpp).
+// Times are thread CPU time.
+//   build/bench/forced_bench
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <vector>
+
+#include "stickslip/forced/branch.hpp"
+#include "tests/forced_reference.hpp"
+
+namespace {
+
+using namespace stickslip;
+
+// Median thread CPU time in microseconds (robust to other load on a shared machine).
+double CpuMicros() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e6 + ts.tv_nsec * 1e-3;
+}
+double MedianMicros(const std::function<void()>& f, int reps) {
+  std::vector<double> t;
+  for (int i = 0; i < reps; ++i) {
+    const double a = CpuMicros();
+    f();
+    t.push_back(CpuMicros() - a);
+  }
+  std::nth_element(t.begin(), t.begin() + reps / 2, t.end());
+  return t[reps / 2];
+}
+
+ForcedParams Belt() {  // the exit-map test's coulomb belt, one stick per period
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
+  p.force = 0.3, p.omega = 0.8;
+  return p;
+}
+
+ForcedParams DenHartog(double w) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = p.base.mu_k = 0.3, p.base.beta = 0, p.base.v = 0;
+  p.force = 1, p.omega = w;
+  return p;
+}
+
+void StickSlipOrbit(double rtol) {
+  const ForcedParams p = Belt();
+  const ForcedModel m(p);
+  ForcedOrbitOptions o;
+  o.flow.rtol = o.flow.atol = rtol;
+  const ForcedExitOrbit exact = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
+  ForcedRequest rq;
+  rq.t_end = exact.t_exit + 3 * m.period();
+  rq.variational = true;
+  rq.stop_at_exit = 1;
+  const ForcedFlow flow(m, o.flow);
+  const ForcedPoint start{exact.t_exit, exact.x_exit, p.base.v, Mode::kSlipBelow};
+  ForcedRun run;
+  const double t_return = MedianMicros([&] { run = flow.Run(start, rq); }, 2001);
+  const double t_solve =
+      MedianMicros([&] { ExitPhaseOrbit(m, exact.t_exit + 1e-3, Mode::kSlipBelow, 1, 1, o); }, 501);
+  // The closed form's return time from the same exit.
+  namespace ref = forced_reference;
+  ref::PieceSim<ref::CoulombPiece> sim(
+      ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
+  ref::Real t = exact.t_exit, x = exact.x_exit, y = p.base.v;
+  sim.Run(t, x, y, exact.t_exit + 3 * m.period(), 1);
+  ref::Real back = -1;
+  for (const auto& e : sim.events)
+    if (e.kind == 1) {
+      back = e.t;
+      break;
+    }
+  std::printf(
+      "stick-slip orbit (coulomb belt, A 0.3, Omega 0.8), rtol %.0e: %ld steps; one "
+      "return %.2f us, Newton solve from 1e-3 off %.2f us; period error %.1e\n",
+      rtol, run.steps, t_return, t_solve, std::abs(static_cast<double>(back) - run.end.t));
+}
+
+void NonStopOrbit(double rtol) {
+  const ForcedModel m(DenHartog(1.3));
+  ForcedOrbitOptions o;
+  o.flow.rtol = o.flow.atol = rtol;
+  const ForcedOrbit exact = ShootStroboscopic(m, -1.4, 0.01, 1, o);
+  ForcedRequest rq;
+  rq.t_end = m.period();
+  rq.variational = true;
+  const ForcedFlow flow(m, o.flow);
+  const double t_map =
+      MedianMicros([&] { flow.Run(ForcedStart(m, 0, exact.start.x, exact.start.xdot), rq); }, 2001);
+  const double t_solve = MedianMicros(
+      [&] { ShootStroboscopic(m, exact.start.x + 1e-3, exact.start.xdot, 1, o); }, 501);
+  const double V = 1 / (1 - 1.69), U = std::sin(M_PI / 1.3) / (1.3 * (1 + std::cos(M_PI / 1.3)));
+  std::printf(
+      "non-stop orbit (Den Hartog, Omega 1.3), rtol %.0e: %ld steps; one period %.2f us, "
+      "Newton solve from 1e-3 off %.2f us; x_max error %.1e\n",
+      rtol, exact.steps, t_map, t_solve,
+      std::abs(exact.extremes.x_max - std::sqrt(V * V - 0.09 * U * U)));
+}
+
+void DenHartogRun() {
+  ForcedBranchOptions o;
+  o.flow.rtol = o.flow.atol = 1e-12;
+  o.max_amplitude = 10;
+  o.palc.ds_max = 0.05;
+  size_t rows = 0;
+  const double t = MedianMicros(
+      [&] {
+        rows = 0;
+        for (const double from : {0.75, 2.5}) {
+          const double to = from == 0.75 ? 2.5 : 0.75;
+          rows += ContinueForced(DenHartog(from), ForcedAxis::kOmega, from, to,
+                                 1 / (1 - from * from), 0.01, o)
+                      .rows.size();
+        }
+      },
+      11);
+  std::printf(
+      "Den Hartog run (Omega 0.75 -> 2.5, both ends, rtol 1e-12): %zu rows in %.2f ms "
+      "(%.1f us per row)\n",
+      rows, t / 1e3, t / rows);
+}
+
+}  // namespace
+
+int main() {
+  for (const double rtol : {1e-10, 1e-12, 1e-14}) StickSlipOrbit(rtol);
+  for (const double rtol : {1e-10, 1e-12, 1e-14}) NonStopOrbit(rtol);
+  DenHartogRun();
+  return 0;
+}

@@ -1,0 +1,92 @@
+// The harmonically forced friction oscillator (issue 20, design.md section 5):
+//   x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t),   F(s) = -sgn(s) mu(|s|),
+// the belt model (seed eq. 3.5) plus a harmonic force. v = 0 is Den Hartog's
+// (1931) block on a fixed floor. Stick (x' = v) holds while
+// |x + 2 beta v - A cos(Omega t)| <= mu_s.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "stickslip/friction.hpp"
+#include "stickslip/model.hpp"
+#include "stickslip/model/system.hpp"
+#include "stickslip/params.hpp"
+
+namespace stickslip {
+
+/// The belt parameters plus the forcing. Here v >= 0 (v = 0: a fixed floor)
+/// and the coulomb law may have mu_k = mu_s (Den Hartog).
+struct ForcedParams {
+  Params base;
+  double force = 0;  ///< A, in the unit of the friction coefficients
+  double omega = 1;  ///< Omega, forcing over natural frequency
+};
+
+/// Empty if valid, else one line naming the offending value.
+std::string ValidationError(const ForcedParams& p);
+
+class ForcedModel {
+ public:
+  static constexpr int kStateSize = 2;
+  /// Throws InvalidArgument naming the offending value.
+  explicit ForcedModel(const ForcedParams& p);
+
+  const ForcedParams& params() const { return p_; }
+  const Friction& friction() const { return friction_; }
+  double v() const { return p_.base.v; }
+  double beta() const { return p_.base.beta; }
+  double force() const { return p_.force; }
+  double omega() const { return p_.omega; }
+  double period() const { return 2 * M_PI / p_.omega; }
+  double static_limit() const { return p_.base.mu_s; }
+
+  /// The slip force on the mode's branch, extended smoothly across x' = v.
+  double SlipForce(Mode m, double xdot) const {
+    return m == Mode::kSlipBelow ? friction_.Mu(v() - xdot) : -friction_.Mu(xdot - v());
+  }
+  double Acceleration(Mode m, double t, double x, double xdot) const {
+    if (m == Mode::kStick) return 0;
+    return -x - two_beta_ * xdot + SlipForce(m, xdot) + p_.force * std::cos(p_.omega * t);
+  }
+  Vec2 Field(Mode m, double t, const Vec2& z) const {
+    if (m == Mode::kStick) return Vec2(v(), 0.0);
+    return Vec2(z[1], Acceleration(m, t, z[0], z[1]));
+  }
+  Mat2 Jacobian(Mode m, double t, const Vec2& z) const;
+  double RelativeVelocity(const Vec2& z) const { return z[1] - v(); }
+
+  /// The friction force that holds x' = v: x + 2 beta v - A cos(Omega t).
+  double StickForce(double t, double x) const {
+    return x + two_beta_ * v() - p_.force * std::cos(p_.omega * t);
+  }
+  /// d/dt of StickForce along the stick motion x' = v.
+  double StickForceRate(double t) const {
+    return v() + p_.force * p_.omega * std::sin(p_.omega * t);
+  }
+  bool InStickBand(double t, double x) const { return std::abs(StickForce(t, x)) <= p_.base.mu_s; }
+  /// Filippov on x' = v, arriving from slip mode `from`: stick inside the band,
+  /// else the side the one-sided accelerations point to (== from: a touch).
+  Mode ModeAfterArrival(Mode from, double t, double x) const;
+  /// The slip mode a stick phase leaves into (the sign of the force needed).
+  Mode ExitMode(double t, double x) const {
+    return StickForce(t, x) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove;
+  }
+
+  /// Saltation matrices (di Bernardo et al. 2008, section 2.5) on the state
+  /// (x, x'), for a switching surface h(t, z) = 0:
+  ///   S = I + (f_after - f_before) grad h^T / (grad h . f_before + dh/dt).
+  /// Entering stick (h = x' - v): diag(1, 0). Crossing x' = v: diag(1, a+/a-).
+  /// Leaving stick (h = StickForce -+ mu_s, dh/dt = StickForceRate).
+  Mat2 SaltationCrossing(Mode before, Mode after, double t, double x) const;
+  Mat2 SaltationStickOut(Mode after, double t, double x) const;
+
+ private:
+  ForcedParams p_;
+  Friction friction_;
+  double two_beta_;
+};
+
+static_assert(model::IsFrictionSystem<ForcedModel>::value, "ForcedModel fits the model seam");
+
+}  // namespace stickslip

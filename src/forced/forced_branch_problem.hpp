@@ -1,0 +1,35 @@
+// Private to src/forced/: the stroboscopic residual as a PalcProblem.
+#pragma once
+
+#include "stickslip/forced/branch.hpp"
+
+namespace stickslip::forced_detail {
+
+// F(x, x', p) = P^m(x, x'; p) - (x, x'); dF/d(x, x') from the variational
+// run, dF/dp by central differences of two plain runs.
+class StrobeProblem final : public PalcProblem {
+ public:
+  StrobeProblem(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o)
+      : base_(base), axis_(axis), o_(o) {}
+  int unknowns() const override { return 3; }
+  bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
+                std::string* why) override;
+  std::string DomainError(const Eigen::VectorXd& u) const override;
+  // The row of the last evaluated point.
+  ForcedBranchRow Row() const;
+  // det(DP^m - I) (LP) and det(DP^m + I) (PD) at the last evaluated point.
+  double FoldTest() const { return (last_.jacobian - Mat2::Identity()).determinant(); }
+  double FlipTest() const { return (last_.jacobian + Mat2::Identity()).determinant(); }
+
+ private:
+  bool End(const ForcedParams& q, const ForcedPoint& z, bool variational, ForcedRun* run,
+           std::string* why) const;
+
+  ForcedParams base_;
+  ForcedAxis axis_;
+  const ForcedBranchOptions& o_;
+  ForcedRun last_;
+  Eigen::Vector3d last_u_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace stickslip::forced_detail

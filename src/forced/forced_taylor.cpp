@@ -1,0 +1,89 @@
+// The Taylor recurrences of the forced oscillator's slip fields
+// (forced_taylor.hpp gives the equations).
+#include "forced_taylor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stickslip::forced_detail {
+namespace {
+constexpr Reciprocals<kMaxOrder> kInverse;
+}  // namespace
+
+template <LawKind L, bool Var>
+void SlipSeries::Recur() {
+  const double v = m_.v(), two_beta = 2 * m_.beta(), a = m_.force(), w = m_.omega();
+  double* s = s_.c();
+  double* cc = cc_.c();
+  double* co = cos_.c();
+  double* si = sin_.c();
+  double* x = c_[0];
+  double* xd = c_[1];
+  // MuSeries::Old(k) sums products of s_0..s_{k-1}: s_k and later must be 0.
+  for (int k = 0; k < order_ + kPad; ++k) s[k] = 0;
+  co[0] = std::cos(w * t0_);
+  si[0] = std::sin(w * t0_);
+  mu_.Begin<L>(order_);
+  for (int k = 0; k < order_; ++k) {
+    mu_.Old<L, Var>(k, s);
+    s[k] = sigma_ * ((k == 0 ? v : 0.0) - xd[k]);
+    double dmu = 0;
+    const double muk = mu_.New<L, Var>(k, s, &dmu);
+    const double inv = kInverse.r[k];
+    x[k + 1] = xd[k] * inv;
+    xd[k + 1] = (-x[k] - two_beta * xd[k] + sigma_ * muk + a * co[k]) * inv;
+    co[k + 1] = -w * si[k] * inv;
+    si[k + 1] = w * co[k] * inv;
+    if constexpr (Var) {
+      cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
+      for (int col = 2; col < 6; col += 2) {
+        const double cq = Cauchy(c_[col + 1], cc, k);
+        c_[col][k + 1] = c_[col + 1][k] * inv;
+        c_[col + 1][k + 1] = (-c_[col][k] + cq) * inv;
+      }
+    }
+  }
+}
+
+void SlipSeries::Expand(Mode mode, double t0, const double* z, bool variational) {
+  n_ = variational ? 6 : 2;
+  sigma_ = mode == Mode::kSlipBelow ? 1 : -1;
+  t0_ = t0;
+  double z0 = 0;
+  for (int i = 0; i < n_; ++i) {
+    c_[i][0] = z[i];
+    z0 = std::max(z0, std::abs(z[i]));
+  }
+  order_ = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
+  // Cauchy() reads kPad entries past k: finite from the last step or 0.
+  switch (m_.friction().law()) {
+    case LawKind::kCubic:
+      return variational ? Recur<LawKind::kCubic, true>() : Recur<LawKind::kCubic, false>();
+    case LawKind::kCoulomb:
+      return variational ? Recur<LawKind::kCoulomb, true>() : Recur<LawKind::kCoulomb, false>();
+    case LawKind::kStribeck:
+      return variational ? Recur<LawKind::kStribeck, true>() : Recur<LawKind::kStribeck, false>();
+    case LawKind::kLeine:
+      return variational ? Recur<LawKind::kLeine, true>() : Recur<LawKind::kLeine, false>();
+  }
+}
+
+// rho = min over j = p-1, p of (eps / |z_j|)^(1/j), relative to |z_0| when
+// rtol |z_0| > atol; h = rho / e^2 exp(-0.7 / (p - 1)). The forcing's own
+// series (A c_k, A s_k) count too: they drive x' from the next order on.
+double SlipSeries::StepSize() const {
+  const double a = m_.force();
+  auto norm = [&](int k) {
+    double mx = std::max(a * std::abs(cos_.c()[k]), a * std::abs(sin_.c()[k]));
+    for (int i = 0; i < n_; ++i) mx = std::max(mx, std::abs(c_[i][k]));
+    return mx;
+  };
+  double z0 = norm(0);
+  const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
+  const int p = order_;
+  const double r1 = (log_scale - std::log(norm(p - 1))) / (p - 1);
+  const double r2 = (log_scale - std::log(norm(p))) / p;
+  return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (p - 1));
+}
+
+}  // namespace stickslip::forced_detail

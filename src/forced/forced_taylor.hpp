@@ -1,0 +1,107 @@
+// Private to src/forced/: the Taylor expansion of one slip field of the forced
+// oscillator and of its variational equations (Jorba & Zou 2005, section 2):
+//   x_{k+1}  = x'_k / (k+1)
+//   x'_{k+1} = (-x_k - 2 beta x'_k + sigma mu_k + A c_k) / (k+1)
+//   c_{k+1}  = -Omega s_k / (k+1),  s_{k+1} = Omega c_k / (k+1)   (c = cos, s = sin Omega t)
+//   Phi' = J Phi, J = [0 1; -1 cc], cc = -2 beta - mu'(s): each column (p, q) has
+//   p_{k+1} = q_k / (k+1), q_{k+1} = (-p_k + sum_j cc_j q_{k-j}) / (k+1),
+// with mu_k and mu'_k from MuSeries (s = sigma (v - x'), sigma = +1 below the
+// contact, -1 above). Also the events' polynomials and their roots.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "../mu_series.hpp"
+#include "../poly_roots.hpp"
+#include "../series.hpp"
+#include "stickslip/model/forced.hpp"
+
+namespace stickslip::forced_detail {
+
+constexpr int kMaxOrder = 36;
+constexpr int kRow = kMaxOrder + 1 + kPad;
+
+// JZ (3.8): order p = ceil(-ln(eps) / 2 + 1).
+inline int TaylorOrder(double eps) {
+  return std::min(kMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
+}
+
+class SlipSeries {
+ public:
+  SlipSeries(const ForcedModel& m, double rtol, double atol)
+      : m_(m),
+        mu_(m.friction()),
+        rtol_(rtol),
+        atol_(atol),
+        order_rel_(TaylorOrder(rtol)),
+        order_abs_(TaylorOrder(atol)) {
+    for (auto& row : c_) std::fill(row, row + kRow, 0.0);
+  }
+  // The coefficients at (t0, z): z = (x, x') and, with variational, the 2 x 2
+  // Phi column by column (z[2..5] = Phi00, Phi10, Phi01, Phi11).
+  void Expand(Mode mode, double t0, const double* z, bool variational);
+  // JZ section 3.2 with heyoka's safety factor (Biscani & Izzo 2021, eq. 10).
+  double StepSize() const;
+  int order() const { return order_; }
+  int size() const { return n_; }
+  const double* coeff(int i) const { return c_[i]; }
+  void Evaluate(double tau, double* out) const {
+    for (int i = 0; i < n_; ++i) out[i] = Horner(c_[i], order_, tau);
+  }
+
+ private:
+  template <LawKind L, bool Var>
+  void Recur();
+
+  const ForcedModel& m_;
+  MuSeries mu_;
+  double rtol_, atol_;
+  int order_rel_, order_abs_, order_ = 0, n_ = 2, sigma_ = 1;
+  double t0_ = 0;
+  double c_[6][kRow];  // x, x', Phi's columns; kPad finite entries past the order
+  Series<kMaxOrder> s_, cc_, cos_, sin_;
+};
+
+// Roots of a polynomial g (power coefficients in u on [0, 1], degree n, n <=
+// kMaxOrder) in order: the first sign change from `sign`, then the next ones
+// (g restricted to [u, 1] and divided by (w - u): heyoka's event loop).
+// visit(u, new_sign) returns false to stop. An exact 0 counts as zero_sign.
+template <class Visit>
+void EachRoot(const double* g, int n, int sign, int zero_sign, Visit visit) {
+  const double* poly = g;
+  int d = n;
+  double rest[kMaxOrder + 1];
+  double u0 = 0;
+  for (int guard = 0; guard <= 2 * n + 2; ++guard) {
+    const PolyRoot r = FirstSignChange(poly, d, sign, zero_sign);
+    if (!r.found) return;
+    const double u = r.u == 1 ? 1.0 : u0 + (1 - u0) * r.u;
+    sign = -sign;
+    if (!visit(u, sign) || u >= 1) return;
+    RestrictToTail(g, n, u, rest);
+    poly = rest;
+    d = n;
+    while (d > 0 && poly[1] == 0) ++poly, --d;
+    if (d == 0) return;
+    ++poly, --d;
+    if ((poly[0] > 0 ? 1 : -1) != sign) return;  // a touch, not a crossing: rounding
+    u0 = u;
+  }
+}
+
+// g / u for a g with a root at u = 0 (a start on the surface), the leading
+// coefficients below rounding dropped: returns the new degree (-1 if g
+// vanishes), *g advanced.
+inline int Deflate(const double*& g, int n) {
+  double scale = 0;
+  for (int k = 0; k <= n; ++k) scale = std::max(scale, std::abs(g[k]));
+  const double noise = 64 * (n + 1) * 2.2e-16 * scale;
+  ++g, --n;  // g_0 is the root
+  while (n > 0 && std::abs(g[0]) <= noise) ++g, --n;
+  if (n == 0 && std::abs(g[0]) <= noise) return -1;
+  return n;
+}
+
+}  // namespace stickslip::forced_detail

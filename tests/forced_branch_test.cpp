@@ -1,0 +1,110 @@
+// Continuation of the forced oscillator in Omega (issue 20, item 4): the Den
+// Hartog run (coulomb mu_s = mu_k = 0.3, v = 0, beta = 0, A = 1) against his
+// closed form on every non-stop row.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/orbit.hpp"
+
+namespace stickslip {
+namespace {
+
+// Den Hartog (1931): X = sqrt(V^2 - (mu U)^2), V = A / (1 - Omega^2),
+// U = sin(pi / Omega) / (Omega (1 + cos(pi / Omega))) (checked against the
+// closed-form pieces in forced_orbit_test.cpp).
+double DenHartogX(double mu, double a, double w) {
+  const double V = a / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
+  return std::sqrt(V * V - mu * mu * U * U);
+}
+
+ForcedParams DenHartog() {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = p.base.mu_k = 0.3;
+  p.base.beta = 0, p.base.v = 0;
+  p.force = 1;
+  return p;
+}
+
+// Without damping the amplitude grows without bound at Omega = 1 (mu < pi A / 4):
+// one branch from each end, each stopped at |x| = 10.
+TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
+  ForcedBranchOptions o;
+  o.flow.rtol = o.flow.atol = 1e-14;
+  o.max_amplitude = 10;
+  o.palc.ds_max = 0.05;
+  int compared = 0;
+  double worst = 0, p_min = 10, p_max = 0;
+  for (const double from : {0.75, 2.5}) {
+    const double to = from == 0.75 ? 2.5 : 0.75;
+    const double V = 1 / (1 - from * from);
+    const ForcedBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, o);
+    EXPECT_EQ(b.status, ForcedBranchStatus::kUnbounded) << b.message;
+    EXPECT_GT(b.rows.size(), 20u);
+    for (const ForcedBranchRow& r : b.rows) {
+      if (r.sticks > 0) continue;
+      ++compared;
+      const double X = DenHartogX(0.3, 1, r.p);
+      EXPECT_NEAR(r.extremes.x_max, X, 1e-9 * std::max(1.0, X)) << "Omega = " << r.p;
+      worst = std::max(worst, std::abs(r.extremes.x_max - X) / std::max(1.0, X));
+      p_min = std::min(p_min, r.p), p_max = std::max(p_max, r.p);
+    }
+    std::printf("[ measured ] from %g: %zu rows, status %s, %d evaluations, %.3f s\n", from,
+                b.rows.size(), ForcedBranchStatusName(b.status), b.evaluations, b.seconds);
+  }
+  EXPECT_EQ(p_min, 0.75);
+  EXPECT_EQ(p_max, 2.5);
+  std::printf("[ measured ] %d non-stop rows: max |x_max - X| / max(1, X) = %.2e\n", compared,
+              worst);
+}
+
+// A period doubling of stick-slip orbits on an undamped forced belt (coulomb
+// mu_s = 0.4, mu_k = 0.25, v = 0.2, beta = 0, A = 0.3): located on the
+// stroboscopic branch (det(DP + I) = 0), checked by the exit-phase map, whose
+// multiplier comes from the exit time's derivative instead.
+TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0, p.base.v = 0.2;
+  p.force = 0.3, p.omega = 0.8;
+  const ForcedModel m0(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m0.period();
+  const ForcedRun transient = ForcedFlow(m0, ForcedOptions()).Run(ForcedStart(m0, 0, 0, 0.2), rq);
+  ForcedBranchOptions o;
+  o.flow.rtol = o.flow.atol = 1e-14;
+  o.palc.ds_max = 0.05;
+  const ForcedBranch b =
+      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.x, transient.end.xdot, o);
+  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.special.size(), 1u);
+  const ForcedBranchRow& pd = b.special[0];
+  EXPECT_EQ(pd.label, ForcedLabel::kPD);
+  EXPECT_EQ(pd.sticks, 1);
+  EXPECT_NEAR(pd.multipliers[0].real(), -1, 1e-9);
+  // The exit-phase map at the located Omega: its multiplier is -1 there too.
+  p.omega = pd.p;
+  const ForcedModel m(p);
+  std::vector<ForcedEvent> events;
+  rq.t_end = m.period();
+  rq.events = &events;
+  ForcedFlow(m, o.flow).Run(ForcedStart(m, 0, pd.x0, pd.xdot0), rq);
+  double t_exit = -1;
+  Mode mode = Mode::kSlipBelow;
+  for (const auto& e : events)
+    if (e.kind == ForcedEventKind::kStickOut) t_exit = e.t, mode = e.after;
+  ASSERT_GE(t_exit, 0);
+  ForcedOrbitOptions oo;
+  oo.flow = o.flow;
+  const ForcedExitOrbit exit = ExitPhaseOrbit(m, t_exit, mode, 1, 1, oo);
+  ASSERT_EQ(exit.status, ForcedOrbitStatus::kConverged) << exit.message;
+  EXPECT_NEAR(exit.multiplier, -1, 1e-9);
+  EXPECT_NEAR(exit.extremes.x_max, pd.extremes.x_max, 1e-11);
+  std::printf("[ measured ] PD at Omega = %.15g: multiplier %.15g (strobe), %.15g (exit map)\n",
+              pd.p, pd.multipliers[0].real(), exit.multiplier);
+}
+
+}  // namespace
+}  // namespace stickslip

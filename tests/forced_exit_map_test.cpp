@@ -1,0 +1,97 @@
+// Stick-slip orbits of the forced oscillator as fixed points of the exit-phase
+// map (issue 20, item 3), against the coulomb closed form: the return time of
+// the closed-form simulation and its central difference in the exit time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "forced_reference.hpp"
+#include "stickslip/forced/orbit.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace ref = forced_reference;
+using ref::Real;
+
+// The closed-form simulation from the exit at t_e into mode sigma (+1 below):
+// the time of its `sticks`-th next exit.
+Real ClosedFormReturn(const ForcedParams& p, Real t_e, int sigma, int sticks) {
+  const ref::Setup s{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega};
+  ref::PieceSim<ref::CoulombPiece> sim(s);
+  Real t = t_e, x = sigma * s.law.mu_s - 2 * s.beta * s.v + s.a * std::cos(s.w * t_e), y = s.v;
+  const Real T = 2 * std::acos(Real(-1)) / s.w;
+  sim.Run(t, x, y, t_e + (sticks + 3) * T, sigma);
+  int exits = 0;
+  for (const auto& e : sim.events)
+    if (e.kind == 1 && ++exits == sticks) return e.t;
+  return -1;
+}
+
+// An exit time and side after a transient of 60 forcing periods.
+void GuessExit(const ForcedModel& m, double* t, Mode* mode) {
+  ForcedRequest rq;
+  std::vector<ForcedEvent> events;
+  rq.t_end = 60 * m.period();
+  rq.events = &events;
+  ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
+  for (const auto& e : events)
+    if (e.kind == ForcedEventKind::kStickOut) *t = e.t, *mode = e.after;
+}
+
+void Check(const ForcedParams& p, int sticks, int m) {
+  const ForcedModel model(p);
+  double t_guess = -1;
+  Mode mode = Mode::kSlipBelow;
+  GuessExit(model, &t_guess, &mode);
+  ASSERT_GT(t_guess, 0) << "no stick exit in the transient";
+  ForcedOrbitOptions o;
+  o.flow.rtol = o.flow.atol = 1e-14;
+  const ForcedExitOrbit orbit = ExitPhaseOrbit(model, t_guess, mode, sticks, m, o);
+  ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+  const int sigma = mode == Mode::kSlipBelow ? 1 : -1;
+  const Real T = model.period();
+  const Real back = ClosedFormReturn(p, orbit.t_exit, sigma, sticks);
+  EXPECT_NEAR(static_cast<double>(back - orbit.t_exit - m * T), 0, 1e-11);
+  const Real d = 1e-6L;
+  const Real fd = (ClosedFormReturn(p, orbit.t_exit + d, sigma, sticks) -
+                   ClosedFormReturn(p, orbit.t_exit - d, sigma, sticks)) /
+                  (2 * d);
+  EXPECT_NEAR(orbit.multiplier, static_cast<double>(fd), 1e-7);
+  // The same orbit by stroboscopic shooting: the same nontrivial multiplier.
+  // Its state at the next theta = 0 starts the shooting.
+  ForcedRequest rq;
+  rq.t_end = std::ceil(orbit.t_exit / model.period()) * model.period();
+  const ForcedRun to_zero =
+      ForcedFlow(model, o.flow).Run({orbit.t_exit, orbit.x_exit, model.v(), mode}, rq);
+  const ForcedOrbit strobe = ShootStroboscopic(model, to_zero.end.x, to_zero.end.xdot, m, o);
+  ASSERT_EQ(strobe.status, ForcedOrbitStatus::kConverged) << strobe.message;
+  EXPECT_NEAR(strobe.multipliers[0].real(), orbit.multiplier, 1e-9);
+  EXPECT_EQ(strobe.sticks, sticks);
+  EXPECT_EQ(strobe.crossings, orbit.crossings);
+  EXPECT_NEAR(strobe.extremes.x_max, orbit.extremes.x_max, 1e-11);
+  std::printf(
+      "[ measured ] %d sticks in %d periods: t_e = %.15g, multiplier %.12g, "
+      "closed form: return error %.2e, multiplier %.12g\n",
+      sticks, m, orbit.t_exit, orbit.multiplier, static_cast<double>(back - orbit.t_exit - m * T),
+      static_cast<double>(fd));
+}
+
+TEST(ForcedExitMap, BeltStickSlipOrbitMatchesCoulombClosedForm) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
+  p.force = 0.3, p.omega = 0.8;
+  Check(p, 1, 1);
+}
+
+TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.3, p.base.beta = 0.05, p.base.v = 0;
+  p.force = 0.7, p.omega = 0.6;
+  Check(p, 2, 1);
+}
+
+}  // namespace
+}  // namespace stickslip
