@@ -20,3 +20,12 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/stickslipConfigVersion.cm
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/stickslipConfig.cmake
   ${PROJECT_BINARY_DIR}/stickslipConfigVersion.cmake DESTINATION ${STICKSLIP_CMAKE_DIR})
+
+# The Python package (python/CMakeLists.txt says where and why there).
+if(TARGET stickslip_python)
+  set(py_dest ${STICKSLIP_PYTHON_INSTALL_DIR}/stickslip)
+  install(TARGETS stickslip_python LIBRARY DESTINATION ${py_dest})
+  foreach(f ${STICKSLIP_PY_FILES})
+    install(FILES ${PROJECT_SOURCE_DIR}/python/stickslip/${f} DESTINATION ${py_dest})
+  endforeach()
+endif()

@@ -203,6 +203,11 @@ void Charter::HopfCurves() {
     c.ends = t.ends;
     c.evaluations = t.evaluations;
     for (const VectorXd& u : t.u) {
+      if (o_.cancelled && o_.cancelled()) {  // up to 2 x 20000 points: poll here too
+        r_.status = ChartStatus::kCancelled;
+        r_.message = "cancelled while sampling an HB curve";
+        return;
+      }
       CurvePoint p;
       p.p1 = u[0], p.p2 = u[1];
       p.period = 2 * M_PI, p.amplitude = 0, p.multiplier = 1;
@@ -228,6 +233,10 @@ void Charter::HopfCurves() {
 void Charter::GrazingCurves() {
   GrazingCurveProblem problem(base_, pl_, o_.orbit);
   OrbitFinder finder(Model(base_), o_.orbit);
+  if (o_.cancelled) {  // a slow first return stops too; Run() then says cancelled
+    problem.set_cancel(o_.cancelled);
+    finder.flow().set_cancel(o_.cancelled);
+  }
   const auto starts =
       WithSeeds(o_, CurveKind::kGrazing, StartPoints(pl_, o_.samples, [&](double x1, double x2) {
                   const GrazingSample g = SampleGrazing(finder, pl_.At(base_, x1, x2), false);
@@ -244,6 +253,11 @@ void Charter::GrazingCurves() {
     c.ends = t.ends;
     c.evaluations = t.evaluations;
     for (const VectorXd& u : t.u) {
+      if (o_.cancelled && o_.cancelled()) {  // one integration per point: poll here too
+        r_.status = ChartStatus::kCancelled;
+        r_.message = "cancelled while sampling a GR curve";
+        return;
+      }
       const GrazingSample g = problem.Sample(u[0], u[1]);
       if (!g.ok()) continue;
       CurvePoint p;
@@ -341,6 +355,10 @@ ChartResult Charter::Run() {
   if (o_.hopf_curves) HopfCurves();
   if (!Halted() && o_.grazing_curves) GrazingCurves();
   if (!Halted() && o_.fold_curves) FoldCurves();
+  if (!Halted() && o_.cancelled && o_.cancelled()) {
+    r_.status = ChartStatus::kCancelled;  // evaluations may have failed for it: curves cut
+    r_.message = "cancelled";
+  }
   // Codim-2 points found twice (from two curves or start points) are one.
   std::vector<Codim2Point> unique;
   for (const Codim2Point& p : r_.codim2) {
@@ -358,7 +376,10 @@ ChartResult Charter::Run() {
     const auto t1 = Clock::now();
     r_.regions = ClassifyGrid(base_, o_, r_.curves);
     r_.region_seconds = Since(t1);
-    if (r_.regions.failed > 0 && r_.status == ChartStatus::kOk) {
+    if (r_.regions.cells.size() < static_cast<size_t>(r_.regions.n1) * r_.regions.n2) {
+      r_.status = ChartStatus::kCancelled;  // ClassifyGrid stopped early
+      r_.message = "cancelled while classifying the regions";
+    } else if (r_.regions.failed > 0 && r_.status == ChartStatus::kOk) {
       r_.status = ChartStatus::kPartial;
       r_.message = std::to_string(r_.regions.failed) +
                    " region cells unclassified; first: " + r_.regions.failure;

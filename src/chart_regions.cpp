@@ -88,6 +88,7 @@ RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o,
   OrbitFinder finder(Model(base), o.orbit);
   for (double x1 : grid.x1)
     for (double x2 : grid.x2) {
+      if (o.cancelled && o.cancelled()) return grid;  // cells so far; Chart says cancelled
       std::string failure;
       grid.cells.push_back(ClassifyPoint(finder, pl.At(base, x1, x2), check, &failure));
       if (failure.empty()) continue;

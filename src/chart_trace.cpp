@@ -19,6 +19,7 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   p.scale = VectorXd::Constant(problem.unknowns(), o.other_scale);
   p.scale[o.i1] = o.plane.width1();
   p.scale[o.i1 + 1] = o.plane.width2();
+  p.cancelled = o.cancelled;  // also between rejected steps
   return p;
 }
 
@@ -91,6 +92,7 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
     return true;
   };
   const PalcResult r = palc.Trace(u0, fixed, direction, monitor);
+  if (r.status == PalcStatus::kStopped && r.message == "cancelled") leg.cancelled = true;
   for (const PalcPoint& p : r.points) leg.u.push_back(p.u);
   if (outside) {
     leg.end = "border";

@@ -176,6 +176,7 @@ PalcResult Palc::Trace(const VectorXd& u0, int fixed, const VectorXd& direction,
   const VectorXd first_s = c.u.cwiseQuotient(scale_);
   double ds = options_.ds, travelled = 0;
   while (static_cast<int>(r.points.size()) < options_.max_points) {
+    if (options_.cancelled && options_.cancelled()) return finish(PalcStatus::kStopped, "cancelled");
     const PalcPoint& last = r.points.back();
     c = Correct(last.u + ds * last.tangent.cwiseProduct(scale_), last.tangent);
     r.newton_iterations += c.iterations;

@@ -111,7 +111,7 @@ struct ChartOptions {
     double p1 = 0, p2 = 0;
   };
   std::vector<Seed> seeds;
-  std::function<bool()> cancelled;  // polled between points
+  std::function<bool()> cancelled;  // polled between points and between region cells
   // Empty if valid for base, else one line naming the violated constraint.
   std::string ValidationError(const Params& base) const;
 };

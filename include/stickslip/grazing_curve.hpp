@@ -49,6 +49,9 @@ class GrazingCurveProblem : public PalcProblem {
   std::string DomainError(const Eigen::VectorXd& u) const override;
   // The gap, multiplier, period and amplitude at an accepted point.
   GrazingSample Sample(double x1, double x2) { return At(x1, x2, true); }
+  // Polled by the flow of every evaluation: an evaluation under way stops
+  // (and fails) once it returns true.
+  void set_cancel(std::function<bool()> cancel) { finder_.flow().set_cancel(std::move(cancel)); }
 
  private:
   GrazingSample At(double x1, double x2, bool floquet);

@@ -42,6 +42,9 @@ struct PalcOptions {
   double tol = 1e-11;
   int max_points = 20000;
   Eigen::VectorXd scale;  ///< per unknown; empty means all 1
+  /// Polled before every correction (rejected steps too); true ends the trace
+  /// with kStopped and the message "cancelled". Empty: never.
+  std::function<bool()> cancelled;
   /// Empty if valid for `unknowns`, else one line naming the offending value.
   std::string ValidationError(int unknowns) const;
 };

@@ -44,7 +44,8 @@ class SeedBranch(unittest.TestCase):
 
     def test_points_are_numpy_arrays_of_one_length(self):
         pts = self.branch["points"]
-        self.assertEqual(self.branch["status"], "ok")
+        self.assertEqual(self.branch.status, stickslip.ContinuationStatus.ok)
+        self.assertEqual(str(self.branch.status), "ok")
         n = len(pts["p"])
         self.assertGreater(n, 100)
         for key, arr in pts.items():

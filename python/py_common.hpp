@@ -1,0 +1,74 @@
+// Shared pieces of the Python module: read-only arrays, the solver keywords,
+// Ctrl-C from the library's cancel hooks, and the binding entry points of the
+// module's source files.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stickslip/flow.hpp"
+
+namespace stickslip::python {
+
+namespace py = pybind11;
+
+// A NumPy copy of v, marked read-only (issue 23, N17).
+template <typename T>
+py::array ReadOnly(const std::vector<T>& v) {
+  py::array_t<T> a(static_cast<py::ssize_t>(v.size()), v.data());
+  a.attr("setflags")(py::arg("write") = false);
+  return std::move(a);
+}
+py::array ReadOnlyBool(const std::vector<bool>& v);
+// A read-only NumPy array of strings (dtype U).
+py::array ReadOnlyStrings(const std::vector<std::string>& v);
+
+// Raises stickslip.NumericalError (a RuntimeError) with the message.
+[[noreturn]] void RaiseNumerical(const std::string& message);
+void SetNumericalError(py::object* type);
+
+// The solver keywords of every computing function, applied over `base`:
+// integrator 'taylor' (default) or 'cvode'; method 'adams' or 'bdf' (CVODE's;
+// given alone it selects CVODE). Each accepts the enum or its name; None
+// keeps base's value.
+FlowOptions Solver(FlowOptions base, std::optional<double> rtol, std::optional<double> atol,
+                   const py::object& integrator, const py::object& method);
+
+// Ctrl-C during a computation that runs without the GIL: the library's cancel
+// hook calls operator() (from any thread, without the GIL). At most every
+// 20 ms it takes the GIL and runs PyErr_CheckSignals; once that raised
+// (KeyboardInterrupt from SIGINT) the hook returns true for good, and
+// RaiseIfInterrupted() re-raises the exception after the call returns.
+class Interrupt {
+ public:
+  Interrupt();
+  ~Interrupt();
+  Interrupt(const Interrupt&) = delete;
+  Interrupt& operator=(const Interrupt&) = delete;
+  bool operator()();
+  bool fired() const { return fired_.load(); }
+  // With the GIL held: throws py::error_already_set if a signal handler raised.
+  void RaiseIfInterrupted();
+
+ private:
+  std::atomic<bool> fired_{false};
+  std::chrono::steady_clock::time_point next_check_;
+  PyObject *type_ = nullptr, *value_ = nullptr, *trace_ = nullptr;
+};
+
+// Binding entry points, one per source file.
+void BindOptions(py::module_& m);
+void BindResults(py::module_& m);
+void BindCompute(py::module_& m);
+void BindCharts(py::module_& m);
+
+// `result["name"]` for `result.name`: the dicts of earlier versions.
+py::object GetItem(const py::object& self, const std::string& key);
+
+}  // namespace stickslip::python

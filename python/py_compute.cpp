@@ -1,0 +1,262 @@
+// The computing functions of the Python module: simulation, periodic orbits,
+// continuation and basins. Each validates its arguments under the GIL, then
+// computes without it; the library's cancel hook watches for Ctrl-C
+// (Interrupt), and a numerical failure raises NumericalError.
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "py_results.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/orbit_scan.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
+
+// simulate(): rows are t_end / dt + 1 plus one per switch, at most max_rows.
+Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, double dt,
+                    long max_rows, std::optional<double> rtol, std::optional<double> atol,
+                    const py::object& integrator, const py::object& method) {
+  if (!std::isfinite(x0) || !std::isfinite(xdot0))
+    throw InvalidArgument("x0, xdot0 = " + Num(x0) + ", " + Num(xdot0) + " must be finite");
+  if (!(t_end > 0)) throw InvalidArgument("t_end = " + Num(t_end) + " must be > 0");
+  if (!(dt > 0)) throw InvalidArgument("dt = " + Num(dt) + " must be > 0");
+  if (max_rows < 2)
+    throw InvalidArgument("max_rows = " + std::to_string(max_rows) + " must be >= 2");
+  const double grid_rows = std::floor(t_end / dt) + 1;
+  if (!(grid_rows <= static_cast<double>(max_rows)))
+    throw InvalidArgument("t_end / dt = " + Num(t_end / dt) + " gives more rows than max_rows = " +
+                          std::to_string(max_rows) + " (raise max_rows or dt)");
+  const FlowOptions options = Solver(FlowOptions(), rtol, atol, integrator, method);
+  const Model model(p);
+  std::vector<double> t, x, xdot;
+  std::vector<std::uint8_t> mode;
+  Interrupt interrupt;
+  bool too_many = false;
+  FlowResult r;
+  {
+    py::gil_scoped_release nogil;
+    Flow flow(model, options);
+    flow.set_cancel([&] { return too_many || interrupt(); });
+    const Vec2 z0(x0, xdot0);
+    StopRule stop;
+    stop.t_max = t_end;
+    auto observer = [&](const Sample& s) {
+      const auto m = static_cast<std::uint8_t>(s.mode);
+      if (!t.empty() && s.t == t.back() && s.z[0] == x.back() && s.z[1] == xdot.back() &&
+          m == mode.back())
+        return;  // a repeated point (as in ss_simulate)
+      if (static_cast<long>(t.size()) >= max_rows) {
+        too_many = true;
+        return;
+      }
+      t.push_back(s.t), x.push_back(s.z[0]), xdot.push_back(s.z[1]), mode.push_back(m);
+    };
+    r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, dt, observer);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (too_many)
+    throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
+                          " at t = " + Num(t.back()) + " (raise max_rows or dt)");
+  if (!r.ok())
+    RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message +
+                   " (at t = " + Num(r.t) + " in " + ModeName(r.mode) + ")");
+  Trajectory out;
+  out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xdot);
+  py::array names = ReadOnlyStrings(
+      {ModeName(Mode::kSlipBelow), ModeName(Mode::kStick), ModeName(Mode::kSlipAbove)});
+  out.mode = names.attr("__getitem__")(ReadOnly(mode));  // codes to names
+  out.mode.attr("setflags")(py::arg("write") = false);
+  out.status = r.status, out.t_stick = r.t_stick, out.switches = r.switches;
+  out.crossings = r.crossings, out.x_min = r.x_min, out.x_max = r.x_max;
+  out.xdot_min = r.xdot_min, out.xdot_max = r.xdot_max;
+  return out;
+}
+
+// A stick-slip orbit (a_guess None) or a pure-slip orbit by Newton from xbar + a_guess.
+Orbit PeriodicOrbit(const Params& p, std::optional<double> a_guess, bool floquet,
+                    std::optional<double> rtol, std::optional<double> atol,
+                    const py::object& integrator, const py::object& method) {
+  OrbitOptions options;
+  options.flow = Solver(options.flow, rtol, atol, integrator, method);
+  options.floquet = floquet;
+  const std::string err = options.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+  if (a_guess && !(*a_guess > 0))
+    throw InvalidArgument("a_guess = " + Num(*a_guess) + " must be > 0");
+  const Model model(p);
+  Interrupt interrupt;
+  OrbitResult r;
+  {
+    py::gil_scoped_release nogil;
+    OrbitFinder finder(model, options);
+    finder.flow().set_cancel([&] { return interrupt(); });
+    r = a_guess ? finder.PureSlip(*a_guess) : finder.StickSlip();
+  }
+  interrupt.RaiseIfInterrupted();
+  if (!r.ok()) RaiseNumerical(std::string(OrbitStatusName(r.status)) + ": " + r.message);
+  return r.orbit;
+}
+
+Branch ContinueBranch(const Params& base, std::optional<std::string> param,
+                      std::optional<double> from, std::optional<double> to,
+                      std::optional<double> max_step, std::optional<bool> floquet,
+                      std::optional<double> rtol, std::optional<double> atol,
+                      const py::object& integrator, const py::object& method,
+                      std::optional<ContinuationOptions> options) {
+  ContinuationOptions opts = options.value_or(ContinuationOptions());
+  if (param) opts.param = *param;
+  // No range for an unknown name: the options say why.
+  if (!IsParameterName(opts.param)) throw InvalidArgument(opts.ValidationError(base));
+  if (!options) {  // the library's range for this parameter around base
+    const ParameterRange range = DefaultRange(base, opts.param);
+    opts.from = range.from, opts.to = range.to;
+  }
+  if (from) opts.from = *from;
+  if (to) opts.to = *to;
+  if (max_step) opts.max_step = *max_step;
+  if (floquet) opts.stick_slip_floquet = *floquet;
+  opts.orbit.flow = Solver(opts.orbit.flow, rtol, atol, integrator, method);
+  Interrupt interrupt;
+  opts.cancelled = [&] { return interrupt(); };
+  ContinuationResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = Continue(base, opts);  // throws InvalidArgument on bad options
+  }
+  interrupt.RaiseIfInterrupted();
+  if (r.status == ContinuationStatus::kFailed) RaiseNumerical(r.message);
+  return Branch{r.param,   r.status, r.message, r.warnings, BranchPoints(r.points),
+                r.special, r.counts, r.seconds};
+}
+
+OrbitScanOptions ScanOptions(std::optional<OrbitScanOptions> options, std::optional<int> samples,
+                             std::optional<double> rtol, std::optional<double> atol,
+                             const py::object& integrator, const py::object& method) {
+  OrbitScanOptions scan = options.value_or(OrbitScanOptions());
+  if (samples) scan.samples = *samples;
+  scan.orbit.flow = Solver(scan.orbit.flow, rtol, atol, integrator, method);
+  return scan;
+}
+
+PeriodicOrbits PeriodicOrbitsAt(const Params& p, std::optional<int> samples,
+                                std::optional<double> rtol, std::optional<double> atol,
+                                const py::object& integrator, const py::object& method,
+                                std::optional<OrbitScanOptions> options) {
+  OrbitScanOptions scan = ScanOptions(options, samples, rtol, atol, integrator, method);
+  const std::string err = scan.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+  const Model model(p);
+  Interrupt interrupt;
+  scan.cancelled = [&] { return interrupt(); };
+  PeriodicOrbits r;
+  {
+    py::gil_scoped_release nogil;
+    r = FindPeriodicOrbits(model, scan);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (r.status == OrbitScanStatus::kFailed) RaiseNumerical(r.message);
+  return r;
+}
+
+using Range = std::optional<std::pair<double, double>>;
+
+Basins BasinsOf(const Params& p, std::optional<int> nx, std::optional<int> ny, Range x_range,
+                Range xdot_range, std::optional<double> t_cap, std::optional<double> rtol,
+                std::optional<double> atol, const py::object& integrator, const py::object& method,
+                std::optional<BasinOptions> options) {
+  BasinOptions o = options.value_or(BasinOptions());
+  o.scan = ScanOptions(o.scan, std::nullopt, rtol, atol, integrator, method);
+  if (nx) o.nx = *nx;
+  if (ny) o.ny = *ny;
+  if (t_cap) o.t_cap = *t_cap;
+  if (x_range.has_value() != xdot_range.has_value())
+    throw InvalidArgument("x_range and xdot_range go together (or neither: the orbits' box)");
+  if (x_range) {
+    o.auto_range = false;
+    o.x_lo = x_range->first, o.x_hi = x_range->second;
+    o.xdot_lo = xdot_range->first, o.xdot_hi = xdot_range->second;
+  }
+  const std::string err = o.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+  const Model model(p);
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  BasinResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = ClassifyBasins(model, o);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (r.status == BasinStatus::kFailed) RaiseNumerical(r.message);
+  return MakeBasins(r);
+}
+
+py::array CurveOf(const Params& p, const Orbit& orbit, int n) {
+  if (n < 2) throw InvalidArgument("n = " + std::to_string(n) + " must be >= 2");
+  const Model model(p);
+  std::vector<Vec2> pts;
+  {
+    py::gil_scoped_release nogil;
+    pts = OrbitCurve(model, orbit, FlowOptions(), n);
+  }
+  py::array_t<double> out({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
+  for (size_t i = 0; i < pts.size(); ++i)
+    out.mutable_at(i, 0) = pts[i][0], out.mutable_at(i, 1) = pts[i][1];
+  out.attr("setflags")(py::arg("write") = false);
+  return std::move(out);
+}
+
+}  // namespace
+
+void BindCompute(py::module_& m) {
+  const py::object none = py::none();
+  m.def("simulate", &Simulate, py::arg("params"), py::arg("x0") = 0.0, py::arg("xdot0") = 0.25,
+        py::arg("t_end") = 100.0, py::arg("dt") = 0.01, py::arg("max_rows") = 1000000,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
+        py::arg("method") = none,
+        "One trajectory (as ss_simulate): a Trajectory with arrays t, x, xdot, mode, one row "
+        "every dt and at every switch. More than max_rows rows raise ValueError (up front for "
+        "t_end / dt). integrator 'taylor' (default) or 'cvode'; method 'adams' or 'bdf' "
+        "(CVODE's; alone it selects CVODE).");
+  m.def("periodic_orbit", &PeriodicOrbit, py::arg("params"), py::arg("a_guess") = none,
+        py::arg("floquet") = false, py::arg("rtol") = none, py::arg("atol") = none,
+        py::arg("integrator") = none, py::arg("method") = none,
+        "The stick-slip orbit (a_guess None) or the pure-slip orbit by Newton from the section "
+        "point xbar + a_guess, as an Orbit.");
+  m.def("continue_branch", &ContinueBranch, py::arg("params"), py::arg("param") = none,
+        py::arg("from_") = none, py::arg("to") = none, py::arg("max_step") = none,
+        py::arg("floquet") = none, py::arg("rtol") = none, py::arg("atol") = none,
+        py::arg("integrator") = none, py::arg("method") = none, py::arg("options") = none,
+        "Branches in one parameter (as ss_continue) from from_ to to: a Branch with points "
+        "(arrays), special (GR/HB/LP SpecialPoints), status and message. param defaults to "
+        "'v'; from_/to to default_range(params, param), or to options' values. Keywords "
+        "override options (a ContinuationOptions).");
+  m.def("periodic_orbits", &PeriodicOrbitsAt, py::arg("params"), py::arg("samples") = none,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
+        py::arg("method") = none, py::arg("options") = none,
+        "Every periodic orbit at one parameter point (steady sliding, stick-slip, every "
+        "pure-slip orbit), as PeriodicOrbits.");
+  m.def("basins", &BasinsOf, py::arg("params"), py::arg("nx") = none, py::arg("ny") = none,
+        py::arg("x_range") = none, py::arg("xdot_range") = none, py::arg("t_cap") = none,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
+        py::arg("method") = none, py::arg("options") = none,
+        "Basins of attraction (as ss_basin): the fate of each start of an nx by ny grid on "
+        "x_range by xdot_range (default: the orbits' box widened by a quarter).");
+  m.def("orbit_curve", &CurveOf, py::arg("params"), py::arg("orbit"), py::arg("n") = 400,
+        "One period of an orbit at n + 1 points, as an (n + 1, 2) array of (x, x').");
+  m.def(
+      "smallest_disturbance",
+      [](const Params& p, const Orbit& orbit, int n) {
+        if (n < 2) throw InvalidArgument("n = " + std::to_string(n) + " must be >= 2");
+        return SmallestDisturbance(Model(p), orbit, FlowOptions(), n);
+      },
+      py::arg("params"), py::arg("orbit"), py::arg("n") = 4000,
+      "The smallest disturbance of steady sliding that reaches a pure-slip orbit.");
+}
+
+}  // namespace stickslip::python

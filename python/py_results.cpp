@@ -1,0 +1,306 @@
+// Result types as Python classes: read-only attributes, arrays read-only,
+// and result["name"] for result.name (the dicts of version 0.x).
+#include "py_results.hpp"
+
+#include <pybind11/complex.h>
+#include <pybind11/stl.h>
+
+namespace stickslip::python {
+
+namespace {
+
+const char* const kPointColumns[] = {
+    "p",        "kind",    "branch",     "period", "x_min",     "x_max",         "xdot_min",
+    "xdot_max", "t_stick", "multiplier", "stable", "amplitude", "newton_stalled"};
+
+template <typename T>
+py::class_<T> Result(py::module_& m, const char* name, const char* doc) {
+  py::class_<T> c(m, name, doc);
+  c.def("__getitem__", &GetItem, py::arg("key"), "result['name'] is result.name");
+  return c;
+}
+
+py::array Matrix(const Mat2& a) {
+  py::array_t<double> out({2, 2});
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) out.mutable_at(i, j) = a(i, j);
+  out.attr("setflags")(py::arg("write") = false);
+  return std::move(out);
+}
+
+void BindOrbits(py::module_& m) {
+  Result<Equilibrium>(m, "Equilibrium", "Steady sliding (x, 0) and its eigenvalues.")
+      .def_readonly("x", &Equilibrium::x, "mu(v)")
+      .def_readonly("damping", &Equilibrium::damping, "2 beta + mu'(v): stable when > 0")
+      .def_readonly("lambda1", &Equilibrium::lambda1)
+      .def_readonly("lambda2", &Equilibrium::lambda2)
+      .def_property_readonly("max_real", &Equilibrium::max_real)
+      .def_property_readonly("stable", &Equilibrium::stable);
+  Result<Orbit>(m, "Orbit", "A periodic orbit: period, extremes, start, multipliers.")
+      .def_readonly("kind", &Orbit::kind)
+      .def_readonly("period", &Orbit::period)
+      .def_readonly("t_stick", &Orbit::t_stick, "time in stick per period")
+      .def_readonly("x_min", &Orbit::x_min)
+      .def_readonly("x_max", &Orbit::x_max)
+      .def_readonly("xdot_min", &Orbit::xdot_min)
+      .def_readonly("xdot_max", &Orbit::xdot_max)
+      .def_property_readonly(
+          "start",
+          [](const Orbit& o) {
+            return ReadOnly(std::vector<double>{o.start[0], o.start[1]});
+          },
+          "stick-slip: the exit point (x0, v); pure slip: the point on x' = 0")
+      .def_readonly("modes", &Orbit::modes, "segment sequence from start")
+      .def_readonly("crossings", &Orbit::crossings, "crossings of x' = v without sticking")
+      .def_readonly("has_floquet", &Orbit::has_floquet)
+      .def_property_readonly("monodromy", [](const Orbit& o) { return Matrix(o.monodromy); })
+      .def_property_readonly(
+          "eigenvalues",
+          [](const Orbit& o) { return py::make_tuple(o.eigenvalues[0], o.eigenvalues[1]); })
+      .def_readonly("multiplier", &Orbit::multiplier, "the nontrivial Floquet multiplier")
+      .def_readonly("stable", &Orbit::stable)
+      .def_readonly("newton_stalled", &Orbit::newton_stalled);
+  Result<PeriodicOrbits>(m, "PeriodicOrbits", "Every periodic orbit at one parameter point.")
+      .def_readonly("status", &PeriodicOrbits::status)
+      .def_readonly("message", &PeriodicOrbits::message)
+      .def_readonly("steady", &PeriodicOrbits::steady)
+      .def_property_readonly(
+          "stick_slip",
+          [](const PeriodicOrbits& o) -> py::object {
+            return o.has_stick_slip ? py::cast(o.stick_slip) : py::none();
+          },
+          "the stick-slip orbit, or None")
+      .def_readonly("pure_slip", &PeriodicOrbits::pure_slip, "by increasing amplitude")
+      .def_readonly("a_stick", &PeriodicOrbits::a_stick, "smallest amplitude that sticks")
+      .def_readonly("a_max", &PeriodicOrbits::a_max)
+      .def_readonly("returns", &PeriodicOrbits::returns, "return-map evaluations");
+  Result<Disturbance>(m, "Disturbance",
+                      "Smallest disturbance of steady sliding that reaches an orbit.")
+      .def_readonly("x", &Disturbance::x, "along x' = 0")
+      .def_readonly("xdot", &Disturbance::xdot, "along x = xbar")
+      .def_readonly("energy", &Disturbance::energy, "((x - xbar)^2 + x'^2) / 2");
+}
+
+void BindBranch(py::module_& m) {
+  Result<BranchPoints>(m, "BranchPoints", "The rows of a branch, one read-only array per column.")
+      .def("keys",
+           [](const BranchPoints&) {
+             return std::vector<std::string>(std::begin(kPointColumns), std::end(kPointColumns));
+           })
+      .def("items",
+           [](const py::object& self) {
+             py::list out;
+             for (const char* k : kPointColumns) out.append(py::make_tuple(k, self.attr(k)));
+             return out;
+           })
+      .def("__len__", [](const BranchPoints& b) { return b.p.size(); })
+      .def_readonly("p", &BranchPoints::p, "the continued parameter")
+      .def_readonly("kind", &BranchPoints::kind, "'stick-slip', 'pure-slip', 'equilibrium'")
+      .def_readonly("branch", &BranchPoints::branch, "rows of one branch are consecutive")
+      .def_readonly("period", &BranchPoints::period, "nan for the equilibrium")
+      .def_readonly("x_min", &BranchPoints::x_min)
+      .def_readonly("x_max", &BranchPoints::x_max)
+      .def_readonly("xdot_min", &BranchPoints::xdot_min)
+      .def_readonly("xdot_max", &BranchPoints::xdot_max)
+      .def_readonly("t_stick", &BranchPoints::t_stick)
+      .def_readonly("multiplier", &BranchPoints::multiplier, "equilibrium: largest real part")
+      .def_readonly("stable", &BranchPoints::stable)
+      .def_readonly("amplitude", &BranchPoints::amplitude, "pure slip: section amplitude")
+      .def_readonly("newton_stalled", &BranchPoints::newton_stalled);
+  Result<SpecialPoint>(m, "SpecialPoint", "A located special point (GR, HB, LP).")
+      .def_readonly("kind", &SpecialPoint::kind)
+      .def_property_readonly(
+          "label", [](const SpecialPoint& s) { return std::string(SpecialLabel(s.kind)); })
+      .def_readonly("p", &SpecialPoint::p)
+      .def_readonly("period", &SpecialPoint::period)
+      .def_readonly("x_min", &SpecialPoint::x_min)
+      .def_readonly("x_max", &SpecialPoint::x_max)
+      .def_readonly("xdot_min", &SpecialPoint::xdot_min)
+      .def_readonly("multiplier_before", &SpecialPoint::multiplier_before)
+      .def_readonly("multiplier_after", &SpecialPoint::multiplier_after)
+      .def_readonly("description", &SpecialPoint::description);
+  Result<ContinuationCounts>(m, "ContinuationCounts", "Work done by a continuation.")
+      .def_readonly("orbit_solves", &ContinuationCounts::orbit_solves)
+      .def_readonly("return_maps", &ContinuationCounts::return_maps)
+      .def_readonly("newton_iterations", &ContinuationCounts::newton_iterations)
+      .def_readonly("rejected_steps", &ContinuationCounts::rejected_steps)
+      .def_readonly("integrator_steps", &ContinuationCounts::integrator_steps);
+  Result<ContinuationTimes>(m, "ContinuationTimes", "Wall-clock seconds per phase.")
+      .def_readonly("equilibrium", &ContinuationTimes::equilibrium)
+      .def_readonly("stick_slip", &ContinuationTimes::stick_slip)
+      .def_readonly("pure_slip", &ContinuationTimes::pure_slip)
+      .def_readonly("switching", &ContinuationTimes::switching)
+      .def_readonly("discovery", &ContinuationTimes::discovery)
+      .def_readonly("total", &ContinuationTimes::total);
+  Result<Branch>(m, "Branch", "Result of continue_branch().")
+      .def_readonly("param", &Branch::param)
+      .def_readonly("status", &Branch::status)
+      .def_readonly("message", &Branch::message)
+      .def_readonly("warnings", &Branch::warnings)
+      .def_readonly("points", &Branch::points)
+      .def_readonly("special", &Branch::special)
+      .def_readonly("counts", &Branch::counts)
+      .def_readonly("seconds", &Branch::seconds)
+      .def_property_readonly("partial",
+                             [](const Branch& b) { return b.status != ContinuationStatus::kOk; });
+}
+
+void BindChartAndBasins(py::module_& m) {
+  py::class_<ChartCurve>(m, "ChartCurve", "One HB, GR or LP curve; curve[param1] is p1.")
+      .def("__getitem__",
+           [](const py::object& self, const std::string& key) -> py::object {
+             const auto& c = self.cast<const ChartCurve&>();
+             if (key == c.param1) return self.attr("p1");
+             if (key == c.param2) return self.attr("p2");
+             return GetItem(self, key);
+           })
+      .def_readonly("kind", &ChartCurve::kind)
+      .def_property_readonly("label",
+                             [](const ChartCurve& c) { return std::string(CurveLabel(c.kind)); })
+      .def_readonly("param1", &ChartCurve::param1)
+      .def_readonly("param2", &ChartCurve::param2)
+      .def_readonly("p1", &ChartCurve::p1)
+      .def_readonly("p2", &ChartCurve::p2)
+      .def_readonly("period", &ChartCurve::period)
+      .def_readonly("amplitude", &ChartCurve::amplitude)
+      .def_readonly("multiplier", &ChartCurve::multiplier)
+      .def_readonly("l1", &ChartCurve::l1, "HB: first Lyapunov coefficient")
+      .def_readonly("type", &ChartCurve::type, "supercritical/subcritical, persistence/...")
+      .def_readonly("unphysical", &ChartCurve::unphysical, "orbit visits mu <= 0")
+      .def_readonly("ends", &ChartCurve::ends, "how each end ended")
+      .def_readonly("seconds", &ChartCurve::seconds)
+      .def_readonly("evaluations", &ChartCurve::evaluations);
+  py::class_<ChartPoint>(m, "ChartPoint", "A codimension-two point (GH, GR-LP).")
+      .def("__getitem__",
+           [](const py::object& self, const std::string& key) -> py::object {
+             const auto& c = self.cast<const ChartPoint&>();
+             if (key == c.param1) return self.attr("p1");
+             if (key == c.param2) return self.attr("p2");
+             return GetItem(self, key);
+           })
+      .def_readonly("label", &ChartPoint::label)
+      .def_readonly("param1", &ChartPoint::param1)
+      .def_readonly("param2", &ChartPoint::param2)
+      .def_readonly("p1", &ChartPoint::p1)
+      .def_readonly("p2", &ChartPoint::p2)
+      .def_readonly("description", &ChartPoint::description);
+  Result<ChartOut>(m, "Chart", "Result of chart().")
+      .def_readonly("status", &ChartOut::status)
+      .def_readonly("message", &ChartOut::message)
+      .def_readonly("param1", &ChartOut::param1)
+      .def_readonly("param2", &ChartOut::param2)
+      .def_readonly("curves", &ChartOut::curves)
+      .def_readonly("codim2", &ChartOut::codim2)
+      .def_readonly("region_p1", &ChartOut::region_p1, "cell centres in p1")
+      .def_readonly("region_p2", &ChartOut::region_p2, "cell centres in p2")
+      .def_readonly("regions", &ChartOut::regions, "(n1, n2) int(Region) codes; empty if none")
+      .def_readonly("unphysical_points", &ChartOut::unphysical_points)
+      .def_readonly("seconds", &ChartOut::seconds);
+  Result<Basins>(m, "Basins", "Result of basins(): the fate of every start of the grid.")
+      .def_readonly("status", &Basins::status)
+      .def_readonly("message", &Basins::message)
+      .def_readonly("orbits", &Basins::orbits)
+      .def_readonly("x_lo", &Basins::x_lo)
+      .def_readonly("x_hi", &Basins::x_hi)
+      .def_readonly("xdot_lo", &Basins::xdot_lo)
+      .def_readonly("xdot_hi", &Basins::xdot_hi)
+      .def_readonly("nx", &Basins::nx)
+      .def_readonly("ny", &Basins::ny)
+      .def_readonly("x", &Basins::x, "starts, row by row (x' outer, x inner)")
+      .def_readonly("xdot", &Basins::xdot)
+      .def_readonly("fate", &Basins::fate, "'steady-sliding', 'stick-slip', ...")
+      .def_readonly("orbit", &Basins::orbit, "pure slip: index into orbits.pure_slip")
+      .def_readonly("t_settle", &Basins::t_settle)
+      .def_readonly("counts", &Basins::counts, "Fate -> number of starts");
+}
+
+}  // namespace
+
+BranchPoints::BranchPoints(const std::vector<BranchPoint>& pts) {
+  std::vector<double> pp, per, xmin, xmax, vmin, vmax, ts, mult, amp;
+  std::vector<std::string> kinds;
+  std::vector<int> br;
+  std::vector<bool> st, stalled;
+  for (const auto& q : pts) {
+    pp.push_back(q.p), per.push_back(q.period), xmin.push_back(q.x_min);
+    xmax.push_back(q.x_max), vmin.push_back(q.xdot_min), vmax.push_back(q.xdot_max);
+    ts.push_back(q.t_stick), mult.push_back(q.multiplier), amp.push_back(q.amplitude);
+    kinds.push_back(PointKindName(q.kind)), br.push_back(q.branch);
+    st.push_back(q.stable), stalled.push_back(q.newton_stalled);
+  }
+  p = ReadOnly(pp), kind = ReadOnlyStrings(kinds), branch = ReadOnly(br), period = ReadOnly(per);
+  x_min = ReadOnly(xmin), x_max = ReadOnly(xmax), xdot_min = ReadOnly(vmin);
+  xdot_max = ReadOnly(vmax), t_stick = ReadOnly(ts), multiplier = ReadOnly(mult);
+  stable = ReadOnlyBool(st), amplitude = ReadOnly(amp), newton_stalled = ReadOnlyBool(stalled);
+}
+
+ChartOut MakeChartOut(const ChartResult& r, const Plane& plane) {
+  ChartOut out;
+  out.status = r.status, out.message = r.message;
+  out.param1 = plane.p1, out.param2 = plane.p2;
+  for (const Curve& c : r.curves) {
+    std::vector<double> p1, p2, period, amplitude, multiplier, l1;
+    std::vector<std::string> type;
+    std::vector<bool> unphysical;
+    for (const CurvePoint& q : c.points) {
+      p1.push_back(q.p1), p2.push_back(q.p2), period.push_back(q.period);
+      amplitude.push_back(q.amplitude), multiplier.push_back(q.multiplier), l1.push_back(q.l1);
+      type.push_back(q.type), unphysical.push_back(q.unphysical);
+    }
+    out.curves.push_back({c.kind, plane.p1, plane.p2, ReadOnly(p1), ReadOnly(p2), ReadOnly(period),
+                          ReadOnly(amplitude), ReadOnly(multiplier), ReadOnly(l1),
+                          ReadOnlyStrings(type), ReadOnlyBool(unphysical), c.ends, c.seconds,
+                          c.evaluations});
+  }
+  for (const Codim2Point& c : r.codim2)
+    out.codim2.push_back({c.label, plane.p1, plane.p2, c.description, c.p1, c.p2});
+  std::vector<int> cells;
+  for (Region g : r.regions.cells) cells.push_back(static_cast<int>(g));
+  py::array_t<int> grid({r.regions.n1, r.regions.n2});
+  for (size_t i = 0; i < cells.size(); ++i) grid.mutable_data()[i] = cells[i];
+  grid.attr("setflags")(py::arg("write") = false);
+  out.region_p1 = ReadOnly(r.regions.x1), out.region_p2 = ReadOnly(r.regions.x2);
+  out.regions = std::move(grid);
+  out.unphysical_points = r.unphysical_points;
+  out.seconds = r.seconds, out.region_seconds = r.region_seconds;
+  return out;
+}
+
+Basins MakeBasins(const BasinResult& r) {
+  Basins b;
+  b.status = r.status, b.message = r.message, b.orbits = r.orbits;
+  b.x_lo = r.x_lo, b.x_hi = r.x_hi, b.xdot_lo = r.xdot_lo, b.xdot_hi = r.xdot_hi;
+  b.nx = r.nx, b.ny = r.ny;
+  std::vector<double> x, xdot, t;
+  std::vector<std::string> fate;
+  std::vector<int> orbit;
+  for (const BasinStart& s : r.starts) {
+    x.push_back(s.x), xdot.push_back(s.xdot), t.push_back(s.t_settle);
+    fate.push_back(FateName(s.fate)), orbit.push_back(s.orbit);
+  }
+  b.x = ReadOnly(x), b.xdot = ReadOnly(xdot), b.fate = ReadOnlyStrings(fate);
+  b.orbit = ReadOnly(orbit), b.t_settle = ReadOnly(t);
+  for (int f = 0; f < 4; ++f) b.counts[py::cast(static_cast<Fate>(f))] = r.count[f];
+  return b;
+}
+
+void BindResults(py::module_& m) {
+  Result<Trajectory>(m, "Trajectory", "Result of simulate(): one row every dt and at every switch.")
+      .def_readonly("t", &Trajectory::t)
+      .def_readonly("x", &Trajectory::x)
+      .def_readonly("xdot", &Trajectory::xdot)
+      .def_readonly("mode", &Trajectory::mode, "'slip-below', 'stick' or 'slip-above'")
+      .def_readonly("status", &Trajectory::status)
+      .def_readonly("t_stick", &Trajectory::t_stick, "time spent in stick")
+      .def_readonly("switches", &Trajectory::switches)
+      .def_readonly("crossings", &Trajectory::crossings)
+      .def_readonly("x_min", &Trajectory::x_min)
+      .def_readonly("x_max", &Trajectory::x_max)
+      .def_readonly("xdot_min", &Trajectory::xdot_min)
+      .def_readonly("xdot_max", &Trajectory::xdot_max);
+  BindOrbits(m);
+  BindBranch(m);
+  BindChartAndBasins(m);
+}
+
+}  // namespace stickslip::python

@@ -1,0 +1,376 @@
+# Type stub of the stickslip package (the compiled stickslip._core),
+# written by hand; python/tests/test_api.py checks its names against the module.
+import enum
+from typing import Any, Dict, Iterator, List, Optional, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+git_commit: str
+
+class Error(RuntimeError): ...
+class InvalidArgument(ValueError): ...
+class NumericalError(Error): ...
+
+class Law(enum.IntEnum):
+    cubic = 0
+    coulomb = 1
+    stribeck = 2
+    leine = 3
+class Integrator(enum.IntEnum):
+    taylor = 0
+    cvode = 1
+class Method(enum.IntEnum):
+    adams = 0
+    bdf = 1
+class Mode(enum.IntEnum):
+    slip_below = 0
+    stick = 1
+    slip_above = 2
+class FlowStatus(enum.IntEnum):
+    time_limit = 0
+    stick = 1
+    section = 2
+    velocity_max = 3
+    integrator_failed = 4
+    too_many_switches = 5
+    cancelled = 6
+class OrbitKind(enum.IntEnum):
+    stick_slip = 0
+    pure_slip = 1
+class PointKind(enum.IntEnum):
+    stick_slip = 0
+    pure_slip = 1
+    equilibrium = 2
+class SpecialKind(enum.IntEnum):
+    grazing = 0
+    hopf = 1
+    fold = 2
+class ContinuationStatus(enum.IntEnum):
+    ok = 0
+    failed = 1
+    cancelled = 2
+class CurveKind(enum.IntEnum):
+    hopf = 0
+    grazing = 1
+    fold = 2
+class ChartStatus(enum.IntEnum):
+    ok = 0
+    failed = 1
+    partial = 2
+    cancelled = 3
+class Region(enum.IntEnum):
+    steady_only = 0
+    stick_slip = 1
+    pure_slip = 2
+    bistable = 3
+class Fate(enum.IntEnum):
+    steady_sliding = 0
+    stick_slip = 1
+    pure_slip = 2
+    undecided = 3
+class BasinStatus(enum.IntEnum):
+    ok = 0
+    failed = 1
+    cancelled = 2
+
+LawLike = Union[str, Law]
+IntegratorLike = Union[str, Integrator, None]
+MethodLike = Union[str, Method, None]
+Array = npt.NDArray[Any]  # read-only
+
+class Params:
+    law: str
+    beta: float
+    v: float
+    mu_s: float
+    mu_m: float
+    v_m: float
+    mu_k: float
+    v_s: float
+    delta: float
+    k5: float
+    def __init__(self, law: LawLike = "cubic", **values: float) -> None: ...
+    @staticmethod
+    def from_physical(law: LawLike = "cubic", **inputs: float) -> Params: ...
+    @property
+    def k1(self) -> float: ...
+    @property
+    def k3(self) -> float: ...
+    def validation_error(self) -> str: ...
+    def validate(self) -> None: ...
+    def to_dict(self) -> Dict[str, Union[str, float]]: ...
+
+class FlowOptions:
+    rtol: float
+    atol: float
+    integrator: Integrator
+    method: Method
+    max_steps: int
+    max_switches: int
+    def __init__(self) -> None: ...
+    def validation_error(self) -> str: ...
+class OrbitOptions:
+    flow: FlowOptions
+    floquet: bool
+    max_return_time: float
+    max_newton: int
+    newton_tol: float
+    def __init__(self) -> None: ...
+    def validation_error(self) -> str: ...
+class ContinuationOptions:
+    param: str
+    from_: float
+    to: float
+    orbit: OrbitOptions
+    max_step: float
+    min_step: float
+    locate_tol: float
+    max_points: int
+    stick_slip_floquet: bool
+    def __init__(self) -> None: ...
+    def validation_error(self, params: Params) -> str: ...
+class Plane:
+    p1: str
+    p2: str
+    from1: float
+    to1: float
+    from2: float
+    to2: float
+    def __init__(self) -> None: ...
+    def validation_error(self, params: Params) -> str: ...
+class ChartOptions:
+    plane: Plane
+    orbit: OrbitOptions
+    max_step: float
+    samples: int
+    hopf_curves: bool
+    grazing_curves: bool
+    fold_curves: bool
+    region_n1: int
+    region_n2: int
+    def __init__(self) -> None: ...
+    def validation_error(self, params: Params) -> str: ...
+class OrbitScanOptions:
+    orbit: OrbitOptions
+    samples: int
+    a_min: float
+    def __init__(self) -> None: ...
+    def validation_error(self) -> str: ...
+class BasinOptions:
+    scan: OrbitScanOptions
+    auto_range: bool
+    x_lo: float
+    x_hi: float
+    xdot_lo: float
+    xdot_hi: float
+    nx: int
+    ny: int
+    t_cap: float
+    settle: float
+    def __init__(self) -> None: ...
+    def validation_error(self) -> str: ...
+
+class Trajectory:
+    t: Array
+    x: Array
+    xdot: Array
+    mode: Array
+    status: FlowStatus
+    t_stick: float
+    switches: int
+    crossings: int
+    x_min: float
+    x_max: float
+    xdot_min: float
+    xdot_max: float
+    def __getitem__(self, key: str) -> Any: ...
+class Equilibrium:
+    x: float
+    damping: float
+    lambda1: complex
+    lambda2: complex
+    max_real: float
+    stable: bool
+    def __getitem__(self, key: str) -> Any: ...
+class Orbit:
+    kind: OrbitKind
+    period: float
+    t_stick: float
+    x_min: float
+    x_max: float
+    xdot_min: float
+    xdot_max: float
+    start: Array
+    modes: List[Mode]
+    crossings: int
+    has_floquet: bool
+    monodromy: Array
+    eigenvalues: Tuple[complex, complex]
+    multiplier: float
+    stable: bool
+    newton_stalled: bool
+    def __getitem__(self, key: str) -> Any: ...
+class PeriodicOrbits:
+    status: Any
+    message: str
+    steady: Equilibrium
+    stick_slip: Optional[Orbit]
+    pure_slip: List[Orbit]
+    a_stick: float
+    a_max: float
+    returns: int
+    def __getitem__(self, key: str) -> Any: ...
+class Disturbance:
+    x: float
+    xdot: float
+    energy: float
+    def __getitem__(self, key: str) -> Any: ...
+class BranchPoints:
+    p: Array
+    kind: Array
+    branch: Array
+    period: Array
+    x_min: Array
+    x_max: Array
+    xdot_min: Array
+    xdot_max: Array
+    t_stick: Array
+    multiplier: Array
+    stable: Array
+    amplitude: Array
+    newton_stalled: Array
+    def keys(self) -> List[str]: ...
+    def items(self) -> List[Tuple[str, Array]]: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, key: str) -> Array: ...
+class SpecialPoint:
+    kind: SpecialKind
+    label: str
+    p: float
+    period: float
+    x_min: float
+    x_max: float
+    xdot_min: float
+    multiplier_before: float
+    multiplier_after: float
+    description: str
+    def __getitem__(self, key: str) -> Any: ...
+class ContinuationCounts:
+    orbit_solves: int
+    return_maps: int
+    newton_iterations: int
+    rejected_steps: int
+    integrator_steps: int
+    def __getitem__(self, key: str) -> Any: ...
+class ContinuationTimes:
+    equilibrium: float
+    stick_slip: float
+    pure_slip: float
+    switching: float
+    discovery: float
+    total: float
+    def __getitem__(self, key: str) -> Any: ...
+class Branch:
+    param: str
+    status: ContinuationStatus
+    message: str
+    warnings: List[str]
+    points: BranchPoints
+    special: List[SpecialPoint]
+    counts: ContinuationCounts
+    seconds: ContinuationTimes
+    partial: bool
+    def __getitem__(self, key: str) -> Any: ...
+class ChartCurve:
+    kind: CurveKind
+    label: str
+    param1: str
+    param2: str
+    p1: Array
+    p2: Array
+    period: Array
+    amplitude: Array
+    multiplier: Array
+    l1: Array
+    type: Array
+    unphysical: Array
+    ends: str
+    seconds: float
+    evaluations: int
+    def __getitem__(self, key: str) -> Any: ...
+class ChartPoint:
+    label: str
+    param1: str
+    param2: str
+    p1: float
+    p2: float
+    description: str
+    def __getitem__(self, key: str) -> Any: ...
+class Chart:
+    status: ChartStatus
+    message: str
+    param1: str
+    param2: str
+    curves: List[ChartCurve]
+    codim2: List[ChartPoint]
+    region_p1: Array
+    region_p2: Array
+    regions: Array
+    unphysical_points: int
+    seconds: float
+    def __getitem__(self, key: str) -> Any: ...
+class Basins:
+    status: BasinStatus
+    message: str
+    orbits: PeriodicOrbits
+    x_lo: float
+    x_hi: float
+    xdot_lo: float
+    xdot_hi: float
+    nx: int
+    ny: int
+    x: Array
+    xdot: Array
+    fate: Array
+    orbit: Array
+    t_settle: Array
+    counts: Dict[Fate, int]
+    def __getitem__(self, key: str) -> Any: ...
+
+def parameter_names(law: LawLike = "cubic") -> List[str]: ...
+def default_range(params: Params, name: str) -> Tuple[float, float]: ...
+def scales(mass: float, stiffness: float, gravity: float = 9.81) -> Tuple[float, float]: ...
+def simulate(params: Params, x0: float = 0.0, xdot0: float = 0.25, t_end: float = 100.0,
+             dt: float = 0.01, max_rows: int = 1000000, rtol: Optional[float] = None,
+             atol: Optional[float] = None, integrator: IntegratorLike = None,
+             method: MethodLike = None) -> Trajectory: ...
+def periodic_orbit(params: Params, a_guess: Optional[float] = None, floquet: bool = False,
+                   rtol: Optional[float] = None, atol: Optional[float] = None,
+                   integrator: IntegratorLike = None, method: MethodLike = None) -> Orbit: ...
+def continue_branch(params: Params, param: Optional[str] = None, from_: Optional[float] = None,
+                    to: Optional[float] = None, max_step: Optional[float] = None,
+                    floquet: Optional[bool] = None, rtol: Optional[float] = None,
+                    atol: Optional[float] = None, integrator: IntegratorLike = None,
+                    method: MethodLike = None,
+                    options: Optional[ContinuationOptions] = None) -> Branch: ...
+def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
+                    atol: Optional[float] = None, integrator: IntegratorLike = None,
+                    method: MethodLike = None,
+                    options: Optional[OrbitScanOptions] = None) -> PeriodicOrbits: ...
+def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
+           x_range: Optional[Tuple[float, float]] = None,
+           xdot_range: Optional[Tuple[float, float]] = None, t_cap: Optional[float] = None,
+           rtol: Optional[float] = None, atol: Optional[float] = None,
+           integrator: IntegratorLike = None, method: MethodLike = None,
+           options: Optional[BasinOptions] = None) -> Basins: ...
+def orbit_curve(params: Params, orbit: Orbit, n: int = 400) -> Array: ...
+def smallest_disturbance(params: Params, orbit: Orbit, n: int = 4000) -> Disturbance: ...
+def chart(params: Params, param: Optional[str] = None, from_: Optional[float] = None,
+          to: Optional[float] = None, param2: Optional[str] = None,
+          from2: Optional[float] = None, to2: Optional[float] = None,
+          max_step: Optional[float] = None, regions: Optional[Tuple[int, int]] = None,
+          rtol: Optional[float] = None, atol: Optional[float] = None,
+          integrator: IntegratorLike = None, method: MethodLike = None,
+          options: Optional[ChartOptions] = None) -> Chart: ...

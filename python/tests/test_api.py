@@ -1,0 +1,201 @@
+"""The bound types of the module: read-only arrays (issue 23, N17), the branch's
+direction (issue 23: continue_branch with from and to swapped), the integrator
+choice, the row cap of simulate (N7), basins, and the type stub.
+
+References: HB = sqrt((k1 - 2 beta) / (3 k3)) (seed eq. 3.16); GR and HB from
+the C++ app ss_continue (STICKSLIP_SS_CONTINUE, run here); the first stick
+phase from (0, v) ends at t = (mu_s - 2 beta v) / v (seed eq. 3.6); basins
+against a point-in-polygon test on the unstable orbit's curve (design notes
+section 4: that orbit bounds the basin of steady sliding).
+"""
+import ast
+import math
+import os
+import pathlib
+import subprocess
+import tempfile
+import time
+import unittest
+
+import numpy as np
+
+import stickslip
+
+STUB = pathlib.Path(stickslip.__file__).with_name("__init__.pyi")
+
+
+def hopf(p):
+    return math.sqrt((p.k1 - 2 * p.beta) / (3 * p.k3))
+
+
+def app_special_points(args):
+    """Special points of ss_continue as {label: p}, read from special_points.tsv."""
+    exe = os.environ.get("STICKSLIP_SS_CONTINUE")
+    if not exe:
+        raise unittest.SkipTest("STICKSLIP_SS_CONTINUE not set (run through ctest)")
+    with tempfile.TemporaryDirectory() as out:
+        subprocess.run([exe, *args, "--no_plots", "--no_estimates", "--out", out], check=True,
+                       stdout=subprocess.DEVNULL)
+        with open(os.path.join(out, "special_points.tsv")) as f:
+            rows = [line.rstrip("\n").split("\t") for line in f
+                    if line.strip() and not line.startswith("#")]
+    head = rows[0]
+    # "GR" or, with point labels, "GR1": the kind is the letters.
+    return {r[head.index("label")].rstrip("0123456789"): float(r[head.index("v")])
+            for r in rows[1:]}
+
+
+class ReadOnlyArrays(unittest.TestCase):
+    def assert_read_only(self, arr, name):
+        self.assertIsInstance(arr, np.ndarray, name)
+        self.assertFalse(arr.flags.writeable, name)
+        with self.assertRaises(ValueError, msg=name):
+            arr[0] = arr[0]
+
+    def test_every_result_array_is_read_only(self):
+        p = stickslip.Params()
+        branch = stickslip.continue_branch(p, "v", from_=0.3, to=0.5)
+        for name, arr in branch.points.items():
+            self.assert_read_only(arr, "points." + name)
+        run = stickslip.simulate(p, t_end=2.0)
+        for name in ("t", "x", "xdot", "mode"):
+            self.assert_read_only(getattr(run, name), "simulate." + name)
+        curve = stickslip.chart(p).curves[0]
+        for name in ("p1", "p2", "period", "amplitude", "multiplier", "l1", "type"):
+            self.assert_read_only(getattr(curve, name), "chart." + name)
+        basins = stickslip.basins(p, nx=3, ny=3)
+        for name in ("x", "xdot", "fate", "orbit", "t_settle"):
+            self.assert_read_only(getattr(basins, name), "basins." + name)
+        self.assert_read_only(stickslip.periodic_orbit(p).start, "orbit.start")
+
+
+class BranchDirection(unittest.TestCase):
+    def test_rows_run_from_from_to_to_with_the_apps_special_points(self):
+        p = stickslip.Params()
+        branch = stickslip.continue_branch(p, "v", from_=0.05, to=0.5)
+        pts = branch.points.p
+        self.assertEqual(pts[0], 0.05)
+        self.assertEqual(pts[-1], 0.5)
+        labels = [s.label for s in branch.special]
+        self.assertEqual(labels, ["GR", "HB"])  # in the order the branch meets them
+        app = app_special_points(["--from", "0.05", "--to", "0.5"])
+        self.assertAlmostEqual(branch.special[0].p, app["GR"], delta=1e-12)
+        self.assertAlmostEqual(branch.special[1].p, app["HB"], delta=1e-12)
+        self.assertAlmostEqual(branch.special[1].p, hopf(p), delta=1e-10)
+        self.assertAlmostEqual(branch.special[1].p, 0.4409585518, delta=1e-10)
+        self.assertEqual(len(pts), len(branch.points.kind))
+
+    def test_options_object_gives_the_keyword_result(self):
+        o = stickslip.ContinuationOptions()
+        o.param, o.from_, o.to = "v", 0.3, 0.5
+        a = stickslip.continue_branch(stickslip.Params(), options=o)
+        b = stickslip.continue_branch(stickslip.Params(), "v", from_=0.3, to=0.5)
+        self.assertTrue(np.array_equal(a.points.p, b.points.p))
+        self.assertEqual(a["special"][1]["label"], "HB")  # the dict-style access of 0.x
+
+
+class Integrators(unittest.TestCase):
+    def test_each_integrator_ends_the_first_stick_phase_at_the_closed_form(self):
+        p = stickslip.Params()
+        expected = (p.mu_s - 2 * p.beta * p.v) / p.v
+        for kw in ({}, {"integrator": "taylor"}, {"integrator": "cvode"},
+                   {"method": "bdf"}, {"integrator": stickslip.Integrator.cvode,
+                                       "method": stickslip.Method.adams}):
+            run = stickslip.simulate(p, xdot0=p.v, t_end=3.0, **kw)
+            first_slip = run.t[np.argmax(run.mode != "stick")]
+            self.assertAlmostEqual(first_slip, expected, delta=1e-9, msg=str(kw))
+
+    def test_stick_slip_period_agrees_across_integrators(self):
+        p = stickslip.Params()
+        taylor = stickslip.periodic_orbit(p).period
+        bdf = stickslip.periodic_orbit(p, integrator="cvode", method="bdf", rtol=1e-12,
+                                       atol=1e-14).period
+        self.assertAlmostEqual(taylor, bdf, delta=1e-8)
+
+    def test_bad_integrator_choices_name_the_argument(self):
+        p = stickslip.Params()
+        with self.assertRaisesRegex(ValueError, "integrator = 'rk4'"):
+            stickslip.simulate(p, integrator="rk4")
+        with self.assertRaisesRegex(ValueError, "method = 'bdf' applies to integrator"):
+            stickslip.periodic_orbit(p, integrator="taylor", method="bdf")
+
+
+class RowCap(unittest.TestCase):
+    def test_too_many_rows_raise_up_front_naming_max_rows(self):
+        p = stickslip.Params()
+        start = time.monotonic()
+        with self.assertRaisesRegex(ValueError, r"max_rows = 1000000 \(raise max_rows or dt\)"):
+            stickslip.simulate(p, t_end=1e9, dt=1e-3)
+        self.assertLess(time.monotonic() - start, 1.0)
+        with self.assertRaisesRegex(ValueError, "max_rows = 100"):
+            stickslip.simulate(p, t_end=100.0, dt=0.01, max_rows=100)
+        run = stickslip.simulate(p, t_end=1.0, dt=0.01, max_rows=200)
+        self.assertEqual(run.t[-1], 1.0)
+
+    def test_switch_rows_count_against_the_cap(self):
+        # 101 grid rows fit; the switches (about 2 per period 6.6) take it past 102.
+        with self.assertRaisesRegex(ValueError, "switches took the rows past max_rows = 102"):
+            stickslip.simulate(stickslip.Params(), t_end=100.0, dt=1.0, max_rows=102)
+
+
+def inside(polygon, x, y):
+    """Ray casting: is (x, y) inside the closed polygon (rows of x, y)?"""
+    xs, ys = polygon[:, 0], polygon[:, 1]
+    x2, y2 = np.roll(xs, -1), np.roll(ys, -1)
+    crosses = ((ys > y) != (y2 > y)) & (x < xs + (y - ys) * (x2 - xs) / (y2 - ys + 1e-300))
+    return bool(np.count_nonzero(crosses) % 2)
+
+
+class Basins(unittest.TestCase):
+    def test_unstable_orbit_bounds_the_basin_of_steady_sliding(self):
+        # Stribeck law, bistable (subcritical Hopf): steady sliding and stick-slip.
+        p = stickslip.Params(law="stribeck", mu_s=0.4, mu_k=0.25, v_s=0.1, v=0.35)
+        b = stickslip.basins(p, nx=21, ny=21)
+        self.assertEqual(b.status, stickslip.BasinStatus.ok)
+        (unstable,) = b.orbits.pure_slip
+        self.assertFalse(unstable.stable)
+        curve = stickslip.orbit_curve(p, unstable, n=2000)
+        h = max((b.x_hi - b.x_lo) / (b.nx - 1), (b.xdot_hi - b.xdot_lo) / (b.ny - 1))
+        checked = 0
+        for x, xdot, fate in zip(b.x, b.xdot, b.fate):
+            if np.min(np.hypot(curve[:, 0] - x, curve[:, 1] - xdot)) < h:
+                continue  # a cell the boundary crosses
+            want = "steady-sliding" if inside(curve, x, xdot) else "stick-slip"
+            self.assertEqual(fate, want, (x, xdot))
+            checked += 1
+        self.assertGreater(checked, 300)
+        counts = b.counts
+        self.assertGreater(counts[stickslip.Fate.steady_sliding], 10)
+        self.assertEqual(sum(counts.values()), 21 * 21)
+
+
+class Stub(unittest.TestCase):
+    def test_stub_names_match_the_module(self):
+        tree = ast.parse(STUB.read_text())
+        stub = {}
+        for node in tree.body:
+            if isinstance(node, ast.ClassDef):
+                stub[node.name] = {n.name if isinstance(n, (ast.FunctionDef, ast.ClassDef))
+                                   else (n.target.id if isinstance(n, ast.AnnAssign)
+                                         else n.targets[0].id)
+                                   for n in node.body
+                                   if isinstance(n, (ast.FunctionDef, ast.AnnAssign, ast.Assign))}
+            elif isinstance(node, ast.FunctionDef):
+                stub[node.name] = None
+            elif isinstance(node, ast.AnnAssign):
+                stub[node.target.id] = None
+        public = {n for n in dir(stickslip) if not n.startswith("_")} | {"__version__"}
+        self.assertEqual(set(stub), public)
+        for name, members in stub.items():
+            obj = getattr(stickslip, name)
+            if members is None or issubclass(obj, Exception):
+                continue
+            actual = {n for n in vars(obj) if not n.startswith("_")}
+            if hasattr(obj, "__members__"):  # an enum: its values and the enum machinery
+                actual = set(obj.__members__)
+            members = {m for m in members if not m.startswith("_")}
+            self.assertEqual(members, actual, name)
+
+
+if __name__ == "__main__":
+    unittest.main()
