@@ -70,9 +70,20 @@ Equilibrium Model::SteadySliding() const {
   Equilibrium e;
   e.x = friction_.Mu(p_.v);
   e.damping = two_beta_ + friction_.DMu(p_.v);
-  const std::complex<double> disc = std::sqrt(std::complex<double>(e.damping * e.damping - 4.0));
-  e.lambda1 = 0.5 * (-e.damping + disc);
-  e.lambda2 = 0.5 * (-e.damping - disc);
+  const double b = e.damping, d = b * b - 4.0;
+  if (d < 0) {  // complex pair: no cancellation
+    const double im = 0.5 * std::sqrt(-d);
+    e.lambda1 = {-0.5 * b, im};
+    e.lambda2 = {-0.5 * b, -im};
+    return e;
+  }
+  // Real roots of lambda^2 + b lambda + 1 = 0 in the stable form (Press et al.,
+  // Numerical Recipes, eq. 5.6.4): q = -(b + sgn(b) sqrt(b^2 - 4)) / 2, roots q
+  // and 1 / q. -b/2 + sqrt(...)/2 cancels to 0 for large b (v_m = 1e-6).
+  // lambda1 is the larger.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(d), b));
+  e.lambda1 = b > 0 ? 1.0 / q : q;
+  e.lambda2 = b > 0 ? q : 1.0 / q;
   return e;
 }
 
