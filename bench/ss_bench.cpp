@@ -40,6 +40,7 @@
 #include "regularised.hpp"
 #include "stickslip/continuation.hpp"
 #include "stickslip/errors.hpp"
+#include "cli/gnuplot.hpp"
 #include "stickslip/report.hpp"
 
 namespace {
@@ -129,7 +130,7 @@ int Main(int argc, char** argv) {
       return 2;
     }
   }
-  // The full run updates the figure the README shows; a quick one stays in the build tree.
+  // The full run writes plots/ (not committed); a quick one stays in the build tree.
   if (out.empty())
     out = quick ? std::string(SS_BENCH_BINARY_DIR) + "/quick"
                 : std::string(STICKSLIP_SOURCE_DIR) + "/plots";
@@ -227,7 +228,7 @@ int Main(int argc, char** argv) {
     const std::string wrapper = out + "/.work_precision.part.gp";
     ss::WriteFileAtomically(wrapper, "suffix = '.part'\nload '" + script + "'\n");
     std::string err;
-    const bool ok = ss::RunGnuplot(wrapper, out, &err);
+    const bool ok = stickslip::cli::RunGnuplot(wrapper, out, &err);
     std::remove(wrapper.c_str());
     const std::string png = out + "/work_precision.png";
     if (ok && std::rename((png + ".part").c_str(), png.c_str()) == 0) {

@@ -8,12 +8,14 @@
 namespace stickslip {
 
 std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const std::string& param,
-                                            const ContinuationResult& r, const FlowOptions& flow) {
+                                            const ContinuationResult& r, const FlowOptions& flow,
+                                            const std::function<bool()>& cancelled) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<ExtraColumn> cols = {{"dist_x", {}}, {"dist_xdot", {}}, {"dist_energy", {}}};
   for (const BranchPoint& pt : r.points) {
     Disturbance d{nan, nan, nan};
-    const bool unstable_orbit = pt.kind == PointKind::kPureSlip && !pt.stable;
+    const bool unstable_orbit =
+        pt.kind == PointKind::kPureSlip && !pt.stable && !(cancelled && cancelled());
     if (unstable_orbit && pt.amplitude <= 0) {
       d = Disturbance{0, 0, 0};  // the orbit shrinks onto steady sliding (a Hopf point)
     } else if (unstable_orbit && pt.period > 0) {

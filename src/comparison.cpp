@@ -20,14 +20,16 @@ void Track(const EstimateCell& c, double p, double* max_err, double* p_at, int* 
 }  // namespace
 
 EstimateComparison CompareEstimates(const Params& base, const std::string& param,
-                                    const ContinuationResult& r, int check_points) {
+                                    const ContinuationResult& r, int check_points,
+                                    const std::function<bool()>& cancelled) {
   EstimateComparison out;
   if (base.law != LawKind::kCubic) {
     out.reason = std::string("the estimates are for the cubic law, not ") + LawName(base.law);
     return out;
   }
-  if (base.k5 != 0) {
-    out.reason = "the estimates are for the cubic law without the quintic term (k5 = 0)";
+  if (base.k5 != 0 || param == "k5") {
+    out.reason = std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
+                 (param == "k5" ? ", and k5 is the continued parameter" : "");
     return out;
   }
   out.applies = true;
@@ -46,6 +48,10 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     // Steady sliding, and the zero-amplitude end of a pure-slip branch at HB,
     // are not orbits to compare with.
     if (pt.kind == PointKind::kEquilibrium || pt.x_max == pt.x_min) continue;
+    if (cancelled && cancelled()) {
+      out.cancelled = true;
+      break;
+    }
     Params q = base;
     SetParameter(q, param, pt.p);
     ComparisonRow row;
@@ -89,6 +95,7 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     out.rows.push_back(row);
   }
   out.columns = {r1, err_r1, a_ps, err_a_ps, xb_lo, xb_hi, xb_ok};
+  if (out.cancelled) return out;
 
   for (const SpecialPoint& s : r.special) {
     Params at = base;  // the base value of the continued parameter is not used

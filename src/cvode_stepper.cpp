@@ -23,7 +23,9 @@ class CvodeStepper final : public Stepper {
   void SetStopTime(double t) override { cv_.SetStopTime(t); }
   StepOutcome Advance(double tout, double* t) override {
     error_.clear();
+    cancelled_ = false;
     const int flag = cv_.Advance(tout, t);
+    if (cancelled_) return StepOutcome::kCancelled;  // the root function stopped CVode
     if (flag == CV_ROOT_RETURN) return StepOutcome::kRoot;
     if (flag == CV_ILL_INPUT) {
       Describe(flag);
@@ -79,9 +81,15 @@ class CvodeStepper final : public Stepper {
     }
     return 0;
   }
+  // Called after every step: the cancel hook is polled here, so one long
+  // CVode call (a stiff field) stops within a step (a non-zero return ends it).
   static int Roots(double /*t*/, N_Vector y, double* g, void* data) {
-    const auto* self = static_cast<const CvodeStepper*>(data);
+    auto* self = static_cast<CvodeStepper*>(data);
     const SlipProblem& p = self->p_;
+    if (p.cancel && (*p.cancel)()) {
+      self->cancelled_ = true;
+      return 1;
+    }
     const double* z = N_VGetArrayPointer(y);
     // x' - v: an exact 0 (a start on the surface, or a tangential touch where
     // x' = v to rounding for a while) counts as still on the mode's side.
@@ -102,6 +110,7 @@ class CvodeStepper final : public Stepper {
   SlipProblem p_;
   Cvode cv_;
   std::string error_;
+  bool cancelled_ = false;
 };
 
 }  // namespace

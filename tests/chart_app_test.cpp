@@ -120,3 +120,19 @@ TEST_F(ChartApp, SeedStudyWritesCurvesWithMetadata) {
 }
 
 }  // namespace
+
+namespace {
+// The two axes' base values (here the defaults v = 0.25, beta = 0.05) are never
+// used: the metadata name them as axes, like the range and model lines.
+TEST_F(ChartApp, MetadataStatesNoValueForTheAxes) {
+  const Result r = Run({"--study", kStudies + "/seed_chart.ini", "--out", Out(), "--no_plots"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* file : {"/curves.tsv", "/codim2.tsv"}) {
+    const stickslip::testing_util::Tsv t = stickslip::testing_util::ReadTsv(ReadFile(Out() + file));
+    EXPECT_EQ(t.meta.at("v"), "axis") << file;
+    EXPECT_EQ(t.meta.at("beta"), "axis") << file;
+    EXPECT_EQ(t.meta.at("mu_s"), "0.4") << file;
+    EXPECT_EQ(t.meta.at("range"), "v = [0.02, 0.6], beta = [0, 0.25]") << file;
+  }
+}
+}  // namespace

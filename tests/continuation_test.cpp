@@ -542,7 +542,7 @@ TEST(Continuation, GrazingLabelsDoNotDependOnTheDirection) {
 // Stick-slip rows at the default options, against the reference's orbit at
 // each row's p: period and x range within 1e-12 relative (to the period, to
 // max |x| on the orbit). Leine et al.'s scene at small v is the worst found
-// over the shipped studies (ss_accuracy, README).
+// over the shipped studies (ss_accuracy, docs/validation.md).
 TEST(Continuation, StickSlipRowsAtTheDefaultsMatchTheReferenceTo1e12) {
   Params seed, stribeck, leine;
   stribeck.law = LawKind::kStribeck;

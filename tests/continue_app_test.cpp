@@ -795,3 +795,19 @@ TEST_F(ContinueApp, ContinuedParameterBaseValueIsNotValidated) {
   EXPECT_NE(bad.err.find("v = -1"), std::string::npos) << bad.err;
 }
 }  // namespace
+
+namespace {
+// The model line of branch.tsv states no value for the continued parameter
+// (its base value, here the default v = 0.25, is never used): it gives the range,
+// and the other parameters as they are.
+TEST_F(ContinueApp, ModelLineGivesTheContinuedParameterItsRange) {
+  const std::string out = OutDir();
+  const Result r = Run({"--param", "v", "--from", "0.3", "--to", "0.35", "--out", out, "--no_plots",
+                        "--no_estimates"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
+  EXPECT_EQ(b.meta.at("model"),
+            "law=cubic beta=0.05 v=[0.3, 0.35] mu_s=0.4 mu_m=0.25 v_m=0.5 k5=0");
+  EXPECT_EQ(b.meta.at("v"), "continued");
+}
+}  // namespace

@@ -228,7 +228,7 @@ TEST(Estimates, RejectsNonCubicLawsAndBadOptions) {
 namespace stickslip {
 namespace {
 
-// The README's claim: with the tightest a1 the chain (3.21)-(3.30), as printed,
+// The claim of docs/validation.md: with the tightest a1 the chain (3.21)-(3.30), as printed,
 // completes at no belt speed below v_max.
 TEST(Estimates, PrintedChainCompletesNowhereBelowVMax) {
   Params p;

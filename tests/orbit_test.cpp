@@ -135,7 +135,7 @@ TEST(Orbit, LeinePublishedValues) {
   const OrbitResult r = finder.StickSlip();
   ASSERT_TRUE(r.ok()) << r.message;
   // The published x_max agrees to 7e-9 only; this code and the independent
-  // long-double integrator agree to 1e-12 at 1.13394467644 (see README).
+  // long-double integrator agree to 1e-12 at 1.13394467644 (docs/validation.md).
   EXPECT_NEAR(r.orbit.x_max, static_cast<double>(reference::kLeineXMax), 1e-8);
   EXPECT_NEAR(r.orbit.period, static_cast<double>(reference::kLeinePeriod), 1e-3);
   const reference::StickSlipOrbit ref = reference::StickSlip(p);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include "app_test_util.hpp"
 #include "cli/study.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip::cli {
 namespace {
@@ -96,6 +98,42 @@ TEST_F(Output, DrawRejectsAFigureThatIsNotAWholePng) {
   }
   EXPECT_EQ(ReadFile(dir_ + "/p.png"), "old\n");
   EXPECT_EQ(Listing(dir_), std::set<std::string>{"p.png"});
+}
+
+// A directory that appears at a target during the run: Commit fails, naming
+// the file and the reason (the app exits 1), never a silent success.
+TEST_F(Output, CommitFailsWhenADirectoryStandsAtATarget) {
+  OutputSet set(dir_, {"a.tsv", "b.tsv"}, "--out", "t");
+  set.Write("a.tsv", "1\n");
+  set.Write("b.tsv", "2\n");
+  ASSERT_EQ(::mkdir((dir_ + "/b.tsv").c_str(), 0777), 0);
+  try {
+    set.Commit();
+    ADD_FAILURE() << "Commit succeeded with a directory at b.tsv";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cannot move 'b.tsv'"), std::string::npos) << what;
+    EXPECT_NE(what.find("Is a directory"), std::string::npos) << what;
+  }
+}
+
+// The staging directory of a killed run (its process gone) is removed by the
+// next run; one whose process lives is left alone.
+TEST_F(Output, LeftoversOfAKilledRunAreRemoved) {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ASSERT_EQ(::waitpid(child, nullptr, 0), child);  // a pid whose process is gone
+  const std::string dead = dir_ + "/.t-" + std::to_string(child) + "-abcdef";
+  const std::string live = dir_ + "/.t-1-abcdef";  // init lives
+  for (const auto& d : {dead, live}) {
+    ASSERT_EQ(::mkdir(d.c_str(), 0700), 0);
+    WriteFile(d + "/a.png.part", "half\n");
+  }
+  OutputSet set(dir_, {"a.tsv"}, "--out", "t");
+  set.Write("a.tsv", "1\n");
+  set.Commit();
+  EXPECT_EQ(Listing(dir_), (std::set<std::string>{"a.tsv", ".t-1-abcdef"}));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// End-to-end regression tests of the apps' reliability promises (README,
-// Reliability; issue "Reliability, second round"): what is refused before the
+// End-to-end regression tests of the apps' reliability promises
+// (docs/reliability.md): what is refused before the
 // run, full disks, closed or failing stdout, signals and time limits in every
 // phase, study files that are not text, and a missing gnuplot. Each test
 // names the item it guards.
@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "app_test_util.hpp"
-#include "stickslip/report.hpp"
+#include "cli/gnuplot.hpp"
 
 namespace {
 
 const std::string kContinue = STICKSLIP_BIN_DIR "/ss_continue";
 const std::string kSimulate = STICKSLIP_BIN_DIR "/ss_simulate";
 
-using stickslip::PngError;
+using stickslip::cli::PngError;
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::Launch;

@@ -17,12 +17,17 @@
 #include <string>
 
 #include "app_test_util.hpp"
+#include "cli/gnuplot.hpp"
 #include "stickslip/branch_report.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
 namespace {
 
+using cli::GnuplotResult;
+using cli::GnuplotStatus;
+using cli::PngError;
+using cli::RunGnuplot;
 using testing_util::ReadFile;
 using testing_util::Listing;
 using testing_util::WriteFile;

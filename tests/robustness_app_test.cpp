@@ -20,13 +20,13 @@
 #include <vector>
 
 #include "app_test_util.hpp"
-#include "stickslip/report.hpp"
+#include "cli/gnuplot.hpp"
 
 namespace {
 
 const std::string kContinue = STICKSLIP_BIN_DIR "/ss_continue";
 
-using stickslip::PngError;
+using stickslip::cli::PngError;
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Launch;
 using stickslip::testing_util::Listing;

@@ -69,10 +69,17 @@ struct RegionGrid {
 };
 
 struct ChartOptions {
-  ChartOptions() { orbit.max_return_time = 50; }
+  ChartOptions() {
+    orbit.max_return_time = kMaxReturnTime;
+    orbit.flow.max_steps = kMaxSteps;
+  }
+  // The chart's own orbit defaults (ss_chart --help states them): a first
+  // return takes about one revolution, 2 pi / sqrt(1 - beta^2), a few hundred
+  // steps; a longer run is an orbit running away (where mu < 0 at large slip
+  // speeds, k5 > 0), given up after this time or this many steps.
+  static constexpr double kMaxReturnTime = 50;
+  static constexpr long kMaxSteps = 20000;
   Plane plane;
-  // max_return_time 50 (default): a first return takes about one revolution,
-  // 2 pi / sqrt(1 - beta^2); longer runs are orbits running away.
   OrbitOptions orbit;
   double max_step = 0.01;            // largest continuation step, fraction of the rectangle
   int samples = 16;                  // test-function samples per start line

@@ -5,6 +5,7 @@
 // the averaging grazing estimate and the seed's v_max (3.16).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,8 @@ struct SpecialComparison {
 
 /// The whole comparison: per-point rows, largest errors and branch.tsv columns.
 struct EstimateComparison {
-  bool applies = false;  // cubic law only
+  bool applies = false;  // cubic law without k5 (and k5 not the continued parameter)
+  bool cancelled = false;  // cut short: the rows so far, nan in the columns after them
   std::string reason;
   std::vector<ExtraColumn> columns;  // for branch.tsv, one value per point
   std::vector<ComparisonRow> rows;   // every periodic point
@@ -55,7 +57,9 @@ struct EstimateComparison {
 
 /// base: the model; param: the continued parameter. check_points: the grid on
 /// which each NLopt fit is verified (coarser than the default keeps it cheap).
+/// `cancelled` (if set) is polled before every row's fits.
 EstimateComparison CompareEstimates(const Params& base, const std::string& param,
-                                    const ContinuationResult& r, int check_points = 2001);
+                                    const ContinuationResult& r, int check_points = 2001,
+                                    const std::function<bool()>& cancelled = {});
 
 }  // namespace stickslip

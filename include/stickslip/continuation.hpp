@@ -120,7 +120,7 @@ struct ContinuationResult {
   bool partial() const { return status != ContinuationStatus::kOk; }
 };
 
-/// Looser than this rtol a result carries a warning: the README promises the
+/// Looser than this rtol a result carries a warning: docs/validation.md promises the
 /// branch's structure (which special points, in which order) from here down.
 constexpr double kLoosestTrustedRtol = 1e-4;
 

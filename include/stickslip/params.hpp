@@ -6,7 +6,7 @@
 
 namespace stickslip {
 
-/// Friction laws mu(s), s = |x' - v| (seed eq. 3.3 and the README's table of laws).
+/// Friction laws mu(s), s = |x' - v| (seed eq. 3.3 and the table of laws in docs/theory.md).
 enum class LawKind {
   kCubic,     // mu_s - k1 s + k3 s^3 - k5 s^5, seed eq. (3.3) (k5 = 0), Thomsen & Fidlin (2003)
   kCoulomb,   // mu_k for s > 0, static mu_s

@@ -2,19 +2,12 @@
 // classified by the exact flow (steady sliding, stick-slip, pure slip,
 // undecided), every periodic orbit with its stability, and the smallest
 // disturbance that tips steady sliding into oscillation.
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <chrono>
-#include <csignal>
-#include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "cli/about.hpp"
-#include "cli/output.hpp"
+#include "cli/app.hpp"
 #include "cli/study.hpp"
 #include "stickslip/basin_report.hpp"
 
@@ -31,13 +24,10 @@ constexpr const char* kNotes =
     "value` lines list the periodic orbits and the smallest disturbance), orbits.tsv (each\n"
     "periodic orbit sampled), basins.gp and basins.png.\n"
     "A start is undecided if it has not settled by --t_cap.\n"
+    "The files are written as one set (README, Reliability).\n"
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
-    "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM) or time\n"
-    "limit: the starts so far are written, marked partial; 2 bad input (nothing written).\n"
-    "Example: ss_basin --study studies/stribeck_basin.ini";
-
-volatile std::sig_atomic_t g_signal = 0;
-void OnSignal(int sig) { g_signal = sig; }
+    "An interrupted or failed run writes the starts so far, marked partial.\n";
+constexpr const char* kExample = "\nExample: ss_basin --study studies/stribeck_basin.ini";
 
 po::options_description AppOptions() {
   po::options_description d("Basins (study section [basin])");
@@ -48,11 +38,8 @@ po::options_description AppOptions() {
       "periodic orbits' box widened by a quarter)")("x_max", cli::Value()->value_name("X"), "")(
       "xdot_min", cli::Value()->value_name("Y"), "")("xdot_max", cli::Value()->value_name("Y"), "")(
       "t_cap", cli::Value()->value_name("T"),
-      "time after which a start is undecided (default 2000)")(
-      "out", cli::Value()->value_name("DIR"), "output directory (default plots/basin)")(
-      "max_time", cli::Value()->value_name("S"),
-      "wall-time limit in seconds; the starts so far are kept (default none)")(
-      "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot");
+      "time after which a start is undecided (default 2000)");
+  cli::AddRunOptions(d, "plots/basin", "write the TSV files and the script, but do not run gnuplot");
   return d;
 }
 
@@ -93,76 +80,9 @@ ss::BasinOptions OptionsFromArguments(const cli::Arguments& args) {
   return o;
 }
 
-// Renders basins.png under a temporary name, then renames it.
-bool Plot(const std::string& dir) {
-  const std::string wrapper = dir + "/.basins.part.gp";
-  ss::WriteFileAtomically(wrapper, "suffix = '.part'\nload 'basins.gp'\n");
-  std::string gp_error;
-  bool ok = ss::RunGnuplot(wrapper, dir, &gp_error);
-  std::remove(wrapper.c_str());
-  const std::string final_name = dir + "/basins.png", part = final_name + ".part";
-  if (ok && std::rename(part.c_str(), final_name.c_str()) != 0) ok = false;
-  std::remove(part.c_str());
-  if (!ok) cli::PrintError(kProg, "gnuplot failed: " + gp_error);
-  return ok;
-}
-
-int Main(int argc, char** argv) {
-  const po::options_description desc = cli::AppDescription(AppOptions());
-  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "basin");
-  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_basin [--study FILE] [options]", desc, kNotes))
-    return 0;
-  const ss::Params p = cli::ModelFromArguments(args);
-  ss::BasinOptions opts = OptionsFromArguments(args);
-  const double max_time = args.Number("max_time", 0);
-  if (max_time < 0)
-    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
-                          args.Source("max_time") + ": must be >= 0");
-  const std::string dir = cli::CheckedOutputDir(args.Text("out", "plots/basin"),
-                                                args.Given("out") ? args.Source("out") : "--out");
-  const ss::Model model(p);
-
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  opts.cancelled = [&] { return g_signal != 0 || (max_time > 0 && elapsed() > max_time); };
-  double next_report = 1.0;
-  opts.progress = [&](int done, int total) {
-    if (elapsed() < next_report) return;
-    next_report = elapsed() + 1.0;
-    std::cerr << kProg << ": " << done << " of " << total << " starts after "
-              << static_cast<int>(elapsed()) << " s\n";
-  };
-  const ss::BasinResult r = ss::ClassifyBasins(model, opts);
-  const double seconds = elapsed();
-
-  // The orbits' curves and the smallest disturbances (cheap: one period each).
-  const ss::FlowOptions& flow = opts.scan.orbit.flow;
-  std::vector<ss::OrbitCurveRows> curves;
-  std::vector<ss::Disturbance> dist;
-  if (r.orbits.has_stick_slip)
-    curves.push_back({"stick-slip", true, ss::OrbitCurve(model, r.orbits.stick_slip, flow, 800)});
-  for (const ss::Orbit& o : r.orbits.pure_slip) {
-    curves.push_back({"pure-slip", o.stable, ss::OrbitCurve(model, o, flow, 800)});
-    dist.push_back(ss::SmallestDisturbance(model, o, flow));
-  }
-  const std::string desc_model = cli::DescribeModel(p);
-  // Every file starts with the tool, the command, the model and the integrator.
-  const cli::Metadata meta = cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p, flow);
-  auto text = [&](ss::TsvTable t) {
-    t.PrependMeta(meta);
-    return t.str();
-  };
-  ss::WriteFileAtomically(dir + "/basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
-  ss::WriteFileAtomically(dir + "/orbits.tsv", text(ss::OrbitTable(curves)));
-  ss::WriteFileAtomically(
-      dir + "/basins.gp",
-      ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : "")));
-  const bool plots_ok = args.Flag("no_plots") || Plot(dir);
-
+// The orbits and basins on stdout.
+void PrintSummary(const ss::BasinResult& r, const std::vector<ss::Disturbance>& dist,
+                  const std::string& desc_model, double seconds) {
   std::cout << kProg << ": " << desc_model << "\n"
             << "steady sliding x = " << r.orbits.steady.x
             << (r.orbits.steady.stable() ? " (stable)" : " (unstable)") << "\n";
@@ -180,17 +100,63 @@ int Main(int argc, char** argv) {
   std::cout << r.starts.size() << " starts in " << static_cast<int>(seconds * 1e3) << " ms:";
   for (int f = 0; f < 4; ++f)
     std::cout << " " << r.count[f] << " " << ss::FateName(static_cast<ss::Fate>(f));
-  std::cout << "\nwrote " << dir << "/basins.tsv, orbits.tsv, basins.gp"
-            << (args.Flag("no_plots") || !plots_ok ? "" : " and basins.png") << "\n";
-  if (r.partial()) {
-    const std::string why = g_signal ? std::string("interrupted by signal ") +
-                                           std::to_string(static_cast<int>(g_signal))
-                                     : r.message;
-    cli::PrintError(kProg, "partial basins written (" + std::string(ss::BasinStatusName(r.status)) +
-                               "): " + why);
-    return 1;
+  std::cout << "\n";
+}
+
+int Main(int argc, char** argv) {
+  const po::options_description desc = cli::AppDescription(AppOptions());
+  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "basin");
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_basin [--study FILE] [options]", desc,
+                         std::string(kNotes) + cli::kExitCodeHelp + kExample))
+    return 0;
+  const ss::Params p = cli::ModelFromArguments(args);
+  ss::BasinOptions opts = OptionsFromArguments(args);
+  cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", "basins.png"});
+  cli::RunControl& run = app.run();
+  const ss::Model model(p);
+
+  run.Phase("classifying starts");
+  opts.cancelled = [&run] { return run.Cancelled(); };
+  opts.progress = [&run](int done, int total) {
+    run.Progress(std::to_string(done) + " of " + std::to_string(total) + " starts",
+                 static_cast<double>(done) / total, done, "starts");
+  };
+  const ss::BasinResult r = ss::ClassifyBasins(model, opts);
+  const double seconds = run.Elapsed();
+
+  // The orbits' curves and the smallest disturbances (cheap: one period each).
+  run.Phase("sampling the orbits");
+  const ss::FlowOptions& flow = opts.scan.orbit.flow;
+  std::vector<ss::OrbitCurveRows> curves;
+  std::vector<ss::Disturbance> dist;
+  if (r.orbits.has_stick_slip)
+    curves.push_back({"stick-slip", true, ss::OrbitCurve(model, r.orbits.stick_slip, flow, 800)});
+  for (const ss::Orbit& o : r.orbits.pure_slip) {
+    curves.push_back({"pure-slip", o.stable, ss::OrbitCurve(model, o, flow, 800)});
+    dist.push_back(ss::SmallestDisturbance(model, o, flow));
   }
-  return plots_ok ? 0 : 1;
+  const std::string desc_model = cli::DescribeModel(p);
+  // Every file starts with the tool, the command, the model and the integrator.
+  const cli::Metadata meta = cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p, flow);
+  auto text = [&](ss::TsvTable t) {
+    t.PrependMeta(meta);
+    return t.str();
+  };
+  run.Phase("writing");
+  app.out().Write("basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
+  app.out().Write("orbits.tsv", text(ss::OrbitTable(curves)));
+  app.out().Write("basins.gp", ss::BasinScript(r, model, curves,
+                                               desc_model + (r.partial() ? " (partial)" : "")));
+  if (!app.Finish("basins.gp", {"basins.png"}, {"basins.png"})) return cli::kExitFailed;
+
+  PrintSummary(r, dist, desc_model, seconds);
+  std::cout << "wrote " << app.out().dir() << "/basins.tsv, orbits.tsv, basins.gp"
+            << (app.gnuplot().ok() ? " and basins.png" : "") << "\n";
+  std::string partial;
+  if (r.partial())
+    partial = "partial basins written (" + std::string(ss::BasinStatusName(r.status)) +
+              "): " + (r.status == ss::BasinStatus::kCancelled ? run.Reason() : r.message);
+  return app.ExitCode(partial);
 }
 
 }  // namespace

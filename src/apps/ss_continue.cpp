@@ -4,15 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <exception>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/about.hpp"
-#include "cli/output.hpp"
+#include "cli/app.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
@@ -32,10 +30,10 @@ namespace {
 
 constexpr const char* kProg = "ss_continue";
 constexpr const char* kNotes =
-    "Outputs in --out, written as one set (README, Reliability): branch.tsv (one row per\n"
+    "Outputs in --out, written as one set (docs/reliability.md): branch.tsv (one row per\n"
     "point; kind stick-slip / pure-slip / equilibrium; multiplier = nontrivial Floquet\n"
     "multiplier, for the equilibrium the largest real part of its eigenvalues; then\n"
-    "dist_x dist_xdot dist_energy newton_stalled, README),\n"
+    "dist_x dist_xdot dist_energy newton_stalled; every column in docs/formats.md),\n"
     "special_points.tsv (GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its\n"
     "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
     "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
@@ -43,11 +41,10 @@ constexpr const char* kNotes =
     "Each TSV starts with '# key: value' lines (tool, command, model, range, tolerances,\n"
     "integrator, status), then one header line without '#'.\n"
     "Study files: model and solver keys at top level, this app's keys in [continue].\n"
-    "Exit status: 0 done; 1 numerical failure, interruption (SIGINT/SIGTERM), time limit\n"
-    "or I/O failure (the branch so far is written, marked partial; if a figure cannot be\n"
-    "drawn whole, no file is replaced); 2 bad input (nothing written); 3 gnuplot is\n"
-    "missing (data files and script written, no figures).\n"
-    "Example: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5";
+    "The estimates apply to the cubic law with k5 = 0; elsewhere they are skipped, with\n"
+    "a note on stderr.\n";
+constexpr const char* kExample =
+    "\nExample: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5";
 
 po::options_description AppOptions() {
   po::options_description d("Continuation (study section [continue])");
@@ -60,16 +57,13 @@ po::options_description AppOptions() {
       "start value; the first row is here (default: the parameter's range, v 0.05, beta 0.01, "
       "mu_s 1.2 mu_m, ...)")("to", cli::Value()->value_name("B"),
                              "end value, != from (default: v 0.5, beta 0.3, ...)")(
-      "out", cli::Value()->value_name("DIR"), "output directory (default plots)")(
       "max_step", cli::Value()->value_name("F"),
       "largest step as a fraction of |to - from| (default 0.01: >= 100 points)")(
       "floquet", po::bool_switch(),
       "compute stick-slip multipliers from the variational equations (else 0, exact)")(
-      "max_time", cli::Value()->value_name("S"),
-      "wall-time limit in seconds; the branch so far is kept (default none)")(
-      "no_plots", po::bool_switch(), "write the TSV files and the script, but do not run gnuplot")(
       "no_estimates", po::bool_switch(),
       "cubic law: skip the comparison with the seed's and the averaging estimates");
+  cli::AddRunOptions(d, "plots", "write the TSV files and the script, but do not run gnuplot");
   return d;
 }
 
@@ -184,19 +178,6 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base) 
   return opts;
 }
 
-// Ends the process at once, with the worker thread still inside the library:
-// no destructor may run under it. stdout is checked first, as RunApp does.
-[[noreturn]] void ExitLeavingWorker(int code) {
-  try {
-    cli::CheckStdout();
-  } catch (const std::exception& e) {
-    cli::PrintError(kProg, e.what());
-    code = 1;
-  }
-  std::cerr.flush();
-  std::_Exit(code);
-}
-
 void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions& opts,
                   const std::string& model, double seconds) {
   int counts[3] = {0, 0, 0};
@@ -247,70 +228,61 @@ struct Provenance {
   std::optional<cli::Scales> scales;
 };
 
-int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Params& base,
-            const ss::ContinuationOptions& opts, const Provenance& prov, cli::RunControl& run,
-            bool estimates, bool plots);
+int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params& base,
+            const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates);
 
 int Main(int argc, char** argv) {
   const po::options_description desc = cli::AppDescription(AppOptions());
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
-                         kNotes))
+                         std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
   ss::Params base;
   const ss::ContinuationOptions opts = Configure(args, &base);
   Provenance prov;
   prov.scales = cli::ScalesFromArguments(args);
   prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);
-  const double max_time = args.Number("max_time", 0);
-  if (max_time < 0)
-    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
-                          args.Source("max_time") + ": must be >= 0");
-  const bool estimates = !args.Flag("no_estimates"), plots = !args.Flag("no_plots");
   std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "bifurcation.gp"};
   const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
   names.insert(names.end(), all_figures.begin(), all_figures.end());
-  cli::OutputSet out(args.Text("out", "plots"), names,
-                     args.Given("out") ? args.Source("out") : "--out", kProg);
+  cli::AppRun app(kProg, args, "plots", names);
+  const ss::ContinuationResult r = cli::RunContinuation(base, opts, app.run());
+  return Outputs(app, r, base, opts, prov, !args.Flag("no_estimates"));
+}
 
-  cli::RunControl run(kProg, max_time);
-  bool abandoned = false;
-  const ss::ContinuationResult r = cli::RunContinuation(base, opts, run, &abandoned);
-  int code = 1;
+// The estimate comparison, if it applies (cubic law, k5 = 0); otherwise, or
+// if it cannot be made at these parameters, a note on stderr and no columns.
+ss::EstimateComparison Estimates(const ss::Params& base, const ss::ContinuationOptions& opts,
+                                 const ss::ContinuationResult& r, cli::RunControl& run) {
+  ss::EstimateComparison cmp;
+  run.Phase("comparing with the estimates");
   try {
-    code = Outputs(out, r, base, opts, prov, run, estimates, plots);
-  } catch (const std::exception& e) {
-    if (!abandoned) throw;
-    code = cli::ReportError(kProg, e);
+    cmp = ss::CompareEstimates(base, opts.param, r, 2001, [&run] { return run.Cancelled(); });
+  } catch (const ss::InvalidArgument& e) {  // outside the estimates' own assumptions
+    cmp = ss::EstimateComparison();
+    cmp.reason = e.what();
   }
-  if (abandoned) {
-    out.Discard();
-    ExitLeavingWorker(code);
-  }
-  return code;
+  if (!cmp.applies && base.law == ss::LawKind::kCubic)
+    std::cerr << kProg << ": note: estimates skipped (" << cmp.reason
+              << "); --no_estimates turns them off\n";
+  return cmp;
 }
 
 // Writes the set, draws the figures, prints the summary; returns the exit code.
-int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Params& base,
-            const ss::ContinuationOptions& opts, const Provenance& prov, cli::RunControl& run,
-            bool estimates, bool plots) {
-  const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
+int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params& base,
+            const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates) {
+  cli::RunControl& run = app.run();
   const double seconds = run.Elapsed();
-  const std::string model = cli::DescribeModel(base);
+  const std::string model = cli::DescribeModel(base, opts.param, opts.from, opts.to);
   ss::EstimateComparison cmp;
-  if (estimates && !run.Cancelled()) {
-    run.Phase("comparing with the estimates");
-    cmp = ss::CompareEstimates(base, opts.param, r);
-  }
+  if (estimates && !run.Cancelled()) cmp = Estimates(base, opts, r, run);
   // Estimate columns first (the figure script counts on their numbers), then
   // the smallest disturbance and the Newton-stall mark.
   std::vector<ss::ExtraColumn> extra = cmp.columns;
   run.Phase("smallest disturbances");
-  for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow)) {
-    // Cancelled: the columns are kept, without values.
-    if (run.Cancelled()) c.values.assign(r.points.size(), ss::kNan);
+  auto cancelled = [&run] { return run.Cancelled(); };
+  for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow, cancelled))
     extra.push_back(std::move(c));
-  }
   ss::ExtraColumn stalled{"newton_stalled", {}};
   for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
   extra.push_back(std::move(stalled));
@@ -325,47 +297,23 @@ int Outputs(cli::OutputSet& out, const ss::ContinuationResult& r, const ss::Para
   branch.PrependMeta(prov.meta);
   ss::TsvTable special = ss::SpecialPointTable(r, opts.param, special_extra);
   special.PrependMeta(prov.meta);
-  out.Write("branch.tsv", branch.str());
-  out.Write("special_points.tsv", special.str());
+  app.out().Write("branch.tsv", branch.str());
+  app.out().Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
-  out.Write("bifurcation.gp", ss::BifurcationScript(r, opts.param, title, cmp.applies));
-  const std::vector<std::string> figures = ss::BifurcationFigures(cmp.applies);
-  ss::GnuplotResult g{ss::GnuplotStatus::kCancelled, "figures not drawn (--no_plots)"};
-  if (plots && !run.Cancelled()) {
-    run.Phase("plotting");
-    g = out.Draw("bifurcation.gp", figures, [&] { return run.Cancelled(); });
-  }
-  if (g.status == ss::GnuplotStatus::kFailed) {
-    cli::PrintError(kProg, g.message + "; nothing replaced in '" + out.dir() + "'");
-    return 1;
-  }
-  // Figures this run did not draw are stale beside its data: removed.
-  std::vector<std::string> stale;
-  for (const auto& f : all_figures)
-    if (!g.ok() || std::find(figures.begin(), figures.end(), f) == figures.end())
-      stale.push_back(f);
-  out.Commit(stale);
+  app.out().Write("bifurcation.gp", ss::BifurcationScript(r, opts.param, title, cmp.applies));
+  if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies),
+                  ss::BifurcationFigures(true)))
+    return cli::kExitFailed;
 
   PrintSummary(r, opts, model, seconds);
-  std::cout << "wrote " << out.dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
-            << (g.ok() ? " and the PNGs" : "") << "\n";
-  if (cmp.applies && !cmp.rows.empty()) PrintComparison(cmp, opts.param);
-  if (r.partial()) {
-    cli::PrintError(kProg, "partial branch written (" +
-                               std::string(ss::ContinuationStatusName(r.status)) +
-                               "): " + r.message);
-    return 1;
-  }
-  if (run.Cancelled()) {
-    cli::PrintError(kProg, run.Reason() + " while " + run.phase() + ": the branch is whole" +
-                               (g.ok() ? "" : ", figures not drawn"));
-    return 1;
-  }
-  if (g.status == ss::GnuplotStatus::kMissing) {
-    cli::PrintError(kProg, g.message + "; data files written, no figures");
-    return 3;
-  }
-  return 0;
+  std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
+            << (app.gnuplot().ok() ? " and the PNGs" : "") << "\n";
+  if (cmp.applies && !cmp.rows.empty() && !cmp.cancelled) PrintComparison(cmp, opts.param);
+  std::string partial;
+  if (r.partial())
+    partial = "partial branch written (" + std::string(ss::ContinuationStatusName(r.status)) +
+              "): " + r.message;
+  return app.ExitCode(partial);
 }
 
 }  // namespace

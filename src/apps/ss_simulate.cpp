@@ -36,7 +36,7 @@ constexpr const char* kNotes =
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
     "With --plot, FILE.gp names the TSV and the PNG by their plain names: run it in\n"
-    "FILE's directory. The files are written as one set (README, Reliability).\n"
+    "FILE's directory. The files are written as one set (docs/reliability.md).\n"
     "Exit status: 0 done; 1 numerical or I/O failure, interruption or time limit (no\n"
     "data file written; if the figure cannot be drawn whole, no file is replaced);\n"
     "2 bad input (nothing written); 3 gnuplot is missing (data and script written).\n"
@@ -185,22 +185,22 @@ int WriteOutputs(cli::OutputSet& files, const OutNames& names, const Settings& s
                  const ss::Model& model, const ss::TsvTable& table, cli::RunControl& run) {
   run.Phase("writing");
   files.Write(names.tsv, table.str());
-  ss::GnuplotResult g;
+  cli::GnuplotResult g;
   if (s.plot) {
     files.Write(names.gp, PlotScript(names.tsv, names.png, model));
     run.Phase("plotting");
     g = files.Draw(names.gp, {names.png}, [&] { return run.Cancelled(); });
-    if (g.status == ss::GnuplotStatus::kFailed) {
+    if (g.status == cli::GnuplotStatus::kFailed) {
       cli::PrintError(kProg, g.message + "; nothing replaced");
       return 1;
     }
   }
   files.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{names.png});
-  if (g.status == ss::GnuplotStatus::kCancelled) {
+  if (g.status == cli::GnuplotStatus::kCancelled) {
     cli::PrintError(kProg, run.Reason() + " while plotting: " + s.out + " written, no figure");
     return 1;
   }
-  if (g.status == ss::GnuplotStatus::kMissing) {
+  if (g.status == cli::GnuplotStatus::kMissing) {
     cli::PrintError(kProg, g.message + "; " + s.out + " and the script written, no figure");
     return 3;
   }

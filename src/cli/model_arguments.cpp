@@ -125,8 +125,8 @@ Params UncheckedModelFromArguments(const Arguments& args) {
   return p;
 }
 
-FlowOptions FlowOptionsFromArguments(const Arguments& args) {
-  FlowOptions f;
+FlowOptions FlowOptionsFromArguments(const Arguments& args, const FlowOptions& defaults) {
+  FlowOptions f = defaults;
   f.rtol = args.Number("rtol", f.rtol);
   f.atol = args.Number("atol", f.atol);
   f.max_steps = args.Integer("max_steps", f.max_steps);
@@ -157,10 +157,14 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args) {
   return f;
 }
 
-std::string DescribeModel(const Params& p) {
+std::string DescribeModel(const Params& p) { return DescribeModel(p, "", 0, 0); }
+
+std::string DescribeModel(const Params& p, const std::string& continued, double from, double to) {
   std::string s = std::string("law=") + LawName(p.law);
   for (const auto& name : ParameterNames(p.law))
-    s += " " + name + "=" + FormatNumber(GetParameter(p, name));
+    s += " " + name + "=" +
+         (name == continued ? "[" + FormatNumber(from) + ", " + FormatNumber(to) + "]"
+                            : FormatNumber(GetParameter(p, name)));
   return s;
 }
 

@@ -3,6 +3,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,12 +15,13 @@
 
 #include "cli/study.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/report.hpp"
 
 namespace stickslip::cli {
 
 namespace {
 
-constexpr std::size_t kStagingLength = 32;   // "/.<prog>-XXXXXX/", prog kept short
+constexpr std::size_t kStagingLength = 40;   // "/.<prog>-<pid>-XXXXXX/", prog kept short
 constexpr std::size_t kTempNameLength = 32;  // ".<name>.tmp-<pid>-<counter>" beyond name
 
 bool HasControl(const std::string& s) {
@@ -110,11 +112,43 @@ void OutputSet::Discard() {
   staging_.clear();
 }
 
+// Removes the staging directories `.<prog>-<pid>-XXXXXX` in dir whose
+// process is gone (a run killed by SIGKILL or a power cut leaves one).
+void OutputSet::SweepLeftovers() const {
+  DIR* d = ::opendir(dir_.c_str());
+  if (!d) return;
+  const std::string prefix = "." + prog_ + "-";
+  std::vector<std::string> dead;
+  while (const dirent* e = ::readdir(d)) {
+    const std::string n = e->d_name;
+    if (n.compare(0, prefix.size(), prefix) != 0) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(n.c_str() + prefix.size(), &end, 10);
+    if (pid <= 0 || *end != '-' || std::strlen(end) != 7) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) dead.push_back(n);
+  }
+  ::closedir(d);
+  for (const auto& n : dead) {
+    const std::string path = dir_ + "/" + n;
+    struct stat st;
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) continue;
+    if (DIR* s = ::opendir(path.c_str())) {
+      while (const dirent* e = ::readdir(s)) {
+        const std::string f = e->d_name;
+        if (f != "." && f != "..") ::unlink((path + "/" + f).c_str());
+      }
+      ::closedir(s);
+    }
+    ::rmdir(path.c_str());
+  }
+}
+
 std::string OutputSet::Staging() {
   if (!staging_.empty()) return staging_;
   if (::mkdir(dir_.c_str(), 0777) != 0 && errno != EEXIST)
     throw Error("cannot create '" + dir_ + "': " + std::strerror(errno));
-  std::string templ = dir_ + "/." + prog_ + "-XXXXXX";
+  SweepLeftovers();
+  std::string templ = dir_ + "/." + prog_ + "-" + std::to_string(::getpid()) + "-XXXXXX";
   if (::mkdtemp(templ.data()) == nullptr)
     throw Error("cannot create a staging directory in '" + dir_ + "': " + std::strerror(errno));
   staging_ = templ;
@@ -175,23 +209,6 @@ void OutputSet::Commit(const std::vector<std::string>& stale) {
   ::close(lock);  // releases the lock
   if (!error.empty()) throw Error(error);
   Discard();  // the staging directory, now empty
-}
-
-std::string CheckedOutputDir(const std::string& dir, const std::string& source) {
-  auto bad = [&](const std::string& why) {
-    return UsageError("invalid value '" + dir + "' for " + source + ": " + why);
-  };
-  if (dir.empty()) throw bad("empty");
-  struct stat st;
-  if (::stat(dir.c_str(), &st) != 0) {
-    if (errno != ENOENT || ::mkdir(dir.c_str(), 0777) != 0)
-      throw bad(std::string("cannot create it: ") + std::strerror(errno));
-  } else if (!S_ISDIR(st.st_mode)) {
-    throw bad("not a directory");
-  }
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw bad(std::string("not writable: ") + std::strerror(errno));
-  return dir;
 }
 
 }  // namespace stickslip::cli

@@ -1,15 +1,18 @@
 // One run's output files, written as a set: checked before the run, staged
 // in a private directory, figures verified, then renamed into place together.
 //
-// Promises (README, Reliability):
+// Promises (docs/reliability.md):
 // - Up front (UsageError, exit 2, nothing created): the destination directory
 //   exists or its parent does, and is writable; no control character in any
 //   path; every name fits NAME_MAX and PATH_MAX with its temporary suffix; at each file's place
 //   there is nothing or a regular file. A symbolic link, directory, device, FIFO or socket there is
 //   refused: a symlink is never followed nor replaced.
-// - Every file goes first into a fresh hidden directory `.<prog>-XXXXXX`
+// - Every file goes first into a fresh hidden directory `.<prog>-<pid>-XXXXXX`
 //   inside the destination (mkdtemp: unique per run), created only when the
-//   first file is written. Commit() renames the staged files into place while
+//   first file is written. A run killed outright (SIGKILL) leaves its staging
+//   directory behind, never a file under an output's name; the next run of
+//   the same app on that directory removes the staging directories whose
+//   process is gone. Commit() renames the staged files into place while
 //   holding an exclusive flock on the destination directory, so two runs on
 //   the same directory each leave a whole set (the last to commit wins), never
 //   a mix. The destructor removes whatever is still staged.
@@ -22,8 +25,8 @@
 //   ... compute ...
 //   out.Write("a.tsv", table.str());
 //   out.Write("a.gp", script);  // names inside the script are plain file names
-//   const ss::GnuplotResult g = out.Draw("a.gp", {"a.png"}, cancelled);
-//   if (g.status == ss::GnuplotStatus::kFailed) return 1;  // old files kept
+//   const cli::GnuplotResult g = out.Draw("a.gp", {"a.png"}, cancelled);
+//   if (g.status == cli::GnuplotStatus::kFailed) return 1;  // old files kept
 //   out.Commit(g.ok() ? std::vector<std::string>{} : figures);  // stale ones removed
 #pragma once
 
@@ -31,14 +34,9 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/report.hpp"
+#include "cli/gnuplot.hpp"
 
 namespace stickslip::cli {
-
-// A destination directory for an app that stages its own files (ss_chart,
-// ss_basin): made if missing. UsageError naming `source` (the option) if it
-// is empty, not a directory, or not writable.
-std::string CheckedOutputDir(const std::string& dir, const std::string& source);
 
 class OutputSet {
  public:
@@ -72,6 +70,7 @@ class OutputSet {
 
  private:
   std::string Staging();  // creates dir and the staging directory on first use
+  void SweepLeftovers() const;
   void CheckName(const std::string& name, const std::string& source) const;
   std::string dir_;
   std::vector<std::string> names_;

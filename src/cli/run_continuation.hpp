@@ -1,6 +1,7 @@
 // Continue() on a worker thread, for an app: cancellation by signals and
-// --max_time (cli::RunControl), progress lines, and a grace period after which
-// the app goes on without a library call that does not return.
+// --max_time (cli::RunControl) and progress lines. The worker is joined
+// before the call returns (a cancelled library returns within a step) and
+// its failures come back as the result's status, never as an exception.
 #pragma once
 
 #include "cli/run_control.hpp"
@@ -8,11 +9,9 @@
 
 namespace stickslip::cli {
 
-// Runs the continuation with cancellation and progress; an InvalidArgument
-// escaping the library after validation is a numerical failure (Error, exit 1).
-// *abandoned: the worker is still running (the caller must then end the
-// process without running destructors under it).
-ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts, RunControl& run,
-                                   bool* abandoned);
+// Runs the continuation with cancellation and progress. A numerical failure,
+// an exception escaping the library included, is status kFailed with where
+// it happened in the message; the points so far are kept.
+ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts, RunControl& run);
 
 }  // namespace stickslip::cli

@@ -55,7 +55,9 @@ double RunControl::Elapsed() const {
 bool RunControl::Signalled() const { return g_signal != 0; }
 
 bool RunControl::Cancelled() const {
-  return g_signal != 0 || (max_time_ > 0 && Elapsed() > max_time_);
+  const bool c = g_signal != 0 || (max_time_ > 0 && Elapsed() > max_time_);
+  if (c && cancelled_phase_.empty()) cancelled_phase_ = phase_;
+  return c;
 }
 
 std::string RunControl::Reason() const {

@@ -32,6 +32,10 @@ class RunControl {
   // Names the phase for progress lines ("continuing", "estimates", "plotting").
   void Phase(const std::string& name);
   const std::string& phase() const { return phase_; }
+  // The phase in which Cancelled() was first true (else the current one).
+  const std::string& cancelled_phase() const {
+    return cancelled_phase_.empty() ? phase_ : cancelled_phase_;
+  }
   // A progress line "<prog>: <what>" (plus the rate in `unit`s per second
   // and the ETA on a terminal); fraction in [0, 1] of the phase done, or
   // negative if unknown; count: units done so far.
@@ -51,6 +55,7 @@ class RunControl {
   double max_time_;
   std::chrono::steady_clock::time_point start_;
   std::string phase_ = "working";
+  mutable std::string cancelled_phase_;  // set by the main thread's first true Cancelled()
   double last_line_ = 0;
   bool terminal_;
 };

@@ -62,9 +62,10 @@ std::string Printable(const std::string& s) {
 
 po::typed_value<std::string>* Value() { return po::value<std::string>(); }
 
-po::options_description AppDescription(const po::options_description& app) {
+po::options_description AppDescription(const po::options_description& app,
+                                       const FlowOptions& solver_defaults) {
   po::options_description desc;
-  desc.add(GeneralOptions()).add(ModelOptions()).add(SolverOptions()).add(app);
+  desc.add(GeneralOptions()).add(ModelOptions()).add(SolverOptions(solver_defaults)).add(app);
   return desc;
 }
 
@@ -116,8 +117,7 @@ po::options_description ModelOptions() {
   return d;
 }
 
-po::options_description SolverOptions() {
-  const FlowOptions f;
+po::options_description SolverOptions(const FlowOptions& f) {
   po::options_description d("Solver");
   d.add_options()("integrator", Value()->value_name("NAME"),
                   "slip phases by taylor (default: Taylor series) or cvode (CVODE, --method)")(

@@ -56,9 +56,12 @@ class UsageError : public InvalidArgument {
 // Values are taken as text (see Value()) and parsed strictly on use.
 po::options_description GeneralOptions();  // --help, --study
 po::options_description ModelOptions();    // --law, model and physical parameters
-po::options_description SolverOptions();   // --rtol --atol --method --max_steps
+// --rtol --atol --method --max_steps; the help states `defaults` (an app
+// whose computation has other solver defaults passes them, e.g. ChartOptions).
+po::options_description SolverOptions(const FlowOptions& defaults = FlowOptions());
 // General, model and solver options followed by an app's own.
-po::options_description AppDescription(const po::options_description& app);
+po::options_description AppDescription(const po::options_description& app,
+                                       const FlowOptions& solver_defaults = FlowOptions());
 
 // The value semantic for an app's own option: text, parsed on use by
 // Arguments::Number / Integer / Text. For flags use po::bool_switch().
@@ -129,10 +132,15 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
 // defaults that depend on it, such as a parameter's range (DefaultRange).
 // Throws UsageError on unreadable or inconsistent options.
 Params UncheckedModelFromArguments(const Arguments& args);
-// The solver options from SolverOptions(), validated (throws UsageError).
-FlowOptions FlowOptionsFromArguments(const Arguments& args);
+// The solver options from SolverOptions(), validated (throws UsageError);
+// what is not given keeps its value in `defaults`.
+FlowOptions FlowOptionsFromArguments(const Arguments& args,
+                                     const FlowOptions& defaults = FlowOptions());
 // "law=cubic beta=0.05 v=0.25 ...": the law's parameters, for file headers.
 std::string DescribeModel(const Params& p);
+// The same with the continued parameter as its range, "... v=[0.05, 0.5] ...":
+// its base value is never used, so the line states none.
+std::string DescribeModel(const Params& p, const std::string& continued, double from, double to);
 
 // Help text: a usage line, the options, then free-form notes.
 void PrintHelp(std::ostream& os, const std::string& usage, const po::options_description& desc,

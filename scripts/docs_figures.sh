@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The figures the documentation shows, each committed with the data and the
+# gnuplot script that draw it: docs/figures/<study>/ holds one app run's whole
+# output set (TSVs, .gp, PNGs). Redraw a figure there with `gnuplot <script>.gp`.
+# plots/ is the main job's output directory and is not committed.
+# Usage: scripts/docs_figures.sh [BUILD_DIR]   (default: build; about 10 s)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build}"
+for app in ss_continue ss_chart ss_basin; do
+  [[ -x "$build/$app" ]] || { echo "docs_figures.sh: $build/$app not found; build it first" >&2; exit 1; }
+done
+command -v gnuplot >/dev/null || { echo "docs_figures.sh: gnuplot not found on PATH" >&2; exit 1; }
+
+fig=docs/figures
+mkdir -p "$fig"
+run() {
+  echo "+ $*"
+  "$@" >/dev/null
+}
+run "$build/ss_continue" --study studies/seed.ini --out "$fig/seed"
+run "$build/ss_continue" --study studies/stribeck.ini --out "$fig/stribeck"
+run "$build/ss_basin" --study studies/stribeck_basin.ini --out "$fig/stribeck_basin"
+for chart in seed_chart stribeck_chart quintic_chart; do
+  run "$build/ss_chart" --study "studies/$chart.ini" --out "$fig/$chart"
+done
+du -sh "$fig"

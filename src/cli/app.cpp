@@ -1,0 +1,81 @@
+#include "cli/app.hpp"
+
+#include <algorithm>
+
+namespace stickslip::cli {
+
+const char* const kExitCodeHelp =
+    "Exit status (the same in every app): 0 done; 1 numerical failure, interruption\n"
+    "(SIGINT/SIGTERM), time limit or I/O failure (a result cut short is written marked\n"
+    "partial; if a figure cannot be drawn whole, no file is replaced); 2 bad input\n"
+    "(nothing written); 3 gnuplot is missing (data files and script written, no figures).";
+
+void AddRunOptions(po::options_description& d, const std::string& default_out,
+                   const std::string& no_plots_help) {
+  d.add_options()("out", Value()->value_name("DIR"),
+                  ("output directory (default " + default_out + ")").c_str())(
+      "no_plots", po::bool_switch(), no_plots_help.c_str())(
+      "max_time", Value()->value_name("S"),
+      "wall-time limit in seconds, every phase (gnuplot too); the result so far is kept, "
+      "marked partial (default none)");
+}
+
+namespace {
+
+double MaxTime(const Arguments& args) {
+  const double t = args.Number("max_time", 0);
+  if (t < 0)
+    throw UsageError("invalid value '" + args.Text("max_time") + "' for " +
+                     args.Source("max_time") + ": must be >= 0");
+  return t;
+}
+
+}  // namespace
+
+AppRun::AppRun(const std::string& prog, const Arguments& args, const std::string& default_out,
+               std::vector<std::string> names)
+    : prog_(prog),
+      plots_(!args.Flag("no_plots")),
+      out_(args.Text("out", default_out), std::move(names),
+           args.Given("out") ? args.Source("out") : "--out", prog),
+      run_(prog, MaxTime(args)) {}
+
+bool AppRun::Finish(const std::string& script, const std::vector<std::string>& figures,
+                    const std::vector<std::string>& all_figures,
+                    const std::vector<std::string>& stale) {
+  if (plots_ && !run_.Cancelled()) {
+    run_.Phase("plotting");
+    gnuplot_ = out_.Draw(script, figures, [this] { return run_.Cancelled(); });
+  }
+  if (gnuplot_.status == GnuplotStatus::kFailed) {
+    PrintError(prog_, gnuplot_.message + "; nothing replaced in '" + out_.dir() + "'");
+    return false;
+  }
+  // Figures this run did not draw are stale beside its data: removed.
+  std::vector<std::string> remove = stale;
+  for (const auto& f : all_figures)
+    if (!gnuplot_.ok() || std::find(figures.begin(), figures.end(), f) == figures.end())
+      remove.push_back(f);
+  out_.Commit(remove);
+  return true;
+}
+
+int AppRun::ExitCode(const std::string& partial) const {
+  if (!partial.empty()) {
+    PrintError(prog_, partial);
+    return kExitFailed;
+  }
+  if (run_.Cancelled()) {
+    PrintError(prog_, run_.Reason() + " while " + run_.cancelled_phase() +
+                          ": the files are written" +
+                          (gnuplot_.ok() ? "" : ", figures not drawn"));
+    return kExitFailed;
+  }
+  if (plots_ && gnuplot_.status == GnuplotStatus::kMissing) {
+    PrintError(prog_, gnuplot_.message + "; data files written, no figures");
+    return kExitNoGnuplot;
+  }
+  return kExitDone;
+}
+
+}  // namespace stickslip::cli
