@@ -783,12 +783,13 @@ TEST_F(ContinueApp, StribeckWideRangeFinishes) {
 }  // namespace
 
 namespace {
-// The base value of the continued parameter is never used: only the range is
-// validated (v <= 0 is bad input only where v is not the continued parameter).
-TEST_F(ContinueApp, ContinuedParameterBaseValueIsNotValidated) {
-  const Result ok = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
-                         OutDir(), "--no_plots"});
-  EXPECT_EQ(ok.code, 0) << ok.err;
+// A given base value of the continued parameter is validated too (issue 23,
+// old #20), as is any other parameter's.
+TEST_F(ContinueApp, ContinuedParameterBaseValueIsValidated) {
+  const Result given = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
+                            OutDir(), "--no_plots"});
+  EXPECT_EQ(given.code, 2) << given.err;
+  EXPECT_NE(given.err.find("v = -1"), std::string::npos) << given.err;
   const Result bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2", "--out",
                           OutDir(), "--no_plots"});
   EXPECT_EQ(bad.code, 2);
