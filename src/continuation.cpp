@@ -106,6 +106,9 @@ BranchStart StickSlipStart(double p, double dir, const Orbit& o, bool skip_first
 void TraceFromStart(BranchContext& ctx) {
   const double from = ctx.options().from;
   ctx.Enter(BranchContext::Phase::kDiscovery);
+  // Where the energy bound excludes every orbit there is nothing to find
+  // (and the slip integration would be stiff: --from 100).
+  if (Model(ctx.At(from)).NoPeriodicOrbit()) return;
   Orbit o;
   OrbitResult r;
   if (ctx.StickSlipAt(from, &o, &r)) Trace(ctx, StickSlipStart(from, ctx.dir(), o, false));
@@ -156,11 +159,14 @@ ContinuationResult Run(BranchContext& ctx) {
   }
   // Stick-slip orbits exist wherever the slip phase from (x0, v) returns to
   // Omega. One first-return integration per grid point finds any that the
-  // branches so far did not reach; each is followed both ways.
+  // branches so far did not reach; each is followed both ways. None is looked
+  // for where the energy bound excludes every orbit (Model::NoPeriodicOrbit):
+  // there the slip field is stiff (cubic law: mu' ~ 3 k3 v^2) and the search
+  // would run to max_return_time.
   for (const BranchPoint& g : eq_rows) {
     if (ctx.Stop()) break;
     ctx.Enter(BranchContext::Phase::kDiscovery);
-    if (ctx.CoveredByStickSlip(g.p)) continue;
+    if (ctx.CoveredByStickSlip(g.p) || Model(ctx.At(g.p)).NoPeriodicOrbit()) continue;
     Orbit o;
     OrbitResult r;
     if (!ctx.StickSlipAt(g.p, &o, &r)) continue;

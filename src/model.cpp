@@ -70,10 +70,43 @@ Equilibrium Model::SteadySliding() const {
   Equilibrium e;
   e.x = friction_.Mu(p_.v);
   e.damping = two_beta_ + friction_.DMu(p_.v);
-  const std::complex<double> disc = std::sqrt(std::complex<double>(e.damping * e.damping - 4.0));
-  e.lambda1 = 0.5 * (-e.damping + disc);
-  e.lambda2 = 0.5 * (-e.damping - disc);
+  const double b = e.damping, d = b * b - 4.0;
+  if (d < 0) {  // complex pair: no cancellation
+    const double im = 0.5 * std::sqrt(-d);
+    e.lambda1 = {-0.5 * b, im};
+    e.lambda2 = {-0.5 * b, -im};
+    return e;
+  }
+  // Real roots of lambda^2 + b lambda + 1 = 0 in the stable form (Press et al.,
+  // Numerical Recipes, eq. 5.6.4): q = -(b + sgn(b) sqrt(b^2 - 4)) / 2, roots q
+  // and 1 / q. -b/2 + sqrt(...)/2 cancels to 0 for large b (v_m = 1e-6).
+  // lambda1 is the larger.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(d), b));
+  e.lambda1 = b > 0 ? 1.0 / q : q;
+  e.lambda2 = b > 0 ? q : 1.0 / q;
   return e;
+}
+
+// The energy bound. With y = x - mu(v), w = x' and psi(s) = mu(s) + 2 beta s,
+// seed eq. (3.5) gives for E = (y^2 + w^2) / 2 in each mode:
+//   slip below, s = v - w > 0:  E' = -w (psi(v) - psi(s)),
+//   slip above, u = w - v > 0:  E' = -w (mu(v) + 2 beta w + mu(u)),
+//   stick, w = v:               E' = v y, and y <= mu_s - psi(v) there.
+// If mu is convex and positive on s > 0, psi(v) > mu_s >= mu(0+) and
+// psi'(v) = 2 beta + mu'(v) > 0, convexity gives psi(s) < psi(v) for s < v and
+// psi(s) > psi(v) for s > v, so E' < 0 except at isolated instants (w = 0, off
+// the equilibrium). E is continuous across switches, so it strictly decreases
+// along every trajectory: no closed orbit, and by LaSalle's invariance
+// principle (Khalil, Nonlinear Systems, 3rd ed., thm. 4.4) every trajectory
+// tends to steady sliding. mu is convex and positive for every law but the
+// cubic one with k5 > 0 (mu'' = 6 k3 s - 20 k5 s^3 turns negative). For the
+// seed set the bound holds from v = sqrt((k1 - 2 beta) / k3) = 0.764 on.
+bool Model::NoPeriodicOrbit() const {
+  if (p_.law == LawKind::kCubic && p_.k5 != 0) return false;
+  const double psi_v = friction_.Mu(p_.v) + two_beta_ * p_.v;
+  const double damping = two_beta_ + friction_.DMu(p_.v);
+  // Margins well above rounding: the bound is only used to skip searches.
+  return psi_v - p_.mu_s > 1e-9 * psi_v && damping > 1e-9;
 }
 
 }  // namespace stickslip

@@ -176,6 +176,8 @@ PeriodicOrbits FindPeriodicOrbits(const Model& model, const OrbitScanOptions& op
   if (!err.empty()) throw InvalidArgument(err);
   PeriodicOrbits out;
   out.steady = model.SteadySliding();
+  // The energy bound excludes every orbit: steady sliding attracts all.
+  if (model.NoPeriodicOrbit()) return out;
   Scan(model, options, out).Run();
   return out;
 }

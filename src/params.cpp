@@ -135,7 +135,7 @@ std::string ValidationError(const Params& p) {
       if (p.mu_m >= p.mu_s)
         return "mu_m = " + Num(p.mu_m, 12) + " must be < mu_s = " + Num(p.mu_s, 12);
       if (p.v_m <= 0) return "v_m = " + Num(p.v_m, 12) + " must be > 0";
-      if (const std::string e = QuinticError(p); !e.empty()) return e;
+      if (p.k5 < 0) return "k5 = " + Num(p.k5, 12) + " must be >= 0";
       break;
     case LawKind::kCoulomb:
     case LawKind::kStribeck:
@@ -160,6 +160,8 @@ std::string ValidationError(const Params& p) {
       return name + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
              "]: scales beyond it make the computation meaningless";
   }
+  // After the scales: a subnormal v_m overflows k3, and mu(v) would be nan.
+  if (p.law == LawKind::kCubic) return QuinticError(p);
   return "";
 }
 

@@ -444,11 +444,30 @@ TEST_F(ContinueApp, InvalidModelsExit2) {
       {{"--law", "stribeck", "--v_s", "0"}, {"v_s = 0", "--v_s"}},
       {{"--law", "leine", "--delta", "-1"}, {"delta = -1", "--delta"}},
       {{"--mu_s", "0"}, {"mu_s = 0", "--mu_s"}},
+      // Issue 23, N10: a subnormal v_m overflowed k3 and was blamed on k5.
+      {{"--v_m", "1e-310"}, {"v_m = 1e-310", "--v_m"}},
+      // Issue 23, old #20: the continued parameter's given value is validated too.
+      {{"--param", "v", "--v", "-1"}, {"v = -1", "--v", "continued"}},
+      {{"--param", "v_m", "--from", "0.4", "--to", "0.6", "--v_m", "0"},
+       {"v_m = 0", "--v_m", "continued"}},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.args[0] + " " + c.args[1]);
     ExpectRejected(c.args, c.parts);
   }
+}
+
+// Issue 23, N14: control characters in a value or a path are escaped in the
+// message (\x1b, \x07, \n), never echoed raw.
+TEST_F(ContinueApp, ControlCharactersInInputAreEscaped) {
+  ExpectRejected({"--law", "cu\x1b[2Jbic"}, {"'cu\\x1b[2Jbic'", "--law"});
+  ExpectRejected({"--beta", "0.1\x07"}, {"'0.1\\x07'", "--beta"});
+  ExpectRejected({"--study", Path("no\x1b\nfile.ini")}, {"no\\x1b\\nfile.ini"});
+  const Result r = Run({"--integrator", "tay\tlor\x7f", "--no_plots", "--out", OutDir()}, 60);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(Contains(r.err, "'tay\\tlor\\x7f'"));
+  for (const char c : r.err.substr(0, r.err.size() - 1))
+    EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << int(c) << " in " << r.err;
 }
 
 TEST_F(ContinueApp, PhysicalInputsMixedWithScaledExit2) {
@@ -764,12 +783,13 @@ TEST_F(ContinueApp, StribeckWideRangeFinishes) {
 }  // namespace
 
 namespace {
-// The base value of the continued parameter is never used: only the range is
-// validated (v <= 0 is bad input only where v is not the continued parameter).
-TEST_F(ContinueApp, ContinuedParameterBaseValueIsNotValidated) {
-  const Result ok = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
-                         OutDir(), "--no_plots"});
-  EXPECT_EQ(ok.code, 0) << ok.err;
+// A given base value of the continued parameter is validated too (issue 23,
+// old #20), as is any other parameter's.
+TEST_F(ContinueApp, ContinuedParameterBaseValueIsValidated) {
+  const Result given = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
+                            OutDir(), "--no_plots"});
+  EXPECT_EQ(given.code, 2) << given.err;
+  EXPECT_NE(given.err.find("v = -1"), std::string::npos) << given.err;
   const Result bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2", "--out",
                           OutDir(), "--no_plots"});
   EXPECT_EQ(bad.code, 2);

@@ -108,6 +108,28 @@ TEST(Model, SteadySlidingEigenvaluesSolveCharacteristicEquation) {
   EXPECT_NE(e.lambda1.imag(), 0);
 }
 
+// Issue 23, N13: at v_m = 1e-6 the damping b = 2 beta + mu'(v) is ~1.4e16 and
+// the slow eigenvalue (-b + sqrt(b^2 - 4)) / 2 cancelled to exactly 0. The
+// reference: Newton on lambda^2 + b lambda + 1 in long double from -1/b.
+TEST(Model, SlowEigenvalueOfAStiffEquilibriumIsNotZero) {
+  for (double v_m : {1e-6, 1e-3, 0.05}) {
+    Params p = Seed();
+    p.v_m = v_m;
+    p.mu_m = 0.25;
+    const Equilibrium e = Model(p).SteadySliding();
+    const double b = e.damping;
+    ASSERT_GT(b, 2) << v_m;  // real roots
+    const double slow = e.lambda1.real(), fast = e.lambda2.real();
+    long double ref = -1.0L / b;
+    for (int i = 0; i < 5; ++i) ref -= (ref * ref + b * ref + 1) / (2 * ref + b);
+    EXPECT_NEAR(slow, static_cast<double>(ref), 1e-14 * std::abs(static_cast<double>(ref)))
+        << "v_m = " << v_m;
+    EXPECT_NEAR(slow * fast, 1.0, 1e-14) << "v_m = " << v_m;
+    EXPECT_EQ(e.max_real(), slow);
+    EXPECT_EQ(e.lambda1.imag(), 0);
+  }
+}
+
 TEST(Model, HopfPointWhereDampingVanishes) {
   // Seed (3.16): v_max = sqrt((k1 - 2 beta) / (3 k3)) = 0.44096.
   const Params seed = Seed();

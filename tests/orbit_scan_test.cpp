@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
@@ -107,6 +108,63 @@ TEST(OrbitScan, StickSlipOrbitMatchesTheReference) {
   const PeriodicOrbits r =
       FindPeriodicOrbits(Model(At({LawKind::kCubic, 0.05, 0.42, 0.4, 1})), Tight());
   EXPECT_FALSE(r.has_stick_slip);
+}
+
+// Pure-slip orbits of the reference return map next to the sticking amplitude:
+// bisection for the reference's own first sticking amplitude a_s, then sign
+// changes of P(x) - x on a grid of 60 amplitudes whose last lies 1e-9 a_s below
+// it, each refined by reference Newton. Near a grazing or fold point the orbit
+// lies in the last cell, the one between the scan's grid and a_s.
+std::vector<reference::PureSlipOrbit> ReferenceOrbitsBelowStick(const Params& p) {
+  const reference::Model m(p);
+  const reference::Real xbar = m.law.Mu(m.v);
+  auto sticks = [&](reference::Real a) {
+    const reference::SectionReturn r = reference::ReturnToSection(m, xbar + a, 1e-14L, 200);
+    return !r.ok || r.e.xdot_max >= m.v;
+  };
+  reference::Real lo = 0, hi = 2 * (p.mu_s + p.v);  // the scan's a_max
+  while (hi - lo > 1e-12L * hi) (sticks((lo + hi) / 2) ? hi : lo) = (lo + hi) / 2;
+  std::vector<reference::PureSlipOrbit> found;
+  reference::Real a0 = 0, g0 = 0;
+  for (int i = 1; i <= 60; ++i) {
+    const reference::Real a = lo * (1 - 1e-9L) * i / 60;
+    const reference::SectionReturn r = reference::ReturnToSection(m, xbar + a, 1e-14L, 200);
+    const reference::Real g = r.x - xbar - a;
+    if (i > 1 && (g > 0) != (g0 > 0)) {
+      const reference::PureSlipOrbit o = reference::PureSlip(p, xbar + (a0 + a) / 2);
+      if (o.found) found.push_back(o);
+    }
+    a0 = a, g0 = g;
+  }
+  return found;
+}
+
+TEST(OrbitScan, KeepsTheOrbitInTheLastBracketBeforeSticking) {
+  // Just past the seed's grazing point (0.3958) the stable pure-slip orbit
+  // nearly touches the belt speed; at stribeck v = 0.651, near the fold, the
+  // unstable one does. Both lie in the bracket that ends at the first sticking
+  // amplitude (issue 23: a scan that skipped that bracket lost them).
+  const Case cases[] = {{LawKind::kCubic, 0.05, 0.396, 0.4, 1},
+                        {LawKind::kCubic, 0.05, 0.397, 0.4, 1},
+                        {LawKind::kStribeck, 0.05, 0.651, 0.4, 1}};
+  for (const Case& c : cases) {
+    const Params p = At(c);
+    SCOPED_TRACE(std::string(LawName(c.law)) + " v = " + std::to_string(c.v));
+    const std::vector<reference::PureSlipOrbit> ref = ReferenceOrbitsBelowStick(p);
+    ASSERT_EQ(static_cast<int>(ref.size()), c.pure_slip);
+    for (const OrbitScanOptions& o : {OrbitScanOptions(), Tight()}) {
+      const PeriodicOrbits r = FindPeriodicOrbits(Model(p), o);
+      ASSERT_TRUE(r.ok()) << r.message;
+      EXPECT_EQ(r.pure_slip.size(), ref.size()) << "rtol " << o.orbit.flow.rtol;
+      if (r.pure_slip.size() != ref.size()) continue;
+      for (size_t i = 0; i < ref.size(); ++i) {
+        const double tol = 1e3 * o.orbit.flow.rtol;
+        EXPECT_NEAR(r.pure_slip[i].start[0], static_cast<double>(ref[i].x_section), tol);
+        EXPECT_NEAR(r.pure_slip[i].period, static_cast<double>(ref[i].period), tol);
+        EXPECT_EQ(r.pure_slip[i].stable, ref[i].multiplier < 1);
+      }
+    }
+  }
 }
 
 TEST(OrbitScan, InvalidOptionsThrowAndCancelStops) {

@@ -80,6 +80,10 @@ class Model {
   Mat2 SaltationCrossing(Mode before, Mode after, const Vec2& z) const;
 
   Equilibrium SteadySliding() const;
+  /// True where the energy E = ((x - mu(v))^2 + x'^2) / 2 provably decreases
+  /// along every trajectory (proof in model.cpp): then no periodic orbit
+  /// exists, of any kind, and steady sliding attracts every state.
+  bool NoPeriodicOrbit() const;
 
  private:
   Params p_;

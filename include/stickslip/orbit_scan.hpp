@@ -5,6 +5,8 @@
 // the amplitude whose trajectory first reaches the stick band. Inside a
 // bistable band (subcritical Hopf, design notes section 1) the unstable
 // pure-slip orbit lies between steady sliding and the stick-slip orbit.
+// Where the energy bound excludes every orbit (Model::NoPeriodicOrbit) the scan
+// integrates nothing and lists steady sliding alone.
 #pragma once
 
 #include <functional>

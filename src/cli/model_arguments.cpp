@@ -63,6 +63,16 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
   const std::string err = ValidationError(checked);
   if (!err.empty()) throw UsageError("invalid model: " + WithOrigin(args, err));
   CheckOtherLaws(args, checked);
+  // A value given for the continued parameter is not where the branch runs,
+  // but it is a model the user stated (and sets its default range): it must
+  // be valid too (issue 23, old #20: --param v --v -1 was accepted).
+  if (!continued.empty() && args.Given(continued)) {
+    const std::string given = ValidationError(p);
+    if (!given.empty())
+      throw UsageError("invalid model: " + WithOrigin(args, given) + " (" + args.Source(continued) +
+                       " is the continued parameter's base value; " +
+                       "the branch runs over --from and --to)");
+  }
   return p;
 }
 

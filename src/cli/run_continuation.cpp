@@ -24,7 +24,9 @@ struct Shared {
   bool cancel = false;              // set by the main thread on a signal or --max_time
   std::vector<BranchPoint> points;  // as reported, for a run that failed by an exception
   double last = 0;
-  bool periodic = false;  // steady sliding comes first; then the periodic branches
+  bool periodic = false;     // a periodic orbit has been reported
+  double last_periodic = 0;  // where the last one was
+  bool searching = false;    // the last point reported is steady sliding: between branches
   ContinuationResult result;
 };
 
@@ -65,7 +67,8 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
   };
   opts.progress = [sh, &run, opts](const BranchPoint& pt) {
     std::lock_guard<std::mutex> lock(sh->m);
-    sh->periodic = sh->periodic || pt.kind != PointKind::kEquilibrium;
+    sh->searching = pt.kind == PointKind::kEquilibrium;
+    if (!sh->searching) sh->periodic = true, sh->last_periodic = pt.p;
     sh->last = pt.p;
     sh->points.push_back(pt);
     if (run.ProgressDue())
@@ -86,9 +89,13 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
     while (!sh->done) {
       sh->cv.wait_for(lock, std::chrono::milliseconds(50));
       if (sh->done) break;
-      run.Heartbeat(sh->periodic
-                        ? "last periodic orbit at " + param + " = " + FormatNumber(sh->last)
-                        : std::string("searching for a periodic orbit"));
+      // Steady sliding is reported whole between branches: after it the
+      // library is searching, not at its last row.
+      const std::string at = param + " = " + FormatNumber(sh->last_periodic);
+      run.Heartbeat(!sh->periodic ? std::string("searching for a periodic orbit")
+                    : sh->searching
+                        ? "searching for more periodic orbits (last found at " + at + ")"
+                        : "last periodic orbit at " + at);
       if (run.Cancelled()) sh->cancel = true;
     }
   }

@@ -35,15 +35,30 @@ bool IsKey(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), IsKeyChar);
 }
 
-std::string OneLine(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  std::replace(s.begin(), s.end(), '\r', ' ');
-  return s;
-}
-
 std::string Default(double x) { return " (default " + FormatNumber(x) + ")"; }
 
 }  // namespace
+
+std::string Printable(const std::string& s) {
+  const std::string::size_type end = s.find_last_not_of("\n\r");
+  std::string out;
+  for (std::string::size_type i = 0; end != std::string::npos && i <= end; ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c == 0x7f) {
+      static const char kHex[] = "0123456789abcdef";
+      out += {'\\', 'x', kHex[c >> 4], kHex[c & 15]};
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
 
 po::typed_value<std::string>* Value() { return po::value<std::string>(); }
 
@@ -202,14 +217,14 @@ Arguments ParseArguments(int argc, const char* const argv[], const po::options_d
     }
     po::store(parsed, args.vm_);
   } catch (const po::error& e) {
-    throw UsageError(OneLine(e.what()));
+    throw UsageError(Printable(e.what()));
   }
   const bool info = args.vm_.count("help") || args.Flag("version");
   if (!info && args.Given("study")) ReadStudyFile(args.Text("study"), desc, section, args);
   try {
     po::notify(args.vm_);
   } catch (const po::error& e) {
-    throw UsageError(OneLine(e.what()));
+    throw UsageError(Printable(e.what()));
   }
   return args;
 }
@@ -282,7 +297,7 @@ void ReadStudyFile(const std::string& path, const po::options_description& desc,
     try {
       po::store(one, args.vm_);
     } catch (const po::error& e) {
-      throw malformed(OneLine(e.what()));
+      throw malformed(Printable(e.what()));
     }
     args.origin_[key] = where;
   }
@@ -299,7 +314,7 @@ void PrintHelp(std::ostream& os, const std::string& usage, const po::options_des
 }
 
 void PrintError(const std::string& prog, const std::string& message) {
-  std::cerr << prog << ": error: " << OneLine(message) << std::endl;
+  std::cerr << prog << ": error: " << Printable(message) << std::endl;
 }
 
 int ReportError(const std::string& prog, const std::exception& e) {

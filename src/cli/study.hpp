@@ -124,8 +124,9 @@ double ParseNumber(const std::string& text, const std::string& what);
 // The model from ModelOptions(), validated (throws UsageError).
 Params ModelFromArguments(const Arguments& args);
 // The same for a continuation in `continued`: the model is validated with that
-// parameter set to `at` (its own base value is never used, so --param v --v -1
-// is fine; the range ends are validated by ContinuationOptions).
+// parameter set to `at`, and as given when a value of `continued` is given
+// (--param v --v -1 is refused); the range ends are validated by
+// ContinuationOptions.
 // Values not given default to `defaults` (a restart's point; --law too).
 Params ModelFromArguments(const Arguments& args, const std::string& continued, double at,
                           const Params& defaults = Params());
@@ -147,8 +148,11 @@ std::string DescribeModel(const Params& p, const std::string& continued, double 
 void PrintHelp(std::ostream& os, const std::string& usage, const po::options_description& desc,
                const std::string& notes = "");
 
-// Prints "prog: error: message" to stderr as one line (line breaks become spaces).
+// Prints "prog: error: message" to stderr as one line (Printable).
 void PrintError(const std::string& prog, const std::string& message);
+// s with every control character escaped (\n, \t, \x1b, ...) and trailing
+// newlines dropped: user input (option values, paths) is never echoed raw.
+std::string Printable(const std::string& s);
 // Prints e with PrintError and returns the exit code: 2 for bad input
 // (InvalidArgument, UsageError, Boost.PO errors), 1 for anything else.
 int ReportError(const std::string& prog, const std::exception& e);
