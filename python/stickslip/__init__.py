@@ -17,3 +17,4 @@ except ImportError as _e:  # pragma: no cover - depends on the interpreter
 from ._core import *  # noqa: F401,F403
 from ._core import __doc__ as _core_doc  # noqa: F401
 from ._core import __version__, git_commit  # noqa: F401
+from ._sweep import SweepError, SweepResult, group_stats, stick_slip_orbit, sweep  # noqa: F401

@@ -1,0 +1,90 @@
+"""stickslip.sweep (ctest: Python.Sweep): a 2-worker Dask LocalCluster gives
+exactly the serial result; the ready-made stick_slip_orbit against the closed
+form of the undamped coulomb law (design notes section 1: the slip arc is a
+circle about x = mu_k of radius sqrt(v^2 + (mu_s - mu_k)^2), period
+pi + 2 atan(v / (mu_s - mu_k)) + 2 (mu_s - mu_k) / v); bad input and failing
+points are refused with messages that name them."""
+import math
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import stickslip
+
+GRID = {"v": np.linspace(0.1, 0.45, 6)}
+SAMPLE = {"mu_s": np.random.default_rng(7).normal(0.4, 0.02, 12)}
+
+
+def failing(point):
+    if point["v"] > 0.3:
+        raise ValueError("no model here")
+    return {"y": point["v"]}
+
+
+def coulomb_orbit(point):
+    return stickslip.stick_slip_orbit(dict(point, law="coulomb"))
+
+
+class Sweep(unittest.TestCase):
+    def test_local_cluster_equals_serial_exactly(self):
+        serial = stickslip.sweep(stickslip.stick_slip_orbit, GRID, SAMPLE, scheduler="serial")
+        dask = stickslip.sweep(stickslip.stick_slip_orbit, GRID, SAMPLE, n_workers=2,
+                               chunk_size=5)
+        self.assertEqual(dask.meta["workers"], 2)
+        self.assertEqual(serial.columns, ["v", "mu_s", "stick_slip", "amplitude", "period"])
+        self.assertEqual(len(serial), 72)
+        self.assertTrue(np.array_equal(serial.data, dask.data))
+        self.assertFalse(serial.data.flags.writeable)
+        # Stick-slip at small v for every sample, none past the Hopf point (0.44 at the seed).
+        stats = stickslip.group_stats(serial, "v", "amplitude", where="stick_slip")
+        self.assertEqual(stats["fraction"][0], 1.0)
+        self.assertEqual(stats["fraction"][-1], 0.0)
+
+    def test_coulomb_orbits_match_the_closed_form(self):
+        r = stickslip.sweep(coulomb_orbit, {"v": [0.1, 0.2, 0.3], "mu_s": [0.4, 0.5],
+                                            "beta": [0.0]}, scheduler="serial")
+        mu_k = stickslip.Params(law="coulomb").mu_k
+        for row in r.data:
+            v, mu_s, _, stick, amp, period = row
+            d = mu_s - mu_k
+            self.assertEqual(stick, 1.0)
+            self.assertAlmostEqual(amp, math.hypot(v, d), delta=1e-9)
+            self.assertAlmostEqual(period, math.pi + 2 * math.atan(v / d) + 2 * d / v, delta=1e-9)
+
+    def test_file_describes_itself(self):
+        r = stickslip.sweep(stickslip.stick_slip_orbit, GRID, SAMPLE, scheduler="serial")
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "sweep.tsv")
+            r.to_tsv(path)
+            lines = open(path).read().splitlines()
+            meta = [l for l in lines if l.startswith("# ")]
+            self.assertTrue(any(l.startswith("# tool: stickslip.sweep") for l in meta))
+            self.assertTrue(any(l == "# points: 72" for l in meta))
+            body = [l for l in lines if not l.startswith("#")]
+            self.assertEqual(body[0].split("\t"), r.columns)
+            back = np.array([[float(x) for x in l.split("\t")] for l in body[1:]])
+            self.assertTrue(np.array_equal(back, r.data))
+            self.assertEqual(os.stat(path).st_mode & 0o777, 0o644)
+
+    def test_bad_input_names_the_argument(self):
+        for kwargs, word in [({"grid": {"v": []}}, "'v' is empty"),
+                             ({"grid": {"v": [0.1, float("nan")]}}, "not finite"),
+                             ({"sample": {"a": [1, 2], "b": [1]}}, "differ in length"),
+                             ({"grid": {"v": [0.1]}, "n_workers": 0}, "n_workers"),
+                             ({"grid": {"v": [0.1]}, "scheduler": "localhost"}, "scheduler"),
+                             ({}, "grid=")]:
+            with self.assertRaises(ValueError) as e:
+                stickslip.sweep(stickslip.stick_slip_orbit, **kwargs)
+            self.assertIn(word, str(e.exception))
+
+    def test_a_failing_point_is_named_not_returned(self):
+        with self.assertRaises(stickslip.SweepError) as e:
+            stickslip.sweep(failing, {"v": [0.1, 0.2, 0.4]}, scheduler="serial")
+        self.assertIn("point 2 {'v': 0.4}", str(e.exception))
+        self.assertIn("no model here", str(e.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
