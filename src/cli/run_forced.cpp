@@ -62,8 +62,13 @@ ForcedSetup Configure(const Arguments& args) {
   Check(args, at, " at --from");
   SetAxis(at, s.axis, s.to);
   Check(args, at, " at --to");
-  s.flow = FlowOptionsFromArguments(args);
+  s.flow = FlowOptionsFromArguments(args);  // validated here
+  // The forced flow's own defaults (1e-12): at the belt's rtol 1e-11 the
+  // corrector (tol 1e-11) stalls on the flow's noise (measured: step-too-small).
+  if (!args.Given("rtol")) s.flow.rtol = s.opts.flow.rtol;
+  if (!args.Given("atol")) s.flow.atol = s.opts.flow.atol;
   s.opts.flow.rtol = s.flow.rtol, s.opts.flow.atol = s.flow.atol;
+  s.opts.flow.max_steps = s.flow.max_steps;
   s.opts.palc.ds_max = args.Number("max_step", 0.02) * std::abs(s.to - s.from);
   if (!(s.opts.palc.ds_max > 0) || s.opts.palc.ds_max > std::abs(s.to - s.from))
     throw UsageError(args.Source("max_step") + " must be in (0, 1]");
@@ -123,7 +128,8 @@ po::options_description ForcingOptions() {
                   "belt model)")("omega", Value()->value_name("W"),
                                  "forcing frequency over the natural one, > 0 (default 1)")(
       "max_amplitude", Value()->value_name("X"),
-      "forced: a branch ends where |x| passes X (default 50)");
+      "forced: a branch ends where |x| passes X (default 50); the forced oscillator's "
+      "rtol and atol default to 1e-12");
   return d;
 }
 
@@ -144,11 +150,13 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   std::vector<ForcedPiece> pieces(1);
   pieces[0].branch = Trace(s, s.from, s.to);
   std::string gap;
+  std::vector<double> gap_ends;
   if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded) {
     // Undamped resonance: trace the other end too; between them x is unbounded.
     pieces.push_back({Trace(s, s.to, s.from), 2});
     const auto& a = pieces[0].branch.rows;
     const auto& b = pieces[1].branch.rows;
+    if (!a.empty() && !b.empty()) gap_ends = {a.back().p, b.back().p};
     if (!a.empty() && !b.empty())
       gap = "not traced between " + FormatNumber(a.back().p) + " and " +
             FormatNumber(b.back().p) + ": |x| > max_amplitude " +
@@ -171,6 +179,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
               (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
+  int specials = 0;
+  for (const ForcedPiece& piece : pieces) specials += static_cast<int>(piece.branch.special.size());
   TsvTable branch = ForcedBranchTable(pieces, s.axis, s.p);
   TsvTable special = ForcedSpecialTable(pieces, s.axis, s.p);
   branch.PrependMeta(meta);
@@ -178,7 +188,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   app.out().Write("branch.tsv", branch.str());
   app.out().Write("special_points.tsv", special.str());
   app.out().Write("resonance.gp", ResonanceScript(s.p, s.axis, static_cast<int>(pieces.size()),
-                                                  model));
+                                                  model, gap_ends, specials));
   if (!app.Finish("resonance.gp", {"resonance.png"}, {"resonance.png"})) return kExitFailed;
   size_t rows = 0;
   for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();

@@ -79,7 +79,8 @@ bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis) {
 // Den Hartog (1931): X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
 // U = sin(pi / W) / (W (1 + cos(pi / W))), real where the motion has no stop.
 std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
-                            const std::string& title) {
+                            const std::string& title, const std::vector<double>& gap,
+                            int specials) {
   const std::string ax = ForcedAxisName(axis);
   std::ostringstream os;
   os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax
@@ -90,8 +91,15 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
                                                       : ax)
      << "'\nset ylabel 'x_{max}'\nset grid\nset key top right box opaque\nset yrange [0:*]\n"
      << "c(name) = column(name)\n"
-     << "sel(b, k, s) = (c('branch') == b && strcol('kind') eq k && c('stable') == s) ? "
-        "c('x_max') : 1/0\n";
+     << "in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s\n"
+     << "# a style's rows, and the row after each of its runs (no gap at a change)\n"
+     << "sel(b, k, s) = (cur = in(b, k, s), out = (cur || (prev && c('branch') == b)) ? "
+        "c('x_max') : 1/0, prev = cur, out)\n";
+  if (gap.size() == 2)
+    os << "set object 1 rect from " << FormatNumber(std::min(gap[0], gap[1])) << ", graph 0 to "
+       << FormatNumber(std::max(gap[0], gap[1])) << ", graph 1 fc rgb '#e8e8e8' fs solid "
+       << "noborder behind\nset label 1 'not traced: |x| unbounded' at "
+       << FormatNumber(std::max(gap[0], gap[1])) << ", graph 0.93 offset 1, 0 tc rgb '#555555'\n";
   const bool dh = DenHartogApplies(p, axis);
   if (dh)
     os << "mu = " << FormatNumber(p.base.mu_k) << "; A = " << FormatNumber(p.force) << "\n"
@@ -105,7 +113,7 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
   for (int b = 1; b <= pieces; ++b)
     for (int k = 0; k < 2; ++k)
       for (int s = 1; s >= 0; --s) {
-        os << (first ? "  " : ", \\\n  ") << "'branch.tsv' using '" << ax << "':(sel(" << b
+        os << (first ? "  " : ", \\\n  ") << "prev = 0, 'branch.tsv' using '" << ax << "':(sel(" << b
            << ", '" << kinds[k] << "', " << s << ")) with lines lw " << (s ? 2.5 : 1.8) << " dt "
            << (s ? 1 : 2) << " lc rgb '" << colours[k] << "' ";
         if (b == 1)
@@ -118,6 +126,10 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
     os << ", \\\n  'branch.tsv' using '" << ax << "':(c('branch') == " << b
        << " && strcol('kind') eq 'non-stop' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
        << "lc rgb 'black' " << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
+  if (specials > 0)  // LP and PD, located (special_points.tsv)
+    os << ", \\\n  'special_points.tsv' using '" << ax << "':'x_max' with points pt 7 ps 1.2 "
+       << "lc rgb 'black' notitle, \\\n  'special_points.tsv' using '" << ax
+       << "':'x_max':'label' with labels offset 0, 1 notitle";
   os << "\n";
   return os.str();
 }

@@ -33,7 +33,10 @@ TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis a
 bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis);
 
 /// The resonance figure: draws resonance.png from branch.tsv.
+/// A run from both ends shades the untraced interval `gap` (empty: none);
+/// `specials` > 0 marks and labels the rows of special_points.tsv.
 std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
-                            const std::string& title);
+                            const std::string& title, const std::vector<double>& gap,
+                            int specials);
 
 }  // namespace stickslip
