@@ -51,7 +51,7 @@ do for [panel = 1:2] {
        data using (is("ours-bdf", 5)):(is("ours-bdf", ecol)) with linespoints lw 2 pt 5 lc rgb "#ff7f0e" title "ours, BDF: branch + 8 orbits", \
        data using (is("brute-adams", 5)):(is("brute-adams", ecol)) with linespoints lw 2 pt 9 lc rgb "#d62728" title "brute force (Filippov, from rest)", \
        data using (is("brute-adams", 5)):(is("brute-adams", ecol)):(rlab("brute-adams")) with labels offset 0,-0.9 font ",8" tc rgb "#d62728" notitle, \
-       data using (is("regularised-bdf", 5)):(is("regularised-bdf", ecol)) with linespoints lw 2 pt 11 lc rgb "#2ca02c" title "tanh-regularised (BDF, shooting)", \
-       data using (is("regularised-bdf", 5)):(is("regularised-bdf", ecol)):(elab("regularised-bdf")) with labels right offset -0.7,0 font ",8" tc rgb "#2ca02c" notitle
+       data using (is("regularised-bdf", 5)):(is("regularised-bdf", ecol)) with linespoints lw 2 pt 11 lc rgb "#9467bd" title "tanh-regularised (BDF, shooting)", \
+       data using (is("regularised-bdf", 5)):(is("regularised-bdf", ecol)):(elab("regularised-bdf")) with labels right offset -0.7,0 font ",8" tc rgb "#9467bd" notitle
 }
 unset multiplot

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "stickslip/figure_style.hpp"
+
 namespace stickslip {
 
 namespace {
@@ -55,41 +57,52 @@ TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves) {
 }
 
 std::string BasinScript(const BasinResult& r, const Model& model,
-                        const std::vector<OrbitCurveRows>& curves, const std::string& title) {
+                        const std::vector<OrbitCurveRows>& curves, const std::string& title,
+                        FigureFormat format) {
   const double dx = r.nx > 1 ? (r.x_hi - r.x_lo) / (r.nx - 1) : 1;
   const double dy = r.ny > 1 ? (r.xdot_hi - r.xdot_lo) / (r.ny - 1) : 1;
   const Vec2 exit = model.ExitPoint();
+  auto fill = [](const char* c) { return std::string("'") + c + "'"; };
   std::ostringstream os;
   os << "# Basins written by ss_basin; run `gnuplot basins.gp` in this directory.\n"
      << "if (!exists('suffix')) suffix = ''\n"
-     << "set terminal pngcairo size 1000,800 enhanced font ',12'\n"
-     << "set output 'basins.png'.suffix\n"
-     << "set datafile separator '\\t'\n"
-     << "set datafile columnheaders\n"
-     << "set title '" << title << "' noenhanced\n"
-     << "set xlabel 'x'\nset ylabel \"x'\"\n"
+     << FigurePreamble(format, 1000, 900) << "set output '" << FigureFile("basins", format)
+     << "'.suffix\n"
+     << "set title " << GnuplotQuoted(FigureTitle(title, {})) << "\n"
+     << "set xlabel 'initial displacement x (dimensionless)'\n"
+     << "set ylabel 'initial velocity dx/dt (dimensionless)'\n"
      << "set xrange [" << Num(r.x_lo - dx / 2) << ":" << Num(r.x_hi + dx / 2) << "]\n"
      << "set yrange [" << Num(r.xdot_lo - dy / 2) << ":" << Num(r.xdot_hi + dy / 2) << "]\n"
-     << "set key outside right top\n"
-     << "set palette defined (-0.5 '#9ecae1', 0.5 '#9ecae1', 0.5 '#fdae6b', 1.5 '#fdae6b', "
-        "1.5 '#a1d99b', 2.5 '#a1d99b', 2.5 '#d9d9d9', 3.5 '#d9d9d9')\n"
+     << "unset grid\n"
+     << "set palette defined (-0.5 " << fill(kFillEquilibrium) << ", 0.5 " << fill(kFillEquilibrium)
+     << ", 0.5 " << fill(kFillStickSlip) << ", 1.5 " << fill(kFillStickSlip) << ", 1.5 "
+     << fill(kFillPureSlip) << ", 2.5 " << fill(kFillPureSlip) << ", 2.5 " << fill(kFillUndecided)
+     << ", 3.5 " << fill(kFillUndecided) << ")\n"
      << "set cbrange [-0.5:3.5]\nunset colorbox\n"
      << "fate(s) = s eq 'steady-sliding' ? 0 : s eq 'stick-slip' ? 1 : "
         "s eq 'pure-slip' ? 2 : 3\n"
      << "set arrow from " << Num(exit[0] - 2 * model.params().mu_s) << "," << Num(model.v())
      << " to " << Num(exit[0]) << "," << Num(model.v()) << " nohead lw 4 lc rgb 'black' front\n"
-     << "plot 'basins.tsv' using 1:2:(fate(strcol(3))) with image notitle, \\\n"
-     << "     NaN with boxes fs solid lc rgb '#9ecae1' title 'steady sliding', \\\n"
-     << "     NaN with boxes fs solid lc rgb '#fdae6b' title 'stick-slip', \\\n"
-     << "     NaN with boxes fs solid lc rgb '#a1d99b' title 'pure slip', \\\n"
-     << "     NaN with boxes fs solid lc rgb '#d9d9d9' title 'undecided', \\\n"
-     << "     NaN with lines lw 4 lc rgb 'black' title 'stick band'";
-  for (size_t k = 0; k < curves.size(); ++k)
-    os << ", \\\n     'orbits.tsv' using 4:($1 == " << k << " ? $5 : NaN) with lines lw 3 dt "
-       << (curves[k].stable ? 1 : 2) << " lc rgb '" << (curves[k].stable ? "black" : "red")
-       << "' title '" << curves[k].kind << (curves[k].stable ? " (stable)" : " (unstable)") << "'";
+     << "set bmargin 9\n"
+     << "plot 'basins.tsv' using 1:2:(fate(strcol(3))) with image notitle";
+  // Key entries for the fates that occur, in the order of fate().
+  const char* fills[] = {kFillEquilibrium, kFillStickSlip, kFillPureSlip, kFillUndecided};
+  const char* names[] = {"basin: steady sliding", "basin: stick-slip", "basin: pure slip",
+                         "undecided"};
+  for (int f = 0; f < 4; ++f)
+    if (r.count[f] > 0)
+      os << ", \\\n     NaN with boxes fs solid border lc rgb '#808080' lc rgb " << fill(fills[f])
+         << " title '" << names[f] << "'";
+  os << ", \\\n     NaN with lines lw 4 lc rgb 'black' title 'stick band (dx/dt = v)'";
+  for (size_t k = 0; k < curves.size(); ++k) {
+    const bool stick = curves[k].kind == "stick-slip";
+    const int ls = (stick ? kStyleStickSlip : kStylePureSlip) + (curves[k].stable ? 0 : 1);
+    os << ", \\\n     'orbits.tsv' using 4:($1 == " << k << " ? $5 : NaN) with lines ls " << ls
+       << " lw 3 title '" << (stick ? "stick-slip" : "pure slip")
+       << (curves[k].stable ? " orbit, stable" : " orbit, unstable") << "'";
+  }
   os << ", \\\n     '+' using (" << Num(r.orbits.steady.x) << "):(0) every ::0::0 with points "
-     << "pt 7 ps 1.5 lc rgb 'black' title 'steady sliding (xbar, 0)'\n"
+     << "pt 7 ps 1.5 lc rgb 'black' title 'steady sliding (x̄, 0)'\n"
      << "unset output\n";
   return os.str();
 }

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "stickslip/figure_style.hpp"
+
 namespace stickslip {
 
 namespace {
@@ -55,14 +57,15 @@ TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::strin
   return t;
 }
 
-std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title) {
+std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
+                        FigureFormat format) {
   std::ostringstream os;
   os << "# Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.\n"
      << "# Shading: regions.tsv. Curves: HB black (solid supercritical, dashed subcritical),\n"
      << "# GR red (solid persistence, dashed nonsmooth fold), LP blue. Points: codim2.tsv.\n"
      << "if (!exists('suffix')) suffix = ''\n"
-     << "set terminal pngcairo size 1100,800 enhanced font ',12'\n"
-     << "set output 'chart.png'.suffix\n"
+     << FigureTerminal(format, 1100, 800)
+     << "set output '" << FigureFile("chart", format) << "'.suffix\n"
      << "set datafile separator '\\t'\n"
      << "set datafile columnheaders\n"
      << "set xlabel '" << plane.p1 << "' noenhanced\nset ylabel '" << plane.p2 << "' noenhanced\n"

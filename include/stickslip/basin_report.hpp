@@ -4,6 +4,8 @@
 // (WriteFileAtomically in report.hpp).
 #pragma once
 
+#include "stickslip/figure_style.hpp"
+
 #include <string>
 #include <vector>
 
@@ -29,11 +31,12 @@ struct OrbitCurveRows {
 // Columns: orbit, kind, stable, x, xdot.
 TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves);
 
-// gnuplot script drawing basins.png from basins.tsv and orbits.tsv in its own
+// gnuplot script (style of figure_style.hpp) drawing basins.png (.pdf, .svg) from basins.tsv and orbits.tsv in its own
 // directory: the starts coloured by fate, every orbit over them (stable solid,
 // unstable dashed), the stick band and steady sliding. `suffix` (default
 // empty) is appended to the output name.
 std::string BasinScript(const BasinResult& r, const Model& model,
-                        const std::vector<OrbitCurveRows>& curves, const std::string& title);
+                        const std::vector<OrbitCurveRows>& curves, const std::string& title,
+                        FigureFormat format = FigureFormat::kPng);
 
 }  // namespace stickslip

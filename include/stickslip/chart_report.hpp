@@ -3,6 +3,8 @@
 // (WriteFileAtomically in report.hpp).
 #pragma once
 
+#include "stickslip/figure_style.hpp"
+
 #include <string>
 
 #include "stickslip/chart.hpp"
@@ -24,6 +26,7 @@ TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::strin
 
 // gnuplot script drawing chart.png (plus the variable `suffix`, as in
 // BifurcationScript) from the three tables in its own directory.
-std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title);
+std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
+                        FigureFormat format = FigureFormat::kPng);
 
 }  // namespace stickslip

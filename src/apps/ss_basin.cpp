@@ -22,7 +22,7 @@ constexpr const char* kNotes =
     "Outputs in --out (each written whole or not at all): basins.tsv (one row per start:\n"
     "x, xdot, fate = steady-sliding / stick-slip / pure-slip / undecided, t_settle; `# key:\n"
     "value` lines list the periodic orbits and the smallest disturbance), orbits.tsv (each\n"
-    "periodic orbit sampled), basins.gp and basins.png.\n"
+    "periodic orbit sampled), basins.gp and basins.png (.pdf, .svg with --format).\n"
     "A start is undecided if it has not settled by --t_cap.\n"
     "The files are written as one set (docs/reliability.md).\n"
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
@@ -112,8 +112,9 @@ int Main(int argc, char** argv) {
     return 0;
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
-  cli::AppRun app(kProg, args, "plots/basin",
-                  {"basins.tsv", "orbits.tsv", "basins.gp", "basins.png"});
+  const ss::FigureFormat format = cli::FigureFormatOf(args);
+  const std::string figure = ss::FigureFile("basins", format);
+  cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", figure});
   cli::RunControl& run = app.run();
   const ss::Model model(p);
 
@@ -147,13 +148,14 @@ int Main(int argc, char** argv) {
   run.Phase("writing");
   app.out().Write("basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
   app.out().Write("orbits.tsv", text(ss::OrbitTable(curves)));
-  app.out().Write("basins.gp", ss::BasinScript(r, model, curves,
-                                               desc_model + (r.partial() ? " (partial)" : "")));
-  if (!app.Finish("basins.gp", {"basins.png"}, {"basins.png"})) return cli::kExitFailed;
+  app.out().Write(
+      "basins.gp",
+      ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""), format));
+  if (!app.Finish("basins.gp", {figure}, {figure})) return cli::kExitFailed;
 
   PrintSummary(r, dist, desc_model, seconds);
   std::cout << "wrote " << app.out().dir() << "/basins.tsv, orbits.tsv, basins.gp"
-            << (app.gnuplot().ok() ? " and basins.png" : "") << "\n";
+            << (app.gnuplot().ok() ? " and " + figure : std::string()) << "\n";
   std::string partial;
   if (r.partial())
     partial = "partial basins written (" + std::string(ss::BasinStatusName(r.status)) +

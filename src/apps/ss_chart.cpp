@@ -24,7 +24,8 @@ constexpr const char* kNotes =
     "Outputs in --out (each written whole or not at all): curves.tsv (one row per curve\n"
     "point: HB Hopf with its first Lyapunov coefficient l1, GR grazing with the pure-slip\n"
     "multiplier and its type, LP fold of pure-slip orbits), codim2.tsv (GH generalized\n"
-    "Hopf, GR-LP where the grazing type changes), regions.tsv, chart.gp and chart.png.\n"
+    "Hopf, GR-LP where the grazing type changes), regions.tsv, chart.gp and chart.png (.pdf, .svg "
+    "with --format).\n"
     "The files are written as one set (docs/reliability.md); with --no_plots the older\n"
     "regions.tsv, chart.gp and chart.png are removed.\n"
     "Solver defaults of this app (the Solver group above states them): --max_steps 20000,\n"
@@ -52,11 +53,11 @@ po::options_description AppOptions() {
 
 // What was computed, per curve, and the codim-2 points, on stdout.
 void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::string& model,
-                  const std::string& dir, bool plots, bool plots_ok) {
+                  const std::string& dir, const std::string& figure, bool plots_ok) {
   std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, pl.p1.c_str(),
               pl.p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
               r.seconds * 1e3);
-  if (plots)
+  if (!figure.empty())
     std::printf(" (regions %d x %d in %.1f ms)", r.regions.n1, r.regions.n2,
                 r.region_seconds * 1e3);
   std::printf("\n");
@@ -69,9 +70,9 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
   for (const ss::Codim2Point& p : r.codim2)
     std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", p.label.c_str(), pl.p1.c_str(), p.p1,
                 pl.p2.c_str(), p.p2, p.description.c_str());
-  std::printf(
-      "wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(),
-      plots ? (plots_ok ? ", regions.tsv, chart.gp, chart.png" : ", regions.tsv, chart.gp") : "");
+  const std::string drawn =
+      figure.empty() ? "" : ", regions.tsv, chart.gp" + (plots_ok ? ", " + figure : "");
+  std::printf("wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(), drawn.c_str());
 }
 
 // The options, validated (UsageError naming the option otherwise).
@@ -129,8 +130,10 @@ int Main(int argc, char** argv) {
   ss::Params base;
   ss::ChartOptions opts = Configure(args, &base);
   const ss::Plane& pl = opts.plane;
+  const ss::FigureFormat format = cli::FigureFormatOf(args);
+  const std::string figure = ss::FigureFile("chart", format);
   cli::AppRun app(kProg, args, "chart",
-                  {"curves.tsv", "codim2.tsv", "regions.tsv", "chart.gp", "chart.png"});
+                  {"curves.tsv", "codim2.tsv", "regions.tsv", "chart.gp", figure});
   cli::RunControl& run = app.run();
   run.Phase("following curves");
   opts.cancelled = [&run] {  // polled between points
@@ -156,14 +159,15 @@ int Main(int argc, char** argv) {
   app.out().Write("codim2.tsv", text(ss::Codim2Table(r, pl, model)));
   if (app.plots()) {
     app.out().Write("regions.tsv", text(ss::RegionsTable(r, pl, model)));
-    app.out().Write("chart.gp", ss::ChartScript(r, pl, model));
+    app.out().Write("chart.gp", ss::ChartScript(r, pl, model, format));
   }
   // Without plots, the older regions and figure do not belong to these curves.
   const std::vector<std::string> stale = app.plots()
                                              ? std::vector<std::string>{}
                                              : std::vector<std::string>{"regions.tsv", "chart.gp"};
-  if (!app.Finish("chart.gp", {"chart.png"}, {"chart.png"}, stale)) return cli::kExitFailed;
-  PrintSummary(r, pl, model, app.out().dir(), app.plots(), app.gnuplot().ok());
+  if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return cli::kExitFailed;
+  PrintSummary(r, pl, model, app.out().dir(), app.plots() ? figure : std::string(),
+               app.gnuplot().ok());
   if (r.unphysical_points > 0)
     cli::PrintError(kProg, std::to_string(r.unphysical_points) +
                                " curve points have orbits visiting slip speeds where mu <= 0 "

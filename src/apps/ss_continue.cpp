@@ -37,7 +37,8 @@ constexpr const char* kNotes =
     "dist_x dist_xdot dist_energy newton_stalled; every column in docs/formats.md),\n"
     "special_points.tsv (GR grazing-sliding, HB Hopf, LP fold), bifurcation.gp and its\n"
     "figures bifurcation_x.png, bifurcation_xdot.png, period.png, multiplier.png\n"
-    "(estimates.png with the estimates). Only regular files (or new names) are replaced;\n"
+    "(estimates.png with the estimates; .pdf or .svg with --format). Only regular files (or new "
+    "names) are replaced;\n"
     "a symlink at an output's place is refused.\n"
     "Each TSV starts with '# key: value' lines (tool, command, model, range, tolerances,\n"
     "integrator, status), then one header line without '#'.\n"
@@ -230,7 +231,8 @@ struct Provenance {
 };
 
 int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params& base,
-            const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates);
+            const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates,
+            ss::FigureFormat format);
 
 int Main(int argc, char** argv) {
   po::options_description mine = cli::ForcingOptions();  // the forced oscillator
@@ -247,11 +249,12 @@ int Main(int argc, char** argv) {
   prov.scales = cli::ScalesFromArguments(args);
   prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);
   std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "bifurcation.gp"};
-  const std::vector<std::string> all_figures = ss::BifurcationFigures(true);
+  const ss::FigureFormat format = cli::FigureFormatOf(args);
+  const std::vector<std::string> all_figures = ss::BifurcationFigures(true, format);
   names.insert(names.end(), all_figures.begin(), all_figures.end());
   cli::AppRun app(kProg, args, "plots", names);
   const ss::ContinuationResult r = cli::RunContinuation(base, opts, app.run());
-  return Outputs(app, r, base, opts, prov, !args.Flag("no_estimates"));
+  return Outputs(app, r, base, opts, prov, !args.Flag("no_estimates"), format);
 }
 
 // The estimate comparison, if it applies (cubic law, k5 = 0); otherwise, or
@@ -274,7 +277,8 @@ ss::EstimateComparison Estimates(const ss::Params& base, const ss::ContinuationO
 
 // Writes the set, draws the figures, prints the summary; returns the exit code.
 int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params& base,
-            const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates) {
+            const ss::ContinuationOptions& opts, const Provenance& prov, bool estimates,
+            ss::FigureFormat format) {
   cli::RunControl& run = app.run();
   const double seconds = run.Elapsed();
   const std::string model = cli::DescribeModel(base, opts.param, opts.from, opts.to);
@@ -304,14 +308,18 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   app.out().Write("branch.tsv", branch.str());
   app.out().Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
-  app.out().Write("bifurcation.gp", ss::BifurcationScript(r, opts.param, title, cmp.applies));
-  if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies),
-                  ss::BifurcationFigures(true)))
+  app.out().Write("bifurcation.gp",
+                  ss::BifurcationScript(r, opts.param, title, cmp.applies, format));
+  if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies, format),
+                  ss::BifurcationFigures(true, format)))
     return cli::kExitFailed;
 
   PrintSummary(r, opts, model, seconds);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
-            << (app.gnuplot().ok() ? " and the PNGs" : "") << "\n";
+            << (app.gnuplot().ok()
+                    ? std::string(" and the ") + ss::FigureFormatName(format) + " figures"
+                    : std::string())
+            << "\n";
   if (cmp.applies && !cmp.rows.empty() && !cmp.cancelled) PrintComparison(cmp, opts.param);
   std::string partial;
   if (r.partial())

@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "cli/about.hpp"
+#include "cli/app.hpp"
 #include "cli/output.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
+#include "stickslip/figure_style.hpp"
 #include "stickslip/flow.hpp"
 #include "stickslip/model.hpp"
 #include "stickslip/report.hpp"
@@ -52,10 +54,12 @@ po::options_description AppOptions() {
       "output interval, > 0 (default 0.01); switches are written too")(
       "out", cli::Value()->value_name("FILE"), "output TSV file (required), written atomically")(
       "plot", po::bool_switch(),
-      "also write FILE.gp and run gnuplot on it, giving FILE.png (phase portrait + time series)")(
+      "also write FILE.gp and run gnuplot on it, giving FILE.png (phase portrait and time\n"
+      "series; SI units with physical inputs; FILE.pdf or FILE.svg with --format)")(
       "max_time", cli::Value()->value_name("S"),
       "wall-time limit in seconds (default none); past it, or on SIGINT/SIGTERM, the run\n"
       "stops and writes nothing");
+  cli::AddFormatOption(d);
   return d;
 }
 
@@ -82,29 +86,39 @@ std::string GnuplotString(const std::string& s) {
   return out + "'";
 }
 
-// A two-panel figure: phase portrait with the stick set, and x, x' against t.
-std::string PlotScript(const std::string& data, const std::string& png, const ss::Model& model) {
-  const double v = model.v();
-  const double mu_s = model.params().mu_s;
-  const double shift = 2.0 * model.beta() * v;
+// A two-panel figure in the common style (figure_style.hpp): the phase
+// portrait with the stick set, and x, x' against t; in SI units (columns
+// t_s, x_m, xdot_m_s) when the run has physical inputs.
+std::string PlotScript(const std::string& data, const std::string& figure, const ss::Model& model,
+                       const std::optional<cli::Scales>& si, ss::FigureFormat format) {
+  const double L = si ? si->L : 1, t0 = si ? si->t0 : 1;
+  const double v = model.v() * L / t0;
+  const double mu_s = model.params().mu_s * L;
+  const double shift = 2.0 * model.beta() * model.v() * L;
   const std::string q = GnuplotString(data);
-  const std::string stick = "(strcol(4) eq 'stick' ? $3 : NaN)";
-  std::string s;
-  s += "set terminal pngcairo size 1400,600 noenhanced butt font 'Sans,11'\n";
-  s += "set output " + GnuplotString(png) + "\n";
-  s += "set datafile separator '\\t'\n";  // the header line is skipped as non-numeric
+  const int ct = si ? 5 : 1, cx = si ? 6 : 2, cv = si ? 7 : 3;
+  const std::string stick = "(strcol(4) eq 'stick' ? $" + std::to_string(cv) + " : NaN)";
+  const std::string ux = si ? " [m]" : " (dimensionless)", uv = si ? " [m/s]" : " (dimensionless)",
+                    ut = si ? " [s]" : " (dimensionless)";
+  const std::string c = ":", n = std::to_string(cx), nv = std::to_string(cv);
+  std::string s = ss::FigurePreamble(format, 1400, 650);
+  s += "set output " + GnuplotString(figure) + "\n";
   // The stick set: x' = v, |x + 2 beta v| <= mu_s.
   s += "$omega << EOD\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) + "\n" +
        ss::FormatNumber(mu_s - shift) + "\t" + ss::FormatNumber(v) + "\nEOD\n";
-  s += "set multiplot layout 1,2 title " + GnuplotString(cli::DescribeModel(model.params())) + "\n";
-  s += "set grid\nset key top right\n";
-  s += "set xlabel 'x'\nset ylabel \"x'\"\nset title 'phase portrait'\n";
-  s += "plot $omega using 1:2 with lines lw 8 lc rgb '#f4a6a6' title \"stick set: x' = v\", \\\n";
-  s += "     " + q + " using 2:3 with lines lw 1.5 lc rgb '#1f77b4' title 'trajectory', \\\n";
-  s += "     " + q + " using 2:" + stick + " with lines lw 2.5 lc rgb '#d62728' title 'stick'\n";
-  s += "set xlabel 't'\nset ylabel \"x, x'\"\nset title 'time series'\n";
-  s += "plot " + q + " using 1:2 with lines lw 1.5 title 'x', \\\n";
-  s += "     " + q + " using 1:3 with lines lw 1.5 title \"x'\"\n";
+  s += "set multiplot layout 1,2 title " +
+       ss::GnuplotQuoted(ss::FigureTitle(cli::DescribeModel(model.params()), {})) + "\n";
+  s += "set xlabel " + ss::GnuplotQuoted("displacement x" + ux) + "\n";
+  s += "set ylabel " + ss::GnuplotQuoted("velocity dx/dt" + uv) + "\nset title 'phase portrait'\n";
+  s += "plot $omega using 1:2 with lines lw 8 lc rgb '#f4a6a6' title 'stick set: dx/dt = v', \\\n";
+  s += "     " + q + " using " + n + c + nv + " with lines ls 1 lw 1.5 title 'trajectory', \\\n";
+  s += "     " + q + " using " + n + c + stick + " with lines ls 9 title 'sticking'\n";
+  s += "set xlabel " + ss::GnuplotQuoted("time t" + ut) + "\n";
+  s += "set ylabel " + ss::GnuplotQuoted("x" + ux + ", dx/dt" + uv) + "\nset title 'time series'\n";
+  s += "plot " + q + " using " + std::to_string(ct) + c + n + " with lines ls 1 lw 1.5 title " +
+       ss::GnuplotQuoted("displacement x") + ", \\\n";
+  s += "     " + q + " using " + std::to_string(ct) + c + nv + " with lines ls 3 lw 1.5 title " +
+       ss::GnuplotQuoted("velocity dx/dt") + "\n";
   s += "unset multiplot\n";
   return s;
 }
@@ -113,7 +127,7 @@ std::string PlotScript(const std::string& data, const std::string& png, const ss
 struct OutNames {
   std::string dir, tsv, gp, png;
 };
-OutNames SplitOut(const std::string& out) {
+OutNames SplitOut(const std::string& out, ss::FigureFormat format) {
   const auto slash = out.find_last_of('/');
   OutNames n;
   n.dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
@@ -121,7 +135,7 @@ OutNames SplitOut(const std::string& out) {
   const bool ext = n.tsv.size() > 4 && n.tsv.compare(n.tsv.size() - 4, 4, ".tsv") == 0;
   const std::string stem = ext ? n.tsv.substr(0, n.tsv.size() - 4) : n.tsv;
   n.gp = stem + ".gp";
-  n.png = stem + ".png";
+  n.png = ss::FigureFile(stem, format);
   return n;
 }
 
@@ -139,6 +153,7 @@ struct Settings {
   double x0 = 0, xdot0 = 0.25, t_end = 100, dt = 0.01, max_time = 0;
   std::string out;
   bool plot = false;
+  ss::FigureFormat format = ss::FigureFormat::kPng;
 };
 
 Settings Configure(const cli::Arguments& args) {
@@ -165,6 +180,7 @@ Settings Configure(const cli::Arguments& args) {
   s.out = args.Text("out");
   CheckOutputPath(s.out, args.Source("out"));
   s.plot = args.Flag("plot");
+  s.format = cli::FigureFormatOf(args);
   return s;
 }
 
@@ -182,12 +198,13 @@ std::string Failure(const ss::FlowResult& r, const std::string& bad, const cli::
 
 // Writes the set (the TSV, and with --plot the script and the figure).
 int WriteOutputs(cli::OutputSet& files, const OutNames& names, const Settings& s,
-                 const ss::Model& model, const ss::TsvTable& table, cli::RunControl& run) {
+                 const ss::Model& model, const ss::TsvTable& table, cli::RunControl& run,
+                 const std::optional<cli::Scales>& scales) {
   run.Phase("writing");
   files.Write(names.tsv, table.str());
   cli::GnuplotResult g;
   if (s.plot) {
-    files.Write(names.gp, PlotScript(names.tsv, names.png, model));
+    files.Write(names.gp, PlotScript(names.tsv, names.png, model, scales, s.format));
     run.Phase("plotting");
     g = files.Draw(names.gp, {names.png}, [&] { return run.Cancelled(); });
     if (g.status == cli::GnuplotStatus::kFailed) {
@@ -218,7 +235,7 @@ int Main(int argc, char** argv) {
   const Settings s = Configure(args);
   // With physical inputs, physical copies of t, x and x' follow (seed section 3 scaling).
   const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
-  const OutNames names = SplitOut(s.out);
+  const OutNames names = SplitOut(s.out, s.format);
   cli::OutputSet files(names.dir,
                        s.plot ? std::vector<std::string>{names.tsv, names.gp, names.png}
                               : std::vector<std::string>{names.tsv},
@@ -275,7 +292,7 @@ int Main(int argc, char** argv) {
     return 1;
   }
   table.AddMeta("status", "complete");  // a failed run writes no file
-  return WriteOutputs(files, names, s, model, table, run);
+  return WriteOutputs(files, names, s, model, table, run, scales);
 }
 
 }  // namespace

@@ -18,6 +18,20 @@ void AddRunOptions(po::options_description& d, const std::string& default_out,
       "max_time", Value()->value_name("S"),
       "wall-time limit in seconds, every phase (gnuplot too); the result so far is kept, "
       "marked partial (default none)");
+  AddFormatOption(d);
+}
+
+void AddFormatOption(po::options_description& d) {
+  d.add_options()("format", Value()->value_name("png|pdf|svg"),
+                  "the figures' file format: png (pngcairo), pdf (pdfcairo) or svg (default png)");
+}
+
+FigureFormat FigureFormatOf(const Arguments& args) {
+  FigureFormat f = FigureFormat::kPng;
+  if (args.Given("format") && !ParseFigureFormat(args.Text("format"), &f))
+    throw UsageError("invalid value '" + args.Text("format") + "' for " + args.Source("format") +
+                     ": must be png, pdf or svg");
+  return f;
 }
 
 namespace {

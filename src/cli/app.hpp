@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "cli/gnuplot.hpp"
+#include "stickslip/figure_style.hpp"
 #include "cli/output.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
@@ -37,10 +38,16 @@ enum ExitCode : int { kExitDone = 0, kExitFailed = 1, kExitBadInput = 2, kExitNo
 // The table above as --help text (the last lines of every app's notes).
 extern const char* const kExitCodeHelp;
 
-// --out DIR (default `default_out`), --no_plots, --max_time S, added to an
+// --out DIR (default `default_out`), --no_plots, --max_time S, --format, added to an
 // app's own options. `no_plots_help`: what --no_plots leaves out.
 void AddRunOptions(po::options_description& d, const std::string& default_out,
                    const std::string& no_plots_help);
+
+// --format png|pdf|svg (AddRunOptions adds it too).
+void AddFormatOption(po::options_description& d);
+// The figures' format: png unless --format says otherwise; UsageError (exit 2)
+// naming --format on any other value.
+FigureFormat FigureFormatOf(const Arguments& args);
 
 class AppRun {
  public:

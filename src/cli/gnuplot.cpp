@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -173,6 +175,66 @@ std::string PngError(const std::string& path) {
   }
   ::close(fd);
   return err.empty() ? "" : "'" + path + "': " + err;
+}
+
+namespace {
+// The first `n` and the last `n` bytes of a regular file (fewer if shorter);
+// an error text if it cannot be read, is not regular or is empty.
+std::string HeadTail(const std::string& path, std::size_t n, std::string* head, std::string* tail) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return ErrnoText(errno);
+  struct stat st;
+  std::string err;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    err = "not a regular file";
+  } else if (st.st_size == 0) {
+    err = "empty";
+  } else {
+    const std::size_t size = static_cast<std::size_t>(st.st_size), k = std::min(n, size);
+    head->assign(k, '\0');
+    tail->assign(k, '\0');
+    if (::pread(fd, head->data(), k, 0) != static_cast<ssize_t>(k) ||
+        ::pread(fd, tail->data(), k, static_cast<off_t>(size - k)) != static_cast<ssize_t>(k))
+      err = "cannot be read";
+  }
+  ::close(fd);
+  return err;
+}
+
+// `text` without trailing white space.
+std::string TrimEnd(std::string text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
+
+bool EndsWith(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+}  // namespace
+
+std::string PdfError(const std::string& path) {
+  std::string head, tail;
+  std::string err = HeadTail(path, 64, &head, &tail);
+  if (err.empty() && head.compare(0, 5, "%PDF-") != 0) err = "not a PDF document";
+  if (err.empty() && !EndsWith(TrimEnd(tail), "%%EOF"))
+    err = "truncated PDF document (no %%EOF at the end)";
+  return err.empty() ? "" : "'" + path + "': " + err;
+}
+
+std::string SvgError(const std::string& path) {
+  std::string head, tail;
+  std::string err = HeadTail(path, 256, &head, &tail);
+  if (err.empty() && head.compare(0, 5, "<?xml") != 0 && head.compare(0, 4, "<svg") != 0)
+    err = "not an SVG image";
+  if (err.empty() && !EndsWith(TrimEnd(tail), "</svg>"))
+    err = "truncated SVG image (no </svg> at the end)";
+  return err.empty() ? "" : "'" + path + "': " + err;
+}
+
+std::string FigureError(const std::string& path) {
+  if (EndsWith(path, ".pdf")) return PdfError(path);
+  if (EndsWith(path, ".svg")) return SvgError(path);
+  return PngError(path);
 }
 
 }  // namespace stickslip::cli

@@ -34,5 +34,12 @@ bool RunGnuplot(const std::string& script_path, const std::string& workdir, std:
 // Empty if `path` holds a whole PNG image (the PNG signature first, the IEND
 // chunk last), else one line saying what is wrong (missing, empty, truncated).
 std::string PngError(const std::string& path);
+// The same for a whole PDF document ("%PDF-" first, "%%EOF" last but for
+// trailing white space) and a whole SVG image (an XML or <svg> start,
+// "</svg>" last but for white space).
+std::string PdfError(const std::string& path);
+std::string SvgError(const std::string& path);
+// The check the name's extension calls for: .pdf, .svg, else PNG.
+std::string FigureError(const std::string& path);
 
 }  // namespace stickslip::cli

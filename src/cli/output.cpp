@@ -172,7 +172,7 @@ GnuplotResult OutputSet::Draw(const std::string& script, const std::vector<std::
   GnuplotResult r = RunGnuplot(Staging() + "/" + script, Staging(), cancelled);
   for (const auto& f : figures) {
     if (!r.ok()) break;
-    const std::string err = PngError(Staging() + "/" + f);
+    const std::string err = FigureError(Staging() + "/" + f);
     if (!err.empty())
       r = {GnuplotStatus::kFailed,
            "figure " + f + " not drawn whole (disk full?): " + err.substr(err.find("': ") + 3)};

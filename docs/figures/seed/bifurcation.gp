@@ -1,72 +1,109 @@
-# Bifurcation diagrams written by ss_continue; run `gnuplot bifurcation.gp` in this directory.
-# Solid: stable, dashed: unstable, gray: steady sliding. GR grazing-sliding, HB Hopf,
-# LP fold.
+# Bifurcation diagrams written by ss_continue; run `gnuplot bifurcation.gp` in this
+# directory. Solid: stable, dashed: unstable; blue stick-slip, vermillion pure slip,
+# gray steady sliding. GR grazing-sliding, HB Hopf, LP fold.
 if (!exists('suffix')) suffix = ''
-set terminal pngcairo size 1000,700 enhanced font ',12'
+set terminal pngcairo size 1000,720 enhanced font 'Sans,12'
+set encoding utf8
 set datafile separator '\t'
 set datafile columnheaders
-set key top right
-set grid
-set xlabel 'v'
-set title 'law=cubic beta=0.05 v=[0.05, 0.5] mu_s=0.4 mu_m=0.25 v_m=0.5 k5=0' noenhanced
+set grid lc rgb '#e0e0e0' lw 0.5
+set border lw 1
+set style line 1 lc rgb '#0072b2' lw 2 dt 1
+set style line 2 lc rgb '#0072b2' lw 2 dt 2
+set style line 3 lc rgb '#d55e00' lw 2 dt 1
+set style line 4 lc rgb '#d55e00' lw 2 dt 2
+set style line 5 lc rgb '#606060' lw 2 dt 1
+set style line 6 lc rgb '#606060' lw 2 dt 2
+set style line 7 lc rgb '#000000' lw 1 dt 3
+set style line 8 lc rgb '#000000' pt 7 ps 1.0
+set style line 9 lc rgb '#000000' lw 2.5 dt 1
+set style line 10 lc rgb '#009e73' lw 2 dt 2
+set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
+set bmargin 7
+set style textbox opaque noborder margins 1,1
+set xlabel "belt speed v"
+set title "cubic law: β = 0.05, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0"
+set offsets 0, 0, graph 0.08, graph 0.08
+set xrange [0.05:0.5]
 set output 'bifurcation_x.png'.suffix
-set ylabel "x range (min and max)"
-plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $6 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
-     'branch.tsv' using 1:(($3==0 && $11==0) ? $6 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
-     'branch.tsv' using 1:(($3==1 && $11==1) ? $6 : NaN) with lines lc 1 lw 2 dt 1 title "x max", \
-     'branch.tsv' using 1:(($3==1 && $11==0) ? $6 : NaN) with lines lc 1 lw 2 dt 2 notitle, \
-     'branch.tsv' using 1:(($3==1 && $11==1) ? $5 : NaN) with lines lc 3 lw 2 dt 1 title "x min", \
-     'branch.tsv' using 1:(($3==1 && $11==0) ? $5 : NaN) with lines lc 3 lw 2 dt 2 notitle, \
-     'special_points.tsv' using 2:5 with points pt 7 ps 1.2 lc rgb 'black' notitle, \
-     'special_points.tsv' using 2:5:(strcol(1) eq 'LP' ? '' : strcol(1)) with labels offset 0,1.2 font ',11' notitle, \
-     'special_points.tsv' using 2:5:(strcol(1) eq 'LP' ? 'LP' : '') with labels offset 0,-1.2 font ',11' notitle, \
-     'special_points.tsv' using 2:4 with points pt 7 ps 1.2 lc rgb 'black' notitle, \
-     'special_points.tsv' using 2:4:(strcol(1) eq 'LP' ? '' : strcol(1)) with labels offset 0,1.2 font ',11' notitle, \
-     'special_points.tsv' using 2:4:(strcol(1) eq 'LP' ? 'LP' : '') with labels offset 0,-1.2 font ',11' notitle
+set ylabel "displacement x: min and max (dimensionless)"
+set label 100 'GR' at 0.3957902887978408,0.7305861546582468 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'HB' at 0.44095855184409843,0.2530138160519672 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6 : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6 : NaN) with lines ls 5 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $6 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $6 : NaN) with lines ls 3 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $5 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $5 : NaN) with lines ls 3 notitle, \
+     NaN with lines ls 1 title 'stick-slip, stable', \
+     NaN with lines ls 3 title 'pure slip, stable', \
+     NaN with lines ls 6 title 'steady sliding, unstable', \
+     NaN with lines ls 5 title 'steady sliding, stable'
+unset label
 unset output
 set output 'bifurcation_xdot.png'.suffix
-set ylabel "x' range (min and max)"
-plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $8 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
-     'branch.tsv' using 1:(($3==0 && $11==0) ? $8 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
-     'branch.tsv' using 1:(($3==1 && $11==1) ? $8 : NaN) with lines lc 1 lw 2 dt 1 title "x' max", \
-     'branch.tsv' using 1:(($3==1 && $11==0) ? $8 : NaN) with lines lc 1 lw 2 dt 2 notitle, \
-     'branch.tsv' using 1:(($3==1 && $11==1) ? $7 : NaN) with lines lc 3 lw 2 dt 1 title "x' min", \
-     'branch.tsv' using 1:(($3==1 && $11==0) ? $7 : NaN) with lines lc 3 lw 2 dt 2 notitle, \
-     'special_points.tsv' using 2:6 with points pt 7 ps 1.2 lc rgb 'black' notitle, \
-     'special_points.tsv' using 2:6:(strcol(1) eq 'LP' ? '' : strcol(1)) with labels offset 0,1.2 font ',11' notitle, \
-     'special_points.tsv' using 2:6:(strcol(1) eq 'LP' ? 'LP' : '') with labels offset 0,-1.2 font ',11' notitle
+set ylabel "velocity dx/dt: min and max (dimensionless)"
+set label 100 'GR' at 0.3957902887978408,-0.3930534572417059 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'HB' at 0.44095855184409843,0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8 : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8 : NaN) with lines ls 5 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $8 : NaN) with lines ls 3 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $7 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $7 : NaN) with lines ls 3 notitle, \
+     NaN with lines ls 1 title 'stick-slip, stable', \
+     NaN with lines ls 3 title 'pure slip, stable', \
+     NaN with lines ls 6 title 'steady sliding, unstable', \
+     NaN with lines ls 5 title 'steady sliding, stable'
+unset label
 unset output
 set output 'period.png'.suffix
-set ylabel "period"
-plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $4 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
-     'branch.tsv' using 1:(($3==0 && $11==0) ? $4 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
-     'branch.tsv' using 1:(($3==1 && $11==1) ? $4 : NaN) with lines lc 1 lw 2 dt 1 title "period", \
-     'branch.tsv' using 1:(($3==1 && $11==0) ? $4 : NaN) with lines lc 1 lw 2 dt 2 notitle, \
-     'special_points.tsv' using 2:3 with points pt 7 ps 1.2 lc rgb 'black' notitle, \
-     'special_points.tsv' using 2:3:(strcol(1) eq 'LP' ? '' : strcol(1)) with labels offset 0,1.2 font ',11' notitle, \
-     'special_points.tsv' using 2:3:(strcol(1) eq 'LP' ? 'LP' : '') with labels offset 0,-1.2 font ',11' notitle
+set ylabel "period T (dimensionless)"
+set label 100 'GR' at 0.3957902887978408,6.367585395099831 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'HB' at 0.44095855184409843,6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $4 : NaN) with lines ls 3 notitle, \
+     NaN with lines ls 1 title 'stick-slip, stable', \
+     NaN with lines ls 3 title 'pure slip, stable'
+unset label
 unset output
+set terminal pngcairo size 1000,1000 enhanced font 'Sans,12'
 set output 'multiplier.png'.suffix
-set ylabel "nontrivial Floquet multiplier (equilibrium: max Re lambda)"
-plot 'branch.tsv' using 1:(($3==0 && $11==1) ? $10 : NaN) with lines lc rgb 'gray50' lw 2 dt 1 notitle, \
-     'branch.tsv' using 1:(($3==0 && $11==0) ? $10 : NaN) with lines lc rgb 'gray50' lw 2 dt 2 notitle, \
-     'branch.tsv' using 1:(($3==1 && $11==1) ? $10 : NaN) with lines lc 1 lw 2 dt 1 title "multiplier", \
-     'branch.tsv' using 1:(($3==1 && $11==0) ? $10 : NaN) with lines lc 1 lw 2 dt 2 notitle
+set multiplot layout 2,1 title "stability along the branch"
+set title "periodic orbits: stable while the multiplier is below 1"
+set ylabel "nontrivial Floquet multiplier"
+set label 100 'GR' at 0.3957902887978408,0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $10 : NaN) with lines ls 3 notitle, \
+     NaN with lines ls 1 title 'stick-slip, stable', \
+     NaN with lines ls 3 title 'pure slip, stable', \
+     1 with lines ls 7 title 'threshold 1'
+unset label
+set title "steady sliding: stable while the largest Re λ is below 0"
+set ylabel "largest real part of the eigenvalues, Re λ"
+set label 100 'HB' at 0.44095855184409843,0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $10 : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $10 : NaN) with lines ls 5 notitle, \
+     NaN with lines ls 6 title 'steady sliding, unstable', \
+     NaN with lines ls 5 title 'steady sliding, stable', \
+     0 with lines ls 7 title 'threshold 0'
+unset label
+unset multiplot
 unset output
+set terminal pngcairo size 1000,1000 enhanced font 'Sans,12'
 set output 'estimates.png'.suffix
-set terminal pngcairo size 1000,1000 enhanced font ',12'
 set multiplot layout 2,1
-set key bottom left
-set title 'smallest slip velocity: computed and estimated' noenhanced
-set ylabel "x' min"
-plot 'branch.tsv' using 1:((strcol(2) ne 'equilibrium') ? $7 : NaN) with lines lw 3 lc rgb 'black' title 'computed', \
-     '' using 1:13 with lines lw 2 dt 2 lc rgb 'red' title 'seed (3.17): r_1', \
-     '' using 1:(-$15) with lines lw 2 dt 3 lc rgb 'blue' title 'averaging: -a_{ps}'
-set title 'x range: computed and the seed''s displacement bound' noenhanced
-set ylabel 'x'
-plot 'branch.tsv' using 1:((strcol(2) ne 'equilibrium') ? $6 : NaN) with lines lw 3 lc rgb 'black' title 'computed x max, x min', \
-     '' using 1:((strcol(2) ne 'equilibrium') ? $5 : NaN) with lines lw 3 lc rgb 'black' notitle, \
-     '' using 1:18 with lines lw 2 dt 2 lc rgb 'red' title 'seed bound x max', \
-     '' using 1:17 with lines lw 2 dt 2 lc rgb 'dark-red' title 'seed bound x min'
+set title 'smallest slip velocity: computed and estimated'
+set ylabel "smallest velocity dx/dt (dimensionless)"
+plot 'branch.tsv' using 1:((strcol(2) ne 'equilibrium') ? $7 : NaN) with lines ls 9 title 'computed', \
+     '' using 1:13 with lines ls 10 title 'seed (3.17): r_1', \
+     '' using 1:(-$15) with lines ls 11 title 'averaging: -a_{ps}'
+set title "displacement range: computed and the seed's bound"
+set ylabel "displacement x (dimensionless)"
+plot 'branch.tsv' using 1:((strcol(2) ne 'equilibrium') ? $6 : NaN) with lines ls 9 title 'computed x max, x min', \
+     '' using 1:((strcol(2) ne 'equilibrium') ? $5 : NaN) with lines ls 9 notitle, \
+     '' using 1:18 with lines ls 10 title 'seed bound x max', \
+     '' using 1:17 with lines ls 11 title 'seed bound x min'
 unset multiplot
 unset output

@@ -1,0 +1,67 @@
+// The one figure style of every gnuplot script the library and the apps write
+// (issue 22 item 4): the terminal per format, the font, line styles and
+// colours for stable/unstable and for each kind of solution, the key below the
+// plot. The library only writes script text; running gnuplot is the apps'.
+//
+// A script writer starts with FigurePreamble(format, w, h) and draws with the
+// line styles below (`with lines ls kStyleStickSlip`); titles and labels go
+// through EnhancedText so names like beta and mu_s print as symbols.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stickslip {
+
+enum class FigureFormat { kPng, kPdf, kSvg };
+/// "png", "pdf", "svg": the --format value and the file extension.
+const char* FigureFormatName(FigureFormat f);
+/// False if text is none of the names above.
+bool ParseFigureFormat(const std::string& text, FigureFormat* f);
+/// stem + "." + the extension.
+std::string FigureFile(const std::string& stem, FigureFormat f);
+
+/// Line styles FigurePreamble defines. Stable solid, unstable dashed; colour by
+/// kind (stick-slip blue, pure-slip vermillion, steady sliding gray: the
+/// Okabe-Ito colour-blind-safe palette).
+enum FigureLineStyle : int {
+  kStyleStickSlip = 1,
+  kStyleStickSlipUnstable = 2,
+  kStylePureSlip = 3,
+  kStylePureSlipUnstable = 4,
+  kStyleEquilibrium = 5,
+  kStyleEquilibriumUnstable = 6,
+  kStyleThreshold = 7,   // a stability threshold: thin black dotted
+  kStyleSpecial = 8,     // special points: black filled circles
+  kStyleReference = 9,   // a computed reference curve: thick black
+  kStyleEstimate1 = 10,  // estimates: green dashed, purple dash-dot
+  kStyleEstimate2 = 11,
+};
+/// Region fills (basins, charts), as gnuplot colour strings.
+extern const char* const kFillStickSlip;
+extern const char* const kFillPureSlip;
+extern const char* const kFillEquilibrium;
+extern const char* const kFillUndecided;
+/// Colours of series that are not kinds (methods of a benchmark), in order.
+const char* SeriesColor(int i);
+
+/// The terminal line: pngcairo at width x height pixels, pdfcairo at the same
+/// size in inches at 100 px per inch, svg at width x height; utf-8, enhanced.
+std::string FigureTerminal(FigureFormat f, int width, int height);
+/// The terminal, encoding, tab-separated data with column headers, grid,
+/// the line styles above and the key outside below the plot.
+std::string FigurePreamble(FigureFormat f, int width, int height);
+/// Text for gnuplot's enhanced mode: parameter names as symbols (beta -> β,
+/// mu_s -> μ with subscript s, delta -> δ, k5 -> k_5), other special
+/// characters (_ ^ { } @ & ~) escaped.
+std::string EnhancedText(const std::string& plain);
+/// A title from a model line "law=cubic beta=0.05 v=[0.05, 0.5] ... (partial)":
+/// "cubic law: β = 0.05, ... (partial)" in enhanced text, leaving out the
+/// parameters on the axes (their values are the axes).
+std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes);
+/// A double-quoted gnuplot string holding `text` (backslashes and quotes escaped).
+std::string GnuplotQuoted(const std::string& text);
+/// The axis words for a parameter name: "belt speed v", "damping β", ...
+std::string ParameterAxisLabel(const std::string& param);
+
+}  // namespace stickslip
