@@ -20,6 +20,7 @@ run() {
 }
 run "$build/ss_continue" --study studies/seed.ini --out "$fig/seed"
 run "$build/ss_continue" --study studies/stribeck.ini --out "$fig/stribeck"
+run "$build/ss_continue" --study studies/den_hartog.ini --out "$fig/den_hartog"
 run "$build/ss_basin" --study studies/stribeck_basin.ini --out "$fig/stribeck_basin"
 run "$build/ss_basin" --study studies/stribeck_basin_stability.ini --out "$fig/stribeck_basin_stability"
 for chart in seed_chart stribeck_chart quintic_chart leine_chart; do

@@ -13,6 +13,7 @@
 #include "cli/app.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
+#include "cli/run_forced.hpp"
 #include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
@@ -253,11 +254,14 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
             ss::FigureFormat format);
 
 int Main(int argc, char** argv) {
-  const po::options_description desc = cli::AppDescription(AppOptions());
+  po::options_description mine = cli::ForcingOptions();  // the forced oscillator
+  mine.add(AppOptions());
+  const po::options_description desc = cli::AppDescription(mine);
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  if (cli::ForcedRequested(args)) return cli::RunForced(args, kProg, cli::CommandLine(argc, argv));
   ss::Params base;
   std::optional<ss::LabelledPoint> restart;
   const ss::ContinuationOptions opts = Configure(args, &base, &restart);

@@ -1,0 +1,42 @@
+// The forced branch as files (issue 20, item 4): the rows and special points
+// as TSV tables, and the resonance figure (x_max against the parameter,
+// stable solid, unstable dashed, stick-slip and non-stop in two colours, Den
+// Hartog's (1931) non-stop closed form overlaid where it applies) as a
+// gnuplot script. The library writes text only; the apps run gnuplot.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/report.hpp"
+
+namespace stickslip {
+
+/// One traced piece of a forced run; a run from both ends has two.
+struct ForcedPiece {
+  ForcedBranch branch;
+  int index = 1;  ///< the `branch` column
+};
+
+/// Columns: branch, <axis>, m, sticks, crossings, kind, x_min, x_max,
+/// xdot_min, xdot_max, period, x0, xdot0, mult1_re, mult1_im, mult2_re,
+/// mult2_im, mult_max (the largest modulus), stable. Throws InvalidArgument
+/// if a value is not finite.
+TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+                           const ForcedParams& p);
+/// The same columns plus label, for the located LP and PD points.
+TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+                            const ForcedParams& p);
+
+/// Den Hartog's non-stop setting: coulomb, mu_s = mu_k, v = 0, beta = 0, in omega.
+bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis);
+
+/// The resonance figure: draws resonance.png from branch.tsv.
+/// A run from both ends shades the untraced interval `gap` (empty: none);
+/// `specials` > 0 marks and labels the rows of special_points.tsv.
+std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
+                            const std::string& title, const std::vector<double>& gap,
+                            int specials);
+
+}  // namespace stickslip

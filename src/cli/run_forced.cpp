@@ -1,0 +1,213 @@
+// ss_continue's forced run (run_forced.hpp).
+#include "cli/run_forced.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "cli/about.hpp"
+#include "cli/app.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/forced/flow.hpp"
+#include "stickslip/forced/report.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+constexpr int kTransientPeriods = 200;  // docs/library.md: start from a settled state
+
+struct ForcedSetup {
+  ForcedParams p;
+  ForcedAxis axis = ForcedAxis::kOmega;
+  double from = 0, to = 0;
+  ForcedBranchOptions opts;
+  FlowOptions flow;  // rtol and atol as given, for the metadata
+};
+
+ForcedAxis AxisFromName(const Arguments& args) {
+  const std::string name = args.Text("param", "omega");
+  for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
+    if (name == ForcedAxisName(a)) return a;
+  throw UsageError("invalid value '" + name + "' for " + args.Source("param") +
+                   ": the forced oscillator continues omega, force, v or beta");
+}
+
+void Check(const Arguments& args, const ForcedParams& p, const std::string& what) {
+  const std::string err = ValidationError(p);
+  if (err.empty()) return;
+  const std::string name = err.substr(0, err.find(' '));
+  throw UsageError("invalid forced model" + what + ": " + err +
+                   (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
+}
+
+ForcedSetup Configure(const Arguments& args) {
+  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
+    if (args.Given(phys))
+      throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
+  ForcedSetup s;
+  s.p.base = UncheckedModelFromArguments(args);
+  s.p.force = args.Number("force", 0);
+  s.p.omega = args.Number("omega", 1);
+  s.axis = AxisFromName(args);
+  const double defaults[4][2] = {{0.75, 2.5}, {0.1, 2}, {0, 0.5}, {0, 0.3}};
+  const int k = static_cast<int>(s.axis);
+  s.from = args.Number("from", defaults[k][0]);
+  s.to = args.Number("to", defaults[k][1]);
+  if (s.from == s.to)
+    throw UsageError(args.Source("to") + " = " + FormatNumber(s.to) + " equals the start");
+  ForcedParams at = s.p;
+  if (!args.Given(ForcedAxisName(s.axis))) SetAxis(at, s.axis, s.from);
+  Check(args, at, "");
+  SetAxis(at, s.axis, s.from);
+  Check(args, at, " at --from");
+  SetAxis(at, s.axis, s.to);
+  Check(args, at, " at --to");
+  s.flow = FlowOptionsFromArguments(args);  // validated here
+  // The forced flow's own defaults (1e-12): at the belt's rtol 1e-11 the
+  // corrector (tol 1e-11) stalls on the flow's noise (measured: step-too-small).
+  if (!args.Given("rtol")) s.flow.rtol = s.opts.flow.rtol;
+  if (!args.Given("atol")) s.flow.atol = s.opts.flow.atol;
+  s.opts.flow.rtol = s.flow.rtol, s.opts.flow.atol = s.flow.atol;
+  s.opts.flow.max_steps = s.flow.max_steps;
+  s.opts.palc.ds_max = args.Number("max_step", 0.02) * std::abs(s.to - s.from);
+  if (!(s.opts.palc.ds_max > 0) || s.opts.palc.ds_max > std::abs(s.to - s.from))
+    throw UsageError(args.Source("max_step") + " must be in (0, 1]");
+  s.opts.palc.ds = std::min(s.opts.palc.ds, s.opts.palc.ds_max);
+  s.opts.max_amplitude = args.Number("max_amplitude", 50);
+  if (!(s.opts.max_amplitude > 0))
+    throw UsageError(args.Source("max_amplitude") + " must be > 0");
+  return s;
+}
+
+// The state after kTransientPeriods forcing periods from rest, at t = N T.
+ForcedBranch Trace(const ForcedSetup& s, double from, double to) {
+  ForcedParams p = s.p;
+  SetAxis(p, s.axis, from);
+  const ForcedModel model(p);
+  ForcedRequest rq;
+  rq.t_end = kTransientPeriods * model.period();
+  const ForcedRun tr = ForcedFlow(model, s.opts.flow).Run(ForcedStart(model, 0, 0, p.base.v), rq);
+  double x = tr.end.x, xdot = tr.end.xdot;
+  if (tr.status != ForcedStatus::kReached || std::abs(x) > s.opts.max_amplitude)
+    x = 0, xdot = p.base.v;  // no settled state: Newton from rest
+  return ContinueForced(s.p, s.axis, from, to, x, xdot, s.opts);
+}
+
+std::string Describe(const ForcedSetup& s) {
+  std::string d = "law=" + std::string(LawName(s.p.base.law));
+  for (const auto& name : ParameterNames(s.p.base.law)) {
+    if (name == "beta" || name == "v") {
+      const ForcedAxis a = name == "v" ? ForcedAxis::kV : ForcedAxis::kBeta;
+      if (a == s.axis) {
+        d += " " + name + "=[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]";
+        continue;
+      }
+    }
+    d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
+  }
+  for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
+    d += std::string(" ") + ForcedAxisName(a) + "=" +
+         (a == s.axis ? "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]"
+                      : FormatNumber(GetAxis(s.p, a)));
+  return d;
+}
+
+// A forcing value for the metadata; the continued one as its range.
+std::string Value(const ForcedSetup& s, ForcedAxis a) {
+  if (a != s.axis) return FormatNumber(GetAxis(s.p, a));
+  return "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "] (continued)";
+}
+
+}  // namespace
+
+po::options_description ForcingOptions() {
+  po::options_description d(
+      "Model, forcing (x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t); issue 20)");
+  d.add_options()("force", Value()->value_name("A"),
+                  "force amplitude A >= 0; != 0 selects the forced oscillator (default 0: the "
+                  "belt model)")("omega", Value()->value_name("W"),
+                                 "forcing frequency over the natural one, > 0 (default 1)")(
+      "max_amplitude", Value()->value_name("X"),
+      "forced: a branch ends where |x| passes X (default 50); the forced oscillator's "
+      "rtol and atol default to 1e-12");
+  return d;
+}
+
+bool ForcedRequested(const Arguments& args) {
+  const std::string param = args.Text("param", "");
+  const bool forced = args.Number("force", 0) != 0 || param == "force";
+  if (!forced && (args.Given("omega") || param == "omega"))
+    throw UsageError((args.Given("omega") ? args.Source("omega") : args.Source("param")) +
+                     " needs the forced oscillator: give --force A > 0");
+  return forced;
+}
+
+int RunForced(const Arguments& args, const std::string& prog, const std::string& command) {
+  const ForcedSetup s = Configure(args);
+  const std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "resonance.gp",
+                                          "resonance.png"};
+  AppRun app(prog, args, "plots", names);
+  std::vector<ForcedPiece> pieces(1);
+  pieces[0].branch = Trace(s, s.from, s.to);
+  std::string gap;
+  std::vector<double> gap_ends;
+  if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded) {
+    // Undamped resonance: trace the other end too; between them x is unbounded.
+    pieces.push_back({Trace(s, s.to, s.from), 2});
+    const auto& a = pieces[0].branch.rows;
+    const auto& b = pieces[1].branch.rows;
+    if (!a.empty() && !b.empty()) gap_ends = {a.back().p, b.back().p};
+    if (!a.empty() && !b.empty())
+      gap = "not traced between " + FormatNumber(a.back().p) + " and " +
+            FormatNumber(b.back().p) + ": |x| > max_amplitude " +
+            FormatNumber(s.opts.max_amplitude) + " there (unbounded resonance)";
+  }
+  const std::string model = Describe(s);
+  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow);
+  meta.insert(meta.end(), {{"model", "forced oscillator, " + model},
+                           {"force", Value(s, ForcedAxis::kForce)},
+                           {"omega", Value(s, ForcedAxis::kOmega)},
+                           {"continued", ForcedAxisName(s.axis)},
+                           {"from", FormatNumber(s.from)},
+                           {"to", FormatNumber(s.to)},
+                           {"transient", std::to_string(kTransientPeriods) + " forcing periods"},
+                           {"max_amplitude", FormatNumber(s.opts.max_amplitude)}});
+  std::string status;
+  for (const ForcedPiece& piece : pieces)
+    status += (status.empty() ? "" : "; ") + std::string("branch ") +
+              std::to_string(piece.index) + " " + ForcedBranchStatusName(piece.branch.status) +
+              (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
+  meta.emplace_back("status", status);
+  if (!gap.empty()) meta.emplace_back("gap", gap);
+  int specials = 0;
+  for (const ForcedPiece& piece : pieces) specials += static_cast<int>(piece.branch.special.size());
+  TsvTable branch = ForcedBranchTable(pieces, s.axis, s.p);
+  TsvTable special = ForcedSpecialTable(pieces, s.axis, s.p);
+  branch.PrependMeta(meta);
+  special.PrependMeta(meta);
+  app.out().Write("branch.tsv", branch.str());
+  app.out().Write("special_points.tsv", special.str());
+  app.out().Write("resonance.gp", ResonanceScript(s.p, s.axis, static_cast<int>(pieces.size()),
+                                                  model, gap_ends, specials));
+  if (!app.Finish("resonance.gp", {"resonance.png"}, {"resonance.png"})) return kExitFailed;
+  size_t rows = 0;
+  for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
+  std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
+            << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
+            << rows << " rows; " << status << "\n";
+  if (!gap.empty()) std::cout << "gap: " << gap << "\n";
+  for (const ForcedPiece& piece : pieces)
+    for (const ForcedBranchRow& r : piece.branch.special)
+      std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
+                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "\n";
+  std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
+            << (app.gnuplot().ok() ? " and resonance.png" : "") << "\n";
+  std::string partial;
+  const ForcedBranchStatus last = pieces.back().branch.status;
+  if (last != ForcedBranchStatus::kReachedEnd && last != ForcedBranchStatus::kClosed &&
+      !(pieces.size() == 2 && last == ForcedBranchStatus::kUnbounded))
+    partial = "partial branch written (" + status + ")";
+  return app.ExitCode(partial);
+}
+
+}  // namespace stickslip::cli

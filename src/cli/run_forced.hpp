@@ -1,0 +1,21 @@
+// ss_continue for the harmonically forced oscillator (issue 20, items 1 and
+// 4): --force A --omega W, --param omega|force|v|beta. Validated once at entry,
+// started from a transient, continued by ContinueForced (forced/branch.hpp),
+// written as branch.tsv, special_points.tsv and the resonance figure.
+#pragma once
+
+#include <boost/program_options.hpp>
+
+#include "cli/study.hpp"
+
+namespace stickslip::cli {
+
+// The forcing options (--force, --omega), in the model group.
+po::options_description ForcingOptions();
+// True when the forced oscillator is asked for: --force A != 0, or --param
+// omega|force. Throws UsageError for --omega without a forcing.
+bool ForcedRequested(const Arguments& args);
+// The whole forced run; returns the exit code.
+int RunForced(const Arguments& args, const std::string& prog, const std::string& command);
+
+}  // namespace stickslip::cli

@@ -1,0 +1,137 @@
+// The forced branch as TSV tables and the resonance figure's script.
+#include "stickslip/forced/report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+namespace {
+
+std::vector<std::string> Columns(ForcedAxis axis) {
+  return {"branch",   ForcedAxisName(axis),         "m",      "sticks",   "crossings", "kind",
+          "x_min",    "x_max",    "xdot_min", "xdot_max", "period",  "x0",
+          "xdot0",    "mult1_re", "mult1_im", "mult2_re", "mult2_im", "mult_max",
+          "stable"};
+}
+
+std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const ForcedParams& p,
+                                  ForcedAxis axis) {
+  ForcedParams at = p;
+  SetAxis(at, axis, r.p);
+  const double period = r.m * 2 * M_PI / at.omega;
+  const double mult_max = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
+  const double numbers[] = {r.p,
+                            r.extremes.x_min,
+                            r.extremes.x_max,
+                            r.extremes.xdot_min,
+                            r.extremes.xdot_max,
+                            period,
+                            r.x0,
+                            r.xdot0,
+                            r.multipliers[0].real(),
+                            r.multipliers[0].imag(),
+                            r.multipliers[1].real(),
+                            r.multipliers[1].imag(),
+                            mult_max};
+  for (double x : numbers)
+    if (!std::isfinite(x))
+      throw InvalidArgument("forced branch row at " + std::string(ForcedAxisName(axis)) + " = " +
+                            FormatNumber(r.p) + " has a non-finite value");
+  return {piece,      r.p,        r.m,        r.sticks,   r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
+          numbers[1], numbers[2], numbers[3], numbers[4], period,      r.x0,
+          r.xdot0,    numbers[8], numbers[9], numbers[10], numbers[11], mult_max,
+          r.stable ? 1 : 0};
+}
+
+}  // namespace
+
+TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+                           const ForcedParams& p) {
+  auto cols = Columns(axis);
+  TsvTable t(cols);
+  for (const ForcedPiece& piece : pieces)
+    for (const ForcedBranchRow& r : piece.branch.rows) t.AddRow(Cells(r, piece.index, p, axis));
+  return t;
+}
+
+TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+                            const ForcedParams& p) {
+  auto cols = Columns(axis);
+  cols.insert(cols.begin(), "label");
+  TsvTable t(cols);
+  for (const ForcedPiece& piece : pieces)
+    for (const ForcedBranchRow& r : piece.branch.special) {
+      auto cells = Cells(r, piece.index, p, axis);
+      cells.insert(cells.begin(), ForcedLabelName(r.label));
+      t.AddRow(cells);
+    }
+  return t;
+}
+
+bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis) {
+  return axis == ForcedAxis::kOmega && p.base.law == LawKind::kCoulomb &&
+         p.base.mu_s == p.base.mu_k && p.base.v == 0 && p.base.beta == 0;
+}
+
+// Den Hartog (1931): X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
+// U = sin(pi / W) / (W (1 + cos(pi / W))), real where the motion has no stop.
+std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
+                            const std::string& title, const std::vector<double>& gap,
+                            int specials) {
+  const std::string ax = ForcedAxisName(axis);
+  std::ostringstream os;
+  os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax
+     << ".\nset terminal pngcairo size 1000,650 enhanced font ',11'\n"
+     << "set output 'resonance.png'\nset datafile separator '\\t'\n"
+     << "set title \"" << title << "\" noenhanced\n"
+     << "set xlabel '" << (axis == ForcedAxis::kOmega ? "{/Symbol W} (forcing / natural frequency)"
+                                                      : ax)
+     << "'\nset ylabel 'x_{max}'\nset grid\nset key top right box opaque\nset yrange [0:*]\n"
+     << "c(name) = column(name)\n"
+     << "in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s\n"
+     << "# a style's rows, and the row after each of its runs (no gap at a change)\n"
+     << "sel(b, k, s) = (cur = in(b, k, s), out = (cur || (prev && c('branch') == b)) ? "
+        "c('x_max') : 1/0, prev = cur, out)\n";
+  if (gap.size() == 2)
+    os << "set object 1 rect from " << FormatNumber(std::min(gap[0], gap[1])) << ", graph 0 to "
+       << FormatNumber(std::max(gap[0], gap[1])) << ", graph 1 fc rgb '#e8e8e8' fs solid "
+       << "noborder behind\nset label 1 'not traced: |x| unbounded' at "
+       << FormatNumber(std::max(gap[0], gap[1])) << ", graph 0.93 offset 1, 0 tc rgb '#555555'\n";
+  const bool dh = DenHartogApplies(p, axis);
+  if (dh)
+    os << "mu = " << FormatNumber(p.base.mu_k) << "; A = " << FormatNumber(p.force) << "\n"
+       << "V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))\n"
+       << "D(w) = V(w)**2 - (mu * U(w))**2\n"
+       << "DH(w) = D(w) > 0 ? sqrt(D(w)) : 1/0\n";
+  os << "plot \\\n";
+  const char* kinds[] = {"non-stop", "stick-slip"};
+  const char* colours[] = {"#1f5fbf", "#c0392b"};
+  bool first = true;
+  for (int b = 1; b <= pieces; ++b)
+    for (int k = 0; k < 2; ++k)
+      for (int s = 1; s >= 0; --s) {
+        os << (first ? "  " : ", \\\n  ") << "prev = 0, 'branch.tsv' using '" << ax << "':(sel(" << b
+           << ", '" << kinds[k] << "', " << s << ")) with lines lw " << (s ? 2.5 : 1.8) << " dt "
+           << (s ? 1 : 2) << " lc rgb '" << colours[k] << "' ";
+        if (b == 1)
+          os << "title '" << kinds[k] << (s ? ", stable" : ", unstable") << "'";
+        else
+          os << "notitle";
+        first = false;
+      }
+  for (int b = 1; b <= pieces && dh; ++b)  // on the computed non-stop rows only
+    os << ", \\\n  'branch.tsv' using '" << ax << "':(c('branch') == " << b
+       << " && strcol('kind') eq 'non-stop' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
+       << "lc rgb 'black' " << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
+  if (specials > 0)  // LP and PD, located (special_points.tsv)
+    os << ", \\\n  'special_points.tsv' using '" << ax << "':'x_max' with points pt 7 ps 1.2 "
+       << "lc rgb 'black' notitle, \\\n  'special_points.tsv' using '" << ax
+       << "':'x_max':'label' with labels offset 0, 1 notitle";
+  os << "\n";
+  return os.str();
+}
+
+}  // namespace stickslip
