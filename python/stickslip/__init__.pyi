@@ -1,7 +1,7 @@
 # Type stub of the stickslip package (the compiled stickslip._core),
 # written by hand; python/tests/test_api.py checks its names against the module.
 import enum
-from typing import Any, Dict, Iterator, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -374,3 +374,22 @@ def chart(params: Params, param: Optional[str] = None, from_: Optional[float] = 
           rtol: Optional[float] = None, atol: Optional[float] = None,
           integrator: IntegratorLike = None, method: MethodLike = None,
           options: Optional[ChartOptions] = None) -> Chart: ...
+
+# Sweeps (stickslip._sweep): grid x sample on Dask, serially, or on a cluster.
+class SweepError(RuntimeError): ...
+class SweepResult:
+    columns: List[str]
+    data: Array
+    meta: Dict[str, Any]
+    def __getitem__(self, name: str) -> Array: ...
+    def __len__(self) -> int: ...
+    def to_tsv(self, path: str) -> None: ...
+def sweep(fn: Callable[[Dict[str, float]], Dict[str, float]],
+          grid: Optional[Mapping[str, Sequence[float]]] = None,
+          sample: Optional[Mapping[str, Sequence[float]]] = None, *,
+          scheduler: Optional[str] = None, n_workers: int = 2, chunk_size: Optional[int] = None,
+          meta: Optional[Mapping[str, Any]] = None) -> SweepResult: ...
+def group_stats(result: SweepResult, by: str, value: str,
+                quantiles: Sequence[float] = (0.05, 0.5, 0.95),
+                where: Optional[str] = None) -> Dict[str, Array]: ...
+def stick_slip_orbit(point: Mapping[str, float]) -> Dict[str, float]: ...

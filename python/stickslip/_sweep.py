@@ -82,6 +82,8 @@ class SweepResult:
     """Rows of a sweep: `columns` (axis names, then fn's keys) and `data`, a
     read-only float array of shape (points, columns); `meta` is the metadata."""
 
+    __slots__ = ("columns", "data", "meta")
+
     def __init__(self, columns, data, meta):
         self.columns = list(columns)
         data = np.asarray(data, dtype=float)

@@ -20,11 +20,12 @@ except KeyboardInterrupt:
 """
 
 # Each runs for seconds to minutes uninterrupted (measured on this machine:
-# simulate 130 s, continue_branch to v = 100 11 s, basins 801 x 801 11 s, chart 27 s,
+# simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart 27 s,
 # its regions on 1000 x 1000 cells about 90 s).
 CALLS = """{
  "simulate": lambda: stickslip.simulate(stickslip.Params(v_m=1e-6), xdot0=0.0),
- "continue_branch": lambda: stickslip.continue_branch(stickslip.Params(), "v", 0.05, 100.0),
+ "continue_branch": lambda: stickslip.continue_branch(stickslip.Params(), "v", 0.05, 0.5,
+                                                     max_step=5e-5, integrator="cvode"),
  "basins": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801),
  "chart": lambda: stickslip.chart(stickslip.Params(), max_step=5e-5),
  "chart_regions": lambda: stickslip.chart(stickslip.Params(), regions=(1000, 1000)),
