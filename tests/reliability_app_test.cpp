@@ -199,7 +199,7 @@ TEST_F(Reliability, StdoutFailuresAreReportedAfterTheFilesAreWritten) {
 }
 
 // Items 11 and 12: ss_simulate has --max_time and SIGINT handling, writes
-// nothing when stopped, and prints plain progress lines off a terminal.
+// the trajectory so far marked partial when stopped, and prints plain progress lines off a terminal.
 TEST_F(Reliability, SimulateStopsOnTimeLimitAndSignal) {
   const std::vector<std::string> slow = {"--v_m", "1e-6", "--xdot0", "0",     "--t_end",
                                          "1e4",   "--dt", "0.01",    "--out", Path("w/t.tsv")};
@@ -217,7 +217,9 @@ TEST_F(Reliability, SimulateStopsOnTimeLimitAndSignal) {
   r = Run(kSimulate, slow, sigint);
   EXPECT_EQ(r.code, 1) << err_;
   EXPECT_TRUE(Contains(err_, "SIGINT"));
-  EXPECT_EQ(Listing(Path("w")), std::set<std::string>{});
+  // The trajectory so far, marked partial (the exit-code table of every app).
+  EXPECT_EQ(Listing(Path("w")), std::set<std::string>{"t.tsv"});
+  EXPECT_TRUE(Contains(ReadFile(Path("w/t.tsv")), "# status: partial (cancelled"));
 }
 
 // Item 12 and issue 14: a slow phase with nothing else to report (the grid

@@ -39,8 +39,9 @@ constexpr const char* kNotes =
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
     "With --plot, FILE.gp names the TSV and the PNG by their plain names: run it in\n"
     "FILE's directory. The files are written as one set (docs/reliability.md).\n"
-    "Exit status: 0 done; 1 numerical or I/O failure, interruption or time limit (no\n"
-    "data file written; if the figure cannot be drawn whole, no file is replaced);\n"
+    "Exit status: 0 done; 1 numerical or I/O failure, interruption or time limit (the\n"
+    "trajectory so far is written, marked '# status: partial (...)', without a figure;\n"
+    "if the figure cannot be drawn whole, no file is replaced);\n"
     "2 bad input (nothing written); 3 gnuplot is missing (data and script written).\n"
     "Example: ss_simulate --study studies/seed.ini --xdot0 0.125 --out traj.tsv --plot";
 
@@ -287,11 +288,19 @@ int Main(int argc, char** argv) {
     throw ss::Error(std::string("numerical failure: ") + e.what());
   }
   if (!r.ok() || !bad.empty()) {
-    // No data file: a truncated run must not pass for a complete one.
-    cli::PrintError(kProg, Failure(r, bad, run) + "; no output written");
+    // As every app: the rows so far (all finite), marked partial with where
+    // the run stopped; no figure, and an older one is removed (not this run's).
+    const std::string why = Failure(r, bad, run);
+    table.AddMeta("status", "partial (" + why + ")");
+    run.Phase("writing");
+    files.Write(names.tsv, table.str());
+    files.Commit(s.plot ? std::vector<std::string>{names.gp, names.png}
+                        : std::vector<std::string>{});
+    cli::PrintError(kProg, why + "; the trajectory so far is written to " + s.out +
+                               ", marked partial");
     return 1;
   }
-  table.AddMeta("status", "complete");  // a failed run writes no file
+  table.AddMeta("status", "complete");
   return WriteOutputs(files, names, s, model, table, run, scales);
 }
 
