@@ -1,0 +1,15 @@
+import numpy as np, stickslip
+
+def main():
+    rng = np.random.default_rng(1)
+    grid = {"v": np.linspace(0.05, 0.45, 20)}
+    sample = {"mu_s": rng.normal(0.4, 0.02, 500)}
+    r = stickslip.sweep(stickslip.stick_slip_orbit, grid, sample)          # LocalCluster, 2 workers
+    r.to_tsv("/tmp/lead/sweep.tsv")
+    s = stickslip.group_stats(r, "v", "amplitude", where="stick_slip")
+    print(len(r), "orbits in", r.meta["seconds"], "s on", r.meta["workers"], "workers")
+    for v, f, q in zip(s["v"], s["fraction"], s["q0.5"]):
+        print(f"v = {v:.3f}  P(stick-slip) = {f:.3f}  median amplitude = {q:.4f}")
+
+if __name__ == "__main__":  # Dask starts its workers by re-importing this file
+    main()
