@@ -1,11 +1,15 @@
-import numpy as np, stickslip
+"""A sweep on Dask: P(stick-slip) and the median amplitude over mu_s ~ N(0.4, 0.02^2) x v."""
+import numpy as np
+
+import stickslip
+
 
 def main():
     rng = np.random.default_rng(1)
     grid = {"v": np.linspace(0.05, 0.45, 20)}
     sample = {"mu_s": rng.normal(0.4, 0.02, 500)}
     r = stickslip.sweep(stickslip.stick_slip_orbit, grid, sample)          # LocalCluster, 2 workers
-    r.to_tsv("/tmp/lead/sweep.tsv")
+    r.to_tsv("sweep.tsv")  # one self-describing file
     s = stickslip.group_stats(r, "v", "amplitude", where="stick_slip")
     print(len(r), "orbits in", r.meta["seconds"], "s on", r.meta["workers"], "workers")
     for v, f, q in zip(s["v"], s["fraction"], s["q0.5"]):
