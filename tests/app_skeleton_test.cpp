@@ -41,7 +41,7 @@ using stickslip::testing_util::Start;
 using stickslip::testing_util::Wait;
 using stickslip::testing_util::WriteFile;
 
-bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+using stickslip::testing_util::HaveGnuplot;
 
 // Small, quick runs of the two apps (about 0.5 s and 2 s).
 const std::vector<std::string> kChartArgs = {"--grid", "8"};

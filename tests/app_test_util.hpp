@@ -22,6 +22,9 @@
 
 namespace stickslip::testing_util {
 
+// Whether gnuplot runs here (figure tests skip without it).
+inline bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+
 inline ::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
   if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";

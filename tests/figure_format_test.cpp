@@ -23,7 +23,7 @@ using testing_util::WriteFile;
 const std::string kBin = STICKSLIP_BIN_DIR;
 const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
-bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+using stickslip::testing_util::HaveGnuplot;
 
 class FigureFormatTest : public ::testing::Test {
  protected:

@@ -24,7 +24,7 @@ using testing_util::Listing;
 using testing_util::ReadFile;
 using testing_util::WriteFile;
 
-bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+using stickslip::testing_util::HaveGnuplot;
 
 class Output : public ::testing::Test {
  protected:

@@ -32,7 +32,7 @@ using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::RunChild;
 using stickslip::testing_util::WriteFile;
 
-bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+using stickslip::testing_util::HaveGnuplot;
 
 class Reliability : public ::testing::Test {
  protected:

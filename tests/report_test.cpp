@@ -41,7 +41,7 @@ struct Scratch {
   ~Scratch() { EXPECT_EQ(std::system(("rm -rf '" + dir + "'").c_str()), 0); }
 };
 
-bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+using stickslip::testing_util::HaveGnuplot;
 
 // A write that fails after the temporary file exists (RLIMIT_FSIZE: the
 // kernel refuses bytes past the limit with EFBIG) must remove that file and

@@ -36,7 +36,7 @@ using stickslip::testing_util::RunChild;
 using stickslip::testing_util::Start;
 using stickslip::testing_util::Wait;
 
-bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+using stickslip::testing_util::HaveGnuplot;
 
 class RobustnessApp : public ::testing::Test {
  protected:
