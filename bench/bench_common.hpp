@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/continuation.hpp"
-#include "stickslip/numbers.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/continuation/continuation.hpp"
+#include "numerics/numbers.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace ssbench {
 

@@ -22,9 +22,9 @@
 #include "brute_force.hpp"
 #include "reference/reference_orbit.hpp"
 #include "regularised.hpp"
-#include "stickslip/continuation.hpp"
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 #include "stickslip/version.hpp"
 namespace ssbench {
 

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "stickslip/flow.hpp"
+#include "stickslip/integrate/flow.hpp"
 
 namespace bench {
 

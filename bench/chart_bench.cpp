@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/chart.hpp"
+#include "stickslip/chart/chart.hpp"
 
 namespace {
 

@@ -5,9 +5,9 @@
 #include <limits>
 #include <sstream>
 
-#include "cvode.hpp"
+#include "integrate/cvode.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/friction.hpp"
+#include "stickslip/model/friction.hpp"
 
 namespace bench {
 

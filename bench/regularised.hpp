@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "stickslip/params.hpp"
+#include "stickslip/model/params.hpp"
 
 namespace bench {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "reference/reference_orbit.hpp"
-#include "stickslip/params.hpp"
+#include "stickslip/model/params.hpp"
 
 namespace {
 

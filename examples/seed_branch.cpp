@@ -3,7 +3,7 @@
 // points, GR (grazing-sliding) and HB (Hopf, seed eq. 3.16).
 #include <cstdio>
 
-#include "stickslip/continuation.hpp"
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/version.hpp"
 

@@ -12,8 +12,8 @@
 
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model.hpp"
-#include "stickslip/params.hpp"
+#include "stickslip/model/model.hpp"
+#include "stickslip/model/params.hpp"
 #include "stickslip/version.hpp"
 
 namespace py = pybind11;

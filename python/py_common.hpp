@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/flow.hpp"
+#include "stickslip/integrate/flow.hpp"
 
 namespace stickslip::python {
 

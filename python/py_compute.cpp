@@ -9,7 +9,7 @@
 
 #include "py_results.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/orbit_scan.hpp"
+#include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip::python {
 

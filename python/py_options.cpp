@@ -3,9 +3,9 @@
 #include <pybind11/stl.h>
 
 #include "py_common.hpp"
-#include "stickslip/basin.hpp"
-#include "stickslip/chart.hpp"
-#include "stickslip/continuation.hpp"
+#include "stickslip/basin/basin.hpp"
+#include "stickslip/chart/chart.hpp"
+#include "stickslip/continuation/continuation.hpp"
 
 namespace stickslip::python {
 

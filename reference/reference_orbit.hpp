@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "stickslip/params.hpp"
+#include "stickslip/model/params.hpp"
 
 // Odeint's steppers copy their uninitialized scratch arrays on construction; silence GCC's
 // -Wuninitialized about that for odeint and this header only.

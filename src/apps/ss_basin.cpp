@@ -10,7 +10,7 @@
 #include "cli/app.hpp"
 #include "cli/basin_curve.hpp"
 #include "cli/study.hpp"
-#include "stickslip/basin_report.hpp"
+#include "stickslip/io/basin_report.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;

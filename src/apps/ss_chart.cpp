@@ -10,10 +10,10 @@
 #include "cli/app.hpp"
 #include "cli/restart.hpp"
 #include "cli/study.hpp"
-#include "stickslip/chart.hpp"
-#include "stickslip/chart_region_faces.hpp"
-#include "stickslip/chart_report.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/chart/chart.hpp"
+#include "stickslip/chart/chart_region_faces.hpp"
+#include "stickslip/io/chart_report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;

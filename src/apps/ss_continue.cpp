@@ -17,12 +17,12 @@
 #include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
-#include "stickslip/branch_disturbance.hpp"
-#include "stickslip/branch_report.hpp"
-#include "stickslip/comparison.hpp"
-#include "stickslip/continuation.hpp"
-#include "stickslip/numbers.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/basin/branch_disturbance.hpp"
+#include "stickslip/io/branch_report.hpp"
+#include "stickslip/estimates/comparison.hpp"
+#include "stickslip/continuation/continuation.hpp"
+#include "numerics/numbers.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;

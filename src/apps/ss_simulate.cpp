@@ -17,10 +17,10 @@
 #include "cli/physical.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
-#include "stickslip/figure_style.hpp"
-#include "stickslip/flow.hpp"
-#include "stickslip/model.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/figure_style.hpp"
+#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/model.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;

@@ -1,6 +1,6 @@
 #include "cli/about.hpp"
 
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 #include "stickslip/version.hpp"
 
 namespace stickslip::cli {

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cli/study.hpp"
-#include "stickslip/flow.hpp"
-#include "stickslip/params.hpp"
+#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/params.hpp"
 
 namespace stickslip::cli {
 

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "cli/gnuplot.hpp"
-#include "stickslip/figure_style.hpp"
+#include "stickslip/io/figure_style.hpp"
 #include "cli/output.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"

@@ -6,7 +6,7 @@
 
 #include "cli/output.hpp"
 #include "cli/run_control.hpp"
-#include "stickslip/basin_stability_report.hpp"
+#include "stickslip/io/basin_stability_report.hpp"
 
 namespace stickslip::cli {
 

@@ -7,7 +7,7 @@
 
 #include "cli/about.hpp"
 #include "cli/study.hpp"
-#include "stickslip/basin.hpp"
+#include "stickslip/basin/basin.hpp"
 
 namespace stickslip::cli {
 

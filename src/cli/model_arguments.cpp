@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "cli/study.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
 

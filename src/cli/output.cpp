@@ -15,7 +15,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
 

@@ -1,7 +1,7 @@
 #include "cli/restart.hpp"
 
 #include "cli/physical.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "cli/study.hpp"
-#include "stickslip/chart.hpp"
-#include "stickslip/restart.hpp"
+#include "stickslip/chart/chart.hpp"
+#include "stickslip/io/restart.hpp"
 
 namespace stickslip::cli {
 

@@ -8,9 +8,9 @@
 #include <thread>
 #include <vector>
 
-#include "stickslip/branch_report.hpp"
+#include "stickslip/io/branch_report.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
 namespace {

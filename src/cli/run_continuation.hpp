@@ -5,7 +5,7 @@
 #pragma once
 
 #include "cli/run_control.hpp"
-#include "stickslip/continuation.hpp"
+#include "stickslip/continuation/continuation.hpp"
 
 namespace stickslip::cli {
 

@@ -10,7 +10,7 @@
 #include <iostream>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
 

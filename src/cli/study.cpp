@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "cli/run_control.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
 

@@ -38,8 +38,8 @@
 #include <vector>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/flow.hpp"
-#include "stickslip/params.hpp"
+#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/params.hpp"
 
 namespace stickslip::cli {
 

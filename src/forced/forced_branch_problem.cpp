@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/numbers.hpp"
+#include "numerics/numbers.hpp"
 
 namespace stickslip {
 

@@ -7,7 +7,7 @@
 
 #include "forced_driver.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/numbers.hpp"
+#include "numerics/numbers.hpp"
 
 namespace stickslip {
 

@@ -2,7 +2,7 @@
 
 #include "stickslip/errors.hpp"
 #include "stickslip/model/forced.hpp"
-#include "stickslip/numbers.hpp"
+#include "numerics/numbers.hpp"
 
 namespace stickslip {
 

@@ -13,9 +13,9 @@
 #include <cmath>
 #include <optional>
 
-#include "../mu_series.hpp"
-#include "../poly_roots.hpp"
-#include "../series.hpp"
+#include "integrate/mu_series.hpp"
+#include "integrate/poly_roots.hpp"
+#include "integrate/series.hpp"
 #include "stickslip/model/forced.hpp"
 
 namespace stickslip::forced_detail {

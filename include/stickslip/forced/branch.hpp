@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/palc.hpp"
+#include "stickslip/continuation/palc.hpp"
 
 namespace stickslip {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "stickslip/forced/branch.hpp"
-#include "stickslip/report.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip {
 

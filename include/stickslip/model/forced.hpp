@@ -8,10 +8,10 @@
 #include <cmath>
 #include <string>
 
-#include "stickslip/friction.hpp"
-#include "stickslip/model.hpp"
+#include "stickslip/model/friction.hpp"
+#include "stickslip/model/model.hpp"
 #include "stickslip/model/system.hpp"
-#include "stickslip/params.hpp"
+#include "stickslip/model/params.hpp"
 
 namespace stickslip {
 

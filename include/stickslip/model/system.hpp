@@ -20,7 +20,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "stickslip/model.hpp"
+#include "stickslip/model/model.hpp"
 
 namespace stickslip::model {
 

@@ -1,0 +1,156 @@
+// Exact event-driven integration of the Filippov belt model: each slip mode is
+// integrated on its own smooth field by a stepper (Taylor series by default,
+// CVODE selectable) that locates the switches as roots; stick is solved in
+// closed form (x' = v). Optionally the variational equations ride along, and
+// the saltation matrices are applied at every switch, giving d z(t) / d z(t0).
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stickslip/model/model.hpp"
+
+namespace stickslip {
+
+class Stepper;  // src/stepper.hpp: private
+
+// Whether Flow's parameter column supports this parameter under this law:
+// beta, v, and every law parameter mu(s) depends on affinely (all but v_m,
+// v_s and delta of their own laws).
+bool ParameterColumnSupported(LawKind law, const std::string& name);
+
+// The integrator of the slip phases.
+enum class Integrator {
+  kTaylor,  // Taylor series, order and step from the tolerance (Jorba & Zou 2005)
+  kCvode,   // SUNDIALS CVODE with the linear multistep Method below
+};
+const char* IntegratorName(Integrator i);  // "taylor", "cvode"
+
+// CVODE's linear multistep method (only with Integrator::kCvode).
+enum class Method {
+  kAdams,  // Adams-Moulton with fixed-point iteration: non-stiff, the default
+  kBdf,    // BDF with Newton and a dense linear solver: for stiff problems
+};
+const char* MethodName(Method m);  // "adams", "bdf"
+
+struct FlowOptions {
+  double rtol = 1e-11;  // relative tolerance
+  double atol = 1e-13;  // absolute tolerance
+  Integrator integrator = Integrator::kTaylor;
+  Method method = Method::kAdams;
+  long max_steps = 200000;      // steps per call of the stepper (per output interval)
+  long max_switches = 1000000;  // mode changes per run
+  // Empty if valid, otherwise one line naming the offending option.
+  std::string ValidationError() const;
+};
+
+// Where a run stops. The defaults integrate until t_max with all switching.
+struct StopRule {
+  double t_max = std::numeric_limits<double>::infinity();
+  bool at_stick = false;         // on arrival in Omega, before sticking
+  bool at_section = false;       // where x' crosses 0 downwards (a maximum of x)
+  bool at_velocity_max = false;  // at the first maximum of x' in slip below, after the start
+  bool switching = true;         // false: stay on the start mode's smooth field
+};
+
+enum class FlowStatus {
+  kTimeLimit,         // reached t_max
+  kStick,             // arrived in Omega (StopRule::at_stick)
+  kSection,           // x' = 0 downwards (StopRule::at_section)
+  kVelocityMax,       // a maximum of x' (StopRule::at_velocity_max)
+  kIntegratorFailed,  // the stepper failed (e.g. step-size underflow); message says where
+  kTooManySwitches,   // more than FlowOptions::max_switches mode changes
+  kCancelled,         // the cancel hook returned true
+};
+const char* FlowStatusName(FlowStatus s);
+
+// One output point of a simulation.
+struct Sample {
+  double t;
+  Vec2 z;
+  Mode mode;
+};
+using Observer = std::function<void(const Sample&)>;
+
+struct FlowResult {
+  FlowStatus status = FlowStatus::kTimeLimit;
+  std::string message;  // for kIntegratorFailed / kTooManySwitches: where and what
+  double t = 0;
+  Vec2 z = Vec2::Zero();
+  Mode mode = Mode::kSlipBelow;
+  // Extremes over the run, located as roots (x' = 0 for x, x'' = 0 for x'),
+  // together with the segment end points.
+  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  double t_stick = 0;       // time spent in stick
+  int switches = 0;         // mode changes
+  int crossings = 0;        // crossings of x' = v without sticking
+  std::vector<Mode> modes;  // the mode sequence, start mode first
+  // d z(t) / d z(t0), saltation matrices included; only with variational.
+  Mat2 jacobian = Mat2::Identity();
+  // d z(t) / dp at fixed t and fixed start, for Flow's parameter column:
+  // has_dzdp only on a run without switches (one smooth slip segment; the
+  // saltation for a parameter is not modelled) and with the Taylor integrator.
+  Vec2 dzdp = Vec2::Zero();
+  bool has_dzdp = false;
+  bool ok() const {
+    return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches &&
+           status != FlowStatus::kCancelled;
+  }
+};
+
+class Flow {
+ public:
+  // Throws InvalidArgument if options are invalid.
+  Flow(const Model& model, const FlowOptions& options);
+  ~Flow();
+  Flow(const Flow&) = delete;
+  Flow& operator=(const Flow&) = delete;
+
+  // Change the model; solvers are kept and reused.
+  void set_model(const Model& model) { model_ = model; }
+  const Model& model() const { return model_; }
+  const FlowOptions& options() const { return options_; }
+
+  // Integrate from (t0, z0) in mode m0 until `stop` says so. With variational,
+  // the result carries d z / d z0. With observer and output_dt > 0, samples are
+  // reported every output_dt and at every switch.
+  FlowResult Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, bool variational,
+                 double output_dt = 0, const Observer& observer = nullptr);
+  // Same, starting in the mode the Filippov rule gives z0.
+  FlowResult Run(double t0, const Vec2& z0, const StopRule& stop, bool variational = false) {
+    return Run(t0, z0, model_.ModeAt(z0), stop, variational);
+  }
+
+  // The parameter column: with variational runs on the Taylor integrator,
+  // dz/dp for this parameter (a ParameterAxis name) rides in the same
+  // recurrences. Empty: none (the column's stepper is kept for reuse). Throws InvalidArgument for
+  // an unknown name or one ParameterColumnSupported rejects for the model's law.
+  void set_parameter_column(const std::string& name);
+  bool has_parameter_column() const {
+    return !parameter_.empty() && options_.integrator == Integrator::kTaylor;
+  }
+
+  long total_steps() const { return total_steps_; }
+  // Polled after every step: a run stops with kCancelled once it returns true
+  // (interruption, wall-time limits). Empty: never.
+  void set_cancel(std::function<bool()> cancel) { cancel_ = std::move(cancel); }
+
+ private:
+  struct SlipEnd;
+  SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational, double output_dt,
+               double& next_output, const Observer& observer, FlowResult& r);
+  Stepper& Solver(bool variational);
+
+  Model model_;
+  FlowOptions options_;
+  Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
+  std::unique_ptr<Stepper> plain_, var_, param_;
+  std::string parameter_, param_name_;  // the active column; param_'s
+  long total_steps_ = 0;
+  std::function<bool()> cancel_;
+};
+
+}  // namespace stickslip

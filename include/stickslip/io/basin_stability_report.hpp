@@ -1,0 +1,30 @@
+// Exact basin stability as text: the "basin stability <attractor> <fraction>"
+// lines, and the curve against a parameter as basin_stability.tsv with the
+// gnuplot script that draws basin_stability.png. Writing is the caller's.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stickslip/basin/basin_stability.hpp"
+#include "stickslip/io/report.hpp"
+
+namespace stickslip {
+
+/// One line per share: "basin stability steady-sliding 0.123456789012"
+/// (12 decimals), without a trailing newline.
+std::vector<std::string> BasinStabilityLines(const BasinStability& b);
+
+/// Columns: <param>, steady_sliding, stick_slip, pure_slip (all stable
+/// pure-slip orbits), undecided (a region no attractor bounds), enclosed (the
+/// fraction of the box inside the innermost pure-slip orbit, 0 if none), then
+/// metadata: model, the box, status.
+TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& param,
+                             const std::string& model_description, const Box& box);
+
+/// gnuplot script drawing basin_stability.png (plus `suffix`, default empty)
+/// from basin_stability.tsv in its own directory: each fraction against the
+/// parameter.
+std::string BasinStabilityScript(const std::string& param, const std::string& title);
+
+}  // namespace stickslip

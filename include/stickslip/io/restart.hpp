@@ -1,0 +1,43 @@
+// A labelled point of an earlier ss_continue run, read back from its output
+// directory (branch.tsv, special_points.tsv and their '# key: value' lines), so
+// a new run can start there: AUTO-07p's IRS (restart label).
+#pragma once
+
+#include <string>
+
+#include "stickslip/errors.hpp"
+#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/params.hpp"
+
+namespace stickslip {
+
+/// The point, with everything a new run needs to start from it.
+struct LabelledPoint {
+  std::string label;          // "HB1", "GR1", ..., or the point number as given ("17")
+  int pt = 0;                 // its row in branch.tsv (1-based)
+  std::string type;           // GR, HB, LP, or the row's kind: stick-slip, pure-slip, equilibrium
+  std::string param;          // the parameter that run continued
+  double p = 0;               // its value at the point
+  Params params;              // every parameter at the point (param = p)
+  FlowOptions flow;           // that run's integrator and tolerances
+  Vec2 state = Vec2::Zero();  // x_start, xdot_start (BranchPoint / SpecialPoint)
+  double period = 0;          // nan for steady sliding
+};
+
+/// Why a restart cannot be read: the run directory (a file missing, corrupt,
+/// not an ss_continue run) or the point (no such label or number in that run).
+class RestartError : public InvalidArgument {
+ public:
+  enum class Part { kRun, kPoint };
+  RestartError(Part part, const std::string& what) : InvalidArgument(what), part_(part) {}
+  Part part() const { return part_; }
+
+ private:
+  Part part_;
+};
+
+/// Reads `point` (a label such as "HB1", or a point number "17" of branch.tsv)
+/// from the run in `dir`. Throws RestartError naming the file or the point.
+LabelledPoint ReadLabelledPoint(const std::string& dir, const std::string& point);
+
+}  // namespace stickslip

@@ -1,0 +1,43 @@
+#include "stickslip/basin/branch_disturbance.hpp"
+
+#include <limits>
+
+#include "stickslip/basin/basin.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const std::string& param,
+                                            const ContinuationResult& r, const FlowOptions& flow,
+                                            const std::function<bool()>& cancelled) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<ExtraColumn> cols = {{"dist_x", {}}, {"dist_xdot", {}}, {"dist_energy", {}}};
+  for (const BranchPoint& pt : r.points) {
+    Disturbance d{nan, nan, nan};
+    const bool unstable_orbit =
+        pt.kind == PointKind::kPureSlip && !pt.stable && !(cancelled && cancelled());
+    if (unstable_orbit && pt.amplitude <= 0) {
+      d = Disturbance{0, 0, 0};  // the orbit shrinks onto steady sliding (a Hopf point)
+    } else if (unstable_orbit && pt.period > 0) {
+      Params p = base;
+      SetParameter(p, param, pt.p);
+      const Model m(p);
+      Orbit o;
+      o.kind = OrbitKind::kPureSlip;
+      o.start = Vec2(m.SteadySliding().x + pt.amplitude, 0.0);
+      o.period = pt.period;
+      o.x_min = pt.x_min, o.x_max = pt.x_max;
+      try {
+        d = SmallestDisturbance(m, o, flow, 2000);
+      } catch (const Error&) {
+        d = Disturbance{nan, nan, nan};  // the run failed: no value, not a guess
+      }
+    }
+    cols[0].values.push_back(d.x);
+    cols[1].values.push_back(d.xdot);
+    cols[2].values.push_back(d.energy);
+  }
+  return cols;
+}
+
+}  // namespace stickslip

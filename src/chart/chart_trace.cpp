@@ -1,0 +1,190 @@
+#include "chart/chart_trace.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stickslip {
+
+using Eigen::VectorXd;
+
+namespace {
+
+PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
+  PalcOptions p;
+  p.ds = p.ds_max = o.max_step;
+  p.ds_min = 1e-6 * o.max_step;
+  p.tol = o.tol;
+  p.max_newton = 12;
+  p.max_points = kMaxCurvePoints;
+  p.scale = VectorXd::Constant(problem.unknowns(), o.other_scale);
+  p.scale[o.i1] = o.plane.width1();
+  p.scale[o.i1 + 1] = o.plane.width2();
+  p.cancelled = o.cancelled;  // also between rejected steps
+  return p;
+}
+
+struct Leg {
+  std::vector<VectorXd> u;
+  std::string end;
+  std::string cut;  // the way ended early (a PALC failure): why
+  int evaluations = 0;
+  bool cancelled = false, stopped = false, closed = false;
+};
+
+// Replaces the last point (outside) by the border crossing of the last chord.
+void Land(Palc& palc, const TraceOptions& o, std::vector<VectorXd>& u) {
+  const VectorXd a = u[u.size() - 2], b = u.back();
+  u.pop_back();
+  const double lo[2] = {o.plane.from1, o.plane.from2}, hi[2] = {o.plane.to1, o.plane.to2};
+  double s = 2;
+  int k_cross = -1;
+  double border = 0;
+  for (int j = 0; j < 2; ++j) {
+    const int k = o.i1 + j;
+    for (double edge : {lo[j], hi[j]}) {
+      const bool crosses = (edge == lo[j]) ? b[k] < edge : b[k] > edge;
+      if (!crosses || b[k] == a[k]) continue;
+      const double sk = (edge - a[k]) / (b[k] - a[k]);
+      if (sk < s) s = sk, k_cross = k, border = edge;
+    }
+  }
+  if (k_cross < 0) return;
+  VectorXd pred = a + s * (b - a);
+  pred[k_cross] = border;
+  const PalcCorrection c = palc.CorrectFixed(pred, k_cross);
+  if (c.ok && (c.u - pred).norm() < (b - a).norm()) u.push_back(c.u);
+}
+
+// A way that failed within two steps of the border (the rectangle's edge is the
+// model's domain edge, e.g. beta = 0, where iterates beyond it cannot be
+// evaluated): the border point along the last tangent, if it corrects.
+bool LandAhead(Palc& palc, const TraceOptions& o, const PalcPoint& last, std::vector<VectorXd>& u) {
+  const VectorXd dir = last.tangent.cwiseProduct(palc.options().scale);
+  const double lo[2] = {o.plane.from1, o.plane.from2}, hi[2] = {o.plane.to1, o.plane.to2};
+  double s = HUGE_VAL;
+  int k_cross = -1;
+  double border = 0;
+  for (int j = 0; j < 2; ++j) {
+    const int k = o.i1 + j;
+    if (dir[k] == 0) continue;
+    const double edge = dir[k] > 0 ? hi[j] : lo[j], sk = (edge - last.u[k]) / dir[k];
+    if (sk >= 0 && sk < s) s = sk, k_cross = k, border = edge;
+  }
+  if (k_cross < 0 || s > 2 * o.max_step) return false;
+  VectorXd pred = last.u + s * dir;
+  pred[k_cross] = border;
+  const PalcCorrection c = palc.CorrectFixed(pred, k_cross);
+  if (!c.ok || !o.plane.Contains(c.u[o.i1], c.u[o.i1 + 1])) return false;
+  u.push_back(c.u);
+  return true;
+}
+
+Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
+           const VectorXd& direction) {
+  Leg leg;
+  bool outside = false;
+  const int before = palc.evaluations();
+  auto monitor = [&](const std::vector<PalcPoint>& pts) {
+    const VectorXd& u = pts.back().u;
+    if (o.cancelled && o.cancelled()) return !(leg.cancelled = true);
+    if (!o.plane.Contains(u[o.i1], u[o.i1 + 1])) return !(outside = true);
+    if (pts.size() > 1 && o.stop && o.stop(u)) return !(leg.stopped = true);
+    return true;
+  };
+  const PalcResult r = palc.Trace(u0, fixed, direction, monitor);
+  if (r.status == PalcStatus::kStopped && r.message == "cancelled") leg.cancelled = true;
+  for (const PalcPoint& p : r.points) leg.u.push_back(p.u);
+  if (outside) {
+    leg.end = "border";
+    if (leg.u.size() >= 2)
+      Land(palc, o, leg.u);
+    else
+      leg.u.clear();
+  } else if (leg.stopped) {
+    leg.end = "stopped";
+  } else if (r.status == PalcStatus::kClosed) {
+    leg.end = "closed";
+    leg.closed = true;
+  } else if (r.status == PalcStatus::kStepTooSmall && !r.points.empty() &&
+             LandAhead(palc, o, r.points.back(), leg.u)) {
+    leg.end = "border";
+  } else if (!leg.cancelled) {
+    leg.end = std::string(PalcStatusName(r.status)) + (r.message.empty() ? "" : ": " + r.message);
+    leg.cut = leg.end;
+  }
+  leg.evaluations = palc.evaluations() - before;
+  return leg;
+}
+
+}  // namespace
+
+TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const VectorXd& u0,
+                        int fixed, const VectorXd& direction) {
+  Palc palc(problem, Options(problem, options));
+  const Leg leg = Follow(palc, options, u0, fixed, direction);
+  TraceResult t;
+  t.u = leg.u;
+  t.ends = "start / " + leg.end;
+  t.cut = leg.cut;
+  t.evaluations = leg.evaluations;
+  t.cancelled = leg.cancelled;
+  t.stopped = leg.stopped;
+  return t;
+}
+
+TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, const VectorXd& u0,
+                          int fixed) {
+  Palc palc(problem, Options(problem, options));
+  TraceResult t;
+  // The tangent at the start orients the two ways.
+  const PalcCorrection c = palc.CorrectFixed(u0, fixed);
+  if (!c.ok) {
+    t.ends = "start failed: " + c.why;
+    t.cut = t.ends;
+    t.evaluations = palc.evaluations();
+    return t;
+  }
+  const VectorXd tangent = palc.Tangent(c.jac, VectorXd());
+  // A start on the border: the way that leaves the rectangle at once is not taken.
+  auto leaves = [&](const VectorXd& dir) {
+    const VectorXd u = c.u + 1e-6 * dir.cwiseProduct(palc.options().scale);
+    return !options.plane.Contains(u[options.i1], u[options.i1 + 1]);
+  };
+  Leg fwd, back;
+  fwd.end = back.end = "border";
+  if (!leaves(tangent)) fwd = Follow(palc, options, c.u, fixed, tangent);
+  t.cancelled = fwd.cancelled;
+  if (!fwd.closed && !fwd.cancelled && !leaves(-tangent))
+    back = Follow(palc, options, c.u, fixed, -tangent);
+  if (fwd.u.empty() && back.u.empty()) fwd.u.push_back(c.u);
+  t.cancelled = t.cancelled || back.cancelled;
+  t.u.assign(back.u.rbegin(), back.u.rend());
+  if (!t.u.empty() && !fwd.u.empty()) t.u.pop_back();  // the shared start
+  t.u.insert(t.u.end(), fwd.u.begin(), fwd.u.end());
+  t.ends = fwd.closed ? "closed" : (back.end.empty() ? "start" : back.end) + " / " + fwd.end;
+  t.cut = back.cut.empty() ? fwd.cut : back.cut;
+  t.evaluations = palc.evaluations();
+  return t;
+}
+
+bool NearCurve(const std::vector<Curve>& curves, CurveKind kind, const Plane& plane,
+               const Eigen::Vector2d& x) {
+  const Eigen::Vector2d scale(plane.width1(), plane.width2());
+  const Eigen::Vector2d xs = x.cwiseQuotient(scale);
+  for (const Curve& c : curves) {
+    if (c.kind != kind) continue;
+    for (size_t i = 0; i < c.points.size(); ++i) {
+      const Eigen::Vector2d b =
+          Eigen::Vector2d(c.points[i].p1, c.points[i].p2).cwiseQuotient(scale);
+      const Eigen::Vector2d a =
+          i == 0 ? b : Eigen::Vector2d(c.points[i - 1].p1, c.points[i - 1].p2).cwiseQuotient(scale);
+      const Eigen::Vector2d d = b - a;
+      const double s =
+          d.squaredNorm() > 0 ? std::clamp((xs - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      if ((a + s * d - xs).norm() < 2e-3) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,54 @@
+// Following one curve of a chart through its rectangle with PALC (palc.hpp):
+// both ways from a start point, each way until the curve leaves the rectangle
+// (the last point is then placed on the border by a correction with the
+// crossed coordinate held), closes, is stopped, or the continuation fails.
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/chart/chart.hpp"
+#include "stickslip/continuation/palc.hpp"
+#include "stickslip/chart/plane.hpp"
+
+namespace stickslip {
+
+struct TraceOptions {
+  Plane plane;
+  int i1 = 0;              // u[i1], u[i1 + 1] are the plane's coordinates
+  double max_step = 0.01;  // fraction of the rectangle (scaled arclength)
+  double other_scale = 1;  // scale of the unknowns other than the plane's
+  // Corrector tolerance on the scaled update (PalcOptions::tol). The point
+  // returned is the one before the last update, so this bounds its error.
+  double tol = 1e-12;
+  std::function<bool()> cancelled;
+  // Stops a way at an accepted point (e.g. an LP orbit touching the belt).
+  std::function<bool(const Eigen::VectorXd&)> stop;
+};
+
+struct TraceResult {
+  std::vector<Eigen::VectorXd> u;  // the curve, in order
+  std::string ends;                // "<first end> / <last end>"
+  // Empty, or why a way ended early (max-points, step-too-small, start-failed):
+  // the curve is cut short inside the rectangle.
+  std::string cut;
+  int evaluations = 0;
+  bool cancelled = false;
+  bool stopped = false;  // the last way ended on TraceOptions::stop
+};
+
+// Both ways from u0, corrected with component `fixed` held.
+TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options,
+                          const Eigen::VectorXd& u0, int fixed);
+// One way, the tangent oriented along `direction` (scaled).
+TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options,
+                        const Eigen::VectorXd& u0, int fixed, const Eigen::VectorXd& direction);
+
+// Whether x (a plane point) lies within 2e-3 of the rectangle's size of a
+// curve of this kind already traced (start points found again are skipped).
+bool NearCurve(const std::vector<Curve>& curves, CurveKind kind, const Plane& plane,
+               const Eigen::Vector2d& x);
+
+}  // namespace stickslip

@@ -1,0 +1,197 @@
+#include "integrate/poly_roots.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stickslip {
+namespace {
+
+constexpr int kMaxDegree = 40;
+constexpr int kMaxDepth = 60;     // halvings: 2^-60 is below double resolution on [0, 1]
+constexpr int kMaxPieces = 2000;  // a bound on the work where g stays near 0
+
+struct Piece {
+  double u0, u1;
+  int depth;
+  double b[kMaxDegree + 1];
+};
+
+// b_i = sum_{k <= i} C(i, k) / C(n, k) c_k (Farouki & Rajan 1988), with the
+// ratios tabulated once for every degree: rows of independent products.
+class BernsteinTable {
+ public:
+  BernsteinTable() {
+    int at = 0;
+    for (int n = 0; n <= kMaxDegree; ++n) {
+      start_[n] = at;
+      for (int i = 0; i <= n; ++i) {
+        double ratio = 1;  // C(i, k) / C(n, k), from k = 0
+        for (int k = 0; k <= i; ++k) {
+          ratio_[at++] = ratio;
+          if (k < i) ratio *= static_cast<double>(i - k) / (n - k);
+        }
+      }
+    }
+  }
+  const double* Row(int n, int i) const { return ratio_ + start_[n] + i * (i + 1) / 2; }
+
+ private:
+  static constexpr int kSize = (kMaxDegree + 1) * (kMaxDegree + 2) * (kMaxDegree + 3) / 6;
+  int start_[kMaxDegree + 1];
+  double ratio_[kSize];
+};
+
+void ToBernstein(const double* c, int n, double* b) {
+  static const BernsteinTable table;
+  for (int i = 0; i <= n; ++i) {
+    const double* r = table.Row(n, i);
+    double s0 = 0, s1 = 0;
+    int k = 0;
+    for (; k + 1 <= i; k += 2) {
+      s0 += r[k] * c[k];
+      s1 += r[k + 1] * c[k + 1];
+    }
+    if (k == i) s0 += r[k] * c[k];
+    b[i] = s0 + s1;
+  }
+}
+
+// De Casteljau at 1/2: left half into l, right half into r.
+void Split(const double* b, int n, double* l, double* r) {
+  double w[kMaxDegree + 1];
+  std::copy(b, b + n + 1, w);
+  for (int j = 0; j <= n; ++j) {
+    l[j] = w[0];
+    r[n - j] = w[n - j];
+    for (int i = 0; i < n - j; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
+  }
+}
+
+int Sign(double x, int zero_sign) { return x > 0 ? 1 : (x < 0 ? -1 : zero_sign); }
+
+}  // namespace
+
+void RestrictToTail(const double* c, int n, double u, double* out) {
+  std::copy(c, c + n + 1, out);
+  for (int j = 0; j < n; ++j)
+    for (int k = n - 1; k >= j; --k) out[k] += u * out[k + 1];
+  double scale = 1;
+  for (int k = 1; k <= n; ++k) out[k] *= (scale *= 1 - u);
+}
+
+PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
+  PolyRoot out;
+  double tail = 0;  // sum_{k>=3} |c_k|
+  for (int k = 3; k <= n; ++k) tail += std::abs(c[k]);
+  double scale = tail;
+  for (int k = 0; k <= std::min(n, 2); ++k) scale += std::abs(c[k]);
+  if (scale == 0) return out;
+  // Rounding of the conversion and the halvings: a few ulp of sum |c_k| per degree.
+  const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
+  // The cheap bound first, then the Bernstein hull.
+  if (QuadraticBoundExcludes(c, n, sign, tail)) return out;
+  auto g = [&](double u) { return Horner(c, n, u); };
+  auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
+
+  // Depth-first, left half first: the first interval that holds a sign change
+  // holds the first root.
+  Piece stack[kMaxDepth + 2];
+  int top = 0, pieces = 0;
+  stack[0].u0 = 0;
+  stack[0].u1 = 1;
+  stack[0].depth = 0;
+  ToBernstein(c, n, stack[0].b);
+  while (top >= 0) {
+    Piece& p = stack[top];
+    const double* b = p.b;
+    double lower = INFINITY;  // min of sign * b_i: a lower bound of sign * g here
+    int variations = 0;
+    for (int i = 0; i <= n; ++i) {
+      lower = std::min(lower, sign * b[i]);
+      if (i > 0 && Sign(b[i], zero_sign) != Sign(b[i - 1], zero_sign)) ++variations;
+    }
+    if (lower > margin) {  // no root here
+      --top;
+      continue;
+    }
+    const double u0 = p.u0, u1 = p.u1;
+    const bool end_changed = changed(u1);
+    const bool isolated = variations == 1 && end_changed && !changed(u0);
+    // Within rounding of 0 (lower >= -margin), only a sign change that shows
+    // in the values counts: halving further would chase noise.
+    const bool noise = lower >= -margin || ++pieces > kMaxPieces;
+    if (isolated || noise || p.depth >= kMaxDepth || u1 - u0 <= 4e-16 * std::max(1.0, u1)) {
+      if (!end_changed) {  // a touch within rounding, or no root: nothing here
+        --top;
+        continue;
+      }
+      // Bracket [u0, u1]: g has `sign` at u0 (or u0 is the interval start) and not at u1.
+      if (changed(u0)) {
+        out.found = true;
+        out.u = u0;
+        return out;
+      }
+      // Newton on the polynomial, safeguarded by the bracket [lo, hi] (g has
+      // `sign` at lo and not at hi), then bisection to the first point where
+      // the sign has changed.
+      double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
+      const double g0 = g(u0), g1 = g(u1);
+      if (g0 != g1) {  // start from the secant (regula falsi) point
+        const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
+        if (xs > u0 && xs < u1) x = xs;
+      }
+      for (int it = 0; it < 100; ++it) {
+        double gk = c[n], dg = 0;  // g' by Horner; g itself as changed() evaluates it
+        for (int k = n - 1; k >= 1; --k) {
+          dg = dg * x + gk;
+          gk = gk * x + c[k];
+        }
+        dg = dg * x + gk;
+        const double gx = g(x);
+        (Sign(gx, zero_sign) != sign ? hi : lo) = x;
+        double next = x - gx / dg;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        // Quadratic convergence: a step below 1e-9 leaves an error far below rounding.
+        const bool done = std::abs(next - x) <= 1e-9 * std::max(1.0, std::abs(x));
+        x = next;
+        if (done || !(hi - lo > 4e-16 * std::max(1.0, hi))) break;
+      }
+      if (x > lo && x < hi) {
+        const double d = 8e-16 * std::max(1.0, std::abs(x)) + 1e-17;
+        if (changed(x)) {
+          hi = x;
+          if (x - d > lo && !changed(x - d)) lo = x - d;
+        } else {
+          lo = x;
+          if (x + d < hi && changed(x + d)) hi = x + d;
+        }
+      }
+      for (int it = 0; it < 200 && std::nextafter(lo, 2.0) < hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (changed(mid) ? hi : lo) = mid;
+      }
+      out.found = true;
+      out.u = hi;
+      return out;
+    }
+    // Halve: the right half below the left one on the stack.
+    Piece& right = stack[top];
+    double lb[kMaxDegree + 1], rb[kMaxDegree + 1];
+    Split(b, n, lb, rb);
+    const double mid = 0.5 * (u0 + u1);
+    const int depth = p.depth + 1;
+    right.u0 = mid;
+    right.u1 = u1;
+    right.depth = depth;
+    std::copy(rb, rb + n + 1, right.b);
+    Piece& l = stack[++top];
+    l.u0 = u0;
+    l.u1 = mid;
+    l.depth = depth;
+    std::copy(lb, lb + n + 1, l.b);
+  }
+  return out;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,97 @@
+// Private to src/: the seam between Flow and the integrators of one slip mode.
+// A stepper integrates z = (x, x') (and, with variational equations, Phi) on
+// the smooth field of one slip mode and reports the roots of
+//   g0 = x' - v   arrival at the switching surface;
+//   g1 = x''      extremum of x': catches a touch of x' = v shorter than a step;
+//   g2 = x'       extremum of x, and the Poincare section of pure-slip orbits,
+// in CVODE's convention (CVodeGetRootInfo): +1 where g rises through 0, -1
+// where it falls, 0 for no root.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/model.hpp"
+
+namespace stickslip {
+
+constexpr int kNumRoots = 3;
+
+// Which roots of g_i stop Advance (stop_dir): kAnyRoot, only those where g_i
+// rises (+1) or falls (-1), or none (0). A stepper may pass the others without
+// stopping (the CVODE stepper stops at every root); roots of g1 and g2 it
+// passes are extrema of x' and x, recorded in *extrema when it is set.
+constexpr int kAnyRoot = 2;
+struct Extrema {
+  double x_min, x_max, xdot_min, xdot_max;
+};
+
+// One slip mode of a model, with the noise bands of steady sliding.
+struct SlipProblem {
+  const Model* model = nullptr;
+  Mode mode = Mode::kSlipBelow;
+  double rtol = 0, atol = 0;
+  const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
+  // Steady sliding (mu(v), 0) for slip below (else 0): the Taylor step size
+  // measures x by XScale, so the error of a small orbit about it is relative
+  // to its amplitude, not to |mu(v)|, and never looser than relative to |x|.
+  double x_center = 0;
+  double XScale(double x) const { return std::min(std::abs(x), std::abs(x - x_center)); }
+  int stop_dir[kNumRoots] = {kAnyRoot, kAnyRoot, kAnyRoot};
+  Extrema* extrema = nullptr;
+  bool Stops(int i, int direction) const {
+    return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
+  }
+
+  double Acceleration(double x, double xdot) const { return model->Acceleration(mode, x, xdot); }
+  // At rest on steady sliding to within the integration noise: x' ~ atol,
+  // x'' ~ rtol |x| (the force balance -x + mu(v) of nearly equal terms). There
+  // x' and x'' chatter about 0 and neither is an event.
+  bool AtRest(double x, double xdot, double acc) const {
+    const double scale = std::abs(x) + std::abs(model->v()) + 1.0;
+    const double band_v = std::max(64 * 2.2e-16 * scale, 10 * atol);
+    const double band_a = std::max(64 * 2.2e-16 * scale, 10 * (atol + rtol * scale));
+    return std::abs(xdot) <= band_v && std::abs(acc) <= band_a;
+  }
+};
+
+enum class StepOutcome {
+  kReached,      // reached tout or the stop time
+  kRoot,         // stopped at a root; RootInfo says which
+  kCloseRoots,   // CVODE refused two roots too close together (cvRcheck2)
+  kTooMuchWork,  // max_steps steps without reaching tout
+  kFailed,       // an error; last_error() says which
+  kCancelled,    // the cancel hook returned true after a step
+};
+
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  // Restart at (t0, y0) on problem's field; y0 has size() entries, Phi
+  // column-major after z when size() >= 6, dz/dp after Phi when size() == 8.
+  virtual void Reset(const SlipProblem& problem, double t0, const double* y0) = 0;
+  virtual void SetStopTime(double t) = 0;
+  // Integrate towards tout; *t is where it stopped, with state y().
+  virtual StepOutcome Advance(double tout, double* t) = 0;
+  virtual const double* y() const = 0;
+  virtual void RootInfo(int* roots_found) const = 0;
+  // Dense output at t inside the last step [LastStepStart(), CurrentTime()].
+  virtual bool Interpolate(double t, double* out) = 0;
+  virtual double LastStepStart() = 0;
+  // The stepper's own time (also after a failure).
+  virtual double CurrentTime() = 0;
+  virtual long steps() const = 0;  // since the last Reset
+  virtual int size() const = 0;
+  virtual const std::string& last_error() const = 0;
+};
+
+// The stepper options.integrator names, for z alone or with Phi; with a
+// parameter name (Taylor only), also with the column dz/dp.
+std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational,
+                                     const std::string& parameter = "");
+
+}  // namespace stickslip

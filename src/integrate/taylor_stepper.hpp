@@ -1,0 +1,150 @@
+// Private to src/: the Taylor stepper for one slip mode (taylor_stepper.cpp:
+// recurrences, order and step; taylor_events.cpp: the roots of the events on
+// each step polynomial).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "integrate/mu_series.hpp"
+#include "integrate/poly_roots.hpp"
+#include "integrate/series.hpp"
+#include "integrate/stepper.hpp"
+
+namespace stickslip {
+
+constexpr int kTaylorMaxOrder = 36;
+constexpr Reciprocals<kTaylorMaxOrder> kTaylorInverse;
+
+// JZ (3.8): order p = ceil(-ln(eps) / 2 + 1).
+inline int OrderFor(double eps) {
+  return std::min(kTaylorMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
+}
+
+class TaylorStepper final : public Stepper {
+ public:
+  // parameter: also the column dz/dp for that parameter (then size() is 8).
+  TaylorStepper(const FlowOptions& o, bool variational, const std::string& parameter)
+      : rtol_(o.rtol),
+        atol_(o.atol),
+        max_steps_(o.max_steps),
+        n_(!parameter.empty() ? 8
+           : variational      ? 6
+                              : 2),
+        order_rel_(OrderFor(o.rtol)),
+        order_abs_(OrderFor(o.atol)),
+        parameter_(parameter) {}
+
+  void Reset(const SlipProblem& problem, double t0, const double* y0) override {
+    p_ = problem;
+    sigma_ = p_.mode == Mode::kSlipBelow ? 1 : -1;
+    mu_.emplace(p_.model->friction());
+    if (n_ == 8) ResolveParameter();
+    s_.Clear();
+    cc_.Clear();
+    for (auto& row : c_) std::fill(row, row + kTaylorMaxOrder + 1 + kPad, 0.0);
+    std::copy(y0, y0 + n_, yend_);
+    std::copy(y0, y0 + n_, y_);
+    ta_ = tb_ = t_ = t0;
+    tstop_ = INFINITY;
+    steps_ = 0;
+    pending_ = passed_root_ = false;
+    for (auto& s : state_) s = kFresh;
+  }
+  void SetStopTime(double t) override { tstop_ = t; }
+  StepOutcome Advance(double tout, double* t) override;
+  const double* y() const override { return y_; }
+  void RootInfo(int* rf) const override { std::copy(rf_, rf_ + kNumRoots, rf); }
+  bool Interpolate(double t, double* out) override {
+    const double slack = 4e-16 * std::max(1.0, std::abs(t));
+    if (!(t >= ta_ - slack && t <= tb_ + slack)) return false;
+    Evaluate(t - ta_, out);
+    return true;
+  }
+  double LastStepStart() override { return ta_; }
+  double CurrentTime() override { return tb_; }
+  long steps() const override { return steps_; }
+  int size() const override { return n_; }
+  const std::string& last_error() const override { return error_; }
+
+ private:
+  enum SignState { kFresh, kTracked, kDeflate, kInactive };
+  // The roots of one step: the first that stops (rf, first), and the
+  // extrema passed on the way.
+  struct Roots {
+    double first = 2;
+    int rf[kNumRoots] = {0, 0, 0};
+    struct Passed {
+      double u;
+      int i;
+    } passed[2 * kTaylorMaxOrder + 8];
+    int n_passed = 0;
+    // Returns whether the root stops.
+    bool Add(int i, double u, int direction, bool stops) {
+      if (!stops) {
+        if (n_passed < static_cast<int>(sizeof passed / sizeof passed[0]))
+          passed[n_passed++] = {u, i};
+        return false;
+      }
+      if (u > first) return true;
+      if (u < first) std::fill(rf, rf + kNumRoots, 0);
+      first = u;
+      rf[i] = direction;
+      return true;
+    }
+  };
+  // tail: sum_{k>=3} |g_k| of gi (the quadratic bound).
+  void EventRoots(int i, const double* gi, int deg, double tail, Roots& roots);
+
+  bool NewStep();
+  void Coefficients(int order);
+  void ResolveParameter();
+  double ParamTerm(int k, double muk, double muk_shifted, double dmu) const;
+  template <LawKind L, bool Var>
+  void Recurrences(int order);
+  double StepSize(int order) const;
+  void Events(double h);
+  void Evaluate(double tau, double* out) const {
+    for (int i = 0; i < n_; ++i) out[i] = Horner(c_[i], order_, tau);
+  }
+  bool Failed(const std::string& what) {
+    std::ostringstream os;
+    os << "taylor: " << what << " at t = " << ta_;
+    error_ = os.str();
+    return false;
+  }
+
+  double rtol_, atol_;
+  long max_steps_;
+  int n_, order_rel_, order_abs_;
+  int order_ = 0;
+  SlipProblem p_;
+  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
+  // This step's Taylor coefficients, kPad finite entries past the order for
+  // Cauchy(); the series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
+  double c_[8][kTaylorMaxOrder + 1 + kPad];
+  double hp_[kTaylorMaxOrder + 1 + kPad];  // powers of this step's h
+  Series<kTaylorMaxOrder> s_, cc_;
+  std::optional<MuSeries> mu_;
+  // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
+  enum class ParamKind { kBeta, kV, kAffine };
+  std::string parameter_;
+  ParamKind kind_ = ParamKind::kBeta;
+  std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_
+  double dp_ = 1;
+  double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
+  double tstop_ = INFINITY;
+  double yend_[8], y_[8];  // state at tb, at t
+  SignState state_[kNumRoots];
+  int sign_[kNumRoots] = {1, 1, 1};
+  bool pending_ = false;      // a root at tb not yet returned
+  bool passed_root_ = false;  // the last step passed a root
+  int rf_[kNumRoots] = {0, 0, 0};
+  long steps_ = 0;
+  std::string error_;
+};
+
+}  // namespace stickslip

@@ -1,0 +1,181 @@
+// chart.gp: the chart figure (chart_report.hpp). Regions are filled polygons
+// between the exact curves; the curves, codim-2 points and labels on top; the
+// key below the frame.
+#include <cmath>
+#include <sstream>
+
+#include "stickslip/io/chart_report.hpp"
+
+namespace stickslip {
+
+namespace {
+struct Symbol {
+  const char* name;
+  const char* words;
+  const char* symbol;  // gnuplot enhanced text
+};
+constexpr Symbol kSymbols[] = {
+    {"v", "belt speed", "v"},
+    {"beta", "damping ratio", "β"},
+    {"mu_s", "static friction coefficient", "μ_s"},
+    {"mu_m", "minimum friction coefficient", "μ_m"},
+    {"v_m", "speed of minimum friction", "v_m"},
+    {"mu_k", "kinetic friction coefficient", "μ_k"},
+    {"v_s", "Stribeck speed", "v_s"},
+    {"delta", "friction decay rate", "δ"},
+    {"k5", "quintic coefficient", "k_5"},
+};
+
+const Symbol* Find(const std::string& name) {
+  for (const Symbol& s : kSymbols)
+    if (name == s.name) return &s;
+  return nullptr;
+}
+
+std::string SymbolOf(const std::string& name) {
+  const Symbol* s = Find(name);
+  return s ? s->symbol : name;
+}
+
+constexpr const char* kFill[] = {"#eeeeee", "#f4a6a6", "#a6c8f4", "#d9b3ef"};
+
+// Polygons, largest first: a face inside a hole is painted over the face around.
+void Polygons(std::ostream& os, const ChartResult& r) {
+  int id = 1;
+  for (const RegionFace& rf : r.faces) {
+    const auto& ring = rf.face.outer;
+    os << "set object " << id++ << " polygon from " << ring[0][0] << "," << ring[0][1];
+    for (size_t i = 1; i <= ring.size(); ++i)
+      os << " \\\n  to " << ring[i % ring.size()][0] << "," << ring[i % ring.size()][1];
+    os << " \\\n  fc rgb '" << kFill[static_cast<int>(rf.region)]
+       << "' fs solid 1.0 noborder behind\n";
+  }
+}
+
+// Codim-2 labels: one per point (equal labels within 1% of the rectangle are
+// one point); a label whose default place (up right) is within 6% of an
+// earlier point's goes down right, then up left, then down left.
+void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
+  struct Placed {
+    double x, y;
+  };
+  std::vector<Placed> placed;
+  std::vector<const Codim2Point*> shown;
+  for (const Codim2Point& p : r.codim2) {
+    bool dup = false;
+    for (const Codim2Point* q : shown)
+      dup = dup || (q->label == p.label && std::abs(q->p1 - p.p1) < 0.01 * pl.width1() &&
+                    std::abs(q->p2 - p.p2) < 0.01 * pl.width2());
+    if (dup) continue;
+    shown.push_back(&p);
+    const double dx[] = {1, 1, -1, -1}, dy[] = {1, -1, 1, -1};
+    int k = 0;
+    for (; k < 3; ++k) {
+      const double x = p.p1 + dx[k] * 0.03 * pl.width1(), y = p.p2 + dy[k] * 0.03 * pl.width2();
+      bool clash = false;
+      for (const Placed& q : placed)
+        clash = clash ||
+                (std::abs(q.x - x) < 0.06 * pl.width1() && std::abs(q.y - y) < 0.04 * pl.width2());
+      if (!clash) break;
+    }
+    placed.push_back({p.p1 + dx[k] * 0.03 * pl.width1(), p.p2 + dy[k] * 0.03 * pl.width2()});
+    os << "set label '" << p.label << "' at " << p.p1 << "," << p.p2 << " offset "
+       << (dx[k] > 0 ? "0.8" : "-0.8") << "," << (dy[k] > 0 ? "0.9" : "-0.9") << " "
+       << (dx[k] > 0 ? "left" : "right") << " front font ',13' noenhanced\n";
+  }
+}
+
+// The key entries of the curves present, then the curves from curves.tsv.
+void Curves(std::ostream& os, const ChartResult& r) {
+  struct Style {
+    CurveKind kind;
+    const char* type;
+    const char* color;
+    const char* dash;
+    const char* title;
+  };
+  const Style styles[] = {
+      {CurveKind::kHopf, "supercritical", "black", "1", "HB, supercritical"},
+      {CurveKind::kHopf, "subcritical", "black", "(7,5)", "HB, subcritical"},
+      {CurveKind::kGrazing, "persistence", "#c00000", "1", "GR, persistence"},
+      {CurveKind::kGrazing, "nonsmooth-fold", "#c00000", "(7,5)", "GR, nonsmooth fold"},
+      {CurveKind::kFold, "fold", "#0050d0", "1", "LP, pure-slip fold"},
+  };
+  for (const Style& st : styles) {
+    bool present = false;
+    for (const Curve& c : r.curves)
+      for (const CurvePoint& p : c.points)
+        present = present || (c.kind == st.kind && p.type == st.type);
+    if (!present) continue;
+    for (size_t i = 0; i < r.curves.size(); ++i) {
+      if (r.curves[i].kind != st.kind) continue;
+      os << ", \\\n     'curves.tsv' using 1:(($4 == " << i + 1 << " && strcol(9) eq '" << st.type
+         << "') ? $2 : NaN) with lines lw 2.5 lc rgb '" << st.color << "' dt " << st.dash;
+      os << (present ? std::string(" title '") + st.title + "'" : std::string(" notitle"));
+      present = false;  // one key entry per style
+    }
+  }
+}
+}  // namespace
+
+std::string AxisLabel(const std::string& name) {
+  const Symbol* s = Find(name);
+  return s ? std::string(s->words) + " " + s->symbol : name;
+}
+
+std::string ChartTitle(const Params& base, const Plane& plane) {
+  const char* law[] = {"cubic", "Coulomb", "Stribeck", "Leine"};  // LawKind's order
+  const int k = static_cast<int>(base.law);
+  std::string t = std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : LawName(base.law)) +
+                  " law";
+  const char* sep = ": ";
+  for (const auto& name : ParameterNames(base.law)) {
+    if (name == plane.p1 || name == plane.p2) continue;
+    if (name == "k5" && base.k5 == 0) continue;
+    t += sep + SymbolOf(name) + " = " + FormatNumber(GetParameter(base, name));
+    sep = ", ";
+  }
+  return t;
+}
+
+std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
+                        FigureFormat format) {
+  std::ostringstream os;
+  os.precision(17);
+  os << "# Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.\n"
+     << "# Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,\n"
+     << "# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.\n"
+     << "if (!exists('suffix')) suffix = ''\n"
+     << FigureTerminal(format, 1000, 820)
+     << "set output '" << FigureFile("chart", format) << "'.suffix\n"
+     << "set datafile separator '\\t'\n"
+     << "set datafile columnheaders\n"
+     << "set xlabel '" << AxisLabel(plane.p1) << "'\nset ylabel '" << AxisLabel(plane.p2) << "'\n"
+     << "set xrange [" << plane.from1 << ":" << plane.to1 << "]\n"
+     << "set yrange [" << plane.from2 << ":" << plane.to2 << "]\n"
+     << "set title \"" << title << "\"\n"
+     << "set lmargin at screen 0.11\nset rmargin at screen 0.96\n"
+     << "set tmargin at screen 0.93\nset bmargin at screen 0.25\n"
+     << "set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 "
+        "samplen 3\n"
+     << "set tics out nomirror\nset border 3 front\n";
+  Polygons(os, r);
+  Codim2Labels(os, r, plane);
+  os << "plot ";
+  const char* sep = "";
+  for (int k = 0; k < 4; ++k) {
+    bool present = false;
+    for (const RegionFace& f : r.faces) present = present || static_cast<int>(f.region) == k;
+    if (!present) continue;
+    os << sep << "NaN with boxes fs solid 1.0 lc rgb '" << kFill[k] << "' title '"
+       << RegionName(static_cast<Region>(k)) << "'";
+    sep = ", \\\n     ";
+  }
+  if (*sep == 0) os << "NaN notitle";
+  Curves(os, r);
+  os << ", \\\n     'codim2.tsv' using 2:3 with points pt 7 ps 1.4 lc rgb 'black' notitle\n"
+     << "unset output\n";
+  return os.str();
+}
+
+}  // namespace stickslip

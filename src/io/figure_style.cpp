@@ -1,0 +1,176 @@
+#include "stickslip/io/figure_style.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+namespace stickslip {
+
+const char* const kFillStickSlip = "#a6cee3";
+const char* const kFillPureSlip = "#fdbf6f";
+const char* const kFillEquilibrium = "#d9d9d9";
+const char* const kFillUndecided = "#ffffff";
+
+const char* FigureFormatName(FigureFormat f) {
+  switch (f) {
+    case FigureFormat::kPdf:
+      return "pdf";
+    case FigureFormat::kSvg:
+      return "svg";
+    case FigureFormat::kPng:
+      break;
+  }
+  return "png";
+}
+
+bool ParseFigureFormat(const std::string& text, FigureFormat* f) {
+  for (FigureFormat g : {FigureFormat::kPng, FigureFormat::kPdf, FigureFormat::kSvg})
+    if (text == FigureFormatName(g)) {
+      *f = g;
+      return true;
+    }
+  return false;
+}
+
+std::string FigureFile(const std::string& stem, FigureFormat f) {
+  return stem + "." + FigureFormatName(f);
+}
+
+const char* SeriesColor(int i) {
+  static const char* const kColors[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
+                                        "#e69f00", "#56b4e9", "#000000", "#f0e442"};
+  return kColors[((i % 8) + 8) % 8];
+}
+
+std::string FigureTerminal(FigureFormat f, int width, int height) {
+  std::ostringstream os;
+  switch (f) {
+    case FigureFormat::kPng:
+      os << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,12'";
+      break;
+    case FigureFormat::kPdf:
+      os << "set terminal pdfcairo size " << width / 100.0 << "in," << height / 100.0
+         << "in enhanced font 'Sans,9'";
+      break;
+    case FigureFormat::kSvg:
+      os << "set terminal svg size " << width << "," << height
+         << " enhanced font 'Sans,12' background '#ffffff'";
+      break;
+  }
+  return os.str() + "\n";
+}
+
+std::string FigurePreamble(FigureFormat f, int width, int height) {
+  std::ostringstream os;
+  os << FigureTerminal(f, width, height) << "set encoding utf8\n"
+     << "set datafile separator '\\t'\nset datafile columnheaders\n"
+     << "set grid lc rgb '#e0e0e0' lw 0.5\nset border lw 1\n"
+     << "set style line 1 lc rgb '#0072b2' lw 2 dt 1\n"
+     << "set style line 2 lc rgb '#0072b2' lw 2 dt 2\n"
+     << "set style line 3 lc rgb '#d55e00' lw 2 dt 1\n"
+     << "set style line 4 lc rgb '#d55e00' lw 2 dt 2\n"
+     << "set style line 5 lc rgb '#606060' lw 2 dt 1\n"
+     << "set style line 6 lc rgb '#606060' lw 2 dt 2\n"
+     << "set style line 7 lc rgb '#000000' lw 1 dt 3\n"
+     << "set style line 8 lc rgb '#000000' pt 7 ps 1.0\n"
+     << "set style line 9 lc rgb '#000000' lw 2.5 dt 1\n"
+     << "set style line 10 lc rgb '#009e73' lw 2 dt 2\n"
+     << "set style line 11 lc rgb '#cc79a7' lw 2 dt 4\n"
+     << "set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 "
+        "height 0.5\nset bmargin 7\n"
+     << "set style textbox opaque noborder margins 1,1\n";
+  return os.str();
+}
+
+namespace {
+// The symbol of a parameter name, in enhanced text; empty if it has none.
+std::string Symbol(const std::string& w) {
+  if (w == "beta") return "β";
+  if (w == "delta") return "δ";
+  if (w == "mu_s" || w == "mu_m" || w == "mu_k") return "μ_" + w.substr(3);
+  if (w == "v_m" || w == "v_s") return "v_" + w.substr(2);
+  if (w == "k5") return "k_5";
+  return "";
+}
+}  // namespace
+
+std::string EnhancedText(const std::string& plain) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < plain.size()) {
+    std::size_t j = i;
+    while (j < plain.size() &&
+           (std::isalnum(static_cast<unsigned char>(plain[j])) || plain[j] == '_'))
+      ++j;
+    if (j > i) {
+      const std::string word = plain.substr(i, j - i);
+      const std::string sym = Symbol(word);
+      if (!sym.empty()) {
+        out += sym;
+      } else {
+        for (char c : word) out += c == '_' ? std::string("\\\\_") : std::string(1, c);
+      }
+      i = j;
+      continue;
+    }
+    const char c = plain[i++];
+    if (c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') out += "\\\\";
+    out += c;
+  }
+  return out;
+}
+
+std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes) {
+  std::vector<std::string> items;  // "key=value" (a value may hold spaces) or "(...)"
+  std::istringstream in(description);
+  std::string word;
+  while (in >> word) {
+    if (word.find('=') == std::string::npos && word[0] != '(' && !items.empty())
+      items.back() += " " + word;
+    else
+      items.push_back(word);
+  }
+  std::string law, out, tail;
+  for (const std::string& it : items) {
+    const std::size_t eq = it.find('=');
+    if (eq == std::string::npos) {
+      tail += " " + EnhancedText(it);
+      continue;
+    }
+    const std::string key = it.substr(0, eq), value = it.substr(eq + 1);
+    if (key == "law") {
+      law = EnhancedText(value) + " law";
+    } else if (std::find(axes.begin(), axes.end(), key) == axes.end()) {
+      out += (out.empty() ? "" : ", ") + EnhancedText(key) + " = " + EnhancedText(value);
+    }
+  }
+  return law + (law.empty() || out.empty() ? "" : ": ") + out + tail;
+}
+
+std::string GnuplotQuoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"')
+      out += "\\\"";
+    else if (c == '\n')
+      out += "\\n";
+    else
+      out += c;  // backslashes are already doubled by EnhancedText
+  }
+  return out + "\"";
+}
+
+std::string ParameterAxisLabel(const std::string& param) {
+  if (param == "v") return "belt speed v";
+  if (param == "beta") return "damping β";
+  if (param == "mu_s") return "static friction μ_s";
+  if (param == "mu_m") return "minimum friction μ_m";
+  if (param == "mu_k") return "kinetic friction μ_k";
+  if (param == "v_m") return "speed of minimum friction v_m";
+  if (param == "v_s") return "Stribeck speed v_s";
+  if (param == "delta") return "regularisation δ";
+  if (param == "k5") return "quintic coefficient k_5";
+  return EnhancedText(param);
+}
+
+}  // namespace stickslip

@@ -1,0 +1,166 @@
+#include "stickslip/io/restart.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+#include "stickslip/io/report.hpp"
+
+namespace stickslip {
+
+namespace {
+
+using Part = RestartError::Part;
+
+// A TSV as TsvTable writes it: '# key: value' lines, a header, rows.
+struct Table {
+  std::string path;
+  std::map<std::string, std::string> meta;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+
+  int Column(const std::string& name) const {
+    for (std::size_t j = 0; j < header.size(); ++j)
+      if (header[j] == name) return static_cast<int>(j);
+    throw RestartError(Part::kRun, "'" + path + "' has no column '" + name +
+                                       "' (written before labelled points? run ss_continue again)");
+  }
+  const std::string& Meta(const std::string& key) const {
+    const auto it = meta.find(key);
+    if (it == meta.end())
+      throw RestartError(Part::kRun, "'" + path + "' has no '# " + key + ":' line");
+    return it->second;
+  }
+};
+
+std::vector<std::string> Split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t a = 0;
+  for (std::size_t b; (b = line.find('\t', a)) != std::string::npos; a = b + 1)
+    cells.push_back(line.substr(a, b - a));
+  cells.push_back(line.substr(a));
+  return cells;
+}
+
+Table Read(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw RestartError(Part::kRun, "cannot read '" + path + "': " + std::strerror(errno));
+  Table t;
+  t.path = path;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      const auto colon = line.find(": ");
+      if (colon != std::string::npos && t.header.empty())
+        t.meta.emplace(line.substr(2, colon - 2), line.substr(colon + 2));
+    } else if (t.header.empty()) {
+      t.header = Split(line);
+    } else if (!line.empty()) {
+      t.rows.push_back(Split(line));
+      if (t.rows.back().size() != t.header.size())
+        throw RestartError(Part::kRun, "'" + path + "' is corrupt: row " +
+                                           std::to_string(t.rows.size()) + " has " +
+                                           std::to_string(t.rows.back().size()) + " cells for " +
+                                           std::to_string(t.header.size()) + " columns");
+    }
+  }
+  if (t.header.empty()) throw RestartError(Part::kRun, "'" + path + "' has no header line");
+  return t;
+}
+
+double Number(const Table& t, const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno == ERANGE)
+    throw RestartError(Part::kRun,
+                       "'" + t.path + "' is corrupt: " + what + " = '" + text + "' is no number");
+  return x;
+}
+
+// The model and the solver options from the metadata (cli/about.cpp's RunMetadata).
+void ReadModel(const Table& t, LabelledPoint* lp) {
+  if (t.Meta("tool").rfind("ss_continue", 0) != 0)
+    throw RestartError(Part::kRun, "'" + t.path + "' was not written by ss_continue");
+  try {
+    lp->params.law = LawFromName(t.Meta("law"));
+  } catch (const InvalidArgument& e) {
+    throw RestartError(Part::kRun, "'" + t.path + "': " + e.what());
+  }
+  lp->param = t.Meta("continued");
+  if (!IsParameterName(lp->param))
+    throw RestartError(Part::kRun,
+                       "'" + t.path + "': continued '" + lp->param + "' is no parameter");
+  for (const std::string& name : ParameterNames(lp->params.law))
+    if (name != lp->param) SetParameter(lp->params, name, Number(t, t.Meta(name), name));
+  const std::string integrator = t.Meta("integrator");
+  if (integrator == "taylor") {
+    lp->flow.integrator = Integrator::kTaylor;
+  } else if (integrator == "cvode adams" || integrator == "cvode bdf") {
+    lp->flow.integrator = Integrator::kCvode;
+    lp->flow.method = integrator == "cvode bdf" ? Method::kBdf : Method::kAdams;
+  } else {
+    throw RestartError(Part::kRun, "'" + t.path + "': unknown integrator '" + integrator + "'");
+  }
+  lp->flow.rtol = Number(t, t.Meta("rtol"), "rtol");
+  lp->flow.atol = Number(t, t.Meta("atol"), "atol");
+  lp->flow.max_steps = static_cast<long>(Number(t, t.Meta("max_steps"), "max_steps"));
+}
+
+// The row's parameter value and state.
+void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint* lp) {
+  lp->p = Number(t, row[t.Column(lp->param)], lp->param);
+  SetParameter(lp->params, lp->param, lp->p);
+  lp->state = Vec2(Number(t, row[t.Column("x_start")], "x_start"),
+                   Number(t, row[t.Column("xdot_start")], "xdot_start"));
+  lp->period = Number(t, row[t.Column("period")], "period");
+  std::string err = ValidationError(lp->params);
+  if (err.empty()) err = lp->flow.ValidationError();
+  if (!err.empty() || !std::isfinite(lp->p) || !lp->state.allFinite())
+    throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " is invalid" +
+                                       (err.empty() ? "" : ": " + err));
+}
+
+}  // namespace
+
+LabelledPoint ReadLabelledPoint(const std::string& dir, const std::string& point) {
+  LabelledPoint lp;
+  lp.label = point;
+  const bool number = std::regex_match(point, std::regex("[1-9][0-9]{0,8}"));
+  if (!number && !std::regex_match(point, std::regex("(GR|HB|LP)[1-9][0-9]{0,8}")))
+    throw RestartError(Part::kPoint, "'" + point +
+                                         "' is neither a label (GR1, HB1, LP1, ...) nor a point "
+                                         "number (1, 2, ... of branch.tsv)");
+  const Table t = Read(dir + (number ? "/branch.tsv" : "/special_points.tsv"));
+  ReadModel(t, &lp);
+  if (number) {
+    lp.pt = std::stoi(point);
+    if (lp.pt > static_cast<int>(t.rows.size()))
+      throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path + "' (it has " +
+                                           std::to_string(t.rows.size()) + " points)");
+    const auto& row = t.rows[lp.pt - 1];
+    lp.type = row[t.Column("kind")];
+    ReadRow(t, row, &lp);
+    return lp;
+  }
+  const int lab = t.Column("lab");
+  std::string have;
+  for (const auto& row : t.rows) {
+    have += (have.empty() ? "" : ", ") + row[lab];
+    if (row[lab] != point) continue;
+    lp.type = row[t.Column("label")];
+    lp.pt = static_cast<int>(Number(t, row[t.Column("pt")], "pt"));
+    ReadRow(t, row, &lp);
+    return lp;
+  }
+  throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path +
+                                       "' (its labels: " + (have.empty() ? "none" : have) + ")");
+}
+
+}  // namespace stickslip

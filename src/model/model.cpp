@@ -1,0 +1,112 @@
+#include "stickslip/model/model.hpp"
+
+#include <cmath>
+
+namespace stickslip {
+
+const char* ModeName(Mode m) {
+  switch (m) {
+    case Mode::kSlipBelow:
+      return "slip-below";
+    case Mode::kStick:
+      return "stick";
+    case Mode::kSlipAbove:
+      return "slip-above";
+  }
+  return "?";
+}
+
+Model::Model(const Params& p) : p_(p), friction_((Validate(p), p)), two_beta_(2.0 * p.beta) {}
+
+Mat2 Model::Jacobian(Mode m, const Vec2& z) const {
+  Mat2 J;
+  if (m == Mode::kStick) {
+    J.setZero();
+    return J;
+  }
+  J << 0.0, 1.0, -1.0, -two_beta_ + SlipForceSlope(m, z[1]);
+  return J;
+}
+
+bool Model::InStickInterval(double x) const { return std::abs(StickForce(x)) <= p_.mu_s; }
+
+Mode Model::ModeAt(const Vec2& z) const {
+  if (z[1] < p_.v) return Mode::kSlipBelow;
+  if (z[1] > p_.v) return Mode::kSlipAbove;
+  if (InStickInterval(z[0])) return Mode::kStick;
+  // Outside Omega both one-sided accelerations point the same way.
+  return StickForce(z[0]) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove;
+}
+
+Mode Model::ModeAfterArrival(Mode from, double x) const {
+  if (InStickInterval(x)) return Mode::kStick;
+  return from == Mode::kSlipBelow ? Mode::kSlipAbove : Mode::kSlipBelow;
+}
+
+Mat2 Model::SaltationStickIn() {
+  Mat2 S;
+  S << 1.0, 0.0, 0.0, 0.0;
+  return S;
+}
+
+Mat2 Model::SaltationStickOut() const {
+  // f_slip - f_stick at the exit point is (0, mu(0+) - mu_s); zero unless coulomb.
+  const Vec2 z = ExitPoint();
+  const Vec2 df = Field(Mode::kSlipBelow, z) - Field(Mode::kStick, z);
+  Mat2 S = Mat2::Identity();
+  S.col(0) += df / p_.v;  // g = (1, 0), g^T f_stick = v
+  return S;
+}
+
+Mat2 Model::SaltationCrossing(Mode before, Mode after, const Vec2& z) const {
+  const Vec2 fb = Field(before, z);
+  const Vec2 fa = Field(after, z);
+  Mat2 S = Mat2::Identity();
+  S.col(1) += (fa - fb) / fb[1];  // n = (0, 1)
+  return S;
+}
+
+Equilibrium Model::SteadySliding() const {
+  Equilibrium e;
+  e.x = friction_.Mu(p_.v);
+  e.damping = two_beta_ + friction_.DMu(p_.v);
+  const double b = e.damping, d = b * b - 4.0;
+  if (d < 0) {  // complex pair: no cancellation
+    const double im = 0.5 * std::sqrt(-d);
+    e.lambda1 = {-0.5 * b, im};
+    e.lambda2 = {-0.5 * b, -im};
+    return e;
+  }
+  // Real roots of lambda^2 + b lambda + 1 = 0 in the stable form (Press et al.,
+  // Numerical Recipes, eq. 5.6.4): q = -(b + sgn(b) sqrt(b^2 - 4)) / 2, roots q
+  // and 1 / q. -b/2 + sqrt(...)/2 cancels to 0 for large b (v_m = 1e-6).
+  // lambda1 is the larger.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(d), b));
+  e.lambda1 = b > 0 ? 1.0 / q : q;
+  e.lambda2 = b > 0 ? q : 1.0 / q;
+  return e;
+}
+
+// The energy bound. With y = x - mu(v), w = x' and psi(s) = mu(s) + 2 beta s,
+// seed eq. (3.5) gives for E = (y^2 + w^2) / 2 in each mode:
+//   slip below, s = v - w > 0:  E' = -w (psi(v) - psi(s)),
+//   slip above, u = w - v > 0:  E' = -w (mu(v) + 2 beta w + mu(u)),
+//   stick, w = v:               E' = v y, and y <= mu_s - psi(v) there.
+// If mu is convex and positive on s > 0, psi(v) > mu_s >= mu(0+) and
+// psi'(v) = 2 beta + mu'(v) > 0, convexity gives psi(s) < psi(v) for s < v and
+// psi(s) > psi(v) for s > v, so E' < 0 except at isolated instants (w = 0, off
+// the equilibrium). E is continuous across switches, so it strictly decreases
+// along every trajectory: no closed orbit, and by LaSalle's invariance
+// principle (Khalil, Nonlinear Systems, 3rd ed., thm. 4.4) every trajectory
+// tends to steady sliding. mu is convex and positive for every law but the
+// cubic one with k5 > 0 (mu'' = 6 k3 s - 20 k5 s^3 turns negative). For the
+// seed set the bound holds from v = sqrt((k1 - 2 beta) / k3) = 0.764 on.
+bool Model::NoPeriodicOrbit() const {
+  if (p_.law == LawKind::kCubic && p_.k5 != 0) return false;
+  const double psi_v = friction_.Mu(p_.v) + two_beta_ * p_.v;
+  const double damping = two_beta_ + friction_.DMu(p_.v);
+  // Margins well above rounding: the bound is only used to skip searches.
+  return psi_v - p_.mu_s > 1e-9 * psi_v && damping > 1e-9;
+}
+
+}  // namespace stickslip

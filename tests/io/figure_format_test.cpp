@@ -1,0 +1,137 @@
+// The figures' format (issue 22 item 4): --format png|pdf|svg in every app
+// that draws, each format's whole-file check (PDF: %PDF- ... %%EOF; SVG: ...
+// </svg>), a bad value refused naming --format, and the shared style's titles.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "app_test_util.hpp"
+#include "cli/gnuplot.hpp"
+#include "stickslip/io/branch_report.hpp"
+#include "stickslip/io/figure_style.hpp"
+
+namespace stickslip {
+namespace {
+
+using testing_util::Exists;
+using testing_util::ReadFile;
+using testing_util::WriteFile;
+
+const std::string kBin = STICKSLIP_BIN_DIR;
+const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
+
+using stickslip::testing_util::HaveGnuplot;
+
+class FigureFormatTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = ::testing::TempDir() + "figure_format_test_XXXXXX";
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
+  int Run(const std::string& app, const std::string& args) {
+    const std::string cmd = "timeout -s KILL 300 " + kBin + "/" + app + " " + args + " >'" + dir_ +
+                            "/stdout' 2>'" + dir_ + "/stderr'";
+    const int status = std::system(cmd.c_str());
+    err_ = ReadFile(dir_ + "/stderr");
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string dir_, err_;
+};
+
+TEST_F(FigureFormatTest, PdfAndSvgChecksAcceptOnlyWholeFiles) {
+  const std::string pdf = "%PDF-1.5\n" + std::string(300, 'p') + "\n%%EOF\n";
+  const std::string svg = "<?xml version=\"1.0\"?>\n<svg>" + std::string(300, 's') + "</svg>\n\n";
+  WriteFile(dir_ + "/whole.pdf", pdf);
+  WriteFile(dir_ + "/cut.pdf", pdf.substr(0, 200));
+  WriteFile(dir_ + "/text.pdf", std::string(200, 't') + "%%EOF");
+  WriteFile(dir_ + "/empty.pdf", "");
+  WriteFile(dir_ + "/whole.svg", svg);
+  WriteFile(dir_ + "/cut.svg", svg.substr(0, 200));
+  WriteFile(dir_ + "/text.svg", "hello</svg>");
+  WriteFile(dir_ + "/pdf.png", pdf);  // a PDF named .png is checked as a PNG
+  EXPECT_EQ(cli::FigureError(dir_ + "/whole.pdf"), "");
+  EXPECT_NE(cli::FigureError(dir_ + "/cut.pdf").find("truncated PDF"), std::string::npos);
+  EXPECT_NE(cli::FigureError(dir_ + "/text.pdf").find("not a PDF"), std::string::npos);
+  EXPECT_NE(cli::FigureError(dir_ + "/empty.pdf").find("empty"), std::string::npos);
+  EXPECT_NE(cli::FigureError(dir_ + "/missing.pdf"), "");
+  EXPECT_EQ(cli::FigureError(dir_ + "/whole.svg"), "");
+  EXPECT_NE(cli::FigureError(dir_ + "/cut.svg").find("truncated SVG"), std::string::npos);
+  EXPECT_NE(cli::FigureError(dir_ + "/text.svg").find("not an SVG"), std::string::npos);
+  EXPECT_NE(cli::FigureError(dir_ + "/pdf.png").find("not a PNG"), std::string::npos);
+}
+
+TEST(FigureStyle, FormatNamesAndTitles) {
+  FigureFormat f = FigureFormat::kPng;
+  EXPECT_TRUE(ParseFigureFormat("svg", &f));
+  EXPECT_EQ(f, FigureFormat::kSvg);
+  EXPECT_FALSE(ParseFigureFormat("PDF", &f));
+  EXPECT_FALSE(ParseFigureFormat("jpg", &f));
+  EXPECT_EQ(FigureFile("basins", FigureFormat::kPdf), "basins.pdf");
+  // The axis parameter's range is left out; names become symbols.
+  EXPECT_EQ(FigureTitle("law=cubic beta=0.05 v=[0.05, 0.5] mu_s=0.4 k5=0 (partial)", {"v"}),
+            "cubic law: β = 0.05, μ_s = 0.4, k_5 = 0 (partial)");
+  EXPECT_EQ(EnhancedText("a_b^c"), "a\\\\_b\\\\^c");  // escaped for a double-quoted string
+  EXPECT_NE(FigurePreamble(FigureFormat::kPdf, 1000, 700).find("pdfcairo size 10in,7in"),
+            std::string::npos);
+}
+
+// Every drawing app writes each format whole under the right names, and
+// refuses any other value with exit 2 naming --format, creating nothing.
+TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
+  const std::string seed = " --study " + kStudies + "/seed.ini";
+  for (FigureFormat f : {FigureFormat::kPdf, FigureFormat::kSvg}) {
+    const std::string ext = FigureFormatName(f), out = dir_ + "/" + ext;
+    ASSERT_EQ(::mkdir(out.c_str(), 0755), 0);
+    ASSERT_EQ(Run("ss_continue", seed + " --format " + ext + " --out " + out + "/c"), 0) << err_;
+    for (const std::string& fig : BifurcationFigures(true, f)) {
+      EXPECT_EQ(cli::FigureError(out + "/c/" + fig), "") << fig;
+      EXPECT_EQ(fig.substr(fig.size() - 4), "." + ext);
+    }
+    EXPECT_FALSE(Exists(out + "/c/period.png"));
+    ASSERT_EQ(
+        Run("ss_basin", "--study " + kStudies + "/stribeck_basin.ini --nx 9 --ny 9 --format " +
+                            ext + " --out " + out + "/b"),
+        0)
+        << err_;
+    EXPECT_EQ(cli::FigureError(out + "/b/basins." + ext), "");
+    ASSERT_EQ(Run("ss_simulate",
+                  seed + " --t_end 20 --plot --format " + ext + " --out " + out + "/s.tsv"),
+              0)
+        << err_;
+    EXPECT_EQ(cli::FigureError(out + "/s." + ext), "");
+    ASSERT_EQ(Run("ss_chart", "--study " + kStudies + "/seed_chart.ini --format " + ext +
+                                  " --out " + out + "/h"),
+              0)
+        << err_;
+    EXPECT_EQ(cli::FigureError(out + "/h/chart." + ext), "");
+  }
+  // A real gnuplot PDF cut short fails the check.
+  const std::string whole = ReadFile(dir_ + "/pdf/c/period.pdf");
+  WriteFile(dir_ + "/cut.pdf", whole.substr(0, whole.size() - 20));
+  EXPECT_NE(cli::FigureError(dir_ + "/cut.pdf").find("truncated"), std::string::npos);
+}
+
+TEST_F(FigureFormatTest, BadFormatExits2NamingTheOption) {
+  const std::string seed = " --study " + kStudies + "/seed.ini";
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"ss_continue", seed + " --out " + dir_ + "/o"},
+      {"ss_basin", seed + " --out " + dir_ + "/o"},
+      {"ss_simulate", seed + " --plot --out " + dir_ + "/o.tsv"},
+      {"ss_chart", "--study " + kStudies + "/seed_chart.ini --out " + dir_ + "/o"}};
+  for (const auto& [app, args] : runs) {
+    EXPECT_EQ(Run(app, args + " --format jpg"), 2) << app;
+    EXPECT_NE(err_.find("--format"), std::string::npos) << app << ": " << err_;
+    EXPECT_NE(err_.find("jpg"), std::string::npos) << app << ": " << err_;
+    EXPECT_FALSE(Exists(dir_ + "/o")) << app;
+    EXPECT_FALSE(Exists(dir_ + "/o.tsv")) << app;
+  }
+}
+
+}  // namespace
+}  // namespace stickslip
