@@ -1,6 +1,8 @@
 // The CVODE stepper: the smooth slip field and its root functions as CVODE
 // callbacks (SUNDIALS examples, cvRoberts_dns.c); every flag mapped to a
-// StepOutcome here, so Flow never reads CVODE flags.
+// StepOutcome here, so the event driver never reads CVODE flags. CVODE's
+// own quirk, the refusal of close roots, is handled here by a restart.
+#include <algorithm>
 #include <sstream>
 
 #include "integrate/cvode.hpp"
@@ -19,17 +21,30 @@ class CvodeStepper final : public Stepper {
   void Reset(const SlipProblem& problem, double t0, const double* y0) override {
     p_ = problem;
     cv_.Reinit(t0, y0);
+    t_start_ = t_lo_ = t0;
+    restarted_ = false;
+    steps_before_ = 0;
   }
-  void SetStopTime(double t) override { cv_.SetStopTime(t); }
+  void SetStopTime(double t) override {
+    t_stop_ = t;
+    cv_.SetStopTime(t);
+  }
   StepOutcome Advance(double tout, double* t) override {
     error_.clear();
     cancelled_ = false;
-    const int flag = cv_.Advance(tout, t);
+    int flag = cv_.Advance(tout, t);
+    while (flag == CV_ILL_INPUT && !cancelled_ && !restarted_ && t_lo_ > t_start_) {
+      if (!Restart()) return StepOutcome::kFailed;
+      flag = cv_.Advance(tout, t);
+    }
     if (cancelled_) return StepOutcome::kCancelled;  // the root function stopped CVode
-    if (flag == CV_ROOT_RETURN) return StepOutcome::kRoot;
-    if (flag == CV_ILL_INPUT) {
-      Describe(flag);
-      return StepOutcome::kCloseRoots;
+    if (flag == CV_ROOT_RETURN) {
+      // Progress past the start surface: a state to restart from.
+      if (*t - t_start_ > Tolerances::EventAtStart(t_start_)) {
+        t_lo_ = *t;
+        restarted_ = false;
+      }
+      return StepOutcome::kRoot;
     }
     if (flag == CV_TOO_MUCH_WORK) {
       Describe(flag);
@@ -39,6 +54,7 @@ class CvodeStepper final : public Stepper {
       Describe(flag);
       return StepOutcome::kFailed;
     }
+    if (*t < t_stop_) t_lo_ = *t;  // an output time
     return StepOutcome::kReached;
   }
   const double* y() const override { return const_cast<Cvode&>(cv_).y(); }
@@ -46,11 +62,29 @@ class CvodeStepper final : public Stepper {
   bool Interpolate(double t, double* out) override { return cv_.Interpolate(t, out); }
   double LastStepStart() override { return cv_.LastStepStart(); }
   double CurrentTime() override { return cv_.CurrentTime(); }
-  long steps() const override { return cv_.steps(); }
+  double SegmentStart() const override { return t_start_; }
+  long steps() const override { return steps_before_ + cv_.steps(); }
   int size() const override { return cv_.size(); }
   const std::string& last_error() const override { return error_; }
 
  private:
+  // cvRcheck2 refuses a root function that is exactly zero at the last root
+  // and just after it (x' = v and x'' = 0 together at a grazing touch), with
+  // CV_ILL_INPUT. Restart at the last root or output time: cvRcheck1 then
+  // sets such a function aside. Once per root.
+  bool Restart() {
+    double buf[6];
+    if (!cv_.Interpolate(t_lo_, buf)) {
+      error_ = "restarting after a close root: no state at t = " + std::to_string(t_lo_);
+      return false;
+    }
+    steps_before_ += cv_.steps();
+    cv_.Reinit(t_lo_, buf);
+    cv_.SetStopTime(t_stop_);
+    t_start_ = t_lo_;
+    restarted_ = true;
+    return true;
+  }
   void Describe(int flag) {
     std::ostringstream os;
     os << "CVode failed (flag " << flag << "): " << cv_.last_error();
@@ -94,7 +128,8 @@ class CvodeStepper final : public Stepper {
     // x' - v: an exact 0 (a start on the surface, or a tangential touch where
     // x' = v to rounding for a while) counts as still on the mode's side.
     const double rel = z[1] - p.model->v();
-    g[0] = rel != 0 ? rel : (p.mode == Mode::kSlipBelow ? -1e-300 : 1e-300);
+    const double bias = Tolerances::kRootZeroBias;
+    g[0] = rel != 0 ? rel : (p.mode == Mode::kSlipBelow ? -bias : bias);
     // On steady sliding x'' and x' are both integration noise: they chatter
     // about 0 and round to exactly 0 again and again, which CVODE's root finder
     // refuses next to a root (cvRcheck2). There, and only there, neither is an
@@ -102,8 +137,8 @@ class CvodeStepper final : public Stepper {
     // point, where a grazing orbit returns) becomes a tiny bias that moves no root.
     const double acc = p.Acceleration(z[0], z[1]);
     const bool at_rest = p.AtRest(z[0], z[1], acc);
-    g[1] = at_rest ? 1.0 : (acc != 0 ? acc : 1e-300);
-    g[2] = at_rest ? 1.0 : (z[1] != 0 ? z[1] : 1e-300);
+    g[1] = at_rest ? 1.0 : (acc != 0 ? acc : bias);
+    g[2] = at_rest ? 1.0 : (z[1] != 0 ? z[1] : bias);
     return 0;
   }
 
@@ -111,6 +146,10 @@ class CvodeStepper final : public Stepper {
   Cvode cv_;
   std::string error_;
   bool cancelled_ = false;
+  double t_stop_ = 0;
+  double t_start_ = 0, t_lo_ = 0;  // the last (re)start; the last root or output past it
+  bool restarted_ = false;         // restarted at t_lo_ already
+  long steps_before_ = 0;          // steps before the restart
 };
 
 }  // namespace

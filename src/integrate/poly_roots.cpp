@@ -79,6 +79,53 @@ void RestrictToTail(const double* c, int n, double u, double* out) {
   for (int k = 1; k <= n; ++k) out[k] *= (scale *= 1 - u);
 }
 
+namespace {
+// The first point of [u0, u1] where sign * g has changed sign, given that it
+// has at u1 and not at u0: Newton on the polynomial, safeguarded by the
+// bracket [lo, hi] (g has `sign` at lo and not at hi), then bisection.
+double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, double u1) {
+  auto g = [&](double u) { return Horner(c, n, u); };
+  auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
+  double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
+  const double g0 = g(u0), g1 = g(u1);
+  if (g0 != g1) {  // start from the secant (regula falsi) point
+    const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
+    if (xs > u0 && xs < u1) x = xs;
+  }
+  for (int it = 0; it < 100; ++it) {
+    double gk = c[n], dg = 0;  // g' by Horner; g itself as changed() evaluates it
+    for (int k = n - 1; k >= 1; --k) {
+      dg = dg * x + gk;
+      gk = gk * x + c[k];
+    }
+    dg = dg * x + gk;
+    const double gx = g(x);
+    (Sign(gx, zero_sign) != sign ? hi : lo) = x;
+    double next = x - gx / dg;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool done = std::abs(next - x) <= Tolerances::kPolyNewtonStep * Tolerances::Scale(x);
+    x = next;
+    if (done || !(hi - lo > Tolerances::PolyWidth(hi))) break;
+  }
+  if (x > lo && x < hi) {
+    const double d = Tolerances::PolyProbe(x);
+    if (changed(x)) {
+      hi = x;
+      if (x - d > lo && !changed(x - d)) lo = x - d;
+    } else {
+      lo = x;
+      if (x + d < hi && changed(x + d)) hi = x + d;
+    }
+  }
+  for (int it = 0; it < 200 && std::nextafter(lo, 2.0) < hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (changed(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+}  // namespace
+
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   PolyRoot out;
   double tail = 0;  // sum_{k>=3} |c_k|
@@ -87,7 +134,7 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   for (int k = 0; k <= std::min(n, 2); ++k) scale += std::abs(c[k]);
   if (scale == 0) return out;
   // Rounding of the conversion and the halvings: a few ulp of sum |c_k| per degree.
-  const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
+  const double margin = Tolerances::PolyMargin(n, scale);
   // The cheap bound first, then the Bernstein hull.
   if (QuadraticBoundExcludes(c, n, sign, tail)) return out;
   auto g = [&](double u) { return Horner(c, n, u); };
@@ -120,7 +167,7 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
     // Within rounding of 0 (lower >= -margin), only a sign change that shows
     // in the values counts: halving further would chase noise.
     const bool noise = lower >= -margin || ++pieces > kMaxPieces;
-    if (isolated || noise || p.depth >= kMaxDepth || u1 - u0 <= 4e-16 * std::max(1.0, u1)) {
+    if (isolated || noise || p.depth >= kMaxDepth || u1 - u0 <= Tolerances::PolyWidth(u1)) {
       if (!end_changed) {  // a touch within rounding, or no root: nothing here
         --top;
         continue;
@@ -131,48 +178,8 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
         out.u = u0;
         return out;
       }
-      // Newton on the polynomial, safeguarded by the bracket [lo, hi] (g has
-      // `sign` at lo and not at hi), then bisection to the first point where
-      // the sign has changed.
-      double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
-      const double g0 = g(u0), g1 = g(u1);
-      if (g0 != g1) {  // start from the secant (regula falsi) point
-        const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
-        if (xs > u0 && xs < u1) x = xs;
-      }
-      for (int it = 0; it < 100; ++it) {
-        double gk = c[n], dg = 0;  // g' by Horner; g itself as changed() evaluates it
-        for (int k = n - 1; k >= 1; --k) {
-          dg = dg * x + gk;
-          gk = gk * x + c[k];
-        }
-        dg = dg * x + gk;
-        const double gx = g(x);
-        (Sign(gx, zero_sign) != sign ? hi : lo) = x;
-        double next = x - gx / dg;
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        // Quadratic convergence: a step below 1e-9 leaves an error far below rounding.
-        const bool done = std::abs(next - x) <= 1e-9 * std::max(1.0, std::abs(x));
-        x = next;
-        if (done || !(hi - lo > 4e-16 * std::max(1.0, hi))) break;
-      }
-      if (x > lo && x < hi) {
-        const double d = 8e-16 * std::max(1.0, std::abs(x)) + 1e-17;
-        if (changed(x)) {
-          hi = x;
-          if (x - d > lo && !changed(x - d)) lo = x - d;
-        } else {
-          lo = x;
-          if (x + d < hi && changed(x + d)) hi = x + d;
-        }
-      }
-      for (int it = 0; it < 200 && std::nextafter(lo, 2.0) < hi; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        (changed(mid) ? hi : lo) = mid;
-      }
       out.found = true;
-      out.u = hi;
+      out.u = RefineRoot(c, n, sign, zero_sign, u0, u1);
       return out;
     }
     // Halve: the right half below the left one on the stack.

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
+
 namespace stickslip {
 
 struct PolyRoot {
@@ -31,7 +33,7 @@ void RestrictToTail(const double* c, int n, double u, double* out);
 inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail) {
   const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0;
   const double scale = std::abs(q0) + std::abs(q1) + std::abs(q2) + tail;
-  const double margin = 2.0 * (n + 1) * 2.2e-16 * scale;
+  const double margin = Tolerances::PolyMargin(n, scale);
   double q_min = std::min(q0, q0 + q1 + q2);
   if (q2 > 0 && -q1 > 0 && -q1 < 2 * q2) q_min = std::min(q_min, q0 - q1 * q1 / (4 * q2));
   return q_min - tail > margin;

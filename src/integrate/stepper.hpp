@@ -1,5 +1,5 @@
-// Private to src/: the seam between Flow and the integrators of one slip mode.
-// A stepper integrates z = (x, x') (and, with variational equations, Phi) on
+// Private to src/: the seam between the event driver (event_driver.hpp) and
+// the integrators of one slip mode. Steppers only step. A stepper integrates z = (x, x') (and, with variational equations, Phi) on
 // the smooth field of one slip mode and reports the roots of
 //   g0 = x' - v   arrival at the switching surface;
 //   g1 = x''      extremum of x': catches a touch of x' = v shorter than a step;
@@ -14,18 +14,14 @@
 #include <memory>
 #include <string>
 
+#include "integrate/events.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/model/model.hpp"
 
 namespace stickslip {
 
-constexpr int kNumRoots = 3;
-
-// Which roots of g_i stop Advance (stop_dir): kAnyRoot, only those where g_i
-// rises (+1) or falls (-1), or none (0). A stepper may pass the others without
-// stopping (the CVODE stepper stops at every root); roots of g1 and g2 it
-// passes are extrema of x' and x, recorded in *extrema when it is set.
-constexpr int kAnyRoot = 2;
+// The extrema of x and x' over a run (the non-terminal events of g1, g2).
 struct Extrema {
   double x_min, x_max, xdot_min, xdot_max;
 };
@@ -41,8 +37,16 @@ struct SlipProblem {
   // to its amplitude, not to |mu(v)|, and never looser than relative to |x|.
   double x_center = 0;
   double XScale(double x) const { return std::min(std::abs(x), std::abs(x - x_center)); }
-  int stop_dir[kNumRoots] = {kAnyRoot, kAnyRoot, kAnyRoot};
-  Extrema* extrema = nullptr;
+  // The segment's events (events.hpp); SetEvents keeps them with the stop
+  // mask of each root function, which the steppers read on every step.
+  EventList events{};
+  EventHook on_event{};  // called for every non-terminal event a stepper passes
+  int stop_dir[kNumRoots] = {0, 0, 0};
+  void SetEvents(const EventList& list, EventHook hook) {
+    events = list;
+    on_event = hook;
+    for (int i = 0; i < kNumRoots; ++i) stop_dir[i] = list.StopMask(i);
+  }
   bool Stops(int i, int direction) const {
     return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
   }
@@ -53,16 +57,15 @@ struct SlipProblem {
   // x' and x'' chatter about 0 and neither is an event.
   bool AtRest(double x, double xdot, double acc) const {
     const double scale = std::abs(x) + std::abs(model->v()) + 1.0;
-    const double band_v = std::max(64 * 2.2e-16 * scale, 10 * atol);
-    const double band_a = std::max(64 * 2.2e-16 * scale, 10 * (atol + rtol * scale));
-    return std::abs(xdot) <= band_v && std::abs(acc) <= band_a;
+    const Tolerances tol = Tolerances::From(rtol, atol);
+    return std::abs(xdot) <= tol.RestBandVelocity(scale) &&
+           std::abs(acc) <= tol.RestBandAcceleration(scale);
   }
 };
 
 enum class StepOutcome {
   kReached,      // reached tout or the stop time
-  kRoot,         // stopped at a root; RootInfo says which
-  kCloseRoots,   // CVODE refused two roots too close together (cvRcheck2)
+  kRoot,         // stopped at a root of a terminal event (CVODE: of any g_i); RootInfo says which
   kTooMuchWork,  // max_steps steps without reaching tout
   kFailed,       // an error; last_error() says which
   kCancelled,    // the cancel hook returned true after a step
@@ -84,6 +87,8 @@ class Stepper {
   virtual double LastStepStart() = 0;
   // The stepper's own time (also after a failure).
   virtual double CurrentTime() = 0;
+  // Where the stepper last (re)started: Reset's t0, or a restart of its own.
+  virtual double SegmentStart() const = 0;
   virtual long steps() const = 0;  // since the last Reset
   virtual int size() const = 0;
   virtual const std::string& last_error() const = 0;

@@ -35,10 +35,11 @@ void TaylorStepper::Events(double h) {
       state_[i] = kInactive;
       continue;
     }
-    if (p_.stop_dir[i] == 0 && (i == 0 || !p_.extrema)) continue;  // not asked for
+    if (!p_.events.Watched(i)) continue;  // no event on g_i
     EventRoots(i, g[i], i == 1 ? n - 1 : n, tail[i], roots);
   }
-  // The passed extrema before the end of the step; each flips its sign.
+  // The roots passed before the end of the step; each flips its sign, and
+  // those of non-terminal events go to their hook.
   passed_root_ = false;
   for (int j = 0; j < roots.n_passed; ++j) {
     const auto& r = roots.passed[j];
@@ -46,19 +47,12 @@ void TaylorStepper::Events(double h) {
     passed_root_ = true;
     sign_[r.i] = -sign_[r.i];
     // A root passed at the step end, to rounding: the next step starts on it.
-    if (roots.first > 1 && (1 - r.u) * h <= 8e-16 * std::max(1.0, std::abs(tb_)))
+    if (roots.first > 1 && (1 - r.u) * h <= Tolerances::StepEndRounding(tb_))
       state_[r.i] = kDeflate;
-    if (r.i == 0 || !p_.extrema) continue;  // x' = v passed (not switching): no extremum
-    Extrema& e = *p_.extrema;
-    if (r.i == 1) {
-      const double xdot = Horner(c_[1], order_, r.u * h);
-      e.xdot_min = std::min(e.xdot_min, xdot);
-      e.xdot_max = std::max(e.xdot_max, xdot);
-    } else {
-      const double x = Horner(c_[0], order_, r.u * h);
-      e.x_min = std::min(e.x_min, x);
-      e.x_max = std::max(e.x_max, x);
-    }
+    if (!p_.on_event.fn || !p_.events.NonTerminal(r.i, r.direction)) continue;
+    double y[8];
+    Evaluate(r.u * h, y);
+    p_.on_event(r.i, y);
   }
   std::copy(roots.rf, roots.rf + kNumRoots, rf_);
   if (roots.first > 1) return;

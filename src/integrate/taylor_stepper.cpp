@@ -144,7 +144,7 @@ double TaylorStepper::StepSize(int order) const {
 
 bool TaylorStepper::NewStep() {
   ta_ = tb_;
-  if (tstop_ - ta_ <= 8e-16 * std::max(1.0, std::abs(ta_))) {  // at the stop time to rounding
+  if (tstop_ - ta_ <= Tolerances::StepEndRounding(ta_)) {  // at the stop time to rounding
     order_ = 0;
     for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
     tb_ = tstop_;
@@ -161,7 +161,7 @@ bool TaylorStepper::NewStep() {
     for (int k = 0; k <= order_; ++k) probe += 0.0 * c_[i][k];
   if (probe != 0) return Failed("non-finite Taylor coefficients");
   if (std::isnan(h)) return Failed("non-finite step size");
-  if (std::isinf(h)) h = 1e3;  // all higher coefficients vanish: at rest exactly
+  if (std::isinf(h)) h = Tolerances::kTaylorRestStep;  // higher coefficients all 0: at rest
   h = std::min(h, tstop_ - ta_);
   // Underflow: the step no longer moves t (fast fields take tiny steps near
   // t = 0, as CVODE does).

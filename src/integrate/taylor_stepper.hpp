@@ -48,7 +48,7 @@ class TaylorStepper final : public Stepper {
     for (auto& row : c_) std::fill(row, row + kTaylorMaxOrder + 1 + kPad, 0.0);
     std::copy(y0, y0 + n_, yend_);
     std::copy(y0, y0 + n_, y_);
-    ta_ = tb_ = t_ = t0;
+    ta_ = tb_ = t_ = t0_ = t0;
     tstop_ = INFINITY;
     steps_ = 0;
     pending_ = passed_root_ = false;
@@ -59,34 +59,35 @@ class TaylorStepper final : public Stepper {
   const double* y() const override { return y_; }
   void RootInfo(int* rf) const override { std::copy(rf_, rf_ + kNumRoots, rf); }
   bool Interpolate(double t, double* out) override {
-    const double slack = 4e-16 * std::max(1.0, std::abs(t));
+    const double slack = Tolerances::DenseOutputSlack(t);
     if (!(t >= ta_ - slack && t <= tb_ + slack)) return false;
     Evaluate(t - ta_, out);
     return true;
   }
   double LastStepStart() override { return ta_; }
   double CurrentTime() override { return tb_; }
+  double SegmentStart() const override { return t0_; }
   long steps() const override { return steps_; }
   int size() const override { return n_; }
   const std::string& last_error() const override { return error_; }
 
  private:
   enum SignState { kFresh, kTracked, kDeflate, kInactive };
-  // The roots of one step: the first that stops (rf, first), and the
-  // extrema passed on the way.
+  // The roots of one step: the first of a terminal event (rf, first), and
+  // the roots passed on the way.
   struct Roots {
     double first = 2;
     int rf[kNumRoots] = {0, 0, 0};
     struct Passed {
       double u;
-      int i;
+      int i, direction;
     } passed[2 * kTaylorMaxOrder + 8];
     int n_passed = 0;
     // Returns whether the root stops.
     bool Add(int i, double u, int direction, bool stops) {
       if (!stops) {
         if (n_passed < static_cast<int>(sizeof passed / sizeof passed[0]))
-          passed[n_passed++] = {u, i};
+          passed[n_passed++] = {u, i, direction};
         return false;
       }
       if (u > first) return true;
@@ -136,6 +137,7 @@ class TaylorStepper final : public Stepper {
   std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_
   double dp_ = 1;
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
+  double t0_ = 0;                   // the last Reset's start
   double tstop_ = INFINITY;
   double yend_[8], y_[8];  // state at tb, at t
   SignState state_[kNumRoots];

@@ -20,6 +20,97 @@ struct Tolerances {
   }
 
   // --- Integration, events and orbits (flow, steppers, shooting) ---
+  // Rounding-level windows are multiples of the unit roundoff; they scale
+  // with max(1, |t|) (times) or the state's size, never with rtol.
+  static constexpr double kEps = 2.2e-16;  // the unit roundoff DBL_EPSILON, rounded
+
+  /// The flow's stop time advances in chunks this long: CVODE needs a finite
+  /// stop time, and t + 1e9 keeps 1e-7 resolution in t.
+  static constexpr double kStopTimeChunk = 1e9;
+  /// An output time within this of a segment start is the switch's sample
+  /// there (about 45 eps: a switch time carries a few roundings).
+  static double OutputAtStart(double t) { return 1e-14 * Scale(t); }
+  /// A root within this of the segment start is the start surface, to
+  /// rounding, not an event (about 4500 eps: a root at the start, located
+  /// by a stepper after a restart, is off by a few steps' roundings).
+  static double EventAtStart(double t) { return 1e-12 * Scale(t); }
+  /// Roots at one instant, to this: the same root again (64 eps).
+  static double RootRepeat(double t) { return 64 * kEps * Scale(t); }
+  /// A stepper's stop time (and a root at the step end) within this of t:
+  /// reached (about 3.6 eps).
+  static double StepEndRounding(double t) { return 8e-16 * Scale(t); }
+  /// Dense output accepts t this far outside the last step (about 1.8 eps).
+  static double DenseOutputSlack(double t) { return 4e-16 * Scale(t); }
+  /// The step of a Taylor series whose higher coefficients all vanish (at
+  /// rest exactly): any finite length, bounded so the stop time still comes.
+  static constexpr double kTaylorRestStep = 1e3;
+  /// A root function exactly 0 is biased by this (CVODE's root finder
+  /// needs a sign): smaller than any state, so it moves no root.
+  static constexpr double kRootZeroBias = 1e-300;
+  /// At rest on steady sliding: |x'| within this. Integration noise is ~atol
+  /// in x' (10 atol), never below rounding of the scale (64 eps scale).
+  double RestBandVelocity(double scale) const {
+    return std::max(64 * kEps * scale, 10 * atol);
+  }
+  /// At rest: |x''| within this. x'' = -x + mu(v) is a difference of nearly
+  /// equal terms of size scale, so its noise is ~atol + rtol scale.
+  double RestBandAcceleration(double scale) const {
+    return std::max(64 * kEps * scale, 10 * (atol + rtol * scale));
+  }
+
+  /// Pure-slip shooting (seed section 4): a Newton step on the section
+  /// amplitude a is polished once more while above the integration noise,
+  /// 0.1 rtol max(1, a) (a tenth: the polish then cannot be the error).
+  double ShootingPolish(double a) const { return 0.1 * rtol * Scale(a); }
+  /// Pure-slip shooting: an amplitude below this has collapsed onto the
+  /// equilibrium (at the defaults 1e3 rtol; the section is then noise).
+  static constexpr double kCollapsedAmplitude = 1e-10;
+  /// Pure-slip scan: the sign change of G is bisected to this, relative to
+  /// the bracket end (Newton polishes it afterwards to newton_tol).
+  static constexpr double kScanBracket = 1e-9;
+  /// Newton stall (numerics/stall.hpp): from the third iteration, a step
+  /// within kStallBand of the tolerance that no longer halves is the noise
+  /// floor (Deuflhard 2004, section 2.1: monotonicity test, ratio 1/2).
+  static constexpr double kStallBand = 1e3;
+  static constexpr double kStallRatio = 0.5;
+  static constexpr int kStallFirstIteration = 3;
+
+  /// Pure-slip shooting: an amplitude past this factor times max(a_guess,
+  /// v + mu_s + 1) is implausible (|x'| < v + a bit bounds a pure-slip orbit).
+  static constexpr double kPlausibleAmplitude = 10;
+  /// Pure-slip shooting: a first guess that sticks shrinks by this factor
+  /// (1 %: the largest slipping amplitude is usually near the guess).
+  static constexpr double kStickShrink = 0.99;
+  /// Pure-slip shooting: a Newton step may shrink a to this fraction at most
+  /// (keeps a > 0, the section right of the equilibrium).
+  static constexpr double kMinAmplitudeRatio = 0.2;
+  static constexpr double kMaxAmplitudeDrop = 0.8;  // 1 - kMinAmplitudeRatio
+  /// Orbit scan: G's integration noise is this times rtol (1 + |xbar| + a) / a
+  /// (three digits of margin over one return's error).
+  static constexpr double kScanNoise = 1e3;
+  /// Orbit scan: a sign change of G is located (Brent) to this relative to a.
+  static constexpr double kScanRoot = 1e-10;
+  /// Orbit scan: two orbits whose amplitudes agree to this (relative to
+  /// max(1, a)) are one (Newton leaves them within newton_tol).
+  static constexpr double kSameOrbit = 1e-7;
+  /// Orbit scan: the smallest sticking amplitude is bisected to this.
+  static constexpr double kStickingBisection = 1e-10;
+
+  /// Event roots on a step polynomial (poly_roots.cpp): rounding of the
+  /// Bernstein conversion and halvings, a few ulp of scale per degree.
+  static double PolyMargin(int degree, double scale) {
+    return 2.0 * (degree + 1) * kEps * scale;
+  }
+  /// An interval of u in [0, 1] this narrow is one point (about 1.8 eps).
+  static double PolyWidth(double u) { return 4e-16 * Scale(u); }
+  /// Newton on a step polynomial stops at a step below this (quadratic
+  /// convergence leaves an error far below rounding).
+  static constexpr double kPolyNewtonStep = 1e-9;
+  /// The probe left of a Newton root that checks the sign change (3.6 eps,
+  /// plus an absolute 1e-17 for u near 0).
+  static double PolyProbe(double u) { return 8e-16 * Scale(u) + 1e-17; }
+
+  static double Scale(double t) { return std::max(1.0, t < 0 ? -t : t); }
 
   // --- Continuation, charts and basins ---
   /// PALC corrector stopping tolerance: max(1e-13, 10 rtol) (issue 23).

@@ -6,6 +6,8 @@
 
 #include "stickslip/errors.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/stall.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
@@ -183,6 +185,19 @@ OrbitStatus OrbitFinder::Desingularised(double a, double* g, double* dg, ReturnM
   return s;
 }
 
+void OrbitFinder::AcceptPureSlip(Orbit& o, double a, double step, bool stalled,
+                                 const ReturnMap& map) const {
+  o.newton_stalled = stalled;
+  o.newton_step = step;
+  o.kind = OrbitKind::kPureSlip;
+  o.start = Vec2(model().SteadySliding().x + a, 0.0);
+  o.period = map.period;
+  CopyExtremes(o, map.flow);
+  o.multiplier = map.dpdx;
+  if (options_.floquet) Floquet(o, map.flow.jacobian);
+  o.stable = std::abs(o.multiplier) < 1.0;
+}
+
 OrbitResult OrbitFinder::PureSlip(double a_guess) {
   if (!(a_guess > 0) || !std::isfinite(a_guess))
     throw InvalidArgument("PureSlip: a_guess = " + std::to_string(a_guess) + " must be > 0");
@@ -194,7 +209,8 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
   bool backtracked = false;
   // A pure-slip orbit below the belt stays within |x'| < v + a bit, so its
   // section amplitude is a few times (v + mu_s) at most.
-  const double a_max = std::max(10 * a_guess, 10 * (model().v() + model().params().mu_s + 1));
+  const double a_max = Tolerances::kPlausibleAmplitude *
+                       std::max(a_guess, model().v() + model().params().mu_s + 1);
   ReturnMap map;
   for (int it = 1; it <= options_.max_newton; ++it) {
     out.iterations = it;
@@ -204,7 +220,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
       // Too large: the trajectory reaches the belt speed. Backtrack towards the
       // last iterate that slipped, or shrink a first guess.
       if (it == 1 || a == a_prev) {
-        a_prev = a *= 0.99;
+        a_prev = a *= Tolerances::kStickShrink;
       } else {
         a = 0.5 * (a + a_prev);
       }
@@ -223,31 +239,22 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     // Keep a > 0 (the section point lies right of the equilibrium) and at most
     // double it per step: where G is flat (overdamped sliding, no orbit) an
     // unbounded step would send the shooting off to a ~ 1e14.
-    if (a + da < 0.2 * a) da = -0.8 * a;
+    if (a + da < Tolerances::kMinAmplitudeRatio * a) da = -Tolerances::kMaxAmplitudeDrop * a;
     if (da > a) da = a;
     // Converged, or stalled at the integration noise floor.
     const double tol = options_.EffectiveNewtonTol() * std::max(1.0, a);
     const bool converged = !backtracked && std::abs(da) <= tol;
     // The orbit reported is the one at a, off by da: one more step while da is
     // above the integration noise (0.1 rtol).
+    const Tolerances tols = Tolerances::From(options_.flow.rtol, options_.flow.atol);
     if (converged && !polished && it < options_.max_newton &&
-        std::abs(da) > 0.1 * options_.flow.rtol * std::max(1.0, a)) {
+        std::abs(da) > tols.ShootingPolish(a)) {
       polished = true;
       a += da;
       continue;
     }
-    if (converged || (!backtracked && it > 2 && std::abs(da) < 1e3 * tol &&
-                      std::abs(da) > 0.5 * std::abs(last_da))) {
-      Orbit& o = out.orbit;
-      o.newton_stalled = !converged;
-      o.newton_step = std::abs(da);
-      o.kind = OrbitKind::kPureSlip;
-      o.start = Vec2(model().SteadySliding().x + a, 0.0);
-      o.period = map.period;
-      CopyExtremes(o, map.flow);
-      o.multiplier = map.dpdx;
-      if (options_.floquet) Floquet(o, map.flow.jacobian);
-      o.stable = std::abs(o.multiplier) < 1.0;
+    if (converged || (!backtracked && NewtonStalled(std::abs(da), std::abs(last_da), it, tol))) {
+      AcceptPureSlip(out.orbit, a, std::abs(da), !converged, map);
       return out;
     }
     a_prev = a;
@@ -260,7 +267,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
                     "): no pure-slip orbit near the guess";
       return out;
     }
-    if (a < 1e-10) {
+    if (a < Tolerances::kCollapsedAmplitude) {
       out.status = OrbitStatus::kCollapsed;
       out.message = "pure-slip shooting collapsed onto the equilibrium";
       return out;
@@ -289,7 +296,7 @@ std::vector<Orbit> OrbitFinder::PureSlipScan(double a_lo, double a_hi, int n) {
         double g = 0;
         return Desingularised(a, &g, nullptr) == OrbitStatus::kOk ? g : NAN;
       };
-      const RootResult root = FindRoot(G, a0, a1, g0, g1, 1e-9 * a1);
+      const RootResult root = FindRoot(G, a0, a1, g0, g1, Tolerances::kScanBracket * a1);
       if (root.ok) {
         OrbitResult r = PureSlip(root.x);
         if (r.ok()) found.push_back(r.orbit);

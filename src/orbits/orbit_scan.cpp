@@ -6,6 +6,7 @@
 
 #include "stickslip/errors.hpp"
 #include "numerics/roots.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
@@ -78,7 +79,9 @@ class Scan {
   // none isolated). G's noise is about rtol (|xbar| + a) / a.
   bool Noise(double a0, double g0, double a1, double g1) const {
     const double rtol = o_.orbit.flow.rtol;
-    auto noise = [&](double a) { return 1e3 * rtol * (1 + std::abs(xbar_) + a) / a; };
+    auto noise = [&](double a) {
+      return Tolerances::kScanNoise * rtol * (1 + std::abs(xbar_) + a) / a;
+    };
     return std::abs(g0) < noise(a0) && std::abs(g1) < noise(a1);
   }
   void Bracket(double a0, double g0, double a1, double g1);
@@ -97,7 +100,7 @@ void Scan::Bracket(double a0, double g0, double a1, double g1) {
     double g = 0;
     return G(a, &g) == OrbitStatus::kOk ? g : NAN;
   };
-  const RootResult root = FindRoot(f, a0, a1, g0, g1, 1e-10 * a1);
+  const RootResult root = FindRoot(f, a0, a1, g0, g1, Tolerances::kScanRoot * a1);
   if (!root.ok || !out_.ok()) return;
   const OrbitResult r = finder_.PureSlip(root.x);
   out_.returns += r.iterations;
@@ -105,7 +108,7 @@ void Scan::Bracket(double a0, double g0, double a1, double g1) {
   if (!r.ok()) return;  // sticks, or no orbit near the bracket
   const double a = r.orbit.start[0] - xbar_;
   for (const Orbit& q : out_.pure_slip)
-    if (std::abs(q.start[0] - xbar_ - a) <= 1e-7 * std::max(1.0, a)) return;
+    if (std::abs(q.start[0] - xbar_ - a) <= Tolerances::kSameOrbit * Tolerances::Scale(a)) return;
   out_.pure_slip.push_back(r.orbit);
 }
 
@@ -113,7 +116,7 @@ void Scan::Bracket(double a0, double g0, double a1, double g1) {
 // largest amplitude that does not, and G there.
 void Scan::LocateSticking(double a_ok, double g_ok, double a_sticks, double* a_last,
                           double* g_last) {
-  while (a_sticks - a_ok > 1e-10 * a_sticks && out_.ok()) {
+  while (a_sticks - a_ok > Tolerances::kStickingBisection * a_sticks && out_.ok()) {
     const double mid = 0.5 * (a_ok + a_sticks);
     double g = 0;
     const OrbitStatus s = G(mid, &g);

@@ -15,7 +15,9 @@
 
 namespace stickslip {
 
-class Stepper;  // src/stepper.hpp: private
+class Stepper;  // src/integrate/stepper.hpp: private
+struct SlipProblem;
+struct SegmentOutput;  // src/integrate/event_driver.hpp: private
 
 // Whether Flow's parameter column supports this parameter under this law:
 // beta, v, and every law parameter mu(s) depends on affinely (all but v_m,
@@ -140,8 +142,16 @@ class Flow {
 
  private:
   struct SlipEnd;
-  SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational, double output_dt,
-               double& next_output, const Observer& observer, FlowResult& r);
+  struct Walk;
+  SlipEnd Slip(double t0, const Vec2& z0, const StopRule& stop, bool variational,
+               const SegmentOutput& out, FlowResult& r);
+  bool Stick(Walk& w, const StopRule& stop, bool variational);
+  void Switch(Walk& w, Mode next);
+  static FlowStatus SlipStatus(int kind);
+  bool Settled(const SlipProblem& problem, const double* y) const;
+  std::string Where(const char* what, double t) const;
+  // Sets r.message to the failure at (t, y); returns t.
+  double Failed(double t, const double* y, const std::string& reason, FlowResult& r) const;
   Stepper& Solver(bool variational);
 
   Model model_;

@@ -134,6 +134,8 @@ class OrbitFinder {
 
  private:
   void Floquet(Orbit& o, const Mat2& M) const;
+  // Fills o for the pure-slip orbit through section amplitude a (PureSlip).
+  void AcceptPureSlip(Orbit& o, double a, double step, bool stalled, const ReturnMap& map) const;
 
   OrbitOptions options_;
   Flow flow_;
