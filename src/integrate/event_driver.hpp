@@ -21,7 +21,7 @@ struct SegmentEnd {
   } kind = kTime;
   int g = -1, direction = 0;
   double t = 0;
-  double t_end = 0;          // the stop time in force when it ended
+  double t_end = 0;           // the stop time in force when it ended
   const double* y = nullptr;  // the stepper's state at t (until its next call)
   std::string reason;
 };

@@ -14,7 +14,7 @@ constexpr int kNumRoots = 3;  // the stepper's root functions g_0, g_1, g_2
 constexpr int kAnyRoot = 2;
 
 struct Event {
-  int g = 0;                // the root function
+  int g = 0;                 // the root function
   int direction = kAnyRoot;  // +1, -1 or kAnyRoot
   bool terminal = false;
   // A root at the segment start (to rounding, Tolerances::EventAtStart) is

@@ -221,8 +221,8 @@ std::string Flow::Where(const char* what, double t) const {
 
 double Flow::Failed(double t, const double* y, const std::string& reason, FlowResult& r) const {
   std::ostringstream os;
-  os << IntegratorName(options_.integrator) << " failed at t = " << t << " in "
-     << ModeName(mode_) << " at x = " << y[0] << ", x' = " << y[1] << ": " << reason;
+  os << IntegratorName(options_.integrator) << " failed at t = " << t << " in " << ModeName(mode_)
+     << " at x = " << y[0] << ", x' = " << y[1] << ": " << reason;
   r.message = os.str();
   return t;
 }

@@ -1,6 +1,6 @@
 // Private to src/: the seam between the event driver (event_driver.hpp) and
-// the integrators of one slip mode. Steppers only step. A stepper integrates z = (x, x') (and, with variational equations, Phi) on
-// the smooth field of one slip mode and reports the roots of
+// the integrators of one slip mode. Steppers only step. A stepper integrates z = (x, x') (and, with
+// variational equations, Phi) on the smooth field of one slip mode and reports the roots of
 //   g0 = x' - v   arrival at the switching surface;
 //   g1 = x''      extremum of x': catches a touch of x' = v shorter than a step;
 //   g2 = x'       extremum of x, and the Poincare section of pure-slip orbits,

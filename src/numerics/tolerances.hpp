@@ -49,9 +49,7 @@ struct Tolerances {
   static constexpr double kRootZeroBias = 1e-300;
   /// At rest on steady sliding: |x'| within this. Integration noise is ~atol
   /// in x' (10 atol), never below rounding of the scale (64 eps scale).
-  double RestBandVelocity(double scale) const {
-    return std::max(64 * kEps * scale, 10 * atol);
-  }
+  double RestBandVelocity(double scale) const { return std::max(64 * kEps * scale, 10 * atol); }
   /// At rest: |x''| within this. x'' = -x + mu(v) is a difference of nearly
   /// equal terms of size scale, so its noise is ~atol + rtol scale.
   double RestBandAcceleration(double scale) const {
@@ -98,9 +96,7 @@ struct Tolerances {
 
   /// Event roots on a step polynomial (poly_roots.cpp): rounding of the
   /// Bernstein conversion and halvings, a few ulp of scale per degree.
-  static double PolyMargin(int degree, double scale) {
-    return 2.0 * (degree + 1) * kEps * scale;
-  }
+  static double PolyMargin(int degree, double scale) { return 2.0 * (degree + 1) * kEps * scale; }
   /// An interval of u in [0, 1] this narrow is one point (about 1.8 eps).
   static double PolyWidth(double u) { return 4e-16 * Scale(u); }
   /// Newton on a step polynomial stops at a step below this (quadratic

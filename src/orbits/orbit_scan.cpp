@@ -4,9 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "stickslip/errors.hpp"
 #include "numerics/roots.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip {
 

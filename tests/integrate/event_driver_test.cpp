@@ -2,12 +2,13 @@
 // non-terminal events, their directions, on both steppers, against the closed
 // form of the coulomb law at beta = 0. In slip below, x'' = -x + mu_k, so from
 // (mu_k - A, 0): x = mu_k - A cos t, x' = A sin t, x'' = A cos t.
+#include "integrate/event_driver.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "integrate/event_driver.hpp"
 #include "integrate/stepper.hpp"
 
 namespace stickslip {
@@ -138,9 +139,7 @@ TEST(EventList, StopMaskCombinesTerminalDirections) {
 
 INSTANTIATE_TEST_SUITE_P(Steppers, EventDriver,
                          ::testing::Values(Integrator::kTaylor, Integrator::kCvode),
-                         [](const auto& info) {
-                           return std::string(IntegratorName(info.param));
-                         });
+                         [](const auto& info) { return std::string(IntegratorName(info.param)); });
 
 }  // namespace
 }  // namespace stickslip
