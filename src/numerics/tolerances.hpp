@@ -24,6 +24,13 @@ struct Tolerances {
   // --- Continuation, charts and basins ---
   /// PALC corrector stopping tolerance: max(1e-13, 10 rtol) (issue 23).
   double Corrector() const { return std::max(1e-13, 10 * rtol); }
+  /// Forced branches: a slip phase shorter than this fraction of the orbit's
+  /// period at a located sliding point is the one adding-sliding creates
+  /// (its length grows like sqrt(|p - p*|) <= 1e-5 within 1e-10; issue 20).
+  double VanishingPhase() const { return 1e-4; }
+  /// Forced branches: a crossing of x' = v this close to the stick band's edge
+  /// (times 1 + the orbit's width) is on it at a located sliding point.
+  double BandEdge() const { return std::max(1e-8, 1e3 * rtol); }
 };
 
 }  // namespace stickslip
