@@ -27,9 +27,11 @@ void Measure(const char* name, const ForcedParams& p, double from, double to, in
   const double w0 = Seconds(CLOCK_MONOTONIC), c0 = Seconds(CLOCK_PROCESS_CPUTIME_ID);
   const OrbitDiagram d = ComputeOrbitDiagram(p, o);
   const double wall = Seconds(CLOCK_MONOTONIC) - w0, cpu = Seconds(CLOCK_PROCESS_CPUTIME_ID) - c0;
-  const double periods = static_cast<double>(d.columns.size()) * (o.iterate.transient + o.iterate.keep);
+  const double periods =
+      static_cast<double>(d.columns.size()) * (o.iterate.transient + o.iterate.keep);
   std::printf("%-34s %-5s %6zu runs  wall %6.2f s  cpu %6.2f s  %5.2f us cpu/period  failed %d\n",
-              name, both ? "both" : "up", d.columns.size(), wall, cpu, cpu * 1e6 / periods, d.failed);
+              name, both ? "both" : "up", d.columns.size(), wall, cpu, cpu * 1e6 / periods,
+              d.failed);
 }
 
 }  // namespace

@@ -86,7 +86,8 @@ Setup Configure(const cli::Arguments& args) {
     ss::ForcedParams at = s.p;
     ss::SetAxis(at, s.o.axis, end[0] == 'f' ? s.o.from : s.o.to);
     const std::string e = ss::ValidationError(at);
-    if (!e.empty()) throw cli::UsageError("invalid forced model at --" + std::string(end) + ": " + e);
+    if (!e.empty())
+      throw cli::UsageError("invalid forced model at --" + std::string(end) + ": " + e);
   }
   s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
   s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
@@ -98,7 +99,8 @@ Setup Configure(const cli::Arguments& args) {
                           ": must be up, down or both");
   s.o.up = dir != "down", s.o.down = dir != "up";
   s.o.max_amplitude = args.Number("max_amplitude", 50);
-  if (!(s.o.max_amplitude > 0)) throw cli::UsageError(args.Source("max_amplitude") + " must be > 0");
+  if (!(s.o.max_amplitude > 0))
+    throw cli::UsageError(args.Source("max_amplitude") + " must be > 0");
   s.flow = cli::FlowOptionsFromArguments(args);
   if (!args.Given("rtol")) s.flow.rtol = s.o.iterate.flow.rtol;
   if (!args.Given("atol")) s.flow.atol = s.o.iterate.flow.atol;
@@ -113,7 +115,8 @@ std::string Describe(const Setup& s) {
   ss::ForcedParams at = s.p;
   std::string d = cli::DescribeModel(at.base);
   for (ss::ForcedAxis a : {ss::ForcedAxis::kForce, ss::ForcedAxis::kOmega})
-    if (a != s.o.axis) d += std::string(" ") + ss::ForcedAxisName(a) + "=" + ss::FormatNumber(ss::GetAxis(s.p, a));
+    if (a != s.o.axis)
+      d += std::string(" ") + ss::ForcedAxisName(a) + "=" + ss::FormatNumber(ss::GetAxis(s.p, a));
   return d;
 }
 
@@ -127,7 +130,8 @@ int Main(int argc, char** argv) {
     return 0;
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
-      throw cli::UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
+      throw cli::UsageError(args.Source(phys) +
+                            ": the forced oscillator takes dimensionless inputs");
   Setup s = Configure(args);
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::string figure = ss::FigureFile("orbit_diagram", format);
@@ -161,11 +165,10 @@ int Main(int argc, char** argv) {
   exps.PrependMeta(meta);
   app.out().Write("orbit_diagram.tsv", points.str());
   app.out().Write("lyapunov.tsv", exps.str());
-  app.out().Write("orbit_diagram.gp",
-                  ss::OrbitDiagramScript(format, s.o.axis,
-                                         ss::FigureTitle(model, {axis}) +
-                                             (d.cancelled ? " (partial)" : ""),
-                                         s.o.up, s.o.down));
+  app.out().Write("orbit_diagram.gp", ss::OrbitDiagramScript(format, s.o.axis,
+                                                             ss::FigureTitle(model, {axis}) +
+                                                                 (d.cancelled ? " (partial)" : ""),
+                                                             s.o.up, s.o.down));
   if (!app.Finish("orbit_diagram.gp", {figure}, {figure})) return cli::kExitFailed;
   std::cout << kProg << ": forced oscillator, " << model << "\n"
             << axis << " from " << ss::FormatNumber(s.o.from) << " to " << ss::FormatNumber(s.o.to)

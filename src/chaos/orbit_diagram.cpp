@@ -14,7 +14,9 @@
 
 namespace stickslip {
 
-const char* SweepDirectionName(SweepDirection d) { return d == SweepDirection::kUp ? "up" : "down"; }
+const char* SweepDirectionName(SweepDirection d) {
+  return d == SweepDirection::kUp ? "up" : "down";
+}
 
 std::string OrbitDiagramOptions::ValidationError() const {
   if (!(std::isfinite(from) && std::isfinite(to)) || from == to)

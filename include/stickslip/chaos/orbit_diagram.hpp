@@ -27,7 +27,7 @@ struct OrbitDiagramOptions {
   LyapunovOptions iterate;
   /// A value whose |x| or |x'| passes this is kDiverged; the next starts from rest.
   double max_amplitude = 50;
-  std::function<bool()> cancelled;                 ///< polled by the calling thread
+  std::function<bool()> cancelled;                    ///< polled by the calling thread
   std::function<void(int done, int total)> progress;  ///< called on the calling thread
   /// Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
