@@ -91,7 +91,7 @@ std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::
   os << "\nunset title\nset size 1, 0.38\nset origin 0, 0\nset tmargin 0.5\nset bmargin 7\n"
      << "set format x '% g'\nset xlabel '" << label << "'\nset ylabel 'largest exponent λ_1'\n"
      << "set key outside below center horizontal\nplot 0 with lines ls 7 notitle";
-  for (int i = 0; i < 2; ++i) {
+  for (int i = 1; i >= 0; --i) {
     if (!on[i]) continue;
     os << ", \\\n     'lyapunov.tsv' using (sel('" << dirs[i] << "', '" << ax
        << "')):'lyapunov' with points pt 7 ps 0.35 lc rgb '" << SeriesColor(i) << "' title 'sweep "
