@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -45,12 +46,9 @@ std::string ForcedBasinOptions::ValidationError() const {
 
 namespace {
 
-// Section points closer than this (max norm, relative to 1 + |z|) are one point
-// of a periodic orbit; attractors closer than kSame are one attractor.
-constexpr double kCycleTol = 1e-6, kSame = 1e-4;
-
 Attractor Classify(const ForcedModel& model, const StroboscopicRun& r,
                    const ForcedBasinOptions& o) {
+  const Tolerances tol = Tolerances::From(o.iterate.flow.rtol, o.iterate.flow.atol);
   Attractor a;
   a.lyapunov = r.lyapunov;
   if (r.status == LyapunovStatus::kDiverged) return a.kind = AttractorKind::kUnbounded, a;
@@ -63,7 +61,7 @@ Attractor Classify(const ForcedModel& model, const StroboscopicRun& r,
   };
   for (int m = 1; m <= o.max_period; ++m) {
     bool cycle = true;
-    for (int k = 0; k + m < K && cycle; ++k) cycle = close(p[k], p[k + m], kCycleTol);
+    for (int k = 0; k + m < K && cycle; ++k) cycle = close(p[k], p[k + m], tol.SectionCycle());
     if (!cycle) continue;
     bool stuck = model.v() == 0;
     for (const SectionPoint& q : p) stuck = stuck && q.mode == Mode::kStick && q.exits == 0;
@@ -80,20 +78,21 @@ Attractor Classify(const ForcedModel& model, const StroboscopicRun& r,
   double sticks = 0;
   for (const SectionPoint& q : p) sticks += q.sticks;
   a.sticks = static_cast<int>(std::lround(sticks / K));
-  a.kind = r.lyapunov > std::max(3 * r.lyapunov_err, 1e-3) ? AttractorKind::kChaotic
-                                                           : AttractorKind::kUndecided;
+  a.kind = r.lyapunov > std::max(3 * r.lyapunov_err, tol.ChaoticExponentFloor())
+               ? AttractorKind::kChaotic
+               : AttractorKind::kUndecided;
   return a;
 }
 
 // The index of a in the list (merged as the header says), appended if new.
-int Merge(std::vector<Attractor>& list, const Attractor& a) {
+int Merge(std::vector<Attractor>& list, const Attractor& a, double same) {
   for (size_t i = 0; i < list.size(); ++i) {
     const Attractor& b = list[i];
     if (b.kind != a.kind) continue;
     if (a.kind != AttractorKind::kPeriodic) return static_cast<int>(i);
     if (b.m == a.m && b.sticks == a.sticks &&
         std::max(std::abs(a.x - b.x), std::abs(a.xdot - b.xdot)) <=
-            kSame * (1 + std::abs(a.x) + std::abs(a.xdot)))
+            same * (1 + std::abs(a.x) + std::abs(a.xdot)))
       return static_cast<int>(i);
   }
   list.push_back(a);
@@ -152,7 +151,9 @@ ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOpt
   b.cancelled = stop.load();
   for (int k = 0; k < n; ++k) {
     if (!done_flag[k]) continue;
-    const int id = Merge(b.attractors, found[k]);
+    const int id =
+        Merge(b.attractors, found[k],
+              Tolerances::From(o.iterate.flow.rtol, o.iterate.flow.atol).SameAttractor());
     ++b.attractors[id].starts;
     b.starts[k].attractor = id;
     b.starts[k].lyapunov = found[k].lyapunov;

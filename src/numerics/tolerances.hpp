@@ -24,6 +24,13 @@ struct Tolerances {
   // --- Continuation, charts and basins ---
   /// PALC corrector stopping tolerance: max(1e-13, 10 rtol) (issue 23).
   double Corrector() const { return std::max(1e-13, 10 * rtol); }
+  /// Forced basins (chaos/forced_basin.hpp): stroboscopic points of one
+  /// periodic cycle agree to this, relative to 1 + |z|: max(1e-6, 1e3 rtol).
+  double SectionCycle() const { return std::max(1e-6, 1e3 * rtol); }
+  /// ... and two periodic attractors are one if their points agree to max(1e-4, 1e5 rtol).
+  double SameAttractor() const { return std::max(1e-4, 1e5 * rtol); }
+  /// A start is chaotic if its largest exponent exceeds max(3 err, this floor) (1 / time).
+  double ChaoticExponentFloor() const { return 1e-3; }
 };
 
 }  // namespace stickslip
