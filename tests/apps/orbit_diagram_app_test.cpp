@@ -88,6 +88,17 @@ TEST(OrbitDiagramApp, DrawsTheFigure) {
   EXPECT_TRUE(tu::Exists(dir + "/out/orbit_diagram.png"));
 }
 
+TEST(OrbitDiagramApp, TimeLimitWritesAPartialResult) {
+  const std::string dir = TempDir();
+  const Result r =
+      RunApp(dir, {"--law", "stribeck", "--beta", "0.01", "--v", "0.1", "--force", "0.5", "--from",
+                   "0.2", "--to", "1.2", "--n", "2000", "--max_time", "0.5"});
+  EXPECT_EQ(r.outcome.code, 1) << r.err;
+  const tu::Tsv e = tu::ReadTsv(tu::ReadFile(dir + "/out/lyapunov.tsv"));
+  EXPECT_EQ(e.meta.at("status").rfind("partial (time limit", 0), 0u) << e.meta.at("status");
+  EXPECT_LT(e.rows.size(), 4000u);
+}
+
 TEST(OrbitDiagramApp, BadInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--param", "mu_s"}, "--param"},
