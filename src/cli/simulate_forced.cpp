@@ -38,7 +38,7 @@ std::string ForcedScript(ForcedSection sec, const std::string& title, FigureForm
   s += "plot 'trajectory.tsv' using 1:2 with lines ls 1 lw 1.5 title 'displacement x', \\\n";
   s += "     'trajectory.tsv' using 1:3 with lines ls 3 lw 1.5 title 'velocity dx/dt'\n";
   s += "unset multiplot\n";
-  s += FigureTerminal(f, 800, 750);
+  s += FigureTerminal(f, 950, 750);
   s += "set output " + Quoted(FigureFile("section", f)) + "\nset key off\n";
   if (sec == ForcedSection::kStrobe) {
     s += "set title \"stroboscopic section (cos Ωt = 1)\\n\" . " + Quoted(FigureTitle(title, {})) +
