@@ -218,7 +218,10 @@ PyForcedBranch Continue(const ForcedParams& base, ForcedAxis axis, double from, 
 
 }  // namespace
 
-void BindForced(py::module_& m) {
+namespace {
+
+// The enums, ForcedParams and the result classes.
+void BindForcedTypes(py::module_& m) {
   py::enum_<ForcedAxis>(m, "ForcedAxis", "The continued parameter of the forced oscillator.")
       .value("omega", ForcedAxis::kOmega)
       .value("force", ForcedAxis::kForce)
@@ -309,6 +312,12 @@ void BindForced(py::module_& m) {
       .def_readonly("special", &PyForcedBranch::special, "[(label, p, x_max)]: LP, PD, ...")
       .def_readonly("evaluations", &PyForcedBranch::evaluations)
       .def_readonly("seconds", &PyForcedBranch::seconds);
+}
+
+}  // namespace
+
+void BindForced(py::module_& m) {
+  BindForcedTypes(m);
   m.def("simulate_forced", &Simulate, py::arg("params"), py::arg("x0") = 0.0,
         py::arg("xdot0") = py::none(), py::arg("t_end") = 100.0, py::arg("dt") = 0.01,
         py::arg("section") = ForcedSection::kStrobe, py::arg("max_rows") = 1000000,

@@ -94,11 +94,21 @@ void AddSimulateForcedOptions(po::options_description& d) {
                   "cos(Omega t) = 1; default) or exit (every stick exit)");
 }
 
-int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command) {
+// The forced run's settings, all checked before anything runs or is written.
+struct ForcedSetup {
+  ForcedParams p;
+  ForcedSimulationOptions o;
+  FlowOptions flow;  // as the metadata shows it
+  SimulateRange range;
+};
+
+ForcedSetup ConfigureForced(const Arguments& args) {
+  ForcedSetup st;
+  ForcedParams& p = st.p;
+  ForcedSimulationOptions& o = st.o;
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
-  ForcedParams p;
   p.base = UncheckedModelFromArguments(args);
   p.force = args.Number("force", 0);
   p.omega = args.Number("omega", 1);
@@ -108,8 +118,8 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     throw UsageError("invalid forced model: " + err +
                      (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
   }
-  ForcedSimulationOptions o;
-  FlowOptions flow = FlowOptionsFromArguments(args);
+  FlowOptions& flow = st.flow;
+  flow = FlowOptionsFromArguments(args);
   if (flow.integrator != Integrator::kTaylor)
     throw UsageError(args.Source(args.Given("method") ? "method" : "integrator") +
                      ": the forced oscillator is integrated by Taylor series only");
@@ -123,8 +133,18 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     throw UsageError("invalid value '" + sec + "' for " + args.Source("section") +
                      ": must be strobe or exit");
   o.section = sec == "strobe" ? ForcedSection::kStrobe : ForcedSection::kExit;
-  const SimulateRange range = SimulateRangeFromArguments(args, p.base.v);
+  st.range = SimulateRangeFromArguments(args, p.base.v);
+  const SimulateRange& range = st.range;
   o.t_end = range.t_end, o.dt = range.dt;
+  return st;
+}
+
+int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command) {
+  ForcedSetup st = ConfigureForced(args);
+  const ForcedParams& p = st.p;
+  ForcedSimulationOptions& o = st.o;
+  const FlowOptions& flow = st.flow;
+  const SimulateRange& range = st.range;
   const ForcedModel model(p);
   if (o.section == ForcedSection::kStrobe && o.t_end / model.period() > kMaxRows)
     throw UsageError("t_end / (2 pi / omega) = " + FormatNumber(o.t_end / model.period()) +
