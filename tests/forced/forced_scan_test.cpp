@@ -97,6 +97,37 @@ TEST(ForcedScan, BeltStickSlipOrbitsAgreeWithTheClosedForm) {
   CheckAgainstClosedForm(p, r);
 }
 
+// Past the PD of the forced Stribeck scene (studies/stribeck_forced.ini, PD at
+// Omega = 0.6182) the scan finds the doubled orbit: m = 2, two sticks, stable,
+// with the m = 1 orbit unstable; the long-double RKF78 reference maps its two
+// stroboscopic points onto each other.
+TEST(ForcedScan, FindsThePeriodDoubledOrbit) {
+  ForcedParams p;
+  p.base.law = LawKind::kStribeck;
+  p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
+  p.force = 0.3, p.omega = 0.612;
+  const ForcedOrbits r = Scan(p);
+  ASSERT_TRUE(r.ok());
+  const ForcedScanOrbit* doubled = nullptr;
+  bool m1_unstable = false;
+  for (const ForcedScanOrbit& o : r.orbits) {
+    if (o.orbit.m == 2 && o.orbit.stable) doubled = &o;
+    if (o.orbit.m == 1 && o.orbit.sticks == 1) m1_unstable = !o.orbit.stable;
+  }
+  EXPECT_TRUE(m1_unstable);
+  ASSERT_NE(doubled, nullptr);
+  EXPECT_EQ(doubled->orbit.sticks, 2);
+  const Real T = 2 * std::acos(Real(-1)) / p.omega;
+  for (int j = 0; j < 2; ++j) {
+    ref::PieceSim<ref::OdeintPiece> sim(
+        ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
+    Real t = 0, x = doubled->points[j][0], y = doubled->points[j][1];
+    sim.Run(t, x, y, T);
+    EXPECT_NEAR(static_cast<double>(x), doubled->points[1 - j][0], 1e-9) << "point " << j;
+    EXPECT_NEAR(static_cast<double>(y), doubled->points[1 - j][1], 1e-9) << "point " << j;
+  }
+}
+
 TEST(ForcedScan, RejectsBadOptions) {
   ForcedScanOptions o;
   o.max_m = 0;
