@@ -127,9 +127,9 @@ TEST_F(SimulateApp, HelpExitsZeroAndListsOptions) {
   const Result r = Run({"--help"});
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.err, "");
-  for (const char* opt : {"--study", "--law", "--beta", "--v ", "--mu_s", "--mass", "--rtol",
-                          "--method", "--x0", "--xdot0", "--t_end", "--dt", "--out", "--no_plots",
-                          "--force", "--omega", "--section"})
+  for (const char* opt :
+       {"--study", "--law", "--beta", "--v ", "--mu_s", "--mass", "--rtol", "--method", "--x0",
+        "--xdot0", "--t_end", "--dt", "--out", "--no_plots", "--force", "--omega", "--section"})
     EXPECT_TRUE(Contains(r.out, opt));
 }
 
@@ -204,7 +204,8 @@ TEST_F(SimulateApp, StudySectionsOfOtherAppsAreSkipped) {
 }
 
 TEST_F(SimulateApp, AllStudiesRun) {
-  for (const char* study : {"seed", "seed_beta", "stribeck", "coulomb", "leine"}) {
+  for (const char* study : {"seed", "seed_beta", "stribeck", "coulomb", "leine", "den_hartog",
+                            "floor_static", "seed_forced", "stribeck_forced"}) {
     const std::string out = Path(study);
     const Result r =
         Run({"--study", kStudies + "/" + study + ".ini", "--t_end", "20", "--out", out});

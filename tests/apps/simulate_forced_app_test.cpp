@@ -111,6 +111,34 @@ TEST(SimulateForcedApp, ExitSectionLiesOnTheStickBandsEdge) {
   EXPECT_GE(r.traj.rows.size(), 200 / 0.01);
 }
 
+// The forced studies run in ss_continue from their files, and give the points
+// docs/studies.md reads off them.
+TEST(SimulateForcedApp, ForcedStudiesRunInSsContinue) {
+  const std::string studies = STICKSLIP_SOURCE_DIR "/studies/";
+  const std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> cases = {
+      {"floor_static", {}},
+      {"seed_forced", {{"LP", 0.62857}, {"PD", 0.61397}}},
+      {"stribeck_forced", {{"LP", 0.63020}, {"LP", 0.62374}, {"PD", 0.61821}}}};
+  for (const auto& [study, points] : cases) {
+    const std::string dir = TempDir();
+    tu::Launch l;
+    l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
+    const tu::Outcome o =
+        tu::RunChild(STICKSLIP_BIN_DIR "/ss_continue",
+                     {"--study", studies + study + ".ini", "--no_plots", "--out", dir + "/out"}, l);
+    ASSERT_EQ(o.code, 0) << study << ": " << tu::ReadFile(l.err_path);
+    const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+    EXPECT_GT(b.rows.size(), 100u) << study;
+    const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
+    for (const auto& [label, at] : points) {
+      bool found = false;
+      for (const auto& row : sp.rows)
+        found = found || (row[0] == label && std::abs(std::stod(row[2]) - at) < 1e-5);
+      EXPECT_TRUE(found) << study << ": " << label << " at " << at;
+    }
+  }
+}
+
 TEST(SimulateForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--force", "1", "--omega", "0"}, "omega"},
