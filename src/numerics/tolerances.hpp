@@ -24,6 +24,9 @@ struct Tolerances {
   // --- Continuation, charts and basins ---
   /// PALC corrector stopping tolerance: max(1e-13, 10 rtol) (issue 23).
   double Corrector() const { return std::max(1e-13, 10 * rtol); }
+  /// A branch is on a range end when within on_end * scale of it (a floor
+  /// near the double precision of p, not a tolerance).
+  double on_end = 1e-13;
 };
 
 }  // namespace stickslip
