@@ -47,7 +47,7 @@ bool GrazingCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
   }
   f->resize(1);
   (*f)[0] = s.gap;
-  if (!fresh_) {
+  if (chord_stale_) {
     // Forward differences, h relative to the rectangle's size.
     chord_.resize(1, 2);
     const double h[2] = {1e-7 * plane_.width1(), 1e-7 * plane_.width2()};
@@ -61,7 +61,7 @@ bool GrazingCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
       }
       chord_(0, k) = (sh.gap - s.gap) / h[k];
     }
-    fresh_ = true;
+    chord_stale_ = false;
   }
   *jac = chord_;
   return true;
