@@ -9,19 +9,7 @@
 
 namespace stickslip {
 
-const char* RegionName(Region r) {
-  switch (r) {
-    case Region::kSteadyOnly:
-      return "steady sliding only";
-    case Region::kStickSlip:
-      return "stick-slip";
-    case Region::kPureSlip:
-      return "pure-slip oscillation";
-    case Region::kBistable:
-      return "bistable";
-  }
-  return "?";
-}
+const char* RegionName(Region r) { return Name(r); }
 
 namespace {
 // Iterates the section map from the first maximum of x after the exit point.
@@ -84,7 +72,7 @@ RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o,
   for (const Curve& c : curves)
     for (const CurvePoint& p : c.points)
       check = check || c.kind == CurveKind::kFold ||
-              (p.type == "persistence" && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
+              (p.type == CurvePointType::kPersistence && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
   OrbitFinder finder(Model(base), o.orbit);
   for (double x1 : grid.x1)
     for (double x2 : grid.x2) {

@@ -10,21 +10,7 @@ namespace stickslip {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-const char* PalcStatusName(PalcStatus s) {
-  switch (s) {
-    case PalcStatus::kStopped:
-      return "stopped";
-    case PalcStatus::kClosed:
-      return "closed";
-    case PalcStatus::kMaxPoints:
-      return "max-points";
-    case PalcStatus::kStepTooSmall:
-      return "step-too-small";
-    case PalcStatus::kStartFailed:
-      return "start-failed";
-  }
-  return "?";
-}
+const char* PalcStatusName(PalcStatus s) { return Name(s); }
 
 std::string PalcOptions::ValidationError(int unknowns) const {
   std::ostringstream os;

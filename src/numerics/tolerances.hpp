@@ -27,6 +27,28 @@ struct Tolerances {
   /// A branch is on a range end when within on_end * scale of it (a floor
   /// near the double precision of p, not a tolerance).
   double on_end = 1e-13;
+  /// Chart start points: Brent on a sample line to chart_root times its
+  /// length (rounding of the line's parameter).
+  double chart_root = 1e-13;
+  /// HB curves: corrector tolerance (exact derivatives: Newton converges to
+  /// rounding).
+  double hopf_corrector = 1e-15;
+  /// Codimension-two points within same_point times the rectangle's size are
+  /// one point (found again from the other side of a curve).
+  double same_point = 1e-8;
+  /// Step of an LP curve beside its GH point: section amplitude of its first
+  /// point (a^2 ~ distance from GH).
+  double fold_start_amplitude = 0.02;
+  /// Chart grazing and fold chords: forward-difference step in the plane,
+  /// times the rectangle's size (about sqrt of the map's error at rtol 1e-11
+  /// ... 1e-14).
+  double chart_difference = 1e-7;
+  /// Basins: a start within on_belt * (1 + v) of x' = v is on the belt
+  /// surface (rounding of the start's coordinates).
+  double on_belt = 1e-12;
+  /// Basins: a capped run within SteadySnap() of stable steady sliding, in x
+  /// and in x' (absolute), ended on it: 1e4 atol (1e-9 at the default atol).
+  double SteadySnap() const { return 1e4 * atol; }
 };
 
 }  // namespace stickslip

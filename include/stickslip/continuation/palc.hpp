@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/names.hpp"
+
 namespace stickslip {
 
 /// n equations in n + 1 unknowns.
@@ -86,6 +88,16 @@ enum class PalcStatus {
   kMaxPoints,     ///< max_points accepted points
   kStepTooSmall,  ///< correction failed with ds < ds_min; message says why
   kStartFailed,   ///< the start point could not be evaluated
+};
+template <>
+struct EnumNames<PalcStatus> {
+  static constexpr NamedValue<PalcStatus> kTable[] = {
+      {PalcStatus::kStopped, "stopped"},
+      {PalcStatus::kClosed, "closed"},
+      {PalcStatus::kMaxPoints, "max-points"},
+      {PalcStatus::kStepTooSmall, "step-too-small"},
+      {PalcStatus::kStartFailed, "start-failed"},
+  };
 };
 const char* PalcStatusName(PalcStatus s);
 
