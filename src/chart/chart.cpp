@@ -9,12 +9,12 @@
 #include "chart/chart_regions.hpp"
 #include "chart/chart_starts.hpp"
 #include "chart/chart_trace.hpp"
-#include "stickslip/errors.hpp"
 #include "chart/fold_curve.hpp"
 #include "chart/grazing_curve.hpp"
 #include "chart/hopf_curve.hpp"
 #include "numerics/roots.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip {
 
@@ -151,8 +151,8 @@ void Charter::HopfCurves() {
       const Newton2Result gh =
           LocateGeneralizedHopf(base_, pl_, 0.5 * (a.p1 + b.p1), 0.5 * (a.p2 + b.p2));
       if (gh.ok && pl_.Contains(gh.x[0], gh.x[1]))
-        r_.codim2.push_back(
-            {Codim2Label::kGeneralizedHopf, gh.x[0], gh.x[1], "generalized Hopf: l1 changes sign on HB (mu''' = 0)"});
+        r_.codim2.push_back({Codim2Label::kGeneralizedHopf, gh.x[0], gh.x[1],
+                             "generalized Hopf: l1 changes sign on HB (mu''' = 0)"});
     }
     c.seconds = Since(t0);
     r_.curves.push_back(std::move(c));
@@ -293,7 +293,8 @@ ChartResult Charter::Run() {
   for (const Codim2Point& p : r_.codim2) {
     bool seen = false;
     for (const Codim2Point& q : unique)
-      seen = seen || (q.label == p.label && std::abs(q.p1 - p.p1) < Tolerances().same_point * pl_.width1() &&
+      seen = seen || (q.label == p.label &&
+                      std::abs(q.p1 - p.p1) < Tolerances().same_point * pl_.width1() &&
                       std::abs(q.p2 - p.p2) < Tolerances().same_point * pl_.width2());
     if (!seen) unique.push_back(p);
   }

@@ -2,9 +2,9 @@
 
 #include <sstream>
 
-#include "stickslip/chart/chart_faces.hpp"
 #include "chart/chart_regions.hpp"
 #include "chart/hopf_curve.hpp"
+#include "stickslip/chart/chart_faces.hpp"
 
 namespace stickslip {
 

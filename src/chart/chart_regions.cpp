@@ -6,6 +6,7 @@
 
 #include "chart/grazing_curve.hpp"
 #include "chart/hopf_curve.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
@@ -31,8 +32,8 @@ bool Oscillation(OrbitFinder& finder) {
     if (map.status == OrbitStatus::kSticks) return true;
     if (map.status != OrbitStatus::kOk) return false;
     const double next = map.x - xbar;
-    if (next < 1e-3 * a0) return false;
-    if (std::abs(next - a) < 1e-7 * a0) return true;
+    if (next < Tolerances().map_decay * a0) return false;
+    if (std::abs(next - a) < Tolerances().map_settle * a0) return true;
     a = next;
   }
   return a > 0.5 * a0;

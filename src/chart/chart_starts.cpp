@@ -24,7 +24,7 @@ std::vector<std::pair<int, double>> StartLines(const Plane& pl) {
 }  // namespace
 
 std::vector<CurveStart> StartPoints(const Plane& pl, int samples,
-                               const std::function<double(double, double)>& f) {
+                                    const std::function<double(double, double)>& f) {
   std::vector<CurveStart> out;
   for (const auto& [k, c] : StartLines(pl)) {
     const double lo = k == 0 ? pl.from2 : pl.from1, hi = k == 0 ? pl.to2 : pl.to1;
@@ -49,7 +49,8 @@ std::vector<CurveStart> StartPoints(const Plane& pl, int samples,
   return out;
 }
 
-std::vector<CurveStart> WithSeeds(const ChartOptions& o, CurveKind kind, std::vector<CurveStart> scan) {
+std::vector<CurveStart> WithSeeds(const ChartOptions& o, CurveKind kind,
+                                  std::vector<CurveStart> scan) {
   std::vector<CurveStart> out;
   for (const ChartOptions::Seed& s : o.seeds)
     if (s.kind == kind) out.push_back({Eigen::Vector2d(s.p1, s.p2), 1});

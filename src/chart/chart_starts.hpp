@@ -18,9 +18,10 @@ struct CurveStart {
 
 // Roots of f along each start line (f may fail: NaN).
 std::vector<CurveStart> StartPoints(const Plane& pl, int samples,
-                               const std::function<double(double, double)>& f);
+                                    const std::function<double(double, double)>& f);
 
 // The caller's seeds of one kind first (holding p2), then the scan's.
-std::vector<CurveStart> WithSeeds(const ChartOptions& o, CurveKind kind, std::vector<CurveStart> scan);
+std::vector<CurveStart> WithSeeds(const ChartOptions& o, CurveKind kind,
+                                  std::vector<CurveStart> scan);
 
 }  // namespace stickslip

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
+
 namespace stickslip {
 
 using Eigen::VectorXd;
@@ -12,7 +14,7 @@ namespace {
 PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   PalcOptions p;
   p.ds = p.ds_max = o.max_step;
-  p.ds_min = 1e-6 * o.max_step;
+  p.ds_min = Tolerances().chart_min_step * o.max_step;
   p.tol = o.tol;
   p.max_newton = 12;
   p.max_points = kMaxCurvePoints;
@@ -163,7 +165,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   const VectorXd tangent = palc.Tangent(c.jac, VectorXd());
   // A start on the border: the way that leaves the rectangle at once is not taken.
   auto leaves = [&](const VectorXd& dir) {
-    const VectorXd u = c.u + 1e-6 * dir.cwiseProduct(palc.options().scale);
+    const VectorXd u = c.u + Tolerances().border_probe * dir.cwiseProduct(palc.options().scale);
     return !options.plane.Contains(u[options.i1], u[options.i1 + 1]);
   };
   Leg fwd, back;
@@ -202,7 +204,7 @@ bool NearCurve(const std::vector<Curve>& curves, CurveKind kind, const Plane& pl
       const Eigen::Vector2d d = b - a;
       const double s =
           d.squaredNorm() > 0 ? std::clamp((xs - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      if ((a + s * d - xs).norm() < 2e-3) return true;
+      if ((a + s * d - xs).norm() < Tolerances().near_curve) return true;
     }
   }
   return false;

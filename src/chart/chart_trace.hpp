@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "stickslip/chart/chart.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/continuation/palc.hpp"
 
 namespace stickslip {
 

@@ -47,7 +47,8 @@ bool FoldCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Ei
   *f << s.g, s.dg;
   if (chord_stale_) {
     chord_.resize(2, 3);
-    const double h[3] = {1e-4 * std::max(u[0], 1e-2), Tolerances().chart_difference * plane_.width1(),
+    const double h[3] = {1e-4 * std::max(u[0], 1e-2),
+                         Tolerances().chart_difference * plane_.width1(),
                          Tolerances().chart_difference * plane_.width2()};
     for (int k = 0; k < 3; ++k) {
       Eigen::VectorXd uh = u;

@@ -10,9 +10,9 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "stickslip/orbits/orbit.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/continuation/palc.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 

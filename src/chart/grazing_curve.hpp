@@ -14,9 +14,9 @@
 #include <string>
 
 #include "numerics/newton2.hpp"
-#include "stickslip/orbits/orbit.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/continuation/palc.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "continuation/branch_tracers.hpp"
-#include "stickslip/errors.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip {

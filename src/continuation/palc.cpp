@@ -194,7 +194,8 @@ PalcResult Palc::Continue(const PalcPoint& first, double ds, PalcHooks& hooks) {
   const VectorXd first_s = first.u.cwiseQuotient(scale_);
   double travelled = 0;
   while (static_cast<int>(r.points.size()) < options_.max_points) {
-    if (options_.cancelled && options_.cancelled()) return finish(PalcStatus::kStopped, "cancelled");
+    if (options_.cancelled && options_.cancelled())
+      return finish(PalcStatus::kStopped, "cancelled");
     const PalcPoint& last = r.points.back();
     const VectorXd pred = hooks.Predict(last, ds, scale_);
     PalcAction act = hooks.Predicted(last, pred, &ds);

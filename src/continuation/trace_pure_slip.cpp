@@ -9,9 +9,9 @@
 #include <cmath>
 
 #include "continuation/branch_tracers.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "continuation/special_points.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/continuation/palc.hpp"
 
 namespace stickslip {
 
@@ -113,8 +113,7 @@ class PureSlipTracer : public PalcHooks {
   BranchEnd Run(const BranchStart& s);
 
   Eigen::VectorXd Predict(const PalcPoint& last, double ds, const Eigen::VectorXd&) override {
-    return Eigen::Vector2d(last.u[0] + ds * last.tangent[0],
-                           last.u[1] + ds * last.tangent[1] * R_);
+    return Eigen::Vector2d(last.u[0] + ds * last.tangent[0], last.u[1] + ds * last.tangent[1] * R_);
   }
   PalcAction Predicted(const PalcPoint& last, const Eigen::VectorXd& pred, double* ds) override;
   PalcAction Rejected(const PalcPoint& last, const PalcCorrection& c, const Eigen::VectorXd& pred,
@@ -218,7 +217,7 @@ PalcAction PureSlipTracer::Predicted(const PalcPoint& last, const Eigen::VectorX
       return End({BranchEnd::kRangeEnd});
     if (Land(end, a + (end - p) / (t[1] * R_) * t[0])) return End({BranchEnd::kRangeEnd});
     return Shrink(ds, end, "no convergence at the range end") ? PalcAction::kRetry
-                                                               : PalcAction::kEnd;
+                                                              : PalcAction::kEnd;
   }
   if (!hopf_pending_ && last.tangent[0] < 0 && pred[0] < tuning::kAmplitudeEnd) {
     if (a <= tuning::kHopfFrom * tuning::kAmplitudeEnd) return End(AtHopf(last));
@@ -281,7 +280,7 @@ PalcAction PureSlipTracer::Converged(const PalcPoint& last, const PalcCorrection
       return End({BranchEnd::kHopf, p_hopf_start_});
     }
     return Shrink(ds, end, "no convergence at the range end") ? PalcAction::kRetry
-                                                               : PalcAction::kEnd;
+                                                              : PalcAction::kEnd;
   }
   next->u[0] = Polish(c);
   Accept(last, c, *next);
@@ -290,8 +289,7 @@ PalcAction PureSlipTracer::Converged(const PalcPoint& last, const PalcCorrection
 
 // Records an accepted point: its row, the Hopf end it started from, and a
 // fold between it and the last point if the tangent's p component changed sign.
-void PureSlipTracer::Accept(const PalcPoint& last, const PalcCorrection& c,
-                            const PalcPoint& next) {
+void PureSlipTracer::Accept(const PalcPoint& last, const PalcCorrection& c, const PalcPoint& next) {
   Orbit o = PureSlipFromMap(curve_.map);
   o.newton_stalled = c.stalled;
   if (hopf_pending_) {

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "stickslip/estimates/estimates.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/estimates/estimates.hpp"
 
 namespace stickslip {
 
@@ -28,8 +28,8 @@ std::string NotApplicable(const Params& base, const std::string& param) {
 }
 
 // The closed forms at the branch's special points (GR and HB in v, HB in beta).
-void AddSpecialEstimates(const Params& base, const std::string& param,
-                         const ContinuationResult& r, EstimateComparison* out_) {
+void AddSpecialEstimates(const Params& base, const std::string& param, const ContinuationResult& r,
+                         EstimateComparison* out_) {
   EstimateComparison& out = *out_;
   for (const SpecialPoint& s : r.special) {
     Params at = base;  // the base value of the continued parameter is not used

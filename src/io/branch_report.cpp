@@ -7,10 +7,10 @@
 #include <sstream>
 #include <tuple>
 
-#include "stickslip/errors.hpp"
-#include "stickslip/io/figure_style.hpp"
 #include "continuation/labels.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/io/figure_style.hpp"
 
 namespace stickslip {
 

@@ -1,6 +1,4 @@
 // The bifurcation diagram's gnuplot script (bifurcation.gp); see branch_report.hpp.
-#include "stickslip/io/branch_report.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -8,10 +6,11 @@
 #include <sstream>
 #include <tuple>
 
-#include "stickslip/errors.hpp"
-#include "stickslip/io/figure_style.hpp"
 #include "continuation/labels.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/io/branch_report.hpp"
+#include "stickslip/io/figure_style.hpp"
 
 namespace stickslip {
 

@@ -24,7 +24,8 @@ TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string
   Header(t, r, model);
   for (size_t i = 0; i < r.curves.size(); ++i)
     t.AddComment("curve " + std::to_string(i + 1) + " " + CurveLabel(r.curves[i].kind) + ": " +
-                 std::to_string(r.curves[i].points.size()) + " points, ends " + r.curves[i].ends.Text());
+                 std::to_string(r.curves[i].points.size()) + " points, ends " +
+                 r.curves[i].ends.Text());
   if (r.unphysical_points > 0)
     t.AddComment("unphysical: " + std::to_string(r.unphysical_points) +
                  " points whose orbit visits slip speeds where mu <= 0");

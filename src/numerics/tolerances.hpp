@@ -49,6 +49,25 @@ struct Tolerances {
   /// Basins: a capped run within SteadySnap() of stable steady sliding, in x
   /// and in x' (absolute), ended on it: 1e4 atol (1e-9 at the default atol).
   double SteadySnap() const { return 1e4 * atol; }
+  /// Chart curves: smallest PALC step, times max_step.
+  double chart_min_step = 1e-6;
+  /// A chart curve's start on the border: a way leaves the rectangle if a
+  /// step of border_probe (scaled) along it does.
+  double border_probe = 1e-6;
+  /// A start point within near_curve of a traced curve (scaled by the
+  /// rectangle) is on it.
+  double near_curve = 2e-3;
+  /// Chart regions, the section map iterated from the exit point: decayed
+  /// below map_decay a0, settled within map_settle a0 (a0 its first amplitude).
+  double map_decay = 1e-3, map_settle = 1e-7;
+  /// A pure-slip Newton that ends at an amplitude below on_equilibrium
+  /// (mu_s + v) ended on steady sliding.
+  double on_equilibrium = 1e-6;
+  /// Parameters within same_p max(1, range) of a stick-slip span are in it.
+  double same_p = 1e-12;
+  /// Pure-slip rows at one p whose amplitudes agree within same_amplitude
+  /// max(1, a) are one row.
+  double same_amplitude = 1e-6;
 };
 
 }  // namespace stickslip

@@ -71,7 +71,8 @@ TEST(HopfCurve, QuinticMatchesClosedFormAndHasItsGeneralizedHopfPoint) {
     const double v = c.p1;
     EXPECT_NEAR(2 * c.p2, 0.45 - 1.8 * v * v + 1.2 * v * v * v * v, 1e-12) << "v = " << v;
     // mu''' = 6 k3 - 60 k5 v^2 changes sign at v = sqrt(k3 / (10 k5)) = 0.5.
-    EXPECT_EQ(c.type, v < 0.5 ? CurvePointType::kSupercritical : CurvePointType::kSubcritical) << "v = " << v;
+    EXPECT_EQ(c.type, v < 0.5 ? CurvePointType::kSupercritical : CurvePointType::kSubcritical)
+        << "v = " << v;
   }
   ASSERT_EQ(r.codim2.size(), 1u);
   EXPECT_EQ(r.codim2[0].label, Codim2Label::kGeneralizedHopf);

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "stickslip/names.hpp"
-
 #include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip {

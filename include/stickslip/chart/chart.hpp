@@ -15,11 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/names.hpp"
-
 #include "stickslip/chart/chart_faces.hpp"
-#include "stickslip/orbits/orbit.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/names.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 

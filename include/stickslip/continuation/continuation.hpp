@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "stickslip/names.hpp"
-
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {

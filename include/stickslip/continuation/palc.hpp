@@ -92,10 +92,8 @@ enum class PalcStatus {
 template <>
 struct EnumNames<PalcStatus> {
   static constexpr NamedValue<PalcStatus> kTable[] = {
-      {PalcStatus::kStopped, "stopped"},
-      {PalcStatus::kClosed, "closed"},
-      {PalcStatus::kMaxPoints, "max-points"},
-      {PalcStatus::kStepTooSmall, "step-too-small"},
+      {PalcStatus::kStopped, "stopped"},          {PalcStatus::kClosed, "closed"},
+      {PalcStatus::kMaxPoints, "max-points"},     {PalcStatus::kStepTooSmall, "step-too-small"},
       {PalcStatus::kStartFailed, "start-failed"},
   };
 };

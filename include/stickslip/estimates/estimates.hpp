@@ -10,9 +10,8 @@
 #include <limits>
 #include <string>
 
-#include "stickslip/names.hpp"
-
 #include "stickslip/model/params.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
