@@ -68,6 +68,20 @@ struct Tolerances {
   /// Pure-slip rows at one p whose amplitudes agree within same_amplitude
   /// max(1, a) are one row.
   double same_amplitude = 1e-6;
+  /// Forced branches: a slip phase shorter than this fraction of the orbit's
+  /// period at a located sliding point is the one adding-sliding creates
+  /// (its length grows like sqrt(|p - p*|) <= 1e-5 within 1e-10; issue 20).
+  double VanishingPhase() const { return 1e-4; }
+  /// Forced branches: a crossing of x' = v this close to the stick band's edge
+  /// (times 1 + the orbit's width) is on it at a located sliding point.
+  double BandEdge() const { return std::max(1e-8, 1e3 * rtol); }
+  /// Forced basins (chaos/forced_basin.hpp): stroboscopic points of one
+  /// periodic cycle agree to this, relative to 1 + |z|: max(1e-6, 1e3 rtol).
+  double SectionCycle() const { return std::max(1e-6, 1e3 * rtol); }
+  /// ... and two periodic attractors are one if their points agree to max(1e-4, 1e5 rtol).
+  double SameAttractor() const { return std::max(1e-4, 1e5 * rtol); }
+  /// A start is chaotic if its largest exponent exceeds max(3 err, this floor) (1 / time).
+  double ChaoticExponentFloor() const { return 1e-3; }
 };
 
 }  // namespace stickslip
