@@ -149,4 +149,5 @@ PYBIND11_MODULE(_core, m) {
   BindResults(m);
   BindCompute(m);
   BindCharts(m);
+  BindForced(m);
 }

@@ -20,6 +20,9 @@ struct Tolerances {
   }
 
   // --- Integration, events and orbits (flow, steppers, shooting) ---
+  /// Forced flow, slip leaving x' = v at a stick exit: x'' there below this
+  /// times the state's scale is rounding (64 machine epsilons; rtol-free).
+  static constexpr double SurfaceRounding() { return 64 * 2.220446049250313e-16; }
 
   // --- Continuation, charts and basins ---
   /// PALC corrector stopping tolerance: max(1e-13, 10 rtol) (issue 23).
