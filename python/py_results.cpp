@@ -245,15 +245,15 @@ ChartOut MakeChartOut(const ChartResult& r, const Plane& plane) {
     for (const CurvePoint& q : c.points) {
       p1.push_back(q.p1), p2.push_back(q.p2), period.push_back(q.period);
       amplitude.push_back(q.amplitude), multiplier.push_back(q.multiplier), l1.push_back(q.l1);
-      type.push_back(q.type), unphysical.push_back(q.unphysical);
+      type.push_back(Name(q.type)), unphysical.push_back(q.unphysical);
     }
     out.curves.push_back({c.kind, plane.p1, plane.p2, ReadOnly(p1), ReadOnly(p2), ReadOnly(period),
                           ReadOnly(amplitude), ReadOnly(multiplier), ReadOnly(l1),
-                          ReadOnlyStrings(type), ReadOnlyBool(unphysical), c.ends, c.seconds,
+                          ReadOnlyStrings(type), ReadOnlyBool(unphysical), c.ends.Text(), c.seconds,
                           c.evaluations});
   }
   for (const Codim2Point& c : r.codim2)
-    out.codim2.push_back({c.label, plane.p1, plane.p2, c.description, c.p1, c.p2});
+    out.codim2.push_back({Name(c.label), plane.p1, plane.p2, c.description, c.p1, c.p2});
   std::vector<int> cells;
   for (Region g : r.regions.cells) cells.push_back(static_cast<int>(g));
   py::array_t<int> grid({r.regions.n1, r.regions.n2});

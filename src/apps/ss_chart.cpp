@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "chart/chart_region_faces.hpp"
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/restart.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart/chart.hpp"
-#include "stickslip/chart/chart_region_faces.hpp"
 #include "stickslip/io/chart_report.hpp"
 #include "stickslip/io/report.hpp"
 
@@ -63,7 +63,8 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
   std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, pl.p1.c_str(),
               pl.p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
               r.seconds * 1e3);
-  if (!figure.empty()) std::printf(" (%zu region polygons in %.1f ms)", r.faces.size(), r.face_seconds * 1e3);
+  if (!figure.empty())
+    std::printf(" (%zu region polygons in %.1f ms)", r.faces.size(), r.face_seconds * 1e3);
   std::printf("\n");
   if (r.regions.n1 > 0)
     std::printf(
@@ -74,10 +75,10 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
     const ss::Curve& c = r.curves[i];
     std::printf("  curve %zu %s: %zu points, %d evaluations, %.1f ms, ends %s\n", i + 1,
                 ss::CurveLabel(c.kind), c.points.size(), c.evaluations, c.seconds * 1e3,
-                c.ends.c_str());
+                c.ends.Text().c_str());
   }
   for (const ss::Codim2Point& p : r.codim2)
-    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", p.label.c_str(), pl.p1.c_str(), p.p1,
+    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", ss::Name(p.label), pl.p1.c_str(), p.p1,
                 pl.p2.c_str(), p.p2, p.description.c_str());
   const std::string drawn =
       figure.empty() ? "" : ", regions.tsv, chart.gp" + (plots_ok ? ", " + figure : "");

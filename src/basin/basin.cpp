@@ -5,35 +5,14 @@
 #include <limits>
 #include <sstream>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
 
-const char* FateName(Fate f) {
-  switch (f) {
-    case Fate::kSteadySliding:
-      return "steady-sliding";
-    case Fate::kStickSlip:
-      return "stick-slip";
-    case Fate::kPureSlip:
-      return "pure-slip";
-    case Fate::kUndecided:
-      return "undecided";
-  }
-  return "?";
-}
+const char* FateName(Fate f) { return Name(f); }
 
-const char* BasinStatusName(BasinStatus s) {
-  switch (s) {
-    case BasinStatus::kOk:
-      return "ok";
-    case BasinStatus::kFailed:
-      return "failed";
-    case BasinStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* BasinStatusName(BasinStatus s) { return Name(s); }
 
 std::string BasinOptions::ValidationError() const {
   std::string err = scan.ValidationError();
@@ -108,7 +87,7 @@ bool Classifier::Classify(BasinStart& s) {
   // A start within rounding of x' = v is taken on it, where the Filippov rule
   // picks its mode: a slip run started a hair off the surface towards which
   // its field points would miss the crossing at t = 0.
-  if (std::abs(z[1] - m_.v()) <= 1e-12 * (1 + std::abs(m_.v()))) z[1] = m_.v();
+  if (std::abs(z[1] - m_.v()) <= Tolerances().on_belt * (1 + std::abs(m_.v()))) z[1] = m_.v();
   Mode mode = m_.ModeAt(z);
   const bool cycle = res_.orbits.has_stick_slip;
   s.fate = Fate::kUndecided;
@@ -161,7 +140,9 @@ bool Classifier::Classify(BasinStart& s) {
       continue;
     }
     // Time cap. Runs that settle on stable steady sliding end there exactly.
-    if (res_.orbits.steady.stable() && std::abs(r.z[0] - xbar_) < 1e-9 && std::abs(r.z[1]) < 1e-9)
+    const double snap =
+        Tolerances::From(o_.scan.orbit.flow.rtol, o_.scan.orbit.flow.atol).SteadySnap();
+    if (res_.orbits.steady.stable() && std::abs(r.z[0] - xbar_) < snap && std::abs(r.z[1]) < snap)
       s.fate = Fate::kSteadySliding;
     return true;
   }

@@ -5,45 +5,24 @@
 #include <cmath>
 #include <sstream>
 
-#include "stickslip/chart/chart_region_faces.hpp"
+#include "chart/chart_region_faces.hpp"
 #include "chart/chart_regions.hpp"
+#include "chart/chart_starts.hpp"
 #include "chart/chart_trace.hpp"
-#include "stickslip/errors.hpp"
 #include "chart/fold_curve.hpp"
 #include "chart/grazing_curve.hpp"
 #include "chart/hopf_curve.hpp"
 #include "numerics/roots.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip {
 
 using Eigen::VectorXd;
 
-const char* CurveLabel(CurveKind k) {
-  switch (k) {
-    case CurveKind::kHopf:
-      return "HB";
-    case CurveKind::kGrazing:
-      return "GR";
-    case CurveKind::kFold:
-      return "LP";
-  }
-  return "?";
-}
+const char* CurveLabel(CurveKind k) { return Name(k); }
 
-const char* ChartStatusName(ChartStatus s) {
-  switch (s) {
-    case ChartStatus::kOk:
-      return "ok";
-    case ChartStatus::kFailed:
-      return "failed";
-    case ChartStatus::kPartial:
-      return "partial";
-    case ChartStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* ChartStatusName(ChartStatus s) { return Name(s); }
 
 int ChartResult::points() const {
   int n = 0;
@@ -77,59 +56,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// The start lines: the four edges and three interior lines per axis, as
-// (fixed coordinate 0 or 1, its value).
-std::vector<std::pair<int, double>> StartLines(const Plane& pl) {
-  std::vector<std::pair<int, double>> lines = {
-      {0, pl.from1}, {0, pl.to1}, {1, pl.from2}, {1, pl.to2}};
-  for (int k = 1; k <= 3; ++k) {
-    lines.push_back({0, pl.from1 + pl.width1() * k / 4});
-    lines.push_back({1, pl.from2 + pl.width2() * k / 4});
-  }
-  return lines;
-}
-
-struct Start {
-  Eigen::Vector2d x;
-  int fixed;  // the coordinate its line holds
-};
-
-// Roots of f along each start line (f may fail: NaN).
-std::vector<Start> StartPoints(const Plane& pl, int samples,
-                               const std::function<double(double, double)>& f) {
-  std::vector<Start> out;
-  for (const auto& [k, c] : StartLines(pl)) {
-    const double lo = k == 0 ? pl.from2 : pl.from1, hi = k == 0 ? pl.to2 : pl.to1;
-    auto at = [&, k = k, c = c](double t) {
-      return k == 0 ? Eigen::Vector2d(c, t) : Eigen::Vector2d(t, c);
-    };
-    auto g = [&](double t) {
-      const Eigen::Vector2d x = at(t);
-      return f(x[0], x[1]);
-    };
-    double t0 = lo, g0 = g(t0);
-    for (int i = 1; i < samples; ++i) {
-      const double t1 = lo + (hi - lo) * i / (samples - 1), g1 = g(t1);
-      if (std::isfinite(g0) && std::isfinite(g1) && g0 * g1 <= 0 && g0 != g1) {
-        const RootResult r = FindRoot(g, t0, t1, g0, g1, 1e-13 * (hi - lo));
-        if (r.ok) out.push_back({at(r.x), k});
-      }
-      t0 = t1;
-      g0 = g1;
-    }
-  }
-  return out;
-}
-
-// The caller's seeds of one kind first (holding p2), then the scan's.
-std::vector<Start> WithSeeds(const ChartOptions& o, CurveKind kind, std::vector<Start> scan) {
-  std::vector<Start> out;
-  for (const ChartOptions::Seed& s : o.seeds)
-    if (s.kind == kind) out.push_back({Eigen::Vector2d(s.p1, s.p2), 1});
-  out.insert(out.end(), scan.begin(), scan.end());
-  return out;
 }
 
 bool NonPositiveFriction(const Params& p, double max_slip) {
@@ -188,12 +114,12 @@ void Charter::CutShort(CurveKind kind, const Eigen::Vector2d& start, const std::
 void Charter::HopfCurves() {
   HopfCurveProblem problem(base_, pl_);
   TraceOptions to = TraceOpts();
-  to.tol = 1e-15;  // exact derivatives: Newton converges to rounding
+  to.tol = Tolerances().hopf_corrector;
   const auto starts =
       WithSeeds(o_, CurveKind::kHopf, StartPoints(pl_, 8 * o_.samples, [&](double x1, double x2) {
                   return HopfFunction(pl_.At(base_, x1, x2));
                 }));
-  for (const Start& s : starts) {
+  for (const CurveStart& s : starts) {
     if (NearCurve(r_.curves, CurveKind::kHopf, pl_, s.x)) continue;
     const auto t0 = Clock::now();
     const TraceResult t = TraceBothWays(problem, to, VectorXd(s.x), s.fixed);
@@ -213,7 +139,9 @@ void Charter::HopfCurves() {
       p.p1 = u[0], p.p2 = u[1];
       p.period = 2 * M_PI, p.amplitude = 0, p.multiplier = 1;
       p.l1 = HopfCriticality(pl_.At(base_, u[0], u[1]));
-      p.type = p.l1 < 0 ? "supercritical" : p.l1 > 0 ? "subcritical" : "degenerate";
+      p.type = p.l1 < 0   ? CurvePointType::kSupercritical
+               : p.l1 > 0 ? CurvePointType::kSubcritical
+                          : CurvePointType::kDegenerate;
       c.points.push_back(p);
     }
     // GH: the criticality changes sign between two points.
@@ -223,8 +151,8 @@ void Charter::HopfCurves() {
       const Newton2Result gh =
           LocateGeneralizedHopf(base_, pl_, 0.5 * (a.p1 + b.p1), 0.5 * (a.p2 + b.p2));
       if (gh.ok && pl_.Contains(gh.x[0], gh.x[1]))
-        r_.codim2.push_back(
-            {"GH", gh.x[0], gh.x[1], "generalized Hopf: l1 changes sign on HB (mu''' = 0)"});
+        r_.codim2.push_back({Codim2Label::kGeneralizedHopf, gh.x[0], gh.x[1],
+                             "generalized Hopf: l1 changes sign on HB (mu''' = 0)"});
     }
     c.seconds = Since(t0);
     r_.curves.push_back(std::move(c));
@@ -243,7 +171,7 @@ void Charter::GrazingCurves() {
                   const GrazingSample g = SampleGrazing(finder, pl_.At(base_, x1, x2), false);
                   return g.ok() ? g.gap : NAN;
                 }));
-  for (const Start& s : starts) {
+  for (const CurveStart& s : starts) {
     if (NearCurve(r_.curves, CurveKind::kGrazing, pl_, s.x)) continue;
     const auto t0 = Clock::now();
     const TraceResult t = TraceBothWays(problem, TraceOpts(), VectorXd(s.x), s.fixed);
@@ -264,7 +192,7 @@ void Charter::GrazingCurves() {
       CurvePoint p;
       p.p1 = u[0], p.p2 = u[1];
       p.period = g.period, p.amplitude = g.amplitude, p.multiplier = g.multiplier;
-      p.type = g.multiplier < 1 ? "persistence" : "nonsmooth-fold";
+      p.type = g.multiplier < 1 ? CurvePointType::kPersistence : CurvePointType::kNonsmoothFold;
       p.unphysical = NonPositiveFriction(pl_.At(base_, u[0], u[1]), g.max_slip);
       c.points.push_back(p);
     }
@@ -276,7 +204,7 @@ void Charter::GrazingCurves() {
       const Newton2Result lp = LocateGrazingFold(base_, pl_, o_.orbit, a.p1 + w * (b.p1 - a.p1),
                                                  a.p2 + w * (b.p2 - a.p2));
       if (lp.ok && pl_.Contains(lp.x[0], lp.x[1]))
-        r_.codim2.push_back({"GR-LP", lp.x[0], lp.x[1],
+        r_.codim2.push_back({Codim2Label::kGrazingFold, lp.x[0], lp.x[1],
                              "grazing type changes (lambda = 1): a fold curve of pure-slip "
                              "orbits ends here"});
     }
@@ -302,10 +230,10 @@ void Charter::FoldCurves() {
   };
   const std::vector<Codim2Point> gh_points = r_.codim2;
   for (const Codim2Point& gh : gh_points) {
-    if (gh.label != "GH") continue;
+    if (gh.label != Codim2Label::kGeneralizedHopf) continue;
     const auto t0 = Clock::now();
     // Start at a small amplitude, parameters held near GH (a^2 ~ distance).
-    const VectorXd u0 = (VectorXd(3) << 0.02, gh.p1, gh.p2).finished();
+    const VectorXd u0 = (VectorXd(3) << Tolerances().fold_start_amplitude, gh.p1, gh.p2).finished();
     const TraceResult t = TraceOneWay(problem, to, u0, 0, VectorXd::Unit(3, 0));
     if (Stop(r_, t, CurveKind::kFold)) return;
     Curve c;
@@ -314,7 +242,7 @@ void Charter::FoldCurves() {
     c.evaluations = t.evaluations;
     CurvePoint first;
     first.p1 = gh.p1, first.p2 = gh.p2, first.period = 2 * M_PI, first.multiplier = 1;
-    first.type = "fold";
+    first.type = CurvePointType::kFold;
     c.points.push_back(first);  // the GH point itself: a = 0
     for (const VectorXd& u : t.u) {
       const FoldSample s = problem.Sample(u);
@@ -322,7 +250,7 @@ void Charter::FoldCurves() {
       CurvePoint p;
       p.p1 = u[1], p.p2 = u[2];
       p.period = s.period, p.amplitude = s.amplitude, p.multiplier = s.multiplier;
-      p.type = "fold";
+      p.type = CurvePointType::kFold;
       p.unphysical = NonPositiveFriction(pl_.At(base_, u[1], u[2]), s.max_slip);
       c.points.push_back(p);
     }
@@ -339,12 +267,12 @@ void Charter::FoldCurves() {
         CurvePoint p;
         p.p1 = lp.x[0], p.p2 = lp.x[1];
         p.period = g.period, p.amplitude = g.amplitude, p.multiplier = g.multiplier;
-        p.type = "fold";
+        p.type = CurvePointType::kFold;
         c.points.push_back(p);
-        c.ends = "GH / GR-LP";
+        c.ends = {{CurveEndKind::kGeneralizedHopf, ""}, {CurveEndKind::kGrazingFold, ""}};
       }
     }
-    if (!t.cut.empty() && c.ends != "GH / GR-LP")
+    if (!t.cut.empty() && c.ends.last.kind != CurveEndKind::kGrazingFold)
       CutShort(CurveKind::kFold, Eigen::Vector2d(gh.p1, gh.p2), t.cut);
     c.seconds = Since(t0);
     r_.curves.push_back(std::move(c));
@@ -365,8 +293,9 @@ ChartResult Charter::Run() {
   for (const Codim2Point& p : r_.codim2) {
     bool seen = false;
     for (const Codim2Point& q : unique)
-      seen = seen || (q.label == p.label && std::abs(q.p1 - p.p1) < 1e-8 * pl_.width1() &&
-                      std::abs(q.p2 - p.p2) < 1e-8 * pl_.width2());
+      seen = seen || (q.label == p.label &&
+                      std::abs(q.p1 - p.p1) < Tolerances().same_point * pl_.width1() &&
+                      std::abs(q.p2 - p.p2) < Tolerances().same_point * pl_.width2());
     if (!seen) unique.push_back(p);
   }
   r_.codim2 = unique;

@@ -1,10 +1,10 @@
-#include "stickslip/chart/chart_region_faces.hpp"
+#include "chart/chart_region_faces.hpp"
 
 #include <sstream>
 
-#include "stickslip/chart/chart_faces.hpp"
 #include "chart/chart_regions.hpp"
 #include "chart/hopf_curve.hpp"
+#include "stickslip/chart/chart_faces.hpp"
 
 namespace stickslip {
 
@@ -19,7 +19,7 @@ std::vector<RegionFace> ClassifyFaces(const Params& base, const ChartOptions& o,
     for (const CurvePoint& p : c.points) {
       lines.back().push_back({p.p1, p.p2});
       check = check || c.kind == CurveKind::kFold ||
-              (p.type == "persistence" && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
+              (p.type == CurvePointType::kPersistence && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
     }
   }
   OrbitFinder finder(Model(base), o.orbit);

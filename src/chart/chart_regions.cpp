@@ -6,22 +6,11 @@
 
 #include "chart/grazing_curve.hpp"
 #include "chart/hopf_curve.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
-const char* RegionName(Region r) {
-  switch (r) {
-    case Region::kSteadyOnly:
-      return "steady sliding only";
-    case Region::kStickSlip:
-      return "stick-slip";
-    case Region::kPureSlip:
-      return "pure-slip oscillation";
-    case Region::kBistable:
-      return "bistable";
-  }
-  return "?";
-}
+const char* RegionName(Region r) { return Name(r); }
 
 namespace {
 // Iterates the section map from the first maximum of x after the exit point.
@@ -43,8 +32,8 @@ bool Oscillation(OrbitFinder& finder) {
     if (map.status == OrbitStatus::kSticks) return true;
     if (map.status != OrbitStatus::kOk) return false;
     const double next = map.x - xbar;
-    if (next < 1e-3 * a0) return false;
-    if (std::abs(next - a) < 1e-7 * a0) return true;
+    if (next < Tolerances().map_decay * a0) return false;
+    if (std::abs(next - a) < Tolerances().map_settle * a0) return true;
     a = next;
   }
   return a > 0.5 * a0;
@@ -84,7 +73,7 @@ RegionGrid ClassifyGrid(const Params& base, const ChartOptions& o,
   for (const Curve& c : curves)
     for (const CurvePoint& p : c.points)
       check = check || c.kind == CurveKind::kFold ||
-              (p.type == "persistence" && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
+              (p.type == CurvePointType::kPersistence && HopfFunction(pl.At(base, p.p1, p.p2)) > 0);
   OrbitFinder finder(Model(base), o.orbit);
   for (double x1 : grid.x1)
     for (double x2 : grid.x2) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
+
 namespace stickslip {
 
 using Eigen::VectorXd;
@@ -12,7 +14,7 @@ namespace {
 PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   PalcOptions p;
   p.ds = p.ds_max = o.max_step;
-  p.ds_min = 1e-6 * o.max_step;
+  p.ds_min = Tolerances().chart_min_step * o.max_step;
   p.tol = o.tol;
   p.max_newton = 12;
   p.max_points = kMaxCurvePoints;
@@ -23,9 +25,25 @@ PalcOptions Options(const PalcProblem& problem, const TraceOptions& o) {
   return p;
 }
 
+// The end of a way cut short by PALC (status other than kClosed).
+CurveEndKind CutEnd(PalcStatus s) {
+  switch (s) {
+    case PalcStatus::kMaxPoints:
+      return CurveEndKind::kMaxPoints;
+    case PalcStatus::kStepTooSmall:
+      return CurveEndKind::kStepTooSmall;
+    case PalcStatus::kStartFailed:
+      return CurveEndKind::kStartFailed;
+    case PalcStatus::kStopped:
+    case PalcStatus::kClosed:
+      break;
+  }
+  return CurveEndKind::kStopped;
+}
+
 struct Leg {
   std::vector<VectorXd> u;
-  std::string end;
+  CurveEnd end;
   std::string cut;  // the way ended early (a PALC failure): why
   int evaluations = 0;
   bool cancelled = false, stopped = false, closed = false;
@@ -95,22 +113,22 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   if (r.status == PalcStatus::kStopped && r.message == "cancelled") leg.cancelled = true;
   for (const PalcPoint& p : r.points) leg.u.push_back(p.u);
   if (outside) {
-    leg.end = "border";
+    leg.end.kind = CurveEndKind::kBorder;
     if (leg.u.size() >= 2)
       Land(palc, o, leg.u);
     else
       leg.u.clear();
   } else if (leg.stopped) {
-    leg.end = "stopped";
+    leg.end.kind = CurveEndKind::kStopped;
   } else if (r.status == PalcStatus::kClosed) {
-    leg.end = "closed";
+    leg.end.kind = CurveEndKind::kClosed;
     leg.closed = true;
   } else if (r.status == PalcStatus::kStepTooSmall && !r.points.empty() &&
              LandAhead(palc, o, r.points.back(), leg.u)) {
-    leg.end = "border";
+    leg.end.kind = CurveEndKind::kBorder;
   } else if (!leg.cancelled) {
-    leg.end = std::string(PalcStatusName(r.status)) + (r.message.empty() ? "" : ": " + r.message);
-    leg.cut = leg.end;
+    leg.end = {CutEnd(r.status), r.message};
+    leg.cut = leg.end.Text();
   }
   leg.evaluations = palc.evaluations() - before;
   return leg;
@@ -124,7 +142,7 @@ TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const
   const Leg leg = Follow(palc, options, u0, fixed, direction);
   TraceResult t;
   t.u = leg.u;
-  t.ends = "start / " + leg.end;
+  t.ends = {{CurveEndKind::kStart, ""}, leg.end};
   t.cut = leg.cut;
   t.evaluations = leg.evaluations;
   t.cancelled = leg.cancelled;
@@ -139,19 +157,19 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   // The tangent at the start orients the two ways.
   const PalcCorrection c = palc.CorrectFixed(u0, fixed);
   if (!c.ok) {
-    t.ends = "start failed: " + c.why;
-    t.cut = t.ends;
+    t.ends.first = {CurveEndKind::kNoStart, c.why};
+    t.cut = t.ends.Text();
     t.evaluations = palc.evaluations();
     return t;
   }
   const VectorXd tangent = palc.Tangent(c.jac, VectorXd());
   // A start on the border: the way that leaves the rectangle at once is not taken.
   auto leaves = [&](const VectorXd& dir) {
-    const VectorXd u = c.u + 1e-6 * dir.cwiseProduct(palc.options().scale);
+    const VectorXd u = c.u + Tolerances().border_probe * dir.cwiseProduct(palc.options().scale);
     return !options.plane.Contains(u[options.i1], u[options.i1 + 1]);
   };
   Leg fwd, back;
-  fwd.end = back.end = "border";
+  fwd.end.kind = back.end.kind = CurveEndKind::kBorder;
   if (!leaves(tangent)) fwd = Follow(palc, options, c.u, fixed, tangent);
   t.cancelled = fwd.cancelled;
   if (!fwd.closed && !fwd.cancelled && !leaves(-tangent))
@@ -161,7 +179,12 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   t.u.assign(back.u.rbegin(), back.u.rend());
   if (!t.u.empty() && !fwd.u.empty()) t.u.pop_back();  // the shared start
   t.u.insert(t.u.end(), fwd.u.begin(), fwd.u.end());
-  t.ends = fwd.closed ? "closed" : (back.end.empty() ? "start" : back.end) + " / " + fwd.end;
+  if (fwd.closed) {
+    t.ends.first.kind = t.ends.last.kind = CurveEndKind::kClosed;
+  } else {
+    t.ends = {back.end, fwd.end};
+    if (back.end.kind == CurveEndKind::kNone) t.ends.first.kind = CurveEndKind::kStart;
+  }
   t.cut = back.cut.empty() ? fwd.cut : back.cut;
   t.evaluations = palc.evaluations();
   return t;
@@ -181,10 +204,20 @@ bool NearCurve(const std::vector<Curve>& curves, CurveKind kind, const Plane& pl
       const Eigen::Vector2d d = b - a;
       const double s =
           d.squaredNorm() > 0 ? std::clamp((xs - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      if ((a + s * d - xs).norm() < 2e-3) return true;
+      if ((a + s * d - xs).norm() < Tolerances().near_curve) return true;
     }
   }
   return false;
+}
+
+std::string CurveEnd::Text() const {
+  return why.empty() ? std::string(Name(kind)) : std::string(Name(kind)) + ": " + why;
+}
+
+std::string CurveEnds::Text() const {
+  if (first.kind == CurveEndKind::kClosed && last.kind == CurveEndKind::kClosed) return "closed";
+  if (first.kind == CurveEndKind::kNoStart) return first.Text();
+  return first.Text() + " / " + last.Text();
 }
 
 }  // namespace stickslip

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "stickslip/chart/chart.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/continuation/palc.hpp"
 
 namespace stickslip {
 
@@ -30,7 +30,7 @@ struct TraceOptions {
 
 struct TraceResult {
   std::vector<Eigen::VectorXd> u;  // the curve, in order
-  std::string ends;                // "<first end> / <last end>"
+  CurveEnds ends;
   // Empty, or why a way ended early (max-points, step-too-small, start-failed):
   // the curve is cut short inside the rectangle.
   std::string cut;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
+
 namespace stickslip {
 
 FoldCurveProblem::FoldCurveProblem(const Params& base, const Plane& plane,
@@ -43,10 +45,11 @@ bool FoldCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Ei
   }
   f->resize(2);
   *f << s.g, s.dg;
-  if (!fresh_) {
+  if (chord_stale_) {
     chord_.resize(2, 3);
-    const double h[3] = {1e-4 * std::max(u[0], 1e-2), 1e-7 * plane_.width1(),
-                         1e-7 * plane_.width2()};
+    const double h[3] = {1e-4 * std::max(u[0], 1e-2),
+                         Tolerances().chart_difference * plane_.width1(),
+                         Tolerances().chart_difference * plane_.width2()};
     for (int k = 0; k < 3; ++k) {
       Eigen::VectorXd uh = u;
       uh[k] += h[k];
@@ -59,7 +62,7 @@ bool FoldCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Ei
       chord_(1, k) = (sh.dg - s.dg) / h[k];
     }
     chord_(0, 0) = s.dg;
-    fresh_ = true;
+    chord_stale_ = false;
   }
   *jac = chord_;
   return true;

@@ -10,9 +10,9 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "stickslip/orbits/orbit.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/continuation/palc.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 
@@ -36,7 +36,7 @@ class FoldCurveProblem : public PalcProblem {
   int unknowns() const override { return 3; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override;
-  void BeginCorrection() override { fresh_ = false; }
+  void BeginCorrection() override { chord_stale_ = true; }
   std::string DomainError(const Eigen::VectorXd& u) const override;
   FoldSample Sample(const Eigen::VectorXd& u);
 
@@ -44,7 +44,7 @@ class FoldCurveProblem : public PalcProblem {
   Params base_;
   Plane plane_;
   OrbitFinder finder_;
-  bool fresh_ = false;
+  bool chord_stale_ = true;  // the chord Jacobian must be recomputed before use
   Eigen::MatrixXd chord_;
 };
 

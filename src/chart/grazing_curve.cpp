@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
+
 namespace stickslip {
 
 GrazingSample SampleGrazing(OrbitFinder& finder, const Params& p, bool floquet) {
@@ -47,10 +49,11 @@ bool GrazingCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
   }
   f->resize(1);
   (*f)[0] = s.gap;
-  if (!fresh_) {
+  if (chord_stale_) {
     // Forward differences, h relative to the rectangle's size.
     chord_.resize(1, 2);
-    const double h[2] = {1e-7 * plane_.width1(), 1e-7 * plane_.width2()};
+    const double rel = Tolerances().chart_difference;
+    const double h[2] = {rel * plane_.width1(), rel * plane_.width2()};
     for (int k = 0; k < 2; ++k) {
       Eigen::VectorXd uh = u;
       uh[k] += h[k];
@@ -61,7 +64,7 @@ bool GrazingCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
       }
       chord_(0, k) = (sh.gap - s.gap) / h[k];
     }
-    fresh_ = true;
+    chord_stale_ = false;
   }
   *jac = chord_;
   return true;

@@ -14,9 +14,9 @@
 #include <string>
 
 #include "numerics/newton2.hpp"
-#include "stickslip/orbits/orbit.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/continuation/palc.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 
@@ -45,7 +45,7 @@ class GrazingCurveProblem : public PalcProblem {
   int unknowns() const override { return 2; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override;
-  void BeginCorrection() override { fresh_ = false; }
+  void BeginCorrection() override { chord_stale_ = true; }
   std::string DomainError(const Eigen::VectorXd& u) const override;
   // The gap, multiplier, period and amplitude at an accepted point.
   GrazingSample Sample(double x1, double x2) { return At(x1, x2, true); }
@@ -58,7 +58,7 @@ class GrazingCurveProblem : public PalcProblem {
   Params base_;
   Plane plane_;
   OrbitFinder finder_;
-  bool fresh_ = false;  // the chord Jacobian belongs to this correction
+  bool chord_stale_ = true;  // the chord Jacobian must be recomputed before use
   Eigen::MatrixXd chord_;
 };
 

@@ -62,6 +62,31 @@ bool DrainOrCancel(int fd, pid_t pid, const std::function<bool()>& cancelled, st
   return killed;
 }
 
+// The forked child: only async-signal-safe calls. An ignored SIGPIPE would
+// survive exec; restore the default. Reports a failed chdir/exec through
+// report_fd as {stage, errno}.
+[[noreturn]] void ExecChild(char** argv, const char* dir, int err_fd, int report_fd) {
+  ::signal(SIGPIPE, SIG_DFL);
+  int report[2] = {0, 0};
+  const int devnull = ::open("/dev/null", O_RDWR | O_CLOEXEC);
+  if (devnull >= 0) {
+    ::dup2(devnull, STDIN_FILENO);
+    ::dup2(devnull, STDOUT_FILENO);
+  }
+  ::dup2(err_fd, STDERR_FILENO);
+  if (dir && ::chdir(dir) != 0) {
+    report[0] = 1;
+    report[1] = errno;
+  } else {
+    ::execvp(argv[0], argv);
+    report[0] = 2;
+    report[1] = errno;
+  }
+  if (::write(report_fd, report, sizeof report) < 0) {
+  }
+  ::_exit(127);
+}
+
 }  // namespace
 
 GnuplotResult RunGnuplot(const std::string& script_path, const std::string& workdir,
@@ -93,30 +118,7 @@ GnuplotResult RunGnuplot(const std::string& script_path, const std::string& work
     for (int fd : {err_pipe[0], err_pipe[1], exec_pipe[0], exec_pipe[1]}) ::close(fd);
     return failed("gnuplot: fork: " + ErrnoText(e));
   }
-  if (pid == 0) {
-    // Child: only async-signal-safe calls. An ignored SIGPIPE would survive
-    // exec; restore the default. Report a failed chdir/exec through
-    // exec_pipe as {stage, errno}.
-    ::signal(SIGPIPE, SIG_DFL);
-    int report[2] = {0, 0};
-    const int devnull = ::open("/dev/null", O_RDWR | O_CLOEXEC);
-    if (devnull >= 0) {
-      ::dup2(devnull, STDIN_FILENO);
-      ::dup2(devnull, STDOUT_FILENO);
-    }
-    ::dup2(err_pipe[1], STDERR_FILENO);
-    if (dir && ::chdir(dir) != 0) {
-      report[0] = 1;
-      report[1] = errno;
-    } else {
-      ::execvp(argv[0], argv);
-      report[0] = 2;
-      report[1] = errno;
-    }
-    if (::write(exec_pipe[1], report, sizeof report) < 0) {
-    }
-    ::_exit(127);
-  }
+  if (pid == 0) ExecChild(argv, dir, err_pipe[1], exec_pipe[1]);
   ::close(err_pipe[1]);
   ::close(exec_pipe[1]);
   int report[2] = {0, 0};

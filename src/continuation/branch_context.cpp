@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stickslip/model/friction.hpp"
 #include "continuation/special_points.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/model/friction.hpp"
 
 namespace stickslip {
 
@@ -102,7 +103,7 @@ bool BranchContext::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, dou
   *orbit = r.orbit;
   *a = r.orbit.start[0] - m.SteadySliding().x;
   // Newton that ends on the equilibrium itself found no orbit.
-  return *a > 1e-6 * (m.params().mu_s + m.v());
+  return *a > Tolerances().on_equilibrium * (m.params().mu_s + m.v());
 }
 
 namespace {
@@ -177,7 +178,7 @@ bool BranchContext::GrazingVisited(double p) const {
 }
 
 bool BranchContext::CoveredByStickSlip(double p) const {
-  const double tol = 1e-12 * std::max(1.0, range_);
+  const double tol = Tolerances().same_p * std::max(1.0, range_);
   for (const Span& s : stick_slip_spans_)
     if (p >= s.lo - tol && p <= s.hi + tol) return true;
   return false;
@@ -186,7 +187,7 @@ bool BranchContext::CoveredByStickSlip(double p) const {
 bool BranchContext::HasPureSlipPoint(double p, double a) const {
   for (const BranchPoint& pt : res_.points)
     if (pt.kind == PointKind::kPureSlip && pt.p == p &&
-        std::abs(pt.amplitude - a) <= 1e-6 * std::max(1.0, a))
+        std::abs(pt.amplitude - a) <= Tolerances().same_amplitude * std::max(1.0, a))
       return true;
   return false;
 }

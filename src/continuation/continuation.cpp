@@ -4,47 +4,17 @@
 #include <cmath>
 
 #include "continuation/branch_tracers.hpp"
-#include "stickslip/errors.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip {
 
-const char* PointKindName(PointKind k) {
-  switch (k) {
-    case PointKind::kStickSlip:
-      return "stick-slip";
-    case PointKind::kPureSlip:
-      return "pure-slip";
-    case PointKind::kEquilibrium:
-      return "equilibrium";
-  }
-  return "?";
-}
+const char* PointKindName(PointKind k) { return Name(k); }
 
-const char* SpecialLabel(SpecialKind k) {
-  switch (k) {
-    case SpecialKind::kGrazing:
-      return "GR";
-    case SpecialKind::kHopf:
-      return "HB";
-    case SpecialKind::kFold:
-      return "LP";
-  }
-  return "?";
-}
+const char* SpecialLabel(SpecialKind k) { return Name(k); }
 
-const char* ContinuationStatusName(ContinuationStatus s) {
-  switch (s) {
-    case ContinuationStatus::kOk:
-      return "ok";
-    case ContinuationStatus::kFailed:
-      return "failed";
-    case ContinuationStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* ContinuationStatusName(ContinuationStatus s) { return Name(s); }
 
 std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (!IsParameterName(param))

@@ -1,4 +1,4 @@
-#include "stickslip/continuation/labels.hpp"
+#include "continuation/labels.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,21 +10,7 @@ namespace stickslip {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-const char* PalcStatusName(PalcStatus s) {
-  switch (s) {
-    case PalcStatus::kStopped:
-      return "stopped";
-    case PalcStatus::kClosed:
-      return "closed";
-    case PalcStatus::kMaxPoints:
-      return "max-points";
-    case PalcStatus::kStepTooSmall:
-      return "step-too-small";
-    case PalcStatus::kStartFailed:
-      return "start-failed";
-  }
-  return "?";
-}
+const char* PalcStatusName(PalcStatus s) { return Name(s); }
 
 std::string PalcOptions::ValidationError(int unknowns) const {
   std::ostringstream os;
@@ -158,8 +144,44 @@ PalcCorrection Palc::CorrectFixed(const VectorXd& pred, int k) {
   return Correct(pred, VectorXd::Unit(m, k));
 }
 
+namespace {
+// The plain loop's hooks: the monitor sees every accepted point.
+class MonitorHooks : public PalcHooks {
+ public:
+  explicit MonitorHooks(const PalcMonitor& monitor) : monitor_(monitor) {}
+  bool Accepted(const std::vector<PalcPoint>& curve) override {
+    return !monitor_ || monitor_(curve);
+  }
+
+ private:
+  const PalcMonitor& monitor_;
+};
+}  // namespace
+
 PalcResult Palc::Trace(const VectorXd& u0, int fixed, const VectorXd& direction,
                        const PalcMonitor& monitor) {
+  const int before = evaluations_;
+  const PalcCorrection c = CorrectFixed(u0, fixed);
+  PalcResult r;
+  if (c.ok) {
+    const PalcPoint first{c.u, Tangent(c.jac, direction), c.iterations, c.stalled, {}};
+    if (monitor && !monitor({first})) {
+      r.points.push_back(first);
+      r.status = PalcStatus::kStopped;
+    } else {
+      MonitorHooks hooks(monitor);
+      r = Continue(first, options_.ds, hooks);
+    }
+  } else {
+    r.status = PalcStatus::kStartFailed;
+    r.message = c.why;
+  }
+  r.newton_iterations += c.iterations;
+  r.evaluations = evaluations_ - before;
+  return r;
+}
+
+PalcResult Palc::Continue(const PalcPoint& first, double ds, PalcHooks& hooks) {
   PalcResult r;
   const int before = evaluations_;
   auto finish = [&](PalcStatus s, const std::string& message) {
@@ -168,19 +190,23 @@ PalcResult Palc::Trace(const VectorXd& u0, int fixed, const VectorXd& direction,
     r.evaluations = evaluations_ - before;
     return r;
   };
-  PalcCorrection c = CorrectFixed(u0, fixed);
-  r.newton_iterations += c.iterations;
-  if (!c.ok) return finish(PalcStatus::kStartFailed, c.why);
-  r.points.push_back(PalcPoint{c.u, Tangent(c.jac, direction), c.iterations, c.stalled, {}});
-  if (monitor && !monitor(r.points)) return finish(PalcStatus::kStopped, "");
-  const VectorXd first_s = c.u.cwiseQuotient(scale_);
-  double ds = options_.ds, travelled = 0;
+  r.points.push_back(first);
+  const VectorXd first_s = first.u.cwiseQuotient(scale_);
+  double travelled = 0;
   while (static_cast<int>(r.points.size()) < options_.max_points) {
-    if (options_.cancelled && options_.cancelled()) return finish(PalcStatus::kStopped, "cancelled");
+    if (options_.cancelled && options_.cancelled())
+      return finish(PalcStatus::kStopped, "cancelled");
     const PalcPoint& last = r.points.back();
-    c = Correct(last.u + ds * last.tangent.cwiseProduct(scale_), last.tangent);
+    const VectorXd pred = hooks.Predict(last, ds, scale_);
+    PalcAction act = hooks.Predicted(last, pred, &ds);
+    if (act == PalcAction::kEnd) return finish(PalcStatus::kStopped, "");
+    if (act == PalcAction::kRetry) continue;
+    const PalcCorrection c = Correct(pred, last.tangent);
     r.newton_iterations += c.iterations;
     if (!c.ok) {
+      act = hooks.Rejected(last, c, pred, &ds);
+      if (act == PalcAction::kEnd) return finish(PalcStatus::kStopped, "");
+      if (act == PalcAction::kRetry) continue;
       ++r.rejected_steps;
       ds *= 0.5;
       if (ds < options_.ds_min) return finish(PalcStatus::kStepTooSmall, c.why);
@@ -189,15 +215,19 @@ PalcResult Palc::Trace(const VectorXd& u0, int fixed, const VectorXd& direction,
     PalcPoint next{c.u, Tangent(c.jac, last.tangent), c.iterations, c.stalled, {}};
     for (int k = 0; k < next.tangent.size(); ++k)
       if (next.tangent[k] * last.tangent[k] < 0) next.folds.push_back(k);
-    const VectorXd a = last.u.cwiseQuotient(scale_), d = c.u.cwiseQuotient(scale_) - a;
+    act = hooks.Converged(last, c, &next, &ds);
+    if (act == PalcAction::kEnd) return finish(PalcStatus::kStopped, "");
+    if (act == PalcAction::kRetry) continue;
+    const VectorXd a = last.u.cwiseQuotient(scale_), d = next.u.cwiseQuotient(scale_) - a;
     const double step = d.norm();
     travelled += step;
     r.points.push_back(std::move(next));
-    if (monitor && !monitor(r.points)) return finish(PalcStatus::kStopped, "");
+    if (!hooks.Accepted(r.points)) return finish(PalcStatus::kStopped, "");
     // The last chord passes through the first point, moving the same way: a
     // closed curve.
     const double s = (first_s - a).dot(d) / d.squaredNorm();
-    if (travelled > 3 * step && s >= 0 && s <= 1 && (a + s * d - first_s).norm() < 0.1 * step &&
+    if (options_.closed_curves && travelled > 3 * step && s >= 0 && s <= 1 &&
+        (a + s * d - first_s).norm() < 0.1 * step &&
         r.points.back().tangent.dot(r.points.front().tangent) > 0)
       return finish(PalcStatus::kClosed, "");
     if (c.iterations <= options_.fast_iterations)

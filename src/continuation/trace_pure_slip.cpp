@@ -9,8 +9,9 @@
 #include <cmath>
 
 #include "continuation/branch_tracers.hpp"
-#include "stickslip/continuation/palc.hpp"
 #include "continuation/special_points.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/continuation/palc.hpp"
 
 namespace stickslip {
 
@@ -36,7 +37,7 @@ class PureSlipCurve : public PalcProblem {
  public:
   PureSlipCurve(BranchContext& ctx, double hp) : ctx_(ctx), hp_(hp) {}
   int unknowns() const override { return 2; }
-  void BeginCorrection() override { fresh_ = true; }
+  void BeginCorrection() override { chord_stale_ = true; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override {
     double g = 0, ga = 0;
@@ -47,11 +48,11 @@ class PureSlipCurve : public PalcProblem {
       return false;
     }
     // The column's dG/dp is this evaluation's; the quotient is held (a chord).
-    if (!map.has_dpdp && fresh_ && !DGDp(u[0], u[1], g)) {
+    if (!map.has_dpdp && chord_stale_ && !DGDp(u[0], u[1], g)) {
       *why = "dG/dp failed on both sides";
       return false;
     }
-    fresh_ = false;
+    chord_stale_ = false;
     *f = Eigen::VectorXd::Constant(1, g);
     *jac = Eigen::MatrixXd(1, 2);
     (*jac) << ga, gp_;
@@ -78,7 +79,7 @@ class PureSlipCurve : public PalcProblem {
   BranchContext& ctx_;
   const double hp_;
   double gp_ = 0;
-  bool fresh_ = true;
+  bool chord_stale_ = true;  // the held dG/dp must be recomputed before use
 };
 
 PalcOptions CurveOptions(const ContinuationOptions& o, double R) {
@@ -86,74 +87,88 @@ PalcOptions CurveOptions(const ContinuationOptions& o, double R) {
   p.ds = p.ds_max = 2 * o.max_step;
   p.ds_min = std::min(o.min_step, p.ds);
   p.max_newton = tuning::kMaxCorrector;
+  p.fast_iterations = tuning::kFastCorrector;
+  p.grow = tuning::kGrow;
   p.tol = o.orbit.EffectiveNewtonTol();
   p.scale = Eigen::Vector2d(1.0, R);
+  p.max_points = o.max_points + 1;  // the start and max_points steps
+  p.closed_curves = false;          // a branch ends at range ends, Hopf or grazing points
   return p;
 }
 
-class PureSlipTracer {
+// The branch on Palc's loop (Palc::Continue); the hooks add the physics.
+class PureSlipTracer : public PalcHooks {
  public:
   PureSlipTracer(BranchContext& ctx, const BranchStart& s)
       : ctx_(ctx),
         o_(ctx.options()),
         R_(ctx.LocalScale(s.p)),
-        ds_max_(2 * o_.max_step),
-        ds_min_(o_.min_step),
-        a_(s.a),
-        p_(s.p),
-        ds_(ds_max_),
+        ds_min_(std::min(o_.min_step, 2 * o_.max_step)),
         // Forward-difference step for dG/dp, balanced against the integration error.
         curve_(ctx, std::max(1e-7, std::sqrt(o_.orbit.flow.rtol)) * std::max(R_, std::abs(s.p))),
-        palc_(curve_, CurveOptions(o_, R_)),
+        palc_(curve_, Options()),
         hopf_pending_(s.from_hopf),
         p_hopf_start_(s.p) {}
 
   BranchEnd Run(const BranchStart& s);
 
+  Eigen::VectorXd Predict(const PalcPoint& last, double ds, const Eigen::VectorXd&) override {
+    return Eigen::Vector2d(last.u[0] + ds * last.tangent[0], last.u[1] + ds * last.tangent[1] * R_);
+  }
+  PalcAction Predicted(const PalcPoint& last, const Eigen::VectorXd& pred, double* ds) override;
+  PalcAction Rejected(const PalcPoint& last, const PalcCorrection& c, const Eigen::VectorXd& pred,
+                      double* ds) override;
+  PalcAction Converged(const PalcPoint& last, const PalcCorrection& c, PalcPoint* next,
+                       double* ds) override;
+
  private:
-  bool Start(double dir);
+  PalcOptions Options() {
+    PalcOptions p = CurveOptions(o_, R_);
+    p.cancelled = [this] { return ctx_.Stop(); };
+    return p;
+  }
+  bool Start(const BranchStart& s, PalcPoint* first);
   bool Land(double end, double a_guess);
   // A smaller step; false (and the branch failed with `why`) below min_step.
-  bool Shrink(double p, const char* why);
-  BranchEnd AtHopf();
-  BranchEnd Rejected(const PalcCorrection& c, double p_pred, bool* retry);
-  void Accept(const PalcCorrection& c);
+  bool Shrink(double* ds, double p, const std::string& why);
+  PalcAction End(BranchEnd e) {
+    end_ = e;
+    return PalcAction::kEnd;
+  }
+  BranchEnd AtHopf(const PalcPoint& last);
   double Polish(const PalcCorrection& c);
+  void Accept(const PalcPoint& last, const PalcCorrection& c, const PalcPoint& next);
 
   BranchContext& ctx_;
   const ContinuationOptions& o_;
-  const double R_, ds_max_, ds_min_;
-  double a_, p_;
-  Eigen::Vector2d t_ = Eigen::Vector2d(1, 0);  // unit tangent, scaled (a, p / R)
-  double ds_;
+  const double R_, ds_min_;
   PureSlipCurve curve_;
   Palc palc_;
   bool last_stable_ = true, hopf_pending_;
   double last_xdot_max_ = 0, last_v_ = 0;
   const double p_hopf_start_;
-  static constexpr BranchEnd kStopped{BranchEnd::kStopped};
+  BranchEnd end_{BranchEnd::kStopped};
 };
 
 // The first point and the tangent there; from a Hopf point the tangent is (1, 0).
-bool PureSlipTracer::Start(double dir) {
-  if (hopf_pending_) {
-    ds_ = std::max(tuning::kAmplitudeEnd * 1.5, ds_max_);
-    return true;  // stability at the start is that of the first orbit, added with it
-  }
+bool PureSlipTracer::Start(const BranchStart& s, PalcPoint* first) {
+  first->u = Eigen::Vector2d(s.a, s.p);
+  first->tangent = Eigen::Vector2d(1, 0);
+  if (hopf_pending_) return true;  // stability at the start is that of the first orbit
   Eigen::VectorXd f;
   Eigen::MatrixXd jac;
   std::string why;
   curve_.BeginCorrection();
-  if (!curve_.Evaluate(Eigen::Vector2d(a_, p_), &f, &jac, &why)) {
-    ctx_.Fail("pure-slip orbit at " + ctx_.Where(p_), why);
+  if (!curve_.Evaluate(first->u, &f, &jac, &why)) {
+    ctx_.Fail("pure-slip orbit at " + ctx_.Where(s.p), why);
     return false;
   }
-  t_ = palc_.Tangent(jac, Eigen::Vector2d(0, dir));
+  first->tangent = palc_.Tangent(jac, Eigen::Vector2d(0, s.dir));
   const Orbit o = PureSlipFromMap(curve_.map);
   last_stable_ = o.stable;
   last_xdot_max_ = o.xdot_max;
-  last_v_ = Model(ctx_.At(p_)).v();
-  ctx_.Add(ctx_.FromOrbit(p_, o, a_));
+  last_v_ = Model(ctx_.At(s.p)).v();
+  ctx_.Add(ctx_.FromOrbit(s.p, o, s.a));
   return true;
 }
 
@@ -168,53 +183,76 @@ bool PureSlipTracer::Land(double end, double a_guess) {
   return true;
 }
 
-bool PureSlipTracer::Shrink(double p, const char* why) {
-  ds_ *= 0.5;
+bool PureSlipTracer::Shrink(double* ds, double p, const std::string& why) {
+  *ds *= 0.5;
   ++ctx_.counts().rejected_steps;
-  if (ds_ >= ds_min_) return true;
+  if (*ds >= ds_min_) return true;
   ctx_.Fail("pure-slip orbit at " + ctx_.Where(p), why);
   return false;
 }
 
 // Near a Hopf point a^2 is linear in p (the amplitude of a Hopf branch goes
 // like sqrt|p - p_HB|), so along the tangent a^2 vanishes a tp R / (2 |ta|) ahead.
-BranchEnd PureSlipTracer::AtHopf() {
-  const double to_zero = std::abs(a_ * t_[1] * R_ / (2 * t_[0]));
-  if (!ctx_.NearHopf(p_, tuning::kHopfSlack * to_zero)) {
-    ctx_.Fail("pure-slip branch at " + ctx_.Where(p_),
+BranchEnd PureSlipTracer::AtHopf(const PalcPoint& last) {
+  const double a = last.u[0], p = last.u[1];
+  const double to_zero = std::abs(a * last.tangent[1] * R_ / (2 * last.tangent[0]));
+  if (!ctx_.NearHopf(p, tuning::kHopfSlack * to_zero)) {
+    ctx_.Fail("pure-slip branch at " + ctx_.Where(p),
               "the amplitude shrinks to zero away from any Hopf point");
-    return kStopped;
+    return {BranchEnd::kStopped};
   }
-  ctx_.AddHopfEnd(p_, last_stable_);
-  return {BranchEnd::kHopf, p_};
+  ctx_.AddHopfEnd(p, last_stable_);
+  return {BranchEnd::kHopf, p};
+}
+
+// Before a correction: the range ends inside this step (land on it exactly),
+// or the amplitude would drop below kAmplitudeEnd (end at the Hopf point).
+PalcAction PureSlipTracer::Predicted(const PalcPoint& last, const Eigen::VectorXd& pred,
+                                     double* ds) {
+  const double a = last.u[0], p = last.u[1], lo = ctx_.lo(), hi = ctx_.hi();
+  if (pred[1] > hi || pred[1] < lo) {
+    const double end = pred[1] > hi ? hi : lo;
+    const Eigen::VectorXd& t = last.tangent;
+    if (std::abs(end - p) <= Tolerances::From(o_.orbit.flow.rtol, o_.orbit.flow.atol).on_end * R_)
+      return End({BranchEnd::kRangeEnd});
+    if (Land(end, a + (end - p) / (t[1] * R_) * t[0])) return End({BranchEnd::kRangeEnd});
+    return Shrink(ds, end, "no convergence at the range end") ? PalcAction::kRetry
+                                                              : PalcAction::kEnd;
+  }
+  if (!hopf_pending_ && last.tangent[0] < 0 && pred[0] < tuning::kAmplitudeEnd) {
+    if (a <= tuning::kHopfFrom * tuning::kAmplitudeEnd) return End(AtHopf(last));
+    return Shrink(ds, p, "no step approaches the Hopf point") ? PalcAction::kRetry
+                                                              : PalcAction::kEnd;
+  }
+  return PalcAction::kGoOn;
 }
 
 // A corrector that failed: a grazing point ahead ends the branch; otherwise a
 // smaller step (retry), or the branch fails below min_step.
-BranchEnd PureSlipTracer::Rejected(const PalcCorrection& c, double p_pred, bool* retry) {
-  *retry = false;
+PalcAction PureSlipTracer::Rejected(const PalcPoint& last, const PalcCorrection& c,
+                                    const Eigen::VectorXd& pred, double* ds) {
+  ctx_.counts().newton_iterations += c.iterations;
+  const double p = last.u[1];
   const bool near_touch =
       last_v_ - last_xdot_max_ < tuning::kNearTouch * std::max(tuning::kNearTouchMin, last_v_);
-  if (curve_.stuck && !hopf_pending_ && (near_touch || ds_ <= tuning::kSmallStep * ds_min_)) {
-    const double dp_sign = t_[1] > 0 ? 1.0 : -1.0;
+  if (curve_.stuck && !hopf_pending_ && (near_touch || *ds <= tuning::kSmallStep * ds_min_)) {
+    const double dp_sign = last.tangent[1] > 0 ? 1.0 : -1.0;
     double p_gr = 0;
-    if (GrazingAhead(ctx_, p_, dp_sign, std::abs(p_pred - p_), &p_gr))
-      return {BranchEnd::kGrazing, p_gr, dp_sign, PointKind::kPureSlip};
+    if (GrazingAhead(ctx_, p, dp_sign, std::abs(pred[1] - p), &p_gr))
+      return End({BranchEnd::kGrazing, p_gr, dp_sign, PointKind::kPureSlip});
   }
-  ds_ *= 0.5;
+  *ds *= 0.5;
   ++ctx_.counts().rejected_steps;
-  if (ds_ < ds_min_) {
-    ctx_.Fail("pure-slip branch at " + ctx_.Where(p_), c.why);
-    return kStopped;
-  }
-  *retry = true;
-  return kStopped;
+  if (*ds >= ds_min_) return PalcAction::kRetry;
+  ctx_.Fail("pure-slip branch at " + ctx_.Where(p), c.why);
+  return PalcAction::kEnd;
 }
 
 // The amplitude of a converged point at its own p. The corrector's step norm
 // in (a, p) leaves |G| ~ tol |G_p|, i.e. an amplitude error G / G_a at fixed p
 // that grows like 1 / a towards a Hopf point (G_a ~ a there). One Newton step
-// in a at fixed p takes it to the integration noise; curve_.map follows.
+// in a at fixed p (the extra corrector step) takes it to the integration
+// noise; curve_.map follows.
 double PureSlipTracer::Polish(const PalcCorrection& c) {
   const double a = c.u[0], da = -c.f[0] / c.jac(0, 0);
   if (!std::isfinite(da) || std::abs(da) <= tuning::kPolish * o_.orbit.flow.rtol * std::max(1.0, a))
@@ -226,84 +264,64 @@ double PureSlipTracer::Polish(const PalcCorrection& c) {
   return a + da;
 }
 
-// A converged point: new tangent along the old one, fold between the two
-// points if the tangent's p component changed sign.
-void PureSlipTracer::Accept(const PalcCorrection& c) {
-  const Eigen::VectorXd t = palc_.Tangent(c.jac, t_);
-  const double a = Polish(c);
+// A converged point beyond a range end lands on the end instead; otherwise it
+// is polished (the extra corrector step) and accepted.
+PalcAction PureSlipTracer::Converged(const PalcPoint& last, const PalcCorrection& c,
+                                     PalcPoint* next, double* ds) {
+  ctx_.counts().newton_iterations += c.iterations;
+  const double lo = ctx_.lo(), hi = ctx_.hi();
+  if (c.u[1] > hi || c.u[1] < lo) {
+    const double end = c.u[1] > hi ? hi : lo;
+    if (Land(end, 0.5 * (last.u[0] + c.u[0]))) return End({BranchEnd::kRangeEnd});
+    if (hopf_pending_ && c.u[0] <= tuning::kHopfFrom * tuning::kAmplitudeEnd) {
+      // The branch leaves the range before its amplitude can be resolved
+      // (below kAmplitudeEnd): in range it is its Hopf point only.
+      ctx_.AddHopfEnd(p_hopf_start_, PureSlipFromMap(curve_.map).stable);
+      return End({BranchEnd::kHopf, p_hopf_start_});
+    }
+    return Shrink(ds, end, "no convergence at the range end") ? PalcAction::kRetry
+                                                              : PalcAction::kEnd;
+  }
+  next->u[0] = Polish(c);
+  Accept(last, c, *next);
+  return PalcAction::kGoOn;
+}
+
+// Records an accepted point: its row, the Hopf end it started from, and a
+// fold between it and the last point if the tangent's p component changed sign.
+void PureSlipTracer::Accept(const PalcPoint& last, const PalcCorrection& c, const PalcPoint& next) {
   Orbit o = PureSlipFromMap(curve_.map);
   o.newton_stalled = c.stalled;
   if (hopf_pending_) {
     ctx_.AddHopfEnd(p_hopf_start_, o.stable);
     hopf_pending_ = false;
-  } else if (t[1] * t_[1] < 0) {
+  } else if (next.tangent[1] * last.tangent[1] < 0) {
     auto g = [&](double a, double p, double* gv) {
       return ctx_.EvalG(a, p, gv, nullptr, nullptr) == OrbitStatus::kOk;
     };
     double a_lp = 0, p_lp = 0;
     ReturnMap map;
     double gv = 0;
-    if (LocateFold(g, a_, p_, c.u[0], c.u[1], t_[1] < 0, R_, &a_lp, &p_lp) &&
+    if (LocateFold(g, last.u[0], last.u[1], c.u[0], c.u[1], last.tangent[1] < 0, R_, &a_lp,
+                   &p_lp) &&
         ctx_.EvalG(a_lp, p_lp, &gv, nullptr, &map) == OrbitStatus::kOk)
       ctx_.AddSpecial(FoldPoint(p_lp, map.flow, "fold of the pure-slip branch (smooth LP)"));
   }
-  ctx_.Add(ctx_.FromOrbit(c.u[1], o, a));
-  a_ = a;
-  p_ = c.u[1];
-  t_ = t;
+  ctx_.Add(ctx_.FromOrbit(c.u[1], o, next.u[0]));
   last_stable_ = o.stable;
   last_xdot_max_ = o.xdot_max;
-  last_v_ = Model(ctx_.At(p_)).v();
-  if (c.iterations <= tuning::kFastCorrector) ds_ = std::min(tuning::kGrow * ds_, ds_max_);
+  last_v_ = Model(ctx_.At(c.u[1])).v();
 }
 
 BranchEnd PureSlipTracer::Run(const BranchStart& s) {
-  if (!Start(s.dir)) return kStopped;
-  const double lo = ctx_.lo(), hi = ctx_.hi();
-  for (int count = 1; !ctx_.Stop(); ++count) {
-    if (count > o_.max_points) {
-      ctx_.Fail("pure-slip branch at " + ctx_.Where(p_),
-                "more than max_points = " + std::to_string(o_.max_points) + " points");
-      return kStopped;
-    }
-    const double a_pred = a_ + ds_ * t_[0], p_pred = p_ + ds_ * t_[1] * R_;
-    // The range ends inside this step: land on it exactly.
-    if (p_pred > hi || p_pred < lo) {
-      const double end = p_pred > hi ? hi : lo;
-      if (std::abs(end - p_) <= 1e-13 * R_) return {BranchEnd::kRangeEnd};
-      if (Land(end, a_ + (end - p_) / (t_[1] * R_) * t_[0])) return {BranchEnd::kRangeEnd};
-      if (!Shrink(end, "no convergence at the range end")) return kStopped;
-      continue;
-    }
-    if (!hopf_pending_ && t_[0] < 0 && a_pred < tuning::kAmplitudeEnd) {
-      if (a_ <= tuning::kHopfFrom * tuning::kAmplitudeEnd) return AtHopf();
-      if (!Shrink(p_, "no step approaches the Hopf point")) return kStopped;
-      continue;
-    }
-    const PalcCorrection c = palc_.Correct(Eigen::Vector2d(a_pred, p_pred), t_);
-    ctx_.counts().newton_iterations += c.iterations;
-    if (!c.ok) {
-      bool retry = false;
-      const BranchEnd e = Rejected(c, p_pred, &retry);
-      if (retry) continue;
-      return e;
-    }
-    // Converged beyond the range end: land on the end itself instead.
-    if (c.u[1] > hi || c.u[1] < lo) {
-      const double end = c.u[1] > hi ? hi : lo;
-      if (Land(end, 0.5 * (a_ + c.u[0]))) return {BranchEnd::kRangeEnd};
-      if (hopf_pending_ && c.u[0] <= tuning::kHopfFrom * tuning::kAmplitudeEnd) {
-        // The branch leaves the range before its amplitude can be resolved
-        // (below kAmplitudeEnd): in range it is its Hopf point only.
-        ctx_.AddHopfEnd(p_hopf_start_, PureSlipFromMap(curve_.map).stable);
-        return {BranchEnd::kHopf, p_hopf_start_};
-      }
-      if (!Shrink(end, "no convergence at the range end")) return kStopped;
-      continue;
-    }
-    Accept(c);
-  }
-  return kStopped;
+  PalcPoint first;
+  if (!Start(s, &first)) return {BranchEnd::kStopped};
+  const double ds_max = 2 * o_.max_step;
+  const double ds = hopf_pending_ ? std::max(tuning::kAmplitudeEnd * 1.5, ds_max) : ds_max;
+  const PalcResult r = palc_.Continue(first, ds, *this);
+  if (r.status == PalcStatus::kMaxPoints)
+    ctx_.Fail("pure-slip branch at " + ctx_.Where(r.points.back().u[1]), r.message);
+  return end_;
 }
 
 }  // namespace

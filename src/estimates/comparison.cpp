@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "stickslip/estimates/estimates.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/estimates/estimates.hpp"
 
 namespace stickslip {
 
@@ -17,22 +17,41 @@ void Track(const EstimateCell& c, double p, double* max_err, double* p_at, int* 
     *p_at = p;
   }
 }
+// Why the estimates do not apply to this model, or empty.
+std::string NotApplicable(const Params& base, const std::string& param) {
+  if (base.law != LawKind::kCubic)
+    return std::string("the estimates are for the cubic law, not ") + LawName(base.law);
+  if (base.k5 != 0 || param == "k5")
+    return std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
+           (param == "k5" ? ", and k5 is the continued parameter" : "");
+  return "";
+}
+
+// The closed forms at the branch's special points (GR and HB in v, HB in beta).
+void AddSpecialEstimates(const Params& base, const std::string& param, const ContinuationResult& r,
+                         EstimateComparison* out_) {
+  EstimateComparison& out = *out_;
+  for (const SpecialPoint& s : r.special) {
+    Params at = base;  // the base value of the continued parameter is not used
+    SetParameter(at, param, s.p);
+    const AveragingEstimate avg0 = EstimateAveraging(at);
+    if (s.kind == SpecialKind::kGrazing && param == "v")
+      out.special.push_back(
+          {"GR", "averaging: a_ps = v, 2 sqrt((k1 - 2 beta)/(15 k3))", s.p, avg0.grazing_speed});
+    if (s.kind == SpecialKind::kHopf && param == "v")
+      out.special.push_back({"HB", "seed (3.16): sqrt((k1 - 2 beta)/(3 k3))", s.p, SeedVMax(at)});
+    if (s.kind == SpecialKind::kHopf && param == "beta")
+      out.special.push_back({"HB", "(k1 - 3 k3 v^2) / 2", s.p, avg0.hopf_beta});
+  }
+}
 }  // namespace
 
 EstimateComparison CompareEstimates(const Params& base, const std::string& param,
                                     const ContinuationResult& r, int check_points,
                                     const std::function<bool()>& cancelled) {
   EstimateComparison out;
-  if (base.law != LawKind::kCubic) {
-    out.reason = std::string("the estimates are for the cubic law, not ") + LawName(base.law);
-    return out;
-  }
-  if (base.k5 != 0 || param == "k5") {
-    out.reason =
-        std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
-        (param == "k5" ? ", and k5 is the continued parameter" : "");
-    return out;
-  }
+  out.reason = NotApplicable(base, param);
+  if (!out.reason.empty()) return out;
   out.applies = true;
   const size_t n = r.points.size();
   ExtraColumn r1{"r1", std::vector<double>(n, kNan)};
@@ -98,18 +117,7 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
   out.columns = {r1, err_r1, a_ps, err_a_ps, xb_lo, xb_hi, xb_ok};
   if (out.cancelled) return out;
 
-  for (const SpecialPoint& s : r.special) {
-    Params at = base;  // the base value of the continued parameter is not used
-    SetParameter(at, param, s.p);
-    const AveragingEstimate avg0 = EstimateAveraging(at);
-    if (s.kind == SpecialKind::kGrazing && param == "v")
-      out.special.push_back(
-          {"GR", "averaging: a_ps = v, 2 sqrt((k1 - 2 beta)/(15 k3))", s.p, avg0.grazing_speed});
-    if (s.kind == SpecialKind::kHopf && param == "v")
-      out.special.push_back({"HB", "seed (3.16): sqrt((k1 - 2 beta)/(3 k3))", s.p, SeedVMax(at)});
-    if (s.kind == SpecialKind::kHopf && param == "beta")
-      out.special.push_back({"HB", "(k1 - 3 k3 v^2) / 2", s.p, avg0.hopf_beta});
-  }
+  AddSpecialEstimates(base, param, r, &out);
   return out;
 }
 

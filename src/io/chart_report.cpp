@@ -24,7 +24,8 @@ TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string
   Header(t, r, model);
   for (size_t i = 0; i < r.curves.size(); ++i)
     t.AddComment("curve " + std::to_string(i + 1) + " " + CurveLabel(r.curves[i].kind) + ": " +
-                 std::to_string(r.curves[i].points.size()) + " points, ends " + r.curves[i].ends);
+                 std::to_string(r.curves[i].points.size()) + " points, ends " +
+                 r.curves[i].ends.Text());
   if (r.unphysical_points > 0)
     t.AddComment("unphysical: " + std::to_string(r.unphysical_points) +
                  " points whose orbit visits slip speeds where mu <= 0");
@@ -33,7 +34,7 @@ TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string
     for (const CurvePoint& p : c.points) {
       const bool hb = c.kind == CurveKind::kHopf;
       t.AddRow({p.p1, p.p2, CurveLabel(c.kind), static_cast<int>(i + 1), p.period, p.amplitude,
-                p.multiplier, hb ? TsvTable::Cell(p.l1) : TsvTable::Cell("-"), p.type,
+                p.multiplier, hb ? TsvTable::Cell(p.l1) : TsvTable::Cell("-"), Name(p.type),
                 p.unphysical ? 1 : 0});
     }
   }
@@ -43,7 +44,7 @@ TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string
 TsvTable Codim2Table(const ChartResult& r, const Plane& plane, const std::string& model) {
   TsvTable t({"label", plane.p1, plane.p2, "description"});
   Header(t, r, model);
-  for (const Codim2Point& p : r.codim2) t.AddRow({p.label, p.p1, p.p2, p.description});
+  for (const Codim2Point& p : r.codim2) t.AddRow({Name(p.label), p.p1, p.p2, p.description});
   return t;
 }
 

@@ -79,7 +79,7 @@ void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
       if (!clash) break;
     }
     placed.push_back({p.p1 + dx[k] * 0.03 * pl.width1(), p.p2 + dy[k] * 0.03 * pl.width2()});
-    os << "set label '" << p.label << "' at " << p.p1 << "," << p.p2 << " offset "
+    os << "set label '" << Name(p.label) << "' at " << p.p1 << "," << p.p2 << " offset "
        << (dx[k] > 0 ? "0.8" : "-0.8") << "," << (dy[k] > 0 ? "0.9" : "-0.9") << " "
        << (dx[k] > 0 ? "left" : "right") << " front font ',13' noenhanced\n";
   }
@@ -89,17 +89,18 @@ void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
 void Curves(std::ostream& os, const ChartResult& r) {
   struct Style {
     CurveKind kind;
-    const char* type;
+    CurvePointType type;
     const char* color;
     const char* dash;
     const char* title;
   };
   const Style styles[] = {
-      {CurveKind::kHopf, "supercritical", "black", "1", "HB, supercritical"},
-      {CurveKind::kHopf, "subcritical", "black", "(7,5)", "HB, subcritical"},
-      {CurveKind::kGrazing, "persistence", "#c00000", "1", "GR, persistence"},
-      {CurveKind::kGrazing, "nonsmooth-fold", "#c00000", "(7,5)", "GR, nonsmooth fold"},
-      {CurveKind::kFold, "fold", "#0050d0", "1", "LP, pure-slip fold"},
+      {CurveKind::kHopf, CurvePointType::kSupercritical, "black", "1", "HB, supercritical"},
+      {CurveKind::kHopf, CurvePointType::kSubcritical, "black", "(7,5)", "HB, subcritical"},
+      {CurveKind::kGrazing, CurvePointType::kPersistence, "#c00000", "1", "GR, persistence"},
+      {CurveKind::kGrazing, CurvePointType::kNonsmoothFold, "#c00000", "(7,5)",
+       "GR, nonsmooth fold"},
+      {CurveKind::kFold, CurvePointType::kFold, "#0050d0", "1", "LP, pure-slip fold"},
   };
   for (const Style& st : styles) {
     bool present = false;
@@ -109,8 +110,9 @@ void Curves(std::ostream& os, const ChartResult& r) {
     if (!present) continue;
     for (size_t i = 0; i < r.curves.size(); ++i) {
       if (r.curves[i].kind != st.kind) continue;
-      os << ", \\\n     'curves.tsv' using 1:(($4 == " << i + 1 << " && strcol(9) eq '" << st.type
-         << "') ? $2 : NaN) with lines lw 2.5 lc rgb '" << st.color << "' dt " << st.dash;
+      os << ", \\\n     'curves.tsv' using 1:(($4 == " << i + 1 << " && strcol(9) eq '"
+         << Name(st.type) << "') ? $2 : NaN) with lines lw 2.5 lc rgb '" << st.color << "' dt "
+         << st.dash;
       os << (present ? std::string(" title '") + st.title + "'" : std::string(" notitle"));
       present = false;  // one key entry per style
     }
@@ -126,8 +128,8 @@ std::string AxisLabel(const std::string& name) {
 std::string ChartTitle(const Params& base, const Plane& plane) {
   const char* law[] = {"cubic", "Coulomb", "Stribeck", "Leine"};  // LawKind's order
   const int k = static_cast<int>(base.law);
-  std::string t = std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : LawName(base.law)) +
-                  " law";
+  std::string t =
+      std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : LawName(base.law)) + " law";
   const char* sep = ": ";
   for (const auto& name : ParameterNames(base.law)) {
     if (name == plane.p1 || name == plane.p2) continue;
@@ -146,8 +148,8 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "# Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,\n"
      << "# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.\n"
      << "if (!exists('suffix')) suffix = ''\n"
-     << FigureTerminal(format, 1000, 820)
-     << "set output '" << FigureFile("chart", format) << "'.suffix\n"
+     << FigureTerminal(format, 1000, 820) << "set output '" << FigureFile("chart", format)
+     << "'.suffix\n"
      << "set datafile separator '\\t'\n"
      << "set datafile columnheaders\n"
      << "set xlabel '" << AxisLabel(plane.p1) << "'\nset ylabel '" << AxisLabel(plane.p2) << "'\n"

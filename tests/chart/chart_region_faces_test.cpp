@@ -2,7 +2,7 @@
 // point classified against every periodic orbit found there by an independent
 // scan of the return map (FindPeriodicOrbits of orbit_scan.hpp), for the
 // shipped seed and quintic chart studies; the faces tile the rectangle.
-#include "stickslip/chart/chart_region_faces.hpp"
+#include "chart/chart_region_faces.hpp"
 
 #include <gtest/gtest.h>
 

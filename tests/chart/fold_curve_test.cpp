@@ -71,9 +71,9 @@ TEST(FoldCurve, QuinticFoldRunsFromGHToGRLP) {
   const ChartResult& r = QuinticChart();
   const Curve* lp = FoldCurve(r);
   ASSERT_NE(lp, nullptr);
-  EXPECT_EQ(lp->ends, "GH / GR-LP");
+  EXPECT_EQ(lp->ends.Text(), "GH / GR-LP");
   const Codim2Point *gh = nullptr, *grlp = nullptr;
-  for (const Codim2Point& c : r.codim2) (c.label == "GH" ? gh : grlp) = &c;
+  for (const Codim2Point& c : r.codim2) (c.label == Codim2Label::kGeneralizedHopf ? gh : grlp) = &c;
   ASSERT_TRUE(gh && grlp);
   EXPECT_EQ(lp->points.front().p1, gh->p1);
   EXPECT_EQ(lp->points.front().p2, gh->p2);

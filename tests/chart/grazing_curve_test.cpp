@@ -65,7 +65,7 @@ TEST(GrazingCurve, SeedCurveOnTheReferenceGrazingCurve) {
   // Supercritical everywhere: stick-slip hands over to a stable pure-slip orbit.
   for (const CurvePoint& p : r.curves[0].points) {
     EXPECT_LT(p.multiplier, 1.0);
-    EXPECT_EQ(p.type, "persistence");
+    EXPECT_EQ(p.type, CurvePointType::kPersistence);
   }
   EXPECT_TRUE(r.codim2.empty());
 }
@@ -78,10 +78,10 @@ TEST(GrazingCurve, SeedCurveReachesBetaZero) {
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_EQ(r.status, ChartStatus::kOk) << r.message;
   const Curve& c = r.curves[0];
-  EXPECT_EQ(c.ends, "border / border");
+  EXPECT_EQ(c.ends.Text(), "border / border");
   const CurvePoint& end =
       c.points.front().p2 < c.points.back().p2 ? c.points.front() : c.points.back();
-  ASSERT_EQ(end.p2, 0.0) << c.ends;
+  ASSERT_EQ(end.p2, 0.0) << c.ends.Text();
   Params p;
   p.beta = 0;
   const long double v = ref::GrazingSpeed(p, end.p1 - 1e-4L, end.p1 + 1e-4L, 1e-15L);
@@ -144,13 +144,13 @@ TEST(GrazingCurve, GrazingFoldPointAgainstTheReference) {
   const ChartResult& r = QuinticChart();
   ASSERT_EQ(r.codim2.size(), 1u);
   const Codim2Point& lp = r.codim2[0];
-  EXPECT_EQ(lp.label, "GR-LP");
+  EXPECT_EQ(lp.label, Codim2Label::kGrazingFold);
   // The type changes there: persistence on the supercritical side, fold past it.
   const auto& pts = r.curves[0].points;
   bool persistence = false, fold = false;
   for (const CurvePoint& p : pts) {
-    persistence = persistence || (p.type == "persistence" && p.p2 > lp.p2);
-    fold = fold || (p.type == "nonsmooth-fold" && p.p2 < lp.p2);
+    persistence = persistence || (p.type == CurvePointType::kPersistence && p.p2 > lp.p2);
+    fold = fold || (p.type == CurvePointType::kNonsmoothFold && p.p2 < lp.p2);
   }
   EXPECT_TRUE(persistence && fold);
   // On the reference grazing curve ...

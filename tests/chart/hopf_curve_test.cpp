@@ -35,7 +35,7 @@ TEST(HopfCurve, CubicMatchesClosedForm) {
   EXPECT_GT(HopfPoints(r), 50);
   for (const CurvePoint& p : r.curves[0].points) {
     EXPECT_NEAR(p.p1, std::sqrt((0.45 - 2 * p.p2) / 1.8), 1e-12) << "beta = " << p.p2;
-    EXPECT_EQ(p.type, "supercritical");
+    EXPECT_EQ(p.type, CurvePointType::kSupercritical);
     EXPECT_DOUBLE_EQ(p.l1, -6 * 0.6 / 16);  // mu''' = 6 k3
   }
   // It runs from beta = 0 (v = 0.5) to the left edge v = 0.02.
@@ -54,7 +54,7 @@ TEST(HopfCurve, StribeckMatchesClosedForm) {
   EXPECT_GT(HopfPoints(r), 30);
   for (const CurvePoint& c : r.curves[0].points) {
     EXPECT_NEAR(c.p1, -0.5 * std::log(2 * c.p2 * 0.5 / 0.15), 1e-12) << "beta = " << c.p2;
-    EXPECT_EQ(c.type, "subcritical");
+    EXPECT_EQ(c.type, CurvePointType::kSubcritical);
   }
 }
 
@@ -71,10 +71,11 @@ TEST(HopfCurve, QuinticMatchesClosedFormAndHasItsGeneralizedHopfPoint) {
     const double v = c.p1;
     EXPECT_NEAR(2 * c.p2, 0.45 - 1.8 * v * v + 1.2 * v * v * v * v, 1e-12) << "v = " << v;
     // mu''' = 6 k3 - 60 k5 v^2 changes sign at v = sqrt(k3 / (10 k5)) = 0.5.
-    EXPECT_EQ(c.type, v < 0.5 ? "supercritical" : "subcritical") << "v = " << v;
+    EXPECT_EQ(c.type, v < 0.5 ? CurvePointType::kSupercritical : CurvePointType::kSubcritical)
+        << "v = " << v;
   }
   ASSERT_EQ(r.codim2.size(), 1u);
-  EXPECT_EQ(r.codim2[0].label, "GH");
+  EXPECT_EQ(r.codim2[0].label, Codim2Label::kGeneralizedHopf);
   EXPECT_NEAR(r.codim2[0].p1, 0.5, 1e-10);
   EXPECT_NEAR(r.codim2[0].p2, (0.45 - 1.8 * 0.25 + 1.2 * 0.0625) / 2, 1e-10);  // 0.0375
 }

@@ -1,7 +1,7 @@
 // Point numbers and labels (labels.hpp) on a hand-made result: each special
 // point sits on the nearest row of its kind, and labels count per type in
 // row order, whatever the order of r.special.
-#include "stickslip/continuation/labels.hpp"
+#include "continuation/labels.hpp"
 
 #include <gtest/gtest.h>
 

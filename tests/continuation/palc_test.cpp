@@ -161,6 +161,52 @@ TEST(Palc, MisuseIsAnException) {
   EXPECT_THROW(palc.CorrectFixed(V(1, 0), 2), InvalidArgument);
 }
 
+// Hooks on the unit circle (an ellipse with A = B = 1), from (1, 0)
+// counter-clockwise: a loose corrector tolerance, an extra corrector step that
+// projects every point onto the circle (the polish), and an end on x = 0
+// where the step would cross it (the range end), with the step landing there.
+class CircleHooks : public PalcHooks {
+ public:
+  PalcAction Predicted(const PalcPoint& last, const VectorXd& pred, double* ds) override {
+    ++predicted;
+    if (pred[0] >= 0) return PalcAction::kGoOn;
+    if (*ds > 1e-9 && last.u[0] > 1e-9) {
+      *ds = std::min(0.5 * *ds, last.u[0]);  // shorter steps towards x = 0
+      return PalcAction::kRetry;
+    }
+    landed = last.u;
+    return PalcAction::kEnd;
+  }
+  PalcAction Converged(const PalcPoint&, const PalcCorrection& c, PalcPoint* next,
+                       double*) override {
+    loose = std::max(loose, std::abs(c.u.norm() - 1));
+    next->u = c.u / c.u.norm();
+    return PalcAction::kGoOn;
+  }
+  int predicted = 0;
+  double loose = 0;
+  VectorXd landed;
+};
+
+TEST(Palc, HooksPolishEveryPointAndEndTheCurve) {
+  Ellipse circle(1.0, 1.0);
+  PalcOptions o;
+  o.ds = o.ds_max = 0.1;
+  o.tol = 1e-3;  // loose: the corrector alone leaves points off the circle
+  Palc palc(circle, o);
+  CircleHooks hooks;
+  const PalcPoint first{V(1.0, 0.0), V(0.0, 1.0), 0, false, {}};
+  const PalcResult r = palc.Continue(first, 0.1, hooks);
+  ASSERT_EQ(r.status, PalcStatus::kStopped) << r.message;
+  EXPECT_GT(hooks.loose, 1e-12);  // the polish had something to do
+  for (const PalcPoint& p : r.points) EXPECT_NEAR(p.u.norm(), 1.0, 1e-15);
+  // Landed within 1e-9 of (0, 1), a quarter of the circle on.
+  ASSERT_EQ(hooks.landed.size(), 2);
+  EXPECT_NEAR(hooks.landed[0], 0.0, 1e-8);
+  EXPECT_NEAR(hooks.landed[1], 1.0, 1e-15);
+  EXPECT_GE(hooks.predicted, static_cast<int>(r.points.size()));
+}
+
 TEST(Palc, NewtonStallTest) {
   bool stalled = false;
   EXPECT_TRUE(NewtonConverged(1e-12, 1.0, 1, 1e-11, &stalled));

@@ -10,11 +10,21 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip {
 
 enum class Fate { kSteadySliding, kStickSlip, kPureSlip, kUndecided };
+template <>
+struct EnumNames<Fate> {
+  static constexpr NamedValue<Fate> kTable[] = {
+      {Fate::kSteadySliding, "steady-sliding"},
+      {Fate::kStickSlip, "stick-slip"},
+      {Fate::kPureSlip, "pure-slip"},
+      {Fate::kUndecided, "undecided"},
+  };
+};
 const char* FateName(Fate f);  // "steady-sliding", "stick-slip", "pure-slip", "undecided"
 
 struct BasinOptions {
@@ -48,6 +58,14 @@ enum class BasinStatus {
   kOk,
   kFailed,     // an integration failed; message names the start
   kCancelled,  // cancelled() returned true; starts so far kept
+};
+template <>
+struct EnumNames<BasinStatus> {
+  static constexpr NamedValue<BasinStatus> kTable[] = {
+      {BasinStatus::kOk, "ok"},
+      {BasinStatus::kFailed, "failed"},
+      {BasinStatus::kCancelled, "cancelled"},
+  };
 };
 const char* BasinStatusName(BasinStatus s);
 

@@ -16,13 +16,44 @@
 #include <vector>
 
 #include "stickslip/chart/chart_faces.hpp"
-#include "stickslip/orbits/orbit.hpp"
 #include "stickslip/chart/plane.hpp"
+#include "stickslip/names.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 
 enum class CurveKind { kHopf, kGrazing, kFold };
+template <>
+struct EnumNames<CurveKind> {
+  static constexpr NamedValue<CurveKind> kTable[] = {
+      {CurveKind::kHopf, "HB"},
+      {CurveKind::kGrazing, "GR"},
+      {CurveKind::kFold, "LP"},
+  };
+};
 const char* CurveLabel(CurveKind k);  // "HB", "GR", "LP"
+
+/// The type of a curve point: HB supercritical / subcritical (degenerate
+/// where l1 = 0); GR persistence / nonsmooth-fold; LP fold.
+enum class CurvePointType {
+  kSupercritical,
+  kSubcritical,
+  kDegenerate,
+  kPersistence,
+  kNonsmoothFold,
+  kFold,
+};
+template <>
+struct EnumNames<CurvePointType> {
+  static constexpr NamedValue<CurvePointType> kTable[] = {
+      {CurvePointType::kSupercritical, "supercritical"},
+      {CurvePointType::kSubcritical, "subcritical"},
+      {CurvePointType::kDegenerate, "degenerate"},
+      {CurvePointType::kPersistence, "persistence"},
+      {CurvePointType::kNonsmoothFold, "nonsmooth-fold"},
+      {CurvePointType::kFold, "fold"},
+  };
+};
 
 struct CurvePoint {
   double p1 = 0, p2 = 0;
@@ -30,22 +61,79 @@ struct CurvePoint {
   // x_min) / 2 and pure-slip multiplier lambda. LP: the fold orbit's.
   double period = 0, amplitude = 0, multiplier = 0;
   double l1 = 0;  // HB only: first Lyapunov coefficient -mu'''(v) / 16
-  // HB: supercritical / subcritical; GR: persistence / nonsmooth-fold; LP: fold.
-  std::string type;
+  CurvePointType type = CurvePointType::kSupercritical;
   // The orbit visits slip speeds where mu <= 0 (not physical there).
   bool unphysical = false;
+};
+
+/// How one end of a curve ended. kNone: not reached (cancelled).
+enum class CurveEndKind {
+  kNone,
+  kStart,            // a way not taken: the curve starts here
+  kBorder,           // left the rectangle, last point on its border
+  kClosed,           // came back to its first point
+  kStopped,          // stopped by the tracer's stop test
+  kGeneralizedHopf,  // an LP curve's start, at its GH point
+  kGrazingFold,      // an LP curve's end, at its GR-LP point
+  kMaxPoints,        // cut short: PALC max_points (why: the message)
+  kStepTooSmall,     // cut short: PALC step below ds_min (why says why)
+  kStartFailed,      // cut short: a way's PALC start failed
+  kNoStart,          // the start point could not be corrected (why says why)
+};
+template <>
+struct EnumNames<CurveEndKind> {
+  static constexpr NamedValue<CurveEndKind> kTable[] = {
+      {CurveEndKind::kNone, ""},
+      {CurveEndKind::kStart, "start"},
+      {CurveEndKind::kBorder, "border"},
+      {CurveEndKind::kClosed, "closed"},
+      {CurveEndKind::kStopped, "stopped"},
+      {CurveEndKind::kGeneralizedHopf, "GH"},
+      {CurveEndKind::kGrazingFold, "GR-LP"},
+      {CurveEndKind::kMaxPoints, "max-points"},
+      {CurveEndKind::kStepTooSmall, "step-too-small"},
+      {CurveEndKind::kStartFailed, "start-failed"},
+      {CurveEndKind::kNoStart, "start failed"},
+  };
+};
+
+struct CurveEnd {
+  CurveEndKind kind = CurveEndKind::kNone;
+  std::string why;  // of a cut: the continuation's message
+  /// "name" or "name: why".
+  std::string Text() const;
+};
+
+/// Both ends of a curve: "first / last", "closed" (last.kind kClosed), or
+/// "start failed: why" (first.kind kNoStart).
+struct CurveEnds {
+  CurveEnd first, last;
+  std::string Text() const;
 };
 
 struct Curve {
   CurveKind kind = CurveKind::kHopf;
   std::vector<CurvePoint> points;
-  std::string ends;  // how each end ended, e.g. "border / border"
+  CurveEnds ends;  // how each end ended; ends.Text(), e.g. "border / border"
   double seconds = 0;
   int evaluations = 0;  // of its defining function
 };
 
+/// The label of a codimension-two point of a chart.
+enum class Codim2Label {
+  kGeneralizedHopf,  // GH: l1 changes sign on an HB curve
+  kGrazingFold,      // GR-LP: the grazing type changes on a GR curve
+};
+template <>
+struct EnumNames<Codim2Label> {
+  static constexpr NamedValue<Codim2Label> kTable[] = {
+      {Codim2Label::kGeneralizedHopf, "GH"},
+      {Codim2Label::kGrazingFold, "GR-LP"},
+  };
+};
+
 struct Codim2Point {
-  std::string label;  // "GH", "GR-LP"
+  Codim2Label label = Codim2Label::kGeneralizedHopf;
   double p1 = 0, p2 = 0;
   std::string description;
 };
@@ -55,6 +143,15 @@ enum class Region {
   kStickSlip = 1,   // stick-slip, steady sliding unstable
   kPureSlip = 2,    // pure-slip oscillation, steady sliding unstable
   kBistable = 3,    // an oscillation beside stable steady sliding
+};
+template <>
+struct EnumNames<Region> {
+  static constexpr NamedValue<Region> kTable[] = {
+      {Region::kSteadyOnly, "steady sliding only"},
+      {Region::kStickSlip, "stick-slip"},
+      {Region::kPureSlip, "pure-slip oscillation"},
+      {Region::kBistable, "bistable"},
+  };
 };
 const char* RegionName(Region r);
 
@@ -122,6 +219,15 @@ enum class ChartStatus {
   kPartial,    // done, but a curve was cut short inside the rectangle (max-points,
                // step-too-small, start-failed) or a region cell failed: message says which
   kCancelled,  // cancelled() returned true
+};
+template <>
+struct EnumNames<ChartStatus> {
+  static constexpr NamedValue<ChartStatus> kTable[] = {
+      {ChartStatus::kOk, "ok"},
+      {ChartStatus::kFailed, "failed"},
+      {ChartStatus::kPartial, "partial"},
+      {ChartStatus::kCancelled, "cancelled"},
+  };
 };
 const char* ChartStatusName(ChartStatus s);
 

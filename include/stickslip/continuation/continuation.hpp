@@ -15,12 +15,21 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 
 /// What a branch point is: a stick-slip or pure-slip orbit, or steady sliding.
 enum class PointKind { kStickSlip, kPureSlip, kEquilibrium };
+template <>
+struct EnumNames<PointKind> {
+  static constexpr NamedValue<PointKind> kTable[] = {
+      {PointKind::kStickSlip, "stick-slip"},
+      {PointKind::kPureSlip, "pure-slip"},
+      {PointKind::kEquilibrium, "equilibrium"},
+  };
+};
 const char* PointKindName(PointKind k);  // "stick-slip", "pure-slip", "equilibrium"
 
 /// One point of a branch: the parameter, the orbit's measures and stability.
@@ -47,6 +56,14 @@ struct BranchPoint {
 
 /// GR grazing-sliding, HB Hopf, LP fold.
 enum class SpecialKind { kGrazing, kHopf, kFold };
+template <>
+struct EnumNames<SpecialKind> {
+  static constexpr NamedValue<SpecialKind> kTable[] = {
+      {SpecialKind::kGrazing, "GR"},
+      {SpecialKind::kHopf, "HB"},
+      {SpecialKind::kFold, "LP"},
+  };
+};
 const char* SpecialLabel(SpecialKind k);  // "GR", "HB", "LP"
 
 /// A located special point with the orbit there and a one-line description.
@@ -88,6 +105,14 @@ enum class ContinuationStatus {
   kOk,
   kFailed,     // a numerical failure; message says where; points so far kept
   kCancelled,  // cancelled() returned true; points so far kept
+};
+template <>
+struct EnumNames<ContinuationStatus> {
+  static constexpr NamedValue<ContinuationStatus> kTable[] = {
+      {ContinuationStatus::kOk, "ok"},
+      {ContinuationStatus::kFailed, "failed"},
+      {ContinuationStatus::kCancelled, "cancelled"},
+  };
 };
 /// "ok", "failed", "cancelled".
 const char* ContinuationStatusName(ContinuationStatus s);

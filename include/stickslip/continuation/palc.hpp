@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/names.hpp"
+
 namespace stickslip {
 
 /// n equations in n + 1 unknowns.
@@ -41,6 +43,8 @@ struct PalcOptions {
   /// Converged when the L1 norm of the scaled Newton update is below tol.
   double tol = 1e-11;
   int max_points = 20000;
+  /// End with kClosed when the curve comes back to its first point.
+  bool closed_curves = true;
   Eigen::VectorXd scale;  ///< per unknown; empty means all 1
   /// Polled before every correction (rejected steps too); true ends the trace
   /// with kStopped and the message "cancelled". Empty: never.
@@ -85,6 +89,14 @@ enum class PalcStatus {
   kStepTooSmall,  ///< correction failed with ds < ds_min; message says why
   kStartFailed,   ///< the start point could not be evaluated
 };
+template <>
+struct EnumNames<PalcStatus> {
+  static constexpr NamedValue<PalcStatus> kTable[] = {
+      {PalcStatus::kStopped, "stopped"},          {PalcStatus::kClosed, "closed"},
+      {PalcStatus::kMaxPoints, "max-points"},     {PalcStatus::kStepTooSmall, "step-too-small"},
+      {PalcStatus::kStartFailed, "start-failed"},
+  };
+};
 const char* PalcStatusName(PalcStatus s);
 
 struct PalcResult {
@@ -97,6 +109,45 @@ struct PalcResult {
 /// Called for each accepted point, the previous one first in `curve`;
 /// return false to stop.
 using PalcMonitor = std::function<bool(const std::vector<PalcPoint>& curve)>;
+
+/// What a hook tells the loop of Palc::Continue.
+enum class PalcAction {
+  kGoOn,   ///< correct this predictor, or accept this point
+  kRetry,  ///< the hook changed the step: predict again
+  kEnd,    ///< end the curve (status kStopped; the caller knows why)
+};
+
+/// Hooks into the one PALC loop (Palc::Continue), where a caller adds what
+/// its problem needs to the plain loop: the pure-slip tracer lands on range
+/// ends, ends at Hopf points, hands over at grazing points and polishes a
+/// point at its own parameter. The defaults give the plain loop (Trace).
+class PalcHooks {
+ public:
+  virtual ~PalcHooks() = default;
+  /// The predictor from `last` (unscaled) with arclength step ds (scaled).
+  virtual Eigen::VectorXd Predict(const PalcPoint& last, double ds, const Eigen::VectorXd& scale) {
+    return last.u + ds * last.tangent.cwiseProduct(scale);
+  }
+  /// Before `pred` is corrected; may change *ds and retry, or end.
+  virtual PalcAction Predicted(const PalcPoint& /*last*/, const Eigen::VectorXd& /*pred*/,
+                               double* /*ds*/) {
+    return PalcAction::kGoOn;
+  }
+  /// A correction that failed. kGoOn: the loop halves ds (kStepTooSmall
+  /// below ds_min); kRetry: the hook changed ds itself; kEnd.
+  virtual PalcAction Rejected(const PalcPoint& /*last*/, const PalcCorrection& /*c*/,
+                              const Eigen::VectorXd& /*pred*/, double* /*ds*/) {
+    return PalcAction::kGoOn;
+  }
+  /// A converged correction, before it is accepted as `next` (tangent and
+  /// folds set); may move next->u (an extra corrector step), retry or end.
+  virtual PalcAction Converged(const PalcPoint& /*last*/, const PalcCorrection& /*c*/,
+                               PalcPoint* /*next*/, double* /*ds*/) {
+    return PalcAction::kGoOn;
+  }
+  /// The accepted point, last in `curve`; false stops the curve.
+  virtual bool Accepted(const std::vector<PalcPoint>& /*curve*/) { return true; }
+};
 
 class Palc {
  public:
@@ -119,6 +170,10 @@ class Palc {
   /// the monitor stops it, it closes, or it fails.
   PalcResult Trace(const Eigen::VectorXd& u0, int fixed, const Eigen::VectorXd& direction,
                    const PalcMonitor& monitor);
+  /// The loop itself: from the accepted point `first` with step ds, under
+  /// `hooks`, until a hook ends it, it closes (options().closed_curves), it
+  /// fails or reaches max_points. Trace is this loop with default hooks.
+  PalcResult Continue(const PalcPoint& first, double ds, PalcHooks& hooks);
 
   int evaluations() const { return evaluations_; }
 

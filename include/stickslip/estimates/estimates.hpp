@@ -11,6 +11,7 @@
 #include <string>
 
 #include "stickslip/model/params.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -61,6 +62,15 @@ enum class BoundStatus {
   kNoPositiveBound,  // the optimal a is <= 0: no positive a satisfies the inequality
   kNotApplicable,    // no roots r1 < 0 < r2 (v >= v_max), so D1, D2 are undefined
   kOptimizerFailed,  // NLopt returned an error code or an infeasible point
+};
+template <>
+struct EnumNames<BoundStatus> {
+  static constexpr NamedValue<BoundStatus> kTable[] = {
+      {BoundStatus::kFitted, "fitted"},
+      {BoundStatus::kNoPositiveBound, "no-positive-bound"},
+      {BoundStatus::kNotApplicable, "not-applicable"},
+      {BoundStatus::kOptimizerFailed, "optimizer-failed"},
+  };
 };
 /// "fitted", ... for messages.
 const char* BoundStatusName(BoundStatus s);
