@@ -67,6 +67,7 @@ void BindOptions(py::module_& m);
 void BindResults(py::module_& m);
 void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
+void BindRestart(py::module_& m);
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.
 py::object GetItem(const py::object& self, const std::string& key);
