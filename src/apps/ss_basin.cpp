@@ -9,6 +9,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/basin_curve.hpp"
+#include "cli/physical.hpp"
 #include "cli/study.hpp"
 #include "stickslip/io/basin_report.hpp"
 
@@ -171,7 +172,8 @@ int Main(int argc, char** argv) {
   app.out().Write("orbits.tsv", text(ss::OrbitTable(curves, r.orbits.ok() ? &stability : nullptr)));
   app.out().Write(
       "basins.gp",
-      ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""), format));
+      ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""), format,
+                      cli::FigureUnitsOf(cli::ScalesFromArguments(args), "")));
   if (!app.Finish("basins.gp", {figure}, {figure})) return cli::kExitFailed;
 
   PrintSummary(r, dist, stability, desc_model, seconds);

@@ -327,7 +327,8 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   app.out().Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   app.out().Write("bifurcation.gp",
-                  ss::BifurcationScript(r, opts.param, title, cmp.applies, format));
+                  ss::BifurcationScript(r, opts.param, title, cmp.applies, format,
+                                        cli::FigureUnitsOf(prov.scales, opts.param)));
   if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies, format),
                   ss::BifurcationFigures(true, format)))
     return cli::kExitFailed;

@@ -40,8 +40,10 @@ TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves,
 // directory: the starts coloured by fate, every orbit over them (stable solid,
 // unstable dashed), the stick band and steady sliding. `suffix` (default
 // empty) is appended to the output name.
+// `units` draws a physical run in SI units (figure_style.hpp).
 std::string BasinScript(const BasinResult& r, const Model& model,
                         const std::vector<OrbitCurveRows>& curves, const std::string& title,
-                        FigureFormat format = FigureFormat::kPng);
+                        FigureFormat format = FigureFormat::kPng,
+                        const FigureUnits& units = {});
 
 }  // namespace stickslip

@@ -50,9 +50,12 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
 /// temporary names and rename. With estimates (the columns of
 /// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
 /// range of the branch against the seed's and the averaging estimates.
+/// `units` draws a physical run in SI units (figure_style.hpp; the default:
+/// dimensionless).
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
                               const std::string& title, bool estimates = false,
-                              FigureFormat format = FigureFormat::kPng);
+                              FigureFormat format = FigureFormat::kPng,
+                              const FigureUnits& units = {});
 /// The output files BifurcationScript draws (extension of `format`).
 std::vector<std::string> BifurcationFigures(bool estimates,
                                             FigureFormat format = FigureFormat::kPng);
