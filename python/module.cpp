@@ -121,7 +121,7 @@ PYBIND11_MODULE(_core, m) {
       .def("__repr__", [](const ss::Params& p) {
         std::string s = "Params(law='" + std::string(ss::LawName(p.law)) + "'";
         for (const auto& n : ss::ParameterNames(p.law))
-          s += ", " + n + "=" + py::repr(py::float_(ss::GetParameter(p, n))).cast<std::string>();
+          s += ", " + n + "=" + Repr(ss::GetParameter(p, n));
         return s + ")";
       });
   m.def(

@@ -14,8 +14,6 @@ namespace stickslip::python {
 
 namespace {
 
-std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
-
 // The new branch in `param` (default: the run's) from the point to the far
 // end of the parameter's default range (`to` overrides), with the run's solver.
 ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::string> param,
@@ -50,7 +48,7 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
   s.p1 = GetParameter(lp.params, o.plane.p1), s.p2 = GetParameter(lp.params, o.plane.p2);
   if (!o.plane.Contains(s.p1, s.p2))
     throw InvalidArgument(lp.label + ": (" + o.plane.p1 + ", " + o.plane.p2 + ") = (" +
-                          Num(s.p1) + ", " + Num(s.p2) + ") lies outside the chart's rectangle");
+                          Repr(s.p1) + ", " + Repr(s.p2) + ") lies outside the chart's rectangle");
   o.seeds.push_back(s);
   return o;
 }
@@ -88,7 +86,7 @@ void BindRestart(py::module_& m) {
            "at this GR or HB point: chart(point.params, options=point.chart_options()).")
       .def("__repr__", [](const LabelledPoint& lp) {
         return "LabelledPoint('" + lp.label + "', pt=" + std::to_string(lp.pt) + ", type='" +
-               lp.type + "', " + lp.param + "=" + Num(lp.p) + ")";
+               lp.type + "', " + lp.param + "=" + Repr(lp.p) + ")";
       });
   m.def(
       "restart",

@@ -24,7 +24,7 @@ std::optional<PhysicalAxis> AxisOf(const std::string& name, const Scales& s) {
   // 2 beta = C / sqrt(K M) = C t0 / M; delta s is dimensionless.
   const PhysicalAxis axes[] = {
       {"belt_speed", "v", 1 / speed, "belt speed V [m/s]"},
-      {"damping", "beta", s.t0 / (2 * s.mass), "damping C [kg/s]"},
+      {"damping", "beta", s.t0 / (2 * s.mass), "damping C [N s/m]"},
       {"speed_m", "v_m", 1 / speed, "speed of minimum friction V_m [m/s]"},
       {"speed_s", "v_s", 1 / speed, "Stribeck speed V_s [m/s]"},
       {"delta_phys", "delta", speed, "friction decay rate δ [s/m]"}};

@@ -165,9 +165,7 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
     for (const RegionFace& f : r.faces) present = present || static_cast<int>(f.region) == k;
     if (!present) continue;
     os << sep << "NaN with boxes fs solid 1.0 lc rgb '" << kFill[k] << "' title '"
-       << (k == static_cast<int>(Region::kBistable) ? "bistable: steady sliding or oscillation"
-                                                    : RegionName(static_cast<Region>(k)))
-       << "'";
+       << RegionName(static_cast<Region>(k)) << "'";
     sep = ", \\\n     ";
   }
   if (*sep == 0) os << "NaN notitle";

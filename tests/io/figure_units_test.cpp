@@ -3,7 +3,7 @@
 // dimensionless columns by the seed's scales (section 3), L = M g / K and
 // t0 = sqrt(M / K), here computed from M = 2 kg, K = 8 N/m, g = 9.81 m/s^2:
 // L = 2.4525 m, t0 = 0.5 s, speeds L / t0 = 4.905 m/s, damping
-// C = 2 beta M / t0 = 8 beta kg/s. A dimensionless run says so on its axes.
+// C = 2 beta M / t0 = 8 beta N s/m. A dimensionless run says so on its axes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,7 +74,7 @@ TEST_F(FigureUnitsTest, ChartAndBasinFiguresInSiUnits) {
       "ss_chart", kPhysical + " --from 0.3 --to 0.5 --from2 0.02 --to2 0.1 --max_step 0.05",
       "chart.gp");
   EXPECT_TRUE(Contains(chart, "belt speed V [m/s]"));
-  EXPECT_TRUE(Contains(chart, "damping C [kg/s]"));
+  EXPECT_TRUE(Contains(chart, "damping C [N s/m]"));
   EXPECT_NEAR(Variable(chart, "up"), kSpeed, 1e-12);
   EXPECT_NEAR(Variable(chart, "up2"), 2 * 2 / kT0, 1e-12);  // C = 2 beta M / t0
   std::smatch m;
