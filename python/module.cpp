@@ -1,8 +1,8 @@
 // The Python module `stickslip` (pybind11): parameters, exceptions and the
 // small functions; the option and result types, the computing functions and
 // the chart are bound in py_options.cpp, py_results.cpp, py_compute.cpp and
-// py_chart.cpp; restarts in py_restart.cpp. Library exceptions become Python exceptions with the same
-// message; Ctrl-C raises KeyboardInterrupt (py_common.hpp, Interrupt).
+// py_chart.cpp; restarts in py_restart.cpp. Library exceptions become Python exceptions with the
+// same message; Ctrl-C raises KeyboardInterrupt (py_common.hpp, Interrupt).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>

@@ -31,8 +31,8 @@ ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::st
 
 // A chart of the run's parameter by param2 whose first curve starts at the
 // point (a GR or HB point, inside the rectangle), with the run's solver.
-ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, double from,
-                       double to, double from2, double to2) {
+ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, double from, double to,
+                       double from2, double to2) {
   if (lp.type != "GR" && lp.type != "HB")
     throw InvalidArgument(lp.label + " is a " + lp.type + " point: a chart starts from a GR or " +
                           "HB point");
@@ -47,8 +47,8 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
   s.kind = lp.type == "GR" ? CurveKind::kGrazing : CurveKind::kHopf;
   s.p1 = GetParameter(lp.params, o.plane.p1), s.p2 = GetParameter(lp.params, o.plane.p2);
   if (!o.plane.Contains(s.p1, s.p2))
-    throw InvalidArgument(lp.label + ": (" + o.plane.p1 + ", " + o.plane.p2 + ") = (" +
-                          Repr(s.p1) + ", " + Repr(s.p2) + ") lies outside the chart's rectangle");
+    throw InvalidArgument(lp.label + ": (" + o.plane.p1 + ", " + o.plane.p2 + ") = (" + Repr(s.p1) +
+                          ", " + Repr(s.p2) + ") lies outside the chart's rectangle");
   o.seeds.push_back(s);
   return o;
 }
@@ -94,9 +94,9 @@ void BindRestart(py::module_& m) {
         return ReadLabelledPoint(dir, py::str(point).cast<std::string>());
       },
       py::arg("dir"), py::arg("point"),
-        "The point `point` (a label of special_points.tsv: 'HB1', 'GR1', ..., or a point "
-        "number of branch.tsv) of the ss_continue run in dir, as a LabelledPoint "
-        "(AUTO's IRS). A missing or corrupt run, or an unknown point, raises InvalidArgument.");
+      "The point `point` (a label of special_points.tsv: 'HB1', 'GR1', ..., or a point "
+      "number of branch.tsv) of the ss_continue run in dir, as a LabelledPoint "
+      "(AUTO's IRS). A missing or corrupt run, or an unknown point, raises InvalidArgument.");
 }
 
 }  // namespace stickslip::python

@@ -129,8 +129,8 @@ class AppTest : public ::testing::Test {
   int RunApp(const std::string& bin_dir, const std::string& app, const std::string& args,
              const std::string& signal = "KILL", int seconds = 300) {
     const std::string cmd = "timeout --preserve-status -s " + signal + " " +
-                            std::to_string(seconds) + " " + ShellQuoted(bin_dir + "/" + app) +
-                            " " + args + " >" + ShellQuoted(dir_ + "/stdout") + " 2>" +
+                            std::to_string(seconds) + " " + ShellQuoted(bin_dir + "/" + app) + " " +
+                            args + " >" + ShellQuoted(dir_ + "/stdout") + " 2>" +
                             ShellQuoted(dir_ + "/stderr");
     const int status = std::system(cmd.c_str());
     out_ = ReadFile(dir_ + "/stdout");

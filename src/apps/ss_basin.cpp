@@ -170,10 +170,9 @@ int Main(int argc, char** argv) {
   run.Phase("writing");
   app.out().Write("basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
   app.out().Write("orbits.tsv", text(ss::OrbitTable(curves, r.orbits.ok() ? &stability : nullptr)));
-  app.out().Write(
-      "basins.gp",
-      ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""), format,
-                      cli::FigureUnitsOf(cli::ScalesFromArguments(args), "")));
+  app.out().Write("basins.gp",
+                  ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""),
+                                  format, cli::FigureUnitsOf(cli::ScalesFromArguments(args), "")));
   if (!app.Finish("basins.gp", {figure}, {figure})) return cli::kExitFailed;
 
   PrintSummary(r, dist, stability, desc_model, seconds);

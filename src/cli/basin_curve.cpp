@@ -82,9 +82,10 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   TsvTable t = BasinStabilityTable(r, c.param, model, box);
   t.PrependMeta(meta);
   out.Write("basin_stability.tsv", t.str());
-  out.Write("basin_stability.gp",
-            BasinStabilityScript(c.param, model + (r.status == BasinStatus::kOk ? "" : " (partial)"),
-                                 format, FigureUnitsOf(ScalesFromArguments(args), c.param)));
+  out.Write(
+      "basin_stability.gp",
+      BasinStabilityScript(c.param, model + (r.status == BasinStatus::kOk ? "" : " (partial)"),
+                           format, FigureUnitsOf(ScalesFromArguments(args), c.param)));
   GnuplotResult g{GnuplotStatus::kCancelled, ""};
   if (plots) g = out.Draw("basin_stability.gp", {figure}, cancelled);
   out.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{figure});

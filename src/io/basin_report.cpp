@@ -89,11 +89,10 @@ std::string BasinScript(const BasinResult& r, const Model& model,
      << FigurePreamble(format, 1000, 900) << "set output '" << FigureFile("basins", format)
      << "'.suffix\n"
      << "set title " << GnuplotQuoted(FigureTitle(title, {})) << "\n"
-     << FigureUnitVariables(units)
-     << "set xlabel " << GnuplotQuoted("initial displacement x" + units.LengthUnit()) << "\n"
+     << FigureUnitVariables(units) << "set xlabel "
+     << GnuplotQuoted("initial displacement x" + units.LengthUnit()) << "\n"
      << "set ylabel " << GnuplotQuoted("initial velocity dx/dt" + units.SpeedUnit()) << "\n"
-     << "set xrange [" << Num(ul * (r.x_lo - dx / 2)) << ":" << Num(ul * (r.x_hi + dx / 2))
-     << "]\n"
+     << "set xrange [" << Num(ul * (r.x_lo - dx / 2)) << ":" << Num(ul * (r.x_hi + dx / 2)) << "]\n"
      << "set yrange [" << Num(uv * (r.xdot_lo - dy / 2)) << ":" << Num(uv * (r.xdot_hi + dy / 2))
      << "]\n"
      << "unset grid\n"
@@ -122,8 +121,7 @@ std::string BasinScript(const BasinResult& r, const Model& model,
     const bool stick = curves[k].kind == "stick-slip";
     const int ls = (stick ? kStyleStickSlip : kStylePureSlip) + (curves[k].stable ? 0 : 1);
     os << ", \\\n     'orbits.tsv' using ($4*ul):($1 == " << k << " ? $5*uv : NaN) with lines ls "
-       << ls
-       << " lw 3 title '" << (stick ? "stick-slip" : "pure slip")
+       << ls << " lw 3 title '" << (stick ? "stick-slip" : "pure slip")
        << (curves[k].stable ? " orbit, stable" : " orbit, unstable") << "'";
   }
   os << ", \\\n     '+' using (" << Num(ul * r.orbits.steady.x) << "):(0) every ::0::0 with points "

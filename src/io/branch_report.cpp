@@ -170,9 +170,10 @@ int Style(PointKind k, bool stable) {
 // The gnuplot unit variable of a column (FigureUnitVariables): lengths ul,
 // speeds uv, the period ut; the multiplier has none.
 std::string Unit(int col) {
-  return col == kXMin || col == kXMax ? "ul" : col == kXdMin || col == kXdMax ? "uv"
-                                           : col == kPeriod                   ? "ut"
-                                                                              : "1";
+  return col == kXMin || col == kXMax     ? "ul"
+         : col == kXdMin || col == kXdMax ? "uv"
+         : col == kPeriod                 ? "ut"
+                                          : "1";
 }
 
 // Curves of one column: per branch, kind and stability its own line style
@@ -188,8 +189,7 @@ std::string Curves(const ContinuationResult& r, int col, bool periodic, bool equ
     os << (os.tellp() > 0 ? ", \\\n     " : "") << "'branch.tsv' using ($" << kP
        << "*up):((strcol(2) eq '" << PointKindName(kind) << "' && $" << kBranch << "==" << b
        << " && $" << kStable << "==" << st << ") ? $" << col << "*" << Unit(col)
-       << " : NaN) with lines ls "
-       << Style(kind, st == 1) << " notitle";
+       << " : NaN) with lines ls " << Style(kind, st == 1) << " notitle";
   }
   return os.str();
 }
@@ -228,8 +228,8 @@ std::string Marks(const ContinuationResult& r, double lo, double hi,
     level = near ? (level + 1) % 4 : 0;
     os << "set label " << 100 + i << " '" << SpecialLabel(sp[i].kind) << "' at "
        << "up*" << FormatNumber(sp[i].p) << "," << y_unit << "*" << FormatNumber(y(sp[i]))
-       << " center offset 0,"
-       << offsets[level] << " boxed front font ',10' point ls " << kStyleSpecial << "\n";
+       << " center offset 0," << offsets[level] << " boxed front font ',10' point ls "
+       << kStyleSpecial << "\n";
   }
   return os.str();
 }

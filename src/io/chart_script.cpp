@@ -14,7 +14,7 @@ struct Symbol {
   const char* symbol;  // gnuplot enhanced text
 };
 constexpr Symbol kSymbols[] = {
-    {"v", "v"},     {"beta", "β"},  {"mu_s", "μ_s"}, {"mu_m", "μ_m"}, {"v_m", "v_m"},
+    {"v", "v"},      {"beta", "β"},  {"mu_s", "μ_s"}, {"mu_m", "μ_m"}, {"v_m", "v_m"},
     {"mu_k", "μ_k"}, {"v_s", "v_s"}, {"delta", "δ"},  {"k5", "k_5"},
 };
 
@@ -41,8 +41,7 @@ void Polygons(std::ostream& os, const ChartResult& r, double u1, double u2) {
     const auto& ring = rf.face.outer;
     os << "set object " << id++ << " polygon from " << u1 * ring[0][0] << "," << u2 * ring[0][1];
     for (size_t i = 1; i <= ring.size(); ++i)
-      os << " \\\n  to " << u1 * ring[i % ring.size()][0] << ","
-         << u2 * ring[i % ring.size()][1];
+      os << " \\\n  to " << u1 * ring[i % ring.size()][0] << "," << u2 * ring[i % ring.size()][1];
     os << " \\\n  fc rgb '" << kFill[static_cast<int>(rf.region)]
        << "' fs solid 1.0 noborder behind\n";
   }
@@ -141,13 +140,13 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "# Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,\n"
      << "# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP green.\n"
      << "if (!exists('suffix')) suffix = ''\n"
-     << FigureTerminal(format, 1000, 820)
-     << "set output '" << FigureFile("chart", format) << "'.suffix\n"
+     << FigureTerminal(format, 1000, 820) << "set output '" << FigureFile("chart", format)
+     << "'.suffix\n"
      << "set datafile separator '\\t'\n"
      << "set datafile columnheaders\n"
-     << "set encoding utf8\n" << FigureUnitVariables(units)
-     << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1)) << "\nset ylabel "
-     << GnuplotQuoted(units.P2Label(plane.p2)) << "\n"
+     << "set encoding utf8\n"
+     << FigureUnitVariables(units) << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1))
+     << "\nset ylabel " << GnuplotQuoted(units.P2Label(plane.p2)) << "\n"
      << "set xrange [" << u1 * plane.from1 << ":" << u1 * plane.to1 << "]\n"
      << "set yrange [" << u2 * plane.from2 << ":" << u2 * plane.to2 << "]\n"
      << "set title \"" << title << "\"\n"
@@ -170,7 +169,8 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
   }
   if (*sep == 0) os << "NaN notitle";
   Curves(os, r);
-  os << ", \\\n     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle\n"
+  os << ", \\\n     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' "
+        "notitle\n"
      << "unset output\n";
   return os.str();
 }

@@ -49,7 +49,6 @@ class ChartApp : public stickslip::testing_util::AppTest {
     for (const auto& p : parts) EXPECT_TRUE(Contains(r.err, p));
     EXPECT_FALSE(Exists(Out())) << "--out was created";
   }
-
 };
 
 TEST_F(ChartApp, EqualAxesExit2) {

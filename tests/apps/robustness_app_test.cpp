@@ -40,9 +40,7 @@ using stickslip::testing_util::HaveGnuplot;
 
 class RobustnessApp : public stickslip::testing_util::AppTest {
  protected:
-  void SetUp() override {
-    AppTest::SetUp();
-  }
+  void SetUp() override { AppTest::SetUp(); }
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
 
   // Every file of a directory, by name; in text files the '#' lines (metadata

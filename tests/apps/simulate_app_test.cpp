@@ -71,7 +71,6 @@ class SimulateApp : public stickslip::testing_util::AppTest {
     EXPECT_FALSE(Exists(out)) << shown;
     EXPECT_EQ(r.out, "") << shown;
   }
-
 };
 
 struct Row {

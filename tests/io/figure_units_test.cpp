@@ -48,13 +48,13 @@ TEST(FigureUnits, DimensionlessAxesSaySo) {
   EXPECT_EQ(u.P1Label("mu_s"), "static friction coefficient μ_s");  // a coefficient
   EXPECT_EQ(u.LengthUnit(), " (dimensionless)");
   const std::string vars = FigureUnitVariables(u);
-  for (const char* name : {"ul", "ut", "uv", "up", "up2"}) EXPECT_EQ(Variable("\n" + vars, name), 1);
+  for (const char* name : {"ul", "ut", "uv", "up", "up2"})
+    EXPECT_EQ(Variable("\n" + vars, name), 1);
 }
 
 TEST_F(FigureUnitsTest, ContinuationFiguresInSiUnits) {
   const std::string gp =
-      Script("ss_continue",
-             kPhysical + " --param belt_speed --from 1.5 --to 2.4525 --no_estimates",
+      Script("ss_continue", kPhysical + " --param belt_speed --from 1.5 --to 2.4525 --no_estimates",
              "bifurcation.gp");
   EXPECT_NEAR(Variable(gp, "ul"), kL, 1e-12);
   EXPECT_NEAR(Variable(gp, "ut"), kT0, 1e-12);
@@ -70,9 +70,9 @@ TEST_F(FigureUnitsTest, ContinuationFiguresInSiUnits) {
 }
 
 TEST_F(FigureUnitsTest, ChartAndBasinFiguresInSiUnits) {
-  const std::string chart = Script(
-      "ss_chart", kPhysical + " --from 0.3 --to 0.5 --from2 0.02 --to2 0.1 --max_step 0.05",
-      "chart.gp");
+  const std::string chart =
+      Script("ss_chart", kPhysical + " --from 0.3 --to 0.5 --from2 0.02 --to2 0.1 --max_step 0.05",
+             "chart.gp");
   EXPECT_TRUE(Contains(chart, "belt speed V [m/s]"));
   EXPECT_TRUE(Contains(chart, "damping C [N s/m]"));
   EXPECT_NEAR(Variable(chart, "up"), kSpeed, 1e-12);
@@ -90,8 +90,9 @@ TEST_F(FigureUnitsTest, ChartAndBasinFiguresInSiUnits) {
 
   const std::string curve =
       Script("ss_basin",
-             kPhysical + " --param v --from 0.3 --to 0.4 --n 2 --x_min -0.4 --x_max 1.0 "
-                         "--xdot_min -0.8 --xdot_max 0.7",
+             kPhysical +
+                 " --param v --from 0.3 --to 0.4 --n 2 --x_min -0.4 --x_max 1.0 "
+                 "--xdot_min -0.8 --xdot_max 0.7",
              "basin_stability.gp");
   EXPECT_TRUE(Contains(curve, "belt speed V [m/s]"));
   EXPECT_NEAR(Variable(curve, "up"), kSpeed, 1e-12);

@@ -41,11 +41,10 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
                            const std::vector<ExtraColumn>& extra = {});
 
 /// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
-/// directory (in the style of figure_style.hpp): bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
-/// period.png and multiplier.png (two panels: Floquet multiplier, steady
-/// sliding's largest Re lambda, each with its threshold) against the
-/// parameter; stable solid, unstable dashed, colour by kind, special points
-/// marked and labelled. The variable `suffix` (default
+/// directory (in the style of figure_style.hpp): bifurcation_x.png (x range), bifurcation_xdot.png
+/// (x' range), period.png and multiplier.png (two panels: Floquet multiplier, steady sliding's
+/// largest Re lambda, each with its threshold) against the parameter; stable solid, unstable
+/// dashed, colour by kind, special points marked and labelled. The variable `suffix` (default
 /// empty) is appended to every output name, so a caller can render to
 /// temporary names and rename. With estimates (the columns of
 /// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x

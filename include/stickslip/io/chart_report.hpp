@@ -32,8 +32,7 @@ TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::strin
 // title is gnuplot enhanced text (ChartTitle). `units` draws a physical run's
 // axes in SI units (figure_style.hpp). chart_script.cpp.
 std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
-                        FigureFormat format = FigureFormat::kPng,
-                        const FigureUnits& units = {});
+                        FigureFormat format = FigureFormat::kPng, const FigureUnits& units = {});
 // "Stability chart, cubic law: μ_s = 0.4, μ_m = 0.25, v_m = 0.5": the law's
 // parameters but the two axes, as gnuplot enhanced text.
 std::string ChartTitle(const Params& base, const Plane& plane);
