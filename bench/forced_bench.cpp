@@ -81,8 +81,10 @@ void StickSlipOrbit(double rtol) {
     }
   std::printf(
       "stick-slip orbit (coulomb belt, A 0.3, Omega 0.8), rtol %.0e: %ld steps; one "
-      "return %.2f us, Newton solve from 1e-3 off %.2f us; period error %.1e\n",
-      rtol, run.steps, t_return, t_solve, std::abs(static_cast<double>(back) - run.end.t));
+      "return %.2f us, Newton solve from 1e-3 off %.2f us; period error %.1e; exit t_e %.17g "
+      "x_e %.17g\n",
+      rtol, run.steps, t_return, t_solve, std::abs(static_cast<double>(back) - run.end.t),
+      exact.t_exit, exact.x_exit);
 }
 
 void NonStopOrbit(double rtol) {
@@ -129,9 +131,35 @@ void DenHartogRun() {
       rows, t / 1e3, t / rows);
 }
 
+// The resonance curve as bench/peers/scipy_forced.py sweeps it: 500 values of
+// Omega in [1.2, 2.5], each orbit by stroboscopic Newton from the previous one.
+void ResonanceSweep() {
+  ForcedOrbitOptions o;
+  o.flow.rtol = o.flow.atol = 1e-12;
+  double worst = 0;
+  const double t = MedianMicros(
+      [&] {
+        double x = -1.4, xd = 0.01;
+        worst = 0;
+        for (int i = 0; i < 500; ++i) {
+          const double w = 1.2 + 1.3 * i / 499;
+          const ForcedOrbit orbit = ShootStroboscopic(ForcedModel(DenHartog(w)), x, xd, 1, o);
+          x = orbit.start.x, xd = orbit.start.xdot;
+          const double V = 1 / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
+          worst = std::max(worst, std::abs(orbit.extremes.x_max - std::sqrt(V * V - 0.09 * U * U)));
+        }
+      },
+      11);
+  std::printf(
+      "resonance sweep (Den Hartog, 500 Omegas in [1.2, 2.5], strobe Newton, rtol 1e-12): "
+      "%.2f ms; max x_max error %.1e\n",
+      t / 1e3, worst);
+}
+
 }  // namespace
 
 int main() {
+  ResonanceSweep();
   for (const double rtol : {1e-10, 1e-12, 1e-14}) StickSlipOrbit(rtol);
   for (const double rtol : {1e-10, 1e-12, 1e-14}) NonStopOrbit(rtol);
   DenHartogRun();

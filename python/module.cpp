@@ -149,5 +149,6 @@ PYBIND11_MODULE(_core, m) {
   BindResults(m);
   BindCompute(m);
   BindCharts(m);
+  BindForced(m);
   BindRestart(m);
 }

@@ -70,6 +70,7 @@ void BindOptions(py::module_& m);
 void BindResults(py::module_& m);
 void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
+void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.

@@ -8,7 +8,7 @@ check=0
 if [[ "${1:-}" == "--check" ]]; then check=1; shift; fi
 build="${1:-build}"
 [[ -d "$build" ]] || build="$root/$build"
-for app in ss_continue ss_chart ss_basin ss_simulate; do
+for app in ss_continue ss_chart ss_basin ss_simulate ss_orbit_diagram; do
   [[ -x "$build/$app" ]] || { echo "cli_doc.sh: $build/$app not found; build it first" >&2; exit 1; }
 done
 
@@ -57,7 +57,7 @@ EOF
 - An rtol looser than 1e-4 is allowed but warned about.
 
 EOF
-  for app in ss_continue ss_chart ss_basin ss_simulate; do
+  for app in ss_continue ss_chart ss_basin ss_simulate ss_orbit_diagram; do
     printf '## %s\n\n```text\n' "$app"
     own "$build/$app"
     printf '```\n\n'
@@ -71,8 +71,8 @@ long option names without `--`. The command line wins over the file.
 - Keys before the first section header are read by every app: put the model and solver options
   there. An app refuses a key there that it does not know, so the apps' own keys belong in
   their sections.
-- `[continue]`, `[chart]`, `[basin]` and `[simulate]` hold the keys of `ss_continue`,
-  `ss_chart`, `ss_basin` and `ss_simulate`; `[benchmark]` is read by `bench/ss_bench`. An app
+- `[continue]`, `[chart]`, `[basin]`, `[simulate]` and `[orbit_diagram]` hold the keys of `ss_continue`,
+  `ss_chart`, `ss_basin`, `ss_simulate` and `ss_orbit_diagram`; `[benchmark]` is read by `bench/ss_bench`. An app
   skips the other apps' sections.
 - Refused, with the file and line: an unknown section or key, a key that repeats, a key
   without a value, a line that is not `key = value`, the keys `study`, `help` and `version`, a

@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
-for app in ss_continue ss_chart ss_basin; do
+for app in ss_continue ss_chart ss_basin ss_simulate; do
   [[ -x "$build/$app" ]] || { echo "docs_figures.sh: $build/$app not found; build it first" >&2; exit 1; }
 done
 command -v gnuplot >/dev/null || { echo "docs_figures.sh: gnuplot not found on PATH" >&2; exit 1; }
@@ -21,6 +21,11 @@ run() {
 run "$build/ss_continue" --study studies/seed.ini --out "$fig/seed"
 run "$build/ss_continue" --study studies/stribeck.ini --out "$fig/stribeck"
 run "$build/ss_continue" --study studies/den_hartog.ini --out "$fig/den_hartog"
+# The forced oscillator's studies (issue 20): resonance curve and a section each.
+for study in floor_static seed_forced stribeck_forced; do
+  run "$build/ss_continue" --study "studies/$study.ini" --out "$fig/$study"
+  run "$build/ss_simulate" --study "studies/$study.ini" --out "$fig/${study}_sim"
+done
 run "$build/ss_basin" --study studies/stribeck_basin.ini --out "$fig/stribeck_basin"
 run "$build/ss_basin" --study studies/stribeck_basin_stability.ini --out "$fig/stribeck_basin_stability"
 for chart in seed_chart stribeck_chart quintic_chart leine_chart; do

@@ -29,14 +29,21 @@ fi
 data="$build/seed_figures"
 mkdir -p "$data"
 study="$root/studies/seed.ini"
+# One trajectory into $data/NAME.tsv (ss_simulate writes --out DIR/trajectory.tsv).
+simulate() {
+  local name=$1
+  shift
+  "$sim" --study "$study" "$@" --no_plots --out "$data/$name"
+  mv "$data/$name/trajectory.tsv" "$data/$name.tsv"
+}
 
 # Figs. 5, 6: v = 0.25 from (0, 0.25), on the stick set.
-"$sim" --study "$study" --x0 0 --xdot0 0.25 --t_end 100 --dt 0.01 --out "$data/fig05.tsv"
+simulate fig05 --x0 0 --xdot0 0.25 --t_end 100 --dt 0.01
 # Figs. 7, 8: v = 0.25 from (0, 0.125) and (0, 0.5), to the limit cycle.
-"$sim" --study "$study" --x0 0 --xdot0 0.125 --t_end 60 --dt 0.01 --out "$data/fig07.tsv"
-"$sim" --study "$study" --x0 0 --xdot0 0.5 --t_end 60 --dt 0.01 --out "$data/fig08.tsv"
+simulate fig07 --x0 0 --xdot0 0.125 --t_end 60 --dt 0.01
+simulate fig08 --x0 0 --xdot0 0.5 --t_end 60 --dt 0.01
 # Figs. 9, 10: v = 0.45 (above the Hopf point) from (0, 0.45), to steady sliding.
-"$sim" --study "$study" --v 0.45 --x0 0 --xdot0 0.45 --t_end 600 --dt 0.02 --out "$data/fig09.tsv"
+simulate fig09 --v 0.45 --x0 0 --xdot0 0.45 --t_end 600 --dt 0.02
 
 cd "$root"
 for gp in plots/fig05_phase.gp plots/fig06_time.gp plots/fig07_phase.gp plots/fig08_phase.gp \

@@ -1,13 +1,21 @@
-"""A sweep on Dask: P(stick-slip) and the median amplitude over mu_s ~ N(0.4, 0.02^2) x v."""
+"""A sweep on Dask: P(stick-slip) and the median amplitude over mu_s ~ N(0.4, 0.02^2) x v.
+
+    python3 examples/python/sweep.py [DRAWS [SPEEDS]]   (default 500 draws x 20 speeds;
+                                                         5000 200: 10^6 orbits)
+"""
+import sys
+
 import numpy as np
 
 import stickslip
 
 
 def main():
+    draws = int(sys.argv[1]) if len(sys.argv) > 1 else 500
+    speeds = int(sys.argv[2]) if len(sys.argv) > 2 else 20
     rng = np.random.default_rng(1)
-    grid = {"v": np.linspace(0.05, 0.45, 20)}
-    sample = {"mu_s": rng.normal(0.4, 0.02, 500)}
+    grid = {"v": np.linspace(0.05, 0.45, speeds)}
+    sample = {"mu_s": rng.normal(0.4, 0.02, draws)}
     r = stickslip.sweep(stickslip.stick_slip_orbit, grid, sample)          # LocalCluster, 2 workers
     r.to_tsv("sweep.tsv")  # one self-describing file
     s = stickslip.group_stats(r, "v", "amplitude", where="stick_slip")

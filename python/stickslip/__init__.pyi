@@ -74,6 +74,21 @@ class BasinStatus(enum.IntEnum):
     ok = 0
     failed = 1
     cancelled = 2
+class ForcedAxis(enum.IntEnum):
+    omega = 0
+    force = 1
+    v = 2
+    beta = 3
+class ForcedSection(enum.IntEnum):
+    strobe = 0
+    exit = 1
+class ForcedBranchStatus(enum.IntEnum):
+    reached_end = 0
+    unbounded = 1
+    step_too_small = 2
+    start_failed = 3
+    max_points = 4
+    closed = 5
 
 LawLike = Union[str, Law]
 IntegratorLike = Union[str, Integrator, None]
@@ -171,6 +186,75 @@ class BasinOptions:
     settle: float
     def __init__(self) -> None: ...
     def validation_error(self) -> str: ...
+
+class ForcedParams:
+    """x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t) (issue 20)."""
+    params: Params
+    force: float
+    omega: float
+    def __init__(self, params: Params, force: float = 0.0, omega: float = 1.0) -> None: ...
+    def validation_error(self) -> str: ...
+
+class ForcedTrajectory:
+    t: Array
+    x: Array
+    xdot: Array
+    mode: Array
+    phase: Array
+    section: ForcedSection
+    section_t: Array
+    section_x: Array
+    section_xdot: Array
+    section_phase: Array
+    sticks: int
+    exits: int
+    crossings: int
+    steps: int
+    x_min: float
+    x_max: float
+    xdot_min: float
+    xdot_max: float
+    def __getitem__(self, key: str) -> Any: ...
+
+class ForcedOrbit:
+    m: int
+    sticks: int
+    crossings: int
+    iterations: int
+    x0: float
+    xdot0: float
+    period: float
+    x_min: float
+    x_max: float
+    xdot_min: float
+    xdot_max: float
+    multipliers: Array
+    monodromy: Array
+    points: Array
+    stable: bool
+    from_exit_map: bool
+    def __getitem__(self, key: str) -> Any: ...
+
+class ForcedBranch:
+    axis: ForcedAxis
+    status: ForcedBranchStatus
+    message: str
+    p: Array
+    x0: Array
+    xdot0: Array
+    m: Array
+    sticks: Array
+    crossings: Array
+    x_min: Array
+    x_max: Array
+    xdot_min: Array
+    xdot_max: Array
+    stable: Array
+    multipliers: Array
+    special: List[Tuple[str, float, float]]
+    evaluations: int
+    seconds: float
+    def __getitem__(self, key: str) -> Any: ...
 
 class Trajectory:
     t: Array
@@ -360,6 +444,22 @@ def simulate(params: Params, x0: float = 0.0, xdot0: float = 0.25, t_end: float 
              dt: float = 0.01, max_rows: int = 1000000, rtol: Optional[float] = None,
              atol: Optional[float] = None, integrator: IntegratorLike = None,
              method: MethodLike = None) -> Trajectory: ...
+def simulate_forced(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
+                    t_end: float = 100.0, dt: float = 0.01,
+                    section: ForcedSection = ForcedSection.strobe, max_rows: int = 1000000,
+                    rtol: Optional[float] = None,
+                    atol: Optional[float] = None) -> ForcedTrajectory: ...
+def forced_orbit(params: ForcedParams, x0: float, xdot0: float, m: int = 1,
+                 rtol: Optional[float] = None, atol: Optional[float] = None) -> ForcedOrbit: ...
+def find_forced_orbits(params: ForcedParams, max_m: int = 4, max_sticks: int = 4, grid: int = 5,
+                       exit_samples: int = 48, radius: float = 0.0,
+                       rtol: Optional[float] = None,
+                       atol: Optional[float] = None) -> List[ForcedOrbit]: ...
+def continue_forced(params: ForcedParams, axis: ForcedAxis, from_: float, to: float,
+                    x_guess: Optional[float] = None, xdot_guess: Optional[float] = None,
+                    m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
+                    rtol: Optional[float] = None,
+                    atol: Optional[float] = None) -> ForcedBranch: ...
 def periodic_orbit(params: Params, a_guess: Optional[float] = None, floquet: bool = False,
                    rtol: Optional[float] = None, atol: Optional[float] = None,
                    integrator: IntegratorLike = None, method: MethodLike = None) -> Orbit: ...

@@ -9,7 +9,9 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/basin_curve.hpp"
+#include "cli/basin_forced.hpp"
 #include "cli/physical.hpp"
+#include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "stickslip/io/basin_report.hpp"
 
@@ -51,6 +53,7 @@ po::options_description AppOptions() {
   cli::AddRunOptions(d, "plots/basin",
                      "write the TSV files and the script, but do not run gnuplot");
   cli::AddBasinCurveOptions(d);
+  d.add(cli::ForcingOptions()).add(cli::ForcedBasinOptionGroup());  // --force: basin_forced.hpp
   return d;
 }
 
@@ -122,13 +125,17 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_basin [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  if (args.Number("force", 0) != 0)  // the forced oscillator's section (basin_forced.hpp)
+    return cli::RunForcedBasin(args, kProg, cli::CommandLine(argc, argv));
+  if (args.Given("omega"))
+    throw cli::UsageError(args.Source("omega") +
+                          " needs the forced oscillator: give --force A > 0");
   const ss::Params p = cli::ModelFromArguments(args);
   ss::BasinOptions opts = OptionsFromArguments(args);
   if (args.Given("param"))  // the curve of basin stability instead of the grid
-    return cli::RunBasinStabilityCurve(
-        kProg, args, p, opts, args.Number("max_time", 0),
-        cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p, opts.scan.orbit.flow,
-                         args.Text("param")));
+    return cli::RunBasinStabilityCurve(kProg, args, p, opts, args.Number("max_time", 0),
+                                       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), p,
+                                                        opts.scan.orbit.flow, args.Text("param")));
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::string figure = ss::FigureFile("basins", format);
   cli::AppRun app(kProg, args, "plots/basin", {"basins.tsv", "orbits.tsv", "basins.gp", figure});

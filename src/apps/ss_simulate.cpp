@@ -1,11 +1,8 @@
-// ss_simulate: one trajectory of the belt model, written as a TSV
-// (metadata lines, then the header t, x, xdot, mode), optionally plotted with gnuplot.
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
+// ss_simulate: one trajectory of the belt model (or, with --force, of the
+// forced oscillator: cli/simulate_forced.hpp), written into --out DIR as
+// trajectory.tsv (metadata lines, then the header t, x, xdot, mode) and drawn
+// as trajectory.png unless --no_plots.
 #include <cmath>
-#include <cstring>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -16,11 +13,13 @@
 #include "cli/output.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_control.hpp"
+#include "cli/run_forced.hpp"
+#include "cli/simulate_forced.hpp"
 #include "cli/study.hpp"
-#include "stickslip/io/figure_style.hpp"
 #include "stickslip/integrate/flow.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/model/model.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;
@@ -31,54 +30,31 @@ namespace {
 constexpr const char* kProg = "ss_simulate";
 constexpr double kMaxRows = 1e7;  // rows are held in memory until the atomic write
 constexpr const char* kNotes =
-    "Output: a TSV that starts with '# key: value' lines (tool, command, model, run and\n"
-    "solver settings, status), then the header line 't<TAB>x<TAB>xdot<TAB>mode' (mode:\n"
-    "slip-below, stick, slip-above), then one row every --dt and one at every switch.\n"
-    "Stick rows have xdot == v exactly.\n"
+    "Output, in --out DIR: trajectory.tsv starts with '# key: value' lines (tool, command,\n"
+    "model, run and solver settings, status), then the header line 't<TAB>x<TAB>xdot<TAB>mode'\n"
+    "(mode: slip-below, stick, slip-above), then one row every --dt and one at every switch.\n"
+    "Stick rows have xdot == v exactly. trajectory.gp draws trajectory.png (phase portrait\n"
+    "and time series). With --force A > 0 (the forced oscillator, dimensionless inputs):\n"
+    "a column phase (Omega t mod 2 pi) follows, and section.tsv holds the Poincare section\n"
+    "(--section strobe: every forcing period, at cos(Omega t) = 1; exit: every stick exit),\n"
+    "drawn as section.png (strobe: x' against x; exit: the exit-phase map).\n"
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
-    "With --plot, FILE.gp names the TSV and the PNG by their plain names: run it in\n"
-    "FILE's directory. The files are written as one set (docs/reliability.md).\n"
-    "Exit status: 0 done; 1 numerical or I/O failure, interruption or time limit (the\n"
-    "trajectory so far is written, marked '# status: partial (...)', without a figure;\n"
-    "if the figure cannot be drawn whole, no file is replaced);\n"
-    "2 bad input (nothing written); 3 gnuplot is missing (data and script written).\n"
-    "Example: ss_simulate --study studies/seed.ini --xdot0 0.125 --out traj.tsv --plot";
+    "The files are written as one set (docs/reliability.md); a run cut short writes the\n"
+    "trajectory so far, marked '# status: partial (...)', without figures.\n";
 
 po::options_description AppOptions() {
   po::options_description d("Simulation (study section [simulate])");
   d.add_options()("x0", cli::Value()->value_name("X"), "initial displacement (default 0)")(
       "xdot0", cli::Value()->value_name("X"),
-      "initial velocity (default 0.25: on the stick set at the seed's v, fig. 5)")(
+      "initial velocity (default 0.25: on the stick set at the seed's v, fig. 5; forced: v)")(
       "t_end", cli::Value()->value_name("T"), "end time, > 0 (default 100)")(
       "dt", cli::Value()->value_name("DT"),
-      "output interval, > 0 (default 0.01); switches are written too")(
-      "out", cli::Value()->value_name("FILE"), "output TSV file (required), written atomically")(
-      "plot", po::bool_switch(),
-      "also write FILE.gp and run gnuplot on it, giving FILE.png (phase portrait and time\n"
-      "series; SI units with physical inputs; FILE.pdf or FILE.svg with --format)")(
-      "max_time", cli::Value()->value_name("S"),
-      "wall-time limit in seconds (default none); past it, or on SIGINT/SIGTERM, the run\n"
-      "stops and writes nothing");
-  cli::AddFormatOption(d);
+      "output interval, > 0 (default 0.01); switches are written too");
+  cli::AddSimulateForcedOptions(d);
+  cli::AddRunOptions(d, "plots/simulate",
+                     "write the TSV files and the script, but do not run gnuplot");
   return d;
-}
-
-// The directory of `path` must exist and be writable: checked before the run.
-void CheckOutputPath(const std::string& path, const std::string& source) {
-  auto bad = [&](const std::string& why) {
-    return cli::UsageError("invalid value '" + path + "' for " + source + ": " + why);
-  };
-  if (path.empty() || path.back() == '/') throw bad("not a file name");
-  const auto slash = path.find_last_of('/');
-  const std::string dir =
-      slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  struct stat st;
-  if (::stat(dir.c_str(), &st) != 0) throw bad("directory '" + dir + "': " + std::strerror(errno));
-  if (!S_ISDIR(st.st_mode)) throw bad("'" + dir + "' is not a directory");
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw bad("directory '" + dir + "' is not writable: " + std::strerror(errno));
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw bad("it is a directory");
 }
 
 std::string GnuplotString(const std::string& s) {
@@ -124,22 +100,6 @@ std::string PlotScript(const std::string& data, const std::string& figure, const
   return s;
 }
 
-// The output names: the TSV and, with --plot, FILE.gp and FILE.png beside it.
-struct OutNames {
-  std::string dir, tsv, gp, png;
-};
-OutNames SplitOut(const std::string& out, ss::FigureFormat format) {
-  const auto slash = out.find_last_of('/');
-  OutNames n;
-  n.dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
-  n.tsv = slash == std::string::npos ? out : out.substr(slash + 1);
-  const bool ext = n.tsv.size() > 4 && n.tsv.compare(n.tsv.size() - 4, 4, ".tsv") == 0;
-  const std::string stem = ext ? n.tsv.substr(0, n.tsv.size() - 4) : n.tsv;
-  n.gp = stem + ".gp";
-  n.png = ss::FigureFile(stem, format);
-  return n;
-}
-
 // The first row with a non-finite number, or empty.
 std::string NonFinite(const ss::Sample& s) {
   if (std::isfinite(s.t) && std::isfinite(s.z[0]) && std::isfinite(s.z[1])) return "";
@@ -147,41 +107,18 @@ std::string NonFinite(const ss::Sample& s) {
          ", x' = " + ss::FormatNumber(s.z[1]);
 }
 
-// The run's settings, all checked before anything runs or is written.
+// The belt run's settings, all checked before anything runs or is written.
 struct Settings {
   ss::Params params;
   ss::FlowOptions options;
-  double x0 = 0, xdot0 = 0.25, t_end = 100, dt = 0.01, max_time = 0;
-  std::string out;
-  bool plot = false;
-  ss::FigureFormat format = ss::FigureFormat::kPng;
+  cli::SimulateRange range;
 };
 
 Settings Configure(const cli::Arguments& args) {
   Settings s;
   s.params = cli::ModelFromArguments(args);
   s.options = cli::FlowOptionsFromArguments(args);
-  s.x0 = args.Number("x0", s.x0);
-  s.xdot0 = args.Number("xdot0", s.xdot0);
-  s.t_end = args.Number("t_end", s.t_end);
-  s.dt = args.Number("dt", s.dt);
-  s.max_time = args.Number("max_time", 0);
-  for (const char* name : {"t_end", "dt"})
-    if (!(args.Number(name, 1) > 0))
-      throw cli::UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
-                            ": must be > 0");
-  if (s.max_time < 0)
-    throw cli::UsageError("invalid value '" + args.Text("max_time") + "' for " +
-                          args.Source("max_time") + ": must be >= 0");
-  if (s.t_end / s.dt > kMaxRows)
-    throw cli::UsageError("t_end / dt = " + ss::FormatNumber(s.t_end / s.dt) +
-                          " rows is more than " + ss::FormatNumber(kMaxRows) +
-                          "; use a larger --dt");
-  if (!args.Given("out")) throw cli::UsageError("--out FILE is required");
-  s.out = args.Text("out");
-  CheckOutputPath(s.out, args.Source("out"));
-  s.plot = args.Flag("plot");
-  s.format = cli::FigureFormatOf(args);
+  s.range = cli::SimulateRangeFromArguments(args, 0.25);
   return s;
 }
 
@@ -197,71 +134,29 @@ std::string Failure(const ss::FlowResult& r, const std::string& bad, const cli::
          (r.status == ss::FlowStatus::kCancelled ? " (" + run.Reason() + ")" : "");
 }
 
-// Writes the set (the TSV, and with --plot the script and the figure).
-int WriteOutputs(cli::OutputSet& files, const OutNames& names, const Settings& s,
-                 const ss::Model& model, const ss::TsvTable& table, cli::RunControl& run,
-                 const std::optional<cli::Scales>& scales) {
-  run.Phase("writing");
-  files.Write(names.tsv, table.str());
-  cli::GnuplotResult g;
-  if (s.plot) {
-    files.Write(names.gp, PlotScript(names.tsv, names.png, model, scales, s.format));
-    run.Phase("plotting");
-    g = files.Draw(names.gp, {names.png}, [&] { return run.Cancelled(); });
-    if (g.status == cli::GnuplotStatus::kFailed) {
-      cli::PrintError(kProg, g.message + "; nothing replaced");
-      return 1;
-    }
-  }
-  files.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{names.png});
-  if (g.status == cli::GnuplotStatus::kCancelled) {
-    cli::PrintError(kProg, run.Reason() + " while plotting: " + s.out + " written, no figure");
-    return 1;
-  }
-  if (g.status == cli::GnuplotStatus::kMissing) {
-    cli::PrintError(kProg, g.message + "; " + s.out + " and the script written, no figure");
-    return 3;
-  }
-  return 0;
-}
-
-int Main(int argc, char** argv) {
-  const po::options_description desc = cli::AppDescription(AppOptions());
-  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
-  if (cli::HelpOrVersion(std::cout, args, kProg,
-                         "ss_simulate [--study FILE] [model options] [--x0 X] [--xdot0 Y] "
-                         "[--t_end T] [--dt DT] --out FILE.tsv [--plot] [--max_time S]",
-                         desc, kNotes))
-    return 0;
+int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   const Settings s = Configure(args);
   // With physical inputs, physical copies of t, x and x' follow (seed section 3 scaling).
   const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
-  const OutNames names = SplitOut(s.out, s.format);
-  cli::OutputSet files(names.dir,
-                       s.plot ? std::vector<std::string>{names.tsv, names.gp, names.png}
-                              : std::vector<std::string>{names.tsv},
-                       args.Source("out"), kProg);
-
+  const ss::FigureFormat format = cli::FigureFormatOf(args);
+  const std::string figure = ss::FigureFile("trajectory", format);
+  cli::AppRun app(kProg, args, "plots/simulate", {"trajectory.tsv", "trajectory.gp", figure});
+  cli::RunControl& run = app.run();
   const ss::Model model(s.params);
   ss::Flow flow(model, s.options);
-  cli::RunControl run(kProg, s.max_time);
   flow.set_cancel([&] {
     run.Heartbeat("");
     return run.Cancelled();
   });
   run.Phase("integrating");
-  const ss::Vec2 z0(s.x0, s.xdot0);
+  const ss::Vec2 z0(s.range.x0, s.range.xdot0);
   std::vector<std::string> columns = {"t", "x", "xdot", "mode"};
   if (scales) columns.insert(columns.end(), {"t_s", "x_m", "xdot_m_s"});
   ss::TsvTable table(columns);
-  for (const auto& [key, value] :
-       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.params, s.options))
+  for (const auto& [key, value] : cli::RunMetadata(kProg, command, s.params, s.options))
     table.AddMeta(key, value);
   table.AddMeta("model", cli::DescribeModel(s.params));
-  table.AddMeta("x0", ss::FormatNumber(s.x0));
-  table.AddMeta("xdot0", ss::FormatNumber(s.xdot0));
-  table.AddMeta("t_end", ss::FormatNumber(s.t_end));
-  table.AddMeta("dt", ss::FormatNumber(s.dt));
+  cli::AddRangeMeta(table, s.range);
   if (scales) {
     table.AddMeta("L", ss::FormatNumber(scales->L) + " m (M g / K)");
     table.AddMeta("t0", ss::FormatNumber(scales->t0) + " s (sqrt(M / K))");
@@ -277,31 +172,56 @@ int Main(int argc, char** argv) {
     else if (bad.empty())
       table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
     last = x;
-    run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.t_end, x.t, "time units");
+    run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.range.t_end, x.t, "time units");
   };
   ss::StopRule stop;
-  stop.t_max = s.t_end;
+  stop.t_max = s.range.t_end;
   ss::FlowResult r;
   try {
-    r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, s.dt, observer);
+    r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, s.range.dt, observer);
   } catch (const ss::InvalidArgument& e) {  // valid input: a numerical failure
     throw ss::Error(std::string("numerical failure: ") + e.what());
   }
+  run.Phase("writing");
   if (!r.ok() || !bad.empty()) {
     // As every app: the rows so far (all finite), marked partial with where
     // the run stopped; no figure, and an older one is removed (not this run's).
     const std::string why = Failure(r, bad, run);
     table.AddMeta("status", "partial (" + why + ")");
-    run.Phase("writing");
-    files.Write(names.tsv, table.str());
-    files.Commit(s.plot ? std::vector<std::string>{names.gp, names.png}
-                        : std::vector<std::string>{});
-    cli::PrintError(kProg, why + "; the trajectory so far is written to " + s.out +
-                               ", marked partial");
-    return 1;
+    app.out().Write("trajectory.tsv", table.str());
+    app.out().Commit({"trajectory.gp", figure});
+    return app.ExitCode(why + "; the trajectory so far is written to " + app.out().dir() +
+                        "/trajectory.tsv, marked partial");
   }
   table.AddMeta("status", "complete");
-  return WriteOutputs(files, names, s, model, table, run, scales);
+  app.out().Write("trajectory.tsv", table.str());
+  app.out().Write("trajectory.gp", PlotScript("trajectory.tsv", figure, model, scales, format));
+  if (!app.Finish("trajectory.gp", {figure}, {figure})) return cli::kExitFailed;
+  std::cout << kProg << ": " << table.rows() << " rows to t = " << ss::FormatNumber(r.t)
+            << "; wrote " << app.out().dir() << "/trajectory.tsv"
+            << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
+  return app.ExitCode("");
+}
+
+int Main(int argc, char** argv) {
+  po::options_description desc = cli::AppDescription(AppOptions());
+  desc.add(cli::ForcingOptions());
+  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
+  if (cli::HelpOrVersion(std::cout, args, kProg,
+                         "ss_simulate [--study FILE] [model options] [--force A --omega W "
+                         "[--section strobe|exit]] [--x0 X] [--xdot0 Y] [--t_end T] [--dt DT] "
+                         "[--out DIR] [--no_plots] [--max_time S]",
+                         desc,
+                         std::string(kNotes) + cli::kExitCodeHelp +
+                             "\nExample: ss_simulate --study studies/seed.ini --xdot0 "
+                             "0.125 --out plots/traj"))
+    return 0;
+  const std::string command = cli::CommandLine(argc, argv);
+  if (cli::ForcedRequested(args)) return cli::SimulateForcedApp(args, kProg, command);
+  if (args.Given("section"))
+    throw cli::UsageError(args.Source("section") +
+                          " needs the forced oscillator: give --force A > 0");
+  return SimulateBelt(args, command);
 }
 
 }  // namespace

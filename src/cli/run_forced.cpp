@@ -41,6 +41,10 @@ void Check(const Arguments& args, const ForcedParams& p, const std::string& what
 }
 
 ForcedSetup Configure(const Arguments& args) {
+  if (args.Given("restart"))  // a belt point carries no forcing, a forced run no restart state
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") +
+                     ": restarts are for the belt model; the forced oscillator (--force, --param "
+                     "omega|force) starts from a transient, not from a labelled point");
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
@@ -74,13 +78,12 @@ ForcedSetup Configure(const Arguments& args) {
     throw UsageError(args.Source("max_step") + " must be in (0, 1]");
   s.opts.palc.ds = std::min(s.opts.palc.ds, s.opts.palc.ds_max);
   s.opts.max_amplitude = args.Number("max_amplitude", 50);
-  if (!(s.opts.max_amplitude > 0))
-    throw UsageError(args.Source("max_amplitude") + " must be > 0");
+  if (!(s.opts.max_amplitude > 0)) throw UsageError(args.Source("max_amplitude") + " must be > 0");
   return s;
 }
 
 // The state after kTransientPeriods forcing periods from rest, at t = N T.
-ForcedBranch Trace(const ForcedSetup& s, double from, double to) {
+ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   SetAxis(p, s.axis, from);
   const ForcedModel model(p);
@@ -90,7 +93,11 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to) {
   double x = tr.end.x, xdot = tr.end.xdot;
   if (tr.status != ForcedStatus::kReached || std::abs(x) > s.opts.max_amplitude)
     x = 0, xdot = p.base.v;  // no settled state: Newton from rest
-  return ContinueForced(s.p, s.axis, from, to, x, xdot, s.opts);
+  ForcedBranchOptions opts = s.opts;
+  opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
+  ForcedBranch b = ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
+  if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
+  return b;
 }
 
 std::string Describe(const ForcedSetup& s) {
@@ -144,23 +151,33 @@ bool ForcedRequested(const Arguments& args) {
 
 int RunForced(const Arguments& args, const std::string& prog, const std::string& command) {
   const ForcedSetup s = Configure(args);
+  const FigureFormat format = FigureFormatOf(args);
+  const std::string figure = FigureFile("resonance", format);
   const std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "resonance.gp",
-                                          "resonance.png"};
+                                          figure};
   AppRun app(prog, args, "plots", names);
+  app.run().Phase("continuing");
   std::vector<ForcedPiece> pieces(1);
-  pieces[0].branch = Trace(s, s.from, s.to);
+  pieces[0].branch = Trace(s, s.from, s.to, app.run());
+  if (pieces[0].branch.rows.empty()) {  // nothing to write or draw
+    std::cerr << prog << ": error: no periodic orbit at " << ForcedAxisName(s.axis) << " = "
+              << FormatNumber(s.from) << " (" << ForcedBranchStatusName(pieces[0].branch.status)
+              << (pieces[0].branch.message.empty() ? "" : ": " + pieces[0].branch.message)
+              << "); nothing written\n";
+    return kExitFailed;
+  }
   std::string gap;
   std::vector<double> gap_ends;
   if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded) {
     // Undamped resonance: trace the other end too; between them x is unbounded.
-    pieces.push_back({Trace(s, s.to, s.from), 2});
+    pieces.push_back({Trace(s, s.to, s.from, app.run()), 2});
     const auto& a = pieces[0].branch.rows;
     const auto& b = pieces[1].branch.rows;
     if (!a.empty() && !b.empty()) gap_ends = {a.back().p, b.back().p};
     if (!a.empty() && !b.empty())
-      gap = "not traced between " + FormatNumber(a.back().p) + " and " +
-            FormatNumber(b.back().p) + ": |x| > max_amplitude " +
-            FormatNumber(s.opts.max_amplitude) + " there (unbounded resonance)";
+      gap = "not traced between " + FormatNumber(a.back().p) + " and " + FormatNumber(b.back().p) +
+            ": |x| > max_amplitude " + FormatNumber(s.opts.max_amplitude) +
+            " there (unbounded resonance)";
   }
   const std::string model = Describe(s);
   Metadata meta = RunMetadata(prog, command, s.p.base, s.flow);
@@ -174,8 +191,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
                            {"max_amplitude", FormatNumber(s.opts.max_amplitude)}});
   std::string status;
   for (const ForcedPiece& piece : pieces)
-    status += (status.empty() ? "" : "; ") + std::string("branch ") +
-              std::to_string(piece.index) + " " + ForcedBranchStatusName(piece.branch.status) +
+    status += (status.empty() ? "" : "; ") + std::string("branch ") + std::to_string(piece.index) +
+              " " + ForcedBranchStatusName(piece.branch.status) +
               (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
@@ -188,8 +205,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   app.out().Write("branch.tsv", branch.str());
   app.out().Write("special_points.tsv", special.str());
   app.out().Write("resonance.gp", ResonanceScript(s.p, s.axis, static_cast<int>(pieces.size()),
-                                                  model, gap_ends, specials));
-  if (!app.Finish("resonance.gp", {"resonance.png"}, {"resonance.png"})) return kExitFailed;
+                                                  model, gap_ends, specials, format));
+  if (!app.Finish("resonance.gp", {figure}, {figure})) return kExitFailed;
   size_t rows = 0;
   for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
   std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
@@ -199,9 +216,10 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   for (const ForcedPiece& piece : pieces)
     for (const ForcedBranchRow& r : piece.branch.special)
       std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
-                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "\n";
+                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "  "
+                << r.description << "\n";
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
-            << (app.gnuplot().ok() ? " and resonance.png" : "") << "\n";
+            << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;
   const ForcedBranchStatus last = pieces.back().branch.status;
   if (last != ForcedBranchStatus::kReachedEnd && last != ForcedBranchStatus::kClosed &&

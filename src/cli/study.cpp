@@ -71,7 +71,7 @@ po::options_description AppDescription(const po::options_description& app,
 
 const std::vector<std::string>& StudySections() {
   static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "chart",
-                                                    "basin"};
+                                                    "basin", "orbit_diagram"};
   return sections;
 }
 

@@ -1,13 +1,17 @@
 // One-parameter continuation of the forced oscillator's periodic orbits: the
 // stroboscopic residual (forced_branch_problem.hpp) through Palc, rows from
-// each accepted point's run, LP and PD located on the chord between two rows.
+// each accepted point's run; LP, PD, NS and the sliding points located on the
+// chord between two rows; across a jump of the map, a restart beyond it
+// (forced_sliding.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include "forced_branch_problem.hpp"
-#include "stickslip/errors.hpp"
+#include "forced_sliding.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip {
 
@@ -25,6 +29,10 @@ const char* ForcedBranchStatusName(ForcedBranchStatus s) {
       return "max-points";
     case ForcedBranchStatus::kClosed:
       return "closed";
+    case ForcedBranchStatus::kCancelled:
+      return "cancelled";
+    case ForcedBranchStatus::kLeftRange:
+      return "left-range";
   }
   return "?";
 }
@@ -34,35 +42,55 @@ namespace {
 using Eigen::VectorXd;
 using forced_detail::StrobeProblem;
 
+// The rows at the ends of the final bracket of a located sign change.
+struct Bracket {
+  ForcedBranchRow lo, hi, mid;
+  double p_hi = 0;  // the parameter at the bracket's far end
+};
+
 // Bisection on the chord a -> b for the sign change of test(): each point is
 // corrected onto the branch with the chord's direction held (Palc::Correct).
+// fail_is_hi: a point where the corrector fails counts as b's side (the edge
+// of a jump of the map, where the orbit of a's side ends).
 bool Locate(Palc& palc, StrobeProblem& problem, const VectorXd& a, const VectorXd& b,
-            double (StrobeProblem::*test)() const, double tol, ForcedBranchRow* out) {
+            const std::function<double()>& test, double tol, Bracket* out,
+            bool fail_is_hi = false) {
   const VectorXd chord =
       (b - a).cwiseQuotient(palc.options().scale.size() ? palc.options().scale : VectorXd::Ones(3));
   const VectorXd t = chord.normalized();
   auto at = [&](double s, double* g) {
     const PalcCorrection c = palc.Correct(a + s * (b - a), t);
     if (!c.ok) return false;
-    *g = (problem.*test)();
+    *g = test();
     return true;
   };
   double lo = 0, hi = 1, g_lo = 0, g_hi = 0;
-  if (!at(lo, &g_lo) || !at(hi, &g_hi) || (g_lo > 0) == (g_hi > 0)) return false;
+  if (!at(hi, &g_hi)) return false;
+  out->hi = problem.Row();
+  if (!at(lo, &g_lo) || (g_lo > 0) == (g_hi > 0)) return false;
+  out->lo = problem.Row();
   for (int it = 0; it < 60 && hi - lo > tol; ++it) {
     const double mid = 0.5 * (lo + hi);
     double g = 0;
-    if (!at(mid, &g)) return false;
-    ((g > 0) == (g_lo > 0) ? lo : hi) = mid;
+    if (!at(mid, &g)) {
+      if (!fail_is_hi) return false;
+      hi = mid;
+      continue;
+    }
+    const bool low = (g > 0) == (g_lo > 0);
+    (low ? lo : hi) = mid;
+    (low ? out->lo : out->hi) = problem.Row();
   }
+  out->p_hi = (a + hi * (b - a))[2];
+  if (fail_is_hi) return true;
   double g = 0;
   if (!at(0.5 * (lo + hi), &g)) return false;
-  *out = problem.Row();
+  out->mid = problem.Row();
   return true;
 }
 
-ForcedBranchStatus FromPalc(PalcStatus s) {
-  switch (s) {
+ForcedBranchStatus FromPalc(const PalcResult& r) {
+  switch (r.status) {
     case PalcStatus::kClosed:
       return ForcedBranchStatus::kClosed;
     case PalcStatus::kMaxPoints:
@@ -74,7 +102,154 @@ ForcedBranchStatus FromPalc(PalcStatus s) {
     case PalcStatus::kStopped:
       break;
   }
-  return ForcedBranchStatus::kReachedEnd;
+  return r.message == "cancelled" ? ForcedBranchStatus::kCancelled
+                                  : ForcedBranchStatus::kReachedEnd;
+}
+
+bool Complex(const ForcedBranchRow& r) { return r.multipliers[0].imag() != 0; }
+
+// One Palc trace's monitor: rows, the end at p = to, and the special points
+// between consecutive rows (LP, PD, NS by their test functions; the sliding
+// points by a change of the stick structure).
+class Monitor {
+ public:
+  Monitor(Palc& palc, StrobeProblem& problem, const ForcedParams& base, ForcedAxis axis,
+          double from, double to, const ForcedBranchOptions& o, ForcedBranch& out)
+      : palc_(palc),
+        problem_(problem),
+        base_(base),
+        axis_(axis),
+        from_(from),
+        to_(to),
+        dir_(to > from ? 1 : -1),
+        o_(o),
+        out_(out) {}
+  bool stopped() const { return stopped_; }
+  void Restart() { have_prev_ = false; }
+  bool operator()(const std::vector<PalcPoint>& curve);
+
+ private:
+  void Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row);
+
+  Palc& palc_;
+  StrobeProblem& problem_;
+  const ForcedParams& base_;
+  ForcedAxis axis_;
+  double from_, to_, dir_;
+  const ForcedBranchOptions& o_;
+  ForcedBranch& out_;
+  bool stopped_ = false, have_prev_ = false;
+  ForcedBranchRow prev_;
+  double prev_tests_[3] = {0, 0, 0};
+};
+
+void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row) {
+  std::vector<ForcedBranchRow> found;
+  const double now[3] = {problem_.FoldTest(), problem_.FlipTest(), problem_.TorusTest()};
+  double (StrobeProblem::*const tests[3])()
+      const = {&StrobeProblem::FoldTest, &StrobeProblem::FlipTest, &StrobeProblem::TorusTest};
+  const ForcedLabel labels[3] = {ForcedLabel::kLP, ForcedLabel::kPD, ForcedLabel::kNS};
+  const char* what[3] = {"fold: a multiplier at +1", "period doubling: a multiplier at -1",
+                         "Neimark-Sacker: a complex pair on the unit circle"};
+  const bool smooth = forced_detail::SameStructure(prev_, row);
+  for (int i = 0; i < 3; ++i) {
+    if ((now[i] > 0) == (prev_tests_[i] > 0) || !smooth) continue;
+    if (i == 2 && !(Complex(prev_) && Complex(row))) continue;
+    Bracket br;
+    if (!Locate(
+            palc_, problem_, a, b, [&] { return (problem_.*tests[i])(); }, o_.locate_tol, &br))
+      continue;
+    br.mid.label = labels[i];
+    br.mid.description = what[i];
+    found.push_back(br.mid);
+  }
+  ForcedBranchRow ref = prev_, first_lo;
+  VectorXd from = a;
+  for (int k = 0; k < 4 && !forced_detail::SameStructure(ref, row); ++k) {  // one edge each
+    auto test = [&] { return forced_detail::SameStructure(problem_.Row(), ref) ? 1.0 : -1.0; };
+    Bracket br;
+    // On the chord; where the corrector fails there, the edge of the orbits
+    // of ref's structure (a jump of the map).
+    const bool chord = Locate(palc_, problem_, from, b, test, o_.locate_tol, &br);
+    if (!chord && !Locate(palc_, problem_, from, b, test, o_.locate_tol, &br, true)) break;
+    // Where the map jumps, the corrector fails short of the edge or lands on
+    // either side of it far apart: refine in the parameter, by Newton from
+    // the last orbit of ref's structure.
+    const double far = chord ? br.hi.p : br.p_hi;
+    const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
+                                 std::abs(br.hi.xdot0 - br.lo.xdot0)});
+    if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0))) {
+      // The edge lies along the chord, or behind a corner of the branch
+      // (two branches meeting at the edge): try both ways.
+      Bracket fine;
+      std::string why;
+      const double span = b[2] - from[2];
+      const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(br.lo.p)));
+      bool found_edge = false;
+      for (const double sign : {1.0, -1.0})
+        if (!found_edge) {
+          const double d = sign * (span > 0 ? 1 : -1);
+          found_edge =
+              forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, br.lo.p + d * 256 * step,
+                                        o_.locate_tol, &fine.lo, &fine.hi, &why);
+        }
+      if (found_edge)
+        br = fine;
+      else if (!chord)
+        br.hi = row;
+    }
+    // Edges within the tolerance are one point (the two halves of a
+    // symmetric orbit on a floor reach the band together).
+    const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
+                                   1e3 * o_.locate_tol * (1 + std::abs(br.lo.p));
+    if (same) found.pop_back();
+    ForcedBranchRow point = same ? first_lo : br.lo;
+    if (!same) first_lo = br.lo;
+    forced_detail::ClassifySliding(base_, axis_, o_, first_lo, br.hi, &point);
+    found.push_back(point);
+    if (forced_detail::SameStructure(br.hi, ref)) break;
+    ref = br.hi;
+    from = Eigen::Vector3d(br.hi.x0, br.hi.xdot0, br.hi.p);
+  }
+  std::sort(found.begin(), found.end(), [&](const ForcedBranchRow& x, const ForcedBranchRow& y) {
+    return std::abs(x.p - prev_.p) < std::abs(y.p - prev_.p);
+  });
+  for (const ForcedBranchRow& sp : found) out_.special.push_back(sp), out_.rows.push_back(sp);
+}
+
+bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
+  const VectorXd* prev = curve.size() >= 2 ? &curve[curve.size() - 2].u : nullptr;
+  VectorXd here = curve.back().u;
+  if (prev && (here[2] - to_) * dir_ >= 0) {  // past the end: the row at p = to instead
+    VectorXd pred = *prev + (to_ - (*prev)[2]) / (here[2] - (*prev)[2]) * (here - *prev);
+    pred[2] = to_;
+    const PalcCorrection c = palc_.CorrectFixed(pred, 2);
+    stopped_ = true;
+    out_.status = ForcedBranchStatus::kReachedEnd;
+    if (!c.ok) {
+      out_.status = ForcedBranchStatus::kStepTooSmall;
+      out_.message = "the row at p = to: " + c.why;
+      return false;
+    }
+    here = c.u;
+  }
+  const ForcedBranchRow row = problem_.Row();
+  const double tests[3] = {problem_.FoldTest(), problem_.FlipTest(), problem_.TorusTest()};
+  if (prev && have_prev_) Special(*prev, here, row);
+  std::copy(tests, tests + 3, prev_tests_);
+  prev_ = row;
+  have_prev_ = true;
+  out_.rows.push_back(row);
+  if (std::max(std::abs(row.extremes.x_min), std::abs(row.extremes.x_max)) > o_.max_amplitude) {
+    out_.status = ForcedBranchStatus::kUnbounded;
+    stopped_ = true;
+  } else if ((row.p - from_) * dir_ < -1e-3 * std::abs(to_ - from_)) {
+    out_.status = ForcedBranchStatus::kLeftRange;
+    out_.message = "the branch turned back past " + std::string(ForcedAxisName(axis_)) + " = " +
+                   Num(from_, 12);
+    stopped_ = true;
+  }
+  return !stopped_;
 }
 
 }  // namespace
@@ -91,58 +266,51 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
   ForcedBranch out;
   out.status = ForcedBranchStatus::kMaxPoints;
   const double dir = to > from ? 1 : -1;
-  VectorXd u0(3), direction = VectorXd::Unit(3, 2) * dir;
+  Monitor monitor(palc, problem, base, axis, from, to, options, out);
+  VectorXd u0(3);
   u0 << x_guess, xdot_guess, from;
-  bool stopped = false, have_tests = false;
-  double last_tests[2] = {0, 0};
-  double (StrobeProblem::*tests[2])() const = {&StrobeProblem::FoldTest, &StrobeProblem::FlipTest};
-  const ForcedLabel labels[2] = {ForcedLabel::kLP, ForcedLabel::kPD};
-  auto monitor = [&](const std::vector<PalcPoint>& curve) {
-    const VectorXd* prev = curve.size() >= 2 ? &curve[curve.size() - 2].u : nullptr;
-    VectorXd here = curve.back().u;
-    if (prev && (here[2] - to) * dir >= 0) {  // past the end: the row at p = to instead
-      VectorXd pred = *prev + (to - (*prev)[2]) / (here[2] - (*prev)[2]) * (here - *prev);
-      pred[2] = to;
-      const PalcCorrection c = palc.CorrectFixed(pred, 2);
-      stopped = true;
-      out.status = ForcedBranchStatus::kReachedEnd;
-      if (!c.ok) {
-        out.status = ForcedBranchStatus::kStepTooSmall;
-        out.message = "the row at p = to: " + c.why;
-        return false;
-      }
-      here = c.u;
+  double trace_dir = dir;
+  for (;;) {
+    const PalcResult r = palc.Trace(u0, 2, VectorXd::Unit(3, 2) * trace_dir, std::ref(monitor));
+    if (monitor.stopped()) {
+      if (out.status == ForcedBranchStatus::kReachedEnd) out.message.clear();
+      break;
     }
-    const ForcedBranchRow row = problem.Row();
-    const double now[2] = {(problem.*tests[0])(), (problem.*tests[1])()};
-    for (int i = 0; i < 2 && prev && have_tests; ++i) {
-      ForcedBranchRow sp;
-      if ((now[i] > 0) != (last_tests[i] > 0) &&
-          Locate(palc, problem, *prev, here, tests[i], options.locate_tol, &sp)) {
-        sp.label = labels[i];
-        out.special.push_back(sp);
-        out.rows.push_back(sp);
-      }
-    }
-    std::copy(now, now + 2, last_tests);
-    have_tests = true;
-    out.rows.push_back(row);
-    if (std::max(std::abs(row.extremes.x_min), std::abs(row.extremes.x_max)) >
-        options.max_amplitude) {
-      out.status = ForcedBranchStatus::kUnbounded;
-      stopped = true;
-    }
-    return !stopped;
-  };
-  const PalcResult r = palc.Trace(u0, 2, direction, monitor);
-  if (!stopped) {
-    out.status = FromPalc(r.status);
+    out.status = FromPalc(r);
     out.message = r.message;
-    if (out.status == ForcedBranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
-      out.message += " after the row at " + std::string(ForcedAxisName(axis)) + " = " +
-                     Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
-                     " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
+    if (out.status != ForcedBranchStatus::kStepTooSmall || out.rows.empty()) break;
+    // A jump of the stroboscopic map: locate its edge, go on from the orbit beyond.
+    const ForcedBranchRow last = out.rows.back();
+    const ForcedBranchRow* prev = out.rows.size() >= 2 ? &out.rows[out.rows.size() - 2] : nullptr;
+    const double dp = prev ? last.p - prev->p : 0;
+    const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : trace_dir;
+    const double step = std::max(std::abs(dp), 1e-6 * std::abs(to - from));
+    ForcedBranchRow before, after;
+    after.p = last.p;
+    std::string why = "more than max_jumps = " + std::to_string(options.max_jumps) + " jumps";
+    if (out.jumps >= options.max_jumps) {
+      out.message += "; " + why;
+      break;
+    }
+    if (forced_detail::JumpAcross(base, axis, options, last, pdir, step, pdir == dir ? to : from,
+                                  options.locate_tol, &before, &after, &why)) {
+      ForcedBranchRow point = before;
+      forced_detail::ClassifySliding(base, axis, options, before, after, &point);
+      out.special.push_back(point);
+      out.rows.push_back(point);
+    } else if (after.p == last.p) {
+      out.message += "; " + why;
+      break;
+    }  // else: the orbit goes on past the failure (natural steps); on from there
+    ++out.jumps;
+    u0 << after.x0, after.xdot0, after.p;
+    trace_dir = pdir;
+    monitor.Restart();
   }
+  if (out.status == ForcedBranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
+    out.message += " after the row at " + std::string(ForcedAxisName(axis)) + " = " +
+                   Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
+                   " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
   out.evaluations = palc.evaluations();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -60,6 +60,18 @@ const char* ForcedLabelName(ForcedLabel l) {
       return "LP";
     case ForcedLabel::kPD:
       return "PD";
+    case ForcedLabel::kNS:
+      return "NS";
+    case ForcedLabel::kGR:
+      return "GR";
+    case ForcedLabel::kSW:
+      return "SW";
+    case ForcedLabel::kAD:
+      return "AD";
+    case ForcedLabel::kCR:
+      return "CR";
+    case ForcedLabel::kSL:
+      return "SL";
   }
   return "?";
 }

@@ -20,6 +20,8 @@ class StrobeProblem final : public PalcProblem {
   // det(DP^m - I) (LP) and det(DP^m + I) (PD) at the last evaluated point.
   double FoldTest() const { return (last_.jacobian - Mat2::Identity()).determinant(); }
   double FlipTest() const { return (last_.jacobian + Mat2::Identity()).determinant(); }
+  // det(DP^m) - 1: |mu|^2 - 1 for a complex pair (NS).
+  double TorusTest() const { return last_.jacobian.determinant() - 1; }
 
  private:
   bool End(const ForcedParams& q, const ForcedPoint& z, bool variational, ForcedRun* run,

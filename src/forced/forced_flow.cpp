@@ -2,12 +2,14 @@
 // x' = v as the first sign change of the step polynomial of x' - v (none
 // missed: poly_roots.hpp), the extrema of x and x' as the roots of x' and x''
 // on each step, and the Filippov rule at every arrival.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "forced_driver.hpp"
 #include "stickslip/errors.hpp"
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
@@ -154,7 +156,20 @@ bool Driver::SlipStep(double t_end) {
   double u_hit = 2;
   const double* g = g0;
   int d = n;
-  if (on_surface_) d = Deflate(g, n);
+  double gd[kMaxOrder + 1];
+  if (on_surface_) {
+    d = Deflate(g, n);
+    // x'' h, the deflated constant term, is rounding at a stick exit with
+    // mu(0+) = mu_s (x'' = 0 there); Deflate's noise, relative to the
+    // polynomial (O(h^2) on a short step), may keep it, and its sign must
+    // not count: it sent the flow back into stick at the same t, over and over.
+    const double scale = 1 + std::abs(x_) + std::abs(xd_) + m_.force() + m_.static_limit();
+    if (d >= 1 && std::abs(g[0]) <= Tolerances::SurfaceRounding() * scale * h) {
+      std::copy(g, g + d + 1, gd);
+      gd[0] = 0;
+      g = gd;
+    }
+  }
   on_surface_ = false;
   if (d >= 0) {
     const int s0 = g[0] > 0 ? 1 : (g[0] < 0 ? -1 : side);

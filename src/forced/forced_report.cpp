@@ -1,20 +1,20 @@
 // The forced branch as TSV tables and the resonance figure's script.
-#include "stickslip/forced/report.hpp"
-
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/forced/report.hpp"
 
 namespace stickslip {
 
 namespace {
 
 std::vector<std::string> Columns(ForcedAxis axis) {
-  return {"branch",   ForcedAxisName(axis),         "m",      "sticks",   "crossings", "kind",
-          "x_min",    "x_max",    "xdot_min", "xdot_max", "period",  "x0",
-          "xdot0",    "mult1_re", "mult1_im", "mult2_re", "mult2_im", "mult_max",
-          "stable"};
+  return {
+      "branch",   ForcedAxisName(axis), "m",        "sticks",   "crossings", "kind",  "x_min",
+      "x_max",    "xdot_min",           "xdot_max", "period",   "x0",        "xdot0", "mult1_re",
+      "mult1_im", "mult2_re",           "mult2_im", "mult_max", "stable",    "pt"};
 }
 
 std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const ForcedParams& p,
@@ -40,10 +40,30 @@ std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const For
     if (!std::isfinite(x))
       throw InvalidArgument("forced branch row at " + std::string(ForcedAxisName(axis)) + " = " +
                             FormatNumber(r.p) + " has a non-finite value");
-  return {piece,      r.p,        r.m,        r.sticks,   r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
-          numbers[1], numbers[2], numbers[3], numbers[4], period,      r.x0,
-          r.xdot0,    numbers[8], numbers[9], numbers[10], numbers[11], mult_max,
+  return {piece,           r.p,         r.m,
+          r.sticks,        r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
+          numbers[1],      numbers[2],  numbers[3],
+          numbers[4],      period,      r.x0,
+          r.xdot0,         numbers[8],  numbers[9],
+          numbers[10],     numbers[11], mult_max,
           r.stable ? 1 : 0};
+}
+
+// Every row with its point number (pt, 1-based over the pieces) and, for the
+// special ones, the label with its index per type (GR1, CR1, PD1, ...).
+template <class F>
+void ForEachRow(const std::vector<ForcedPiece>& pieces, F f) {
+  int pt = 0;
+  std::map<ForcedLabel, int> count;
+  for (const ForcedPiece& piece : pieces)
+    for (const ForcedBranchRow& r : piece.branch.rows) {
+      ++pt;
+      const std::string lab =
+          r.label == ForcedLabel::kNone
+              ? ""
+              : std::string(ForcedLabelName(r.label)) + std::to_string(++count[r.label]);
+      f(piece, r, pt, lab);
+    }
 }
 
 }  // namespace
@@ -52,8 +72,12 @@ TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis ax
                            const ForcedParams& p) {
   auto cols = Columns(axis);
   TsvTable t(cols);
-  for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.rows) t.AddRow(Cells(r, piece.index, p, axis));
+  ForEachRow(pieces,
+             [&](const ForcedPiece& piece, const ForcedBranchRow& r, int pt, const std::string&) {
+               auto cells = Cells(r, piece.index, p, axis);
+               cells.push_back(pt);
+               t.AddRow(cells);
+             });
   return t;
 }
 
@@ -61,13 +85,16 @@ TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis a
                             const ForcedParams& p) {
   auto cols = Columns(axis);
   cols.insert(cols.begin(), "label");
+  cols.insert(cols.end(), {"lab", "description"});
   TsvTable t(cols);
-  for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.special) {
-      auto cells = Cells(r, piece.index, p, axis);
-      cells.insert(cells.begin(), ForcedLabelName(r.label));
-      t.AddRow(cells);
-    }
+  ForEachRow(pieces, [&](const ForcedPiece& piece, const ForcedBranchRow& r, int pt,
+                         const std::string& lab) {
+    if (lab.empty()) return;
+    auto cells = Cells(r, piece.index, p, axis);
+    cells.insert(cells.begin(), ForcedLabelName(r.label));
+    cells.insert(cells.end(), {pt, lab, r.description});
+    t.AddRow(cells);
+  });
   return t;
 }
 
@@ -79,16 +106,16 @@ bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis) {
 // Den Hartog (1931): X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
 // U = sin(pi / W) / (W (1 + cos(pi / W))), real where the motion has no stop.
 std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
-                            const std::string& title, const std::vector<double>& gap,
-                            int specials) {
+                            const std::string& title, const std::vector<double>& gap, int specials,
+                            FigureFormat format) {
   const std::string ax = ForcedAxisName(axis);
   std::ostringstream os;
-  os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax
-     << ".\nset terminal pngcairo size 1000,650 enhanced font ',11'\n"
-     << "set output 'resonance.png'\nset datafile separator '\\t'\n"
+  os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax << ".\n"
+     << FigureTerminal(format, 1000, 650) << "set output '" << FigureFile("resonance", format)
+     << "'\nset datafile separator '\\t'\n"
      << "set title \"" << title << "\" noenhanced\n"
-     << "set xlabel '" << (axis == ForcedAxis::kOmega ? "{/Symbol W} (forcing / natural frequency)"
-                                                      : ax)
+     << "set xlabel '"
+     << (axis == ForcedAxis::kOmega ? "{/Symbol W} (forcing / natural frequency)" : ax)
      << "'\nset ylabel 'x_{max}'\nset grid\nset key top right box opaque\nset yrange [0:*]\n"
      << "c(name) = column(name)\n"
      << "in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s\n"
@@ -113,9 +140,9 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
   for (int b = 1; b <= pieces; ++b)
     for (int k = 0; k < 2; ++k)
       for (int s = 1; s >= 0; --s) {
-        os << (first ? "  " : ", \\\n  ") << "prev = 0, 'branch.tsv' using '" << ax << "':(sel(" << b
-           << ", '" << kinds[k] << "', " << s << ")) with lines lw " << (s ? 2.5 : 1.8) << " dt "
-           << (s ? 1 : 2) << " lc rgb '" << colours[k] << "' ";
+        os << (first ? "  " : ", \\\n  ") << "prev = 0, 'branch.tsv' using '" << ax << "':(sel("
+           << b << ", '" << kinds[k] << "', " << s << ")) with lines lw " << (s ? 2.5 : 1.8)
+           << " dt " << (s ? 1 : 2) << " lc rgb '" << colours[k] << "' ";
         if (b == 1)
           os << "title '" << kinds[k] << (s ? ", stable" : ", unstable") << "'";
         else
@@ -126,7 +153,7 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
     os << ", \\\n  'branch.tsv' using '" << ax << "':(c('branch') == " << b
        << " && strcol('kind') eq 'non-stop' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
        << "lc rgb 'black' " << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
-  if (specials > 0)  // LP and PD, located (special_points.tsv)
+  if (specials > 0)  // LP, PD, NS and the sliding points, located (special_points.tsv)
     os << ", \\\n  'special_points.tsv' using '" << ax << "':'x_max' with points pt 7 ps 1.2 "
        << "lc rgb 'black' notitle, \\\n  'special_points.tsv' using '" << ax
        << "':'x_max':'label' with labels offset 0, 1 notitle";

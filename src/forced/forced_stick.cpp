@@ -56,8 +56,15 @@ bool Driver::Stick() {
 }
 
 bool Driver::Exit(double t, double x) {
-  t_ = t, x_ = x, xd_ = m_.v();
   const Mode after = m_.ExitMode(t, x);
+  // On the band's edge exactly: phi(t) = +-mu_s, x = +-mu_s - 2 beta v + A cos(Omega t).
+  // The stick line there differs by the root's error (about 1e-13); kept, it
+  // left x'' = mu_s - phi of that size and either sign at the start of slip,
+  // which for a law with mu(0+) = mu_s could send the flow straight back into
+  // stick at the same t, over and over ("switching does not advance t").
+  const double edge = (after == Mode::kSlipBelow ? 1 : -1) * m_.static_limit() -
+                      2 * m_.beta() * m_.v() + m_.force() * std::cos(m_.omega() * t);
+  t_ = t, x_ = edge, xd_ = m_.v();
   if (rq_.variational) phi_ = m_.SaltationStickOut(after, t, x) * phi_;
   mode_ = after;
   on_surface_ = true;

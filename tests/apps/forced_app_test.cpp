@@ -46,9 +46,9 @@ double DenHartogX(double mu, double a, double w) {
 
 TEST(ForcedApp, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   const std::string dir = TempDir();
-  const Result r = RunApp(dir, {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0",
-                             "--beta", "0", "--force", "1", "--param", "omega", "--from", "0.75",
-                             "--to", "2.5"});
+  const Result r =
+      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
+                   "--force", "1", "--param", "omega", "--from", "0.75", "--to", "2.5"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
   auto col = [&](const std::string& name) {
@@ -89,6 +89,7 @@ TEST(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
       {{"--force", "1", "--param", "omega", "--from", "1", "--to", "1"}, "--to"},
       {{"--omega", "2"}, "--omega"},
       {{"--force", "1", "--param", "mu_s"}, "--param"},
+      {{"--force", "1", "--restart", "plots", "--point", "PD1"}, "--restart"},
   };
   for (const auto& c : cases) {
     const std::string dir = TempDir();
@@ -97,6 +98,50 @@ TEST(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
     EXPECT_TRUE(tu::Contains(r.err, c.second)) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(tu::Exists(dir + "/out")) << c.second;
+  }
+}
+
+// --max_time stops the continuation itself (Palc's cancel hook), not only
+// the phases around it: the files are written with status cancelled, exit 1.
+// The whole run takes 0.57 s here with exit 0 (ForcedApp.DenHartog...).
+TEST(ForcedApp, MaxTimeStopsAForcedRunWithStatusCancelled) {
+  const std::string dir = TempDir();
+  const Result r =
+      RunApp(dir, {"--law",  "coulomb", "--mu_s", "0.3",     "--mu_k",     "0.3",     "--v",
+                   "0",      "--beta",  "0",      "--force", "1",          "--param", "omega",
+                   "--from", "0.75",    "--to",   "2.5",     "--max_time", "0.1"});
+  EXPECT_EQ(r.outcome.code, 1) << r.err;
+  EXPECT_LT(r.outcome.seconds, 1.0);
+  const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  EXPECT_TRUE(tu::Contains(t.meta.at("status"), "cancelled (time limit")) << t.meta.at("status");
+  EXPECT_FALSE(t.rows.empty());
+}
+
+// special_points.tsv: each located point has the branch.tsv row it sits on
+// (pt), its label with an index per type (lab) and a description; the floor
+// scene of forced_sliding_test has two crossing-sliding points.
+TEST(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
+  const std::string dir = TempDir();
+  const Result r =
+      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.4", "--mu_k", "0.25", "--v", "0", "--beta",
+                   "0.05", "--force", "0.5", "--param", "omega", "--from", "0.5", "--to", "2.5"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
+  auto col = [](const tu::Tsv& t, const std::string& name) {
+    return static_cast<size_t>(std::find(t.columns.begin(), t.columns.end(), name) -
+                               t.columns.begin());
+  };
+  ASSERT_EQ(sp.rows.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    const auto& row = sp.rows[i];
+    EXPECT_EQ(row[col(sp, "lab")], "CR" + std::to_string(i + 1));
+    EXPECT_TRUE(tu::Contains(row[col(sp, "description")], "crossing-sliding"));
+    const size_t pt = std::stoul(row[col(sp, "pt")]);
+    ASSERT_GE(pt, 1u);
+    ASSERT_LE(pt, b.rows.size());
+    EXPECT_EQ(b.rows[pt - 1][col(b, "omega")], row[col(sp, "omega")]);
+    EXPECT_EQ(b.rows[pt - 1][col(b, "pt")], row[col(sp, "pt")]);
   }
 }
 

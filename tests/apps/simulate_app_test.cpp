@@ -1,5 +1,6 @@
-// End-to-end tests of the built ss_simulate: output format, and bad input
-// rejected with exit code 2, one line on stderr, and no output file.
+// End-to-end tests of the built ss_simulate: output format (--out DIR holds
+// trajectory.tsv), and bad input rejected with exit code 2, one line on
+// stderr, and no output file.
 #include <dirent.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -43,9 +44,10 @@ class SimulateApp : public stickslip::testing_util::AppTest {
     }
   };
 
-  // Runs ss_simulate with the arguments (each quoted for the shell).
+  // Runs ss_simulate with the arguments (each quoted for the shell), without
+  // figures (tests/io/figure_format_test.cpp draws them).
   Result Run(const std::vector<std::string>& args) {
-    std::string words;
+    std::string words = " --no_plots";
     for (const auto& a : args) words += " " + ShellQuoted(a);
     Result r;
     r.code = RunApp(STICKSLIP_BIN_DIR, "ss_simulate", words);
@@ -54,10 +56,12 @@ class SimulateApp : public stickslip::testing_util::AppTest {
   }
 
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
+  // The trajectory written into the output directory `out`.
+  static std::string Traj(const std::string& out) { return ReadFile(out + "/trajectory.tsv"); }
 
   // Expects a rejection: exit 2, one stderr line naming `part`, no output.
   void ExpectRejected(std::vector<std::string> args, const std::string& part) {
-    const std::string out = Path("rejected.tsv");
+    const std::string out = Path("rejected");
     args.push_back("--out");
     args.push_back(out);
     const Result r = Run(args);
@@ -100,8 +104,9 @@ TEST_F(SimulateApp, HelpExitsZeroAndListsOptions) {
   const Result r = Run({"--help"});
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.err, "");
-  for (const char* opt : {"--study", "--law", "--beta", "--v ", "--mu_s", "--mass", "--rtol",
-                          "--method", "--x0", "--xdot0", "--t_end", "--dt", "--out", "--plot"})
+  for (const char* opt :
+       {"--study", "--law", "--beta", "--v ", "--mu_s", "--mass", "--rtol", "--method", "--x0",
+        "--xdot0", "--t_end", "--dt", "--out", "--no_plots", "--force", "--omega", "--section"})
     EXPECT_TRUE(Contains(r.out, opt));
 }
 
@@ -115,11 +120,11 @@ TEST_F(SimulateApp, VersionAndShortHelp) {
 }
 
 TEST_F(SimulateApp, WritesTrajectoryWithExactStick) {
-  const std::string out = Path("seed.tsv");
+  const std::string out = Path("seed");
   const Result r = Run({"--study", kStudies + "/seed.ini", "--t_end", "30", "--out", out});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  const std::string text = ReadFile(out);
+  const std::string text = Traj(out);
   const Tsv tsv = ReadTsv(text);
   EXPECT_EQ(tsv.columns, (std::vector<std::string>{"t", "x", "xdot", "mode"}));
   EXPECT_EQ(text.rfind("# tool: ss_simulate ", 0), 0u);
@@ -153,12 +158,12 @@ TEST_F(SimulateApp, WritesTrajectoryWithExactStick) {
 
 TEST_F(SimulateApp, CommandLineOverridesStudy) {
   WriteFile(Path("s.ini"), "# test study\nlaw = cubic\nv = 0.3\n\n[simulate]\nxdot0 = 0.3\n");
-  const std::string out = Path("o.tsv");
+  const std::string out = Path("o");
   const Result r = Run(
       {"--study", Path("s.ini"), "--v", "0.2", "--xdot0", "0.2", "--t_end", "20", "--out", out});
   ASSERT_EQ(r.code, 0) << r.err;
   int stick = 0;
-  for (const Row& row : ReadRows(ReadFile(out))) {
+  for (const Row& row : ReadRows(Traj(out))) {
     if (row.mode == "stick") {
       ++stick;
       EXPECT_EQ(row.xdot, 0.2);
@@ -169,32 +174,33 @@ TEST_F(SimulateApp, CommandLineOverridesStudy) {
 
 TEST_F(SimulateApp, StudySectionsOfOtherAppsAreSkipped) {
   WriteFile(Path("s.ini"), "v = 0.25\n[continue]\nparam = v\nfrom = 0.05\n[simulate]\nt_end = 5\n");
-  const std::string out = Path("o.tsv");
+  const std::string out = Path("o");
   const Result r = Run({"--study", Path("s.ini"), "--out", out});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NEAR(ReadRows(ReadFile(out)).back().t, 5.0, 1e-9);
+  EXPECT_NEAR(ReadRows(Traj(out)).back().t, 5.0, 1e-9);
 }
 
 TEST_F(SimulateApp, AllStudiesRun) {
-  for (const char* study : {"seed", "seed_beta", "stribeck", "coulomb", "leine"}) {
-    const std::string out = Path(std::string(study) + ".tsv");
+  for (const char* study : {"seed", "seed_beta", "stribeck", "coulomb", "leine", "den_hartog",
+                            "floor_static", "seed_forced", "stribeck_forced"}) {
+    const std::string out = Path(study);
     const Result r =
         Run({"--study", kStudies + "/" + study + ".ini", "--t_end", "20", "--out", out});
     EXPECT_EQ(r.code, 0) << study << ": " << r.err;
-    EXPECT_TRUE(Exists(out)) << study;
+    EXPECT_TRUE(Exists(out + "/trajectory.tsv")) << study;
   }
 }
 
 TEST_F(SimulateApp, PhysicalInputsAtUnitScalesMatchTheSeedSet) {
   // M = K = g = 1: the physical numbers are the dimensionless ones.
-  const Result a = Run({"--t_end", "10", "--out", Path("a.tsv")});
+  const Result a = Run({"--t_end", "10", "--out", Path("a")});
   const Result b =
       Run({"--mass", "1", "--stiffness", "1", "--gravity", "1", "--damping", "0.1", "--belt_speed",
-           "0.25", "--speed_m", "0.5", "--t_end", "10", "--out", Path("b.tsv")});
+           "0.25", "--speed_m", "0.5", "--t_end", "10", "--out", Path("b")});
   ASSERT_EQ(a.code, 0) << a.err;
   ASSERT_EQ(b.code, 0) << b.err;
   // The same rows; b also carries the physical copies (t_s, x_m, xdot_m_s) and scales.
-  const Tsv ta = ReadTsv(ReadFile(Path("a.tsv"))), tb = ReadTsv(ReadFile(Path("b.tsv")));
+  const Tsv ta = ReadTsv(Traj(Path("a"))), tb = ReadTsv(Traj(Path("b")));
   ASSERT_EQ(ta.rows.size(), tb.rows.size());
   ASSERT_GT(ta.rows.size(), 100u);
   for (size_t i = 0; i < ta.rows.size(); ++i)
@@ -299,15 +305,23 @@ TEST_F(SimulateApp, RejectsUnwritableOutputDirectory) {
   EXPECT_EQ(ReadFile(Path("plain")), "x");
 }
 
-TEST_F(SimulateApp, RequiresOut) {
-  const Result r = Run({"--t_end", "1"});
-  EXPECT_EQ(r.code, 2);
-  EXPECT_TRUE(Contains(r.err, "--out"));
+// Issue 19 item 4: --out names a directory, as in every app.
+TEST_F(SimulateApp, OutIsADirectory) {
+  const Result r = Run({"--t_end", "1", "--out", Path("o")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(Exists(Path("o/trajectory.tsv")));
+  EXPECT_TRUE(Exists(Path("o/trajectory.gp")));
+  WriteFile(Path("file"), "x");
+  const Result r2 = Run({"--t_end", "1", "--out", Path("file")});
+  EXPECT_EQ(r2.code, 2);
+  EXPECT_TRUE(Contains(r2.err, "--out")) << r2.err;
+  EXPECT_EQ(ReadFile(Path("file")), "x");
 }
 
 TEST_F(SimulateApp, LeavesExistingOutputUnchangedOnBadInput) {
-  const std::string out = Path("keep.tsv");
-  WriteFile(out, "precious\n");
+  const std::string out = Path("keep");
+  ASSERT_EQ(::mkdir(out.c_str(), 0755), 0);
+  WriteFile(out + "/trajectory.tsv", "precious\n");
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--beta", "nan"},
                                               {"--mu_m", "0.5"},
                                               {"--gamma", "1"},
@@ -317,14 +331,15 @@ TEST_F(SimulateApp, LeavesExistingOutputUnchangedOnBadInput) {
     args.push_back(out);
     const Result r = Run(args);
     EXPECT_EQ(r.code, 2) << bad[0];
-    EXPECT_EQ(ReadFile(out), "precious\n") << bad[0];
+    EXPECT_EQ(Traj(out), "precious\n") << bad[0];
   }
 }
 
 TEST_F(SimulateApp, IntegratorFailureWritesThePartialTrajectory) {
   // 10 CVODE steps cannot cover an output interval of 50 at tight tolerance.
-  const std::string out = Path("fail.tsv");
-  WriteFile(out, "old\n");
+  const std::string out = Path("fail");
+  ASSERT_EQ(::mkdir(out.c_str(), 0755), 0);
+  WriteFile(out + "/trajectory.tsv", "old\n");
   const Result r = Run({"--integrator", "cvode", "--xdot0", "0.125", "--max_steps", "10", "--dt",
                         "50", "--t_end", "100", "--out", out});
   EXPECT_EQ(r.code, 1);
@@ -333,7 +348,7 @@ TEST_F(SimulateApp, IntegratorFailureWritesThePartialTrajectory) {
   EXPECT_TRUE(Contains(lines[0], "at t = "));
   EXPECT_TRUE(Contains(lines[0], "slip-below"));
   // The rows so far, marked partial with where it stopped (as every app).
-  const std::string data = ReadFile(out);
+  const std::string data = Traj(out);
   EXPECT_TRUE(Contains(data, "# status: partial (")) << data;
   EXPECT_TRUE(Contains(data, "at t = ")) << data;
   EXPECT_TRUE(Contains(data, "\n0\t")) << data;  // the first row, at t = 0
@@ -341,15 +356,16 @@ TEST_F(SimulateApp, IntegratorFailureWritesThePartialTrajectory) {
 
 TEST_F(SimulateApp, TaylorFailureWritesThePartialTrajectory) {
   // x' = 1e200: the cubic law's Taylor coefficients overflow at once.
-  const std::string out = Path("fail.tsv");
-  WriteFile(out, "old\n");
+  const std::string out = Path("fail");
+  ASSERT_EQ(::mkdir(out.c_str(), 0755), 0);
+  WriteFile(out + "/trajectory.tsv", "old\n");
   const Result r = Run({"--xdot0", "1e200", "--t_end", "10", "--out", out});
   EXPECT_EQ(r.code, 1);
   const auto lines = r.err_lines();
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_TRUE(Contains(lines[0], "non-finite Taylor coefficients")) << lines[0];
   EXPECT_TRUE(Contains(lines[0], "slip-above")) << lines[0];
-  const std::string data = ReadFile(out);
+  const std::string data = Traj(out);
   EXPECT_TRUE(Contains(data, "# status: partial (")) << data;
   EXPECT_FALSE(Contains(data, "nan")) << data;
   EXPECT_FALSE(Contains(data, "inf")) << data;
@@ -360,7 +376,7 @@ TEST_F(SimulateApp, StartsNextToTheBeltSpeedSucceed) {
   for (const char* xdot0 : {"0.25000000000000006", "0.24999999", "0.24999999999999997"}) {
     for (const char* in : {"taylor", "cvode"}) {
       const Result r =
-          Run({"--integrator", in, "--xdot0", xdot0, "--t_end", "20", "--out", Path("a.tsv")});
+          Run({"--integrator", in, "--xdot0", xdot0, "--t_end", "20", "--out", Path("a")});
       EXPECT_EQ(r.code, 0) << in << " --xdot0 " << xdot0 << ": " << r.err;
     }
   }
@@ -369,24 +385,24 @@ TEST_F(SimulateApp, StartsNextToTheBeltSpeedSucceed) {
 // Issue 15, item 17: --t_end 1e10 reaches 1e10 (it stopped at 1e9 and said
 // nothing). Above the Hopf point the run settles on steady sliding.
 TEST_F(SimulateApp, RunsToTEndPastOneBillion) {
-  const std::string out = Path("long.tsv");
+  const std::string out = Path("long");
   const Result r = Run({"--v", "0.45", "--t_end", "1e10", "--dt", "1e8", "--out", out});
   ASSERT_EQ(r.code, 0) << r.err;
-  const std::string text = ReadFile(out);
+  const std::string text = Traj(out);
   const size_t last = text.rfind('\n', text.size() - 2);
   ASSERT_NE(last, std::string::npos);
   EXPECT_EQ(std::stod(text.substr(last + 1)), 1e10) << text.substr(last + 1);
 }
 
 TEST_F(SimulateApp, UnknownIntegratorIsRefused) {
-  const Result r = Run({"--integrator", "rk4", "--out", Path("a.tsv")});
+  const Result r = Run({"--integrator", "rk4", "--out", Path("a")});
   EXPECT_EQ(r.code, 2);
   EXPECT_TRUE(Contains(r.err, "rk4")) << r.err;
   EXPECT_TRUE(Contains(r.err, "--integrator")) << r.err;
 }
 
 TEST_F(SimulateApp, NoTemporaryFilesLeftBehind) {
-  const Result r = Run({"--t_end", "2", "--out", Path("a.tsv")});
+  const Result r = Run({"--t_end", "2", "--out", Path("a")});
   ASSERT_EQ(r.code, 0) << r.err;
   DIR* d = ::opendir(dir_.c_str());
   ASSERT_NE(d, nullptr);

@@ -272,13 +272,13 @@ TEST_F(Skeleton, OutputsGetTheUmaskMode) {
   EXPECT_EQ(Run(kChart, With(kChartArgs, {"--out", Path("w/c")}), l).code, 3) << err_;
   EXPECT_EQ(Run(kBasin, With(kBasinArgs, {"--out", Path("w/b")}), l).code, 3) << err_;
   EXPECT_EQ(Run(kContinue, {"--no_estimates", "--out", Path("w/n")}, l).code, 3) << err_;
-  EXPECT_EQ(Run(kSimulate, {"--t_end", "1", "--out", Path("w/s.tsv"), "--plot"}, l).code, 3);
+  EXPECT_EQ(Run(kSimulate, {"--t_end", "1", "--out", Path("w/s")}, l).code, 3);
   if (HaveGnuplot()) {  // and a figure
-    EXPECT_EQ(Run(kSimulate, {"--t_end", "1", "--out", Path("w/p.tsv"), "--plot"}).code, 0);
+    EXPECT_EQ(Run(kSimulate, {"--t_end", "1", "--out", Path("w/p")}).code, 0);
   }
   ::umask(old);
   int files = 0;
-  for (const std::string sub : {"w", "w/c", "w/b", "w/n"})
+  for (const std::string sub : {"w", "w/c", "w/b", "w/n", "w/s", "w/p"})
     for (const auto& name : Listing(Path(sub))) {
       struct stat st;
       ASSERT_EQ(::lstat(Path(sub + "/" + name).c_str(), &st), 0);

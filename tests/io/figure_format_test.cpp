@@ -95,10 +95,10 @@ TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
     EXPECT_EQ(cli::FigureError(out + "/bs/basin_stability." + ext), "");
     EXPECT_FALSE(Exists(out + "/bs/basin_stability.png"));
     ASSERT_EQ(Run("ss_simulate",
-                  seed + " --t_end 20 --plot --format " + ext + " --out " + out + "/s.tsv"),
+                  seed + " --t_end 20 --format " + ext + " --out " + out + "/s"),
               0)
         << err_;
-    EXPECT_EQ(cli::FigureError(out + "/s." + ext), "");
+    EXPECT_EQ(cli::FigureError(out + "/s/trajectory." + ext), "");
     ASSERT_EQ(Run("ss_chart", "--study " + kStudies + "/seed_chart.ini --format " + ext +
                                   " --out " + out + "/h"),
               0)
@@ -117,7 +117,7 @@ TEST_F(FigureFormatTest, BadFormatExits2NamingTheOption) {
       {"ss_continue", seed + " --out " + dir_ + "/o"},
       {"ss_basin", seed + " --out " + dir_ + "/o"},
       {"ss_basin", "--study " + kStudies + "/stribeck_basin_stability.ini --out " + dir_ + "/o"},
-      {"ss_simulate", seed + " --plot --out " + dir_ + "/o.tsv"},
+      {"ss_simulate", seed + " --out " + dir_ + "/o"},
       {"ss_chart", "--study " + kStudies + "/seed_chart.ini --out " + dir_ + "/o"}};
   for (const auto& [app, args] : runs) {
     EXPECT_EQ(Run(app, args + " --format jpg"), 2) << app;

@@ -1,16 +1,20 @@
 // Continuation of the forced oscillator's periodic orbits in one parameter
-// (issue 20, item 4): pseudo-arclength (palc.hpp) on the stroboscopic residual
-// P^m(z; p) - z = 0 in (x, x', p), rows with the orbit's data, folds (LP) and
-// period doublings (PD) where a multiplier crosses +1 or -1, located along
-// the branch by bisection.
+// (issue 20, items 3-4): pseudo-arclength (palc.hpp) on the stroboscopic
+// residual P^m(z; p) - z = 0 in (x, x', p), rows with the orbit's data; folds
+// (LP), period doublings (PD) and Neimark-Sacker points (NS) where multipliers
+// cross +1, -1 or the unit circle, and the sliding bifurcations where the
+// orbit's stick structure changes (GR, SW, AD, CR: di Bernardo, Kowalczyk &
+// Nordmark, Physica D 170, 2002; Kowalczyk & Piiroinen, Physica D 237, 2008),
+// located by bisection. Where the stroboscopic map jumps (a stick phase of
+// finite length born, mu_s > mu_k) the branch goes on from the orbit beyond.
 #pragma once
 
 #include <complex>
 #include <string>
 #include <vector>
 
-#include "stickslip/forced/orbit.hpp"
 #include "stickslip/continuation/palc.hpp"
+#include "stickslip/forced/orbit.hpp"
 
 namespace stickslip {
 
@@ -20,8 +24,19 @@ const char* ForcedAxisName(ForcedAxis a);  // "omega", "force", "v", "beta"
 double GetAxis(const ForcedParams& p, ForcedAxis a);
 void SetAxis(ForcedParams& p, ForcedAxis a, double value);
 
-enum class ForcedLabel { kNone, kLP, kPD };
-const char* ForcedLabelName(ForcedLabel l);  // "", "LP", "PD"
+/// Special points. The sliding ones (docs/theory.md, forced section), by the
+/// change of (sticks, crossings) per orbit period across the point:
+///   GR grazing-sliding: a slip phase touches x' = v tangentially (x'' = 0)
+///      inside the stick band, a stick phase is born (sticks +-1);
+///   SW switching-sliding: the slip leaving a stick phase reaches x' = v and
+///      crosses it (crossings +-1, sticks unchanged);
+///   AD adding-sliding: the stick force touches the band's edge tangentially,
+///      a stick phase splits in two around a short slip (sticks +-1);
+///   CR crossing-sliding: a crossing of x' = v reaches the band's edge and
+///      becomes a stick phase (sticks +-1, crossings -+1);
+///   SL any other change of the stick structure (several at once).
+enum class ForcedLabel { kNone, kLP, kPD, kNS, kGR, kSW, kAD, kCR, kSL };
+const char* ForcedLabelName(ForcedLabel l);  // "", "LP", "PD", "NS", "GR", ...
 
 struct ForcedBranchRow {
   double p = 0;
@@ -31,6 +46,7 @@ struct ForcedBranchRow {
   std::complex<double> multipliers[2];
   bool stable = false;
   ForcedLabel label = ForcedLabel::kNone;  ///< special points only
+  std::string description;                 ///< special points only: one line
 };
 
 enum class ForcedBranchStatus {
@@ -39,7 +55,9 @@ enum class ForcedBranchStatus {
   kStepTooSmall,  ///< the corrector failed below ds_min (message says why)
   kStartFailed,   ///< no orbit at p = from near the guess
   kMaxPoints,
-  kClosed,  ///< the branch came back to its start
+  kClosed,     ///< the branch came back to its start
+  kCancelled,  ///< palc.cancelled() returned true (a signal, a time limit)
+  kLeftRange,  ///< the branch turned back and passed p = from
 };
 const char* ForcedBranchStatusName(ForcedBranchStatus s);
 
@@ -49,19 +67,24 @@ struct ForcedBranchOptions {
   PalcOptions palc;            ///< on (x, x', p)
   double max_amplitude = 1e3;  ///< rows stop beyond |x| = max_amplitude
   double locate_tol = 1e-12;   ///< special points: the bracket on the chord, relative
+  /// Where the corrector fails at a jump of the stroboscopic map: at most this
+  /// many restarts from the orbit beyond the located sliding point.
+  int max_jumps = 50;
 };
 
 struct ForcedBranch {
   ForcedBranchStatus status = ForcedBranchStatus::kStartFailed;
   std::string message;
   std::vector<ForcedBranchRow> rows;
-  std::vector<ForcedBranchRow> special;  ///< LP and PD, located
+  std::vector<ForcedBranchRow> special;  ///< LP, PD, NS and sliding points, located
+  int jumps = 0;                         ///< restarts across jumps of the map
   int evaluations = 0;
   double seconds = 0;
 };
 
 /// Traces the branch through the orbit near (x_guess, xdot_guess) at p = from
 /// toward p = to. Throws InvalidArgument on invalid parameters or options.
+/// options.palc.cancelled (if set) is polled before every correction.
 ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
                             double x_guess, double xdot_guess, const ForcedBranchOptions& options);
 

@@ -1,0 +1,40 @@
+set terminal pngcairo size 1400,650 enhanced font 'Sans,12'
+set encoding utf8
+set datafile separator '\t'
+set datafile columnheaders
+set grid lc rgb '#e0e0e0' lw 0.5
+set border lw 1
+set style line 1 lc rgb '#0072b2' lw 2 dt 1
+set style line 2 lc rgb '#0072b2' lw 2 dt 2
+set style line 3 lc rgb '#d55e00' lw 2 dt 1
+set style line 4 lc rgb '#d55e00' lw 2 dt 2
+set style line 5 lc rgb '#606060' lw 2 dt 1
+set style line 6 lc rgb '#606060' lw 2 dt 2
+set style line 7 lc rgb '#000000' lw 1 dt 3
+set style line 8 lc rgb '#000000' pt 7 ps 1.0
+set style line 9 lc rgb '#000000' lw 2.5 dt 1
+set style line 10 lc rgb '#009e73' lw 2 dt 2
+set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
+set bmargin 7
+set style textbox opaque noborder margins 1,1
+set output "trajectory.png"
+set multiplot layout 1,2 title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0, force = 0.3, omega = 0.6"
+set xlabel 'displacement x'
+set ylabel 'velocity dx/dt'
+set title 'phase portrait'
+plot 'trajectory.tsv' using 2:3 with lines ls 1 lw 1.5 title 'trajectory', \
+     'trajectory.tsv' using 2:(strcol(4) eq 'stick' ? $3 : NaN) with lines ls 9 title 'sticking (dx/dt = v)'
+set xlabel 'time t'
+set ylabel 'x, dx/dt'
+set title 'time series'
+plot 'trajectory.tsv' using 1:2 with lines ls 1 lw 1.5 title 'displacement x', \
+     'trajectory.tsv' using 1:3 with lines ls 3 lw 1.5 title 'velocity dx/dt'
+unset multiplot
+set terminal pngcairo size 950,750 enhanced font 'Sans,12'
+set output "section.png"
+set key off
+set title "stroboscopic section (cos Ωt = 1)\n" . "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0, force = 0.3, omega = 0.6"
+set xlabel 'displacement x'
+set ylabel 'velocity dx/dt'
+plot 'section.tsv' using 4:5 with points pt 7 ps 0.6 lc rgb '#1f77b4'

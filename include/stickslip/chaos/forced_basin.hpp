@@ -1,0 +1,63 @@
+// Basins of attraction on the stroboscopic section of the forced oscillator
+// (issue 21 item 4): a grid of starts (x, x') at forcing phase 0, each
+// iterated past a transient and classified by the attractor it reaches:
+// a periodic orbit (period m forcing periods, its stick count), the stuck
+// rest (v = 0, held for good), a chaotic attractor (largest Lyapunov
+// exponent above zero by more than its error), or undecided (neither
+// periodic within max_period nor chaotic: quasi-periodic or slow). Periodic
+// attractors are told apart by their section points. Starts run in parallel
+// (threads); no exception crosses a thread.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/chaos/lyapunov.hpp"
+
+namespace stickslip {
+
+enum class AttractorKind { kPeriodic, kRest, kChaotic, kUndecided, kUnbounded, kFailed };
+const char* AttractorKindName(AttractorKind k);  // "periodic", "rest", "chaotic", ...
+
+struct Attractor {
+  AttractorKind kind = AttractorKind::kUndecided;
+  int m = 0;               ///< period in forcing periods (periodic)
+  int sticks = 0;          ///< stick phases per m periods (periodic), per period rounded (chaotic)
+  double x = 0, xdot = 0;  ///< a representative section point (smallest x of the cycle)
+  double lyapunov = 0;
+  int starts = 0;  ///< grid starts that reach it
+};
+
+struct ForcedBasinOptions {
+  int nx = 41, ny = 41;
+  double x_lo = -1.5, x_hi = 1.5, xdot_lo = -1.5, xdot_hi = 1.5;
+  LyapunovOptions iterate;  ///< transient, keep (the classification window), flow
+  int max_period = 16;      ///< largest m looked for
+  int threads = 2;
+  double max_amplitude = 50;
+  std::function<bool()> cancelled;                    ///< polled by the calling thread
+  std::function<void(int done, int total)> progress;  ///< called on the calling thread
+  ForcedBasinOptions() { iterate.transient = 300, iterate.keep = 64, iterate.align = 20; }
+  std::string ValidationError() const;
+};
+
+struct ForcedBasinStart {
+  double x = 0, xdot = 0;
+  int attractor = -1;  ///< index into ForcedBasins::attractors; -1 not done
+  double lyapunov = 0;
+  std::string message;  ///< why, for kFailed
+};
+
+struct ForcedBasins {
+  std::vector<ForcedBasinStart> starts;  ///< row-major: x fastest
+  std::vector<Attractor> attractors;
+  bool cancelled = false;
+  int failed = 0;
+  double seconds = 0;
+};
+
+/// Throws InvalidArgument if the options are not valid.
+ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOptions& options);
+
+}  // namespace stickslip

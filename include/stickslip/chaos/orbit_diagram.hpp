@@ -1,0 +1,55 @@
+// The orbit diagram of the forced oscillator (issue 21 item 1): for each
+// value of one parameter, the stroboscopic map's section points after a
+// transient, the stick counts and exit phases, and the largest Lyapunov
+// exponent (chaos/lyapunov.hpp). Swept up and down, each value starting from
+// the last state of the one before, so that hysteresis shows. The two
+// directions run on their own threads; no exception crosses a thread (a
+// failure is the value's status).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/chaos/lyapunov.hpp"
+#include "stickslip/forced/branch.hpp"
+
+namespace stickslip {
+
+enum class SweepDirection { kUp, kDown };
+const char* SweepDirectionName(SweepDirection d);  // "up", "down"
+
+struct OrbitDiagramOptions {
+  ForcedAxis axis = ForcedAxis::kOmega;
+  double from = 0.5, to = 2.5;
+  int n = 200;  ///< parameter values, from..to inclusive
+  bool up = true, down = true;
+  LyapunovOptions iterate;
+  /// A value whose |x| or |x'| passes this is kDiverged; the next starts from rest.
+  double max_amplitude = 50;
+  std::function<bool()> cancelled;                    ///< polled by the calling thread
+  std::function<void(int done, int total)> progress;  ///< called on the calling thread
+  /// Empty if valid, else one line naming the offending value.
+  std::string ValidationError() const;
+};
+
+/// One parameter value of one sweep.
+struct DiagramColumn {
+  SweepDirection direction = SweepDirection::kUp;
+  double value = 0;
+  StroboscopicRun run;
+  bool computed = false;  ///< false: not reached (cancelled)
+};
+
+struct OrbitDiagram {
+  std::vector<DiagramColumn> columns;  ///< the up sweep, then the down sweep
+  int failed = 0;                      ///< computed values whose status is not kDone
+  bool cancelled = false;
+  double seconds = 0;  ///< wall time
+  long steps = 0;
+};
+
+/// Throws InvalidArgument if the options or the model at either end are not valid.
+OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOptions& options);
+
+}  // namespace stickslip

@@ -1,0 +1,56 @@
+// Every periodic orbit of the forced oscillator at one parameter point
+// (issue 20, item 2), as FindPeriodicOrbits (orbits/orbit_scan.hpp) does for
+// the belt: for each period multiple m = 1..max_m, Newton on the stroboscopic
+// map P^m from a grid of starts at phase 0, and on the exit-phase map (the
+// circle map t_e -> t' of design.md section 5) from every bracket of
+// t'_s(t_e) - t_e - m T found by sampling the exit phase, s = 1..max_sticks
+// exits. Found orbits are reduced to their least period and deduplicated by
+// their stroboscopic points (an orbit of multiple m has m of them).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/forced/orbit.hpp"
+
+namespace stickslip {
+
+struct ForcedScanOptions {
+  ForcedOrbitOptions orbit;
+  int max_m = 4;          ///< period multiples 1..max_m
+  int max_sticks = 4;     ///< exit-phase map: stick phases per orbit 1..max_sticks
+  int grid = 5;           ///< stroboscopic starts: grid x grid over the box
+  int exit_samples = 48;  ///< exit phases sampled per forcing period and exit side
+  /// Half-width of the box of stroboscopic starts (x in [-r, r], x' in
+  /// [-r max(1, Omega), ...]); 0: r = A / max(|1 - Omega^2|, 2 beta Omega, 0.2) + mu_s + v.
+  double radius = 0;
+  std::function<bool()> cancelled;  ///< polled between shots; empty: never
+  /// Empty if valid, else one line naming the offending value.
+  std::string ValidationError() const;
+};
+
+enum class ForcedScanStatus {
+  kOk,
+  kCancelled,  ///< cancelled() returned true; the orbits found so far are kept
+};
+const char* ForcedScanStatusName(ForcedScanStatus s);
+
+struct ForcedScanOrbit {
+  ForcedOrbit orbit;           ///< least period m, multipliers, stability, sticks
+  std::vector<Vec2> points;    ///< its m stroboscopic points (x, x') at t = 0, T, ...
+  bool from_exit_map = false;  ///< first found on the exit-phase map (else by strobe shooting)
+};
+
+struct ForcedOrbits {
+  ForcedScanStatus status = ForcedScanStatus::kOk;
+  std::vector<ForcedScanOrbit> orbits;  ///< by m, then by x_max
+  int shots = 0;                        ///< Newton solves started
+  int converged = 0;                    ///< of them converged (before deduplication)
+  bool ok() const { return status == ForcedScanStatus::kOk; }
+};
+
+/// Throws InvalidArgument if the options are not valid.
+ForcedOrbits FindForcedOrbits(const ForcedModel& model, const ForcedScanOptions& options);
+
+}  // namespace stickslip

@@ -1,0 +1,344 @@
+// The forced oscillator in the Python module (issue 20, item 6):
+// x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
+// ForcedAxis and ForcedSection enums, and simulate_forced, forced_orbit,
+// find_forced_orbits and continue_forced, each computed without the GIL with
+// Ctrl-C polled by the library's cancel hooks (py_common.hpp, Interrupt).
+#include <pybind11/complex.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdint>
+
+#include "py_common.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/forced/simulate.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
+
+ForcedOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
+  ForcedOptions o;  // the forced flow's own defaults, 1e-12
+  if (rtol) o.rtol = *rtol;
+  if (atol) o.atol = *atol;
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  return o;
+}
+
+py::array Modes(const std::vector<std::uint8_t>& codes) {
+  py::array names = ReadOnlyStrings(
+      {ModeName(Mode::kSlipBelow), ModeName(Mode::kStick), ModeName(Mode::kSlipAbove)});
+  py::array out = names.attr("__getitem__")(ReadOnly(codes));
+  out.attr("setflags")(py::arg("write") = false);
+  return out;
+}
+
+struct PyForcedTrajectory {
+  py::array t, x, xdot, mode, phase;  // every dt and every switch
+  py::array section_t, section_x, section_xdot, section_phase;
+  ForcedSection section = ForcedSection::kStrobe;
+  int sticks = 0, exits = 0, crossings = 0;
+  long steps = 0;
+  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+};
+
+struct PyForcedOrbit {
+  int m = 1, sticks = 0, crossings = 0, iterations = 0;
+  double x0 = 0, xdot0 = 0, period = 0;
+  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  py::array multipliers, monodromy, points;
+  bool stable = false, from_exit_map = false;
+};
+
+PyForcedOrbit MakeOrbit(const ForcedOrbit& o, const std::vector<Vec2>& pts, bool exit_map) {
+  PyForcedOrbit r;
+  r.m = o.m, r.sticks = o.sticks, r.crossings = o.crossings, r.iterations = o.iterations;
+  r.x0 = o.start.x, r.xdot0 = o.start.xdot, r.period = o.period;
+  r.x_min = o.extremes.x_min, r.x_max = o.extremes.x_max;
+  r.xdot_min = o.extremes.xdot_min, r.xdot_max = o.extremes.xdot_max;
+  r.stable = o.stable, r.from_exit_map = exit_map;
+  r.multipliers = ReadOnly(std::vector<std::complex<double>>{o.multipliers[0], o.multipliers[1]});
+  py::array_t<double> mono({2, 2}), p({static_cast<py::ssize_t>(pts.size()), py::ssize_t(2)});
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) mono.mutable_at(i, j) = o.monodromy(i, j);
+  for (size_t i = 0; i < pts.size(); ++i)
+    p.mutable_at(i, 0) = pts[i][0], p.mutable_at(i, 1) = pts[i][1];
+  mono.attr("setflags")(py::arg("write") = false);
+  p.attr("setflags")(py::arg("write") = false);
+  r.monodromy = mono, r.points = p;
+  return r;
+}
+
+PyForcedTrajectory Simulate(const ForcedParams& p, double x0, std::optional<double> xdot0,
+                            double t_end, double dt, ForcedSection section, long max_rows,
+                            std::optional<double> rtol, std::optional<double> atol) {
+  const ForcedModel model(p);  // throws InvalidArgument naming the value
+  ForcedSimulationOptions o;
+  o.flow = FlowOf(rtol, atol), o.t_end = t_end, o.dt = dt, o.section = section;
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  if (!std::isfinite(x0) || (xdot0 && !std::isfinite(*xdot0)))
+    throw InvalidArgument("x0, xdot0 must be finite");
+  if (!(std::floor(t_end / dt) + 1 <= static_cast<double>(max_rows)))
+    throw InvalidArgument("t_end / dt = " + Num(t_end / dt) + " gives more rows than max_rows = " +
+                          std::to_string(max_rows) + " (raise max_rows or dt)");
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  ForcedSimulation r;
+  {
+    py::gil_scoped_release nogil;
+    r = SimulateForced(model, ForcedStart(model, 0, x0, xdot0.value_or(p.base.v)), o);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (r.status == ForcedSimulationStatus::kFailed) RaiseNumerical(r.message);
+  std::vector<double> t, x, xd, ph, st, sx, sxd, sph;
+  std::vector<std::uint8_t> mode;
+  auto phase = [&](double tt) {
+    const double a = std::fmod(p.omega * tt, 2 * M_PI);
+    return a < 0 ? a + 2 * M_PI : a;
+  };
+  for (const ForcedPoint& q : r.rows) {
+    t.push_back(q.t), x.push_back(q.x), xd.push_back(q.xdot), ph.push_back(phase(q.t));
+    mode.push_back(static_cast<std::uint8_t>(q.mode));
+  }
+  for (const ForcedSectionPoint& q : r.section)
+    st.push_back(q.p.t), sx.push_back(q.p.x), sxd.push_back(q.p.xdot), sph.push_back(phase(q.p.t));
+  PyForcedTrajectory out;
+  out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xd), out.phase = ReadOnly(ph);
+  out.mode = Modes(mode);
+  out.section_t = ReadOnly(st), out.section_x = ReadOnly(sx), out.section_xdot = ReadOnly(sxd);
+  out.section_phase = ReadOnly(sph);
+  out.section = section, out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings;
+  out.steps = r.steps;
+  out.x_min = r.extremes.x_min, out.x_max = r.extremes.x_max;
+  out.xdot_min = r.extremes.xdot_min, out.xdot_max = r.extremes.xdot_max;
+  return out;
+}
+
+PyForcedOrbit Orbit(const ForcedParams& p, double x0, double xdot0, int m,
+                    std::optional<double> rtol, std::optional<double> atol) {
+  const ForcedModel model(p);
+  ForcedOrbitOptions o;
+  o.flow = FlowOf(rtol, atol);
+  ForcedOrbit r;
+  {
+    py::gil_scoped_release nogil;
+    r = ShootStroboscopic(model, x0, xdot0, m, o);
+  }
+  if (r.status != ForcedOrbitStatus::kConverged)
+    RaiseNumerical(std::string(ForcedOrbitStatusName(r.status)) + ": " + r.message);
+  return MakeOrbit(r, {Vec2(r.start.x, r.start.xdot)}, false);
+}
+
+std::vector<PyForcedOrbit> Scan(const ForcedParams& p, int max_m, int max_sticks, int grid,
+                                int exit_samples, double radius, std::optional<double> rtol,
+                                std::optional<double> atol) {
+  const ForcedModel model(p);
+  ForcedScanOptions o;
+  o.orbit.flow = FlowOf(rtol, atol);
+  o.max_m = max_m, o.max_sticks = max_sticks, o.grid = grid, o.exit_samples = exit_samples;
+  o.radius = radius;
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  ForcedOrbits r;
+  {
+    py::gil_scoped_release nogil;
+    r = FindForcedOrbits(model, o);
+  }
+  interrupt.RaiseIfInterrupted();
+  std::vector<PyForcedOrbit> out;
+  for (const ForcedScanOrbit& s : r.orbits)
+    out.push_back(MakeOrbit(s.orbit, s.points, s.from_exit_map));
+  return out;
+}
+
+struct PyForcedBranch {
+  ForcedAxis axis = ForcedAxis::kOmega;
+  ForcedBranchStatus status = ForcedBranchStatus::kStartFailed;
+  std::string message;
+  py::array p, x0, xdot0, m, sticks, crossings, x_min, x_max, xdot_min, xdot_max, stable,
+      multipliers;
+  std::vector<py::tuple> special;  // (label, p, x_max)
+  int evaluations = 0;
+  double seconds = 0;
+};
+
+PyForcedBranch Continue(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                        std::optional<double> x_guess, std::optional<double> xdot_guess, int m,
+                        double max_amplitude, std::optional<double> max_step,
+                        std::optional<double> rtol, std::optional<double> atol) {
+  ForcedBranchOptions o;
+  o.flow = FlowOf(rtol, atol), o.m = m, o.max_amplitude = max_amplitude;
+  if (max_step)
+    o.palc.ds_max = *max_step * std::abs(to - from);
+  else
+    o.palc.ds_max = 0.02 * std::abs(to - from);  // as ss_continue's --max_step 0.02
+  o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
+  Interrupt interrupt;
+  o.palc.cancelled = [&] { return interrupt(); };
+  ForcedBranch r;
+  {
+    py::gil_scoped_release nogil;
+    r = ContinueForced(base, axis, from, to, x_guess.value_or(0), xdot_guess.value_or(base.base.v),
+                       o);
+  }
+  interrupt.RaiseIfInterrupted();
+  PyForcedBranch out;
+  out.axis = axis, out.status = r.status, out.message = r.message;
+  out.evaluations = r.evaluations, out.seconds = r.seconds;
+  std::vector<double> pp, x0, xd0, xmin, xmax, vmin, vmax;
+  std::vector<int> mm, st, cr;
+  std::vector<bool> stable;
+  py::array_t<std::complex<double>> mult({static_cast<py::ssize_t>(r.rows.size()), py::ssize_t(2)});
+  for (size_t i = 0; i < r.rows.size(); ++i) {
+    const ForcedBranchRow& w = r.rows[i];
+    pp.push_back(w.p), x0.push_back(w.x0), xd0.push_back(w.xdot0), mm.push_back(w.m);
+    st.push_back(w.sticks), cr.push_back(w.crossings), stable.push_back(w.stable);
+    xmin.push_back(w.extremes.x_min), xmax.push_back(w.extremes.x_max);
+    vmin.push_back(w.extremes.xdot_min), vmax.push_back(w.extremes.xdot_max);
+    mult.mutable_at(i, 0) = w.multipliers[0], mult.mutable_at(i, 1) = w.multipliers[1];
+  }
+  mult.attr("setflags")(py::arg("write") = false);
+  out.p = ReadOnly(pp), out.x0 = ReadOnly(x0), out.xdot0 = ReadOnly(xd0), out.m = ReadOnly(mm);
+  out.sticks = ReadOnly(st), out.crossings = ReadOnly(cr), out.stable = ReadOnlyBool(stable);
+  out.x_min = ReadOnly(xmin), out.x_max = ReadOnly(xmax);
+  out.xdot_min = ReadOnly(vmin), out.xdot_max = ReadOnly(vmax), out.multipliers = mult;
+  for (const ForcedBranchRow& s : r.special)
+    out.special.push_back(py::make_tuple(ForcedLabelName(s.label), s.p, s.extremes.x_max));
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The enums, ForcedParams and the result classes.
+void BindForcedTypes(py::module_& m) {
+  py::enum_<ForcedAxis>(m, "ForcedAxis", "The continued parameter of the forced oscillator.")
+      .value("omega", ForcedAxis::kOmega)
+      .value("force", ForcedAxis::kForce)
+      .value("v", ForcedAxis::kV)
+      .value("beta", ForcedAxis::kBeta);
+  py::enum_<ForcedSection>(m, "ForcedSection", "The Poincare section of simulate_forced().")
+      .value("strobe", ForcedSection::kStrobe)
+      .value("exit", ForcedSection::kExit);
+  py::enum_<ForcedBranchStatus>(m, "ForcedBranchStatus", "How a forced branch ended.")
+      .value("reached_end", ForcedBranchStatus::kReachedEnd)
+      .value("unbounded", ForcedBranchStatus::kUnbounded)
+      .value("step_too_small", ForcedBranchStatus::kStepTooSmall)
+      .value("start_failed", ForcedBranchStatus::kStartFailed)
+      .value("max_points", ForcedBranchStatus::kMaxPoints)
+      .value("closed", ForcedBranchStatus::kClosed);
+  py::class_<ForcedParams>(m, "ForcedParams",
+                           "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
+                           "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")
+      .def(py::init([](const Params& base, double force, double omega) {
+             ForcedParams p;
+             p.base = base, p.force = force, p.omega = omega;
+             return p;
+           }),
+           py::arg("params"), py::arg("force") = 0.0, py::arg("omega") = 1.0)
+      .def_readwrite("params", &ForcedParams::base)
+      .def_readwrite("force", &ForcedParams::force)
+      .def_readwrite("omega", &ForcedParams::omega)
+      .def(
+          "validation_error", [](const ForcedParams& p) { return ValidationError(p); },
+          "'' if valid, else one line naming the value");
+  py::class_<PyForcedTrajectory>(m, "ForcedTrajectory",
+                                 "Result of simulate_forced(): rows every dt and at every switch, "
+                                 "and the Poincare section's points.")
+      .def("__getitem__", &GetItem, py::arg("key"))
+      .def_readonly("t", &PyForcedTrajectory::t)
+      .def_readonly("x", &PyForcedTrajectory::x)
+      .def_readonly("xdot", &PyForcedTrajectory::xdot)
+      .def_readonly("mode", &PyForcedTrajectory::mode)
+      .def_readonly("phase", &PyForcedTrajectory::phase, "Omega t mod 2 pi")
+      .def_readonly("section", &PyForcedTrajectory::section)
+      .def_readonly("section_t", &PyForcedTrajectory::section_t)
+      .def_readonly("section_x", &PyForcedTrajectory::section_x)
+      .def_readonly("section_xdot", &PyForcedTrajectory::section_xdot)
+      .def_readonly("section_phase", &PyForcedTrajectory::section_phase)
+      .def_readonly("sticks", &PyForcedTrajectory::sticks)
+      .def_readonly("exits", &PyForcedTrajectory::exits)
+      .def_readonly("crossings", &PyForcedTrajectory::crossings)
+      .def_readonly("steps", &PyForcedTrajectory::steps)
+      .def_readonly("x_min", &PyForcedTrajectory::x_min)
+      .def_readonly("x_max", &PyForcedTrajectory::x_max)
+      .def_readonly("xdot_min", &PyForcedTrajectory::xdot_min)
+      .def_readonly("xdot_max", &PyForcedTrajectory::xdot_max);
+  py::class_<PyForcedOrbit>(m, "ForcedOrbit", "A periodic orbit of the forced oscillator.")
+      .def("__getitem__", &GetItem, py::arg("key"))
+      .def_readonly("m", &PyForcedOrbit::m, "period multiple: closes after m forcing periods")
+      .def_readonly("sticks", &PyForcedOrbit::sticks, "stick phases per period of the orbit")
+      .def_readonly("crossings", &PyForcedOrbit::crossings)
+      .def_readonly("iterations", &PyForcedOrbit::iterations)
+      .def_readonly("x0", &PyForcedOrbit::x0, "the stroboscopic point at t = 0")
+      .def_readonly("xdot0", &PyForcedOrbit::xdot0)
+      .def_readonly("period", &PyForcedOrbit::period)
+      .def_readonly("x_min", &PyForcedOrbit::x_min)
+      .def_readonly("x_max", &PyForcedOrbit::x_max)
+      .def_readonly("xdot_min", &PyForcedOrbit::xdot_min)
+      .def_readonly("xdot_max", &PyForcedOrbit::xdot_max)
+      .def_readonly("multipliers", &PyForcedOrbit::multipliers, "larger modulus first")
+      .def_readonly("monodromy", &PyForcedOrbit::monodromy)
+      .def_readonly("points", &PyForcedOrbit::points, "(m, 2): its stroboscopic points")
+      .def_readonly("stable", &PyForcedOrbit::stable)
+      .def_readonly("from_exit_map", &PyForcedOrbit::from_exit_map);
+  py::class_<PyForcedBranch>(m, "ForcedBranch", "Result of continue_forced(): one array per row.")
+      .def("__getitem__", &GetItem, py::arg("key"))
+      .def_readonly("axis", &PyForcedBranch::axis)
+      .def_readonly("status", &PyForcedBranch::status)
+      .def_readonly("message", &PyForcedBranch::message)
+      .def_readonly("p", &PyForcedBranch::p)
+      .def_readonly("x0", &PyForcedBranch::x0)
+      .def_readonly("xdot0", &PyForcedBranch::xdot0)
+      .def_readonly("m", &PyForcedBranch::m)
+      .def_readonly("sticks", &PyForcedBranch::sticks)
+      .def_readonly("crossings", &PyForcedBranch::crossings)
+      .def_readonly("x_min", &PyForcedBranch::x_min)
+      .def_readonly("x_max", &PyForcedBranch::x_max)
+      .def_readonly("xdot_min", &PyForcedBranch::xdot_min)
+      .def_readonly("xdot_max", &PyForcedBranch::xdot_max)
+      .def_readonly("stable", &PyForcedBranch::stable)
+      .def_readonly("multipliers", &PyForcedBranch::multipliers, "(rows, 2) complex")
+      .def_readonly("special", &PyForcedBranch::special, "[(label, p, x_max)]: LP, PD, ...")
+      .def_readonly("evaluations", &PyForcedBranch::evaluations)
+      .def_readonly("seconds", &PyForcedBranch::seconds);
+}
+
+}  // namespace
+
+void BindForced(py::module_& m) {
+  BindForcedTypes(m);
+  m.def("simulate_forced", &Simulate, py::arg("params"), py::arg("x0") = 0.0,
+        py::arg("xdot0") = py::none(), py::arg("t_end") = 100.0, py::arg("dt") = 0.01,
+        py::arg("section") = ForcedSection::kStrobe, py::arg("max_rows") = 1000000,
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "One trajectory of the forced oscillator from (x0, xdot0 (default v)) at t = 0, as "
+        "ss_simulate --force: rows every dt and at every switch, and the Poincare section.");
+  m.def("forced_orbit", &Orbit, py::arg("params"), py::arg("x0"), py::arg("xdot0"),
+        py::arg("m") = 1, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "A periodic orbit of multiple m by Newton on the stroboscopic map from (x0, xdot0); "
+        "raises NumericalError if Newton fails.");
+  m.def("find_forced_orbits", &Scan, py::arg("params"), py::arg("max_m") = 4,
+        py::arg("max_sticks") = 4, py::arg("grid") = 5, py::arg("exit_samples") = 48,
+        py::arg("radius") = 0.0, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "Every periodic orbit found at one parameter point (m = 1..max_m), by shooting on the "
+        "stroboscopic map and on the exit-phase map; a list of ForcedOrbit.");
+  m.def("continue_forced", &Continue, py::arg("params"), py::arg("axis"), py::arg("from_"),
+        py::arg("to"), py::arg("x_guess") = py::none(), py::arg("xdot_guess") = py::none(),
+        py::arg("m") = 1, py::arg("max_amplitude") = 1e3, py::arg("max_step") = py::none(),
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "The branch of m-periodic orbits through the one near (x_guess, xdot_guess) at "
+        "axis = from_, continued to `to` (as ss_continue --force --param).");
+}
+
+}  // namespace stickslip::python

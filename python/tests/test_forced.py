@@ -1,0 +1,124 @@
+"""The forced oscillator in the module (issue 20, item 6), against Den Hartog's
+(1931) closed form X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
+U = sin(pi / W) / (W (1 + cos(pi / W))), computed here on its own; and Ctrl-C in
+its long calls."""
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+import unittest
+
+import numpy as np
+
+import stickslip
+
+
+def den_hartog(mu, a, w):
+    V = a / (1 - w * w)
+    U = math.sin(math.pi / w) / (w * (1 + math.cos(math.pi / w)))
+    return math.sqrt(V * V - (mu * U) ** 2)
+
+
+def den_hartog_params(w):
+    return stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
+                                  force=1.0, omega=w)
+
+
+class Forced(unittest.TestCase):
+    def test_orbit_and_scan_give_den_hartogs_amplitude(self):
+        for w in (0.8, 1.5, 2.2):
+            p = den_hartog_params(w)
+            o = stickslip.forced_orbit(p, 0.5, 0.0)
+            self.assertAlmostEqual(o.x_max, den_hartog(0.3, 1, w), delta=1e-9)
+            self.assertEqual((o.m, o.sticks), (1, 0))
+            orbits = stickslip.find_forced_orbits(p)
+            nonstop = [q for q in orbits if q.m == 1 and q.sticks == 0]
+            self.assertEqual(len(nonstop), 1)
+            self.assertAlmostEqual(nonstop[0].x_max, den_hartog(0.3, 1, w), delta=1e-9)
+            self.assertEqual(nonstop[0].points.shape, (1, 2))
+
+    def test_simulation_settles_on_den_hartogs_orbit(self):
+        w = 1.5
+        T = 2 * math.pi / w
+        tr = stickslip.simulate_forced(den_hartog_params(w), t_end=300.0, dt=0.001)
+        n = len(tr.section_t)
+        self.assertEqual(n, int(300 / T) + 1)
+        np.testing.assert_allclose(tr.section_t, T * np.arange(n), rtol=1e-12, atol=1e-12)
+        last = tr.t >= 300 - T
+        self.assertAlmostEqual(tr.x[last].max(), den_hartog(0.3, 1, w), delta=1e-5)
+        self.assertTrue(set(tr.mode) <= {"slip-below", "slip-above", "stick"})
+        exits = stickslip.simulate_forced(den_hartog_params(w), t_end=30.0,
+                                          section=stickslip.ForcedSection.exit)
+        self.assertEqual(len(exits.section_t), exits.exits)
+
+    def test_continuation_matches_den_hartog_on_every_row(self):
+        p = den_hartog_params(1.5)
+        o = stickslip.forced_orbit(p, 0.5, 0.0)
+        b = stickslip.continue_forced(p, stickslip.ForcedAxis.omega, 1.5, 2.5, x_guess=o.x0,
+                                      xdot_guess=o.xdot0)
+        self.assertEqual(b.status, stickslip.ForcedBranchStatus.reached_end)
+        self.assertGreater(len(b.p), 20)
+        self.assertAlmostEqual(b.p[-1], 2.5, delta=1e-12)
+        X = np.array([den_hartog(0.3, 1, w) for w in b.p])
+        np.testing.assert_allclose(b.x_max, X, atol=1e-9, rtol=0)
+        self.assertTrue(np.all(b.sticks == 0) and np.all(b.m == 1))
+        self.assertEqual(b.multipliers.shape, (len(b.p), 2))
+
+    def test_arrays_are_read_only_and_bad_input_raises(self):
+        tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)
+        for a in (tr.t, tr.x, tr.section_x, tr.mode):
+            with self.assertRaises(ValueError):
+                a[0] = a[0]
+        o = stickslip.forced_orbit(den_hartog_params(1.5), 0.5, 0.0)
+        with self.assertRaises(ValueError):
+            o.multipliers[0] = 0
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "omega"):
+            stickslip.forced_orbit(den_hartog_params(-1.0), 0.5, 0.0)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "max_m"):
+            stickslip.find_forced_orbits(den_hartog_params(1.5), max_m=0)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "dt"):
+            stickslip.simulate_forced(den_hartog_params(1.5), dt=0.0)
+
+
+CHILD = r"""
+import sys, time, stickslip
+p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
+                           force=1.0, omega=1.5)
+calls = {
+    "simulate_forced": lambda: stickslip.simulate_forced(p, t_end=1e7, dt=1.0,
+                                                         max_rows=10000001),
+    "find_forced_orbits": lambda: stickslip.find_forced_orbits(p, max_m=64, grid=100),
+}
+print("ready", flush=True)
+try:
+    calls[sys.argv[1]]()
+    print("finished", flush=True)
+except KeyboardInterrupt:
+    print("interrupted %.6f" % time.time(), flush=True)
+"""
+
+
+class CtrlC(unittest.TestCase):
+    def test_long_forced_calls_stop_on_sigint(self):
+        for name in ("simulate_forced", "find_forced_orbits"):
+            child = subprocess.Popen([sys.executable, "-c", CHILD, name], stdout=subprocess.PIPE,
+                                     text=True, env=os.environ)
+            try:
+                self.assertEqual(child.stdout.readline().strip(), "ready")
+                time.sleep(1.0)
+                self.assertIsNone(child.poll(), name + " finished before the signal")
+                sent = time.time()
+                child.send_signal(signal.SIGINT)
+                out, _ = child.communicate(timeout=10)
+            finally:
+                if child.poll() is None:
+                    child.kill()
+                    child.wait()
+            self.assertTrue(out.startswith("interrupted"), name + ": " + out)
+            self.assertLess(float(out.split()[1]) - sent, 0.5, name)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,190 @@
+// ss_orbit_diagram: the orbit diagram of the forced oscillator (issue 21 items
+// 1-2): stroboscopic section points, stick counts and exit phases against one
+// parameter, swept up and down, with the largest Lyapunov exponent below.
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/about.hpp"
+#include "cli/app.hpp"
+#include "cli/run_forced.hpp"
+#include "cli/study.hpp"
+#include "stickslip/chaos/report.hpp"
+
+namespace ss = stickslip;
+namespace cli = stickslip::cli;
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr const char* kProg = "ss_orbit_diagram";
+constexpr const char* kNotes =
+    "For each parameter value the stroboscopic map (forcing phase 0, cos Omega t = 1) is\n"
+    "iterated for --transient forcing periods, then --keep periods are recorded with the\n"
+    "largest Lyapunov exponent (variational equations with saltation at every switch,\n"
+    "docs/theory.md). Each value starts from the last state of the one before, in both\n"
+    "directions (--direction), so hysteresis shows; each direction runs on its own thread.\n"
+    "Outputs in --out (written as one set): orbit_diagram.tsv (one row per section point),\n"
+    "lyapunov.tsv (one row per value), orbit_diagram.gp and orbit_diagram.png (.pdf, .svg).\n"
+    "A value whose flow fails or passes --max_amplitude is a `# failed:` line; the next\n"
+    "starts from rest. An interrupted run writes the values done, marked partial.\n"
+    "The forced flow's rtol and atol default to 1e-12.\n";
+constexpr const char* kExample =
+    "\nExample: ss_orbit_diagram --law stribeck --beta 0.01 --v 0.1 --force 0.5 --param omega "
+    "--from 0.2 --to 1.2 --n 400";
+
+po::options_description AppOptions() {
+  po::options_description d("Orbit diagram (study section [orbit_diagram])");
+  d.add_options()("param", cli::Value()->value_name("NAME"),
+                  "the swept parameter: omega, force, v or beta (default omega)")(
+      "from", cli::Value()->value_name("P"), "first value (default 0.5)")(
+      "to", cli::Value()->value_name("P"), "last value (default 2.5)")(
+      "n", cli::Value()->value_name("N"), "parameter values, in [2, 100000] (default 200)")(
+      "transient", cli::Value()->value_name("P"),
+      "forcing periods discarded per value, in [0, 1e6] (default 500)")(
+      "keep", cli::Value()->value_name("K"),
+      "forcing periods recorded per value, in [10, 1e6] (default 200)")(
+      "direction", cli::Value()->value_name("D"), "up, down or both (default both)");
+  cli::AddRunOptions(d, "plots/orbit_diagram",
+                     "write the TSV files and the script, but do not run gnuplot");
+  return d;
+}
+
+struct Setup {
+  ss::ForcedParams p;
+  ss::OrbitDiagramOptions o;
+  ss::FlowOptions flow;  // for the metadata
+};
+
+long Count(const cli::Arguments& args, const char* name, long fallback, long lo, long hi) {
+  const long n = args.Integer(name, fallback);
+  if (n < lo || n > hi)
+    throw cli::UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
+                          ": must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return n;
+}
+
+Setup Configure(const cli::Arguments& args) {
+  Setup s;
+  s.p.base = cli::UncheckedModelFromArguments(args);
+  s.p.force = args.Number("force", 0.3);
+  s.p.omega = args.Number("omega", 1);
+  const std::string name = args.Text("param", "omega");
+  bool found = false;
+  for (ss::ForcedAxis a :
+       {ss::ForcedAxis::kOmega, ss::ForcedAxis::kForce, ss::ForcedAxis::kV, ss::ForcedAxis::kBeta})
+    if (name == ss::ForcedAxisName(a)) s.o.axis = a, found = true;
+  if (!found)
+    throw cli::UsageError("invalid value '" + name + "' for " + args.Source("param") +
+                          ": must be omega, force, v or beta");
+  s.o.from = args.Number("from", 0.5);
+  s.o.to = args.Number("to", 2.5);
+  if (s.o.from == s.o.to)
+    throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");
+  for (const char* end : {"from", "to"}) {
+    ss::ForcedParams at = s.p;
+    ss::SetAxis(at, s.o.axis, end[0] == 'f' ? s.o.from : s.o.to);
+    const std::string e = ss::ValidationError(at);
+    if (!e.empty())
+      throw cli::UsageError("invalid forced model at --" + std::string(end) + ": " + e);
+  }
+  s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
+  s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
+  s.o.iterate.keep = static_cast<int>(Count(args, "keep", 200, 10, 1000000));
+  s.o.iterate.align = std::min(s.o.iterate.align, s.o.iterate.transient);
+  const std::string dir = args.Text("direction", "both");
+  if (dir != "up" && dir != "down" && dir != "both")
+    throw cli::UsageError("invalid value '" + dir + "' for " + args.Source("direction") +
+                          ": must be up, down or both");
+  s.o.up = dir != "down", s.o.down = dir != "up";
+  s.o.max_amplitude = args.Number("max_amplitude", 50);
+  if (!(s.o.max_amplitude > 0))
+    throw cli::UsageError(args.Source("max_amplitude") + " must be > 0");
+  s.flow = cli::FlowOptionsFromArguments(args);
+  if (!args.Given("rtol")) s.flow.rtol = s.o.iterate.flow.rtol;
+  if (!args.Given("atol")) s.flow.atol = s.o.iterate.flow.atol;
+  s.o.iterate.flow.rtol = s.flow.rtol, s.o.iterate.flow.atol = s.flow.atol;
+  s.o.iterate.flow.max_steps = s.flow.max_steps;
+  const std::string e = s.o.ValidationError();
+  if (!e.empty()) throw cli::UsageError(e);
+  return s;
+}
+
+std::string Describe(const Setup& s) {
+  ss::ForcedParams at = s.p;
+  std::string d = cli::DescribeModel(at.base);
+  for (ss::ForcedAxis a : {ss::ForcedAxis::kForce, ss::ForcedAxis::kOmega})
+    if (a != s.o.axis)
+      d += std::string(" ") + ss::ForcedAxisName(a) + "=" + ss::FormatNumber(ss::GetAxis(s.p, a));
+  return d;
+}
+
+int Main(int argc, char** argv) {
+  po::options_description mine = AppOptions();
+  mine.add(cli::ForcingOptions());
+  const po::options_description desc = cli::AppDescription(mine);
+  const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "orbit_diagram");
+  if (cli::HelpOrVersion(std::cout, args, kProg, "ss_orbit_diagram [--study FILE] [options]", desc,
+                         std::string(kNotes) + cli::kExitCodeHelp + kExample))
+    return 0;
+  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
+    if (args.Given(phys))
+      throw cli::UsageError(args.Source(phys) +
+                            ": the forced oscillator takes dimensionless inputs");
+  Setup s = Configure(args);
+  const ss::FigureFormat format = cli::FigureFormatOf(args);
+  const std::string figure = ss::FigureFile("orbit_diagram", format);
+  cli::AppRun app(kProg, args, "plots/orbit_diagram",
+                  {"orbit_diagram.tsv", "lyapunov.tsv", "orbit_diagram.gp", figure});
+  cli::RunControl& run = app.run();
+  run.Phase("iterating the stroboscopic map");
+  s.o.cancelled = [&run] { return run.Cancelled(); };
+  s.o.progress = [&run](int done, int total) {
+    if (run.ProgressDue())
+      run.Progress(std::to_string(done) + " of " + std::to_string(total) + " values",
+                   static_cast<double>(done) / total, done, "values");
+  };
+  const ss::OrbitDiagram d = ss::ComputeOrbitDiagram(s.p, s.o);
+  const std::string model = Describe(s);
+  const std::string axis = ss::ForcedAxisName(s.o.axis);
+  cli::Metadata meta =
+      cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.p.base, s.flow, axis);
+  meta.insert(meta.end(),
+              {{"model", "forced oscillator, " + model},
+               {"swept", axis + " from " + ss::FormatNumber(s.o.from) + " to " +
+                             ss::FormatNumber(s.o.to) + ", " + std::to_string(s.o.n) + " values"},
+               {"transient", std::to_string(s.o.iterate.transient) + " forcing periods"},
+               {"keep", std::to_string(s.o.iterate.keep) + " forcing periods"},
+               {"section", "forcing phase 0 (cos Omega t = 1)"},
+               {"status", d.cancelled ? "partial (" + run.Reason() + ")"
+                                      : std::to_string(d.failed) + " values failed"}});
+  run.Phase("writing");
+  ss::TsvTable points = ss::OrbitDiagramTable(d, s.o.axis), exps = ss::ExponentTable(d, s.o.axis);
+  points.PrependMeta(meta);
+  exps.PrependMeta(meta);
+  app.out().Write("orbit_diagram.tsv", points.str());
+  app.out().Write("lyapunov.tsv", exps.str());
+  app.out().Write("orbit_diagram.gp", ss::OrbitDiagramScript(format, s.o.axis,
+                                                             ss::FigureTitle(model, {axis}) +
+                                                                 (d.cancelled ? " (partial)" : ""),
+                                                             s.o.up, s.o.down));
+  if (!app.Finish("orbit_diagram.gp", {figure}, {figure})) return cli::kExitFailed;
+  std::cout << kProg << ": forced oscillator, " << model << "\n"
+            << axis << " from " << ss::FormatNumber(s.o.from) << " to " << ss::FormatNumber(s.o.to)
+            << ": " << exps.rows() << " values done, " << d.failed << " failed, in "
+            << ss::FormatNumber(std::round(d.seconds * 1e3) / 1e3) << " s\n"
+            << "wrote " << app.out().dir() << "/orbit_diagram.tsv, lyapunov.tsv, orbit_diagram.gp"
+            << (app.gnuplot().ok() ? " and " + figure : std::string()) << "\n";
+  std::string partial;
+  if (d.cancelled) partial = "partial orbit diagram written: " + run.Reason();
+  if (partial.empty() && d.failed > 0)
+    partial = std::to_string(d.failed) + " values failed (see the # failed: lines)";
+  return app.ExitCode(partial);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::RunApp(kProg, [&] { return Main(argc, argv); });
+}

@@ -1,0 +1,85 @@
+// Forced basins' tables and figure (chaos/basin_report.hpp).
+#include "stickslip/chaos/basin_report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+std::string AttractorLabel(const Attractor& a) {
+  const std::string s = std::to_string(a.sticks) + (a.sticks == 1 ? " stick" : " sticks");
+  switch (a.kind) {
+    case AttractorKind::kPeriodic:
+      return "period " + std::to_string(a.m) + ", " + s;
+    case AttractorKind::kChaotic:
+      return "chaotic, ~" + s + "/period";
+    default:
+      return AttractorKindName(a.kind);
+  }
+}
+
+TsvTable ForcedBasinTable(const ForcedBasins& b) {
+  TsvTable t({"x", "xdot", "attractor", "kind", "m", "sticks", "lyapunov"});
+  for (const ForcedBasinStart& s : b.starts)
+    if (s.attractor >= 0 && !s.message.empty())
+      t.AddComment("failed: x = " + FormatNumber(s.x) + ", xdot = " + FormatNumber(s.xdot) + ": " +
+                   s.message);
+  for (const ForcedBasinStart& s : b.starts) {
+    if (s.attractor < 0) continue;
+    const Attractor& a = b.attractors[s.attractor];
+    const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded;
+    if (measured && !std::isfinite(s.lyapunov))
+      throw InvalidArgument("basin start x = " + FormatNumber(s.x) + " has a non-finite exponent");
+    t.AddRow({s.x, s.xdot, s.attractor, AttractorKindName(a.kind), a.m, a.sticks,
+              measured ? s.lyapunov : 0.0});
+  }
+  return t;
+}
+
+TsvTable AttractorTable(const ForcedBasins& b) {
+  TsvTable t(
+      {"attractor", "kind", "m", "sticks", "x", "xdot", "lyapunov", "starts", "fraction", "label"});
+  int total = 0;
+  for (const Attractor& a : b.attractors) total += a.starts;
+  for (size_t i = 0; i < b.attractors.size(); ++i) {
+    const Attractor& a = b.attractors[i];
+    t.AddRow({static_cast<int>(i), AttractorKindName(a.kind), a.m, a.sticks, a.x, a.xdot,
+              std::isfinite(a.lyapunov) ? a.lyapunov : 0.0, a.starts,
+              total > 0 ? static_cast<double>(a.starts) / total : 0.0, AttractorLabel(a)});
+  }
+  return t;
+}
+
+std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o,
+                              const std::string& title, FigureFormat format) {
+  const double dx = (o.x_hi - o.x_lo) / std::max(1, o.nx - 1) / 2;
+  const double dy = (o.xdot_hi - o.xdot_lo) / std::max(1, o.ny - 1) / 2;
+  std::ostringstream os;
+  os << "# Basins on the stroboscopic section (forcing phase 0) of ss_basin --force.\n"
+     << FigurePreamble(format, 900, 900) << "set output '" << FigureFile("basins_forced", format)
+     << "'\nset title " << GnuplotQuoted(title) << "\nset xlabel 'x at phase 0'\n"
+     << "set ylabel \"x' at phase 0\"\nunset grid\nset xrange [" << FormatNumber(o.x_lo - dx) << ":"
+     << FormatNumber(o.x_hi + dx) << "]\nset yrange [" << FormatNumber(o.xdot_lo - dy) << ":"
+     << FormatNumber(o.xdot_hi + dy) << "]\nset style fill solid 1.0 noborder\nplot ";
+  for (size_t i = 0; i < b.attractors.size(); ++i) {
+    const Attractor& a = b.attractors[i];
+    const char* colour = a.kind == AttractorKind::kChaotic     ? "#000000"
+                         : a.kind == AttractorKind::kUndecided ? kFillUndecided
+                         : a.kind == AttractorKind::kUnbounded ? "#ffffff"
+                                                               : SeriesColor(static_cast<int>(i));
+    os << (i ? ", \\\n     " : "") << "'basins_forced.tsv' using 'x':(column('attractor') == " << i
+       << " ? column('xdot') : 1/0):(" << FormatNumber(dx) << "):(" << FormatNumber(dy)
+       << ") with boxxyerror lc rgb '" << colour << "' title "
+       << GnuplotQuoted(AttractorLabel(a) + " (" + std::to_string(a.starts) + ")");
+  }
+  os << (b.attractors.empty() ? "" : ", \\\n     ")
+     << "'attractors.tsv' using 'x':(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with "
+        "points pt 7 ps 1.4 lc rgb 'white' notitle, \\\n     'attractors.tsv' using 'x':"
+        "(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with points pt 6 ps 1.4 lw 2 "
+        "lc rgb 'black' title 'a section point of each periodic attractor'\n";
+  return os.str();
+}
+
+}  // namespace stickslip

@@ -1,0 +1,166 @@
+// Basins on the stroboscopic section (chaos/forced_basin.hpp): each start's
+// kept section points decide its attractor; attractors are merged on the
+// calling thread after the workers join, in grid order (deterministic).
+#include "stickslip/chaos/forced_basin.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+const char* AttractorKindName(AttractorKind k) {
+  switch (k) {
+    case AttractorKind::kPeriodic:
+      return "periodic";
+    case AttractorKind::kRest:
+      return "rest";
+    case AttractorKind::kChaotic:
+      return "chaotic";
+    case AttractorKind::kUndecided:
+      return "undecided";
+    case AttractorKind::kUnbounded:
+      return "unbounded";
+    case AttractorKind::kFailed:
+      return "failed";
+  }
+  return "?";
+}
+
+std::string ForcedBasinOptions::ValidationError() const {
+  if (nx < 1 || ny < 1 || nx > 2000 || ny > 2000) return "nx and ny must lie in [1, 2000]";
+  if (!(x_lo < x_hi) || !(xdot_lo < xdot_hi))
+    return "the box must have x_min < x_max and xdot_min < xdot_max";
+  if (max_period < 1 || max_period > iterate.keep / 2)
+    return "max_period = " + std::to_string(max_period) + " must lie in [1, keep / 2]";
+  if (threads < 1) return "threads must be >= 1";
+  return iterate.ValidationError();
+}
+
+namespace {
+
+Attractor Classify(const ForcedModel& model, const StroboscopicRun& r,
+                   const ForcedBasinOptions& o) {
+  const Tolerances tol = Tolerances::From(o.iterate.flow.rtol, o.iterate.flow.atol);
+  Attractor a;
+  a.lyapunov = r.lyapunov;
+  if (r.status == LyapunovStatus::kDiverged) return a.kind = AttractorKind::kUnbounded, a;
+  if (r.status != LyapunovStatus::kDone) return a.kind = AttractorKind::kFailed, a;
+  const auto& p = r.points;
+  const int K = static_cast<int>(p.size());
+  auto close = [](const SectionPoint& u, const SectionPoint& w, double tol) {
+    return std::max(std::abs(u.x - w.x), std::abs(u.xdot - w.xdot)) <=
+           tol * (1 + std::abs(u.x) + std::abs(u.xdot));
+  };
+  for (int m = 1; m <= o.max_period; ++m) {
+    bool cycle = true;
+    for (int k = 0; k + m < K && cycle; ++k) cycle = close(p[k], p[k + m], tol.SectionCycle());
+    if (!cycle) continue;
+    bool stuck = model.v() == 0;
+    for (const SectionPoint& q : p) stuck = stuck && q.mode == Mode::kStick && q.exits == 0;
+    a.kind = stuck ? AttractorKind::kRest : AttractorKind::kPeriodic;
+    a.m = m;
+    int best = K - m;
+    for (int k = K - m; k < K; ++k) {
+      a.sticks += p[k].sticks;
+      if (p[k].x < p[best].x) best = k;
+    }
+    a.x = p[best].x, a.xdot = p[best].xdot;
+    return a;
+  }
+  double sticks = 0;
+  for (const SectionPoint& q : p) sticks += q.sticks;
+  a.sticks = static_cast<int>(std::lround(sticks / K));
+  a.kind = r.lyapunov > std::max(3 * r.lyapunov_err, tol.ChaoticExponentFloor())
+               ? AttractorKind::kChaotic
+               : AttractorKind::kUndecided;
+  return a;
+}
+
+// The index of a in the list (merged as the header says), appended if new.
+int Merge(std::vector<Attractor>& list, const Attractor& a, double same) {
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Attractor& b = list[i];
+    if (b.kind != a.kind) continue;
+    if (a.kind != AttractorKind::kPeriodic) return static_cast<int>(i);
+    if (b.m == a.m && b.sticks == a.sticks &&
+        std::max(std::abs(a.x - b.x), std::abs(a.xdot - b.xdot)) <=
+            same * (1 + std::abs(a.x) + std::abs(a.xdot)))
+      return static_cast<int>(i);
+  }
+  list.push_back(a);
+  return static_cast<int>(list.size() - 1);
+}
+
+}  // namespace
+
+ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOptions& o) {
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  const auto t0 = std::chrono::steady_clock::now();
+  ForcedBasins b;
+  const int n = o.nx * o.ny;
+  b.starts.resize(n);
+  std::vector<Attractor> found(n);
+  std::vector<char> done_flag(n, 0);
+  for (int j = 0; j < o.ny; ++j)
+    for (int i = 0; i < o.nx; ++i) {
+      ForcedBasinStart& s = b.starts[j * o.nx + i];
+      s.x = o.nx == 1 ? (o.x_lo + o.x_hi) / 2 : o.x_lo + (o.x_hi - o.x_lo) * i / (o.nx - 1);
+      s.xdot = o.ny == 1 ? (o.xdot_lo + o.xdot_hi) / 2
+                         : o.xdot_lo + (o.xdot_hi - o.xdot_lo) * j / (o.ny - 1);
+    }
+  std::atomic<int> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  auto work = [&] {
+    for (int k; !stop.load() && (k = next.fetch_add(1)) < n;) {
+      try {
+        const ForcedBasinStart& s = b.starts[k];
+        const StroboscopicRun r = IterateStroboscopic(
+            model, ForcedStart(model, 0, s.x, s.xdot), o.iterate,
+            [&stop] { return stop.load(std::memory_order_relaxed); }, o.max_amplitude);
+        if (r.status == LyapunovStatus::kCancelled) break;
+        found[k] = Classify(model, r, o);
+        if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
+      } catch (const std::exception& ex) {
+        found[k].kind = AttractorKind::kFailed;
+        b.starts[k].message = ex.what();
+      }
+      done_flag[k] = 1;
+      done.fetch_add(1);
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int t = 0; t < std::min(o.threads, n); ++t) workers.emplace_back(work);
+  while (done.load() < n) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (o.cancelled && o.cancelled()) {
+      stop = true;
+      break;
+    }
+    if (o.progress) o.progress(done.load(), n);
+  }
+  for (std::thread& w : workers) w.join();
+  b.cancelled = stop.load();
+  for (int k = 0; k < n; ++k) {
+    if (!done_flag[k]) continue;
+    const int id =
+        Merge(b.attractors, found[k],
+              Tolerances::From(o.iterate.flow.rtol, o.iterate.flow.atol).SameAttractor());
+    ++b.attractors[id].starts;
+    b.starts[k].attractor = id;
+    b.starts[k].lyapunov = found[k].lyapunov;
+    b.failed += found[k].kind == AttractorKind::kFailed;
+  }
+  b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return b;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,104 @@
+// The orbit diagram's tables and figure (chaos/report.hpp).
+#include "stickslip/chaos/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+namespace {
+
+bool Done(const DiagramColumn& c) { return c.computed && c.run.status == LyapunovStatus::kDone; }
+
+void AddFailures(const OrbitDiagram& d, ForcedAxis axis, TsvTable& t) {
+  for (const DiagramColumn& c : d.columns)
+    if (c.computed && !Done(c))
+      t.AddComment(std::string("failed: ") + SweepDirectionName(c.direction) + " " +
+                   ForcedAxisName(axis) + " = " + FormatNumber(c.value) + ": " +
+                   LyapunovStatusName(c.run.status) + ", " + c.run.message);
+}
+
+void CheckFinite(double x, const DiagramColumn& c, ForcedAxis axis) {
+  if (!std::isfinite(x))
+    throw InvalidArgument("orbit diagram at " + std::string(ForcedAxisName(axis)) + " = " +
+                          FormatNumber(c.value) + " has a non-finite value");
+}
+
+}  // namespace
+
+TsvTable OrbitDiagramTable(const OrbitDiagram& d, ForcedAxis axis) {
+  TsvTable t({"direction", ForcedAxisName(axis), "period", "x", "xdot", "stuck", "sticks", "exits",
+              "exit_phase", "lyapunov", "lyapunov_err"});
+  AddFailures(d, axis, t);
+  for (const DiagramColumn& c : d.columns) {
+    if (!Done(c)) continue;
+    CheckFinite(c.run.lyapunov + c.run.lyapunov_err, c, axis);
+    int k = 0;
+    for (const SectionPoint& q : c.run.points) {
+      CheckFinite(q.x + q.xdot, c, axis);
+      t.AddRow({SweepDirectionName(c.direction), c.value, ++k, q.x, q.xdot,
+                q.mode == Mode::kStick ? 1 : 0, q.sticks, q.exits,
+                static_cast<double>(q.first_exit_phase), c.run.lyapunov, c.run.lyapunov_err});
+    }
+  }
+  return t;
+}
+
+TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
+  TsvTable t({"direction", ForcedAxisName(axis), "lyapunov", "lyapunov_err", "sticks_per_period",
+              "collapses", "x_min", "x_max"});
+  AddFailures(d, axis, t);
+  for (const DiagramColumn& c : d.columns) {
+    if (!Done(c) || c.run.points.empty()) continue;
+    double sticks = 0, lo = c.run.points[0].x, hi = lo;
+    for (const SectionPoint& q : c.run.points) {
+      sticks += q.sticks;
+      lo = std::min(lo, q.x), hi = std::max(hi, q.x);
+    }
+    t.AddRow({SweepDirectionName(c.direction), c.value, c.run.lyapunov, c.run.lyapunov_err,
+              sticks / c.run.points.size(), c.run.collapses, lo, hi});
+  }
+  return t;
+}
+
+std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::string& title,
+                               bool up, bool down) {
+  const std::string ax = ForcedAxisName(axis);
+  const std::string label = axis == ForcedAxis::kOmega   ? "forcing frequency Ω"
+                            : axis == ForcedAxis::kForce ? "forcing amplitude A"
+                                                         : ParameterAxisLabel(ax);
+  std::ostringstream os;
+  os << "# The orbit diagram of ss_orbit_diagram: stroboscopic section points (phase 0) and\n"
+     << "# the largest Lyapunov exponent against " << ax << ".\n"
+     << FigurePreamble(format, 1100, 900) << "set output '" << FigureFile("orbit_diagram", format)
+     << "'\nset multiplot\nset lmargin 12\nset rmargin 4\nunset key\n"
+     << "sel(d, col) = strcol('direction') eq d ? column(col) : 1/0\n"
+     << "set size 1, 0.62\nset origin 0, 0.38\nset tmargin 3\nset bmargin 0.5\n"
+     << "set title " << GnuplotQuoted(title) << "\nset format x ''\nset ylabel 'x at phase 0'\n"
+     << "plot ";
+  const char* dirs[] = {"up", "down"};
+  const bool on[] = {up, down};
+  bool first = true;
+  for (int i = 1; i >= 0; --i) {  // up drawn over down: where they differ, hysteresis
+    if (!on[i]) continue;
+    os << (first ? "" : ", \\\n     ") << "'orbit_diagram.tsv' using (sel('" << dirs[i] << "', '"
+       << ax << "')):'x' with points pt 7 ps " << (i == 0 ? "0.12" : "0.25") << " lc rgb '"
+       << SeriesColor(i) << "' title 'sweep " << dirs[i] << "'";
+    first = false;
+  }
+  os << "\nunset title\nset size 1, 0.38\nset origin 0, 0\nset tmargin 0.5\nset bmargin 7\n"
+     << "set format x '% g'\nset xlabel '" << label << "'\nset ylabel 'largest exponent λ_1'\n"
+     << "set key outside below center horizontal\nplot 0 with lines ls 7 notitle";
+  for (int i = 1; i >= 0; --i) {
+    if (!on[i]) continue;
+    os << ", \\\n     'lyapunov.tsv' using (sel('" << dirs[i] << "', '" << ax
+       << "')):'lyapunov' with points pt 7 ps 0.35 lc rgb '" << SeriesColor(i) << "' title 'sweep "
+       << dirs[i] << "'";
+  }
+  os << "\nunset multiplot\n";
+  return os.str();
+}
+
+}  // namespace stickslip

@@ -1,0 +1,19 @@
+// ss_basin for the harmonically forced oscillator (issue 21 item 4):
+// --force A --omega W classifies a grid of starts (x, x') at forcing phase 0
+// by the attractor they reach (chaos/forced_basin.hpp), written as
+// basins_forced.tsv, attractors.tsv and the basin figure.
+#pragma once
+
+#include <boost/program_options.hpp>
+#include <string>
+
+#include "cli/study.hpp"
+
+namespace stickslip::cli {
+
+// --transient --keep --max_period (the forced path's own options).
+po::options_description ForcedBasinOptionGroup();
+// The whole forced run; returns the exit code.
+int RunForcedBasin(const Arguments& args, const std::string& prog, const std::string& command);
+
+}  // namespace stickslip::cli

@@ -1,0 +1,206 @@
+// ss_simulate's range options and forced run (simulate_forced.hpp).
+#include "cli/simulate_forced.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "cli/about.hpp"
+#include "cli/app.hpp"
+#include "stickslip/forced/simulate.hpp"
+#include "stickslip/io/figure_style.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+constexpr double kMaxRows = 1e7;  // rows are held in memory until the atomic write
+
+void Positive(const Arguments& args, const char* name) {
+  if (!(args.Number(name, 1) > 0))
+    throw UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
+                     ": must be > 0");
+}
+
+std::string Quoted(const std::string& s) { return GnuplotQuoted(s); }
+
+// Two figures in the common style: trajectory (phase portrait with the stick
+// line x' = v, and x, x' against t) and section (strobe: x' against x; exit:
+// the exit-phase map, phase of exit n+1 against exit n).
+std::string ForcedScript(ForcedSection sec, const std::string& title, FigureFormat f) {
+  std::string s = FigurePreamble(f, 1400, 650);
+  s += "set output " + Quoted(FigureFile("trajectory", f)) + "\n";
+  s += "set multiplot layout 1,2 title " + Quoted(FigureTitle(title, {})) + "\n";
+  s += "set xlabel 'displacement x'\nset ylabel 'velocity dx/dt'\nset title 'phase portrait'\n";
+  s += "plot 'trajectory.tsv' using 2:3 with lines ls 1 lw 1.5 title 'trajectory', \\\n";
+  s += "     'trajectory.tsv' using 2:(strcol(4) eq 'stick' ? $3 : NaN) with lines ls 9 "
+       "title 'sticking (dx/dt = v)'\n";
+  s += "set xlabel 'time t'\nset ylabel 'x, dx/dt'\nset title 'time series'\n";
+  s += "plot 'trajectory.tsv' using 1:2 with lines ls 1 lw 1.5 title 'displacement x', \\\n";
+  s += "     'trajectory.tsv' using 1:3 with lines ls 3 lw 1.5 title 'velocity dx/dt'\n";
+  s += "unset multiplot\n";
+  s += FigureTerminal(f, 950, 750);
+  s += "set output " + Quoted(FigureFile("section", f)) + "\nset key off\n";
+  if (sec == ForcedSection::kStrobe) {
+    s += "set title \"stroboscopic section (cos Ωt = 1)\\n\" . " + Quoted(FigureTitle(title, {})) +
+         "\n";
+    s += "set xlabel 'displacement x'\nset ylabel 'velocity dx/dt'\n";
+    s += "plot 'section.tsv' using 4:5 with points pt 7 ps 0.6 lc rgb '#1f77b4'\n";
+  } else {
+    s += "set title \"exit-phase map (stick exits)\\n\" . " + Quoted(FigureTitle(title, {})) + "\n";
+    s += "set xlabel 'forcing phase of stick exit n [rad]'\n";
+    s += "set ylabel 'forcing phase of stick exit n+1 [rad]'\n";
+    s += "set xrange [0:2*pi]\nset yrange [0:2*pi]\nset size square\nprev = NaN\n";
+    s += "plot x with lines lc rgb '#aaaaaa' dt 2, \\\n";
+    s += "     'section.tsv' using (q = prev, prev = $3, q):3 with points pt 7 ps 0.6 "
+         "lc rgb '#1f77b4'\n";
+  }
+  return s;
+}
+
+// Omega t mod 2 pi in [0, 2 pi); within rounding of 2 pi it is 0.
+double Phase(const ForcedModel& m, double t) {
+  const double wt = m.omega() * t;
+  double p = std::fmod(wt, 2 * M_PI);
+  if (p < 0) p += 2 * M_PI;
+  return 2 * M_PI - p <= 1e-15 * (1 + std::abs(wt)) * 8 ? 0 : p;
+}
+
+}  // namespace
+
+SimulateRange SimulateRangeFromArguments(const Arguments& args, double default_xdot0) {
+  SimulateRange r;
+  r.x0 = args.Number("x0", r.x0);
+  r.xdot0 = args.Number("xdot0", default_xdot0);
+  r.t_end = args.Number("t_end", r.t_end);
+  r.dt = args.Number("dt", r.dt);
+  Positive(args, "t_end");
+  Positive(args, "dt");
+  if (r.t_end / r.dt > kMaxRows)
+    throw UsageError("t_end / dt = " + FormatNumber(r.t_end / r.dt) + " rows is more than " +
+                     FormatNumber(kMaxRows) + "; use a larger --dt");
+  return r;
+}
+
+void AddRangeMeta(TsvTable& table, const SimulateRange& r) {
+  table.AddMeta("x0", FormatNumber(r.x0));
+  table.AddMeta("xdot0", FormatNumber(r.xdot0));
+  table.AddMeta("t_end", FormatNumber(r.t_end));
+  table.AddMeta("dt", FormatNumber(r.dt));
+}
+
+void AddSimulateForcedOptions(po::options_description& d) {
+  d.add_options()("section", Value()->value_name("strobe|exit"),
+                  "forced: the Poincare section in section.tsv: strobe (every forcing period, "
+                  "cos(Omega t) = 1; default) or exit (every stick exit)");
+}
+
+// The forced run's settings, all checked before anything runs or is written.
+struct ForcedSetup {
+  ForcedParams p;
+  ForcedSimulationOptions o;
+  FlowOptions flow;  // as the metadata shows it
+  SimulateRange range;
+};
+
+ForcedSetup ConfigureForced(const Arguments& args) {
+  ForcedSetup st;
+  ForcedParams& p = st.p;
+  ForcedSimulationOptions& o = st.o;
+  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
+    if (args.Given(phys))
+      throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
+  p.base = UncheckedModelFromArguments(args);
+  p.force = args.Number("force", 0);
+  p.omega = args.Number("omega", 1);
+  const std::string err = ValidationError(p);
+  if (!err.empty()) {
+    const std::string name = err.substr(0, err.find(' '));
+    throw UsageError("invalid forced model: " + err +
+                     (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
+  }
+  FlowOptions& flow = st.flow;
+  flow = FlowOptionsFromArguments(args);
+  if (flow.integrator != Integrator::kTaylor)
+    throw UsageError(args.Source(args.Given("method") ? "method" : "integrator") +
+                     ": the forced oscillator is integrated by Taylor series only");
+  // The forced flow's own defaults (rtol = atol = 1e-12, max_steps per row) unless given.
+  if (!args.Given("rtol")) flow.rtol = o.flow.rtol;
+  if (!args.Given("atol")) flow.atol = o.flow.atol;
+  if (!args.Given("max_steps")) flow.max_steps = o.flow.max_steps;
+  o.flow.rtol = flow.rtol, o.flow.atol = flow.atol, o.flow.max_steps = flow.max_steps;
+  const std::string sec = args.Text("section", "strobe");
+  if (sec != "strobe" && sec != "exit")
+    throw UsageError("invalid value '" + sec + "' for " + args.Source("section") +
+                     ": must be strobe or exit");
+  o.section = sec == "strobe" ? ForcedSection::kStrobe : ForcedSection::kExit;
+  st.range = SimulateRangeFromArguments(args, p.base.v);
+  const SimulateRange& range = st.range;
+  o.t_end = range.t_end, o.dt = range.dt;
+  return st;
+}
+
+int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command) {
+  ForcedSetup st = ConfigureForced(args);
+  const ForcedParams& p = st.p;
+  ForcedSimulationOptions& o = st.o;
+  const FlowOptions& flow = st.flow;
+  const SimulateRange& range = st.range;
+  const ForcedModel model(p);
+  if (o.section == ForcedSection::kStrobe && o.t_end / model.period() > kMaxRows)
+    throw UsageError("t_end / (2 pi / omega) = " + FormatNumber(o.t_end / model.period()) +
+                     " section points is more than " + FormatNumber(kMaxRows));
+  const FigureFormat format = FigureFormatOf(args);
+  const std::string fig_t = FigureFile("trajectory", format), fig_s = FigureFile("section", format);
+  AppRun app(prog, args, "plots/simulate",
+             {"trajectory.tsv", "section.tsv", "trajectory.gp", fig_t, fig_s});
+  RunControl& run = app.run();
+  run.Phase("integrating");
+  o.cancelled = [&] {
+    run.Heartbeat("");
+    return run.Cancelled();
+  };
+  const ForcedSimulation r = SimulateForced(model, ForcedStart(model, 0, range.x0, range.xdot0), o);
+  run.Phase("writing");
+  const std::string title =
+      DescribeModel(p.base) + " force=" + FormatNumber(p.force) + " omega=" + FormatNumber(p.omega);
+  Metadata meta = RunMetadata(prog, command, p.base, flow);
+  meta.insert(meta.end(), {{"model", "forced oscillator, " + title},
+                           {"force", FormatNumber(p.force)},
+                           {"omega", FormatNumber(p.omega)},
+                           {"section", ForcedSectionName(o.section)}});
+  const std::string why = r.ok() ? ""
+                                 : r.message + (r.status == ForcedSimulationStatus::kCancelled
+                                                    ? " (" + run.Reason() + ")"
+                                                    : "");
+  meta.emplace_back("status", r.ok() ? "complete" : "partial (" + why + ")");
+  TsvTable traj({"t", "x", "xdot", "mode", "phase"});
+  TsvTable section({"n", "t", "phase", "x", "xdot", "mode"});
+  for (TsvTable* t : {&traj, &section}) {
+    t->PrependMeta(meta);
+    AddRangeMeta(*t, range);
+  }
+  for (const ForcedPoint& q : r.rows)
+    traj.AddRow({q.t, q.x, q.xdot, ModeName(q.mode), Phase(model, q.t)});
+  for (const ForcedSectionPoint& q : r.section)
+    section.AddRow({static_cast<double>(q.n), q.p.t, Phase(model, q.p.t), q.p.x, q.p.xdot,
+                    ModeName(q.p.mode)});
+  app.out().Write("trajectory.tsv", traj.str());
+  app.out().Write("section.tsv", section.str());
+  if (!r.ok()) {
+    app.out().Commit({"trajectory.gp", fig_t, fig_s});
+    return app.ExitCode(why + "; the trajectory so far is written to " + app.out().dir() +
+                        ", marked partial");
+  }
+  app.out().Write("trajectory.gp", ForcedScript(o.section, title, format));
+  if (!app.Finish("trajectory.gp", {fig_t, fig_s}, {fig_t, fig_s})) return kExitFailed;
+  std::cout << prog << ": forced oscillator, " << title << "\n"
+            << r.rows.size() << " rows to t = " << FormatNumber(r.rows.back().t) << ", "
+            << r.section.size() << " section points (" << ForcedSectionName(o.section) << "), "
+            << r.sticks << " sticks, " << r.crossings << " crossings; x in ["
+            << FormatNumber(r.extremes.x_min) << ", " << FormatNumber(r.extremes.x_max) << "]\n"
+            << "wrote " << app.out().dir() << "/trajectory.tsv, section.tsv, trajectory.gp"
+            << (app.gnuplot().ok() ? ", " + fig_t + " and " + fig_s : "") << "\n";
+  return app.ExitCode("");
+}
+
+}  // namespace stickslip::cli

@@ -1,0 +1,27 @@
+// ss_simulate's shared range options and its forced run (issue 20, item 1):
+// --force A --omega W give the forced oscillator's trajectory and its
+// Poincare section (--section strobe|exit), in --out DIR as trajectory.tsv,
+// section.tsv, trajectory.gp and the figures trajectory.png, section.png.
+#pragma once
+
+#include <boost/program_options.hpp>
+#include <string>
+
+#include "cli/study.hpp"
+#include "stickslip/io/report.hpp"
+
+namespace stickslip::cli {
+
+// x0, xdot0, t_end, dt: validated once (UsageError naming the option).
+struct SimulateRange {
+  double x0 = 0, xdot0 = 0, t_end = 100, dt = 0.01;
+};
+SimulateRange SimulateRangeFromArguments(const Arguments& args, double default_xdot0);
+void AddRangeMeta(TsvTable& table, const SimulateRange& r);
+
+// --section strobe|exit.
+void AddSimulateForcedOptions(po::options_description& d);
+// The whole forced run; returns the exit code.
+int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command);
+
+}  // namespace stickslip::cli

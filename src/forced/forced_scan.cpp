@@ -1,0 +1,178 @@
+// Every periodic orbit at one parameter point (forced/orbit_scan.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+
+namespace stickslip {
+
+const char* ForcedScanStatusName(ForcedScanStatus s) {
+  return s == ForcedScanStatus::kOk ? "ok" : "cancelled";
+}
+
+std::string ForcedScanOptions::ValidationError() const {
+  const std::string e = orbit.flow.ValidationError();
+  if (!e.empty()) return e;
+  if (max_m < 1 || max_m > 64) return "max_m = " + std::to_string(max_m) + " must lie in [1, 64]";
+  if (max_sticks < 0 || max_sticks > 64)
+    return "max_sticks = " + std::to_string(max_sticks) + " must lie in [0, 64]";
+  if (grid < 0 || grid > 100) return "grid = " + std::to_string(grid) + " must lie in [0, 100]";
+  if (exit_samples < 2 || exit_samples > 10000)
+    return "exit_samples = " + std::to_string(exit_samples) + " must lie in [2, 10000]";
+  if (!(radius >= 0) || !std::isfinite(radius)) return "radius = " + Num(radius) + " must be >= 0";
+  if (!(orbit.tol > 0) || orbit.max_newton < 1) return "orbit: tol must be > 0, max_newton >= 1";
+  return "";
+}
+
+namespace {
+
+// Two stroboscopic points are one when they agree to this (relative) distance:
+// far above the orbits' 1e-12 and far below any two distinct orbits' spacing.
+constexpr double kSame = 1e-6;
+
+double Edge(const ForcedModel& m, double t, Mode mode) {
+  const double s = mode == Mode::kSlipBelow ? 1 : -1;
+  return s * m.static_limit() - 2 * m.beta() * m.v() + m.force() * std::cos(m.omega() * t);
+}
+
+bool Same(const Vec2& a, const Vec2& b) {
+  return (a - b).cwiseAbs().maxCoeff() <= kSame * (1 + a.cwiseAbs().maxCoeff());
+}
+
+class Scan {
+ public:
+  Scan(const ForcedModel& m, const ForcedScanOptions& o) : m_(m), o_(o), flow_(m, o.orbit.flow) {}
+  bool Cancelled() {
+    if (o_.cancelled && o_.cancelled()) r_.status = ForcedScanStatus::kCancelled;
+    return !r_.ok();
+  }
+  // The stroboscopic iterates z, P(z), ..., P^n(z); fewer if the flow fails.
+  std::vector<Vec2> Iterates(const Vec2& z, int n) const {
+    std::vector<Vec2> pts{z};
+    ForcedRequest rq;
+    rq.t_end = m_.period();
+    rq.extremes = false;
+    for (int j = 0; j < n; ++j) {
+      const ForcedRun run = flow_.Run(ForcedStart(m_, 0, pts.back()[0], pts.back()[1]), rq);
+      if (run.status != ForcedStatus::kReached) break;
+      pts.emplace_back(run.end.x, run.end.xdot);
+    }
+    return pts;
+  }
+  // A converged fixed point of P^m: reduced to its least period, kept if new.
+  void Add(const Vec2& z, int m, bool from_exit) {
+    ++r_.converged;
+    const std::vector<Vec2> pts = Iterates(z, m);
+    if (static_cast<int>(pts.size()) <= m) return;
+    int d = 1;
+    while (d < m && !(m % d == 0 && Same(pts[d], z))) ++d;
+    for (const ForcedScanOrbit& known : r_.orbits)
+      if (known.orbit.m == d)
+        for (const Vec2& p : known.points)
+          if (Same(p, z)) return;
+    ForcedScanOrbit o;
+    o.orbit = ShootStroboscopic(m_, z[0], z[1], d, o_.orbit);
+    if (o.orbit.status != ForcedOrbitStatus::kConverged) return;
+    o.points.assign(pts.begin(), pts.begin() + d);
+    o.from_exit_map = from_exit;
+    r_.orbits.push_back(o);
+  }
+  void Strobe();
+  void ExitMap(Mode mode);
+  ForcedOrbits Result() {
+    std::sort(r_.orbits.begin(), r_.orbits.end(), [](const auto& a, const auto& b) {
+      return a.orbit.m != b.orbit.m ? a.orbit.m < b.orbit.m
+                                    : a.orbit.extremes.x_max < b.orbit.extremes.x_max;
+    });
+    return r_;
+  }
+
+ private:
+  const ForcedModel& m_;
+  const ForcedScanOptions& o_;
+  ForcedFlow flow_;
+  ForcedOrbits r_;
+};
+
+void Scan::Strobe() {
+  const double w = m_.omega(), b = m_.beta();
+  const double r = o_.radius > 0 ? o_.radius
+                                 : m_.force() / std::max({std::abs(1 - w * w), 2 * b * w, 0.2}) +
+                                       m_.static_limit() + m_.v();
+  const double rv = r * std::max(1.0, w);
+  const int n = o_.grid;
+  for (int m = 1; m <= o_.max_m; ++m)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        if (Cancelled()) return;
+        const double x = n == 1 ? 0 : -r + 2 * r * i / (n - 1);
+        const double xd = n == 1 ? m_.v() : -rv + 2 * rv * j / (n - 1);
+        ++r_.shots;
+        const ForcedOrbit o = ShootStroboscopic(m_, x, xd, m, o_.orbit);
+        if (o.status == ForcedOrbitStatus::kConverged) Add(Vec2(o.start.x, o.start.xdot), m, false);
+      }
+}
+
+// Samples t_e -> the times of the next max_sticks exits, then solves every
+// bracket of t'_s - t_e - m T on the lift (adjacent samples, the last one's
+// neighbour being the first shifted by T).
+void Scan::ExitMap(Mode mode) {
+  const int N = o_.exit_samples, S = o_.max_sticks;
+  const double T = m_.period();
+  std::vector<std::vector<double>> tp(N + 1, std::vector<double>(S, NAN));
+  for (int i = 0; i < N; ++i) {
+    if (Cancelled()) return;
+    const double te = i * T / N;
+    std::vector<ForcedEvent> ev;
+    ForcedRequest rq;
+    rq.t_end = te + (o_.max_m + 1) * T;
+    rq.extremes = false;
+    rq.stop_at_exit = S;
+    rq.events = &ev;
+    const ForcedRun run = flow_.Run({te, Edge(m_, te, mode), m_.v(), mode}, rq);
+    if (run.status != ForcedStatus::kReached) continue;
+    int s = 0;
+    for (const ForcedEvent& e : ev)
+      if (e.kind == ForcedEventKind::kStickOut && s < S) tp[i][s++] = e.after == mode ? e.t : NAN;
+  }
+  for (int s = 0; s < S; ++s) tp[N][s] = tp[0][s] + T;
+  for (int i = 0; i < N; ++i)
+    for (int s = 0; s < S; ++s) {
+      const double a = i * T / N, b = (i + 1) * T / N;
+      if (!std::isfinite(tp[i][s]) || !std::isfinite(tp[i + 1][s])) continue;
+      for (int m = 1; m <= o_.max_m; ++m) {
+        const double ga = tp[i][s] - a - m * T, gb = tp[i + 1][s] - b - m * T;
+        if ((ga > 0) == (gb > 0)) continue;
+        if (Cancelled()) return;
+        ++r_.shots;
+        const double guess = a + (b - a) * ga / (ga - gb);
+        const ForcedExitOrbit e = ExitPhaseOrbit(m_, guess, mode, s + 1, m, o_.orbit);
+        if (e.status != ForcedOrbitStatus::kConverged) continue;
+        // Its stroboscopic point: from the exit on to the next multiple of T.
+        const double t1 = std::ceil(e.t_exit / T) * T;
+        ForcedRequest rq;
+        rq.t_end = t1;
+        rq.extremes = false;
+        const ForcedRun run = flow_.Run({e.t_exit, e.x_exit, m_.v(), mode}, rq);
+        if (run.status == ForcedStatus::kReached) Add(Vec2(run.end.x, run.end.xdot), m, true);
+      }
+    }
+}
+
+}  // namespace
+
+ForcedOrbits FindForcedOrbits(const ForcedModel& model, const ForcedScanOptions& options) {
+  const std::string e = options.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  Scan scan(model, options);
+  if (options.max_sticks > 0) {
+    scan.ExitMap(Mode::kSlipBelow);
+    scan.ExitMap(Mode::kSlipAbove);
+  }
+  scan.Strobe();
+  return scan.Result();
+}
+
+}  // namespace stickslip

@@ -1,0 +1,95 @@
+// A sampled trajectory of the forced oscillator (forced/simulate.hpp): the
+// flow is run from one breakpoint to the next (multiples of dt, and of the
+// forcing period for the stroboscopic section), each switch kept as a row.
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/forced/simulate.hpp"
+
+namespace stickslip {
+
+const char* ForcedSectionName(ForcedSection s) {
+  return s == ForcedSection::kStrobe ? "strobe" : "exit";
+}
+
+const char* ForcedSimulationStatusName(ForcedSimulationStatus s) {
+  switch (s) {
+    case ForcedSimulationStatus::kComplete:
+      return "complete";
+    case ForcedSimulationStatus::kFailed:
+      return "failed";
+    case ForcedSimulationStatus::kCancelled:
+      return "cancelled";
+  }
+  return "?";
+}
+
+std::string ForcedSimulationOptions::ValidationError() const {
+  const std::string e = flow.ValidationError();
+  if (!e.empty()) return e;
+  if (!(t_end > 0) || !std::isfinite(t_end)) return "t_end = " + Num(t_end) + " must be > 0";
+  if (!(dt > 0) || !std::isfinite(dt)) return "dt = " + Num(dt) + " must be > 0";
+  return "";
+}
+
+ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& start,
+                                const ForcedSimulationOptions& o) {
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  if (!(o.t_end > start.t))
+    throw InvalidArgument("t_end = " + Num(o.t_end) + " must be > the start's t = " + Num(start.t));
+  const ForcedFlow flow(model, o.flow);
+  const double T = model.period();
+  const bool strobe = o.section == ForcedSection::kStrobe;
+  ForcedSimulation r;
+  ForcedPoint p = start;
+  r.rows.push_back(p);
+  r.extremes.Add(p.x, p.xdot);
+  // Breakpoints: k dt and (strobe) n T, the next ones after the start.
+  double k = std::floor(start.t / o.dt) + 1, n = std::ceil(start.t / T);
+  if (strobe && n * T == start.t) r.section.push_back({0, p}), n += 1;
+  std::vector<ForcedEvent> events;
+  while (p.t < o.t_end) {
+    if (o.cancelled && o.cancelled()) {
+      r.status = ForcedSimulationStatus::kCancelled;
+      r.message = "cancelled at t = " + Num(p.t);
+      return r;
+    }
+    const double t_row = k * o.dt, t_sec = strobe ? n * T : INFINITY;
+    ForcedRequest rq;
+    rq.t_end = std::min({t_row, t_sec, o.t_end});
+    rq.events = &events;
+    events.clear();
+    const ForcedRun run = flow.Run(p, rq);
+    r.steps += run.steps, r.sticks += run.sticks, r.exits += run.exits;
+    r.crossings += run.crossings;
+    for (const ForcedEvent& ev : events) {
+      const ForcedPoint q{ev.t, ev.x, model.v(), ev.after};
+      r.rows.push_back(q);
+      if (!strobe && ev.kind == ForcedEventKind::kStickOut)
+        r.section.push_back({static_cast<long>(r.section.size()), q});
+    }
+    if (run.status != ForcedStatus::kReached) {
+      r.status = ForcedSimulationStatus::kFailed;
+      r.message = std::string(ForcedStatusName(run.status)) + ": " + run.message;
+      return r;
+    }
+    r.extremes.x_min = std::min(r.extremes.x_min, run.extremes.x_min);
+    r.extremes.x_max = std::max(r.extremes.x_max, run.extremes.x_max);
+    r.extremes.xdot_min = std::min(r.extremes.xdot_min, run.extremes.xdot_min);
+    r.extremes.xdot_max = std::max(r.extremes.xdot_max, run.extremes.xdot_max);
+    if (!std::isfinite(run.end.x) || !std::isfinite(run.end.xdot)) {
+      r.status = ForcedSimulationStatus::kFailed;
+      r.message = "non-finite state at t = " + Num(run.end.t);
+      return r;
+    }
+    p = run.end;
+    if (p.t >= t_row || p.t >= o.t_end) r.rows.push_back(p), k += 1;
+    if (p.t >= t_sec) r.section.push_back({static_cast<long>(r.section.size()), p}), n += 1;
+  }
+  return r;
+}
+
+}  // namespace stickslip

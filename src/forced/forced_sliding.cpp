@@ -1,0 +1,210 @@
+// Sliding bifurcations on forced branches (branch.hpp, ForcedLabel): the
+// classification of di Bernardo, Kowalczyk & Nordmark (Physica D 170, 2002,
+// section 3) as Kowalczyk & Piiroinen (Physica D 237, 2008) find it in a
+// forced dry-friction oscillator, read off the change of the orbit's stick
+// structure; and the natural-parameter search across a jump of the map.
+#include "forced_sliding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+
+namespace stickslip::forced_detail {
+
+ForcedBranchRow RowOf(const ForcedOrbit& o, double p) {
+  ForcedBranchRow r;
+  r.p = p;
+  r.x0 = o.start.x, r.xdot0 = o.start.xdot;
+  r.m = o.m;
+  r.sticks = o.sticks, r.crossings = o.crossings;
+  r.extremes = o.extremes;
+  r.multipliers[0] = o.multipliers[0], r.multipliers[1] = o.multipliers[1];
+  r.stable = o.stable;
+  return r;
+}
+
+namespace {
+
+ForcedParams At(const ForcedParams& base, ForcedAxis axis, double p) {
+  ForcedParams q = base;
+  SetAxis(q, axis, p);
+  return q;
+}
+
+// The events over one period of the orbit of row r.
+std::vector<ForcedEvent> Events(const ForcedParams& base, ForcedAxis axis,
+                                const ForcedBranchOptions& o, const ForcedBranchRow& r) {
+  const ForcedModel model(At(base, axis, r.p));
+  std::vector<ForcedEvent> ev;
+  ForcedRequest rq;
+  rq.t_end = r.m * model.period();
+  rq.events = &ev;
+  rq.extremes = false;
+  ForcedFlow(model, o.flow).Run(ForcedStart(model, 0, r.x0, r.xdot0), rq);
+  return ev;
+}
+
+// How close a crossing of x' = v comes to the stick band's edge:
+// min | |x + 2 beta v - A cos(Omega t)| - mu_s | over the crossings (inf: none).
+double CrossingToEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
+                      const ForcedBranchRow& r) {
+  const ForcedModel model(At(base, axis, r.p));
+  double best = std::numeric_limits<double>::infinity();
+  for (const ForcedEvent& e : Events(base, axis, o, r))
+    if (e.kind == ForcedEventKind::kCrossing)
+      best = std::min(best, std::abs(std::abs(model.StickForce(e.t, e.x)) - model.static_limit()));
+  return best;
+}
+
+// The shortest slip phase that runs from a stick exit to the next stick
+// entry, over one period T of the orbit from row r (events wrap around T).
+double ShortestSlipBetweenSticks(const ForcedParams& base, ForcedAxis axis,
+                                 const ForcedBranchOptions& o, const ForcedBranchRow& r) {
+  const ForcedModel model(At(base, axis, r.p));
+  const std::vector<ForcedEvent> ev = Events(base, axis, o, r);
+  const double period = r.m * model.period();
+  double best = period;
+  const size_t n = ev.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (ev[i].kind != ForcedEventKind::kStickOut) continue;
+    for (size_t k = 1; k <= n; ++k) {  // the next event that is no touch
+      const ForcedEvent& e = ev[(i + k) % n];
+      if (e.kind == ForcedEventKind::kTouch) continue;
+      if (e.kind == ForcedEventKind::kStickIn) {
+        const double dt = e.t - ev[i].t + (i + k >= n ? period : 0);
+        best = std::min(best, dt);
+      }
+      break;
+    }
+  }
+  return best;
+}
+
+std::string Change(const ForcedBranchRow& a, const ForcedBranchRow& b) {
+  return "sticks " + std::to_string(a.sticks) + " -> " + std::to_string(b.sticks) + ", crossings " +
+         std::to_string(a.crossings) + " -> " + std::to_string(b.crossings);
+}
+
+}  // namespace
+
+void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
+                     const ForcedBranchRow& before, const ForcedBranchRow& after,
+                     ForcedBranchRow* point) {
+  const int ds = after.sticks - before.sticks, dc = after.crossings - before.crossings;
+  const std::string change = " (" + Change(before, after) + ")";
+  // A crossing on the band's edge at the point: crossing-sliding, also where
+  // the stick it becomes merges with the next one (a jump, mu_s > mu_k).
+  const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
+  const double edge = tol.BandEdge() * (1 + before.extremes.x_max - before.extremes.x_min);
+  const bool on_edge =
+      std::min(CrossingToEdge(base, axis, o, before), CrossingToEdge(base, axis, o, after)) <= edge;
+  if ((ds != 0 && dc == -ds) || (dc < 0 && on_edge)) {
+    point->label = ForcedLabel::kCR;
+    point->description =
+        "crossing-sliding: a crossing of x' = v reaches the stick band's edge and "
+        "turns into a stick phase" +
+        change;
+  } else if (ds != 0 && dc == 0) {
+    // Adding-sliding leaves a slip phase between two sticks that vanishes at
+    // the point; grazing-sliding a stick phase born from a tangency.
+    const ForcedBranchRow& more = ds > 0 ? after : before;
+    const ForcedModel model(At(base, axis, more.p));
+    const double slip = ShortestSlipBetweenSticks(base, axis, o, more);
+    const double vanishing = tol.VanishingPhase() * more.m * model.period();
+    if (slip <= vanishing) {
+      point->label = ForcedLabel::kAD;
+      point->description =
+          "adding-sliding: the stick force touches the band's edge tangentially, "
+          "a stick phase splits around a short slip" +
+          change;
+    } else {
+      point->label = ForcedLabel::kGR;
+      point->description =
+          "grazing-sliding: a slip phase touches x' = v tangentially (x'' = 0) "
+          "inside the stick band, a stick phase is born" +
+          change;
+    }
+  } else if (ds == 0 && dc != 0) {
+    point->label = ForcedLabel::kSW;
+    point->description =
+        "switching-sliding: the slip leaving a stick phase reaches x' = v and "
+        "crosses it" +
+        change;
+  } else {
+    point->label = ForcedLabel::kSL;
+    point->description = "sliding bifurcation: the stick structure changes" + change;
+  }
+}
+
+bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
+                ForcedBranchRow lo, double hi, double tol, ForcedBranchRow* before,
+                ForcedBranchRow* after, std::string* why) {
+  const ForcedBranchRow ref = lo;
+  ForcedOrbitOptions oo;
+  oo.flow = o.flow;
+  auto shoot = [&](double p, const ForcedBranchRow& from) {
+    return ShootStroboscopic(ForcedModel(At(base, axis, p)), from.x0, from.xdot0, ref.m, oo);
+  };
+  auto good = [&](const ForcedOrbit& orb) {
+    return orb.status == ForcedOrbitStatus::kConverged && orb.sticks == ref.sticks &&
+           orb.crossings == ref.crossings;
+  };
+  while (std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p))) {
+    const double mid = 0.5 * (lo.p + hi);
+    const ForcedOrbit orb = shoot(mid, lo);
+    if (good(orb))
+      lo = RowOf(orb, mid);
+    else
+      hi = mid;
+  }
+  *before = lo;
+  ForcedOrbit orb = shoot(hi, lo);
+  if (orb.status != ForcedOrbitStatus::kConverged || good(orb)) {
+    // No orbit near: settle from the edge's orbit (200 periods) and shoot again.
+    const ForcedModel model(At(base, axis, hi));
+    ForcedRequest rq;
+    rq.t_end = 200 * ref.m * model.period();
+    rq.extremes = false;
+    const ForcedRun tr = ForcedFlow(model, o.flow).Run(ForcedStart(model, 0, lo.x0, lo.xdot0), rq);
+    if (tr.status == ForcedStatus::kReached)
+      orb = ShootStroboscopic(model, tr.end.x, tr.end.xdot, ref.m, oo);
+  }
+  if (orb.status != ForcedOrbitStatus::kConverged || good(orb)) {
+    *why = "no periodic orbit (m = " + std::to_string(ref.m) + ") found beyond " + Num(lo.p, 15) +
+           ", where the orbit's stick structure ends";
+    return false;
+  }
+  *after = RowOf(orb, hi);
+  return true;
+}
+
+bool JumpAcross(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
+                const ForcedBranchRow& last, double dir, double step, double limit, double tol,
+                ForcedBranchRow* before, ForcedBranchRow* after, std::string* why) {
+  ForcedOrbitOptions oo;
+  oo.flow = o.flow;
+  auto clamp = [&](double p) { return dir > 0 ? std::min(p, limit) : std::max(p, limit); };
+  ForcedBranchRow lo = last;
+  double hi = clamp(last.p + dir * step);
+  for (int k = 0;; ++k) {  // the first value past the edge
+    const ForcedOrbit orb =
+        ShootStroboscopic(ForcedModel(At(base, axis, hi)), lo.x0, lo.xdot0, last.m, oo);
+    if (orb.status != ForcedOrbitStatus::kConverged || orb.sticks != last.sticks ||
+        orb.crossings != last.crossings)
+      break;
+    lo = RowOf(orb, hi);
+    if (k == 6 || hi == limit) {
+      *why = "an orbit of the same stick structure goes on to " + Num(hi, 12);
+      *after = lo;  // the farthest orbit found
+      return false;
+    }
+    hi = clamp(hi + dir * step * (2 << k));
+  }
+  return BisectEdge(base, axis, o, lo, hi, tol, before, after, why);
+}
+
+}  // namespace stickslip::forced_detail

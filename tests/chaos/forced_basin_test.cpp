@@ -1,0 +1,82 @@
+// Basins on the stroboscopic section (issue 21 item 4): where a pure-slip and
+// a stick-slip orbit coexist (forced coulomb belt, Omega = 0.45) both are
+// found, the pure-slip one at the closed-form steady state of the linear
+// slip field, the stick-slip one a converged fixed point of stroboscopic
+// shooting (an independent Newton solve) with one stick per period.
+#include "stickslip/chaos/forced_basin.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stickslip/errors.hpp"
+#include "stickslip/forced/orbit.hpp"
+
+namespace stickslip {
+namespace {
+
+ForcedParams Belt(double omega) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
+  p.force = 0.3, p.omega = omega;
+  return p;
+}
+
+TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
+  const ForcedModel m(Belt(0.45));
+  ForcedBasinOptions o;
+  o.nx = o.ny = 11;
+  o.x_lo = 0.3, o.x_hi = 0.8, o.xdot_lo = -0.2, o.xdot_hi = 0.2;
+  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  ASSERT_EQ(b.failed, 0);
+  ASSERT_EQ(b.attractors.size(), 2u);
+  int checked = 0;
+  for (const Attractor& a : b.attractors) {
+    ASSERT_EQ(a.kind, AttractorKind::kPeriodic);
+    EXPECT_EQ(a.m, 1);
+    EXPECT_GT(a.starts, 0);
+    EXPECT_LT(a.lyapunov, 0);
+    if (a.sticks == 0) {  // x = mu_k + A (1 - W^2) / D, x' = 2 beta A W^2 / D
+      const double W = 0.45, D = (1 - W * W) * (1 - W * W) + 4 * 0.05 * 0.05 * W * W;
+      EXPECT_NEAR(a.x, 0.25 + 0.3 * (1 - W * W) / D, 1e-7);
+      EXPECT_NEAR(a.xdot, 0.3 * 2 * 0.05 * W * W / D, 1e-7);
+      ++checked;
+    } else {
+      EXPECT_EQ(a.sticks, 1);
+      const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 1, ForcedOrbitOptions());
+      ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+      EXPECT_NEAR(orbit.start.x, a.x, 1e-7);
+      EXPECT_EQ(orbit.sticks, 1);
+      EXPECT_TRUE(orbit.stable);
+      checked += 2;
+    }
+  }
+  EXPECT_EQ(checked, 3);
+  int counted = 0;
+  for (const ForcedBasinStart& s : b.starts) counted += s.attractor >= 0;
+  EXPECT_EQ(counted, 121);
+}
+
+TEST(ForcedBasin, ChaoticStartsAreChaotic) {
+  ForcedParams p = Belt(0.35);
+  p.base.law = LawKind::kStribeck;
+  p.base.beta = 0.01, p.base.v = 0.1, p.force = 0.5;
+  const ForcedModel m(p);
+  ForcedBasinOptions o;
+  o.nx = o.ny = 2;
+  o.iterate.keep = 400;
+  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  ASSERT_EQ(b.attractors.size(), 1u);
+  EXPECT_EQ(b.attractors[0].kind, AttractorKind::kChaotic);
+}
+
+TEST(ForcedBasin, InvalidOptionsThrow) {
+  const ForcedModel m(Belt(0.45));
+  ForcedBasinOptions o;
+  o.max_period = 100;  // > keep / 2
+  EXPECT_THROW(ClassifyForcedBasins(m, o), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace stickslip

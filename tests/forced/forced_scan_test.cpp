@@ -1,0 +1,146 @@
+// Every periodic orbit at a parameter point (issue 20, item 2): the scan
+// against Den Hartog's closed form and against the closed-form (long double,
+// piecewise-linear) coulomb simulation.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "forced_reference.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace ref = forced_reference;
+using ref::Real;
+
+ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, double a, double w) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = mu_s, p.base.mu_k = mu_k, p.base.beta = beta, p.base.v = v;
+  p.force = a, p.omega = w;
+  return p;
+}
+
+ForcedOrbits Scan(const ForcedParams& p) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ForcedOrbits r = FindForcedOrbits(ForcedModel(p), ForcedScanOptions());
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("[ measured ] scan: %zu orbits from %d shots (%d converged) in %.3f s\n",
+              r.orbits.size(), r.shots, r.converged, s);
+  for (const ForcedScanOrbit& o : r.orbits)
+    std::printf("             m = %d, sticks %d, x_max %.12g, |mult| %.3g, %s, %s\n", o.orbit.m,
+                o.orbit.sticks, o.orbit.extremes.x_max, std::abs(o.orbit.multipliers[0]),
+                o.orbit.stable ? "stable" : "unstable", o.from_exit_map ? "exit map" : "strobe");
+  return r;
+}
+
+// Den Hartog (1931), mu_s = mu_k = mu, beta = 0, v = 0, no stop:
+// X = sqrt(V^2 - (mu U)^2), V = A / (1 - Omega^2), U = sin(pi/Omega) / (Omega (1 + cos(pi/Omega))).
+double DenHartogX(double mu, double a, double w) {
+  const double V = a / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
+  return std::sqrt(V * V - mu * mu * U * U);
+}
+
+TEST(ForcedScan, FindsDenHartogsNonStopOrbit) {
+  for (double w : {0.8, 1.5, 2.2}) {
+    const ForcedOrbits r = Scan(Coulomb(0.3, 0.3, 0, 0, 1, w));
+    ASSERT_TRUE(r.ok());
+    int nonstop = 0;
+    for (const ForcedScanOrbit& o : r.orbits) {
+      if (o.orbit.m != 1 || o.orbit.sticks != 0) continue;
+      ++nonstop;
+      EXPECT_NEAR(o.orbit.extremes.x_max, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
+      EXPECT_NEAR(-o.orbit.extremes.x_min, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
+    }
+    EXPECT_EQ(nonstop, 1) << "Omega = " << w;
+  }
+}
+
+// Each orbit's stroboscopic points are mapped onto each other by the
+// closed-form simulation, which sticks as often.
+void CheckAgainstClosedForm(const ForcedParams& p, const ForcedOrbits& r) {
+  for (const ForcedScanOrbit& o : r.orbits) {
+    ASSERT_EQ(static_cast<int>(o.points.size()), o.orbit.m);
+    ref::PieceSim<ref::CoulombPiece> sim(
+        ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
+    Real t = 0, x = o.points[0][0], y = o.points[0][1];
+    const Real T = 2 * std::acos(Real(-1)) / p.omega;
+    for (int j = 1; j <= o.orbit.m; ++j) {
+      sim.Run(t, x, y, j * T);
+      const Vec2 next = o.points[j % o.orbit.m];
+      EXPECT_NEAR(static_cast<double>(x), next[0], 1e-9) << "m " << o.orbit.m << " point " << j;
+      EXPECT_NEAR(static_cast<double>(y), next[1], 1e-9) << "m " << o.orbit.m << " point " << j;
+    }
+    EXPECT_EQ(sim.sticks, o.orbit.sticks) << "m " << o.orbit.m;
+  }
+}
+
+TEST(ForcedScan, FloorStickSlipOrbitsAgreeWithTheClosedForm) {
+  const ForcedParams p = Coulomb(0.4, 0.3, 0.05, 0, 0.7, 0.6);
+  const ForcedOrbits r = Scan(p);
+  ASSERT_TRUE(r.ok());
+  int stick_slip = 0;
+  for (const ForcedScanOrbit& o : r.orbits) stick_slip += o.orbit.sticks > 0;
+  EXPECT_GE(stick_slip, 1);
+  CheckAgainstClosedForm(p, r);
+}
+
+TEST(ForcedScan, BeltStickSlipOrbitsAgreeWithTheClosedForm) {
+  const ForcedParams p = Coulomb(0.4, 0.25, 0.05, 0.2, 0.3, 0.8);
+  const ForcedOrbits r = Scan(p);
+  ASSERT_TRUE(r.ok());
+  ASSERT_FALSE(r.orbits.empty());
+  CheckAgainstClosedForm(p, r);
+}
+
+// Past the PD of the forced Stribeck scene (studies/stribeck_forced.ini, PD at
+// Omega = 0.6182) the scan finds the doubled orbit: m = 2, two sticks, stable,
+// with the m = 1 orbit unstable; the long-double RKF78 reference maps its two
+// stroboscopic points onto each other.
+TEST(ForcedScan, FindsThePeriodDoubledOrbit) {
+  ForcedParams p;
+  p.base.law = LawKind::kStribeck;
+  p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
+  p.force = 0.3, p.omega = 0.612;
+  const ForcedOrbits r = Scan(p);
+  ASSERT_TRUE(r.ok());
+  const ForcedScanOrbit* doubled = nullptr;
+  bool m1_unstable = false;
+  for (const ForcedScanOrbit& o : r.orbits) {
+    if (o.orbit.m == 2 && o.orbit.stable) doubled = &o;
+    if (o.orbit.m == 1 && o.orbit.sticks == 1) m1_unstable = !o.orbit.stable;
+  }
+  EXPECT_TRUE(m1_unstable);
+  ASSERT_NE(doubled, nullptr);
+  EXPECT_EQ(doubled->orbit.sticks, 2);
+  const Real T = 2 * std::acos(Real(-1)) / p.omega;
+  for (int j = 0; j < 2; ++j) {
+    ref::PieceSim<ref::OdeintPiece> sim(
+        ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
+    Real t = 0, x = doubled->points[j][0], y = doubled->points[j][1];
+    sim.Run(t, x, y, T);
+    EXPECT_NEAR(static_cast<double>(x), doubled->points[1 - j][0], 1e-9) << "point " << j;
+    EXPECT_NEAR(static_cast<double>(y), doubled->points[1 - j][1], 1e-9) << "point " << j;
+  }
+}
+
+TEST(ForcedScan, RejectsBadOptions) {
+  ForcedScanOptions o;
+  o.max_m = 0;
+  EXPECT_THROW(FindForcedOrbits(ForcedModel(Coulomb(0.3, 0.3, 0, 0, 1, 1.5)), o), InvalidArgument);
+}
+
+TEST(ForcedScan, CancelKeepsWhatWasFound) {
+  ForcedScanOptions o;
+  int polls = 0;
+  o.cancelled = [&] { return ++polls > 3; };
+  const ForcedOrbits r = FindForcedOrbits(ForcedModel(Coulomb(0.3, 0.3, 0, 0, 1, 1.5)), o);
+  EXPECT_EQ(r.status, ForcedScanStatus::kCancelled);
+}
+
+}  // namespace
+}  // namespace stickslip
