@@ -6,7 +6,7 @@ if (!exists("outdir")) outdir = "plots"
 data = datadir . "/fig05.tsv"
 beta = 0.05; v = 0.25; mu_s = 0.4; x_start = 0; xdot_start = 0.25
 
-set terminal pngcairo size 900,700 noenhanced butt font "Sans,12"
+set terminal pngcairo size 900,700 enhanced butt font "Sans,12"
 set output outdir . "/fig05_phase.png"
 set datafile separator "\t"
 # The stick set Omega: x' = v, |x + 2 beta v| <= mu_s.
@@ -14,12 +14,13 @@ set print $omega
 print sprintf("%.17g\t%.17g", -mu_s - 2*beta*v, v)
 print sprintf("%.17g\t%.17g", mu_s - 2*beta*v, v)
 unset print
-set title "Seed fig. 5: stick-slip limit cycle from (0, 0.25)\nβ = 0.05, v = 0.25, μs = 0.4, μm = 0.25, vm = 0.5 (cubic law)"
-set xlabel "displacement x"
-set ylabel "velocity x'"
+set title "Seed fig. 5: stick-slip limit cycle from (0, 0.25)\nβ = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5 (cubic law)"
+set xlabel "displacement x (dimensionless)"
+set ylabel "velocity dx/dt (dimensionless)"
 set grid
-set key left center box opaque
+set key outside below center horizontal box
+set bmargin 8
 plot $omega using 1:2 with lines lw 10 lc rgb "#f4a6a6" title "stick set Ω", \
-     data using 2:3 with lines lw 1.5 lc rgb "#1f77b4" title "trajectory (slip)", \
+     data using 2:3 with lines lw 1.5 lc rgb "#0072b2" title "trajectory (slip)", \
      data using 2:(strcol(4) eq "stick" ? $3 : NaN) with lines lw 3 lc rgb "#d62728" title "stick phase", \
      "+" using (x_start):(xdot_start) every ::0::0 with points pt 7 ps 1.5 lc rgb "black" title "start (0, 0.25)"

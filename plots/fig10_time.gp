@@ -8,19 +8,19 @@ data = datadir . "/fig09.tsv"
 v = 0.45; mu_s = 0.4; k1 = 0.45; k3 = 0.6
 x_bar = mu_s - k1*v + k3*v**3   # steady sliding, design notes section 1
 
-set terminal pngcairo size 1100,900 noenhanced butt font "Sans,12"
+set terminal pngcairo size 1100,900 enhanced butt font "Sans,12"
 set output outdir . "/fig10_time.png"
 set datafile separator "\t"
-set multiplot layout 2,1 title "Seed fig. 10: displacement and velocity at v = 0.45 from (0, 0.45)\nβ = 0.05, μs = 0.4, μm = 0.25, vm = 0.5 (cubic law)"
+set multiplot layout 2,1 title "Seed fig. 10: displacement and velocity at v = 0.45 from (0, 0.45)\nβ = 0.05, μ_s = 0.4, μ_m = 0.25, v_m = 0.5 (cubic law)"
 set grid
 set key outside right top box
-set ylabel "x, x'"
-set xlabel "time t"
+set ylabel "x, dx/dt (dimensionless)"
+set xlabel "time t (dimensionless)"
 set title "the whole run: decay to steady sliding x = x̄ = 0.2522"
-plot v with lines dt 2 lw 1 lc rgb "#888888" title "x' = v", \
+plot v with lines dt 2 lw 1 lc rgb "#888888" title "dx/dt = v", \
      x_bar with lines dt 3 lw 1.5 lc rgb "#ff7f0e" title "x = x̄", \
-     data using 1:2 with lines lw 1 lc rgb "#2ca02c" title "x", \
-     data using 1:3 with lines lw 1 lc rgb "#1f77b4" title "x'", \
+     data using 1:2 with lines lw 1 lc rgb "#009e73" title "x", \
+     data using 1:3 with lines lw 1 lc rgb "#0072b2" title "dx/dt", \
      data using 1:(strcol(4) eq "stick" ? $3 : NaN) with lines lw 3 lc rgb "#d62728" title "stick"
 set title "the first 30 time units: the stick phase"
 set xrange [0:30]

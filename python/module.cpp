@@ -1,8 +1,8 @@
 // The Python module `stickslip` (pybind11): parameters, exceptions and the
 // small functions; the option and result types, the computing functions and
 // the chart are bound in py_options.cpp, py_results.cpp, py_compute.cpp and
-// py_chart.cpp. Library exceptions become Python exceptions with the same
-// message; Ctrl-C raises KeyboardInterrupt (py_common.hpp, Interrupt).
+// py_chart.cpp; restarts in py_restart.cpp. Library exceptions become Python exceptions with the
+// same message; Ctrl-C raises KeyboardInterrupt (py_common.hpp, Interrupt).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -121,7 +121,7 @@ PYBIND11_MODULE(_core, m) {
       .def("__repr__", [](const ss::Params& p) {
         std::string s = "Params(law='" + std::string(ss::LawName(p.law)) + "'";
         for (const auto& n : ss::ParameterNames(p.law))
-          s += ", " + n + "=" + py::repr(py::float_(ss::GetParameter(p, n))).cast<std::string>();
+          s += ", " + n + "=" + Repr(ss::GetParameter(p, n));
         return s + ")";
       });
   m.def(
@@ -150,4 +150,5 @@ PYBIND11_MODULE(_core, m) {
   BindCompute(m);
   BindCharts(m);
   BindForced(m);
+  BindRestart(m);
 }

@@ -29,6 +29,9 @@ py::array ReadOnlyBool(const std::vector<bool>& v);
 // A read-only NumPy array of strings (dtype U).
 py::array ReadOnlyStrings(const std::vector<std::string>& v);
 
+// Python's repr of x (every digit, as a message shows a value).
+inline std::string Repr(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
+
 // Raises stickslip.NumericalError (a RuntimeError) with the message.
 [[noreturn]] void RaiseNumerical(const std::string& message);
 void SetNumericalError(py::object* type);
@@ -68,6 +71,7 @@ void BindResults(py::module_& m);
 void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
+void BindRestart(py::module_& m);
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.
 py::object GetItem(const py::object& self, const std::string& key);

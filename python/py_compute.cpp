@@ -15,21 +15,19 @@ namespace stickslip::python {
 
 namespace {
 
-std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
-
 // simulate(): rows are t_end / dt + 1 plus one per switch, at most max_rows.
 Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, double dt,
                     long max_rows, std::optional<double> rtol, std::optional<double> atol,
                     const py::object& integrator, const py::object& method) {
   if (!std::isfinite(x0) || !std::isfinite(xdot0))
-    throw InvalidArgument("x0, xdot0 = " + Num(x0) + ", " + Num(xdot0) + " must be finite");
-  if (!(t_end > 0)) throw InvalidArgument("t_end = " + Num(t_end) + " must be > 0");
-  if (!(dt > 0)) throw InvalidArgument("dt = " + Num(dt) + " must be > 0");
+    throw InvalidArgument("x0, xdot0 = " + Repr(x0) + ", " + Repr(xdot0) + " must be finite");
+  if (!(t_end > 0)) throw InvalidArgument("t_end = " + Repr(t_end) + " must be > 0");
+  if (!(dt > 0)) throw InvalidArgument("dt = " + Repr(dt) + " must be > 0");
   if (max_rows < 2)
     throw InvalidArgument("max_rows = " + std::to_string(max_rows) + " must be >= 2");
   const double grid_rows = std::floor(t_end / dt) + 1;
   if (!(grid_rows <= static_cast<double>(max_rows)))
-    throw InvalidArgument("t_end / dt = " + Num(t_end / dt) + " gives more rows than max_rows = " +
+    throw InvalidArgument("t_end / dt = " + Repr(t_end / dt) + " gives more rows than max_rows = " +
                           std::to_string(max_rows) + " (raise max_rows or dt)");
   const FlowOptions options = Solver(FlowOptions(), rtol, atol, integrator, method);
   const Model model(p);
@@ -61,10 +59,10 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
   interrupt.RaiseIfInterrupted();
   if (too_many)
     throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
-                          " at t = " + Num(t.back()) + " (raise max_rows or dt)");
+                          " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
   if (!r.ok())
     RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message +
-                   " (at t = " + Num(r.t) + " in " + ModeName(r.mode) + ")");
+                   " (at t = " + Repr(r.t) + " in " + ModeName(r.mode) + ")");
   Trajectory out;
   out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xdot);
   py::array names = ReadOnlyStrings(
@@ -87,7 +85,7 @@ Orbit PeriodicOrbit(const Params& p, std::optional<double> a_guess, bool floquet
   const std::string err = options.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
   if (a_guess && !(*a_guess > 0))
-    throw InvalidArgument("a_guess = " + Num(*a_guess) + " must be > 0");
+    throw InvalidArgument("a_guess = " + Repr(*a_guess) + " must be > 0");
   const Model model(p);
   Interrupt interrupt;
   OrbitResult r;

@@ -145,15 +145,18 @@ void BindBranch(py::module_& m) {
                              [](const Branch& b) { return b.status != ContinuationStatus::kOk; });
 }
 
+// result[param1] and result[param2] are p1 and p2; any other key as GetItem.
+template <typename T>
+py::object ByParamName(const py::object& self, const std::string& key) {
+  const auto& c = self.cast<const T&>();
+  if (key == c.param1) return self.attr("p1");
+  if (key == c.param2) return self.attr("p2");
+  return GetItem(self, key);
+}
+
 void BindChartAndBasins(py::module_& m) {
   py::class_<ChartCurve>(m, "ChartCurve", "One HB, GR or LP curve; curve[param1] is p1.")
-      .def("__getitem__",
-           [](const py::object& self, const std::string& key) -> py::object {
-             const auto& c = self.cast<const ChartCurve&>();
-             if (key == c.param1) return self.attr("p1");
-             if (key == c.param2) return self.attr("p2");
-             return GetItem(self, key);
-           })
+      .def("__getitem__", &ByParamName<ChartCurve>, py::arg("key"))
       .def_readonly("kind", &ChartCurve::kind)
       .def_property_readonly("label",
                              [](const ChartCurve& c) { return std::string(CurveLabel(c.kind)); })
@@ -171,13 +174,7 @@ void BindChartAndBasins(py::module_& m) {
       .def_readonly("seconds", &ChartCurve::seconds)
       .def_readonly("evaluations", &ChartCurve::evaluations);
   py::class_<ChartPoint>(m, "ChartPoint", "A codimension-two point (GH, GR-LP).")
-      .def("__getitem__",
-           [](const py::object& self, const std::string& key) -> py::object {
-             const auto& c = self.cast<const ChartPoint&>();
-             if (key == c.param1) return self.attr("p1");
-             if (key == c.param2) return self.attr("p2");
-             return GetItem(self, key);
-           })
+      .def("__getitem__", &ByParamName<ChartPoint>, py::arg("key"))
       .def_readonly("label", &ChartPoint::label)
       .def_readonly("param1", &ChartPoint::param1)
       .def_readonly("param2", &ChartPoint::param2)

@@ -3,6 +3,7 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <grp.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -100,6 +101,45 @@ inline std::set<std::string> Listing(const std::string& dir) {
   return names;
 }
 
+// A shell word: s in single quotes.
+inline std::string ShellQuoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The fixture of the apps' end-to-end tests: a fresh directory per test
+// (dir_), removed after it, and RunApp, which runs an app of the build tree
+// through the shell with stdout and stderr captured into out_ and err_.
+class AppTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = ::testing::TempDir() + "ss_app_test_XXXXXX";
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override {
+    if (!dir_.empty()) {
+      EXPECT_EQ(std::system(("rm -rf " + ShellQuoted(dir_)).c_str()), 0);
+    }
+  }
+  // Runs `bin_dir/app args` (args: shell words) under `timeout -s signal
+  // seconds` (--preserve-status: a signal's exit code is the app's own);
+  // returns its exit code, -1 if it ended by a signal.
+  int RunApp(const std::string& bin_dir, const std::string& app, const std::string& args,
+             const std::string& signal = "KILL", int seconds = 300) {
+    const std::string cmd = "timeout --preserve-status -s " + signal + " " +
+                            std::to_string(seconds) + " " + ShellQuoted(bin_dir + "/" + app) + " " +
+                            args + " >" + ShellQuoted(dir_ + "/stdout") + " 2>" +
+                            ShellQuoted(dir_ + "/stderr");
+    const int status = std::system(cmd.c_str());
+    out_ = ReadFile(dir_ + "/stdout");
+    err_ = ReadFile(dir_ + "/stderr");
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string dir_, out_, err_;
+};
+
 // How to run an app in a child process.
 struct Launch {
   std::string out_path = "/dev/null", err_path = "/dev/null";  // stdout, stderr
@@ -109,7 +149,24 @@ struct Launch {
   double signal_after = 0;
   long fsize_limit = -1;  // RLIMIT_FSIZE in bytes, with SIGXFSZ at its default
   std::string path_env;   // PATH for the child, if not empty
+  // Count signal_after from the moment the child catches `signal` (its
+  // handler installed; or from 5 s if that cannot be seen): a signal sent
+  // earlier would just kill it.
+  bool signal_when_caught = false;
+  int run_as = -1;  // as root: the child drops to this user and group id first
 };
+
+// Whether a process has a handler for signal sig: the SigCgt mask of
+// /proc/PID/status (Linux). False if that cannot be read.
+inline bool CatchesSignal(pid_t pid, int sig) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("SigCgt:", 0) != 0) continue;
+    const unsigned long long mask = std::strtoull(line.c_str() + 7, nullptr, 16);
+    return (mask >> (sig - 1)) & 1;
+  }
+  return false;
+}
 
 struct Outcome {
   int code = -1;   // exit status, -1 if ended by a signal
@@ -141,6 +198,9 @@ inline pid_t Start(const std::string& app, const std::vector<std::string>& args,
       if (::setrlimit(RLIMIT_FSIZE, &lim) != 0) ::_exit(125);
     }
     if (!l.path_env.empty()) ::setenv("PATH", l.path_env.c_str(), 1);
+    if (l.run_as >= 0 &&
+        (::setgroups(0, nullptr) != 0 || ::setgid(l.run_as) != 0 || ::setuid(l.run_as) != 0))
+      ::_exit(125);
     for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGXFSZ}) ::signal(s, SIG_DFL);
     ::execv(argv[0], argv.data());
     ::_exit(127);
@@ -157,13 +217,18 @@ inline Outcome Wait(pid_t pid, const Launch& l) {
   Outcome r;
   r.pid = pid;
   const auto start = std::chrono::steady_clock::now();
-  bool sent = false;
+  bool sent = false, armed = !l.signal_when_caught;
+  double armed_at = 0;
   int status = 0;
   for (;;) {
     if (::waitpid(pid, &status, WNOHANG) == pid) break;
     const double t =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (l.signal != 0 && !sent && t >= l.signal_after) {
+    if (l.signal != 0 && !armed && (CatchesSignal(pid, l.signal) || t > 5.0)) {
+      armed = true;
+      armed_at = t;
+    }
+    if (l.signal != 0 && armed && !sent && t >= armed_at + l.signal_after) {
       ::kill(pid, l.signal);
       sent = true;
     }

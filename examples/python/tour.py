@@ -4,6 +4,10 @@
     PYTHONPATH=build/python /usr/bin/python3 examples/python/tour.py
 """
 import math
+import os
+import shutil
+import subprocess
+import tempfile
 
 import stickslip
 
@@ -40,6 +44,21 @@ print("basins: " + ", ".join("%s %d" % (f, n) for f, n in basins.counts.items() 
 unstable = basins.orbits.pure_slip[0]
 d = stickslip.smallest_disturbance(st, unstable)
 print("smallest disturbance of steady sliding: %.6f in x, %.6f in x'" % (d.x, d.xdot))
+
+# 7. A restart from a labelled point of an ss_continue run (AUTO's IRS), as
+#    `ss_continue --restart DIR --point HB1 --param beta` does.
+exe = os.environ.get("STICKSLIP_SS_CONTINUE") or shutil.which("ss_continue")
+if exe:
+    with tempfile.TemporaryDirectory() as run:
+        subprocess.run([exe, "--no_plots", "--no_estimates", "--out", run], check=True,
+                       stdout=subprocess.DEVNULL)
+        hb1 = stickslip.restart(run, "HB1")
+        in_beta = stickslip.continue_branch(hb1.params, options=hb1.options("beta"))
+    hb_beta = next(s.p for s in in_beta.special if s.label == "HB")
+    print("%r -> HB in beta at %.10f (closed form (k1 - 3 k3 v^2) / 2 = %.10f)" %
+          (hb1, hb_beta, (p.k1 - 3 * p.k3 * hb1.p ** 2) / 2))
+else:
+    print("restart: no ss_continue on PATH (or STICKSLIP_SS_CONTINUE) to write a run")
 
 # Results are read-only NumPy arrays; Ctrl-C interrupts any call.
 assert not branch.points.p.flags.writeable

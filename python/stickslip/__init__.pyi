@@ -422,6 +422,20 @@ class Basins:
     t_settle: Array
     counts: Dict[Fate, int]
     def __getitem__(self, key: str) -> Any: ...
+class LabelledPoint:
+    label: str
+    pt: int
+    type: str
+    param: str
+    p: float
+    params: Params
+    flow: FlowOptions
+    state: Tuple[float, float]
+    period: Optional[float]
+    def options(self, param: Optional[str] = None,
+                to: Optional[float] = None) -> ContinuationOptions: ...
+    def chart_options(self, param2: str = "beta", from_: float = 0.05, to: float = 0.6,
+                      from2: float = 0.0, to2: float = 0.25) -> ChartOptions: ...
 
 def parameter_names(law: LawLike = "cubic") -> List[str]: ...
 def default_range(params: Params, name: str) -> Tuple[float, float]: ...
@@ -474,6 +488,7 @@ def chart(params: Params, param: Optional[str] = None, from_: Optional[float] = 
           rtol: Optional[float] = None, atol: Optional[float] = None,
           integrator: IntegratorLike = None, method: MethodLike = None,
           options: Optional[ChartOptions] = None) -> Chart: ...
+def restart(dir: str, point: Union[str, int]) -> LabelledPoint: ...
 
 # Sweeps (stickslip._sweep): grid x sample on Dask, serially, or on a cluster.
 class SweepError(RuntimeError): ...

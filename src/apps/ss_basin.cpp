@@ -10,6 +10,7 @@
 #include "cli/app.hpp"
 #include "cli/basin_curve.hpp"
 #include "cli/basin_forced.hpp"
+#include "cli/physical.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "stickslip/io/basin_report.hpp"
@@ -176,9 +177,9 @@ int Main(int argc, char** argv) {
   run.Phase("writing");
   app.out().Write("basins.tsv", text(ss::BasinTable(r, desc_model, dist)));
   app.out().Write("orbits.tsv", text(ss::OrbitTable(curves, r.orbits.ok() ? &stability : nullptr)));
-  app.out().Write(
-      "basins.gp",
-      ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""), format));
+  app.out().Write("basins.gp",
+                  ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""),
+                                  format, cli::FigureUnitsOf(cli::ScalesFromArguments(args), "")));
   if (!app.Finish("basins.gp", {figure}, {figure})) return cli::kExitFailed;
 
   PrintSummary(r, dist, stability, desc_model, seconds);

@@ -9,6 +9,7 @@
 #include "chart/chart_region_faces.hpp"
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart/chart.hpp"
@@ -175,7 +176,9 @@ int Main(int argc, char** argv) {
   app.out().Write("codim2.tsv", text(ss::Codim2Table(r, pl, model)));
   if (app.plots()) {
     app.out().Write("regions.tsv", text(ss::RegionsTable(r, pl, model)));
-    app.out().Write("chart.gp", ss::ChartScript(r, pl, ss::ChartTitle(base, pl), format));
+    app.out().Write("chart.gp", ss::ChartScript(r, pl, ss::ChartTitle(base, pl), format,
+                                                cli::FigureUnitsOf(cli::ScalesFromArguments(args),
+                                                                   pl.p1, pl.p2)));
   }
   // Without plots, the older regions and figure do not belong to these curves.
   const std::vector<std::string> stale = app.plots()

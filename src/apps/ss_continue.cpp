@@ -133,11 +133,8 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
   ss::ParameterRange range{0.05, 0.5};
   if (ss::IsParameterName(opts.param)) {
     const ss::Params given = cli::UncheckedModelFromArguments(args, defaults);
-    range = ss::DefaultRange(given, opts.param);
-    if (*restart) {  // from the point to the far end of the default range
-      const double at = ss::GetParameter(given, opts.param);
-      range = {at, std::abs(range.to - at) >= std::abs(range.from - at) ? range.to : range.from};
-    }
+    // A restart runs from the point to the far end of the default range.
+    range = *restart ? ss::RangeFromPoint(given, opts.param) : ss::DefaultRange(given, opts.param);
   }
   opts.from = args.Number("from", range.from / to_param) * to_param;
   *base = cli::ModelFromArguments(args, opts.param, opts.from, defaults);
@@ -292,7 +289,8 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   app.out().Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   app.out().Write("bifurcation.gp",
-                  ss::BifurcationScript(r, opts.param, title, cmp.applies, format));
+                  ss::BifurcationScript(r, opts.param, title, cmp.applies, format,
+                                        cli::FigureUnitsOf(prov.scales, opts.param)));
   if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies, format),
                   ss::BifurcationFigures(true, format)))
     return cli::kExitFailed;

@@ -4,7 +4,9 @@
 #include <functional>
 #include <iostream>
 
+#include "cli/app.hpp"
 #include "cli/output.hpp"
+#include "cli/physical.hpp"
 #include "cli/run_control.hpp"
 #include "stickslip/io/basin_stability_report.hpp"
 
@@ -13,7 +15,7 @@ namespace stickslip::cli {
 void AddBasinCurveOptions(po::options_description& d) {
   d.add_options()("param", Value()->value_name("NAME"),
                   "basin stability against this parameter (needs the box --x_min ...); "
-                  "writes basin_stability.tsv/.gp/.png instead of the grid")(
+                  "writes basin_stability.tsv/.gp/.png (--format) instead of the grid")(
       "from", Value()->value_name("A"), "with --param: first value (default: its range)")(
       "to", Value()->value_name("B"), "with --param: last value (default: its range)")(
       "n", Value()->value_name("N"), "with --param: points, in [2, 10000] (default 41)");
@@ -61,9 +63,11 @@ Curve CurveFromArguments(const Arguments& args, const Params& base, const BasinO
 int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const Params& base,
                            const BasinOptions& opts, double max_time, const Metadata& meta) {
   const Curve c = CurveFromArguments(args, base, opts);
+  const FigureFormat format = FigureFormatOf(args);
+  const std::string figure = FigureFile("basin_stability", format);
   const bool plots = !args.Flag("no_plots");
   OutputSet out(args.Text("out", "plots/basin"),
-                {"basin_stability.tsv", "basin_stability.gp", "basin_stability.png"},
+                {"basin_stability.tsv", "basin_stability.gp", figure},
                 args.Given("out") ? args.Source("out") : "--out", prog);
   RunControl run(prog, max_time);
   const std::function<bool()> cancelled = [&] { return run.Cancelled(); };
@@ -78,17 +82,20 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   TsvTable t = BasinStabilityTable(r, c.param, model, box);
   t.PrependMeta(meta);
   out.Write("basin_stability.tsv", t.str());
-  out.Write("basin_stability.gp", BasinStabilityScript(c.param, "basin stability, " + model));
+  out.Write(
+      "basin_stability.gp",
+      BasinStabilityScript(c.param, model + (r.status == BasinStatus::kOk ? "" : " (partial)"),
+                           format, FigureUnitsOf(ScalesFromArguments(args), c.param)));
   GnuplotResult g{GnuplotStatus::kCancelled, ""};
-  if (plots) g = out.Draw("basin_stability.gp", {"basin_stability.png"}, cancelled);
-  out.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{"basin_stability.png"});
+  if (plots) g = out.Draw("basin_stability.gp", {figure}, cancelled);
+  out.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{figure});
   for (size_t i = 0; i < r.p.size(); ++i) {
     std::cout << c.param << " = " << FormatNumber(r.p[i]) << ":";
     for (const std::string& line : BasinStabilityLines(r.at[i])) std::cout << "  " << line;
     std::cout << "\n";
   }
   std::cout << "wrote " << out.dir() << "/basin_stability.tsv, basin_stability.gp"
-            << (g.ok() ? " and basin_stability.png" : "") << "\n";
+            << (g.ok() ? " and " + figure : "") << "\n";
   if (r.status != BasinStatus::kOk) {
     PrintError(prog, std::string("partial curve written (") + BasinStatusName(r.status) +
                          "): " + (run.Cancelled() ? run.Reason() : r.message));

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/study.hpp"
+#include "stickslip/io/figure_style.hpp"
 
 namespace stickslip::cli {
 
@@ -26,11 +27,18 @@ struct PhysicalAxis {
   std::string physical;       // belt_speed, damping, speed_m, speed_s, delta_phys
   std::string dimensionless;  // v, beta, v_m, v_s, delta
   double factor = 1;
+  std::string label;  // the figure's axis words, symbol and SI unit
 };
 
 // The axis of a physical name or of a dimensionless name that has a physical
 // counterpart; nothing for the others (mu_s, mu_m, mu_k, k5: no units, or
 // mass, stiffness, gravity: they change the scales themselves).
 std::optional<PhysicalAxis> AxisOf(const std::string& name, const Scales& s);
+
+// A figure's units: SI for a physical run (the parameter axes p1 and p2, by
+// their dimensionless names, in physical form where they have units), else
+// dimensionless.
+FigureUnits FigureUnitsOf(const std::optional<Scales>& s, const std::string& p1,
+                          const std::string& p2 = "");
 
 }  // namespace stickslip::cli

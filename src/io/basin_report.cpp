@@ -76,7 +76,9 @@ TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves, const BasinStabil
 
 std::string BasinScript(const BasinResult& r, const Model& model,
                         const std::vector<OrbitCurveRows>& curves, const std::string& title,
-                        FigureFormat format) {
+                        FigureFormat format, const FigureUnits& units) {
+  // In the figure's units: x times L, x' times L / t0 (1 and 1 dimensionless).
+  const double ul = units.length, uv = units.length / units.time;
   const double dx = r.nx > 1 ? (r.x_hi - r.x_lo) / (r.nx - 1) : 1;
   const double dy = r.ny > 1 ? (r.xdot_hi - r.xdot_lo) / (r.ny - 1) : 1;
   const Vec2 exit = model.ExitPoint();
@@ -87,10 +89,12 @@ std::string BasinScript(const BasinResult& r, const Model& model,
      << FigurePreamble(format, 1000, 900) << "set output '" << FigureFile("basins", format)
      << "'.suffix\n"
      << "set title " << GnuplotQuoted(FigureTitle(title, {})) << "\n"
-     << "set xlabel 'initial displacement x (dimensionless)'\n"
-     << "set ylabel 'initial velocity dx/dt (dimensionless)'\n"
-     << "set xrange [" << Num(r.x_lo - dx / 2) << ":" << Num(r.x_hi + dx / 2) << "]\n"
-     << "set yrange [" << Num(r.xdot_lo - dy / 2) << ":" << Num(r.xdot_hi + dy / 2) << "]\n"
+     << FigureUnitVariables(units) << "set xlabel "
+     << GnuplotQuoted("initial displacement x" + units.LengthUnit()) << "\n"
+     << "set ylabel " << GnuplotQuoted("initial velocity dx/dt" + units.SpeedUnit()) << "\n"
+     << "set xrange [" << Num(ul * (r.x_lo - dx / 2)) << ":" << Num(ul * (r.x_hi + dx / 2)) << "]\n"
+     << "set yrange [" << Num(uv * (r.xdot_lo - dy / 2)) << ":" << Num(uv * (r.xdot_hi + dy / 2))
+     << "]\n"
      << "unset grid\n"
      << "set palette defined (-0.5 " << fill(kFillEquilibrium) << ", 0.5 " << fill(kFillEquilibrium)
      << ", 0.5 " << fill(kFillStickSlip) << ", 1.5 " << fill(kFillStickSlip) << ", 1.5 "
@@ -99,10 +103,11 @@ std::string BasinScript(const BasinResult& r, const Model& model,
      << "set cbrange [-0.5:3.5]\nunset colorbox\n"
      << "fate(s) = s eq 'steady-sliding' ? 0 : s eq 'stick-slip' ? 1 : "
         "s eq 'pure-slip' ? 2 : 3\n"
-     << "set arrow from " << Num(exit[0] - 2 * model.params().mu_s) << "," << Num(model.v())
-     << " to " << Num(exit[0]) << "," << Num(model.v()) << " nohead lw 4 lc rgb 'black' front\n"
+     << "set arrow from " << Num(ul * (exit[0] - 2 * model.params().mu_s)) << ","
+     << Num(uv * model.v()) << " to " << Num(ul * exit[0]) << "," << Num(uv * model.v())
+     << " nohead lw 4 lc rgb 'black' front\n"
      << "set bmargin 9\n"
-     << "plot 'basins.tsv' using 1:2:(fate(strcol(3))) with image notitle";
+     << "plot 'basins.tsv' using ($1*ul):($2*uv):(fate(strcol(3))) with image notitle";
   // Key entries for the fates that occur, in the order of fate().
   const char* fills[] = {kFillEquilibrium, kFillStickSlip, kFillPureSlip, kFillUndecided};
   const char* names[] = {"basin: steady sliding", "basin: stick-slip", "basin: pure slip",
@@ -115,11 +120,11 @@ std::string BasinScript(const BasinResult& r, const Model& model,
   for (size_t k = 0; k < curves.size(); ++k) {
     const bool stick = curves[k].kind == "stick-slip";
     const int ls = (stick ? kStyleStickSlip : kStylePureSlip) + (curves[k].stable ? 0 : 1);
-    os << ", \\\n     'orbits.tsv' using 4:($1 == " << k << " ? $5 : NaN) with lines ls " << ls
-       << " lw 3 title '" << (stick ? "stick-slip" : "pure slip")
+    os << ", \\\n     'orbits.tsv' using ($4*ul):($1 == " << k << " ? $5*uv : NaN) with lines ls "
+       << ls << " lw 3 title '" << (stick ? "stick-slip" : "pure slip")
        << (curves[k].stable ? " orbit, stable" : " orbit, unstable") << "'";
   }
-  os << ", \\\n     '+' using (" << Num(r.orbits.steady.x) << "):(0) every ::0::0 with points "
+  os << ", \\\n     '+' using (" << Num(ul * r.orbits.steady.x) << "):(0) every ::0::0 with points "
      << "pt 7 ps 1.5 lc rgb 'black' title 'steady sliding (x̄, 0)'\n"
      << "unset output\n";
   return os.str();

@@ -36,25 +36,26 @@ TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& pa
   return t;
 }
 
-std::string BasinStabilityScript(const std::string& param, const std::string& title) {
+std::string BasinStabilityScript(const std::string& param, const std::string& title,
+                                 FigureFormat format, const FigureUnits& units) {
+  // The shared style (figure_style.hpp): colour by kind, stable solid (every
+  // attractor's basin), a thin dotted gray for the undecided share.
   std::ostringstream os;
   os << "# Basin stability written by ss_basin; run `gnuplot basin_stability.gp` here.\n"
      << "if (!exists('suffix')) suffix = ''\n"
-     << "set terminal pngcairo size 900,600 enhanced font ',12'\n"
-     << "set output 'basin_stability.png'.suffix\n"
-     << "set datafile separator '\\t'\n"
-     << "set datafile columnheaders\n"
-     << "set title '" << title << "' noenhanced\n"
-     << "set xlabel '" << param << "' noenhanced\n"
+     << FigurePreamble(format, 1000, 720) << FigureUnitVariables(units) << "set output '"
+     << FigureFile("basin_stability", format) << "'.suffix\n"
+     << "set title " << GnuplotQuoted(FigureTitle(title, {param})) << "\n"
+     << "set xlabel " << GnuplotQuoted(units.P1Label(param)) << "\n"
      << "set ylabel 'basin stability (fraction of the box)'\n"
-     << "set yrange [-0.02:1.02]\nset key outside right top\nset grid\n"
-     << "plot 'basin_stability.tsv' using 1:2 with linespoints lw 2 pt 7 ps 0.6 "
-        "lc rgb '#3182bd' title 'steady sliding', \\\n"
-     << "     '' using 1:3 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#e6550d' "
-        "title 'stick-slip', \\\n"
-     << "     '' using 1:4 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#31a354' "
-        "title 'pure slip', \\\n"
-     << "     '' using 1:5 with lines lw 1 dt 2 lc rgb 'gray40' title 'undecided'\n"
+     << "set yrange [-0.02:1.02]\nset autoscale xfix\n"
+     << "plot 'basin_stability.tsv' using ($1*up):2 with linespoints ls " << kStyleEquilibrium
+     << " pt 7 ps 0.5 title 'steady sliding', \\\n"
+     << "     '' using ($1*up):3 with linespoints ls " << kStyleStickSlip
+     << " pt 7 ps 0.5 title 'stick-slip', \\\n"
+     << "     '' using ($1*up):4 with linespoints ls " << kStylePureSlip
+     << " pt 7 ps 0.5 title 'pure slip', \\\n"
+     << "     '' using ($1*up):5 with lines ls " << kStyleThreshold << " title 'undecided'\n"
      << "unset output\n";
   return os.str();
 }

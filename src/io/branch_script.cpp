@@ -27,8 +27,18 @@ int Style(PointKind k, bool stable) {
   return stable ? base : base + 1;
 }
 
+// The gnuplot unit variable of a column (FigureUnitVariables): lengths ul,
+// speeds uv, the period ut; the multiplier has none.
+std::string Unit(int col) {
+  return col == kXMin || col == kXMax     ? "ul"
+         : col == kXdMin || col == kXdMax ? "uv"
+         : col == kPeriod                 ? "ut"
+                                          : "1";
+}
+
 // Curves of one column: per branch, kind and stability its own line style
-// (stable solid, unstable dashed), no titles (Key() gives them).
+// (stable solid, unstable dashed), no titles (Key() gives them); the
+// parameter and the column in the figure's units.
 std::string Curves(const ContinuationResult& r, int col, bool periodic, bool equilibrium) {
   std::set<std::tuple<int, int, int>> seen;  // branch, kind, stable
   for (const auto& p : r.points) seen.insert({p.branch, int(p.kind), p.stable ? 1 : 0});
@@ -36,10 +46,10 @@ std::string Curves(const ContinuationResult& r, int col, bool periodic, bool equ
   for (const auto& [b, k, st] : seen) {
     const PointKind kind = static_cast<PointKind>(k);
     if ((kind == PointKind::kEquilibrium ? !equilibrium : !periodic)) continue;
-    os << (os.tellp() > 0 ? ", \\\n     " : "") << "'branch.tsv' using " << kP
-       << ":((strcol(2) eq '" << PointKindName(kind) << "' && $" << kBranch << "==" << b << " && $"
-       << kStable << "==" << st << ") ? $" << col << " : NaN) with lines ls "
-       << Style(kind, st == 1) << " notitle";
+    os << (os.tellp() > 0 ? ", \\\n     " : "") << "'branch.tsv' using ($" << kP
+       << "*up):((strcol(2) eq '" << PointKindName(kind) << "' && $" << kBranch << "==" << b
+       << " && $" << kStable << "==" << st << ") ? $" << col << "*" << Unit(col)
+       << " : NaN) with lines ls " << Style(kind, st == 1) << " notitle";
   }
   return os.str();
 }
@@ -64,7 +74,8 @@ std::string Key(const ContinuationResult& r, bool periodic, bool equilibrium) {
 // then further out, so neighbours (GR next to LP) do not overlap.
 std::string Marks(const ContinuationResult& r, double lo, double hi,
                   const std::function<double(const SpecialPoint&)>& y,
-                  const std::function<bool(const SpecialPoint&)>& use) {
+                  const std::function<bool(const SpecialPoint&)>& use,
+                  const std::string& y_unit = "1") {
   std::vector<SpecialPoint> sp;
   for (const auto& s : r.special)
     if (use(s)) sp.push_back(s);
@@ -76,8 +87,9 @@ std::string Marks(const ContinuationResult& r, double lo, double hi,
     const bool near = i > 0 && sp[i].p - sp[i - 1].p < 0.06 * (hi - lo);
     level = near ? (level + 1) % 4 : 0;
     os << "set label " << 100 + i << " '" << SpecialLabel(sp[i].kind) << "' at "
-       << FormatNumber(sp[i].p) << "," << FormatNumber(y(sp[i])) << " center offset 0,"
-       << offsets[level] << " boxed front font ',10' point ls " << kStyleSpecial << "\n";
+       << "up*" << FormatNumber(sp[i].p) << "," << y_unit << "*" << FormatNumber(y(sp[i]))
+       << " center offset 0," << offsets[level] << " boxed front font ',10' point ls "
+       << kStyleSpecial << "\n";
   }
   return os.str();
 }
@@ -106,7 +118,8 @@ void MultiplierFigure(std::ostringstream& os, const ContinuationResult& r, doubl
                       bool periodic, bool equilibrium, FigureFormat format,
                       const std::string& ext) {
   os << FigureTerminal(format, 1000, 1000) << "set output 'multiplier" << ext << "'.suffix\n"
-     << "set multiplot layout 2,1 title " << GnuplotQuoted("stability along the branch") << "\n";
+     << "set multiplot layout 2,1 title " << GnuplotQuoted("stability along the branch") << "\n"
+     << "set lmargin 12\n";  // the panels' axes aligned
   auto panel = [&](bool has, const std::string& title, const std::string& ylabel,
                    const std::string& marks, const std::string& curves, const std::string& line) {
     os << "set title " << GnuplotQuoted(title) << "\nset ylabel " << GnuplotQuoted(ylabel) << "\n";
@@ -138,7 +151,7 @@ void MultiplierFigure(std::ostringstream& os, const ContinuationResult& r, doubl
 // estimates (3.17) and the averaging amplitude. Extra columns of
 // CompareEstimates: 13 r1, 15 a_ps, 17/18 the seed's x bounds.
 void EstimatesFigure(std::ostringstream& os, bool periodic, FigureFormat format,
-                     const std::string& ext) {
+                     const std::string& ext, const FigureUnits& units) {
   os << FigureTerminal(format, 1000, 1000) << "set output 'estimates" << ext << "'.suffix\n";
   if (!periodic) {
     os << "set label 1 'no periodic orbit in this range' at graph 0.5,0.5 center\n"
@@ -146,22 +159,25 @@ void EstimatesFigure(std::ostringstream& os, bool periodic, FigureFormat format,
     return;
   }
   const std::string po = "(strcol(2) ne 'equilibrium')";
-  os << "set multiplot layout 2,1\n"
+  os << "set multiplot layout 2,1\nset lmargin 12\n"
      << "set title 'smallest slip velocity: computed and estimated'\n"
-     << "set ylabel " << GnuplotQuoted("smallest velocity dx/dt (dimensionless)") << "\n"
-     << "plot 'branch.tsv' using 1:(" << po << " ? $" << kXdMin << " : NaN) with lines ls "
+     << "set ylabel " << GnuplotQuoted("smallest velocity dx/dt" + units.SpeedUnit()) << "\n"
+     << "plot 'branch.tsv' using ($1*up):(" << po << " ? $" << kXdMin << "*uv : NaN) with lines ls "
      << kStyleReference << " title 'computed', \\\n"
-     << "     '' using 1:13 with lines ls " << kStyleEstimate1 << " title 'seed (3.17): r_1', \\\n"
-     << "     '' using 1:(-$15) with lines ls " << kStyleEstimate2
+     << "     '' using ($1*up):($13*uv) with lines ls " << kStyleEstimate1
+     << " title 'seed (3.17): r_1', \\\n"
+     << "     '' using ($1*up):(-$15*uv) with lines ls " << kStyleEstimate2
      << " title 'averaging: -a_{ps}'\n"
      << "set title \"displacement range: computed and the seed's bound\"\n"
-     << "set ylabel " << GnuplotQuoted("displacement x (dimensionless)") << "\n"
-     << "plot 'branch.tsv' using 1:(" << po << " ? $" << kXMax << " : NaN) with lines ls "
+     << "set ylabel " << GnuplotQuoted("displacement x" + units.LengthUnit()) << "\n"
+     << "plot 'branch.tsv' using ($1*up):(" << po << " ? $" << kXMax << "*ul : NaN) with lines ls "
      << kStyleReference << " title 'computed x max, x min', \\\n"
-     << "     '' using 1:(" << po << " ? $" << kXMin << " : NaN) with lines ls " << kStyleReference
-     << " notitle, \\\n"
-     << "     '' using 1:18 with lines ls " << kStyleEstimate1 << " title 'seed bound x max', \\\n"
-     << "     '' using 1:17 with lines ls " << kStyleEstimate2 << " title 'seed bound x min'\n"
+     << "     '' using ($1*up):(" << po << " ? $" << kXMin << "*ul : NaN) with lines ls "
+     << kStyleReference << " notitle, \\\n"
+     << "     '' using ($1*up):($18*ul) with lines ls " << kStyleEstimate1
+     << " title 'seed bound x max', \\\n"
+     << "     '' using ($1*up):($17*ul) with lines ls " << kStyleEstimate2
+     << " title 'seed bound x min'\n"
      << "unset multiplot\nunset output\n";
 }
 }  // namespace
@@ -175,14 +191,15 @@ std::vector<std::string> BifurcationFigures(bool estimates, FigureFormat format)
 }
 
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
-                              const std::string& title, bool estimates, FigureFormat format) {
+                              const std::string& title, bool estimates, FigureFormat format,
+                              const FigureUnits& units) {
   std::ostringstream os;
   os << "# Bifurcation diagrams written by ss_continue; run `gnuplot bifurcation.gp` in this\n"
      << "# directory. Solid: stable, dashed: unstable; blue stick-slip, vermillion pure slip,\n"
      << "# gray steady sliding. GR grazing-sliding, HB Hopf, LP fold.\n"
      << "if (!exists('suffix')) suffix = ''\n"
-     << FigurePreamble(format, 1000, 720) << "set xlabel "
-     << GnuplotQuoted(ParameterAxisLabel(param)) << "\nset title "
+     << FigurePreamble(format, 1000, 720) << FigureUnitVariables(units) << "set xlabel "
+     << GnuplotQuoted(units.P1Label(param)) << "\nset title "
      << GnuplotQuoted(FigureTitle(title, {param})) << "\n"
      << "set offsets 0, 0, graph 0.08, graph 0.08\n";
   bool periodic = false, equilibrium = false;
@@ -194,7 +211,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
     hi = i == 0 ? r.points[i].p : std::max(hi, r.points[i].p);
   }
   if (!(hi > lo)) lo -= 0.5, hi += 0.5;
-  os << "set xrange [" << FormatNumber(lo) << ":" << FormatNumber(hi) << "]\n";
+  os << "set xrange [up*" << FormatNumber(lo) << ":up*" << FormatNumber(hi) << "]\n";
   const std::string ext = std::string(".") + FigureFormatName(format);
   // gnuplot refuses a plot with no defined point: an empty frame that says so.
   auto empty = [&](const std::string& why) {
@@ -211,26 +228,25 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
       empty(r.points.empty() ? "no points computed" : "no periodic orbit in this range");
     os << "unset output\n";
   };
-  const std::string unit = " (dimensionless)";
-  plot("bifurcation_x", "displacement x: min and max" + unit,
+  plot("bifurcation_x", "displacement x: min and max" + units.LengthUnit(),
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.x_max; }, all),
+           r, lo, hi, [](const SpecialPoint& s) { return s.x_max; }, all, "ul"),
        Join(Curves(r, kXMax, true, true), Curves(r, kXMin, true, false)) + Key(r, true, true),
        !r.points.empty());
-  plot("bifurcation_xdot", "velocity dx/dt: min and max" + unit,
+  plot("bifurcation_xdot", "velocity dx/dt: min and max" + units.SpeedUnit(),
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.xdot_min; }, all),
+           r, lo, hi, [](const SpecialPoint& s) { return s.xdot_min; }, all, "uv"),
        Join(Curves(r, kXdMax, true, true), Curves(r, kXdMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   auto periodic_point = [](const SpecialPoint& s) {
     return std::isfinite(s.period) && s.period > 0;
   };
-  plot("period", "period T" + unit,
+  plot("period", "period T" + units.TimeUnit(),
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.period; }, periodic_point),
+           r, lo, hi, [](const SpecialPoint& s) { return s.period; }, periodic_point, "ut"),
        Curves(r, kPeriod, true, false) + Key(r, true, false), periodic);
   MultiplierFigure(os, r, lo, hi, periodic, equilibrium, format, ext);
-  if (estimates) EstimatesFigure(os, periodic, format, ext);
+  if (estimates) EstimatesFigure(os, periodic, format, ext, units);
   return os.str();
 }
 

@@ -11,19 +11,11 @@ namespace stickslip {
 namespace {
 struct Symbol {
   const char* name;
-  const char* words;
   const char* symbol;  // gnuplot enhanced text
 };
 constexpr Symbol kSymbols[] = {
-    {"v", "belt speed", "v"},
-    {"beta", "damping ratio", "β"},
-    {"mu_s", "static friction coefficient", "μ_s"},
-    {"mu_m", "minimum friction coefficient", "μ_m"},
-    {"v_m", "speed of minimum friction", "v_m"},
-    {"mu_k", "kinetic friction coefficient", "μ_k"},
-    {"v_s", "Stribeck speed", "v_s"},
-    {"delta", "friction decay rate", "δ"},
-    {"k5", "quintic coefficient", "k_5"},
+    {"v", "v"},      {"beta", "β"},  {"mu_s", "μ_s"}, {"mu_m", "μ_m"}, {"v_m", "v_m"},
+    {"mu_k", "μ_k"}, {"v_s", "v_s"}, {"delta", "δ"},  {"k5", "k_5"},
 };
 
 const Symbol* Find(const std::string& name) {
@@ -37,16 +29,19 @@ std::string SymbolOf(const std::string& name) {
   return s ? s->symbol : name;
 }
 
-constexpr const char* kFill[] = {"#eeeeee", "#f4a6a6", "#a6c8f4", "#d9b3ef"};
+// Region fills in Region's order: the kinds' fills of figure_style.hpp (as the
+// basins), bistable purple.
+const char* const kFill[] = {kFillEquilibrium, kFillStickSlip, kFillPureSlip, "#d9b3ef"};
 
-// Polygons, largest first: a face inside a hole is painted over the face around.
-void Polygons(std::ostream& os, const ChartResult& r) {
+// Polygons, largest first: a face inside a hole is painted over the face
+// around. Vertices in the figure's units (u1, u2 per parameter).
+void Polygons(std::ostream& os, const ChartResult& r, double u1, double u2) {
   int id = 1;
   for (const RegionFace& rf : r.faces) {
     const auto& ring = rf.face.outer;
-    os << "set object " << id++ << " polygon from " << ring[0][0] << "," << ring[0][1];
+    os << "set object " << id++ << " polygon from " << u1 * ring[0][0] << "," << u2 * ring[0][1];
     for (size_t i = 1; i <= ring.size(); ++i)
-      os << " \\\n  to " << ring[i % ring.size()][0] << "," << ring[i % ring.size()][1];
+      os << " \\\n  to " << u1 * ring[i % ring.size()][0] << "," << u2 * ring[i % ring.size()][1];
     os << " \\\n  fc rgb '" << kFill[static_cast<int>(rf.region)]
        << "' fs solid 1.0 noborder behind\n";
   }
@@ -79,7 +74,7 @@ void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
       if (!clash) break;
     }
     placed.push_back({p.p1 + dx[k] * 0.03 * pl.width1(), p.p2 + dy[k] * 0.03 * pl.width2()});
-    os << "set label '" << Name(p.label) << "' at " << p.p1 << "," << p.p2 << " offset "
+    os << "set label '" << Name(p.label) << "' at up*" << p.p1 << ",up2*" << p.p2 << " offset "
        << (dx[k] > 0 ? "0.8" : "-0.8") << "," << (dy[k] > 0 ? "0.9" : "-0.9") << " "
        << (dx[k] > 0 ? "left" : "right") << " front font ',13' noenhanced\n";
   }
@@ -98,9 +93,8 @@ void Curves(std::ostream& os, const ChartResult& r) {
       {CurveKind::kHopf, CurvePointType::kSupercritical, "black", "1", "HB, supercritical"},
       {CurveKind::kHopf, CurvePointType::kSubcritical, "black", "(7,5)", "HB, subcritical"},
       {CurveKind::kGrazing, CurvePointType::kPersistence, "#c00000", "1", "GR, persistence"},
-      {CurveKind::kGrazing, CurvePointType::kNonsmoothFold, "#c00000", "(7,5)",
-       "GR, nonsmooth fold"},
-      {CurveKind::kFold, CurvePointType::kFold, "#0050d0", "1", "LP, pure-slip fold"},
+      {CurveKind::kGrazing, CurvePointType::kNonsmoothFold, "#c00000", "(7,5)", "GR, nonsmooth fold"},
+      {CurveKind::kFold, CurvePointType::kFold, "#009e73", "1", "LP, pure-slip fold"},  // green: not on blue
   };
   for (const Style& st : styles) {
     bool present = false;
@@ -110,8 +104,8 @@ void Curves(std::ostream& os, const ChartResult& r) {
     if (!present) continue;
     for (size_t i = 0; i < r.curves.size(); ++i) {
       if (r.curves[i].kind != st.kind) continue;
-      os << ", \\\n     'curves.tsv' using 1:(($4 == " << i + 1 << " && strcol(9) eq '"
-         << Name(st.type) << "') ? $2 : NaN) with lines lw 2.5 lc rgb '" << st.color << "' dt "
+      os << ", \\\n     'curves.tsv' using ($1*up):(($4 == " << i + 1 << " && strcol(9) eq '"
+         << Name(st.type) << "') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '" << st.color << "' dt "
          << st.dash;
       os << (present ? std::string(" title '") + st.title + "'" : std::string(" notitle"));
       present = false;  // one key entry per style
@@ -120,10 +114,7 @@ void Curves(std::ostream& os, const ChartResult& r) {
 }
 }  // namespace
 
-std::string AxisLabel(const std::string& name) {
-  const Symbol* s = Find(name);
-  return s ? std::string(s->words) + " " + s->symbol : name;
-}
+std::string AxisLabel(const std::string& name) { return ParameterAxisLabel(name); }
 
 std::string ChartTitle(const Params& base, const Plane& plane) {
   const char* law[] = {"cubic", "Coulomb", "Stribeck", "Leine"};  // LawKind's order
@@ -141,27 +132,30 @@ std::string ChartTitle(const Params& base, const Plane& plane) {
 }
 
 std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
-                        FigureFormat format) {
+                        FigureFormat format, const FigureUnits& units) {
+  const double u1 = units.p1.factor, u2 = units.p2.factor;
   std::ostringstream os;
   os.precision(17);
   os << "# Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.\n"
      << "# Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,\n"
-     << "# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.\n"
+     << "# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP green.\n"
      << "if (!exists('suffix')) suffix = ''\n"
      << FigureTerminal(format, 1000, 820) << "set output '" << FigureFile("chart", format)
      << "'.suffix\n"
      << "set datafile separator '\\t'\n"
      << "set datafile columnheaders\n"
-     << "set xlabel '" << AxisLabel(plane.p1) << "'\nset ylabel '" << AxisLabel(plane.p2) << "'\n"
-     << "set xrange [" << plane.from1 << ":" << plane.to1 << "]\n"
-     << "set yrange [" << plane.from2 << ":" << plane.to2 << "]\n"
+     << "set encoding utf8\n"
+     << FigureUnitVariables(units) << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1))
+     << "\nset ylabel " << GnuplotQuoted(units.P2Label(plane.p2)) << "\n"
+     << "set xrange [" << u1 * plane.from1 << ":" << u1 * plane.to1 << "]\n"
+     << "set yrange [" << u2 * plane.from2 << ":" << u2 * plane.to2 << "]\n"
      << "set title \"" << title << "\"\n"
      << "set lmargin at screen 0.11\nset rmargin at screen 0.96\n"
-     << "set tmargin at screen 0.93\nset bmargin at screen 0.25\n"
+     << "set tmargin at screen 0.93\nset bmargin at screen 0.21\n"
      << "set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 "
         "samplen 3\n"
      << "set tics out nomirror\nset border 3 front\n";
-  Polygons(os, r);
+  Polygons(os, r, u1, u2);
   Codim2Labels(os, r, plane);
   os << "plot ";
   const char* sep = "";
@@ -175,7 +169,8 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
   }
   if (*sep == 0) os << "NaN notitle";
   Curves(os, r);
-  os << ", \\\n     'codim2.tsv' using 2:3 with points pt 7 ps 1.4 lc rgb 'black' notitle\n"
+  os << ", \\\n     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' "
+        "notitle\n"
      << "unset output\n";
   return os.str();
 }

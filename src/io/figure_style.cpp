@@ -138,8 +138,11 @@ std::string FigureTitle(const std::string& description, const std::vector<std::s
       continue;
     }
     const std::string key = it.substr(0, eq), value = it.substr(eq + 1);
-    if (key == "law") {
-      law = EnhancedText(value) + " law";
+    if (key == "law") {  // proper names capitalised, as ChartTitle does
+      const bool named = value == "stribeck" || value == "leine" || value == "coulomb";
+      law = (named ? std::string(1, static_cast<char>(std::toupper(value[0]))) + value.substr(1)
+                   : EnhancedText(value)) +
+            " law";
     } else if (std::find(axes.begin(), axes.end(), key) == axes.end()) {
       out += (out.empty() ? "" : ", ") + EnhancedText(key) + " = " + EnhancedText(value);
     }
@@ -160,15 +163,44 @@ std::string GnuplotQuoted(const std::string& text) {
   return out + "\"";
 }
 
+namespace {
+std::string Dimensionless(const std::string& param, const FigureAxis& a) {
+  if (!a.label.empty()) return a.label;
+  // The parameters a physical run gives in units (cli/physical.hpp's axes).
+  const bool has_units =
+      param == "v" || param == "beta" || param == "v_m" || param == "v_s" || param == "delta";
+  return ParameterAxisLabel(param) + (has_units ? " (dimensionless)" : "");
+}
+}  // namespace
+
+std::string FigureUnits::LengthUnit() const { return si ? " [m]" : " (dimensionless)"; }
+std::string FigureUnits::TimeUnit() const { return si ? " [s]" : " (dimensionless)"; }
+std::string FigureUnits::SpeedUnit() const { return si ? " [m/s]" : " (dimensionless)"; }
+std::string FigureUnits::P1Label(const std::string& param) const {
+  return Dimensionless(param, p1);
+}
+std::string FigureUnits::P2Label(const std::string& param) const {
+  return Dimensionless(param, p2);
+}
+
+std::string FigureUnitVariables(const FigureUnits& u) {
+  std::ostringstream os;
+  os.precision(17);
+  os << "ul = " << u.length << "\nut = " << u.time << "\nuv = " << u.length / u.time
+     << "\nup = " << u.p1.factor << "\nup2 = " << u.p2.factor << "\n";
+  return os.str();
+}
+
 std::string ParameterAxisLabel(const std::string& param) {
+  // The words of --help (cli/study.cpp), one set for every figure.
   if (param == "v") return "belt speed v";
-  if (param == "beta") return "damping β";
-  if (param == "mu_s") return "static friction μ_s";
-  if (param == "mu_m") return "minimum friction μ_m";
-  if (param == "mu_k") return "kinetic friction μ_k";
+  if (param == "beta") return "damping ratio β";
+  if (param == "mu_s") return "static friction coefficient μ_s";
+  if (param == "mu_m") return "minimum friction coefficient μ_m";
+  if (param == "mu_k") return "kinetic friction coefficient μ_k";
   if (param == "v_m") return "speed of minimum friction v_m";
   if (param == "v_s") return "Stribeck speed v_s";
-  if (param == "delta") return "regularisation δ";
+  if (param == "delta") return "friction decay rate δ";
   if (param == "k5") return "quintic coefficient k_5";
   return EnhancedText(param);
 }

@@ -121,6 +121,12 @@ ParameterRange DefaultRange(const Params& base, const std::string& name) {
   return {0.5 * x, 2.0 * x};  // v_m, v_s, delta: a factor of two each way
 }
 
+ParameterRange RangeFromPoint(const Params& at, const std::string& name) {
+  const ParameterRange r = DefaultRange(at, name);
+  const double x = GetParameter(at, name);
+  return {x, std::abs(r.to - x) >= std::abs(r.from - x) ? r.to : r.from};
+}
+
 std::string ValidationError(const Params& p) {
   for (const auto& name : ParameterNames(p.law)) {
     const double x = GetParameter(p, name);

@@ -21,27 +21,13 @@ using stickslip::testing_util::ReadFile;
 const std::string kApp = STICKSLIP_BIN_DIR "/ss_basin";
 const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
-class BasinApp : public ::testing::Test {
+class BasinApp : public stickslip::testing_util::AppTest {
  protected:
-  void SetUp() override {
-    ASSERT_TRUE(Exists(kApp)) << kApp << " not built";
-    std::string tmpl = ::testing::TempDir() + "ss_basin_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
   // Runs the app under `timeout` (signal, seconds); returns its exit code.
   int Run(const std::string& args, const std::string& signal = "KILL", int seconds = 300) {
-    const std::string cmd = "timeout --preserve-status -s " + signal + " " +
-                            std::to_string(seconds) + " " + kApp + " " + args + " >'" + dir_ +
-                            "/stdout' 2>'" + dir_ + "/stderr'";
-    const int status = std::system(cmd.c_str());
-    out_ = ReadFile(dir_ + "/stdout");
-    err_ = ReadFile(dir_ + "/stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return RunApp(STICKSLIP_BIN_DIR, "ss_basin", args, signal, seconds);
   }
   std::string Out() const { return dir_ + "/out"; }
-  std::string dir_, out_, err_;
 };
 
 int Count(const std::string& text, const std::string& part) {

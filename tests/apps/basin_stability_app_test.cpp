@@ -21,33 +21,18 @@ using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
 
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_basin";
 const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 const std::string kBox = " --x_min -0.4 --x_max 1.0 --xdot_min -0.8 --xdot_max 0.7";
 
-class BasinStabilityApp : public ::testing::Test {
+class BasinStabilityApp : public stickslip::testing_util::AppTest {
  protected:
-  void SetUp() override {
-    std::string tmpl = ::testing::TempDir() + "ss_basin_stability_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
-  int Run(const std::string& args) {
-    const std::string cmd = "timeout -s KILL 300 " + kApp + " " + args + " >'" + dir_ +
-                            "/stdout' 2>'" + dir_ + "/stderr'";
-    const int status = std::system(cmd.c_str());
-    out_ = ReadFile(dir_ + "/stdout");
-    err_ = ReadFile(dir_ + "/stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
+  int Run(const std::string& args) { return RunApp(STICKSLIP_BIN_DIR, "ss_basin", args); }
   // The fraction printed for an attractor, nan if none.
   double Printed(const std::string& attractor) const {
     const std::string key = "basin stability " + attractor + " ";
     const auto at = out_.find(key);
     return at == std::string::npos ? std::nan("") : std::stod(out_.substr(at + key.size()));
   }
-  std::string dir_, out_, err_;
 };
 
 TEST_F(BasinStabilityApp, PrintsOneLinePerAttractorAndWritesThemToOrbitsTsv) {

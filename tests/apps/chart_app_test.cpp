@@ -14,7 +14,6 @@
 
 namespace {
 
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_chart";
 const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 using stickslip::testing_util::Contains;
@@ -26,28 +25,17 @@ struct Result {
   std::string out, err;
 };
 
-class ChartApp : public ::testing::Test {
+class ChartApp : public stickslip::testing_util::AppTest {
  protected:
-  void SetUp() override {
-    ASSERT_TRUE(Exists(kApp)) << kApp << " not built";
-    std::string tmpl = ::testing::TempDir() + "ss_chart_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
-
   std::string Out() const { return dir_ + "/out"; }
 
   // Runs the app (killed after 120 s) with stdout and stderr captured.
   Result Run(const std::vector<std::string>& args) {
-    std::string cmd = "timeout -s KILL 120 '" + kApp + "'";
-    for (const auto& a : args) cmd += " '" + a + "'";
-    cmd += " > '" + dir_ + "/stdout.txt' 2> '" + dir_ + "/stderr.txt'";
-    const int status = std::system(cmd.c_str());
+    std::string words;
+    for (const auto& a : args) words += " " + stickslip::testing_util::ShellQuoted(a);
     Result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = ReadFile(dir_ + "/stdout.txt");
-    r.err = ReadFile(dir_ + "/stderr.txt");
+    r.code = RunApp(STICKSLIP_BIN_DIR, "ss_chart", words, "KILL", 120);
+    r.out = out_, r.err = err_;
     return r;
   }
 
@@ -61,8 +49,6 @@ class ChartApp : public ::testing::Test {
     for (const auto& p : parts) EXPECT_TRUE(Contains(r.err, p));
     EXPECT_FALSE(Exists(Out())) << "--out was created";
   }
-
-  std::string dir_;
 };
 
 TEST_F(ChartApp, EqualAxesExit2) {

@@ -37,6 +37,7 @@ const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
+using stickslip::testing_util::Listing;
 using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
@@ -49,31 +50,6 @@ std::vector<std::string> Lines(const std::string& text) {
   return lines;
 }
 
-// Names in a directory, "." and ".." left out.
-std::set<std::string> Listing(const std::string& dir) {
-  std::set<std::string> names;
-  DIR* d = ::opendir(dir.c_str());
-  if (d == nullptr) return names;
-  while (const dirent* e = ::readdir(d)) {
-    const std::string n = e->d_name;
-    if (n != "." && n != "..") names.insert(n);
-  }
-  ::closedir(d);
-  return names;
-}
-
-// Whether a process has a handler for SIGINT: the SigCgt mask of
-// /proc/PID/status (Linux). False if that cannot be read.
-bool CatchesSigint(pid_t pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("SigCgt:", 0) != 0) continue;
-    const unsigned long long mask = std::strtoull(line.c_str() + 7, nullptr, 16);
-    return (mask >> (SIGINT - 1)) & 1;
-  }
-  return false;
-}
-
 struct Result {
   int code = -1;           // exit status, -1 if killed by a signal
   int signal = 0;          // the signal that ended it, if any
@@ -83,9 +59,9 @@ struct Result {
   std::string shown;  // the command, for messages
 };
 
-// Runs kApp with args in a child process; stdout / stderr go to out_path /
-// err_path. With sigint_after >= 0, SIGINT is sent that many seconds after the
-// child has installed its SIGINT handler.
+// Runs kApp with args in a child process (app_test_util.hpp's RunChild);
+// stdout / stderr go to out_path / err_path. With sigint_after >= 0, SIGINT
+// is sent that many seconds after the child has installed its SIGINT handler.
 // A child still running after timeout seconds is killed (SIGKILL).
 // With run_as >= 0 (only as root), the child drops to that user id first.
 Result Exec(const std::vector<std::string>& args, const std::string& out_path,
@@ -94,60 +70,12 @@ Result Exec(const std::vector<std::string>& args, const std::string& out_path,
   Result r;
   r.shown = "ss_continue";
   for (const auto& a : args) r.shown += " " + a;
-  std::vector<std::string> argv_s = {kApp};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& s : argv_s) argv.push_back(s.data());
-  argv.push_back(nullptr);
-
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ADD_FAILURE() << "fork failed";
-    return r;
-  }
-  if (pid == 0) {  // child: only async-signal-safe calls until exec
-    const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
-    if (run_as >= 0 &&
-        (::setgroups(0, nullptr) != 0 || ::setgid(run_as) != 0 || ::setuid(run_as) != 0))
-      ::_exit(125);
-    ::signal(SIGINT, SIG_DFL);
-    ::signal(SIGTERM, SIG_DFL);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  bool sent = false, armed = false;
-  double armed_at = 0;
-  int status = 0;
-  for (;;) {
-    const pid_t w = ::waitpid(pid, &status, WNOHANG);
-    if (w == pid) break;
-    const double t =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // SIGINT before the app installs its handler would just kill it: count
-    // sigint_after from the moment it catches SIGINT (or from 5 s, if that
-    // cannot be seen).
-    if (sigint_after >= 0 && !armed && (CatchesSigint(pid) || t > 5.0)) {
-      armed = true;
-      armed_at = t;
-    }
-    if (armed && !sent && t >= armed_at + sigint_after) {
-      ::kill(pid, SIGINT);
-      sent = true;
-    }
-    if (t > timeout) {
-      ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
-      r.timed_out = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (WIFEXITED(status)) r.code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  stickslip::testing_util::Launch l;
+  l.out_path = out_path, l.err_path = err_path, l.timeout = timeout, l.run_as = run_as;
+  if (sigint_after >= 0) l.signal = SIGINT, l.signal_after = sigint_after;
+  l.signal_when_caught = true;
+  const auto o = stickslip::testing_util::RunChild(kApp, args, l);
+  r.code = o.code, r.signal = o.signal, r.timed_out = o.timed_out, r.seconds = o.seconds;
   r.out = ReadFile(out_path);
   r.err = ReadFile(err_path);
   return r;

@@ -34,15 +34,12 @@ using stickslip::testing_util::WriteFile;
 
 using stickslip::testing_util::HaveGnuplot;
 
-class Reliability : public ::testing::Test {
+class Reliability : public stickslip::testing_util::AppTest {
  protected:
   void SetUp() override {
-    std::string t = ::testing::TempDir() + "reliability_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(t.data()), nullptr);
-    dir_ = t;
+    AppTest::SetUp();
     ASSERT_EQ(::mkdir(Path("w").c_str(), 0777), 0);
   }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
   // Runs app; stdout and stderr land in out_ and err_ unless l says otherwise.
   Outcome Run(const std::string& app, const std::vector<std::string>& args, Launch l = {}) {
@@ -64,7 +61,6 @@ class Reliability : public ::testing::Test {
     EXPECT_TRUE(Contains(err_, part));
     EXPECT_EQ(Listing(Path("w")), before);
   }
-  std::string dir_, out_, err_;
 };
 
 // Item 1: only regular files or new names are written; a symlink is refused.

@@ -23,22 +23,13 @@ using stickslip::testing_util::Tsv;
 
 const std::string kBin = STICKSLIP_BIN_DIR;
 
-class Restart : public ::testing::Test {
+class Restart : public stickslip::testing_util::AppTest {
  protected:
   void SetUp() override {
-    std::string tmpl = ::testing::TempDir() + "ss_restart_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
+    AppTest::SetUp();
     ASSERT_EQ(Run("ss_continue", "--out " + Seed() + " --no_plots --no_estimates"), 0) << err_;
   }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
-  int Run(const std::string& app, const std::string& args) {
-    const std::string cmd = "timeout -s KILL 300 " + kBin + "/" + app + " " + args + " >'" + dir_ +
-                            "/stdout' 2>'" + dir_ + "/stderr'";
-    const int status = std::system(cmd.c_str());
-    err_ = ReadFile(dir_ + "/stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
+  int Run(const std::string& app, const std::string& args) { return RunApp(kBin, app, args); }
   std::string Seed() const { return dir_ + "/seed"; }
   Tsv Table(const std::string& path) const { return ReadTsv(ReadFile(path)); }
   // The cell of column `col` in the row whose `key` column is `value`.
@@ -48,7 +39,6 @@ class Restart : public ::testing::Test {
       if (row[t.Column(key)] == value) return row[t.Column(col)];
     return "";
   }
-  std::string dir_, err_;
 };
 
 TEST_F(Restart, RowsAreNumberedAndSpecialPointsLabelledOnTheirRows) {

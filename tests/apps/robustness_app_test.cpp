@@ -38,14 +38,9 @@ using stickslip::testing_util::Wait;
 
 using stickslip::testing_util::HaveGnuplot;
 
-class RobustnessApp : public ::testing::Test {
+class RobustnessApp : public stickslip::testing_util::AppTest {
  protected:
-  void SetUp() override {
-    std::string t = ::testing::TempDir() + "robustness_app_XXXXXX";
-    ASSERT_NE(::mkdtemp(t.data()), nullptr);
-    dir_ = t;
-  }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
+  void SetUp() override { AppTest::SetUp(); }
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
 
   // Every file of a directory, by name; in text files the '#' lines (metadata
@@ -81,7 +76,6 @@ class RobustnessApp : public ::testing::Test {
       }
     }
   }
-  std::string dir_;
 };
 
 // Two runs with different models on one --out, started a random moment

@@ -18,7 +18,6 @@
 
 namespace {
 
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_simulate";
 const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 using stickslip::testing_util::Contains;
@@ -28,27 +27,11 @@ using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
 using stickslip::testing_util::WriteFile;
 
-std::string Quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
+using stickslip::testing_util::ShellQuoted;
 
 // A fresh directory per test, removed afterwards.
-class SimulateApp : public ::testing::Test {
+class SimulateApp : public stickslip::testing_util::AppTest {
  protected:
-  void SetUp() override {
-    ASSERT_TRUE(Exists(kApp)) << kApp << " not built";
-    std::string tmpl = ::testing::TempDir() + "ss_simulate_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override {
-    if (!dir_.empty()) {
-      EXPECT_EQ(std::system(("rm -rf " + Quote(dir_)).c_str()), 0);
-    }
-  }
-
   struct Result {
     int code = -1;
     std::string out, err;
@@ -64,15 +47,11 @@ class SimulateApp : public ::testing::Test {
   // Runs ss_simulate with the arguments (each quoted for the shell), without
   // figures (tests/io/figure_format_test.cpp draws them).
   Result Run(const std::vector<std::string>& args) {
-    std::string cmd = Quote(kApp) + " --no_plots";
-    for (const auto& a : args) cmd += " " + Quote(a);
-    const std::string out = Path("stdout.txt"), err = Path("stderr.txt");
-    cmd += " >" + Quote(out) + " 2>" + Quote(err);
-    const int status = std::system(cmd.c_str());
+    std::string words = " --no_plots";
+    for (const auto& a : args) words += " " + ShellQuoted(a);
     Result r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = ReadFile(out);
-    r.err = ReadFile(err);
+    r.code = RunApp(STICKSLIP_BIN_DIR, "ss_simulate", words);
+    r.out = out_, r.err = err_;
     return r;
   }
 
@@ -96,8 +75,6 @@ class SimulateApp : public ::testing::Test {
     EXPECT_FALSE(Exists(out)) << shown;
     EXPECT_EQ(r.out, "") << shown;
   }
-
-  std::string dir_;
 };
 
 struct Row {

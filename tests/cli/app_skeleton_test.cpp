@@ -63,16 +63,13 @@ std::set<std::string> Visible(const std::set<std::string>& names) {
   return v;
 }
 
-class Skeleton : public ::testing::Test {
+class Skeleton : public stickslip::testing_util::AppTest {
  protected:
   void SetUp() override {
-    std::string t = ::testing::TempDir() + "skeleton_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(t.data()), nullptr);
-    dir_ = t;
+    AppTest::SetUp();
     ASSERT_EQ(::mkdir(Path("w").c_str(), 0777), 0);
     ASSERT_EQ(::mkdir(Path("bin").c_str(), 0777), 0);
   }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
   Launch Logged(Launch l = {}) const {
     l.out_path = Path("stdout.txt");
@@ -102,7 +99,6 @@ class Skeleton : public ::testing::Test {
     *gnuplot = std::atoi(ReadFile(Path("bin/pid")).c_str());
     return pid;
   }
-  std::string dir_, err_;
 };
 
 // N1: a FIFO, a symlink or a device at any output's place: exit 2, nothing written.

@@ -25,22 +25,9 @@ const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 using stickslip::testing_util::HaveGnuplot;
 
-class FigureFormatTest : public ::testing::Test {
+class FigureFormatTest : public testing_util::AppTest {
  protected:
-  void SetUp() override {
-    std::string tmpl = ::testing::TempDir() + "figure_format_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + dir_ + "'").c_str()), 0); }
-  int Run(const std::string& app, const std::string& args) {
-    const std::string cmd = "timeout -s KILL 300 " + kBin + "/" + app + " " + args + " >'" + dir_ +
-                            "/stdout' 2>'" + dir_ + "/stderr'";
-    const int status = std::system(cmd.c_str());
-    err_ = ReadFile(dir_ + "/stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::string dir_, err_;
+  int Run(const std::string& app, const std::string& args) { return RunApp(kBin, app, args); }
 };
 
 TEST_F(FigureFormatTest, PdfAndSvgChecksAcceptOnlyWholeFiles) {
@@ -100,6 +87,13 @@ TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
         0)
         << err_;
     EXPECT_EQ(cli::FigureError(out + "/b/basins." + ext), "");
+    ASSERT_EQ(Run("ss_basin", "--study " + kStudies +
+                                  "/stribeck_basin_stability.ini --from 0.56 --to 0.64 --n 3 " +
+                                  "--format " + ext + " --out " + out + "/bs"),
+              0)
+        << err_;
+    EXPECT_EQ(cli::FigureError(out + "/bs/basin_stability." + ext), "");
+    EXPECT_FALSE(Exists(out + "/bs/basin_stability.png"));
     ASSERT_EQ(Run("ss_simulate",
                   seed + " --t_end 20 --format " + ext + " --out " + out + "/s"),
               0)
@@ -122,6 +116,7 @@ TEST_F(FigureFormatTest, BadFormatExits2NamingTheOption) {
   const std::vector<std::pair<std::string, std::string>> runs = {
       {"ss_continue", seed + " --out " + dir_ + "/o"},
       {"ss_basin", seed + " --out " + dir_ + "/o"},
+      {"ss_basin", "--study " + kStudies + "/stribeck_basin_stability.ini --out " + dir_ + "/o"},
       {"ss_simulate", seed + " --out " + dir_ + "/o"},
       {"ss_chart", "--study " + kStudies + "/seed_chart.ini --out " + dir_ + "/o"}};
   for (const auto& [app, args] : runs) {

@@ -1,20 +1,26 @@
 # Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.
 # Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,
-# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.
+# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP green.
 if (!exists('suffix')) suffix = ''
-set terminal pngcairo size 1000,820 enhanced font 'Sans,14'
+set terminal pngcairo size 1000,820 enhanced font 'Sans,12'
 set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
-set xlabel 'belt speed v'
-set ylabel 'damping ratio β'
+set encoding utf8
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "belt speed v (dimensionless)"
+set ylabel "damping ratio β (dimensionless)"
 set xrange [0.050000000000000003:1.5]
 set yrange [0:0.29999999999999999]
 set title "Stability chart, Leine law: μ_s = 1, δ = 3"
 set lmargin at screen 0.11
 set rmargin at screen 0.96
 set tmargin at screen 0.93
-set bmargin at screen 0.25
+set bmargin at screen 0.21
 set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 samplen 3
 set tics out nomirror
 set border 3 front
@@ -143,7 +149,7 @@ set object 1 polygon from 0.050000000000000003,0 \
   to 0.41202265916659681,0.29999999999999999 \
   to 0.050000000000000003,0.29999999999999999 \
   to 0.050000000000000003,0 \
-  fc rgb '#f4a6a6' fs solid 1.0 noborder behind
+  fc rgb '#a6cee3' fs solid 1.0 noborder behind
 set object 2 polygon from 1.5,0.10846733080048679 \
   to 1.5,0.29999999999999999 \
   to 0.55218167452879507,0.29999999999999999 \
@@ -242,7 +248,7 @@ set object 2 polygon from 1.5,0.10846733080048679 \
   to 1.4730755852109705,0.11069158022384355 \
   to 1.4865254469448794,0.10957064376118199 \
   to 1.5,0.10846733080048679 \
-  fc rgb '#eeeeee' fs solid 1.0 noborder behind
+  fc rgb '#d9d9d9' fs solid 1.0 noborder behind
 set object 3 polygon from 1.5,0.049586776859504134 \
   to 1.5,0.10846733080048679 \
   to 1.4865254469448794,0.10957064376118199 \
@@ -462,10 +468,10 @@ set object 3 polygon from 1.5,0.049586776859504134 \
   to 1.4859819597332673,0.050353864771887032 \
   to 1.5,0.049586776859504134 \
   fc rgb '#d9b3ef' fs solid 1.0 noborder behind
-plot NaN with boxes fs solid 1.0 lc rgb '#eeeeee' title 'steady sliding only', \
-     NaN with boxes fs solid 1.0 lc rgb '#f4a6a6' title 'stick-slip', \
+plot NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title 'steady sliding only', \
+     NaN with boxes fs solid 1.0 lc rgb '#a6cee3' title 'stick-slip', \
      NaN with boxes fs solid 1.0 lc rgb '#d9b3ef' title 'bistable', \
-     'curves.tsv' using 1:(($4 == 1 && strcol(9) eq 'subcritical') ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
-     'curves.tsv' using 1:(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.4 lc rgb 'black' notitle
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'subcritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
+     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle
 unset output

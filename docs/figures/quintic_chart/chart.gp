@@ -1,20 +1,26 @@
 # Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.
 # Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,
-# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.
+# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP green.
 if (!exists('suffix')) suffix = ''
-set terminal pngcairo size 1000,820 enhanced font 'Sans,14'
+set terminal pngcairo size 1000,820 enhanced font 'Sans,12'
 set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
-set xlabel 'belt speed v'
-set ylabel 'damping ratio β'
+set encoding utf8
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "belt speed v (dimensionless)"
+set ylabel "damping ratio β (dimensionless)"
 set xrange [0.050000000000000003:0.57999999999999996]
 set yrange [0:0.12]
 set title "Stability chart, cubic law: μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0.24"
 set lmargin at screen 0.11
 set rmargin at screen 0.96
 set tmargin at screen 0.93
-set bmargin at screen 0.25
+set bmargin at screen 0.21
 set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 samplen 3
 set tics out nomirror
 set border 3 front
@@ -134,7 +140,7 @@ set object 1 polygon from 0.050000000000000003,0 \
   to 0.3324834862494232,0.12 \
   to 0.050000000000000003,0.12 \
   to 0.050000000000000003,0 \
-  fc rgb '#f4a6a6' fs solid 1.0 noborder behind
+  fc rgb '#a6cee3' fs solid 1.0 noborder behind
 set object 2 polygon from 0.57999999999999996,0.024673696350948043 \
   to 0.57999999999999996,0.12 \
   to 0.35707845090478846,0.12 \
@@ -232,7 +238,7 @@ set object 2 polygon from 0.57999999999999996,0.024673696350948043 \
   to 0.57018321013080886,0.025579301618619526 \
   to 0.57501444528868373,0.025083905326466552 \
   to 0.57999999999999996,0.024673696350948043 \
-  fc rgb '#eeeeee' fs solid 1.0 noborder behind
+  fc rgb '#d9d9d9' fs solid 1.0 noborder behind
 set object 3 polygon from 0.56301625030524716,0 \
   to 0.57999999999999996,0 \
   to 0.57999999999999996,0.024673696350948043 \
@@ -445,17 +451,17 @@ set object 4 polygon from 0.35707845090478846,0.12 \
   to 0.35974516622525576,0.11857426526500862 \
   to 0.35767922609887226,0.11967934493635225 \
   to 0.35707845090478846,0.12 \
-  fc rgb '#a6c8f4' fs solid 1.0 noborder behind
-set label 'GH' at 0.5,0.03749999999999995 offset 0.8,0.9 left front font ',13' noenhanced
-set label 'GR-LP' at 0.4630979699786027,0.056197886957885454 offset 0.8,0.9 left front font ',13' noenhanced
-plot NaN with boxes fs solid 1.0 lc rgb '#eeeeee' title 'steady sliding only', \
-     NaN with boxes fs solid 1.0 lc rgb '#f4a6a6' title 'stick-slip', \
-     NaN with boxes fs solid 1.0 lc rgb '#a6c8f4' title 'pure-slip oscillation', \
+  fc rgb '#fdbf6f' fs solid 1.0 noborder behind
+set label 'GH' at up*0.5,up2*0.03749999999999995 offset 0.8,0.9 left front font ',13' noenhanced
+set label 'GR-LP' at up*0.4630979699786027,up2*0.056197886957885454 offset 0.8,0.9 left front font ',13' noenhanced
+plot NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title 'steady sliding only', \
+     NaN with boxes fs solid 1.0 lc rgb '#a6cee3' title 'stick-slip', \
+     NaN with boxes fs solid 1.0 lc rgb '#fdbf6f' title 'pure-slip oscillation', \
      NaN with boxes fs solid 1.0 lc rgb '#d9b3ef' title 'bistable', \
-     'curves.tsv' using 1:(($4 == 1 && strcol(9) eq 'supercritical') ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'HB, supercritical', \
-     'curves.tsv' using 1:(($4 == 1 && strcol(9) eq 'subcritical') ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
-     'curves.tsv' using 1:(($4 == 2 && strcol(9) eq 'persistence') ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title 'GR, persistence', \
-     'curves.tsv' using 1:(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
-     'curves.tsv' using 1:(($4 == 3 && strcol(9) eq 'fold') ? $2 : NaN) with lines lw 2.5 lc rgb '#0050d0' dt 1 title 'LP, pure-slip fold', \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.4 lc rgb 'black' notitle
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'supercritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'HB, supercritical', \
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'subcritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'persistence') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title 'GR, persistence', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
+     'curves.tsv' using ($1*up):(($4 == 3 && strcol(9) eq 'fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#009e73' dt 1 title 'LP, pure-slip fold', \
+     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle
 unset output

@@ -22,20 +22,25 @@ set style line 11 lc rgb '#cc79a7' lw 2 dt 4
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
-set xlabel "belt speed v"
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "belt speed v (dimensionless)"
 set title "cubic law: β = 0.05, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0"
 set offsets 0, 0, graph 0.08, graph 0.08
-set xrange [0.05:0.5]
+set xrange [up*0.05:up*0.5]
 set output 'bifurcation_x.png'.suffix
 set ylabel "displacement x: min and max (dimensionless)"
-set label 100 'GR' at 0.3957902887978408,0.7305861546582468 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'HB' at 0.44095855184409843,0.2530138160519672 center offset 0,1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6 : NaN) with lines ls 6 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6 : NaN) with lines ls 5 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $6 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $6 : NaN) with lines ls 3 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $5 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $5 : NaN) with lines ls 3 notitle, \
+set label 100 'GR' at up*0.3957902887978408,ul*0.7305861546582468 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'HB' at up*0.44095855184409843,ul*0.2530138160519672 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6*ul : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6*ul : NaN) with lines ls 5 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $6*ul : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $6*ul : NaN) with lines ls 3 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $5*ul : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $5*ul : NaN) with lines ls 3 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 3 title 'pure slip, stable', \
      NaN with lines ls 6 title 'steady sliding, unstable', \
@@ -44,14 +49,14 @@ unset label
 unset output
 set output 'bifurcation_xdot.png'.suffix
 set ylabel "velocity dx/dt: min and max (dimensionless)"
-set label 100 'GR' at 0.3957902887978408,-0.3930534572417059 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'HB' at 0.44095855184409843,0 center offset 0,1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8 : NaN) with lines ls 6 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8 : NaN) with lines ls 5 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $8 : NaN) with lines ls 3 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $7 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $7 : NaN) with lines ls 3 notitle, \
+set label 100 'GR' at up*0.3957902887978408,uv*-0.3930534572417059 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'HB' at up*0.44095855184409843,uv*0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8*uv : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8*uv : NaN) with lines ls 5 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8*uv : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $8*uv : NaN) with lines ls 3 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $7*uv : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $7*uv : NaN) with lines ls 3 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 3 title 'pure slip, stable', \
      NaN with lines ls 6 title 'steady sliding, unstable', \
@@ -60,10 +65,10 @@ unset label
 unset output
 set output 'period.png'.suffix
 set ylabel "period T (dimensionless)"
-set label 100 'GR' at 0.3957902887978408,6.367585395099831 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'HB' at 0.44095855184409843,6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $4 : NaN) with lines ls 3 notitle, \
+set label 100 'GR' at up*0.3957902887978408,ut*6.367585395099831 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'HB' at up*0.44095855184409843,ut*6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 3 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 3 title 'pure slip, stable'
 unset label
@@ -71,20 +76,21 @@ unset output
 set terminal pngcairo size 1000,1000 enhanced font 'Sans,12'
 set output 'multiplier.png'.suffix
 set multiplot layout 2,1 title "stability along the branch"
+set lmargin 12
 set title "periodic orbits: stable while the multiplier is below 1"
 set ylabel "nontrivial Floquet multiplier"
-set label 100 'GR' at 0.3957902887978408,0 center offset 0,1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $10 : NaN) with lines ls 3 notitle, \
+set label 100 'GR' at up*0.3957902887978408,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 3 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 3 title 'pure slip, stable', \
      1 with lines ls 7 title 'threshold 1'
 unset label
 set title "steady sliding: stable while the largest Re λ is below 0"
 set ylabel "largest real part of the eigenvalues, Re λ"
-set label 100 'HB' at 0.44095855184409843,0 center offset 0,1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $10 : NaN) with lines ls 6 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $10 : NaN) with lines ls 5 notitle, \
+set label 100 'HB' at up*0.44095855184409843,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $10*1 : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $10*1 : NaN) with lines ls 5 notitle, \
      NaN with lines ls 6 title 'steady sliding, unstable', \
      NaN with lines ls 5 title 'steady sliding, stable', \
      0 with lines ls 7 title 'threshold 0'
@@ -94,16 +100,17 @@ unset output
 set terminal pngcairo size 1000,1000 enhanced font 'Sans,12'
 set output 'estimates.png'.suffix
 set multiplot layout 2,1
+set lmargin 12
 set title 'smallest slip velocity: computed and estimated'
 set ylabel "smallest velocity dx/dt (dimensionless)"
-plot 'branch.tsv' using 1:((strcol(2) ne 'equilibrium') ? $7 : NaN) with lines ls 9 title 'computed', \
-     '' using 1:13 with lines ls 10 title 'seed (3.17): r_1', \
-     '' using 1:(-$15) with lines ls 11 title 'averaging: -a_{ps}'
+plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $7*uv : NaN) with lines ls 9 title 'computed', \
+     '' using ($1*up):($13*uv) with lines ls 10 title 'seed (3.17): r_1', \
+     '' using ($1*up):(-$15*uv) with lines ls 11 title 'averaging: -a_{ps}'
 set title "displacement range: computed and the seed's bound"
 set ylabel "displacement x (dimensionless)"
-plot 'branch.tsv' using 1:((strcol(2) ne 'equilibrium') ? $6 : NaN) with lines ls 9 title 'computed x max, x min', \
-     '' using 1:((strcol(2) ne 'equilibrium') ? $5 : NaN) with lines ls 9 notitle, \
-     '' using 1:18 with lines ls 10 title 'seed bound x max', \
-     '' using 1:17 with lines ls 11 title 'seed bound x min'
+plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $6*ul : NaN) with lines ls 9 title 'computed x max, x min', \
+     '' using ($1*up):((strcol(2) ne 'equilibrium') ? $5*ul : NaN) with lines ls 9 notitle, \
+     '' using ($1*up):($18*ul) with lines ls 10 title 'seed bound x max', \
+     '' using ($1*up):($17*ul) with lines ls 11 title 'seed bound x min'
 unset multiplot
 unset output

@@ -1,20 +1,26 @@
 # Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.
 # Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,
-# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.
+# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP green.
 if (!exists('suffix')) suffix = ''
-set terminal pngcairo size 1000,820 enhanced font 'Sans,14'
+set terminal pngcairo size 1000,820 enhanced font 'Sans,12'
 set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
-set xlabel 'belt speed v'
-set ylabel 'damping ratio β'
+set encoding utf8
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "belt speed v (dimensionless)"
+set ylabel "damping ratio β (dimensionless)"
 set xrange [0.02:0.59999999999999998]
 set yrange [0:0.25]
 set title "Stability chart, cubic law: μ_s = 0.4, μ_m = 0.25, v_m = 0.5"
 set lmargin at screen 0.11
 set rmargin at screen 0.96
 set tmargin at screen 0.93
-set bmargin at screen 0.25
+set bmargin at screen 0.21
 set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 samplen 3
 set tics out nomirror
 set border 3 front
@@ -159,7 +165,7 @@ set object 1 polygon from 0.49999999999999989,0 \
   to 0.499999892686463,9.6582172956732131e-08 \
   to 0.49999995391955404,4.1472399419076466e-08 \
   to 0.49999999999999989,0 \
-  fc rgb '#eeeeee' fs solid 1.0 noborder behind
+  fc rgb '#d9d9d9' fs solid 1.0 noborder behind
 set object 2 polygon from 0.02,0 \
   to 0.44979837290849189,0 \
   to 0.44979833458040647,3.749316126438072e-08 \
@@ -291,7 +297,7 @@ set object 2 polygon from 0.02,0 \
   to 0.025759705910250754,0.22425349234133246 \
   to 0.02,0.22455000002102898 \
   to 0.02,0 \
-  fc rgb '#f4a6a6' fs solid 1.0 noborder behind
+  fc rgb '#a6cee3' fs solid 1.0 noborder behind
 set object 3 polygon from 0.44979837290849189,0 \
   to 0.49999999999999989,0 \
   to 0.49999995391955404,4.1472399419076466e-08 \
@@ -559,11 +565,11 @@ set object 3 polygon from 0.44979837290849189,0 \
   to 0.44979752161472225,8.32748806056508e-07 \
   to 0.44979833458040647,3.749316126438072e-08 \
   to 0.44979837290849189,0 \
-  fc rgb '#a6c8f4' fs solid 1.0 noborder behind
-plot NaN with boxes fs solid 1.0 lc rgb '#eeeeee' title 'steady sliding only', \
-     NaN with boxes fs solid 1.0 lc rgb '#f4a6a6' title 'stick-slip', \
-     NaN with boxes fs solid 1.0 lc rgb '#a6c8f4' title 'pure-slip oscillation', \
-     'curves.tsv' using 1:(($4 == 1 && strcol(9) eq 'supercritical') ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'HB, supercritical', \
-     'curves.tsv' using 1:(($4 == 2 && strcol(9) eq 'persistence') ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title 'GR, persistence', \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.4 lc rgb 'black' notitle
+  fc rgb '#fdbf6f' fs solid 1.0 noborder behind
+plot NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title 'steady sliding only', \
+     NaN with boxes fs solid 1.0 lc rgb '#a6cee3' title 'stick-slip', \
+     NaN with boxes fs solid 1.0 lc rgb '#fdbf6f' title 'pure-slip oscillation', \
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'supercritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'HB, supercritical', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'persistence') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title 'GR, persistence', \
+     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle
 unset output

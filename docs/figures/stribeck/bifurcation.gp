@@ -22,21 +22,26 @@ set style line 11 lc rgb '#cc79a7' lw 2 dt 4
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
-set xlabel "belt speed v"
-set title "stribeck law: β = 0.05, μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "belt speed v (dimensionless)"
+set title "Stribeck law: β = 0.05, μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
 set offsets 0, 0, graph 0.08, graph 0.08
-set xrange [0.3:0.8]
+set xrange [up*0.3:up*0.8]
 set output 'bifurcation_x.png'.suffix
 set ylabel "displacement x: min and max (dimensionless)"
-set label 100 'HB' at 0.5493061443340549,0.3 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at 0.6519468583211343,0.9689424675414184 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at 0.6519468583211343,0.9689424675414184 center offset 0,-1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6 : NaN) with lines ls 6 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6 : NaN) with lines ls 5 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $6 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $6 : NaN) with lines ls 4 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $5 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $5 : NaN) with lines ls 4 notitle, \
+set label 100 'HB' at up*0.5493061443340549,ul*0.3 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211343,ul*0.9689424675414184 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211343,ul*0.9689424675414184 center offset 0,-1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6*ul : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6*ul : NaN) with lines ls 5 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $6*ul : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $6*ul : NaN) with lines ls 4 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $5*ul : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $5*ul : NaN) with lines ls 4 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 4 title 'pure slip, unstable', \
      NaN with lines ls 6 title 'steady sliding, unstable', \
@@ -45,15 +50,15 @@ unset label
 unset output
 set output 'bifurcation_xdot.png'.suffix
 set ylabel "velocity dx/dt: min and max (dimensionless)"
-set label 100 'HB' at 0.5493061443340549,0 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at 0.6519468583211343,-0.6522320321553948 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at 0.6519468583211343,-0.6522320321553948 center offset 0,-1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8 : NaN) with lines ls 6 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8 : NaN) with lines ls 5 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $8 : NaN) with lines ls 4 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $7 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $7 : NaN) with lines ls 4 notitle, \
+set label 100 'HB' at up*0.5493061443340549,uv*0 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211343,uv*-0.6522320321553948 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211343,uv*-0.6522320321553948 center offset 0,-1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8*uv : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8*uv : NaN) with lines ls 5 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8*uv : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $8*uv : NaN) with lines ls 4 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $7*uv : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $7*uv : NaN) with lines ls 4 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 4 title 'pure slip, unstable', \
      NaN with lines ls 6 title 'steady sliding, unstable', \
@@ -62,11 +67,11 @@ unset label
 unset output
 set output 'period.png'.suffix
 set ylabel "period T (dimensionless)"
-set label 100 'HB' at 0.5493061443340549,6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at 0.6519468583211343,6.287235031161014 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at 0.6519468583211343,6.287235031161014 center offset 0,-1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $4 : NaN) with lines ls 4 notitle, \
+set label 100 'HB' at up*0.5493061443340549,ut*6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211343,ut*6.287235031161014 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211343,ut*6.287235031161014 center offset 0,-1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $4*ut : NaN) with lines ls 4 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 4 title 'pure slip, unstable'
 unset label
@@ -74,21 +79,22 @@ unset output
 set terminal pngcairo size 1000,1000 enhanced font 'Sans,12'
 set output 'multiplier.png'.suffix
 set multiplot layout 2,1 title "stability along the branch"
+set lmargin 12
 set title "periodic orbits: stable while the multiplier is below 1"
 set ylabel "nontrivial Floquet multiplier"
-set label 100 'GR' at 0.6519468583211343,0 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'LP' at 0.6519468583211343,0 center offset 0,-1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10 : NaN) with lines ls 1 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $10 : NaN) with lines ls 4 notitle, \
+set label 100 'GR' at up*0.6519468583211343,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'LP' at up*0.6519468583211343,1*0 center offset 0,-1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 1 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $10*1 : NaN) with lines ls 4 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
      NaN with lines ls 4 title 'pure slip, unstable', \
      1 with lines ls 7 title 'threshold 1'
 unset label
 set title "steady sliding: stable while the largest Re λ is below 0"
 set ylabel "largest real part of the eigenvalues, Re λ"
-set label 100 'HB' at 0.5493061443340549,0 center offset 0,1.1 boxed front font ',10' point ls 8
-plot 'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $10 : NaN) with lines ls 6 notitle, \
-     'branch.tsv' using 1:((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $10 : NaN) with lines ls 5 notitle, \
+set label 100 'HB' at up*0.5493061443340549,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $10*1 : NaN) with lines ls 6 notitle, \
+     'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $10*1 : NaN) with lines ls 5 notitle, \
      NaN with lines ls 6 title 'steady sliding, unstable', \
      NaN with lines ls 5 title 'steady sliding, stable', \
      0 with lines ls 7 title 'threshold 0'

@@ -21,9 +21,14 @@ set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output 'basins.png'.suffix
-set title "stribeck law: β = 0.05, v = 0.6, μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
-set xlabel 'initial displacement x (dimensionless)'
-set ylabel 'initial velocity dx/dt (dimensionless)'
+set title "Stribeck law: β = 0.05, v = 0.6, μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "initial displacement x (dimensionless)"
+set ylabel "initial velocity dx/dt (dimensionless)"
 set xrange [-0.8317013249398576:1.29477602239049]
 set yrange [-0.931555092145677:0.9244180737057345]
 unset grid
@@ -33,11 +38,11 @@ unset colorbox
 fate(s) = s eq 'steady-sliding' ? 0 : s eq 'stick-slip' ? 1 : s eq 'pure-slip' ? 2 : 3
 set arrow from -0.46,0.6 to 0.34,0.6 nohead lw 4 lc rgb 'black' front
 set bmargin 9
-plot 'basins.tsv' using 1:2:(fate(strcol(3))) with image notitle, \
+plot 'basins.tsv' using ($1*ul):($2*uv):(fate(strcol(3))) with image notitle, \
      NaN with boxes fs solid border lc rgb '#808080' lc rgb '#d9d9d9' title 'basin: steady sliding', \
      NaN with boxes fs solid border lc rgb '#808080' lc rgb '#a6cee3' title 'basin: stick-slip', \
      NaN with lines lw 4 lc rgb 'black' title 'stick band (dx/dt = v)', \
-     'orbits.tsv' using 4:($1 == 0 ? $5 : NaN) with lines ls 1 lw 3 title 'stick-slip orbit, stable', \
-     'orbits.tsv' using 4:($1 == 1 ? $5 : NaN) with lines ls 4 lw 3 title 'pure slip orbit, unstable', \
+     'orbits.tsv' using ($4*ul):($1 == 0 ? $5*uv : NaN) with lines ls 1 lw 3 title 'stick-slip orbit, stable', \
+     'orbits.tsv' using ($4*ul):($1 == 1 ? $5*uv : NaN) with lines ls 4 lw 3 title 'pure slip orbit, unstable', \
      '+' using (0.2951791317868303):(0) every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'steady sliding (x̄, 0)'
 unset output

@@ -1,17 +1,38 @@
 # Basin stability written by ss_basin; run `gnuplot basin_stability.gp` here.
 if (!exists('suffix')) suffix = ''
-set terminal pngcairo size 900,600 enhanced font ',12'
-set output 'basin_stability.png'.suffix
+set terminal pngcairo size 1000,720 enhanced font 'Sans,12'
+set encoding utf8
 set datafile separator '\t'
 set datafile columnheaders
-set title 'basin stability, law=stribeck beta=0.05 mu_s=0.4 mu_k=0.25 v_s=0.5' noenhanced
-set xlabel 'v' noenhanced
+set grid lc rgb '#e0e0e0' lw 0.5
+set border lw 1
+set style line 1 lc rgb '#0072b2' lw 2 dt 1
+set style line 2 lc rgb '#0072b2' lw 2 dt 2
+set style line 3 lc rgb '#d55e00' lw 2 dt 1
+set style line 4 lc rgb '#d55e00' lw 2 dt 2
+set style line 5 lc rgb '#606060' lw 2 dt 1
+set style line 6 lc rgb '#606060' lw 2 dt 2
+set style line 7 lc rgb '#000000' lw 1 dt 3
+set style line 8 lc rgb '#000000' pt 7 ps 1.0
+set style line 9 lc rgb '#000000' lw 2.5 dt 1
+set style line 10 lc rgb '#009e73' lw 2 dt 2
+set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
+set bmargin 7
+set style textbox opaque noborder margins 1,1
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set output 'basin_stability.png'.suffix
+set title "Stribeck law: β = 0.05, μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
+set xlabel "belt speed v (dimensionless)"
 set ylabel 'basin stability (fraction of the box)'
 set yrange [-0.02:1.02]
-set key outside right top
-set grid
-plot 'basin_stability.tsv' using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#3182bd' title 'steady sliding', \
-     '' using 1:3 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#e6550d' title 'stick-slip', \
-     '' using 1:4 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#31a354' title 'pure slip', \
-     '' using 1:5 with lines lw 1 dt 2 lc rgb 'gray40' title 'undecided'
+set autoscale xfix
+plot 'basin_stability.tsv' using ($1*up):2 with linespoints ls 5 pt 7 ps 0.5 title 'steady sliding', \
+     '' using ($1*up):3 with linespoints ls 1 pt 7 ps 0.5 title 'stick-slip', \
+     '' using ($1*up):4 with linespoints ls 3 pt 7 ps 0.5 title 'pure slip', \
+     '' using ($1*up):5 with lines ls 7 title 'undecided'
 unset output

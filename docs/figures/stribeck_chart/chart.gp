@@ -1,20 +1,26 @@
 # Stability chart written by ss_chart; run `gnuplot chart.gp` in this directory.
 # Regions: the polygons of regions.tsv. Curves (curves.tsv): HB black, GR red,
-# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP blue.
+# solid supercritical / persistence, dashed subcritical / nonsmooth fold; LP green.
 if (!exists('suffix')) suffix = ''
-set terminal pngcairo size 1000,820 enhanced font 'Sans,14'
+set terminal pngcairo size 1000,820 enhanced font 'Sans,12'
 set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
-set xlabel 'belt speed v'
-set ylabel 'damping ratio β'
+set encoding utf8
+ul = 1
+ut = 1
+uv = 1
+up = 1
+up2 = 1
+set xlabel "belt speed v (dimensionless)"
+set ylabel "damping ratio β (dimensionless)"
 set xrange [0.050000000000000003:1.2]
 set yrange [0.01:0.14000000000000001]
 set title "Stability chart, Stribeck law: μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
 set lmargin at screen 0.11
 set rmargin at screen 0.96
 set tmargin at screen 0.93
-set bmargin at screen 0.25
+set bmargin at screen 0.21
 set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 samplen 3
 set tics out nomirror
 set border 3 front
@@ -160,7 +166,7 @@ set object 1 polygon from 1.2,0.026050981346821801 \
   to 1.1883710354398127,0.026360693388786369 \
   to 1.1995643949736343,0.026062481246817086 \
   to 1.2,0.026050981346821801 \
-  fc rgb '#eeeeee' fs solid 1.0 noborder behind
+  fc rgb '#d9d9d9' fs solid 1.0 noborder behind
 set object 2 polygon from 0.050000000000000003,0.01 \
   to 1.2,0.01 \
   to 1.2,0.013607692993411878 \
@@ -309,7 +315,7 @@ set object 2 polygon from 0.050000000000000003,0.01 \
   to 0.054437771127958313,0.13452630442325889 \
   to 0.050000000000000003,0.13572561270539396 \
   to 0.050000000000000003,0.01 \
-  fc rgb '#f4a6a6' fs solid 1.0 noborder behind
+  fc rgb '#a6cee3' fs solid 1.0 noborder behind
 set object 3 polygon from 1.2,0.013607692993411878 \
   to 1.2,0.026050981346821801 \
   to 1.1995643949736343,0.026062481246817086 \
@@ -596,10 +602,10 @@ set object 3 polygon from 1.2,0.013607692993411878 \
   to 1.1953019714124788,0.013736154224225024 \
   to 1.2,0.013607692993411878 \
   fc rgb '#d9b3ef' fs solid 1.0 noborder behind
-plot NaN with boxes fs solid 1.0 lc rgb '#eeeeee' title 'steady sliding only', \
-     NaN with boxes fs solid 1.0 lc rgb '#f4a6a6' title 'stick-slip', \
+plot NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title 'steady sliding only', \
+     NaN with boxes fs solid 1.0 lc rgb '#a6cee3' title 'stick-slip', \
      NaN with boxes fs solid 1.0 lc rgb '#d9b3ef' title 'bistable', \
-     'curves.tsv' using 1:(($4 == 1 && strcol(9) eq 'subcritical') ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
-     'curves.tsv' using 1:(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.4 lc rgb 'black' notitle
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'subcritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
+     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle
 unset output

@@ -36,12 +36,12 @@ struct OrbitCurveRows {
 TsvTable OrbitTable(const std::vector<OrbitCurveRows>& curves,
                     const BasinStability* stability = nullptr);
 
-// gnuplot script (style of figure_style.hpp) drawing basins.png (.pdf, .svg) from basins.tsv and orbits.tsv in its own
-// directory: the starts coloured by fate, every orbit over them (stable solid,
-// unstable dashed), the stick band and steady sliding. `suffix` (default
-// empty) is appended to the output name.
+// gnuplot script (style of figure_style.hpp) drawing basins.png (.pdf, .svg) from basins.tsv and
+// orbits.tsv in its own directory: the starts coloured by fate, every orbit over them (stable
+// solid, unstable dashed), the stick band and steady sliding. `suffix` (default empty) is appended
+// to the output name. `units` draws a physical run in SI units (figure_style.hpp).
 std::string BasinScript(const BasinResult& r, const Model& model,
                         const std::vector<OrbitCurveRows>& curves, const std::string& title,
-                        FigureFormat format = FigureFormat::kPng);
+                        FigureFormat format = FigureFormat::kPng, const FigureUnits& units = {});
 
 }  // namespace stickslip

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "stickslip/basin/basin_stability.hpp"
+#include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip {
@@ -22,9 +23,12 @@ std::vector<std::string> BasinStabilityLines(const BasinStability& b);
 TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& param,
                              const std::string& model_description, const Box& box);
 
-/// gnuplot script drawing basin_stability.png (plus `suffix`, default empty)
-/// from basin_stability.tsv in its own directory: each fraction against the
-/// parameter.
-std::string BasinStabilityScript(const std::string& param, const std::string& title);
+/// gnuplot script drawing basin_stability.<format> (plus `suffix`, default
+/// empty) from basin_stability.tsv in its own directory, in the shared style
+/// (figure_style.hpp): each fraction against the parameter, in SI units for
+/// a physical run (`units`).
+std::string BasinStabilityScript(const std::string& param, const std::string& title,
+                                 FigureFormat format = FigureFormat::kPng,
+                                 const FigureUnits& units = {});
 
 }  // namespace stickslip

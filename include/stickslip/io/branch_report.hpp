@@ -41,18 +41,20 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
                            const std::vector<ExtraColumn>& extra = {});
 
 /// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
-/// directory (in the style of figure_style.hpp): bifurcation_x.png (x range), bifurcation_xdot.png (x' range),
-/// period.png and multiplier.png (two panels: Floquet multiplier, steady
-/// sliding's largest Re lambda, each with its threshold) against the
-/// parameter; stable solid, unstable dashed, colour by kind, special points
-/// marked and labelled. The variable `suffix` (default
+/// directory (in the style of figure_style.hpp): bifurcation_x.png (x range), bifurcation_xdot.png
+/// (x' range), period.png and multiplier.png (two panels: Floquet multiplier, steady sliding's
+/// largest Re lambda, each with its threshold) against the parameter; stable solid, unstable
+/// dashed, colour by kind, special points marked and labelled. The variable `suffix` (default
 /// empty) is appended to every output name, so a caller can render to
 /// temporary names and rename. With estimates (the columns of
 /// CompareEstimates follow the fixed ones), also estimates.png: x'_min and x
 /// range of the branch against the seed's and the averaging estimates.
+/// `units` draws a physical run in SI units (figure_style.hpp; the default:
+/// dimensionless).
 std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
                               const std::string& title, bool estimates = false,
-                              FigureFormat format = FigureFormat::kPng);
+                              FigureFormat format = FigureFormat::kPng,
+                              const FigureUnits& units = {});
 /// The output files BifurcationScript draws (extension of `format`).
 std::vector<std::string> BifurcationFigures(bool estimates,
                                             FigureFormat format = FigureFormat::kPng);

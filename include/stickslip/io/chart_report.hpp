@@ -29,13 +29,14 @@ TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::strin
 // gnuplot script drawing chart.png (plus the variable `suffix`, as in
 // BifurcationScript): the regions as filled polygons (the vertices of
 // regions.tsv), the curves of curves.tsv on top, codim2.tsv's points labelled.
-// title is gnuplot enhanced text (ChartTitle). chart_script.cpp.
+// title is gnuplot enhanced text (ChartTitle). `units` draws a physical run's
+// axes in SI units (figure_style.hpp). chart_script.cpp.
 std::string ChartScript(const ChartResult& r, const Plane& plane, const std::string& title,
-                        FigureFormat format = FigureFormat::kPng);
+                        FigureFormat format = FigureFormat::kPng, const FigureUnits& units = {});
 // "Stability chart, cubic law: μ_s = 0.4, μ_m = 0.25, v_m = 0.5": the law's
 // parameters but the two axes, as gnuplot enhanced text.
 std::string ChartTitle(const Params& base, const Plane& plane);
-// "belt speed v", "damping ratio β": a parameter's words and symbol.
+// "belt speed v", "damping ratio β": ParameterAxisLabel (figure_style.hpp).
 std::string AxisLabel(const std::string& name);
 
 }  // namespace stickslip

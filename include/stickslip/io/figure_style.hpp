@@ -64,4 +64,31 @@ std::string GnuplotQuoted(const std::string& text);
 /// The axis words for a parameter name: "belt speed v", "damping β", ...
 std::string ParameterAxisLabel(const std::string& param);
 
+/// A parameter axis as drawn: value on the axis = factor x dimensionless value.
+struct FigureAxis {
+  double factor = 1;
+  std::string label;  // words, symbol and unit; empty: ParameterAxisLabel
+};
+/// A figure's units. The data are dimensionless; a physical run (seed
+/// section 3 scaling, L = M g / K, t0 = sqrt(M / K)) draws lengths in m,
+/// times in s, speeds in m/s and its parameter axes in physical form. A
+/// script multiplies each column by its factor: the gnuplot variables ul
+/// (length), ut (time), uv (speed), up and up2 (the parameter axes) of
+/// FigureUnitVariables.
+struct FigureUnits {
+  bool si = false;
+  double length = 1, time = 1;  // L [m], t0 [s]
+  FigureAxis p1, p2;
+  /// " [m]", " [s]", " [m/s]"; " (dimensionless)" when not si.
+  std::string LengthUnit() const;
+  std::string TimeUnit() const;
+  std::string SpeedUnit() const;
+  /// p1's (p2's) label; without one, ParameterAxisLabel(param) and, for a
+  /// parameter that has units in a physical run, " (dimensionless)".
+  std::string P1Label(const std::string& param) const;
+  std::string P2Label(const std::string& param) const;
+};
+/// "ul = ...\nut = ...\nuv = ...\nup = ...\nup2 = ...\n" for a script.
+std::string FigureUnitVariables(const FigureUnits& u);
+
 }  // namespace stickslip

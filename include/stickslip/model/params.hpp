@@ -64,6 +64,9 @@ struct ParameterRange {
 /// 2 k5). Throws
 /// InvalidArgument on an unknown name.
 ParameterRange DefaultRange(const Params& base, const std::string& name);
+/// A range that starts at `at`'s value of the parameter and runs to the far
+/// end of DefaultRange(at, name): a restart's branch (AUTO-07p's IRS).
+ParameterRange RangeFromPoint(const Params& at, const std::string& name);
 
 /// Get or set by name; throw InvalidArgument on an unknown name.
 double GetParameter(const Params& p, const std::string& name);
