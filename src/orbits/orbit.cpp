@@ -198,6 +198,25 @@ void OrbitFinder::AcceptPureSlip(Orbit& o, double a, double step, bool stalled,
   o.stable = std::abs(o.multiplier) < 1.0;
 }
 
+namespace {
+// A pure-slip iterate outside (kCollapsedAmplitude, a_max) ends the shooting:
+// sets the status and its message.
+bool LeftRange(double a, double a_max, OrbitResult* out) {
+  if (a > a_max) {
+    out->status = OrbitStatus::kNotConverged;
+    out->message = "pure-slip shooting left the plausible range (a > " + std::to_string(a_max) +
+                   "): no pure-slip orbit near the guess";
+    return true;
+  }
+  if (a < Tolerances::kCollapsedAmplitude) {
+    out->status = OrbitStatus::kCollapsed;
+    out->message = "pure-slip shooting collapsed onto the equilibrium";
+    return true;
+  }
+  return false;
+}
+}  // namespace
+
 OrbitResult OrbitFinder::PureSlip(double a_guess) {
   if (!(a_guess > 0) || !std::isfinite(a_guess))
     throw InvalidArgument("PureSlip: a_guess = " + std::to_string(a_guess) + " must be > 0");
@@ -261,17 +280,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
     last_da = da;
     a += da;
     backtracked = false;
-    if (a > a_max) {
-      out.status = OrbitStatus::kNotConverged;
-      out.message = "pure-slip shooting left the plausible range (a > " + std::to_string(a_max) +
-                    "): no pure-slip orbit near the guess";
-      return out;
-    }
-    if (a < Tolerances::kCollapsedAmplitude) {
-      out.status = OrbitStatus::kCollapsed;
-      out.message = "pure-slip shooting collapsed onto the equilibrium";
-      return out;
-    }
+    if (LeftRange(a, a_max, &out)) return out;
   }
   out.status = OrbitStatus::kNotConverged;
   std::ostringstream os;
