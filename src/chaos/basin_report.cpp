@@ -59,8 +59,11 @@ std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o
   std::ostringstream os;
   os << "# Basins on the stroboscopic section (forcing phase 0) of ss_basin --force.\n"
      << FigurePreamble(format, 900, 900) << "set output '" << FigureFile("basins_forced", format)
-     << "'\nset title " << GnuplotQuoted(title) << "\nset xlabel 'x at phase 0'\n"
-     << "set ylabel \"x' at phase 0\"\nunset grid\nset xrange [" << FormatNumber(o.x_lo - dx) << ":"
+     << "'\nset title " << GnuplotQuoted(title)
+     << "\nset xlabel 'displacement x at forcing phase 0 (dimensionless)'\n"
+     << "set ylabel \"velocity x' at forcing phase 0 (dimensionless)\"\nunset grid\n"
+     // the key below: a row per attractor and one for the section points
+     << "set bmargin " << 5.5 + static_cast<double>(b.attractors.size() + 1) << "\nset xrange [" << FormatNumber(o.x_lo - dx) << ":"
      << FormatNumber(o.x_hi + dx) << "]\nset yrange [" << FormatNumber(o.xdot_lo - dy) << ":"
      << FormatNumber(o.xdot_hi + dy) << "]\nset style fill solid 1.0 noborder\nplot ";
   for (size_t i = 0; i < b.attractors.size(); ++i) {
@@ -70,8 +73,8 @@ std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o
                          : a.kind == AttractorKind::kUnbounded ? "#ffffff"
                                                                : SeriesColor(static_cast<int>(i));
     os << (i ? ", \\\n     " : "") << "'basins_forced.tsv' using 'x':(column('attractor') == " << i
-       << " ? column('xdot') : 1/0):(" << FormatNumber(dx) << "):(" << FormatNumber(dy)
-       << ") with boxxyerror lc rgb '" << colour << "' title "
+       << " ? column('xdot') : 1/0):(" << FormatNumber(1.02 * dx) << "):("  // 2%: no seams
+       << FormatNumber(1.02 * dy) << ") with boxxyerror lc rgb '" << colour << "' title "
        << GnuplotQuoted(AttractorLabel(a) + " (" + std::to_string(a.starts) + ")");
   }
   os << (b.attractors.empty() ? "" : ", \\\n     ")

@@ -90,6 +90,8 @@ std::string Symbol(const std::string& w) {
   if (w == "mu_s" || w == "mu_m" || w == "mu_k") return "μ_" + w.substr(3);
   if (w == "v_m" || w == "v_s") return "v_" + w.substr(2);
   if (w == "k5") return "k_5";
+  if (w == "omega") return "Ω";  // the forced oscillator: A cos(Ω t)
+  if (w == "force") return "A";
   return "";
 }
 }  // namespace
@@ -202,6 +204,8 @@ std::string ParameterAxisLabel(const std::string& param) {
   if (param == "v_s") return "Stribeck speed v_s";
   if (param == "delta") return "friction decay rate δ";
   if (param == "k5") return "quintic coefficient k_5";
+  if (param == "omega") return "forcing frequency Ω";
+  if (param == "force") return "force amplitude A";
   return EnhancedText(param);
 }
 

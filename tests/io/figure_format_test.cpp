@@ -63,6 +63,10 @@ TEST(FigureStyle, FormatNamesAndTitles) {
   EXPECT_EQ(FigureTitle("law=cubic beta=0.05 v=[0.05, 0.5] mu_s=0.4 k5=0 (partial)", {"v"}),
             "cubic law: β = 0.05, μ_s = 0.4, k_5 = 0 (partial)");
   EXPECT_EQ(EnhancedText("a_b^c"), "a\\\\_b\\\\^c");  // escaped for a double-quoted string
+  // The forced oscillator's parameters as the issue writes them: A cos(Ω t).
+  EXPECT_EQ(FigureTitle("law=coulomb beta=0 force=1 omega=[0.75, 2.5]", {"omega"}),
+            "Coulomb law: β = 0, A = 1");
+  EXPECT_EQ(ParameterAxisLabel("force"), "force amplitude A");
   EXPECT_NE(FigurePreamble(FigureFormat::kPdf, 1000, 700).find("pdfcairo size 10in,7in"),
             std::string::npos);
 }

@@ -20,7 +20,7 @@ set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output 'resonance.png'
-set title "Coulomb law: β = 0, v = 0, μ_s = 0.3, μ_k = 0.3, force = 1"
+set title "Coulomb law: β = 0, v = 0, μ_s = 0.3, μ_k = 0.3, A = 1"
 set xlabel "forcing frequency Ω (over the natural one)"
 set ylabel 'largest displacement x_{max} (dimensionless)'
 set yrange [0:*]
