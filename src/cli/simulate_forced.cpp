@@ -43,7 +43,9 @@ std::string ForcedScript(ForcedSection sec, const std::string& title, FigureForm
   if (sec == ForcedSection::kStrobe) {
     s += "set title \"stroboscopic section (cos Ωt = 1)\\n\" . " + Quoted(FigureTitle(title, {})) +
          "\n";
-    s += "set xlabel 'displacement x'\nset ylabel 'velocity dx/dt'\n";
+    s += "set xlabel 'displacement x (dimensionless)'\n";
+    s += "set ylabel 'velocity dx/dt (dimensionless)'\n";
+    s += "set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04\n";  // no point on the frame
     s += "plot 'section.tsv' using 4:5 with points pt 7 ps 0.6 lc rgb '#1f77b4'\n";
   } else {
     s += "set title \"exit-phase map (stick exits)\\n\" . " + Quoted(FigureTitle(title, {})) + "\n";

@@ -19,7 +19,7 @@ set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output "trajectory.png"
-set multiplot layout 1,2 title "coulomb law: β = 0.05, v = 0, μ_s = 0.4, μ_k = 0.3, force = 0.7, omega = 0.5"
+set multiplot layout 1,2 title "Coulomb law: β = 0.05, v = 0, μ_s = 0.4, μ_k = 0.3, A = 0.7, Ω = 0.5"
 set xlabel 'displacement x'
 set ylabel 'velocity dx/dt'
 set title 'phase portrait'
@@ -34,7 +34,7 @@ unset multiplot
 set terminal pngcairo size 950,750 enhanced font 'Sans,12'
 set output "section.png"
 set key off
-set title "exit-phase map (stick exits)\n" . "coulomb law: β = 0.05, v = 0, μ_s = 0.4, μ_k = 0.3, force = 0.7, omega = 0.5"
+set title "exit-phase map (stick exits)\n" . "Coulomb law: β = 0.05, v = 0, μ_s = 0.4, μ_k = 0.3, A = 0.7, Ω = 0.5"
 set xlabel 'forcing phase of stick exit n [rad]'
 set ylabel 'forcing phase of stick exit n+1 [rad]'
 set xrange [0:2*pi]

@@ -19,7 +19,7 @@ set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output "trajectory.png"
-set multiplot layout 1,2 title "stribeck law: β = 0.05, v = 0.25, μ_s = 0.4, μ_k = 0.25, v_s = 0.2, force = 0.3, omega = 0.6"
+set multiplot layout 1,2 title "Stribeck law: β = 0.05, v = 0.25, μ_s = 0.4, μ_k = 0.25, v_s = 0.2, A = 0.3, Ω = 0.6"
 set xlabel 'displacement x'
 set ylabel 'velocity dx/dt'
 set title 'phase portrait'
@@ -34,7 +34,8 @@ unset multiplot
 set terminal pngcairo size 950,750 enhanced font 'Sans,12'
 set output "section.png"
 set key off
-set title "stroboscopic section (cos Ωt = 1)\n" . "stribeck law: β = 0.05, v = 0.25, μ_s = 0.4, μ_k = 0.25, v_s = 0.2, force = 0.3, omega = 0.6"
-set xlabel 'displacement x'
-set ylabel 'velocity dx/dt'
+set title "stroboscopic section (cos Ωt = 1)\n" . "Stribeck law: β = 0.05, v = 0.25, μ_s = 0.4, μ_k = 0.25, v_s = 0.2, A = 0.3, Ω = 0.6"
+set xlabel 'displacement x (dimensionless)'
+set ylabel 'velocity dx/dt (dimensionless)'
+set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04
 plot 'section.tsv' using 4:5 with points pt 7 ps 0.6 lc rgb '#1f77b4'
