@@ -142,7 +142,8 @@ TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const
   const Leg leg = Follow(palc, options, u0, fixed, direction);
   TraceResult t;
   t.u = leg.u;
-  t.ends = {{CurveEndKind::kStart, ""}, leg.end};
+  t.ends.first.kind = CurveEndKind::kStart;
+  t.ends.last = leg.end;
   t.cut = leg.cut;
   t.evaluations = leg.evaluations;
   t.cancelled = leg.cancelled;

@@ -111,12 +111,12 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
   const std::string ax = ForcedAxisName(axis);
   std::ostringstream os;
   os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax << ".\n"
-     << FigureTerminal(format, 1000, 650) << "set output '" << FigureFile("resonance", format)
-     << "'\nset datafile separator '\\t'\n"
-     << "set title \"" << title << "\" noenhanced\n"
-     << "set xlabel '"
-     << (axis == ForcedAxis::kOmega ? "{/Symbol W} (forcing / natural frequency)" : ax)
-     << "'\nset ylabel 'x_{max}'\nset grid\nset key top right box opaque\nset yrange [0:*]\n"
+     << FigurePreamble(format, 1000, 720) << "set output '" << FigureFile("resonance", format)
+     << "'\nset title " << GnuplotQuoted(FigureTitle(title, {ax})) << "\nset xlabel "
+     << GnuplotQuoted(axis == ForcedAxis::kOmega ? "forcing frequency Ω (over the natural one)"
+                                                 : ParameterAxisLabel(ax))
+     << "\nset ylabel 'largest displacement x_{max} (dimensionless)'\nset yrange [0:*]\n"
+     << "set autoscale xfix\n"
      << "c(name) = column(name)\n"
      << "in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s\n"
      << "# a style's rows, and the row after each of its runs (no gap at a change)\n"
@@ -128,21 +128,23 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
        << "noborder behind\nset label 1 'not traced: |x| unbounded' at "
        << FormatNumber(std::max(gap[0], gap[1])) << ", graph 0.93 offset 1, 0 tc rgb '#555555'\n";
   const bool dh = DenHartogApplies(p, axis);
-  if (dh)
-    os << "mu = " << FormatNumber(p.base.mu_k) << "; A = " << FormatNumber(p.force) << "\n"
+  if (dh)  // a fifth key entry: a third row below the plot
+    os << "set bmargin 8.5\nmu = " << FormatNumber(p.base.mu_k) << "; A = " << FormatNumber(p.force) << "\n"
        << "V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))\n"
        << "D(w) = V(w)**2 - (mu * U(w))**2\n"
        << "DH(w) = D(w) > 0 ? sqrt(D(w)) : 1/0\n";
   os << "plot \\\n";
+  // The belt figures' styles (figure_style.hpp): stick-slip blue, non-stop
+  // (pure slip) vermillion; stable solid, unstable dashed.
   const char* kinds[] = {"non-stop", "stick-slip"};
-  const char* colours[] = {"#1f5fbf", "#c0392b"};
+  const int styles[] = {kStylePureSlip, kStyleStickSlip};
   bool first = true;
   for (int b = 1; b <= pieces; ++b)
     for (int k = 0; k < 2; ++k)
       for (int s = 1; s >= 0; --s) {
         os << (first ? "  " : ", \\\n  ") << "prev = 0, 'branch.tsv' using '" << ax << "':(sel("
-           << b << ", '" << kinds[k] << "', " << s << ")) with lines lw " << (s ? 2.5 : 1.8)
-           << " dt " << (s ? 1 : 2) << " lc rgb '" << colours[k] << "' ";
+           << b << ", '" << kinds[k] << "', " << s << ")) with lines ls " << styles[k] + 1 - s
+           << " ";
         if (b == 1)
           os << "title '" << kinds[k] << (s ? ", stable" : ", unstable") << "'";
         else
@@ -153,10 +155,18 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
     os << ", \\\n  'branch.tsv' using '" << ax << "':(c('branch') == " << b
        << " && strcol('kind') eq 'non-stop' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
        << "lc rgb 'black' " << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
-  if (specials > 0)  // LP, PD, NS and the sliding points, located (special_points.tsv)
-    os << ", \\\n  'special_points.tsv' using '" << ax << "':'x_max' with points pt 7 ps 1.2 "
-       << "lc rgb 'black' notitle, \\\n  'special_points.tsv' using '" << ax
-       << "':'x_max':'label' with labels offset 0, 1 notitle";
+  // LP, PD, NS and the sliding points, located (special_points.tsv), labelled
+  // LP1, PD1, ... above and below in turn, so that neighbours do not overlap.
+  if (specials > 0)
+    os << ", \\\n  'special_points.tsv' using '" << ax << "':'x_max' with points ls "
+       << kStyleSpecial << " notitle, \\\n  'special_points.tsv' using '" << ax
+       << "':(int($0) % 2 == 0 ? c('x_max') : 1/0):'lab' with labels offset 0, 1.2 boxed "
+       << "font ',10' notitle";
+  // (gnuplot 5.4 crashes on a labels plot without one defined point: only with a second point)
+  if (specials > 1)
+    os << ", \\\n  'special_points.tsv' using '" << ax
+       << "':(int($0) % 2 == 1 ? c('x_max') : 1/0):'lab' with labels offset 0, -1.2 boxed "
+       << "font ',10' notitle";
   os << "\n";
   return os.str();
 }
