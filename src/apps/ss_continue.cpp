@@ -50,7 +50,9 @@ constexpr const char* kNotes =
     "Points: branch.tsv numbers its rows (pt); special_points.tsv gives each point its row\n"
     "(pt) and a label (lab: GR1, HB1, LP1, ... per type in branch order). --restart DIR\n"
     "--point HB1 starts at that point: its parameters, solver options and continued\n"
-    "parameter are the defaults, --from is its value (--to the far end of the range).\n";
+    "parameter are the defaults, --from is its value (--to the far end of the range).\n"
+    "A forced run's point (PD1, CR1, ... or a pt) restarts the forced oscillator from its\n"
+    "stroboscopic state (x0, xdot0), --param omega|force|v|beta; no --force needed.\n";
 constexpr const char* kExample =
     "\nExample: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5\n"
     "         ss_continue --restart plots --point HB1 --param beta --out hb_beta";
@@ -112,15 +114,14 @@ void AddScales(const cli::Scales& s, const std::string& param, cli::Metadata& me
 // With --restart, the point's parameters, solver options and continued
 // parameter are the defaults, and the run starts at the point.
 ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
-                                  std::optional<ss::LabelledPoint>* restart) {
+                                  const std::optional<ss::LabelledPoint>& point) {
   ss::ContinuationOptions opts;
-  *restart = cli::RestartFromArguments(args);
-  const ss::Params defaults = *restart ? (*restart)->params : ss::Params();
+  const ss::Params defaults = point ? point->params : ss::Params();
   // With physical inputs, --param belt_speed (damping, speed_m, ...) runs in
   // physical units: its dimensionless parameter is continued over the range
   // converted by the seed's scaling.
   const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
-  const std::string asked = args.Text("param", *restart ? (*restart)->param : "v");
+  const std::string asked = args.Text("param", point ? point->param : "v");
   const auto axis = cli::AxisOf(asked, scales.value_or(cli::Scales()));
   const bool physical_param = axis && asked == axis->physical;
   if (physical_param && !scales)
@@ -134,12 +135,11 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
   if (ss::IsParameterName(opts.param)) {
     const ss::Params given = cli::UncheckedModelFromArguments(args, defaults);
     // A restart runs from the point to the far end of the default range.
-    range = *restart ? ss::RangeFromPoint(given, opts.param) : ss::DefaultRange(given, opts.param);
+    range = point ? ss::RangeFromPoint(given, opts.param) : ss::DefaultRange(given, opts.param);
   }
   opts.from = args.Number("from", range.from / to_param) * to_param;
   *base = cli::ModelFromArguments(args, opts.param, opts.from, defaults);
-  opts.orbit.flow =
-      cli::FlowOptionsFromArguments(args, *restart ? (*restart)->flow : ss::FlowOptions());
+  opts.orbit.flow = cli::FlowOptionsFromArguments(args, point ? point->flow : ss::FlowOptions());
   opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");
@@ -220,10 +220,12 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
-  if (cli::ForcedRequested(args)) return cli::RunForced(args, kProg, cli::CommandLine(argc, argv));
+  // A forced run's point restarts the forced oscillator (its files say so).
+  std::optional<ss::LabelledPoint> restart = cli::RestartFromArguments(args);
+  if ((restart && restart->forced) || cli::ForcedRequested(args))
+    return cli::RunForced(args, kProg, cli::CommandLine(argc, argv), restart);
   ss::Params base;
-  std::optional<ss::LabelledPoint> restart;
-  const ss::ContinuationOptions opts = Configure(args, &base, &restart);
+  const ss::ContinuationOptions opts = Configure(args, &base, restart);
   Provenance prov;
   prov.scales = cli::ScalesFromArguments(args);
   prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);

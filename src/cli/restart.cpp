@@ -6,12 +6,13 @@
 namespace stickslip::cli {
 
 void AddRestartOptions(po::options_description& d) {
-  d.add_options()("restart", Value()->value_name("DIR"),
-                  "start from a point of the ss_continue run in DIR (its parameters and solver "
-                  "options are the defaults)")(
+  d.add_options()(
+      "restart", Value()->value_name("DIR"),
+      "start from a point of the ss_continue run in DIR, belt or forced (its parameters "
+      "and solver options are the defaults)")(
       "point", Value()->value_name("LABEL"),
-      "with --restart: the point, a label of its special_points.tsv (GR1, HB1, LP1, ...) or a "
-      "point number of its branch.tsv");
+      "with --restart: the point, a label of its special_points.tsv (GR1, HB1, LP1, PD1, CR1, "
+      "...) or a point number of its branch.tsv");
 }
 
 std::optional<LabelledPoint> RestartFromArguments(const Arguments& args) {

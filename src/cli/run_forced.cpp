@@ -6,6 +6,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/restart.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/forced/report.hpp"
@@ -21,11 +22,12 @@ struct ForcedSetup {
   ForcedAxis axis = ForcedAxis::kOmega;
   double from = 0, to = 0;
   ForcedBranchOptions opts;
-  FlowOptions flow;  // rtol and atol as given, for the metadata
+  FlowOptions flow;                      // rtol and atol as given, for the metadata
+  std::optional<LabelledPoint> restart;  // a forced run's point to start from
 };
 
-ForcedAxis AxisFromName(const Arguments& args) {
-  const std::string name = args.Text("param", "omega");
+ForcedAxis AxisFromName(const Arguments& args, const std::string& fallback) {
+  const std::string name = args.Text("param", fallback);
   for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
     if (name == ForcedAxisName(a)) return a;
   throw UsageError("invalid value '" + name + "' for " + args.Source("param") +
@@ -40,23 +42,30 @@ void Check(const Arguments& args, const ForcedParams& p, const std::string& what
                    (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
 }
 
-ForcedSetup Configure(const Arguments& args) {
-  if (args.Given("restart"))  // a belt point carries no forcing, a forced run no restart state
+ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>& restart) {
+  if (restart && !restart->forced)  // a belt point carries no forcing
     throw UsageError(args.Source("restart") + " " + args.Text("restart") +
-                     ": restarts are for the belt model; the forced oscillator (--force, --param "
-                     "omega|force) starts from a transient, not from a labelled point");
+                     " is a belt run: its restart cannot add a forcing (--force, --omega, "
+                     "--param omega|force)");
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
   ForcedSetup s;
-  s.p.base = UncheckedModelFromArguments(args);
-  s.p.force = args.Number("force", 0);
-  s.p.omega = args.Number("omega", 1);
-  s.axis = AxisFromName(args);
+  s.restart = restart;
+  s.p.base = UncheckedModelFromArguments(args, restart ? restart->params : Params());
+  s.p.force = args.Number("force", restart ? restart->force : 0);
+  s.p.omega = args.Number("omega", restart ? restart->omega : 1);
+  s.axis = AxisFromName(args, restart ? restart->param : "omega");
   const double defaults[4][2] = {{0.75, 2.5}, {0.1, 2}, {0, 0.5}, {0, 0.3}};
   const int k = static_cast<int>(s.axis);
-  s.from = args.Number("from", defaults[k][0]);
-  s.to = args.Number("to", defaults[k][1]);
+  double from = defaults[k][0], to = defaults[k][1];
+  if (restart) {  // from the point to the far end of the default range (RangeFromPoint)
+    const double x = GetAxis(s.p, s.axis);
+    to = std::abs(to - x) >= std::abs(from - x) ? to : from;
+    from = x;
+  }
+  s.from = args.Number("from", from);
+  s.to = args.Number("to", to);
   if (s.from == s.to)
     throw UsageError(args.Source("to") + " = " + FormatNumber(s.to) + " equals the start");
   ForcedParams at = s.p;
@@ -66,11 +75,12 @@ ForcedSetup Configure(const Arguments& args) {
   Check(args, at, " at --from");
   SetAxis(at, s.axis, s.to);
   Check(args, at, " at --to");
-  s.flow = FlowOptionsFromArguments(args);  // validated here
+  s.flow = FlowOptionsFromArguments(args, restart ? restart->flow : FlowOptions());  // validated
   // The forced flow's own defaults (1e-12): at the belt's rtol 1e-11 the
   // corrector (tol 1e-11) stalls on the flow's noise (measured: step-too-small).
-  if (!args.Given("rtol")) s.flow.rtol = s.opts.flow.rtol;
-  if (!args.Given("atol")) s.flow.atol = s.opts.flow.atol;
+  if (!args.Given("rtol") && !restart) s.flow.rtol = s.opts.flow.rtol;
+  if (!args.Given("atol") && !restart) s.flow.atol = s.opts.flow.atol;
+  if (restart) s.opts.m = restart->m;
   s.opts.flow.rtol = s.flow.rtol, s.opts.flow.atol = s.flow.atol;
   s.opts.flow.max_steps = s.flow.max_steps;
   s.opts.palc.ds_max = args.Number("max_step", 0.02) * std::abs(s.to - s.from);
@@ -87,12 +97,16 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run
   ForcedParams p = s.p;
   SetAxis(p, s.axis, from);
   const ForcedModel model(p);
-  ForcedRequest rq;
-  rq.t_end = kTransientPeriods * model.period();
-  const ForcedRun tr = ForcedFlow(model, s.opts.flow).Run(ForcedStart(model, 0, 0, p.base.v), rq);
-  double x = tr.end.x, xdot = tr.end.xdot;
-  if (tr.status != ForcedStatus::kReached || std::abs(x) > s.opts.max_amplitude)
-    x = 0, xdot = p.base.v;  // no settled state: Newton from rest
+  double x = 0, xdot = p.base.v;      // no settled state: Newton from rest
+  if (s.restart && from == s.from) {  // the point's stroboscopic state
+    x = s.restart->state.x(), xdot = s.restart->state.y();
+  } else {
+    ForcedRequest rq;
+    rq.t_end = kTransientPeriods * model.period();
+    const ForcedRun tr = ForcedFlow(model, s.opts.flow).Run(ForcedStart(model, 0, 0, p.base.v), rq);
+    if (tr.status == ForcedStatus::kReached && std::abs(tr.end.x) <= s.opts.max_amplitude)
+      x = tr.end.x, xdot = tr.end.xdot;
+  }
   ForcedBranchOptions opts = s.opts;
   opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
   ForcedBranch b = ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
@@ -125,6 +139,16 @@ std::string Value(const ForcedSetup& s, ForcedAxis a) {
   return "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "] (continued)";
 }
 
+// "branch 1 reached-end; branch 2 ..." for the metadata and the summary.
+std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
+  std::string status;
+  for (const ForcedPiece& piece : pieces)
+    status += (status.empty() ? "" : "; ") + std::string("branch ") + std::to_string(piece.index) +
+              " " + ForcedBranchStatusName(piece.branch.status) +
+              (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
+  return status;
+}
+
 }  // namespace
 
 po::options_description ForcingOptions() {
@@ -149,8 +173,9 @@ bool ForcedRequested(const Arguments& args) {
   return forced;
 }
 
-int RunForced(const Arguments& args, const std::string& prog, const std::string& command) {
-  const ForcedSetup s = Configure(args);
+int RunForced(const Arguments& args, const std::string& prog, const std::string& command,
+              const std::optional<LabelledPoint>& restart) {
+  const ForcedSetup s = Configure(args, restart);
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("resonance", format);
   const std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "resonance.gp",
@@ -173,27 +198,28 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
     pieces.push_back({Trace(s, s.to, s.from, app.run()), 2});
     const auto& a = pieces[0].branch.rows;
     const auto& b = pieces[1].branch.rows;
-    if (!a.empty() && !b.empty()) gap_ends = {a.back().p, b.back().p};
-    if (!a.empty() && !b.empty())
+    if (!a.empty() && !b.empty()) {
+      gap_ends = {a.back().p, b.back().p};
       gap = "not traced between " + FormatNumber(a.back().p) + " and " + FormatNumber(b.back().p) +
             ": |x| > max_amplitude " + FormatNumber(s.opts.max_amplitude) +
             " there (unbounded resonance)";
+    }
   }
   const std::string model = Describe(s);
-  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow);
-  meta.insert(meta.end(), {{"model", "forced oscillator, " + model},
-                           {"force", Value(s, ForcedAxis::kForce)},
-                           {"omega", Value(s, ForcedAxis::kOmega)},
-                           {"continued", ForcedAxisName(s.axis)},
-                           {"from", FormatNumber(s.from)},
-                           {"to", FormatNumber(s.to)},
-                           {"transient", std::to_string(kTransientPeriods) + " forcing periods"},
-                           {"max_amplitude", FormatNumber(s.opts.max_amplitude)}});
-  std::string status;
-  for (const ForcedPiece& piece : pieces)
-    status += (status.empty() ? "" : "; ") + std::string("branch ") + std::to_string(piece.index) +
-              " " + ForcedBranchStatusName(piece.branch.status) +
-              (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
+  // v, beta: "continued", not a value
+  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow, ForcedAxisName(s.axis));
+  meta.insert(meta.end(),
+              {{"model", "forced oscillator, " + model},
+               {"force", Value(s, ForcedAxis::kForce)},
+               {"omega", Value(s, ForcedAxis::kOmega)},
+               {"continued", ForcedAxisName(s.axis)},
+               {"from", FormatNumber(s.from)},
+               {"to", FormatNumber(s.to)},
+               {"transient", restart ? "none: from the restart point's state"
+                                     : std::to_string(kTransientPeriods) + " forcing periods"},
+               {"max_amplitude", FormatNumber(s.opts.max_amplitude)}});
+  const std::string status = StatusOf(pieces);
+  if (restart) meta.emplace_back("restart", DescribeRestart(args, *restart));
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;

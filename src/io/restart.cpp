@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stickslip/io/report.hpp"
+#include "stickslip/model/forced.hpp"
 
 namespace stickslip {
 
@@ -94,11 +95,16 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
     throw RestartError(Part::kRun, "'" + t.path + "': " + e.what());
   }
   lp->param = t.Meta("continued");
-  if (!IsParameterName(lp->param))
+  const auto model = t.meta.find("model");  // run_forced.cpp: "forced oscillator, ..."
+  lp->forced = model != t.meta.end() && model->second.rfind("forced oscillator", 0) == 0;
+  const bool forcing = lp->forced && (lp->param == "force" || lp->param == "omega");
+  if (!forcing && !IsParameterName(lp->param))
     throw RestartError(Part::kRun,
                        "'" + t.path + "': continued '" + lp->param + "' is no parameter");
   for (const std::string& name : ParameterNames(lp->params.law))
     if (name != lp->param) SetParameter(lp->params, name, Number(t, t.Meta(name), name));
+  if (lp->forced && lp->param != "force") lp->force = Number(t, t.Meta("force"), "force");
+  if (lp->forced && lp->param != "omega") lp->omega = Number(t, t.Meta("omega"), "omega");
   const std::string integrator = t.Meta("integrator");
   if (integrator == "taylor") {
     lp->flow.integrator = Integrator::kTaylor;
@@ -116,11 +122,20 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
 // The row's parameter value and state.
 void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint* lp) {
   lp->p = Number(t, row[t.Column(lp->param)], lp->param);
-  SetParameter(lp->params, lp->param, lp->p);
-  lp->state = Vec2(Number(t, row[t.Column("x_start")], "x_start"),
-                   Number(t, row[t.Column("xdot_start")], "xdot_start"));
+  if (lp->param == "force") {
+    lp->force = lp->p;
+  } else if (lp->param == "omega") {
+    lp->omega = lp->p;
+  } else {
+    SetParameter(lp->params, lp->param, lp->p);
+  }
+  const std::string x = lp->forced ? "x0" : "x_start", xdot = lp->forced ? "xdot0" : "xdot_start";
+  lp->state = Vec2(Number(t, row[t.Column(x)], x), Number(t, row[t.Column(xdot)], xdot));
   lp->period = Number(t, row[t.Column("period")], "period");
-  std::string err = ValidationError(lp->params);
+  if (lp->forced) lp->m = static_cast<int>(Number(t, row[t.Column("m")], "m"));
+  std::string err = lp->forced ? ValidationError(ForcedParams{lp->params, lp->force, lp->omega})
+                               : ValidationError(lp->params);
+  if (err.empty() && lp->forced && !(lp->m >= 1 && lp->m <= 1000)) err = "m out of range";
   if (err.empty()) err = lp->flow.ValidationError();
   if (!err.empty() || !std::isfinite(lp->p) || !lp->state.allFinite())
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " is invalid" +
@@ -133,10 +148,12 @@ LabelledPoint ReadLabelledPoint(const std::string& dir, const std::string& point
   LabelledPoint lp;
   lp.label = point;
   const bool number = std::regex_match(point, std::regex("[1-9][0-9]{0,8}"));
-  if (!number && !std::regex_match(point, std::regex("(GR|HB|LP)[1-9][0-9]{0,8}")))
-    throw RestartError(Part::kPoint, "'" + point +
-                                         "' is neither a label (GR1, HB1, LP1, ...) nor a point "
-                                         "number (1, 2, ... of branch.tsv)");
+  if (!number &&
+      !std::regex_match(point, std::regex("(GR|HB|LP|PD|NS|SW|AD|CR|SL)[1-9][0-9]{0,8}")))
+    throw RestartError(Part::kPoint,
+                       "'" + point +
+                           "' is neither a label (GR1, HB1, LP1, PD1, CR1, ...) nor a point "
+                           "number (1, 2, ... of branch.tsv)");
   const Table t = Read(dir + (number ? "/branch.tsv" : "/special_points.tsv"));
   ReadModel(t, &lp);
   if (number) {

@@ -1,6 +1,7 @@
 // End-to-end tests of ss_continue --force (issue 20, "Done when"): the Den
 // Hartog run matches his closed form on every non-stop row of branch.tsv, and
-// bad forced input is exit 2 with one line naming the option, nothing written.
+// bad forced input is exit 2 with one line naming the option, nothing written;
+// a restart from a forced run's point starts a forced branch there (issue 22).
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -142,6 +143,99 @@ TEST(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
     ASSERT_LE(pt, b.rows.size());
     EXPECT_EQ(b.rows[pt - 1][col(b, "omega")], row[col(sp, "omega")]);
     EXPECT_EQ(b.rows[pt - 1][col(b, "pt")], row[col(sp, "pt")]);
+  }
+}
+
+size_t Col(const tu::Tsv& t, const std::string& name) {
+  const auto it = std::find(t.columns.begin(), t.columns.end(), name);
+  EXPECT_NE(it, t.columns.end()) << name;
+  return static_cast<size_t>(it - t.columns.begin());
+}
+
+double Cell(const tu::Tsv& t, size_t row, const std::string& name) {
+  return std::stod(t.rows.at(row).at(Col(t, name)));
+}
+
+// --restart from a forced run's label, without --force (the run's files say
+// it was forced), in another axis: the new branch's first row is the point
+// (its omega, its A, its stroboscopic state) and it runs to the far end of
+// force's default range [0.1, 2].
+TEST(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
+  const std::string dir = TempDir();
+  const Result r0 =
+      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.4", "--mu_k", "0.25", "--v", "0", "--beta",
+                   "0.05", "--force", "0.5", "--param", "omega", "--from", "0.5", "--to", "2.5"});
+  ASSERT_EQ(r0.outcome.code, 0) << r0.err;
+  const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
+  ASSERT_FALSE(sp.rows.empty());
+  ASSERT_EQ(sp.rows[0][Col(sp, "lab")], "CR1");
+  const std::string dir2 = TempDir();
+  const Result r = RunApp(dir2, {"--restart", dir + "/out", "--point", "CR1", "--param", "force"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir2 + "/out/branch.tsv"));
+  ASSERT_GT(b.rows.size(), 10u);
+  EXPECT_EQ(b.meta.at("continued"), "force");
+  EXPECT_EQ(b.meta.at("to"), "2");
+  EXPECT_TRUE(tu::Contains(b.meta.at("restart"), "CR1")) << b.meta.at("restart");
+  const double w = std::stod(b.meta.at("omega")), a = Cell(b, 0, "force");
+  const double dx = std::abs(Cell(b, 0, "x0") - Cell(sp, 0, "x0"));
+  const double dv = std::abs(Cell(b, 0, "xdot0") - Cell(sp, 0, "xdot0"));
+  EXPECT_NEAR(w, Cell(sp, 0, "omega"), 1e-9);
+  EXPECT_NEAR(a, 0.5, 1e-9);
+  EXPECT_LT(dx, 1e-9);
+  EXPECT_LT(dv, 1e-9);
+  EXPECT_NEAR(Cell(b, b.rows.size() - 1, "force"), 2, 1e-12);
+  std::printf("[ measured ] first row - CR1: omega %.1e, A %.1e, x0 %.1e, xdot0 %.1e\n",
+              std::abs(w - Cell(sp, 0, "omega")), std::abs(a - 0.5), dx, dv);
+}
+
+// Den Hartog's parameters: a restart in force from a non-stop row (by its
+// pt) of the omega branch matches his closed form X(A) at that Omega.
+TEST(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
+  const std::string dir = TempDir();
+  const Result r0 =
+      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
+                   "--force", "1", "--param", "omega", "--from", "0.75", "--to", "2.5"});
+  ASSERT_EQ(r0.outcome.code, 0) << r0.err;
+  const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  size_t i = 0;
+  while (i < t.rows.size() && !(t.rows[i][Col(t, "kind")] == "non-stop" &&
+                                Cell(t, i, "omega") > 1.5 && Cell(t, i, "omega") < 1.6))
+    ++i;
+  ASSERT_LT(i, t.rows.size());
+  const std::string pt = t.rows[i][Col(t, "pt")];
+  const std::string dir2 = TempDir();
+  const Result r = RunApp(dir2, {"--restart", dir + "/out", "--point", pt, "--param", "force"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir2 + "/out/branch.tsv"));
+  const double w = std::stod(b.meta.at("omega"));
+  EXPECT_NEAR(w, Cell(t, i, "omega"), 1e-9);
+  EXPECT_NEAR(Cell(b, 0, "force"), 1, 1e-9);
+  EXPECT_NEAR(Cell(b, 0, "x0"), Cell(t, i, "x0"), 1e-9);
+  EXPECT_NEAR(Cell(b, 0, "xdot0"), Cell(t, i, "xdot0"), 1e-9);
+  int compared = 0;
+  double worst = 0;
+  for (size_t k = 0; k < b.rows.size(); ++k) {
+    if (b.rows[k][Col(b, "kind")] != "non-stop") continue;
+    const double a = Cell(b, k, "force"), X = DenHartogX(0.3, a, w);
+    EXPECT_NEAR(Cell(b, k, "x_max"), X, 1e-9 * std::max(1.0, X)) << "A = " << a;
+    worst = std::max(worst, std::abs(Cell(b, k, "x_max") - X) / std::max(1.0, X));
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
+  EXPECT_NEAR(Cell(b, b.rows.size() - 1, "force"), 2, 1e-12);
+  std::printf(
+      "[ measured ] restart at pt %s (Omega %.6f): %d non-stop rows, max |x_max - X| / "
+      "max(1, X) = %.2e\n",
+      pt.c_str(), w, compared, worst);
+  // A label the run does not have, or no label at all: exit 2, one line.
+  for (const std::string bad : {"PD7", "XY1"}) {
+    const std::string dir3 = TempDir();
+    const Result e = RunApp(dir3, {"--restart", dir + "/out", "--point", bad});
+    EXPECT_EQ(e.outcome.code, 2) << bad << ": " << e.err;
+    EXPECT_TRUE(tu::Contains(e.err, "--point " + bad)) << e.err;
+    EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+    EXPECT_FALSE(tu::Exists(dir3 + "/out")) << bad;
   }
 }
 

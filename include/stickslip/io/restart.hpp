@@ -22,6 +22,11 @@ struct LabelledPoint {
   FlowOptions flow;           // that run's integrator and tolerances
   Vec2 state = Vec2::Zero();  // x_start, xdot_start (BranchPoint / SpecialPoint)
   double period = 0;          // nan for steady sliding
+  // A forced run's point (ss_continue --force): its forcing, and state is the
+  // stroboscopic point (x0, xdot0) at theta = 0 of its m-periodic orbit.
+  bool forced = false;
+  double force = 0, omega = 1;
+  int m = 1;
 };
 
 /// Why a restart cannot be read: the run directory (a file missing, corrupt,
@@ -36,7 +41,7 @@ class RestartError : public InvalidArgument {
   Part part_;
 };
 
-/// Reads `point` (a label such as "HB1", or a point number "17" of branch.tsv)
+/// Reads `point` (a label such as "HB1" or "PD1", or a point number "17" of branch.tsv)
 /// from the run in `dir`. Throws RestartError naming the file or the point.
 LabelledPoint ReadLabelledPoint(const std::string& dir, const std::string& point);
 
