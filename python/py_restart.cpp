@@ -9,6 +9,7 @@
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/io/restart.hpp"
+#include "stickslip/model/forced.hpp"
 
 namespace stickslip::python {
 
@@ -18,6 +19,9 @@ namespace {
 // end of the parameter's default range (`to` overrides), with the run's solver.
 ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::string> param,
                                   std::optional<double> to) {
+  if (lp.forced)
+    throw InvalidArgument(lp.label + " is a point of a forced run: continue_forced(point." +
+                          "forced_params(), axis, from_, to, *point.state, m=point.m)");
   ContinuationOptions o;
   o.param = param.value_or(lp.param);
   if (!IsParameterName(o.param)) throw InvalidArgument(o.ValidationError(lp.params));
@@ -76,6 +80,20 @@ void BindRestart(py::module_& m) {
             return std::isfinite(lp.period) ? py::object(py::float_(lp.period)) : py::none();
           },
           "the orbit's period; None for steady sliding")
+      .def_readonly("forced", &LabelledPoint::forced, "a point of a forced run (--force)")
+      .def_readonly("force", &LabelledPoint::force, "a forced run's A at the point")
+      .def_readonly("omega", &LabelledPoint::omega, "a forced run's Omega at the point")
+      .def_readonly("m", &LabelledPoint::m, "a forced run's period multiple at the point")
+      .def(
+          "forced_params",
+          [](const LabelledPoint& lp) {
+            if (!lp.forced) throw InvalidArgument(lp.label + " is a point of a belt run");
+            ForcedParams fp;
+            fp.base = lp.params, fp.force = lp.force, fp.omega = lp.omega;
+            return fp;
+          },
+          "A forced run's point: its ForcedParams; with state (the stroboscopic point at "
+          "theta = 0) and m it starts continue_forced there.")
       .def("options", &BranchOptions, py::arg("param") = none, py::arg("to") = none,
            "ContinuationOptions of a new branch in param (default: the run's) from the point "
            "to the far end of default_range (or to), with the run's solver: "

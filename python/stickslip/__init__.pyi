@@ -432,6 +432,11 @@ class LabelledPoint:
     flow: FlowOptions
     state: Tuple[float, float]
     period: Optional[float]
+    forced: bool
+    force: float
+    omega: float
+    m: int
+    def forced_params(self) -> ForcedParams: ...
     def options(self, param: Optional[str] = None,
                 to: Optional[float] = None) -> ContinuationOptions: ...
     def chart_options(self, param2: str = "beta", from_: float = 0.05, to: float = 0.6,

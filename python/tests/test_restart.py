@@ -102,3 +102,37 @@ class Restart(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ForcedRestart(unittest.TestCase):
+    """A forced run's labelled point (ss_continue --force) starts continue_forced there.
+    Reference: Den Hartog's closed form (1931) of the non-stop orbit, X = sqrt(V^2 - (mu U)^2),
+    V = A / (1 - W^2), U = sin(pi / W) / (W (1 + cos(pi / W)))."""
+
+    def test_den_hartog_point_continued_in_force(self):
+        exe = os.environ.get("STICKSLIP_SS_CONTINUE")
+        if not exe:
+            raise unittest.SkipTest("STICKSLIP_SS_CONTINUE not set (run through ctest)")
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "dh")
+            subprocess.run([exe, "--no_plots", "--law", "coulomb", "--mu_s", "0.3", "--mu_k",
+                            "0.3", "--v", "0", "--beta", "0", "--force", "1", "--param", "omega",
+                            "--from", "1.5", "--to", "2.5", "--out", run], check=True,
+                           stdout=subprocess.DEVNULL)
+            lp = stickslip.restart(run, 5)
+            self.assertTrue(lp.forced)
+            self.assertEqual((lp.force, lp.m), (1.0, 1))
+            with self.assertRaises(ValueError):
+                lp.options("beta")  # a belt branch from a forced point
+            b = stickslip.continue_forced(lp.forced_params(), stickslip.ForcedAxis.force,
+                                          lp.force, 2.0, *lp.state, m=lp.m)
+        self.assertGreater(len(b.p), 10)
+        self.assertAlmostEqual(b.p[0], 1.0, delta=1e-12)
+        self.assertAlmostEqual(b.x0[0], lp.state[0], delta=1e-9)
+        w, mu = lp.omega, 0.3
+        u = math.sin(math.pi / w) / (w * (1 + math.cos(math.pi / w)))
+        worst = 0.0
+        for a, x_max in zip(b.p, b.x_max):
+            v = a / (1 - w * w)
+            worst = max(worst, abs(x_max - math.sqrt(v * v - (mu * u) ** 2)) / x_max)
+        self.assertLess(worst, 1e-9)
