@@ -118,34 +118,6 @@ TEST(ForcedApp, MaxTimeStopsAForcedRunWithStatusCancelled) {
   EXPECT_FALSE(t.rows.empty());
 }
 
-// special_points.tsv: each located point has the branch.tsv row it sits on
-// (pt), its label with an index per type (lab) and a description; the floor
-// scene of forced_sliding_test has two crossing-sliding points.
-TEST(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
-  const std::string dir = TempDir();
-  const Result r =
-      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.4", "--mu_k", "0.25", "--v", "0", "--beta",
-                   "0.05", "--force", "0.5", "--param", "omega", "--from", "0.5", "--to", "2.5"});
-  ASSERT_EQ(r.outcome.code, 0) << r.err;
-  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
-  const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
-  auto col = [](const tu::Tsv& t, const std::string& name) {
-    return static_cast<size_t>(std::find(t.columns.begin(), t.columns.end(), name) -
-                               t.columns.begin());
-  };
-  ASSERT_EQ(sp.rows.size(), 2u);
-  for (size_t i = 0; i < 2; ++i) {
-    const auto& row = sp.rows[i];
-    EXPECT_EQ(row[col(sp, "lab")], "CR" + std::to_string(i + 1));
-    EXPECT_TRUE(tu::Contains(row[col(sp, "description")], "crossing-sliding"));
-    const size_t pt = std::stoul(row[col(sp, "pt")]);
-    ASSERT_GE(pt, 1u);
-    ASSERT_LE(pt, b.rows.size());
-    EXPECT_EQ(b.rows[pt - 1][col(b, "omega")], row[col(sp, "omega")]);
-    EXPECT_EQ(b.rows[pt - 1][col(b, "pt")], row[col(sp, "pt")]);
-  }
-}
-
 size_t Col(const tu::Tsv& t, const std::string& name) {
   const auto it = std::find(t.columns.begin(), t.columns.end(), name);
   EXPECT_NE(it, t.columns.end()) << name;
@@ -156,15 +128,41 @@ double Cell(const tu::Tsv& t, size_t row, const std::string& name) {
   return std::stod(t.rows.at(row).at(Col(t, name)));
 }
 
+// The floor scene of forced_sliding_test (two crossing-sliding points), in omega.
+std::vector<std::string> FloorScene() {
+  return {"--law",  "coulomb", "--mu_s",  "0.4",   "--mu_k", "0.25",  "--v",  "0",   "--beta",
+          "0.05",   "--force", "0.5",     "--param", "omega", "--from", "0.5",  "--to", "2.5"};
+}
+
+// special_points.tsv: each located point has the branch.tsv row it sits on
+// (pt), its label with an index per type (lab) and a description; the floor
+// scene of forced_sliding_test has two crossing-sliding points.
+TEST(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
+  const std::string dir = TempDir();
+  const Result r = RunApp(dir, FloorScene());
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
+  ASSERT_EQ(sp.rows.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    const auto& row = sp.rows[i];
+    EXPECT_EQ(row[Col(sp, "lab")], "CR" + std::to_string(i + 1));
+    EXPECT_TRUE(tu::Contains(row[Col(sp, "description")], "crossing-sliding"));
+    const size_t pt = std::stoul(row[Col(sp, "pt")]);
+    ASSERT_GE(pt, 1u);
+    ASSERT_LE(pt, b.rows.size());
+    EXPECT_EQ(b.rows[pt - 1][Col(b, "omega")], row[Col(sp, "omega")]);
+    EXPECT_EQ(b.rows[pt - 1][Col(b, "pt")], row[Col(sp, "pt")]);
+  }
+}
+
 // --restart from a forced run's label, without --force (the run's files say
 // it was forced), in another axis: the new branch's first row is the point
 // (its omega, its A, its stroboscopic state) and it runs to the far end of
 // force's default range [0.1, 2].
 TEST(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
   const std::string dir = TempDir();
-  const Result r0 =
-      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.4", "--mu_k", "0.25", "--v", "0", "--beta",
-                   "0.05", "--force", "0.5", "--param", "omega", "--from", "0.5", "--to", "2.5"});
+  const Result r0 = RunApp(dir, FloorScene());
   ASSERT_EQ(r0.outcome.code, 0) << r0.err;
   const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
   ASSERT_FALSE(sp.rows.empty());
