@@ -73,10 +73,11 @@ std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::
   os << "# The orbit diagram of ss_orbit_diagram: stroboscopic section points (phase 0) and\n"
      << "# the largest Lyapunov exponent against " << ax << ".\n"
      << FigurePreamble(format, 1100, 900) << "set output '" << FigureFile("orbit_diagram", format)
-     << "'\nset multiplot\nset lmargin 12\nset rmargin 4\nunset key\n"
+     << "'\nset multiplot\nset autoscale xfix\nset lmargin 12\nset rmargin 4\nunset key\n"
      << "sel(d, col) = strcol('direction') eq d ? column(col) : 1/0\n"
      << "set size 1, 0.62\nset origin 0, 0.38\nset tmargin 3\nset bmargin 0.5\n"
-     << "set title " << GnuplotQuoted(title) << "\nset format x ''\nset ylabel 'x at phase 0'\n"
+     << "set title " << GnuplotQuoted(title) << "\nset format x ''\n"
+     << "set ylabel 'displacement x at forcing phase 0'\n"
      << "plot ";
   const char* dirs[] = {"up", "down"};
   const bool on[] = {up, down};
@@ -89,7 +90,8 @@ std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::
     first = false;
   }
   os << "\nunset title\nset size 1, 0.38\nset origin 0, 0\nset tmargin 0.5\nset bmargin 7\n"
-     << "set format x '% g'\nset xlabel '" << label << "'\nset ylabel 'largest exponent λ_1'\n"
+     << "set format x '% g'\nset xlabel '" << label << "'\n"
+     << "set ylabel 'largest Lyapunov exponent λ_1'\n"
      << "set key outside below center horizontal\nplot 0 with lines ls 7 notitle";
   for (int i = 1; i >= 0; --i) {
     if (!on[i]) continue;
