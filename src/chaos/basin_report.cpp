@@ -63,9 +63,10 @@ std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o
      << "\nset xlabel 'displacement x at forcing phase 0 (dimensionless)'\n"
      << "set ylabel \"velocity x' at forcing phase 0 (dimensionless)\"\nunset grid\n"
      // the key below: a row per attractor and one for the section points
-     << "set bmargin " << 5.5 + static_cast<double>(b.attractors.size() + 1) << "\nset xrange [" << FormatNumber(o.x_lo - dx) << ":"
-     << FormatNumber(o.x_hi + dx) << "]\nset yrange [" << FormatNumber(o.xdot_lo - dy) << ":"
-     << FormatNumber(o.xdot_hi + dy) << "]\nset style fill solid 1.0 noborder\nplot ";
+     << "set bmargin " << 5.5 + static_cast<double>(b.attractors.size() + 1) << "\nset xrange ["
+     << FormatNumber(o.x_lo - dx) << ":" << FormatNumber(o.x_hi + dx) << "]\nset yrange ["
+     << FormatNumber(o.xdot_lo - dy) << ":" << FormatNumber(o.xdot_hi + dy)
+     << "]\nset style fill solid 1.0 noborder\nplot ";
   for (size_t i = 0; i < b.attractors.size(); ++i) {
     const Attractor& a = b.attractors[i];
     const char* colour = a.kind == AttractorKind::kChaotic     ? "#000000"

@@ -129,7 +129,8 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
        << FormatNumber(std::max(gap[0], gap[1])) << ", graph 0.93 offset 1, 0 tc rgb '#555555'\n";
   const bool dh = DenHartogApplies(p, axis);
   if (dh)  // a fifth key entry: a third row below the plot
-    os << "set bmargin 8.5\nmu = " << FormatNumber(p.base.mu_k) << "; A = " << FormatNumber(p.force) << "\n"
+    os << "set bmargin 8.5\nmu = " << FormatNumber(p.base.mu_k) << "; A = " << FormatNumber(p.force)
+       << "\n"
        << "V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))\n"
        << "D(w) = V(w)**2 - (mu * U(w))**2\n"
        << "DH(w) = D(w) > 0 ? sqrt(D(w)) : 1/0\n";

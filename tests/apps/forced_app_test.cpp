@@ -130,8 +130,8 @@ double Cell(const tu::Tsv& t, size_t row, const std::string& name) {
 
 // The floor scene of forced_sliding_test (two crossing-sliding points), in omega.
 std::vector<std::string> FloorScene() {
-  return {"--law",  "coulomb", "--mu_s",  "0.4",   "--mu_k", "0.25",  "--v",  "0",   "--beta",
-          "0.05",   "--force", "0.5",     "--param", "omega", "--from", "0.5",  "--to", "2.5"};
+  return {"--law", "coulomb", "--mu_s", "0.4",     "--mu_k", "0.25",   "--v", "0",    "--beta",
+          "0.05",  "--force", "0.5",    "--param", "omega",  "--from", "0.5", "--to", "2.5"};
 }
 
 // special_points.tsv: each located point has the branch.tsv row it sits on
