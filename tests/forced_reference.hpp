@@ -12,8 +12,18 @@
 #include <vector>
 
 #include "reference/reference_orbit.hpp"
+#include "stickslip/model/forced.hpp"
 
 namespace stickslip::forced_reference {
+
+/// The library's parameters of a coulomb scene (the tests' shorthand).
+inline ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, double a, double w) {
+  ForcedParams p;
+  p.base.law = LawKind::kCoulomb;
+  p.base.mu_s = mu_s, p.base.mu_k = mu_k, p.base.beta = beta, p.base.v = v;
+  p.force = a, p.omega = w;
+  return p;
+}
 
 using reference::Real;
 

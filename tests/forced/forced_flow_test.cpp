@@ -14,13 +14,7 @@ namespace {
 namespace ref = forced_reference;
 using ref::Real;
 
-ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, double a, double w) {
-  ForcedParams p;
-  p.base.law = LawKind::kCoulomb;
-  p.base.mu_s = mu_s, p.base.mu_k = mu_k, p.base.beta = beta, p.base.v = v;
-  p.force = a, p.omega = w;
-  return p;
-}
+using ref::Coulomb;
 
 ref::Setup SetupOf(const ForcedParams& p) {
   return {reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega};
