@@ -106,12 +106,11 @@ class CvodeStepper final : public Stepper {
     const auto* self = static_cast<const CvodeStepper*>(data);
     const double* z = N_VGetArrayPointer(y);
     double* f = N_VGetArrayPointer(ydot);
-    const Model& m = *self->p_.model;
-    const double c = -2.0 * m.beta() + m.SlipForceSlope(self->p_.mode, z[1]);
+    const Mat2 J = self->p_.model->Jacobian(self->p_.mode, Vec2(z[0], z[1]));
     for (int col = 0; col < 2; ++col) {
       const double p0 = z[2 + 2 * col], p1 = z[3 + 2 * col];
-      f[2 + 2 * col] = p1;
-      f[3 + 2 * col] = -p0 + c * p1;
+      f[2 + 2 * col] = J(0, 0) * p0 + J(0, 1) * p1;
+      f[3 + 2 * col] = J(1, 0) * p0 + J(1, 1) * p1;
     }
     return 0;
   }

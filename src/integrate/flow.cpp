@@ -59,23 +59,24 @@ std::string FlowOptions::ValidationError() const {
   return os.str();
 }
 
-Flow::Flow(const Model& model, const FlowOptions& options) : model_(model), options_(options) {
+Flow::Flow(const FrictionSystem& system, const FlowOptions& options)
+    : system_(system.Clone()), options_(options) {
   const std::string err = options.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
 }
 
 Flow::~Flow() = default;
 
-bool ParameterColumnSupported(LawKind law, const std::string& name) {
-  return !((name == "v_m" && law == LawKind::kCubic) ||
-           (name == "v_s" && law == LawKind::kStribeck) ||
-           (name == "delta" && law == LawKind::kLeine));
+const Model& Flow::model() const {
+  const auto* belt = dynamic_cast<const Model*>(system_.get());
+  if (!belt) throw InvalidArgument("Flow::model: the system is not the belt model");
+  return *belt;
 }
 
 void Flow::set_parameter_column(const std::string& name) {
   if (!name.empty()) {
     ParameterAxis{name};  // throws for an unknown name
-    if (!ParameterColumnSupported(model_.params().law, name))
+    if (!system_->SupportsParameterColumn(name))
       throw InvalidArgument("parameter column: '" + name +
                             "' enters the friction law non-affinely (not supported)");
   }
@@ -155,9 +156,9 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   Stepper& cv = Solver(variational);
   const int n = cv.size();
   Extrema extrema{r.x_min, r.x_max, r.xdot_min, r.xdot_max};
-  SlipProblem problem{&model_, mode_, options_.rtol, options_.atol, cancel_ ? &cancel_ : nullptr};
-  problem.x_center = mode_ == Mode::kSlipBelow ? model_.SteadySliding().x : 0.0;
-  problem.SetEvents(SlipEvents(stop, mode_, z0[1] == model_.v()),
+  SlipProblem problem{system_.get(), mode_, options_.rtol, options_.atol, cancel_ ? &cancel_ : nullptr};
+  problem.x_center = mode_ == Mode::kSlipBelow ? system_->SteadySliding().x : 0.0;
+  problem.SetEvents(SlipEvents(stop, mode_, z0[1] == system_->v()),
                     EventHook{&RecordExtremum, &extrema});
   const double init[8] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0};
   const SegmentEnd e = RunSegment(cv, problem, t0, init, stop.t_max, out);
@@ -177,7 +178,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   switch (e.kind) {
     case SegmentEnd::kEvent:
       if (e.g == 0) {  // on the surface x' = v
-        y[1] = model_.v();
+        y[1] = system_->v();
         return end(SlipEnd::kArrival, e.t);
       }
       if (e.g == 1) return end(SlipEnd::kVelocityMax, e.t);
@@ -193,7 +194,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
         // Settled on stable steady sliding, where it stays: the rest of the
         // segment is (xbar, 0), and no event can follow.
         std::fill(y, y + n, 0.0);
-        y[0] = model_.SteadySliding().x;
+        y[0] = system_->SteadySliding().x;
         const double t_rest = std::isfinite(stop.t_max) ? stop.t_max : e.t_end;
         while (out.on() && *out.next < t_rest) {
           (*out.observer)(Sample{*out.next, Vec2(y[0], 0.0), mode_});
@@ -209,8 +210,8 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
 }
 
 bool Flow::Settled(const SlipProblem& problem, const double* y) const {
-  return mode_ == Mode::kSlipBelow && model_.SteadySliding().stable() &&
-         problem.AtRest(y[0], y[1], model_.Acceleration(mode_, y[0], y[1]));
+  return mode_ == Mode::kSlipBelow && system_->SteadySliding().stable() &&
+         problem.AtRest(y[0], y[1], system_->Acceleration(mode_, y[0], y[1]));
 }
 
 std::string Flow::Where(const char* what, double t) const {
@@ -230,8 +231,8 @@ double Flow::Failed(double t, const double* y, const std::string& reason, FlowRe
 // Seed eq. (3.6): x = x(0) + v t until x + 2 beta v = mu_s; then slip below
 // (v > 0: stick always ends at x0). False when t_max comes first.
 bool Flow::Stick(Walk& w, const StopRule& stop, bool variational) {
-  const double v = model_.v();
-  const double x_exit = model_.ExitPoint()[0];
+  const double v = system_->v();
+  const double x_exit = system_->ExitPoint()[0];
   const double t_exit = w.t + (x_exit - w.z[0]) / v;
   const double t_stop = std::min(t_exit, stop.t_max);
   while (w.out.on() && w.next_output < t_stop) {
@@ -246,9 +247,9 @@ bool Flow::Stick(Walk& w, const StopRule& stop, bool variational) {
     return false;
   }
   w.t = t_exit;
-  w.z = model_.ExitPoint();
+  w.z = system_->ExitPoint();
   Extend(w.r, w.z);
-  if (variational) w.M = model_.SaltationStickOut() * w.M;
+  if (variational) w.M = system_->SaltationStickOut() * w.M;
   Switch(w, Mode::kSlipBelow);
   return true;
 }
@@ -263,7 +264,7 @@ void Flow::Switch(Walk& w, Mode next) {
 FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, bool variational,
                      double output_dt, const Observer& observer) {
   if (!z0.allFinite()) throw InvalidArgument("Flow::Run: start state is not finite");
-  if (m0 == Mode::kStick && (z0[1] != model_.v() || !model_.InStickInterval(z0[0])))
+  if (m0 == Mode::kStick && (z0[1] != system_->v() || !system_->InStickInterval(z0[0])))
     throw InvalidArgument("Flow::Run: stick mode requested off the stick set");
   if (!(stop.t_max > t0)) throw InvalidArgument("Flow::Run: t_max must be > t0");
   Walk w{FlowResult{}, m0, t0, z0, Mat2::Identity(), t0, SegmentOutput{}};
@@ -308,11 +309,11 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
     w.z = e.z;
     Extend(r, w.z);
     if (e.kind != SlipEnd::kArrival) return done(SlipStatus(e.kind));
-    const Mode next = model_.ModeAfterArrival(w.mode, w.z[0]);
+    const Mode next = system_->ModeAfterArrival(w.mode, w.z[0]);
     if (next == Mode::kStick && stop.at_stick) return done(FlowStatus::kStick);
     if (variational)
-      w.M = (next == Mode::kStick ? Model::SaltationStickIn()
-                                  : model_.SaltationCrossing(w.mode, next, w.z)) *
+      w.M = (next == Mode::kStick ? FrictionSystem::SaltationStickIn()
+                                  : system_->SaltationCrossing(w.mode, next, w.z)) *
             w.M;
     if (next != Mode::kStick) ++r.crossings;
     Switch(w, next);

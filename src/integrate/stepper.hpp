@@ -17,7 +17,7 @@
 #include "integrate/events.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/integrate/flow.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/model/system.hpp"
 
 namespace stickslip {
 
@@ -26,9 +26,9 @@ struct Extrema {
   double x_min, x_max, xdot_min, xdot_max;
 };
 
-// One slip mode of a model, with the noise bands of steady sliding.
+// One slip mode of a system (the model seam), with the noise bands of steady sliding.
 struct SlipProblem {
-  const Model* model = nullptr;
+  const FrictionSystem* model = nullptr;
   Mode mode = Mode::kSlipBelow;
   double rtol = 0, atol = 0;
   const std::function<bool()>* cancel = nullptr;  // polled after every step, if set

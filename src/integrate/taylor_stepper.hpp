@@ -5,19 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <memory>
 #include <sstream>
 #include <string>
 
-#include "integrate/mu_series.hpp"
 #include "integrate/poly_roots.hpp"
 #include "integrate/series.hpp"
 #include "integrate/stepper.hpp"
+#include "integrate/taylor_field.hpp"
 
 namespace stickslip {
-
-constexpr int kTaylorMaxOrder = 36;
-constexpr Reciprocals<kTaylorMaxOrder> kTaylorInverse;
 
 // JZ (3.8): order p = ceil(-ln(eps) / 2 + 1).
 inline int OrderFor(double eps) {
@@ -40,11 +37,11 @@ class TaylorStepper final : public Stepper {
 
   void Reset(const SlipProblem& problem, double t0, const double* y0) override {
     p_ = problem;
-    sigma_ = p_.mode == Mode::kSlipBelow ? 1 : -1;
-    mu_.emplace(p_.model->friction());
-    if (n_ == 8) ResolveParameter();
-    s_.Clear();
-    cc_.Clear();
+    // The model's recurrences for this mode (the seam: system.hpp).
+    if (!field_ || !field_->Bind(*p_.model, p_.mode)) {
+      field_ = p_.model->MakeTaylorField(parameter_);
+      field_->Bind(*p_.model, p_.mode);
+    }
     for (auto& row : c_) std::fill(row, row + kTaylorMaxOrder + 1 + kPad, 0.0);
     std::copy(y0, y0 + n_, yend_);
     std::copy(y0, y0 + n_, y_);
@@ -101,11 +98,10 @@ class TaylorStepper final : public Stepper {
   void EventRoots(int i, const double* gi, int deg, double tail, Roots& roots);
 
   bool NewStep();
-  void Coefficients(int order);
-  void ResolveParameter();
-  double ParamTerm(int k, double muk, double muk_shifted, double dmu) const;
-  template <LawKind L, bool Var>
-  void Recurrences(int order);
+  void Coefficients(int order) {
+    for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
+    field_->Coefficients(order, n_, c_);
+  }
   double StepSize(int order) const;
   void Events(double h);
   void Evaluate(double tau, double* out) const {
@@ -123,19 +119,12 @@ class TaylorStepper final : public Stepper {
   int n_, order_rel_, order_abs_;
   int order_ = 0;
   SlipProblem p_;
-  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
   // This step's Taylor coefficients, kPad finite entries past the order for
-  // Cauchy(); the series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
-  double c_[8][kTaylorMaxOrder + 1 + kPad];
-  double hp_[kTaylorMaxOrder + 1 + kPad];  // powers of this step's h
-  Series<kTaylorMaxOrder> s_, cc_;
-  std::optional<MuSeries> mu_;
-  // The parameter column dz/dp (entries 6, 7): which term df/dp carries.
-  enum class ParamKind { kBeta, kV, kAffine };
-  std::string parameter_;
-  ParamKind kind_ = ParamKind::kBeta;
-  std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_
-  double dp_ = 1;
+  // Cauchy(); the recurrences that fill them (the model's, per mode).
+  TaylorRow c_[8];
+  double hp_[kTaylorRowSize];  // powers of this step's h
+  std::string parameter_;      // the parameter column's, if any
+  std::unique_ptr<TaylorField> field_;
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double t0_ = 0;                   // the last Reset's start
   double tstop_ = INFINITY;

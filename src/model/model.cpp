@@ -28,42 +28,20 @@ Mat2 Model::Jacobian(Mode m, const Vec2& z) const {
   return J;
 }
 
-bool Model::InStickInterval(double x) const { return std::abs(StickForce(x)) <= p_.mu_s; }
-
-Mode Model::ModeAt(const Vec2& z) const {
-  if (z[1] < p_.v) return Mode::kSlipBelow;
-  if (z[1] > p_.v) return Mode::kSlipAbove;
-  if (InStickInterval(z[0])) return Mode::kStick;
-  // Outside Omega both one-sided accelerations point the same way.
-  return StickForce(z[0]) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove;
+bool Model::Assign(const FrictionSystem& s) {
+  const auto* m = dynamic_cast<const Model*>(&s);
+  if (m) *this = *m;
+  return m != nullptr;
 }
 
-Mode Model::ModeAfterArrival(Mode from, double x) const {
-  if (InStickInterval(x)) return Mode::kStick;
-  return from == Mode::kSlipBelow ? Mode::kSlipAbove : Mode::kSlipBelow;
+bool ParameterColumnSupported(LawKind law, const std::string& name) {
+  return !((name == "v_m" && law == LawKind::kCubic) ||
+           (name == "v_s" && law == LawKind::kStribeck) ||
+           (name == "delta" && law == LawKind::kLeine));
 }
 
-Mat2 Model::SaltationStickIn() {
-  Mat2 S;
-  S << 1.0, 0.0, 0.0, 0.0;
-  return S;
-}
-
-Mat2 Model::SaltationStickOut() const {
-  // f_slip - f_stick at the exit point is (0, mu(0+) - mu_s); zero unless coulomb.
-  const Vec2 z = ExitPoint();
-  const Vec2 df = Field(Mode::kSlipBelow, z) - Field(Mode::kStick, z);
-  Mat2 S = Mat2::Identity();
-  S.col(0) += df / p_.v;  // g = (1, 0), g^T f_stick = v
-  return S;
-}
-
-Mat2 Model::SaltationCrossing(Mode before, Mode after, const Vec2& z) const {
-  const Vec2 fb = Field(before, z);
-  const Vec2 fa = Field(after, z);
-  Mat2 S = Mat2::Identity();
-  S.col(1) += (fa - fb) / fb[1];  // n = (0, 1)
-  return S;
+bool Model::SupportsParameterColumn(const std::string& name) const {
+  return ParameterColumnSupported(p_.law, name);
 }
 
 Equilibrium Model::SteadySliding() const {

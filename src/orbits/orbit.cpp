@@ -83,10 +83,10 @@ void CopyExtremes(Orbit& o, const FlowResult& r) {
 }
 }  // namespace
 
-OrbitFinder::OrbitFinder(const Model& model, const OrbitOptions& options)
-    : options_(Checked(options)), flow_(model, options.flow) {}
+OrbitFinder::OrbitFinder(const FrictionSystem& system, const OrbitOptions& options)
+    : options_(Checked(options)), flow_(system, options.flow) {}
 
-void OrbitFinder::set_model(const Model& model) { flow_.set_model(model); }
+void OrbitFinder::set_model(const FrictionSystem& system) { flow_.set_model(system); }
 
 void OrbitFinder::Floquet(Orbit& o, const Mat2& M) const {
   o.has_floquet = true;
@@ -100,7 +100,7 @@ void OrbitFinder::Floquet(Orbit& o, const Mat2& M) const {
 }
 
 OrbitResult OrbitFinder::StickSlip(bool first_return_only) {
-  const Model& m = model();
+  const FrictionSystem& m = system();
   const Vec2 exit = m.ExitPoint();
   StopRule stop;
   stop.at_stick = true;
@@ -134,7 +134,7 @@ OrbitResult OrbitFinder::StickSlip(bool first_return_only) {
   o.period = r.t + o.t_stick;
   if (options_.floquet) {
     // Leaving stick after the stick phase (Phi_stick = I), entering it before.
-    const Mat2 M = m.SaltationStickOut() * Model::SaltationStickIn() * r.jacobian;
+    const Mat2 M = m.SaltationStickOut() * FrictionSystem::SaltationStickIn() * r.jacobian;
     Floquet(o, M);
     o.multiplier = M.trace() - 1.0;  // the other multiplier is exactly 1
     o.stable = std::abs(o.multiplier) < 1.0;
@@ -174,7 +174,7 @@ ReturnMap OrbitFinder::Return(double x, bool derivative) {
 }
 
 OrbitStatus OrbitFinder::Desingularised(double a, double* g, double* dg, ReturnMap* out) {
-  const double xbar = model().SteadySliding().x;
+  const double xbar = system().SteadySliding().x;
   ReturnMap map = Return(xbar + a, dg != nullptr);
   if (map.status == OrbitStatus::kOk) {
     *g = (map.x - xbar - a) / a;
@@ -190,7 +190,7 @@ void OrbitFinder::AcceptPureSlip(Orbit& o, double a, double step, bool stalled,
   o.newton_stalled = stalled;
   o.newton_step = step;
   o.kind = OrbitKind::kPureSlip;
-  o.start = Vec2(model().SteadySliding().x + a, 0.0);
+  o.start = Vec2(system().SteadySliding().x + a, 0.0);
   o.period = map.period;
   CopyExtremes(o, map.flow);
   o.multiplier = map.dpdx;
@@ -229,7 +229,7 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
   // A pure-slip orbit below the belt stays within |x'| < v + a bit, so its
   // section amplitude is a few times (v + mu_s) at most.
   const double a_max =
-      Tolerances::kPlausibleAmplitude * std::max(a_guess, model().v() + model().params().mu_s + 1);
+      Tolerances::kPlausibleAmplitude * std::max(a_guess, system().v() + system().static_limit() + 1);
   ReturnMap map;
   for (int it = 1; it <= options_.max_newton; ++it) {
     out.iterations = it;
@@ -323,10 +323,10 @@ OrbitStatus OrbitFinder::GrazingGap(double* gap, FlowResult* run) {
   stop.switching = false;
   stop.at_velocity_max = true;
   stop.t_max = options_.max_return_time;
-  FlowResult r = flow_.Run(0.0, model().ExitPoint(), Mode::kSlipBelow, stop,
+  FlowResult r = flow_.Run(0.0, system().ExitPoint(), Mode::kSlipBelow, stop,
                            run != nullptr && options_.floquet);
   if (r.status != FlowStatus::kVelocityMax) return FromFlowStatus(r.status);
-  *gap = r.z[1] - model().v();
+  *gap = r.z[1] - system().v();
   if (run) *run = std::move(r);
   return OrbitStatus::kOk;
 }

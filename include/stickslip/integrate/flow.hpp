@@ -19,11 +19,6 @@ class Stepper;  // src/integrate/stepper.hpp: private
 struct SlipProblem;
 struct SegmentOutput;  // src/integrate/event_driver.hpp: private
 
-// Whether Flow's parameter column supports this parameter under this law:
-// beta, v, and every law parameter mu(s) depends on affinely (all but v_m,
-// v_s and delta of their own laws).
-bool ParameterColumnSupported(LawKind law, const std::string& name);
-
 // The integrator of the slip phases.
 enum class Integrator {
   kTaylor,  // Taylor series, order and step from the tolerance (Jorba & Zou 2005)
@@ -105,15 +100,20 @@ struct FlowResult {
 
 class Flow {
  public:
-  // Throws InvalidArgument if options are invalid.
-  Flow(const Model& model, const FlowOptions& options);
+  // Any system on the model seam (system.hpp; the belt: Model). Throws
+  // InvalidArgument if options are invalid.
+  Flow(const FrictionSystem& system, const FlowOptions& options);
   ~Flow();
   Flow(const Flow&) = delete;
   Flow& operator=(const Flow&) = delete;
 
-  // Change the model; solvers are kept and reused.
-  void set_model(const Model& model) { model_ = model; }
-  const Model& model() const { return model_; }
+  // Change the system; solvers are kept and reused.
+  void set_model(const FrictionSystem& system) {
+    if (!system_->Assign(system)) system_ = system.Clone();
+  }
+  const FrictionSystem& system() const { return *system_; }
+  // The belt model; throws InvalidArgument if the system is another one.
+  const Model& model() const;
   const FlowOptions& options() const { return options_; }
 
   // Integrate from (t0, z0) in mode m0 until `stop` says so. With variational,
@@ -123,13 +123,13 @@ class Flow {
                  double output_dt = 0, const Observer& observer = nullptr);
   // Same, starting in the mode the Filippov rule gives z0.
   FlowResult Run(double t0, const Vec2& z0, const StopRule& stop, bool variational = false) {
-    return Run(t0, z0, model_.ModeAt(z0), stop, variational);
+    return Run(t0, z0, system_->ModeAt(z0), stop, variational);
   }
 
   // The parameter column: with variational runs on the Taylor integrator,
   // dz/dp for this parameter (a ParameterAxis name) rides in the same
   // recurrences. Empty: none (the column's stepper is kept for reuse). Throws InvalidArgument for
-  // an unknown name or one ParameterColumnSupported rejects for the model's law.
+  // an unknown name or one the system has no column for (SupportsParameterColumn).
   void set_parameter_column(const std::string& name);
   bool has_parameter_column() const {
     return !parameter_.empty() && options_.integrator == Integrator::kTaylor;
@@ -154,7 +154,7 @@ class Flow {
   double Failed(double t, const double* y, const std::string& reason, FlowResult& r) const;
   Stepper& Solver(bool variational);
 
-  Model model_;
+  std::unique_ptr<FrictionSystem> system_;
   FlowOptions options_;
   Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
   std::unique_ptr<Stepper> plain_, var_, param_;

@@ -10,7 +10,6 @@
 
 #include "stickslip/model/friction.hpp"
 #include "stickslip/model/model.hpp"
-#include "stickslip/model/system.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip {
@@ -86,7 +85,5 @@ class ForcedModel {
   Friction friction_;
   double two_beta_;
 };
-
-static_assert(model::IsFrictionSystem<ForcedModel>::value, "ForcedModel fits the model seam");
 
 }  // namespace stickslip

@@ -1,4 +1,5 @@
-// Periodic orbits of the belt model and their Floquet multipliers.
+// Periodic orbits of a friction system (the belt model, or any other on the
+// model seam, system.hpp) and their Floquet multipliers.
 //
 // Stick-slip orbits: every stick segment leaves Omega at the same point
 // (x0, v), so the return map of Omega is constant (seed, case 1) and an orbit
@@ -97,12 +98,15 @@ struct ReturnMap {
   FlowResult flow;
 };
 
-/// Finds periodic orbits of one model; reuses its integrator between calls.
+/// Finds periodic orbits of one system on the model seam (the belt: Model);
+/// reuses its integrator between calls.
 class OrbitFinder {
  public:
   /// Throws InvalidArgument if options are invalid.
-  OrbitFinder(const Model& model, const OrbitOptions& options);
-  void set_model(const Model& model);
+  OrbitFinder(const FrictionSystem& system, const OrbitOptions& options);
+  void set_model(const FrictionSystem& system);
+  const FrictionSystem& system() const { return flow_.system(); }
+  /// The belt model (throws InvalidArgument for another system).
   const Model& model() const { return flow_.model(); }
   const OrbitOptions& options() const { return options_; }
   void set_floquet(bool on) { options_.floquet = on; }

@@ -1,0 +1,172 @@
+// The belt model's Taylor recurrences (the model seam's TaylorField):
+// seed eq. (3.5) on one slip branch, with the variational equations and the
+// parameter column, law by law (MuSeries: the series of mu(s)).
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "integrate/mu_series.hpp"
+#include "integrate/taylor_field.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/model/model.hpp"
+#include "stickslip/model/parameter_axis.hpp"
+
+namespace stickslip {
+namespace {
+
+class BeltTaylorField final : public TaylorField {
+ public:
+  explicit BeltTaylorField(const std::string& parameter) : parameter_(parameter) {}
+
+  bool Bind(const FrictionSystem& s, Mode m) override {
+    const auto* belt = dynamic_cast<const Model*>(&s);
+    if (!belt) return false;
+    q_ = belt->params();
+    law_ = belt->friction().law();
+    v_ = belt->v();
+    two_beta_ = 2 * belt->beta();
+    sigma_ = m == Mode::kSlipBelow ? 1 : -1;
+    mu_.emplace(belt->friction());
+    if (!parameter_.empty()) ResolveParameter();
+    s_.Clear();
+    cc_.Clear();
+    return true;
+  }
+  void Coefficients(int order, int n, TaylorRow* c) override;
+
+ private:
+  template <LawKind L, bool Var>
+  void Recurrences(int order, int n, TaylorRow* c);
+  void ResolveParameter();
+  double ParamTerm(const TaylorRow* c, int k, double muk, double muk_shifted, double dmu) const;
+
+  Params q_;
+  LawKind law_ = LawKind::kCubic;
+  double v_ = 0, two_beta_ = 0;
+  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
+  // The series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
+  Series<kTaylorMaxOrder> s_, cc_;
+  std::optional<MuSeries> mu_;
+  // The parameter column dz/dp (rows 6, 7): which term df/dp carries.
+  enum class ParamKind { kBeta, kV, kAffine };
+  std::string parameter_;
+  ParamKind kind_ = ParamKind::kBeta;
+  std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_
+  double dp_ = 1;
+};
+
+// Seed eq. (3.5) on one slip branch, x'' = -x - 2 beta x' + sigma mu(s), and
+// Phi' = J Phi with J = [0 1; -1 c], c = -2 beta - mu'(s), and the parameter
+// column z_p' = J z_p + df/dp: coefficient k + 1 from those up to k.
+template <LawKind L, bool Var>
+void BeltTaylorField::Recurrences(int order, int n, TaylorRow* c) {
+  const double v = v_, two_beta = two_beta_;
+  MuSeries& mu = *mu_;
+  double* s = s_.c();
+  double* cc = cc_.c();
+  double* x = c[0];
+  double* xd = c[1];
+  // Zeros in s past the order so far: the sums of products in MuSeries::Old
+  // leave out what is new. (c and cc only need finite entries there.)
+  for (int k = 0; k < order + kPad; ++k) s[k] = 0;
+  mu.Begin<L>(order);
+  double damp = 0;  // 2 beta + mu'(s_0)
+  MuSeries* shifted = Var && n == 8 && mu_shifted_ ? &*mu_shifted_ : nullptr;
+  if (shifted) shifted->Begin<L>(order);
+  for (int k = 0; k < order; ++k) {
+    mu.Old<L, Var>(k, s);
+    if (shifted) shifted->Old<L, false>(k, s);
+    const double inv = kTaylorInverse.r[k];
+    if (k > 0) {
+      // mu_k = alpha + mu'(s_0) s_k with s_k = -sigma x'_k: x'_{k+1} without
+      // waiting for the products of s_k (the chain from x'_k is short).
+      const double sigma_alpha = mu.Alpha<L>(k, sigma_);
+      xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k]) * inv;
+    }
+    s[k] = sigma_ * ((k == 0 ? v : 0.0) - xd[k]);
+    double dmu = 0;
+    const double muk = mu.New<L, Var>(k, s, &dmu);
+    const double muk_shifted = shifted ? shifted->New<L, false>(k, s, nullptr) : 0.0;
+    x[k + 1] = xd[k] * inv;
+    if (k == 0) {
+      xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk;
+      damp = two_beta + mu.slope();
+    }
+    if constexpr (Var) {
+      cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
+      for (int col = 2; col < n; col += 2) {
+        const double cq = Cauchy(c[col + 1], cc, k);
+        c[col][k + 1] = c[col + 1][k] * inv;
+        c[col + 1][k + 1] = (-c[col][k] + cq) * inv;
+      }
+      if (n == 8) {
+        c[7][k + 1] += ParamTerm(c, k, muk, muk_shifted, dmu) * inv;
+      }
+    }
+  }
+}
+
+// df/dp of seed eq. (3.5) for the parameter column: beta gives (0, -2 x');
+// v enters through s = sigma (v - x') only, giving (0, mu'(s)); a law
+// parameter mu depends on affinely (mu_s, mu_m, mu_k, k5) gives
+// (0, sigma (mu(s; p + dp) - mu(s; p)) / dp), exact for any dp. v_m, v_s and
+// delta enter mu non-affinely: no column (InvalidArgument).
+void BeltTaylorField::ResolveParameter() {
+  const ParameterAxis axis(parameter_);
+  if (!ParameterColumnSupported(q_.law, parameter_))
+    throw InvalidArgument("parameter column: '" + parameter_ +
+                          "' enters the friction law non-affinely (not supported)");
+  mu_shifted_.reset();
+  if (parameter_ == "beta") {
+    kind_ = ParamKind::kBeta;
+  } else if (parameter_ == "v") {
+    kind_ = ParamKind::kV;
+  } else {
+    kind_ = ParamKind::kAffine;
+    dp_ = std::max(1.0, std::abs(axis.Get(q_)));
+    mu_shifted_.emplace(Friction(axis.At(q_, axis.Get(q_) + dp_)));
+  }
+}
+
+// Coefficient k of df_2/dp (ResolveParameter), from this step's series; the
+// shifted law's coefficient k is computed in the same loop (Recurrences).
+double BeltTaylorField::ParamTerm(const TaylorRow* c, int k, double muk, double muk_shifted,
+                                  double dmu) const {
+  switch (kind_) {
+    case ParamKind::kBeta:
+      return -2 * c[1][k];
+    case ParamKind::kV:
+      return dmu;
+    case ParamKind::kAffine:
+      return sigma_ * (muk_shifted - muk) / dp_;
+  }
+  return 0;
+}
+
+void BeltTaylorField::Coefficients(int order, int n, TaylorRow* c) {
+  const bool var = n >= 6;
+  switch (law_) {
+    case LawKind::kCubic:
+      return var ? Recurrences<LawKind::kCubic, true>(order, n, c)
+                 : Recurrences<LawKind::kCubic, false>(order, n, c);
+    case LawKind::kCoulomb:
+      return var ? Recurrences<LawKind::kCoulomb, true>(order, n, c)
+                 : Recurrences<LawKind::kCoulomb, false>(order, n, c);
+    case LawKind::kStribeck:
+      return var ? Recurrences<LawKind::kStribeck, true>(order, n, c)
+                 : Recurrences<LawKind::kStribeck, false>(order, n, c);
+    case LawKind::kLeine:
+      return var ? Recurrences<LawKind::kLeine, true>(order, n, c)
+                 : Recurrences<LawKind::kLeine, false>(order, n, c);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<TaylorField> Model::MakeTaylorField(const std::string& parameter) const {
+  return std::make_unique<BeltTaylorField>(parameter);
+}
+
+}  // namespace stickslip
