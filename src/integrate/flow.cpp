@@ -156,7 +156,8 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   Stepper& cv = Solver(variational);
   const int n = cv.size();
   Extrema extrema{r.x_min, r.x_max, r.xdot_min, r.xdot_max};
-  SlipProblem problem{system_.get(), mode_, options_.rtol, options_.atol, cancel_ ? &cancel_ : nullptr};
+  SlipProblem problem{system_.get(), mode_, options_.rtol, options_.atol,
+                      cancel_ ? &cancel_ : nullptr};
   problem.x_center = mode_ == Mode::kSlipBelow ? system_->SteadySliding().x : 0.0;
   problem.SetEvents(SlipEvents(stop, mode_, z0[1] == system_->v()),
                     EventHook{&RecordExtremum, &extrema});

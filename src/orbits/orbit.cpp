@@ -228,8 +228,8 @@ OrbitResult OrbitFinder::PureSlip(double a_guess) {
   bool backtracked = false;
   // A pure-slip orbit below the belt stays within |x'| < v + a bit, so its
   // section amplitude is a few times (v + mu_s) at most.
-  const double a_max =
-      Tolerances::kPlausibleAmplitude * std::max(a_guess, system().v() + system().static_limit() + 1);
+  const double a_max = Tolerances::kPlausibleAmplitude *
+                       std::max(a_guess, system().v() + system().static_limit() + 1);
   ReturnMap map;
   for (int it = 1; it <= options_.max_newton; ++it) {
     out.iterations = it;

@@ -147,10 +147,12 @@ ClosedOrbit StickSlipOrbit(const Block& b) {
   const LD w2 = LD(b.w) * b.w, x0 = (b.mu_s - 2 * b.zeta * b.w * LD(b.v)) / w2;
   auto at = [&](LD t) { return Slip(b, 1, t, x0, b.v); };
   ClosedOrbit o;
-  o.t_slip = FirstRoot(b, [&](LD t) { return at(t).xd - b.v; }, 100);
+  o.t_slip = FirstRoot(
+      b, [&](LD t) { return at(t).xd - b.v; }, 100);
   o.x_arrive = at(o.t_slip).x;
   o.t_stick = (x0 - o.x_arrive) / b.v;
-  const LD t_top = FirstRoot(b, [&](LD t) { return at(t).xd; }, o.t_slip);
+  const LD t_top = FirstRoot(
+      b, [&](LD t) { return at(t).xd; }, o.t_slip);
   o.x_max = at(t_top).x;
   auto after_top = [&](LD t) { return at(t_top + t).xd; };
   o.x_min = std::min(o.x_arrive, at(t_top + FirstRoot(b, after_top, o.t_slip - t_top)).x);
@@ -187,8 +189,7 @@ TEST(Seam, StickSlipOrbitOfASecondSystemMatchesClosedForm) {
   EXPECT_NEAR(o.x_max, double(c.x_max), 1e-10);
   EXPECT_NEAR(o.x_min, double(c.x_min), 1e-10);
   ASSERT_TRUE(o.has_floquet);
-  for (int i = 0; i < 4; ++i)
-    EXPECT_NEAR(o.monodromy(i), c.monodromy(i), 1e-10) << "entry " << i;
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(o.monodromy(i), c.monodromy(i), 1e-10) << "entry " << i;
   // Multipliers {1, 0}: the flow direction, and the stick phase's collapse.
   EXPECT_NEAR(o.eigenvalues[0].real(), 1.0, 1e-10);
   EXPECT_NEAR(std::abs(o.eigenvalues[1]), 0.0, 1e-10);
@@ -227,7 +228,8 @@ Walk ClosedWalk(const Block& b, Walk w, LD t_max) {
     }
     const LD sigma = w.mode == Mode::kSlipBelow ? 1 : -1;
     auto at = [&](LD t) { return Slip(b, sigma, t, w.x, w.xd); };
-    const LD ta = FirstRoot(b, [&](LD t) { return at(t).xd - b.v; }, t_max - w.t);
+    const LD ta = FirstRoot(
+        b, [&](LD t) { return at(t).xd - b.v; }, t_max - w.t);
     const State s = at(ta < 0 ? t_max - w.t : ta);
     w.t = ta < 0 ? t_max : w.t + ta, w.x = s.x, w.xd = s.xd;
     if (ta < 0) break;
