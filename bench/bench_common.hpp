@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/continuation/continuation.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace ssbench {

@@ -36,12 +36,12 @@
 
 #include "bench_common.hpp"
 #include "brute_force.hpp"
+#include "cli/gnuplot.hpp"
 #include "integrate/taylor_stepper.hpp"
 #include "reference/reference_orbit.hpp"
 #include "regularised.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/errors.hpp"
-#include "cli/gnuplot.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace {
@@ -88,8 +88,8 @@ OrbitGoal SingleOrbit(bool quick) {
       const double err = std::abs(r.orbit.period - t_ref), t_us = Median(us);
       const bool taylor = in == ss::Integrator::kTaylor;
       std::printf("  %-10s  %-8.0e  %8.2f  %5ld  %5s  %.1e\n", taylor ? "taylor" : "cvode-adams",
-                  rtol, t_us, steps,
-                  taylor ? std::to_string(ss::OrderFor(rtol)).c_str() : "-", err);
+                  rtol, t_us, steps, taylor ? std::to_string(ss::OrderFor(rtol)).c_str() : "-",
+                  err);
       if (err < 1e-12 && !(t_us >= goal.us))
         goal = {t_us, rtol, err, in == ss::Integrator::kTaylor ? "Taylor" : "CVODE Adams"};
     }

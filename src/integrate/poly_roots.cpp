@@ -142,9 +142,7 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   // Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no
   // isolation needed.
   if (Monotone(c, n)) {
-    if (!changed(1.0)) return out;
-    out.found = true;
-    out.u = RefineRoot(c, n, sign, zero_sign, 0.0, 1.0);
+    if (changed(1.0)) out = {true, RefineRoot(c, n, sign, zero_sign, 0.0, 1.0)};
     return out;
   }
 
