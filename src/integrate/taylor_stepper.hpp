@@ -42,7 +42,7 @@ class TaylorStepper final : public Stepper {
       field_ = p_.model->MakeTaylorField(parameter_);
       field_->Bind(*p_.model, p_.mode);
     }
-    for (auto& row : c_) std::fill(row, row + kTaylorMaxOrder + 1 + kPad, 0.0);
+    for (int i = 0; i < n_; ++i) std::fill(c_[i], c_[i] + kTaylorRowSize, 0.0);
     std::copy(y0, y0 + n_, yend_);
     std::copy(y0, y0 + n_, y_);
     ta_ = tb_ = t_ = t0_ = t0;
