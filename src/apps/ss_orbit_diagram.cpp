@@ -29,7 +29,8 @@ constexpr const char* kNotes =
     "lyapunov.tsv (one row per value), orbit_diagram.gp and orbit_diagram.png (.pdf, .svg).\n"
     "A value whose flow fails or passes --max_amplitude is a `# failed:` line; the next\n"
     "starts from rest. An interrupted run writes the values done, marked partial.\n"
-    "The forced flow's rtol and atol default to 1e-12.\n";
+    "The forced flow's rtol and atol default to 1e-12. --integrator cvode integrates the\n"
+    "slip phases by CVODE instead of Taylor series: an independent check of the exponent.\n";
 constexpr const char* kExample =
     "\nExample: ss_orbit_diagram --law stribeck --beta 0.01 --v 0.1 --force 0.5 --param omega "
     "--from 0.2 --to 1.2 --n 400";
@@ -106,6 +107,7 @@ Setup Configure(const cli::Arguments& args) {
   if (!args.Given("atol")) s.flow.atol = s.o.iterate.flow.atol;
   s.o.iterate.flow.rtol = s.flow.rtol, s.o.iterate.flow.atol = s.flow.atol;
   s.o.iterate.flow.max_steps = s.flow.max_steps;
+  s.o.iterate.flow.integrator = s.flow.integrator, s.o.iterate.flow.method = s.flow.method;
   const std::string e = s.o.ValidationError();
   if (!e.empty()) throw cli::UsageError(e);
   return s;
