@@ -46,7 +46,10 @@ po::options_description AppOptions() {
       "forcing periods discarded per value, in [0, 1e6] (default 500)")(
       "keep", cli::Value()->value_name("K"),
       "forcing periods recorded per value, in [10, 1e6] (default 200)")(
-      "direction", cli::Value()->value_name("D"), "up, down or both (default both)");
+      "direction", cli::Value()->value_name("D"), "up, down or both (default both)")(
+      "chunks", cli::Value()->value_name("C"),
+      "pieces each sweep is cut into and run in parallel, each from rest: hysteresis shows only "
+      "within a piece (default 1)");
   cli::AddRunOptions(d, "plots/orbit_diagram",
                      "write the TSV files and the script, but do not run gnuplot");
   return d;
@@ -99,6 +102,7 @@ Setup Configure(const cli::Arguments& args) {
     throw cli::UsageError("invalid value '" + dir + "' for " + args.Source("direction") +
                           ": must be up, down or both");
   s.o.up = dir != "down", s.o.down = dir != "up";
+  s.o.chunks = static_cast<int>(Count(args, "chunks", 1, 1, s.o.n));
   s.o.max_amplitude = args.Number("max_amplitude", 50);
   if (!(s.o.max_amplitude > 0))
     throw cli::UsageError(args.Source("max_amplitude") + " must be > 0");
