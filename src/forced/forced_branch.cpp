@@ -254,24 +254,23 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
 
 }  // namespace
 
-ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                            double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
+namespace forced_detail {
+
+ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                         const Eigen::Vector3d& first, int fixed, const Eigen::Vector3d& direction,
+                         const ForcedBranchOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  ForcedParams at_from = base;
-  SetAxis(at_from, axis, from);
-  if (const std::string e = ValidationError(at_from); !e.empty()) throw InvalidArgument(e);
-  if (!(to != from) || !std::isfinite(to)) throw InvalidArgument("to must be finite and != from");
   StrobeProblem problem(base, axis, options);
   Palc palc(problem, options.palc);
   ForcedBranch out;
   out.status = ForcedBranchStatus::kMaxPoints;
   const double dir = to > from ? 1 : -1;
   Monitor monitor(palc, problem, base, axis, from, to, options, out);
-  VectorXd u0(3);
-  u0 << x_guess, xdot_guess, from;
+  VectorXd u0 = first, along = direction;
   double trace_dir = dir;
+  int fixed_now = fixed;
   for (;;) {
-    const PalcResult r = palc.Trace(u0, 2, VectorXd::Unit(3, 2) * trace_dir, std::ref(monitor));
+    const PalcResult r = palc.Trace(u0, fixed_now, along, std::ref(monitor));
     if (monitor.stopped()) {
       if (out.status == ForcedBranchStatus::kReachedEnd) out.message.clear();
       break;
@@ -305,6 +304,8 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
     ++out.jumps;
     u0 << after.x0, after.xdot0, after.p;
     trace_dir = pdir;
+    fixed_now = 2;  // from the orbit beyond: the parameter held, along pdir
+    along = VectorXd::Unit(3, 2) * trace_dir;
     monitor.Restart();
   }
   if (out.status == ForcedBranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
@@ -314,6 +315,18 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
   out.evaluations = palc.evaluations();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+}  // namespace forced_detail
+
+ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                            double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
+  ForcedParams at_from = base;
+  SetAxis(at_from, axis, from);
+  if (const std::string e = ValidationError(at_from); !e.empty()) throw InvalidArgument(e);
+  if (!(to != from) || !std::isfinite(to)) throw InvalidArgument("to must be finite and != from");
+  return forced_detail::TraceBranch(base, axis, from, to, Eigen::Vector3d(x_guess, xdot_guess, from),
+                                    2, Eigen::Vector3d::Unit(2) * (to > from ? 1 : -1), options);
 }
 
 }  // namespace stickslip
