@@ -140,6 +140,10 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
   }
 }
 
+namespace {
+constexpr int kConfirmSteps = 4;  // natural steps that confirm an edge in BisectEdge
+}  // namespace
+
 bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
                 ForcedBranchRow lo, double hi, double tol, ForcedBranchRow* before,
                 ForcedBranchRow* after, std::string* why) {
@@ -153,13 +157,35 @@ bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOpt
     return orb.status == ForcedOrbitStatus::kConverged && orb.sticks == ref.sticks &&
            orb.crossings == ref.crossings;
   };
+  // Newton from the secant predictor through the last two orbits: from lo's
+  // state alone, the first iterate near the edge can land past it and
+  // converge to another orbit, which would end the bisection early (measured:
+  // 9e-6 short of a crossing-sliding point on the coulomb belt, issue 20).
+  ForcedBranchRow prev = lo;
+  bool have_prev = false;
   while (std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p))) {
     const double mid = 0.5 * (lo.p + hi);
-    const ForcedOrbit orb = shoot(mid, lo);
-    if (good(orb))
+    ForcedBranchRow guess = lo;
+    if (have_prev) {
+      const double s = (mid - lo.p) / (lo.p - prev.p);
+      guess.x0 += s * (lo.x0 - prev.x0), guess.xdot0 += s * (lo.xdot0 - prev.xdot0);
+    }
+    ForcedOrbit orb = shoot(mid, guess);
+    // Not found: confirm by natural steps from lo (Newton can wander across
+    // the map's discontinuity near the edge and converge elsewhere).
+    for (int k = 1; k <= kConfirmSteps && !good(orb); ++k) {
+      const double pk = lo.p + (mid - lo.p) * k / kConfirmSteps;
+      orb = shoot(pk, k == 1 ? lo : guess);
+      if (!good(orb)) break;
+      guess = RowOf(orb, pk);
+      if (k < kConfirmSteps) orb.status = ForcedOrbitStatus::kNoConvergence;
+    }
+    if (good(orb)) {
+      prev = lo, have_prev = true;
       lo = RowOf(orb, mid);
-    else
+    } else {
       hi = mid;
+    }
   }
   *before = lo;
   ForcedOrbit orb = shoot(hi, lo);

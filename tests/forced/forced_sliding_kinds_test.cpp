@@ -1,0 +1,83 @@
+// Sliding bifurcations of forced branches, each kind against a reference
+// computed another way (issue 20, item 3): long-double closed-form coulomb
+// pieces (forced_reference.hpp) iterated to the orbit, and the parameter
+// where the orbit meets the stick band bracketed by bisection here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "forced_reference.hpp"
+#include "stickslip/forced/branch.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace ref = forced_reference;
+using ref::Real;
+
+ForcedBranch Trace(ForcedParams p, double from, double to, double ds_max) {
+  p.omega = from;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, p.base.v), rq);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = ds_max;
+  return ContinueForced(p, ForcedAxis::kOmega, from, to, tr.end.x, tr.end.xdot, o);
+}
+
+ref::Setup SetupOf(const ForcedParams& p, Real w) {
+  return ref::Setup{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force), w};
+}
+
+// The closed-form pieces from (x0, x0') at t = 0 over `periods` forcing
+// periods; the events of the last one.
+std::vector<ref::Event> LastPeriod(const ForcedParams& p, Real w, Real x0, Real y0, int periods) {
+  ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p, w));
+  sim.dt = 5e-3L;
+  const Real T = 2 * std::acos(Real(-1)) / w;
+  Real t = 0, x = x0, y = y0;
+  sim.Run(t, x, y, (periods - 1) * T);
+  sim.events.clear();
+  sim.Run(t, x, y, periods * T);
+  return sim.events;
+}
+
+// The belt scene of issue 20 (coulomb mu_s 0.4, mu_k 0.25, v 0.2, beta 0,
+// A 0.3): near Omega = 1.19620 the crossing of the 1-stick orbit reaches the
+// band's edge |x + 2 beta v - A cos(Omega t)| = mu_s and turns into a stick
+// phase that merges with the next one (mu_s > mu_k holds it): crossing-
+// sliding, which the branch once labelled SW, 9e-6 short of the edge.
+TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
+  const ForcedParams p = ref::Coulomb(0.4, 0.25, 0, 0.2, 0.3, 1);
+  const ForcedBranch b = Trace(p, 1.15, 1.25, 0.005);
+  const ForcedBranchRow* point = nullptr;
+  for (const ForcedBranchRow& r : b.special)
+    if (std::abs(r.p - 1.1962) < 1e-3) point = &r;
+  ASSERT_NE(point, nullptr) << ForcedBranchStatusName(b.status) << " " << b.message;
+  EXPECT_EQ(point->label, ForcedLabel::kCR) << point->description;
+  // The reference: the stable orbit (multiplier -0.24) by 40 periods of the
+  // closed-form pieces from the located point's state; g = |force at the
+  // crossing| - mu_s, bisected in Omega (no crossing: past the edge).
+  auto g = [&](Real w) {
+    const std::vector<ref::Event> ev = LastPeriod(p, w, point->x0, point->xdot0, 40);
+    const ref::Setup s = SetupOf(p, w);
+    for (const ref::Event& e : ev)
+      if (e.kind == 2) return std::abs(s.StickForce(e.t, e.x)) - Real(0.4);
+    return Real(-1);
+  };
+  Real lo = 1.1961, hi = 1.1963;
+  ASSERT_GT(g(lo), 0);
+  ASSERT_LT(g(hi), 0);
+  for (int i = 0; i < 60 && hi - lo > 1e-15L; ++i) {
+    const Real mid = (lo + hi) / 2;
+    (g(mid) > 0 ? lo : hi) = mid;
+  }
+  std::printf("[ measured ] CR at Omega = %.15g, reference %.15Lg, error %.2e\n", point->p, lo,
+              double(point->p - lo));
+  EXPECT_NEAR(point->p, double(lo), 1e-10);
+}
+
+}  // namespace
+}  // namespace stickslip
