@@ -189,9 +189,11 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
       for (const double sign : {1.0, -1.0})
         if (!found_edge) {
           const double d = sign * (span > 0 ? 1 : -1);
-          found_edge =
-              forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, br.lo.p + d * 256 * step,
-                                        o_.locate_tol, &fine.lo, &fine.hi, &why);
+          // Never past the branch's range (validated; beyond it the model may not be).
+          const double limit = std::clamp(br.lo.p + d * 256 * step, std::min(from_, to_),
+                                          std::max(from_, to_));
+          found_edge = forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, limit,
+                                                 o_.locate_tol, &fine.lo, &fine.hi, &why);
         }
       if (found_edge)
         br = fine;

@@ -81,3 +81,49 @@ TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
 
 }  // namespace
 }  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// A floor run restarted in v (issue 20: v = 0 is Den Hartog's floor, v > 0 a
+// belt): from v = 0 upward the branch goes on (at v = 0 the orbit is
+// symmetric, x_min = -x_max, by x -> -x, t -> t + T/2); the search across a
+// jump of the map once stepped below v = 0 and threw "v = -0.085 must be >= 0".
+TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
+  ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
+  ForcedBranch b;
+  ASSERT_NO_THROW(b = ContinueForced(p, ForcedAxis::kV, 0, 0.5, tr.end.x, tr.end.xdot, o));
+  ASSERT_FALSE(b.rows.empty()) << b.message;
+  EXPECT_EQ(b.rows.front().p, 0);
+  EXPECT_NEAR(b.rows.front().extremes.x_min, -b.rows.front().extremes.x_max, 1e-10);
+  double v_max = 0;
+  for (const ForcedBranchRow& r : b.rows) {
+    EXPECT_GE(r.p, 0);
+    v_max = std::max(v_max, r.p);
+  }
+  EXPECT_GT(v_max, 0.17);  // past the first jump (GR near v = 0.173)
+  // A stable row near v = 0.05: 40 periods of the closed-form pieces from
+  // its stroboscopic point come back to it.
+  for (const ForcedBranchRow& r : b.rows) {
+    if (r.p < 0.05 || !r.stable) continue;
+    p.base.v = r.p;
+    ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p, p.omega));
+    const Real T = 2 * std::acos(Real(-1)) / p.omega;
+    Real t = 0, x = r.x0, y = r.xdot0;
+    sim.Run(t, x, y, 40 * T);
+    std::printf("[ measured ] v = %.6g: closed-form pieces return to (%.3e, %.3e) of the row\n",
+                r.p, double(x - r.x0), double(y - r.xdot0));
+    EXPECT_NEAR(double(x), r.x0, 1e-9);
+    EXPECT_NEAR(double(y), r.xdot0, 1e-9);
+    break;
+  }
+}
+
+}  // namespace
+}  // namespace stickslip
