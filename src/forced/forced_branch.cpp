@@ -185,20 +185,27 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
       std::string why;
       const double span = b[2] - from[2];
       const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(br.lo.p)));
-      bool found_edge = false;
+      bool found_edge = false, edge_only = false;
       for (const double sign : {1.0, -1.0})
-        if (!found_edge) {
+        if (!found_edge && !edge_only) {
           const double d = sign * (span > 0 ? 1 : -1);
           // Never past the branch's range (validated; beyond it the model may not be).
           const double limit = std::clamp(br.lo.p + d * 256 * step, std::min(from_, to_),
                                           std::max(from_, to_));
+          fine.lo.p = NAN;
           found_edge = forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, limit,
                                                  o_.locate_tol, &fine.lo, &fine.hi, &why);
+          // The edge bisected, no orbit of the same m just beyond (the branch
+          // went on to one far away): the edge is the point, row the far side.
+          edge_only = !found_edge && std::isfinite(fine.lo.p);
         }
-      if (found_edge)
+      if (found_edge) {
         br = fine;
-      else if (!chord)
+      } else if (edge_only) {
+        br.lo = fine.lo, br.hi = row;
+      } else if (!chord) {
         br.hi = row;
+      }
     }
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).

@@ -48,14 +48,16 @@ std::vector<ForcedEvent> Events(const ForcedParams& base, ForcedAxis axis,
   return ev;
 }
 
-// How close a crossing of x' = v comes to the stick band's edge:
-// min | |x + 2 beta v - A cos(Omega t)| - mu_s | over the crossings (inf: none).
+// How close an arrival at x' = v (a crossing, or a stick entry) comes to the
+// stick band's edge: min | |x + 2 beta v - A cos(Omega t)| - mu_s | over the
+// arrivals (inf: none). Crossing-sliding is an arrival on the edge, from
+// either side (di Bernardo, Kowalczyk & Nordmark 2002, section 3.1).
 double CrossingToEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
                       const ForcedBranchRow& r) {
   const ForcedModel model(At(base, axis, r.p));
   double best = std::numeric_limits<double>::infinity();
   for (const ForcedEvent& e : Events(base, axis, o, r))
-    if (e.kind == ForcedEventKind::kCrossing)
+    if (e.kind == ForcedEventKind::kCrossing || e.kind == ForcedEventKind::kStickIn)
       best = std::min(best, std::abs(std::abs(model.StickForce(e.t, e.x)) - model.static_limit()));
   return best;
 }
@@ -96,13 +98,13 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
                      ForcedBranchRow* point) {
   const int ds = after.sticks - before.sticks, dc = after.crossings - before.crossings;
   const std::string change = " (" + Change(before, after) + ")";
-  // A crossing on the band's edge at the point: crossing-sliding, also where
+  // An arrival on the band's edge at the point: crossing-sliding, also where
   // the stick it becomes merges with the next one (a jump, mu_s > mu_k).
   const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
   const double edge = tol.BandEdge() * (1 + before.extremes.x_max - before.extremes.x_min);
   const bool on_edge =
       std::min(CrossingToEdge(base, axis, o, before), CrossingToEdge(base, axis, o, after)) <= edge;
-  if ((ds != 0 && dc == -ds) || (dc < 0 && on_edge)) {
+  if ((ds != 0 && dc == -ds) || (dc != 0 && on_edge)) {
     point->label = ForcedLabel::kCR;
     point->description =
         "crossing-sliding: a crossing of x' = v reaches the stick band's edge and "

@@ -79,6 +79,62 @@ TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
   EXPECT_NEAR(point->p, double(lo), 1e-10);
 }
 
+// A damped belt (coulomb mu_s 0.4, mu_k 0.25, v 0.3, beta 0.05, A 0.3): the
+// pure slip grazes x' = v where Omega |P| = v (closed form, bisected here),
+// and near Omega = 0.7317 the stick entry of the 1-stick orbit reaches the
+// band's edge and turns into a crossing: crossing-sliding from the stick side,
+// which the branch once labelled SW at its last row, 2.4e-5 short.
+TEST(ForcedSlidingKinds, StickEntryReachingTheBandIsCrossingSliding) {
+  const ForcedParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.3, 0.3, 1);
+  const ForcedBranch b = Trace(p, 0.3, 1.5, 0.02 * 1.2);
+  const ForcedBranchRow *gr = nullptr, *cr = nullptr;
+  for (const ForcedBranchRow& r : b.special) {
+    if (std::abs(r.p - 0.6194) < 1e-3) gr = &r;
+    if (std::abs(r.p - 0.7317) < 1e-3) cr = &r;
+  }
+  ASSERT_TRUE(gr && cr) << ForcedBranchStatusName(b.status) << " " << b.message;
+  EXPECT_EQ(gr->label, ForcedLabel::kGR) << gr->description;
+  EXPECT_EQ(cr->label, ForcedLabel::kCR) << cr->description;
+  // Omega |P| = v, |P| = A / |1 - Omega^2 + 2 i beta Omega|.
+  auto slip = [](Real w) {
+    const Real re = 1 - w * w, im = 2 * Real(0.05) * w;
+    return w * Real(0.3) / std::sqrt(re * re + im * im) - Real(0.3);
+  };
+  const Real w_gr = ref::Bisect([&](Real w) { return slip(w) > 0; }, Real(0.5), Real(0.7));
+  // Crossing-sliding: the 1-stick orbit of the closed-form pieces (stuck at
+  // t = 0: a fixed point of x -> x(T), by the secant method) has no crossing
+  // before the edge; beyond it there is no such orbit, or it crosses.
+  auto crosses = [&](Real w) {
+    const Real T = 2 * std::acos(Real(-1)) / w;
+    auto X = [&](Real x0, std::vector<ref::Event>* ev) {
+      ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p, w));
+      sim.dt = 5e-3L;
+      Real t = 0, x = x0, y = 0.3L;
+      sim.Run(t, x, y, T);
+      if (ev) *ev = sim.events;
+      return x;
+    };
+    Real a = cr->x0, b = cr->x0 + 1e-6L, fa = X(a, nullptr) - a;
+    for (int i = 0; i < 30 && std::abs(b - a) > 1e-18L; ++i) {
+      const Real fb = X(b, nullptr) - b, c = b - fb * (b - a) / (fb - fa);
+      a = b, fa = fb, b = c;
+    }
+    std::vector<ref::Event> ev;
+    if (std::abs(X(b, &ev) - b) > 1e-15L) return true;  // no such orbit: past the edge
+    for (const ref::Event& e : ev)
+      if (e.kind == 2) return true;
+    return false;
+  };
+  ASSERT_FALSE(crosses(0.7316L));
+  ASSERT_TRUE(crosses(0.7318L));
+  const Real w_cr = ref::Bisect(crosses, Real(0.7316), Real(0.7318));
+  std::printf("[ measured ] GR at %.15g, closed form %.15Lg (%.1e); CR at %.15g, pieces %.15Lg "
+              "(%.1e)\n",
+              gr->p, w_gr, double(gr->p - w_gr), cr->p, w_cr, double(cr->p - w_cr));
+  EXPECT_NEAR(gr->p, double(w_gr), 1e-10);
+  EXPECT_NEAR(cr->p, double(w_cr), 1e-10);
+}
+
 }  // namespace
 }  // namespace stickslip
 
