@@ -209,7 +209,8 @@ int Main(int argc, char** argv) {
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
   if (cli::HelpOrVersion(std::cout, args, kProg,
                          "ss_simulate [--study FILE] [model options] [--force A --omega W "
-                         "[--section strobe|exit | --orbits [--max_m M]]] [--x0 X] [--xdot0 Y] [--t_end T] [--dt DT] "
+                         "[--section strobe|exit | --orbits [--max_m M]]] [--x0 X] [--xdot0 Y] "
+                         "[--t_end T] [--dt DT] "
                          "[--out DIR] [--no_plots] [--max_time S]",
                          desc,
                          std::string(kNotes) + cli::kExitCodeHelp +

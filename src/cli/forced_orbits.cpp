@@ -24,7 +24,8 @@ std::string OrbitsScript(const std::string& title, FigureFormat f) {
   s += "set xlabel 'displacement x (dimensionless)'\nset ylabel 'velocity dx/dt (dimensionless)'\n";
   s += "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
   s += "plot 'orbits.tsv' using (column('stable') == 1 ? $7 : NaN):8:(sprintf('m=%d', "
-       "column('m'))) with labels point pt 7 ps 1.2 lc rgb '#1f77b4' offset 1,1 title 'stable', \\\n";
+       "column('m'))) with labels point pt 7 ps 1.2 lc rgb '#1f77b4' offset 1,1 title 'stable', "
+       "\\\n";
   s += "     'orbits.tsv' using (column('stable') == 0 ? $7 : NaN):8 with points pt 6 ps 1.2 "
        "lc rgb '#d62728' title 'unstable'\n";
   return s;
@@ -62,8 +63,8 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
                                          std::to_string(r.converged) + " converged"},
                            {"status", r.ok() ? "complete" : "partial (" + partial + ")"}});
   TsvTable t({"orbit", "m", "sticks", "crossings", "kind", "point", "x", "xdot", "x_min", "x_max",
-              "xdot_min", "xdot_max", "mult1_re", "mult1_im", "mult2_re", "mult2_im",
-              "mult_max", "stable", "found_by"});
+              "xdot_min", "xdot_max", "mult1_re", "mult1_im", "mult2_re", "mult2_im", "mult_max",
+              "stable", "found_by"});
   t.PrependMeta(meta);
   int index = 0;
   for (const ForcedScanOrbit& so_ : r.orbits) {
@@ -72,9 +73,9 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
     for (size_t k = 0; k < so_.points.size(); ++k)
       t.AddRow({index, o.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
                 static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), o.extremes.x_min,
-                o.extremes.x_max, o.extremes.xdot_min, o.extremes.xdot_max,
-                o.multipliers[0].real(), o.multipliers[0].imag(), o.multipliers[1].real(),
-                o.multipliers[1].imag(), std::abs(o.multipliers[0]), o.stable ? 1 : 0,
+                o.extremes.x_max, o.extremes.xdot_min, o.extremes.xdot_max, o.multipliers[0].real(),
+                o.multipliers[0].imag(), o.multipliers[1].real(), o.multipliers[1].imag(),
+                std::abs(o.multipliers[0]), o.stable ? 1 : 0,
                 so_.from_exit_map ? "exit-map" : "strobe"});
   }
   app.out().Write("orbits.tsv", t.str());

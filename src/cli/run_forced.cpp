@@ -49,10 +49,11 @@ void Check(const Arguments& args, const ForcedParams& p, const std::string& what
 // opens toward.
 void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& s) {
   if (!s.restart || s.restart->type != "PD")
-    throw UsageError(args.Source("switch") + " needs --restart DIR --point PDn (a period "
-                     "doubling of a forced run)" +
-                     (s.restart ? ", not " + args.Text("point") + " (" + s.restart->type + ")"
-                                : std::string()));
+    throw UsageError(
+        args.Source("switch") +
+        " needs --restart DIR --point PDn (a period "
+        "doubling of a forced run)" +
+        (s.restart ? ", not " + args.Text("point") + " (" + s.restart->type + ")" : std::string()));
   if (args.Given(ForcedAxisName(s.axis)) || ForcedAxisName(s.axis) != s.restart->param)
     throw UsageError(args.Source("switch") + " continues the doubled branch in " +
                      s.restart->param + ", the PD point's parameter");
@@ -63,8 +64,8 @@ void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& 
   if (s.lo > s.hi) std::swap(s.lo, s.hi);
   if (!(s.lo < p && p < s.hi))
     throw UsageError(args.Source("switch") + ": the PD point's " + s.restart->param + " = " +
-                     FormatNumber(p) + " must lie strictly between --from " +
-                     FormatNumber(s.lo) + " and --to " + FormatNumber(s.hi));
+                     FormatNumber(p) + " must lie strictly between --from " + FormatNumber(s.lo) +
+                     " and --to " + FormatNumber(s.hi));
   s.from = p, s.to = s.hi;  // to: set from the branch's side once traced
 }
 
@@ -251,8 +252,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   const std::string status = StatusOf(pieces);
   if (restart) meta.emplace_back("restart", DescribeRestart(args, *restart));
   if (s.doubled)
-    meta.emplace_back("switch", "period-doubled branch, m = " + std::to_string(s.opts.m) +
-                                    " -> " + std::to_string(2 * s.opts.m));
+    meta.emplace_back("switch", "period-doubled branch, m = " + std::to_string(s.opts.m) + " -> " +
+                                    std::to_string(2 * s.opts.m));
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;

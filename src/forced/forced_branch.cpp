@@ -190,8 +190,8 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
         if (!found_edge && !edge_only) {
           const double d = sign * (span > 0 ? 1 : -1);
           // Never past the branch's range (validated; beyond it the model may not be).
-          const double limit = std::clamp(br.lo.p + d * 256 * step, std::min(from_, to_),
-                                          std::max(from_, to_));
+          const double limit =
+              std::clamp(br.lo.p + d * 256 * step, std::min(from_, to_), std::max(from_, to_));
           fine.lo.p = NAN;
           found_edge = forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, limit,
                                                  o_.locate_tol, &fine.lo, &fine.hi, &why);
@@ -334,8 +334,9 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
   SetAxis(at_from, axis, from);
   if (const std::string e = ValidationError(at_from); !e.empty()) throw InvalidArgument(e);
   if (!(to != from) || !std::isfinite(to)) throw InvalidArgument("to must be finite and != from");
-  return forced_detail::TraceBranch(base, axis, from, to, Eigen::Vector3d(x_guess, xdot_guess, from),
-                                    2, Eigen::Vector3d::Unit(2) * (to > from ? 1 : -1), options);
+  return forced_detail::TraceBranch(base, axis, from, to,
+                                    Eigen::Vector3d(x_guess, xdot_guess, from), 2,
+                                    Eigen::Vector3d::Unit(2) * (to > from ? 1 : -1), options);
 }
 
 }  // namespace stickslip

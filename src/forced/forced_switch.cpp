@@ -42,8 +42,8 @@ ForcedBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double 
   if (const std::string e = ValidationError(at_pd); !e.empty()) throw InvalidArgument(e);
   const double p_pd = GetAxis(at_pd, axis);
   if (!(lo < p_pd && p_pd < hi) || !std::isfinite(lo) || !std::isfinite(hi))
-    throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " +
-                          Num(p_pd, 12) + " < hi");
+    throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " + Num(p_pd, 12) +
+                          " < hi");
   if (const std::string e = options.palc.ValidationError(3); !e.empty()) throw InvalidArgument(e);
   // The flip direction from DP^m at the point.
   const ForcedModel model(at_pd);

@@ -27,8 +27,7 @@ class ForcedOrbitsApp : public tu::AppTest {
 };
 
 TEST_F(ForcedOrbitsApp, ListsEveryOrbitAndEachClosesOnTheReferenceMap) {
-  ASSERT_EQ(Run("--study " + kStudy + " --omega 0.612 --orbits --max_m 2 --out " + dir_ + "/o"),
-            0)
+  ASSERT_EQ(Run("--study " + kStudy + " --omega 0.612 --orbits --max_m 2 --out " + dir_ + "/o"), 0)
       << err_;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir_ + "/o/orbits.tsv"));
   ASSERT_EQ(t.rows.size(), 3u);  // m = 1 (one point) and m = 2 (two points)
@@ -64,9 +63,8 @@ TEST_F(ForcedOrbitsApp, ListsEveryOrbitAndEachClosesOnTheReferenceMap) {
 TEST_F(ForcedOrbitsApp, MisuseIsExitTwoWithOneLineNothingWritten) {
   const std::string out = " --out " + dir_ + "/bad";
   const std::string forced = "--law coulomb --mu_s 0.4 --mu_k 0.3 --v 0 --force 0.5 --omega 1.5";
-  for (const std::string& args :
-       {std::string("--orbits"), forced + " --orbits --max_m 0", forced + " --max_m 3",
-        forced + " --orbits --max_m 2.5"}) {
+  for (const std::string& args : {std::string("--orbits"), forced + " --orbits --max_m 0",
+                                  forced + " --max_m 3", forced + " --orbits --max_m 2.5"}) {
     EXPECT_EQ(Run(args + out), 2) << args;
     EXPECT_TRUE(tu::Contains(err_, args.find("max_m") != std::string::npos ? "max_m" : "orbits"))
         << err_;

@@ -22,8 +22,7 @@ class ForcedSwitchApp : public tu::AppTest {
  protected:
   void SetUp() override {
     AppTest::SetUp();
-    ASSERT_EQ(Run("--study " + kStudy + " --from 0.7 --to 0.6 --out " + dir_ + "/one"), 0)
-        << err_;
+    ASSERT_EQ(Run("--study " + kStudy + " --from 0.7 --to 0.6 --out " + dir_ + "/one"), 0) << err_;
   }
   int Run(const std::string& args) { return RunApp(kBin, "ss_continue", args + " --no_plots"); }
   tu::Tsv Table(const std::string& path) const { return tu::ReadTsv(tu::ReadFile(path)); }
@@ -39,9 +38,8 @@ TEST_F(ForcedSwitchApp, DoubledBranchStartsAtThePdPointAndIsTwoPeriodic) {
     if (one.rows[i][one.Column("lab")] == "PD1") pd = i;
   ASSERT_LT(pd, one.rows.size()) << "no PD1 on the m = 1 branch";
   const double w_pd = Num(one, pd, "omega");
-  ASSERT_EQ(Run("--restart " + dir_ + "/one --point PD1 --switch --to 0.612 --out " + dir_ +
-                "/two"),
-            0)
+  ASSERT_EQ(
+      Run("--restart " + dir_ + "/one --point PD1 --switch --to 0.612 --out " + dir_ + "/two"), 0)
       << err_;
   const tu::Tsv two = Table(dir_ + "/two/branch.tsv");
   ASSERT_GT(two.rows.size(), 5u);
@@ -74,8 +72,7 @@ TEST_F(ForcedSwitchApp, MisuseIsExitTwoWithOneLineNamingSwitch) {
   for (const std::string& args :
        {"--restart " + dir_ + "/one --point LP1 --switch",
         "--restart " + dir_ + "/one --point PD1 --switch --from 0.62 --to 0.7",
-        "--restart " + dir_ + "/one --point PD1 --switch --param force",
-        std::string("--switch")}) {
+        "--restart " + dir_ + "/one --point PD1 --switch --param force", std::string("--switch")}) {
     EXPECT_EQ(Run(args + out), 2) << args;
     EXPECT_TRUE(tu::Contains(err_, "--switch")) << err_;
     EXPECT_EQ(std::count(err_.begin(), err_.end(), '\n'), 1) << err_;

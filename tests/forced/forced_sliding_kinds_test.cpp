@@ -128,9 +128,10 @@ TEST(ForcedSlidingKinds, StickEntryReachingTheBandIsCrossingSliding) {
   ASSERT_FALSE(crosses(0.7316L));
   ASSERT_TRUE(crosses(0.7318L));
   const Real w_cr = ref::Bisect(crosses, Real(0.7316), Real(0.7318));
-  std::printf("[ measured ] GR at %.15g, closed form %.15Lg (%.1e); CR at %.15g, pieces %.15Lg "
-              "(%.1e)\n",
-              gr->p, w_gr, double(gr->p - w_gr), cr->p, w_cr, double(cr->p - w_cr));
+  std::printf(
+      "[ measured ] GR at %.15g, closed form %.15Lg (%.1e); CR at %.15g, pieces %.15Lg "
+      "(%.1e)\n",
+      gr->p, w_gr, double(gr->p - w_gr), cr->p, w_cr, double(cr->p - w_cr));
   EXPECT_NEAR(gr->p, double(w_gr), 1e-10);
   EXPECT_NEAR(cr->p, double(w_cr), 1e-10);
 }

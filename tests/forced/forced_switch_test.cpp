@@ -51,7 +51,6 @@ ForcedBranchRow FirstPeriodDoubling() {
   return {};
 }
 
-
 TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   const ForcedBranchRow pd = FirstPeriodDoubling();
   ASSERT_EQ(pd.label, ForcedLabel::kPD);
@@ -72,9 +71,10 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
     const ForcedBranchRow& r = d.rows[i];
     const double off2 = std::pow(r.x0 - pd.x0, 2) + std::pow(r.xdot0 - pd.xdot0, 2);
     ratio[i] = off2 / std::abs(r.p - pd.p);
-    std::printf("[ measured ] doubled row %d: Omega - Omega_PD = %.3e, |z - z_PD| = %.3e, "
-                "mult %.9f\n",
-                i, r.p - pd.p, std::sqrt(off2), r.multipliers[0].real());
+    std::printf(
+        "[ measured ] doubled row %d: Omega - Omega_PD = %.3e, |z - z_PD| = %.3e, "
+        "mult %.9f\n",
+        i, r.p - pd.p, std::sqrt(off2), r.multipliers[0].real());
   }
   EXPECT_NEAR(ratio[1] / ratio[0], 1, 0.2);
   // The flip normal form x -> -(1 + a) x + c x^3 (Kuznetsov, section 4.4):
@@ -91,10 +91,11 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   std::printf("[ measured ] (1 - mu_2) / |1 + mu_1| = %.6f at Omega - Omega_PD = %.3e\n", ratio4,
               r0.p - pd.p);
   EXPECT_NEAR(ratio4, 4, 0.1);
-  EXPECT_LT(std::abs(r0.multipliers[0]), 1);  // stable where it opens
+  EXPECT_LT(std::abs(r0.multipliers[0]), 1);      // stable where it opens
   EXPECT_GT(std::abs(single.multipliers[0]), 1);  // the m = 1 orbit is not
   for (const ForcedBranchRow& r : d.special)
-    std::printf("[ measured ] doubled branch: %s at Omega = %.15g\n", ForcedLabelName(r.label), r.p);
+    std::printf("[ measured ] doubled branch: %s at Omega = %.15g\n", ForcedLabelName(r.label),
+                r.p);
   // Away from the PD, the independent map's attractor is the doubled orbit:
   // from the library's 2m point, 400 reference periods later the map still
   // alternates between it and its image (the m = 1 orbit there is unstable).
@@ -130,8 +131,8 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   oo.flow = o.flow;
   const ForcedOrbit orbit = ShootStroboscopic(m, tr.end.x, tr.end.xdot, 1, oo);
   ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged);
-  const ForcedBranch d = ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.x, orbit.start.xdot,
-                                         0.6, 0.8, o);
+  const ForcedBranch d =
+      ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.x, orbit.start.xdot, 0.6, 0.8, o);
   EXPECT_EQ(d.status, ForcedBranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());
