@@ -178,6 +178,23 @@ std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
   return status;
 }
 
+// The run's summary on stdout: range, rows, status, gap and special points.
+void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::string& model,
+                  const std::string& status, const std::string& gap,
+                  const std::vector<ForcedPiece>& pieces) {
+  size_t rows = 0;
+  for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
+  std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
+            << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
+            << rows << " rows; " << status << "\n";
+  if (!gap.empty()) std::cout << "gap: " << gap << "\n";
+  for (const ForcedPiece& piece : pieces)
+    for (const ForcedBranchRow& r : piece.branch.special)
+      std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
+                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "  "
+                << r.description << "\n";
+}
+
 }  // namespace
 
 po::options_description ForcingOptions() {
@@ -267,17 +284,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   app.out().Write("resonance.gp", ResonanceScript(s.p, s.axis, static_cast<int>(pieces.size()),
                                                   model, gap_ends, specials, format));
   if (!app.Finish("resonance.gp", {figure}, {figure})) return kExitFailed;
-  size_t rows = 0;
-  for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
-  std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
-            << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
-            << rows << " rows; " << status << "\n";
-  if (!gap.empty()) std::cout << "gap: " << gap << "\n";
-  for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.special)
-      std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
-                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "  "
-                << r.description << "\n";
+  PrintSummary(prog, s, model, status, gap, pieces);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;

@@ -130,6 +130,7 @@ class Monitor {
 
  private:
   void Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row);
+  Bracket AcrossEdge(const Bracket& br, bool chord, double span, const ForcedBranchRow& row);
 
   Palc& palc_;
   StrobeProblem& problem_;
@@ -142,6 +143,38 @@ class Monitor {
   ForcedBranchRow prev_;
   double prev_tests_[3] = {0, 0, 0};
 };
+
+// The edge behind a failed or far-apart chord bracket br (span: the chord's
+// parameter span): along the chord, or behind a corner of the branch (two
+// branches meeting at the edge), so both ways; row is the chord's far end.
+Bracket Monitor::AcrossEdge(const Bracket& br, bool chord, double span,
+                            const ForcedBranchRow& row) {
+  Bracket out = br, fine;
+  std::string why;
+  const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(out.lo.p)));
+  bool found_edge = false, edge_only = false;
+  for (const double sign : {1.0, -1.0})
+    if (!found_edge && !edge_only) {
+      const double d = sign * (span > 0 ? 1 : -1);
+      // Never past the branch's range (validated; beyond it the model may not be).
+      const double limit =
+          std::clamp(out.lo.p + d * 256 * step, std::min(from_, to_), std::max(from_, to_));
+      fine.lo.p = NAN;
+      found_edge = forced_detail::JumpAcross(base_, axis_, o_, out.lo, d, step, limit,
+                                             o_.locate_tol, &fine.lo, &fine.hi, &why);
+      // The edge bisected, no orbit of the same m just beyond (the branch
+      // went on to one far away): the edge is the point, row the far side.
+      edge_only = !found_edge && std::isfinite(fine.lo.p);
+    }
+  if (found_edge) {
+    out = fine;
+  } else if (edge_only) {
+    out.lo = fine.lo, out.hi = row;
+  } else if (!chord) {
+    out.hi = row;
+  }
+  return out;
+}
 
 void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row) {
   std::vector<ForcedBranchRow> found;
@@ -178,35 +211,8 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double far = chord ? br.hi.p : br.p_hi;
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
-    if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0))) {
-      // The edge lies along the chord, or behind a corner of the branch
-      // (two branches meeting at the edge): try both ways.
-      Bracket fine;
-      std::string why;
-      const double span = b[2] - from[2];
-      const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(br.lo.p)));
-      bool found_edge = false, edge_only = false;
-      for (const double sign : {1.0, -1.0})
-        if (!found_edge && !edge_only) {
-          const double d = sign * (span > 0 ? 1 : -1);
-          // Never past the branch's range (validated; beyond it the model may not be).
-          const double limit =
-              std::clamp(br.lo.p + d * 256 * step, std::min(from_, to_), std::max(from_, to_));
-          fine.lo.p = NAN;
-          found_edge = forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, limit,
-                                                 o_.locate_tol, &fine.lo, &fine.hi, &why);
-          // The edge bisected, no orbit of the same m just beyond (the branch
-          // went on to one far away): the edge is the point, row the far side.
-          edge_only = !found_edge && std::isfinite(fine.lo.p);
-        }
-      if (found_edge) {
-        br = fine;
-      } else if (edge_only) {
-        br.lo = fine.lo, br.hi = row;
-      } else if (!chord) {
-        br.hi = row;
-      }
-    }
+    if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0)))
+      br = AcrossEdge(br, chord, b[2] - from[2], row);
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).
     const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
