@@ -98,6 +98,37 @@ bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const Seed& s, cons
   return false;
 }
 
+// Points of one stretch of a curve, at one section phase.
+struct Stretch {
+  double phase = 0;
+  std::vector<VectorXd> u;
+};
+
+// Goes on from u (the end of a stretch stopped near the section's stick) at a
+// new section phase, along `dir` in the plane; up to kRestarts times.
+CurveEnd GoOn(ForcedCurveProblem& problem, const TraceOptions& t, VectorXd u, Eigen::Vector2d dir,
+              std::vector<Stretch>* out, int* evaluations) {
+  constexpr int kRestarts = 20;
+  for (int k = 0; k < kRestarts; ++k) {
+    std::string why;
+    if (!problem.Rephase(&u, &why)) return {CurveEndKind::kStartFailed, why};
+    VectorXd d = VectorXd::Zero(4);
+    d[2] = dir[0] / t.plane.width1(), d[3] = dir[1] / t.plane.width2();
+    const int fixed = std::abs(d[2]) >= std::abs(d[3]) ? 3 : 2;
+    const TraceResult r = TraceOneWay(problem, t, u, fixed, d);
+    *evaluations += r.evaluations;
+    if (r.u.size() < 2) return r.ends.last.kind == CurveEndKind::kNone
+                                   ? CurveEnd{CurveEndKind::kStartFailed, "no step after rephasing"}
+                                   : r.ends.last;
+    out->push_back({problem.phase(), r.u});
+    if (!r.stopped) return r.ends.last;
+    const VectorXd& a = r.u[r.u.size() - 2];
+    u = r.u.back();
+    dir = Eigen::Vector2d(u[2] - a[2], u[3] - a[3]);
+  }
+  return {CurveEndKind::kStopped, "section near the stick phase after every rephasing"};
+}
+
 ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const Seed& s,
                   std::string* message) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -106,9 +137,14 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   ForcedCurveProblem problem(base, o.plane, s.kind, s.m, o.flow);
   VectorXd u0(4);
   u0 << s.x0, s.xdot0, s.p1, s.p2;
+  std::string why;
+  if (!problem.Rephase(&u0, &why)) {
+    curve.ends.first = {CurveEndKind::kNoStart, why};
+    *message = curve.ends.Text();
+    return curve;
+  }
   if (s.kind == ForcedCurveKind::kGR) {  // the margin nearer zero at the seed
     ForcedCurveSample a, b;
-    std::string why;
     problem.set_crossing(false);
     const bool graze = problem.Sample(u0, &b, &why);
     problem.set_crossing(true);
@@ -119,23 +155,49 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   t.plane = o.plane.AsPlane();
   t.i1 = 2;
   t.max_step = o.max_step;
-  t.tol = Tolerances::From(o.flow.rtol, o.flow.atol).Corrector();
+  t.tol = Tolerances::From(o.flow.rtol, o.flow.atol).ForcedCurveCorrector();
   t.cancelled = o.cancelled;
+  const double v = base.base.v, near = Tolerances().forced_section_near_stick;
+  t.stop = [v, near](const VectorXd& u) { return std::abs(u[1] - v) < near; };
   const TraceResult r = TraceBothWays(problem, t, u0, s.fixed);
   curve.ends = r.ends;
   curve.evaluations = r.evaluations;
-  *message = r.cut;
-  for (const VectorXd& u : r.u) {
-    ForcedCurveSample smp;
-    std::string why;
-    if (!problem.Sample(u, &smp, &why)) continue;
-    ForcedCurvePoint p;
-    p.p1 = u[2], p.p2 = u[3], p.x0 = u[0], p.xdot0 = u[1];
-    p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
-    p.x_min = smp.run.extremes.x_min, p.x_max = smp.run.extremes.x_max;
-    Multipliers(smp.run.jacobian, p.multipliers);
-    p.flag = s.kind == ForcedCurveKind::kNS ? p.multipliers[0].imag() == 0 : smp.crossing;
-    curve.points.push_back(p);
+  const double phase = problem.phase();
+  std::vector<Stretch> back, fwd;
+  // TraceBothWays gives the back way reversed, then the forward way.
+  if (r.ends.first.kind == CurveEndKind::kStopped && r.u.size() >= 2) {
+    const VectorXd &a = r.u[1], &b = r.u[0];
+    curve.ends.first = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &back, &curve.evaluations);
+  }
+  if (r.ends.last.kind == CurveEndKind::kStopped && r.u.size() >= 2) {
+    problem.set_phase(phase);
+    const VectorXd &a = r.u[r.u.size() - 2], &b = r.u.back();
+    curve.ends.last = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &fwd, &curve.evaluations);
+  }
+  std::vector<Stretch> all;
+  for (auto it = back.rbegin(); it != back.rend(); ++it)
+    all.push_back({it->phase, std::vector<VectorXd>(it->u.rbegin(), it->u.rend())});
+  all.push_back({phase, r.u});
+  all.insert(all.end(), fwd.begin(), fwd.end());
+  auto cut = [](const CurveEnd& e) {
+    return e.kind == CurveEndKind::kMaxPoints || e.kind == CurveEndKind::kStepTooSmall ||
+           e.kind == CurveEndKind::kStartFailed || e.kind == CurveEndKind::kNoStart ||
+           e.kind == CurveEndKind::kStopped;
+  };
+  *message = cut(curve.ends.first) || cut(curve.ends.last) ? curve.ends.Text() : "";
+  for (const Stretch& st : all) {
+    problem.set_phase(st.phase);
+    for (const VectorXd& u : st.u) {
+      ForcedCurveSample smp;
+      if (!problem.Sample(u, &smp, &why)) continue;
+      ForcedCurvePoint p;
+      p.p1 = u[2], p.p2 = u[3], p.x0 = u[0], p.xdot0 = u[1], p.phase = st.phase;
+      p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
+      p.x_min = smp.run.extremes.x_min, p.x_max = smp.run.extremes.x_max;
+      Multipliers(smp.run.jacobian, p.multipliers);
+      p.flag = s.kind == ForcedCurveKind::kNS ? p.multipliers[0].imag() == 0 : smp.crossing;
+      curve.points.push_back(p);
+    }
   }
   curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return curve;

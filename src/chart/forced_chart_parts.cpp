@@ -120,7 +120,7 @@ void FindCodim2(const ForcedCurve& c, int index, std::vector<ForcedCodim2>* out)
   };
   for (size_t i = 1; i < c.points.size(); ++i) {
     const ForcedCurvePoint &a = c.points[i - 1], &b = c.points[i];
-    if (a.sticks != b.sticks || a.crossings != b.crossings) {
+    if (c.kind != ForcedCurveKind::kGR && (a.sticks != b.sticks || a.crossings != b.crossings)) {
       add(At(a, b, 1, -1), ForcedCodim2Label::kSliding,
           std::string(ForcedCurveName(c.kind)) + " curve: sticks " + std::to_string(a.sticks) +
               " -> " + std::to_string(b.sticks) + ", crossings " + std::to_string(a.crossings) +

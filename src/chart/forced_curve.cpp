@@ -14,10 +14,11 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
   const ForcedModel model(plane_.At(base_, u[2], u[3]));
   std::vector<ForcedEvent> events;
   ForcedRequest rq;
-  rq.t_end = m_ * model.period();
+  const double t0 = phase_ / model.omega();
+  rq.t_end = t0 + m_ * model.period();
   rq.variational = true;
   rq.events = &events;
-  s->run = ForcedFlow(model, flow_).Run(ForcedStart(model, 0, u[0], u[1]), rq);
+  s->run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, u[0], u[1]), rq);
   if (s->run.status != ForcedStatus::kReached) {
     *why = s->run.message;
     return false;
@@ -52,6 +53,26 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
     *why = "the orbit does not reach x' = v (no crossing, no stick)";
     return false;
   }
+  return true;
+}
+
+bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
+  const ForcedModel model(plane_.At(base_, (*u)[2], (*u)[3]));
+  std::vector<ForcedPoint> samples;
+  ForcedRequest rq;
+  const double t0 = phase_ / model.omega();
+  rq.t_end = t0 + m_ * model.period();
+  rq.samples = &samples;
+  const ForcedRun run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, (*u)[0], (*u)[1]), rq);
+  if (run.status != ForcedStatus::kReached) return *why = run.message, false;
+  const ForcedPoint* best = nullptr;
+  for (const ForcedPoint& p : samples)
+    if (p.mode != Mode::kStick &&
+        (!best || std::abs(p.xdot - model.v()) > std::abs(best->xdot - model.v())))
+      best = &p;
+  if (!best) return *why = "the orbit sticks at every sample", false;
+  phase_ = std::fmod(best->t * model.omega(), 2 * M_PI);
+  (*u)[0] = best->x, (*u)[1] = best->xdot;
   return true;
 }
 

@@ -47,6 +47,14 @@ class ForcedCurveProblem final : public PalcProblem {
   bool Sample(const Eigen::VectorXd& u, ForcedCurveSample* s, std::string* why) const;
   // The GR margin's kind: chosen at the seed, held along the curve.
   void set_crossing(bool crossing) { crossing_ = crossing; }
+  // The section: forcing phase theta (z at t = theta / Omega), 0 by default.
+  // A stick-slip orbit stuck at the section makes the map non-smooth there,
+  // so the tracer moves the section into a slip phase (Rephase).
+  double phase() const { return phase_; }
+  void set_phase(double theta) { phase_ = theta; }
+  // The state at the section phase where |x' - v| is largest over the orbit
+  // through u (step ends of one run): u's (x, x') replaced, phase set.
+  bool Rephase(Eigen::VectorXd* u, std::string* why);
 
  private:
   double Test(const ForcedCurveSample& s) const;
@@ -56,6 +64,7 @@ class ForcedCurveProblem final : public PalcProblem {
   int m_;
   ForcedOptions flow_;
   bool crossing_ = true;
+  double phase_ = 0;
   Eigen::MatrixXd chord_;  // 3 x 4: the difference columns and row
 };
 

@@ -41,7 +41,10 @@ const char* ForcedCurveName(ForcedCurveKind k);  // "LP", "PD", "NS", "GR"
 
 struct ForcedCurvePoint {
   double p1 = 0, p2 = 0;
-  double x0 = 0, xdot0 = 0;  ///< the orbit's stroboscopic point at phase 0
+  double x0 = 0, xdot0 = 0;  ///< the orbit's point at the section phase
+  /// The section: forcing phase Omega t in [0, 2 pi), moved off 0 where the
+  /// orbit would stick at the section (the map is not smooth there).
+  double phase = 0;
   int sticks = 0, crossings = 0;
   double x_min = 0, x_max = 0;
   std::complex<double> multipliers[2];
