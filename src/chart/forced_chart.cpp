@@ -107,7 +107,7 @@ struct Stretch {
 // Goes on from u (the end of a stretch stopped near the section's stick) at a
 // new section phase, along `dir` in the plane; up to kRestarts times.
 CurveEnd GoOn(ForcedCurveProblem& problem, const TraceOptions& t, VectorXd u, Eigen::Vector2d dir,
-              std::vector<Stretch>* out, int* evaluations) {
+              std::vector<Stretch>* out, int* evaluations, std::string* bad) {
   constexpr int kRestarts = 20;
   for (int k = 0; k < kRestarts; ++k) {
     std::string why;
@@ -122,6 +122,10 @@ CurveEnd GoOn(ForcedCurveProblem& problem, const TraceOptions& t, VectorXd u, Ei
                                    : r.ends.last;
     out->push_back({problem.phase(), r.u});
     if (!r.stopped) return r.ends.last;
+    if (!bad->empty()) {
+      out->back().u.pop_back();
+      return {CurveEndKind::kStopped, *bad};
+    }
     const VectorXd& a = r.u[r.u.size() - 2];
     u = r.u.back();
     dir = Eigen::Vector2d(u[2] - a[2], u[3] - a[3]);
@@ -158,21 +162,48 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   t.tol = Tolerances::From(o.flow.rtol, o.flow.atol).ForcedCurveCorrector();
   t.cancelled = o.cancelled;
   const double v = base.base.v, near = Tolerances().forced_section_near_stick;
-  t.stop = [v, near](const VectorXd& u) { return std::abs(u[1] - v) < near; };
-  const TraceResult r = TraceBothWays(problem, t, u0, s.fixed);
+  // An accepted point whose residual is not small (a Newton update that
+  // shrank on a kink of the map, not on a root) ends the way there.
+  std::string bad;
+  const double max_residual = Tolerances().forced_curve_residual;
+  t.stop = [&, v, near](const VectorXd& u) {
+    ForcedCurveSample smp;
+    std::string w;
+    VectorXd f;
+    Eigen::MatrixXd j;
+    if (!problem.Sample(u, &smp, &w)) return !(bad = w).empty();
+    const double res = std::max({std::abs(smp.run.end.x - u[0]), std::abs(smp.run.end.xdot - u[1]),
+                                 std::abs(problem.TestOf(smp))});
+    if (!(res <= max_residual)) return !(bad = "residual " + Num(res, 3) + " at an accepted point (the map is not smooth there)").empty();
+    return std::abs(u[1] - v) < near;
+  };
+  TraceResult r = TraceBothWays(problem, t, u0, s.fixed);
   curve.ends = r.ends;
+  // A way stopped on a bad point: the point dropped, the end says why (the
+  // back way cannot be told from the forward one here: both are checked).
+  std::string bad_first, bad_last;
+  auto bad_at = [&](const VectorXd& u) {
+    bad.clear();
+    t.stop(u);
+    return bad;
+  };
+  if (r.ends.first.kind == CurveEndKind::kStopped && !r.u.empty() && !(bad_first = bad_at(r.u.front())).empty())
+    r.u.erase(r.u.begin()), curve.ends.first = {CurveEndKind::kStopped, bad_first};
+  if (r.ends.last.kind == CurveEndKind::kStopped && !r.u.empty() && !(bad_last = bad_at(r.u.back())).empty())
+    r.u.pop_back(), curve.ends.last = {CurveEndKind::kStopped, bad_last};
+  bad.clear();
   curve.evaluations = r.evaluations;
   const double phase = problem.phase();
   std::vector<Stretch> back, fwd;
   // TraceBothWays gives the back way reversed, then the forward way.
-  if (r.ends.first.kind == CurveEndKind::kStopped && r.u.size() >= 2) {
+  if (r.ends.first.kind == CurveEndKind::kStopped && bad_first.empty() && r.u.size() >= 2) {
     const VectorXd &a = r.u[1], &b = r.u[0];
-    curve.ends.first = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &back, &curve.evaluations);
+    curve.ends.first = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &back, &curve.evaluations, &bad);
   }
-  if (r.ends.last.kind == CurveEndKind::kStopped && r.u.size() >= 2) {
+  if (r.ends.last.kind == CurveEndKind::kStopped && bad_last.empty() && r.u.size() >= 2) {
     problem.set_phase(phase);
     const VectorXd &a = r.u[r.u.size() - 2], &b = r.u.back();
-    curve.ends.last = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &fwd, &curve.evaluations);
+    curve.ends.last = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &fwd, &curve.evaluations, &bad);
   }
   std::vector<Stretch> all;
   for (auto it = back.rbegin(); it != back.rend(); ++it)

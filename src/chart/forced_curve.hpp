@@ -47,6 +47,8 @@ class ForcedCurveProblem final : public PalcProblem {
   bool Sample(const Eigen::VectorXd& u, ForcedCurveSample* s, std::string* why) const;
   // The GR margin's kind: chosen at the seed, held along the curve.
   void set_crossing(bool crossing) { crossing_ = crossing; }
+  // This curve's test function of a sample.
+  double TestOf(const ForcedCurveSample& s) const { return Test(s); }
   // The section: forcing phase theta (z at t = theta / Omega), 0 by default.
   // A stick-slip orbit stuck at the section makes the map non-smooth there,
   // so the tracer moves the section into a slip phase (Rephase).

@@ -90,7 +90,7 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
      << "set yrange [" << pl.from2 << ":" << pl.to2 << "]\n"
      << "set title \"" << title << "\"\n"
      << "set lmargin at screen 0.1\nset rmargin at screen 0.97\n"
-     << "set tmargin at screen 0.93\nset bmargin at screen 0.3\n"
+     << "set tmargin at screen 0.93\nset bmargin at screen 0.26\n"
      << "set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 "
         "samplen 3 font ',11'\n"
      << "set tics out nomirror front\nset border 3 front\n";

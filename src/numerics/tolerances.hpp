@@ -142,6 +142,9 @@ struct Tolerances {
   /// Forced chart curves: a section point within this of x' = v is near the
   /// stick phase (the map is not smooth there): the section moves on.
   double forced_section_near_stick = 1e-3;
+  /// Forced chart curves: an accepted point's residual (orbit and test
+  /// function, max norm) above this is no root: the way ends there.
+  double forced_curve_residual = 1e-8;
   /// Forced chart curves: the corrector's tolerance on the scaled update,
   /// max(1e-11, 10 rtol) (the differenced Jacobian's noise; 1e-12 stalled).
   double ForcedCurveCorrector() const { return std::max(1e-11, 10 * rtol); }
