@@ -41,7 +41,7 @@ constexpr const char* kNotes =
     "Forced oscillator (issue 21): --force A, --omega W, or an axis omega or force selects\n"
     "it; the axes are two of omega, force, v, beta (defaults omega [0.5, 2] x force\n"
     "[0.05, 1]). LP, PD, NS and GR curves (GR: where non-stop motion ends) are traced from\n"
-    "the special points of one-parameter runs on 3 lines per axis; --grid N (default 40)\n"
+    "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default 40)\n"
     "classifies N x N cells by the attractor reached (period m and sticks, quasi-periodic,\n"
     "chaotic by the largest Lyapunov exponent; each row swept along --param). Outputs:\n"
     "curves.tsv, codim2.tsv (R1, R2, LPPD, SL), response.tsv, forced_chart.gp and\n"
@@ -62,7 +62,9 @@ po::options_description AppOptions() {
       "grid", cli::Value()->value_name("N"),
       "also classify an N x N grid of cell centres, a check of the region polygons: the "
       "summary counts the cells whose region differs from the polygon drawn there "
-      "(default 0: none); forced: the response grid, N x N cells (default 40, 0: none)");
+      "(default 0: none); forced: the response grid, N x N cells (default 40, 0: none)")(
+      "seed_lines", cli::Value()->value_name("N"),
+      "forced: one-parameter runs per axis that seed the curves, in [0, 20] (default 3)");
   cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
   cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;

@@ -263,7 +263,15 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
           if (cancelled() || NearForcedCurve(r.curves, s, pl)) continue;
           std::string why;
           ForcedCurve curve = Trace(base, o, s, &why);
-          if (curve.points.size() < 2) continue;  // the seed did not correct onto a curve
+          auto failed = [](const CurveEnd& e) {
+            return e.kind == CurveEndKind::kStartFailed || e.kind == CurveEndKind::kNoStart;
+          };
+          // The seed did not correct onto a curve (e.g. a sliding point of
+          // stick-slip orbits, no boundary of non-stop motion): counted, not drawn.
+          if (curve.points.size() < 2 || (failed(curve.ends.first) && failed(curve.ends.last))) {
+            ++r.seeds_not_traced;
+            continue;
+          }
           // A curve of stick-slip orbits often ends inside the rectangle where
           // the map stops being smooth (a sliding point): its ends say so.
           r.cut_curves += !why.empty();

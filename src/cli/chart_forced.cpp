@@ -56,6 +56,11 @@ Setup Configure(const Arguments& args) {
   s.o.flow.rtol = s.flow.rtol, s.o.flow.atol = s.flow.atol, s.o.flow.max_steps = s.flow.max_steps;
   s.o.iterate.flow = s.o.flow;
   s.o.max_step = args.Number("max_step", s.o.max_step);
+  const long lines = args.Integer("seed_lines", 3);
+  if (lines < 0 || lines > 20)
+    throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
+                     args.Source("seed_lines") + ": must be in [0, 20]");
+  s.o.seed_lines = static_cast<int>(lines);
   const long grid = args.Integer("grid", 40);
   if (grid != 0 && (grid < 2 || grid > 400))
     throw UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
@@ -89,6 +94,9 @@ void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::
     std::printf("; response grid %d x %d in %.2f s (%d failed)", r.grid.n1, r.grid.n2,
                 r.grid_seconds, r.grid.failed);
   std::printf("\n");
+  if (r.seeds_not_traced > 0)
+    std::printf("  %d seeds did not correct onto a curve (sliding points of stick-slip orbits)\n",
+                r.seeds_not_traced);
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ForcedCurve& c = r.curves[i];
     std::printf("  curve %zu %s m=%d: %zu points, %.2f s, from %s; ends %s\n", i + 1,

@@ -121,6 +121,7 @@ struct ForcedChartResult {
   ResponseGrid grid;
   int seed_runs = 0;   ///< one-parameter runs made for seeds
   int cut_curves = 0;  ///< curves with an end inside the rectangle (ends say why)
+  int seeds_not_traced = 0;  ///< seeds whose start failed both ways
   double seconds = 0, grid_seconds = 0;
 };
 
