@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include "chart/chart_trace.hpp"
 #include "chart/forced_curve.hpp"
@@ -57,16 +58,21 @@ std::vector<Seed> SeedsOnLine(const ForcedParams& base, const ForcedChartOptions
       bo.palc.ds_max = 0.02 * (hi - lo);
       bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
       bo.palc.cancelled = o.cancelled;
-      const ForcedBranch b = ContinueForced(line, axis, from, from == lo ? hi : lo,
-                                            f.points[0].x(), f.points[0].y(), bo);
+      const ForcedBranch b = ContinueForced(line, axis, from, from == lo ? hi : lo, f.points[0].x(),
+                                            f.points[0].y(), bo);
       ++*runs;
       for (const ForcedBranchRow& r : b.special) {
         Seed s;
-        if (r.label == ForcedLabel::kLP) s.kind = ForcedCurveKind::kLP;
-        else if (r.label == ForcedLabel::kPD) s.kind = ForcedCurveKind::kPD;
-        else if (r.label == ForcedLabel::kNS) s.kind = ForcedCurveKind::kNS;
-        else if (Sliding(r.label)) s.kind = ForcedCurveKind::kGR;
-        else continue;
+        if (r.label == ForcedLabel::kLP)
+          s.kind = ForcedCurveKind::kLP;
+        else if (r.label == ForcedLabel::kPD)
+          s.kind = ForcedCurveKind::kPD;
+        else if (r.label == ForcedLabel::kNS)
+          s.kind = ForcedCurveKind::kNS;
+        else if (Sliding(r.label))
+          s.kind = ForcedCurveKind::kGR;
+        else
+          continue;
         s.m = r.m, s.x0 = r.x0, s.xdot0 = r.xdot0;
         s.p1 = along1 ? r.p : c, s.p2 = along1 ? c : r.p;
         s.fixed = along1 ? 3 : 2;
@@ -85,10 +91,10 @@ bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const Seed& s, cons
   for (const ForcedCurve& c : curves) {
     if (c.kind != s.kind || c.m != s.m) continue;
     for (size_t i = 0; i < c.points.size(); ++i) {
-      const Eigen::Vector2d b = Eigen::Vector2d(c.points[i].p1, c.points[i].p2).cwiseQuotient(scale);
+      const Eigen::Vector2d b =
+          Eigen::Vector2d(c.points[i].p1, c.points[i].p2).cwiseQuotient(scale);
       const Eigen::Vector2d a =
-          i == 0 ? b
-                 : Eigen::Vector2d(c.points[i - 1].p1, c.points[i - 1].p2).cwiseQuotient(scale);
+          i == 0 ? b : Eigen::Vector2d(c.points[i - 1].p1, c.points[i - 1].p2).cwiseQuotient(scale);
       const Eigen::Vector2d d = b - a;
       const double t =
           d.squaredNorm() > 0 ? std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
@@ -117,9 +123,10 @@ CurveEnd GoOn(ForcedCurveProblem& problem, const TraceOptions& t, VectorXd u, Ei
     const int fixed = std::abs(d[2]) >= std::abs(d[3]) ? 3 : 2;
     const TraceResult r = TraceOneWay(problem, t, u, fixed, d);
     *evaluations += r.evaluations;
-    if (r.u.size() < 2) return r.ends.last.kind == CurveEndKind::kNone
-                                   ? CurveEnd{CurveEndKind::kStartFailed, "no step after rephasing"}
-                                   : r.ends.last;
+    if (r.u.size() < 2)
+      return r.ends.last.kind == CurveEndKind::kNone
+                 ? CurveEnd{CurveEndKind::kStartFailed, "no step after rephasing"}
+                 : r.ends.last;
     out->push_back({problem.phase(), r.u});
     if (!r.stopped) return r.ends.last;
     if (!bad->empty()) {
@@ -131,6 +138,60 @@ CurveEnd GoOn(ForcedCurveProblem& problem, const TraceOptions& t, VectorXd u, Ei
     dir = Eigen::Vector2d(u[2] - a[2], u[3] - a[3]);
   }
   return {CurveEndKind::kStopped, "section near the stick phase after every rephasing"};
+}
+
+// The rows of the traced stretches, each sampled at its section phase.
+std::vector<ForcedCurvePoint> Points(ForcedCurveProblem& problem, const std::vector<Stretch>& all,
+                                     ForcedCurveKind kind) {
+  std::vector<ForcedCurvePoint> points;
+  std::string why;
+  for (const Stretch& st : all) {
+    problem.set_phase(st.phase);
+    for (const VectorXd& u : st.u) {
+      ForcedCurveSample smp;
+      if (!problem.Sample(u, &smp, &why)) continue;
+      ForcedCurvePoint p;
+      p.p1 = u[2], p.p2 = u[3], p.x0 = u[0], p.xdot0 = u[1], p.phase = st.phase;
+      p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
+      p.x_min = smp.run.extremes.x_min, p.x_max = smp.run.extremes.x_max;
+      Multipliers(smp.run.jacobian, p.multipliers);
+      p.flag = kind == ForcedCurveKind::kNS ? p.multipliers[0].imag() == 0 : smp.crossing;
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+// GR: the margin (crossing or grazing) nearer zero at the seed u0.
+void ChooseMargin(ForcedCurveProblem& problem, const VectorXd& u0) {
+  ForcedCurveSample a, b;
+  std::string why;
+  problem.set_crossing(false);
+  const bool graze = problem.Sample(u0, &b, &why);
+  problem.set_crossing(true);
+  const bool cross = problem.Sample(u0, &a, &why);
+  problem.set_crossing(cross && (!graze || std::abs(a.margin) <= std::abs(b.margin)));
+}
+
+// The tracer's stop test: true near the section's stick phase (the section
+// moves on), or at an accepted point whose residual is not small (a Newton
+// update that shrank on a kink of the map, not on a root: *bad says so).
+std::function<bool(const VectorXd&)> StopTest(ForcedCurveProblem& problem, double v,
+                                              std::string* bad) {
+  const double near = Tolerances().forced_section_near_stick;
+  const double max_residual = Tolerances().forced_curve_residual;
+  return [&problem, v, near, max_residual, bad](const VectorXd& u) {
+    ForcedCurveSample smp;
+    std::string w;
+    if (!problem.Sample(u, &smp, &w)) return !(*bad = w).empty();
+    const double res = std::max({std::abs(smp.run.end.x - u[0]), std::abs(smp.run.end.xdot - u[1]),
+                                 std::abs(problem.TestOf(smp))});
+    if (!(res <= max_residual))
+      return !(*bad = "residual " + Num(res, 3) +
+                      " at an accepted point (the map is not smooth there)")
+                  .empty();
+    return std::abs(u[1] - v) < near;
+  };
 }
 
 ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const Seed& s,
@@ -147,36 +208,15 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
     *message = curve.ends.Text();
     return curve;
   }
-  if (s.kind == ForcedCurveKind::kGR) {  // the margin nearer zero at the seed
-    ForcedCurveSample a, b;
-    problem.set_crossing(false);
-    const bool graze = problem.Sample(u0, &b, &why);
-    problem.set_crossing(true);
-    const bool cross = problem.Sample(u0, &a, &why);
-    problem.set_crossing(cross && (!graze || std::abs(a.margin) <= std::abs(b.margin)));
-  }
+  if (s.kind == ForcedCurveKind::kGR) ChooseMargin(problem, u0);
   TraceOptions t;
   t.plane = o.plane.AsPlane();
   t.i1 = 2;
   t.max_step = o.max_step;
   t.tol = Tolerances::From(o.flow.rtol, o.flow.atol).ForcedCurveCorrector();
   t.cancelled = o.cancelled;
-  const double v = base.base.v, near = Tolerances().forced_section_near_stick;
-  // An accepted point whose residual is not small (a Newton update that
-  // shrank on a kink of the map, not on a root) ends the way there.
   std::string bad;
-  const double max_residual = Tolerances().forced_curve_residual;
-  t.stop = [&, v, near](const VectorXd& u) {
-    ForcedCurveSample smp;
-    std::string w;
-    VectorXd f;
-    Eigen::MatrixXd j;
-    if (!problem.Sample(u, &smp, &w)) return !(bad = w).empty();
-    const double res = std::max({std::abs(smp.run.end.x - u[0]), std::abs(smp.run.end.xdot - u[1]),
-                                 std::abs(problem.TestOf(smp))});
-    if (!(res <= max_residual)) return !(bad = "residual " + Num(res, 3) + " at an accepted point (the map is not smooth there)").empty();
-    return std::abs(u[1] - v) < near;
-  };
+  t.stop = StopTest(problem, base.base.v, &bad);
   TraceResult r = TraceBothWays(problem, t, u0, s.fixed);
   curve.ends = r.ends;
   // A way stopped on a bad point: the point dropped, the end says why (the
@@ -187,9 +227,11 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
     t.stop(u);
     return bad;
   };
-  if (r.ends.first.kind == CurveEndKind::kStopped && !r.u.empty() && !(bad_first = bad_at(r.u.front())).empty())
+  if (r.ends.first.kind == CurveEndKind::kStopped && !r.u.empty() &&
+      !(bad_first = bad_at(r.u.front())).empty())
     r.u.erase(r.u.begin()), curve.ends.first = {CurveEndKind::kStopped, bad_first};
-  if (r.ends.last.kind == CurveEndKind::kStopped && !r.u.empty() && !(bad_last = bad_at(r.u.back())).empty())
+  if (r.ends.last.kind == CurveEndKind::kStopped && !r.u.empty() &&
+      !(bad_last = bad_at(r.u.back())).empty())
     r.u.pop_back(), curve.ends.last = {CurveEndKind::kStopped, bad_last};
   bad.clear();
   curve.evaluations = r.evaluations;
@@ -198,12 +240,14 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   // TraceBothWays gives the back way reversed, then the forward way.
   if (r.ends.first.kind == CurveEndKind::kStopped && bad_first.empty() && r.u.size() >= 2) {
     const VectorXd &a = r.u[1], &b = r.u[0];
-    curve.ends.first = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &back, &curve.evaluations, &bad);
+    curve.ends.first =
+        GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &back, &curve.evaluations, &bad);
   }
   if (r.ends.last.kind == CurveEndKind::kStopped && bad_last.empty() && r.u.size() >= 2) {
     problem.set_phase(phase);
     const VectorXd &a = r.u[r.u.size() - 2], &b = r.u.back();
-    curve.ends.last = GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &fwd, &curve.evaluations, &bad);
+    curve.ends.last =
+        GoOn(problem, t, b, {b[2] - a[2], b[3] - a[3]}, &fwd, &curve.evaluations, &bad);
   }
   std::vector<Stretch> all;
   for (auto it = back.rbegin(); it != back.rend(); ++it)
@@ -216,20 +260,7 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
            e.kind == CurveEndKind::kStopped;
   };
   *message = cut(curve.ends.first) || cut(curve.ends.last) ? curve.ends.Text() : "";
-  for (const Stretch& st : all) {
-    problem.set_phase(st.phase);
-    for (const VectorXd& u : st.u) {
-      ForcedCurveSample smp;
-      if (!problem.Sample(u, &smp, &why)) continue;
-      ForcedCurvePoint p;
-      p.p1 = u[2], p.p2 = u[3], p.x0 = u[0], p.xdot0 = u[1], p.phase = st.phase;
-      p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
-      p.x_min = smp.run.extremes.x_min, p.x_max = smp.run.extremes.x_max;
-      Multipliers(smp.run.jacobian, p.multipliers);
-      p.flag = s.kind == ForcedCurveKind::kNS ? p.multipliers[0].imag() == 0 : smp.crossing;
-      curve.points.push_back(p);
-    }
-  }
+  curve.points = Points(problem, all, s.kind);
   curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return curve;
 }
@@ -245,7 +276,8 @@ ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions&
   return Trace(base, options, s, message);
 }
 
-void FindCodim2(const ForcedCurve& c, int index, std::vector<ForcedCodim2>* out);  // forced_codim2.cpp
+void FindCodim2(const ForcedCurve& c, int index,
+                std::vector<ForcedCodim2>* out);  // forced_codim2.cpp
 
 ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions& o) {
   const std::string e = o.ValidationError(base);

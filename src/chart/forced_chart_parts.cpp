@@ -111,9 +111,7 @@ ForcedCodim2 At(const ForcedCurvePoint& a, const ForcedCurvePoint& b, double ga,
 // an NS curve's turning real (tr M = +-2), SL where sticks or crossings change.
 // Each point is interpolated on the chord between two curve points.
 void FindCodim2(const ForcedCurve& c, int index, std::vector<ForcedCodim2>* out) {
-  auto det = [](const ForcedCurvePoint& p) {
-    return (p.multipliers[0] * p.multipliers[1]).real();
-  };
+  auto det = [](const ForcedCurvePoint& p) { return (p.multipliers[0] * p.multipliers[1]).real(); };
   auto add = [&](ForcedCodim2 x, ForcedCodim2Label l, const std::string& d) {
     x.label = l, x.on = c.kind, x.curve = index, x.description = d;
     out->push_back(x);
@@ -139,7 +137,8 @@ void FindCodim2(const ForcedCurve& c, int index, std::vector<ForcedCodim2>* out)
     if (c.kind == ForcedCurveKind::kNS && a.flag != b.flag) {
       const double ta = (a.multipliers[0] + a.multipliers[1]).real();
       const bool r1 = ta > 0;
-      const double ga = std::abs(ta) - 2, gb = std::abs((b.multipliers[0] + b.multipliers[1]).real()) - 2;
+      const double ga = std::abs(ta) - 2,
+                   gb = std::abs((b.multipliers[0] + b.multipliers[1]).real()) - 2;
       add(At(a, b, ga, gb), r1 ? ForcedCodim2Label::kR1 : ForcedCodim2Label::kR2,
           std::string("NS curve ends: the pair turns real at ") + (r1 ? "+1 (1:1)" : "-1 (1:2)"));
     }

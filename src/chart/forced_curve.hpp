@@ -28,7 +28,7 @@ namespace stickslip {
 
 // One evaluation of the orbit map and the test functions at u.
 struct ForcedCurveSample {
-  ForcedRun run;          // over m forcing periods, variational, with extremes
+  ForcedRun run;  // over m forcing periods, variational, with extremes
   double lp = 0, pd = 0, ns = 0;
   double margin = 0;      // the GR test (header)
   bool crossing = false;  // the margin is a crossing's (else a grazing's)

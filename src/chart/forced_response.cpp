@@ -45,9 +45,8 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
         const ForcedModel model(pl.At(base, g.x1[i], g.x2[j]));
         if (fresh) z = ForcedStart(model, 0, 0, model.v());
         z.t = 0;
-        const StroboscopicRun r =
-            IterateStroboscopic(model, ForcedStart(model, 0, z.x, z.xdot), bo.iterate, poll,
-                                o.max_amplitude);
+        const StroboscopicRun r = IterateStroboscopic(model, ForcedStart(model, 0, z.x, z.xdot),
+                                                      bo.iterate, poll, o.max_amplitude);
         if (r.status == LyapunovStatus::kCancelled) return;
         g.cells[k] = ClassifyAttractor(model, r, bo);
         g.lyapunov_err[k] = r.lyapunov_err;

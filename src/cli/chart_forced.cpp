@@ -76,12 +76,15 @@ Setup Configure(const Arguments& args) {
 std::string Describe(const Setup& s) {
   std::string d = "law=" + std::string(LawName(s.p.base.law));
   const ForcedPlane& pl = s.o.plane;
-  auto range = [](double a, double b) { return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]"; };
+  auto range = [](double a, double b) {
+    return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]";
+  };
   for (const auto& name : ParameterNames(s.p.base.law))
     if (name != ForcedAxisName(pl.p1) && name != ForcedAxisName(pl.p2))
       d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
   for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
-    if (a != pl.p1 && a != pl.p2) d += std::string(" ") + ForcedAxisName(a) + "=" + FormatNumber(GetAxis(s.p, a));
+    if (a != pl.p1 && a != pl.p2)
+      d += std::string(" ") + ForcedAxisName(a) + "=" + FormatNumber(GetAxis(s.p, a));
   return d + " " + ForcedAxisName(pl.p1) + "=" + range(pl.from1, pl.to1) + " " +
          ForcedAxisName(pl.p2) + "=" + range(pl.from2, pl.to2);
 }

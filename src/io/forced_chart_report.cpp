@@ -1,10 +1,10 @@
 // The forced chart's tables (stickslip/io/forced_chart_report.hpp).
+#include "stickslip/io/forced_chart_report.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <tuple>
-
-#include "stickslip/io/forced_chart_report.hpp"
 
 namespace stickslip {
 
@@ -78,22 +78,22 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g) {
 
 TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
                            const std::string& model) {
-  TsvTable t({ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "curve", "id", "m", "phase", "x0", "xdot0",
-              "sticks", "crossings", "x_min", "x_max", "mult1_re", "mult1_im", "mult2_re",
+  TsvTable t({ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "curve", "id", "m", "phase", "x0",
+              "xdot0", "sticks", "crossings", "x_min", "x_max", "mult1_re", "mult1_im", "mult2_re",
               "mult2_im", "flag"});
   Header(t, r, model);
   t.AddComment("seed runs: " + std::to_string(r.seed_runs) + " one-parameter runs");
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ForcedCurve& c = r.curves[i];
-    t.AddComment("curve " + std::to_string(i + 1) + " " + ForcedCurveName(c.kind) + " m = " +
-                 std::to_string(c.m) + ": " + std::to_string(c.points.size()) + " points, from " +
-                 c.seed + ", ends " + c.ends.Text());
+    t.AddComment("curve " + std::to_string(i + 1) + " " + ForcedCurveName(c.kind) +
+                 " m = " + std::to_string(c.m) + ": " + std::to_string(c.points.size()) +
+                 " points, from " + c.seed + ", ends " + c.ends.Text());
   }
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ForcedCurve& c = r.curves[i];
     for (const ForcedCurvePoint& p : c.points)
-      t.AddRow({p.p1, p.p2, ForcedCurveName(c.kind), static_cast<int>(i + 1), c.m, p.phase, p.x0, p.xdot0,
-                p.sticks, p.crossings, p.x_min, p.x_max, p.multipliers[0].real(),
+      t.AddRow({p.p1, p.p2, ForcedCurveName(c.kind), static_cast<int>(i + 1), c.m, p.phase, p.x0,
+                p.xdot0, p.sticks, p.crossings, p.x_min, p.x_max, p.multipliers[0].real(),
                 p.multipliers[0].imag(), p.multipliers[1].real(), p.multipliers[1].imag(),
                 p.flag ? 1 : 0});
   }
@@ -106,8 +106,8 @@ TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
   Header(t, r, model);
   t.AddComment("each point interpolated linearly between two curve points");
   for (const ForcedCodim2& p : r.codim2)
-    t.AddRow({ForcedCodim2Name(p.label), p.p1, p.p2, p.curve + 1, ForcedCurveName(p.on),
-              p.description});
+    t.AddRow(
+        {ForcedCodim2Name(p.label), p.p1, p.p2, p.curve + 1, ForcedCurveName(p.on), p.description});
   return t;
 }
 
@@ -127,8 +127,8 @@ TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl,
     if (!g.done[k]) continue;
     const Attractor& a = g.cells[k];
     const bool periodic = a.kind == AttractorKind::kPeriodic;
-    t.AddRow({g.x1[k % g.n1], g.x2[k / g.n1], c.class_of[k], KindName(a.kind),
-              periodic ? a.m : 0, a.sticks, Number(a.lyapunov), Number(g.lyapunov_err[k])});
+    t.AddRow({g.x1[k % g.n1], g.x2[k / g.n1], c.class_of[k], KindName(a.kind), periodic ? a.m : 0,
+              a.sticks, Number(a.lyapunov), Number(g.lyapunov_err[k])});
   }
   return t;
 }

@@ -13,10 +13,11 @@ namespace {
 
 // Periodic fills: a hue per m (1 blue, 2 green, 3 orange, 4 purple, 5+
 // ochre), darker for fewer sticks per period of the orbit (ColorBrewer).
-const char* const kPeriodic[5][4] = {
-    {"#08519c", "#3182bd", "#6baed6", "#bdd7e7"}, {"#006d2c", "#31a354", "#74c476", "#bae4b3"},
-    {"#a63603", "#e6550d", "#fd8d3c", "#fdbe85"}, {"#54278f", "#756bb1", "#9e9ac8", "#cbc9e2"},
-    {"#8c6d31", "#bd9e39", "#e7ba52", "#e7cb94"}};
+const char* const kPeriodic[5][4] = {{"#08519c", "#3182bd", "#6baed6", "#bdd7e7"},
+                                     {"#006d2c", "#31a354", "#74c476", "#bae4b3"},
+                                     {"#a63603", "#e6550d", "#fd8d3c", "#fdbe85"},
+                                     {"#54278f", "#756bb1", "#9e9ac8", "#cbc9e2"},
+                                     {"#8c6d31", "#bd9e39", "#e7ba52", "#e7cb94"}};
 
 std::string Fill(const ResponseGrid& g, const ResponseClasses& c, int cls) {
   switch (c.kinds[cls]) {
@@ -61,9 +62,9 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
     bool first = true;
     for (size_t i = 0; i < r.curves.size(); ++i) {
       if (r.curves[i].kind != st.kind) continue;
-      os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1
-         << " ? $2 : NaN) with lines lw " << st.width << " lc rgb '" << st.color << "' dt "
-         << st.dash << (first ? std::string(" title '") + st.title + "'" : " notitle");
+      os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
+         << st.width << " lc rgb '" << st.color << "' dt " << st.dash
+         << (first ? std::string(" title '") + st.title + "'" : " notitle");
       first = false;
     }
   }
@@ -100,9 +101,10 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   if (c.names.empty()) os << "0xffffff";
   os << "]\n";
   for (const ForcedCodim2& p : r.codim2)
-    os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << ","
-       << p.p2 << " offset 0.7,0.7 left front font ',12' noenhanced\n";
-  const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 : 0, dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 : 0;
+    os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << "," << p.p2
+       << " offset 0.7,0.7 left front font ',12' noenhanced\n";
+  const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 : 0,
+               dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 : 0;
   os << "plot ";
   if (g.n1 > 0)
     os << "'response.tsv' using 1:2:(" << dx << "):(" << dy
@@ -110,8 +112,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   else
     os << "NaN notitle";
   for (size_t i = 0; i < c.names.size(); ++i)
-    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '"
-       << Fill(g, c, static_cast<int>(i)) << "' title " << GnuplotQuoted(c.names[i]);
+    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(g, c, static_cast<int>(i))
+       << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
   if (!r.codim2.empty())
     os << ", \\\n     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle";

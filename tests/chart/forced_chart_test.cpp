@@ -2,16 +2,17 @@
 // orbit against his closed-form stop condition, a PD curve point against a
 // one-parameter run located at that curve point's second parameter, and the
 // response grid's cells against the orbits FindForcedOrbits finds there.
+#include "stickslip/chart/forced_chart.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "forced_reference.hpp"
-#include "stickslip/chart/forced_chart.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 #include "stickslip/forced/orbit_scan.hpp"
-#include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
 namespace {
@@ -42,9 +43,8 @@ ForcedChartOptions Options(ForcedAxis a1, double from1, double to1, ForcedAxis a
 TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
   const double mu = 0.3;
   for (const double w : {0.7, 1.5}) {  // one curve below and one above resonance
-    const ForcedChartOptions o =
-        Options(ForcedAxis::kOmega, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0, ForcedAxis::kForce, 0.05,
-                1.5);
+    const ForcedChartOptions o = Options(ForcedAxis::kOmega, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0,
+                                         ForcedAxis::kForce, 0.05, 1.5);
     // The non-stop orbit a little above the boundary, then the seed there.
     const double a = DenHartogStopForce(mu, w) * 1.02;
     const ForcedModel model(Coulomb(mu, mu, 0, 0, a, w));
@@ -65,10 +65,11 @@ TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
       EXPECT_TRUE(p.flag);  // the crossing margin
       worst = std::max(worst, std::abs(p.p2 - ref));
     }
-    std::printf("[ measured ] GR curve Omega in [%g, %g]: %zu points, %d evaluations, %.2f s, "
-                "max |A - A_DenHartog| = %.2e, ends %s\n",
-                c.points.front().p1, c.points.back().p1, c.points.size(), c.evaluations,
-                c.seconds, worst, c.ends.Text().c_str());
+    std::printf(
+        "[ measured ] GR curve Omega in [%g, %g]: %zu points, %d evaluations, %.2f s, "
+        "max |A - A_DenHartog| = %.2e, ends %s\n",
+        c.points.front().p1, c.points.back().p1, c.points.size(), c.evaluations, c.seconds, worst,
+        c.ends.Text().c_str());
   }
 }
 
@@ -121,9 +122,10 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
     const ForcedBranchRow* located = First(run, ForcedLabel::kPD);
     ASSERT_NE(located, nullptr) << "force = " << best->p2;
     EXPECT_NEAR(best->p1, located->p, 1e-8) << "force = " << best->p2;
-    std::printf("[ measured ] PD curve at force %.10f: Omega %.12f, one-parameter run %.12f "
-                "(difference %.1e)\n",
-                best->p2, best->p1, located->p, std::abs(best->p1 - located->p));
+    std::printf(
+        "[ measured ] PD curve at force %.10f: Omega %.12f, one-parameter run %.12f "
+        "(difference %.1e)\n",
+        best->p2, best->p1, located->p, std::abs(best->p1 - located->p));
     ++checked;
   }
   EXPECT_GE(checked, 1) << c.ends.Text();
@@ -143,8 +145,8 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
   for (int j = 0; j < g.n2; ++j)
     for (int i = 0; i < g.n1; ++i) {
       const Attractor& a = g.at(i, j);
-      const bool check = (a.kind == AttractorKind::kPeriodic && a.m <= 4) ||
-                         a.kind == AttractorKind::kChaotic;
+      const bool check =
+          (a.kind == AttractorKind::kPeriodic && a.m <= 4) || a.kind == AttractorKind::kChaotic;
       if (!check) continue;
       ForcedScanOptions so;
       so.orbit.flow = o.flow;

@@ -103,10 +103,10 @@ struct ForcedChartOptions {
   double max_step = 0.01;     ///< largest curve step, fraction of the rectangle
   double max_amplitude = 50;  ///< seed branches stop at |x| = max_amplitude
   bool curves = true;
-  int n1 = 48, n2 = 32;       ///< response grid; 0: none
-  LyapunovOptions iterate;    ///< per grid cell: transient, keep, flow
-  int max_period = 16;        ///< largest m the grid looks for
-  int threads = 2;            ///< grid rows in parallel
+  int n1 = 48, n2 = 32;             ///< response grid; 0: none
+  LyapunovOptions iterate;          ///< per grid cell: transient, keep, flow
+  int max_period = 16;              ///< largest m the grid looks for
+  int threads = 2;                  ///< grid rows in parallel
   std::function<bool()> cancelled;  ///< polled between points and cells
   ForcedChartOptions() { iterate.transient = 300, iterate.keep = 64, iterate.align = 20; }
   /// Empty if valid for base, else one line naming the offending value.
@@ -119,8 +119,8 @@ struct ForcedChartResult {
   std::vector<ForcedCurve> curves;
   std::vector<ForcedCodim2> codim2;
   ResponseGrid grid;
-  int seed_runs = 0;   ///< one-parameter runs made for seeds
-  int cut_curves = 0;  ///< curves with an end inside the rectangle (ends say why)
+  int seed_runs = 0;         ///< one-parameter runs made for seeds
+  int cut_curves = 0;        ///< curves with an end inside the rectangle (ends say why)
   int seeds_not_traced = 0;  ///< seeds whose start failed both ways
   double seconds = 0, grid_seconds = 0;
 };

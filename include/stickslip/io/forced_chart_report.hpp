@@ -38,8 +38,7 @@ TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
 /// (index into the comment lines' list), response (periodic, rest,
 /// quasi-periodic, chaotic, unbounded, failed), m, sticks (per m periods),
 /// lyapunov, lyapunov_err. Cells not reached (cancelled) are left out.
-TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl,
-                       const std::string& model);
+TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl, const std::string& model);
 
 /// Draws forced_chart.<ext> from response.tsv, curves.tsv and codim2.tsv.
 std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
