@@ -8,9 +8,11 @@
 
 #include "chart/chart_region_faces.hpp"
 #include "cli/about.hpp"
+#include "cli/chart_forced.hpp"
 #include "cli/app.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
+#include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/io/chart_report.hpp"
@@ -35,7 +37,15 @@ constexpr const char* kNotes =
     "Solver defaults of this app (the Solver group above states them): --max_steps 20000,\n"
     "and a first return is given up after time 50; a longer run is an orbit running away.\n"
     "Study files: model and solver keys at top level, this app's keys in [chart].\n"
-    "An interrupted or failed run writes the curves so far, marked partial.\n";
+    "An interrupted or failed run writes the curves so far, marked partial.\n"
+    "Forced oscillator (issue 21): --force A, --omega W, or an axis omega or force selects\n"
+    "it; the axes are two of omega, force, v, beta (defaults omega [0.5, 2] x force\n"
+    "[0.05, 1]). LP, PD, NS and GR curves (GR: where non-stop motion ends) are traced from\n"
+    "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default 40)\n"
+    "classifies N x N cells by the attractor reached (period m and sticks, quasi-periodic,\n"
+    "chaotic by the largest Lyapunov exponent; each row swept along --param). Outputs:\n"
+    "curves.tsv, codim2.tsv (R1, R2, LPPD, SL), response.tsv, forced_chart.gp and\n"
+    "forced_chart.png.\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 
 po::options_description AppOptions() {
@@ -52,7 +62,9 @@ po::options_description AppOptions() {
       "grid", cli::Value()->value_name("N"),
       "also classify an N x N grid of cell centres, a check of the region polygons: the "
       "summary counts the cells whose region differs from the polygon drawn there "
-      "(default 0: none)");
+      "(default 0: none); forced: the response grid, N x N cells (default 40, 0: none)")(
+      "seed_lines", cli::Value()->value_name("N"),
+      "forced: one-parameter runs per axis that seed the curves, in [0, 20] (default 3)");
   cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
   cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;
@@ -138,12 +150,15 @@ std::string DescribeChart(const ss::Params& base, const ss::Plane& pl) {
 }
 
 int Main(int argc, char** argv) {
-  const po::options_description desc =
-      cli::AppDescription(AppOptions(), ss::ChartOptions().orbit.flow);
+  po::options_description mine = AppOptions();
+  mine.add(cli::ForcingOptions());
+  const po::options_description desc = cli::AppDescription(mine, ss::ChartOptions().orbit.flow);
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "chart");
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_chart [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  if (cli::ForcedChartRequested(args))
+    return cli::RunForcedChart(args, kProg, cli::CommandLine(argc, argv));
   ss::Params base;
   ss::ChartOptions opts = Configure(args, &base);
   const ss::Plane& pl = opts.plane;

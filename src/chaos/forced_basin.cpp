@@ -44,10 +44,8 @@ std::string ForcedBasinOptions::ValidationError() const {
   return iterate.ValidationError();
 }
 
-namespace {
-
-Attractor Classify(const ForcedModel& model, const StroboscopicRun& r,
-                   const ForcedBasinOptions& o) {
+Attractor ClassifyAttractor(const ForcedModel& model, const StroboscopicRun& r,
+                            const ForcedBasinOptions& o) {
   const Tolerances tol = Tolerances::From(o.iterate.flow.rtol, o.iterate.flow.atol);
   Attractor a;
   a.lyapunov = r.lyapunov;
@@ -83,6 +81,8 @@ Attractor Classify(const ForcedModel& model, const StroboscopicRun& r,
                : AttractorKind::kUndecided;
   return a;
 }
+
+namespace {
 
 // The index of a in the list (merged as the header says), appended if new.
 int Merge(std::vector<Attractor>& list, const Attractor& a, double same) {
@@ -127,7 +127,7 @@ ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOpt
             model, ForcedStart(model, 0, s.x, s.xdot), o.iterate,
             [&stop] { return stop.load(std::memory_order_relaxed); }, o.max_amplitude);
         if (r.status == LyapunovStatus::kCancelled) break;
-        found[k] = Classify(model, r, o);
+        found[k] = ClassifyAttractor(model, r, o);
         if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
       } catch (const std::exception& ex) {
         found[k].kind = AttractorKind::kFailed;

@@ -133,6 +133,21 @@ struct Tolerances {
   /// times the rectangle's size (about sqrt of the map's error at rtol 1e-11
   /// ... 1e-14).
   double chart_difference = 1e-7;
+  /// Forced chart curves: central-difference step of the chord Jacobian,
+  /// times max(scale, |u|) (about cbrt(eps): truncation and rounding balanced).
+  double forced_curve_difference = 6e-6;
+  /// Forced chart: two curves of one kind and period within this fraction of
+  /// the rectangle are one (a seed found again on another seed line).
+  double forced_same_curve = 2e-3;
+  /// Forced chart curves: a section point within this of x' = v is near the
+  /// stick phase (the map is not smooth there): the section moves on.
+  double forced_section_near_stick = 1e-3;
+  /// Forced chart curves: an accepted point's residual (orbit and test
+  /// function, max norm) above this is no root: the way ends there.
+  double forced_curve_residual = 1e-8;
+  /// Forced chart curves: the corrector's tolerance on the scaled update,
+  /// max(1e-11, 10 rtol) (the differenced Jacobian's noise; 1e-12 stalled).
+  double ForcedCurveCorrector() const { return std::max(1e-11, 10 * rtol); }
   /// Basins: a start within on_belt * (1 + v) of x' = v is on the belt
   /// surface (rounding of the start's coordinates).
   double on_belt = 1e-12;

@@ -57,6 +57,12 @@ struct ForcedBasins {
   double seconds = 0;
 };
 
+/// The attractor one run's kept section points show (o.max_period and the
+/// tolerances of o.iterate.flow), as ClassifyForcedBasins decides per start:
+/// periodic within max_period (m, sticks per m periods), rest, chaotic, undecided.
+Attractor ClassifyAttractor(const ForcedModel& model, const StroboscopicRun& r,
+                            const ForcedBasinOptions& o);
+
 /// Throws InvalidArgument if the options are not valid.
 ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOptions& options);
 

@@ -1,0 +1,148 @@
+// The forced chart's plane, names, validation and codimension-two points
+// (stickslip/chart/forced_chart.hpp).
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "stickslip/chart/forced_chart.hpp"
+
+namespace stickslip {
+
+ForcedParams ForcedPlane::At(const ForcedParams& base, double x1, double x2) const {
+  ForcedParams q = base;
+  SetAxis(q, p1, x1);
+  SetAxis(q, p2, x2);
+  return q;
+}
+
+Plane ForcedPlane::AsPlane() const {
+  Plane pl;
+  pl.p1 = ForcedAxisName(p1), pl.p2 = ForcedAxisName(p2);
+  pl.from1 = from1, pl.to1 = to1, pl.from2 = from2, pl.to2 = to2;
+  return pl;
+}
+
+std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
+  if (p1 == p2) return std::string("the two axes are both ") + ForcedAxisName(p1);
+  for (double x : {from1, to1, from2, to2})
+    if (!std::isfinite(x)) return "a range end is not finite";
+  if (!(from1 < to1)) return "the first range is empty or inverted: from >= to";
+  if (!(from2 < to2)) return "the second range is empty or inverted: from2 >= to2";
+  constexpr int kEdge = 17;
+  for (int k = 0; k < kEdge; ++k) {
+    const double f = static_cast<double>(k) / (kEdge - 1);
+    const double pts[4][2] = {{from1 + f * width1(), from2},
+                              {from1 + f * width1(), to2},
+                              {from1, from2 + f * width2()},
+                              {to1, from2 + f * width2()}};
+    for (const auto& pt : pts) {
+      const std::string e = stickslip::ValidationError(At(base, pt[0], pt[1]));
+      if (!e.empty())
+        return std::string("at ") + ForcedAxisName(p1) + " = " + Num(pt[0], 6) + ", " +
+               ForcedAxisName(p2) + " = " + Num(pt[1], 6) + ": " + e;
+    }
+  }
+  return {};
+}
+
+const char* ForcedCurveName(ForcedCurveKind k) {
+  switch (k) {
+    case ForcedCurveKind::kLP:
+      return "LP";
+    case ForcedCurveKind::kPD:
+      return "PD";
+    case ForcedCurveKind::kNS:
+      return "NS";
+    case ForcedCurveKind::kGR:
+      return "GR";
+  }
+  return "?";
+}
+
+const char* ForcedCodim2Name(ForcedCodim2Label l) {
+  switch (l) {
+    case ForcedCodim2Label::kR1:
+      return "R1";
+    case ForcedCodim2Label::kR2:
+      return "R2";
+    case ForcedCodim2Label::kFoldFlip:
+      return "LPPD";
+    case ForcedCodim2Label::kSliding:
+      return "SL";
+  }
+  return "?";
+}
+
+std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const {
+  std::string e = stickslip::ValidationError(base);
+  if (!e.empty()) return e;
+  e = plane.ValidationError(base);
+  if (!e.empty()) return e;
+  e = flow.ValidationError();
+  if (!e.empty()) return e;
+  if (max_m < 1 || max_m > 8) return "max_m = " + std::to_string(max_m) + " must lie in [1, 8]";
+  if (seed_lines < 0 || seed_lines > 50)
+    return "seed_lines = " + std::to_string(seed_lines) + " must lie in [0, 50]";
+  if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= 0.5))
+    return "max_step = " + Num(max_step) + " must lie in [1/" + std::to_string(kMaxCurvePoints) +
+           ", 0.5]";
+  if (!(max_amplitude > 0)) return "max_amplitude must be > 0";
+  if ((n1 == 0) != (n2 == 0) || n1 < 0 || n2 < 0 || n1 > 1000 || n2 > 1000)
+    return "the response grid must be 0 x 0 (none) or within 1000 x 1000";
+  if (max_period < 1 || max_period > iterate.keep / 2)
+    return "max_period = " + std::to_string(max_period) + " must lie in [1, keep / 2]";
+  if (threads < 1) return "threads must be >= 1";
+  return iterate.ValidationError();
+}
+
+namespace {
+
+// Linear interpolation of the plane point where g changes sign between a and b.
+ForcedCodim2 At(const ForcedCurvePoint& a, const ForcedCurvePoint& b, double ga, double gb) {
+  const double s = ga / (ga - gb);
+  ForcedCodim2 c;
+  c.p1 = a.p1 + s * (b.p1 - a.p1), c.p2 = a.p2 + s * (b.p2 - a.p2);
+  return c;
+}
+
+}  // namespace
+
+// Sign changes along a curve (forced_chart.hpp): R1 and R2 where det M = 1 on
+// LP and PD (the other multiplier at +1 or -1), LPPD where det M = -1 on PD,
+// an NS curve's turning real (tr M = +-2), SL where sticks or crossings change.
+// Each point is interpolated on the chord between two curve points.
+void FindCodim2(const ForcedCurve& c, int index, std::vector<ForcedCodim2>* out) {
+  auto det = [](const ForcedCurvePoint& p) { return (p.multipliers[0] * p.multipliers[1]).real(); };
+  auto add = [&](ForcedCodim2 x, ForcedCodim2Label l, const std::string& d) {
+    x.label = l, x.on = c.kind, x.curve = index, x.description = d;
+    out->push_back(x);
+  };
+  for (size_t i = 1; i < c.points.size(); ++i) {
+    const ForcedCurvePoint &a = c.points[i - 1], &b = c.points[i];
+    if (c.kind != ForcedCurveKind::kGR && (a.sticks != b.sticks || a.crossings != b.crossings)) {
+      add(At(a, b, 1, -1), ForcedCodim2Label::kSliding,
+          std::string(ForcedCurveName(c.kind)) + " curve: sticks " + std::to_string(a.sticks) +
+              " -> " + std::to_string(b.sticks) + ", crossings " + std::to_string(a.crossings) +
+              " -> " + std::to_string(b.crossings) + " (a sliding bifurcation meets it)");
+      continue;
+    }
+    const double da = det(a) - 1, db = det(b) - 1;
+    if (c.kind == ForcedCurveKind::kLP && (da > 0) != (db > 0))
+      add(At(a, b, da, db), ForcedCodim2Label::kR1, "LP curve: both multipliers at +1 (1:1)");
+    if (c.kind == ForcedCurveKind::kPD && (da > 0) != (db > 0))
+      add(At(a, b, da, db), ForcedCodim2Label::kR2, "PD curve: both multipliers at -1 (1:2)");
+    const double fa = det(a) + 1, fb = det(b) + 1;
+    if (c.kind == ForcedCurveKind::kPD && (fa > 0) != (fb > 0))
+      add(At(a, b, fa, fb), ForcedCodim2Label::kFoldFlip,
+          "PD curve: the other multiplier at +1 (an LP curve meets it)");
+    if (c.kind == ForcedCurveKind::kNS && a.flag != b.flag) {
+      const double ta = (a.multipliers[0] + a.multipliers[1]).real();
+      const bool r1 = ta > 0;
+      const double ga = std::abs(ta) - 2,
+                   gb = std::abs((b.multipliers[0] + b.multipliers[1]).real()) - 2;
+      add(At(a, b, ga, gb), r1 ? ForcedCodim2Label::kR1 : ForcedCodim2Label::kR2,
+          std::string("NS curve ends: the pair turns real at ") + (r1 ? "+1 (1:1)" : "-1 (1:2)"));
+    }
+  }
+}
+
+}  // namespace stickslip

@@ -1,0 +1,130 @@
+#include "chart/forced_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+
+namespace stickslip {
+
+bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
+                                std::string* why) const {
+  const ForcedModel model(plane_.At(base_, u[2], u[3]));
+  std::vector<ForcedEvent> events;
+  ForcedRequest rq;
+  const double t0 = phase_ / model.omega();
+  rq.t_end = t0 + m_ * model.period();
+  rq.variational = true;
+  rq.events = &events;
+  s->run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, u[0], u[1]), rq);
+  if (s->run.status != ForcedStatus::kReached) {
+    *why = s->run.message;
+    return false;
+  }
+  const Mat2& M = s->run.jacobian;
+  s->lp = (M - Mat2::Identity()).determinant();
+  s->pd = (M + Mat2::Identity()).determinant();
+  s->ns = M.determinant() - 1;
+  // GR (header): arrivals at x' = v, a crossing's margin |force| - mu_s > 0, a
+  // stick-in's <= 0; without any, the distance of the velocity's extreme to v.
+  const double mu_s = model.static_limit();
+  double cross = HUGE_VAL, stick_time = 0, t_in = 0;
+  bool any = false;
+  for (const ForcedEvent& e : events) {
+    if (e.kind == ForcedEventKind::kCrossing || e.kind == ForcedEventKind::kStickIn) {
+      cross = std::min(cross, std::abs(model.StickForce(e.t, e.x)) - mu_s);
+      any = true;
+    }
+    if (e.kind == ForcedEventKind::kStickIn) t_in = e.t;
+    if (e.kind == ForcedEventKind::kStickOut) stick_time += e.t - t_in;
+  }
+  if (crossing_) {
+    s->crossing = true;
+    s->margin = any ? cross : HUGE_VAL;
+  } else {
+    s->crossing = false;
+    const ForcedExtremes& x = s->run.extremes;
+    const double gap = x.xdot_max <= model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
+    s->margin = s->run.sticks > 0 ? -stick_time : gap;
+  }
+  if (!std::isfinite(s->margin) && kind_ == ForcedCurveKind::kGR) {
+    *why = "the orbit does not reach x' = v (no crossing, no stick)";
+    return false;
+  }
+  return true;
+}
+
+bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
+  const ForcedModel model(plane_.At(base_, (*u)[2], (*u)[3]));
+  std::vector<ForcedPoint> samples;
+  ForcedRequest rq;
+  const double t0 = phase_ / model.omega();
+  rq.t_end = t0 + m_ * model.period();
+  rq.samples = &samples;
+  const ForcedRun run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, (*u)[0], (*u)[1]), rq);
+  if (run.status != ForcedStatus::kReached) return *why = run.message, false;
+  const ForcedPoint* best = nullptr;
+  for (const ForcedPoint& p : samples)
+    if (p.mode != Mode::kStick &&
+        (!best || std::abs(p.xdot - model.v()) > std::abs(best->xdot - model.v())))
+      best = &p;
+  if (!best) return *why = "the orbit sticks at every sample", false;
+  phase_ = std::fmod(best->t * model.omega(), 2 * M_PI);
+  (*u)[0] = best->x, (*u)[1] = best->xdot;
+  return true;
+}
+
+double ForcedCurveProblem::Test(const ForcedCurveSample& s) const {
+  switch (kind_) {
+    case ForcedCurveKind::kLP:
+      return s.lp;
+    case ForcedCurveKind::kPD:
+      return s.pd;
+    case ForcedCurveKind::kNS:
+      return s.ns;
+    case ForcedCurveKind::kGR:
+      return s.margin;
+  }
+  return 0;
+}
+
+std::string ForcedCurveProblem::DomainError(const Eigen::VectorXd& u) const {
+  if (!u.allFinite()) return "non-finite point";
+  const std::string e = ValidationError(plane_.At(base_, u[2], u[3]));
+  if (!e.empty()) return e;
+  if (std::max(std::abs(u[0]), std::abs(u[1])) > 1e3)
+    return "|x| or |x'| = " + Num(std::max(std::abs(u[0]), std::abs(u[1]))) + " beyond 1e3";
+  return {};
+}
+
+bool ForcedCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
+                                  Eigen::MatrixXd* jac, std::string* why) {
+  ForcedCurveSample s;
+  if (!Sample(u, &s, why)) return false;
+  f->resize(3);
+  *f << s.run.end.x - u[0], s.run.end.xdot - u[1], Test(s);
+  {
+    // Central differences, step ~ cbrt(eps) of each unknown's scale.
+    chord_.resize(3, 4);
+    const double scale[4] = {1, 1, plane_.width1(), plane_.width2()};
+    for (int k = 0; k < 4; ++k) {
+      const double d = Tolerances().forced_curve_difference * std::max(scale[k], std::abs(u[k]));
+      Eigen::VectorXd up = u, um = u;
+      up[k] += d, um[k] -= d;
+      ForcedCurveSample sp, sm;
+      if (!DomainError(um).empty()) um = u;
+      if (!Sample(up, &sp, why) || !Sample(um, &sm, why)) return false;
+      const double span = up[k] - um[k];
+      chord_(0, k) = (sp.run.end.x - sm.run.end.x) / span;
+      chord_(1, k) = (sp.run.end.xdot - sm.run.end.xdot) / span;
+      chord_(2, k) = (Test(sp) - Test(sm)) / span;
+    }
+  }
+  *jac = chord_;
+  jac->block(0, 0, 2, 2) = s.run.jacobian - Mat2::Identity();  // exact at every point
+  return true;
+}
+
+}  // namespace stickslip

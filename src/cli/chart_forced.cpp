@@ -1,0 +1,171 @@
+// ss_chart's forced run (chart_forced.hpp).
+#include "cli/chart_forced.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "cli/about.hpp"
+#include "cli/app.hpp"
+#include "stickslip/io/forced_chart_report.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+ForcedAxis Axis(const Arguments& args, const char* key, const char* fallback) {
+  const std::string name = args.Text(key, fallback);
+  for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
+    if (name == ForcedAxisName(a)) return a;
+  throw UsageError("invalid value '" + name + "' for " + args.Source(key) +
+                   ": the forced chart's axes are omega, force, v or beta");
+}
+
+struct Setup {
+  ForcedParams p;
+  ForcedChartOptions o;
+  FlowOptions flow;  // for the metadata
+};
+
+Setup Configure(const Arguments& args) {
+  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
+    if (args.Given(phys))
+      throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
+  Setup s;
+  s.p.base = UncheckedModelFromArguments(args);
+  s.p.force = args.Number("force", 0.3);
+  s.p.omega = args.Number("omega", 1);
+  ForcedPlane& pl = s.o.plane;
+  pl.p1 = Axis(args, "param", "omega");
+  pl.p2 = Axis(args, "param2", "force");
+  if (pl.p1 == pl.p2)
+    throw UsageError(args.Source("param2") + " = " + ForcedAxisName(pl.p2) + " equals --param");
+  const double range[4][2] = {{0.5, 2}, {0.05, 1}, {0, 0.5}, {0, 0.3}};  // ForcedAxis order
+  pl.from1 = args.Number("from", range[static_cast<int>(pl.p1)][0]);
+  pl.to1 = args.Number("to", range[static_cast<int>(pl.p1)][1]);
+  pl.from2 = args.Number("from2", range[static_cast<int>(pl.p2)][0]);
+  pl.to2 = args.Number("to2", range[static_cast<int>(pl.p2)][1]);
+  if (!(pl.from1 < pl.to1))
+    throw UsageError(args.Source("to") + " = " + args.Text("to", "") + " must exceed --from");
+  if (!(pl.from2 < pl.to2))
+    throw UsageError(args.Source("to2") + " = " + args.Text("to2", "") + " must exceed --from2");
+  const std::string e = pl.ValidationError(s.p);
+  if (!e.empty()) throw UsageError("invalid forced chart rectangle (--from .. --to2): " + e);
+  s.flow = FlowOptionsFromArguments(args);
+  if (!args.Given("rtol")) s.flow.rtol = s.o.flow.rtol;  // the forced flow's 1e-12
+  if (!args.Given("atol")) s.flow.atol = s.o.flow.atol;
+  s.o.flow.rtol = s.flow.rtol, s.o.flow.atol = s.flow.atol, s.o.flow.max_steps = s.flow.max_steps;
+  s.o.iterate.flow = s.o.flow;
+  s.o.max_step = args.Number("max_step", s.o.max_step);
+  const long lines = args.Integer("seed_lines", 3);
+  if (lines < 0 || lines > 20)
+    throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
+                     args.Source("seed_lines") + ": must be in [0, 20]");
+  s.o.seed_lines = static_cast<int>(lines);
+  const long grid = args.Integer("grid", 40);
+  if (grid != 0 && (grid < 2 || grid > 400))
+    throw UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
+                     ": must be 0 (no response grid) or in [2, 400]");
+  s.o.n1 = s.o.n2 = static_cast<int>(grid);
+  s.o.max_amplitude = args.Number("max_amplitude", 50);
+  if (!(s.o.max_amplitude > 0)) throw UsageError(args.Source("max_amplitude") + " must be > 0");
+  const std::string err = s.o.ValidationError(s.p);
+  if (!err.empty()) throw UsageError("invalid forced chart options: " + err);
+  return s;
+}
+
+std::string Describe(const Setup& s) {
+  std::string d = "law=" + std::string(LawName(s.p.base.law));
+  const ForcedPlane& pl = s.o.plane;
+  auto range = [](double a, double b) {
+    return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]";
+  };
+  for (const auto& name : ParameterNames(s.p.base.law))
+    if (name != ForcedAxisName(pl.p1) && name != ForcedAxisName(pl.p2))
+      d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
+  for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
+    if (a != pl.p1 && a != pl.p2)
+      d += std::string(" ") + ForcedAxisName(a) + "=" + FormatNumber(GetAxis(s.p, a));
+  return d + " " + ForcedAxisName(pl.p1) + "=" + range(pl.from1, pl.to1) + " " +
+         ForcedAxisName(pl.p2) + "=" + range(pl.from2, pl.to2);
+}
+
+void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::string& model,
+                  const std::string& dir, bool drawn, const std::string& figure) {
+  std::printf("ss_chart: forced oscillator, %s\n%zu curves from %d one-parameter runs in %.2f s",
+              model.c_str(), r.curves.size(), r.seed_runs, r.seconds);
+  if (r.grid.n1 > 0)
+    std::printf("; response grid %d x %d in %.2f s (%d failed)", r.grid.n1, r.grid.n2,
+                r.grid_seconds, r.grid.failed);
+  std::printf("\n");
+  if (r.seeds_not_traced > 0)
+    std::printf("  %d seeds did not correct onto a curve (sliding points of stick-slip orbits)\n",
+                r.seeds_not_traced);
+  for (size_t i = 0; i < r.curves.size(); ++i) {
+    const ForcedCurve& c = r.curves[i];
+    std::printf("  curve %zu %s m=%d: %zu points, %.2f s, from %s; ends %s\n", i + 1,
+                ForcedCurveName(c.kind), c.m, c.points.size(), c.seconds, c.seed.c_str(),
+                c.ends.Text().c_str());
+  }
+  for (const ForcedCodim2& p : r.codim2)
+    std::printf("  %-4s %s = %.8f  %s = %.8f  %s\n", ForcedCodim2Name(p.label),
+                ForcedAxisName(pl.p1), p.p1, ForcedAxisName(pl.p2), p.p2, p.description.c_str());
+  std::printf("wrote %s/curves.tsv, codim2.tsv, response.tsv, forced_chart.gp%s\n", dir.c_str(),
+              drawn ? (", " + figure).c_str() : "");
+}
+
+}  // namespace
+
+bool ForcedChartRequested(const Arguments& args) {
+  if (args.Given("force") || args.Given("omega")) return true;
+  for (const char* key : {"param", "param2"}) {
+    const std::string a = args.Text(key, "");
+    if (a == "omega" || a == "force") return true;
+  }
+  return false;
+}
+
+int RunForcedChart(const Arguments& args, const std::string& prog, const std::string& command) {
+  Setup s = Configure(args);
+  const ForcedPlane& pl = s.o.plane;
+  const FigureFormat format = FigureFormatOf(args);
+  const std::string figure = FigureFile("forced_chart", format);
+  AppRun app(prog, args, "chart",
+             {"curves.tsv", "codim2.tsv", "response.tsv", "forced_chart.gp", figure});
+  RunControl& run = app.run();
+  run.Phase("tracing curves, then the response grid");
+  s.o.cancelled = [&run] {
+    run.Heartbeat("");
+    return run.Cancelled();
+  };
+  const ForcedChartResult r = ForcedChart(s.p, s.o);
+  const std::string model = Describe(s);
+  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow);
+  for (auto& [key, value] : meta)  // the axes' base values are never used
+    if (key == ForcedAxisName(pl.p1) || key == ForcedAxisName(pl.p2)) value = "axis";
+  meta.push_back({"model", "forced oscillator, " + model});
+  meta.push_back({"grid", std::to_string(s.o.n1) + " x " + std::to_string(s.o.n2) + ", " +
+                              std::to_string(s.o.iterate.transient) + " transient and " +
+                              std::to_string(s.o.iterate.keep) + " kept forcing periods per cell"});
+  auto text = [&](TsvTable t) {
+    t.PrependMeta(meta);
+    return t.str();
+  };
+  run.Phase("writing");
+  app.out().Write("curves.tsv", text(ForcedCurvesTable(r, pl, model)));
+  app.out().Write("codim2.tsv", text(ForcedCodim2Table(r, pl, model)));
+  app.out().Write("response.tsv", text(ResponseTable(r, pl, model)));
+  const std::string title = FigureTitle(model, {ForcedAxisName(pl.p1), ForcedAxisName(pl.p2)}) +
+                            (r.status == ChartStatus::kCancelled ? " (partial)" : "");
+  app.out().Write("forced_chart.gp", ForcedChartScript(r, pl, title, format));
+  if (!app.Finish("forced_chart.gp", {figure}, {figure})) return kExitFailed;
+  PrintSummary(r, pl, model, app.out().dir(), app.gnuplot().ok(), figure);
+  std::string partial;
+  if (r.status == ChartStatus::kCancelled)
+    partial = "partial forced chart written (cut short: " + run.Reason() + ")";
+  else if (r.status != ChartStatus::kOk)
+    partial = std::string("partial forced chart written (") + ChartStatusName(r.status) +
+              "): " + r.message;
+  return app.ExitCode(partial);
+}
+
+}  // namespace stickslip::cli

@@ -1,0 +1,124 @@
+// forced_chart.gp (stickslip/io/forced_chart_report.hpp): the response grid
+// as filled cells (a raster: chaotic and quasi-periodic zones have no exact
+// boundary), the traced curves and the codimension-two points on top, the
+// key below the frame.
+#include <algorithm>
+#include <sstream>
+
+#include "stickslip/io/forced_chart_report.hpp"
+
+namespace stickslip {
+
+namespace {
+
+// Periodic fills: a hue per m (1 blue, 2 green, 3 orange, 4 purple, 5+
+// ochre), darker for fewer sticks per period of the orbit (ColorBrewer).
+const char* const kPeriodic[5][4] = {{"#08519c", "#3182bd", "#6baed6", "#bdd7e7"},
+                                     {"#006d2c", "#31a354", "#74c476", "#bae4b3"},
+                                     {"#a63603", "#e6550d", "#fd8d3c", "#fdbe85"},
+                                     {"#54278f", "#756bb1", "#9e9ac8", "#cbc9e2"},
+                                     {"#8c6d31", "#bd9e39", "#e7ba52", "#e7cb94"}};
+
+std::string Fill(const ResponseGrid& g, const ResponseClasses& c, int cls) {
+  switch (c.kinds[cls]) {
+    case AttractorKind::kPeriodic: {
+      // Shades of the m's hue in the classes' order (fewer sticks darker).
+      const std::string m = c.names[cls].substr(0, c.names[cls].find(','));
+      int m_index = 0, shade = 0;
+      for (int k = 0; k < cls; ++k) shade += c.names[k].rfind(m, 0) == 0;
+      for (int k = 1; k <= 5; ++k)
+        if (m == "m = " + std::to_string(k) || (k == 5 && m.rfind("m >=", 0) == 0)) m_index = k - 1;
+      return kPeriodic[m_index][std::min(shade, 3)];
+    }
+    case AttractorKind::kRest:
+      return "#ffffff";
+    case AttractorKind::kUndecided:
+      return "#d9d9d9";
+    case AttractorKind::kChaotic:
+      return "#404040";
+    case AttractorKind::kUnbounded:
+      return "#fbb4ae";
+    case AttractorKind::kFailed:
+      return "#ff0000";
+  }
+  return "#ffffff";
+}
+
+void CurveLines(std::ostream& os, const ForcedChartResult& r) {
+  struct Style {
+    ForcedCurveKind kind;
+    const char* color;
+    const char* dash;
+    double width;
+    const char* title;
+  };
+  const Style styles[] = {
+      {ForcedCurveKind::kGR, "#c00000", "1", 3.5, "GR, non-stop motion ends"},
+      {ForcedCurveKind::kLP, "black", "1", 2.5, "LP, fold"},
+      {ForcedCurveKind::kPD, "black", "(8,4)", 2.5, "PD, period doubling"},
+      {ForcedCurveKind::kNS, "#ff00ff", "(10,4,2,4)", 2.5, "NS, Neimark-Sacker"},
+  };
+  for (const Style& st : styles) {
+    bool first = true;
+    for (size_t i = 0; i < r.curves.size(); ++i) {
+      if (r.curves[i].kind != st.kind) continue;
+      os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
+         << st.width << " lc rgb '" << st.color << "' dt " << st.dash
+         << (first ? std::string(" title '") + st.title + "'" : " notitle");
+      first = false;
+    }
+  }
+}
+
+}  // namespace
+
+std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
+                              const std::string& title, FigureFormat format) {
+  const ResponseGrid& g = r.grid;
+  const ResponseClasses c = ClassifyResponses(g);
+  std::ostringstream os;
+  os.precision(17);
+  os << "# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.\n"
+     << "# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,\n"
+     << "# LP black, PD black dashed, NS magenta; codim2.tsv: black dots with labels.\n"
+     << "if (!exists('suffix')) suffix = ''\n"
+     << FigureTerminal(format, 1000, 860) << "set output '" << FigureFile("forced_chart", format)
+     << "'.suffix\n"
+     << "set datafile separator '\\t'\nset datafile columnheaders\nset encoding utf8\n"
+     << "set xlabel " << GnuplotQuoted(ParameterAxisLabel(ForcedAxisName(pl.p1))) << "\n"
+     << "set ylabel " << GnuplotQuoted(ParameterAxisLabel(ForcedAxisName(pl.p2))) << "\n"
+     << "set xrange [" << pl.from1 << ":" << pl.to1 << "]\n"
+     << "set yrange [" << pl.from2 << ":" << pl.to2 << "]\n"
+     << "set title \"" << title << "\"\n"
+     << "set lmargin at screen 0.1\nset rmargin at screen 0.97\n"
+     << "set tmargin at screen 0.93\nset bmargin at screen 0.26\n"
+     << "set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 "
+        "samplen 3 font ',11'\n"
+     << "set tics out nomirror front\nset border 3 front\n";
+  os << "array C[" << std::max<size_t>(1, c.names.size()) << "] = [";
+  for (size_t i = 0; i < c.names.size(); ++i)
+    os << (i ? ", " : "") << "0x" << Fill(g, c, static_cast<int>(i)).substr(1);
+  if (c.names.empty()) os << "0xffffff";
+  os << "]\n";
+  for (const ForcedCodim2& p : r.codim2)
+    os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << "," << p.p2
+       << " offset 0.7,0.7 left front font ',12' noenhanced\n";
+  const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 : 0,
+               dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 : 0;
+  os << "plot ";
+  if (g.n1 > 0)
+    os << "'response.tsv' using 1:2:(" << dx << "):(" << dy
+       << "):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle";
+  else
+    os << "NaN notitle";
+  for (size_t i = 0; i < c.names.size(); ++i)
+    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(g, c, static_cast<int>(i))
+       << "' title " << GnuplotQuoted(c.names[i]);
+  CurveLines(os, r);
+  if (!r.codim2.empty())
+    os << ", \\\n     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle";
+  os << "\nunset output\n";
+  return os.str();
+}
+
+}  // namespace stickslip

@@ -1,0 +1,175 @@
+// The forced chart (issue 21 item 3): the GR curve of Den Hartog's non-stop
+// orbit against his closed-form stop condition, a PD curve point against a
+// one-parameter run located at that curve point's second parameter, and the
+// response grid's cells against the orbits FindForcedOrbits finds there.
+#include "stickslip/chart/forced_chart.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "forced_reference.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/orbit.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+
+namespace stickslip {
+namespace {
+
+using forced_reference::Coulomb;
+
+// Den Hartog (1931), v = 0, beta = 0, mu_s = mu_k = mu: on the non-stop orbit
+// a reversal at x = -X has V cos(phi) = -X and V sin(phi) = mu U
+// (V = A / (1 - W^2), U = sin(pi/W) / (W (1 + cos(pi/W)))), so the slip
+// leaving it starts with x'' = X W^2 - mu: the motion goes on without a stop
+// while X W^2 > mu. With X = sqrt(V^2 - (mu U)^2) the boundary is
+//   A = mu |1 - W^2| sqrt(U^2 + W^-4).
+double DenHartogStopForce(double mu, double w) {
+  const double U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
+  return mu * std::abs(1 - w * w) * std::sqrt(U * U + 1 / (w * w * w * w));
+}
+
+ForcedChartOptions Options(ForcedAxis a1, double from1, double to1, ForcedAxis a2, double from2,
+                           double to2) {
+  ForcedChartOptions o;
+  o.plane.p1 = a1, o.plane.p2 = a2;
+  o.plane.from1 = from1, o.plane.to1 = to1, o.plane.from2 = from2, o.plane.to2 = to2;
+  o.flow.rtol = o.flow.atol = 1e-13;
+  o.max_step = 0.02;
+  return o;
+}
+
+TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
+  const double mu = 0.3;
+  for (const double w : {0.7, 1.5}) {  // one curve below and one above resonance
+    const ForcedChartOptions o = Options(ForcedAxis::kOmega, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0,
+                                         ForcedAxis::kForce, 0.05, 1.5);
+    // The non-stop orbit a little above the boundary, then the seed there.
+    const double a = DenHartogStopForce(mu, w) * 1.02;
+    const ForcedModel model(Coulomb(mu, mu, 0, 0, a, w));
+    ForcedOrbitOptions oo;
+    oo.flow = o.flow;
+    const ForcedOrbit orbit = ShootStroboscopic(model, a / (1 - w * w), 0.01, 1, oo);
+    ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+    ASSERT_EQ(orbit.sticks, 0);
+    std::string why;
+    const ForcedCurve c = TraceForcedCurve(Coulomb(mu, mu, 0, 0, a, w), o, ForcedCurveKind::kGR, 1,
+                                           orbit.start.x, orbit.start.xdot, w, a, &why);
+    EXPECT_EQ(why, "") << c.ends.Text();
+    ASSERT_GT(c.points.size(), 10u);
+    double worst = 0;
+    for (const ForcedCurvePoint& p : c.points) {
+      const double ref = DenHartogStopForce(mu, p.p1);
+      EXPECT_NEAR(p.p2, ref, 1e-8 * std::max(1.0, ref)) << "Omega = " << p.p1;
+      EXPECT_TRUE(p.flag);  // the crossing margin
+      worst = std::max(worst, std::abs(p.p2 - ref));
+    }
+    std::printf(
+        "[ measured ] GR curve Omega in [%g, %g]: %zu points, %d evaluations, %.2f s, "
+        "max |A - A_DenHartog| = %.2e, ends %s\n",
+        c.points.front().p1, c.points.back().p1, c.points.size(), c.evaluations, c.seconds, worst,
+        c.ends.Text().c_str());
+  }
+}
+
+// The stribeck_forced study's scene (studies/stribeck_forced.ini).
+ForcedParams Stribeck(double a, double w) {
+  ForcedParams p;
+  p.base.law = LawKind::kStribeck;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = 0.25;
+  p.force = a, p.omega = w;
+  return p;
+}
+
+// The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
+ForcedBranch OmegaRun(double a) {
+  const ForcedModel model(Stribeck(a, 0.8));
+  ForcedRequest rq;
+  rq.t_end = 200 * model.period();
+  const ForcedRun tr = ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, 0, 0.25), rq);
+  ForcedBranchOptions o;
+  o.flow.rtol = o.flow.atol = 1e-13;
+  o.palc.ds = o.palc.ds_max = 0.006;
+  return ContinueForced(Stribeck(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x, tr.end.xdot, o);
+}
+
+const ForcedBranchRow* First(const ForcedBranch& b, ForcedLabel l) {
+  for (const ForcedBranchRow& r : b.special)
+    if (r.label == l) return &r;
+  return nullptr;
+}
+
+// A PD curve point at a force other than its seed's, against a one-parameter
+// run in Omega at exactly that force (its own start, branch and bisection).
+TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
+  const ForcedBranch seed_run = OmegaRun(0.3);
+  const ForcedBranchRow* pd = First(seed_run, ForcedLabel::kPD);
+  ASSERT_NE(pd, nullptr) << ForcedBranchStatusName(seed_run.status);
+  const ForcedChartOptions o =
+      Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
+  std::string why;
+  const ForcedCurve c = TraceForcedCurve(Stribeck(0.3, pd->p), o, ForcedCurveKind::kPD, pd->m,
+                                         pd->x0, pd->xdot0, pd->p, 0.3, &why);
+  ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
+  int checked = 0;
+  for (const double target : {0.27, 0.33}) {
+    const ForcedCurvePoint* best = &c.points[0];
+    for (const ForcedCurvePoint& p : c.points)
+      if (std::abs(p.p2 - target) < std::abs(best->p2 - target)) best = &p;
+    if (std::abs(best->p2 - target) > 0.01) continue;  // the curve ends before
+    const ForcedBranch run = OmegaRun(best->p2);
+    const ForcedBranchRow* located = First(run, ForcedLabel::kPD);
+    ASSERT_NE(located, nullptr) << "force = " << best->p2;
+    EXPECT_NEAR(best->p1, located->p, 1e-8) << "force = " << best->p2;
+    std::printf(
+        "[ measured ] PD curve at force %.10f: Omega %.12f, one-parameter run %.12f "
+        "(difference %.1e)\n",
+        best->p2, best->p1, located->p, std::abs(best->p1 - located->p));
+    ++checked;
+  }
+  EXPECT_GE(checked, 1) << c.ends.Text();
+}
+
+// Response cells against FindForcedOrbits at the cell centre: a periodic cell
+// (m <= 4) has a stable orbit of that m and stick count there; a chaotic
+// cell has no stable orbit of m <= 4.
+TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
+  ForcedChartOptions o = Options(ForcedAxis::kOmega, 0.56, 1.0, ForcedAxis::kForce, 0.1, 0.5);
+  o.flow.rtol = o.flow.atol = 1e-12;
+  o.iterate.flow = o.flow;
+  o.n1 = 8, o.n2 = 5;
+  bool cancelled = false;
+  const ResponseGrid g = ForcedResponseGrid(Stribeck(0.3, 0.8), o, &cancelled);
+  int periodic = 0, chaotic = 0;
+  for (int j = 0; j < g.n2; ++j)
+    for (int i = 0; i < g.n1; ++i) {
+      const Attractor& a = g.at(i, j);
+      const bool check =
+          (a.kind == AttractorKind::kPeriodic && a.m <= 4) || a.kind == AttractorKind::kChaotic;
+      if (!check) continue;
+      ForcedScanOptions so;
+      so.orbit.flow = o.flow;
+      so.max_m = 4, so.max_sticks = 6;
+      const ForcedOrbits f = FindForcedOrbits(ForcedModel(Stribeck(g.x2[j], g.x1[i])), so);
+      bool match = false, any_stable = false;
+      for (const ForcedScanOrbit& s : f.orbits) {
+        any_stable = any_stable || s.orbit.stable;
+        match = match || (s.orbit.stable && s.orbit.m == a.m && s.orbit.sticks == a.sticks);
+      }
+      if (a.kind == AttractorKind::kPeriodic) {
+        EXPECT_TRUE(match) << "Omega = " << g.x1[i] << ", force = " << g.x2[j] << ": m = " << a.m
+                           << ", " << a.sticks << " sticks";
+        ++periodic;
+      } else {
+        EXPECT_FALSE(any_stable) << "chaotic cell Omega = " << g.x1[i] << ", force = " << g.x2[j];
+        ++chaotic;
+      }
+    }
+  std::printf("[ measured ] %d periodic and %d chaotic cells of %d x %d checked\n", periodic,
+              chaotic, g.n1, g.n2);
+  EXPECT_GT(periodic, 10);
+}
+
+}  // namespace
+}  // namespace stickslip
