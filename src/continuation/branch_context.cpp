@@ -206,7 +206,7 @@ void BranchContext::Enter(Phase phase) {
 ContinuationResult BranchContext::Finish() {
   Enter(phase_);
   res_.counts.integrator_steps = finder_.flow().total_steps();
-  return res_;
+  return std::move(res_);  // no copy of a long result (a cancel returns at once)
 }
 
 }  // namespace stickslip

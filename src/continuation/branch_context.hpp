@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "stickslip/continuation/continuation.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip {
@@ -109,6 +109,8 @@ class BranchContext {
   // Records the first failure; later ones are dropped.
   void Fail(const std::string& where, const std::string& what);
   void Add(const BranchPoint& pt);
+  // Room for n more points: one reallocation instead of many.
+  void Reserve(size_t n) { res_.points.reserve(res_.points.size() + n); }
   void AddSpecial(const SpecialPoint& sp) { res_.special.push_back(sp); }
   // A periodic point of the current branch; a: pure slip's section amplitude.
   BranchPoint FromOrbit(double p, const Orbit& o, double a) const;

@@ -114,6 +114,7 @@ ContinuationResult Run(BranchContext& ctx) {
   // Steady sliding follows (or comes first, if nothing starts at `from`). It is
   // exact and already computed: kept even in a partial result, with its Hopf
   // points.
+  ctx.Reserve(eq_rows.size());
   for (auto& pt : eq_rows) {
     pt.branch = eq_id;
     ctx.Add(pt);

@@ -43,7 +43,9 @@ std::vector<BranchPoint> TraceEquilibrium(BranchContext& ctx) {
   const int n = static_cast<int>(std::ceil(1.0 / o.max_step));
   std::vector<BranchPoint> rows;
   double p_prev = o.from, d_prev = HopfDamping(ctx.At(o.from));
-  for (int i = 0; i <= n; ++i) {
+  rows.reserve(n + 9);  // the grid and a few Hopf points: no reallocation
+  // Polls the cancel hook per row: a fine grid (1 / max_step rows) takes long.
+  for (int i = 0; i <= n && !ctx.Stop(); ++i) {
     const double p = i == n ? o.to : o.from + (o.to - o.from) * i / n;
     const double d = HopfDamping(ctx.At(p));
     if (i > 0 && d_prev * d < 0) {
