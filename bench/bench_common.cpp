@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -142,6 +143,54 @@ double TimeProcess(const std::vector<std::string>& args, int* status) {
   const double t = Now() - t0;
   *status = WIFEXITED(ws) ? WEXITSTATUS(ws) : -1;
   return t;
+}
+
+// CPU time (user + system) of one run of argv[0], output to /dev/null.
+double ProcessCpu(const std::vector<std::string>& args, int* status) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) {
+    *status = -1;
+    return kNan;
+  }
+  int ws = 0;
+  struct rusage ru {};
+  wait4(pid, &ws, 0, &ru);
+  *status = WIFEXITED(ws) ? WEXITSTATUS(ws) : -1;
+  auto sec = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
+  return sec(ru.ru_utime) + sec(ru.ru_stime);
+}
+
+DenseTimes TimeDenseBranch(int reps) {
+  DenseTimes d;
+  char dir[] = "/tmp/ss_bench_dense.XXXXXX";
+  if (!mkdtemp(dir)) return d;
+  std::vector<double> taylor, cvode, ratio;
+  for (int i = 0; i < reps; ++i) {
+    double t[2];
+    int status[2] = {0, 0};
+    for (int k = 0; k < 2; ++k)
+      t[k] = ProcessCpu({SS_CONTINUE_PATH, "--max_step", "1e-3", "--no_plots", "--no_estimates",
+                         "--integrator", k == 0 ? "taylor" : "cvode", "--out", dir},
+                        &status[k]);
+    if (status[0] != 0 || status[1] != 0) continue;
+    taylor.push_back(t[0]);
+    cvode.push_back(t[1]);
+    ratio.push_back(t[1] / t[0]);
+  }
+  const int rc = std::system(("rm -rf '" + std::string(dir) + "'").c_str());
+  (void)rc;
+  if (taylor.empty()) return d;
+  d = {Median(taylor), Median(cvode), Median(ratio), static_cast<int>(taylor.size())};
+  return d;
 }
 
 // Median wall times of the ss_continue process (default study: seed set,

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/continuation/continuation.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace ssbench {
@@ -87,6 +87,14 @@ struct ProcessTimes {
   std::string note;
 };
 ProcessTimes TimeSsContinue(int reps);
+// The dense branch (issue 19): ss_continue --max_step 1e-3 --no_plots --no_estimates with
+// Taylor and with --integrator cvode, interleaved; medians of the child's CPU time (user +
+// system, wait4) and of the per-run ratio cvode / taylor.
+struct DenseTimes {
+  double taylor = kNan, cvode = kNan, ratio = kNan;
+  int runs = 0;
+};
+DenseTimes TimeDenseBranch(int reps);
 
 std::string Sci(double x, int digits = 1);
 std::string Ms(double s);

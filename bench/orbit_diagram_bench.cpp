@@ -2,7 +2,8 @@
 // parameter values x (500 + 200) forcing periods in <= 3 s on 2 cores), on the
 // forced coulomb belt (one stick per period at Omega = 0.8) and on the chaotic
 // Stribeck setting of tests/chaos/lyapunov_test.cpp. Wall time and process
-// CPU time of ComputeOrbitDiagram, per direction count.
+// CPU time of ComputeOrbitDiagram, per direction count, and one direction cut
+// into 2 pieces (c2: OrbitDiagramOptions::chunks, each piece from rest).
 //   build/bench/orbit_diagram_bench [n]
 #include <cstdio>
 #include <cstdlib>
@@ -20,18 +21,20 @@ double Seconds(clockid_t id) {
   return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-void Measure(const char* name, const ForcedParams& p, double from, double to, int n, bool both) {
+void Measure(const char* name, const ForcedParams& p, double from, double to, int n, bool both,
+             int chunks = 1) {
   OrbitDiagramOptions o;
   o.from = from, o.to = to, o.n = n;
   o.down = both;
+  o.chunks = chunks;
   const double w0 = Seconds(CLOCK_MONOTONIC), c0 = Seconds(CLOCK_PROCESS_CPUTIME_ID);
   const OrbitDiagram d = ComputeOrbitDiagram(p, o);
   const double wall = Seconds(CLOCK_MONOTONIC) - w0, cpu = Seconds(CLOCK_PROCESS_CPUTIME_ID) - c0;
   const double periods =
       static_cast<double>(d.columns.size()) * (o.iterate.transient + o.iterate.keep);
-  std::printf("%-34s %-5s %6zu runs  wall %6.2f s  cpu %6.2f s  %5.2f us cpu/period  failed %d\n",
-              name, both ? "both" : "up", d.columns.size(), wall, cpu, cpu * 1e6 / periods,
-              d.failed);
+  std::printf(
+      "%-34s %-5s c%d %6zu runs  wall %6.2f s  cpu %6.2f s  %5.2f us cpu/period  failed %d\n", name,
+      both ? "both" : "up", chunks, d.columns.size(), wall, cpu, cpu * 1e6 / periods, d.failed);
 }
 
 }  // namespace
@@ -48,7 +51,9 @@ int main(int argc, char** argv) {
   std::printf("orbit diagram, %d values x (500 + 200) forcing periods, rtol = atol = 1e-12\n", n);
   Measure("coulomb belt, omega 0.5..2.5", belt, 0.5, 2.5, n, false);
   Measure("coulomb belt, omega 0.5..2.5", belt, 0.5, 2.5, n, true);
+  Measure("coulomb belt, omega 0.5..2.5", belt, 0.5, 2.5, n, false, 2);
   Measure("stribeck (chaotic), omega 0.2..1.2", chaotic, 0.2, 1.2, n, false);
   Measure("stribeck (chaotic), omega 0.2..1.2", chaotic, 0.2, 1.2, n, true);
+  Measure("stribeck (chaotic), omega 0.2..1.2", chaotic, 0.2, 1.2, n, false, 2);
   return 0;
 }

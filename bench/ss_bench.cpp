@@ -36,11 +36,12 @@
 
 #include "bench_common.hpp"
 #include "brute_force.hpp"
+#include "cli/gnuplot.hpp"
+#include "integrate/taylor_stepper.hpp"
 #include "reference/reference_orbit.hpp"
 #include "regularised.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/errors.hpp"
-#include "cli/gnuplot.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace {
@@ -63,7 +64,8 @@ OrbitGoal SingleOrbit(bool quick) {
   const double t_ref = static_cast<double>(ss::reference::StickSlip(p).period);
   std::printf(
       "\none stick-slip orbit of the seed set at v = 0.25 (atol = rtol/100; "
-      "median of repeated calls):\n  integrator  rtol      us/orbit  steps  period error\n");
+      "median of repeated calls; order = Taylor order per step):\n  integrator  rtol      "
+      "us/orbit  steps  order  period error\n");
   for (ss::Integrator in : {ss::Integrator::kTaylor, ss::Integrator::kCvode})
     for (double rtol : {1e-6, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14}) {
       if (in == ss::Integrator::kCvode && rtol < 1e-12) continue;  // CVODE stalls below ~1e-13
@@ -84,8 +86,10 @@ OrbitGoal SingleOrbit(bool quick) {
         us.push_back((Now() - t0) / n * 1e6);
       }
       const double err = std::abs(r.orbit.period - t_ref), t_us = Median(us);
-      std::printf("  %-10s  %-8.0e  %8.2f  %5ld  %.1e\n",
-                  in == ss::Integrator::kTaylor ? "taylor" : "cvode-adams", rtol, t_us, steps, err);
+      const bool taylor = in == ss::Integrator::kTaylor;
+      std::printf("  %-10s  %-8.0e  %8.2f  %5ld  %5s  %.1e\n", taylor ? "taylor" : "cvode-adams",
+                  rtol, t_us, steps, taylor ? std::to_string(ss::OrderFor(rtol)).c_str() : "-",
+                  err);
       if (err < 1e-12 && !(t_us >= goal.us))
         goal = {t_us, rtol, err, in == ss::Integrator::kTaylor ? "Taylor" : "CVODE Adams"};
     }
@@ -184,6 +188,7 @@ int Main(int argc, char** argv) {
   for (double eps : epss)
     rows.push_back(RunRegularised(ref, eps, RegularisedRtol(eps), slow_reps, max_reps));
   const ProcessTimes pt = TimeSsContinue(quick ? 3 : 7);
+  const DenseTimes dense = TimeDenseBranch(quick ? 3 : 7);
   Speedups(rows);
   const OrbitGoal orbit_goal = SingleOrbit(quick);
   int default_points = 0;
@@ -208,9 +213,9 @@ int Main(int argc, char** argv) {
       pt.note.c_str());
   PrintTargets(rows, pt);
   std::printf(
-      "  [%s] one stick-slip orbit at period error < 1e-12 in <= 5 us: %s us (%s, rtol %s, "
+      "  [%s] one stick-slip orbit at period error < 1e-12 in <= 3 us: %s us (%s, rtol %s, "
       "error %s)\n",
-      orbit_goal.us <= 5 ? "met" : "NOT met", Ratio(orbit_goal.us).c_str(), orbit_goal.integrator,
+      orbit_goal.us <= 3 ? "met" : "NOT met", Ratio(orbit_goal.us).c_str(), orbit_goal.integrator,
       Sci(orbit_goal.rtol, 0).c_str(), Sci(orbit_goal.err).c_str());
   std::printf(
       "  [%s] Continue() on the seed branch at the defaults in <= 3 ms: %s ms wall, %s ms CPU "
@@ -219,6 +224,12 @@ int Main(int argc, char** argv) {
       cont.wall.size(), default_points);
   std::printf("  [%s] ss_continue --no_plots --no_estimates process in <= 10 ms: %s ms\n",
               pt.no_estimates <= 10e-3 ? "met" : "NOT met", Ms(pt.no_estimates).c_str());
+  std::printf(
+      "  [%s] dense branch (ss_continue --max_step 1e-3 --no_plots --no_estimates) >= 20x "
+      "--integrator cvode, process CPU: taylor %s ms, cvode %s ms, ratio %s (median of %d "
+      "interleaved pairs)\n",
+      dense.ratio >= 20 ? "met" : "NOT met", Ms(dense.taylor).c_str(), Ms(dense.cvode).c_str(),
+      Ratio(dense.ratio).c_str(), dense.runs);
 
   ss::WriteFileAtomically(out + "/work_precision.tsv", Table(rows, ref, pt).str());
   std::printf("\nwrote %s/work_precision.tsv", out.c_str());

@@ -76,6 +76,10 @@ po::options_description AppOptions() {
       "cubic law: skip the comparison with the seed's and the averaging estimates");
   cli::AddRunOptions(d, "plots", "write the TSV files and the script, but do not run gnuplot");
   cli::AddRestartOptions(d);
+  d.add_options()("switch", po::bool_switch(),
+                  "with --restart DIR --point PDn of a forced run: continue the period-doubled "
+                  "branch (m -> 2m; AUTO's ISW=-1) from the PD point to whichever of --from, --to "
+                  "(default: the parameter's range) it opens toward");
   return d;
 }
 
@@ -226,6 +230,10 @@ int Main(int argc, char** argv) {
   std::optional<ss::LabelledPoint> restart = cli::RestartFromArguments(args);
   if ((restart && restart->forced) || cli::ForcedRequested(args))
     return cli::RunForced(args, kProg, cli::CommandLine(argc, argv), restart);
+  if (args.Flag("switch"))
+    throw cli::UsageError(args.Source("switch") +
+                          " needs --restart DIR --point PDn of a forced run (the belt's "
+                          "branches have no period doubling)");
   ss::Params base;
   const ss::ContinuationOptions opts = Configure(args, &base, restart);
   Provenance prov;

@@ -29,7 +29,8 @@ constexpr const char* kNotes =
     "lyapunov.tsv (one row per value), orbit_diagram.gp and orbit_diagram.png (.pdf, .svg).\n"
     "A value whose flow fails or passes --max_amplitude is a `# failed:` line; the next\n"
     "starts from rest. An interrupted run writes the values done, marked partial.\n"
-    "The forced flow's rtol and atol default to 1e-12.\n";
+    "The forced flow's rtol and atol default to 1e-12. --integrator cvode integrates the\n"
+    "slip phases by CVODE instead of Taylor series: an independent check of the exponent.\n";
 constexpr const char* kExample =
     "\nExample: ss_orbit_diagram --law stribeck --beta 0.01 --v 0.1 --force 0.5 --param omega "
     "--from 0.2 --to 1.2 --n 400";
@@ -45,7 +46,10 @@ po::options_description AppOptions() {
       "forcing periods discarded per value, in [0, 1e6] (default 500)")(
       "keep", cli::Value()->value_name("K"),
       "forcing periods recorded per value, in [10, 1e6] (default 200)")(
-      "direction", cli::Value()->value_name("D"), "up, down or both (default both)");
+      "direction", cli::Value()->value_name("D"), "up, down or both (default both)")(
+      "chunks", cli::Value()->value_name("C"),
+      "pieces each sweep is cut into and run in parallel, each from rest: hysteresis shows only "
+      "within a piece (default 1)");
   cli::AddRunOptions(d, "plots/orbit_diagram",
                      "write the TSV files and the script, but do not run gnuplot");
   return d;
@@ -98,6 +102,7 @@ Setup Configure(const cli::Arguments& args) {
     throw cli::UsageError("invalid value '" + dir + "' for " + args.Source("direction") +
                           ": must be up, down or both");
   s.o.up = dir != "down", s.o.down = dir != "up";
+  s.o.chunks = static_cast<int>(Count(args, "chunks", 1, 1, s.o.n));
   s.o.max_amplitude = args.Number("max_amplitude", 50);
   if (!(s.o.max_amplitude > 0))
     throw cli::UsageError(args.Source("max_amplitude") + " must be > 0");
@@ -106,6 +111,7 @@ Setup Configure(const cli::Arguments& args) {
   if (!args.Given("atol")) s.flow.atol = s.o.iterate.flow.atol;
   s.o.iterate.flow.rtol = s.flow.rtol, s.o.iterate.flow.atol = s.flow.atol;
   s.o.iterate.flow.max_steps = s.flow.max_steps;
+  s.o.iterate.flow.integrator = s.flow.integrator, s.o.iterate.flow.method = s.flow.method;
   const std::string e = s.o.ValidationError();
   if (!e.empty()) throw cli::UsageError(e);
   return s;

@@ -209,7 +209,8 @@ int Main(int argc, char** argv) {
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "simulate");
   if (cli::HelpOrVersion(std::cout, args, kProg,
                          "ss_simulate [--study FILE] [model options] [--force A --omega W "
-                         "[--section strobe|exit]] [--x0 X] [--xdot0 Y] [--t_end T] [--dt DT] "
+                         "[--section strobe|exit | --orbits [--max_m M]]] [--x0 X] [--xdot0 Y] "
+                         "[--t_end T] [--dt DT] "
                          "[--out DIR] [--no_plots] [--max_time S]",
                          desc,
                          std::string(kNotes) + cli::kExitCodeHelp +
@@ -217,7 +218,14 @@ int Main(int argc, char** argv) {
                              "0.125 --out plots/traj"))
     return 0;
   const std::string command = cli::CommandLine(argc, argv);
-  if (cli::ForcedRequested(args)) return cli::SimulateForcedApp(args, kProg, command);
+  const bool forced = cli::ForcedRequested(args);
+  if (forced && args.Flag("orbits")) return cli::ForcedOrbitsApp(args, kProg, command);
+  for (const char* name : {"orbits", "max_m"})
+    if (args.Given(name) && (!forced || std::string(name) == "max_m"))
+      throw cli::UsageError(args.Source(name) + (forced ? " needs --orbits"
+                                                        : " needs the forced oscillator: give "
+                                                          "--force A > 0"));
+  if (forced) return cli::SimulateForcedApp(args, kProg, command);
   if (args.Given("section"))
     throw cli::UsageError(args.Source("section") +
                           " needs the forced oscillator: give --force A > 0");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -52,6 +53,21 @@ TsvTable AttractorTable(const ForcedBasins& b) {
   return t;
 }
 
+namespace {
+// The key's words for attractor a: its label ("~" is gnuplot's overprint:
+// written as the sign it means), the section point that tells two periodic
+// attractors of one label apart, and its count of starts.
+std::string KeyLabel(const Attractor& a) {
+  std::string label = AttractorLabel(a);
+  const size_t tilde = label.find('~');
+  if (tilde != std::string::npos) label.replace(tilde, 1, "≈");
+  if (a.kind == AttractorKind::kPeriodic) label += ", x = " + Num(a.x, 3);
+  return label + " (" + std::to_string(a.starts) + " starts)";
+}
+// Quasi-periodic or slow: a grey that shows on the page and in the key.
+constexpr const char* kUndecidedGrey = "#bdbdbd";
+}  // namespace
+
 std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o,
                               const std::string& title, FigureFormat format) {
   const double dx = (o.x_hi - o.x_lo) / std::max(1, o.nx - 1) / 2;
@@ -70,13 +86,13 @@ std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o
   for (size_t i = 0; i < b.attractors.size(); ++i) {
     const Attractor& a = b.attractors[i];
     const char* colour = a.kind == AttractorKind::kChaotic     ? "#000000"
-                         : a.kind == AttractorKind::kUndecided ? kFillUndecided
+                         : a.kind == AttractorKind::kUndecided ? kUndecidedGrey
                          : a.kind == AttractorKind::kUnbounded ? "#ffffff"
                                                                : SeriesColor(static_cast<int>(i));
     os << (i ? ", \\\n     " : "") << "'basins_forced.tsv' using 'x':(column('attractor') == " << i
        << " ? column('xdot') : 1/0):(" << FormatNumber(1.02 * dx) << "):("  // 2%: no seams
        << FormatNumber(1.02 * dy) << ") with boxxyerror lc rgb '" << colour << "' title "
-       << GnuplotQuoted(AttractorLabel(a) + " (" + std::to_string(a.starts) + ")");
+       << GnuplotQuoted(KeyLabel(a));
   }
   os << (b.attractors.empty() ? "" : ", \\\n     ")
      << "'attractors.tsv' using 'x':(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with "

@@ -23,6 +23,7 @@ std::string OrbitDiagramOptions::ValidationError() const {
     return "from = " + Num(from) + " and to = " + Num(to) + " must be finite and differ";
   if (n < 2 || n > 1000000) return "n = " + std::to_string(n) + " must lie in [2, 1e6]";
   if (!up && !down) return "no sweep direction";
+  if (chunks < 1 || chunks > n) return "chunks = " + std::to_string(chunks) + " must lie in [1, n]";
   if (!(max_amplitude > 0)) return "max_amplitude = " + Num(max_amplitude) + " must be > 0";
   return iterate.ValidationError();
 }
@@ -91,10 +92,14 @@ OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOpt
   std::atomic<bool> stop{false};
   std::atomic<int> done{0};
   std::vector<std::thread> workers;
+  // Each direction in o.chunks pieces, piece c the values [n c / chunks, n (c + 1) / chunks).
   for (auto* cols : {&up, &down})
-    if (!cols->empty())
-      workers.emplace_back(Sweep, std::cref(base), std::cref(o), *cols, std::cref(stop),
+    for (long long c = 0; c < o.chunks && !cols->empty(); ++c) {
+      const auto b = cols->begin();
+      const std::vector<DiagramColumn*> piece(b + n * c / o.chunks, b + n * (c + 1) / o.chunks);
+      workers.emplace_back(Sweep, std::cref(base), std::cref(o), piece, std::cref(stop),
                            std::ref(done));
+    }
   const int total = static_cast<int>(d.columns.size());
   while (done.load() < total) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

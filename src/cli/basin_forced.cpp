@@ -66,6 +66,7 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
   if (!args.Given("atol")) flow->atol = o.iterate.flow.atol;
   o.iterate.flow.rtol = flow->rtol, o.iterate.flow.atol = flow->atol;
   o.iterate.flow.max_steps = flow->max_steps;
+  o.iterate.flow.integrator = flow->integrator, o.iterate.flow.method = flow->method;
   const std::string oe = o.ValidationError();
   if (!oe.empty()) throw UsageError(oe);
   return o;

@@ -24,6 +24,8 @@ struct ForcedSetup {
   ForcedBranchOptions opts;
   FlowOptions flow;                      // rtol and atol as given, for the metadata
   std::optional<LabelledPoint> restart;  // a forced run's point to start from
+  bool doubled = false;                  // --switch: the 2m branch from a PD point
+  double lo = 0, hi = 0;                 // --switch: the bounds the 2m branch runs to
 };
 
 ForcedAxis AxisFromName(const Arguments& args, const std::string& fallback) {
@@ -40,6 +42,31 @@ void Check(const Arguments& args, const ForcedParams& p, const std::string& what
   const std::string name = err.substr(0, err.find(' '));
   throw UsageError("invalid forced model" + what + ": " + err +
                    (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
+}
+
+// --switch at a PD point (AUTO-07p's ISW = -1): the 2m branch starts at the
+// point and runs to whichever of --from, --to (default: the axis's range) it
+// opens toward.
+void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& s) {
+  if (!s.restart || s.restart->type != "PD")
+    throw UsageError(
+        args.Source("switch") +
+        " needs --restart DIR --point PDn (a period "
+        "doubling of a forced run)" +
+        (s.restart ? ", not " + args.Text("point") + " (" + s.restart->type + ")" : std::string()));
+  if (args.Given(ForcedAxisName(s.axis)) || ForcedAxisName(s.axis) != s.restart->param)
+    throw UsageError(args.Source("switch") + " continues the doubled branch in " +
+                     s.restart->param + ", the PD point's parameter");
+  s.doubled = true;
+  const double p = GetAxis(s.p, s.axis);
+  s.lo = args.Number("from", range[0]);
+  s.hi = args.Number("to", range[1]);
+  if (s.lo > s.hi) std::swap(s.lo, s.hi);
+  if (!(s.lo < p && p < s.hi))
+    throw UsageError(args.Source("switch") + ": the PD point's " + s.restart->param + " = " +
+                     FormatNumber(p) + " must lie strictly between --from " + FormatNumber(s.lo) +
+                     " and --to " + FormatNumber(s.hi));
+  s.from = p, s.to = s.hi;  // to: set from the branch's side once traced
 }
 
 ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>& restart) {
@@ -66,6 +93,7 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   }
   s.from = args.Number("from", from);
   s.to = args.Number("to", to);
+  if (args.Flag("switch")) ConfigureSwitch(args, defaults[k], s);
   if (s.from == s.to)
     throw UsageError(args.Source("to") + " = " + FormatNumber(s.to) + " equals the start");
   ForcedParams at = s.p;
@@ -109,7 +137,8 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run
   }
   ForcedBranchOptions opts = s.opts;
   opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
-  ForcedBranch b = ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
+  ForcedBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
+                             : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
   if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
   return b;
 }
@@ -149,6 +178,23 @@ std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
   return status;
 }
 
+// The run's summary on stdout: range, rows, status, gap and special points.
+void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::string& model,
+                  const std::string& status, const std::string& gap,
+                  const std::vector<ForcedPiece>& pieces) {
+  size_t rows = 0;
+  for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
+  std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
+            << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
+            << rows << " rows; " << status << "\n";
+  if (!gap.empty()) std::cout << "gap: " << gap << "\n";
+  for (const ForcedPiece& piece : pieces)
+    for (const ForcedBranchRow& r : piece.branch.special)
+      std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
+                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "  "
+                << r.description << "\n";
+}
+
 }  // namespace
 
 po::options_description ForcingOptions() {
@@ -175,7 +221,7 @@ bool ForcedRequested(const Arguments& args) {
 
 int RunForced(const Arguments& args, const std::string& prog, const std::string& command,
               const std::optional<LabelledPoint>& restart) {
-  const ForcedSetup s = Configure(args, restart);
+  ForcedSetup s = Configure(args, restart);
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("resonance", format);
   const std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "resonance.gp",
@@ -184,6 +230,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   app.run().Phase("continuing");
   std::vector<ForcedPiece> pieces(1);
   pieces[0].branch = Trace(s, s.from, s.to, app.run());
+  if (s.doubled && !pieces[0].branch.rows.empty())  // the side the 2m branch opens toward
+    s.to = pieces[0].branch.rows.front().p < s.from ? s.lo : s.hi;
   if (pieces[0].branch.rows.empty()) {  // nothing to write or draw
     std::cerr << prog << ": error: no periodic orbit at " << ForcedAxisName(s.axis) << " = "
               << FormatNumber(s.from) << " (" << ForcedBranchStatusName(pieces[0].branch.status)
@@ -193,7 +241,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   }
   std::string gap;
   std::vector<double> gap_ends;
-  if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded) {
+  if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded && !s.doubled) {
     // Undamped resonance: trace the other end too; between them x is unbounded.
     pieces.push_back({Trace(s, s.to, s.from, app.run()), 2});
     const auto& a = pieces[0].branch.rows;
@@ -220,6 +268,9 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
                {"max_amplitude", FormatNumber(s.opts.max_amplitude)}});
   const std::string status = StatusOf(pieces);
   if (restart) meta.emplace_back("restart", DescribeRestart(args, *restart));
+  if (s.doubled)
+    meta.emplace_back("switch", "period-doubled branch, m = " + std::to_string(s.opts.m) + " -> " +
+                                    std::to_string(2 * s.opts.m));
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;
@@ -233,17 +284,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   app.out().Write("resonance.gp", ResonanceScript(s.p, s.axis, static_cast<int>(pieces.size()),
                                                   model, gap_ends, specials, format));
   if (!app.Finish("resonance.gp", {figure}, {figure})) return kExitFailed;
-  size_t rows = 0;
-  for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
-  std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
-            << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
-            << rows << " rows; " << status << "\n";
-  if (!gap.empty()) std::cout << "gap: " << gap << "\n";
-  for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.special)
-      std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
-                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "  "
-                << r.description << "\n";
+  PrintSummary(prog, s, model, status, gap, pieces);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;

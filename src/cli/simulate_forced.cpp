@@ -90,10 +90,43 @@ void AddRangeMeta(TsvTable& table, const SimulateRange& r) {
   table.AddMeta("dt", FormatNumber(r.dt));
 }
 
+ForcedInputs ForcedInputsFromArguments(const Arguments& args) {
+  ForcedInputs in;
+  ForcedParams& p = in.p;
+  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
+    if (args.Given(phys))
+      throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
+  p.base = UncheckedModelFromArguments(args);
+  p.force = args.Number("force", 0);
+  p.omega = args.Number("omega", 1);
+  const std::string err = ValidationError(p);
+  if (!err.empty()) {
+    const std::string name = err.substr(0, err.find(' '));
+    throw UsageError("invalid forced model: " + err +
+                     (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
+  }
+  FlowOptions& flow = in.shown;
+  flow = FlowOptionsFromArguments(args);
+  if (flow.integrator != Integrator::kTaylor)
+    throw UsageError(args.Source(args.Given("method") ? "method" : "integrator") +
+                     ": the forced oscillator is integrated by Taylor series only");
+  // The forced flow's own defaults (rtol = atol = 1e-12, max_steps per row) unless given.
+  if (!args.Given("rtol")) flow.rtol = in.flow.rtol;
+  if (!args.Given("atol")) flow.atol = in.flow.atol;
+  if (!args.Given("max_steps")) flow.max_steps = in.flow.max_steps;
+  in.flow.rtol = flow.rtol, in.flow.atol = flow.atol, in.flow.max_steps = flow.max_steps;
+  return in;
+}
+
 void AddSimulateForcedOptions(po::options_description& d) {
   d.add_options()("section", Value()->value_name("strobe|exit"),
                   "forced: the Poincare section in section.tsv: strobe (every forcing period, "
-                  "cos(Omega t) = 1; default) or exit (every stick exit)");
+                  "cos(Omega t) = 1; default) or exit (every stick exit)")(
+      "orbits", po::bool_switch(),
+      "forced: instead of a trajectory, every periodic orbit of period multiple m <= max_m at "
+      "these parameters (stable or not; FindForcedOrbits), in orbits.tsv, one row per "
+      "stroboscopic point")("max_m", Value()->value_name("M"),
+                            "with --orbits: the largest period multiple, 1..12 (default 4)");
 }
 
 // The forced run's settings, all checked before anything runs or is written.
@@ -108,28 +141,8 @@ ForcedSetup ConfigureForced(const Arguments& args) {
   ForcedSetup st;
   ForcedParams& p = st.p;
   ForcedSimulationOptions& o = st.o;
-  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
-    if (args.Given(phys))
-      throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
-  p.base = UncheckedModelFromArguments(args);
-  p.force = args.Number("force", 0);
-  p.omega = args.Number("omega", 1);
-  const std::string err = ValidationError(p);
-  if (!err.empty()) {
-    const std::string name = err.substr(0, err.find(' '));
-    throw UsageError("invalid forced model: " + err +
-                     (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
-  }
-  FlowOptions& flow = st.flow;
-  flow = FlowOptionsFromArguments(args);
-  if (flow.integrator != Integrator::kTaylor)
-    throw UsageError(args.Source(args.Given("method") ? "method" : "integrator") +
-                     ": the forced oscillator is integrated by Taylor series only");
-  // The forced flow's own defaults (rtol = atol = 1e-12, max_steps per row) unless given.
-  if (!args.Given("rtol")) flow.rtol = o.flow.rtol;
-  if (!args.Given("atol")) flow.atol = o.flow.atol;
-  if (!args.Given("max_steps")) flow.max_steps = o.flow.max_steps;
-  o.flow.rtol = flow.rtol, o.flow.atol = flow.atol, o.flow.max_steps = flow.max_steps;
+  const ForcedInputs in = ForcedInputsFromArguments(args);
+  p = in.p, st.flow = in.shown, o.flow = in.flow;
   const std::string sec = args.Text("section", "strobe");
   if (sec != "strobe" && sec != "exit")
     throw UsageError("invalid value '" + sec + "' for " + args.Source("section") +

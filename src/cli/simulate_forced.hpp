@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/study.hpp"
+#include "stickslip/forced/flow.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
@@ -19,9 +20,22 @@ struct SimulateRange {
 SimulateRange SimulateRangeFromArguments(const Arguments& args, double default_xdot0);
 void AddRangeMeta(TsvTable& table, const SimulateRange& r);
 
-// --section strobe|exit.
+// The forced model and its flow options from --force, --omega, the model and
+// solver options (validated: UsageError naming the option). `shown` is what
+// the metadata prints.
+struct ForcedInputs {
+  ForcedParams p;
+  ForcedOptions flow;
+  FlowOptions shown;
+};
+ForcedInputs ForcedInputsFromArguments(const Arguments& args);
+
+// --section strobe|exit, --orbits, --max_m.
 void AddSimulateForcedOptions(po::options_description& d);
 // The whole forced run; returns the exit code.
+// ss_simulate --force --orbits: every periodic orbit at one parameter point
+// (forced_orbits.cpp); returns the exit code.
+int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::string& command);
 int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command);
 
 }  // namespace stickslip::cli

@@ -130,6 +130,7 @@ class Monitor {
 
  private:
   void Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row);
+  Bracket AcrossEdge(const Bracket& br, bool chord, double span, const ForcedBranchRow& row);
 
   Palc& palc_;
   StrobeProblem& problem_;
@@ -142,6 +143,38 @@ class Monitor {
   ForcedBranchRow prev_;
   double prev_tests_[3] = {0, 0, 0};
 };
+
+// The edge behind a failed or far-apart chord bracket br (span: the chord's
+// parameter span): along the chord, or behind a corner of the branch (two
+// branches meeting at the edge), so both ways; row is the chord's far end.
+Bracket Monitor::AcrossEdge(const Bracket& br, bool chord, double span,
+                            const ForcedBranchRow& row) {
+  Bracket out = br, fine;
+  std::string why;
+  const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(out.lo.p)));
+  bool found_edge = false, edge_only = false;
+  for (const double sign : {1.0, -1.0})
+    if (!found_edge && !edge_only) {
+      const double d = sign * (span > 0 ? 1 : -1);
+      // Never past the branch's range (validated; beyond it the model may not be).
+      const double limit =
+          std::clamp(out.lo.p + d * 256 * step, std::min(from_, to_), std::max(from_, to_));
+      fine.lo.p = NAN;
+      found_edge = forced_detail::JumpAcross(base_, axis_, o_, out.lo, d, step, limit,
+                                             o_.locate_tol, &fine.lo, &fine.hi, &why);
+      // The edge bisected, no orbit of the same m just beyond (the branch
+      // went on to one far away): the edge is the point, row the far side.
+      edge_only = !found_edge && std::isfinite(fine.lo.p);
+    }
+  if (found_edge) {
+    out = fine;
+  } else if (edge_only) {
+    out.lo = fine.lo, out.hi = row;
+  } else if (!chord) {
+    out.hi = row;
+  }
+  return out;
+}
 
 void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row) {
   std::vector<ForcedBranchRow> found;
@@ -178,26 +211,8 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double far = chord ? br.hi.p : br.p_hi;
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
-    if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0))) {
-      // The edge lies along the chord, or behind a corner of the branch
-      // (two branches meeting at the edge): try both ways.
-      Bracket fine;
-      std::string why;
-      const double span = b[2] - from[2];
-      const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(br.lo.p)));
-      bool found_edge = false;
-      for (const double sign : {1.0, -1.0})
-        if (!found_edge) {
-          const double d = sign * (span > 0 ? 1 : -1);
-          found_edge =
-              forced_detail::JumpAcross(base_, axis_, o_, br.lo, d, step, br.lo.p + d * 256 * step,
-                                        o_.locate_tol, &fine.lo, &fine.hi, &why);
-        }
-      if (found_edge)
-        br = fine;
-      else if (!chord)
-        br.hi = row;
-    }
+    if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0)))
+      br = AcrossEdge(br, chord, b[2] - from[2], row);
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).
     const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
@@ -254,24 +269,23 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
 
 }  // namespace
 
-ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                            double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
+namespace forced_detail {
+
+ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                         const Eigen::Vector3d& first, int fixed, const Eigen::Vector3d& direction,
+                         const ForcedBranchOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  ForcedParams at_from = base;
-  SetAxis(at_from, axis, from);
-  if (const std::string e = ValidationError(at_from); !e.empty()) throw InvalidArgument(e);
-  if (!(to != from) || !std::isfinite(to)) throw InvalidArgument("to must be finite and != from");
   StrobeProblem problem(base, axis, options);
   Palc palc(problem, options.palc);
   ForcedBranch out;
   out.status = ForcedBranchStatus::kMaxPoints;
   const double dir = to > from ? 1 : -1;
   Monitor monitor(palc, problem, base, axis, from, to, options, out);
-  VectorXd u0(3);
-  u0 << x_guess, xdot_guess, from;
+  VectorXd u0 = first, along = direction;
   double trace_dir = dir;
+  int fixed_now = fixed;
   for (;;) {
-    const PalcResult r = palc.Trace(u0, 2, VectorXd::Unit(3, 2) * trace_dir, std::ref(monitor));
+    const PalcResult r = palc.Trace(u0, fixed_now, along, std::ref(monitor));
     if (monitor.stopped()) {
       if (out.status == ForcedBranchStatus::kReachedEnd) out.message.clear();
       break;
@@ -305,6 +319,8 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
     ++out.jumps;
     u0 << after.x0, after.xdot0, after.p;
     trace_dir = pdir;
+    fixed_now = 2;  // from the orbit beyond: the parameter held, along pdir
+    along = VectorXd::Unit(3, 2) * trace_dir;
     monitor.Restart();
   }
   if (out.status == ForcedBranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
@@ -314,6 +330,19 @@ ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fr
   out.evaluations = palc.evaluations();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+}  // namespace forced_detail
+
+ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                            double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
+  ForcedParams at_from = base;
+  SetAxis(at_from, axis, from);
+  if (const std::string e = ValidationError(at_from); !e.empty()) throw InvalidArgument(e);
+  if (!(to != from) || !std::isfinite(to)) throw InvalidArgument("to must be finite and != from");
+  return forced_detail::TraceBranch(base, axis, from, to,
+                                    Eigen::Vector3d(x_guess, xdot_guess, from), 2,
+                                    Eigen::Vector3d::Unit(2) * (to > from ? 1 : -1), options);
 }
 
 }  // namespace stickslip

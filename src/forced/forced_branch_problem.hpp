@@ -34,4 +34,11 @@ class StrobeProblem final : public PalcProblem {
   Eigen::Vector3d last_u_ = Eigen::Vector3d::Zero();
 };
 
+// The branch through `first` (corrected with component `fixed` held), traced
+// along `direction` (unscaled), with ContinueForced's rows, special points,
+// jumps and ends between p = from and p = to.
+ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                         const Eigen::Vector3d& first, int fixed, const Eigen::Vector3d& direction,
+                         const ForcedBranchOptions& options);
+
 }  // namespace stickslip::forced_detail

@@ -2,6 +2,7 @@
 // (forced_flow.cpp: slip phases and switches; forced_stick.cpp: stick phases).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "forced_taylor.hpp"
@@ -9,10 +10,13 @@
 
 namespace stickslip::forced_detail {
 
+class SlipCvode;  // forced_cvode.cpp
+
 class Driver {
  public:
-  Driver(const ForcedModel& m, const ForcedOptions& o, const ForcedRequest& rq, ForcedRun& run)
-      : m_(m), o_(o), rq_(rq), run_(run), series_(m, o.rtol, o.atol) {}
+  // Out of line (forced_cvode.cpp), where SlipCvode is complete.
+  Driver(const ForcedModel& m, const ForcedOptions& o, const ForcedRequest& rq, ForcedRun& run);
+  ~Driver();
   void Run(const ForcedPoint& start);
 
  private:
@@ -20,6 +24,7 @@ class Driver {
   bool Stick();
   bool Slip();
   bool SlipStep(double t_end);
+  bool SlipByCvode();  // one slip phase by CVODE (forced_cvode.cpp)
   // A root of x' - v at (t, x) arriving from mode_: stick, cross or touch.
   bool Arrive(double t, double x);
   bool Exit(double t, double x);
@@ -34,6 +39,7 @@ class Driver {
   const ForcedRequest& rq_;
   ForcedRun& run_;
   SlipSeries series_;
+  std::unique_ptr<SlipCvode> cvode_;  // with Integrator::kCvode, made at the first slip phase
   double t_ = 0, x_ = 0, xd_ = 0;
   Mode mode_ = Mode::kSlipBelow;
   Mat2 phi_ = Mat2::Identity();

@@ -44,6 +44,9 @@ std::string ForcedOptions::ValidationError() const {
   if (!(atol >= 1e-16 && atol <= 1e-2)) return "atol = " + Num(atol) + " must lie in [1e-16, 1e-2]";
   if (max_steps < 1) return "max_steps = " + std::to_string(max_steps) + " must be >= 1";
   if (max_events < 1) return "max_events = " + std::to_string(max_events) + " must be >= 1";
+  if (integrator == Integrator::kCvode && !(rtol >= 1e-13 && atol >= 1e-15))
+    return "rtol = " + Num(rtol) + ", atol = " + Num(atol) +
+           ": CVODE needs rtol >= 1e-13 and atol >= 1e-15";
   return "";
 }
 
@@ -64,6 +67,8 @@ ForcedRun ForcedFlow::Run(const ForcedPoint& start, const ForcedRequest& request
   if (!(request.t_end >= start.t) || !std::isfinite(request.t_end))
     throw InvalidArgument("t_end = " + Num(request.t_end) +
                           " must be finite and >= t = " + Num(start.t));
+  if (options_.integrator == Integrator::kCvode && request.extremes)
+    throw InvalidArgument("extremes inside steps need the Taylor integrator");
   ForcedRun run;
   forced_detail::Driver(model_, options_, request, run).Run(start);
   return run;
@@ -124,6 +129,7 @@ bool Driver::Arrive(double t, double x) {
 }
 
 bool Driver::Slip() {
+  if (o_.integrator == Integrator::kCvode) return SlipByCvode();
   while (t_ < rq_.t_end && mode_ != Mode::kStick) {
     if (run_.steps >= o_.max_steps)
       return Fail(ForcedStatus::kTooMuchWork, "max_steps = " + std::to_string(o_.max_steps));

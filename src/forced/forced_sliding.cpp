@@ -48,14 +48,16 @@ std::vector<ForcedEvent> Events(const ForcedParams& base, ForcedAxis axis,
   return ev;
 }
 
-// How close a crossing of x' = v comes to the stick band's edge:
-// min | |x + 2 beta v - A cos(Omega t)| - mu_s | over the crossings (inf: none).
+// How close an arrival at x' = v (a crossing, or a stick entry) comes to the
+// stick band's edge: min | |x + 2 beta v - A cos(Omega t)| - mu_s | over the
+// arrivals (inf: none). Crossing-sliding is an arrival on the edge, from
+// either side (di Bernardo, Kowalczyk & Nordmark 2002, section 3.1).
 double CrossingToEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
                       const ForcedBranchRow& r) {
   const ForcedModel model(At(base, axis, r.p));
   double best = std::numeric_limits<double>::infinity();
   for (const ForcedEvent& e : Events(base, axis, o, r))
-    if (e.kind == ForcedEventKind::kCrossing)
+    if (e.kind == ForcedEventKind::kCrossing || e.kind == ForcedEventKind::kStickIn)
       best = std::min(best, std::abs(std::abs(model.StickForce(e.t, e.x)) - model.static_limit()));
   return best;
 }
@@ -96,13 +98,13 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
                      ForcedBranchRow* point) {
   const int ds = after.sticks - before.sticks, dc = after.crossings - before.crossings;
   const std::string change = " (" + Change(before, after) + ")";
-  // A crossing on the band's edge at the point: crossing-sliding, also where
+  // An arrival on the band's edge at the point: crossing-sliding, also where
   // the stick it becomes merges with the next one (a jump, mu_s > mu_k).
   const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
   const double edge = tol.BandEdge() * (1 + before.extremes.x_max - before.extremes.x_min);
   const bool on_edge =
       std::min(CrossingToEdge(base, axis, o, before), CrossingToEdge(base, axis, o, after)) <= edge;
-  if ((ds != 0 && dc == -ds) || (dc < 0 && on_edge)) {
+  if ((ds != 0 && dc == -ds) || (dc != 0 && on_edge)) {
     point->label = ForcedLabel::kCR;
     point->description =
         "crossing-sliding: a crossing of x' = v reaches the stick band's edge and "
@@ -140,6 +142,10 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
   }
 }
 
+namespace {
+constexpr int kConfirmSteps = 4;  // natural steps that confirm an edge in BisectEdge
+}  // namespace
+
 bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
                 ForcedBranchRow lo, double hi, double tol, ForcedBranchRow* before,
                 ForcedBranchRow* after, std::string* why) {
@@ -153,13 +159,35 @@ bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOpt
     return orb.status == ForcedOrbitStatus::kConverged && orb.sticks == ref.sticks &&
            orb.crossings == ref.crossings;
   };
+  // Newton from the secant predictor through the last two orbits: from lo's
+  // state alone, the first iterate near the edge can land past it and
+  // converge to another orbit, which would end the bisection early (measured:
+  // 9e-6 short of a crossing-sliding point on the coulomb belt, issue 20).
+  ForcedBranchRow prev = lo;
+  bool have_prev = false;
   while (std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p))) {
     const double mid = 0.5 * (lo.p + hi);
-    const ForcedOrbit orb = shoot(mid, lo);
-    if (good(orb))
+    ForcedBranchRow guess = lo;
+    if (have_prev) {
+      const double s = (mid - lo.p) / (lo.p - prev.p);
+      guess.x0 += s * (lo.x0 - prev.x0), guess.xdot0 += s * (lo.xdot0 - prev.xdot0);
+    }
+    ForcedOrbit orb = shoot(mid, guess);
+    // Not found: confirm by natural steps from lo (Newton can wander across
+    // the map's discontinuity near the edge and converge elsewhere).
+    for (int k = 1; k <= kConfirmSteps && !good(orb); ++k) {
+      const double pk = lo.p + (mid - lo.p) * k / kConfirmSteps;
+      orb = shoot(pk, k == 1 ? lo : guess);
+      if (!good(orb)) break;
+      guess = RowOf(orb, pk);
+      if (k < kConfirmSteps) orb.status = ForcedOrbitStatus::kNoConvergence;
+    }
+    if (good(orb)) {
+      prev = lo, have_prev = true;
       lo = RowOf(orb, mid);
-    else
+    } else {
       hi = mid;
+    }
   }
   *before = lo;
   ForcedOrbit orb = shoot(hi, lo);

@@ -139,6 +139,12 @@ PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   if (QuadraticBoundExcludes(c, n, sign, tail)) return out;
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
+  // Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no
+  // isolation needed.
+  if (Monotone(c, n)) {
+    if (changed(1.0)) out = {true, RefineRoot(c, n, sign, zero_sign, 0.0, 1.0)};
+    return out;
+  }
 
   // Depth-first, left half first: the first interval that holds a sign change
   // holds the first root.

@@ -39,6 +39,15 @@ inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail
   return q_min - tail > margin;
 }
 
+// Whether c (degree n) is strictly monotone on [0, 1]: its derivative's
+// quadratic bound excludes a root there. Then c has at most one root on [0, 1].
+inline bool Monotone(const double* c, int n) {
+  if (n < 1 || c[1] == 0) return false;
+  double d[3] = {c[1], n >= 2 ? 2 * c[2] : 0.0, n >= 3 ? 3 * c[3] : 0.0}, tail = 0;
+  for (int k = 4; k <= n; ++k) tail += k * std::abs(c[k]);  // sum_{k>=3} |c'_k|
+  return QuadraticBoundExcludes(d, n - 1, c[1] > 0 ? 1 : -1, tail);
+}
+
 // The polynomial at u by Horner's rule in u^2 on its even and odd parts: two
 // independent chains of half the length (the latency of one chain bounds
 // plain Horner).

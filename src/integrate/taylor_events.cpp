@@ -102,6 +102,7 @@ void TaylorStepper::EventRoots(int i, const double* gi, int deg, double tail, Ro
     if (!r.found) return;
     const double u = r.u == 1 ? 1.0 : u0 + (1 - u0) * r.u;
     if (u > roots.first || roots.Add(i, u, -sign, p_.Stops(i, -sign)) || u >= 1) return;
+    if (guard == 0 && Monotone(gi, deg)) return;  // the only root on [0, 1]
     // Passed: go on from u with g / (w - u) (the root is not an event twice).
     sign = -sign;
     RestrictToTail(gi, deg, u, rest);

@@ -45,7 +45,7 @@ class TaylorStepper final : public Stepper {
     if (n_ == 8) ResolveParameter();
     s_.Clear();
     cc_.Clear();
-    for (auto& row : c_) std::fill(row, row + kTaylorMaxOrder + 1 + kPad, 0.0);
+    for (int i = 0; i < n_; ++i) std::fill(c_[i], c_[i] + kTaylorMaxOrder + 1 + kPad, 0.0);
     std::copy(y0, y0 + n_, yend_);
     std::copy(y0, y0 + n_, y_);
     ta_ = tb_ = t_ = t0_ = t0;

@@ -172,6 +172,12 @@ struct Tolerances {
   double SameAttractor() const { return std::max(1e-4, 1e5 * rtol); }
   /// A start is chaotic if its largest exponent exceeds max(3 err, this floor) (1 / time).
   double ChaoticExponentFloor() const { return 1e-3; }
+  /// Forced PD switching: the point's multiplier must lie within this of -1
+  /// (a located PD has it within 1e-9; issue 20).
+  double FlipMultiplier() const { return 1e-3; }
+  /// Forced PD switching: the first point of the doubled branch is on it (not
+  /// back on the m orbit) if |P^m z - z| exceeds this times the offset h.
+  double DoubledSplit() const { return 0.5; }
 
   // Continuation steps (continuation/: the branch tracers share these).
   // Steps of a stick-slip branch: halve when an orbit measure changes by more

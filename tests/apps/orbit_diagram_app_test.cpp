@@ -83,6 +83,8 @@ TEST_F(OrbitDiagramApp, BadInputIsExitTwoNamingTheOption) {
       {{"--n", "1"}, "--n"},
       {{"--keep", "abc"}, "--keep"},
       {{"--direction", "sideways"}, "--direction"},
+      {{"--n", "4", "--chunks", "5"}, "--chunks"},
+      {{"--integrator", "cvode", "--rtol", "1e-14"}, "rtol"},
       {{"--from", "1", "--to", "1"}, "--to"},
       {{"--force", "-1"}, "force"},
       {{"--param", "force", "--from", "-0.5"}, "--from"}};

@@ -135,15 +135,18 @@ TEST_F(RobustnessApp, SignalsAndTimeLimitsAtRandomMomentsLeaveWholeFiles) {
     } else {
       l.signal = trial % 3 == 0 ? SIGINT : SIGTERM;
       l.signal_after = t;
+      // Past the first 50 ms, t counts from the handler's installation: a
+      // process start (1 s for a sanitizer build under load) is not a phase.
+      l.signal_when_caught = t >= 0.05;
       what = std::string(trial % 3 == 0 ? "SIGINT" : "SIGTERM") + " at " + std::to_string(t);
     }
     SCOPED_TRACE(what);
     const Outcome r = RunChild(kContinue, args, l);
     ASSERT_FALSE(r.timed_out);
-    // A signal can only come before the handler in the first milliseconds.
+    // A signal can only come before the handler when sent at the start.
     if (r.signal != 0) {
       EXPECT_EQ(r.signal, l.signal);
-      EXPECT_LT(t, 0.05);
+      EXPECT_FALSE(l.signal_when_caught) << "killed after its handler was installed";
       EXPECT_TRUE(Listing(out).empty());
       continue;
     }

@@ -3,8 +3,8 @@
 // transient, the stick counts and exit phases, and the largest Lyapunov
 // exponent (chaos/lyapunov.hpp). Swept up and down, each value starting from
 // the last state of the one before, so that hysteresis shows. The two
-// directions run on their own threads; no exception crosses a thread (a
-// failure is the value's status).
+// directions (and, with chunks > 1, their pieces) run on their own threads;
+// no exception crosses a thread (a failure is the value's status).
 #pragma once
 
 #include <functional>
@@ -25,6 +25,11 @@ struct OrbitDiagramOptions {
   int n = 200;  ///< parameter values, from..to inclusive
   bool up = true, down = true;
   LyapunovOptions iterate;
+  /// Pieces each sweep is cut into, run on threads of their own: 1 (the
+  /// default) follows every value from the one before; k > 1 starts each
+  /// piece from rest, so hysteresis shows only within a piece (a single
+  /// direction then uses more than one core).
+  int chunks = 1;
   /// A value whose |x| or |x'| passes this is kDiverged; the next starts from rest.
   double max_amplitude = 50;
   std::function<bool()> cancelled;                    ///< polled by the calling thread

@@ -88,4 +88,18 @@ struct ForcedBranch {
 ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
                             double x_guess, double xdot_guess, const ForcedBranchOptions& options);
 
+/// Branch switching at a period doubling (AUTO-07p's ISW = -1 at a PD label).
+/// at_pd holds the PD point's parameters (GetAxis(at_pd, axis) = p_PD),
+/// (x0, xdot0) its stroboscopic point and options.m its period multiple. The
+/// 2m-periodic branch starts at z + h e (e the eigenvector of the multiplier
+/// -1 of DP^m, h = options.palc.ds, scaled), corrected with its projection on
+/// e held (p free: the 2m orbits form a pitchfork of P^2m, p - p_PD ~ h^2),
+/// and is traced away from the m orbit to whichever bound, lo or hi, it opens
+/// toward. Rows have m = 2 options.m. Status kStartFailed with a message if
+/// the point has no multiplier near -1 or the start falls back onto the m
+/// orbit. Throws InvalidArgument on invalid parameters, options or bounds
+/// (lo < p_PD < hi).
+ForcedBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x0, double xdot0,
+                             double lo, double hi, const ForcedBranchOptions& options);
+
 }  // namespace stickslip

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/integrate/flow.hpp"  // Integrator, Method
 #include "stickslip/model/forced.hpp"
 
 namespace stickslip {
@@ -26,6 +27,10 @@ struct ForcedOptions {
   double rtol = 1e-12, atol = 1e-12;  ///< Taylor order and step (Jorba & Zou 2005)
   long max_steps = 1000000;           ///< Taylor and stick steps per Run
   long max_events = 100000;           ///< switches per Run
+  /// Slip phases by Taylor series, or by CVODE (`method`) as an independent
+  /// check (no extremes inside steps: ForcedRequest::extremes must be false).
+  Integrator integrator = Integrator::kTaylor;
+  Method method = Method::kAdams;
   /// Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
 };

@@ -1,0 +1,96 @@
+// ss_simulate --force A --omega W --orbits (simulate_forced.hpp): every
+// periodic orbit of period multiple m <= --max_m at one parameter point, by
+// FindForcedOrbits (forced/orbit_scan.hpp), in orbits.tsv: one row per
+// stroboscopic point, the orbit's data repeated; orbits.gp draws the points.
+#include <iostream>
+
+#include "cli/about.hpp"
+#include "cli/app.hpp"
+#include "cli/simulate_forced.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/io/figure_style.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+constexpr int kMaxPeriodMultiple = 12;  // the scan's work grows like max_m^2
+
+std::string OrbitsScript(const std::string& title, FigureFormat f) {
+  std::string s = FigurePreamble(f, 950, 750);
+  s += "set output " + GnuplotQuoted(FigureFile("orbits", f)) + "\n";
+  s += "set title \"periodic orbits, stroboscopic points (cos Ωt = 1)\\n\" . " +
+       GnuplotQuoted(FigureTitle(title, {})) + "\n";
+  s += "set xlabel 'displacement x (dimensionless)'\nset ylabel 'velocity dx/dt (dimensionless)'\n";
+  s += "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
+  s += "plot 'orbits.tsv' using (column('stable') == 1 ? $7 : NaN):8:(sprintf('m=%d', "
+       "column('m'))) with labels point pt 7 ps 1.2 lc rgb '#1f77b4' offset 1,1 title 'stable', "
+       "\\\n";
+  s += "     'orbits.tsv' using (column('stable') == 0 ? $7 : NaN):8 with points pt 6 ps 1.2 "
+       "lc rgb '#d62728' title 'unstable'\n";
+  return s;
+}
+
+}  // namespace
+
+int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::string& command) {
+  const ForcedInputs in = ForcedInputsFromArguments(args);
+  ForcedScanOptions so;
+  so.orbit.flow = in.flow;
+  so.max_m = static_cast<int>(args.Integer("max_m", so.max_m));
+  if (so.max_m < 1 || so.max_m > kMaxPeriodMultiple)
+    throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
+                     ": must be an integer in [1, " + std::to_string(kMaxPeriodMultiple) + "]");
+  const FigureFormat format = FigureFormatOf(args);
+  const std::string figure = FigureFile("orbits", format);
+  AppRun app(prog, args, "plots/orbits", {"orbits.tsv", "orbits.gp", figure});
+  app.run().Phase("scanning");
+  so.cancelled = [&] {
+    app.run().Heartbeat("");
+    return app.run().Cancelled();
+  };
+  const ForcedOrbits r = FindForcedOrbits(ForcedModel(in.p), so);
+  app.run().Phase("writing");
+  const std::string title = DescribeModel(in.p.base) + " force=" + FormatNumber(in.p.force) +
+                            " omega=" + FormatNumber(in.p.omega);
+  Metadata meta = RunMetadata(prog, command, in.p.base, in.shown);
+  const std::string partial = r.ok() ? "" : "scan cancelled (" + app.run().Reason() + ")";
+  meta.insert(meta.end(), {{"model", "forced oscillator, " + title},
+                           {"force", FormatNumber(in.p.force)},
+                           {"omega", FormatNumber(in.p.omega)},
+                           {"max_m", std::to_string(so.max_m)},
+                           {"shots", std::to_string(r.shots) + " Newton solves, " +
+                                         std::to_string(r.converged) + " converged"},
+                           {"status", r.ok() ? "complete" : "partial (" + partial + ")"}});
+  TsvTable t({"orbit", "m", "sticks", "crossings", "kind", "point", "x", "xdot", "x_min", "x_max",
+              "xdot_min", "xdot_max", "mult1_re", "mult1_im", "mult2_re", "mult2_im", "mult_max",
+              "stable", "found_by"});
+  t.PrependMeta(meta);
+  int index = 0;
+  for (const ForcedScanOrbit& so_ : r.orbits) {
+    const ForcedOrbit& o = so_.orbit;
+    ++index;
+    for (size_t k = 0; k < so_.points.size(); ++k)
+      t.AddRow({index, o.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
+                static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), o.extremes.x_min,
+                o.extremes.x_max, o.extremes.xdot_min, o.extremes.xdot_max, o.multipliers[0].real(),
+                o.multipliers[0].imag(), o.multipliers[1].real(), o.multipliers[1].imag(),
+                std::abs(o.multipliers[0]), o.stable ? 1 : 0,
+                so_.from_exit_map ? "exit-map" : "strobe"});
+  }
+  app.out().Write("orbits.tsv", t.str());
+  app.out().Write("orbits.gp", OrbitsScript(title, format));
+  if (!app.Finish("orbits.gp", {figure}, {figure})) return kExitFailed;
+  std::cout << prog << ": forced oscillator, " << title << "; " << r.orbits.size()
+            << " periodic orbits with m <= " << so.max_m << "\n";
+  for (const ForcedScanOrbit& so_ : r.orbits)
+    std::cout << "  m = " << so_.orbit.m << ", " << so_.orbit.sticks << " sticks, x_max "
+              << FormatNumber(so_.orbit.extremes.x_max) << ", |multiplier| "
+              << FormatNumber(std::abs(so_.orbit.multipliers[0])) << ", "
+              << (so_.orbit.stable ? "stable" : "unstable") << "\n";
+  std::cout << "wrote " << app.out().dir() << "/orbits.tsv, orbits.gp"
+            << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
+  return app.ExitCode(partial);
+}
+
+}  // namespace stickslip::cli

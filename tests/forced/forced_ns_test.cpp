@@ -1,0 +1,86 @@
+// A Neimark-Sacker point of the forced oscillator (issue 20, item 3: NS
+// "located to 1e-10"): the small non-stop response of a Stribeck belt
+// (mu_s 0.4, mu_k 0.25, v_s 0.2, beta 0.05, A 0.05, Omega 1.5) loses
+// stability as v falls through the negative-damping region, its complex
+// pair leaving the unit circle near the unforced Hopf point
+// 2 beta + mu'(v) = 0 (v = 0.2 ln(7.5) = 0.40298). The reference: the
+// periodic orbit by Newton on the independent long-double stroboscopic map
+// (reference/forced_lyapunov.hpp, RKF78), and v where det(Phi) = |mu|^2 = 1
+// bisected here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "reference/forced_lyapunov.hpp"
+#include "stickslip/forced/branch.hpp"
+
+namespace stickslip {
+namespace {
+
+using reference::LReal;
+
+ForcedParams Scene(double v) {
+  ForcedParams p;
+  p.base.law = LawKind::kStribeck;
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = v;
+  p.force = 0.05, p.omega = 1.5;
+  return p;
+}
+
+// det of the reference map's Jacobian at its fixed point near (x, y).
+LReal RefDet(double v, LReal x, LReal y, bool* ok) {
+  const reference::ForcedRef m(Scene(v));
+  for (int it = 0; it < 20; ++it) {
+    const reference::RefPeriod r = reference::RefOnePeriod(m, x, y, false, 1e-17L);
+    *ok = r.ok && r.sticks == 0;
+    if (!*ok) return 0;
+    // Newton on P(z) - z: (Phi - I) dz = -(P(z) - z).
+    const LReal a = r.phi[0][0] - 1, b = r.phi[0][1], c = r.phi[1][0], d = r.phi[1][1] - 1;
+    const LReal fx = r.x - x, fy = r.y - y, det = a * d - b * c;
+    const LReal dx = -(d * fx - b * fy) / det, dy = -(-c * fx + a * fy) / det;
+    x += dx, y += dy;
+    if (std::abs(dx) + std::abs(dy) < 1e-17L)
+      return r.phi[0][0] * r.phi[1][1] - r.phi[0][1] * r.phi[1][0];
+  }
+  *ok = false;
+  return 0;
+}
+
+TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
+  const ForcedParams p = Scene(0.6);
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.6), rq);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  const ForcedBranch b = ContinueForced(p, ForcedAxis::kV, 0.6, 0.3, tr.end.x, tr.end.xdot, o);
+  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.special.size(), 1u);
+  const ForcedBranchRow& ns = b.special[0];
+  EXPECT_EQ(ns.label, ForcedLabel::kNS);
+  EXPECT_EQ(ns.sticks, 0);
+  EXPECT_NEAR(std::abs(ns.multipliers[0]), 1, 1e-9);
+  EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);  // a complex pair, not +-1
+  // Near the unforced Hopf point (the forcing shifts it by O(A^2)).
+  EXPECT_NEAR(ns.p, 0.2 * std::log(7.5), 0.01);
+  // The reference: det(Phi) - 1 changes sign at the NS; bisect in v.
+  bool ok = false;
+  double lo = ns.p + 0.002, hi = ns.p - 0.002;  // stable at lo, unstable at hi
+  ASSERT_LT(RefDet(lo, ns.x0, ns.xdot0, &ok), 1);
+  ASSERT_TRUE(ok);
+  ASSERT_GT(RefDet(hi, ns.x0, ns.xdot0, &ok), 1);
+  ASSERT_TRUE(ok);
+  for (int i = 0; i < 60 && std::abs(hi - lo) > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (RefDet(mid, ns.x0, ns.xdot0, &ok) < 1 ? lo : hi) = mid;
+    ASSERT_TRUE(ok) << "v = " << mid;
+  }
+  std::printf("[ measured ] NS at v = %.15g, reference %.15g, error %.2e; |mu| - 1 = %.2e\n", ns.p,
+              lo, ns.p - lo, std::abs(ns.multipliers[0]) - 1);
+  EXPECT_NEAR(ns.p, lo, 1e-10);
+}
+
+}  // namespace
+}  // namespace stickslip
