@@ -107,11 +107,9 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
                       const py::object& integrator, const py::object& method,
                       std::optional<ContinuationOptions> options) {
   ContinuationOptions opts = options.value_or(ContinuationOptions());
-  if (param) opts.param = *param;
-  // No range for an unknown name: the options say why.
-  if (!IsParameterName(opts.param)) throw InvalidArgument(opts.ValidationError(base));
+  if (param) opts.param = ParameterAxis(*param);  // InvalidArgument for an unknown name
   if (!options) {  // the library's range for this parameter around base
-    const ParameterRange range = DefaultRange(base, opts.param);
+    const ParameterRange range = DefaultRange(base, opts.param.name());
     opts.from = range.from, opts.to = range.to;
   }
   if (from) opts.from = *from;

@@ -114,7 +114,10 @@ void BindOptions(py::module_& m) {
       .def_readwrite("newton_tol", &OrbitOptions::newton_tol)
       .def("validation_error", &OrbitOptions::ValidationError);
   Options<ContinuationOptions>(m, "ContinuationOptions", "Settings of continue_branch().")
-      .def_readwrite("param", &ContinuationOptions::param, "the continued parameter")
+      .def_property(
+          "param", [](const ContinuationOptions& o) { return o.param.name(); },
+          [](ContinuationOptions& o, const std::string& name) { o.param = ParameterAxis(name); },
+          "the continued parameter (a name; an unknown one raises ValueError)")
       .def_readwrite("from_", &ContinuationOptions::from, "first value of the parameter")
       .def_readwrite("to", &ContinuationOptions::to, "last value of the parameter")
       .def_readwrite("orbit", &ContinuationOptions::orbit)

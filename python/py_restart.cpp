@@ -23,9 +23,8 @@ ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::st
     throw InvalidArgument(lp.label + " is a point of a forced run: continue_forced(point." +
                           "forced_params(), axis, from_, to, *point.state, m=point.m)");
   ContinuationOptions o;
-  o.param = param.value_or(lp.param);
-  if (!IsParameterName(o.param)) throw InvalidArgument(o.ValidationError(lp.params));
-  const ParameterRange r = RangeFromPoint(lp.params, o.param);
+  o.param = ParameterAxis(param.value_or(lp.param));  // InvalidArgument for an unknown name
+  const ParameterRange r = RangeFromPoint(lp.params, o.param.name());
   o.from = r.from, o.to = to.value_or(r.to);
   o.orbit.flow = lp.flow;
   const std::string err = o.ValidationError(lp.params);

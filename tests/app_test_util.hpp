@@ -108,38 +108,6 @@ inline std::string ShellQuoted(const std::string& s) {
   return q + "'";
 }
 
-// The fixture of the apps' end-to-end tests: a fresh directory per test
-// (dir_), removed after it, and RunApp, which runs an app of the build tree
-// through the shell with stdout and stderr captured into out_ and err_.
-class AppTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::string tmpl = ::testing::TempDir() + "ss_app_test_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override {
-    if (!dir_.empty()) {
-      EXPECT_EQ(std::system(("rm -rf " + ShellQuoted(dir_)).c_str()), 0);
-    }
-  }
-  // Runs `bin_dir/app args` (args: shell words) under `timeout -s signal
-  // seconds` (--preserve-status: a signal's exit code is the app's own);
-  // returns its exit code, -1 if it ended by a signal.
-  int RunApp(const std::string& bin_dir, const std::string& app, const std::string& args,
-             const std::string& signal = "KILL", int seconds = 300) {
-    const std::string cmd = "timeout --preserve-status -s " + signal + " " +
-                            std::to_string(seconds) + " " + ShellQuoted(bin_dir + "/" + app) + " " +
-                            args + " >" + ShellQuoted(dir_ + "/stdout") + " 2>" +
-                            ShellQuoted(dir_ + "/stderr");
-    const int status = std::system(cmd.c_str());
-    out_ = ReadFile(dir_ + "/stdout");
-    err_ = ReadFile(dir_ + "/stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::string dir_, out_, err_;
-};
-
 // How to run an app in a child process.
 struct Launch {
   std::string out_path = "/dev/null", err_path = "/dev/null";  // stdout, stderr
@@ -255,5 +223,66 @@ inline Outcome RunChild(const std::string& app, const std::vector<std::string>& 
   }
   return Wait(pid, l);
 }
+
+// The fixture of the apps' end-to-end tests: a fresh directory per test
+// (dir_), removed after it, and RunApp, which runs an app of the build tree
+// through the shell with stdout and stderr captured into out_ and err_
+// (RunOut: without a shell, with --out and --no_plots).
+class AppTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = ::testing::TempDir() + "ss_app_test_XXXXXX";
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override {
+    if (!dir_.empty()) {
+      EXPECT_EQ(std::system(("rm -rf " + ShellQuoted(dir_)).c_str()), 0);
+    }
+  }
+  // Runs `bin_dir/app args` (args: shell words) under `timeout -s signal
+  // seconds` (--preserve-status: a signal's exit code is the app's own);
+  // returns its exit code, -1 if it ended by a signal.
+  int RunApp(const std::string& bin_dir, const std::string& app, const std::string& args,
+             const std::string& signal = "KILL", int seconds = 300) {
+    const std::string cmd = "timeout --preserve-status -s " + signal + " " +
+                            std::to_string(seconds) + " " + ShellQuoted(bin_dir + "/" + app) + " " +
+                            args + " >" + ShellQuoted(dir_ + "/stdout") + " 2>" +
+                            ShellQuoted(dir_ + "/stderr");
+    const int status = std::system(cmd.c_str());
+    out_ = ReadFile(dir_ + "/stdout");
+    err_ = ReadFile(dir_ + "/stderr");
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  // A fresh directory under dir_, for each run of a test that runs apps
+  // more than once.
+  std::string NewDir() {
+    const std::string d = dir_ + "/run" + std::to_string(++runs_);
+    EXPECT_EQ(::mkdir(d.c_str(), 0755), 0) << d;
+    return d;
+  }
+  struct AppRun {
+    Outcome outcome;
+    std::string out, err;
+  };
+  // Runs the app `app` of the build tree (no shell) with argv words args, then
+  // "--out dir/out" and --no_plots (unless plots); stdout and stderr go to
+  // dir/stdout and dir/stderr and into the result.
+  AppRun RunOut(const std::string& app, const std::string& dir, std::vector<std::string> args,
+                bool plots = false) {
+    Launch l;
+    l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
+    args.insert(args.end(), {"--out", dir + "/out"});
+    if (!plots) args.push_back("--no_plots");
+    AppRun r;
+    r.outcome = RunChild(std::string(STICKSLIP_BIN_DIR) + "/" + app, args, l);
+    r.out = ReadFile(l.out_path), r.err = ReadFile(l.err_path);
+    return r;
+  }
+  std::string dir_, out_, err_;
+
+ private:
+  int runs_ = 0;
+};
 
 }  // namespace stickslip::testing_util

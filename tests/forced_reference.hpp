@@ -25,6 +25,14 @@ inline ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, dou
   return p;
 }
 
+/// Den Hartog (1931), the non-stop amplitude of the undamped Coulomb belt at
+/// rest: X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
+/// U = sin(pi / W) / (W (1 + cos(pi / W))).
+inline double DenHartogX(double mu, double a, double w) {
+  const double V = a / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
+  return std::sqrt(V * V - mu * mu * U * U);
+}
+
 using reference::Real;
 
 struct Setup {

@@ -133,16 +133,18 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
                           "(--mass --damping --stiffness --belt_speed ...), or use --param " +
                           axis->dimensionless);
   const double to_param = physical_param ? axis->factor : 1.0;  // dimensionless per given
-  opts.param = physical_param ? axis->dimensionless : asked;
+  const std::string name = physical_param ? axis->dimensionless : asked;
+  if (!ss::IsParameterName(name))  // parsed once, here: the library takes the axis
+    throw cli::UsageError("--param: unknown parameter '" + name + "' (expected one of " +
+                          ss::ParameterNameList() + ")");
+  opts.param = ss::ParameterAxis(name);
   // Each parameter's own default range (v 0.05 -> 0.5, beta 0.01 -> 0.3, ...).
-  ss::ParameterRange range{0.05, 0.5};
-  if (ss::IsParameterName(opts.param)) {
-    const ss::Params given = cli::UncheckedModelFromArguments(args, defaults);
-    // A restart runs from the point to the far end of the default range.
-    range = point ? ss::RangeFromPoint(given, opts.param) : ss::DefaultRange(given, opts.param);
-  }
+  const ss::Params given = cli::UncheckedModelFromArguments(args, defaults);
+  // A restart runs from the point to the far end of the default range.
+  const ss::ParameterRange range =
+      point ? ss::RangeFromPoint(given, name) : ss::DefaultRange(given, name);
   opts.from = args.Number("from", range.from / to_param) * to_param;
-  *base = cli::ModelFromArguments(args, opts.param, opts.from, defaults);
+  *base = cli::ModelFromArguments(args, opts.param.name(), opts.from, defaults);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args, point ? point->flow : ss::FlowOptions());
   opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
@@ -166,8 +168,8 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
                   const std::string& model, double seconds) {
   int counts[3] = {0, 0, 0};
   for (const auto& pt : r.points) ++counts[static_cast<int>(pt.kind)];
-  std::cout << kProg << ": " << opts.param << " from " << opts.from << " to " << opts.to << "; "
-            << model << "\n"
+  std::cout << kProg << ": " << opts.param.name() << " from " << opts.from << " to " << opts.to
+            << "; " << model << "\n"
             << r.points.size() << " points: " << counts[0] << " stick-slip, " << counts[1]
             << " pure-slip, " << counts[2] << " equilibrium, in " << Fixed(seconds * 1e3, 1)
             << " ms\n";
@@ -184,9 +186,9 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
   std::cout << "special points:\n";
   if (r.special.empty()) std::cout << "  none\n";
   for (const auto& s : r.special) {
-    std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param << " = " << Fixed(s.p, 12)
-              << "  period " << Fixed(s.period, 6) << "  x in [" << Fixed(s.x_min, 6) << ", "
-              << Fixed(s.x_max, 6) << "]  " << s.description << "\n";
+    std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param.name() << " = "
+              << Fixed(s.p, 12) << "  period " << Fixed(s.period, 6) << "  x in ["
+              << Fixed(s.x_min, 6) << ", " << Fixed(s.x_max, 6) << "]  " << s.description << "\n";
   }
 }
 
@@ -195,14 +197,14 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
 cli::Metadata FileMetadata(const std::string& command, const ss::Params& base,
                            const ss::ContinuationOptions& opts,
                            const std::optional<cli::Scales>& scales) {
-  cli::Metadata meta = cli::RunMetadata(kProg, command, base, opts.orbit.flow, opts.param);
-  meta.insert(meta.end(), {{"continued", opts.param},
+  cli::Metadata meta = cli::RunMetadata(kProg, command, base, opts.orbit.flow, opts.param.name());
+  meta.insert(meta.end(), {{"continued", opts.param.name()},
                            {"from", ss::FormatNumber(opts.from)},
                            {"to", ss::FormatNumber(opts.to)},
                            {"max_step", ss::FormatNumber(opts.max_step)},
                            {"newton_tol", ss::FormatNumber(opts.orbit.EffectiveNewtonTol())},
                            {"locate_tol", ss::FormatNumber(opts.locate_tol)}});
-  if (scales) AddScales(*scales, opts.param, meta);
+  if (scales) AddScales(*scales, opts.param.name(), meta);
   return meta;
 }
 
@@ -254,7 +256,8 @@ ss::EstimateComparison Estimates(const ss::Params& base, const ss::ContinuationO
   ss::EstimateComparison cmp;
   run.Phase("comparing with the estimates");
   try {
-    cmp = ss::CompareEstimates(base, opts.param, r, 2001, [&run] { return run.Cancelled(); });
+    cmp =
+        ss::CompareEstimates(base, opts.param.name(), r, 2001, [&run] { return run.Cancelled(); });
   } catch (const ss::InvalidArgument& e) {  // outside the estimates' own assumptions
     cmp = ss::EstimateComparison();
     cmp.reason = e.what();
@@ -271,7 +274,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
             ss::FigureFormat format) {
   cli::RunControl& run = app.run();
   const double seconds = run.Elapsed();
-  const std::string model = cli::DescribeModel(base, opts.param, opts.from, opts.to);
+  const std::string model = cli::DescribeModel(base, opts.param.name(), opts.from, opts.to);
   ss::EstimateComparison cmp;
   if (estimates && !run.Cancelled()) cmp = Estimates(base, opts, r, run);
   // Estimate columns first (the figure script counts on their numbers), then
@@ -279,28 +282,28 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   std::vector<ss::ExtraColumn> extra = cmp.columns;
   run.Phase("smallest disturbances");
   auto cancelled = [&run] { return run.Cancelled(); };
-  for (auto& c : ss::DisturbanceColumns(base, opts.param, r, opts.orbit.flow, cancelled))
+  for (auto& c : ss::DisturbanceColumns(base, opts.param.name(), r, opts.orbit.flow, cancelled))
     extra.push_back(std::move(c));
   ss::ExtraColumn stalled{"newton_stalled", {}};
   for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
   extra.push_back(std::move(stalled));
   std::vector<ss::ExtraColumn> special_extra;
   if (prov.scales) {  // physical copies last
-    const auto phys = PhysicalColumns(*prov.scales, opts.param, r.points);
+    const auto phys = PhysicalColumns(*prov.scales, opts.param.name(), r.points);
     extra.insert(extra.end(), phys.begin(), phys.end());
-    special_extra = PhysicalColumns(*prov.scales, opts.param, r.special);
+    special_extra = PhysicalColumns(*prov.scales, opts.param.name(), r.special);
   }
   run.Phase("writing");
-  ss::TsvTable branch = ss::BranchTable(r, opts.param, model, extra);
+  ss::TsvTable branch = ss::BranchTable(r, opts.param.name(), model, extra);
   branch.PrependMeta(prov.meta);
-  ss::TsvTable special = ss::SpecialPointTable(r, opts.param, special_extra);
+  ss::TsvTable special = ss::SpecialPointTable(r, opts.param.name(), special_extra);
   special.PrependMeta(prov.meta);
   app.out().Write("branch.tsv", branch.str());
   app.out().Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   app.out().Write("bifurcation.gp",
-                  ss::BifurcationScript(r, opts.param, title, cmp.applies, format,
-                                        cli::FigureUnitsOf(prov.scales, opts.param)));
+                  ss::BifurcationScript(r, opts.param.name(), title, cmp.applies, format,
+                                        cli::FigureUnitsOf(prov.scales, opts.param.name())));
   if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies, format),
                   ss::BifurcationFigures(true, format)))
     return cli::kExitFailed;
@@ -311,7 +314,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
                     ? std::string(" and the ") + ss::FigureFormatName(format) + " figures"
                     : std::string())
             << "\n";
-  if (cmp.applies && !cmp.rows.empty() && !cmp.cancelled) PrintComparison(cmp, opts.param);
+  if (cmp.applies && !cmp.rows.empty() && !cmp.cancelled) PrintComparison(cmp, opts.param.name());
   std::string partial;
   if (r.partial())
     partial = "partial branch written (" + std::string(ss::ContinuationStatusName(r.status)) +

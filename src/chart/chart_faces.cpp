@@ -9,12 +9,13 @@
 #include <utility>
 
 #include "chart/chart_segments.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
 namespace {
 // Coordinates are scaled to the unit square; kTol is a vertex's snap radius.
-constexpr double kTol = 1e-9;
+constexpr double kTol = Tolerances::kFaceSnap;
 using P = Point2;
 using Ring = std::vector<int>;
 
@@ -63,7 +64,8 @@ std::vector<std::array<int, 2>> SplitSegments(const std::vector<Segment>& segs, 
       const P s = Sub(b[1], b[0]);
       const double ls = std::hypot(s[0], s[1]);
       const double d = Cross(r, s);
-      if (std::abs(d) <= 1e-14 * lr * ls) continue;  // parallel: ends snap as vertices
+      if (std::abs(d) <= Tolerances::kFaceParallel * lr * ls)
+        continue;  // parallel: ends snap as vertices
       const P qp = Sub(b[0], a[0]);
       const double t = Cross(qp, s) / d, u = Cross(qp, r) / d;
       if (t < -kTol / lr || t > 1 + kTol / lr || u < -kTol / ls || u > 1 + kTol / ls) continue;
@@ -227,7 +229,8 @@ Ring Simplified(const std::vector<P>& v, const Ring& r) {
   const size_t n = r.size();
   for (size_t i = 0; i < n; ++i) {
     const P a = Sub(v[r[i]], v[r[(i + n - 1) % n]]), b = Sub(v[r[(i + 1) % n]], v[r[i]]);
-    if (std::abs(Cross(a, b)) > 1e-12 * std::hypot(a[0], a[1]) * std::hypot(b[0], b[1]) ||
+    if (std::abs(Cross(a, b)) >
+            Tolerances::kFaceCollinear * std::hypot(a[0], a[1]) * std::hypot(b[0], b[1]) ||
         Dot(a, b) < 0)
       out.push_back(r[i]);
   }

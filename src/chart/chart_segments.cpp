@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
+
 namespace stickslip {
 
 namespace {
@@ -55,7 +57,8 @@ std::vector<Segment> UnitSegments(const Plane& plane,
       Point2 b{(line[i + 1][0] - plane.from1) / plane.width1(),
                (line[i + 1][1] - plane.from2) / plane.width2()};
       if (!std::isfinite(a[0] + a[1] + b[0] + b[1]) || !Clip(a, b)) continue;
-      if (std::hypot(b[0] - a[0], b[1] - a[1]) > 1e-12) segs.push_back({a, b});
+      if (std::hypot(b[0] - a[0], b[1] - a[1]) > Tolerances::kSegmentMinLength)
+        segs.push_back({a, b});
     }
     first.push_back(segs.size());
     if (segs.size() > begin)
@@ -78,7 +81,7 @@ std::vector<Segment> UnitSegments(const Plane& plane,
         if (j != k)
           for (size_t s = first[j]; s < first[j + 1]; ++s) consider(Nearest(segs[s], p));
       if (first[k + 1] - first[k] > 2) consider(ends[k][1 - e]);
-      if (best > 1e-12 && best < kEndSnap) segs.push_back({p, to});
+      if (best > Tolerances::kSegmentMinLength && best < kEndSnap) segs.push_back({p, to});
     }
   return segs;
 }

@@ -47,9 +47,10 @@ bool FoldCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Ei
   *f << s.g, s.dg;
   if (chord_stale_) {
     chord_.resize(2, 3);
-    const double h[3] = {1e-4 * std::max(u[0], 1e-2),
-                         Tolerances().chart_difference * plane_.width1(),
-                         Tolerances().chart_difference * plane_.width2()};
+    const double h[3] = {
+        Tolerances::kFoldAmplitudeStep * std::max(u[0], Tolerances::kFoldAmplitudeFloor),
+        Tolerances().chart_difference * plane_.width1(),
+        Tolerances().chart_difference * plane_.width2()};
     for (int k = 0; k < 3; ++k) {
       Eigen::VectorXd uh = u;
       uh[k] += h[k];

@@ -83,7 +83,8 @@ Newton2Result LocateGrazingFold(const Params& base, const Plane& plane, const Or
     *value << s.gap, s.multiplier - 1.0;
     return true;
   };
-  return Newton2(f, Eigen::Vector2d(x1, x2), 1e-12, 1e-6);
+  return Newton2(f, Eigen::Vector2d(x1, x2), Tolerances::kGrazingNewtonTol,
+                 Tolerances::kGrazingNewtonStep);
 }
 
 }  // namespace stickslip

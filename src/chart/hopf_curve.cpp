@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/model/friction.hpp"
 
 namespace stickslip {
@@ -13,7 +14,9 @@ double HopfCriticality(const Params& p) { return -Friction(p).D3Mu(p.v) / 16.0; 
 double HopfCurveProblem::Partial(const Params& p, const std::string& name) const {
   if (name == "beta") return 2.0;
   if (name == "v") return Friction(p).D2Mu(p.v);
-  const double x = GetParameter(p, name), h = 1e-6 * std::max(std::abs(x), 1e-3);
+  const double x = GetParameter(p, name),
+               h = Tolerances::kHopfDifference *
+                   std::max(std::abs(x), Tolerances::kHopfDifferenceFloor);
   Params lo = p, hi = p;
   SetParameter(lo, name, x - h);
   SetParameter(hi, name, x + h);

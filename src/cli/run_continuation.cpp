@@ -8,8 +8,8 @@
 #include <thread>
 #include <vector>
 
-#include "stickslip/io/branch_report.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/io/branch_report.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
@@ -46,7 +46,7 @@ ContinuationResult ContinueAsStatus(const Params& base, const ContinuationOption
   std::lock_guard<std::mutex> lock(sh.m);
   r.points = sh.points;
   r.status = ContinuationStatus::kFailed;
-  r.message = "numerical failure in the continuation near " + opts.param + " = " +
+  r.message = "numerical failure in the continuation near " + opts.param.name() + " = " +
               FormatNumber(sh.last) + ": " + why;
   return r;
 }
@@ -58,7 +58,7 @@ ContinuationResult ContinueAsStatus(const Params& base, const ContinuationOption
 ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts, RunControl& run) {
   auto sh = std::make_shared<Shared>();
   sh->last = opts.from;
-  const std::string param = opts.param;
+  const std::string param = opts.param.name();
   // Polled after every integration step (a few microseconds): no clock here.
   // The main thread below reads the clock every 50 ms and sets sh->cancel.
   opts.cancelled = [sh, &run] {
@@ -72,9 +72,10 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
     sh->last = pt.p;
     sh->points.push_back(pt);
     if (run.ProgressDue())
-      run.Progress(opts.param + " = " + FormatNumber(pt.p) + " (" + PointKindName(pt.kind) + ")",
-                   (pt.p - opts.from) / (opts.to - opts.from),
-                   static_cast<double>(sh->points.size()), "points");
+      run.Progress(
+          opts.param.name() + " = " + FormatNumber(pt.p) + " (" + PointKindName(pt.kind) + ")",
+          (pt.p - opts.from) / (opts.to - opts.from), static_cast<double>(sh->points.size()),
+          "points");
   };
   run.Phase("continuing");
   std::thread worker([sh, &base, &opts] {

@@ -19,11 +19,11 @@ BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
       hi_(std::max(o.from, o.to)),
       dir_(o.to > o.from ? 1.0 : -1.0),
       column_(o.orbit.flow.integrator == Integrator::kTaylor &&
-              ParameterColumnSupported(base.law, o.param)),
+              ParameterColumnSupported(base.law, o.param.name())),
       phase_start_(std::chrono::steady_clock::now()) {
   finder_.set_floquet(false);
   if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
-  res_.param = o.param;
+  res_.param = o.param.name();
 }
 
 bool BranchContext::Stop() {
@@ -144,7 +144,7 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
 }
 
 bool BranchContext::NearHopf(double p, double slack) const {
-  const double d = std::max(tuning::kNearHopf * range_, slack);
+  const double d = std::max(Tolerances::kNearHopf * range_, slack);
   for (const auto& h : hopf_)
     if (std::abs(h.first - p) <= d) return true;
   return false;
@@ -172,7 +172,7 @@ void BranchContext::AddHopfEnd(double p_near, bool stable) {
 bool BranchContext::GrazingVisited(double p) const {
   for (const SpecialPoint& sp : res_.special)
     if (sp.kind == SpecialKind::kGrazing &&
-        std::abs(sp.p - p) <= tuning::kSameGrazing * o_.locate_tol)
+        std::abs(sp.p - p) <= Tolerances::kSameGrazing * o_.locate_tol)
       return true;
   return false;
 }
@@ -206,7 +206,7 @@ void BranchContext::Enter(Phase phase) {
 ContinuationResult BranchContext::Finish() {
   Enter(phase_);
   res_.counts.integrator_steps = finder_.flow().total_steps();
-  return res_;
+  return std::move(res_);  // no copy of a long result (a cancel returns at once)
 }
 
 }  // namespace stickslip

@@ -1,6 +1,6 @@
 // Internal to the continuation: the state every branch tracer shares (the
 // parameter axis, the orbit finder, the result so far with its counts and
-// timings, the Hopf points found) and the tuning constants, named once.
+// timings, the Hopf points found). Its step constants: Tolerances (tolerances.hpp).
 #pragma once
 
 #include <algorithm>
@@ -10,49 +10,12 @@
 #include <utility>
 #include <vector>
 
-#include "stickslip/continuation/continuation.hpp"
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip {
-namespace tuning {
-// Steps of a stick-slip branch: halve when an orbit measure changes by more
-// than kHalveAbove * max_step, grow by kGrow when it changes by less than
-// kGrowBelow * max_step.
-constexpr double kHalveAbove = 5, kGrowBelow = 2, kGrow = 1.5;
-// A pure-slip branch ends at a Hopf point below this section amplitude (closer,
-// shooting loses accuracy), if a Hopf point lies within kNearHopf * range or
-// within kHopfSlack times the distance to where a^2, extrapolated linearly,
-// vanishes. A step that would end it from above kHopfFrom * kAmplitudeEnd is
-// halved instead.
-constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05, kHopfSlack = 2, kHopfFrom = 2;
-// Pure-slip corrector: at most kMaxCorrector Newton steps (stall test:
-// NewtonConverged in palc.hpp); the step grows (kGrow) after a correction in
-// at most kFastCorrector steps.
-constexpr int kMaxCorrector = 8, kFastCorrector = 3;
-// A row is read at its p: one more Newton step in a at fixed p when the
-// amplitude's correction -G / G_a exceeds kPolish * rtol * max(1, a).
-constexpr double kPolish = 0.1;
-// A pure-slip step that sticks looks for a grazing point when the last orbit
-// came within kNearTouch * max(kNearTouchMin, v) of the belt speed, or the
-// step is within kSmallStep * min_step; the search grows by kSearchGrow over
-// at most kSearchSteps steps.
-constexpr double kNearTouch = 0.1, kNearTouchMin = 0.05, kSmallStep = 4, kSearchGrow = 1.5;
-constexpr int kSearchSteps = 12;
-// Grazing points closer than kSameGrazing * locate_tol are the same point.
-constexpr double kSameGrazing = 1e3;
-// Probes beside a grazing point, as max(fraction * range, factor * locate_tol):
-// stick-slip side, pure-slip side. The pure-slip probe also stays
-// kSlipProbeRtol * rtol * range away: the grazing point is the gap's root, the
-// probe a shooting, and the two place the touch as far apart as their
-// integration errors (8e-5 in v for stribeck, cvode, rtol 1e-4).
-constexpr double kStickProbe = 1e-6, kStickProbeTol = 10;
-constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100, kSlipProbeRtol = 10;
-// Smallest scale of p-steps, relative to max(1, |p|) (BranchContext::LocalScale).
-constexpr double kMinScale = 1e-3;
-// Landing on a range end: the step guess never below this amplitude.
-constexpr double kLandMinAmplitude = 1e-3;
-}  // namespace tuning
 
 // Where a branch starts and what it is.
 struct BranchStart {
@@ -93,7 +56,7 @@ class BranchContext {
   // set the steps, nor a tiny one (1e-10) the corrector's tolerance in p.
   double LocalScale(double p) const {
     const double s = std::max(1.0, std::abs(p));
-    return std::max(std::min(range_, s), tuning::kMinScale * s);
+    return std::max(std::min(range_, s), Tolerances::kMinScale * s);
   }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
@@ -109,6 +72,8 @@ class BranchContext {
   // Records the first failure; later ones are dropped.
   void Fail(const std::string& where, const std::string& what);
   void Add(const BranchPoint& pt);
+  // Room for n more points: one reallocation instead of many.
+  void Reserve(size_t n) { res_.points.reserve(res_.points.size() + n); }
   void AddSpecial(const SpecialPoint& sp) { res_.special.push_back(sp); }
   // A periodic point of the current branch; a: pure slip's section amplitude.
   BranchPoint FromOrbit(double p, const Orbit& o, double a) const;

@@ -17,11 +17,9 @@ const char* SpecialLabel(SpecialKind k) { return Name(k); }
 const char* ContinuationStatusName(ContinuationStatus s) { return Name(s); }
 
 std::string ContinuationOptions::ValidationError(const Params& base) const {
-  if (!IsParameterName(param))
-    return "unknown parameter '" + param + "' (expected one of " + ParameterNameList() + ")";
   const auto names = ParameterNames(base.law);
-  if (std::find(names.begin(), names.end(), param) == names.end())
-    return "parameter '" + param + "' does not apply to the " + LawName(base.law) + " law";
+  if (std::find(names.begin(), names.end(), param.name()) == names.end())
+    return "parameter '" + param.name() + "' does not apply to the " + LawName(base.law) + " law";
   if (!std::isfinite(from)) return "from = " + Num(from) + " is not a finite number";
   if (!std::isfinite(to)) return "to = " + Num(to) + " is not a finite number";
   if (from == to) return "from = to = " + Num(from) + ": the range is empty";
@@ -34,10 +32,8 @@ std::string ContinuationOptions::ValidationError(const Params& base) const {
     return "locate_tol = " + Num(locate_tol) + " must be in (0, 1e-3)";
   if (max_points < 2) return "max_points = " + Num(max_points) + " must be >= 2";
   for (double p : {from, to}) {
-    Params q = base;
-    SetParameter(q, param, p);
-    const std::string err = stickslip::ValidationError(q);
-    if (!err.empty()) return "at " + param + " = " + Num(p) + ": " + err;
+    const std::string err = stickslip::ValidationError(param.At(base, p));
+    if (!err.empty()) return "at " + param.name() + " = " + Num(p) + ": " + err;
   }
   return orbit.ValidationError();
 }
@@ -114,6 +110,7 @@ ContinuationResult Run(BranchContext& ctx) {
   // Steady sliding follows (or comes first, if nothing starts at `from`). It is
   // exact and already computed: kept even in a partial result, with its Hopf
   // points.
+  ctx.Reserve(eq_rows.size());
   for (auto& pt : eq_rows) {
     pt.branch = eq_id;
     ctx.Add(pt);

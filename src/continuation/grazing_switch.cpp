@@ -33,8 +33,8 @@ BranchPoint GrazingRow(const BranchContext& ctx, const Model& m, const SpecialPo
 // From pure slip into stick slip: stick-slip orbits exist where the gap is positive.
 BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
-  const double d = std::max(tuning::kStickProbe * ctx.LocalScale(p_gr),
-                            tuning::kStickProbeTol * ctx.options().locate_tol);
+  const double d = std::max(Tolerances::kStickProbe * ctx.LocalScale(p_gr),
+                            Tolerances::kStickProbeTol * ctx.options().locate_tol);
   const double side = p_gr + d <= ctx.hi() ? 1.0 : -1.0;  // probe inside the range
   double gap_probe = 0;
   if (!ctx.GrazingGapAt(p_gr + side * d, &gap_probe)) {
@@ -64,9 +64,9 @@ BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowRes
   const double p_gr = end.p;
   const double a_gr = run.x_max - Model(ctx.At(p_gr)).SteadySliding().x;
   const double scale = ctx.LocalScale(p_gr);
-  const double d =
-      std::max({tuning::kSlipProbe * scale, tuning::kSlipProbeTol * ctx.options().locate_tol,
-                tuning::kSlipProbeRtol * ctx.options().orbit.flow.rtol * scale});
+  const double d = std::max({Tolerances::kSlipProbe * scale,
+                             Tolerances::kSlipProbeTol * ctx.options().locate_tol,
+                             Tolerances::kSlipProbeRtol * ctx.options().orbit.flow.rtol * scale});
   for (double side : {end.dir, -end.dir}) {
     const double q = p_gr + side * d;
     if (q < ctx.lo() || q > ctx.hi()) continue;
@@ -99,8 +99,8 @@ bool GrazingAhead(BranchContext& ctx, double p, double dp_sign, double step, dou
   double gap0 = 0;
   if (!ctx.GrazingGapAt(p, &gap0)) return false;
   double q = p;
-  for (int k = 0; k < tuning::kSearchSteps; ++k) {
-    double q2 = p + dp_sign * step * std::pow(tuning::kSearchGrow, k);
+  for (int k = 0; k < Tolerances::kSearchSteps; ++k) {
+    double q2 = p + dp_sign * step * std::pow(Tolerances::kSearchGrow, k);
     q2 = std::min(ctx.hi(), std::max(ctx.lo(), q2));
     double gap2 = 0;
     const bool ok = ctx.GrazingGapAt(q2, &gap2);

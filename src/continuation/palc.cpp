@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "numerics/stall.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -38,7 +39,7 @@ std::string PalcOptions::ValidationError(int unknowns) const {
 bool NewtonConverged(double step, double last_step, int iteration, double tol, bool* stalled) {
   *stalled = false;
   if (step < tol) return true;
-  if (iteration > 2 && step < 1e3 * tol && step > 0.5 * last_step) {
+  if (NewtonStalled(step, last_step, iteration, tol)) {  // the one stall test
     *stalled = true;
     return true;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
@@ -63,7 +64,7 @@ bool GrazesInsideStickBand(const Model& m, const FlowResult& run) {
   const double x0 = m.ExitPoint()[0];
   const double x_fold = x0 + m.Acceleration(Mode::kSlipBelow, x0, m.v());
   const double jump = x0 - x_fold;
-  return jump > 1e-9 * (1 + std::abs(x0)) && x0 - run.z[0] > 0.5 * jump;
+  return jump > Tolerances::kFoldJump * (1 + std::abs(x0)) && x0 - run.z[0] > 0.5 * jump;
 }
 
 SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run) {
@@ -109,13 +110,13 @@ bool LocateFold(const CurveFunction& g, double a0, double p0, double a1, double 
   // p(a) on the curve by a secant on G(a, .) from the chord's p.
   auto p_of_a = [&](double a) {
     const double t = (a - a0) / (a1 - a0);
-    double q0 = p0 + t * (p1 - p0), q1 = q0 + 1e-6 * p_scale;
+    double q0 = p0 + t * (p1 - p0), q1 = q0 + Tolerances::kFoldSecantStep * p_scale;
     double g0 = 0, g1 = 0;
     if (!g(a, q0, &g0) || !g(a, q1, &g1)) {
       ok = false;
       return q0;
     }
-    for (int it = 0; it < 30 && std::abs(q1 - q0) > 1e-14 * p_scale; ++it) {
+    for (int it = 0; it < 30 && std::abs(q1 - q0) > Tolerances::kFoldSecantTol * p_scale; ++it) {
       if (g1 == g0) break;
       const double q2 = q1 - g1 * (q1 - q0) / (g1 - g0);
       q0 = q1;
@@ -128,8 +129,8 @@ bool LocateFold(const CurveFunction& g, double a0, double p0, double a1, double 
     }
     return minimum ? q1 : -q1;
   };
-  const RootResult r =
-      FindMinimum(p_of_a, std::min(a0, a1), std::max(a0, a1), 1e-7 * std::max(1.0, std::abs(a1)));
+  const RootResult r = FindMinimum(p_of_a, std::min(a0, a1), std::max(a0, a1),
+                                   Tolerances::kFoldAmplitudeTol * std::max(1.0, std::abs(a1)));
   if (!ok || !r.ok) return false;
   *a_fold = r.x;
   *p_fold = minimum ? r.fx : -r.fx;

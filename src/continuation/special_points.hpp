@@ -9,10 +9,10 @@
 #include <functional>
 #include <string>
 
-#include "stickslip/continuation/continuation.hpp"
-#include "stickslip/orbits/orbit.hpp"
-#include "stickslip/model/parameter_axis.hpp"
 #include "numerics/roots.hpp"
+#include "stickslip/continuation/continuation.hpp"
+#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 

@@ -86,9 +86,9 @@ PalcOptions CurveOptions(const ContinuationOptions& o, double R) {
   PalcOptions p;
   p.ds = p.ds_max = 2 * o.max_step;
   p.ds_min = std::min(o.min_step, p.ds);
-  p.max_newton = tuning::kMaxCorrector;
-  p.fast_iterations = tuning::kFastCorrector;
-  p.grow = tuning::kGrow;
+  p.max_newton = Tolerances::kMaxCorrector;
+  p.fast_iterations = Tolerances::kFastCorrector;
+  p.grow = Tolerances::kGrow;
   p.tol = o.orbit.EffectiveNewtonTol();
   p.scale = Eigen::Vector2d(1.0, R);
   p.max_points = o.max_points + 1;  // the start and max_points steps
@@ -105,7 +105,8 @@ class PureSlipTracer : public PalcHooks {
         R_(ctx.LocalScale(s.p)),
         ds_min_(std::min(o_.min_step, 2 * o_.max_step)),
         // Forward-difference step for dG/dp, balanced against the integration error.
-        curve_(ctx, std::max(1e-7, std::sqrt(o_.orbit.flow.rtol)) * std::max(R_, std::abs(s.p))),
+        curve_(ctx, std::max(Tolerances::kBranchDifferenceFloor, std::sqrt(o_.orbit.flow.rtol)) *
+                        std::max(R_, std::abs(s.p))),
         palc_(curve_, Options()),
         hopf_pending_(s.from_hopf),
         p_hopf_start_(s.p) {}
@@ -176,7 +177,7 @@ bool PureSlipTracer::Start(const BranchStart& s, PalcPoint* first) {
 bool PureSlipTracer::Land(double end, double a_guess) {
   Orbit o;
   double a_end = 0;
-  if (!ctx_.PureSlipAtFixedP(end, std::max(a_guess, tuning::kLandMinAmplitude), &o, &a_end))
+  if (!ctx_.PureSlipAtFixedP(end, std::max(a_guess, Tolerances::kLandMinAmplitude), &o, &a_end))
     return false;
   if (hopf_pending_) ctx_.AddHopfEnd(p_hopf_start_, o.stable);
   ctx_.Add(ctx_.FromOrbit(end, o, a_end));
@@ -196,7 +197,7 @@ bool PureSlipTracer::Shrink(double* ds, double p, const std::string& why) {
 BranchEnd PureSlipTracer::AtHopf(const PalcPoint& last) {
   const double a = last.u[0], p = last.u[1];
   const double to_zero = std::abs(a * last.tangent[1] * R_ / (2 * last.tangent[0]));
-  if (!ctx_.NearHopf(p, tuning::kHopfSlack * to_zero)) {
+  if (!ctx_.NearHopf(p, Tolerances::kHopfSlack * to_zero)) {
     ctx_.Fail("pure-slip branch at " + ctx_.Where(p),
               "the amplitude shrinks to zero away from any Hopf point");
     return {BranchEnd::kStopped};
@@ -219,8 +220,8 @@ PalcAction PureSlipTracer::Predicted(const PalcPoint& last, const Eigen::VectorX
     return Shrink(ds, end, "no convergence at the range end") ? PalcAction::kRetry
                                                               : PalcAction::kEnd;
   }
-  if (!hopf_pending_ && last.tangent[0] < 0 && pred[0] < tuning::kAmplitudeEnd) {
-    if (a <= tuning::kHopfFrom * tuning::kAmplitudeEnd) return End(AtHopf(last));
+  if (!hopf_pending_ && last.tangent[0] < 0 && pred[0] < Tolerances::kAmplitudeEnd) {
+    if (a <= Tolerances::kHopfFrom * Tolerances::kAmplitudeEnd) return End(AtHopf(last));
     return Shrink(ds, p, "no step approaches the Hopf point") ? PalcAction::kRetry
                                                               : PalcAction::kEnd;
   }
@@ -233,9 +234,9 @@ PalcAction PureSlipTracer::Rejected(const PalcPoint& last, const PalcCorrection&
                                     const Eigen::VectorXd& pred, double* ds) {
   ctx_.counts().newton_iterations += c.iterations;
   const double p = last.u[1];
-  const bool near_touch =
-      last_v_ - last_xdot_max_ < tuning::kNearTouch * std::max(tuning::kNearTouchMin, last_v_);
-  if (curve_.stuck && !hopf_pending_ && (near_touch || *ds <= tuning::kSmallStep * ds_min_)) {
+  const bool near_touch = last_v_ - last_xdot_max_ <
+                          Tolerances::kNearTouch * std::max(Tolerances::kNearTouchMin, last_v_);
+  if (curve_.stuck && !hopf_pending_ && (near_touch || *ds <= Tolerances::kSmallStep * ds_min_)) {
     const double dp_sign = last.tangent[1] > 0 ? 1.0 : -1.0;
     double p_gr = 0;
     if (GrazingAhead(ctx_, p, dp_sign, std::abs(pred[1] - p), &p_gr))
@@ -255,7 +256,8 @@ PalcAction PureSlipTracer::Rejected(const PalcPoint& last, const PalcCorrection&
 // noise; curve_.map follows.
 double PureSlipTracer::Polish(const PalcCorrection& c) {
   const double a = c.u[0], da = -c.f[0] / c.jac(0, 0);
-  if (!std::isfinite(da) || std::abs(da) <= tuning::kPolish * o_.orbit.flow.rtol * std::max(1.0, a))
+  if (!std::isfinite(da) ||
+      std::abs(da) <= Tolerances::kPolish * o_.orbit.flow.rtol * std::max(1.0, a))
     return a;
   double g = 0, ga = 0;  // ga: the map's multiplier P' comes with it
   ReturnMap map;
@@ -273,7 +275,7 @@ PalcAction PureSlipTracer::Converged(const PalcPoint& last, const PalcCorrection
   if (c.u[1] > hi || c.u[1] < lo) {
     const double end = c.u[1] > hi ? hi : lo;
     if (Land(end, 0.5 * (last.u[0] + c.u[0]))) return End({BranchEnd::kRangeEnd});
-    if (hopf_pending_ && c.u[0] <= tuning::kHopfFrom * tuning::kAmplitudeEnd) {
+    if (hopf_pending_ && c.u[0] <= Tolerances::kHopfFrom * Tolerances::kAmplitudeEnd) {
       // The branch leaves the range before its amplitude can be resolved
       // (below kAmplitudeEnd): in range it is its Hopf point only.
       ctx_.AddHopfEnd(p_hopf_start_, PureSlipFromMap(curve_.map).stable);
@@ -317,7 +319,7 @@ BranchEnd PureSlipTracer::Run(const BranchStart& s) {
   PalcPoint first;
   if (!Start(s, &first)) return {BranchEnd::kStopped};
   const double ds_max = 2 * o_.max_step;
-  const double ds = hopf_pending_ ? std::max(tuning::kAmplitudeEnd * 1.5, ds_max) : ds_max;
+  const double ds = hopf_pending_ ? std::max(Tolerances::kAmplitudeEnd * 1.5, ds_max) : ds_max;
   const PalcResult r = palc_.Continue(first, ds, *this);
   if (r.status == PalcStatus::kMaxPoints)
     ctx_.Fail("pure-slip branch at " + ctx_.Where(r.points.back().u[1]), r.message);

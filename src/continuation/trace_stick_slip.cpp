@@ -4,6 +4,7 @@
 
 #include "continuation/branch_tracers.hpp"
 #include "continuation/special_points.hpp"
+#include "numerics/tolerances.hpp"
 
 namespace stickslip {
 
@@ -43,7 +44,9 @@ std::vector<BranchPoint> TraceEquilibrium(BranchContext& ctx) {
   const int n = static_cast<int>(std::ceil(1.0 / o.max_step));
   std::vector<BranchPoint> rows;
   double p_prev = o.from, d_prev = HopfDamping(ctx.At(o.from));
-  for (int i = 0; i <= n; ++i) {
+  rows.reserve(n + 9);  // the grid and a few Hopf points: no reallocation
+  // Polls the cancel hook per row: a fine grid (1 / max_step rows) takes long.
+  for (int i = 0; i <= n && !ctx.Stop(); ++i) {
     const double p = i == n ? o.to : o.from + (o.to - o.from) * i / n;
     const double d = HopfDamping(ctx.At(p));
     if (i > 0 && d_prev * d < 0) {
@@ -81,7 +84,8 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
   int count = 1;
   while (true) {
     if (ctx.Stop()) return stopped;
-    if (std::abs(end - p) <= 1e-15 * std::max(1.0, std::abs(p))) return {BranchEnd::kRangeEnd};
+    if (std::abs(end - p) <= Tolerances::kAtRangeEnd * std::max(1.0, std::abs(p)))
+      return {BranchEnd::kRangeEnd};
     if (++count > o.max_points) {
       ctx.Fail("stick-slip branch at " + ctx.Where(p),
                "more than max_points = " + std::to_string(o.max_points) + " points");
@@ -92,7 +96,7 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
     Orbit next;
     if (ctx.StickSlipAt(q, &next, &res)) {
       const double change = Change(prev, next);
-      if (change > tuning::kHalveAbove * o.max_step && h > 4 * h_min(p)) {
+      if (change > Tolerances::kHalveAbove * o.max_step && h > 4 * h_min(p)) {
         h *= 0.5;
         ++ctx.counts().rejected_steps;
         continue;
@@ -100,7 +104,8 @@ BranchEnd TraceStickSlip(BranchContext& ctx, const BranchStart& start) {
       ctx.Add(ctx.FromOrbit(q, next, 0));
       p = q;
       prev = next;
-      if (change < tuning::kGrowBelow * o.max_step) h = std::min(tuning::kGrow * h, h_max(p));
+      if (change < Tolerances::kGrowBelow * o.max_step)
+        h = std::min(Tolerances::kGrow * h, h_max(p));
       continue;
     }
     if (res.status == OrbitStatus::kMissed) {

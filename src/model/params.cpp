@@ -82,7 +82,7 @@ std::string ParameterNameList() {
 double Params::*ParameterMember(const std::string& name) {
   for (const Entry& e : kTable)
     if (name == e.name) return e.member;
-  throw InvalidArgument("unknown parameter '" + name + "' (expected " + ParameterNameList() + ")");
+  throw InvalidArgument("unknown parameter '" + name + "' (expected one of " + ParameterNameList() + ")");
 }
 
 bool IsParameterName(const std::string& name) {

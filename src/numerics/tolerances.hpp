@@ -193,6 +193,68 @@ struct Tolerances {
   /// Forced PD switching: the first point of the doubled branch is on it (not
   /// back on the m orbit) if |P^m z - z| exceeds this times the offset h.
   double DoubledSplit() const { return 0.5; }
+
+  // Continuation steps (continuation/: the branch tracers share these).
+  // Steps of a stick-slip branch: halve when an orbit measure changes by more
+  // than kHalveAbove * max_step, grow by kGrow when it changes by less than
+  // kGrowBelow * max_step.
+  static constexpr double kHalveAbove = 5, kGrowBelow = 2, kGrow = 1.5;
+  // A pure-slip branch ends at a Hopf point below this section amplitude (closer,
+  // shooting loses accuracy), if a Hopf point lies within kNearHopf * range or
+  // within kHopfSlack times the distance to where a^2, extrapolated linearly,
+  // vanishes. A step that would end it from above kHopfFrom * kAmplitudeEnd is
+  // halved instead.
+  static constexpr double kAmplitudeEnd = 0.02, kNearHopf = 0.05, kHopfSlack = 2, kHopfFrom = 2;
+  // Pure-slip corrector: at most kMaxCorrector Newton steps (stall test:
+  // NewtonConverged in palc.hpp); the step grows (kGrow) after a correction in
+  // at most kFastCorrector steps.
+  static constexpr int kMaxCorrector = 8, kFastCorrector = 3;
+  // A row is read at its p: one more Newton step in a at fixed p when the
+  // amplitude's correction -G / G_a exceeds kPolish * rtol * max(1, a).
+  static constexpr double kPolish = 0.1;
+  // A pure-slip step that sticks looks for a grazing point when the last orbit
+  // came within kNearTouch * max(kNearTouchMin, v) of the belt speed, or the
+  // step is within kSmallStep * min_step; the search grows by kSearchGrow over
+  // at most kSearchSteps steps.
+  static constexpr double kNearTouch = 0.1, kNearTouchMin = 0.05, kSmallStep = 4, kSearchGrow = 1.5;
+  static constexpr int kSearchSteps = 12;
+  // Grazing points closer than kSameGrazing * locate_tol are the same point.
+  static constexpr double kSameGrazing = 1e3;
+  // Probes beside a grazing point, as max(fraction * range, factor * locate_tol):
+  // stick-slip side, pure-slip side. The pure-slip probe also stays
+  // kSlipProbeRtol * rtol * range away: the grazing point is the gap's root, the
+  // probe a shooting, and the two place the touch as far apart as their
+  // integration errors (8e-5 in v for stribeck, cvode, rtol 1e-4).
+  static constexpr double kStickProbe = 1e-6, kStickProbeTol = 10;
+  static constexpr double kSlipProbe = 1e-4, kSlipProbeTol = 100, kSlipProbeRtol = 10;
+  // Smallest scale of p-steps, relative to max(1, |p|) (BranchContext::LocalScale).
+  static constexpr double kMinScale = 1e-3;
+  // Landing on a range end: the step guess never below this amplitude.
+  static constexpr double kLandMinAmplitude = 1e-3;
+  // A stick-slip branch within kAtRangeEnd max(1, |p|) of its end is there (5 eps).
+  static constexpr double kAtRangeEnd = 1e-15;
+  // Pure-slip dG/dp: forward-difference step max(this, sqrt(rtol)) (scaled).
+  static constexpr double kBranchDifferenceFloor = 1e-7;
+  // LP on a branch (special_points.cpp): the slip field's fold is a jump when
+  // wider than kFoldJump (1 + |x0|); p(a) by a secant from a step of
+  // kFoldSecantStep to kFoldSecantTol (times the p scale); the fold's amplitude
+  // by Brent to kFoldAmplitudeTol max(1, |a|).
+  static constexpr double kFoldJump = 1e-9, kFoldSecantStep = 1e-6, kFoldSecantTol = 1e-14;
+  static constexpr double kFoldAmplitudeTol = 1e-7;
+  // Chart curves, finite differences: HB curve d/dp of a law parameter, step
+  // kHopfDifference max(|p|, kHopfDifferenceFloor); LP curve d/da, step
+  // kFoldAmplitudeStep max(a, kFoldAmplitudeFloor) (the plane: chart_difference).
+  static constexpr double kHopfDifference = 1e-6, kHopfDifferenceFloor = 1e-3;
+  static constexpr double kFoldAmplitudeStep = 1e-4, kFoldAmplitudeFloor = 1e-2;
+  // Chart GR-HB points (grazing_curve.cpp): Newton2 in the plane to this, with
+  // difference steps of kGrazingNewtonStep.
+  static constexpr double kGrazingNewtonTol = 1e-12, kGrazingNewtonStep = 1e-6;
+  // Chart region faces, in the unit square: vertices within kFaceSnap are one;
+  // segments whose cross product is below kFaceParallel |a||b| are parallel
+  // (ends snap as vertices), below kFaceCollinear |a||b| collinear; a segment
+  // shorter than kSegmentMinLength is none.
+  static constexpr double kFaceSnap = 1e-9, kFaceParallel = 1e-14, kFaceCollinear = 1e-12;
+  static constexpr double kSegmentMinLength = 1e-12;
 };
 
 }  // namespace stickslip

@@ -13,34 +13,19 @@
 namespace {
 
 namespace tu = stickslip::testing_util;
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_basin";
-
-std::string TempDir() {
-  std::string tmpl = ::testing::TempDir() + "ss_basin_forced_test_XXXXXX";
-  if (::mkdtemp(tmpl.data()) == nullptr) ADD_FAILURE() << "mkdtemp failed";
-  return tmpl;
-}
-
-tu::Outcome RunBasin(const std::string& dir, std::vector<std::string> args, std::string* err) {
-  tu::Launch l;
-  l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
-  args.insert(args.end(), {"--out", dir + "/out", "--no_plots"});
-  const tu::Outcome o = tu::RunChild(kApp, args, l);
-  *err = tu::ReadFile(l.err_path);
-  return o;
-}
+class BasinForcedApp : public tu::AppTest {};
 
 const std::vector<std::string> kBelt = {"--law",   "coulomb", "--mu_s",  "0.4", "--mu_k",
                                         "0.25",    "--beta",  "0.05",    "--v", "0.2",
                                         "--force", "0.3",     "--omega", "0.45"};
 
-TEST(BasinForcedApp, FindsBothCoexistingOrbits) {
-  const std::string dir = TempDir();
+TEST_F(BasinForcedApp, FindsBothCoexistingOrbits) {
+  const std::string dir = NewDir();
   std::vector<std::string> args = kBelt;
   args.insert(args.end(), {"--nx", "6", "--ny", "6", "--x_min", "0.3", "--x_max", "0.8",
                            "--xdot_min", "-0.2", "--xdot_max", "0.2"});
-  std::string err;
-  ASSERT_EQ(RunBasin(dir, args, &err).code, 0) << err;
+  const AppRun r = RunOut("ss_basin", dir, args);
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv a = tu::ReadTsv(tu::ReadFile(dir + "/out/attractors.tsv"));
   ASSERT_EQ(a.rows.size(), 2u);
   std::vector<std::string> sticks;
@@ -54,7 +39,7 @@ TEST(BasinForcedApp, FindsBothCoexistingOrbits) {
   EXPECT_EQ(tu::ReadTsv(tu::ReadFile(dir + "/out/basins_forced.tsv")).rows.size(), 36u);
 }
 
-TEST(BasinForcedApp, BadForcedInputIsExitTwo) {
+TEST_F(BasinForcedApp, BadForcedInputIsExitTwo) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--omega", "0.5"}, "--omega"},
       {{"--force", "0.3", "--keep", "4"}, "--keep"},
@@ -62,10 +47,10 @@ TEST(BasinForcedApp, BadForcedInputIsExitTwo) {
       {{"--force", "0.3", "--nx", "0"}, "--nx"},
       {{"--force", "0.3", "--x_min", "1"}, "--x_min"}};
   for (const auto& [args, name] : cases) {
-    const std::string dir = TempDir();
-    std::string err;
-    EXPECT_EQ(RunBasin(dir, args, &err).code, 2) << args[0] << " " << err;
-    EXPECT_TRUE(tu::Contains(err, name)) << err;
+    const std::string dir = NewDir();
+    const AppRun r = RunOut("ss_basin", dir, args);
+    EXPECT_EQ(r.outcome.code, 2) << args[0] << " " << r.err;
+    EXPECT_TRUE(tu::Contains(r.err, name)) << r.err;
     EXPECT_FALSE(tu::Exists(dir + "/out"));
   }
 }

@@ -11,45 +11,20 @@
 #include <vector>
 
 #include "app_test_util.hpp"
+#include "forced_reference.hpp"
 
 namespace {
 
 namespace tu = stickslip::testing_util;
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_continue";
+using stickslip::forced_reference::DenHartogX;
+class ForcedApp : public tu::AppTest {};
 
-std::string TempDir() {
-  std::string tmpl = ::testing::TempDir() + "ss_forced_test_XXXXXX";
-  if (::mkdtemp(tmpl.data()) == nullptr) ADD_FAILURE() << "mkdtemp failed";
-  return tmpl;
-}
-
-struct Result {
-  tu::Outcome outcome;
-  std::string out, err;
-};
-
-Result RunApp(const std::string& dir, std::vector<std::string> args) {
-  tu::Launch l;
-  l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
-  args.insert(args.end(), {"--out", dir + "/out", "--no_plots"});
-  Result r;
-  r.outcome = tu::RunChild(kApp, args, l);
-  r.out = tu::ReadFile(l.out_path), r.err = tu::ReadFile(l.err_path);
-  return r;
-}
-
-// Den Hartog (1931), computed here on its own: X = sqrt(V^2 - (mu U)^2),
-// V = A / (1 - W^2), U = sin(pi / W) / (W (1 + cos(pi / W))).
-double DenHartogX(double mu, double a, double w) {
-  const double V = a / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
-  return std::sqrt(V * V - mu * mu * U * U);
-}
-
-TEST(ForcedApp, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
-  const std::string dir = TempDir();
-  const Result r =
-      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
-                   "--force", "1", "--param", "omega", "--from", "0.75", "--to", "2.5"});
+TEST_F(ForcedApp, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
+  const std::string dir = NewDir();
+  const AppRun r =
+      RunOut("ss_continue", dir,
+             {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
+              "--force", "1", "--param", "omega", "--from", "0.75", "--to", "2.5"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
   auto col = [&](const std::string& name) {
@@ -82,7 +57,7 @@ TEST(ForcedApp, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
               compared, t.rows.size(), worst);
 }
 
-TEST(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
+TEST_F(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--force", "1", "--omega", "0"}, "omega"},
       {{"--force", "-1"}, "force"},
@@ -93,8 +68,8 @@ TEST(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
       {{"--force", "1", "--restart", "plots", "--point", "PD1"}, "--restart"},
   };
   for (const auto& c : cases) {
-    const std::string dir = TempDir();
-    const Result r = RunApp(dir, c.first);
+    const std::string dir = NewDir();
+    const AppRun r = RunOut("ss_continue", dir, c.first);
     EXPECT_EQ(r.outcome.code, 2) << c.second << ": " << r.err;
     EXPECT_TRUE(tu::Contains(r.err, c.second)) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -105,12 +80,13 @@ TEST(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
 // --max_time stops the continuation itself (Palc's cancel hook), not only
 // the phases around it: the files are written with status cancelled, exit 1.
 // The whole run takes 0.57 s here with exit 0 (ForcedApp.DenHartog...).
-TEST(ForcedApp, MaxTimeStopsAForcedRunWithStatusCancelled) {
-  const std::string dir = TempDir();
-  const Result r =
-      RunApp(dir, {"--law",  "coulomb", "--mu_s", "0.3",     "--mu_k",     "0.3",     "--v",
-                   "0",      "--beta",  "0",      "--force", "1",          "--param", "omega",
-                   "--from", "0.75",    "--to",   "2.5",     "--max_time", "0.1"});
+TEST_F(ForcedApp, MaxTimeStopsAForcedRunWithStatusCancelled) {
+  const std::string dir = NewDir();
+  const AppRun r =
+      RunOut("ss_continue", dir,
+             {"--law",  "coulomb", "--mu_s", "0.3",     "--mu_k",     "0.3",     "--v",
+              "0",      "--beta",  "0",      "--force", "1",          "--param", "omega",
+              "--from", "0.75",    "--to",   "2.5",     "--max_time", "0.1"});
   EXPECT_EQ(r.outcome.code, 1) << r.err;
   EXPECT_LT(r.outcome.seconds, 1.0);
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
@@ -137,9 +113,9 @@ std::vector<std::string> FloorScene() {
 // special_points.tsv: each located point has the branch.tsv row it sits on
 // (pt), its label with an index per type (lab) and a description; the floor
 // scene of forced_sliding_test has two crossing-sliding points.
-TEST(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
-  const std::string dir = TempDir();
-  const Result r = RunApp(dir, FloorScene());
+TEST_F(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_continue", dir, FloorScene());
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
   const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
@@ -160,15 +136,16 @@ TEST(ForcedApp, SpecialPointsCarryRowLabelAndDescription) {
 // it was forced), in another axis: the new branch's first row is the point
 // (its omega, its A, its stroboscopic state) and it runs to the far end of
 // force's default range [0.1, 2].
-TEST(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
-  const std::string dir = TempDir();
-  const Result r0 = RunApp(dir, FloorScene());
+TEST_F(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
+  const std::string dir = NewDir();
+  const AppRun r0 = RunOut("ss_continue", dir, FloorScene());
   ASSERT_EQ(r0.outcome.code, 0) << r0.err;
   const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
   ASSERT_FALSE(sp.rows.empty());
   ASSERT_EQ(sp.rows[0][Col(sp, "lab")], "CR1");
-  const std::string dir2 = TempDir();
-  const Result r = RunApp(dir2, {"--restart", dir + "/out", "--point", "CR1", "--param", "force"});
+  const std::string dir2 = NewDir();
+  const AppRun r = RunOut("ss_continue", dir2,
+                          {"--restart", dir + "/out", "--point", "CR1", "--param", "force"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir2 + "/out/branch.tsv"));
   ASSERT_GT(b.rows.size(), 10u);
@@ -189,11 +166,12 @@ TEST(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
 
 // Den Hartog's parameters: a restart in force from a non-stop row (by its
 // pt) of the omega branch matches his closed form X(A) at that Omega.
-TEST(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
-  const std::string dir = TempDir();
-  const Result r0 =
-      RunApp(dir, {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
-                   "--force", "1", "--param", "omega", "--from", "0.75", "--to", "2.5"});
+TEST_F(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
+  const std::string dir = NewDir();
+  const AppRun r0 =
+      RunOut("ss_continue", dir,
+             {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
+              "--force", "1", "--param", "omega", "--from", "0.75", "--to", "2.5"});
   ASSERT_EQ(r0.outcome.code, 0) << r0.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
   size_t i = 0;
@@ -202,8 +180,9 @@ TEST(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
     ++i;
   ASSERT_LT(i, t.rows.size());
   const std::string pt = t.rows[i][Col(t, "pt")];
-  const std::string dir2 = TempDir();
-  const Result r = RunApp(dir2, {"--restart", dir + "/out", "--point", pt, "--param", "force"});
+  const std::string dir2 = NewDir();
+  const AppRun r =
+      RunOut("ss_continue", dir2, {"--restart", dir + "/out", "--point", pt, "--param", "force"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir2 + "/out/branch.tsv"));
   const double w = std::stod(b.meta.at("omega"));
@@ -228,8 +207,8 @@ TEST(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
       pt.c_str(), w, compared, worst);
   // A label the run does not have, or no label at all: exit 2, one line.
   for (const std::string bad : {"PD7", "XY1"}) {
-    const std::string dir3 = TempDir();
-    const Result e = RunApp(dir3, {"--restart", dir + "/out", "--point", bad});
+    const std::string dir3 = NewDir();
+    const AppRun e = RunOut("ss_continue", dir3, {"--restart", dir + "/out", "--point", bad});
     EXPECT_EQ(e.outcome.code, 2) << bad << ": " << e.err;
     EXPECT_TRUE(tu::Contains(e.err, "--point " + bad)) << e.err;
     EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;

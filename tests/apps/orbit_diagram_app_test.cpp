@@ -17,38 +17,16 @@
 namespace {
 
 namespace tu = stickslip::testing_util;
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_orbit_diagram";
-
-std::string TempDir() {
-  std::string tmpl = ::testing::TempDir() + "ss_orbit_diagram_test_XXXXXX";
-  if (::mkdtemp(tmpl.data()) == nullptr) ADD_FAILURE() << "mkdtemp failed";
-  return tmpl;
-}
-
-struct Result {
-  tu::Outcome outcome;
-  std::string out, err;
-};
-
-Result RunApp(const std::string& dir, std::vector<std::string> args, bool plots = false) {
-  tu::Launch l;
-  l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
-  args.insert(args.end(), {"--out", dir + "/out"});
-  if (!plots) args.push_back("--no_plots");
-  Result r;
-  r.outcome = tu::RunChild(kApp, args, l);
-  r.out = tu::ReadFile(l.out_path), r.err = tu::ReadFile(l.err_path);
-  return r;
-}
+class OrbitDiagramApp : public tu::AppTest {};
 
 const std::vector<std::string> kLinear = {
     "--law", "coulomb", "--mu_s",  "0.4", "--mu_k",      "0.25",  "--beta", "0.05",
     "--v",   "0.2",     "--force", "0.3", "--param",     "omega", "--from", "0.3",
     "--to",  "0.45",    "--n",     "7",   "--transient", "400",   "--keep", "20"};
 
-TEST(OrbitDiagramApp, LinearWindowMatchesClosedFormSteadyState) {
-  const std::string dir = TempDir();
-  const Result r = RunApp(dir, kLinear);
+TEST_F(OrbitDiagramApp, LinearWindowMatchesClosedFormSteadyState) {
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_orbit_diagram", dir, kLinear);
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/orbit_diagram.tsv"));
   const int w = t.Column("omega"), x = t.Column("x"), xd = t.Column("xdot"),
@@ -80,26 +58,26 @@ TEST(OrbitDiagramApp, LinearWindowMatchesClosedFormSteadyState) {
   EXPECT_EQ(e.meta.at("status"), "0 values failed");
 }
 
-TEST(OrbitDiagramApp, DrawsTheFigure) {
+TEST_F(OrbitDiagramApp, DrawsTheFigure) {
   if (!tu::HaveGnuplot()) GTEST_SKIP() << "gnuplot not installed";
-  const std::string dir = TempDir();
-  const Result r = RunApp(dir, kLinear, true);
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_orbit_diagram", dir, kLinear, true);
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   EXPECT_TRUE(tu::Exists(dir + "/out/orbit_diagram.png"));
 }
 
-TEST(OrbitDiagramApp, TimeLimitWritesAPartialResult) {
-  const std::string dir = TempDir();
-  const Result r =
-      RunApp(dir, {"--law", "stribeck", "--beta", "0.01", "--v", "0.1", "--force", "0.5", "--from",
-                   "0.2", "--to", "1.2", "--n", "2000", "--max_time", "0.5"});
+TEST_F(OrbitDiagramApp, TimeLimitWritesAPartialResult) {
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_orbit_diagram", dir,
+                          {"--law", "stribeck", "--beta", "0.01", "--v", "0.1", "--force", "0.5",
+                           "--from", "0.2", "--to", "1.2", "--n", "2000", "--max_time", "0.5"});
   EXPECT_EQ(r.outcome.code, 1) << r.err;
   const tu::Tsv e = tu::ReadTsv(tu::ReadFile(dir + "/out/lyapunov.tsv"));
   EXPECT_EQ(e.meta.at("status").rfind("partial (time limit", 0), 0u) << e.meta.at("status");
   EXPECT_LT(e.rows.size(), 4000u);
 }
 
-TEST(OrbitDiagramApp, BadInputIsExitTwoNamingTheOption) {
+TEST_F(OrbitDiagramApp, BadInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--param", "mu_s"}, "--param"},
       {{"--n", "1"}, "--n"},
@@ -111,8 +89,8 @@ TEST(OrbitDiagramApp, BadInputIsExitTwoNamingTheOption) {
       {{"--force", "-1"}, "force"},
       {{"--param", "force", "--from", "-0.5"}, "--from"}};
   for (const auto& [args, name] : cases) {
-    const std::string dir = TempDir();
-    const Result r = RunApp(dir, args);
+    const std::string dir = NewDir();
+    const AppRun r = RunOut("ss_orbit_diagram", dir, args);
     EXPECT_EQ(r.outcome.code, 2) << args[0] << " " << r.err;
     EXPECT_TRUE(tu::Contains(r.err, name)) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -11,37 +11,30 @@
 #include <vector>
 
 #include "app_test_util.hpp"
+#include "forced_reference.hpp"
 
 namespace {
 
 namespace tu = stickslip::testing_util;
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_simulate";
-
-std::string TempDir() {
-  std::string tmpl = ::testing::TempDir() + "ss_simulate_forced_XXXXXX";
-  if (::mkdtemp(tmpl.data()) == nullptr) ADD_FAILURE() << "mkdtemp failed";
-  return tmpl;
-}
-
-struct Result {
-  tu::Outcome outcome;
-  std::string err;
-  tu::Tsv traj, section;
-};
-
-Result RunApp(const std::string& dir, std::vector<std::string> args) {
-  tu::Launch l;
-  l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
-  args.insert(args.end(), {"--out", dir + "/out", "--no_plots"});
-  Result r;
-  r.outcome = tu::RunChild(kApp, args, l);
-  r.err = tu::ReadFile(l.err_path);
-  if (tu::Exists(dir + "/out/trajectory.tsv")) {
-    r.traj = tu::ReadTsv(tu::ReadFile(dir + "/out/trajectory.tsv"));
-    r.section = tu::ReadTsv(tu::ReadFile(dir + "/out/section.tsv"));
+using stickslip::forced_reference::DenHartogX;
+// ss_simulate's run with its two tables read (empty if not written).
+class SimulateForcedApp : public tu::AppTest {
+ protected:
+  struct Result {
+    tu::Outcome outcome;
+    std::string err;
+    tu::Tsv traj, section;
+  };
+  Result RunApp(const std::string& dir, const std::vector<std::string>& args) {
+    const AppRun run = RunOut("ss_simulate", dir, args);
+    Result r{run.outcome, run.err, {}, {}};
+    if (tu::Exists(dir + "/out/trajectory.tsv")) {
+      r.traj = tu::ReadTsv(tu::ReadFile(dir + "/out/trajectory.tsv"));
+      r.section = tu::ReadTsv(tu::ReadFile(dir + "/out/section.tsv"));
+    }
+    return r;
   }
-  return r;
-}
+};
 
 size_t Col(const tu::Tsv& t, const std::string& name) {
   const auto it = std::find(t.columns.begin(), t.columns.end(), name);
@@ -49,15 +42,8 @@ size_t Col(const tu::Tsv& t, const std::string& name) {
   return static_cast<size_t>(it - t.columns.begin());
 }
 
-// Den Hartog (1931), computed here on its own: X = sqrt(V^2 - (mu U)^2),
-// V = A / (1 - W^2), U = sin(pi / W) / (W (1 + cos(pi / W))).
-double DenHartogX(double mu, double a, double w) {
-  const double V = a / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
-  return std::sqrt(V * V - mu * mu * U * U);
-}
-
-TEST(SimulateForcedApp, StroboscopicSectionSettlesOnDenHartogsOrbit) {
-  const std::string dir = TempDir();
+TEST_F(SimulateForcedApp, StroboscopicSectionSettlesOnDenHartogsOrbit) {
+  const std::string dir = NewDir();
   const double w = 1.5, T = 2 * M_PI / w;
   const Result r =
       RunApp(dir, {"--law", "coulomb", "--mu_s", "0.3", "--mu_k", "0.3", "--v", "0", "--beta", "0",
@@ -88,8 +74,8 @@ TEST(SimulateForcedApp, StroboscopicSectionSettlesOnDenHartogsOrbit) {
   EXPECT_NEAR(x_max, DenHartogX(0.3, 1, w), 1e-5);  // the sampling's (w dt)^2 X / 2
 }
 
-TEST(SimulateForcedApp, ExitSectionLiesOnTheStickBandsEdge) {
-  const std::string dir = TempDir();
+TEST_F(SimulateForcedApp, ExitSectionLiesOnTheStickBandsEdge) {
+  const std::string dir = NewDir();
   const double mu_s = 0.4, beta = 0.05, v = 0, a = 0.7, w = 0.6;
   const Result r = RunApp(
       dir, {"--law", "coulomb", "--mu_s", "0.4", "--mu_k", "0.3", "--v", "0", "--beta", "0.05",
@@ -113,14 +99,14 @@ TEST(SimulateForcedApp, ExitSectionLiesOnTheStickBandsEdge) {
 
 // The forced studies run in ss_continue from their files, and give the points
 // docs/studies.md reads off them.
-TEST(SimulateForcedApp, ForcedStudiesRunInSsContinue) {
+TEST_F(SimulateForcedApp, ForcedStudiesRunInSsContinue) {
   const std::string studies = STICKSLIP_SOURCE_DIR "/studies/";
   const std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> cases = {
       {"floor_static", {}},
       {"seed_forced", {{"LP", 0.62857}, {"PD", 0.61397}}},
       {"stribeck_forced", {{"LP", 0.63020}, {"LP", 0.62374}, {"PD", 0.61821}}}};
   for (const auto& [study, points] : cases) {
-    const std::string dir = TempDir();
+    const std::string dir = NewDir();
     tu::Launch l;
     l.out_path = dir + "/stdout", l.err_path = dir + "/stderr";
     const tu::Outcome o =
@@ -139,7 +125,7 @@ TEST(SimulateForcedApp, ForcedStudiesRunInSsContinue) {
   }
 }
 
-TEST(SimulateForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
+TEST_F(SimulateForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--force", "1", "--omega", "0"}, "omega"},
       {{"--force", "-1"}, "force"},
@@ -150,7 +136,7 @@ TEST(SimulateForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
       {{"--force", "1", "--t_end", "0"}, "--t_end"},
   };
   for (const auto& c : cases) {
-    const std::string dir = TempDir();
+    const std::string dir = NewDir();
     const Result r = RunApp(dir, c.first);
     EXPECT_EQ(r.outcome.code, 2) << c.second << ": " << r.err;
     EXPECT_TRUE(tu::Contains(r.err, c.second)) << r.err;

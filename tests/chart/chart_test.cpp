@@ -99,7 +99,7 @@ constexpr double kHalfRange = 0.003;
 Region RegionFromContinuation(Params p, double v, double beta) {
   p.beta = beta;
   ContinuationOptions o;
-  o.param = "v";
+  o.param = ParameterAxis("v");
   o.from = v - kHalfRange;
   o.to = v + kHalfRange;
   const ContinuationResult r = Continue(p, o);

@@ -58,7 +58,7 @@ std::vector<Case> Cases() {
 
 ContinuationOptions Around(const std::string& name, double p, Integrator integrator) {
   ContinuationOptions o;
-  o.param = name;
+  o.param = ParameterAxis(name);
   o.from = p == 0 ? 0 : 0.95 * p;  // valid at both ends for every case here
   o.to = p == 0 ? 1 : 1.05 * p;
   o.orbit.flow.integrator = integrator;
@@ -121,7 +121,7 @@ TEST(BranchContext, ExactDGDpPutsPureSlipRowsOnTheReferenceOrbit) {
                            {"stribeck", stribeck, "v", 0.3, 0.8}};
   for (const Study& st : studies) {
     ContinuationOptions o;
-    o.param = st.param;
+    o.param = ParameterAxis(st.param);
     o.from = st.from;
     o.to = st.to;
     const ContinuationResult r = Continue(st.p, o);

@@ -21,7 +21,7 @@ std::vector<SpecialPoint> Labelled(const ContinuationResult& r, SpecialKind k) {
 
 ContinuationResult Trace(const Params& p, const std::string& param, double from, double to) {
   ContinuationOptions o;
-  o.param = param;
+  o.param = ParameterAxis(param);
   o.from = from;
   o.to = to;
   return Continue(p, o);
@@ -170,7 +170,7 @@ TEST(Continuation, LargestStepKeepsTheSeedStructure) {
 TEST(Continuation, VeryWideRangeKeepsTheSeedStructure) {
   const Params p;
   ContinuationOptions o;
-  o.param = "v";
+  o.param = ParameterAxis("v");
   o.from = 0.05;
   o.to = 1e6;
   ExpectSeedStructure(p, Continue(p, o));
@@ -246,9 +246,8 @@ TEST(Continuation, CancellationKeepsThePointsSoFar) {
 
 TEST(Continuation, InvalidOptionsThrowNamingTheValue) {
   ContinuationOptions o;
-  o.param = "gamma";
-  EXPECT_THROW(Continue(Params(), o), InvalidArgument);
-  o.param = "v";
+  EXPECT_THROW(ParameterAxis("gamma"), InvalidArgument);  // a name is parsed once
+  o.param = ParameterAxis("v");
   o.from = o.to = 0.3;
   EXPECT_THROW(Continue(Params(), o), InvalidArgument);
   o.from = -0.1;
@@ -258,7 +257,7 @@ TEST(Continuation, InvalidOptionsThrowNamingTheValue) {
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("v = -0.1"), std::string::npos) << e.what();
   }
-  o.param = "delta";  // not a cubic-law parameter
+  o.param = ParameterAxis("delta");  // not a cubic-law parameter
   o.from = 1;
   o.to = 2;
   EXPECT_THROW(Continue(Params(), o), InvalidArgument);

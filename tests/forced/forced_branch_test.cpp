@@ -5,19 +5,15 @@
 
 #include <cmath>
 
+#include "forced_reference.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 
 namespace stickslip {
 namespace {
 
-// Den Hartog (1931): X = sqrt(V^2 - (mu U)^2), V = A / (1 - Omega^2),
-// U = sin(pi / Omega) / (Omega (1 + cos(pi / Omega))) (checked against the
-// closed-form pieces in forced_orbit_test.cpp).
-double DenHartogX(double mu, double a, double w) {
-  const double V = a / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
-  return std::sqrt(V * V - mu * mu * U * U);
-}
+// Den Hartog (1931), checked against the closed-form pieces in forced_orbit_test.cpp.
+using forced_reference::DenHartogX;
 
 ForcedParams DenHartog() {
   ForcedParams p;

@@ -42,8 +42,8 @@
 #include "stickslip/errors.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/model/model.hpp"
-#include "stickslip/orbits/orbit.hpp"
 #include "stickslip/model/params.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace ss = stickslip;
 
@@ -414,7 +414,7 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally, s
 // (c) A short continuation in v around the sample, with a wall-time cap.
 void ContinueAround(const ss::Params& p, double cap_s, const std::string& what, Tally& tally) {
   ss::ContinuationOptions o;
-  o.param = "v";
+  o.param = ss::ParameterAxis("v");
   o.from = 0.8 * p.v;
   o.to = 1.25 * p.v;
   o.max_step = 0.05;
@@ -695,8 +695,7 @@ TEST(Robustness, InvalidInputThrowsInvalidArgument) {
   EXPECT_THROW(ss::Model{p}, ss::InvalidArgument);
   p = ss::Params();
   ss::ContinuationOptions o;
-  o.param = "gamma";
-  EXPECT_THROW(ss::Continue(p, o), ss::InvalidArgument);
+  EXPECT_THROW(ss::ParameterAxis("gamma"), ss::InvalidArgument);
   o = ss::ContinuationOptions();
   o.from = o.to = 0.3;
   EXPECT_THROW(ss::Continue(p, o), ss::InvalidArgument);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit.hpp"
 
@@ -81,7 +82,7 @@ struct SpecialPoint {
 
 /// The continued parameter, its range, steps and tolerances; validated once by Continue().
 struct ContinuationOptions {
-  std::string param = "v";
+  ParameterAxis param{"v"};  // parsed from a name once, at the entry
   double from = 0.05;
   double to = 0.5;
   OrbitOptions orbit;

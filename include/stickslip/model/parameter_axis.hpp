@@ -15,6 +15,8 @@ class ParameterAxis {
   explicit ParameterAxis(const std::string& name) : name_(name), member_(ParameterMember(name)) {}
 
   const std::string& name() const { return name_; }
+  bool operator==(const ParameterAxis& o) const { return member_ == o.member_; }
+  bool operator!=(const ParameterAxis& o) const { return !(*this == o); }
   double Get(const Params& p) const { return p.*member_; }
   void Set(Params& p, double value) const { p.*member_ = value; }
   /// base with this parameter set to value.
