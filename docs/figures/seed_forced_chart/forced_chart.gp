@@ -1,0 +1,49 @@
+# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
+# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
+# LP black, PD black dashed, NS magenta; codim2.tsv: black dots with labels.
+if (!exists('suffix')) suffix = ''
+set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
+set output 'forced_chart.png'.suffix
+set datafile separator '\t'
+set datafile columnheaders
+set encoding utf8
+set xlabel "forcing frequency Ω"
+set ylabel "force amplitude A"
+set xrange [0.29999999999999999:1.2]
+set yrange [0.050000000000000003:0.59999999999999998]
+set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0"
+set lmargin at screen 0.1
+set rmargin at screen 0.97
+set tmargin at screen 0.93
+set bmargin at screen 0.26
+set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
+set tics out nomirror front
+set border 3 front
+array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
+set label "SL" at 0.31226498527526581,0.29436119622597029 offset 0.7,0.7 left front font ',12' noenhanced
+plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
+     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#6baed6' title "m = 1, 2 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#bdd7e7' title "m = 1, 3 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#006d2c' title "m = 2, 1 stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#31a354' title "m = 2, 2 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#74c476' title "m = 2, 3 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#a63603' title "m = 3, 2 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#e6550d' title "m = 3, 3 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#fd8d3c' title "m = 3, 4 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#54278f' title "m = 4, 4 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#756bb1' title "m = 4, 5 sticks", \
+     NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
+     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
+     NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
+     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title 'GR, non-stop motion ends', \
+     'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'LP, fold', \
+     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title 'PD, period doubling', \
+     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
+unset output
