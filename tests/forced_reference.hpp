@@ -25,6 +25,13 @@ inline ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, dou
   return p;
 }
 
+// A law at mu_s 0.4, mu_k 0.25 (the seed's pair) under A cos(w t).
+inline ForcedParams Belt(LawKind law, double beta, double v, double a, double w) {
+  ForcedParams p = Coulomb(0.4, 0.25, beta, v, a, w);
+  p.base.law = law;
+  return p;
+}
+
 /// Den Hartog (1931), the non-stop amplitude of the undamped Coulomb belt at
 /// rest: X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
 /// U = sin(pi / W) / (W (1 + cos(pi / W))).

@@ -194,20 +194,8 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
 bool NearCurve(const std::vector<Curve>& curves, CurveKind kind, const Plane& plane,
                const Eigen::Vector2d& x) {
   const Eigen::Vector2d scale(plane.width1(), plane.width2());
-  const Eigen::Vector2d xs = x.cwiseQuotient(scale);
-  for (const Curve& c : curves) {
-    if (c.kind != kind) continue;
-    for (size_t i = 0; i < c.points.size(); ++i) {
-      const Eigen::Vector2d b =
-          Eigen::Vector2d(c.points[i].p1, c.points[i].p2).cwiseQuotient(scale);
-      const Eigen::Vector2d a =
-          i == 0 ? b : Eigen::Vector2d(c.points[i - 1].p1, c.points[i - 1].p2).cwiseQuotient(scale);
-      const Eigen::Vector2d d = b - a;
-      const double s =
-          d.squaredNorm() > 0 ? std::clamp((xs - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      if ((a + s * d - xs).norm() < Tolerances().near_curve) return true;
-    }
-  }
+  for (const Curve& c : curves)
+    if (c.kind == kind && NearPolyline(c.points, x, scale, Tolerances().near_curve)) return true;
   return false;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -50,5 +51,23 @@ TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options,
 // curve of this kind already traced (start points found again are skipped).
 bool NearCurve(const std::vector<Curve>& curves, CurveKind kind, const Plane& plane,
                const Eigen::Vector2d& x);
+
+// Whether x lies within `tol` of the polyline through `points` (each with p1,
+// p2), all coordinates divided by `scale` (the rectangle's widths).
+template <class Points>
+bool NearPolyline(const Points& points, const Eigen::Vector2d& x, const Eigen::Vector2d& scale,
+                  double tol) {
+  const Eigen::Vector2d xs = x.cwiseQuotient(scale);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d b = Eigen::Vector2d(points[i].p1, points[i].p2).cwiseQuotient(scale);
+    const Eigen::Vector2d a =
+        i == 0 ? b : Eigen::Vector2d(points[i - 1].p1, points[i - 1].p2).cwiseQuotient(scale);
+    const Eigen::Vector2d d = b - a;
+    const double t =
+        d.squaredNorm() > 0 ? std::clamp((xs - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    if ((a + t * d - xs).norm() < tol) return true;
+  }
+  return false;
+}
 
 }  // namespace stickslip

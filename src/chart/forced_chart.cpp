@@ -87,20 +87,10 @@ std::vector<Seed> SeedsOnLine(const ForcedParams& base, const ForcedChartOptions
 
 bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const Seed& s, const ForcedPlane& pl) {
   const Eigen::Vector2d scale(pl.width1(), pl.width2());
-  const Eigen::Vector2d x = Eigen::Vector2d(s.p1, s.p2).cwiseQuotient(scale);
-  for (const ForcedCurve& c : curves) {
-    if (c.kind != s.kind || c.m != s.m) continue;
-    for (size_t i = 0; i < c.points.size(); ++i) {
-      const Eigen::Vector2d b =
-          Eigen::Vector2d(c.points[i].p1, c.points[i].p2).cwiseQuotient(scale);
-      const Eigen::Vector2d a =
-          i == 0 ? b : Eigen::Vector2d(c.points[i - 1].p1, c.points[i - 1].p2).cwiseQuotient(scale);
-      const Eigen::Vector2d d = b - a;
-      const double t =
-          d.squaredNorm() > 0 ? std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      if ((a + t * d - x).norm() < Tolerances().forced_same_curve) return true;
-    }
-  }
+  for (const ForcedCurve& c : curves)
+    if (c.kind == s.kind && c.m == s.m &&
+        NearPolyline(c.points, Eigen::Vector2d(s.p1, s.p2), scale, Tolerances().forced_same_curve))
+      return true;
   return false;
 }
 

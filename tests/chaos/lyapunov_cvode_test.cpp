@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
@@ -16,11 +17,7 @@ namespace stickslip {
 namespace {
 
 ForcedParams Params(LawKind law, double beta, double v, double force, double omega) {
-  ForcedParams p;
-  p.base.law = law;
-  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = beta, p.base.v = v;
-  p.force = force, p.omega = omega;
-  return p;
+  return forced_reference::Belt(law, beta, v, force, omega);
 }
 
 LyapunovOptions Cvode(double rtol) {
