@@ -79,7 +79,7 @@ po::options_description AppOptions() {
   d.add_options()("switch", po::bool_switch(),
                   "with --restart DIR --point PDn of a forced run: continue the period-doubled "
                   "branch (m -> 2m; AUTO's ISW=-1) from the PD point to whichever of --from, --to "
-                  "(default: the parameter's range) it opens toward");
+                  "(default: the range of the run the point came from) it opens toward");
   return d;
 }
 

@@ -59,8 +59,10 @@ void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& 
                      s.restart->param + ", the PD point's parameter");
   s.doubled = true;
   const double p = GetAxis(s.p, s.axis);
-  s.lo = args.Number("from", range[0]);
-  s.hi = args.Number("to", range[1]);
+  // By default the range of the run the PD point came from (AUTO's RL0, RL1).
+  const bool recorded = std::isfinite(s.restart->run_from) && std::isfinite(s.restart->run_to);
+  s.lo = args.Number("from", recorded ? s.restart->run_from : range[0]);
+  s.hi = args.Number("to", recorded ? s.restart->run_to : range[1]);
   if (s.lo > s.hi) std::swap(s.lo, s.hi);
   if (!(s.lo < p && p < s.hi))
     throw UsageError(args.Source("switch") + ": the PD point's " + s.restart->param + " = " +

@@ -117,6 +117,11 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
   lp->flow.rtol = Number(t, t.Meta("rtol"), "rtol");
   lp->flow.atol = Number(t, t.Meta("atol"), "atol");
   lp->flow.max_steps = static_cast<long>(Number(t, t.Meta("max_steps"), "max_steps"));
+  const auto from = t.meta.find("from"), to = t.meta.find("to");
+  if (from != t.meta.end() && to != t.meta.end()) {
+    lp->run_from = Number(t, from->second, "from");
+    lp->run_to = Number(t, to->second, "to");
+  }
 }
 
 // The row's parameter value and state.

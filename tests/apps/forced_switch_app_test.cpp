@@ -67,6 +67,20 @@ TEST_F(ForcedSwitchApp, DoubledBranchStartsAtThePdPointAndIsTwoPeriodic) {
   EXPECT_LT(std::hypot(double(b.x) - x0, double(b.y) - y0), 1e-9);
 }
 
+// Without --from and --to the doubled branch takes the range of the run the
+// PD point came from (0.7 .. 0.6 here), as AUTO keeps RL0 and RL1.
+TEST_F(ForcedSwitchApp, WithoutARangeTheDoubledBranchKeepsTheRunsRange) {
+  ASSERT_EQ(Run("--restart " + dir_ + "/one --point PD1 --switch --out " + dir_ + "/two"), 0)
+      << err_;
+  const tu::Tsv two = Table(dir_ + "/two/branch.tsv");
+  ASSERT_GT(two.rows.size(), 5u);
+  for (size_t i = 0; i < two.rows.size(); ++i) {
+    EXPECT_EQ(two.rows[i][two.Column("m")], "2");
+    EXPECT_GE(Num(two, i, "omega"), 0.6 - 1e-12);
+    EXPECT_LE(Num(two, i, "omega"), 0.7 + 1e-12);
+  }
+}
+
 TEST_F(ForcedSwitchApp, MisuseIsExitTwoWithOneLineNamingSwitch) {
   const std::string out = " --out " + dir_ + "/bad";
   for (const std::string& args :

@@ -3,6 +3,7 @@
 // a new run can start there: AUTO-07p's IRS (restart label).
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "stickslip/errors.hpp"
@@ -27,6 +28,9 @@ struct LabelledPoint {
   bool forced = false;
   double force = 0, omega = 1;
   int m = 1;
+  // That run's range of param (its --from and --to), nan where not recorded.
+  double run_from = std::numeric_limits<double>::quiet_NaN();
+  double run_to = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Why a restart cannot be read: the run directory (a file missing, corrupt,
