@@ -11,7 +11,7 @@ int main() {
   namespace ss = stickslip;
   ss::Params seed;  // the defaults are the seed set
   ss::ContinuationOptions options;
-  options.param = "v";
+  options.param = ss::ParameterAxis("v");
   options.from = 0.05;
   options.to = 0.5;
   try {
