@@ -121,8 +121,12 @@ Reference ComputeReference() {
 
 // ---------------------------------------------------------------- processes
 
-// Wall time of one run of argv[0] with stdout and stderr to /dev/null.
-double TimeProcess(const std::vector<std::string>& args, int* status) {
+// One run of argv[0] with stdout and stderr to /dev/null: its wall time and
+// its CPU time (user + system), or nan and *status = -1 if it cannot start.
+struct SpawnTimes {
+  double wall = kNan, cpu = kNan;
+};
+SpawnTimes RunProcess(const std::vector<std::string>& args, int* status) {
   std::vector<char*> argv;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -134,39 +138,29 @@ double TimeProcess(const std::vector<std::string>& args, int* status) {
   pid_t pid = 0;
   const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
+  SpawnTimes t;
   if (rc != 0) {
     *status = -1;
-    return kNan;
-  }
-  int ws = 0;
-  waitpid(pid, &ws, 0);
-  const double t = Now() - t0;
-  *status = WIFEXITED(ws) ? WEXITSTATUS(ws) : -1;
-  return t;
-}
-
-// CPU time (user + system) of one run of argv[0], output to /dev/null.
-double ProcessCpu(const std::vector<std::string>& args, int* status) {
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) {
-    *status = -1;
-    return kNan;
+    return t;
   }
   int ws = 0;
   struct rusage ru {};
   wait4(pid, &ws, 0, &ru);
+  t.wall = Now() - t0;
   *status = WIFEXITED(ws) ? WEXITSTATUS(ws) : -1;
-  auto sec = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
-  return sec(ru.ru_utime) + sec(ru.ru_stime);
+  auto sec = [](const timeval& v) { return v.tv_sec + 1e-6 * v.tv_usec; };
+  t.cpu = sec(ru.ru_utime) + sec(ru.ru_stime);
+  return t;
+}
+
+// Wall time of one run of argv[0] with stdout and stderr to /dev/null.
+double TimeProcess(const std::vector<std::string>& args, int* status) {
+  return RunProcess(args, status).wall;
+}
+
+// CPU time (user + system) of one run of argv[0], output to /dev/null.
+double ProcessCpu(const std::vector<std::string>& args, int* status) {
+  return RunProcess(args, status).cpu;
 }
 
 DenseTimes TimeDenseBranch(int reps) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "forced_reference.hpp"
+#include "forced_trace.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
@@ -17,14 +18,9 @@ namespace ref = forced_reference;
 using ref::Real;
 
 ForcedBranch Trace(ForcedParams p, double from, double to, double ds_max) {
-  p.omega = from;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, p.base.v), rq);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = ds_max;
-  return ContinueForced(p, ForcedAxis::kOmega, from, to, tr.end.x, tr.end.xdot, o);
+  return testing_util::TraceOmega(p, from, to, o);
 }
 
 ref::Setup SetupOf(const ForcedParams& p, Real w) {

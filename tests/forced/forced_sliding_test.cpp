@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "forced_reference.hpp"
+#include "forced_trace.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
@@ -28,14 +29,9 @@ ForcedParams Coulomb(double mu_s, double mu_k, double v, double beta, double a) 
 }
 
 ForcedBranch Trace(ForcedParams p, double from, double to) {
-  p.omega = from;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, p.base.v), rq);
   ForcedBranchOptions o;
   o.palc.ds_max = 0.02 * std::abs(to - from);
-  return ContinueForced(p, ForcedAxis::kOmega, from, to, tr.end.x, tr.end.xdot, o);
+  return testing_util::TraceOmega(p, from, to, o);
 }
 
 std::vector<ForcedBranchRow> WithLabel(const ForcedBranch& b, ForcedLabel l) {
