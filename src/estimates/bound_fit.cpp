@@ -1,6 +1,7 @@
 // The seed's bounds a1 (3.18) and a2 (3.20) fitted by NLopt; see estimates.hpp.
 #include <nlopt.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -71,6 +72,20 @@ double WorstViolation(Side side, const std::vector<double>& w, double a) {
   return worst;
 }
 
+// The samples that can bind: every c_i = +-(w_i - a) has the same gradient, so
+// a sample more than tol inside the extreme one is implied by it, and dropping
+// it leaves the feasible set {a : c_i <= 0 for all i} as it is (an exact presolve;
+// NLopt then solves an LP of one or a few rows instead of fit_points rows).
+std::vector<double> Binding(Side side, const std::vector<double>& w, double tol) {
+  const bool lower = side == Side::kLower;
+  const double extreme =
+      lower ? *std::max_element(w.begin(), w.end()) : *std::min_element(w.begin(), w.end());
+  std::vector<double> kept;
+  for (double wi : w)
+    if (lower ? wi >= extreme - tol : wi <= extreme + tol) kept.push_back(wi);
+  return kept;
+}
+
 // NLopt's LD_SLSQP: it takes the m sampled constraints as one vector-valued
 // inequality (nlopt_add_inequality_mconstraint) with exact gradients, and since
 // objective and constraints are linear in a its QP subproblem is exact, so it
@@ -81,10 +96,11 @@ BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<d
   BoundFit fit;
   NloptHandle opt(nlopt_create(NLOPT_LD_SLSQP, 1), &nlopt_destroy);
   if (!opt) throw ExternalError("nlopt_create(NLOPT_LD_SLSQP, 1) returned NULL");
-  Problem pr{side, &w_fit};
-  const std::vector<double> tol(w_fit.size(), 0.01 * o.check_tolerance);
+  const std::vector<double> active = Binding(side, w_fit, 0.01 * o.check_tolerance);
+  Problem pr{side, &active};
+  const std::vector<double> tol(active.size(), 0.01 * o.check_tolerance);
   CheckNlopt(nlopt_set_min_objective(opt.get(), Objective, &pr), "nlopt_set_min_objective");
-  CheckNlopt(nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(w_fit.size()),
+  CheckNlopt(nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(active.size()),
                                               Constraints, &pr, tol.data()),
              "nlopt_add_inequality_mconstraint");
   CheckNlopt(nlopt_set_lower_bounds1(opt.get(), 0.0), "nlopt_set_lower_bounds1");  // a >= 0
