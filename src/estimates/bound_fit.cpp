@@ -72,6 +72,23 @@ double WorstViolation(Side side, const std::vector<double>& w, double a) {
   return worst;
 }
 
+// The check grid, Grid(lo, hi, n) mapped by w, streamed: the same samples
+// without the two vectors of n (200001 by default) per fit.
+template <class W>
+struct CheckGrid {
+  double lo, hi;
+  int n;
+  W w;
+  double Worst(Side side, double a) const {
+    double worst = -HUGE_VAL;
+    for (int i = 0; i < n; ++i) {
+      const double x = i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1);
+      worst = std::max(worst, Violation(side, w(x), a));
+    }
+    return worst;
+  }
+};
+
 // The samples that can bind: every c_i = +-(w_i - a) has the same gradient, so
 // a sample more than tol inside the extreme one is implied by it, and dropping
 // it leaves the feasible set {a : c_i <= 0 for all i} as it is (an exact presolve;
@@ -91,7 +108,8 @@ std::vector<double> Binding(Side side, const std::vector<double>& w, double tol)
 // objective and constraints are linear in a its QP subproblem is exact, so it
 // lands on the active sample in a few iterations. (LN_COBYLA also accepts
 // mconstraints but builds linear models from m + 1 evaluations for nothing here.)
-BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<double>& w_check,
+template <class W>
+BoundFit FitOne(Side side, const std::vector<double>& w_fit, const CheckGrid<W>& check,
                 const BoundFitOptions& o) {
   BoundFit fit;
   NloptHandle opt(nlopt_create(NLOPT_LD_SLSQP, 1), &nlopt_destroy);
@@ -134,7 +152,7 @@ BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<d
   }
   fit.status = BoundStatus::kFitted;
   fit.a = a;
-  fit.worst_violation = WorstViolation(side, w_check, a);
+  fit.worst_violation = check.Worst(side, a);
   fit.holds = fit.worst_violation <= o.check_tolerance;
   if (!fit.holds) fit.reason = "check grid violated by " + Num6(fit.worst_violation);
   return fit;
@@ -163,7 +181,7 @@ SeedBounds FitSeedBounds(const Params& p, const BoundFitOptions& o) {
   // the tightest bound is the SMALLEST such a1.
   auto w1 = [&](double x) { return -(A - 3.0 * k3 * v * x + k3 * x * x); };
   b.a1 = FitOne(Side::kLower, Map(Grid(r1, v, o.fit_points), w1),
-                Map(Grid(r1, v, o.check_points), w1), o);
+                CheckGrid<decltype(w1)>{r1, v, o.check_points, w1}, o);
   b.a1.lo = r1;
   b.a1.hi = v;
 
@@ -180,7 +198,7 @@ SeedBounds FitSeedBounds(const Params& p, const BoundFitOptions& o) {
   const double lo = std::min(x1_low, r1);
   auto w2 = [&](double x) { return -k3 * x * (x - r2) / (x + r1); };
   b.a2 = FitOne(Side::kUpper, Map(Grid(lo, r1, o.fit_points), w2),
-                Map(Grid(lo, r1, o.check_points), w2), o);
+                CheckGrid<decltype(w2)>{lo, r1, o.check_points, w2}, o);
   b.a2.lo = lo;
   b.a2.hi = r1;
   if (x1_low >= r1 && b.a2.reason.empty())
