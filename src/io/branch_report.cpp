@@ -110,6 +110,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
   // initializer lists): a dense branch has thousands of rows.
   std::vector<TsvTable::Cell> row;
   row.reserve(cols.size());
+  t.Reserve(r.points.size(), 24 * cols.size());  // 17 digits, sign, exponent, tab
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
     row.clear();
