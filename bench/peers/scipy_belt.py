@@ -13,7 +13,8 @@ agree to 1e-9 in period (relative) and x_max (absolute), after at least 3, as
 bench/brute_force.cpp does. CPU time per point is time.process_time().
 stickslip: `ss_continue --no_plots` (the whole default run: seed branch,
 estimates, durable writes), 20 runs in one loop, child CPU time (user + system)
-by os.wait4, divided by the rows of its branch.tsv.
+by os.wait4, divided by the rows of its branch.tsv; interleaved with as many
+runs with --no_estimates, whose median subtracted gives the estimates phase.
 Usage: /usr/bin/python3 bench/peers/scipy_belt.py [BUILD_DIR]   (about a minute)
 """
 import math
@@ -80,29 +81,38 @@ def sweep_point(v, start, converge_tol=1e-9, min_cycles=3, t_cap=20000.0):
     return math.nan, math.nan, [0.0, 0.0]
 
 
+def child_cpu(args):
+    pid = os.fork()
+    if pid == 0:
+        fd = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(fd, 1)
+        os.dup2(fd, 2)
+        os.execv(args[0], args)
+    _, status, ru = os.wait4(pid, 0)
+    if status != 0:
+        sys.exit("ss_continue failed with status %d" % status)
+    return ru.ru_utime + ru.ru_stime
+
+
 def ss_continue_cpu(build, runs=20):
+    """Medians of --no_plots and (interleaved) --no_plots --no_estimates; rows."""
     exe = os.path.join(build, "ss_continue")
-    times = []
+    full, bare = [], []
     with tempfile.TemporaryDirectory() as out:
         for _ in range(runs):
-            pid = os.fork()
-            if pid == 0:
-                fd = os.open(os.devnull, os.O_WRONLY)
-                os.dup2(fd, 1)
-                os.dup2(fd, 2)
-                os.execv(exe, [exe, "--no_plots", "--out", out])
-            _, status, ru = os.wait4(pid, 0)
-            if status != 0:
-                sys.exit("ss_continue failed with status %d" % status)
-            times.append(ru.ru_utime + ru.ru_stime)
+            bare.append(child_cpu([exe, "--no_plots", "--no_estimates", "--out", out]))
+            full.append(child_cpu([exe, "--no_plots", "--out", out]))
         with open(os.path.join(out, "branch.tsv")) as f:
             rows = sum(1 for line in f if line.strip() and not line.startswith("#")) - 1
-    return statistics.median(times), rows
+    return statistics.median(full), statistics.median(bare), rows
 
 
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
-    ss, rows = ss_continue_cpu(build)
+    ss, bare, rows = ss_continue_cpu(build)
+    print("estimates phase: %.2f ms CPU (median of --no_plots %.2f ms minus median of "
+          "--no_plots --no_estimates %.2f ms, 20 runs each, interleaved)" %
+          (1e3 * (ss - bare), 1e3 * ss, 1e3 * bare))
     per_point = []
     z = [0.0, 0.0]  # from rest; then each v from the last maximum of the one before
     for v in V_SET:
