@@ -47,6 +47,7 @@ struct Leg {
   std::string cut;  // the way ended early (a PALC failure): why
   int evaluations = 0;
   bool cancelled = false, stopped = false, closed = false;
+  CurveEnd left;  // set when the same-branch check ended the way
 };
 
 // Replaces the last point (outside) by the border crossing of the last chord.
@@ -105,6 +106,10 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   auto monitor = [&](const std::vector<PalcPoint>& pts) {
     const VectorXd& u = pts.back().u;
     if (o.cancelled && o.cancelled()) return !(leg.cancelled = true);
+    if (pts.size() > 1 && o.same_branch) {
+      leg.left = o.same_branch(pts[pts.size() - 2], pts.back(), palc.options().scale);
+      if (leg.left.kind != CurveEndKind::kNone) return false;
+    }
     if (!o.plane.Contains(u[o.i1], u[o.i1 + 1])) return !(outside = true);
     if (pts.size() > 1 && o.stop && o.stop(u)) return !(leg.stopped = true);
     return true;
@@ -112,7 +117,25 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   const PalcResult r = palc.Trace(u0, fixed, direction, monitor);
   if (r.status == PalcStatus::kStopped && r.message == "cancelled") leg.cancelled = true;
   for (const PalcPoint& p : r.points) leg.u.push_back(p.u);
-  if (outside) {
+  if (leg.left.kind != CurveEndKind::kNone) {
+    leg.u.pop_back();  // not on the branch
+    leg.end = leg.left;
+    leg.cut = leg.end.Text();
+    // Off the branch beyond the border: the border point along the last
+    // tangent instead, if it corrects and continues the branch.
+    const VectorXd& b = r.points.back().u;
+    if (r.points.size() >= 2 && !o.plane.Contains(b[o.i1], b[o.i1 + 1])) {
+      const PalcPoint& last = r.points[r.points.size() - 2];
+      if (LandAhead(palc, o, last, leg.u)) {
+        PalcPoint landed = last;
+        landed.u = leg.u.back();
+        if (o.same_branch(last, landed, palc.options().scale).kind == CurveEndKind::kNone)
+          leg.end = {CurveEndKind::kBorder, ""}, leg.cut.clear();
+        else
+          leg.u.pop_back();
+      }
+    }
+  } else if (outside) {
     leg.end.kind = CurveEndKind::kBorder;
     if (leg.u.size() >= 2)
       Land(palc, o, leg.u);
