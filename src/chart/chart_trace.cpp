@@ -98,6 +98,52 @@ bool LandAhead(Palc& palc, const TraceOptions& o, const PalcPoint& last, std::ve
   return true;
 }
 
+// A way whose last point left the branch (leg->left): that point dropped;
+// beyond the border, the border point along the last tangent instead; inside,
+// the end moved up to where the branch ends, the last step bisected (a point
+// that corrects and continues the branch, or not) to chart_end_bisection.
+void EndOffBranch(Palc& palc, const TraceOptions& o, const std::vector<PalcPoint>& pts, Leg* leg) {
+  leg->u.pop_back();
+  leg->end = leg->left;
+  leg->cut = leg->end.Text();
+  if (pts.size() < 2) return;
+  const PalcPoint& last = pts[pts.size() - 2];
+  const VectorXd& scale = palc.options().scale;
+  const VectorXd& b = pts.back().u;
+  auto continues = [&](const VectorXd& u, CurveEnd* why) {
+    PalcPoint p = last;
+    p.u = u;
+    *why = o.same_branch(last, p, scale);
+    return why->kind == CurveEndKind::kNone;
+  };
+  CurveEnd why;
+  if (!o.plane.Contains(b[o.i1], b[o.i1 + 1])) {
+    if (LandAhead(palc, o, last, leg->u)) {
+      if (continues(leg->u.back(), &why))
+        leg->end = {CurveEndKind::kBorder, ""}, leg->cut.clear();
+      else
+        leg->u.pop_back();
+    }
+    return;
+  }
+  if (!o.refine_ends) return;
+  double lo = 0, hi = last.tangent.dot((b - last.u).cwiseQuotient(scale));
+  VectorXd best;
+  while (hi - lo > Tolerances().chart_end_bisection) {
+    const double s = 0.5 * (lo + hi);
+    const PalcCorrection c =
+        palc.Correct(last.u + s * last.tangent.cwiseProduct(scale), last.tangent);
+    if (c.ok && o.plane.Contains(c.u[o.i1], c.u[o.i1 + 1]) && continues(c.u, &why)) {
+      lo = s, best = c.u;
+    } else {
+      hi = s;
+      if (c.ok && why.kind != CurveEndKind::kNone) leg->end = why;
+    }
+  }
+  if (best.size() > 0) leg->u.push_back(best);
+  leg->cut = leg->end.Text();
+}
+
 Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
            const VectorXd& direction) {
   Leg leg;
@@ -118,23 +164,7 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   if (r.status == PalcStatus::kStopped && r.message == "cancelled") leg.cancelled = true;
   for (const PalcPoint& p : r.points) leg.u.push_back(p.u);
   if (leg.left.kind != CurveEndKind::kNone) {
-    leg.u.pop_back();  // not on the branch
-    leg.end = leg.left;
-    leg.cut = leg.end.Text();
-    // Off the branch beyond the border: the border point along the last
-    // tangent instead, if it corrects and continues the branch.
-    const VectorXd& b = r.points.back().u;
-    if (r.points.size() >= 2 && !o.plane.Contains(b[o.i1], b[o.i1 + 1])) {
-      const PalcPoint& last = r.points[r.points.size() - 2];
-      if (LandAhead(palc, o, last, leg.u)) {
-        PalcPoint landed = last;
-        landed.u = leg.u.back();
-        if (o.same_branch(last, landed, palc.options().scale).kind == CurveEndKind::kNone)
-          leg.end = {CurveEndKind::kBorder, ""}, leg.cut.clear();
-        else
-          leg.u.pop_back();
-      }
-    }
+    EndOffBranch(palc, o, r.points, &leg);
   } else if (outside) {
     leg.end.kind = CurveEndKind::kBorder;
     if (leg.u.size() >= 2)

@@ -33,6 +33,9 @@ struct TraceOptions {
   std::function<CurveEnd(const PalcPoint& last, const PalcPoint& next,
                          const Eigen::VectorXd& scale)>
       same_branch;
+  // With same_branch: a way that leaves its branch inside the rectangle ends
+  // where it does (the last step bisected), not at the last point before.
+  bool refine_ends = false;
 };
 
 struct TraceResult {

@@ -207,6 +207,7 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   t.cancelled = o.cancelled;
   std::string bad;
   t.stop = StopTest(problem, base.base.v, &bad);
+  t.refine_ends = true;
   t.same_branch = [&problem](const PalcPoint& a, const PalcPoint& b, const VectorXd& scale) {
     return problem.SameBranch(a, b, scale);
   };

@@ -92,6 +92,11 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
   std::string why;
   if (!Sample(last.u, &a, &why) || !Sample(next.u, &b, &why))
     return {CurveEndKind::kBranchJump, why};
+  const double res = std::max(
+      {std::abs(b.run.end.x - next.u[0]), std::abs(b.run.end.xdot - next.u[1]), std::abs(Test(b))});
+  if (!(res <= tol.forced_curve_residual))
+    return {CurveEndKind::kSliding,
+            "residual " + Num(res, 3) + " (the map is not smooth there: a sliding point)"};
   // (a GR curve is where the structure changes: its margin spans both sides)
   if (kind_ != ForcedCurveKind::kGR &&
       (a.run.sticks != b.run.sticks || a.run.crossings != b.run.crossings))

@@ -150,6 +150,9 @@ struct Tolerances {
   /// tangent) left the branch: the way ends there (on the seed_forced chart
   /// curves stay below 0.23, jumps measured 7.2 to 972: docs/limits.md).
   double forced_branch_offset = 0.5;
+  /// Forced chart curves: the end of a curve where it leaves its branch
+  /// (a sliding point), bisected on the last step to this (scaled arclength).
+  double chart_end_bisection = 1e-10;
   /// Forced chart curves: an m orbit whose point comes back after d < m
   /// periods to within this (max norm) has period d: no m curve there.
   double forced_lower_period = 1e-6;

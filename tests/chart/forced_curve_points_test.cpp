@@ -1,9 +1,11 @@
 // Forced chart curves (issue 21 item 3) on the seed_forced scene against
 // one-parameter runs: a curve point's LP or PD is located again by
 // ContinueForced in Omega at that point's force (its own start, branch and
-// bisection: independent of the two-parameter tracer), and a traced curve
-// has no segment longer than its largest step (a jump to another branch,
-// drawn as a line across the chart, had one before the same-branch check).
+// bisection: independent of the two-parameter tracer); a curve's end on a
+// sliding point lies on the sliding curve those runs locate; and a traced
+// curve has no segment longer than its largest step (a jump to another
+// branch, drawn as a line across the chart, had one before the same-branch
+// check).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,7 +57,16 @@ ForcedBranch SeedRun(double a) {
 // Omega at force p.p2 through the curve point's orbit (carried to phase 0;
 // for an LP moved off the fold along the multiplier's eigenvector, so that
 // Newton at fixed Omega has a regular start). NaN if none within 1e-3.
-double Locate(const ForcedCurvePoint& p, int m, ForcedLabel label) {
+bool Sliding(ForcedLabel l) {
+  return l == ForcedLabel::kGR || l == ForcedLabel::kSW || l == ForcedLabel::kAD ||
+         l == ForcedLabel::kCR || l == ForcedLabel::kSL;
+}
+
+// As Locate below, for any label `want` accepts; the fold's eigenvector (at
+// +1 if fold, else -1) sets the start's offset.
+double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(ForcedLabel),
+                 ForcedLabel* found = nullptr, ForcedAxis axis = ForcedAxis::kOmega) {
+  const double at = axis == ForcedAxis::kOmega ? p.p1 : p.p2;
   const ForcedModel model(Seed(p.p2, p.p1));
   ForcedRequest rq;
   const double t0 = p.phase / model.omega();
@@ -65,27 +76,35 @@ double Locate(const ForcedCurvePoint& p, int m, ForcedLabel label) {
   rq.t_end = m * model.period(), rq.variational = true;
   const Mat2 M = ForcedFlow(model, Flow()).Run(ForcedStart(model, 0, z.x, z.xdot), rq).jacobian;
   Eigen::EigenSolver<Eigen::Matrix2d> es(M);
-  const double target = label == ForcedLabel::kLP ? 1 : -1;
+  const double target = fold ? 1 : -1;
   const int k = std::abs(es.eigenvalues()[0] - target) < std::abs(es.eigenvalues()[1] - target);
   const Eigen::Vector2d e = es.eigenvectors().col(k ? 0 : 1).real().normalized();
   ForcedBranchOptions o;
   o.flow = Flow();
   o.m = m;
   o.palc.ds = o.palc.ds_max = 2e-4;
-  const double h = label == ForcedLabel::kLP ? 0.02 : 0;
+  const double h = fold ? 0.02 : 0;
   double best = NAN;
   for (const double side : {1.0, -1.0})
     for (const double sign : {1.0, -1.0}) {
       const ForcedBranch b =
-          ContinueForced(Seed(p.p2, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                         p.p1 - side * 2e-3, z.x + sign * h * e[0], z.xdot + sign * h * e[1], o);
+          ContinueForced(Seed(p.p2, p.p1), axis, at + side * 2e-3, at - side * 2e-3,
+                         z.x + sign * h * e[0], z.xdot + sign * h * e[1], o);
       for (const ForcedBranchRow& r : b.special)
-        if (r.label == label && std::abs(r.p - p.p1) < 1e-3 &&
-            !(std::abs(best - p.p1) <= std::abs(r.p - p.p1)))
+        if (want(r.label) && std::abs(r.p - at) < 1e-3 &&
+            !(std::abs(best - at) <= std::abs(r.p - at))) {
           best = r.p;
+          if (found) *found = r.label;
+        }
       if (!std::isnan(best)) return best;
     }
   return best;
+}
+
+double Locate(const ForcedCurvePoint& p, int m, ForcedLabel label) {
+  if (label == ForcedLabel::kLP)
+    return LocateAny(p, m, true, [](ForcedLabel l) { return l == ForcedLabel::kLP; });
+  return LocateAny(p, m, false, [](ForcedLabel l) { return l == ForcedLabel::kPD; });
 }
 
 // The curve point nearest force a, if within 0.01 of it.
@@ -112,7 +131,7 @@ void ExpectNoJumps(const ForcedCurve& c, const ForcedChartOptions& o) {
 int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<double> levels) {
   const ForcedBranch run = SeedRun(0.5);
   const ForcedChartOptions o = ChartOptions();
-  int checked = 0, seeds = 0;
+  int checked = 0, seeds = 0, ends = 0;
   for (const ForcedBranchRow& s : run.special) {
     if (s.label != label) continue;
     ++seeds;
@@ -132,10 +151,36 @@ int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<d
           ForcedLabelName(label), s.p, p->p2, p->p1, located, std::abs(p->p1 - located));
       ++checked;
     }
+    // An end on a sliding point lies on the sliding curve: its distance to
+    // the chord between the sliding points of the runs in Omega at its force
+    // and in force at its Omega (each located by its own bisection), within
+    // 2e-5: the end is where the tracer's points stop correcting, and the
+    // chord's central differences (step 6e-6) straddle the kink before it
+    // (measured 1e-12 to 7.5e-6; the last point before, as the tracer ended
+    // without the bisection, lies up to max_step = 1e-2 away).
+    for (const bool first : {true, false}) {
+      if ((first ? c.ends.first : c.ends.last).kind != CurveEndKind::kSliding) continue;
+      const ForcedCurvePoint& p = first ? c.points.front() : c.points.back();
+      ForcedLabel which = ForcedLabel::kNone;
+      const bool fold = label == ForcedLabel::kLP;
+      const double w = LocateAny(p, c.m, fold, Sliding, &which);
+      const double a = LocateAny(p, c.m, fold, Sliding, nullptr, ForcedAxis::kForce);
+      const double dw = (w - p.p1) / o.plane.width1(), da = (a - p.p2) / o.plane.width2();
+      const double d = std::isnan(da)   ? std::abs(dw)
+                       : std::isnan(dw) ? std::abs(da)
+                                        : std::abs(dw * da) / std::hypot(dw, da);
+      EXPECT_LT(d, 2e-5) << ForcedLabelName(label) << " curve end at force " << p.p2;
+      std::printf(
+          "[ measured ] %s curve end (Omega %.12f, force %.12f): the runs' %s at Omega %.12f and "
+          "force %.12f, distance %.1e (scaled)\n",
+          ForcedLabelName(label), p.p1, p.p2, ForcedLabelName(which), w, a, d);
+      ++ends;
+    }
     std::printf("[ measured ] %s curve from Omega %.5f: %zu points, ends %s\n",
                 ForcedLabelName(label), s.p, c.points.size(), c.ends.Text().c_str());
   }
   EXPECT_GE(seeds, 1) << ForcedBranchStatusName(run.status);
+  EXPECT_GE(ends, 1);
   return checked;
 }
 
