@@ -47,6 +47,7 @@ struct Leg {
   std::string cut;  // the way ended early (a PALC failure): why
   int evaluations = 0;
   bool cancelled = false, stopped = false, closed = false;
+  CurveEnd left;  // set when the same-branch check ended the way
 };
 
 // Replaces the last point (outside) by the border crossing of the last chord.
@@ -97,6 +98,52 @@ bool LandAhead(Palc& palc, const TraceOptions& o, const PalcPoint& last, std::ve
   return true;
 }
 
+// A way whose last point left the branch (leg->left): that point dropped;
+// beyond the border, the border point along the last tangent instead; inside,
+// the end moved up to where the branch ends, the last step bisected (a point
+// that corrects and continues the branch, or not) to chart_end_bisection.
+void EndOffBranch(Palc& palc, const TraceOptions& o, const std::vector<PalcPoint>& pts, Leg* leg) {
+  leg->u.pop_back();
+  leg->end = leg->left;
+  leg->cut = leg->end.Text();
+  if (pts.size() < 2) return;
+  const PalcPoint& last = pts[pts.size() - 2];
+  const VectorXd& scale = palc.options().scale;
+  const VectorXd& b = pts.back().u;
+  auto continues = [&](const VectorXd& u, CurveEnd* why) {
+    PalcPoint p = last;
+    p.u = u;
+    *why = o.same_branch(last, p, scale);
+    return why->kind == CurveEndKind::kNone;
+  };
+  CurveEnd why;
+  if (!o.plane.Contains(b[o.i1], b[o.i1 + 1])) {
+    if (LandAhead(palc, o, last, leg->u)) {
+      if (continues(leg->u.back(), &why))
+        leg->end = {CurveEndKind::kBorder, ""}, leg->cut.clear();
+      else
+        leg->u.pop_back();
+    }
+    return;
+  }
+  if (!o.refine_ends) return;
+  double lo = 0, hi = last.tangent.dot((b - last.u).cwiseQuotient(scale));
+  VectorXd best;
+  while (hi - lo > Tolerances().chart_end_bisection) {
+    const double s = 0.5 * (lo + hi);
+    const PalcCorrection c =
+        palc.Correct(last.u + s * last.tangent.cwiseProduct(scale), last.tangent);
+    if (c.ok && o.plane.Contains(c.u[o.i1], c.u[o.i1 + 1]) && continues(c.u, &why)) {
+      lo = s, best = c.u;
+    } else {
+      hi = s;
+      if (c.ok && why.kind != CurveEndKind::kNone) leg->end = why;
+    }
+  }
+  if (best.size() > 0) leg->u.push_back(best);
+  leg->cut = leg->end.Text();
+}
+
 Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
            const VectorXd& direction) {
   Leg leg;
@@ -105,6 +152,10 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   auto monitor = [&](const std::vector<PalcPoint>& pts) {
     const VectorXd& u = pts.back().u;
     if (o.cancelled && o.cancelled()) return !(leg.cancelled = true);
+    if (pts.size() > 1 && o.same_branch) {
+      leg.left = o.same_branch(pts[pts.size() - 2], pts.back(), palc.options().scale);
+      if (leg.left.kind != CurveEndKind::kNone) return false;
+    }
     if (!o.plane.Contains(u[o.i1], u[o.i1 + 1])) return !(outside = true);
     if (pts.size() > 1 && o.stop && o.stop(u)) return !(leg.stopped = true);
     return true;
@@ -112,7 +163,9 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   const PalcResult r = palc.Trace(u0, fixed, direction, monitor);
   if (r.status == PalcStatus::kStopped && r.message == "cancelled") leg.cancelled = true;
   for (const PalcPoint& p : r.points) leg.u.push_back(p.u);
-  if (outside) {
+  if (leg.left.kind != CurveEndKind::kNone) {
+    EndOffBranch(palc, o, r.points, &leg);
+  } else if (outside) {
     leg.end.kind = CurveEndKind::kBorder;
     if (leg.u.size() >= 2)
       Land(palc, o, leg.u);

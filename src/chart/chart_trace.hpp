@@ -27,6 +27,15 @@ struct TraceOptions {
   std::function<bool()> cancelled;
   // Stops a way at an accepted point (e.g. an LP orbit touching the belt).
   std::function<bool(const Eigen::VectorXd&)> stop;
+  // Whether `next` continues `last` (accepted in turn; scale: PALC's): empty
+  // if so, else why not; the way then ends there (end kind and why from the
+  // check), `next` dropped. Empty function: no check.
+  std::function<CurveEnd(const PalcPoint& last, const PalcPoint& next,
+                         const Eigen::VectorXd& scale)>
+      same_branch;
+  // With same_branch: a way that leaves its branch inside the rectangle ends
+  // where it does (the last step bisected), not at the last point before.
+  bool refine_ends = false;
 };
 
 struct TraceResult {

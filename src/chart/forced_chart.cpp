@@ -207,6 +207,10 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   t.cancelled = o.cancelled;
   std::string bad;
   t.stop = StopTest(problem, base.base.v, &bad);
+  t.refine_ends = true;
+  t.same_branch = [&problem](const PalcPoint& a, const PalcPoint& b, const VectorXd& scale) {
+    return problem.SameBranch(a, b, scale);
+  };
   TraceResult r = TraceBothWays(problem, t, u0, s.fixed);
   curve.ends = r.ends;
   // A way stopped on a bad point: the point dropped, the end says why (the
@@ -247,7 +251,8 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const S
   auto cut = [](const CurveEnd& e) {
     return e.kind == CurveEndKind::kMaxPoints || e.kind == CurveEndKind::kStepTooSmall ||
            e.kind == CurveEndKind::kStartFailed || e.kind == CurveEndKind::kNoStart ||
-           e.kind == CurveEndKind::kStopped;
+           e.kind == CurveEndKind::kStopped || e.kind == CurveEndKind::kBranchJump ||
+           e.kind == CurveEndKind::kSliding;
   };
   *message = cut(curve.ends.first) || cut(curve.ends.last) ? curve.ends.Text() : "";
   curve.points = Points(problem, all, s.kind);

@@ -108,23 +108,27 @@ ForcedCodim2 At(const ForcedCurvePoint& a, const ForcedCurvePoint& b, double ga,
 
 // Sign changes along a curve (forced_chart.hpp): R1 and R2 where det M = 1 on
 // LP and PD (the other multiplier at +1 or -1), LPPD where det M = -1 on PD,
-// an NS curve's turning real (tr M = +-2), SL where sticks or crossings change.
-// Each point is interpolated on the chord between two curve points.
+// an NS curve's turning real (tr M = +-2), each interpolated on the chord
+// between two curve points; SL at an end where the stick structure changes
+// (located by the tracer's bisection of its last step).
 void FindCodim2(const ForcedCurve& c, int index, std::vector<ForcedCodim2>* out) {
   auto det = [](const ForcedCurvePoint& p) { return (p.multipliers[0] * p.multipliers[1]).real(); };
   auto add = [&](ForcedCodim2 x, ForcedCodim2Label l, const std::string& d) {
     x.label = l, x.on = c.kind, x.curve = index, x.description = d;
     out->push_back(x);
   };
+  // An end where the orbit's stick structure changes, located by the tracer.
+  for (const bool first : {true, false}) {
+    const CurveEnd& e = first ? c.ends.first : c.ends.last;
+    if (e.kind != CurveEndKind::kSliding || c.points.empty()) continue;
+    const ForcedCurvePoint& p = first ? c.points.front() : c.points.back();
+    ForcedCodim2 x;
+    x.p1 = p.p1, x.p2 = p.p2;
+    add(x, ForcedCodim2Label::kSliding,
+        std::string(ForcedCurveName(c.kind)) + " curve ends on a sliding point: " + e.why);
+  }
   for (size_t i = 1; i < c.points.size(); ++i) {
     const ForcedCurvePoint &a = c.points[i - 1], &b = c.points[i];
-    if (c.kind != ForcedCurveKind::kGR && (a.sticks != b.sticks || a.crossings != b.crossings)) {
-      add(At(a, b, 1, -1), ForcedCodim2Label::kSliding,
-          std::string(ForcedCurveName(c.kind)) + " curve: sticks " + std::to_string(a.sticks) +
-              " -> " + std::to_string(b.sticks) + ", crossings " + std::to_string(a.crossings) +
-              " -> " + std::to_string(b.crossings) + " (a sliding bifurcation meets it)");
-      continue;
-    }
     const double da = det(a) - 1, db = det(b) - 1;
     if (c.kind == ForcedCurveKind::kLP && (da > 0) != (db > 0))
       add(At(a, b, da, db), ForcedCodim2Label::kR1, "LP curve: both multipliers at +1 (1:1)");

@@ -76,6 +76,52 @@ bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
   return true;
 }
 
+CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& next,
+                                        const Eigen::VectorXd& scale) const {
+  const Tolerances tol;
+  // PALC puts next on the plane through last.u + ds t normal to t (scaled):
+  // ds is next's offset along t, the rest is what the corrector moved.
+  const Eigen::VectorXd d = (next.u - last.u).cwiseQuotient(scale);
+  const double ds = last.tangent.dot(d), off = (d - ds * last.tangent).norm();
+  if (!(off <= tol.forced_branch_offset * std::abs(ds)))
+    return {CurveEndKind::kBranchJump,
+            "the corrector moved " + Num(off / std::abs(ds), 3) + " steps off the predictor at " +
+                ForcedAxisName(plane_.p1) + " = " + Num(next.u[2], 6) + ", " +
+                ForcedAxisName(plane_.p2) + " = " + Num(next.u[3], 6)};
+  ForcedCurveSample a, b;
+  std::string why;
+  if (!Sample(last.u, &a, &why) || !Sample(next.u, &b, &why))
+    return {CurveEndKind::kBranchJump, why};
+  const double res = std::max(
+      {std::abs(b.run.end.x - next.u[0]), std::abs(b.run.end.xdot - next.u[1]), std::abs(Test(b))});
+  if (!(res <= tol.forced_curve_residual))
+    return {CurveEndKind::kSliding,
+            "residual " + Num(res, 3) + " (the map is not smooth there: a sliding point)"};
+  // (a GR curve is where the structure changes: its margin spans both sides)
+  if (kind_ != ForcedCurveKind::kGR &&
+      (a.run.sticks != b.run.sticks || a.run.crossings != b.run.crossings))
+    return {CurveEndKind::kSliding, "sticks " + std::to_string(a.run.sticks) + " -> " +
+                                        std::to_string(b.run.sticks) + ", crossings " +
+                                        std::to_string(a.run.crossings) + " -> " +
+                                        std::to_string(b.run.crossings)};
+  // A shorter period: the point comes back after d | m, d < m, periods.
+  const ForcedModel model(plane_.At(base_, next.u[2], next.u[3]));
+  const double t0 = phase_ / model.omega();
+  for (int d = 1; d < m_; ++d) {
+    if (m_ % d != 0) continue;
+    ForcedRequest rq;
+    rq.t_end = t0 + d * model.period();
+    const ForcedRun r =
+        ForcedFlow(model, flow_).Run(ForcedStart(model, t0, next.u[0], next.u[1]), rq);
+    if (r.status == ForcedStatus::kReached &&
+        std::max(std::abs(r.end.x - next.u[0]), std::abs(r.end.xdot - next.u[1])) <
+            tol.forced_lower_period)
+      return {CurveEndKind::kBranchJump,
+              "the orbit has period " + std::to_string(d) + " < m = " + std::to_string(m_)};
+  }
+  return {};
+}
+
 double ForcedCurveProblem::Test(const ForcedCurveSample& s) const {
   switch (kind_) {
     case ForcedCurveKind::kLP:

@@ -57,6 +57,12 @@ class ForcedCurveProblem final : public PalcProblem {
   // The state at the section phase where |x' - v| is largest over the orbit
   // through u (step ends of one run): u's (x, x') replaced, phase set.
   bool Rephase(Eigen::VectorXd* u, std::string* why);
+  // Whether `next` continues `last` (TraceOptions::same_branch): the corrector
+  // stayed near the predictor, the stick structure is the same and the orbit
+  // has no shorter period than m. kNone if so, else kBranchJump or kSliding
+  // (the stick structure changed: a sliding point lies between).
+  CurveEnd SameBranch(const PalcPoint& last, const PalcPoint& next,
+                      const Eigen::VectorXd& scale) const;
 
  private:
   double Test(const ForcedCurveSample& s) const;

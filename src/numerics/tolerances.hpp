@@ -145,6 +145,17 @@ struct Tolerances {
   /// Forced chart curves: an accepted point's residual (orbit and test
   /// function, max norm) above this is no root: the way ends there.
   double forced_curve_residual = 1e-8;
+  /// Forced chart curves: an accepted point whose corrector moved it more
+  /// than this times the step off the predictor (scaled, across the last
+  /// tangent) left the branch: the way ends there (on the seed_forced chart
+  /// curves stay below 0.23, jumps measured 7.2 to 972: docs/limits.md).
+  double forced_branch_offset = 0.5;
+  /// Forced chart curves: the end of a curve where it leaves its branch
+  /// (a sliding point), bisected on the last step to this (scaled arclength).
+  double chart_end_bisection = 1e-10;
+  /// Forced chart curves: an m orbit whose point comes back after d < m
+  /// periods to within this (max norm) has period d: no m curve there.
+  double forced_lower_period = 1e-6;
   /// Forced chart curves: the corrector's tolerance on the scaled update,
   /// max(1e-11, 10 rtol) (the differenced Jacobian's noise; 1e-12 stalled).
   double ForcedCurveCorrector() const { return std::max(1e-11, 10 * rtol); }

@@ -20,7 +20,11 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
-set label "SL" at 0.31226498527526581,0.29436119622597029 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.45485038793470828,0.46186094952235268 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.76064732628889986,0.14743643932669709 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.31215487061392005,0.29520954259805388 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.44521896296555091,0.19134144271697712 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.43425491904366659,0.47754814213749219 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \

@@ -78,6 +78,8 @@ enum class CurveEndKind {
   kMaxPoints,        // cut short: PALC max_points (why: the message)
   kStepTooSmall,     // cut short: PALC step below ds_min (why says why)
   kStartFailed,      // cut short: a way's PALC start failed
+  kBranchJump,       // the next point was no continuation of the last (why says how)
+  kSliding,          // the orbit's stick structure changes here (a sliding point)
   kNoStart,          // the start point could not be corrected (why says why)
 };
 template <>
@@ -93,6 +95,8 @@ struct EnumNames<CurveEndKind> {
       {CurveEndKind::kMaxPoints, "max-points"},
       {CurveEndKind::kStepTooSmall, "step-too-small"},
       {CurveEndKind::kStartFailed, "start-failed"},
+      {CurveEndKind::kBranchJump, "branch-jump"},
+      {CurveEndKind::kSliding, "sliding"},
       {CurveEndKind::kNoStart, "start failed"},
   };
 };
