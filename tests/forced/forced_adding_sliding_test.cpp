@@ -1,0 +1,74 @@
+// Adding-sliding on a forced branch with Filippov friction (coulomb,
+// mu_s = mu_k: the slip leaving a stick phase starts tangent to x' = v, as in
+// Kowalczyk & Piiroinen, Physica D 237, 2008). Along a stick phase the stick
+// force f(t) = x_a + v (t - t_a) + 2 beta v - A cos(Omega t) has an interior
+// maximum; where it touches mu_s a stick phase splits around a short slip
+// (di Bernardo, Kowalczyk & Nordmark, Physica D 170, 2002, section 3, case
+// 4). Reference: the closed-form coulomb pieces in long double
+// (forced_reference.hpp), the orbit a fixed point of x -> x(T) from a stuck
+// start, and Omega bisected on its stick count.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "forced_reference.hpp"
+#include "forced_trace.hpp"
+#include "stickslip/forced/branch.hpp"
+
+namespace stickslip {
+namespace {
+
+namespace ref = forced_reference;
+using ref::Real;
+
+// The stick count of the m = 1 orbit through (x, v) at t = 0 (stuck there),
+// the orbit found by the secant method on x -> x(T) from x_guess.
+int SticksOfOrbit(const ForcedParams& p, Real w, Real x_guess) {
+  const ref::Setup s{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force), w};
+  const Real T = 2 * std::acos(Real(-1)) / w;
+  auto run = [&](Real x0, int* sticks) {
+    ref::PieceSim<ref::CoulombPiece> sim(s);
+    sim.dt = 5e-3L;
+    Real t = 0, x = x0, y = s.v;
+    sim.Run(t, x, y, T);
+    if (sticks) *sticks = sim.sticks;
+    return x;
+  };
+  Real a = x_guess, b = x_guess + 1e-6L, fa = run(a, nullptr) - a;
+  for (int i = 0; i < 30 && std::abs(b - a) > 1e-18L; ++i) {
+    const Real fb = run(b, nullptr) - b, c = b - fb * (b - a) / (fb - fa);
+    a = b, fa = fb, b = c;
+  }
+  int sticks = 0;
+  EXPECT_LT(std::abs(run(b, &sticks) - b), 1e-15L) << "no orbit at Omega = " << double(w);
+  return sticks;
+}
+
+// Coulomb mu_s = mu_k = 0.3, beta 0.05, v 0.1, A 0.4: near Omega = 0.41025
+// the two stick phases of the m = 1 orbit merge (2 -> 1 with Omega up).
+TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouchesMuS) {
+  const ForcedParams p = ref::Coulomb(0.3, 0.3, 0.05, 0.1, 0.4, 1);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.005;
+  const ForcedBranch b = testing_util::TraceOmega(p, 0.38, 0.44, o);
+  const ForcedBranchRow* ad = nullptr;
+  for (const ForcedBranchRow& r : b.special)
+    if (std::abs(r.p - 0.41025) < 1e-3) ad = &r;
+  ASSERT_NE(ad, nullptr) << ForcedBranchStatusName(b.status) << " " << b.message;
+  EXPECT_EQ(ad->label, ForcedLabel::kAD) << ad->description;
+  ASSERT_DOUBLE_EQ(ad->xdot0, 0.1);  // stuck at the section: the reference's start
+  Real lo = 0.4101L, hi = 0.4104L;
+  ASSERT_EQ(SticksOfOrbit(p, lo, ad->x0), 2);
+  ASSERT_EQ(SticksOfOrbit(p, hi, ad->x0), 1);
+  for (int i = 0; i < 50 && hi - lo > 1e-15L; ++i) {
+    const Real mid = (lo + hi) / 2;
+    (SticksOfOrbit(p, mid, ad->x0) == 2 ? lo : hi) = mid;
+  }
+  std::printf("[ measured ] AD at Omega = %.15g, reference %.15Lg, error %.1e\n", ad->p, lo,
+              double(ad->p - lo));
+  EXPECT_NEAR(ad->p, double(lo), 1e-10);
+}
+
+}  // namespace
+}  // namespace stickslip
