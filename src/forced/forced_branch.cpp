@@ -1,8 +1,7 @@
 // One-parameter continuation of the forced oscillator's periodic orbits: the
 // stroboscopic residual (forced_branch_problem.hpp) through Palc, rows from
 // each accepted point's run; LP, PD, NS and the sliding points located on the
-// chord between two rows; across a jump of the map, a restart beyond it
-// (forced_sliding.hpp).
+// chord between two rows; across a jump of the map, a restart (forced_sliding.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -300,7 +299,7 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
     const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : trace_dir;
     const double step = std::max(std::abs(dp), 1e-6 * std::abs(to - from));
     ForcedBranchRow before, after;
-    after.p = last.p;
+    after.p = last.p, before.p = NAN;  // before.p: set where the edge is bisected
     std::string why = "more than max_jumps = " + std::to_string(options.max_jumps) + " jumps";
     if (out.jumps >= options.max_jumps) {
       out.message += "; " + why;
@@ -308,12 +307,15 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
     }
     if (forced_detail::JumpAcross(base, axis, options, last, pdir, step, pdir == dir ? to : from,
                                   options.locate_tol, &before, &after, &why)) {
-      ForcedBranchRow point = before;
-      forced_detail::ClassifySliding(base, axis, options, before, after, &point);
-      out.special.push_back(point);
-      out.rows.push_back(point);
+      out.special.push_back(before);
+      forced_detail::ClassifySliding(base, axis, options, before, after, &out.special.back());
+      out.rows.push_back(out.special.back());
     } else if (after.p == last.p) {
       out.message += "; " + why;
+      if (std::isfinite(before.p)) {  // the edge located, no orbit beyond: one point
+        out.special.push_back(forced_detail::EdgeWithoutOrbit(base, axis, options, before, pdir));
+        out.rows.push_back(out.special.back());
+      }
       break;
     }  // else: the orbit goes on past the failure (natural steps); on from there
     ++out.jumps;

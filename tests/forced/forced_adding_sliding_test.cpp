@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
@@ -68,6 +69,59 @@ TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouch
   std::printf("[ measured ] AD at Omega = %.15g, reference %.15Lg, error %.1e\n", ad->p, lo,
               double(ad->p - lo));
   EXPECT_NEAR(ad->p, double(lo), 1e-10);
+}
+
+// With mu_s > mu_k (coulomb 0.4, 0.25, beta 0.05, v 0.1, A 0.6) the stick
+// force's interior minimum reaches -mu_s near Omega = 0.3581105: the slip that
+// splits the stick phase starts with x'' = mu_k - mu_s != 0, so it is not
+// short and no m = 1 orbit exists beyond. Once ~100 GR labels flooded
+// 0.35808 .. 0.35811 there: the parameter difference of the corrector
+// straddled the jump (dP/dOmega ~ 9e3) and points with residual 1e-5 were
+// accepted as stalled. One event, one label, at the edge of the 1-stick orbits
+// (the secant on the closed-form pieces finds none beyond it).
+TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
+  const ForcedParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.1, 0.6, 1);
+  ForcedBranchOptions o;
+  o.palc.ds_max = 0.02 * 0.02;
+  o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
+  const ForcedBranch b = testing_util::TraceOmega(p, 0.35, 0.37, o);
+  std::vector<ForcedBranchRow> near;
+  for (const ForcedBranchRow& r : b.special)
+    if (std::abs(r.p - 0.35811) < 1e-4) near.push_back(r);
+  ASSERT_EQ(near.size(), 1u) << near.size() << " labels; " << b.message;
+  EXPECT_EQ(near[0].label, ForcedLabel::kAD) << near[0].description;
+  EXPECT_EQ(b.status, ForcedBranchStatus::kStepTooSmall);
+  for (const ForcedBranchRow& r : b.rows) EXPECT_LE(r.p, near[0].p);  // nothing beyond the edge
+  ASSERT_DOUBLE_EQ(near[0].xdot0, 0.1);
+  auto orbit = [&](Real w) {  // a 1-stick orbit near the edge's state
+    const ref::Setup s{reference::Law(p.base), Real(0.05), Real(0.1), Real(0.6), w};
+    const Real T = 2 * std::acos(Real(-1)) / w;
+    auto run = [&](Real x0, int* sticks) {
+      ref::PieceSim<ref::CoulombPiece> sim(s);
+      sim.dt = 5e-3L;
+      Real t = 0, x = x0, y = s.v;
+      sim.Run(t, x, y, T);
+      if (sticks) *sticks = sim.sticks;
+      return x;
+    };
+    Real a = near[0].x0, c = a + 1e-6L, fa = run(a, nullptr) - a;
+    for (int i = 0; i < 30 && std::abs(c - a) > 1e-18L; ++i) {
+      const Real fc = run(c, nullptr) - c, d = c - fc * (c - a) / (fc - fa);
+      a = c, fa = fc, c = d;
+    }
+    int sticks = 0;
+    return std::abs(run(c, &sticks) - c) < 1e-15L && sticks == 1;
+  };
+  Real lo = 0.35811L, hi = 0.358111L;
+  ASSERT_TRUE(orbit(lo));
+  ASSERT_FALSE(orbit(hi));
+  for (int i = 0; i < 50 && hi - lo > 1e-15L; ++i) {
+    const Real mid = (lo + hi) / 2;
+    (orbit(mid) ? lo : hi) = mid;
+  }
+  std::printf("[ measured ] edge at Omega = %.15g, reference %.15Lg, error %.1e\n", near[0].p, lo,
+              double(near[0].p - lo));
+  EXPECT_NEAR(near[0].p, double(lo), 1e-10);
 }
 
 }  // namespace
