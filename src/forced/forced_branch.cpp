@@ -14,28 +14,6 @@
 
 namespace stickslip {
 
-const char* ForcedBranchStatusName(ForcedBranchStatus s) {
-  switch (s) {
-    case ForcedBranchStatus::kReachedEnd:
-      return "reached-end";
-    case ForcedBranchStatus::kUnbounded:
-      return "unbounded";
-    case ForcedBranchStatus::kStepTooSmall:
-      return "step-too-small";
-    case ForcedBranchStatus::kStartFailed:
-      return "start-failed";
-    case ForcedBranchStatus::kMaxPoints:
-      return "max-points";
-    case ForcedBranchStatus::kClosed:
-      return "closed";
-    case ForcedBranchStatus::kCancelled:
-      return "cancelled";
-    case ForcedBranchStatus::kLeftRange:
-      return "left-range";
-  }
-  return "?";
-}
-
 namespace {
 
 using Eigen::VectorXd;
@@ -124,7 +102,9 @@ class Monitor {
         o_(o),
         out_(out) {}
   bool stopped() const { return stopped_; }
-  void Restart() { have_prev_ = false; }
+  // After a jump of the map the trace turned away from `to`: restart here.
+  const VectorXd* TurnedBack() const { return turned_ ? &turned_at_ : nullptr; }
+  void Restart() { have_prev_ = turned_ = false; }
   bool operator()(const std::vector<PalcPoint>& curve);
 
  private:
@@ -138,7 +118,8 @@ class Monitor {
   double from_, to_, dir_;
   const ForcedBranchOptions& o_;
   ForcedBranch& out_;
-  bool stopped_ = false, have_prev_ = false;
+  bool stopped_ = false, have_prev_ = false, jumped_ = false, turned_ = false;
+  VectorXd turned_at_;
   ForcedBranchRow prev_;
   double prev_tests_[3] = {0, 0, 0};
 };
@@ -211,7 +192,7 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
     if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0)))
-      br = AcrossEdge(br, chord, b[2] - from[2], row);
+      br = AcrossEdge(br, chord, b[2] - from[2], row), jumped_ = true;
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).
     const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
@@ -249,6 +230,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
   }
   const ForcedBranchRow row = problem_.Row();
   const double tests[3] = {problem_.FoldTest(), problem_.FlipTest(), problem_.TorusTest()};
+  jumped_ = false;
   if (prev && have_prev_) Special(*prev, here, row);
   std::copy(tests, tests + 3, prev_tests_);
   prev_ = row;
@@ -263,7 +245,10 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
                    Num(from_, 12);
     stopped_ = true;
   }
-  return !stopped_;
+  // Across a jump Palc orients the far family's tangent by the near one's,
+  // which can point back: the sweep goes on toward `to` (issue 20, v from 0).
+  if (!stopped_ && jumped_ && curve.back().tangent[2] * dir_ < 0) turned_ = true, turned_at_ = here;
+  return !stopped_ && !turned_;
 }
 
 }  // namespace
@@ -285,6 +270,11 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
   int fixed_now = fixed;
   for (;;) {
     const PalcResult r = palc.Trace(u0, fixed_now, along, std::ref(monitor));
+    if (const VectorXd* at = monitor.TurnedBack(); at && out.jumps++ < options.max_jumps) {
+      u0 = *at, fixed_now = 2, along = VectorXd::Unit(3, 2) * dir, trace_dir = dir;
+      monitor.Restart();
+      continue;
+    }
     if (monitor.stopped()) {
       if (out.status == ForcedBranchStatus::kReachedEnd) out.message.clear();
       break;

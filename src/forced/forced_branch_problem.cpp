@@ -53,6 +53,28 @@ void SetAxis(ForcedParams& p, ForcedAxis a, double value) {
   }
 }
 
+const char* ForcedBranchStatusName(ForcedBranchStatus s) {
+  switch (s) {
+    case ForcedBranchStatus::kReachedEnd:
+      return "reached-end";
+    case ForcedBranchStatus::kUnbounded:
+      return "unbounded";
+    case ForcedBranchStatus::kStepTooSmall:
+      return "step-too-small";
+    case ForcedBranchStatus::kStartFailed:
+      return "start-failed";
+    case ForcedBranchStatus::kMaxPoints:
+      return "max-points";
+    case ForcedBranchStatus::kClosed:
+      return "closed";
+    case ForcedBranchStatus::kCancelled:
+      return "cancelled";
+    case ForcedBranchStatus::kLeftRange:
+      return "left-range";
+  }
+  return "?";
+}
+
 const char* ForcedLabelName(ForcedLabel l) {
   switch (l) {
     case ForcedLabel::kNone:

@@ -124,5 +124,39 @@ TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
   EXPECT_NEAR(near[0].p, double(lo), 1e-10);
 }
 
+// A floor run restarted in v (coulomb 0.4, 0.3, beta 0.1, A 0.5, Omega
+// 0.5425): past the jump at v = 0.17025 Palc lands on the 1-stick orbits at
+// v = 0.185 and once went down them (the far tangent oriented by the near
+// one) to their edge at v = 0.1730304 (an AD-type split), ending there
+// step-too-small. The sweep now goes on toward `to`: it reaches v = 0.5, and
+// a stable row near v = 0.3 is an orbit of the closed-form pieces.
+TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
+  ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
+  const ForcedBranch b = ContinueForced(p, ForcedAxis::kV, 0, 0.5, tr.end.x, tr.end.xdot, o);
+  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_FALSE(b.rows.empty());
+  EXPECT_EQ(b.rows.back().p, 0.5);
+  const ForcedBranchRow* row = nullptr;
+  for (const ForcedBranchRow& r : b.rows)
+    if (r.p >= 0.3 && r.stable && !row) row = &r;
+  ASSERT_NE(row, nullptr);
+  p.base.v = row->p;
+  const ref::Setup s{reference::Law(p.base), Real(0.1), Real(row->p), Real(0.5), Real(p.omega)};
+  ref::PieceSim<ref::CoulombPiece> sim(s);
+  const Real T = 2 * std::acos(Real(-1)) / p.omega;
+  Real t = 0, x = row->x0, y = row->xdot0;
+  sim.Run(t, x, y, 40 * T);
+  std::printf("[ measured ] v = %.6g: closed-form pieces return to (%.3e, %.3e) of the row\n",
+              row->p, double(x - row->x0), double(y - row->xdot0));
+  EXPECT_NEAR(double(x), row->x0, 1e-9);
+  EXPECT_NEAR(double(y), row->xdot0, 1e-9);
+}
+
 }  // namespace
 }  // namespace stickslip
