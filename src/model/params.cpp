@@ -127,10 +127,41 @@ ParameterRange RangeFromPoint(const Params& at, const std::string& name) {
   return {x, std::abs(r.to - x) >= std::abs(r.from - x) ? r.to : r.from};
 }
 
+namespace {
+// ParameterNames(law) as table entries, built once per law: ValidationError
+// runs for every Model (every continuation row), where looking the members up
+// by their names cost more than the checks.
+std::vector<Entry> EntriesOf(LawKind law) {
+  std::vector<Entry> out;
+  for (const std::string& name : ParameterNames(law))
+    for (const Entry& e : kTable)
+      if (name == e.name) out.push_back(e);
+  return out;
+}
+const std::vector<Entry>& LawEntries(LawKind law) {
+  static const std::vector<Entry> cubic = EntriesOf(LawKind::kCubic),
+                                  coulomb = EntriesOf(LawKind::kCoulomb),
+                                  stribeck = EntriesOf(LawKind::kStribeck),
+                                  leine = EntriesOf(LawKind::kLeine);
+  switch (law) {
+    case LawKind::kCoulomb:
+      return coulomb;
+    case LawKind::kStribeck:
+      return stribeck;
+    case LawKind::kLeine:
+      return leine;
+    case LawKind::kCubic:
+      break;
+  }
+  return cubic;
+}
+}  // namespace
+
 std::string ValidationError(const Params& p) {
-  for (const auto& name : ParameterNames(p.law)) {
-    const double x = GetParameter(p, name);
-    if (!std::isfinite(x)) return name + " = " + Num(x, 12) + " is not a finite number";
+  const std::vector<Entry>& entries = LawEntries(p.law);
+  for (const Entry& e : entries) {
+    const double x = p.*e.member;
+    if (!std::isfinite(x)) return e.name + (" = " + Num(x, 12)) + " is not a finite number";
   }
   if (p.beta < 0) return "beta = " + Num(p.beta, 12) + " must be >= 0";
   if (p.v <= 0) return "v = " + Num(p.v, 12) + " must be > 0";
@@ -159,11 +190,11 @@ std::string ValidationError(const Params& p) {
   // underflow and the results would be nan or inf.
   // A small quintic coefficient k5 or damping ratio beta is harmless (beta = 0
   // is the undamped oscillator): only their upper end counts.
-  for (const auto& name : ParameterNames(p.law)) {
-    const double x = GetParameter(p, name);
-    const double lo = name == "k5" || name == "beta" ? 0.0 : kMinScale;
+  for (const Entry& e : entries) {
+    const double x = p.*e.member;
+    const double lo = e.member == &Params::k5 || e.member == &Params::beta ? 0.0 : kMinScale;
     if (x != 0 && !(x >= lo && x <= kMaxScale))
-      return name + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
+      return e.name + (" = " + Num(x)) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
              "]: scales beyond it make the computation meaningless";
   }
   // After the scales: a subnormal v_m overflows k3, and mu(v) would be nan.
