@@ -1,8 +1,7 @@
 // One-parameter continuation of the forced oscillator's periodic orbits: the
 // stroboscopic residual (forced_branch_problem.hpp) through Palc, rows from
 // each accepted point's run; LP, PD, NS and the sliding points located on the
-// chord between two rows; across a jump of the map, a restart beyond it
-// (forced_sliding.hpp).
+// chord between two rows; across a jump of the map, a restart (forced_sliding.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,28 +13,6 @@
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
-
-const char* ForcedBranchStatusName(ForcedBranchStatus s) {
-  switch (s) {
-    case ForcedBranchStatus::kReachedEnd:
-      return "reached-end";
-    case ForcedBranchStatus::kUnbounded:
-      return "unbounded";
-    case ForcedBranchStatus::kStepTooSmall:
-      return "step-too-small";
-    case ForcedBranchStatus::kStartFailed:
-      return "start-failed";
-    case ForcedBranchStatus::kMaxPoints:
-      return "max-points";
-    case ForcedBranchStatus::kClosed:
-      return "closed";
-    case ForcedBranchStatus::kCancelled:
-      return "cancelled";
-    case ForcedBranchStatus::kLeftRange:
-      return "left-range";
-  }
-  return "?";
-}
 
 namespace {
 
@@ -125,7 +102,9 @@ class Monitor {
         o_(o),
         out_(out) {}
   bool stopped() const { return stopped_; }
-  void Restart() { have_prev_ = false; }
+  // After a jump of the map the trace turned away from `to`: restart here.
+  const VectorXd* TurnedBack() const { return turned_ ? &turned_at_ : nullptr; }
+  void Restart() { have_prev_ = turned_ = false; }
   bool operator()(const std::vector<PalcPoint>& curve);
 
  private:
@@ -139,7 +118,8 @@ class Monitor {
   double from_, to_, dir_;
   const ForcedBranchOptions& o_;
   ForcedBranch& out_;
-  bool stopped_ = false, have_prev_ = false;
+  bool stopped_ = false, have_prev_ = false, jumped_ = false, turned_ = false;
+  VectorXd turned_at_;
   ForcedBranchRow prev_;
   double prev_tests_[3] = {0, 0, 0};
 };
@@ -212,7 +192,7 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
     if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0)))
-      br = AcrossEdge(br, chord, b[2] - from[2], row);
+      br = AcrossEdge(br, chord, b[2] - from[2], row), jumped_ = true;
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).
     const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
@@ -250,6 +230,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
   }
   const ForcedBranchRow row = problem_.Row();
   const double tests[3] = {problem_.FoldTest(), problem_.FlipTest(), problem_.TorusTest()};
+  jumped_ = false;
   if (prev && have_prev_) Special(*prev, here, row);
   std::copy(tests, tests + 3, prev_tests_);
   prev_ = row;
@@ -264,7 +245,10 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
                    Num(from_, 12);
     stopped_ = true;
   }
-  return !stopped_;
+  // Across a jump Palc orients the far family's tangent by the near one's,
+  // which can point back: the sweep goes on toward `to` (issue 20, v from 0).
+  if (!stopped_ && jumped_ && curve.back().tangent[2] * dir_ < 0) turned_ = true, turned_at_ = here;
+  return !stopped_ && !turned_;
 }
 
 }  // namespace
@@ -286,6 +270,11 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
   int fixed_now = fixed;
   for (;;) {
     const PalcResult r = palc.Trace(u0, fixed_now, along, std::ref(monitor));
+    if (const VectorXd* at = monitor.TurnedBack(); at && out.jumps++ < options.max_jumps) {
+      u0 = *at, fixed_now = 2, along = VectorXd::Unit(3, 2) * dir, trace_dir = dir;
+      monitor.Restart();
+      continue;
+    }
     if (monitor.stopped()) {
       if (out.status == ForcedBranchStatus::kReachedEnd) out.message.clear();
       break;
@@ -300,7 +289,7 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
     const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : trace_dir;
     const double step = std::max(std::abs(dp), 1e-6 * std::abs(to - from));
     ForcedBranchRow before, after;
-    after.p = last.p;
+    after.p = last.p, before.p = NAN;  // before.p: set where the edge is bisected
     std::string why = "more than max_jumps = " + std::to_string(options.max_jumps) + " jumps";
     if (out.jumps >= options.max_jumps) {
       out.message += "; " + why;
@@ -308,12 +297,15 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
     }
     if (forced_detail::JumpAcross(base, axis, options, last, pdir, step, pdir == dir ? to : from,
                                   options.locate_tol, &before, &after, &why)) {
-      ForcedBranchRow point = before;
-      forced_detail::ClassifySliding(base, axis, options, before, after, &point);
-      out.special.push_back(point);
-      out.rows.push_back(point);
+      out.special.push_back(before);
+      forced_detail::ClassifySliding(base, axis, options, before, after, &out.special.back());
+      out.rows.push_back(out.special.back());
     } else if (after.p == last.p) {
       out.message += "; " + why;
+      if (std::isfinite(before.p)) {  // the edge located, no orbit beyond: one point
+        out.special.push_back(forced_detail::EdgeWithoutOrbit(base, axis, options, before, pdir));
+        out.rows.push_back(out.special.back());
+      }
       break;
     }  // else: the orbit goes on past the failure (natural steps); on from there
     ++out.jumps;

@@ -6,6 +6,7 @@
 #include "forced_sliding.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -83,6 +84,40 @@ double ShortestSlipBetweenSticks(const ForcedParams& base, ForcedAxis axis,
       break;
     }
   }
+  return best;
+}
+
+// How close the stick force of a stick phase comes to the band's edge at an
+// interior extremum: min (mu_s - |f(t)|) over the roots of
+// f' = v + A Omega sin(Omega t) = 0 inside the stick phases of row r's orbit,
+// f = x_a + v (t - t_a) + 2 beta v - A cos(Omega t) (design.md section 5; inf:
+// none). Zero where a stick phase splits (adding-sliding, di Bernardo,
+// Kowalczyk & Nordmark 2002, section 3, case 4).
+double StickTouchToEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
+                        const ForcedBranchRow& r) {
+  const ForcedModel model(At(base, axis, r.p));
+  const double w = model.omega(), s = -model.v() / (model.force() * w);
+  double best = std::numeric_limits<double>::infinity();
+  if (!(std::abs(s) <= 1)) return best;
+  const double period = r.m * model.period();
+  std::vector<ForcedEvent> ev = Events(base, axis, o, r);
+  // The stick phases as (t_a, x_a, t_b): one from t = 0 if the orbit starts stuck.
+  std::vector<std::array<double, 3>> phases;
+  double t_a = r.xdot0 == model.v() ? 0 : NAN, x_a = r.x0;
+  for (const ForcedEvent& e : ev) {
+    if (e.kind == ForcedEventKind::kStickIn) t_a = e.t, x_a = e.x;
+    if (e.kind == ForcedEventKind::kStickOut && std::isfinite(t_a))
+      phases.push_back({t_a, x_a, e.t}), t_a = NAN;
+  }
+  if (std::isfinite(t_a)) phases.push_back({t_a, x_a, period});
+  for (const auto& ph : phases)
+    for (const double root : {std::asin(s), M_PI - std::asin(s)})
+      for (double t = root / w + std::ceil((ph[0] - root / w) / model.period()) * model.period();
+           t < ph[2]; t += model.period()) {
+        if (t <= ph[0]) continue;
+        best = std::min(best, model.static_limit() -
+                                  std::abs(model.StickForce(t, ph[1] + model.v() * (t - ph[0]))));
+      }
   return best;
 }
 
@@ -208,6 +243,31 @@ bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOpt
   }
   *after = RowOf(orb, hi);
   return true;
+}
+
+ForcedBranchRow EdgeWithoutOrbit(const ForcedParams& base, ForcedAxis axis,
+                                 const ForcedBranchOptions& o, const ForcedBranchRow& before,
+                                 double dir) {
+  ForcedBranchRow beyond = before;
+  beyond.p = before.p + dir * 10 * o.locate_tol * (1 + std::abs(before.p));
+  const ForcedModel model(At(base, axis, beyond.p));
+  ForcedRequest rq;
+  rq.t_end = before.m * model.period();
+  rq.extremes = false;
+  const ForcedRun run =
+      ForcedFlow(model, o.flow).Run(ForcedStart(model, 0, before.x0, before.xdot0), rq);
+  beyond.sticks = run.sticks, beyond.crossings = run.crossings;
+  ForcedBranchRow point = before;
+  ClassifySliding(base, axis, o, before, beyond, &point);
+  const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
+  if (StickTouchToEdge(base, axis, o, before) <= tol.BandEdge()) {
+    point.label = ForcedLabel::kAD;  // the slip that splits the stick is not short: a jump
+    point.description =
+        "adding-sliding: the stick force touches the band's edge inside a stick phase, "
+        "which splits (mu(0+) < mu_s: the slip is not short, the map jumps)";
+  }
+  point.description += "; no periodic orbit of m = " + std::to_string(before.m) + " beyond";
+  return point;
 }
 
 bool JumpAcross(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,

@@ -30,6 +30,13 @@ bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOpt
                 ForcedBranchRow lo, double hi, double tol, ForcedBranchRow* before,
                 ForcedBranchRow* after, std::string* why);
 
+/// The point at an edge `before` with no periodic orbit of its multiple m
+/// just beyond (the parameter moving by dir = +-1): labelled by the stick
+/// structure of one run of m periods from its state just past the edge.
+ForcedBranchRow EdgeWithoutOrbit(const ForcedParams& base, ForcedAxis axis,
+                                 const ForcedBranchOptions& o, const ForcedBranchRow& before,
+                                 double dir);
+
 /// Where the corrector failed after `last` (the parameter moving by
 /// dir = +-1, never past `limit`): natural-parameter steps of `step`, doubled, find a value with
 /// no orbit of last's structure near it; bisection locates the edge to

@@ -204,6 +204,9 @@ struct Tolerances {
   /// Forced PD switching: the first point of the doubled branch is on it (not
   /// back on the m orbit) if |P^m z - z| exceeds this times the offset h.
   double DoubledSplit() const { return 0.5; }
+  /// Forced branches: one-sided slopes of P^m in p that differ by more than
+  /// this times (1 + the kept one) straddle a jump of the map, not a kink.
+  static constexpr double kJumpSlopeRatio = 100;
 
   // Continuation steps (continuation/: the branch tracers share these).
   // Steps of a stick-slip branch: halve when an orbit measure changes by more
