@@ -19,11 +19,11 @@ BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
       hi_(std::max(o.from, o.to)),
       dir_(o.to > o.from ? 1.0 : -1.0),
       column_(o.orbit.flow.integrator == Integrator::kTaylor &&
-              ParameterColumnSupported(base.law, o.param.name())),
+              ParameterColumnSupported(base.law, o.param)),
       phase_start_(std::chrono::steady_clock::now()) {
   finder_.set_floquet(false);
   if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
-  res_.param = o.param.name();
+  res_.param = o.param;
 }
 
 bool BranchContext::Stop() {
@@ -132,10 +132,10 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
   // G = (P(xbar + a; p) - xbar - a) / a, so dG/dp = (P_p + (P' - 1) xbar_p) / a.
   ReturnMap local;
   ReturnMap& rm = map ? *map : local;
-  finder_.flow().set_parameter_column(axis_.name());
+  finder_.flow().set_parameter_column(axis_);
   struct ColumnOff {  // also when Desingularised throws
     Flow& flow;
-    ~ColumnOff() { flow.set_parameter_column(""); }
+    ~ColumnOff() { flow.clear_parameter_column(); }
   } off{finder_.flow()};
   const OrbitStatus s = finder_.Desingularised(a, g, ga, &rm);
   if (s == OrbitStatus::kOk && rm.has_dpdp)
