@@ -1,8 +1,10 @@
 // The forced oscillator in the Python module (issue 20, item 6):
 // x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
-// ForcedAxis and ForcedSection enums, and simulate_forced, forced_orbit,
-// find_forced_orbits and continue_forced, each computed without the GIL with
+// ForcedAxis and ForcedSection enums, and simulate_forced, forced_orbit and
+// find_forced_orbits (branches: py_forced_branch.cpp), each without the GIL with
 // Ctrl-C polled by the library's cancel hooks (py_common.hpp, Interrupt).
+#include "py_forced.hpp"
+
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
@@ -18,10 +20,6 @@
 
 namespace stickslip::python {
 
-namespace {
-
-std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
-
 ForcedOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
   ForcedOptions o;  // the forced flow's own defaults, 1e-12
   if (rtol) o.rtol = *rtol;
@@ -30,6 +28,10 @@ ForcedOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
   if (!e.empty()) throw InvalidArgument(e);
   return o;
 }
+
+namespace {
+
+std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
 
 py::array Modes(const std::vector<std::uint8_t>& codes) {
   py::array names = ReadOnlyStrings(
@@ -160,62 +162,6 @@ std::vector<PyForcedOrbit> Scan(const ForcedParams& p, int max_m, int max_sticks
   return out;
 }
 
-struct PyForcedBranch {
-  ForcedAxis axis = ForcedAxis::kOmega;
-  ForcedBranchStatus status = ForcedBranchStatus::kStartFailed;
-  std::string message;
-  py::array p, x0, xdot0, m, sticks, crossings, x_min, x_max, xdot_min, xdot_max, stable,
-      multipliers;
-  std::vector<py::tuple> special;  // (label, p, x_max)
-  int evaluations = 0;
-  double seconds = 0;
-};
-
-PyForcedBranch Continue(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                        std::optional<double> x_guess, std::optional<double> xdot_guess, int m,
-                        double max_amplitude, std::optional<double> max_step,
-                        std::optional<double> rtol, std::optional<double> atol) {
-  ForcedBranchOptions o;
-  o.flow = FlowOf(rtol, atol), o.m = m, o.max_amplitude = max_amplitude;
-  if (max_step)
-    o.palc.ds_max = *max_step * std::abs(to - from);
-  else
-    o.palc.ds_max = 0.02 * std::abs(to - from);  // as ss_continue's --max_step 0.02
-  o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
-  Interrupt interrupt;
-  o.palc.cancelled = [&] { return interrupt(); };
-  ForcedBranch r;
-  {
-    py::gil_scoped_release nogil;
-    r = ContinueForced(base, axis, from, to, x_guess.value_or(0), xdot_guess.value_or(base.base.v),
-                       o);
-  }
-  interrupt.RaiseIfInterrupted();
-  PyForcedBranch out;
-  out.axis = axis, out.status = r.status, out.message = r.message;
-  out.evaluations = r.evaluations, out.seconds = r.seconds;
-  std::vector<double> pp, x0, xd0, xmin, xmax, vmin, vmax;
-  std::vector<int> mm, st, cr;
-  std::vector<bool> stable;
-  py::array_t<std::complex<double>> mult({static_cast<py::ssize_t>(r.rows.size()), py::ssize_t(2)});
-  for (size_t i = 0; i < r.rows.size(); ++i) {
-    const ForcedBranchRow& w = r.rows[i];
-    pp.push_back(w.p), x0.push_back(w.x0), xd0.push_back(w.xdot0), mm.push_back(w.m);
-    st.push_back(w.sticks), cr.push_back(w.crossings), stable.push_back(w.stable);
-    xmin.push_back(w.extremes.x_min), xmax.push_back(w.extremes.x_max);
-    vmin.push_back(w.extremes.xdot_min), vmax.push_back(w.extremes.xdot_max);
-    mult.mutable_at(i, 0) = w.multipliers[0], mult.mutable_at(i, 1) = w.multipliers[1];
-  }
-  mult.attr("setflags")(py::arg("write") = false);
-  out.p = ReadOnly(pp), out.x0 = ReadOnly(x0), out.xdot0 = ReadOnly(xd0), out.m = ReadOnly(mm);
-  out.sticks = ReadOnly(st), out.crossings = ReadOnly(cr), out.stable = ReadOnlyBool(stable);
-  out.x_min = ReadOnly(xmin), out.x_max = ReadOnly(xmax);
-  out.xdot_min = ReadOnly(vmin), out.xdot_max = ReadOnly(vmax), out.multipliers = mult;
-  for (const ForcedBranchRow& s : r.special)
-    out.special.push_back(py::make_tuple(ForcedLabelName(s.label), s.p, s.extremes.x_max));
-  return out;
-}
-
 }  // namespace
 
 namespace {
@@ -236,7 +182,9 @@ void BindForcedTypes(py::module_& m) {
       .value("step_too_small", ForcedBranchStatus::kStepTooSmall)
       .value("start_failed", ForcedBranchStatus::kStartFailed)
       .value("max_points", ForcedBranchStatus::kMaxPoints)
-      .value("closed", ForcedBranchStatus::kClosed);
+      .value("closed", ForcedBranchStatus::kClosed)
+      .value("cancelled", ForcedBranchStatus::kCancelled)
+      .value("left_range", ForcedBranchStatus::kLeftRange);
   py::class_<ForcedParams>(m, "ForcedParams",
                            "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
                            "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")
@@ -292,32 +240,14 @@ void BindForcedTypes(py::module_& m) {
       .def_readonly("points", &PyForcedOrbit::points, "(m, 2): its stroboscopic points")
       .def_readonly("stable", &PyForcedOrbit::stable)
       .def_readonly("from_exit_map", &PyForcedOrbit::from_exit_map);
-  py::class_<PyForcedBranch>(m, "ForcedBranch", "Result of continue_forced(): one array per row.")
-      .def("__getitem__", &GetItem, py::arg("key"))
-      .def_readonly("axis", &PyForcedBranch::axis)
-      .def_readonly("status", &PyForcedBranch::status)
-      .def_readonly("message", &PyForcedBranch::message)
-      .def_readonly("p", &PyForcedBranch::p)
-      .def_readonly("x0", &PyForcedBranch::x0)
-      .def_readonly("xdot0", &PyForcedBranch::xdot0)
-      .def_readonly("m", &PyForcedBranch::m)
-      .def_readonly("sticks", &PyForcedBranch::sticks)
-      .def_readonly("crossings", &PyForcedBranch::crossings)
-      .def_readonly("x_min", &PyForcedBranch::x_min)
-      .def_readonly("x_max", &PyForcedBranch::x_max)
-      .def_readonly("xdot_min", &PyForcedBranch::xdot_min)
-      .def_readonly("xdot_max", &PyForcedBranch::xdot_max)
-      .def_readonly("stable", &PyForcedBranch::stable)
-      .def_readonly("multipliers", &PyForcedBranch::multipliers, "(rows, 2) complex")
-      .def_readonly("special", &PyForcedBranch::special, "[(label, p, x_max)]: LP, PD, ...")
-      .def_readonly("evaluations", &PyForcedBranch::evaluations)
-      .def_readonly("seconds", &PyForcedBranch::seconds);
 }
 
 }  // namespace
 
 void BindForced(py::module_& m) {
   BindForcedTypes(m);
+  BindForcedBranch(m);
+  BindChaos(m);
   m.def("simulate_forced", &Simulate, py::arg("params"), py::arg("x0") = 0.0,
         py::arg("xdot0") = py::none(), py::arg("t_end") = 100.0, py::arg("dt") = 0.01,
         py::arg("section") = ForcedSection::kStrobe, py::arg("max_rows") = 1000000,
@@ -333,12 +263,6 @@ void BindForced(py::module_& m) {
         py::arg("radius") = 0.0, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
         "Every periodic orbit found at one parameter point (m = 1..max_m), by shooting on the "
         "stroboscopic map and on the exit-phase map; a list of ForcedOrbit.");
-  m.def("continue_forced", &Continue, py::arg("params"), py::arg("axis"), py::arg("from_"),
-        py::arg("to"), py::arg("x_guess") = py::none(), py::arg("xdot_guess") = py::none(),
-        py::arg("m") = 1, py::arg("max_amplitude") = 1e3, py::arg("max_step") = py::none(),
-        py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
-        "The branch of m-periodic orbits through the one near (x_guess, xdot_guess) at "
-        "axis = from_, continued to `to` (as ss_continue --force --param).");
 }
 
 }  // namespace stickslip::python

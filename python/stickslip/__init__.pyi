@@ -89,6 +89,8 @@ class ForcedBranchStatus(enum.IntEnum):
     start_failed = 3
     max_points = 4
     closed = 5
+    cancelled = 6
+    left_range = 7
 
 LawLike = Union[str, Law]
 IntegratorLike = Union[str, Integrator, None]
@@ -252,8 +254,31 @@ class ForcedBranch:
     stable: Array
     multipliers: Array
     special: List[Tuple[str, float, float]]
+    special_points: List[ForcedSpecialPoint]
+    jumps: int
     evaluations: int
     seconds: float
+    def __getitem__(self, key: str) -> Any: ...
+
+class ForcedSpecialPoint:
+    label: str
+    description: str
+    axis: ForcedAxis
+    params: ForcedParams
+    p: float
+    x0: float
+    xdot0: float
+    run_from: float
+    run_to: float
+    m: int
+    sticks: int
+    crossings: int
+    x_min: float
+    x_max: float
+    xdot_min: float
+    xdot_max: float
+    multipliers: Array
+    stable: bool
     def __getitem__(self, key: str) -> Any: ...
 
 class Trajectory:
@@ -465,6 +490,25 @@ def continue_forced(params: ForcedParams, axis: ForcedAxis, from_: float, to: fl
                     m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None,
                     atol: Optional[float] = None) -> ForcedBranch: ...
+def continue_doubled(point: ForcedSpecialPoint, lo: Optional[float] = None,
+                     hi: Optional[float] = None, max_amplitude: float = 1e3,
+                     max_step: Optional[float] = None, rtol: Optional[float] = None,
+                     atol: Optional[float] = None) -> ForcedBranch: ...
+def stroboscopic(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
+                 transient: Optional[int] = None, keep: Optional[int] = None,
+                 max_amplitude: float = 1e6, rtol: Optional[float] = None,
+                 atol: Optional[float] = None) -> Dict[str, Any]: ...
+def orbit_diagram(params: ForcedParams, axis: ForcedAxis, from_: float, to: float, n: int = 200,
+                  transient: Optional[int] = None, keep: Optional[int] = None, up: bool = True,
+                  down: bool = True, chunks: int = 1, max_amplitude: float = 50.0,
+                  rtol: Optional[float] = None,
+                  atol: Optional[float] = None) -> Dict[str, Any]: ...
+def forced_basins(params: ForcedParams, nx: int = 41, ny: int = 41,
+                  x_range: Tuple[float, float] = (-1.5, 1.5),
+                  xdot_range: Tuple[float, float] = (-1.5, 1.5),
+                  transient: Optional[int] = None, keep: Optional[int] = None,
+                  max_period: Optional[int] = None, threads: int = 2,
+                  rtol: Optional[float] = None, atol: Optional[float] = None) -> Dict[str, Any]: ...
 def periodic_orbit(params: Params, a_guess: Optional[float] = None, floquet: bool = False,
                    rtol: Optional[float] = None, atol: Optional[float] = None,
                    integrator: IntegratorLike = None, method: MethodLike = None) -> Orbit: ...

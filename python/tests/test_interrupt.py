@@ -21,7 +21,8 @@ except KeyboardInterrupt:
 
 # Each runs for seconds to minutes uninterrupted (measured on this machine:
 # simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart 27 s,
-# its regions on 1000 x 1000 cells about 90 s).
+# its regions on 1000 x 1000 cells about 90 s, orbit_diagram 5000 values and forced_basins
+# 401 x 401 starts well over 10 s each).
 CALLS = """{
  "simulate": lambda: stickslip.simulate(stickslip.Params(v_m=1e-6), xdot0=0.0),
  "continue_branch": lambda: stickslip.continue_branch(stickslip.Params(), "v", 0.05, 0.5,
@@ -29,6 +30,11 @@ CALLS = """{
  "basins": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801),
  "chart": lambda: stickslip.chart(stickslip.Params(), max_step=5e-5),
  "chart_regions": lambda: stickslip.chart(stickslip.Params(), regions=(1000, 1000)),
+ "orbit_diagram": lambda: stickslip.orbit_diagram(stickslip.ForcedParams(stickslip.Params(
+     "stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25), force=0.3, omega=0.5),
+     stickslip.ForcedAxis.omega, 0.5, 1.0, n=5000),
+ "forced_basins": lambda: stickslip.forced_basins(stickslip.ForcedParams(stickslip.Params(),
+     force=0.2, omega=0.8), nx=401, ny=401),
 }"""
 
 
@@ -93,6 +99,12 @@ class CtrlC(unittest.TestCase):
 
     def test_chart_regions(self):
         self.check("chart_regions")
+
+    def test_orbit_diagram(self):
+        self.check("orbit_diagram")
+
+    def test_forced_basins(self):
+        self.check("forced_basins")
 
 
 if __name__ == "__main__":

@@ -41,6 +41,7 @@ std::string ForcedBasinOptions::ValidationError() const {
   if (max_period < 1 || max_period > iterate.keep / 2)
     return "max_period = " + std::to_string(max_period) + " must lie in [1, keep / 2]";
   if (threads < 1) return "threads must be >= 1";
+  if (max_keep < 1) return "max_keep = " + std::to_string(max_keep) + " must be >= 1";
   return iterate.ValidationError();
 }
 
@@ -84,6 +85,24 @@ Attractor ClassifyAttractor(const ForcedModel& model, const StroboscopicRun& r,
 
 namespace {
 
+// One start's attractor: keep periods after the transient, then (while
+// undecided) 4x as many from the end reached, up to o.max_keep.
+Attractor ClassifyStart(const ForcedModel& model, const ForcedBasinStart& s,
+                        const ForcedBasinOptions& o, const std::function<bool()>& cancelled,
+                        StroboscopicRun* r) {
+  *r = IterateStroboscopic(model, ForcedStart(model, 0, s.x, s.xdot), o.iterate, cancelled,
+                           o.max_amplitude);
+  Attractor a = ClassifyAttractor(model, *r, o);
+  LyapunovOptions more = o.iterate;
+  more.transient = more.align = o.iterate.align;
+  while (a.kind == AttractorKind::kUndecided && more.keep <= o.max_keep / 4) {
+    more.keep *= 4;
+    *r = IterateStroboscopic(model, r->end, more, cancelled, o.max_amplitude);
+    a = ClassifyAttractor(model, *r, o);
+  }
+  return a;
+}
+
 // The index of a in the list (merged as the header says), appended if new.
 int Merge(std::vector<Attractor>& list, const Attractor& a, double same) {
   for (size_t i = 0; i < list.size(); ++i) {
@@ -122,12 +141,11 @@ ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOpt
   auto work = [&] {
     for (int k; !stop.load() && (k = next.fetch_add(1)) < n;) {
       try {
-        const ForcedBasinStart& s = b.starts[k];
-        const StroboscopicRun r = IterateStroboscopic(
-            model, ForcedStart(model, 0, s.x, s.xdot), o.iterate,
-            [&stop] { return stop.load(std::memory_order_relaxed); }, o.max_amplitude);
+        StroboscopicRun r;
+        const Attractor a = ClassifyStart(
+            model, b.starts[k], o, [&stop] { return stop.load(std::memory_order_relaxed); }, &r);
         if (r.status == LyapunovStatus::kCancelled) break;
-        found[k] = ClassifyAttractor(model, r, o);
+        found[k] = a;
         if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
       } catch (const std::exception& ex) {
         found[k].kind = AttractorKind::kFailed;

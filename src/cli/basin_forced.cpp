@@ -99,6 +99,8 @@ int RunForcedBasin(const Arguments& args, const std::string& prog, const std::st
                            {"section", "forcing phase 0 (cos Omega t = 1)"},
                            {"transient", std::to_string(o.iterate.transient) + " forcing periods"},
                            {"keep", std::to_string(o.iterate.keep) + " forcing periods"},
+                           {"undecided_run_on",
+                            "x4 while undecided, up to " + std::to_string(o.max_keep) + " periods"},
                            {"status", b.cancelled ? "partial (" + run.Reason() + ")"
                                                   : std::to_string(b.failed) + " starts failed"}});
   TsvTable starts = ForcedBasinTable(b), attractors = AttractorTable(b);

@@ -1,7 +1,9 @@
 #include "cli/run_continuation.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -21,8 +23,12 @@ struct Shared {
   std::mutex m;
   std::condition_variable cv;
   bool done = false;
-  bool cancel = false;              // set by the main thread on a signal or --max_time
-  std::vector<BranchPoint> points;  // as reported, for a run that failed by an exception
+  // Set by the main thread on a signal or --max_time; read without the lock
+  // after every integration step (an atomic: no mutex per step).
+  std::atomic<bool> cancel{false};
+  // As reported, for a run that failed by an exception; a deque grows without
+  // copying what it holds (a dense branch reports thousands of points).
+  std::deque<BranchPoint> points;
   double last = 0;
   bool periodic = false;     // a periodic orbit has been reported
   double last_periodic = 0;  // where the last one was
@@ -44,7 +50,7 @@ ContinuationResult ContinueAsStatus(const Params& base, const ContinuationOption
   }
   ContinuationResult r;
   std::lock_guard<std::mutex> lock(sh.m);
-  r.points = sh.points;
+  r.points.assign(sh.points.begin(), sh.points.end());
   r.status = ContinuationStatus::kFailed;
   r.message = "numerical failure in the continuation near " + opts.param.name() + " = " +
               FormatNumber(sh.last) + ": " + why;
@@ -62,8 +68,7 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
   // Polled after every integration step (a few microseconds): no clock here.
   // The main thread below reads the clock every 50 ms and sets sh->cancel.
   opts.cancelled = [sh, &run] {
-    std::lock_guard<std::mutex> lock(sh->m);
-    return sh->cancel || run.Signalled();
+    return sh->cancel.load(std::memory_order_relaxed) || run.Signalled();
   };
   opts.progress = [sh, &run, opts](const BranchPoint& pt) {
     std::lock_guard<std::mutex> lock(sh->m);

@@ -22,6 +22,12 @@ BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
               ParameterColumnSupported(base.law, o.param)),
       phase_start_(std::chrono::steady_clock::now()) {
   finder_.set_floquet(false);
+  // Room for the equilibrium grid (1 / max_step rows) and as many periodic
+  // rows, capped: a dense branch then never copies its points as they come.
+  // (A capacity, not a threshold: 16 rows for Hopf and grazing points, at most
+  // 2^16 rows reserved, 7 MB of untouched address space.)
+  const double rows = 2.0 * (std::ceil(1.0 / o.max_step) + 16);
+  res_.points.reserve(static_cast<size_t>(std::min(rows, 65536.0)));
   if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
   res_.param = o.param;
 }

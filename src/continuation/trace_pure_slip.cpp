@@ -168,7 +168,7 @@ bool PureSlipTracer::Start(const BranchStart& s, PalcPoint* first) {
   const Orbit o = PureSlipFromMap(curve_.map);
   last_stable_ = o.stable;
   last_xdot_max_ = o.xdot_max;
-  last_v_ = Model(ctx_.At(s.p)).v();
+  last_v_ = ctx_.At(s.p).v;  // the point was just evaluated: a valid model
   ctx_.Add(ctx_.FromOrbit(s.p, o, s.a));
   return true;
 }
@@ -312,7 +312,7 @@ void PureSlipTracer::Accept(const PalcPoint& last, const PalcCorrection& c, cons
   ctx_.Add(ctx_.FromOrbit(c.u[1], o, next.u[0]));
   last_stable_ = o.stable;
   last_xdot_max_ = o.xdot_max;
-  last_v_ = Model(ctx_.At(c.u[1])).v();
+  last_v_ = ctx_.At(c.u[1]).v;  // evaluated by EvalG: a valid model
 }
 
 BranchEnd PureSlipTracer::Run(const BranchStart& s) {

@@ -10,8 +10,7 @@ namespace stickslip {
 
 namespace {
 
-BranchPoint EquilibriumPoint(const Params& at, double p) {
-  const Equilibrium e = Model(at).SteadySliding();
+BranchPoint EquilibriumPoint(const Equilibrium& e, double p) {
   BranchPoint pt;
   pt.p = p;
   pt.kind = PointKind::kEquilibrium;
@@ -48,16 +47,18 @@ std::vector<BranchPoint> TraceEquilibrium(BranchContext& ctx) {
   // Polls the cancel hook per row: a fine grid (1 / max_step rows) takes long.
   for (int i = 0; i <= n && !ctx.Stop(); ++i) {
     const double p = i == n ? o.to : o.from + (o.to - o.from) * i / n;
-    const double d = HopfDamping(ctx.At(p));
+    // One model per row: its steady sliding gives the row and HopfDamping's d.
+    const Equilibrium e = Model(ctx.At(p)).SteadySliding();
+    const double d = e.damping;
     if (i > 0 && d_prev * d < 0) {
       const RootResult r = LocateHopf(ctx.base(), ctx.axis(), p_prev, p, d_prev, d, o.locate_tol);
       if (r.ok) {
-        rows.push_back(EquilibriumPoint(ctx.At(r.x), r.x));
+        rows.push_back(EquilibriumPoint(Model(ctx.At(r.x)).SteadySliding(), r.x));
         ctx.AddHopf(r.x);
         ctx.AddSpecial(HopfPoint(ctx.At(r.x), r.x));
       }
     }
-    rows.push_back(EquilibriumPoint(ctx.At(p), p));
+    rows.push_back(EquilibriumPoint(e, p));
     p_prev = p;
     d_prev = d;
   }

@@ -1,6 +1,7 @@
 // The seed's bounds a1 (3.18) and a2 (3.20) fitted by NLopt; see estimates.hpp.
 #include <nlopt.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -71,20 +72,53 @@ double WorstViolation(Side side, const std::vector<double>& w, double a) {
   return worst;
 }
 
+// The check grid, Grid(lo, hi, n) mapped by w, streamed: the same samples
+// without the two vectors of n (200001 by default) per fit.
+template <class W>
+struct CheckGrid {
+  double lo, hi;
+  int n;
+  W w;
+  double Worst(Side side, double a) const {
+    double worst = -HUGE_VAL;
+    for (int i = 0; i < n; ++i) {
+      const double x = i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1);
+      worst = std::max(worst, Violation(side, w(x), a));
+    }
+    return worst;
+  }
+};
+
+// The samples that can bind: every c_i = +-(w_i - a) has the same gradient, so
+// a sample more than tol inside the extreme one is implied by it, and dropping
+// it leaves the feasible set {a : c_i <= 0 for all i} as it is (an exact presolve;
+// NLopt then solves an LP of one or a few rows instead of fit_points rows).
+std::vector<double> Binding(Side side, const std::vector<double>& w, double tol) {
+  const bool lower = side == Side::kLower;
+  const double extreme =
+      lower ? *std::max_element(w.begin(), w.end()) : *std::min_element(w.begin(), w.end());
+  std::vector<double> kept;
+  for (double wi : w)
+    if (lower ? wi >= extreme - tol : wi <= extreme + tol) kept.push_back(wi);
+  return kept;
+}
+
 // NLopt's LD_SLSQP: it takes the m sampled constraints as one vector-valued
 // inequality (nlopt_add_inequality_mconstraint) with exact gradients, and since
 // objective and constraints are linear in a its QP subproblem is exact, so it
 // lands on the active sample in a few iterations. (LN_COBYLA also accepts
 // mconstraints but builds linear models from m + 1 evaluations for nothing here.)
-BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<double>& w_check,
+template <class W>
+BoundFit FitOne(Side side, const std::vector<double>& w_fit, const CheckGrid<W>& check,
                 const BoundFitOptions& o) {
   BoundFit fit;
   NloptHandle opt(nlopt_create(NLOPT_LD_SLSQP, 1), &nlopt_destroy);
   if (!opt) throw ExternalError("nlopt_create(NLOPT_LD_SLSQP, 1) returned NULL");
-  Problem pr{side, &w_fit};
-  const std::vector<double> tol(w_fit.size(), 0.01 * o.check_tolerance);
+  const std::vector<double> active = Binding(side, w_fit, 0.01 * o.check_tolerance);
+  Problem pr{side, &active};
+  const std::vector<double> tol(active.size(), 0.01 * o.check_tolerance);
   CheckNlopt(nlopt_set_min_objective(opt.get(), Objective, &pr), "nlopt_set_min_objective");
-  CheckNlopt(nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(w_fit.size()),
+  CheckNlopt(nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(active.size()),
                                               Constraints, &pr, tol.data()),
              "nlopt_add_inequality_mconstraint");
   CheckNlopt(nlopt_set_lower_bounds1(opt.get(), 0.0), "nlopt_set_lower_bounds1");  // a >= 0
@@ -118,7 +152,7 @@ BoundFit FitOne(Side side, const std::vector<double>& w_fit, const std::vector<d
   }
   fit.status = BoundStatus::kFitted;
   fit.a = a;
-  fit.worst_violation = WorstViolation(side, w_check, a);
+  fit.worst_violation = check.Worst(side, a);
   fit.holds = fit.worst_violation <= o.check_tolerance;
   if (!fit.holds) fit.reason = "check grid violated by " + Num6(fit.worst_violation);
   return fit;
@@ -147,7 +181,7 @@ SeedBounds FitSeedBounds(const Params& p, const BoundFitOptions& o) {
   // the tightest bound is the SMALLEST such a1.
   auto w1 = [&](double x) { return -(A - 3.0 * k3 * v * x + k3 * x * x); };
   b.a1 = FitOne(Side::kLower, Map(Grid(r1, v, o.fit_points), w1),
-                Map(Grid(r1, v, o.check_points), w1), o);
+                CheckGrid<decltype(w1)>{r1, v, o.check_points, w1}, o);
   b.a1.lo = r1;
   b.a1.hi = v;
 
@@ -164,7 +198,7 @@ SeedBounds FitSeedBounds(const Params& p, const BoundFitOptions& o) {
   const double lo = std::min(x1_low, r1);
   auto w2 = [&](double x) { return -k3 * x * (x - r2) / (x + r1); };
   b.a2 = FitOne(Side::kUpper, Map(Grid(lo, r1, o.fit_points), w2),
-                Map(Grid(lo, r1, o.check_points), w2), o);
+                CheckGrid<decltype(w2)>{lo, r1, o.check_points, w2}, o);
   b.a2.lo = lo;
   b.a2.hi = r1;
   if (x1_low >= r1 && b.a2.reason.empty())

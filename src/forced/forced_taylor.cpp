@@ -24,23 +24,36 @@ void SlipSeries::Recur() {
   co[0] = std::cos(w * t0_);
   si[0] = std::sin(w * t0_);
   mu_.Begin<L>(order_);
+  double damp = 0;  // 2 beta + mu'(s_0)
   for (int k = 0; k < order_; ++k) {
     mu_.Old<L, Var>(k, s);
+    const double inv = kInverse.r[k];
+    if (k > 0) {
+      // mu_k = alpha_k + mu'(s_0) s_k with s_k = -sigma x'_k (MuSeries::Alpha):
+      // x'_{k+1} without waiting for the law's series at order k (the chain
+      // from x'_k is a multiply-add; as in belt_taylor.cpp).
+      const double sigma_alpha = mu_.Alpha<L>(k, sigma_);
+      xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k] + a * co[k]) * inv;
+    }
     s[k] = sigma_ * ((k == 0 ? v : 0.0) - xd[k]);
     double dmu = 0;
     const double muk = mu_.New<L, Var>(k, s, &dmu);
-    const double inv = kInverse.r[k];
     x[k + 1] = xd[k] * inv;
-    xd[k + 1] = (-x[k] - two_beta * xd[k] + sigma_ * muk + a * co[k]) * inv;
+    if (k == 0) {
+      xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk + a * co[0];
+      damp = two_beta + mu_.slope();
+    }
     co[k + 1] = -w * si[k] * inv;
     si[k + 1] = w * co[k] * inv;
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-      for (int col = 2; col < 6; col += 2) {
-        const double cq = Cauchy(c_[col + 1], cc, k);
-        c_[col][k + 1] = c_[col + 1][k] * inv;
-        c_[col + 1][k + 1] = (-c_[col][k] + cq) * inv;
-      }
+      // Both columns' sums of products with cc in one pass (Cauchy2).
+      double cq0, cq1;
+      Cauchy2(c_[3], c_[5], cc, k, &cq0, &cq1);
+      c_[2][k + 1] = c_[3][k] * inv;
+      c_[3][k + 1] = (-c_[2][k] + cq0) * inv;
+      c_[4][k + 1] = c_[5][k] * inv;
+      c_[5][k + 1] = (-c_[4][k] + cq1) * inv;
     }
   }
 }

@@ -28,6 +28,7 @@ class MuSeries {
       for (int j = 1; j <= 5; j += 2)
         if (c_[j] != 0) degree_ = j;
     }
+    if (law_ == LawKind::kStribeck) inv_b_ = 1 / b_;
   }
   LawKind law() const { return law_; }
 
@@ -61,7 +62,12 @@ class MuSeries {
   Series<kMaxOrder> w_[4];
   double old_[4] = {0, 0, 0, 0};  // Old(k)'s sums, one per product
   double slope_ = 0;              // mu'(s_0)
-  double s0_ = 0;                 // cubic: s_0
+  double inv_b_ = 0;              // stribeck: 1 / v_s
+  double inv_d0_ = 0;             // leine: 1 / D_0, once per step
+  // 1 / k at [k - 1]: the recurrences multiply, a division per coefficient
+  // sat on their critical path.
+  static constexpr Reciprocals<kMaxOrder> kInverse{};
+  double s0_ = 0;  // cubic: s_0
 };
 
 template <LawKind L, bool D>
@@ -123,18 +129,19 @@ inline double MuSeries::New(int k, const double* s, double* dmu) {
     double* u = w_[0].c();
     double* e = w_[1].c();
     double* ju = w_[2].c();  // j u_j
-    u[k] = -s[k] / b_;
+    u[k] = -s[k] * inv_b_;
     ju[k] = k * u[k];
-    e[k] = k == 0 ? std::exp(u[0]) : (old_[0] + ju[k] * e[0]) / k;
-    if (k == 0) slope_ = -(mu_s_ - a_) / b_ * e[0];
-    if constexpr (D) *dmu = -(mu_s_ - a_) / b_ * e[k];
+    e[k] = k == 0 ? std::exp(u[0]) : (old_[0] + ju[k] * e[0]) * kInverse.r[k - 1];
+    if (k == 0) slope_ = -(mu_s_ - a_) * inv_b_ * e[0];
+    if constexpr (D) *dmu = -(mu_s_ - a_) * inv_b_ * e[k];
     return c0 * a_ + (mu_s_ - a_) * e[k];
   } else {  // leine
     double* d = w_[0].c();
     double* q = w_[1].c();
     d[k] = c0 + a_ * s[k];
-    q[k] = (k == 0 ? mu_s_ : -(old_[0] + d[k] * q[0])) / d[0];
-    if (k == 0) slope_ = -a_ * q[0] / d[0];
+    if (k == 0) inv_d0_ = 1 / d[0];
+    q[k] = (k == 0 ? mu_s_ : -(old_[0] + d[k] * q[0])) * inv_d0_;
+    if (k == 0) slope_ = -a_ * q[0] * inv_d0_;
     if constexpr (D) {
       w_[2].c()[k] = SquareProduct(old_[1], q[0], q[k], k);
       *dmu = -(a_ / mu_s_) * w_[2].c()[k];
@@ -152,9 +159,9 @@ inline double MuSeries::Alpha(int k, double sign) const {
     if (degree_ < 5) return a;
     return a + (sign * c_[5]) * (old_[3] + s0_ * old_[2] + 2 * s0_ * w_[0].c()[0] * old_[0]);
   } else if constexpr (L == LawKind::kStribeck) {
-    return (sign * (mu_s_ - a_)) * old_[0] / k;
+    return (sign * (mu_s_ - a_)) * old_[0] * kInverse.r[k - 1];
   } else if constexpr (L == LawKind::kLeine) {
-    return -(sign * old_[0]) / w_[0].c()[0];
+    return -(sign * old_[0]) * inv_d0_;
   } else {
     return 0.0;
   }

@@ -32,6 +32,22 @@ inline double Cauchy(const double* p, const double* q, int k) {
   return (s0 + s1) + (s2 + s3);
 }
 
+// Coefficient k of p q and of r q in one pass over q (the variational
+// equations' two columns against one coefficient series).
+inline void Cauchy2(const double* p, const double* r, const double* q, int k, double* pq,
+                    double* rq) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0, t0 = 0, t1 = 0, t2 = 0, t3 = 0;
+  for (int j = 0; j <= k; j += 4) {
+    const double q0 = q[k - j], q1 = q[k - j - 1], q2 = q[k - j - 2], q3 = q[k - j - 3];
+    s0 += p[j] * q0, t0 += r[j] * q0;
+    s1 += p[j + 1] * q1, t1 += r[j + 1] * q1;
+    s2 += p[j + 2] * q2, t2 += r[j + 2] * q2;
+    s3 += p[j + 3] * q3, t3 += r[j + 3] * q3;
+  }
+  *pq = (s0 + s1) + (s2 + s3);
+  *rq = (t0 + t1) + (t2 + t3);
+}
+
 // 1 / (k + 1) for k < kMax.
 template <int kMax>
 struct Reciprocals {

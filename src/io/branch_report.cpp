@@ -53,16 +53,20 @@ std::pair<std::string, double> FirstNonFinite(const BranchPoint& p) {
 void DropNonFinite(ContinuationResult* r, const std::string& param) {
   std::string first;
   std::size_t dropped = 0;
-  std::vector<BranchPoint> kept;
-  for (const BranchPoint& p : r->points) {
-    const auto [name, x] = FirstNonFinite(p);
+  // The finite points are compacted in place: no copy of a long result.
+  std::vector<BranchPoint>& points = r->points;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto [name, x] = FirstNonFinite(points[i]);
     if (name.empty()) {
-      kept.push_back(p);
+      if (kept != i) points[kept] = points[i];
+      ++kept;
     } else if (dropped++ == 0) {
-      first = name + " = " + FormatNumber(x) + " at " + param + " = " + FormatNumber(p.p) + " (" +
-              PointKindName(p.kind) + ")";
+      first = name + " = " + FormatNumber(x) + " at " + param + " = " + FormatNumber(points[i].p) +
+              " (" + PointKindName(points[i].kind) + ")";
     }
   }
+  points.resize(kept);
   std::vector<SpecialPoint> special;
   for (const SpecialPoint& s : r->special) {
     if (std::isfinite(s.p) && std::isfinite(s.period) && std::isfinite(s.x_min) &&
@@ -73,7 +77,6 @@ void DropNonFinite(ContinuationResult* r, const std::string& param) {
     }
   }
   if (dropped == 0) return;
-  r->points = std::move(kept);
   r->special = std::move(special);
   const std::string what = "numerical failure: " + first + "; " + std::to_string(dropped) +
                            " result(s) with non-finite numbers dropped";
@@ -103,22 +106,25 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
     t.AddMeta("status", "complete");
   for (const std::string& w : r.warnings) t.AddMeta("warning", w);
   for (const auto& kv : SummaryFields(r)) t.AddMeta(kv.first, kv.second);
+  // One row vector for all rows, its cells built in place (no copies of
+  // initializer lists): a dense branch has thousands of rows.
+  std::vector<TsvTable::Cell> row;
+  row.reserve(cols.size());
+  t.Reserve(r.points.size(), 24 * cols.size());  // 17 digits, sign, exponent, tab
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& p = r.points[i];
-    std::vector<TsvTable::Cell> row = {p.p,
-                                       PointKindName(p.kind),
-                                       p.branch,
-                                       p.period,
-                                       p.x_min,
-                                       p.x_max,
-                                       p.xdot_min,
-                                       p.xdot_max,
-                                       p.t_stick,
-                                       p.multiplier,
-                                       p.stable ? 1 : 0,
-                                       p.amplitude};
+    row.clear();
+    row.emplace_back(p.p);
+    row.emplace_back(PointKindName(p.kind));
+    row.emplace_back(p.branch);
+    for (double x : {p.period, p.x_min, p.x_max, p.xdot_min, p.xdot_max, p.t_stick, p.multiplier})
+      row.emplace_back(x);
+    row.emplace_back(p.stable ? 1 : 0);
+    row.emplace_back(p.amplitude);
     for (const auto& c : extra) row.emplace_back(c.values[i]);
-    row.insert(row.end(), {static_cast<int>(i) + 1, p.x_start, p.xdot_start});
+    row.emplace_back(static_cast<int>(i) + 1);
+    row.emplace_back(p.x_start);
+    row.emplace_back(p.xdot_start);
     t.AddRow(row);
   }
   return t;

@@ -4,6 +4,9 @@
 #include <cctype>
 #include <sstream>
 
+#include "stickslip/errors.hpp"
+#include "stickslip/model/params.hpp"
+
 namespace stickslip {
 
 const char* const kFillStickSlip = "#a6cee3";
@@ -122,6 +125,17 @@ std::string EnhancedText(const std::string& plain) {
   return out;
 }
 
+namespace {
+// A model parameter is shown only if the law has it, and the cubic law's
+// quintic term only when on (k5 = 0 is seed eq. 3.3 itself).
+bool TitleShows(const std::string& key, const std::string& value,
+                const std::vector<std::string>& own) {
+  if (!IsParameterName(key)) return true;  // A, Ω, ...
+  if (std::find(own.begin(), own.end(), key) == own.end()) return false;
+  return !(key == "k5" && value == "0");
+}
+}  // namespace
+
 std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes) {
   std::vector<std::string> items;  // "key=value" (a value may hold spaces) or "(...)"
   std::istringstream in(description);
@@ -133,6 +147,7 @@ std::string FigureTitle(const std::string& description, const std::vector<std::s
       items.push_back(word);
   }
   std::string law, out, tail;
+  std::vector<std::string> own = AllParameterNames();  // the law's own once law= is read
   for (const std::string& it : items) {
     const std::size_t eq = it.find('=');
     if (eq == std::string::npos) {
@@ -145,7 +160,14 @@ std::string FigureTitle(const std::string& description, const std::vector<std::s
       law = (named ? std::string(1, static_cast<char>(std::toupper(value[0]))) + value.substr(1)
                    : EnhancedText(value)) +
             " law";
-    } else if (std::find(axes.begin(), axes.end(), key) == axes.end()) {
+      try {
+        own = ParameterNames(LawFromName(value));
+      } catch (const InvalidArgument&) {  // not a law: every parameter shown
+      }
+    } else if (!TitleShows(key, value, own) ||
+               std::find(axes.begin(), axes.end(), key) != axes.end()) {
+      continue;
+    } else {
       out += (out.empty() ? "" : ", ") + EnhancedText(key) + " = " + EnhancedText(value);
     }
   }

@@ -127,6 +127,10 @@ void TsvTable::AddRow(const std::vector<Cell>& cells) {
 
 std::string TsvTable::str() const {
   std::string out;
+  std::size_t size = body_.size() + 1;
+  for (const auto& c : comments_) size += c.size() + 3;
+  for (const auto& c : columns_) size += c.size() + 1;
+  out.reserve(size);  // one allocation, no copies as it grows
   for (const auto& c : comments_) out += "# " + c + "\n";
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i > 0) out += '\t';

@@ -139,10 +139,34 @@ std::vector<ParameterAxis> ParameterAxes(LawKind law) {
   return axes;
 }
 
+namespace {
+// ParameterAxes(law), built once per law: ValidationError runs for every
+// Model (every continuation row), where looking the members up by their
+// names cost more than the checks.
+const std::vector<ParameterAxis>& LawAxes(LawKind law) {
+  static const std::vector<ParameterAxis> cubic = ParameterAxes(LawKind::kCubic),
+                                          coulomb = ParameterAxes(LawKind::kCoulomb),
+                                          stribeck = ParameterAxes(LawKind::kStribeck),
+                                          leine = ParameterAxes(LawKind::kLeine);
+  switch (law) {
+    case LawKind::kCoulomb:
+      return coulomb;
+    case LawKind::kStribeck:
+      return stribeck;
+    case LawKind::kLeine:
+      return leine;
+    case LawKind::kCubic:
+      break;
+  }
+  return cubic;
+}
+}  // namespace
+
 std::string ValidationError(const Params& p) {
-  for (const auto& name : ParameterNames(p.law)) {
-    const double x = GetParameter(p, name);
-    if (!std::isfinite(x)) return name + " = " + Num(x, 12) + " is not a finite number";
+  const std::vector<ParameterAxis>& axes = LawAxes(p.law);
+  for (const ParameterAxis& a : axes) {
+    const double x = a.Get(p);
+    if (!std::isfinite(x)) return a.name() + " = " + Num(x, 12) + " is not a finite number";
   }
   if (p.beta < 0) return "beta = " + Num(p.beta, 12) + " must be >= 0";
   if (p.v <= 0) return "v = " + Num(p.v, 12) + " must be > 0";
@@ -171,11 +195,11 @@ std::string ValidationError(const Params& p) {
   // underflow and the results would be nan or inf.
   // A small quintic coefficient k5 or damping ratio beta is harmless (beta = 0
   // is the undamped oscillator): only their upper end counts.
-  for (const auto& name : ParameterNames(p.law)) {
-    const double x = GetParameter(p, name);
-    const double lo = name == "k5" || name == "beta" ? 0.0 : kMinScale;
+  for (const ParameterAxis& a : axes) {
+    const double x = a.Get(p);
+    const double lo = a.id() == Parameter::kK5 || a.id() == Parameter::kBeta ? 0.0 : kMinScale;
     if (x != 0 && !(x >= lo && x <= kMaxScale))
-      return name + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
+      return a.name() + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
              "]: scales beyond it make the computation meaningless";
   }
   // After the scales: a subnormal v_m overflows k3, and mu(v) would be nan.

@@ -60,8 +60,13 @@ TEST(FigureStyle, FormatNamesAndTitles) {
   EXPECT_FALSE(ParseFigureFormat("jpg", &f));
   EXPECT_EQ(FigureFile("basins", FigureFormat::kPdf), "basins.pdf");
   // The axis parameter's range is left out; names become symbols.
+  // Only the law's own parameters: k5 = 0 (the cubic law without its quintic
+  // term) and another law's parameter (mu_m for Stribeck) are left out.
   EXPECT_EQ(FigureTitle("law=cubic beta=0.05 v=[0.05, 0.5] mu_s=0.4 k5=0 (partial)", {"v"}),
-            "cubic law: β = 0.05, μ_s = 0.4, k_5 = 0 (partial)");
+            "cubic law: β = 0.05, μ_s = 0.4 (partial)");
+  EXPECT_EQ(FigureTitle("law=cubic mu_s=0.4 k5=0.24", {}), "cubic law: μ_s = 0.4, k_5 = 0.24");
+  EXPECT_EQ(FigureTitle("law=stribeck mu_k=0.25 mu_m=0.25 v_s=0.5 force=0.5", {}),
+            "Stribeck law: μ_k = 0.25, v_s = 0.5, A = 0.5");
   EXPECT_EQ(EnhancedText("a_b^c"), "a\\\\_b\\\\^c");  // escaped for a double-quoted string
   // The forced oscillator's parameters as the issue writes them: A cos(Ω t).
   EXPECT_EQ(FigureTitle("law=coulomb beta=0 force=1 omega=[0.75, 2.5]", {"omega"}),
@@ -98,9 +103,7 @@ TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
         << err_;
     EXPECT_EQ(cli::FigureError(out + "/bs/basin_stability." + ext), "");
     EXPECT_FALSE(Exists(out + "/bs/basin_stability.png"));
-    ASSERT_EQ(Run("ss_simulate",
-                  seed + " --t_end 20 --format " + ext + " --out " + out + "/s"),
-              0)
+    ASSERT_EQ(Run("ss_simulate", seed + " --t_end 20 --format " + ext + " --out " + out + "/s"), 0)
         << err_;
     EXPECT_EQ(cli::FigureError(out + "/s/trajectory." + ext), "");
     ASSERT_EQ(Run("ss_chart", "--study " + kStudies + "/seed_chart.ini --format " + ext +

@@ -4,7 +4,8 @@
 // a periodic orbit (period m forcing periods, its stick count), the stuck
 // rest (v = 0, held for good), a chaotic attractor (largest Lyapunov
 // exponent above zero by more than its error), or undecided (neither
-// periodic within max_period nor chaotic: quasi-periodic or slow). Periodic
+// periodic within max_period nor chaotic, also after running on to max_keep
+// periods: quasi-periodic or slow). Periodic
 // attractors are told apart by their section points. Starts run in parallel
 // (threads); no exception crosses a thread.
 #pragma once
@@ -34,6 +35,11 @@ struct ForcedBasinOptions {
   double x_lo = -1.5, x_hi = 1.5, xdot_lo = -1.5, xdot_hi = 1.5;
   LyapunovOptions iterate;  ///< transient, keep (the classification window), flow
   int max_period = 16;      ///< largest m looked for
+  /// A start neither periodic nor chaotic over `keep` periods runs on from its
+  /// end over 4x as many (the last `align` realigning the tangent), and again,
+  /// while that stays <= max_keep: a weakly chaotic start needs more periods
+  /// for its exponent to clear 3 errors (docs/studies.md, forced seed basins).
+  int max_keep = 1024;
   int threads = 2;
   double max_amplitude = 50;
   std::function<bool()> cancelled;                    ///< polled by the calling thread

@@ -67,6 +67,11 @@ class TsvTable {
   /// Throws InvalidArgument if the cell count differs from the column count
   /// or a text cell has a tab or newline.
   void AddRow(const std::vector<Cell>& cells);
+  /// Room for n more rows of about `bytes_per_row` characters (no copies of a
+  /// long table's text as it grows).
+  void Reserve(std::size_t n, std::size_t bytes_per_row) {
+    body_.reserve(body_.size() + n * bytes_per_row);
+  }
 
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t rows() const { return rows_; }

@@ -1,0 +1,108 @@
+"""The forced oscillator's chaos tools and branch switching in the module
+(issues 20 and 21): each result is checked against a path computed otherwise in
+the same test -- the doubled branch against the plain stroboscopic map it must
+attract, the Lyapunov exponent against ln|mu| / T from the orbit's own Floquet
+multipliers, the orbit diagram's and basins' attractors against Newton's orbit."""
+import math
+import unittest
+
+import numpy as np
+
+import stickslip
+
+
+def stribeck(omega):
+    """The forced Stribeck scene of studies/stribeck_forced.ini."""
+    p = stickslip.Params("stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25)
+    return stickslip.ForcedParams(p, force=0.3, omega=omega)
+
+
+def settled_orbit(omega, m=1):
+    """The attracting m-orbit at omega: from the map's iterate, closed by Newton."""
+    s = stickslip.stroboscopic(stribeck(omega), 0.0, 0.25, transient=300, keep=1)
+    return stickslip.forced_orbit(stribeck(omega), s["x"][0], s["xdot"][0], m=m)
+
+
+class Switch(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        o = settled_orbit(0.7)
+        cls.branch = stickslip.continue_forced(stribeck(0.7), stickslip.ForcedAxis.omega, 0.7,
+                                               0.6, x_guess=o.x0, xdot_guess=o.xdot0,
+                                               max_step=0.04, rtol=1e-13, atol=1e-13)
+
+    def test_doubled_branch_is_the_attractor_of_the_map(self):
+        pds = [q for q in self.branch.special_points if q.label == "PD"]
+        self.assertTrue(pds, [q.label for q in self.branch.special_points])
+        pd = pds[0]
+        self.assertEqual((pd.m, pd.run_from, pd.run_to), (1, 0.7, 0.6))
+        self.assertAlmostEqual(pd.params.omega, pd.p, delta=0)
+        self.assertAlmostEqual(pd.multipliers[0].real, -1, delta=1e-6)
+        d = stickslip.continue_doubled(pd, lo=pd.p - 0.006, hi=pd.p + 0.006, max_step=0.33,
+                                       rtol=1e-13, atol=1e-13)
+        self.assertEqual(d.status, stickslip.ForcedBranchStatus.reached_end, d.message)
+        self.assertTrue(np.all(d.m == 2))
+        self.assertLess(d.p[0], pd.p)  # supercritical: it opens toward lower Omega
+        # A stable row away from the PD: 300 periods of the plain map from a
+        # point off the orbit end on the row's 2-cycle.
+        k = int(np.argmax(np.abs(d.p - pd.p) * d.stable))
+        self.assertTrue(d.stable[k])
+        s = stickslip.stroboscopic(stribeck(d.p[k]), d.x0[k] + 1e-3, d.xdot0[k], transient=300,
+                                   keep=2)
+        gap = min(math.hypot(x - d.x0[k], xd - d.xdot0[k]) for x, xd in zip(s["x"], s["xdot"]))
+        self.assertLess(gap, 1e-8)
+        self.assertGreater(abs(s["x"][0] - s["x"][1]), 1e-4)  # two points: a 2-cycle
+
+    def test_only_a_period_doubling_switches(self):
+        others = [q for q in self.branch.special_points if q.label != "PD"]
+        pd = [q for q in self.branch.special_points if q.label == "PD"][0]
+        if others:
+            with self.assertRaisesRegex(stickslip.InvalidArgument, "not a period doubling"):
+                stickslip.continue_doubled(others[0])
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "must bracket"):
+            stickslip.continue_doubled(pd, lo=pd.p + 0.001, hi=pd.p + 0.01)
+
+
+class Chaos(unittest.TestCase):
+    def test_exponent_on_a_periodic_orbit_is_floquets(self):
+        o = settled_orbit(0.7)
+        mu = max(abs(z) for z in o.multipliers)
+        s = stickslip.stroboscopic(stribeck(0.7), o.x0, o.xdot0, transient=100, keep=200)
+        self.assertAlmostEqual(s["lyapunov"], math.log(mu) / o.period, delta=1e-3)
+        self.assertTrue(np.all(s["sticks"] == o.sticks))
+        np.testing.assert_allclose(s["x"], o.x0, atol=1e-9)
+
+    def test_orbit_diagram_settles_on_newtons_orbit(self):
+        d = stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.69, 0.71, n=3,
+                                    transient=300, keep=8)
+        self.assertEqual(d["failed"], [])
+        self.assertEqual(len(d["columns"]["value"]), 6)  # 3 up, 3 down
+        self.assertEqual(len(d["x"]), 6 * 8)
+        np.testing.assert_allclose(sorted(set(d["value"])), [0.69, 0.7, 0.71], rtol=1e-15)
+        at = np.isclose(d["value"], 0.7, rtol=0, atol=1e-15)
+        o = settled_orbit(0.7)
+        np.testing.assert_allclose(d["x"][at], o.x0, atol=1e-9)
+        np.testing.assert_allclose(d["xdot"][at], o.xdot0, atol=1e-9)
+        self.assertTrue(np.all(d["columns"]["lyapunov"] < 0))
+
+    def test_basin_attractors_are_newtons_orbits(self):
+        b = stickslip.forced_basins(stribeck(0.7), nx=3, ny=3, transient=300, keep=16)
+        self.assertEqual(len(b["attractor"]), 9)
+        self.assertEqual(b["failed"], 0)
+        periodic = [a for a in b["attractors"] if a["kind"] == "periodic"]
+        self.assertTrue(periodic)
+        self.assertEqual(sum(a["starts"] for a in b["attractors"]), 9)
+        for a in periodic:
+            o = stickslip.forced_orbit(stribeck(0.7), a["x"], a["xdot"], m=a["m"])
+            self.assertLess(math.hypot(o.x0 - a["x"], o.xdot0 - a["xdot"]), 1e-8)
+            self.assertEqual(o.sticks, a["sticks"])
+
+    def test_bad_input_names_the_option(self):
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):
+            stickslip.stroboscopic(stribeck(0.7), keep=0)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "n"):
+            stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7, n=0)
+
+
+if __name__ == "__main__":
+    unittest.main()
