@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   // The same chart in-process: per curve.
   stickslip::Params base;
   stickslip::ChartOptions o;
-  o.plane = stickslip::Plane{"v", "beta", 0.02, 0.6, 0.0, 0.25};
+  o.plane = stickslip::Plane{stickslip::Parameter::kV, stickslip::Parameter::kBeta, 0.02, 0.6, 0.0, 0.25};
   const stickslip::ChartResult r = stickslip::Chart(base, o);
   std::printf("Chart(): %d curves, %d points in %.3f s (wall)\n", static_cast<int>(r.curves.size()),
               r.points(), r.seconds);

@@ -130,7 +130,7 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "default_range",
       [](const ss::Params& base, const std::string& name) {
-        const ss::ParameterRange r = ss::DefaultRange(base, name);
+        const ss::ParameterRange r = ss::DefaultRange(base, ss::ParameterAxis(name));
         return py::make_tuple(r.from, r.to);
       },
       py::arg("params"), py::arg("name"),

@@ -109,7 +109,7 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   ContinuationOptions opts = options.value_or(ContinuationOptions());
   if (param) opts.param = ParameterAxis(*param);  // InvalidArgument for an unknown name
   if (!options) {  // the library's range for this parameter around base
-    const ParameterRange range = DefaultRange(base, opts.param.name());
+    const ParameterRange range = DefaultRange(base, opts.param);
     opts.from = range.from, opts.to = range.to;
   }
   if (from) opts.from = *from;
@@ -126,7 +126,7 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   }
   interrupt.RaiseIfInterrupted();
   if (r.status == ContinuationStatus::kFailed) RaiseNumerical(r.message);
-  return Branch{r.param,   r.status, r.message, r.warnings, BranchPoints(r.points),
+  return Branch{r.param.name(), r.status, r.message, r.warnings, BranchPoints(r.points),
                 r.special, r.counts, r.seconds};
 }
 

@@ -128,8 +128,12 @@ void BindOptions(py::module_& m) {
       .def_readwrite("stick_slip_floquet", &ContinuationOptions::stick_slip_floquet)
       .def("validation_error", &ContinuationOptions::ValidationError, py::arg("params"));
   Options<Plane>(m, "Plane", "The rectangle of a chart: p1 in [from1, to1], p2 in [from2, to2].")
-      .def_readwrite("p1", &Plane::p1)
-      .def_readwrite("p2", &Plane::p2)
+      .def_property(
+          "p1", [](const Plane& pl) { return pl.p1.name(); },
+          [](Plane& pl, const std::string& name) { pl.p1 = ParameterAxis(name); })
+      .def_property(
+          "p2", [](const Plane& pl) { return pl.p2.name(); },
+          [](Plane& pl, const std::string& name) { pl.p2 = ParameterAxis(name); })
       .def_readwrite("from1", &Plane::from1)
       .def_readwrite("to1", &Plane::to1)
       .def_readwrite("from2", &Plane::from2)

@@ -24,7 +24,7 @@ ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::st
                           "forced_params(), axis, from_, to, *point.state, m=point.m)");
   ContinuationOptions o;
   o.param = ParameterAxis(param.value_or(lp.param));  // InvalidArgument for an unknown name
-  const ParameterRange r = RangeFromPoint(lp.params, o.param.name());
+  const ParameterRange r = RangeFromPoint(lp.params, o.param);
   o.from = r.from, o.to = to.value_or(r.to);
   o.orbit.flow = lp.flow;
   const std::string err = o.ValidationError(lp.params);
@@ -40,7 +40,7 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
     throw InvalidArgument(lp.label + " is a " + lp.type + " point: a chart starts from a GR or " +
                           "HB point");
   ChartOptions o;
-  o.plane.p1 = lp.param, o.plane.p2 = param2;
+  o.plane.p1 = ParameterAxis(lp.param), o.plane.p2 = ParameterAxis(param2);
   o.plane.from1 = from, o.plane.to1 = to, o.plane.from2 = from2, o.plane.to2 = to2;
   const int max_steps = o.orbit.flow.max_steps;  // the chart's step cap
   o.orbit.flow = lp.flow, o.orbit.flow.max_steps = max_steps;
@@ -48,9 +48,9 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
   if (!err.empty()) throw InvalidArgument(err);
   ChartOptions::Seed s;
   s.kind = lp.type == "GR" ? CurveKind::kGrazing : CurveKind::kHopf;
-  s.p1 = GetParameter(lp.params, o.plane.p1), s.p2 = GetParameter(lp.params, o.plane.p2);
+  s.p1 = o.plane.p1.Get(lp.params), s.p2 = o.plane.p2.Get(lp.params);
   if (!o.plane.Contains(s.p1, s.p2))
-    throw InvalidArgument(lp.label + ": (" + o.plane.p1 + ", " + o.plane.p2 + ") = (" + Repr(s.p1) +
+    throw InvalidArgument(lp.label + ": (" + o.plane.p1.name() + ", " + o.plane.p2.name() + ") = (" + Repr(s.p1) +
                           ", " + Repr(s.p2) + ") lies outside the chart's rectangle");
   o.seeds.push_back(s);
   return o;

@@ -234,7 +234,8 @@ BranchPoints::BranchPoints(const std::vector<BranchPoint>& pts) {
 ChartOut MakeChartOut(const ChartResult& r, const Plane& plane) {
   ChartOut out;
   out.status = r.status, out.message = r.message;
-  out.param1 = plane.p1, out.param2 = plane.p2;
+  const std::string p1_name = plane.p1.name(), p2_name = plane.p2.name();  // the edge: names
+  out.param1 = p1_name, out.param2 = p2_name;
   for (const Curve& c : r.curves) {
     std::vector<double> p1, p2, period, amplitude, multiplier, l1;
     std::vector<std::string> type;
@@ -244,13 +245,13 @@ ChartOut MakeChartOut(const ChartResult& r, const Plane& plane) {
       amplitude.push_back(q.amplitude), multiplier.push_back(q.multiplier), l1.push_back(q.l1);
       type.push_back(Name(q.type)), unphysical.push_back(q.unphysical);
     }
-    out.curves.push_back({c.kind, plane.p1, plane.p2, ReadOnly(p1), ReadOnly(p2), ReadOnly(period),
+    out.curves.push_back({c.kind, p1_name, p2_name, ReadOnly(p1), ReadOnly(p2), ReadOnly(period),
                           ReadOnly(amplitude), ReadOnly(multiplier), ReadOnly(l1),
                           ReadOnlyStrings(type), ReadOnlyBool(unphysical), c.ends.Text(), c.seconds,
                           c.evaluations});
   }
   for (const Codim2Point& c : r.codim2)
-    out.codim2.push_back({Name(c.label), plane.p1, plane.p2, c.description, c.p1, c.p2});
+    out.codim2.push_back({Name(c.label), p1_name, p2_name, c.description, c.p1, c.p2});
   std::vector<int> cells;
   for (Region g : r.regions.cells) cells.push_back(static_cast<int>(g));
   py::array_t<int> grid({r.regions.n1, r.regions.n2});

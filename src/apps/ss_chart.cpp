@@ -73,8 +73,9 @@ po::options_description AppOptions() {
 // What was computed, per curve, and the codim-2 points, on stdout.
 void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::string& model,
                   const std::string& dir, const std::string& figure, bool plots_ok) {
-  std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, pl.p1.c_str(),
-              pl.p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
+  const std::string p1 = pl.p1.name(), p2 = pl.p2.name();
+  std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, p1.c_str(),
+              p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
               r.seconds * 1e3);
   if (!figure.empty())
     std::printf(" (%zu region polygons in %.1f ms)", r.faces.size(), r.face_seconds * 1e3);
@@ -91,11 +92,19 @@ void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::stri
                 c.ends.Text().c_str());
   }
   for (const ss::Codim2Point& p : r.codim2)
-    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", ss::Name(p.label), pl.p1.c_str(), p.p1,
-                pl.p2.c_str(), p.p2, p.description.c_str());
+    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", ss::Name(p.label), p1.c_str(), p.p1,
+                p2.c_str(), p.p2, p.description.c_str());
   const std::string drawn =
       figure.empty() ? "" : ", regions.tsv, chart.gp" + (plots_ok ? ", " + figure : "");
   std::printf("wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(), drawn.c_str());
+}
+
+// An axis by name (UsageError naming the option if it is no parameter).
+ss::ParameterAxis Axis(const cli::Arguments& args, const char* key, const std::string& fallback) {
+  const std::string name = args.Text(key, fallback);
+  const std::string e = ss::UnknownAxisError(name, key);
+  if (!e.empty()) throw cli::UsageError(args.Source(key) + ": " + e);
+  return ss::ParameterAxis(name);
 }
 
 // The options, validated (UsageError naming the option otherwise).
@@ -103,8 +112,8 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
   const auto restart = cli::RestartFromArguments(args);
-  pl.p1 = args.Text("param", restart ? restart->param : "v");
-  pl.p2 = args.Text("param2", "beta");
+  pl.p1 = Axis(args, "param", restart ? restart->param : "v");
+  pl.p2 = Axis(args, "param2", "beta");
   pl.from1 = args.Number("from", 0.05);
   pl.to1 = args.Number("to", 0.6);
   pl.from2 = args.Number("from2", 0.0);
@@ -142,11 +151,10 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
 // the two axes, then the axes' ranges.
 std::string DescribeChart(const ss::Params& base, const ss::Plane& pl) {
   std::string model = std::string("law=") + ss::LawName(base.law);
-  for (const auto& name : ss::ParameterNames(base.law))
-    if (name != pl.p1 && name != pl.p2)
-      model += " " + name + "=" + ss::FormatNumber(ss::GetParameter(base, name));
-  return model + " " + pl.p1 + "=[" + ss::FormatNumber(pl.from1) + ", " + ss::FormatNumber(pl.to1) +
-         "] " + pl.p2 + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
+  for (const ss::ParameterAxis& a : ss::ParameterAxes(base.law))
+    if (a != pl.p1 && a != pl.p2) model += " " + a.name() + "=" + ss::FormatNumber(a.Get(base));
+  return model + " " + pl.p1.name() + "=[" + ss::FormatNumber(pl.from1) + ", " +
+         ss::FormatNumber(pl.to1) + "] " + pl.p2.name() + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
 }
 
 int Main(int argc, char** argv) {
@@ -178,9 +186,9 @@ int Main(int argc, char** argv) {
   // Every file starts with the tool, the command, the model and the integrator.
   cli::Metadata meta = cli::RunMetadata(kProg, cli::CommandLine(argc, argv), base, opts.orbit.flow);
   for (auto& [key, value] : meta)  // the axes' base values are never used
-    if (key == pl.p1 || key == pl.p2) value = "axis";
-  meta.push_back({"range", pl.p1 + " = [" + ss::FormatNumber(pl.from1) + ", " +
-                               ss::FormatNumber(pl.to1) + "], " + pl.p2 + " = [" +
+    if (key == pl.p1.name() || key == pl.p2.name()) value = "axis";
+  meta.push_back({"range", pl.p1.name() + " = [" + ss::FormatNumber(pl.from1) + ", " +
+                               ss::FormatNumber(pl.to1) + "], " + pl.p2.name() + " = [" +
                                ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]"});
   auto text = [&](ss::TsvTable t) {
     t.PrependMeta(meta);
@@ -193,7 +201,8 @@ int Main(int argc, char** argv) {
     app.out().Write("regions.tsv", text(ss::RegionsTable(r, pl, model)));
     app.out().Write("chart.gp", ss::ChartScript(r, pl, ss::ChartTitle(base, pl), format,
                                                 cli::FigureUnitsOf(cli::ScalesFromArguments(args),
-                                                                   pl.p1, pl.p2)));
+                                                                   pl.p1.name(),
+                                                                   pl.p2.name())));
   }
   // Without plots, the older regions and figure do not belong to these curves.
   const std::vector<std::string> stale = app.plots()

@@ -142,7 +142,7 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
   const ss::Params given = cli::UncheckedModelFromArguments(args, defaults);
   // A restart runs from the point to the far end of the default range.
   const ss::ParameterRange range =
-      point ? ss::RangeFromPoint(given, name) : ss::DefaultRange(given, name);
+      point ? ss::RangeFromPoint(given, opts.param) : ss::DefaultRange(given, opts.param);
   opts.from = args.Number("from", range.from / to_param) * to_param;
   *base = cli::ModelFromArguments(args, opts.param.name(), opts.from, defaults);
   opts.orbit.flow = cli::FlowOptionsFromArguments(args, point ? point->flow : ss::FlowOptions());

@@ -16,7 +16,7 @@ ForcedParams ForcedPlane::At(const ForcedParams& base, double x1, double x2) con
 
 Plane ForcedPlane::AsPlane() const {
   Plane pl;
-  pl.p1 = ForcedAxisName(p1), pl.p2 = ForcedAxisName(p2);
+  // The trace reads the rectangle only: the axes keep the belt defaults.
   pl.from1 = from1, pl.to1 = to1, pl.from2 = from2, pl.to2 = to2;
   return pl;
 }

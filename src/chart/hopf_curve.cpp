@@ -11,15 +11,15 @@ double HopfFunction(const Params& p) { return 2.0 * p.beta + Friction(p).DMu(p.v
 
 double HopfCriticality(const Params& p) { return -Friction(p).D3Mu(p.v) / 16.0; }
 
-double HopfCurveProblem::Partial(const Params& p, const std::string& name) const {
-  if (name == "beta") return 2.0;
-  if (name == "v") return Friction(p).D2Mu(p.v);
-  const double x = GetParameter(p, name),
+double HopfCurveProblem::Partial(const Params& p, const ParameterAxis& axis) const {
+  if (axis.id() == Parameter::kBeta) return 2.0;
+  if (axis.id() == Parameter::kV) return Friction(p).D2Mu(p.v);
+  const double x = axis.Get(p),
                h = Tolerances::kHopfDifference *
                    std::max(std::abs(x), Tolerances::kHopfDifferenceFloor);
   Params lo = p, hi = p;
-  SetParameter(lo, name, x - h);
-  SetParameter(hi, name, x + h);
+  axis.Set(lo, x - h);
+  axis.Set(hi, x + h);
   return (HopfFunction(hi) - HopfFunction(lo)) / (2.0 * h);
 }
 

@@ -39,7 +39,7 @@ class HopfCurveProblem : public PalcProblem {
   std::string DomainError(const Eigen::VectorXd& u) const override;
 
  private:
-  double Partial(const Params& p, const std::string& name) const;
+  double Partial(const Params& p, const ParameterAxis& axis) const;
   Params base_;
   Plane plane_;
 };

@@ -17,16 +17,11 @@ std::string Num(double x) {
   return os.str();
 }
 
-std::string AxisError(const Params& base, const std::string& name, const char* which) {
-  if (!IsParameterName(name)) {
-    std::string all;
-    for (const auto& n : AllParameterNames()) all += (all.empty() ? "" : ", ") + n;
-    return std::string(which) + " = '" + name + "' is no parameter (expected one of " + all + ")";
-  }
-  const auto names = ParameterNames(base.law);
-  if (std::find(names.begin(), names.end(), name) == names.end())
-    return std::string(which) + " = '" + name + "' does not apply to the " + LawName(base.law) +
-           " law";
+std::string AxisError(const Params& base, const ParameterAxis& axis, const char* which) {
+  const auto axes = ParameterAxes(base.law);
+  if (std::find(axes.begin(), axes.end(), axis) == axes.end())
+    return std::string(which) + " = '" + axis.name() + "' does not apply to the " +
+           LawName(base.law) + " law";
   return "";
 }
 
@@ -52,10 +47,17 @@ std::string RangeError(double from, double to, const char* from_name, const char
 std::string PointError(const Plane& pl, const Params& base, double x1, double x2) {
   const std::string e = stickslip::ValidationError(pl.At(base, x1, x2));
   if (e.empty()) return e;
-  return "the rectangle leaves the model's domain at " + pl.p1 + " = " + Num(x1) + ", " + pl.p2 +
-         " = " + Num(x2) + ": " + e;
+  return "the rectangle leaves the model's domain at " + pl.p1.name() + " = " + Num(x1) + ", " +
+         pl.p2.name() + " = " + Num(x2) + ": " + e;
 }
 }  // namespace
+
+std::string UnknownAxisError(const std::string& name, const char* which) {
+  if (IsParameterName(name)) return "";
+  std::string all;
+  for (const auto& n : AllParameterNames()) all += (all.empty() ? "" : ", ") + n;
+  return std::string(which) + " = '" + name + "' is no parameter (expected one of " + all + ")";
+}
 
 const char* PlaneInputKey(PlaneInput input) {
   switch (input) {
@@ -87,7 +89,8 @@ PlaneError Plane::Check(const Params& base) const {
   if (auto e = AxisError(base, p1, "param"); !e.empty()) return fail(PlaneInput::kParam, e);
   if (auto e = AxisError(base, p2, "param2"); !e.empty()) return fail(PlaneInput::kParam2, e);
   if (p1 == p2)
-    return fail(PlaneInput::kParam2, "param = param2 = '" + p1 + "': the two axes must differ");
+    return fail(PlaneInput::kParam2,
+                "param = param2 = '" + p1.name() + "': the two axes must differ");
   if (auto e = RangeError(from1, to1, "from", "to"); !e.empty())
     return fail(!std::isfinite(from1) ? PlaneInput::kFrom : PlaneInput::kTo, e);
   if (auto e = RangeError(from2, to2, "from2", "to2"); !e.empty())
@@ -99,7 +102,7 @@ PlaneError Plane::Check(const Params& base) const {
     // The end whose move to the far end cures it; else the one the error names.
     const bool second =
         stickslip::ValidationError(At(base, from1, to2)).empty() ||
-        (!stickslip::ValidationError(At(base, to1, from2)).empty() && near.rfind(p2 + " ", 0) == 0);
+        (!stickslip::ValidationError(At(base, to1, from2)).empty() && near.rfind(p2.name() + " ", 0) == 0);
     return fail(second ? PlaneInput::kFrom2 : PlaneInput::kFrom,
                 PointError(*this, base, from1, from2));
   }
@@ -120,8 +123,8 @@ PlaneError Plane::Check(const Params& base) const {
 
 Params Plane::At(const Params& base, double x1, double x2) const {
   Params p = base;
-  SetParameter(p, p1, x1);
-  SetParameter(p, p2, x2);
+  p1.Set(p, x1);
+  p2.Set(p, x2);
   return p;
 }
 

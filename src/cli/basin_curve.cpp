@@ -38,7 +38,7 @@ Curve CurveFromArguments(const Arguments& args, const Params& base, const BasinO
   if (opts.auto_range)
     throw UsageError(args.Source("param") +
                      " needs a fixed box: give --x_min --x_max --xdot_min --xdot_max");
-  const ParameterRange range = DefaultRange(base, c.param);
+  const ParameterRange range = DefaultRange(base, ParameterAxis(c.param));
   c.from = args.Number("from", range.from);
   c.to = args.Number("to", range.to);
   const long n = args.Integer("n", c.n);

@@ -43,10 +43,10 @@ ChartOptions::Seed ChartSeed(const Arguments& args, const LabelledPoint& lp, con
                      " point: a chart starts from a GR or HB point");
   ChartOptions::Seed s;
   s.kind = lp.type == "GR" ? CurveKind::kGrazing : CurveKind::kHopf;
-  s.p1 = GetParameter(base, pl.p1);
-  s.p2 = GetParameter(base, pl.p2);
+  s.p1 = pl.p1.Get(base);
+  s.p2 = pl.p2.Get(base);
   if (!pl.Contains(s.p1, s.p2))
-    throw UsageError(args.Source("point") + " " + lp.label + ": (" + pl.p1 + ", " + pl.p2 +
+    throw UsageError(args.Source("point") + " " + lp.label + ": (" + pl.p1.name() + ", " + pl.p2.name() +
                      ") = (" + FormatNumber(s.p1) + ", " + FormatNumber(s.p2) +
                      ") lies outside the chart's rectangle (--from --to --from2 --to2)");
   return s;

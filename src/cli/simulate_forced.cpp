@@ -6,6 +6,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/forced/simulate.hpp"
 #include "stickslip/io/figure_style.hpp"
 
@@ -64,7 +65,8 @@ double Phase(const ForcedModel& m, double t) {
   const double wt = m.omega() * t;
   double p = std::fmod(wt, 2 * M_PI);
   if (p < 0) p += 2 * M_PI;
-  return 2 * M_PI - p <= 1e-15 * (1 + std::abs(wt)) * 8 ? 0 : p;
+  return 2 * M_PI - p <= Tolerances::kPhaseRounding * (1 + std::abs(wt)) * Tolerances::kPhaseUlps ? 0
+                                                                                       : p;
 }
 
 }  // namespace

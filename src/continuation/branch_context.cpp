@@ -19,7 +19,7 @@ BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
       hi_(std::max(o.from, o.to)),
       dir_(o.to > o.from ? 1.0 : -1.0),
       column_(o.orbit.flow.integrator == Integrator::kTaylor &&
-              ParameterColumnSupported(base.law, o.param.name())),
+              ParameterColumnSupported(base.law, o.param)),
       phase_start_(std::chrono::steady_clock::now()) {
   finder_.set_floquet(false);
   // Room for the equilibrium grid (1 / max_step rows) and as many periodic
@@ -29,7 +29,7 @@ BranchContext::BranchContext(const Params& base, const ContinuationOptions& o)
   const double rows = 2.0 * (std::ceil(1.0 / o.max_step) + 16);
   res_.points.reserve(static_cast<size_t>(std::min(rows, 65536.0)));
   if (o_.cancelled) finder_.flow().set_cancel(o_.cancelled);
-  res_.param = o.param.name();
+  res_.param = o.param;
 }
 
 bool BranchContext::Stop() {
@@ -138,10 +138,10 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
   // G = (P(xbar + a; p) - xbar - a) / a, so dG/dp = (P_p + (P' - 1) xbar_p) / a.
   ReturnMap local;
   ReturnMap& rm = map ? *map : local;
-  finder_.flow().set_parameter_column(axis_.name());
+  finder_.flow().set_parameter_column(axis_);
   struct ColumnOff {  // also when Desingularised throws
     Flow& flow;
-    ~ColumnOff() { flow.set_parameter_column(""); }
+    ~ColumnOff() { flow.clear_parameter_column(); }
   } off{finder_.flow()};
   const OrbitStatus s = finder_.Desingularised(a, g, ga, &rm);
   if (s == OrbitStatus::kOk && rm.has_dpdp)

@@ -9,6 +9,7 @@
 
 #include "estimates/seed_common.hpp"
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -22,7 +23,7 @@ double FirstCrossing(double a1, double y0, double v, double r1) {
   auto yd = [&](double t) {
     return std::exp(a1 * t) * (v * std::cos(t) + (a1 * v - (1 + a1 * a1) * y0) * std::sin(t));
   };
-  const double dt = 1e-3, t_max = 20 * M_PI;
+  const double dt = Tolerances::kCrossingStep, t_max = Tolerances::kCrossingHorizon;
   bool below = false;
   for (double t = 0; t < t_max; t += dt) {
     const double next = yd(t + dt);
@@ -30,7 +31,7 @@ double FirstCrossing(double a1, double y0, double v, double r1) {
     if (below && next > v) return kNan;
     if (next > r1) continue;
     double lo = t, hi = t + dt;  // yd(lo) > r1 >= yd(hi)
-    for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    for (int i = 0; i < 200 && hi - lo > Tolerances::kCrossingWidth; ++i) {
       const double mid = 0.5 * (lo + hi);
       (yd(mid) > r1 ? lo : hi) = mid;
     }

@@ -5,6 +5,7 @@
 // state: delta t = -grad h . delta z / (dh/dt) at the exit (h = stick force -+ mu_s).
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -52,7 +53,7 @@ ForcedExitOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode ex
     // S_out leaves the x row alone: row 0 of the run's Jacobian is the stick's delta x.
     const double dtp = -(run.jacobian.row(0).dot(w)) / model.StickForceRate(run.end.t);
     const double g = run.end.t - t - m * T, dg = dtp - 1;
-    if (!(std::abs(dg) > 1e-14)) {
+    if (!(std::abs(dg) > Tolerances::kExitMapFold)) {
       o.status = ForcedOrbitStatus::kSingular;
       o.message = "the exit map's derivative is 1 (a fold)";
       return o;

@@ -1,6 +1,7 @@
 // Stroboscopic shooting for periodic orbits of the forced oscillator.
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -66,7 +67,7 @@ ForcedOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0,
     }
     const Vec2 r(run.end.x - z.x, run.end.xdot - z.xdot);
     const Mat2 A = run.jacobian - Mat2::Identity();
-    if (std::abs(A.determinant()) <= 1e-15 * (1 + A.cwiseAbs().maxCoeff())) {
+    if (std::abs(A.determinant()) <= Tolerances::kSingularShooting * (1 + A.cwiseAbs().maxCoeff())) {
       o.status = ForcedOrbitStatus::kSingular;
       o.message = "DP^m - I is singular (a multiplier at 1)";
       return o;

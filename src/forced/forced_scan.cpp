@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit_scan.hpp"
 
@@ -28,9 +29,7 @@ std::string ForcedScanOptions::ValidationError() const {
 
 namespace {
 
-// Two stroboscopic points are one when they agree to this (relative) distance:
-// far above the orbits' 1e-12 and far below any two distinct orbits' spacing.
-constexpr double kSame = 1e-6;
+constexpr double kSame = Tolerances::kSameStrobe;  // one orbit's points
 
 double Edge(const ForcedModel& m, double t, Mode mode) {
   const double s = mode == Mode::kSlipBelow ? 1 : -1;

@@ -16,6 +16,7 @@
 #include "integrate/mu_series.hpp"
 #include "integrate/poly_roots.hpp"
 #include "integrate/series.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/model/forced.hpp"
 
 namespace stickslip::forced_detail {
@@ -97,7 +98,7 @@ void EachRoot(const double* g, int n, int sign, int zero_sign, Visit visit) {
 inline int Deflate(const double*& g, int n) {
   double scale = 0;
   for (int k = 0; k <= n; ++k) scale = std::max(scale, std::abs(g[k]));
-  const double noise = 64 * (n + 1) * 2.2e-16 * scale;
+  const double noise = Tolerances::kDeflateUlps * (n + 1) * Tolerances::kDeflateEps * scale;
   ++g, --n;  // g_0 is the root
   while (n > 0 && std::abs(g[0]) <= noise) ++g, --n;
   if (n == 0 && std::abs(g[0]) <= noise) return -1;

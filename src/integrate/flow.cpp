@@ -16,10 +16,10 @@ const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf";
 
 std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, bool variational);
 std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
-                                           const std::string& parameter);
+                                           const std::optional<ParameterAxis>& parameter);
 
 std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational,
-                                     const std::string& parameter) {
+                                     const std::optional<ParameterAxis>& parameter) {
   return options.integrator == Integrator::kTaylor
              ? MakeTaylorStepper(options, variational, parameter)
              : MakeCvodeStepper(options, variational);
@@ -73,19 +73,16 @@ const Model& Flow::model() const {
   return *belt;
 }
 
-void Flow::set_parameter_column(const std::string& name) {
-  if (!name.empty()) {
-    ParameterAxis{name};  // throws for an unknown name
-    if (!system_->SupportsParameterColumn(name))
-      throw InvalidArgument("parameter column: '" + name +
-                            "' enters the friction law non-affinely (not supported)");
-  }
+void Flow::set_parameter_column(const ParameterAxis& axis) {
+  if (!system_->SupportsParameterColumn(axis))
+    throw InvalidArgument("parameter column: '" + axis.name() +
+                          "' enters the friction law non-affinely (not supported)");
   // The stepper stays for when the same column is asked again.
-  if (!name.empty() && name != param_name_) {
+  if (axis != param_axis_) {
     param_.reset();
-    param_name_ = name;
+    param_axis_ = axis;
   }
-  parameter_ = name;
+  parameter_ = axis;
 }
 
 Stepper& Flow::Solver(bool variational) {

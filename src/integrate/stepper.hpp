@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "integrate/events.hpp"
@@ -95,8 +96,8 @@ class Stepper {
 };
 
 // The stepper options.integrator names, for z alone or with Phi; with a
-// parameter name (Taylor only), also with the column dz/dp.
+// parameter (Taylor only), also with the column dz/dp.
 std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variational,
-                                     const std::string& parameter = "");
+                                     const std::optional<ParameterAxis>& parameter = std::nullopt);
 
 }  // namespace stickslip

@@ -137,7 +137,7 @@ StepOutcome TaylorStepper::Advance(double tout, double* t) {
 }
 
 std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
-                                           const std::string& parameter) {
+                                           const std::optional<ParameterAxis>& parameter) {
   return std::make_unique<TaylorStepper>(options, variational, parameter);
 }
 

@@ -24,11 +24,12 @@ inline int OrderFor(double eps) {
 class TaylorStepper final : public Stepper {
  public:
   // parameter: also the column dz/dp for that parameter (then size() is 8).
-  TaylorStepper(const FlowOptions& o, bool variational, const std::string& parameter)
+  TaylorStepper(const FlowOptions& o, bool variational,
+                const std::optional<ParameterAxis>& parameter)
       : rtol_(o.rtol),
         atol_(o.atol),
         max_steps_(o.max_steps),
-        n_(!parameter.empty() ? 8
+        n_(parameter ? 8
            : variational      ? 6
                               : 2),
         order_rel_(OrderFor(o.rtol)),
@@ -123,7 +124,7 @@ class TaylorStepper final : public Stepper {
   // Cauchy(); the recurrences that fill them (the model's, per mode).
   TaylorRow c_[8];
   double hp_[kTaylorRowSize];  // powers of this step's h
-  std::string parameter_;      // the parameter column's, if any
+  std::optional<ParameterAxis> parameter_;  // the parameter column's, if any
   std::unique_ptr<TaylorField> field_;
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double t0_ = 0;                   // the last Reset's start

@@ -19,7 +19,7 @@ void Header(TsvTable& t, const ChartResult& r, const std::string& model) {
 }  // namespace
 
 TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string& model) {
-  TsvTable t({plane.p1, plane.p2, "curve", "id", "period", "amplitude", "multiplier", "l1", "type",
+  TsvTable t({plane.p1.name(), plane.p2.name(), "curve", "id", "period", "amplitude", "multiplier", "l1", "type",
               "unphysical"});
   Header(t, r, model);
   for (size_t i = 0; i < r.curves.size(); ++i)
@@ -42,14 +42,14 @@ TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string
 }
 
 TsvTable Codim2Table(const ChartResult& r, const Plane& plane, const std::string& model) {
-  TsvTable t({"label", plane.p1, plane.p2, "description"});
+  TsvTable t({"label", plane.p1.name(), plane.p2.name(), "description"});
   Header(t, r, model);
   for (const Codim2Point& p : r.codim2) t.AddRow({Name(p.label), p.p1, p.p2, p.description});
   return t;
 }
 
 TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::string& model) {
-  TsvTable t({"face", "region", "name", "ring", plane.p1, plane.p2});
+  TsvTable t({"face", "region", "name", "ring", plane.p1.name(), plane.p2.name()});
   Header(t, r, model);
   t.AddComment(
       "one row per polygon vertex, each ring closed (its first vertex repeated); ring 0 "

@@ -123,7 +123,7 @@ std::string ChartTitle(const Params& base, const Plane& plane) {
       std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : LawName(base.law)) + " law";
   const char* sep = ": ";
   for (const auto& name : ParameterNames(base.law)) {
-    if (name == plane.p1 || name == plane.p2) continue;
+    if (name == plane.p1.name() || name == plane.p2.name()) continue;
     if (name == "k5" && base.k5 == 0) continue;
     t += sep + SymbolOf(name) + " = " + FormatNumber(GetParameter(base, name));
     sep = ", ";
@@ -145,8 +145,8 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "set datafile separator '\\t'\n"
      << "set datafile columnheaders\n"
      << "set encoding utf8\n"
-     << FigureUnitVariables(units) << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1))
-     << "\nset ylabel " << GnuplotQuoted(units.P2Label(plane.p2)) << "\n"
+     << FigureUnitVariables(units) << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1.name()))
+     << "\nset ylabel " << GnuplotQuoted(units.P2Label(plane.p2.name())) << "\n"
      << "set xrange [" << u1 * plane.from1 << ":" << u1 * plane.to1 << "]\n"
      << "set yrange [" << u2 * plane.from2 << ":" << u2 * plane.to2 << "]\n"
      << "set title \"" << title << "\"\n"

@@ -18,7 +18,7 @@ namespace {
 
 class BeltTaylorField final : public TaylorField {
  public:
-  explicit BeltTaylorField(const std::string& parameter) : parameter_(parameter) {}
+  explicit BeltTaylorField(const std::optional<ParameterAxis>& parameter) : parameter_(parameter) {}
 
   bool Bind(const FrictionSystem& s, Mode m) override {
     const auto* belt = dynamic_cast<const Model*>(&s);
@@ -29,7 +29,7 @@ class BeltTaylorField final : public TaylorField {
     two_beta_ = 2 * belt->beta();
     sigma_ = m == Mode::kSlipBelow ? 1 : -1;
     mu_.emplace(belt->friction());
-    if (!parameter_.empty()) ResolveParameter();
+    if (parameter_) ResolveParameter();
     s_.Clear();
     cc_.Clear();
     return true;
@@ -51,7 +51,7 @@ class BeltTaylorField final : public TaylorField {
   std::optional<MuSeries> mu_;
   // The parameter column dz/dp (rows 6, 7): which term df/dp carries.
   enum class ParamKind { kBeta, kV, kAffine };
-  std::string parameter_;
+  std::optional<ParameterAxis> parameter_;
   ParamKind kind_ = ParamKind::kBeta;
   std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_
   double dp_ = 1;
@@ -114,14 +114,14 @@ void BeltTaylorField::Recurrences(int order, int n, TaylorRow* c) {
 // (0, sigma (mu(s; p + dp) - mu(s; p)) / dp), exact for any dp. v_m, v_s and
 // delta enter mu non-affinely: no column (InvalidArgument).
 void BeltTaylorField::ResolveParameter() {
-  const ParameterAxis axis(parameter_);
-  if (!ParameterColumnSupported(q_.law, parameter_))
-    throw InvalidArgument("parameter column: '" + parameter_ +
+  const ParameterAxis& axis = *parameter_;
+  if (!ParameterColumnSupported(q_.law, axis))
+    throw InvalidArgument("parameter column: '" + axis.name() +
                           "' enters the friction law non-affinely (not supported)");
   mu_shifted_.reset();
-  if (parameter_ == "beta") {
+  if (axis.id() == Parameter::kBeta) {
     kind_ = ParamKind::kBeta;
-  } else if (parameter_ == "v") {
+  } else if (axis.id() == Parameter::kV) {
     kind_ = ParamKind::kV;
   } else {
     kind_ = ParamKind::kAffine;
@@ -165,7 +165,8 @@ void BeltTaylorField::Coefficients(int order, int n, TaylorRow* c) {
 
 }  // namespace
 
-std::unique_ptr<TaylorField> Model::MakeTaylorField(const std::string& parameter) const {
+std::unique_ptr<TaylorField> Model::MakeTaylorField(
+    const std::optional<ParameterAxis>& parameter) const {
   return std::make_unique<BeltTaylorField>(parameter);
 }
 

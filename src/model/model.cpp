@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
 namespace stickslip {
 
 const char* ModeName(Mode m) {
@@ -34,14 +35,15 @@ bool Model::Assign(const FrictionSystem& s) {
   return m != nullptr;
 }
 
-bool ParameterColumnSupported(LawKind law, const std::string& name) {
-  return !((name == "v_m" && law == LawKind::kCubic) ||
-           (name == "v_s" && law == LawKind::kStribeck) ||
-           (name == "delta" && law == LawKind::kLeine));
+bool ParameterColumnSupported(LawKind law, const ParameterAxis& axis) {
+  const Parameter p = axis.id();
+  return !((p == Parameter::kVM && law == LawKind::kCubic) ||
+           (p == Parameter::kVS && law == LawKind::kStribeck) ||
+           (p == Parameter::kDelta && law == LawKind::kLeine));
 }
 
-bool Model::SupportsParameterColumn(const std::string& name) const {
-  return ParameterColumnSupported(p_.law, name);
+bool Model::SupportsParameterColumn(const ParameterAxis& axis) const {
+  return ParameterColumnSupported(p_.law, axis);
 }
 
 Equilibrium Model::SteadySliding() const {
@@ -84,7 +86,8 @@ bool Model::NoPeriodicOrbit() const {
   const double psi_v = friction_.Mu(p_.v) + two_beta_ * p_.v;
   const double damping = two_beta_ + friction_.DMu(p_.v);
   // Margins well above rounding: the bound is only used to skip searches.
-  return psi_v - p_.mu_s > 1e-9 * psi_v && damping > 1e-9;
+  return psi_v - p_.mu_s > Tolerances::kNoOrbitMargin * psi_v &&
+         damping > Tolerances::kNoOrbitMargin;
 }
 
 }  // namespace stickslip

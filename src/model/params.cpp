@@ -1,5 +1,7 @@
 #include "stickslip/model/params.hpp"
 
+#include "stickslip/model/parameter_axis.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -54,40 +56,38 @@ std::vector<std::string> ParameterNames(LawKind law) {
 }
 
 namespace {
-// The one table of parameter names and the members they name.
-struct Entry {
-  const char* name;
-  double Params::*member;
-};
-constexpr Entry kTable[] = {
-    {"beta", &Params::beta}, {"v", &Params::v},         {"mu_s", &Params::mu_s},
-    {"mu_m", &Params::mu_m}, {"v_m", &Params::v_m},     {"mu_k", &Params::mu_k},
-    {"v_s", &Params::v_s},   {"delta", &Params::delta}, {"k5", &Params::k5}};
+// The member each parameter (EnumNames<Parameter> order) stands for.
+constexpr double Params::*kMembers[] = {&Params::beta, &Params::v,   &Params::mu_s,
+                                        &Params::mu_m, &Params::v_m, &Params::mu_k,
+                                        &Params::v_s,  &Params::delta, &Params::k5};
+static_assert(std::size(kMembers) == NameCount<Parameter>());
 }  // namespace
+
+double Params::*ParameterMember(Parameter p) { return kMembers[static_cast<int>(p)]; }
 
 std::vector<std::string> AllParameterNames() {
   std::vector<std::string> names;
-  for (const Entry& e : kTable) names.push_back(e.name);
+  for (const auto& e : EnumNames<Parameter>::kTable) names.push_back(e.name);
   return names;
 }
 
 std::string ParameterNameList() {
   std::string list;
-  const size_t n = std::size(kTable);
+  const size_t n = NameCount<Parameter>();
   for (size_t i = 0; i < n; ++i)
-    list += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + kTable[i].name;
+    list += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + EnumNames<Parameter>::kTable[i].name;
   return list;
 }
 
 double Params::*ParameterMember(const std::string& name) {
-  for (const Entry& e : kTable)
-    if (name == e.name) return e.member;
+  Parameter p;
+  if (FromName(name, &p)) return ParameterMember(p);
   throw InvalidArgument("unknown parameter '" + name + "' (expected one of " + ParameterNameList() + ")");
 }
 
 bool IsParameterName(const std::string& name) {
-  const auto all = AllParameterNames();
-  return std::find(all.begin(), all.end(), name) != all.end();
+  Parameter p;
+  return FromName(name, &p);
 }
 
 double GetParameter(const Params& p, const std::string& name) { return p.*ParameterMember(name); }
@@ -108,41 +108,46 @@ std::string QuinticError(const Params& p) {
 }
 }  // namespace
 
-ParameterRange DefaultRange(const Params& base, const std::string& name) {
-  const double x = GetParameter(base, name);  // throws on an unknown name
-  if (name == "beta") return {0.01, 0.3};
-  if (name == "v") return {0.05, 0.5};
-  if (name == "mu_s") {
-    const double lower = base.law == LawKind::kCubic ? base.mu_m : base.mu_k;
-    return {1.2 * lower, 2.0 * base.mu_s};
+ParameterRange DefaultRange(const Params& base, const ParameterAxis& axis) {
+  const double x = axis.Get(base);
+  switch (axis.id()) {
+    case Parameter::kBeta:
+      return {0.01, 0.3};
+    case Parameter::kV:
+      return {0.05, 0.5};
+    case Parameter::kMuS:
+      return {1.2 * (base.law == LawKind::kCubic ? base.mu_m : base.mu_k), 2.0 * base.mu_s};
+    case Parameter::kMuM:
+    case Parameter::kMuK:
+      return {0.2 * base.mu_s, 0.9 * base.mu_s};
+    case Parameter::kK5:
+      return {0.0, std::max(1.0, 2.0 * x)};
+    default:
+      return {0.5 * x, 2.0 * x};  // v_m, v_s, delta: a factor of two each way
   }
-  if (name == "mu_m" || name == "mu_k") return {0.2 * base.mu_s, 0.9 * base.mu_s};
-  if (name == "k5") return {0.0, std::max(1.0, 2.0 * x)};
-  return {0.5 * x, 2.0 * x};  // v_m, v_s, delta: a factor of two each way
 }
 
-ParameterRange RangeFromPoint(const Params& at, const std::string& name) {
-  const ParameterRange r = DefaultRange(at, name);
-  const double x = GetParameter(at, name);
+ParameterRange RangeFromPoint(const Params& at, const ParameterAxis& axis) {
+  const ParameterRange r = DefaultRange(at, axis);
+  const double x = axis.Get(at);
   return {x, std::abs(r.to - x) >= std::abs(r.from - x) ? r.to : r.from};
 }
 
-namespace {
-// ParameterNames(law) as table entries, built once per law: ValidationError
-// runs for every Model (every continuation row), where looking the members up
-// by their names cost more than the checks.
-std::vector<Entry> EntriesOf(LawKind law) {
-  std::vector<Entry> out;
-  for (const std::string& name : ParameterNames(law))
-    for (const Entry& e : kTable)
-      if (name == e.name) out.push_back(e);
-  return out;
+std::vector<ParameterAxis> ParameterAxes(LawKind law) {
+  std::vector<ParameterAxis> axes;
+  for (const std::string& name : ParameterNames(law)) axes.emplace_back(name);
+  return axes;
 }
-const std::vector<Entry>& LawEntries(LawKind law) {
-  static const std::vector<Entry> cubic = EntriesOf(LawKind::kCubic),
-                                  coulomb = EntriesOf(LawKind::kCoulomb),
-                                  stribeck = EntriesOf(LawKind::kStribeck),
-                                  leine = EntriesOf(LawKind::kLeine);
+
+namespace {
+// ParameterAxes(law), built once per law: ValidationError runs for every
+// Model (every continuation row), where looking the members up by their
+// names cost more than the checks.
+const std::vector<ParameterAxis>& LawAxes(LawKind law) {
+  static const std::vector<ParameterAxis> cubic = ParameterAxes(LawKind::kCubic),
+                                          coulomb = ParameterAxes(LawKind::kCoulomb),
+                                          stribeck = ParameterAxes(LawKind::kStribeck),
+                                          leine = ParameterAxes(LawKind::kLeine);
   switch (law) {
     case LawKind::kCoulomb:
       return coulomb;
@@ -158,10 +163,10 @@ const std::vector<Entry>& LawEntries(LawKind law) {
 }  // namespace
 
 std::string ValidationError(const Params& p) {
-  const std::vector<Entry>& entries = LawEntries(p.law);
-  for (const Entry& e : entries) {
-    const double x = p.*e.member;
-    if (!std::isfinite(x)) return e.name + (" = " + Num(x, 12)) + " is not a finite number";
+  const std::vector<ParameterAxis>& axes = LawAxes(p.law);
+  for (const ParameterAxis& a : axes) {
+    const double x = a.Get(p);
+    if (!std::isfinite(x)) return a.name() + " = " + Num(x, 12) + " is not a finite number";
   }
   if (p.beta < 0) return "beta = " + Num(p.beta, 12) + " must be >= 0";
   if (p.v <= 0) return "v = " + Num(p.v, 12) + " must be > 0";
@@ -190,11 +195,11 @@ std::string ValidationError(const Params& p) {
   // underflow and the results would be nan or inf.
   // A small quintic coefficient k5 or damping ratio beta is harmless (beta = 0
   // is the undamped oscillator): only their upper end counts.
-  for (const Entry& e : entries) {
-    const double x = p.*e.member;
-    const double lo = e.member == &Params::k5 || e.member == &Params::beta ? 0.0 : kMinScale;
+  for (const ParameterAxis& a : axes) {
+    const double x = a.Get(p);
+    const double lo = a.id() == Parameter::kK5 || a.id() == Parameter::kBeta ? 0.0 : kMinScale;
     if (x != 0 && !(x >= lo && x <= kMaxScale))
-      return e.name + (" = " + Num(x)) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
+      return a.name() + " = " + Num(x) + " is outside [" + Num(lo) + ", " + Num(kMaxScale) +
              "]: scales beyond it make the computation meaningless";
   }
   // After the scales: a subnormal v_m overflows k3, and mu(v) would be nan.

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "numerics/tolerances.hpp"
 namespace stickslip {
 
 // f(x, &value) returns false (and may set nothing) where it cannot be evaluated.
@@ -22,7 +23,7 @@ struct Newton2Result {
 // Newton from x0; differences h = step .* max(|x|, 1) (per unknown). Converged
 // when |dx_k| <= tol * max(|x_k|, 1) for both k, or stalled at the noise floor
 // (NewtonConverged of palc.hpp).
-Newton2Result Newton2(const Function2& f, const Eigen::Vector2d& x0, double tol = 1e-13,
-                      double step = 1e-7, int max_iterations = 30);
+Newton2Result Newton2(const Function2& f, const Eigen::Vector2d& x0, double tol = Tolerances::kNewton2Tol,
+                      double step = Tolerances::kNewton2Step, int max_iterations = 30);
 
 }  // namespace stickslip

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 namespace stickslip {
 
@@ -269,6 +270,32 @@ struct Tolerances {
   // shorter than kSegmentMinLength is none.
   static constexpr double kFaceSnap = 1e-9, kFaceParallel = 1e-14, kFaceCollinear = 1e-12;
   static constexpr double kSegmentMinLength = 1e-12;
+
+  // --- Estimates, model bounds and the forced oscillator's rounding ---
+  // Seed estimates (estimates.cpp FirstCrossing): y' of (3.22) is sampled
+  // every kCrossingStep up to t = kCrossingHorizon, and the crossing bisected
+  // to an interval of kCrossingWidth (a few ulp of t).
+  static constexpr double kCrossingStep = 1e-3, kCrossingHorizon = 20 * M_PI;
+  static constexpr double kCrossingWidth = 1e-15;
+  // Newton2 (numerics/newton2.hpp) defaults: stop below kNewton2Tol; forward
+  // differences of step kNewton2Step (about sqrt(eps) times the scale).
+  static constexpr double kNewton2Tol = 1e-13, kNewton2Step = 1e-7;
+  // Model::NoPeriodicOrbit: the energy bound's margins (relative to psi(v),
+  // and on the damping), well above rounding: the bound only skips searches.
+  static constexpr double kNoOrbitMargin = 1e-9;
+  // Forced scan: stroboscopic points within kSameStrobe (relative) are one
+  // orbit (far above the orbits' 1e-12, far below two orbits' spacing).
+  static constexpr double kSameStrobe = 1e-6;
+  // Forced exit map: |dg/dt| below kExitMapFold is a fold (the map's slope 1).
+  static constexpr double kExitMapFold = 1e-14;
+  // Forced shooting: det(DP^m - I) below kSingularShooting (1 + max |a_ij|) is
+  // singular (a multiplier at 1).
+  static constexpr double kSingularShooting = 1e-15;
+  // Forced Taylor roots: deflated coefficients below kDeflateUlps (n + 1)
+  // kDeflateEps scale are rounding (64 ulp per degree).
+  static constexpr double kDeflateUlps = 64, kDeflateEps = 2.2e-16;
+  // Forcing phase: Omega t within kPhaseUlps 1e-15 (1 + |Omega t|) of 2 pi is 0.
+  static constexpr double kPhaseRounding = 1e-15, kPhaseUlps = 8;
 };
 
 }  // namespace stickslip

@@ -45,10 +45,10 @@ double Clearance(const Face& f, const Point2& p) {
   return d;
 }
 
-const Plane kUnit{"v", "beta", 0, 1, 0, 1};
+const Plane kUnit{Parameter::kV, Parameter::kBeta, 0, 1, 0, 1};
 
 TEST(ChartFaces, EmptyRectangleIsOneFace) {
-  const Plane pl{"v", "beta", 0.05, 0.6, 0, 0.25};
+  const Plane pl{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0, 0.25};
   const auto faces = Distinct(pl, {});
   ASSERT_EQ(faces.size(), 1u);
   EXPECT_NEAR(faces[0].area, 0.55 * 0.25, 1e-15);
@@ -58,7 +58,7 @@ TEST(ChartFaces, EmptyRectangleIsOneFace) {
 TEST(ChartFaces, OneLineCutsTwoTrapezoids) {
   // Through (0.5, 0) and (1, 1) in [0, 2] x [0, 1], given beyond the border:
   // trapezoids of widths 0.5 and 1 (area 0.75) and 1.5 and 1 (area 1.25).
-  const Plane pl{"v", "beta", 0, 2, 0, 1};
+  const Plane pl{Parameter::kV, Parameter::kBeta, 0, 2, 0, 1};
   const auto faces = Distinct(pl, {{{0.25, -0.5}, {1.25, 1.5}}});
   ASSERT_EQ(faces.size(), 2u);
   EXPECT_NEAR(Areas(faces)[0], 0.75, 1e-12);

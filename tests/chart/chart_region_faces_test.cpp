@@ -47,14 +47,14 @@ void ExpectFacesAgreeWithOrbits(const Params& base, const Plane& plane, size_t r
 
 TEST(ChartRegionFaces, SeedChartFacesAgreeWithOrbitScan) {
   // studies/seed_chart.ini: stick-slip, pure slip between GR and HB, steady only.
-  ExpectFacesAgreeWithOrbits(Params{}, Plane{"v", "beta", 0.02, 0.6, 0.0, 0.25}, 3);
+  ExpectFacesAgreeWithOrbits(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25}, 3);
 }
 
 TEST(ChartRegionFaces, QuinticChartFacesAgreeWithOrbitScan) {
   // studies/quintic_chart.ini: all four regions, bistable below GH.
   Params p;
   p.k5 = 0.24;
-  ExpectFacesAgreeWithOrbits(p, Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12}, 4);
+  ExpectFacesAgreeWithOrbits(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12}, 4);
 }
 
 TEST(ChartRegionFaces, StribeckChartFacesAgreeWithOrbitScan) {
@@ -62,7 +62,7 @@ TEST(ChartRegionFaces, StribeckChartFacesAgreeWithOrbitScan) {
   Params p;
   p.law = LawKind::kStribeck;
   p.mu_s = 0.4, p.mu_k = 0.25, p.v_s = 0.5;
-  ExpectFacesAgreeWithOrbits(p, Plane{"v", "beta", 0.05, 1.2, 0.01, 0.14}, 3);
+  ExpectFacesAgreeWithOrbits(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 1.2, 0.01, 0.14}, 3);
 }
 
 TEST(ChartRegionFaces, LeineChartFacesAgreeWithOrbitScan) {
@@ -70,7 +70,7 @@ TEST(ChartRegionFaces, LeineChartFacesAgreeWithOrbitScan) {
   Params p;
   p.law = LawKind::kLeine;
   p.mu_s = 1, p.delta = 3;
-  ExpectFacesAgreeWithOrbits(p, Plane{"v", "beta", 0.05, 1.5, 0, 0.3}, 3);
+  ExpectFacesAgreeWithOrbits(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 1.5, 0, 0.3}, 3);
 }
 
 }  // namespace

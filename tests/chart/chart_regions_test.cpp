@@ -37,8 +37,8 @@ Study ReadChartStudy(const std::string& name) {
   const cli::Arguments args = cli::ParseArguments(3, argv, cli::AppDescription(app), "chart");
   Study s;
   Plane& pl = s.options.plane;
-  pl.p1 = args.Text("param", "v");
-  pl.p2 = args.Text("param2", "beta");
+  pl.p1 = ParameterAxis(args.Text("param", "v"));
+  pl.p2 = ParameterAxis(args.Text("param2", "beta"));
   pl.from1 = args.Number("from", 0.05);
   pl.to1 = args.Number("to", 0.6);
   pl.from2 = args.Number("from2", 0.0);

@@ -23,19 +23,20 @@ TEST(Chart, RectangleValidated) {
   const Params base;
   auto err = [&](Plane pl) { return pl.ValidationError(base); };
   EXPECT_EQ(err(Plane{}), "");
-  EXPECT_TRUE(Contains(err(Plane{"v", "v", 0.1, 0.5, 0.1, 0.5}), "the two axes must differ"));
-  EXPECT_TRUE(Contains(err(Plane{"gamma", "beta", 0.1, 0.5, 0, 0.1}), "'gamma' is no parameter"));
-  EXPECT_TRUE(Contains(err(Plane{"v", "delta", 0.1, 0.5, 0, 0.1}), "does not apply to the cubic"));
-  EXPECT_TRUE(Contains(err(Plane{"v", "beta", 0.5, 0.5, 0, 0.1}), "the rectangle is empty"));
-  EXPECT_TRUE(Contains(err(Plane{"v", "beta", 0.5, 0.1, 0, 0.1}), "the rectangle is inverted"));
-  EXPECT_TRUE(Contains(err(Plane{"v", "beta", 0.1, 0.5, 0.1, 0.05}), "from2 = 0.1 must be <"));
-  EXPECT_TRUE(Contains(err(Plane{"v", "beta", -0.1, 0.5, 0, 0.1}), "leaves the model's domain"));
-  EXPECT_TRUE(Contains(err(Plane{"v", "mu_s", 0.1, 0.5, 0.2, 0.5}), "mu_m = 0.25 must be < mu_s"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kV, 0.1, 0.5, 0.1, 0.5}), "the two axes must differ"));
+  EXPECT_TRUE(Contains(UnknownAxisError("gamma", "param"), "'gamma' is no parameter"));
+  EXPECT_EQ(UnknownAxisError("beta", "param"), "");
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kDelta, 0.1, 0.5, 0, 0.1}), "does not apply to the cubic"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.5, 0.5, 0, 0.1}), "the rectangle is empty"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.5, 0.1, 0, 0.1}), "the rectangle is inverted"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.1, 0.5, 0.1, 0.05}), "from2 = 0.1 must be <"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, -0.1, 0.5, 0, 0.1}), "leaves the model's domain"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kMuS, 0.1, 0.5, 0.2, 0.5}), "mu_m = 0.25 must be < mu_s"));
   Params quintic;
   quintic.k5 = 0.24;  // mu(v) < 0 beyond v ~ 1.3
-  EXPECT_TRUE(Contains(Plane{"v", "beta", 0.1, 1.5, 0, 0.1}.ValidationError(quintic), "k5 = 0.24"));
+  EXPECT_TRUE(Contains(Plane{Parameter::kV, Parameter::kBeta, 0.1, 1.5, 0, 0.1}.ValidationError(quintic), "k5 = 0.24"));
   ChartOptions o;
-  o.plane = Plane{"v", "v", 0.1, 0.5, 0.1, 0.5};
+  o.plane = Plane{Parameter::kV, Parameter::kV, 0.1, 0.5, 0.1, 0.5};
   EXPECT_THROW(Chart(base, o), InvalidArgument);
 }
 
@@ -44,13 +45,13 @@ TEST(Chart, RectangleValidated) {
 // (--max_step 1e-9), reported complete.
 TEST(Chart, DegenerateRangesAndStepsRefused) {
   const Params base;
-  const PlaneError e = Plane{"v", "beta", 0.05, 0.0500000000000001, 0, 0.25}.Check(base);
+  const PlaneError e = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.0500000000000001, 0, 0.25}.Check(base);
   EXPECT_EQ(e.input, PlaneInput::kTo);
   EXPECT_TRUE(Contains(e.message, "to = 0.0500000000000001 is too close to from = 0.05"))
       << e.message;
-  EXPECT_TRUE(Contains(Plane{"v", "beta", 0.05, 0.6, 0.1, 0.1 + 1e-9}.ValidationError(base),
+  EXPECT_TRUE(Contains(Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0.1, 0.1 + 1e-9}.ValidationError(base),
                        "to2 = 0.100000001 is too close"));
-  const Plane tiny{"v", "beta", 0.05, 0.6, 0, 1e-12};  // from2 = 0: relative to 1e-12
+  const Plane tiny{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0, 1e-12};  // from2 = 0: relative to 1e-12
   EXPECT_EQ(tiny.ValidationError(base), "");
   ChartOptions o;
   o.max_step = 1e-9;
@@ -63,17 +64,17 @@ TEST(Chart, DegenerateRangesAndStepsRefused) {
 // given (not at a grid point such as beta = 1062500).
 TEST(Chart, RangeEndErrorsNameTheEnd) {
   const Params base;
-  PlaneError e = Plane{"v", "beta", 0.05, 0.6, 0, 5e6}.Check(base);
+  PlaneError e = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0, 5e6}.Check(base);
   EXPECT_EQ(e.input, PlaneInput::kTo2);
   EXPECT_STREQ(PlaneInputKey(e.input), "to2");
   EXPECT_TRUE(Contains(e.message, "beta = 5000000 is outside [0, 1000000]")) << e.message;
-  e = Plane{"v", "beta", 0.05, 0.6, -0.1, 0.1}.Check(base);
+  e = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, -0.1, 0.1}.Check(base);
   EXPECT_EQ(e.input, PlaneInput::kFrom2);
-  e = Plane{"v", "mu_s", 0.05, 0.6, 0.1, 0.5}.Check(base);  // mu_s < mu_m = 0.25
+  e = Plane{Parameter::kV, Parameter::kMuS, 0.05, 0.6, 0.1, 0.5}.Check(base);  // mu_s < mu_m = 0.25
   EXPECT_EQ(e.input, PlaneInput::kFrom2) << e.message;
   Params quintic;
   quintic.k5 = 0.24;
-  e = Plane{"v", "beta", 0.1, 1.5, 0, 0.1}.Check(quintic);
+  e = Plane{Parameter::kV, Parameter::kBeta, 0.1, 1.5, 0, 0.1}.Check(quintic);
   EXPECT_EQ(e.input, PlaneInput::kTo);
   EXPECT_TRUE(Contains(e.message, "v = 1.5")) << e.message;
 }
@@ -81,7 +82,7 @@ TEST(Chart, RangeEndErrorsNameTheEnd) {
 // A curve cut short inside the rectangle makes the chart partial, naming it.
 TEST(Chart, CutShortCurveMakesTheChartPartial) {
   ChartOptions o;
-  o.plane = Plane{"v", "beta", 0.466, 0.5, 0, 0.03};  // HB crosses it diagonally
+  o.plane = Plane{Parameter::kV, Parameter::kBeta, 0.466, 0.5, 0, 0.03};  // HB crosses it diagonally
   o.max_step = 1.0 / kMaxCurvePoints;                 // a crossing takes ~1.4 / max_step points
   o.grazing_curves = o.fold_curves = false;
   const ChartResult r = Chart(Params{}, o);
@@ -149,7 +150,7 @@ void ExpectRegionsAgreeWithContinuation(const Params& base, const Plane& plane, 
 
 TEST(Chart, SeedRegionsAgreeWithOneParameterRuns) {
   // Stick-slip, pure-slip and steady sliding only (no bistability: supercritical).
-  ExpectRegionsAgreeWithContinuation(Params{}, Plane{"v", "beta", 0.02, 0.6, 0.0, 0.25}, 20, 3);
+  ExpectRegionsAgreeWithContinuation(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25}, 20, 3);
 }
 
 TEST(Chart, StribeckRegionsAgreeWithOneParameterRuns) {
@@ -157,14 +158,14 @@ TEST(Chart, StribeckRegionsAgreeWithOneParameterRuns) {
   p.law = LawKind::kStribeck;
   p.mu_s = 0.4, p.mu_k = 0.25, p.v_s = 0.5;
   // Subcritical: stick-slip beside stable steady sliding in a band past HB.
-  ExpectRegionsAgreeWithContinuation(p, Plane{"v", "beta", 0.05, 0.6, 0.01, 0.14}, 20, 3);
+  ExpectRegionsAgreeWithContinuation(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0.01, 0.14}, 20, 3);
 }
 
 TEST(Chart, QuinticRegionsAgreeWithOneParameterRuns) {
   Params p;
   p.k5 = 0.24;
   // All four: stick-slip, pure slip (above GR-LP), steady only, bistable (below GH).
-  ExpectRegionsAgreeWithContinuation(p, Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12}, 20, 4);
+  ExpectRegionsAgreeWithContinuation(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12}, 20, 4);
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ Params Quintic() {
 const ChartResult& QuinticChart() {
   static const ChartResult r = [] {
     ChartOptions o;
-    o.plane = Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12};
+    o.plane = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12};
     return Chart(Quintic(), o);
   }();
   return r;
@@ -104,7 +104,7 @@ TEST(FoldCurve, PointsAgainstTheReference) {
 // reference fold at its beta.
 TEST(FoldCurve, PointsAtTheTightestToleranceWithin1e13) {
   ChartOptions o;
-  o.plane = Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12};
+  o.plane = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12};
   o.orbit.flow.rtol = 1e-14;
   o.orbit.flow.atol = 1e-16;
   o.hopf_curves = true;

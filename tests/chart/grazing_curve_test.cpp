@@ -32,12 +32,12 @@ ChartResult GrazingChart(const Params& base, const Plane& plane) {
 }
 
 const ChartResult& SeedChart() {
-  static const ChartResult r = GrazingChart(Params{}, Plane{"v", "beta", 0.02, 0.6, 0.0, 0.25});
+  static const ChartResult r = GrazingChart(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25});
   return r;
 }
 
 const ChartResult& QuinticChart() {
-  static const ChartResult r = GrazingChart(Quintic(), Plane{"v", "beta", 0.05, 0.58, 0.0, 0.12});
+  static const ChartResult r = GrazingChart(Quintic(), Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12});
   return r;
 }
 

@@ -301,7 +301,7 @@ TEST(Taylor, ParameterColumnMatchesTheReferenceReturnMap) {
     const double x = m.SteadySliding().x + c.a;
     for (const std::string& name : c.params) {
       Flow flow(m, Taylor(1e-13));
-      flow.set_parameter_column(name);
+      flow.set_parameter_column(ParameterAxis(name));
       StopRule stop;
       stop.at_section = true;
       stop.switching = false;
@@ -318,7 +318,7 @@ TEST(Taylor, ParameterColumnMatchesTheReferenceReturnMap) {
 TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
   const Model m{Params()};  // seed set: the stick-slip orbit switches twice
   Flow flow(m, Taylor());
-  flow.set_parameter_column("v");
+  flow.set_parameter_column(Parameter::kV);
   StopRule stop;
   stop.t_max = 1;
   FlowResult r = flow.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true);
@@ -327,13 +327,13 @@ TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
   r = flow.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true);
   EXPECT_GT(r.switches, 0);
   EXPECT_FALSE(r.has_dzdp);
-  EXPECT_THROW(flow.set_parameter_column("not_a_parameter"), InvalidArgument);
+  EXPECT_THROW(flow.set_parameter_column(ParameterAxis("not_a_parameter")), InvalidArgument);
   Params s;
   s.law = LawKind::kStribeck;
   Flow fs{Model(s), Taylor()};
-  EXPECT_THROW(fs.set_parameter_column("v_s"), InvalidArgument);
+  EXPECT_THROW(fs.set_parameter_column(Parameter::kVS), InvalidArgument);
   Flow fc{Model(Params()), Cvode()};
-  fc.set_parameter_column("v");
+  fc.set_parameter_column(Parameter::kV);
   EXPECT_FALSE(fc.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true).has_dzdp);
 }
 

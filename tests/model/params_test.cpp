@@ -257,7 +257,7 @@ TEST(Params, DefaultRangesAreValidAtBothEnds) {
     Params base;
     base.law = law;
     for (const auto& name : ParameterNames(law)) {
-      const ParameterRange r = DefaultRange(base, name);
+      const ParameterRange r = DefaultRange(base, ParameterAxis(name));
       EXPECT_LT(r.from, r.to) << name;
       for (double x : {r.from, r.to}) {
         Params q = base;
@@ -266,11 +266,11 @@ TEST(Params, DefaultRangesAreValidAtBothEnds) {
       }
     }
   }
-  const ParameterRange v = DefaultRange(Seed(), "v");
+  const ParameterRange v = DefaultRange(Seed(), Parameter::kV);
   const double hopf = std::sqrt((Seed().k1() - 2 * Seed().beta) / (3 * Seed().k3()));  // (3.16)
   EXPECT_LT(v.from, hopf);
   EXPECT_GT(v.to, hopf);
-  EXPECT_THROW(DefaultRange(Seed(), "gamma"), InvalidArgument);
+  EXPECT_THROW(DefaultRange(Seed(), ParameterAxis("gamma")), InvalidArgument);
 }
 
 }  // namespace

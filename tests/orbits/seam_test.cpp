@@ -47,9 +47,12 @@ class SpringBlock final : public FrictionSystem {
     if (m != Mode::kStick) J << 0, 1, -b_.w * b_.w, -2 * b_.zeta * b_.w;
     return J;
   }
-  std::unique_ptr<TaylorField> MakeTaylorField(const std::string& parameter) const override;
+  std::unique_ptr<TaylorField> MakeTaylorField(
+      const std::optional<ParameterAxis>& parameter) const override;
   // The parameter lens: mu_k only, df/dmu_k = (0, sigma).
-  bool SupportsParameterColumn(const std::string& p) const override { return p == "mu_k"; }
+  bool SupportsParameterColumn(const ParameterAxis& p) const override {
+    return p == Parameter::kMuK;
+  }
   double StickForce(double x) const override { return b_.w * b_.w * x + 2 * b_.zeta * b_.w * b_.v; }
   double static_limit() const override { return b_.mu_s; }
   Vec2 ExitPoint() const override {
@@ -95,9 +98,10 @@ class BlockField final : public TaylorField {
   double w2_ = 1, c_ = 0, sigma_ = 1, force_ = 0;
 };
 
-std::unique_ptr<TaylorField> SpringBlock::MakeTaylorField(const std::string& parameter) const {
-  if (!parameter.empty() && !SupportsParameterColumn(parameter))
-    throw InvalidArgument("no parameter column for " + parameter);
+std::unique_ptr<TaylorField> SpringBlock::MakeTaylorField(
+    const std::optional<ParameterAxis>& parameter) const {
+  if (parameter && !SupportsParameterColumn(*parameter))
+    throw InvalidArgument("no parameter column for " + parameter->name());
   return std::make_unique<BlockField>();
 }
 
@@ -276,8 +280,8 @@ TEST(Seam, ParameterColumnOfTheSecondSystem) {
   fo.rtol = 1e-13;
   fo.atol = 1e-15;
   Flow flow(SpringBlock(b), fo);
-  EXPECT_THROW(flow.set_parameter_column("beta"), InvalidArgument);
-  flow.set_parameter_column("mu_k");
+  EXPECT_THROW(flow.set_parameter_column(Parameter::kBeta), InvalidArgument);
+  flow.set_parameter_column(Parameter::kMuK);
   StopRule stop;
   stop.t_max = 3;
   stop.switching = false;

@@ -4,9 +4,13 @@
 
 #include <string>
 
-#include "stickslip/model/params.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip {
+
+// "<which> = '<name>' is no parameter (expected one of beta, v, ...)" if name
+// is none (an option's value, read at the entry), else "".
+std::string UnknownAxisError(const std::string& name, const char* which);
 
 // The input a plane's validation error is about: ss_chart names that option.
 enum class PlaneInput { kNone, kParam, kParam2, kFrom, kTo, kFrom2, kTo2, kRectangle };
@@ -23,12 +27,12 @@ struct PlaneError {
 constexpr double kMinRelativeWidth = 1e-6;
 
 struct Plane {
-  std::string p1 = "v", p2 = "beta";  // axis names (ParameterNames of the law)
+  ParameterAxis p1 = Parameter::kV, p2 = Parameter::kBeta;  // the axes (of the law's parameters)
   double from1 = 0.05, to1 = 0.6;     // p1 range, from1 < to1
   double from2 = 0.0, to2 = 0.25;     // p2 range, from2 < to2
 
   // Empty if valid for `base`, else one line naming the violated constraint:
-  // unknown or inapplicable axis, equal axes, non-finite, empty or inverted
+  // inapplicable axis, equal axes, non-finite, empty or inverted
   // range, or a point of the rectangle (a 33 x 33 grid, edges included) that
   // is not a valid model (ValidationError of params.hpp, e.g. v <= 0).
   // A range narrower than kMinRelativeWidth is refused.

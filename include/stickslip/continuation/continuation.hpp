@@ -82,7 +82,7 @@ struct SpecialPoint {
 
 /// The continued parameter, its range, steps and tolerances; validated once by Continue().
 struct ContinuationOptions {
-  ParameterAxis param{"v"};  // parsed from a name once, at the entry
+  ParameterAxis param{Parameter::kV};  // parsed from a name once, at the entry
   double from = 0.05;
   double to = 0.5;
   OrbitOptions orbit;
@@ -141,7 +141,7 @@ struct ContinuationTimes {
 struct ContinuationResult {
   ContinuationStatus status = ContinuationStatus::kOk;
   std::string message;
-  std::string param;  // the parameter axis the points are on
+  ParameterAxis param{Parameter::kV};  // the parameter axis the points are on
   // Conditions that make the result less trustworthy than its status says
   // (a tolerance looser than kLoosestTrustedRtol), one line each.
   std::vector<std::string> warnings;

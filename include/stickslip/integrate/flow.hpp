@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -127,12 +128,13 @@ class Flow {
   }
 
   // The parameter column: with variational runs on the Taylor integrator,
-  // dz/dp for this parameter (a ParameterAxis name) rides in the same
-  // recurrences. Empty: none (the column's stepper is kept for reuse). Throws InvalidArgument for
-  // an unknown name or one the system has no column for (SupportsParameterColumn).
-  void set_parameter_column(const std::string& name);
+  // dz/dp for this parameter rides in the same recurrences. Throws
+  // InvalidArgument for one the system has no column for (SupportsParameterColumn).
+  void set_parameter_column(const ParameterAxis& axis);
+  // No column (its stepper is kept for reuse).
+  void clear_parameter_column() { parameter_.reset(); }
   bool has_parameter_column() const {
-    return !parameter_.empty() && options_.integrator == Integrator::kTaylor;
+    return parameter_ && options_.integrator == Integrator::kTaylor;
   }
 
   long total_steps() const { return total_steps_; }
@@ -158,7 +160,7 @@ class Flow {
   FlowOptions options_;
   Mode mode_ = Mode::kSlipBelow;  // the mode being integrated
   std::unique_ptr<Stepper> plain_, var_, param_;
-  std::string parameter_, param_name_;  // the active column; param_'s
+  std::optional<ParameterAxis> parameter_, param_axis_;  // the active column; param_'s
   long total_steps_ = 0;
   std::function<bool()> cancel_;
 };

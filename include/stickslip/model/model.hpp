@@ -15,7 +15,7 @@ namespace stickslip {
 /// Whether the belt's parameter column (Flow::set_parameter_column) supports
 /// this parameter under this law: beta, v, and every law parameter mu(s)
 /// depends on affinely (all but v_m, v_s and delta of their own laws).
-bool ParameterColumnSupported(LawKind law, const std::string& name);
+bool ParameterColumnSupported(LawKind law, const ParameterAxis& axis);
 
 /// The belt model for one parameter set: fields, Jacobians, switching rules.
 class Model final : public FrictionSystem {
@@ -37,9 +37,10 @@ class Model final : public FrictionSystem {
     return -x - two_beta_ * xdot + SlipForce(m, xdot);
   }
   Mat2 Jacobian(Mode m, const Vec2& z) const override;
-  std::unique_ptr<TaylorField> MakeTaylorField(const std::string& parameter) const override;
+  std::unique_ptr<TaylorField> MakeTaylorField(
+      const std::optional<ParameterAxis>& parameter) const override;
   /// beta, v, and every law parameter mu(s) depends on affinely.
-  bool SupportsParameterColumn(const std::string& parameter) const override;
+  bool SupportsParameterColumn(const ParameterAxis& parameter) const override;
   /// dF/dx' on the mode's branch.
   double SlipForceSlope(Mode m, double xdot) const {
     return m == Mode::kSlipBelow ? -friction_.DMu(p_.v - xdot) : -friction_.DMu(xdot - p_.v);

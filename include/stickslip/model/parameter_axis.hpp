@@ -1,21 +1,29 @@
-// The continued parameter: a name resolved once to the member of Params it
-// stands for, so that a point on the axis is one assignment.
+// A parameter of the belt model as a type: the continued parameter, a chart's
+// axes, the parameter column. Resolved once to the member of Params it stands
+// for, so that a point on the axis is one assignment. Names are read and
+// written at the edges only (options, files: EnumNames<Parameter>).
 #pragma once
 
+#include <ostream>
 #include <string>
 
 #include "stickslip/model/params.hpp"
 
 namespace stickslip {
 
-/// The continued parameter by name, resolved once to its member of Params.
+/// One parameter of Params.
 class ParameterAxis {
  public:
-  /// Throws InvalidArgument naming the string if it is no parameter.
-  explicit ParameterAxis(const std::string& name) : name_(name), member_(ParameterMember(name)) {}
+  ParameterAxis(Parameter id) : id_(id), member_(ParameterMember(id)) {}  // NOLINT: implicit
+  /// By name (an option or a file); throws InvalidArgument naming the string if it is no parameter.
+  explicit ParameterAxis(const std::string& name) : member_(ParameterMember(name)) {
+    FromName(name, &id_);
+  }
 
-  const std::string& name() const { return name_; }
-  bool operator==(const ParameterAxis& o) const { return member_ == o.member_; }
+  Parameter id() const { return id_; }
+  /// The printed name (EnumNames<Parameter>).
+  std::string name() const { return Name(id_); }
+  bool operator==(const ParameterAxis& o) const { return id_ == o.id_; }
   bool operator!=(const ParameterAxis& o) const { return !(*this == o); }
   double Get(const Params& p) const { return p.*member_; }
   void Set(Params& p, double value) const { p.*member_ = value; }
@@ -27,8 +35,14 @@ class ParameterAxis {
   }
 
  private:
-  std::string name_;
+  Parameter id_ = Parameter::kV;
   double Params::*member_;
 };
+
+/// Writes the printed name.
+inline std::ostream& operator<<(std::ostream& os, const ParameterAxis& a) { return os << a.name(); }
+
+/// The parameters that apply to a law, in ParameterNames(law)'s order.
+std::vector<ParameterAxis> ParameterAxes(LawKind law);
 
 }  // namespace stickslip

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/names.hpp"
+
 namespace stickslip {
 
 /// Friction laws mu(s), s = |x' - v| (seed eq. 3.3 and the table of laws in docs/theory.md).
@@ -39,6 +41,19 @@ struct Params {
   double k3() const;
 };
 
+/// The parameters of Params by name; EnumNames<Parameter> is the one table of
+/// their printed names (options, TSV columns and metadata).
+enum class Parameter { kBeta, kV, kMuS, kMuM, kVM, kMuK, kVS, kDelta, kK5 };
+template <>
+struct EnumNames<Parameter> {
+  static constexpr NamedValue<Parameter> kTable[] = {
+      {Parameter::kBeta, "beta"}, {Parameter::kV, "v"},         {Parameter::kMuS, "mu_s"},
+      {Parameter::kMuM, "mu_m"},  {Parameter::kVM, "v_m"},      {Parameter::kMuK, "mu_k"},
+      {Parameter::kVS, "v_s"},    {Parameter::kDelta, "delta"}, {Parameter::kK5, "k5"}};
+};
+/// The member of Params a parameter stands for.
+double Params::*ParameterMember(Parameter p);
+
 /// Names of the parameters that apply to a law, in a fixed order:
 /// beta, v, mu_s, then the law's own (cubic: mu_m, v_m, k5; coulomb: mu_k;
 /// stribeck: mu_k, v_s; leine: delta).
@@ -52,6 +67,8 @@ std::string ParameterNameList();
 /// The member of Params a name stands for; throws InvalidArgument on an unknown name.
 double Params::*ParameterMember(const std::string& name);
 
+class ParameterAxis;  // parameter_axis.hpp
+
 /// A continuation range of one parameter.
 struct ParameterRange {
   double from = 0;
@@ -63,10 +80,10 @@ struct ParameterRange {
 /// speeds v_m, v_s and delta 0.5 -> 2 x their base value, k5 0 -> max(1,
 /// 2 k5). Throws
 /// InvalidArgument on an unknown name.
-ParameterRange DefaultRange(const Params& base, const std::string& name);
+ParameterRange DefaultRange(const Params& base, const ParameterAxis& axis);
 /// A range that starts at `at`'s value of the parameter and runs to the far
 /// end of DefaultRange(at, name): a restart's branch (AUTO-07p's IRS).
-ParameterRange RangeFromPoint(const Params& at, const std::string& name);
+ParameterRange RangeFromPoint(const Params& at, const ParameterAxis& axis);
 
 /// Get or set by name; throw InvalidArgument on an unknown name.
 double GetParameter(const Params& p, const std::string& name);

@@ -12,7 +12,10 @@
 #include <algorithm>
 #include <complex>
 #include <memory>
+#include <optional>
 #include <string>
+
+#include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip {
 
@@ -62,11 +65,12 @@ class FrictionSystem {
   /// df/dz of a mode (zero in stick).
   virtual Mat2 Jacobian(Mode m, const Vec2& z) const = 0;
   /// The Taylor recurrences of the slip modes (with Phi, and with dz/dp for
-  /// `parameter` when not empty), for the Taylor stepper. Throws
+  /// `parameter` when given), for the Taylor stepper. Throws
   /// InvalidArgument for a parameter the system has no column for.
-  virtual std::unique_ptr<TaylorField> MakeTaylorField(const std::string& parameter) const = 0;
-  /// Whether MakeTaylorField accepts this parameter (a ParameterAxis name).
-  virtual bool SupportsParameterColumn(const std::string& parameter) const = 0;
+  virtual std::unique_ptr<TaylorField> MakeTaylorField(
+      const std::optional<ParameterAxis>& parameter) const = 0;
+  /// Whether MakeTaylorField accepts this parameter.
+  virtual bool SupportsParameterColumn(const ParameterAxis& parameter) const = 0;
 
   /// The force the contact must transmit to hold stick at x; stick holds
   /// while |StickForce(x)| <= static_limit().
