@@ -3,11 +3,12 @@
 # gnuplot script that draw it: docs/figures/<study>/ holds one app run's whole
 # output set (TSVs, .gp, PNGs). Redraw a figure there with `gnuplot <script>.gp`.
 # plots/ is the main job's output directory and is not committed.
-# Usage: scripts/docs_figures.sh [BUILD_DIR]   (default: build; about 10 s)
+# Usage: scripts/docs_figures.sh [BUILD_DIR]   (default: build; about 4 min of CPU,
+# most of it the forced charts, orbit diagrams and basins)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
-for app in ss_continue ss_chart ss_basin ss_simulate; do
+for app in ss_continue ss_chart ss_basin ss_simulate ss_orbit_diagram; do
   [[ -x "$build/$app" ]] || { echo "docs_figures.sh: $build/$app not found; build it first" >&2; exit 1; }
 done
 command -v gnuplot >/dev/null || { echo "docs_figures.sh: gnuplot not found on PATH" >&2; exit 1; }
@@ -25,6 +26,13 @@ run "$build/ss_continue" --study studies/den_hartog.ini --out "$fig/den_hartog"
 for study in floor_static seed_forced stribeck_forced; do
   run "$build/ss_continue" --study "studies/$study.ini" --out "$fig/$study"
   run "$build/ss_simulate" --study "studies/$study.ini" --out "$fig/${study}_sim"
+done
+# Their chaos figures (issue 21): orbit diagram with exponents and basins in the
+# study's folder, the (Omega, A) chart in its own.
+for study in seed_forced stribeck_forced; do
+  run "$build/ss_orbit_diagram" --study "studies/$study.ini" --out "$fig/$study"
+  run "$build/ss_basin" --study "studies/${study}_basin.ini" --out "$fig/$study"
+  run "$build/ss_chart" --study "studies/$study.ini" --out "$fig/${study}_chart"
 done
 run "$build/ss_basin" --study studies/stribeck_basin.ini --out "$fig/stribeck_basin"
 run "$build/ss_basin" --study studies/stribeck_basin_stability.ini --out "$fig/stribeck_basin_stability"

@@ -28,7 +28,7 @@ uv = 1
 up = 1
 up2 = 1
 set xlabel "belt speed v (dimensionless)"
-set title "cubic law: β = 0.05, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0"
+set title "cubic law: β = 0.05, μ_s = 0.4, μ_m = 0.25, v_m = 0.5"
 set offsets 0, 0, graph 0.08, graph 0.08
 set xrange [up*0.05:up*0.5]
 set output 'bifurcation_x.png'.suffix

@@ -20,7 +20,7 @@ set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output 'resonance.png'
-set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0, A = 0.3"
+set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3"
 set xlabel "forcing frequency Ω (over the natural one)"
 set ylabel 'largest displacement x_{max} (dimensionless)'
 set yrange [0:*]

@@ -11,7 +11,7 @@ set xlabel "forcing frequency Ω"
 set ylabel "force amplitude A"
 set xrange [0.29999999999999999:1.2]
 set yrange [0.050000000000000003:0.59999999999999998]
-set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0"
+set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5"
 set lmargin at screen 0.1
 set rmargin at screen 0.97
 set tmargin at screen 0.93
@@ -20,11 +20,11 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
-set label "SL" at 0.45485038793470828,0.46186094952235268 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.76064732628889986,0.14743643932669709 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.31215487061392005,0.29520954259805388 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.44521896296555091,0.19134144271697712 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.43425491904366659,0.47754814213749219 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.7606473265537137,0.14743643915546753 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.31215487061392161,0.29520954259842058 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.44521896296555463,0.19134144271694264 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.45474787564741975,0.46190364339321233 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.43425491817821199,0.47754814306714433 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
@@ -41,13 +41,13 @@ plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) w
      NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
-     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title 'GR, non-stop motion ends', \
+     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title 'GR, non-stop motion ends', \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'LP, fold', \
-     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title 'PD, period doubling', \
-     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title 'PD, period doubling', \
+     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
      'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
      'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
 unset output

@@ -19,7 +19,7 @@ set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output "trajectory.png"
-set multiplot layout 1,2 title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0, A = 0.3, Ω = 0.6"
+set multiplot layout 1,2 title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3, Ω = 0.6"
 set xlabel 'displacement x'
 set ylabel 'velocity dx/dt'
 set title 'phase portrait'
@@ -34,7 +34,7 @@ unset multiplot
 set terminal pngcairo size 950,750 enhanced font 'Sans,12'
 set output "section.png"
 set key off
-set title "stroboscopic section (cos Ωt = 1)\n" . "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0, A = 0.3, Ω = 0.6"
+set title "stroboscopic section (cos Ωt = 1)\n" . "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3, Ω = 0.6"
 set xlabel 'displacement x (dimensionless)'
 set ylabel 'velocity dx/dt (dimensionless)'
 set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04

@@ -20,9 +20,9 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0x54278f, 0x756bb1, 0x9e9ac8, 0xcbc9e2, 0x8c6d31, 0xd9d9d9, 0x404040]
-set label "SL" at 0.89836507469834626,0.065302321540093272 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.78532714654404256,0.12666998573129709 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.6028028225712635,0.27195581397993013 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.89836507469834215,0.065302321540095118 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.78532714654403968,0.12666998573129917 offset 0.7,0.7 left front font ',12' noenhanced
+set label "SL" at 0.60280282269018626,0.27195581385147294 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.0087499999999999991):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
