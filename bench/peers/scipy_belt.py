@@ -81,17 +81,9 @@ def sweep_point(v, start, converge_tol=1e-9, min_cycles=3, t_cap=20000.0):
     return math.nan, math.nan, [0.0, 0.0]
 
 
-def child_cpu(args):
-    pid = os.fork()
-    if pid == 0:
-        fd = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(fd, 1)
-        os.dup2(fd, 2)
-        os.execv(args[0], args)
-    _, status, ru = os.wait4(pid, 0)
-    if status != 0:
-        sys.exit("ss_continue failed with status %d" % status)
-    return ru.ru_utime + ru.ru_stime
+# CPU seconds of one child process, as scripts/cpu_pairs.py measures them.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from cpu_pairs import cpu as child_cpu  # noqa: E402
 
 
 def ss_continue_cpu(build, runs=20):
