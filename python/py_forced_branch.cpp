@@ -96,7 +96,7 @@ PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, Force
   return out;
 }
 
-PyForcedBranch Continue(const ForcedParams& base, ForcedAxis axis, double from, double to,
+PyForcedBranch Continue(ForcedParams base, ForcedAxis axis, double from, double to,
                         std::optional<double> x_guess, std::optional<double> xdot_guess, int m,
                         double max_amplitude, std::optional<double> max_step,
                         std::optional<double> rtol, std::optional<double> atol) {
@@ -129,13 +129,16 @@ PyForcedBranch Doubled(const PyForcedSpecial& pd, std::optional<double> lo,
   ForcedBranchOptions o = Options(b - a, pd.m, max_amplitude, max_step, rtol, atol);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
+  const ForcedParams at = pd.params;  // copies: read without the GIL
+  const ForcedAxis axis = pd.axis;
+  const double x0 = pd.x0, xdot0 = pd.xdot0;
   ForcedBranch r;
   {
     py::gil_scoped_release nogil;
-    r = ContinueDoubled(pd.params, pd.axis, pd.x0, pd.xdot0, a, b, o);
+    r = ContinueDoubled(at, axis, x0, xdot0, a, b, o);
   }
   interrupt.RaiseIfInterrupted();
-  return MakeBranch(r, pd.params, pd.axis, a, b);
+  return MakeBranch(r, at, axis, a, b);
 }
 
 template <typename C, typename... F>

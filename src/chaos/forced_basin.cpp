@@ -147,9 +147,12 @@ ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOpt
         if (r.status == LyapunovStatus::kCancelled) break;
         found[k] = a;
         if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
-      } catch (const std::exception& ex) {
+      } catch (const std::exception& ex) {  // no exception leaves the worker
         found[k].kind = AttractorKind::kFailed;
         b.starts[k].message = ex.what();
+      } catch (...) {
+        found[k].kind = AttractorKind::kFailed;
+        b.starts[k].message = "unknown exception";
       }
       done_flag[k] = 1;
       done.fetch_add(1);

@@ -48,9 +48,13 @@ void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<D
           o.max_amplitude);
       restart = c->run.status != LyapunovStatus::kDone;
       z = c->run.end;
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // no exception leaves the thread
       c->run.status = LyapunovStatus::kFlowFailed;
       c->run.message = e.what();
+      restart = true;
+    } catch (...) {
+      c->run.status = LyapunovStatus::kFlowFailed;
+      c->run.message = "unknown exception";
       restart = true;
     }
     c->computed = c->run.status != LyapunovStatus::kCancelled;

@@ -131,6 +131,7 @@ void EndOffBranch(Palc& palc, const TraceOptions& o, const std::vector<PalcPoint
   VectorXd best;
   while (hi - lo > Tolerances().chart_end_bisection) {
     const double s = 0.5 * (lo + hi);
+    why = {};  // this point's reason only (outside the plane: none)
     const PalcCorrection c =
         palc.Correct(last.u + s * last.tangent.cwiseProduct(scale), last.tangent);
     if (c.ok && o.plane.Contains(c.u[o.i1], c.u[o.i1 + 1]) && continues(c.u, &why)) {

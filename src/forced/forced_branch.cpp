@@ -104,7 +104,10 @@ class Monitor {
   bool stopped() const { return stopped_; }
   // After a jump of the map the trace turned away from `to`: restart here.
   const VectorXd* TurnedBack() const { return turned_ ? &turned_at_ : nullptr; }
-  void Restart() { have_prev_ = turned_ = false; }
+  void Restart() {  // Palc's next trace starts at turned_at_ and writes its row again
+    if (turned_ && !out_.rows.empty()) out_.rows.pop_back();
+    have_prev_ = turned_ = false;
+  }
   bool operator()(const std::vector<PalcPoint>& curve);
 
  private:
@@ -270,7 +273,13 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
   int fixed_now = fixed;
   for (;;) {
     const PalcResult r = palc.Trace(u0, fixed_now, along, std::ref(monitor));
-    if (const VectorXd* at = monitor.TurnedBack(); at && out.jumps++ < options.max_jumps) {
+    if (const VectorXd* at = monitor.TurnedBack()) {
+      if (out.jumps >= options.max_jumps) {  // cut short: never "reached-end"
+        out.status = ForcedBranchStatus::kStepTooSmall;
+        out.message = "turned back after a jump, max_jumps = " + std::to_string(options.max_jumps);
+        break;
+      }
+      ++out.jumps;
       u0 = *at, fixed_now = 2, along = VectorXd::Unit(3, 2) * dir, trace_dir = dir;
       monitor.Restart();
       continue;

@@ -248,17 +248,22 @@ bool BisectEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOpt
 ForcedBranchRow EdgeWithoutOrbit(const ForcedParams& base, ForcedAxis axis,
                                  const ForcedBranchOptions& o, const ForcedBranchRow& before,
                                  double dir) {
-  ForcedBranchRow beyond = before;
+  ForcedBranchRow beyond = before, point = before;
   beyond.p = before.p + dir * 10 * o.locate_tol * (1 + std::abs(before.p));
-  const ForcedModel model(At(base, axis, beyond.p));
-  ForcedRequest rq;
-  rq.t_end = before.m * model.period();
-  rq.extremes = false;
-  const ForcedRun run =
-      ForcedFlow(model, o.flow).Run(ForcedStart(model, 0, before.x0, before.xdot0), rq);
-  beyond.sticks = run.sticks, beyond.crossings = run.crossings;
-  ForcedBranchRow point = before;
-  ClassifySliding(base, axis, o, before, beyond, &point);
+  // Classified from one period just beyond, where that is a valid model (A,
+  // v >= 0) and the run ends well; else the edge stays unlabelled.
+  const ForcedParams at = At(base, axis, beyond.p);
+  if (ValidationError(at).empty()) {
+    const ForcedModel model(at);
+    ForcedRequest rq;
+    rq.t_end = before.m * model.period();
+    rq.extremes = false;
+    const ForcedRun run =
+        ForcedFlow(model, o.flow).Run(ForcedStart(model, 0, before.x0, before.xdot0), rq);
+    beyond.sticks = run.sticks, beyond.crossings = run.crossings;
+    if (run.status == ForcedStatus::kReached)
+      ClassifySliding(base, axis, o, before, beyond, &point);
+  }
   const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
   if (StickTouchToEdge(base, axis, o, before) <= tol.BandEdge()) {
     point.label = ForcedLabel::kAD;  // the slip that splits the stick is not short: a jump

@@ -19,7 +19,7 @@ const char* const kPeriodic[5][4] = {{"#08519c", "#3182bd", "#6baed6", "#bdd7e7"
                                      {"#54278f", "#756bb1", "#9e9ac8", "#cbc9e2"},
                                      {"#8c6d31", "#bd9e39", "#e7ba52", "#e7cb94"}};
 
-std::string Fill(const ResponseGrid& g, const ResponseClasses& c, int cls) {
+std::string Fill(const ResponseClasses& c, int cls) {
   switch (c.kinds[cls]) {
     case AttractorKind::kPeriodic: {
       // Shades of the m's hue in the classes' order (fewer sticks darker).
@@ -97,7 +97,7 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
      << "set tics out nomirror front\nset border 3 front\n";
   os << "array C[" << std::max<size_t>(1, c.names.size()) << "] = [";
   for (size_t i = 0; i < c.names.size(); ++i)
-    os << (i ? ", " : "") << "0x" << Fill(g, c, static_cast<int>(i)).substr(1);
+    os << (i ? ", " : "") << "0x" << Fill(c, static_cast<int>(i)).substr(1);
   if (c.names.empty()) os << "0xffffff";
   os << "]\n";
   for (const ForcedCodim2& p : r.codim2)
@@ -112,7 +112,7 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   else
     os << "NaN notitle";
   for (size_t i = 0; i < c.names.size(); ++i)
-    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(g, c, static_cast<int>(i))
+    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(c, static_cast<int>(i))
        << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
   if (!r.codim2.empty())

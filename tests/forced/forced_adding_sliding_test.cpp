@@ -133,6 +133,8 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
   EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
   ASSERT_FALSE(b.rows.empty());
   EXPECT_EQ(b.rows.back().p, 0.5);
+  for (size_t i = 1; i < b.rows.size(); ++i)  // the restart once wrote its start twice
+    EXPECT_NE(b.rows[i].p, b.rows[i - 1].p) << "row " << i << " repeats the row before";
   const ForcedBranchRow* row = nullptr;
   for (const ForcedBranchRow& r : b.rows)
     if (r.p >= 0.3 && r.stable && !row) row = &r;
@@ -147,6 +149,29 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
               row->p, double(x - row->x0), double(y - row->xdot0));
   EXPECT_NEAR(double(x), row->x0, 1e-9);
   EXPECT_NEAR(double(y), row->xdot0, 1e-9);
+}
+
+// With no jump allowed, the turn back after Palc's landing across the jump is
+// not taken: the run is cut short and says so (it once ended "reached-end",
+// with no message, at v = 0.185).
+TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
+  const ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  o.max_jumps = 0;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
+  const ForcedBranch b = ContinueForced(p, ForcedAxis::kV, 0, 0.5, tr.end.x, tr.end.xdot, o);
+  EXPECT_EQ(b.status, ForcedBranchStatus::kStepTooSmall) << b.message;
+  EXPECT_NE(b.message.find("turned back after a jump, max_jumps = 0"), std::string::npos)
+      << b.message;
+  EXPECT_EQ(b.jumps, 0);
+  std::printf("[ measured ] %zu rows to v = %.6g: %s\n", b.rows.size(), b.rows.back().p,
+              b.message.c_str());
+  ASSERT_FALSE(b.rows.empty());
+  EXPECT_LT(b.rows.back().p, 0.5);
 }
 
 }  // namespace
