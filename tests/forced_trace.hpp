@@ -1,19 +1,24 @@
-// A forced branch in Omega for the tests: 200 forcing periods from rest at
-// the start, then ContinueForced from that state to `to` with options `o`.
+// A forced branch for the tests: 200 forcing periods from rest at p with the
+// axis at `from`, then ContinueForced from that state to `to` with options `o`.
 #pragma once
 
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip::testing_util {
 
-inline ForcedBranch TraceOmega(ForcedParams p, double from, double to,
-                               const ForcedBranchOptions& o) {
-  p.omega = from;
+inline ForcedBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to,
+                          const ForcedBranchOptions& o) {
+  SetAxis(p, axis, from);
   const ForcedModel m(p);
   ForcedRequest rq;
   rq.t_end = 200 * m.period();
   const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, p.base.v), rq);
-  return ContinueForced(p, ForcedAxis::kOmega, from, to, tr.end.x, tr.end.xdot, o);
+  return ContinueForced(p, axis, from, to, tr.end.x, tr.end.xdot, o);
+}
+
+inline ForcedBranch TraceOmega(const ForcedParams& p, double from, double to,
+                               const ForcedBranchOptions& o) {
+  return Trace(p, ForcedAxis::kOmega, from, to, o);
 }
 
 }  // namespace stickslip::testing_util

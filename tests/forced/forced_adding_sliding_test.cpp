@@ -125,11 +125,7 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
-  const ForcedBranch b = ContinueForced(p, ForcedAxis::kV, 0, 0.5, tr.end.x, tr.end.xdot, o);
+  const ForcedBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
   ASSERT_FALSE(b.rows.empty());
   EXPECT_EQ(b.rows.back().p, 0.5);
@@ -159,11 +155,7 @@ TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
   o.max_jumps = 0;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
-  const ForcedBranch b = ContinueForced(p, ForcedAxis::kV, 0, 0.5, tr.end.x, tr.end.xdot, o);
+  const ForcedBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, ForcedBranchStatus::kStepTooSmall) << b.message;
   EXPECT_NE(b.message.find("turned back after a jump, max_jumps = 0"), std::string::npos)
       << b.message;

@@ -149,12 +149,8 @@ TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
   ForcedBranch b;
-  ASSERT_NO_THROW(b = ContinueForced(p, ForcedAxis::kV, 0, 0.5, tr.end.x, tr.end.xdot, o));
+  ASSERT_NO_THROW(b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o));
   ASSERT_FALSE(b.rows.empty()) << b.message;
   EXPECT_EQ(b.rows.front().p, 0);
   EXPECT_NEAR(b.rows.front().extremes.x_min, -b.rows.front().extremes.x_max, 1e-10);
