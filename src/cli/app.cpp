@@ -81,7 +81,8 @@ int AppRun::ExitCode(const std::string& partial) const {
   }
   if (run_.Cancelled()) {
     PrintError(prog_, run_.Reason() + " while " + run_.cancelled_phase() +
-                          ": the files are written" + (gnuplot_.ok() ? "" : ", figures not drawn"));
+                          ": the files are written" +
+                          (gnuplot_.ok() || !plots_ ? "" : ", figures not drawn"));
     return kExitFailed;
   }
   if (plots_ && gnuplot_.status == GnuplotStatus::kMissing) {

@@ -613,12 +613,13 @@ TEST_F(ContinueApp, MaxTimeWritesWholePartialBranch) {
   ExpectWholePartialBranch(OutDir() + "/branch.tsv", "cancelled");
 }
 
-// A pathological model: v_m = 1e-6 makes k3 ~ 1e17, and one return of the
-// pure-slip scan at the start runs for many minutes. --max_time and SIGINT
-// must still stop it promptly (cancellation reaches into the flow).
-const std::vector<std::string> kPathological = {"--integrator", "cvode",         "--param", "v_m",
-                                                "--from",       "1e-6",          "--to",    "1",
-                                                "--no_plots",   "--no_estimates"};
+// A pathological model: v = v_m = 1e-6 (k3 ~ 1e17, stick phases ~1e5 long,
+// slip stiff). The search for the first periodic orbit runs for minutes (over
+// 60 s on CVODE Adams); --max_time and SIGINT must still stop it promptly
+// (cancellation reaches into the flow).
+const std::vector<std::string> kPathological = {
+    "--integrator", "cvode",  "--v_m", "1e-6", "--v", "1e-6",       "--param",
+    "beta",         "--from", "0.01",  "--to", "0.3", "--no_plots", "--no_estimates"};
 
 TEST_F(ContinueApp, MaxTimeStopsAPathologicalOrbit) {
   std::vector<std::string> args = kPathological;
