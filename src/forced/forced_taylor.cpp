@@ -47,9 +47,9 @@ void SlipSeries::Recur() {
     si[k + 1] = w * co[k] * inv;
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-      // Both columns' sums of products with cc in one pass (Cauchy2).
+      // Both columns' sums of products with cc in one pass, cc_k and q_k last.
       double cq0, cq1;
-      Cauchy2(c_[3], c_[5], cc, k, &cq0, &cq1);
+      Cauchy2NewestLast(c_[3], c_[5], cc, k, &cq0, &cq1);
       c_[2][k + 1] = c_[3][k] * inv;
       c_[3][k + 1] = (-c_[2][k] + cq0) * inv;
       c_[4][k + 1] = c_[5][k] * inv;
@@ -67,7 +67,9 @@ void SlipSeries::Expand(Mode mode, double t0, const double* z, bool variational)
     c_[i][0] = z[i];
     z0 = std::max(z0, std::abs(z[i]));
   }
-  order_ = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
+  const bool relative = rtol_ * z0 > atol_;
+  order_ = relative ? order_rel_ : order_abs_;
+  log_eps_ = relative ? log_rel_ : log_abs_;
   // Cauchy() reads kPad entries past k: finite from the last step or 0.
   switch (m_.friction().law()) {
     case LawKind::kCubic:
@@ -81,8 +83,9 @@ void SlipSeries::Expand(Mode mode, double t0, const double* z, bool variational)
   }
 }
 
-// rho = min over j = p-1, p of (eps / |z_j|)^(1/j), relative to |z_0| when
-// rtol |z_0| > atol; h = rho / e^2 exp(-0.7 / (p - 1)). The forcing's own
+// rho = min over j = p-1, p of (1 / |z_j|)^(1/j), relative to |z_0| when
+// rtol |z_0| > atol; h = rho eps^(1/(p-1)) exp(-0.7 / (p - 1)) (at JZ's order
+// p = -ln(eps) / 2 + 1 this is rho / e^2 exp(-0.7 / (p - 1))). The forcing's own
 // series (A c_k, A s_k) count too: they drive x' from the next order on.
 double SlipSeries::StepSize() const {
   const double a = m_.force();
@@ -96,7 +99,7 @@ double SlipSeries::StepSize() const {
   const int p = order_;
   const double r1 = (log_scale - std::log(norm(p - 1))) / (p - 1);
   const double r2 = (log_scale - std::log(norm(p))) / p;
-  return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (p - 1));
+  return std::exp(std::min(r1, r2) + (log_eps_ - 0.7) / (p - 1));
 }
 
 }  // namespace stickslip::forced_detail

@@ -24,9 +24,30 @@ namespace stickslip::forced_detail {
 constexpr int kMaxOrder = 36;
 constexpr int kRow = kMaxOrder + 1 + kPad;
 
-// JZ (3.8): order p = ceil(-ln(eps) / 2 + 1).
+// The step of order p is h = rho exp(-(L + 0.7) / (p - 1)), L = -ln(eps)
+// (StepSize; JZ section 3.2, heyoka's safety factor), and costs about
+// p^2 + kLinearWork p (the Cauchy sums of the law's series and of Phi, against
+// sincos, exp, the event polynomials and root refinement): the order minimises
+// the work per unit time, (p^2 + b p) exp((L + 0.7) / (p - 1)) (JZ's cost model
+// p^2, widened as in integrate/taylor_order.hpp). b = 0 gives JZ (3.8),
+// p = L / 2 + 1; b = 25 gives 22 at eps = 1e-12, where the measured time per
+// forcing period is least over p = 15 .. 27 (docs/benchmarks.md).
+constexpr double kLinearWork = 25;
 inline int TaylorOrder(double eps) {
-  return std::min(kMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
+  // A flow is made per forcing period (IterateStroboscopic): the last
+  // answer is kept, per thread, instead of 35 logarithms each time.
+  thread_local double last_eps = 0;
+  thread_local int last_order = 0;
+  if (eps == last_eps) return last_order;
+  const double L = -std::log(eps) + 0.7;
+  int best = 2;
+  double best_work = INFINITY;
+  for (int p = 2; p <= kMaxOrder; ++p) {
+    const double work = std::log(p * (p + kLinearWork)) + L / (p - 1);
+    if (work < best_work) best_work = work, best = p;
+  }
+  last_eps = eps, last_order = best;
+  return best;
 }
 
 class SlipSeries {
@@ -37,13 +58,16 @@ class SlipSeries {
         rtol_(rtol),
         atol_(atol),
         order_rel_(TaylorOrder(rtol)),
-        order_abs_(TaylorOrder(atol)) {
+        order_abs_(TaylorOrder(atol)),
+        log_rel_(std::log(rtol)),
+        log_abs_(std::log(atol)) {
     for (auto& row : c_) std::fill(row, row + kRow, 0.0);
   }
   // The coefficients at (t0, z): z = (x, x') and, with variational, the 2 x 2
   // Phi column by column (z[2..5] = Phi00, Phi10, Phi01, Phi11).
   void Expand(Mode mode, double t0, const double* z, bool variational);
-  // JZ section 3.2 with heyoka's safety factor (Biscani & Izzo 2021, eq. 10).
+  // JZ section 3.2 with heyoka's safety factor (Biscani & Izzo 2021, eq. 10),
+  // for the order TaylorOrder chose.
   double StepSize() const;
   int order() const { return order_; }
   int size() const { return n_; }
@@ -60,6 +84,7 @@ class SlipSeries {
   MuSeries mu_;
   double rtol_, atol_;
   int order_rel_, order_abs_, order_ = 0, n_ = 2, sigma_ = 1;
+  double log_rel_, log_abs_, log_eps_ = 0;  // ln rtol, ln atol, the one of this step
   double t0_ = 0;
   double c_[6][kRow];  // x, x', Phi's columns; kPad finite entries past the order
   Series<kMaxOrder> s_, cc_, cos_, sin_;

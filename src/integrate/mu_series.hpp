@@ -81,7 +81,9 @@ inline void MuSeries::Old(int k, const double* s) {
       old_[3] = Cauchy(w_[2].c(), s, k);
     }
   } else if constexpr (L == LawKind::kStribeck) {
-    old_[0] = Cauchy(w_[2].c(), w_[1].c(), k);  // sum_{1 <= j < k} j u_j E_{k-j}
+    // sum_{1 <= j < k} j u_j E_{k-j}: the chain E_{k-1} -> old -> E_k is the
+    // recurrence's latency, so E_{k-1} and u_{k-1} enter last.
+    old_[0] = CauchyNewestLast(w_[2].c(), w_[1].c(), k);
   } else if constexpr (L == LawKind::kLeine) {
     if (k > 0) old_[0] = Cauchy(w_[0].c() + 1, w_[1].c(), k - 1);  // sum_{1 <= j < k} D_j Q_{k-j}
     if (D) old_[1] = Cauchy(w_[1].c(), w_[1].c(), k);

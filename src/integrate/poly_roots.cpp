@@ -92,13 +92,12 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
     const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
     if (xs > u0 && xs < u1) x = xs;
   }
+  // g' by its own coefficients: two independent even/odd Horner chains each
+  // (one serial chain for g and g' together bounded the loop's latency).
+  double dc[kMaxDegree];
+  for (int k = 1; k <= n; ++k) dc[k - 1] = k * c[k];
   for (int it = 0; it < 100; ++it) {
-    double gk = c[n], dg = 0;  // g' by Horner; g itself as changed() evaluates it
-    for (int k = n - 1; k >= 1; --k) {
-      dg = dg * x + gk;
-      gk = gk * x + c[k];
-    }
-    dg = dg * x + gk;
+    const double dg = n >= 1 ? Horner(dc, n - 1, x) : 0.0;
     const double gx = g(x);
     (Sign(gx, zero_sign) != sign ? hi : lo) = x;
     double next = x - gx / dg;

@@ -32,6 +32,28 @@ inline double Cauchy(const double* p, const double* q, int k) {
   return (s0 + s1) + (s2 + s3);
 }
 
+// sum_{lo <= j <= hi} p_j q_{k-j} in four partial sums (no padding read).
+inline double CauchyRange(const double* p, const double* q, int lo, int hi, int k) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int j = lo;
+  for (; j + 3 <= hi; j += 4) {
+    s0 += p[j] * q[k - j];
+    s1 += p[j + 1] * q[k - j - 1];
+    s2 += p[j + 2] * q[k - j - 2];
+    s3 += p[j + 3] * q[k - j - 3];
+  }
+  for (; j <= hi; ++j) s0 += p[j] * q[k - j];
+  return (s0 + s1) + (s2 + s3);
+}
+// Coefficient k of p q with p_0 = 0, the newest terms (j = 1 and j = k - 1,
+// holding q_{k-1} and p_{k-1}) added last: the sum of the older ones does not
+// wait for them, so a recurrence through p q waits one multiply-add per order,
+// not a chain of k / 4.
+inline double CauchyNewestLast(const double* p, const double* q, int k) {
+  if (k < 2) return 0.0;
+  if (k == 2) return p[1] * q[1];
+  return CauchyRange(p, q, 2, k - 2, k) + (p[1] * q[k - 1] + p[k - 1] * q[1]);
+}
 // Coefficient k of p q and of r q in one pass over q (the variational
 // equations' two columns against one coefficient series).
 inline void Cauchy2(const double* p, const double* r, const double* q, int k, double* pq,
@@ -46,6 +68,27 @@ inline void Cauchy2(const double* p, const double* r, const double* q, int k, do
   }
   *pq = (s0 + s1) + (s2 + s3);
   *rq = (t0 + t1) + (t2 + t3);
+}
+// Cauchy2 with the newest terms (j = 0 with q_k, j = k with p_k and r_k) added
+// last, so that the sums of the older terms do not wait for them.
+inline void Cauchy2NewestLast(const double* p, const double* r, const double* q, int k,
+                              double* pq, double* rq) {
+  if (k == 0) {
+    *pq = p[0] * q[0], *rq = r[0] * q[0];
+    return;
+  }
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0, t0 = 0, t1 = 0, t2 = 0, t3 = 0;
+  int j = 1;
+  for (; j + 3 <= k - 1; j += 4) {
+    const double q0 = q[k - j], q1 = q[k - j - 1], q2 = q[k - j - 2], q3 = q[k - j - 3];
+    s0 += p[j] * q0, t0 += r[j] * q0;
+    s1 += p[j + 1] * q1, t1 += r[j + 1] * q1;
+    s2 += p[j + 2] * q2, t2 += r[j + 2] * q2;
+    s3 += p[j + 3] * q3, t3 += r[j + 3] * q3;
+  }
+  for (; j <= k - 1; ++j) s0 += p[j] * q[k - j], t0 += r[j] * q[k - j];
+  *pq = ((s0 + s1) + (s2 + s3)) + (p[0] * q[k] + p[k] * q[0]);
+  *rq = ((t0 + t1) + (t2 + t3)) + (r[0] * q[k] + r[k] * q[0]);
 }
 
 // 1 / (k + 1) for k < kMax.
