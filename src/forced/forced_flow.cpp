@@ -152,9 +152,10 @@ bool Driver::SlipStep(double t_end) {
   const double* xd = series_.coeff(1);
   double g0[kMaxOrder + 1], g2[kMaxOrder + 1];
   double hk = 1;
-  for (int k = 0; k <= n; ++k, hk *= h) {
-    g0[k] = xd[k] * hk;
-    g2[k] = k < n ? (k + 1) * xd[k + 1] * hk : 0.0;
+  for (int k = 0; k <= n; ++k, hk *= h) g0[k] = xd[k] * hk;
+  if (rq_.extremes) {  // x'' only for the extrema of x'
+    hk = 1;
+    for (int k = 0; k <= n; ++k, hk *= h) g2[k] = k < n ? (k + 1) * xd[k + 1] * hk : 0.0;
   }
   const double xd0 = g0[0];
   g0[0] -= m_.v();

@@ -84,8 +84,8 @@ void SlipSeries::Expand(Mode mode, double t0, const double* z, bool variational)
 }
 
 // rho = min over j = p-1, p of (1 / |z_j|)^(1/j), relative to |z_0| when
-// rtol |z_0| > atol; h = rho eps^(1/(p-1)) exp(-0.7 / (p - 1)) (at JZ's order
-// p = -ln(eps) / 2 + 1 this is rho / e^2 exp(-0.7 / (p - 1))). The forcing's own
+// rtol |z_0| > atol; h = rho (eps e^-kStepMargin)^(1/(p-1)) (JZ section 3.2:
+// at their order p = -ln(eps) / 2 + 1 this is about rho / e^2). The forcing's own
 // series (A c_k, A s_k) count too: they drive x' from the next order on.
 double SlipSeries::StepSize() const {
   const double a = m_.force();
@@ -99,7 +99,7 @@ double SlipSeries::StepSize() const {
   const int p = order_;
   const double r1 = (log_scale - std::log(norm(p - 1))) / (p - 1);
   const double r2 = (log_scale - std::log(norm(p))) / p;
-  return std::exp(std::min(r1, r2) + (log_eps_ - 0.7) / (p - 1));
+  return std::exp(std::min(r1, r2) + (log_eps_ - kStepMargin) / (p - 1));
 }
 
 }  // namespace stickslip::forced_detail

@@ -24,14 +24,19 @@ namespace stickslip::forced_detail {
 constexpr int kMaxOrder = 36;
 constexpr int kRow = kMaxOrder + 1 + kPad;
 
-// The step of order p is h = rho exp(-(L + 0.7) / (p - 1)), L = -ln(eps)
-// (StepSize; JZ section 3.2, heyoka's safety factor), and costs about
-// p^2 + kLinearWork p (the Cauchy sums of the law's series and of Phi, against
-// sincos, exp, the event polynomials and root refinement): the order minimises
-// the work per unit time, (p^2 + b p) exp((L + 0.7) / (p - 1)) (JZ's cost model
-// p^2, widened as in integrate/taylor_order.hpp). b = 0 gives JZ (3.8),
-// p = L / 2 + 1; b = 25 gives 22 at eps = 1e-12, where the measured time per
-// forcing period is least over p = 15 .. 27 (docs/benchmarks.md).
+// The step of order p is h = rho exp(-(L + kStepMargin) / (p - 1)), L =
+// -ln(eps) (StepSize; JZ section 3.2): the last terms at eps e^-2.1, heyoka's
+// safety factor e^-0.7 (Biscani & Izzo 2021, eq. 10) and a quarter of eps,
+// which keeps the section points of the Stribeck study's periodic orbits as
+// close to an rtol 1e-14 run as JZ's order 15 was (4e-12; 1.3e-11 without it).
+constexpr double kStepMargin = 0.7 + 1.4;
+// A step costs about p^2 + kLinearWork p (the Cauchy sums of the law's series
+// and of Phi, against sincos, exp, the event polynomials and root refinement):
+// the order minimises the work per unit time, (p^2 + b p) exp((L +
+// kStepMargin) / (p - 1)) (JZ's cost model p^2, widened as in
+// integrate/taylor_order.hpp). b = 0 gives about JZ (3.8), p = L / 2 + 1;
+// b = 25 gives 22 at eps = 1e-12, where the measured time per forcing period
+// is least over p = 15 .. 27 (docs/benchmarks.md).
 constexpr double kLinearWork = 25;
 inline int TaylorOrder(double eps) {
   // A flow is made per forcing period (IterateStroboscopic): the last
@@ -39,7 +44,7 @@ inline int TaylorOrder(double eps) {
   thread_local double last_eps = 0;
   thread_local int last_order = 0;
   if (eps == last_eps) return last_order;
-  const double L = -std::log(eps) + 0.7;
+  const double L = -std::log(eps) + kStepMargin;
   int best = 2;
   double best_work = INFINITY;
   for (int p = 2; p <= kMaxOrder; ++p) {
