@@ -48,7 +48,7 @@ class SlipCvode {
 
 Driver::Driver(const ForcedModel& m, const ForcedOptions& o, const ForcedRequest& rq,
                ForcedRun& run)
-    : m_(m), o_(o), rq_(rq), run_(run), series_(m, o.rtol, o.atol) {}
+    : m_(m), o_(o), rq_(rq), run_(run), series_(m, o.rtol, o.atol, !rq.extremes) {}
 Driver::~Driver() = default;
 
 // One slip phase from (t_, x_, xd_) to rq_.t_end or the arrival on x' = v.

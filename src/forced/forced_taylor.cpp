@@ -99,6 +99,7 @@ double SlipSeries::StepSize() const {
   const int p = order_;
   const double r1 = (log_scale - std::log(norm(p - 1))) / (p - 1);
   const double r2 = (log_scale - std::log(norm(p))) / p;
+  if (!by_work_) return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (p - 1));
   return std::exp(std::min(r1, r2) + (log_eps_ - kStepMargin) / (p - 1));
 }
 

@@ -38,7 +38,7 @@ constexpr double kStepMargin = 0.7 + 1.4;
 // b = 25 gives 22 at eps = 1e-12, where the measured time per forcing period
 // is least over p = 15 .. 27 (docs/benchmarks.md).
 constexpr double kLinearWork = 25;
-inline int TaylorOrder(double eps) {
+inline int TaylorOrderByWork(double eps) {
   // A flow is made per forcing period (IterateStroboscopic): the last
   // answer is kept, per thread, instead of 35 logarithms each time.
   thread_local double last_eps = 0;
@@ -55,15 +55,25 @@ inline int TaylorOrder(double eps) {
   return best;
 }
 
+// JZ (3.8): p = ceil(-ln(eps) / 2 + 1), the step rho / e^2 exp(-0.7 / (p - 1)).
+// Kept where the extrema inside steps are wanted: their root isolation
+// (Bernstein form, O(p^2)) made the by-work order slower there (forced_bench's
+// non-stop orbit 4.6 -> 7.9 us at rtol 1e-12).
+inline int TaylorOrderJz(double eps) {
+  return std::min(kMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
+}
+
 class SlipSeries {
  public:
-  SlipSeries(const ForcedModel& m, double rtol, double atol)
+  // by_work: TaylorOrderByWork and its step, else Jorba & Zou's (3.8).
+  SlipSeries(const ForcedModel& m, double rtol, double atol, bool by_work)
       : m_(m),
         mu_(m.friction()),
         rtol_(rtol),
         atol_(atol),
-        order_rel_(TaylorOrder(rtol)),
-        order_abs_(TaylorOrder(atol)),
+        by_work_(by_work),
+        order_rel_(by_work ? TaylorOrderByWork(rtol) : TaylorOrderJz(rtol)),
+        order_abs_(by_work ? TaylorOrderByWork(atol) : TaylorOrderJz(atol)),
         log_rel_(std::log(rtol)),
         log_abs_(std::log(atol)) {
     for (auto& row : c_) std::fill(row, row + kRow, 0.0);
@@ -72,7 +82,7 @@ class SlipSeries {
   // Phi column by column (z[2..5] = Phi00, Phi10, Phi01, Phi11).
   void Expand(Mode mode, double t0, const double* z, bool variational);
   // JZ section 3.2 with heyoka's safety factor (Biscani & Izzo 2021, eq. 10),
-  // for the order TaylorOrder chose.
+  // for the order chosen (TaylorOrderByWork or TaylorOrderJz).
   double StepSize() const;
   int order() const { return order_; }
   int size() const { return n_; }
@@ -88,6 +98,7 @@ class SlipSeries {
   const ForcedModel& m_;
   MuSeries mu_;
   double rtol_, atol_;
+  bool by_work_;
   int order_rel_, order_abs_, order_ = 0, n_ = 2, sigma_ = 1;
   double log_rel_, log_abs_, log_eps_ = 0;  // ln rtol, ln atol, the one of this step
   double t0_ = 0;
