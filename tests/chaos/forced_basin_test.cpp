@@ -83,7 +83,10 @@ TEST(ForcedBasin, WeaklyChaoticStartRunsOnUntilDecided) {
   const ForcedModel m(p);
   ForcedBasinOptions o;
   o.nx = o.ny = 1;
-  o.x_lo = 0.8, o.x_hi = 1.0, o.xdot_lo = -0.4, o.xdot_hi = -0.2;  // the start (0.9, -0.3)
+  // The start (0.8, -0.35), the box's centre: which starts stay undecided
+  // after the first keep periods depends on the trajectory's rounding ((0.9,
+  // -0.3) before the forced stepper's by-work order; now decided at once).
+  o.x_lo = 0.7, o.x_hi = 0.9, o.xdot_lo = -0.45, o.xdot_hi = -0.25;
   o.max_keep = o.iterate.keep;
   const ForcedBasins short_run = ClassifyForcedBasins(m, o);
   ASSERT_EQ(short_run.attractors.size(), 1u);
@@ -94,7 +97,7 @@ TEST(ForcedBasin, WeaklyChaoticStartRunsOnUntilDecided) {
   ASSERT_EQ(b.attractors[0].kind, AttractorKind::kChaotic);
   LyapunovOptions lo;
   lo.keep = 4000;
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.9, -0.3), lo);
+  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.8, -0.35), lo);
   ASSERT_EQ(r.status, LyapunovStatus::kDone);
   EXPECT_GT(r.lyapunov, 3 * r.lyapunov_err);
   EXPECT_NEAR(b.attractors[0].lyapunov, r.lyapunov, 3 * r.lyapunov_err + 0.005);
