@@ -62,9 +62,12 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
     bool first = true;
     for (size_t i = 0; i < r.curves.size(); ++i) {
       if (r.curves[i].kind != st.kind) continue;
-      os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
-         << st.width << " lc rgb '" << st.color << "' dt " << st.dash
-         << (first ? std::string(" title '") + st.title + "'" : " notitle");
+      // NS: only where the multipliers are complex (flag, column 17, is 1
+      // on the neutral-saddle stretch of det DP = 1, which is no bifurcation).
+      const std::string only = st.kind == ForcedCurveKind::kNS ? " && $17 == 0" : "";
+      os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << only
+         << " ? $2 : NaN) with lines lw " << st.width << " lc rgb '" << st.color << "' dt "
+         << st.dash << (first ? std::string(" title '") + st.title + "'" : " notitle");
       first = false;
     }
   }
