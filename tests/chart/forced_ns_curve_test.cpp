@@ -13,6 +13,7 @@
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
+
 namespace {
 
 ForcedParams Scene(double a, double w) {
@@ -30,10 +31,10 @@ ForcedChartOptions ChartOptions() {
   return o;
 }
 
-// The NS of the run in Omega at force p.p2 nearest p.p1, from the curve
-// point's orbit carried to phase 0, over Omega +- 2e-3 both ways. NaN if none.
-double LocateNs(const ForcedCurvePoint& p) {
-  const ForcedModel model(Scene(p.p2, p.p1));
+// The NS row of the run in Omega at force a nearest p.p1, from the curve
+// point's orbit carried to phase 0, over Omega +- 2e-3 both ways. p NaN if none.
+ForcedBranchRow LocateNsRow(const ForcedCurvePoint& p, double a) {
+  const ForcedModel model(Scene(a, p.p1));
   ForcedRequest rq;
   rq.t_end = model.period();  // the phase lies in [0, 2 pi)
   const ForcedPoint z = ForcedFlow(model, ForcedOptions())
@@ -41,35 +42,46 @@ double LocateNs(const ForcedCurvePoint& p) {
                             .end;
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 2e-4;
-  double best = NAN;
+  ForcedBranchRow best;
+  best.p = NAN;
   for (const double side : {1.0, -1.0}) {
-    const ForcedBranch b = ContinueForced(Scene(p.p2, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
+    const ForcedBranch b = ContinueForced(Scene(a, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
                                           p.p1 - side * 2e-3, z.x, z.xdot, o);
     for (const ForcedBranchRow& r : b.special)
-      if (r.label == ForcedLabel::kNS && !(std::abs(best - p.p1) <= std::abs(r.p - p.p1)))
-        best = r.p;
-    if (!std::isnan(best)) return best;
+      if (r.label == ForcedLabel::kNS && !(std::abs(best.p - p.p1) <= std::abs(r.p - p.p1)))
+        best = r;
+    if (!std::isnan(best.p)) return best;
   }
   return best;
 }
 
+double LocateNs(const ForcedCurvePoint& p) { return LocateNsRow(p, p.p2).p; }
+
+// The study's NS curve, traced from the NS of the run in Omega at A = 0.05 on
+// the tongue's right side (once for all tests).
+const ForcedCurve& StudyCurve() {
+  static const ForcedCurve curve = [] {
+    const ForcedParams p = Scene(0.05, 1.3);
+    const ForcedModel m(p);
+    ForcedRequest rq;
+    rq.t_end = 200 * m.period();
+    const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.42), rq);
+    ForcedBranchOptions bo;
+    bo.palc.ds = bo.palc.ds_max = 0.01;
+    const ForcedBranch run =
+        ContinueForced(p, ForcedAxis::kOmega, 1.3, 1.05, tr.end.x, tr.end.xdot, bo);
+    EXPECT_FALSE(run.special.empty()) << run.message;
+    if (run.special.empty() || run.special[0].label != ForcedLabel::kNS) return ForcedCurve();
+    const ForcedBranchRow& s = run.special[0];
+    std::string why;
+    return TraceForcedCurve(Scene(0.05, s.p), ChartOptions(), ForcedCurveKind::kNS, 1, s.x0,
+                            s.xdot0, s.p, 0.05, &why);
+  }();
+  return curve;
+}
+
 TEST(ForcedNsCurve, PointsMatchOneParameterRunsInOmega) {
-  // The seed: the NS of the run in Omega at A = 0.05 on the tongue's right side.
-  const ForcedParams p = Scene(0.05, 1.3);
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.42), rq);
-  ForcedBranchOptions bo;
-  bo.palc.ds = bo.palc.ds_max = 0.01;
-  const ForcedBranch run =
-      ContinueForced(p, ForcedAxis::kOmega, 1.3, 1.05, tr.end.x, tr.end.xdot, bo);
-  ASSERT_FALSE(run.special.empty()) << run.message;
-  const ForcedBranchRow& s = run.special[0];
-  ASSERT_EQ(s.label, ForcedLabel::kNS);
-  std::string why;
-  const ForcedCurve c = TraceForcedCurve(Scene(0.05, s.p), ChartOptions(), ForcedCurveKind::kNS, 1,
-                                         s.x0, s.xdot0, s.p, 0.05, &why);
+  const ForcedCurve& c = StudyCurve();
   EXPECT_GT(c.points.size(), 50u) << c.ends.Text();
   int checked = 0;
   for (const ForcedCurvePoint& q : c.points) {
