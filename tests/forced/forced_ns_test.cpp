@@ -132,5 +132,36 @@ TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
   }
 }
 
+// The NS points of studies/forced_ns_seed.ini (the seed's cubic law at
+// v = 0.42, A = 0.05, in Omega): the 1:1 tongue's two sides, where the locked
+// pure-slip orbit is stable towards Omega = 1.
+TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
+  ForcedParams p;
+  p.base.law = LawKind::kCubic;
+  p.base.beta = 0.05, p.base.v = 0.42, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
+  p.force = 0.05, p.omega = 1.3;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.42), rq);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  const ForcedBranch b = ContinueForced(p, ForcedAxis::kOmega, 1.3, 0.6, tr.end.x, tr.end.xdot, o);
+  int checked = 0;
+  for (const ForcedBranchRow& ns : b.special) {
+    if (ns.label != ForcedLabel::kNS) continue;
+    EXPECT_EQ(ns.sticks, 0);
+    EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);
+    const double in = ns.p > 1 ? -0.002 : 0.002;
+    p.omega = ns.p;
+    const double ref = RefNsOmega(p, ns.p + in, ns.p - in, ns.x0, ns.xdot0);
+    std::printf("[ measured ] seed belt NS at Omega = %.15g, reference %.15g, error %.2e\n", ns.p,
+                ref, ns.p - ref);
+    EXPECT_NEAR(ns.p, ref, 1e-12);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2) << b.message;
+}
+
 }  // namespace
 }  // namespace stickslip
