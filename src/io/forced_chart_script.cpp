@@ -66,9 +66,12 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
         if (r.curves[i].kind != st.kind || (r.curves[i].m > 1) != multiple) continue;
         const std::string title =
             multiple ? std::string(ForcedCurveName(st.kind)) + " of m ≥ 2 orbits" : st.title;
-        os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
-           << (multiple ? 2.0 : st.width) << " lc rgb '" << st.color << "' dt "
-           << (multiple ? "(2,3)" : st.dash)
+        // NS: only where the multipliers are complex (flag, column 17, is 1
+        // on the neutral-saddle stretch of det DP = 1, which is no bifurcation).
+        const std::string only = st.kind == ForcedCurveKind::kNS ? " && $17 == 0" : "";
+        os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << only
+           << " ? $2 : NaN) with lines lw " << (multiple ? 2.0 : st.width) << " lc rgb '"
+           << st.color << "' dt " << (multiple ? "(2,3)" : st.dash)
            << (first ? " title " + GnuplotQuoted(title) : std::string(" notitle"));
         first = false;
       }
