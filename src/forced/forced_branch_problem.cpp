@@ -175,7 +175,7 @@ ForcedBranchRow StrobeProblem::Row() const {
   r.m = o_.m;
   r.sticks = last_.sticks;
   r.crossings = last_.crossings;
-  r.extremes = last_.extremes;
+  r.extrema = last_.extrema;
   Multipliers(last_.jacobian, r.multipliers);
   r.stable = std::abs(r.multipliers[0]) < 1;
   return r;

@@ -83,7 +83,7 @@ void Driver::Run(const ForcedPoint& start) {
     phi_ << 1, 0, 0, 0;  // stick has no x' direction
   }
   on_surface_ = xd_ == m_.v();  // a slip start on x' = v (a stick exit): no event there
-  run_.extremes.Add(x_, xd_);
+  run_.extrema.Add(x_, xd_);
   Sample();
   while (t_ < rq_.t_end && (mode_ == Mode::kStick ? Stick() : Slip())) {
   }
@@ -100,7 +100,7 @@ bool Driver::Fail(ForcedStatus s, const std::string& what) {
 }
 
 bool Driver::Record(ForcedEventKind kind, Mode before, Mode after) {
-  run_.extremes.Add(x_, xd_);
+  run_.extrema.Add(x_, xd_);
   if (rq_.events) rq_.events->push_back({kind, t_, x_, before, after});
   Sample();
   stalled_events_ = t_ == last_event_t_ ? stalled_events_ + 1 : 0;
@@ -191,7 +191,7 @@ bool Driver::SlipStep(double t_end) {
   auto extremum = [&](double u, int) {
     if (u >= u_end) return false;
     series_.Evaluate(u * h, out);
-    run_.extremes.Add(out[0], out[1]);
+    run_.extrema.Add(out[0], out[1]);
     return true;
   };
   if (rq_.extremes && m_.v() != 0) {  // x extrema (at v = 0 they are the arrivals)
@@ -206,7 +206,7 @@ bool Driver::SlipStep(double t_end) {
   if (!hit) {
     t_ = t_ + h == t_end ? t_end : t_ + h;
     x_ = out[0], xd_ = out[1];
-    run_.extremes.Add(x_, xd_);
+    run_.extrema.Add(x_, xd_);
     Sample();
     return true;
   }

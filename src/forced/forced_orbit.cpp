@@ -39,7 +39,7 @@ void Describe(const ForcedRun& run, ForcedOrbit& o) {
   o.stable = std::abs(o.multipliers[0]) < 1;
   o.sticks = run.sticks;
   o.crossings = run.crossings;
-  o.extremes = run.extremes;
+  o.extrema = run.extrema;
   o.steps = run.steps;
 }
 

@@ -83,7 +83,7 @@ class Scan {
   ForcedOrbits Result() {
     std::sort(r_.orbits.begin(), r_.orbits.end(), [](const auto& a, const auto& b) {
       return a.orbit.m != b.orbit.m ? a.orbit.m < b.orbit.m
-                                    : a.orbit.extremes.x_max < b.orbit.extremes.x_max;
+                                    : a.orbit.extrema.x_max < b.orbit.extrema.x_max;
     });
     return r_;
   }

@@ -115,22 +115,15 @@ struct Flow::Walk {
 };
 
 namespace {
-void Extend(FlowResult& r, const Vec2& z) {
-  r.x_min = std::min(r.x_min, z[0]);
-  r.x_max = std::max(r.x_max, z[0]);
-  r.xdot_min = std::min(r.xdot_min, z[1]);
-  r.xdot_max = std::max(r.xdot_max, z[1]);
-}
+void Extend(FlowResult& r, const Vec2& z) { r.extrema.Add(z[0], z[1]); }
 
 // The non-terminal events of g1 = x'' and g2 = x': extrema of x' and x.
 void RecordExtremum(void* context, int g, const double* y) {
   Extrema& e = *static_cast<Extrema*>(context);
   if (g == 1) {
-    e.xdot_min = std::min(e.xdot_min, y[1]);
-    e.xdot_max = std::max(e.xdot_max, y[1]);
+    e.AddXdot(y[1]);
   } else if (g == 2) {
-    e.x_min = std::min(e.x_min, y[0]);
-    e.x_max = std::max(e.x_max, y[0]);
+    e.AddX(y[0]);
   }
 }
 
@@ -152,7 +145,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
                          const SegmentOutput& out, FlowResult& r) {
   Stepper& cv = Solver(variational);
   const int n = cv.size();
-  Extrema extrema{r.x_min, r.x_max, r.xdot_min, r.xdot_max};
+  Extrema extrema = r.extrema;
   SlipProblem problem{system_.get(), mode_, options_.rtol, options_.atol,
                       cancel_ ? &cancel_ : nullptr};
   problem.x_center = mode_ == Mode::kSlipBelow ? system_->SteadySliding().x : 0.0;
@@ -161,10 +154,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   const double init[8] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0};
   const SegmentEnd e = RunSegment(cv, problem, t0, init, stop.t_max, out);
   total_steps_ += cv.steps();
-  r.x_min = std::min(r.x_min, extrema.x_min);
-  r.x_max = std::max(r.x_max, extrema.x_max);
-  r.xdot_min = std::min(r.xdot_min, extrema.xdot_min);
-  r.xdot_max = std::max(r.xdot_max, extrema.xdot_max);
+  r.extrema.Merge(extrema);
   double y[8];
   std::copy(e.y, e.y + n, y);
   auto end = [&](SlipEnd::Kind kind, double t) {
@@ -268,8 +258,7 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
   Walk w{FlowResult{}, m0, t0, z0, Mat2::Identity(), t0, SegmentOutput{}};
   w.out = SegmentOutput{output_dt, &w.next_output, &observer};
   FlowResult& r = w.r;
-  r.x_min = r.x_max = z0[0];
-  r.xdot_min = r.xdot_max = z0[1];
+  r.extrema = Extrema::Point(z0[0], z0[1]);
   r.modes.push_back(m0);
   const bool column = variational && has_parameter_column() && m0 != Mode::kStick;
   if (w.out.on()) {

@@ -74,10 +74,7 @@ OrbitStatus FromFlowStatus(FlowStatus s) {
 }
 
 void CopyExtremes(Orbit& o, const FlowResult& r) {
-  o.x_min = r.x_min;
-  o.x_max = r.x_max;
-  o.xdot_min = r.xdot_min;
-  o.xdot_max = r.xdot_max;
+  o.extrema = r.extrema;
   o.modes = r.modes;
   o.crossings = r.crossings;
 }

@@ -157,9 +157,9 @@ ClosedOrbit StickSlipOrbit(const Block& b) {
   o.t_stick = (x0 - o.x_arrive) / b.v;
   const LD t_top = FirstRoot(
       b, [&](LD t) { return at(t).xd; }, o.t_slip);
-  o.x_max = at(t_top).x;
+  o.extrema.x_max = at(t_top).x;
   auto after_top = [&](LD t) { return at(t_top + t).xd; };
-  o.x_min = std::min(o.x_arrive, at(t_top + FirstRoot(b, after_top, o.t_slip - t_top)).x);
+  o.extrema.x_min = std::min(o.x_arrive, at(t_top + FirstRoot(b, after_top, o.t_slip - t_top)).x);
   // M = S_out S_in Phi(t_slip): Phi of the linear slip field; S_in = diag(1, 0);
   // S_out = I + (0, mu_k - mu_s) (1, 0) / v (the force jump at the exit).
   const State c0 = Linear(b, o.t_slip, 1, 0), c1 = Linear(b, o.t_slip, 0, 1);
@@ -190,8 +190,8 @@ TEST(Seam, StickSlipOrbitOfASecondSystemMatchesClosedForm) {
   const Orbit& o = r.orbit;
   EXPECT_NEAR(o.period, double(c.t_slip + c.t_stick), 1e-10 * o.period);
   EXPECT_NEAR(o.t_stick, double(c.t_stick), 1e-10);
-  EXPECT_NEAR(o.x_max, double(c.x_max), 1e-10);
-  EXPECT_NEAR(o.x_min, double(c.x_min), 1e-10);
+  EXPECT_NEAR(o.extrema.x_max, double(c.x_max), 1e-10);
+  EXPECT_NEAR(o.extrema.x_min, double(c.x_min), 1e-10);
   ASSERT_TRUE(o.has_floquet);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(o.monodromy(i), c.monodromy(i), 1e-10) << "entry " << i;
   // Multipliers {1, 0}: the flow direction, and the stick phase's collapse.

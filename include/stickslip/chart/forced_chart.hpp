@@ -46,7 +46,7 @@ struct ForcedCurvePoint {
   /// orbit would stick at the section (the map is not smooth there).
   double phase = 0;
   int sticks = 0, crossings = 0;
-  double x_min = 0, x_max = 0;
+  Extrema extrema;  ///< the table writes x_min, x_max
   std::complex<double> multipliers[2];
   /// NS: the multipliers are real (mu1 mu2 = 1, a neutral saddle, no NS).
   /// GR: the margin is a crossing's (else a grazing's).

@@ -42,7 +42,7 @@ struct ForcedBranchRow {
   double p = 0;
   double x0 = 0, xdot0 = 0;  ///< the stroboscopic point at theta = 0
   int m = 1, sticks = 0, crossings = 0;
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   std::complex<double> multipliers[2];
   bool stable = false;
   ForcedLabel label = ForcedLabel::kNone;  ///< special points only

@@ -44,16 +44,6 @@ struct ForcedEvent {
   Mode before, after;
 };
 
-/// Running extremes of x and x'.
-struct ForcedExtremes {
-  double x_min = std::numeric_limits<double>::infinity(), x_max = -x_min;
-  double xdot_min = x_min, xdot_max = -x_min;
-  void Add(double x, double xdot) {
-    x_min = std::min(x_min, x), x_max = std::max(x_max, x);
-    xdot_min = std::min(xdot_min, xdot), xdot_max = std::max(xdot_max, xdot);
-  }
-};
-
 enum class ForcedStatus {
   kReached,      ///< t_end reached (or the requested stick exit)
   kTooMuchWork,  ///< max_steps or max_events before t_end
@@ -68,7 +58,7 @@ struct ForcedRun {
   /// d(x, x')(end) / d(x, x')(start), saltation included (a start in stick
   /// has no x' direction: its second column is 0).
   Mat2 jacobian = Mat2::Identity();
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   int sticks = 0, exits = 0, crossings = 0;
   long steps = 0;  ///< Taylor steps in slip, polynomial steps in stick
 };

@@ -46,7 +46,7 @@ struct ForcedSimulation {
   std::string message;
   std::vector<ForcedPoint> rows;  ///< by time; an event row has x' = v and the mode after it
   std::vector<ForcedSectionPoint> section;
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   long steps = 0;
   int sticks = 0, exits = 0, crossings = 0;
   bool ok() const { return status == ForcedSimulationStatus::kComplete; }

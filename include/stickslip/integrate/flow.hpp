@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/integrate/extrema.hpp"
 #include "stickslip/model/model.hpp"
 
 namespace stickslip {
@@ -81,7 +82,7 @@ struct FlowResult {
   Mode mode = Mode::kSlipBelow;
   // Extremes over the run, located as roots (x' = 0 for x, x'' = 0 for x'),
   // together with the segment end points.
-  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  Extrema extrema;
   double t_stick = 0;       // time spent in stick
   int switches = 0;         // mode changes
   int crossings = 0;        // crossings of x' = v without sticking

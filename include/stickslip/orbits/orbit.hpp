@@ -27,7 +27,7 @@ struct Orbit {
   OrbitKind kind = OrbitKind::kStickSlip;
   double period = 0;
   double t_stick = 0;
-  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  Extrema extrema;
   /// Stick-slip: the exit point (x0, v). Pure-slip: the point on x' = 0.
   Vec2 start = Vec2::Zero();
   std::vector<Mode> modes;  // segment sequence from start
