@@ -220,7 +220,8 @@ BranchPoints::BranchPoints(const std::vector<BranchPoint>& pts) {
   std::vector<bool> st, stalled;
   for (const auto& q : pts) {
     pp.push_back(q.p), per.push_back(q.period), xmin.push_back(q.extrema.x_min);
-    xmax.push_back(q.extrema.x_max), vmin.push_back(q.extrema.xdot_min), vmax.push_back(q.extrema.xdot_max);
+    xmax.push_back(q.extrema.x_max), vmin.push_back(q.extrema.xdot_min),
+        vmax.push_back(q.extrema.xdot_max);
     ts.push_back(q.t_stick), mult.push_back(q.multiplier), amp.push_back(q.amplitude);
     kinds.push_back(PointKindName(q.kind)), br.push_back(q.branch);
     st.push_back(q.stable), stalled.push_back(q.newton_stalled);

@@ -188,7 +188,8 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
   for (const auto& s : r.special) {
     std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param.name() << " = "
               << Fixed(s.p, 12) << "  period " << Fixed(s.period, 6) << "  x in ["
-              << Fixed(s.extrema.x_min, 6) << ", " << Fixed(s.extrema.x_max, 6) << "]  " << s.description << "\n";
+              << Fixed(s.extrema.x_min, 6) << ", " << Fixed(s.extrema.x_max, 6) << "]  "
+              << s.description << "\n";
   }
 }
 

@@ -49,7 +49,8 @@ void BranchContext::Fail(const std::string& where, const std::string& what) {
 }
 
 void BranchContext::Add(const BranchPoint& pt) {
-  if (!std::isfinite(pt.p) || !std::isfinite(pt.extrema.x_min) || !std::isfinite(pt.extrema.x_max)) {
+  if (!std::isfinite(pt.p) || !std::isfinite(pt.extrema.x_min) ||
+      !std::isfinite(pt.extrema.x_max)) {
     Fail(Where(pt.p), "non-finite values in a computed point");
     return;
   }

@@ -13,31 +13,9 @@
 
 namespace stickslip {
 
-const char* ForcedEventName(ForcedEventKind k) {
-  switch (k) {
-    case ForcedEventKind::kStickIn:
-      return "stick-in";
-    case ForcedEventKind::kStickOut:
-      return "stick-out";
-    case ForcedEventKind::kCrossing:
-      return "crossing";
-    case ForcedEventKind::kTouch:
-      return "touch";
-  }
-  return "?";
-}
+const char* ForcedEventName(ForcedEventKind k) { return Name(k); }
 
-const char* ForcedStatusName(ForcedStatus s) {
-  switch (s) {
-    case ForcedStatus::kReached:
-      return "reached";
-    case ForcedStatus::kTooMuchWork:
-      return "too-much-work";
-    case ForcedStatus::kFailed:
-      return "failed";
-  }
-  return "?";
-}
+const char* ForcedStatusName(ForcedStatus s) { return Name(s); }
 
 std::string ForcedOptions::ValidationError() const {
   if (!(rtol >= 1e-16 && rtol <= 1e-2)) return "rtol = " + Num(rtol) + " must lie in [1e-16, 1e-2]";

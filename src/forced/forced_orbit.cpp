@@ -7,19 +7,7 @@
 
 namespace stickslip {
 
-const char* ForcedOrbitStatusName(ForcedOrbitStatus s) {
-  switch (s) {
-    case ForcedOrbitStatus::kConverged:
-      return "converged";
-    case ForcedOrbitStatus::kNoConvergence:
-      return "no-convergence";
-    case ForcedOrbitStatus::kSingular:
-      return "singular";
-    case ForcedOrbitStatus::kFlowFailed:
-      return "flow-failed";
-  }
-  return "?";
-}
+const char* ForcedOrbitStatusName(ForcedOrbitStatus s) { return Name(s); }
 
 void Multipliers(const Mat2& M, std::complex<double> out[2]) {
   // lambda^2 - tr lambda + det = 0.

@@ -9,9 +9,7 @@
 
 namespace stickslip {
 
-const char* ForcedScanStatusName(ForcedScanStatus s) {
-  return s == ForcedScanStatus::kOk ? "ok" : "cancelled";
-}
+const char* ForcedScanStatusName(ForcedScanStatus s) { return Name(s); }
 
 std::string ForcedScanOptions::ValidationError() const {
   const std::string e = orbit.flow.ValidationError();

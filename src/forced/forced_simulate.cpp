@@ -10,21 +10,9 @@
 
 namespace stickslip {
 
-const char* ForcedSectionName(ForcedSection s) {
-  return s == ForcedSection::kStrobe ? "strobe" : "exit";
-}
+const char* ForcedSectionName(ForcedSection s) { return Name(s); }
 
-const char* ForcedSimulationStatusName(ForcedSimulationStatus s) {
-  switch (s) {
-    case ForcedSimulationStatus::kComplete:
-      return "complete";
-    case ForcedSimulationStatus::kFailed:
-      return "failed";
-    case ForcedSimulationStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* ForcedSimulationStatusName(ForcedSimulationStatus s) { return Name(s); }
 
 std::string ForcedSimulationOptions::ValidationError() const {
   const std::string e = flow.ValidationError();

@@ -11,8 +11,8 @@
 
 namespace stickslip {
 
-const char* IntegratorName(Integrator i) { return i == Integrator::kTaylor ? "taylor" : "cvode"; }
-const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf"; }
+const char* IntegratorName(Integrator i) { return Name(i); }
+const char* MethodName(Method m) { return Name(m); }
 
 std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, bool variational);
 std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
@@ -25,25 +25,7 @@ std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variationa
              : MakeCvodeStepper(options, variational);
 }
 
-const char* FlowStatusName(FlowStatus s) {
-  switch (s) {
-    case FlowStatus::kTimeLimit:
-      return "time-limit";
-    case FlowStatus::kStick:
-      return "stick";
-    case FlowStatus::kSection:
-      return "section";
-    case FlowStatus::kVelocityMax:
-      return "velocity-max";
-    case FlowStatus::kIntegratorFailed:
-      return "integrator-failed";
-    case FlowStatus::kTooManySwitches:
-      return "too-many-switches";
-    case FlowStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* FlowStatusName(FlowStatus s) { return Name(s); }
 
 std::string FlowOptions::ValidationError() const {
   std::ostringstream os;

@@ -117,7 +117,8 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
     row.emplace_back(p.p);
     row.emplace_back(PointKindName(p.kind));
     row.emplace_back(p.branch);
-    for (double x : {p.period, p.extrema.x_min, p.extrema.x_max, p.extrema.xdot_min, p.extrema.xdot_max, p.t_stick, p.multiplier})
+    for (double x : {p.period, p.extrema.x_min, p.extrema.x_max, p.extrema.xdot_min,
+                     p.extrema.xdot_max, p.t_stick, p.multiplier})
       row.emplace_back(x);
     row.emplace_back(p.stable ? 1 : 0);
     row.emplace_back(p.amplitude);
@@ -152,7 +153,8 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
   for (size_t i = 0; i < r.special.size(); ++i) {
     const SpecialPoint& s = r.special[i];
     std::vector<TsvTable::Cell> row = {
-        SpecialLabel(s.kind), s.p, s.period, s.extrema.x_min, s.extrema.x_max, s.extrema.xdot_min, s.description};
+        SpecialLabel(s.kind), s.p,          s.period, s.extrema.x_min, s.extrema.x_max,
+        s.extrema.xdot_min,   s.description};
     for (const auto& c : extra) row.emplace_back(c.values[i]);
     row.insert(row.end(), {rows[i], labels[i], s.x_start, s.xdot_start});
     t.AddRow(row);

@@ -118,9 +118,10 @@ TEST(Reference, SeedPureSlipAt042) {
   // Trace formula and variational derivative of the return map agree.
   EXPECT_NEAR(double(o.multiplier), double(o.map_derivative), 1e-10);
   EXPECT_NEAR(double(o.x_section), double(o.extrema.x_max), 1e-15);
-  std::cout << "seed v = 0.42 pure slip: period " << Fmt(o.period) << "  x_max " << Fmt(o.extrema.x_max)
-            << "  xdot_min " << Fmt(o.extrema.xdot_min) << "  xdot_max " << Fmt(o.extrema.xdot_max)
-            << "  multiplier " << Fmt(o.multiplier) << "  (" << o.iterations << " Newton steps)\n";
+  std::cout << "seed v = 0.42 pure slip: period " << Fmt(o.period) << "  x_max "
+            << Fmt(o.extrema.x_max) << "  xdot_min " << Fmt(o.extrema.xdot_min) << "  xdot_max "
+            << Fmt(o.extrema.xdot_max) << "  multiplier " << Fmt(o.multiplier) << "  ("
+            << o.iterations << " Newton steps)\n";
   RecordProperty("seed_v042_multiplier", Fmt(o.multiplier));
 }
 
@@ -158,9 +159,9 @@ TEST(Reference, SeedSanityNumbers) {
     ASSERT_TRUE(o.found) << v;
     EXPECT_EQ(o.crossings, 0);
     EXPECT_GT(o.t_stick, 0);
-    std::cout << "seed v = " << v << ": period " << Fmt(o.period) << "  x_max " << Fmt(o.extrema.x_max)
-              << "  xdot_min " << Fmt(o.extrema.xdot_min) << "  t_stick " << Fmt(o.t_stick) << "  x_min "
-              << Fmt(o.extrema.x_min) << "\n";
+    std::cout << "seed v = " << v << ": period " << Fmt(o.period) << "  x_max "
+              << Fmt(o.extrema.x_max) << "  xdot_min " << Fmt(o.extrema.xdot_min) << "  t_stick "
+              << Fmt(o.t_stick) << "  x_min " << Fmt(o.extrema.x_min) << "\n";
     const std::string tag = v == 0.25 ? "seed_v025_" : "seed_v039_";
     RecordProperty(tag + "period", Fmt(o.period));
     RecordProperty(tag + "x_max", Fmt(o.extrema.x_max));

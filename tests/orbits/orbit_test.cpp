@@ -44,7 +44,8 @@ TEST(Orbit, StickSlipMatchesTheReferenceIncludingHardCases) {
     EXPECT_NEAR(r.orbit.t_stick, static_cast<double>(ref.t_stick), scale) << "v = " << v;
     EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.extrema.x_min), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9)
+        << "v = " << v;
     EXPECT_GT(r.orbit.t_stick, 0.0);
   }
 }
@@ -81,7 +82,8 @@ TEST(Orbit, PureSlipMatchesReferenceAndTheTraceFormula) {
     ASSERT_TRUE(ref.found);
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9)
+        << "v = " << v;
     // Trace formula exp(oint(-2 beta + F'(x' - v)) dt), integrated by the reference.
     EXPECT_NEAR(r.orbit.multiplier, static_cast<double>(ref.multiplier), 1e-8) << "v = " << v;
     EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-7);
@@ -237,8 +239,10 @@ TEST(Orbit, PureSlipAtDefaultOptionsMatchesTheReferenceFixedPoint) {
     ASSERT_TRUE(ref.found) << "v = " << v;
     EXPECT_NEAR(r.orbit.start[0], static_cast<double>(ref.x_section), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.extrema.xdot_max), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9)
+        << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.extrema.xdot_max), 1e-9)
+        << "v = " << v;
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "stickslip/integrate/flow.hpp"  // Integrator, Method
 #include "stickslip/model/forced.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -37,6 +38,15 @@ struct ForcedOptions {
 
 enum class ForcedEventKind { kStickIn, kStickOut, kCrossing, kTouch };
 const char* ForcedEventName(ForcedEventKind k);  // "stick-in", "stick-out", "crossing", "touch"
+template <>
+struct EnumNames<ForcedEventKind> {
+  static constexpr NamedValue<ForcedEventKind> kTable[] = {
+      {ForcedEventKind::kStickIn, "stick-in"},
+      {ForcedEventKind::kStickOut, "stick-out"},
+      {ForcedEventKind::kCrossing, "crossing"},
+      {ForcedEventKind::kTouch, "touch"},
+  };
+};
 
 struct ForcedEvent {
   ForcedEventKind kind;
@@ -50,6 +60,14 @@ enum class ForcedStatus {
   kFailed,       ///< non-finite series, step underflow, or switching that does not advance t
 };
 const char* ForcedStatusName(ForcedStatus s);
+template <>
+struct EnumNames<ForcedStatus> {
+  static constexpr NamedValue<ForcedStatus> kTable[] = {
+      {ForcedStatus::kReached, "reached"},
+      {ForcedStatus::kTooMuchWork, "too-much-work"},
+      {ForcedStatus::kFailed, "failed"},
+  };
+};
 
 struct ForcedRun {
   ForcedStatus status = ForcedStatus::kReached;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "stickslip/forced/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -26,6 +27,15 @@ enum class ForcedOrbitStatus {
   kFlowFailed,     ///< the flow failed (message says where)
 };
 const char* ForcedOrbitStatusName(ForcedOrbitStatus s);
+template <>
+struct EnumNames<ForcedOrbitStatus> {
+  static constexpr NamedValue<ForcedOrbitStatus> kTable[] = {
+      {ForcedOrbitStatus::kConverged, "converged"},
+      {ForcedOrbitStatus::kNoConvergence, "no-convergence"},
+      {ForcedOrbitStatus::kSingular, "singular"},
+      {ForcedOrbitStatus::kFlowFailed, "flow-failed"},
+  };
+};
 
 struct ForcedOrbit {
   ForcedOrbitStatus status = ForcedOrbitStatus::kNoConvergence;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stickslip/forced/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -17,6 +18,13 @@ enum class ForcedSection {
   kExit,    ///< every stick exit
 };
 const char* ForcedSectionName(ForcedSection s);  // "strobe", "exit"
+template <>
+struct EnumNames<ForcedSection> {
+  static constexpr NamedValue<ForcedSection> kTable[] = {
+      {ForcedSection::kStrobe, "strobe"},
+      {ForcedSection::kExit, "exit"},
+  };
+};
 
 struct ForcedSimulationOptions {
   ForcedOptions flow;
@@ -40,6 +48,14 @@ enum class ForcedSimulationStatus {
   kCancelled,  ///< cancelled() returned true; the rows so far are kept
 };
 const char* ForcedSimulationStatusName(ForcedSimulationStatus s);
+template <>
+struct EnumNames<ForcedSimulationStatus> {
+  static constexpr NamedValue<ForcedSimulationStatus> kTable[] = {
+      {ForcedSimulationStatus::kComplete, "complete"},
+      {ForcedSimulationStatus::kFailed, "failed"},
+      {ForcedSimulationStatus::kCancelled, "cancelled"},
+  };
+};
 
 struct ForcedSimulation {
   ForcedSimulationStatus status = ForcedSimulationStatus::kComplete;

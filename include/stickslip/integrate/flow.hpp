@@ -14,6 +14,7 @@
 
 #include "stickslip/integrate/extrema.hpp"
 #include "stickslip/model/model.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -27,6 +28,13 @@ enum class Integrator {
   kCvode,   // SUNDIALS CVODE with the linear multistep Method below
 };
 const char* IntegratorName(Integrator i);  // "taylor", "cvode"
+template <>
+struct EnumNames<Integrator> {
+  static constexpr NamedValue<Integrator> kTable[] = {
+      {Integrator::kTaylor, "taylor"},
+      {Integrator::kCvode, "cvode"},
+  };
+};
 
 // CVODE's linear multistep method (only with Integrator::kCvode).
 enum class Method {
@@ -34,6 +42,13 @@ enum class Method {
   kBdf,    // BDF with Newton and a dense linear solver: for stiff problems
 };
 const char* MethodName(Method m);  // "adams", "bdf"
+template <>
+struct EnumNames<Method> {
+  static constexpr NamedValue<Method> kTable[] = {
+      {Method::kAdams, "adams"},
+      {Method::kBdf, "bdf"},
+  };
+};
 
 struct FlowOptions {
   double rtol = 1e-11;  // relative tolerance
@@ -65,6 +80,18 @@ enum class FlowStatus {
   kCancelled,         // the cancel hook returned true
 };
 const char* FlowStatusName(FlowStatus s);
+template <>
+struct EnumNames<FlowStatus> {
+  static constexpr NamedValue<FlowStatus> kTable[] = {
+      {FlowStatus::kTimeLimit, "time-limit"},
+      {FlowStatus::kStick, "stick"},
+      {FlowStatus::kSection, "section"},
+      {FlowStatus::kVelocityMax, "velocity-max"},
+      {FlowStatus::kIntegratorFailed, "integrator-failed"},
+      {FlowStatus::kTooManySwitches, "too-many-switches"},
+      {FlowStatus::kCancelled, "cancelled"},
+  };
+};
 
 // One output point of a simulation.
 struct Sample {

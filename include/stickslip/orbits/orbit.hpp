@@ -15,12 +15,20 @@
 #include <vector>
 
 #include "stickslip/integrate/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
 /// Stick-slip (one stick phase per period) or pure slip (never sticks).
 enum class OrbitKind { kStickSlip, kPureSlip };
 const char* OrbitKindName(OrbitKind k);  // "stick-slip", "pure-slip"
+template <>
+struct EnumNames<OrbitKind> {
+  static constexpr NamedValue<OrbitKind> kTable[] = {
+      {OrbitKind::kStickSlip, "stick-slip"},
+      {OrbitKind::kPureSlip, "pure-slip"},
+  };
+};
 
 /// A periodic orbit: period, extremes, start point, segments and multipliers.
 struct Orbit {
@@ -74,6 +82,19 @@ enum class OrbitStatus {
 };
 /// "ok", "no-return", ... for messages.
 const char* OrbitStatusName(OrbitStatus s);
+template <>
+struct EnumNames<OrbitStatus> {
+  static constexpr NamedValue<OrbitStatus> kTable[] = {
+      {OrbitStatus::kOk, "ok"},
+      {OrbitStatus::kNoReturn, "no-return"},
+      {OrbitStatus::kIntegratorFailed, "integrator-failed"},
+      {OrbitStatus::kSticks, "sticks"},
+      {OrbitStatus::kNotConverged, "not-converged"},
+      {OrbitStatus::kCollapsed, "collapsed"},
+      {OrbitStatus::kMissed, "missed"},
+      {OrbitStatus::kCancelled, "cancelled"},
+  };
+};
 
 /// The outcome of one orbit search: status, message, the orbit, Newton steps.
 struct OrbitResult {
