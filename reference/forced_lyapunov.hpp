@@ -7,8 +7,8 @@
 // (design.md section 5; di Bernardo et al. 2008, section 2.5 for saltation),
 // integrated by Boost.Odeint's Runge-Kutta-Fehlberg 7(8) in long double with
 // step control. Arrivals on x' = v and stick exits (|x + 2 beta v - A cos
-// Omega t| = mu_s) are located by bisection on the step length. Coulomb and
-// Stribeck laws only. The exponent is accumulated the same way (Frobenius norm
+// Omega t| = mu_s) are located by bisection on the step length. Coulomb,
+// Stribeck and the seed's cubic law only. The exponent is accumulated the same way (Frobenius norm
 // of the renormalised tangent matrix, batch means), so the two estimates
 // differ only by the integration of the flow.
 #pragma once
@@ -32,7 +32,9 @@ using FState = std::array<LReal, 6>;  // x, x', Phi00, Phi10, Phi01, Phi11
 
 struct ForcedRef {
   LReal beta, v, mu_s, mu_k, v_s, a, w;
-  bool stribeck;
+  bool stribeck, cubic;
+  LReal k1,
+      k3;  // cubic (seed eq. 3.5): K1 = 3 (mu_s - mu_m) / (2 v_m), K3 = (mu_s - mu_m) / (2 v_m^3)
   explicit ForcedRef(const ForcedParams& p)
       : beta(p.base.beta),
         v(p.base.v),
@@ -41,10 +43,18 @@ struct ForcedRef {
         v_s(p.base.v_s),
         a(p.force),
         w(p.omega),
-        stribeck(p.base.law == LawKind::kStribeck) {}
+        stribeck(p.base.law == LawKind::kStribeck),
+        cubic(p.base.law == LawKind::kCubic),
+        k1(LReal(3) * (p.base.mu_s - p.base.mu_m) / (2 * LReal(p.base.v_m))),
+        k3((p.base.mu_s - p.base.mu_m) / (2 * LReal(p.base.v_m) * p.base.v_m * p.base.v_m)) {}
   // mu(s) and mu'(s), s = |x' - v| (Stribeck: mu_k + (mu_s - mu_k) exp(-s / v_s)).
-  LReal Mu(LReal s) const { return stribeck ? mu_k + (mu_s - mu_k) * std::exp(-s / v_s) : mu_k; }
+  // Cubic: mu_s - K1 s + K3 s^3.
+  LReal Mu(LReal s) const {
+    if (cubic) return mu_s - k1 * s + k3 * s * s * s;
+    return stribeck ? mu_k + (mu_s - mu_k) * std::exp(-s / v_s) : mu_k;
+  }
   LReal DMu(LReal s) const {
+    if (cubic) return -k1 + 3 * k3 * s * s;
     return stribeck ? -(mu_s - mu_k) / v_s * std::exp(-s / v_s) : LReal(0);
   }
   // Slip below (sigma = +1, x' < v) or above (sigma = -1): F = sigma mu(sigma (v - x')).

@@ -34,6 +34,8 @@ for study in seed_forced stribeck_forced; do
   run "$build/ss_basin" --study "studies/${study}_basin.ini" --out "$fig/$study"
   run "$build/ss_chart" --study "studies/$study.ini" --out "$fig/${study}_chart"
 done
+# The seed belt below its Hopf point, forced: the NS curve of the 1:1 tongue.
+run "$build/ss_chart" --study studies/forced_ns_seed.ini --out "$fig/forced_ns_seed_chart"
 run "$build/ss_basin" --study studies/stribeck_basin.ini --out "$fig/stribeck_basin"
 run "$build/ss_basin" --study studies/stribeck_basin_stability.ini --out "$fig/stribeck_basin_stability"
 for chart in seed_chart stribeck_chart quintic_chart leine_chart; do

@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "chart/chart_trace.hpp"
+#include "chart/forced_chart_seeds.hpp"
 #include "chart/forced_curve.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
@@ -20,79 +21,6 @@ namespace stickslip {
 namespace {
 
 using Eigen::VectorXd;
-
-struct Seed {
-  ForcedCurveKind kind;
-  int m = 1;
-  double x0 = 0, xdot0 = 0, p1 = 0, p2 = 0;
-  int fixed = 3;  // the unknown held while the seed is corrected (the line's constant)
-  std::string where;
-};
-
-bool Sliding(ForcedLabel l) {
-  return l == ForcedLabel::kGR || l == ForcedLabel::kSW || l == ForcedLabel::kAD ||
-         l == ForcedLabel::kCR || l == ForcedLabel::kSL;
-}
-
-// The special points of the branches through the stable orbits at either end
-// of one line (along p1 at p2 = c if along1, else along p2 at p1 = c).
-std::vector<Seed> SeedsOnLine(const ForcedParams& base, const ForcedChartOptions& o, bool along1,
-                              double c, int* runs) {
-  const ForcedPlane& pl = o.plane;
-  const ForcedAxis axis = along1 ? pl.p1 : pl.p2;
-  const double lo = along1 ? pl.from1 : pl.from2, hi = along1 ? pl.to1 : pl.to2;
-  ForcedParams line = along1 ? pl.At(base, lo, c) : pl.At(base, c, lo);
-  std::vector<Seed> seeds;
-  for (const double from : {lo, hi}) {
-    if (o.cancelled && o.cancelled()) break;
-    SetAxis(line, axis, from);
-    ForcedScanOptions so;
-    so.orbit.flow = o.flow;
-    so.max_m = o.max_m, so.max_sticks = 2, so.grid = 3, so.exit_samples = 24;
-    so.cancelled = o.cancelled;
-    const ForcedOrbits found = FindForcedOrbits(ForcedModel(line), so);
-    for (const ForcedScanOrbit& f : found.orbits) {
-      if (!f.orbit.stable) continue;
-      ForcedBranchOptions bo;
-      bo.flow = o.flow, bo.m = f.orbit.m, bo.max_amplitude = o.max_amplitude;
-      bo.palc.ds_max = 0.02 * (hi - lo);
-      bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
-      bo.palc.cancelled = o.cancelled;
-      const ForcedBranch b = ContinueForced(line, axis, from, from == lo ? hi : lo, f.points[0].x(),
-                                            f.points[0].y(), bo);
-      ++*runs;
-      for (const ForcedBranchRow& r : b.special) {
-        Seed s;
-        if (r.label == ForcedLabel::kLP)
-          s.kind = ForcedCurveKind::kLP;
-        else if (r.label == ForcedLabel::kPD)
-          s.kind = ForcedCurveKind::kPD;
-        else if (r.label == ForcedLabel::kNS)
-          s.kind = ForcedCurveKind::kNS;
-        else if (Sliding(r.label))
-          s.kind = ForcedCurveKind::kGR;
-        else
-          continue;
-        s.m = r.m, s.x0 = r.x0, s.xdot0 = r.xdot0;
-        s.p1 = along1 ? r.p : c, s.p2 = along1 ? c : r.p;
-        s.fixed = along1 ? 3 : 2;
-        s.where = std::string(ForcedLabelName(r.label)) + " of the " + ForcedAxisName(axis) +
-                  " run at " + ForcedAxisName(along1 ? pl.p2 : pl.p1) + " = " + Num(c, 6);
-        seeds.push_back(s);
-      }
-    }
-  }
-  return seeds;
-}
-
-bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const Seed& s, const ForcedPlane& pl) {
-  const Eigen::Vector2d scale(pl.width1(), pl.width2());
-  for (const ForcedCurve& c : curves)
-    if (c.kind == s.kind && c.m == s.m &&
-        NearPolyline(c.points, Eigen::Vector2d(s.p1, s.p2), scale, Tolerances().forced_same_curve))
-      return true;
-  return false;
-}
 
 // Points of one stretch of a curve, at one section phase.
 struct Stretch {
@@ -184,7 +112,7 @@ std::function<bool(const VectorXd&)> StopTest(ForcedCurveProblem& problem, doubl
   };
 }
 
-ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const Seed& s,
+ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const ForcedSeed& s,
                   std::string* message) {
   const auto t0 = std::chrono::steady_clock::now();
   ForcedCurve curve;
@@ -267,7 +195,7 @@ ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions&
                              double p2, std::string* message) {
   const std::string e = options.ValidationError(base);
   if (!e.empty()) throw InvalidArgument(e);
-  Seed s{kind, m, x0, xdot0, p1, p2, 3, "given"};
+  ForcedSeed s{kind, m, x0, xdot0, p1, p2, 3, "given"};
   return Trace(base, options, s, message);
 }
 
@@ -286,7 +214,7 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
       const double f = (line + 0.5) / o.seed_lines;
       for (const bool along1 : {true, false}) {
         const double c = along1 ? pl.from2 + f * pl.width2() : pl.from1 + f * pl.width1();
-        for (const Seed& s : SeedsOnLine(base, o, along1, c, &r.seed_runs)) {
+        for (const ForcedSeed& s : SeedsOnLine(base, o, along1, c, &r.seed_runs)) {
           if (cancelled() || NearForcedCurve(r.curves, s, pl)) continue;
           std::string why;
           ForcedCurve curve = Trace(base, o, s, &why);

@@ -58,16 +58,24 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
       {ForcedCurveKind::kPD, "black", "(8,4)", 2.5, "PD, period doubling"},
       {ForcedCurveKind::kNS, "#ff00ff", "(10,4,2,4)", 2.5, "NS, Neimark-Sacker"},
   };
-  for (const Style& st : styles) {
-    bool first = true;
-    for (size_t i = 0; i < r.curves.size(); ++i) {
-      if (r.curves[i].kind != st.kind) continue;
-      os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
-         << st.width << " lc rgb '" << st.color << "' dt " << st.dash
-         << (first ? std::string(" title '") + st.title + "'" : " notitle");
-      first = false;
+  // Curves of m >= 2 orbits (seeded from doubled branches too): dotted.
+  for (const Style& st : styles)
+    for (const bool multiple : {false, true}) {
+      bool first = true;
+      for (size_t i = 0; i < r.curves.size(); ++i) {
+        if (r.curves[i].kind != st.kind || (r.curves[i].m > 1) != multiple) continue;
+        const std::string title =
+            multiple ? std::string(ForcedCurveName(st.kind)) + " of m ≥ 2 orbits" : st.title;
+        // NS: only where the multipliers are complex (flag, column 17, is 1
+        // on the neutral-saddle stretch of det DP = 1, which is no bifurcation).
+        const std::string only = st.kind == ForcedCurveKind::kNS ? " && $17 == 0" : "";
+        os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << only
+           << " ? $2 : NaN) with lines lw " << (multiple ? 2.0 : st.width) << " lc rgb '"
+           << st.color << "' dt " << (multiple ? "(2,3)" : st.dash)
+           << (first ? " title " + GnuplotQuoted(title) : std::string(" notitle"));
+        first = false;
+      }
     }
-  }
 }
 
 }  // namespace
@@ -80,7 +88,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   os.precision(17);
   os << "# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.\n"
      << "# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,\n"
-     << "# LP black, PD black dashed, NS magenta; codim2.tsv: black dots with labels.\n"
+     << "# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: black dots with "
+        "labels.\n"
      << "if (!exists('suffix')) suffix = ''\n"
      << FigureTerminal(format, 1000, 860) << "set output '" << FigureFile("forced_chart", format)
      << "'.suffix\n"

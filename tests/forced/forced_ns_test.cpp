@@ -29,8 +29,8 @@ ForcedParams Scene(double v) {
 }
 
 // det of the reference map's Jacobian at its fixed point near (x, y).
-LReal RefDet(double v, LReal x, LReal y, bool* ok) {
-  const reference::ForcedRef m(Scene(v));
+LReal RefDet(const ForcedParams& p, LReal x, LReal y, bool* ok) {
+  const reference::ForcedRef m(p);
   for (int it = 0; it < 20; ++it) {
     const reference::RefPeriod r = reference::RefOnePeriod(m, x, y, false, 1e-17L);
     *ok = r.ok && r.sticks == 0;
@@ -45,6 +45,24 @@ LReal RefDet(double v, LReal x, LReal y, bool* ok) {
   }
   *ok = false;
   return 0;
+}
+
+LReal RefDet(double v, LReal x, LReal y, bool* ok) { return RefDet(Scene(v), x, y, ok); }
+
+// The root of det(Phi) - 1 in Omega between lo (stable) and hi (unstable),
+// by bisection on the reference map, from the state (x, y) at phase 0.
+double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
+  bool ok = false;
+  p.omega = lo;
+  EXPECT_LT(RefDet(p, x, y, &ok), 1) << "Omega = " << lo;
+  p.omega = hi;
+  EXPECT_GT(RefDet(p, x, y, &ok), 1) << "Omega = " << hi;
+  for (int i = 0; i < 60 && std::abs(hi - lo) > 1e-15; ++i) {
+    p.omega = 0.5 * (lo + hi);
+    (RefDet(p, x, y, &ok) < 1 ? lo : hi) = p.omega;
+    EXPECT_TRUE(ok) << "Omega = " << p.omega;
+  }
+  return lo;
 }
 
 TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
@@ -80,6 +98,69 @@ TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
   std::printf("[ measured ] NS at v = %.15g, reference %.15g, error %.2e; |mu| - 1 = %.2e\n", ns.p,
               lo, ns.p - lo, std::abs(ns.multipliers[0]) - 1);
   EXPECT_NEAR(ns.p, lo, 1e-10);
+}
+
+// The same scene at v = 0.41 (just above the Hopf point: steady sliding
+// stable), continued in Omega at A = 0.02 (studies/forced_ns_stribeck.ini): the
+// pure-slip response loses stability on both sides of the 1:1 resonance, where
+// its amplitude makes the mean slope of mu steep enough. Both NS points
+// against det(Phi) = 1 of the reference map bisected in Omega.
+TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
+  ForcedParams p = Scene(0.41);
+  p.force = 0.02, p.omega = 2;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.41), rq);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  const ForcedBranch b = ContinueForced(p, ForcedAxis::kOmega, 2, 0.6, tr.end.x, tr.end.xdot, o);
+  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.special.size(), 2u);
+  for (const ForcedBranchRow& ns : b.special) {
+    EXPECT_EQ(ns.label, ForcedLabel::kNS);
+    EXPECT_EQ(ns.sticks, 0);
+    EXPECT_NEAR(std::abs(ns.multipliers[0]), 1, 1e-9);
+    EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);
+    // Unstable towards Omega = 1, stable away from it.
+    const double out = ns.p > 1 ? 0.002 : -0.002;
+    p.omega = ns.p;
+    const double ref = RefNsOmega(p, ns.p + out, ns.p - out, ns.x0, ns.xdot0);
+    std::printf("[ measured ] NS at Omega = %.15g, reference %.15g, error %.2e\n", ns.p, ref,
+                ns.p - ref);
+    EXPECT_NEAR(ns.p, ref, 1e-12);
+  }
+}
+
+// The NS points of studies/forced_ns_seed.ini (the seed's cubic law at
+// v = 0.42, A = 0.05, in Omega): the 1:1 tongue's two sides, where the locked
+// pure-slip orbit is stable towards Omega = 1.
+TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
+  ForcedParams p;
+  p.base.law = LawKind::kCubic;
+  p.base.beta = 0.05, p.base.v = 0.42, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
+  p.force = 0.05, p.omega = 1.3;
+  const ForcedModel m(p);
+  ForcedRequest rq;
+  rq.t_end = 200 * m.period();
+  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.42), rq);
+  ForcedBranchOptions o;
+  o.palc.ds_max = o.palc.ds = 0.01;
+  const ForcedBranch b = ContinueForced(p, ForcedAxis::kOmega, 1.3, 0.6, tr.end.x, tr.end.xdot, o);
+  int checked = 0;
+  for (const ForcedBranchRow& ns : b.special) {
+    if (ns.label != ForcedLabel::kNS) continue;
+    EXPECT_EQ(ns.sticks, 0);
+    EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);
+    const double in = ns.p > 1 ? -0.002 : 0.002;
+    p.omega = ns.p;
+    const double ref = RefNsOmega(p, ns.p + in, ns.p - in, ns.x0, ns.xdot0);
+    std::printf("[ measured ] seed belt NS at Omega = %.15g, reference %.15g, error %.2e\n", ns.p,
+                ref, ns.p - ref);
+    EXPECT_NEAR(ns.p, ref, 1e-12);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2) << b.message;
 }
 
 }  // namespace

@@ -1,0 +1,32 @@
+# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
+# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
+# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: black dots with labels.
+if (!exists('suffix')) suffix = ''
+set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
+set output 'forced_chart.png'.suffix
+set datafile separator '\t'
+set datafile columnheaders
+set encoding utf8
+set xlabel "forcing frequency Ω"
+set ylabel "force amplitude A"
+set xrange [0.59999999999999998:1.6000000000000001]
+set yrange [0.002:0.10000000000000001]
+set title "cubic law: β = 0.05, v = 0.42, μ_s = 0.4, μ_m = 0.25, v_m = 0.5"
+set lmargin at screen 0.1
+set rmargin at screen 0.97
+set tmargin at screen 0.93
+set bmargin at screen 0.26
+set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
+set tics out nomirror front
+set border 3 front
+array C[4] = [0x08519c, 0x3182bd, 0x8c6d31, 0xd9d9d9]
+set label "R1" at 1.001884736183615,0.0036862363400181428 offset 0.7,0.7 left front font ',12' noenhanced
+set label "R1" at 0.98429735829431375,0.005596190986937589 offset 0.7,0.7 left front font ',12' noenhanced
+plot 'response.tsv' using 1:2:(0.012500000000000001):(0.001225):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
+     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
+     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
+     'curves.tsv' using 1:($4 == 1 && $17 == 0 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) title "NS, Neimark-Sacker", \
+     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
+unset output

@@ -1,0 +1,114 @@
+// Seeds of the forced chart (chart/forced_chart_seeds.hpp).
+#include "chart/forced_chart_seeds.hpp"
+
+#include <algorithm>
+
+#include "chart/chart_trace.hpp"
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+
+namespace stickslip {
+
+namespace {
+
+bool Sliding(ForcedLabel l) {
+  return l == ForcedLabel::kGR || l == ForcedLabel::kSW || l == ForcedLabel::kAD ||
+         l == ForcedLabel::kCR || l == ForcedLabel::kSL;
+}
+
+// One line: its constant, its range and where the seeds' text says they are.
+struct Line {
+  ForcedParams params;
+  ForcedAxis axis;
+  bool along1;
+  double c, lo, hi;
+  std::string at;  // "at force = 0.3"
+};
+
+// The seeds among b's special points; each PD with 2m <= max_m also starts
+// the doubled branch (ContinueDoubled), whose special points are seeds too.
+void Harvest(const ForcedBranch& b, const Line& line, const ForcedChartOptions& o,
+             ForcedBranchOptions bo, const std::string& run, int* runs,
+             std::vector<ForcedSeed>* seeds) {
+  for (const ForcedBranchRow& r : b.special) {
+    ForcedSeed s;
+    if (r.label == ForcedLabel::kLP)
+      s.kind = ForcedCurveKind::kLP;
+    else if (r.label == ForcedLabel::kPD)
+      s.kind = ForcedCurveKind::kPD;
+    else if (r.label == ForcedLabel::kNS)
+      s.kind = ForcedCurveKind::kNS;
+    else if (Sliding(r.label))
+      s.kind = ForcedCurveKind::kGR;
+    else
+      continue;
+    s.m = r.m, s.x0 = r.x0, s.xdot0 = r.xdot0;
+    s.p1 = line.along1 ? r.p : line.c, s.p2 = line.along1 ? line.c : r.p;
+    s.fixed = line.along1 ? 3 : 2;
+    s.where = std::string(ForcedLabelName(r.label)) + " of the " + run + line.at;
+    seeds->push_back(s);
+    const bool inside = r.p > line.lo && r.p < line.hi;
+    if (r.label != ForcedLabel::kPD || 2 * r.m > o.max_m || !inside) continue;
+    if (o.cancelled && o.cancelled()) return;
+    ForcedParams at_pd = line.params;
+    SetAxis(at_pd, line.axis, r.p);
+    bo.m = r.m;
+    const ForcedBranch doubled =
+        ContinueDoubled(at_pd, line.axis, r.x0, r.xdot0, line.lo, line.hi, bo);
+    ++*runs;
+    const std::string name = "m = " + std::to_string(2 * r.m) + " " + ForcedAxisName(line.axis) +
+                             " run (doubled at " + Num(r.p, 6) + ") ";
+    Harvest(doubled, line, o, bo, name, runs, seeds);
+  }
+}
+
+}  // namespace
+
+std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartOptions& o,
+                                    bool along1, double c, int* runs) {
+  const ForcedPlane& pl = o.plane;
+  Line line;
+  line.axis = along1 ? pl.p1 : pl.p2, line.along1 = along1, line.c = c;
+  line.lo = along1 ? pl.from1 : pl.from2, line.hi = along1 ? pl.to1 : pl.to2;
+  line.params = along1 ? pl.At(base, line.lo, c) : pl.At(base, c, line.lo);
+  line.at = std::string("at ") + ForcedAxisName(along1 ? pl.p2 : pl.p1) + " = " + Num(c, 6);
+  std::vector<ForcedSeed> seeds;
+  for (const double from : {line.lo, line.hi}) {
+    if (o.cancelled && o.cancelled()) break;
+    ForcedParams start = line.params;
+    SetAxis(start, line.axis, from);
+    ForcedScanOptions so;
+    so.orbit.flow = o.flow;
+    so.max_m = o.max_m, so.max_sticks = 2, so.grid = 3, so.exit_samples = 24;
+    so.cancelled = o.cancelled;
+    const ForcedOrbits found = FindForcedOrbits(ForcedModel(start), so);
+    for (const ForcedScanOrbit& f : found.orbits) {
+      if (!f.orbit.stable) continue;
+      ForcedBranchOptions bo;
+      bo.flow = o.flow, bo.m = f.orbit.m, bo.max_amplitude = o.max_amplitude;
+      bo.palc.ds_max = 0.02 * (line.hi - line.lo);
+      bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
+      bo.palc.cancelled = o.cancelled;
+      const ForcedBranch b =
+          ContinueForced(start, line.axis, from, from == line.lo ? line.hi : line.lo,
+                         f.points[0].x(), f.points[0].y(), bo);
+      ++*runs;
+      Harvest(b, line, o, bo, std::string(ForcedAxisName(line.axis)) + " run ", runs, &seeds);
+    }
+  }
+  return seeds;
+}
+
+bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const ForcedSeed& s,
+                     const ForcedPlane& pl) {
+  const Eigen::Vector2d scale(pl.width1(), pl.width2());
+  for (const ForcedCurve& c : curves)
+    if (c.kind == s.kind && c.m == s.m &&
+        NearPolyline(c.points, Eigen::Vector2d(s.p1, s.p2), scale, Tolerances().forced_same_curve))
+      return true;
+  return false;
+}
+
+}  // namespace stickslip

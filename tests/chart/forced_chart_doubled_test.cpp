@@ -1,0 +1,83 @@
+// The forced chart follows period-doubled branches (AUTO-07p's ISW = -1 at a
+// PD label) for its seeds: on the Stribeck cascade scene
+// (studies/stribeck_forced.ini) it draws the curve where the m = 2 orbits
+// double again. Each such curve point is checked against a chain of
+// one-parameter runs at that point's force, started from rest and independent
+// of the two-parameter tracer: the m = 1 branch in Omega, switched at its PD
+// onto the doubled branch, whose own PD is located by the branch's bisection.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "stickslip/chart/forced_chart.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/flow.hpp"
+
+namespace stickslip {
+namespace {
+
+ForcedParams Stribeck(double a, double w) {
+  ForcedParams p;
+  p.base.law = LawKind::kStribeck;
+  p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
+  p.force = a, p.omega = w;
+  return p;
+}
+
+// The Omegas of the PD points of the m = 2 branches doubled from the m = 1
+// branch at force a, traced in Omega from 0.8 down to 0.5 from the state
+// settled over 200 periods.
+std::vector<double> DoubledPds(double a) {
+  const ForcedModel model(Stribeck(a, 0.8));
+  ForcedOptions flow;
+  ForcedRequest rq;
+  rq.t_end = 200 * model.period();
+  const ForcedRun tr = ForcedFlow(model, flow).Run(ForcedStart(model, 0, 0, 0.25), rq);
+  ForcedBranchOptions o;
+  o.flow = flow;
+  o.palc.ds = o.palc.ds_max = 0.01;
+  const ForcedBranch b =
+      ContinueForced(Stribeck(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x, tr.end.xdot, o);
+  std::vector<double> pds;
+  for (const ForcedBranchRow& r : b.special) {
+    if (r.label != ForcedLabel::kPD || r.m != 1) continue;
+    const ForcedBranch d =
+        ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.x0, r.xdot0, 0.5, 0.8, o);
+    for (const ForcedBranchRow& q : d.special)
+      if (q.label == ForcedLabel::kPD && q.m == 2) pds.push_back(q.p);
+  }
+  return pds;
+}
+
+TEST(ForcedChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
+  ForcedChartOptions o;
+  o.plane.from1 = 0.5, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
+  o.n1 = o.n2 = 0;   // curves only
+  o.seed_lines = 1;  // force 0.325 and Omega 0.85
+  const ForcedChartResult r = ForcedChart(Stribeck(0.3, 0.6), o);
+  ASSERT_EQ(r.status, ChartStatus::kOk) << r.message;
+  int curves = 0, checked = 0;
+  for (const ForcedCurve& c : r.curves) {
+    if (c.kind != ForcedCurveKind::kPD || c.m != 2) continue;
+    ++curves;
+    for (const double level : {0.3, 0.4}) {  // 2 points a curve
+      const ForcedCurvePoint* p = nullptr;   // nearest inner point (an end may be a sliding point)
+      for (size_t i = 1; i + 1 < c.points.size(); ++i)
+        if (!p || std::abs(c.points[i].p2 - level) < std::abs(p->p2 - level)) p = &c.points[i];
+      if (!p || std::abs(p->p2 - level) > 0.01) continue;
+      double best = NAN;
+      for (const double w : DoubledPds(p->p2))
+        if (!(std::abs(best - p->p1) <= std::abs(w - p->p1))) best = w;
+      std::printf("[ measured ] m = 2 PD curve at force %.10f: Omega %.12f, runs %.12f (%.1e)\n",
+                  p->p2, p->p1, best, std::abs(best - p->p1));
+      EXPECT_NEAR(p->p1, best, 1e-8) << "force " << p->p2 << ", seed " << c.seed;
+      ++checked;
+    }
+  }
+  EXPECT_GE(curves, 1);
+  EXPECT_GE(checked, 2);
+}
+
+}  // namespace
+}  // namespace stickslip
