@@ -95,7 +95,7 @@ Reference ComputeReference() {
         const ref::StickSlipOrbit o = ref::StickSlip(p, tols[k]);
         if (!o.found)
           throw ss::Error("reference stick-slip orbit not found at v = " + std::to_string(v));
-        period[k] = o.period, x_max[k] = o.extrema.x_max;
+        period[k] = o.period, x_max[k] = o.x_max;
       } else {
         // Guess: steady sliding + first-harmonic amplitude (Thomsen & Fidlin 2003).
         const ref::Real k1 = ref::CubicK1(p), k3 = ref::CubicK3(p), vv = v;
@@ -105,11 +105,11 @@ Reference ComputeReference() {
         const ref::PureSlipOrbit o = ref::PureSlip(p, xbar + a, tols[k]);
         if (!o.found)
           throw ss::Error("reference pure-slip orbit not found at v = " + std::to_string(v));
-        period[k] = o.period, x_max[k] = o.extrema.x_max;
+        period[k] = o.period, x_max[k] = o.x_max;
       }
     }
     r.period.push_back(static_cast<double>(period[0]));
-    r.extrema.x_max.push_back(static_cast<double>(x_max[0]));
+    r.x_max.push_back(static_cast<double>(x_max[0]));
     r.stick_slip.push_back(stick);
     r.spread_period =
         std::max(r.spread_period, static_cast<double>(std::abs(period[0] - period[1]) / period[0]));

@@ -135,14 +135,14 @@ void Measure(const std::string& dir, std::map<std::string, Worst>* worst) {
     if (r[1] == "stick-slip") {
       const ref::StickSlipOrbit o = ref::StickSlip(q);
       if (!o.found) continue;
-      ref_period = o.period, ref_min = o.extrema.x_min, ref_max = o.extrema.x_max;
+      ref_period = o.period, ref_min = o.x_min, ref_max = o.x_max;
     } else {
       const ref::PureSlipOrbit o = ref::PureSlip(q, x_max);
       if (!o.found) {
         (*worst)["pure-slip reference failed"].Add(1, where("pure-slip", p));
         continue;
       }
-      ref_period = o.period, ref_min = o.extrema.x_min, ref_max = o.extrema.x_max;
+      ref_period = o.period, ref_min = o.x_min, ref_max = o.x_max;
       const Real a = o.x_section - ref::Model(q).law.Mu(q.v);
       (*worst)["pure-slip amplitude (abs)"].Add(rel(std::stod(r[11]), a, 1), where("", p));
       if (g_rows)

@@ -564,11 +564,11 @@ TEST(Continuation, StickSlipRowsAtTheDefaultsMatchTheReferenceTo1e12) {
       ASSERT_TRUE(ref.found) << "v = " << pt.p;
       const double T = static_cast<double>(ref.period);
       const double scale =
-          static_cast<double>(std::max(std::abs(ref.extrema.x_min), std::abs(ref.extrema.x_max)));
+          static_cast<double>(std::max(std::abs(ref.x_min), std::abs(ref.x_max)));
       EXPECT_NEAR(pt.period, T, 1e-12 * T) << "v = " << pt.p;
-      EXPECT_NEAR(pt.extrema.x_min, static_cast<double>(ref.extrema.x_min), 1e-12 * scale)
+      EXPECT_NEAR(pt.extrema.x_min, static_cast<double>(ref.x_min), 1e-12 * scale)
           << "v = " << pt.p;
-      EXPECT_NEAR(pt.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-12 * scale)
+      EXPECT_NEAR(pt.extrema.x_max, static_cast<double>(ref.x_max), 1e-12 * scale)
           << "v = " << pt.p;
     }
     EXPECT_GT(rows, 40);

@@ -43,9 +43,9 @@ TEST(Reference, CoulombBeta0MatchesClosedForm) {
     // Slip is a circle about mu_k of radius R = sqrt(v^2 + (mu_s - mu_k)^2); it enters stick
     // at 2 mu_k - mu_s.
     const Real r = std::sqrt(Real(v) * v + 0.15L * 0.15L);
-    EXPECT_NEAR(double(o.extrema.x_max), double(0.25L + r), 1e-13) << v;
-    EXPECT_NEAR(double(o.extrema.x_min), double(0.25L - r), 1e-13) << v;
-    EXPECT_NEAR(double(o.extrema.xdot_min), double(-r), 1e-13) << v;
+    EXPECT_NEAR(double(o.x_max), double(0.25L + r), 1e-13) << v;
+    EXPECT_NEAR(double(o.x_min), double(0.25L - r), 1e-13) << v;
+    EXPECT_NEAR(double(o.xdot_min), double(-r), 1e-13) << v;
     EXPECT_NEAR(double(o.x_arrival), double(2 * 0.25L - 0.4L), 1e-13) << v;
   }
 }
@@ -61,13 +61,13 @@ TEST(Reference, LeineEtAl1998) {
   ASSERT_TRUE(o.found);
   EXPECT_EQ(o.crossings, 0);
   // The exact model's x_max to round-off; the published one only to 1e-8 (see kLeineXMaxExact).
-  EXPECT_NEAR(double(o.extrema.x_max), double(kLeineXMaxExact), 1e-14);
-  EXPECT_NEAR(double(o.extrema.x_max), double(kLeineXMax), 1e-8);
+  EXPECT_NEAR(double(o.x_max), double(kLeineXMaxExact), 1e-14);
+  EXPECT_NEAR(double(o.x_max), double(kLeineXMax), 1e-8);
   EXPECT_NEAR(double(o.period), double(kLeinePeriod), 1e-3);
-  std::cout << "leine (1998): period " << Fmt(o.period) << "  x_max " << Fmt(o.extrema.x_max)
-            << "  xdot_min " << Fmt(o.extrema.xdot_min) << "\n";
+  std::cout << "leine (1998): period " << Fmt(o.period) << "  x_max " << Fmt(o.x_max)
+            << "  xdot_min " << Fmt(o.xdot_min) << "\n";
   RecordProperty("leine_period", Fmt(o.period));
-  RecordProperty("leine_x_max", Fmt(o.extrema.x_max));
+  RecordProperty("leine_x_max", Fmt(o.x_max));
 }
 
 TEST(Reference, ToleranceConvergence) {
@@ -75,8 +75,8 @@ TEST(Reference, ToleranceConvergence) {
   const StickSlipOrbit b = StickSlip(Seed(0.25));
   ASSERT_TRUE(a.found && b.found);
   EXPECT_NEAR(double(a.period), double(b.period), 1e-10);
-  EXPECT_NEAR(double(a.extrema.x_max), double(b.extrema.x_max), 1e-11);
-  EXPECT_NEAR(double(a.extrema.xdot_min), double(b.extrema.xdot_min), 1e-11);
+  EXPECT_NEAR(double(a.x_max), double(b.x_max), 1e-11);
+  EXPECT_NEAR(double(a.xdot_min), double(b.xdot_min), 1e-11);
 }
 
 TEST(Reference, CrossesIntoSlipAboveAndBack) {
@@ -92,7 +92,7 @@ TEST(Reference, CrossesIntoSlipAboveAndBack) {
   const StickSlipOrbit b = StickSlip(p);
   ASSERT_TRUE(a.found && b.found);
   EXPECT_EQ(b.crossings, 1);
-  EXPECT_GT(b.extrema.xdot_max, 1.0);
+  EXPECT_GT(b.xdot_max, 1.0);
   EXPECT_GE(b.x_arrival, -1.0);
   EXPECT_LE(b.x_arrival, 1.0);
   EXPECT_NEAR(double(a.period), double(b.period), 1e-10);
@@ -112,16 +112,15 @@ TEST(Reference, SeedPureSlipAt042) {
   const PureSlipOrbit o = PureSlip(p, x_bar + a);
   ASSERT_TRUE(o.found);
   EXPECT_FALSE(o.sticks);
-  EXPECT_LT(o.extrema.xdot_max, v);
+  EXPECT_LT(o.xdot_max, v);
   EXPECT_GT(o.multiplier, 0);
   EXPECT_LT(o.multiplier, 1);
   // Trace formula and variational derivative of the return map agree.
   EXPECT_NEAR(double(o.multiplier), double(o.map_derivative), 1e-10);
-  EXPECT_NEAR(double(o.x_section), double(o.extrema.x_max), 1e-15);
-  std::cout << "seed v = 0.42 pure slip: period " << Fmt(o.period) << "  x_max "
-            << Fmt(o.extrema.x_max) << "  xdot_min " << Fmt(o.extrema.xdot_min) << "  xdot_max "
-            << Fmt(o.extrema.xdot_max) << "  multiplier " << Fmt(o.multiplier) << "  ("
-            << o.iterations << " Newton steps)\n";
+  EXPECT_NEAR(double(o.x_section), double(o.x_max), 1e-15);
+  std::cout << "seed v = 0.42 pure slip: period " << Fmt(o.period) << "  x_max " << Fmt(o.x_max)
+            << "  xdot_min " << Fmt(o.xdot_min) << "  xdot_max " << Fmt(o.xdot_max)
+            << "  multiplier " << Fmt(o.multiplier) << "  (" << o.iterations << " Newton steps)\n";
   RecordProperty("seed_v042_multiplier", Fmt(o.multiplier));
 }
 
@@ -144,7 +143,7 @@ TEST(Reference, SeedGrazingSpeed) {
   EXPECT_NEAR(double(closer.t_stick / below.t_stick), 1e-2, 2e-3);
   // Just above, a pure-slip orbit passes under the belt.
   const Params above = Seed(double(vg + 1e-4L));
-  const PureSlipOrbit ps = PureSlip(above, below.extrema.x_max);
+  const PureSlipOrbit ps = PureSlip(above, below.x_max);
   EXPECT_TRUE(ps.found);
   EXPECT_FALSE(ps.sticks);
   std::cout << "seed grazing speed v_g = " << Fmt(vg) << "  (v_g - 1e-6: t_stick "
@@ -159,13 +158,13 @@ TEST(Reference, SeedSanityNumbers) {
     ASSERT_TRUE(o.found) << v;
     EXPECT_EQ(o.crossings, 0);
     EXPECT_GT(o.t_stick, 0);
-    std::cout << "seed v = " << v << ": period " << Fmt(o.period) << "  x_max "
-              << Fmt(o.extrema.x_max) << "  xdot_min " << Fmt(o.extrema.xdot_min) << "  t_stick "
-              << Fmt(o.t_stick) << "  x_min " << Fmt(o.extrema.x_min) << "\n";
+    std::cout << "seed v = " << v << ": period " << Fmt(o.period) << "  x_max " << Fmt(o.x_max)
+              << "  xdot_min " << Fmt(o.xdot_min) << "  t_stick " << Fmt(o.t_stick) << "  x_min "
+              << Fmt(o.x_min) << "\n";
     const std::string tag = v == 0.25 ? "seed_v025_" : "seed_v039_";
     RecordProperty(tag + "period", Fmt(o.period));
-    RecordProperty(tag + "x_max", Fmt(o.extrema.x_max));
-    RecordProperty(tag + "xdot_min", Fmt(o.extrema.xdot_min));
+    RecordProperty(tag + "x_max", Fmt(o.x_max));
+    RecordProperty(tag + "xdot_min", Fmt(o.xdot_min));
   }
 }
 

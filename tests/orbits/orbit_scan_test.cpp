@@ -48,7 +48,7 @@ int ReferenceFixedPoints(const Params& p, double a_max) {
   for (int i = 1; i <= 120; ++i) {
     const reference::Real x = xbar + a_max * i / 120;
     const reference::SectionReturn r = reference::ReturnToSection(m, x, 1e-14L, 200);
-    if (!r.ok || r.e.extrema.xdot_max >= m.v) break;  // reaches the belt speed: sticks
+    if (!r.ok || r.e.xdot_max >= m.v) break;  // reaches the belt speed: sticks
     const reference::Real g = r.x - x;
     if (have && (g > 0) != (prev > 0)) ++count;
     prev = g, have = true;
@@ -101,7 +101,7 @@ TEST(OrbitScan, StickSlipOrbitMatchesTheReference) {
     ASSERT_TRUE(ref.found);
     ASSERT_TRUE(r.has_stick_slip);
     EXPECT_NEAR(r.stick_slip.period, static_cast<double>(ref.period), 1e-8);
-    EXPECT_NEAR(r.stick_slip.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-9);
+    EXPECT_NEAR(r.stick_slip.extrema.x_max, static_cast<double>(ref.x_max), 1e-9);
     EXPECT_TRUE(r.stick_slip.stable);
   }
   // Cubic v = 0.42, past grazing: no stick-slip orbit.
@@ -120,7 +120,7 @@ std::vector<reference::PureSlipOrbit> ReferenceOrbitsBelowStick(const Params& p)
   const reference::Real xbar = m.law.Mu(m.v);
   auto sticks = [&](reference::Real a) {
     const reference::SectionReturn r = reference::ReturnToSection(m, xbar + a, 1e-14L, 200);
-    return !r.ok || r.e.extrema.xdot_max >= m.v;
+    return !r.ok || r.e.xdot_max >= m.v;
   };
   reference::Real lo = 0, hi = 2 * (p.mu_s + p.v);  // the scan's a_max
   while (hi - lo > 1e-12L * hi) (sticks((lo + hi) / 2) ? hi : lo) = (lo + hi) / 2;

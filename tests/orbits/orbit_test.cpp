@@ -42,9 +42,9 @@ TEST(Orbit, StickSlipMatchesTheReferenceIncludingHardCases) {
     const double scale = v < 0.01 ? 1e-9 / v : 1e-9;  // T ~ 1/v: x_a errors amplify
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), scale) << "v = " << v;
     EXPECT_NEAR(r.orbit.t_stick, static_cast<double>(ref.t_stick), scale) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.extrema.x_min), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9)
+    EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.x_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
         << "v = " << v;
     EXPECT_GT(r.orbit.t_stick, 0.0);
   }
@@ -81,8 +81,8 @@ TEST(Orbit, PureSlipMatchesReferenceAndTheTraceFormula) {
         reference::PureSlip(p, static_cast<long double>(r.orbit.start[0]));
     ASSERT_TRUE(ref.found);
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9)
+    EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
         << "v = " << v;
     // Trace formula exp(oint(-2 beta + F'(x' - v)) dt), integrated by the reference.
     EXPECT_NEAR(r.orbit.multiplier, static_cast<double>(ref.multiplier), 1e-8) << "v = " << v;
@@ -142,7 +142,7 @@ TEST(Orbit, LeinePublishedValues) {
   EXPECT_NEAR(r.orbit.period, static_cast<double>(reference::kLeinePeriod), 1e-3);
   const reference::StickSlipOrbit ref = reference::StickSlip(p);
   ASSERT_TRUE(ref.found);
-  EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.extrema.x_max), 1e-10);
+  EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-10);
   EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9);
 }
 
@@ -216,8 +216,8 @@ TEST(Orbit, StickSlipThroughSlipAboveTheBelt) {
   EXPECT_EQ(r.orbit.modes[1], Mode::kSlipAbove);
   EXPECT_EQ(r.orbit.modes.back(), Mode::kStick);
   EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9);
-  EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.extrema.xdot_max), 1e-9);
-  EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.extrema.x_min), 1e-9);
+  EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.xdot_max), 1e-9);
+  EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.x_min), 1e-9);
   // Still superstable: S_in kills the velocity perturbation whatever came before.
   EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-8);
   EXPECT_NEAR(std::abs(r.orbit.eigenvalues[1]), 0.0, 1e-8);
@@ -239,9 +239,9 @@ TEST(Orbit, PureSlipAtDefaultOptionsMatchesTheReferenceFixedPoint) {
     ASSERT_TRUE(ref.found) << "v = " << v;
     EXPECT_NEAR(r.orbit.start[0], static_cast<double>(ref.x_section), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.extrema.xdot_min), 1e-9)
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
         << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.extrema.xdot_max), 1e-9)
+    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.xdot_max), 1e-9)
         << "v = " << v;
   }
 }
