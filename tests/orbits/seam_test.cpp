@@ -157,9 +157,9 @@ ClosedOrbit StickSlipOrbit(const Block& b) {
   o.t_stick = (x0 - o.x_arrive) / b.v;
   const LD t_top = FirstRoot(
       b, [&](LD t) { return at(t).xd; }, o.t_slip);
-  o.extrema.x_max = at(t_top).x;
+  o.x_max = at(t_top).x;
   auto after_top = [&](LD t) { return at(t_top + t).xd; };
-  o.extrema.x_min = std::min(o.x_arrive, at(t_top + FirstRoot(b, after_top, o.t_slip - t_top)).x);
+  o.x_min = std::min(o.x_arrive, at(t_top + FirstRoot(b, after_top, o.t_slip - t_top)).x);
   // M = S_out S_in Phi(t_slip): Phi of the linear slip field; S_in = diag(1, 0);
   // S_out = I + (0, mu_k - mu_s) (1, 0) / v (the force jump at the exit).
   const State c0 = Linear(b, o.t_slip, 1, 0), c1 = Linear(b, o.t_slip, 0, 1);
