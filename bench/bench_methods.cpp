@@ -161,7 +161,7 @@ Row RunOurs(const Reference& ref, ss::Integrator integrator, ss::Method method, 
         if (std::isnan(a) || a <= 0) continue;
         o = finder.PureSlip(a);
       }
-      if (o.ok()) period[i] = o.orbit.period, x_max[i] = o.orbit.x_max;
+      if (o.ok()) period[i] = o.orbit.period, x_max[i] = o.orbit.extrema.x_max;
     }
     steps = finder.flow().total_steps();
   };

@@ -23,9 +23,9 @@ BruteCycle BruteForce(const stickslip::Params& p, const BruteOptions& o) {
     if (!r.ok() || r.status != FlowStatus::kSection) break;
     ++c.cycles;
     c.period = r.t - t_last;
-    c.x_max = r.x_max;
-    c.x_min = r.x_min;
-    c.xdot_max = r.xdot_max;
+    c.x_max = r.extrema.x_max;
+    c.x_min = r.extrema.x_min;
+    c.xdot_max = r.extrema.xdot_max;
     c.t_stick = r.t_stick;
     c.ok = true;
     t_last = r.t;

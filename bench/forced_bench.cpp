@@ -105,7 +105,7 @@ void NonStopOrbit(double rtol) {
       "non-stop orbit (Den Hartog, Omega 1.3), rtol %.0e: %ld steps; one period %.2f us, "
       "Newton solve from 1e-3 off %.2f us; x_max error %.1e\n",
       rtol, exact.steps, t_map, t_solve,
-      std::abs(exact.extremes.x_max - std::sqrt(V * V - 0.09 * U * U)));
+      std::abs(exact.extrema.x_max - std::sqrt(V * V - 0.09 * U * U)));
 }
 
 void DenHartogRun() {
@@ -146,7 +146,7 @@ void ResonanceSweep() {
           const ForcedOrbit orbit = ShootStroboscopic(ForcedModel(DenHartog(w)), x, xd, 1, o);
           x = orbit.start.x, xd = orbit.start.xdot;
           const double V = 1 / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
-          worst = std::max(worst, std::abs(orbit.extremes.x_max - std::sqrt(V * V - 0.09 * U * U)));
+          worst = std::max(worst, std::abs(orbit.extrema.x_max - std::sqrt(V * V - 0.09 * U * U)));
         }
       },
       11);

@@ -70,8 +70,8 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
   out.mode = names.attr("__getitem__")(ReadOnly(mode));  // codes to names
   out.mode.attr("setflags")(py::arg("write") = false);
   out.status = r.status, out.t_stick = r.t_stick, out.switches = r.switches;
-  out.crossings = r.crossings, out.x_min = r.x_min, out.x_max = r.x_max;
-  out.xdot_min = r.xdot_min, out.xdot_max = r.xdot_max;
+  out.crossings = r.crossings, out.x_min = r.extrema.x_min, out.x_max = r.extrema.x_max;
+  out.xdot_min = r.extrema.xdot_min, out.xdot_max = r.extrema.xdot_max;
   return out;
 }
 

@@ -62,8 +62,8 @@ PyForcedOrbit MakeOrbit(const ForcedOrbit& o, const std::vector<Vec2>& pts, bool
   PyForcedOrbit r;
   r.m = o.m, r.sticks = o.sticks, r.crossings = o.crossings, r.iterations = o.iterations;
   r.x0 = o.start.x, r.xdot0 = o.start.xdot, r.period = o.period;
-  r.x_min = o.extremes.x_min, r.x_max = o.extremes.x_max;
-  r.xdot_min = o.extremes.xdot_min, r.xdot_max = o.extremes.xdot_max;
+  r.x_min = o.extrema.x_min, r.x_max = o.extrema.x_max;
+  r.xdot_min = o.extrema.xdot_min, r.xdot_max = o.extrema.xdot_max;
   r.stable = o.stable, r.from_exit_map = exit_map;
   r.multipliers = ReadOnly(std::vector<std::complex<double>>{o.multipliers[0], o.multipliers[1]});
   py::array_t<double> mono({2, 2}), p({static_cast<py::ssize_t>(pts.size()), py::ssize_t(2)});
@@ -118,8 +118,8 @@ PyForcedTrajectory Simulate(const ForcedParams& p, double x0, std::optional<doub
   out.section_phase = ReadOnly(sph);
   out.section = section, out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings;
   out.steps = r.steps;
-  out.x_min = r.extremes.x_min, out.x_max = r.extremes.x_max;
-  out.xdot_min = r.extremes.xdot_min, out.xdot_max = r.extremes.xdot_max;
+  out.x_min = r.extrema.x_min, out.x_max = r.extrema.x_max;
+  out.xdot_min = r.extrema.xdot_min, out.xdot_max = r.extrema.xdot_max;
   return out;
 }
 

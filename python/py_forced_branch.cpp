@@ -61,8 +61,8 @@ PyForcedSpecial Special(const ForcedBranchRow& s, const ForcedParams& base, Forc
   SetAxis(q.params, axis, s.p);
   q.p = s.p, q.x0 = s.x0, q.xdot0 = s.xdot0, q.run_from = from, q.run_to = to;
   q.m = s.m, q.sticks = s.sticks, q.crossings = s.crossings, q.stable = s.stable;
-  q.x_min = s.extremes.x_min, q.x_max = s.extremes.x_max;
-  q.xdot_min = s.extremes.xdot_min, q.xdot_max = s.extremes.xdot_max;
+  q.x_min = s.extrema.x_min, q.x_max = s.extrema.x_max;
+  q.xdot_min = s.extrema.xdot_min, q.xdot_max = s.extrema.xdot_max;
   q.multipliers = ReadOnly(std::vector<std::complex<double>>{s.multipliers[0], s.multipliers[1]});
   return q;
 }
@@ -80,8 +80,8 @@ PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, Force
     const ForcedBranchRow& w = r.rows[i];
     pp.push_back(w.p), x0.push_back(w.x0), xd0.push_back(w.xdot0), mm.push_back(w.m);
     st.push_back(w.sticks), cr.push_back(w.crossings), stable.push_back(w.stable);
-    xmin.push_back(w.extremes.x_min), xmax.push_back(w.extremes.x_max);
-    vmin.push_back(w.extremes.xdot_min), vmax.push_back(w.extremes.xdot_max);
+    xmin.push_back(w.extrema.x_min), xmax.push_back(w.extrema.x_max);
+    vmin.push_back(w.extrema.xdot_min), vmax.push_back(w.extrema.xdot_max);
     mult.mutable_at(i, 0) = w.multipliers[0], mult.mutable_at(i, 1) = w.multipliers[1];
   }
   mult.attr("setflags")(py::arg("write") = false);
@@ -90,7 +90,7 @@ PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, Force
   out.x_min = ReadOnly(xmin), out.x_max = ReadOnly(xmax);
   out.xdot_min = ReadOnly(vmin), out.xdot_max = ReadOnly(vmax), out.multipliers = mult;
   for (const ForcedBranchRow& s : r.special) {
-    out.special.push_back(py::make_tuple(ForcedLabelName(s.label), s.p, s.extremes.x_max));
+    out.special.push_back(py::make_tuple(ForcedLabelName(s.label), s.p, s.extrema.x_max));
     out.special_points.push_back(Special(s, base, axis, from, to));
   }
   return out;

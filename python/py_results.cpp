@@ -40,10 +40,10 @@ void BindOrbits(py::module_& m) {
       .def_readonly("kind", &Orbit::kind)
       .def_readonly("period", &Orbit::period)
       .def_readonly("t_stick", &Orbit::t_stick, "time in stick per period")
-      .def_readonly("x_min", &Orbit::x_min)
-      .def_readonly("x_max", &Orbit::x_max)
-      .def_readonly("xdot_min", &Orbit::xdot_min)
-      .def_readonly("xdot_max", &Orbit::xdot_max)
+      .def_property_readonly("x_min", [](const Orbit& o) { return o.extrema.x_min; })
+      .def_property_readonly("x_max", [](const Orbit& o) { return o.extrema.x_max; })
+      .def_property_readonly("xdot_min", [](const Orbit& o) { return o.extrema.xdot_min; })
+      .def_property_readonly("xdot_max", [](const Orbit& o) { return o.extrema.xdot_max; })
       .def_property_readonly(
           "start",
           [](const Orbit& o) {
@@ -113,9 +113,9 @@ void BindBranch(py::module_& m) {
           "label", [](const SpecialPoint& s) { return std::string(SpecialLabel(s.kind)); })
       .def_readonly("p", &SpecialPoint::p)
       .def_readonly("period", &SpecialPoint::period)
-      .def_readonly("x_min", &SpecialPoint::x_min)
-      .def_readonly("x_max", &SpecialPoint::x_max)
-      .def_readonly("xdot_min", &SpecialPoint::xdot_min)
+      .def_property_readonly("x_min", [](const SpecialPoint& o) { return o.extrema.x_min; })
+      .def_property_readonly("x_max", [](const SpecialPoint& o) { return o.extrema.x_max; })
+      .def_property_readonly("xdot_min", [](const SpecialPoint& o) { return o.extrema.xdot_min; })
       .def_readonly("multiplier_before", &SpecialPoint::multiplier_before)
       .def_readonly("multiplier_after", &SpecialPoint::multiplier_after)
       .def_readonly("description", &SpecialPoint::description);
@@ -219,8 +219,9 @@ BranchPoints::BranchPoints(const std::vector<BranchPoint>& pts) {
   std::vector<int> br;
   std::vector<bool> st, stalled;
   for (const auto& q : pts) {
-    pp.push_back(q.p), per.push_back(q.period), xmin.push_back(q.x_min);
-    xmax.push_back(q.x_max), vmin.push_back(q.xdot_min), vmax.push_back(q.xdot_max);
+    pp.push_back(q.p), per.push_back(q.period), xmin.push_back(q.extrema.x_min);
+    xmax.push_back(q.extrema.x_max), vmin.push_back(q.extrema.xdot_min),
+        vmax.push_back(q.extrema.xdot_max);
     ts.push_back(q.t_stick), mult.push_back(q.multiplier), amp.push_back(q.amplitude);
     kinds.push_back(PointKindName(q.kind)), br.push_back(q.branch);
     st.push_back(q.stable), stalled.push_back(q.newton_stalled);

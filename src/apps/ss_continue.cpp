@@ -98,8 +98,8 @@ std::vector<ss::ExtraColumn> PhysicalColumns(const cli::Scales& s, const std::st
   for (const Point& pt : points) {
     auto col = c.end() - 3;
     if (axis) col[-1].values.push_back(pt.p / axis->factor);
-    col[0].values.push_back(pt.x_min * s.L);
-    col[1].values.push_back(pt.x_max * s.L);
+    col[0].values.push_back(pt.extrema.x_min * s.L);
+    col[1].values.push_back(pt.extrema.x_max * s.L);
     col[2].values.push_back(pt.period * s.t0);
   }
   return c;
@@ -188,7 +188,8 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
   for (const auto& s : r.special) {
     std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param.name() << " = "
               << Fixed(s.p, 12) << "  period " << Fixed(s.period, 6) << "  x in ["
-              << Fixed(s.x_min, 6) << ", " << Fixed(s.x_max, 6) << "]  " << s.description << "\n";
+              << Fixed(s.extrema.x_min, 6) << ", " << Fixed(s.extrema.x_max, 6) << "]  "
+              << s.description << "\n";
   }
 }
 

@@ -153,8 +153,8 @@ void AutoRange(const Model& m, BasinResult& r) {
   const PeriodicOrbits& po = r.orbits;
   double x_lo = po.steady.x, x_hi = po.steady.x, y_lo = 0, y_hi = m.v();
   auto take = [&](const Orbit& o) {
-    x_lo = std::min(x_lo, o.x_min), x_hi = std::max(x_hi, o.x_max);
-    y_lo = std::min(y_lo, o.xdot_min), y_hi = std::max(y_hi, o.xdot_max);
+    x_lo = std::min(x_lo, o.extrema.x_min), x_hi = std::max(x_hi, o.extrema.x_max);
+    y_lo = std::min(y_lo, o.extrema.xdot_min), y_hi = std::max(y_hi, o.extrema.xdot_max);
   };
   if (po.has_stick_slip) take(po.stick_slip);
   for (const Orbit& o : po.pure_slip) take(o);
@@ -250,7 +250,7 @@ Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const Fl
   if (!r.ok()) throw Error("SmallestDisturbance: " + r.message);
   Disturbance d;
   // The x extremes are where the orbit crosses x' = 0.
-  d.x = std::min(orbit.x_max - xbar, xbar - orbit.x_min);
+  d.x = std::min(orbit.extrema.x_max - xbar, xbar - orbit.extrema.x_min);
   d.xdot = std::numeric_limits<double>::infinity();
   d.energy = std::numeric_limits<double>::infinity();
   auto energy = [&](const Sample& s) {

@@ -26,7 +26,7 @@ std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const std::strin
       o.kind = OrbitKind::kPureSlip;
       o.start = Vec2(m.SteadySliding().x + pt.amplitude, 0.0);
       o.period = pt.period;
-      o.x_min = pt.x_min, o.x_max = pt.x_max;
+      o.extrema.x_min = pt.extrema.x_min, o.extrema.x_max = pt.extrema.x_max;
       try {
         d = SmallestDisturbance(m, o, flow, 2000);
       } catch (const Error&) {

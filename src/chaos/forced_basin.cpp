@@ -16,23 +16,7 @@
 
 namespace stickslip {
 
-const char* AttractorKindName(AttractorKind k) {
-  switch (k) {
-    case AttractorKind::kPeriodic:
-      return "periodic";
-    case AttractorKind::kRest:
-      return "rest";
-    case AttractorKind::kChaotic:
-      return "chaotic";
-    case AttractorKind::kUndecided:
-      return "undecided";
-    case AttractorKind::kUnbounded:
-      return "unbounded";
-    case AttractorKind::kFailed:
-      return "failed";
-  }
-  return "?";
-}
+const char* AttractorKindName(AttractorKind k) { return Name(k); }
 
 std::string ForcedBasinOptions::ValidationError() const {
   if (nx < 1 || ny < 1 || nx > 2000 || ny > 2000) return "nx and ny must lie in [1, 2000]";

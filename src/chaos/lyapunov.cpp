@@ -10,19 +10,7 @@
 
 namespace stickslip {
 
-const char* LyapunovStatusName(LyapunovStatus s) {
-  switch (s) {
-    case LyapunovStatus::kDone:
-      return "done";
-    case LyapunovStatus::kFlowFailed:
-      return "flow-failed";
-    case LyapunovStatus::kDiverged:
-      return "diverged";
-    case LyapunovStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* LyapunovStatusName(LyapunovStatus s) { return Name(s); }
 
 std::string LyapunovOptions::ValidationError() const {
   const std::string e = flow.ValidationError();

@@ -14,9 +14,7 @@
 
 namespace stickslip {
 
-const char* SweepDirectionName(SweepDirection d) {
-  return d == SweepDirection::kUp ? "up" : "down";
-}
+const char* SweepDirectionName(SweepDirection d) { return Name(d); }
 
 std::string OrbitDiagramOptions::ValidationError() const {
   if (!(std::isfinite(from) && std::isfinite(to)) || from == to)

@@ -29,10 +29,10 @@ FoldSample FoldCurveProblem::Sample(const Eigen::VectorXd& u) {
     return s;
   }
   s.period = map.period;
-  s.amplitude = 0.5 * (map.flow.x_max - map.flow.x_min);
+  s.amplitude = map.flow.extrema.HalfSpanX();
   s.multiplier = map.dpdx;
-  s.xdot_max = map.flow.xdot_max;
-  s.max_slip = p.v - map.flow.xdot_min;
+  s.xdot_max = map.flow.extrema.xdot_max;
+  s.max_slip = p.v - map.flow.extrema.xdot_min;
   return s;
 }
 

@@ -71,7 +71,7 @@ std::vector<ForcedCurvePoint> Points(ForcedCurveProblem& problem, const std::vec
       ForcedCurvePoint p;
       p.p1 = u[2], p.p2 = u[3], p.x0 = u[0], p.xdot0 = u[1], p.phase = st.phase;
       p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
-      p.x_min = smp.run.extremes.x_min, p.x_max = smp.run.extremes.x_max;
+      p.extrema = smp.run.extrema;
       Multipliers(smp.run.jacobian, p.multipliers);
       p.flag = kind == ForcedCurveKind::kNS ? p.multipliers[0].imag() == 0 : smp.crossing;
       points.push_back(p);

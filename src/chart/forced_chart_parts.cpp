@@ -44,33 +44,9 @@ std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
   return {};
 }
 
-const char* ForcedCurveName(ForcedCurveKind k) {
-  switch (k) {
-    case ForcedCurveKind::kLP:
-      return "LP";
-    case ForcedCurveKind::kPD:
-      return "PD";
-    case ForcedCurveKind::kNS:
-      return "NS";
-    case ForcedCurveKind::kGR:
-      return "GR";
-  }
-  return "?";
-}
+const char* ForcedCurveName(ForcedCurveKind k) { return Name(k); }
 
-const char* ForcedCodim2Name(ForcedCodim2Label l) {
-  switch (l) {
-    case ForcedCodim2Label::kR1:
-      return "R1";
-    case ForcedCodim2Label::kR2:
-      return "R2";
-    case ForcedCodim2Label::kFoldFlip:
-      return "LPPD";
-    case ForcedCodim2Label::kSliding:
-      return "SL";
-  }
-  return "?";
-}
+const char* ForcedCodim2Name(ForcedCodim2Label l) { return Name(l); }
 
 std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const {
   std::string e = stickslip::ValidationError(base);

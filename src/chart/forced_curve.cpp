@@ -45,7 +45,7 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
     s->margin = any ? cross : HUGE_VAL;
   } else {
     s->crossing = false;
-    const ForcedExtremes& x = s->run.extremes;
+    const Extrema& x = s->run.extrema;
     const double gap = x.xdot_max <= model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
     s->margin = s->run.sticks > 0 ? -stick_time : gap;
   }

@@ -26,8 +26,8 @@ GrazingSample SampleGrazing(OrbitFinder& finder, const Params& p, bool floquet) 
   if (floquet) {
     s.multiplier = run.jacobian.determinant();
     s.period = run.t;
-    s.amplitude = 0.5 * (run.x_max - run.x_min);
-    s.max_slip = p.v - run.xdot_min;
+    s.amplitude = run.extrema.HalfSpanX();
+    s.max_slip = p.v - run.extrema.xdot_min;
   }
   return s;
 }

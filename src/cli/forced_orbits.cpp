@@ -72,8 +72,8 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
     ++index;
     for (size_t k = 0; k < so_.points.size(); ++k)
       t.AddRow({index, o.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
-                static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), o.extremes.x_min,
-                o.extremes.x_max, o.extremes.xdot_min, o.extremes.xdot_max, o.multipliers[0].real(),
+                static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), o.extrema.x_min,
+                o.extrema.x_max, o.extrema.xdot_min, o.extrema.xdot_max, o.multipliers[0].real(),
                 o.multipliers[0].imag(), o.multipliers[1].real(), o.multipliers[1].imag(),
                 std::abs(o.multipliers[0]), o.stable ? 1 : 0,
                 so_.from_exit_map ? "exit-map" : "strobe"});
@@ -85,7 +85,7 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
             << " periodic orbits with m <= " << so.max_m << "\n";
   for (const ForcedScanOrbit& so_ : r.orbits)
     std::cout << "  m = " << so_.orbit.m << ", " << so_.orbit.sticks << " sticks, x_max "
-              << FormatNumber(so_.orbit.extremes.x_max) << ", |multiplier| "
+              << FormatNumber(so_.orbit.extrema.x_max) << ", |multiplier| "
               << FormatNumber(std::abs(so_.orbit.multipliers[0])) << ", "
               << (so_.orbit.stable ? "stable" : "unstable") << "\n";
   std::cout << "wrote " << app.out().dir() << "/orbits.tsv, orbits.gp"

@@ -193,7 +193,7 @@ void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::stri
   for (const ForcedPiece& piece : pieces)
     for (const ForcedBranchRow& r : piece.branch.special)
       std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
-                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extremes.x_max) << "  "
+                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extrema.x_max) << "  "
                 << r.description << "\n";
 }
 

@@ -214,7 +214,7 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
             << r.rows.size() << " rows to t = " << FormatNumber(r.rows.back().t) << ", "
             << r.section.size() << " section points (" << ForcedSectionName(o.section) << "), "
             << r.sticks << " sticks, " << r.crossings << " crossings; x in ["
-            << FormatNumber(r.extremes.x_min) << ", " << FormatNumber(r.extremes.x_max) << "]\n"
+            << FormatNumber(r.extrema.x_min) << ", " << FormatNumber(r.extrema.x_max) << "]\n"
             << "wrote " << app.out().dir() << "/trajectory.tsv, section.tsv, trajectory.gp"
             << (app.gnuplot().ok() ? ", " + fig_t + " and " + fig_s : "") << "\n";
   return app.ExitCode("");

@@ -49,7 +49,8 @@ void BranchContext::Fail(const std::string& where, const std::string& what) {
 }
 
 void BranchContext::Add(const BranchPoint& pt) {
-  if (!std::isfinite(pt.p) || !std::isfinite(pt.x_min) || !std::isfinite(pt.x_max)) {
+  if (!std::isfinite(pt.p) || !std::isfinite(pt.extrema.x_min) ||
+      !std::isfinite(pt.extrema.x_max)) {
     Fail(Where(pt.p), "non-finite values in a computed point");
     return;
   }
@@ -71,14 +72,11 @@ BranchPoint BranchContext::FromOrbit(double p, const Orbit& o, double a) const {
   pt.kind = o.kind == OrbitKind::kStickSlip ? PointKind::kStickSlip : PointKind::kPureSlip;
   pt.branch = branch_;
   pt.period = o.period;
-  pt.x_min = o.x_min;
-  pt.x_max = o.x_max;
-  pt.xdot_min = o.xdot_min;
-  pt.xdot_max = o.xdot_max;
+  pt.extrema = o.extrema;
   pt.t_stick = o.t_stick;
   pt.multiplier = o.multiplier;
   pt.stable = o.stable;
-  pt.amplitude = o.kind == OrbitKind::kPureSlip ? a : 0.5 * (o.x_max - o.x_min);
+  pt.amplitude = o.kind == OrbitKind::kPureSlip ? a : o.extrema.HalfSpanX();
   pt.newton_stalled = o.newton_stalled;
   // Pure slip: the section point (xbar + a, 0) of G(a, p) (orbit.hpp).
   const bool ps = o.kind == OrbitKind::kPureSlip;
@@ -105,7 +103,7 @@ bool BranchContext::PureSlipAtFixedP(double p, double a_guess, Orbit* orbit, dou
   const OrbitResult r = finder_.PureSlip(a_guess);
   ++res_.counts.orbit_solves;
   res_.counts.newton_iterations += r.iterations;
-  if (!r.ok() || r.orbit.xdot_max >= m.v()) return false;
+  if (!r.ok() || r.orbit.extrema.xdot_max >= m.v()) return false;
   *orbit = r.orbit;
   *a = r.orbit.start[0] - m.SteadySliding().x;
   // Newton that ends on the equilibrium itself found no orbit.
@@ -167,8 +165,7 @@ void BranchContext::AddHopfEnd(double p_near, bool stable) {
   Orbit o;  // amplitude zero; lambda = +-i, so period 2 pi and multiplier 1
   o.kind = OrbitKind::kPureSlip;
   o.period = 2 * M_PI;
-  o.x_min = o.x_max = Model(At(p)).SteadySliding().x;
-  o.xdot_min = o.xdot_max = 0.0;
+  o.extrema = Extrema::Point(Model(At(p)).SteadySliding().x, 0.0);
   o.t_stick = 0.0;
   o.multiplier = 1.0;
   o.stable = stable;

@@ -88,7 +88,7 @@ void TraceFromStart(BranchContext& ctx) {
   if (found.status == OrbitScanStatus::kFailed) ctx.Fail(ctx.Where(from), found.message);
   for (const Orbit& ps : found.pure_slip) {
     const double a = ps.start[0] - found.steady.x;
-    if (ctx.Stop() || ps.xdot_max >= ctx.At(from).v) continue;
+    if (ctx.Stop() || ps.extrema.xdot_max >= ctx.At(from).v) continue;
     if (ctx.HasPureSlipPoint(from, a)) continue;
     BranchStart s;
     s.phase = BranchStart::kPureSlip;

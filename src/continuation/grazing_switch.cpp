@@ -19,10 +19,8 @@ BranchPoint GrazingRow(const BranchContext& ctx, const Model& m, const SpecialPo
   Orbit o;
   o.kind = OrbitKind::kStickSlip;
   o.period = sp.period;
-  o.x_min = sp.x_min;
-  o.x_max = sp.x_max;
-  o.xdot_min = run.xdot_min;
-  o.xdot_max = m.v();
+  // x' from its minimum up to the belt, where the orbit grazes.
+  o.extrema = Extrema{sp.extrema.x_min, sp.extrema.x_max, run.extrema.xdot_min, m.v()};
   o.t_stick = sp.period - run.t;
   o.multiplier = 0.0;
   o.stable = true;
@@ -62,7 +60,7 @@ BranchStart IntoStickSlip(BranchContext& ctx, const BranchEnd& end, const FlowRe
 // From stick slip into pure slip: the side where a pure-slip orbit exists.
 BranchStart IntoPureSlip(BranchContext& ctx, const BranchEnd& end, const FlowResult& run) {
   const double p_gr = end.p;
-  const double a_gr = run.x_max - Model(ctx.At(p_gr)).SteadySliding().x;
+  const double a_gr = run.extrema.x_max - Model(ctx.At(p_gr)).SteadySliding().x;
   const double scale = ctx.LocalScale(p_gr);
   const double d = std::max({Tolerances::kSlipProbe * scale,
                              Tolerances::kSlipProbeTol * ctx.options().locate_tol,

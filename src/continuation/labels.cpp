@@ -14,11 +14,12 @@ bool SitsOn(SpecialKind s, PointKind k) {
   return s == SpecialKind::kHopf ? k == PointKind::kEquilibrium : k != PointKind::kEquilibrium;
 }
 
-double Range(const std::vector<BranchPoint>& pts, double BranchPoint::*field) {
+template <class Field>
+double Range(const std::vector<BranchPoint>& pts, Field field) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const BranchPoint& p : pts) {
-    lo = std::min(lo, p.*field);
-    hi = std::max(hi, p.*field);
+    lo = std::min(lo, field(p));
+    hi = std::max(hi, field(p));
   }
   return hi > lo ? hi - lo : 1.0;
 }
@@ -26,7 +27,8 @@ double Range(const std::vector<BranchPoint>& pts, double BranchPoint::*field) {
 }  // namespace
 
 std::vector<int> SpecialPointRows(const ContinuationResult& r) {
-  const double sp = Range(r.points, &BranchPoint::p), sx = Range(r.points, &BranchPoint::x_max);
+  const double sp = Range(r.points, [](const BranchPoint& p) { return p.p; });
+  const double sx = Range(r.points, [](const BranchPoint& p) { return p.extrema.x_max; });
   std::vector<int> rows;
   for (const SpecialPoint& s : r.special) {
     int best = 0;
@@ -34,7 +36,7 @@ std::vector<int> SpecialPointRows(const ContinuationResult& r) {
     for (std::size_t i = 0; i < r.points.size(); ++i) {
       const BranchPoint& p = r.points[i];
       if (!SitsOn(s.kind, p.kind)) continue;
-      const double d = std::abs(p.p - s.p) / sp + std::abs(p.x_max - s.x_max) / sx;
+      const double d = std::abs(p.p - s.p) / sp + std::abs(p.extrema.x_max - s.extrema.x_max) / sx;
       if (d < best_d) best_d = d, best = static_cast<int>(i) + 1;
     }
     rows.push_back(best);

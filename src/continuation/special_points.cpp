@@ -27,9 +27,8 @@ SpecialPoint HopfPoint(const Params& at, double p) {
   sp.kind = SpecialKind::kHopf;
   sp.p = p;
   sp.period = 2 * M_PI;  // lambda = +-i at the Hopf point
-  sp.x_min = sp.x_max = m.SteadySliding().x;
-  sp.xdot_min = 0;
-  sp.x_start = sp.x_min;
+  sp.extrema = Extrema::Point(m.SteadySliding().x, 0.0);
+  sp.x_start = sp.extrema.x_min;
   sp.multiplier_before = sp.multiplier_after = 1.0;
   const bool super = m.friction().D3Mu(m.v()) > 0;
   sp.description = std::string("Hopf point of steady sliding (2 beta + mu'(v) = 0), ") +
@@ -75,9 +74,9 @@ SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run) {
   sp.kind = SpecialKind::kGrazing;
   sp.p = p;
   sp.period = run.t + (inside ? (x0 - run.z[0]) / m.v() : 0.0);  // stick, seed eq. (3.6)
-  sp.x_min = std::min(run.x_min, run.z[0]);
-  sp.x_max = std::max(run.x_max, x0);
-  sp.xdot_min = run.xdot_min;
+  sp.extrema.x_min = std::min(run.extrema.x_min, run.z[0]);
+  sp.extrema.x_max = std::max(run.extrema.x_max, x0);
+  sp.extrema.xdot_min = run.extrema.xdot_min;
   sp.multiplier_before = 0.0;
   sp.multiplier_after = inside ? kNan : mult_ps;
   sp.x_start = x0;
@@ -95,9 +94,7 @@ SpecialPoint FoldPoint(double p, const FlowResult& run, const std::string& what)
   lp.kind = SpecialKind::kFold;
   lp.p = p;
   lp.period = run.t;
-  lp.x_min = run.x_min;
-  lp.x_max = run.x_max;
-  lp.xdot_min = run.xdot_min;
+  lp.extrema = run.extrema;
   lp.x_start = run.z[0];
   lp.xdot_start = run.z[1];
   lp.description = what;

@@ -22,10 +22,7 @@ Orbit PureSlipFromMap(const ReturnMap& map) {
   Orbit o;
   o.kind = OrbitKind::kPureSlip;
   o.period = map.period;
-  o.x_min = map.flow.x_min;
-  o.x_max = map.flow.x_max;
-  o.xdot_min = map.flow.xdot_min;
-  o.xdot_max = map.flow.xdot_max;
+  o.extrema = map.flow.extrema;
   o.multiplier = map.dpdx;
   o.stable = std::abs(map.dpdx) < 1;
   return o;
@@ -167,7 +164,7 @@ bool PureSlipTracer::Start(const BranchStart& s, PalcPoint* first) {
   first->tangent = palc_.Tangent(jac, Eigen::Vector2d(0, s.dir));
   const Orbit o = PureSlipFromMap(curve_.map);
   last_stable_ = o.stable;
-  last_xdot_max_ = o.xdot_max;
+  last_xdot_max_ = o.extrema.xdot_max;
   last_v_ = ctx_.At(s.p).v;  // the point was just evaluated: a valid model
   ctx_.Add(ctx_.FromOrbit(s.p, o, s.a));
   return true;
@@ -311,7 +308,7 @@ void PureSlipTracer::Accept(const PalcPoint& last, const PalcCorrection& c, cons
   }
   ctx_.Add(ctx_.FromOrbit(c.u[1], o, next.u[0]));
   last_stable_ = o.stable;
-  last_xdot_max_ = o.xdot_max;
+  last_xdot_max_ = o.extrema.xdot_max;
   last_v_ = ctx_.At(c.u[1]).v;  // evaluated by EvalG: a valid model
 }
 

@@ -15,8 +15,7 @@ BranchPoint EquilibriumPoint(const Equilibrium& e, double p) {
   pt.p = p;
   pt.kind = PointKind::kEquilibrium;
   pt.period = kNan;
-  pt.x_min = pt.x_max = e.x;
-  pt.xdot_min = pt.xdot_max = 0.0;
+  pt.extrema = Extrema::Point(e.x, 0.0);
   pt.t_stick = kNan;
   pt.multiplier = e.max_real();
   pt.stable = e.stable();
@@ -27,10 +26,10 @@ BranchPoint EquilibriumPoint(const Equilibrium& e, double p) {
 
 // The largest relative change of the orbit's extent and period.
 double Change(const Orbit& prev, const Orbit& next) {
-  const double scale = std::max(0.1, prev.x_max - prev.x_min);
-  return std::max({std::abs(next.x_max - prev.x_max) / scale,
-                   std::abs(next.x_min - prev.x_min) / scale,
-                   std::abs(next.xdot_min - prev.xdot_min) / scale,
+  const double scale = std::max(0.1, prev.extrema.x_max - prev.extrema.x_min);
+  return std::max({std::abs(next.extrema.x_max - prev.extrema.x_max) / scale,
+                   std::abs(next.extrema.x_min - prev.extrema.x_min) / scale,
+                   std::abs(next.extrema.xdot_min - prev.extrema.xdot_min) / scale,
                    std::abs(next.period - prev.period) / prev.period});
 }
 

@@ -67,7 +67,7 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     const BranchPoint& pt = r.points[i];
     // Steady sliding, and the zero-amplitude end of a pure-slip branch at HB,
     // are not orbits to compare with.
-    if (pt.kind == PointKind::kEquilibrium || pt.x_max == pt.x_min) continue;
+    if (pt.kind == PointKind::kEquilibrium || pt.extrema.x_max == pt.extrema.x_min) continue;
     if (cancelled && cancelled()) {
       out.cancelled = true;
       break;
@@ -77,21 +77,22 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     ComparisonRow row;
     row.p = pt.p;
     row.kind = pt.kind;
-    row.xdot_min = pt.xdot_min;
+    row.xdot_min = pt.extrema.xdot_min;
     // The seed: r1 estimates the smallest slip velocity x'_min (section 4).
     const SeedEstimate seed = EstimateSeed(q, seed_opts);
     if (seed.bounds.roots.applies) {
-      row.r1 = {true, seed.velocity_amplitude, pt.xdot_min, seed.velocity_amplitude - pt.xdot_min,
-                ""};
+      row.r1 = {true, seed.velocity_amplitude, pt.extrema.xdot_min,
+                seed.velocity_amplitude - pt.extrema.xdot_min, ""};
       r1.values[i] = row.r1.estimate;
       err_r1.values[i] = row.r1.error;
     } else {
       row.r1.note = "n/a: " + seed.bounds.roots.reason;
     }
     if (std::isfinite(seed.x_max_bound)) {
-      const bool holds = pt.x_max <= seed.x_max_bound && pt.x_min >= seed.x_min_bound;
-      row.x_max_bound = {true, seed.x_max_bound, pt.x_max, seed.x_max_bound - pt.x_max,
-                         holds ? "holds" : "violated"};
+      const bool holds =
+          pt.extrema.x_max <= seed.x_max_bound && pt.extrema.x_min >= seed.x_min_bound;
+      row.x_max_bound = {true, seed.x_max_bound, pt.extrema.x_max,
+                         seed.x_max_bound - pt.extrema.x_max, holds ? "holds" : "violated"};
       xb_lo.values[i] = seed.x_min_bound;
       xb_hi.values[i] = seed.x_max_bound;
       xb_ok.values[i] = holds ? 1 : 0;
@@ -103,7 +104,8 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
     const AveragingEstimate avg = EstimateAveraging(q);
     if (std::isfinite(avg.amplitude)) a_ps.values[i] = avg.amplitude;
     if (avg.applies && pt.kind == PointKind::kPureSlip) {
-      row.a_ps = {true, -avg.amplitude, pt.xdot_min, -avg.amplitude - pt.xdot_min, ""};
+      row.a_ps = {true, -avg.amplitude, pt.extrema.xdot_min, -avg.amplitude - pt.extrema.xdot_min,
+                  ""};
       err_a_ps.values[i] = row.a_ps.error;
     } else {
       row.a_ps.note = pt.kind == PointKind::kStickSlip

@@ -239,7 +239,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
   prev_ = row;
   have_prev_ = true;
   out_.rows.push_back(row);
-  if (std::max(std::abs(row.extremes.x_min), std::abs(row.extremes.x_max)) > o_.max_amplitude) {
+  if (std::max(std::abs(row.extrema.x_min), std::abs(row.extrema.x_max)) > o_.max_amplitude) {
     out_.status = ForcedBranchStatus::kUnbounded;
     stopped_ = true;
   } else if ((row.p - from_) * dir_ < -1e-3 * std::abs(to_ - from_)) {

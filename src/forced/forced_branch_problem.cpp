@@ -8,19 +8,7 @@
 
 namespace stickslip {
 
-const char* ForcedAxisName(ForcedAxis a) {
-  switch (a) {
-    case ForcedAxis::kOmega:
-      return "omega";
-    case ForcedAxis::kForce:
-      return "force";
-    case ForcedAxis::kV:
-      return "v";
-    case ForcedAxis::kBeta:
-      return "beta";
-  }
-  return "?";
-}
+const char* ForcedAxisName(ForcedAxis a) { return Name(a); }
 
 double GetAxis(const ForcedParams& p, ForcedAxis a) {
   switch (a) {
@@ -53,51 +41,9 @@ void SetAxis(ForcedParams& p, ForcedAxis a, double value) {
   }
 }
 
-const char* ForcedBranchStatusName(ForcedBranchStatus s) {
-  switch (s) {
-    case ForcedBranchStatus::kReachedEnd:
-      return "reached-end";
-    case ForcedBranchStatus::kUnbounded:
-      return "unbounded";
-    case ForcedBranchStatus::kStepTooSmall:
-      return "step-too-small";
-    case ForcedBranchStatus::kStartFailed:
-      return "start-failed";
-    case ForcedBranchStatus::kMaxPoints:
-      return "max-points";
-    case ForcedBranchStatus::kClosed:
-      return "closed";
-    case ForcedBranchStatus::kCancelled:
-      return "cancelled";
-    case ForcedBranchStatus::kLeftRange:
-      return "left-range";
-  }
-  return "?";
-}
+const char* ForcedBranchStatusName(ForcedBranchStatus s) { return Name(s); }
 
-const char* ForcedLabelName(ForcedLabel l) {
-  switch (l) {
-    case ForcedLabel::kNone:
-      return "";
-    case ForcedLabel::kLP:
-      return "LP";
-    case ForcedLabel::kPD:
-      return "PD";
-    case ForcedLabel::kNS:
-      return "NS";
-    case ForcedLabel::kGR:
-      return "GR";
-    case ForcedLabel::kSW:
-      return "SW";
-    case ForcedLabel::kAD:
-      return "AD";
-    case ForcedLabel::kCR:
-      return "CR";
-    case ForcedLabel::kSL:
-      return "SL";
-  }
-  return "?";
-}
+const char* ForcedLabelName(ForcedLabel l) { return Name(l); }
 
 namespace forced_detail {
 
@@ -175,7 +121,7 @@ ForcedBranchRow StrobeProblem::Row() const {
   r.m = o_.m;
   r.sticks = last_.sticks;
   r.crossings = last_.crossings;
-  r.extremes = last_.extremes;
+  r.extrema = last_.extrema;
   Multipliers(last_.jacobian, r.multipliers);
   r.stable = std::abs(r.multipliers[0]) < 1;
   return r;

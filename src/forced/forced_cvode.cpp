@@ -83,7 +83,7 @@ bool Driver::SlipByCvode() {
       return Arrive(t, y[0]);
     }
     t_ = rq_.t_end, x_ = y[0], xd_ = y[1];  // CV_TSTOP_RETURN: the stop time exactly
-    run_.extremes.Add(x_, xd_);
+    run_.extrema.Add(x_, xd_);
     Sample();
     return true;
   }

@@ -67,7 +67,7 @@ ForcedExitOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode ex
       o.multiplier = dtp;
       o.stable = std::abs(dtp) < 1;
       o.crossings = run.crossings;
-      o.extremes = run.extremes;
+      o.extrema = run.extrema;
       o.status = ForcedOrbitStatus::kConverged;
       return o;
     }

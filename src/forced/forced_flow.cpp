@@ -13,31 +13,9 @@
 
 namespace stickslip {
 
-const char* ForcedEventName(ForcedEventKind k) {
-  switch (k) {
-    case ForcedEventKind::kStickIn:
-      return "stick-in";
-    case ForcedEventKind::kStickOut:
-      return "stick-out";
-    case ForcedEventKind::kCrossing:
-      return "crossing";
-    case ForcedEventKind::kTouch:
-      return "touch";
-  }
-  return "?";
-}
+const char* ForcedEventName(ForcedEventKind k) { return Name(k); }
 
-const char* ForcedStatusName(ForcedStatus s) {
-  switch (s) {
-    case ForcedStatus::kReached:
-      return "reached";
-    case ForcedStatus::kTooMuchWork:
-      return "too-much-work";
-    case ForcedStatus::kFailed:
-      return "failed";
-  }
-  return "?";
-}
+const char* ForcedStatusName(ForcedStatus s) { return Name(s); }
 
 std::string ForcedOptions::ValidationError() const {
   if (!(rtol >= 1e-16 && rtol <= 1e-2)) return "rtol = " + Num(rtol) + " must lie in [1e-16, 1e-2]";
@@ -83,7 +61,7 @@ void Driver::Run(const ForcedPoint& start) {
     phi_ << 1, 0, 0, 0;  // stick has no x' direction
   }
   on_surface_ = xd_ == m_.v();  // a slip start on x' = v (a stick exit): no event there
-  run_.extremes.Add(x_, xd_);
+  run_.extrema.Add(x_, xd_);
   Sample();
   while (t_ < rq_.t_end && (mode_ == Mode::kStick ? Stick() : Slip())) {
   }
@@ -100,7 +78,7 @@ bool Driver::Fail(ForcedStatus s, const std::string& what) {
 }
 
 bool Driver::Record(ForcedEventKind kind, Mode before, Mode after) {
-  run_.extremes.Add(x_, xd_);
+  run_.extrema.Add(x_, xd_);
   if (rq_.events) rq_.events->push_back({kind, t_, x_, before, after});
   Sample();
   stalled_events_ = t_ == last_event_t_ ? stalled_events_ + 1 : 0;
@@ -192,7 +170,7 @@ bool Driver::SlipStep(double t_end) {
   auto extremum = [&](double u, int) {
     if (u >= u_end) return false;
     series_.Evaluate(u * h, out);
-    run_.extremes.Add(out[0], out[1]);
+    run_.extrema.Add(out[0], out[1]);
     return true;
   };
   if (rq_.extremes && m_.v() != 0) {  // x extrema (at v = 0 they are the arrivals)
@@ -207,7 +185,7 @@ bool Driver::SlipStep(double t_end) {
   if (!hit) {
     t_ = t_ + h == t_end ? t_end : t_ + h;
     x_ = out[0], xd_ = out[1];
-    run_.extremes.Add(x_, xd_);
+    run_.extrema.Add(x_, xd_);
     Sample();
     return true;
   }

@@ -7,19 +7,7 @@
 
 namespace stickslip {
 
-const char* ForcedOrbitStatusName(ForcedOrbitStatus s) {
-  switch (s) {
-    case ForcedOrbitStatus::kConverged:
-      return "converged";
-    case ForcedOrbitStatus::kNoConvergence:
-      return "no-convergence";
-    case ForcedOrbitStatus::kSingular:
-      return "singular";
-    case ForcedOrbitStatus::kFlowFailed:
-      return "flow-failed";
-  }
-  return "?";
-}
+const char* ForcedOrbitStatusName(ForcedOrbitStatus s) { return Name(s); }
 
 void Multipliers(const Mat2& M, std::complex<double> out[2]) {
   // lambda^2 - tr lambda + det = 0.
@@ -39,7 +27,7 @@ void Describe(const ForcedRun& run, ForcedOrbit& o) {
   o.stable = std::abs(o.multipliers[0]) < 1;
   o.sticks = run.sticks;
   o.crossings = run.crossings;
-  o.extremes = run.extremes;
+  o.extrema = run.extrema;
   o.steps = run.steps;
 }
 

@@ -24,10 +24,10 @@ std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const For
   const double period = r.m * 2 * M_PI / at.omega;
   const double mult_max = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
   const double numbers[] = {r.p,
-                            r.extremes.x_min,
-                            r.extremes.x_max,
-                            r.extremes.xdot_min,
-                            r.extremes.xdot_max,
+                            r.extrema.x_min,
+                            r.extrema.x_max,
+                            r.extrema.xdot_min,
+                            r.extrema.xdot_max,
                             period,
                             r.x0,
                             r.xdot0,

@@ -9,9 +9,7 @@
 
 namespace stickslip {
 
-const char* ForcedScanStatusName(ForcedScanStatus s) {
-  return s == ForcedScanStatus::kOk ? "ok" : "cancelled";
-}
+const char* ForcedScanStatusName(ForcedScanStatus s) { return Name(s); }
 
 std::string ForcedScanOptions::ValidationError() const {
   const std::string e = orbit.flow.ValidationError();
@@ -83,7 +81,7 @@ class Scan {
   ForcedOrbits Result() {
     std::sort(r_.orbits.begin(), r_.orbits.end(), [](const auto& a, const auto& b) {
       return a.orbit.m != b.orbit.m ? a.orbit.m < b.orbit.m
-                                    : a.orbit.extremes.x_max < b.orbit.extremes.x_max;
+                                    : a.orbit.extrema.x_max < b.orbit.extrema.x_max;
     });
     return r_;
   }

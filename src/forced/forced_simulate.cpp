@@ -10,21 +10,9 @@
 
 namespace stickslip {
 
-const char* ForcedSectionName(ForcedSection s) {
-  return s == ForcedSection::kStrobe ? "strobe" : "exit";
-}
+const char* ForcedSectionName(ForcedSection s) { return Name(s); }
 
-const char* ForcedSimulationStatusName(ForcedSimulationStatus s) {
-  switch (s) {
-    case ForcedSimulationStatus::kComplete:
-      return "complete";
-    case ForcedSimulationStatus::kFailed:
-      return "failed";
-    case ForcedSimulationStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* ForcedSimulationStatusName(ForcedSimulationStatus s) { return Name(s); }
 
 std::string ForcedSimulationOptions::ValidationError() const {
   const std::string e = flow.ValidationError();
@@ -46,7 +34,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
   ForcedSimulation r;
   ForcedPoint p = start;
   r.rows.push_back(p);
-  r.extremes.Add(p.x, p.xdot);
+  r.extrema.Add(p.x, p.xdot);
   // Breakpoints: k dt and (strobe) n T, the next ones after the start.
   double k = std::floor(start.t / o.dt) + 1, n = std::ceil(start.t / T);
   if (strobe && n * T == start.t) r.section.push_back({0, p}), n += 1;
@@ -76,10 +64,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
       r.message = std::string(ForcedStatusName(run.status)) + ": " + run.message;
       return r;
     }
-    r.extremes.x_min = std::min(r.extremes.x_min, run.extremes.x_min);
-    r.extremes.x_max = std::max(r.extremes.x_max, run.extremes.x_max);
-    r.extremes.xdot_min = std::min(r.extremes.xdot_min, run.extremes.xdot_min);
-    r.extremes.xdot_max = std::max(r.extremes.xdot_max, run.extremes.xdot_max);
+    r.extrema.Merge(run.extrema);
     if (!std::isfinite(run.end.x) || !std::isfinite(run.end.xdot)) {
       r.status = ForcedSimulationStatus::kFailed;
       r.message = "non-finite state at t = " + Num(run.end.t);

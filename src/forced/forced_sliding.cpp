@@ -22,7 +22,7 @@ ForcedBranchRow RowOf(const ForcedOrbit& o, double p) {
   r.x0 = o.start.x, r.xdot0 = o.start.xdot;
   r.m = o.m;
   r.sticks = o.sticks, r.crossings = o.crossings;
-  r.extremes = o.extremes;
+  r.extrema = o.extrema;
   r.multipliers[0] = o.multipliers[0], r.multipliers[1] = o.multipliers[1];
   r.stable = o.stable;
   return r;
@@ -136,7 +136,7 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
   // An arrival on the band's edge at the point: crossing-sliding, also where
   // the stick it becomes merges with the next one (a jump, mu_s > mu_k).
   const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
-  const double edge = tol.BandEdge() * (1 + before.extremes.x_max - before.extremes.x_min);
+  const double edge = tol.BandEdge() * (1 + before.extrema.x_max - before.extrema.x_min);
   const bool on_edge =
       std::min(CrossingToEdge(base, axis, o, before), CrossingToEdge(base, axis, o, after)) <= edge;
   if ((ds != 0 && dc == -ds) || (dc != 0 && on_edge)) {

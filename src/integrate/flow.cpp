@@ -11,8 +11,8 @@
 
 namespace stickslip {
 
-const char* IntegratorName(Integrator i) { return i == Integrator::kTaylor ? "taylor" : "cvode"; }
-const char* MethodName(Method m) { return m == Method::kAdams ? "adams" : "bdf"; }
+const char* IntegratorName(Integrator i) { return Name(i); }
+const char* MethodName(Method m) { return Name(m); }
 
 std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, bool variational);
 std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
@@ -25,25 +25,7 @@ std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, bool variationa
              : MakeCvodeStepper(options, variational);
 }
 
-const char* FlowStatusName(FlowStatus s) {
-  switch (s) {
-    case FlowStatus::kTimeLimit:
-      return "time-limit";
-    case FlowStatus::kStick:
-      return "stick";
-    case FlowStatus::kSection:
-      return "section";
-    case FlowStatus::kVelocityMax:
-      return "velocity-max";
-    case FlowStatus::kIntegratorFailed:
-      return "integrator-failed";
-    case FlowStatus::kTooManySwitches:
-      return "too-many-switches";
-    case FlowStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* FlowStatusName(FlowStatus s) { return Name(s); }
 
 std::string FlowOptions::ValidationError() const {
   std::ostringstream os;
@@ -115,22 +97,15 @@ struct Flow::Walk {
 };
 
 namespace {
-void Extend(FlowResult& r, const Vec2& z) {
-  r.x_min = std::min(r.x_min, z[0]);
-  r.x_max = std::max(r.x_max, z[0]);
-  r.xdot_min = std::min(r.xdot_min, z[1]);
-  r.xdot_max = std::max(r.xdot_max, z[1]);
-}
+void Extend(FlowResult& r, const Vec2& z) { r.extrema.Add(z[0], z[1]); }
 
 // The non-terminal events of g1 = x'' and g2 = x': extrema of x' and x.
 void RecordExtremum(void* context, int g, const double* y) {
   Extrema& e = *static_cast<Extrema*>(context);
   if (g == 1) {
-    e.xdot_min = std::min(e.xdot_min, y[1]);
-    e.xdot_max = std::max(e.xdot_max, y[1]);
+    e.AddXdot(y[1]);
   } else if (g == 2) {
-    e.x_min = std::min(e.x_min, y[0]);
-    e.x_max = std::max(e.x_max, y[0]);
+    e.AddX(y[0]);
   }
 }
 
@@ -152,7 +127,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
                          const SegmentOutput& out, FlowResult& r) {
   Stepper& cv = Solver(variational);
   const int n = cv.size();
-  Extrema extrema{r.x_min, r.x_max, r.xdot_min, r.xdot_max};
+  Extrema extrema = r.extrema;
   SlipProblem problem{system_.get(), mode_, options_.rtol, options_.atol,
                       cancel_ ? &cancel_ : nullptr};
   problem.x_center = mode_ == Mode::kSlipBelow ? system_->SteadySliding().x : 0.0;
@@ -161,10 +136,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   const double init[8] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0};
   const SegmentEnd e = RunSegment(cv, problem, t0, init, stop.t_max, out);
   total_steps_ += cv.steps();
-  r.x_min = std::min(r.x_min, extrema.x_min);
-  r.x_max = std::max(r.x_max, extrema.x_max);
-  r.xdot_min = std::min(r.xdot_min, extrema.xdot_min);
-  r.xdot_max = std::max(r.xdot_max, extrema.xdot_max);
+  r.extrema.Merge(extrema);
   double y[8];
   std::copy(e.y, e.y + n, y);
   auto end = [&](SlipEnd::Kind kind, double t) {
@@ -268,8 +240,7 @@ FlowResult Flow::Run(double t0, const Vec2& z0, Mode m0, const StopRule& stop, b
   Walk w{FlowResult{}, m0, t0, z0, Mat2::Identity(), t0, SegmentOutput{}};
   w.out = SegmentOutput{output_dt, &w.next_output, &observer};
   FlowResult& r = w.r;
-  r.x_min = r.x_max = z0[0];
-  r.xdot_min = r.xdot_max = z0[1];
+  r.extrema = Extrema::Point(z0[0], z0[1]);
   r.modes.push_back(m0);
   const bool column = variational && has_parameter_column() && m0 != Mode::kStick;
   if (w.out.on()) {

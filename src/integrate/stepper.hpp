@@ -22,11 +22,6 @@
 
 namespace stickslip {
 
-// The extrema of x and x' over a run (the non-terminal events of g1, g2).
-struct Extrema {
-  double x_min, x_max, xdot_min, xdot_max;
-};
-
 // One slip mode of a system (the model seam), with the noise bands of steady sliding.
 struct SlipProblem {
   const FrictionSystem* model = nullptr;

@@ -27,8 +27,8 @@ TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
                (po.steady.stable() ? "stable" : "unstable"));
   if (po.has_stick_slip)
     t.AddComment("orbit: stick-slip, stable, period " + Num(po.stick_slip.period) + ", t_stick " +
-                 Num(po.stick_slip.t_stick) + ", x in [" + Num(po.stick_slip.x_min) + ", " +
-                 Num(po.stick_slip.x_max) + "]");
+                 Num(po.stick_slip.t_stick) + ", x in [" + Num(po.stick_slip.extrema.x_min) + ", " +
+                 Num(po.stick_slip.extrema.x_max) + "]");
   for (size_t i = 0; i < po.pure_slip.size(); ++i) {
     const Orbit& o = po.pure_slip[i];
     t.AddComment("orbit: pure-slip " + std::to_string(i) + ", " +

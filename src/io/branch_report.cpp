@@ -36,10 +36,10 @@ namespace {
 std::pair<std::string, double> FirstNonFinite(const BranchPoint& p) {
   const bool eq = p.kind == PointKind::kEquilibrium;
   const std::pair<const char*, double> fields[] = {{"parameter", p.p},
-                                                   {"x_min", p.x_min},
-                                                   {"x_max", p.x_max},
-                                                   {"xdot_min", p.xdot_min},
-                                                   {"xdot_max", p.xdot_max},
+                                                   {"x_min", p.extrema.x_min},
+                                                   {"x_max", p.extrema.x_max},
+                                                   {"xdot_min", p.extrema.xdot_min},
+                                                   {"xdot_max", p.extrema.xdot_max},
                                                    {"multiplier", p.multiplier},
                                                    {"amplitude", p.amplitude},
                                                    {"period", eq ? 0.0 : p.period},
@@ -69,8 +69,8 @@ void DropNonFinite(ContinuationResult* r, const std::string& param) {
   points.resize(kept);
   std::vector<SpecialPoint> special;
   for (const SpecialPoint& s : r->special) {
-    if (std::isfinite(s.p) && std::isfinite(s.period) && std::isfinite(s.x_min) &&
-        std::isfinite(s.x_max) && std::isfinite(s.xdot_min)) {
+    if (std::isfinite(s.p) && std::isfinite(s.period) && std::isfinite(s.extrema.x_min) &&
+        std::isfinite(s.extrema.x_max) && std::isfinite(s.extrema.xdot_min)) {
       special.push_back(s);
     } else if (dropped++ == 0) {
       first = std::string("non-finite values at the special point ") + SpecialLabel(s.kind);
@@ -117,7 +117,8 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
     row.emplace_back(p.p);
     row.emplace_back(PointKindName(p.kind));
     row.emplace_back(p.branch);
-    for (double x : {p.period, p.x_min, p.x_max, p.xdot_min, p.xdot_max, p.t_stick, p.multiplier})
+    for (double x : {p.period, p.extrema.x_min, p.extrema.x_max, p.extrema.xdot_min,
+                     p.extrema.xdot_max, p.t_stick, p.multiplier})
       row.emplace_back(x);
     row.emplace_back(p.stable ? 1 : 0);
     row.emplace_back(p.amplitude);
@@ -152,7 +153,8 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
   for (size_t i = 0; i < r.special.size(); ++i) {
     const SpecialPoint& s = r.special[i];
     std::vector<TsvTable::Cell> row = {
-        SpecialLabel(s.kind), s.p, s.period, s.x_min, s.x_max, s.xdot_min, s.description};
+        SpecialLabel(s.kind), s.p,          s.period, s.extrema.x_min, s.extrema.x_max,
+        s.extrema.xdot_min,   s.description};
     for (const auto& c : extra) row.emplace_back(c.values[i]);
     row.insert(row.end(), {rows[i], labels[i], s.x_start, s.xdot_start});
     t.AddRow(row);

@@ -230,12 +230,12 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& pa
   };
   plot("bifurcation_x", "displacement x: min and max" + units.LengthUnit(),
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.x_max; }, all, "ul"),
+           r, lo, hi, [](const SpecialPoint& s) { return s.extrema.x_max; }, all, "ul"),
        Join(Curves(r, kXMax, true, true), Curves(r, kXMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   plot("bifurcation_xdot", "velocity dx/dt: min and max" + units.SpeedUnit(),
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.xdot_min; }, all, "uv"),
+           r, lo, hi, [](const SpecialPoint& s) { return s.extrema.xdot_min; }, all, "uv"),
        Join(Curves(r, kXdMax, true, true), Curves(r, kXdMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   auto periodic_point = [](const SpecialPoint& s) {

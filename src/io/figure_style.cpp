@@ -14,26 +14,9 @@ const char* const kFillPureSlip = "#fdbf6f";
 const char* const kFillEquilibrium = "#d9d9d9";
 const char* const kFillUndecided = "#ffffff";
 
-const char* FigureFormatName(FigureFormat f) {
-  switch (f) {
-    case FigureFormat::kPdf:
-      return "pdf";
-    case FigureFormat::kSvg:
-      return "svg";
-    case FigureFormat::kPng:
-      break;
-  }
-  return "png";
-}
+const char* FigureFormatName(FigureFormat f) { return Name(f); }
 
-bool ParseFigureFormat(const std::string& text, FigureFormat* f) {
-  for (FigureFormat g : {FigureFormat::kPng, FigureFormat::kPdf, FigureFormat::kSvg})
-    if (text == FigureFormatName(g)) {
-      *f = g;
-      return true;
-    }
-  return false;
-}
+bool ParseFigureFormat(const std::string& text, FigureFormat* f) { return FromName(text, f); }
 
 std::string FigureFile(const std::string& stem, FigureFormat f) {
   return stem + "." + FigureFormatName(f);

@@ -93,9 +93,9 @@ TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
     const ForcedCurve& c = r.curves[i];
     for (const ForcedCurvePoint& p : c.points)
       t.AddRow({p.p1, p.p2, ForcedCurveName(c.kind), static_cast<int>(i + 1), c.m, p.phase, p.x0,
-                p.xdot0, p.sticks, p.crossings, p.x_min, p.x_max, p.multipliers[0].real(),
-                p.multipliers[0].imag(), p.multipliers[1].real(), p.multipliers[1].imag(),
-                p.flag ? 1 : 0});
+                p.xdot0, p.sticks, p.crossings, p.extrema.x_min, p.extrema.x_max,
+                p.multipliers[0].real(), p.multipliers[0].imag(), p.multipliers[1].real(),
+                p.multipliers[1].imag(), p.flag ? 1 : 0});
   }
   return t;
 }

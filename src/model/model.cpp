@@ -5,17 +5,7 @@
 #include "numerics/tolerances.hpp"
 namespace stickslip {
 
-const char* ModeName(Mode m) {
-  switch (m) {
-    case Mode::kSlipBelow:
-      return "slip-below";
-    case Mode::kStick:
-      return "stick";
-    case Mode::kSlipAbove:
-      return "slip-above";
-  }
-  return "?";
-}
+const char* ModeName(Mode m) { return Name(m); }
 
 Model::Model(const Params& p) : p_(p), friction_((Validate(p), p)), two_beta_(2.0 * p.beta) {}
 

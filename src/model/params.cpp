@@ -11,24 +11,11 @@
 
 namespace stickslip {
 
-const char* LawName(LawKind law) {
-  switch (law) {
-    case LawKind::kCubic:
-      return "cubic";
-    case LawKind::kCoulomb:
-      return "coulomb";
-    case LawKind::kStribeck:
-      return "stribeck";
-    case LawKind::kLeine:
-      return "leine";
-  }
-  return "?";
-}
+const char* LawName(LawKind law) { return Name(law); }
 
 LawKind LawFromName(const std::string& name) {
-  for (LawKind k : {LawKind::kCubic, LawKind::kCoulomb, LawKind::kStribeck, LawKind::kLeine}) {
-    if (name == LawName(k)) return k;
-  }
+  LawKind k;
+  if (FromName(name, &k)) return k;
   throw InvalidArgument("unknown friction law '" + name +
                         "' (expected cubic, coulomb, stribeck or leine)");
 }

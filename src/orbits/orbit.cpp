@@ -11,31 +11,9 @@
 
 namespace stickslip {
 
-const char* OrbitKindName(OrbitKind k) {
-  return k == OrbitKind::kStickSlip ? "stick-slip" : "pure-slip";
-}
+const char* OrbitKindName(OrbitKind k) { return Name(k); }
 
-const char* OrbitStatusName(OrbitStatus s) {
-  switch (s) {
-    case OrbitStatus::kOk:
-      return "ok";
-    case OrbitStatus::kNoReturn:
-      return "no-return";
-    case OrbitStatus::kIntegratorFailed:
-      return "integrator-failed";
-    case OrbitStatus::kSticks:
-      return "sticks";
-    case OrbitStatus::kNotConverged:
-      return "not-converged";
-    case OrbitStatus::kCollapsed:
-      return "collapsed";
-    case OrbitStatus::kMissed:
-      return "missed";
-    case OrbitStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* OrbitStatusName(OrbitStatus s) { return Name(s); }
 
 std::string OrbitOptions::ValidationError() const {
   std::string err = flow.ValidationError();
@@ -74,10 +52,7 @@ OrbitStatus FromFlowStatus(FlowStatus s) {
 }
 
 void CopyExtremes(Orbit& o, const FlowResult& r) {
-  o.x_min = r.x_min;
-  o.x_max = r.x_max;
-  o.xdot_min = r.xdot_min;
-  o.xdot_max = r.xdot_max;
+  o.extrema = r.extrema;
   o.modes = r.modes;
   o.crossings = r.crossings;
 }

@@ -10,17 +10,7 @@
 
 namespace stickslip {
 
-const char* OrbitScanStatusName(OrbitScanStatus s) {
-  switch (s) {
-    case OrbitScanStatus::kOk:
-      return "ok";
-    case OrbitScanStatus::kFailed:
-      return "failed";
-    case OrbitScanStatus::kCancelled:
-      return "cancelled";
-  }
-  return "?";
-}
+const char* OrbitScanStatusName(OrbitScanStatus s) { return Name(s); }
 
 std::string OrbitScanOptions::ValidationError() const {
   std::string err = orbit.ValidationError();

@@ -49,7 +49,7 @@ TEST(Continuation, SeedBranchHasOneGrazingAndOneHopfPoint) {
   EXPECT_EQ(r.points.front().p, 0.05);
   EXPECT_EQ(r.points.front().kind, PointKind::kStickSlip);
   for (const auto& pt : r.points) {
-    ASSERT_TRUE(std::isfinite(pt.x_max));
+    ASSERT_TRUE(std::isfinite(pt.extrema.x_max));
     switch (pt.kind) {
       case PointKind::kStickSlip:
         EXPECT_LE(pt.p, gr[0].p + 1e-12);
@@ -76,10 +76,10 @@ TEST(Continuation, SeedBranchHasOneGrazingAndOneHopfPoint) {
     if (pt.kind == PointKind::kPureSlip) last_ps = &pt;
   }
   ASSERT_TRUE(last_ss && first_ps && last_ps);
-  EXPECT_NEAR(last_ss->x_max, first_ps->x_max, 0.02);
-  EXPECT_NEAR(last_ss->x_min, first_ps->x_min, 0.02);
+  EXPECT_NEAR(last_ss->extrema.x_max, first_ps->extrema.x_max, 0.02);
+  EXPECT_NEAR(last_ss->extrema.x_min, first_ps->extrema.x_min, 0.02);
   EXPECT_NEAR(last_ps->p, hb[0].p, 1e-12);
-  EXPECT_EQ(last_ps->x_max - last_ps->x_min, 0.0);
+  EXPECT_EQ(last_ps->extrema.x_max - last_ps->extrema.x_min, 0.0);
   EXPECT_NEAR(last_ps->period, 2 * M_PI, 1e-12);
 }
 
@@ -340,7 +340,7 @@ TEST(Continuation, SubcriticalStribeckKeepsItsFoldAtLooseTolerances) {
         ++pure;
         EXPECT_GE(pt.p, v_hb - 10 * rtol) << at;
         EXPECT_LE(pt.p, r.special[1].p) << at;
-        EXPECT_LT(pt.xdot_max, pt.p) << at;
+        EXPECT_LT(pt.extrema.xdot_max, pt.p) << at;
       }
       EXPECT_GE(pure, 10) << at;
     }
@@ -504,8 +504,8 @@ TEST(Continuation, CoulombWithDampingEndsWhereTheOrbitDisappears) {
     ends.push_back(*end);
   }
   EXPECT_NEAR(ends[0].p, ends[1].p, 1e-10);
-  EXPECT_NEAR(ends[0].x_max, ends[1].x_max, 1e-9);
-  EXPECT_NEAR(ends[0].x_min, ends[1].x_min, 1e-9);
+  EXPECT_NEAR(ends[0].extrema.x_max, ends[1].extrema.x_max, 1e-9);
+  EXPECT_NEAR(ends[0].extrema.x_min, ends[1].extrema.x_min, 1e-9);
 }
 
 // The grazing point's row and description do not depend on which way the
@@ -563,10 +563,13 @@ TEST(Continuation, StickSlipRowsAtTheDefaultsMatchTheReferenceTo1e12) {
       const reference::StickSlipOrbit ref = reference::StickSlip(q);
       ASSERT_TRUE(ref.found) << "v = " << pt.p;
       const double T = static_cast<double>(ref.period);
-      const double scale = static_cast<double>(std::max(std::abs(ref.x_min), std::abs(ref.x_max)));
+      const double scale =
+          static_cast<double>(std::max(std::abs(ref.x_min), std::abs(ref.x_max)));
       EXPECT_NEAR(pt.period, T, 1e-12 * T) << "v = " << pt.p;
-      EXPECT_NEAR(pt.x_min, static_cast<double>(ref.x_min), 1e-12 * scale) << "v = " << pt.p;
-      EXPECT_NEAR(pt.x_max, static_cast<double>(ref.x_max), 1e-12 * scale) << "v = " << pt.p;
+      EXPECT_NEAR(pt.extrema.x_min, static_cast<double>(ref.x_min), 1e-12 * scale)
+          << "v = " << pt.p;
+      EXPECT_NEAR(pt.extrema.x_max, static_cast<double>(ref.x_max), 1e-12 * scale)
+          << "v = " << pt.p;
     }
     EXPECT_GT(rows, 40);
   }

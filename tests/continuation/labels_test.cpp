@@ -12,7 +12,7 @@ BranchPoint Row(double p, PointKind k, double x_max) {
   BranchPoint b;
   b.p = p;
   b.kind = k;
-  b.x_max = x_max;
+  b.extrema.x_max = x_max;
   return b;
 }
 
@@ -20,7 +20,7 @@ SpecialPoint Special(SpecialKind k, double p, double x_max) {
   SpecialPoint s;
   s.kind = k;
   s.p = p;
-  s.x_max = x_max;
+  s.extrema.x_max = x_max;
   return s;
 }
 

@@ -52,7 +52,7 @@ TEST(SpecialPoints, HopfLocatorMatchesTheStribeckClosedForm) {
   EXPECT_NEAR(r.x, -p.v_s * std::log(2 * p.beta * p.v_s / (p.mu_s - p.mu_k)), 1e-12);
   const SpecialPoint sp = HopfPoint(ParameterAxis("v").At(p, r.x), r.x);
   EXPECT_EQ(sp.kind, SpecialKind::kHopf);
-  EXPECT_NEAR(sp.x_max, p.mu_k + (p.mu_s - p.mu_k) * std::exp(-r.x / p.v_s), 1e-15);
+  EXPECT_NEAR(sp.extrema.x_max, p.mu_k + (p.mu_s - p.mu_k) * std::exp(-r.x / p.v_s), 1e-15);
   EXPECT_NE(sp.description.find("subcritical"), std::string::npos);  // mu''' < 0
 }
 

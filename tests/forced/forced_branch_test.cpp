@@ -43,8 +43,8 @@ TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
       if (r.sticks > 0) continue;
       ++compared;
       const double X = DenHartogX(0.3, 1, r.p);
-      EXPECT_NEAR(r.extremes.x_max, X, 1e-9 * std::max(1.0, X)) << "Omega = " << r.p;
-      worst = std::max(worst, std::abs(r.extremes.x_max - X) / std::max(1.0, X));
+      EXPECT_NEAR(r.extrema.x_max, X, 1e-9 * std::max(1.0, X)) << "Omega = " << r.p;
+      worst = std::max(worst, std::abs(r.extrema.x_max - X) / std::max(1.0, X));
       p_min = std::min(p_min, r.p), p_max = std::max(p_max, r.p);
     }
     std::printf("[ measured ] from %g: %zu rows, status %s, %d evaluations, %.3f s\n", from,
@@ -100,7 +100,7 @@ TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   const ForcedExitOrbit exit = ExitPhaseOrbit(m, t_exit, mode, 1, 1, oo);
   ASSERT_EQ(exit.status, ForcedOrbitStatus::kConverged) << exit.message;
   EXPECT_NEAR(exit.multiplier, -1, 1e-9);
-  EXPECT_NEAR(exit.extremes.x_max, pd.extremes.x_max, 1e-11);
+  EXPECT_NEAR(exit.extrema.x_max, pd.extrema.x_max, 1e-11);
   std::printf("[ measured ] PD at Omega = %.15g: multiplier %.15g (strobe), %.15g (exit map)\n",
               pd.p, pd.multipliers[0].real(), exit.multiplier);
 }

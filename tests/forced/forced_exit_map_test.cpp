@@ -69,7 +69,7 @@ void Check(const ForcedParams& p, int sticks, int m) {
   EXPECT_NEAR(strobe.multipliers[0].real(), orbit.multiplier, 1e-9);
   EXPECT_EQ(strobe.sticks, sticks);
   EXPECT_EQ(strobe.crossings, orbit.crossings);
-  EXPECT_NEAR(strobe.extremes.x_max, orbit.extremes.x_max, 1e-11);
+  EXPECT_NEAR(strobe.extrema.x_max, orbit.extrema.x_max, 1e-11);
   std::printf(
       "[ measured ] %d sticks in %d periods: t_e = %.15g, multiplier %.12g, "
       "closed form: return error %.2e, multiplier %.12g\n",

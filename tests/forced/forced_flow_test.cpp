@@ -159,9 +159,9 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
       EXPECT_NEAR(run.end.t, static_cast<double>(reference::CoulombPeriodBeta0(0.4L, 0.25L, 0.25L)),
                   1e-12);
     }
-    EXPECT_NEAR(run.extremes.x_max, static_cast<double>(ref.x_max), 1e-11) << LawName(law);
-    EXPECT_NEAR(run.extremes.x_min, static_cast<double>(ref.x_min), 1e-11) << LawName(law);
-    EXPECT_NEAR(run.extremes.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.extrema.x_max, static_cast<double>(ref.x_max), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.extrema.x_min, static_cast<double>(ref.x_min), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << LawName(law);
   }
 }
 

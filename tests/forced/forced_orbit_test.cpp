@@ -107,10 +107,9 @@ TEST(ForcedOrbit, NonStopOrbitsMatchDenHartog) {
     ASSERT_EQ(orbit.sticks, 0) << "Omega = " << w;
     EXPECT_EQ(orbit.crossings, 2) << "Omega = " << w;
     const double X = static_cast<double>(DenHartogX(0.3L, 1, w));
-    EXPECT_NEAR(orbit.extremes.x_max, X, 1e-9) << "Omega = " << w;
-    EXPECT_NEAR(-orbit.extremes.x_min, X, 1e-9) << "Omega = " << w;
-    worst =
-        std::max({worst, std::abs(orbit.extremes.x_max - X), std::abs(orbit.extremes.x_min + X)});
+    EXPECT_NEAR(orbit.extrema.x_max, X, 1e-9) << "Omega = " << w;
+    EXPECT_NEAR(-orbit.extrema.x_min, X, 1e-9) << "Omega = " << w;
+    worst = std::max({worst, std::abs(orbit.extrema.x_max - X), std::abs(orbit.extrema.x_min + X)});
   }
   std::printf("[ measured ] Den Hartog x_max, x_min: max error %.2e over %zu Omegas\n", worst,
               std::size(kOmegas));

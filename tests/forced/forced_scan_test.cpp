@@ -27,7 +27,7 @@ ForcedOrbits Scan(const ForcedParams& p) {
               r.orbits.size(), r.shots, r.converged, s);
   for (const ForcedScanOrbit& o : r.orbits)
     std::printf("             m = %d, sticks %d, x_max %.12g, |mult| %.3g, %s, %s\n", o.orbit.m,
-                o.orbit.sticks, o.orbit.extremes.x_max, std::abs(o.orbit.multipliers[0]),
+                o.orbit.sticks, o.orbit.extrema.x_max, std::abs(o.orbit.multipliers[0]),
                 o.orbit.stable ? "stable" : "unstable", o.from_exit_map ? "exit map" : "strobe");
   return r;
 }
@@ -47,8 +47,8 @@ TEST(ForcedScan, FindsDenHartogsNonStopOrbit) {
     for (const ForcedScanOrbit& o : r.orbits) {
       if (o.orbit.m != 1 || o.orbit.sticks != 0) continue;
       ++nonstop;
-      EXPECT_NEAR(o.orbit.extremes.x_max, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
-      EXPECT_NEAR(-o.orbit.extremes.x_min, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
+      EXPECT_NEAR(o.orbit.extrema.x_max, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
+      EXPECT_NEAR(-o.orbit.extrema.x_min, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
     }
     EXPECT_EQ(nonstop, 1) << "Omega = " << w;
   }

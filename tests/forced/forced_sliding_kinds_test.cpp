@@ -153,7 +153,7 @@ TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
   ASSERT_NO_THROW(b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o));
   ASSERT_FALSE(b.rows.empty()) << b.message;
   EXPECT_EQ(b.rows.front().p, 0);
-  EXPECT_NEAR(b.rows.front().extremes.x_min, -b.rows.front().extremes.x_max, 1e-10);
+  EXPECT_NEAR(b.rows.front().extrema.x_min, -b.rows.front().extrema.x_max, 1e-10);
   double v_max = 0;
   for (const ForcedBranchRow& r : b.rows) {
     EXPECT_GE(r.p, 0);

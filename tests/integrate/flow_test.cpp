@@ -85,7 +85,7 @@ TEST(Flow, CrossesIntoSlipAboveAndBack) {
   ASSERT_GE(r.crossings, 1);
   EXPECT_EQ(r.modes[0], Mode::kSlipAbove);
   EXPECT_EQ(r.modes[1], Mode::kSlipBelow);
-  EXPECT_GT(r.xdot_max, p.v);
+  EXPECT_GT(r.extrema.xdot_max, p.v);
   // Refining the tolerance moves the arrival by no more than the tolerance allows.
   FlowOptions tight;
   tight.rtol = 1e-13;

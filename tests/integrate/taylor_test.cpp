@@ -80,9 +80,9 @@ TEST(Taylor, StickSlipOrbitsMatchTheReferenceForEveryLaw) {
     const FlowResult r = StickSlipRun(c.p, Taylor(1e-13), &period);
     const double T = static_cast<double>(ref.period);
     EXPECT_NEAR(period, T, 1e-12 * T) << c.name;
-    EXPECT_NEAR(r.x_max, static_cast<double>(ref.x_max), 1e-12) << c.name;
-    EXPECT_NEAR(r.x_min, static_cast<double>(ref.x_min), 1e-12) << c.name;
-    EXPECT_NEAR(r.xdot_min, static_cast<double>(ref.xdot_min), 1e-12) << c.name;
+    EXPECT_NEAR(r.extrema.x_max, static_cast<double>(ref.x_max), 1e-12) << c.name;
+    EXPECT_NEAR(r.extrema.x_min, static_cast<double>(ref.x_min), 1e-12) << c.name;
+    EXPECT_NEAR(r.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-12) << c.name;
     EXPECT_EQ(r.crossings, ref.crossings) << c.name;
   }
 }
@@ -109,7 +109,7 @@ TEST(Taylor, SlipAboveTheBeltMatchesTheReference) {
       EXPECT_EQ(r.status, FlowStatus::kStick) << c.name;
       EXPECT_NEAR(r.t, static_cast<double>(t), 1e-12 * r.t) << c.name;
       EXPECT_NEAR(r.z[0], static_cast<double>(xa), 1e-12) << c.name;
-      EXPECT_NEAR(r.xdot_max, static_cast<double>(e.xdot_max), 1e-12) << c.name;
+      EXPECT_NEAR(r.extrema.xdot_max, static_cast<double>(e.xdot_max), 1e-12) << c.name;
     } else {
       ADD_FAILURE() << c.name << ": crossed at x = " << static_cast<double>(xa);
     }
@@ -199,10 +199,10 @@ TEST(Taylor, PassesExtremaAndStopsAtTheSectionOnTheClosedForm) {
     ASSERT_EQ(r.status, FlowStatus::kSection) << r.message;
     const double tol = 100 * rtol;
     EXPECT_NEAR(r.t, 2 * M_PI - 0.1, tol) << "rtol " << rtol;
-    EXPECT_NEAR(r.x_min, p.mu_k - R, tol) << "rtol " << rtol;
-    EXPECT_NEAR(r.x_max, p.mu_k + R, tol) << "rtol " << rtol;
-    EXPECT_NEAR(r.xdot_min, -R, tol) << "rtol " << rtol;
-    EXPECT_NEAR(r.xdot_max, R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.extrema.x_min, p.mu_k - R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.extrema.x_max, p.mu_k + R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.extrema.xdot_min, -R, tol) << "rtol " << rtol;
+    EXPECT_NEAR(r.extrema.xdot_max, R, tol) << "rtol " << rtol;
     EXPECT_LE(flow.total_steps(), max_steps) << "rtol " << rtol;
   }
 }
@@ -230,7 +230,7 @@ TEST(Taylor, ResolvesAGrazingWithin1e14) {
   EXPECT_NEAR(r.t, over.Arrival(), 1e-7);
   const FlowResult q = RunTouch(under, Taylor());
   EXPECT_EQ(q.status, FlowStatus::kTimeLimit);  // passes under x' = v
-  EXPECT_NEAR(q.xdot_max, under.R, 1e-13);
+  EXPECT_NEAR(q.extrema.xdot_max, under.R, 1e-13);
 }
 
 TEST(Taylor, ErrorIsProportionalToTheTolerance) {

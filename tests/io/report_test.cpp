@@ -121,7 +121,7 @@ TEST(Report, FiguresOfEmptyResultsAreDrawn) {
     p.p = 0.45 + 0.01 * i;
     p.period = std::nan("");
     p.t_stick = std::nan("");
-    p.x_min = p.x_max = 0.25;
+    p.extrema.x_min = p.extrema.x_max = 0.25;
     p.multiplier = -0.01;
     p.stable = true;
     equilibrium_only.points.push_back(p);

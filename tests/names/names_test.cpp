@@ -9,10 +9,22 @@
 #include <string>
 
 #include "stickslip/basin/basin.hpp"
+#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/chaos/lyapunov.hpp"
+#include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/chart/chart.hpp"
+#include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/estimates/estimates.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/orbit.hpp"
+#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/forced/simulate.hpp"
+#include "stickslip/integrate/flow.hpp"
+#include "stickslip/io/figure_style.hpp"
+#include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip {
 namespace {
@@ -45,6 +57,52 @@ TEST(Names, EveryTableRoundTrips) {
   RoundTrip<CurvePointType>("CurvePointType");
   RoundTrip<CurveEndKind>("CurveEndKind");
   RoundTrip<Codim2Label>("Codim2Label");
+}
+
+// The tables that replaced the enum-to-string switches (issue 19, item 5).
+template <typename E>
+void Covers(const char* what, E last) {
+  RoundTrip<E>(what);
+  EXPECT_EQ(NameCount<E>(), static_cast<size_t>(last) + 1) << what;
+  for (size_t i = 0; i < NameCount<E>(); ++i)
+    EXPECT_STRNE(Name(static_cast<E>(i)), "?") << what << " value " << i;
+}
+
+TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
+  Covers("Mode", Mode::kSlipAbove);
+  Covers("LawKind", LawKind::kLeine);
+  Covers("Integrator", Integrator::kCvode);
+  Covers("Method", Method::kBdf);
+  Covers("FlowStatus", FlowStatus::kCancelled);
+  Covers("OrbitKind", OrbitKind::kPureSlip);
+  Covers("OrbitStatus", OrbitStatus::kCancelled);
+  Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
+  Covers("FigureFormat", FigureFormat::kSvg);
+  Covers("AttractorKind", AttractorKind::kFailed);
+  Covers("LyapunovStatus", LyapunovStatus::kCancelled);
+  Covers("SweepDirection", SweepDirection::kDown);
+  Covers("ForcedEventKind", ForcedEventKind::kTouch);
+  Covers("ForcedStatus", ForcedStatus::kFailed);
+  Covers("ForcedOrbitStatus", ForcedOrbitStatus::kFlowFailed);
+  Covers("ForcedScanStatus", ForcedScanStatus::kCancelled);
+  Covers("ForcedAxis", ForcedAxis::kBeta);
+  Covers("ForcedBranchStatus", ForcedBranchStatus::kLeftRange);
+  Covers("ForcedLabel", ForcedLabel::kSL);
+  Covers("ForcedSimulationStatus", ForcedSimulationStatus::kCancelled);
+  Covers("ForcedSection", ForcedSection::kExit);
+  Covers("ForcedCurveKind", ForcedCurveKind::kGR);
+  Covers("ForcedCodim2Label", ForcedCodim2Label::kSliding);
+}
+
+// Names the files and options carry (docs/formats.md, docs/cli.md).
+TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
+  EXPECT_STREQ(LawName(LawKind::kStribeck), "stribeck");
+  EXPECT_STREQ(IntegratorName(Integrator::kCvode), "cvode");
+  EXPECT_STREQ(ForcedLabelName(ForcedLabel::kNone), "");
+  EXPECT_STREQ(ForcedLabelName(ForcedLabel::kPD), "PD");
+  EXPECT_STREQ(ForcedCodim2Name(ForcedCodim2Label::kFoldFlip), "LPPD");
+  EXPECT_STREQ(ForcedAxisName(ForcedAxis::kOmega), "omega");
+  EXPECT_STREQ(FigureFormatName(FigureFormat::kPng), "png");
 }
 
 TEST(Names, TablesCoverEveryEnumerator) {

@@ -80,7 +80,7 @@ TEST(OrbitScan, FindsEveryPureSlipOrbitAndMatchesTheReference) {
       EXPECT_NEAR(o.period, static_cast<double>(ref.period), 1e-8);
       EXPECT_NEAR(o.multiplier, static_cast<double>(ref.multiplier), 1e-7);
       EXPECT_EQ(o.stable, ref.multiplier < 1);
-      EXPECT_LT(o.xdot_max, c.v);
+      EXPECT_LT(o.extrema.xdot_max, c.v);
     }
     // Steady sliding: xbar = mu(v), stable where 2 beta + mu'(v) > 0.
     const reference::Law law(p);
@@ -101,7 +101,7 @@ TEST(OrbitScan, StickSlipOrbitMatchesTheReference) {
     ASSERT_TRUE(ref.found);
     ASSERT_TRUE(r.has_stick_slip);
     EXPECT_NEAR(r.stick_slip.period, static_cast<double>(ref.period), 1e-8);
-    EXPECT_NEAR(r.stick_slip.x_max, static_cast<double>(ref.x_max), 1e-9);
+    EXPECT_NEAR(r.stick_slip.extrema.x_max, static_cast<double>(ref.x_max), 1e-9);
     EXPECT_TRUE(r.stick_slip.stable);
   }
   // Cubic v = 0.42, past grazing: no stick-slip orbit.

@@ -42,9 +42,10 @@ TEST(Orbit, StickSlipMatchesTheReferenceIncludingHardCases) {
     const double scale = v < 0.01 ? 1e-9 / v : 1e-9;  // T ~ 1/v: x_a errors amplify
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), scale) << "v = " << v;
     EXPECT_NEAR(r.orbit.t_stick, static_cast<double>(ref.t_stick), scale) << "v = " << v;
-    EXPECT_NEAR(r.orbit.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.x_min, static_cast<double>(ref.x_min), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.x_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
+        << "v = " << v;
     EXPECT_GT(r.orbit.t_stick, 0.0);
   }
 }
@@ -80,14 +81,15 @@ TEST(Orbit, PureSlipMatchesReferenceAndTheTraceFormula) {
         reference::PureSlip(p, static_cast<long double>(r.orbit.start[0]));
     ASSERT_TRUE(ref.found);
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
+        << "v = " << v;
     // Trace formula exp(oint(-2 beta + F'(x' - v)) dt), integrated by the reference.
     EXPECT_NEAR(r.orbit.multiplier, static_cast<double>(ref.multiplier), 1e-8) << "v = " << v;
     EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-7);
     EXPECT_NEAR(r.orbit.eigenvalues[1].real(), r.orbit.multiplier, 1e-7);
     EXPECT_TRUE(r.orbit.stable);
-    EXPECT_LT(r.orbit.xdot_max, v);
+    EXPECT_LT(r.orbit.extrema.xdot_max, v);
   }
 }
 
@@ -99,8 +101,8 @@ TEST(Orbit, JustAboveGrazingPassesWithinAHairOfTheBeltAndDoesNotStick) {
   EXPECT_EQ(finder.StickSlip(true).status, OrbitStatus::kMissed);
   const OrbitResult r = finder.PureSlip(0.45);
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_LT(r.orbit.xdot_max, p.v);
-  EXPECT_LT(p.v - r.orbit.xdot_max, 1e-5);  // within a hair of x' = v
+  EXPECT_LT(r.orbit.extrema.xdot_max, p.v);
+  EXPECT_LT(p.v - r.orbit.extrema.xdot_max, 1e-5);  // within a hair of x' = v
   EXPECT_EQ(r.orbit.t_stick, 0.0);
   // Just below: the stick phase is short but present.
   OrbitFinder below(Model(Seed(v_gr - 5e-7)), Tight());
@@ -120,7 +122,7 @@ TEST(Orbit, ConvergesCloseUnderTheHopfPoint) {
   // Averaging (Thomsen & Fidlin 2003): amplitude 2 sqrt((k1 - 2b - 3 k3 v^2) / (3 k3)),
   // exact to leading order at the Hopf point.
   const double a_avg = 2 * std::sqrt((p.k1() - 2 * p.beta - 3 * p.k3() * p.v * p.v) / (3 * p.k3()));
-  EXPECT_NEAR(r.orbit.xdot_max - r.orbit.xdot_min, 2 * a_avg, 0.05 * a_avg);
+  EXPECT_NEAR(r.orbit.extrema.xdot_max - r.orbit.extrema.xdot_min, 2 * a_avg, 0.05 * a_avg);
 }
 
 TEST(Orbit, LeinePublishedValues) {
@@ -136,11 +138,11 @@ TEST(Orbit, LeinePublishedValues) {
   ASSERT_TRUE(r.ok()) << r.message;
   // The published x_max agrees to 7e-9 only; this code and the independent
   // long-double integrator agree to 1e-12 at 1.13394467644 (docs/validation.md).
-  EXPECT_NEAR(r.orbit.x_max, static_cast<double>(reference::kLeineXMax), 1e-8);
+  EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(reference::kLeineXMax), 1e-8);
   EXPECT_NEAR(r.orbit.period, static_cast<double>(reference::kLeinePeriod), 1e-3);
   const reference::StickSlipOrbit ref = reference::StickSlip(p);
   ASSERT_TRUE(ref.found);
-  EXPECT_NEAR(r.orbit.x_max, static_cast<double>(ref.x_max), 1e-10);
+  EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-10);
   EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9);
 }
 
@@ -178,7 +180,7 @@ TEST(Orbit, StribeckCoexistenceOfThreeSolutions) {
   ASSERT_EQ(ps.size(), 1u);
   EXPECT_FALSE(ps[0].stable);
   EXPECT_GT(ps[0].multiplier, 1.0);
-  EXPECT_LT(ps[0].xdot_max, p.v);
+  EXPECT_LT(ps[0].extrema.xdot_max, p.v);
   const reference::PureSlipOrbit ref =
       reference::PureSlip(p, static_cast<long double>(ps[0].start[0]));
   ASSERT_TRUE(ref.found);
@@ -214,8 +216,8 @@ TEST(Orbit, StickSlipThroughSlipAboveTheBelt) {
   EXPECT_EQ(r.orbit.modes[1], Mode::kSlipAbove);
   EXPECT_EQ(r.orbit.modes.back(), Mode::kStick);
   EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9);
-  EXPECT_NEAR(r.orbit.xdot_max, static_cast<double>(ref.xdot_max), 1e-9);
-  EXPECT_NEAR(r.orbit.x_min, static_cast<double>(ref.x_min), 1e-9);
+  EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.xdot_max), 1e-9);
+  EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.x_min), 1e-9);
   // Still superstable: S_in kills the velocity perturbation whatever came before.
   EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-8);
   EXPECT_NEAR(std::abs(r.orbit.eigenvalues[1]), 0.0, 1e-8);
@@ -237,8 +239,10 @@ TEST(Orbit, PureSlipAtDefaultOptionsMatchesTheReferenceFixedPoint) {
     ASSERT_TRUE(ref.found) << "v = " << v;
     EXPECT_NEAR(r.orbit.start[0], static_cast<double>(ref.x_section), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.xdot_max, static_cast<double>(ref.xdot_max), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
+        << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.xdot_max), 1e-9)
+        << "v = " << v;
   }
 }
 

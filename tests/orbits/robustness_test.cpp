@@ -130,10 +130,10 @@ std::string NonFinite(const std::vector<std::pair<const char*, double>>& fields)
 std::string NonFinite(const ss::Orbit& o) {
   return NonFinite({{"period", o.period},
                     {"t_stick", o.t_stick},
-                    {"x_min", o.x_min},
-                    {"x_max", o.x_max},
-                    {"xdot_min", o.xdot_min},
-                    {"xdot_max", o.xdot_max},
+                    {"x_min", o.extrema.x_min},
+                    {"x_max", o.extrema.x_max},
+                    {"xdot_min", o.extrema.xdot_min},
+                    {"xdot_max", o.extrema.xdot_max},
                     {"multiplier", o.multiplier},
                     {"start.x", o.start[0]},
                     {"start.xdot", o.start[1]}});
@@ -141,10 +141,10 @@ std::string NonFinite(const ss::Orbit& o) {
 
 std::string NonFinite(const ss::BranchPoint& pt) {
   std::vector<std::pair<const char*, double>> f = {{"p", pt.p},
-                                                   {"x_min", pt.x_min},
-                                                   {"x_max", pt.x_max},
-                                                   {"xdot_min", pt.xdot_min},
-                                                   {"xdot_max", pt.xdot_max},
+                                                   {"x_min", pt.extrema.x_min},
+                                                   {"x_max", pt.extrema.x_max},
+                                                   {"xdot_min", pt.extrema.xdot_min},
+                                                   {"xdot_max", pt.extrema.xdot_max},
                                                    {"multiplier", pt.multiplier},
                                                    {"amplitude", pt.amplitude}};
   if (pt.kind != ss::PointKind::kEquilibrium) f.push_back({"period", pt.period});
@@ -328,16 +328,16 @@ void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& 
   const std::string bad = NonFinite({{"t", r.t},
                                      {"x", r.z[0]},
                                      {"xdot", r.z[1]},
-                                     {"x_min", r.x_min},
-                                     {"x_max", r.x_max},
-                                     {"xdot_min", r.xdot_min},
-                                     {"xdot_max", r.xdot_max},
+                                     {"x_min", r.extrema.x_min},
+                                     {"x_max", r.extrema.x_max},
+                                     {"xdot_min", r.extrema.xdot_min},
+                                     {"xdot_max", r.extrema.xdot_max},
                                      {"t_stick", r.t_stick}});
   EXPECT_TRUE(bad.empty()) << what << ": simulation returned " << bad;
-  EXPECT_LE(r.x_min, r.x_max) << what;
-  EXPECT_LE(r.xdot_min, r.xdot_max) << what;
-  EXPECT_LE(r.xdot_min, r.z[1] + 1e-9) << what;
-  EXPECT_GE(r.xdot_max, r.z[1] - 1e-9) << what;
+  EXPECT_LE(r.extrema.x_min, r.extrema.x_max) << what;
+  EXPECT_LE(r.extrema.xdot_min, r.extrema.xdot_max) << what;
+  EXPECT_LE(r.extrema.xdot_min, r.z[1] + 1e-9) << what;
+  EXPECT_GE(r.extrema.xdot_max, r.z[1] - 1e-9) << what;
   if (r.mode == ss::Mode::kStick) {
     EXPECT_EQ(r.z[1], p.v) << what;
   }
@@ -373,9 +373,9 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally, s
     // The slip phase reaches the belt speed; it may cross into slip above
     // (x' > v) and come back to stick from there.
     if (o.crossings == 0) {
-      EXPECT_NEAR(o.xdot_max, model.v(), 1e-6 * std::max(1.0, model.v())) << what;
+      EXPECT_NEAR(o.extrema.xdot_max, model.v(), 1e-6 * std::max(1.0, model.v())) << what;
     } else {
-      EXPECT_GE(o.xdot_max, model.v()) << what;
+      EXPECT_GE(o.extrema.xdot_max, model.v()) << what;
     }
     return;
   }

@@ -190,8 +190,8 @@ TEST(Seam, StickSlipOrbitOfASecondSystemMatchesClosedForm) {
   const Orbit& o = r.orbit;
   EXPECT_NEAR(o.period, double(c.t_slip + c.t_stick), 1e-10 * o.period);
   EXPECT_NEAR(o.t_stick, double(c.t_stick), 1e-10);
-  EXPECT_NEAR(o.x_max, double(c.x_max), 1e-10);
-  EXPECT_NEAR(o.x_min, double(c.x_min), 1e-10);
+  EXPECT_NEAR(o.extrema.x_max, double(c.x_max), 1e-10);
+  EXPECT_NEAR(o.extrema.x_min, double(c.x_min), 1e-10);
   ASSERT_TRUE(o.has_floquet);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(o.monodromy(i), c.monodromy(i), 1e-10) << "entry " << i;
   // Multipliers {1, 0}: the flow direction, and the stick phase's collapse.

@@ -15,11 +15,23 @@
 #include <vector>
 
 #include "stickslip/chaos/lyapunov.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
 enum class AttractorKind { kPeriodic, kRest, kChaotic, kUndecided, kUnbounded, kFailed };
 const char* AttractorKindName(AttractorKind k);  // "periodic", "rest", "chaotic", ...
+template <>
+struct EnumNames<AttractorKind> {
+  static constexpr NamedValue<AttractorKind> kTable[] = {
+      {AttractorKind::kPeriodic, "periodic"},
+      {AttractorKind::kRest, "rest"},
+      {AttractorKind::kChaotic, "chaotic"},
+      {AttractorKind::kUndecided, "undecided"},
+      {AttractorKind::kUnbounded, "unbounded"},
+      {AttractorKind::kFailed, "failed"},
+  };
+};
 
 struct Attractor {
   AttractorKind kind = AttractorKind::kUndecided;

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "stickslip/forced/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -54,6 +55,15 @@ enum class LyapunovStatus {
   kCancelled,
 };
 const char* LyapunovStatusName(LyapunovStatus s);
+template <>
+struct EnumNames<LyapunovStatus> {
+  static constexpr NamedValue<LyapunovStatus> kTable[] = {
+      {LyapunovStatus::kDone, "done"},
+      {LyapunovStatus::kFlowFailed, "flow-failed"},
+      {LyapunovStatus::kDiverged, "diverged"},
+      {LyapunovStatus::kCancelled, "cancelled"},
+  };
+};
 
 struct StroboscopicRun {
   LyapunovStatus status = LyapunovStatus::kDone;

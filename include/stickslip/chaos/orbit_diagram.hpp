@@ -13,11 +13,19 @@
 
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/forced/branch.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
 enum class SweepDirection { kUp, kDown };
 const char* SweepDirectionName(SweepDirection d);  // "up", "down"
+template <>
+struct EnumNames<SweepDirection> {
+  static constexpr NamedValue<SweepDirection> kTable[] = {
+      {SweepDirection::kUp, "up"},
+      {SweepDirection::kDown, "down"},
+  };
+};
 
 struct OrbitDiagramOptions {
   ForcedAxis axis = ForcedAxis::kOmega;

@@ -16,6 +16,7 @@
 #include "stickslip/chaos/forced_basin.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/forced/branch.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -38,6 +39,15 @@ struct ForcedPlane {
 
 enum class ForcedCurveKind { kLP, kPD, kNS, kGR };
 const char* ForcedCurveName(ForcedCurveKind k);  // "LP", "PD", "NS", "GR"
+template <>
+struct EnumNames<ForcedCurveKind> {
+  static constexpr NamedValue<ForcedCurveKind> kTable[] = {
+      {ForcedCurveKind::kLP, "LP"},
+      {ForcedCurveKind::kPD, "PD"},
+      {ForcedCurveKind::kNS, "NS"},
+      {ForcedCurveKind::kGR, "GR"},
+  };
+};
 
 struct ForcedCurvePoint {
   double p1 = 0, p2 = 0;
@@ -46,7 +56,7 @@ struct ForcedCurvePoint {
   /// orbit would stick at the section (the map is not smooth there).
   double phase = 0;
   int sticks = 0, crossings = 0;
-  double x_min = 0, x_max = 0;
+  Extrema extrema;  ///< the table writes x_min, x_max
   std::complex<double> multipliers[2];
   /// NS: the multipliers are real (mu1 mu2 = 1, a neutral saddle, no NS).
   /// GR: the margin is a crossing's (else a grazing's).
@@ -71,6 +81,15 @@ enum class ForcedCodim2Label {
   kSliding,   ///< the orbit's stick structure changes on an LP/PD/NS curve (it ends on GR)
 };
 const char* ForcedCodim2Name(ForcedCodim2Label l);  // "R1", "R2", "LPPD", "SL"
+template <>
+struct EnumNames<ForcedCodim2Label> {
+  static constexpr NamedValue<ForcedCodim2Label> kTable[] = {
+      {ForcedCodim2Label::kR1, "R1"},
+      {ForcedCodim2Label::kR2, "R2"},
+      {ForcedCodim2Label::kFoldFlip, "LPPD"},
+      {ForcedCodim2Label::kSliding, "SL"},
+  };
+};
 
 struct ForcedCodim2 {
   ForcedCodim2Label label = ForcedCodim2Label::kR1;

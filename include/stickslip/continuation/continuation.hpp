@@ -39,7 +39,7 @@ struct BranchPoint {
   PointKind kind = PointKind::kEquilibrium;
   int branch = 0;     // which curve: rows of one branch are consecutive
   double period = 0;  // nan for the equilibrium
-  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  Extrema extrema;
   double t_stick = 0;
   /// Nontrivial Floquet multiplier; for the equilibrium the largest real part
   /// of its eigenvalues.
@@ -71,7 +71,8 @@ const char* SpecialLabel(SpecialKind k);  // "GR", "HB", "LP"
 struct SpecialPoint {
   SpecialKind kind = SpecialKind::kHopf;
   double p = 0;
-  double period = 0, x_min = 0, x_max = 0, xdot_min = 0;
+  double period = 0;
+  Extrema extrema;  // the table writes x_min, x_max, xdot_min
   /// GR: the nontrivial multiplier on the stick-slip side and on the pure-slip side.
   double multiplier_before = 0, multiplier_after = 0;
   /// The point's state: HB (xbar, 0); GR the exit point (x0, v); LP the

@@ -15,12 +15,22 @@
 
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/forced/orbit.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
 /// The continued parameter of the forced model.
 enum class ForcedAxis { kOmega, kForce, kV, kBeta };
 const char* ForcedAxisName(ForcedAxis a);  // "omega", "force", "v", "beta"
+template <>
+struct EnumNames<ForcedAxis> {
+  static constexpr NamedValue<ForcedAxis> kTable[] = {
+      {ForcedAxis::kOmega, "omega"},
+      {ForcedAxis::kForce, "force"},
+      {ForcedAxis::kV, "v"},
+      {ForcedAxis::kBeta, "beta"},
+  };
+};
 double GetAxis(const ForcedParams& p, ForcedAxis a);
 void SetAxis(ForcedParams& p, ForcedAxis a, double value);
 
@@ -37,12 +47,26 @@ void SetAxis(ForcedParams& p, ForcedAxis a, double value);
 ///   SL any other change of the stick structure (several at once).
 enum class ForcedLabel { kNone, kLP, kPD, kNS, kGR, kSW, kAD, kCR, kSL };
 const char* ForcedLabelName(ForcedLabel l);  // "", "LP", "PD", "NS", "GR", ...
+template <>
+struct EnumNames<ForcedLabel> {
+  static constexpr NamedValue<ForcedLabel> kTable[] = {
+      {ForcedLabel::kNone, ""},
+      {ForcedLabel::kLP, "LP"},
+      {ForcedLabel::kPD, "PD"},
+      {ForcedLabel::kNS, "NS"},
+      {ForcedLabel::kGR, "GR"},
+      {ForcedLabel::kSW, "SW"},
+      {ForcedLabel::kAD, "AD"},
+      {ForcedLabel::kCR, "CR"},
+      {ForcedLabel::kSL, "SL"},
+  };
+};
 
 struct ForcedBranchRow {
   double p = 0;
   double x0 = 0, xdot0 = 0;  ///< the stroboscopic point at theta = 0
   int m = 1, sticks = 0, crossings = 0;
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   std::complex<double> multipliers[2];
   bool stable = false;
   ForcedLabel label = ForcedLabel::kNone;  ///< special points only
@@ -60,6 +84,19 @@ enum class ForcedBranchStatus {
   kLeftRange,  ///< the branch turned back and passed p = from
 };
 const char* ForcedBranchStatusName(ForcedBranchStatus s);
+template <>
+struct EnumNames<ForcedBranchStatus> {
+  static constexpr NamedValue<ForcedBranchStatus> kTable[] = {
+      {ForcedBranchStatus::kReachedEnd, "reached-end"},
+      {ForcedBranchStatus::kUnbounded, "unbounded"},
+      {ForcedBranchStatus::kStepTooSmall, "step-too-small"},
+      {ForcedBranchStatus::kStartFailed, "start-failed"},
+      {ForcedBranchStatus::kMaxPoints, "max-points"},
+      {ForcedBranchStatus::kClosed, "closed"},
+      {ForcedBranchStatus::kCancelled, "cancelled"},
+      {ForcedBranchStatus::kLeftRange, "left-range"},
+  };
+};
 
 struct ForcedBranchOptions {
   ForcedOptions flow;

@@ -11,6 +11,7 @@
 
 #include "stickslip/integrate/flow.hpp"  // Integrator, Method
 #include "stickslip/model/forced.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -37,21 +38,20 @@ struct ForcedOptions {
 
 enum class ForcedEventKind { kStickIn, kStickOut, kCrossing, kTouch };
 const char* ForcedEventName(ForcedEventKind k);  // "stick-in", "stick-out", "crossing", "touch"
+template <>
+struct EnumNames<ForcedEventKind> {
+  static constexpr NamedValue<ForcedEventKind> kTable[] = {
+      {ForcedEventKind::kStickIn, "stick-in"},
+      {ForcedEventKind::kStickOut, "stick-out"},
+      {ForcedEventKind::kCrossing, "crossing"},
+      {ForcedEventKind::kTouch, "touch"},
+  };
+};
 
 struct ForcedEvent {
   ForcedEventKind kind;
   double t, x;  ///< x' = v at every event
   Mode before, after;
-};
-
-/// Running extremes of x and x'.
-struct ForcedExtremes {
-  double x_min = std::numeric_limits<double>::infinity(), x_max = -x_min;
-  double xdot_min = x_min, xdot_max = -x_min;
-  void Add(double x, double xdot) {
-    x_min = std::min(x_min, x), x_max = std::max(x_max, x);
-    xdot_min = std::min(xdot_min, xdot), xdot_max = std::max(xdot_max, xdot);
-  }
 };
 
 enum class ForcedStatus {
@@ -60,6 +60,14 @@ enum class ForcedStatus {
   kFailed,       ///< non-finite series, step underflow, or switching that does not advance t
 };
 const char* ForcedStatusName(ForcedStatus s);
+template <>
+struct EnumNames<ForcedStatus> {
+  static constexpr NamedValue<ForcedStatus> kTable[] = {
+      {ForcedStatus::kReached, "reached"},
+      {ForcedStatus::kTooMuchWork, "too-much-work"},
+      {ForcedStatus::kFailed, "failed"},
+  };
+};
 
 struct ForcedRun {
   ForcedStatus status = ForcedStatus::kReached;
@@ -68,7 +76,7 @@ struct ForcedRun {
   /// d(x, x')(end) / d(x, x')(start), saltation included (a start in stick
   /// has no x' direction: its second column is 0).
   Mat2 jacobian = Mat2::Identity();
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   int sticks = 0, exits = 0, crossings = 0;
   long steps = 0;  ///< Taylor steps in slip, polynomial steps in stick
 };

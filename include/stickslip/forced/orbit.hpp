@@ -9,6 +9,7 @@
 #include <string>
 
 #include "stickslip/forced/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -26,6 +27,15 @@ enum class ForcedOrbitStatus {
   kFlowFailed,     ///< the flow failed (message says where)
 };
 const char* ForcedOrbitStatusName(ForcedOrbitStatus s);
+template <>
+struct EnumNames<ForcedOrbitStatus> {
+  static constexpr NamedValue<ForcedOrbitStatus> kTable[] = {
+      {ForcedOrbitStatus::kConverged, "converged"},
+      {ForcedOrbitStatus::kNoConvergence, "no-convergence"},
+      {ForcedOrbitStatus::kSingular, "singular"},
+      {ForcedOrbitStatus::kFlowFailed, "flow-failed"},
+  };
+};
 
 struct ForcedOrbit {
   ForcedOrbitStatus status = ForcedOrbitStatus::kNoConvergence;
@@ -37,7 +47,7 @@ struct ForcedOrbit {
   std::complex<double> multipliers[2];  ///< |first| >= |second|
   bool stable = false;                  ///< every |multiplier| < 1
   int sticks = 0, crossings = 0;        ///< per period of the orbit
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   int iterations = 0;
   double update = 0;  ///< the last Newton update (max norm)
   long steps = 0;     ///< flow steps of the last evaluation
@@ -70,7 +80,7 @@ struct ForcedExitOrbit {
   double multiplier = 0;
   bool stable = false;
   int crossings = 0;
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   int iterations = 0;
   double update = 0;
 };

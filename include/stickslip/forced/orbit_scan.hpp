@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "stickslip/forced/orbit.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -35,6 +36,13 @@ enum class ForcedScanStatus {
   kCancelled,  ///< cancelled() returned true; the orbits found so far are kept
 };
 const char* ForcedScanStatusName(ForcedScanStatus s);
+template <>
+struct EnumNames<ForcedScanStatus> {
+  static constexpr NamedValue<ForcedScanStatus> kTable[] = {
+      {ForcedScanStatus::kOk, "ok"},
+      {ForcedScanStatus::kCancelled, "cancelled"},
+  };
+};
 
 struct ForcedScanOrbit {
   ForcedOrbit orbit;           ///< least period m, multipliers, stability, sticks

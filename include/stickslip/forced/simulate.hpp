@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stickslip/forced/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -17,6 +18,13 @@ enum class ForcedSection {
   kExit,    ///< every stick exit
 };
 const char* ForcedSectionName(ForcedSection s);  // "strobe", "exit"
+template <>
+struct EnumNames<ForcedSection> {
+  static constexpr NamedValue<ForcedSection> kTable[] = {
+      {ForcedSection::kStrobe, "strobe"},
+      {ForcedSection::kExit, "exit"},
+  };
+};
 
 struct ForcedSimulationOptions {
   ForcedOptions flow;
@@ -40,13 +48,21 @@ enum class ForcedSimulationStatus {
   kCancelled,  ///< cancelled() returned true; the rows so far are kept
 };
 const char* ForcedSimulationStatusName(ForcedSimulationStatus s);
+template <>
+struct EnumNames<ForcedSimulationStatus> {
+  static constexpr NamedValue<ForcedSimulationStatus> kTable[] = {
+      {ForcedSimulationStatus::kComplete, "complete"},
+      {ForcedSimulationStatus::kFailed, "failed"},
+      {ForcedSimulationStatus::kCancelled, "cancelled"},
+  };
+};
 
 struct ForcedSimulation {
   ForcedSimulationStatus status = ForcedSimulationStatus::kComplete;
   std::string message;
   std::vector<ForcedPoint> rows;  ///< by time; an event row has x' = v and the mode after it
   std::vector<ForcedSectionPoint> section;
-  ForcedExtremes extremes;
+  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
   long steps = 0;
   int sticks = 0, exits = 0, crossings = 0;
   bool ok() const { return status == ForcedSimulationStatus::kComplete; }

@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/integrate/extrema.hpp"
 #include "stickslip/model/model.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -26,6 +28,13 @@ enum class Integrator {
   kCvode,   // SUNDIALS CVODE with the linear multistep Method below
 };
 const char* IntegratorName(Integrator i);  // "taylor", "cvode"
+template <>
+struct EnumNames<Integrator> {
+  static constexpr NamedValue<Integrator> kTable[] = {
+      {Integrator::kTaylor, "taylor"},
+      {Integrator::kCvode, "cvode"},
+  };
+};
 
 // CVODE's linear multistep method (only with Integrator::kCvode).
 enum class Method {
@@ -33,6 +42,13 @@ enum class Method {
   kBdf,    // BDF with Newton and a dense linear solver: for stiff problems
 };
 const char* MethodName(Method m);  // "adams", "bdf"
+template <>
+struct EnumNames<Method> {
+  static constexpr NamedValue<Method> kTable[] = {
+      {Method::kAdams, "adams"},
+      {Method::kBdf, "bdf"},
+  };
+};
 
 struct FlowOptions {
   double rtol = 1e-11;  // relative tolerance
@@ -64,6 +80,18 @@ enum class FlowStatus {
   kCancelled,         // the cancel hook returned true
 };
 const char* FlowStatusName(FlowStatus s);
+template <>
+struct EnumNames<FlowStatus> {
+  static constexpr NamedValue<FlowStatus> kTable[] = {
+      {FlowStatus::kTimeLimit, "time-limit"},
+      {FlowStatus::kStick, "stick"},
+      {FlowStatus::kSection, "section"},
+      {FlowStatus::kVelocityMax, "velocity-max"},
+      {FlowStatus::kIntegratorFailed, "integrator-failed"},
+      {FlowStatus::kTooManySwitches, "too-many-switches"},
+      {FlowStatus::kCancelled, "cancelled"},
+  };
+};
 
 // One output point of a simulation.
 struct Sample {
@@ -81,7 +109,7 @@ struct FlowResult {
   Mode mode = Mode::kSlipBelow;
   // Extremes over the run, located as roots (x' = 0 for x, x'' = 0 for x'),
   // together with the segment end points.
-  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  Extrema extrema;
   double t_stick = 0;       // time spent in stick
   int switches = 0;         // mode changes
   int crossings = 0;        // crossings of x' = v without sticking

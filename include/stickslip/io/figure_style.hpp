@@ -11,11 +11,21 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/names.hpp"
+
 namespace stickslip {
 
 enum class FigureFormat { kPng, kPdf, kSvg };
 /// "png", "pdf", "svg": the --format value and the file extension.
 const char* FigureFormatName(FigureFormat f);
+template <>
+struct EnumNames<FigureFormat> {
+  static constexpr NamedValue<FigureFormat> kTable[] = {
+      {FigureFormat::kPng, "png"},
+      {FigureFormat::kPdf, "pdf"},
+      {FigureFormat::kSvg, "svg"},
+  };
+};
 /// False if text is none of the names above.
 bool ParseFigureFormat(const std::string& text, FigureFormat* f);
 /// stem + "." + the extension.

@@ -18,6 +18,15 @@ enum class LawKind {
 
 /// "cubic", "coulomb", "stribeck", "leine".
 const char* LawName(LawKind law);
+template <>
+struct EnumNames<LawKind> {
+  static constexpr NamedValue<LawKind> kTable[] = {
+      {LawKind::kCubic, "cubic"},
+      {LawKind::kCoulomb, "coulomb"},
+      {LawKind::kStribeck, "stribeck"},
+      {LawKind::kLeine, "leine"},
+  };
+};
 /// Throws InvalidArgument naming the string if it is no law.
 LawKind LawFromName(const std::string& name);
 

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -29,6 +30,14 @@ enum class Mode {
   kSlipAbove,  // x' > v: region Omega_+, eq. (3.8)
 };
 const char* ModeName(Mode m);  // "slip-below", "stick", "slip-above"
+template <>
+struct EnumNames<Mode> {
+  static constexpr NamedValue<Mode> kTable[] = {
+      {Mode::kSlipBelow, "slip-below"},
+      {Mode::kStick, "stick"},
+      {Mode::kSlipAbove, "slip-above"},
+  };
+};
 
 /// Steady sliding x = xbar, x' = 0, with eigenvalues of
 /// lambda^2 + damping lambda + stiffness = 0 (the belt: stiffness 1).

@@ -15,19 +15,27 @@
 #include <vector>
 
 #include "stickslip/integrate/flow.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
 /// Stick-slip (one stick phase per period) or pure slip (never sticks).
 enum class OrbitKind { kStickSlip, kPureSlip };
 const char* OrbitKindName(OrbitKind k);  // "stick-slip", "pure-slip"
+template <>
+struct EnumNames<OrbitKind> {
+  static constexpr NamedValue<OrbitKind> kTable[] = {
+      {OrbitKind::kStickSlip, "stick-slip"},
+      {OrbitKind::kPureSlip, "pure-slip"},
+  };
+};
 
 /// A periodic orbit: period, extremes, start point, segments and multipliers.
 struct Orbit {
   OrbitKind kind = OrbitKind::kStickSlip;
   double period = 0;
   double t_stick = 0;
-  double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
+  Extrema extrema;
   /// Stick-slip: the exit point (x0, v). Pure-slip: the point on x' = 0.
   Vec2 start = Vec2::Zero();
   std::vector<Mode> modes;  // segment sequence from start
@@ -74,6 +82,19 @@ enum class OrbitStatus {
 };
 /// "ok", "no-return", ... for messages.
 const char* OrbitStatusName(OrbitStatus s);
+template <>
+struct EnumNames<OrbitStatus> {
+  static constexpr NamedValue<OrbitStatus> kTable[] = {
+      {OrbitStatus::kOk, "ok"},
+      {OrbitStatus::kNoReturn, "no-return"},
+      {OrbitStatus::kIntegratorFailed, "integrator-failed"},
+      {OrbitStatus::kSticks, "sticks"},
+      {OrbitStatus::kNotConverged, "not-converged"},
+      {OrbitStatus::kCollapsed, "collapsed"},
+      {OrbitStatus::kMissed, "missed"},
+      {OrbitStatus::kCancelled, "cancelled"},
+  };
+};
 
 /// The outcome of one orbit search: status, message, the orbit, Newton steps.
 struct OrbitResult {

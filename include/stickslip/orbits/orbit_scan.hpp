@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -35,6 +36,14 @@ enum class OrbitScanStatus {
   kCancelled,  // cancelled() returned true
 };
 const char* OrbitScanStatusName(OrbitScanStatus s);
+template <>
+struct EnumNames<OrbitScanStatus> {
+  static constexpr NamedValue<OrbitScanStatus> kTable[] = {
+      {OrbitScanStatus::kOk, "ok"},
+      {OrbitScanStatus::kFailed, "failed"},
+      {OrbitScanStatus::kCancelled, "cancelled"},
+  };
+};
 
 struct PeriodicOrbits {
   OrbitScanStatus status = OrbitScanStatus::kOk;
