@@ -75,7 +75,8 @@ TEST_F(BasinApp, BadInputExits2AndWritesNothing) {
 }
 
 TEST_F(BasinApp, MaxTimeAndSigintLeaveAWholePartialFile) {
-  const std::string big = "--study " + kStudies + "/stribeck_basin.ini --nx 300 --ny 300 " +
+  // 360000 starts: about 10 s, well past the signal at 3 s (300 x 300 now ends before it).
+  const std::string big = "--study " + kStudies + "/stribeck_basin.ini --nx 600 --ny 600 " +
                           "--no_plots --out " + Out();
   EXPECT_EQ(Run(big + " --max_time 1"), 1);
   EXPECT_TRUE(Contains(err_, "partial"));
@@ -84,7 +85,7 @@ TEST_F(BasinApp, MaxTimeAndSigintLeaveAWholePartialFile) {
   EXPECT_EQ(tsv.back(), '\n');
   EXPECT_EQ(Run(big, "INT", 3), 1);
   EXPECT_TRUE(Contains(err_, "interrupted by signal 2"));
-  EXPECT_TRUE(Contains(err_, " of 90000 starts after "));  // the progress line
+  EXPECT_TRUE(Contains(err_, " of 360000 starts after "));  // the progress line
   tsv = ReadFile(Out() + "/basins.tsv");
   EXPECT_TRUE(Contains(tsv, "# status: partial (cancelled)"));
 }
