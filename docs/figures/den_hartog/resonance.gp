@@ -29,8 +29,8 @@ c(name) = column(name)
 in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s
 # a style's rows, and the row after each of its runs (no gap at a change)
 sel(b, k, s) = (cur = in(b, k, s), out = (cur || (prev && c('branch') == b)) ? c('x_max') : 1/0, prev = cur, out)
-set object 1 rect from 0.9766122338634435, graph 0 to 1.0227630451873286, graph 1 fc rgb '#e8e8e8' fs solid noborder behind
-set label 1 'not traced: |x| unbounded' at 1.0227630451873286, graph 0.93 offset 1, 0 tc rgb '#555555'
+set object 1 rect from 0.9766122338634436, graph 0 to 1.0227630451873284, graph 1 fc rgb '#e8e8e8' fs solid noborder behind
+set label 1 'not traced: |x| unbounded' at 1.0227630451873284, graph 0.93 offset 1, 0 tc rgb '#555555'
 set bmargin 8.5
 mu = 0.3; A = 1
 V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))

@@ -20,8 +20,8 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[4] = [0x08519c, 0x3182bd, 0x8c6d31, 0xd9d9d9]
-set label "R1" at 1.001884736183615,0.0036862363400181428 offset 0.7,0.7 left front font ',12' noenhanced
-set label "R1" at 0.98429735829431375,0.005596190986937589 offset 0.7,0.7 left front font ',12' noenhanced
+set label "R1" at 1.0018847361836156,0.0036862363400182526 offset 0.7,0.7 left front font ',12' noenhanced
+set label "R1" at 0.98429735829431209,0.0055961909869381788 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.012500000000000001):(0.001225):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \

@@ -34,8 +34,8 @@ set xrange [up*0.3:up*0.8]
 set output 'bifurcation_x.png'.suffix
 set ylabel "displacement x: min and max (dimensionless)"
 set label 100 'HB' at up*0.5493061443340549,ul*0.3 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at up*0.6519468583211343,ul*0.9689424675414184 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at up*0.6519468583211343,ul*0.9689424675414184 center offset 0,-1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211344,ul*0.9689424675414187 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211344,ul*0.9689424675414187 center offset 0,-1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6*ul : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6*ul : NaN) with lines ls 5 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $6*ul : NaN) with lines ls 1 notitle, \
@@ -51,8 +51,8 @@ unset output
 set output 'bifurcation_xdot.png'.suffix
 set ylabel "velocity dx/dt: min and max (dimensionless)"
 set label 100 'HB' at up*0.5493061443340549,uv*0 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at up*0.6519468583211343,uv*-0.6522320321553948 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at up*0.6519468583211343,uv*-0.6522320321553948 center offset 0,-1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211344,uv*-0.6522320321553948 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211344,uv*-0.6522320321553948 center offset 0,-1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8*uv : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8*uv : NaN) with lines ls 5 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8*uv : NaN) with lines ls 1 notitle, \
@@ -68,8 +68,8 @@ unset output
 set output 'period.png'.suffix
 set ylabel "period T (dimensionless)"
 set label 100 'HB' at up*0.5493061443340549,ut*6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at up*0.6519468583211343,ut*6.287235031161014 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at up*0.6519468583211343,ut*6.287235031161014 center offset 0,-1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211344,ut*6.287235031161014 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211344,ut*6.287235031161014 center offset 0,-1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 1 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $4*ut : NaN) with lines ls 4 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
@@ -82,8 +82,8 @@ set multiplot layout 2,1 title "stability along the branch"
 set lmargin 12
 set title "periodic orbits: stable while the multiplier is below 1"
 set ylabel "nontrivial Floquet multiplier"
-set label 100 'GR' at up*0.6519468583211343,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'LP' at up*0.6519468583211343,1*0 center offset 0,-1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.6519468583211344,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 101 'LP' at up*0.6519468583211344,1*0 center offset 0,-1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 1 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==0) ? $10*1 : NaN) with lines ls 4 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
