@@ -295,15 +295,15 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
     special_extra = PhysicalColumns(*prov.scales, opts.param.name(), r.special);
   }
   run.Phase("writing");
-  ss::TsvTable branch = ss::BranchTable(r, opts.param.name(), model, extra);
+  ss::TsvTable branch = ss::BranchTable(r, model, extra);
   branch.PrependMeta(prov.meta);
-  ss::TsvTable special = ss::SpecialPointTable(r, opts.param.name(), special_extra);
+  ss::TsvTable special = ss::SpecialPointTable(r, special_extra);
   special.PrependMeta(prov.meta);
   app.out().Write("branch.tsv", branch.str());
   app.out().Write("special_points.tsv", special.str());
   const std::string title = model + (r.partial() ? " (partial)" : "");
   app.out().Write("bifurcation.gp",
-                  ss::BifurcationScript(r, opts.param.name(), title, cmp.applies, format,
+                  ss::BifurcationScript(r, title, cmp.applies, format,
                                         cli::FigureUnitsOf(prov.scales, opts.param.name())));
   if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies, format),
                   ss::BifurcationFigures(true, format)))

@@ -49,6 +49,7 @@ ContinuationResult ContinueAsStatus(const Params& base, const ContinuationOption
     why = "unknown exception";
   }
   ContinuationResult r;
+  r.param = opts.param;  // the tables' parameter column
   std::lock_guard<std::mutex> lock(sh.m);
   r.points.assign(sh.points.begin(), sh.points.end());
   r.status = ContinuationStatus::kFailed;
@@ -116,7 +117,7 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
                     : std::string("cancelled before the first periodic orbit")) +
                 " (" + run.Reason() + ")";
   }
-  DropNonFinite(&r, param);
+  DropNonFinite(&r);
   return r;
 }
 

@@ -33,8 +33,8 @@ constexpr double kStepMargin = 0.7 + 1.4;
 // A step costs about p^2 + kLinearWork p (the Cauchy sums of the law's series
 // and of Phi, against sincos, exp, the event polynomials and root refinement):
 // the order minimises the work per unit time, (p^2 + b p) exp((L +
-// kStepMargin) / (p - 1)) (JZ's cost model p^2, widened as in
-// integrate/taylor_order.hpp). b = 0 gives about JZ (3.8), p = L / 2 + 1;
+// kStepMargin) / (p - 1)) (Jorba & Zou 2005, section 3.2: their cost p^2,
+// here with a linear term). b = 0 gives about JZ (3.8), p = L / 2 + 1;
 // b = 25 gives 22 at eps = 1e-12, where the measured time per forcing period
 // is least over p = 15 .. 27 (docs/benchmarks.md).
 constexpr double kLinearWork = 25;

@@ -50,7 +50,8 @@ std::pair<std::string, double> FirstNonFinite(const BranchPoint& p) {
 }
 }  // namespace
 
-void DropNonFinite(ContinuationResult* r, const std::string& param) {
+void DropNonFinite(ContinuationResult* r) {
+  const std::string param = r->param.name();
   std::string first;
   std::size_t dropped = 0;
   // The finite points are compacted in place: no copy of a long result.
@@ -84,8 +85,9 @@ void DropNonFinite(ContinuationResult* r, const std::string& param) {
   r->message = r->message.empty() ? what : r->message + "; " + what;
 }
 
-TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
-                     const std::string& model_description, const std::vector<ExtraColumn>& extra) {
+TsvTable BranchTable(const ContinuationResult& r, const std::string& model_description,
+                     const std::vector<ExtraColumn>& extra) {
+  const std::string param = r.param.name();
   std::vector<std::string> cols = {param,     "kind",       "branch",   "period",
                                    "x_min",   "x_max",      "xdot_min", "xdot_max",
                                    "t_stick", "multiplier", "stable",   "amplitude"};
@@ -131,8 +133,8 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
   return t;
 }
 
-TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
-                           const std::vector<ExtraColumn>& extra) {
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::vector<ExtraColumn>& extra) {
+  const std::string param = r.param.name();
   std::vector<std::string> cols = {"label", param,      "period",     "x_min",
                                    "x_max", "xdot_min", "description"};
   for (const auto& c : extra) {

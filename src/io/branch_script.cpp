@@ -190,9 +190,9 @@ std::vector<std::string> BifurcationFigures(bool estimates, FigureFormat format)
   return f;
 }
 
-std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
-                              const std::string& title, bool estimates, FigureFormat format,
-                              const FigureUnits& units) {
+std::string BifurcationScript(const ContinuationResult& r, const std::string& title, bool estimates,
+                              FigureFormat format, const FigureUnits& units) {
+  const std::string param = r.param.name();
   std::ostringstream os;
   os << "# Bifurcation diagrams written by ss_continue; run `gnuplot bifurcation.gp` in this\n"
      << "# directory. Solid: stable, dashed: unstable; blue stick-slip, vermillion pure slip,\n"

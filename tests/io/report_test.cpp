@@ -18,8 +18,8 @@
 
 #include "app_test_util.hpp"
 #include "cli/gnuplot.hpp"
-#include "stickslip/io/branch_report.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/io/branch_report.hpp"
 
 namespace stickslip {
 namespace {
@@ -28,8 +28,8 @@ using cli::GnuplotResult;
 using cli::GnuplotStatus;
 using cli::PngError;
 using cli::RunGnuplot;
-using testing_util::ReadFile;
 using testing_util::Listing;
+using testing_util::ReadFile;
 using testing_util::WriteFile;
 
 // A fresh directory, removed with everything in it at the end of the scope.
@@ -137,9 +137,9 @@ TEST(Report, FiguresOfEmptyResultsAreDrawn) {
         for (int c = 0; c < 7; ++c)
           extra.push_back(
               {"e" + std::to_string(c), std::vector<double>(r->points.size(), std::nan(""))});
-      WriteFileAtomically(dir + "/branch.tsv", BranchTable(*r, "v", "m", extra).str());
-      WriteFileAtomically(dir + "/special_points.tsv", SpecialPointTable(*r, "v").str());
-      WriteFileAtomically(dir + "/b.gp", BifurcationScript(*r, "v", "t", estimates));
+      WriteFileAtomically(dir + "/branch.tsv", BranchTable(*r, "m", extra).str());
+      WriteFileAtomically(dir + "/special_points.tsv", SpecialPointTable(*r).str());
+      WriteFileAtomically(dir + "/b.gp", BifurcationScript(*r, "t", estimates));
       std::string err;
       ASSERT_TRUE(RunGnuplot(dir + "/b.gp", dir, &err)) << err;
       for (const auto& f : BifurcationFigures(estimates))
@@ -161,13 +161,13 @@ TEST(Report, NonFiniteResultsAreDroppedAndTheRunFails) {
   eq.p = 0.3;
   eq.period = eq.t_stick = std::nan("");
   r.points = {good, bad, eq};
-  DropNonFinite(&r, "v");
+  DropNonFinite(&r);
   ASSERT_EQ(r.points.size(), 2u);
   EXPECT_EQ(r.points[0].p, 0.1);
   EXPECT_EQ(r.points[1].p, 0.3);
   EXPECT_EQ(r.status, ContinuationStatus::kFailed);
   EXPECT_NE(r.message.find("multiplier = nan at v = 0.2"), std::string::npos) << r.message;
-  const std::string table = BranchTable(r, "v", "m").str();
+  const std::string table = BranchTable(r, "m").str();
   EXPECT_EQ(table.find("\tinf"), std::string::npos);
   EXPECT_EQ(table.find("0.2\t"), std::string::npos);
 }

@@ -23,22 +23,20 @@ std::vector<std::pair<std::string, std::string>> SummaryFields(const Continuatio
 /// by design). If any is removed, r becomes kFailed (a cancelled r stays
 /// cancelled) and its message names the first such point and the count, so no
 /// nan or inf is ever written as a result.
-void DropNonFinite(ContinuationResult* r, const std::string& param);
+void DropNonFinite(ContinuationResult* r);
 
-/// Columns: <param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
+/// Columns: <r.param>, kind, branch, period, x_min, x_max, xdot_min, xdot_max,
 /// t_stick, multiplier, stable, amplitude, then the extra columns, then pt
 /// (the 1-based row number), x_start, xdot_start (BranchPoint). Metadata
 /// lines before the header: model, status (partial or complete), then the
 /// SummaryFields as `# key: value`.
-TsvTable BranchTable(const ContinuationResult& r, const std::string& param,
-                     const std::string& model_description,
+TsvTable BranchTable(const ContinuationResult& r, const std::string& model_description,
                      const std::vector<ExtraColumn>& extra = {});
 
-/// Columns: label, <param>, period, x_min, x_max, xdot_min, description, then
+/// Columns: label, <r.param>, period, x_min, x_max, xdot_min, description, then
 /// the extra columns (one value per special point), then pt (the row of
 /// branch.tsv it sits on), lab (GR1, HB1, ...; labels.hpp), x_start, xdot_start.
-TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param,
-                           const std::vector<ExtraColumn>& extra = {});
+TsvTable SpecialPointTable(const ContinuationResult& r, const std::vector<ExtraColumn>& extra = {});
 
 /// A gnuplot script drawing, from branch.tsv and special_points.tsv in its own
 /// directory (in the style of figure_style.hpp): bifurcation_x.png (x range), bifurcation_xdot.png
@@ -51,9 +49,8 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::string& param
 /// range of the branch against the seed's and the averaging estimates.
 /// `units` draws a physical run in SI units (figure_style.hpp; the default:
 /// dimensionless).
-std::string BifurcationScript(const ContinuationResult& r, const std::string& param,
-                              const std::string& title, bool estimates = false,
-                              FigureFormat format = FigureFormat::kPng,
+std::string BifurcationScript(const ContinuationResult& r, const std::string& title,
+                              bool estimates = false, FigureFormat format = FigureFormat::kPng,
                               const FigureUnits& units = {});
 /// The output files BifurcationScript draws (extension of `format`).
 std::vector<std::string> BifurcationFigures(bool estimates,
