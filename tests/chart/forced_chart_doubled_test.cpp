@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_trace.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/flow.hpp"
@@ -29,16 +30,9 @@ ForcedParams Stribeck(double a, double w) {
 // branch at force a, traced in Omega from 0.8 down to 0.5 from the state
 // settled over 200 periods.
 std::vector<double> DoubledPds(double a) {
-  const ForcedModel model(Stribeck(a, 0.8));
-  ForcedOptions flow;
-  ForcedRequest rq;
-  rq.t_end = 200 * model.period();
-  const ForcedRun tr = ForcedFlow(model, flow).Run(ForcedStart(model, 0, 0, 0.25), rq);
   ForcedBranchOptions o;
-  o.flow = flow;
   o.palc.ds = o.palc.ds_max = 0.01;
-  const ForcedBranch b =
-      ContinueForced(Stribeck(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x, tr.end.xdot, o);
+  const ForcedBranch b = testing_util::TraceOmega(Stribeck(a, 0.8), 0.8, 0.5, o);
   std::vector<double> pds;
   for (const ForcedBranchRow& r : b.special) {
     if (r.label != ForcedLabel::kPD || r.m != 1) continue;

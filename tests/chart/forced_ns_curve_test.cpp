@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_trace.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 
@@ -62,14 +63,9 @@ double LocateNs(const ForcedCurvePoint& p) { return LocateNsRow(p, p.p2).p; }
 const ForcedCurve& StudyCurve() {
   static const ForcedCurve curve = [] {
     const ForcedParams p = Scene(0.05, 1.3);
-    const ForcedModel m(p);
-    ForcedRequest rq;
-    rq.t_end = 200 * m.period();
-    const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.42), rq);
     ForcedBranchOptions bo;
     bo.palc.ds = bo.palc.ds_max = 0.01;
-    const ForcedBranch run =
-        ContinueForced(p, ForcedAxis::kOmega, 1.3, 1.05, tr.end.x, tr.end.xdot, bo);
+    const ForcedBranch run = testing_util::TraceOmega(p, 1.3, 1.05, bo);
     EXPECT_FALSE(run.special.empty()) << run.message;
     if (run.special.empty() || run.special[0].label != ForcedLabel::kNS) return ForcedCurve();
     const ForcedBranchRow& s = run.special[0];

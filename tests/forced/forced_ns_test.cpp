@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_trace.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/forced/branch.hpp"
 
@@ -66,14 +67,9 @@ double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
 }
 
 TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
-  const ForcedParams p = Scene(0.6);
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.6), rq);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = ContinueForced(p, ForcedAxis::kV, 0.6, 0.3, tr.end.x, tr.end.xdot, o);
+  const ForcedBranch b = testing_util::Trace(Scene(0.6), ForcedAxis::kV, 0.6, 0.3, o);
   EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 1u);
   const ForcedBranchRow& ns = b.special[0];
@@ -107,14 +103,10 @@ TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
 // against det(Phi) = 1 of the reference map bisected in Omega.
 TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
   ForcedParams p = Scene(0.41);
-  p.force = 0.02, p.omega = 2;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.41), rq);
+  p.force = 0.02;
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = ContinueForced(p, ForcedAxis::kOmega, 2, 0.6, tr.end.x, tr.end.xdot, o);
+  const ForcedBranch b = testing_util::TraceOmega(p, 2, 0.6, o);
   EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 2u);
   for (const ForcedBranchRow& ns : b.special) {
