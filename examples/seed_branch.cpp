@@ -20,7 +20,7 @@ int main() {
                 ss::ContinuationStatusName(r.status));
     for (const ss::SpecialPoint& s : r.special)
       std::printf("%s  v = %.10f  period %.6f  x in [%.6f, %.6f]\n", ss::SpecialLabel(s.kind), s.p,
-                  s.period, s.x_min, s.x_max);
+                  s.period, s.extrema.x_min, s.extrema.x_max);
     return r.partial() ? 1 : 0;
   } catch (const ss::Error& e) {
     std::fprintf(stderr, "seed_branch: %s\n", e.what());
