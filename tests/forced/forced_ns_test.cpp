@@ -131,14 +131,10 @@ TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
   ForcedParams p;
   p.base.law = LawKind::kCubic;
   p.base.beta = 0.05, p.base.v = 0.42, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
-  p.force = 0.05, p.omega = 1.3;
-  const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.42), rq);
+  p.force = 0.05;
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = ContinueForced(p, ForcedAxis::kOmega, 1.3, 0.6, tr.end.x, tr.end.xdot, o);
+  const ForcedBranch b = testing_util::TraceOmega(p, 1.3, 0.6, o);
   int checked = 0;
   for (const ForcedBranchRow& ns : b.special) {
     if (ns.label != ForcedLabel::kNS) continue;
