@@ -199,8 +199,8 @@ ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions&
   return Trace(base, options, s, message);
 }
 
-void FindCodim2(const ForcedCurve& c, int index,
-                std::vector<ForcedCodim2>* out);  // forced_codim2.cpp
+void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const ForcedCurve& c,
+                int index, std::vector<ForcedCodim2>* out);  // forced_codim2.cpp
 
 ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions& o) {
   const std::string e = o.ValidationError(base);
@@ -230,7 +230,7 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
           // A curve of stick-slip orbits often ends inside the rectangle where
           // the map stops being smooth (a sliding point): its ends say so.
           r.cut_curves += !why.empty();
-          FindCodim2(curve, static_cast<int>(r.curves.size()), &r.codim2);
+          FindCodim2(base, o, curve, static_cast<int>(r.curves.size()), &r.codim2);
           r.curves.push_back(std::move(curve));
         }
       }

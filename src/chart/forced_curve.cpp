@@ -18,6 +18,7 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
   rq.t_end = t0 + m_ * model.period();
   rq.variational = true;
   rq.events = &events;
+  rq.switching = !smooth();
   s->run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, u[0], u[1]), rq);
   if (s->run.status != ForcedStatus::kReached) {
     *why = s->run.message;
@@ -30,24 +31,22 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
   // GR (header): arrivals at x' = v, a crossing's margin |force| - mu_s > 0, a
   // stick-in's <= 0; without any, the distance of the velocity's extreme to v.
   const double mu_s = model.static_limit();
-  double cross = HUGE_VAL, stick_time = 0, t_in = 0;
+  double cross = HUGE_VAL;
   bool any = false;
-  for (const ForcedEvent& e : events) {
+  for (const ForcedEvent& e : events)
     if (e.kind == ForcedEventKind::kCrossing || e.kind == ForcedEventKind::kStickIn) {
       cross = std::min(cross, std::abs(model.StickForce(e.t, e.x)) - mu_s);
       any = true;
     }
-    if (e.kind == ForcedEventKind::kStickIn) t_in = e.t;
-    if (e.kind == ForcedEventKind::kStickOut) stick_time += e.t - t_in;
-  }
   if (crossing_) {
     s->crossing = true;
     s->margin = any ? cross : HUGE_VAL;
   } else {
     s->crossing = false;
+    // The slip field of the section point's side, continued across x' = v
+    // (smooth()): the gap is smooth through 0, negative past the grazing.
     const Extrema& x = s->run.extrema;
-    const double gap = x.xdot_max <= model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
-    s->margin = s->run.sticks > 0 ? -stick_time : gap;
+    s->margin = u[1] < model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
   }
   if (!std::isfinite(s->margin) && kind_ == ForcedCurveKind::kGR) {
     *why = "the orbit does not reach x' = v (no crossing, no stick)";
@@ -63,6 +62,7 @@ bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
   const double t0 = phase_ / model.omega();
   rq.t_end = t0 + m_ * model.period();
   rq.samples = &samples;
+  rq.switching = !smooth();
   const ForcedRun run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, (*u)[0], (*u)[1]), rq);
   if (run.status != ForcedStatus::kReached) return *why = run.message, false;
   const ForcedPoint* best = nullptr;
@@ -111,6 +111,7 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
     if (m_ % d != 0) continue;
     ForcedRequest rq;
     rq.t_end = t0 + d * model.period();
+    rq.switching = !smooth();
     const ForcedRun r =
         ForcedFlow(model, flow_).Run(ForcedStart(model, t0, next.u[0], next.u[1]), rq);
     if (r.status == ForcedStatus::kReached &&

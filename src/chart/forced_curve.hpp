@@ -8,10 +8,13 @@
 //   GR  the boundary of non-stop motion: the margin of the orbit's arrivals
 //       at x' = v outside the stick band, |x + 2 beta v - A cos Omega t| - mu_s
 //       at a crossing (a crossing reaching the band's edge; Den Hartog's stop
-//       condition on a floor), or v - max x' (slip below; min x' - v above) for
-//       an orbit that never reaches x' = v (grazing-sliding, design.md
-//       section 4). Past the boundary the orbit sticks: the margin goes on as
-//       |force| - mu_s at the stick-in (<= 0), or minus the stick time.
+//       condition on a floor; past it |force| - mu_s at the stick-in, <= 0),
+//       or v - max x' (slip below; min x' - v above) for an orbit that never
+//       reaches x' = v (grazing-sliding, design.md section 4), on the orbit of
+//       that slip field continued across x' = v (ForcedRequest::switching
+//       false): smooth through 0, as the belt's grazing gap. (The true flow's
+//       margin past grazing, minus the stick time, grows like a square root:
+//       the corrector stalled on it after 2-3 points.)
 // The Jacobian: DP^m - I from the variational run at every evaluation; the
 // parameter columns and the test function's row by central differences at
 // every evaluation (a chord held over a correction converges too slowly:
@@ -40,6 +43,7 @@ class ForcedCurveProblem final : public PalcProblem {
                      int m, const ForcedOptions& flow)
       : base_(base), plane_(plane), kind_(kind), m_(m), flow_(flow) {}
   int unknowns() const override { return 4; }
+  const ForcedPlane& plane() const { return plane_; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override;
   std::string DomainError(const Eigen::VectorXd& u) const override;
@@ -47,6 +51,8 @@ class ForcedCurveProblem final : public PalcProblem {
   bool Sample(const Eigen::VectorXd& u, ForcedCurveSample* s, std::string* why) const;
   // The GR margin's kind: chosen at the seed, held along the curve.
   void set_crossing(bool crossing) { crossing_ = crossing; }
+  // Runs without switching: a grazing GR curve (the header's GR).
+  bool smooth() const { return kind_ == ForcedCurveKind::kGR && !crossing_; }
   // This curve's test function of a sample.
   double TestOf(const ForcedCurveSample& s) const { return Test(s); }
   // The section: forcing phase theta (z at t = theta / Omega), 0 by default.

@@ -107,8 +107,9 @@ void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::
                 c.ends.Text().c_str());
   }
   for (const ForcedCodim2& p : r.codim2)
-    std::printf("  %-4s %s = %.8f  %s = %.8f  %s\n", ForcedCodim2Name(p.label),
-                ForcedAxisName(pl.p1), p.p1, ForcedAxisName(pl.p2), p.p2, p.description.c_str());
+    std::printf("  %-4s %s = %.8f  %s = %.8f  %s%s\n", ForcedCodim2Name(p.label),
+                ForcedAxisName(pl.p1), p.p1, ForcedAxisName(pl.p2), p.p2, p.description.c_str(),
+                p.method == ForcedCodim2Method::kChord ? " (chord: not refined)" : "");
   std::printf("wrote %s/curves.tsv, codim2.tsv, response.tsv, forced_chart.gp%s\n", dir.c_str(),
               drawn ? (", " + figure).c_str() : "");
 }

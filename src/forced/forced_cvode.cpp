@@ -79,7 +79,7 @@ bool Driver::SlipByCvode() {
     if (flag == CV_ROOT_RETURN) {
       int dir = 0;
       cv.RootInfo(&dir);
-      if (dir != toward) continue;  // leaving the surface: no arrival
+      if (dir != toward || !rq_.switching) continue;  // leaving, or no switching
       return Arrive(t, y[0]);
     }
     t_ = rq_.t_end, x_ = y[0], xd_ = y[1];  // CV_TSTOP_RETURN: the stop time exactly

@@ -47,6 +47,8 @@ ForcedRun ForcedFlow::Run(const ForcedPoint& start, const ForcedRequest& request
                           " must be finite and >= t = " + Num(start.t));
   if (options_.integrator == Integrator::kCvode && request.extremes)
     throw InvalidArgument("extremes inside steps need the Taylor integrator");
+  if (!request.switching && start.mode == Mode::kStick)
+    throw InvalidArgument("a run without switching needs a slip start");
   ForcedRun run;
   forced_detail::Driver(model_, options_, request, run).Run(start);
   return run;
@@ -156,7 +158,7 @@ bool Driver::SlipStep(double t_end) {
     }
   }
   on_surface_ = false;
-  if (d >= 0) {
+  if (d >= 0 && rq_.switching) {
     const int s0 = g[0] > 0 ? 1 : (g[0] < 0 ? -1 : side);
     if (s0 != side) {
       u_hit = 0;  // on the other side already (rounding at the last step's end)

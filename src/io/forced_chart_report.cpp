@@ -102,12 +102,15 @@ TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
 
 TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
                            const std::string& model) {
-  TsvTable t({"label", ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "curve", "on", "description"});
+  TsvTable t({"label", ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "curve", "on", "description",
+              "located"});
   Header(t, r, model);
-  t.AddComment("each point interpolated linearly between two curve points");
+  t.AddComment(
+      "located: refined (the test function's root on the corrected curve), chord (linear "
+      "between two curve points: the refinement failed), end (SL: the curve's end)");
   for (const ForcedCodim2& p : r.codim2)
-    t.AddRow(
-        {ForcedCodim2Name(p.label), p.p1, p.p2, p.curve + 1, ForcedCurveName(p.on), p.description});
+    t.AddRow({ForcedCodim2Name(p.label), p.p1, p.p2, p.curve + 1, ForcedCurveName(p.on),
+              p.description, ForcedCodim2MethodName(p.method)});
   return t;
 }
 

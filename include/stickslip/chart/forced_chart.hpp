@@ -91,11 +91,32 @@ struct EnumNames<ForcedCodim2Label> {
   };
 };
 
+/// How a codimension-two point was placed.
+enum class ForcedCodim2Method {
+  kCurveEnd,  ///< SL: the curve's end (its last step bisected by the tracer)
+  kRefined,   ///< on the curve, its test function's root by Illinois on the corrected curve
+  kChord,     ///< the refinement failed: interpolated linearly between two curve points
+};
+const char* ForcedCodim2MethodName(ForcedCodim2Method m);  // "end", "refined", "chord"
+template <>
+struct EnumNames<ForcedCodim2Method> {
+  static constexpr NamedValue<ForcedCodim2Method> kTable[] = {
+      {ForcedCodim2Method::kCurveEnd, "end"},
+      {ForcedCodim2Method::kRefined, "refined"},
+      {ForcedCodim2Method::kChord, "chord"},
+  };
+};
+
 struct ForcedCodim2 {
   ForcedCodim2Label label = ForcedCodim2Label::kR1;
   ForcedCurveKind on = ForcedCurveKind::kLP;
   int curve = 0;  ///< index into ForcedChartResult::curves
   double p1 = 0, p2 = 0;
+  ForcedCodim2Method method = ForcedCodim2Method::kCurveEnd;
+  /// kRefined: the orbit there (section phase, point, multipliers) and the
+  /// test function's value (det DP - 1, det DP + 1 or |tr DP| - 2).
+  double phase = 0, x0 = 0, xdot0 = 0, test = 0;
+  std::complex<double> multipliers[2];
   std::string description;
 };
 
