@@ -18,6 +18,7 @@
 
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/chart/forced_chart.hpp"
+#include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
 namespace {
@@ -116,6 +117,56 @@ TEST(ForcedCodim2, R1AtTheTongueTipHasBothMultipliersAtPlusOne) {
     EXPECT_LT(std::abs(ref.det - 1), 1e-12L);
   }
   EXPECT_EQ(n, 2);
+}
+
+
+// The GR curve of the pure-slip orbits on studies/forced_ns_seed.ini (the
+// grazing margin v - max x' on the slip field without switching): it crosses
+// the rectangle (it stopped after 2-3 points while the margin past the
+// grazing was minus the stick time, a square root), and at points across it
+// a one-parameter run in Omega at the point's A (ContinueForced through the
+// point's orbit, its own bisection of the stick structure's change) locates
+// its GR at the curve's Omega.
+TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
+  const ForcedParams base = SeedBelt042();
+  const ForcedChartResult r = Chart(base, 0.6, 1.6, 0.002, 0.1);
+  const ForcedCurve* gr = nullptr;
+  for (const ForcedCurve& c : r.curves)
+    if (c.kind == ForcedCurveKind::kGR && c.m == 1) gr = &c;
+  ASSERT_NE(gr, nullptr);
+  EXPECT_GT(gr->points.size(), 100u);
+  EXPECT_EQ(gr->ends.first.kind, CurveEndKind::kBorder);
+  EXPECT_EQ(gr->ends.last.kind, CurveEndKind::kBorder);
+  int checked = 0;
+  for (size_t i = 10; i < gr->points.size(); i += gr->points.size() / 6) {
+    const ForcedCurvePoint& p = gr->points[i];
+    EXPECT_EQ(p.sticks, 0);
+    ForcedParams q = base;
+    q.omega = p.p1, q.force = p.p2;
+    const ForcedModel model(q);
+    ForcedRequest rq;
+    rq.t_end = model.period();
+    const ForcedPoint z =
+        ForcedFlow(model, ForcedOptions())
+            .Run(ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0), rq)
+            .end;
+    ForcedBranchOptions o;
+    o.palc.ds = o.palc.ds_max = 2e-4;
+    double best = NAN;
+    for (const double side : {1.0, -1.0}) {
+      const ForcedBranch b = ContinueForced(q, ForcedAxis::kOmega, p.p1 + side * 2e-3,
+                                            p.p1 - side * 2e-3, z.x, z.xdot, o);
+      for (const ForcedBranchRow& row : b.special)
+        if (row.label == ForcedLabel::kGR && !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))
+          best = row.p;
+      if (!std::isnan(best)) break;
+    }
+    std::printf("GR curve point Omega %.12f A %.6f: the run's GR %.2e away\n", p.p1, p.p2,
+                best - p.p1);
+    EXPECT_LT(std::abs(best - p.p1), 1e-10) << "A = " << p.p2;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
 }
 
 }  // namespace
