@@ -201,6 +201,8 @@ ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions&
 
 void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const ForcedCurve& c,
                 int index, std::vector<ForcedCodim2>* out);  // forced_codim2.cpp
+void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane& pl,
+                       std::vector<ForcedCodim2>* out);
 
 ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions& o) {
   const std::string e = o.ValidationError(base);
@@ -236,6 +238,7 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
       }
     }
   }
+  FindDoubleGrazing(r.curves, o.plane, &r.codim2);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (o.n1 > 0 && !cancelled()) {
     const auto t1 = std::chrono::steady_clock::now();

@@ -30,9 +30,7 @@ struct Codim2Test {
   double sign = 1;  // NS: tr DP's sign at the real end
   double offset = -1;
   bool trace = false;
-  double Of(const Mat2& M) const {
-    return trace ? sign * M.trace() - 2 : M.determinant() + offset;
-  }
+  double Of(const Mat2& M) const { return trace ? sign * M.trace() - 2 : M.determinant() + offset; }
 };
 
 // The curve point on the hyperplane through c = ua + s d normal to d (scaled),
@@ -145,6 +143,12 @@ void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const For
       x.method = ForcedCodim2Method::kChord;
       x.p1 = a.p1 + s * (b.p1 - a.p1), x.p2 = a.p2 + s * (b.p2 - a.p2);
     }
+    // A curve that touches the root twice in a row gives one point twice.
+    for (const ForcedCodim2& y : *out)
+      if (y.curve == index && y.label == t.label &&
+          std::abs(y.p1 - x.p1) <= tol * o.plane.width1() &&
+          std::abs(y.p2 - x.p2) <= tol * o.plane.width2())
+        return;
     add(x, t.label, d);
   };
   for (size_t i = 1; i < c.points.size(); ++i) {
@@ -159,10 +163,41 @@ void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const For
     if (c.kind == ForcedCurveKind::kNS && a.flag != b.flag) {
       const double tr = mat(a.flag ? a : b).first;
       const bool r1 = tr > 0;
-      locate(a, b, {r1 ? ForcedCodim2Label::kR1 : ForcedCodim2Label::kR2, r1 ? 1.0 : -1.0, 0, true},
-             std::string("NS curve ends: the pair turns real at ") + (r1 ? "+1 (1:1)" : "-1 (1:2)"));
+      locate(
+          a, b, {r1 ? ForcedCodim2Label::kR1 : ForcedCodim2Label::kR2, r1 ? 1.0 : -1.0, 0, true},
+          std::string("NS curve ends: the pair turns real at ") + (r1 ? "+1 (1:1)" : "-1 (1:2)"));
     }
   }
+}
+
+// GG: two GR curves of one period whose inner ends (not on the border) meet.
+// Each end of a grazing curve traced by Newton stops there (a corner of
+// v - max x', the larger of two touches), so the two ends straddle it.
+void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane& pl,
+                       std::vector<ForcedCodim2>* out) {
+  const double tol = Tolerances().forced_double_grazing;
+  auto inner = [](const ForcedCurve& c, bool first) {
+    return !c.points.empty() && (first ? c.ends.first : c.ends.last).kind != CurveEndKind::kBorder;
+  };
+  for (size_t i = 0; i < curves.size(); ++i)
+    for (size_t j = i + 1; j < curves.size(); ++j) {
+      const ForcedCurve &a = curves[i], &b = curves[j];
+      if (a.kind != ForcedCurveKind::kGR || b.kind != ForcedCurveKind::kGR || a.m != b.m) continue;
+      for (const bool fa : {true, false})
+        for (const bool fb : {true, false}) {
+          if (!inner(a, fa) || !inner(b, fb)) continue;
+          const ForcedCurvePoint &p = fa ? a.points.front() : a.points.back(),
+                                 &q = fb ? b.points.front() : b.points.back();
+          if (std::hypot((p.p1 - q.p1) / pl.width1(), (p.p2 - q.p2) / pl.width2()) > tol) continue;
+          ForcedCodim2 x;
+          x.label = ForcedCodim2Label::kDoubleGrazing, x.on = ForcedCurveKind::kGR;
+          x.curve = static_cast<int>(i);
+          x.p1 = (p.p1 + q.p1) / 2, x.p2 = (p.p2 + q.p2) / 2;
+          x.description = "GR curves " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                          " meet: two touches of x' = v at once (double grazing)";
+          out->push_back(x);
+        }
+    }
 }
 
 }  // namespace stickslip

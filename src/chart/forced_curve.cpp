@@ -9,6 +9,12 @@
 
 namespace stickslip {
 
+ForcedPoint ForcedCurveProblem::Start(const ForcedModel& m, double t, double x, double xdot) const {
+  if (!smooth()) return ForcedStart(m, t, x, xdot);
+  // Without switching the start's slip side is its field (x' = v: below).
+  return {t, x, xdot, xdot > m.v() ? Mode::kSlipAbove : Mode::kSlipBelow};
+}
+
 bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
                                 std::string* why) const {
   const ForcedModel model(plane_.At(base_, u[2], u[3]));
@@ -19,7 +25,7 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
   rq.variational = true;
   rq.events = &events;
   rq.switching = !smooth();
-  s->run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, u[0], u[1]), rq);
+  s->run = ForcedFlow(model, flow_).Run(Start(model, t0, u[0], u[1]), rq);
   if (s->run.status != ForcedStatus::kReached) {
     *why = s->run.message;
     return false;
@@ -46,7 +52,7 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
     // The slip field of the section point's side, continued across x' = v
     // (smooth()): the gap is smooth through 0, negative past the grazing.
     const Extrema& x = s->run.extrema;
-    s->margin = u[1] < model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
+    s->margin = u[1] <= model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
   }
   if (!std::isfinite(s->margin) && kind_ == ForcedCurveKind::kGR) {
     *why = "the orbit does not reach x' = v (no crossing, no stick)";
@@ -63,7 +69,7 @@ bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
   rq.t_end = t0 + m_ * model.period();
   rq.samples = &samples;
   rq.switching = !smooth();
-  const ForcedRun run = ForcedFlow(model, flow_).Run(ForcedStart(model, t0, (*u)[0], (*u)[1]), rq);
+  const ForcedRun run = ForcedFlow(model, flow_).Run(Start(model, t0, (*u)[0], (*u)[1]), rq);
   if (run.status != ForcedStatus::kReached) return *why = run.message, false;
   const ForcedPoint* best = nullptr;
   for (const ForcedPoint& p : samples)
@@ -112,8 +118,7 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
     ForcedRequest rq;
     rq.t_end = t0 + d * model.period();
     rq.switching = !smooth();
-    const ForcedRun r =
-        ForcedFlow(model, flow_).Run(ForcedStart(model, t0, next.u[0], next.u[1]), rq);
+    const ForcedRun r = ForcedFlow(model, flow_).Run(Start(model, t0, next.u[0], next.u[1]), rq);
     if (r.status == ForcedStatus::kReached &&
         std::max(std::abs(r.end.x - next.u[0]), std::abs(r.end.xdot - next.u[1])) <
             tol.forced_lower_period)

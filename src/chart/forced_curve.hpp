@@ -72,6 +72,8 @@ class ForcedCurveProblem final : public PalcProblem {
 
  private:
   double Test(const ForcedCurveSample& s) const;
+  // ForcedStart, or with smooth() the slip mode of x''s side.
+  ForcedPoint Start(const ForcedModel& m, double t, double x, double xdot) const;
   ForcedParams base_;
   ForcedPlane plane_;
   ForcedCurveKind kind_;

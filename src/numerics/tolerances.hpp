@@ -140,6 +140,10 @@ struct Tolerances {
   /// Forced chart: two curves of one kind and period within this fraction of
   /// the rectangle are one (a seed found again on another seed line).
   double forced_same_curve = 2e-3;
+  /// Forced chart: two GR curves of one period whose inner ends lie within
+  /// this fraction of the rectangle meet at a double grazing (GG; seed_forced:
+  /// 8e-7 apart, two touches of x' = v at once).
+  double forced_double_grazing = 1e-4;
   /// Forced chart curves: a section point within this of x' = v is near the
   /// stick phase (the map is not smooth there): the section moves on.
   double forced_section_near_stick = 1e-3;

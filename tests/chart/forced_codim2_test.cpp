@@ -67,9 +67,8 @@ RefCheck Reference(const ForcedParams& base, const ForcedCodim2& c) {
   const reference::ForcedRef m(p);
   const reference::RefPeriod q = reference::RefOnePeriod(m, r.end.x, r.end.xdot, false, 1e-18L);
   EXPECT_TRUE(q.ok);
-  return {std::max(std::abs(q.x - r.end.x), std::abs(q.y - r.end.xdot)),
-          q.phi[0][0] + q.phi[1][1], q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0],
-          q.sticks};
+  return {std::max(std::abs(q.x - r.end.x), std::abs(q.y - r.end.xdot)), q.phi[0][0] + q.phi[1][1],
+          q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0], q.sticks};
 }
 
 TEST(ForcedCodim2, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMinusOne) {
@@ -108,9 +107,10 @@ TEST(ForcedCodim2, R1AtTheTongueTipHasBothMultipliersAtPlusOne) {
     ++n;
     EXPECT_EQ(c.method, ForcedCodim2Method::kRefined);
     const RefCheck ref = Reference(base, c);
-    std::printf("R1 at Omega %.12f A %.12f: reference residual %.2Le, tr - 2 = %.2Le, det - 1 = "
-                "%.2Le\n",
-                c.p1, c.p2, ref.residual, ref.trace - 2, ref.det - 1);
+    std::printf(
+        "R1 at Omega %.12f A %.12f: reference residual %.2Le, tr - 2 = %.2Le, det - 1 = "
+        "%.2Le\n",
+        c.p1, c.p2, ref.residual, ref.trace - 2, ref.det - 1);
     EXPECT_EQ(ref.sticks, 0);
     EXPECT_LT(ref.residual, 1e-10L);
     EXPECT_LT(std::abs(ref.trace - 2), 1e-12L);
@@ -118,7 +118,6 @@ TEST(ForcedCodim2, R1AtTheTongueTipHasBothMultipliersAtPlusOne) {
   }
   EXPECT_EQ(n, 2);
 }
-
 
 // The GR curve of the pure-slip orbits on studies/forced_ns_seed.ini (the
 // grazing margin v - max x' on the slip field without switching): it crosses
@@ -146,10 +145,9 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
     const ForcedModel model(q);
     ForcedRequest rq;
     rq.t_end = model.period();
-    const ForcedPoint z =
-        ForcedFlow(model, ForcedOptions())
-            .Run(ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0), rq)
-            .end;
+    const ForcedPoint z = ForcedFlow(model, ForcedOptions())
+                              .Run(ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0), rq)
+                              .end;
     ForcedBranchOptions o;
     o.palc.ds = o.palc.ds_max = 2e-4;
     double best = NAN;

@@ -79,8 +79,11 @@ enum class ForcedCodim2Label {
   kR2,        ///< PD with the other multiplier at -1 (1:2 resonance; an NS curve ends)
   kFoldFlip,  ///< PD with the other multiplier at +1 (an LP curve meets it)
   kSliding,   ///< the orbit's stick structure changes on an LP/PD/NS curve (it ends on GR)
+  /// Two GR curves meet at a corner: the orbit touches x' = v twice at once
+  /// (the grazing boundary switches from one touch to the other).
+  kDoubleGrazing,
 };
-const char* ForcedCodim2Name(ForcedCodim2Label l);  // "R1", "R2", "LPPD", "SL"
+const char* ForcedCodim2Name(ForcedCodim2Label l);  // "R1", "R2", "LPPD", "SL", "GG"
 template <>
 struct EnumNames<ForcedCodim2Label> {
   static constexpr NamedValue<ForcedCodim2Label> kTable[] = {
@@ -88,6 +91,7 @@ struct EnumNames<ForcedCodim2Label> {
       {ForcedCodim2Label::kR2, "R2"},
       {ForcedCodim2Label::kFoldFlip, "LPPD"},
       {ForcedCodim2Label::kSliding, "SL"},
+      {ForcedCodim2Label::kDoubleGrazing, "GG"},
   };
 };
 
