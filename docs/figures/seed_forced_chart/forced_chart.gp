@@ -38,6 +38,7 @@ set label "SL" at 0.39919326700478441,0.51765673386700961 offset 0.7,0.7 left fr
 set label "SL" at 0.41819856237666664,0.49609908926637702 offset 0.7,0.7 left front font ',12' noenhanced
 set label "SL" at 0.39579352769732645,0.51876596551647025 offset 0.7,0.7 left front font ',12' noenhanced
 set label "SL" at 0.41991448450925806,0.495857895118404 offset 0.7,0.7 left front font ',12' noenhanced
+set label "GG" at 0.48669331009168526,0.49351788450046957 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
@@ -54,21 +55,23 @@ plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) w
      NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
-     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
+     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
+     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 18 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
-     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
-     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
-     'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
-     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "PD of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
      'curves.tsv' using 1:($4 == 16 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
+     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "PD of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 17 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
      'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
 unset output
