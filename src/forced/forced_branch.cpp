@@ -1,7 +1,6 @@
-// One-parameter continuation of the forced oscillator's periodic orbits: the
-// stroboscopic residual (forced_branch_problem.hpp) through Palc, rows from
-// each accepted point's run; LP, PD, NS and the sliding points located on the
-// chord between two rows; across a jump of the map, a restart (forced_sliding.hpp).
+// One-parameter continuation of the forced oscillator's periodic orbits: the stroboscopic
+// residual (forced_branch_problem.hpp) through Palc, rows from each accepted point's run; LP,
+// PD, NS and sliding points located on the chord between two rows; a jump: forced_sliding.hpp.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -195,13 +194,13 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double far = chord ? br.hi.p : br.p_hi;
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
-    if (!chord || gap > Tolerances::kForcedEdgeGap * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0)))
+    const double edge_gap = Tolerances::kForcedEdgeGap * o_.locate_tol;
+    if (!chord || gap > edge_gap * (1 + std::abs(far) + std::abs(br.lo.x0)))
       br = AcrossEdge(br, chord, b[2] - from[2], row), jumped_ = true;
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).
-    const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
-                                   Tolerances::kForcedEdgeGap * o_.locate_tol *
-                                       (1 + std::abs(br.lo.p));
+    const bool same =
+        k > 0 && std::abs(br.lo.p - found.back().p) <= edge_gap * (1 + std::abs(br.lo.p));
     if (same) found.pop_back();
     ForcedBranchRow point = same ? first_lo : br.lo;
     if (!same) first_lo = br.lo;
