@@ -91,7 +91,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedSimulationStatus", ForcedSimulationStatus::kCancelled);
   Covers("ForcedSection", ForcedSection::kExit);
   Covers("ForcedCurveKind", ForcedCurveKind::kGR);
-  Covers("ForcedCodim2Label", ForcedCodim2Label::kSliding);
+  Covers("ForcedCodim2Label", ForcedCodim2Label::kDoubleGrazing);
+  Covers("ForcedCodim2Method", ForcedCodim2Method::kChord);
 }
 
 // Names the files and options carry (docs/formats.md, docs/cli.md).
