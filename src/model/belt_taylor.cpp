@@ -42,7 +42,7 @@ class BeltTaylorField final : public TaylorField {
   void Recurrences(int order, int n, TaylorRow* c);
   template <bool Var>
   void Cubic3(int order, int n, TaylorRow* c);
-  template <bool Var>
+  template <bool Newest>
   void Columns(int k, int n, double inv, double dmu, TaylorRow* c);
   void ResolveParameter();
   double ParamTerm(const TaylorRow* c, int k, double muk, double muk_shifted, double dmu) const;
@@ -102,7 +102,7 @@ void BeltTaylorField::Recurrences(int order, int n, TaylorRow* c) {
     }
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-      Columns<Var>(k, n, inv, dmu, c);
+      Columns<false>(k, n, inv, dmu, c);
       if (n == 8 && kind_ == ParamKind::kAffine) {
         c[7][k + 1] += ParamTerm(c, k, muk, muk_shifted, dmu) * inv;
       }
@@ -111,11 +111,15 @@ void BeltTaylorField::Recurrences(int order, int n, TaylorRow* c) {
 }
 
 // Phi' = J Phi and the parameter column (beta, v) at order k + 1, cc_ set to k.
-template <bool Var>
+template <bool Newest>
 inline void BeltTaylorField::Columns(int k, int n, double inv, double dmu, TaylorRow* c) {
   const double* cc = cc_.c();
   for (int col = 2; col < n; col += 2) {
-    const double cq = Cauchy(c[col + 1], cc, k);
+    const double* p = c[col + 1];
+    // Cubic3: the newest terms (j = 0 and k) last, as there.
+    const double cq = !Newest  ? Cauchy(p, cc, k)
+                      : k == 0 ? p[0] * cc[0]
+                               : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
     c[col][k + 1] = c[col + 1][k] * inv;
     c[col + 1][k + 1] = (-c[col][k] + cq) * inv;
   }
@@ -146,7 +150,7 @@ void BeltTaylorField::Cubic3(int order, int n, TaylorRow* c) {
   if constexpr (Var) {
     const double dmu = c1 + 3 * c3 * w[0];
     cc[0] = -two_beta - dmu;
-    Columns<Var>(0, n, 1.0, dmu, c);
+    Columns<true>(0, n, 1.0, dmu, c);
   }
   for (int k = 1; k < order; ++k) {
     const double inv = kTaylorInverse.r[k];
@@ -160,7 +164,7 @@ void BeltTaylorField::Cubic3(int order, int n, TaylorRow* c) {
     if constexpr (Var) {
       const double dmu = 3 * c3 * w[k];
       cc[k] = -dmu;
-      Columns<Var>(k, n, inv, dmu, c);
+      Columns<true>(k, n, inv, dmu, c);
     }
   }
 }
