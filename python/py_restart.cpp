@@ -23,7 +23,7 @@ ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::st
     throw InvalidArgument(lp.label + " is a point of a forced run: continue_forced(point." +
                           "forced_params(), axis, from_, to, *point.state, m=point.m)");
   ContinuationOptions o;
-  o.param = ParameterAxis(param.value_or(lp.param));  // InvalidArgument for an unknown name
+  o.param = param ? ParameterAxis(*param) : lp.param;  // InvalidArgument for an unknown name
   const ParameterRange r = RangeFromPoint(lp.params, o.param);
   o.from = r.from, o.to = to.value_or(r.to);
   o.orbit.flow = lp.flow;
@@ -40,7 +40,7 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
     throw InvalidArgument(lp.label + " is a " + lp.type + " point: a chart starts from a GR or " +
                           "HB point");
   ChartOptions o;
-  o.plane.p1 = ParameterAxis(lp.param), o.plane.p2 = ParameterAxis(param2);
+  o.plane.p1 = lp.param, o.plane.p2 = ParameterAxis(param2);
   o.plane.from1 = from, o.plane.to1 = to, o.plane.from2 = from2, o.plane.to2 = to2;
   const int max_steps = o.orbit.flow.max_steps;  // the chart's step cap
   o.orbit.flow = lp.flow, o.orbit.flow.max_steps = max_steps;
@@ -66,7 +66,8 @@ void BindRestart(py::module_& m) {
       .def_readonly("label", &LabelledPoint::label, "'HB1', 'GR1', ... or the point number")
       .def_readonly("pt", &LabelledPoint::pt, "its row of branch.tsv (1-based)")
       .def_readonly("type", &LabelledPoint::type, "GR, HB, LP or the row's kind")
-      .def_readonly("param", &LabelledPoint::param, "the parameter that run continued")
+      .def_property_readonly("param", &LabelledPoint::ParamName,
+                             "the name of the parameter that run continued")
       .def_readonly("p", &LabelledPoint::p, "its value at the point")
       .def_readonly("params", &LabelledPoint::params, "every parameter at the point")
       .def_readonly("flow", &LabelledPoint::flow, "that run's integrator and tolerances")
@@ -103,7 +104,7 @@ void BindRestart(py::module_& m) {
            "at this GR or HB point: chart(point.params, options=point.chart_options()).")
       .def("__repr__", [](const LabelledPoint& lp) {
         return "LabelledPoint('" + lp.label + "', pt=" + std::to_string(lp.pt) + ", type='" +
-               lp.type + "', " + lp.param + "=" + Repr(lp.p) + ")";
+               lp.type + "', " + lp.ParamName() + "=" + Repr(lp.p) + ")";
       });
   m.def(
       "restart",

@@ -179,7 +179,7 @@ int Main(int argc, char** argv) {
   app.out().Write("orbits.tsv", text(ss::OrbitTable(curves, r.orbits.ok() ? &stability : nullptr)));
   app.out().Write("basins.gp",
                   ss::BasinScript(r, model, curves, desc_model + (r.partial() ? " (partial)" : ""),
-                                  format, cli::FigureUnitsOf(cli::ScalesFromArguments(args), "")));
+                                  format, cli::FigureUnitsOf(cli::ScalesFromArguments(args))));
   if (!app.Finish("basins.gp", {figure}, {figure})) return cli::kExitFailed;
 
   PrintSummary(r, dist, stability, desc_model, seconds);

@@ -112,7 +112,7 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
   const auto restart = cli::RestartFromArguments(args);
-  pl.p1 = Axis(args, "param", restart ? restart->param : "v");
+  pl.p1 = Axis(args, "param", restart ? restart->ParamName() : "v");
   pl.p2 = Axis(args, "param2", "beta");
   pl.from1 = args.Number("from", 0.05);
   pl.to1 = args.Number("to", 0.6);
@@ -200,9 +200,8 @@ int Main(int argc, char** argv) {
   if (app.plots()) {
     app.out().Write("regions.tsv", text(ss::RegionsTable(r, pl, model)));
     app.out().Write("chart.gp", ss::ChartScript(r, pl, ss::ChartTitle(base, pl), format,
-                                                cli::FigureUnitsOf(cli::ScalesFromArguments(args),
-                                                                   pl.p1.name(),
-                                                                   pl.p2.name())));
+                                                cli::FigureUnitsOf(cli::ScalesFromArguments(args), pl.p1,
+                                                                   pl.p2)));
   }
   // Without plots, the older regions and figure do not belong to these curves.
   const std::vector<std::string> stale = app.plots()

@@ -125,7 +125,7 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
   // physical units: its dimensionless parameter is continued over the range
   // converted by the seed's scaling.
   const std::optional<cli::Scales> scales = cli::ScalesFromArguments(args);
-  const std::string asked = args.Text("param", point ? point->param : "v");
+  const std::string asked = args.Text("param", point ? point->ParamName() : "v");
   const auto axis = cli::AxisOf(asked, scales.value_or(cli::Scales()));
   const bool physical_param = axis && asked == axis->physical;
   if (physical_param && !scales)
@@ -258,7 +258,7 @@ ss::EstimateComparison Estimates(const ss::Params& base, const ss::ContinuationO
   run.Phase("comparing with the estimates");
   try {
     cmp =
-        ss::CompareEstimates(base, opts.param.name(), r, 2001, [&run] { return run.Cancelled(); });
+        ss::CompareEstimates(base, r, 2001, [&run] { return run.Cancelled(); });
   } catch (const ss::InvalidArgument& e) {  // outside the estimates' own assumptions
     cmp = ss::EstimateComparison();
     cmp.reason = e.what();
@@ -283,7 +283,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   std::vector<ss::ExtraColumn> extra = cmp.columns;
   run.Phase("smallest disturbances");
   auto cancelled = [&run] { return run.Cancelled(); };
-  for (auto& c : ss::DisturbanceColumns(base, opts.param.name(), r, opts.orbit.flow, cancelled))
+  for (auto& c : ss::DisturbanceColumns(base, r, opts.orbit.flow, cancelled))
     extra.push_back(std::move(c));
   ss::ExtraColumn stalled{"newton_stalled", {}};
   for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
@@ -304,7 +304,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   const std::string title = model + (r.partial() ? " (partial)" : "");
   app.out().Write("bifurcation.gp",
                   ss::BifurcationScript(r, title, cmp.applies, format,
-                                        cli::FigureUnitsOf(prov.scales, opts.param.name())));
+                                        cli::FigureUnitsOf(prov.scales, opts.param)));
   if (!app.Finish("bifurcation.gp", ss::BifurcationFigures(cmp.applies, format),
                   ss::BifurcationFigures(true, format)))
     return cli::kExitFailed;

@@ -99,6 +99,7 @@ BasinStabilityCurve BasinStabilityAlong(const Params& base, const ParameterAxis&
                                         const OrbitScanOptions& scan) {
   if (n < 1) throw InvalidArgument("BasinStabilityAlong: n must be >= 1");
   BasinStabilityCurve c;
+  c.param = axis;
   for (int i = 0; i < n; ++i) {
     const double p = n == 1 ? from : from + (to - from) * i / (n - 1);
     const Model m(axis.At(base, p));

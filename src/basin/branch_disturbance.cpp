@@ -7,8 +7,8 @@
 
 namespace stickslip {
 
-std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const std::string& param,
-                                            const ContinuationResult& r, const FlowOptions& flow,
+std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const ContinuationResult& r,
+                                            const FlowOptions& flow,
                                             const std::function<bool()>& cancelled) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<ExtraColumn> cols = {{"dist_x", {}}, {"dist_xdot", {}}, {"dist_energy", {}}};
@@ -19,9 +19,7 @@ std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const std::strin
     if (unstable_orbit && pt.amplitude <= 0) {
       d = Disturbance{0, 0, 0};  // the orbit shrinks onto steady sliding (a Hopf point)
     } else if (unstable_orbit && pt.period > 0) {
-      Params p = base;
-      SetParameter(p, param, pt.p);
-      const Model m(p);
+      const Model m(r.param.At(base, pt.p));
       Orbit o;
       o.kind = OrbitKind::kPureSlip;
       o.start = Vec2(m.SteadySliding().x + pt.amplitude, 0.0);

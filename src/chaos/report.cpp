@@ -66,9 +66,7 @@ TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
 std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::string& title,
                                bool up, bool down) {
   const std::string ax = ForcedAxisName(axis);
-  const std::string label = axis == ForcedAxis::kOmega   ? "forcing frequency Ω"
-                            : axis == ForcedAxis::kForce ? "forcing amplitude A"
-                                                         : ParameterAxisLabel(ax);
+  const std::string label = ParameterAxisLabel(axis);
   std::ostringstream os;
   os << "# The orbit diagram of ss_orbit_diagram: stroboscopic section points (phase 0) and\n"
      << "# the largest Lyapunov exponent against " << ax << ".\n"

@@ -24,21 +24,22 @@ void AddBasinCurveOptions(po::options_description& d) {
 namespace {
 
 struct Curve {
-  std::string param;
+  ParameterAxis param = Parameter::kV;
   double from = 0, to = 0;
   int n = 41;
 };
 
 Curve CurveFromArguments(const Arguments& args, const Params& base, const BasinOptions& opts) {
   Curve c;
-  c.param = args.Text("param");
-  if (!IsParameterName(c.param))
-    throw UsageError("invalid value '" + c.param + "' for " + args.Source("param") + ": expected " +
+  const std::string name = args.Text("param");
+  if (!IsParameterName(name))
+    throw UsageError("invalid value '" + name + "' for " + args.Source("param") + ": expected " +
                      ParameterNameList());
+  c.param = ParameterAxis(name);
   if (opts.auto_range)
     throw UsageError(args.Source("param") +
                      " needs a fixed box: give --x_min --x_max --xdot_min --xdot_max");
-  const ParameterRange range = DefaultRange(base, ParameterAxis(c.param));
+  const ParameterRange range = DefaultRange(base, c.param);
   c.from = args.Number("from", range.from);
   c.to = args.Number("to", range.to);
   const long n = args.Integer("n", c.n);
@@ -49,9 +50,7 @@ Curve CurveFromArguments(const Arguments& args, const Params& base, const BasinO
   if (c.from == c.to)
     throw UsageError("--from = --to = " + FormatNumber(c.from) + ": the range is empty");
   for (const char* end : {"from", "to"}) {
-    Params q = base;
-    SetParameter(q, c.param, end[0] == 'f' ? c.from : c.to);
-    const std::string err = ValidationError(q);
+    const std::string err = ValidationError(c.param.At(base, end[0] == 'f' ? c.from : c.to));
     if (!err.empty())
       throw UsageError((args.Given(end) ? args.Source(end) : std::string("--") + end) + ": " + err);
   }
@@ -75,11 +74,11 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   scan.cancelled = cancelled;
   const Box box{opts.x_lo, opts.x_hi, opts.xdot_lo, opts.xdot_hi};
   const BasinStabilityCurve r =
-      BasinStabilityAlong(base, ParameterAxis(c.param), c.from, c.to, c.n, box, scan);
+      BasinStabilityAlong(base, c.param, c.from, c.to, c.n, box, scan);
   std::string model = std::string("law=") + LawName(base.law);  // the varied one left out
   for (const auto& name : ParameterNames(base.law))
-    if (name != c.param) model += " " + name + "=" + FormatNumber(GetParameter(base, name));
-  TsvTable t = BasinStabilityTable(r, c.param, model, box);
+    if (name != c.param.name()) model += " " + name + "=" + FormatNumber(GetParameter(base, name));
+  TsvTable t = BasinStabilityTable(r, model, box);
   t.PrependMeta(meta);
   out.Write("basin_stability.tsv", t.str());
   out.Write(

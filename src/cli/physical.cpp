@@ -32,13 +32,14 @@ std::optional<PhysicalAxis> AxisOf(const std::string& name, const Scales& s) {
   return std::nullopt;
 }
 
-FigureUnits FigureUnitsOf(const std::optional<Scales>& s, const std::string& p1,
-                          const std::string& p2) {
+FigureUnits FigureUnitsOf(const std::optional<Scales>& s, const std::optional<ParameterAxis>& p1,
+                          const std::optional<ParameterAxis>& p2) {
   FigureUnits u;
   if (!s) return u;
   u.si = true, u.length = s->L, u.time = s->t0;
-  auto axis = [&](const std::string& name, FigureAxis* a) {
-    if (const auto phys = AxisOf(name, *s)) a->factor = 1 / phys->factor, a->label = phys->label;
+  auto axis = [&](const std::optional<ParameterAxis>& p, FigureAxis* a) {
+    if (!p) return;
+    if (const auto phys = AxisOf(p->name(), *s)) a->factor = 1 / phys->factor, a->label = phys->label;
   };
   axis(p1, &u.p1);
   axis(p2, &u.p2);

@@ -9,6 +9,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip::cli {
 
@@ -38,7 +39,8 @@ std::optional<PhysicalAxis> AxisOf(const std::string& name, const Scales& s);
 // A figure's units: SI for a physical run (the parameter axes p1 and p2, by
 // their dimensionless names, in physical form where they have units), else
 // dimensionless.
-FigureUnits FigureUnitsOf(const std::optional<Scales>& s, const std::string& p1,
-                          const std::string& p2 = "");
+FigureUnits FigureUnitsOf(const std::optional<Scales>& s,
+                          const std::optional<ParameterAxis>& p1 = std::nullopt,
+                          const std::optional<ParameterAxis>& p2 = std::nullopt);
 
 }  // namespace stickslip::cli

@@ -54,7 +54,7 @@ ChartOptions::Seed ChartSeed(const Arguments& args, const LabelledPoint& lp, con
 
 std::string DescribeRestart(const Arguments& args, const LabelledPoint& lp) {
   return args.Text("restart") + " point " + lp.label + " (pt " + std::to_string(lp.pt) + ", " +
-         lp.type + ", " + lp.param + " = " + FormatNumber(lp.p) + ")";
+         lp.type + ", " + lp.ParamName() + " = " + FormatNumber(lp.p) + ")";
 }
 
 }  // namespace stickslip::cli

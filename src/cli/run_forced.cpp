@@ -28,8 +28,8 @@ struct ForcedSetup {
   double lo = 0, hi = 0;                 // --switch: the bounds the 2m branch runs to
 };
 
-ForcedAxis AxisFromName(const Arguments& args, const std::string& fallback) {
-  const std::string name = args.Text("param", fallback);
+ForcedAxis AxisFromName(const Arguments& args, ForcedAxis fallback) {
+  const std::string name = args.Text("param", ForcedAxisName(fallback));
   for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
     if (name == ForcedAxisName(a)) return a;
   throw UsageError("invalid value '" + name + "' for " + args.Source("param") +
@@ -54,9 +54,9 @@ void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& 
         " needs --restart DIR --point PDn (a period "
         "doubling of a forced run)" +
         (s.restart ? ", not " + args.Text("point") + " (" + s.restart->type + ")" : std::string()));
-  if (args.Given(ForcedAxisName(s.axis)) || ForcedAxisName(s.axis) != s.restart->param)
+  if (args.Given(ForcedAxisName(s.axis)) || s.axis != s.restart->forced_param)
     throw UsageError(args.Source("switch") + " continues the doubled branch in " +
-                     s.restart->param + ", the PD point's parameter");
+                     s.restart->ParamName() + ", the PD point's parameter");
   s.doubled = true;
   const double p = GetAxis(s.p, s.axis);
   // By default the range of the run the PD point came from (AUTO's RL0, RL1).
@@ -65,7 +65,7 @@ void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& 
   s.hi = args.Number("to", recorded ? s.restart->run_to : range[1]);
   if (s.lo > s.hi) std::swap(s.lo, s.hi);
   if (!(s.lo < p && p < s.hi))
-    throw UsageError(args.Source("switch") + ": the PD point's " + s.restart->param + " = " +
+    throw UsageError(args.Source("switch") + ": the PD point's " + s.restart->ParamName() + " = " +
                      FormatNumber(p) + " must lie strictly between --from " + FormatNumber(s.lo) +
                      " and --to " + FormatNumber(s.hi));
   s.from = p, s.to = s.hi;  // to: set from the branch's side once traced
@@ -84,7 +84,7 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   s.p.base = UncheckedModelFromArguments(args, restart ? restart->params : Params());
   s.p.force = args.Number("force", restart ? restart->force : 0);
   s.p.omega = args.Number("omega", restart ? restart->omega : 1);
-  s.axis = AxisFromName(args, restart ? restart->param : "omega");
+  s.axis = AxisFromName(args, restart ? restart->forced_param : ForcedAxis::kOmega);
   const double defaults[4][2] = {{0.75, 2.5}, {0.1, 2}, {0, 0.5}, {0, 0.3}};
   const int k = static_cast<int>(s.axis);
   double from = defaults[k][0], to = defaults[k][1];

@@ -18,39 +18,40 @@ void Track(const EstimateCell& c, double p, double* max_err, double* p_at, int* 
   }
 }
 // Why the estimates do not apply to this model, or empty.
-std::string NotApplicable(const Params& base, const std::string& param) {
+std::string NotApplicable(const Params& base, const ParameterAxis& param) {
   if (base.law != LawKind::kCubic)
     return std::string("the estimates are for the cubic law, not ") + LawName(base.law);
-  if (base.k5 != 0 || param == "k5")
+  const bool k5 = param.id() == Parameter::kK5;
+  if (base.k5 != 0 || k5)
     return std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
-           (param == "k5" ? ", and k5 is the continued parameter" : "");
+           (k5 ? ", and k5 is the continued parameter" : "");
   return "";
 }
 
 // The closed forms at the branch's special points (GR and HB in v, HB in beta).
-void AddSpecialEstimates(const Params& base, const std::string& param, const ContinuationResult& r,
+void AddSpecialEstimates(const Params& base, const ContinuationResult& r,
                          EstimateComparison* out_) {
   EstimateComparison& out = *out_;
+  const Parameter param = r.param.id();
   for (const SpecialPoint& s : r.special) {
-    Params at = base;  // the base value of the continued parameter is not used
-    SetParameter(at, param, s.p);
+    const Params at = r.param.At(base, s.p);
     const AveragingEstimate avg0 = EstimateAveraging(at);
-    if (s.kind == SpecialKind::kGrazing && param == "v")
+    if (s.kind == SpecialKind::kGrazing && param == Parameter::kV)
       out.special.push_back(
           {"GR", "averaging: a_ps = v, 2 sqrt((k1 - 2 beta)/(15 k3))", s.p, avg0.grazing_speed});
-    if (s.kind == SpecialKind::kHopf && param == "v")
+    if (s.kind == SpecialKind::kHopf && param == Parameter::kV)
       out.special.push_back({"HB", "seed (3.16): sqrt((k1 - 2 beta)/(3 k3))", s.p, SeedVMax(at)});
-    if (s.kind == SpecialKind::kHopf && param == "beta")
+    if (s.kind == SpecialKind::kHopf && param == Parameter::kBeta)
       out.special.push_back({"HB", "(k1 - 3 k3 v^2) / 2", s.p, avg0.hopf_beta});
   }
 }
 }  // namespace
 
-EstimateComparison CompareEstimates(const Params& base, const std::string& param,
-                                    const ContinuationResult& r, int check_points,
+EstimateComparison CompareEstimates(const Params& base, const ContinuationResult& r,
+                                    int check_points,
                                     const std::function<bool()>& cancelled) {
   EstimateComparison out;
-  out.reason = NotApplicable(base, param);
+  out.reason = NotApplicable(base, r.param);
   if (!out.reason.empty()) return out;
   out.applies = true;
   const size_t n = r.points.size();
@@ -72,8 +73,7 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
       out.cancelled = true;
       break;
     }
-    Params q = base;
-    SetParameter(q, param, pt.p);
+    const Params q = r.param.At(base, pt.p);
     ComparisonRow row;
     row.p = pt.p;
     row.kind = pt.kind;
@@ -119,7 +119,7 @@ EstimateComparison CompareEstimates(const Params& base, const std::string& param
   out.columns = {r1, err_r1, a_ps, err_a_ps, xb_lo, xb_hi, xb_ok};
   if (out.cancelled) return out;
 
-  AddSpecialEstimates(base, param, r, &out);
+  AddSpecialEstimates(base, r, &out);
   return out;
 }
 

@@ -113,8 +113,8 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
   os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax << ".\n"
      << FigurePreamble(format, 1000, 720) << "set output '" << FigureFile("resonance", format)
      << "'\nset title " << GnuplotQuoted(FigureTitle(title, {ax})) << "\nset xlabel "
-     << GnuplotQuoted(axis == ForcedAxis::kOmega ? "forcing frequency Ω (over the natural one)"
-                                                 : ParameterAxisLabel(ax))
+     << GnuplotQuoted(ParameterAxisLabel(axis) +
+                      (axis == ForcedAxis::kOmega ? " (over the natural one)" : ""))
      << "\nset ylabel 'largest displacement x_{max} (dimensionless)'\nset yrange [0:*]\n"
      << "set autoscale xfix\n"
      << "c(name) = column(name)\n"

@@ -17,9 +17,9 @@ std::vector<std::string> BasinStabilityLines(const BasinStability& b) {
   return lines;
 }
 
-TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& param,
-                             const std::string& model_description, const Box& box) {
-  TsvTable t({param, "steady_sliding", "stick_slip", "pure_slip", "undecided", "enclosed"});
+TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& model_description,
+                             const Box& box) {
+  TsvTable t({c.param.name(), "steady_sliding", "stick_slip", "pure_slip", "undecided", "enclosed"});
   t.AddMeta("model", model_description);
   t.AddMeta("box", "x in [" + FormatNumber(box.x_lo) + ", " + FormatNumber(box.x_hi) +
                        "], xdot in [" + FormatNumber(box.y_lo) + ", " + FormatNumber(box.y_hi) +
@@ -36,7 +36,7 @@ TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& pa
   return t;
 }
 
-std::string BasinStabilityScript(const std::string& param, const std::string& title,
+std::string BasinStabilityScript(const ParameterAxis& param, const std::string& title,
                                  FigureFormat format, const FigureUnits& units) {
   // The shared style (figure_style.hpp): colour by kind, stable solid (every
   // attractor's basin), a thin dotted gray for the undecided share.
@@ -45,7 +45,7 @@ std::string BasinStabilityScript(const std::string& param, const std::string& ti
      << "if (!exists('suffix')) suffix = ''\n"
      << FigurePreamble(format, 1000, 720) << FigureUnitVariables(units) << "set output '"
      << FigureFile("basin_stability", format) << "'.suffix\n"
-     << "set title " << GnuplotQuoted(FigureTitle(title, {param})) << "\n"
+     << "set title " << GnuplotQuoted(FigureTitle(title, {param.name()})) << "\n"
      << "set xlabel " << GnuplotQuoted(units.P1Label(param)) << "\n"
      << "set ylabel 'basin stability (fraction of the box)'\n"
      << "set yrange [-0.02:1.02]\nset autoscale xfix\n"

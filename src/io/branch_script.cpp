@@ -199,7 +199,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& ti
      << "# gray steady sliding. GR grazing-sliding, HB Hopf, LP fold.\n"
      << "if (!exists('suffix')) suffix = ''\n"
      << FigurePreamble(format, 1000, 720) << FigureUnitVariables(units) << "set xlabel "
-     << GnuplotQuoted(units.P1Label(param)) << "\nset title "
+     << GnuplotQuoted(units.P1Label(r.param)) << "\nset title "
      << GnuplotQuoted(FigureTitle(title, {param})) << "\n"
      << "set offsets 0, 0, graph 0.08, graph 0.08\n";
   bool periodic = false, equilibrium = false;

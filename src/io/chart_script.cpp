@@ -114,8 +114,6 @@ void Curves(std::ostream& os, const ChartResult& r) {
 }
 }  // namespace
 
-std::string AxisLabel(const std::string& name) { return ParameterAxisLabel(name); }
-
 std::string ChartTitle(const Params& base, const Plane& plane) {
   const char* law[] = {"cubic", "Coulomb", "Stribeck", "Leine"};  // LawKind's order
   const int k = static_cast<int>(base.law);
@@ -145,8 +143,8 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "set datafile separator '\\t'\n"
      << "set datafile columnheaders\n"
      << "set encoding utf8\n"
-     << FigureUnitVariables(units) << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1.name()))
-     << "\nset ylabel " << GnuplotQuoted(units.P2Label(plane.p2.name())) << "\n"
+     << FigureUnitVariables(units) << "set xlabel " << GnuplotQuoted(units.P1Label(plane.p1))
+     << "\nset ylabel " << GnuplotQuoted(units.P2Label(plane.p2)) << "\n"
      << "set xrange [" << u1 * plane.from1 << ":" << u1 * plane.to1 << "]\n"
      << "set yrange [" << u2 * plane.from2 << ":" << u2 * plane.to2 << "]\n"
      << "set title \"" << title << "\"\n"

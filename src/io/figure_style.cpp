@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip {
@@ -171,11 +173,12 @@ std::string GnuplotQuoted(const std::string& text) {
 }
 
 namespace {
-std::string Dimensionless(const std::string& param, const FigureAxis& a) {
+std::string Dimensionless(const ParameterAxis& param, const FigureAxis& a) {
   if (!a.label.empty()) return a.label;
   // The parameters a physical run gives in units (cli/physical.hpp's axes).
-  const bool has_units =
-      param == "v" || param == "beta" || param == "v_m" || param == "v_s" || param == "delta";
+  const Parameter id = param.id();
+  const bool has_units = id == Parameter::kV || id == Parameter::kBeta || id == Parameter::kVM ||
+                         id == Parameter::kVS || id == Parameter::kDelta;
   return ParameterAxisLabel(param) + (has_units ? " (dimensionless)" : "");
 }
 }  // namespace
@@ -183,10 +186,10 @@ std::string Dimensionless(const std::string& param, const FigureAxis& a) {
 std::string FigureUnits::LengthUnit() const { return si ? " [m]" : " (dimensionless)"; }
 std::string FigureUnits::TimeUnit() const { return si ? " [s]" : " (dimensionless)"; }
 std::string FigureUnits::SpeedUnit() const { return si ? " [m/s]" : " (dimensionless)"; }
-std::string FigureUnits::P1Label(const std::string& param) const {
+std::string FigureUnits::P1Label(const ParameterAxis& param) const {
   return Dimensionless(param, p1);
 }
-std::string FigureUnits::P2Label(const std::string& param) const {
+std::string FigureUnits::P2Label(const ParameterAxis& param) const {
   return Dimensionless(param, p2);
 }
 
@@ -198,20 +201,36 @@ std::string FigureUnitVariables(const FigureUnits& u) {
   return os.str();
 }
 
-std::string ParameterAxisLabel(const std::string& param) {
+std::string ParameterAxisLabel(const ParameterAxis& param) {
   // The words of --help (cli/study.cpp), one set for every figure.
-  if (param == "v") return "belt speed v";
-  if (param == "beta") return "damping ratio β";
-  if (param == "mu_s") return "static friction coefficient μ_s";
-  if (param == "mu_m") return "minimum friction coefficient μ_m";
-  if (param == "mu_k") return "kinetic friction coefficient μ_k";
-  if (param == "v_m") return "speed of minimum friction v_m";
-  if (param == "v_s") return "Stribeck speed v_s";
-  if (param == "delta") return "friction decay rate δ";
-  if (param == "k5") return "quintic coefficient k_5";
-  if (param == "omega") return "forcing frequency Ω";
-  if (param == "force") return "force amplitude A";
-  return EnhancedText(param);
+  static constexpr NamedValue<Parameter> kWords[] = {
+      {Parameter::kV, "belt speed v"},
+      {Parameter::kBeta, "damping ratio β"},
+      {Parameter::kMuS, "static friction coefficient μ_s"},
+      {Parameter::kMuM, "minimum friction coefficient μ_m"},
+      {Parameter::kMuK, "kinetic friction coefficient μ_k"},
+      {Parameter::kVM, "speed of minimum friction v_m"},
+      {Parameter::kVS, "Stribeck speed v_s"},
+      {Parameter::kDelta, "friction decay rate δ"},
+      {Parameter::kK5, "quintic coefficient k_5"},
+  };
+  for (const auto& w : kWords)
+    if (w.value == param.id()) return w.name;
+  return EnhancedText(param.name());
+}
+
+std::string ParameterAxisLabel(ForcedAxis param) {
+  switch (param) {
+    case ForcedAxis::kOmega:
+      return "forcing frequency Ω";
+    case ForcedAxis::kForce:
+      return "force amplitude A";
+    case ForcedAxis::kV:
+      return ParameterAxisLabel(Parameter::kV);
+    case ForcedAxis::kBeta:
+      return ParameterAxisLabel(Parameter::kBeta);
+  }
+  return ForcedAxisName(param);
 }
 
 }  // namespace stickslip

@@ -94,8 +94,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
      << FigureTerminal(format, 1000, 860) << "set output '" << FigureFile("forced_chart", format)
      << "'.suffix\n"
      << "set datafile separator '\\t'\nset datafile columnheaders\nset encoding utf8\n"
-     << "set xlabel " << GnuplotQuoted(ParameterAxisLabel(ForcedAxisName(pl.p1))) << "\n"
-     << "set ylabel " << GnuplotQuoted(ParameterAxisLabel(ForcedAxisName(pl.p2))) << "\n"
+     << "set xlabel " << GnuplotQuoted(ParameterAxisLabel(pl.p1)) << "\n"
+     << "set ylabel " << GnuplotQuoted(ParameterAxisLabel(pl.p2)) << "\n"
      << "set xrange [" << pl.from1 << ":" << pl.to1 << "]\n"
      << "set yrange [" << pl.from2 << ":" << pl.to2 << "]\n"
      << "set title \"" << title << "\"\n"

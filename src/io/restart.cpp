@@ -94,17 +94,17 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
   } catch (const InvalidArgument& e) {
     throw RestartError(Part::kRun, "'" + t.path + "': " + e.what());
   }
-  lp->param = t.Meta("continued");
+  const std::string continued = t.Meta("continued");
   const auto model = t.meta.find("model");  // run_forced.cpp: "forced oscillator, ..."
   lp->forced = model != t.meta.end() && model->second.rfind("forced oscillator", 0) == 0;
-  const bool forcing = lp->forced && (lp->param == "force" || lp->param == "omega");
-  if (!forcing && !IsParameterName(lp->param))
-    throw RestartError(Part::kRun,
-                       "'" + t.path + "': continued '" + lp->param + "' is no parameter");
+  if (lp->forced ? !FromName(continued, &lp->forced_param) : !IsParameterName(continued))
+    throw RestartError(Part::kRun, "'" + t.path + "': continued '" + continued + "' is no " +
+                                       (lp->forced ? "axis of a forced run" : "parameter"));
+  if (!lp->forced) lp->param = ParameterAxis(continued);
   for (const std::string& name : ParameterNames(lp->params.law))
-    if (name != lp->param) SetParameter(lp->params, name, Number(t, t.Meta(name), name));
-  if (lp->forced && lp->param != "force") lp->force = Number(t, t.Meta("force"), "force");
-  if (lp->forced && lp->param != "omega") lp->omega = Number(t, t.Meta("omega"), "omega");
+    if (name != continued) SetParameter(lp->params, name, Number(t, t.Meta(name), name));
+  if (lp->forced && continued != "force") lp->force = Number(t, t.Meta("force"), "force");
+  if (lp->forced && continued != "omega") lp->omega = Number(t, t.Meta("omega"), "omega");
   const std::string integrator = t.Meta("integrator");
   if (integrator == "taylor") {
     lp->flow.integrator = Integrator::kTaylor;
@@ -126,13 +126,15 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
 
 // The row's parameter value and state.
 void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint* lp) {
-  lp->p = Number(t, row[t.Column(lp->param)], lp->param);
-  if (lp->param == "force") {
-    lp->force = lp->p;
-  } else if (lp->param == "omega") {
-    lp->omega = lp->p;
+  const std::string name = lp->ParamName();
+  lp->p = Number(t, row[t.Column(name)], name);
+  if (lp->forced) {  // the forcing or a belt parameter of the forced model
+    ForcedParams fp;
+    fp.base = lp->params, fp.force = lp->force, fp.omega = lp->omega;
+    SetAxis(fp, lp->forced_param, lp->p);
+    lp->params = fp.base, lp->force = fp.force, lp->omega = fp.omega;
   } else {
-    SetParameter(lp->params, lp->param, lp->p);
+    lp->param.Set(lp->params, lp->p);
   }
   const std::string x = lp->forced ? "x0" : "x_start", xdot = lp->forced ? "xdot0" : "xdot_start";
   lp->state = Vec2(Number(t, row[t.Column(x)], x), Number(t, row[t.Column(xdot)], xdot));

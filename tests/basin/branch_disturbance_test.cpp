@@ -20,7 +20,7 @@ TEST(BranchDisturbance, UnstablePureSlipRowsMatchTheReferenceOrbit) {
   o.max_step = 0.05;
   const ContinuationResult r = Continue(base, o);
   ASSERT_FALSE(r.partial()) << r.message;
-  const std::vector<ExtraColumn> cols = DisturbanceColumns(base, "v", r, o.orbit.flow);
+  const std::vector<ExtraColumn> cols = DisturbanceColumns(base, r, o.orbit.flow);
   ASSERT_EQ(cols.size(), 3u);
   int checked = 0, unstable = 0;
   for (size_t i = 0; i < r.points.size(); ++i) {

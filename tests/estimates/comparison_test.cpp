@@ -20,7 +20,7 @@ TEST(Comparison, ColumnsAgreeWithAnIndependentRecomputation) {
   o.max_step = 0.05;
   const ContinuationResult r = Continue(base, o);
   ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
-  const EstimateComparison c = CompareEstimates(base, "v", r);
+  const EstimateComparison c = CompareEstimates(base, r);
   ASSERT_TRUE(c.applies);
   const auto col = [&](const std::string& name) -> const std::vector<double>& {
     for (const auto& e : c.columns)
@@ -94,7 +94,7 @@ TEST(Comparison, OtherLawsSayWhy) {
   Params p;
   p.law = LawKind::kStribeck;
   ContinuationResult r;
-  const EstimateComparison c = CompareEstimates(p, "v", r);
+  const EstimateComparison c = CompareEstimates(p, r);
   EXPECT_FALSE(c.applies);
   EXPECT_NE(c.reason.find("stribeck"), std::string::npos);
 }

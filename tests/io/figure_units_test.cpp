@@ -12,6 +12,7 @@
 
 #include "app_test_util.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip {
 namespace {
@@ -43,9 +44,9 @@ class FigureUnitsTest : public testing_util::AppTest {
 
 TEST(FigureUnits, DimensionlessAxesSaySo) {
   const FigureUnits u;
-  EXPECT_EQ(u.P1Label("v"), "belt speed v (dimensionless)");
-  EXPECT_EQ(u.P1Label("beta"), "damping ratio β (dimensionless)");
-  EXPECT_EQ(u.P1Label("mu_s"), "static friction coefficient μ_s");  // a coefficient
+  EXPECT_EQ(u.P1Label(Parameter::kV), "belt speed v (dimensionless)");
+  EXPECT_EQ(u.P1Label(Parameter::kBeta), "damping ratio β (dimensionless)");
+  EXPECT_EQ(u.P1Label(Parameter::kMuS), "static friction coefficient μ_s");  // a coefficient
   EXPECT_EQ(u.LengthUnit(), " (dimensionless)");
   const std::string vars = FigureUnitVariables(u);
   for (const char* name : {"ul", "ut", "uv", "up", "up2"})

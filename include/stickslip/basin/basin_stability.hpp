@@ -46,6 +46,7 @@ BasinStability ExactBasinStability(const Model& model, const PeriodicOrbits& orb
 /// to `to` (ends included), in a fixed box: at each point the periodic
 /// orbits are found afresh (orbit_scan.hpp).
 struct BasinStabilityCurve {
+  ParameterAxis param = Parameter::kV;  // the parameter along the curve
   BasinStatus status = BasinStatus::kOk;
   std::string message;  // kFailed / kCancelled: where
   std::vector<double> p;

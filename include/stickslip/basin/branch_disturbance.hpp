@@ -16,10 +16,10 @@ namespace stickslip {
 // Columns dist_x, dist_xdot, dist_energy: one value per point of r, nan on
 // rows that are not unstable pure-slip orbits (or where the orbit's run
 // fails), 0 where such an orbit has amplitude 0 (its Hopf point). base is the model with the
-// continued parameter `param` set per row. `cancelled` (if set) is polled per
+// continued parameter r.param set per row. `cancelled` (if set) is polled per
 // row and by the flow; once it is true the remaining rows are nan.
-std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const std::string& param,
-                                            const ContinuationResult& r, const FlowOptions& flow,
+std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const ContinuationResult& r,
+                                            const FlowOptions& flow,
                                             const std::function<bool()>& cancelled = {});
 
 }  // namespace stickslip

@@ -55,11 +55,11 @@ struct EstimateComparison {
   int r1_applies = 0, a_ps_applies = 0, bound_holds = 0, bound_fails = 0;
 };
 
-/// base: the model; param: the continued parameter. check_points: the grid on
+/// base: the model; r.param: the continued parameter. check_points: the grid on
 /// which each NLopt fit is verified (coarser than the default keeps it cheap).
 /// `cancelled` (if set) is polled before every row's fits.
-EstimateComparison CompareEstimates(const Params& base, const std::string& param,
-                                    const ContinuationResult& r, int check_points = 2001,
+EstimateComparison CompareEstimates(const Params& base, const ContinuationResult& r,
+                                    int check_points = 2001,
                                     const std::function<bool()>& cancelled = {});
 
 }  // namespace stickslip

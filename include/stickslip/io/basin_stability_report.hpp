@@ -20,14 +20,14 @@ std::vector<std::string> BasinStabilityLines(const BasinStability& b);
 /// pure-slip orbits), undecided (a region no attractor bounds), enclosed (the
 /// fraction of the box inside the innermost pure-slip orbit, 0 if none), then
 /// metadata: model, the box, status.
-TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& param,
-                             const std::string& model_description, const Box& box);
+TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& model_description,
+                             const Box& box);
 
 /// gnuplot script drawing basin_stability.<format> (plus `suffix`, default
 /// empty) from basin_stability.tsv in its own directory, in the shared style
 /// (figure_style.hpp): each fraction against the parameter, in SI units for
 /// a physical run (`units`).
-std::string BasinStabilityScript(const std::string& param, const std::string& title,
+std::string BasinStabilityScript(const ParameterAxis& param, const std::string& title,
                                  FigureFormat format = FigureFormat::kPng,
                                  const FigureUnits& units = {});
 

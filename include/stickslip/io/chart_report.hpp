@@ -36,7 +36,5 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
 // "Stability chart, cubic law: μ_s = 0.4, μ_m = 0.25, v_m = 0.5": the law's
 // parameters but the two axes, as gnuplot enhanced text.
 std::string ChartTitle(const Params& base, const Plane& plane);
-// "belt speed v", "damping ratio β": ParameterAxisLabel (figure_style.hpp).
-std::string AxisLabel(const std::string& name);
 
 }  // namespace stickslip

@@ -15,6 +15,9 @@
 
 namespace stickslip {
 
+class ParameterAxis;
+enum class ForcedAxis;
+
 enum class FigureFormat { kPng, kPdf, kSvg };
 /// "png", "pdf", "svg": the --format value and the file extension.
 const char* FigureFormatName(FigureFormat f);
@@ -71,8 +74,11 @@ std::string EnhancedText(const std::string& plain);
 std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes);
 /// A double-quoted gnuplot string holding `text` (backslashes and quotes escaped).
 std::string GnuplotQuoted(const std::string& text);
-/// The axis words for a parameter name: "belt speed v", "damping β", ...
-std::string ParameterAxisLabel(const std::string& param);
+/// The axis words for a parameter: "belt speed v", "damping ratio β", ...
+std::string ParameterAxisLabel(const ParameterAxis& param);
+/// The forced oscillator's: "forcing frequency Ω", "forcing amplitude A", or
+/// the belt parameter's words.
+std::string ParameterAxisLabel(ForcedAxis param);
 
 /// A parameter axis as drawn: value on the axis = factor x dimensionless value.
 struct FigureAxis {
@@ -95,8 +101,8 @@ struct FigureUnits {
   std::string SpeedUnit() const;
   /// p1's (p2's) label; without one, ParameterAxisLabel(param) and, for a
   /// parameter that has units in a physical run, " (dimensionless)".
-  std::string P1Label(const std::string& param) const;
-  std::string P2Label(const std::string& param) const;
+  std::string P1Label(const ParameterAxis& param) const;
+  std::string P2Label(const ParameterAxis& param) const;
 };
 /// "ul = ...\nut = ...\nuv = ...\nup = ...\nup2 = ...\n" for a script.
 std::string FigureUnitVariables(const FigureUnits& u);

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip {
@@ -17,9 +19,12 @@ struct LabelledPoint {
   std::string label;          // "HB1", "GR1", ..., or the point number as given ("17")
   int pt = 0;                 // its row in branch.tsv (1-based)
   std::string type;           // GR, HB, LP, or the row's kind: stick-slip, pure-slip, equilibrium
-  std::string param;          // the parameter that run continued
-  double p = 0;               // its value at the point
-  Params params;              // every parameter at the point (param = p)
+  // The parameter that run continued: param for a belt run, forced_param for
+  // a forced one (forced below).
+  ParameterAxis param = Parameter::kV;
+  ForcedAxis forced_param = ForcedAxis::kOmega;
+  double p = 0;   // its value at the point
+  Params params;  // every parameter at the point (the continued one = p)
   FlowOptions flow;           // that run's integrator and tolerances
   Vec2 state = Vec2::Zero();  // x_start, xdot_start (BranchPoint / SpecialPoint)
   double period = 0;          // nan for steady sliding
@@ -31,6 +36,9 @@ struct LabelledPoint {
   // That run's range of param (its --from and --to), nan where not recorded.
   double run_from = std::numeric_limits<double>::quiet_NaN();
   double run_to = std::numeric_limits<double>::quiet_NaN();
+
+  /// The continued parameter's name as the run's files print it ("v", "omega").
+  std::string ParamName() const { return forced ? ForcedAxisName(forced_param) : param.name(); }
 };
 
 /// Why a restart cannot be read: the run directory (a file missing, corrupt,
