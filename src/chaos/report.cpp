@@ -5,7 +5,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip {
 namespace {
@@ -97,11 +99,13 @@ std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::
        << "')):'lyapunov' with points pt 7 ps 0.35 lc rgb '" << SeriesColor(i) << "' title 'sweep "
        << dirs[i] << "'";
   }
-  // Chaos marked as the basins classify it (docs/theory.md): lambda_1 > max(3 err, 1e-3).
+  // Chaos marked as the basins classify it (docs/theory.md): lambda_1 > max(3 err, floor).
+  const std::string floor = FormatNumber(Tolerances().ChaoticExponentFloor());
   os << ", \\\n     'lyapunov.tsv' using '" << ax
-     << "':(column('lyapunov') > 3 * column('lyapunov_err') && column('lyapunov') > 1e-3 ? "
-        "column('lyapunov') : 1/0) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title "
-        "'chaotic: λ_1 > max(3σ, 10^{-3})'";
+     << "':(column('lyapunov') > 3 * column('lyapunov_err') && column('lyapunov') > " << floor
+     << " ? column('lyapunov') : 1/0) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title "
+        "'chaotic: λ_1 > max(3σ, "
+     << floor << ")'";
   os << "\nunset multiplot\n";
   return os.str();
 }

@@ -140,8 +140,9 @@ std::string ForcedCurveProblem::DomainError(const Eigen::VectorXd& u) const {
   if (!u.allFinite()) return "non-finite point";
   const std::string e = ValidationError(plane_.At(base_, u[2], u[3]));
   if (!e.empty()) return e;
-  if (std::max(std::abs(u[0]), std::abs(u[1])) > 1e3)
-    return "|x| or |x'| = " + Num(std::max(std::abs(u[0]), std::abs(u[1]))) + " beyond 1e3";
+  const double size = std::max(std::abs(u[0]), std::abs(u[1]));
+  if (size > Tolerances::kForcedCurveAmplitude)
+    return "|x| or |x'| = " + Num(size) + " beyond " + Num(Tolerances::kForcedCurveAmplitude);
   return {};
 }
 

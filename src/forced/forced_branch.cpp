@@ -1,7 +1,6 @@
-// One-parameter continuation of the forced oscillator's periodic orbits: the
-// stroboscopic residual (forced_branch_problem.hpp) through Palc, rows from
-// each accepted point's run; LP, PD, NS and the sliding points located on the
-// chord between two rows; across a jump of the map, a restart (forced_sliding.hpp).
+// One-parameter continuation of the forced oscillator's periodic orbits: the stroboscopic
+// residual (forced_branch_problem.hpp) through Palc, rows from each accepted point's run; LP,
+// PD, NS and sliding points located on the chord between two rows; a jump: forced_sliding.hpp.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,6 +9,7 @@
 #include "forced_branch_problem.hpp"
 #include "forced_sliding.hpp"
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -134,7 +134,7 @@ Bracket Monitor::AcrossEdge(const Bracket& br, bool chord, double span,
                             const ForcedBranchRow& row) {
   Bracket out = br, fine;
   std::string why;
-  const double step = std::max(std::abs(span) / 8, 1e-6 * (1 + std::abs(out.lo.p)));
+  const double step = std::max(std::abs(span) / 8, Tolerances::kForcedEdgeStep * (1 + std::abs(out.lo.p)));
   bool found_edge = false, edge_only = false;
   for (const double sign : {1.0, -1.0})
     if (!found_edge && !edge_only) {
@@ -194,12 +194,13 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double far = chord ? br.hi.p : br.p_hi;
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
-    if (!chord || gap > 1e3 * o_.locate_tol * (1 + std::abs(far) + std::abs(br.lo.x0)))
+    const double edge_gap = Tolerances::kForcedEdgeGap * o_.locate_tol;
+    if (!chord || gap > edge_gap * (1 + std::abs(far) + std::abs(br.lo.x0)))
       br = AcrossEdge(br, chord, b[2] - from[2], row), jumped_ = true;
     // Edges within the tolerance are one point (the two halves of a
     // symmetric orbit on a floor reach the band together).
-    const bool same = k > 0 && std::abs(br.lo.p - found.back().p) <=
-                                   1e3 * o_.locate_tol * (1 + std::abs(br.lo.p));
+    const bool same =
+        k > 0 && std::abs(br.lo.p - found.back().p) <= edge_gap * (1 + std::abs(br.lo.p));
     if (same) found.pop_back();
     ForcedBranchRow point = same ? first_lo : br.lo;
     if (!same) first_lo = br.lo;
@@ -242,7 +243,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
   if (std::max(std::abs(row.extrema.x_min), std::abs(row.extrema.x_max)) > o_.max_amplitude) {
     out_.status = ForcedBranchStatus::kUnbounded;
     stopped_ = true;
-  } else if ((row.p - from_) * dir_ < -1e-3 * std::abs(to_ - from_)) {
+  } else if ((row.p - from_) * dir_ < -Tolerances::kForcedTurnBack * std::abs(to_ - from_)) {
     out_.status = ForcedBranchStatus::kLeftRange;
     out_.message = "the branch turned back past " + std::string(ForcedAxisName(axis_)) + " = " +
                    Num(from_, 12);
@@ -296,7 +297,7 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
     const ForcedBranchRow* prev = out.rows.size() >= 2 ? &out.rows[out.rows.size() - 2] : nullptr;
     const double dp = prev ? last.p - prev->p : 0;
     const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : trace_dir;
-    const double step = std::max(std::abs(dp), 1e-6 * std::abs(to - from));
+    const double step = std::max(std::abs(dp), Tolerances::kForcedEdgeStep * std::abs(to - from));
     ForcedBranchRow before, after;
     after.p = last.p, before.p = NAN;  // before.p: set where the edge is bisected
     std::string why = "more than max_jumps = " + std::to_string(options.max_jumps) + " jumps";

@@ -84,7 +84,7 @@ bool StrobeProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen
   jac->resize(2, 3);
   jac->leftCols(2) = last_.jacobian - Mat2::Identity();
   // dP/dp: central differences, step ~ cbrt(eps) relative (truncation and rounding balanced).
-  const double d = 6e-6 * std::max(1.0, std::abs(u[2]));
+  const double d = Tolerances::kForcedBranchDifference * std::max(1.0, std::abs(u[2]));
   ForcedRun plus, minus;
   ForcedParams qp = base_, qm = base_;
   SetAxis(qp, axis_, u[2] + d);

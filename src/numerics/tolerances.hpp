@@ -294,6 +294,22 @@ struct Tolerances {
   // Forced Taylor roots: deflated coefficients below kDeflateUlps (n + 1)
   // kDeflateEps scale are rounding (64 ulp per degree).
   static constexpr double kDeflateUlps = 64, kDeflateEps = 2.2e-16;
+  // Forced branches: dP/dp by central differences of step kForcedBranchDifference
+  // max(1, |p|) (about cbrt(eps): truncation and rounding balanced).
+  static constexpr double kForcedBranchDifference = 6e-6;
+  // Forced branches: the edge search behind a failed chord steps at least
+  // kForcedEdgeStep (1 + |p|), and a switched branch's kForcedEdgeStep |range|.
+  static constexpr double kForcedEdgeStep = 1e-6;
+  // Forced branches: a branch back past its start by kForcedTurnBack times the
+  // range has left it (a turn within rounding of the start is not).
+  static constexpr double kForcedTurnBack = 1e-3;
+  // Forced branches: an event bracket wider than kForcedEdgeGap locate_tol
+  // (1 + |p| + |x|) straddles a jump of the map, and two edges within it (in
+  // p) are one (the two halves of a symmetric orbit reach the band together).
+  static constexpr double kForcedEdgeGap = 1e3;
+  // Forced chart curves: a section point beyond this (|x| or |x'|) has left
+  // the branch's domain (ForcedBranchOptions::max_amplitude's default).
+  static constexpr double kForcedCurveAmplitude = 1e3;
   // Forcing phase: Omega t within kPhaseUlps 1e-15 (1 + |Omega t|) of 2 pi is 0.
   static constexpr double kPhaseRounding = 1e-15, kPhaseUlps = 8;
 };
