@@ -6,12 +6,21 @@ struct, whose opening line looks like a function head (a ')' before the '{',
 not a control statement, not an initialiser or lambda assignment); its length
 is from the head's first line to the closing '}'. Comments and string
 literals are blanked first. Usage: check_limits.py [ROOT] [--allow FILE]
-(FILE: lines 'path:function  # why', each a justified exception)."""
+(FILE: lines 'path:function  # why', each a justified exception).
+Also issue 19's "no numeric threshold literal outside the tolerance
+definitions": a literal in exponent form (1e-9, 2e3) in the library's code
+(src/ but src/cli and src/apps, whose 1e3 are units and whose defaults are
+options) outside src/numerics/tolerances.hpp is reported. Public headers'
+option defaults (include/) are documented values, not thresholds."""
 import os
 import re
 import sys
 
 MAX_FILE, MAX_FUNCTION = 350, 80
+EXPONENT = re.compile(r'(?<![\w.])(\d+\.?\d*|\.\d+)[eE][-+]?\d+')
+LITERAL_FREE = ('src' + os.sep,)
+LITERAL_EXEMPT = (os.path.join('src', 'cli'), os.path.join('src', 'apps'),
+                  os.path.join('src', 'numerics', 'tolerances.hpp'))
 CONTROL = re.compile(r'\b(if|for|while|switch|catch|do|else)\b\s*(\(|$)')
 
 
@@ -102,6 +111,12 @@ def main(argv):
                 n = text.count('\n')
                 if n > MAX_FILE and rel not in allow:
                     problems.append(f'{rel}: {n} lines (limit {MAX_FILE})')
+                if rel.startswith(LITERAL_FREE) and not rel.startswith(LITERAL_EXEMPT):
+                    for k, line in enumerate(blank(text).split('\n'), 1):
+                        m = EXPONENT.search(line)
+                        if m and f'{rel}:{k}' not in allow:
+                            problems.append(f'{rel}:{k}: threshold literal {m.group(0)} '
+                                            'outside src/numerics/tolerances.hpp')
                 for name, first, length in functions(text):
                     if length > MAX_FUNCTION and f'{rel}:{name}' not in allow:
                         problems.append(f'{rel}:{first}: {name} is {length} lines '

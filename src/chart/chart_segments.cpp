@@ -70,7 +70,7 @@ std::vector<Segment> UnitSegments(const Plane& plane,
     for (int e : {0, 1}) {
       const Point2 p = ends[k][e];
       if (!std::isfinite(p[0])) continue;
-      double best = kEndSnap;
+      double best = Tolerances::kEndSnap;
       Point2 to = p;
       auto consider = [&](const Point2& q) {
         const double d = std::hypot(q[0] - p[0], q[1] - p[1]);
@@ -81,7 +81,7 @@ std::vector<Segment> UnitSegments(const Plane& plane,
         if (j != k)
           for (size_t s = first[j]; s < first[j + 1]; ++s) consider(Nearest(segs[s], p));
       if (first[k + 1] - first[k] > 2) consider(ends[k][1 - e]);
-      if (best > Tolerances::kSegmentMinLength && best < kEndSnap) segs.push_back({p, to});
+      if (best > Tolerances::kSegmentMinLength && best < Tolerances::kEndSnap) segs.push_back({p, to});
     }
   return segs;
 }

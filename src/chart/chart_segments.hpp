@@ -20,6 +20,4 @@ using Segment = std::array<Point2, 2>;
 std::vector<Segment> UnitSegments(const Plane& plane,
                                   const std::vector<std::vector<Point2>>& polylines);
 
-constexpr double kEndSnap = 2e-3;  // of the rectangle's sides
-
 }  // namespace stickslip

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/chart/plane.hpp"
 #include "stickslip/continuation/palc.hpp"
@@ -21,9 +22,8 @@ struct TraceOptions {
   int i1 = 0;              // u[i1], u[i1 + 1] are the plane's coordinates
   double max_step = 0.01;  // fraction of the rectangle (scaled arclength)
   double other_scale = 1;  // scale of the unknowns other than the plane's
-  // Corrector tolerance on the scaled update (PalcOptions::tol). The point
-  // returned is the one before the last update, so this bounds its error.
-  double tol = 1e-12;
+  // Corrector tolerance on the scaled update (PalcOptions::tol).
+  double tol = Tolerances().chart_corrector;
   std::function<bool()> cancelled;
   // Stops a way at an accepted point (e.g. an LP orbit touching the belt).
   std::function<bool(const Eigen::VectorXd&)> stop;

@@ -1,3 +1,4 @@
+#include "numerics/tolerances.hpp"
 #include "stickslip/continuation/continuation.hpp"
 
 #include <algorithm>
@@ -28,8 +29,9 @@ std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (!(min_step > 0)) return "min_step = " + Num(min_step) + " must be > 0";
   if (!(max_step > min_step))
     return "max_step = " + Num(max_step) + " must be > min_step = " + Num(min_step);
-  if (!(locate_tol > 0 && locate_tol < 1e-3))
-    return "locate_tol = " + Num(locate_tol) + " must be in (0, 1e-3)";
+  if (!(locate_tol > 0 && locate_tol < Tolerances::kLocateTolMax))
+    return "locate_tol = " + Num(locate_tol) + " must be in (0, " +
+           Num(Tolerances::kLocateTolMax) + ")";
   if (max_points < 2) return "max_points = " + Num(max_points) + " must be >= 2";
   for (double p : {from, to}) {
     const std::string err = stickslip::ValidationError(param.At(base, p));

@@ -18,13 +18,15 @@ const char* ForcedEventName(ForcedEventKind k) { return Name(k); }
 const char* ForcedStatusName(ForcedStatus s) { return Name(s); }
 
 std::string ForcedOptions::ValidationError() const {
-  if (!(rtol >= 1e-16 && rtol <= 1e-2)) return "rtol = " + Num(rtol) + " must lie in [1e-16, 1e-2]";
-  if (!(atol >= 1e-16 && atol <= 1e-2)) return "atol = " + Num(atol) + " must lie in [1e-16, 1e-2]";
+  using T = Tolerances;
+  const std::string range = " must lie in [" + Num(T::kAtolMin) + ", " + Num(T::kTolMax) + "]";
+  if (!(rtol >= T::kAtolMin && rtol <= T::kTolMax)) return "rtol = " + Num(rtol) + range;
+  if (!(atol >= T::kAtolMin && atol <= T::kTolMax)) return "atol = " + Num(atol) + range;
   if (max_steps < 1) return "max_steps = " + std::to_string(max_steps) + " must be >= 1";
   if (max_events < 1) return "max_events = " + std::to_string(max_events) + " must be >= 1";
-  if (integrator == Integrator::kCvode && !(rtol >= 1e-13 && atol >= 1e-15))
-    return "rtol = " + Num(rtol) + ", atol = " + Num(atol) +
-           ": CVODE needs rtol >= 1e-13 and atol >= 1e-15";
+  if (integrator == Integrator::kCvode && !(rtol >= T::kCvodeRtolMin && atol >= T::kCvodeAtolMin))
+    return "rtol = " + Num(rtol) + ", atol = " + Num(atol) + ": CVODE needs rtol >= " +
+           Num(T::kCvodeRtolMin) + " and atol >= " + Num(T::kCvodeAtolMin);
   return "";
 }
 

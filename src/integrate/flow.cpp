@@ -29,10 +29,11 @@ const char* FlowStatusName(FlowStatus s) { return Name(s); }
 
 std::string FlowOptions::ValidationError() const {
   std::ostringstream os;
-  if (!(rtol >= 1e-14 && rtol <= 1e-2)) {
-    os << "rtol = " << rtol << " must be in [1e-14, 1e-2]";
-  } else if (!(atol >= 1e-16 && atol <= 1e-2)) {
-    os << "atol = " << atol << " must be in [1e-16, 1e-2]";
+  using T = Tolerances;
+  if (!(rtol >= T::kRtolMin && rtol <= T::kTolMax)) {
+    os << "rtol = " << rtol << " must be in [" << T::kRtolMin << ", " << T::kTolMax << "]";
+  } else if (!(atol >= T::kAtolMin && atol <= T::kTolMax)) {
+    os << "atol = " << atol << " must be in [" << T::kAtolMin << ", " << T::kTolMax << "]";
   } else if (max_steps < 10) {
     os << "max_steps = " << max_steps << " must be >= 10";
   } else if (max_switches < 1) {

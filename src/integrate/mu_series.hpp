@@ -31,6 +31,9 @@ class MuSeries {
     if (law_ == LawKind::kStribeck) inv_b_ = 1 / b_;
   }
   LawKind law() const { return law_; }
+  double mu_s() const { return mu_s_; }
+  // cubic: the odd coefficient c_j of mu_s + c_1 s + c_3 s^3 + c_5 s^5 (j = 1, 3, 5).
+  double cubic(int j) const { return c_[j]; }
 
   // Each step: Begin(order) clears the series; then for k = 0, 1, ...: Old(k)
   // while s_k and later are still 0 (the sums of products of earlier

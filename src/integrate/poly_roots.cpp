@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 
 namespace stickslip {
 namespace {
@@ -69,6 +72,17 @@ void Split(const double* b, int n, double* l, double* r) {
 
 int Sign(double x, int zero_sign) { return x > 0 ? 1 : (x < 0 ? -1 : zero_sign); }
 
+// std::nextafter(x, 2.0) for x in [0, 2) by the bits (the libm call is not inlined).
+double NextUp(double x) {
+  if (!(x >= 0 && x < 2)) return std::nextafter(x, 2.0);
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  ++b;
+  std::memcpy(&x, &b, sizeof b);
+  return x;
+}
+
 }  // namespace
 
 void RestrictToTail(const double* c, int n, double u, double* out) {
@@ -116,7 +130,7 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
       if (x + d < hi && changed(x + d)) hi = x + d;
     }
   }
-  for (int it = 0; it < 200 && std::nextafter(lo, 2.0) < hi; ++it) {
+  for (int it = 0; it < 200 && NextUp(lo) < hi; ++it) {
     const double mid = 0.5 * (lo + hi);
     if (mid <= lo || mid >= hi) break;
     (changed(mid) ? hi : lo) = mid;

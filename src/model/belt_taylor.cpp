@@ -29,6 +29,7 @@ class BeltTaylorField final : public TaylorField {
     two_beta_ = 2 * belt->beta();
     sigma_ = m == Mode::kSlipBelow ? 1 : -1;
     mu_.emplace(belt->friction());
+    cubic3_ = law_ == LawKind::kCubic && mu_->cubic(5) == 0;
     if (parameter_) ResolveParameter();
     s_.Clear();
     cc_.Clear();
@@ -39,13 +40,18 @@ class BeltTaylorField final : public TaylorField {
  private:
   template <LawKind L, bool Var>
   void Recurrences(int order, int n, TaylorRow* c);
+  template <bool Var>
+  void Cubic3(int order, int n, TaylorRow* c);
+  template <bool Newest>
+  void Columns(int k, int n, double inv, double dmu, TaylorRow* c);
   void ResolveParameter();
   double ParamTerm(const TaylorRow* c, int k, double muk, double muk_shifted, double dmu) const;
 
   Params q_;
   LawKind law_ = LawKind::kCubic;
   double v_ = 0, two_beta_ = 0;
-  int sigma_ = 1;  // F = sigma mu(s), s = sigma (v - x')
+  int sigma_ = 1;        // F = sigma mu(s), s = sigma (v - x')
+  bool cubic3_ = false;  // the cubic law without the quintic term: Cubic3
   // The series of s = sigma (v - x'), of -2 beta - mu'(s), of mu.
   Series<kTaylorMaxOrder> s_, cc_;
   std::optional<MuSeries> mu_;
@@ -96,14 +102,69 @@ void BeltTaylorField::Recurrences(int order, int n, TaylorRow* c) {
     }
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-      for (int col = 2; col < n; col += 2) {
-        const double cq = Cauchy(c[col + 1], cc, k);
-        c[col][k + 1] = c[col + 1][k] * inv;
-        c[col + 1][k + 1] = (-c[col][k] + cq) * inv;
-      }
-      if (n == 8) {
+      Columns<false>(k, n, inv, dmu, c);
+      if (n == 8 && kind_ == ParamKind::kAffine) {
         c[7][k + 1] += ParamTerm(c, k, muk, muk_shifted, dmu) * inv;
       }
+    }
+  }
+}
+
+// Phi' = J Phi and the parameter column (beta, v) at order k + 1, cc_ set to k.
+template <bool Newest>
+inline void BeltTaylorField::Columns(int k, int n, double inv, double dmu, TaylorRow* c) {
+  const double* cc = cc_.c();
+  for (int col = 2; col < n; col += 2) {
+    const double* p = c[col + 1];
+    // Cubic3: the newest terms (j = 0 and k) last, as there.
+    const double cq = !Newest  ? Cauchy(p, cc, k)
+                      : k == 0 ? p[0] * cc[0]
+                               : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
+    c[col][k + 1] = c[col + 1][k] * inv;
+    c[col + 1][k + 1] = (-c[col][k] + cq) * inv;
+  }
+  if (n == 8 && kind_ != ParamKind::kAffine) c[7][k + 1] += ParamTerm(c, k, 0, 0, dmu) * inv;
+}
+
+// Recurrences<kCubic> for mu = mu_s + c1 s + c3 s^3 (k5 = 0, the seed law),
+// with w = s^2 and mu_k = sigma alpha_k + slope s_k as there, in one loop whose
+// order k + 1 waits a few operations for order k - 1: the newest terms of the
+// sums of products (j = 1 and k - 1) go in last (CauchyNewestLast), and
+// w_k = old + 2 s0 s_k takes s_k = -sigma x'_k from x'_k directly.
+template <bool Var>
+void BeltTaylorField::Cubic3(int order, int n, TaylorRow* c) {
+  const double v = v_, two_beta = two_beta_, sg = sigma_;
+  const double mu_s = mu_->mu_s(), c1 = mu_->cubic(1), c3 = mu_->cubic(3);
+  double s[kTaylorMaxOrder + 1], w[kTaylorMaxOrder + 1];
+  double* cc = cc_.c();
+  double* x = c[0];
+  double* xd = c[1];
+  // Order 0: seed eq. (3.5) at the step start.
+  s[0] = sg * (v - xd[0]);
+  w[0] = s[0] * s[0];
+  const double mu0 = (mu_s + c1 * s[0]) + c3 * (w[0] * s[0]);
+  xd[1] = -x[0] - two_beta * xd[0] + sg * mu0;
+  const double damp = two_beta + (c1 + w[0] * (3 * c3));  // 2 beta + mu'(s_0)
+  const double sg_c3 = sg * c3, s0 = s[0], m2s0 = -2 * sg * s0;
+  x[1] = xd[0];
+  if constexpr (Var) {
+    const double dmu = c1 + 3 * c3 * w[0];
+    cc[0] = -two_beta - dmu;
+    Columns<true>(0, n, 1.0, dmu, c);
+  }
+  for (int k = 1; k < order; ++k) {
+    const double inv = kTaylorInverse.r[k];
+    const double old0 = CauchyNewestLast(s, s, k);    // (s^2)_k without s_k
+    const double old1 = CauchyNewestLast(w, s, k);    // (s^3)_k without s_k, w_k
+    const double alpha = sg_c3 * (old1 + s0 * old0);  // sigma c3 (s^3)_k without s_k
+    xd[k + 1] = ((alpha - x[k]) - damp * xd[k]) * inv;
+    s[k] = -sg * xd[k];
+    w[k] = old0 + m2s0 * xd[k];
+    x[k + 1] = xd[k] * inv;
+    if constexpr (Var) {
+      const double dmu = 3 * c3 * w[k];
+      cc[k] = -dmu;
+      Columns<true>(k, n, inv, dmu, c);
     }
   }
 }
@@ -147,6 +208,8 @@ double BeltTaylorField::ParamTerm(const TaylorRow* c, int k, double muk, double 
 
 void BeltTaylorField::Coefficients(int order, int n, TaylorRow* c) {
   const bool var = n >= 6;
+  if (cubic3_ && !(n == 8 && kind_ == ParamKind::kAffine))
+    return var ? Cubic3<true>(order, n, c) : Cubic3<false>(order, n, c);
   switch (law_) {
     case LawKind::kCubic:
       return var ? Recurrences<LawKind::kCubic, true>(order, n, c)

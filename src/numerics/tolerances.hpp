@@ -25,6 +25,12 @@ struct Tolerances {
   // with max(1, |t|) (times) or the state's size, never with rtol.
   static constexpr double kEps = 2.2e-16;  // the unit roundoff DBL_EPSILON, rounded
 
+  /// The tolerances a flow accepts: rtol in [kRtolMin, kTolMax] (belt: Taylor
+  /// and CVODE), atol in [kAtolMin, kTolMax]; the forced flow takes rtol down
+  /// to kAtolMin, but its CVODE path needs rtol >= kCvodeRtolMin and atol >=
+  /// kCvodeAtolMin (below, CVODE stalls).
+  static constexpr double kRtolMin = 1e-14, kAtolMin = 1e-16, kTolMax = 1e-2;
+  static constexpr double kCvodeRtolMin = 1e-13, kCvodeAtolMin = 1e-15;
   /// The flow's stop time advances in chunks this long: CVODE needs a finite
   /// stop time, and t + 1e9 keeps 1e-7 resolution in t.
   static constexpr double kStopTimeChunk = 1e9;
@@ -124,6 +130,10 @@ struct Tolerances {
   /// HB curves: corrector tolerance (exact derivatives: Newton converges to
   /// rounding).
   double hopf_corrector = 1e-15;
+  /// Other chart curves (GR): corrector tolerance on the scaled update
+  /// (TraceOptions::tol's default; the point returned is the one before the
+  /// last update, so this bounds its error).
+  double chart_corrector = 1e-12;
   /// Codimension-two points within same_point times the rectangle's size are
   /// one point (found again from the other side of a curve).
   double same_point = 1e-8;
@@ -274,6 +284,11 @@ struct Tolerances {
   // shorter than kSegmentMinLength is none.
   static constexpr double kFaceSnap = 1e-9, kFaceParallel = 1e-14, kFaceCollinear = 1e-12;
   static constexpr double kSegmentMinLength = 1e-12;
+  // Chart segments: a polyline end within kEndSnap (of the rectangle's sides)
+  // of the border or of another end is joined to it (chart_segments.hpp).
+  static constexpr double kEndSnap = 2e-3;
+  // ContinuationOptions::locate_tol must lie in (0, kLocateTolMax).
+  static constexpr double kLocateTolMax = 1e-3;
 
   // --- Estimates, model bounds and the forced oscillator's rounding ---
   // Seed estimates (estimates.cpp FirstCrossing): y' of (3.22) is sampled
