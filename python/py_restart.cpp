@@ -36,6 +36,9 @@ ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::st
 // point (a GR or HB point, inside the rectangle), with the run's solver.
 ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, double from, double to,
                        double from2, double to2) {
+  if (lp.forced)  // its axis is the forcing's or the forced model's: no belt chart
+    throw InvalidArgument(lp.label + " is a point of a forced run: a forced chart is ss_chart " +
+                          "--force A --omega W --param omega --param2 force");
   if (lp.type != "GR" && lp.type != "HB")
     throw InvalidArgument(lp.label + " is a " + lp.type + " point: a chart starts from a GR or " +
                           "HB point");

@@ -10,8 +10,11 @@ literals are blanked first. Usage: check_limits.py [ROOT] [--allow FILE]
 Also issue 19's "no numeric threshold literal outside the tolerance
 definitions": a literal in exponent form (1e-9, 2e3) in the library's code
 (src/ but src/cli and src/apps, whose 1e3 are units and whose defaults are
-options) outside src/numerics/tolerances.hpp is reported. Public headers'
-option defaults (include/) are documented values, not thresholds."""
+options) outside src/numerics/tolerances.hpp is reported. Not checked: the
+public headers (include/: option defaults, and three public constants
+documented where declared: params.hpp's kMinScale/kMaxScale,
+continuation.hpp's kLoosestTrustedRtol, plane.hpp's kMinRelativeWidth), and
+literals in decimal form (0.5, 1000000)."""
 import os
 import re
 import sys

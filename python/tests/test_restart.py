@@ -124,6 +124,8 @@ class ForcedRestart(unittest.TestCase):
             self.assertEqual((lp.force, lp.m), (1.0, 1))
             with self.assertRaises(ValueError):
                 lp.options("beta")  # a belt branch from a forced point
+            with self.assertRaisesRegex(ValueError, "forced run"):
+                lp.chart_options()  # nor a belt chart (its axis is no belt parameter)
             b = stickslip.continue_forced(lp.forced_params(), stickslip.ForcedAxis.force,
                                           lp.force, 2.0, *lp.state, m=lp.m)
         self.assertGreater(len(b.p), 10)

@@ -44,7 +44,7 @@ constexpr const char* kNotes =
     "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default 40)\n"
     "classifies N x N cells by the attractor reached (period m and sticks, quasi-periodic,\n"
     "chaotic by the largest Lyapunov exponent; each row swept along --param). Outputs:\n"
-    "curves.tsv, codim2.tsv (R1, R2, LPPD, SL), response.tsv, forced_chart.gp and\n"
+    "curves.tsv, codim2.tsv (R1, R2, LPPD, SL, GG), response.tsv, forced_chart.gp and\n"
     "forced_chart.png.\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 

@@ -183,9 +183,10 @@ void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane
     for (size_t j = i + 1; j < curves.size(); ++j) {
       const ForcedCurve &a = curves[i], &b = curves[j];
       if (a.kind != ForcedCurveKind::kGR || b.kind != ForcedCurveKind::kGR || a.m != b.m) continue;
+      bool met = false;  // one GG per pair of curves
       for (const bool fa : {true, false})
         for (const bool fb : {true, false}) {
-          if (!inner(a, fa) || !inner(b, fb)) continue;
+          if (met || !inner(a, fa) || !inner(b, fb)) continue;
           const ForcedCurvePoint &p = fa ? a.points.front() : a.points.back(),
                                  &q = fb ? b.points.front() : b.points.back();
           if (std::hypot((p.p1 - q.p1) / pl.width1(), (p.p2 - q.p2) / pl.width2()) > tol) continue;
@@ -196,6 +197,7 @@ void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane
           x.description = "GR curves " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
                           " meet: two touches of x' = v at once (double grazing)";
           out->push_back(x);
+          met = true;
         }
     }
 }

@@ -107,7 +107,8 @@ TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
   Header(t, r, model);
   t.AddComment(
       "located: refined (the test function's root on the corrected curve), chord (linear "
-      "between two curve points: the refinement failed), end (SL: the curve's end)");
+      "between two curve points: the refinement failed), end (SL: the curve's end; GG: the "
+      "middle of two curve ends that meet)");
   for (const ForcedCodim2& p : r.codim2)
     t.AddRow({ForcedCodim2Name(p.label), p.p1, p.p2, p.curve + 1, ForcedCurveName(p.on),
               p.description, ForcedCodim2MethodName(p.method)});
