@@ -32,6 +32,19 @@ inline ForcedParams Belt(LawKind law, double beta, double v, double a, double w)
   return p;
 }
 
+// The seed's cubic law (its mu_m 0.25, v_m 0.5) at beta 0.05 and belt speed v under
+// A cos(w t): studies/seed_forced.ini (v 0.25) and forced_ns_seed.ini (v 0.42).
+inline ForcedParams SeedBelt(double v, double a, double w) {
+  return Belt(LawKind::kCubic, 0.05, v, a, w);
+}
+
+// studies/stribeck_forced.ini's law (v_s 0.2) at beta 0.05 and belt speed v.
+inline ForcedParams StribeckBelt(double v, double a, double w) {
+  ForcedParams p = Belt(LawKind::kStribeck, 0.05, v, a, w);
+  p.base.v_s = 0.2;
+  return p;
+}
+
 /// Den Hartog (1931), the non-stop amplitude of the undamped Coulomb belt at
 /// rest: X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
 /// U = sin(pi / W) / (W (1 + cos(pi / W))).

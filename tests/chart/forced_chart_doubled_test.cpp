@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -18,13 +19,7 @@
 namespace stickslip {
 namespace {
 
-ForcedParams Stribeck(double a, double w) {
-  ForcedParams p;
-  p.base.law = LawKind::kStribeck;
-  p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
-  p.force = a, p.omega = w;
-  return p;
-}
+ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
 
 // The Omegas of the PD points of the m = 2 branches doubled from the m = 1
 // branch at force a, traced in Omega from 0.8 down to 0.5 from the state

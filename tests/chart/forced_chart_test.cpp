@@ -74,13 +74,7 @@ TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
 }
 
 // The stribeck_forced study's scene (studies/stribeck_forced.ini).
-ForcedParams Stribeck(double a, double w) {
-  ForcedParams p;
-  p.base.law = LawKind::kStribeck;
-  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = 0.25;
-  p.force = a, p.omega = w;
-  return p;
-}
+ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
 
 // The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
 ForcedBranch OmegaRun(double a) {

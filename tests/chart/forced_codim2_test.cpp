@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -25,20 +26,10 @@ namespace {
 
 using reference::LReal;
 
-ForcedParams Stribeck041() {
-  ForcedParams p;
-  p.base.law = LawKind::kStribeck;
-  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = 0.41;
-  return p;
-}
+ForcedParams Stribeck041() { return forced_reference::StribeckBelt(0.41, 0, 1); }
 
 // studies/forced_ns_seed.ini
-ForcedParams SeedBelt042() {
-  ForcedParams p;
-  p.base.law = LawKind::kCubic;
-  p.base.beta = 0.05, p.base.v = 0.42, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
-  return p;
-}
+ForcedParams SeedBelt042() { return forced_reference::SeedBelt(0.42, 0, 1); }
 
 ForcedChartResult Chart(const ForcedParams& base, double w0, double w1, double a0, double a1) {
   ForcedChartOptions o;

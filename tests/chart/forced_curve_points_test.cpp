@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 
@@ -18,13 +19,7 @@ namespace stickslip {
 namespace {
 
 // studies/seed_forced.ini: the seed set forced by A cos(Omega t).
-ForcedParams Seed(double a, double w) {
-  ForcedParams p;
-  p.base.law = LawKind::kCubic;
-  p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
-  p.force = a, p.omega = w;
-  return p;
-}
+ForcedParams Seed(double a, double w) { return forced_reference::SeedBelt(0.25, a, w); }
 
 ForcedOptions Flow() {
   ForcedOptions f;

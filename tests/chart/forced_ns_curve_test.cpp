@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -17,13 +18,7 @@ namespace stickslip {
 
 namespace {
 
-ForcedParams Scene(double a, double w) {
-  ForcedParams p;
-  p.base.law = LawKind::kCubic;
-  p.base.beta = 0.05, p.base.v = 0.42, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
-  p.force = a, p.omega = w;
-  return p;
-}
+ForcedParams Scene(double a, double w) { return forced_reference::SeedBelt(0.42, a, w); }
 
 // The study's chart: Omega 0.6..1.6, A 0.002..0.1.
 ForcedChartOptions ChartOptions() {

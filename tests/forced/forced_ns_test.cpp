@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -21,13 +22,7 @@ namespace {
 
 using reference::LReal;
 
-ForcedParams Scene(double v) {
-  ForcedParams p;
-  p.base.law = LawKind::kStribeck;
-  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = v;
-  p.force = 0.05, p.omega = 1.5;
-  return p;
-}
+ForcedParams Scene(double v) { return forced_reference::StribeckBelt(v, 0.05, 1.5); }
 
 // det of the reference map's Jacobian at its fixed point near (x, y).
 LReal RefDet(const ForcedParams& p, LReal x, LReal y, bool* ok) {
@@ -128,10 +123,7 @@ TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
 // v = 0.42, A = 0.05, in Omega): the 1:1 tongue's two sides, where the locked
 // pure-slip orbit is stable towards Omega = 1.
 TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
-  ForcedParams p;
-  p.base.law = LawKind::kCubic;
-  p.base.beta = 0.05, p.base.v = 0.42, p.base.mu_s = 0.4, p.base.mu_m = 0.25, p.base.v_m = 0.5;
-  p.force = 0.05;
+  ForcedParams p = forced_reference::SeedBelt(0.42, 0.05, 1);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
   const ForcedBranch b = testing_util::TraceOmega(p, 1.3, 0.6, o);
