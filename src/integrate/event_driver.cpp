@@ -1,34 +1,16 @@
-// The event loop of one smooth segment (event_driver.hpp).
+// The event loop's helpers (event_driver.hpp), and its instance for the
+// belt's steppers.
 #include "integrate/event_driver.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 namespace stickslip {
-namespace {
-
-// Each root function fires once per instant: roots that keep coming at one t,
-// to rounding (steps of zero or rounding length, each resetting the stepper's
-// step count), would loop for ever, so they are a failure that says where.
-struct RootRepeats {
-  double t = NAN;  // where the run of repeats began
-  int count = 0;
-  bool Stuck(double t_root) {
-    const bool same = std::abs(t_root - t) <= Tolerances::RootRepeat(t);
-    count = same ? count + 1 : 0;
-    if (!same) t = t_root;
-    return count > 2 * kNumRoots;
-  }
-};
+namespace event_detail {
 
 void Emit(const SegmentOutput& out, Mode mode, double t, const double* y) {
   (*out.observer)(Sample{t, Vec2(y[0], y[1]), mode});
   *out.next += out.dt;
 }
 
-// The events at a root: non-terminal hooks in the order of the functions,
-// until the first terminal event (it ends the segment: returns its g).
-int Dispatch(const SlipProblem& p, const int* rf, const double* y, int* direction) {
+int Dispatch(const SegmentProblem& p, const int* rf, const double* y, int* direction) {
   for (int i = 0; i < kNumRoots; ++i) {
     if (rf[i] == 0) continue;
     if (p.on_event.fn && p.events.NonTerminal(i, rf[i])) p.on_event(i, y);
@@ -40,71 +22,15 @@ int Dispatch(const SlipProblem& p, const int* rf, const double* y, int* directio
   return -1;
 }
 
-// Whether a root at the stepper's (re)start is an event: only a terminal
-// event that counts at the start (Event::at_start).
-bool CountsAtStart(const SlipProblem& p, const int* rf) {
+bool CountsAtStart(const SegmentProblem& p, const int* rf) {
   for (int i = 0; i < kNumRoots; ++i)
     if (rf[i] != 0 && p.events.AtStart(i, rf[i])) return true;
   return false;
 }
 
-}  // namespace
+}  // namespace event_detail
 
-SegmentEnd RunSegment(Stepper& cv, const SlipProblem& problem, double t0, const double* y0,
-                      double t_max, const SegmentOutput& out) {
-  cv.Reset(problem, t0, y0);
-  SegmentEnd end;
-  // A finite stop time (CVODE's), extended in chunks until t_max.
-  end.t_end = std::min(t_max, t0 + Tolerances::kStopTimeChunk);
-  cv.SetStopTime(end.t_end);
-  // A segment that starts at an output time (a switch there, to rounding) has
-  // that sample already: the switch's.
-  const bool sampling = out.on();
-  while (sampling && *out.next <= t0 + Tolerances::OutputAtStart(t0)) *out.next += out.dt;
-  RootRepeats repeats;
-  auto done = [&](SegmentEnd::Kind kind, double t) {
-    end.kind = kind;
-    end.t = t;
-    end.y = cv.y();
-    return end;
-  };
-  for (;;) {
-    const double tout = sampling ? std::min(*out.next, end.t_end) : end.t_end;
-    double t = t0;
-    const StepOutcome flag = cv.Advance(tout, &t);
-    if (flag == StepOutcome::kCancelled || (problem.cancel && (*problem.cancel)()))
-      return done(SegmentEnd::kCancelled, t);
-    if (flag == StepOutcome::kTooMuchWork) return done(SegmentEnd::kTooMuchWork, t);
-    if (flag == StepOutcome::kFailed) {
-      end.reason = cv.last_error();
-      return done(SegmentEnd::kFailed, cv.CurrentTime());
-    }
-    if (flag == StepOutcome::kRoot) {
-      int rf[kNumRoots];
-      cv.RootInfo(rf);
-      if (repeats.Stuck(t)) {
-        end.reason = "events repeat at this time without progress";
-        return done(SegmentEnd::kFailed, t);
-      }
-      // A root exactly at an output time: report the sample, or the next
-      // call would ask for tout = t.
-      if (sampling && t >= *out.next) Emit(out, problem.mode, t, cv.y());
-      // A start on a root surface holds only to rounding: a root there is not
-      // an event, unless an event says it counts at the start.
-      const double start = cv.SegmentStart();
-      if (t - start <= Tolerances::EventAtStart(start) && !CountsAtStart(problem, rf)) continue;
-      end.g = Dispatch(problem, rf, cv.y(), &end.direction);
-      if (end.g >= 0) return done(SegmentEnd::kEvent, t);
-      continue;
-    }
-    if (t >= end.t_end && end.t_end < t_max) {  // the next chunk
-      end.t_end = std::min(t_max, end.t_end + Tolerances::kStopTimeChunk);
-      cv.SetStopTime(end.t_end);
-      continue;
-    }
-    if (t >= end.t_end) return done(SegmentEnd::kTime, t);
-    Emit(out, problem.mode, t, cv.y());  // an output time
-  }
-}
+template SegmentEnd RunSegment<Stepper, SlipProblem>(Stepper&, const SlipProblem&, double,
+                                                     const double*, double, const SegmentOutput&);
 
 }  // namespace stickslip

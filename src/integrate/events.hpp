@@ -6,6 +6,10 @@
 // any direction) and the maximum of x' (terminal, falling).
 #pragma once
 
+#include <functional>
+
+#include "stickslip/model/system.hpp"  // Mode
+
 namespace stickslip {
 
 constexpr int kNumRoots = 3;  // the stepper's root functions g_0, g_1, g_2
@@ -72,6 +76,28 @@ class EventList {
   }
   Event e_[kMax];
   int n_ = 0;
+};
+
+// What the event loop (event_driver.hpp) reads of a segment's problem: its
+// mode, cancel hook, events and hook. Each model's problem (SlipProblem in
+// stepper.hpp, the forced oscillator's in forced_stepper.hpp) extends it with
+// what its steppers need.
+struct SegmentProblem {
+  Mode mode = Mode::kSlipBelow;
+  const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
+  // The segment's events; SetEvents keeps them with the stop mask of each
+  // root function, which the steppers read on every step.
+  EventList events{};
+  EventHook on_event{};  // called for every non-terminal event a stepper passes
+  int stop_dir[kNumRoots] = {0, 0, 0};
+  void SetEvents(const EventList& list, EventHook hook) {
+    events = list;
+    on_event = hook;
+    for (int i = 0; i < kNumRoots; ++i) stop_dir[i] = list.StopMask(i);
+  }
+  bool Stops(int i, int direction) const {
+    return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
+  }
 };
 
 }  // namespace stickslip
