@@ -14,7 +14,11 @@ namespace stickslip::forced_detail {
 class Driver {
  public:
   Driver(const ForcedModel& m, const ForcedOptions& o, const ForcedRequest& rq, ForcedRun& run)
-      : m_(m), o_(o), rq_(rq), run_(run), taylor_(m, o, rq.extremes) {}
+      : m_(m), o_(o), rq_(rq), run_(run), taylor_(m, o, rq.extremes) {
+    problem_.model = &m;
+    problem_.variational = rq.variational;
+    problem_.on_step = StepHook{&Driver::OnStep, this};
+  }
   void Run(const ForcedPoint& start);
 
  private:
@@ -37,6 +41,9 @@ class Driver {
   const ForcedOptions& o_;
   const ForcedRequest& rq_;
   ForcedRun& run_;
+  // The slip phases' problem; its events are set again only when the mode changes.
+  ForcedSlipProblem problem_;
+  bool events_set_ = false;
   ForcedTaylorStepper taylor_;
   ForcedCvodePtr cvode_;  // with Integrator::kCvode, made at the first slip phase
   double t_ = 0, x_ = 0, xd_ = 0;

@@ -135,13 +135,13 @@ void Driver::OnStep(void* self, double t, const double* y) {
 }
 
 bool Driver::Slip() {
-  ForcedSlipProblem p;
-  p.mode = mode_;
-  p.model = &m_;
-  p.variational = rq_.variational;
+  ForcedSlipProblem& p = problem_;
+  if (!events_set_ || p.mode != mode_) {
+    p.mode = mode_;
+    p.SetEvents(SlipEvents(), EventHook{&Driver::OnExtremum, this});
+    events_set_ = true;
+  }
   p.max_steps = o_.max_steps - run_.steps;
-  p.SetEvents(SlipEvents(), EventHook{&Driver::OnExtremum, this});
-  p.on_step = StepHook{&Driver::OnStep, this};
   const double y0[6] = {x_, xd_, phi_(0, 0), phi_(1, 0), phi_(0, 1), phi_(1, 1)};
   SegmentEnd e;
   long steps = 0;

@@ -9,22 +9,6 @@
 
 namespace stickslip::forced_detail {
 
-void ForcedTaylorStepper::Reset(const ForcedSlipProblem& p, double t0, const double* y0) {
-  p_ = &p;
-  v_ = p.model->v();
-  n_ = p.variational ? 6 : 2;
-  std::copy(y0, y0 + n_, y_);
-  t_ = t0_ = t0;
-  tstop_ = INFINITY;
-  steps_ = 0;
-  rf0_ = 0;
-  arrive_ = p.Stops(0, p.Toward());
-  watch_xd_ = p.events.Watched(1);
-  watch_x_ = p.events.Watched(2);
-  on_surface_ = y0[1] == v_;  // a start on x' = v (an arrival or a stick exit)
-  error_.clear();
-}
-
 StepOutcome ForcedTaylorStepper::Advance(double tout, double* t) {
   const double t_end = std::min(tout, tstop_);
   for (;;) {

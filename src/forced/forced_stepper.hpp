@@ -8,6 +8,8 @@
 // the driver (forced_flow.cpp) holds the events and the phase logic.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -44,7 +46,20 @@ class ForcedTaylorStepper {
  public:
   ForcedTaylorStepper(const ForcedModel& m, const ForcedOptions& o, bool extremes)
       : series_(m, o.rtol, o.atol, !extremes) {}
-  void Reset(const ForcedSlipProblem& p, double t0, const double* y0);
+  void Reset(const ForcedSlipProblem& p, double t0, const double* y0) {
+    p_ = &p;
+    v_ = p.model->v();
+    n_ = p.variational ? 6 : 2;
+    std::copy(y0, y0 + n_, y_);
+    t_ = t0_ = t0;
+    tstop_ = INFINITY;
+    steps_ = 0;
+    rf0_ = 0;
+    arrive_ = p.Stops(0, p.Toward());
+    watch_xd_ = p.events.Watched(1);
+    watch_x_ = p.events.Watched(2);
+    on_surface_ = y0[1] == v_;  // a start on x' = v (an arrival or a stick exit)
+  }
   void SetStopTime(double t) { tstop_ = t; }
   StepOutcome Advance(double tout, double* t);
   const double* y() const { return y_; }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "integrate/stepper.hpp"
 
@@ -57,10 +58,24 @@ struct RootRepeats {
 void Emit(const SegmentOutput& out, Mode mode, double t, const double* y);
 // The events at a root: non-terminal hooks in the order of the functions,
 // until the first terminal event (it ends the segment: returns its g).
-int Dispatch(const SegmentProblem& p, const int* rf, const double* y, int* direction);
+inline int Dispatch(const SegmentProblem& p, const int* rf, const double* y, int* direction) {
+  for (int i = 0; i < kNumRoots; ++i) {
+    if (rf[i] == 0) continue;
+    if (p.on_event.fn && p.events.NonTerminal(i, rf[i])) p.on_event(i, y);
+    if (p.events.Terminal(i, rf[i])) {
+      *direction = rf[i];
+      return i;
+    }
+  }
+  return -1;
+}
 // Whether a root at the stepper's (re)start is an event: only a terminal
 // event that counts at the start (Event::at_start).
-bool CountsAtStart(const SegmentProblem& p, const int* rf);
+inline bool CountsAtStart(const SegmentProblem& p, const int* rf) {
+  for (int i = 0; i < kNumRoots; ++i)
+    if (rf[i] != 0 && p.events.AtStart(i, rf[i])) return true;
+  return false;
+}
 }  // namespace event_detail
 
 // Integrates problem's field from (t0, y0) until a terminal event or t_max.
@@ -85,7 +100,7 @@ SegmentEnd RunSegment(S& cv, const P& problem, double t0, const double* y0, doub
     end.kind = kind;
     end.t = t;
     end.y = cv.y();
-    return end;
+    return std::move(end);
   };
   for (;;) {
     const double tout = sampling ? std::min(*out.next, end.t_end) : end.t_end;
