@@ -17,8 +17,8 @@ class ForcedCvodeStepper {
  public:
   ForcedCvodeStepper(const ForcedModel& m, const ForcedOptions& o, bool variational)
       : m_(m),
-        cv_(variational ? 6 : 2, o.method, o.rtol, o.atol, o.max_steps, &ForcedCvodeStepper::Rhs,
-            1, &ForcedCvodeStepper::Root, this) {}
+        cv_(variational ? 6 : 2, o.method, o.rtol, o.atol, o.max_steps, &ForcedCvodeStepper::Rhs, 1,
+            &ForcedCvodeStepper::Root, this) {}
   void Reset(const ForcedSlipProblem& p, double t0, const double* y0) {
     p_ = &p;
     cv_.Reinit(t0, y0);

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "forced_driver.hpp"
-#include "stickslip/errors.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip {
 
@@ -27,8 +27,9 @@ std::string ForcedOptions::ValidationError() const {
   if (max_steps < 1) return "max_steps = " + std::to_string(max_steps) + " must be >= 1";
   if (max_events < 1) return "max_events = " + std::to_string(max_events) + " must be >= 1";
   if (integrator == Integrator::kCvode && !(rtol >= T::kCvodeRtolMin && atol >= T::kCvodeAtolMin))
-    return "rtol = " + Num(rtol) + ", atol = " + Num(atol) + ": CVODE needs rtol >= " +
-           Num(T::kCvodeRtolMin) + " and atol >= " + Num(T::kCvodeAtolMin);
+    return "rtol = " + Num(rtol) + ", atol = " + Num(atol) +
+           ": CVODE needs rtol >= " + Num(T::kCvodeRtolMin) +
+           " and atol >= " + Num(T::kCvodeAtolMin);
   return "";
 }
 

@@ -2,10 +2,10 @@
 // of SlipSeries at a time, its arrival on x' = v as the first sign change of
 // the step polynomial of x' - v (none missed: poly_roots.hpp), the extrema of
 // x and x' as the roots of x' and x'' before it.
+#include "forced_stepper.hpp"
+
 #include <algorithm>
 #include <cmath>
-
-#include "forced_stepper.hpp"
 
 namespace stickslip::forced_detail {
 
@@ -36,8 +36,7 @@ double ForcedTaylorStepper::Arrival(const double* g, int n, double h) {
     // polynomial (O(h^2) on a short step), may keep it, and its sign must
     // not count: it sent the flow back into stick at the same t, over and over.
     const ForcedModel& m = *p_->model;
-    const double scale =
-        1 + std::abs(y_[0]) + std::abs(y_[1]) + m.force() + m.static_limit();
+    const double scale = 1 + std::abs(y_[0]) + std::abs(y_[1]) + m.force() + m.static_limit();
     if (d >= 1 && std::abs(g[0]) <= Tolerances::SurfaceRounding() * scale * h) {
       std::copy(g, g + d + 1, gd);
       gd[0] = 0;

@@ -55,7 +55,10 @@ struct RootRepeats {
     return count > 2 * kNumRoots;
   }
 };
-void Emit(const SegmentOutput& out, Mode mode, double t, const double* y);
+inline void Emit(const SegmentOutput& out, Mode mode, double t, const double* y) {
+  (*out.observer)(Sample{t, Vec2(y[0], y[1]), mode});
+  *out.next += out.dt;
+}
 // The events at a root: non-terminal hooks in the order of the functions,
 // until the first terminal event (it ends the segment: returns its g).
 inline int Dispatch(const SegmentProblem& p, const int* rf, const double* y, int* direction) {
