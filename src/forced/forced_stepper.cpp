@@ -26,7 +26,7 @@ StepOutcome ForcedTaylorStepper::Advance(double tout, double* t) {
   }
 }
 
-double ForcedTaylorStepper::Arrival(const double* g, int n, double h) {
+inline double ForcedTaylorStepper::Arrival(const double* g, int n, double h) {
   int d = n;
   double gd[kMaxOrder + 1];
   if (on_surface_) {
@@ -54,13 +54,13 @@ double ForcedTaylorStepper::Arrival(const double* g, int n, double h) {
 
 // The roots of x' (g0 with its constant xd0) and of x'' (g2) before u_end,
 // each to the problem's hook if an event asks for it.
-void ForcedTaylorStepper::Extrema(double* g0, double xd0, const double* g2, int n, double u_end,
-                                  double h) {
+inline void ForcedTaylorStepper::Extrema(double* g0, double xd0, const double* g2, int n,
+                                         double u_end, double h) {
   double out[6];
   int g = 0;
   auto extremum = [&](double u, int direction) {
     if (u >= u_end) return false;
-    if (!p_->on_event.fn || !p_->events.NonTerminal(g, direction)) return true;
+    if (!p_->on_event.fn || !p_->Passes(g, direction)) return true;
     series_.Evaluate(u * h, out);
     p_->on_event(g, out);
     return true;

@@ -50,7 +50,9 @@ class ForcedTaylorStepper {
     p_ = &p;
     v_ = p.model->v();
     n_ = p.variational ? 6 : 2;
-    std::copy(y0, y0 + n_, y_);
+    for (int i = 0; i < 2; ++i) y_[i] = y0[i];
+    if (n_ == 6)
+      for (int i = 2; i < 6; ++i) y_[i] = y0[i];
     t_ = t0_ = t0;
     tstop_ = INFINITY;
     steps_ = 0;

@@ -10,8 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <utility>
 
 #include "integrate/stepper.hpp"
 
@@ -29,7 +27,7 @@ struct SegmentEnd {
   double t = 0;
   double t_end = 0;           // the stop time in force when it ended
   const double* y = nullptr;  // the stepper's state at t (until its next call)
-  std::string reason;
+  const char* reason = "";    // kFailed: why (the stepper's, until its next call)
 };
 
 // The output samples of a segment: every dt from *next (advanced past the
@@ -64,8 +62,8 @@ inline void Emit(const SegmentOutput& out, Mode mode, double t, const double* y)
 inline int Dispatch(const SegmentProblem& p, const int* rf, const double* y, int* direction) {
   for (int i = 0; i < kNumRoots; ++i) {
     if (rf[i] == 0) continue;
-    if (p.on_event.fn && p.events.NonTerminal(i, rf[i])) p.on_event(i, y);
-    if (p.events.Terminal(i, rf[i])) {
+    if (p.on_event.fn && p.Passes(i, rf[i])) p.on_event(i, y);
+    if (p.Stops(i, rf[i])) {
       *direction = rf[i];
       return i;
     }
@@ -103,7 +101,7 @@ SegmentEnd RunSegment(S& cv, const P& problem, double t0, const double* y0, doub
     end.kind = kind;
     end.t = t;
     end.y = cv.y();
-    return std::move(end);
+    return end;
   };
   for (;;) {
     const double tout = sampling ? std::min(*out.next, end.t_end) : end.t_end;
@@ -113,7 +111,7 @@ SegmentEnd RunSegment(S& cv, const P& problem, double t0, const double* y0, doub
       return done(SegmentEnd::kCancelled, t);
     if (flag == StepOutcome::kTooMuchWork) return done(SegmentEnd::kTooMuchWork, t);
     if (flag == StepOutcome::kFailed) {
-      end.reason = cv.last_error();
+      end.reason = cv.last_error().c_str();
       return done(SegmentEnd::kFailed, cv.CurrentTime());
     }
     if (flag == StepOutcome::kRoot) {
