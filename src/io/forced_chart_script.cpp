@@ -128,12 +128,14 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
        << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
   const auto sliding = [](const ForcedCodim2& p) { return p.label == ForcedCodim2Label::kSliding; };
+  const std::string sl = ForcedCodim2Name(ForcedCodim2Label::kSliding);
   if (std::any_of(r.codim2.begin(), r.codim2.end(), sliding))
-    os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 "
-          "lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding'";
+    os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq '" << sl
+       << "' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title '" << sl
+       << ", curve ends: sliding'";
   if (!std::all_of(r.codim2.begin(), r.codim2.end(), sliding))
-    os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 "
-          "lc rgb 'black' notitle";
+    os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne '" << sl
+       << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' notitle";
   os << "\nunset output\n";
   return os.str();
 }
