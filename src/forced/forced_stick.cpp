@@ -67,7 +67,6 @@ bool Driver::Exit(double t, double x) {
   t_ = t, x_ = edge, xd_ = m_.v();
   if (rq_.variational) phi_ = m_.SaltationStickOut(after, t, x) * phi_;
   mode_ = after;
-  on_surface_ = true;
   ++run_.exits;
   if (!Record(ForcedEventKind::kStickOut, Mode::kStick, after)) return false;
   return !(rq_.stop_at_exit > 0 && run_.exits >= rq_.stop_at_exit);

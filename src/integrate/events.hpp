@@ -6,6 +6,10 @@
 // any direction) and the maximum of x' (terminal, falling).
 #pragma once
 
+#include <functional>
+
+#include "stickslip/model/system.hpp"  // Mode
+
 namespace stickslip {
 
 constexpr int kNumRoots = 3;  // the stepper's root functions g_0, g_1, g_2
@@ -47,13 +51,13 @@ class EventList {
     const Event* e = Find(i, dir, true);
     return e && e->at_start;
   }
-  // The directions of g_i's terminal events, as a stepper's stop mask:
+  // The directions of g_i's terminal (or non-terminal) events, as a mask:
   // kAnyRoot, +1, -1, or 0 (none).
-  int StopMask(int i) const {
+  int StopMask(int i, bool terminal = true) const {
     int mask = 0;
     for (int k = 0; k < n_; ++k) {
       const Event& e = e_[k];
-      if (e.g != i || !e.terminal) continue;
+      if (e.g != i || e.terminal != terminal) continue;
       mask = mask == 0 ? e.direction : (mask == e.direction ? mask : kAnyRoot);
     }
     return mask;
@@ -72,6 +76,37 @@ class EventList {
   }
   Event e_[kMax];
   int n_ = 0;
+};
+
+// What the event loop (event_driver.hpp) reads of a segment's problem: its
+// mode, cancel hook, events and hook. Each model's problem (SlipProblem in
+// stepper.hpp, the forced oscillator's in forced_stepper.hpp) extends it with
+// what its steppers need.
+struct SegmentProblem {
+  Mode mode = Mode::kSlipBelow;
+  const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
+  // The segment's events; SetEvents keeps them with the stop mask of each
+  // root function, which the steppers read on every step.
+  EventList events{};
+  EventHook on_event{};                 // called for every non-terminal event a stepper passes
+  int stop_dir[kNumRoots] = {0, 0, 0};  // terminal events' directions per g_i (StopMask)
+  int pass_dir[kNumRoots] = {0, 0, 0};  // non-terminal events' directions
+  void SetEvents(const EventList& list, EventHook hook) {
+    events = list;
+    on_event = hook;
+    for (int i = 0; i < kNumRoots; ++i) {
+      stop_dir[i] = list.StopMask(i);
+      pass_dir[i] = list.StopMask(i, false);
+    }
+  }
+  // Whether a root of g_i in this direction (+1 or -1) is a terminal event
+  // (Stops) or a non-terminal one (Passes).
+  bool Stops(int i, int direction) const {
+    return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
+  }
+  bool Passes(int i, int direction) const {
+    return pass_dir[i] == kAnyRoot || pass_dir[i] == direction;
+  }
 };
 
 }  // namespace stickslip

@@ -22,30 +22,23 @@
 
 namespace stickslip {
 
-// One slip mode of a system (the model seam), with the noise bands of steady sliding.
-struct SlipProblem {
+// One slip mode of a system (the model seam), with the noise bands of steady
+// sliding; the mode, cancel hook and events are the event loop's part.
+struct SlipProblem : SegmentProblem {
+  SlipProblem() = default;
+  SlipProblem(const FrictionSystem* m, Mode slip_mode, double r, double a,
+              const std::function<bool()>* cancel_hook)
+      : model(m), rtol(r), atol(a) {
+    mode = slip_mode;
+    cancel = cancel_hook;
+  }
   const FrictionSystem* model = nullptr;
-  Mode mode = Mode::kSlipBelow;
   double rtol = 0, atol = 0;
-  const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
   // Steady sliding (mu(v), 0) for slip below (else 0): the Taylor step size
   // measures x by XScale, so the error of a small orbit about it is relative
   // to its amplitude, not to |mu(v)|, and never looser than relative to |x|.
   double x_center = 0;
   double XScale(double x) const { return std::min(std::abs(x), std::abs(x - x_center)); }
-  // The segment's events (events.hpp); SetEvents keeps them with the stop
-  // mask of each root function, which the steppers read on every step.
-  EventList events{};
-  EventHook on_event{};  // called for every non-terminal event a stepper passes
-  int stop_dir[kNumRoots] = {0, 0, 0};
-  void SetEvents(const EventList& list, EventHook hook) {
-    events = list;
-    on_event = hook;
-    for (int i = 0; i < kNumRoots; ++i) stop_dir[i] = list.StopMask(i);
-  }
-  bool Stops(int i, int direction) const {
-    return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
-  }
 
   double Acceleration(double x, double xdot) const { return model->Acceleration(mode, x, xdot); }
   // At rest on steady sliding to within the integration noise: x' ~ atol,
