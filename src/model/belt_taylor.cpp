@@ -9,6 +9,7 @@
 
 #include "integrate/mu_series.hpp"
 #include "integrate/taylor_field.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/model.hpp"
 #include "stickslip/model/parameter_axis.hpp"
@@ -36,6 +37,14 @@ class BeltTaylorField final : public TaylorField {
     return true;
   }
   void Coefficients(int order, int n, TaylorRow* c) override;
+  // The seed law's loop (Cubic3) only: the other laws keep JZ's rule (at
+  // p + 4 the quintic chart's fold point moved by 1e-10 and a Leine
+  // pure-slip amplitude by 1.3e-12; docs/benchmarks.md).
+  int ExtraOrder() const override {
+    return cubic3_ && !(parameter_ && kind_ == ParamKind::kAffine)
+               ? Tolerances::kTaylorExtraOrderCubic
+               : 0;
+  }
 
  private:
   template <LawKind L, bool Var>
