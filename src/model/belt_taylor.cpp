@@ -123,9 +123,20 @@ void BeltTaylorField::Recurrences(int order, int n, TaylorRow* c) {
 template <bool Newest>
 inline void BeltTaylorField::Columns(int k, int n, double inv, double dmu, TaylorRow* c) {
   const double* cc = cc_.c();
-  for (int col = 2; col < n; col += 2) {
+  int col = 2;
+  if constexpr (Newest) {
+    // Cubic3: the newest terms (j = 0 and k) last, as there; Phi's two
+    // columns against cc in one pass (the same sums as one at a time).
+    double cq3, cq5;
+    Cauchy2NewestLast(c[3], c[5], cc, k, &cq3, &cq5);
+    c[2][k + 1] = c[3][k] * inv;
+    c[3][k + 1] = (-c[2][k] + cq3) * inv;
+    c[4][k + 1] = c[5][k] * inv;
+    c[5][k + 1] = (-c[4][k] + cq5) * inv;
+    col = 6;
+  }
+  for (; col < n; col += 2) {
     const double* p = c[col + 1];
-    // Cubic3: the newest terms (j = 0 and k) last, as there.
     const double cq = !Newest  ? Cauchy(p, cc, k)
                       : k == 0 ? p[0] * cc[0]
                                : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
