@@ -64,7 +64,10 @@ po::options_description AppOptions() {
       "summary counts the cells whose region differs from the polygon drawn there "
       "(default 0: none); forced: the response grid, N x N cells (default 40, 0: none)")(
       "seed_lines", cli::Value()->value_name("N"),
-      "forced: one-parameter runs per axis that seed the curves, in [0, 20] (default 3)");
+      "forced: one-parameter runs per axis that seed the curves, in [0, 20] (default 3)")(
+      "max_m", cli::Value()->value_name("M"),
+      "forced: curves of orbits of period m <= M: each PD with 2m <= M starts the doubled "
+      "branch, whose points seed curves too, in [1, 8] (default 2)");
   cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
   cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;
@@ -109,6 +112,10 @@ ss::ParameterAxis Axis(const cli::Arguments& args, const char* key, const std::s
 
 // The options, validated (UsageError naming the option otherwise).
 ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
+  for (const char* key : {"seed_lines", "max_m"})  // the forced chart's only
+    if (args.Given(key))
+      throw cli::UsageError(args.Source(key) + " applies to the forced chart only (--force, or "
+                            "an axis omega or force)");
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
   const auto restart = cli::RestartFromArguments(args);

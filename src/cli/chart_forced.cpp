@@ -61,6 +61,11 @@ Setup Configure(const Arguments& args) {
     throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
                      args.Source("seed_lines") + ": must be in [0, 20]");
   s.o.seed_lines = static_cast<int>(lines);
+  const long max_m = args.Integer("max_m", s.o.max_m);
+  if (max_m < 1 || max_m > 8)
+    throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
+                     ": must be in [1, 8]");
+  s.o.max_m = static_cast<int>(max_m);
   const long grid = args.Integer("grid", 40);
   if (grid != 0 && (grid < 2 || grid > 400))
     throw UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
@@ -147,6 +152,7 @@ int RunForcedChart(const Arguments& args, const std::string& prog, const std::st
   meta.push_back({"grid", std::to_string(s.o.n1) + " x " + std::to_string(s.o.n2) + ", " +
                               std::to_string(s.o.iterate.transient) + " transient and " +
                               std::to_string(s.o.iterate.keep) + " kept forcing periods per cell"});
+  meta.push_back({"max_m", std::to_string(s.o.max_m)});
   auto text = [&](TsvTable t) {
     t.PrependMeta(meta);
     return t.str();

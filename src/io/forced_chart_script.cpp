@@ -88,8 +88,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   os.precision(17);
   os << "# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.\n"
      << "# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,\n"
-     << "# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: black dots with "
-        "labels.\n"
+     << "# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, "
+        "the others black dots with labels.\n"
      << "if (!exists('suffix')) suffix = ''\n"
      << FigureTerminal(format, 1000, 860) << "set output '" << FigureFile("forced_chart", format)
      << "'.suffix\n"
@@ -109,9 +109,12 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
     os << (i ? ", " : "") << "0x" << Fill(c, static_cast<int>(i)).substr(1);
   if (c.names.empty()) os << "0xffffff";
   os << "]\n";
+  // SL ends are many and crowd where curves bunch: a marker with a key entry,
+  // not a text label each; the codimension-two points keep their names.
   for (const ForcedCodim2& p : r.codim2)
-    os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << "," << p.p2
-       << " offset 0.7,0.7 left front font ',12' noenhanced\n";
+    if (p.label != ForcedCodim2Label::kSliding)
+      os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << "," << p.p2
+         << " offset 0.7,0.7 left front font ',12' noenhanced\n";
   const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 : 0,
                dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 : 0;
   os << "plot ";
@@ -124,8 +127,15 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
     os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(c, static_cast<int>(i))
        << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
-  if (!r.codim2.empty())
-    os << ", \\\n     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle";
+  const auto sliding = [](const ForcedCodim2& p) { return p.label == ForcedCodim2Label::kSliding; };
+  const std::string sl = ForcedCodim2Name(ForcedCodim2Label::kSliding);
+  if (std::any_of(r.codim2.begin(), r.codim2.end(), sliding))
+    os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq '" << sl
+       << "' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title '" << sl
+       << ", curve ends: sliding'";
+  if (!std::all_of(r.codim2.begin(), r.codim2.end(), sliding))
+    os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne '" << sl
+       << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' notitle";
   os << "\nunset output\n";
   return os.str();
 }

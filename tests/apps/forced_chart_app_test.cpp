@@ -71,6 +71,10 @@ TEST_F(ForcedChartAppTest, BadInputExits2NamingTheOption) {
       {base + "--param2 force --from 2 --to 1", "--to"},
       {base + "--param2 force --grid 1", "--grid"},
       {base + "--param2 force --from2 -1", "force"},
+      {base + "--param2 force --max_m 9", "--max_m"},
+      {base + "--param2 force --max_m 0", "--max_m"},
+      {"--param v --param2 beta --seed_lines 2", "--seed_lines"},  // a belt chart: forced only
+      {"--param v --param2 beta --max_m 4", "--max_m"},
   };
   for (const auto& [args, word] : cases) {
     EXPECT_EQ(Chart(args), 2) << args;

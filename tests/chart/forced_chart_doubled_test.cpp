@@ -21,21 +21,30 @@ namespace {
 
 ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
 
-// The Omegas of the PD points of the m = 2 branches doubled from the m = 1
-// branch at force a, traced in Omega from 0.8 down to 0.5 from the state
-// settled over 200 periods.
-std::vector<double> DoubledPds(double a) {
+// The Omegas of the PD points of the period-m orbits at force a: the m = 1
+// branch traced in Omega from 0.8 down to 0.5 from the state settled over 200
+// periods, switched at each PD onto the doubled branch, m = 2, 4, ... .
+void CollectPds(double a, const ForcedBranch& b, int m, int target, ForcedBranchOptions o,
+                std::vector<double>* pds) {
+  for (const ForcedBranchRow& r : b.special) {
+    if (r.label != ForcedLabel::kPD || r.m != m) continue;
+    if (m == target) {
+      pds->push_back(r.p);
+      continue;
+    }
+    o.m = m;
+    const ForcedBranch d =
+        ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.x0, r.xdot0, 0.5, 0.8, o);
+    CollectPds(a, d, 2 * m, target, o, pds);
+  }
+}
+
+std::vector<double> DoubledPds(double a, int m = 2) {
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 0.01;
   const ForcedBranch b = testing_util::TraceOmega(Stribeck(a, 0.8), 0.8, 0.5, o);
   std::vector<double> pds;
-  for (const ForcedBranchRow& r : b.special) {
-    if (r.label != ForcedLabel::kPD || r.m != 1) continue;
-    const ForcedBranch d =
-        ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.x0, r.xdot0, 0.5, 0.8, o);
-    for (const ForcedBranchRow& q : d.special)
-      if (q.label == ForcedLabel::kPD && q.m == 2) pds.push_back(q.p);
-  }
+  CollectPds(a, b, 1, m, o, &pds);
   return pds;
 }
 
@@ -66,6 +75,33 @@ TEST(ForcedChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
   }
   EXPECT_GE(curves, 2);   // 3 measured
   EXPECT_GE(checked, 4);  // 6 measured, all <= 1e-13
+}
+
+// With max_m = 4 (ss_chart --max_m 4) the m = 4 orbits' PD curves are drawn
+// too: the next step of the cascade. Same check, one doubling deeper.
+TEST(ForcedChartDoubled, ThirdDoublingCurveMatchesOneParameterRuns) {
+  ForcedChartOptions o;
+  o.plane.from1 = 0.5, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
+  o.n1 = o.n2 = 0;
+  o.seed_lines = 1;
+  o.max_m = 4;
+  const ForcedChartResult r = ForcedChart(Stribeck(0.3, 0.6), o);
+  ASSERT_EQ(r.status, ChartStatus::kOk) << r.message;
+  int curves = 0, checked = 0;
+  for (const ForcedCurve& c : r.curves) {
+    if (c.kind != ForcedCurveKind::kPD || c.m != 4) continue;
+    ++curves;
+    const ForcedCurvePoint& p = c.points[c.points.size() / 2];  // an inner point
+    double best = NAN;
+    for (const double w : DoubledPds(p.p2, 4))
+      if (!(std::abs(best - p.p1) <= std::abs(w - p.p1))) best = w;
+    std::printf("[ measured ] m = 4 PD curve at force %.10f: Omega %.12f, runs %.12f (%.1e)\n",
+                p.p2, p.p1, best, std::abs(best - p.p1));
+    EXPECT_NEAR(p.p1, best, 1e-11) << "force " << p.p2 << ", seed " << c.seed;
+    ++checked;
+  }
+  EXPECT_GE(curves, 1);  // 2 measured
+  EXPECT_EQ(checked, curves);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 # Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
 # Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: black dots with labels.
+# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, the others black dots with labels.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
 set output 'forced_chart.png'.suffix
@@ -29,5 +29,5 @@ plot 'response.tsv' using 1:2:(0.012500000000000001):(0.001225):(C[int($3)+1]) w
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
      'curves.tsv' using 1:($4 == 1 && $17 == 0 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) title "NS, Neimark-Sacker", \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
+     'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' notitle
 unset output

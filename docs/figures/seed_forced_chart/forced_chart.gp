@@ -1,6 +1,6 @@
 # Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
 # Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: black dots with labels.
+# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, the others black dots with labels.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
 set output 'forced_chart.png'.suffix
@@ -20,24 +20,6 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
-set label "SL" at 0.76064732628889353,0.14743643932670134 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.69473130301577313,0.19570368605964414 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.6081217080536031,0.26863123723523985 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.52182455282072626,0.42995503717163241 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.61813847124208576,0.25870044400288794 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.53240336330880789,0.40424086467767095 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.31215487061392028,0.29520954259809123 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.48419339454850435,0.54117075344770815 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.49343851718095411,0.49393876589264057 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.47078243513215612,0.56630938559866018 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.44521896296555302,0.19134144271695711 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.45474787596739841,0.4619036432592209 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.43425491958083373,0.4775481415604797 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.41628632827020162,0.49857797125228159 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.39919326700478441,0.51765673386700961 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.41819856237666664,0.49609908926637702 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.39579352769732645,0.51876596551647025 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.41991448450925806,0.495857895118404 offset 0.7,0.7 left front font ',12' noenhanced
 set label "GG" at 0.48669331009168526,0.49351788450046957 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
@@ -73,5 +55,6 @@ plot 'response.tsv' using 1:2:(0.01125):(0.0068749999999999992):(C[int($3)+1]) w
      'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
      'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
      'curves.tsv' using 1:($4 == 17 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
+     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding', \
+     'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' notitle
 unset output

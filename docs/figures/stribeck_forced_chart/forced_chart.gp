@@ -1,6 +1,6 @@
 # Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
 # Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: black dots with labels.
+# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, the others black dots with labels.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
 set output 'forced_chart.png'.suffix
@@ -20,14 +20,6 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0x54278f, 0x756bb1, 0x9e9ac8, 0xcbc9e2, 0x8c6d31, 0xd9d9d9, 0x404040]
-set label "SL" at 0.89836507469834492,0.065302321540093938 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.78532714654404823,0.12666998573129373 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.67381346968598532,0.19759489677843572 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.6028028226307186,0.27195581391570839 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.61603435717173016,0.25822319253765308 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.51469225280325215,0.46938171818799368 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.62268540179646903,0.25164582518222145 offset 0.7,0.7 left front font ',12' noenhanced
-set label "SL" at 0.52070056263193065,0.44830135440998903 offset 0.7,0.7 left front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.0087499999999999991):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
@@ -56,5 +48,5 @@ plot 'response.tsv' using 1:2:(0.0087499999999999991):(0.0068749999999999992):(C
      'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "PD of m ≥ 2 orbits", \
      'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
      'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'codim2.tsv' using 2:3 with points pt 7 ps 1.3 lc rgb 'black' notitle
+     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding'
 unset output
