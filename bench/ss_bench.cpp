@@ -87,9 +87,11 @@ OrbitGoal SingleOrbit(bool quick) {
       }
       const double err = std::abs(r.orbit.period - t_ref), t_us = Median(us);
       const bool taylor = in == ss::Integrator::kTaylor;
+      // The seed law's order: JZ's p plus its extra orders (TaylorField::ExtraOrder).
+      const int order = std::min(ss::kTaylorMaxOrder,
+                                 ss::OrderFor(rtol) + ss::Tolerances::kTaylorExtraOrderCubic);
       std::printf("  %-10s  %-8.0e  %8.2f  %5ld  %5s  %.1e\n", taylor ? "taylor" : "cvode-adams",
-                  rtol, t_us, steps, taylor ? std::to_string(ss::OrderFor(rtol)).c_str() : "-",
-                  err);
+                  rtol, t_us, steps, taylor ? std::to_string(order).c_str() : "-", err);
       if (err < 1e-12 && !(t_us >= goal.us))
         goal = {t_us, rtol, err, in == ss::Integrator::kTaylor ? "Taylor" : "CVODE Adams"};
     }

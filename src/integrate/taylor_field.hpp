@@ -25,6 +25,9 @@ class TaylorField {
   // (x, x') in rows 0, 1; Phi column-major in rows 2..5 when n >= 6; the
   // parameter column dz/dp in rows 6, 7 when n == 8.
   virtual void Coefficients(int order, int n, TaylorRow* c) = 0;
+  // Orders above Jorba & Zou's p at which this mode's steps are cheaper per
+  // unit time (the stepper keeps their error per step); 0: their rule.
+  virtual int ExtraOrder() const { return 0; }
 };
 
 }  // namespace stickslip

@@ -15,8 +15,10 @@ namespace stickslip {
 
 // JZ section 3.2: rho = min over j = p-1, p of (eps / |z_j|)^(1/j), relative to
 // |z_0| when rtol |z_0| > atol; h = rho / e^2 exp(-0.7 / (p - 1)). |z_0|
-// takes x by SlipProblem::XScale.
-double TaylorStepper::StepSize(int order) const {
+// takes x by SlipProblem::XScale. At an order q above JZ's p (jz_order),
+// rho from z_{q-1}, z_q and the step that keeps their error per step,
+// (h / rho)^(q+1) = (e^-2 exp(-0.7 / (p - 1)))^(p+1).
+double TaylorStepper::StepSize(int order, int jz_order) const {
   auto norm = [&](int k) {
     double m = 0;
     for (int i = 0; i < n_; ++i) m = std::max(m, std::abs(c_[i][k]));
@@ -28,7 +30,20 @@ double TaylorStepper::StepSize(int order) const {
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
   const double r1 = (log_scale - std::log(norm(order - 1))) / (order - 1);
   const double r2 = (log_scale - std::log(norm(order))) / order;
-  return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (order - 1));
+  if (order == jz_order) return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (order - 1));
+  const int p = jz_order;
+  return std::exp(std::min(r1, r2) - (2.0 + 0.7 / (p - 1)) * (p + 1) / (order + 1));
+}
+
+inline bool TaylorStepper::FiniteCoefficients() const {
+  // 0 * c is 0 for finite c and NaN otherwise: one branch (two sums, not one chain).
+  double probe0 = 0, probe1 = 0;
+  for (int i = 0; i < n_; ++i) {
+    int k = 0;
+    for (; k + 1 <= order_; k += 2) probe0 += 0.0 * c_[i][k], probe1 += 0.0 * c_[i][k + 1];
+    if (k == order_) probe0 += 0.0 * c_[i][k];
+  }
+  return probe0 + probe1 == 0;
 }
 
 bool TaylorStepper::NewStep() {
@@ -42,17 +57,18 @@ bool TaylorStepper::NewStep() {
   double z0 = std::max(p_.XScale(yend_[0]), std::abs(yend_[1]));
   if (n_ >= 6)
     for (int i = 2; i < n_; ++i) z0 = std::max(z0, std::abs(yend_[i]));
-  order_ = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
+  const int jz_order = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
+  order_ = std::min(kTaylorMaxOrder, jz_order + extra_order_);
   Coefficients(order_);
-  double h = StepSize(order_);
-  // 0 * c is 0 for finite c and NaN otherwise: one branch (two sums, not one chain).
-  double probe0 = 0, probe1 = 0;
-  for (int i = 0; i < n_; ++i) {
-    int k = 0;
-    for (; k + 1 <= order_; k += 2) probe0 += 0.0 * c_[i][k], probe1 += 0.0 * c_[i][k + 1];
-    if (k == order_) probe0 += 0.0 * c_[i][k];
+  // The extra orders overflow on a stiff field (v_m 1e-6): JZ's order then,
+  // the entries past it finite again (NewStep's sums run past the order).
+  if (!FiniteCoefficients()) {
+    if (order_ == jz_order) return Failed("non-finite Taylor coefficients");
+    for (int i = 0; i < n_; ++i) std::fill(c_[i] + jz_order + 1, c_[i] + kTaylorRowSize, 0.0);
+    Coefficients(order_ = jz_order);
+    if (!FiniteCoefficients()) return Failed("non-finite Taylor coefficients");
   }
-  if (probe0 + probe1 != 0) return Failed("non-finite Taylor coefficients");
+  double h = StepSize(order_, jz_order);
   if (std::isnan(h)) return Failed("non-finite step size");
   if (std::isinf(h)) h = Tolerances::kTaylorRestStep;  // higher coefficients all 0: at rest
   h = std::min(h, tstop_ - ta_);

@@ -29,9 +29,9 @@ class TaylorStepper final : public Stepper {
       : rtol_(o.rtol),
         atol_(o.atol),
         max_steps_(o.max_steps),
-        n_(parameter ? 8
-           : variational      ? 6
-                              : 2),
+        n_(parameter     ? 8
+           : variational ? 6
+                         : 2),
         order_rel_(OrderFor(o.rtol)),
         order_abs_(OrderFor(o.atol)),
         parameter_(parameter) {}
@@ -43,6 +43,7 @@ class TaylorStepper final : public Stepper {
       field_ = p_.model->MakeTaylorField(parameter_);
       field_->Bind(*p_.model, p_.mode);
     }
+    extra_order_ = field_->ExtraOrder();
     for (int i = 0; i < n_; ++i) std::fill(c_[i], c_[i] + kTaylorRowSize, 0.0);
     std::copy(y0, y0 + n_, yend_);
     std::copy(y0, y0 + n_, y_);
@@ -99,11 +100,12 @@ class TaylorStepper final : public Stepper {
   void EventRoots(int i, const double* gi, int deg, double tail, Roots& roots);
 
   bool NewStep();
+  bool FiniteCoefficients() const;
   void Coefficients(int order) {
     for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
     field_->Coefficients(order, n_, c_);
   }
-  double StepSize(int order) const;
+  double StepSize(int order, int jz_order) const;
   void Events(double h);
   void Evaluate(double tau, double* out) const {
     for (int i = 0; i < n_; ++i) out[i] = Horner(c_[i], order_, tau);
@@ -119,11 +121,12 @@ class TaylorStepper final : public Stepper {
   long max_steps_;
   int n_, order_rel_, order_abs_;
   int order_ = 0;
+  int extra_order_ = 0;  // the field's orders above JZ's (TaylorField::ExtraOrder)
   SlipProblem p_;
   // This step's Taylor coefficients, kPad finite entries past the order for
   // Cauchy(); the recurrences that fill them (the model's, per mode).
   TaylorRow c_[8];
-  double hp_[kTaylorRowSize];  // powers of this step's h
+  double hp_[kTaylorRowSize];               // powers of this step's h
   std::optional<ParameterAxis> parameter_;  // the parameter column's, if any
   std::unique_ptr<TaylorField> field_;
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned

@@ -52,6 +52,10 @@ struct Tolerances {
   /// The step of a Taylor series whose higher coefficients all vanish (at
   /// rest exactly): any finite length, bounded so the stop time still comes.
   static constexpr double kTaylorRestStep = 1e3;
+  /// Taylor orders above Jorba & Zou's p for the seed law's recurrences
+  /// (TaylorField::ExtraOrder): at order p + 6 with the step that keeps JZ's
+  /// error per step, an orbit takes 10 steps instead of 18 (docs/benchmarks.md).
+  static constexpr int kTaylorExtraOrderCubic = 6;
   /// A root function exactly 0 is biased by this (CVODE's root finder
   /// needs a sign): smaller than any state, so it moves no root.
   static constexpr double kRootZeroBias = 1e-300;
