@@ -252,7 +252,7 @@ int Main(int argc, char** argv) {
 
 // The estimate comparison, if it applies (cubic law, k5 = 0); otherwise, or
 // if it cannot be made at these parameters, a note on stderr and no columns.
-ss::EstimateComparison Estimates(const ss::Params& base, const ss::ContinuationOptions& opts,
+ss::EstimateComparison Estimates(const ss::Params& base,
                                  const ss::ContinuationResult& r, cli::RunControl& run) {
   ss::EstimateComparison cmp;
   run.Phase("comparing with the estimates");
@@ -277,7 +277,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   const double seconds = run.Elapsed();
   const std::string model = cli::DescribeModel(base, opts.param.name(), opts.from, opts.to);
   ss::EstimateComparison cmp;
-  if (estimates && !run.Cancelled()) cmp = Estimates(base, opts, r, run);
+  if (estimates && !run.Cancelled()) cmp = Estimates(base, r, run);
   // Estimate columns first (the figure script counts on their numbers), then
   // the smallest disturbance and the Newton-stall mark.
   std::vector<ss::ExtraColumn> extra = cmp.columns;
