@@ -48,12 +48,19 @@ std::vector<double> DoubledPds(double a, int m = 2) {
   return pds;
 }
 
-TEST(ForcedChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
+// The Stribeck scene's curves (no grid), seeded on the lines force 0.325 and
+// Omega 0.85, with doubled branches up to max_m.
+ForcedChartResult CascadeChart(int max_m) {
   ForcedChartOptions o;
   o.plane.from1 = 0.5, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
-  o.n1 = o.n2 = 0;   // curves only
-  o.seed_lines = 1;  // force 0.325 and Omega 0.85
-  const ForcedChartResult r = ForcedChart(Stribeck(0.3, 0.6), o);
+  o.n1 = o.n2 = 0;
+  o.seed_lines = 1;
+  o.max_m = max_m;
+  return ForcedChart(Stribeck(0.3, 0.6), o);
+}
+
+TEST(ForcedChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
+  const ForcedChartResult r = CascadeChart(2);
   ASSERT_EQ(r.status, ChartStatus::kOk) << r.message;
   int curves = 0, checked = 0;
   for (const ForcedCurve& c : r.curves) {
@@ -80,12 +87,7 @@ TEST(ForcedChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
 // With max_m = 4 (ss_chart --max_m 4) the m = 4 orbits' PD curves are drawn
 // too: the next step of the cascade. Same check, one doubling deeper.
 TEST(ForcedChartDoubled, ThirdDoublingCurveMatchesOneParameterRuns) {
-  ForcedChartOptions o;
-  o.plane.from1 = 0.5, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
-  o.n1 = o.n2 = 0;
-  o.seed_lines = 1;
-  o.max_m = 4;
-  const ForcedChartResult r = ForcedChart(Stribeck(0.3, 0.6), o);
+  const ForcedChartResult r = CascadeChart(4);
   ASSERT_EQ(r.status, ChartStatus::kOk) << r.message;
   int curves = 0, checked = 0;
   for (const ForcedCurve& c : r.curves) {

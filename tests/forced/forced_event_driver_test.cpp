@@ -71,18 +71,14 @@ TEST_F(ForcedEventDriver, TaylorArrivalAndExtremaMatchTheClosedForm) {
   std::vector<Hit> hits;
   const ForcedSlipProblem p = Problem(true, &hits);
   const SegmentEnd e = RunSegment(stepper, p, t0_, y0_, 100.0, SegmentOutput{});
-  auto y_minus_v = [&](Real t) {
-    Real x, y, a;
-    return At(t, &x, &y, &a), y - s_.v;
+  auto part = [&](int i, Real shift) {  // x' (i = 1) or x'' (i = 2) of the closed form, minus shift
+    return [this, i, shift](Real t) {
+      Real z[3];
+      At(t, &z[0], &z[1], &z[2]);
+      return z[i] - shift;
+    };
   };
-  auto xdot = [&](Real t) {
-    Real x, y, a;
-    return At(t, &x, &y, &a), y;
-  };
-  auto xddot = [&](Real t) {
-    Real x, y, a;
-    return At(t, &x, &y, &a), a;
-  };
+  const auto y_minus_v = part(1, s_.v), xdot = part(1, 0), xddot = part(2, 0);
   const Real t_arr = FirstRoot(y_minus_v, 0.3L), t_xmin = FirstRoot(xdot, 0.3L),
              t_ydmin = FirstRoot(xddot, 0.3L);
   ASSERT_LT(t_ydmin, t_xmin);
