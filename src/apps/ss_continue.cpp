@@ -252,13 +252,12 @@ int Main(int argc, char** argv) {
 
 // The estimate comparison, if it applies (cubic law, k5 = 0); otherwise, or
 // if it cannot be made at these parameters, a note on stderr and no columns.
-ss::EstimateComparison Estimates(const ss::Params& base,
-                                 const ss::ContinuationResult& r, cli::RunControl& run) {
+ss::EstimateComparison Estimates(const ss::Params& base, const ss::ContinuationResult& r,
+                                 cli::RunControl& run) {
   ss::EstimateComparison cmp;
   run.Phase("comparing with the estimates");
   try {
-    cmp =
-        ss::CompareEstimates(base, r, 2001, [&run] { return run.Cancelled(); });
+    cmp = ss::CompareEstimates(base, r, 2001, [&run] { return run.Cancelled(); });
   } catch (const ss::InvalidArgument& e) {  // outside the estimates' own assumptions
     cmp = ss::EstimateComparison();
     cmp.reason = e.what();

@@ -157,8 +157,12 @@ bool Driver::Slip() {
     steps = taylor_.steps();
   }
   run_.steps += steps;
+  // Where the segment ended, also when cut short: the run's end, and (as for
+  // every Taylor step's end) in its extrema.
   t_ = e.t, x_ = e.y[0], xd_ = e.y[1];
   if (rq_.variational) phi_ << e.y[2], e.y[4], e.y[3], e.y[5];
+  if (e.kind == SegmentEnd::kTooMuchWork || e.kind == SegmentEnd::kFailed)
+    run_.extrema.Add(x_, xd_);
   switch (e.kind) {
     case SegmentEnd::kEvent:  // the arrival, the only terminal event
       return Arrive(e.t, e.y[0]);

@@ -138,7 +138,7 @@ SegmentEnd RunSegment(S& cv, const P& problem, double t0, const double* y0, doub
       continue;
     }
     if (t >= end.t_end) return done(SegmentEnd::kTime, t);
-    Emit(out, events.mode, t, cv.y());  // an output time
+    if (sampling) Emit(out, events.mode, t, cv.y());  // an output time
   }
 }
 

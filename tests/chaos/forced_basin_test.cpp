@@ -7,9 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
-
 #include <cmath>
+#include <cstdio>
 
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
