@@ -47,13 +47,7 @@ void SlipSeries::Recur() {
     si[k + 1] = w * co[k] * inv;
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
-      // Both columns' sums of products with cc in one pass, cc_k and q_k last.
-      double cq0, cq1;
-      Cauchy2NewestLast(c_[3], c_[5], cc, k, &cq0, &cq1);
-      c_[2][k + 1] = c_[3][k] * inv;
-      c_[3][k + 1] = (-c_[2][k] + cq0) * inv;
-      c_[4][k + 1] = c_[5][k] * inv;
-      c_[5][k + 1] = (-c_[4][k] + cq1) * inv;
+      PhiColumnsNext(c_[2], c_[3], c_[4], c_[5], cc, k, inv);
     }
   }
 }

@@ -91,6 +91,19 @@ inline void Cauchy2NewestLast(const double* p, const double* r, const double* q,
   *rq = ((t0 + t1) + (t2 + t3)) + (r[0] * q[k] + r[k] * q[0]);
 }
 
+// Phi' = J Phi, J = [0 1; -1 cc] (the variational equations of both models'
+// slip fields): order k + 1 of Phi's two columns (rows p0, q0 and p1, q1),
+// cc set to order k, both columns' sums with cc in one pass.
+inline void PhiColumnsNext(double* p0, double* q0, double* p1, double* q1, const double* cc,
+                           int k, double inv) {
+  double cq0, cq1;
+  Cauchy2NewestLast(q0, q1, cc, k, &cq0, &cq1);
+  p0[k + 1] = q0[k] * inv;
+  q0[k + 1] = (-p0[k] + cq0) * inv;
+  p1[k + 1] = q1[k] * inv;
+  q1[k + 1] = (-p1[k] + cq1) * inv;
+}
+
 // 1 / (k + 1) for k < kMax.
 template <int kMax>
 struct Reciprocals {

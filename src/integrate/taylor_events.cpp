@@ -49,7 +49,7 @@ void TaylorStepper::Events(double h) {
     // A root passed at the step end, to rounding: the next step starts on it.
     if (roots.first > 1 && (1 - r.u) * h <= Tolerances::StepEndRounding(tb_))
       state_[r.i] = kDeflate;
-    if (!p_.on_event.fn || !p_.events.NonTerminal(r.i, r.direction)) continue;
+    if (!p_.on_event.fn || !p_.Passes(r.i, r.direction)) continue;
     double y[8];
     Evaluate(r.u * h, y);
     p_.on_event(r.i, y);

@@ -127,12 +127,7 @@ inline void BeltTaylorField::Columns(int k, int n, double inv, double dmu, Taylo
   if constexpr (Newest) {
     // Cubic3: the newest terms (j = 0 and k) last, as there; Phi's two
     // columns against cc in one pass (the same sums as one at a time).
-    double cq3, cq5;
-    Cauchy2NewestLast(c[3], c[5], cc, k, &cq3, &cq5);
-    c[2][k + 1] = c[3][k] * inv;
-    c[3][k + 1] = (-c[2][k] + cq3) * inv;
-    c[4][k + 1] = c[5][k] * inv;
-    c[5][k + 1] = (-c[4][k] + cq5) * inv;
+    PhiColumnsNext(c[2], c[3], c[4], c[5], cc, k, inv);
     col = 6;
   }
   for (; col < n; col += 2) {
