@@ -83,6 +83,16 @@ double NextUp(double x) {
   return x;
 }
 
+// std::nextafter(x, 0.0) for x in (0, 2] by the bits.
+double NextDown(double x) {
+  if (!(x > 0 && x <= 2)) return std::nextafter(x, 0.0);
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  --b;
+  std::memcpy(&x, &b, sizeof b);
+  return x;
+}
+
 }  // namespace
 
 void RestrictToTail(const double* c, int n, double u, double* out) {
@@ -121,12 +131,19 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
     if (done || !(hi - lo > Tolerances::PolyWidth(hi))) break;
   }
   if (x > lo && x < hi) {
+    // Newton's x is within an ulp or so of the change: its neighbour on the
+    // other side mostly decides it (two evaluations); else a probe a few ulp
+    // away and the bisection.
     const double d = Tolerances::PolyProbe(x);
     if (changed(x)) {
       hi = x;
+      const double below = NextDown(x);
+      if (below > lo && !changed(below)) return x;
       if (x - d > lo && !changed(x - d)) lo = x - d;
     } else {
       lo = x;
+      const double above = NextUp(x);
+      if (above < hi && changed(above)) return above;
       if (x + d < hi && changed(x + d)) hi = x + d;
     }
   }

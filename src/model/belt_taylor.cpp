@@ -49,8 +49,10 @@ class BeltTaylorField final : public TaylorField {
  private:
   template <LawKind L, bool Var>
   void Recurrences(int order, int n, TaylorRow* c);
-  template <bool Var>
+  template <bool Var, int N>
   void Cubic3(int order, int n, TaylorRow* c);
+  template <bool Var>
+  void Cubic3Dispatch(int order, int n, TaylorRow* c);
   template <bool Newest>
   void Columns(int k, int n, double inv, double dmu, TaylorRow* c);
   void ResolveParameter();
@@ -142,45 +144,91 @@ inline void BeltTaylorField::Columns(int k, int n, double inv, double dmu, Taylo
 }
 
 // Recurrences<kCubic> for mu = mu_s + c1 s + c3 s^3 (k5 = 0, the seed law),
-// with w = s^2 and mu_k = sigma alpha_k + slope s_k as there, in one loop whose
-// order k + 1 waits a few operations for order k - 1: the newest terms of the
-// sums of products (j = 1 and k - 1) go in last (CauchyNewestLast), and
-// w_k = old + 2 s0 s_k takes s_k = -sigma x'_k from x'_k directly.
-template <bool Var>
+// in one loop whose order k + 1 waits little for orders k - 1 and k - 2.
+// With s = sigma (v - x'), s_k = -sigma x'_k (k >= 1), w = s^2 and
+// (s^3)_k = 3 s0^2 s_k + 6 s0 s1 s_{k-1} + T_k (k >= 3), where
+//   T_k = sum_{j=2}^{k-2} w_j s_{k-j} + s1 (s^2)'_{k-1} + s0 sum_{j=2}^{k-2} s_j s_{k-j}
+// and (s^2)'_m = sum_{j=1}^{m-1} s_j s_{m-j}: T_k needs orders up to k - 2
+// only. The s_k term is the slope (damp), the s_{k-1} term joins x_k =
+// x'_{k-1} / k (both linear in x'_{k-1}). The sums run on x' (s_j s_{k-j} =
+// x'_j x'_{k-j}) against x' stored reversed (Dot: both ascend), the square's
+// by its symmetry; their newest terms (j = 2, k - 2) are added last.
+template <bool Var, int N>
 void BeltTaylorField::Cubic3(int order, int n, TaylorRow* c) {
   const double v = v_, two_beta = two_beta_, sg = sigma_;
   const double mu_s = mu_->mu_s(), c1 = mu_->cubic(1), c3 = mu_->cubic(3);
-  double s[kTaylorMaxOrder + 1], w[kTaylorMaxOrder + 1];
+  double w[kTaylorMaxOrder + 1];  // (s^2)_k
+  double r[kTaylorMaxOrder + 1];  // x' reversed, r[max - k] = x'_k: the sums ascend in both
   double* cc = cc_.c();
   double* x = c[0];
   double* xd = c[1];
   // Order 0: seed eq. (3.5) at the step start.
-  s[0] = sg * (v - xd[0]);
-  w[0] = s[0] * s[0];
-  const double mu0 = (mu_s + c1 * s[0]) + c3 * (w[0] * s[0]);
+  const double s0 = sg * (v - xd[0]);
+  w[0] = s0 * s0;
+  const double mu0 = (mu_s + c1 * s0) + c3 * (w[0] * s0);
   xd[1] = -x[0] - two_beta * xd[0] + sg * mu0;
   const double damp = two_beta + (c1 + w[0] * (3 * c3));  // 2 beta + mu'(s_0)
-  const double sg_c3 = sg * c3, s0 = s[0], m2s0 = -2 * sg * s0;
+  const double m2s0 = -2 * sg * s0;                       // w_k = (s^2)'_k + m2s0 x'_k
   x[1] = xd[0];
+  r[kTaylorMaxOrder] = xd[0];
+  r[kTaylorMaxOrder - 1] = xd[1];
   if constexpr (Var) {
     const double dmu = c1 + 3 * c3 * w[0];
     cc[0] = -two_beta - dmu;
     Columns<true>(0, n, 1.0, dmu, c);
   }
-  for (int k = 1; k < order; ++k) {
+  const double xd1 = xd[1], sg_s0 = sg * s0, c3_6 = 6 * c3 * sg_s0 * xd1;
+  double sq_prev = 0;  // (s^2)'_{k-1}
+  // Order k: x'_{k+1} from the sums q, p of T_k, then the rest of order k.
+  auto order_k = [&](int k, double q, double p) __attribute__((always_inline)) {
     const double inv = kTaylorInverse.r[k];
-    const double old0 = CauchyNewestLast(s, s, k);    // (s^2)_k without s_k
-    const double old1 = CauchyNewestLast(w, s, k);    // (s^3)_k without s_k, w_k
-    const double alpha = sg_c3 * (old1 + s0 * old0);  // sigma c3 (s^3)_k without s_k
-    xd[k + 1] = ((alpha - x[k]) - damp * xd[k]) * inv;
-    s[k] = -sg * xd[k];
-    w[k] = old0 + m2s0 * xd[k];
+    const double sq = k < 3 ? (k == 1 ? 0.0 : xd1 * xd1) : q + 2 * (xd1 * xd[k - 1]);  // (s^2)'_k
+    if (k < 3) {
+      // (s^3)_1 without s_1 is 0; (s^3)_2 without s_2 is 3 s0 s1^2.
+      const double alpha = k == 1 ? 0.0 : (3 * c3) * (sg_s0 * sq);
+      xd[k + 1] = ((alpha - x[k]) - damp * xd[k]) * inv;
+    } else {
+      // sigma c3 T_k = c3 (sg s0 q - p - x'_1 (s^2)'_{k-1}), sigma s = -x';
+      // sigma c3 6 s0 s1 s_{k-1} - x_k = -b x'_{k-1} (x_k = x'_{k-1} / k).
+      const double t = (sg_s0 * q - p) - xd1 * sq_prev;
+      const double b = kTaylorInverse.r[k - 1] - c3_6;
+      xd[k + 1] = ((c3 * inv) * t - (b * inv) * xd[k - 1]) - (damp * inv) * xd[k];
+    }
+    r[kTaylorMaxOrder - k - 1] = xd[k + 1];
+    w[k] = sq + m2s0 * xd[k];
+    sq_prev = sq;
     x[k + 1] = xd[k] * inv;
     if constexpr (Var) {
       const double dmu = 3 * c3 * w[k];
       cc[k] = -dmu;
       Columns<true>(k, n, inv, dmu, c);
     }
+  };
+  // The sums of order k >= 5: q by its symmetry (half the terms), the newest
+  // terms (j = 2, k - 2) last.
+  auto sums_k = [&](int k) __attribute__((always_inline)) {
+    const double* rk = r + kTaylorMaxOrder - k;  // rk[j] = x'_{k-j}
+    const double mid = k % 2 == 0 ? xd[k / 2] * xd[k / 2] : 0.0;
+    const double q = 2 * (Dot(xd + 3, rk + 3, (k - 1) / 2 - 2) + xd[2] * xd[k - 2]) + mid;
+    const double p = Dot(w + 3, rk + 3, k - 5) + (w[2] * xd[k - 2] + w[k - 2] * xd[2]);
+    order_k(k, q, p);
+  };
+  if constexpr (N > 0) order = N;
+  for (int k = 1; k < std::min(order, 5); ++k) {
+    if (k == 3)
+      order_k(k, 0.0, 0.0);
+    else if (k == 4)
+      order_k(k, xd[2] * xd[2], w[2] * xd[2]);
+    else
+      order_k(k, 0.0, 0.0);
+  }
+  if constexpr (N > 0) {
+    // The order known at compile time: the loops unroll, the sums' lengths
+    // are constants (kFixedOrders).
+#pragma GCC unroll 64
+    for (int k = 5; k < N; ++k) sums_k(k);
+  } else {
+    for (int k = 5; k < order; ++k) sums_k(k);
   }
 }
 
@@ -221,10 +269,30 @@ double BeltTaylorField::ParamTerm(const TaylorRow* c, int k, double muk, double 
   return 0;
 }
 
+// Cubic3 at order N for N in [kMinFixed, kMaxFixed] (the seed law's orders
+// at rtol 1e-6 to 1e-14: JZ's p + 6), at a run-time order otherwise.
+constexpr int kMinFixed = 14, kMaxFixed = 26;
+template <bool Var>
+void BeltTaylorField::Cubic3Dispatch(int order, int n, TaylorRow* c) {
+  using Fn = void (BeltTaylorField::*)(int, int, TaylorRow*);
+  static constexpr Fn kFixed[] = {
+      &BeltTaylorField::Cubic3<Var, 14>, &BeltTaylorField::Cubic3<Var, 15>,
+      &BeltTaylorField::Cubic3<Var, 16>, &BeltTaylorField::Cubic3<Var, 17>,
+      &BeltTaylorField::Cubic3<Var, 18>, &BeltTaylorField::Cubic3<Var, 19>,
+      &BeltTaylorField::Cubic3<Var, 20>, &BeltTaylorField::Cubic3<Var, 21>,
+      &BeltTaylorField::Cubic3<Var, 22>, &BeltTaylorField::Cubic3<Var, 23>,
+      &BeltTaylorField::Cubic3<Var, 24>, &BeltTaylorField::Cubic3<Var, 25>,
+      &BeltTaylorField::Cubic3<Var, 26>};
+  static_assert(sizeof kFixed / sizeof kFixed[0] == kMaxFixed - kMinFixed + 1);
+  if (order >= kMinFixed && order <= kMaxFixed)
+    return (this->*kFixed[order - kMinFixed])(order, n, c);
+  Cubic3<Var, 0>(order, n, c);
+}
+
 void BeltTaylorField::Coefficients(int order, int n, TaylorRow* c) {
   const bool var = n >= 6;
   if (cubic3_ && !(n == 8 && kind_ == ParamKind::kAffine))
-    return var ? Cubic3<true>(order, n, c) : Cubic3<false>(order, n, c);
+    return var ? Cubic3Dispatch<true>(order, n, c) : Cubic3Dispatch<false>(order, n, c);
   switch (law_) {
     case LawKind::kCubic:
       return var ? Recurrences<LawKind::kCubic, true>(order, n, c)
