@@ -36,9 +36,10 @@ std::string ChartOptions::ValidationError(const Params& base) const {
   std::ostringstream os;
   if (!err.empty())
     os << err;
-  else if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= 0.2))
-    os << "max_step = " << max_step << " must be in [" << 1.0 / kMaxCurvePoints
-       << ", 0.2]: a curve across the rectangle takes about 1 / max_step points, at most "
+  else if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= kMaxStepLimit))
+    os << "max_step = " << max_step << " must be in [" << 1.0 / kMaxCurvePoints << ", "
+       << kMaxStepLimit
+       << "]: a curve across the rectangle takes about 1 / max_step points, at most "
        << kMaxCurvePoints;
   else if (samples < 4)
     os << "samples = " << samples << " must be >= 4";

@@ -36,7 +36,7 @@ bool Oscillation(OrbitFinder& finder) {
     if (std::abs(next - a) < Tolerances().map_settle * a0) return true;
     a = next;
   }
-  return a > 0.5 * a0;
+  return a > Tolerances::kRegionLive * a0;
 }
 }  // namespace
 

@@ -58,9 +58,9 @@ std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const 
   if (max_m < 1 || max_m > 8) return "max_m = " + std::to_string(max_m) + " must lie in [1, 8]";
   if (seed_lines < 0 || seed_lines > 50)
     return "seed_lines = " + std::to_string(seed_lines) + " must lie in [0, 50]";
-  if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= 0.5))
+  if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= kMaxStepLimit))
     return "max_step = " + Num(max_step) + " must lie in [1/" + std::to_string(kMaxCurvePoints) +
-           ", 0.5]";
+           ", " + Num(kMaxStepLimit) + "]";
   if (!(max_amplitude > 0)) return "max_amplitude must be > 0";
   if ((n1 == 0) != (n2 == 0) || n1 < 0 || n2 < 0 || n1 > 1000 || n2 > 1000)
     return "the response grid must be 0 x 0 (none) or within 1000 x 1000";

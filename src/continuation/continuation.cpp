@@ -24,8 +24,8 @@ std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (!std::isfinite(from)) return "from = " + Num(from) + " is not a finite number";
   if (!std::isfinite(to)) return "to = " + Num(to) + " is not a finite number";
   if (from == to) return "from = to = " + Num(from) + ": the range is empty";
-  if (!(max_step > 0 && max_step <= 0.5))
-    return "max_step = " + Num(max_step) + " must be in (0, 0.5]";
+  if (!(max_step > 0 && max_step <= kMaxStepLimit))
+    return "max_step = " + Num(max_step) + " must be in (0, " + Num(kMaxStepLimit) + "]";
   if (!(min_step > 0)) return "min_step = " + Num(min_step) + " must be > 0";
   if (!(max_step > min_step))
     return "max_step = " + Num(max_step) + " must be > min_step = " + Num(min_step);

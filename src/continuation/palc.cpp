@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "numerics/stall.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -228,7 +229,7 @@ PalcResult Palc::Continue(const PalcPoint& first, double ds, PalcHooks& hooks) {
     // closed curve.
     const double s = (first_s - a).dot(d) / d.squaredNorm();
     if (options_.closed_curves && travelled > 3 * step && s >= 0 && s <= 1 &&
-        (a + s * d - first_s).norm() < 0.1 * step &&
+        (a + s * d - first_s).norm() < Tolerances::kClosedCurveGap * step &&
         r.points.back().tangent.dot(r.points.front().tangent) > 0)
       return finish(PalcStatus::kClosed, "");
     if (c.iterations <= options_.fast_iterations)

@@ -59,11 +59,12 @@ RootResult LocateGrazing(OrbitFinder& finder, const Params& base, const Paramete
 bool GrazesInsideStickBand(const Model& m, const FlowResult& run) {
   // The slip field's fold on x' = v (x'' = 0; x'' falls by 1 per unit x): x0
   // where mu is continuous at s = 0, x0 - (mu_s - mu(0+)) where it jumps. The
-  // touch is whichever of the two it is nearer to, at any tolerance.
+  // touch is whichever of the two it is nearer to, at any tolerance: past the
+  // midpoint, 2 (x0 - x) > jump (exact, as x0 - x > 0.5 jump was).
   const double x0 = m.ExitPoint()[0];
   const double x_fold = x0 + m.Acceleration(Mode::kSlipBelow, x0, m.v());
   const double jump = x0 - x_fold;
-  return jump > Tolerances::kFoldJump * (1 + std::abs(x0)) && x0 - run.z[0] > 0.5 * jump;
+  return jump > Tolerances::kFoldJump * (1 + std::abs(x0)) && 2 * (x0 - run.z[0]) > jump;
 }
 
 SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run) {

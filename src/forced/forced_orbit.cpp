@@ -63,7 +63,8 @@ ForcedOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0,
     Vec2 dz = -A.partialPivLu().solve(r);
     const double size = 1 + std::max(std::abs(z.x), std::abs(z.xdot));
     const double norm = dz.cwiseAbs().maxCoeff();
-    if (norm > 0.5 * size) dz *= 0.5 * size / norm;  // a long step is cut (damped Newton)
+    const double cap = Tolerances::kForcedNewtonCap * size;
+    if (norm > cap) dz *= cap / norm;  // a long step is cut (damped Newton)
     o.update = dz.cwiseAbs().maxCoeff();
     if (o.update <= options.tol * size) {
       o.start = z;

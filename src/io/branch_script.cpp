@@ -70,8 +70,9 @@ std::string Key(const ContinuationResult& r, bool periodic, bool equilibrium) {
 }
 
 // Marks and labels of special points at (p, y(s)): labels above, a label whose
-// point is within 6% of the range of the previous one goes to the other side,
-// then further out, so neighbours (GR next to LP) do not overlap.
+// point is within kNearLabel of the range of the previous one goes to the other
+// side, then further out, so neighbours (GR next to LP) do not overlap.
+constexpr double kNearLabel = 0.06;
 std::string Marks(const ContinuationResult& r, double lo, double hi,
                   const std::function<double(const SpecialPoint&)>& y,
                   const std::function<bool(const SpecialPoint&)>& use,
@@ -84,7 +85,7 @@ std::string Marks(const ContinuationResult& r, double lo, double hi,
   std::ostringstream os;
   int level = 0;
   for (std::size_t i = 0; i < sp.size(); ++i) {
-    const bool near = i > 0 && sp[i].p - sp[i - 1].p < 0.06 * (hi - lo);
+    const bool near = i > 0 && sp[i].p - sp[i - 1].p < kNearLabel * (hi - lo);
     level = near ? (level + 1) % 4 : 0;
     os << "set label " << 100 + i << " '" << SpecialLabel(sp[i].kind) << "' at "
        << "up*" << FormatNumber(sp[i].p) << "," << y_unit << "*" << FormatNumber(y(sp[i]))

@@ -47,9 +47,11 @@ void Polygons(std::ostream& os, const ChartResult& r, double u1, double u2) {
   }
 }
 
-// Codim-2 labels: one per point (equal labels within 1% of the rectangle are
-// one point); a label whose default place (up right) is within 6% of an
-// earlier point's goes down right, then up left, then down left.
+// Codim-2 labels: one per point (equal labels within kSameLabel of the
+// rectangle are one point); a label whose default place (up right) is within
+// kClashX by kClashY of an earlier point's goes down right, then up left, then
+// down left.
+constexpr double kSameLabel = 0.01, kClashX = 0.06, kClashY = 0.04;
 void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
   struct Placed {
     double x, y;
@@ -59,8 +61,8 @@ void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
   for (const Codim2Point& p : r.codim2) {
     bool dup = false;
     for (const Codim2Point* q : shown)
-      dup = dup || (q->label == p.label && std::abs(q->p1 - p.p1) < 0.01 * pl.width1() &&
-                    std::abs(q->p2 - p.p2) < 0.01 * pl.width2());
+      dup = dup || (q->label == p.label && std::abs(q->p1 - p.p1) < kSameLabel * pl.width1() &&
+                    std::abs(q->p2 - p.p2) < kSameLabel * pl.width2());
     if (dup) continue;
     shown.push_back(&p);
     const double dx[] = {1, 1, -1, -1}, dy[] = {1, -1, 1, -1};
@@ -69,8 +71,8 @@ void Codim2Labels(std::ostream& os, const ChartResult& r, const Plane& pl) {
       const double x = p.p1 + dx[k] * 0.03 * pl.width1(), y = p.p2 + dy[k] * 0.03 * pl.width2();
       bool clash = false;
       for (const Placed& q : placed)
-        clash = clash ||
-                (std::abs(q.x - x) < 0.06 * pl.width1() && std::abs(q.y - y) < 0.04 * pl.width2());
+        clash = clash || (std::abs(q.x - x) < kClashX * pl.width1() &&
+                          std::abs(q.y - y) < kClashY * pl.width2());
       if (!clash) break;
     }
     placed.push_back({p.p1 + dx[k] * 0.03 * pl.width1(), p.p2 + dy[k] * 0.03 * pl.width2()});

@@ -336,6 +336,14 @@ struct Tolerances {
   static constexpr double kForcedCurveAmplitude = 1e3;
   // Forcing phase: Omega t within kPhaseUlps 1e-15 (1 + |Omega t|) of 2 pi is 0.
   static constexpr double kPhaseRounding = 1e-15, kPhaseUlps = 8;
+
+  // --- Limits round two: the decimal-form thresholds (scripts/check_limits.py) ---
+  // PALC: a last chord within kClosedCurveGap chord lengths of the first point closes the curve.
+  static constexpr double kClosedCurveGap = 0.1;
+  // Forced shooting: a Newton step over kForcedNewtonCap (1 + |z|) is cut to it (damped Newton).
+  static constexpr double kForcedNewtonCap = 0.5;
+  // Chart regions: a section-map run still above kRegionLive a0 after its cap oscillates.
+  static constexpr double kRegionLive = 0.5;
 };
 
 }  // namespace stickslip

@@ -18,8 +18,8 @@ std::string OrbitScanOptions::ValidationError() const {
   std::ostringstream os;
   if (samples < 4)
     os << "samples = " << samples << " must be >= 4";
-  else if (!(a_min > 0 && a_min < 0.1))
-    os << "a_min = " << a_min << " must be in (0, 0.1)";
+  else if (!(a_min > 0 && a_min < kAMinLimit))
+    os << "a_min = " << a_min << " must be in (0, " << kAMinLimit << ")";
   return os.str();
 }
 

@@ -76,12 +76,15 @@ struct StroboscopicRun {
   long steps = 0;
 };
 
+/// IterateStroboscopic's default max_amplitude: far beyond any bounded orbit.
+constexpr double kStroboscopicMaxAmplitude = 1e6;
+
 /// Iterates the stroboscopic map from `start` (its t is taken as phase 0).
 /// `cancelled` is polled once per period. |x| or |x'| above max_amplitude ends
 /// the run as kDiverged.
 StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint& start,
                                     const LyapunovOptions& options,
                                     const std::function<bool()>& cancelled = {},
-                                    double max_amplitude = 1e6);
+                                    double max_amplitude = kStroboscopicMaxAmplitude);
 
 }  // namespace stickslip

@@ -194,6 +194,8 @@ struct ChartOptions {
   // speeds, k5 > 0), given up after this time or this many steps.
   static constexpr double kMaxReturnTime = 50;
   static constexpr long kMaxSteps = 20000;
+  // max_step's upper bound (a curve across the rectangle in at least 5 steps).
+  static constexpr double kMaxStepLimit = 0.2;
   Plane plane;
   OrbitOptions orbit;
   double max_step =

@@ -140,6 +140,8 @@ struct ResponseGrid {
 };
 
 struct ForcedChartOptions {
+  /// max_step's upper bound (a curve across the rectangle in at least 2 steps).
+  static constexpr double kMaxStepLimit = 0.5;
   ForcedPlane plane;
   ForcedOptions flow;         ///< rtol, atol 1e-12 (forced flow defaults)
   int max_m = 2;              ///< curves of orbits of period multiple 1..max_m

@@ -88,8 +88,10 @@ struct ContinuationOptions {
   double to = 0.5;
   OrbitOptions orbit;
   /// Largest step, as a fraction of |to - from| (so at least 1/max_step points
-  /// on a branch that spans the range).
+  /// on a branch that spans the range), in (0, kMaxStepLimit].
   double max_step = 0.01;
+  // max_step's upper bound (a branch across the range in at least 2 steps).
+  static constexpr double kMaxStepLimit = 0.5;
   double min_step = 1e-7;     // fraction of |to - from| below which a branch fails
   double locate_tol = 1e-13;  // special points, in the parameter (Brent's interval)
   int max_points = 20000;     // per branch

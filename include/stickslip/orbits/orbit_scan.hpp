@@ -20,11 +20,13 @@
 namespace stickslip {
 
 struct OrbitScanOptions {
+  // a_min's upper bound (exclusive).
+  static constexpr double kAMinLimit = 0.1;
   OrbitOptions orbit;
   // Section amplitudes sampled: half on a geometric grid from a_min, half on
   // a uniform one, both up to a_max = 2 (mu_s + |v|).
   int samples = 64;
-  double a_min = 1e-4;              // relative to mu_s + |v|
+  double a_min = 1e-4;              // relative to mu_s + |v|, in (0, kAMinLimit)
   std::function<bool()> cancelled;  // polled by the flow; empty: never
   // Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
