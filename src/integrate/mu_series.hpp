@@ -20,7 +20,8 @@ namespace stickslip {
 class MuSeries {
  public:
   static constexpr int kMaxOrder = 40;
-  explicit MuSeries(const Friction& f) : law_(f.law_), mu_s_(f.mu_s_), a_(f.a_), b_(f.b_) {
+  explicit MuSeries(const Friction& f)
+      : law_(f.law_), mu_s_(f.mu_s_), a_(f.a_), b_(f.b_), k5_(f.c_) {
     if (law_ == LawKind::kCubic) {  // seed (3.3): mu_s - k1 s + k3 s^3, and - k5 s^5
       c_[1] = -a_;
       c_[3] = b_;
@@ -31,6 +32,10 @@ class MuSeries {
     if (law_ == LawKind::kStribeck) inv_b_ = 1 / b_;
   }
   LawKind law() const { return law_; }
+  // Whether this is f's series (Bind keeps it then: Begin clears per step).
+  bool Of(const Friction& f) const {
+    return law_ == f.law_ && mu_s_ == f.mu_s_ && a_ == f.a_ && b_ == f.b_ && k5_ == f.c_;
+  }
   double mu_s() const { return mu_s_; }
   // cubic: the odd coefficient c_j of mu_s + c_1 s + c_3 s^3 + c_5 s^5 (j = 1, 3, 5).
   double cubic(int j) const { return c_[j]; }
@@ -58,7 +63,7 @@ class MuSeries {
 
  private:
   LawKind law_;
-  double mu_s_ = 0, a_ = 0, b_ = 0;
+  double mu_s_ = 0, a_ = 0, b_ = 0, k5_ = 0;
   double c_[6] = {0, 0, 0, 0, 0, 0};  // cubic: odd coefficients c_1, c_3, c_5
   int degree_ = 1;                    // cubic: highest odd degree with c_j != 0
   // cubic: s^2, -, s^4 (rows 0, 2); stribeck: u, E, j u_j; leine: D, Q, Q^2.

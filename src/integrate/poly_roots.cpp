@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "integrate/series.hpp"
+
 namespace stickslip {
 namespace {
 
@@ -158,8 +160,7 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
 
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
   PolyRoot out;
-  double tail = 0;  // sum_{k>=3} |c_k|
-  for (int k = 3; k <= n; ++k) tail += std::abs(c[k]);
+  const double tail = AbsSum(c + 3, n - 2);  // sum_{k>=3} |c_k|
   double scale = tail;
   for (int k = 0; k <= std::min(n, 2); ++k) scale += std::abs(c[k]);
   if (scale == 0) return out;

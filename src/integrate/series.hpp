@@ -12,9 +12,6 @@ struct Series {
   double buf[N + 1 + 2 * kPad] = {};
   double* c() { return buf + kPad; }
   const double* c() const { return buf + kPad; }
-  void Clear() {
-    for (double& b : buf) b = 0;
-  }
 };
 
 // Coefficient k of the Cauchy product of p and q: sum_{j <= k} p_j q_{k-j}.
@@ -34,7 +31,7 @@ inline double Cauchy(const double* p, const double* q, int k) {
 
 // sum_{i < n} a_i b_i for two ascending arrays (a product of series with one
 // factor stored reversed): two-lane vectors (GCC/Clang vector extensions;
-// SSE2 on x86-64, wider units where the target has them), two accumulators.
+// SSE2 on x86-64, VEX in an x86-64-v3 kernel clone), two accumulators.
 inline double Dot(const double* a, const double* b, int n) {
   typedef double V2 __attribute__((vector_size(16)));
   V2 s0 = {0, 0}, s1 = {0, 0};
@@ -58,6 +55,23 @@ inline double Dot(const double* a, const double* b, int n) {
   const V2 s = s0 + s1;
   double r = s[0] + s[1];
   if (i < n) r += a[i] * b[i];
+  return r;
+}
+
+// sum_{i < n} |a_i| in two-lane vectors (n < 0: 0).
+inline double AbsSum(const double* a, int n) {
+  typedef double V2 __attribute__((vector_size(16)));
+  typedef long long M2 __attribute__((vector_size(16)));
+  const M2 mask = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};  // clears the sign bit
+  V2 s = {0, 0};
+  int i = 0;
+  for (; i + 2 <= n; i += 2) {
+    V2 v;
+    __builtin_memcpy(&v, a + i, sizeof v);
+    s += (V2)((M2)v & mask);
+  }
+  double r = s[0] + s[1];
+  if (i < n) r += a[i] < 0 ? -a[i] : a[i];
   return r;
 }
 
@@ -132,6 +146,15 @@ inline void PhiColumnsNext(double* p0, double* q0, double* p1, double* q1, const
   p1[k + 1] = q1[k] * inv;
   q1[k + 1] = (-p1[k] + cq1) * inv;
 }
+
+// k as a double for k < kMax.
+template <int kMax>
+struct Ordinals {
+  double k[kMax];
+  constexpr Ordinals() : k() {
+    for (int i = 0; i < kMax; ++i) k[i] = i;
+  }
+};
 
 // 1 / (k + 1) for k < kMax.
 template <int kMax>

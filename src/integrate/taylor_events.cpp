@@ -13,20 +13,16 @@ namespace stickslip {
 // extrema before it that do not stop are recorded and passed.
 void TaylorStepper::Events(double h) {
   const int n = order_;
-  double g[kNumRoots][kTaylorMaxOrder + 1];
-  g[0][0] = c_[1][0] - p_.model->v();
-  g[2][0] = c_[1][0];
-  g[1][0] = c_[1][1];
-  for (int k = 1; k <= n; ++k) {  // hp_: the powers of h
-    g[0][k] = g[2][k] = c_[1][k] * hp_[k];
-    g[1][k] = k < n ? (k + 1) * c_[1][k + 1] * hp_[k] : 0.0;
-  }
+  const double* xd = c_[1];
+  // hp_ (the powers of h) is 0 past the order, c_ finite: whole blocks.
+  double g[kNumRoots][kTaylorRowSize];
+  for (int k = 0; k <= n + 1; ++k) g[2][k] = xd[k] * hp_[k];
+  for (int k = 0; k <= n + 1; ++k) g[1][k] = kOrdinals.k[k + 1] * xd[k + 1] * hp_[k];
+  g[1][n] = 0;  // x'' has degree n - 1
+  std::copy(g[2], g[2] + n + 1, g[0]);
+  g[0][0] = xd[0] - p_.model->v();
   // sum_{k>=3} |g_k| for the quadratic bound, once for g0 and g2 (they differ in g_0).
-  double tail02 = 0, tail1 = 0;
-  for (int k = 3; k <= n; ++k) {
-    tail02 += std::abs(g[2][k]);
-    tail1 += std::abs(g[1][k]);
-  }
+  const double tail02 = AbsSum(g[2] + 3, n - 2), tail1 = AbsSum(g[1] + 3, n - 3);
   const double tail[kNumRoots] = {tail02, tail1, tail02};
   const bool at_rest = p_.AtRest(c_[0][0], c_[1][0], c_[1][1]);
   Roots roots;

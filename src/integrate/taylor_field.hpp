@@ -14,6 +14,7 @@ constexpr int kTaylorMaxOrder = 36;
 constexpr int kTaylorRowSize = kTaylorMaxOrder + 1 + kPad;
 using TaylorRow = double[kTaylorRowSize];
 constexpr Reciprocals<kTaylorMaxOrder> kTaylorInverse;
+constexpr Ordinals<kTaylorRowSize + 1> kOrdinals;
 
 class TaylorField {
  public:

@@ -9,6 +9,7 @@
 
 #include "integrate/mu_series.hpp"
 #include "integrate/taylor_field.hpp"
+#include "numerics/kernel.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/model.hpp"
@@ -29,11 +30,11 @@ class BeltTaylorField final : public TaylorField {
     v_ = belt->v();
     two_beta_ = 2 * belt->beta();
     sigma_ = m == Mode::kSlipBelow ? 1 : -1;
-    mu_.emplace(belt->friction());
+    // The series' entries are cleared or set before they are read, each step
+    // (the leading zeros are never written): a new law only needs a new one.
+    if (!mu_ || !mu_->Of(belt->friction())) mu_.emplace(belt->friction());
     cubic3_ = law_ == LawKind::kCubic && mu_->cubic(5) == 0;
     if (parameter_) ResolveParameter();
-    s_.Clear();
-    cc_.Clear();
     return true;
   }
   void Coefficients(int order, int n, TaylorRow* c) override;
@@ -49,8 +50,13 @@ class BeltTaylorField final : public TaylorField {
  private:
   template <LawKind L, bool Var>
   void Recurrences(int order, int n, TaylorRow* c);
+  // Order 0 of the seed law's loop, outside its kernel clones: x'' at the
+  // step start exactly as the model's field (no FMA), which the mode switches read.
+  struct Order0 {
+    double s0, w0, damp;
+  };
   template <bool Var, int N>
-  void Cubic3(int order, int n, TaylorRow* c);
+  STICKSLIP_KERNEL void Cubic3(int order, int n, TaylorRow* c, const Order0& o0);
   template <bool Var>
   void Cubic3Dispatch(int order, int n, TaylorRow* c);
   template <bool Newest>
@@ -154,22 +160,18 @@ inline void BeltTaylorField::Columns(int k, int n, double inv, double dmu, Taylo
 // x'_j x'_{k-j}) against x' stored reversed (Dot: both ascend), the square's
 // by its symmetry; their newest terms (j = 2, k - 2) are added last.
 template <bool Var, int N>
-void BeltTaylorField::Cubic3(int order, int n, TaylorRow* c) {
-  const double v = v_, two_beta = two_beta_, sg = sigma_;
-  const double mu_s = mu_->mu_s(), c1 = mu_->cubic(1), c3 = mu_->cubic(3);
+STICKSLIP_KERNEL void BeltTaylorField::Cubic3(int order, int n, TaylorRow* c, const Order0& o0) {
+  const double two_beta = two_beta_, sg = sigma_;
+  const double c1 = mu_->cubic(1), c3 = mu_->cubic(3);
   double w[kTaylorMaxOrder + 1];  // (s^2)_k
   double r[kTaylorMaxOrder + 1];  // x' reversed, r[max - k] = x'_k: the sums ascend in both
   double* cc = cc_.c();
   double* x = c[0];
   double* xd = c[1];
-  // Order 0: seed eq. (3.5) at the step start.
-  const double s0 = sg * (v - xd[0]);
-  w[0] = s0 * s0;
-  const double mu0 = (mu_s + c1 * s0) + c3 * (w[0] * s0);
-  xd[1] = -x[0] - two_beta * xd[0] + sg * mu0;
-  const double damp = two_beta + (c1 + w[0] * (3 * c3));  // 2 beta + mu'(s_0)
-  const double m2s0 = -2 * sg * s0;                       // w_k = (s^2)'_k + m2s0 x'_k
-  x[1] = xd[0];
+  // Order 0 (Cubic3Dispatch): x'_1, s0, w0 and the damping 2 beta + mu'(s_0).
+  const double s0 = o0.s0, damp = o0.damp;
+  w[0] = o0.w0;
+  const double m2s0 = -2 * sg * s0;  // w_k = (s^2)'_k + m2s0 x'_k
   r[kTaylorMaxOrder] = xd[0];
   r[kTaylorMaxOrder - 1] = xd[1];
   if constexpr (Var) {
@@ -274,7 +276,15 @@ double BeltTaylorField::ParamTerm(const TaylorRow* c, int k, double muk, double 
 constexpr int kMinFixed = 14, kMaxFixed = 26;
 template <bool Var>
 void BeltTaylorField::Cubic3Dispatch(int order, int n, TaylorRow* c) {
-  using Fn = void (BeltTaylorField::*)(int, int, TaylorRow*);
+  // Order 0: seed eq. (3.5) at the step start.
+  const double sg = sigma_, c1 = mu_->cubic(1), c3 = mu_->cubic(3);
+  double* xd = c[1];
+  const double s0 = sg * (v_ - xd[0]), w0 = s0 * s0;
+  const double mu0 = (mu_->mu_s() + c1 * s0) + c3 * (w0 * s0);
+  xd[1] = -c[0][0] - two_beta_ * xd[0] + sg * mu0;
+  c[0][1] = xd[0];
+  const Order0 o0{s0, w0, two_beta_ + (c1 + w0 * (3 * c3))};
+  using Fn = void (BeltTaylorField::*)(int, int, TaylorRow*, const Order0&);
   static constexpr Fn kFixed[] = {
       &BeltTaylorField::Cubic3<Var, 14>, &BeltTaylorField::Cubic3<Var, 15>,
       &BeltTaylorField::Cubic3<Var, 16>, &BeltTaylorField::Cubic3<Var, 17>,
@@ -285,8 +295,8 @@ void BeltTaylorField::Cubic3Dispatch(int order, int n, TaylorRow* c) {
       &BeltTaylorField::Cubic3<Var, 26>};
   static_assert(sizeof kFixed / sizeof kFixed[0] == kMaxFixed - kMinFixed + 1);
   if (order >= kMinFixed && order <= kMaxFixed)
-    return (this->*kFixed[order - kMinFixed])(order, n, c);
-  Cubic3<Var, 0>(order, n, c);
+    return (this->*kFixed[order - kMinFixed])(order, n, c, o0);
+  Cubic3<Var, 0>(order, n, c, o0);
 }
 
 void BeltTaylorField::Coefficients(int order, int n, TaylorRow* c) {
