@@ -137,6 +137,7 @@ Flow::SlipEnd Flow::Slip(double t0, const Vec2& z0, const StopRule& stop, bool v
   const double init[8] = {z0[0], z0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0};
   const SegmentEnd e = RunSegment(cv, problem, t0, init, stop.t_max, out);
   total_steps_ += cv.steps();
+  taylor_orders_.Merge(cv.orders());
   r.extrema.Merge(extrema);
   double y[8];
   std::copy(e.y, e.y + n, y);

@@ -79,6 +79,8 @@ class Stepper {
   // Where the stepper last (re)started: Reset's t0, or a restart of its own.
   virtual double SegmentStart() const = 0;
   virtual long steps() const = 0;  // since the last Reset
+  // Their orders, since the last Reset (none: not a Taylor stepper).
+  virtual TaylorOrders orders() const { return {}; }
   virtual int size() const = 0;
   virtual const std::string& last_error() const = 0;
 };

@@ -67,6 +67,7 @@ bool TaylorStepper::NewStep() {
     for (int i = 0; i < n_; ++i) std::fill(c_[i] + jz_order + 1, c_[i] + kTaylorRowSize, 0.0);
     Coefficients(order_ = jz_order);
     if (!FiniteCoefficients()) return Failed("non-finite Taylor coefficients");
+    ++orders_.fallbacks;
   }
   double h = StepSize(order_, jz_order);
   if (std::isnan(h)) return Failed("non-finite step size");
@@ -80,6 +81,9 @@ bool TaylorStepper::NewStep() {
     return Failed(os.str());
   }
   ++steps_;
+  orders_.sum += order_;
+  orders_.min = std::min(orders_.min, order_);
+  orders_.max = std::max(orders_.max, order_);
   tb_ = std::min(ta_ + h, tstop_);
   h = tb_ - ta_;  // the step as t sees it
   hp_[0] = 1;

@@ -50,6 +50,8 @@ class TaylorStepper final : public Stepper {
     ta_ = tb_ = t_ = t0_ = t0;
     tstop_ = INFINITY;
     steps_ = 0;
+    orders_ = TaylorOrders();
+    orders_.min = kTaylorMaxOrder;
     pending_ = passed_root_ = false;
     for (auto& s : state_) s = kFresh;
   }
@@ -67,6 +69,12 @@ class TaylorStepper final : public Stepper {
   double CurrentTime() override { return tb_; }
   double SegmentStart() const override { return t0_; }
   long steps() const override { return steps_; }
+  TaylorOrders orders() const override {
+    TaylorOrders o = orders_;
+    o.steps = steps_;
+    if (steps_ == 0) o.min = 0;
+    return o;
+  }
   int size() const override { return n_; }
   const std::string& last_error() const override { return error_; }
 
@@ -139,6 +147,7 @@ class TaylorStepper final : public Stepper {
   bool passed_root_ = false;  // the last step passed a root
   int rf_[kNumRoots] = {0, 0, 0};
   long steps_ = 0;
+  TaylorOrders orders_;  // steps_ counts the steps
   std::string error_;
 };
 

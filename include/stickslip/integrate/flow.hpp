@@ -5,6 +5,7 @@
 // the saltation matrices are applied at every switch, giving d z(t) / d z(t0).
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -127,6 +128,23 @@ struct FlowResult {
   }
 };
 
+// The orders of the Taylor steps taken (CVODE's steps count none): order p,
+// or p + TaylorField::ExtraOrder, or p again where those extra orders overflow.
+struct TaylorOrders {
+  long steps = 0;        // Taylor steps
+  long sum = 0;          // the sum of their orders (mean: sum / steps)
+  int min = 0, max = 0;  // over those steps; 0 without steps
+  long fallbacks = 0;    // steps recomputed at p: their order p + extra overflowed
+  void Merge(const TaylorOrders& o) {
+    fallbacks += o.fallbacks;
+    if (o.steps == 0) return;
+    min = steps == 0 ? o.min : std::min(min, o.min);
+    max = std::max(max, o.max);
+    steps += o.steps;
+    sum += o.sum;
+  }
+};
+
 class Flow {
  public:
   // Any system on the model seam (system.hpp; the belt: Model). Throws
@@ -166,6 +184,8 @@ class Flow {
   }
 
   long total_steps() const { return total_steps_; }
+  // The orders of those steps (Taylor only), accumulated like total_steps().
+  const TaylorOrders& taylor_orders() const { return taylor_orders_; }
   // Polled after every step: a run stops with kCancelled once it returns true
   // (interruption, wall-time limits). Empty: never.
   void set_cancel(std::function<bool()> cancel) { cancel_ = std::move(cancel); }
@@ -190,6 +210,7 @@ class Flow {
   std::unique_ptr<Stepper> plain_, var_, param_;
   std::optional<ParameterAxis> parameter_, param_axis_;  // the active column; param_'s
   long total_steps_ = 0;
+  TaylorOrders taylor_orders_;
   std::function<bool()> cancel_;
 };
 
