@@ -10,7 +10,7 @@ literals are blanked first. Usage: check_limits.py [ROOT] [--allow FILE] | --sel
 Also issue 19's "no numeric threshold literal outside the tolerance
 definitions" (threshold_literals). In the library's code (src/ but src/cli and
 src/apps, whose 1e3 are units and whose defaults are options), outside
-src/numerics/tolerances.hpp, it reports (1) every literal in exponent form
+src/numerics/tolerances*.hpp, it reports (1) every literal in exponent form
 (1e-9, 2e3) and (2) every decimal literal with a '.' (0.5, not 0.0 or 1.0)
 that is compared: a side of a binary <, >, <= or >= (clang-format puts spaces
 around it; a template's brackets touch their names), alone, as a factor or a
@@ -33,8 +33,9 @@ import sys
 
 MAX_FILE, MAX_FUNCTION = 350, 80
 LITERAL_FREE, PUBLIC = ('src' + os.sep,), 'include' + os.sep
-LITERAL_EXEMPT = (os.path.join('src', 'cli'), os.path.join('src', 'apps'),
-                  os.path.join('src', 'numerics', 'tolerances.hpp'))
+LITERAL_EXEMPT = (os.path.join('src', 'cli'), os.path.join('src', 'apps'))
+# The tolerance definitions: tolerances.hpp and its parts (tolerances_fixed.hpp).
+TOLERANCES = re.compile(r'src[/\\]numerics[/\\]tolerances(_\w+)?\.hpp$')
 TOKEN = re.compile(r'(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFlLuU]*)|(?P<id>[A-Za-z_]\w*)'
                    r'|(?P<op><<=|>>=|->|::|<<|>>|<=|>=|==|!=|&&|\|\||\+\+|--|[-+*/%&|^]=|\S)')
 RELATIONAL = ('<', '>', '<=', '>=')
@@ -231,12 +232,13 @@ def check(root, allow):
                 if n > MAX_FILE and rel not in allow:
                     problems.append(f'{rel}: {n} lines (limit {MAX_FILE})')
                 public = rel.startswith(PUBLIC)
-                if public or rel.startswith(LITERAL_FREE) and not rel.startswith(LITERAL_EXEMPT):
+                if public or (rel.startswith(LITERAL_FREE) and not rel.startswith(LITERAL_EXEMPT)
+                              and not TOLERANCES.match(rel)):
                     for k, literal in threshold_literals(text, public):
                         if f'{rel}:{k}' not in allow:
                             problems.append(f'{rel}:{k}: threshold literal {literal} ' + (
                                 'neither a documented constant nor a member default'
-                                if public else 'outside src/numerics/tolerances.hpp'))
+                                if public else 'outside src/numerics/tolerances*.hpp'))
                 for name, first, length in functions(text):
                     if length > MAX_FUNCTION and f'{rel}:{name}' not in allow:
                         problems.append(f'{rel}:{first}: {name} is {length} lines '
