@@ -9,32 +9,33 @@ literals are blanked first. Usage: check_limits.py [ROOT] [--allow FILE] | --sel
 (FILE: lines 'path:function  # why', each a justified exception).
 Also issue 19's "no numeric threshold literal outside the tolerance
 definitions" (threshold_literals). In the library's code (src/ but src/cli and
-src/apps, whose 1e3 are units and whose defaults are options), outside
-src/numerics/tolerances.hpp, it reports (1) every literal in exponent form
-(1e-9, 2e3) and (2) every decimal literal with a '.' (0.5, not 0.0 or 1.0)
-that is compared: a side of a binary <, >, <= or >= (clang-format puts spaces
-around it; a template's brackets touch their names), alone, as a factor or a
-term (x < 0.1 * step, a > y + 0.5) or inside a grouping '(...)'. In the public
-headers (include/) the same literals are reported unless their statement
-defines a named constant (constexpr) with a comment on its line or above, or
-gives a data member its default (an option's default, documented in
-docs/cli.md). Not thresholds, by rule: 0 and 1 (a sign, the unit circle: the
-mathematics); a literal not compared (0.5 * (a + b), J << 0.0, 1.0, figure
-geometry); a literal inside a call's arguments (std::abs(x - 0.5) < t); a
-literal assigned to a variable compared later. Not checked: integer literals
-(n < 150): counts, sizes and iteration caps, which a rule cannot tell from
-thresholds (23 compared integers >= 10 in the library at this commit, mostly
-bisection caps and option ranges in counts). --self-test runs the literal
-rules on a small tree (SELF_TEST) and exits 1 unless exactly its marked lines
-are reported."""
+src/apps, whose 1e3 are units and whose defaults are options), outside the
+tolerance headers src/numerics/tolerances*.hpp, it reports (1) every literal
+in exponent form (1e-9, 2e3) and (2) every decimal literal with a '.' (0.5,
+not 0.0 or 1.0) and every integer literal >= 10 (an iteration cap it < 100,
+an option range n > 64) that is compared: a side of a binary <, >, <= or >=
+(clang-format puts spaces around it; a template's brackets touch their
+names), alone, as a factor or a term (x < 0.1 * step, a > y + 0.5) or inside
+a grouping '(...)'. In the public headers (include/) the same literals are
+reported unless their statement defines a named constant (constexpr) with a
+comment on its line or above, or gives a data member its default (an
+option's default, documented in docs/cli.md). Not thresholds, by rule: 0 and
+1 (a sign, the unit circle: the mathematics) and integers below 10 (small
+counts: n < 2, k > 3); a literal not compared (0.5 * (a + b), J << 0.0, 1.0,
+os << 100 + i, n % 10 == 0, figure geometry); a literal inside a call's
+arguments or an index (std::abs(x - 0.5) < t, v[16] < y); a literal
+assigned to a variable compared later; comments and strings. --self-test
+runs the literal rules on a small tree (SELF_TEST) and exits 1 unless
+exactly its marked lines are reported."""
 import os
 import re
 import sys
 
 MAX_FILE, MAX_FUNCTION = 350, 80
 LITERAL_FREE, PUBLIC = ('src' + os.sep,), 'include' + os.sep
-LITERAL_EXEMPT = (os.path.join('src', 'cli'), os.path.join('src', 'apps'),
-                  os.path.join('src', 'numerics', 'tolerances.hpp'))
+LITERAL_EXEMPT = (os.path.join('src', 'cli'), os.path.join('src', 'apps'))
+# The tolerance definitions: tolerances.hpp and its parts (tolerances_fixed.hpp).
+TOLERANCES = re.compile(r'src[/\\]numerics[/\\]tolerances(_\w+)?\.hpp$')
 TOKEN = re.compile(r'(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?[fFlLuU]*)|(?P<id>[A-Za-z_]\w*)'
                    r'|(?P<op><<=|>>=|->|::|<<|>>|<=|>=|==|!=|&&|\|\||\+\+|--|[-+*/%&|^]=|\S)')
 RELATIONAL = ('<', '>', '<=', '>=')
@@ -197,7 +198,9 @@ def threshold_literals(text, public):
         if kind != 'num' or t.lower().startswith('0x'):
             continue
         exponent = bool(re.search(r'[eE]', t))
-        if not exponent and ('.' not in t or float(t.rstrip('fFlL')) in (0.0, 1.0)
+        value = float(t.rstrip('fFlLuU'))
+        counted = '.' in t or value >= 10  # a decimal, or an integer >= 10
+        if not exponent and (not counted or value in (0.0, 1.0)
                              or not compared(toks, match, k, k)):
             continue
         line = code.count('\n', 0, start) + 1
@@ -231,12 +234,13 @@ def check(root, allow):
                 if n > MAX_FILE and rel not in allow:
                     problems.append(f'{rel}: {n} lines (limit {MAX_FILE})')
                 public = rel.startswith(PUBLIC)
-                if public or rel.startswith(LITERAL_FREE) and not rel.startswith(LITERAL_EXEMPT):
+                if public or (rel.startswith(LITERAL_FREE) and not rel.startswith(LITERAL_EXEMPT)
+                              and not TOLERANCES.match(rel)):
                     for k, literal in threshold_literals(text, public):
                         if f'{rel}:{k}' not in allow:
                             problems.append(f'{rel}:{k}: threshold literal {literal} ' + (
                                 'neither a documented constant nor a member default'
-                                if public else 'outside src/numerics/tolerances.hpp'))
+                                if public else 'outside src/numerics/tolerances*.hpp'))
                 for name, first, length in functions(text):
                     if length > MAX_FUNCTION and f'{rel}:{name}' not in allow:
                         problems.append(f'{rel}:{first}: {name} is {length} lines '
@@ -254,7 +258,12 @@ SELF_TEST = {  # path: text; the lines marked /* bad */ must be reported, no oth
   J << 0.0, 1.0, -1.0, 2.5;
   const bool stable = std::abs(a) < 1.0;
   os << 5.5 + static_cast<double>(n) << std::array<double, 2>{0.25, 0.75}[0];
-  if (2 * (x - a) > b && n < 100) return;
+  if (2 * (x - a) > b && n < 9) return;
+  for (int it = 0; it < 100; ++it) x *= 0.5; /* bad */
+  if (n >= 16 * k) return; /* bad */
+  os << "set label " << 100 + n << " n < 150";  // n < 150
+  if (v[16] < y || Pow(x, 12) > y || n % 10 == 0 || (1 << 20) == n) return;
+  std::array<double, 16> w{};
 }
 """,
     'src/cli/cli.cpp': 'const double ms = 1e3 * s;\n',
@@ -275,6 +284,13 @@ constexpr double kBare = 1e-3; /* bad */
 double G(double t = 1e-6); /* bad */
 
 inline bool H(double a, double b) { return a < 0.25 * b; } /* bad */
+
+struct P {
+  // documented
+  static constexpr int kMaxN = 1000;
+  int n = 200;
+  bool Big() const { return n > 64; } /* bad */
+};
 """,
 }
 

@@ -19,8 +19,8 @@ std::string BasinOptions::ValidationError() const {
   if (!err.empty()) return err;
   std::ostringstream os;
   auto finite = [](double x) { return std::isfinite(x); };
-  if (nx < 1 || ny < 1 || static_cast<long>(nx) * ny > 4000000)
-    os << "nx = " << nx << ", ny = " << ny << " must be >= 1 with nx * ny <= 4000000";
+  if (nx < 1 || ny < 1 || static_cast<long>(nx) * ny > kMaxStarts)
+    os << "nx = " << nx << ", ny = " << ny << " must be >= 1 with nx * ny <= " << kMaxStarts;
   else if (!(t_cap > 0) || !finite(t_cap))
     os << "t_cap = " << t_cap << " must be a finite number > 0";
   else if (!(settle > 0 && settle < 1))
@@ -239,7 +239,9 @@ Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const Fl
                                 int n) {
   if (orbit.kind != OrbitKind::kPureSlip)
     throw InvalidArgument("SmallestDisturbance: the orbit must be pure-slip");
-  if (n < 16) throw InvalidArgument("SmallestDisturbance: n = " + std::to_string(n) + " < 16");
+  if (n < kMinDisturbanceSamples)
+    throw InvalidArgument("SmallestDisturbance: n = " + std::to_string(n) + " < " +
+                          std::to_string(kMinDisturbanceSamples));
   const double xbar = model.SteadySliding().x;
   Flow f(model, flow);
   std::vector<Sample> pts;
@@ -266,7 +268,7 @@ Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const Fl
     const double f0 = p.z[0] - xbar, f1 = q.z[0] - xbar;
     if ((f0 > 0) != (f1 > 0)) {
       double lo = 0, hi = 1;
-      for (int it = 0; it < 60; ++it) {
+      for (int it = 0; it < Tolerances::kDisturbanceHalvings; ++it) {
         const double mid = 0.5 * (lo + hi);
         const double fm = Hermite(f0, h * p.z[1], f1, h * q.z[1], mid);
         ((fm > 0) == (f0 > 0) ? lo : hi) = mid;

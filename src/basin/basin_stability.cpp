@@ -55,7 +55,9 @@ BasinStability ExactBasinStability(const Model& model, const PeriodicOrbits& orb
   if (!(box.Area() > 0) || !std::isfinite(box.Area()))
     throw InvalidArgument("ExactBasinStability: the box must have a finite area > 0");
   if (!orbits.ok()) throw InvalidArgument("ExactBasinStability: the orbit scan did not succeed");
-  if (samples < 16) throw InvalidArgument("ExactBasinStability: samples must be >= 16");
+  if (samples < kMinBasinStabilitySamples)
+    throw InvalidArgument("ExactBasinStability: samples must be >= " +
+                          std::to_string(kMinBasinStabilitySamples));
   BasinStability b;
   // Levels inward to outward: steady sliding, the pure-slip orbits by
   // increasing amplitude, the stick-slip orbit (or nothing: runs that leave).

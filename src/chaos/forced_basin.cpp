@@ -19,7 +19,8 @@ namespace stickslip {
 const char* AttractorKindName(AttractorKind k) { return Name(k); }
 
 std::string ForcedBasinOptions::ValidationError() const {
-  if (nx < 1 || ny < 1 || nx > 2000 || ny > 2000) return "nx and ny must lie in [1, 2000]";
+  if (nx < 1 || ny < 1 || nx > kMaxSide || ny > kMaxSide)
+    return "nx and ny must lie in [1, " + std::to_string(kMaxSide) + "]";
   if (!(x_lo < x_hi) || !(xdot_lo < xdot_hi))
     return "the box must have x_min < x_max and xdot_min < xdot_max";
   if (max_period < 1 || max_period > iterate.keep / 2)

@@ -19,7 +19,8 @@ const char* SweepDirectionName(SweepDirection d) { return Name(d); }
 std::string OrbitDiagramOptions::ValidationError() const {
   if (!(std::isfinite(from) && std::isfinite(to)) || from == to)
     return "from = " + Num(from) + " and to = " + Num(to) + " must be finite and differ";
-  if (n < 2 || n > 1000000) return "n = " + std::to_string(n) + " must lie in [2, 1e6]";
+  if (n < 2 || n > kMaxValues)  // the text's 1e6 is kMaxValues
+    return "n = " + std::to_string(n) + " must lie in [2, 1e6]";
   if (!up && !down) return "no sweep direction";
   if (chunks < 1 || chunks > n) return "chunks = " + std::to_string(chunks) + " must lie in [1, n]";
   if (!(max_amplitude > 0)) return "max_amplitude = " + Num(max_amplitude) + " must be > 0";

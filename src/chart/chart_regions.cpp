@@ -27,7 +27,7 @@ bool Oscillation(OrbitFinder& finder) {
   const double xbar = m.SteadySliding().x;
   double a = r.z[0] - xbar;
   const double a0 = a;
-  for (int n = 0; n < 150; ++n) {
+  for (int n = 0; n < Tolerances::kRegionMapReturns; ++n) {
     const ReturnMap map = finder.Return(xbar + a, false);
     if (map.status == OrbitStatus::kSticks) return true;
     if (map.status != OrbitStatus::kOk) return false;

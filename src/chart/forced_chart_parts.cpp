@@ -56,14 +56,16 @@ std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const 
   e = flow.ValidationError();
   if (!e.empty()) return e;
   if (max_m < 1 || max_m > 8) return "max_m = " + std::to_string(max_m) + " must lie in [1, 8]";
-  if (seed_lines < 0 || seed_lines > 50)
-    return "seed_lines = " + std::to_string(seed_lines) + " must lie in [0, 50]";
+  if (seed_lines < 0 || seed_lines > kMaxSeedLines)
+    return "seed_lines = " + std::to_string(seed_lines) + " must lie in [0, " +
+           std::to_string(kMaxSeedLines) + "]";
   if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= kMaxStepLimit))
     return "max_step = " + Num(max_step) + " must lie in [1/" + std::to_string(kMaxCurvePoints) +
            ", " + Num(kMaxStepLimit) + "]";
   if (!(max_amplitude > 0)) return "max_amplitude must be > 0";
-  if ((n1 == 0) != (n2 == 0) || n1 < 0 || n2 < 0 || n1 > 1000 || n2 > 1000)
-    return "the response grid must be 0 x 0 (none) or within 1000 x 1000";
+  if ((n1 == 0) != (n2 == 0) || n1 < 0 || n2 < 0 || n1 > kMaxGridSide || n2 > kMaxGridSide)
+    return "the response grid must be 0 x 0 (none) or within " + std::to_string(kMaxGridSide) +
+           " x " + std::to_string(kMaxGridSide);
   if (max_period < 1 || max_period > iterate.keep / 2)
     return "max_period = " + std::to_string(max_period) + " must lie in [1, keep / 2]";
   if (threads < 1) return "threads must be >= 1";

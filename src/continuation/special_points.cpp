@@ -114,7 +114,9 @@ bool LocateFold(const CurveFunction& g, double a0, double p0, double a1, double 
       ok = false;
       return q0;
     }
-    for (int it = 0; it < 30 && std::abs(q1 - q0) > Tolerances::kFoldSecantTol * p_scale; ++it) {
+    for (int it = 0; it < Tolerances::kFoldSecantCap &&
+                     std::abs(q1 - q0) > Tolerances::kFoldSecantTol * p_scale;
+         ++it) {
       if (g1 == g0) break;
       const double q2 = q1 - g1 * (q1 - q0) / (g1 - g0);
       q0 = q1;

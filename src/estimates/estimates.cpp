@@ -31,7 +31,8 @@ double FirstCrossing(double a1, double y0, double v, double r1) {
     if (below && next > v) return kNan;
     if (next > r1) continue;
     double lo = t, hi = t + dt;  // yd(lo) > r1 >= yd(hi)
-    for (int i = 0; i < 200 && hi - lo > Tolerances::kCrossingWidth; ++i) {
+    for (int i = 0; i < Tolerances::kCrossingBisectionCap && hi - lo > Tolerances::kCrossingWidth;
+         ++i) {
       const double mid = 0.5 * (lo + hi);
       (yd(mid) > r1 ? lo : hi) = mid;
     }

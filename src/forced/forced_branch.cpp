@@ -46,7 +46,7 @@ bool Locate(Palc& palc, StrobeProblem& problem, const VectorXd& a, const VectorX
   out->hi = problem.Row();
   if (!at(lo, &g_lo) || (g_lo > 0) == (g_hi > 0)) return false;
   out->lo = problem.Row();
-  for (int it = 0; it < 60 && hi - lo > tol; ++it) {
+  for (int it = 0; it < Tolerances::kForcedBisectionCap && hi - lo > tol; ++it) {
     const double mid = 0.5 * (lo + hi);
     double g = 0;
     if (!at(mid, &g)) {

@@ -34,8 +34,8 @@ std::string FlowOptions::ValidationError() const {
     os << "rtol = " << rtol << " must be in [" << T::kRtolMin << ", " << T::kTolMax << "]";
   } else if (!(atol >= T::kAtolMin && atol <= T::kTolMax)) {
     os << "atol = " << atol << " must be in [" << T::kAtolMin << ", " << T::kTolMax << "]";
-  } else if (max_steps < 10) {
-    os << "max_steps = " << max_steps << " must be >= 10";
+  } else if (max_steps < kMinSteps) {
+    os << "max_steps = " << max_steps << " must be >= " << kMinSteps;
   } else if (max_switches < 1) {
     os << "max_switches = " << max_switches << " must be >= 1";
   }

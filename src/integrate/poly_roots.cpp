@@ -122,7 +122,7 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
   // (one serial chain for g and g' together bounded the loop's latency).
   double dc[kMaxDegree];
   for (int k = 1; k <= n; ++k) dc[k - 1] = k * c[k];
-  for (int it = 0; it < 100; ++it) {
+  for (int it = 0; it < Tolerances::kPolyNewtonCap; ++it) {
     const double dg = n >= 1 ? Horner(dc, n - 1, x) : 0.0;
     const double gx = g(x);
     (Sign(gx, zero_sign) != sign ? hi : lo) = x;
@@ -149,7 +149,7 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
       if (x + d < hi && changed(x + d)) hi = x + d;
     }
   }
-  for (int it = 0; it < 200 && NextUp(lo) < hi; ++it) {
+  for (int it = 0; it < Tolerances::kPolyBisectionCap && NextUp(lo) < hi; ++it) {
     const double mid = 0.5 * (lo + hi);
     if (mid <= lo || mid >= hi) break;
     (changed(mid) ? hi : lo) = mid;

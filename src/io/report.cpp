@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -46,7 +47,7 @@ void WriteFileAtomically(const std::string& path, const std::string& content) {
   static std::atomic<unsigned long> counter{0};
   std::string tmp;
   int fd = -1;
-  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+  for (int attempt = 0; attempt < Tolerances::kTempFileAttempts && fd < 0; ++attempt) {
     tmp = (dir == "/" ? "" : dir) + "/." + base + ".tmp-" + std::to_string(::getpid()) + "-" +
           std::to_string(counter++);
     fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);

@@ -142,7 +142,8 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   if (lp->forced) lp->m = static_cast<int>(Number(t, row[t.Column("m")], "m"));
   std::string err = lp->forced ? ValidationError(ForcedParams{lp->params, lp->force, lp->omega})
                                : ValidationError(lp->params);
-  if (err.empty() && lp->forced && !(lp->m >= 1 && lp->m <= 1000)) err = "m out of range";
+  if (err.empty() && lp->forced && !(lp->m >= 1 && lp->m <= LabelledPoint::kMaxM))
+    err = "m out of range";
   if (err.empty()) err = lp->flow.ValidationError();
   if (!err.empty() || !std::isfinite(lp->p) || !lp->state.allFinite())
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " is invalid" +

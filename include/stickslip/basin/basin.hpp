@@ -28,6 +28,8 @@ struct EnumNames<Fate> {
 const char* FateName(Fate f);  // "steady-sliding", "stick-slip", "pure-slip", "undecided"
 
 struct BasinOptions {
+  // nx * ny's upper bound (the grid's starts).
+  static constexpr long kMaxStarts = 4000000;
   OrbitScanOptions scan;  // the periodic orbits; scan.orbit.flow drives every run
   // The grid: nx by ny starts on [x_lo, x_hi] x [xdot_lo, xdot_hi], ends
   // included. With auto_range the box is the periodic orbits' (and the stick
@@ -97,7 +99,10 @@ std::vector<Vec2> OrbitCurve(const Model& model, const Orbit& orbit, const FlowO
 struct Disturbance {
   double x = 0, xdot = 0, energy = 0;
 };
-// Throws InvalidArgument if the orbit is not pure-slip. Samples n points.
+// SmallestDisturbance's smallest n (samples per period).
+constexpr int kMinDisturbanceSamples = 16;
+// Throws InvalidArgument if the orbit is not pure-slip or n < kMinDisturbanceSamples.
+// Samples n points.
 Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const FlowOptions& flow,
                                 int n = 4000);
 

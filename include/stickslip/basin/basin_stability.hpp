@@ -35,6 +35,9 @@ struct BasinStability {
   double Of(Fate f) const;
 };
 
+/// ExactBasinStability's smallest `samples` per orbit period.
+constexpr int kMinBasinStabilitySamples = 16;
+
 /// Between two consecutive nested invariant curves (steady sliding innermost,
 /// the stick-slip orbit or nothing outermost) every start goes to whichever of
 /// the two attracts. Throws InvalidArgument on an empty box or orbits that

@@ -43,6 +43,8 @@ struct Attractor {
 };
 
 struct ForcedBasinOptions {
+  /// nx's and ny's upper bound.
+  static constexpr int kMaxSide = 2000;
   int nx = 41, ny = 41;
   double x_lo = -1.5, x_hi = 1.5, xdot_lo = -1.5, xdot_hi = 1.5;
   LyapunovOptions iterate;  ///< transient, keep (the classification window), flow

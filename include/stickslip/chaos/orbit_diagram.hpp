@@ -28,6 +28,8 @@ struct EnumNames<SweepDirection> {
 };
 
 struct OrbitDiagramOptions {
+  /// n's upper bound (1e6 parameter values).
+  static constexpr int kMaxValues = 1000000;
   ForcedAxis axis = ForcedAxis::kOmega;
   double from = 0.5, to = 2.5;
   int n = 200;  ///< parameter values, from..to inclusive

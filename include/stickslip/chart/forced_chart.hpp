@@ -142,6 +142,8 @@ struct ResponseGrid {
 struct ForcedChartOptions {
   /// max_step's upper bound (a curve across the rectangle in at least 2 steps).
   static constexpr double kMaxStepLimit = 0.5;
+  /// Upper bounds of seed_lines and of the response grid's n1 and n2.
+  static constexpr int kMaxSeedLines = 50, kMaxGridSide = 1000;
   ForcedPlane plane;
   ForcedOptions flow;         ///< rtol, atol 1e-12 (forced flow defaults)
   int max_m = 2;              ///< curves of orbits of period multiple 1..max_m

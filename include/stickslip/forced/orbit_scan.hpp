@@ -18,6 +18,8 @@
 namespace stickslip {
 
 struct ForcedScanOptions {
+  /// Upper bounds: max_m and max_sticks, grid, exit_samples.
+  static constexpr int kMaxMultiple = 64, kMaxGrid = 100, kMaxExitSamples = 10000;
   ForcedOrbitOptions orbit;
   int max_m = 4;          ///< period multiples 1..max_m
   int max_sticks = 4;     ///< exit-phase map: stick phases per orbit 1..max_sticks

@@ -52,6 +52,8 @@ struct EnumNames<Method> {
 };
 
 struct FlowOptions {
+  // max_steps' lower bound (a stepper needs a few steps to start).
+  static constexpr long kMinSteps = 10;
   double rtol = 1e-11;  // relative tolerance
   double atol = 1e-13;  // absolute tolerance
   Integrator integrator = Integrator::kTaylor;

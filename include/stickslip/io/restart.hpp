@@ -16,6 +16,9 @@ namespace stickslip {
 
 /// The point, with everything a new run needs to start from it.
 struct LabelledPoint {
+  // m's upper bound a forced point is read with (a sanity bound on the file).
+  static constexpr int kMaxM = 1000;
+
   std::string label;          // "HB1", "GR1", ..., or the point number as given ("17")
   int pt = 0;                 // its row in branch.tsv (1-based)
   std::string type;           // GR, HB, LP, or the row's kind: stick-slip, pure-slip, equilibrium

@@ -1,0 +1,75 @@
+// The second part of the library's thresholds (numerics/tolerances.hpp):
+// absolute constants, free of rtol and atol, that Tolerances inherits (so
+// they read Tolerances::kX). docs/theory.md lists them.
+#pragma once
+
+#include <cmath>
+
+namespace stickslip {
+
+struct FixedTolerances {
+  // --- Estimates, model bounds and the forced oscillator's rounding ---
+  // Seed estimates (estimates.cpp FirstCrossing): y' of (3.22) is sampled
+  // every kCrossingStep up to t = kCrossingHorizon, and the crossing bisected
+  // to an interval of kCrossingWidth (a few ulp of t).
+  static constexpr double kCrossingStep = 1e-3, kCrossingHorizon = 20 * M_PI;
+  static constexpr double kCrossingWidth = 1e-15;
+  // Newton2 (numerics/newton2.hpp) defaults: stop below kNewton2Tol; forward
+  // differences of step kNewton2Step (about sqrt(eps) times the scale).
+  static constexpr double kNewton2Tol = 1e-13, kNewton2Step = 1e-7;
+  // Model::NoPeriodicOrbit: the energy bound's margins (relative to psi(v),
+  // and on the damping), well above rounding: the bound only skips searches.
+  static constexpr double kNoOrbitMargin = 1e-9;
+  // Forced scan: stroboscopic points within kSameStrobe (relative) are one
+  // orbit (far above the orbits' 1e-12, far below two orbits' spacing).
+  static constexpr double kSameStrobe = 1e-6;
+  // Forced exit map: |dg/dt| below kExitMapFold is a fold (the map's slope 1).
+  static constexpr double kExitMapFold = 1e-14;
+  // Forced shooting: det(DP^m - I) below kSingularShooting (1 + max |a_ij|) is
+  // singular (a multiplier at 1).
+  static constexpr double kSingularShooting = 1e-15;
+  // Forced Taylor roots: deflated coefficients below kDeflateUlps (n + 1)
+  // kDeflateEps scale are rounding (64 ulp per degree).
+  static constexpr double kDeflateUlps = 64, kDeflateEps = 2.2e-16;
+  // Forced branches: dP/dp by central differences of step kForcedBranchDifference
+  // max(1, |p|) (about cbrt(eps): truncation and rounding balanced).
+  static constexpr double kForcedBranchDifference = 6e-6;
+  // Forced branches: the edge search behind a failed chord steps at least
+  // kForcedEdgeStep (1 + |p|), and a switched branch's kForcedEdgeStep |range|.
+  static constexpr double kForcedEdgeStep = 1e-6;
+  // Forced branches: a branch back past its start by kForcedTurnBack times the
+  // range has left it (a turn within rounding of the start is not).
+  static constexpr double kForcedTurnBack = 1e-3;
+  // Forced branches: an event bracket wider than kForcedEdgeGap locate_tol
+  // (1 + |p| + |x|) straddles a jump of the map, and two edges within it (in
+  // p) are one (the two halves of a symmetric orbit reach the band together).
+  static constexpr double kForcedEdgeGap = 1e3;
+  // Forced chart curves: a section point beyond this (|x| or |x'|) has left
+  // the branch's domain (ForcedBranchOptions::max_amplitude's default).
+  static constexpr double kForcedCurveAmplitude = 1e3;
+  // Forcing phase: Omega t within kPhaseUlps 1e-15 (1 + |Omega t|) of 2 pi is 0.
+  static constexpr double kPhaseRounding = 1e-15, kPhaseUlps = 8;
+
+  // --- Iteration caps (scripts/check_limits.py: compared integers) ---
+  // Most bound a loop that its own test (a width, a step) ends first; the cap
+  // only keeps a pathological input from spinning.
+  // Event roots (poly_roots.cpp): Newton steps on a step polynomial, then
+  // bisections of the bracket until it is two neighbouring doubles.
+  static constexpr int kPolyNewtonCap = 100, kPolyBisectionCap = 200;
+  // LP on a branch (special_points.cpp): secant steps of p(a) to kFoldSecantTol.
+  static constexpr int kFoldSecantCap = 30;
+  // SmallestDisturbance (basin.cpp): halvings of [0, 1] locating x = xbar on
+  // a step's Hermite cubic (a fixed count: 2^-60, below rounding).
+  static constexpr int kDisturbanceHalvings = 60;
+  // Seed estimates (estimates.cpp FirstCrossing): bisections to kCrossingWidth.
+  static constexpr int kCrossingBisectionCap = 200;
+  // Forced branches (forced_branch.cpp): bisections of a bracket to its tol.
+  static constexpr int kForcedBisectionCap = 60;
+  // Chart regions (chart_regions.cpp): section-map returns from the exit
+  // point before a run neither decayed nor settled is judged (kRegionLive).
+  static constexpr int kRegionMapReturns = 150;
+  // Report files (io/report.cpp): attempts at a fresh temporary name.
+  static constexpr int kTempFileAttempts = 100;
+};
+
+}  // namespace stickslip
