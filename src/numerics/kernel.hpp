@@ -6,8 +6,11 @@
 // STICKSLIP_KERNEL_CLONES=OFF builds the baseline only.
 #pragma once
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-    !defined(STICKSLIP_NO_KERNEL_CLONES)
+#include <cstddef>  // defines __GLIBC__ where glibc is the C library
+
+// glibc (ifunc) and GCC 11+ (arch=x86-64-v3) only; elsewhere the baseline.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) && \
+    defined(__GLIBC__) && !defined(STICKSLIP_NO_KERNEL_CLONES)
 #define STICKSLIP_KERNEL __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define STICKSLIP_KERNEL
