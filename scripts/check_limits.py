@@ -183,13 +183,24 @@ def class_level(code):
     return flags
 
 
+def directives_blank(code):
+    """Preprocessor directives (with their continuation lines) replaced by spaces:
+    a compiler version in #if is no numerical threshold."""
+    out, directive = [], False
+    for line in code.split('\n'):
+        directive = directive or line.lstrip().startswith('#')
+        out.append(' ' * len(line) if directive else line)
+        directive = directive and line.rstrip().endswith('\\')
+    return '\n'.join(out)
+
+
 def threshold_literals(text, public):
     """(line, literal) of each threshold literal: every literal in exponent form,
     and every decimal one (a '.', not 0 or 1) that is compared (see compared).
     In a public header (public) a literal is left alone where its statement
     defines a documented constant (constexpr, a comment on its line or above)
     or gives a data member its default (no '(' in the statement, at class level)."""
-    code = blank(text)
+    code = directives_blank(blank(text))
     toks = tokens(code)
     match, lines = matching(toks), text.split('\n')
     at_class = class_level(code) if public else None
@@ -249,7 +260,11 @@ def check(root, allow):
 
 
 SELF_TEST = {  # path: text; the lines marked /* bad */ must be reported, no other
-    'src/orbits/orbit.cpp': """void F(double x, double y, double a, double b, int n) {
+    'src/orbits/orbit.cpp': """#if defined(__GNUC__) && __GNUC__ >= 11 && \\
+    __GNUC_MINOR__ > 12
+#define K 1
+#endif
+void F(double x, double y, double a, double b, int n) {
   if (x < 0.3 * y) return; /* bad */
   if ((0.25 * a) >= b) return; /* bad */
   const bool up = x > -0.7; /* bad */
