@@ -184,11 +184,12 @@ def class_level(code):
 
 
 def directives_blank(code):
-    """Preprocessor directives (with their continuation lines) replaced by spaces:
-    a compiler version in #if is no numerical threshold."""
+    """Preprocessor conditions (#if, #elif and their continuation lines) replaced
+    by spaces: a compiler version there is no numerical threshold. A #define's
+    body is still read."""
     out, directive = [], False
     for line in code.split('\n'):
-        directive = directive or line.lstrip().startswith('#')
+        directive = directive or re.match(r'\s*#\s*(if|elif)\b', line) is not None
         out.append(' ' * len(line) if directive else line)
         directive = directive and line.rstrip().endswith('\\')
     return '\n'.join(out)
@@ -263,6 +264,7 @@ SELF_TEST = {  # path: text; the lines marked /* bad */ must be reported, no oth
     'src/orbits/orbit.cpp': """#if defined(__GNUC__) && __GNUC__ >= 11 && \\
     __GNUC_MINOR__ > 12
 #define K 1
+#define TOL 1e-9 /* bad */
 #endif
 void F(double x, double y, double a, double b, int n) {
   if (x < 0.3 * y) return; /* bad */
