@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Compare two ss_continue output directories numerically, column by column.
 
-Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12]
+Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12] [--files A.tsv,B.tsv]
+
+--files names other files to compare the same way (default branch.tsv,
+special_points.tsv), e.g. ss_basin's basins.tsv,orbits.tsv.
 
 For branch.tsv and special_points.tsv: the same header, the same number of
 rows, text cells equal, and every numeric cell within tol (absolute, scaled
@@ -85,6 +88,11 @@ def compare(base, new, tol):
 def main():
     args = sys.argv[1:]
     tol = 1e-12
+    names = ("branch.tsv", "special_points.tsv")
+    if "--files" in args:
+        k = args.index("--files")
+        names = tuple(args[k + 1].split(","))
+        del args[k:k + 2]
     if "--tol" in args:
         k = args.index("--tol")
         tol = float(args[k + 1])
@@ -93,7 +101,7 @@ def main():
         print(__doc__, file=sys.stderr)
         return 2
     ok = True
-    for name in ("branch.tsv", "special_points.tsv"):
+    for name in names:
         errors, worst, n, added = compare(f"{args[0]}/{name}", f"{args[1]}/{name}", tol)
         status = "equal" if not errors else f"{len(errors)} differences"
         if added:
