@@ -6,7 +6,7 @@ Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12] [--files A.tsv,B.tsv]
 --files names other files to compare the same way (default branch.tsv,
 special_points.tsv), e.g. ss_basin's basins.tsv,orbits.tsv.
 
-For branch.tsv and special_points.tsv: the same header, the same number of
+For each file: the same header, the same number of
 rows, text cells equal, and every numeric cell within tol (absolute, scaled
 by max(1, |base|)); nan must match nan. NEW may have more columns after
 BASE's (new columns appended: pt, lab, x_start, ...): those are not compared,
@@ -89,14 +89,17 @@ def main():
     args = sys.argv[1:]
     tol = 1e-12
     names = ("branch.tsv", "special_points.tsv")
-    if "--files" in args:
-        k = args.index("--files")
-        names = tuple(args[k + 1].split(","))
-        del args[k:k + 2]
-    if "--tol" in args:
-        k = args.index("--tol")
-        tol = float(args[k + 1])
-        del args[k:k + 2]
+    try:
+        if "--files" in args:
+            k = args.index("--files")
+            names = tuple(args[k + 1].split(","))
+            del args[k:k + 2]
+        if "--tol" in args:
+            k = args.index("--tol")
+            tol = float(args[k + 1])
+            del args[k:k + 2]
+    except (IndexError, ValueError):
+        args = []
     if len(args) != 2:
         print(__doc__, file=sys.stderr)
         return 2
