@@ -55,10 +55,9 @@ std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const 
   if (!e.empty()) return e;
   e = flow.ValidationError();
   if (!e.empty()) return e;
-  if (max_m < 1 || max_m > 8) return "max_m = " + std::to_string(max_m) + " must lie in [1, 8]";
-  if (seed_lines < 0 || seed_lines > kMaxSeedLines)
-    return "seed_lines = " + std::to_string(seed_lines) + " must lie in [0, " +
-           std::to_string(kMaxSeedLines) + "]";
+  e = IntRangeError("max_m", max_m, 1, 8);
+  if (e.empty()) e = IntRangeError("seed_lines", seed_lines, 0, kMaxSeedLines);
+  if (!e.empty()) return e;
   if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= kMaxStepLimit))
     return "max_step = " + Num(max_step) + " must lie in [1/" + std::to_string(kMaxCurvePoints) +
            ", " + Num(kMaxStepLimit) + "]";

@@ -14,16 +14,11 @@ const char* ForcedScanStatusName(ForcedScanStatus s) { return Name(s); }
 std::string ForcedScanOptions::ValidationError() const {
   const std::string e = orbit.flow.ValidationError();
   if (!e.empty()) return e;
-  const auto range = [](const char* name, int value, int lo, int hi) {
-    return std::string(name) + " = " + std::to_string(value) + " must lie in [" +
-           std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  };
-  if (max_m < 1 || max_m > kMaxMultiple) return range("max_m", max_m, 1, kMaxMultiple);
-  if (max_sticks < 0 || max_sticks > kMaxMultiple)
-    return range("max_sticks", max_sticks, 0, kMaxMultiple);
-  if (grid < 0 || grid > kMaxGrid) return range("grid", grid, 0, kMaxGrid);
-  if (exit_samples < 2 || exit_samples > kMaxExitSamples)
-    return range("exit_samples", exit_samples, 2, kMaxExitSamples);
+  for (const std::string& range : {IntRangeError("max_m", max_m, 1, kMaxMultiple),
+                                   IntRangeError("max_sticks", max_sticks, 0, kMaxMultiple),
+                                   IntRangeError("grid", grid, 0, kMaxGrid),
+                                   IntRangeError("exit_samples", exit_samples, 2, kMaxExitSamples)})
+    if (!range.empty()) return range;
   if (!(radius >= 0) || !std::isfinite(radius)) return "radius = " + Num(radius) + " must be >= 0";
   if (!(orbit.tol > 0) || orbit.max_newton < 1) return "orbit: tol must be > 0, max_newton >= 1";
   return "";

@@ -80,7 +80,7 @@ bool TaylorStepper::NewStep() {
     os << "step-size underflow (h = " << h << ")";
     return Failed(os.str());
   }
-  ++steps_;
+  ++orders_.steps;
   orders_.sum += order_;
   orders_.min = std::min(orders_.min, order_);
   orders_.max = std::max(orders_.max, order_);

@@ -49,7 +49,6 @@ class TaylorStepper final : public Stepper {
     std::copy(y0, y0 + n_, y_);
     ta_ = tb_ = t_ = t0_ = t0;
     tstop_ = INFINITY;
-    steps_ = 0;
     orders_ = TaylorOrders();
     orders_.min = kTaylorMaxOrder;
     pending_ = passed_root_ = false;
@@ -68,11 +67,10 @@ class TaylorStepper final : public Stepper {
   double LastStepStart() override { return ta_; }
   double CurrentTime() override { return tb_; }
   double SegmentStart() const override { return t0_; }
-  long steps() const override { return steps_; }
+  long steps() const override { return orders_.steps; }
   TaylorOrders orders() const override {
     TaylorOrders o = orders_;
-    o.steps = steps_;
-    if (steps_ == 0) o.min = 0;
+    if (o.steps == 0) o.min = 0;  // no steps: no kTaylorMaxOrder sentinel
     return o;
   }
   int size() const override { return n_; }
@@ -146,8 +144,7 @@ class TaylorStepper final : public Stepper {
   bool pending_ = false;      // a root at tb not yet returned
   bool passed_root_ = false;  // the last step passed a root
   int rf_[kNumRoots] = {0, 0, 0};
-  long steps_ = 0;
-  TaylorOrders orders_;  // steps_ counts the steps
+  TaylorOrders orders_;  // the steps since Reset and their orders
   std::string error_;
 };
 

@@ -11,4 +11,10 @@ std::string Num(double x, int digits) {
   return os.str();
 }
 
+std::string IntRangeError(const char* name, long value, long lo, long hi) {
+  if (value >= lo && value <= hi) return "";
+  return std::string(name) + " = " + std::to_string(value) + " must lie in [" + std::to_string(lo) +
+         ", " + std::to_string(hi) + "]";
+}
+
 }  // namespace stickslip

@@ -13,4 +13,8 @@ inline constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 /// x with `digits` significant digits (as printf's %.<digits>g).
 std::string Num(double x, int digits = 10);
 
+/// "name = value must lie in [lo, hi]" if value lies outside, else "" (an
+/// option's range check in a ValidationError).
+std::string IntRangeError(const char* name, long value, long lo, long hi);
+
 }  // namespace stickslip
