@@ -8,7 +8,7 @@ BruteCycle BruteForce(const stickslip::Params& p, const BruteOptions& o) {
   using stickslip::FlowResult;
   using stickslip::FlowStatus;
   const stickslip::Model model(p);
-  stickslip::Flow flow(model, o.flow);
+  stickslip::BeltFlow flow(model, o.flow);
   stickslip::StopRule stop;
   stop.at_section = true;  // every maximum of x: x' = 0 downwards
   stop.t_max = o.t_cap;

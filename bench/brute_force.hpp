@@ -1,5 +1,5 @@
 // Brute force, the way a user without continuation works: simulate the exact
-// Filippov model (stickslip::Flow, event-driven CVODE) from rest, x = x' = 0,
+// Filippov model (stickslip::BeltFlow, event-driven CVODE) from rest, x = x' = 0,
 // cycle by cycle until successive cycles agree, and measure the last cycle.
 // A cycle runs from one maximum of x (x' = 0 downwards, the section of
 // StopRule::at_section) to the next: one per cycle for stick-slip and for
@@ -28,7 +28,7 @@ struct BruteCycle {
   double period = 0, x_max = 0, x_min = 0, xdot_max = 0, t_stick = 0;
   double t_end = 0;  // simulated time
   int cycles = 0;
-  long steps = 0;  // Flow::total_steps()
+  long steps = 0;  // BeltFlow::total_steps()
 };
 
 BruteCycle BruteForce(const stickslip::Params& p, const BruteOptions& o);

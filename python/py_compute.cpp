@@ -38,7 +38,7 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
   FlowResult r;
   {
     py::gil_scoped_release nogil;
-    Flow flow(model, options);
+    BeltFlow flow(model, options);
     flow.set_cancel([&] { return too_many || interrupt(); });
     const Vec2 z0(x0, xdot0);
     StopRule stop;
@@ -126,8 +126,8 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   }
   interrupt.RaiseIfInterrupted();
   if (r.status == ContinuationStatus::kFailed) RaiseNumerical(r.message);
-  return Branch{r.param.name(), r.status, r.message, r.warnings, BranchPoints(r.points),
-                r.special, r.counts, r.seconds};
+  return Branch{r.param.name(),         r.status,  r.message, r.warnings,
+                BranchPoints(r.points), r.special, r.counts,  r.seconds};
 }
 
 OrbitScanOptions ScanOptions(std::optional<OrbitScanOptions> options, std::optional<int> samples,

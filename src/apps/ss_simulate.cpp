@@ -143,7 +143,7 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   cli::AppRun app(kProg, args, "plots/simulate", {"trajectory.tsv", "trajectory.gp", figure});
   cli::RunControl& run = app.run();
   const ss::Model model(s.params);
-  ss::Flow flow(model, s.options);
+  ss::BeltFlow flow(model, s.options);
   flow.set_cancel([&] {
     run.Heartbeat("");
     return run.Cancelled();

@@ -56,7 +56,7 @@ class Classifier {
   const Model& m_;
   const BasinOptions& o_;
   BasinResult& res_;
-  Flow flow_;
+  BeltFlow flow_;
   double xbar_;
   std::vector<double> fixed_;
 };
@@ -214,7 +214,7 @@ std::vector<Vec2> OrbitCurve(const Model& model, const Orbit& orbit, const FlowO
                              int n) {
   if (n < 2 || !(orbit.period > 0))
     throw InvalidArgument("OrbitCurve: need n >= 2 and an orbit with a period > 0");
-  Flow f(model, flow);
+  BeltFlow f(model, flow);
   std::vector<Vec2> pts;
   StopRule stop;
   stop.t_max = orbit.period;
@@ -243,7 +243,7 @@ Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const Fl
     throw InvalidArgument("SmallestDisturbance: n = " + std::to_string(n) + " < " +
                           std::to_string(kMinDisturbanceSamples));
   const double xbar = model.SteadySliding().x;
-  Flow f(model, flow);
+  BeltFlow f(model, flow);
   std::vector<Sample> pts;
   StopRule stop;
   stop.t_max = orbit.period;

@@ -24,7 +24,7 @@ namespace {
 // The area of the box inside one period of the orbit, sampled from the flow.
 double EnclosedArea(const Model& model, const Orbit& o, const Box& box, const FlowOptions& flow,
                     int samples) {
-  Flow f(model, flow);
+  BeltFlow f(model, flow);
   std::vector<double> t;
   std::vector<Vec2> z, dz;
   auto take = [&](double ts, const Vec2& zs, Mode m) {

@@ -145,6 +145,27 @@ void EndOffBranch(Palc& palc, const TraceOptions& o, const std::vector<PalcPoint
   leg->cut = leg->end.Text();
 }
 
+// A step that seems to leave its branch (same_branch) is tried again in two
+// halves: where the curve bends, the corrector's offset shrinks like the
+// step squared and both halves continue; a jump to another branch stays.
+CurveEnd LeftBranch(Palc& palc, const TraceOptions& o, const PalcPoint& last,
+                    const PalcPoint& next) {
+  const VectorXd& scale = palc.options().scale;
+  CurveEnd why = o.same_branch(last, next, scale);
+  if (why.kind != CurveEndKind::kBranchJump) return why;
+  const double ds = last.tangent.dot((next.u - last.u).cwiseQuotient(scale));
+  const PalcCorrection c =
+      palc.Correct(last.u + 0.5 * ds * last.tangent.cwiseProduct(scale), last.tangent);
+  if (!c.ok) return why;
+  PalcPoint mid;
+  mid.u = c.u;
+  mid.tangent = palc.Tangent(c.jac, last.tangent);
+  if (o.same_branch(last, mid, scale).kind == CurveEndKind::kNone &&
+      o.same_branch(mid, next, scale).kind == CurveEndKind::kNone)
+    return {};
+  return why;
+}
+
 Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
            const VectorXd& direction) {
   Leg leg;
@@ -154,7 +175,7 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
     const VectorXd& u = pts.back().u;
     if (o.cancelled && o.cancelled()) return !(leg.cancelled = true);
     if (pts.size() > 1 && o.same_branch) {
-      leg.left = o.same_branch(pts[pts.size() - 2], pts.back(), palc.options().scale);
+      leg.left = LeftBranch(palc, o, pts[pts.size() - 2], pts.back());
       if (leg.left.kind != CurveEndKind::kNone) return false;
     }
     if (!o.plane.Contains(u[o.i1], u[o.i1 + 1])) return !(outside = true);

@@ -138,7 +138,7 @@ OrbitStatus BranchContext::EvalG(double a, double p, double* g, double* ga, Retu
   ReturnMap& rm = map ? *map : local;
   finder_.flow().set_parameter_column(axis_);
   struct ColumnOff {  // also when Desingularised throws
-    Flow& flow;
+    BeltFlow& flow;
     ~ColumnOff() { flow.clear_parameter_column(); }
   } off{finder_.flow()};
   const OrbitStatus s = finder_.Desingularised(a, g, ga, &rm);

@@ -1,15 +1,15 @@
-// The forced flow's driver: slip phases through the one event loop
-// (RunSegment, integrate/event_driver.hpp) with the forced steppers
-// (forced_stepper.hpp), their events (arrival on x' = v, extrema of x and
-// x'), and the Filippov rule at every arrival.
+// The forced oscillator's view of the one flow (forced/flow.hpp): a
+// ForcedRequest as a FlowRequest on ForcedModel (state x, x', theta = Omega
+// t), the run as ForcedRun.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "forced_driver.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/forced/flow.hpp"
 
 namespace stickslip {
 
@@ -49,6 +49,51 @@ ForcedFlow::ForcedFlow(const ForcedModel& model, const ForcedOptions& options)
   if (!e.empty()) throw InvalidArgument(e);
 }
 
+namespace {
+ForcedStatus Status(const FlowRun& r, const ForcedOptions& o, std::string* why) {
+  switch (r.status) {
+    case FlowStatus::kTimeLimit:
+    case FlowStatus::kStickExit:
+      return ForcedStatus::kReached;
+    case FlowStatus::kTooManySwitches:
+      *why = "max_events = " + std::to_string(o.max_events) + " at t = " + Num(r.end.t, 17);
+      return ForcedStatus::kTooMuchWork;
+    case FlowStatus::kTooMuchWork:
+      *why = "max_steps = " + std::to_string(o.max_steps) + " at t = " + Num(r.end.t, 17);
+      return ForcedStatus::kTooMuchWork;
+    default:
+      *why = r.message;
+      return ForcedStatus::kFailed;
+  }
+}
+}  // namespace
+
+// One flow per thread for the options last used (a ForcedFlow is made per
+// shooting call, per period of an orbit diagram: the flow, its steppers and
+// its buffers are kept, the model assigned).
+ForcedFlow::Scratch& ForcedFlow::Cache(const ForcedModel& model, const ForcedOptions& o) {
+  thread_local Scratch sc;
+  const FlowOptions* f = sc.flow ? &sc.flow->options() : nullptr;
+  if (f && f->rtol == o.rtol && f->atol == o.atol && f->integrator == o.integrator &&
+      f->method == o.method && f->max_steps == o.max_steps && f->max_switches == o.max_events) {
+    sc.flow->set_system(model);
+    return sc;
+  }
+  FlowOptions fo;
+  fo.rtol = o.rtol;
+  fo.atol = o.atol;
+  fo.integrator = o.integrator;
+  fo.method = o.method;
+  fo.max_steps = o.max_steps;
+  fo.max_switches = o.max_events;
+  sc.flow = std::make_unique<Flow>(model, fo);
+  sc.request = FlowRequest();
+  sc.request.extrema = {0, 1};
+  return sc;
+}
+
+// The forced oscillator as a system with the phase theta = Omega t
+// (ForcedModel): one Run of the one flow, its results on (x, x').
 ForcedRun ForcedFlow::Run(const ForcedPoint& start, const ForcedRequest& request) const {
   if (!(request.t_end >= start.t) || !std::isfinite(request.t_end))
     throw InvalidArgument("t_end = " + Num(request.t_end) +
@@ -57,123 +102,48 @@ ForcedRun ForcedFlow::Run(const ForcedPoint& start, const ForcedRequest& request
     throw InvalidArgument("extremes inside steps need the Taylor integrator");
   if (!request.switching && start.mode == Mode::kStick)
     throw InvalidArgument("a run without switching needs a slip start");
+  Scratch& sc = Cache(model_, options_);
   ForcedRun run;
-  forced_detail::Driver(model_, options_, request, run).Run(start);
+  FlowPoint p;
+  p.t = start.t;
+  p.z = Eigen::Vector3d(start.x, start.mode == Mode::kStick ? model_.v() : start.xdot,
+                        model_.omega() * start.t);
+  p.mode = ModeSet(start.mode);
+  run.extrema.Add(p.z[0], p.z[1]);
+  if (request.samples) request.samples->push_back({p.t, p.z[0], p.z[1], start.mode});
+  if (request.t_end == start.t) {
+    run.end = {p.t, p.z[0], p.z[1], start.mode};
+    if (start.mode == Mode::kStick) run.jacobian << 1, 0, 0, 0;
+    return run;
+  }
+  FlowRequest& rq = sc.request;
+  rq.t_max = request.t_end;
+  rq.switching = request.switching;
+  rq.variational = request.variational;
+  rq.stop_at_exit = request.stop_at_exit;
+  rq.extrema_in_steps = request.extremes;
+  rq.max_steps = options_.max_steps;
+  std::vector<FlowSwitch> switches;
+  rq.switches = request.events ? &switches : nullptr;
+  rq.step_observer = nullptr;
+  if (request.samples)
+    rq.step_observer = [&](double t, const double* z, const ModeSet& m) {
+      request.samples->push_back({t, z[0], z[1], m[0]});
+    };
+  sc.flow->Run(p, rq, &sc.run);
+  const FlowRun& r_ = sc.run;
+  run.status = Status(r_, options_, &run.message);
+  run.end = {r_.end.t, r_.end.z[0], r_.end.z[1], r_.end.mode[0]};
+  if (request.variational) run.jacobian = r_.jacobian;
+  run.extrema = Extrema{r_.lo[0], r_.hi[0], r_.lo[1], r_.hi[1]};
+  run.sticks = r_.sticks;
+  run.exits = r_.exits;
+  run.crossings = r_.crossings;
+  run.steps = r_.steps;
+  for (const FlowSwitch& s : switches)
+    request.events->push_back(
+        {static_cast<ForcedEventKind>(s.kind), s.t, s.z[0], s.before[0], s.after[0]});
   return run;
 }
 
-namespace forced_detail {
-
-void Driver::Run(const ForcedPoint& start) {
-  t_ = start.t, x_ = start.x, xd_ = start.xdot, mode_ = start.mode;
-  if (mode_ == Mode::kStick) {
-    xd_ = m_.v();
-    phi_ << 1, 0, 0, 0;  // stick has no x' direction
-  }
-  run_.extrema.Add(x_, xd_);
-  Sample();
-  while (t_ < rq_.t_end && (mode_ == Mode::kStick ? Stick() : Slip())) {
-  }
-  run_.end = {t_, x_, xd_, mode_};
-  run_.jacobian = phi_;
-}
-
-bool Driver::Fail(ForcedStatus s, const std::string& what) {
-  std::ostringstream os;
-  os << what << " at t = " << Num(t_, 17);
-  run_.status = s;
-  run_.message = os.str();
-  return false;
-}
-
-bool Driver::Record(ForcedEventKind kind, Mode before, Mode after) {
-  run_.extrema.Add(x_, xd_);
-  if (rq_.events) rq_.events->push_back({kind, t_, x_, before, after});
-  Sample();
-  stalled_events_ = t_ == last_event_t_ ? stalled_events_ + 1 : 0;
-  last_event_t_ = t_;
-  if (stalled_events_ > 8) return Fail(ForcedStatus::kFailed, "switching does not advance t");
-  if (++events_ > o_.max_events)
-    return Fail(ForcedStatus::kTooMuchWork, "max_events = " + std::to_string(o_.max_events));
-  return true;
-}
-
-bool Driver::Arrive(double t, double x) {
-  t_ = t, x_ = x, xd_ = m_.v();
-  const Mode before = mode_, after = m_.ModeAfterArrival(mode_, t, x);
-  if (after == Mode::kStick) {
-    phi_.row(1).setZero();  // S_in = diag(1, 0)
-    mode_ = after;
-    ++run_.sticks;
-    return Record(ForcedEventKind::kStickIn, before, after);
-  }
-  if (after == before) return Record(ForcedEventKind::kTouch, before, after);
-  if (rq_.variational) phi_ = m_.SaltationCrossing(before, after, t, x) * phi_;
-  mode_ = after;
-  ++run_.crossings;
-  return Record(ForcedEventKind::kCrossing, before, after);
-}
-
-// A slip phase's events: the arrival on x' = v, terminal, in the direction
-// towards it (also at once from a start on it: the flow turns back); the
-// extrema of x' and x (at v = 0 those of x are the arrivals), not terminal.
-EventList Driver::SlipEvents() const {
-  EventList events;
-  const int toward = mode_ == Mode::kSlipBelow ? 1 : -1;
-  if (rq_.switching) events.Add(Event{0, toward, true, true});
-  if (rq_.extremes) {
-    events.Add(Event{1, kAnyRoot, false});
-    if (m_.v() != 0) events.Add(Event{2, kAnyRoot, false});
-  }
-  return events;
-}
-
-void Driver::OnExtremum(void* self, int /*g*/, const double* y) {
-  static_cast<Driver*>(self)->run_.extrema.Add(y[0], y[1]);
-}
-
-void Driver::OnStep(void* self, double t, const double* y) {
-  auto& d = *static_cast<Driver*>(self);
-  d.run_.extrema.Add(y[0], y[1]);
-  if (d.rq_.samples) d.rq_.samples->push_back({t, y[0], y[1], d.mode_});
-}
-
-bool Driver::Slip() {
-  ForcedSlipProblem& p = problem_;
-  if (!events_set_ || p.mode != mode_) {
-    p.mode = mode_;
-    p.SetEvents(SlipEvents(), EventHook{&Driver::OnExtremum, this});
-    events_set_ = true;
-  }
-  p.max_steps = o_.max_steps - run_.steps;
-  const double y0[6] = {x_, xd_, phi_(0, 0), phi_(1, 0), phi_(0, 1), phi_(1, 1)};
-  SegmentEnd e;
-  long steps = 0;
-  if (o_.integrator == Integrator::kCvode) {
-    if (!cvode_) cvode_ = MakeForcedCvode(m_, o_, rq_.variational);
-    e = RunSegment(*cvode_, p, t_, y0, rq_.t_end, &steps);
-  } else {
-    e = RunSegment(taylor_, p, t_, y0, rq_.t_end, SegmentOutput{});
-    steps = taylor_.steps();
-  }
-  run_.steps += steps;
-  // Where the segment ended, also when cut short: the run's end, and (as for
-  // every Taylor step's end) in its extrema.
-  t_ = e.t, x_ = e.y[0], xd_ = e.y[1];
-  if (rq_.variational) phi_ << e.y[2], e.y[4], e.y[3], e.y[5];
-  if (e.kind == SegmentEnd::kTooMuchWork || e.kind == SegmentEnd::kFailed)
-    run_.extrema.Add(x_, xd_);
-  switch (e.kind) {
-    case SegmentEnd::kEvent:  // the arrival, the only terminal event
-      return Arrive(e.t, e.y[0]);
-    case SegmentEnd::kTime:
-      return true;
-    case SegmentEnd::kTooMuchWork:
-      return Fail(ForcedStatus::kTooMuchWork, "max_steps = " + std::to_string(o_.max_steps));
-    default:  // kFailed (no cancel hook)
-      return Fail(ForcedStatus::kFailed, e.reason);
-  }
-}
-
-}  // namespace forced_detail
 }  // namespace stickslip

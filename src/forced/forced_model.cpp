@@ -1,8 +1,8 @@
 #include <cmath>
 
+#include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/forced.hpp"
-#include "numerics/numbers.hpp"
 
 namespace stickslip {
 
@@ -64,6 +64,84 @@ Mat2 ForcedModel::SaltationStickOut(Mode after, double t, double x) const {
   Mat2 S = Mat2::Identity();
   S.col(0) += df / StickForceRate(t);
   return S;
+}
+
+}  // namespace stickslip
+
+// --- The system interface: state (x, x', theta), theta' = Omega ---
+namespace stickslip {
+
+bool ForcedModel::Assign(const System& s) {
+  const auto* m = dynamic_cast<const ForcedModel*>(&s);
+  if (m) *this = *m;
+  return m != nullptr;
+}
+
+std::string ForcedModel::StateName(int i) const { return i == 0 ? "x" : i == 1 ? "x'" : "theta"; }
+
+ContactVelocity ForcedModel::Contact(int) const {
+  ContactVelocity c;
+  c.terms[0] = {1, 1.0};
+  c.size = 1;
+  c.speed = v();
+  return c;
+}
+
+double ForcedModel::StickForce(const ModeSet&, int, ConstState z) const {
+  return z[0] + two_beta_ * v() - p_.force * std::cos(z[2]);
+}
+
+void ForcedModel::StickForceGradient(const ModeSet&, int, ConstState z, StateOut g) const {
+  g << 1.0, 0.0, p_.force * std::sin(z[2]);
+}
+
+void ForcedModel::ProjectOnExit(const ModeSet&, int, double bound, StateOut z) const {
+  z[0] = bound - two_beta_ * v() + p_.force * std::cos(z[2]);
+}
+
+void ForcedModel::Field(const ModeSet& m, ConstState z, StateOut f) const {
+  if (m[0] == Mode::kStick) {
+    f << v(), 0.0, p_.omega;
+    return;
+  }
+  f << z[1], -z[0] - two_beta_ * z[1] + SlipForce(m[0], z[1]) + p_.force * std::cos(z[2]), p_.omega;
+}
+
+void ForcedModel::Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const {
+  J = Jacobian(m[0], 0.0, Vec2(z[0], z[1]));
+}
+
+bool ForcedModel::Rest(const ModeSet& m, StateOut z, bool* stable) const {
+  if (p_.force != 0 || m[0] != Mode::kSlipBelow || !(v() > 0)) return false;
+  z << friction_.Mu(v()), 0.0, 0.0;  // steady sliding, as Model::SteadySliding
+  *stable = two_beta_ + friction_.DMu(v()) > 0;
+  return true;
+}
+
+int ForcedModel::parameters() const { return kOmegaIndex + 1; }
+
+std::string ForcedModel::ParameterName(int j) const {
+  if (j == kForceIndex) return "force";
+  if (j == kOmegaIndex) return "omega";
+  return Name(static_cast<Parameter>(j));
+}
+
+double ForcedModel::ParameterValue(int j) const {
+  if (j == kForceIndex) return p_.force;
+  if (j == kOmegaIndex) return p_.omega;
+  return ParameterAxis(static_cast<Parameter>(j)).Get(p_.base);
+}
+
+void ForcedModel::SetParameterValue(int j, double value) {
+  if (j == kForceIndex) {
+    p_.force = value;
+  } else if (j == kOmegaIndex) {
+    p_.omega = value;
+  } else {
+    ParameterAxis(static_cast<Parameter>(j)).Set(p_.base, value);
+    friction_ = Friction(p_.base);
+    two_beta_ = 2 * p_.base.beta;
+  }
 }
 
 }  // namespace stickslip

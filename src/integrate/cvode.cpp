@@ -101,6 +101,12 @@ void Cvode::Reinit(double t0, const double* y0) {
   Check(CVodeReInit(mem_, t0, y_), "CVodeReInit");
 }
 
+void Cvode::RootInit(int nroots, RootFn g) {
+  Check(CVodeRootInit(mem_, nroots, g), "CVodeRootInit");
+}
+
+void Cvode::SetMaxStep(double h) { Check(CVodeSetMaxStep(mem_, h), "CVodeSetMaxStep"); }
+
 void Cvode::SetStopTime(double t) { Check(CVodeSetStopTime(mem_, t), "CVodeSetStopTime"); }
 
 int Cvode::Advance(double tout, double* t) {

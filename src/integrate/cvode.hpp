@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "stickslip/integrate/flow.hpp"  // Method
+#include "stickslip/flow/flow_options.hpp"  // Method
 
 namespace stickslip {
 
@@ -28,7 +28,11 @@ class Cvode {
 
   // Restart at (t0, y0); y0 has n entries. Root finding stays on.
   void Reinit(double t0, const double* y0);
+  // A new number of root functions (CVodeRootInit again: it reallocates).
+  void RootInit(int nroots, RootFn g);
   void SetStopTime(double t);
+  // The largest step (0: none).
+  void SetMaxStep(double h);
   // One call of CVode in CV_NORMAL mode; returns its flag, state in y().
   int Advance(double tout, double* t);
   // Interpolated state at t inside the last step (CVodeGetDky, k = 0).

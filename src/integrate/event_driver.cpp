@@ -1,9 +1,109 @@
-// The event loop's instance for the belt's steppers (event_driver.hpp).
+// The one event loop (event_driver.hpp).
 #include "integrate/event_driver.hpp"
 
-namespace stickslip {
+#include <algorithm>
+#include <cmath>
 
-template SegmentEnd RunSegment<Stepper, SlipProblem>(Stepper&, const SlipProblem&, double,
-                                                     const double*, double, const SegmentOutput&);
+#include "numerics/stall.hpp"
+
+namespace stickslip {
+namespace {
+
+void Emit(const SegmentOutput& out, double t, const double* y) {
+  out.emit(out.context, t, y);
+  *out.next += out.dt;
+}
+
+// The events at a root: non-terminal hooks in the order of the functions;
+// the terminal ones are kept in *terminal. Returns the first terminal one.
+int Dispatch(const SegmentProblem& p, const int* rf, const double* y, std::vector<int>* terminal,
+             int* direction) {
+  int first = -1;
+  const EventList& ev = p.events;
+  for (int i = 0; i < ev.functions(); ++i) {
+    (*terminal)[i] = 0;
+    if (rf[i] == 0) continue;
+    if (p.on_event.fn && ev.Passes(i, rf[i])) p.on_event(i, y);
+    if (ev.Stops(i, rf[i])) {
+      (*terminal)[i] = rf[i];
+      if (first < 0) first = i, *direction = rf[i];
+    }
+  }
+  return first;
+}
+
+// Whether a root at the stepper's (re)start is an event: only a terminal
+// event that counts at the start (Event::at_start).
+bool CountsAtStart(const SegmentProblem& p, const int* rf) {
+  for (int i = 0; i < p.events.functions(); ++i)
+    if (rf[i] != 0 && p.events.AtStart(i, rf[i])) return true;
+  return false;
+}
+
+}  // namespace
+
+SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, const double* y0,
+                      double t_max, const SegmentOutput& out, std::vector<int>* roots) {
+  cv.Reset(problem, t0, y0);
+  const int nf = problem.events.functions();
+  roots->assign(nf, 0);
+  constexpr int kSmall = 16;
+  int rf_small[kSmall];
+  std::vector<int> rf_big;
+  int* rfp = rf_small;
+  if (nf > kSmall) rf_big.resize(nf), rfp = rf_big.data();
+  SegmentEnd end;
+  // A finite stop time (CVODE's), extended in chunks until t_max.
+  end.t_end = std::min(t_max, t0 + Tolerances::kStopTimeChunk);
+  cv.SetStopTime(end.t_end);
+  // A segment that starts at an output time (a switch there, to rounding) has
+  // that sample already: the switch's.
+  const bool sampling = out.on();
+  while (sampling && *out.next <= t0 + Tolerances::OutputAtStart(t0)) *out.next += out.dt;
+  // Each root function fires once per instant (two repeats per function).
+  RootRepeats repeats(2 * std::max(nf, 3));
+  auto done = [&](SegmentEnd::Kind kind, double t) {
+    end.kind = kind;
+    end.t = t;
+    end.y = cv.y();
+    return end;
+  };
+  for (;;) {
+    const double tout = sampling ? std::min(*out.next, end.t_end) : end.t_end;
+    double t = t0;
+    const StepOutcome flag = cv.Advance(tout, &t);
+    if (flag == StepOutcome::kCancelled || (problem.cancel && (*problem.cancel)()))
+      return done(SegmentEnd::kCancelled, t);
+    if (flag == StepOutcome::kTooMuchWork) return done(SegmentEnd::kTooMuchWork, t);
+    if (flag == StepOutcome::kFailed) {
+      end.reason = cv.last_error().c_str();
+      return done(SegmentEnd::kFailed, cv.CurrentTime());
+    }
+    if (flag == StepOutcome::kRoot) {
+      cv.RootInfo(rfp);
+      if (repeats.Stuck(t)) {
+        end.reason = "events repeat at this time without progress";
+        return done(SegmentEnd::kFailed, t);
+      }
+      // A root exactly at an output time: report the sample, or the next
+      // call would ask for tout = t.
+      if (sampling && t >= *out.next) Emit(out, t, cv.y());
+      // A start on a root surface holds only to rounding: a root there is not
+      // an event, unless an event says it counts at the start.
+      const double start = cv.SegmentStart();
+      if (t - start <= Tolerances::EventAtStart(start) && !CountsAtStart(problem, rfp)) continue;
+      end.g = Dispatch(problem, rfp, cv.y(), roots, &end.direction);
+      if (end.g >= 0) return done(SegmentEnd::kEvent, t);
+      continue;
+    }
+    if (t >= end.t_end && end.t_end < t_max) {  // the next chunk
+      end.t_end = std::min(t_max, end.t_end + Tolerances::kStopTimeChunk);
+      cv.SetStopTime(end.t_end);
+      continue;
+    }
+    if (t >= end.t_end) return done(SegmentEnd::kTime, t);
+    if (sampling) Emit(out, t, cv.y());  // an output time
+  }
+}
 
 }  // namespace stickslip

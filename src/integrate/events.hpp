@@ -1,24 +1,60 @@
 // Private to src/: the events of one integration segment, after heyoka's
-// model (Biscani & Izzo 2021, MNRAS 504, section 4): each event watches one
-// root function g_i of the stepper (stepper.hpp), in a direction, and is
-// terminal (it ends the segment) or not (a hook records it and the segment
-// goes on). One function may carry both: the extrema of x' (non-terminal,
-// any direction) and the maximum of x' (terminal, falling).
+// model (Biscani & Izzo 2021, MNRAS 504, section 4). An event function g is
+// a linear functional of the step's rows (the state, or a field's auxiliary
+// rows: a stick force and its limit), or the time derivative of one; an
+// event watches one function in a direction and is terminal (it ends the
+// segment) or not (a hook records it and the segment goes on). One function
+// may carry both: the extrema of x' (non-terminal) and a maximum of x'
+// (terminal, falling).
 #pragma once
 
 #include <functional>
+#include <vector>
 
-#include "stickslip/model/system.hpp"  // Mode
+#include "stickslip/system/mode.hpp"
 
 namespace stickslip {
 
-constexpr int kNumRoots = 3;  // the stepper's root functions g_0, g_1, g_2
 // A root's direction is CVODE's (CVodeGetRootInfo): +1 where g rises
 // through 0, -1 where it falls; kAnyRoot stands for both.
 constexpr int kAnyRoot = 2;
 
+struct EventFunction {
+  static constexpr int kMaxTerms = 4;
+  struct Term {
+    int row = 0;
+    double weight = 1;
+  };
+  Term terms[kMaxTerms];
+  int size = 0;
+  double offset = 0;        // g = sum weight row - offset
+  bool derivative = false;  // g = d/dt sum weight row
+  // An exact 0 counts as this sign (an arrival: the mode's side).
+  int zero_sign = 1;
+  // A contact's arrival (h_i = 0) from slip: a start on the surface with a
+  // deflated constant within rounding counts as 0 (the next order decides).
+  bool surface = false;
+  // A root exactly at the segment start is the start surface (g / u from
+  // there); false for a stick exit: a stick that starts on the edge of its
+  // band and leaves it exits at once.
+  bool deflate_at_start = true;
+  // For steppers that evaluate g from the state (CVODE): a stick exit of
+  // this contact is lambda - exit_sign StaticLimit (rows are then aux rows).
+  int exit_contact = -1;
+  int exit_sign = 0;
+  // The polynomial this function shares with the functions before it (same
+  // terms and derivative; EventList::Add sets it): computed once per step.
+  int base = 0;
+  bool SameShape(const EventFunction& o) const {
+    if (size != o.size || derivative != o.derivative) return false;
+    for (int t = 0; t < size; ++t)
+      if (terms[t].row != o.terms[t].row || terms[t].weight != o.terms[t].weight) return false;
+    return true;
+  }
+};
+
 struct Event {
-  int g = 0;                 // the root function
+  int g = 0;                 // the function
   int direction = kAnyRoot;  // +1, -1 or kAnyRoot
   bool terminal = false;
   // A root at the segment start (to rounding, Tolerances::EventAtStart) is
@@ -30,83 +66,69 @@ struct Event {
   }
 };
 
-// A non-terminal event's hook: root function g_i, direction, and the full
-// stepper state y at the root.
+// A non-terminal event's hook: function g, direction, and the stepper's
+// state y at the root.
 struct EventHook {
   void (*fn)(void* context, int g, const double* y) = nullptr;
   void* context = nullptr;
   void operator()(int g, const double* y) const { fn(context, g, y); }
 };
 
+// A segment's functions and events, with each function's terminal and
+// non-terminal directions as masks (kAnyRoot, +1, -1 or 0) for the steppers.
 class EventList {
  public:
-  static constexpr int kMax = 2 * kNumRoots;
-  void Add(const Event& e) { e_[n_++] = e; }
-  int size() const { return n_; }
-  const Event& operator[](int k) const { return e_[k]; }
-
-  bool Terminal(int i, int dir) const { return Find(i, dir, true) != nullptr; }
-  bool NonTerminal(int i, int dir) const { return Find(i, dir, false) != nullptr; }
-  bool AtStart(int i, int dir) const {
-    const Event* e = Find(i, dir, true);
-    return e && e->at_start;
+  void Clear() {
+    functions_.clear();
+    events_.clear();
+    stop_.clear();
+    pass_.clear();
   }
-  // The directions of g_i's terminal (or non-terminal) events, as a mask:
-  // kAnyRoot, +1, -1, or 0 (none).
-  int StopMask(int i, bool terminal = true) const {
-    int mask = 0;
-    for (int k = 0; k < n_; ++k) {
-      const Event& e = e_[k];
-      if (e.g != i || e.terminal != terminal) continue;
-      mask = mask == 0 ? e.direction : (mask == e.direction ? mask : kAnyRoot);
+  // Returns the function's index: an identical function's if there is one
+  // (one function may carry a terminal and a non-terminal event).
+  int Add(EventFunction f) {
+    for (int i = 0; i < static_cast<int>(functions_.size()); ++i) {
+      const EventFunction& o = functions_[i];
+      if (o.SameShape(f) && o.offset == f.offset && o.zero_sign == f.zero_sign &&
+          o.surface == f.surface && o.deflate_at_start == f.deflate_at_start &&
+          o.exit_contact == f.exit_contact && o.exit_sign == f.exit_sign)
+        return i;
     }
-    return mask;
+    f.base = static_cast<int>(functions_.size());
+    for (int i = 0; i < static_cast<int>(functions_.size()); ++i)
+      if (functions_[i].SameShape(f)) {
+        f.base = functions_[i].base;
+        break;
+      }
+    functions_.push_back(f);
+    stop_.push_back(0);
+    pass_.push_back(0);
+    return static_cast<int>(functions_.size()) - 1;
   }
-  bool Watched(int i) const {
-    for (int k = 0; k < n_; ++k)
-      if (e_[k].g == i) return true;
+  void Add(const Event& e) {
+    events_.push_back(e);
+    int& mask = e.terminal ? stop_[e.g] : pass_[e.g];
+    mask = mask == 0 ? e.direction : (mask == e.direction ? mask : kAnyRoot);
+  }
+  int functions() const { return static_cast<int>(functions_.size()); }
+  const EventFunction& function(int i) const { return functions_[i]; }
+  int events() const { return static_cast<int>(events_.size()); }
+  void SetAtStart(int k, bool at_start) { events_[k].at_start = at_start; }
+  const Event& event(int k) const { return events_[k]; }
+
+  bool Stops(int i, int direction) const { return Has(stop_[i], direction); }
+  bool Passes(int i, int direction) const { return Has(pass_[i], direction); }
+  bool AtStart(int i, int dir) const {
+    for (const Event& e : events_)
+      if (e.terminal && e.at_start && e.Matches(i, dir)) return true;
     return false;
   }
 
  private:
-  const Event* Find(int i, int dir, bool terminal) const {
-    for (int k = 0; k < n_; ++k)
-      if (e_[k].terminal == terminal && e_[k].Matches(i, dir)) return &e_[k];
-    return nullptr;
-  }
-  Event e_[kMax];
-  int n_ = 0;
-};
-
-// What the event loop (event_driver.hpp) reads of a segment's problem: its
-// mode, cancel hook, events and hook. Each model's problem (SlipProblem in
-// stepper.hpp, the forced oscillator's in forced_stepper.hpp) extends it with
-// what its steppers need.
-struct SegmentProblem {
-  Mode mode = Mode::kSlipBelow;
-  const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
-  // The segment's events; SetEvents keeps them with the stop mask of each
-  // root function, which the steppers read on every step.
-  EventList events{};
-  EventHook on_event{};                 // called for every non-terminal event a stepper passes
-  int stop_dir[kNumRoots] = {0, 0, 0};  // terminal events' directions per g_i (StopMask)
-  int pass_dir[kNumRoots] = {0, 0, 0};  // non-terminal events' directions
-  void SetEvents(const EventList& list, EventHook hook) {
-    events = list;
-    on_event = hook;
-    for (int i = 0; i < kNumRoots; ++i) {
-      stop_dir[i] = list.StopMask(i);
-      pass_dir[i] = list.StopMask(i, false);
-    }
-  }
-  // Whether a root of g_i in this direction (+1 or -1) is a terminal event
-  // (Stops) or a non-terminal one (Passes).
-  bool Stops(int i, int direction) const {
-    return stop_dir[i] == kAnyRoot || stop_dir[i] == direction;
-  }
-  bool Passes(int i, int direction) const {
-    return pass_dir[i] == kAnyRoot || pass_dir[i] == direction;
-  }
+  static bool Has(int mask, int direction) { return mask == kAnyRoot || mask == direction; }
+  std::vector<EventFunction> functions_;
+  std::vector<Event> events_;
+  std::vector<int> stop_, pass_;
 };
 
 }  // namespace stickslip

@@ -1,6 +1,6 @@
-// The events of the Taylor stepper: the roots of g0 = x' - v, g1 = x'' and
-// g2 = x' on each step polynomial, none missed (poly_roots.hpp, after heyoka's
-// event detection, Biscani & Izzo 2021, MNRAS 504, section 4).
+// The events of the Taylor stepper: the roots of the segment's event
+// functions (events.hpp) on each step polynomial, none missed (poly_roots.hpp,
+// after heyoka's event detection, Biscani & Izzo 2021, MNRAS 504, section 4).
 #include <algorithm>
 
 #include "integrate/poly_roots.hpp"
@@ -8,52 +8,104 @@
 
 namespace stickslip {
 
-// The roots of g0 = x' - v, g1 = x'', g2 = x' on this step, in u = tau / h.
-// The first root that stops (SlipProblem::stop_dir) ends the step there; the
-// extrema before it that do not stop are recorded and passed.
+// The step polynomial in u = tau / h of each function of its own shape
+// (EventFunction::base); the others share it, with their own g_0 (g0_).
+void TaylorStepper::EventPolynomials(int n) {
+  const EventList& ev = p_->events;
+  const TaylorRow* r = c();
+  const double* __restrict hp = hp_;
+  const int nf = ev.functions();
+  for (int i = 0; i < nf; ++i) {
+    const EventFunction& f = ev.function(i);
+    if (f.base != i) {
+      g0_[i] = raw0_[f.base] - f.offset;
+      tail_[i] = tail_[f.base];
+      continue;
+    }
+    double* __restrict g = &poly_[static_cast<size_t>(i) * kTaylorRowSize];
+    const double* __restrict r0 = r[f.terms[0].row];
+    const bool single = f.size == 1 && f.terms[0].weight == 1;
+    if (!f.derivative) {
+      // hp_ (the powers of h) is 0 past the order, the rows finite.
+      if (single) {
+        for (int k = 0; k <= n; ++k) g[k] = r0[k] * hp[k];
+      } else {
+        for (int k = 0; k <= n; ++k) {
+          double s = 0;
+          for (int t = 0; t < f.size; ++t) s += f.terms[t].weight * r[f.terms[t].row][k];
+          g[k] = s * hp[k];
+        }
+      }
+      g[n + 1] = 0;
+      tail_[i] = AbsSum(g + 3, n - 2);  // sum_{k>=3} |g_k| for the quadratic bound
+    } else {
+      if (single) {
+        for (int k = 0; k < n; ++k) g[k] = kOrdinals.k[k + 1] * r0[k + 1] * hp[k];
+      } else {
+        for (int k = 0; k < n; ++k) {
+          double s = 0;
+          for (int t = 0; t < f.size; ++t) s += f.terms[t].weight * r[f.terms[t].row][k + 1];
+          g[k] = kOrdinals.k[k + 1] * s * hp[k];
+        }
+      }
+      g[n] = g[n + 1] = 0;  // the derivative has degree n - 1
+      tail_[i] = AbsSum(g + 3, n - 3);
+    }
+    raw0_[i] = g[0];
+    g0_[i] = g[0] - f.offset;
+  }
+}
+
+// The roots of every event function on this step, in u = tau / h. The first
+// root that stops ends the step there; the roots before it that do not stop
+// are passed to the problem's hook.
 void TaylorStepper::Events(double h) {
   const int n = order_;
-  const double* xd = c_[1];
-  // hp_ (the powers of h) is 0 past the order, c_ finite: whole blocks.
-  double g[kNumRoots][kTaylorRowSize];
-  for (int k = 0; k <= n + 1; ++k) g[2][k] = xd[k] * hp_[k];
-  for (int k = 0; k <= n + 1; ++k) g[1][k] = kOrdinals.k[k + 1] * xd[k + 1] * hp_[k];
-  g[1][n] = 0;  // x'' has degree n - 1
-  std::copy(g[2], g[2] + n + 1, g[0]);
-  g[0][0] = xd[0] - p_.model->v();
-  // sum_{k>=3} |g_k| for the quadratic bound, once for g0 and g2 (they differ in g_0).
-  const double tail02 = AbsSum(g[2] + 3, n - 2), tail1 = AbsSum(g[1] + 3, n - 3);
-  const double tail[kNumRoots] = {tail02, tail1, tail02};
-  const bool at_rest = p_.AtRest(c_[0][0], c_[1][0], c_[1][1]);
+  const EventList& ev = p_->events;
+  const int nf = ev.functions();
+  if (nf == 0) {
+    std::fill(rf_.begin(), rf_.end(), 0);
+    passed_root_ = false;
+    return;
+  }
+  EventPolynomials(n);
+  const TaylorRow* r = c();
+  // Noise on steady sliding: no events but the arrivals.
+  bool at_rest = false;
+  if (p_->has_rest)
+    at_rest = p_->AtRestBy([r](int i) { return r[i][0]; }, [r](int i) { return r[i][1]; });
+  passed_.clear();
   Roots roots;
-  for (int i = 0; i < kNumRoots; ++i) {
-    if (i > 0 && at_rest) {  // noise on steady sliding: no events
+  roots.rf = rf_.data();
+  roots.nf = nf;
+  roots.passed = &passed_;
+  std::fill(rf_.begin(), rf_.end(), 0);
+  for (int i = 0; i < nf; ++i) {
+    const EventFunction& f = ev.function(i);
+    if (!f.surface && at_rest) {
       state_[i] = kInactive;
       continue;
     }
-    if (!p_.events.Watched(i)) continue;  // no event on g_i
-    EventRoots(i, g[i], i == 1 ? n - 1 : n, tail[i], roots);
+    const double* g = &poly_[static_cast<size_t>(f.base) * kTaylorRowSize];
+    EventRoots(i, g, f.derivative ? n - 1 : n, tail_[i], h, roots);
   }
   // The roots passed before the end of the step; each flips its sign, and
   // those of non-terminal events go to their hook.
   passed_root_ = false;
-  for (int j = 0; j < roots.n_passed; ++j) {
-    const auto& r = roots.passed[j];
-    if (r.u >= roots.first) continue;
+  for (const auto& pr : passed_) {
+    if (pr.u >= roots.first) continue;
     passed_root_ = true;
-    sign_[r.i] = -sign_[r.i];
+    sign_[pr.i] = -sign_[pr.i];
     // A root passed at the step end, to rounding: the next step starts on it.
-    if (roots.first > 1 && (1 - r.u) * h <= Tolerances::StepEndRounding(tb_))
-      state_[r.i] = kDeflate;
-    if (!p_.on_event.fn || !p_.Passes(r.i, r.direction)) continue;
-    double y[8];
-    Evaluate(r.u * h, y);
-    p_.on_event(r.i, y);
+    if (roots.first > 1 && (1 - pr.u) * h <= Tolerances::StepEndRounding(tb_))
+      state_[pr.i] = kDeflate;
+    if (!p_->on_event.fn || !ev.Passes(pr.i, pr.direction)) continue;
+    Evaluate(ta_ + pr.u * h, hook_y_.data());
+    p_->on_event(pr.i, hook_y_.data());
   }
-  std::copy(roots.rf, roots.rf + kNumRoots, rf_);
   if (roots.first > 1) return;
   pending_ = true;
-  for (int i = 0; i < kNumRoots; ++i)
+  for (int i = 0; i < nf; ++i)
     if (rf_[i] != 0) {
       state_[i] = kDeflate;
       sign_[i] = rf_[i];
@@ -63,41 +115,70 @@ void TaylorStepper::Events(double h) {
 
 // The roots of g_i (degree deg) on (0, 1] in order, up to the first that
 // stops or beyond roots.first: passed ones go to roots.passed.
-void TaylorStepper::EventRoots(int i, const double* gi, int deg, double tail, Roots& roots) {
-  // g0: an exact 0 counts as the mode's side; g1, g2: as positive (as the CVODE stepper).
-  const int zero_sign = i == 0 && p_.mode == Mode::kSlipBelow ? -1 : 1;
+void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, double h,
+                               Roots& roots) {
+  const EventFunction& f = p_->events.function(i);
+  const EventList& ev = p_->events;
+  const int zero_sign = f.zero_sign;
+  // g = base with g_0 = g0_[i]: the quick exclusion reads g_0..g_2, the rest
+  // of the search a copy (gc) with this function's g_0.
+  const double g0 = g0_[i];
+  double gc[kTaylorRowSize], gd[kTaylorRowSize];
+  const double* gi = nullptr;
+  auto own = [&]() {
+    if (gi) return;
+    std::copy(base, base + deg + 1, gc);
+    gc[0] = g0;
+    gi = gc;
+  };
   if (state_[i] == kInactive) state_[i] = kFresh;
-  if (state_[i] == kFresh && gi[0] == 0) state_[i] = kDeflate;
+  if (state_[i] == kFresh && g0 == 0 && f.deflate_at_start) state_[i] = kDeflate;
   int sign, start_sign;  // g's sign after u = 0; sign_[i] before the passed roots
   const bool deflated = state_[i] == kDeflate;
   if (deflated) {
+    own();
     // A root at the step start (a start on the surface, or the root just
     // returned) is not an event: g / u from there on.
     while (deg > 0 && gi[1] == 0) ++gi, --deg;
     if (deg == 0) return;  // g vanishes identically
     ++gi, --deg;
-    sign = start_sign = gi[0] > 0 ? 1 : -1;
-  } else {
     sign = start_sign = gi[0] > 0 ? 1 : (gi[0] < 0 ? -1 : zero_sign);
+    // On a surface just left (a stick exit with mu(0+) = mu_s: x'' = 0
+    // there), the deflated constant x'' h is rounding: its sign must not
+    // count (it sent the flow straight back into stick at the same t, over
+    // and over): it counts as the mode's side.
+    if (f.surface && fresh_segment_ && deg >= 1 &&
+        std::abs(gi[0]) <= Tolerances::SurfaceRounding() * surface_scale_ * h) {
+      std::copy(gi, gi + deg + 1, gd);
+      gd[0] = 0;
+      gi = gd;
+      sign = start_sign = zero_sign;
+    }
+  } else {
+    sign = start_sign = g0 > 0 ? 1 : (g0 < 0 ? -1 : zero_sign);
     if (state_[i] == kTracked && sign != sign_[i]) {
       // Changed sign across the step boundary (the two step polynomials
       // disagree within truncation): a root at the step start.
-      if (roots.Add(i, 0.0, sign, p_.Stops(i, sign))) return;
+      if (roots.Add(i, 0.0, sign, ev.Stops(i, sign))) return;
       start_sign = -sign;  // passed: its flip comes with the others
     }
   }
   sign_[i] = start_sign;
   state_[i] = kTracked;
-  if (!deflated && QuadraticBoundExcludes(gi, deg, sign, tail)) return;  // the common case
+  if (!deflated) {
+    const double q[3] = {g0, deg >= 1 ? base[1] : 0.0, deg >= 2 ? base[2] : 0.0};
+    if (QuadraticBoundExcludes(q, deg, sign, tail)) return;  // the common case
+    own();
+  }
   const double* poly = gi;
   int d = deg;
   double rest[kTaylorMaxOrder + 1];  // g on [u, 1] after a passed root
   double u0 = 0;
   for (int guard = 0; guard <= 2 * deg + 2; ++guard) {
-    const PolyRoot r = FirstSignChange(poly, d, sign, zero_sign);
-    if (!r.found) return;
-    const double u = r.u == 1 ? 1.0 : u0 + (1 - u0) * r.u;
-    if (u > roots.first || roots.Add(i, u, -sign, p_.Stops(i, -sign)) || u >= 1) return;
+    const PolyRoot pr = FirstSignChange(poly, d, sign, zero_sign);
+    if (!pr.found) return;
+    const double u = pr.u == 1 ? 1.0 : u0 + (1 - u0) * pr.u;
+    if (u > roots.first || roots.Add(i, u, -sign, ev.Stops(i, -sign)) || u >= 1) return;
     if (guard == 0 && Monotone(gi, deg)) return;  // the only root on [0, 1]
     // Passed: go on from u with g / (w - u) (the root is not an event twice).
     sign = -sign;

@@ -1,31 +1,107 @@
-// The Taylor stepper for one slip mode: coefficients of z (and Phi) by
-// recurrences, order and step from the tolerance (Jorba & Zou 2005, Exp. Math.
-// 14, section 3.2, with heyoka's safety factor, Biscani & Izzo 2021, eq. 10),
-// events as the first sign changes of the step polynomials (poly_roots.hpp);
-// the step polynomial is the dense output.
+// The Taylor stepper for one mode: coefficients of every row by the system's
+// recurrences, order and step from the tolerance (Jorba & Zou 2005, Exp.
+// Math. 14, section 3.2, with heyoka's safety factor, Biscani & Izzo 2021,
+// eq. 10), events as the first sign changes of the step polynomials
+// (poly_roots.hpp); the step polynomial is the dense output.
 #include "integrate/taylor_stepper.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "integrate/poly_roots.hpp"
-
 namespace stickslip {
+
+void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double* y0) {
+  p_ = &problem;
+  // The system's recurrences for this mode (taylor_field.hpp); Bind refuses
+  // a system of another type.
+  if (!field_ || !field_->Bind(*problem.system, problem.mode)) {
+    TaylorRequest rq;
+    rq.variational = variational_;
+    rq.parameter = parameter_;
+    field_ = problem.system->MakeTaylorField(rq);
+    field_->Bind(*problem.system, problem.mode);
+  }
+  bool in_steps = false;  // a non-terminal event: roots inside steps
+  for (int k = 0; k < problem.events.events(); ++k)
+    in_steps = in_steps || !problem.events.event(k).terminal;
+  extra_rel_ = field_->ExtraOrder(rtol_, in_steps);
+  extra_abs_ = field_->ExtraOrder(atol_, in_steps);
+  layout_ = problem.layout;
+  layout_.aux = field_->AuxRows();
+  m_ = layout_.aux_first();
+  rows_n_ = layout_.rows();
+  // Entries past a step's order must only be finite: the last segment's
+  // are, so the rows are cleared only when they grow or a step failed.
+  const size_t cells = static_cast<size_t>(rows_n_) * kTaylorRowSize;
+  if (rows_.size() < cells || rows_dirty_) rows_.assign(std::max(cells, rows_.size()), 0.0);
+  rows_dirty_ = false;
+  const int n = layout_.n;
+  clock_first_ = layout_.tangent;
+  clock_last_ = n;
+  center_.resize(n);
+  for (int i = 0; i < n; ++i) center_[i] = field_->ScaleCenter(i);
+  yend_.assign(y0, y0 + m_);
+  y_.assign(y0, y0 + m_);
+  // No step yet: the "step" [t0, t0] is the start itself (dense output there).
+  order_ = 0;
+  for (int i = 0; i < m_; ++i) rows_[static_cast<size_t>(i) * kTaylorRowSize] = y0[i];
+  ta_ = tb_ = t_ = t0_ = t0;
+  tstop_ = INFINITY;
+  orders_ = TaylorOrders();
+  orders_.min = kTaylorMaxOrder;
+  pending_ = passed_root_ = false;
+  fresh_segment_ = true;
+  surface_scale_ = 1;
+  for (int i = 0; i < layout_.tangent; ++i) surface_scale_ += std::abs(y0[i]);
+  hook_y_.resize(m_);
+  const int nf = problem.events.functions();
+  state_.resize(nf);
+  sign_.resize(nf);
+  rf_.resize(nf);
+  for (int i = 0; i < nf; ++i) state_[i] = kFresh, sign_[i] = 1, rf_[i] = 0;
+  poly_.resize(static_cast<size_t>(nf) * kTaylorRowSize);
+  tail_.resize(nf);
+  g0_.resize(nf);
+  raw0_.resize(nf);
+}
+
+bool TaylorStepper::Failed(const std::string& what) {
+  rows_dirty_ = true;  // perhaps non-finite coefficients
+  std::ostringstream os;
+  os << "taylor: " << what << " at t = " << ta_;
+  error_ = os.str();
+  return false;
+}
+
+// The size of the state for the choice of rtol or atol (and JZ's scale):
+// state components by min(|z|, |z - center|), the rest by |.|; clocks out.
+double TaylorStepper::StateScale(const double* y) const {
+  double z0 = 0;
+  for (int i = 0; i < clock_first_; ++i)
+    z0 = std::max(z0, std::min(std::abs(y[i]), std::abs(y[i] - center_[i])));
+  for (int i = clock_last_; i < m_; ++i) z0 = std::max(z0, std::abs(y[i]));
+  return z0;
+}
 
 // JZ section 3.2: rho = min over j = p-1, p of (eps / |z_j|)^(1/j), relative to
 // |z_0| when rtol |z_0| > atol; h = rho / e^2 exp(-0.7 / (p - 1)). |z_0|
-// takes x by SlipProblem::XScale. At an order q above JZ's p (jz_order),
+// takes the state by StateScale. At an order q above JZ's p (jz_order),
 // rho from z_{q-1}, z_q and the step that keeps their error per step,
-// (h / rho)^(q+1) = (e^-2 exp(-0.7 / (p - 1)))^(p+1).
+// (h / rho)^(q+1) = (e^-2 exp(-0.7 / (p - 1)))^(p+1). Every row counts but
+// the clocks' (their series is exact).
 double TaylorStepper::StepSize(int order, int jz_order) const {
+  const TaylorRow* r = c();
   auto norm = [&](int k) {
     double m = 0;
-    for (int i = 0; i < n_; ++i) m = std::max(m, std::abs(c_[i][k]));
+    for (int i = 0; i < clock_first_; ++i) m = std::max(m, std::abs(r[i][k]));
+    for (int i = clock_last_; i < rows_n_; ++i) m = std::max(m, std::abs(r[i][k]));
     return m;
   };
-  double z0 = p_.XScale(c_[0][0]);
-  for (int i = 1; i < n_; ++i) z0 = std::max(z0, std::abs(c_[i][0]));
+  double z0 = 0;
+  for (int i = 0; i < clock_first_; ++i)
+    z0 = std::max(z0, std::min(std::abs(r[i][0]), std::abs(r[i][0] - center_[i])));
+  for (int i = clock_last_; i < rows_n_; ++i) z0 = std::max(z0, std::abs(r[i][0]));
   const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
   const double r1 = (log_scale - std::log(norm(order - 1))) / (order - 1);
@@ -37,34 +113,38 @@ double TaylorStepper::StepSize(int order, int jz_order) const {
 
 inline bool TaylorStepper::FiniteCoefficients() const {
   // 0 * c is 0 for finite c and NaN otherwise: one branch (two sums, not one chain).
+  const TaylorRow* r = c();
   double probe0 = 0, probe1 = 0;
-  for (int i = 0; i < n_; ++i) {
+  // The state, Phi and column rows (the auxiliary ones follow from them;
+  // anchored clocks are exact).
+  const int skip_to = p_->clock_rate ? clock_last_ : clock_first_;
+  for (int i = 0; i < m_; i = i + 1 == clock_first_ ? skip_to : i + 1) {
     int k = 0;
-    for (; k + 1 <= order_; k += 2) probe0 += 0.0 * c_[i][k], probe1 += 0.0 * c_[i][k + 1];
-    if (k == order_) probe0 += 0.0 * c_[i][k];
+    for (; k + 1 <= order_; k += 2) probe0 += 0.0 * r[i][k], probe1 += 0.0 * r[i][k + 1];
+    if (k == order_) probe0 += 0.0 * r[i][k];
   }
   return probe0 + probe1 == 0;
 }
 
 bool TaylorStepper::NewStep() {
   ta_ = tb_;
+  TaylorRow* r = c();
   if (tstop_ - ta_ <= Tolerances::StepEndRounding(ta_)) {  // at the stop time to rounding
     order_ = 0;
-    for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
+    for (int i = 0; i < m_; ++i) r[i][0] = yend_[i];
     tb_ = tstop_;
     return true;
   }
-  double z0 = std::max(p_.XScale(yend_[0]), std::abs(yend_[1]));
-  if (n_ >= 6)
-    for (int i = 2; i < n_; ++i) z0 = std::max(z0, std::abs(yend_[i]));
-  const int jz_order = rtol_ * z0 > atol_ ? order_rel_ : order_abs_;
-  order_ = std::min(kTaylorMaxOrder, jz_order + extra_order_);
+  const double z0 = StateScale(yend_.data());
+  const bool relative = rtol_ * z0 > atol_;
+  const int jz_order = relative ? order_rel_ : order_abs_;
+  order_ = std::min(kTaylorMaxOrder, jz_order + (relative ? extra_rel_ : extra_abs_));
   Coefficients(order_);
   // The extra orders overflow on a stiff field (v_m 1e-6): JZ's order then,
   // the entries past it finite again (NewStep's sums run past the order).
   if (!FiniteCoefficients()) {
     if (order_ == jz_order) return Failed("non-finite Taylor coefficients");
-    for (int i = 0; i < n_; ++i) std::fill(c_[i] + jz_order + 1, c_[i] + kTaylorRowSize, 0.0);
+    for (int i = 0; i < rows_n_; ++i) std::fill(r[i] + jz_order + 1, r[i] + kTaylorRowSize, 0.0);
     Coefficients(order_ = jz_order);
     if (!FiniteCoefficients()) return Failed("non-finite Taylor coefficients");
     ++orders_.fallbacks;
@@ -90,19 +170,22 @@ bool TaylorStepper::NewStep() {
   for (int k = 1; k <= order_; ++k) hp_[k] = hp_[k - 1] * h;
   for (int k = order_ + 1; k <= order_ + 3; ++k) hp_[k] = 0;  // the sums' blocks of four
   Events(h);
+  fresh_segment_ = false;
   if (tb_ == ta_ + h) {  // not cut at a root: z(tb) = sum_k c_k h^k, in four partial sums
-    for (int i = 0; i < n_; ++i) {
+    const int skip_to = p_->clock_rate ? clock_last_ : clock_first_;  // anchored clocks: Clocks
+    for (int i = 0; i < m_; i = i + 1 == clock_first_ ? skip_to : i + 1) {
       double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
       for (int k = 0; k <= order_; k += 4) {  // past the order: finite c_, zero hp_
-        s0 += c_[i][k] * hp_[k];
-        s1 += c_[i][k + 1] * hp_[k + 1];
-        s2 += c_[i][k + 2] * hp_[k + 2];
-        s3 += c_[i][k + 3] * hp_[k + 3];
+        s0 += r[i][k] * hp_[k];
+        s1 += r[i][k + 1] * hp_[k + 1];
+        s2 += r[i][k + 2] * hp_[k + 2];
+        s3 += r[i][k + 3] * hp_[k + 3];
       }
       yend_[i] = (s0 + s1) + (s2 + s3);
     }
+    Clocks(tb_, yend_.data());
   } else {
-    Evaluate(tb_ - ta_, yend_);
+    Evaluate(tb_, yend_.data());
   }
   return true;
 }
@@ -110,58 +193,56 @@ bool TaylorStepper::NewStep() {
 StepOutcome TaylorStepper::Advance(double tout, double* t) {
   error_.clear();
   long taken = 0;
+  auto at = [&](double time, const std::vector<double>& y) {
+    t_ = time;
+    std::copy(y.begin(), y.begin() + m_, y_.begin());
+    *t = t_;
+  };
   for (;;) {
     if (tout <= tb_ && !(pending_ && tout >= tb_)) {  // dense output inside this step
       t_ = std::max(std::min(tout, tb_), t_);
-      Evaluate(t_ - ta_, y_);
+      Evaluate(t_, y_.data());
       *t = t_;
       return StepOutcome::kReached;
     }
     if (pending_) {
       pending_ = false;
-      t_ = tb_;
-      std::copy(yend_, yend_ + n_, y_);
-      *t = t_;
+      fresh_segment_ = true;  // the loop may go on from this root
+      at(tb_, yend_);
       return StepOutcome::kRoot;
     }
     if (tb_ >= tstop_) {
-      t_ = tb_;
-      std::copy(yend_, yend_ + n_, y_);
-      *t = t_;
+      at(tb_, yend_);
       return StepOutcome::kReached;
     }
     if (taken >= max_steps_) {
       std::ostringstream os;
       os << "too many steps (" << max_steps_ << ") before t = " << tout;
-      t_ = tb_;
-      std::copy(yend_, yend_ + n_, y_);
-      *t = t_;
+      at(tb_, yend_);
       error_ = os.str();
       return StepOutcome::kTooMuchWork;
     }
     if (!NewStep()) {
-      t_ = tb_ = ta_;
-      std::copy(yend_, yend_ + n_, y_);
-      *t = t_;
+      tb_ = ta_;
+      at(ta_, yend_);
       return StepOutcome::kFailed;
     }
     // max_steps counts from the last root, passed or returned (as when every
     // root returned, and as CVODE counts between returns).
     taken = passed_root_ ? 0 : taken + 1;
-    if (p_.cancel && (*p_.cancel)()) {
+    if (p_->cancel && (*p_->cancel)()) {
       pending_ = false;
       tb_ = ta_;
-      Evaluate(0.0, yend_);
-      t_ = ta_;
-      std::copy(yend_, yend_ + n_, y_);
-      *t = t_;
+      Evaluate(ta_, yend_.data());
+      at(ta_, yend_);
       return StepOutcome::kCancelled;
     }
+    if (!pending_ && p_->on_step.fn) p_->on_step(tb_, yend_.data());
   }
 }
 
 std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
-                                           const std::optional<ParameterAxis>& parameter) {
+                                           std::optional<int> parameter) {
   return std::make_unique<TaylorStepper>(options, variational, parameter);
 }
 

@@ -1,20 +1,25 @@
-// Private to src/: the Taylor stepper for one slip mode (taylor_stepper.cpp:
-// recurrences, order and step; taylor_events.cpp: the roots of the events on
-// each step polynomial).
+// Private to src/: the Taylor stepper for one mode of any system
+// (taylor_stepper.cpp: recurrences, order and step; taylor_events.cpp: the
+// roots of the events on each step polynomial).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <sstream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "integrate/poly_roots.hpp"
 #include "integrate/series.hpp"
 #include "integrate/stepper.hpp"
-#include "integrate/taylor_field.hpp"
+#include "stickslip/system/taylor_field.hpp"
 
 namespace stickslip {
+
+static_assert(kTaylorPad == kPad, "a row's padding is the series' padding");
+constexpr Reciprocals<kTaylorMaxOrder> kTaylorInverse;
+constexpr Ordinals<kTaylorRowSize + 1> kOrdinals;
 
 // JZ (3.8): order p = ceil(-ln(eps) / 2 + 1).
 inline int OrderFor(double eps) {
@@ -23,48 +28,21 @@ inline int OrderFor(double eps) {
 
 class TaylorStepper final : public Stepper {
  public:
-  // parameter: also the column dz/dp for that parameter (then size() is 8).
-  TaylorStepper(const FlowOptions& o, bool variational,
-                const std::optional<ParameterAxis>& parameter)
+  // parameter: also the column dz/dp for that parameter index.
+  TaylorStepper(const FlowOptions& o, bool variational, std::optional<int> parameter)
       : rtol_(o.rtol),
         atol_(o.atol),
         max_steps_(o.max_steps),
-        n_(parameter     ? 8
-           : variational ? 6
-                         : 2),
+        variational_(variational || parameter.has_value()),
         order_rel_(OrderFor(o.rtol)),
         order_abs_(OrderFor(o.atol)),
         parameter_(parameter) {}
 
-  void Reset(const SlipProblem& problem, double t0, const double* y0) override {
-    p_ = problem;
-    // The model's recurrences for this mode (the seam: system.hpp).
-    if (!field_ || !field_->Bind(*p_.model, p_.mode)) {
-      field_ = p_.model->MakeTaylorField(parameter_);
-      field_->Bind(*p_.model, p_.mode);
-    }
-    extra_order_ = field_->ExtraOrder();
-    for (int i = 0; i < n_; ++i) std::fill(c_[i], c_[i] + kTaylorRowSize, 0.0);
-    std::copy(y0, y0 + n_, yend_);
-    std::copy(y0, y0 + n_, y_);
-    ta_ = tb_ = t_ = t0_ = t0;
-    tstop_ = INFINITY;
-    orders_ = TaylorOrders();
-    orders_.min = kTaylorMaxOrder;
-    pending_ = passed_root_ = false;
-    for (auto& s : state_) s = kFresh;
-  }
+  void Reset(const SegmentProblem& problem, double t0, const double* y0) override;
   void SetStopTime(double t) override { tstop_ = t; }
   StepOutcome Advance(double tout, double* t) override;
-  const double* y() const override { return y_; }
-  void RootInfo(int* rf) const override { std::copy(rf_, rf_ + kNumRoots, rf); }
-  bool Interpolate(double t, double* out) override {
-    const double slack = Tolerances::DenseOutputSlack(t);
-    if (!(t >= ta_ - slack && t <= tb_ + slack)) return false;
-    Evaluate(t - ta_, out);
-    return true;
-  }
-  double LastStepStart() override { return ta_; }
+  const double* y() const override { return y_.data(); }
+  void RootInfo(int* rf) const override { std::copy(rf_.begin(), rf_.end(), rf); }
   double CurrentTime() override { return tb_; }
   double SegmentStart() const override { return t0_; }
   long steps() const override { return orders_.steps; }
@@ -73,7 +51,7 @@ class TaylorStepper final : public Stepper {
     if (o.steps == 0) o.min = 0;  // no steps: no kTaylorMaxOrder sentinel
     return o;
   }
-  int size() const override { return n_; }
+  int size() const override { return m_; }
   const std::string& last_error() const override { return error_; }
 
  private:
@@ -82,68 +60,95 @@ class TaylorStepper final : public Stepper {
   // the roots passed on the way.
   struct Roots {
     double first = 2;
-    int rf[kNumRoots] = {0, 0, 0};
+    int* rf = nullptr;  // one per function
+    int nf = 0;
     struct Passed {
       double u;
       int i, direction;
-    } passed[2 * kTaylorMaxOrder + 8];
-    int n_passed = 0;
+    };
+    std::vector<Passed>* passed = nullptr;
     // Returns whether the root stops.
     bool Add(int i, double u, int direction, bool stops) {
       if (!stops) {
-        if (n_passed < static_cast<int>(sizeof passed / sizeof passed[0]))
-          passed[n_passed++] = {u, i, direction};
+        passed->push_back({u, i, direction});
         return false;
       }
       if (u > first) return true;
-      if (u < first) std::fill(rf, rf + kNumRoots, 0);
+      if (u < first) std::fill(rf, rf + nf, 0);
       first = u;
       rf[i] = direction;
       return true;
     }
   };
   // tail: sum_{k>=3} |g_k| of gi (the quadratic bound).
-  void EventRoots(int i, const double* gi, int deg, double tail, Roots& roots);
+  // Function i's roots; base: the polynomial of its shape (EventFunction::
+  // base), whose g_0 is replaced by g0_[i].
+  void EventRoots(int i, const double* base, int deg, double tail, double h, Roots& roots);
+  // The step polynomials (in u = tau / h) of every distinct event function.
+  void EventPolynomials(int order);
 
+  TaylorRow* c() { return reinterpret_cast<TaylorRow*>(rows_.data()); }
+  const TaylorRow* c() const { return reinterpret_cast<const TaylorRow*>(rows_.data()); }
   bool NewStep();
   bool FiniteCoefficients() const;
   void Coefficients(int order) {
-    for (int i = 0; i < n_; ++i) c_[i][0] = yend_[i];
-    field_->Coefficients(order, n_, c_);
+    TaylorRow* r = c();
+    for (int i = 0; i < m_; ++i) r[i][0] = yend_[i];
+    field_->Coefficients(order, layout_, r);
   }
   double StepSize(int order, int jz_order) const;
+  double StateScale(const double* y) const;
   void Events(double h);
-  void Evaluate(double tau, double* out) const {
-    for (int i = 0; i < n_; ++i) out[i] = Horner(c_[i], order_, tau);
+  // The step polynomial at tau = t - ta (the clocks at t itself).
+  void Evaluate(double t, double* out) const {
+    const TaylorRow* r = c();
+    const double tau = t - ta_;
+    for (int i = 0; i < m_; ++i) out[i] = Horner(r[i], order_, tau);
+    Clocks(t, out);
   }
-  bool Failed(const std::string& what) {
-    std::ostringstream os;
-    os << "taylor: " << what << " at t = " << ta_;
-    error_ = os.str();
-    return false;
+  // The clock rows at t, from the problem's rates and offsets.
+  void Clocks(double t, double* y) const {
+    if (!p_->clock_rate) return;  // no anchors: the step polynomial's own
+    for (int j = clock_first_; j < clock_last_; ++j)
+      y[j] = p_->clock_rate[j - clock_first_] * t + p_->clock_offset[j - clock_first_];
   }
+  bool Failed(const std::string& what);
 
   double rtol_, atol_;
   long max_steps_;
-  int n_, order_rel_, order_abs_;
+  bool variational_;
+  int order_rel_, order_abs_;
   int order_ = 0;
-  int extra_order_ = 0;  // the field's orders above JZ's (TaylorField::ExtraOrder)
-  SlipProblem p_;
-  // This step's Taylor coefficients, kPad finite entries past the order for
-  // Cauchy(); the recurrences that fill them (the model's, per mode).
-  TaylorRow c_[8];
-  double hp_[kTaylorRowSize];               // powers of this step's h
-  std::optional<ParameterAxis> parameter_;  // the parameter column's, if any
+  int extra_rel_ = 0, extra_abs_ = 0;  // the field's orders above JZ's (ExtraOrder)
+  const SegmentProblem* p_ = nullptr;
+  TaylorLayout layout_;
+  int m_ = 0;                             // the integrated rows (state, Phi, column)
+  int rows_n_ = 0;                        // with the auxiliary rows
+  int clock_first_ = 0, clock_last_ = 0;  // clock rows [first, last): out of the step size
+  // This step's Taylor coefficients, kPad finite entries past the order;
+  // the recurrences that fill them (the system's, per mode).
+  std::vector<double> rows_;
+  bool rows_dirty_ = false;    // a failed step may have left non-finite entries
+  double hp_[kTaylorRowSize];  // powers of this step's h
+  std::optional<int> parameter_;
   std::unique_ptr<TaylorField> field_;
+  std::vector<double> center_;      // TaylorField::ScaleCenter per state component
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double t0_ = 0;                   // the last Reset's start
   double tstop_ = INFINITY;
-  double yend_[8], y_[8];  // state at tb, at t
-  SignState state_[kNumRoots];
-  int sign_[kNumRoots] = {1, 1, 1};
-  bool pending_ = false;      // a root at tb not yet returned
-  bool passed_root_ = false;  // the last step passed a root
-  int rf_[kNumRoots] = {0, 0, 0};
+  std::vector<double> yend_, y_;  // state at tb, at t
+  // Per event function: sign tracking, sign, this step's roots; per base
+  // polynomial: its coefficients and tail.
+  std::vector<SignState> state_;
+  std::vector<int> sign_, rf_;
+  // g0_: each function's g_0.
+  std::vector<double> poly_, tail_, raw0_, g0_;  // raw0_: a base's g_0 before its offset
+  std::vector<Roots::Passed> passed_;
+  bool pending_ = false;        // a root at tb not yet returned
+  bool passed_root_ = false;    // the last step passed a root
+  bool fresh_segment_ = false;  // the first step of a segment, or after a root returned
+  double surface_scale_ = 1;    // the state's size, for SurfaceRounding
+  std::vector<double> hook_y_;
   TaylorOrders orders_;  // the steps since Reset and their orders
   std::string error_;
 };

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "numerics/tolerances.hpp"
-namespace stickslip {
+#include "stickslip/errors.hpp"
 
-const char* ModeName(Mode m) { return Name(m); }
+namespace stickslip {
 
 Model::Model(const Params& p) : p_(p), friction_((Validate(p), p)), two_beta_(2.0 * p.beta) {}
 
@@ -19,7 +19,7 @@ Mat2 Model::Jacobian(Mode m, const Vec2& z) const {
   return J;
 }
 
-bool Model::Assign(const FrictionSystem& s) {
+bool Model::Assign(const System& s) {
   const auto* m = dynamic_cast<const Model*>(&s);
   if (m) *this = *m;
   return m != nullptr;
@@ -34,6 +34,25 @@ bool ParameterColumnSupported(LawKind law, const ParameterAxis& axis) {
 
 bool Model::SupportsParameterColumn(const ParameterAxis& axis) const {
   return ParameterColumnSupported(p_.law, axis);
+}
+
+bool Model::SupportsParameterColumn(int j) const {
+  return j >= 0 && j < parameters() &&
+         SupportsParameterColumn(ParameterAxis(static_cast<Parameter>(j)));
+}
+
+int Model::parameters() const { return static_cast<int>(NameCount<Parameter>()); }
+
+std::string Model::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
+
+double Model::ParameterValue(int j) const {
+  return ParameterAxis(static_cast<Parameter>(j)).Get(p_);
+}
+
+void Model::SetParameterValue(int j, double value) {
+  ParameterAxis(static_cast<Parameter>(j)).Set(p_, value);
+  friction_ = Friction(p_);
+  two_beta_ = 2.0 * p_.beta;
 }
 
 Equilibrium Model::SteadySliding() const {

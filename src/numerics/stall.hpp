@@ -3,6 +3,8 @@
 // shrinks is at the noise floor of the residual (Tolerances::kStallBand).
 #pragma once
 
+#include <cmath>
+
 #include "numerics/tolerances.hpp"
 
 namespace stickslip {
@@ -13,5 +15,21 @@ inline bool NewtonStalled(double step, double last_step, int iteration, double t
   return iteration >= Tolerances::kStallFirstIteration && step < Tolerances::kStallBand * tol &&
          step > Tolerances::kStallRatio * last_step;
 }
+
+// The one stall guard of the flow: events (roots in a segment, switches in a
+// run) that keep coming at one t, to rounding, would loop for ever, so more
+// than `limit` in a row are a failure that says where.
+struct RootRepeats {
+  explicit RootRepeats(int max_in_a_row) : limit(max_in_a_row) {}
+  double t = NAN;  // where the run of repeats began
+  int count = 0;
+  int limit;
+  bool Stuck(double t_event) {
+    const bool same = std::abs(t_event - t) <= Tolerances::RootRepeat(t);
+    count = same ? count + 1 : 0;
+    if (!same) t = t_event;
+    return count > limit;
+  }
+};
 
 }  // namespace stickslip

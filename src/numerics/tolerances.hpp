@@ -65,10 +65,16 @@ struct Tolerances : FixedTolerances {
   static constexpr double kRootZeroBias = 1e-300;
   /// At rest on steady sliding: |x'| within this. Integration noise is ~atol
   /// in x' (10 atol), never below rounding of the scale (64 eps scale).
-  double RestBandVelocity(double scale) const { return std::max(64 * kEps * scale, 10 * atol); }
+  double RestBandVelocity(double scale) const { return RestBandVelocity(scale, atol); }
+  static double RestBandVelocity(double scale, double atol) {
+    return std::max(64 * kEps * scale, 10 * atol);
+  }
   /// At rest: |x''| within this. x'' = -x + mu(v) is a difference of nearly
   /// equal terms of size scale, so its noise is ~atol + rtol scale.
   double RestBandAcceleration(double scale) const {
+    return RestBandAcceleration(scale, rtol, atol);
+  }
+  static double RestBandAcceleration(double scale, double rtol, double atol) {
     return std::max(64 * kEps * scale, 10 * (atol + rtol * scale));
   }
 

@@ -70,6 +70,15 @@ struct FixedTolerances {
   static constexpr int kRegionMapReturns = 150;
   // Report files (io/report.cpp): attempts at a fresh temporary name.
   static constexpr int kTempFileAttempts = 100;
+  // The flow (flow/engine.cpp): switches in a row at one t (to rounding)
+  // before switching that does not advance t is a failure (a stick entered
+  // and left at once, a few contacts in turn; 8 as the forced flow had).
+  static constexpr int kSwitchStalls = 8;
+
+  // --- The flow's rounding windows (flow/engine.cpp) ---
+  // A start in stick lies on its surface and within its band to this times
+  // (1 + |speed| + limit): a few ulp (64 eps) of the state's rounding.
+  static constexpr double kEventRounding = 64 * 2.220446049250313e-16;
 };
 
 }  // namespace stickslip

@@ -41,7 +41,7 @@ TEST(BasinStability, StribeckSceneMatchesMonteCarloWithinThreeSigma) {
   // (then it is on the stick-slip orbit: every stick ends at the exit point),
   // or, unstuck after t = 2000, close to steady sliding.
   const Model m(p);
-  Flow flow(m, FlowOptions());
+  BeltFlow flow(m, FlowOptions());
   const Vec2 xbar(m.SteadySliding().x, 0.0);
   std::mt19937_64 rng(20261124);
   std::uniform_real_distribution<double> ux(kBox.x_lo, kBox.x_hi), uy(kBox.y_lo, kBox.y_hi);

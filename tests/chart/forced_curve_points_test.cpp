@@ -21,7 +21,7 @@ namespace {
 // studies/seed_forced.ini: the seed set forced by A cos(Omega t).
 ForcedParams Seed(double a, double w) { return forced_reference::SeedBelt(0.25, a, w); }
 
-ForcedOptions Flow() {
+ForcedOptions BeltFlow() {
   ForcedOptions f;
   f.rtol = f.atol = 1e-13;
   return f;
@@ -41,9 +41,9 @@ ForcedBranch SeedRun(double a) {
   const ForcedModel model(Seed(a, 1));
   ForcedRequest rq;
   rq.t_end = 200 * model.period();
-  const ForcedRun tr = ForcedFlow(model, Flow()).Run(ForcedStart(model, 0, 0, 0.25), rq);
+  const ForcedRun tr = ForcedFlow(model, BeltFlow()).Run(ForcedStart(model, 0, 0, 0.25), rq);
   ForcedBranchOptions o;
-  o.flow = Flow();
+  o.flow = BeltFlow();
   o.palc.ds = o.palc.ds_max = 0.006;
   return ContinueForced(Seed(a, 1), ForcedAxis::kOmega, 1, 0.3, tr.end.x, tr.end.xdot, o);
 }
@@ -67,15 +67,15 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Force
   const double t0 = p.phase / model.omega();
   rq.t_end = model.period();
   const ForcedPoint z =
-      ForcedFlow(model, Flow()).Run(ForcedStart(model, t0, p.x0, p.xdot0), rq).end;
+      ForcedFlow(model, BeltFlow()).Run(ForcedStart(model, t0, p.x0, p.xdot0), rq).end;
   rq.t_end = m * model.period(), rq.variational = true;
-  const Mat2 M = ForcedFlow(model, Flow()).Run(ForcedStart(model, 0, z.x, z.xdot), rq).jacobian;
+  const Mat2 M = ForcedFlow(model, BeltFlow()).Run(ForcedStart(model, 0, z.x, z.xdot), rq).jacobian;
   Eigen::EigenSolver<Eigen::Matrix2d> es(M);
   const double target = fold ? 1 : -1;
   const int k = std::abs(es.eigenvalues()[0] - target) < std::abs(es.eigenvalues()[1] - target);
   const Eigen::Vector2d e = es.eigenvectors().col(k ? 0 : 1).real().normalized();
   ForcedBranchOptions o;
-  o.flow = Flow();
+  o.flow = BeltFlow();
   o.m = m;
   o.palc.ds = o.palc.ds_max = 2e-4;
   const double h = fold ? 0.02 : 0;

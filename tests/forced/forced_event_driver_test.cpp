@@ -1,5 +1,5 @@
-// The forced oscillator's slip steppers (src/forced/forced_stepper.hpp) in the
-// one event loop (RunSegment): the terminal arrival on x' = v and the
+// The forced oscillator (ForcedModel: x, x', theta = Omega t) on the one
+// flow's steppers in the one event loop (RunSegment): the terminal arrival on x' = v and the
 // non-terminal extrema of x and x' against the closed form of a coulomb slip
 // piece under A cos(Omega t) (forced_reference.hpp, long double), located
 // there by scanning and bisection.
@@ -7,14 +7,14 @@
 
 #include <vector>
 
-#include "forced/forced_stepper.hpp"
+#include "integrate/event_driver.hpp"
+#include "stickslip/model/forced.hpp"
 #include "tests/forced_reference.hpp"
 
 namespace stickslip {
 namespace {
 
 namespace ref = forced_reference;
-using forced_detail::ForcedSlipProblem;
 using Real = ref::Real;
 
 struct Hit {
@@ -35,7 +35,8 @@ class ForcedEventDriver : public ::testing::Test {
   const ForcedModel m_{p_};
   const ref::Setup s_{reference::Law(p_.base), p_.base.beta, p_.base.v, p_.force, p_.omega};
   const ref::CoulombPiece piece_{s_, 1, 0.3L, 1.0L, -1.0L};
-  const double t0_ = 0.3, y0_[2] = {1.0, -1.0};
+  const double omega_ = 0.8, zero_ = 0;
+  const double t0_ = 0.3, y0_[3] = {1.0, -1.0, 0.3 * 0.8};  // theta = Omega t0
 
   // The closed form's x, x', x'' at t.
   void At(Real t, Real* x, Real* y, Real* acc) const {
@@ -51,26 +52,49 @@ class ForcedEventDriver : public ::testing::Test {
         return ref::Bisect([&](Real u) { return (f(u) > 0) != (f(t) > 0); }, t, t + step);
     return NAN;
   }
-  ForcedSlipProblem Problem(bool switching, std::vector<Hit>* hits) const {
-    ForcedSlipProblem p;
-    p.mode = Mode::kSlipBelow;
-    p.model = &m_;
-    p.max_steps = 100000;
-    EventList events;
-    if (switching) events.Add(Event{0, +1, true, true});
-    events.Add(Event{1, kAnyRoot, false});
-    events.Add(Event{2, kAnyRoot, false});
-    p.SetEvents(events, EventHook{&Record, hits});
+  // g0 = x' - v (the arrival), g1 = x'' (extrema of x'), g2 = x' (of x).
+  SegmentProblem Problem(bool switching, std::vector<Hit>* hits, const FlowOptions& o) const {
+    SegmentProblem p;
+    p.system = &m_;
+    p.mode = ModeSet(Mode::kSlipBelow);
+    p.rtol = o.rtol;
+    p.atol = o.atol;
+    p.layout = TaylorLayout{3, 2, false, false, 0};
+    p.derivative_of = {1, -1, -1};
+    p.clock_rate = &omega_;
+    p.clock_offset = &zero_;
+    EventFunction g0, g1, g2;
+    g0.size = g1.size = g2.size = 1;
+    g0.terms[0] = g1.terms[0] = g2.terms[0] = {1, 1.0};
+    g0.offset = m_.v();
+    g0.zero_sign = -1;
+    g0.surface = true;
+    g1.derivative = true;
+    p.events.Add(g0);
+    p.events.Add(g1);
+    p.events.Add(g2);
+    if (switching) p.events.Add(Event{0, +1, true, true});
+    p.events.Add(Event{1, kAnyRoot, false});
+    p.events.Add(Event{2, kAnyRoot, false});
+    p.on_event = EventHook{&Record, hits};
     return p;
+  }
+  static FlowOptions Options(Integrator i) {
+    FlowOptions o;
+    o.integrator = i;
+    o.rtol = i == Integrator::kTaylor ? 1e-12 : 1e-10;
+    o.atol = i == Integrator::kTaylor ? 1e-12 : 1e-12;
+    return o;
   }
 };
 
 TEST_F(ForcedEventDriver, TaylorArrivalAndExtremaMatchTheClosedForm) {
-  ForcedOptions o;
-  forced_detail::ForcedTaylorStepper stepper(m_, o, true);
+  const FlowOptions o = Options(Integrator::kTaylor);
+  auto stepper = MakeStepper(o, m_, false, std::nullopt);
   std::vector<Hit> hits;
-  const ForcedSlipProblem p = Problem(true, &hits);
-  const SegmentEnd e = RunSegment(stepper, p, t0_, y0_, 100.0, SegmentOutput{});
+  std::vector<int> roots;
+  const SegmentProblem p = Problem(true, &hits, o);
+  const SegmentEnd e = RunSegment(*stepper, p, t0_, y0_, 100.0, SegmentOutput{}, &roots);
   auto part = [&](int i, Real shift) {  // x' (i = 1) or x'' (i = 2) of the closed form, minus shift
     return [this, i, shift](Real t) {
       Real z[3];
@@ -107,11 +131,12 @@ TEST_F(ForcedEventDriver, TaylorArrivalAndExtremaMatchTheClosedForm) {
 }
 
 TEST_F(ForcedEventDriver, WithoutTheArrivalEventTheSegmentRunsOnToTheStopTime) {
-  ForcedOptions o;
-  forced_detail::ForcedTaylorStepper stepper(m_, o, true);
+  const FlowOptions o = Options(Integrator::kTaylor);
+  auto stepper = MakeStepper(o, m_, false, std::nullopt);
   std::vector<Hit> hits;
-  const ForcedSlipProblem p = Problem(false, &hits);
-  const SegmentEnd e = RunSegment(stepper, p, t0_, y0_, 4.0, SegmentOutput{});
+  std::vector<int> roots;
+  const SegmentProblem p = Problem(false, &hits, o);
+  const SegmentEnd e = RunSegment(*stepper, p, t0_, y0_, 4.0, SegmentOutput{}, &roots);
   ASSERT_EQ(e.kind, SegmentEnd::kTime);
   EXPECT_EQ(e.t, 4.0);
   Real x, y, a;
@@ -121,15 +146,13 @@ TEST_F(ForcedEventDriver, WithoutTheArrivalEventTheSegmentRunsOnToTheStopTime) {
 }
 
 TEST_F(ForcedEventDriver, CvodeArrivalMatchesTheClosedForm) {
-  ForcedOptions o;
-  o.integrator = Integrator::kCvode;
-  o.rtol = 1e-10;
-  o.atol = 1e-12;
-  auto stepper = forced_detail::MakeForcedCvode(m_, o, false);
+  const FlowOptions o = Options(Integrator::kCvode);
+  auto stepper = MakeStepper(o, m_, false, std::nullopt);
   std::vector<Hit> hits;
-  ForcedSlipProblem p = Problem(true, &hits);
-  long steps = 0;
-  const SegmentEnd e = forced_detail::RunSegment(*stepper, p, t0_, y0_, 100.0, &steps);
+  std::vector<int> roots;
+  const SegmentProblem p = Problem(true, &hits, o);
+  const SegmentEnd e = RunSegment(*stepper, p, t0_, y0_, 100.0, SegmentOutput{}, &roots);
+  const long steps = stepper->steps();
   auto y_minus_v = [&](Real t) {
     Real x, y, a;
     return At(t, &x, &y, &a), y - s_.v;

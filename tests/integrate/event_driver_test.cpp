@@ -1,6 +1,7 @@
 // The event driver (src/integrate/event_driver.hpp): terminal and
 // non-terminal events, their directions, on both steppers, against the closed
-// form of the coulomb law at beta = 0. In slip below, x'' = -x + mu_k, so from
+// form of the coulomb law at beta = 0. The functions: g0 = x' - v, g1 = x''
+// (the derivative of x'), g2 = x'. In slip below, x'' = -x + mu_k, so from
 // (mu_k - A, 0): x = mu_k - A cos t, x' = A sin t, x'' = A cos t.
 #include "integrate/event_driver.hpp"
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "integrate/stepper.hpp"
+#include "stickslip/model/model.hpp"
 
 namespace stickslip {
 namespace {
@@ -35,6 +37,22 @@ void Record(void* context, int g, const double* y) {
   static_cast<std::vector<Hit>*>(context)->push_back(Hit{g, y[0], y[1]});
 }
 
+// The three functions of a slip-below segment of the belt, as indexes 0, 1, 2.
+EventList BeltFunctions() {
+  EventList ev;
+  EventFunction g0, g1, g2;
+  g0.size = g1.size = g2.size = 1;
+  g0.terms[0] = g1.terms[0] = g2.terms[0] = {1, 1.0};
+  g0.offset = kV;
+  g0.zero_sign = -1;
+  g0.surface = true;
+  g1.derivative = true;
+  ev.Add(g0);
+  ev.Add(g1);
+  ev.Add(g2);
+  return ev;
+}
+
 class EventDriver : public ::testing::TestWithParam<Integrator> {
  protected:
   // Runs the slip-below field from (mu_k - A, 0) at t = 0 with these events.
@@ -43,25 +61,30 @@ class EventDriver : public ::testing::TestWithParam<Integrator> {
     o.integrator = GetParam();
     o.rtol = 1e-12;
     o.atol = 1e-14;
-    stepper_ = MakeStepper(o, false);
-    problem_ = SlipProblem{&model_, Mode::kSlipBelow, o.rtol, o.atol, nullptr};
-    problem_.x_center = model_.SteadySliding().x;
-    problem_.SetEvents(events, EventHook{&Record, &hits_});
+    stepper_ = MakeStepper(o, model_, false, std::nullopt);
+    problem_.system = &model_;
+    problem_.mode = ModeSet(Mode::kSlipBelow);
+    problem_.rtol = o.rtol;
+    problem_.atol = o.atol;
+    problem_.layout = TaylorLayout{2, 2, false, false, 0};
+    problem_.events = events;
+    problem_.on_event = EventHook{&Record, &hits_};
+    problem_.derivative_of = {1, -1};
     const double y0[2] = {kMuK - A, 0.0};
-    double next = 0;
-    return RunSegment(*stepper_, problem_, 0.0, y0, t_max, SegmentOutput{0, &next, nullptr});
+    return RunSegment(*stepper_, problem_, 0.0, y0, t_max, SegmentOutput{}, &roots_);
   }
   double Tol() const { return GetParam() == Integrator::kTaylor ? 1e-11 : 1e-8; }
 
   Model model_ = Coulomb();
   std::unique_ptr<Stepper> stepper_;
-  SlipProblem problem_;
+  SegmentProblem problem_;
   std::vector<Hit> hits_;
+  std::vector<int> roots_;
 };
 
 TEST_P(EventDriver, TerminalArrivalEndsAtArcsine) {
   const double A = 0.5;  // reaches x' = v at sin t = v / A, before x'' = 0 at pi / 2
-  EventList ev;
+  EventList ev = BeltFunctions();
   ev.Add(Event{0, kAnyRoot, true});
   ev.Add(Event{1, kAnyRoot, false});
   const SegmentEnd e = Run(A, ev);
@@ -75,7 +98,7 @@ TEST_P(EventDriver, TerminalArrivalEndsAtArcsine) {
 
 TEST_P(EventDriver, NonTerminalEventsRecordAndGoOn) {
   const double A = 0.2;  // below the belt: x' peaks at A < v, no arrival
-  EventList ev;
+  EventList ev = BeltFunctions();
   ev.Add(Event{0, kAnyRoot, true});
   ev.Add(Event{1, kAnyRoot, false});  // extrema of x'
   ev.Add(Event{2, kAnyRoot, false});  // extrema of x
@@ -97,7 +120,7 @@ TEST_P(EventDriver, NonTerminalEventsRecordAndGoOn) {
 
 TEST_P(EventDriver, DirectionSelectsTheRoot) {
   const double A = 0.2;
-  EventList ev;
+  EventList ev = BeltFunctions();
   ev.Add(Event{1, kAnyRoot, false});
   ev.Add(Event{2, +1, true});  // x' rises through 0 at 2 pi, falls at pi
   const SegmentEnd e = Run(A, ev);
@@ -114,7 +137,7 @@ TEST_P(EventDriver, DirectionSelectsTheRoot) {
 
 TEST_P(EventDriver, NoTerminalEventRunsToTheStopTime) {
   const double A = 0.2, t_max = 10.0;  // extrema of x at pi, 2 pi, 3 pi
-  EventList ev;
+  EventList ev = BeltFunctions();
   ev.Add(Event{2, kAnyRoot, false});
   const SegmentEnd e = Run(A, ev, t_max);
   ASSERT_EQ(e.kind, SegmentEnd::kTime);
@@ -124,17 +147,25 @@ TEST_P(EventDriver, NoTerminalEventRunsToTheStopTime) {
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(hits_[k].x, kMuK + (k % 2 == 0 ? A : -A), Tol());
 }
 
-TEST(EventList, StopMaskCombinesTerminalDirections) {
-  EventList ev;
+TEST(EventList, MasksCombineDirectionsAndFunctionsAreShared) {
+  EventList ev = BeltFunctions();
   ev.Add(Event{1, kAnyRoot, false});
-  EXPECT_EQ(ev.StopMask(1), 0);
+  EXPECT_FALSE(ev.Stops(1, -1));
+  EXPECT_TRUE(ev.Passes(1, +1));
   ev.Add(Event{1, -1, true});
-  EXPECT_EQ(ev.StopMask(1), -1);
+  EXPECT_TRUE(ev.Stops(1, -1));
+  EXPECT_FALSE(ev.Stops(1, +1));
   ev.Add(Event{1, +1, true});
-  EXPECT_EQ(ev.StopMask(1), kAnyRoot);
-  EXPECT_FALSE(ev.Watched(0));
-  EXPECT_TRUE(ev.Terminal(1, -1));
-  EXPECT_TRUE(ev.NonTerminal(1, +1));
+  EXPECT_TRUE(ev.Stops(1, +1));
+  // g0 and g2 share one polynomial (x'), g1 has its own; adding g2 again
+  // gives g2's index.
+  EXPECT_EQ(ev.function(0).base, ev.function(2).base);
+  EXPECT_NE(ev.function(1).base, ev.function(2).base);
+  EventFunction again;
+  again.size = 1;
+  again.terms[0] = {1, 1.0};
+  EXPECT_EQ(ev.Add(again), 2);
+  EXPECT_EQ(ev.functions(), 3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Steppers, EventDriver,

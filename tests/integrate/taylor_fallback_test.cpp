@@ -72,7 +72,7 @@ TEST(TaylorFallback, StiffStartFallsBackToJzOrderAndMatchesTheReference) {
   const std::vector<double> ts = {1e-13, 1e-12, 1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6};
   const std::vector<ref::State<2>> want = Reference(p, ts, 1e-19L);
   ASSERT_EQ(want.size(), ts.size());
-  Flow flow(m, o);
+  BeltFlow flow(m, o);
   for (size_t i = 0; i < ts.size(); ++i) {
     StopRule stop;
     stop.t_max = 2 * ts[i];
@@ -104,7 +104,7 @@ TEST(TaylorFallback, StiffStartFallsBackToJzOrderAndMatchesTheReference) {
 TEST(TaylorFallback, SeedOrbitStepsAtTheExtraOrderOnly) {
   const Model m{Params()};
   FlowOptions o;
-  Flow flow(m, o);
+  BeltFlow flow(m, o);
   StopRule stop;
   stop.at_stick = true;
   stop.t_max = 100;

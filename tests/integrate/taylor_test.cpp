@@ -31,7 +31,7 @@ FlowOptions Cvode(double rtol = 1e-11) {
 // Slip from the exit point until the orbit enters stick: period and extremes.
 FlowResult StickSlipRun(const Params& p, const FlowOptions& o, double* period) {
   const Model m(p);
-  Flow flow(m, o);
+  BeltFlow flow(m, o);
   StopRule stop;
   stop.at_stick = true;
   stop.t_max = 1e4;
@@ -98,7 +98,7 @@ TEST(Taylor, SlipAboveTheBeltMatchesTheReference) {
     reference::Real t = 0, xa = 0;
     reference::Extremes e;
     ASSERT_TRUE(reference::SlipSegment(rm, +1, x_s, 1e-17L, 100, t, xa, e)) << c.name;
-    Flow flow(m, Taylor(1e-13));
+    BeltFlow flow(m, Taylor(1e-13));
     StopRule stop;
     stop.at_stick = true;
     stop.t_max = 100;
@@ -166,7 +166,7 @@ Touch MakeTouch(double eps) {
 
 FlowResult RunTouch(const Touch& t, const FlowOptions& o) {
   const Model m(t.p);
-  Flow flow(m, o);
+  BeltFlow flow(m, o);
   StopRule stop;
   stop.at_stick = true;
   stop.t_max = 3.0;  // past the top of the circle at t = pi/2 - s0
@@ -190,7 +190,7 @@ TEST(Taylor, PassesExtremaAndStopsAtTheSectionOnTheClosedForm) {
   // extrema passed would cost about three more.
   for (auto [rtol, max_steps] : {std::pair{1e-6, 17L}, std::pair{1e-12, 10L}}) {
     const Model m(p);
-    Flow flow(m, Taylor(rtol));
+    BeltFlow flow(m, Taylor(rtol));
     StopRule stop;
     stop.at_section = true;
     stop.t_max = 20;
@@ -300,7 +300,7 @@ TEST(Taylor, ParameterColumnMatchesTheReferenceReturnMap) {
     const Model m(c.p);
     const double x = m.SteadySliding().x + c.a;
     for (const std::string& name : c.params) {
-      Flow flow(m, Taylor(1e-13));
+      BeltFlow flow(m, Taylor(1e-13));
       flow.set_parameter_column(ParameterAxis(name));
       StopRule stop;
       stop.at_section = true;
@@ -317,7 +317,7 @@ TEST(Taylor, ParameterColumnMatchesTheReferenceReturnMap) {
 
 TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
   const Model m{Params()};  // seed set: the stick-slip orbit switches twice
-  Flow flow(m, Taylor());
+  BeltFlow flow(m, Taylor());
   flow.set_parameter_column(Parameter::kV);
   StopRule stop;
   stop.t_max = 1;
@@ -330,9 +330,9 @@ TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
   EXPECT_THROW(flow.set_parameter_column(ParameterAxis("not_a_parameter")), InvalidArgument);
   Params s;
   s.law = LawKind::kStribeck;
-  Flow fs{Model(s), Taylor()};
+  BeltFlow fs{Model(s), Taylor()};
   EXPECT_THROW(fs.set_parameter_column(Parameter::kVS), InvalidArgument);
-  Flow fc{Model(Params()), Cvode()};
+  BeltFlow fc{Model(Params()), Cvode()};
   fc.set_parameter_column(Parameter::kV);
   EXPECT_FALSE(fc.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true).has_dzdp);
 }

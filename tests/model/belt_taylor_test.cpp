@@ -7,9 +7,9 @@
 #include <cmath>
 #include <optional>
 
-#include "integrate/taylor_field.hpp"
 #include "stickslip/model/model.hpp"
 #include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/system/taylor_field.hpp"
 
 namespace stickslip {
 namespace {
@@ -21,11 +21,15 @@ struct Rows {
 Rows Coefficients(const Params& p, Mode mode, int n, const std::optional<ParameterAxis>& axis,
                   const double* z0, int order) {
   const Model m(p);
-  auto field = m.MakeTaylorField(axis);
-  EXPECT_TRUE(field->Bind(m, mode));
+  TaylorRequest rq;
+  rq.variational = n >= 6;
+  if (axis) rq.parameter = static_cast<int>(axis->id());
+  auto field = m.MakeTaylorField(rq);
+  EXPECT_TRUE(field->Bind(m, ModeSet(mode)));
   Rows r;
   for (int i = 0; i < n; ++i) r.c[i][0] = z0[i];
-  field->Coefficients(order, n, r.c);
+  const TaylorLayout layout{2, 2, n >= 6, n == 8, field->AuxRows()};
+  field->Coefficients(order, layout, r.c);
   return r;
 }
 

@@ -8,6 +8,7 @@
 #include <complex>
 
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 
 namespace stickslip {
 namespace {
@@ -174,10 +175,13 @@ TEST(Model, ModeAtOnTheSwitchingSurface) {
 
 TEST(Model, ModeAfterArrival) {
   const Model m(Seed());
-  EXPECT_EQ(m.ModeAfterArrival(Mode::kSlipBelow, 0.1), Mode::kStick);
-  EXPECT_EQ(m.ModeAfterArrival(Mode::kSlipAbove, 0.1), Mode::kStick);
-  EXPECT_EQ(m.ModeAfterArrival(Mode::kSlipBelow, -0.5), Mode::kSlipAbove);
-  EXPECT_EQ(m.ModeAfterArrival(Mode::kSlipAbove, 0.5), Mode::kSlipBelow);
+  auto after = [&](Mode from, double x) {
+    return ModeAfterArrival(m, ModeSet(from), 0, Vec2(x, m.v()))[0];
+  };
+  EXPECT_EQ(after(Mode::kSlipBelow, 0.1), Mode::kStick);
+  EXPECT_EQ(after(Mode::kSlipAbove, 0.1), Mode::kStick);
+  EXPECT_EQ(after(Mode::kSlipBelow, -0.5), Mode::kSlipAbove);
+  EXPECT_EQ(after(Mode::kSlipAbove, 0.5), Mode::kSlipBelow);
 }
 
 TEST(Model, ModeNames) {
@@ -217,8 +221,13 @@ TEST(Model, SaltationCrossingTheSurface) {
   // f_before = (v, 0.875), f_after = (v, 0.075); S = I + (f_after - f_before) n^T
   // / (n^T f_before) = diag(1, 0.075 / 0.875).
   const Model m(Seed());
-  const Vec2 z(-0.5, 0.25);
-  const Mat2 s = m.SaltationCrossing(Mode::kSlipBelow, Mode::kSlipAbove, z);
+  const Vec2 z(-0.5, 0.25), n(0, 1);
+  auto crossing = [&](Mode before, Mode after, const Vec2& at) {
+    Mat2 S;
+    EXPECT_TRUE(Saltation(m, ModeSet(before), ModeSet(after), at, n, S));
+    return S;
+  };
+  const Mat2 s = crossing(Mode::kSlipBelow, Mode::kSlipAbove, z);
   Mat2 expected;
   expected << 1, 0, 0, 0.075 / 0.875;
   ExpectMatNear(s, expected, 1e-14);
@@ -228,7 +237,7 @@ TEST(Model, SaltationCrossingTheSurface) {
   EXPECT_NEAR((s * fb - fa).norm(), 0, 1e-15);
   // And the other way across, at x = 0.5 from above.
   const Vec2 z2(0.5, 0.25);
-  const Mat2 s2 = m.SaltationCrossing(Mode::kSlipAbove, Mode::kSlipBelow, z2);
+  const Mat2 s2 = crossing(Mode::kSlipAbove, Mode::kSlipBelow, z2);
   EXPECT_NEAR((s2 * m.Field(Mode::kSlipAbove, z2) - m.Field(Mode::kSlipBelow, z2)).norm(), 0,
               1e-15);
 }

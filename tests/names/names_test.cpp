@@ -73,7 +73,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("LawKind", LawKind::kLeine);
   Covers("Integrator", Integrator::kCvode);
   Covers("Method", Method::kBdf);
-  Covers("FlowStatus", FlowStatus::kCancelled);
+  Covers("FlowStatus", FlowStatus::kTooMuchWork);
+  Covers("SwitchKind", SwitchKind::kTouch);
   Covers("OrbitKind", OrbitKind::kPureSlip);
   Covers("OrbitStatus", OrbitStatus::kCancelled);
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);

@@ -1,5 +1,5 @@
 // Randomized robustness: a few hundred random valid models, over the four
-// friction laws, through simulation (Flow::Run, with and without output
+// friction laws, through simulation (BeltFlow::Run, with and without output
 // samples), orbit finding (OrbitFinder::StickSlip, else PureSlipScan and
 // PureSlip) and a short continuation in v (stickslip::Continue). Every run must
 // end with a result or a clear status: no exception (every input here is
@@ -8,7 +8,7 @@
 // The samples come from a fixed seed (a hand-rolled generator, so the sequence
 // is the same with every standard library). Continuations carry a wall-time cap
 // through ContinuationOptions::cancelled (reaching the cap is a status, counted);
-// simulations and orbit searches carry one through Flow::set_cancel, and reaching
+// simulations and orbit searches carry one through BeltFlow::set_cancel, and reaching
 // that is a failure (a hang: nothing there should take seconds). A watchdog
 // thread aborts the test, naming the sample, should anything still run on. A
 // summary of the statuses, with the first message of each, is printed and
@@ -285,7 +285,7 @@ void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& 
               ss::Integrator in) {
   ss::FlowOptions fo;
   fo.integrator = in;
-  ss::Flow flow(model, fo);
+  ss::BeltFlow flow(model, fo);
   Cap cap(kCallCap);
   flow.set_cancel(cap.Hook());
   const ss::Params& p = model.params();
@@ -515,7 +515,7 @@ TEST(Robustness, SimulationSettlesOnStableSteadySliding) {
   ss::Params p;
   p.v = 0.6;
   const ss::Model model(p);
-  ss::Flow flow(model, ss::FlowOptions{});
+  ss::BeltFlow flow(model, ss::FlowOptions{});
   Cap cap(kCallCap);
   flow.set_cancel(cap.Hook());
   ss::StopRule stop;
@@ -534,7 +534,7 @@ TEST(Robustness, SimulationSettlesOnStableSteadySliding) {
   }
 }
 
-// The same without output samples (Flow::Run as the orbit code calls it):
+// The same without output samples (BeltFlow::Run as the orbit code calls it):
 // here the noise of x' and x'' on steady sliding is ~1e-14, above a band of a
 // few ulps, and CVODE's cvRcheck2 refused the chattering root at t ~ 201.
 TEST(Robustness, UnsampledSimulationSettlesOnStableSteadySliding) {
@@ -546,7 +546,7 @@ TEST(Robustness, UnsampledSimulationSettlesOnStableSteadySliding) {
   p.v_m = 0.47570751723673532;
   const ss::Model model(p);
   ASSERT_TRUE(model.SteadySliding().stable());
-  ss::Flow flow(model, ss::FlowOptions{});
+  ss::BeltFlow flow(model, ss::FlowOptions{});
   Cap cap(kCallCap);
   flow.set_cancel(cap.Hook());
   ss::StopRule stop;
@@ -704,7 +704,7 @@ TEST(Robustness, InvalidInputThrowsInvalidArgument) {
   EXPECT_THROW(ss::Continue(p, o), ss::InvalidArgument);
   ss::FlowOptions f;
   f.atol = -1;
-  EXPECT_THROW(ss::Flow(ss::Model(p), f), ss::InvalidArgument);
+  EXPECT_THROW(ss::BeltFlow(ss::Model(p), f), ss::InvalidArgument);
   ss::OrbitFinder finder(ss::Model(p), ss::OrbitOptions{});
   EXPECT_THROW(finder.PureSlip(std::nan("")), ss::InvalidArgument);
   EXPECT_THROW(finder.PureSlip(-1.0), ss::InvalidArgument);

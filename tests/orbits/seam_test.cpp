@@ -13,10 +13,10 @@
 #include <memory>
 #include <string>
 
-#include "integrate/taylor_field.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/system/taylor_field.hpp"
 
 namespace stickslip {
 namespace {
@@ -29,10 +29,8 @@ class SpringBlock final : public FrictionSystem {
  public:
   explicit SpringBlock(const Block& b) : b_(b) {}
   const Block& block() const { return b_; }
-  std::unique_ptr<FrictionSystem> Clone() const override {
-    return std::make_unique<SpringBlock>(*this);
-  }
-  bool Assign(const FrictionSystem& s) override {
+  std::unique_ptr<System> Clone() const override { return std::make_unique<SpringBlock>(*this); }
+  bool Assign(const System& s) override {
     const auto* o = dynamic_cast<const SpringBlock*>(&s);
     if (o) *this = *o;
     return o != nullptr;
@@ -47,11 +45,22 @@ class SpringBlock final : public FrictionSystem {
     if (m != Mode::kStick) J << 0, 1, -b_.w * b_.w, -2 * b_.zeta * b_.w;
     return J;
   }
-  std::unique_ptr<TaylorField> MakeTaylorField(
-      const std::optional<ParameterAxis>& parameter) const override;
-  // The parameter lens: mu_k only, df/dmu_k = (0, sigma).
-  bool SupportsParameterColumn(const ParameterAxis& p) const override {
-    return p == Parameter::kMuK;
+  std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest& request) const override;
+  // Its parameters w, zeta, v, mu_s, mu_k; the parameter lens: mu_k only,
+  // df/dmu_k = (0, sigma).
+  static constexpr int kMuK = 4;
+  bool SupportsParameterColumn(int j) const override { return j == kMuK; }
+  int parameters() const override { return 5; }
+  std::string ParameterName(int j) const override {
+    static const char* names[] = {"w", "zeta", "v", "mu_s", "mu_k"};
+    return names[j];
+  }
+  double ParameterValue(int j) const override { return *Member(j); }
+  void SetParameterValue(int j, double value) override { *Member(j) = value; }
+  double* Member(int j) const {
+    Block& b = const_cast<Block&>(b_);
+    double* m[] = {&b.w, &b.zeta, &b.v, &b.mu_s, &b.mu_k};
+    return m[j];
   }
   double StickForce(double x) const override { return b_.w * b_.w * x + 2 * b_.zeta * b_.w * b_.v; }
   double static_limit() const override { return b_.mu_s; }
@@ -73,17 +82,31 @@ class SpringBlock final : public FrictionSystem {
 };
 
 // The linear recurrences: x_{k+1} = x'_k / (k+1), x'_{k+1} = (-w^2 x_k -
-// 2 zeta w x'_k + [k = 0] sigma mu_k) / (k+1); Phi and dz/dmu_k alike.
+// 2 zeta w x'_k + [k = 0] sigma mu_k) / (k+1); Phi and dz/dmu_k alike. In
+// stick x = x0 + v t, and the auxiliary rows are the stick force w^2 x + 2
+// zeta w v and its limit mu_s.
 class BlockField final : public TaylorField {
  public:
-  bool Bind(const FrictionSystem& s, Mode m) override {
+  bool Bind(const System& s, const ModeSet& m) override {
     const auto* o = dynamic_cast<const SpringBlock*>(&s);
     if (!o) return false;
     const Block& b = o->block();
-    w2_ = b.w * b.w, c_ = 2 * b.zeta * b.w, sigma_ = o->Sigma(m), force_ = sigma_ * b.mu_k;
+    w2_ = b.w * b.w, c_ = 2 * b.zeta * b.w, sigma_ = o->Sigma(m[0]), force_ = sigma_ * b.mu_k;
+    stick_ = m[0] == Mode::kStick, v_ = b.v, mu_s_ = b.mu_s;
     return true;
   }
-  void Coefficients(int order, int n, TaylorRow* c) override {
+  int AuxRows() const override { return stick_ ? 2 : 0; }
+  void Coefficients(int order, const TaylorLayout& l, TaylorRow* c) override {
+    const int n = l.aux_first();
+    if (stick_) {
+      for (int i = 0; i < n; ++i)
+        for (int k = 1; k <= order; ++k) c[i][k] = 0;
+      c[0][1] = v_;
+      for (int k = 0; k <= order; ++k) c[n][k] = w2_ * c[0][k], c[n + 1][k] = 0;
+      c[n][0] += c_ * v_;
+      c[n + 1][0] = mu_s_;
+      return;
+    }
     for (int k = 0; k < order; ++k) {
       const double inv = 1.0 / (k + 1);
       for (int col = 0; col < n; col += 2) {
@@ -95,13 +118,13 @@ class BlockField final : public TaylorField {
   }
 
  private:
-  double w2_ = 1, c_ = 0, sigma_ = 1, force_ = 0;
+  double w2_ = 1, c_ = 0, sigma_ = 1, force_ = 0, v_ = 0, mu_s_ = 0;
+  bool stick_ = false;
 };
 
-std::unique_ptr<TaylorField> SpringBlock::MakeTaylorField(
-    const std::optional<ParameterAxis>& parameter) const {
-  if (parameter && !SupportsParameterColumn(*parameter))
-    throw InvalidArgument("no parameter column for " + parameter->name());
+std::unique_ptr<TaylorField> SpringBlock::MakeTaylorField(const TaylorRequest& request) const {
+  if (request.parameter && !SupportsParameterColumn(*request.parameter))
+    throw InvalidArgument("no parameter column for " + ParameterName(*request.parameter));
   return std::make_unique<BlockField>();
 }
 
@@ -259,7 +282,7 @@ TEST(Seam, FlowWalksTheSecondSystemThroughCrossingAndStick) {
   FlowOptions fo;
   fo.rtol = 1e-13;
   fo.atol = 1e-15;
-  Flow flow(SpringBlock(b), fo);
+  BeltFlow flow(SpringBlock(b), fo);
   StopRule stop;
   stop.t_max = double(t_max);
   const FlowResult r = flow.Run(0.0, Vec2(0.0, 0.7), stop);
@@ -279,7 +302,7 @@ TEST(Seam, ParameterColumnOfTheSecondSystem) {
   FlowOptions fo;
   fo.rtol = 1e-13;
   fo.atol = 1e-15;
-  Flow flow(SpringBlock(b), fo);
+  BeltFlow flow(SpringBlock(b), fo);
   EXPECT_THROW(flow.set_parameter_column(Parameter::kBeta), InvalidArgument);
   flow.set_parameter_column(Parameter::kMuK);
   StopRule stop;

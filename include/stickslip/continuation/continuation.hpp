@@ -127,7 +127,7 @@ struct ContinuationCounts {
   long return_maps = 0;        // evaluations of G(a, p), the pure-slip return map
   long newton_iterations = 0;  // pure-slip corrector and shooting iterations
   long rejected_steps = 0;     // steps halved on any branch
-  long integrator_steps = 0;   // Flow::total_steps() over the whole run
+  long integrator_steps = 0;   // BeltFlow::total_steps() over the whole run
 };
 
 /// Wall-clock seconds per phase; each second is counted in one phase only.

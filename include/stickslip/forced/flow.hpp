@@ -6,10 +6,12 @@
 #pragma once
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "stickslip/integrate/flow.hpp"  // Integrator, Method
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/integrate/extrema.hpp"
 #include "stickslip/model/forced.hpp"
 #include "stickslip/names.hpp"
 
@@ -111,6 +113,14 @@ class ForcedFlow {
  private:
   ForcedModel model_;
   ForcedOptions options_;
+  // The one flow on ForcedModel with its request and result, one per thread
+  // (forced_flow.cpp), kept between Runs.
+  struct Scratch {
+    std::unique_ptr<Flow> flow;
+    FlowRequest request;
+    FlowRun run;
+  };
+  static Scratch& Cache(const ForcedModel& model, const ForcedOptions& o);
 };
 
 }  // namespace stickslip

@@ -11,6 +11,7 @@
 #include "stickslip/model/friction.hpp"
 #include "stickslip/model/model.hpp"
 #include "stickslip/model/params.hpp"
+#include "stickslip/system/system.hpp"
 
 namespace stickslip {
 
@@ -25,11 +26,42 @@ struct ForcedParams {
 /// Empty if valid, else one line naming the offending value.
 std::string ValidationError(const ForcedParams& p);
 
-class ForcedModel {
+/// The forced oscillator on the one system interface: the belt plus a phase
+/// theta' = Omega (a clock, COCO's way of making forcing autonomous), state
+/// (x, x', theta); its parameters are the belt's (Parameter's order), then
+/// force and omega.
+class ForcedModel final : public System {
  public:
   static constexpr int kStateSize = 2;
+  /// The parameter indexes of A and Omega (after the belt's).
+  static constexpr int kForceIndex = 9, kOmegaIndex = 10;
   /// Throws InvalidArgument naming the offending value.
   explicit ForcedModel(const ForcedParams& p);
+
+  // --- The system interface (theta = Omega t) ---
+  std::unique_ptr<System> Clone() const override { return std::make_unique<ForcedModel>(*this); }
+  bool Assign(const System& s) override;
+  std::string ValidationError() const override { return stickslip::ValidationError(p_); }
+  int dimension() const override { return 3; }
+  int contacts() const override { return 1; }
+  int clocks() const override { return 1; }
+  std::string StateName(int i) const override;
+  int DerivativeOf(int i) const override { return i == 0 ? 1 : -1; }
+  ContactVelocity Contact(int i) const override;
+  double StickForce(const ModeSet& m, int i, ConstState z) const override;
+  void StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const override;
+  double StaticLimit(int, ConstState) const override { return p_.base.mu_s; }
+  /// x on the band's edge exactly: x = bound - 2 beta v + A cos(theta).
+  void ProjectOnExit(const ModeSet& m, int i, double bound, StateOut z) const override;
+  void Field(const ModeSet& m, ConstState z, StateOut f) const override;
+  void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const override;
+  std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest& request) const override;
+  /// Steady sliding only without forcing (A = 0).
+  bool Rest(const ModeSet& m, StateOut z, bool* stable) const override;
+  int parameters() const override;
+  std::string ParameterName(int j) const override;
+  double ParameterValue(int j) const override;
+  void SetParameterValue(int j, double value) override;
 
   const ForcedParams& params() const { return p_; }
   const Friction& friction() const { return friction_; }

@@ -155,7 +155,7 @@ class OrbitFinder {
   /// side's multiplier.
   OrbitStatus GrazingGap(double* gap, FlowResult* run = nullptr);
 
-  Flow& flow() { return flow_; }
+  BeltFlow& flow() { return flow_; }
 
  private:
   void Floquet(Orbit& o, const Mat2& M) const;
@@ -163,7 +163,7 @@ class OrbitFinder {
   void AcceptPureSlip(Orbit& o, double a, double step, bool stalled, const ReturnMap& map) const;
 
   OrbitOptions options_;
-  Flow flow_;
+  BeltFlow flow_;
 };
 
 }  // namespace stickslip

@@ -1,0 +1,331 @@
+// One Run of the flow: segments through the one event loop (RunSegment), each
+// in one mode with the events that mode needs (events.hpp): the arrivals of
+// its slipping contacts, the exits of its sticking ones, the caller's
+// sections and the extrema asked for.
+#include "flow/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "numerics/numbers.hpp"
+#include "numerics/stall.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip::flow_detail {
+
+Engine::Engine(Flow& flow) : flow_(flow) {}
+
+Stepper& Engine::Solver() {
+  const FlowOptions& o = flow_.options_;
+  if (column_) {
+    if (!param_ || param_index_ != flow_.parameter_) {
+      param_ = MakeStepper(o, *s_, true, flow_.parameter_);
+      param_index_ = flow_.parameter_;
+    }
+    return *param_;
+  }
+  auto& slot = variational_ ? var_ : plain_;
+  if (!slot) slot = MakeStepper(o, *s_, variational_, std::nullopt);
+  return *slot;
+}
+
+namespace {
+// Throws InvalidArgument unless the start lies where its mode says: each
+// sticking contact on its surface, within its static limit.
+void CheckStart(const System& s, const FlowPoint& p) {
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (!p.mode.sticks(i)) continue;
+    const ContactVelocity c = s.Contact(i);
+    const double h = c.At(p.z.data()), lambda = s.StickForce(p.mode, i, p.z);
+    const double limit = s.StaticLimit(i, p.z);
+    const double slack = Tolerances::kEventRounding * (1 + std::abs(c.speed) + std::abs(limit));
+    if (!(std::abs(h) <= slack) || !(std::abs(lambda) <= limit + slack))
+      throw InvalidArgument("Flow::Run: stick mode requested off the stick set (contact " +
+                            std::to_string(i) + ")");
+  }
+}
+}  // namespace
+
+void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
+  s_ = flow_.system_.get();
+  rq_ = &rq;
+  out_ = out;
+  n_ = s_->dimension();
+  nt_ = s_->tangent_dimension();
+  k_ = s_->contacts();
+  if (start.z.size() != n_)
+    throw InvalidArgument("Flow::Run: the start has " + std::to_string(start.z.size()) +
+                          " components, the system " + std::to_string(n_));
+  if (!start.z.allFinite()) throw InvalidArgument("Flow::Run: start state is not finite");
+  if (!(rq.t_max > start.t)) throw InvalidArgument("Flow::Run: t_max must be > t0");
+  if (!rq.switching && start.mode.AnySticks())
+    throw InvalidArgument("Flow::Run: a run without switching needs a slip start");
+  if (rq.parameter_column && !flow_.has_parameter_column())
+    throw InvalidArgument("Flow::Run: a parameter column needs set_parameter_column and Taylor");
+  for (int j : rq.extrema)
+    if (j < 0 || j >= n_) throw InvalidArgument("Flow::Run: extremum of no component " + Num(j));
+  CheckStart(*s_, start);
+  if (!system_read_) {
+    contacts_.resize(k_);
+    for (int i = 0; i < k_; ++i) contacts_[i] = s_->Contact(i);
+    derivative_of_.resize(n_);
+    for (int i = 0; i < n_; ++i) derivative_of_[i] = s_->DerivativeOf(i);
+    problem_.derivative_of = derivative_of_;
+    problem_.rest_speed = 0;
+    for (const ContactVelocity& c : contacts_)
+      problem_.rest_speed = std::max(problem_.rest_speed, std::abs(c.speed));
+    system_read_ = true;
+  }
+  variational_ = rq.variational || rq.parameter_column;
+  column_ = rq.parameter_column;
+  if (!SameShape(rq)) {
+    ForgetEvents();
+    shape_switching_ = rq.switching, shape_in_steps_ = rq.extrema_in_steps;
+    shape_var_ = variational_, shape_col_ = column_;
+    shape_extrema_ = rq.extrema;
+    shape_sections_ = rq.sections;
+  }
+  FlowRun& r = *out;
+  r.status = FlowStatus::kTimeLimit;
+  r.message.clear();
+  r.section = -1;
+  r.t_stick = 0;
+  r.switches = r.sticks = r.exits = r.crossings = r.touches = 0;
+  r.modes.assign(1, start.mode);
+  const int ne = static_cast<int>(rq.extrema.size());
+  r.lo.resize(ne);
+  r.hi.resize(ne);
+  for (int p = 0; p < ne; ++p) r.lo[p] = r.hi[p] = start.z[rq.extrema[p]];
+  r.dzdp.setZero(nt_);
+  r.has_dzdp = false;
+  r.steps = 0;
+  r.orders = TaylorOrders();
+  t_ = start.t;
+  z_ = start.z;
+  mode_ = start.mode;
+  M_.setIdentity(nt_, nt_);
+  // Clocks as exact functions of t (their rate is their field's entry).
+  const int clocks = n_ - nt_;
+  clock_rate_.resize(clocks);
+  clock_offset_.resize(clocks);
+  if (clocks > 0) {
+    f_before_.resize(n_);
+    s_->Field(mode_, z_, f_before_);
+    for (int j = 0; j < clocks; ++j) {
+      clock_rate_[j] = f_before_[nt_ + j];
+      clock_offset_[j] = z_[nt_ + j] - clock_rate_[j] * t_;
+    }
+  }
+  // A start in stick has no direction off its surface: Phi projected on it.
+  for (int i = 0; i < k_ && variational_; ++i) {
+    if (!mode_.sticks(i)) continue;
+    const ContactVelocity& c = contacts_[i];
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(nt_);
+    for (int t = 0; t < c.size; ++t)
+      if (c.terms[t].index < nt_) g[c.terms[t].index] += c.terms[t].weight;
+    if (g.squaredNorm() > 0) M_ -= g * (g.transpose() * M_) / g.squaredNorm();
+  }
+}
+
+void Engine::Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
+  Start(start, rq, out);
+  FlowRun& r = *out;
+  next_output_ = t_ + rq.output_dt;
+  last_switch_t_ = NAN;
+  if (rq.observer && rq.output_dt > 0) rq.observer(t_, z_.data(), mode_);
+  if (rq.step_observer) rq.step_observer(t_, z_.data(), mode_);
+  RootRepeats stalls(Tolerances::kSwitchStalls);
+  for (;;) {
+    if (r.switches > flow_.options_.max_switches) {
+      Fail(FlowStatus::kTooManySwitches,
+           "more than " + Num(flow_.options_.max_switches) + " mode changes by t = " + Num(t_));
+      return;
+    }
+    const int before = r.switches;
+    // A switch exactly at t_max (a stick exit there) ends the run in the
+    // new mode: no segment of zero length.
+    if (t_ >= rq.t_max) {
+      Done(FlowStatus::kTimeLimit);
+      return;
+    }
+    if (!Segment()) return;
+    if (r.switches > before && stalls.Stuck(t_)) {
+      Fail(FlowStatus::kIntegratorFailed, "switching does not advance t at t = " + Num(t_, 17));
+      return;
+    }
+    if (rq.max_steps > 0 && r.steps >= rq.max_steps) {
+      Fail(FlowStatus::kTooMuchWork, "max_steps = " + Num(rq.max_steps) + " by t = " + Num(t_));
+      return;
+    }
+  }
+}
+
+void Engine::UseEvents() {
+  EventSet* set = nullptr;
+  for (EventSet& e : sets_)
+    if (e.used && e.mode == mode_) set = &e;
+  const bool fresh = !set;
+  if (fresh) {
+    set = &sets_[next_set_];
+    next_set_ = (next_set_ + 1) % kEventSets;
+    set->mode = mode_;
+    BuildEvents(*set);
+    set->rest.resize(n_);
+    set->has_rest = !mode_.AnySticks() && s_->Rest(mode_, set->rest, &set->rest_stable);
+    set->used = true;
+  }
+  if (fresh || cur_ != set) problem_.events = set->events;
+  cur_ = set;
+  // A start just off a surface that reaches it at once arrives there.
+  for (int k : set->arrival_events) {
+    const int c = set->roles[set->events.event(k).g].index;
+    problem_.events.SetAtStart(k, contacts_[c].At(z_.data()) != 0);
+  }
+}
+
+bool Engine::Segment() {
+  const FlowOptions& o = flow_.options_;
+  SegmentProblem& p = problem_;
+  p.system = s_;
+  p.mode = mode_;
+  p.contacts = k_;
+  p.rtol = o.rtol;
+  p.atol = o.atol;
+  p.layout = TaylorLayout{n_, nt_, variational_, column_, 0};
+  p.cancel = flow_.cancel_ ? &flow_.cancel_ : nullptr;
+  p.on_event = EventHook{&Engine::OnEvent, this};
+  p.on_step =
+      (!rq_->extrema_in_steps || rq_->step_observer) ? StepHook{&Engine::OnStep, this} : StepHook{};
+  p.clock_rate = clock_rate_.data();
+  p.clock_offset = clock_offset_.data();
+  UseEvents();  // and the mode's rest point
+  p.has_rest = cur_->has_rest;
+  const bool stable = cur_->rest_stable;
+  rest_ = cur_->rest;
+  // y0: the state, Phi = I, the column 0.
+  const int m = p.layout.aux_first();
+  y0_.assign(m, 0.0);
+  std::copy(z_.data(), z_.data() + n_, y0_.begin());
+  if (variational_)
+    for (int j = 0; j < nt_; ++j) y0_[n_ + j * nt_ + j] = 1.0;
+  SegmentOutput out;
+  if (rq_->observer && rq_->output_dt > 0)
+    out = SegmentOutput{rq_->output_dt, &next_output_, &Engine::OnOutput, this};
+  Stepper& cv = Solver();
+  const double t0 = t_;
+  const SegmentEnd e = RunSegment(cv, p, t_, y0_.data(), rq_->t_max, out, &roots_);
+  FlowRun& r = *out_;
+  r.steps += cv.steps();
+  flow_.total_steps_ += cv.steps();
+  r.orders.Merge(cv.orders());
+  flow_.taylor_orders_.Merge(cv.orders());
+  const double* y = e.y;
+  t_ = e.t;
+  std::copy(y, y + n_, z_.data());
+  for (int j = 0; j < n_ - nt_; ++j) z_[nt_ + j] = clock_rate_[j] * t_ + clock_offset_[j];
+  if (mode_.AnySticks()) r.t_stick += t_ - t0;
+  if (variational_) {
+    Eigen::Map<const Eigen::MatrixXd> phi(y + n_, nt_, nt_);
+    tmp_.noalias() = phi * M_;
+    M_ = tmp_;
+    if (column_ && r.switches == 0)
+      r.dzdp = Eigen::Map<const Eigen::VectorXd>(y + p.layout.param(), nt_);
+  }
+  switch (e.kind) {
+    case SegmentEnd::kEvent:
+      Extend(z_.data());
+      return Switch(roots_);
+    case SegmentEnd::kTime:
+      return Done(FlowStatus::kTimeLimit);
+    case SegmentEnd::kCancelled:
+      return Fail(FlowStatus::kCancelled,
+                  "cancelled at t = " + Num(t_) + " in " + ModeSetName(mode_, k_));
+    case SegmentEnd::kTooMuchWork:
+      if (p.has_rest && stable && Settled(y)) {
+        // Settled on stable steady sliding, where it stays: the rest of the
+        // segment is that rest point, and no event can follow.
+        z_ = rest_;
+        const double t_rest = std::isfinite(rq_->t_max) ? rq_->t_max : e.t_end;
+        while (out.on() && next_output_ < t_rest) {
+          rq_->observer(next_output_, z_.data(), mode_);
+          next_output_ += out.dt;
+        }
+        t_ = t_rest;
+        return Done(FlowStatus::kTimeLimit);
+      }
+      return Fail(FlowStatus::kIntegratorFailed, Where(cv.CurrentTime(), y, cv.last_error()));
+    case SegmentEnd::kFailed:
+      return Fail(FlowStatus::kIntegratorFailed, Where(e.t, y, e.reason));
+  }
+  return Fail(FlowStatus::kIntegratorFailed, "unknown segment end");
+}
+
+std::string Engine::Where(double t, const double* y, const std::string& reason) const {
+  std::ostringstream os;
+  os << IntegratorName(flow_.options_.integrator) << " failed at t = " << t << " in "
+     << ModeSetName(mode_, k_) << " at";
+  for (int i = 0; i < nt_; ++i) os << (i ? ", " : " ") << s_->StateName(i) << " = " << y[i];
+  os << ": " << reason;
+  return os.str();
+}
+
+bool Engine::Settled(const double* y) const {
+  Eigen::VectorXd f(n_);
+  s_->Field(mode_, Eigen::Map<const Eigen::VectorXd>(y, n_), f);
+  return problem_.AtRest(y, f.data());
+}
+
+void Engine::Extend(const double* z) {
+  FlowRun& r = *out_;
+  for (int p = 0; p < static_cast<int>(rq_->extrema.size()); ++p) {
+    const double v = z[rq_->extrema[p]];
+    r.lo[p] = std::min(r.lo[p], v);
+    r.hi[p] = std::max(r.hi[p], v);
+  }
+}
+
+bool Engine::Done(FlowStatus s) {
+  FlowRun& r = *out_;
+  r.status = s;
+  r.end.t = t_;
+  r.end.z = z_;
+  r.end.mode = mode_;
+  r.jacobian = M_;
+  r.has_dzdp = column_ && r.switches == 0;
+  if (!r.has_dzdp) r.dzdp.setZero(nt_);
+  Extend(z_.data());
+  // The end's sample, unless a switch there just gave it.
+  const bool sampled = r.switches > 0 && last_switch_t_ == t_;
+  if (rq_->observer && rq_->output_dt > 0 && !sampled) rq_->observer(t_, z_.data(), mode_);
+  if (rq_->step_observer && !sampled) rq_->step_observer(t_, z_.data(), mode_);
+  return false;
+}
+
+bool Engine::Fail(FlowStatus s, const std::string& why) {
+  out_->message = why;
+  return Done(s);
+}
+
+void Engine::OnEvent(void* self, int g, const double* y) {
+  auto& e = *static_cast<Engine*>(self);
+  FlowRun& r = *e.out_;
+  for (int p : e.cur_->extremum_of[g]) {
+    const double v = y[e.rq_->extrema[p]];
+    r.lo[p] = std::min(r.lo[p], v);
+    r.hi[p] = std::max(r.hi[p], v);
+  }
+}
+
+void Engine::OnStep(void* self, double t, const double* y) {
+  auto& e = *static_cast<Engine*>(self);
+  if (!e.rq_->extrema_in_steps) e.Extend(y);
+  if (e.rq_->step_observer) e.rq_->step_observer(t, y, e.mode_);
+}
+
+void Engine::OnOutput(void* self, double t, const double* y) {
+  auto& e = *static_cast<Engine*>(self);
+  e.rq_->observer(t, y, e.mode_);
+}
+
+}  // namespace stickslip::flow_detail

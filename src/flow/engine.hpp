@@ -1,0 +1,114 @@
+// Private to src/flow/: one Run of the flow (flow.hpp), segment by segment.
+// engine.cpp: the loop, the segments and their events; switching.cpp: the
+// Filippov rule at every event and the saltation matrices.
+#pragma once
+
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "integrate/event_driver.hpp"
+#include "integrate/stepper.hpp"
+#include "stickslip/flow/flow.hpp"
+
+namespace stickslip::flow_detail {
+
+// What a terminal event function of a segment stands for.
+struct FunctionRole {
+  enum Kind { kArrival, kExit, kSection, kExtremum } kind = kExtremum;
+  int index = 0;  // the contact, or the section
+  int sign = 0;   // an exit: +1 at lambda = +limit, -1 at -limit
+};
+
+class Engine {
+ public:
+  explicit Engine(Flow& flow);
+  void Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out);
+  // The system changed (Flow::set_system): its contacts are read again.
+  void Invalidate() {
+    system_read_ = false;
+    ForgetEvents();
+  }
+  void ForgetEvents() {
+    for (EventSet& e : sets_) e.used = false;
+  }
+
+ private:
+  struct EventSet;
+  // Checks the start (InvalidArgument) and sets the run's state and result.
+  void Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out);
+  // One segment in the current mode; false when the run ends.
+  bool Segment();
+  void BuildEvents(EventSet& set);
+  // The events of the current mode (built or reused) in problem_.
+  void UseEvents();
+  // The switches at a terminal root (switching.cpp); false when the run ends.
+  bool Switch(const std::vector<int>& roots);
+  bool Arrive(int contact);
+  bool Exit(int contact, int sign);
+  // S = I + (f+ - f-) grad^T / (grad . f-) on the tangent block, M = S M.
+  void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad);
+  void Record(SwitchKind kind, int contact, const ModeSet& before, const ModeSet& after);
+  bool Done(FlowStatus s);
+  bool Fail(FlowStatus s, const std::string& why);
+  void Extend(const double* z);
+  bool Settled(const double* y) const;
+  // "taylor failed at t = ... in <mode> at x = ..., x' = ...: reason".
+  std::string Where(double t, const double* y, const std::string& reason) const;
+  Stepper& Solver();
+  static void OnEvent(void* self, int g, const double* y);
+  static void OnStep(void* self, double t, const double* y);
+  static void OnOutput(void* self, double t, const double* y);
+
+  Flow& flow_;
+  const System* s_ = nullptr;
+  const FlowRequest* rq_ = nullptr;
+  FlowRun* out_ = nullptr;
+  int n_ = 0, nt_ = 0, k_ = 0;
+  bool variational_ = false, column_ = false;
+  std::vector<ContactVelocity> contacts_;
+  std::vector<int> derivative_of_;
+  bool system_read_ = false;  // contacts_, derivative_of_ are the system's
+  // The request's shape the event sets were built for (SameShape).
+  bool shape_switching_ = true, shape_in_steps_ = true, shape_var_ = false, shape_col_ = false;
+  std::vector<int> shape_extrema_;
+  std::vector<Section> shape_sections_;
+  bool SameShape(const FlowRequest& rq) const;
+  // The run's state between segments.
+  double t_ = 0;
+  Eigen::VectorXd z_;
+  ModeSet mode_;
+  Eigen::MatrixXd M_;                              // d z / d z0 on the tangent block
+  Eigen::VectorXd rest_;                           // the mode's rest point, if any
+  std::vector<double> clock_rate_, clock_offset_;  // clocks = rate t + offset
+  double next_output_ = 0;
+  double last_switch_t_ = 0;  // where the last switch was recorded
+  // The segment's problem; the events of the last few modes (a mode's
+  // events, the roles of its functions, the extremum components each
+  // records, its arrivals), reused while the request keeps its shape.
+  SegmentProblem problem_;
+  struct EventSet {
+    bool used = false;
+    ModeSet mode;
+    EventList events;
+    std::vector<FunctionRole> roles;
+    std::vector<std::vector<int>> extremum_of;
+    std::vector<int> arrival_events;             // indexes into events, one per arrival
+    bool has_rest = false, rest_stable = false;  // System::Rest of the mode
+    Eigen::VectorXd rest;
+  };
+  static constexpr int kEventSets = 4;
+  EventSet sets_[kEventSets];
+  int next_set_ = 0;
+  EventSet* cur_ = nullptr;
+  std::vector<int> roots_;
+  std::vector<double> y0_;
+  std::unique_ptr<Stepper> plain_, var_, param_;
+  std::optional<int> param_index_;  // param_'s column
+  // Scratch for switches.
+  Eigen::VectorXd f_before_, f_after_, grad_, grad2_;
+  Eigen::MatrixXd S_, tmp_;
+};
+
+}  // namespace stickslip::flow_detail

@@ -1,0 +1,121 @@
+// The one flow's public face (flow.hpp): options, the system it runs, and
+// the Filippov mode of a state; one Run is the engine's (engine.cpp).
+#include "stickslip/flow/flow.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "flow/engine.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+const char* IntegratorName(Integrator i) { return Name(i); }
+const char* MethodName(Method m) { return Name(m); }
+const char* FlowStatusName(FlowStatus s) { return Name(s); }
+const char* SwitchKindName(SwitchKind k) { return Name(k); }
+
+std::string FlowOptions::ValidationError() const {
+  std::ostringstream os;
+  using T = Tolerances;
+  if (!(rtol >= T::kRtolMin && rtol <= T::kTolMax)) {
+    os << "rtol = " << rtol << " must be in [" << T::kRtolMin << ", " << T::kTolMax << "]";
+  } else if (!(atol >= T::kAtolMin && atol <= T::kTolMax)) {
+    os << "atol = " << atol << " must be in [" << T::kAtolMin << ", " << T::kTolMax << "]";
+  } else if (max_steps < kMinSteps) {
+    os << "max_steps = " << max_steps << " must be >= " << kMinSteps;
+  } else if (max_switches < 1) {
+    os << "max_switches = " << max_switches << " must be >= 1";
+  }
+  return os.str();
+}
+
+std::unique_ptr<Stepper> MakeTaylorStepper(const FlowOptions& options, bool variational,
+                                           std::optional<int> parameter);
+std::unique_ptr<Stepper> MakeCvodeStepper(const FlowOptions& options, const System& system,
+                                          bool variational);
+
+std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, const System& system,
+                                     bool variational, std::optional<int> parameter) {
+  return options.integrator == Integrator::kTaylor
+             ? MakeTaylorStepper(options, variational, parameter)
+             : MakeCvodeStepper(options, system, variational);
+}
+
+ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) {
+  ModeSet m;
+  for (int i = 0; i < s.contacts(); ++i) {
+    const double h = s.Contact(i).At(z.data());
+    if (h < 0) continue;
+    if (h > 0) {
+      m.set(i, Mode::kSlipAbove);
+      continue;
+    }
+    ModeSet stick = m;
+    stick.set(i, Mode::kStick);
+    const double lambda = s.StickForce(stick, i, z);
+    if (std::abs(lambda) <= s.StaticLimit(i, z))
+      m = stick;
+    else
+      m.set(i, lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  }
+  return m;
+}
+
+namespace {
+// What the flow itself needs of its options: tolerances the steppers can
+// meet (Taylor to kForcedRtolMin; CVODE stalls below its floors) and
+// positive caps. Tools check their own, tighter, ranges at entry.
+std::string CoreError(const FlowOptions& o) {
+  using T = Tolerances;
+  std::ostringstream os;
+  if (!(o.rtol >= T::kForcedRtolMin && o.rtol <= T::kTolMax))
+    os << "rtol = " << o.rtol << " must lie in [" << T::kForcedRtolMin << ", " << T::kTolMax << "]";
+  else if (!(o.atol >= T::kAtolMin && o.atol <= T::kTolMax))
+    os << "atol = " << o.atol << " must lie in [" << T::kAtolMin << ", " << T::kTolMax << "]";
+  else if (o.integrator == Integrator::kCvode &&
+           !(o.rtol >= T::kCvodeRtolMin && o.atol >= T::kCvodeAtolMin))
+    os << "rtol = " << o.rtol << ", atol = " << o.atol
+       << ": CVODE needs rtol >= " << T::kCvodeRtolMin << " and atol >= " << T::kCvodeAtolMin;
+  else if (o.max_steps < 1)
+    os << "max_steps = " << o.max_steps << " must be >= 1";
+  else if (o.max_switches < 1)
+    os << "max_switches = " << o.max_switches << " must be >= 1";
+  return os.str();
+}
+}  // namespace
+
+Flow::Flow(const System& system, const FlowOptions& options)
+    : system_(system.Clone()), options_(options) {
+  std::string err = CoreError(options);
+  if (err.empty()) err = system.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+}
+
+Flow::~Flow() = default;
+
+void Flow::set_system(const System& system) {
+  const bool same_shape = system.dimension() == system_->dimension() &&
+                          system.contacts() == system_->contacts() &&
+                          system.clocks() == system_->clocks();
+  if (!system_->Assign(system)) system_ = system.Clone();
+  if (!same_shape) engine_.reset();  // its steppers are sized for the old system
+  if (engine_) engine_->Invalidate();
+}
+
+void Flow::set_parameter_column(int j) {
+  if (!system_->SupportsParameterColumn(j))
+    throw InvalidArgument(
+        "parameter column: '" +
+        (j >= 0 && j < system_->parameters() ? system_->ParameterName(j) : std::to_string(j)) +
+        "' enters the friction law non-affinely (not supported)");
+  parameter_ = j;
+}
+
+void Flow::Run(const FlowPoint& start, const FlowRequest& request, FlowRun* out) {
+  if (!engine_) engine_ = std::make_unique<flow_detail::Engine>(*this);
+  engine_->Run(start, request, out);
+}
+
+}  // namespace stickslip

@@ -1,0 +1,110 @@
+// The events of one segment (engine.hpp): for each slipping contact its
+// arrival on h_i = 0, for each sticking one its exits at lambda_i = +-limit
+// (the field's auxiliary rows), the extrema asked for, and the sections.
+#include "flow/engine.hpp"
+
+namespace stickslip::flow_detail {
+
+namespace {
+bool SameSection(const Section& a, const Section& b) {
+  if (a.g.size != b.g.size || a.g.speed != b.g.speed || a.derivative != b.derivative ||
+      a.direction != b.direction || a.slip_below_only != b.slip_below_only)
+    return false;
+  for (int t = 0; t < a.g.size; ++t)
+    if (a.g.terms[t].index != b.g.terms[t].index || a.g.terms[t].weight != b.g.terms[t].weight)
+      return false;
+  return true;
+}
+}  // namespace
+
+// Whether rq asks for the events built last (extrema, sections, switching).
+bool Engine::SameShape(const FlowRequest& rq) const {
+  if (rq.switching != shape_switching_ || rq.extrema_in_steps != shape_in_steps_ ||
+      variational_ != shape_var_ || column_ != shape_col_ || rq.extrema != shape_extrema_ ||
+      rq.sections.size() != shape_sections_.size())
+    return false;
+  for (size_t i = 0; i < rq.sections.size(); ++i)
+    if (!SameSection(rq.sections[i], shape_sections_[i])) return false;
+  return true;
+}
+
+void Engine::BuildEvents(EventSet& set) {
+  EventList& ev = set.events;
+  ev.Clear();
+  set.roles.clear();
+  set.extremum_of.clear();
+  set.arrival_events.clear();
+  auto add = [&](const EventFunction& f) {
+    const int i = ev.Add(f);
+    if (i == static_cast<int>(set.roles.size())) {
+      set.roles.emplace_back();
+      set.extremum_of.emplace_back();
+    }
+    return i;
+  };
+  const FlowRequest& rq = *rq_;
+  const int aux = problem_.layout.aux_first();
+  int rank = 0;  // among the sticking contacts: their aux rows
+  for (int i = 0; i < k_ && rq.switching; ++i) {
+    if (mode_.sticks(i)) {
+      for (int sign : {1, -1}) {
+        EventFunction f;
+        f.size = 2;
+        f.terms[0] = {aux + 2 * rank, 1.0};
+        f.terms[1] = {aux + 2 * rank + 1, -static_cast<double>(sign)};
+        f.zero_sign = -sign;  // inside the band
+        f.deflate_at_start = false;
+        f.exit_contact = i;
+        f.exit_sign = sign;
+        const int g = add(f);
+        set.roles[g] = {FunctionRole::kExit, i, sign};
+        ev.Add(Event{g, sign, true, true});
+      }
+      ++rank;
+      continue;
+    }
+    const ContactVelocity& c = contacts_[i];
+    EventFunction f;
+    f.size = c.size;
+    for (int t = 0; t < c.size; ++t) f.terms[t] = {c.terms[t].index, c.terms[t].weight};
+    f.offset = c.speed;
+    f.zero_sign = mode_[i] == Mode::kSlipBelow ? -1 : 1;
+    f.surface = true;
+    const int g = add(f);
+    set.roles[g] = {FunctionRole::kArrival, i, 0};
+    // Arrival ends the segment (at_start: set per segment, Segment()).
+    set.arrival_events.push_back(ev.events());
+    ev.Add(Event{g, kAnyRoot, true, false});
+  }
+  for (int p = 0; rq.extrema_in_steps && p < static_cast<int>(rq.extrema.size()); ++p) {
+    const int j = rq.extrema[p];
+    EventFunction f;
+    f.size = 1;
+    f.terms[0] = {derivative_of_[j] >= 0 ? derivative_of_[j] : j, 1.0};
+    f.derivative = derivative_of_[j] < 0;
+    // The extremum of x where x' = v is an arrival (v = 0: a floor): the
+    // switch there records it (Extend), and its roots are not sought twice.
+    bool arrival = false;
+    for (int i = 0; i < ev.functions(); ++i)
+      arrival = arrival || (set.roles[i].kind == FunctionRole::kArrival &&
+                            ev.function(i).SameShape(f) && ev.function(i).offset == f.offset);
+    if (arrival) continue;
+    const int g = add(f);
+    set.extremum_of[g].push_back(p);
+    ev.Add(Event{g, kAnyRoot, false});
+  }
+  for (int sx = 0; sx < static_cast<int>(rq.sections.size()); ++sx) {
+    const Section& sec = rq.sections[sx];
+    if (sec.slip_below_only && mode_[0] != Mode::kSlipBelow) continue;
+    EventFunction f;
+    f.size = sec.g.size;
+    for (int t = 0; t < sec.g.size; ++t) f.terms[t] = {sec.g.terms[t].index, sec.g.terms[t].weight};
+    f.offset = sec.g.speed;
+    f.derivative = sec.derivative;
+    const int g = add(f);
+    set.roles[g] = {FunctionRole::kSection, sx, 0};
+    ev.Add(Event{g, sec.direction == 0 ? kAnyRoot : sec.direction, true});
+  }
+}
+
+}  // namespace stickslip::flow_detail

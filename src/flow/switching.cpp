@@ -1,0 +1,166 @@
+// The switches of the flow (engine.hpp): Filippov's rule at an arrival on
+// h_i = 0 (stick while |lambda_i| <= mu_s N_i, else slip the way lambda_i
+// points), the exit of a stick phase at its static limit, and the saltation
+// matrix of each (Leine & Nijmeijer 2004, section 7.3; di Bernardo et al.
+// 2008, section 2.5): S = I + (f+ - f-) grad g^T / (grad g . f-).
+#include "stickslip/flow/switching.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "flow/engine.hpp"
+
+namespace stickslip {
+
+ModeSet ModeAfterArrival(const System& s, const ModeSet& before, int c, ConstState z) {
+  ModeSet stick = before;
+  stick.set(c, Mode::kStick);
+  const double lambda = s.StickForce(stick, c, z);
+  if (std::abs(lambda) <= s.StaticLimit(c, z)) return stick;
+  ModeSet after = before;
+  after.set(c, lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  return after;
+}
+
+void ContactGradient(const System& s, int c, StateOut grad) {
+  const ContactVelocity v = s.Contact(c);
+  grad.setZero();
+  for (int t = 0; t < v.size; ++t) grad[v.terms[t].index] += v.terms[t].weight;
+}
+
+bool Saltation(const System& s, const ModeSet& before, const ModeSet& after, ConstState z,
+               ConstState grad, MatrixOut S) {
+  const int n = s.dimension(), nt = s.tangent_dimension();
+  Eigen::VectorXd fb(n), fa(n);
+  s.Field(before, z, fb);
+  s.Field(after, z, fa);
+  S.setIdentity();
+  const double den = grad.dot(fb);
+  if (den == 0) return false;
+  S += ((fa - fb).head(nt) / den) * grad.head(nt).transpose();
+  return true;
+}
+
+}  // namespace stickslip
+
+namespace stickslip::flow_detail {
+
+namespace {
+// On the surface h = 0 exactly where one component carries the velocity.
+void OnSurface(const ContactVelocity& c, Eigen::VectorXd& z) {
+  if (c.size == 1 && (c.terms[0].weight == 1 || c.terms[0].weight == -1))
+    z[c.terms[0].index] = c.terms[0].weight * c.speed;
+}
+}  // namespace
+
+bool Engine::Switch(const std::vector<int>& roots) {
+  // Contact events first, in contact order (several at one instant are a
+  // normal outcome: each contact's rule in turn); a section only ends the
+  // run when no contact switched there.
+  int section = -1;
+  bool contact = false;
+  for (int i = 0; i < static_cast<int>(roots.size()); ++i) {
+    if (roots[i] == 0) continue;
+    if (cur_->roles[i].kind == FunctionRole::kSection) {
+      if (section < 0) section = cur_->roles[i].index;
+    } else if (cur_->roles[i].kind != FunctionRole::kExtremum) {
+      contact = true;
+    }
+  }
+  if (!contact) {
+    out_->section = section;
+    // On the section exactly where one component carries it (x' = 0).
+    const Section& sec = rq_->sections[section];
+    if (!sec.derivative) OnSurface(sec.g, z_);
+    return Done(FlowStatus::kSection);
+  }
+  for (int c = 0; c < k_; ++c)
+    for (int i = 0; i < static_cast<int>(roots.size()); ++i) {
+      if (roots[i] == 0 || cur_->roles[i].index != c) continue;
+      if (cur_->roles[i].kind == FunctionRole::kArrival && !Arrive(c)) return false;
+      if (cur_->roles[i].kind == FunctionRole::kExit && !Exit(c, cur_->roles[i].sign)) return false;
+    }
+  return true;
+}
+
+bool Engine::Arrive(int c) {
+  const ModeSet before = mode_;
+  OnSurface(contacts_[c], z_);
+  const ModeSet next = ModeAfterArrival(*s_, before, c, z_);
+  grad_.resize(n_);
+  ContactGradient(*s_, c, grad_);
+  if (next[c] == Mode::kStick) {
+    const ModeSet& stick = next;
+    if (rq_->stop_at_stick) return Done(FlowStatus::kStick);
+    Saltation(before, stick, grad_);
+    mode_ = stick;
+    ++out_->sticks;
+    Record(SwitchKind::kStickIn, c, before, stick);
+    return true;
+  }
+  const ModeSet& after = next;
+  if (after == before) {  // a touch: the flow turns back on its side
+    ++out_->touches;
+    Record(SwitchKind::kTouch, c, before, after);
+    return true;
+  }
+  Saltation(before, after, grad_);
+  mode_ = after;
+  ++out_->crossings;
+  Record(SwitchKind::kCrossing, c, before, after);
+  return true;
+}
+
+bool Engine::Exit(int c, int sign) {
+  const ModeSet before = mode_;
+  ModeSet after = before;
+  after.set(c, sign > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  // On the band's edge exactly: the stick line there differs by the root's
+  // error; kept, it left x'' of that size and either sign at the start of
+  // slip (docs/theory.md, "Stick exits").
+  const double limit = s_->StaticLimit(c, z_);
+  s_->ProjectOnExit(before, c, sign * limit, z_);
+  OnSurface(contacts_[c], z_);
+  if (variational_) {
+    grad_.resize(n_);
+    grad2_.resize(n_);
+    s_->StickForceGradient(before, c, z_, grad_);
+    s_->StaticLimitGradient(c, z_, grad2_);
+    grad_ -= sign * grad2_;
+    Saltation(before, after, grad_);
+  }
+  mode_ = after;
+  ++out_->exits;
+  Record(SwitchKind::kStickOut, c, before, after);
+  if (rq_->stop_at_exit > 0 && out_->exits >= rq_->stop_at_exit)
+    return Done(FlowStatus::kStickExit);
+  return true;
+}
+
+void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad) {
+  if (!variational_) return;
+  f_before_.resize(n_);
+  f_after_.resize(n_);
+  s_->Field(before, z_, f_before_);
+  s_->Field(after, z_, f_after_);
+  const double den = grad.dot(f_before_);
+  if (den == 0) return;  // a tangential event: no finite saltation (measure zero)
+  // M <- S M = M + ((f+ - f-) / den) (grad^T M), on the tangent block.
+  tmp_.noalias() = grad.head(nt_).transpose() * M_;
+  M_.noalias() += ((f_after_ - f_before_).head(nt_) / den) * tmp_;
+}
+
+void Engine::Record(SwitchKind kind, int c, const ModeSet& before, const ModeSet& after) {
+  FlowRun& r = *out_;
+  if (kind != SwitchKind::kTouch) {
+    ++r.switches;
+    r.modes.push_back(after);
+  }
+  Extend(z_.data());
+  last_switch_t_ = t_;
+  if (rq_->observer && rq_->output_dt > 0) rq_->observer(t_, z_.data(), after);
+  if (rq_->step_observer) rq_->step_observer(t_, z_.data(), after);
+  if (rq_->switches) rq_->switches->push_back(FlowSwitch{kind, t_, c, z_, before, after});
+}
+
+}  // namespace stickslip::flow_detail

@@ -1,0 +1,50 @@
+// The system interface's own parts (system.hpp, mode.hpp): names, parameter
+// lookup and the generic projection onto a stick exit.
+#include "stickslip/system/system.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace stickslip {
+
+const char* ModeName(Mode m) { return Name(m); }
+
+std::string ModeSetName(const ModeSet& m, int contacts) {
+  if (contacts <= 1) return ModeName(m[0]);
+  std::string s;
+  for (int i = 0; i < contacts; ++i) {
+    if (i) s += ',';
+    s += ModeName(m[i]);
+  }
+  return s;
+}
+
+int System::ParameterIndex(const std::string& name) const {
+  for (int j = 0; j < parameters(); ++j)
+    if (ParameterName(j) == name) return j;
+  return -1;
+}
+
+// One Newton step on r(z) = lambda_i(z) - bound along the gradient of r,
+// restricted to the components no sticking contact's velocity reads and no
+// clock: exact where lambda is linear in them (a spring force).
+void System::ProjectOnExit(const ModeSet& m, int i, double bound, StateOut z) const {
+  const int n = dimension(), nt = tangent_dimension();
+  std::vector<bool> free(n, false);
+  for (int j = 0; j < nt; ++j) free[j] = true;
+  for (int c = 0; c < contacts(); ++c) {
+    if (!m.sticks(c)) continue;
+    const ContactVelocity v = Contact(c);
+    for (int t = 0; t < v.size; ++t) free[v.terms[t].index] = false;
+  }
+  Eigen::VectorXd g(n), gl(n);
+  StickForceGradient(m, i, z, g);
+  for (int j = 0; j < n; ++j)
+    if (!free[j]) g[j] = 0;
+  const double norm2 = g.squaredNorm();
+  if (!(norm2 > 0)) return;
+  const double r = StickForce(m, i, z) - bound;
+  z -= (r / norm2) * g;
+}
+
+}  // namespace stickslip
