@@ -66,17 +66,7 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   for (int j : rq.extrema)
     if (j < 0 || j >= n_) throw InvalidArgument("Flow::Run: extremum of no component " + Num(j));
   CheckStart(*s_, start);
-  if (!system_read_) {
-    contacts_.resize(k_);
-    for (int i = 0; i < k_; ++i) contacts_[i] = s_->Contact(i);
-    derivative_of_.resize(n_);
-    for (int i = 0; i < n_; ++i) derivative_of_[i] = s_->DerivativeOf(i);
-    problem_.derivative_of = derivative_of_;
-    problem_.rest_speed = 0;
-    for (const ContactVelocity& c : contacts_)
-      problem_.rest_speed = std::max(problem_.rest_speed, std::abs(c.speed));
-    system_read_ = true;
-  }
+  if (!system_read_) ReadSystem();
   variational_ = rq.variational || rq.parameter_column;
   column_ = rq.parameter_column;
   if (!SameShape(rq)) {
@@ -171,9 +161,13 @@ void Engine::UseEvents() {
     next_set_ = (next_set_ + 1) % kEventSets;
     set->mode = mode_;
     BuildEvents(*set);
+    set->used = true;
+    set->rest_epoch = -1;
+  }
+  if (set->rest_epoch != rest_epoch_) {
     set->rest.resize(n_);
     set->has_rest = !mode_.AnySticks() && s_->Rest(mode_, set->rest, &set->rest_stable);
-    set->used = true;
+    set->rest_epoch = rest_epoch_;
   }
   if (fresh || cur_ != set) problem_.events = set->events;
   cur_ = set;

@@ -26,10 +26,7 @@ class Engine {
   explicit Engine(Flow& flow);
   void Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out);
   // The system changed (Flow::set_system): its contacts are read again.
-  void Invalidate() {
-    system_read_ = false;
-    ForgetEvents();
-  }
+  void Invalidate() { system_read_ = false; }
   void ForgetEvents() {
     for (EventSet& e : sets_) e.used = false;
   }
@@ -43,6 +40,7 @@ class Engine {
   void BuildEvents(EventSet& set);
   // The events of the current mode (built or reused) in problem_.
   void UseEvents();
+  void ReadSystem();
   // The switches at a terminal root (switching.cpp); false when the run ends.
   bool Switch(const std::vector<int>& roots);
   bool Arrive(int contact);
@@ -70,6 +68,7 @@ class Engine {
   std::vector<ContactVelocity> contacts_;
   std::vector<int> derivative_of_;
   bool system_read_ = false;  // contacts_, derivative_of_ are the system's
+  long rest_epoch_ = 0;       // counts the systems read
   // The request's shape the event sets were built for (SameShape).
   bool shape_switching_ = true, shape_in_steps_ = true, shape_var_ = false, shape_col_ = false;
   std::vector<int> shape_extrema_;
@@ -97,6 +96,7 @@ class Engine {
     std::vector<int> arrival_events;             // indexes into events, one per arrival
     bool has_rest = false, rest_stable = false;  // System::Rest of the mode
     Eigen::VectorXd rest;
+    long rest_epoch = -1;  // rest is of the system read at this epoch
   };
   static constexpr int kEventSets = 4;
   EventSet sets_[kEventSets];

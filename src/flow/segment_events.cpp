@@ -1,6 +1,9 @@
 // The events of one segment (engine.hpp): for each slipping contact its
 // arrival on h_i = 0, for each sticking one its exits at lambda_i = +-limit
 // (the field's auxiliary rows), the extrema asked for, and the sections.
+#include <algorithm>
+#include <cmath>
+
 #include "flow/engine.hpp"
 
 namespace stickslip::flow_detail {
@@ -26,6 +29,32 @@ bool Engine::SameShape(const FlowRequest& rq) const {
   for (size_t i = 0; i < rq.sections.size(); ++i)
     if (!SameSection(rq.sections[i], shape_sections_[i])) return false;
   return true;
+}
+
+// The system's contacts and derivatives: event sets built for the same ones
+// are kept (a parameter changed), their rest points recomputed.
+void Engine::ReadSystem() {
+  bool same =
+      static_cast<int>(contacts_.size()) == k_ && static_cast<int>(derivative_of_.size()) == n_;
+  for (int i = 0; same && i < k_; ++i) {
+    const ContactVelocity c = s_->Contact(i), &o = contacts_[i];
+    same = c.size == o.size && c.speed == o.speed;
+    for (int t = 0; same && t < c.size; ++t)
+      same = c.terms[t].index == o.terms[t].index && c.terms[t].weight == o.terms[t].weight;
+  }
+  for (int i = 0; same && i < n_; ++i) same = derivative_of_[i] == s_->DerivativeOf(i);
+  ++rest_epoch_;
+  system_read_ = true;
+  if (same) return;
+  ForgetEvents();
+  contacts_.resize(k_);
+  for (int i = 0; i < k_; ++i) contacts_[i] = s_->Contact(i);
+  derivative_of_.resize(n_);
+  for (int i = 0; i < n_; ++i) derivative_of_[i] = s_->DerivativeOf(i);
+  problem_.derivative_of = derivative_of_;
+  problem_.rest_speed = 0;
+  for (const ContactVelocity& c : contacts_)
+    problem_.rest_speed = std::max(problem_.rest_speed, std::abs(c.speed));
 }
 
 void Engine::BuildEvents(EventSet& set) {
