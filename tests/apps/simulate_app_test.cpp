@@ -45,7 +45,7 @@ class SimulateApp : public stickslip::testing_util::AppTest {
   };
 
   // Runs ss_simulate with the arguments (each quoted for the shell), without
-  // figures (tests/io/figure_format_test.cpp draws them).
+  // figures (tests/io/figure_format_app_test.cpp draws them).
   Result Run(const std::vector<std::string>& args) {
     std::string words = " --no_plots";
     for (const auto& a : args) words += " " + ShellQuoted(a);
