@@ -164,10 +164,10 @@ void Engine::UseEvents() {
     set->used = true;
     set->rest_epoch = -1;
   }
-  if (set->rest_epoch != rest_epoch_) {
+  if (set->rest_epoch != system_epoch_) {
     set->rest.resize(n_);
     set->has_rest = !mode_.AnySticks() && s_->Rest(mode_, set->rest, &set->rest_stable);
-    set->rest_epoch = rest_epoch_;
+    set->rest_epoch = system_epoch_;
   }
   if (fresh || cur_ != set) problem_.events = set->events;
   cur_ = set;
@@ -182,6 +182,7 @@ bool Engine::Segment() {
   const FlowOptions& o = flow_.options_;
   SegmentProblem& p = problem_;
   p.system = s_;
+  p.system_epoch = system_epoch_;
   p.mode = mode_;
   p.contacts = k_;
   p.rtol = o.rtol;

@@ -68,7 +68,7 @@ class Engine {
   std::vector<ContactVelocity> contacts_;
   std::vector<int> derivative_of_;
   bool system_read_ = false;  // contacts_, derivative_of_ are the system's
-  long rest_epoch_ = 0;       // counts the systems read
+  long system_epoch_ = 0;     // counts the systems read (rest points, Taylor binds)
   // The request's shape the event sets were built for (SameShape).
   bool shape_switching_ = true, shape_in_steps_ = true, shape_var_ = false, shape_col_ = false;
   std::vector<int> shape_extrema_;

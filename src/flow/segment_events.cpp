@@ -43,7 +43,7 @@ void Engine::ReadSystem() {
       same = c.terms[t].index == o.terms[t].index && c.terms[t].weight == o.terms[t].weight;
   }
   for (int i = 0; same && i < n_; ++i) same = derivative_of_[i] == s_->DerivativeOf(i);
-  ++rest_epoch_;
+  ++system_epoch_;
   system_read_ = true;
   if (same) return;
   ForgetEvents();

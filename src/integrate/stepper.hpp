@@ -32,6 +32,9 @@ struct StepHook {
 // and what the steppers need of the system.
 struct SegmentProblem {
   const System* system = nullptr;
+  // Changes whenever the system's values may have (the Taylor field is bound
+  // again); -1: always bind.
+  long system_epoch = -1;
   ModeSet mode;
   int contacts = 1;
   double rtol = 0, atol = 0;

@@ -15,13 +15,16 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   p_ = &problem;
   // The system's recurrences for this mode (taylor_field.hpp); Bind refuses
   // a system of another type.
-  if (!field_ || !field_->Bind(*problem.system, problem.mode)) {
+  const bool bound = field_ && problem.system_epoch >= 0 && problem.system == bound_system_ &&
+                     problem.system_epoch == bound_epoch_ && problem.mode == bound_mode_;
+  if (!bound && (!field_ || !field_->Bind(*problem.system, problem.mode))) {
     TaylorRequest rq;
     rq.variational = variational_;
     rq.parameter = parameter_;
     field_ = problem.system->MakeTaylorField(rq);
     field_->Bind(*problem.system, problem.mode);
   }
+  bound_system_ = problem.system, bound_epoch_ = problem.system_epoch, bound_mode_ = problem.mode;
   bool in_steps = false;  // a non-terminal event: roots inside steps
   for (int k = 0; k < problem.events.events(); ++k)
     in_steps = in_steps || !problem.events.event(k).terminal;
@@ -111,19 +114,21 @@ double TaylorStepper::StepSize(int order, int jz_order) const {
   return std::exp(std::min(r1, r2) - (2.0 + 0.7 / (p - 1)) * (p + 1) / (order + 1));
 }
 
+// A non-finite coefficient of order j makes every later one of its chain
+// non-finite (each order is sums and products of the ones before, divided
+// by finite constants; 0 * inf and inf - inf are NaN): the last two orders
+// of each row tell.
 inline bool TaylorStepper::FiniteCoefficients() const {
-  // 0 * c is 0 for finite c and NaN otherwise: one branch (two sums, not one chain).
+  // 0 * c is 0 for finite c and NaN otherwise: one branch.
   const TaylorRow* r = c();
-  double probe0 = 0, probe1 = 0;
+  double probe = 0;
   // The state, Phi and column rows (the auxiliary ones follow from them;
   // anchored clocks are exact).
   const int skip_to = p_->clock_rate ? clock_last_ : clock_first_;
-  for (int i = 0; i < m_; i = i + 1 == clock_first_ ? skip_to : i + 1) {
-    int k = 0;
-    for (; k + 1 <= order_; k += 2) probe0 += 0.0 * r[i][k], probe1 += 0.0 * r[i][k + 1];
-    if (k == order_) probe0 += 0.0 * r[i][k];
-  }
-  return probe0 + probe1 == 0;
+  const int lo = std::max(0, order_ - 1);
+  for (int i = 0; i < m_; i = i + 1 == clock_first_ ? skip_to : i + 1)
+    probe += 0.0 * r[i][lo] + 0.0 * r[i][order_];
+  return probe == 0;
 }
 
 bool TaylorStepper::NewStep() {

@@ -132,6 +132,10 @@ class TaylorStepper final : public Stepper {
   double hp_[kTaylorRowSize];  // powers of this step's h
   std::optional<int> parameter_;
   std::unique_ptr<TaylorField> field_;
+  // What field_ was bound to last (SegmentProblem::system_epoch).
+  const System* bound_system_ = nullptr;
+  long bound_epoch_ = -1;
+  ModeSet bound_mode_;
   std::vector<double> center_;      // TaylorField::ScaleCenter per state component
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double t0_ = 0;                   // the last Reset's start
