@@ -105,7 +105,10 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
                       std::optional<double> max_step, std::optional<bool> floquet,
                       std::optional<double> rtol, std::optional<double> atol,
                       const py::object& integrator, const py::object& method,
-                      std::optional<ContinuationOptions> options) {
+                      std::optional<ContinuationOptions> options, const py::object& progress) {
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress must be a callable, not " +
+                         py::str(py::type::of(progress).attr("__name__")).cast<std::string>());
   ContinuationOptions opts = options.value_or(ContinuationOptions());
   if (param) opts.param = ParameterAxis(*param);  // InvalidArgument for an unknown name
   if (!options) {  // the library's range for this parameter around base
@@ -118,16 +121,21 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   if (floquet) opts.stick_slip_floquet = *floquet;
   opts.orbit.flow = Solver(opts.orbit.flow, rtol, atol, integrator, method);
   Interrupt interrupt;
-  opts.cancelled = [&] { return interrupt(); };
+  ProgressCall call(progress);
+  opts.cancelled = [&] { return call.failed() || interrupt(); };
+  if (!progress.is_none()) {
+    long n = 0;
+    opts.progress = [&](const BranchPoint& q) { call(++n, q.p, PointKindName(q.kind), q.stable); };
+  }
   ContinuationResult r;
   {
     py::gil_scoped_release nogil;
     r = Continue(base, opts);  // throws InvalidArgument on bad options
   }
   interrupt.RaiseIfInterrupted();
+  call.RaiseIfFailed();
   if (r.status == ContinuationStatus::kFailed) RaiseNumerical(r.message);
-  return Branch{r.param.name(),         r.status,  r.message, r.warnings,
-                BranchPoints(r.points), r.special, r.counts,  r.seconds};
+  return MakeBranch(std::move(r), base, std::move(opts));
 }
 
 OrbitScanOptions ScanOptions(std::optional<OrbitScanOptions> options, std::optional<int> samples,
@@ -228,10 +236,12 @@ void BindCompute(py::module_& m) {
         py::arg("from_") = none, py::arg("to") = none, py::arg("max_step") = none,
         py::arg("floquet") = none, py::arg("rtol") = none, py::arg("atol") = none,
         py::arg("integrator") = none, py::arg("method") = none, py::arg("options") = none,
+        py::arg("progress") = none,
         "Branches in one parameter (as ss_continue) from from_ to to: a Branch with points "
         "(arrays), special (GR/HB/LP SpecialPoints), status and message. param defaults to "
         "'v'; from_/to to default_range(params, param), or to options' values. Keywords "
-        "override options (a ContinuationOptions).");
+        "override options (a ContinuationOptions). progress(pt, p, kind, stable) is called "
+        "after every point; an exception it raises stops the run and is raised again.");
   m.def("periodic_orbits", &PeriodicOrbitsAt, py::arg("params"), py::arg("samples") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
         py::arg("method") = none, py::arg("options") = none,
