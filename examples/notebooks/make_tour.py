@@ -36,7 +36,7 @@ cells = [
         "(AUTO's IRS; `b.save(dir)` writes the run as `ss_continue` does)."),
     new_code_cell(
         "hb1 = b.restart('HB1')\n"
-        "in_beta = stickslip.continue_branch(hb1.params, options=hb1.options('beta', to=0.0))\n"
+        "in_beta = stickslip.continue_branch(hb1.params, options=hb1.options('beta'))\n"
         "in_beta"),
     new_markdown_cell("## A stability chart in (v, beta), with its regions"),
     new_code_cell(
@@ -50,7 +50,7 @@ cells = [
     new_code_cell(
         "st = stickslip.Params(law='stribeck', beta=0.01, v=0.1, mu_s=0.4, mu_k=0.25, v_s=0.5)\n"
         "fp = stickslip.ForcedParams(st, force=0.5)\n"
-        "d = stickslip.orbit_diagram(fp, 'omega', 0.6, 1.2, n=30, transient=40, keep=16)\n"
+        "d = stickslip.orbit_diagram(fp, stickslip.ForcedAxis.omega, 0.2, 1.2, n=100)\n"
         "stickslip.plot.orbit_diagram(d, axis='omega', y='x');"),
 ]
 nb = new_notebook(cells=cells, metadata={

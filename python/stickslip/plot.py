@@ -234,7 +234,8 @@ def orbit_diagram(d, axis="omega", y="x", ax=None):
     for name, color in (("up", "#0072b2"), ("down", "#d55e00")):
         sel = direction == name
         if sel.any():
-            ax.plot(value[sel], ys[sel], ",", color=color, alpha=0.8, rasterized=True)
+            ax.plot(value[sel], ys[sel], ".", ms=3.5 if name == "up" else 2, mew=0, color=color,
+                    rasterized=True)
             ax.plot([], [], "o", ms=3, color=color, label="sweep " + name)
     ax.set_xlabel(label(axis))
     ax.set_ylabel(label(y) + " at the section")

@@ -29,6 +29,9 @@ def main(path, min_figures):
     figures = sum(1 for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
                   if "image/png" in o.get("data", {}))
     print("run_notebook: %d cells ran, %d figures" % (len(nb.cells), figures))
+    out = os.environ.get("STICKSLIP_NOTEBOOK_OUT")  # keep the executed notebook to look at
+    if out:
+        nbformat.write(nb, out)
     if figures < min_figures:
         print("run_notebook: expected at least %d figures" % min_figures)
         return 1
