@@ -77,11 +77,26 @@ def _branch_html(b):
     return _html("Branch in " + b.param, _branch_summary(b), (head, body) if body else None)
 
 
-def _branch_pandas(b):
+def _branch_pandas(b, mass=None, stiffness=None, gravity=9.81):
+    """The rows as a DataFrame. With mass [kg] and stiffness [N/m], also ss_continue's
+    physical columns: belt_speed [m/s] (for v) or damping [N s/m] (for beta), x_min_m,
+    x_max_m, period_s (scales L = M g / K, t0 = sqrt(M / K), seed section 3)."""
     import pandas as pd
     cols = b.points.keys()
     df = pd.DataFrame({(b.param if c == "p" else c): getattr(b.points, c) for c in cols})
     df.attrs.update({"param": b.param, "status": _status(b)})
+    if (mass is None) != (stiffness is None):
+        raise TypeError("to_pandas: mass and stiffness go together")
+    if mass is not None:
+        L, t0 = _core.scales(mass, stiffness, gravity)  # ValueError for bad values
+        if b.param == "v":
+            df["belt_speed"] = df["v"] * L / t0
+        elif b.param == "beta":
+            df["damping"] = df["beta"] * 2 * (stiffness * mass) ** 0.5
+        df["x_min_m"] = df["x_min"] * L
+        df["x_max_m"] = df["x_max"] * L
+        df["period_s"] = df["period"] * t0
+        df.attrs.update({"L": L, "t0": t0})
     return df
 
 

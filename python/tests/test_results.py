@@ -241,6 +241,16 @@ class ParamsChecks(unittest.TestCase):
         self.assertEqual(stickslip.Params(beta=np.float64(0.1)).beta, 0.1)
         self.assertEqual(stickslip.Params(beta=np.int64(0)).beta, 0.0)
 
+    def test_physical_columns_round_trip_through_from_physical(self):
+        M, K = 2.0, 800.0
+        df = Seed.get().to_pandas(mass=M, stiffness=K)
+        V = df["belt_speed"].iloc[10]
+        p = stickslip.Params.from_physical(mass=M, stiffness=K, damping=0.05 * 2 * math.sqrt(K * M),
+                                           belt_speed=V)
+        self.assertAlmostEqual(p.v, df["v"].iloc[10], places=12)
+        self.assertAlmostEqual(df["x_max_m"].iloc[10], df["x_max"].iloc[10] * M * 9.81 / K)
+        self.assertAlmostEqual(df["period_s"].iloc[10], df["period"].iloc[10] * math.sqrt(M / K))
+
     def test_physical_inputs_scale_as_the_seed(self):
         # v = V / (g sqrt(M / K)) and beta = C / (2 sqrt(K M)) (seed section 3).
         M, K, C, V = 2.0, 800.0, 4.0, 0.5
@@ -268,6 +278,11 @@ class Progress(unittest.TestCase):
 
         with self.assertRaises(Stop):
             stickslip.continue_branch(stickslip.Params(), "v", from_=0.2, to=0.5, progress=stop)
+
+    def test_basins_report_every_start(self):
+        calls = []
+        stickslip.basins(stickslip.Params(), nx=4, ny=3, progress=lambda d, n: calls.append((d, n)))
+        self.assertEqual(sorted(calls), [(d, 12) for d in range(1, 13)])
 
 
 if __name__ == "__main__":
