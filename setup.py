@@ -62,7 +62,7 @@ def reusable_build():
     if not cache.exists():
         return None
     text = cache.read_text(errors="replace")
-    py = re.search(r"^Python3_EXECUTABLE:\w+=(.*)$", text, re.M)
+    py = re.search(r"^_?Python3_EXECUTABLE:\w+=(.*)$", text, re.M)  # find_package: _Python3_...
     kind = re.search(r"^CMAKE_BUILD_TYPE:\w+=(.*)$", text, re.M)
     sanitize = re.search(r"^STICKSLIP_SANITIZE:\w+=(ON|TRUE|1)$", text, re.M | re.I)
     if not py or not kind or kind.group(1) != "Release" or sanitize:
