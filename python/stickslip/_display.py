@@ -125,17 +125,23 @@ def _write(path, text):
         raise
 
 
-def _branch_to_tsv(b, path, command="continue_branch(...)"):
+def _command(b):
+    """The call that makes b again (its solver options aside: they are their own lines)."""
+    return "stickslip.continue_branch(%r, %r, from_=%r, to=%r, max_step=%r)" % (
+        b.params, b.param, b.options.from_, b.options.to, b.options.max_step)
+
+
+def _branch_to_tsv(b, path, command=None):
     """Writes branch.tsv's text (ss_continue's columns and '# key: value' metadata) to path."""
-    _write(path, b.tables(command)["branch.tsv"])
+    _write(path, b.tables(command or _command(b))["branch.tsv"])
 
 
-def _branch_save(b, directory, command="continue_branch(...)"):
+def _branch_save(b, directory, command=None):
     """Writes branch.tsv and special_points.tsv into directory (made if missing), as
     ss_continue does: stickslip.restart(directory, 'GR1') then starts from a point."""
     directory = os.fspath(directory)
     os.makedirs(directory, exist_ok=True)
-    for name, text in b.tables(command).items():
+    for name, text in b.tables(command or _command(b)).items():
         _write(os.path.join(directory, name), text)
     return directory
 
