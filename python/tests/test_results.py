@@ -231,6 +231,14 @@ class Figures(unittest.TestCase):
         self.assertTrue(ax.get_lines())
         plt.close(ax.figure)
 
+    def test_forced_basins_plot_marks_every_attractor(self):
+        import matplotlib.pyplot as plt
+        fp = stickslip.ForcedParams(stickslip.Params(), force=0.2, omega=0.8)
+        d = stickslip.forced_basins(fp, nx=8, ny=6)
+        ax = plot.forced_basins(d, 8, 6)
+        self.assertEqual(len(ax.texts), len(d["attractors"]))
+        plt.close(ax.figure)
+
     def test_basins_plot(self):
         import matplotlib.pyplot as plt
         ax = stickslip.basins(stickslip.Params(), nx=6, ny=5).plot()
