@@ -555,6 +555,10 @@ def continue_branch(params: Params, param: Optional[str] = None, from_: Optional
                     options: Optional[ContinuationOptions] = None,
                     progress: Optional[Callable[[int, float, str, bool], Any]] = None
                     ) -> Branch: ...
+def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
+                      from_: Optional[float] = None, to: Optional[float] = None,
+                      progress: Optional[Callable[[int, float, str, bool], Any]] = None,
+                      **inputs: float) -> Branch: ...
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,

@@ -275,6 +275,24 @@ class ParamsChecks(unittest.TestCase):
         self.assertAlmostEqual(df["x_max_m"].iloc[10], df["x_max"].iloc[10] * M * 9.81 / K)
         self.assertAlmostEqual(df["period_s"].iloc[10], df["period"].iloc[10] * math.sqrt(M / K))
 
+    def test_a_branch_in_belt_speed_has_the_seeds_grazing_point(self):
+        # The seed set in physical form: C = 2 beta sqrt(K M), mu as the seed's; the GR point
+        # in v is ss_continue's 0.39579028879784 (README), in m/s v L / t0 = v g sqrt(M / K).
+        M, K = 2.0, 800.0
+        speed = 9.81 * math.sqrt(M / K)  # m/s per unit of v
+        b = stickslip.continue_physical(mass=M, stiffness=K, damping=0.1 * math.sqrt(K * M),
+                                        belt_speed=0.25 * speed, mu_s=0.4, mu_m=0.25,
+                                        speed_m=0.5 * speed, param="belt_speed",
+                                        from_=0.2 * speed, to=0.5 * speed)
+        self.assertEqual(b.param, "v")
+        self.assertAlmostEqual(b.points.p[0], 0.2, places=12)
+        gr = [s for s in b.special if s.label == "GR"][0]
+        self.assertAlmostEqual(gr.p, 0.39579028879784, delta=1e-9)
+        df = b.to_pandas(mass=M, stiffness=K)
+        self.assertAlmostEqual(df["belt_speed"].iloc[gr.pt - 1], df["v"].iloc[gr.pt - 1] * speed)
+        with self.assertRaisesRegex(ValueError, "mass"):
+            stickslip.continue_physical(mass=M, param="mass")
+
     def test_physical_inputs_scale_as_the_seed(self):
         # v = V / (g sqrt(M / K)) and beta = C / (2 sqrt(K M)) (seed section 3).
         M, K, C, V = 2.0, 800.0, 4.0, 0.5
