@@ -10,7 +10,15 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/stickslip DESTINATION ${CMAKE_IN
   FILES_MATCHING PATTERN "*.hpp")
 install(TARGETS ${STICKSLIP_APP_TARGETS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/CITATION.cff
-  DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/stickslip)
+  ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/stickslip)
+# The docs (with their figures) and the studies: `--study NAME` finds an
+# installed study by name (src/cli/study_path.cpp).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/stickslip)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/studies/ DESTINATION ${CMAKE_INSTALL_DATADIR}/stickslip/studies
+  FILES_MATCHING PATTERN "*.ini")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/notebooks/
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/stickslip/examples/notebooks OPTIONAL
+  FILES_MATCHING PATTERN "*.ipynb")
 
 set(STICKSLIP_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/stickslip)
 install(EXPORT stickslipTargets NAMESPACE stickslip:: DESTINATION ${STICKSLIP_CMAKE_DIR})

@@ -12,6 +12,7 @@
 
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/model/forced.hpp"
 #include "stickslip/model/model.hpp"
 #include "stickslip/model/params.hpp"
 #include "stickslip/version.hpp"
@@ -21,17 +22,45 @@ namespace ss = stickslip;
 using namespace stickslip::python;
 
 namespace {
-// A law by name ('cubic') or as stickslip.Law.
+std::string TypeName(const py::handle& x) {
+  return py::str(py::type::of(x).attr("__name__")).cast<std::string>();
+}
+
+// A law by name ('cubic') or as stickslip.Law; anything else is a TypeError.
 ss::LawKind LawOf(const py::object& law) {
   if (py::isinstance<py::str>(law)) return ss::LawFromName(law.cast<std::string>());
-  return law.cast<ss::LawKind>();
+  if (py::isinstance<ss::LawKind>(law)) return law.cast<ss::LawKind>();
+  throw py::type_error("law must be a law's name ('cubic', ...) or a stickslip.Law, not " +
+                       TypeName(law) +
+                       (py::isinstance<ss::Params>(law) ? " (a Params has .law)" : ""));
+}
+
+// A parameter value: a real number (int, float, NumPy scalar), else TypeError.
+double NumberOf(const std::string& name, const py::handle& x) {
+  if (py::isinstance<py::bool_>(x) || !PyNumber_Check(x.ptr()) || PyComplex_Check(x.ptr()))
+    throw py::type_error(name + " must be a number, not " + TypeName(x));
+  return py::float_(py::reinterpret_borrow<py::object>(x)).cast<double>();
+}
+
+// Every parameter set, then the whole set validated (InvalidArgument naming the
+// value) by the rules every model shares: the forced model's, which also admit
+// v = 0 (a fixed floor) and Coulomb's mu_k = mu_s; the belt's computations
+// check those two themselves.
+void ValidateAnyModel(const ss::Params& p) {
+  ss::ForcedParams fp;
+  fp.base = p;
+  const std::string err = ss::ValidationError(fp);
+  if (!err.empty()) throw ss::InvalidArgument(err);
 }
 
 ss::Params MakeParams(const py::object& law, const py::kwargs& kwargs) {
   ss::Params p;
   p.law = LawOf(law);
-  for (const auto& item : kwargs)
-    ss::SetParameter(p, py::cast<std::string>(item.first), py::cast<double>(item.second));
+  for (const auto& item : kwargs) {
+    const std::string name = py::cast<std::string>(item.first);
+    ss::SetParameter(p, name, NumberOf(name, item.second));
+  }
+  ValidateAnyModel(p);
   return p;
 }
 
@@ -52,7 +81,7 @@ ss::Params FromPhysical(const py::object& law, const py::kwargs& kwargs) {
     for (const auto& [n, f] : fields)
       if (name == n) field = f;
     if (!field) throw ss::InvalidArgument("unknown physical input '" + name + "'");
-    *field = py::cast<double>(item.second);
+    *field = NumberOf(name, item.second);
   }
   ss::Params p = ss::ToDimensionless(ph);
   ss::Validate(p);
@@ -85,6 +114,8 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const py::cast_error& e) {  // pybind11's own is a RuntimeError
+      PyErr_SetString(PyExc_TypeError, e.what());
     } catch (const ss::InvalidArgument& e) {
       PyErr_SetString(invalid.ptr(), e.what());
     } catch (const ss::Error& e) {
@@ -96,8 +127,10 @@ PYBIND11_MODULE(_core, m) {
                          "Dimensionless model parameters; defaults are the seed set "
                          "(beta 0.05, v 0.25, mu_s 0.4, mu_m 0.25, v_m 0.5).")
       .def(py::init(&MakeParams), py::arg("law") = "cubic",
-           "Params(law='cubic', **values), e.g. Params(beta=0.1, v=0.3). Unknown names raise "
-           "InvalidArgument.")
+           "Params(law='cubic', **values), e.g. Params(beta=0.1, v=0.3). Unknown names and "
+           "invalid values raise InvalidArgument (a ValueError) naming the value; a value that "
+           "is not a number raises TypeError. Attributes set later are checked by validate() "
+           "and by every computation.")
       .def_property(
           "law", [](const ss::Params& p) { return std::string(ss::LawName(p.law)); },
           [](ss::Params& p, const py::object& law) { p.law = LawOf(law); }, "the law's name")
@@ -115,7 +148,8 @@ PYBIND11_MODULE(_core, m) {
                   "mu_s, mu_m, speed_m, mu_k, speed_s, delta) by the seed's scaling; validated.")
       .def_property_readonly("k1", &ss::Params::k1, "cubic law: 3 (mu_s - mu_m) / (2 v_m)")
       .def_property_readonly("k3", &ss::Params::k3, "cubic law: (mu_s - mu_m) / (2 v_m^3)")
-      .def("validation_error", &ss::ValidationError, "'' if valid, else one line naming the value")
+      .def("validation_error", py::overload_cast<const ss::Params&>(&ss::ValidationError),
+           "'' if valid, else one line naming the value")
       .def("validate", &ss::Validate, "Raises InvalidArgument naming the offending value.")
       .def("to_dict", &ParamsDict, "The law and its parameters.")
       .def("__repr__", [](const ss::Params& p) {

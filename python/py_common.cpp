@@ -112,4 +112,13 @@ py::object GetItem(const py::object& self, const std::string& key) {
   return self.attr(key.c_str());
 }
 
+ProgressCall::~ProgressCall() = default;  // with the GIL: the caller's frame holds it
+
+void ProgressCall::RaiseIfFailed() {
+  if (!error_) return;
+  py::error_already_set e = std::move(*error_);
+  error_.reset();
+  throw e;
+}
+
 }  // namespace stickslip::python

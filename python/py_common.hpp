@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,34 @@ class Interrupt {
   std::atomic<bool> fired_{false};
   std::chrono::steady_clock::time_point next_check_;
   PyObject *type_ = nullptr, *value_ = nullptr, *trace_ = nullptr;
+};
+
+// A Python progress callback called from a computation that runs without the
+// GIL: each call takes the GIL; the first exception it raises is kept, failed()
+// turns true (the cancel hook stops the run) and RaiseIfFailed() raises it
+// again once the GIL is back. None: calls do nothing.
+class ProgressCall {
+ public:
+  explicit ProgressCall(py::object fn) : fn_(std::move(fn)) {}
+  ~ProgressCall();
+  template <typename... A>
+  void operator()(A&&... args) {
+    if (fn_.is_none() || failed_.load()) return;
+    py::gil_scoped_acquire gil;
+    try {
+      fn_(std::forward<A>(args)...);
+    } catch (py::error_already_set& e) {
+      error_ = std::make_unique<py::error_already_set>(std::move(e));
+      failed_ = true;
+    }
+  }
+  bool failed() const { return failed_.load(); }
+  void RaiseIfFailed();  // with the GIL held
+
+ private:
+  py::object fn_;
+  std::unique_ptr<py::error_already_set> error_;
+  std::atomic<bool> failed_{false};
 };
 
 // Binding entry points, one per source file.

@@ -100,12 +100,20 @@ Orbit PeriodicOrbit(const Params& p, std::optional<double> a_guess, bool floquet
   return r.orbit;
 }
 
+// progress: None or a callable (TypeError otherwise).
+void CheckCallable(const py::object& progress) {
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress must be a callable, not " +
+                         py::str(py::type::of(progress).attr("__name__")).cast<std::string>());
+}
+
 Branch ContinueBranch(const Params& base, std::optional<std::string> param,
                       std::optional<double> from, std::optional<double> to,
                       std::optional<double> max_step, std::optional<bool> floquet,
                       std::optional<double> rtol, std::optional<double> atol,
                       const py::object& integrator, const py::object& method,
-                      std::optional<ContinuationOptions> options) {
+                      std::optional<ContinuationOptions> options, const py::object& progress) {
+  CheckCallable(progress);
   ContinuationOptions opts = options.value_or(ContinuationOptions());
   if (param) opts.param = ParameterAxis(*param);  // InvalidArgument for an unknown name
   if (!options) {  // the library's range for this parameter around base
@@ -118,16 +126,21 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   if (floquet) opts.stick_slip_floquet = *floquet;
   opts.orbit.flow = Solver(opts.orbit.flow, rtol, atol, integrator, method);
   Interrupt interrupt;
-  opts.cancelled = [&] { return interrupt(); };
+  ProgressCall call(progress);
+  opts.cancelled = [&] { return call.failed() || interrupt(); };
+  if (!progress.is_none()) {
+    long n = 0;
+    opts.progress = [&](const BranchPoint& q) { call(++n, q.p, PointKindName(q.kind), q.stable); };
+  }
   ContinuationResult r;
   {
     py::gil_scoped_release nogil;
     r = Continue(base, opts);  // throws InvalidArgument on bad options
   }
   interrupt.RaiseIfInterrupted();
+  call.RaiseIfFailed();
   if (r.status == ContinuationStatus::kFailed) RaiseNumerical(r.message);
-  return Branch{r.param.name(),         r.status,  r.message, r.warnings,
-                BranchPoints(r.points), r.special, r.counts,  r.seconds};
+  return MakeBranch(std::move(r), base, std::move(opts));
 }
 
 OrbitScanOptions ScanOptions(std::optional<OrbitScanOptions> options, std::optional<int> samples,
@@ -164,7 +177,8 @@ using Range = std::optional<std::pair<double, double>>;
 Basins BasinsOf(const Params& p, std::optional<int> nx, std::optional<int> ny, Range x_range,
                 Range xdot_range, std::optional<double> t_cap, std::optional<double> rtol,
                 std::optional<double> atol, const py::object& integrator, const py::object& method,
-                std::optional<BasinOptions> options) {
+                std::optional<BasinOptions> options, const py::object& progress) {
+  CheckCallable(progress);
   BasinOptions o = options.value_or(BasinOptions());
   o.scan = ScanOptions(o.scan, std::nullopt, rtol, atol, integrator, method);
   if (nx) o.nx = *nx;
@@ -181,13 +195,16 @@ Basins BasinsOf(const Params& p, std::optional<int> nx, std::optional<int> ny, R
   if (!err.empty()) throw InvalidArgument(err);
   const Model model(p);
   Interrupt interrupt;
-  o.cancelled = [&] { return interrupt(); };
+  ProgressCall call(progress);
+  o.cancelled = [&] { return call.failed() || interrupt(); };
+  if (!progress.is_none()) o.progress = [&](int done, int total) { call(done, total); };
   BasinResult r;
   {
     py::gil_scoped_release nogil;
     r = ClassifyBasins(model, o);
   }
   interrupt.RaiseIfInterrupted();
+  call.RaiseIfFailed();
   if (r.status == BasinStatus::kFailed) RaiseNumerical(r.message);
   return MakeBasins(r);
 }
@@ -228,10 +245,12 @@ void BindCompute(py::module_& m) {
         py::arg("from_") = none, py::arg("to") = none, py::arg("max_step") = none,
         py::arg("floquet") = none, py::arg("rtol") = none, py::arg("atol") = none,
         py::arg("integrator") = none, py::arg("method") = none, py::arg("options") = none,
+        py::arg("progress") = none,
         "Branches in one parameter (as ss_continue) from from_ to to: a Branch with points "
         "(arrays), special (GR/HB/LP SpecialPoints), status and message. param defaults to "
         "'v'; from_/to to default_range(params, param), or to options' values. Keywords "
-        "override options (a ContinuationOptions).");
+        "override options (a ContinuationOptions). progress(pt, p, kind, stable) is called "
+        "after every point; an exception it raises stops the run and is raised again.");
   m.def("periodic_orbits", &PeriodicOrbitsAt, py::arg("params"), py::arg("samples") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
         py::arg("method") = none, py::arg("options") = none,
@@ -240,9 +259,11 @@ void BindCompute(py::module_& m) {
   m.def("basins", &BasinsOf, py::arg("params"), py::arg("nx") = none, py::arg("ny") = none,
         py::arg("x_range") = none, py::arg("xdot_range") = none, py::arg("t_cap") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
-        py::arg("method") = none, py::arg("options") = none,
+        py::arg("method") = none, py::arg("options") = none, py::arg("progress") = none,
         "Basins of attraction (as ss_basin): the fate of each start of an nx by ny grid on "
-        "x_range by xdot_range (default: the orbits' box widened by a quarter).");
+        "x_range by xdot_range (default: the orbits' box widened by a quarter). "
+        "progress(done, total) is called after every start; an exception it raises stops the "
+        "run and is raised again.");
   m.def("orbit_curve", &CurveOf, py::arg("params"), py::arg("orbit"), py::arg("n") = 400,
         "One period of an orbit at n + 1 points, as an (n + 1, 2) array of (x, x').");
   m.def(

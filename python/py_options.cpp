@@ -6,6 +6,7 @@
 #include "stickslip/basin/basin.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
+#include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip::python {
 
@@ -80,6 +81,10 @@ void BindEnums(py::module_& m) {
       .value("stick_slip", Fate::kStickSlip)
       .value("pure_slip", Fate::kPureSlip)
       .value("undecided", Fate::kUndecided, "not settled by t_cap");
+  Enum<OrbitScanStatus>(m, "OrbitScanStatus", "How periodic_orbits() ended.", &OrbitScanStatusName)
+      .value("ok", OrbitScanStatus::kOk)
+      .value("failed", OrbitScanStatus::kFailed)
+      .value("cancelled", OrbitScanStatus::kCancelled);
   Enum<BasinStatus>(m, "BasinStatus", "How a basin classification ended.", &BasinStatusName)
       .value("ok", BasinStatus::kOk)
       .value("failed", BasinStatus::kFailed)

@@ -9,17 +9,6 @@ namespace stickslip::python {
 
 namespace {
 
-const char* const kPointColumns[] = {
-    "p",        "kind",    "branch",     "period", "x_min",     "x_max",         "xdot_min",
-    "xdot_max", "t_stick", "multiplier", "stable", "amplitude", "newton_stalled"};
-
-template <typename T>
-py::class_<T> Result(py::module_& m, const char* name, const char* doc) {
-  py::class_<T> c(m, name, doc);
-  c.def("__getitem__", &GetItem, py::arg("key"), "result['name'] is result.name");
-  return c;
-}
-
 py::array Matrix(const Mat2& a) {
   py::array_t<double> out({2, 2});
   for (int i = 0; i < 2; ++i)
@@ -79,70 +68,6 @@ void BindOrbits(py::module_& m) {
       .def_readonly("x", &Disturbance::x, "along x' = 0")
       .def_readonly("xdot", &Disturbance::xdot, "along x = xbar")
       .def_readonly("energy", &Disturbance::energy, "((x - xbar)^2 + x'^2) / 2");
-}
-
-void BindBranch(py::module_& m) {
-  Result<BranchPoints>(m, "BranchPoints", "The rows of a branch, one read-only array per column.")
-      .def("keys",
-           [](const BranchPoints&) {
-             return std::vector<std::string>(std::begin(kPointColumns), std::end(kPointColumns));
-           })
-      .def("items",
-           [](const py::object& self) {
-             py::list out;
-             for (const char* k : kPointColumns) out.append(py::make_tuple(k, self.attr(k)));
-             return out;
-           })
-      .def("__len__", [](const BranchPoints& b) { return b.p.size(); })
-      .def_readonly("p", &BranchPoints::p, "the continued parameter")
-      .def_readonly("kind", &BranchPoints::kind, "'stick-slip', 'pure-slip', 'equilibrium'")
-      .def_readonly("branch", &BranchPoints::branch, "rows of one branch are consecutive")
-      .def_readonly("period", &BranchPoints::period, "nan for the equilibrium")
-      .def_readonly("x_min", &BranchPoints::x_min)
-      .def_readonly("x_max", &BranchPoints::x_max)
-      .def_readonly("xdot_min", &BranchPoints::xdot_min)
-      .def_readonly("xdot_max", &BranchPoints::xdot_max)
-      .def_readonly("t_stick", &BranchPoints::t_stick)
-      .def_readonly("multiplier", &BranchPoints::multiplier, "equilibrium: largest real part")
-      .def_readonly("stable", &BranchPoints::stable)
-      .def_readonly("amplitude", &BranchPoints::amplitude, "pure slip: section amplitude")
-      .def_readonly("newton_stalled", &BranchPoints::newton_stalled);
-  Result<SpecialPoint>(m, "SpecialPoint", "A located special point (GR, HB, LP).")
-      .def_readonly("kind", &SpecialPoint::kind)
-      .def_property_readonly(
-          "label", [](const SpecialPoint& s) { return std::string(SpecialLabel(s.kind)); })
-      .def_readonly("p", &SpecialPoint::p)
-      .def_readonly("period", &SpecialPoint::period)
-      .def_property_readonly("x_min", [](const SpecialPoint& o) { return o.extrema.x_min; })
-      .def_property_readonly("x_max", [](const SpecialPoint& o) { return o.extrema.x_max; })
-      .def_property_readonly("xdot_min", [](const SpecialPoint& o) { return o.extrema.xdot_min; })
-      .def_readonly("multiplier_before", &SpecialPoint::multiplier_before)
-      .def_readonly("multiplier_after", &SpecialPoint::multiplier_after)
-      .def_readonly("description", &SpecialPoint::description);
-  Result<ContinuationCounts>(m, "ContinuationCounts", "Work done by a continuation.")
-      .def_readonly("orbit_solves", &ContinuationCounts::orbit_solves)
-      .def_readonly("return_maps", &ContinuationCounts::return_maps)
-      .def_readonly("newton_iterations", &ContinuationCounts::newton_iterations)
-      .def_readonly("rejected_steps", &ContinuationCounts::rejected_steps)
-      .def_readonly("integrator_steps", &ContinuationCounts::integrator_steps);
-  Result<ContinuationTimes>(m, "ContinuationTimes", "Wall-clock seconds per phase.")
-      .def_readonly("equilibrium", &ContinuationTimes::equilibrium)
-      .def_readonly("stick_slip", &ContinuationTimes::stick_slip)
-      .def_readonly("pure_slip", &ContinuationTimes::pure_slip)
-      .def_readonly("switching", &ContinuationTimes::switching)
-      .def_readonly("discovery", &ContinuationTimes::discovery)
-      .def_readonly("total", &ContinuationTimes::total);
-  Result<Branch>(m, "Branch", "Result of continue_branch().")
-      .def_readonly("param", &Branch::param)
-      .def_readonly("status", &Branch::status)
-      .def_readonly("message", &Branch::message)
-      .def_readonly("warnings", &Branch::warnings)
-      .def_readonly("points", &Branch::points)
-      .def_readonly("special", &Branch::special)
-      .def_readonly("counts", &Branch::counts)
-      .def_readonly("seconds", &Branch::seconds)
-      .def_property_readonly("partial",
-                             [](const Branch& b) { return b.status != ContinuationStatus::kOk; });
 }
 
 // result[param1] and result[param2] are p1 and p2; any other key as GetItem.
@@ -230,6 +155,12 @@ BranchPoints::BranchPoints(const std::vector<BranchPoint>& pts) {
   x_min = ReadOnly(xmin), x_max = ReadOnly(xmax), xdot_min = ReadOnly(vmin);
   xdot_max = ReadOnly(vmax), t_stick = ReadOnly(ts), multiplier = ReadOnly(mult);
   stable = ReadOnlyBool(st), amplitude = ReadOnly(amp), newton_stalled = ReadOnlyBool(stalled);
+  std::vector<int> rows;
+  std::vector<double> xs, vs;
+  for (const auto& q : pts)
+    rows.push_back(static_cast<int>(rows.size()) + 1), xs.push_back(q.x_start),
+        vs.push_back(q.xdot_start);
+  pt = ReadOnly(rows), x_start = ReadOnly(xs), xdot_start = ReadOnly(vs);
 }
 
 ChartOut MakeChartOut(const ChartResult& r, const Plane& plane) {

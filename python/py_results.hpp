@@ -2,6 +2,7 @@
 // with their vectors as read-only NumPy arrays (one per column).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,14 @@
 #include "stickslip/continuation/continuation.hpp"
 
 namespace stickslip::python {
+
+// A result class: read-only attributes and result["name"] for result.name.
+template <typename T>
+py::class_<T> Result(py::module_& m, const char* name, const char* doc) {
+  py::class_<T> c(m, name, doc);
+  c.def("__getitem__", &GetItem, py::arg("key"), "result['name'] is result.name");
+  return c;
+}
 
 // simulate(): one row every dt and at every switch.
 struct Trajectory {
@@ -25,8 +34,15 @@ struct Trajectory {
 struct BranchPoints {
   py::array p, kind, branch, period, x_min, x_max, xdot_min, xdot_max, t_stick, multiplier, stable,
       amplitude, newton_stalled;
+  py::array pt, x_start, xdot_start;  // pt: the 1-based row number (AUTO's PT)
   explicit BranchPoints(const std::vector<BranchPoint>& points);
   BranchPoints() = default;
+};
+
+// A special point with its row (pt) and label (lab: GR1, HB1), as special_points.tsv.
+struct BranchSpecial : SpecialPoint {
+  int pt = 0;
+  std::string lab;
 };
 
 struct Branch {
@@ -35,10 +51,16 @@ struct Branch {
   std::string message;
   std::vector<std::string> warnings;
   BranchPoints points;
-  std::vector<SpecialPoint> special;
+  std::vector<BranchSpecial> special;
   ContinuationCounts counts;
   ContinuationTimes seconds;
+  // What made it, for its tables and restarts (py_branch.cpp).
+  std::shared_ptr<const ContinuationResult> result;
+  Params base;
+  ContinuationOptions options;  // without its callbacks
 };
+Branch MakeBranch(ContinuationResult r, const Params& base, ContinuationOptions options);
+void BindBranch(py::module_& m);  // py_branch.cpp
 
 // One curve of chart(): its points as arrays.
 struct ChartCurve {

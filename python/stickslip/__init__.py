@@ -14,7 +14,13 @@ except ImportError as _e:  # pragma: no cover - depends on the interpreter
         "Python the module was built for (Debian: /usr/bin/python3 with python3-numpy)"
         % _sys.executable) from _e
 
+from . import _core  # noqa: E402
 from ._core import *  # noqa: F401,F403
 from ._core import __doc__ as _core_doc  # noqa: F401
 from ._core import __version__, git_commit  # noqa: F401
 from ._sweep import SweepError, SweepResult, group_stats, stick_slip_orbit, sweep  # noqa: F401
+from . import _display as _display_module, plot  # noqa: E402
+from ._physical import continue_physical  # noqa: E402,F401
+
+_display_module.install()  # reprs, _repr_html_, to_pandas, to_tsv, save, restart
+plot.install(_core)  # Branch.plot, Chart.plot, Basins.plot, ForcedBranch.plot

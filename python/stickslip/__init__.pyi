@@ -7,6 +7,7 @@ import numpy as np
 import numpy.typing as npt
 
 __version__: str
+plot: Any  # the module stickslip.plot: Matplotlib figures
 git_commit: str
 
 class Error(RuntimeError): ...
@@ -70,6 +71,10 @@ class Fate(enum.IntEnum):
     stick_slip = 1
     pure_slip = 2
     undecided = 3
+class OrbitScanStatus(enum.IntEnum):
+    ok = 0
+    failed = 1
+    cancelled = 2
 class BasinStatus(enum.IntEnum):
     ok = 0
     failed = 1
@@ -259,6 +264,9 @@ class ForcedBranch:
     evaluations: int
     seconds: float
     def __getitem__(self, key: str) -> Any: ...
+    def to_pandas(self) -> Any: ...
+    def to_tsv(self, path: Any) -> None: ...
+    def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True) -> Any: ...
 
 class ForcedSpecialPoint:
     label: str
@@ -295,6 +303,8 @@ class Trajectory:
     xdot_min: float
     xdot_max: float
     def __getitem__(self, key: str) -> Any: ...
+    def to_pandas(self) -> Any: ...
+    def to_tsv(self, path: Any) -> None: ...
 class Equilibrium:
     x: float
     damping: float
@@ -322,7 +332,7 @@ class Orbit:
     newton_stalled: bool
     def __getitem__(self, key: str) -> Any: ...
 class PeriodicOrbits:
-    status: Any
+    status: OrbitScanStatus
     message: str
     steady: Equilibrium
     stick_slip: Optional[Orbit]
@@ -350,13 +360,19 @@ class BranchPoints:
     stable: Array
     amplitude: Array
     newton_stalled: Array
+    pt: Array
+    x_start: Array
+    xdot_start: Array
     def keys(self) -> List[str]: ...
+    def to_pandas(self) -> Any: ...
     def items(self) -> List[Tuple[str, Array]]: ...
     def __len__(self) -> int: ...
     def __getitem__(self, key: str) -> Array: ...
 class SpecialPoint:
     kind: SpecialKind
     label: str
+    lab: str
+    pt: int
     p: float
     period: float
     x_min: float
@@ -364,6 +380,8 @@ class SpecialPoint:
     xdot_min: float
     multiplier_before: float
     multiplier_after: float
+    x_start: float
+    xdot_start: float
     description: str
     def __getitem__(self, key: str) -> Any: ...
 class ContinuationCounts:
@@ -390,8 +408,19 @@ class Branch:
     special: List[SpecialPoint]
     counts: ContinuationCounts
     seconds: ContinuationTimes
+    params: Params
+    options: ContinuationOptions
     partial: bool
     def __getitem__(self, key: str) -> Any: ...
+    def tables(self, command: str = ...) -> Dict[str, str]: ...
+    def to_pandas(self, mass: Optional[float] = None, stiffness: Optional[float] = None,
+                  gravity: float = 9.81) -> Any: ...
+    def special_to_pandas(self) -> Any: ...
+    def to_tsv(self, path: Any, command: Optional[str] = None) -> None: ...
+    def save(self, directory: Any, command: Optional[str] = None) -> str: ...
+    def restart(self, point: Union[str, int]) -> LabelledPoint: ...
+    def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True,
+             legend: bool = True) -> Any: ...
 class ChartCurve:
     kind: CurveKind
     label: str
@@ -430,6 +459,9 @@ class Chart:
     unphysical_points: int
     seconds: float
     def __getitem__(self, key: str) -> Any: ...
+    def to_pandas(self) -> Any: ...
+    def to_tsv(self, path: Any) -> None: ...
+    def plot(self, ax: Any = None, regions: bool = True, legend: bool = True) -> Any: ...
 class Basins:
     status: BasinStatus
     message: str
@@ -447,6 +479,9 @@ class Basins:
     t_settle: Array
     counts: Dict[Fate, int]
     def __getitem__(self, key: str) -> Any: ...
+    def to_pandas(self) -> Any: ...
+    def to_tsv(self, path: Any) -> None: ...
+    def plot(self, ax: Any = None, legend: bool = True) -> Any: ...
 class LabelledPoint:
     label: str
     pt: int
@@ -517,7 +552,13 @@ def continue_branch(params: Params, param: Optional[str] = None, from_: Optional
                     floquet: Optional[bool] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,
-                    options: Optional[ContinuationOptions] = None) -> Branch: ...
+                    options: Optional[ContinuationOptions] = None,
+                    progress: Optional[Callable[[int, float, str, bool], Any]] = None
+                    ) -> Branch: ...
+def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
+                      from_: Optional[float] = None, to: Optional[float] = None,
+                      progress: Optional[Callable[[int, float, str, bool], Any]] = None,
+                      **inputs: float) -> Branch: ...
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,
@@ -527,7 +568,8 @@ def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            xdot_range: Optional[Tuple[float, float]] = None, t_cap: Optional[float] = None,
            rtol: Optional[float] = None, atol: Optional[float] = None,
            integrator: IntegratorLike = None, method: MethodLike = None,
-           options: Optional[BasinOptions] = None) -> Basins: ...
+           options: Optional[BasinOptions] = None,
+           progress: Optional[Callable[[int, int], Any]] = None) -> Basins: ...
 def orbit_curve(params: Params, orbit: Orbit, n: int = 400) -> Array: ...
 def smallest_disturbance(params: Params, orbit: Orbit, n: int = 4000) -> Disturbance: ...
 def chart(params: Params, param: Optional[str] = None, from_: Optional[float] = None,

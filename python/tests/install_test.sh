@@ -12,6 +12,19 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
 cd "$tmp"
+# The studies and the docs are installed; --study NAME finds an installed study
+# from a directory without studies/.
+test -f "$tmp/prefix/share/stickslip/studies/seed.ini"
+test -f "$tmp/prefix/share/stickslip/studies/stribeck_forced.ini"
+test -f "$tmp/prefix/share/doc/stickslip/library.md"
+test -f "$tmp/prefix/share/doc/stickslip/README.md"
+mkdir empty && cd empty
+"$tmp/prefix/bin/ss_simulate" --study seed --t_end 1 --no_plots --out "$tmp/sim" >/dev/null
+if "$tmp/prefix/bin/ss_simulate" --study no_such_study --no_plots --out "$tmp/x" 2>"$tmp/err"; then
+  echo "--study no_such_study succeeded"; exit 1
+fi
+grep -q "no_such_study" "$tmp/err" || { cat "$tmp/err"; exit 1; }
+cd "$tmp"
 PYTHONPATH="$tmp/prefix/$reldir" "$python" - "$tmp/prefix/$reldir" "$reldir" <<'PY'
 import os, sys, sysconfig
 import stickslip

@@ -27,7 +27,12 @@ CALLS = """{
  "simulate": lambda: stickslip.simulate(stickslip.Params(v_m=1e-6), xdot0=0.0),
  "continue_branch": lambda: stickslip.continue_branch(stickslip.Params(), "v", 0.05, 0.5,
                                                      max_step=5e-5, integrator="cvode"),
+ "continue_branch_progress": lambda: stickslip.continue_branch(
+     stickslip.Params(), "v", 0.05, 0.5, max_step=5e-5, integrator="cvode",
+     progress=lambda *a: None),
  "basins": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801),
+ "basins_progress": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801,
+                                             progress=lambda *a: None),
  "chart": lambda: stickslip.chart(stickslip.Params(), max_step=5e-5),
  "chart_regions": lambda: stickslip.chart(stickslip.Params(), regions=(1000, 1000)),
  "orbit_diagram": lambda: stickslip.orbit_diagram(stickslip.ForcedParams(stickslip.Params(
@@ -93,6 +98,12 @@ class CtrlC(unittest.TestCase):
 
     def test_basins(self):
         self.check("basins")
+
+    def test_with_a_progress_callback(self):
+        # The signal may land in the callback (Python code): its KeyboardInterrupt
+        # stops the run as any exception of the callback does.
+        self.check("continue_branch_progress")
+        self.check("basins_progress")
 
     def test_chart(self):
         self.check("chart")

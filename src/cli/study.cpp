@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "cli/run_control.hpp"
+#include "cli/study_path.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
@@ -70,8 +71,8 @@ po::options_description AppDescription(const po::options_description& app,
 }
 
 const std::vector<std::string>& StudySections() {
-  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark", "chart",
-                                                    "basin", "orbit_diagram"};
+  static const std::vector<std::string> sections = {"simulate", "continue", "benchmark",
+                                                    "chart",    "basin",    "orbit_diagram"};
   return sections;
 }
 
@@ -80,7 +81,8 @@ po::options_description GeneralOptions() {
   d.add_options()("help,h", "print this help and exit")(
       "version", po::bool_switch(), "print the version (and git commit) and exit")(
       "study", Value()->value_name("FILE"),
-      "read options from a study file (key = value lines; the command line wins)");
+      "read options from a study file (key = value lines; the command line wins); a name "
+      "without '/' (seed) is also looked up in the installed studies");
   return d;
 }
 
@@ -220,7 +222,8 @@ Arguments ParseArguments(int argc, const char* const argv[], const po::options_d
     throw UsageError(Printable(e.what()));
   }
   const bool info = args.vm_.count("help") || args.Flag("version");
-  if (!info && args.Given("study")) ReadStudyFile(args.Text("study"), desc, section, args);
+  if (!info && args.Given("study"))
+    ReadStudyFile(FindStudy(args.Text("study")), desc, section, args);
   try {
     po::notify(args.vm_);
   } catch (const po::error& e) {

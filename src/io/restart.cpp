@@ -87,7 +87,8 @@ double Number(const Table& t, const std::string& text, const std::string& what) 
 
 // The model and the solver options from the metadata (cli/about.cpp's RunMetadata).
 void ReadModel(const Table& t, LabelledPoint* lp) {
-  if (t.Meta("tool").rfind("ss_continue", 0) != 0)
+  const std::string& tool = t.Meta("tool");
+  if (tool.rfind("ss_continue", 0) != 0 && tool.rfind(kPythonTool, 0) != 0)
     throw RestartError(Part::kRun, "'" + t.path + "' was not written by ss_continue");
   try {
     lp->params.law = LawFromName(t.Meta("law"));

@@ -19,15 +19,15 @@ struct LabelledPoint {
   // m's upper bound a forced point is read with (a sanity bound on the file).
   static constexpr int kMaxM = 1000;
 
-  std::string label;          // "HB1", "GR1", ..., or the point number as given ("17")
-  int pt = 0;                 // its row in branch.tsv (1-based)
-  std::string type;           // GR, HB, LP, or the row's kind: stick-slip, pure-slip, equilibrium
+  std::string label;  // "HB1", "GR1", ..., or the point number as given ("17")
+  int pt = 0;         // its row in branch.tsv (1-based)
+  std::string type;   // GR, HB, LP, or the row's kind: stick-slip, pure-slip, equilibrium
   // The parameter that run continued: param for a belt run, forced_param for
   // a forced one (forced below).
   ParameterAxis param = Parameter::kV;
   ForcedAxis forced_param = ForcedAxis::kOmega;
-  double p = 0;   // its value at the point
-  Params params;  // every parameter at the point (the continued one = p)
+  double p = 0;               // its value at the point
+  Params params;              // every parameter at the point (the continued one = p)
   FlowOptions flow;           // that run's integrator and tolerances
   Vec2 state = Vec2::Zero();  // x_start, xdot_start (BranchPoint / SpecialPoint)
   double period = 0;          // nan for steady sliding
@@ -55,6 +55,10 @@ class RestartError : public InvalidArgument {
  private:
   Part part_;
 };
+
+/// The tool name of files the Python module writes (Branch.save): read as
+/// ss_continue's.
+inline constexpr const char* kPythonTool = "stickslip.continue_branch";
 
 /// Reads `point` (a label such as "HB1" or "PD1", or a point number "17" of branch.tsv)
 /// from the run in `dir`. Throws RestartError naming the file or the point.
