@@ -1,4 +1,4 @@
-// The one flow every app runs (issue 19 item 4):
+// The one flow every app runs:
 //   parse -> validate -> AppRun (OutputSet checked up front, then RunControl)
 //   -> compute (polling run().Cancelled()) -> out().Write(...) -> Finish()
 //   (draw, check, commit under the lock) -> print -> ExitCode().

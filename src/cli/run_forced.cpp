@@ -201,7 +201,7 @@ void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::stri
 
 po::options_description ForcingOptions() {
   po::options_description d(
-      "Model, forcing (x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t); issue 20)");
+      "Model, forcing (x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t))");
   d.add_options()("force", Value()->value_name("A"),
                   "force amplitude A >= 0; != 0 selects the forced oscillator (default 0: the "
                   "belt model)")("omega", Value()->value_name("W"),
