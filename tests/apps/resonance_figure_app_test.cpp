@@ -25,8 +25,8 @@ struct Curve {
   std::vector<std::vector<double>> runs;  // x, y pairs flattened per unbroken run
 };
 
-// gnuplot's table: "# Curve N of M", "# Curve title: "..."" (if titled), then "x y type" lines; a point of
-// type u (undefined) breaks the line.
+// gnuplot's table: "# Curve N of M", "# Curve title: "..."" (if titled), then "x y type" lines; a
+// point of type u (undefined) breaks the line.
 std::vector<Curve> ReadTable(const std::string& text) {
   std::vector<Curve> curves;
   std::istringstream is(text);
@@ -59,9 +59,9 @@ std::vector<Curve> ReadTable(const std::string& text) {
 TEST_F(ResonanceFigureApp, StyleChangesFallOnTheLocatedPoints) {
   if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
   const std::string dir = NewDir();
-  const auto r = RunOut(
-      "ss_continue", dir,
-      {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/stribeck_forced.ini"});
+  const auto r =
+      RunOut("ss_continue", dir,
+             {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/stribeck_forced.ini"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const std::string out = dir + "/out";
   const tu::Tsv br = tu::ReadTsv(tu::ReadFile(out + "/branch.tsv"));
@@ -74,17 +74,19 @@ TEST_F(ResonanceFigureApp, StyleChangesFallOnTheLocatedPoints) {
   for (const auto& row : br.rows) {
     xs.push_back(std::stod(row[br.Column("omega")]));
     ys.push_back(std::stod(row[br.Column("x_max")]));
-    style.push_back(row[br.Column("kind")] + (row[br.Column("stable")] == "1" ? ", stable"
-                                                                              : ", unstable"));
+    style.push_back(row[br.Column("kind")] +
+                    (row[br.Column("stable")] == "1" ? ", stable" : ", unstable"));
   }
   // The script as it is, its output redirected into a table at full precision.
   std::string gp = tu::ReadFile(out + "/resonance.gp");
   const auto at = gp.find("set output");
   ASSERT_NE(at, std::string::npos);
-  gp.replace(at, gp.find('\n', at) - at,
-             "set table 'table.txt'\nset format x '%.17g'\nset format y '%.17g'");
+  gp.replace(
+      at, gp.find('\n', at) - at,
+      "set output '/dev/null'\nset table 'table.txt'\nset format x '%.17g'\nset format y '%.17g'");
   tu::WriteFile(out + "/table.gp", gp);
-  ASSERT_EQ(std::system(("cd " + tu::ShellQuoted(out) + " && gnuplot table.gp").c_str()), 0);
+  ASSERT_EQ(std::system(("cd " + tu::ShellQuoted(out) + " && gnuplot table.gp >/dev/null").c_str()),
+            0);
   const std::vector<Curve> curves = ReadTable(tu::ReadFile(out + "/table.txt"));
   auto row_of = [&](double x, double y) {
     for (size_t i = 0; i < xs.size(); ++i)

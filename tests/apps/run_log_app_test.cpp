@@ -73,9 +73,9 @@ void ExpectSpecialPointsPrinted(const std::string& out, const std::string& dir,
 
 TEST_F(RunLogApp, SpecialPointsPrintTheirLabelAndPointNumber) {
   const std::string dir = NewDir();
-  const auto r = RunOut("ss_continue", dir,
-                        {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/seed.ini",
-                         "--no_estimates"});
+  const auto r = RunOut(
+      "ss_continue", dir,
+      {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/seed.ini", "--no_estimates"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   ExpectSpecialPointsPrinted(r.out, dir + "/out", "v");
   EXPECT_TRUE(PointRows(r.out).empty()) << "one line per point only with --verbose";
@@ -83,8 +83,8 @@ TEST_F(RunLogApp, SpecialPointsPrintTheirLabelAndPointNumber) {
   const std::vector<std::string> w = Words(SpecialLine(r.out, "GR1"));
   ASSERT_GE(w.size(), 6u);
   const std::string again = NewDir();
-  const auto s = RunOut("ss_continue", again,
-                        {"--restart", dir + "/out", "--point", w[2], "--to", "0.5"});
+  const auto s =
+      RunOut("ss_continue", again, {"--restart", dir + "/out", "--point", w[2], "--to", "0.5"});
   ASSERT_EQ(s.outcome.code, 0) << s.err;
   const tu::Tsv b = tu::ReadTsv(tu::ReadFile(again + "/out/branch.tsv"));
   EXPECT_NEAR(std::stod(b.rows.at(0)[b.Column("v")]), std::stod(w[5]), 1e-12);
@@ -119,8 +119,8 @@ TEST_F(RunLogApp, VerbosePrintsEveryRowOfBranchTsv) {
 TEST_F(RunLogApp, PhysicalRunPrintsSiValuesBesideDimensionless) {
   const std::string dir = NewDir();
   const auto r = RunOut("ss_continue", dir,
-                        {"--mass", "2", "--stiffness", "8", "--damping", "0.4", "--belt_speed",
-                         "1", "--speed_m", "2.4525", "--no_estimates"});
+                        {"--mass", "2", "--stiffness", "8", "--damping", "0.4", "--belt_speed", "1",
+                         "--speed_m", "2.4525", "--no_estimates"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(dir + "/out/special_points.tsv"));
   for (const auto& row : sp.rows) {
