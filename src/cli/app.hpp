@@ -22,9 +22,11 @@
 #pragma once
 
 #include <boost/program_options.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/figure_layout.hpp"
 #include "cli/gnuplot.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "cli/output.hpp"
@@ -79,6 +81,7 @@ class AppRun {
   bool plots_;
   OutputSet out_;
   RunControl run_;
+  std::optional<FigureLayout> layout_;  // --size, --font
   GnuplotResult gnuplot_{GnuplotStatus::kCancelled, "figures not drawn (--no_plots)"};
 };
 

@@ -185,6 +185,16 @@ void PreserveSvgSpaces(const std::string& path) {
 }
 }  // namespace
 
+std::string OutputSet::Read(const std::string& name) {
+  if (std::find(staged_.begin(), staged_.end(), name) == staged_.end())
+    throw Error("OutputSet: '" + name + "' was not written");
+  std::ifstream in(Staging() + "/" + name, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw Error("cannot read '" + dir_ + "/" + name + "'");
+  return text.str();
+}
+
 GnuplotResult OutputSet::Draw(const std::string& script, const std::vector<std::string>& figures,
                               const std::function<bool()>& cancelled) {
   GnuplotResult r = RunGnuplot(Staging() + "/" + script, Staging(), cancelled);
