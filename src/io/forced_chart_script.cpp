@@ -140,7 +140,7 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   if (!std::all_of(r.codim2.begin(), r.codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne '" << sl
        << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title "
-          "'codimension two (labelled)'";
+          "'codimension 2'";
   os << "\nunset output\n";
   return os.str();
 }
