@@ -38,7 +38,7 @@ constexpr const char* kNotes =
     "and a first return is given up after time 50; a longer run is an orbit running away.\n"
     "Study files: model and solver keys at top level, this app's keys in [chart].\n"
     "An interrupted or failed run writes the curves so far, marked partial.\n"
-    "Forced oscillator (issue 21): --force A, --omega W, or an axis omega or force selects\n"
+    "Forced oscillator: --force A, --omega W, or an axis omega or force selects\n"
     "it; the axes are two of omega, force, v, beta (defaults omega [0.5, 2] x force\n"
     "[0.05, 1]). LP, PD, NS and GR curves (GR: where non-stop motion ends) are traced from\n"
     "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default 40)\n"

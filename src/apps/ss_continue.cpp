@@ -17,6 +17,7 @@
 #include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
 #include "cli/run_forced.hpp"
+#include "cli/run_log.hpp"
 #include "cli/study.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/basin/branch_disturbance.hpp"
@@ -73,7 +74,11 @@ po::options_description AppOptions() {
       "floquet", po::bool_switch(),
       "compute stick-slip multipliers from the variational equations (else 0, exact)")(
       "no_estimates", po::bool_switch(),
-      "cubic law: skip the comparison with the seed's and the averaging estimates");
+      "cubic law: skip the comparison with the seed's and the averaging estimates")(
+      "verbose", po::bool_switch(),
+      "print a line per point (pt, kind, parameter, period, x range, multiplier, stability, "
+      "label), as AUTO-07p does; the special points with their labels and pt are printed "
+      "always");
   cli::AddRunOptions(d, "plots", "write the TSV files and the script, but do not run gnuplot");
   cli::AddRestartOptions(d);
   d.add_options()("switch", po::bool_switch(),
@@ -165,7 +170,8 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
 }
 
 void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions& opts,
-                  const std::string& model, double seconds) {
+                  const std::string& model, double seconds, cli::LogDetail detail,
+                  const std::optional<cli::Scales>& scales) {
   int counts[3] = {0, 0, 0};
   for (const auto& pt : r.points) ++counts[static_cast<int>(pt.kind)];
   std::cout << kProg << ": " << opts.param.name() << " from " << opts.from << " to " << opts.to
@@ -183,14 +189,7 @@ void PrintSummary(const ss::ContinuationResult& r, const ss::ContinuationOptions
             << ", switching " << Fixed(t.switching * 1e3, 1) << ", discovery "
             << Fixed(t.discovery * 1e3, 1) << "\n";
   for (const std::string& w : r.warnings) std::cerr << kProg << ": warning: " << w << "\n";
-  std::cout << "special points:\n";
-  if (r.special.empty()) std::cout << "  none\n";
-  for (const auto& s : r.special) {
-    std::cout << "  " << ss::SpecialLabel(s.kind) << "  " << opts.param.name() << " = "
-              << Fixed(s.p, 12) << "  period " << Fixed(s.period, 6) << "  x in ["
-              << Fixed(s.extrema.x_min, 6) << ", " << Fixed(s.extrema.x_max, 6) << "]  "
-              << s.description << "\n";
-  }
+  cli::PrintBranchLog(std::cout, r, detail, scales);
 }
 
 // How the files were made: tool, command, model, range, tolerances, and
@@ -213,6 +212,7 @@ cli::Metadata FileMetadata(const std::string& command, const ss::Params& base,
 struct Provenance {
   cli::Metadata meta;
   std::optional<cli::Scales> scales;
+  cli::LogDetail detail = cli::LogDetail::kSpecialPoints;  // --verbose: every point
 };
 
 int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params& base,
@@ -239,6 +239,7 @@ int Main(int argc, char** argv) {
   const ss::ContinuationOptions opts = Configure(args, &base, restart);
   Provenance prov;
   prov.scales = cli::ScalesFromArguments(args);
+  if (args.Flag("verbose")) prov.detail = cli::LogDetail::kEveryPoint;
   prov.meta = FileMetadata(cli::CommandLine(argc, argv), base, opts, prov.scales);
   if (restart) prov.meta.emplace_back("restart", cli::DescribeRestart(args, *restart));
   std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "bifurcation.gp"};
@@ -308,7 +309,7 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
                   ss::BifurcationFigures(true, format)))
     return cli::kExitFailed;
 
-  PrintSummary(r, opts, model, seconds);
+  PrintSummary(r, opts, model, seconds, prov.detail, prov.scales);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
             << (app.gnuplot().ok()
                     ? std::string(" and the ") + ss::FigureFormatName(format) + " figures"

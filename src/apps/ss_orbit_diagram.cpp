@@ -1,5 +1,5 @@
-// ss_orbit_diagram: the orbit diagram of the forced oscillator (issue 21 items
-// 1-2): stroboscopic section points, stick counts and exit phases against one
+// ss_orbit_diagram: the orbit diagram of the forced oscillator:
+// stroboscopic section points, stick counts and exit phases against one
 // parameter, swept up and down, with the largest Lyapunov exponent below.
 #include <cmath>
 #include <iostream>

@@ -80,8 +80,9 @@ std::string PlotScript(const std::string& data, const std::string& figure, const
   const std::string c = ":", n = std::to_string(cx), nv = std::to_string(cv);
   std::string s = ss::FigurePreamble(format, 1400, 650);
   s += "set output " + GnuplotString(figure) + "\n";
-  // The stick set: x' = v, |x + 2 beta v| <= mu_s.
-  s += "$omega << EOD\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) + "\n" +
+  // The stick set: x' = v, |x + 2 beta v| <= mu_s. Its header line is the
+  // one `set datafile columnheaders` takes (else it takes the first end).
+  s += "$omega << EOD\nx\txdot\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) + "\n" +
        ss::FormatNumber(mu_s - shift) + "\t" + ss::FormatNumber(v) + "\nEOD\n";
   s += "set multiplot layout 1,2 title " +
        ss::GnuplotQuoted(ss::FigureTitle(cli::DescribeModel(model.params()), {})) + "\n";

@@ -23,7 +23,14 @@ void AddRunOptions(po::options_description& d, const std::string& default_out,
 
 void AddFormatOption(po::options_description& d) {
   d.add_options()("format", Value()->value_name("png|pdf|svg"),
-                  "the figures' file format: png (pngcairo), pdf (pdfcairo) or svg (default png)");
+                  "the figures' file format: png (pngcairo), pdf (pdfcairo) or svg (default png)")(
+      "size", Value()->value_name("SIZE"),
+      "the figures' printed size: single (3.5 in, a journal column), double (7.2 in) or WxH "
+      "in inches (e.g. 3.5x2.6), with text, lines and dashes for that size (default: the "
+      "screen size, 10 in wide at 12 pt)")(
+      "font", Value()->value_name("NAME,PT"),
+      "the figures' font with --size (default Sans,7 below 5 in, else Sans,9); below 5 in "
+      "the model's title line is left to the caption");
 }
 
 FigureFormat FigureFormatOf(const Arguments& args) {
@@ -52,13 +59,15 @@ AppRun::AppRun(const std::string& prog, const Arguments& args, const std::string
       plots_(!args.Flag("no_plots")),
       out_(args.Text("out", default_out), std::move(names),
            args.Given("out") ? args.Source("out") : "--out", prog),
-      run_(prog, MaxTime(args)) {}
+      run_(prog, MaxTime(args)),
+      layout_(FigureLayoutOf(args)) {}
 
 bool AppRun::Finish(const std::string& script, const std::vector<std::string>& figures,
                     const std::vector<std::string>& all_figures,
                     const std::vector<std::string>& stale) {
   if (plots_ && !run_.Cancelled()) {
     run_.Phase("plotting");
+    if (layout_) out_.Write(script, ApplyFigureLayout(out_.Read(script), *layout_));
     gnuplot_ = out_.Draw(script, figures, [this] { return run_.Cancelled(); });
   }
   if (gnuplot_.status == GnuplotStatus::kFailed) {

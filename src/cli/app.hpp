@@ -1,4 +1,4 @@
-// The one flow every app runs (issue 19 item 4):
+// The one flow every app runs:
 //   parse -> validate -> AppRun (OutputSet checked up front, then RunControl)
 //   -> compute (polling run().Cancelled()) -> out().Write(...) -> Finish()
 //   (draw, check, commit under the lock) -> print -> ExitCode().
@@ -22,9 +22,11 @@
 #pragma once
 
 #include <boost/program_options.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/figure_layout.hpp"
 #include "cli/gnuplot.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "cli/output.hpp"
@@ -79,6 +81,7 @@ class AppRun {
   bool plots_;
   OutputSet out_;
   RunControl run_;
+  std::optional<FigureLayout> layout_;  // --size, --font
   GnuplotResult gnuplot_{GnuplotStatus::kCancelled, "figures not drawn (--no_plots)"};
 };
 

@@ -1,4 +1,4 @@
-// ss_chart for the harmonically forced oscillator (issue 21 item 3): the
+// ss_chart for the harmonically forced oscillator: the
 // chart in two of omega, force, v, beta (--param, --param2) with the LP, PD,
 // NS and GR curves, their codimension-two points and the response grid
 // (stickslip/chart/forced_chart.hpp); curves.tsv, codim2.tsv, response.tsv

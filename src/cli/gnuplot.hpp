@@ -1,5 +1,5 @@
 // Running gnuplot and checking its figures: the apps' layer (the library only
-// writes the data and the script text, issue 19 item 6).
+// writes the data and the script text).
 #pragma once
 
 #include <functional>

@@ -65,7 +65,7 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
   CheckOtherLaws(args, checked);
   // A value given for the continued parameter is not where the branch runs,
   // but it is a model the user stated (and sets its default range): it must
-  // be valid too (issue 23, old #20: --param v --v -1 was accepted).
+  // be valid too (--param v --v -1 is refused).
   if (!continued.empty() && args.Given(continued)) {
     const std::string given = ValidationError(p);
     if (!given.empty())

@@ -12,6 +12,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 
 #include "cli/study.hpp"
 #include "stickslip/errors.hpp"
@@ -167,6 +169,32 @@ void OutputSet::Write(const std::string& name, const std::string& content) {
   if (std::find(staged_.begin(), staged_.end(), name) == staged_.end()) staged_.push_back(name);
 }
 
+namespace {
+// gnuplot's svg terminal puts the text after a subscript in a tspan of its
+// own, whose leading space renderers drop ("μs= 0.4"); xml:space="preserve"
+// on the root keeps it (gnuplot writes each text element on one line).
+void PreserveSvgSpaces(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  const auto at = s.find("<svg");
+  if (at == std::string::npos || s.find("xml:space", at) < s.find('>', at)) return;
+  s.insert(at + 4, " xml:space=\"preserve\"");
+  WriteFileAtomically(path, s);
+}
+}  // namespace
+
+std::string OutputSet::Read(const std::string& name) {
+  if (std::find(staged_.begin(), staged_.end(), name) == staged_.end())
+    throw Error("OutputSet: '" + name + "' was not written");
+  std::ifstream in(Staging() + "/" + name, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw Error("cannot read '" + dir_ + "/" + name + "'");
+  return text.str();
+}
+
 GnuplotResult OutputSet::Draw(const std::string& script, const std::vector<std::string>& figures,
                               const std::function<bool()>& cancelled) {
   GnuplotResult r = RunGnuplot(Staging() + "/" + script, Staging(), cancelled);
@@ -176,6 +204,12 @@ GnuplotResult OutputSet::Draw(const std::string& script, const std::vector<std::
     if (!err.empty())
       r = {GnuplotStatus::kFailed,
            "figure " + f + " not drawn whole (disk full?): " + err.substr(err.find("': ") + 3)};
+    else if (f.size() > 4 && f.compare(f.size() - 4, 4, ".svg") == 0)
+      try {
+        PreserveSvgSpaces(Staging() + "/" + f);
+      } catch (const Error& e) {
+        r = {GnuplotStatus::kFailed, "figure " + f + ": " + e.what()};
+      }
   }
   for (const auto& f : figures) {
     if (r.ok()) {

@@ -54,6 +54,8 @@ class OutputSet {
   // Writes one of the names into the staging directory. Throws Error (with
   // the reason, e.g. "No space left on device"); nothing is left half-written.
   void Write(const std::string& name, const std::string& content);
+  // The staged content of a name written before (Error if it was not).
+  std::string Read(const std::string& name);
   // Runs gnuplot on the staged `script` inside the staging directory, then
   // checks each of `figures`. A figure that is missing, empty or truncated
   // makes the status kFailed, naming it. On any status but kOk the staged

@@ -7,6 +7,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/restart.hpp"
+#include "cli/run_log.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/forced/report.hpp"
@@ -183,25 +184,20 @@ std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
 // The run's summary on stdout: range, rows, status, gap and special points.
 void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::string& model,
                   const std::string& status, const std::string& gap,
-                  const std::vector<ForcedPiece>& pieces) {
+                  const std::vector<ForcedPiece>& pieces, LogDetail detail) {
   size_t rows = 0;
   for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
   std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
             << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
             << rows << " rows; " << status << "\n";
   if (!gap.empty()) std::cout << "gap: " << gap << "\n";
-  for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.special)
-      std::cout << "  " << ForcedLabelName(r.label) << "  " << ForcedAxisName(s.axis) << " = "
-                << FormatNumber(r.p) << "  x_max " << FormatNumber(r.extrema.x_max) << "  "
-                << r.description << "\n";
+  PrintForcedLog(std::cout, pieces, s.p, s.axis, detail);
 }
 
 }  // namespace
 
 po::options_description ForcingOptions() {
-  po::options_description d(
-      "Model, forcing (x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t); issue 20)");
+  po::options_description d("Model, forcing (x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t))");
   d.add_options()("force", Value()->value_name("A"),
                   "force amplitude A >= 0; != 0 selects the forced oscillator (default 0: the "
                   "belt model)")("omega", Value()->value_name("W"),
@@ -286,7 +282,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   app.out().Write("resonance.gp", ResonanceScript(s.p, s.axis, static_cast<int>(pieces.size()),
                                                   model, gap_ends, specials, format));
   if (!app.Finish("resonance.gp", {figure}, {figure})) return kExitFailed;
-  PrintSummary(prog, s, model, status, gap, pieces);
+  PrintSummary(prog, s, model, status, gap, pieces,
+               args.Flag("verbose") ? LogDetail::kEveryPoint : LogDetail::kSpecialPoints);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;

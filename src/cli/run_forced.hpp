@@ -1,5 +1,5 @@
-// ss_continue for the harmonically forced oscillator (issue 20, items 1 and
-// 4): --force A --omega W, --param omega|force|v|beta. Validated once at entry,
+// ss_continue for the harmonically forced oscillator:
+// --force A --omega W, --param omega|force|v|beta. Validated once at entry,
 // started from a transient, continued by ContinueForced (forced/branch.hpp),
 // written as branch.tsv, special_points.tsv and the resonance figure.
 #pragma once

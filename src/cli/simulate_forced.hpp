@@ -1,4 +1,4 @@
-// ss_simulate's shared range options and its forced run (issue 20, item 1):
+// ss_simulate's shared range options and its forced run:
 // --force A --omega W give the forced oscillator's trajectory and its
 // Poincare section (--section strobe|exit), in --out DIR as trajectory.tsv,
 // section.tsv, trajectory.gp and the figures trajectory.png, section.png.

@@ -118,10 +118,27 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
      << "\nset ylabel 'largest displacement x_{max} (dimensionless)'\nset yrange [0:*]\n"
      << "set autoscale xfix\n"
      << "c(name) = column(name)\n"
-     << "in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s\n"
-     << "# a style's rows, and the row after each of its runs (no gap at a change)\n"
-     << "sel(b, k, s) = (cur = in(b, k, s), out = (cur || (prev && c('branch') == b)) ? "
-        "c('x_max') : 1/0, prev = cur, out)\n";
+     // The rows into arrays (X, Y, branch B, non-stop K, stable S, located P),
+     // so that each segment between rows i and i+1 takes one style: that of
+     // the row that is not a located point (a special point is where the
+     // stability changes), else the later row's. A style's line is drawn
+     // through array entries 2i - 1 (row i) and 2i (row i again if the
+     // segment to row i + 1 is that style's, else a break).
+     << "stats 'branch.tsv' using 1 nooutput\nN = STATS_records\n"
+     << "array X[N]; array Y[N]; array B[N]; array K[N]; array S[N]; array P[N]; array D[2*N]\n"
+     << "array R[4] = [0, 0, 0, 0]  # rows per style: a key entry only for a drawn style\n"
+     << "stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('" << ax
+     << "'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'non-stop'), "
+        "S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) "
+        "nooutput\n";
+  if (specials > 0) os << "stats 'special_points.tsv' using (P[int(c('pt'))] = 1, 0) nooutput\n";
+  os << "owner(i) = P[i + 1] && !P[i] ? i : i + 1\n"
+     << "seg(i, k, s) = i >= 1 && i < N && B[i] == B[i + 1] ? (K[owner(i)] == k && "
+        "S[owner(i)] == s) : 0\n"
+     << "row(j) = int((j + 1) / 2)\n"
+     << "sel(j, k, s) = int(j) % 2 ? (seg(row(j) - 1, k, s) || seg(row(j), k, s) ? Y[row(j)] : "
+        "NaN) "
+        ": (seg(row(j), k, s) ? Y[row(j)] : NaN)\n";
   if (gap.size() == 2)
     os << "set object 1 rect from " << FormatNumber(std::min(gap[0], gap[1])) << ", graph 0 to "
        << FormatNumber(std::max(gap[0], gap[1])) << ", graph 1 fc rgb '#e8e8e8' fs solid "
@@ -140,22 +157,18 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
   const char* kinds[] = {"non-stop", "stick-slip"};
   const int styles[] = {kStylePureSlip, kStyleStickSlip};
   bool first = true;
-  for (int b = 1; b <= pieces; ++b)
-    for (int k = 0; k < 2; ++k)
-      for (int s = 1; s >= 0; --s) {
-        os << (first ? "  " : ", \\\n  ") << "prev = 0, 'branch.tsv' using '" << ax << "':(sel("
-           << b << ", '" << kinds[k] << "', " << s << ")) with lines ls " << styles[k] + 1 - s
-           << " ";
-        if (b == 1)
-          os << "title '" << kinds[k] << (s ? ", stable" : ", unstable") << "'";
-        else
-          os << "notitle";
-        first = false;
-      }
+  for (int k = 0; k < 2; ++k)
+    for (int s = 1; s >= 0; --s) {
+      os << (first ? "  " : ", \\\n  ") << "D using (X[row($1)]):(sel($1, " << 1 - k << ", " << s
+         << ")) with lines ls " << styles[k] + 1 - s << " title (R[" << 1 + 2 * (1 - k) + s
+         << "] > 0 ? '" << kinds[k] << (s ? ", stable" : ", unstable") << "' : '')";
+      first = false;
+    }
   for (int b = 1; b <= pieces && dh; ++b)  // on the computed non-stop rows only
     os << ", \\\n  'branch.tsv' using '" << ax << "':(c('branch') == " << b
        << " && strcol('kind') eq 'non-stop' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
-       << "lc rgb 'black' " << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
+       << "dt (4, 6) lc rgb 'black' "
+       << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
   // LP, PD, NS and the sliding points, located (special_points.tsv), labelled
   // LP1, PD1, ... above and below in turn, so that neighbours do not overlap.
   if (specials > 0)

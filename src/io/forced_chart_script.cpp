@@ -51,14 +51,16 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
     const char* dash;
     double width;
     const char* title;
+    const char* dash_multiple;  // the same kind's curves of m >= 2 orbits
   };
+  // Every kind and multiple its own line: colour by kind, dash by kind and m.
   const Style styles[] = {
-      {ForcedCurveKind::kGR, "#c00000", "1", 3.5, "GR, non-stop motion ends"},
-      {ForcedCurveKind::kLP, "black", "1", 2.5, "LP, fold"},
-      {ForcedCurveKind::kPD, "black", "(8,4)", 2.5, "PD, period doubling"},
-      {ForcedCurveKind::kNS, "#ff00ff", "(10,4,2,4)", 2.5, "NS, Neimark-Sacker"},
+      {ForcedCurveKind::kGR, "#c00000", "1", 3.5, "GR, non-stop motion ends", "(2,3)"},
+      {ForcedCurveKind::kLP, "black", "1", 2.5, "LP, fold", "(2,3)"},
+      {ForcedCurveKind::kPD, "black", "(8,4)", 2.5, "PD, period doubling", "(8,3,2,3)"},
+      {ForcedCurveKind::kNS, "#ff00ff", "(10,4,2,4)", 2.5, "NS, Neimark-Sacker", "(2,3)"},
   };
-  // Curves of m >= 2 orbits (seeded from doubled branches too): dotted.
+  // Curves of m >= 2 orbits (seeded from doubled branches too): thinner, their own dashes.
   for (const Style& st : styles)
     for (const bool multiple : {false, true}) {
       bool first = true;
@@ -71,7 +73,7 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
         const std::string only = st.kind == ForcedCurveKind::kNS ? " && $17 == 0" : "";
         os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << only
            << " ? $2 : NaN) with lines lw " << (multiple ? 2.0 : st.width) << " lc rgb '"
-           << st.color << "' dt " << (multiple ? "(2,3)" : st.dash)
+           << st.color << "' dt " << (multiple ? st.dash_multiple : st.dash)
            << (first ? " title " + GnuplotQuoted(title) : std::string(" notitle"));
         first = false;
       }
@@ -88,8 +90,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   os.precision(17);
   os << "# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.\n"
      << "# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,\n"
-     << "# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, "
-        "the others black dots with labels.\n"
+     << "# LP black, PD black dashed, NS magenta, m >= 2 thinner with their own dashes; "
+        "codim2.tsv: SL open circles, the others black dots with labels.\n"
      << "if (!exists('suffix')) suffix = ''\n"
      << FigureTerminal(format, 1000, 860) << "set output '" << FigureFile("forced_chart", format)
      << "'.suffix\n"
@@ -115,8 +117,10 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
     if (p.label != ForcedCodim2Label::kSliding)
       os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << "," << p.p2
          << " offset 0.7,0.7 left front font ',12' noenhanced\n";
-  const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 : 0,
-               dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 : 0;
+  // Half a cell and 1 % more: neighbours overlap, so that no hairline of the
+  // background shows between them (antialiased edges).
+  const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 * 1.01 : 0,
+               dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 * 1.01 : 0;
   os << "plot ";
   if (g.n1 > 0)
     os << "'response.tsv' using 1:2:(" << dx << "):(" << dy
@@ -135,7 +139,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
        << ", curve ends: sliding'";
   if (!std::all_of(r.codim2.begin(), r.codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne '" << sl
-       << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' notitle";
+       << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title "
+          "'codimension 2'";
   os << "\nunset output\n";
   return os.str();
 }

@@ -26,10 +26,16 @@ set ylabel 'largest displacement x_{max} (dimensionless)'
 set yrange [0:*]
 set autoscale xfix
 c(name) = column(name)
-in(b, k, s) = c('branch') == b && strcol('kind') eq k && c('stable') == s
-# a style's rows, and the row after each of its runs (no gap at a change)
-sel(b, k, s) = (cur = in(b, k, s), out = (cur || (prev && c('branch') == b)) ? c('x_max') : 1/0, prev = cur, out)
-set object 1 rect from 0.9766122338634436, graph 0 to 1.0227630451873284, graph 1 fc rgb '#e8e8e8' fs solid noborder behind
+stats 'branch.tsv' using 1 nooutput
+N = STATS_records
+array X[N]; array Y[N]; array B[N]; array K[N]; array S[N]; array P[N]; array D[2*N]
+array R[4] = [0, 0, 0, 0]  # rows per style: a key entry only for a drawn style
+stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('omega'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'non-stop'), S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) nooutput
+owner(i) = P[i + 1] && !P[i] ? i : i + 1
+seg(i, k, s) = i >= 1 && i < N && B[i] == B[i + 1] ? (K[owner(i)] == k && S[owner(i)] == s) : 0
+row(j) = int((j + 1) / 2)
+sel(j, k, s) = int(j) % 2 ? (seg(row(j) - 1, k, s) || seg(row(j), k, s) ? Y[row(j)] : NaN) : (seg(row(j), k, s) ? Y[row(j)] : NaN)
+set object 1 rect from 0.9766122338634438, graph 0 to 1.0227630451873284, graph 1 fc rgb '#e8e8e8' fs solid noborder behind
 set label 1 'not traced: |x| unbounded' at 1.0227630451873284, graph 0.93 offset 1, 0 tc rgb '#555555'
 set bmargin 8.5
 mu = 0.3; A = 1
@@ -37,13 +43,9 @@ V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))
 D(w) = V(w)**2 - (mu * U(w))**2
 DH(w) = D(w) > 0 ? sqrt(D(w)) : 1/0
 plot \
-  prev = 0, 'branch.tsv' using 'omega':(sel(1, 'non-stop', 1)) with lines ls 3 title 'non-stop, stable', \
-  prev = 0, 'branch.tsv' using 'omega':(sel(1, 'non-stop', 0)) with lines ls 4 title 'non-stop, unstable', \
-  prev = 0, 'branch.tsv' using 'omega':(sel(1, 'stick-slip', 1)) with lines ls 1 title 'stick-slip, stable', \
-  prev = 0, 'branch.tsv' using 'omega':(sel(1, 'stick-slip', 0)) with lines ls 2 title 'stick-slip, unstable', \
-  prev = 0, 'branch.tsv' using 'omega':(sel(2, 'non-stop', 1)) with lines ls 3 notitle, \
-  prev = 0, 'branch.tsv' using 'omega':(sel(2, 'non-stop', 0)) with lines ls 4 notitle, \
-  prev = 0, 'branch.tsv' using 'omega':(sel(2, 'stick-slip', 1)) with lines ls 1 notitle, \
-  prev = 0, 'branch.tsv' using 'omega':(sel(2, 'stick-slip', 0)) with lines ls 2 notitle, \
-  'branch.tsv' using 'omega':(c('branch') == 1 && strcol('kind') eq 'non-stop' ? DH(c('omega')) : 1/0) with lines lw 1 lc rgb 'black' title 'Den Hartog (1931) closed form', \
-  'branch.tsv' using 'omega':(c('branch') == 2 && strcol('kind') eq 'non-stop' ? DH(c('omega')) : 1/0) with lines lw 1 lc rgb 'black' notitle
+  D using (X[row($1)]):(sel($1, 1, 1)) with lines ls 3 title (R[4] > 0 ? 'non-stop, stable' : ''), \
+  D using (X[row($1)]):(sel($1, 1, 0)) with lines ls 4 title (R[3] > 0 ? 'non-stop, unstable' : ''), \
+  D using (X[row($1)]):(sel($1, 0, 1)) with lines ls 1 title (R[2] > 0 ? 'stick-slip, stable' : ''), \
+  D using (X[row($1)]):(sel($1, 0, 0)) with lines ls 2 title (R[1] > 0 ? 'stick-slip, unstable' : ''), \
+  'branch.tsv' using 'omega':(c('branch') == 1 && strcol('kind') eq 'non-stop' ? DH(c('omega')) : 1/0) with lines lw 1 dt (4, 6) lc rgb 'black' title 'Den Hartog (1931) closed form', \
+  'branch.tsv' using 'omega':(c('branch') == 2 && strcol('kind') eq 'non-stop' ? DH(c('omega')) : 1/0) with lines lw 1 dt (4, 6) lc rgb 'black' notitle

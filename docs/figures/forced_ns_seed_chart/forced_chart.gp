@@ -1,6 +1,6 @@
 # Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
 # Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, the others black dots with labels.
+# LP black, PD black dashed, NS magenta, m >= 2 thinner with their own dashes; codim2.tsv: SL open circles, the others black dots with labels.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
 set output 'forced_chart.png'.suffix
@@ -20,14 +20,14 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[4] = [0x08519c, 0x3182bd, 0x8c6d31, 0xd9d9d9]
-set label "R1" at 1.0018902168450969,0.003686034037549967 offset 0.7,0.7 left front font ',12' noenhanced
-set label "R1" at 0.98427675169418405,0.0056012896286649506 offset 0.7,0.7 left front font ',12' noenhanced
-plot 'response.tsv' using 1:2:(0.012500000000000001):(0.001225):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
+set label "R1" at 1.0018902168450969,0.0036860340375499756 offset 0.7,0.7 left front font ',12' noenhanced
+set label "R1" at 0.98427675169418294,0.0056012896286652299 offset 0.7,0.7 left front font ',12' noenhanced
+plot 'response.tsv' using 1:2:(0.012625000000000001):(0.0012372500000000001):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
      NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
      'curves.tsv' using 1:($4 == 1 && $17 == 0 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) title "NS, Neimark-Sacker", \
-     'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' notitle
+     'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title 'codimension 2'
 unset output

@@ -1,6 +1,6 @@
 # Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
 # Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 dotted; codim2.tsv: SL open circles, the others black dots with labels.
+# LP black, PD black dashed, NS magenta, m >= 2 thinner with their own dashes; codim2.tsv: SL open circles, the others black dots with labels.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
 set output 'forced_chart.png'.suffix
@@ -20,7 +20,7 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0x54278f, 0x756bb1, 0x9e9ac8, 0xcbc9e2, 0x8c6d31, 0xd9d9d9, 0x404040]
-plot 'response.tsv' using 1:2:(0.0087499999999999991):(0.0068749999999999992):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
+plot 'response.tsv' using 1:2:(0.0088374999999999999):(0.0069437499999999994):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
      NaN with boxes fs solid 1.0 lc rgb '#6baed6' title "m = 1, 2 sticks", \
@@ -37,16 +37,15 @@ plot 'response.tsv' using 1:2:(0.0087499999999999991):(0.0068749999999999992):(C
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
      'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
-     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
      'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
-     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
-     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "PD of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding'
 unset output
