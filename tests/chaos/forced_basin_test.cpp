@@ -119,5 +119,34 @@ TEST(ForcedBasin, InvalidOptionsThrow) {
   EXPECT_THROW(ClassifyForcedBasins(m, o), InvalidArgument);
 }
 
+// The representative point of a period-2 attractor is the cycle's smallest x
+// (issue 35, planted bugs): the stable m = 2 orbit of the forced Stribeck
+// study at Omega = 0.617 (docs/studies.md), against stroboscopic shooting of
+// P^2 from it and the cycle's other point one forcing period on.
+TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
+  ForcedParams p = Belt(0.617);
+  p.base.law = LawKind::kStribeck, p.base.v_s = 0.2, p.base.v = 0.25;
+  const ForcedModel m(p);
+  ForcedBasinOptions o;
+  o.nx = o.ny = 3;
+  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  int checked = 0;
+  for (const Attractor& a : b.attractors) {
+    if (a.kind != AttractorKind::kPeriodic || a.m != 2) continue;
+    const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 2, ForcedOrbitOptions());
+    ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+    EXPECT_NEAR(orbit.start.x, a.x, 1e-7);
+    ForcedRequest rq;
+    rq.t_end = m.period();
+    const ForcedRun half =
+        ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, orbit.start.x, orbit.start.xdot), rq);
+    ASSERT_EQ(half.status, ForcedStatus::kReached);
+    std::printf("[ measured ] m = 2 cycle: x = %.10g (representative), %.10g\n", a.x, half.end.x);
+    EXPECT_GT(half.end.x, a.x + 1e-3);  // the other point of the cycle lies to the right
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1);
+}
+
 }  // namespace
 }  // namespace stickslip
