@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "forced_reference.hpp"
@@ -87,11 +88,31 @@ std::vector<double> RefFlipRoots(ForcedParams p, const ForcedBranch& b, double l
   return roots;
 }
 
+// Issue 35, item 4: a sliding point's description follows its counts, "(sticks
+// a -> b": "born" or "splits" only where b > a, "vanishes", "merge" or "shrinks" where b < a.
+void ExpectDescriptionsFollowCounts(const ForcedBranch& b) {
+  for (const ForcedBranchRow& s : b.special) {
+    int a = 0, c = 0;
+    const size_t at = s.description.find("(sticks ");
+    if (at == std::string::npos) continue;
+    ASSERT_EQ(std::sscanf(s.description.c_str() + at, "(sticks %d -> %d", &a, &c), 2);
+    const bool more = s.description.find("stick phase is born") != std::string::npos ||
+                      s.description.find("turns into a stick phase") != std::string::npos ||
+                      s.description.find("splits") != std::string::npos;
+    const bool fewer = s.description.find("vanishes") != std::string::npos ||
+                       s.description.find("merge") != std::string::npos ||
+                       s.description.find("shrinks") != std::string::npos;
+    EXPECT_EQ(more, c > a) << s.description;
+    EXPECT_EQ(fewer, c < a) << s.description;
+  }
+}
+
 // The branch's PD points within (lo, hi) against the reference's roots.
 void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, double hi,
                      const ForcedBranchOptions& o, const char* name) {
   const ForcedBranch b = testing_util::TraceOmega(p, from, to, o);
   ASSERT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ExpectDescriptionsFollowCounts(b);
   std::vector<double> pd;
   for (const ForcedBranchRow& s : b.special)
     if (s.label == ForcedLabel::kPD && s.p > lo && s.p < hi) pd.push_back(s.p);
