@@ -157,7 +157,9 @@ TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
   for (const ForcedBranchRow& s : b.special) {
     EXPECT_NE(s.label, ForcedLabel::kNS)
         << "Omega = " << s.p << ", mu " << s.multipliers[0] << ", " << s.multipliers[1];
-    if (s.label == ForcedLabel::kNS) EXPECT_TRUE(forced_detail::TorusPair(s, 1e-6));
+    if (s.label == ForcedLabel::kNS) {
+      EXPECT_TRUE(forced_detail::TorusPair(s, 1e-6));
+    }
     pd += s.label == ForcedLabel::kPD;
   }
   EXPECT_EQ(pd, 2);
