@@ -24,16 +24,19 @@ const char* AttractorKindName(AttractorKind k);  // "periodic", "rest", "chaotic
 template <>
 struct EnumNames<AttractorKind> {
   static constexpr NamedValue<AttractorKind> kTable[] = {
-      {AttractorKind::kPeriodic, "periodic"},   {AttractorKind::kRest, "rest"},
-      {AttractorKind::kChaotic, "chaotic"},     {AttractorKind::kUndecided, "undecided"},
-      {AttractorKind::kUnbounded, "unbounded"}, {AttractorKind::kFailed, "failed"},
+      {AttractorKind::kPeriodic, "periodic"},
+      {AttractorKind::kRest, "rest"},
+      {AttractorKind::kChaotic, "chaotic"},
+      {AttractorKind::kUndecided, "undecided"},
+      {AttractorKind::kUnbounded, "unbounded"},
+      {AttractorKind::kFailed, "failed"},
   };
 };
 
 struct Attractor {
   AttractorKind kind = AttractorKind::kUndecided;
-  int m = 0;       ///< period in forcing periods (periodic)
-  int sticks = 0;  ///< stick phases per m periods (periodic), per period rounded (chaotic)
+  int m = 0;               ///< period in forcing periods (periodic)
+  int sticks = 0;          ///< stick phases per m periods (periodic), per period rounded (chaotic)
   /// Stick phases per forcing period, the kept run's mean (chaotic: 0.66 on
   /// the seed basin's attractor, where `sticks` rounds it to 1).
   double sticks_per_period = 0;
