@@ -150,6 +150,7 @@ py::dict Basins(const ForcedParams& p, int nx, int ny, std::pair<double, double>
   for (const Attractor& a : r.attractors) {
     py::dict q;
     q["kind"] = AttractorKindName(a.kind), q["m"] = a.m, q["sticks"] = a.sticks;
+    q["sticks_per_period"] = a.sticks_per_period;
     q["x"] = a.x, q["xdot"] = a.xdot, q["lyapunov"] = a.lyapunov, q["starts"] = a.starts;
     attractors.append(q);
   }
@@ -183,7 +184,8 @@ void BindChaos(py::module_& m) {
         py::arg("threads") = 2, py::arg("rtol") = none, py::arg("atol") = none,
         "Basins on the stroboscopic section (as ss_basin --force): per start (x fastest) the "
         "index of its attractor (-1: failed) and its exponent; attractors as dicts (kind, m, "
-        "sticks, x, xdot, lyapunov, starts). max_period defaults to min(16, keep / 2).");
+        "sticks, sticks_per_period, x, xdot, lyapunov, starts). max_period defaults to min(16, "
+        "keep / 2).");
 }
 
 }  // namespace stickslip::python

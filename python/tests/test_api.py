@@ -69,6 +69,98 @@ class ReadOnlyArrays(unittest.TestCase):
         self.assert_read_only(stickslip.periodic_orbit(p).start, "orbit.start")
 
 
+def _arrays(obj, path, seen, depth=0):
+    """Every numpy array reachable from obj (attributes, dict values, items), with its path."""
+    if isinstance(obj, np.ndarray):
+        yield path, obj
+        if obj.dtype == object:
+            for i, item in enumerate(obj.flat[:3]):
+                yield from _arrays(item, "%s[%d]" % (path, i), seen, depth + 1)
+        return
+    if depth > 5 or id(obj) in seen or isinstance(obj, (str, bytes, int, float, complex, bool)):
+        return
+    if obj is None or callable(obj) or type(obj).__module__ in ("builtins", "enum"):
+        if not isinstance(obj, (dict, list, tuple)):
+            return
+    seen.add(id(obj))
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            yield from _arrays(v, "%s[%r]" % (path, k), seen, depth + 1)
+    elif isinstance(obj, (list, tuple)):
+        for i, v in enumerate(obj[:3]):
+            yield from _arrays(v, "%s[%d]" % (path, i), seen, depth + 1)
+    else:
+        for name in dir(obj):
+            if name.startswith("_") or name in ("params",):
+                continue
+            try:
+                v = getattr(obj, name)
+            except Exception:  # a property that needs arguments
+                continue
+            if not callable(v) or isinstance(v, np.ndarray):
+                yield from _arrays(v, "%s.%s" % (path, name), seen, depth + 1)
+
+
+class EveryResultArrayReadOnly(unittest.TestCase):
+    """Issue 35 (planted bugs): every array any function returns, at any depth, is
+    read-only; a function added to the module without a call here fails."""
+
+    # Functions that return no result arrays of a computation (names, scales, a
+    # restart point's parameters) or whose results have their own test (sweep:
+    # test_sweep.py; stick_slip_orbit is sweep's fn; group_stats reads a SweepResult).
+    NO_ARRAYS = {"default_range", "parameter_names", "scales", "restart", "sweep",
+                 "stick_slip_orbit", "group_stats"}
+
+    def calls(self):
+        p = stickslip.Params()
+        orbit = stickslip.periodic_orbit(p)
+        slip = stickslip.Params()
+        slip.v = 0.42  # a stable pure-slip orbit inside the stick-slip one
+        sp = stickslip.Params("stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25)
+        fp = stickslip.ForcedParams(sp, force=0.3, omega=0.617)
+        w = stickslip.ForcedAxis.omega
+        s = stickslip.stroboscopic(fp, 0.0, 0.25, transient=100, keep=2)
+        fo = stickslip.forced_orbit(fp, s["x"][0], s["xdot"][0])
+        branch = stickslip.continue_forced(fp, w, 0.62, 0.617, x_guess=fo.x0, xdot_guess=fo.xdot0)
+        pd = [q for q in branch.special_points if q.label == "PD"][0]
+        return {
+            "basins": lambda: stickslip.basins(p, nx=3, ny=3),
+            "chart": lambda: stickslip.chart(p),
+            "continue_branch": lambda: stickslip.continue_branch(p, "v", from_=0.3, to=0.5),
+            "continue_doubled": lambda: stickslip.continue_doubled(pd, lo=pd.p - 0.003,
+                                                                   hi=pd.p + 0.003),
+            "continue_forced": lambda: branch,
+            "find_forced_orbits": lambda: stickslip.find_forced_orbits(fp, max_m=2, grid=3),
+            "forced_basins": lambda: stickslip.forced_basins(fp, nx=2, ny=2),
+            "forced_orbit": lambda: fo,
+            "orbit_curve": lambda: stickslip.orbit_curve(p, orbit, n=20),
+            "orbit_diagram": lambda: stickslip.orbit_diagram(fp, w, 0.61, 0.62, n=3,
+                                                             transient=50, keep=4),
+            "periodic_orbit": lambda: orbit,
+            "periodic_orbits": lambda: stickslip.periodic_orbits(p),
+            "simulate": lambda: stickslip.simulate(p, t_end=2.0),
+            "simulate_forced": lambda: stickslip.simulate_forced(fp, t_end=20.0),
+            "smallest_disturbance": lambda: stickslip.smallest_disturbance(
+                slip, stickslip.periodic_orbits(slip).pure_slip[0], n=200),
+            "stroboscopic": lambda: s,
+        }
+
+    def test_every_function_every_array(self):
+        calls = self.calls()
+        public = {n for n in dir(stickslip) if not n.startswith("_")
+                  and callable(getattr(stickslip, n)) and not isinstance(getattr(stickslip, n), type)}
+        self.assertEqual(public - self.NO_ARRAYS - set(calls), set(), "functions without a call")
+        found = 0
+        for name, call in sorted(calls.items()):
+            for path, arr in _arrays(call(), name, set()):
+                found += 1
+                self.assertFalse(arr.flags.writeable, path)
+                if arr.size:
+                    with self.assertRaises(ValueError, msg=path):
+                        arr.flat[0] = arr.flat[0]
+        self.assertGreater(found, 40)
+
+
 class BranchDirection(unittest.TestCase):
     def test_rows_run_from_from_to_to_with_the_apps_special_points(self):
         p = stickslip.Params()

@@ -23,6 +23,10 @@ def failing(point):
     return {"y": point["v"]}
 
 
+def nan_above(point):
+    return {"y": math.nan if point["v"] > 0.3 else point["v"]}
+
+
 def coulomb_orbit(point):
     return stickslip.stick_slip_orbit(dict(point, law="coulomb"))
 
@@ -85,6 +89,20 @@ class Sweep(unittest.TestCase):
         self.assertIn("point 2 {'v': 0.4}", str(e.exception))
         self.assertIn("no model here", str(e.exception))
 
+
+    def test_the_error_names_the_point_not_its_index_in_the_chunk(self):
+        # Issue 35 (planted bugs): with 2 points per chunk, point 3 is index 1
+        # of the second chunk and point 2 index 0 of it.
+        grid = {"v": [0.1, 0.2, 0.25, 0.4]}
+        for fn, where in ((failing, "point 3 {'v': 0.4}"), (nan_above, "point 3 {'v': 0.4}")):
+            for scheduler in ("serial", None):
+                with self.assertRaises(stickslip.SweepError, msg=fn.__name__) as e:
+                    stickslip.sweep(fn, grid, scheduler=scheduler, chunk_size=2, n_workers=1)
+                self.assertIn(where, str(e.exception))
+        with self.assertRaises(stickslip.SweepError) as e:
+            stickslip.sweep(failing, {"v": [0.1, 0.2, 0.4, 0.1]}, scheduler="serial",
+                            chunk_size=3)
+        self.assertIn("point 2 {'v': 0.4}", str(e.exception))
 
 if __name__ == "__main__":
     unittest.main()

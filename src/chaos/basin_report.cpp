@@ -14,8 +14,8 @@ std::string AttractorLabel(const Attractor& a) {
   switch (a.kind) {
     case AttractorKind::kPeriodic:
       return "period " + std::to_string(a.m) + ", " + s;
-    case AttractorKind::kChaotic:
-      return "chaotic, ~" + s + "/period";
+    case AttractorKind::kChaotic:  // the measured mean (issue 35: 0.66, not ~1)
+      return "chaotic, " + Num(a.sticks_per_period, 2) + " sticks/period";
     default:
       return AttractorKindName(a.kind);
   }
@@ -40,15 +40,16 @@ TsvTable ForcedBasinTable(const ForcedBasins& b) {
 }
 
 TsvTable AttractorTable(const ForcedBasins& b) {
-  TsvTable t(
-      {"attractor", "kind", "m", "sticks", "x", "xdot", "lyapunov", "starts", "fraction", "label"});
+  TsvTable t({"attractor", "kind", "m", "sticks", "x", "xdot", "lyapunov", "starts", "fraction",
+              "label", "sticks_per_period"});
   int total = 0;
   for (const Attractor& a : b.attractors) total += a.starts;
   for (size_t i = 0; i < b.attractors.size(); ++i) {
     const Attractor& a = b.attractors[i];
     t.AddRow({static_cast<int>(i), AttractorKindName(a.kind), a.m, a.sticks, a.x, a.xdot,
               std::isfinite(a.lyapunov) ? a.lyapunov : 0.0, a.starts,
-              total > 0 ? static_cast<double>(a.starts) / total : 0.0, AttractorLabel(a)});
+              total > 0 ? static_cast<double>(a.starts) / total : 0.0, AttractorLabel(a),
+              a.sticks_per_period});
   }
   return t;
 }

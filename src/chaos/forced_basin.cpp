@@ -57,11 +57,13 @@ Attractor ClassifyAttractor(const ForcedModel& model, const StroboscopicRun& r,
       if (p[k].x < p[best].x) best = k;
     }
     a.x = p[best].x, a.xdot = p[best].xdot;
+    a.sticks_per_period = static_cast<double>(a.sticks) / m;
     return a;
   }
   double sticks = 0;
   for (const SectionPoint& q : p) sticks += q.sticks;
   a.sticks = static_cast<int>(std::lround(sticks / K));
+  a.sticks_per_period = sticks / K;
   a.kind = r.lyapunov > std::max(3 * r.lyapunov_err, tol.ChaoticExponentFloor())
                ? AttractorKind::kChaotic
                : AttractorKind::kUndecided;

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "forced_branch_problem.hpp"
+#include "forced_locate.hpp"
 #include "forced_sliding.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
@@ -17,54 +18,9 @@ namespace stickslip {
 namespace {
 
 using Eigen::VectorXd;
+using forced_detail::Bracket;
+using forced_detail::Locate;
 using forced_detail::StrobeProblem;
-
-// The rows at the ends of the final bracket of a located sign change.
-struct Bracket {
-  ForcedBranchRow lo, hi, mid;
-  double p_hi = 0;  // the parameter at the bracket's far end
-};
-
-// Bisection on the chord a -> b for the sign change of test(): each point is
-// corrected onto the branch with the chord's direction held (Palc::Correct).
-// fail_is_hi: a point where the corrector fails counts as b's side (the edge
-// of a jump of the map, where the orbit of a's side ends).
-bool Locate(Palc& palc, StrobeProblem& problem, const VectorXd& a, const VectorXd& b,
-            const std::function<double()>& test, double tol, Bracket* out,
-            bool fail_is_hi = false) {
-  const VectorXd chord =
-      (b - a).cwiseQuotient(palc.options().scale.size() ? palc.options().scale : VectorXd::Ones(3));
-  const VectorXd t = chord.normalized();
-  auto at = [&](double s, double* g) {
-    const PalcCorrection c = palc.Correct(a + s * (b - a), t);
-    if (!c.ok) return false;
-    *g = test();
-    return true;
-  };
-  double lo = 0, hi = 1, g_lo = 0, g_hi = 0;
-  if (!at(hi, &g_hi)) return false;
-  out->hi = problem.Row();
-  if (!at(lo, &g_lo) || (g_lo > 0) == (g_hi > 0)) return false;
-  out->lo = problem.Row();
-  for (int it = 0; it < Tolerances::kForcedBisectionCap && hi - lo > tol; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    double g = 0;
-    if (!at(mid, &g)) {
-      if (!fail_is_hi) return false;
-      hi = mid;
-      continue;
-    }
-    const bool low = (g > 0) == (g_lo > 0);
-    (low ? lo : hi) = mid;
-    (low ? out->lo : out->hi) = problem.Row();
-  }
-  out->p_hi = (a + hi * (b - a))[2];
-  if (fail_is_hi) return true;
-  double g = 0;
-  if (!at(0.5 * (lo + hi), &g)) return false;
-  out->mid = problem.Row();
-  return true;
-}
 
 ForcedBranchStatus FromPalc(const PalcResult& r) {
   switch (r.status) {
@@ -82,8 +38,6 @@ ForcedBranchStatus FromPalc(const PalcResult& r) {
   return r.message == "cancelled" ? ForcedBranchStatus::kCancelled
                                   : ForcedBranchStatus::kReachedEnd;
 }
-
-bool Complex(const ForcedBranchRow& r) { return r.multipliers[0].imag() != 0; }
 
 // One Palc trace's monitor: rows, the end at p = to, and the special points
 // between consecutive rows (LP, PD, NS by their test functions; the sliding
@@ -124,7 +78,6 @@ class Monitor {
   bool stopped_ = false, have_prev_ = false, jumped_ = false, turned_ = false;
   VectorXd turned_at_;
   ForcedBranchRow prev_;
-  double prev_tests_[3] = {0, 0, 0};
 };
 
 // The edge behind a failed or far-apart chord bracket br (span: the chord's
@@ -134,7 +87,8 @@ Bracket Monitor::AcrossEdge(const Bracket& br, bool chord, double span,
                             const ForcedBranchRow& row) {
   Bracket out = br, fine;
   std::string why;
-  const double step = std::max(std::abs(span) / 8, Tolerances::kForcedEdgeStep * (1 + std::abs(out.lo.p)));
+  const double step =
+      std::max(std::abs(span) / 8, Tolerances::kForcedEdgeStep * (1 + std::abs(out.lo.p)));
   bool found_edge = false, edge_only = false;
   for (const double sign : {1.0, -1.0})
     if (!found_edge && !edge_only) {
@@ -161,24 +115,10 @@ Bracket Monitor::AcrossEdge(const Bracket& br, bool chord, double span,
 
 void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRow& row) {
   std::vector<ForcedBranchRow> found;
-  const double now[3] = {problem_.FoldTest(), problem_.FlipTest(), problem_.TorusTest()};
-  double (StrobeProblem::*const tests[3])()
-      const = {&StrobeProblem::FoldTest, &StrobeProblem::FlipTest, &StrobeProblem::TorusTest};
-  const ForcedLabel labels[3] = {ForcedLabel::kLP, ForcedLabel::kPD, ForcedLabel::kNS};
-  const char* what[3] = {"fold: a multiplier at +1", "period doubling: a multiplier at -1",
-                         "Neimark-Sacker: a complex pair on the unit circle"};
-  const bool smooth = forced_detail::SameStructure(prev_, row);
-  for (int i = 0; i < 3; ++i) {
-    if ((now[i] > 0) == (prev_tests_[i] > 0) || !smooth) continue;
-    if (i == 2 && !(Complex(prev_) && Complex(row))) continue;
-    Bracket br;
-    if (!Locate(
-            palc_, problem_, a, b, [&] { return (problem_.*tests[i])(); }, o_.locate_tol, &br))
-      continue;
-    br.mid.label = labels[i];
-    br.mid.description = what[i];
-    found.push_back(br.mid);
-  }
+  // The pieces of one stick structure between a and b, split at the sliding
+  // points: every sign change of the test functions on each (issue 35).
+  std::vector<std::pair<forced_detail::BranchPoint, forced_detail::BranchPoint>> pieces;
+  forced_detail::BranchPoint piece{a, prev_};
   ForcedBranchRow ref = prev_, first_lo;
   VectorXd from = a;
   for (int k = 0; k < 4 && !forced_detail::SameStructure(ref, row); ++k) {  // one edge each
@@ -206,10 +146,15 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     if (!same) first_lo = br.lo;
     forced_detail::ClassifySliding(base_, axis_, o_, first_lo, br.hi, &point);
     found.push_back(point);
+    pieces.push_back({piece, forced_detail::PointOf(br.lo)});
+    piece = forced_detail::PointOf(br.hi);
     if (forced_detail::SameStructure(br.hi, ref)) break;
     ref = br.hi;
     from = Eigen::Vector3d(br.hi.x0, br.hi.xdot0, br.hi.p);
   }
+  pieces.push_back({piece, {b, row}});
+  for (const auto& [lo, hi] : pieces)
+    forced_detail::TestPoints(palc_, problem_, lo, hi, o_.locate_tol, &found);
   std::sort(found.begin(), found.end(), [&](const ForcedBranchRow& x, const ForcedBranchRow& y) {
     return std::abs(x.p - prev_.p) < std::abs(y.p - prev_.p);
   });
@@ -233,10 +178,8 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
     here = c.u;
   }
   const ForcedBranchRow row = problem_.Row();
-  const double tests[3] = {problem_.FoldTest(), problem_.FlipTest(), problem_.TorusTest()};
   jumped_ = false;
   if (prev && have_prev_) Special(*prev, here, row);
-  std::copy(tests, tests + 3, prev_tests_);
   prev_ = row;
   have_prev_ = true;
   out_.rows.push_back(row);

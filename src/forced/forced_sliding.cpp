@@ -141,10 +141,14 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
       std::min(CrossingToEdge(base, axis, o, before), CrossingToEdge(base, axis, o, after)) <= edge;
   if ((ds != 0 && dc == -ds) || (dc != 0 && on_edge)) {
     point->label = ForcedLabel::kCR;
-    point->description =
-        "crossing-sliding: a crossing of x' = v reaches the stick band's edge and "
-        "turns into a stick phase" +
-        change;
+    // The description follows the counts' direction (issue 35, item 4).
+    const char* what = ds > 0   ? "a crossing of x' = v reaches the stick band's edge and turns "
+                                  "into a stick phase"
+                       : ds < 0 ? "a stick phase shrinks to a crossing of x' = v on the stick "
+                                  "band's edge"
+                       : dc < 0 ? "a crossing of x' = v reaches the stick band's edge and is lost"
+                                : "a crossing of x' = v is born on the stick band's edge";
+    point->description = std::string("crossing-sliding: ") + what + change;
   } else if (ds != 0 && dc == 0) {
     // Adding-sliding leaves a slip phase between two sticks that vanishes at
     // the point; grazing-sliding a stick phase born from a tangency.
@@ -155,15 +159,17 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
     if (slip <= vanishing) {
       point->label = ForcedLabel::kAD;
       point->description =
-          "adding-sliding: the stick force touches the band's edge tangentially, "
-          "a stick phase splits around a short slip" +
+          std::string("adding-sliding: the stick force touches the band's edge tangentially, ") +
+          (ds > 0 ? "a stick phase splits around a short slip"
+                  : "two stick phases merge as the slip between them vanishes") +
           change;
     } else {
       point->label = ForcedLabel::kGR;
       point->description =
-          "grazing-sliding: a slip phase touches x' = v tangentially (x'' = 0) "
-          "inside the stick band, a stick phase is born" +
-          change;
+          std::string(
+              "grazing-sliding: a slip phase touches x' = v tangentially (x'' = 0) "
+              "inside the stick band, ") +
+          (ds > 0 ? "a stick phase is born" : "a stick phase vanishes") + change;
     }
   } else if (ds == 0 && dc != 0) {
     point->label = ForcedLabel::kSW;

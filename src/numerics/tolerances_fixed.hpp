@@ -44,6 +44,12 @@ struct FixedTolerances {
   // (1 + |p| + |x|) straddles a jump of the map, and two edges within it (in
   // p) are one (the two halves of a symmetric orbit reach the band together).
   static constexpr double kForcedEdgeGap = 1e3;
+  // Forced branches: a step across which a multiplier moves more than
+  // kForcedMultiplierStep, or (once) one within it of -1, +1 or the unit
+  // circle, is halved before the test functions' signs are compared (two
+  // crossings in one step, issue 35); an NS point's pair lies within
+  // kForcedTorusPair of the unit circle (a located one: 1e-9).
+  static constexpr double kForcedMultiplierStep = 0.1, kForcedTorusPair = 1e-6;
   // Forced chart curves: a section point beyond this (|x| or |x'|) has left
   // the branch's domain (ForcedBranchOptions::max_amplitude's default).
   static constexpr double kForcedCurveAmplitude = 1e3;
@@ -65,6 +71,8 @@ struct FixedTolerances {
   static constexpr int kCrossingBisectionCap = 200;
   // Forced branches (forced_branch.cpp): bisections of a bracket to its tol.
   static constexpr int kForcedBisectionCap = 60;
+  // Forced branches: halvings of a step between two rows (kForcedMultiplierStep).
+  static constexpr int kForcedSplitDepth = 6;
   // Chart regions (chart_regions.cpp): section-map returns from the exit
   // point before a run neither decayed nor settled is judged (kRegionLive).
   static constexpr int kRegionMapReturns = 150;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "stickslip/chaos/basin_report.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -117,6 +118,89 @@ TEST(ForcedBasin, InvalidOptionsThrow) {
   ForcedBasinOptions o;
   o.max_period = 100;  // > keep / 2
   EXPECT_THROW(ClassifyForcedBasins(m, o), InvalidArgument);
+}
+
+// The representative point of a period-2 attractor is the cycle's smallest x
+// (issue 35, planted bugs): the stable m = 2 orbit of the forced Stribeck
+// study at Omega = 0.617 (docs/studies.md), against stroboscopic shooting of
+// P^2 from it and the cycle's other point one forcing period on.
+TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
+  ForcedParams p = Belt(0.617);
+  p.base.law = LawKind::kStribeck, p.base.v_s = 0.2, p.base.v = 0.25;
+  const ForcedModel m(p);
+  ForcedBasinOptions o;
+  o.nx = o.ny = 3;
+  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  int checked = 0;
+  for (const Attractor& a : b.attractors) {
+    if (a.kind != AttractorKind::kPeriodic || a.m != 2) continue;
+    const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 2, ForcedOrbitOptions());
+    ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+    EXPECT_NEAR(orbit.start.x, a.x, 1e-7);
+    ForcedRequest rq;
+    rq.t_end = m.period();
+    const ForcedRun half =
+        ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, orbit.start.x, orbit.start.xdot), rq);
+    ASSERT_EQ(half.status, ForcedStatus::kReached);
+    std::printf("[ measured ] m = 2 cycle: x = %.10g (representative), %.10g\n", a.x, half.end.x);
+    EXPECT_GT(half.end.x, a.x + 1e-3);  // the other point of the cycle lies to the right
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1);
+}
+
+// Issue 35, item 6: an exponent within 3 of its errors of 0 is undecided, not
+// chaotic; a chaotic attractor reports its measured sticks per period (2 in 3
+// periods here: 0.67, which `sticks` rounds to 1) in its label.
+TEST(ForcedBasin, ChaoticOnlyBeyondTheExponentsErrorWithMeanSticks) {
+  const ForcedModel m(Belt(0.45));
+  StroboscopicRun r;
+  for (int k = 0; k < 60; ++k) {  // no period up to 16: x = k^2 mod 61
+    SectionPoint q;
+    q.x = (k * k) % 61 / 61.0, q.xdot = 0.1 * k;
+    q.sticks = k % 3 == 2 ? 0 : 1;
+    r.points.push_back(q);
+  }
+  ForcedBasinOptions o;
+  r.lyapunov = 0.02, r.lyapunov_err = 0.01;  // 2 errors from 0
+  EXPECT_EQ(ClassifyAttractor(m, r, o).kind, AttractorKind::kUndecided);
+  r.lyapunov = -0.02;
+  EXPECT_EQ(ClassifyAttractor(m, r, o).kind, AttractorKind::kUndecided);
+  r.lyapunov = 0.05;  // 5 errors
+  const Attractor a = ClassifyAttractor(m, r, o);
+  EXPECT_EQ(a.kind, AttractorKind::kChaotic);
+  EXPECT_EQ(a.sticks, 1);
+  EXPECT_NEAR(a.sticks_per_period, 40.0 / 60, 1e-15);
+  EXPECT_EQ(AttractorLabel(a), "chaotic, 0.67 sticks/period");
+}
+
+// Issue 35, item 6: the period limit is an option. At Omega = 0.558 on the
+// forced seed belt a weakly stable period-27 orbit (18 sticks) attracts starts
+// that max_period 16 leaves undecided; against stroboscopic shooting of P^27.
+TEST(ForcedBasin, PeriodLimitIsAnOption) {
+  ForcedParams p = Belt(0.558);
+  p.base.law = LawKind::kCubic, p.base.mu_m = 0.25, p.base.v_m = 0.5, p.base.v = 0.25;
+  const ForcedModel m(p);
+  ForcedBasinOptions o;
+  o.nx = o.ny = 3;
+  o.max_period = 32;
+  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  int found = 0;
+  for (const Attractor& a : b.attractors)
+    if (a.kind == AttractorKind::kPeriodic && a.m == 27) {
+      EXPECT_EQ(a.sticks, 18);
+      const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 27, ForcedOrbitOptions());
+      ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+      EXPECT_NEAR(orbit.start.x, a.x, 1e-6);
+      EXPECT_TRUE(orbit.stable);
+      std::printf("[ measured ] period 27: %d starts, |mu| = %.4f\n", a.starts,
+                  std::abs(orbit.multipliers[0]));
+      found += a.starts;
+    }
+  EXPECT_GT(found, 0);
+  o.max_period = 16;
+  for (const Attractor& a : ClassifyForcedBasins(m, o).attractors)
+    EXPECT_FALSE(a.kind == AttractorKind::kPeriodic && a.m > 16);
 }
 
 }  // namespace

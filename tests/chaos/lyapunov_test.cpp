@@ -23,6 +23,10 @@ ForcedParams Params(LawKind law, double beta, double v, double force, double ome
   return forced_reference::Belt(law, beta, v, force, omega);
 }
 
+// An exponent from an aligned tangent and real multipliers: rounding over
+// the kept periods (measured up to 1e-14).
+constexpr double kAligned = 1e-12;
+
 // ln|mu_max| / T of the stroboscopic fixed point shot from the run's last point.
 double FloquetExponent(const ForcedModel& m, const StroboscopicRun& r) {
   ForcedOrbitOptions o;
@@ -42,14 +46,22 @@ TEST(Lyapunov, StickSlipWindowMatchesExitMapMultiplier) {
   const ForcedExitOrbit exit = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
   ASSERT_EQ(exit.status, ForcedOrbitStatus::kConverged) << exit.message;
   const double from_exit_map = std::log(std::abs(exit.multiplier)) / m.period();
-  EXPECT_NEAR(r.lyapunov, from_exit_map, 1e-3);
-  EXPECT_NEAR(r.lyapunov, FloquetExponent(m, r), 1e-3);
+  const double floquet = FloquetExponent(m, r);
+  std::printf("[ measured ] stick-slip: |lambda - exit map| %.2e, |lambda - floquet| %.2e\n",
+              std::abs(r.lyapunov - from_exit_map), std::abs(r.lyapunov - floquet));
+  // One real multiplier: the tangent aligned in the transient gives it to rounding
+  // (issue 35: without the alignment 5e-4 passed a bound of 1e-3).
+  EXPECT_NEAR(r.lyapunov, from_exit_map, kAligned);
+  EXPECT_NEAR(r.lyapunov, floquet, kAligned);
   for (const SectionPoint& q : r.points) EXPECT_EQ(q.sticks, 1);
 }
 
 // Convergence with the kept periods K on a non-stop (pure-slip) Stribeck orbit:
-// printed, and at the defaults within 1e-3, shrinking with K.
-void ConvergenceOnNonStopOrbit(double omega) {
+// printed, within `at_defaults` at the defaults (K = 200), shrinking with K.
+// Real multipliers: the aligned tangent gives ln|mu| / T to rounding at every
+// K (measured 9.4e-15); a complex pair turns the tangent, so the estimate
+// converges like 1/K (measured 4.7e-5 at K = 200).
+void ConvergenceOnNonStopOrbit(double omega, double at_defaults, bool every_k) {
   const ForcedModel m(Params(LawKind::kStribeck, 0.02, 0.2, 1.0, omega));
   double floquet = 0, last_err = 1;
   std::printf("omega %.3f: K, lambda, |lambda - floquet|\n", omega);
@@ -62,8 +74,8 @@ void ConvergenceOnNonStopOrbit(double omega) {
     if (keep == 25) floquet = FloquetExponent(m, r);
     const double err = std::abs(r.lyapunov - floquet);
     std::printf("  %4d  %.8f  %.2e\n", keep, r.lyapunov, err);
-    if (keep == 200) {
-      EXPECT_LT(err, 1e-3);  // the defaults
+    if (keep == 200 || every_k) {
+      EXPECT_LT(err, at_defaults);  // the defaults
     }
     if (keep >= 200) {
       EXPECT_LE(err, last_err * 1.01 + 1e-12);
@@ -72,15 +84,22 @@ void ConvergenceOnNonStopOrbit(double omega) {
   }
 }
 
-TEST(Lyapunov, NonStopRealMultipliersMatchFloquet) { ConvergenceOnNonStopOrbit(2.05); }
-TEST(Lyapunov, NonStopComplexMultipliersMatchFloquet) { ConvergenceOnNonStopOrbit(1.5); }
+TEST(Lyapunov, NonStopRealMultipliersMatchFloquet) {
+  ConvergenceOnNonStopOrbit(2.05, kAligned, true);
+}
+TEST(Lyapunov, NonStopComplexMultipliersMatchFloquet) {
+  ConvergenceOnNonStopOrbit(1.5, 1e-4, false);
+}
 
 TEST(Lyapunov, LinearPureSlipIsMinusBeta) {
   // Coulomb pure slip is linear: both multipliers have modulus exp(-beta T).
   const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.4));
   const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
-  EXPECT_NEAR(r.lyapunov, -0.05, 1e-3);
+  std::printf("[ measured ] linear pure slip: |lambda + beta| %.2e\n", std::abs(r.lyapunov + 0.05));
+  // A complex pair of one modulus: the Frobenius norm of the turning tangent
+  // matrix averages out like 1/K (measured 2.1e-7 at the defaults).
+  EXPECT_NEAR(r.lyapunov, -0.05, 1e-6);
 }
 
 TEST(Lyapunov, ChaoticTaylorAgreesWithOdeintReference) {

@@ -3,9 +3,14 @@
 // the closed-form simulation and its central difference in the exit time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "forced_reference.hpp"
+#include "forced_trace.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 
 namespace stickslip {
@@ -91,6 +96,45 @@ TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
   p.base.mu_s = 0.4, p.base.mu_k = 0.3, p.base.beta = 0.05, p.base.v = 0;
   p.force = 0.7, p.omega = 0.6;
   Check(p, 2, 1);
+}
+
+// Flip-unstable stick-slip orbits (issue 35, planted bugs): the m = 1 orbit of
+// studies/stribeck_forced.ini between its PD (Omega 0.6182) and 0.605 has a
+// multiplier from -1.02 to -1.98; the exit map must call it unstable (|mu| > 1,
+// not mu < 1). Started from the branch's rows (the transient finds the
+// doubled attractors there); its multiplier against the stroboscopic one.
+TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
+  const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
+  const ForcedBranch b = testing_util::TraceOmega(p, 0.62, 0.605, ForcedBranchOptions());
+  ASSERT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  int checked = 0;
+  double lowest = 0;
+  for (const ForcedBranchRow& r : b.rows) {
+    if (r.p > 0.618 || r.label != ForcedLabel::kNone) continue;
+    ForcedParams q = p;
+    q.omega = r.p;
+    const ForcedModel model(q);
+    ForcedRequest rq;
+    std::vector<ForcedEvent> events;
+    rq.t_end = model.period();
+    rq.events = &events;
+    ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, r.x0, r.xdot0), rq);
+    double t = -1;
+    Mode mode = Mode::kSlipBelow;
+    for (const auto& e : events)
+      if (e.kind == ForcedEventKind::kStickOut) t = e.t, mode = e.after;
+    ASSERT_GT(t, 0) << "Omega = " << r.p;
+    const ForcedExitOrbit o = ExitPhaseOrbit(model, t, mode, 1, 1, ForcedOrbitOptions());
+    ASSERT_EQ(o.status, ForcedOrbitStatus::kConverged) << o.message;
+    EXPECT_NEAR(o.multiplier, r.multipliers[0].real(), 1e-8) << "Omega = " << r.p;
+    EXPECT_LT(o.multiplier, -1) << "Omega = " << r.p;
+    EXPECT_FALSE(o.stable) << "Omega = " << r.p << ", multiplier " << o.multiplier;
+    lowest = std::min(lowest, o.multiplier);
+    ++checked;
+  }
+  std::printf("[ measured ] %d orbits, multipliers down to %.4f\n", checked, lowest);
+  EXPECT_GE(checked, 3);
+  EXPECT_LT(lowest, -1.9);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "reference/forced_lyapunov.hpp"
+#include "src/forced/forced_locate.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
@@ -141,6 +142,42 @@ TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
     ++checked;
   }
   EXPECT_EQ(checked, 2) << b.message;
+}
+
+// Beside R2 (issue 35, planted bugs): on the pure-slip response at v 0.41,
+// A 0.113 the pair goes from complex near -1 to real (-1.0267, -0.9739)
+// through a PD and back. Two PD points and no NS; an NS point would have to
+// be a complex pair on the unit circle (the rule: TorusPairIsComplex...).
+TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
+  ForcedParams p = Scene(0.41);
+  p.force = 0.113;
+  const ForcedBranch b = testing_util::TraceOmega(p, 2.4, 1.6, ForcedBranchOptions());
+  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  int pd = 0;
+  for (const ForcedBranchRow& s : b.special) {
+    EXPECT_NE(s.label, ForcedLabel::kNS)
+        << "Omega = " << s.p << ", mu " << s.multipliers[0] << ", " << s.multipliers[1];
+    if (s.label == ForcedLabel::kNS) {
+      EXPECT_TRUE(forced_detail::TorusPair(s, 1e-6));
+    }
+    pd += s.label == ForcedLabel::kPD;
+  }
+  EXPECT_EQ(pd, 2);
+}
+
+// The rule itself: a real pair whose product is 1 (a neutral saddle) is no
+// NS point; a complex pair on the unit circle is.
+TEST(ForcedNeimarkSacker, TorusPairIsComplexOnTheUnitCircle) {
+  ForcedBranchRow r;
+  r.multipliers[0] = -1.0294, r.multipliers[1] = 1 / -1.0294;  // product 1, real
+  EXPECT_NEAR(forced_detail::RowTest(r, 2), 0, 1e-15);
+  EXPECT_FALSE(forced_detail::TorusPair(r, 1e-6));
+  r.multipliers[0] = -1.0294, r.multipliers[1] = -0.9714;
+  EXPECT_FALSE(forced_detail::TorusPair(r, 1e-6));
+  r.multipliers[0] = std::polar(1.0, 2.0), r.multipliers[1] = std::polar(1.0, -2.0);
+  EXPECT_TRUE(forced_detail::TorusPair(r, 1e-6));
+  r.multipliers[0] = std::polar(1.01, 2.0), r.multipliers[1] = std::polar(1.01, -2.0);
+  EXPECT_FALSE(forced_detail::TorusPair(r, 1e-6));
 }
 
 }  // namespace

@@ -37,6 +37,9 @@ struct Attractor {
   AttractorKind kind = AttractorKind::kUndecided;
   int m = 0;               ///< period in forcing periods (periodic)
   int sticks = 0;          ///< stick phases per m periods (periodic), per period rounded (chaotic)
+  /// Stick phases per forcing period, the kept run's mean (chaotic: 0.66 on
+  /// the seed basin's attractor, where `sticks` rounds it to 1).
+  double sticks_per_period = 0;
   double x = 0, xdot = 0;  ///< a representative section point (smallest x of the cycle)
   double lyapunov = 0;
   int starts = 0;  ///< grid starts that reach it
