@@ -130,6 +130,9 @@ class EveryResultArrayReadOnly(unittest.TestCase):
             "continue_doubled": lambda: stickslip.continue_doubled(pd, lo=pd.p - 0.003,
                                                                    hi=pd.p + 0.003),
             "continue_forced": lambda: branch,
+            "continue_physical": lambda: stickslip.continue_physical(
+                mass=2.0, stiffness=800.0, damping=4.0, belt_speed=0.1, mu_s=0.4, mu_m=0.25,
+                speed_m=0.2, from_=0.1, to=0.12),
             "find_forced_orbits": lambda: stickslip.find_forced_orbits(fp, max_m=2, grid=3),
             "forced_basins": lambda: stickslip.forced_basins(fp, nx=2, ny=2),
             "forced_orbit": lambda: fo,
