@@ -18,7 +18,7 @@ does not depend on the number of workers or the order they finish in.
 
 A point whose fn raises, or returns anything but a non-empty dict of finite
 numbers with the first point's keys, stops the sweep with SweepError naming the
-point; so does a task whose worker died (naming its points), no worker left for
+point; so does a worker's death (naming the points of the tasks it held), no worker left for
 worker_timeout seconds, or the whole sweep past `timeout` seconds. No partial
 result is returned as data. Ctrl-C cancels the outstanding tasks and
 raises KeyboardInterrupt. The result's to_tsv writes one self-describing file:
@@ -147,11 +147,11 @@ def _serial(fn, chunks):
 
 
 class _ChunkFailed(Exception):
-    """A task failed outside fn (its worker died, no worker left): chunk index, why."""
+    """Tasks failed outside fn (their worker died, no worker left): chunk indices, why."""
 
-    def __init__(self, index, message):
+    def __init__(self, indices, message):
         super().__init__(message)
-        self.index, self.message = index, message
+        self.indices, self.message = indices, message
 
 
 def _gather(client, futures, timeout, worker_timeout):
@@ -163,22 +163,27 @@ def _gather(client, futures, timeout, worker_timeout):
     idle_since = None
     while True:
         states = [f.status for f in futures]
-        for i, (f, st) in enumerate(zip(futures, states)):
-            if st == "error":
+        bad = [i for i, st in enumerate(states) if st in ("error", "cancelled", "lost")]
+        if bad:
+            # A dead worker fails every task it held at once (Dask cannot tell which
+            # one killed it): each is named.
+            time.sleep(0.5)
+            bad = [i for i, f in enumerate(futures) if f.status in ("error", "cancelled", "lost")]
+            f = futures[bad[0]]
+            if f.status == "error":
                 e = f.exception()
-                raise _ChunkFailed(i, f"its task failed: {type(e).__name__}: {e}")
-            if st in ("cancelled", "lost"):
-                raise _ChunkFailed(i, f"its task was {st} (its worker died?)")
+                raise _ChunkFailed(bad, f"task failed: {type(e).__name__}: {e}")
+            raise _ChunkFailed(bad, f"task {f.status} (its worker died?)")
         if all(st == "finished" for st in states):
             return client.gather(futures)
         first = states.index(next(st for st in states if st != "finished"))
         now = time.monotonic()
         if timeout is not None and now - start > timeout:
-            raise _ChunkFailed(first, f"not done after timeout = {timeout} s")
+            raise _ChunkFailed([first], f"not done after timeout = {timeout} s")
         if len(client.nthreads()) == 0:
             idle_since = idle_since if idle_since is not None else now
             if now - idle_since > worker_timeout:
-                raise _ChunkFailed(first, f"no worker left for {worker_timeout} s "
+                raise _ChunkFailed([first], f"no worker left for {worker_timeout} s "
                                    "(worker_timeout)")
         else:
             idle_since = None
@@ -247,11 +252,12 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
         try:
             parts, workers = _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout)
         except _ChunkFailed as e:
-            first = e.index * chunk_size
-            last = first + len(chunks[e.index]) - 1
-            where = (f"point {first} {chunks[e.index][0]}" if first == last else
-                     f"points {first} to {last} (the first {chunks[e.index][0]})")
-            raise SweepError(f"sweep: {where}: {e.message}") from None
+            where = []
+            for c in e.indices:
+                first, last = c * chunk_size, c * chunk_size + len(chunks[c]) - 1
+                where.append(f"point {first} {chunks[c][0]}" if first == last else
+                             f"points {first} to {last} (the first {chunks[c][0]})")
+            raise SweepError(f"sweep: {', '.join(where)}: {e.message}") from None
     seconds = time.perf_counter() - start
     rows, keys, offset = [], None, 0
     for chunk, (chunk_rows, failure) in zip(chunks, parts):

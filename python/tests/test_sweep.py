@@ -135,6 +135,8 @@ class Sweep(unittest.TestCase):
             with self.assertRaises(stickslip.SweepError) as e:
                 stickslip.sweep(dies_at_third, {"v": [0.1, 0.2, 0.3, 0.4]}, n_workers=2,
                                 chunk_size=1, timeout=120)
+        # Every task the dead worker held is named (Dask cannot tell which killed it);
+        # the one that did is among them.
         self.assertIn("point 2 {'v': 0.3}", str(e.exception))
         self.assertIn("KilledWorker", str(e.exception))
 
