@@ -7,12 +7,14 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "py_forced.hpp"
 #include "stickslip/chaos/forced_basin.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/io/report.hpp"
 
 namespace stickslip::python {
 
@@ -23,6 +25,8 @@ LyapunovOptions Iterate(LyapunovOptions o, std::optional<int> transient, std::op
   o.flow = FlowOf(rtol, atol);
   if (transient) o.transient = *transient;
   if (keep) o.keep = *keep;
+  // As the apps: the tangent aligns over the transient's last min(align, transient) periods.
+  o.align = std::clamp(o.align, 0, std::max(o.transient, 0));
   if (o.keep >= 1) o.batches = std::min(o.batches, o.keep);  // as ss_basin --force
   return o;
 }
@@ -56,13 +60,18 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
   const ForcedModel model(p);  // throws InvalidArgument naming the value
   const LyapunovOptions o = Iterate(LyapunovOptions(), transient, keep, rtol, atol);
   Check(o.ValidationError());
+  const double xd0 = xdot0.value_or(p.base.v);
+  if (!(std::isfinite(x0) && std::isfinite(xd0)))
+    throw InvalidArgument("x0 = " + FormatNumber(x0) + ", xdot0 = " + FormatNumber(xd0) +
+                          ": both must be finite");
+  if (!(max_amplitude > 0))
+    throw InvalidArgument("max_amplitude = " + FormatNumber(max_amplitude) + " must be > 0");
   Interrupt interrupt;
   StroboscopicRun r;
   {
     py::gil_scoped_release nogil;
     r = IterateStroboscopic(
-        model, ForcedStart(model, 0, x0, xdot0.value_or(p.base.v)), o, [&] { return interrupt(); },
-        max_amplitude);
+        model, ForcedStart(model, 0, x0, xd0), o, [&] { return interrupt(); }, max_amplitude);
   }
   interrupt.RaiseIfInterrupted();
   if (r.status != LyapunovStatus::kDone)
@@ -94,6 +103,7 @@ py::dict Diagram(ForcedParams base, ForcedAxis axis, double from, double to, int
     r = ComputeOrbitDiagram(base, o);
   }
   interrupt.RaiseIfInterrupted();
+  if (!r.error.empty()) RaiseNumerical("orbit_diagram: " + r.error);
   Points pts;
   std::vector<double> value, lyap, lyap_err, point_value;
   std::vector<std::string> dir, point_dir;
@@ -141,6 +151,7 @@ py::dict Basins(const ForcedParams& p, int nx, int ny, std::pair<double, double>
     r = ClassifyForcedBasins(model, o);
   }
   interrupt.RaiseIfInterrupted();
+  if (!r.error.empty()) RaiseNumerical("forced_basins: " + r.error);
   if (r.cancelled) RaiseNumerical("forced_basins: cancelled");
   std::vector<double> x, xd, lyap;
   std::vector<int> att;
@@ -182,7 +193,8 @@ void BindChaos(py::module_& m) {
         py::arg("x_range") = std::pair{-1.5, 1.5}, py::arg("xdot_range") = std::pair{-1.5, 1.5},
         py::arg("transient") = none, py::arg("keep") = none, py::arg("max_period") = none,
         py::arg("threads") = 2, py::arg("rtol") = none, py::arg("atol") = none,
-        "Basins on the stroboscopic section (as ss_basin --force): per start (x fastest) the "
+        "Basins on the stroboscopic section (as ss_basin --force; threads capped by the "
+        "hardware threads): per start (x fastest) the "
         "index of its attractor (-1: failed) and its exponent; attractors as dicts (kind, m, "
         "sticks, sticks_per_period, x, xdot, lyapunov, starts). max_period defaults to min(16, "
         "keep / 2).");

@@ -594,7 +594,8 @@ def sweep(fn: Callable[[Dict[str, float]], Dict[str, float]],
           grid: Optional[Mapping[str, Sequence[float]]] = None,
           sample: Optional[Mapping[str, Sequence[float]]] = None, *,
           scheduler: Optional[str] = None, n_workers: int = 2, chunk_size: Optional[int] = None,
-          meta: Optional[Mapping[str, Any]] = None) -> SweepResult: ...
+          meta: Optional[Mapping[str, Any]] = None, timeout: Optional[float] = None,
+          worker_timeout: float = 60.0) -> SweepResult: ...
 def group_stats(result: SweepResult, by: str, value: str,
                 quantiles: Sequence[float] = (0.05, 0.5, 0.95),
                 where: Optional[str] = None) -> Dict[str, Array]: ...

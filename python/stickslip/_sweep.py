@@ -16,8 +16,11 @@ Execution, by `scheduler`:
 Points are sent in chunks (one task each) and gathered in order, so a result
 does not depend on the number of workers or the order they finish in.
 
-A point whose fn raises stops the sweep with SweepError naming the point; no
-partial result is returned as data. Ctrl-C cancels the outstanding tasks and
+A point whose fn raises, or returns anything but a non-empty dict of finite
+numbers with the first point's keys, stops the sweep with SweepError naming the
+point; so does a worker's death (naming the points of the tasks it held), no worker left for
+worker_timeout seconds, or the whole sweep past `timeout` seconds. No partial
+result is returned as data. Ctrl-C cancels the outstanding tasks and
 raises KeyboardInterrupt. The result's to_tsv writes one self-describing file:
 '# key: value' metadata lines (tool, version, function, axes, sample, scheduler,
 workers, time), a header line, then one row per point, as the apps' TSVs.
@@ -119,11 +122,20 @@ def _chunks(points, chunk_size):
     return [points[i:i + chunk_size] for i in range(0, len(points), chunk_size)]
 
 
+def _keys_of(row, point, index):
+    """The keys of fn's first result: a non-empty dict with string keys."""
+    if not isinstance(row, dict) or not row or not all(isinstance(k, str) for k in row):
+        raise SweepError(f"sweep: point {index} {point}: fn returned {row!r}, expected a "
+                         "non-empty dict of {name: number} with string names")
+    return list(row)
+
+
 def _check_values(names, keys, rows, points, offset):
     for j, (row, point) in enumerate(zip(rows, points)):
         if not isinstance(row, dict) or list(row) != keys:
+            got = f"a dict with keys {list(row)}" if isinstance(row, dict) else repr(row)
             raise SweepError(f"sweep: point {offset + j} {point}: fn returned "
-                             f"{row!r}, expected a dict with keys {keys}")
+                             f"{got}, expected a dict with the first point's keys {keys}")
         for k, v in row.items():
             if not isinstance(v, (int, float, np.integer, np.floating)) or not math.isfinite(v):
                 raise SweepError(f"sweep: point {offset + j} {point}: {k} = {v!r} "
@@ -134,7 +146,51 @@ def _serial(fn, chunks):
     return [_run_chunk(fn, c) for c in chunks]
 
 
-def _dask(fn, chunks, scheduler, n_workers):
+class _ChunkFailed(Exception):
+    """Tasks failed outside fn (their worker died, no worker left): chunk indices, why."""
+
+    def __init__(self, indices, message):
+        super().__init__(message)
+        self.indices, self.message = indices, message
+
+
+def _gather(client, futures, timeout, worker_timeout):
+    """The futures' results in order, polling twice a second: a task that erred
+    (KilledWorker: its worker died too often) or was lost raises _ChunkFailed
+    with its index; so does the first unfinished task when no worker has been
+    connected for worker_timeout seconds, or past `timeout` seconds."""
+    start = time.monotonic()
+    idle_since = None
+    while True:
+        states = [f.status for f in futures]
+        bad = [i for i, st in enumerate(states) if st in ("error", "cancelled", "lost")]
+        if bad:
+            # A dead worker fails every task it held at once (Dask cannot tell which
+            # one killed it): each is named.
+            time.sleep(0.5)
+            bad = [i for i, f in enumerate(futures) if f.status in ("error", "cancelled", "lost")]
+            f = futures[bad[0]]
+            if f.status == "error":
+                e = f.exception()
+                raise _ChunkFailed(bad, f"task failed: {type(e).__name__}: {e}")
+            raise _ChunkFailed(bad, f"task {f.status} (its worker died?)")
+        if all(st == "finished" for st in states):
+            return client.gather(futures)
+        first = states.index(next(st for st in states if st != "finished"))
+        now = time.monotonic()
+        if timeout is not None and now - start > timeout:
+            raise _ChunkFailed([first], f"not done after timeout = {timeout} s")
+        if len(client.nthreads()) == 0:
+            idle_since = idle_since if idle_since is not None else now
+            if now - idle_since > worker_timeout:
+                raise _ChunkFailed([first], f"no worker left for {worker_timeout} s "
+                                   "(worker_timeout)")
+        else:
+            idle_since = None
+        time.sleep(0.5)
+
+
+def _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout):
     from dask.distributed import Client, LocalCluster  # Debian: python3-distributed
 
     cluster = None
@@ -147,8 +203,9 @@ def _dask(fn, chunks, scheduler, n_workers):
     futures = []
     try:
         futures = client.map(_run_chunk, [fn] * len(chunks), chunks, pure=False)
-        return client.gather(futures), len(client.scheduler_info()["workers"])
-    except KeyboardInterrupt:
+        parts = _gather(client, futures, timeout, worker_timeout)
+        return parts, len(client.scheduler_info()["workers"])
+    except (KeyboardInterrupt, _ChunkFailed):
         client.cancel(futures)
         raise
     finally:
@@ -158,14 +215,16 @@ def _dask(fn, chunks, scheduler, n_workers):
 
 
 def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size=None,
-          meta=None):
+          meta=None, timeout=None, worker_timeout=60.0):
     """Evaluates fn over the points of grid x sample; returns a SweepResult.
 
     grid: {name: 1-D values}, the Cartesian product in the given order;
     sample: {name: 1-D values of equal length}, rows taken together;
     scheduler: None (LocalCluster of n_workers), "tcp://host:port", or "serial";
     chunk_size: points per task (default: about 8 tasks per worker);
-    meta: extra metadata lines {key: value} for the file.
+    meta: extra metadata lines {key: value} for the file;
+    timeout: seconds the whole Dask run may take (None: no bound);
+    worker_timeout: seconds the sweep waits with no worker connected.
     """
     if not callable(fn):
         raise TypeError("sweep: fn must be callable")
@@ -180,12 +239,25 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
         chunk_size = max(1, math.ceil(len(points) / (8 * n_workers)))
     if not (isinstance(chunk_size, int) and chunk_size >= 1):
         raise ValueError(f"sweep: chunk_size = {chunk_size!r} must be an integer >= 1")
+    for name, t in (("timeout", timeout), ("worker_timeout", worker_timeout)):
+        if t is None and name == "timeout":
+            continue
+        if not (isinstance(t, (int, float)) and not isinstance(t, bool) and 0 < t < math.inf):
+            raise ValueError(f"sweep: {name} = {t!r} must be a finite number of seconds > 0")
     chunks = _chunks(points, chunk_size)
     start = time.perf_counter()
     if scheduler == "serial":
         parts, workers = _serial(fn, chunks), 1
     else:
-        parts, workers = _dask(fn, chunks, scheduler, n_workers)
+        try:
+            parts, workers = _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout)
+        except _ChunkFailed as e:
+            where = []
+            for c in e.indices:
+                first, last = c * chunk_size, c * chunk_size + len(chunks[c]) - 1
+                where.append(f"point {first} {chunks[c][0]}" if first == last else
+                             f"points {first} to {last} (the first {chunks[c][0]})")
+            raise SweepError(f"sweep: {', '.join(where)}: {e.message}") from None
     seconds = time.perf_counter() - start
     rows, keys, offset = [], None, 0
     for chunk, (chunk_rows, failure) in zip(chunks, parts):
@@ -193,7 +265,7 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
             i, message = failure
             raise SweepError(f"sweep: point {offset + i} {chunk[i]}: {message}")
         if keys is None:
-            keys = list(chunk_rows[0])
+            keys = _keys_of(chunk_rows[0], chunk[0], offset)
         _check_values(names, keys, chunk_rows, chunk, offset)
         rows += [[p[n] for n in names] + [float(r[k]) for k in keys]
                  for p, r in zip(chunk, chunk_rows)]

@@ -104,5 +104,64 @@ class Chaos(unittest.TestCase):
             stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7, n=0)
 
 
+class Bounds(unittest.TestCase):
+    """Issue 35: every argument is bounded as the apps bound it, and a bad one is
+    InvalidArgument (a ValueError) naming it, never a made-up result."""
+
+    def test_periods_past_the_apps_bound_are_refused_not_overflowed(self):
+        big = 2**31 - 1  # transient + keep overflowed: 0 points and a nan exponent
+        with self.assertRaisesRegex(stickslip.InvalidArgument, r"transient = 2147483647 must lie "
+                                    r"in \[0, 1000000\]"):
+            stickslip.stroboscopic(stribeck(0.7), transient=big, keep=10)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "transient"):
+            stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7, n=2,
+                                    transient=big)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "transient"):
+            stickslip.forced_basins(stribeck(0.7), nx=1, ny=1, transient=big)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):
+            stickslip.stroboscopic(stribeck(0.7), keep=10**6 + 1)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "section points"):
+            stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7,
+                                    n=100000, keep=1000)
+
+    def test_a_short_transient_aligns_over_all_of_it(self):
+        # align (50) was not exposed and had to be <= transient; now min(50, transient),
+        # as the apps. Newton's orbit is the reference, as above.
+        o = settled_orbit(0.7)
+        s = stickslip.stroboscopic(stribeck(0.7), o.x0, o.xdot0, transient=10, keep=20)
+        np.testing.assert_allclose(s["x"], o.x0, atol=1e-9)
+        s0 = stickslip.stroboscopic(stribeck(0.7), o.x0, o.xdot0, transient=0, keep=20)
+        np.testing.assert_allclose(s0["x"], o.x0, atol=1e-9)
+
+    def test_a_box_must_be_finite_and_bounded(self):
+        for box in ((-math.inf, math.inf), (-1e308, 1e308), (0, math.nan)):
+            with self.assertRaisesRegex(stickslip.InvalidArgument, "box"):
+                stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, x_range=box)
+
+    def test_threads_are_capped_by_the_hardware(self):
+        # threads=5000 started 5000 threads (under a memory limit: abort); now a pool
+        # of at most os.cpu_count() threads classifies the same starts.
+        a = stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, transient=50, keep=16, threads=5000)
+        b = stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, transient=50, keep=16, threads=1)
+        np.testing.assert_array_equal(a["attractor"], b["attractor"])
+        np.testing.assert_array_equal(a["lyapunov"], b["lyapunov"])
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "threads"):
+            stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, threads=-1)
+
+    def test_non_finite_starts_and_options_name_the_argument(self):
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "x0 = nan"):
+            stickslip.stroboscopic(stribeck(0.7), math.nan)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "xdot0 = inf"):
+            stickslip.stroboscopic(stribeck(0.7), 0.0, math.inf)
+        omega = stickslip.ForcedAxis.omega
+        cases = (({"m": 0}, r"m = 0 must lie in \[1, 1000\]"),
+                 ({"max_amplitude": 0}, "max_amplitude = 0"),
+                 ({"max_amplitude": math.nan}, "max_amplitude = nan"),
+                 ({"x_guess": math.nan}, "x_guess = nan"))
+        for kw, message in cases:
+            with self.assertRaisesRegex(stickslip.InvalidArgument, message):
+                stickslip.continue_forced(stribeck(0.7), omega, 0.7, 0.6, **kw)
+
+
 if __name__ == "__main__":
     unittest.main()

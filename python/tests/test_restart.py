@@ -7,6 +7,7 @@ directory is written by the C++ app ss_continue (STICKSLIP_SS_CONTINUE).
 """
 import math
 import os
+import shutil
 import subprocess
 import tempfile
 import unittest
@@ -87,6 +88,21 @@ class Restart(unittest.TestCase):
                        for v, b in zip(c.p1, c.p2) if b == 0.05)
             self.assertLess(near, 1e-9, lab)
 
+    @staticmethod
+    def edit(path, what):
+        """HB1's period, or the '# from:' line, made nan."""
+        with open(path) as f:
+            lines = f.read().splitlines()
+        for i, line in enumerate(lines):
+            if what == "from" and line.startswith("# from: "):
+                lines[i] = "# from: nan"
+            if what == "period" and line.startswith("HB\t"):
+                cells = line.split("\t")
+                cells[2] = "nan"
+                lines[i] = "\t".join(cells)
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+
     def test_bad_restarts_raise_value_error_naming_the_cause(self):
         cases = [((os.path.join(self.tmp.name, "none"), "HB1"), "cannot read"),
                  ((self.run_dir, "HB2"), "no point HB2"),
@@ -94,6 +110,23 @@ class Restart(unittest.TestCase):
         for args, message in cases:
             with self.assertRaisesRegex(ValueError, message):
                 stickslip.restart(*args)
+        # Issue 35: a FIFO blocked, /dev/zero grew without bound, a 300 MB file was read
+        # whole; period = nan and '# from: nan' were accepted.
+        bad = os.path.join(self.tmp.name, "bad")
+        sp = os.path.join(bad, "special_points.tsv")
+        for name, make, message in (
+                ("fifo", lambda: os.mkfifo(sp), "not a regular file"),
+                ("zero", lambda: os.symlink("/dev/zero", sp), "not a regular file"),
+                ("big", lambda: os.truncate(sp, 65 << 20), "more than 67108864 bytes"),
+                ("nan", lambda: self.edit(sp, "period"), "has period = nan"),
+                ("from", lambda: self.edit(sp, "from"), "'# from: nan'")):
+            shutil.rmtree(bad, ignore_errors=True)
+            shutil.copytree(self.run_dir, bad)
+            if name in ("fifo", "zero"):
+                os.unlink(sp)
+            make()
+            with self.assertRaisesRegex(ValueError, message):
+                stickslip.restart(bad, "HB1")
         with self.assertRaisesRegex(ValueError, "a chart starts from a GR or HB point"):
             stickslip.restart(self.run_dir, 3).chart_options()
         with self.assertRaisesRegex(ValueError, "unknown"):

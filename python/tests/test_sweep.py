@@ -27,6 +27,28 @@ def nan_above(point):
     return {"y": math.nan if point["v"] > 0.3 else point["v"]}
 
 
+def returns_none(point):
+    return None
+
+
+def returns_list(point):
+    return [point["v"]]
+
+
+def returns_empty(point):
+    return {}
+
+
+def keys_change(point):
+    return {"y": 1.0} if point["v"] < 0.3 else {"z": 1.0}
+
+
+def dies_at_third(point):
+    if point["v"] == 0.3:
+        os._exit(1)  # the worker process dies, as one killed by the OOM killer
+    return {"y": point["v"]}
+
+
 def coulomb_orbit(point):
     return stickslip.stick_slip_orbit(dict(point, law="coulomb"))
 
@@ -103,6 +125,47 @@ class Sweep(unittest.TestCase):
             stickslip.sweep(failing, {"v": [0.1, 0.2, 0.4, 0.1]}, scheduler="serial",
                             chunk_size=3)
         self.assertIn("point 2 {'v': 0.4}", str(e.exception))
+
+    # Issue 35: what fn returns is checked before its keys are taken.
+    def test_a_return_that_is_no_dict_of_numbers_is_named(self):
+        cases = ((returns_none, "fn returned None"), (returns_list, "fn returned [0.1]"),
+                 (returns_empty, "fn returned {}"),
+                 (keys_change, "a dict with keys ['z'], expected a dict with the first point's "
+                               "keys ['y']"))
+        for fn, words in cases:
+            with self.assertRaises(stickslip.SweepError) as e:
+                stickslip.sweep(fn, {"v": [0.1, 0.2, 0.4]}, scheduler="serial")
+            self.assertIn("point 0 {'v': 0.1}" if fn is not keys_change else "point 2", 
+                          str(e.exception))
+            self.assertIn(words, str(e.exception))
+
+    def test_bad_timeouts_are_refused(self):
+        for kw in ({"timeout": 0}, {"timeout": math.nan}, {"worker_timeout": -1},
+                   {"worker_timeout": None}):
+            with self.assertRaises(ValueError) as e:
+                stickslip.sweep(failing, {"v": [0.1]}, scheduler="serial", **kw)
+            self.assertIn(list(kw)[0], str(e.exception))
+
+    def test_a_killed_worker_names_its_point(self):
+        import dask
+        import distributed  # noqa: F401 (its config defaults first)
+        with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+            with self.assertRaises(stickslip.SweepError) as e:
+                stickslip.sweep(dies_at_third, {"v": [0.1, 0.2, 0.3, 0.4]}, n_workers=2,
+                                chunk_size=1, timeout=120)
+        # Every task the dead worker held is named (Dask cannot tell which killed it);
+        # the one that did is among them.
+        self.assertIn("point 2 {'v': 0.3}", str(e.exception))
+        self.assertIn("KilledWorker", str(e.exception))
+
+    def test_no_worker_left_is_an_error_not_a_hang(self):
+        from dask.distributed import LocalCluster
+        with LocalCluster(n_workers=0, host="127.0.0.1", dashboard_address=None) as cluster:
+            with self.assertRaises(stickslip.SweepError) as e:
+                stickslip.sweep(failing, {"v": [0.1, 0.2]}, scheduler=cluster.scheduler_address,
+                                chunk_size=1, worker_timeout=2)
+        self.assertIn("point 0 {'v': 0.1}: no worker left for 2 s", str(e.exception))
+
 
 if __name__ == "__main__":
     unittest.main()

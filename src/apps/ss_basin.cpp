@@ -75,6 +75,7 @@ ss::BasinOptions OptionsFromArguments(const cli::Arguments& args) {
   if (given != 0 && given != 4)
     throw cli::UsageError("--x_min --x_max --xdot_min --xdot_max: give all four or none");
   if (given == 4) {
+    cli::CheckBoxCorners(args);
     o.auto_range = false;
     o.x_lo = args.Number("x_min", 0), o.x_hi = args.Number("x_max", 0);
     o.xdot_lo = args.Number("xdot_min", 0), o.xdot_hi = args.Number("xdot_max", 0);

@@ -119,6 +119,10 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
   const auto restart = cli::RestartFromArguments(args);
+  if (restart && restart->forced)  // its axis (omega, force) is no belt parameter
+    throw cli::UsageError(args.Source("restart") + " " + args.Text("restart") +
+                          " is a forced run (point " + restart->label + ", " + restart->type +
+                          "): a chart restarts from a belt run's GR or HB point");
   pl.p1 = Axis(args, "param", restart ? restart->ParamName() : "v");
   pl.p2 = Axis(args, "param2", "beta");
   pl.from1 = args.Number("from", 0.05);

@@ -154,6 +154,9 @@ ss::ContinuationOptions Configure(const cli::Arguments& args, ss::Params* base,
   opts.to = args.Number("to", range.to / to_param) * to_param;
   opts.max_step = args.Number("max_step", opts.max_step);
   opts.stick_slip_floquet = args.Flag("floquet");
+  if (std::isfinite(opts.to))  // the model at --to, blamed on --to
+    if (const std::string e = ss::ValidationError(opts.param.At(*base, opts.to)); !e.empty())
+      throw cli::UsageError(args.Source("to") + " = " + ss::FormatNumber(opts.to) + ": " + e);
   const std::string err = opts.ValidationError(*base);
   if (!err.empty()) {
     const bool is_param = err.find("parameter") != std::string::npos;

@@ -24,7 +24,8 @@ constexpr const char* kNotes =
     "iterated for --transient forcing periods, then --keep periods are recorded with the\n"
     "largest Lyapunov exponent (variational equations with saltation at every switch,\n"
     "docs/theory.md). Each value starts from the last state of the one before, in both\n"
-    "directions (--direction), so hysteresis shows; each direction runs on its own thread.\n"
+    "directions (--direction), so hysteresis shows; the directions (and their --chunks)\n"
+    "run on at most --threads threads, capped by the machine's hardware threads.\n"
     "Outputs in --out (written as one set): orbit_diagram.tsv (one row per section point),\n"
     "lyapunov.tsv (one row per value), orbit_diagram.gp and orbit_diagram.png (.pdf, .svg).\n"
     "A value whose flow fails or passes --max_amplitude is a `# failed:` line; the next\n"
@@ -49,7 +50,10 @@ po::options_description AppOptions() {
       "direction", cli::Value()->value_name("D"), "up, down or both (default both)")(
       "chunks", cli::Value()->value_name("C"),
       "pieces each sweep is cut into and run in parallel, each from rest: hysteresis shows only "
-      "within a piece (default 1)");
+      "within a piece (default 1)")(
+      "threads", cli::Value()->value_name("N"),
+      "worker threads, in [1, 1024], capped by the machine's hardware threads (default: all of "
+      "them)");
   cli::AddRunOptions(d, "plots/orbit_diagram",
                      "write the TSV files and the script, but do not run gnuplot");
   return d;
@@ -82,6 +86,12 @@ Setup Configure(const cli::Arguments& args) {
   if (!found)
     throw cli::UsageError("invalid value '" + name + "' for " + args.Source("param") +
                           ": must be omega, force, v or beta");
+  // Every given value is checked, the swept one too (--omega -1 with --param omega).
+  if (const std::string e = ss::ValidationError(s.p); !e.empty()) {
+    const std::string key = e.substr(0, e.find(' '));
+    throw cli::UsageError("invalid forced model: " + e +
+                          (args.Given(key) ? " (from " + args.Origin(key) + ")" : ""));
+  }
   s.o.from = args.Number("from", 0.5);
   s.o.to = args.Number("to", 2.5);
   if (s.o.from == s.o.to)
@@ -96,12 +106,20 @@ Setup Configure(const cli::Arguments& args) {
   s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
   s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
   s.o.iterate.keep = static_cast<int>(Count(args, "keep", 200, 10, 1000000));
+  s.o.threads = args.Given("threads") ? static_cast<int>(Count(args, "threads", 0, 1, 1024)) : 0;
   s.o.iterate.align = std::min(s.o.iterate.align, s.o.iterate.transient);
   const std::string dir = args.Text("direction", "both");
   if (dir != "up" && dir != "down" && dir != "both")
     throw cli::UsageError("invalid value '" + dir + "' for " + args.Source("direction") +
                           ": must be up, down or both");
   s.o.up = dir != "down", s.o.down = dir != "up";
+  const double points = static_cast<double>(s.o.n) * s.o.iterate.keep * (s.o.up + s.o.down);
+  if (points > ss::OrbitDiagramOptions::kMaxPoints)
+    throw cli::UsageError(
+        args.Source("n") + " " + std::to_string(s.o.n) + " x " + args.Source("keep") + " " +
+        std::to_string(s.o.iterate.keep) + " x " + std::to_string(s.o.up + s.o.down) +
+        " directions = " + ss::FormatNumber(points) + " section points, more than " +
+        ss::FormatNumber(ss::OrbitDiagramOptions::kMaxPoints) + " (held in memory)");
   s.o.chunks = static_cast<int>(Count(args, "chunks", 1, 1, s.o.n));
   s.o.max_amplitude = args.Number("max_amplitude", 50);
   if (!(s.o.max_amplitude > 0))
@@ -152,6 +170,10 @@ int Main(int argc, char** argv) {
                    static_cast<double>(done) / total, done, "values");
   };
   const ss::OrbitDiagram d = ss::ComputeOrbitDiagram(s.p, s.o);
+  if (!d.error.empty()) {  // nothing computed: nothing written
+    std::cerr << kProg << ": " << d.error << "\n";
+    return cli::kExitFailed;
+  }
   const std::string model = Describe(s);
   const std::string axis = ss::ForcedAxisName(s.o.axis);
   cli::Metadata meta =

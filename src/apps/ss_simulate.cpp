@@ -28,7 +28,6 @@ namespace po = boost::program_options;
 namespace {
 
 constexpr const char* kProg = "ss_simulate";
-constexpr double kMaxRows = 1e7;  // rows are held in memory until the atomic write
 constexpr const char* kNotes =
     "Output, in --out DIR: trajectory.tsv starts with '# key: value' lines (tool, command,\n"
     "model, run and solver settings, status), then the header line 't<TAB>x<TAB>xdot<TAB>mode'\n"
@@ -50,7 +49,10 @@ po::options_description AppOptions() {
       "initial velocity (default 0.25: on the stick set at the seed's v, fig. 5; forced: v)")(
       "t_end", cli::Value()->value_name("T"), "end time, > 0 (default 100)")(
       "dt", cli::Value()->value_name("DT"),
-      "output interval, > 0 (default 0.01); switches are written too");
+      "output interval, > 0 (default 0.01); switches are written too")(
+      "max_rows", cli::Value()->value_name("N"),
+      "rows held and written at most, rows at switches (and section points) included, in "
+      "[1, 1e7] (default 1e7); a run that needs more exits 2 and writes nothing");
   cli::AddSimulateForcedOptions(d);
   cli::AddRunOptions(d, "plots/simulate",
                      "write the TSV files and the script, but do not run gnuplot");
@@ -145,9 +147,10 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   cli::RunControl& run = app.run();
   const ss::Model model(s.params);
   ss::BeltFlow flow(model, s.options);
+  bool too_many = false;  // rows at switches count toward kMaxRows too
   flow.set_cancel([&] {
     run.Heartbeat("");
-    return run.Cancelled();
+    return too_many || run.Cancelled();
   });
   run.Phase("integrating");
   const ss::Vec2 z0(s.range.x0, s.range.xdot0);
@@ -173,6 +176,7 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
     else if (bad.empty())
       table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
     last = x;
+    too_many = too_many || table.rows() >= static_cast<std::size_t>(s.range.max_rows);
     run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.range.t_end, x.t, "time units");
   };
   ss::StopRule stop;
@@ -183,6 +187,13 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   } catch (const ss::InvalidArgument& e) {  // valid input: a numerical failure
     throw ss::Error(std::string("numerical failure: ") + e.what());
   }
+  if (too_many)  // bad input found late: nothing written
+    throw cli::UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
+                          args.Source("dt") + " " + args.Text("dt", "0.01") + ": " +
+                          "more than " + args.Source("max_rows") + " = " +
+                          std::to_string(s.range.max_rows) +
+                          " rows (rows at switches included) by t = " + ss::FormatNumber(last.t) +
+                          "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
   if (!r.ok() || !bad.empty()) {
     // As every app: the rows so far (all finite), marked partial with where

@@ -25,10 +25,14 @@ std::string BasinOptions::ValidationError() const {
     os << "t_cap = " << t_cap << " must be a finite number > 0";
   else if (!(settle > 0 && settle < 1))
     os << "settle = " << settle << " must be in (0, 1)";
-  else if (!auto_range && !(finite(x_lo) && finite(x_hi) && x_lo <= x_hi))
-    os << "x range [" << x_lo << ", " << x_hi << "] must be finite with x_lo <= x_hi";
-  else if (!auto_range && !(finite(xdot_lo) && finite(xdot_hi) && xdot_lo <= xdot_hi))
-    os << "x' range [" << xdot_lo << ", " << xdot_hi << "] must be finite with xdot_lo <= xdot_hi";
+  else if (!auto_range &&
+           !(std::abs(x_lo) <= kMaxCorner && std::abs(x_hi) <= kMaxCorner && x_lo <= x_hi))
+    os << "x range [" << x_lo << ", " << x_hi << "] must lie within +-" << kMaxCorner
+       << " with x_lo <= x_hi";
+  else if (!auto_range && !(std::abs(xdot_lo) <= kMaxCorner && std::abs(xdot_hi) <= kMaxCorner &&
+                            xdot_lo <= xdot_hi))
+    os << "x' range [" << xdot_lo << ", " << xdot_hi << "] must lie within +-" << kMaxCorner
+       << " with xdot_lo <= xdot_hi";
   return os.str();
 }
 

@@ -8,10 +8,10 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <thread>
 
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
+#include "parallel/pool.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -23,9 +23,14 @@ std::string ForcedBasinOptions::ValidationError() const {
     return "nx and ny must lie in [1, " + std::to_string(kMaxSide) + "]";
   if (!(x_lo < x_hi) || !(xdot_lo < xdot_hi))
     return "the box must have x_min < x_max and xdot_min < xdot_max";
+  for (double c : {x_lo, x_hi, xdot_lo, xdot_hi})
+    if (!(std::abs(c) <= kMaxCorner))
+      return "the box's corners must be finite and within +-" + Num(kMaxCorner) + " (x from " +
+             Num(x_lo) + " to " + Num(x_hi) + ", x' from " + Num(xdot_lo) + " to " + Num(xdot_hi) +
+             ")";
   if (max_period < 1 || max_period > iterate.keep / 2)
     return "max_period = " + std::to_string(max_period) + " must lie in [1, keep / 2]";
-  if (threads < 1) return "threads must be >= 1";
+  if (threads < 0) return "threads = " + std::to_string(threads) + " must be >= 0";
   if (max_keep < 1) return "max_keep = " + std::to_string(max_keep) + " must be >= 1";
   return iterate.ValidationError();
 }
@@ -123,39 +128,33 @@ ForcedBasins ClassifyForcedBasins(const ForcedModel& model, const ForcedBasinOpt
       s.xdot = o.ny == 1 ? (o.xdot_lo + o.xdot_hi) / 2
                          : o.xdot_lo + (o.xdot_hi - o.xdot_lo) * j / (o.ny - 1);
     }
-  std::atomic<int> next{0}, done{0};
+  std::atomic<int> done{0};
   std::atomic<bool> stop{false};
-  auto work = [&] {
-    for (int k; !stop.load() && (k = next.fetch_add(1)) < n;) {
-      try {
-        StroboscopicRun r;
-        const Attractor a = ClassifyStart(
-            model, b.starts[k], o, [&stop] { return stop.load(std::memory_order_relaxed); }, &r);
-        if (r.status == LyapunovStatus::kCancelled) break;
-        found[k] = a;
-        if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
-      } catch (const std::exception& ex) {  // no exception leaves the worker
-        found[k].kind = AttractorKind::kFailed;
-        b.starts[k].message = ex.what();
-      } catch (...) {
-        found[k].kind = AttractorKind::kFailed;
-        b.starts[k].message = "unknown exception";
-      }
-      done_flag[k] = 1;
-      done.fetch_add(1);
+  auto task = [&](int k) {
+    try {
+      StroboscopicRun r;
+      const Attractor a = ClassifyStart(
+          model, b.starts[k], o, [&stop] { return stop.load(std::memory_order_relaxed); }, &r);
+      if (r.status == LyapunovStatus::kCancelled) return;
+      found[k] = a;
+      if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
+    } catch (const std::exception& ex) {  // no exception leaves the worker
+      found[k].kind = AttractorKind::kFailed;
+      b.starts[k].message = ex.what();
+    } catch (...) {
+      found[k].kind = AttractorKind::kFailed;
+      b.starts[k].message = "unknown exception";
     }
+    done_flag[k] = 1;
+    done.fetch_add(1);
   };
-  std::vector<std::thread> workers;
-  for (int t = 0; t < std::min(o.threads, n); ++t) workers.emplace_back(work);
-  while (done.load() < n) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (o.cancelled && o.cancelled()) {
-      stop = true;
-      break;
-    }
+  const PoolRun pool = RunPool(n, o.threads, task, stop, [&] {
+    if (o.cancelled && o.cancelled()) return true;
     if (o.progress) o.progress(done.load(), n);
-  }
-  for (std::thread& w : workers) w.join();
+    return false;
+  });
+  b.threads = pool.threads;
+  b.error = pool.error;
   b.cancelled = stop.load();
   for (int k = 0; k < n; ++k) {
     if (!done_flag[k]) continue;

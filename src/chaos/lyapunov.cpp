@@ -15,8 +15,11 @@ const char* LyapunovStatusName(LyapunovStatus s) { return Name(s); }
 std::string LyapunovOptions::ValidationError() const {
   const std::string e = flow.ValidationError();
   if (!e.empty()) return e;
-  if (transient < 0) return "transient = " + std::to_string(transient) + " must be >= 0";
-  if (keep < 1) return "keep = " + std::to_string(keep) + " must be >= 1";
+  const std::string most = std::to_string(kMaxPeriods) + "]";
+  if (transient < 0 || transient > kMaxPeriods)
+    return "transient = " + std::to_string(transient) + " must lie in [0, " + most;
+  if (keep < 1 || keep > kMaxPeriods)
+    return "keep = " + std::to_string(keep) + " must lie in [1, " + most;
   if (align < 0 || align > transient)
     return "align = " + std::to_string(align) + " must lie in [0, transient]";
   if (batches < 1 || batches > keep)

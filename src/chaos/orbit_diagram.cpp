@@ -1,15 +1,15 @@
-// The orbit diagram's sweeps (chaos/orbit_diagram.hpp): one worker thread per
-// direction, each continuing from its last state; the calling thread polls
-// cancellation and reports progress.
+// The orbit diagram's sweeps (chaos/orbit_diagram.hpp): each piece of each
+// direction a task of a bounded pool, continuing from its last state; the
+// calling thread polls cancellation and reports progress.
 #include "stickslip/chaos/orbit_diagram.hpp"
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <thread>
 
 #include "numerics/numbers.hpp"
+#include "parallel/pool.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -22,7 +22,11 @@ std::string OrbitDiagramOptions::ValidationError() const {
   if (n < 2 || n > kMaxValues)  // the text's 1e6 is kMaxValues
     return "n = " + std::to_string(n) + " must lie in [2, 1e6]";
   if (!up && !down) return "no sweep direction";
+  if (static_cast<double>(n) * iterate.keep * (up + down) > kMaxPoints)
+    return "n x keep x directions = " + Num(static_cast<double>(n) * iterate.keep * (up + down)) +
+           " section points is more than " + Num(kMaxPoints) + " (held in memory)";
   if (chunks < 1 || chunks > n) return "chunks = " + std::to_string(chunks) + " must lie in [1, n]";
+  if (threads < 0) return "threads = " + std::to_string(threads) + " must be >= 0";
   if (!(max_amplitude > 0)) return "max_amplitude = " + Num(max_amplitude) + " must be > 0";
   return iterate.ValidationError();
 }
@@ -94,25 +98,25 @@ OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOpt
     for (int i = 0; i < n; ++i) down.push_back(&d.columns[(o.up ? n : 0) + i]);
   std::atomic<bool> stop{false};
   std::atomic<int> done{0};
-  std::vector<std::thread> workers;
-  // Each direction in o.chunks pieces, piece c the values [n c / chunks, n (c + 1) / chunks).
+  // Each direction in o.chunks pieces, piece c the values [n c / chunks, n (c + 1) / chunks),
+  // run on a bounded pool (parallel/pool.hpp).
+  std::vector<std::vector<DiagramColumn*>> pieces;
   for (auto* cols : {&up, &down})
     for (long long c = 0; c < o.chunks && !cols->empty(); ++c) {
       const auto b = cols->begin();
-      const std::vector<DiagramColumn*> piece(b + n * c / o.chunks, b + n * (c + 1) / o.chunks);
-      workers.emplace_back(Sweep, std::cref(base), std::cref(o), piece, std::cref(stop),
-                           std::ref(done));
+      pieces.emplace_back(b + n * c / o.chunks, b + n * (c + 1) / o.chunks);
     }
   const int total = static_cast<int>(d.columns.size());
-  while (done.load() < total) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (o.cancelled && o.cancelled()) {
-      stop = true;
-      break;
-    }
-    if (o.progress) o.progress(done.load(), total);
-  }
-  for (std::thread& w : workers) w.join();
+  const PoolRun pool = RunPool(
+      static_cast<int>(pieces.size()), o.threads,
+      [&](int k) { Sweep(base, o, pieces[k], stop, done); }, stop,
+      [&] {
+        if (o.cancelled && o.cancelled()) return true;
+        if (o.progress) o.progress(done.load(), total);
+        return false;
+      });
+  d.threads = pool.threads;
+  d.error = pool.error;
   d.cancelled = stop.load();
   for (const DiagramColumn& c : d.columns) {
     if (c.computed && c.run.status != LyapunovStatus::kDone) ++d.failed;

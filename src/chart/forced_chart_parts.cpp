@@ -1,5 +1,6 @@
 // The forced chart's plane, names, validation and codimension-two points
 // (stickslip/chart/forced_chart.hpp).
+#include <algorithm>
 #include <cmath>
 
 #include "numerics/numbers.hpp"
@@ -27,6 +28,10 @@ std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
     if (!std::isfinite(x)) return "a range end is not finite";
   if (!(from1 < to1)) return "the first range is empty or inverted: from >= to";
   if (!(from2 < to2)) return "the second range is empty or inverted: from2 >= to2";
+  // As the belt chart's (plane.hpp): a narrower range cannot hold a curve's steps.
+  if (width1() < kMinRelativeWidth * std::max(std::abs(from1), std::abs(to1)) ||
+      width2() < kMinRelativeWidth * std::max(std::abs(from2), std::abs(to2)))
+    return "a range is narrower than " + Num(kMinRelativeWidth) + " max(|from|, |to|)";
   constexpr int kEdge = 17;
   for (int k = 0; k < kEdge; ++k) {
     const double f = static_cast<double>(k) / (kEdge - 1);

@@ -2,15 +2,15 @@
 // row (p2 fixed) swept along p1 as an orbit diagram does, every cell starting
 // from the end state of the one before (from rest at the row's first cell and
 // after a failure), classified by ClassifyAttractor (chaos/forced_basin.hpp).
-// Rows run on worker threads; no exception crosses a thread.
+// Rows are tasks of a bounded pool (parallel/pool.hpp); no exception crosses a thread.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <thread>
 
 #include "numerics/numbers.hpp"
+#include "parallel/pool.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 
 namespace stickslip {
@@ -30,7 +30,6 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
   ForcedBasinOptions bo;  // the classifier's settings
   bo.iterate = o.iterate, bo.iterate.flow = o.flow, bo.max_period = o.max_period;
   bo.max_amplitude = o.max_amplitude;
-  std::atomic<int> next{0};
   std::atomic<bool> stop{false};
   auto poll = [&] {
     if (stop.load(std::memory_order_relaxed)) return true;
@@ -61,20 +60,14 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
       g.done[k] = 1;
     }
   };
-  std::atomic<int> rows_done{0};
-  auto work = [&] {
-    for (int j; !poll() && (j = next.fetch_add(1)) < g.n2; rows_done.fetch_add(1)) row(j);
-  };
-  std::vector<std::thread> workers;
-  const int threads = std::min(o.threads, g.n2);
-  for (int t = 0; t < threads; ++t) workers.emplace_back(work);
-  // The caller's cancel hook is polled on the calling thread only.
-  while (rows_done.load() < g.n2 && !stop.load()) {
-    if (o.cancelled && o.cancelled()) stop = true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  for (std::thread& w : workers) w.join();
+  const PoolRun pool = RunPool(g.n2, o.threads, row, stop, [&] {
+    return o.cancelled && o.cancelled();  // polled on the calling thread only
+  });
   *cancelled = stop.load();
+  if (!pool.ok() && pool.threads == 0) {  // no thread started: every cell failed, and why
+    g.failed = static_cast<int>(n), g.failure = pool.error;
+    return g;
+  }
   for (size_t k = 0; k < n; ++k) {
     if (!g.done[k] || g.cells[k].kind != AttractorKind::kFailed) continue;
     if (g.failed++ == 0)

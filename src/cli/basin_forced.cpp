@@ -6,6 +6,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "stickslip/basin/basin.hpp"
 #include "stickslip/chaos/basin_report.hpp"
 
 namespace stickslip::cli {
@@ -18,7 +19,10 @@ po::options_description ForcedBasinOptionGroup() {
       "keep", Value()->value_name("K"),
       "forced: forcing periods that classify it (period and exponent), in [8, 1e6] (default 64)")(
       "max_period", Value()->value_name("M"),
-      "forced: the longest period looked for, in forcing periods, in [1, keep/2] (default 16)");
+      "forced: the longest period looked for, in forcing periods, in [1, keep/2] (default 16)")(
+      "threads", Value()->value_name("N"),
+      "forced: worker threads, in [1, 1024], capped by the machine's hardware threads (default: "
+      "all of them)");
   return d;
 }
 
@@ -52,6 +56,7 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
     throw UsageError("--x_min --x_max --xdot_min --xdot_max: give all four or none");
   o.x_lo = args.Number("x_min", o.x_lo), o.x_hi = args.Number("x_max", o.x_hi);
   o.xdot_lo = args.Number("xdot_min", o.xdot_lo), o.xdot_hi = args.Number("xdot_max", o.xdot_hi);
+  CheckBoxCorners(args);
   if (!(o.x_lo < o.x_hi)) throw UsageError("--x_min must be < --x_max");
   if (!(o.xdot_lo < o.xdot_hi)) throw UsageError("--xdot_min must be < --xdot_max");
   o.iterate.transient = static_cast<int>(Count(args, "transient", 300, 0, 1000000));
@@ -59,6 +64,7 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
   o.iterate.align = std::min(o.iterate.align, o.iterate.transient);
   o.iterate.batches = std::min(o.iterate.batches, o.iterate.keep);
   o.max_period = static_cast<int>(Count(args, "max_period", 16, 1, o.iterate.keep / 2));
+  o.threads = args.Given("threads") ? static_cast<int>(Count(args, "threads", 0, 1, 1024)) : 0;
   o.max_amplitude = args.Number("max_amplitude", 50);
   if (!(o.max_amplitude > 0)) throw UsageError(args.Source("max_amplitude") + " must be > 0");
   *flow = FlowOptionsFromArguments(args);
@@ -73,6 +79,15 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
 }
 
 }  // namespace
+
+void CheckBoxCorners(const Arguments& args) {
+  constexpr double kMax = stickslip::ForcedBasinOptions::kMaxCorner;
+  static_assert(kMax == BasinOptions::kMaxCorner, "one bound for both paths");
+  for (const char* k : {"x_min", "x_max", "xdot_min", "xdot_max"})
+    if (args.Given(k) && !(std::abs(args.Number(k, 0)) <= kMax))
+      throw UsageError(args.Source(k) + " = " + args.Text(k) + ": the grid box must lie within +-" +
+                       FormatNumber(kMax));
+}
 
 int RunForcedBasin(const Arguments& args, const std::string& prog, const std::string& command) {
   ForcedParams p;
@@ -92,6 +107,10 @@ int RunForcedBasin(const Arguments& args, const std::string& prog, const std::st
   };
   const ForcedModel model(p);
   const ForcedBasins b = ClassifyForcedBasins(model, o);
+  if (!b.error.empty()) {  // nothing classified: nothing written
+    std::cerr << prog << ": " << b.error << "\n";
+    return kExitFailed;
+  }
   const std::string desc =
       DescribeModel(p.base) + " force=" + FormatNumber(p.force) + " omega=" + FormatNumber(p.omega);
   Metadata meta = RunMetadata(prog, command, p.base, flow);

@@ -13,6 +13,9 @@ namespace stickslip::cli {
 
 // --transient --keep --max_period (the forced path's own options).
 po::options_description ForcedBasinOptionGroup();
+// UsageError naming the first of --x_min --x_max --xdot_min --xdot_max given
+// beyond +-1e6 (BasinOptions / ForcedBasinOptions::kMaxCorner), for both paths.
+void CheckBoxCorners(const Arguments& args);
 // The whole forced run; returns the exit code.
 int RunForcedBasin(const Arguments& args, const std::string& prog, const std::string& command);
 

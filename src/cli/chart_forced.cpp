@@ -1,8 +1,11 @@
 // ss_chart's forced run (chart_forced.hpp).
 #include "cli/chart_forced.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <tuple>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
@@ -48,6 +51,12 @@ Setup Configure(const Arguments& args) {
     throw UsageError(args.Source("to") + " = " + args.Text("to", "") + " must exceed --from");
   if (!(pl.from2 < pl.to2))
     throw UsageError(args.Source("to2") + " = " + args.Text("to2", "") + " must exceed --from2");
+  for (const auto& [from, to, a, b] :
+       {std::tuple{pl.from1, pl.to1, "from", "to"}, std::tuple{pl.from2, pl.to2, "from2", "to2"}})
+    if (to - from < kMinRelativeWidth * std::max(std::abs(from), std::abs(to)))
+      throw UsageError(args.Source(b) + " = " + FormatNumber(to) + " is too close to --" + a +
+                       " = " + FormatNumber(from) + ": the width must be >= " +
+                       FormatNumber(kMinRelativeWidth) + " max(|--" + a + "|, |--" + b + "|)");
   const std::string e = pl.ValidationError(s.p);
   if (!e.empty()) throw UsageError("invalid forced chart rectangle (--from .. --to2): " + e);
   s.flow = FlowOptionsFromArguments(args);

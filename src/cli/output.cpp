@@ -17,6 +17,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
@@ -49,6 +50,44 @@ std::string DirectoryProblem(const std::string& dir) {
 }
 
 }  // namespace
+
+const std::vector<std::string>& KnownOutputNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = {"branch.tsv",
+                                  "special_points.tsv",
+                                  "bifurcation.gp",
+                                  "resonance.gp",
+                                  "curves.tsv",
+                                  "codim2.tsv",
+                                  "regions.tsv",
+                                  "chart.gp",
+                                  "response.tsv",
+                                  "forced_chart.gp",
+                                  "basins.tsv",
+                                  "orbits.tsv",
+                                  "basins.gp",
+                                  "basins_forced.tsv",
+                                  "attractors.tsv",
+                                  "basins_forced.gp",
+                                  "basin_stability.tsv",
+                                  "basin_stability.gp",
+                                  "trajectory.tsv",
+                                  "section.tsv",
+                                  "trajectory.gp",
+                                  "orbit_diagram.tsv",
+                                  "lyapunov.tsv",
+                                  "orbit_diagram.gp",
+                                  "orbits.gp"};
+    for (const char* stem :
+         {"bifurcation_x", "bifurcation_xdot", "period", "multiplier", "estimates", "resonance",
+          "chart", "forced_chart", "basins", "basins_forced", "basin_stability", "trajectory",
+          "section", "orbit_diagram", "orbits"})
+      for (FigureFormat f : {FigureFormat::kPng, FigureFormat::kPdf, FigureFormat::kSvg})
+        n.push_back(FigureFile(stem, f));
+    return n;
+  }();
+  return names;
+}
 
 OutputSet::OutputSet(std::string dir, std::vector<std::string> names, const std::string& source,
                      const std::string& prog)
@@ -233,8 +272,14 @@ void OutputSet::Commit(const std::vector<std::string>& stale) {
     if (error.empty() && ::rename(from.c_str(), to.c_str()) != 0)
       error = "cannot move '" + name + "' into '" + dir_ + "': " + std::strerror(errno);
   }
+  // Stale beside this set: `stale`, and every file an app of this project
+  // writes that this run did not (another app's, another mode's or another
+  // --format's); regular files only, a symlink is never followed.
+  std::vector<std::string> remove = stale;
+  for (const auto& name : KnownOutputNames())
+    if (std::find(staged_.begin(), staged_.end(), name) == staged_.end()) remove.push_back(name);
   if (error.empty()) staged_.clear();
-  for (const auto& name : stale) {
+  for (const auto& name : remove) {
     if (!error.empty()) break;
     const std::string path = dir_ + "/" + name;
     struct stat st;

@@ -19,6 +19,8 @@
 // - Draw() runs gnuplot inside the staging directory and checks every figure
 //   (a whole PNG: signature and IEND chunk); a figure that fails the check is
 //   a failure, and the caller keeps the old files by not committing.
+// - Commit() removes what an older run of any app left under another of
+//   KnownOutputNames(), so a directory never holds a mix of two runs' sets.
 //
 // Use (any app writing files):
 //   cli::OutputSet out(dir, {"a.tsv", "a.gp", "a.png"}, "--out", "ss_x");  // before the run
@@ -37,6 +39,12 @@
 #include "cli/gnuplot.hpp"
 
 namespace stickslip::cli {
+
+// Every file name an app of this project writes (data, scripts, and each
+// figure in png, pdf and svg). OutputSet::Commit removes those an older run
+// left in the directory and this one did not write (issue 35), and nothing
+// else: a user's own files there stay. A new output name belongs here.
+const std::vector<std::string>& KnownOutputNames();
 
 class OutputSet {
  public:
@@ -63,8 +71,9 @@ class OutputSet {
   GnuplotResult Draw(const std::string& script, const std::vector<std::string>& figures,
                      const std::function<bool()>& cancelled);
   // Renames every staged file into dir under the lock, and removes the
-  // regular files named in `stale` that this run did not write (figures of
-  // an older run that no longer match its data). Throws Error.
+  // regular files named in `stale` or in KnownOutputNames() that this run did
+  // not write (figures of an older run that no longer match its data, another
+  // app's or --format's files). Throws Error.
   void Commit(const std::vector<std::string>& stale = {});
   // Removes the staging directory and what is still in it (the destructor
   // does this; for a process that ends without unwinding, e.g. _Exit).

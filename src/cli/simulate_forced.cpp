@@ -14,8 +14,6 @@ namespace stickslip::cli {
 
 namespace {
 
-constexpr double kMaxRows = 1e7;  // rows are held in memory until the atomic write
-
 void Positive(const Arguments& args, const char* name) {
   if (!(args.Number(name, 1) > 0))
     throw UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
@@ -79,9 +77,14 @@ SimulateRange SimulateRangeFromArguments(const Arguments& args, double default_x
   r.dt = args.Number("dt", r.dt);
   Positive(args, "t_end");
   Positive(args, "dt");
-  if (r.t_end / r.dt > kMaxRows)
+  r.max_rows = args.Integer("max_rows", SimulateRange::kMaxRows);
+  if (r.max_rows < 1 || r.max_rows > SimulateRange::kMaxRows)
+    throw UsageError("invalid value '" + args.Text("max_rows") + "' for " +
+                     args.Source("max_rows") + ": must be in [1, 1e7]");
+  if (r.t_end / r.dt > r.max_rows)
     throw UsageError("t_end / dt = " + FormatNumber(r.t_end / r.dt) + " rows is more than " +
-                     FormatNumber(kMaxRows) + "; use a larger --dt");
+                     args.Source("max_rows") + " = " + std::to_string(r.max_rows) +
+                     "; use a larger --dt");
   return r;
 }
 
@@ -163,9 +166,10 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
   const FlowOptions& flow = st.flow;
   const SimulateRange& range = st.range;
   const ForcedModel model(p);
-  if (o.section == ForcedSection::kStrobe && o.t_end / model.period() > kMaxRows)
+  if (o.section == ForcedSection::kStrobe && o.t_end / model.period() > range.max_rows)
     throw UsageError("t_end / (2 pi / omega) = " + FormatNumber(o.t_end / model.period()) +
-                     " section points is more than " + FormatNumber(kMaxRows));
+                     " section points is more than " + args.Source("max_rows") + " = " +
+                     std::to_string(range.max_rows));
   const FigureFormat format = FigureFormatOf(args);
   const std::string fig_t = FigureFile("trajectory", format), fig_s = FigureFile("section", format);
   AppRun app(prog, args, "plots/simulate",
@@ -176,7 +180,12 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     run.Heartbeat("");
     return run.Cancelled();
   };
+  o.max_rows = range.max_rows;
   const ForcedSimulation r = SimulateForced(model, ForcedStart(model, 0, range.x0, range.xdot0), o);
+  if (r.status == ForcedSimulationStatus::kRowLimit)  // bad input found late: nothing written
+    throw UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
+                     args.Source("dt") + " " + args.Text("dt", "0.01") + ": " + r.message +
+                     "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
   const std::string title =
       DescribeModel(p.base) + " force=" + FormatNumber(p.force) + " omega=" + FormatNumber(p.omega);

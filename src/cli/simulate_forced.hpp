@@ -15,7 +15,9 @@ namespace stickslip::cli {
 
 // x0, xdot0, t_end, dt: validated once (UsageError naming the option).
 struct SimulateRange {
+  static constexpr long kMaxRows = 10000000;  // rows are held in memory until the atomic write
   double x0 = 0, xdot0 = 0, t_end = 100, dt = 0.01;
+  long max_rows = kMaxRows;  // --max_rows: rows at switches and section points count too
 };
 SimulateRange SimulateRangeFromArguments(const Arguments& args, double default_xdot0);
 void AddRangeMeta(TsvTable& table, const SimulateRange& r);

@@ -281,10 +281,8 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
 
 ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
                             double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
-  ForcedParams at_from = base;
-  SetAxis(at_from, axis, from);
-  if (const std::string e = ValidationError(at_from); !e.empty()) throw InvalidArgument(e);
-  if (!(to != from) || !std::isfinite(to)) throw InvalidArgument("to must be finite and != from");
+  const std::string e = options.ValidationError(base, axis, from, to, x_guess, xdot_guess);
+  if (!e.empty()) throw InvalidArgument(e);
   return forced_detail::TraceBranch(base, axis, from, to,
                                     Eigen::Vector3d(x_guess, xdot_guess, from), 2,
                                     Eigen::Vector3d::Unit(2) * (to > from ? 1 : -1), options);

@@ -19,6 +19,7 @@ std::string ForcedSimulationOptions::ValidationError() const {
   if (!e.empty()) return e;
   if (!(t_end > 0) || !std::isfinite(t_end)) return "t_end = " + Num(t_end) + " must be > 0";
   if (!(dt > 0) || !std::isfinite(dt)) return "dt = " + Num(dt) + " must be > 0";
+  if (max_rows < 1) return "max_rows = " + std::to_string(max_rows) + " must be >= 1";
   return "";
 }
 
@@ -73,6 +74,12 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
     p = run.end;
     if (p.t >= t_row || p.t >= o.t_end) r.rows.push_back(p), k += 1;
     if (p.t >= t_sec) r.section.push_back({static_cast<long>(r.section.size()), p}), n += 1;
+    if (static_cast<long>(r.rows.size() + r.section.size()) > o.max_rows) {
+      r.status = ForcedSimulationStatus::kRowLimit;
+      r.message = "more than max_rows = " + std::to_string(o.max_rows) +
+                  " rows and section points (rows at switches included) by t = " + Num(p.t);
+      return r;
+    }
   }
   return r;
 }

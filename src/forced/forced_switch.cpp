@@ -45,6 +45,9 @@ ForcedBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double 
     throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " + Num(p_pd, 12) +
                           " < hi");
   if (const std::string e = options.palc.ValidationError(3); !e.empty()) throw InvalidArgument(e);
+  if (const std::string e = options.ValidationError(); !e.empty()) throw InvalidArgument(e);
+  if (!(std::isfinite(x0) && std::isfinite(xdot0)))
+    throw InvalidArgument("x0 = " + Num(x0) + ", xdot0 = " + Num(xdot0) + ": both must be finite");
   // The flip direction from DP^m at the point.
   const ForcedModel model(at_pd);
   ForcedRequest rq;

@@ -1,5 +1,9 @@
 #include "stickslip/io/restart.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -10,6 +14,7 @@
 #include <sstream>
 #include <vector>
 
+#include "stickslip/continuation/continuation.hpp"
 #include "stickslip/io/report.hpp"
 #include "stickslip/model/forced.hpp"
 
@@ -49,9 +54,41 @@ std::vector<std::string> Split(const std::string& line) {
   return cells;
 }
 
+// The whole file, if it is a regular file of at most kMaxFileBytes: a FIFO is
+// opened without blocking and refused, as are devices (/dev/zero) and sockets.
+std::string Slurp(const std::string& path) {
+  auto fail = [&path](const std::string& why) {
+    return RestartError(Part::kRun, "cannot read '" + path + "': " + why);
+  };
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw fail(std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st;
+  if (::fstat(fd, &st) != 0) throw fail(std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw fail("it is a directory");
+  if (!S_ISREG(st.st_mode)) throw fail("not a regular file (FIFO, device or socket)");
+  constexpr long long kMax = LabelledPoint::kMaxFileBytes;
+  const std::string cap = std::to_string(kMax) + " bytes (64 MiB)";
+  if (st.st_size > kMax) throw fail(std::to_string(st.st_size) + " bytes, more than " + cap);
+  std::string text;
+  char buf[65536];
+  for (ssize_t got; (got = ::read(fd, buf, sizeof buf)) != 0;) {
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw fail(std::strerror(errno));
+    }
+    text.append(buf, static_cast<size_t>(got));
+    if (static_cast<long long>(text.size()) > kMax)
+      throw fail("it grew past " + cap + " while read");
+  }
+  return text;
+}
+
 Table Read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw RestartError(Part::kRun, "cannot read '" + path + "': " + std::strerror(errno));
+  std::istringstream in(Slurp(path));
   Table t;
   t.path = path;
   std::string line;
@@ -122,6 +159,9 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
   if (from != t.meta.end() && to != t.meta.end()) {
     lp->run_from = Number(t, from->second, "from");
     lp->run_to = Number(t, to->second, "to");
+    if (!(std::isfinite(lp->run_from) && std::isfinite(lp->run_to)))
+      throw RestartError(Part::kRun, "'" + t.path + "' is corrupt: '# from: " + from->second +
+                                         "' and '# to: " + to->second + "' must be finite");
   }
 }
 
@@ -140,6 +180,11 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   const std::string x = lp->forced ? "x0" : "x_start", xdot = lp->forced ? "xdot0" : "xdot_start";
   lp->state = Vec2(Number(t, row[t.Column(x)], x), Number(t, row[t.Column(xdot)], xdot));
   lp->period = Number(t, row[t.Column("period")], "period");
+  // Only steady sliding (an equilibrium row) has no period.
+  const bool periodic = lp->type != PointKindName(PointKind::kEquilibrium);
+  if (periodic && !(std::isfinite(lp->period) && lp->period > 0))
+    throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " has period = " +
+                                       row[t.Column("period")] + ", not a finite number > 0");
   if (lp->forced) lp->m = static_cast<int>(Number(t, row[t.Column("m")], "m"));
   std::string err = lp->forced ? ValidationError(ForcedParams{lp->params, lp->force, lp->omega})
                                : ValidationError(lp->params);

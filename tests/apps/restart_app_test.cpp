@@ -149,3 +149,69 @@ TEST_F(Restart, BadRestartsExitTwoWithOneLineNamingTheOption) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 35: a restart file gets a study file's checks. A FIFO must not block
+// (--max_time cannot stop an open()), /dev/zero must not be read into memory,
+// a junk file over 64 MiB is refused unread; period = nan and '# from: nan' are
+// corrupt. Every case exits 2 within seconds, naming --restart, in both apps.
+TEST_F(Restart, RestartFilesMustBeRegularFilesOfBoundedSizeAndFiniteValues) {
+  const std::string s = Seed();
+  auto copy = [&](const std::string& name) {
+    EXPECT_EQ(std::system(("cp -r '" + s + "' '" + dir_ + "/" + name + "'").c_str()), 0);
+    return dir_ + "/" + name;
+  };
+  const std::string fifo = copy("fifo"), zero = copy("zero"), big = copy("big");
+  const std::string nan_period = copy("nan_period"), nan_from = copy("nan_from");
+  const std::string sp = "/special_points.tsv";
+  ASSERT_EQ(
+      std::system(("rm " + fifo + sp + " && mkfifo " + fifo + sp + " && rm " + zero + sp +
+                   " && ln -s /dev/zero " + zero + sp + " && truncate -s 65M " + big + sp +
+                   " && sed -i 's/^HB\\t\\([^\\t]*\\)\\t[^\\t]*/HB\\t\\1\\tnan/' " + nan_period +
+                   sp + " && sed -i 's/^# from: .*/# from: nan/' " + nan_from + sp)
+                      .c_str()),
+      0);
+  const std::pair<std::string, std::string> cases[] = {
+      {fifo, "not a regular file"},
+      {zero, "not a regular file"},
+      {big, "68157440 bytes, more than 67108864 bytes (64 MiB)"},
+      {nan_period, "the point HB1 has period = nan"},
+      {nan_from, "'# from: nan' and '# to: 0.5' must be finite"},
+  };
+  for (const char* app : {"ss_continue", "ss_chart"})
+    for (const auto& [dir, message] : cases) {
+      const std::string args = "--restart " + dir + " --point HB1 --max_time 5 --no_plots";
+      EXPECT_EQ(RunApp(kBin, app, args + " --out " + dir_ + "/bad", "KILL", 20), 2)
+          << app << " " << args;
+      EXPECT_TRUE(Contains(err_, "--restart " + dir + ": cannot read") ||
+                  Contains(err_, "--restart " + dir + ": '"))
+          << err_;
+      EXPECT_TRUE(Contains(err_, message)) << app << " " << err_;
+      EXPECT_FALSE(Exists(dir_ + "/bad")) << app << " " << args;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 35: `ss_chart --restart <forced run> --point PD1` said "--param: param =
+// 'omega' is no parameter" though no --param was given. A forced run's point
+// is refused as such, naming --restart (the Den Hartog run of the Python test).
+TEST_F(Restart, ChartRefusesAForcedRunNamingTheRestart) {
+  const std::string forced = dir_ + "/forced";
+  ASSERT_EQ(Run("ss_continue",
+                "--no_plots --law coulomb --mu_s 0.3 --mu_k 0.3 --v 0 --beta 0 --force 1 "
+                "--param omega --from 1.5 --to 2.5 --out " +
+                    forced),
+            0)
+      << err_;
+  EXPECT_EQ(Run("ss_chart", "--restart " + forced + " --point 1 --no_plots --out " + dir_ + "/c"),
+            2);
+  EXPECT_TRUE(Contains(err_, "--restart " + forced + " is a forced run (point 1")) << err_;
+  EXPECT_FALSE(Contains(err_, "--param")) << err_;
+  EXPECT_FALSE(Exists(dir_ + "/c"));
+}
+
+}  // namespace

@@ -89,7 +89,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedAxis", ForcedAxis::kBeta);
   Covers("ForcedBranchStatus", ForcedBranchStatus::kLeftRange);
   Covers("ForcedLabel", ForcedLabel::kSL);
-  Covers("ForcedSimulationStatus", ForcedSimulationStatus::kCancelled);
+  Covers("ForcedSimulationStatus", ForcedSimulationStatus::kRowLimit);
   Covers("ForcedSection", ForcedSection::kExit);
   Covers("ForcedCurveKind", ForcedCurveKind::kGR);
   Covers("ForcedCodim2Label", ForcedCodim2Label::kDoubleGrazing);

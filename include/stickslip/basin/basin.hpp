@@ -30,6 +30,8 @@ const char* FateName(Fate f);  // "steady-sliding", "stick-slip", "pure-slip", "
 struct BasinOptions {
   // nx * ny's upper bound (the grid's starts).
   static constexpr long kMaxStarts = 4000000;
+  // Bound of the box's corners: a finite box whose width cannot overflow.
+  static constexpr double kMaxCorner = 1e6;
   OrbitScanOptions scan;  // the periodic orbits; scan.orbit.flow drives every run
   // The grid: nx by ny starts on [x_lo, x_hi] x [xdot_lo, xdot_hi], ends
   // included. With auto_range the box is the periodic orbits' (and the stick

@@ -6,8 +6,8 @@
 // exponent above zero by more than its error), or undecided (neither
 // periodic within max_period nor chaotic, also after running on to max_keep
 // periods: quasi-periodic or slow). Periodic
-// attractors are told apart by their section points. Starts run in parallel
-// (threads); no exception crosses a thread.
+// attractors are told apart by their section points. Starts run on a bounded
+// pool (threads, capped by the hardware threads); no exception crosses a thread.
 #pragma once
 
 #include <functional>
@@ -48,6 +48,9 @@ struct Attractor {
 struct ForcedBasinOptions {
   /// nx's and ny's upper bound.
   static constexpr int kMaxSide = 2000;
+  /// Bound of |x_lo|, |x_hi|, |xdot_lo|, |xdot_hi| (a finite box whose width
+  /// cannot overflow: x_hi - x_lo = inf made every start nan).
+  static constexpr double kMaxCorner = 1e6;
   int nx = 41, ny = 41;
   double x_lo = -1.5, x_hi = 1.5, xdot_lo = -1.5, xdot_hi = 1.5;
   LyapunovOptions iterate;  ///< transient, keep (the classification window), flow
@@ -57,7 +60,7 @@ struct ForcedBasinOptions {
   /// while that stays <= max_keep: a weakly chaotic start needs more periods
   /// for its exponent to clear 3 errors (docs/studies.md, forced seed basins).
   int max_keep = 1024;
-  int threads = 2;
+  int threads = 2;  ///< worker threads, capped by the hardware threads; 0: all of them
   double max_amplitude = 50;
   std::function<bool()> cancelled;                    ///< polled by the calling thread
   std::function<void(int done, int total)> progress;  ///< called on the calling thread
@@ -78,6 +81,8 @@ struct ForcedBasins {
   bool cancelled = false;
   int failed = 0;
   double seconds = 0;
+  int threads = 0;    ///< worker threads that ran
+  std::string error;  ///< not empty: no worker thread could start (nothing classified)
 };
 
 /// The attractor one run's kept section points show (o.max_period and the

@@ -3,8 +3,9 @@
 // transient, the stick counts and exit phases, and the largest Lyapunov
 // exponent (chaos/lyapunov.hpp). Swept up and down, each value starting from
 // the last state of the one before, so that hysteresis shows. The two
-// directions (and, with chunks > 1, their pieces) run on their own threads;
-// no exception crosses a thread (a failure is the value's status).
+// directions (and, with chunks > 1, their pieces) are tasks of a pool of at
+// most `threads` threads, capped by the hardware threads; no exception crosses
+// a thread (a failure is the value's status).
 #pragma once
 
 #include <functional>
@@ -30,16 +31,20 @@ struct EnumNames<SweepDirection> {
 struct OrbitDiagramOptions {
   /// n's upper bound (1e6 parameter values).
   static constexpr int kMaxValues = 1000000;
+  /// Upper bound of n x keep x directions, the section points held in memory.
+  static constexpr double kMaxPoints = 1e7;
   ForcedAxis axis = ForcedAxis::kOmega;
   double from = 0.5, to = 2.5;
   int n = 200;  ///< parameter values, from..to inclusive
   bool up = true, down = true;
   LyapunovOptions iterate;
-  /// Pieces each sweep is cut into, run on threads of their own: 1 (the
-  /// default) follows every value from the one before; k > 1 starts each
-  /// piece from rest, so hysteresis shows only within a piece (a single
-  /// direction then uses more than one core).
+  /// Pieces each sweep is cut into, run in parallel: 1 (the default) follows
+  /// every value from the one before; k > 1 starts each piece from rest, so
+  /// hysteresis shows only within a piece (a single direction then uses more
+  /// than one core).
   int chunks = 1;
+  /// Worker threads, capped by the hardware threads; 0: all of them.
+  int threads = 0;
   /// A value whose |x| or |x'| passes this is kDiverged; the next starts from rest.
   double max_amplitude = 50;
   std::function<bool()> cancelled;                    ///< polled by the calling thread
@@ -59,6 +64,8 @@ struct DiagramColumn {
 struct OrbitDiagram {
   std::vector<DiagramColumn> columns;  ///< the up sweep, then the down sweep
   int failed = 0;                      ///< computed values whose status is not kDone
+  int threads = 0;                     ///< worker threads that ran
+  std::string error;  ///< not empty: no worker thread could start (nothing computed)
   bool cancelled = false;
   double seconds = 0;  ///< wall time
   long steps = 0;

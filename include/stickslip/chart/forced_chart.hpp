@@ -154,7 +154,7 @@ struct ForcedChartOptions {
   int n1 = 48, n2 = 32;             ///< response grid; 0: none
   LyapunovOptions iterate;          ///< per grid cell: transient, keep, flow
   int max_period = 16;              ///< largest m the grid looks for
-  int threads = 2;                  ///< grid rows in parallel
+  int threads = 2;                  ///< grid rows in parallel, capped by the hardware threads
   std::function<bool()> cancelled;  ///< polled between points and cells
   ForcedChartOptions() { iterate.transient = 300, iterate.keep = 64, iterate.align = 20; }
   /// Empty if valid for base, else one line naming the offending value.

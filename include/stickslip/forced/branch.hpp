@@ -99,14 +99,23 @@ struct EnumNames<ForcedBranchStatus> {
 };
 
 struct ForcedBranchOptions {
+  /// m's upper bound (1000 forcing periods, as a restart file's).
+  static constexpr int kMaxM = 1000;
   ForcedOptions flow;
-  int m = 1;                   ///< period multiple
+  int m = 1;                   ///< period multiple, in [1, kMaxM]
   PalcOptions palc;            ///< on (x, x', p)
   double max_amplitude = 1e3;  ///< rows stop beyond |x| = max_amplitude
   double locate_tol = 1e-12;   ///< special points: the bracket on the chord, relative
   /// Where the corrector fails at a jump of the stroboscopic map: at most this
   /// many restarts from the orbit beyond the located sliding point.
   int max_jumps = 50;
+  /// Empty if valid, else one line naming the offending value (m, max_amplitude,
+  /// locate_tol, max_jumps, flow).
+  std::string ValidationError() const;
+  /// ContinueForced's checks: the model at from, the range (to finite and !=
+  /// from), the options, then a start guess that is not finite.
+  std::string ValidationError(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                              double x_guess, double xdot_guess) const;
 };
 
 struct ForcedBranch {
@@ -120,7 +129,8 @@ struct ForcedBranch {
 };
 
 /// Traces the branch through the orbit near (x_guess, xdot_guess) at p = from
-/// toward p = to. Throws InvalidArgument on invalid parameters or options.
+/// toward p = to. Throws InvalidArgument on invalid parameters, options or a
+/// non-finite guess.
 /// options.palc.cancelled (if set) is polled before every correction.
 ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
                             double x_guess, double xdot_guess, const ForcedBranchOptions& options);

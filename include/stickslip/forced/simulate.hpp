@@ -31,6 +31,9 @@ struct ForcedSimulationOptions {
   double t_end = 100;  ///< > start.t
   double dt = 0.01;    ///< > 0: a row at every multiple of dt (and at every switch)
   ForcedSection section = ForcedSection::kStrobe;
+  /// Bound of rows + section points, those at switches included (held in
+  /// memory): past it the run stops with kRowLimit.
+  long max_rows = 10000000;
   std::function<bool()> cancelled;  ///< polled between rows; empty: never
   /// Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
@@ -46,6 +49,7 @@ enum class ForcedSimulationStatus {
   kComplete,
   kFailed,     ///< the flow failed or ran out of steps (message says where)
   kCancelled,  ///< cancelled() returned true; the rows so far are kept
+  kRowLimit,   ///< rows + section points passed max_rows (message says when)
 };
 const char* ForcedSimulationStatusName(ForcedSimulationStatus s);
 template <>
@@ -54,6 +58,7 @@ struct EnumNames<ForcedSimulationStatus> {
       {ForcedSimulationStatus::kComplete, "complete"},
       {ForcedSimulationStatus::kFailed, "failed"},
       {ForcedSimulationStatus::kCancelled, "cancelled"},
+      {ForcedSimulationStatus::kRowLimit, "row-limit"},
   };
 };
 

@@ -18,6 +18,8 @@ namespace stickslip {
 struct LabelledPoint {
   // m's upper bound a forced point is read with (a sanity bound on the file).
   static constexpr int kMaxM = 1000;
+  // The largest branch.tsv or special_points.tsv read (64 MiB); larger is refused.
+  static constexpr long long kMaxFileBytes = 64LL << 20;
 
   std::string label;  // "HB1", "GR1", ..., or the point number as given ("17")
   int pt = 0;         // its row in branch.tsv (1-based)
