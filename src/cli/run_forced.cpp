@@ -3,11 +3,14 @@
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_log.hpp"
+#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/forced/report.hpp"
@@ -123,7 +126,30 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   return s;
 }
 
+// The attractor the transient settled on, from (x, xdot) at phase 0, if it
+// is periodic within kStartMaxPeriod periods: its m and section point.
+constexpr int kStartMaxPeriod = 32;
+std::optional<Attractor> SettledAttractor(const ForcedModel& model, double x, double xdot,
+                                          const ForcedBranchOptions& o, RunControl& run) {
+  ForcedBasinOptions bo;
+  bo.max_period = kStartMaxPeriod;
+  bo.iterate.flow = o.flow;
+  bo.iterate.transient = bo.iterate.align;
+  bo.iterate.keep = 2 * kStartMaxPeriod;
+  bo.max_amplitude = o.max_amplitude;
+  const StroboscopicRun r = IterateStroboscopic(
+      model, ForcedStart(model, 0, x, xdot), bo.iterate, [&run] { return run.Cancelled(); },
+      o.max_amplitude);
+  if (r.status != LyapunovStatus::kDone) return std::nullopt;
+  const Attractor a = ClassifyAttractor(model, r, bo);
+  if (a.kind != AttractorKind::kPeriodic) return std::nullopt;
+  return a;
+}
+
 // The state after kTransientPeriods forcing periods from rest, at t = N T.
+// Newton at m = 1 from there; where no m = 1 orbit is near (the transient
+// settled on a period-11 attractor at Omega 1.5), the branch starts on that
+// attractor with its period.
 ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   SetAxis(p, s.axis, from);
@@ -142,6 +168,13 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run
   opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
   ForcedBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
                              : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
+  if (b.status == ForcedBranchStatus::kStartFailed && !s.doubled && opts.m == 1 &&
+      !(s.restart && from == s.from)) {
+    if (const auto a = SettledAttractor(model, x, xdot, opts, run)) {
+      opts.m = a->m;
+      b = ContinueForced(s.p, s.axis, from, to, a->x, a->xdot, opts);
+    }
+  }
   if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
   return b;
 }

@@ -86,16 +86,31 @@ std::string CoreError(const FlowOptions& o) {
 }
 }  // namespace
 
+namespace {
+// Sizes the flow can hold, then the system's own validation.
+std::string SystemError(const System& s) {
+  if (s.dimension() < 1 || s.clocks() < 0 || s.clocks() >= s.dimension())
+    return "Flow: a system of dimension " + std::to_string(s.dimension()) + " with " +
+           std::to_string(s.clocks()) + " clocks";
+  if (s.contacts() < 1 || s.contacts() > ModeSet::kMaxContacts)
+    return "Flow: contacts = " + std::to_string(s.contacts()) + " must lie in [1, " +
+           std::to_string(ModeSet::kMaxContacts) + "]";
+  return s.ValidationError();
+}
+}  // namespace
+
 Flow::Flow(const System& system, const FlowOptions& options)
     : system_(system.Clone()), options_(options) {
   std::string err = CoreError(options);
-  if (err.empty()) err = system.ValidationError();
+  if (err.empty()) err = SystemError(system);
   if (!err.empty()) throw InvalidArgument(err);
 }
 
 Flow::~Flow() = default;
 
 void Flow::set_system(const System& system) {
+  const std::string err = SystemError(system);
+  if (!err.empty()) throw InvalidArgument(err);
   const bool same_shape = system.dimension() == system_->dimension() &&
                           system.contacts() == system_->contacts() &&
                           system.clocks() == system_->clocks();

@@ -114,10 +114,11 @@ double TaylorStepper::StepSize(int order, int jz_order) const {
   return std::exp(std::min(r1, r2) - (2.0 + 0.7 / (p - 1)) * (p + 1) / (order + 1));
 }
 
-// A non-finite coefficient of order j makes every later one of its chain
-// non-finite (each order is sums and products of the ones before, divided
-// by finite constants; 0 * inf and inf - inf are NaN): the last two orders
-// of each row tell.
+// A non-finite coefficient of order j >= 1 makes every later one of its
+// chain non-finite (each order is sums and products of the ones before,
+// divided by finite constants; 0 * inf and inf - inf are NaN): order 0 and
+// the last two orders of each row tell (a constant field, as in stick,
+// carries nothing up from order 0).
 inline bool TaylorStepper::FiniteCoefficients() const {
   // 0 * c is 0 for finite c and NaN otherwise: one branch.
   const TaylorRow* r = c();
@@ -127,7 +128,7 @@ inline bool TaylorStepper::FiniteCoefficients() const {
   const int skip_to = p_->clock_rate ? clock_last_ : clock_first_;
   const int lo = std::max(0, order_ - 1);
   for (int i = 0; i < m_; i = i + 1 == clock_first_ ? skip_to : i + 1)
-    probe += 0.0 * r[i][lo] + 0.0 * r[i][order_];
+    probe += 0.0 * r[i][0] + 0.0 * r[i][lo] + 0.0 * r[i][order_];
   return probe == 0;
 }
 
