@@ -1,0 +1,75 @@
+// One Flow handed a new system (set_system) computes what a new Flow does:
+// its event sets and rest points are kept only where the contacts are the
+// same, and the Taylor field is bound again to the new parameter values.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/model/forced.hpp"
+#include "stickslip/model/model.hpp"
+
+namespace {
+
+using namespace stickslip;
+
+FlowRun RunBelt(Flow& flow, double x0) {
+  FlowPoint start;
+  start.z = Eigen::Vector2d(x0, 0.0);
+  start.mode = ModeSet(Mode::kSlipBelow);
+  FlowRequest rq;
+  rq.t_max = 40;
+  rq.variational = true;
+  rq.extrema = {0, 1};
+  return flow.Run(start, rq);
+}
+
+void ExpectSame(const FlowRun& a, const FlowRun& b) {
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.sticks, b.sticks);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.end.t, b.end.t);
+  EXPECT_EQ(a.end.z, b.end.z);  // bit for bit: the same computation
+  EXPECT_EQ(a.jacobian, b.jacobian);
+  EXPECT_EQ(a.lo, b.lo);
+  EXPECT_EQ(a.hi, b.hi);
+}
+
+TEST(FlowReuse, ANewParameterGivesWhatANewFlowGives) {
+  Params p;  // the seed set
+  Flow reused{Model(p), FlowOptions()};
+  const FlowRun first = RunBelt(reused, 0.8);
+  EXPECT_GT(first.sticks, 0);
+  Params q = p;
+  q.beta = 0.2;  // the contacts are the same: the events are kept
+  reused.set_system(Model(q));
+  Flow fresh_beta{Model(q), FlowOptions()};
+  ExpectSame(RunBelt(reused, 0.8), RunBelt(fresh_beta, 0.8));
+  q.v = 0.3;  // the belt speed moves the contact: events built again
+  reused.set_system(Model(q));
+  Flow fresh_v{Model(q), FlowOptions()};
+  ExpectSame(RunBelt(reused, 0.8), RunBelt(fresh_v, 0.8));
+  reused.set_system(Model(p));  // and back
+  ExpectSame(RunBelt(reused, 0.8), first);
+}
+
+TEST(FlowReuse, ANewForcingGivesWhatANewFlowGives) {
+  ForcedParams p;
+  p.force = 0.3, p.omega = 0.8;
+  Flow reused{ForcedModel(p), FlowOptions()};
+  FlowPoint start;
+  start.z = Eigen::Vector3d(0.1, 0.0, 0.0);
+  start.mode = ModeSet(Mode::kSlipBelow);
+  FlowRequest rq;
+  rq.t_max = 30;
+  rq.variational = true;
+  const FlowRun before = reused.Run(start, rq);
+  p.force = 0.5, p.omega = 1.1;
+  reused.set_system(ForcedModel(p));
+  Flow fresh{ForcedModel(p), FlowOptions()};
+  const FlowRun a = reused.Run(start, rq), b = fresh.Run(start, rq);
+  ExpectSame(a, b);
+  EXPECT_NE(a.end.z, before.end.z);
+}
+
+}  // namespace
