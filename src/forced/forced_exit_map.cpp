@@ -1,5 +1,5 @@
 // Stick-slip orbits of the forced oscillator as fixed points of the exit-phase
-// map (design.md section 5): stick collapses the state to one number, the
+// map (docs/theory.md, "One shooting"): stick collapses the state to one number, the
 // phase at which it ends, so the return from one exit to the next is a circle
 // map t_e -> t'. On the one shooting it is the stick-exit section of
 // (x, x', theta), closing after `sticks` exits and m turns of theta.

@@ -4,7 +4,7 @@
 // the one flow (flow.hpp). Three sections cover the friction systems:
 //  - a time: the stroboscopic map of a forced system (m forcing periods);
 //  - a stick exit: stick phases collapse the state (the seed's case 1, where
-//    the belt's map is constant; design.md section 5's exit-phase map);
+//    the belt's map is constant; the forced oscillator's exit-phase map);
 //  - a hyperplane crossed in one direction (the belt's x' = 0 falling).
 // On an event section DP = (I - f g^T / (g . f)) Phi at the arrival (Leine
 // & Nijmeijer 2004, section 7.3; Parker & Chua 1989, ch. 3), where g is the
