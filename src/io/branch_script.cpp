@@ -235,8 +235,10 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& ti
        Join(Curves(r, kXMax, true, true), Curves(r, kXMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   plot("bifurcation_xdot", "velocity dx/dt: min and max" + units.SpeedUnit(),
+       // On the upper curve, as x_max above: a grazing is where x' = v
+       // meets the stick set, the top of the orbit.
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.extrema.xdot_min; }, all, "uv"),
+           r, lo, hi, [](const SpecialPoint& s) { return s.extrema.xdot_max; }, all, "uv"),
        Join(Curves(r, kXdMax, true, true), Curves(r, kXdMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   auto periodic_point = [](const SpecialPoint& s) {

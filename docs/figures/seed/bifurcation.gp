@@ -33,7 +33,7 @@ set offsets 0, 0, graph 0.08, graph 0.08
 set xrange [up*0.05:up*0.5]
 set output 'bifurcation_x.png'.suffix
 set ylabel "displacement x: min and max (dimensionless)"
-set label 100 'GR' at up*0.3957902887978408,ul*0.7305861546582468 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,ul*0.730586154658249 center offset 0,1.1 boxed front font ',10' point ls 8
 set label 101 'HB' at up*0.44095855184409843,ul*0.2530138160519672 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6*ul : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6*ul : NaN) with lines ls 5 notitle, \
@@ -49,7 +49,7 @@ unset label
 unset output
 set output 'bifurcation_xdot.png'.suffix
 set ylabel "velocity dx/dt: min and max (dimensionless)"
-set label 100 'GR' at up*0.3957902887978408,uv*-0.3930534572417059 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,uv*0.3957902887978414 center offset 0,1.1 boxed front font ',10' point ls 8
 set label 101 'HB' at up*0.44095855184409843,uv*0 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8*uv : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8*uv : NaN) with lines ls 5 notitle, \
@@ -65,7 +65,7 @@ unset label
 unset output
 set output 'period.png'.suffix
 set ylabel "period T (dimensionless)"
-set label 100 'GR' at up*0.3957902887978408,ut*6.367585395099831 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,ut*6.36758539509984 center offset 0,1.1 boxed front font ',10' point ls 8
 set label 101 'HB' at up*0.44095855184409843,ut*6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 1 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 3 notitle, \
@@ -79,7 +79,7 @@ set multiplot layout 2,1 title "stability along the branch"
 set lmargin 12
 set title "periodic orbits: stable while the multiplier is below 1"
 set ylabel "nontrivial Floquet multiplier"
-set label 100 'GR' at up*0.3957902887978408,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 1 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 3 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
