@@ -3,7 +3,9 @@
 // the point is (a grazing-sliding orbit touches the stick set x' = v).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,84 @@ TEST_F(FigureMarksApp, GrazingMarkSitsOnTheUpperVelocityCurveAtTheBeltSpeed) {
     }
     EXPECT_EQ(grazings, 1) << study;
   }
+}
+
+// The points gnuplot draws for the curve titled `title` (the script run into
+// a table: "x y type" lines after "# Curve title: "TITLE""; undefined points left out).
+std::vector<std::array<double, 2>> DrawnPoints(const std::string& dir, const std::string& script,
+                                               const std::string& title) {
+  std::string gp = tu::ReadFile(dir + "/" + script);
+  const auto at = gp.find("set output");
+  if (at == std::string::npos) return {};
+  gp.replace(at, gp.find('\n', at) - at,
+             "set output '/dev/null'\nset table 'table.txt'\nset format x '%.17g'\n"
+             "set format y '%.17g'");
+  tu::WriteFile(dir + "/table.gp", gp);
+  if (std::system(("cd " + tu::ShellQuoted(dir) + " && gnuplot table.gp 2>/dev/null").c_str()) != 0)
+    return {};
+  std::vector<std::array<double, 2>> pts;
+  std::istringstream is(tu::ReadFile(dir + "/table.txt"));
+  bool in = false;
+  for (std::string line; std::getline(is, line);) {
+    if (line.rfind("# Curve title: ", 0) == 0)
+      in = line.find(title) != std::string::npos;
+    else if (line.rfind("# Curve ", 0) == 0)
+      in = false;  // "# Curve N of M": a new curve, untitled until its title line
+    if (!in || line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    double x = 0, y = 0;
+    std::string type;
+    if (ls >> x >> y >> type && type != "u") pts.push_back({x, y});
+  }
+  return pts;
+}
+
+// The forced seed basin (Omega = 0.559): the period-2 attractor's two section
+// points are both in the figure's plotted data, the second the image of the
+// first under one forcing period (ss_simulate at rtol 1e-13, the reference).
+TEST_F(FigureMarksApp, ForcedBasinFigureDrawsEverySectionPointOfAPeriodicAttractor) {
+  if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
+  const std::string src = STICKSLIP_SOURCE_DIR;
+  const std::string dir = NewDir();
+  const auto r = RunOut(
+      "ss_basin", dir,
+      {"--study", src + "/studies/seed_forced_basin.ini", "--nx", "2", "--ny", "2", "--x_min",
+       "0.5", "--x_max", "0.6", "--xdot_min", "0.1", "--xdot_max", "0.2", "--threads", "1"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const std::string out = dir + "/out";
+  const tu::Tsv att = tu::ReadTsv(tu::ReadFile(out + "/attractors.tsv"));
+  const auto pts = DrawnPoints(out, "basins_forced.gp", "periodic attractor");
+  int periodic = 0;
+  size_t want = 0;
+  for (const auto& row : att.rows) {
+    if (row[att.Column("kind")] != "periodic") continue;
+    ++periodic;
+    const int m = std::stoi(row[att.Column("m")]);
+    want += m;
+    ASSERT_EQ(m, 2);
+    const double x = std::stod(row[att.Column("x")]), xd = std::stod(row[att.Column("xdot")]);
+    // The reference: one forcing period (2 pi / 0.559 = 11.24) from (x, x').
+    const std::string sim = NewDir();
+    const auto s = RunOut("ss_simulate", sim,
+                          {"--study", src + "/studies/seed_forced.ini", "--omega", "0.559", "--x0",
+                           row[att.Column("x")], "--xdot0", row[att.Column("xdot")], "--t_end",
+                           "12", "--rtol", "1e-13", "--atol", "1e-15"});
+    ASSERT_EQ(s.outcome.code, 0) << s.err;
+    const tu::Tsv sec = tu::ReadTsv(tu::ReadFile(sim + "/out/section.tsv"));
+    ASSERT_GE(sec.rows.size(), 2u);
+    const std::array<double, 2> image = {std::stod(sec.rows[1][sec.Column("x")]),
+                                         std::stod(sec.rows[1][sec.Column("xdot")])};
+    auto drawn = [&](const std::array<double, 2>& q) {
+      for (const auto& p : pts)
+        if (std::abs(p[0] - q[0]) < 1e-8 && std::abs(p[1] - q[1]) < 1e-8) return true;
+      return false;
+    };
+    EXPECT_TRUE(drawn({x, xd})) << "the attractor's point (" << x << ", " << xd << ")";
+    EXPECT_TRUE(drawn(image)) << "its image (" << image[0] << ", " << image[1] << ")";
+    EXPECT_GT(std::abs(image[0] - x), 0.1);  // two distinct points
+  }
+  EXPECT_EQ(periodic, 1);
+  EXPECT_EQ(pts.size(), want);
 }
 
 }  // namespace
