@@ -19,6 +19,7 @@ set style line 8 lc rgb '#000000' pt 7 ps 1.0
 set style line 9 lc rgb '#000000' lw 2.5 dt 1
 set style line 10 lc rgb '#009e73' lw 2 dt 2
 set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set style line 12 lc rgb '#e69f00' lw 2 dt 5
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
@@ -108,9 +109,9 @@ plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $7*uv : NaN) wit
      '' using ($1*up):(-$15*uv) with lines ls 11 title 'averaging: -a_{ps}'
 set title "displacement range: computed and the seed's bound"
 set ylabel "displacement x (dimensionless)"
-plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $6*ul : NaN) with lines ls 9 title 'computed x max, x min', \
+plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $6*ul : NaN) with lines ls 9 title 'computed', \
      '' using ($1*up):((strcol(2) ne 'equilibrium') ? $5*ul : NaN) with lines ls 9 notitle, \
-     '' using ($1*up):($18*ul) with lines ls 10 title 'seed bound x max', \
-     '' using ($1*up):($17*ul) with lines ls 11 title 'seed bound x min'
+     '' using ($1*up):($18*ul) with lines ls 12 title "the seed's bound (x max, x min)", \
+     '' using ($1*up):($17*ul) with lines ls 12 notitle
 unset multiplot
 unset output
