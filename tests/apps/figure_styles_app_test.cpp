@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,52 @@ TEST_F(FigureStylesApp, EveryStyleOfTheBifurcationFiguresHasOneMeaning) {
   const std::string gp = tu::ReadFile(dir + "/out/bifurcation.gp");
   EXPECT_EQ(Figures(gp).count("estimates.png"), 1u);
   ExpectOneMeaningPerStyle(gp, "seed");
+}
+
+// The titles of the curves gnuplot draws from a one-figure script, each with
+// its count of defined points (the script run into a table).
+std::map<std::string, int> DrawnTitles(const std::string& dir, const std::string& script) {
+  std::string gp = tu::ReadFile(dir + "/" + script);
+  const auto at = gp.find("set output");
+  if (at == std::string::npos) return {};
+  gp.replace(at, gp.find('\n', at) - at, "set output '/dev/null'\nset table 'table.txt'");
+  tu::WriteFile(dir + "/table.gp", gp);
+  if (std::system(("cd " + tu::ShellQuoted(dir) + " && gnuplot table.gp 2>/dev/null").c_str()) != 0)
+    return {};
+  std::map<std::string, int> n;
+  std::istringstream is(tu::ReadFile(dir + "/table.txt"));
+  std::string title;  // of the current curve; "" untitled
+  for (std::string line; std::getline(is, line);) {
+    if (line.rfind("# Curve title: ", 0) == 0) {
+      title = line.substr(16, line.size() - 17);
+      n[title] += 0;
+    } else if (line.rfind("# Curve ", 0) == 0) {
+      title.clear();
+    } else if (!title.empty() && !line.empty() && line[0] != '#') {
+      std::istringstream ls(line);
+      double x = 0, y = 0;
+      std::string type;
+      if (ls >> x >> y >> type && type != "u") ++n[title];
+    }
+  }
+  return n;
+}
+
+// The floor and Den Hartog resonance figures: every key entry names a curve
+// with points (no "unstable" entry over a branch that is stable throughout).
+TEST_F(FigureStylesApp, ResonanceKeyNamesOnlyCurvesWithData) {
+  if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
+  for (const char* study : {"floor_static", "den_hartog"}) {
+    const std::string dir = NewDir();
+    const auto r =
+        RunOut("ss_continue", dir,
+               {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/" + study + ".ini"});
+    ASSERT_EQ(r.outcome.code, 0) << r.err;
+    const auto titles = DrawnTitles(dir + "/out", "resonance.gp");
+    ASSERT_GE(titles.size(), 1u) << study;
+    for (const auto& [title, points] : titles)
+      EXPECT_GT(points, 0) << study << ": key entry '" << title << "' has no data";
+  }
 }
 
 }  // namespace
