@@ -159,4 +159,40 @@ TEST_F(FigureMarksApp, ForcedBasinFigureDrawsEverySectionPointOfAPeriodicAttract
   EXPECT_EQ(pts.size(), want);
 }
 
+// The forced Stribeck belt's resonance figure: a label drawn above its point
+// (even rows of special_points.tsv, offset 1.2 characters up) has 6 % of the
+// y range above it, one below has 6 % under it; LP2 at x_max 0.887 was cut by
+// the top border at 0.9.
+TEST_F(FigureMarksApp, ResonanceLabelsHaveRoomInsideThePlot) {
+  if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
+  for (const char* study : {"stribeck_forced", "seed_forced", "floor_static"}) {
+    const std::string dir = NewDir();
+    const auto r =
+        RunOut("ss_continue", dir,
+               {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/" + study + ".ini"});
+    ASSERT_EQ(r.outcome.code, 0) << r.err;
+    const std::string out = dir + "/out";
+    std::string gp = tu::ReadFile(out + "/resonance.gp");
+    const auto at = gp.find("set output");
+    ASSERT_NE(at, std::string::npos);
+    gp.replace(at, gp.find('\n', at) - at, "set output '/dev/null'");
+    tu::WriteFile(out + "/range.gp",
+                  gp + "set print 'range.txt'\nprint sprintf('%.17g %.17g', GPVAL_Y_MIN, "
+                       "GPVAL_Y_MAX)\n");
+    ASSERT_EQ(
+        std::system(("cd " + tu::ShellQuoted(out) + " && gnuplot range.gp 2>/dev/null").c_str()),
+        0);
+    std::istringstream range(tu::ReadFile(out + "/range.txt"));
+    double lo = 0, hi = 0;
+    ASSERT_TRUE(range >> lo >> hi) << study;
+    const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(out + "/special_points.tsv"));
+    for (size_t i = 0; i < sp.rows.size(); ++i) {
+      const double y = std::stod(sp.rows[i][sp.Column("x_max")]);
+      const double room = i % 2 == 0 ? hi - y : y - lo;
+      EXPECT_GE(room, 0.06 * (hi - lo)) << study << ": " << sp.rows[i][sp.Column("lab")]
+                                        << " at x_max " << y << " in [" << lo << ", " << hi << "]";
+    }
+  }
+}
+
 }  // namespace
