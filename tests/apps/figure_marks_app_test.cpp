@@ -29,7 +29,8 @@ std::string FigureSection(const std::string& gp, const std::string& stem) {
   return gp.substr(at, gp.find("unset output", at) - at);
 }
 
-// "set label N 'TEXT' at up*X,UNIT*Y ..." lines (the unit factors are 1 here).
+// "set label N 'TEXT' at up*X,UNIT*Y ..." lines (the unit factors are 1 here;
+// y is NaN where the label sits at a graph coordinate).
 std::vector<Mark> Marks(const std::string& section) {
   std::vector<Mark> marks;
   std::istringstream is(section);
@@ -40,10 +41,9 @@ std::vector<Mark> Marks(const std::string& section) {
     if (q0 == std::string::npos || q1 == std::string::npos || at == std::string::npos) continue;
     const auto star1 = line.find('*', at), comma = line.find(',', at);
     const auto star2 = line.find('*', comma);
-    if (star1 == std::string::npos || comma == std::string::npos || star2 == std::string::npos)
-      continue;
+    if (star1 == std::string::npos || comma == std::string::npos) continue;
     marks.push_back({line.substr(q0 + 1, q1 - q0 - 1), std::stod(line.substr(star1 + 1)),
-                     std::stod(line.substr(star2 + 1))});
+                     star2 == std::string::npos ? NAN : std::stod(line.substr(star2 + 1))});
   }
   return marks;
 }
@@ -193,6 +193,79 @@ TEST_F(FigureMarksApp, ResonanceLabelsHaveRoomInsideThePlot) {
                                         << " at x_max " << y << " in [" << lo << ", " << hi << "]";
     }
   }
+}
+
+// Runs of consecutive defined points per curve of gnuplot's table of a
+// one-figure script (a break: an undefined point or a new curve).
+std::vector<std::vector<std::array<double, 2>>> DrawnRuns(const std::string& dir,
+                                                          const std::string& script) {
+  std::string gp = tu::ReadFile(dir + "/" + script);
+  const auto at = gp.find("set output");
+  if (at == std::string::npos) return {};
+  gp.replace(at, gp.find('\n', at) - at,
+             "set output '/dev/null'\nset table 'table.txt'\nset format x '%.17g'");
+  tu::WriteFile(dir + "/table.gp", gp);
+  if (std::system(("cd " + tu::ShellQuoted(dir) + " && gnuplot table.gp 2>/dev/null").c_str()) != 0)
+    return {};
+  std::vector<std::vector<std::array<double, 2>>> runs;
+  bool broken = true;
+  std::istringstream is(tu::ReadFile(dir + "/table.txt"));
+  for (std::string line; std::getline(is, line);) {
+    if (line.empty() || line[0] == '#') {
+      broken = broken || line.rfind("# Curve ", 0) == 0;
+      continue;
+    }
+    std::istringstream ls(line);
+    double x = 0, y = 0;
+    std::string type;
+    if (!(ls >> x >> y >> type) || type == "u") {
+      broken = true;
+      continue;
+    }
+    if (broken) runs.emplace_back();
+    runs.back().push_back({x, y});
+    broken = false;
+  }
+  return runs;
+}
+
+// Basin stability along v (the Stribeck belt): HB and GR marked at the values
+// ss_continue locates over the same range, and no line joins the rows on the
+// two sides of GR (the fold where the stick-slip orbit ends: a jump, not a slope).
+TEST_F(FigureMarksApp, BasinStabilityMarksHopfAndGrazingAndBreaksAtTheJump) {
+  if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
+  const std::string study =
+      std::string(STICKSLIP_SOURCE_DIR) + "/studies/stribeck_basin_stability.ini";
+  const std::string dir = NewDir(), ref = NewDir();
+  const auto r = RunOut("ss_basin", dir, {"--study", study, "--n", "11"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const auto c = RunOut("ss_continue", ref,
+                        {"--study", study, "--param", "v", "--from", "0.5", "--to", "0.7"});
+  ASSERT_EQ(c.outcome.code, 0) << c.err;
+  const tu::Tsv sp = tu::ReadTsv(tu::ReadFile(ref + "/out/special_points.tsv"));
+  double hb = NAN, gr = NAN;
+  for (const auto& row : sp.rows) {
+    const std::string label = row[sp.Column("label")];
+    if (label == "HB") hb = std::stod(row[sp.Column("v")]);
+    if (label == "GR") gr = std::stod(row[sp.Column("v")]);
+  }
+  ASSERT_TRUE(std::isfinite(hb) && std::isfinite(gr));
+  const std::string gp = tu::ReadFile(dir + "/out/basin_stability.gp");
+  bool hb_marked = false, gr_marked = false;
+  for (const Mark& m : Marks(gp)) {
+    hb_marked = hb_marked || (m.text.find("HB") != std::string::npos && std::abs(m.x - hb) < 1e-9);
+    gr_marked = gr_marked || (m.text.find("GR") != std::string::npos && std::abs(m.x - gr) < 1e-9);
+  }
+  EXPECT_TRUE(hb_marked) << "no HB label at v = " << hb;
+  EXPECT_TRUE(gr_marked) << "no GR label at v = " << gr;
+  int runs = 0;
+  for (const auto& run : DrawnRuns(dir + "/out", "basin_stability.gp")) {
+    ++runs;
+    for (size_t j = 1; j < run.size(); ++j)
+      EXPECT_FALSE(run[j - 1][0] < gr && run[j][0] > gr)
+          << "a line from v = " << run[j - 1][0] << " to " << run[j][0] << " across GR";
+  }
+  EXPECT_GE(runs, 4);
 }
 
 }  // namespace
