@@ -268,4 +268,67 @@ TEST_F(FigureMarksApp, BasinStabilityMarksHopfAndGrazingAndBreaksAtTheJump) {
   EXPECT_GE(runs, 4);
 }
 
+// The numbers after "set KEY [" (a range) or "set KEY at screen " in a
+// script's text, in order.
+std::vector<double> Settings(const std::string& text, const std::string& key) {
+  std::vector<double> v;
+  for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
+    std::istringstream is(text.substr(at + key.size()));
+    double x = 0;
+    char colon = 0;
+    if (key.back() == '[') {
+      double y = 0;
+      if (is >> x >> colon >> y) v.push_back(x), v.push_back(y);
+    } else if (is >> x) {
+      v.push_back(x);
+    }
+  }
+  return v;
+}
+
+// The quintic chart: its two codimension-two points (GH, GR-LP) lie within
+// 0.04 in v and 0.02 in beta of each other; the chart draws them again in an
+// inset, zoomed (each range under 30 % of the chart's), that contains both,
+// and sits on the page where it hides neither them nor the zoomed box.
+TEST_F(FigureMarksApp, QuinticChartZoomsTheCrowdedCornerInAnInset) {
+  if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";  // chart.gp comes with the figure
+  const std::string dir = NewDir();
+  const auto r =
+      RunOut("ss_chart", dir,
+             {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/quintic_chart.ini"}, true);
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const std::string gp = tu::ReadFile(dir + "/out/chart.gp");
+  const tu::Tsv c2 = tu::ReadTsv(tu::ReadFile(dir + "/out/codim2.tsv"));
+  ASSERT_EQ(c2.rows.size(), 2u);
+  const auto inset_at = gp.find("# the inset");
+  ASSERT_NE(inset_at, std::string::npos) << "no inset";
+  const std::string main = gp.substr(0, inset_at), inset = gp.substr(inset_at);
+  const auto mx = Settings(main, "set xrange ["), my = Settings(main, "set yrange [");
+  const auto ix = Settings(inset, "set xrange ["), iy = Settings(inset, "set yrange [");
+  ASSERT_TRUE(mx.size() == 2 && my.size() == 2 && ix.size() == 2 && iy.size() == 2);
+  EXPECT_LT(ix[1] - ix[0], 0.3 * (mx[1] - mx[0]));
+  EXPECT_LT(iy[1] - iy[0], 0.3 * (my[1] - my[0]));
+  // The page: main frame and inset frame, screen fractions l, r, t, b.
+  auto frame = [](const std::string& t) {
+    return std::vector<double>{
+        Settings(t, "set lmargin at screen ").at(0), Settings(t, "set rmargin at screen ").at(0),
+        Settings(t, "set tmargin at screen ").at(0), Settings(t, "set bmargin at screen ").at(0)};
+  };
+  const auto mf = frame(main), f = frame(inset);
+  auto on_page = [&](double v, double b) {
+    return std::array<double, 2>{mf[0] + (v - mx[0]) / (mx[1] - mx[0]) * (mf[1] - mf[0]),
+                                 mf[3] + (b - my[0]) / (my[1] - my[0]) * (mf[2] - mf[3])};
+  };
+  auto covered = [&](const std::array<double, 2>& q) {
+    return q[0] > f[0] && q[0] < f[1] && q[1] > f[3] && q[1] < f[2];
+  };
+  for (const auto& row : c2.rows) {
+    const double v = std::stod(row[c2.Column("v")]), b = std::stod(row[c2.Column("beta")]);
+    EXPECT_TRUE(v > ix[0] && v < ix[1] && b > iy[0] && b < iy[1]) << row[0] << " not in the inset";
+    EXPECT_FALSE(covered(on_page(v, b))) << row[0] << " hidden by the inset";
+  }
+  for (double v : {ix[0], ix[1]})
+    for (double b : {iy[0], iy[1]}) EXPECT_FALSE(covered(on_page(v, b))) << "the zoomed box hidden";
+}
+
 }  // namespace
