@@ -11,13 +11,15 @@ std::string ValidationError(const ForcedParams& p) {
     return "force = " + Num(p.force, 12) + " must be a finite number >= 0";
   if (!std::isfinite(p.omega) || p.omega <= 0)
     return "omega = " + Num(p.omega, 12) + " must be a finite number > 0";
-  const std::string range = "[" + Num(kMinScale) + ", " + Num(kMaxScale) + "]";
+  // The range's text only on failure: this runs for every model a branch
+  // step builds, where formatting it was 38 % of a forced run (callgrind).
+  auto range = [] { return "[" + Num(kMinScale) + ", " + Num(kMaxScale) + "]"; };
   // Each blamed on its own name; a force below kMinScale (a denormal 4.9e-324
   // too) is no forcing the flow resolves: 0 or within the range.
   if (p.force != 0 && (p.force < kMinScale || p.force > kMaxScale))
-    return "force = " + Num(p.force, 12) + " must be 0 or lie in " + range;
+    return "force = " + Num(p.force, 12) + " must be 0 or lie in " + range();
   if (p.omega < kMinScale || p.omega > kMaxScale)
-    return "omega = " + Num(p.omega, 12) + " must lie in " + range;
+    return "omega = " + Num(p.omega, 12) + " must lie in " + range();
   if (!(p.base.v >= 0)) return "v = " + Num(p.base.v, 12) + " must be >= 0";
   // The belt's checks, with v = 0 and (coulomb) mu_k = mu_s admitted here.
   Params q = p.base;
