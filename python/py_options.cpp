@@ -48,6 +48,16 @@ void BindEnums(py::module_& m) {
   Enum<OrbitKind>(m, "OrbitKind", "Kind of periodic orbit.", &OrbitKindName)
       .value("stick_slip", OrbitKind::kStickSlip, "one stick phase per period")
       .value("pure_slip", OrbitKind::kPureSlip, "never sticks");
+  Enum<OrbitStatus>(m, "OrbitStatus", "How an orbit search ended (orbits()' status codes).",
+                    &OrbitStatusName)
+      .value("ok", OrbitStatus::kOk)
+      .value("no_return", OrbitStatus::kNoReturn, "no return within max_return_time")
+      .value("integrator_failed", OrbitStatus::kIntegratorFailed)
+      .value("sticks", OrbitStatus::kSticks)
+      .value("not_converged", OrbitStatus::kNotConverged)
+      .value("collapsed", OrbitStatus::kCollapsed)
+      .value("missed", OrbitStatus::kMissed, "the first return stays below the belt speed")
+      .value("cancelled", OrbitStatus::kCancelled);
   Enum<PointKind>(m, "PointKind", "Kind of branch point.", &PointKindName)
       .value("stick_slip", PointKind::kStickSlip)
       .value("pure_slip", PointKind::kPureSlip)

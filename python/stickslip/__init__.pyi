@@ -40,6 +40,15 @@ class FlowStatus(enum.IntEnum):
 class OrbitKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
+class OrbitStatus(enum.IntEnum):
+    ok = 0
+    no_return = 1
+    integrator_failed = 2
+    sticks = 3
+    not_converged = 4
+    collapsed = 5
+    missed = 6
+    cancelled = 7
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
@@ -559,6 +568,10 @@ def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
                       from_: Optional[float] = None, to: Optional[float] = None,
                       progress: Optional[Callable[[int, float, str, bool], Any]] = None,
                       **inputs: float) -> Branch: ...
+def orbits(params: Params, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
+           floquet: bool = False, rtol: Optional[float] = None, atol: Optional[float] = None,
+           integrator: IntegratorLike = None,
+           method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,
