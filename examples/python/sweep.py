@@ -16,7 +16,8 @@ def main():
     rng = np.random.default_rng(1)
     grid = {"v": np.linspace(0.05, 0.45, speeds)}
     sample = {"mu_s": rng.normal(0.4, 0.02, draws)}
-    r = stickslip.sweep(stickslip.stick_slip_orbit, grid, sample)          # LocalCluster, 2 workers
+    # LocalCluster, 2 workers; each chunk of points is one stickslip.orbits call
+    r = stickslip.sweep(stickslip.stick_slip_orbits, grid, sample)
     r.to_tsv("sweep.tsv")  # one self-describing file
     s = stickslip.group_stats(r, "v", "amplitude", where="stick_slip")
     print(len(r), "orbits in", r.meta["seconds"], "s on", r.meta["workers"], "workers")
