@@ -5,6 +5,9 @@
 // into read-only NumPy arrays without a copy.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -100,6 +103,44 @@ py::dict Orbits(const Params& base, const py::object& columns, int threads, bool
   return out;
 }
 
+// x as Python's repr writes it: the shortest digits that read back exactly
+// (std::to_chars), in exponent form for x < 1e-4 or x >= 1e16, else fixed
+// with ".0" on whole numbers.
+void AppendRepr(double x, std::string& out) {
+  if (std::isnan(x)) {
+    out += "nan";
+    return;
+  }
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::scientific);
+  const char* e = std::find(buf, r.ptr, 'e');
+  int exponent = 0;
+  if (e != r.ptr) std::from_chars(e + (e[1] == '+' ? 2 : 1), r.ptr, exponent);
+  if (std::isinf(x) || exponent >= 16 || exponent < -4) {
+    out.append(buf, r.ptr);
+    return;
+  }
+  r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::fixed);
+  out.append(buf, r.ptr);
+  if (std::find(buf, r.ptr, '.') == r.ptr) out += ".0";
+}
+
+// The rows of a 2-D float array as TSV text, each value as repr() writes it:
+// SweepResult.to_tsv's rows at C speed.
+py::bytes TsvRows(const py::array_t<double, py::array::c_style | py::array::forcecast>& a) {
+  if (a.ndim() != 2) throw InvalidArgument("_tsv_rows: a 2-D array is needed");
+  const py::ssize_t rows = a.shape(0), cols = a.shape(1);
+  std::string out;
+  out.reserve(static_cast<std::size_t>(rows * cols) * 20);
+  const double* d = a.data();
+  for (py::ssize_t i = 0; i < rows; ++i)
+    for (py::ssize_t j = 0; j < cols; ++j) {
+      AppendRepr(d[i * cols + j], out);
+      out += j + 1 < cols ? '\t' : '\n';
+    }
+  return py::bytes(out);
+}
+
 }  // namespace
 
 void BindBatch(py::module_& m) {
@@ -115,6 +156,8 @@ void BindBatch(py::module_& m) {
         "A row without an orbit holds zeros and stable False. threads: worker threads, capped by "
         "the hardware threads (0: all). Unknown names, columns of different lengths and invalid "
         "values raise ValueError before any work; Ctrl-C raises KeyboardInterrupt.");
+  m.def("_tsv_rows", &TsvRows, py::arg("data"),
+        "Rows of a 2-D float array as TSV bytes, each value as repr() writes it.");
 }
 
 }  // namespace stickslip::python

@@ -190,16 +190,17 @@ class SweepResult:
 
     def to_tsv(self, path):
         """Writes the whole file under a temporary name, then renames it; rows go
-        out TSV_ROWS at a time (each value as repr: it reads back exactly)."""
+        out TSV_ROWS at a time, each value as repr() writes it (it reads back
+        exactly), formatted in C."""
+        from ._core import _tsv_rows
         d = os.path.dirname(os.path.abspath(path))
         fd, tmp = tempfile.mkstemp(prefix=".sweep-", dir=d)
         try:
-            with os.fdopen(fd, "w") as f:
-                f.write("".join(f"# {k}: {v}\n" for k, v in self.meta.items()))
-                f.write("\t".join(self.columns) + "\n")
+            with os.fdopen(fd, "wb") as f:
+                head = "".join(f"# {k}: {v}\n" for k, v in self.meta.items())
+                f.write((head + "\t".join(self.columns) + "\n").encode())
                 for i in range(0, len(self), TSV_ROWS):
-                    rows = self.data[i:i + TSV_ROWS].tolist()
-                    f.write("".join("\t".join(map(repr, row)) + "\n" for row in rows))
+                    f.write(_tsv_rows(self.data[i:i + TSV_ROWS]))
             os.chmod(tmp, 0o644)
             os.replace(tmp, path)
         except BaseException:
@@ -384,16 +385,18 @@ def group_stats(result, by, value, quantiles=(0.05, 0.5, 0.95), where=None):
     (a column name, taken as true when non-zero; None: every row) holds, and
     the quantiles of `value` over those rows (nan if none). Returns a dict of
     arrays: by, fraction, count, q<q> for each quantile."""
-    keys = np.unique(result[by])
+    keys, group = np.unique(result[by], return_inverse=True)
+    order = np.argsort(group, kind="stable")  # each key's rows, contiguous
+    bounds = np.searchsorted(group[order], np.arange(keys.size + 1))
+    values = result[value][order]
+    holds = result[where][order] != 0 if where else None
     out = {by: keys, "fraction": [], "count": []}
     for q in quantiles:
         out[f"q{q:g}"] = []
-    for k in keys:
-        rows = result[by] == k
-        mask = rows & (result[where] != 0) if where else rows
-        out["fraction"].append(mask.sum() / rows.sum())
-        out["count"].append(int(rows.sum()))
-        vals = result[value][mask]
+    for lo, hi in zip(bounds[:-1], bounds[1:]):
+        vals = values[lo:hi] if holds is None else values[lo:hi][holds[lo:hi]]
+        out["fraction"].append(vals.size / (hi - lo))
+        out["count"].append(int(hi - lo))
         for q in quantiles:
             out[f"q{q:g}"].append(float(np.quantile(vals, q)) if vals.size else math.nan)
     return {k: np.asarray(v) for k, v in out.items()}

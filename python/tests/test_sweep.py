@@ -152,6 +152,22 @@ class Sweep(unittest.TestCase):
             self.assertTrue(np.array_equal(back, r.data))
             self.assertEqual(os.stat(path).st_mode & 0o777, 0o644)
 
+    def test_rows_are_written_as_repr_writes_them(self):
+        # The rows are formatted in C (std::to_chars); the text must be repr's.
+        rng = np.random.default_rng(5)
+        data = rng.standard_normal((2000, 4)) * 10.0 ** rng.integers(-30, 30, (2000, 4))
+        data[:, 0] = np.round(rng.random(2000) * 1e6)
+        data[:13, 1] = [1e-5, 1e-4, 1.1e-4, 9.99999e-5, 123.0, 1e16, 9999999999999998.0, 1e17,
+                        -0.0, 0.0, 5e-324, 1.7976931348623157e308, 0.1]
+        r = stickslip.SweepResult(["a", "b", "c", "d"], data, {"k": "v"})
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "rows.tsv")
+            r.to_tsv(path)
+            with open(path) as f:
+                lines = f.read().splitlines()
+        self.assertEqual(lines[:2], ["# k: v", "a\tb\tc\td"])
+        self.assertEqual(lines[2:], ["\t".join(map(repr, row)) for row in data.tolist()])
+
     def test_bad_input_names_the_argument(self):
         for kwargs, word in [({"grid": {"v": []}}, "'v' is empty"),
                              ({"grid": {"v": [0.1, float("nan")]}}, "not finite"),
