@@ -16,6 +16,9 @@ namespace {
 // Rows a worker takes at a time: enough to keep the shared counter off the
 // profile (a row costs microseconds), few enough to balance two threads.
 constexpr std::size_t kBlockRows = 64;
+// Rows per worker thread at least: a new thread's start (its allocator arena,
+// its finder's first steps) costs about 0.5 ms, some 100 rows.
+constexpr std::size_t kThreadRows = 256;
 
 // The column checks of StickSlipOrbits; empty if the columns are usable.
 std::string ColumnError(const Params& base, const std::vector<ParameterColumn>& columns) {
@@ -80,21 +83,26 @@ void Store(const OrbitResult& r, std::size_t i, OrbitBatch& out) {
 }
 
 // One worker: one finder, prepared at its first row, then blocks of rows
-// from `next` until none is left or `stop` is set.
+// from `next` until none is left or `stop` is set. On the calling thread
+// (`hook` set) it polls the cancel hook before every row and at every step.
 void Work(const Params& base, const std::vector<ParameterColumn>& columns,
-          const OrbitOptions& options, std::atomic<std::size_t>& next,
-          const std::atomic<bool>& stop, OrbitBatch& out) {
+          const OrbitOptions& options, std::atomic<std::size_t>& next, std::atomic<bool>& stop,
+          const std::function<bool()>* hook, OrbitBatch& out) {
+  auto cancelled = [&] {
+    if (hook && !stop.load(std::memory_order_relaxed) && (*hook)()) stop = true;
+    return stop.load(std::memory_order_relaxed);
+  };
   const std::size_t rows = out.rows();
   std::optional<OrbitFinder> finder;
   for (std::size_t begin; !stop.load() && (begin = next.fetch_add(kBlockRows)) < rows;) {
     const std::size_t end = std::min(rows, begin + kBlockRows);
-    for (std::size_t i = begin; i < end && !stop.load(std::memory_order_relaxed); ++i) {
+    for (std::size_t i = begin; i < end && !cancelled(); ++i) {
       const Model model(RowParams(base, columns, i));
       if (finder) {
         finder->set_model(model);
       } else {
         finder.emplace(model, options);
-        finder->flow().set_cancel([&stop] { return stop.load(std::memory_order_relaxed); });
+        finder->flow().set_cancel(cancelled);
       }
       Store(finder->StickSlip(true), i, out);
     }
@@ -126,16 +134,26 @@ OrbitBatch StickSlipOrbits(const Params& base, const std::vector<ParameterColumn
     out.cancelled = true;
     return out;
   }
-  const std::size_t blocks = (rows + kBlockRows - 1) / kBlockRows;
-  const int workers =
-      static_cast<int>(std::min<std::size_t>(BoundedThreads(options.threads), blocks));
+  const int workers = static_cast<int>(std::min<std::size_t>(
+      BoundedThreads(options.threads), (rows + kThreadRows - 1) / kThreadRows));
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
-  const PoolRun pool = RunPool(
-      workers, workers, [&](int) { Work(base, columns, options.orbit, next, stop, out); }, stop,
-      [&] { return options.cancelled && options.cancelled(); });
-  out.threads = pool.threads;
-  out.error = pool.error;
+  if (workers == 1) {  // on this thread: no thread to start
+    const std::function<bool()>* hook = options.cancelled ? &options.cancelled : nullptr;
+    try {
+      Work(base, columns, options.orbit, next, stop, hook, out);
+    } catch (const std::exception& e) {  // as the pool reports a task's exception
+      out.error = std::string("task 0: ") + e.what();
+    }
+    out.threads = 1;
+  } else {
+    const PoolRun pool = RunPool(
+        workers, workers,
+        [&](int) { Work(base, columns, options.orbit, next, stop, nullptr, out); }, stop,
+        [&] { return options.cancelled && options.cancelled(); });
+    out.threads = pool.threads;
+    out.error = pool.error;
+  }
   out.cancelled = stop.load();
   return out;
 }

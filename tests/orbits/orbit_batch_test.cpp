@@ -176,6 +176,34 @@ TEST(OrbitBatch, CancelStopsTheWorkersAndMarksTheRowsLeft) {
   for (OrbitStatus s : none.status) EXPECT_EQ(s, OrbitStatus::kCancelled);
 }
 
+// One thread: the rows run on the calling thread, which polls the hook before
+// every row and at every step; here it fires at its 200th call.
+TEST(OrbitBatch, OneThreadRunsOnTheCallerAndPollsTheHookPerRow) {
+  const auto cols = Grid(100, 10);
+  const std::thread::id caller = std::this_thread::get_id();
+  int calls = 0;
+  bool other_thread = false;
+  OrbitBatchOptions o = Options(1);
+  o.cancelled = [&] {
+    other_thread |= std::this_thread::get_id() != caller;
+    return ++calls >= 200;
+  };
+  const OrbitBatch b = StickSlipOrbits(Params(), cols, o);
+  EXPECT_TRUE(b.cancelled);
+  EXPECT_FALSE(other_thread);
+  EXPECT_EQ(calls, 200);  // never called again once it fired
+  std::size_t first_cancelled = b.rows();
+  for (std::size_t i = 0; i < b.rows(); ++i)
+    if (b.status[i] == OrbitStatus::kCancelled) {
+      first_cancelled = std::min(first_cancelled, i);
+    } else {
+      EXPECT_LT(i, first_cancelled);  // rows run in order: none after the first cancelled
+      ExpectRowIsOneFinder(b, i, Row(cols, i), o.orbit);
+    }
+  EXPECT_GT(first_cancelled, 0u);
+  EXPECT_LT(first_cancelled, 200u);  // at least one call per row
+}
+
 // Bad columns are the caller's error: InvalidArgument before any work (the
 // cancel hook is never called), naming the column, row and value. A row status
 // is kept for numerical outcomes only (OrbitStatus).

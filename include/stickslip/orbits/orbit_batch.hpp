@@ -9,8 +9,9 @@
 // Each worker thread prepares one OrbitFinder and hands it each row's model
 // (set_model), so a row equals a fresh finder's StickSlip(true) bit for bit,
 // whatever the thread count. No exception per point: a row that has no orbit
-// keeps its status. Rows are taken in blocks from a shared counter by at most
-// `threads` workers of the bounded pool (parallel/pool.hpp).
+// keeps its status. Rows are taken in blocks of 64 from a shared counter by at
+// most `threads` workers of the bounded pool (parallel/pool.hpp), one per 256
+// rows at most; one worker runs on the calling thread.
 #pragma once
 
 #include <cstddef>
@@ -36,10 +37,12 @@ struct OrbitBatchOptions {
   OrbitOptions orbit;
   /// Worker threads, capped by the hardware threads; 0: all of them.
   int threads = 0;
-  /// Polled on the calling thread (so it needs no locking): once before any
-  /// work, then every 20 ms while the workers run. Once it returns true the
-  /// workers stop within one integration step; the row being integrated and
-  /// every row not reached are kCancelled. Empty: never.
+  /// Polled on the calling thread only (so it needs no locking): once before
+  /// any work; with one worker (threads = 1, or at most 256 rows) the rows run
+  /// on the calling thread, which polls it before every row and at every
+  /// integration step; with more, every 20 ms while the workers run. Once it
+  /// returns true the workers stop within one integration step; the row being
+  /// integrated and every row not reached are kCancelled. Empty: never.
   std::function<bool()> cancelled;
   /// Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
