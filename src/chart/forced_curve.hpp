@@ -10,7 +10,7 @@
 //       at a crossing (a crossing reaching the band's edge; Den Hartog's stop
 //       condition on a floor; past it |force| - mu_s at the stick-in, <= 0),
 //       or v - max x' (slip below; min x' - v above) for an orbit that never
-//       reaches x' = v (grazing-sliding, design.md section 4), on the orbit of
+//       reaches x' = v (grazing-sliding, docs/theory.md "Continuation"), on the orbit of
 //       that slip field continued across x' = v (ForcedRequest::switching
 //       false): smooth through 0, as the belt's grazing gap. (The true flow's
 //       margin past grazing, minus the stick time, grows like a square root:

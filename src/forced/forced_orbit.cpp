@@ -1,7 +1,10 @@
-// Stroboscopic shooting for periodic orbits of the forced oscillator.
+// The forced oscillator's orbits on the one shooting (orbits/shooting.hpp):
+// its stroboscopic map and its exit-phase map are the time and stick-exit
+// sections of ForcedModel (x, x', theta).
 #include <cmath>
+#include <memory>
 
-#include "numerics/tolerances.hpp"
+#include "forced_shooting.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -18,68 +21,87 @@ void Multipliers(const Mat2& M, std::complex<double> out[2]) {
   if (std::abs(out[1]) > std::abs(out[0])) std::swap(out[0], out[1]);
 }
 
-namespace {
+namespace forced_detail {
 
-// The orbit's data from the run over one period of the orbit from its start.
-void Describe(const ForcedRun& run, ForcedOrbit& o) {
-  o.monodromy = run.jacobian;
-  Multipliers(o.monodromy, o.multipliers);
-  o.stable = std::abs(o.multipliers[0]) < 1;
-  o.sticks = run.sticks;
-  o.crossings = run.crossings;
-  o.extrema = run.extrema;
-  o.steps = run.steps;
+// One shooting per thread for the options last used (a forced orbit is
+// shot per scan point and per branch step: the flow and its buffers are
+// kept, the model assigned).
+Shooting& CachedShooting(const ForcedModel& model, const ForcedOrbitOptions& o) {
+  const std::string err = o.flow.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+  if (!(o.tol > 0) || o.max_newton < 1)
+    throw InvalidArgument("orbit options: tol must be > 0 and max_newton >= 1");
+  ShootingOptions so;
+  so.flow.rtol = o.flow.rtol;
+  so.flow.atol = o.flow.atol;
+  so.flow.integrator = o.flow.integrator;
+  so.flow.method = o.flow.method;
+  so.flow.max_steps = o.flow.max_steps;
+  so.flow.max_switches = o.flow.max_events;
+  so.max_newton = o.max_newton;
+  so.tol = o.tol;
+  so.max_steps = o.flow.max_steps;
+  thread_local std::unique_ptr<Shooting> cached;
+  if (cached) {
+    const ShootingOptions& c = cached->options();
+    const FlowOptions& f = c.flow;
+    if (f.rtol == so.flow.rtol && f.atol == so.flow.atol && f.integrator == so.flow.integrator &&
+        f.method == so.flow.method && f.max_steps == so.flow.max_steps &&
+        f.max_switches == so.flow.max_switches && c.max_newton == so.max_newton &&
+        c.tol == so.tol && c.max_steps == so.max_steps) {
+      cached->set_system(model);
+      return *cached;
+    }
+  }
+  cached = std::make_unique<Shooting>(model, so);
+  return *cached;
 }
 
-}  // namespace
+ForcedOrbitStatus FromOrbitStatus(OrbitStatus s) {
+  switch (s) {
+    case OrbitStatus::kOk:
+      return ForcedOrbitStatus::kConverged;
+    case OrbitStatus::kSingular:
+      return ForcedOrbitStatus::kSingular;
+    case OrbitStatus::kNotConverged:
+    case OrbitStatus::kNoReturn:
+      return ForcedOrbitStatus::kNoConvergence;
+    default:
+      return ForcedOrbitStatus::kFlowFailed;
+  }
+}
+
+Extrema ExtremaOf(const PeriodicOrbit& o) {
+  return o.lo.size() >= 2 ? Extrema{o.lo[0], o.hi[0], o.lo[1], o.hi[1]} : Extrema::Empty();
+}
+
+}  // namespace forced_detail
 
 ForcedOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0, int m,
                               const ForcedOrbitOptions& options) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
-  if (!(options.tol > 0) || options.max_newton < 1)
-    throw InvalidArgument("orbit options: tol must be > 0 and max_newton >= 1");
-  const ForcedFlow flow(model, options.flow);
+  Shooting& shooting = forced_detail::CachedShooting(model, options);
+  PoincareSection section;
+  section.kind = SectionKind::kTime;
+  section.time = m * model.period();
+  const PeriodicOrbit p = shooting.Find({0, Eigen::Vector3d(x0, xdot0, 0), ModeSet()}, section);
   ForcedOrbit o;
   o.m = m;
-  o.period = m * model.period();
-  ForcedRequest rq;
-  rq.t_end = o.period;
-  rq.variational = true;
-  ForcedPoint z = ForcedStart(model, 0, x0, xdot0);
-  for (o.iterations = 1; o.iterations <= options.max_newton; ++o.iterations) {
-    const ForcedRun run = flow.Run(z, rq);
-    if (run.status != ForcedStatus::kReached) {
-      o.status = ForcedOrbitStatus::kFlowFailed;
-      o.message = run.message;
-      return o;
-    }
-    const Vec2 r(run.end.x - z.x, run.end.xdot - z.xdot);
-    const Mat2 A = run.jacobian - Mat2::Identity();
-    if (std::abs(A.determinant()) <= Tolerances::kSingularShooting * (1 + A.cwiseAbs().maxCoeff())) {
-      o.status = ForcedOrbitStatus::kSingular;
-      o.message = "DP^m - I is singular (a multiplier at 1)";
-      return o;
-    }
-    Vec2 dz = -A.partialPivLu().solve(r);
-    const double size = 1 + std::max(std::abs(z.x), std::abs(z.xdot));
-    const double norm = dz.cwiseAbs().maxCoeff();
-    const double cap = Tolerances::kForcedNewtonCap * size;
-    if (norm > cap) dz *= cap / norm;  // a long step is cut (damped Newton)
-    o.update = dz.cwiseAbs().maxCoeff();
-    if (o.update <= options.tol * size) {
-      o.start = z;
-      Describe(run, o);
-      o.status = ForcedOrbitStatus::kConverged;
-      return o;
-    }
-    // A stroboscopic point in stick stays on x' = v: its x' row of DP^m is 0.
-    if (run.end.mode == Mode::kStick)
-      z = ForcedStart(model, 0, z.x + dz[0], model.v());
-    else
-      z = ForcedStart(model, 0, z.x + dz[0], z.xdot + dz[1]);
-  }
-  o.status = ForcedOrbitStatus::kNoConvergence;
-  o.message = "no convergence in " + std::to_string(options.max_newton) + " Newton iterations";
+  o.period = section.time;
+  o.status = forced_detail::FromOrbitStatus(p.status);
+  o.message = p.message;
+  o.iterations = p.iterations;
+  o.update = p.update;
+  if (!p.ok()) return o;
+  o.start = {p.start.t, p.start.z[0], p.start.z[1], p.start.mode[0]};
+  o.monodromy = p.monodromy;
+  o.multipliers[0] = p.multipliers[0];
+  o.multipliers[1] = p.multipliers[1];
+  o.stable = p.stable;
+  o.sticks = p.sticks;
+  o.crossings = p.crossings;
+  o.extrema = forced_detail::ExtremaOf(p);
+  o.steps = p.steps;
   return o;
 }
 

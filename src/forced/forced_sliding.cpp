@@ -90,7 +90,7 @@ double ShortestSlipBetweenSticks(const ForcedParams& base, ForcedAxis axis,
 // How close the stick force of a stick phase comes to the band's edge at an
 // interior extremum: min (mu_s - |f(t)|) over the roots of
 // f' = v + A Omega sin(Omega t) = 0 inside the stick phases of row r's orbit,
-// f = x_a + v (t - t_a) + 2 beta v - A cos(Omega t) (design.md section 5; inf:
+// f = x_a + v (t - t_a) + 2 beta v - A cos(Omega t) (the stick force of docs/theory.md, "One core"; inf:
 // none). Zero where a stick phase splits (adding-sliding, di Bernardo,
 // Kowalczyk & Nordmark 2002, section 3, case 4).
 double StickTouchToEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,

@@ -1,7 +1,7 @@
 // The belt's and the forced oscillator's Taylor recurrences (belt_taylor.hpp):
 // seed eq. (3.5) on one slip branch, with the variational equations and the
 // parameter column, law by law (MuSeries: the series of mu(s)); the forcing
-// A cos(theta) (design.md section 5: c_{k+1} = -Omega s_k / (k+1),
+// A cos(theta) (Jorba & Zou 2005, section 2: c_{k+1} = -Omega s_k / (k+1),
 // s_{k+1} = Omega c_k / (k+1)); and the stick mode's rows.
 #include "model/belt_taylor.hpp"
 

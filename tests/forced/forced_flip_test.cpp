@@ -154,8 +154,9 @@ TEST(ForcedFlip, TwoCrossingsInOneLongStep) {
   for (const ForcedBranchRow& r : b.rows) (r.label == ForcedLabel::kPD ? pd : steps)++;
   std::printf("[ measured ] %d rows, %d PD points\n", steps, pd);
   EXPECT_EQ(pd, 2);
-  for (const ForcedBranchRow& s : b.special)
+  for (const ForcedBranchRow& s : b.special) {
     if (s.label == ForcedLabel::kPD) EXPECT_NEAR(s.multipliers[0].real(), -1, 1e-9);
+  }
 }
 
 }  // namespace

@@ -131,9 +131,32 @@ TEST(ForcedScan, RejectsBadOptions) {
 TEST(ForcedScan, CancelKeepsWhatWasFound) {
   ForcedScanOptions o;
   int polls = 0;
-  o.cancelled = [&] { return ++polls > 3; };
-  const ForcedOrbits r = FindForcedOrbits(ForcedModel(Coulomb(0.3, 0.3, 0, 0, 1, 1.5)), o);
-  EXPECT_EQ(r.status, ForcedScanStatus::kCancelled);
+  const ForcedModel model(Coulomb(0.3, 0.3, 0, 0, 1, 1.5));
+  const ForcedOrbits all = FindForcedOrbits(model, o);
+  ASSERT_TRUE(all.ok());
+  ASSERT_FALSE(all.orbits.empty());
+  // Cancelled at the poll after the first orbit was found: that orbit is kept,
+  // with its data, and the scan stopped short.
+  int found_at = -1;
+  for (int k = 1; k < 10000 && found_at < 0; k *= 2) {
+    o.cancelled = [&] { return ++polls > k; };
+    polls = 0;
+    const ForcedOrbits r = FindForcedOrbits(model, o);
+    EXPECT_EQ(r.status, ForcedScanStatus::kCancelled) << "after " << k << " polls";
+    if (r.orbits.empty()) continue;
+    found_at = k;
+    EXPECT_LT(r.shots, all.shots);
+    for (const ForcedScanOrbit& c : r.orbits) {
+      bool known = false;
+      for (const ForcedScanOrbit& a : all.orbits)
+        known = known || (a.orbit.m == c.orbit.m &&
+                          std::abs(a.orbit.extrema.x_max - c.orbit.extrema.x_max) < 1e-10);
+      EXPECT_TRUE(known) << "m = " << c.orbit.m << ", x_max " << c.orbit.extrema.x_max;
+      EXPECT_EQ(c.orbit.status, ForcedOrbitStatus::kConverged);
+      EXPECT_EQ(static_cast<int>(c.points.size()), c.orbit.m);
+    }
+  }
+  EXPECT_GT(found_at, 0) << "no cancelled scan kept an orbit";
 }
 
 }  // namespace

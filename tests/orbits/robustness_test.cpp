@@ -658,7 +658,17 @@ TEST(Robustness, ContinuePureSlipCorrectorStaysInValidRange) {
   o.cancelled = [&] { return Seconds(start) > kCallCap; };
   ss::ContinuationResult r;
   EXPECT_NO_THROW(r = ss::Continue(p, o));
-  for (const auto& pt : r.points) EXPECT_TRUE(NonFinite(pt).empty()) << NonFinite(pt);
+  // A branch, not an empty result: points across [from, to], every one inside.
+  ASSERT_FALSE(r.points.empty()) << ss::Name(r.status);
+  double lo = o.to, hi = o.from;
+  for (const auto& pt : r.points) {
+    EXPECT_TRUE(NonFinite(pt).empty()) << NonFinite(pt);
+    EXPECT_GE(pt.p, o.from - 1e-12);
+    EXPECT_LE(pt.p, o.to + 1e-12);
+    lo = std::min(lo, pt.p), hi = std::max(hi, pt.p);
+  }
+  EXPECT_LE(lo, o.from + 1e-9);
+  EXPECT_GE(hi, o.to - 1e-9);
 }
 
 // A subcritical Hopf point inside the range: the pure-slip branch starts

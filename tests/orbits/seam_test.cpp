@@ -16,6 +16,7 @@
 #include "stickslip/errors.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/shooting.hpp"
 #include "stickslip/system/taylor_field.hpp"
 
 namespace stickslip {
@@ -221,6 +222,25 @@ TEST(Seam, StickSlipOrbitOfASecondSystemMatchesClosedForm) {
   EXPECT_NEAR(o.eigenvalues[0].real(), 1.0, 1e-10);
   EXPECT_NEAR(std::abs(o.eigenvalues[1]), 0.0, 1e-10);
   EXPECT_NEAR(o.multiplier, 0.0, 1e-10);
+}
+
+// The one shooting (shooting.hpp) on the stick exit, from a start off the
+// exit point: the same orbit, its Poincare map constant (multiplier 0).
+TEST(Seam, TheOneShootingFindsTheSecondSystemsOrbit) {
+  const Block b;
+  const ClosedOrbit c = StickSlipOrbit(b);
+  ShootingOptions so;
+  so.flow = Tight().flow;
+  Shooting shooting(SpringBlock(b), so);
+  const FlowPoint start{0, Eigen::Vector2d(0.1, b.v), ModeSet(Mode::kSlipBelow)};
+  const PeriodicOrbit o = shooting.Find(start, PoincareSection::StickExit(0));
+  ASSERT_TRUE(o.ok()) << o.message;
+  EXPECT_NEAR(o.start.z[0], (b.mu_s - 2 * b.zeta * b.w * b.v) / (b.w * b.w), 1e-15);
+  EXPECT_NEAR(o.period, double(c.t_slip + c.t_stick), 1e-10 * o.period);
+  EXPECT_NEAR(o.hi[0], double(c.x_max), 1e-10);
+  EXPECT_NEAR(o.lo[0], double(c.x_min), 1e-10);
+  ASSERT_EQ(o.multipliers.size(), 1u);
+  EXPECT_NEAR(std::abs(o.multipliers[0]), 0.0, 1e-10);
 }
 
 TEST(Seam, TheCvodeStepperRunsTheSecondSystemToo) {

@@ -2,7 +2,7 @@
 // (x, x'), each followed by the exact flow until it settles on an attractor
 // (steady sliding, the stick-slip orbit, a stable pure-slip orbit) or a time
 // cap passes. In the plane an unstable pure-slip orbit bounds the basin of
-// steady sliding (design notes section 4, "Basins"); the smallest disturbance
+// steady sliding (docs/theory.md, "Basins"); the smallest disturbance
 // that tips steady sliding into oscillation is its distance from (xbar, 0).
 #pragma once
 

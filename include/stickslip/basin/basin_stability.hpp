@@ -1,7 +1,7 @@
 // Exact basin stability: the fraction of a box of starts in the plane (x, x')
 // that reaches each attractor. bSTAB (Stender & Hoffmann 2021) and pyBasin
 // estimate it by Monte Carlo; here the basins are bounded by the unstable
-// pure-slip orbits (design notes section 4, "Basins"), closed curves nested
+// pure-slip orbits (docs/theory.md, "Basins"), closed curves nested
 // about (xbar, 0), so each fraction is an area: the orbits, densely sampled
 // from the flow's dense output, clipped to the box (clipped_area.hpp).
 #pragma once

@@ -92,7 +92,7 @@ struct ForcedRequest {
   int stop_at_exit = 0;  ///< > 0: stop at that stick exit (end.mode is the slip mode)
   /// false: a slip start's field goes on across x' = v (no events, no stick):
   /// the smooth extension a grazing orbit is continued on (as the belt's
-  /// grazing gap, design.md section 4). A slip start only.
+  /// grazing gap, docs/theory.md "Continuation"). A slip start only.
   bool switching = true;
   std::vector<ForcedEvent>* events = nullptr;  ///< appended to when not null
   /// Step ends (and events) for drawing, appended to when not null.

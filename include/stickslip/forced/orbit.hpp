@@ -64,8 +64,8 @@ void Multipliers(const Mat2& M, std::complex<double> out[2]);
 
 namespace stickslip {
 
-/// A stick-slip orbit as a fixed point of the exit-phase map (design.md
-/// section 5): from a stick exit at t_e, on the band's edge
+/// A stick-slip orbit as a fixed point of the exit-phase map (docs/theory.md,
+/// "One shooting"): from a stick exit at t_e, on the band's edge
 /// x_e = +-mu_s - 2 beta v + A cos(Omega t_e), x' = v, to the `sticks`-th
 /// next exit t'; the orbit closes when t' = t_e + m 2 pi / Omega.
 struct ForcedExitOrbit {

@@ -2,7 +2,7 @@
 // (issue 20, item 2), as FindPeriodicOrbits (orbits/orbit_scan.hpp) does for
 // the belt: for each period multiple m = 1..max_m, Newton on the stroboscopic
 // map P^m from a grid of starts at phase 0, and on the exit-phase map (the
-// circle map t_e -> t' of design.md section 5) from every bracket of
+// circle map t_e -> t' of docs/theory.md, "One shooting") from every bracket of
 // t'_s(t_e) - t_e - m T found by sampling the exit phase, s = 1..max_sticks
 // exits. Found orbits are reduced to their least period and deduplicated by
 // their stroboscopic points (an orbit of multiple m has m of them).

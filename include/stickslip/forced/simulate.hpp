@@ -1,7 +1,7 @@
 // One trajectory of the forced friction oscillator, sampled for drawing
 // (issue 20, item 1): a row every dt and at every switch, and a Poincare
 // section, stroboscopic (the forcing phase Omega t = 0 mod 2 pi) or at the
-// stick exits (the exit-phase map of design.md section 5).
+// stick exits (the exit-phase map of docs/theory.md, "One shooting").
 #pragma once
 
 #include <functional>

@@ -1,4 +1,4 @@
-// The harmonically forced friction oscillator (issue 20, design.md section 5):
+// The harmonically forced friction oscillator (docs/theory.md, "One core"):
 //   x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t),   F(s) = -sgn(s) mu(|s|),
 // the belt model (seed eq. 3.5) plus a harmonic force. v = 0 is Den Hartog's
 // (1931) block on a fixed floor. Stick (x' = v) holds while

@@ -16,6 +16,7 @@
 
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/orbits/orbit_status.hpp"
 
 namespace stickslip {
 
@@ -67,33 +68,6 @@ struct OrbitOptions {
   double newton_tol = 1e-11;
   double EffectiveNewtonTol() const { return std::max(newton_tol, 10 * flow.rtol); }
   std::string ValidationError() const;
-};
-
-/// How an orbit search ended; every value but kOk is a numerical outcome.
-enum class OrbitStatus {
-  kOk,
-  kNoReturn,          // no return to Omega / the section within max_return_time
-  kIntegratorFailed,  // CVODE failed; message says where
-  kSticks,            // shooting: the trajectory sticks, so no pure-slip orbit here
-  kNotConverged,      // Newton did not converge in max_newton steps
-  kCollapsed,         // Newton ran into the equilibrium (amplitude -> 0)
-  kMissed,            // StickSlip(first_return_only): the first return misses Omega
-  kCancelled,         // the flow's cancel hook fired
-};
-/// "ok", "no-return", ... for messages.
-const char* OrbitStatusName(OrbitStatus s);
-template <>
-struct EnumNames<OrbitStatus> {
-  static constexpr NamedValue<OrbitStatus> kTable[] = {
-      {OrbitStatus::kOk, "ok"},
-      {OrbitStatus::kNoReturn, "no-return"},
-      {OrbitStatus::kIntegratorFailed, "integrator-failed"},
-      {OrbitStatus::kSticks, "sticks"},
-      {OrbitStatus::kNotConverged, "not-converged"},
-      {OrbitStatus::kCollapsed, "collapsed"},
-      {OrbitStatus::kMissed, "missed"},
-      {OrbitStatus::kCancelled, "cancelled"},
-  };
 };
 
 /// The outcome of one orbit search: status, message, the orbit, Newton steps.

@@ -1,0 +1,38 @@
+// How a search for a periodic orbit ended (orbit.hpp, shooting.hpp): one
+// status for every system and section.
+#pragma once
+
+#include "stickslip/names.hpp"
+
+namespace stickslip {
+
+/// How an orbit search ended; every value but kOk is a numerical outcome.
+enum class OrbitStatus {
+  kOk,
+  kNoReturn,          // no return to Omega / the section within max_return_time
+  kIntegratorFailed,  // CVODE failed; message says where
+  kSticks,            // shooting: the trajectory sticks, so no pure-slip orbit here
+  kNotConverged,      // Newton did not converge in max_newton steps
+  kCollapsed,         // Newton ran into the equilibrium (amplitude -> 0)
+  kMissed,            // StickSlip(first_return_only): the first return misses Omega
+  kCancelled,         // the flow's cancel hook fired
+  kSingular,          // shooting: DP - I is singular (a multiplier at 1)
+};
+/// "ok", "no-return", ... for messages.
+const char* OrbitStatusName(OrbitStatus s);
+template <>
+struct EnumNames<OrbitStatus> {
+  static constexpr NamedValue<OrbitStatus> kTable[] = {
+      {OrbitStatus::kOk, "ok"},
+      {OrbitStatus::kNoReturn, "no-return"},
+      {OrbitStatus::kIntegratorFailed, "integrator-failed"},
+      {OrbitStatus::kSticks, "sticks"},
+      {OrbitStatus::kNotConverged, "not-converged"},
+      {OrbitStatus::kCollapsed, "collapsed"},
+      {OrbitStatus::kMissed, "missed"},
+      {OrbitStatus::kCancelled, "cancelled"},
+      {OrbitStatus::kSingular, "singular"},
+  };
+};
+
+}  // namespace stickslip

@@ -1,0 +1,135 @@
+// One shooting for every system (docs/theory.md, "One shooting"): a periodic
+// orbit is a fixed point of a Poincare map P on a section, found by Newton on
+// P(z) - z = 0 with DP from the variational equations and the saltations of
+// the one flow (flow.hpp). Three sections cover the friction systems:
+//  - a time: the stroboscopic map of a forced system (m forcing periods);
+//  - a stick exit: stick phases collapse the state (the seed's case 1, where
+//    the belt's map is constant; the forced oscillator's exit-phase map);
+//  - a hyperplane crossed in one direction (the belt's x' = 0 falling).
+// On an event section DP = (I - f g^T / (g . f)) Phi at the arrival (Leine
+// & Nijmeijer 2004, section 7.3; Parker & Chua 1989, ch. 3), where g is the
+// event's gradient; a clock's column of Phi follows from the flow identity
+// Phi f(z0) = f(z(T)). The Floquet multipliers are DP's eigenvalues, less
+// the 0 of the flow direction on an event section.
+#pragma once
+
+#include <complex>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/names.hpp"
+#include "stickslip/orbits/orbit_status.hpp"
+
+namespace stickslip {
+
+/// Where the Poincare map cuts the orbit.
+enum class SectionKind {
+  kTime,       ///< after a fixed time (a forced system's stroboscopic map)
+  kStickExit,  ///< at a stick exit (the start leaves a contact's stick phase)
+  kSurface,    ///< at a crossing of a hyperplane in its direction
+};
+template <>
+struct EnumNames<SectionKind> {
+  static constexpr NamedValue<SectionKind> kTable[] = {
+      {SectionKind::kTime, "time"},
+      {SectionKind::kStickExit, "stick-exit"},
+      {SectionKind::kSurface, "surface"},
+  };
+};
+
+/// A Poincare section and how many returns close the orbit.
+struct PoincareSection {
+  SectionKind kind = SectionKind::kTime;
+  double time = 0;  ///< kTime: the map's time (> 0)
+  /// kStickExit: the contact whose exit cuts the orbit (the run ends at the
+  /// returns-th stick exit, of any contact). The start's mode is the slip
+  /// mode it leaves into.
+  int contact = 0;
+  Section surface;  ///< kSurface: a plain hyperplane (no derivative section)
+  int returns = 1;  ///< event sections: the orbit closes at this arrival
+  /// Event sections of a system with a clock: its turns per period of the
+  /// orbit (the clock's residual is theta(T) - theta(0) - 2 pi turns).
+  int turns = 0;
+
+  /// The stroboscopic section of m periods of the system's clock at z.
+  static PoincareSection Stroboscopic(const System& s, const Eigen::VectorXd& z, int m);
+  /// The stick exit of `contact`, closing after `returns` exits and `turns`
+  /// clock turns.
+  static PoincareSection StickExit(int contact, int returns = 1, int turns = 0);
+};
+
+/// Newton settings, validated once.
+struct ShootingOptions {
+  FlowOptions flow;
+  int max_newton = 40;
+  /// Converged when the Newton update is below tol (1 + |z|) (max norm).
+  double tol = 1e-12;
+  /// Event sections: no arrival within this time is kNoReturn.
+  double max_return_time = 2e3;
+  bool extrema = true;       ///< PeriodicOrbit::lo, hi
+  long max_steps = 1000000;  ///< flow steps per evaluation of the map
+  std::string ValidationError() const;
+};
+
+/// A periodic orbit through a point of its section, with its Floquet data.
+struct PeriodicOrbit {
+  OrbitStatus status = OrbitStatus::kNotConverged;
+  std::string message;
+  FlowPoint start;  ///< on the section, with its mode
+  double period = 0;
+  /// DP at the fixed point: kTime on the tangent block, else n x n.
+  Eigen::MatrixXd monodromy;
+  /// The nontrivial multipliers by modulus, the largest first: kTime's
+  /// tangent_dimension(), an event section's dimension() - 1.
+  std::vector<std::complex<double>> multipliers;
+  bool stable = false;                       ///< every |multiplier| < 1
+  int sticks = 0, exits = 0, crossings = 0;  ///< per period
+  std::vector<ModeSet> modes;                ///< the mode sequence from start
+  Eigen::VectorXd lo, hi;                    ///< extremes of the tangent components (extrema)
+  int iterations = 0;
+  double update = 0;  ///< the last Newton update (max norm)
+  long steps = 0;     ///< flow steps of the last evaluation
+  bool ok() const { return status == OrbitStatus::kOk; }
+};
+
+/// Finds periodic orbits of one system; reuses its flow between calls.
+class Shooting {
+ public:
+  /// Throws InvalidArgument if the options or the system are invalid.
+  Shooting(const System& system, const ShootingOptions& options);
+  void set_system(const System& system) { flow_.set_system(system); }
+  const System& system() const { return flow_.system(); }
+  const ShootingOptions& options() const { return options_; }
+  /// Event sections: give up after this time (throws InvalidArgument unless
+  /// finite and > 0).
+  void set_max_return_time(double t);
+
+  /// Newton from `guess` (kTime: its mode is Filippov's at the state; event
+  /// sections: its mode is trusted). Throws InvalidArgument for a section
+  /// the system cannot have (a contact out of range, an event section on a
+  /// system with several clocks, returns < 1).
+  PeriodicOrbit Find(const FlowPoint& guess, const PoincareSection& section);
+
+  Flow& flow() { return flow_; }
+
+ private:
+  void Check(const PoincareSection& s) const;
+  void Prepare(const FlowPoint& z, const PoincareSection& s);
+  bool Evaluate(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o);
+  void MapJacobian(const FlowPoint& z, const PoincareSection& s);
+  void EventGradient(const PoincareSection& s);
+  void OntoSection(const PoincareSection& s, FlowPoint* z) const;
+  void Describe(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o) const;
+
+  ShootingOptions options_;
+  Flow flow_;
+  FlowRequest request_;
+  FlowRun run_;
+  Eigen::MatrixXd dp_, full_;  // DP; Phi with the clock's column
+  Eigen::VectorXd r_;          // P(z) - z on the unknowns
+  Eigen::VectorXd f0_, f1_, grad_, grad2_;
+};
+
+}  // namespace stickslip

@@ -1,0 +1,178 @@
+// One evaluation of a Poincare map on the one flow, its Jacobian DP and the
+// orbit's Floquet data (shooting.hpp; docs/theory.md, "One shooting").
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "stickslip/orbits/shooting.hpp"
+
+namespace stickslip {
+
+namespace {
+// Puts z on the contact's surface h = 0: exactly where one component carries
+// the velocity, else by the least-norm step along its weights.
+void OntoContact(const ContactVelocity& c, Eigen::VectorXd& z) {
+  if (c.size == 1 && (c.terms[0].weight == 1 || c.terms[0].weight == -1)) {
+    z[c.terms[0].index] = c.terms[0].weight * c.speed;
+    return;
+  }
+  double norm2 = 0;
+  for (int t = 0; t < c.size; ++t) norm2 += c.terms[t].weight * c.terms[t].weight;
+  const double h = c.At(z.data());
+  for (int t = 0; t < c.size; ++t) z[c.terms[t].index] -= h * c.terms[t].weight / norm2;
+}
+
+// The dense gradient of a linear functional.
+void Gradient(const ContactVelocity& c, Eigen::VectorXd& g) {
+  g.setZero();
+  for (int t = 0; t < c.size; ++t) g[c.terms[t].index] += c.terms[t].weight;
+}
+
+// The eigenvalues of M by modulus, the largest first (2 x 2 in closed form:
+// lambda^2 - tr lambda + det = 0).
+std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& M) {
+  std::vector<std::complex<double>> e;
+  if (M.rows() == 2) {
+    const double tr = M.trace(), det = M.determinant();
+    const std::complex<double> disc = std::sqrt(std::complex<double>(tr * tr / 4 - det));
+    e = {tr / 2 + disc, tr / 2 - disc};
+  } else if (M.rows() == 1) {
+    e = {M(0, 0)};
+  } else if (M.rows() > 2) {
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(M, false);
+    e.assign(es.eigenvalues().data(), es.eigenvalues().data() + M.rows());
+  }
+  std::stable_sort(e.begin(), e.end(),
+                   [](const std::complex<double>& a, const std::complex<double>& b) {
+                     return std::abs(a) > std::abs(b);
+                   });
+  return e;
+}
+}  // namespace
+
+void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p) {
+  const System& s = system();
+  FlowRequest& rq = request_;
+  rq.t_max = z.t + (p.kind == SectionKind::kTime ? p.time : options_.max_return_time);
+  rq.variational = true;
+  rq.stop_at_exit = p.kind == SectionKind::kStickExit ? p.returns : 0;
+  rq.sections.clear();
+  if (p.kind == SectionKind::kSurface) rq.sections.push_back(p.surface);
+  rq.extrema.clear();
+  if (options_.extrema)
+    for (int i = 0; i < s.tangent_dimension(); ++i) rq.extrema.push_back(i);
+  rq.extrema_in_steps = options_.flow.integrator == Integrator::kTaylor;
+  rq.max_steps = options_.max_steps;
+}
+
+bool Shooting::Evaluate(const FlowPoint& z, const PoincareSection& p, PeriodicOrbit* o) {
+  flow_.Run(z, request_, &run_);
+  const FlowStatus want = p.kind == SectionKind::kTime        ? FlowStatus::kTimeLimit
+                          : p.kind == SectionKind::kStickExit ? FlowStatus::kStickExit
+                                                              : FlowStatus::kSection;
+  const FlowStatus got = run_.status;
+  if (got != want) {
+    o->status = got == FlowStatus::kCancelled   ? OrbitStatus::kCancelled
+                : got == FlowStatus::kTimeLimit ? OrbitStatus::kNoReturn
+                                                : OrbitStatus::kIntegratorFailed;
+    o->message = got == FlowStatus::kTimeLimit
+                     ? std::string("no ") + Name(p.kind) +
+                           " within t = " + Num(options_.max_return_time) + " of t = " + Num(z.t)
+                     : (run_.message.empty() ? std::string(Name(got)) : run_.message) +
+                           " (shooting from t = " + Num(z.t) + ")";
+    return false;
+  }
+  if (p.kind != SectionKind::kTime && run_.end.mode != z.mode) {
+    o->status = OrbitStatus::kNotConverged;
+    o->message = "the return at t = " + Num(run_.end.t) + " is in mode " +
+                 ModeSetName(run_.end.mode, system().contacts()) + ", the start in " +
+                 ModeSetName(z.mode, system().contacts());
+    return false;
+  }
+  MapJacobian(z, p);
+  return true;
+}
+
+void Shooting::EventGradient(const PoincareSection& p) {
+  const System& s = system();
+  const int n = s.dimension();
+  grad_.resize(n);
+  if (p.kind == SectionKind::kSurface) {
+    Gradient(p.surface.g, grad_);
+    return;
+  }
+  // The exit event lambda_c - sign mu_s N_c = 0 of the stick mode it left.
+  const int c = p.contact;
+  ModeSet stick = run_.end.mode;
+  stick.set(c, Mode::kStick);
+  const double sign = run_.end.mode[c] == Mode::kSlipBelow ? 1 : -1;
+  grad2_.resize(n);
+  s.StickForceGradient(stick, c, run_.end.z, grad_);
+  s.StaticLimitGradient(c, run_.end.z, grad2_);
+  grad_ -= sign * grad2_;
+}
+
+void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
+  const System& s = system();
+  const int n = s.dimension(), nt = s.tangent_dimension();
+  if (p.kind == SectionKind::kTime) {
+    dp_ = run_.jacobian;
+    r_ = run_.end.z.head(nt) - z.z.head(nt);
+    return;
+  }
+  f0_.resize(n);
+  f1_.resize(n);
+  s.Field(z.mode, z.z, f0_);
+  s.Field(run_.end.mode, run_.end.z, f1_);
+  full_.setIdentity(n, n);
+  full_.topLeftCorner(nt, nt) = run_.jacobian;
+  if (n > nt)  // the clock's column: Phi f(z0) = f(z(T)), theta' = omega
+    full_.col(nt).head(nt) = (f1_.head(nt) - run_.jacobian * f0_.head(nt)) / f0_[nt];
+  EventGradient(p);
+  // DP = (I - f g^T / (g . f)) Phi at the arrival.
+  dp_ = full_ - f1_ * (grad_.transpose() * full_) / grad_.dot(f1_);
+  r_ = run_.end.z - z.z;
+  if (n > nt) r_[nt] -= 2 * M_PI * p.turns;
+}
+
+void Shooting::OntoSection(const PoincareSection& p, FlowPoint* z) const {
+  const System& s = system();
+  if (p.kind == SectionKind::kTime) {
+    // A return in stick stays on its surface: DP's rows there are 0.
+    for (int c = 0; c < s.contacts(); ++c)
+      if (run_.end.mode.sticks(c)) OntoContact(s.Contact(c), z->z);
+    z->mode = ModeOf(s, z->z);
+    return;
+  }
+  if (p.kind == SectionKind::kSurface) {
+    OntoContact(p.surface.g, z->z);
+    return;
+  }
+  const int c = p.contact;
+  OntoContact(s.Contact(c), z->z);
+  ModeSet stick = z->mode;
+  stick.set(c, Mode::kStick);
+  const double sign = z->mode[c] == Mode::kSlipBelow ? 1 : -1;
+  s.ProjectOnExit(stick, c, sign * s.StaticLimit(c, z->z), z->z);
+}
+
+void Shooting::Describe(const FlowPoint& z, const PoincareSection& p, PeriodicOrbit* o) const {
+  o->start = z;
+  o->period = run_.end.t - z.t;
+  o->monodromy = dp_;
+  o->multipliers = Eigenvalues(dp_);
+  // An event section's DP maps the flow direction to 0: not a multiplier.
+  if (p.kind != SectionKind::kTime && !o->multipliers.empty()) o->multipliers.pop_back();
+  o->stable = true;
+  for (const auto& mu : o->multipliers) o->stable = o->stable && std::abs(mu) < 1;
+  o->sticks = run_.sticks;
+  o->exits = run_.exits;
+  o->crossings = run_.crossings;
+  o->modes = run_.modes;
+  o->lo = run_.lo;
+  o->hi = run_.hi;
+  o->steps = run_.steps;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,142 @@
+// Newton on the Poincare map of any section (shooting.hpp); the map itself,
+// its Jacobian and the orbit's Floquet data are in poincare_map.cpp.
+#include "stickslip/orbits/shooting.hpp"
+
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+std::string ShootingOptions::ValidationError() const {
+  std::string err = flow.ValidationError();
+  if (!err.empty()) return err;
+  if (max_newton < 1) return "max_newton = " + std::to_string(max_newton) + " must be >= 1";
+  if (!(tol > 0 && tol < 1)) return "tol = " + Num(tol) + " must be in (0, 1)";
+  if (!(max_return_time > 0) || !std::isfinite(max_return_time))
+    return "max_return_time = " + Num(max_return_time) + " must be a finite number > 0";
+  if (max_steps < 1) return "max_steps = " + std::to_string(max_steps) + " must be >= 1";
+  return "";
+}
+
+PoincareSection PoincareSection::Stroboscopic(const System& s, const Eigen::VectorXd& z, int m) {
+  if (s.clocks() != 1)
+    throw InvalidArgument("a stroboscopic section needs a system with one clock, not " +
+                          std::to_string(s.clocks()));
+  if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
+  Eigen::VectorXd f(s.dimension());
+  s.Field(ModeOf(s, z), z, f);
+  PoincareSection p;
+  p.kind = SectionKind::kTime;
+  p.time = m * (2 * M_PI / f[s.dimension() - 1]);  // m periods of theta' = Omega
+  p.turns = m;
+  return p;
+}
+
+PoincareSection PoincareSection::StickExit(int contact, int returns, int turns) {
+  PoincareSection p;
+  p.kind = SectionKind::kStickExit;
+  p.contact = contact;
+  p.returns = returns;
+  p.turns = turns;
+  return p;
+}
+
+namespace {
+const ShootingOptions& Checked(const ShootingOptions& o) {
+  const std::string err = o.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+  return o;
+}
+}  // namespace
+
+Shooting::Shooting(const System& system, const ShootingOptions& options)
+    : options_(Checked(options)), flow_(system, options.flow) {}
+
+void Shooting::set_max_return_time(double t) {
+  if (!(t > 0) || !std::isfinite(t))
+    throw InvalidArgument("max_return_time = " + Num(t) + " must be a finite number > 0");
+  options_.max_return_time = t;
+}
+
+void Shooting::Check(const PoincareSection& p) const {
+  const System& s = system();
+  if (p.kind == SectionKind::kTime) {
+    if (!(p.time > 0) || !std::isfinite(p.time))
+      throw InvalidArgument("section time = " + Num(p.time) + " must be a finite number > 0");
+    return;
+  }
+  if (p.returns < 1)
+    throw InvalidArgument("returns = " + std::to_string(p.returns) + " must be >= 1");
+  if (s.clocks() > 1)
+    throw InvalidArgument("an event section needs a system with at most one clock, not " +
+                          std::to_string(s.clocks()));
+  if (s.clocks() == 1 && p.turns < 1)
+    throw InvalidArgument("turns = " + std::to_string(p.turns) +
+                          ": the clock turns at least once per period");
+  if (p.kind == SectionKind::kStickExit && (p.contact < 0 || p.contact >= s.contacts()))
+    throw InvalidArgument("contact = " + std::to_string(p.contact) + " is not one of the " +
+                          std::to_string(s.contacts()) + " contacts");
+  if (p.kind == SectionKind::kSurface) {
+    if (p.surface.derivative || p.surface.g.size < 1 || p.returns != 1)
+      throw InvalidArgument("a surface section is a plain hyperplane crossed once per period");
+    for (int t = 0; t < p.surface.g.size; ++t)
+      if (p.surface.g.terms[t].index < 0 || p.surface.g.terms[t].index >= s.tangent_dimension())
+        throw InvalidArgument("a surface section reads state " +
+                              std::to_string(p.surface.g.terms[t].index) + ", not a tangent one");
+  }
+}
+
+namespace {
+// The largest |entry| of v.
+double MaxAbs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+}  // namespace
+
+PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& section) {
+  Check(section);
+  const System& s = system();
+  if (guess.z.size() != s.dimension())
+    throw InvalidArgument("the guess has " + std::to_string(guess.z.size()) +
+                          " components, the system " + std::to_string(s.dimension()));
+  const bool timed = section.kind == SectionKind::kTime;
+  const int nu = timed ? s.tangent_dimension() : s.dimension();  // unknowns
+  const int nt = s.tangent_dimension();
+  PeriodicOrbit o;
+  FlowPoint z = guess;
+  if (timed) z.mode = ModeOf(s, z.z);
+  Prepare(z, section);
+  for (o.iterations = 1; o.iterations <= options_.max_newton; ++o.iterations) {
+    if (!Evaluate(z, section, &o)) return o;
+    dp_.diagonal().array() -= 1.0;  // DP - I
+    const Eigen::MatrixXd& A = dp_;
+    if (std::abs(A.determinant()) <=
+        Tolerances::kSingularShooting * (1 + A.cwiseAbs().maxCoeff())) {
+      o.status = OrbitStatus::kSingular;
+      o.message = "DP - I is singular (a multiplier at 1) at t = " + Num(z.t);
+      return o;
+    }
+    Eigen::VectorXd dz = -A.partialPivLu().solve(r_);
+    const double size = 1 + MaxAbs(z.z.head(nu));
+    // A long step is cut (damped Newton): the state's by a share of its size,
+    // a clock's to a quarter turn.
+    const double norm = MaxAbs(dz.head(nt)), cap = Tolerances::kForcedNewtonCap * size;
+    if (norm > cap) dz.head(nt) *= cap / norm;
+    if (nu > nt && std::abs(dz[nt]) > M_PI / 2) dz[nt] = std::copysign(M_PI / 2, dz[nt]);
+    o.update = MaxAbs(dz);
+    dp_.diagonal().array() += 1.0;
+    if (o.update <= options_.tol * size) {
+      Describe(z, section, &o);
+      o.status = OrbitStatus::kOk;
+      return o;
+    }
+    z.z.head(nu) += dz;
+    OntoSection(section, &z);
+  }
+  o.status = OrbitStatus::kNotConverged;
+  o.message = "no convergence in " + std::to_string(options_.max_newton) + " Newton iterations";
+  return o;
+}
+
+}  // namespace stickslip
