@@ -49,6 +49,7 @@ class OrbitStatus(enum.IntEnum):
     collapsed = 5
     missed = 6
     cancelled = 7
+    singular = 8
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
