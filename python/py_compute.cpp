@@ -269,11 +269,19 @@ void BindCompute(py::module_& m) {
   m.def(
       "smallest_disturbance",
       [](const Params& p, const Orbit& orbit, int n) {
-        if (n < 2) throw InvalidArgument("n = " + std::to_string(n) + " must be >= 2");
-        return SmallestDisturbance(Model(p), orbit, FlowOptions(), n);
+        const Model model(p);
+        Interrupt interrupt;
+        Disturbance d;
+        {
+          py::gil_scoped_release nogil;
+          d = SmallestDisturbance(model, orbit, FlowOptions(), n, [&] { return interrupt(); });
+        }
+        interrupt.RaiseIfInterrupted();
+        return d;
       },
       py::arg("params"), py::arg("orbit"), py::arg("n") = 4000,
-      "The smallest disturbance of steady sliding that reaches a pure-slip orbit.");
+      "The smallest disturbance of steady sliding that reaches a pure-slip orbit, from n "
+      "samples of one period (16 <= n <= 10**8).");
 }
 
 }  // namespace stickslip::python

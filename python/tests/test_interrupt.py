@@ -22,7 +22,8 @@ except KeyboardInterrupt:
 # Each runs for seconds to minutes uninterrupted (measured on this machine:
 # simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart 27 s,
 # its regions on 1000 x 1000 cells about 90 s, orbit_diagram 5000 values and forced_basins
-# 401 x 401 starts well over 10 s each; orbits on CVODE, 10^5 rows, 0.3 ms each: 15 s or more).
+# 401 x 401 starts well over 10 s each; smallest_disturbance at n = 10**8 about 20 s; orbits on
+# CVODE, 10^5 rows, 0.3 ms each: 15 s or more).
 CALLS = """{
  "simulate": lambda: stickslip.simulate(stickslip.Params(v_m=1e-6), xdot0=0.0),
  "continue_branch": lambda: stickslip.continue_branch(stickslip.Params(), "v", 0.05, 0.5,
@@ -40,6 +41,8 @@ CALLS = """{
  "orbit_diagram": lambda: stickslip.orbit_diagram(stickslip.ForcedParams(stickslip.Params(
      "stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25), force=0.3, omega=0.5),
      stickslip.ForcedAxis.omega, 0.5, 1.0, n=5000),
+ "smallest_disturbance": lambda: stickslip.smallest_disturbance(stickslip.Params(v=0.42),
+     stickslip.periodic_orbit(stickslip.Params(v=0.42), a_guess=0.3), n=10**8),
  "forced_basins": lambda: stickslip.forced_basins(stickslip.ForcedParams(stickslip.Params(),
      force=0.2, omega=0.8), nx=401, ny=401),
 }"""
@@ -90,6 +93,9 @@ class CtrlC(unittest.TestCase):
 
     def test_continue_branch(self):
         self.check("continue_branch")
+
+    def test_smallest_disturbance(self):
+        self.check("smallest_disturbance")
 
     def test_continue_branch_early(self):
         # The signal lands in the first phases: steady sliding on a grid of

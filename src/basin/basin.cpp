@@ -239,59 +239,79 @@ double Hermite(double p0, double d0, double p1, double d1, double s) {
 }
 }  // namespace
 
+namespace {
+// One pair of samples (p, q), and the next one when there is one: the
+// crossing of x = xbar between p and q and the energy's minimum around q.
+void DisturbanceStep(const Model& model, double xbar, const Sample& p, const Sample& q,
+                     const Sample* next, Disturbance* d) {
+  auto energy = [&](const Sample& s) {
+    const double dx = s.z[0] - xbar;
+    return 0.5 * (dx * dx + s.z[1] * s.z[1]);
+  };
+  const double h = q.t - p.t;
+  if (!(h > 0)) return;
+  // Crossing of x = xbar: root of the Hermite cubic in x, x' there from the
+  // Hermite cubic in x' (slopes x'' from the field).
+  const double f0 = p.z[0] - xbar, f1 = q.z[0] - xbar;
+  if ((f0 > 0) != (f1 > 0)) {
+    double lo = 0, hi = 1;
+    for (int it = 0; it < Tolerances::kDisturbanceHalvings; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      const double fm = Hermite(f0, h * p.z[1], f1, h * q.z[1], mid);
+      ((fm > 0) == (f0 > 0) ? lo : hi) = mid;
+    }
+    const double s = 0.5 * (lo + hi);
+    const double a0 = model.Acceleration(p.mode, p.z[0], p.z[1]);
+    const double a1 = model.Acceleration(q.mode, q.z[0], q.z[1]);
+    d->xdot = std::min(d->xdot, std::abs(Hermite(p.z[1], h * a0, q.z[1], h * a1, s)));
+  }
+  // Energy minimum: a parabola through three samples around a local minimum.
+  const double e1 = energy(q);
+  d->energy = std::min(d->energy, e1);
+  if (next) {
+    const double e0 = energy(p), e2 = energy(*next);
+    const double curv = e0 - 2 * e1 + e2;
+    if (e1 <= e0 && e1 <= e2 && curv > 0)
+      d->energy = std::min(d->energy, e1 - (e2 - e0) * (e2 - e0) / (8 * curv));
+  }
+}
+}  // namespace
+
 Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const FlowOptions& flow,
-                                int n) {
+                                int n, std::function<bool()> cancelled) {
   if (orbit.kind != OrbitKind::kPureSlip)
     throw InvalidArgument("SmallestDisturbance: the orbit must be pure-slip");
-  if (n < kMinDisturbanceSamples)
-    throw InvalidArgument("SmallestDisturbance: n = " + std::to_string(n) + " < " +
-                          std::to_string(kMinDisturbanceSamples));
+  if (n < kMinDisturbanceSamples || n > kMaxDisturbanceSamples)
+    throw InvalidArgument("SmallestDisturbance: n = " + std::to_string(n) + " outside [" +
+                          std::to_string(kMinDisturbanceSamples) + ", " +
+                          std::to_string(kMaxDisturbanceSamples) + "]");
   const double xbar = model.SteadySliding().x;
   BeltFlow f(model, flow);
-  std::vector<Sample> pts;
-  StopRule stop;
-  stop.t_max = orbit.period;
-  const FlowResult r = f.Run(0.0, orbit.start, Mode::kSlipBelow, stop, false, orbit.period / n,
-                             [&](const Sample& s) { pts.push_back(s); });
-  if (!r.ok()) throw Error("SmallestDisturbance: " + r.message);
+  if (cancelled) f.set_cancel(cancelled);
   Disturbance d;
   // The x extremes are where the orbit crosses x' = 0.
   d.x = std::min(orbit.extrema.x_max - xbar, xbar - orbit.extrema.x_min);
   d.xdot = std::numeric_limits<double>::infinity();
   d.energy = std::numeric_limits<double>::infinity();
-  auto energy = [&](const Sample& s) {
-    const double dx = s.z[0] - xbar;
-    return 0.5 * (dx * dx + s.z[1] * s.z[1]);
+  // The samples stream through a window of three: memory does not grow with n.
+  Sample w[3];
+  int have = 0;
+  auto take = [&](const Sample& s) {
+    if (have == 3) w[0] = w[1], w[1] = w[2], have = 2;
+    w[have++] = s;
+    if (have == 3) DisturbanceStep(model, xbar, w[0], w[1], &w[2], &d);
   };
-  for (size_t k = 0; k + 1 < pts.size(); ++k) {
-    const Sample &p = pts[k], &q = pts[k + 1];
-    const double h = q.t - p.t;
-    if (!(h > 0)) continue;
-    // Crossing of x = xbar: root of the Hermite cubic in x, x' there from the
-    // Hermite cubic in x' (slopes x'' from the field).
-    const double f0 = p.z[0] - xbar, f1 = q.z[0] - xbar;
-    if ((f0 > 0) != (f1 > 0)) {
-      double lo = 0, hi = 1;
-      for (int it = 0; it < Tolerances::kDisturbanceHalvings; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        const double fm = Hermite(f0, h * p.z[1], f1, h * q.z[1], mid);
-        ((fm > 0) == (f0 > 0) ? lo : hi) = mid;
-      }
-      const double s = 0.5 * (lo + hi);
-      const double a0 = model.Acceleration(p.mode, p.z[0], p.z[1]);
-      const double a1 = model.Acceleration(q.mode, q.z[0], q.z[1]);
-      d.xdot = std::min(d.xdot, std::abs(Hermite(p.z[1], h * a0, q.z[1], h * a1, s)));
-    }
-    // Energy minimum: a parabola through three samples around a local minimum.
-    const double e1 = energy(q);
-    d.energy = std::min(d.energy, e1);
-    if (k + 2 < pts.size()) {
-      const double e0 = energy(p), e2 = energy(pts[k + 2]);
-      const double curv = e0 - 2 * e1 + e2;
-      if (e1 <= e0 && e1 <= e2 && curv > 0)
-        d.energy = std::min(d.energy, e1 - (e2 - e0) * (e2 - e0) / (8 * curv));
-    }
+  StopRule stop;
+  stop.t_max = orbit.period;
+  const FlowResult r =
+      f.Run(0.0, orbit.start, Mode::kSlipBelow, stop, false, orbit.period / n, take);
+  if (r.status == FlowStatus::kCancelled) {
+    Disturbance c;
+    c.cancelled = true;
+    return c;
   }
+  if (!r.ok()) throw Error("SmallestDisturbance: " + r.message);
+  if (have >= 2) DisturbanceStep(model, xbar, w[have - 2], w[have - 1], nullptr, &d);
   return d;
 }
 

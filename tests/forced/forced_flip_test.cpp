@@ -155,7 +155,9 @@ TEST(ForcedFlip, TwoCrossingsInOneLongStep) {
   std::printf("[ measured ] %d rows, %d PD points\n", steps, pd);
   EXPECT_EQ(pd, 2);
   for (const ForcedBranchRow& s : b.special) {
-    if (s.label == ForcedLabel::kPD) EXPECT_NEAR(s.multipliers[0].real(), -1, 1e-9);
+    if (s.label == ForcedLabel::kPD) {
+      EXPECT_NEAR(s.multipliers[0].real(), -1, 1e-9);
+    }
   }
 }
 

@@ -25,6 +25,7 @@
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
+#include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {
 namespace {
@@ -76,7 +77,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("FlowStatus", FlowStatus::kTooMuchWork);
   Covers("SwitchKind", SwitchKind::kTouch);
   Covers("OrbitKind", OrbitKind::kPureSlip);
-  Covers("OrbitStatus", OrbitStatus::kCancelled);
+  Covers("OrbitStatus", OrbitStatus::kSingular);
+  Covers("SectionKind", SectionKind::kSurface);
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
   Covers("FigureFormat", FigureFormat::kSvg);
   Covers("AttractorKind", AttractorKind::kFailed);

@@ -100,12 +100,15 @@ std::vector<Vec2> OrbitCurve(const Model& model, const Orbit& orbit, const FlowO
 // returns to steady sliding.
 struct Disturbance {
   double x = 0, xdot = 0, energy = 0;
+  bool cancelled = false;  ///< `cancelled` fired: the values are not computed
 };
-// SmallestDisturbance's smallest n (samples per period).
-constexpr int kMinDisturbanceSamples = 16;
-// Throws InvalidArgument if the orbit is not pure-slip or n < kMinDisturbanceSamples.
-// Samples n points.
+// SmallestDisturbance's range of n (samples per period, streamed: memory
+// does not grow with n).
+constexpr int kMinDisturbanceSamples = 16, kMaxDisturbanceSamples = 100000000;
+// Throws InvalidArgument if the orbit is not pure-slip or n is outside
+// [kMinDisturbanceSamples, kMaxDisturbanceSamples]. Samples n points;
+// `cancelled` is polled after every integration step.
 Disturbance SmallestDisturbance(const Model& model, const Orbit& orbit, const FlowOptions& flow,
-                                int n = 4000);
+                                int n = 4000, std::function<bool()> cancelled = nullptr);
 
 }  // namespace stickslip
