@@ -163,6 +163,9 @@ py::dict Basins(const ForcedParams& p, int nx, int ny, std::pair<double, double>
     q["kind"] = AttractorKindName(a.kind), q["m"] = a.m, q["sticks"] = a.sticks;
     q["sticks_per_period"] = a.sticks_per_period;
     q["x"] = a.x, q["xdot"] = a.xdot, q["lyapunov"] = a.lyapunov, q["starts"] = a.starts;
+    std::vector<double> cx, cxd;  // periodic: the cycle's m section points
+    for (const auto& c : a.cycle) cx.push_back(c[0]), cxd.push_back(c[1]);
+    q["cycle_x"] = ReadOnly(cx), q["cycle_xdot"] = ReadOnly(cxd);
     attractors.append(q);
   }
   py::dict d;

@@ -15,9 +15,26 @@ command -v gnuplot >/dev/null || { echo "docs_figures.sh: gnuplot not found on P
 
 fig=docs/figures
 mkdir -p "$fig"
+# An app's run removes the other apps' outputs from its --out folder; several
+# apps share a study's folder here, so run() puts back the files of the folder
+# that the app did not write (they are other apps' figures and data).
 run() {
   echo "+ $*"
+  local out="" prev=""
+  for a in "$@"; do
+    [[ "$prev" == --out ]] && out="$a"
+    prev="$a"
+  done
+  local keep
+  keep="$(mktemp -d)"
+  [[ -n "$out" && -d "$out" ]] && cp -a "$out"/. "$keep"/
   "$@" >/dev/null
+  if [[ -n "$out" ]]; then
+    for f in "$keep"/*; do
+      [[ -e "$f" && ! -e "$out/$(basename "$f")" ]] && cp -a "$f" "$out"/
+    done
+  fi
+  rm -rf "$keep"
 }
 run "$build/ss_continue" --study studies/seed.ini --out "$fig/seed"
 run "$build/ss_continue" --study studies/stribeck.ini --out "$fig/stribeck"

@@ -218,7 +218,10 @@ def forced_basins(d, nx, ny, ax=None):
     ax.pcolormesh(np.asarray(d["x"]).reshape(ny, nx), np.asarray(d["xdot"]).reshape(ny, nx),
                   masked, cmap="tab10", vmin=-0.5, vmax=9.5, shading="nearest", rasterized=True)
     for i, a in enumerate(d["attractors"]):
-        ax.plot(a["x"], a["xdot"], "o", color="black", ms=4)
+        # a periodic attractor's m section points (its cycle), else its one point
+        cx = a["cycle_x"] if len(a.get("cycle_x", [])) else [a["x"]]
+        cy = a["cycle_xdot"] if len(a.get("cycle_xdot", [])) else [a["xdot"]]
+        ax.plot(cx, cy, "o", color="black", ms=4)
         ax.annotate("%d: %s m=%d" % (i, a["kind"], a["m"]), (a["x"], a["xdot"]), xytext=(4, 4),
                     textcoords="offset points", fontsize="small")
     ax.set_xlabel(label("x"))

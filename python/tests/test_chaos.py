@@ -96,6 +96,9 @@ class Chaos(unittest.TestCase):
             o = stickslip.forced_orbit(stribeck(0.7), a["x"], a["xdot"], m=a["m"])
             self.assertLess(math.hypot(o.x0 - a["x"], o.xdot0 - a["xdot"]), 1e-8)
             self.assertEqual(o.sticks, a["sticks"])
+            # its cycle: m section points, the first the attractor's own
+            self.assertEqual(len(a["cycle_x"]), a["m"])
+            self.assertEqual((a["cycle_x"][0], a["cycle_xdot"][0]), (a["x"], a["xdot"]))
 
     def test_bad_input_names_the_option(self):
         with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):

@@ -65,6 +65,20 @@ std::string KeyLabel(const Attractor& a) {
   if (a.kind == AttractorKind::kPeriodic) label += ", x = " + Num(a.x, 3);
   return label + " (" + std::to_string(a.starts) + " starts)";
 }
+// The section points of every periodic attractor's cycle (all m of them) as
+// the data block $cycles; its header line is what `set datafile
+// columnheaders` takes. A NaN row keeps the block plottable when it is empty.
+std::string CycleBlock(const ForcedBasins& b) {
+  std::ostringstream os;
+  os << "$cycles << EOD\nattractor\tx\txdot\n";
+  int rows = 0;
+  for (size_t i = 0; i < b.attractors.size(); ++i)
+    for (const auto& q : b.attractors[i].cycle)
+      if (b.attractors[i].kind == AttractorKind::kPeriodic)
+        os << i << "\t" << FormatNumber(q[0]) << "\t" << FormatNumber(q[1]) << "\n", ++rows;
+  if (rows == 0) os << "-1\tNaN\tNaN\n";
+  return os.str() + "EOD\n";
+}
 // Quasi-periodic or slow: a grey that shows on the page and in the key.
 constexpr const char* kUndecidedGrey = "#bdbdbd";
 }  // namespace
@@ -75,8 +89,8 @@ std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o
   const double dy = (o.xdot_hi - o.xdot_lo) / std::max(1, o.ny - 1) / 2;
   std::ostringstream os;
   os << "# Basins on the stroboscopic section (forcing phase 0) of ss_basin --force.\n"
-     << FigurePreamble(format, 900, 900) << "set output '" << FigureFile("basins_forced", format)
-     << "'\nset title " << GnuplotQuoted(title)
+     << FigurePreamble(format, 900, 900) << CycleBlock(b) << "set output '"
+     << FigureFile("basins_forced", format) << "'\nset title " << GnuplotQuoted(title)
      << "\nset xlabel 'displacement x at forcing phase 0 (dimensionless)'\n"
      << "set ylabel \"velocity x' at forcing phase 0 (dimensionless)\"\nunset grid\n"
      // the key below: a row per attractor and one for the section points
@@ -96,10 +110,9 @@ std::string ForcedBasinScript(const ForcedBasins& b, const ForcedBasinOptions& o
        << GnuplotQuoted(KeyLabel(a));
   }
   os << (b.attractors.empty() ? "" : ", \\\n     ")
-     << "'attractors.tsv' using 'x':(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with "
-        "points pt 7 ps 1.4 lc rgb 'white' notitle, \\\n     'attractors.tsv' using 'x':"
-        "(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with points pt 6 ps 1.4 lw 2 "
-        "lc rgb 'black' title 'a section point of each periodic attractor'\n";
+     << "$cycles using 'x':'xdot' with points pt 7 ps 1.4 lc rgb 'white' notitle, \\\n"
+        "     $cycles using 'x':'xdot' with points pt 6 ps 1.4 lw 2 lc rgb 'black' title "
+        "'the m section points of each periodic attractor'\n";
   return os.str();
 }
 

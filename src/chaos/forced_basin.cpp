@@ -62,6 +62,10 @@ Attractor ClassifyAttractor(const ForcedModel& model, const StroboscopicRun& r,
       if (p[k].x < p[best].x) best = k;
     }
     a.x = p[best].x, a.xdot = p[best].xdot;
+    for (int j = 0; j < m; ++j) {
+      const SectionPoint& q = p[K - m + (best - (K - m) + j) % m];
+      a.cycle.push_back({q.x, q.xdot});
+    }
     a.sticks_per_period = static_cast<double>(a.sticks) / m;
     return a;
   }

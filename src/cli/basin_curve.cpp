@@ -1,5 +1,6 @@
 #include "cli/basin_curve.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -8,6 +9,8 @@
 #include "cli/output.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_control.hpp"
+#include "stickslip/continuation/continuation.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/io/basin_stability_report.hpp"
 
 namespace stickslip::cli {
@@ -57,6 +60,29 @@ Curve CurveFromArguments(const Arguments& args, const Params& base, const BasinO
   return c;
 }
 
+// The special points of the branch over the curve's range (ss_continue's
+// run): HB, and GR or LP where an orbit ends and the shares jump. None if the
+// continuation fails or is cancelled (the figure then has no marks).
+std::vector<BasinStabilityMark> BranchMarks(const Params& base, const Curve& c,
+                                            const OrbitOptions& orbit,
+                                            const std::function<bool()>& cancelled) {
+  ContinuationOptions o;
+  o.param = c.param;
+  o.from = std::min(c.from, c.to), o.to = std::max(c.from, c.to);
+  o.orbit = orbit;
+  o.cancelled = cancelled;
+  std::vector<BasinStabilityMark> marks;
+  try {
+    const ContinuationResult r = Continue(base, o);
+    if (r.partial()) return marks;
+    for (const SpecialPoint& s : r.special)
+      marks.push_back({s.p, SpecialLabel(s.kind),
+                       s.kind == SpecialKind::kGrazing || s.kind == SpecialKind::kFold});
+  } catch (const InvalidArgument&) {
+  }
+  return marks;
+}
+
 }  // namespace
 
 int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const Params& base,
@@ -73,18 +99,18 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   OrbitScanOptions scan = opts.scan;
   scan.cancelled = cancelled;
   const Box box{opts.x_lo, opts.x_hi, opts.xdot_lo, opts.xdot_hi};
-  const BasinStabilityCurve r =
-      BasinStabilityAlong(base, c.param, c.from, c.to, c.n, box, scan);
+  const BasinStabilityCurve r = BasinStabilityAlong(base, c.param, c.from, c.to, c.n, box, scan);
   std::string model = std::string("law=") + LawName(base.law);  // the varied one left out
   for (const auto& name : ParameterNames(base.law))
     if (name != c.param.name()) model += " " + name + "=" + FormatNumber(GetParameter(base, name));
+  const std::vector<BasinStabilityMark> marks = BranchMarks(base, c, scan.orbit, cancelled);
   TsvTable t = BasinStabilityTable(r, model, box);
   t.PrependMeta(meta);
   out.Write("basin_stability.tsv", t.str());
   out.Write(
       "basin_stability.gp",
       BasinStabilityScript(c.param, model + (r.status == BasinStatus::kOk ? "" : " (partial)"),
-                           format, FigureUnitsOf(ScalesFromArguments(args), c.param)));
+                           format, FigureUnitsOf(ScalesFromArguments(args), c.param), marks));
   GnuplotResult g{GnuplotStatus::kCancelled, ""};
   if (plots) g = out.Draw("basin_stability.gp", {figure}, cancelled);
   out.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{figure});

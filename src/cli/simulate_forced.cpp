@@ -1,11 +1,13 @@
 // ss_simulate's range options and forced run (simulate_forced.hpp).
 #include "cli/simulate_forced.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/forced/simulate.hpp"
 #include "stickslip/io/figure_style.hpp"
@@ -22,38 +24,64 @@ void Positive(const Arguments& args, const char* name) {
 
 std::string Quoted(const std::string& s) { return GnuplotQuoted(s); }
 
+// The forcing periods the time series shows: the last few, not the whole run
+// (thousands of oscillations drawn in 700 pixels are a block of colour).
+constexpr double kShownPeriods = 8;
+
 // Two figures in the common style: trajectory (phase portrait with the stick
-// line x' = v, and x, x' against t) and section (strobe: x' against x; exit:
-// the exit-phase map, phase of exit n+1 against exit n).
-std::string ForcedScript(ForcedSection sec, const std::string& title, FigureFormat f) {
+// line x' = v, and x, x' against t over the last kShownPeriods forcing
+// periods) and section (strobe: x' against x; exit: the exit-phase map, phase
+// of exit n+1 against exit n). The first half of the run (t < t_end / 2) is
+// drawn as the transient, in gray, apart from the rest.
+std::string ForcedScript(ForcedSection sec, const std::string& title, FigureFormat f, double t_end,
+                         double period) {
+  const std::string ts = FormatNumber(t_end / 2);
+  const std::string late = "'after the transient (t ≥ " + Num(t_end / 2, 4) + ")'";
+  const std::string early = "'transient (t < " + Num(t_end / 2, 4) + ")'";
+  const char* gray = "lc rgb '#b0b0b0'";
   std::string s = FigurePreamble(f, 1400, 650);
   s += "set output " + Quoted(FigureFile("trajectory", f)) + "\n";
+  s += "set bmargin 9\n";  // the portrait's key takes three rows under its axis label
   s += "set multiplot layout 1,2 title " + Quoted(FigureTitle(title, {})) + "\n";
   s += "set xlabel 'displacement x'\nset ylabel 'velocity dx/dt'\nset title 'phase portrait'\n";
-  s += "plot 'trajectory.tsv' using 2:3 with lines ls 1 lw 1.5 title 'trajectory', \\\n";
+  s += "plot 'trajectory.tsv' using 2:($1 < " + ts + " ? $3 : NaN) with lines lw 1 " + gray +
+       " title " + early + ", \\\n";
+  s += "     'trajectory.tsv' using 2:($1 >= " + ts + " ? $3 : NaN) with lines ls 1 lw 1.5 title " +
+       late + ", \\\n";
   s += "     'trajectory.tsv' using 2:(strcol(4) eq 'stick' ? $3 : NaN) with lines ls 9 "
        "title 'sticking (dx/dt = v)'\n";
-  s += "set xlabel 'time t'\nset ylabel 'x, dx/dt'\nset title 'time series'\n";
+  const double from = std::max(0.0, t_end - kShownPeriods * period);
+  s += "set xlabel 'time t'\nset ylabel 'x, dx/dt'\nset title " +
+       Quoted("time series: the last " + Num(std::min(kShownPeriods, t_end / period), 3) +
+              " forcing periods") +
+       "\nset xrange [" + FormatNumber(from) + ":" + FormatNumber(t_end) + "]\n";
   s += "plot 'trajectory.tsv' using 1:2 with lines ls 1 lw 1.5 title 'displacement x', \\\n";
   s += "     'trajectory.tsv' using 1:3 with lines ls 3 lw 1.5 title 'velocity dx/dt'\n";
-  s += "unset multiplot\n";
+  s += "unset multiplot\nset autoscale x\nset bmargin 7\n";
   s += FigureTerminal(f, 950, 750);
-  s += "set output " + Quoted(FigureFile("section", f)) + "\nset key off\n";
+  s += "set output " + Quoted(FigureFile("section", f)) + "\n";
   if (sec == ForcedSection::kStrobe) {
     s += "set title \"stroboscopic section (cos Ωt = 1)\\n\" . " + Quoted(FigureTitle(title, {})) +
          "\n";
     s += "set xlabel 'displacement x (dimensionless)'\n";
     s += "set ylabel 'velocity dx/dt (dimensionless)'\n";
     s += "set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04\n";  // no point on the frame
-    s += "plot 'section.tsv' using 4:5 with points pt 7 ps 0.6 lc rgb '#1f77b4'\n";
+    s += "plot 'section.tsv' using 4:($2 < " + ts + " ? $5 : NaN) with points pt 6 ps 0.6 " + gray +
+         " title " + early + ", \\\n";
+    s += "     'section.tsv' using 4:($2 >= " + ts +
+         " ? $5 : NaN) with points pt 7 ps 0.8 lc rgb '#0072b2' title " + late + "\n";
   } else {
     s += "set title \"exit-phase map (stick exits)\\n\" . " + Quoted(FigureTitle(title, {})) + "\n";
     s += "set xlabel 'forcing phase of stick exit n [rad]'\n";
     s += "set ylabel 'forcing phase of stick exit n+1 [rad]'\n";
     s += "set xrange [0:2*pi]\nset yrange [0:2*pi]\nset size square\nprev = NaN\n";
-    s += "plot x with lines lc rgb '#aaaaaa' dt 2, \\\n";
-    s += "     'section.tsv' using (q = prev, prev = $3, q):3 with points pt 7 ps 0.6 "
-         "lc rgb '#1f77b4'\n";
+    s += "plot x with lines lc rgb '#aaaaaa' dt 2 notitle, \\\n";
+    s += "     'section.tsv' using (q = prev, prev = $3, q):($2 < " + ts +
+         " ? $3 : NaN) with "
+         "points pt 6 ps 0.6 " +
+         gray + " title " + early + ", \\\n";
+    s += "     prev = NaN, 'section.tsv' using (q = prev, prev = $3, q):($2 >= " + ts +
+         " ? $3 : NaN) with points pt 7 ps 0.8 lc rgb '#0072b2' title " + late + "\n";
   }
   return s;
 }
@@ -63,8 +91,9 @@ double Phase(const ForcedModel& m, double t) {
   const double wt = m.omega() * t;
   double p = std::fmod(wt, 2 * M_PI);
   if (p < 0) p += 2 * M_PI;
-  return 2 * M_PI - p <= Tolerances::kPhaseRounding * (1 + std::abs(wt)) * Tolerances::kPhaseUlps ? 0
-                                                                                       : p;
+  return 2 * M_PI - p <= Tolerances::kPhaseRounding * (1 + std::abs(wt)) * Tolerances::kPhaseUlps
+             ? 0
+             : p;
 }
 
 }  // namespace
@@ -217,7 +246,8 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     return app.ExitCode(why + "; the trajectory so far is written to " + app.out().dir() +
                         ", marked partial");
   }
-  app.out().Write("trajectory.gp", ForcedScript(o.section, title, format));
+  app.out().Write("trajectory.gp",
+                  ForcedScript(o.section, title, format, r.rows.back().t, model.period()));
   if (!app.Finish("trajectory.gp", {fig_t, fig_s}, {fig_t, fig_s})) return kExitFailed;
   std::cout << prog << ": forced oscillator, " << title << "\n"
             << r.rows.size() << " rows to t = " << FormatNumber(r.rows.back().t) << ", "

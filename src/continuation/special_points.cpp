@@ -78,6 +78,7 @@ SpecialPoint GrazingPoint(const Model& m, double p, const FlowResult& run) {
   sp.extrema.x_min = std::min(run.extrema.x_min, run.z[0]);
   sp.extrema.x_max = std::max(run.extrema.x_max, x0);
   sp.extrema.xdot_min = run.extrema.xdot_min;
+  sp.extrema.xdot_max = m.v();  // the orbit touches the stick set x' = v
   sp.multiplier_before = 0.0;
   sp.multiplier_after = inside ? kNan : mult_ps;
   sp.x_start = x0;

@@ -116,6 +116,7 @@ std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
      << GnuplotQuoted(ParameterAxisLabel(axis) +
                       (axis == ForcedAxis::kOmega ? " (over the natural one)" : ""))
      << "\nset ylabel 'largest displacement x_{max} (dimensionless)'\nset yrange [0:*]\n"
+     << "set offsets 0, 0, graph 0.1, 0  # room above the top point for its label\n"
      << "set autoscale xfix\n"
      << "c(name) = column(name)\n"
      // The rows into arrays (X, Y, branch B, non-stop K, stable S, located P),

@@ -172,13 +172,12 @@ void EstimatesFigure(std::ostringstream& os, bool periodic, FigureFormat format,
      << "set title \"displacement range: computed and the seed's bound\"\n"
      << "set ylabel " << GnuplotQuoted("displacement x" + units.LengthUnit()) << "\n"
      << "plot 'branch.tsv' using ($1*up):(" << po << " ? $" << kXMax << "*ul : NaN) with lines ls "
-     << kStyleReference << " title 'computed x max, x min', \\\n"
+     << kStyleReference << " title 'computed', \\\n"
      << "     '' using ($1*up):(" << po << " ? $" << kXMin << "*ul : NaN) with lines ls "
      << kStyleReference << " notitle, \\\n"
-     << "     '' using ($1*up):($18*ul) with lines ls " << kStyleEstimate1
-     << " title 'seed bound x max', \\\n"
-     << "     '' using ($1*up):($17*ul) with lines ls " << kStyleEstimate2
-     << " title 'seed bound x min'\n"
+     << "     '' using ($1*up):($18*ul) with lines ls " << kStyleBound
+     << " title \"the seed's bound (x max, x min)\", \\\n"
+     << "     '' using ($1*up):($17*ul) with lines ls " << kStyleBound << " notitle\n"
      << "unset multiplot\nunset output\n";
 }
 }  // namespace
@@ -235,8 +234,10 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& ti
        Join(Curves(r, kXMax, true, true), Curves(r, kXMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   plot("bifurcation_xdot", "velocity dx/dt: min and max" + units.SpeedUnit(),
+       // On the upper curve, as x_max above: a grazing is where x' = v
+       // meets the stick set, the top of the orbit.
        Marks(
-           r, lo, hi, [](const SpecialPoint& s) { return s.extrema.xdot_min; }, all, "uv"),
+           r, lo, hi, [](const SpecialPoint& s) { return s.extrema.xdot_max; }, all, "uv"),
        Join(Curves(r, kXdMax, true, true), Curves(r, kXdMin, true, false)) + Key(r, true, true),
        !r.points.empty());
   auto periodic_point = [](const SpecialPoint& s) {

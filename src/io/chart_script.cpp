@@ -1,6 +1,7 @@
 // chart.gp: the chart figure (chart_report.hpp). Regions are filled polygons
 // between the exact curves; the curves, codim-2 points and labels on top; the
 // key below the frame.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -95,8 +96,10 @@ void Curves(std::ostream& os, const ChartResult& r) {
       {CurveKind::kHopf, CurvePointType::kSupercritical, "black", "1", "HB, supercritical"},
       {CurveKind::kHopf, CurvePointType::kSubcritical, "black", "(7,5)", "HB, subcritical"},
       {CurveKind::kGrazing, CurvePointType::kPersistence, "#c00000", "1", "GR, persistence"},
-      {CurveKind::kGrazing, CurvePointType::kNonsmoothFold, "#c00000", "(7,5)", "GR, nonsmooth fold"},
-      {CurveKind::kFold, CurvePointType::kFold, "#009e73", "1", "LP, pure-slip fold"},  // green: not on blue
+      {CurveKind::kGrazing, CurvePointType::kNonsmoothFold, "#c00000", "(7,5)",
+       "GR, nonsmooth fold"},
+      {CurveKind::kFold, CurvePointType::kFold, "#009e73", "1",
+       "LP, pure-slip fold"},  // green: not on blue
   };
   for (const Style& st : styles) {
     bool present = false;
@@ -113,6 +116,50 @@ void Curves(std::ostream& os, const ChartResult& r) {
       present = false;  // one key entry per style
     }
   }
+}
+
+// The inset: where two or more codimension-two points crowd into a corner
+// (their box, padded, under 30 % of each range), a zoom of that box in
+// the corner of the frame farthest from it, with the box outlined on the chart.
+// The plot area on the page (the margins of ChartScript), and the inset's size
+// as a fraction of it.
+constexpr double kL = 0.11, kR = 0.96, kB = 0.21, kT = 0.93, kInsetW = 0.38, kInsetH = 0.45,
+                 kInsetPad = 0.03, kInsetTics = 0.05;  // room for its y tic labels
+constexpr double kCrowded = 0.3;  // the padded box's largest side, of the chart's range
+struct Zoom {
+  double lo1 = 0, hi1 = 0, lo2 = 0, hi2 = 0;
+};
+bool CrowdedCorner(const ChartResult& r, const Plane& pl, Zoom* z) {
+  if (r.codim2.size() < 2) return false;
+  z->lo1 = z->hi1 = r.codim2[0].p1, z->lo2 = z->hi2 = r.codim2[0].p2;
+  for (const Codim2Point& p : r.codim2) {
+    z->lo1 = std::min(z->lo1, p.p1), z->hi1 = std::max(z->hi1, p.p1);
+    z->lo2 = std::min(z->lo2, p.p2), z->hi2 = std::max(z->hi2, p.p2);
+  }
+  const double pad1 = std::max(0.35 * (z->hi1 - z->lo1), 0.03 * pl.width1());
+  const double pad2 = std::max(0.35 * (z->hi2 - z->lo2), 0.03 * pl.width2());
+  z->lo1 = std::max(pl.from1, z->lo1 - pad1), z->hi1 = std::min(pl.to1, z->hi1 + pad1);
+  z->lo2 = std::max(pl.from2, z->lo2 - pad2), z->hi2 = std::min(pl.to2, z->hi2 + pad2);
+  return z->hi1 - z->lo1 < kCrowded * pl.width1() && z->hi2 - z->lo2 < kCrowded * pl.width2();
+}
+void Inset(std::ostream& os, const ChartResult& r, const Plane& pl, const Zoom& z, double u1,
+           double u2) {
+  // the corner of the frame farthest from the zoomed box's centre
+  const bool right = (z.lo1 + z.hi1) / 2 - pl.from1 < pl.width1() / 2;
+  const bool top = (z.lo2 + z.hi2) / 2 - pl.from2 < pl.width2() / 2;
+  const double w = kInsetW * (kR - kL), h = kInsetH * (kT - kB);
+  const double x0 = right ? kR - kInsetPad - w : kL + kInsetPad + kInsetTics;
+  const double y0 = top ? kT - kInsetPad - h : kB + kInsetPad;
+  os << "# the inset: the crowded corner, zoomed\n"
+     << "set lmargin at screen " << x0 << "\nset rmargin at screen " << x0 + w
+     << "\nset bmargin at screen " << y0 << "\nset tmargin at screen " << y0 + h << "\n"
+     << "unset object 90\nset xrange [" << u1 * z.lo1 << ":" << u1 * z.hi1 << "]\nset yrange ["
+     << u2 * z.lo2 << ":" << u2 * z.hi2 << "]\n"
+     << "unset key\nunset title\nunset xlabel\nunset ylabel\nset border 15 front lw 1.5\n"
+     << "set xtics in mirror font ',9'\nset ytics in mirror font ',9'\nplot NaN notitle";
+  Curves(os, r);
+  os << ", \\\n     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' "
+        "notitle\n";
 }
 }  // namespace
 
@@ -150,13 +197,19 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
      << "set xrange [" << u1 * plane.from1 << ":" << u1 * plane.to1 << "]\n"
      << "set yrange [" << u2 * plane.from2 << ":" << u2 * plane.to2 << "]\n"
      << "set title \"" << title << "\"\n"
-     << "set lmargin at screen 0.11\nset rmargin at screen 0.96\n"
-     << "set tmargin at screen 0.93\nset bmargin at screen 0.21\n"
+     << "set lmargin at screen " << kL << "\nset rmargin at screen " << kR << "\n"
+     << "set tmargin at screen " << kT << "\nset bmargin at screen " << kB << "\n"
      << "set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 "
         "samplen 3\n"
      << "set tics out nomirror\nset border 3 front\n";
   Polygons(os, r, u1, u2);
   Codim2Labels(os, r, plane);
+  Zoom zoom;
+  const bool inset = CrowdedCorner(r, plane, &zoom);
+  if (inset)
+    os << "set multiplot\nset object 90 rect from " << u1 * zoom.lo1 << "," << u2 * zoom.lo2
+       << " to " << u1 * zoom.hi1 << "," << u2 * zoom.hi2
+       << " fs empty border lc rgb 'black' lw 1 front\n";
   os << "plot ";
   const char* sep = "";
   for (int k = 0; k < 4; ++k) {
@@ -170,8 +223,12 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
   if (*sep == 0) os << "NaN notitle";
   Curves(os, r);
   os << ", \\\n     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' "
-        "notitle\n"
-     << "unset output\n";
+        "notitle\n";
+  if (inset) {
+    Inset(os, r, plane, zoom, u1, u2);
+    os << "unset multiplot\n";
+  }
+  os << "unset output\n";
   return os.str();
 }
 

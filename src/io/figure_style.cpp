@@ -64,6 +64,7 @@ std::string FigurePreamble(FigureFormat f, int width, int height) {
      << "set style line 9 lc rgb '#000000' lw 2.5 dt 1\n"
      << "set style line 10 lc rgb '#009e73' lw 2 dt 2\n"
      << "set style line 11 lc rgb '#cc79a7' lw 2 dt 4\n"
+     << "set style line 12 lc rgb '#e69f00' lw 2 dt 5\n"
      << "set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 "
         "height 0.5\nset bmargin 7\n"
      << "set style textbox opaque noborder margins 1,1\n";

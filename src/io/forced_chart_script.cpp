@@ -3,6 +3,8 @@
 // boundary), the traced curves and the codimension-two points on top, the
 // key below the frame.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <sstream>
 
 #include "stickslip/io/forced_chart_report.hpp"
@@ -80,6 +82,68 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
     }
 }
 
+// The plot area in pixels (ForcedChartScript's margins on a 1000 x 860 page)
+// and a label's size: 8 px per character of the 12-pt font, 16 px high.
+constexpr int kPlaces = 16;  // where a label may go: 8 directions, 2 distances
+constexpr double kPlotW = 870, kPlotH = 576.2, kCharW = 8, kTextH = 16, kLabelGap = 6;
+
+// Distance in pixels from (x, y) to the segment a-b.
+double SegmentDistance(double x, double y, double ax, double ay, double bx, double by) {
+  const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+  const double t = len2 > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(x - ax - t * dx, y - ay - t * dy);
+}
+
+// The named codimension-two points' labels, each centred at the one of 16
+// places around its point (beside, above, below, diagonal; near and twice as
+// far) whose text box keeps the most room from every curve, every
+// codimension-two point and the labels placed before it, inside the frame:
+// "set label" lines at the centre, in data coordinates.
+void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const ForcedPlane& pl) {
+  const double sx = kPlotW / pl.width1(), sy = kPlotH / pl.width2();
+  auto px = [&](double p1, double p2) {
+    return std::array<double, 2>{(p1 - pl.from1) * sx, (p2 - pl.from2) * sy};
+  };
+  struct Box {
+    double x, y, hw, hh;  // centre and half sizes, pixels
+  };
+  std::vector<Box> taken;  // codim-2 points (a dot) and placed labels
+  for (const ForcedCodim2& p : r.codim2) {
+    const auto q = px(p.p1, p.p2);
+    taken.push_back({q[0], q[1], 3, 3});
+  }
+  for (const ForcedCodim2& p : r.codim2) {
+    if (p.label == ForcedCodim2Label::kSliding) continue;
+    const std::string name = ForcedCodim2Name(p.label);
+    const double hw = kCharW * name.size() / 2, hh = kTextH / 2;
+    const auto at = px(p.p1, p.p2);
+    double best = -HUGE_VAL;
+    Box pick{at[0] + hw + kLabelGap, at[1], hw, hh};
+    for (int k = 0; k < kPlaces; ++k) {
+      const double f = k < 8 ? 1 : 2, ux[] = {1, -1, 0, 0, 1, -1, 1, -1},
+                   uy[] = {0, 0, 1, -1, 1, 1, -1, -1};
+      const Box b{at[0] + f * ux[k % 8] * (hw + kLabelGap),
+                  at[1] + f * uy[k % 8] * (hh + kLabelGap), hw, hh};
+      if (b.x - hw < 0 || b.x + hw > kPlotW || b.y - hh < 0 || b.y + hh > kPlotH) continue;
+      double room = HUGE_VAL;  // to curves: from the box's centre, less its half diagonal
+      for (const ForcedCurve& c : r.curves)
+        for (size_t i = 1; i < c.points.size(); ++i) {
+          const auto a = px(c.points[i - 1].p1, c.points[i - 1].p2);
+          const auto e = px(c.points[i].p1, c.points[i].p2);
+          room = std::min(room,
+                          SegmentDistance(b.x, b.y, a[0], a[1], e[0], e[1]) - std::hypot(hw, hh));
+        }
+      for (const Box& q : taken)  // box to box
+        room = std::min(room,
+                        std::max(std::abs(b.x - q.x) - hw - q.hw, std::abs(b.y - q.y) - hh - q.hh));
+      if (room > best) best = room, pick = b;
+    }
+    taken.push_back(pick);
+    os << "set label " << GnuplotQuoted(name) << " at " << pl.from1 + pick.x / sx << ","
+       << pl.from2 + pick.y / sy << " center front font ',12' noenhanced\n";
+  }
+}
+
 }  // namespace
 
 std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
@@ -113,10 +177,7 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
   os << "]\n";
   // SL ends are many and crowd where curves bunch: a marker with a key entry,
   // not a text label each; the codimension-two points keep their names.
-  for (const ForcedCodim2& p : r.codim2)
-    if (p.label != ForcedCodim2Label::kSliding)
-      os << "set label " << GnuplotQuoted(ForcedCodim2Name(p.label)) << " at " << p.p1 << "," << p.p2
-         << " offset 0.7,0.7 left front font ',12' noenhanced\n";
+  Codim2Labels(os, r, pl);
   // Half a cell and 1 % more: neighbours overlap, so that no hairline of the
   // background shows between them (antialiased edges).
   const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 * 1.01 : 0,

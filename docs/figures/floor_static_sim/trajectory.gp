@@ -15,25 +15,30 @@ set style line 8 lc rgb '#000000' pt 7 ps 1.0
 set style line 9 lc rgb '#000000' lw 2.5 dt 1
 set style line 10 lc rgb '#009e73' lw 2 dt 2
 set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set style line 12 lc rgb '#e69f00' lw 2 dt 5
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output "trajectory.png"
+set bmargin 9
 set multiplot layout 1,2 title "Coulomb law: β = 0.05, v = 0, μ_s = 0.4, μ_k = 0.3, A = 0.7, Ω = 0.5"
 set xlabel 'displacement x'
 set ylabel 'velocity dx/dt'
 set title 'phase portrait'
-plot 'trajectory.tsv' using 2:3 with lines ls 1 lw 1.5 title 'trajectory', \
+plot 'trajectory.tsv' using 2:($1 < 100 ? $3 : NaN) with lines lw 1 lc rgb '#b0b0b0' title 'transient (t < 100)', \
+     'trajectory.tsv' using 2:($1 >= 100 ? $3 : NaN) with lines ls 1 lw 1.5 title 'after the transient (t ≥ 100)', \
      'trajectory.tsv' using 2:(strcol(4) eq 'stick' ? $3 : NaN) with lines ls 9 title 'sticking (dx/dt = v)'
 set xlabel 'time t'
 set ylabel 'x, dx/dt'
-set title 'time series'
+set title "time series: the last 8 forcing periods"
+set xrange [99.46903508512662:200]
 plot 'trajectory.tsv' using 1:2 with lines ls 1 lw 1.5 title 'displacement x', \
      'trajectory.tsv' using 1:3 with lines ls 3 lw 1.5 title 'velocity dx/dt'
 unset multiplot
+set autoscale x
+set bmargin 7
 set terminal pngcairo size 950,750 enhanced font 'Sans,12'
 set output "section.png"
-set key off
 set title "exit-phase map (stick exits)\n" . "Coulomb law: β = 0.05, v = 0, μ_s = 0.4, μ_k = 0.3, A = 0.7, Ω = 0.5"
 set xlabel 'forcing phase of stick exit n [rad]'
 set ylabel 'forcing phase of stick exit n+1 [rad]'
@@ -41,5 +46,6 @@ set xrange [0:2*pi]
 set yrange [0:2*pi]
 set size square
 prev = NaN
-plot x with lines lc rgb '#aaaaaa' dt 2, \
-     'section.tsv' using (q = prev, prev = $3, q):3 with points pt 7 ps 0.6 lc rgb '#1f77b4'
+plot x with lines lc rgb '#aaaaaa' dt 2 notitle, \
+     'section.tsv' using (q = prev, prev = $3, q):($2 < 100 ? $3 : NaN) with points pt 6 ps 0.6 lc rgb '#b0b0b0' title 'transient (t < 100)', \
+     prev = NaN, 'section.tsv' using (q = prev, prev = $3, q):($2 >= 100 ? $3 : NaN) with points pt 7 ps 0.8 lc rgb '#0072b2' title 'after the transient (t ≥ 100)'

@@ -18,9 +18,9 @@ set xrange [0.050000000000000003:0.57999999999999996]
 set yrange [0:0.12]
 set title "Stability chart, cubic law: μ_s = 0.4, μ_m = 0.25, v_m = 0.5, k_5 = 0.24"
 set lmargin at screen 0.11
-set rmargin at screen 0.96
-set tmargin at screen 0.93
-set bmargin at screen 0.21
+set rmargin at screen 0.95999999999999996
+set tmargin at screen 0.93000000000000005
+set bmargin at screen 0.20999999999999999
 set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 samplen 3
 set tics out nomirror
 set border 3 front
@@ -454,6 +454,8 @@ set object 4 polygon from 0.35707845090478846,0.12 \
   fc rgb '#fdbf6f' fs solid 1.0 noborder behind
 set label 'GH' at up*0.5,up2*0.03749999999999995 offset 0.8,0.9 left front font ',13' noenhanced
 set label 'GR-LP' at up*0.4630979699786027,up2*0.056197886957885454 offset 0.8,0.9 left front font ',13' noenhanced
+set multiplot
+set object 90 rect from 0.44719796997860273,0.030955739564740025 to 0.51590000000000003,0.062742147393145375 fs empty border lc rgb 'black' lw 1 front
 plot NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title 'steady sliding only', \
      NaN with boxes fs solid 1.0 lc rgb '#a6cee3' title 'stick-slip', \
      NaN with boxes fs solid 1.0 lc rgb '#fdbf6f' title 'pure-slip oscillation', \
@@ -464,4 +466,27 @@ plot NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title 'steady sliding only', \
      'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
      'curves.tsv' using ($1*up):(($4 == 3 && strcol(9) eq 'fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#009e73' dt 1 title 'LP, pure-slip fold', \
      'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle
+# the inset: the crowded corner, zoomed
+set lmargin at screen 0.19
+set rmargin at screen 0.51300000000000001
+set bmargin at screen 0.57599999999999996
+set tmargin at screen 0.90000000000000002
+unset object 90
+set xrange [0.44719796997860273:0.51590000000000003]
+set yrange [0.030955739564740025:0.062742147393145375]
+unset key
+unset title
+unset xlabel
+unset ylabel
+set border 15 front lw 1.5
+set xtics in mirror font ',9'
+set ytics in mirror font ',9'
+plot NaN notitle, \
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'supercritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title 'HB, supercritical', \
+     'curves.tsv' using ($1*up):(($4 == 1 && strcol(9) eq 'subcritical') ? $2*up2 : NaN) with lines lw 2.5 lc rgb 'black' dt (7,5) title 'HB, subcritical', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'persistence') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title 'GR, persistence', \
+     'curves.tsv' using ($1*up):(($4 == 2 && strcol(9) eq 'nonsmooth-fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt (7,5) title 'GR, nonsmooth fold', \
+     'curves.tsv' using ($1*up):(($4 == 3 && strcol(9) eq 'fold') ? $2*up2 : NaN) with lines lw 2.5 lc rgb '#009e73' dt 1 title 'LP, pure-slip fold', \
+     'codim2.tsv' using ($2*up):($3*up2) with points pt 7 ps 1.4 lc rgb 'black' notitle
+unset multiplot
 unset output

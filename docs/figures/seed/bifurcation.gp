@@ -19,6 +19,7 @@ set style line 8 lc rgb '#000000' pt 7 ps 1.0
 set style line 9 lc rgb '#000000' lw 2.5 dt 1
 set style line 10 lc rgb '#009e73' lw 2 dt 2
 set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set style line 12 lc rgb '#e69f00' lw 2 dt 5
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
@@ -33,7 +34,7 @@ set offsets 0, 0, graph 0.08, graph 0.08
 set xrange [up*0.05:up*0.5]
 set output 'bifurcation_x.png'.suffix
 set ylabel "displacement x: min and max (dimensionless)"
-set label 100 'GR' at up*0.3957902887978408,ul*0.7305861546582468 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,ul*0.730586154658249 center offset 0,1.1 boxed front font ',10' point ls 8
 set label 101 'HB' at up*0.44095855184409843,ul*0.2530138160519672 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $6*ul : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $6*ul : NaN) with lines ls 5 notitle, \
@@ -49,7 +50,7 @@ unset label
 unset output
 set output 'bifurcation_xdot.png'.suffix
 set ylabel "velocity dx/dt: min and max (dimensionless)"
-set label 100 'GR' at up*0.3957902887978408,uv*-0.3930534572417059 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,uv*0.3957902887978414 center offset 0,1.1 boxed front font ',10' point ls 8
 set label 101 'HB' at up*0.44095855184409843,uv*0 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8*uv : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8*uv : NaN) with lines ls 5 notitle, \
@@ -65,7 +66,7 @@ unset label
 unset output
 set output 'period.png'.suffix
 set ylabel "period T (dimensionless)"
-set label 100 'GR' at up*0.3957902887978408,ut*6.367585395099831 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,ut*6.36758539509984 center offset 0,1.1 boxed front font ',10' point ls 8
 set label 101 'HB' at up*0.44095855184409843,ut*6.283185307179586 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 1 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $4*ut : NaN) with lines ls 3 notitle, \
@@ -79,7 +80,7 @@ set multiplot layout 2,1 title "stability along the branch"
 set lmargin 12
 set title "periodic orbits: stable while the multiplier is below 1"
 set ylabel "nontrivial Floquet multiplier"
-set label 100 'GR' at up*0.3957902887978408,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 100 'GR' at up*0.3957902887978414,1*0 center offset 0,1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 1 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'pure-slip' && $3==1 && $11==1) ? $10*1 : NaN) with lines ls 3 notitle, \
      NaN with lines ls 1 title 'stick-slip, stable', \
@@ -108,9 +109,9 @@ plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $7*uv : NaN) wit
      '' using ($1*up):(-$15*uv) with lines ls 11 title 'averaging: -a_{ps}'
 set title "displacement range: computed and the seed's bound"
 set ylabel "displacement x (dimensionless)"
-plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $6*ul : NaN) with lines ls 9 title 'computed x max, x min', \
+plot 'branch.tsv' using ($1*up):((strcol(2) ne 'equilibrium') ? $6*ul : NaN) with lines ls 9 title 'computed', \
      '' using ($1*up):((strcol(2) ne 'equilibrium') ? $5*ul : NaN) with lines ls 9 notitle, \
-     '' using ($1*up):($18*ul) with lines ls 10 title 'seed bound x max', \
-     '' using ($1*up):($17*ul) with lines ls 11 title 'seed bound x min'
+     '' using ($1*up):($18*ul) with lines ls 12 title "the seed's bound (x max, x min)", \
+     '' using ($1*up):($17*ul) with lines ls 12 notitle
 unset multiplot
 unset output

@@ -19,6 +19,11 @@ set style line 11 lc rgb '#cc79a7' lw 2 dt 4
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
+$cycles << EOD
+attractor	x	xdot
+0	0.5459472018642053	0.15307424006987777
+0	0.8629902816329925	0.09645976634001734
+EOD
 set output 'basins_forced.png'
 set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3, Ω = 0.559"
 set xlabel 'displacement x at forcing phase 0 (dimensionless)'
@@ -29,6 +34,6 @@ set xrange [-1.51875:1.51875]
 set yrange [-1.51875:1.51875]
 set style fill solid 1.0 noborder
 plot 'basins_forced.tsv' using 'x':(column('attractor') == 0 ? column('xdot') : 1/0):(0.019125):(0.019125) with boxxyerror lc rgb '#0072b2' title "period 2, 2 sticks, x = 0.546 (4393 starts)", \
-     'basins_forced.tsv' using 'x':(column('attractor') == 1 ? column('xdot') : 1/0):(0.019125):(0.019125) with boxxyerror lc rgb '#000000' title "chaotic, ≈1 stick/period (2168 starts)", \
-     'attractors.tsv' using 'x':(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with points pt 7 ps 1.4 lc rgb 'white' notitle, \
-     'attractors.tsv' using 'x':(strcol('kind') eq 'periodic' ? column('xdot') : 1/0) with points pt 6 ps 1.4 lw 2 lc rgb 'black' title 'a section point of each periodic attractor'
+     'basins_forced.tsv' using 'x':(column('attractor') == 1 ? column('xdot') : 1/0):(0.019125):(0.019125) with boxxyerror lc rgb '#000000' title "chaotic, 0.66 sticks/period (2168 starts)", \
+     $cycles using 'x':'xdot' with points pt 7 ps 1.4 lc rgb 'white' notitle, \
+     $cycles using 'x':'xdot' with points pt 6 ps 1.4 lw 2 lc rgb 'black' title 'the m section points of each periodic attractor'

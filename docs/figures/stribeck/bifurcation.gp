@@ -51,8 +51,8 @@ unset output
 set output 'bifurcation_xdot.png'.suffix
 set ylabel "velocity dx/dt: min and max (dimensionless)"
 set label 100 'HB' at up*0.5493061443340549,uv*0 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 101 'GR' at up*0.6519468583211344,uv*-0.6522320321553948 center offset 0,1.1 boxed front font ',10' point ls 8
-set label 102 'LP' at up*0.6519468583211344,uv*-0.6522320321553948 center offset 0,-1.1 boxed front font ',10' point ls 8
+set label 101 'GR' at up*0.6519468583211344,uv*0.6519468583211344 center offset 0,1.1 boxed front font ',10' point ls 8
+set label 102 'LP' at up*0.6519468583211344,uv*0.6519468583211344 center offset 0,-1.1 boxed front font ',10' point ls 8
 plot 'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==0) ? $8*uv : NaN) with lines ls 6 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'equilibrium' && $3==0 && $11==1) ? $8*uv : NaN) with lines ls 5 notitle, \
      'branch.tsv' using ($1*up):((strcol(2) eq 'stick-slip' && $3==1 && $11==1) ? $8*uv : NaN) with lines ls 1 notitle, \

@@ -10,6 +10,7 @@
 // pool (threads, capped by the hardware threads); no exception crosses a thread.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -24,23 +25,23 @@ const char* AttractorKindName(AttractorKind k);  // "periodic", "rest", "chaotic
 template <>
 struct EnumNames<AttractorKind> {
   static constexpr NamedValue<AttractorKind> kTable[] = {
-      {AttractorKind::kPeriodic, "periodic"},
-      {AttractorKind::kRest, "rest"},
-      {AttractorKind::kChaotic, "chaotic"},
-      {AttractorKind::kUndecided, "undecided"},
-      {AttractorKind::kUnbounded, "unbounded"},
-      {AttractorKind::kFailed, "failed"},
+      {AttractorKind::kPeriodic, "periodic"},   {AttractorKind::kRest, "rest"},
+      {AttractorKind::kChaotic, "chaotic"},     {AttractorKind::kUndecided, "undecided"},
+      {AttractorKind::kUnbounded, "unbounded"}, {AttractorKind::kFailed, "failed"},
   };
 };
 
 struct Attractor {
   AttractorKind kind = AttractorKind::kUndecided;
-  int m = 0;               ///< period in forcing periods (periodic)
-  int sticks = 0;          ///< stick phases per m periods (periodic), per period rounded (chaotic)
+  int m = 0;       ///< period in forcing periods (periodic)
+  int sticks = 0;  ///< stick phases per m periods (periodic), per period rounded (chaotic)
   /// Stick phases per forcing period, the kept run's mean (chaotic: 0.66 on
   /// the seed basin's attractor, where `sticks` rounds it to 1).
   double sticks_per_period = 0;
   double x = 0, xdot = 0;  ///< a representative section point (smallest x of the cycle)
+  /// Periodic: the cycle's m section points in the order the map visits them,
+  /// from (x, xdot) on.
+  std::vector<std::array<double, 2>> cycle;
   double lyapunov = 0;
   int starts = 0;  ///< grid starts that reach it
 };

@@ -72,7 +72,7 @@ struct SpecialPoint {
   SpecialKind kind = SpecialKind::kHopf;
   double p = 0;
   double period = 0;
-  Extrema extrema;  // the table writes x_min, x_max, xdot_min
+  Extrema extrema;  // the table writes x_min, x_max, xdot_min; all four are set
   /// GR: the nontrivial multiplier on the stick-slip side and on the pure-slip side.
   double multiplier_before = 0, multiplier_after = 0;
   /// The point's state: HB (xbar, 0); GR the exit point (x0, v); LP the

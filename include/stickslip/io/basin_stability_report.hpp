@@ -23,12 +23,22 @@ std::vector<std::string> BasinStabilityLines(const BasinStability& b);
 TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& model_description,
                              const Box& box);
 
+/// A parameter value the figure marks: a special point of the branch over the
+/// same range ("HB", "GR", "LP"); a jump (a fold or grazing: an orbit ends)
+/// breaks the curves there instead of joining the rows on its two sides.
+struct BasinStabilityMark {
+  double p = 0;
+  std::string label;
+  bool jump = false;
+};
+
 /// gnuplot script drawing basin_stability.<format> (plus `suffix`, default
 /// empty) from basin_stability.tsv in its own directory, in the shared style
 /// (figure_style.hpp): each fraction against the parameter, in SI units for
-/// a physical run (`units`).
+/// a physical run (`units`), the marks as labelled vertical lines.
 std::string BasinStabilityScript(const ParameterAxis& param, const std::string& title,
                                  FigureFormat format = FigureFormat::kPng,
-                                 const FigureUnits& units = {});
+                                 const FigureUnits& units = {},
+                                 const std::vector<BasinStabilityMark>& marks = {});
 
 }  // namespace stickslip

@@ -49,6 +49,7 @@ enum FigureLineStyle : int {
   kStyleReference = 9,   // a computed reference curve: thick black
   kStyleEstimate1 = 10,  // estimates: green dashed, purple dash-dot
   kStyleEstimate2 = 11,
+  kStyleBound = 12,  // a bound (the seed's x range): orange dash-dot-dot
 };
 /// Region fills (basins, charts), as gnuplot colour strings.
 extern const char* const kFillStickSlip;
