@@ -185,4 +185,5 @@ PYBIND11_MODULE(_core, m) {
   BindCharts(m);
   BindForced(m);
   BindRestart(m);
+  BindBatch(m);
 }

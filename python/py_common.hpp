@@ -101,6 +101,7 @@ void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
+void BindBatch(py::module_& m);  // py_batch.cpp: orbits()
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.
 py::object GetItem(const py::object& self, const std::string& key);

@@ -2,6 +2,9 @@
 // is the library's name ("slip-below", "ok", ...), as in the TSV files.
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <string>
+
 #include "py_common.hpp"
 #include "stickslip/basin/basin.hpp"
 #include "stickslip/chart/chart.hpp"
@@ -48,6 +51,15 @@ void BindEnums(py::module_& m) {
   Enum<OrbitKind>(m, "OrbitKind", "Kind of periodic orbit.", &OrbitKindName)
       .value("stick_slip", OrbitKind::kStickSlip, "one stick phase per period")
       .value("pure_slip", OrbitKind::kPureSlip, "never sticks");
+  {  // every value of its name table, "no-return" as no_return: complete by construction
+    auto e = Enum<OrbitStatus>(
+        m, "OrbitStatus", "How an orbit search ended (orbits()' status codes).", &OrbitStatusName);
+    for (const auto& [value, name] : EnumNames<OrbitStatus>::kTable) {
+      std::string id(name);
+      std::replace(id.begin(), id.end(), '-', '_');
+      e.value(id.c_str(), value);
+    }
+  }
   Enum<PointKind>(m, "PointKind", "Kind of branch point.", &PointKindName)
       .value("stick_slip", PointKind::kStickSlip)
       .value("pure_slip", PointKind::kPureSlip)

@@ -3,6 +3,8 @@
     python3 examples/python/sweep.py [DRAWS [SPEEDS]]   (default 500 draws x 20 speeds;
                                                          5000 200: 10^6 orbits)
 """
+import os
+import resource
 import sys
 
 import numpy as np
@@ -16,10 +18,15 @@ def main():
     rng = np.random.default_rng(1)
     grid = {"v": np.linspace(0.05, 0.45, speeds)}
     sample = {"mu_s": rng.normal(0.4, 0.02, draws)}
-    r = stickslip.sweep(stickslip.stick_slip_orbit, grid, sample)          # LocalCluster, 2 workers
+    # LocalCluster, 2 workers; each chunk of points is one stickslip.orbits call
+    r = stickslip.sweep(stickslip.stick_slip_orbits, grid, sample)
     r.to_tsv("sweep.tsv")  # one self-describing file
     s = stickslip.group_stats(r, "v", "amplitude", where="stick_slip")
     print(len(r), "orbits in", r.meta["seconds"], "s on", r.meta["workers"], "workers")
+    t = os.times()  # the workers are reaped children once the cluster closed
+    print(f"CPU {t.user + t.system + t.children_user + t.children_system:.1f} s (workers "
+          f"{t.children_user + t.children_system:.1f} s), parent peak RSS "
+          f"{resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MB")
     for v, f, q in zip(s["v"], s["fraction"], s["q0.5"]):
         print(f"v = {v:.3f}  P(stick-slip) = {f:.3f}  median amplitude = {q:.4f}")
 

@@ -40,6 +40,16 @@ class FlowStatus(enum.IntEnum):
 class OrbitKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
+class OrbitStatus(enum.IntEnum):
+    ok = 0
+    no_return = 1
+    integrator_failed = 2
+    sticks = 3
+    not_converged = 4
+    collapsed = 5
+    missed = 6
+    cancelled = 7
+    singular = 8
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
@@ -559,6 +569,10 @@ def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
                       from_: Optional[float] = None, to: Optional[float] = None,
                       progress: Optional[Callable[[int, float, str, bool], Any]] = None,
                       **inputs: float) -> Branch: ...
+def orbits(params: Params, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
+           floquet: bool = False, rtol: Optional[float] = None, atol: Optional[float] = None,
+           integrator: IntegratorLike = None,
+           method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,
@@ -590,13 +604,15 @@ class SweepResult:
     def __getitem__(self, name: str) -> Array: ...
     def __len__(self) -> int: ...
     def to_tsv(self, path: str) -> None: ...
-def sweep(fn: Callable[[Dict[str, float]], Dict[str, float]],
+def sweep(fn: Union[Callable[[Dict[str, float]], Dict[str, float]],
+                    Callable[[Dict[str, Array]], Dict[str, npt.ArrayLike]]],
           grid: Optional[Mapping[str, Sequence[float]]] = None,
           sample: Optional[Mapping[str, Sequence[float]]] = None, *,
           scheduler: Optional[str] = None, n_workers: int = 2, chunk_size: Optional[int] = None,
           meta: Optional[Mapping[str, Any]] = None, timeout: Optional[float] = None,
-          worker_timeout: float = 60.0) -> SweepResult: ...
+          worker_timeout: float = 60.0, batch: Optional[bool] = None) -> SweepResult: ...
 def group_stats(result: SweepResult, by: str, value: str,
                 quantiles: Sequence[float] = (0.05, 0.5, 0.95),
                 where: Optional[str] = None) -> Dict[str, Array]: ...
 def stick_slip_orbit(point: Mapping[str, float]) -> Dict[str, float]: ...
+def stick_slip_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...

@@ -3,29 +3,36 @@
 sweep(fn, grid=..., sample=...) evaluates fn at every point of a parameter grid
 (the Cartesian product of named 1-D axes), or of a sample (named columns of
 equal length, e.g. draws of uncertain friction coefficients), or of both (each
-grid point with every sample row). fn takes one point as a dict of floats and
-returns a dict of floats (the same keys at every point); it must be picklable
-(a module-level function) to run on workers.
+grid point with every sample row). fn must be picklable (a module-level
+function) to run on workers. It is either
+  a point function: one point as a dict of floats -> a dict of floats (the same
+                    keys at every point), e.g. stick_slip_orbit; or
+  a batch function: a chunk's columns {name: 1-D float array} -> {key: 1-D array
+                    of as many numbers}, e.g. stick_slip_orbits (stickslip.orbits
+                    on the chunk: one C++ call per chunk). batch=True says so;
+                    by default a fn with the attribute batch = True is one.
 
-Execution, by `scheduler`:
+Points are numbered grid-major (the last grid axis fastest, then the sample
+row) and never listed: a chunk of points is a range of numbers, and the worker
+that runs it generates its columns. Execution, by `scheduler`:
   None           an embedded dask.distributed LocalCluster on this machine
                  (n_workers processes, one thread each, on 127.0.0.1, no dashboard);
   "tcp://h:port" an existing Dask cluster's scheduler (its workers must import
                  stickslip and the module that defines fn);
   "serial"       this process, no Dask (the reference the cluster must equal).
-Points are sent in chunks (one task each) and gathered in order, so a result
-does not depend on the number of workers or the order they finish in.
+Chunks (one task each) are gathered in order into one preallocated table, so a
+result does not depend on the number of workers or the order they finish in.
 
 A point whose fn raises, or returns anything but a non-empty dict of finite
 numbers with the first point's keys, stops the sweep with SweepError naming the
-point; so does a worker's death (naming the points of the tasks it held), no worker left for
-worker_timeout seconds, or the whole sweep past `timeout` seconds. No partial
-result is returned as data. Ctrl-C cancels the outstanding tasks and
-raises KeyboardInterrupt. The result's to_tsv writes one self-describing file:
+point (a batch fn that raises: its chunk's points); so does a worker's death
+(naming the points of the tasks it held), no worker left for worker_timeout
+seconds, or the whole sweep past `timeout` seconds. No partial result is
+returned as data. Ctrl-C cancels the outstanding tasks and raises
+KeyboardInterrupt. The result's to_tsv writes one self-describing file:
 '# key: value' metadata lines (tool, version, function, axes, sample, scheduler,
 workers, time), a header line, then one row per point, as the apps' TSVs.
 """
-import itertools
 import math
 import os
 import tempfile
@@ -33,52 +40,133 @@ import time
 
 import numpy as np
 
-__all__ = ["sweep", "SweepResult", "SweepError", "group_stats", "stick_slip_orbit"]
+__all__ = ["sweep", "SweepResult", "SweepError", "group_stats", "stick_slip_orbit",
+           "stick_slip_orbits"]
+
+# Default chunk: about 8 tasks per worker, at most this many points (a batch
+# chunk of the belt's orbits is then well under a second of work).
+MAX_CHUNK = 100000
+# Rows written to a TSV at a time (its memory, not its content).
+TSV_ROWS = 100000
 
 
 class SweepError(RuntimeError):
     """fn failed at a point: the message names the point and the reason."""
 
 
-def _points(grid, sample):
-    """The list of point dicts, grid-major, then the axis names in order."""
-    grid = {k: np.asarray(v, dtype=float).ravel() for k, v in (grid or {}).items()}
-    sample = {k: np.asarray(v, dtype=float).ravel() for k, v in (sample or {}).items()}
-    if not grid and not sample:
-        raise ValueError("sweep: give grid=, sample= or both")
-    for k, v in list(grid.items()) + list(sample.items()):
-        if v.size == 0:
-            raise ValueError(f"sweep: axis '{k}' is empty")
-        if not np.all(np.isfinite(v)):
-            raise ValueError(f"sweep: axis '{k}' has a value that is not finite")
-    overlap = set(grid) & set(sample)
-    if overlap:
-        raise ValueError(f"sweep: '{sorted(overlap)[0]}' is both a grid axis and a sample column")
-    lengths = {v.size for v in sample.values()}
-    if len(lengths) > 1:
-        raise ValueError("sweep: sample columns differ in length: "
-                         + ", ".join(f"{k} {v.size}" for k, v in sample.items()))
-    n_sample = lengths.pop() if lengths else 1
-    names = list(grid) + list(sample)
-    points = []
-    for g in itertools.product(*grid.values()) if grid else [()]:
-        for i in range(n_sample):
-            point = dict(zip(grid, (float(x) for x in g)))
-            point.update({k: float(v[i]) for k, v in sample.items()})
-            points.append(point)
-    return names, points
+class _Axes:
+    """The points of grid x sample without listing them: point k is grid point
+    k // rows (C order over the grid axes) with sample row k % rows."""
+
+    def __init__(self, grid, sample):
+        grid = {k: np.asarray(v, dtype=float).ravel() for k, v in (grid or {}).items()}
+        sample = {k: np.asarray(v, dtype=float).ravel() for k, v in (sample or {}).items()}
+        if not grid and not sample:
+            raise ValueError("sweep: give grid=, sample= or both")
+        for k, v in list(grid.items()) + list(sample.items()):
+            if v.size == 0:
+                raise ValueError(f"sweep: axis '{k}' is empty")
+            if not np.all(np.isfinite(v)):
+                raise ValueError(f"sweep: axis '{k}' has a value that is not finite")
+        overlap = set(grid) & set(sample)
+        if overlap:
+            raise ValueError(f"sweep: '{sorted(overlap)[0]}' is both a grid axis and a sample "
+                             "column")
+        lengths = {v.size for v in sample.values()}
+        if len(lengths) > 1:
+            raise ValueError("sweep: sample columns differ in length: "
+                             + ", ".join(f"{k} {v.size}" for k, v in sample.items()))
+        self.grid, self.sample = grid, sample
+        self.rows = lengths.pop() if lengths else 1
+        self.shape = tuple(v.size for v in grid.values())
+        self.names = list(grid) + list(sample)
+        self.n = int(np.prod(self.shape, dtype=np.int64)) * self.rows
+
+    def columns(self, start, stop):
+        """{name: float array} of points start .. stop - 1."""
+        g, s = np.divmod(np.arange(start, stop, dtype=np.int64), self.rows)
+        out = {}
+        if self.grid:
+            for (name, v), i in zip(self.grid.items(), np.unravel_index(g, self.shape)):
+                out[name] = v[i]
+        for name, v in self.sample.items():
+            out[name] = v[s]
+        return out
+
+    def point(self, k):
+        return {name: float(v[0]) for name, v in self.columns(k, k + 1).items()}
 
 
-def _run_chunk(fn, points):
-    """Evaluates fn at each point; returns (rows, None) or (None, (index, message))."""
-    rows = []
-    for i, point in enumerate(points):
+def _keys_error(out):
+    """Why fn's result is not a non-empty dict with string keys ('' if it is)."""
+    if not isinstance(out, dict) or not out or not all(isinstance(k, str) for k in out):
+        return (f"fn returned {out!r}, expected a non-empty dict of {{name: number}} with "
+                "string names")
+    return ""
+
+
+def _point_rows(fn, axes, start, stop):
+    """A point fn over points start .. stop - 1: (keys, values) or (None, failure)."""
+    cols = axes.columns(start, stop)
+    keys, values = None, np.empty((stop - start, 0))
+    for j in range(stop - start):
+        point = {name: float(v[j]) for name, v in cols.items()}
         try:
-            out = fn(dict(point))
+            out = fn(point)
         except Exception as e:  # reported with its point, never passed on as data
-            return None, (i, f"{type(e).__name__}: {e}")
-        rows.append(out)
-    return rows, None
+            return None, (start + j, start + j, f"{type(e).__name__}: {e}")
+        if keys is None:
+            why = _keys_error(out)
+            if why:
+                return None, (start + j, start + j, why)
+            keys = list(out)
+            values = np.empty((stop - start, len(keys)))
+        elif not isinstance(out, dict) or list(out) != keys:
+            got = f"a dict with keys {list(out)}" if isinstance(out, dict) else repr(out)
+            return None, (start + j, start + j, f"fn returned {got}, expected a dict with the "
+                          f"first point's keys {keys}")
+        for i, (k, x) in enumerate(out.items()):
+            if not isinstance(x, (int, float, np.integer, np.floating)) or not math.isfinite(x):
+                return None, (start + j, start + j, f"{k} = {x!r} is not a finite number")
+            values[j, i] = x
+    return keys, values
+
+
+def _batch_rows(fn, axes, start, stop):
+    """A batch fn over the columns of points start .. stop - 1."""
+    n = stop - start
+    cols = axes.columns(start, stop)
+    for v in cols.values():
+        v.setflags(write=False)
+    try:
+        out = fn(cols)
+    except Exception as e:
+        return None, (start, stop - 1, f"{type(e).__name__}: {e}")
+    why = _keys_error(out)
+    if why:
+        return None, (start, stop - 1, why.replace("{name: number}", "{name: 1-D array}"))
+    keys, values = list(out), np.empty((n, len(out)))
+    for i, (k, col) in enumerate(out.items()):
+        try:
+            col = np.asarray(col, dtype=float)
+        except (TypeError, ValueError):
+            return None, (start, stop - 1, f"fn returned {k} = {col!r}, not an array of numbers")
+        if col.shape != (n,):
+            return None, (start, stop - 1, f"fn returned {k} of shape {col.shape}, expected "
+                          f"({n},): one number per point")
+        bad = np.flatnonzero(~np.isfinite(col))
+        if bad.size:
+            return None, (start + bad[0], start + bad[0],
+                          f"{k} = {col[bad[0]]!r} is not a finite number")
+        values[:, i] = col
+    return keys, values
+
+
+def _run_chunk(fn, batch, axes, start, stop):
+    """fn over points start .. stop - 1: (keys, values of shape (points, keys), None)
+    or (None, None, (first, last, message)) naming the points that failed."""
+    keys, rest = (_batch_rows if batch else _point_rows)(fn, axes, start, stop)
+    return (keys, rest, None) if keys is not None else (None, None, rest)
 
 
 class SweepResult:
@@ -101,49 +189,24 @@ class SweepResult:
         return self.data.shape[0]
 
     def to_tsv(self, path):
-        """Writes the whole file under a temporary name, then renames it."""
-        lines = [f"# {k}: {v}" for k, v in self.meta.items()]
-        lines.append("\t".join(self.columns))
-        lines += ["\t".join(repr(float(x)) for x in row) for row in self.data]
+        """Writes the whole file under a temporary name, then renames it; rows go
+        out TSV_ROWS at a time, each value as repr() writes it (it reads back
+        exactly), formatted in C."""
+        from ._core import _tsv_rows
         d = os.path.dirname(os.path.abspath(path))
         fd, tmp = tempfile.mkstemp(prefix=".sweep-", dir=d)
         try:
-            with os.fdopen(fd, "w") as f:
-                f.write("\n".join(lines) + "\n")
+            with os.fdopen(fd, "wb") as f:
+                head = "".join(f"# {k}: {v}\n" for k, v in self.meta.items())
+                f.write((head + "\t".join(self.columns) + "\n").encode())
+                for i in range(0, len(self), TSV_ROWS):
+                    f.write(_tsv_rows(self.data[i:i + TSV_ROWS]))
             os.chmod(tmp, 0o644)
             os.replace(tmp, path)
         except BaseException:
             if os.path.exists(tmp):
                 os.unlink(tmp)
             raise
-
-
-def _chunks(points, chunk_size):
-    return [points[i:i + chunk_size] for i in range(0, len(points), chunk_size)]
-
-
-def _keys_of(row, point, index):
-    """The keys of fn's first result: a non-empty dict with string keys."""
-    if not isinstance(row, dict) or not row or not all(isinstance(k, str) for k in row):
-        raise SweepError(f"sweep: point {index} {point}: fn returned {row!r}, expected a "
-                         "non-empty dict of {name: number} with string names")
-    return list(row)
-
-
-def _check_values(names, keys, rows, points, offset):
-    for j, (row, point) in enumerate(zip(rows, points)):
-        if not isinstance(row, dict) or list(row) != keys:
-            got = f"a dict with keys {list(row)}" if isinstance(row, dict) else repr(row)
-            raise SweepError(f"sweep: point {offset + j} {point}: fn returned "
-                             f"{got}, expected a dict with the first point's keys {keys}")
-        for k, v in row.items():
-            if not isinstance(v, (int, float, np.integer, np.floating)) or not math.isfinite(v):
-                raise SweepError(f"sweep: point {offset + j} {point}: {k} = {v!r} "
-                                 "is not a finite number")
-
-
-def _serial(fn, chunks):
-    return [_run_chunk(fn, c) for c in chunks]
 
 
 class _ChunkFailed(Exception):
@@ -154,43 +217,49 @@ class _ChunkFailed(Exception):
         self.indices, self.message = indices, message
 
 
-def _gather(client, futures, timeout, worker_timeout):
-    """The futures' results in order, polling twice a second: a task that erred
-    (KilledWorker: its worker died too often) or was lost raises _ChunkFailed
-    with its index; so does the first unfinished task when no worker has been
-    connected for worker_timeout seconds, or past `timeout` seconds."""
+def _gather(client, futures, consume, timeout, worker_timeout):
+    """Hands each future's result to consume(index, result) in order, as soon as
+    it and those before it are done, and releases it; polls every 50 ms. A task
+    that erred (KilledWorker: its worker died too often) or was lost raises
+    _ChunkFailed with its index; so does the first unfinished task when no worker
+    has been connected for worker_timeout seconds, or past `timeout` seconds."""
     start = time.monotonic()
-    idle_since = None
+    idle_since, done = None, 0
     while True:
-        states = [f.status for f in futures]
-        bad = [i for i, st in enumerate(states) if st in ("error", "cancelled", "lost")]
+        states = [f.status for f in futures[done:]]
+        bad = [done + i for i, st in enumerate(states) if st in ("error", "cancelled", "lost")]
         if bad:
             # A dead worker fails every task it held at once (Dask cannot tell which
             # one killed it): each is named.
             time.sleep(0.5)
-            bad = [i for i, f in enumerate(futures) if f.status in ("error", "cancelled", "lost")]
+            bad = [done + i for i, f in enumerate(futures[done:])
+                   if f.status in ("error", "cancelled", "lost")]
             f = futures[bad[0]]
             if f.status == "error":
                 e = f.exception()
                 raise _ChunkFailed(bad, f"task failed: {type(e).__name__}: {e}")
             raise _ChunkFailed(bad, f"task {f.status} (its worker died?)")
-        if all(st == "finished" for st in states):
-            return client.gather(futures)
-        first = states.index(next(st for st in states if st != "finished"))
+        while done < len(futures) and futures[done].status == "finished":
+            consume(done, futures[done].result())
+            futures[done].release()
+            done += 1
+        if done == len(futures):
+            return
         now = time.monotonic()
         if timeout is not None and now - start > timeout:
-            raise _ChunkFailed([first], f"not done after timeout = {timeout} s")
+            raise _ChunkFailed([done], f"not done after timeout = {timeout} s")
         if len(client.nthreads()) == 0:
             idle_since = idle_since if idle_since is not None else now
             if now - idle_since > worker_timeout:
-                raise _ChunkFailed([first], f"no worker left for {worker_timeout} s "
+                raise _ChunkFailed([done], f"no worker left for {worker_timeout} s "
                                    "(worker_timeout)")
         else:
             idle_since = None
-        time.sleep(0.5)
+        time.sleep(0.05)
 
 
-def _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout):
+def _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout, worker_timeout):
+    """Runs the chunks on Dask; returns the number of workers."""
     from dask.distributed import Client, LocalCluster  # Debian: python3-distributed
 
     cluster = None
@@ -202,9 +271,11 @@ def _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout):
         client = Client(scheduler)
     futures = []
     try:
-        futures = client.map(_run_chunk, [fn] * len(chunks), chunks, pure=False)
-        parts = _gather(client, futures, timeout, worker_timeout)
-        return parts, len(client.scheduler_info()["workers"])
+        n = len(bounds)
+        futures = client.map(_run_chunk, [fn] * n, [batch] * n, [axes] * n,
+                             [b[0] for b in bounds], [b[1] for b in bounds], pure=False)
+        _gather(client, futures, consume, timeout, worker_timeout)
+        return len(client.scheduler_info()["workers"])
     except (KeyboardInterrupt, _ChunkFailed):
         client.cancel(futures)
         raise
@@ -214,18 +285,7 @@ def _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout):
             cluster.close()
 
 
-def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size=None,
-          meta=None, timeout=None, worker_timeout=60.0):
-    """Evaluates fn over the points of grid x sample; returns a SweepResult.
-
-    grid: {name: 1-D values}, the Cartesian product in the given order;
-    sample: {name: 1-D values of equal length}, rows taken together;
-    scheduler: None (LocalCluster of n_workers), "tcp://host:port", or "serial";
-    chunk_size: points per task (default: about 8 tasks per worker);
-    meta: extra metadata lines {key: value} for the file;
-    timeout: seconds the whole Dask run may take (None: no bound);
-    worker_timeout: seconds the sweep waits with no worker connected.
-    """
+def _check_arguments(fn, scheduler, n_workers, timeout, worker_timeout):
     if not callable(fn):
         raise TypeError("sweep: fn must be callable")
     if not (isinstance(n_workers, int) and n_workers >= 1):
@@ -234,54 +294,90 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
             ("tcp://", "tls://", "inproc://", "ucx://")):
         raise ValueError(f"sweep: scheduler = {scheduler!r} must be None, 'serial' or an "
                          "address such as tcp://host:8786")
-    names, points = _points(grid, sample)
-    if chunk_size is None:
-        chunk_size = max(1, math.ceil(len(points) / (8 * n_workers)))
-    if not (isinstance(chunk_size, int) and chunk_size >= 1):
-        raise ValueError(f"sweep: chunk_size = {chunk_size!r} must be an integer >= 1")
     for name, t in (("timeout", timeout), ("worker_timeout", worker_timeout)):
         if t is None and name == "timeout":
             continue
         if not (isinstance(t, (int, float)) and not isinstance(t, bool) and 0 < t < math.inf):
             raise ValueError(f"sweep: {name} = {t!r} must be a finite number of seconds > 0")
-    chunks = _chunks(points, chunk_size)
+
+
+class _Table:
+    """The result table, filled chunk by chunk in order: the axes' columns, then fn's."""
+
+    def __init__(self, axes, bounds):
+        self.axes, self.bounds, self.keys, self.data = axes, bounds, None, None
+
+    def where(self, first, last):
+        p = self.axes.point(first)
+        return f"point {first} {p}" if first == last else \
+            f"points {first} to {last} (the first {p})"
+
+    def __call__(self, index, part):
+        keys, values, failure = part
+        start, stop = self.bounds[index]
+        if failure is not None:
+            first, last, message = failure
+            raise SweepError(f"sweep: {self.where(first, last)}: {message}")
+        if self.keys is None:
+            self.keys = keys
+            self.data = np.empty((self.axes.n, len(self.axes.names) + len(keys)))
+        elif keys != self.keys:
+            raise SweepError(f"sweep: {self.where(start, start)}: fn returned a dict with keys "
+                             f"{keys}, expected a dict with the first point's keys {self.keys}")
+        m = len(self.axes.names)
+        for i, v in enumerate(self.axes.columns(start, stop).values()):
+            self.data[start:stop, i] = v
+        self.data[start:stop, m:] = values
+
+
+def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size=None,
+          meta=None, timeout=None, worker_timeout=60.0, batch=None):
+    """Evaluates fn over the points of grid x sample; returns a SweepResult.
+
+    grid: {name: 1-D values}, the Cartesian product in the given order;
+    sample: {name: 1-D values of equal length}, rows taken together;
+    scheduler: None (LocalCluster of n_workers), "tcp://host:port", or "serial";
+    chunk_size: points per task (default: about 8 tasks per worker, at most MAX_CHUNK);
+    meta: extra metadata lines {key: value} for the file;
+    timeout: seconds the whole Dask run may take (None: no bound);
+    worker_timeout: seconds the sweep waits with no worker connected;
+    batch: fn takes a chunk's columns (default: getattr(fn, "batch", False)).
+    """
+    _check_arguments(fn, scheduler, n_workers, timeout, worker_timeout)
+    batch = bool(getattr(fn, "batch", False)) if batch is None else batch
+    if not isinstance(batch, bool):
+        raise ValueError(f"sweep: batch = {batch!r} must be True, False or None")
+    axes = _Axes(grid, sample)
+    if chunk_size is None:
+        chunk_size = max(1, min(MAX_CHUNK, math.ceil(axes.n / (8 * n_workers))))
+    if not (isinstance(chunk_size, int) and chunk_size >= 1):
+        raise ValueError(f"sweep: chunk_size = {chunk_size!r} must be an integer >= 1")
+    bounds = [(a, min(axes.n, a + chunk_size)) for a in range(0, axes.n, chunk_size)]
+    table = _Table(axes, bounds)
     start = time.perf_counter()
     if scheduler == "serial":
-        parts, workers = _serial(fn, chunks), 1
+        for i, (a, b) in enumerate(bounds):
+            table(i, _run_chunk(fn, batch, axes, a, b))
+        workers = 1
     else:
         try:
-            parts, workers = _dask(fn, chunks, scheduler, n_workers, timeout, worker_timeout)
+            workers = _dask(fn, batch, axes, bounds, table, scheduler, n_workers, timeout,
+                            worker_timeout)
         except _ChunkFailed as e:
-            where = []
-            for c in e.indices:
-                first, last = c * chunk_size, c * chunk_size + len(chunks[c]) - 1
-                where.append(f"point {first} {chunks[c][0]}" if first == last else
-                             f"points {first} to {last} (the first {chunks[c][0]})")
+            where = [table.where(bounds[c][0], bounds[c][1] - 1) for c in e.indices]
             raise SweepError(f"sweep: {', '.join(where)}: {e.message}") from None
     seconds = time.perf_counter() - start
-    rows, keys, offset = [], None, 0
-    for chunk, (chunk_rows, failure) in zip(chunks, parts):
-        if failure is not None:
-            i, message = failure
-            raise SweepError(f"sweep: point {offset + i} {chunk[i]}: {message}")
-        if keys is None:
-            keys = _keys_of(chunk_rows[0], chunk[0], offset)
-        _check_values(names, keys, chunk_rows, chunk, offset)
-        rows += [[p[n] for n in names] + [float(r[k]) for k in keys]
-                 for p, r in zip(chunk, chunk_rows)]
-        offset += len(chunk)
     from . import __version__ as version
     info = {"tool": f"stickslip.sweep {version}",
             "function": f"{getattr(fn, '__module__', '?')}.{getattr(fn, '__qualname__', fn)}",
-            "grid": "; ".join(f"{k} {len(np.ravel(v))} values [{min(v)}, {max(v)}]"
-                              for k, v in (grid or {}).items()) or "none",
-            "sample": "; ".join(f"{k} {len(np.ravel(v))} rows"
-                                for k, v in (sample or {}).items()) or "none",
-            "points": len(points),
+            "grid": "; ".join(f"{k} {v.size} values [{v.min()}, {v.max()}]"
+                              for k, v in axes.grid.items()) or "none",
+            "sample": "; ".join(f"{k} {v.size} rows" for k, v in axes.sample.items()) or "none",
+            "points": axes.n,
             "scheduler": scheduler or f"LocalCluster({n_workers} workers)",
             "workers": workers, "chunk_size": chunk_size, "seconds": f"{seconds:.3f}"}
     info.update(meta or {})
-    return SweepResult(names + keys, rows, info)
+    return SweepResult(axes.names + table.keys, table.data, info)
 
 
 def group_stats(result, by, value, quantiles=(0.05, 0.5, 0.95), where=None):
@@ -289,31 +385,48 @@ def group_stats(result, by, value, quantiles=(0.05, 0.5, 0.95), where=None):
     (a column name, taken as true when non-zero; None: every row) holds, and
     the quantiles of `value` over those rows (nan if none). Returns a dict of
     arrays: by, fraction, count, q<q> for each quantile."""
-    keys = np.unique(result[by])
+    keys, group = np.unique(result[by], return_inverse=True)
+    order = np.argsort(group, kind="stable")  # each key's rows, contiguous
+    bounds = np.searchsorted(group[order], np.arange(keys.size + 1))
+    values = result[value][order]
+    holds = result[where][order] != 0 if where else None
     out = {by: keys, "fraction": [], "count": []}
     for q in quantiles:
         out[f"q{q:g}"] = []
-    for k in keys:
-        rows = result[by] == k
-        mask = rows & (result[where] != 0) if where else rows
-        out["fraction"].append(mask.sum() / rows.sum())
-        out["count"].append(int(rows.sum()))
-        vals = result[value][mask]
+    for lo, hi in zip(bounds[:-1], bounds[1:]):
+        vals = values[lo:hi] if holds is None else values[lo:hi][holds[lo:hi]]
+        out["fraction"].append(vals.size / (hi - lo))
+        out["count"].append(int(hi - lo))
         for q in quantiles:
             out[f"q{q:g}"].append(float(np.quantile(vals, q)) if vals.size else math.nan)
     return {k: np.asarray(v) for k, v in out.items()}
 
 
 def stick_slip_orbit(point):
-    """A ready-made fn for sweep: the belt model at the seed set with the point's
-    values (any Params field: v, beta, mu_s, mu_m, v_m, ...; 'law' is not a number
-    and cannot be swept). The stick-slip orbit exists where the slip arc from the
-    stick exit returns to the stick set (the return map on it is constant, design
+    """A ready-made point fn for sweep: the belt model at the seed set with the
+    point's values (any Params field: v, beta, mu_s, mu_m, v_m, ...; 'law' may
+    name the law). The stick-slip orbit exists where the slip arc from the stick
+    exit returns to the stick set (the return map on it is constant, design
     notes section 1), so one first return decides: stick_slip 1 with the orbit's
-    amplitude (x_max - x_min)/2 and period, or stick_slip 0 with both 0."""
-    from . import NumericalError, Params, periodic_orbit
-    try:
-        o = periodic_orbit(Params(**point))
-    except NumericalError:
-        return {"stick_slip": 0.0, "amplitude": 0.0, "period": 0.0}
-    return {"stick_slip": 1.0, "amplitude": (o.x_max - o.x_min) / 2, "period": o.period}
+    amplitude (x_max - x_min)/2 and period, or stick_slip 0 with both 0. The same
+    numbers as stick_slip_orbits (stickslip.orbits on one row)."""
+    from . import Params, orbits
+    p = Params(**point)
+    r = orbits(p, {"v": [p.v]}, threads=1)
+    return {"stick_slip": float(r["stick_slip"][0]),
+            "amplitude": float((r["x_max"][0] - r["x_min"][0]) / 2),
+            "period": float(r["period"][0])}
+
+
+def stick_slip_orbits(columns):
+    """The batch form of stick_slip_orbit (sweep takes it as a batch fn): the
+    seed set with the chunk's columns, by stickslip.orbits in one call on one
+    thread (a Dask worker is one thread). Every column must name a parameter of
+    the cubic law; rows without an orbit give stick_slip, amplitude, period 0."""
+    from . import Params, orbits
+    r = orbits(Params(), columns, threads=1)
+    return {"stick_slip": r["stick_slip"].astype(float),
+            "amplitude": (r["x_max"] - r["x_min"]) / 2, "period": r["period"]}
+
+
+stick_slip_orbits.batch = True

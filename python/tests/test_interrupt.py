@@ -22,7 +22,8 @@ except KeyboardInterrupt:
 # Each runs for seconds to minutes uninterrupted (measured on this machine:
 # simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart 27 s,
 # its regions on 1000 x 1000 cells about 90 s, orbit_diagram 5000 values and forced_basins
-# 401 x 401 starts well over 10 s each; smallest_disturbance at n = 10**8 about 20 s).
+# 401 x 401 starts well over 10 s each; smallest_disturbance at n = 10**8 about 20 s; orbits on
+# CVODE, 10^5 rows, 0.3 ms each: 15 s or more).
 CALLS = """{
  "simulate": lambda: stickslip.simulate(stickslip.Params(v_m=1e-6), xdot0=0.0),
  "continue_branch": lambda: stickslip.continue_branch(stickslip.Params(), "v", 0.05, 0.5,
@@ -30,6 +31,8 @@ CALLS = """{
  "continue_branch_progress": lambda: stickslip.continue_branch(
      stickslip.Params(), "v", 0.05, 0.5, max_step=5e-5, integrator="cvode",
      progress=lambda *a: None),
+ "orbits": lambda: stickslip.orbits(stickslip.Params(), {"v": [0.25] * 100000},
+                                    integrator="cvode"),
  "basins": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801),
  "basins_progress": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801,
                                              progress=lambda *a: None),
@@ -121,6 +124,9 @@ class CtrlC(unittest.TestCase):
 
     def test_forced_basins(self):
         self.check("forced_basins")
+
+    def test_orbits(self):  # the batch polls the signal on the calling thread, its workers stop
+        self.check("orbits")
 
 
 if __name__ == "__main__":

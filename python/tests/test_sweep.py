@@ -49,6 +49,18 @@ def dies_at_third(point):
     return {"y": point["v"]}
 
 
+def batch_fails(columns):
+    raise ValueError("no model in this chunk")
+
+
+def batch_nan_above(columns):
+    return {"y": np.where(columns["v"] > 0.3, np.nan, columns["v"])}
+
+
+def batch_short(columns):
+    return {"y": columns["v"][:-1]}
+
+
 def coulomb_orbit(point):
     return stickslip.stick_slip_orbit(dict(point, law="coulomb"))
 
@@ -67,6 +79,52 @@ class Sweep(unittest.TestCase):
         stats = stickslip.group_stats(serial, "v", "amplitude", where="stick_slip")
         self.assertEqual(stats["fraction"][0], 1.0)
         self.assertEqual(stats["fraction"][-1], 0.0)
+
+    def test_batch_fn_equals_the_point_fn_serial_and_on_a_local_cluster(self):
+        point = stickslip.sweep(stickslip.stick_slip_orbit, GRID, SAMPLE, scheduler="serial")
+        batch = stickslip.sweep(stickslip.stick_slip_orbits, GRID, SAMPLE, scheduler="serial",
+                                chunk_size=7)
+        dask = stickslip.sweep(stickslip.stick_slip_orbits, GRID, SAMPLE, n_workers=2,
+                               chunk_size=7)
+        self.assertEqual(batch.columns, point.columns)
+        self.assertTrue(np.array_equal(batch.data, point.data))
+        self.assertTrue(np.array_equal(dask.data, point.data))
+        self.assertFalse(dask.data.flags.writeable)
+
+    def test_points_are_generated_chunk_by_chunk_in_grid_major_order(self):
+        seen = []
+
+        def record(columns):
+            seen.append({k: v.copy() for k, v in columns.items()})
+            self.assertFalse(columns["v"].flags.writeable)
+            return {"y": columns["v"] * 0}
+
+        grid = {"v": [0.1, 0.2, 0.3], "beta": [0.01, 0.02]}
+        sample = {"mu_s": [0.4, 0.41, 0.42, 0.43]}
+        r = stickslip.sweep(record, grid, sample, scheduler="serial", chunk_size=5, batch=True)
+        self.assertEqual([len(c["v"]) for c in seen], [5, 5, 5, 5, 4])
+        # The last grid axis fastest, then the sample row (itertools.product order).
+        import itertools
+        want = [(v, b, m) for v, b in itertools.product(grid["v"], grid["beta"])
+                for m in sample["mu_s"]]
+        got = [t for c in seen for t in zip(c["v"], c["beta"], c["mu_s"])]
+        self.assertEqual(got, want)
+        self.assertEqual(r.columns, ["v", "beta", "mu_s", "y"])
+        self.assertEqual([tuple(row[:3]) for row in r.data], want)
+
+    def test_a_failing_batch_names_its_points(self):
+        grid = {"v": [0.1, 0.2, 0.25, 0.4, 0.1]}
+        cases = ((batch_fails, "points 3 to 4 (the first {'v': 0.4}): ValueError: no model"),
+                 (batch_nan_above, "point 3 {'v': 0.4}: y = nan is not a finite number"),
+                 (batch_short, "points 0 to 2 (the first {'v': 0.1}): fn returned y of shape "
+                               "(2,), expected (3,)"))
+        for fn, words in cases:
+            with self.assertRaises(stickslip.SweepError, msg=fn.__name__) as e:
+                stickslip.sweep(fn, grid, scheduler="serial", chunk_size=3, batch=True)
+            if fn is batch_fails:  # the first chunk fails first
+                words = words.replace("points 3 to 4 (the first {'v': 0.4})",
+                                      "points 0 to 2 (the first {'v': 0.1})")
+            self.assertIn(words, str(e.exception))
 
     def test_coulomb_orbits_match_the_closed_form(self):
         r = stickslip.sweep(coulomb_orbit, {"v": [0.1, 0.2, 0.3], "mu_s": [0.4, 0.5],
@@ -93,6 +151,22 @@ class Sweep(unittest.TestCase):
             back = np.array([[float(x) for x in l.split("\t")] for l in body[1:]])
             self.assertTrue(np.array_equal(back, r.data))
             self.assertEqual(os.stat(path).st_mode & 0o777, 0o644)
+
+    def test_rows_are_written_as_repr_writes_them(self):
+        # The rows are formatted in C (std::to_chars); the text must be repr's.
+        rng = np.random.default_rng(5)
+        data = rng.standard_normal((2000, 4)) * 10.0 ** rng.integers(-30, 30, (2000, 4))
+        data[:, 0] = np.round(rng.random(2000) * 1e6)
+        data[:13, 1] = [1e-5, 1e-4, 1.1e-4, 9.99999e-5, 123.0, 1e16, 9999999999999998.0, 1e17,
+                        -0.0, 0.0, 5e-324, 1.7976931348623157e308, 0.1]
+        r = stickslip.SweepResult(["a", "b", "c", "d"], data, {"k": "v"})
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "rows.tsv")
+            r.to_tsv(path)
+            with open(path) as f:
+                lines = f.read().splitlines()
+        self.assertEqual(lines[:2], ["# k: v", "a\tb\tc\td"])
+        self.assertEqual(lines[2:], ["\t".join(map(repr, row)) for row in data.tolist()])
 
     def test_bad_input_names_the_argument(self):
         for kwargs, word in [({"grid": {"v": []}}, "'v' is empty"),

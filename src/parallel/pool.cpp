@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <system_error>
@@ -22,7 +23,8 @@ PoolRun RunPool(int tasks, int threads, const std::function<void(int)>& task,
   PoolRun r;
   if (tasks <= 0) return r;
   std::atomic<int> next{0}, running{0};
-  std::mutex error_mutex;
+  std::mutex error_mutex, done_mutex;
+  std::condition_variable done;  // the last worker's exit ends the caller's wait at once
   std::string escaped;
   auto work = [&] {
     for (int k; !stop.load() && (k = next.fetch_add(1)) < tasks;) {
@@ -36,7 +38,11 @@ PoolRun RunPool(int tasks, int threads, const std::function<void(int)>& task,
         if (escaped.empty()) escaped = "task " + std::to_string(k) + ": unknown exception";
       }
     }
-    running.fetch_sub(1);
+    {
+      const std::lock_guard<std::mutex> lock(done_mutex);
+      running.fetch_sub(1);
+    }
+    done.notify_all();
   };
   const int want = std::min(BoundedThreads(threads), tasks);
   std::vector<std::thread> workers;
@@ -57,10 +63,13 @@ PoolRun RunPool(int tasks, int threads, const std::function<void(int)>& task,
     r.error = "no worker thread could start (" + start_error + ")";
     return r;
   }
-  while (running.load() > 0) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::unique_lock<std::mutex> lock(done_mutex);
+  while (!done.wait_for(lock, std::chrono::milliseconds(20), [&] { return running.load() == 0; })) {
+    lock.unlock();
     if (poll && !stop.load() && poll()) stop = true;
+    lock.lock();
   }
+  lock.unlock();
   for (std::thread& w : workers) w.join();
   r.error = escaped;
   return r;

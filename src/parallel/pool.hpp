@@ -25,7 +25,8 @@ struct PoolRun {
 /// Runs task(k) for k = 0 .. tasks - 1, each once, on min(BoundedThreads(threads),
 /// tasks) workers that take the next k until none is left or `stop` is set.
 /// The calling thread waits, calling poll() every 20 ms (on it alone: a
-/// cancel hook, progress); poll returning true sets `stop`. A thread that
+/// cancel hook, progress); poll returning true sets `stop`. It returns as soon
+/// as the last worker ends (not at the next 20 ms tick). A thread that
 /// fails to start leaves the tasks to those that did; if none did, no task
 /// runs and error says why.
 PoolRun RunPool(int tasks, int threads, const std::function<void(int)>& task,

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <mutex>
@@ -90,6 +91,22 @@ TEST(Pool, PollReturningTrueStopsTheRun) {
   EXPECT_TRUE(r.ok());
   EXPECT_TRUE(stop.load());
   EXPECT_LT(done.load(), 100000);
+}
+
+// A short run returns when its last worker ends, not at the next 20 ms poll:
+// a batch of a few rows (orbit_batch.hpp) costs microseconds, not 20 ms.
+TEST(Pool, AShortRunReturnsWithoutWaitingForThePoll) {
+  std::atomic<bool> stop{false};
+  int polls = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < 100; ++i) {
+    const PoolRun r = RunPool(
+        2, 2, [](int) {}, stop, [&] { return ++polls < 0; });
+    ASSERT_TRUE(r.ok());
+  }
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_LT(s, 1.0);  // waiting for the poll: 100 x 20 ms = 2 s
+  EXPECT_LT(polls, 50);
 }
 
 // The process's mapped bytes (VmSize of /proc/self/status).
