@@ -109,6 +109,12 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
   Prepare(z, section);
   for (o.iterations = 1; o.iterations <= options_.max_newton; ++o.iterations) {
     if (!Evaluate(z, section, &o)) return o;
+    if (!dp_.allFinite() || !r_.allFinite()) {  // g . f = 0: a tangential arrival
+      o.status = OrbitStatus::kSingular;
+      o.message = "the map's Jacobian is not finite (a tangential arrival on the section) at t = " +
+                  Num(run_.end.t);
+      return o;
+    }
     dp_.diagonal().array() -= 1.0;  // DP - I
     const Eigen::MatrixXd& A = dp_;
     if (std::abs(A.determinant()) <=
