@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <optional>
 
 #include "cli/app.hpp"
+#include "cli/figure_layout.hpp"
 #include "cli/output.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_control.hpp"
@@ -88,6 +90,7 @@ std::vector<BasinStabilityMark> BranchMarks(const Params& base, const Curve& c,
 int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const Params& base,
                            const BasinOptions& opts, double max_time, const Metadata& meta) {
   const Curve c = CurveFromArguments(args, base, opts);
+  const std::optional<FigureLayout> layout = FigureLayoutOf(args);  // --size, --font
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("basin_stability", format);
   const bool plots = !args.Flag("no_plots");
@@ -107,10 +110,11 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   TsvTable t = BasinStabilityTable(r, model, box);
   t.PrependMeta(meta);
   out.Write("basin_stability.tsv", t.str());
-  out.Write(
-      "basin_stability.gp",
+  std::string script =
       BasinStabilityScript(c.param, model + (r.status == BasinStatus::kOk ? "" : " (partial)"),
-                           format, FigureUnitsOf(ScalesFromArguments(args), c.param), marks));
+                           format, FigureUnitsOf(ScalesFromArguments(args), c.param), marks);
+  if (layout) script = ApplyFigureLayout(script, *layout);
+  out.Write("basin_stability.gp", script);
   GnuplotResult g{GnuplotStatus::kCancelled, ""};
   if (plots) g = out.Draw("basin_stability.gp", {figure}, cancelled);
   out.Commit(g.ok() ? std::vector<std::string>{} : std::vector<std::string>{figure});

@@ -35,6 +35,23 @@ class BasinStabilityApp : public stickslip::testing_util::AppTest {
   }
 };
 
+// --size and --font reach the curve's figure too (they were ignored: a
+// 10 x 7.2 in page whatever was asked); a bad --size is exit 2 before any work.
+TEST_F(BasinStabilityApp, CurveFigureTakesSizeAndFont) {
+  ASSERT_EQ(Run("--study " + kStudies + "/stribeck_basin_stability.ini --from 0.56 --to 0.64 " +
+                "--n 3 --format pdf --size single --font Sans,8 --no_plots --out " + dir_ + "/o"),
+            0)
+      << err_;
+  const std::string gp = ReadFile(dir_ + "/o/basin_stability.gp");
+  EXPECT_TRUE(Contains(gp, "set terminal pdfcairo size 3.5in,")) << gp.substr(0, 400);
+  EXPECT_TRUE(Contains(gp, "font 'Sans,8' fontscale 0.75")) << gp.substr(0, 400);
+  EXPECT_EQ(Run("--study " + kStudies + "/stribeck_basin_stability.ini --from 0.56 --to 0.64 " +
+                "--n 3 --size triple --no_plots --out " + dir_ + "/bad"),
+            2);
+  EXPECT_TRUE(Contains(err_, "--size")) << err_;
+  EXPECT_FALSE(Exists(dir_ + "/bad"));
+}
+
 TEST_F(BasinStabilityApp, PrintsOneLinePerAttractorAndWritesThemToOrbitsTsv) {
   ASSERT_EQ(Run("--study " + kStudies + "/stribeck_basin.ini --nx 5 --ny 5 --no_plots --out " +
                 dir_ + "/o"),
