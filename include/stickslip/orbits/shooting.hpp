@@ -6,8 +6,8 @@
 //  - a stick exit: stick phases collapse the state (the seed's case 1, where
 //    the belt's map is constant; the forced oscillator's exit-phase map);
 //  - a hyperplane crossed in one direction (the belt's x' = 0 falling).
-// On an event section DP = (I - f g^T / (g . f)) Phi at the arrival (Leine
-// & Nijmeijer 2004, section 7.3; Parker & Chua 1989, ch. 3), where g is the
+// On an event section DP = (I - f g^T / (g . f)) Phi at the arrival (the
+// Poincare map's Jacobian; Leine & Nijmeijer 2004, ch. 7), where g is the
 // event's gradient; a clock's column of Phi follows from the flow identity
 // Phi f(z0) = f(z(T)). The Floquet multipliers are DP's eigenvalues, less
 // the 0 of the flow direction on an event section.
