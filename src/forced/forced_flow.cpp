@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "forced_shooting.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
@@ -68,17 +69,9 @@ ForcedStatus Status(const FlowRun& r, const ForcedOptions& o, std::string* why) 
 }
 }  // namespace
 
-// One flow per thread for the options last used (a ForcedFlow is made per
-// shooting call, per period of an orbit diagram: the flow, its steppers and
-// its buffers are kept, the model assigned).
-ForcedFlow::Scratch& ForcedFlow::Cache(const ForcedModel& model, const ForcedOptions& o) {
-  thread_local Scratch sc;
-  const FlowOptions* f = sc.flow ? &sc.flow->options() : nullptr;
-  if (f && f->rtol == o.rtol && f->atol == o.atol && f->integrator == o.integrator &&
-      f->method == o.method && f->max_steps == o.max_steps && f->max_switches == o.max_events) {
-    sc.flow->set_system(model);
-    return sc;
-  }
+namespace forced_detail {
+
+FlowOptions FlowOptionsOf(const ForcedOptions& o) {
   FlowOptions fo;
   fo.rtol = o.rtol;
   fo.atol = o.atol;
@@ -86,6 +79,26 @@ ForcedFlow::Scratch& ForcedFlow::Cache(const ForcedModel& model, const ForcedOpt
   fo.method = o.method;
   fo.max_steps = o.max_steps;
   fo.max_switches = o.max_events;
+  return fo;
+}
+
+bool SameFlowOptions(const FlowOptions& a, const FlowOptions& b) {
+  return a.rtol == b.rtol && a.atol == b.atol && a.integrator == b.integrator &&
+         a.method == b.method && a.max_steps == b.max_steps && a.max_switches == b.max_switches;
+}
+
+}  // namespace forced_detail
+
+// One flow per thread for the options last used (a ForcedFlow is made per
+// shooting call, per period of an orbit diagram: the flow, its steppers and
+// its buffers are kept, the model assigned).
+ForcedFlow::Scratch& ForcedFlow::Cache(const ForcedModel& model, const ForcedOptions& o) {
+  thread_local Scratch sc;
+  const FlowOptions fo = forced_detail::FlowOptionsOf(o);
+  if (sc.flow && forced_detail::SameFlowOptions(sc.flow->options(), fo)) {
+    sc.flow->set_system(model);
+    return sc;
+  }
   sc.flow = std::make_unique<Flow>(model, fo);
   sc.request = FlowRequest();
   sc.request.extrema = {0, 1};

@@ -32,23 +32,15 @@ Shooting& CachedShooting(const ForcedModel& model, const ForcedOrbitOptions& o) 
   if (!(o.tol > 0) || o.max_newton < 1)
     throw InvalidArgument("orbit options: tol must be > 0 and max_newton >= 1");
   ShootingOptions so;
-  so.flow.rtol = o.flow.rtol;
-  so.flow.atol = o.flow.atol;
-  so.flow.integrator = o.flow.integrator;
-  so.flow.method = o.flow.method;
-  so.flow.max_steps = o.flow.max_steps;
-  so.flow.max_switches = o.flow.max_events;
+  so.flow = FlowOptionsOf(o.flow);
   so.max_newton = o.max_newton;
   so.tol = o.tol;
   so.max_steps = o.flow.max_steps;
   thread_local std::unique_ptr<Shooting> cached;
   if (cached) {
     const ShootingOptions& c = cached->options();
-    const FlowOptions& f = c.flow;
-    if (f.rtol == so.flow.rtol && f.atol == so.flow.atol && f.integrator == so.flow.integrator &&
-        f.method == so.flow.method && f.max_steps == so.flow.max_steps &&
-        f.max_switches == so.flow.max_switches && c.max_newton == so.max_newton &&
-        c.tol == so.tol && c.max_steps == so.max_steps) {
+    if (SameFlowOptions(c.flow, so.flow) && c.max_newton == so.max_newton && c.tol == so.tol &&
+        c.max_steps == so.max_steps) {
       cached->set_system(model);
       return *cached;
     }
