@@ -186,4 +186,5 @@ PYBIND11_MODULE(_core, m) {
   BindForced(m);
   BindRestart(m);
   BindBatch(m);
+  BindOrbitBranch(m);
 }

@@ -102,6 +102,7 @@ void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
 void BindBatch(py::module_& m);  // py_batch.cpp: orbits()
+void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.
 py::object GetItem(const py::object& self, const std::string& key);

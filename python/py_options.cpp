@@ -64,11 +64,16 @@ void BindEnums(py::module_& m) {
       .value("stick_slip", PointKind::kStickSlip)
       .value("pure_slip", PointKind::kPureSlip)
       .value("equilibrium", PointKind::kEquilibrium, "steady sliding");
-  Enum<SpecialKind>(m, "SpecialKind", "Special point of a branch (label GR, HB, LP).",
+  Enum<SpecialKind>(m, "SpecialKind",
+                    "Special point of a branch (label GR, HB, LP, PD, NS, SL; none: a plain row).",
                     &SpecialLabel)
       .value("grazing", SpecialKind::kGrazing, "GR: the stick phase shrinks to zero")
       .value("hopf", SpecialKind::kHopf, "HB: 2 beta + mu'(v) = 0")
-      .value("fold", SpecialKind::kFold, "LP: the branch turns back");
+      .value("fold", SpecialKind::kFold, "LP: the branch turns back")
+      .value("period_doubling", SpecialKind::kPeriodDoubling, "PD: a multiplier at -1")
+      .value("torus", SpecialKind::kTorus, "NS: a complex pair on the unit circle")
+      .value("sliding", SpecialKind::kSliding, "SL: the switching sequence changes")
+      .value("none", SpecialKind::kNone, "a plain row");
   Enum<ContinuationStatus>(m, "ContinuationStatus", "How a continuation ended.",
                            &ContinuationStatusName)
       .value("ok", ContinuationStatus::kOk)

@@ -58,6 +58,10 @@ class SpecialKind(enum.IntEnum):
     grazing = 0
     hopf = 1
     fold = 2
+    period_doubling = 3
+    torus = 4
+    sliding = 5
+    none = 6
 class ContinuationStatus(enum.IntEnum):
     ok = 0
     failed = 1

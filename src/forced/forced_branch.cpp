@@ -88,7 +88,7 @@ Bracket Monitor::AcrossEdge(const Bracket& br, bool chord, double span,
   Bracket out = br, fine;
   std::string why;
   const double step =
-      std::max(std::abs(span) / 8, Tolerances::kForcedEdgeStep * (1 + std::abs(out.lo.p)));
+      std::max(std::abs(span) / 8, Tolerances::kBranchEdgeStep * (1 + std::abs(out.lo.p)));
   bool found_edge = false, edge_only = false;
   for (const double sign : {1.0, -1.0})
     if (!found_edge && !edge_only) {
@@ -134,7 +134,7 @@ void Monitor::Special(const VectorXd& a, const VectorXd& b, const ForcedBranchRo
     const double far = chord ? br.hi.p : br.p_hi;
     const double gap = std::max({std::abs(far - br.lo.p), std::abs(br.hi.x0 - br.lo.x0),
                                  std::abs(br.hi.xdot0 - br.lo.xdot0)});
-    const double edge_gap = Tolerances::kForcedEdgeGap * o_.locate_tol;
+    const double edge_gap = Tolerances::kBranchEdgeGap * o_.locate_tol;
     if (!chord || gap > edge_gap * (1 + std::abs(far) + std::abs(br.lo.x0)))
       br = AcrossEdge(br, chord, b[2] - from[2], row), jumped_ = true;
     // Edges within the tolerance are one point (the two halves of a
@@ -186,7 +186,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
   if (std::max(std::abs(row.extrema.x_min), std::abs(row.extrema.x_max)) > o_.max_amplitude) {
     out_.status = ForcedBranchStatus::kUnbounded;
     stopped_ = true;
-  } else if ((row.p - from_) * dir_ < -Tolerances::kForcedTurnBack * std::abs(to_ - from_)) {
+  } else if ((row.p - from_) * dir_ < -Tolerances::kBranchTurnBack * std::abs(to_ - from_)) {
     out_.status = ForcedBranchStatus::kLeftRange;
     out_.message = "the branch turned back past " + std::string(ForcedAxisName(axis_)) + " = " +
                    Num(from_, 12);
@@ -240,7 +240,7 @@ ForcedBranch TraceBranch(const ForcedParams& base, ForcedAxis axis, double from,
     const ForcedBranchRow* prev = out.rows.size() >= 2 ? &out.rows[out.rows.size() - 2] : nullptr;
     const double dp = prev ? last.p - prev->p : 0;
     const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : trace_dir;
-    const double step = std::max(std::abs(dp), Tolerances::kForcedEdgeStep * std::abs(to - from));
+    const double step = std::max(std::abs(dp), Tolerances::kBranchEdgeStep * std::abs(to - from));
     ForcedBranchRow before, after;
     after.p = last.p, before.p = NAN;  // before.p: set where the edge is bisected
     std::string why = "more than max_jumps = " + std::to_string(options.max_jumps) + " jumps";

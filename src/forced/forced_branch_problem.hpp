@@ -1,37 +1,32 @@
 // Private to src/forced/: the stroboscopic residual as a PalcProblem.
 #pragma once
 
+#include "../continuation/orbit_problem.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip::forced_detail {
 
-// F(x, x', p) = P^m(x, x'; p) - (x, x'); dF/d(x, x') from the variational
-// run, dF/dp by central differences of two plain runs.
+// F(x, x', p) = P^m(x, x'; p) - (x, x') at theta = 0: the one branch
+// driver's problem (src/continuation/orbit_problem.hpp) on the forced model's
+// stroboscopic section, with the forced rows and domain message.
 class StrobeProblem final : public PalcProblem {
  public:
-  StrobeProblem(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o)
-      : base_(base), axis_(axis), o_(o) {}
+  StrobeProblem(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o);
   int unknowns() const override { return 3; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
-                std::string* why) override;
+                std::string* why) override {
+    return core_.Evaluate(u, f, jac, why);
+  }
   std::string DomainError(const Eigen::VectorXd& u) const override;
   // The row of the last evaluated point.
   ForcedBranchRow Row() const;
-  // det(DP^m - I) (LP) and det(DP^m + I) (PD) at the last evaluated point.
-  double FoldTest() const { return (last_.jacobian - Mat2::Identity()).determinant(); }
-  double FlipTest() const { return (last_.jacobian + Mat2::Identity()).determinant(); }
-  // det(DP^m) - 1: |mu|^2 - 1 for a complex pair (NS).
-  double TorusTest() const { return last_.jacobian.determinant() - 1; }
 
  private:
-  bool End(const ForcedParams& q, const ForcedPoint& z, bool variational, ForcedRun* run,
-           std::string* why) const;
-
   ForcedParams base_;
   ForcedAxis axis_;
   const ForcedBranchOptions& o_;
-  ForcedRun last_;
-  Eigen::Vector3d last_u_ = Eigen::Vector3d::Zero();
+  OrbitBranchOptions core_options_;
+  orbit_detail::OrbitProblem core_;
 };
 
 // The branch through `first` (corrected with component `fixed` held), traced

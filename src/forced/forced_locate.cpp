@@ -26,7 +26,7 @@ bool Locate(Palc& palc, StrobeProblem& problem, const VectorXd& a, const VectorX
   out->hi = problem.Row();
   if (!at(lo, &g_lo) || (g_lo > 0) == (g_hi > 0)) return false;
   out->lo = problem.Row();
-  for (int it = 0; it < Tolerances::kForcedBisectionCap && hi - lo > tol; ++it) {
+  for (int it = 0; it < Tolerances::kBranchBisectionCap && hi - lo > tol; ++it) {
     const double mid = 0.5 * (lo + hi);
     double g = 0;
     if (!at(mid, &g)) {
@@ -92,10 +92,10 @@ const char* const kWhat[3] = {"fold: a multiplier at +1", "period doubling: a mu
 void TestPoints(Palc& palc, StrobeProblem& problem, const BranchPoint& a, const BranchPoint& b,
                 double tol, std::vector<ForcedBranchRow>* found, int depth) {
   if (!SameStructure(a.row, b.row)) return;
-  const double step = Tolerances::kForcedMultiplierStep;
+  const double step = Tolerances::kBranchMultiplierStep;
   const bool far = MultiplierMove(a.row, b.row) > step;
   const bool near = NearCritical(a.row, step) || NearCritical(b.row, step);
-  if ((far && depth < Tolerances::kForcedSplitDepth) || (near && depth == 0)) {
+  if ((far && depth < Tolerances::kBranchSplitDepth) || (near && depth == 0)) {
     const VectorXd chord = (b.u - a.u).cwiseQuotient(
         palc.options().scale.size() ? palc.options().scale : VectorXd::Ones(3));
     const PalcCorrection c = palc.Correct(0.5 * (a.u + b.u), chord.normalized());
@@ -114,7 +114,7 @@ void TestPoints(Palc& palc, StrobeProblem& problem, const BranchPoint& a, const 
     auto test = [&] { return RowTest(problem.Row(), i); };
     if (!Locate(palc, problem, a.u, b.u, test, tol, &br)) continue;
     if (!SameStructure(br.mid, a.row)) continue;
-    if (i == 2 && !TorusPair(br.mid, Tolerances::kForcedTorusPair)) continue;
+    if (i == 2 && !TorusPair(br.mid, Tolerances::kBranchTorusPair)) continue;
     br.mid.label = kLabels[i];
     br.mid.description = kWhat[i];
     found->push_back(br.mid);

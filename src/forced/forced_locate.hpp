@@ -48,9 +48,9 @@ double MultiplierMove(const ForcedBranchRow& a, const ForcedBranchRow& b);
 
 // Every LP, PD and NS point between a and b (one stick structure; none
 // otherwise), located on the chord to tol and appended to *found. The step
-// is halved (at most kForcedSplitDepth times) while a multiplier moves more
-// than kForcedMultiplierStep across it, and once where a multiplier lies
-// within kForcedMultiplierStep of -1, +1 or the unit circle at either end.
+// is halved (at most kBranchSplitDepth times) while a multiplier moves more
+// than kBranchMultiplierStep across it, and once where a multiplier lies
+// within kBranchMultiplierStep of -1, +1 or the unit circle at either end.
 void TestPoints(Palc& palc, StrobeProblem& problem, const BranchPoint& a, const BranchPoint& b,
                 double tol, std::vector<ForcedBranchRow>* found, int depth = 0);
 

@@ -31,25 +31,25 @@ struct FixedTolerances {
   // Forced Taylor roots: deflated coefficients below kDeflateUlps (n + 1)
   // kDeflateEps scale are rounding (64 ulp per degree).
   static constexpr double kDeflateUlps = 64, kDeflateEps = 2.2e-16;
-  // Forced branches: dP/dp by central differences of step kForcedBranchDifference
+  // Orbit branches: dP/dp by central differences of step kBranchDifference
   // max(1, |p|) (about cbrt(eps): truncation and rounding balanced).
-  static constexpr double kForcedBranchDifference = 6e-6;
-  // Forced branches: the edge search behind a failed chord steps at least
-  // kForcedEdgeStep (1 + |p|), and a switched branch's kForcedEdgeStep |range|.
-  static constexpr double kForcedEdgeStep = 1e-6;
-  // Forced branches: a branch back past its start by kForcedTurnBack times the
+  static constexpr double kBranchDifference = 6e-6;
+  // Orbit branches: the edge search behind a failed chord steps at least
+  // kBranchEdgeStep (1 + |p|), and a switched branch's kBranchEdgeStep |range|.
+  static constexpr double kBranchEdgeStep = 1e-6;
+  // Orbit branches: a branch back past its start by kBranchTurnBack times the
   // range has left it (a turn within rounding of the start is not).
-  static constexpr double kForcedTurnBack = 1e-3;
-  // Forced branches: an event bracket wider than kForcedEdgeGap locate_tol
+  static constexpr double kBranchTurnBack = 1e-3;
+  // Orbit branches: an event bracket wider than kBranchEdgeGap locate_tol
   // (1 + |p| + |x|) straddles a jump of the map, and two edges within it (in
   // p) are one (the two halves of a symmetric orbit reach the band together).
-  static constexpr double kForcedEdgeGap = 1e3;
-  // Forced branches: a step across which a multiplier moves more than
-  // kForcedMultiplierStep, or (once) one within it of -1, +1 or the unit
+  static constexpr double kBranchEdgeGap = 1e3;
+  // Orbit branches: a step across which a multiplier moves more than
+  // kBranchMultiplierStep, or (once) one within it of -1, +1 or the unit
   // circle, is halved before the test functions' signs are compared (two
   // crossings in one step, issue 35); an NS point's pair lies within
-  // kForcedTorusPair of the unit circle (a located one: 1e-9).
-  static constexpr double kForcedMultiplierStep = 0.1, kForcedTorusPair = 1e-6;
+  // kBranchTorusPair of the unit circle (a located one: 1e-9).
+  static constexpr double kBranchMultiplierStep = 0.1, kBranchTorusPair = 1e-6;
   // Forced chart curves: a section point beyond this (|x| or |x'|) has left
   // the branch's domain (ForcedBranchOptions::max_amplitude's default).
   static constexpr double kForcedCurveAmplitude = 1e3;
@@ -69,10 +69,14 @@ struct FixedTolerances {
   static constexpr int kDisturbanceHalvings = 60;
   // Seed estimates (estimates.cpp FirstCrossing): bisections to kCrossingWidth.
   static constexpr int kCrossingBisectionCap = 200;
-  // Forced branches (forced_branch.cpp): bisections of a bracket to its tol.
-  static constexpr int kForcedBisectionCap = 60;
-  // Forced branches: halvings of a step between two rows (kForcedMultiplierStep).
-  static constexpr int kForcedSplitDepth = 6;
+  // Orbit branches: bisections of a bracket to its tol.
+  static constexpr int kBranchBisectionCap = 60;
+  // Orbit branches: halvings of a step between two rows (kBranchMultiplierStep).
+  static constexpr int kBranchSplitDepth = 6;
+  // Orbit branches: changes of the switching sequence located between two rows.
+  static constexpr int kBranchEdges = 4;
+  // Orbit branches: doublings of the natural step across a corner or jump.
+  static constexpr int kBranchJumpDoublings = 20;
   // Chart regions (chart_regions.cpp): section-map returns from the exit
   // point before a run neither decayed nor settled is judged (kRegionLive).
   static constexpr int kRegionMapReturns = 150;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {
@@ -51,16 +52,16 @@ std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& M) {
 }
 }  // namespace
 
-void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p) {
+void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variational) {
   const System& s = system();
   FlowRequest& rq = request_;
   rq.t_max = z.t + (p.kind == SectionKind::kTime ? p.time : options_.max_return_time);
-  rq.variational = true;
+  rq.variational = variational;
   rq.stop_at_exit = p.kind == SectionKind::kStickExit ? p.returns : 0;
   rq.sections.clear();
   if (p.kind == SectionKind::kSurface) rq.sections.push_back(p.surface);
   rq.extrema.clear();
-  if (options_.extrema)
+  if (options_.extrema && variational)
     for (int i = 0; i < s.tangent_dimension(); ++i) rq.extrema.push_back(i);
   rq.extrema_in_steps = options_.flow.integrator == Integrator::kTaylor;
   rq.max_steps = options_.max_steps;
@@ -90,7 +91,44 @@ bool Shooting::Evaluate(const FlowPoint& z, const PoincareSection& p, PeriodicOr
                  ModeSetName(z.mode, system().contacts());
     return false;
   }
-  MapJacobian(z, p);
+  if (request_.variational) MapJacobian(z, p);
+  return true;
+}
+
+void Shooting::Residual(const FlowPoint& z, const PoincareSection& p) {
+  const System& s = system();
+  const int n = s.dimension(), nt = s.tangent_dimension();
+  if (p.kind == SectionKind::kTime) {
+    r_ = run_.end.z.head(nt) - z.z.head(nt);
+    return;
+  }
+  r_ = run_.end.z - z.z;
+  if (n > nt) r_[nt] -= 2 * M_PI * p.turns;
+}
+
+bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jacobian,
+                   Eigen::VectorXd* residual, PeriodicOrbit* orbit) {
+  Check(section);
+  const System& s = system();
+  if (z.z.size() != s.dimension())
+    throw InvalidArgument("the point has " + std::to_string(z.z.size()) +
+                          " components, the system " + std::to_string(s.dimension()));
+  FlowPoint at = z;
+  if (section.kind == SectionKind::kTime) at.mode = ModeOf(s, at.z);
+  Prepare(at, section, jacobian);
+  if (!Evaluate(at, section, orbit)) return false;
+  if (jacobian) {
+    Describe(at, section, orbit);
+  } else {
+    Residual(at, section);
+    orbit->start = at;
+    orbit->period = run_.end.t - at.t;
+    orbit->sticks = run_.sticks, orbit->exits = run_.exits, orbit->crossings = run_.crossings;
+    orbit->modes = run_.modes;
+    orbit->steps = run_.steps;
+  }
+  orbit->status = OrbitStatus::kOk;
+  *residual = r_;
   return true;
 }
 
@@ -118,7 +156,7 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   const int n = s.dimension(), nt = s.tangent_dimension();
   if (p.kind == SectionKind::kTime) {
     dp_ = run_.jacobian;
-    r_ = run_.end.z.head(nt) - z.z.head(nt);
+    Residual(z, p);
     return;
   }
   f0_.resize(n);
@@ -132,8 +170,7 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   EventGradient(p);
   // DP = (I - f g^T / (g . f)) Phi at the arrival.
   dp_ = full_ - f1_ * (grad_.transpose() * full_) / grad_.dot(f1_);
-  r_ = run_.end.z - z.z;
-  if (n > nt) r_[nt] -= 2 * M_PI * p.turns;
+  Residual(z, p);
 }
 
 void Shooting::OntoSection(const PoincareSection& p, FlowPoint* z) const {

@@ -13,34 +13,16 @@
 #include <string>
 #include <vector>
 
+#include "forced_flip_reference.hpp"
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
-#include "reference/forced_lyapunov.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
 namespace {
 
+using forced_reference::RefFlip;
 using reference::LReal;
-
-// det(Phi + I) at the reference map's fixed point near (x, y), which it
-// updates; ok false if Newton fails or the orbit has no single stick.
-LReal RefFlip(const ForcedParams& p, LReal* x, LReal* y, bool* ok) {
-  const reference::ForcedRef m(p);
-  for (int it = 0; it < 30; ++it) {
-    const reference::RefPeriod r = reference::RefOnePeriod(m, *x, *y, false, 1e-17L);
-    *ok = r.ok && r.sticks == 1 && !r.stuck;
-    if (!*ok) return 0;
-    const LReal a = r.phi[0][0] - 1, b = r.phi[0][1], c = r.phi[1][0], d = r.phi[1][1] - 1;
-    const LReal fx = r.x - *x, fy = r.y - *y, det = a * d - b * c;
-    const LReal dx = -(d * fx - b * fy) / det, dy = -(-c * fx + a * fy) / det;
-    *x += dx, *y += dy;
-    if (std::abs(dx) + std::abs(dy) < 1e-16L)
-      return (r.phi[0][0] + 1) * (r.phi[1][1] + 1) - r.phi[0][1] * r.phi[1][0];
-  }
-  *ok = false;
-  return 0;
-}
 
 // The reference's roots of det(Phi + I) on a grid of n steps over [lo, hi],
 // each bisected to 1e-13, from the state of the branch row nearest each value

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/continuation/special_kind.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit.hpp"
@@ -54,18 +55,6 @@ struct BranchPoint {
   /// pure slip the section point (x*, 0), steady sliding (xbar, 0).
   double x_start = 0, xdot_start = 0;
 };
-
-/// GR grazing-sliding, HB Hopf, LP fold.
-enum class SpecialKind { kGrazing, kHopf, kFold };
-template <>
-struct EnumNames<SpecialKind> {
-  static constexpr NamedValue<SpecialKind> kTable[] = {
-      {SpecialKind::kGrazing, "GR"},
-      {SpecialKind::kHopf, "HB"},
-      {SpecialKind::kFold, "LP"},
-  };
-};
-const char* SpecialLabel(SpecialKind k);  // "GR", "HB", "LP"
 
 /// A located special point with the orbit there and a one-line description.
 struct SpecialPoint {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "stickslip/continuation/branch_status.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/forced/orbit.hpp"
 #include "stickslip/names.hpp"
@@ -73,30 +74,8 @@ struct ForcedBranchRow {
   std::string description;                 ///< special points only: one line
 };
 
-enum class ForcedBranchStatus {
-  kReachedEnd,    ///< the last row is at p = to
-  kUnbounded,     ///< |x| passed max_amplitude (a resonance without damping)
-  kStepTooSmall,  ///< the corrector failed below ds_min (message says why)
-  kStartFailed,   ///< no orbit at p = from near the guess
-  kMaxPoints,
-  kClosed,     ///< the branch came back to its start
-  kCancelled,  ///< palc.cancelled() returned true (a signal, a time limit)
-  kLeftRange,  ///< the branch turned back and passed p = from
-};
+using ForcedBranchStatus = BranchStatus;
 const char* ForcedBranchStatusName(ForcedBranchStatus s);
-template <>
-struct EnumNames<ForcedBranchStatus> {
-  static constexpr NamedValue<ForcedBranchStatus> kTable[] = {
-      {ForcedBranchStatus::kReachedEnd, "reached-end"},
-      {ForcedBranchStatus::kUnbounded, "unbounded"},
-      {ForcedBranchStatus::kStepTooSmall, "step-too-small"},
-      {ForcedBranchStatus::kStartFailed, "start-failed"},
-      {ForcedBranchStatus::kMaxPoints, "max-points"},
-      {ForcedBranchStatus::kClosed, "closed"},
-      {ForcedBranchStatus::kCancelled, "cancelled"},
-      {ForcedBranchStatus::kLeftRange, "left-range"},
-  };
-};
 
 struct ForcedBranchOptions {
   /// m's upper bound (1000 forcing periods, as a restart file's).

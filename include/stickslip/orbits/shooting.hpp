@@ -112,12 +112,22 @@ class Shooting {
   /// system with several clocks, returns < 1).
   PeriodicOrbit Find(const FlowPoint& guess, const PoincareSection& section);
 
+  /// One evaluation of the map at z, no Newton (a continuation's residual):
+  /// *residual = P(z) - z on the unknowns (kTime: the tangent block, z's
+  /// mode set by Filippov's rule; event sections: all n, a clock's less 2 pi
+  /// turns). With `jacobian`, *orbit holds what Find gives at a fixed point
+  /// (DP, multipliers, extremes); without, only the counts, modes and
+  /// period. False, with orbit->status and message, where the map fails.
+  bool Map(const FlowPoint& z, const PoincareSection& section, bool jacobian,
+           Eigen::VectorXd* residual, PeriodicOrbit* orbit);
+
   Flow& flow() { return flow_; }
 
  private:
   void Check(const PoincareSection& s) const;
-  void Prepare(const FlowPoint& z, const PoincareSection& s);
+  void Prepare(const FlowPoint& z, const PoincareSection& s, bool variational = true);
   bool Evaluate(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o);
+  void Residual(const FlowPoint& z, const PoincareSection& s);
   void MapJacobian(const FlowPoint& z, const PoincareSection& s);
   void EventGradient(const PoincareSection& s);
   void OntoSection(const PoincareSection& s, FlowPoint* z) const;

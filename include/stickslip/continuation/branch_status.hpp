@@ -1,0 +1,29 @@
+// How a branch of periodic orbits ended: one status for every system's
+// branches (orbit_branch.hpp) and the forced oscillator's (forced/branch.hpp).
+#pragma once
+
+#include "stickslip/names.hpp"
+
+namespace stickslip {
+
+enum class BranchStatus {
+  kReachedEnd,    ///< the last row is at p = to
+  kUnbounded,     ///< the orbit passed max_amplitude (a resonance without damping)
+  kStepTooSmall,  ///< the corrector failed below ds_min (message says why and where)
+  kStartFailed,   ///< no orbit at p = from near the guess
+  kMaxPoints,
+  kClosed,     ///< the branch came back to its start
+  kCancelled,  ///< palc.cancelled() returned true (a signal, a time limit)
+  kLeftRange,  ///< the branch turned back and passed p = from
+};
+template <>
+struct EnumNames<BranchStatus> {
+  static constexpr NamedValue<BranchStatus> kTable[] = {
+      {BranchStatus::kReachedEnd, "reached-end"},      {BranchStatus::kUnbounded, "unbounded"},
+      {BranchStatus::kStepTooSmall, "step-too-small"}, {BranchStatus::kStartFailed, "start-failed"},
+      {BranchStatus::kMaxPoints, "max-points"},        {BranchStatus::kClosed, "closed"},
+      {BranchStatus::kCancelled, "cancelled"},         {BranchStatus::kLeftRange, "left-range"},
+  };
+};
+
+}  // namespace stickslip

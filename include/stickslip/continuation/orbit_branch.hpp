@@ -1,0 +1,83 @@
+// One branch driver for the periodic orbits of any system (system.hpp;
+// docs/theory.md, "One branch driver"): pseudo-arclength continuation
+// (palc.hpp) of the fixed points of a Poincare map (shooting.hpp),
+//   F(u, p) = P(u; p) - u = 0,
+// in the map's unknowns u (a stroboscopic section: the tangent block; an
+// event section: the whole state, where DP - I stays regular because DP maps
+// the flow direction to 0) and one parameter p of the system (the lens, an
+// index). dF/du = DP - I from the variational equations and saltations;
+// dF/dp by central differences of two plain runs. Special points between two
+// rows, located on the branch by bisection (Kuznetsov 2004, ch. 10):
+//   LP  prod (mu_i - 1) changes sign;
+//   PD  prod (mu_i + 1) changes sign;
+//   NS  prod_{i<j} (mu_i mu_j - 1) changes sign with a complex pair on the
+//       unit circle there (the bialternate product's eigenvalues; a real pair
+//       with mu_i mu_j = 1 is a neutral saddle, none);
+//   SL  the orbit's sticks, exits or crossings per period change.
+// A step across which a multiplier moves far is halved first, so two
+// crossings in one step are both found. Where the corrector fails (a corner
+// of the branch sharper than a right angle, as at the belt's grazing, or a
+// jump of the map) the branch goes on from the orbit beyond, found by
+// natural steps in p, and the edge between is bisected in p.
+#pragma once
+
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "stickslip/continuation/branch_status.hpp"
+#include "stickslip/continuation/palc.hpp"
+#include "stickslip/continuation/special_kind.hpp"
+#include "stickslip/orbits/shooting.hpp"
+
+namespace stickslip {
+
+/// Settings of ContinueOrbits, validated once.
+struct OrbitBranchOptions {
+  ShootingOptions shooting;  ///< the start's Newton and every map's flow
+  PalcOptions palc;          ///< on (u, p)
+  /// Rows stop beyond this |z_i| on the tangent block (kUnbounded).
+  double max_amplitude = 1e3;
+  double locate_tol = 1e-12;  ///< special points: the bracket on the chord, relative
+  /// Where the corrector fails (a corner sharper than a right angle, or a
+  /// jump of the map): at most this many restarts from the orbit beyond,
+  /// found by natural steps in p, with the edge between located as SL.
+  int max_jumps = 50;
+  /// Empty if valid, else one line naming the offending value.
+  std::string ValidationError() const;
+};
+
+/// One orbit of a branch.
+struct OrbitRow {
+  double p = 0;
+  FlowPoint start;  ///< the section point, with its mode
+  double period = 0;
+  int sticks = 0, exits = 0, crossings = 0;  ///< per period
+  Eigen::VectorXd lo, hi;                    ///< extremes of the tangent components
+  std::vector<std::complex<double>> multipliers;
+  bool stable = false;
+  SpecialKind label = SpecialKind::kNone;  ///< special points only
+  std::string description;                 ///< special points only: one line
+};
+
+struct OrbitBranch {
+  BranchStatus status = BranchStatus::kStartFailed;
+  std::string message;
+  std::vector<OrbitRow> rows;     ///< the special points among them, in order
+  std::vector<OrbitRow> special;  ///< LP, PD, NS and SL points, located
+  int jumps = 0;                  ///< restarts across corners and jumps
+  int evaluations = 0;            ///< of the map with its Jacobian
+  double seconds = 0;
+};
+
+/// The branch of the orbit through `guess` on `section` of `system`, in its
+/// parameter `parameter` from its value in `system` to `to`. A stroboscopic
+/// section's time follows the clock's frequency along the branch (its turns
+/// stay). Throws InvalidArgument on an invalid system, options, parameter
+/// index, range or section. options.palc.cancelled (if set) is polled before
+/// every correction and inside long runs.
+OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
+                           const PoincareSection& section, double to,
+                           const OrbitBranchOptions& options);
+
+}  // namespace stickslip

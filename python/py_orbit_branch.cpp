@@ -1,0 +1,183 @@
+// The one branch driver in the Python module: continue_orbits(system, ...)
+// for the belt (Params) and the forced oscillator (ForcedParams) alike, on a
+// stroboscopic, stick-exit or x' = 0 section, without the GIL and with Ctrl-C
+// (docs/library.md, "Python").
+#include <pybind11/complex.h>
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <complex>
+#include <memory>
+
+#include "py_common.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/model/forced.hpp"
+#include "stickslip/model/model.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+struct PyOrbitBranch {
+  BranchStatus status = BranchStatus::kStartFailed;
+  std::string message, parameter;
+  py::array p, state, period, sticks, exits, crossings, lo, hi, multipliers, stable, label;
+  std::vector<py::tuple> special;  // (label, p, description)
+  int jumps = 0, evaluations = 0;
+  double seconds = 0;
+};
+
+std::unique_ptr<System> SystemOf(const py::object& system) {
+  if (py::isinstance<ForcedParams>(system))
+    return std::make_unique<ForcedModel>(system.cast<ForcedParams>());
+  if (py::isinstance<Params>(system)) return std::make_unique<Model>(system.cast<Params>());
+  throw InvalidArgument("system: " + py::repr(system).cast<std::string>() +
+                        " is neither Params nor ForcedParams");
+}
+
+PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z,
+                          int m) {
+  if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
+  if (name == "stroboscopic") {
+    if (s.clocks() != 1)
+      throw InvalidArgument("section: 'stroboscopic' needs a forced system (ForcedParams)");
+    return PoincareSection::Stroboscopic(s, z, m);
+  }
+  if (name == "stick-exit") return PoincareSection::StickExit(0, m, s.clocks() ? m : 0);
+  if (name == "xdot-falling") {
+    if (s.clocks() != 0 || m != 1)
+      throw InvalidArgument("section: 'xdot-falling' is the belt's (Params), once per period");
+    PoincareSection p;
+    p.kind = SectionKind::kSurface;
+    p.surface.g.terms[0] = {1, 1.0};
+    p.surface.g.size = 1;
+    p.surface.direction = -1;
+    return p;
+  }
+  throw InvalidArgument("section = '" + name +
+                        "' must be 'stroboscopic', 'stick-exit' or 'xdot-falling'");
+}
+
+template <typename T>
+py::array Matrix(const std::vector<std::vector<T>>& rows, py::ssize_t cols) {
+  py::array_t<T> a({static_cast<py::ssize_t>(rows.size()), cols});
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (py::ssize_t j = 0; j < cols; ++j)
+      a.mutable_at(i, j) = j < static_cast<py::ssize_t>(rows[i].size()) ? rows[i][j] : T(0);
+  a.attr("setflags")(py::arg("write") = false);
+  return std::move(a);
+}
+
+PyOrbitBranch Convert(const OrbitBranch& b, const System& s, int j) {
+  PyOrbitBranch out;
+  out.status = b.status, out.message = b.message, out.parameter = s.ParameterName(j);
+  out.jumps = b.jumps, out.evaluations = b.evaluations, out.seconds = b.seconds;
+  std::vector<double> p, period;
+  std::vector<int> sticks, exits, crossings;
+  std::vector<bool> stable;
+  std::vector<std::string> label;
+  std::vector<std::vector<double>> state, lo, hi;
+  std::vector<std::vector<std::complex<double>>> mu;
+  size_t k = 0;
+  for (const OrbitRow& r : b.rows) {
+    p.push_back(r.p), period.push_back(r.period), stable.push_back(r.stable);
+    sticks.push_back(r.sticks), exits.push_back(r.exits), crossings.push_back(r.crossings);
+    label.push_back(Name(r.label));
+    state.emplace_back(r.start.z.data(), r.start.z.data() + r.start.z.size());
+    lo.emplace_back(r.lo.data(), r.lo.data() + r.lo.size());
+    hi.emplace_back(r.hi.data(), r.hi.data() + r.hi.size());
+    mu.push_back(r.multipliers);
+    k = std::max(k, r.multipliers.size());
+  }
+  out.p = ReadOnly(p), out.period = ReadOnly(period), out.stable = ReadOnlyBool(stable);
+  out.sticks = ReadOnly(sticks), out.exits = ReadOnly(exits), out.crossings = ReadOnly(crossings);
+  out.label = ReadOnlyStrings(label);
+  out.state = Matrix(state, s.dimension());
+  out.lo = Matrix(lo, s.tangent_dimension()), out.hi = Matrix(hi, s.tangent_dimension());
+  out.multipliers = Matrix(mu, static_cast<py::ssize_t>(k));
+  for (const OrbitRow& r : b.special)
+    out.special.push_back(py::make_tuple(Name(r.label), r.p, r.description));
+  return out;
+}
+
+PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& parameter,
+                               const Eigen::VectorXd& state, double to, const std::string& section,
+                               int m, double max_amplitude, std::optional<double> max_step,
+                               std::optional<double> rtol, std::optional<double> atol) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  const int j = s->ParameterIndex(parameter);
+  if (j < 0) throw InvalidArgument("parameter = '" + parameter + "' is no parameter of the system");
+  if (state.size() != s->dimension())
+    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
+                          std::to_string(s->dimension()));
+  OrbitBranchOptions o;
+  o.shooting.flow = Solver(o.shooting.flow, rtol, atol, py::none(), py::none());
+  o.max_amplitude = max_amplitude;
+  const double width = std::abs(to - s->ParameterValue(j));
+  if (max_step) {
+    if (!(*max_step > 0) || !std::isfinite(*max_step))
+      throw InvalidArgument("max_step = " + Repr(*max_step) + " must be a finite number > 0");
+    o.palc.ds_max = *max_step * width;  // a share of the range, as ss_continue's --max_step
+    o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
+  }
+  const PoincareSection sec = SectionOf(*s, section, state, m);
+  FlowPoint guess{0, state, ModeOf(*s, state)};
+  if (sec.kind == SectionKind::kStickExit)  // the slip it leaves into, the way lambda points
+    guess.mode = ModeSet(s->StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow
+                                                                             : Mode::kSlipAbove);
+  Interrupt interrupt;
+  o.palc.cancelled = [&] { return interrupt(); };
+  OrbitBranch b;
+  {
+    py::gil_scoped_release nogil;
+    b = ContinueOrbits(*s, j, guess, sec, to, o);
+  }
+  interrupt.RaiseIfInterrupted();
+  return Convert(b, *s, j);
+}
+
+}  // namespace
+
+void BindOrbitBranch(py::module_& m) {
+  using B = PyOrbitBranch;
+  py::class_<B> b(m, "OrbitBranch",
+                  "Result of continue_orbits(): one row per orbit, the special points among "
+                  "them (label LP, PD, NS or SL).");
+  b.def_readonly("status", &B::status)
+      .def_readonly("message", &B::message)
+      .def_readonly("parameter", &B::parameter)
+      .def_readonly("p", &B::p)
+      .def_readonly("state", &B::state)
+      .def_readonly("period", &B::period)
+      .def_readonly("sticks", &B::sticks)
+      .def_readonly("exits", &B::exits)
+      .def_readonly("crossings", &B::crossings)
+      .def_readonly("lo", &B::lo)
+      .def_readonly("hi", &B::hi)
+      .def_readonly("multipliers", &B::multipliers)
+      .def_readonly("stable", &B::stable)
+      .def_readonly("label", &B::label)
+      .def_readonly("special", &B::special)
+      .def_readonly("jumps", &B::jumps)
+      .def_readonly("evaluations", &B::evaluations)
+      .def_readonly("seconds", &B::seconds)
+      .def("__repr__", [](const B& x) {
+        return "<OrbitBranch " + x.parameter + ", " + std::to_string(x.p.size()) + " rows, " +
+               Name(x.status) + ">";
+      });
+  m.attr("BranchStatus") = m.attr("ForcedBranchStatus");
+  const py::object none = py::none();
+  m.def("continue_orbits", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
+        py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
+        py::arg("max_amplitude") = 1e3, py::arg("max_step") = none, py::arg("rtol") = none,
+        py::arg("atol") = none,
+        "The branch of periodic orbits of `system` (Params: the belt; ForcedParams: the forced "
+        "oscillator) through the one near `state` (x, x'[, theta]) on `section` "
+        "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit; 'xdot-falling': the "
+        "belt's x' = 0), continued in `parameter` from its value in `system` to `to`, with the "
+        "LP, PD, NS and SL points located (the one branch driver, C++ ContinueOrbits).");
+}
+
+}  // namespace stickslip::python

@@ -1,0 +1,239 @@
+// One branch driver for the periodic orbits of any system (orbit_branch.hpp):
+// the map's fixed points (orbit_problem.hpp) through Palc, a row per accepted
+// point, the special points between two rows (orbit_locate.hpp).
+#include "stickslip/continuation/orbit_branch.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+#include "orbit_locate.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+using Eigen::VectorXd;
+using orbit_detail::BranchPoint;
+using orbit_detail::OrbitProblem;
+
+std::string OrbitBranchOptions::ValidationError() const {
+  std::string e = shooting.ValidationError();
+  if (!e.empty()) return e;
+  if (!(max_amplitude > 0) || !std::isfinite(max_amplitude))
+    return "max_amplitude = " + Num(max_amplitude) + " must be a finite number > 0";
+  if (!(locate_tol > 0 && locate_tol < 1))
+    return "locate_tol = " + Num(locate_tol) + " must be in (0, 1)";
+  if (max_jumps < 0) return "max_jumps = " + std::to_string(max_jumps) + " must be >= 0";
+  return "";
+}
+
+namespace {
+
+// One trace's monitor: rows, the end at p = to, the special points between
+// consecutive rows, and the ends (unbounded, back past the start).
+class Monitor {
+ public:
+  Monitor(Palc& palc, OrbitProblem& problem, const System& system, int j, double from, double to,
+          const OrbitBranchOptions& o, OrbitBranch& out)
+      : palc_(palc),
+        problem_(problem),
+        system_(system),
+        j_(j),
+        from_(from),
+        to_(to),
+        dir_(to > from ? 1 : -1),
+        k_(problem.parameter_index()),
+        o_(o),
+        out_(out) {}
+  bool operator()(const std::vector<PalcPoint>& curve);
+  bool stopped() const { return stopped_; }
+  void Restart() { have_prev_ = false; }  // the next trace's first row starts anew
+
+ private:
+  void Special(const BranchPoint& a, const BranchPoint& b);
+  bool Ends(const OrbitRow& row);
+
+  Palc& palc_;
+  OrbitProblem& problem_;
+  const System& system_;
+  int j_;
+  double from_, to_, dir_;
+  int k_;  // p's component of u
+  const OrbitBranchOptions& o_;
+  OrbitBranch& out_;
+  bool have_prev_ = false, stopped_ = false;
+  BranchPoint prev_;
+};
+
+void Monitor::Special(const BranchPoint& a, const BranchPoint& b) {
+  std::vector<OrbitRow> found;
+  std::vector<std::pair<BranchPoint, BranchPoint>> pieces;
+  orbit_detail::Sliding(palc_, problem_, a, b, o_.locate_tol, &found, &pieces);
+  for (const auto& [lo, hi] : pieces)
+    orbit_detail::TestPoints(palc_, problem_, lo, hi, o_.locate_tol, &found);
+  std::sort(found.begin(), found.end(), [&](const OrbitRow& x, const OrbitRow& y) {
+    return std::abs(x.p - a.row.p) < std::abs(y.p - a.row.p);
+  });
+  for (const OrbitRow& sp : found) out_.special.push_back(sp), out_.rows.push_back(sp);
+}
+
+// The branch's ends at a row: unbounded, or back past its start.
+bool Monitor::Ends(const OrbitRow& row) {
+  const int nt = system_.tangent_dimension();
+  double size = 0;
+  for (int i = 0; i < nt && i < row.lo.size(); ++i)
+    size = std::max({size, std::abs(row.lo[i]), std::abs(row.hi[i])});
+  if (size > o_.max_amplitude) {
+    out_.status = BranchStatus::kUnbounded;
+    out_.message = "the orbit passed max_amplitude = " + Num(o_.max_amplitude);
+    return true;
+  }
+  if ((row.p - from_) * dir_ < -Tolerances::kBranchTurnBack * std::abs(to_ - from_)) {
+    out_.status = BranchStatus::kLeftRange;
+    out_.message =
+        "the branch turned back past " + system_.ParameterName(j_) + " = " + Num(from_, 12);
+    return true;
+  }
+  return false;
+}
+
+bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
+  const VectorXd* prev = curve.size() >= 2 ? &curve[curve.size() - 2].u : nullptr;
+  VectorXd here = curve.back().u;
+  bool end = false;
+  if (prev && (here[k_] - to_) * dir_ >= 0) {  // past the end: the row at p = to instead
+    VectorXd pred = *prev + (to_ - (*prev)[k_]) / (here[k_] - (*prev)[k_]) * (here - *prev);
+    pred[k_] = to_;
+    const PalcCorrection c = palc_.CorrectFixed(pred, k_);
+    end = true;
+    out_.status = BranchStatus::kReachedEnd;
+    if (!c.ok) {
+      out_.status = BranchStatus::kStepTooSmall;
+      out_.message = "the row at " + system_.ParameterName(j_) + " = to: " + c.why;
+      stopped_ = true;
+      return false;
+    }
+    here = c.u;
+  }
+  const BranchPoint point{here, problem_.Row()};
+  if (prev && have_prev_) Special(prev_, point);
+  prev_ = point;
+  have_prev_ = true;
+  out_.rows.push_back(point.row);
+  stopped_ = Ends(point.row) || end;
+  return !stopped_;
+}
+
+BranchStatus FromPalc(const PalcResult& r) {
+  switch (r.status) {
+    case PalcStatus::kClosed:
+      return BranchStatus::kClosed;
+    case PalcStatus::kMaxPoints:
+      return BranchStatus::kMaxPoints;
+    case PalcStatus::kStepTooSmall:
+      return BranchStatus::kStepTooSmall;
+    case PalcStatus::kStartFailed:
+      return BranchStatus::kStartFailed;
+    case PalcStatus::kStopped:
+      break;
+  }
+  return r.message == "cancelled" ? BranchStatus::kCancelled : BranchStatus::kReachedEnd;
+}
+
+// Palc traces from the start, and from the orbit beyond each corner or jump
+// where the corrector fails (JumpAcross).
+void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, const FlowPoint& start, double from,
+           double to, const OrbitBranchOptions& o, OrbitBranch* out) {
+  const int k = problem.parameter_index();
+  const double dir = to > from ? 1 : -1;
+  VectorXd u0 = problem.Unknowns(start, from), along = VectorXd::Unit(k + 1, k) * dir;
+  for (;;) {
+    const PalcResult r = palc.Trace(u0, k, along, std::ref(monitor));
+    if (monitor.stopped()) return;
+    out->status = FromPalc(r);
+    out->message = r.message;
+    if (out->status != BranchStatus::kStepTooSmall || out->rows.empty()) return;
+    if (out->jumps >= o.max_jumps) {
+      out->message += "; more than max_jumps = " + std::to_string(o.max_jumps) + " restarts";
+      return;
+    }
+    const OrbitRow last = out->rows.back();
+    const double dp = out->rows.size() >= 2 ? last.p - out->rows[out->rows.size() - 2].p : 0;
+    const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : dir;
+    const double step = std::max(std::abs(dp), Tolerances::kBranchEdgeStep * std::abs(to - from));
+    OrbitRow before, after;
+    std::string why;
+    if (!orbit_detail::JumpAcross(problem, last, pdir, step, pdir == dir ? to : from, o.locate_tol,
+                                  &before, &after, &why)) {
+      out->message += "; " + why;
+      return;
+    }
+    if (before.label != SpecialKind::kNone) {
+      out->special.push_back(before);
+      out->rows.push_back(before);
+    }
+    ++out->jumps;
+    u0 = problem.Unknowns(after.start, after.p);
+    along = VectorXd::Unit(k + 1, k) * pdir;
+    monitor.Restart();
+  }
+}
+
+void Check(const System& system, int parameter, const FlowPoint& guess, double to,
+           const OrbitBranchOptions& options) {
+  std::string e = system.ValidationError();
+  if (e.empty()) e = options.ValidationError();
+  if (e.empty() && (parameter < 0 || parameter >= system.parameters()))
+    e = "parameter = " + std::to_string(parameter) + " is not one of the system's " +
+        std::to_string(system.parameters());
+  if (e.empty() && guess.z.size() != system.dimension())
+    e = "the guess has " + std::to_string(guess.z.size()) + " components, the system " +
+        std::to_string(system.dimension());
+  if (e.empty() && !guess.z.allFinite()) e = "the guess is not finite";
+  if (e.empty() && (!std::isfinite(to) || to == system.ParameterValue(parameter)))
+    e = "to = " + Num(to) + " must be finite and differ from " + system.ParameterName(parameter) +
+        " = " + Num(system.ParameterValue(parameter));
+  if (e.empty()) {
+    std::unique_ptr<System> end = system.Clone();
+    end->SetParameterValue(parameter, to);
+    e = end->ValidationError();
+    if (!e.empty()) e = "at " + system.ParameterName(parameter) + " = to: " + e;
+  }
+  if (!e.empty()) throw InvalidArgument(e);
+}
+
+}  // namespace
+
+OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
+                           const PoincareSection& section, double to,
+                           const OrbitBranchOptions& options) {
+  Check(system, parameter, guess, to, options);
+  const auto start = std::chrono::steady_clock::now();
+  const double from = system.ParameterValue(parameter);
+  OrbitProblem problem(system, parameter, guess, section, options);
+  Palc palc(problem, options.palc);
+  if (options.palc.cancelled) problem.shooting().flow().set_cancel(options.palc.cancelled);
+  OrbitBranch out;
+  const PeriodicOrbit first = problem.shooting().Find(guess, section);
+  if (!first.ok()) {
+    out.status = first.status == OrbitStatus::kCancelled ? BranchStatus::kCancelled
+                                                         : BranchStatus::kStartFailed;
+    out.message = "no periodic orbit at " + system.ParameterName(parameter) + " = " + Num(from) +
+                  " near the guess (" + Name(first.status) + ": " + first.message + ")";
+    return out;
+  }
+  out.status = BranchStatus::kMaxPoints;
+  Monitor monitor(palc, problem, system, parameter, from, to, options, out);
+  Trace(palc, problem, monitor, first.start, from, to, options, &out);
+  if (out.status == BranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
+    out.message += " after the row at " + system.ParameterName(parameter) + " = " +
+                   Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
+                   " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
+  out.evaluations = palc.evaluations();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace stickslip

@@ -1,0 +1,176 @@
+// The fixed points of a Poincare map as a PalcProblem (orbit_problem.hpp).
+#include "orbit_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+
+namespace stickslip::orbit_detail {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+OrbitProblem::OrbitProblem(const System& system, int parameter, const FlowPoint& start,
+                           const PoincareSection& section, const OrbitBranchOptions& o)
+    : system_(system.Clone()),
+      j_(parameter),
+      nu_(section.kind == SectionKind::kTime ? system.tangent_dimension() : system.dimension()),
+      start_(start),
+      section_(section),
+      o_(o),
+      shooting_(system, o.shooting) {}
+
+FlowPoint OrbitProblem::PointAt(const VectorXd& u) const {
+  FlowPoint z = start_;
+  z.z.head(nu_) = u.head(nu_);
+  return z;
+}
+
+VectorXd OrbitProblem::Unknowns(const FlowPoint& z, double p) const {
+  VectorXd u(nu_ + 1);
+  u.head(nu_) = z.z.head(nu_);
+  u[nu_] = p;
+  return u;
+}
+
+PoincareSection OrbitProblem::SectionAt(const FlowPoint& z) const {
+  // The stroboscopic time follows the clock's frequency (a parameter may set it).
+  if (section_.kind == SectionKind::kTime && section_.turns >= 1 && system_->clocks() == 1)
+    return PoincareSection::Stroboscopic(*system_, z.z, section_.turns);
+  return section_;
+}
+
+std::string OrbitProblem::DomainError(const VectorXd& u) const {
+  if (!u.allFinite()) return "a point that is not finite";
+  const double old = system_->ParameterValue(j_);
+  system_->SetParameterValue(j_, u[nu_]);
+  std::string e = system_->ValidationError();
+  system_->SetParameterValue(j_, old);
+  const int nt = std::min(nu_, system_->tangent_dimension());
+  const double bound = 2 * o_.max_amplitude;  // rows stop at max_amplitude first
+  const double size = u.head(nt).cwiseAbs().maxCoeff();
+  if (e.empty() && !(size <= bound)) {  // "|x| or |x'| = 2001 beyond max_amplitude"
+    for (int i = 0; i < nt; ++i) e += (i ? " or |" : "|") + system_->StateName(i) + "|";
+    e += " = " + Num(size) + " beyond max_amplitude";
+  }
+  return e;
+}
+
+bool OrbitProblem::MapAt(double p, const FlowPoint& z, bool jacobian, VectorXd* r, PeriodicOrbit* o,
+                         std::string* why) {
+  system_->SetParameterValue(j_, p);
+  *why = system_->ValidationError();
+  if (!why->empty()) return false;
+  shooting_.set_system(*system_);
+  if (shooting_.Map(z, SectionAt(z), jacobian, r, o)) return true;
+  *why = o->message;
+  return false;
+}
+
+bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
+  system_->SetParameterValue(j_, p);
+  *why = system_->ValidationError();
+  if (!why->empty()) return false;
+  shooting_.set_system(*system_);
+  const PeriodicOrbit o = shooting_.Find(z, SectionAt(z));
+  if (!o.ok()) {
+    *why = o.message;
+    return false;
+  }
+  last_ = o;
+  last_u_ = Unknowns(o.start, p);
+  *why = DomainError(last_u_);
+  return why->empty();
+}
+
+bool OrbitProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::string* why) {
+  *why = DomainError(u);
+  if (!why->empty()) return false;
+  const double p = u[nu_];
+  const FlowPoint z = PointAt(u);
+  if (!MapAt(p, z, true, &r_, &last_, why)) return false;
+  last_u_ = u;
+  *f = r_;
+  jac->resize(nu_, nu_ + 1);
+  jac->leftCols(nu_) = last_.monodromy - MatrixXd::Identity(nu_, nu_);
+  const bool ok = Difference(p, z, jac, why);
+  system_->SetParameterValue(j_, p);
+  return ok;
+}
+
+// dF/dp: central differences, step ~ cbrt(eps) relative (truncation and
+// rounding balanced). Where the map jumps within the step (a stick phase of
+// finite length born or lost), the side with other events gives a slope of
+// jump / step: then the side that keeps them (issue 20). At a kink (slopes of
+// one size) the central difference stays: it turns the branch's corners.
+bool OrbitProblem::Difference(double p, const FlowPoint& z, MatrixXd* jac, std::string* why) {
+  const double d = Tolerances::kBranchDifference * std::max(1.0, std::abs(p));
+  double qm = p - d;
+  system_->SetParameterValue(j_, qm);
+  if (!system_->ValidationError().empty()) qm = p;  // one-sided at the domain's edge
+  if (!MapAt(p + d, z, false, &rp_, &plus_, why) || !MapAt(qm, z, false, &rm_, &minus_, why))
+    return false;
+  jac->col(nu_) = (rp_ - rm_) / (p + d - qm);
+  auto same = [&](const PeriodicOrbit& o) {
+    return o.sticks == last_.sticks && o.exits == last_.exits && o.crossings == last_.crossings;
+  };
+  const double hm = p - qm;
+  if (same(plus_) == same(minus_) || !(hm > 0)) return true;
+  const VectorXd sp = (rp_ - r_) / d, sm = (r_ - rm_) / hm;
+  const VectorXd& keep = same(plus_) ? sp : sm;
+  const double gap = (sp - sm).lpNorm<Eigen::Infinity>();
+  if (gap > Tolerances::kJumpSlopeRatio * (1 + keep.lpNorm<Eigen::Infinity>()))
+    jac->col(nu_) = keep;
+  return true;
+}
+
+OrbitRow OrbitProblem::Row() const {
+  OrbitRow r;
+  r.p = last_u_[nu_];
+  r.start = last_.start;
+  r.period = last_.period;
+  r.sticks = last_.sticks, r.exits = last_.exits, r.crossings = last_.crossings;
+  r.lo = last_.lo, r.hi = last_.hi;
+  r.multipliers = last_.multipliers;
+  r.stable = last_.stable;
+  return r;
+}
+
+double RowTest(const OrbitRow& r, int i) {
+  std::complex<double> prod = 1;
+  const auto& mu = r.multipliers;
+  if (i < 2) {
+    for (const auto& m : mu) prod *= i == 0 ? m - 1.0 : m + 1.0;
+  } else {
+    for (std::size_t a = 0; a < mu.size(); ++a)
+      for (std::size_t b = a + 1; b < mu.size(); ++b) prod *= mu[a] * mu[b] - 1.0;
+  }
+  return prod.real();
+}
+
+bool TorusPair(const OrbitRow& r, double tol) {
+  for (const auto& m : r.multipliers)
+    if (std::abs(m.imag()) > tol * std::abs(m) && std::abs(std::abs(m) - 1) <= tol) return true;
+  return false;
+}
+
+double MultiplierMove(const OrbitRow& a, const OrbitRow& b) {
+  auto one_way = [](const OrbitRow& x, const OrbitRow& y) {
+    double worst = 0;
+    for (const auto& m : x.multipliers) {
+      double best = INFINITY;
+      for (const auto& n : y.multipliers) best = std::min(best, std::abs(m - n));
+      worst = std::max(worst, best);
+    }
+    return worst;
+  };
+  return std::max(one_way(a, b), one_way(b, a));
+}
+
+bool SameStructure(const OrbitRow& a, const OrbitRow& b) {
+  return a.sticks == b.sticks && a.exits == b.exits && a.crossings == b.crossings;
+}
+
+}  // namespace stickslip::orbit_detail

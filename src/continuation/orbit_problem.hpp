@@ -1,0 +1,57 @@
+// Private to src/continuation/: the fixed points of a Poincare map of any
+// system as a PalcProblem in (u, p) (orbit_branch.hpp), and the rows and test
+// functions of its points.
+#pragma once
+
+#include <memory>
+
+#include "stickslip/continuation/orbit_branch.hpp"
+
+namespace stickslip::orbit_detail {
+
+class OrbitProblem final : public PalcProblem {
+ public:
+  OrbitProblem(const System& system, int parameter, const FlowPoint& start,
+               const PoincareSection& section, const OrbitBranchOptions& o);
+  int unknowns() const override { return nu_ + 1; }
+  bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
+                std::string* why) override;
+  std::string DomainError(const Eigen::VectorXd& u) const override;
+  /// The row of the last point evaluated.
+  OrbitRow Row() const;
+  /// The orbit at parameter p by the shooting's damped Newton from z (p
+  /// held); on success Row() is its row. False, with *why, if none.
+  bool FindAt(double p, const FlowPoint& z, std::string* why);
+  /// u of an orbit found at parameter p.
+  Eigen::VectorXd Unknowns(const FlowPoint& z, double p) const;
+  int parameter_index() const { return nu_; }  ///< p's component in u
+  Shooting& shooting() { return shooting_; }
+
+ private:
+  FlowPoint PointAt(const Eigen::VectorXd& u) const;
+  PoincareSection SectionAt(const FlowPoint& z) const;
+  bool MapAt(double p, const FlowPoint& z, bool jacobian, Eigen::VectorXd* r, PeriodicOrbit* o,
+             std::string* why);
+  bool Difference(double p, const FlowPoint& z, Eigen::MatrixXd* jac, std::string* why);
+
+  std::unique_ptr<System> system_;
+  int j_, nu_;
+  FlowPoint start_;  // the clock (stroboscopic) and the mode (event sections)
+  PoincareSection section_;
+  const OrbitBranchOptions& o_;
+  Shooting shooting_;
+  PeriodicOrbit last_, plus_, minus_;
+  Eigen::VectorXd last_u_, r_, rp_, rm_;
+};
+
+/// A test function of a row's multipliers: 0 LP prod (mu - 1), 1 PD
+/// prod (mu + 1), 2 NS prod_{i<j} (mu_i mu_j - 1).
+double RowTest(const OrbitRow& r, int i);
+/// A complex pair within tol of the unit circle (an NS point's multipliers).
+bool TorusPair(const OrbitRow& r, double tol);
+/// The largest distance from a multiplier of a to the nearest of b's.
+double MultiplierMove(const OrbitRow& a, const OrbitRow& b);
+/// The same switching sequence counts (sticks, exits, crossings).
+bool SameStructure(const OrbitRow& a, const OrbitRow& b);
+
+}  // namespace stickslip::orbit_detail
