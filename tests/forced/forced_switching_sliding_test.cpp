@@ -79,8 +79,8 @@ Structure OrbitAt(Real w, Real* x, Real* y) {
 // `below`, each midpoint's orbit by Newton from lo's (the family followed);
 // every midpoint's structure is one of `allowed`.
 Real BisectStructure(Real lo, Real hi, Real* x, Real* y, Structure below,
-                     const std::vector<Structure>& allowed) {
-  for (int i = 0; i < 60 && hi - lo > 1e-13L; ++i) {
+                     const std::vector<Structure>& allowed, Real tol) {
+  for (int i = 0; i < 60 && hi - lo > tol; ++i) {
     const Real mid = (lo + hi) / 2;
     Real xm = *x, ym = *y;
     const Structure st = OrbitAt(mid, &xm, &ym);
@@ -122,10 +122,10 @@ Events ReferenceEvents() {
   const std::vector<Structure> near1 = {{2, 0}, {2, 1}, {2, 2}};
   Events e;
   Real xa = x, ya = y;
-  e.omega1a = BisectStructure(0.4807L, 0.4808L, &xa, &ya, {2, 0}, near1);
+  e.omega1a = BisectStructure(0.4807L, 0.4808L, &xa, &ya, {2, 0}, near1, 1e-10L);
   // The upper end of the sliver: the first orbit with both crossings.
   Real lo = 0.4807L, hi = 0.4808L;
-  for (int i = 0; i < 60 && hi - lo > 1e-13L; ++i) {
+  for (int i = 0; i < 60 && hi - lo > 1e-10L; ++i) {
     const Real mid = (lo + hi) / 2;
     Real xm = x, ym = y;
     const Structure st = OrbitAt(mid, &xm, &ym);
@@ -137,7 +137,7 @@ Events ReferenceEvents() {
   EXPECT_EQ(OrbitAt(0.4814L, &x2, &y2), (Structure{2, 2}));
   Real x3 = x2, y3 = y2;
   EXPECT_EQ(OrbitAt(0.4816L, &x3, &y3), (Structure{0, 2}));
-  e.omega2 = BisectStructure(0.4814L, 0.4816L, &x2, &y2, {2, 2}, {{2, 2}, {0, 2}});
+  e.omega2 = BisectStructure(0.4814L, 0.4816L, &x2, &y2, {2, 2}, {{2, 2}, {0, 2}}, 1e-12L);
   std::printf(
       "[ measured ] reference: crossings 0 -> 1 at Omega = %.13Lf, 1 -> 2 at %.13Lf, "
       "sticks 2 -> 0 at %.13Lf\n",
