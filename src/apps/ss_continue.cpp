@@ -12,6 +12,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/estimates_text.hpp"
+#include "cli/forced_start.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_continuation.hpp"
@@ -81,6 +82,7 @@ po::options_description AppOptions() {
       "always");
   cli::AddRunOptions(d, "plots", "write the TSV files and the script, but do not run gnuplot");
   cli::AddRestartOptions(d);
+  cli::AddStartOptions(d);
   d.add_options()("switch", po::bool_switch(),
                   "with --restart DIR --point PDn of a forced run: continue the period-doubled "
                   "branch (m -> 2m; AUTO's ISW=-1) from the PD point to whichever of --from, --to "
@@ -231,9 +233,16 @@ int Main(int argc, char** argv) {
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
   // A forced run's point restarts the forced oscillator (its files say so).
-  std::optional<ss::LabelledPoint> restart = cli::RestartFromArguments(args);
+  // Without --restart, a forced run's --point is an orbit of its start list.
+  std::optional<ss::LabelledPoint> restart;
+  if (args.Given("restart") || !cli::ForcedRequested(args))
+    restart = cli::RestartFromArguments(args);
   if ((restart && restart->forced) || cli::ForcedRequested(args))
     return cli::RunForced(args, kProg, cli::CommandLine(argc, argv), restart);
+  for (const char* o : {"all", "m"})
+    if (args.Given(o) && (std::string(o) != "all" || args.Flag("all")))
+      throw cli::UsageError(args.Source(o) +
+                            " chooses the start orbit of a forced branch: give --force A > 0");
   if (args.Flag("switch"))
     throw cli::UsageError(args.Source("switch") +
                           " needs --restart DIR --point PDn of a forced run (the belt's "

@@ -7,6 +7,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/forced_start.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_log.hpp"
 #include "stickslip/chaos/forced_basin.hpp"
@@ -19,8 +20,6 @@ namespace stickslip::cli {
 
 namespace {
 
-constexpr int kTransientPeriods = 200;  // docs/library.md: start from a settled state
-
 struct ForcedSetup {
   ForcedParams p;
   ForcedAxis axis = ForcedAxis::kOmega;
@@ -30,6 +29,7 @@ struct ForcedSetup {
   std::optional<LabelledPoint> restart;  // a forced run's point to start from
   bool doubled = false;                  // --switch: the 2m branch from a PD point
   double lo = 0, hi = 0;                 // --switch: the bounds the 2m branch runs to
+  StartChoice choice;                    // --all, --m, --point without --restart
 };
 
 ForcedAxis AxisFromName(const Arguments& args, ForcedAxis fallback) {
@@ -85,6 +85,7 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
   ForcedSetup s;
   s.restart = restart;
+  s.choice = StartChoiceFromArguments(args, restart.has_value());
   s.p.base = UncheckedModelFromArguments(args, restart ? restart->params : Params());
   s.p.force = args.Number("force", restart ? restart->force : 0);
   s.p.omega = args.Number("omega", restart ? restart->omega : 1);
@@ -126,57 +127,61 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   return s;
 }
 
-// The attractor the transient settled on, from (x, xdot) at phase 0, if it
-// is periodic within kStartMaxPeriod periods: its m and section point.
-constexpr int kStartMaxPeriod = 32;
-std::optional<Attractor> SettledAttractor(const ForcedModel& model, double x, double xdot,
-                                          const ForcedBranchOptions& o, RunControl& run) {
-  ForcedBasinOptions bo;
-  bo.max_period = kStartMaxPeriod;
-  bo.iterate.flow = o.flow;
-  bo.iterate.transient = bo.iterate.align;
-  bo.iterate.keep = 2 * kStartMaxPeriod;
-  bo.max_amplitude = o.max_amplitude;
-  const StroboscopicRun r = IterateStroboscopic(
-      model, ForcedStart(model, 0, x, xdot), bo.iterate, [&run] { return run.Cancelled(); },
-      o.max_amplitude);
-  if (r.status != LyapunovStatus::kDone) return std::nullopt;
-  const Attractor a = ClassifyAttractor(model, r, bo);
-  if (a.kind != AttractorKind::kPeriodic) return std::nullopt;
-  return a;
-}
-
-// The state after kTransientPeriods forcing periods from rest, at t = N T.
-// Newton at m = 1 from there; where no m = 1 orbit is near (the transient
-// settled on a period-11 attractor at Omega 1.5), the branch starts on that
-// attractor with its period.
+// The branch from the attractor the transient from rest settles on, with its
+// period (a period-11 attractor at Omega 1.5 on the seed belt at A 0.1);
+// if that is not periodic, Newton at m = 1 from the settled state; if that
+// fails, the first stable orbit of the start scan (forced_start.hpp).
 ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   SetAxis(p, s.axis, from);
   const ForcedModel model(p);
-  double x = 0, xdot = p.base.v;      // no settled state: Newton from rest
   if (s.restart && from == s.from) {  // the point's stroboscopic state
-    x = s.restart->state.x(), xdot = s.restart->state.y();
-  } else {
-    ForcedRequest rq;
-    rq.t_end = kTransientPeriods * model.period();
-    const ForcedRun tr = ForcedFlow(model, s.opts.flow).Run(ForcedStart(model, 0, 0, p.base.v), rq);
-    if (tr.status == ForcedStatus::kReached && std::abs(tr.end.x) <= s.opts.max_amplitude)
-      x = tr.end.x, xdot = tr.end.xdot;
+    ForcedBranchOptions opts = s.opts;
+    opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
+    const double x = s.restart->state.x(), xdot = s.restart->state.y();
+    ForcedBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
+                               : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
+    if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
+    return b;
   }
-  ForcedBranchOptions opts = s.opts;
-  opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
-  ForcedBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
-                             : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
-  if (b.status == ForcedBranchStatus::kStartFailed && !s.doubled && opts.m == 1 &&
-      !(s.restart && from == s.from)) {
-    if (const auto a = SettledAttractor(model, x, xdot, opts, run)) {
-      opts.m = a->m;
-      b = ContinueForced(s.p, s.axis, from, to, a->x, a->xdot, opts);
-    }
+  const Vec2 z = SettledState(model, s.opts);
+  const std::optional<StartOrbit> settled = SettledOrbit(model, z[0], z[1], s.opts, run);
+  if (settled && settled->m > 1) {
+    ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
+    if (b.status != ForcedBranchStatus::kStartFailed) return b;
   }
-  if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
+  StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
+  newton.m = s.opts.m;
+  newton.x = z[0], newton.xdot = z[1];
+  ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
+  if (b.status != ForcedBranchStatus::kStartFailed || run.Cancelled()) return b;
+  const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, 0, run);
+  for (const StartOrbit& o : ChooseStart(list, StartChoice(), "")) {
+    ForcedBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
+    if (c.status != ForcedBranchStatus::kStartFailed) return c;
+  }
   return b;
+}
+
+// --all, --m, --point: the branches from the chosen orbits of the start list,
+// printed first (UsageError if --point names none).
+std::vector<ForcedPiece> TraceChosen(const ForcedSetup& s, const StartChoice& c, RunControl& run) {
+  ForcedParams p = s.p;
+  SetAxis(p, s.axis, s.from);
+  const ForcedModel model(p);
+  const Vec2 z = SettledState(model, s.opts);
+  const std::optional<StartOrbit> settled = SettledOrbit(model, z[0], z[1], s.opts, run);
+  const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, c.m, run);
+  const std::string where = std::string(ForcedAxisName(s.axis)) + " = " + FormatNumber(s.from);
+  PrintStartOrbits(std::cout, list, where);
+  const std::vector<StartOrbit> chosen = ChooseStart(list, c, where);
+  std::vector<ForcedPiece> pieces;
+  for (const StartOrbit& o : chosen) {
+    if (run.Cancelled()) break;
+    pieces.push_back({ContinueFrom(s.p, s.axis, s.from, s.to, o, s.opts, run),
+                      static_cast<int>(pieces.size()) + 1});
+  }
+  return pieces;
 }
 
 std::string Describe(const ForcedSetup& s) {
@@ -227,6 +232,22 @@ void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::stri
   PrintForcedLog(std::cout, pieces, s.p, s.axis, detail);
 }
 
+// True (after one line on stderr) if no branch has a row.
+bool NoRows(const std::string& prog, const ForcedSetup& s, const std::vector<ForcedPiece>& pieces) {
+  for (const ForcedPiece& piece : pieces)
+    if (!piece.branch.rows.empty()) return false;
+  std::cerr << prog << ": error: no periodic orbit"
+            << (s.choice.m > 0 ? " of period m = " + std::to_string(s.choice.m) : "") << " at "
+            << ForcedAxisName(s.axis) << " = " << FormatNumber(s.from);
+  if (pieces.empty())
+    std::cerr << " in the start list";
+  else
+    std::cerr << " (" << ForcedBranchStatusName(pieces[0].branch.status)
+              << (pieces[0].branch.message.empty() ? "" : ": " + pieces[0].branch.message) << ")";
+  std::cerr << "; nothing written\n";
+  return true;
+}
+
 }  // namespace
 
 po::options_description ForcingOptions() {
@@ -260,19 +281,16 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   AppRun app(prog, args, "plots", names);
   app.run().Phase("continuing");
   std::vector<ForcedPiece> pieces(1);
-  pieces[0].branch = Trace(s, s.from, s.to, app.run());
+  if (s.choice.scan())
+    pieces = TraceChosen(s, s.choice, app.run());
+  else
+    pieces[0].branch = Trace(s, s.from, s.to, app.run());
   if (s.doubled && !pieces[0].branch.rows.empty())  // the side the 2m branch opens toward
     s.to = pieces[0].branch.rows.front().p < s.from ? s.lo : s.hi;
-  if (pieces[0].branch.rows.empty()) {  // nothing to write or draw
-    std::cerr << prog << ": error: no periodic orbit at " << ForcedAxisName(s.axis) << " = "
-              << FormatNumber(s.from) << " (" << ForcedBranchStatusName(pieces[0].branch.status)
-              << (pieces[0].branch.message.empty() ? "" : ": " + pieces[0].branch.message)
-              << "); nothing written\n";
-    return kExitFailed;
-  }
+  if (NoRows(prog, s, pieces)) return kExitFailed;  // nothing to write or draw
   std::string gap;
   std::vector<double> gap_ends;
-  if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded && !s.doubled) {
+  if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded && !s.doubled && !s.choice.scan()) {
     // Undamped resonance: trace the other end too; between them x is unbounded.
     pieces.push_back({Trace(s, s.to, s.from, app.run()), 2});
     const auto& a = pieces[0].branch.rows;

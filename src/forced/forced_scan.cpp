@@ -14,7 +14,8 @@ const char* ForcedScanStatusName(ForcedScanStatus s) { return Name(s); }
 std::string ForcedScanOptions::ValidationError() const {
   const std::string e = orbit.flow.ValidationError();
   if (!e.empty()) return e;
-  for (const std::string& range : {IntRangeError("max_m", max_m, 1, kMaxMultiple),
+  for (const std::string& range : {IntRangeError("min_m", min_m, 1, kMaxMultiple),
+                                   IntRangeError("max_m", max_m, min_m, kMaxMultiple),
                                    IntRangeError("max_sticks", max_sticks, 0, kMaxMultiple),
                                    IntRangeError("grid", grid, 0, kMaxGrid),
                                    IntRangeError("exit_samples", exit_samples, 2, kMaxExitSamples)})
@@ -99,7 +100,7 @@ void Scan::Strobe() {
                                        m_.static_limit() + m_.v();
   const double rv = r * std::max(1.0, w);
   const int n = o_.grid;
-  for (int m = 1; m <= o_.max_m; ++m)
+  for (int m = o_.min_m; m <= o_.max_m; ++m)
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         if (Cancelled()) return;
@@ -138,7 +139,7 @@ void Scan::ExitMap(Mode mode) {
     for (int s = 0; s < S; ++s) {
       const double a = i * T / N, b = (i + 1) * T / N;
       if (!std::isfinite(tp[i][s]) || !std::isfinite(tp[i + 1][s])) continue;
-      for (int m = 1; m <= o_.max_m; ++m) {
+      for (int m = o_.min_m; m <= o_.max_m; ++m) {
         const double ga = tp[i][s] - a - m * T, gb = tp[i + 1][s] - b - m * T;
         if ((ga > 0) == (gb > 0)) continue;
         if (Cancelled()) return;

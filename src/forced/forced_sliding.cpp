@@ -90,9 +90,9 @@ double ShortestSlipBetweenSticks(const ForcedParams& base, ForcedAxis axis,
 // How close the stick force of a stick phase comes to the band's edge at an
 // interior extremum: min (mu_s - |f(t)|) over the roots of
 // f' = v + A Omega sin(Omega t) = 0 inside the stick phases of row r's orbit,
-// f = x_a + v (t - t_a) + 2 beta v - A cos(Omega t) (the stick force of docs/theory.md, "One core"; inf:
-// none). Zero where a stick phase splits (adding-sliding, di Bernardo,
-// Kowalczyk & Nordmark 2002, section 3, case 4).
+// f = x_a + v (t - t_a) + 2 beta v - A cos(Omega t) (the stick force of docs/theory.md, "One core";
+// inf: none). Zero where a stick phase splits (adding-sliding, di Bernardo, Kowalczyk & Nordmark
+// 2002, section 3, case 4).
 double StickTouchToEdge(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o,
                         const ForcedBranchRow& r) {
   const ForcedModel model(At(base, axis, r.p));
@@ -135,11 +135,15 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
   const std::string change = " (" + Change(before, after) + ")";
   // An arrival on the band's edge at the point: crossing-sliding, also where
   // the stick it becomes merges with the next one (a jump, mu_s > mu_k).
+  // A change of crossings alone is one too: on x' = v outside the band
+  // x'' = -f +- mu(0+) != 0, so a crossing is born or lost only where an
+  // arrival passes the band's edge, never by a tangency (docs/theory.md,
+  // "Why no SW"; the Den Hartog floor's reference, ForcedSwitchingSliding).
   const Tolerances tol = Tolerances::From(o.flow.rtol, o.flow.atol);
   const double edge = tol.BandEdge() * (1 + before.extrema.x_max - before.extrema.x_min);
   const bool on_edge =
       std::min(CrossingToEdge(base, axis, o, before), CrossingToEdge(base, axis, o, after)) <= edge;
-  if ((ds != 0 && dc == -ds) || (dc != 0 && on_edge)) {
+  if ((ds != 0 && dc == -ds) || (dc != 0 && (on_edge || ds == 0))) {
     point->label = ForcedLabel::kCR;
     // The description follows the counts' direction (issue 35, item 4).
     const char* what = ds > 0   ? "a crossing of x' = v reaches the stick band's edge and turns "
@@ -171,12 +175,6 @@ void ClassifySliding(const ForcedParams& base, ForcedAxis axis, const ForcedBran
               "inside the stick band, ") +
           (ds > 0 ? "a stick phase is born" : "a stick phase vanishes") + change;
     }
-  } else if (ds == 0 && dc != 0) {
-    point->label = ForcedLabel::kSW;
-    point->description =
-        "switching-sliding: the slip leaving a stick phase reaches x' = v and "
-        "crosses it" +
-        change;
   } else {
     point->label = ForcedLabel::kSL;
     point->description = "sliding bifurcation: the stick structure changes" + change;

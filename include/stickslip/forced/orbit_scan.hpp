@@ -18,10 +18,11 @@
 namespace stickslip {
 
 struct ForcedScanOptions {
-  /// Upper bounds: max_m and max_sticks, grid, exit_samples.
+  /// Upper bounds: min_m, max_m and max_sticks, grid, exit_samples.
   static constexpr int kMaxMultiple = 64, kMaxGrid = 100, kMaxExitSamples = 10000;
   ForcedOrbitOptions orbit;
-  int max_m = 4;          ///< period multiples 1..max_m
+  int min_m = 1;  ///< period multiples min_m..max_m
+  int max_m = 4;
   int max_sticks = 4;     ///< exit-phase map: stick phases per orbit 1..max_sticks
   int grid = 5;           ///< stroboscopic starts: grid x grid over the box
   int exit_samples = 48;  ///< exit phases sampled per forcing period and exit side
