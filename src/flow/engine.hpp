@@ -44,7 +44,11 @@ class Engine {
   // The switches at a terminal root (switching.cpp); false when the run ends.
   bool Switch(const std::vector<int>& roots);
   bool Arrive(int contact);
-  bool Exit(int contact, int sign);
+  // The exit of `contact`, whose event fired in mode `detected` (its lambda
+  // there is at the limit); mode_ is the mode it leaves, with the instant's
+  // earlier switches.
+  void Exit(int contact, int sign, const ModeSet& detected);
+  bool SwitchAtOnce(const std::vector<int>& roots);
   // S = I + (f+ - f-) grad^T / (grad . f-) on the tangent block, M = S M.
   void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad);
   void Record(SwitchKind kind, int contact, const ModeSet& before, const ModeSet& after);
@@ -109,6 +113,7 @@ class Engine {
   // Scratch for switches.
   Eigen::VectorXd f_before_, f_after_, grad_, grad2_;
   Eigen::MatrixXd S_, tmp_;
+  std::vector<int> arrivals_;
 };
 
 }  // namespace stickslip::flow_detail

@@ -31,8 +31,10 @@ struct FlowPoint {
 };
 
 /// The mode Filippov's rule gives z: each contact slips on its side of
-/// h_i = 0; on the surface it sticks within its static limit, else slips
-/// the way lambda_i points.
+/// h_i = 0; the contacts on their surfaces take the consistent mode
+/// (ConsistentMode, switching.hpp). Where that is not unique, the contact-
+/// order rule: each in turn sticks within its static limit, else slips the
+/// way lambda_i points (ModeChoiceOf says which case it was).
 ModeSet ModeOf(const System& s, const Eigen::VectorXd& z);
 
 /// A hypersurface g(z) = sum w_j z_j - offset (or, with derivative, g =
@@ -110,7 +112,9 @@ struct FlowRun {
   TaylorOrders orders;
   bool ok() const {
     return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches &&
-           status != FlowStatus::kCancelled && status != FlowStatus::kTooMuchWork;
+           status != FlowStatus::kCancelled && status != FlowStatus::kTooMuchWork &&
+           status != FlowStatus::kInconsistentMode && status != FlowStatus::kAmbiguousMode &&
+           status != FlowStatus::kTooManyAtOnce;
   }
 };
 

@@ -60,6 +60,9 @@ enum class FlowStatus {
   kCancelled,         // the cancel hook returned true
   kStickExit,         // the requested stick exit (FlowRequest::stop_at_exit)
   kTooMuchWork,       // FlowRequest::max_steps steps before t_max
+  kInconsistentMode,  // contacts switched at once and no mode is consistent (ConsistentMode)
+  kAmbiguousMode,     // contacts switched at once and several modes are consistent
+  kTooManyAtOnce,     // more than kMaxEnumeratedContacts contacts switched at once
 };
 const char* FlowStatusName(FlowStatus s);
 template <>
@@ -74,6 +77,9 @@ struct EnumNames<FlowStatus> {
       {FlowStatus::kCancelled, "cancelled"},
       {FlowStatus::kStickExit, "stick-exit"},
       {FlowStatus::kTooMuchWork, "too-much-work"},
+      {FlowStatus::kInconsistentMode, "inconsistent-mode"},
+      {FlowStatus::kAmbiguousMode, "ambiguous-mode"},
+      {FlowStatus::kTooManyAtOnce, "too-many-at-once"},
   };
 };
 
