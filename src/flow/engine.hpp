@@ -16,7 +16,7 @@ namespace stickslip::flow_detail {
 
 // What a terminal event function of a segment stands for.
 struct FunctionRole {
-  enum Kind { kArrival, kExit, kSection, kExtremum } kind = kExtremum;
+  enum Kind { kArrival, kExit, kSection, kExtremum, kOpen } kind = kExtremum;
   int index = 0;  // the contact, or the section
   int sign = 0;   // an exit: +1 at lambda = +limit, -1 at -limit
 };
@@ -58,6 +58,8 @@ class Engine {
   bool Settled(const double* y) const;
   // "taylor failed at t = ... in <mode> at x = ..., x' = ...: reason".
   std::string Where(double t, const double* y, const std::string& reason) const;
+  // " at t = ... in <mode> at x = ..., x' = ...".
+  std::string Place(double t, const double* y, int digits = 17) const;
   Stepper& Solver();
   static void OnEvent(void* self, int g, const double* y);
   static void OnStep(void* self, double t, const double* y);
@@ -70,6 +72,7 @@ class Engine {
   int n_ = 0, nt_ = 0, k_ = 0;
   bool variational_ = false, column_ = false;
   std::vector<ContactVelocity> contacts_;
+  std::vector<std::optional<ContactVelocity>> normals_;  // System::NormalForce
   std::vector<int> derivative_of_;
   bool system_read_ = false;  // contacts_, derivative_of_ are the system's
   long system_epoch_ = 0;     // counts the systems read (rest points, Taylor binds)

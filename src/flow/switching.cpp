@@ -62,6 +62,11 @@ bool Engine::Switch(const std::vector<int>& roots) {
   bool contact = false;
   for (int i = 0; i < static_cast<int>(roots.size()); ++i) {
     if (roots[i] == 0) continue;
+    if (cur_->roles[i].kind == FunctionRole::kOpen) {  // the run stops there
+      out_->opened = cur_->roles[i].index;
+      return Fail(FlowStatus::kContactOpen, "contact " + std::to_string(out_->opened) +
+                                                " opens (normal force 0)" + Place(t_, z_.data()));
+    }
     if (cur_->roles[i].kind == FunctionRole::kSection) {
       if (section < 0) section = cur_->roles[i].index;
     } else if (cur_->roles[i].kind != FunctionRole::kExtremum) {
@@ -114,7 +119,7 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
     std::string what = Name(r.choice);
     what += " mode of " + std::to_string(r.candidates) + " contacts switching at once (" +
             std::to_string(r.consistent) + " consistent)";
-    return Fail(st, Where(t_, z_.data(), what));
+    return Fail(st, what + Place(t_, z_.data()));
   }
   if (rq_->stop_at_stick)
     for (int c : arrivals)

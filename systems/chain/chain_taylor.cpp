@@ -3,13 +3,13 @@
 //   x'_{k+1} = (-c x'_k - (k_i + kc deg_i) x_k + kc sum_j x_j,k + F_k) / (m (k+1))
 // in slip, where F = sigma mu(s), s = sigma (v - x'); x' = v in stick. The
 // law's series mu(s(t)) and mu'(s(t)) come from s's by the usual rules
-// (products, exp' = exp a', (1/d)' = -d'/d^2). Written from the public
-// headers: the library's own series (src/integrate/mu_series.hpp) are private.
+// (common/law_series.hpp).
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "chain/chain.hpp"
+#include "common/law_series.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/system/taylor_field.hpp"
 
@@ -17,70 +17,9 @@ namespace stickslip::chain {
 
 namespace {
 
+using systems::Cauchy;
+using systems::LawSeries;
 constexpr int kN = kTaylorRowSize;
-
-// The Cauchy product's coefficient k of a and b.
-double Cauchy(const double* a, const double* b, int k) {
-  double s = 0;
-  for (int j = 0; j <= k; ++j) s += a[j] * b[k - j];
-  return s;
-}
-
-// mu(s(t)) and mu'(s(t)) of one law, coefficient by coefficient.
-struct LawSeries {
-  LawKind law = LawKind::kCoulomb;
-  double mu_s = 0, a = 0, b = 0,
-         c = 0;  // cubic k1, k3, k5; coulomb, stribeck mu_k, v_s; leine delta
-  double s[kN], p2[kN], p3[kN], p4[kN], p5[kN], e[kN], d[kN], r[kN], r2[kN];
-  double mu[kN], dmu[kN];
-
-  void Set(const Params& p) {
-    law = p.law, mu_s = p.mu_s, a = b = c = 0;
-    if (law == LawKind::kCubic) a = p.k1(), b = p.k3(), c = p.k5;
-    if (law == LawKind::kCoulomb || law == LawKind::kStribeck) a = p.mu_k;
-    if (law == LawKind::kStribeck) b = p.v_s;
-    if (law == LawKind::kLeine) a = p.delta;
-  }
-  // Coefficient k of mu and mu', s[0..k] set.
-  void Next(int k) {
-    switch (law) {
-      case LawKind::kCubic:
-        p2[k] = Cauchy(s, s, k);
-        p3[k] = Cauchy(p2, s, k);
-        p4[k] = Cauchy(p2, p2, k);
-        p5[k] = Cauchy(p4, s, k);
-        mu[k] = (k == 0 ? mu_s : 0.0) - a * s[k] + b * p3[k] - c * p5[k];
-        dmu[k] = (k == 0 ? -a : 0.0) + 3 * b * p2[k] - 5 * c * p4[k];
-        return;
-      case LawKind::kCoulomb:
-        mu[k] = k == 0 ? a : 0.0;
-        dmu[k] = 0;
-        return;
-      case LawKind::kStribeck: {  // e = exp(-s / v_s): e' = -e s' / v_s
-        if (k == 0) {
-          e[0] = std::exp(-s[0] / b);
-        } else {
-          double t = 0;
-          for (int j = 1; j <= k; ++j) t += j * s[j] * e[k - j];
-          e[k] = -t / (b * k);
-        }
-        mu[k] = (k == 0 ? a : 0.0) + (mu_s - a) * e[k];
-        dmu[k] = -(mu_s - a) / b * e[k];
-        return;
-      }
-      case LawKind::kLeine: {  // r = 1 / (1 + delta s)
-        d[k] = (k == 0 ? 1.0 : 0.0) + a * s[k];
-        double t = 0;
-        for (int j = 1; j <= k; ++j) t += d[j] * r[k - j];
-        r[k] = k == 0 ? 1.0 / d[0] : -t / d[0];
-        r2[k] = Cauchy(r, r, k);
-        mu[k] = mu_s * r[k];
-        dmu[k] = -mu_s * a * r2[k];
-        return;
-      }
-    }
-  }
-};
 
 class ChainField final : public TaylorField {
  public:

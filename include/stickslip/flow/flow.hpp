@@ -98,6 +98,7 @@ struct FlowRun {
   std::string message;  ///< for failures: where and what
   FlowPoint end;
   int section = -1;        ///< the terminal section that ended the run
+  int opened = -1;         ///< kContactOpen: the contact whose normal force reached 0
   Eigen::VectorXd lo, hi;  ///< extremes of FlowRequest::extrema, with the end points
   double t_stick = 0;      ///< time with some contact sticking
   int switches = 0, sticks = 0, exits = 0, crossings = 0, touches = 0;

@@ -63,6 +63,7 @@ enum class FlowStatus {
   kInconsistentMode,  // contacts switched at once and no mode is consistent (ConsistentMode)
   kAmbiguousMode,     // contacts switched at once and several modes are consistent
   kTooManyAtOnce,     // more than kMaxEnumeratedContacts contacts switched at once
+  kContactOpen,       // a contact's normal force fell to 0 (System::NormalForce)
 };
 const char* FlowStatusName(FlowStatus s);
 template <>
@@ -80,6 +81,7 @@ struct EnumNames<FlowStatus> {
       {FlowStatus::kInconsistentMode, "inconsistent-mode"},
       {FlowStatus::kAmbiguousMode, "ambiguous-mode"},
       {FlowStatus::kTooManyAtOnce, "too-many-at-once"},
+      {FlowStatus::kContactOpen, "contact-open"},
   };
 };
 
