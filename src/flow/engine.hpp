@@ -38,6 +38,7 @@ class Engine {
   // One segment in the current mode; false when the run ends.
   bool Segment();
   void BuildEvents(EventSet& set);
+  void AddOpenEvents(EventSet& set);
   // The events of the current mode (built or reused) in problem_.
   void UseEvents();
   void ReadSystem();

@@ -138,18 +138,7 @@ void Engine::BuildEvents(EventSet& set) {
     set.extremum_of[g].push_back(p);
     ev.Add(Event{g, kAnyRoot, false});
   }
-  // A normal force falling to 0 ends the run (kContactOpen), in every mode.
-  for (int i = 0; i < k_; ++i) {
-    if (!normals_[i]) continue;
-    const ContactVelocity& c = *normals_[i];
-    EventFunction f;
-    f.size = c.size;
-    for (int t = 0; t < c.size; ++t) f.terms[t] = {c.terms[t].index, c.terms[t].weight};
-    f.offset = c.speed;
-    const int g = add(f);
-    set.roles[g] = {FunctionRole::kOpen, i, 0};
-    ev.Add(Event{g, -1, true});
-  }
+  AddOpenEvents(set);
   for (int sx = 0; sx < static_cast<int>(rq.sections.size()); ++sx) {
     const Section& sec = rq.sections[sx];
     if (sec.slip_below_only && mode_[0] != Mode::kSlipBelow) continue;
@@ -161,6 +150,30 @@ void Engine::BuildEvents(EventSet& set) {
     const int g = add(f);
     set.roles[g] = {FunctionRole::kSection, sx, 0};
     ev.Add(Event{g, sec.direction == 0 ? kAnyRoot : sec.direction, true});
+  }
+}
+
+}  // namespace stickslip::flow_detail
+
+namespace stickslip::flow_detail {
+
+// A normal force falling to 0 ends the run (kContactOpen), in every mode.
+void Engine::AddOpenEvents(EventSet& set) {
+  EventList& ev = set.events;
+  for (int i = 0; i < k_; ++i) {
+    if (!normals_[i]) continue;
+    const ContactVelocity& c = *normals_[i];
+    EventFunction f;
+    f.size = c.size;
+    for (int t = 0; t < c.size; ++t) f.terms[t] = {c.terms[t].index, c.terms[t].weight};
+    f.offset = c.speed;
+    const int g = ev.Add(f);
+    if (g == static_cast<int>(set.roles.size())) {
+      set.roles.emplace_back();
+      set.extremum_of.emplace_back();
+    }
+    set.roles[g] = {FunctionRole::kOpen, i, 0};
+    ev.Add(Event{g, -1, true});
   }
 }
 
