@@ -67,6 +67,10 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
     if (j < 0 || j >= n_) throw InvalidArgument("Flow::Run: extremum of no component " + Num(j));
   CheckStart(*s_, start);
   if (!system_read_) ReadSystem();
+  for (int i = 0; i < k_; ++i)
+    if (normals_[i] && !(normals_[i]->At(start.z.data()) > 0))
+      throw InvalidArgument("Flow::Run: contact " + std::to_string(i) +
+                            " is open at the start (normal force <= 0)");
   variational_ = rq.variational || rq.parameter_column;
   column_ = rq.parameter_column;
   if (!SameShape(rq)) {
@@ -80,6 +84,7 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   r.status = FlowStatus::kTimeLimit;
   r.message.clear();
   r.section = -1;
+  r.opened = -1;
   r.t_stick = 0;
   r.switches = r.sticks = r.exits = r.crossings = r.touches = 0;
   r.modes.assign(1, start.mode);
@@ -257,11 +262,15 @@ bool Engine::Segment() {
 }
 
 std::string Engine::Where(double t, const double* y, const std::string& reason) const {
+  return IntegratorName(flow_.options_.integrator) + std::string(" failed") + Place(t, y, 6) +
+         ": " + reason;
+}
+
+std::string Engine::Place(double t, const double* y, int digits) const {
   std::ostringstream os;
-  os << IntegratorName(flow_.options_.integrator) << " failed at t = " << t << " in "
-     << ModeSetName(mode_, k_) << " at";
+  os.precision(digits);
+  os << " at t = " << t << " in " << ModeSetName(mode_, k_) << " at";
   for (int i = 0; i < nt_; ++i) os << (i ? ", " : " ") << s_->StateName(i) << " = " << y[i];
-  os << ": " << reason;
   return os.str();
 }
 

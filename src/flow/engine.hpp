@@ -16,7 +16,7 @@ namespace stickslip::flow_detail {
 
 // What a terminal event function of a segment stands for.
 struct FunctionRole {
-  enum Kind { kArrival, kExit, kSection, kExtremum } kind = kExtremum;
+  enum Kind { kArrival, kExit, kSection, kExtremum, kOpen } kind = kExtremum;
   int index = 0;  // the contact, or the section
   int sign = 0;   // an exit: +1 at lambda = +limit, -1 at -limit
 };
@@ -38,13 +38,18 @@ class Engine {
   // One segment in the current mode; false when the run ends.
   bool Segment();
   void BuildEvents(EventSet& set);
+  void AddOpenEvents(EventSet& set);
   // The events of the current mode (built or reused) in problem_.
   void UseEvents();
   void ReadSystem();
   // The switches at a terminal root (switching.cpp); false when the run ends.
   bool Switch(const std::vector<int>& roots);
   bool Arrive(int contact);
-  bool Exit(int contact, int sign);
+  // The exit of `contact`, whose event fired in mode `detected` (its lambda
+  // there is at the limit); mode_ is the mode it leaves, with the instant's
+  // earlier switches.
+  void Exit(int contact, int sign, const ModeSet& detected);
+  bool SwitchAtOnce(const std::vector<int>& roots);
   // S = I + (f+ - f-) grad^T / (grad . f-) on the tangent block, M = S M.
   void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad);
   void Record(SwitchKind kind, int contact, const ModeSet& before, const ModeSet& after);
@@ -54,6 +59,8 @@ class Engine {
   bool Settled(const double* y) const;
   // "taylor failed at t = ... in <mode> at x = ..., x' = ...: reason".
   std::string Where(double t, const double* y, const std::string& reason) const;
+  // " at t = ... in <mode> at x = ..., x' = ...".
+  std::string Place(double t, const double* y, int digits = 17) const;
   Stepper& Solver();
   static void OnEvent(void* self, int g, const double* y);
   static void OnStep(void* self, double t, const double* y);
@@ -66,6 +73,7 @@ class Engine {
   int n_ = 0, nt_ = 0, k_ = 0;
   bool variational_ = false, column_ = false;
   std::vector<ContactVelocity> contacts_;
+  std::vector<std::optional<ContactVelocity>> normals_;  // System::NormalForce
   std::vector<int> derivative_of_;
   bool system_read_ = false;  // contacts_, derivative_of_ are the system's
   long system_epoch_ = 0;     // counts the systems read (rest points, Taylor binds)
@@ -109,6 +117,7 @@ class Engine {
   // Scratch for switches.
   Eigen::VectorXd f_before_, f_after_, grad_, grad2_;
   Eigen::MatrixXd S_, tmp_;
+  std::vector<int> arrivals_;
 };
 
 }  // namespace stickslip::flow_detail

@@ -43,26 +43,6 @@ std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, const System& s
              : MakeCvodeStepper(options, system, variational);
 }
 
-ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) {
-  ModeSet m;
-  for (int i = 0; i < s.contacts(); ++i) {
-    const double h = s.Contact(i).At(z.data());
-    if (h < 0) continue;
-    if (h > 0) {
-      m.set(i, Mode::kSlipAbove);
-      continue;
-    }
-    ModeSet stick = m;
-    stick.set(i, Mode::kStick);
-    const double lambda = s.StickForce(stick, i, z);
-    if (std::abs(lambda) <= s.StaticLimit(i, z))
-      m = stick;
-    else
-      m.set(i, lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
-  }
-  return m;
-}
-
 namespace {
 // What the flow itself needs of its options: tolerances the steppers can
 // meet (Taylor to kForcedRtolMin; CVODE stalls below its floors) and

@@ -18,6 +18,13 @@ bool SameSection(const Section& a, const Section& b) {
       return false;
   return true;
 }
+bool SameFunctional(const ContactVelocity& a, const ContactVelocity& b) {
+  if (a.size != b.size || a.speed != b.speed) return false;
+  for (int t = 0; t < a.size; ++t)
+    if (a.terms[t].index != b.terms[t].index || a.terms[t].weight != b.terms[t].weight)
+      return false;
+  return true;
+}
 }  // namespace
 
 // Whether rq asks for the events built last (extrema, sections, switching).
@@ -43,12 +50,21 @@ void Engine::ReadSystem() {
       same = c.terms[t].index == o.terms[t].index && c.terms[t].weight == o.terms[t].weight;
   }
   for (int i = 0; same && i < n_; ++i) same = derivative_of_[i] == s_->DerivativeOf(i);
+  same = same && static_cast<int>(normals_.size()) == k_;
+  for (int i = 0; same && i < k_; ++i) {
+    const std::optional<ContactVelocity> c = s_->NormalForce(i);
+    const std::optional<ContactVelocity>& o = normals_[i];
+    same = c.has_value() == o.has_value();
+    if (same && c) same = SameFunctional(*c, *o);
+  }
   ++system_epoch_;
   system_read_ = true;
   if (same) return;
   ForgetEvents();
   contacts_.resize(k_);
   for (int i = 0; i < k_; ++i) contacts_[i] = s_->Contact(i);
+  normals_.resize(k_);
+  for (int i = 0; i < k_; ++i) normals_[i] = s_->NormalForce(i);
   derivative_of_.resize(n_);
   for (int i = 0; i < n_; ++i) derivative_of_[i] = s_->DerivativeOf(i);
   problem_.derivative_of = derivative_of_;
@@ -122,6 +138,7 @@ void Engine::BuildEvents(EventSet& set) {
     set.extremum_of[g].push_back(p);
     ev.Add(Event{g, kAnyRoot, false});
   }
+  AddOpenEvents(set);
   for (int sx = 0; sx < static_cast<int>(rq.sections.size()); ++sx) {
     const Section& sec = rq.sections[sx];
     if (sec.slip_below_only && mode_[0] != Mode::kSlipBelow) continue;
@@ -133,6 +150,30 @@ void Engine::BuildEvents(EventSet& set) {
     const int g = add(f);
     set.roles[g] = {FunctionRole::kSection, sx, 0};
     ev.Add(Event{g, sec.direction == 0 ? kAnyRoot : sec.direction, true});
+  }
+}
+
+}  // namespace stickslip::flow_detail
+
+namespace stickslip::flow_detail {
+
+// A normal force falling to 0 ends the run (kContactOpen), in every mode.
+void Engine::AddOpenEvents(EventSet& set) {
+  EventList& ev = set.events;
+  for (int i = 0; i < k_; ++i) {
+    if (!normals_[i]) continue;
+    const ContactVelocity& c = *normals_[i];
+    EventFunction f;
+    f.size = c.size;
+    for (int t = 0; t < c.size; ++t) f.terms[t] = {c.terms[t].index, c.terms[t].weight};
+    f.offset = c.speed;
+    const int g = ev.Add(f);
+    if (g == static_cast<int>(set.roles.size())) {
+      set.roles.emplace_back();
+      set.extremum_of.emplace_back();
+    }
+    set.roles[g] = {FunctionRole::kOpen, i, 0};
+    ev.Add(Event{g, -1, true});
   }
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "flow/engine.hpp"
+#include "stickslip/names.hpp"
 
 namespace stickslip {
 
@@ -54,13 +55,18 @@ void OnSurface(const ContactVelocity& c, Eigen::VectorXd& z) {
 }  // namespace
 
 bool Engine::Switch(const std::vector<int>& roots) {
-  // Contact events first, in contact order (several at one instant are a
-  // normal outcome: each contact's rule in turn); a section only ends the
-  // run when no contact switched there.
+  // Contact events first (several at one instant are a normal outcome: one
+  // consistent mode for all, SwitchAtOnce); a section only ends the run
+  // when no contact switched there.
   int section = -1;
   bool contact = false;
   for (int i = 0; i < static_cast<int>(roots.size()); ++i) {
     if (roots[i] == 0) continue;
+    if (cur_->roles[i].kind == FunctionRole::kOpen) {  // the run stops there
+      out_->opened = cur_->roles[i].index;
+      return Fail(FlowStatus::kContactOpen, "contact " + std::to_string(out_->opened) +
+                                                " opens (normal force 0)" + Place(t_, z_.data()));
+    }
     if (cur_->roles[i].kind == FunctionRole::kSection) {
       if (section < 0) section = cur_->roles[i].index;
     } else if (cur_->roles[i].kind != FunctionRole::kExtremum) {
@@ -74,12 +80,75 @@ bool Engine::Switch(const std::vector<int>& roots) {
     if (!sec.derivative) OnSurface(sec.g, z_);
     return Done(FlowStatus::kSection);
   }
+  const int exits_before = out_->exits;
+  if (k_ == 1) {
+    for (int i = 0; i < static_cast<int>(roots.size()); ++i) {
+      if (roots[i] == 0) continue;
+      if (cur_->roles[i].kind == FunctionRole::kArrival && !Arrive(0)) return false;
+      if (cur_->roles[i].kind == FunctionRole::kExit) Exit(0, cur_->roles[i].sign, mode_);
+    }
+  } else if (!SwitchAtOnce(roots)) {
+    return false;
+  }
+  // The requested exit ends the run after every switch of its instant.
+  if (rq_->stop_at_exit > 0 && out_->exits >= rq_->stop_at_exit && out_->exits > exits_before)
+    return Done(FlowStatus::kStickExit);
+  return true;
+}
+
+// Several contacts (switching.hpp, ConsistentMode): the exits of the instant
+// release their contacts, then the arriving ones and any sticking contact
+// the new mode pushes past its limit take the one consistent mode; each
+// change is recorded, with its saltation, in contact order.
+bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
+  std::vector<int>& arrivals = arrivals_;
+  arrivals.clear();
+  const ModeSet detected = mode_;  // the mode whose events fired
   for (int c = 0; c < k_; ++c)
     for (int i = 0; i < static_cast<int>(roots.size()); ++i) {
       if (roots[i] == 0 || cur_->roles[i].index != c) continue;
-      if (cur_->roles[i].kind == FunctionRole::kArrival && !Arrive(c)) return false;
-      if (cur_->roles[i].kind == FunctionRole::kExit && !Exit(c, cur_->roles[i].sign)) return false;
+      if (cur_->roles[i].kind == FunctionRole::kArrival) arrivals.push_back(c);
+      if (cur_->roles[i].kind == FunctionRole::kExit) Exit(c, cur_->roles[i].sign, detected);
     }
+  for (int c : arrivals) OnSurface(contacts_[c], z_);
+  const ModeChoiceResult r = ConsistentMode(*s_, mode_, arrivals, z_);
+  if (r.choice != ModeChoice::kUnique) {
+    const FlowStatus st = r.choice == ModeChoice::kAmbiguous      ? FlowStatus::kAmbiguousMode
+                          : r.choice == ModeChoice::kInconsistent ? FlowStatus::kInconsistentMode
+                                                                  : FlowStatus::kTooManyAtOnce;
+    std::string what = Name(r.choice);
+    what += " mode of " + std::to_string(r.candidates) + " contacts switching at once (" +
+            std::to_string(r.consistent) + " consistent)";
+    return Fail(st, what + Place(t_, z_.data()));
+  }
+  if (rq_->stop_at_stick)
+    for (int c : arrivals)
+      if (r.mode.sticks(c)) return Done(FlowStatus::kStick);
+  for (int c = 0; c < k_; ++c) {
+    const bool arrival = std::binary_search(arrivals.begin(), arrivals.end(), c);
+    if (!arrival && r.mode[c] == mode_[c]) continue;
+    const ModeSet before = mode_;
+    ModeSet after = before;
+    after.set(c, r.mode[c]);
+    if (!arrival) {  // released by the others' switch: no event surface of its own
+      mode_ = after;
+      ++out_->exits;
+      Record(SwitchKind::kStickOut, c, before, after);
+      continue;
+    }
+    if (after == before) {
+      ++out_->touches;
+      Record(SwitchKind::kTouch, c, before, after);
+      continue;
+    }
+    grad_.resize(n_);
+    ContactGradient(*s_, c, grad_);
+    Saltation(before, after, grad_);
+    mode_ = after;
+    const bool stick = after.sticks(c);
+    ++(stick ? out_->sticks : out_->crossings);
+    Record(stick ? SwitchKind::kStickIn : SwitchKind::kCrossing, c, before, after);
+  }
   return true;
 }
 
@@ -111,7 +180,7 @@ bool Engine::Arrive(int c) {
   return true;
 }
 
-bool Engine::Exit(int c, int sign) {
+void Engine::Exit(int c, int sign, const ModeSet& detected) {
   const ModeSet before = mode_;
   ModeSet after = before;
   after.set(c, sign > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
@@ -119,12 +188,12 @@ bool Engine::Exit(int c, int sign) {
   // error; kept, it left x'' of that size and either sign at the start of
   // slip (docs/theory.md, "Stick exits").
   const double limit = s_->StaticLimit(c, z_);
-  s_->ProjectOnExit(before, c, sign * limit, z_);
+  s_->ProjectOnExit(detected, c, sign * limit, z_);
   OnSurface(contacts_[c], z_);
   if (variational_) {
     grad_.resize(n_);
     grad2_.resize(n_);
-    s_->StickForceGradient(before, c, z_, grad_);
+    s_->StickForceGradient(detected, c, z_, grad_);
     s_->StaticLimitGradient(c, z_, grad2_);
     grad_ -= sign * grad2_;
     Saltation(before, after, grad_);
@@ -132,9 +201,6 @@ bool Engine::Exit(int c, int sign) {
   mode_ = after;
   ++out_->exits;
   Record(SwitchKind::kStickOut, c, before, after);
-  if (rq_->stop_at_exit > 0 && out_->exits >= rq_->stop_at_exit)
-    return Done(FlowStatus::kStickExit);
-  return true;
 }
 
 void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad) {

@@ -74,7 +74,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("LawKind", LawKind::kLeine);
   Covers("Integrator", Integrator::kCvode);
   Covers("Method", Method::kBdf);
-  Covers("FlowStatus", FlowStatus::kTooMuchWork);
+  Covers("FlowStatus", FlowStatus::kContactOpen);
   Covers("SwitchKind", SwitchKind::kTouch);
   Covers("OrbitKind", OrbitKind::kPureSlip);
   Covers("OrbitStatus", OrbitStatus::kSingular);

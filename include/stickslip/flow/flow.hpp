@@ -31,8 +31,10 @@ struct FlowPoint {
 };
 
 /// The mode Filippov's rule gives z: each contact slips on its side of
-/// h_i = 0; on the surface it sticks within its static limit, else slips
-/// the way lambda_i points.
+/// h_i = 0; the contacts on their surfaces take the consistent mode
+/// (ConsistentMode, switching.hpp). Where that is not unique, the contact-
+/// order rule: each in turn sticks within its static limit, else slips the
+/// way lambda_i points (ModeChoiceOf says which case it was).
 ModeSet ModeOf(const System& s, const Eigen::VectorXd& z);
 
 /// A hypersurface g(z) = sum w_j z_j - offset (or, with derivative, g =
@@ -96,6 +98,7 @@ struct FlowRun {
   std::string message;  ///< for failures: where and what
   FlowPoint end;
   int section = -1;        ///< the terminal section that ended the run
+  int opened = -1;         ///< kContactOpen: the contact whose normal force reached 0
   Eigen::VectorXd lo, hi;  ///< extremes of FlowRequest::extrema, with the end points
   double t_stick = 0;      ///< time with some contact sticking
   int switches = 0, sticks = 0, exits = 0, crossings = 0, touches = 0;
@@ -110,7 +113,9 @@ struct FlowRun {
   TaylorOrders orders;
   bool ok() const {
     return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches &&
-           status != FlowStatus::kCancelled && status != FlowStatus::kTooMuchWork;
+           status != FlowStatus::kCancelled && status != FlowStatus::kTooMuchWork &&
+           status != FlowStatus::kInconsistentMode && status != FlowStatus::kAmbiguousMode &&
+           status != FlowStatus::kTooManyAtOnce;
   }
 };
 

@@ -60,6 +60,10 @@ enum class FlowStatus {
   kCancelled,         // the cancel hook returned true
   kStickExit,         // the requested stick exit (FlowRequest::stop_at_exit)
   kTooMuchWork,       // FlowRequest::max_steps steps before t_max
+  kInconsistentMode,  // contacts switched at once and no mode is consistent (ConsistentMode)
+  kAmbiguousMode,     // contacts switched at once and several modes are consistent
+  kTooManyAtOnce,     // more than kMaxEnumeratedContacts contacts switched at once
+  kContactOpen,       // a contact's normal force fell to 0 (System::NormalForce)
 };
 const char* FlowStatusName(FlowStatus s);
 template <>
@@ -74,6 +78,10 @@ struct EnumNames<FlowStatus> {
       {FlowStatus::kCancelled, "cancelled"},
       {FlowStatus::kStickExit, "stick-exit"},
       {FlowStatus::kTooMuchWork, "too-much-work"},
+      {FlowStatus::kInconsistentMode, "inconsistent-mode"},
+      {FlowStatus::kAmbiguousMode, "ambiguous-mode"},
+      {FlowStatus::kTooManyAtOnce, "too-many-at-once"},
+      {FlowStatus::kContactOpen, "contact-open"},
   };
 };
 

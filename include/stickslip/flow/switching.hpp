@@ -3,9 +3,55 @@
 // (Leine & Nijmeijer 2004, section 7.3; di Bernardo et al. 2008, section 2.5).
 #pragma once
 
+#include <vector>
+
+#include "stickslip/names.hpp"
 #include "stickslip/system/system.hpp"
 
 namespace stickslip {
+
+/// How the mode of contacts that switch at one instant was found.
+enum class ModeChoice {
+  kUnique,        ///< exactly one consistent candidate
+  kAmbiguous,     ///< several consistent candidates (mode: the first)
+  kInconsistent,  ///< none (mode: the contact-order rule's)
+  kTooMany,       ///< more than kMaxEnumeratedContacts candidates' contacts
+};
+template <>
+struct EnumNames<ModeChoice> {
+  static constexpr NamedValue<ModeChoice> kTable[] = {
+      {ModeChoice::kUnique, "unique"},
+      {ModeChoice::kAmbiguous, "ambiguous"},
+      {ModeChoice::kInconsistent, "inconsistent"},
+      {ModeChoice::kTooMany, "too-many"},
+  };
+};
+
+/// At most this many contacts are enumerated at once (3^12 candidates).
+constexpr int kMaxEnumeratedContacts = 12;
+
+struct ModeChoiceResult {
+  ModeChoice choice = ModeChoice::kUnique;
+  ModeSet mode;
+  int candidates = 0;  ///< contacts enumerated
+  int consistent = 0;  ///< consistent candidates found
+};
+
+/// The consistent mode after the contacts `on` (each on its surface h_i = 0
+/// at z) switch at one instant, the others keeping their modes of `base`
+/// (Filippov's rule for several contacts; docs/theory.md, "Modes as sets").
+/// Each candidate gives every contact of `on` stick, slip-below or
+/// slip-above; it is consistent when every sticking contact has |lambda_i|
+/// <= StaticLimit_i and every slipping one, held in stick, would need
+/// |lambda_j| > StaticLimit_j pointing to its side (lambda_j > 0: below).
+/// A sticking contact outside `on` whose lambda leaves its limit in the
+/// chosen mode joins the candidates and the enumeration is repeated. One
+/// contact alone gives ModeAfterArrival's mode.
+ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vector<int> on,
+                                ConstState z);
+
+/// ModeOf with how the contacts on their surfaces were resolved.
+ModeChoiceResult ModeChoiceOf(const System& s, const Eigen::VectorXd& z);
 
 /// The mode after contact c of mode `before` arrives on h_c = 0 at z: stick
 /// while |lambda_c| <= StaticLimit_c (Filippov sliding), else slip the way

@@ -83,6 +83,12 @@ class System {
   virtual void StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const = 0;
   /// mu_s,i N_i(z) > 0: contact i sticks while |lambda_i| <= this.
   virtual double StaticLimit(int i, ConstState z) const = 0;
+  /// The normal force of contact i where it follows the state, as a linear
+  /// functional N_i(z) = sum_t weight_t z_index_t - speed (ContactVelocity's
+  /// form); empty (the default): a constant normal force, never open. The
+  /// flow stops with FlowStatus::kContactOpen where N_i falls to 0: a run
+  /// never continues as if an open contact were closed.
+  virtual std::optional<ContactVelocity> NormalForce(int /*i*/) const { return std::nullopt; }
   /// d StaticLimit / dz (default: a constant limit, 0).
   virtual void StaticLimitGradient(int /*i*/, ConstState /*z*/, StateOut g) const { g.setZero(); }
   /// Moves z onto lambda_i(z) = bound exactly after a stick exit of contact

@@ -1,0 +1,113 @@
+// The consistent mode of contacts that switch at one instant (switching.hpp;
+// docs/theory.md, "Modes as sets"): enumerate stick, slip-below and
+// slip-above for each, keep the candidates whose sticking contacts hold
+// within their static limits and whose slipping ones could not (Filippov's
+// rule contact by contact, all at once; the enumeration Acary & Brogliato
+// 2008, ch. 12, describe before the relay/LCP form).
+#include <algorithm>
+#include <cmath>
+
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/flow/switching.hpp"
+
+namespace stickslip {
+
+namespace {
+// The mode the side of lambda gives a released contact.
+Mode Released(double lambda) { return lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove; }
+
+// Whether contact i's mode in m is consistent at z.
+bool Consistent(const System& s, const ModeSet& m, int i, ConstState z) {
+  const double limit = s.StaticLimit(i, z);
+  if (m.sticks(i)) return std::abs(s.StickForce(m, i, z)) <= limit;
+  ModeSet held = m;
+  held.set(i, Mode::kStick);
+  const double lambda = s.StickForce(held, i, z);
+  return std::abs(lambda) > limit && Released(lambda) == m[i];
+}
+
+// The contact-order rule: each contact of `on` in turn, the others as set.
+ModeSet ContactOrder(const System& s, ModeSet m, const std::vector<int>& on, ConstState z) {
+  for (int i : on) {
+    ModeSet stick = m;
+    stick.set(i, Mode::kStick);
+    const double lambda = s.StickForce(stick, i, z);
+    m = std::abs(lambda) <= s.StaticLimit(i, z) ? stick : m;
+    if (!m.sticks(i)) m.set(i, Released(lambda));
+  }
+  return m;
+}
+
+// Every candidate over `on` (3^|on|, in base 3): how many are consistent,
+// the first of them in *first.
+int Enumerate(const System& s, const ModeSet& base, const std::vector<int>& on, ConstState z,
+              ModeSet* first) {
+  static constexpr Mode kModes[] = {Mode::kStick, Mode::kSlipBelow, Mode::kSlipAbove};
+  const int q = static_cast<int>(on.size());
+  long total = 1;
+  for (int j = 0; j < q; ++j) total *= 3;
+  int found = 0;
+  ModeSet m = base;
+  for (long code = 0; code < total; ++code) {
+    long c = code;
+    for (int j = 0; j < q; ++j, c /= 3) m.set(on[j], kModes[c % 3]);
+    bool ok = true;
+    for (int j = 0; ok && j < q; ++j) ok = Consistent(s, m, on[j], z);
+    if (!ok) continue;
+    if (found++ == 0) *first = m;
+  }
+  return found;
+}
+}  // namespace
+
+ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vector<int> on,
+                                ConstState z) {
+  ModeChoiceResult r;
+  std::sort(on.begin(), on.end());
+  on.erase(std::unique(on.begin(), on.end()), on.end());
+  for (;;) {
+    r.candidates = static_cast<int>(on.size());
+    if (r.candidates > kMaxEnumeratedContacts) {
+      r.choice = ModeChoice::kTooMany;
+      r.mode = ContactOrder(s, base, on, z);
+      return r;
+    }
+    r.consistent = Enumerate(s, base, on, z, &r.mode);
+    if (r.consistent != 1) {
+      r.choice = r.consistent == 0 ? ModeChoice::kInconsistent : ModeChoice::kAmbiguous;
+      r.mode = ContactOrder(s, base, on, z);
+      return r;
+    }
+    // A sticking contact the new mode pushes past its limit joins them.
+    bool grew = false;
+    for (int c = 0; c < s.contacts(); ++c) {
+      if (!r.mode.sticks(c) || std::binary_search(on.begin(), on.end(), c)) continue;
+      if (Consistent(s, r.mode, c, z)) continue;
+      on.insert(std::upper_bound(on.begin(), on.end(), c), c);
+      grew = true;
+    }
+    if (!grew) break;
+  }
+  r.choice = ModeChoice::kUnique;
+  return r;
+}
+
+ModeChoiceResult ModeChoiceOf(const System& s, const Eigen::VectorXd& z) {
+  ModeSet base;
+  std::vector<int> on;
+  for (int i = 0; i < s.contacts(); ++i) {
+    const double h = s.Contact(i).At(z.data());
+    if (h > 0) base.set(i, Mode::kSlipAbove);
+    if (h == 0) on.push_back(i);
+  }
+  if (on.empty()) {
+    ModeChoiceResult r;
+    r.mode = base;
+    return r;
+  }
+  return ConsistentMode(s, base, on, z);
+}
+
+ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) { return ModeChoiceOf(s, z).mode; }
+
+}  // namespace stickslip

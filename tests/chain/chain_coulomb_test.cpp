@@ -1,0 +1,174 @@
+// The coulomb chain (studies' chain2_coulomb: mu_s 0.4, mu_k 0.3, beta 0,
+// kc 0.5, v 0.2) against its closed form: in every mode each piece is
+// affine, z' = A z + b, so z(t) = exp(t [[A, b], [0, 0]]) (z0, 1), here in
+// long double (scaling and squaring of the Taylor series). Switch times are
+// bracketed on a grid and bisected in long double; the rules at a switch are
+// the chain's: arrive and stick while |c v + (1 + kc) x_i - kc x_j| <= mu_s,
+// else cross; leave at the limit to the side the force points.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "chain/chain.hpp"
+#include "stickslip/flow/flow.hpp"
+
+namespace stickslip::chain {
+namespace {
+
+using LD = long double;
+constexpr int kA = 5;  // x1, x1', x2, x2', 1
+using Mat = std::array<std::array<LD, kA>, kA>;
+using Vec = std::array<LD, kA>;
+
+struct Coulomb {
+  LD mu_s = 0.4L, mu_k = 0.3L, c = 0, kc = 0.5L, v = 0.2L;
+};
+
+Mat Mul(const Mat& a, const Mat& b) {
+  Mat r{};
+  for (int i = 0; i < kA; ++i)
+    for (int k = 0; k < kA; ++k)
+      for (int j = 0; j < kA; ++j) r[i][j] += a[i][k] * b[k][j];
+  return r;
+}
+
+// The augmented matrix of mode m (0 below, 1 stick, 2 above, per block).
+Mat Augmented(const Coulomb& q, const int m[2]) {
+  Mat a{};
+  for (int i = 0; i < 2; ++i) {
+    const int x = 2 * i, xd = x + 1, o = 2 * (1 - i);
+    if (m[i] == 1) {
+      a[x][4] = q.v;
+      continue;
+    }
+    a[x][xd] = 1;
+    a[xd][x] = -(1 + q.kc);
+    a[xd][o] = q.kc;
+    a[xd][xd] = -q.c;
+    a[xd][4] = m[i] == 0 ? q.mu_k : -q.mu_k;
+  }
+  return a;
+}
+
+// exp(t a) (z, 1): Taylor to order 30 of a t / 2^s, squared s times.
+Vec Advance(const Mat& a, LD t, const Vec& z) {
+  LD norm = 0;
+  for (auto& row : a)
+    for (LD e : row) norm = std::max(norm, std::abs(e));
+  int s = 0;
+  while (norm * std::abs(t) / std::ldexp(1.0L, s) > 0.25L) ++s;
+  const LD h = t / std::ldexp(1.0L, s);
+  Mat e{}, term{};
+  for (int i = 0; i < kA; ++i) e[i][i] = term[i][i] = 1;
+  for (int k = 1; k <= 30; ++k) {
+    term = Mul(term, a);
+    for (auto& row : term)
+      for (LD& x : row) x *= h / k;
+    for (int i = 0; i < kA; ++i)
+      for (int j = 0; j < kA; ++j) e[i][j] += term[i][j];
+  }
+  for (int i = 0; i < s; ++i) e = Mul(e, e);
+  Vec r{};
+  for (int i = 0; i < kA; ++i)
+    for (int j = 0; j < kA; ++j) r[i] += e[i][j] * z[j];
+  return r;
+}
+
+LD Holding(const Coulomb& q, const Vec& z, int i) {
+  return q.c * q.v + (1 + q.kc) * z[2 * i] - q.kc * z[2 * (1 - i)];
+}
+
+struct Switch {
+  LD t;
+  int block;
+};
+
+// The walk from z0 (modes m) to t_max; its switches and end state.
+Vec Walk(const Coulomb& q, Vec z, int m[2], LD t_max, std::vector<Switch>* out) {
+  LD t = 0;
+  const LD dt = 0.004L;
+  while (t < t_max) {
+    const Mat a = Augmented(q, m);
+    // g_i > 0 once block i's event has happened.
+    auto g = [&](const Vec& y, int i) -> LD {
+      if (m[i] == 1) return std::abs(Holding(q, y, i)) - q.mu_s;
+      return m[i] == 0 ? y[2 * i + 1] - q.v : q.v - y[2 * i + 1];
+    };
+    LD lo = 0, hi = -1;
+    int who = -1;
+    for (LD tau = dt; t + lo < t_max; lo = tau, tau += dt) {
+      const Vec y = Advance(a, tau, z);
+      for (int i = 0; i < 2 && who < 0; ++i)
+        if (g(y, i) > 0) who = i;
+      if (who >= 0) {
+        hi = tau;
+        break;
+      }
+    }
+    if (who < 0 || t + hi > t_max) return Advance(a, t_max - t, z);
+    for (int it = 0; it < 100; ++it) {
+      const LD mid = (lo + hi) / 2;
+      (g(Advance(a, mid, z), who) > 0 ? hi : lo) = mid;
+    }
+    z = Advance(a, hi, z);
+    t += hi;
+    out->push_back({t, who});
+    const int i = who;
+    if (m[i] == 1) {  // exit: to the side the holding force points
+      m[i] = Holding(q, z, i) > 0 ? 0 : 2;
+      continue;
+    }
+    z[2 * i + 1] = q.v;
+    const LD f = Holding(q, z, i);
+    m[i] = std::abs(f) <= q.mu_s ? 1 : (f > 0 ? 0 : 2);
+  }
+  return z;
+}
+
+TEST(ChainCoulomb, TrajectoryMatchesClosedFormPieces) {
+  const Coulomb q;
+  Params p;
+  p.law = LawKind::kCoulomb;
+  p.mu_s = 0.4;
+  p.mu_k = 0.3;
+  p.beta = 0;
+  p.v = 0.2;
+  const Chain chain(Uniform(2, p, 0.5));
+  const double t_max = 40;
+  Vec z0{0.1L, 0, -0.25L, 0.05L, 1};
+  int m[2] = {0, 0};
+  std::vector<Switch> ref;
+  const Vec zr = Walk(q, z0, m, t_max, &ref);
+  ASSERT_GE(ref.size(), 8u);
+
+  FlowOptions fo;
+  fo.rtol = 1e-13;
+  fo.atol = 1e-15;
+  Flow flow(chain, fo);
+  std::vector<FlowSwitch> sw;
+  FlowRequest rq;
+  rq.t_max = t_max;
+  rq.switches = &sw;
+  Eigen::VectorXd z(4);
+  z << 0.1, 0, -0.25, 0.05;
+  ModeSet below;
+  below.set(1, Mode::kSlipBelow);
+  const FlowRun r = flow.Run(FlowPoint{0, z, below}, rq);
+  ASSERT_TRUE(r.ok()) << r.message;
+  std::vector<FlowSwitch> changes;
+  for (const FlowSwitch& s : sw)
+    if (s.kind != SwitchKind::kTouch) changes.push_back(s);
+  ASSERT_EQ(changes.size(), ref.size());
+  for (size_t k = 0; k < ref.size(); ++k) {
+    EXPECT_NEAR(changes[k].t, double(ref[k].t), 1e-10) << k;
+    EXPECT_EQ(changes[k].contact, ref[k].block) << k;
+  }
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.end.z[i], double(zr[i]), 1e-10) << i;
+  EXPECT_EQ(r.end.mode[0] == Mode::kStick, m[0] == 1);
+  EXPECT_EQ(r.end.mode[1] == Mode::kStick, m[1] == 1);
+}
+
+}  // namespace
+}  // namespace stickslip::chain

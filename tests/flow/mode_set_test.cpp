@@ -1,0 +1,216 @@
+// Modes as sets (switching.hpp, ConsistentMode): contacts that switch at one
+// instant take the one consistent mode. The system here couples two blocks
+// by their masses alone, M = [[1, e], [e, 1]], M x'' = g + r, g_i = -k x_i -
+// c x_i', r_i the friction force of contact i (slip below: +mu_k, above:
+// -mu_k; stick: the force that holds x_i'' = 0). A sticking contact's force
+// then depends on whether the other one sticks: the contact-order rule can
+// leave a set that is not consistent. The reference is the enumeration done
+// by hand below (2 x 2 solves), and for e = -0.5, g = (0.3, 0.3):
+//   contact order: 0 held with 1 below needs r0 = -g0 + e (g1 + mu_k) = -0.6,
+//   past mu_s = 0.4, so 0 slips above; 1 held with 0 above needs r1 = -0.3:
+//   {slip-above, stick}. But 0 held with 1 stuck needs r0 = -g0 = -0.3:
+//   within, so 0 must stick; {stick, stick} is the one consistent set.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "stickslip/errors.hpp"
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/flow/switching.hpp"
+#include "stickslip/system/taylor_field.hpp"
+
+namespace stickslip {
+namespace {
+
+struct Pair {
+  double e = -0.5, k = 1, c = 0, v = 0.2, mu_s = 0.4, mu_k = 0.3;
+};
+
+class MassCoupled final : public System {
+ public:
+  explicit MassCoupled(const Pair& p) : p_(p) {}
+  std::unique_ptr<System> Clone() const override { return std::make_unique<MassCoupled>(*this); }
+  bool Assign(const System& s) override {
+    const auto* o = dynamic_cast<const MassCoupled*>(&s);
+    if (o) *this = *o;
+    return o != nullptr;
+  }
+  std::string ValidationError() const override { return ""; }
+  int dimension() const override { return 4; }
+  int contacts() const override { return 2; }
+  std::string StateName(int i) const override {
+    static const char* n[] = {"x1", "x1'", "x2", "x2'"};
+    return n[i];
+  }
+  int DerivativeOf(int i) const override { return i % 2 == 0 ? i + 1 : -1; }
+  ContactVelocity Contact(int i) const override {
+    ContactVelocity c;
+    c.terms[0] = {2 * i + 1, 1.0};
+    c.size = 1;
+    c.speed = p_.v;
+    return c;
+  }
+  // The forces r of mode m at z: slip forces, and the holding forces of the
+  // sticking contacts from (M^-1 (g + r))_S = 0.
+  Eigen::Vector2d Forces(const ModeSet& m, ConstState z) const {
+    Eigen::Matrix2d M;
+    M << 1, p_.e, p_.e, 1;
+    const Eigen::Matrix2d W = M.inverse();
+    Eigen::Vector2d g, r = Eigen::Vector2d::Zero();
+    for (int i = 0; i < 2; ++i) {
+      g[i] = -p_.k * z[2 * i] - p_.c * z[2 * i + 1];
+      if (!m.sticks(i)) r[i] = m[i] == Mode::kSlipBelow ? p_.mu_k : -p_.mu_k;
+    }
+    if (m.sticks(0) && m.sticks(1)) return -g;
+    for (int i = 0; i < 2; ++i)
+      if (m.sticks(i)) r[i] = -g[i] - W(i, 1 - i) * (g[1 - i] + r[1 - i]) / W(i, i);
+    return r;
+  }
+  double StickForce(const ModeSet& m, int i, ConstState z) const override {
+    return Forces(m, z)[i];
+  }
+  void StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const override {
+    Eigen::VectorXd y = z;
+    const double f0 = StickForce(m, i, z);
+    for (int j = 0; j < 4; ++j) {  // affine in z: exact differences of step 1
+      y = z;
+      y[j] += 1;
+      g[j] = StickForce(m, i, y) - f0;
+    }
+  }
+  double StaticLimit(int, ConstState) const override { return p_.mu_s; }
+  void Field(const ModeSet& m, ConstState z, StateOut f) const override {
+    Eigen::Matrix2d M;
+    M << 1, p_.e, p_.e, 1;
+    const Eigen::Vector2d r = Forces(m, z);
+    Eigen::Vector2d g(-p_.k * z[0] - p_.c * z[1], -p_.k * z[2] - p_.c * z[3]);
+    const Eigen::Vector2d a = M.inverse() * (g + r);
+    for (int i = 0; i < 2; ++i) {
+      f[2 * i] = m.sticks(i) ? p_.v : z[2 * i + 1];
+      f[2 * i + 1] = m.sticks(i) ? 0.0 : a[i];
+    }
+  }
+  void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const override {
+    Eigen::VectorXd f0(4), f1(4), y(4);
+    Field(m, z, f0);
+    for (int j = 0; j < 4; ++j) {
+      y = z;
+      y[j] += 1;
+      Field(m, y, f1);
+      J.col(j) = f1 - f0;
+    }
+  }
+  std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest&) const override {
+    throw InvalidArgument("MassCoupled: CVODE only");
+  }
+  int parameters() const override { return 0; }
+  std::string ParameterName(int) const override { return ""; }
+  double ParameterValue(int) const override { return 0; }
+  void SetParameterValue(int, double) override {}
+
+ private:
+  Pair p_;
+};
+
+ModeSet Both(Mode a, Mode b) {
+  ModeSet m;
+  m.set(0, a);
+  m.set(1, b);
+  return m;
+}
+
+// Both contacts on their surfaces with g = (-x1, -x2) (c = 0).
+Eigen::VectorXd OnBoth(const Pair& p, double x1, double x2) {
+  Eigen::VectorXd z(4);
+  z << x1, p.v, x2, p.v;
+  return z;
+}
+
+TEST(ModeSets, ContactOrderIsInconsistentTheEnumerationIsNot) {
+  const Pair p;
+  const MassCoupled s(p);
+  const Eigen::VectorXd z = OnBoth(p, -0.3, -0.3);
+  // The hand computation in the header comment.
+  EXPECT_NEAR(s.StickForce(Both(Mode::kStick, Mode::kSlipBelow), 0, z), -0.6, 1e-15);
+  EXPECT_NEAR(s.StickForce(Both(Mode::kStick, Mode::kStick), 0, z), -0.3, 1e-15);
+  const ModeChoiceResult r = ModeChoiceOf(s, z);
+  EXPECT_EQ(r.choice, ModeChoice::kUnique);
+  EXPECT_EQ(r.consistent, 1);
+  EXPECT_EQ(r.mode, Both(Mode::kStick, Mode::kStick));
+  EXPECT_EQ(ModeOf(s, z), Both(Mode::kStick, Mode::kStick));
+}
+
+TEST(ModeSets, OneContactGivesFilippovsRule) {
+  const Pair p;
+  const MassCoupled s(p);
+  Eigen::VectorXd z = OnBoth(p, -0.3, -0.3);
+  z[3] = 0.1;  // contact 1 below its surface
+  for (double x : {-0.5, -0.1, 0.0, 0.2, 0.6}) {
+    z[0] = x;
+    const ModeSet base = Both(Mode::kSlipBelow, Mode::kSlipBelow);
+    const ModeChoiceResult r = ConsistentMode(s, base, {0}, z);
+    EXPECT_EQ(r.choice, ModeChoice::kUnique) << x;
+    EXPECT_EQ(r.mode, ModeAfterArrival(s, base, 0, z)) << x;
+  }
+}
+
+// e = -0.8, g = (0.6, -0.6): {stick, slip-below} and {slip-above, stick}
+// are both consistent (found by the same enumeration in Python, numpy 2x2).
+TEST(ModeSets, TwoConsistentSetsAreAmbiguous) {
+  Pair p;
+  p.e = -0.8;
+  const MassCoupled s(p);
+  const Eigen::VectorXd z = OnBoth(p, -0.6, 0.6);
+  const ModeChoiceResult r = ModeChoiceOf(s, z);
+  EXPECT_EQ(r.choice, ModeChoice::kAmbiguous);
+  EXPECT_EQ(r.consistent, 2);
+  EXPECT_EQ(r.candidates, 2);
+  // {stick, below}: r0 = -g0 + e (g1 + mu_k) = -0.6 - 0.8 (-0.3) = -0.36.
+  const ModeSet a = Both(Mode::kStick, Mode::kSlipBelow);
+  EXPECT_NEAR(s.StickForce(a, 0, z), -0.36, 1e-15);
+  EXPECT_GT(s.StickForce(Both(Mode::kStick, Mode::kStick), 1, z), p.mu_s);
+}
+
+// The flow: a symmetric start arrives on both surfaces at one instant
+// (identical arithmetic) with g = -x in (1/6, 0.4]: both stick, the motion
+// stays symmetric, and both leave at x = mu_s together.
+TEST(ModeSets, SimultaneousArrivalTakesTheConsistentSet) {
+  const Pair p;
+  const MassCoupled s(p);
+  FlowOptions fo;
+  fo.integrator = Integrator::kCvode;
+  fo.rtol = 1e-10;
+  fo.atol = 1e-12;
+  Flow flow(s, fo);
+  std::vector<FlowSwitch> sw;
+  FlowRequest rq;
+  rq.t_max = 20;
+  rq.stop_at_exit = 1;
+  rq.switches = &sw;
+  Eigen::VectorXd z0(4);
+  z0 << -0.35, 0, -0.35, 0;
+  const FlowRun r = flow.Run(FlowPoint{0, z0, Both(Mode::kSlipBelow, Mode::kSlipBelow)}, rq);
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_EQ(r.status, FlowStatus::kStickExit);
+  ASSERT_EQ(sw.size(), 4u);
+  EXPECT_EQ(sw[0].kind, SwitchKind::kStickIn);
+  EXPECT_EQ(sw[1].kind, SwitchKind::kStickIn);
+  EXPECT_EQ(sw[0].t, sw[1].t);
+  EXPECT_EQ(sw[1].after, Both(Mode::kStick, Mode::kStick));
+  // Closed form of the slip: x'' = (0.3 - x) / (1 + e) from (-0.35, 0).
+  const double w = std::sqrt(1 / (1 + p.e)), a = 0.65;
+  const double t_in = std::asin(p.v / (a * w)) / w;
+  EXPECT_NEAR(sw[0].t, t_in, 1e-8);
+  EXPECT_NEAR(sw[0].z[0], 0.3 - a * std::cos(w * t_in), 1e-8);
+  // Stick at x' = v to x = mu_s, where both leave into slip below.
+  EXPECT_EQ(sw[2].kind, SwitchKind::kStickOut);
+  EXPECT_EQ(sw[3].kind, SwitchKind::kStickOut);
+  EXPECT_NEAR(r.end.t, t_in + (p.mu_s - sw[0].z[0]) / p.v, 1e-8);
+  EXPECT_EQ(r.end.mode, Both(Mode::kSlipBelow, Mode::kSlipBelow));
+  EXPECT_EQ(r.end.z[0], r.end.z[2]);
+}
+
+}  // namespace
+}  // namespace stickslip
