@@ -50,6 +50,7 @@ class OrbitStatus(enum.IntEnum):
     missed = 6
     cancelled = 7
     singular = 8
+    aperiodic = 9
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
