@@ -1,7 +1,8 @@
 # Type stub of the stickslip package (the compiled stickslip._core),
 # written by hand; python/tests/test_api.py checks its names against the module.
 import enum
-from typing import Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import (Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union,
+                    overload)
 
 import numpy as np
 import numpy.typing as npt
@@ -570,8 +571,15 @@ def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
                       from_: Optional[float] = None, to: Optional[float] = None,
                       progress: Optional[Callable[[int, float, str, bool], Any]] = None,
                       **inputs: float) -> Branch: ...
+@overload
 def orbits(params: Params, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
            floquet: bool = False, rtol: Optional[float] = None, atol: Optional[float] = None,
+           integrator: IntegratorLike = None,
+           method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
+@overload
+def orbits(params: ForcedParams, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
+           x0: float = 0.0, xdot0: float = 0.0, transient: int = 20, max_m: int = 4,
+           recurrence: float = 1e-3, rtol: Optional[float] = None, atol: Optional[float] = None,
            integrator: IntegratorLike = None,
            method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
@@ -617,3 +625,4 @@ def group_stats(result: SweepResult, by: str, value: str,
                 where: Optional[str] = None) -> Dict[str, Array]: ...
 def stick_slip_orbit(point: Mapping[str, float]) -> Dict[str, float]: ...
 def stick_slip_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...
+def forced_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...

@@ -19,6 +19,8 @@ namespace {
 // balance the workers, and a thread pays for its start within a block.
 constexpr std::size_t kBlockRows = 16;
 constexpr std::size_t kThreadRows = 32;
+// Newton iterations from a run that did not recur (system_batch.hpp, step 3).
+constexpr int kUnsettledNewton = 8;
 
 double MaxAbs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
@@ -81,11 +83,11 @@ OrbitStatus FromFlow(FlowStatus s) {
 }
 
 // One worker's tools: the row's system, its shooting (prepared at the first
-// row) and a plain flow request for the transient.
+// row), a plain flow request for the transient and its last section points.
 struct Worker {
   Worker(const System& b, const std::vector<SystemColumn>& c, const SystemBatchOptions& o,
          batch_detail::RowQueue& q)
-      : base(b), columns(c), options(o), queue(q) {}
+      : base(b), columns(c), options(o), queue(q), ring(o.max_m + 1) {}
   const System& base;
   const std::vector<SystemColumn>& columns;
   const SystemBatchOptions& options;
@@ -94,32 +96,7 @@ struct Worker {
   std::optional<Shooting> shooting;
   FlowRequest request;
   FlowRun run;
-
-  // Steps 1-2 of system_batch.hpp: *z becomes z_0 and *m the least period
-  // that recurs (*recurred), else the one that comes closest; or the row's
-  // status if the flow fails.
-  std::optional<OrbitStatus> Settle(double T, FlowPoint* z, int* m, bool* recurred) {
-    Flow& flow = shooting->flow();
-    request.t_max = options.transient * T;
-    request.max_steps = options.shooting.max_steps * options.transient;
-    flow.Run(*z, request, &run);
-    if (run.status != FlowStatus::kTimeLimit) return FromFlow(run.status);
-    *z = run.end;
-    const int nt = system->tangent_dimension();
-    const double tol = options.recurrence * (1 + MaxAbs(z->z.head(nt)));
-    request.max_steps = options.shooting.max_steps;
-    double closest = std::numeric_limits<double>::infinity();
-    for (int k = 1; k <= options.max_m; ++k) {
-      request.t_max = (options.transient + k) * T;
-      flow.Run(k == 1 ? *z : run.end, request, &run);
-      if (run.status != FlowStatus::kTimeLimit) return FromFlow(run.status);
-      const double d = MaxAbs(run.end.z.head(nt) - z->z.head(nt));
-      if (d < closest) closest = d, *m = k;
-      if (d <= tol) break;
-    }
-    *recurred = closest <= tol;
-    return std::nullopt;
-  }
+  std::vector<Eigen::VectorXd> ring;  // section point k at k % (max_m + 1)
 
   // A fixed point of P^m that is one of P^d, d | m (a slowly attracting
   // orbit whose run came closest after m periods): shot again with d.
@@ -127,7 +104,6 @@ struct Worker {
     const int nt = system->tangent_dimension();
     const FlowPoint z = o->start;
     const double tol = 1e-8 * (1 + MaxAbs(z.z.head(nt)));
-    request.max_steps = options.shooting.max_steps;
     for (int d = 1; d < *m; ++d) {
       if (*m % d != 0) continue;
       request.t_max = z.t + d * T;
@@ -140,43 +116,27 @@ struct Worker {
       if (least.ok()) {
         *m = d;
         *o = std::move(least);
-        return;
       }
-      section->time = *m * T;
-      section->turns = *m;
       return;
     }
   }
 
-  void Row(std::size_t i, SystemBatch& out) {
-    SetRow(columns, i, *system);
-    if (shooting) {
-      shooting->set_system(*system);
-    } else {
-      shooting.emplace(*system, options.shooting);
-      shooting->flow().set_cancel([this] { return queue.Cancelled(); });
-    }
-    FlowPoint z{0, options.start, ModeOf(*system, options.start)};
-    const double T = PoincareSection::Stroboscopic(*system, z.z, 1).time;
-    int m = options.max_m;
-    bool recurred = true;
-    if (options.transient > 0) {
-      if (const auto failed = Settle(T, &z, &m, &recurred)) {
-        out.status[i] = *failed;
-        return;
-      }
-    }
+  // Step 3: Newton on P^m from z (max_newton: fewer from a run that did
+  // not recur, where a slowly attracting orbit is near); *m becomes the
+  // orbit's least period.
+  PeriodicOrbit Shoot(const FlowPoint& z, double T, int max_newton, int* m) {
     PoincareSection section;
-    section.time = m * T;
-    section.turns = m;
+    section.time = *m * T;
+    section.turns = *m;
+    shooting->set_max_newton(max_newton);
     PeriodicOrbit o = shooting->Find(z, section);
-    if (o.ok() && m > 1) LeastPeriod(T, &m, &section, &o);
+    if (o.ok() && *m > 1) LeastPeriod(T, m, &section, &o);
+    return o;
+  }
+
+  void Store(const PeriodicOrbit& o, int m, double T, std::size_t i, SystemBatch& out) const {
     out.status[i] = o.status;
-    // Not settled: the orbit Newton finds near the run is its attractor only
-    // if it is stable (a slowly attracting orbit), else the run is aperiodic.
-    if (!recurred && o.status != OrbitStatus::kCancelled && !(o.ok() && o.stable))
-      out.status[i] = OrbitStatus::kAperiodic;
-    if (out.status[i] != OrbitStatus::kOk) return;
+    if (!o.ok()) return;
     const int nt = out.tangent;
     out.m[i] = m;
     out.sticks[i] = o.sticks;
@@ -188,6 +148,73 @@ struct Worker {
     }
     out.multiplier[i] = o.multipliers.empty() ? 0.0 : std::abs(o.multipliers.front());
     out.stable[i] = o.stable ? 1 : 0;
+  }
+
+  // Steps 1-3 of system_batch.hpp, period by period: the first section point
+  // that recurs within max_m periods is shot; before `transient` periods
+  // only a stable orbit is taken (an attractor reached early), after them any.
+  void Settled(FlowPoint z, double T, std::size_t i, SystemBatch& out) {
+    const int nt = system->tangent_dimension(), rows = options.max_m + 1;
+    const int newton = options.shooting.max_newton;
+    FlowPoint anchor;  // the point after `transient` periods
+    double closest = std::numeric_limits<double>::infinity();
+    int closest_m = options.max_m;
+    ring[0] = z.z.head(nt);
+    for (int k = 1; k <= options.transient + options.max_m; ++k) {
+      request.t_max = k * T;
+      shooting->flow().Run(z, request, &run);
+      if (run.status != FlowStatus::kTimeLimit) {
+        out.status[i] = FromFlow(run.status);
+        return;
+      }
+      z = run.end;
+      const Eigen::VectorXd& now = ring[k % rows] = z.z.head(nt);
+      const double tol = options.recurrence * (1 + MaxAbs(now));
+      int m = 0;
+      for (int d = 1; d <= std::min(options.max_m, k) && m == 0; ++d)
+        if (MaxAbs(now - ring[(k - d) % rows]) <= tol) m = d;
+      if (k == options.transient) anchor = z;
+      if (k > options.transient) {
+        const double d = MaxAbs(now - anchor.z.head(nt));
+        if (d < closest) closest = d, closest_m = k - options.transient;
+      }
+      if (m == 0) continue;
+      const PeriodicOrbit o = Shoot(z, T, newton, &m);
+      if (k >= options.transient || (o.ok() && o.stable) || o.status == OrbitStatus::kCancelled) {
+        Store(o, m, T, i, out);
+        return;
+      }
+    }
+    // No recurrence: the orbit Newton finds near the run is its attractor
+    // only if it is stable (a slowly attracting one), else the run is aperiodic.
+    const PeriodicOrbit o = Shoot(anchor, T, std::min(newton, kUnsettledNewton), &closest_m);
+    Store(o, closest_m, T, i, out);
+    if (o.status != OrbitStatus::kCancelled && !(o.ok() && o.stable)) {
+      out.status[i] = OrbitStatus::kAperiodic;
+      out.m[i] = 0;
+      out.sticks[i] = 0;
+      out.period[i] = out.multiplier[i] = 0;
+      out.stable[i] = 0;
+      for (int c = 0; c < nt; ++c)
+        out.start[i * nt + c] = out.lo[i * nt + c] = out.hi[i * nt + c] = 0;
+    }
+  }
+
+  void Row(std::size_t i, SystemBatch& out) {
+    SetRow(columns, i, *system);
+    if (shooting) {
+      shooting->set_system(*system);
+    } else {
+      shooting.emplace(*system, options.shooting);
+      shooting->flow().set_cancel([this] { return queue.Cancelled(); });
+      request.max_steps = options.shooting.max_steps;
+    }
+    const FlowPoint z{0, options.start, ModeOf(*system, options.start)};
+    const double T = PoincareSection::Stroboscopic(*system, z.z, 1).time;
+    if (options.transient > 0) return Settled(z, T, i, out);
+    int m = options.max_m;
+    const PeriodicOrbit o = Shoot(z, T, options.shooting.max_newton, &m);
+    Store(o, m, T, i, out);
   }
 
   void Work(SystemBatch& out) {
