@@ -26,10 +26,10 @@ SAMPLE = {"mu_s": np.random.default_rng(11).normal(0.4, 0.02, 10)}
 
 
 def slow_orbits(columns):
-    """stick_slip_orbits at 50 ms a chunk: the sweep lasts long enough to kill
-    a worker in its middle."""
+    """forced_orbits at 50 ms a chunk at least: the sweep lasts long enough to
+    kill a worker in its middle."""
     time.sleep(0.05)
-    return stickslip.stick_slip_orbits(columns)
+    return stickslip.forced_orbits(columns)
 
 
 slow_orbits.batch = True

@@ -9,6 +9,7 @@
 
 #include "batch_rows.hpp"
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -94,6 +95,7 @@ struct Worker {
   batch_detail::RowQueue& queue;
   std::unique_ptr<System> system = base.Clone();
   std::optional<Shooting> shooting;
+  std::optional<Flow> settle;  // the transient's flow, at kSettleTolerance
   FlowRequest request;
   FlowRun run;
   std::vector<Eigen::VectorXd> ring;  // section point k at k % (max_m + 1)
@@ -103,7 +105,7 @@ struct Worker {
   void LeastPeriod(double T, int* m, PoincareSection* section, PeriodicOrbit* o) {
     const int nt = system->tangent_dimension();
     const FlowPoint z = o->start;
-    const double tol = 1e-8 * (1 + MaxAbs(z.z.head(nt)));
+    const double tol = Tolerances::kLeastPeriod * (1 + MaxAbs(z.z.head(nt)));
     for (int d = 1; d < *m; ++d) {
       if (*m % d != 0) continue;
       request.t_max = z.t + d * T;
@@ -162,7 +164,7 @@ struct Worker {
     ring[0] = z.z.head(nt);
     for (int k = 1; k <= options.transient + options.max_m; ++k) {
       request.t_max = k * T;
-      shooting->flow().Run(z, request, &run);
+      settle->Run(z, request, &run);
       if (run.status != FlowStatus::kTimeLimit) {
         out.status[i] = FromFlow(run.status);
         return;
@@ -204,10 +206,18 @@ struct Worker {
     SetRow(columns, i, *system);
     if (shooting) {
       shooting->set_system(*system);
+      settle->set_system(*system);
     } else {
       shooting.emplace(*system, options.shooting);
       shooting->flow().set_cancel([this] { return queue.Cancelled(); });
       request.max_steps = options.shooting.max_steps;
+      // The transient only has to find the attractor to recurrence's 1e-3:
+      // a lower Taylor order there (Newton then works at full accuracy).
+      FlowOptions loose = options.shooting.flow;
+      loose.rtol = std::max(loose.rtol, Tolerances::kSettle);
+      loose.atol = std::max(loose.atol, Tolerances::kSettle);
+      settle.emplace(*system, loose);
+      settle->set_cancel([this] { return queue.Cancelled(); });
     }
     const FlowPoint z{0, options.start, ModeOf(*system, options.start)};
     const double T = PoincareSection::Stroboscopic(*system, z.z, 1).time;
