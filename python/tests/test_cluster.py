@@ -135,7 +135,7 @@ class RealCluster(unittest.TestCase):
                             chunk_size=4, timeout=120,
                             progress=kill_when(20, self.cluster.workers[:1], done))
         self.assertTrue(done.is_set())
-        self.assertIsNotNone(self.cluster.workers[0].poll())  # dead
+        self.assertEqual(self.cluster.workers[0].wait(10), -signal.SIGKILL)  # dead
         self.assertEqual(len(r), len(self.serial))
         self.assertTrue(np.array_equal(r.data, self.serial.data))
 
