@@ -149,7 +149,9 @@ class RealCluster(unittest.TestCase):
         self.assertTrue(done.is_set())
         self.assertLess(time.monotonic() - start, 60)
         self.assertRegex(str(e.exception), r"sweep: points \d+ to \d+ \(the first \{'omega'")
-        self.assertIn("no worker left for 3 s", str(e.exception))
+        # Either the scheduler reports the tasks the dead workers held as lost, or
+        # none is left to run the rest: both name the points.
+        self.assertRegex(str(e.exception), r"no worker left for 3 s|task lost \(its worker died")
 
 
 if __name__ == "__main__":
