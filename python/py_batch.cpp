@@ -13,7 +13,9 @@
 
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/orbit_batch.hpp"
+#include "stickslip/orbits/system_batch.hpp"
 
 namespace stickslip::python {
 
@@ -36,12 +38,7 @@ py::array Owned(std::vector<T>&& v) {
 // One column: a str key naming a parameter (ValueError if it is none) and a
 // 1-D sequence of real numbers (TypeError for other types, ValueError for
 // another shape).
-ParameterColumn ColumnOf(const py::handle& key, const py::handle& values) {
-  if (!py::isinstance<py::str>(key))
-    throw py::type_error("orbits: column names must be parameter names (str), not " +
-                         TypeName(key));
-  const std::string name = key.cast<std::string>();
-  ParameterColumn c{ParameterAxis(name), {}};  // InvalidArgument for an unknown name
+std::vector<double> Values(const std::string& name, const py::handle& values) {
   const py::array a = py::module_::import("numpy").attr("asarray")(values);
   const char kind = a.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u')
@@ -53,8 +50,35 @@ ParameterColumn ColumnOf(const py::handle& key, const py::handle& values) {
     throw InvalidArgument("orbits: column '" + name + "' must be 1-D, not of shape " +
                           py::str(a.attr("shape")).cast<std::string>());
   const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-  c.values.assign(d.data(), d.data() + d.size());
+  return std::vector<double>(d.data(), d.data() + d.size());
+}
+
+std::string KeyOf(const py::handle& key) {
+  if (!py::isinstance<py::str>(key))
+    throw py::type_error("orbits: column names must be parameter names (str), not " +
+                         TypeName(key));
+  return key.cast<std::string>();
+}
+
+ParameterColumn ColumnOf(const py::handle& key, const py::handle& values) {
+  const std::string name = KeyOf(key);
+  ParameterColumn c{ParameterAxis(name), {}};  // InvalidArgument for an unknown name
+  c.values = Values(name, values);
   return c;
+}
+
+// A forced column: a parameter of the law, force or omega.
+SystemColumn ForcedColumnOf(const ForcedModel& model, const py::handle& key,
+                            const py::handle& values) {
+  const std::string name = KeyOf(key);
+  const int j = model.ParameterIndex(name);
+  const auto axes = ParameterAxes(model.params().base.law);
+  const bool of_law = std::any_of(axes.begin(), axes.end(),
+                                  [&](const ParameterAxis& a) { return a.name() == name; });
+  if (j < 0 || (j < ForcedModel::kForceIndex && !of_law))
+    throw InvalidArgument("orbits: column '" + name + "' is not a parameter of the forced " +
+                          LawName(model.params().base.law) + " oscillator");
+  return {j, Values(name, values)};
 }
 
 py::dict Orbits(const Params& base, const py::object& columns, int threads, bool floquet,
@@ -100,6 +124,70 @@ py::dict Orbits(const Params& base, const py::object& columns, int threads, bool
   out["xdot_max"] = Owned(std::move(b.xdot_max));
   if (floquet) out["multiplier"] = Owned(std::move(b.multiplier));
   out["stable"] = stable;
+  return out;
+}
+
+// The forced oscillator's stroboscopic orbits (orbits/system_batch.hpp).
+py::dict ForcedOrbits(const ForcedParams& base, const py::object& columns, int threads, double x0,
+                      double xdot0, int transient, int max_m, double recurrence,
+                      std::optional<double> rtol, std::optional<double> atol,
+                      const py::object& integrator, const py::object& method) {
+  if (!py::isinstance<py::dict>(columns))
+    throw py::type_error("orbits: columns must be a dict {parameter name: 1-D values}, not " +
+                         TypeName(columns));
+  const ForcedModel model(base);  // InvalidArgument for an invalid base
+  std::vector<SystemColumn> cols;
+  for (const auto& item : columns.cast<py::dict>())
+    cols.push_back(ForcedColumnOf(model, item.first, item.second));
+  SystemBatchOptions o;
+  FlowOptions flow;  // the forced defaults (ForcedOptions): 1e-12, 1e5 switches
+  flow.rtol = flow.atol = 1e-12;
+  flow.max_switches = 100000;
+  o.shooting.flow = Solver(flow, rtol, atol, integrator, method);
+  o.start = Eigen::Vector3d(x0, xdot0, 0);
+  o.transient = transient, o.max_m = max_m, o.recurrence = recurrence;
+  o.threads = threads;
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  SystemBatch b;
+  {
+    py::gil_scoped_release nogil;
+    b = StroboscopicOrbits(model, cols, o);  // InvalidArgument before any work
+  }
+  interrupt.RaiseIfInterrupted();
+  if (!b.error.empty()) throw Error("orbits: " + b.error);
+  const std::size_t n = b.rows();
+  std::vector<std::uint8_t> status(n);
+  std::vector<bool> flags[3];    // found, stick_slip, stable
+  std::vector<double> cols2[6];  // x0, xdot0, x_min, x_max, xdot_min, xdot_max
+  for (auto& f : flags) f.resize(n);
+  for (auto& c : cols2) c.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    status[i] = static_cast<std::uint8_t>(b.status[i]);
+    flags[0][i] = b.status[i] == OrbitStatus::kOk;
+    flags[1][i] = flags[0][i] && b.sticks[i] > 0;
+    flags[2][i] = b.stable[i] != 0;
+    for (int k = 0; k < 2; ++k) {
+      cols2[k][i] = b.start[2 * i + k];
+      cols2[2 + 2 * k][i] = b.lo[2 * i + k];
+      cols2[3 + 2 * k][i] = b.hi[2 * i + k];
+    }
+  }
+  py::dict out;
+  out["status"] = Owned(std::move(status));
+  const char* flag_names[] = {"found", "stick_slip", "stable"};
+  for (int k = 0; k < 3; ++k) {
+    py::array_t<bool> a(static_cast<py::ssize_t>(n));
+    std::copy(flags[k].begin(), flags[k].end(), a.mutable_data());
+    a.attr("setflags")(py::arg("write") = false);
+    out[flag_names[k]] = a;
+  }
+  out["m"] = Owned(std::move(b.m));
+  out["sticks"] = Owned(std::move(b.sticks));
+  out["period"] = Owned(std::move(b.period));
+  const char* names[] = {"x0", "xdot0", "x_min", "x_max", "xdot_min", "xdot_max"};
+  for (int k = 0; k < 6; ++k) out[names[k]] = Owned(std::move(cols2[k]));
+  out["multiplier"] = Owned(std::move(b.multiplier));
   return out;
 }
 
@@ -156,6 +244,21 @@ void BindBatch(py::module_& m) {
         "A row without an orbit holds zeros and stable False. threads: worker threads, capped by "
         "the hardware threads (0: all). Unknown names, columns of different lengths and invalid "
         "values raise ValueError before any work; Ctrl-C raises KeyboardInterrupt.");
+  m.def("orbits", &ForcedOrbits, py::arg("params"), py::arg("columns"), py::arg("threads") = 0,
+        py::arg("x0") = 0.0, py::arg("xdot0") = 0.0, py::arg("transient") = 20,
+        py::arg("max_m") = 4, py::arg("recurrence") = 1e-3, py::arg("rtol") = none,
+        py::arg("atol") = none, py::arg("integrator") = none, py::arg("method") = none,
+        "The forced oscillator's periodic orbit at every row of columns, e.g. "
+        "orbits(ForcedParams(Params(), force=0.3), {'omega': w, 'mu_s': mu_s}); columns name a "
+        "parameter of the law, force or omega. Each row integrates `transient` forcing periods "
+        "from (x0, xdot0) at phase 0, takes the least m <= max_m whose stroboscopic point "
+        "recurs within recurrence (1 + |z|), and shoots the m-periodic orbit from it "
+        "(transient=0: Newton on P^max_m from (x0, xdot0)). Returns a dict of read-only arrays: "
+        "status (OrbitStatus: ok, aperiodic where no m recurs, ...), found (status == ok), "
+        "stick_slip (found with a stick phase), m, sticks, period, x0, xdot0 (the orbit at phase "
+        "0), x_min, x_max, xdot_min, xdot_max, multiplier (the largest |Floquet multiplier|), "
+        "stable. A row without an orbit holds zeros. Unknown names and invalid values raise "
+        "ValueError before any work; Ctrl-C raises KeyboardInterrupt.");
   m.def("_tsv_rows", &TsvRows, py::arg("data"),
         "Rows of a 2-D float array as TSV bytes, each value as repr() writes it.");
 }

@@ -10,7 +10,7 @@ packages=(g++ make cmake libeigen3-dev libnlopt-cxx-dev libsundials-dev
           libboost-program-options-dev libboost-dev libgtest-dev gnuplot-nox
           python3-dev pybind11-dev python3-pybind11 python3-numpy
           python3-pip python3-setuptools python3-wheel python3-venv
-          python3-dask python3-distributed
+          python3-dask python3-distributed python3-h5py
           python3-pandas python3-matplotlib python3-nbclient python3-ipykernel)
 missing=()
 for p in "${packages[@]}"; do

@@ -18,8 +18,8 @@ from . import _core  # noqa: E402
 from ._core import *  # noqa: F401,F403
 from ._core import __doc__ as _core_doc  # noqa: F401
 from ._core import __version__, git_commit  # noqa: F401
-from ._sweep import (SweepError, SweepResult, group_stats, stick_slip_orbit,  # noqa: F401
-                     stick_slip_orbits, sweep)
+from ._sweep import (SweepError, SweepResult, forced_orbits, group_stats,  # noqa: F401
+                     read_sweep, stick_slip_orbit, stick_slip_orbits, sweep)
 from . import _display as _display_module, plot  # noqa: E402
 from ._physical import continue_physical  # noqa: E402,F401
 

@@ -1,7 +1,8 @@
 # Type stub of the stickslip package (the compiled stickslip._core),
 # written by hand; python/tests/test_api.py checks its names against the module.
 import enum
-from typing import Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import (Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union,
+                    overload)
 
 import numpy as np
 import numpy.typing as npt
@@ -50,6 +51,7 @@ class OrbitStatus(enum.IntEnum):
     missed = 6
     cancelled = 7
     singular = 8
+    aperiodic = 9
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
@@ -573,8 +575,15 @@ def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
                       from_: Optional[float] = None, to: Optional[float] = None,
                       progress: Optional[Callable[[int, float, str, bool], Any]] = None,
                       **inputs: float) -> Branch: ...
+@overload
 def orbits(params: Params, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
            floquet: bool = False, rtol: Optional[float] = None, atol: Optional[float] = None,
+           integrator: IntegratorLike = None,
+           method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
+@overload
+def orbits(params: ForcedParams, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
+           x0: float = 0.0, xdot0: float = 0.0, transient: int = 20, max_m: int = 4,
+           recurrence: float = 1e-3, rtol: Optional[float] = None, atol: Optional[float] = None,
            integrator: IntegratorLike = None,
            method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
@@ -608,15 +617,19 @@ class SweepResult:
     def __getitem__(self, name: str) -> Array: ...
     def __len__(self) -> int: ...
     def to_tsv(self, path: str) -> None: ...
+    def to_hdf5(self, path: str) -> None: ...
+def read_sweep(path: str) -> SweepResult: ...
 def sweep(fn: Union[Callable[[Dict[str, float]], Dict[str, float]],
                     Callable[[Dict[str, Array]], Dict[str, npt.ArrayLike]]],
           grid: Optional[Mapping[str, Sequence[float]]] = None,
           sample: Optional[Mapping[str, Sequence[float]]] = None, *,
           scheduler: Optional[str] = None, n_workers: int = 2, chunk_size: Optional[int] = None,
           meta: Optional[Mapping[str, Any]] = None, timeout: Optional[float] = None,
-          worker_timeout: float = 60.0, batch: Optional[bool] = None) -> SweepResult: ...
+          worker_timeout: float = 60.0, batch: Optional[bool] = None, out: Optional[str] = None,
+          progress: Union[None, bool, Callable[[int, int, float], Any]] = None) -> SweepResult: ...
 def group_stats(result: SweepResult, by: str, value: str,
                 quantiles: Sequence[float] = (0.05, 0.5, 0.95),
                 where: Optional[str] = None) -> Dict[str, Array]: ...
 def stick_slip_orbit(point: Mapping[str, float]) -> Dict[str, float]: ...
 def stick_slip_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...
+def forced_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...

@@ -33,21 +33,23 @@ KeyboardInterrupt. The result's to_tsv writes one self-describing file:
 '# key: value' metadata lines (tool, version, function, axes, sample, scheduler,
 workers, time), a header line, then one row per point, as the apps' TSVs.
 """
+import asyncio
 import math
-import os
-import tempfile
 import time
 
 import numpy as np
 
-__all__ = ["sweep", "SweepResult", "SweepError", "group_stats", "stick_slip_orbit",
-           "stick_slip_orbits"]
+from ._sweep_io import SweepResult, _H5Writer, _Progress, read_sweep
+
+__all__ = ["sweep", "SweepResult", "SweepError", "read_sweep", "group_stats", "stick_slip_orbit",
+           "stick_slip_orbits", "forced_orbits"]
 
 # Default chunk: about 8 tasks per worker, at most this many points (a batch
 # chunk of the belt's orbits is then well under a second of work).
 MAX_CHUNK = 100000
-# Rows written to a TSV at a time (its memory, not its content).
-TSV_ROWS = 100000
+# Seconds a finished chunk's result may take to arrive before the sweep looks
+# again at the workers (its worker may have died holding it).
+GATHER_WAIT = 2.0
 
 
 class SweepError(RuntimeError):
@@ -169,46 +171,6 @@ def _run_chunk(fn, batch, axes, start, stop):
     return (keys, rest, None) if keys is not None else (None, None, rest)
 
 
-class SweepResult:
-    """Rows of a sweep: `columns` (axis names, then fn's keys) and `data`, a
-    read-only float array of shape (points, columns); `meta` is the metadata."""
-
-    __slots__ = ("columns", "data", "meta")
-
-    def __init__(self, columns, data, meta):
-        self.columns = list(columns)
-        data = np.asarray(data, dtype=float)
-        data.setflags(write=False)
-        self.data = data
-        self.meta = dict(meta)
-
-    def __getitem__(self, name):
-        return self.data[:, self.columns.index(name)]
-
-    def __len__(self):
-        return self.data.shape[0]
-
-    def to_tsv(self, path):
-        """Writes the whole file under a temporary name, then renames it; rows go
-        out TSV_ROWS at a time, each value as repr() writes it (it reads back
-        exactly), formatted in C."""
-        from ._core import _tsv_rows
-        d = os.path.dirname(os.path.abspath(path))
-        fd, tmp = tempfile.mkstemp(prefix=".sweep-", dir=d)
-        try:
-            with os.fdopen(fd, "wb") as f:
-                head = "".join(f"# {k}: {v}\n" for k, v in self.meta.items())
-                f.write((head + "\t".join(self.columns) + "\n").encode())
-                for i in range(0, len(self), TSV_ROWS):
-                    f.write(_tsv_rows(self.data[i:i + TSV_ROWS]))
-            os.chmod(tmp, 0o644)
-            os.replace(tmp, path)
-        except BaseException:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-            raise
-
-
 class _ChunkFailed(Exception):
     """Tasks failed outside fn (their worker died, no worker left): chunk indices, why."""
 
@@ -240,7 +202,14 @@ def _gather(client, futures, consume, timeout, worker_timeout):
                 raise _ChunkFailed(bad, f"task failed: {type(e).__name__}: {e}")
             raise _ChunkFailed(bad, f"task {f.status} (its worker died?)")
         while done < len(futures) and futures[done].status == "finished":
-            consume(done, futures[done].result())
+            try:
+                # A result held by a worker that died is not there to gather: the
+                # scheduler computes it again (the future goes back to pending),
+                # or no worker is left; either way the loop looks again.
+                part = futures[done].result(timeout=GATHER_WAIT)
+            except (TimeoutError, asyncio.TimeoutError):
+                break
+            consume(done, part)
             futures[done].release()
             done += 1
         if done == len(futures):
@@ -302,10 +271,12 @@ def _check_arguments(fn, scheduler, n_workers, timeout, worker_timeout):
 
 
 class _Table:
-    """The result table, filled chunk by chunk in order: the axes' columns, then fn's."""
+    """The result, filled chunk by chunk in order: the axes' columns, then fn's;
+    in memory, or streamed to an _H5Writer (memory: one chunk)."""
 
-    def __init__(self, axes, bounds):
+    def __init__(self, axes, bounds, writer=None):
         self.axes, self.bounds, self.keys, self.data = axes, bounds, None, None
+        self.writer, self.done = writer, 0
 
     def where(self, first, last):
         p = self.axes.point(first)
@@ -320,18 +291,27 @@ class _Table:
             raise SweepError(f"sweep: {self.where(first, last)}: {message}")
         if self.keys is None:
             self.keys = keys
-            self.data = np.empty((self.axes.n, len(self.axes.names) + len(keys)))
+            if self.writer is not None:
+                self.writer.create(self.axes.names + keys)
+            else:
+                self.data = np.empty((self.axes.n, len(self.axes.names) + len(keys)))
         elif keys != self.keys:
             raise SweepError(f"sweep: {self.where(start, start)}: fn returned a dict with keys "
                              f"{keys}, expected a dict with the first point's keys {self.keys}")
+        rows = np.empty((stop - start, len(self.axes.names) + len(keys)))
         m = len(self.axes.names)
         for i, v in enumerate(self.axes.columns(start, stop).values()):
-            self.data[start:stop, i] = v
-        self.data[start:stop, m:] = values
+            rows[:, i] = v
+        rows[:, m:] = values
+        if self.writer is not None:
+            self.writer.write(start, stop, rows)
+        else:
+            self.data[start:stop] = rows
+        self.done = stop
 
 
 def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size=None,
-          meta=None, timeout=None, worker_timeout=60.0, batch=None):
+          meta=None, timeout=None, worker_timeout=60.0, batch=None, out=None, progress=None):
     """Evaluates fn over the points of grid x sample; returns a SweepResult.
 
     grid: {name: 1-D values}, the Cartesian product in the given order;
@@ -341,7 +321,12 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
     meta: extra metadata lines {key: value} for the file;
     timeout: seconds the whole Dask run may take (None: no bound);
     worker_timeout: seconds the sweep waits with no worker connected;
-    batch: fn takes a chunk's columns (default: getattr(fn, "batch", False)).
+    batch: fn takes a chunk's columns (default: getattr(fn, "batch", False));
+    out: an HDF5 file (.h5, .hdf5) the rows stream to chunk by chunk (memory
+         holds one chunk; the file appears whole when the sweep is done, or not
+         at all); the result's columns are then mapped from it (read_sweep);
+    progress: True (a line on stderr: points done, rate, time left) or
+         fn(points, total, seconds), called after each chunk in order.
     """
     _check_arguments(fn, scheduler, n_workers, timeout, worker_timeout)
     batch = bool(getattr(fn, "batch", False)) if batch is None else batch
@@ -353,19 +338,34 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
     if not (isinstance(chunk_size, int) and chunk_size >= 1):
         raise ValueError(f"sweep: chunk_size = {chunk_size!r} must be an integer >= 1")
     bounds = [(a, min(axes.n, a + chunk_size)) for a in range(0, axes.n, chunk_size)]
-    table = _Table(axes, bounds)
+    if out is not None and not str(out).endswith((".h5", ".hdf5")):
+        raise ValueError(f"sweep: out = {out!r} must name an HDF5 file (.h5 or .hdf5); "
+                         "SweepResult.to_tsv writes TSV")
+    report = _Progress(progress, axes.n)
+    writer = _H5Writer(out, axes.n) if out is not None else None
+    table = _Table(axes, bounds, writer)
+
+    def consume(index, part):
+        table(index, part)
+        report(table.done)
+
     start = time.perf_counter()
-    if scheduler == "serial":
-        for i, (a, b) in enumerate(bounds):
-            table(i, _run_chunk(fn, batch, axes, a, b))
-        workers = 1
-    else:
-        try:
-            workers = _dask(fn, batch, axes, bounds, table, scheduler, n_workers, timeout,
-                            worker_timeout)
-        except _ChunkFailed as e:
-            where = [table.where(bounds[c][0], bounds[c][1] - 1) for c in e.indices]
-            raise SweepError(f"sweep: {', '.join(where)}: {e.message}") from None
+    try:
+        if scheduler == "serial":
+            for i, (a, b) in enumerate(bounds):
+                consume(i, _run_chunk(fn, batch, axes, a, b))
+            workers = 1
+        else:
+            try:
+                workers = _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout,
+                                worker_timeout)
+            except _ChunkFailed as e:
+                where = [table.where(bounds[c][0], bounds[c][1] - 1) for c in e.indices]
+                raise SweepError(f"sweep: {', '.join(where)}: {e.message}") from None
+    except BaseException:
+        if writer is not None:
+            writer.abort()
+        raise
     seconds = time.perf_counter() - start
     from . import __version__ as version
     info = {"tool": f"stickslip.sweep {version}",
@@ -377,6 +377,9 @@ def sweep(fn, grid=None, sample=None, *, scheduler=None, n_workers=2, chunk_size
             "scheduler": scheduler or f"LocalCluster({n_workers} workers)",
             "workers": workers, "chunk_size": chunk_size, "seconds": f"{seconds:.3f}"}
     info.update(meta or {})
+    if writer is not None:
+        writer.finish(info)
+        return read_sweep(writer.path)
     return SweepResult(axes.names + table.keys, table.data, info)
 
 
@@ -430,3 +433,23 @@ def stick_slip_orbits(columns):
 
 
 stick_slip_orbits.batch = True
+
+
+def forced_orbits(columns):
+    """A ready-made batch fn for forced sweeps: studies/seed_forced.ini's
+    oscillator (cubic law, beta 0.05, v 0.25, A 0.3, Omega 0.6) with the chunk's
+    columns (omega, force or a parameter of the law), by stickslip.orbits on a
+    ForcedParams in one call on one thread: the attractor after 20 forcing
+    periods from rest, its least period m <= 4 and the orbit shot on it.
+    found 1 with m, sticks, amplitude (x_max - x_min)/2, period, stable; rows
+    with no period up to 4 (aperiodic) give found 0 and zeros."""
+    from . import ForcedParams, Params, orbits
+    p = ForcedParams(Params(beta=0.05, v=0.25), force=0.3, omega=0.6)
+    r = orbits(p, columns, threads=1)
+    return {"found": r["found"].astype(float), "stick_slip": r["stick_slip"].astype(float),
+            "m": r["m"].astype(float), "sticks": r["sticks"].astype(float),
+            "amplitude": (r["x_max"] - r["x_min"]) / 2, "period": r["period"],
+            "stable": r["stable"].astype(float)}
+
+
+forced_orbits.batch = True

@@ -107,9 +107,10 @@ class EveryResultArrayReadOnly(unittest.TestCase):
 
     # Functions that return no result arrays of a computation (names, scales, a
     # restart point's parameters) or whose results have their own test (sweep:
-    # test_sweep.py; stick_slip_orbit(s) are sweep's fns; group_stats reads a SweepResult).
+    # test_sweep.py, read_sweep too; stick_slip_orbit(s), forced_orbits are sweep's fns; group_stats reads a SweepResult).
     NO_ARRAYS = {"default_range", "parameter_names", "scales", "restart", "sweep",
-                 "stick_slip_orbit", "stick_slip_orbits", "group_stats"}
+                 "stick_slip_orbit", "stick_slip_orbits", "forced_orbits", "group_stats",
+                 "read_sweep"}
 
     def calls(self):
         p = stickslip.Params()
@@ -136,7 +137,8 @@ class EveryResultArrayReadOnly(unittest.TestCase):
             "find_forced_orbits": lambda: stickslip.find_forced_orbits(fp, max_m=2, grid=3),
             "forced_basins": lambda: stickslip.forced_basins(fp, nx=2, ny=2),
             "forced_orbit": lambda: fo,
-            "orbits": lambda: stickslip.orbits(p, {"v": [0.25, 0.47]}, floquet=True),
+            "orbits": lambda: (stickslip.orbits(p, {"v": [0.25, 0.47]}, floquet=True),
+                               stickslip.orbits(fp, {"omega": [0.6, 0.52]})),
             "orbit_curve": lambda: stickslip.orbit_curve(p, orbit, n=20),
             "orbit_diagram": lambda: stickslip.orbit_diagram(fp, w, 0.61, 0.62, n=3,
                                                              transient=50, keep=4),

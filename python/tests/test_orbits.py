@@ -101,5 +101,86 @@ class Orbits(unittest.TestCase):
         self.assertTrue(all(a.shape == (0,) for a in r.values()))
 
 
+FORCED_KEYS = ["status", "found", "stick_slip", "stable", "m", "sticks", "period", "x0", "xdot0",
+               "x_min", "x_max", "xdot_min", "xdot_max", "multiplier"]
+
+
+def seed_forced(omega=0.6):
+    """studies/seed_forced.ini's oscillator."""
+    return stickslip.ForcedParams(stickslip.Params(beta=0.05, v=0.25), force=0.3, omega=omega)
+
+
+class ForcedOrbits(unittest.TestCase):
+    """stickslip.orbits on a ForcedParams: the stroboscopic orbits of
+    orbits/system_batch.hpp, each row against forced_orbit (the single-orbit
+    API) from the row's point, and Den Hartog's non-stop amplitude."""
+
+    def test_rows_agree_with_forced_orbit(self):
+        w = np.repeat(np.linspace(0.5, 1.5, 21), 3)
+        mu_s = np.tile([0.38, 0.4, 0.42], 21)
+        r = stickslip.orbits(seed_forced(), {"omega": w, "mu_s": mu_s}, threads=2)
+        self.assertEqual(list(r), FORCED_KEYS)
+        for k, a in r.items():
+            self.assertFalse(a.flags.writeable, k)
+            self.assertEqual(a.shape, (63,), k)
+        found = r["status"] == OK
+        self.assertTrue(np.array_equal(found, r["found"]))
+        self.assertGreater(found.sum(), 50)
+        aperiodic = r["status"] == int(stickslip.OrbitStatus.aperiodic)
+        self.assertTrue(np.all(found | aperiodic))
+        for k in ("m", "period", "x_max", "multiplier"):
+            self.assertTrue(np.all(r[k][~found] == 0), k)
+        for i in np.flatnonzero(found):
+            p = seed_forced(w[i])
+            p.params = stickslip.Params(beta=0.05, v=0.25, mu_s=mu_s[i])
+            o = stickslip.forced_orbit(p, r["x0"][i], r["xdot0"][i], m=int(r["m"][i]))
+            self.assertEqual(o.sticks, r["sticks"][i])
+            self.assertAlmostEqual(o.period, r["period"][i], delta=1e-12)
+            self.assertAlmostEqual(o.x_max, r["x_max"][i], delta=1e-11)
+            self.assertAlmostEqual(o.xdot_min, r["xdot_min"][i], delta=1e-11)
+            self.assertAlmostEqual(abs(o.multipliers[0]), r["multiplier"][i], delta=1e-8)
+            self.assertEqual(r["stick_slip"][i], o.sticks > 0)
+
+    def test_non_stop_rows_match_den_hartog(self):
+        w = np.array([1.3, 1.5, 2.0, 2.5])
+        p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
+                                                    v=0.0), force=1.0, omega=1.3)
+        r = stickslip.orbits(p, {"omega": w}, x0=-0.5, transient=0, max_m=1, rtol=1e-14,
+                             atol=1e-14)
+        V = 1 / (1 - w * w)
+        U = np.sin(np.pi / w) / (w * (1 + np.cos(np.pi / w)))
+        X = np.sqrt(V * V - (0.3 * U) ** 2)  # Den Hartog (1931)
+        self.assertTrue(np.all(r["status"] == OK))
+        np.testing.assert_allclose(r["x_max"], X, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(-r["x_min"], X, rtol=0, atol=1e-9)
+        self.assertTrue(np.all(r["sticks"] == 0))
+
+    def test_one_and_two_threads_are_equal(self):
+        rng = np.random.default_rng(5)
+        cols = {"omega": rng.uniform(0.6, 1.4, 300), "mu_s": rng.normal(0.4, 0.02, 300)}
+        one = stickslip.orbits(seed_forced(), cols, threads=1)
+        two = stickslip.orbits(seed_forced(), cols, threads=2)
+        for k in FORCED_KEYS:
+            self.assertTrue(np.array_equal(one[k], two[k]), k)
+
+    def test_bad_input_names_the_argument(self):
+        p = seed_forced()
+        value_errors = [({"nope": [0.1]}, "column 'nope' is not a parameter of the forced cubic"),
+                        ({"mu_k": [0.1]}, "column 'mu_k' is not a parameter"),
+                        ({"omega": [0.5, 0.0]}, "row 1: omega"),
+                        ({"force": [0.1, math.nan]}, "row 1: force = nan is not finite"),
+                        ({"omega": [0.5], "force": [0.1, 0.2]}, "columns differ in length"),
+                        ({}, "no parameter column")]
+        for cols, words in value_errors:
+            with self.assertRaises(ValueError, msg=words) as e:
+                stickslip.orbits(p, cols)
+            self.assertIn(words, str(e.exception))
+        for kw, words in (({"max_m": 0}, "max_m = 0"), ({"transient": -1}, "transient = -1"),
+                          ({"recurrence": 0.0}, "recurrence = 0"), ({"x0": math.inf}, "start")):
+            with self.assertRaises(ValueError, msg=words) as e:
+                stickslip.orbits(p, {"omega": [0.5]}, **kw)
+            self.assertIn(words, str(e.exception))
+
+
 if __name__ == "__main__":
     unittest.main()

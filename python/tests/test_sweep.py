@@ -241,5 +241,113 @@ class Sweep(unittest.TestCase):
         self.assertIn("point 0 {'v': 0.1}: no worker left for 2 s", str(e.exception))
 
 
+def cheap(columns):
+    """Three numbers per point at NumPy speed: the sweep's own cost shows."""
+    v = columns["v"]
+    return {"a": v * 2.0, "b": v + columns["mu_s"], "c": np.sqrt(v)}
+
+
+cheap.batch = True
+
+MEMORY_SCRIPT = """
+import resource, sys, numpy as np, stickslip
+sys.path.insert(0, {here!r})
+from test_sweep import cheap
+n = int(sys.argv[1])
+grid = {{"v": np.linspace(0.1, 0.4, n // 1000)}}
+sample = {{"mu_s": np.linspace(0.35, 0.45, 1000)}}
+stickslip.sweep(cheap, grid, sample, scheduler="serial", chunk_size=50000, out=sys.argv[2])
+r = stickslip.read_sweep(sys.argv[2])
+print(len(r), resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+"""
+
+
+class Stream(unittest.TestCase):
+    """sweep(out=...) streams to one HDF5 file (python3-h5py); progress."""
+
+    def setUp(self):
+        try:
+            import h5py  # noqa: F401
+        except ImportError:
+            self.skipTest("no h5py (Debian: python3-h5py)")
+        self.dir = tempfile.mkdtemp(prefix="ss-stream-")
+
+    def tearDown(self):
+        import shutil
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def test_the_file_round_trips_to_the_in_memory_result(self):
+        path = os.path.join(self.dir, "s.h5")
+        mem = stickslip.sweep(stickslip.stick_slip_orbits, GRID, SAMPLE, scheduler="serial",
+                              chunk_size=5, meta={"study": "round trip"})
+        calls = []
+        f = stickslip.sweep(stickslip.stick_slip_orbits, GRID, SAMPLE, scheduler="serial",
+                            chunk_size=5, meta={"study": "round trip"}, out=path,
+                            progress=lambda *a: calls.append(a))
+        self.assertEqual(f.columns, mem.columns)
+        self.assertTrue(np.array_equal(f.data, mem.data))
+        for c in mem.columns:
+            self.assertFalse(f[c].flags.writeable, c)
+            self.assertTrue(np.array_equal(f[c], mem[c]), c)
+        self.assertEqual(set(f.meta), set(mem.meta))
+        for k in mem.meta:
+            if k != "seconds":
+                self.assertEqual(f.meta[k], str(mem.meta[k]), k)
+        # The same file from the in-memory result, and its TSV from either.
+        again = os.path.join(self.dir, "again.h5")
+        mem.to_hdf5(again)
+        self.assertTrue(np.array_equal(stickslip.read_sweep(again).data, mem.data))
+        mem.to_tsv(os.path.join(self.dir, "m.tsv"))
+        f.to_tsv(os.path.join(self.dir, "f.tsv"))
+        with open(os.path.join(self.dir, "m.tsv")) as a, open(os.path.join(self.dir, "f.tsv")) as b:
+            ra = [x for x in a if not x.startswith("# seconds")]
+            rb = [x for x in b if not x.startswith("# seconds")]
+        self.assertEqual(ra, rb)
+        # Progress after each chunk, in order, to the total.
+        n = len(mem)
+        self.assertEqual([c[0] for c in calls], list(range(5, n, 5)) + [n])
+        self.assertTrue(all(c[1] == n for c in calls))
+        self.assertEqual(sorted(os.listdir(self.dir)), ["again.h5", "f.tsv", "m.tsv", "s.h5"])
+
+    def test_a_failed_sweep_leaves_no_file(self):
+        path = os.path.join(self.dir, "s.h5")
+        with self.assertRaises(stickslip.SweepError):
+            stickslip.sweep(failing, GRID, SAMPLE, scheduler="serial", chunk_size=5, out=path)
+        self.assertEqual(os.listdir(self.dir), [])
+        with self.assertRaises(ValueError) as e:
+            stickslip.sweep(failing, GRID, scheduler="serial", out=os.path.join(self.dir, "x.csv"))
+        self.assertIn("out = ", str(e.exception))
+        with self.assertRaises(ValueError) as e:
+            stickslip.sweep(failing, GRID, scheduler="serial", progress="yes")
+        self.assertIn("progress = 'yes'", str(e.exception))
+
+    def test_the_progress_line(self):
+        import contextlib
+        import io
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            stickslip.sweep(cheap, {"v": [0.1, 0.2]}, {"mu_s": [0.4, 0.41]}, scheduler="serial",
+                            chunk_size=1, progress=True)
+        self.assertRegex(err.getvalue(), r"sweep: 4/4 points \(100 %\), [0-9.e+]+ points/s, "
+                         r"\d+ s left\n$")
+
+    def test_memory_does_not_grow_with_the_points(self):
+        import subprocess
+        import sys
+        script = MEMORY_SCRIPT.format(here=os.path.dirname(os.path.abspath(__file__)))
+        peak = {}
+        for n in (200000, 2000000):
+            out = subprocess.run([sys.executable, "-c", script, str(n),
+                                  os.path.join(self.dir, f"{n}.h5")],
+                                 capture_output=True, text=True, check=True)
+            rows, kb = map(int, out.stdout.split())
+            self.assertEqual(rows, n)
+            peak[n] = kb / 1024
+        # In memory the 2e6-point table alone is 2e6 x 5 x 8 B = 76 MB.
+        print(f"[ measured ] peak RSS {peak[200000]:.1f} MB at 2e5 points, "
+              f"{peak[2000000]:.1f} MB at 2e6")
+        self.assertLess(peak[2000000] - peak[200000], 20)
+
+
 if __name__ == "__main__":
     unittest.main()

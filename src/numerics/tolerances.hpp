@@ -310,6 +310,12 @@ struct Tolerances : FixedTolerances {
   static constexpr double kClosedCurveGap = 0.1;
   // Forced shooting: a Newton step over kForcedNewtonCap (1 + |z|) is cut to it (damped Newton).
   static constexpr double kForcedNewtonCap = 0.5;
+  // Batched stroboscopic orbits: a fixed point of P^m is one of P^d if P^d moves it by at most
+  // kLeastPeriod (1 + |z|) (the Newton tolerance's 1e-12 times the map's error growth).
+  static constexpr double kLeastPeriod = 1e-8;
+  // Their transient runs at this rtol and atol (at least): it only has to bring the run within
+  // the recurrence tolerance (1e-3) of the attractor; the orbit is then shot at full accuracy.
+  static constexpr double kSettle = 1e-8;
   // Chart regions: a section-map run still above kRegionLive a0 after its cap oscillates.
   static constexpr double kRegionLive = 0.5;
 };

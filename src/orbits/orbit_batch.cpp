@@ -1,11 +1,10 @@
 #include "stickslip/orbits/orbit_batch.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <optional>
 #include <sstream>
 
-#include "parallel/pool.hpp"
+#include "batch_rows.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/model.hpp"
 
@@ -83,19 +82,13 @@ void Store(const OrbitResult& r, std::size_t i, OrbitBatch& out) {
 }
 
 // One worker: one finder, prepared at its first row, then blocks of rows
-// from `next` until none is left or `stop` is set. On the calling thread
-// (`hook` set) it polls the cancel hook before every row and at every step.
+// until none is left or the run stops (on the calling thread it polls the
+// cancel hook before every row and at every step).
 void Work(const Params& base, const std::vector<ParameterColumn>& columns,
-          const OrbitOptions& options, std::atomic<std::size_t>& next, std::atomic<bool>& stop,
-          const std::function<bool()>* hook, OrbitBatch& out) {
-  auto cancelled = [&] {
-    if (hook && !stop.load(std::memory_order_relaxed) && (*hook)()) stop = true;
-    return stop.load(std::memory_order_relaxed);
-  };
-  const std::size_t rows = out.rows();
+          const OrbitOptions& options, batch_detail::RowQueue& queue, OrbitBatch& out) {
+  auto cancelled = [&] { return queue.Cancelled(); };
   std::optional<OrbitFinder> finder;
-  for (std::size_t begin; !stop.load() && (begin = next.fetch_add(kBlockRows)) < rows;) {
-    const std::size_t end = std::min(rows, begin + kBlockRows);
+  for (std::size_t begin, end; queue.Take(&begin, &end);) {
     for (std::size_t i = begin; i < end && !cancelled(); ++i) {
       const Model model(RowParams(base, columns, i));
       if (finder) {
@@ -106,6 +99,7 @@ void Work(const Params& base, const std::vector<ParameterColumn>& columns,
       }
       Store(finder->StickSlip(true), i, out);
     }
+    queue.Done(end - begin);
   }
 }
 
@@ -134,27 +128,13 @@ OrbitBatch StickSlipOrbits(const Params& base, const std::vector<ParameterColumn
     out.cancelled = true;
     return out;
   }
-  const int workers = static_cast<int>(std::min<std::size_t>(
-      BoundedThreads(options.threads), (rows + kThreadRows - 1) / kThreadRows));
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
-  if (workers == 1) {  // on this thread: no thread to start
-    const std::function<bool()>* hook = options.cancelled ? &options.cancelled : nullptr;
-    try {
-      Work(base, columns, options.orbit, next, stop, hook, out);
-    } catch (const std::exception& e) {  // as the pool reports a task's exception
-      out.error = std::string("task 0: ") + e.what();
-    }
-    out.threads = 1;
-  } else {
-    const PoolRun pool = RunPool(
-        workers, workers,
-        [&](int) { Work(base, columns, options.orbit, next, stop, nullptr, out); }, stop,
-        [&] { return options.cancelled && options.cancelled(); });
-    out.threads = pool.threads;
-    out.error = pool.error;
-  }
-  out.cancelled = stop.load();
+  batch_detail::RowQueue queue(rows, kBlockRows);
+  const batch_detail::RowsRun run = batch_detail::RunRows(
+      queue, options.threads, kThreadRows, options.cancelled, {},
+      [&](batch_detail::RowQueue& q) { Work(base, columns, options.orbit, q, out); });
+  out.threads = run.threads;
+  out.error = run.error;
+  out.cancelled = run.cancelled;
   return out;
 }
 

@@ -61,6 +61,11 @@ void Shooting::set_max_return_time(double t) {
   options_.max_return_time = t;
 }
 
+void Shooting::set_max_newton(int n) {
+  if (n < 1) throw InvalidArgument("max_newton = " + std::to_string(n) + " must be >= 1");
+  options_.max_newton = n;
+}
+
 void Shooting::Check(const PoincareSection& p) const {
   const System& s = system();
   if (p.kind == SectionKind::kTime) {

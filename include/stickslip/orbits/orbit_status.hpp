@@ -17,6 +17,7 @@ enum class OrbitStatus {
   kMissed,            // StickSlip(first_return_only): the first return misses Omega
   kCancelled,         // the flow's cancel hook fired
   kSingular,          // shooting: DP - I is singular (a multiplier at 1)
+  kAperiodic,         // a batch row: no section point recurs within max_m periods
 };
 /// "ok", "no-return", ... for messages.
 const char* OrbitStatusName(OrbitStatus s);
@@ -32,6 +33,7 @@ struct EnumNames<OrbitStatus> {
       {OrbitStatus::kMissed, "missed"},
       {OrbitStatus::kCancelled, "cancelled"},
       {OrbitStatus::kSingular, "singular"},
+      {OrbitStatus::kAperiodic, "aperiodic"},
   };
 };
 

@@ -105,6 +105,8 @@ class Shooting {
   /// Event sections: give up after this time (throws InvalidArgument unless
   /// finite and > 0).
   void set_max_return_time(double t);
+  /// Newton iterations per Find (throws InvalidArgument unless >= 1).
+  void set_max_newton(int n);
 
   /// Newton from `guess` (kTime: its mode is Filippov's at the state; event
   /// sections: its mode is trusted). Throws InvalidArgument for a section
