@@ -101,7 +101,7 @@ void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
-void BindBatch(py::module_& m);  // py_batch.cpp: orbits()
+void BindBatch(py::module_& m);        // py_batch.cpp: orbits()
 void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.

@@ -126,7 +126,7 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
   FlowPoint guess{0, state, ModeOf(*s, state)};
   if (sec.kind == SectionKind::kStickExit)  // the slip it leaves into, the way lambda points
     guess.mode = ModeSet(s->StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow
-                                                                             : Mode::kSlipAbove);
+                                                                            : Mode::kSlipAbove);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
   OrbitBranch b;

@@ -51,15 +51,9 @@ const char* ForcedLabelName(ForcedLabel l);  // "", "LP", "PD", "NS", "GR", ...
 template <>
 struct EnumNames<ForcedLabel> {
   static constexpr NamedValue<ForcedLabel> kTable[] = {
-      {ForcedLabel::kNone, ""},
-      {ForcedLabel::kLP, "LP"},
-      {ForcedLabel::kPD, "PD"},
-      {ForcedLabel::kNS, "NS"},
-      {ForcedLabel::kGR, "GR"},
-      {ForcedLabel::kSW, "SW"},
-      {ForcedLabel::kAD, "AD"},
-      {ForcedLabel::kCR, "CR"},
-      {ForcedLabel::kSL, "SL"},
+      {ForcedLabel::kNone, ""}, {ForcedLabel::kLP, "LP"}, {ForcedLabel::kPD, "PD"},
+      {ForcedLabel::kNS, "NS"}, {ForcedLabel::kGR, "GR"}, {ForcedLabel::kSW, "SW"},
+      {ForcedLabel::kAD, "AD"}, {ForcedLabel::kCR, "CR"}, {ForcedLabel::kSL, "SL"},
   };
 };
 
