@@ -37,15 +37,19 @@ std::unique_ptr<System> SystemOf(const py::object& system) {
                         " is neither Params nor ForcedParams");
 }
 
-PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z,
-                          int m) {
+PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
+                          std::optional<int> turns) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
+  if (turns && (*turns < 1 || s.clocks() != 1 || name != "stick-exit"))
+    throw InvalidArgument("turns = " + std::to_string(*turns) +
+                          ": a forced system's stick-exit section only, >= 1");
   if (name == "stroboscopic") {
     if (s.clocks() != 1)
       throw InvalidArgument("section: 'stroboscopic' needs a forced system (ForcedParams)");
     return PoincareSection::Stroboscopic(s, z, m);
   }
-  if (name == "stick-exit") return PoincareSection::StickExit(0, m, s.clocks() ? m : 0);
+  if (name == "stick-exit")  // m exits close the orbit; a clock turns `turns` (m) times
+    return PoincareSection::StickExit(0, m, s.clocks() ? turns.value_or(m) : 0);
   if (name == "xdot-falling") {
     if (s.clocks() != 0 || m != 1)
       throw InvalidArgument("section: 'xdot-falling' is the belt's (Params), once per period");
@@ -104,8 +108,9 @@ PyOrbitBranch Convert(const OrbitBranch& b, const System& s, int j) {
 
 PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& parameter,
                                const Eigen::VectorXd& state, double to, const std::string& section,
-                               int m, double max_amplitude, std::optional<double> max_step,
-                               std::optional<double> rtol, std::optional<double> atol) {
+                               int m, std::optional<int> turns, double max_amplitude,
+                               std::optional<double> max_step, std::optional<double> rtol,
+                               std::optional<double> atol) {
   const std::unique_ptr<System> s = SystemOf(system);
   const int j = s->ParameterIndex(parameter);
   if (j < 0) throw InvalidArgument("parameter = '" + parameter + "' is no parameter of the system");
@@ -122,7 +127,7 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
     o.palc.ds_max = *max_step * width;  // a share of the range, as ss_continue's --max_step
     o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   }
-  const PoincareSection sec = SectionOf(*s, section, state, m);
+  const PoincareSection sec = SectionOf(*s, section, state, m, turns);
   FlowPoint guess{0, state, ModeOf(*s, state)};
   if (sec.kind == SectionKind::kStickExit)  // the slip it leaves into, the way lambda points
     guess.mode = ModeSet(s->StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow
@@ -171,11 +176,12 @@ void BindOrbitBranch(py::module_& m) {
   const py::object none = py::none();
   m.def("continue_orbits", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
         py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
-        py::arg("max_amplitude") = 1e3, py::arg("max_step") = none, py::arg("rtol") = none,
-        py::arg("atol") = none,
+        py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
+        py::arg("rtol") = none, py::arg("atol") = none,
         "The branch of periodic orbits of `system` (Params: the belt; ForcedParams: the forced "
         "oscillator) through the one near `state` (x, x'[, theta]) on `section` "
-        "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit; 'xdot-falling': the "
+        "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit, after `turns` forcing "
+        "periods (default m) on a forced system; 'xdot-falling': the "
         "belt's x' = 0), continued in `parameter` from its value in `system` to `to`, with the "
         "LP, PD, NS and SL points located (the one branch driver, C++ ContinueOrbits).");
 }

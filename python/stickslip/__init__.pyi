@@ -284,6 +284,28 @@ class ForcedBranch:
     def to_tsv(self, path: Any) -> None: ...
     def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True) -> Any: ...
 
+class OrbitBranch:
+    status: ForcedBranchStatus
+    message: str
+    parameter: str
+    p: Array
+    state: Array
+    period: Array
+    sticks: Array
+    exits: Array
+    crossings: Array
+    lo: Array
+    hi: Array
+    multipliers: Array
+    stable: Array
+    label: Array
+    special: List[Tuple[str, float, str]]
+    jumps: int
+    evaluations: int
+    seconds: float
+
+BranchStatus: type[ForcedBranchStatus]
+
 class ForcedSpecialPoint:
     label: str
     description: str
@@ -541,6 +563,10 @@ def continue_forced(params: ForcedParams, axis: ForcedAxis, from_: float, to: fl
                     m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None,
                     atol: Optional[float] = None) -> ForcedBranch: ...
+def continue_orbits(system: Union[Params, ForcedParams], parameter: str, state: Any, to: float,
+                    section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
+                    max_amplitude: float = 1e3, max_step: Optional[float] = None,
+                    rtol: Optional[float] = None, atol: Optional[float] = None) -> OrbitBranch: ...
 def continue_doubled(point: ForcedSpecialPoint, lo: Optional[float] = None,
                      hi: Optional[float] = None, max_amplitude: float = 1e3,
                      max_step: Optional[float] = None, rtol: Optional[float] = None,

@@ -131,6 +131,8 @@ class EveryResultArrayReadOnly(unittest.TestCase):
             "continue_doubled": lambda: stickslip.continue_doubled(pd, lo=pd.p - 0.003,
                                                                    hi=pd.p + 0.003),
             "continue_forced": lambda: branch,
+            "continue_orbits": lambda: stickslip.continue_orbits(
+                fp, "omega", [fo.x0, fo.xdot0, 0.0], 0.615, max_step=0.5),
             "continue_physical": lambda: stickslip.continue_physical(
                 mass=2.0, stiffness=800.0, damping=4.0, belt_speed=0.1, mu_s=0.4, mu_m=0.25,
                 speed_m=0.2, from_=0.1, to=0.12),

@@ -1,4 +1,3 @@
-#include "numerics/tolerances.hpp"
 #include "stickslip/continuation/continuation.hpp"
 
 #include <algorithm>
@@ -6,6 +5,7 @@
 
 #include "continuation/branch_tracers.hpp"
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 
@@ -30,8 +30,8 @@ std::string ContinuationOptions::ValidationError(const Params& base) const {
   if (!(max_step > min_step))
     return "max_step = " + Num(max_step) + " must be > min_step = " + Num(min_step);
   if (!(locate_tol > 0 && locate_tol < Tolerances::kLocateTolMax))
-    return "locate_tol = " + Num(locate_tol) + " must be in (0, " +
-           Num(Tolerances::kLocateTolMax) + ")";
+    return "locate_tol = " + Num(locate_tol) + " must be in (0, " + Num(Tolerances::kLocateTolMax) +
+           ")";
   if (max_points < 2) return "max_points = " + Num(max_points) + " must be >= 2";
   for (double p : {from, to}) {
     const std::string err = stickslip::ValidationError(param.At(base, p));

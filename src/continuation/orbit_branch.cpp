@@ -142,6 +142,17 @@ BranchStatus FromPalc(const PalcResult& r) {
   return r.message == "cancelled" ? BranchStatus::kCancelled : BranchStatus::kReachedEnd;
 }
 
+// The step of the last two plain rows (special rows sit within locate_tol of one).
+double LastStep(const std::vector<OrbitRow>& rows) {
+  const OrbitRow* later = nullptr;
+  for (auto it = rows.rbegin(); it != rows.rend(); ++it) {
+    if (it->label != SpecialKind::kNone) continue;
+    if (later) return later->p - it->p;
+    later = &*it;
+  }
+  return 0;
+}
+
 // Palc traces from the start, and from the orbit beyond each corner or jump
 // where the corrector fails (JumpAcross).
 void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, const FlowPoint& start, double from,
@@ -149,24 +160,35 @@ void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, const FlowPoint&
   const int k = problem.parameter_index();
   const double dir = to > from ? 1 : -1;
   VectorXd u0 = problem.Unknowns(start, from), along = VectorXd::Unit(k + 1, k) * dir;
+  const auto cancelled = [&] { return o.palc.cancelled && o.palc.cancelled(); };
   for (;;) {
     const PalcResult r = palc.Trace(u0, k, along, std::ref(monitor));
     if (monitor.stopped()) return;
     out->status = FromPalc(r);
     out->message = r.message;
+    if (out->jumps > 0 && out->status == BranchStatus::kStartFailed) {  // the orbit beyond
+      out->status = BranchStatus::kStepTooSmall;
+      out->message = "the orbit beyond the last jump: " + r.message;
+    }
     if (out->status != BranchStatus::kStepTooSmall || out->rows.empty()) return;
     if (out->jumps >= o.max_jumps) {
       out->message += "; more than max_jumps = " + std::to_string(o.max_jumps) + " restarts";
       return;
     }
     const OrbitRow last = out->rows.back();
-    const double dp = out->rows.size() >= 2 ? last.p - out->rows[out->rows.size() - 2].p : 0;
+    const double dp = LastStep(out->rows);
     const double pdir = dp != 0 ? (dp > 0 ? 1 : -1) : dir;
     const double step = std::max(std::abs(dp), Tolerances::kBranchEdgeStep * std::abs(to - from));
     OrbitRow before, after;
     std::string why;
-    if (!orbit_detail::JumpAcross(problem, last, pdir, step, pdir == dir ? to : from, o.locate_tol,
-                                  &before, &after, &why)) {
+    const bool across = orbit_detail::JumpAcross(problem, last, pdir, step, pdir == dir ? to : from,
+                                                 o.locate_tol, &before, &after, &why);
+    if (cancelled()) {
+      out->status = BranchStatus::kCancelled;
+      out->message = "cancelled";
+      return;
+    }
+    if (!across) {
       out->message += "; " + why;
       return;
     }

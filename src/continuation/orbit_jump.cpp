@@ -25,6 +25,10 @@ bool OrbitAt(OrbitProblem& problem, const OrbitRow& from, double p, OrbitRow* ou
 
 bool JumpAcross(OrbitProblem& problem, const OrbitRow& last, double dir, double step, double limit,
                 double tol, OrbitRow* before, OrbitRow* after, std::string* why) {
+  if ((limit - last.p) * dir <= 0) {
+    *why = "no room beyond " + Num(last.p, 12) + " before " + Num(limit, 12);
+    return false;
+  }
   double h = step;
   OrbitRow far;
   bool found = false;

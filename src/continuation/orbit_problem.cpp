@@ -20,7 +20,8 @@ OrbitProblem::OrbitProblem(const System& system, int parameter, const FlowPoint&
       start_(start),
       section_(section),
       o_(o),
-      shooting_(system, o.shooting) {}
+      shooting_(system, o.shooting),
+      last_u_(VectorXd::Zero(nu_ + 1)) {}
 
 FlowPoint OrbitProblem::PointAt(const VectorXd& u) const {
   FlowPoint z = start_;
@@ -107,18 +108,25 @@ bool OrbitProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::
 // one size) the central difference stays: it turns the branch's corners.
 bool OrbitProblem::Difference(double p, const FlowPoint& z, MatrixXd* jac, std::string* why) {
   const double d = Tolerances::kBranchDifference * std::max(1.0, std::abs(p));
-  double qm = p - d;
-  system_->SetParameterValue(j_, qm);
-  if (!system_->ValidationError().empty()) qm = p;  // one-sided at the domain's edge
-  if (!MapAt(p + d, z, false, &rp_, &plus_, why) || !MapAt(qm, z, false, &rm_, &minus_, why))
+  std::string why_up, why_down;
+  const bool up = MapAt(p + d, z, false, &rp_, &plus_, &why_up);
+  const bool down = MapAt(p - d, z, false, &rm_, &minus_, &why_down);
+  if (!up && !down) {
+    *why = why_up;
     return false;
-  jac->col(nu_) = (rp_ - rm_) / (p + d - qm);
+  }
+  if (!up || !down) {  // one-sided: beyond the domain's edge, or no return on one side
+    if (!MapAt(p, z, false, up ? &rm_ : &rp_, up ? &minus_ : &plus_, why)) return false;
+    jac->col(nu_) = (rp_ - rm_) / (up ? (p + d) - p : p - (p - d));
+    return true;
+  }
+  const double hp = (p + d) - p, hm = p - (p - d);  // the steps as rounded
+  jac->col(nu_) = (rp_ - rm_) / ((p + d) - (p - d));
   auto same = [&](const PeriodicOrbit& o) {
     return o.sticks == last_.sticks && o.exits == last_.exits && o.crossings == last_.crossings;
   };
-  const double hm = p - qm;
-  if (same(plus_) == same(minus_) || !(hm > 0)) return true;
-  const VectorXd sp = (rp_ - r_) / d, sm = (r_ - rm_) / hm;
+  if (same(plus_) == same(minus_)) return true;
+  const VectorXd sp = (rp_ - r_) / hp, sm = (r_ - rm_) / hm;
   const VectorXd& keep = same(plus_) ? sp : sm;
   const double gap = (sp - sm).lpNorm<Eigen::Infinity>();
   if (gap > Tolerances::kJumpSlopeRatio * (1 + keep.lpNorm<Eigen::Infinity>()))

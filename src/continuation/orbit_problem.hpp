@@ -13,6 +13,8 @@ class OrbitProblem final : public PalcProblem {
  public:
   OrbitProblem(const System& system, int parameter, const FlowPoint& start,
                const PoincareSection& section, const OrbitBranchOptions& o);
+  OrbitProblem(const OrbitProblem&) = delete;  // holds o by reference
+  OrbitProblem& operator=(const OrbitProblem&) = delete;
   int unknowns() const override { return nu_ + 1; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override;

@@ -12,6 +12,8 @@ namespace stickslip::forced_detail {
 class StrobeProblem final : public PalcProblem {
  public:
   StrobeProblem(const ForcedParams& base, ForcedAxis axis, const ForcedBranchOptions& o);
+  StrobeProblem(const StrobeProblem&) = delete;  // core_ holds core_options_ by reference
+  StrobeProblem& operator=(const StrobeProblem&) = delete;
   int unknowns() const override { return 3; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override {

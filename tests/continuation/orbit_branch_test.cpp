@@ -179,6 +179,7 @@ TEST(OrbitBranch, BeltGrazingIsTheSwitchingSequencesChange) {
     if (s.kind == SpecialKind::kGrazing) gr = s.p;
   EXPECT_NEAR(sl.p, gr, 1e-9);
   EXPECT_EQ(b.rows.back().sticks, 1);
+  EXPECT_GE(b.jumps, 1);  // the corner: no pseudo-arclength step turns it
   std::printf("[ measured ] SL at v = %.15g, the belt's GR at %.15g\n", sl.p, gr);
 }
 

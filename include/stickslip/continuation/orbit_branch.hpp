@@ -74,8 +74,8 @@ struct OrbitBranch {
 /// parameter `parameter` from its value in `system` to `to`. A stroboscopic
 /// section's time follows the clock's frequency along the branch (its turns
 /// stay). Throws InvalidArgument on an invalid system, options, parameter
-/// index, range or section. options.palc.cancelled (if set) is polled before
-/// every correction and inside long runs.
+/// index, range or section. options.palc.cancelled (if set) is polled by the
+/// corrector loop, between the jumps and inside every run of the flow.
 OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
                            const PoincareSection& section, double to,
                            const OrbitBranchOptions& options);
