@@ -65,7 +65,7 @@ void BindEnums(py::module_& m) {
       .value("pure_slip", PointKind::kPureSlip)
       .value("equilibrium", PointKind::kEquilibrium, "steady sliding");
   Enum<SpecialKind>(m, "SpecialKind",
-                    "Special point of a branch (label GR, HB, LP, PD, NS, SL; none: a plain row).",
+                    "Special point of a branch (label GR, HB, LP, PD, NS, SL, AD, CR; none: a plain row).",
                     &SpecialLabel)
       .value("grazing", SpecialKind::kGrazing, "GR: the stick phase shrinks to zero")
       .value("hopf", SpecialKind::kHopf, "HB: 2 beta + mu'(v) = 0")
@@ -73,6 +73,8 @@ void BindEnums(py::module_& m) {
       .value("period_doubling", SpecialKind::kPeriodDoubling, "PD: a multiplier at -1")
       .value("torus", SpecialKind::kTorus, "NS: a complex pair on the unit circle")
       .value("sliding", SpecialKind::kSliding, "SL: the switching sequence changes")
+      .value("adding", SpecialKind::kAdding, "AD: a stick phase splits, or two merge")
+      .value("crossing", SpecialKind::kCrossing, "CR: a crossing reaches the static limit")
       .value("none", SpecialKind::kNone, "a plain row");
   Enum<ContinuationStatus>(m, "ContinuationStatus", "How a continuation ended.",
                            &ContinuationStatusName)

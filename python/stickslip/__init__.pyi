@@ -63,7 +63,9 @@ class SpecialKind(enum.IntEnum):
     period_doubling = 3
     torus = 4
     sliding = 5
-    none = 6
+    adding = 6
+    crossing = 7
+    none = 8
 class ContinuationStatus(enum.IntEnum):
     ok = 0
     failed = 1

@@ -40,7 +40,8 @@ class OrbitBranchTest(unittest.TestCase):
         self.assertEqual(b.status, stickslip.BranchStatus.reached_end, b.message)
         self.assertEqual(len(b.special), 1)
         label, p, description = b.special[0]
-        self.assertEqual(label, "SL")
+        self.assertEqual(label, "GR")
+        self.assertIn("grazing-sliding", description)
         self.assertIn("sticks 0 -> 1", description)
         r = stickslip.continue_branch(stickslip.Params(v=0.38), "v", 0.38, 0.42)
         gr = [s.p for s in r.special if s.kind == stickslip.SpecialKind.grazing]

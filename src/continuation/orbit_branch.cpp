@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
@@ -49,10 +50,15 @@ class Monitor {
         out_(out) {}
   bool operator()(const std::vector<PalcPoint>& curve);
   bool stopped() const { return stopped_; }
-  void Restart() { have_prev_ = false; }  // the next trace's first row starts anew
+  // After a jump inside a step the trace turned away from `to`: restart here.
+  const VectorXd* TurnedBack() const { return turned_ ? &turned_at_ : nullptr; }
+  void Restart() {  // the next trace's first row starts anew
+    if (turned_ && !out_.rows.empty()) out_.rows.pop_back();  // written again
+    have_prev_ = turned_ = false;
+  }
 
  private:
-  void Special(const BranchPoint& a, const BranchPoint& b);
+  bool Special(const BranchPoint& a, const BranchPoint& b);
   bool Ends(const OrbitRow& row);
 
   Palc& palc_;
@@ -63,28 +69,37 @@ class Monitor {
   int k_;  // p's component of u
   const OrbitBranchOptions& o_;
   OrbitBranch& out_;
-  bool have_prev_ = false, stopped_ = false;
+  bool have_prev_ = false, stopped_ = false, turned_ = false;
   BranchPoint prev_;
+  VectorXd turned_at_;
 };
 
-void Monitor::Special(const BranchPoint& a, const BranchPoint& b) {
+// The special points between a and b; true if the step crossed a jump.
+bool Monitor::Special(const BranchPoint& a, const BranchPoint& b) {
   std::vector<OrbitRow> found;
   std::vector<std::pair<BranchPoint, BranchPoint>> pieces;
-  orbit_detail::Sliding(palc_, problem_, a, b, o_.locate_tol, &found, &pieces);
+  const double range[2] = {std::min(from_, to_), std::max(from_, to_)};
+  const bool jumped =
+      orbit_detail::Sliding(palc_, problem_, a, b, range, o_.locate_tol, &found, &pieces);
   for (const auto& [lo, hi] : pieces)
     orbit_detail::TestPoints(palc_, problem_, lo, hi, o_.locate_tol, &found);
   std::sort(found.begin(), found.end(), [&](const OrbitRow& x, const OrbitRow& y) {
     return std::abs(x.p - a.row.p) < std::abs(y.p - a.row.p);
   });
   for (const OrbitRow& sp : found) out_.special.push_back(sp), out_.rows.push_back(sp);
+  return jumped;
 }
 
-// The branch's ends at a row: unbounded, or back past its start.
+// The branch's ends at a row: unbounded (a displacement beyond
+// max_amplitude: a component no other one is the rate of), or back past its start.
 bool Monitor::Ends(const OrbitRow& row) {
   const int nt = system_.tangent_dimension();
+  std::vector<bool> rate(nt, false);
+  for (int i = 0; i < nt; ++i)
+    if (const int j = system_.DerivativeOf(i); j >= 0 && j < nt) rate[j] = true;
   double size = 0;
   for (int i = 0; i < nt && i < row.lo.size(); ++i)
-    size = std::max({size, std::abs(row.lo[i]), std::abs(row.hi[i])});
+    if (!rate[i]) size = std::max({size, std::abs(row.lo[i]), std::abs(row.hi[i])});
   if (size > o_.max_amplitude) {
     out_.status = BranchStatus::kUnbounded;
     out_.message = "the orbit passed max_amplitude = " + Num(o_.max_amplitude);
@@ -118,12 +133,15 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
     here = c.u;
   }
   const BranchPoint point{here, problem_.Row()};
-  if (prev && have_prev_) Special(prev_, point);
+  const bool jumped = prev && have_prev_ && Special(prev_, point);
   prev_ = point;
   have_prev_ = true;
   out_.rows.push_back(point.row);
   stopped_ = Ends(point.row) || end;
-  return !stopped_;
+  // Across a jump Palc orients the far family's tangent by the near one's,
+  // which can point back: the sweep goes on toward `to`.
+  if (!stopped_ && jumped && curve.back().tangent[k_] * dir_ < 0) turned_ = true, turned_at_ = here;
+  return !stopped_ && !turned_;
 }
 
 BranchStatus FromPalc(const PalcResult& r) {
@@ -153,16 +171,27 @@ double LastStep(const std::vector<OrbitRow>& rows) {
   return 0;
 }
 
-// Palc traces from the start, and from the orbit beyond each corner or jump
-// where the corrector fails (JumpAcross).
-void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, const FlowPoint& start, double from,
-           double to, const OrbitBranchOptions& o, OrbitBranch* out) {
+// Palc traces from u0 (its component `fixed` held by the first correction,
+// along `along`), and from the orbit beyond each corner or jump where the
+// corrector fails (JumpAcross) or where a trace turned back after one.
+void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, VectorXd u0, int fixed,
+           VectorXd along, double from, double to, const OrbitBranchOptions& o, OrbitBranch* out) {
   const int k = problem.parameter_index();
   const double dir = to > from ? 1 : -1;
-  VectorXd u0 = problem.Unknowns(start, from), along = VectorXd::Unit(k + 1, k) * dir;
   const auto cancelled = [&] { return o.palc.cancelled && o.palc.cancelled(); };
   for (;;) {
-    const PalcResult r = palc.Trace(u0, k, along, std::ref(monitor));
+    const PalcResult r = palc.Trace(u0, fixed, along, std::ref(monitor));
+    if (const VectorXd* at = monitor.TurnedBack()) {
+      if (out->jumps >= o.max_jumps) {  // cut short: never "reached-end"
+        out->status = BranchStatus::kStepTooSmall;
+        out->message = "turned back after a jump, max_jumps = " + std::to_string(o.max_jumps);
+        return;
+      }
+      ++out->jumps;
+      u0 = *at, fixed = k, along = VectorXd::Unit(k + 1, k) * dir;
+      monitor.Restart();
+      continue;
+    }
     if (monitor.stopped()) return;
     out->status = FromPalc(r);
     out->message = r.message;
@@ -188,23 +217,31 @@ void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, const FlowPoint&
       out->message = "cancelled";
       return;
     }
-    if (!across) {
-      out->message += "; " + why;
-      return;
-    }
-    if (before.label != SpecialKind::kNone) {
+    if (across) {
       out->special.push_back(before);
       out->rows.push_back(before);
-    }
+    } else if (after.p == last.p) {  // no orbit beyond: the branch ends at the edge
+      out->message += "; " + why;
+      if (std::isfinite(before.p)) {
+        out->special.push_back(orbit_detail::EdgeWithoutOrbit(problem, before, pdir, o.locate_tol));
+        out->rows.push_back(out->special.back());
+      }
+      return;
+    }  // else: the orbit goes on past the failure (natural steps); on from there
     ++out->jumps;
     u0 = problem.Unknowns(after.start, after.p);
+    fixed = k;
     along = VectorXd::Unit(k + 1, k) * pdir;
     monitor.Restart();
   }
 }
 
-void Check(const System& system, int parameter, const FlowPoint& guess, double to,
-           const OrbitBranchOptions& options) {
+}  // namespace
+
+namespace orbit_detail {
+
+void CheckInputs(const System& system, int parameter, const FlowPoint& guess, double to,
+                 const OrbitBranchOptions& options) {
   std::string e = system.ValidationError();
   if (e.empty()) e = options.ValidationError();
   if (e.empty() && (parameter < 0 || parameter >= system.parameters()))
@@ -226,34 +263,48 @@ void Check(const System& system, int parameter, const FlowPoint& guess, double t
   if (!e.empty()) throw InvalidArgument(e);
 }
 
-}  // namespace
+OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int parameter,
+                        const VectorXd& u0, int fixed, const VectorXd& along, double from,
+                        double to, const OrbitBranchOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  Palc palc(problem, options.palc);
+  if (options.palc.cancelled) problem.shooting().flow().set_cancel(options.palc.cancelled);
+  OrbitBranch out;
+  out.status = BranchStatus::kMaxPoints;
+  Monitor monitor(palc, problem, system, parameter, from, to, options, out);
+  Trace(palc, problem, monitor, u0, fixed, along, from, to, options, &out);
+  if (out.status == BranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
+    out.message += " after the row at " + system.ParameterName(parameter) + " = " +
+                   Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
+                   " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
+  out.evaluations = palc.evaluations();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace orbit_detail
 
 OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
                            const PoincareSection& section, double to,
                            const OrbitBranchOptions& options) {
-  Check(system, parameter, guess, to, options);
+  orbit_detail::CheckInputs(system, parameter, guess, to, options);
   const auto start = std::chrono::steady_clock::now();
   const double from = system.ParameterValue(parameter);
   OrbitProblem problem(system, parameter, guess, section, options);
-  Palc palc(problem, options.palc);
   if (options.palc.cancelled) problem.shooting().flow().set_cancel(options.palc.cancelled);
-  OrbitBranch out;
   const PeriodicOrbit first = problem.shooting().Find(guess, section);
   if (!first.ok()) {
+    OrbitBranch out;
     out.status = first.status == OrbitStatus::kCancelled ? BranchStatus::kCancelled
                                                          : BranchStatus::kStartFailed;
     out.message = "no periodic orbit at " + system.ParameterName(parameter) + " = " + Num(from) +
                   " near the guess (" + Name(first.status) + ": " + first.message + ")";
     return out;
   }
-  out.status = BranchStatus::kMaxPoints;
-  Monitor monitor(palc, problem, system, parameter, from, to, options, out);
-  Trace(palc, problem, monitor, first.start, from, to, options, &out);
-  if (out.status == BranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
-    out.message += " after the row at " + system.ParameterName(parameter) + " = " +
-                   Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
-                   " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
-  out.evaluations = palc.evaluations();
+  const int k = problem.parameter_index();
+  OrbitBranch out =
+      orbit_detail::TraceBranch(problem, system, parameter, problem.Unknowns(first.start, from), k,
+                                VectorXd::Unit(k + 1, k) * (to > from ? 1 : -1), from, to, options);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

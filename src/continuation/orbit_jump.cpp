@@ -1,7 +1,10 @@
 // Across a corner or a jump of an orbit branch by natural steps in the
-// parameter (orbit_locate.hpp, JumpAcross).
+// parameter (orbit_locate.hpp): JumpAcross walks along one switching
+// sequence, BisectEdge locates where it ends, EdgeWithoutOrbit labels an
+// edge with no orbit of the same period beyond.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
@@ -23,61 +26,119 @@ bool OrbitAt(OrbitProblem& problem, const OrbitRow& from, double p, OrbitRow* ou
 
 }  // namespace
 
+bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, OrbitRow* before,
+                OrbitRow* after, std::string* why) {
+  const OrbitRow ref = lo;
+  OrbitRow orb, prev = lo;
+  bool have_prev = false;
+  auto good = [&](double p, const OrbitRow& from) {
+    std::string w;
+    return OrbitAt(problem, from, p, &orb, &w) && SameStructure(orb, ref);
+  };
+  while (std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p))) {
+    const double mid = 0.5 * (lo.p + hi);
+    // Newton from the secant predictor through the last two orbits: from lo
+    // alone the first iterate near the edge can land past it and converge to
+    // an orbit beyond, which would end the bisection early.
+    OrbitRow guess = lo;
+    if (have_prev) guess.start.z += (mid - lo.p) / (lo.p - prev.p) * (lo.start.z - prev.start.z);
+    bool ok = good(mid, guess);
+    // Not found: confirm by natural steps from lo (Newton can wander across
+    // a jump of the map near the edge and converge elsewhere).
+    for (int k = 1; k <= Tolerances::kBranchConfirmSteps && !ok; ++k) {
+      if (!good(lo.p + (mid - lo.p) * k / Tolerances::kBranchConfirmSteps, k == 1 ? lo : guess))
+        break;
+      guess = orb;
+      ok = k == Tolerances::kBranchConfirmSteps;
+    }
+    if (ok) {
+      prev = lo, have_prev = true;
+      lo = orb;
+    } else {
+      hi = mid;
+    }
+  }
+  *before = lo;
+  // The orbit beyond: Newton from the edge's orbit, else after settling there.
+  std::string w;
+  bool found = OrbitAt(problem, lo, hi, &orb, &w) && !SameStructure(orb, ref);
+  FlowPoint settled;
+  if (!found && problem.Settle(hi, lo, Tolerances::kBranchSettlePeriods, &settled) &&
+      problem.FindAt(hi, settled, &w)) {
+    orb = problem.Row();
+    found = !SameStructure(orb, ref);
+  }
+  if (!found) {
+    *why = "no periodic orbit found beyond " + Num(lo.p, 15) +
+           ", where the orbit's switching sequence ends";
+    return false;
+  }
+  *after = orb;
+  ClassifySliding(problem, lo, *after, before);
+  return true;
+}
+
 bool JumpAcross(OrbitProblem& problem, const OrbitRow& last, double dir, double step, double limit,
                 double tol, OrbitRow* before, OrbitRow* after, std::string* why) {
+  before->p = NAN;
+  *after = last;
   if ((limit - last.p) * dir <= 0) {
     *why = "no room beyond " + Num(last.p, 12) + " before " + Num(limit, 12);
     return false;
   }
-  double h = step;
-  OrbitRow far;
-  bool found = false;
-  for (int k = 0; k < Tolerances::kBranchJumpDoublings && !found; ++k, h *= 2) {
-    double p = last.p + dir * h;
-    if ((p - limit) * dir > 0) p = limit;
-    found = OrbitAt(problem, last, p, &far, why);
-    if (p == limit) break;
+  auto clamp = [&](double p) { return dir > 0 ? std::min(p, limit) : std::max(p, limit); };
+  OrbitRow lo = last, orb;
+  double hi = clamp(last.p + dir * step);
+  for (int k = 0;; ++k) {  // the first value past the edge
+    std::string w;
+    if (!OrbitAt(problem, lo, hi, &orb, &w) || !SameStructure(orb, last)) break;
+    lo = orb;
+    if (k == Tolerances::kBranchEdgeWalk || hi == limit) {
+      *why = "an orbit of the same switching sequence goes on to " + Num(hi, 12);
+      *after = lo;  // the farthest orbit found
+      return false;
+    }
+    hi = clamp(hi + dir * step * (2 << k));
   }
-  if (!found) {
-    *why = "no orbit beyond " + Num(last.p, 12) + " up to " + Num(limit, 12) + " (" + *why + ")";
-    return false;
-  }
-  *after = far;
-  if (SameStructure(far, last)) {  // a corner of one sequence: no edge
-    *before = last;
-    before->label = SpecialKind::kNone;
-    return true;
-  }
-  BisectEdge(problem, last, far, tol, before);
-  return true;
+  return BisectEdge(problem, lo, hi, tol, before, after, why);
 }
 
-void BisectEdge(OrbitProblem& problem, const OrbitRow& last, const OrbitRow& far, double tol,
-                OrbitRow* before) {
-  // Bisect the edge of last's sequence: lo keeps it, hi_p is beyond (an
-  // orbit of another sequence there, or none of last's).
-  OrbitRow lo = last, hi = far, mid;
-  double hi_p = far.p;
-  std::string w;
-  for (int it = 0;
-       it < Tolerances::kBranchBisectionCap && std::abs(hi_p - lo.p) > tol * (1 + std::abs(lo.p));
-       ++it) {
-    const double p = 0.5 * (lo.p + hi_p);
-    OrbitRow beyond = hi;  // no orbit of last's sequence at p: the edge lies before it
-    if (OrbitAt(problem, lo, p, &mid, &w)) {
-      if (SameStructure(mid, last)) {
-        lo = mid;
-        continue;
-      }
-      beyond = mid;
-    } else if (OrbitAt(problem, hi, p, &mid, &w) && !SameStructure(mid, last)) {
-      beyond = mid;
-    }
-    hi = beyond, hi_p = p;
+namespace {
+
+// Whether one period from `before`'s state just beyond the edge leaves a
+// stick phase early: its first switch that differs from the orbit's is a
+// stick exit while that contact still sticks on the orbit (a stick phase
+// splits where its constraint force reaches the static limit inside it).
+bool StickSplits(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& beyond) {
+  std::vector<FlowSwitch> on, off;
+  if (!problem.Switches(before, &on) || !problem.Switches(beyond, &off)) return false;
+  for (std::size_t i = 0; i < off.size(); ++i) {
+    const bool differs =
+        i >= on.size() || off[i].kind != on[i].kind || off[i].contact != on[i].contact;
+    if (!differs) continue;
+    return off[i].kind == SwitchKind::kStickOut && off[i].before.sticks(off[i].contact) &&
+           (i >= on.size() || on[i].t > off[i].t);
   }
-  *before = lo;
-  before->label = SpecialKind::kSliding;
-  before->description = "the switching sequence changes" + SequenceChange(lo, hi);
+  return false;
+}
+
+}  // namespace
+
+OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol) {
+  OrbitRow beyond = before, point = before;
+  beyond.p = before.p + dir * 10 * tol * (1 + std::abs(before.p));
+  // Labelled by the switching counts of one period just beyond, from the
+  // edge's state, where the system is valid there and the run ends well.
+  point.label = SpecialKind::kSliding;
+  if (problem.Counts(&beyond)) ClassifySliding(problem, before, beyond, &point);
+  if (StickSplits(problem, before, beyond)) {
+    point.label = SpecialKind::kAdding;  // the slip that splits the stick is not short: a jump
+    point.description =
+        "adding-sliding: the stick force reaches the static limit inside a stick phase, which "
+        "splits (the slip is not short: the map jumps)";
+  }
+  point.description += "; no periodic orbit of the same period beyond";
+  return point;
 }
 
 }  // namespace stickslip::orbit_detail

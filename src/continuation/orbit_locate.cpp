@@ -1,6 +1,7 @@
 // Special points of an orbit branch between two rows (orbit_locate.hpp).
 #include "orbit_locate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -119,41 +120,86 @@ std::string SequenceChange(const OrbitRow& a, const OrbitRow& b) {
          Change("crossings", a.crossings, b.crossings);
 }
 
-void Sliding(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
-             double tol, std::vector<OrbitRow>* found,
+namespace {
+
+// The edge behind a failed or far-apart chord bracket br (span: the chord's
+// parameter span; range: the branch's): along the chord, or behind a corner
+// of the branch (two branches meeting at the edge), so both ways; b_row is
+// the chord's far end.
+Bracket AcrossEdge(OrbitProblem& problem, const Bracket& br, bool chord, double span,
+                   const OrbitRow& b_row, const double range[2], double tol) {
+  Bracket out = br, fine;
+  const double step =
+      std::max(std::abs(span) / 8, Tolerances::kBranchEdgeStep * (1 + std::abs(out.lo.p)));
+  bool found_edge = false, edge_only = false;
+  for (const double sign : {1.0, -1.0}) {
+    if (found_edge || edge_only) break;
+    const double d = sign * (span > 0 ? 1 : -1);
+    // Never past the branch's range (validated; beyond it the system may not be).
+    const double limit =
+        std::clamp(out.lo.p + d * Tolerances::kBranchEdgeReach * step, range[0], range[1]);
+    std::string why;
+    found_edge = JumpAcross(problem, out.lo, d, step, limit, tol, &fine.lo, &fine.hi, &why);
+    // The edge bisected with no orbit of the same period just beyond (the
+    // branch went on to one far away): the edge is the point, b the far side.
+    edge_only = !found_edge && std::isfinite(fine.lo.p);
+  }
+  if (found_edge) {
+    out = fine;
+  } else if (edge_only) {
+    out.lo = fine.lo, out.hi = b_row;
+  } else if (!chord) {
+    out.hi = b_row;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool Sliding(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
+             const double range[2], double tol, std::vector<OrbitRow>* found,
              std::vector<std::pair<BranchPoint, BranchPoint>>* pieces) {
+  const int k_p = problem.parameter_index();
+  const double edge_gap = Tolerances::kBranchEdgeGap * tol;
   BranchPoint piece = a;
-  OrbitRow ref = a.row;
+  OrbitRow ref = a.row, first_lo;
   VectorXd from = a.u;
+  bool jumped = false;
+  const std::size_t first = found->size();
   for (int k = 0; k < Tolerances::kBranchEdges && !SameStructure(ref, b.row); ++k) {
     auto test = [&] { return SameStructure(problem.Row(), ref) ? 1.0 : -1.0; };
     Bracket br;
     // On the chord; where the corrector fails there, the edge of the orbits
     // of ref's sequence (a jump of the map).
-    if (!Locate(palc, problem, from, b.u, test, tol, &br) &&
-        !Locate(palc, problem, from, b.u, test, tol, &br, true))
-      break;
-    // Where the branch turns a corner the chord's planes meet it on either
-    // side far apart: then the edge is bisected in p (BisectEdge).
+    const bool chord = Locate(palc, problem, from, b.u, test, tol, &br);
+    if (!chord && !Locate(palc, problem, from, b.u, test, tol, &br, true)) break;
+    // Where the map jumps or the branch turns a corner, the chord's planes
+    // meet it short of the edge or either side of it far apart: the edge is
+    // found by natural steps from the last orbit of ref's sequence.
     const double gap = std::max(std::abs(br.hi.p - br.lo.p),
                                 (br.hi.start.z - br.lo.start.z).lpNorm<Eigen::Infinity>());
     const double size = 1 + std::abs(br.lo.p) + br.lo.start.z.lpNorm<Eigen::Infinity>();
-    OrbitRow point = br.lo;
-    if (gap > Tolerances::kBranchEdgeGap * tol * size) {
-      BisectEdge(problem, br.lo, br.hi, tol, &point);
-      br.lo = point;
+    if (!chord || gap > edge_gap * size) {
+      br = AcrossEdge(problem, br, chord, b.u[k_p] - from[k_p], b.row, range, tol);
+      jumped = true;
     }
-    point.label = SpecialKind::kSliding;
-    point.description = "the switching sequence changes" + SequenceChange(br.lo, br.hi);
+    // Edges within the tolerance are one point (the two halves of a
+    // symmetric orbit on a floor reach the static limit together).
+    const bool same = found->size() > first &&
+                      std::abs(br.lo.p - found->back().p) <= edge_gap * (1 + std::abs(br.lo.p));
+    if (same) found->pop_back();
+    if (!same) first_lo = br.lo;
+    OrbitRow point = first_lo;
+    ClassifySliding(problem, first_lo, br.hi, &point);
     found->push_back(point);
-    const BranchPoint lo{problem.Unknowns(br.lo.start, br.lo.p), br.lo};
-    const BranchPoint hi{problem.Unknowns(br.hi.start, br.hi.p), br.hi};
-    pieces->push_back({piece, lo});
-    piece = hi;
+    pieces->push_back({piece, {problem.Unknowns(br.lo.start, br.lo.p), br.lo}});
+    piece = {problem.Unknowns(br.hi.start, br.hi.p), br.hi};
+    if (SameStructure(br.hi, ref)) break;
     ref = br.hi;
-    from = hi.u;
+    from = piece.u;
   }
   pieces->push_back({piece, b});
+  return jumped;
 }
 
 }  // namespace stickslip::orbit_detail

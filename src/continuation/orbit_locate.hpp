@@ -38,39 +38,45 @@ void TestPoints(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const B
                 double tol, std::vector<OrbitRow>* found, int depth = 0);
 
 // The changes of the switching sequence from a to b (at most kBranchEdges),
-// each located to tol and appended to *found as an SL point, and the pieces
-// of one sequence between them appended to *pieces.
-void Sliding(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
-             double tol, std::vector<OrbitRow>* found,
+// each located to tol and appended to *found, labelled (ClassifySliding),
+// and the pieces of one sequence between them appended to *pieces. Where
+// the chord fails or meets the branch far apart either side of an edge, the
+// edge is found by natural steps in p (JumpAcross) within range = {lo, hi}:
+// then true (the trace crossed a jump).
+bool Sliding(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
+             const double range[2], double tol, std::vector<OrbitRow>* found,
              std::vector<std::pair<BranchPoint, BranchPoint>>* pieces);
 
-// The edge of last's switching sequence between last and far (an orbit of
-// another sequence), bisected in p to tol by damped Newton at fixed p:
-// *before is the last orbit of last's sequence, labelled SL.
-void BisectEdge(OrbitProblem& problem, const OrbitRow& last, const OrbitRow& far, double tol,
-                OrbitRow* before);
-
-}  // namespace stickslip::orbit_detail
-
-namespace stickslip::orbit_detail {
+// The label of a located change of the switching sequence from `before` to
+// `after` (the orbits either side): GR, AD, CR, else SL, with a one-line
+// description, set on *point (orbit_sliding.cpp).
+void ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& after,
+                     OrbitRow* point);
 
 // ", sticks 0 -> 1, crossings 2 -> 1": the counts that differ from a to b.
 std::string SequenceChange(const OrbitRow& a, const OrbitRow& b);
 
-// Where the corrector failed beyond `last` (a corner sharper than a right
-// angle, or a jump of the map where a stick phase of finite length is born):
-// the orbit at p = last.p + dir h by damped Newton at fixed p from last's state, h
-// doubled from `step` up to `limit`; then the edge of last's switching
-// sequence bisected in p to tol. *before: the last orbit of last's sequence,
-// labelled SL; *after: the first orbit beyond it. False, with *why, if no
-// orbit is found before limit.
+// Where the corrector failed beyond `last` (the parameter moving by dir =
+// +-1, never past `limit`): natural steps of `step`, doubled, along last's
+// switching sequence find a value with no orbit of it near; BisectEdge
+// locates the edge. False, with *why, if none is found: then before->p is
+// the edge where it was located with no orbit beyond, else NaN, and *after
+// the farthest orbit of last's sequence (after->p != last.p: the caller may
+// go on from it).
 bool JumpAcross(OrbitProblem& problem, const OrbitRow& last, double dir, double step, double limit,
                 double tol, OrbitRow* before, OrbitRow* after, std::string* why);
 
-// The edge of last's switching sequence between last and far (an orbit of
-// another sequence), bisected in p to tol by damped Newton at fixed p:
-// *before is the last orbit of last's sequence, labelled SL.
-void BisectEdge(OrbitProblem& problem, const OrbitRow& last, const OrbitRow& far, double tol,
-                OrbitRow* before);
+// Bisection in p between lo (an orbit) and hi (no orbit of lo's sequence
+// near it) by Newton at fixed p from the secant predictor, to tol (1 + |p|):
+// *before is the last orbit of lo's sequence, labelled (ClassifySliding),
+// *after an orbit of another sequence at hi (Newton from *before, else after
+// a settling run). False, with *why, if there is none.
+bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, OrbitRow* before,
+                OrbitRow* after, std::string* why);
+
+// The point at an edge `before` with no periodic orbit of its period just
+// beyond (the parameter moving by dir = +-1): labelled by the switching
+// counts of one period from its state just past the edge.
+OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol);
 
 }  // namespace stickslip::orbit_detail

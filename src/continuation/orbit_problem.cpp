@@ -86,6 +86,45 @@ bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
   return why->empty();
 }
 
+const System* OrbitProblem::Switches(const OrbitRow& r, std::vector<FlowSwitch>* out) {
+  system_->SetParameterValue(j_, r.p);
+  if (!system_->ValidationError().empty()) return nullptr;
+  shooting_.set_system(*system_);
+  FlowRequest rq;
+  rq.t_max = r.start.t + r.period;
+  rq.switches = out;
+  out->clear();
+  const FlowRun run = shooting_.flow().Run(r.start, rq);
+  return run.ok() ? system_.get() : nullptr;
+}
+
+bool OrbitProblem::Settle(double p, const OrbitRow& r, int periods, FlowPoint* out) {
+  if (section_.kind != SectionKind::kTime) return false;
+  system_->SetParameterValue(j_, p);
+  if (!system_->ValidationError().empty()) return false;
+  shooting_.set_system(*system_);
+  FlowRequest rq;
+  rq.t_max = r.start.t + periods * SectionAt(r.start).time;
+  const FlowRun run = shooting_.flow().Run(r.start, rq);
+  if (!run.ok()) return false;
+  *out = r.start;
+  const int nt = system_->tangent_dimension();
+  out->z.head(nt) = run.end.z.head(nt);
+  return true;
+}
+
+bool OrbitProblem::Counts(OrbitRow* r) {
+  system_->SetParameterValue(j_, r->p);
+  if (!system_->ValidationError().empty()) return false;
+  shooting_.set_system(*system_);
+  FlowRequest rq;
+  rq.t_max = r->start.t + r->period;
+  const FlowRun run = shooting_.flow().Run(r->start, rq);
+  if (!run.ok()) return false;
+  r->sticks = run.sticks, r->exits = run.exits, r->crossings = run.crossings;
+  return true;
+}
+
 bool OrbitProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::string* why) {
   *why = DomainError(u);
   if (!why->empty()) return false;

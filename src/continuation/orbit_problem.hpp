@@ -27,6 +27,16 @@ class OrbitProblem final : public PalcProblem {
   /// u of an orbit found at parameter p.
   Eigen::VectorXd Unknowns(const FlowPoint& z, double p) const;
   int parameter_index() const { return nu_; }  ///< p's component in u
+  /// The state after `periods` of row r's periods at parameter p from r's
+  /// start, with r's clock (a guess for FindAt). Stroboscopic sections only;
+  /// false where the run fails.
+  bool Settle(double p, const OrbitRow& r, int periods, FlowPoint* out);
+  /// The switching counts of one period of r.period from r.start at r.p
+  /// into *r. False where the system is invalid there or the run fails.
+  bool Counts(OrbitRow* r);
+  /// One period of row r's orbit with its switches recorded in *out; the
+  /// system at r.p (null where the run fails).
+  const System* Switches(const OrbitRow& r, std::vector<FlowSwitch>* out);
   Shooting& shooting() { return shooting_; }
 
  private:
@@ -45,6 +55,18 @@ class OrbitProblem final : public PalcProblem {
   PeriodicOrbit last_, plus_, minus_;
   Eigen::VectorXd last_u_, r_, rp_, rm_;
 };
+
+/// ContinueOrbits' checks: throws InvalidArgument on an invalid system,
+/// options, parameter index, guess or end `to`.
+void CheckInputs(const System& system, int parameter, const FlowPoint& guess, double to,
+                 const OrbitBranchOptions& options);
+
+/// The branch from u0 (its component `fixed` held by the first correction,
+/// traced along `along`, unscaled) of `parameter` between from and to:
+/// ContinueOrbits' rows, special points, jumps and ends (orbit_branch.cpp).
+OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int parameter,
+                        const Eigen::VectorXd& u0, int fixed, const Eigen::VectorXd& along,
+                        double from, double to, const OrbitBranchOptions& options);
 
 /// A test function of a row's multipliers: 0 LP prod (mu - 1), 1 PD
 /// prod (mu + 1), 2 NS prod_{i<j} (mu_i mu_j - 1).

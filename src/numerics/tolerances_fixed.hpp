@@ -75,8 +75,18 @@ struct FixedTolerances {
   static constexpr int kBranchSplitDepth = 6;
   // Orbit branches: changes of the switching sequence located between two rows.
   static constexpr int kBranchEdges = 4;
-  // Orbit branches: doublings of the natural step across a corner or jump.
-  static constexpr int kBranchJumpDoublings = 20;
+  // Orbit branches: natural steps (doubling) along one switching sequence
+  // where the corrector fails, before its orbits count as going on.
+  static constexpr int kBranchEdgeWalk = 6;
+  // Orbit branches: how far (in steps of a chord's eighth) the edge behind a
+  // failed chord is searched for, either way.
+  static constexpr int kBranchEdgeReach = 256;
+  // Orbit branches: natural steps that confirm an orbit of one switching
+  // sequence while its edge is bisected in p.
+  static constexpr int kBranchConfirmSteps = 4;
+  // Orbit branches: periods of the settling run beyond an edge where Newton
+  // from the edge's orbit finds no orbit of another sequence.
+  static constexpr int kBranchSettlePeriods = 200;
   // Chart regions (chart_regions.cpp): section-map returns from the exit
   // point before a run neither decayed nor settled is judged (kRegionLive).
   static constexpr int kRegionMapReturns = 150;

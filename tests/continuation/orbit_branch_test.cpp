@@ -161,7 +161,8 @@ TEST(OrbitBranch, BeltPureSlipRowsMatchTheReference) {
 }
 
 // Down from 0.42 the pure-slip orbit grazes x' = v and sticks: the one driver
-// labels SL (sticks 0 -> 1) where the belt's driver locates GR.
+// labels GR (sticks 0 -> 1, the slip phase between sticks not short) where
+// the belt's driver locates GR.
 TEST(OrbitBranch, BeltGrazingIsTheSwitchingSequencesChange) {
   const Model m(Seed(0.42));
   const OrbitBranch b = ContinueOrbits(m, m.ParameterIndex("v"), At(m.SteadySliding().x + 0.3, 0),
@@ -169,7 +170,7 @@ TEST(OrbitBranch, BeltGrazingIsTheSwitchingSequencesChange) {
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 1u);
   const OrbitRow& sl = b.special[0];
-  EXPECT_EQ(sl.label, SpecialKind::kSliding);
+  EXPECT_EQ(sl.label, SpecialKind::kGrazing) << sl.description;
   EXPECT_NE(sl.description.find("sticks 0 -> 1"), std::string::npos) << sl.description;
   ContinuationOptions co;
   co.from = 0.38, co.to = 0.42;

@@ -15,7 +15,7 @@
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "reference/forced_lyapunov.hpp"
-#include "src/forced/forced_locate.hpp"
+#include "src/continuation/orbit_problem.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
@@ -158,7 +158,9 @@ TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
     EXPECT_NE(s.label, ForcedLabel::kNS)
         << "Omega = " << s.p << ", mu " << s.multipliers[0] << ", " << s.multipliers[1];
     if (s.label == ForcedLabel::kNS) {
-      EXPECT_TRUE(forced_detail::TorusPair(s, 1e-6));
+      OrbitRow o;
+      o.multipliers = {s.multipliers[0], s.multipliers[1]};
+      EXPECT_TRUE(orbit_detail::TorusPair(o, 1e-6));
     }
     pd += s.label == ForcedLabel::kPD;
   }
@@ -168,16 +170,16 @@ TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
 // The rule itself: a real pair whose product is 1 (a neutral saddle) is no
 // NS point; a complex pair on the unit circle is.
 TEST(ForcedNeimarkSacker, TorusPairIsComplexOnTheUnitCircle) {
-  ForcedBranchRow r;
-  r.multipliers[0] = -1.0294, r.multipliers[1] = 1 / -1.0294;  // product 1, real
-  EXPECT_NEAR(forced_detail::RowTest(r, 2), 0, 1e-15);
-  EXPECT_FALSE(forced_detail::TorusPair(r, 1e-6));
-  r.multipliers[0] = -1.0294, r.multipliers[1] = -0.9714;
-  EXPECT_FALSE(forced_detail::TorusPair(r, 1e-6));
-  r.multipliers[0] = std::polar(1.0, 2.0), r.multipliers[1] = std::polar(1.0, -2.0);
-  EXPECT_TRUE(forced_detail::TorusPair(r, 1e-6));
-  r.multipliers[0] = std::polar(1.01, 2.0), r.multipliers[1] = std::polar(1.01, -2.0);
-  EXPECT_FALSE(forced_detail::TorusPair(r, 1e-6));
+  OrbitRow r;
+  r.multipliers = {-1.0294, 1 / -1.0294};  // product 1, real
+  EXPECT_NEAR(orbit_detail::RowTest(r, 2), 0, 1e-15);
+  EXPECT_FALSE(orbit_detail::TorusPair(r, 1e-6));
+  r.multipliers = {-1.0294, -0.9714};
+  EXPECT_FALSE(orbit_detail::TorusPair(r, 1e-6));
+  r.multipliers = {std::polar(1.0, 2.0), std::polar(1.0, -2.0)};
+  EXPECT_TRUE(orbit_detail::TorusPair(r, 1e-6));
+  r.multipliers = {std::polar(1.01, 2.0), std::polar(1.01, -2.0)};
+  EXPECT_FALSE(orbit_detail::TorusPair(r, 1e-6));
 }
 
 }  // namespace

@@ -36,7 +36,8 @@ namespace stickslip {
 struct OrbitBranchOptions {
   ShootingOptions shooting;  ///< the start's Newton and every map's flow
   PalcOptions palc;          ///< on (u, p)
-  /// Rows stop beyond this |z_i| on the tangent block (kUnbounded).
+  /// Rows stop beyond this |z_i| of a displacement (a tangent component no
+  /// other is the rate of: x, not x'; kUnbounded).
   double max_amplitude = 1e3;
   double locate_tol = 1e-12;  ///< special points: the bracket on the chord, relative
   /// Where the corrector fails (a corner sharper than a right angle, or a
@@ -79,5 +80,20 @@ struct OrbitBranch {
 OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
                            const PoincareSection& section, double to,
                            const OrbitBranchOptions& options);
+
+/// Branch switching at a period doubling, for any system (AUTO-07p's ISW =
+/// -1 at a PD label; Kuznetsov 2004, section 4.4): `system` at the PD's
+/// parameter value, `pd` the PD orbit's section point (an OrbitRow's start)
+/// and `section` its section. The orbits of twice the period form a
+/// pitchfork of P^2 tangent to e, the eigenvector of DP's multiplier -1: the
+/// doubled branch starts at pd + h e (h = options.palc.ds, scaled), is
+/// corrected with its projection on e held, and is traced away from the
+/// single orbit to whichever of lo, hi it opens toward, on the section of
+/// twice the turns and returns. kStartFailed, with a message, where DP has
+/// no multiplier near -1 or the start falls back onto the single orbit.
+/// Throws InvalidArgument as ContinueOrbits does, and unless lo < p < hi.
+OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint& pd,
+                            const PoincareSection& section, double lo, double hi,
+                            const OrbitBranchOptions& options);
 
 }  // namespace stickslip

@@ -1,0 +1,43 @@
+// The forced oscillator's axes and names (stickslip/forced/branch.hpp).
+#include "stickslip/forced/branch.hpp"
+
+namespace stickslip {
+
+const char* ForcedAxisName(ForcedAxis a) { return Name(a); }
+
+double GetAxis(const ForcedParams& p, ForcedAxis a) {
+  switch (a) {
+    case ForcedAxis::kOmega:
+      return p.omega;
+    case ForcedAxis::kForce:
+      return p.force;
+    case ForcedAxis::kV:
+      return p.base.v;
+    case ForcedAxis::kBeta:
+      return p.base.beta;
+  }
+  return 0;
+}
+
+void SetAxis(ForcedParams& p, ForcedAxis a, double value) {
+  switch (a) {
+    case ForcedAxis::kOmega:
+      p.omega = value;
+      return;
+    case ForcedAxis::kForce:
+      p.force = value;
+      return;
+    case ForcedAxis::kV:
+      p.base.v = value;
+      return;
+    case ForcedAxis::kBeta:
+      p.base.beta = value;
+      return;
+  }
+}
+
+const char* ForcedBranchStatusName(ForcedBranchStatus s) { return Name(s); }
+
+const char* ForcedLabelName(ForcedLabel l) { return Name(l); }
+
+}  // namespace stickslip
