@@ -80,8 +80,8 @@ def main():
                                                               b.message or "no message"))
         for label, p, what in b.special:
             print("  %s at mu_k = %.10f: %s" % (label, p, what))
-        for i in range(0, len(b.p), max(1, len(b.p) // 8)):
-            print("  mu_k %.5f  T %.6f  sticks %d  y max %.5f  N min %.5f  |mu|max %.3g" % (
+        for i in sorted(set(range(0, len(b.p), max(1, len(b.p) // 8))) | {len(b.p) - 1}):
+            print("  mu_k %.5f  T %.6f  sticks %d  y max %.5f  N min %.2e  |mu|max %.3g" % (
                 b.p[i], b.period[i], b.sticks[i], b.hi[i][2], 1 - b.hi[i][2],
                 np.max(np.abs(b.multipliers[i])) if b.multipliers.shape[1] else math.nan))
 
