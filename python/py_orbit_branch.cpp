@@ -69,9 +69,16 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
 
 FlowPoint SectionStart(const System& s, const PoincareSection& sec, const Eigen::VectorXd& state) {
   FlowPoint guess{0, state, ModeOf(s, state)};
-  if (sec.kind == SectionKind::kStickExit)  // the slip it leaves into, the way lambda points
-    guess.mode.set(
-        0, s.StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  if (sec.kind != SectionKind::kStickExit) return guess;
+  // Contact 0 leaves into the slip lambda points to; others at their limit leave with it.
+  guess.mode.set(
+      0, s.StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  for (int i = 1; i < s.contacts(); ++i) {
+    if (!guess.mode.sticks(i)) continue;
+    const double lambda = s.StickForce(guess.mode, i, state);
+    if (std::abs(lambda) >= s.StaticLimit(i, state))
+      guess.mode.set(i, lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  }
   return guess;
 }
 

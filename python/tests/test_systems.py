@@ -111,6 +111,26 @@ class ChainRuns(unittest.TestCase):
             self.assertAlmostEqual(period, ref, delta=1e-9, msg="v = %r" % v)
 
 
+    def test_two_synchronized_blocks_run_the_seed_orbit(self):
+        # Started together at the stick exit, both blocks leave at once (the
+        # stick-exit start lets every contact at its limit go) and run the
+        # seed's orbit; the transverse multiplier against Boost.Odeint in long
+        # double with its own events (docs/theory.md, "A chain of blocks").
+        p = stickslip.Params()
+        x0 = p.mu_s - 2 * p.beta * p.v
+        c = stickslip.ChainParams(2, law=p, kc=0.2)
+        o = stickslip.system_orbit(c, [x0, p.v, x0, p.v], rtol=1e-13, atol=1e-13)
+        seed = stickslip.periodic_orbit(p, rtol=1e-13, atol=1e-13)
+        self.assertAlmostEqual(o.period, seed.period, delta=1e-12)
+        self.assertAlmostEqual(abs(o.multipliers[0]), 1.3874006783677, delta=1e-9)
+        self.assertFalse(o.stable)
+        b = stickslip.continue_orbits(c, "v", o.start, 0.3, section="stick-exit", m=o.exits)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        for v, period in zip(b.p, b.period):
+            ref = stickslip.periodic_orbit(stickslip.Params(v=v)).period
+            self.assertAlmostEqual(period, ref, delta=1e-9, msg="v = %r" % v)
+
+
 class ContactLoss(unittest.TestCase):
     def test_a_run_stops_where_the_normal_force_reaches_zero(self):
         m = stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.6))
