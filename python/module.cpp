@@ -187,4 +187,6 @@ PYBIND11_MODULE(_core, m) {
   BindRestart(m);
   BindBatch(m);
   BindOrbitBranch(m);
+  BindSystems(m);
+  BindSystemRuns(m);
 }

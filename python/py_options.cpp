@@ -47,7 +47,13 @@ void BindEnums(py::module_& m) {
       .value("velocity_max", FlowStatus::kVelocityMax)
       .value("integrator_failed", FlowStatus::kIntegratorFailed)
       .value("too_many_switches", FlowStatus::kTooManySwitches)
-      .value("cancelled", FlowStatus::kCancelled);
+      .value("cancelled", FlowStatus::kCancelled)
+      .value("stick_exit", FlowStatus::kStickExit)
+      .value("too_much_work", FlowStatus::kTooMuchWork)
+      .value("inconsistent_mode", FlowStatus::kInconsistentMode)
+      .value("ambiguous_mode", FlowStatus::kAmbiguousMode)
+      .value("too_many_at_once", FlowStatus::kTooManyAtOnce)
+      .value("contact_open", FlowStatus::kContactOpen, "a normal force reached 0");
   Enum<OrbitKind>(m, "OrbitKind", "Kind of periodic orbit.", &OrbitKindName)
       .value("stick_slip", OrbitKind::kStickSlip, "one stick phase per period")
       .value("pure_slip", OrbitKind::kPureSlip, "never sticks");

@@ -29,12 +29,15 @@ struct PyOrbitBranch {
   double seconds = 0;
 };
 
+}  // namespace
+
 std::unique_ptr<System> SystemOf(const py::object& system) {
+  if (auto several = SeveralMassSystemOf(system)) return several;  // py_systems.cpp
   if (py::isinstance<ForcedParams>(system))
     return std::make_unique<ForcedModel>(system.cast<ForcedParams>());
   if (py::isinstance<Params>(system)) return std::make_unique<Model>(system.cast<Params>());
   throw InvalidArgument("system: " + py::repr(system).cast<std::string>() +
-                        " is neither Params nor ForcedParams");
+                        " is neither Params, ForcedParams, ChainParams nor CouplingParams");
 }
 
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
@@ -63,6 +66,23 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
   throw InvalidArgument("section = '" + name +
                         "' must be 'stroboscopic', 'stick-exit' or 'xdot-falling'");
 }
+
+FlowPoint SectionStart(const System& s, const PoincareSection& sec, const Eigen::VectorXd& state) {
+  FlowPoint guess{0, state, ModeOf(s, state)};
+  if (sec.kind != SectionKind::kStickExit) return guess;
+  // Contact 0 leaves into the slip lambda points to; others at their limit leave with it.
+  guess.mode.set(
+      0, s.StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  for (int i = 1; i < s.contacts(); ++i) {
+    if (!guess.mode.sticks(i)) continue;
+    const double lambda = s.StickForce(guess.mode, i, state);
+    if (std::abs(lambda) >= s.StaticLimit(i, state))
+      guess.mode.set(i, lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  }
+  return guess;
+}
+
+namespace {
 
 template <typename T>
 py::array Matrix(const std::vector<std::vector<T>>& rows, py::ssize_t cols) {
@@ -128,10 +148,7 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
     o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   }
   const PoincareSection sec = SectionOf(*s, section, state, m, turns);
-  FlowPoint guess{0, state, ModeOf(*s, state)};
-  if (sec.kind == SectionKind::kStickExit)  // the slip it leaves into, the way lambda points
-    guess.mode = ModeSet(s->StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow
-                                                                            : Mode::kSlipAbove);
+  const FlowPoint guess = SectionStart(*s, sec, state);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
   OrbitBranch b;
@@ -179,7 +196,8 @@ void BindOrbitBranch(py::module_& m) {
         py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
         py::arg("rtol") = none, py::arg("atol") = none,
         "The branch of periodic orbits of `system` (Params: the belt; ForcedParams: the forced "
-        "oscillator) through the one near `state` (x, x'[, theta]) on `section` "
+        "oscillator; ChainParams, CouplingParams: the several-mass systems) through the one near "
+        "`state` (x, x'[, theta]) on `section` "
         "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit, after `turns` forcing "
         "periods (default m) on a forced system; 'xdot-falling': the "
         "belt's x' = 0), continued in `parameter` from its value in `system` to `to`, with the "

@@ -11,7 +11,8 @@ packages=(g++ make cmake libeigen3-dev libnlopt-cxx-dev libsundials-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy
           python3-pip python3-setuptools python3-wheel python3-venv
           python3-dask python3-distributed python3-h5py
-          python3-pandas python3-matplotlib python3-nbclient python3-ipykernel)
+          python3-pandas python3-matplotlib python3-nbclient python3-ipykernel
+          python3-scipy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

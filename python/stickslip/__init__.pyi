@@ -38,6 +38,12 @@ class FlowStatus(enum.IntEnum):
     integrator_failed = 4
     too_many_switches = 5
     cancelled = 6
+    stick_exit = 7
+    too_much_work = 8
+    inconsistent_mode = 9
+    ambiguous_mode = 10
+    too_many_at_once = 11
+    contact_open = 12
 class OrbitKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
@@ -565,7 +571,7 @@ def continue_forced(params: ForcedParams, axis: ForcedAxis, from_: float, to: fl
                     m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None,
                     atol: Optional[float] = None) -> ForcedBranch: ...
-def continue_orbits(system: Union[Params, ForcedParams], parameter: str, state: Any, to: float,
+def continue_orbits(system: SystemLike, parameter: str, state: Any, to: float,
                     section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
                     max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None, atol: Optional[float] = None) -> OrbitBranch: ...
@@ -661,3 +667,92 @@ def group_stats(result: SweepResult, by: str, value: str,
 def stick_slip_orbit(point: Mapping[str, float]) -> Dict[str, float]: ...
 def stick_slip_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...
 def forced_orbits(columns: Mapping[str, Array]) -> Dict[str, Array]: ...
+
+# The several-mass systems (issue 32): python/py_systems.cpp, py_system_runs.cpp.
+class ChainBlock:
+    m: float
+    c: float
+    k: float
+    law: Params
+    def __init__(self, m: float = 1.0, c: float = 0.1, k: float = 1.0,
+                 law: Optional[Params] = None) -> None: ...
+
+class ChainParams:
+    v: float
+    kc: float
+    blocks: List[ChainBlock]
+    @property
+    def n(self) -> int: ...
+    @property
+    def parameters(self) -> List[str]: ...
+    @property
+    def state_names(self) -> List[str]: ...
+    def __init__(self, blocks: Union[int, Sequence[ChainBlock]] = 2, law: Optional[Params] = None,
+                 kc: Optional[float] = None, v: Optional[float] = None) -> None: ...
+    def validate(self) -> None: ...
+
+class CouplingParams:
+    beta: float
+    k11: float
+    k22: float
+    k12: float
+    gamma: float
+    v: float
+    law: Params
+    @property
+    def flutter_mu_k(self) -> float: ...
+    @property
+    def parameters(self) -> List[str]: ...
+    @property
+    def state_names(self) -> List[str]: ...
+    def __init__(self, beta: float = 0.02, k11: float = 1.0, k22: float = 1.5, k12: float = -0.3,
+                 gamma: float = 1.0, v: float = 0.5, law: Optional[Params] = None) -> None: ...
+    def validate(self) -> None: ...
+
+SystemLike = Union[Params, ForcedParams, ChainParams, CouplingParams]
+
+class SystemTrajectory:
+    t: Array
+    z: Array
+    mode: Array
+    names: List[str]
+    status: FlowStatus
+    message: str
+    opened: int
+    sticks: int
+    exits: int
+    crossings: int
+    t_stick: float
+
+class SystemOrbit:
+    status: OrbitStatus
+    message: str
+    start: Array
+    mode: str
+    period: float
+    monodromy: Array
+    multipliers: Array
+    stable: bool
+    sticks: int
+    exits: int
+    crossings: int
+    modes: List[str]
+    lo: Array
+    hi: Array
+    iterations: int
+    update: float
+
+class SteadyState:
+    found: bool
+    z: Array
+    eigenvalues: Array
+    max_real: float
+    stable: bool
+
+def simulate_system(system: SystemLike, state: Any, t_end: float = 100.0, dt: float = 0.01,
+                    max_rows: int = 1000000, rtol: Optional[float] = None,
+                    atol: Optional[float] = None) -> SystemTrajectory: ...
+def system_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m: int = 1,
+                 turns: Optional[int] = None, rtol: Optional[float] = None,
+                 atol: Optional[float] = None) -> SystemOrbit: ...
+def steady_sliding(system: SystemLike) -> SteadyState: ...

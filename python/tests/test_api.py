@@ -148,6 +148,10 @@ class EveryResultArrayReadOnly(unittest.TestCase):
             "periodic_orbits": lambda: stickslip.periodic_orbits(p),
             "simulate": lambda: stickslip.simulate(p, t_end=2.0),
             "simulate_forced": lambda: stickslip.simulate_forced(fp, t_end=20.0),
+            "simulate_system": lambda: stickslip.simulate_system(
+                stickslip.ChainParams(2, kc=0.2), [0.0, 0.25, 0.1, 0.25], t_end=2.0),
+            "steady_sliding": lambda: stickslip.steady_sliding(stickslip.CouplingParams()),
+            "system_orbit": lambda: stickslip.system_orbit(stickslip.ChainParams(1), [0.375, 0.25]),
             "smallest_disturbance": lambda: stickslip.smallest_disturbance(
                 slip, stickslip.periodic_orbits(slip).pure_slip[0], n=200),
             "stroboscopic": lambda: s,

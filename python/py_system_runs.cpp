@@ -1,0 +1,242 @@
+// Running any system from Python (issue 32): simulate_system (the one flow,
+// flow.hpp), system_orbit (the one shooting, shooting.hpp) and steady_sliding
+// (equilibria/steady_sliding.hpp), for Params, ForcedParams, ChainParams and
+// CouplingParams alike (SystemOf). Each computes without the GIL, with Ctrl-C.
+#include <pybind11/complex.h>
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "py_common.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/flow/flow.hpp"
+#include "stickslip/orbits/shooting.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+struct PySystemTrajectory {
+  py::array t, z, mode;  // every dt and at every switch; z one row per t
+  std::vector<std::string> names;
+  FlowStatus status = FlowStatus::kTimeLimit;
+  std::string message;
+  int opened = -1, sticks = 0, exits = 0, crossings = 0;
+  double t_stick = 0;
+};
+
+struct PySystemOrbit {
+  OrbitStatus status = OrbitStatus::kNotConverged;
+  std::string message, mode;
+  py::array start, monodromy, multipliers, lo, hi;
+  std::vector<std::string> modes;
+  double period = 0, update = 0;
+  bool stable = false;
+  int sticks = 0, exits = 0, crossings = 0, iterations = 0;
+};
+
+struct PySteadyState {
+  bool found = false, stable = false;
+  py::array z, eigenvalues;
+  double max_real = 0;
+};
+
+// A read-only copy of an Eigen matrix or vector (rows x cols).
+template <typename M>
+py::array ReadOnlyMatrix(const M& a, bool vector) {
+  using T = typename M::Scalar;
+  py::array_t<T> out = vector ? py::array_t<T>(a.size())
+                              : py::array_t<T>({static_cast<py::ssize_t>(a.rows()),
+                                                static_cast<py::ssize_t>(a.cols())});
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      out.mutable_data()[i * a.cols() + j] = a(i, j);  // row-major
+  out.attr("setflags")(py::arg("write") = false);
+  return std::move(out);
+}
+
+Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
+  if (state.size() != s.dimension())
+    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
+                          std::to_string(s.dimension()));
+  for (Eigen::Index i = 0; i < state.size(); ++i)
+    if (!std::isfinite(state[i]))
+      throw InvalidArgument("state[" + std::to_string(i) + "] = " + Repr(state[i]) +
+                            " must be finite");
+  return state;
+}
+
+PySystemTrajectory Simulate(const py::object& system, const Eigen::VectorXd& state, double t_end,
+                            double dt, long max_rows, std::optional<double> rtol,
+                            std::optional<double> atol) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  const Eigen::VectorXd z0 = CheckedState(*s, state);
+  if (!(t_end > 0) || !std::isfinite(t_end))
+    throw InvalidArgument("t_end = " + Repr(t_end) + " must be a finite number > 0");
+  if (!(dt > 0)) throw InvalidArgument("dt = " + Repr(dt) + " must be > 0");
+  if (max_rows < 2)
+    throw InvalidArgument("max_rows = " + std::to_string(max_rows) + " must be >= 2");
+  if (!(std::floor(t_end / dt) + 1 <= static_cast<double>(max_rows)))
+    throw InvalidArgument("t_end / dt = " + Repr(t_end / dt) + " gives more rows than max_rows = " +
+                          std::to_string(max_rows) + " (raise max_rows or dt)");
+  const FlowOptions options = Solver(FlowOptions(), rtol, atol, py::none(), py::none());
+  const int n = s->dimension(), k = s->contacts();
+  std::vector<double> t, z;
+  std::vector<std::string> mode;
+  Interrupt interrupt;
+  bool too_many = false;
+  FlowRun r;
+  {
+    py::gil_scoped_release nogil;
+    Flow flow(*s, options);
+    flow.set_cancel([&] { return too_many || interrupt(); });
+    FlowRequest req;
+    req.t_max = t_end;
+    req.output_dt = dt;
+    req.observer = [&](double ti, const double* zi, const ModeSet& m) {
+      if (static_cast<long>(t.size()) >= max_rows) {
+        too_many = true;
+        return;
+      }
+      t.push_back(ti), z.insert(z.end(), zi, zi + n), mode.push_back(ModeSetName(m, k));
+    };
+    r = flow.Run(FlowPoint{0, z0, ModeOf(*s, z0)}, req);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (too_many)
+    throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
+                          " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
+  if (!r.ok())  // contact-open is a result: the run stops there (issue 32)
+    RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message +
+                   " (at t = " + Repr(r.end.t) + " in " + ModeSetName(r.end.mode, k) + ")");
+  PySystemTrajectory out;
+  out.t = ReadOnly(t);
+  py::array_t<double> zz({static_cast<py::ssize_t>(t.size()), static_cast<py::ssize_t>(n)});
+  std::copy(z.begin(), z.end(), zz.mutable_data());
+  zz.attr("setflags")(py::arg("write") = false);
+  out.z = std::move(zz);
+  out.mode = ReadOnlyStrings(mode);
+  for (int i = 0; i < n; ++i) out.names.push_back(s->StateName(i));
+  out.status = r.status, out.message = r.message, out.opened = r.opened;
+  out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings, out.t_stick = r.t_stick;
+  return out;
+}
+
+PySystemOrbit Orbit(const py::object& system, const Eigen::VectorXd& state,
+                    const std::string& section, int m, std::optional<int> turns,
+                    std::optional<double> rtol, std::optional<double> atol) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  const Eigen::VectorXd z0 = CheckedState(*s, state);
+  ShootingOptions o;
+  o.flow = Solver(o.flow, rtol, atol, py::none(), py::none());
+  const std::string err = o.ValidationError();
+  if (!err.empty()) throw InvalidArgument(err);
+  const PoincareSection sec = SectionOf(*s, section, z0, m, turns);
+  const FlowPoint guess = SectionStart(*s, sec, z0);
+  Interrupt interrupt;
+  PeriodicOrbit r;
+  {
+    py::gil_scoped_release nogil;
+    Shooting shooting(*s, o);
+    shooting.flow().set_cancel([&] { return interrupt(); });
+    r = shooting.Find(guess, sec);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (!r.ok()) RaiseNumerical(std::string(OrbitStatusName(r.status)) + ": " + r.message);
+  PySystemOrbit out;
+  const int k = s->contacts();
+  out.status = r.status, out.message = r.message, out.mode = ModeSetName(r.start.mode, k);
+  out.start = ReadOnlyMatrix(r.start.z, true);
+  out.monodromy = ReadOnlyMatrix(r.monodromy, false);
+  Eigen::VectorXcd mu(static_cast<Eigen::Index>(r.multipliers.size()));
+  for (size_t i = 0; i < r.multipliers.size(); ++i) mu[i] = r.multipliers[i];
+  out.multipliers = ReadOnlyMatrix(mu, true);
+  out.lo = ReadOnlyMatrix(r.lo, true), out.hi = ReadOnlyMatrix(r.hi, true);
+  for (const ModeSet& ms : r.modes) out.modes.push_back(ModeSetName(ms, k));
+  out.period = r.period, out.update = r.update, out.stable = r.stable;
+  out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings;
+  out.iterations = r.iterations;
+  return out;
+}
+
+PySteadyState Steady(const py::object& system) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  const SteadyState r = SteadySliding(*s);
+  PySteadyState out;
+  out.found = r.found, out.stable = r.stable(), out.max_real = r.max_real;
+  out.z = ReadOnlyMatrix(r.z, true);
+  Eigen::VectorXcd ev(static_cast<Eigen::Index>(r.eigenvalues.size()));
+  for (size_t i = 0; i < r.eigenvalues.size(); ++i) ev[i] = r.eigenvalues[i];
+  out.eigenvalues = ReadOnlyMatrix(ev, true);
+  return out;
+}
+
+}  // namespace
+
+void BindSystemRuns(py::module_& m) {
+  using T = PySystemTrajectory;
+  py::class_<T>(m, "SystemTrajectory",
+                "Result of simulate_system(): t, z (one row per t, columns `names`), mode (the "
+                "mode set's name per row), how the run ended (status; contact_open: the normal "
+                "force of contact `opened` reached 0 and the run stopped there).")
+      .def_readonly("t", &T::t)
+      .def_readonly("z", &T::z)
+      .def_readonly("mode", &T::mode)
+      .def_readonly("names", &T::names)
+      .def_readonly("status", &T::status)
+      .def_readonly("message", &T::message)
+      .def_readonly("opened", &T::opened)
+      .def_readonly("sticks", &T::sticks)
+      .def_readonly("exits", &T::exits)
+      .def_readonly("crossings", &T::crossings)
+      .def_readonly("t_stick", &T::t_stick);
+  using O = PySystemOrbit;
+  py::class_<O>(m, "SystemOrbit", "Result of system_orbit(): a periodic orbit of any system.")
+      .def_readonly("status", &O::status)
+      .def_readonly("message", &O::message)
+      .def_readonly("start", &O::start)
+      .def_readonly("mode", &O::mode)
+      .def_readonly("period", &O::period)
+      .def_readonly("monodromy", &O::monodromy)
+      .def_readonly("multipliers", &O::multipliers)
+      .def_readonly("stable", &O::stable)
+      .def_readonly("sticks", &O::sticks)
+      .def_readonly("exits", &O::exits)
+      .def_readonly("crossings", &O::crossings)
+      .def_readonly("modes", &O::modes)
+      .def_readonly("lo", &O::lo)
+      .def_readonly("hi", &O::hi)
+      .def_readonly("iterations", &O::iterations)
+      .def_readonly("update", &O::update);
+  using S = PySteadyState;
+  py::class_<S>(m, "SteadyState", "Result of steady_sliding().")
+      .def_readonly("found", &S::found)
+      .def_readonly("z", &S::z)
+      .def_readonly("eigenvalues", &S::eigenvalues)
+      .def_readonly("max_real", &S::max_real)
+      .def_readonly("stable", &S::stable);
+  const py::object none = py::none();
+  m.def("simulate_system", &Simulate, py::arg("system"), py::arg("state"), py::arg("t_end") = 100.0,
+        py::arg("dt") = 0.01, py::arg("max_rows") = 1000000, py::arg("rtol") = none,
+        py::arg("atol") = none,
+        "One trajectory of any system (Params, ForcedParams, ChainParams, CouplingParams) from "
+        "`state` (its state_names' order), one row every dt and at every switch; the one flow "
+        "(C++ Flow). More than max_rows rows raise ValueError.");
+  m.def("system_orbit", &Orbit, py::arg("system"), py::arg("state"),
+        py::arg("section") = "stick-exit", py::arg("m") = 1, py::arg("turns") = none,
+        py::arg("rtol") = none, py::arg("atol") = none,
+        "The periodic orbit of any system through the one near `state` on `section` (as "
+        "continue_orbits'), by the one shooting (C++ Shooting::Find), with its monodromy and "
+        "multipliers. NumericalError where Newton fails.");
+  m.def("steady_sliding", &Steady, py::arg("system"),
+        "Steady sliding of any system with every contact slipping below (C++ SteadySliding): "
+        "its state z and the Jacobian's eigenvalues, the largest real part first.");
+}
+
+}  // namespace stickslip::python

@@ -1,0 +1,146 @@
+"""The several-mass systems in Python (issue 32): ChainBlock, ChainParams and
+CouplingParams validated at construction, and simulate_system, system_orbit,
+steady_sliding and continue_orbits on them.
+
+References: the first stick phase from (0, v) ends at t = (mu_s - 2 beta v) / v
+(seed eq. 3.6); two identical blocks have the modes s = 1 and 1 + 2 kc, each
+with lambda^2 + (2 beta + mu'(v)) lambda + s = 0 (docs/theory.md, "A chain of
+blocks"); one block is the belt, whose stick-slip orbit the belt's own
+OrbitFinder computes (a separate code path, periodic_orbit); contact loss where
+1 - gamma y = 0.
+"""
+import cmath
+import unittest
+
+import numpy as np
+
+import stickslip
+
+
+class Validation(unittest.TestCase):
+    def check(self, call, *words):
+        with self.assertRaises(ValueError) as c:
+            call()
+        for w in words:
+            self.assertIn(w, str(c.exception))
+
+    def test_each_field_is_named_with_its_value(self):
+        self.check(lambda: stickslip.ChainParams(0), "blocks = 0")
+        self.check(lambda: stickslip.ChainParams(100000), "blocks = 100000")
+        self.check(lambda: stickslip.ChainParams(2, kc=-0.5), "kc = -0.5")
+        self.check(lambda: stickslip.ChainParams(2, v=float("nan")), "v = nan")
+        self.check(lambda: stickslip.ChainBlock(m=-1.0), "m = -1.0")
+        self.check(lambda: stickslip.ChainBlock(c=-0.1), "c = -0.1")
+        self.check(lambda: stickslip.ChainBlock(k=float("inf")), "k = inf")
+        bad = stickslip.Params("coulomb", mu_s=0.6, mu_k=0.3)
+        bad.mu_k = 0.7  # set later: Params checks itself at construction
+        self.check(lambda: stickslip.ChainBlock(law=bad), "law", "mu_k = 0.7")
+        self.check(lambda: stickslip.ChainParams(2, law=bad), "mu_k = 0.7")
+        self.check(lambda: stickslip.CouplingParams(v=0.0), "v = 0.0")
+        self.check(lambda: stickslip.CouplingParams(beta=-1.0), "beta = -1.0")
+        self.check(lambda: stickslip.CouplingParams(gamma=-2.0), "gamma = -2.0")
+        self.check(lambda: stickslip.CouplingParams(k12=float("nan")), "k12 = nan")
+        self.check(lambda: stickslip.CouplingParams(law=bad), "law", "mu_k = 0.7")
+
+    def test_attributes_set_later_are_checked_by_every_computation(self):
+        c = stickslip.ChainParams(2)
+        c.kc = -1.0
+        self.check(lambda: stickslip.steady_sliding(c), "kc = -1.0")
+        m = stickslip.CouplingParams()
+        m.v = -0.5
+        self.check(lambda: stickslip.simulate_system(m, [0, 0, 0, 0], t_end=1), "v = -0.5")
+        self.check(lambda: stickslip.simulate_system(stickslip.ChainParams(2), [0, 0, 0]),
+                   "state: 3 values", "4")
+        self.check(lambda: stickslip.system_orbit(stickslip.ChainParams(2), [0, 0.25, 0, 0.25],
+                                                  section="nowhere"), "section = 'nowhere'")
+        with self.assertRaises(TypeError):
+            stickslip.ChainParams([1, 2])
+
+    def test_names(self):
+        c = stickslip.ChainParams([stickslip.ChainBlock(m=1.0), stickslip.ChainBlock(m=1.5)],
+                                  kc=0.2, v=0.3)
+        self.assertEqual(c.n, 2)
+        self.assertEqual(c.blocks[1].m, 1.5)
+        self.assertEqual(c.state_names, ["x1", "x1'", "x2", "x2'"])
+        self.assertIn("kc", c.parameters)
+        m = stickslip.CouplingParams()
+        self.assertEqual(m.state_names, ["x", "x'", "y", "y'"])
+        self.assertEqual(m.parameters[-2:], ["mu_s", "mu_k"])
+
+
+class ChainRuns(unittest.TestCase):
+    def test_first_stick_phase_ends_at_the_closed_form(self):
+        p = stickslip.Params()
+        run = stickslip.simulate_system(stickslip.ChainParams(1, law=p), [0.0, p.v], t_end=2.0,
+                                        dt=0.5, rtol=1e-13, atol=1e-13)
+        i = next(i for i in range(1, len(run.t)) if run.mode[i] != "stick")
+        self.assertEqual(run.mode[0], "stick")
+        self.assertAlmostEqual(run.t[i], (p.mu_s - 2 * p.beta * p.v) / p.v, delta=1e-12)
+        self.assertEqual(run.z.shape, (len(run.t), 2))
+        self.assertEqual(run.names, ["x1", "x1'"])
+
+    def test_two_blocks_steady_sliding_has_both_modes_closed_forms(self):
+        p = stickslip.Params(v=0.3)
+        kc = 0.2
+        s = stickslip.steady_sliding(stickslip.ChainParams(2, law=p, kc=kc))
+        self.assertTrue(s.found)
+        a = 2 * p.beta - p.k1 + 3 * p.k3 * p.v ** 2  # 2 beta + mu'(v)
+        expected = []
+        for stiff in (1.0, 1.0 + 2 * kc):
+            r = cmath.sqrt(a * a / 4 - stiff)
+            expected += [-a / 2 + r, -a / 2 - r]
+        for e in expected:
+            self.assertLess(min(abs(e - x) for x in s.eigenvalues), 1e-12, (e, s.eigenvalues))
+        self.assertAlmostEqual(s.max_real, -a / 2, delta=1e-12)
+        self.assertEqual(s.stable, -a / 2 < 0)
+
+    def test_one_block_orbit_and_branch_are_the_belts(self):
+        p = stickslip.Params()
+        belt = stickslip.periodic_orbit(p)
+        exit_state = [p.mu_s - 2 * p.beta * p.v, p.v]
+        c = stickslip.ChainParams(1, law=p)
+        o = stickslip.system_orbit(c, exit_state, rtol=1e-12, atol=1e-12)
+        self.assertAlmostEqual(o.period, belt.period, delta=1e-10)
+        self.assertEqual(o.sticks, 1)
+        self.assertEqual(o.monodromy.shape, (2, 2))
+        b = stickslip.continue_orbits(c, "v", o.start, 0.3, section="stick-exit", max_step=0.2)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        self.assertGreater(len(b.p), 2)
+        for v, period in zip(b.p, b.period):
+            ref = stickslip.periodic_orbit(stickslip.Params(v=v)).period
+            self.assertAlmostEqual(period, ref, delta=1e-9, msg="v = %r" % v)
+
+
+    def test_two_synchronized_blocks_run_the_seed_orbit(self):
+        # Started together at the stick exit, both blocks leave at once (the
+        # stick-exit start lets every contact at its limit go) and run the
+        # seed's orbit; the transverse multiplier against Boost.Odeint in long
+        # double with its own events (docs/theory.md, "A chain of blocks").
+        p = stickslip.Params()
+        x0 = p.mu_s - 2 * p.beta * p.v
+        c = stickslip.ChainParams(2, law=p, kc=0.2)
+        o = stickslip.system_orbit(c, [x0, p.v, x0, p.v], rtol=1e-13, atol=1e-13)
+        seed = stickslip.periodic_orbit(p, rtol=1e-13, atol=1e-13)
+        self.assertAlmostEqual(o.period, seed.period, delta=1e-12)
+        self.assertAlmostEqual(abs(o.multipliers[0]), 1.3874006783677, delta=1e-9)
+        self.assertFalse(o.stable)
+        b = stickslip.continue_orbits(c, "v", o.start, 0.3, section="stick-exit", m=o.exits)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        for v, period in zip(b.p, b.period):
+            ref = stickslip.periodic_orbit(stickslip.Params(v=v)).period
+            self.assertAlmostEqual(period, ref, delta=1e-9, msg="v = %r" % v)
+
+
+class ContactLoss(unittest.TestCase):
+    def test_a_run_stops_where_the_normal_force_reaches_zero(self):
+        m = stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.6))
+        run = stickslip.simulate_system(m, [0.0, 0.0, 0.0, 3.0], t_end=50.0, dt=0.1)
+        self.assertEqual(run.status, stickslip.FlowStatus.contact_open)
+        self.assertEqual(run.opened, 0)
+        self.assertLess(run.t[-1], 50.0)
+        self.assertAlmostEqual(1 - m.gamma * run.z[-1][2], 0.0, delta=1e-12)
+        self.assertTrue(np.all(1 - m.gamma * run.z[:, 2] >= -1e-12))
+
+
+if __name__ == "__main__":
+    unittest.main()
