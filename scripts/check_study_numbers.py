@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks the numbers of docs/studies.md against the runs that print them.
 
-Usage: check_study_numbers.py BUILD_DIR [--slow | --all] [--list] [--keep DIR]
+Usage: check_study_numbers.py BUILD_DIR [--slow | --all] [--list] [--keep DIR [--reuse]]
 
 The runs and the checks are in scripts/study_numbers.py. Each check names a
 passage of docs/studies.md, a number in it, and the run and the value of its
@@ -10,13 +10,15 @@ By default the fast runs are rerun (a few seconds: continuation runs, the
 (v, beta) charts, the basins of the unforced belt, the forced charts' curves of
 the small study); --slow reruns the others (the forced orbit diagrams, forced
 basins, the forced (Omega, A) charts' curves and Feigenbaum's cascade: minutes),
---all both. Every run writes into a temporary directory (--keep DIR: there).
+--all both. Every run writes into a temporary directory (--keep DIR: there;
+with --reuse, a run whose output is already there is not rerun).
 
 A number passes when it equals the measured value at its printed precision
 (half a unit of its last digit; integers exactly); a check marked "le" passes
-when the measured value is at most the quoted bound; "err" checks a Lyapunov
-exponent of a chaotic attractor, which changes with any change of rounding, to
-twice its quoted error bar. Every passage of every check must still be in the
+when the measured value is at most the quoted bound, "rounded" a percentage
+rounded to an integer; "err S" checks a Lyapunov exponent of a chaotic
+attractor, which moves with any change of rounding, to twice its quoted error
+bar S, and "err" to twice the run's own standard error. Every passage of every check must still be in the
 page, whichever runs are selected, so an edit of the page must update its check.
 Wall and CPU times are not checked (they depend on the machine), nor numbers
 that a named test prints (the test asserts them).
@@ -117,37 +119,55 @@ class Run:
 def agrees(quoted, measured, how):
     if how == "le":
         return measured <= float(quoted)
+    if how == "err":  # measured is (value, its standard error): within twice that error
+        return abs(measured[0] - float(quoted)) <= 2 * measured[1]
     if how.startswith("err"):  # "err SIGMA": within twice the quoted error bar
         return abs(measured - float(quoted)) <= 2 * float(how.split()[1])
+    if how == "rounded" and re.fullmatch(r"-?\d+", quoted):  # a rounded percentage
+        return abs(measured - int(quoted)) <= 0.5
     if re.fullmatch(r"-?\d+", quoted):
         return measured == int(quoted)
     decimals = len(quoted.split(".")[1])
     return abs(measured - float(quoted)) <= 0.5 * 10 ** -decimals * (1 + 1e-9)
 
 
-def run_all(build, tmp, tiers):
+def module_python(build):
+    """The interpreter the build's Python module is for (CMakeCache.txt), else this one."""
+    try:
+        with open(os.path.join(build, "CMakeCache.txt")) as f:
+            m = re.search(r"^_Python3_EXECUTABLE:INTERNAL=(.+)$", f.read(), re.M)
+        return m.group(1).strip() if m else sys.executable
+    except OSError:
+        return sys.executable
+
+
+def run_all(build, tmp, tiers, reuse):
     runs = {}
     for name, (tier, app, args, opts) in study_numbers.RUNS.items():
         if tier not in tiers:
             continue
         out = os.path.join(tmp, name)
+        if reuse and os.path.exists(os.path.join(out, "stdout.txt")):
+            with open(os.path.join(out, "stdout.txt")) as f:
+                runs[name] = Run(out, f.read())
+            continue
         fill = {k: v.dir for k, v in runs.items()}
         fill["out"] = out
         args = [a.format(**fill) for a in args]
         if app.endswith(".py"):
-            argv = [sys.executable, os.path.join(ROOT, app)] + args
+            argv = [module_python(build), os.path.join(ROOT, app)] + args
             env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
         else:
             argv = [os.path.join(build, app)] + args + ["--out", out]
             argv += [] if "plots" in opts else ["--no_plots"]
             env = None
         p = subprocess.run(argv, cwd=ROOT, capture_output=True, text=True, timeout=1800, env=env)
-        os.makedirs(out, exist_ok=True)
-        with open(os.path.join(out, "stdout.txt"), "w") as f:
-            f.write(p.stdout)
         if p.returncode not in (0, 1) or (app.endswith(".py") and p.returncode):
             sys.exit("check_study_numbers: %s failed (exit %d): %s" %
                      (" ".join(argv), p.returncode, p.stderr.strip()[-2000:]))
+        os.makedirs(out, exist_ok=True)
+        with open(os.path.join(out, "stdout.txt"), "w") as f:
+            f.write(p.stdout)
         runs[name] = Run(out, p.stdout)
     return runs
 
@@ -172,8 +192,9 @@ def check(runs, flat, tiers, listing):
             continue
         ok = agrees(quoted, measured, how)
         if not ok or listing:
-            print("%s %s: quoted %s, measured %.17g (run %s%s)" %
-                  ("ok " if ok else "BAD", where[:60], quoted, measured, run,
+            print("%s %s: quoted %s, measured %s (run %s%s)" %
+                  ("ok " if ok else "BAD", where[:60], quoted,
+                   ", ".join("%.17g" % m for m in (measured if how == "err" else [measured])), run,
                    "" if how == "digits" else ", " + how))
         bad += 0 if ok else 1
     return done, bad
@@ -189,7 +210,7 @@ def main():
     if keep:
         os.makedirs(keep, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
-        runs = run_all(sys.argv[1], keep or tmp, tiers)
+        runs = run_all(sys.argv[1], keep or tmp, tiers, keep and "--reuse" in sys.argv)
         done, bad = check(runs, flat, tiers, "--list" in sys.argv)
     print("check_study_numbers (%s): %d numbers checked against %d runs, %d wrong" %
           ("+".join(sorted(tiers)), done, len(runs), bad))

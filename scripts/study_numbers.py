@@ -423,10 +423,10 @@ CHECKS += [
     (COULOMB_COUNTS, "315", "coulomb_basin", lambda r: attractor(r, 1, "starts")),
     (SEED_BASIN, "6561", "seed_forced_basin", lambda r: r.rows("basins_forced.tsv")),
     (SEED_BASIN, "4393", "seed_forced_basin", lambda r: attractor(r, 0, "starts")),
-    (SEED_BASIN, "67", "seed_forced_basin", lambda r: 100 * attractor(r, 0, "fraction")),
+    (SEED_BASIN, "67", "seed_forced_basin", lambda r: 100 * attractor(r, 0, "fraction"), "rounded"),
     (SEED_BASIN, "2", "seed_forced_basin", lambda r: attractor(r, 0, "m")),
     (SEED_BASIN, "2168", "seed_forced_basin", lambda r: attractor(r, 1, "starts")),
-    (SEED_BASIN, "33", "seed_forced_basin", lambda r: 100 * attractor(r, 1, "fraction")),
+    (SEED_BASIN, "33", "seed_forced_basin", lambda r: 100 * attractor(r, 1, "fraction"), "rounded"),
     (SEED_BASIN, "0.66", "seed_forced_basin", lambda r: attractor(r, 1, "sticks_per_period")),
     ("period-27 orbit (18 sticks)", "27", "seed_forced_basin_558", lambda r: attractor(r, 0, "m")),
     ("period-27 orbit (18 sticks)", "18", "seed_forced_basin_558",
@@ -455,3 +455,286 @@ CHECKS += [
     (STRIB_BASIN, "4.5", "stribeck_forced_basin", lambda r: 100 * attractor(r, 1, "fraction")),
     (STRIB_BASIN, "0.841", "stribeck_forced_basin", lambda r: attractor(r, 1, "x")),
 ]
+
+# The forced (Omega, A) charts' curves (slow: 12 to 14 one-parameter runs each).
+RUNS["stribeck_forced_chart"] = (SLOW, "ss_chart", study("stribeck_forced", "--grid", "0"), "")
+RUNS["seed_forced_chart"] = (SLOW, "ss_chart", study("seed_forced", "--grid", "0"), "")
+RUNS["r2_chart"] = (SLOW, "ss_chart", R2_CHART, "")
+
+
+def upper_gr(r, col):
+    """The lowest point of the GR curve above which the m = 1 orbit never sticks."""
+    rows = [row for row in r.table("curves.tsv")
+            if row["curve"] == "GR" and float(row["omega"]) > 0.7 and float(row["force"]) > 0.3]
+    return float(min(rows, key=lambda row: float(row["force"]))[col])
+
+
+def left_lp(r, end, col):
+    """The LP curve that ends on the SL point near (0.445, 0.19): its lowest or highest point."""
+    low = {}
+    for row in r.table("curves.tsv"):
+        if row["curve"] == "LP":
+            low[row["id"]] = min(low.get(row["id"], 1e9), float(row["force"]))
+    ids = [i for i, a in low.items() if abs(a - 0.19) < 0.01]
+    if len(ids) != 1:
+        raise KeyError("%d LP curves end near A = 0.19" % len(ids))
+    rows = [row for row in r.table("curves.tsv") if row["id"] == ids[0]]
+    return float((min if end == "low" else max)(rows, key=lambda row: float(row["force"]))[col])
+
+
+def codim2(r, label, k, col):
+    rows = sorted((row for row in r.table("codim2.tsv") if row["label"] == label),
+                  key=lambda row: float(row["omega"]))
+    return float(rows[k][col])
+
+
+def m2_curves(r):
+    return len(re.findall(r"^  curve \d+ \w+ m=2:", r.stdout, re.M))
+
+
+STRIB_CURVES = "12 one-parameter runs and 12 curves; 64 seeds"
+SEED_CURVES = "18 curves from 14\none-parameter runs (46 s wall), 8 of them of m = 2"
+GG = "Near Ω 0.4867,\nA 0.4935 it has a corner (GG)"
+LEFT_LP = "It runs from (Ω 0.445, A 0.19) up to (0.37, 0.6)"
+R2 = "two R2 points (Ω 1.981467,\nA 0.111154 and Ω 2.018449, A 0.114634)"
+CHECKS += [
+    (STRIB_CURVES, "12", "stribeck_forced_chart",
+     lambda r: r.printed(r"from (\d+) one-parameter runs")),
+    (STRIB_CURVES, "12", "stribeck_forced_chart", lambda r: r.printed(r"^(\d+) curves from")),
+    (STRIB_CURVES, "64", "stribeck_forced_chart", lambda r: r.printed(r"(\d+) seeds did not")),
+    ("Its minimum, A ≈ 0.37 near\nΩ ≈ 0.93", "0.37", "stribeck_forced_chart",
+     lambda r: upper_gr(r, "force")),
+    ("Its minimum, A ≈ 0.37 near\nΩ ≈ 0.93", "0.93", "stribeck_forced_chart",
+     lambda r: upper_gr(r, "omega")),
+    (SEED_CURVES, "18", "seed_forced_chart", lambda r: r.printed(r"^(\d+) curves from")),
+    (SEED_CURVES, "14", "seed_forced_chart", lambda r: r.printed(r"from (\d+) one-parameter runs")),
+    (SEED_CURVES, "8", "seed_forced_chart", m2_curves),
+    ("starts at A ≈ 0.45 near Ω ≈ 0.98", "0.45", "seed_forced_chart",
+     lambda r: upper_gr(r, "force")),
+    ("starts at A ≈ 0.45 near Ω ≈ 0.98", "0.98", "seed_forced_chart",
+     lambda r: upper_gr(r, "omega")),
+    (GG, "0.4867", "seed_forced_chart", lambda r: codim2(r, "GG", 0, "omega")),
+    (GG, "0.4935", "seed_forced_chart", lambda r: codim2(r, "GG", 0, "force")),
+    (LEFT_LP, "0.445", "seed_forced_chart", lambda r: left_lp(r, "low", "omega")),
+    (LEFT_LP, "0.19", "seed_forced_chart", lambda r: left_lp(r, "low", "force")),
+    (LEFT_LP, "0.37", "seed_forced_chart", lambda r: left_lp(r, "high", "omega")),
+    (LEFT_LP, "0.6", "seed_forced_chart", lambda r: left_lp(r, "high", "force")),
+    ("It ends at (0.44522, 0.19134) on a grazing-sliding point (SL)", "0.44522",
+     "seed_forced_chart", lambda r: left_lp(r, "low", "omega")),
+    ("It ends at (0.44522, 0.19134) on a grazing-sliding point (SL)", "0.19134",
+     "seed_forced_chart", lambda r: left_lp(r, "low", "force")),
+    ("Below A ≈ 0.19 this branch has no fold", "0.19", "seed_forced_chart",
+     lambda r: left_lp(r, "low", "force")),
+    (R2, "1.981467", "r2_chart", lambda r: codim2(r, "R2", 0, "omega")),
+    (R2, "0.111154", "r2_chart", lambda r: codim2(r, "R2", 0, "force")),
+    (R2, "2.018449", "r2_chart", lambda r: codim2(r, "R2", -1, "omega")),
+    (R2, "0.114634", "r2_chart", lambda r: codim2(r, "R2", -1, "force")),
+]
+
+# The orbit diagrams (slow: 800 values, each 500 + 200 forcing periods).
+RUNS["stribeck_od"] = (SLOW, "ss_orbit_diagram", study("forced_stribeck_orbit_diagram"), "")
+
+
+def lyap_range(r, lo, hi, k):
+    v = [float(row["lyapunov"]) for row in r.table("lyapunov.tsv") if lo <= float(row["omega"]) <= hi]
+    return (min(v), max(v))[k]
+
+
+def period_one_from(r):
+    """The lowest Omega from which every value of both sweeps is a period-1 orbit."""
+    pts = {}
+    for row in r.table("orbit_diagram.tsv"):
+        pts.setdefault(float(row["omega"]), []).append((float(row["x"]), float(row["xdot"])))
+    lo = None
+    for w in sorted(pts, reverse=True):
+        p = pts[w]
+        if max(max(abs(a[0] - p[0][0]), abs(a[1] - p[0][1])) for a in p) > 1e-6:
+            break
+        lo = w
+    return lo
+
+
+def stick_runs(r, lo):
+    """[(sticks per period, first Omega, last Omega)] above lo, the same in both sweeps."""
+    runs = {}
+    for d in ("up", "down"):
+        rows = sorted((float(row["omega"]), row["sticks_per_period"])
+                      for row in r.table("lyapunov.tsv")
+                      if row["direction"] == d and float(row["omega"]) >= lo)
+        out = []
+        for w, n in rows:
+            if out and out[-1][0] == n:
+                out[-1][2] = w
+            else:
+                out.append([n, w, w])
+        runs[d] = out
+    if runs["up"] != runs["down"]:
+        raise KeyError("the sweeps differ above %g" % lo)
+    if [n for n, _, _ in runs["up"]] != ["1", "2", "1", "0"]:  # one, two, one, none
+        raise KeyError("sticks per period above %g: %s" % (lo, runs["up"]))
+    return runs["up"]
+
+
+STRIB_OD = ("Ω = 0.3604 up the response is a period-1 orbit, with λ₁ between −0.47 and −0.01: one "
+            "stick per\nperiod up to Ω = 0.3779, two from 0.3805 to 0.5584, one again from 0.5609 to "
+            "0.7188, and none from\n0.7213 on")
+STICK_RUNS = [("0.3779", 0, 2), ("0.3805", 1, 1), ("0.5584", 1, 2), ("0.5609", 2, 1),
+              ("0.7188", 2, 2), ("0.7213", 3, 1)]
+CHECKS += [
+    (STRIB_OD, "0.3604", "stribeck_od", period_one_from),
+    ("Below 0.3604 come locking windows", "0.3604", "stribeck_od", period_one_from),
+    (STRIB_OD, "0.47", "stribeck_od", lambda r: -lyap_range(r, period_one_from(r), 1.2, 0)),
+    (STRIB_OD, "0.01", "stribeck_od", lambda r: -lyap_range(r, period_one_from(r), 1.2, 1)),
+]
+for q, k, j in STICK_RUNS:
+    CHECKS.append((STRIB_OD, q, "stribeck_od",
+                   (lambda k, j: lambda r: stick_runs(r, period_one_from(r))[k][j])(k, j)))
+CHECKS += [
+    ("Near Ω = 0.35, λ₁ = 0.021 ±\n0.0006", "0.021", "stribeck_od",
+     lambda r: float(r.lyapunov("up", 0.35)["lyapunov"]), "err 0.0006"),
+    ("All 800 values complete", "800", "stribeck_od",
+     lambda r: r.rows("lyapunov.tsv") if "0 values failed" in r.meta("lyapunov.tsv", "status")
+     else -1),
+]
+
+# Feigenbaum's table (slow: examples/python/feigenbaum.py, about a minute).
+RUNS["feigenbaum"] = (SLOW, "examples/python/feigenbaum.py", ["0.25", "0.27", "0.3"], "")
+
+
+def cascade_value(r, force, k, ratios=False):
+    line = re.search(r"^A = %s: .*$" % re.escape(force), r.stdout, re.M)
+    if ratios:
+        line = re.search(r"interval ratios (.*?)  \(", r.stdout[line.end():])
+        return float(line.group(1).split(", ")[k])
+    return float(line.group(0).split("at Omega ")[1].split(", ")[k])
+
+
+FEIGENBAUM = {
+    "0.25": "| 0.25 | 0.652766275042, 0.645080107919, 0.641597595667, 0.640656992599, "
+            "0.640439076656 | 2.207, 3.702, 4.316 |",
+    "0.27": "| 0.27 | 0.638176968274, 0.630398843049, 0.626564736976, 0.625447537572, "
+            "0.625180345458 | 2.029, 3.432, 4.181 |",
+    "0.3": "| 0.3 | 0.618208471272, 0.610558022942, 0.606160962290, 0.604563234680, "
+           "0.604123613319 | 1.740, 2.752, 3.634 |",
+}
+for force, row in FEIGENBAUM.items():
+    pds, ratios = row.strip("| ").split(" | ")[1:]
+    for k, q in enumerate(pds.split(", ")):
+        CHECKS.append((row, q, "feigenbaum", (lambda f, k: lambda r: cascade_value(r, f, k))(force, k),
+                       "err 1.5e-11"))  # 3e-11: they move by that much between builds
+    for k, q in enumerate(ratios.split(", ")):
+        CHECKS.append((row, q, "feigenbaum",
+                       (lambda f, k: lambda r: cascade_value(r, f, k, True))(force, k)))
+RUNS["seed_forced_od"] = (SLOW, "ss_orbit_diagram", study("seed_forced"), "")
+RUNS["seed_forced_od_coarse"] = (SLOW, "ss_orbit_diagram",
+                                 study("seed_forced", "--n", "300", "--to", "1.2"), "")
+RUNS["stribeck_forced_od"] = (SLOW, "ss_orbit_diagram", study("stribeck_forced"), "")
+
+
+def chaotic(row):
+    """ss_basin's test for chaos: above 3 standard errors and 1e-3."""
+    lam, err = float(row["lyapunov"]), float(row["lyapunov_err"])
+    return lam > 3 * err and lam > 1e-3
+
+
+def only_chaotic(r, sweeps=("up", "down")):
+    """The one Omega where the sweeps `sweeps` are chaotic, and only they."""
+    by = {}
+    for row in r.table("lyapunov.tsv"):
+        by.setdefault(row["omega"], {})[row["direction"]] = chaotic(row)
+    hits = [w for w, d in by.items() if all(d.get(s) == (s in sweeps) for s in ("up", "down"))]
+    if len(hits) != 1:
+        raise KeyError("chaotic in %s at %d values" % (sweeps, len(hits)))
+    return float(hits[0])
+
+
+def lam(direction, omega):
+    return lambda r: float(r.lyapunov(direction, omega)["lyapunov"])
+
+
+def lam_err(direction, omega):
+    """lambda_1 with its own error bar: the check allows twice the run's standard error."""
+    return lambda r: (lam(direction, omega)(r), float(r.lyapunov(direction, omega)["lyapunov_err"]))
+
+
+def positive_both(r, lo, hi, k):
+    """The first (k = 0) or last (k = -1) Omega in [lo, hi] with lambda_1 > 0 in both sweeps."""
+    pos = {}
+    for row in r.table("lyapunov.tsv"):
+        w = float(row["omega"])
+        if lo <= w <= hi:
+            pos.setdefault(w, []).append(float(row["lyapunov"]) > 0)
+    return sorted(w for w, p in pos.items() if p == [True, True])[k]
+
+
+def zero_both(r, lo, hi):
+    """The Omegas in [lo, hi] with |lambda_1| within its error in both sweeps."""
+    z = {}
+    for row in r.table("lyapunov.tsv"):
+        w = float(row["omega"])
+        if lo <= w <= hi:
+            z.setdefault(w, []).append(abs(float(row["lyapunov"])) <= float(row["lyapunov_err"]))
+    return sorted(w for w, p in z.items() if p == [True, True])
+
+
+def repeats(r, direction, omega, period):
+    """Largest change of the section point over `period` forcing periods."""
+    rows = [row for row in r.table("orbit_diagram.tsv") if row["direction"] == direction]
+    w = min({float(row["omega"]) for row in rows}, key=lambda w: abs(w - omega))
+    pts = [(float(row["x"]), float(row["xdot"])) for row in rows if float(row["omega"]) == w]
+    return max(max(abs(a[0] - b[0]), abs(a[1] - b[1])) for a, b in zip(pts, pts[period:]))
+
+
+SEED_OD = "with λ₁ from −0.02 down to −0.88 (near\nΩ = 0.788"
+SEED_558 = "Only\nΩ = 0.558 has λ₁ above 3σ and 1e-3 (ss_basin's test for chaos), in both sweeps (0.0099 ± 0.0015\nup, 0.0079 ± 0.0022 down)"
+STRIB_6 = "0.0113 ± 0.0022 up and\n0.0128 ± 0.0017 down at Ω = 0.6"
+WINDOW = "at Ω = 0.60075 the down sweep lands on a period-20 orbit (λ₁ = −0.0042; its\nsection points repeat after 20 periods to 4e-7) while the up sweep stays chaotic\n(λ₁ = 0.0131)"
+ZERO = "at Ω = 0.59774 and 0.60301 λ₁ is within its error of 0 in both sweeps"
+BELOW = "Ω = 0.5459 (0.0077) and\n0.5594 (0.0139)"
+CHECKS += [
+    ("Above Ω ≈ 0.63 the\nsection is one point", "0.63", "seed_forced", S("LP2", "omega")),
+    (SEED_OD, "0.02", "seed_forced_od", lambda r: -lyap_range(r, 0.63, 1, 1)),
+    (SEED_OD, "0.88", "seed_forced_od", lambda r: -lyap_range(r, 0.63, 1, 0)),
+    (SEED_OD, "0.788", "seed_forced_od", lambda r: float(min(
+        r.table("lyapunov.tsv"), key=lambda row: float(row["lyapunov"]))["omega"])),
+    (SEED_558, "0.558", "seed_forced_od", only_chaotic),
+    (SEED_558, "0.0099", "seed_forced_od", lam("up", 0.558), "err 0.0015"),
+    (SEED_558, "0.0015", "seed_forced_od", lambda r: float(r.lyapunov("up", 0.558)["lyapunov_err"])),
+    (SEED_558, "0.0079", "seed_forced_od", lam("down", 0.558), "err 0.0022"),
+    (SEED_558, "0.0022", "seed_forced_od",
+     lambda r: float(r.lyapunov("down", 0.558)["lyapunov_err"])),
+    ("sweeps part at Ω = 0.559: the up sweep is chaotic", "0.559", "seed_forced_od_coarse",
+     lambda r: only_chaotic(r, ("up",))),
+    ("the down sweep sits on a period-2 orbit", "2", "seed_forced_od_coarse",
+     lambda r: 2 if repeats(r, "down", 0.559, 2) < 1e-6 < repeats(r, "down", 0.559, 1) else 0),
+    ("two from the PD at Ω ≈ 0.618", "0.618", "stribeck_forced", S("PD1", "omega")),
+    ("positive at most values of 0.5955 ≤ Ω ≤ 0.6038 in both sweeps", "0.5955", "stribeck_forced_od",
+     lambda r: positive_both(r, 0.59, 0.61, 0)),
+    ("positive at most values of 0.5955 ≤ Ω ≤ 0.6038 in both sweeps", "0.6038", "stribeck_forced_od",
+     lambda r: positive_both(r, 0.59, 0.61, -1)),
+    (STRIB_6, "0.0113", "stribeck_forced_od", lam("up", 0.6), "err 0.0022"),
+    (STRIB_6, "0.0022", "stribeck_forced_od", lambda r: float(r.lyapunov("up", 0.6)["lyapunov_err"])),
+    (STRIB_6, "0.0128", "stribeck_forced_od", lam("down", 0.6), "err 0.0017"),
+    (STRIB_6, "0.0017", "stribeck_forced_od",
+     lambda r: float(r.lyapunov("down", 0.6)["lyapunov_err"])),
+    (WINDOW, "0.0042", "stribeck_forced_od", lambda r: -lam("down", 0.60075)(r)),
+    (WINDOW, "4e-7", "stribeck_forced_od", lambda r: repeats(r, "down", 0.60075, 20), "le"),
+    (WINDOW, "0.0131", "stribeck_forced_od", lam_err("up", 0.60075), "err"),
+    (ZERO, "0.59774", "stribeck_forced_od", lambda r: zero_both(r, 0.5955, 0.6038)[0]),
+    (ZERO, "0.60301", "stribeck_forced_od", lambda r: zero_both(r, 0.5955, 0.6038)[-1]),
+    (BELOW, "0.5459", "stribeck_forced_od", lambda r: only_chaotic_below(r, 0)),
+    (BELOW, "0.0077", "stribeck_forced_od", lam_err("up", 0.5459), "err"),
+    (BELOW, "0.5594", "stribeck_forced_od", lambda r: only_chaotic_below(r, 1)),
+    (BELOW, "0.0139", "stribeck_forced_od", lam_err("up", 0.5594), "err"),
+    ("Between the folds (0.624 ≤ Ω ≤ 0.630)", "0.624", "stribeck_forced", S("LP1", "omega")),
+    ("Between the folds (0.624 ≤ Ω ≤ 0.630)", "0.630", "stribeck_forced", S("LP2", "omega")),
+]
+
+
+def only_chaotic_below(r, k):
+    """The k-th Omega below the cascade (< 0.59) where a sweep is chaotic; exactly two, up only."""
+    hits = sorted({(float(row["omega"]), row["direction"]) for row in r.table("lyapunov.tsv")
+                   if float(row["omega"]) < 0.59 and chaotic(row)})
+    if len(hits) != 2 or any(d != "up" for _, d in hits):
+        raise KeyError("chaotic below the cascade: %s" % hits)
+    return hits[k][0]
