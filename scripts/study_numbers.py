@@ -738,3 +738,40 @@ def only_chaotic_below(r, k):
     if len(hits) != 2 or any(d != "up" for _, d in hits):
         raise KeyError("chaotic below the cascade: %s" % hits)
     return hits[k][0]
+
+# The output the page quotes verbatim: each number of each quoted line against the same
+# number of the run's line that starts alike (the wall time "in 22.8 ms" excepted).
+NUM = r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
+
+
+def quoted_line(r, head, k):
+    for line in r.stdout.splitlines():
+        if line.strip().startswith(head):
+            return float(re.findall(NUM, line)[k])
+    raise KeyError(head)
+
+
+SEED_BLOCK = [
+    "ss_continue: v from 0.05 to 0.5; law=cubic beta=0.05 v=[0.05, 0.5] mu_s=0.4 mu_m=0.25 v_m=0.5 k5=0",
+    "GR1  pt 87  v = 0.395790288798  period 6.367585  x in [-0.065469, 0.730586]  grazing-sliding: "
+    "stick phase vanishes; multiplier 0 on the stick-slip side, 0.6359399616 on the pure-slip side",
+    "HB1  pt 200  v = 0.440958551844  period 6.283185  x in [0.253014, 0.253014]  Hopf point of "
+    "steady sliding (2 beta + mu'(v) = 0), supercritical (mu''' > 0)",
+]
+COULOMB_FULL = ("GR1  pt 27  v = 0.164713893617  period 6.439475  x in [0.072256, 0.458017]  grazing "
+                "inside the stick band at x = 0.2335286106")
+for line, run in [(l, "seed") for l in SEED_BLOCK] + [(COULOMB_FULL, "coulomb")]:
+    head = line.split(":")[0] if line.startswith("ss_") else line[:4]
+    for k, q in enumerate(re.findall(NUM, line)):
+        CHECKS.append((line, q, run,
+                       (lambda h, k: lambda r: quoted_line(r, h, k))(head, k)))
+CHECKS += [
+    ("The β = 0.05 row matches the one-parameter run above (0.3957902888, 0.4409585518)",
+     "0.3957902888", "seed", S("GR1", "v")),
+    ("The β = 0.05 row matches the one-parameter run above (0.3957902888, 0.4409585518)",
+     "0.4409585518", "seed", S("HB1", "v")),
+    ("agrees with the one-parameter run (0.6519468583)", "0.6519468583", "stribeck",
+     S("GR1", "v")),
+    ("the curves took 1.5 s (2 one-parameter runs)", "2", "ns_seed_chart",
+     lambda r: r.printed(r"from (\d+) one-parameter runs")),
+]
