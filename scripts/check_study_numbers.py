@@ -2,6 +2,7 @@
 """Checks the numbers of docs/studies.md against the runs that print them.
 
 Usage: check_study_numbers.py BUILD_DIR [--slow | --all] [--list] [--keep DIR [--reuse]]
+       check_study_numbers.py --self-test
 
 The runs and the checks are in scripts/study_numbers.py. Each check names a
 passage of docs/studies.md, a number in it, and the run and the value of its
@@ -200,7 +201,27 @@ def check(runs, flat, tiers, listing):
     return done, bad
 
 
+def self_test():
+    """agrees() on each kind of check, and an edited number of the page is reported."""
+    cases = [("0.3958", 0.39578887, "digits", True), ("0.3958", 0.39574, "digits", False),
+             ("214", 214.0, "digits", True), ("214", 213.0, "digits", False),
+             ("1e-8", 5e-9, "le", True), ("1e-8", 2e-8, "le", False),
+             ("0.0113", 0.0150, "err 0.0022", True), ("0.0113", 0.0160, "err 0.0022", False),
+             ("0.0131", (0.0150, 0.001), "err", True), ("0.0131", (0.0160, 0.001), "err", False),
+             ("67", 66.96, "rounded", True), ("67", 66.4, "rounded", False)]
+    bad = [c for c in cases if agrees(c[0], c[1], c[2]) != c[3]]
+    page = open(PAGE).read()
+    flat = re.sub(r"\s+", " ", page)
+    edited = flat.replace("v_GR = 0.3957902888", "v_GR = 0.3957902889")
+    if check({}, flat, set(), False)[1] != 0 or check({}, edited, set(), False)[1] != 1:
+        bad.append("the edited page")
+    print("check_study_numbers --self-test: %d cases, %d wrong %s" % (len(cases) + 1, len(bad), bad))
+    return 1 if bad else 0
+
+
 def main():
+    if "--self-test" in sys.argv:
+        return self_test()
     if len(sys.argv) < 2 or sys.argv[1].startswith("-"):
         sys.exit(__doc__)
     tiers = {"slow"} if "--slow" in sys.argv else {"fast"}
