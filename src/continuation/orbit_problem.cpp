@@ -217,7 +217,9 @@ double MultiplierMove(const OrbitRow& a, const OrbitRow& b) {
 }
 
 bool SameStructure(const OrbitRow& a, const OrbitRow& b) {
-  return a.sticks == b.sticks && a.exits == b.exits && a.crossings == b.crossings;
+  // Not the exits: over a period they equal the sticks but for a stick phase
+  // that ends on the section itself, counted on one side only.
+  return a.sticks == b.sticks && a.crossings == b.crossings;
 }
 
 }  // namespace stickslip::orbit_detail

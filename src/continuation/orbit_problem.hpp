@@ -75,7 +75,7 @@ double RowTest(const OrbitRow& r, int i);
 bool TorusPair(const OrbitRow& r, double tol);
 /// The largest distance from a multiplier of a to the nearest of b's.
 double MultiplierMove(const OrbitRow& a, const OrbitRow& b);
-/// The same switching sequence counts (sticks, exits, crossings).
+/// The same switching sequence counts (sticks and crossings per period).
 bool SameStructure(const OrbitRow& a, const OrbitRow& b);
 
 }  // namespace stickslip::orbit_detail
