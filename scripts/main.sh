@@ -1,12 +1,11 @@
 #!/usr/bin/env bash
-# The main job: set up, build what it runs (the apps below and the Python
-# module, not the tests: scripts/test.sh builds those in the same build/), then
-# the default study's continuation (v from 0.05 to 0.5), the seed's figures
-# 5-10, the stability charts, into plots/, and a short sweep on Dask.
+# The main job: set up, build the five apps (the README's tour runs them all)
+# and the Python module, not the tests (scripts/test.sh builds those in the same
+# build/), then the default study's continuation (v from 0.05 to 0.5), the
+# seed's figures 5-10, the stability charts, into plots/, and a short sweep.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh --target ss_continue --target ss_simulate --target ss_chart \
-  --target stickslip_python build
+scripts/setup.sh --target ss_apps --target stickslip_python build
 ./build/ss_continue --study studies/seed.ini --out plots
 scripts/seed_figures.sh build
 # Stability charts in two parameters (ss_chart), each into plots/<study>/.
