@@ -1,8 +1,17 @@
 #!/usr/bin/env bash
 # Installs what is missing (Debian packages, by name) and builds in Release.
-# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]
+# Usage: scripts/setup.sh [--target NAME]... [BUILD_DIR] [extra cmake arguments...]
+# With --target, only those targets (and what they need) are built; the build
+# directory is configured as always (tests on), so a later plain setup.sh in it
+# builds the rest (scripts/main.sh builds its apps only, scripts/test.sh all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+targets=()
+while [ "${1:-}" = "--target" ]; do
+  [ -n "${2:-}" ] || { echo "setup.sh: --target needs a name" >&2; exit 2; }
+  targets+=(--target "$2")
+  shift 2
+done
 build=${1:-build}
 shift || true
 
@@ -27,4 +36,4 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$build" -j "$(nproc)"
+cmake --build "$build" -j "$(nproc)" "${targets[@]}"

@@ -22,7 +22,9 @@ def main():
     r = stickslip.sweep(stickslip.stick_slip_orbits, grid, sample)
     r.to_tsv("sweep.tsv")  # one self-describing file
     s = stickslip.group_stats(r, "v", "amplitude", where="stick_slip")
-    print(len(r), "orbits in", r.meta["seconds"], "s on", r.meta["workers"], "workers")
+    seconds = float(r.meta["seconds"])  # with the LocalCluster's start and stop
+    print(f"{len(r)} orbits in {r.meta['seconds']} s on {r.meta['workers']} workers: "
+          f"{len(r) / seconds:.0f} orbits/s")
     t = os.times()  # the workers are reaped children once the cluster closed
     print(f"CPU {t.user + t.system + t.children_user + t.children_system:.1f} s (workers "
           f"{t.children_user + t.children_system:.1f} s), parent peak RSS "

@@ -196,6 +196,8 @@ def _gather(client, futures, consume, timeout, worker_timeout):
             time.sleep(0.5)
             bad = [done + i for i, f in enumerate(futures[done:])
                    if f.status in ("error", "cancelled", "lost")]
+            if not bad:  # lost, then rescheduled by the scheduler meanwhile
+                continue
             f = futures[bad[0]]
             if f.status == "error":
                 e = f.exception()

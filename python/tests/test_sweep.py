@@ -349,5 +349,41 @@ class Stream(unittest.TestCase):
         self.assertLess(peak[2000000] - peak[200000], 20)
 
 
+class _Future:
+    """A Dask future's face for _gather: its status follows `states`, one per look."""
+
+    def __init__(self, states, value):
+        self.states, self.value = list(states), value
+
+    @property
+    def status(self):
+        return self.states.pop(0) if len(self.states) > 1 else self.states[0]
+
+    def result(self, timeout=None):
+        return self.value
+
+    def release(self):
+        pass
+
+
+class _Client:
+    def nthreads(self):
+        return {"w": 1}
+
+
+class Gather(unittest.TestCase):
+    def test_a_lost_task_rescheduled_before_the_second_look_is_waited_for(self):
+        # A worker's death marks its tasks lost; the scheduler may run them again
+        # before _gather looks a second time (0.5 s later). Seen under load: an
+        # IndexError instead of the results.
+        from stickslip._sweep import _gather
+        futures = [_Future(["finished"], "a"),
+                   _Future(["lost", "pending", "finished"], "b")]
+        got = []
+        _gather(_Client(), futures, lambda i, part: got.append((i, part)), None, 60.0)
+        self.assertEqual(got, [(0, "a"), (1, "b")])
+
+
 if __name__ == "__main__":
     unittest.main()
+

@@ -201,7 +201,7 @@ void OutputSet::Write(const std::string& name, const std::string& content) {
     throw InvalidArgument("OutputSet: '" + name + "' was not declared");
   const std::string path = Staging() + "/" + name;
   try {
-    WriteFileAtomically(path, content);
+    WriteFileAtomically(path, content, Durability::kDeferred);  // synced in Commit
   } catch (const Error& e) {
     throw Error("cannot write '" + dir_ + "/" + name + "': " + e.what());
   }
@@ -220,7 +220,7 @@ void PreserveSvgSpaces(const std::string& path) {
   const auto at = s.find("<svg");
   if (at == std::string::npos || s.find("xml:space", at) < s.find('>', at)) return;
   s.insert(at + 4, " xml:space=\"preserve\"");
-  WriteFileAtomically(path, s);
+  WriteFileAtomically(path, s, Durability::kDeferred);  // synced in Commit
 }
 }  // namespace
 
@@ -262,6 +262,15 @@ GnuplotResult OutputSet::Draw(const std::string& script, const std::vector<std::
 
 void OutputSet::Commit(const std::vector<std::string>& stale) {
   const std::string where = Staging();
+  // Durable as a set: every staged file's data first (together: one journal
+  // commit), then the renames, then the directory once (docs/reliability.md).
+  std::vector<std::string> staged_paths;
+  for (const auto& name : staged_) staged_paths.push_back(where + "/" + name);
+  try {
+    SyncFiles(staged_paths);
+  } catch (const Error& e) {
+    throw Error("cannot write into '" + dir_ + "': " + e.what());
+  }
   const int lock = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (lock < 0) throw Error("cannot open '" + dir_ + "': " + std::strerror(errno));
   while (::flock(lock, LOCK_EX) != 0 && errno == EINTR) {
@@ -285,6 +294,9 @@ void OutputSet::Commit(const std::vector<std::string>& stale) {
     struct stat st;
     if (::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::unlink(path.c_str());
   }
+  // The renames and removals are durable once the directory is synced.
+  if (error.empty() && ::fsync(lock) != 0 && errno != EINVAL)
+    error = "cannot sync '" + dir_ + "': " + std::strerror(errno);
   ::close(lock);  // releases the lock
   if (!error.empty()) throw Error(error);
   Discard();  // the staging directory, now empty

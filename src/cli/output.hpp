@@ -16,6 +16,10 @@
 //   holding an exclusive flock on the destination directory, so two runs on
 //   the same directory each leave a whole set (the last to commit wins), never
 //   a mix. The destructor removes whatever is still staged.
+// - Durable as a set: Write() does not fsync; Commit() syncs every staged
+//   file together (SyncFiles), renames them, then fsyncs the directory once.
+//   After a power loss the old set stands until the renames began, the new one
+//   once Commit() returned; each file is whole, old or new.
 // - Draw() runs gnuplot inside the staging directory and checks every figure
 //   (a whole PNG: signature and IEND chunk); a figure that fails the check is
 //   a failure, and the caller keeps the old files by not committing.

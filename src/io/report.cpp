@@ -34,7 +34,8 @@ bool HasControl(const std::string& s) { return s.find_first_of("\t\n\r") != std:
 
 }  // namespace
 
-void WriteFileAtomically(const std::string& path, const std::string& content) {
+void WriteFileAtomically(const std::string& path, const std::string& content,
+                         Durability durability) {
   std::string dir, base;
   SplitPath(path, &dir, &base);
   if (base.empty() || base == "." || base == "..")
@@ -71,11 +72,37 @@ void WriteFileAtomically(const std::string& path, const std::string& content) {
     p += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 && errno != EINVAL) abandon("flushing", errno);
+  if (durability == Durability::kSynced && ::fsync(fd) != 0 && errno != EINVAL)
+    abandon("flushing", errno);
   const int closed = ::close(fd);
   fd = -1;
   if (closed != 0) abandon("closing", errno);
   if (::rename(tmp.c_str(), path.c_str()) != 0) abandon("renaming the temporary file", errno);
+}
+
+void SyncFiles(const std::vector<std::string>& paths) {
+  std::vector<int> fds;
+  auto close_all = [&] {
+    for (int fd : fds) ::close(fd);
+  };
+  auto fail = [&](const std::string& path, const std::string& what, int err) {
+    close_all();
+    throw Error("cannot sync '" + path + "': " + ErrnoText(err) + " (" + what + ")");
+  };
+  for (const auto& path : paths) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) fail(path, "opening", errno);
+    fds.push_back(fd);
+#ifdef SYNC_FILE_RANGE_WRITE
+    // Starts writeback without waiting: the fsyncs below then find the data of
+    // every file on its way and the blocks of all of them allocated, so the
+    // first fsync's journal commit carries the whole set.
+    ::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+#endif
+  }
+  for (std::size_t i = 0; i < fds.size(); ++i)
+    if (::fsync(fds[i]) != 0 && errno != EINVAL) fail(paths[i], "flushing", errno);
+  close_all();
 }
 
 std::string FormatNumber(double x) {

@@ -9,11 +9,25 @@
 
 namespace stickslip {
 
+/// When a write reaches the disk.
+enum class Durability {
+  kSynced,    ///< the file is fsynced before the rename (one journal commit per file)
+  kDeferred,  ///< no fsync: the caller syncs a whole set at once (SyncFiles, cli::OutputSet)
+};
+
 /// Writes `content` to a new file in the directory of `path`, then renames it
 /// over `path`: readers see the old file or the whole new one, never a part.
 /// On failure the temporary file is removed and Error is thrown, naming the
-/// path and the reason (errno text); `path` is then unchanged.
-void WriteFileAtomically(const std::string& path, const std::string& content);
+/// path and the reason (errno text); `path` is then unchanged. kSynced does not
+/// sync the directory: the rename is durable once the directory is fsynced.
+void WriteFileAtomically(const std::string& path, const std::string& content,
+                         Durability durability = Durability::kSynced);
+
+/// Puts the data of every file in `paths` on disk: writeback is started on all
+/// of them first, then each is fsynced, so a journalling file system commits
+/// them together (one ext4 journal commit, not one per file). Error names the
+/// file and the reason.
+void SyncFiles(const std::vector<std::string>& paths);
 
 /// A number as TSV text: the shortest form that reads back to the same double
 /// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
