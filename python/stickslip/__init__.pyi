@@ -58,6 +58,7 @@ class OrbitStatus(enum.IntEnum):
     cancelled = 7
     singular = 8
     aperiodic = 9
+    contact_open = 10
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
@@ -71,7 +72,8 @@ class SpecialKind(enum.IntEnum):
     sliding = 5
     adding = 6
     crossing = 7
-    none = 8
+    contact_loss = 8
+    none = 9
 class ContinuationStatus(enum.IntEnum):
     ok = 0
     failed = 1

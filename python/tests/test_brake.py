@@ -76,13 +76,14 @@ class Orbits(unittest.TestCase):
         self.assertEqual(down.status, stickslip.BranchStatus.reached_end)
         self.assertTrue(np.all(down.stable))  # stick-slip coexists with stable steady sliding
         self.assertTrue(np.all(down.p < brake.system(0.5).flutter_mu_k + 0.01))
-        self.assertEqual([lab for lab, _, _ in up.special], ["LP"])
+        self.assertEqual([lab for lab, _, _ in up.special], ["LP", "CL"])
         self.assertGreater(up.special[0][1], brake.MU0)
-        # No label for contact loss yet (docs/limits.md): the driver stops with
-        # step-too-small at the last orbit whose normal force stays positive.
+        # The branch ends at the orbit whose normal force 1 - gamma y first
+        # touches 0, labelled CL; beyond it the contact opens.
         self.assertEqual(up.status, stickslip.BranchStatus.step_too_small)
         self.assertIn("opens (normal force 0)", up.message)
-        self.assertLess(1 - up.hi[-1][2], 1e-4)
+        self.assertEqual(up.label[-1], "CL")
+        self.assertLess(1 - up.hi[-1][2], 1e-9)
 
 
 if __name__ == "__main__":

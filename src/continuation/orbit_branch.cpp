@@ -210,6 +210,7 @@ void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, VectorXd u0, int
     const double step = std::max(std::abs(dp), Tolerances::kBranchEdgeStep * std::abs(to - from));
     OrbitRow before, after;
     std::string why;
+    problem.ClearOpened();
     const bool across = orbit_detail::JumpAcross(problem, last, pdir, step, pdir == dir ? to : from,
                                                  o.locate_tol, &before, &after, &why);
     if (cancelled()) {

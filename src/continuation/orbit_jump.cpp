@@ -129,6 +129,13 @@ OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double 
   beyond.p = before.p + dir * 10 * tol * (1 + std::abs(before.p));
   // Labelled by the switching counts of one period just beyond, from the
   // edge's state, where the system is valid there and the run ends well.
+  if (problem.Opened()) {  // beyond the edge a contact opens: its normal force touches 0 there
+    point.label = SpecialKind::kContactLoss;
+    point.description =
+        "contact loss: a normal force reaches 0 on the orbit; beyond it the "
+        "contact opens";
+    return point;
+  }
   point.label = SpecialKind::kSliding;
   if (problem.Counts(&beyond)) ClassifySliding(problem, before, beyond, &point);
   if (StickSplits(problem, before, beyond)) {

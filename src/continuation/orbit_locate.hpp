@@ -75,7 +75,8 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
                 OrbitRow* after, std::string* why);
 
 // The point at an edge `before` with no periodic orbit of its period just
-// beyond (the parameter moving by dir = +-1): labelled by the switching
+// beyond (the parameter moving by dir = +-1): CL where a contact opened in
+// the search beyond (problem.Opened()), else labelled by the switching
 // counts of one period from its state just past the edge.
 OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol);
 

@@ -66,6 +66,7 @@ bool OrbitProblem::MapAt(double p, const FlowPoint& z, bool jacobian, VectorXd* 
   if (!why->empty()) return false;
   shooting_.set_system(*system_);
   if (shooting_.Map(z, SectionAt(z), jacobian, r, o)) return true;
+  opened_ = opened_ || o->status == OrbitStatus::kContactOpen;
   *why = o->message;
   return false;
 }
@@ -77,6 +78,7 @@ bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
   shooting_.set_system(*system_);
   const PeriodicOrbit o = shooting_.Find(z, SectionAt(z));
   if (!o.ok()) {
+    opened_ = opened_ || o.status == OrbitStatus::kContactOpen;
     *why = o.message;
     return false;
   }
@@ -120,7 +122,7 @@ bool OrbitProblem::Counts(OrbitRow* r) {
   FlowRequest rq;
   rq.t_max = r->start.t + r->period;
   const FlowRun run = shooting_.flow().Run(r->start, rq);
-  if (!run.ok()) return false;
+  if (!run.ok() || run.status == FlowStatus::kContactOpen) return false;
   r->sticks = run.sticks, r->exits = run.exits, r->crossings = run.crossings;
   return true;
 }

@@ -24,6 +24,10 @@ class OrbitProblem final : public PalcProblem {
   /// The orbit at parameter p by the shooting's damped Newton from z (p
   /// held); on success Row() is its row. False, with *why, if none.
   bool FindAt(double p, const FlowPoint& z, std::string* why);
+  /// Whether a map or Newton failed with a contact's normal force at 0
+  /// since the last ClearOpened().
+  bool Opened() const { return opened_; }
+  void ClearOpened() { opened_ = false; }
   /// u of an orbit found at parameter p.
   Eigen::VectorXd Unknowns(const FlowPoint& z, double p) const;
   int parameter_index() const { return nu_; }  ///< p's component in u
@@ -54,6 +58,7 @@ class OrbitProblem final : public PalcProblem {
   Shooting shooting_;
   PeriodicOrbit last_, plus_, minus_;
   Eigen::VectorXd last_u_, r_, rp_, rm_;
+  bool opened_ = false;
 };
 
 /// ContinueOrbits' checks: throws InvalidArgument on an invalid system,

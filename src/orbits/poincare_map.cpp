@@ -74,9 +74,10 @@ bool Shooting::Evaluate(const FlowPoint& z, const PoincareSection& p, PeriodicOr
                                                               : FlowStatus::kSection;
   const FlowStatus got = run_.status;
   if (got != want) {
-    o->status = got == FlowStatus::kCancelled   ? OrbitStatus::kCancelled
-                : got == FlowStatus::kTimeLimit ? OrbitStatus::kNoReturn
-                                                : OrbitStatus::kIntegratorFailed;
+    o->status = got == FlowStatus::kCancelled     ? OrbitStatus::kCancelled
+                : got == FlowStatus::kTimeLimit   ? OrbitStatus::kNoReturn
+                : got == FlowStatus::kContactOpen ? OrbitStatus::kContactOpen
+                                                  : OrbitStatus::kIntegratorFailed;
     o->message = got == FlowStatus::kTimeLimit
                      ? std::string("no ") + Name(p.kind) +
                            " within t = " + Num(options_.max_return_time) + " of t = " + Num(z.t)

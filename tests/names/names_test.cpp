@@ -77,7 +77,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("FlowStatus", FlowStatus::kContactOpen);
   Covers("SwitchKind", SwitchKind::kTouch);
   Covers("OrbitKind", OrbitKind::kPureSlip);
-  Covers("OrbitStatus", OrbitStatus::kAperiodic);
+  Covers("OrbitStatus", OrbitStatus::kContactOpen);
   Covers("SectionKind", SectionKind::kSurface);
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
   Covers("FigureFormat", FigureFormat::kSvg);

@@ -12,6 +12,8 @@
 //   CR  crossing-sliding: a crossing of a contact's surface reaches its
 //       static limit and becomes a stick phase (or a crossing is born or lost
 //       there);
+//   CL  contact loss: a contact's normal force reaches 0 on the orbit; the
+//       branch ends there (the system changes, no friction system beyond);
 //   SL  any other change of the orbit's switching sequence (its stick phases
 //       or crossings; di Bernardo, Kowalczyk & Nordmark, Physica D 170, 2002).
 #pragma once
@@ -29,18 +31,20 @@ enum class SpecialKind {
   kSliding,
   kAdding,
   kCrossing,
+  kContactLoss,
   kNone
 };
 template <>
 struct EnumNames<SpecialKind> {
   static constexpr NamedValue<SpecialKind> kTable[] = {
-      {SpecialKind::kGrazing, "GR"}, {SpecialKind::kHopf, "HB"},
-      {SpecialKind::kFold, "LP"},    {SpecialKind::kPeriodDoubling, "PD"},
-      {SpecialKind::kTorus, "NS"},   {SpecialKind::kSliding, "SL"},
-      {SpecialKind::kAdding, "AD"},  {SpecialKind::kCrossing, "CR"},
-      {SpecialKind::kNone, ""},
+      {SpecialKind::kGrazing, "GR"},     {SpecialKind::kHopf, "HB"},
+      {SpecialKind::kFold, "LP"},        {SpecialKind::kPeriodDoubling, "PD"},
+      {SpecialKind::kTorus, "NS"},       {SpecialKind::kSliding, "SL"},
+      {SpecialKind::kAdding, "AD"},      {SpecialKind::kCrossing, "CR"},
+      {SpecialKind::kContactLoss, "CL"}, {SpecialKind::kNone, ""},
   };
 };
-const char* SpecialLabel(SpecialKind k);  // "GR", "HB", "LP", "PD", "NS", "SL", "AD", "CR", ""
+const char* SpecialLabel(
+    SpecialKind k);  // "GR", "HB", "LP", "PD", "NS", "SL", "AD", "CR", "CL", ""
 
 }  // namespace stickslip

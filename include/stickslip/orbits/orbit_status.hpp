@@ -18,6 +18,7 @@ enum class OrbitStatus {
   kCancelled,         // the flow's cancel hook fired
   kSingular,          // shooting: DP - I is singular (a multiplier at 1)
   kAperiodic,         // a batch row: no section point recurs within max_m periods
+  kContactOpen,       // a contact's normal force reached 0 (the flow's contact-open)
 };
 /// "ok", "no-return", ... for messages.
 const char* OrbitStatusName(OrbitStatus s);
@@ -34,6 +35,7 @@ struct EnumNames<OrbitStatus> {
       {OrbitStatus::kCancelled, "cancelled"},
       {OrbitStatus::kSingular, "singular"},
       {OrbitStatus::kAperiodic, "aperiodic"},
+      {OrbitStatus::kContactOpen, "contact-open"},
   };
 };
 
