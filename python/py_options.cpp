@@ -70,9 +70,10 @@ void BindEnums(py::module_& m) {
       .value("stick_slip", PointKind::kStickSlip)
       .value("pure_slip", PointKind::kPureSlip)
       .value("equilibrium", PointKind::kEquilibrium, "steady sliding");
-  Enum<SpecialKind>(m, "SpecialKind",
-                    "Special point of a branch (label GR, HB, LP, PD, NS, SL, AD, CR, CL; none: a plain row).",
-                    &SpecialLabel)
+  Enum<SpecialKind>(
+      m, "SpecialKind",
+      "Special point of a branch (label GR, HB, LP, PD, NS, SL, AD, CR, CL; none: a plain row).",
+      &SpecialLabel)
       .value("grazing", SpecialKind::kGrazing, "GR: the stick phase shrinks to zero")
       .value("hopf", SpecialKind::kHopf, "HB: 2 beta + mu'(v) = 0")
       .value("fold", SpecialKind::kFold, "LP: the branch turns back")

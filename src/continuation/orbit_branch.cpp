@@ -124,6 +124,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
     const PalcCorrection c = palc_.CorrectFixed(pred, k_);
     end = true;
     out_.status = BranchStatus::kReachedEnd;
+    out_.message.clear();  // a failure before a jump's restart is not the end
     if (!c.ok) {
       out_.status = BranchStatus::kStepTooSmall;
       out_.message = "the row at " + system_.ParameterName(j_) + " = to: " + c.why;

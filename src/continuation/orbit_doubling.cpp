@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "numerics/numbers.hpp"
@@ -66,12 +67,17 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo < p_pd && p_pd < hi))
     throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " + Num(p_pd, 12) +
                           " < hi");
-  orbit_detail::CheckInputs(system, parameter, pd, lo, options);
-  orbit_detail::CheckInputs(system, parameter, pd, hi, options);
+  {  // the checks at a bound where the system is valid (the branch may not reach the other)
+    std::unique_ptr<System> at_hi = system.Clone();
+    at_hi->SetParameterValue(parameter, hi);
+    orbit_detail::CheckInputs(system, parameter, pd, at_hi->ValidationError().empty() ? hi : lo,
+                              options);
+  }
   const auto start = std::chrono::steady_clock::now();
   const std::string at = system.ParameterName(parameter) + " = " + Num(p_pd, 12);
   // The flip direction from DP at the point.
   Shooting shooting(system, options.shooting);
+  if (options.palc.cancelled) shooting.flow().set_cancel(options.palc.cancelled);
   VectorXd r;
   PeriodicOrbit orbit;
   if (!shooting.Map(pd, At(system, section, pd.z), true, &r, &orbit))

@@ -35,7 +35,9 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
     std::string w;
     return OrbitAt(problem, from, p, &orb, &w) && SameStructure(orb, ref);
   };
-  while (std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p))) {
+  for (int it = 0;
+       it < Tolerances::kBranchBisectionCap && std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p));
+       ++it) {
     const double mid = 0.5 * (lo.p + hi);
     // Newton from the secant predictor through the last two orbits: from lo
     // alone the first iterate near the edge can land past it and converge to
@@ -59,7 +61,9 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
     }
   }
   *before = lo;
-  // The orbit beyond: Newton from the edge's orbit, else after settling there.
+  // The orbit beyond: Newton from the edge's orbit, else after settling there
+  // (a contact opening there is what Opened() reports to EdgeWithoutOrbit).
+  problem.ClearOpened();
   std::string w;
   bool found = OrbitAt(problem, lo, hi, &orb, &w) && !SameStructure(orb, ref);
   FlowPoint settled;
@@ -106,18 +110,26 @@ bool JumpAcross(OrbitProblem& problem, const OrbitRow& last, double dir, double 
 namespace {
 
 // Whether one period from `before`'s state just beyond the edge leaves a
-// stick phase early: its first switch that differs from the orbit's is a
-// stick exit while that contact still sticks on the orbit (a stick phase
-// splits where its constraint force reaches the static limit inside it).
+// stick phase early: its first switch that differs from the orbit's (in
+// kind, contact or time) is a stick exit of a contact that still sticks on
+// the orbit then (a stick phase splits where its constraint force reaches
+// the static limit inside it).
 bool StickSplits(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& beyond) {
   std::vector<FlowSwitch> on, off;
   if (!problem.Switches(before, &on) || !problem.Switches(beyond, &off)) return false;
+  const double dt = Tolerances::kBranchSwitchTime * before.period;
   for (std::size_t i = 0; i < off.size(); ++i) {
-    const bool differs =
-        i >= on.size() || off[i].kind != on[i].kind || off[i].contact != on[i].contact;
+    const bool differs = i >= on.size() || off[i].kind != on[i].kind ||
+                         off[i].contact != on[i].contact || std::abs(off[i].t - on[i].t) > dt;
     if (!differs) continue;
-    return off[i].kind == SwitchKind::kStickOut && off[i].before.sticks(off[i].contact) &&
-           (i >= on.size() || on[i].t > off[i].t);
+    if (off[i].kind != SwitchKind::kStickOut) return false;
+    const int c = off[i].contact;
+    bool stuck = before.start.mode.sticks(c);  // on the orbit at off[i].t
+    for (const FlowSwitch& e : on) {
+      if (e.t > off[i].t - dt) break;
+      if (e.contact == c) stuck = e.after.sticks(c);
+    }
+    return stuck;
   }
   return false;
 }
@@ -126,7 +138,7 @@ bool StickSplits(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& 
 
 OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol) {
   OrbitRow beyond = before, point = before;
-  beyond.p = before.p + dir * 10 * tol * (1 + std::abs(before.p));
+  beyond.p = before.p + dir * Tolerances::kBranchBeyondEdge * tol * (1 + std::abs(before.p));
   // Labelled by the switching counts of one period just beyond, from the
   // edge's state, where the system is valid there and the run ends well.
   if (problem.Opened()) {  // beyond the edge a contact opens: its normal force touches 0 there
@@ -137,6 +149,7 @@ OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double 
     return point;
   }
   point.label = SpecialKind::kSliding;
+  point.description = "the switching sequence changes (unclassified: the run beyond failed)";
   if (problem.Counts(&beyond)) ClassifySliding(problem, before, beyond, &point);
   if (StickSplits(problem, before, beyond)) {
     point.label = SpecialKind::kAdding;  // the slip that splits the stick is not short: a jump

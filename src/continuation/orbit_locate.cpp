@@ -129,8 +129,8 @@ namespace {
 Bracket AcrossEdge(OrbitProblem& problem, const Bracket& br, bool chord, double span,
                    const OrbitRow& b_row, const double range[2], double tol) {
   Bracket out = br, fine;
-  const double step =
-      std::max(std::abs(span) / 8, Tolerances::kBranchEdgeStep * (1 + std::abs(out.lo.p)));
+  const double step = std::max(std::abs(span) / Tolerances::kBranchEdgeSteps,
+                               Tolerances::kBranchEdgeStep * (1 + std::abs(out.lo.p)));
   bool found_edge = false, edge_only = false;
   for (const double sign : {1.0, -1.0}) {
     if (found_edge || edge_only) break;

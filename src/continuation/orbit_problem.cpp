@@ -96,8 +96,17 @@ const System* OrbitProblem::Switches(const OrbitRow& r, std::vector<FlowSwitch>*
   rq.t_max = r.start.t + r.period;
   rq.switches = out;
   out->clear();
-  const FlowRun run = shooting_.flow().Run(r.start, rq);
-  return run.ok() ? system_.get() : nullptr;
+  shooting_.flow().Run(StartOf(r), rq);  // a failed run keeps the switches before it
+  return system_.get();
+}
+
+// A row's section point as a start of the flow: on a time section its mode
+// is Filippov's at the state, as the shooting takes it (one stuck on the
+// surface there); an event section's point keeps its mode.
+FlowPoint OrbitProblem::StartOf(const OrbitRow& r) const {
+  FlowPoint z = r.start;
+  if (section_.kind == SectionKind::kTime) z.mode = ModeOf(*system_, z.z);
+  return z;
 }
 
 bool OrbitProblem::Settle(double p, const OrbitRow& r, int periods, FlowPoint* out) {
@@ -107,7 +116,7 @@ bool OrbitProblem::Settle(double p, const OrbitRow& r, int periods, FlowPoint* o
   shooting_.set_system(*system_);
   FlowRequest rq;
   rq.t_max = r.start.t + periods * SectionAt(r.start).time;
-  const FlowRun run = shooting_.flow().Run(r.start, rq);
+  const FlowRun run = shooting_.flow().Run(StartOf(r), rq);
   if (!run.ok()) return false;
   *out = r.start;
   const int nt = system_->tangent_dimension();
@@ -121,7 +130,7 @@ bool OrbitProblem::Counts(OrbitRow* r) {
   shooting_.set_system(*system_);
   FlowRequest rq;
   rq.t_max = r->start.t + r->period;
-  const FlowRun run = shooting_.flow().Run(r->start, rq);
+  const FlowRun run = shooting_.flow().Run(StartOf(*r), rq);
   if (!run.ok() || run.status == FlowStatus::kContactOpen) return false;
   r->sticks = run.sticks, r->exits = run.exits, r->crossings = run.crossings;
   return true;

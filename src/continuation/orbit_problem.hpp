@@ -38,13 +38,15 @@ class OrbitProblem final : public PalcProblem {
   /// The switching counts of one period of r.period from r.start at r.p
   /// into *r. False where the system is invalid there or the run fails.
   bool Counts(OrbitRow* r);
-  /// One period of row r's orbit with its switches recorded in *out; the
-  /// system at r.p (null where the run fails).
+  /// One period of row r's orbit with its switches recorded in *out (those
+  /// before a failure, where the run fails: at a sliding point the orbit
+  /// itself is degenerate); the system at r.p (null where it is invalid).
   const System* Switches(const OrbitRow& r, std::vector<FlowSwitch>* out);
   Shooting& shooting() { return shooting_; }
 
  private:
   FlowPoint PointAt(const Eigen::VectorXd& u) const;
+  FlowPoint StartOf(const OrbitRow& r) const;
   PoincareSection SectionAt(const FlowPoint& z) const;
   bool MapAt(double p, const FlowPoint& z, bool jacobian, Eigen::VectorXd* r, PeriodicOrbit* o,
              std::string* why);

@@ -52,10 +52,17 @@ double ShortestSlipBetweenSticks(const std::vector<FlowSwitch>& sw, double perio
   return best;
 }
 
-// The largest extent of the orbit's tangent components.
-double Width(const OrbitRow& r) {
+// The largest extent of the orbit's displacements (tangent components no
+// other one is the rate of: x, not x').
+double Width(const System& s, const OrbitRow& r) {
+  const int nt = std::min<int>(
+      {s.tangent_dimension(), static_cast<int>(r.lo.size()), static_cast<int>(r.hi.size())});
+  std::vector<bool> rate(nt, false);
+  for (int i = 0; i < nt; ++i)
+    if (const int j = s.DerivativeOf(i); j >= 0 && j < nt) rate[j] = true;
   double w = 0;
-  for (int i = 0; i < r.lo.size() && i < r.hi.size(); ++i) w = std::max(w, r.hi[i] - r.lo[i]);
+  for (int i = 0; i < nt; ++i)
+    if (!rate[i]) w = std::max(w, r.hi[i] - r.lo[i]);
   return w;
 }
 
@@ -79,13 +86,16 @@ void ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitR
                                           problem.shooting().options().flow.atol);
   std::vector<FlowSwitch> sb, sa;
   const System* s = problem.Switches(before, &sb);
-  const double near = s ? ArrivalToLimit(*s, sb) : kInf;
+  if (!s) return;  // unclassified: the system is invalid there
+  const double near = ArrivalToLimit(*s, sb);
+  const double width = Width(*s, before);
   s = problem.Switches(after, &sa);
-  const double far = s ? ArrivalToLimit(*s, sa) : kInf;
+  if (!s) return;
+  const double far = ArrivalToLimit(*s, sa);
   // A crossing is born or lost only where an arrival passes the static limit,
   // never by a tangency (outside the limit the surface is crossed
   // transversally: docs/theory.md, "Why no SW").
-  const bool at_limit = std::min(near, far) <= tol.BandEdge() * (1 + Width(before));
+  const bool at_limit = std::min(near, far) <= tol.BandEdge() * (1 + width);
   if ((ds != 0 && dc == -ds) || (dc != 0 && (at_limit || ds == 0))) {
     point->label = SpecialKind::kCrossing;
     point->description = std::string("crossing-sliding: ") + Crossing(ds, dc) + change;

@@ -40,6 +40,7 @@ ForcedLabel LabelOf(SpecialKind k) {
     case SpecialKind::kCrossing:
       return ForcedLabel::kCR;
     case SpecialKind::kSliding:
+    case SpecialKind::kContactLoss:  // no normal force that can reach 0 in the forced model
       return ForcedLabel::kSL;
     case SpecialKind::kHopf:
     case SpecialKind::kNone:
@@ -54,7 +55,8 @@ ForcedBranchRow RowOf(const OrbitRow& c, int m) {
   r.x0 = c.start.z[0], r.xdot0 = c.start.z[1];
   r.m = m;
   r.sticks = c.sticks, r.crossings = c.crossings;
-  r.extrema = Extrema{c.lo[0], c.hi[0], c.lo[1], c.hi[1]};
+  r.extrema = c.lo.size() >= 2 && c.hi.size() >= 2 ? Extrema{c.lo[0], c.hi[0], c.lo[1], c.hi[1]}
+                                                   : Extrema::Empty();
   r.multipliers[0] = c.multipliers[0], r.multipliers[1] = c.multipliers[1];
   r.stable = c.stable;
   r.label = LabelOf(c.label);

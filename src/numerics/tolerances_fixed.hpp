@@ -81,6 +81,12 @@ struct FixedTolerances {
   // Orbit branches: how far (in steps of a chord's eighth) the edge behind a
   // failed chord is searched for, either way.
   static constexpr int kBranchEdgeReach = 256;
+  // Orbit branches: the natural step behind a failed chord is this share of
+  // its parameter span.
+  static constexpr int kBranchEdgeSteps = 8;
+  // Orbit branches: an edge with no orbit beyond is classified from a run
+  // this many locate_tol (1 + |p|) past it.
+  static constexpr int kBranchBeyondEdge = 10;
   // Orbit branches: natural steps that confirm an orbit of one switching
   // sequence while its edge is bisected in p.
   static constexpr int kBranchConfirmSteps = 4;
@@ -96,6 +102,10 @@ struct FixedTolerances {
   // before switching that does not advance t is a failure (a stick entered
   // and left at once, a few contacts in turn; 8 as the forced flow had).
   static constexpr int kSwitchStalls = 8;
+
+  // Orbit branches: two runs' switches within this share of the period of
+  // each other are the same switch (an edge's orbit and a run just past it).
+  static constexpr double kBranchSwitchTime = 1e-6;
 
   // --- The flow's rounding windows (flow/engine.cpp) ---
   // A start in stick lies on its surface and within its band to this times

@@ -13,7 +13,9 @@
 //   NS  prod_{i<j} (mu_i mu_j - 1) changes sign with a complex pair on the
 //       unit circle there (the bialternate product's eigenvalues; a real pair
 //       with mu_i mu_j = 1 is a neutral saddle, none);
-//   SL  the orbit's sticks, exits or crossings per period change.
+//   GR, AD, CR, SL  the orbit's sticks or crossings per period change
+//       (special_kind.hpp: named from the switches on either side);
+//   CL  a contact's normal force reaches 0 on the orbit (the branch ends).
 // A step across which a multiplier moves far is halved first, so two
 // crossings in one step are both found. Where the corrector fails (a corner
 // of the branch sharper than a right angle, as at the belt's grazing, or a
@@ -42,7 +44,7 @@ struct OrbitBranchOptions {
   double locate_tol = 1e-12;  ///< special points: the bracket on the chord, relative
   /// Where the corrector fails (a corner sharper than a right angle, or a
   /// jump of the map): at most this many restarts from the orbit beyond,
-  /// found by natural steps in p, with the edge between located as SL.
+  /// found by natural steps in p, with the edge between located and named.
   int max_jumps = 50;
   /// Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
@@ -65,7 +67,7 @@ struct OrbitBranch {
   BranchStatus status = BranchStatus::kStartFailed;
   std::string message;
   std::vector<OrbitRow> rows;     ///< the special points among them, in order
-  std::vector<OrbitRow> special;  ///< LP, PD, NS and SL points, located
+  std::vector<OrbitRow> special;  ///< LP, PD, NS, GR, AD, CR, SL and CL points, located
   int jumps = 0;                  ///< restarts across corners and jumps
   int evaluations = 0;            ///< of the map with its Jacobian
   double seconds = 0;
