@@ -30,7 +30,8 @@ def main():
           f"{t.children_user + t.children_system:.1f} s), parent peak RSS "
           f"{resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MB")
     for v, f, q in zip(s["v"], s["fraction"], s["q0.5"]):
-        print(f"v = {v:.3f}  P(stick-slip) = {f:.3f}  median amplitude = {q:.4f}")
+        median = f"{q:.4f}" if f > 0 else "none (no stick-slip orbit)"
+        print(f"v = {v:.3f}  P(stick-slip) = {f:.3f}  median amplitude = {median}")
 
 if __name__ == "__main__":  # Dask starts its workers by re-importing this file
     main()
