@@ -93,13 +93,10 @@ bool Monitor::Special(const BranchPoint& a, const BranchPoint& b) {
 // The branch's ends at a row: unbounded (a displacement beyond
 // max_amplitude: a component no other one is the rate of), or back past its start.
 bool Monitor::Ends(const OrbitRow& row) {
-  const int nt = system_.tangent_dimension();
-  std::vector<bool> rate(nt, false);
-  for (int i = 0; i < nt; ++i)
-    if (const int j = system_.DerivativeOf(i); j >= 0 && j < nt) rate[j] = true;
+  const std::vector<bool> displacement = orbit_detail::Displacements(system_);
   double size = 0;
-  for (int i = 0; i < nt && i < row.lo.size(); ++i)
-    if (!rate[i]) size = std::max({size, std::abs(row.lo[i]), std::abs(row.hi[i])});
+  for (int i = 0; i < static_cast<int>(displacement.size()) && i < row.lo.size(); ++i)
+    if (displacement[i]) size = std::max({size, std::abs(row.lo[i]), std::abs(row.hi[i])});
   if (size > o_.max_amplitude) {
     out_.status = BranchStatus::kUnbounded;
     out_.message = "the orbit passed max_amplitude = " + Num(o_.max_amplitude);

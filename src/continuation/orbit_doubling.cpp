@@ -51,13 +51,6 @@ PoincareSection Doubled(const PoincareSection& s) {
   return d;
 }
 
-// The section at system s for the state z (a stroboscopic time follows the clock).
-PoincareSection At(const System& s, const PoincareSection& section, const VectorXd& z) {
-  if (section.kind == SectionKind::kTime && section.turns >= 1 && s.clocks() == 1)
-    return PoincareSection::Stroboscopic(s, z, section.turns);
-  return section;
-}
-
 }  // namespace
 
 OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint& pd,
@@ -80,7 +73,7 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
   if (options.palc.cancelled) shooting.flow().set_cancel(options.palc.cancelled);
   VectorXd r;
   PeriodicOrbit orbit;
-  if (!shooting.Map(pd, At(system, section, pd.z), true, &r, &orbit))
+  if (!shooting.Map(pd, orbit_detail::SectionFor(system, section, pd.z), true, &r, &orbit))
     return Failed("the PD orbit: " + orbit.message);
   VectorXd e;
   const double mu = FlipVector(orbit.monodromy, &e);
@@ -107,7 +100,8 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
   shooting.set_system(*q);
   FlowPoint zq = pd;
   zq.z.head(nu) = c.u.head(nu);
-  const bool mapped = shooting.Map(zq, At(*q, section, zq.z), false, &r, &orbit);
+  const bool mapped =
+      shooting.Map(zq, orbit_detail::SectionFor(*q, section, zq.z), false, &r, &orbit);
   if (!mapped || !(r.norm() > tol.DoubledSplit() * h))
     return Failed("the first doubled orbit fell back onto the single orbit at " +
                   system.ParameterName(parameter) + " = " + Num(c.u[nu], 12));

@@ -36,11 +36,22 @@ VectorXd OrbitProblem::Unknowns(const FlowPoint& z, double p) const {
   return u;
 }
 
+PoincareSection SectionFor(const System& s, const PoincareSection& section, const VectorXd& z) {
+  if (section.kind == SectionKind::kTime && section.turns >= 1 && s.clocks() == 1)
+    return PoincareSection::Stroboscopic(s, z, section.turns);
+  return section;
+}
+
+std::vector<bool> Displacements(const System& s) {
+  const int nt = s.tangent_dimension();
+  std::vector<bool> out(nt, true);
+  for (int i = 0; i < nt; ++i)
+    if (const int j = s.DerivativeOf(i); j >= 0 && j < nt) out[j] = false;
+  return out;
+}
+
 PoincareSection OrbitProblem::SectionAt(const FlowPoint& z) const {
-  // The stroboscopic time follows the clock's frequency (a parameter may set it).
-  if (section_.kind == SectionKind::kTime && section_.turns >= 1 && system_->clocks() == 1)
-    return PoincareSection::Stroboscopic(*system_, z.z, section_.turns);
-  return section_;
+  return SectionFor(*system_, section_, z.z);
 }
 
 std::string OrbitProblem::DomainError(const VectorXd& u) const {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "stickslip/continuation/orbit_branch.hpp"
 
@@ -62,6 +63,14 @@ class OrbitProblem final : public PalcProblem {
   Eigen::VectorXd last_u_, r_, rp_, rm_;
   bool opened_ = false;
 };
+
+/// The section at system s for the state z: a stroboscopic section's time
+/// follows the clock's frequency (a parameter may set it).
+PoincareSection SectionFor(const System& s, const PoincareSection& section,
+                           const Eigen::VectorXd& z);
+/// Which tangent components are displacements: none of the others is their
+/// rate (x, not x'; System::DerivativeOf).
+std::vector<bool> Displacements(const System& s);
 
 /// ContinueOrbits' checks: throws InvalidArgument on an invalid system,
 /// options, parameter index, guess or end `to`.

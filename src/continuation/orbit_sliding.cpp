@@ -55,14 +55,11 @@ double ShortestSlipBetweenSticks(const std::vector<FlowSwitch>& sw, double perio
 // The largest extent of the orbit's displacements (tangent components no
 // other one is the rate of: x, not x').
 double Width(const System& s, const OrbitRow& r) {
-  const int nt = std::min<int>(
-      {s.tangent_dimension(), static_cast<int>(r.lo.size()), static_cast<int>(r.hi.size())});
-  std::vector<bool> rate(nt, false);
-  for (int i = 0; i < nt; ++i)
-    if (const int j = s.DerivativeOf(i); j >= 0 && j < nt) rate[j] = true;
+  const std::vector<bool> displacement = Displacements(s);
   double w = 0;
-  for (int i = 0; i < nt; ++i)
-    if (!rate[i]) w = std::max(w, r.hi[i] - r.lo[i]);
+  for (int i = 0; i < static_cast<int>(displacement.size()) && i < r.lo.size() && i < r.hi.size();
+       ++i)
+    if (displacement[i]) w = std::max(w, r.hi[i] - r.lo[i]);
   return w;
 }
 

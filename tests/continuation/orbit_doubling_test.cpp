@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_reference.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/forced.hpp"
@@ -19,14 +20,8 @@
 namespace stickslip {
 namespace {
 
-ForcedParams Scene(double omega) {
-  ForcedParams p;
-  p.base.law = LawKind::kStribeck;
-  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
-  p.base.beta = 0.05, p.base.v = 0.25;
-  p.force = 0.3, p.omega = omega;
-  return p;
-}
+// studies/stribeck_forced.ini's scene (v 0.25, A 0.3) at Omega.
+ForcedParams Scene(double omega) { return forced_reference::StribeckBelt(0.25, 0.3, omega); }
 
 OrbitBranchOptions Options() {
   OrbitBranchOptions o;
