@@ -184,7 +184,8 @@ void BindForcedTypes(py::module_& m) {
       .value("max_points", ForcedBranchStatus::kMaxPoints)
       .value("closed", ForcedBranchStatus::kClosed)
       .value("cancelled", ForcedBranchStatus::kCancelled)
-      .value("left_range", ForcedBranchStatus::kLeftRange);
+      .value("left_range", ForcedBranchStatus::kLeftRange)
+      .value("contact_lost", ForcedBranchStatus::kContactLost);
   py::class_<ForcedParams>(m, "ForcedParams",
                            "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
                            "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")

@@ -122,6 +122,7 @@ class ForcedBranchStatus(enum.IntEnum):
     closed = 5
     cancelled = 6
     left_range = 7
+    contact_lost = 8
 
 LawLike = Union[str, Law]
 IntegratorLike = Union[str, Integrator, None]

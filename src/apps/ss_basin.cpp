@@ -13,6 +13,7 @@
 #include "cli/physical.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/study.hpp"
+#include "cli/system_choice.hpp"
 #include "stickslip/io/basin_report.hpp"
 
 namespace ss = stickslip;
@@ -126,6 +127,7 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_basin [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  cli::RefuseSystem(args, kProg);
   if (args.Number("force", 0) != 0)  // the forced oscillator's section (basin_forced.hpp)
     return cli::RunForcedBasin(args, kProg, cli::CommandLine(argc, argv));
   if (args.Given("omega"))

@@ -8,12 +8,13 @@
 
 #include "chart/chart_region_faces.hpp"
 #include "cli/about.hpp"
-#include "cli/chart_forced.hpp"
 #include "cli/app.hpp"
+#include "cli/chart_forced.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/study.hpp"
+#include "cli/system_choice.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/io/chart_report.hpp"
 #include "stickslip/io/report.hpp"
@@ -41,7 +42,8 @@ constexpr const char* kNotes =
     "Forced oscillator: --force A, --omega W, or an axis omega or force selects\n"
     "it; the axes are two of omega, force, v, beta (defaults omega [0.5, 2] x force\n"
     "[0.05, 1]). LP, PD, NS and GR curves (GR: where non-stop motion ends) are traced from\n"
-    "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default 40)\n"
+    "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default "
+    "40)\n"
     "classifies N x N cells by the attractor reached (period m and sticks, quasi-periodic,\n"
     "chaotic by the largest Lyapunov exponent; each row swept along --param). Outputs:\n"
     "curves.tsv, codim2.tsv (R1, R2, LPPD, SL, GG), response.tsv, forced_chart.gp and\n"
@@ -77,9 +79,8 @@ po::options_description AppOptions() {
 void PrintSummary(const ss::ChartResult& r, const ss::Plane& pl, const std::string& model,
                   const std::string& dir, const std::string& figure, bool plots_ok) {
   const std::string p1 = pl.p1.name(), p2 = pl.p2.name();
-  std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, p1.c_str(),
-              p2.c_str(), model.c_str(), static_cast<int>(r.curves.size()), r.points(),
-              r.seconds * 1e3);
+  std::printf("%s: %s x %s; %s\n%d curves, %d points in %.1f ms", kProg, p1.c_str(), p2.c_str(),
+              model.c_str(), static_cast<int>(r.curves.size()), r.points(), r.seconds * 1e3);
   if (!figure.empty())
     std::printf(" (%zu region polygons in %.1f ms)", r.faces.size(), r.face_seconds * 1e3);
   std::printf("\n");
@@ -114,7 +115,8 @@ ss::ParameterAxis Axis(const cli::Arguments& args, const char* key, const std::s
 ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   for (const char* key : {"seed_lines", "max_m"})  // the forced chart's only
     if (args.Given(key))
-      throw cli::UsageError(args.Source(key) + " applies to the forced chart only (--force, or "
+      throw cli::UsageError(args.Source(key) +
+                            " applies to the forced chart only (--force, or "
                             "an axis omega or force)");
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
@@ -165,7 +167,8 @@ std::string DescribeChart(const ss::Params& base, const ss::Plane& pl) {
   for (const ss::ParameterAxis& a : ss::ParameterAxes(base.law))
     if (a != pl.p1 && a != pl.p2) model += " " + a.name() + "=" + ss::FormatNumber(a.Get(base));
   return model + " " + pl.p1.name() + "=[" + ss::FormatNumber(pl.from1) + ", " +
-         ss::FormatNumber(pl.to1) + "] " + pl.p2.name() + "=[" + ss::FormatNumber(pl.from2) + ", " + ss::FormatNumber(pl.to2) + "]";
+         ss::FormatNumber(pl.to1) + "] " + pl.p2.name() + "=[" + ss::FormatNumber(pl.from2) + ", " +
+         ss::FormatNumber(pl.to2) + "]";
 }
 
 int Main(int argc, char** argv) {
@@ -176,6 +179,7 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_chart [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  cli::RefuseSystem(args, kProg);
   if (cli::ForcedChartRequested(args))
     return cli::RunForcedChart(args, kProg, cli::CommandLine(argc, argv));
   ss::Params base;
@@ -211,8 +215,8 @@ int Main(int argc, char** argv) {
   if (app.plots()) {
     app.out().Write("regions.tsv", text(ss::RegionsTable(r, pl, model)));
     app.out().Write("chart.gp", ss::ChartScript(r, pl, ss::ChartTitle(base, pl), format,
-                                                cli::FigureUnitsOf(cli::ScalesFromArguments(args), pl.p1,
-                                                                   pl.p2)));
+                                                cli::FigureUnitsOf(cli::ScalesFromArguments(args),
+                                                                   pl.p1, pl.p2)));
   }
   // Without plots, the older regions and figure do not belong to these curves.
   const std::vector<std::string> stale = app.plots()

@@ -19,7 +19,9 @@
 #include "cli/run_control.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/run_log.hpp"
+#include "cli/run_system.hpp"
 #include "cli/study.hpp"
+#include "cli/system_choice.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/basin/branch_disturbance.hpp"
 #include "stickslip/continuation/continuation.hpp"
@@ -227,11 +229,15 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
 int Main(int argc, char** argv) {
   po::options_description mine = cli::ForcingOptions();  // the forced oscillator
   mine.add(AppOptions());
+  mine.add(cli::SystemRunOptions());
   const po::options_description desc = cli::AppDescription(mine);
   const cli::Arguments args = cli::ParseArguments(argc, argv, desc, "continue");
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  if (cli::SystemRequested(args))  // chain, mode_coupling (docs/systems.md)
+    return cli::RunSystem(args, kProg, cli::CommandLine(argc, argv));
+  cli::RefuseSystem(args, kProg, {"start_at", "transient", "disturbance"});
   // A forced run's point restarts the forced oscillator (its files say so).
   // Without --restart, a forced run's --point is an orbit of its start list.
   std::optional<ss::LabelledPoint> restart;

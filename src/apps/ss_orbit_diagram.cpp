@@ -10,6 +10,7 @@
 #include "cli/app.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/study.hpp"
+#include "cli/system_choice.hpp"
 #include "stickslip/chaos/report.hpp"
 
 namespace ss = stickslip;
@@ -152,6 +153,7 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_orbit_diagram [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  cli::RefuseSystem(args, kProg);
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw cli::UsageError(args.Source(phys) +

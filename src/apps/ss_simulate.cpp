@@ -15,7 +15,9 @@
 #include "cli/run_control.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/simulate_forced.hpp"
+#include "cli/simulate_system.hpp"
 #include "cli/study.hpp"
+#include "cli/system_choice.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
@@ -54,6 +56,7 @@ po::options_description AppOptions() {
       "rows held and written at most, rows at switches (and section points) included, in "
       "[1, 1e7] (default 1e7); a run that needs more exits 2 and writes nothing");
   cli::AddSimulateForcedOptions(d);
+  cli::AddSimulateSystemOptions(d);
   cli::AddRunOptions(d, "plots/simulate",
                      "write the TSV files and the script, but do not run gnuplot");
   return d;
@@ -84,8 +87,8 @@ std::string PlotScript(const std::string& data, const std::string& figure, const
   s += "set output " + GnuplotString(figure) + "\n";
   // The stick set: x' = v, |x + 2 beta v| <= mu_s. Its header line is the
   // one `set datafile columnheaders` takes (else it takes the first end).
-  s += "$omega << EOD\nx\txdot\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) + "\n" +
-       ss::FormatNumber(mu_s - shift) + "\t" + ss::FormatNumber(v) + "\nEOD\n";
+  s += "$omega << EOD\nx\txdot\n" + ss::FormatNumber(-mu_s - shift) + "\t" + ss::FormatNumber(v) +
+       "\n" + ss::FormatNumber(mu_s - shift) + "\t" + ss::FormatNumber(v) + "\nEOD\n";
   s += "set multiplot layout 1,2 title " +
        ss::GnuplotQuoted(ss::FigureTitle(cli::DescribeModel(model.params()), {})) + "\n";
   s += "set xlabel " + ss::GnuplotQuoted("displacement x" + ux) + "\n";
@@ -189,9 +192,8 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   }
   if (too_many)  // bad input found late: nothing written
     throw cli::UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
-                          args.Source("dt") + " " + args.Text("dt", "0.01") + ": " +
-                          "more than " + args.Source("max_rows") + " = " +
-                          std::to_string(s.range.max_rows) +
+                          args.Source("dt") + " " + args.Text("dt", "0.01") + ": " + "more than " +
+                          args.Source("max_rows") + " = " + std::to_string(s.range.max_rows) +
                           " rows (rows at switches included) by t = " + ss::FormatNumber(last.t) +
                           "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
@@ -230,6 +232,9 @@ int Main(int argc, char** argv) {
                              "0.125 --out plots/traj"))
     return 0;
   const std::string command = cli::CommandLine(argc, argv);
+  if (cli::SystemRequested(args))  // chain, mode_coupling (docs/systems.md)
+    return cli::SimulateSystemApp(args, kProg, command);
+  cli::RefuseSystem(args, kProg, {"state"});
   const bool forced = cli::ForcedRequested(args);
   if (forced && args.Flag("orbits")) return cli::ForcedOrbitsApp(args, kProg, command);
   for (const char* name : {"orbits", "max_m"})

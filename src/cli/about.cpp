@@ -39,11 +39,16 @@ bool HelpOrVersion(std::ostream& os, const Arguments& args, const std::string& p
   return false;
 }
 
-Metadata RunMetadata(const std::string& prog, const std::string& command, const Params& p,
-                     const FlowOptions& flow, const std::string& continued) {
+Metadata ToolMetadata(const std::string& prog, const std::string& command) {
   Metadata m = {{"tool", prog + " " + Version()}};
   if (*GitCommit()) m.emplace_back("commit", GitCommit());
   m.emplace_back("command", command);
+  return m;
+}
+
+Metadata RunMetadata(const std::string& prog, const std::string& command, const Params& p,
+                     const FlowOptions& flow, const std::string& continued) {
+  Metadata m = ToolMetadata(prog, command);
   m.emplace_back("law", LawName(p.law));
   for (const auto& name : ParameterNames(p.law))
     m.emplace_back(name, name == continued ? "continued" : FormatNumber(GetParameter(p, name)));

@@ -33,9 +33,10 @@ bool HelpOrVersion(std::ostream& os, const Arguments& args, const std::string& p
                    const std::string& usage, const po::options_description& desc,
                    const std::string& notes = "");
 
-// tool ("ss_continue 0.1.0"), commit (if built from a checkout), command, law, every parameter of
-// the law (the continued one, if any, as "continued"), and the integrator:
-// integrator, rtol, atol, max_steps.
+// tool ("ss_continue 0.1.0"), commit (if built from a checkout), command.
+Metadata ToolMetadata(const std::string& prog, const std::string& command);
+// ToolMetadata, then law, every parameter of the law (the continued one, if
+// any, as "continued"), and the integrator: integrator, rtol, atol, max_steps.
 Metadata RunMetadata(const std::string& prog, const std::string& command, const Params& p,
                      const FlowOptions& flow, const std::string& continued = "");
 

@@ -28,10 +28,10 @@
 
 #include "cli/figure_layout.hpp"
 #include "cli/gnuplot.hpp"
-#include "stickslip/io/figure_style.hpp"
 #include "cli/output.hpp"
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
+#include "stickslip/io/figure_style.hpp"
 
 namespace stickslip::cli {
 

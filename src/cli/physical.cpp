@@ -39,7 +39,8 @@ FigureUnits FigureUnitsOf(const std::optional<Scales>& s, const std::optional<Pa
   u.si = true, u.length = s->L, u.time = s->t0;
   auto axis = [&](const std::optional<ParameterAxis>& p, FigureAxis* a) {
     if (!p) return;
-    if (const auto phys = AxisOf(p->name(), *s)) a->factor = 1 / phys->factor, a->label = phys->label;
+    if (const auto phys = AxisOf(p->name(), *s))
+      a->factor = 1 / phys->factor, a->label = phys->label;
   };
   axis(p1, &u.p1);
   axis(p2, &u.p2);

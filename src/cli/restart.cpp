@@ -46,8 +46,8 @@ ChartOptions::Seed ChartSeed(const Arguments& args, const LabelledPoint& lp, con
   s.p1 = pl.p1.Get(base);
   s.p2 = pl.p2.Get(base);
   if (!pl.Contains(s.p1, s.p2))
-    throw UsageError(args.Source("point") + " " + lp.label + ": (" + pl.p1.name() + ", " + pl.p2.name() +
-                     ") = (" + FormatNumber(s.p1) + ", " + FormatNumber(s.p2) +
+    throw UsageError(args.Source("point") + " " + lp.label + ": (" + pl.p1.name() + ", " +
+                     pl.p2.name() + ") = (" + FormatNumber(s.p1) + ", " + FormatNumber(s.p2) +
                      ") lies outside the chart's rectangle (--from --to --from2 --to2)");
   return s;
 }

@@ -91,6 +91,12 @@ class Arguments {
   bool Flag(const std::string& name) const;
   // The study file read, empty if none.
   const std::string& study() const { return study_; }
+  // The study file's [system] section: a built-in system's parameters by
+  // their own names (system_choice.hpp), with "file:line" each.
+  struct Setting {
+    std::string key, value, where;
+  };
+  const std::vector<Setting>& settings() const { return settings_; }
 
  private:
   friend Arguments ParseArguments(int, const char* const[], const po::options_description&,
@@ -100,6 +106,7 @@ class Arguments {
   po::variables_map vm_;
   std::map<std::string, std::string> origin_;  // study key -> "file:line"
   std::string study_;
+  std::vector<Setting> settings_;
 };
 
 // Parses argv against desc (exact long names only, no positional arguments),

@@ -224,6 +224,8 @@ void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, VectorXd u0, int
       if (std::isfinite(before.p)) {
         out->special.push_back(orbit_detail::EdgeWithoutOrbit(problem, before, pdir, o.locate_tol));
         out->rows.push_back(out->special.back());
+        if (out->special.back().label == SpecialKind::kContactLoss)
+          out->status = BranchStatus::kContactLost;
       }
       return;
     }  // else: the orbit goes on past the failure (natural steps); on from there

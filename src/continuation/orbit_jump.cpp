@@ -31,9 +31,13 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
   const OrbitRow ref = lo;
   OrbitRow orb, prev = lo;
   bool have_prev = false;
+  // The same orbit: its switching counts, and a period that does not jump
+  // (another orbit of the same counts nearby, as a chain's in-phase orbit
+  // beside its out-of-phase one, is not the branch's).
   auto good = [&](double p, const OrbitRow& from) {
     std::string w;
-    return OrbitAt(problem, from, p, &orb, &w) && SameStructure(orb, ref);
+    return OrbitAt(problem, from, p, &orb, &w) && SameStructure(orb, ref) &&
+           std::abs(orb.period - from.period) <= Tolerances::kBranchEdgePeriod * from.period;
   };
   for (int it = 0;
        it < Tolerances::kBranchBisectionCap && std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p));

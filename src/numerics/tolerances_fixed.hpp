@@ -106,6 +106,15 @@ struct FixedTolerances {
   // Orbit branches: two runs' switches within this share of the period of
   // each other are the same switch (an edge's orbit and a run just past it).
   static constexpr double kBranchSwitchTime = 1e-6;
+  // Orbit branches: in an edge's bisection, an orbit whose period differs by
+  // more than this share from the last one's is another orbit, not the edge's.
+  static constexpr double kBranchEdgePeriod = 0.2;
+  // Steady sliding (steady_branch.cpp): an eigenvalue with |Im| below this
+  // times (1 + |lambda|) is real, so its crossing of 0 is LP, not HB.
+  static constexpr double kSteadyRealPair = 1e-9;
+  // Settling (orbits/settle.cpp): two stick exits of one contact within this
+  // (max norm, relative to 1 + |z|) close a cycle; Newton then refines it.
+  static constexpr double kSettleRecur = 1e-4;
 
   // --- The flow's rounding windows (flow/engine.cpp) ---
   // A start in stick lies on its surface and within its band to this times

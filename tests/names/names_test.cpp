@@ -89,7 +89,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedOrbitStatus", ForcedOrbitStatus::kFlowFailed);
   Covers("ForcedScanStatus", ForcedScanStatus::kCancelled);
   Covers("ForcedAxis", ForcedAxis::kBeta);
-  Covers("ForcedBranchStatus", ForcedBranchStatus::kLeftRange);
+  Covers("ForcedBranchStatus", ForcedBranchStatus::kContactLost);
   Covers("ForcedLabel", ForcedLabel::kSL);
   Covers("ForcedSimulationStatus", ForcedSimulationStatus::kRowLimit);
   Covers("ForcedSection", ForcedSection::kExit);

@@ -15,6 +15,9 @@ enum class BranchStatus {
   kClosed,     ///< the branch came back to its start
   kCancelled,  ///< palc.cancelled() returned true (a signal, a time limit)
   kLeftRange,  ///< the branch turned back and passed p = from
+  /// A contact's normal force reached 0 (labelled CL): beyond, the contact
+  /// opens and the system is another one (issue 32).
+  kContactLost,
 };
 template <>
 struct EnumNames<BranchStatus> {
@@ -23,6 +26,7 @@ struct EnumNames<BranchStatus> {
       {BranchStatus::kStepTooSmall, "step-too-small"}, {BranchStatus::kStartFailed, "start-failed"},
       {BranchStatus::kMaxPoints, "max-points"},        {BranchStatus::kClosed, "closed"},
       {BranchStatus::kCancelled, "cancelled"},         {BranchStatus::kLeftRange, "left-range"},
+      {BranchStatus::kContactLost, "contact-lost"},
   };
 };
 

@@ -1,0 +1,43 @@
+// The stick-slip attractor a run settles on, for any autonomous system
+// (docs/theory.md, "Starting on the attractor"): the flow from a start runs
+// for a transient with its switches recorded; the last stick exit z_L and
+// the least r for which the r-th exit before it is of the same contact and
+// within kSettleRecur of z_L give the section StickExit(contact, r) and a
+// guess that Shooting::Find refines (the forced oscillator's "attractor
+// reached from rest", on an event section).
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "stickslip/orbits/shooting.hpp"
+
+namespace stickslip {
+
+struct SettleOptions {
+  ShootingOptions shooting;  ///< the run's flow and the refining Newton
+  double transient = 3000;   ///< the run's length (> 0)
+  int max_returns = 32;      ///< the longest recurrence looked for, in stick exits
+  std::function<bool()> cancelled;
+  std::string ValidationError() const;
+};
+
+struct SettledOrbit {
+  bool found = false;
+  std::string message;                      ///< why not, where not found
+  PoincareSection section;                  ///< StickExit(contact, returns)
+  PeriodicOrbit orbit;                      ///< Shooting::Find's result (found: ok)
+  FlowStatus run = FlowStatus::kTimeLimit;  ///< how the settling run ended
+  int stick_exits = 0;                      ///< in the settling run
+};
+
+/// The stick-slip orbit `system` settles on from `z0` (its mode Filippov's).
+/// Not found, with a message, where the run fails, has no recurring stick
+/// exit (steady sliding, a pure-slip motion, chaos, or not yet settled) or
+/// Newton fails. Throws InvalidArgument on invalid options, a state of the
+/// wrong size or not finite, or a system with a clock (whose orbits a
+/// stroboscopic section finds).
+SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
+                               const SettleOptions& options);
+
+}  // namespace stickslip

@@ -1,0 +1,134 @@
+// The built-in systems as a choice of the apps (system_choice.hpp).
+#include "cli/system_choice.hpp"
+
+#include <map>
+#include <sstream>
+
+#include "chain/chain.hpp"
+#include "mode_coupling/mode_coupling.hpp"
+#include "stickslip/io/report.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+constexpr long kMaxBlocks = 64;  // the chain's blocks: a bound on the state (2 per block)
+
+// The settings in order: the study's [system] lines, then --set's entries
+// (a later one of the same name wins).
+std::vector<Arguments::Setting> Settings(const Arguments& args) {
+  std::vector<Arguments::Setting> out = args.settings();
+  std::stringstream list(args.Text("set", ""));
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    const auto eq = item.find('=');
+    auto trim = [](std::string s) {
+      const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+      return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+    };
+    const std::string key = eq == std::string::npos ? "" : trim(item.substr(0, eq));
+    if (key.empty() || trim(item.substr(eq + 1)).empty())
+      throw UsageError(args.Source("set") + ": expected NAME=VALUE, got '" + trim(item) + "'");
+    out.push_back({key, trim(item.substr(eq + 1)), args.Source("set")});
+  }
+  return out;
+}
+
+std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const Params& law) {
+  if (choice == SystemChoice::kChain) {
+    const long n = args.Integer("blocks", 2);
+    if (n < 1 || n > kMaxBlocks)
+      throw UsageError(args.Source("blocks") + " = " + std::to_string(n) + ": must lie in [1, " +
+                       std::to_string(kMaxBlocks) + "]");
+    return std::make_unique<chain::Chain>(chain::Uniform(static_cast<int>(n), law, 0));
+  }
+  mode_coupling::CouplingParams c;
+  c.law = law;
+  return std::make_unique<mode_coupling::ModeCoupling>(c);
+}
+
+}  // namespace
+
+po::options_description SystemOptions() {
+  po::options_description d(
+      "System (docs/systems.md; default the belt, or the forced oscillator "
+      "with --force)");
+  d.add_options()("system", Value()->value_name("NAME"),
+                  "belt (default), chain (blocks on a belt, coupled by springs) or "
+                  "mode_coupling (a brake model of two modes): ss_continue and ss_simulate")(
+      "blocks", Value()->value_name("N"), "chain: the number of blocks, in [1, 64] (default 2)")(
+      "set", Value()->value_name("A=X,B=Y"),
+      "the system's parameters by their own names (a study file's [system] section; "
+      "ss_continue --system NAME --help lists them)");
+  return d;
+}
+
+SystemChoice SystemChoiceOf(const Arguments& args) {
+  SystemChoice c = SystemChoice::kBelt;
+  const std::string name = args.Text("system", "belt");
+  if (!FromName(name, &c))
+    throw UsageError(args.Source("system") + ": unknown system '" + name +
+                     "' (expected belt, chain or mode_coupling)");
+  return c;
+}
+
+void RefuseSystem(const Arguments& args, const std::string& prog,
+                  const std::vector<std::string>& also) {
+  if (SystemRequested(args))
+    throw UsageError(args.Source("system") + " = " + args.Text("system") + ": " + prog +
+                     " takes the belt and the forced oscillator only (ss_continue and "
+                     "ss_simulate take every system)");
+  std::vector<std::string> options = {"set", "blocks"};
+  options.insert(options.end(), also.begin(), also.end());
+  for (const std::string& o : options)
+    if (args.Given(o)) throw UsageError(args.Source(o) + " needs --system chain or mode_coupling");
+  if (!args.settings().empty())
+    throw UsageError(args.settings().front().where +
+                     ": a [system] section needs system = chain or mode_coupling");
+}
+
+std::unique_ptr<System> SystemFromArguments(const Arguments& args) {
+  const SystemChoice choice = SystemChoiceOf(args);
+  if (args.Given("blocks") && choice != SystemChoice::kChain)
+    throw UsageError(args.Source("blocks") + " needs --system chain");
+  for (const char* o : {"mass", "damping", "stiffness", "belt_speed", "force", "omega"})
+    if (args.Given(o))
+      throw UsageError(args.Source(o) + ": --system " + Name(choice) +
+                       " takes dimensionless inputs without forcing");
+  const Params law = UncheckedModelFromArguments(args);
+  std::unique_ptr<System> s;
+  try {
+    s = Build(choice, args, law);
+  } catch (const InvalidArgument& e) {
+    throw UsageError(std::string("--system ") + Name(choice) + ": " + e.what());
+  }
+  for (const char* o : {"beta", "v", "mu_s", "mu_k"})  // the model options the system names
+    if (args.Given(o) && s->ParameterIndex(o) >= 0)
+      s->SetParameterValue(s->ParameterIndex(o), args.Number(o, 0));
+  for (const Arguments::Setting& set : Settings(args)) {
+    const int j = s->ParameterIndex(set.key);
+    if (j < 0)
+      throw UsageError(set.where + ": '" + set.key + "' is no parameter of " + Name(choice) +
+                       " (its parameters: " + ParameterList(*s) + ")");
+    s->SetParameterValue(j, ParseNumber(set.value, set.where + " " + set.key));
+  }
+  if (const std::string e = s->ValidationError(); !e.empty())
+    throw UsageError(std::string("--system ") + Name(choice) + ": " + e);
+  return s;
+}
+
+std::string ParameterList(const System& s) {
+  std::string out;
+  for (int j = 0; j < s.parameters(); ++j) out += (j ? ", " : "") + s.ParameterName(j);
+  return out;
+}
+
+std::string DescribeSystem(const System& s, SystemChoice choice, int continued) {
+  std::string out = Name(choice);
+  for (int j = 0; j < s.parameters(); ++j)
+    out += (j ? " " : ": ") + s.ParameterName(j) + "=" +
+           (j == continued ? std::string("[continued]") : FormatNumber(s.ParameterValue(j)));
+  return out;
+}
+
+}  // namespace stickslip::cli

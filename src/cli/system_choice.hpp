@@ -1,0 +1,56 @@
+// The system an app runs (issue 31 item 8; docs/systems.md): the belt (and
+// the forced oscillator, with --force), or a built-in system with several
+// masses or contacts: a chain of blocks (systems/chain) or the mode-coupling
+// brake model (systems/mode_coupling).
+//   --system NAME        belt (default), chain, mode_coupling
+//   --blocks N           chain: the number of blocks (default 2)
+//   --set A=1,B=2        any of the system's parameters by its own name
+// A study file's [system] section holds the same `name = value` lines; --set
+// overrides them name by name. The law comes from --law and its coefficients
+// (ModelOptions); --beta, --v, --mu_s and --mu_k, where given, also set the
+// system's parameters of those names.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/study.hpp"
+#include "stickslip/names.hpp"
+#include "stickslip/system/system.hpp"
+
+namespace stickslip::cli {
+
+enum class SystemChoice { kBelt, kChain, kModeCoupling };
+
+po::options_description SystemOptions();
+// The --system given (kBelt by default); UsageError for an unknown name.
+SystemChoice SystemChoiceOf(const Arguments& args);
+// True for a system other than the belt and the forced oscillator.
+inline bool SystemRequested(const Arguments& args) {
+  return SystemChoiceOf(args) != SystemChoice::kBelt;
+}
+// The app takes only the belt and the forced oscillator: UsageError naming
+// --system where another is chosen (or --set, --blocks, `also`, [system] given).
+void RefuseSystem(const Arguments& args, const std::string& prog,
+                  const std::vector<std::string>& also = {});
+// The chosen system with every setting applied and validated; UsageError
+// naming the option or study line and the value otherwise.
+std::unique_ptr<System> SystemFromArguments(const Arguments& args);
+// "chain of 2 blocks: v = 0.25, kc = 1, ..." : the system and its parameters.
+std::string DescribeSystem(const System& s, SystemChoice choice, int continued);
+// The system's parameter names, ", "-separated.
+std::string ParameterList(const System& s);
+
+}  // namespace stickslip::cli
+
+namespace stickslip {
+template <>
+struct EnumNames<cli::SystemChoice> {
+  static constexpr NamedValue<cli::SystemChoice> kTable[] = {
+      {cli::SystemChoice::kBelt, "belt"},
+      {cli::SystemChoice::kChain, "chain"},
+      {cli::SystemChoice::kModeCoupling, "mode_coupling"},
+  };
+};
+}  // namespace stickslip

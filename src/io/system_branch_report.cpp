@@ -1,0 +1,119 @@
+// branch.tsv and special_points.tsv of a system's run (system_branch_report.hpp).
+#include "stickslip/io/system_branch_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "io/system_rows.hpp"
+#include "numerics/numbers.hpp"
+
+namespace stickslip {
+
+namespace io_detail {
+
+std::vector<SystemLine> SystemLines(const System& s, const SystemRun& run) {
+  std::vector<SystemLine> out;
+  for (const SteadyRow& r : run.steady.rows) {
+    SystemLine l;
+    l.p = r.p, l.kind = "equilibrium", l.lo = l.hi = l.z0 = r.state.z.head(s.tangent_dimension());
+    l.z0 = r.state.z;
+    l.max_real = r.state.max_real, l.stable = r.state.stable();
+    l.label = r.label, l.description = r.description;
+    out.push_back(std::move(l));
+  }
+  for (std::size_t b = 0; b < run.pieces.size(); ++b)
+    for (const OrbitRow& r : run.pieces[b].rows) {
+      SystemLine l;
+      l.branch = static_cast<int>(b) + 1, l.p = r.p;
+      l.kind = r.sticks > 0 ? "stick-slip" : "pure-slip";
+      l.sticks = r.sticks, l.exits = r.exits, l.crossings = r.crossings;
+      l.period = r.period, l.lo = r.lo, l.hi = r.hi, l.z0 = r.start.z;
+      l.multipliers = r.multipliers, l.stable = r.stable;
+      l.mult_max = 0;
+      for (const auto& m : r.multipliers) l.mult_max = std::max(l.mult_max, std::abs(m));
+      l.label = r.label, l.description = r.description;
+      out.push_back(std::move(l));
+    }
+  return out;
+}
+
+int Multipliers(const std::vector<SystemLine>& lines) {
+  std::size_t k = 0;
+  for (const SystemLine& l : lines) k = std::max(k, l.multipliers.size());
+  return static_cast<int>(k);
+}
+
+}  // namespace io_detail
+
+namespace {
+
+using io_detail::SystemLine;
+
+std::vector<std::string> Columns(const System& s, const SystemRun& run, int k) {
+  std::vector<std::string> c = {
+      "branch", s.ParameterName(run.parameter), "kind", "sticks", "exits", "crossings", "period"};
+  for (int i = 0; i < s.tangent_dimension(); ++i)
+    c.insert(c.end(), {StateColumn(s, i) + "_min", StateColumn(s, i) + "_max"});
+  for (int i = 0; i < s.dimension(); ++i) c.push_back(StateColumn(s, i) + "_0");
+  for (int j = 1; j <= k; ++j)
+    c.insert(c.end(), {"mult" + std::to_string(j) + "_re", "mult" + std::to_string(j) + "_im"});
+  c.insert(c.end(), {"mult_max", "max_real", "stable", "pt"});
+  return c;
+}
+
+std::vector<TsvTable::Cell> Cells(const SystemLine& l, int k, int pt) {
+  const bool eq = l.branch == 0;
+  std::vector<TsvTable::Cell> row = {
+      l.branch, l.p, l.kind, l.sticks, l.exits, l.crossings, eq ? kNan : l.period};
+  for (Eigen::Index i = 0; i < l.lo.size(); ++i) row.insert(row.end(), {l.lo[i], l.hi[i]});
+  for (Eigen::Index i = 0; i < l.z0.size(); ++i) row.emplace_back(l.z0[i]);
+  for (int j = 0; j < k; ++j) {
+    const bool has = j < static_cast<int>(l.multipliers.size());
+    row.insert(row.end(),
+               {has ? l.multipliers[j].real() : kNan, has ? l.multipliers[j].imag() : kNan});
+  }
+  row.insert(row.end(), {eq ? kNan : l.mult_max, eq ? l.max_real : kNan, l.stable ? 1 : 0, pt});
+  return row;
+}
+
+}  // namespace
+
+std::string StateColumn(const System& s, int i) {
+  std::string n = s.StateName(i);
+  std::string out;
+  for (char c : n) out += c == '\'' ? std::string("dot") : std::string(1, c);
+  return out;
+}
+
+TsvTable SystemBranchTable(const System& s, const SystemRun& run) {
+  const std::vector<SystemLine> lines = io_detail::SystemLines(s, run);
+  const int k = io_detail::Multipliers(lines);
+  TsvTable t(Columns(s, run, k));
+  int pt = 0;
+  for (const SystemLine& l : lines) t.AddRow(Cells(l, k, ++pt));
+  return t;
+}
+
+TsvTable SystemSpecialTable(const System& s, const SystemRun& run) {
+  const std::vector<SystemLine> lines = io_detail::SystemLines(s, run);
+  const int k = io_detail::Multipliers(lines);
+  std::vector<std::string> c = Columns(s, run, k);
+  c.insert(c.begin(), "label");
+  c.insert(c.end(), {"lab", "description"});
+  TsvTable t(c);
+  std::map<SpecialKind, int> count;
+  int pt = 0;
+  for (const SystemLine& l : lines) {
+    ++pt;
+    if (l.label == SpecialKind::kNone) continue;
+    std::vector<TsvTable::Cell> row = Cells(l, k, pt);
+    row.insert(row.begin(), Name(l.label));
+    row.emplace_back(std::string(Name(l.label)) + std::to_string(++count[l.label]));
+    row.emplace_back(l.description);
+    t.AddRow(row);
+  }
+  return t;
+}
+
+}  // namespace stickslip

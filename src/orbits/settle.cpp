@@ -1,0 +1,89 @@
+// The stick-slip attractor a run settles on (settle.hpp).
+#include "stickslip/orbits/settle.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip {
+
+namespace {
+
+// The least r (1..max) for which exit L - r is of L's contact and within
+// kSettleRecur of it; 0 if none. *closest: the smallest such distance seen.
+int Recurrence(const std::vector<const FlowSwitch*>& exits, int max, double* closest) {
+  const FlowSwitch& last = *exits.back();
+  const double scale = 1 + last.z.lpNorm<Eigen::Infinity>();
+  *closest = INFINITY;
+  const int n = static_cast<int>(exits.size());
+  for (int r = 1; r <= max && r < n; ++r) {
+    const FlowSwitch& e = *exits[n - 1 - r];
+    if (e.contact != last.contact) continue;
+    const double d = (e.z - last.z).lpNorm<Eigen::Infinity>() / scale;
+    *closest = std::min(*closest, d);
+    if (d <= Tolerances::kSettleRecur) return r;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::string SettleOptions::ValidationError() const {
+  if (!(transient > 0) || !std::isfinite(transient))
+    return "transient = " + Num(transient) + " must be a finite number > 0";
+  if (max_returns < 1) return IntRangeError("max_returns", max_returns, 1, 1 << 20);
+  return shooting.ValidationError();
+}
+
+SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
+                               const SettleOptions& options) {
+  std::string e = options.ValidationError();
+  if (e.empty() && system.clocks() > 0)
+    e = "the system has a clock: its orbits are found on a stroboscopic section";
+  if (e.empty() && (z0.size() != system.dimension() || !z0.allFinite()))
+    e = "the start must have " + std::to_string(system.dimension()) + " finite components";
+  if (!e.empty()) throw InvalidArgument(e);
+  SettledOrbit out;
+  Shooting shooting(system, options.shooting);
+  Flow& flow = shooting.flow();
+  if (options.cancelled) flow.set_cancel(options.cancelled);
+  std::vector<FlowSwitch> switches;
+  FlowRequest req;
+  req.t_max = options.transient;
+  req.max_steps = options.shooting.max_steps * 100;
+  req.switches = &switches;
+  const FlowRun run = flow.Run(FlowPoint{0, z0, ModeOf(system, z0)}, req);
+  out.run = run.status;
+  std::vector<const FlowSwitch*> exits;
+  for (const FlowSwitch& s : switches)
+    if (s.kind == SwitchKind::kStickOut) exits.push_back(&s);
+  out.stick_exits = static_cast<int>(exits.size());
+  if (run.status != FlowStatus::kTimeLimit) {
+    out.message = "the settling run ended " + std::string(Name(run.status)) +
+                  " at t = " + Num(run.end.t) + (run.message.empty() ? "" : ": " + run.message);
+    return out;
+  }
+  double closest = INFINITY;
+  const int r = exits.size() < 2 ? 0 : Recurrence(exits, options.max_returns, &closest);
+  if (r == 0) {
+    out.message = exits.empty() ? "no stick phase after t = " + Num(options.transient) +
+                                      " (steady sliding or a pure-slip motion)"
+                                : "no stick exit recurs within " +
+                                      std::to_string(options.max_returns) + " exits (closest " +
+                                      Num(closest, 3) + "): not settled, or not periodic";
+    return out;
+  }
+  const FlowSwitch& last = *exits.back();
+  out.section = PoincareSection::StickExit(last.contact, r);
+  out.orbit = shooting.Find(FlowPoint{0, last.z, last.after}, out.section);
+  out.found = out.orbit.ok();
+  if (!out.found)
+    out.message = "Newton from the settled stick exit failed (" +
+                  std::string(Name(out.orbit.status)) + "): " + out.orbit.message;
+  return out;
+}
+
+}  // namespace stickslip

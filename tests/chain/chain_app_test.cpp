@@ -1,0 +1,104 @@
+// ss_continue --system (docs/systems.md) through the app: the two-block chain
+// study (studies/chain2.ini) against closed forms, and every refusal of the
+// system options: exit 2, one line naming the option or study line and the
+// value, nothing written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "app_test_util.hpp"
+
+namespace {
+
+namespace tu = stickslip::testing_util;
+class SystemApp : public tu::AppTest {
+ protected:
+  // Runs ss_continue with args; expects exit 2, one line on stderr holding
+  // each of `parts`, and an untouched --out.
+  void ExpectRejected(const std::string& app, std::vector<std::string> args,
+                      const std::vector<std::string>& parts) {
+    const std::string dir = NewDir();
+    const auto r = RunOut(app, dir, args);
+    EXPECT_EQ(r.outcome.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const auto& part : parts) EXPECT_TRUE(tu::Contains(r.err, part)) << part;
+    EXPECT_FALSE(tu::Exists(dir + "/out")) << r.err;
+  }
+};
+
+const std::string kChain = STICKSLIP_SOURCE_DIR "/studies/chain2.ini";
+
+// Two identical blocks: steady sliding's eigenvalues are those of one block
+// for each mode of the stiffness matrix, with one damping, so its Hopf point
+// is the single block's 2 beta + mu'(v) = 0: with mu(s) = mu_s - k1 s + k3 s^3
+// (k1 = 0.45, k3 = 0.6 for the seed's mu_m, v_m), v = sqrt((k1 - 2 beta) / (3 k3)).
+// The orbit's blocks move half a period apart: each block's extremes are the
+// other's. Its stick phases end together at GR, where the branch ends.
+TEST_F(SystemApp, ChainStudyHopfIsTheSingleBlocksAndItsOrbitsAreSymmetric) {
+  const auto r = RunOut("ss_continue", dir_, {"--study", kChain});
+  ASSERT_EQ(r.outcome.code, 1) << r.err;  // the branch ends at GR: no orbit of its kind beyond
+  const tu::Tsv branch = tu::ReadTsv(tu::ReadFile(dir_ + "/out/branch.tsv"));
+  const tu::Tsv special = tu::ReadTsv(tu::ReadFile(dir_ + "/out/special_points.tsv"));
+  EXPECT_TRUE(tu::Contains(branch.meta.at("status"), "partial: branch 1 step-too-small"));
+  ASSERT_EQ(special.rows.size(), 2u);
+  const double hb = std::sqrt((0.45 - 0.1) / 1.8);
+  EXPECT_EQ(special.rows[0][special.Column("lab")], "HB1");
+  EXPECT_NEAR(std::stod(special.rows[0][special.Column("v")]), hb, 1e-12);
+  EXPECT_EQ(special.rows[1][special.Column("lab")], "GR1");
+  EXPECT_TRUE(tu::Contains(special.rows[1].back(), "sticks 2 -> 0"));
+  int rows = 0;
+  for (const auto& row : branch.rows) {
+    if (row[branch.Column("kind")] != "stick-slip") continue;
+    for (const char* c : {"_min", "_max", "dot_min", "dot_max"})
+      EXPECT_NEAR(std::stod(row[branch.Column(std::string("x1") + c)]),
+                  std::stod(row[branch.Column(std::string("x2") + c)]), 1e-9)
+          << row[branch.Column("v")] << " " << c;
+    EXPECT_EQ(row[branch.Column("sticks")], "2");
+    ++rows;
+  }
+  EXPECT_GT(rows, 100);
+}
+
+TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
+  const std::vector<std::string> run = {"--param", "v", "--to", "0.4"};
+  auto with = [&](std::vector<std::string> a) {
+    a.insert(a.end(), run.begin(), run.end());
+    return a;
+  };
+  ExpectRejected("ss_continue", with({"--system", "tower"}), {"--system", "tower"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kd=1"}),
+                 {"--set", "'kd' is no parameter of chain", "kc"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc"}),
+                 {"--set", "NAME=VALUE"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=x"}), {"kc", "x"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=-1"}), {"kc"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--blocks", "0"}), {"--blocks", "0"});
+  ExpectRejected("ss_continue", with({"--system", "mode_coupling", "--blocks", "3"}),
+                 {"--blocks", "--system chain"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--mass", "1"}), {"--mass"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--force", "0.1"}), {"--force"});
+  ExpectRejected("ss_continue", {"--system", "chain", "--param", "gamma", "--to", "1"},
+                 {"--param", "'gamma' is no parameter of chain"});
+  ExpectRejected("ss_continue", {"--system", "chain", "--param", "v"}, {"--to"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--start_at", "0.9"}),
+                 {"--start_at", "0.9"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--restart", "x"}), {"--restart"});
+  ExpectRejected("ss_continue", {"--set", "kc=1"}, {"--set", "--system chain"});
+  ExpectRejected("ss_continue", {"--start_at", "0.2"}, {"--start_at", "--system"});
+  ExpectRejected("ss_chart", {"--system", "chain"}, {"--system", "ss_chart"});
+  ExpectRejected("ss_basin", {"--system", "mode_coupling"}, {"--system", "ss_basin"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,3"}, {"--state", "4"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,x,4"}, {"--state", "x"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--x0", "1"}, {"--x0", "--state"});
+  ExpectRejected("ss_simulate", {"--state", "1,2"}, {"--state", "--system"});
+  // A [system] section without a system, and an unknown key in it.
+  const std::string study = dir_ + "/bad.ini";
+  tu::WriteFile(study, "law = cubic\n[system]\nkc = 1\n");
+  ExpectRejected("ss_continue", {"--study", study}, {"bad.ini:3", "[system]"});
+  tu::WriteFile(study, "system = chain\n[system]\nkq = 1\n[continue]\nparam = v\nto = 0.4\n");
+  ExpectRejected("ss_continue", {"--study", study}, {"bad.ini:3", "'kq' is no parameter"});
+}
+
+}  // namespace
