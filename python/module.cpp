@@ -189,4 +189,5 @@ PYBIND11_MODULE(_core, m) {
   BindOrbitBranch(m);
   BindSystems(m);
   BindSystemRuns(m);
+  BindSystemBranch(m);
 }

@@ -105,7 +105,8 @@ void BindRestart(py::module_& m);
 void BindBatch(py::module_& m);        // py_batch.cpp: orbits()
 void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
 void BindSystems(py::module_& m);      // py_systems.cpp: ChainParams, CouplingParams (issue 32)
-void BindSystemRuns(py::module_& m);   // py_system_runs.cpp: simulate_system, system_orbit, ...
+void BindSystemRuns(py::module_& m);
+void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle   // py_system_runs.cpp: simulate_system, system_orbit, ...
 
 // The System a Python parameter object stands for (Params, ForcedParams,
 // ChainParams, CouplingParams); InvalidArgument for anything else.
@@ -113,11 +114,12 @@ std::unique_ptr<System> SystemOf(const py::object& system);
 // The several-mass systems (py_systems.cpp): nullptr for another object.
 std::unique_ptr<System> SeveralMassSystemOf(const py::object& system);
 // The Poincare section named `name` ('stroboscopic', 'stick-exit',
-// 'xdot-falling') through z, closing after m returns (py_orbit_branch.cpp).
+// 'xdot-falling') through z, closing after m returns (py_orbit_branch.cpp);
+// a stick exit is that of `contact`.
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
-                          std::optional<int> turns);
+                          std::optional<int> turns, int contact = 0);
 // The start point on `section` at `state`: Filippov's mode, and on a stick
-// exit contact 0 in the slip it leaves into (the way lambda points).
+// exit its contact in the slip it leaves into (the way lambda points).
 FlowPoint SectionStart(const System& s, const PoincareSection& section,
                        const Eigen::VectorXd& state);
 

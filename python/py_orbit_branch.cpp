@@ -41,8 +41,11 @@ std::unique_ptr<System> SystemOf(const py::object& system) {
 }
 
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
-                          std::optional<int> turns) {
+                          std::optional<int> turns, int contact) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
+  if (contact < 0 || contact >= s.contacts() || (contact > 0 && name != "stick-exit"))
+    throw InvalidArgument("contact = " + std::to_string(contact) + ": a stick-exit section's, in [0, " +
+                          std::to_string(s.contacts() - 1) + "]");
   if (turns && (*turns < 1 || s.clocks() != 1 || name != "stick-exit"))
     throw InvalidArgument("turns = " + std::to_string(*turns) +
                           ": a forced system's stick-exit section only, >= 1");
@@ -52,7 +55,7 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
     return PoincareSection::Stroboscopic(s, z, m);
   }
   if (name == "stick-exit")  // m exits close the orbit; a clock turns `turns` (m) times
-    return PoincareSection::StickExit(0, m, s.clocks() ? turns.value_or(m) : 0);
+    return PoincareSection::StickExit(contact, m, s.clocks() ? turns.value_or(m) : 0);
   if (name == "xdot-falling") {
     if (s.clocks() != 0 || m != 1)
       throw InvalidArgument("section: 'xdot-falling' is the belt's (Params), once per period");
@@ -70,11 +73,13 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
 FlowPoint SectionStart(const System& s, const PoincareSection& sec, const Eigen::VectorXd& state) {
   FlowPoint guess{0, state, ModeOf(s, state)};
   if (sec.kind != SectionKind::kStickExit) return guess;
-  // Contact 0 leaves into the slip lambda points to; others at their limit leave with it.
+  // The section's contact leaves into the slip lambda points to; others at
+  // their limit leave with it.
+  const int c = sec.contact;
   guess.mode.set(
-      0, s.StickForce(ModeSet(Mode::kStick), 0, state) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
-  for (int i = 1; i < s.contacts(); ++i) {
-    if (!guess.mode.sticks(i)) continue;
+      c, s.StickForce(ModeSet(Mode::kStick), c, state) > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (i == c || !guess.mode.sticks(i)) continue;
     const double lambda = s.StickForce(guess.mode, i, state);
     if (std::abs(lambda) >= s.StaticLimit(i, state))
       guess.mode.set(i, lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove);
@@ -130,7 +135,7 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
                                const Eigen::VectorXd& state, double to, const std::string& section,
                                int m, std::optional<int> turns, double max_amplitude,
                                std::optional<double> max_step, std::optional<double> rtol,
-                               std::optional<double> atol) {
+                               std::optional<double> atol, int contact) {
   const std::unique_ptr<System> s = SystemOf(system);
   const int j = s->ParameterIndex(parameter);
   if (j < 0) throw InvalidArgument("parameter = '" + parameter + "' is no parameter of the system");
@@ -147,7 +152,7 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
     o.palc.ds_max = *max_step * width;  // a share of the range, as ss_continue's --max_step
     o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   }
-  const PoincareSection sec = SectionOf(*s, section, state, m, turns);
+  const PoincareSection sec = SectionOf(*s, section, state, m, turns, contact);
   const FlowPoint guess = SectionStart(*s, sec, state);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
@@ -194,13 +199,13 @@ void BindOrbitBranch(py::module_& m) {
   m.def("continue_orbits", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
         py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
         py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
-        py::arg("rtol") = none, py::arg("atol") = none,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
         "The branch of periodic orbits of `system` (Params: the belt; ForcedParams: the forced "
         "oscillator; ChainParams, CouplingParams: the several-mass systems) through the one near "
         "`state` (x, x'[, theta]) on `section` "
         "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit, after `turns` forcing "
         "periods (default m) on a forced system; 'xdot-falling': the "
-        "belt's x' = 0), continued in `parameter` from its value in `system` to `to`, with the "
+        "belt's x' = 0; `contact`: the stick-exit section's contact), continued in `parameter` from its value in `system` to `to`, with the "
         "LP, PD, NS and SL points located (the one branch driver, C++ ContinueOrbits).");
 }
 

@@ -130,14 +130,14 @@ PySystemTrajectory Simulate(const py::object& system, const Eigen::VectorXd& sta
 
 PySystemOrbit Orbit(const py::object& system, const Eigen::VectorXd& state,
                     const std::string& section, int m, std::optional<int> turns,
-                    std::optional<double> rtol, std::optional<double> atol) {
+                    std::optional<double> rtol, std::optional<double> atol, int contact) {
   const std::unique_ptr<System> s = SystemOf(system);
   const Eigen::VectorXd z0 = CheckedState(*s, state);
   ShootingOptions o;
   o.flow = Solver(o.flow, rtol, atol, py::none(), py::none());
   const std::string err = o.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
-  const PoincareSection sec = SectionOf(*s, section, z0, m, turns);
+  const PoincareSection sec = SectionOf(*s, section, z0, m, turns, contact);
   const FlowPoint guess = SectionStart(*s, sec, z0);
   Interrupt interrupt;
   PeriodicOrbit r;
@@ -230,7 +230,7 @@ void BindSystemRuns(py::module_& m) {
         "(C++ Flow). More than max_rows rows raise ValueError.");
   m.def("system_orbit", &Orbit, py::arg("system"), py::arg("state"),
         py::arg("section") = "stick-exit", py::arg("m") = 1, py::arg("turns") = none,
-        py::arg("rtol") = none, py::arg("atol") = none,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
         "The periodic orbit of any system through the one near `state` on `section` (as "
         "continue_orbits'), by the one shooting (C++ Shooting::Find), with its monodromy and "
         "multipliers. NumericalError where Newton fails.");

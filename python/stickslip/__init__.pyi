@@ -577,7 +577,8 @@ def continue_forced(params: ForcedParams, axis: ForcedAxis, from_: float, to: fl
 def continue_orbits(system: SystemLike, parameter: str, state: Any, to: float,
                     section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
                     max_amplitude: float = 1e3, max_step: Optional[float] = None,
-                    rtol: Optional[float] = None, atol: Optional[float] = None) -> OrbitBranch: ...
+                    rtol: Optional[float] = None, atol: Optional[float] = None,
+                    contact: int = 0) -> OrbitBranch: ...
 def continue_doubled(point: ForcedSpecialPoint, lo: Optional[float] = None,
                      hi: Optional[float] = None, max_amplitude: float = 1e3,
                      max_step: Optional[float] = None, rtol: Optional[float] = None,
@@ -757,5 +758,33 @@ def simulate_system(system: SystemLike, state: Any, t_end: float = 100.0, dt: fl
                     atol: Optional[float] = None) -> SystemTrajectory: ...
 def system_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m: int = 1,
                  turns: Optional[int] = None, rtol: Optional[float] = None,
-                 atol: Optional[float] = None) -> SystemOrbit: ...
+                 atol: Optional[float] = None, contact: int = 0) -> SystemOrbit: ...
 def steady_sliding(system: SystemLike) -> SteadyState: ...
+
+class SteadyBranch:
+    status: ForcedBranchStatus
+    message: str
+    parameter: str
+    p: Array
+    z: Array
+    max_real: Array
+    stable: Array
+    label: Array
+    special: List[Tuple[str, float, str]]
+
+class SettledOrbit:
+    found: bool
+    message: str
+    contact: int
+    returns: int
+    stick_exits: int
+    start: Array
+    period: float
+    multipliers: Array
+    stable: bool
+    sticks: int
+
+def steady_branch(system: SystemLike, parameter: str, to: float,
+                  points: int = 101) -> SteadyBranch: ...
+def settle(system: SystemLike, state: Any, transient: float = 3000.0, max_returns: int = 32,
+           rtol: Optional[float] = None, atol: Optional[float] = None) -> SettledOrbit: ...

@@ -131,6 +131,53 @@ class ChainRuns(unittest.TestCase):
             self.assertAlmostEqual(period, ref, delta=1e-9, msg="v = %r" % v)
 
 
+class SteadyBranchAndSettle(unittest.TestCase):
+    """steady_branch and settle, as ss_continue --system uses them."""
+
+    def brake(self, mu_k):
+        law = stickslip.Params("coulomb", mu_s=0.8, mu_k=mu_k)
+        return stickslip.CouplingParams(beta=0.02, k11=1.0, k22=1.5, k12=-0.3, gamma=1.0, v=0.5,
+                                        law=law)
+
+    def test_steady_branch_hopf_is_the_flutter_closed_form(self):
+        b = stickslip.steady_branch(self.brake(0.3), "mu_k", 0.7, points=21)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        self.assertEqual([lab for lab, _, _ in b.special], ["HB"])
+        self.assertAlmostEqual(b.special[0][1], self.brake(0.3).flutter_mu_k, delta=1e-13)
+        self.assertEqual(len(b.p), 22)  # the grid and the located point
+        self.assertEqual(list(b.label).count("HB"), 1)
+        self.assertTrue(np.all(b.stable == (b.max_real < 0)))
+        with self.assertRaises(ValueError):
+            stickslip.steady_branch(self.brake(0.3), "gamma2", 0.7)
+
+    def test_settled_orbit_closes_under_the_flow(self):
+        """The brake above mu_k*: the orbit settle refines returns to its start after one
+        period of a plain run at a tighter tolerance (no Newton)."""
+        s0 = self.brake(0.52)
+        z0 = np.array(stickslip.steady_sliding(s0).z) + [0.01, 0, 0, 0]
+        s = stickslip.settle(s0, z0)
+        self.assertTrue(s.found, s.message)
+        self.assertEqual((s.contact, s.returns, s.sticks), (0, 1, 1))
+        self.assertAlmostEqual(s.period, 5.701384424741, delta=1e-11)
+        run = stickslip.simulate_system(s0, s.start, t_end=s.period, dt=s.period, rtol=1e-13,
+                                        atol=1e-13)
+        np.testing.assert_allclose(run.z[-1], s.start, atol=1e-9)
+
+    def test_a_chain_settles_on_two_exits_and_its_branch_takes_that_section(self):
+        law = stickslip.Params("cubic", beta=0.05, v=0.3, mu_s=0.4, mu_m=0.25, v_m=0.5)
+        c = stickslip.ChainParams(2, law=law, kc=0.5)
+        s = stickslip.settle(c, np.array(stickslip.steady_sliding(c).z) + [0.01, 0, 0, 0])
+        self.assertTrue(s.found, s.message)
+        self.assertEqual(s.returns, 2)  # the blocks half a period apart: two exits per period
+        b = stickslip.continue_orbits(c, "v", s.start, 0.25, section="stick-exit", m=s.returns,
+                                      contact=s.contact, max_step=0.2)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        self.assertAlmostEqual(b.period[0], s.period, delta=1e-10)
+        with self.assertRaises(ValueError):
+            stickslip.system_orbit(c, s.start, contact=2)
+        self.assertFalse(stickslip.settle(c, [0.3, 0, 0.3, 0], transient=1.0).found)
+
+
 class ContactLoss(unittest.TestCase):
     def test_a_run_stops_where_the_normal_force_reaches_zero(self):
         m = stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.6))

@@ -11,6 +11,7 @@
 #include "numerics/numbers.hpp"
 #include "numerics/stall.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 
 namespace stickslip::flow_detail {
 
@@ -87,7 +88,6 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   r.opened = -1;
   r.t_stick = 0;
   r.switches = r.sticks = r.exits = r.crossings = r.touches = 0;
-  r.modes.assign(1, start.mode);
   const int ne = static_cast<int>(rq.extrema.size());
   r.lo.resize(ne);
   r.hi.resize(ne);
@@ -98,7 +98,8 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   r.orders = TaylorOrders();
   t_ = start.t;
   z_ = start.z;
-  mode_ = start.mode;
+  mode_ = ReleasedAtEdge(*s_, start.mode, start.z);  // an exit at t = 0 is taken now
+  r.modes.assign(1, mode_);
   M_.setIdentity(nt_, nt_);
   // Clocks as exact functions of t (their rate is their field's entry).
   const int clocks = n_ - nt_;

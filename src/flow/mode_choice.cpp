@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numerics/tolerances.hpp"
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/flow/switching.hpp"
 
@@ -109,5 +110,24 @@ ModeChoiceResult ModeChoiceOf(const System& s, const Eigen::VectorXd& z) {
 }
 
 ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) { return ModeChoiceOf(s, z).mode; }
+
+ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
+  const int n = s.dimension();
+  Eigen::VectorXd f(n), g(n), gl(n);
+  bool field = false;
+  const ModeSet held = m;  // every contact's edge judged in the start's own field
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (!held.sticks(i)) continue;
+    const double lambda = s.StickForce(held, i, z), limit = s.StaticLimit(i, z);
+    const double slack =
+        Tolerances::kEventRounding * (1 + std::abs(s.Contact(i).speed) + std::abs(limit));
+    if (std::abs(lambda) < limit - slack) continue;
+    if (!field) s.Field(held, z, f), field = true;
+    s.StickForceGradient(held, i, z, g);
+    s.StaticLimitGradient(i, z, gl);
+    if ((lambda > 0 ? 1 : -1) * g.dot(f) - gl.dot(f) > 0) m.set(i, Released(lambda));
+  }
+  return m;
+}
 
 }  // namespace stickslip

@@ -50,6 +50,13 @@ struct ModeChoiceResult {
 ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vector<int> on,
                                 ConstState z);
 
+/// Mode m at a start z, with every sticking contact that sits on its static
+/// limit (to kEventRounding) while the stick force moves out,
+/// d/dt (|lambda_i| - StaticLimit_i) > 0 in m's field, released the way
+/// lambda_i points: its exit lies at t = 0, where a root is no event
+/// (Filippov's rule at the band's edge; the flow applies it to every start).
+ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z);
+
 /// ModeOf with how the contacts on their surfaces were resolved.
 ModeChoiceResult ModeChoiceOf(const System& s, const Eigen::VectorXd& z);
 
