@@ -172,6 +172,10 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   std::string bad;
   auto observer = [&](const ss::Sample& x) {
     if (x.t == last.t && x.z == last.z && x.mode == last.mode) return;  // a repeated point
+    if (table.rows() >= static_cast<std::size_t>(s.range.max_rows)) {   // one more than allowed
+      too_many = true;
+      return;
+    }
     if (bad.empty()) bad = NonFinite(x);
     if (bad.empty() && scales)
       table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode), x.t * scales->t0, x.z[0] * scales->L,
@@ -179,7 +183,6 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
     else if (bad.empty())
       table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
     last = x;
-    too_many = too_many || table.rows() >= static_cast<std::size_t>(s.range.max_rows);
     run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.range.t_end, x.t, "time units");
   };
   ss::StopRule stop;

@@ -15,11 +15,15 @@ namespace stickslip::cli {
 
 namespace {
 
+// The rows of steady sliding are held: 1 / max_step + 1 of them at most.
+constexpr double kMinMaxStep = 1e-5;
+
 struct SystemSetup {
   std::unique_ptr<System> system;  // at --from
   SystemChoice choice = SystemChoice::kChain;
   int param = 0;
   double from = 0, to = 0, start_at = 0, max_step = 0.01, disturbance = 0.01;
+  double max_amplitude = OrbitBranchOptions().max_amplitude;
   FlowOptions flow;
   SettleOptions settle;
 };
@@ -56,12 +60,23 @@ SystemSetup Configure(const Arguments& args) {
     throw UsageError(args.Source("start_at") + " = " + FormatNumber(s.start_at) +
                      " must lie between --from and --to");
   s.max_step = args.Number("max_step", s.max_step);
-  if (!(s.max_step > 0 && s.max_step <= 1))
-    throw UsageError(args.Source("max_step") + " = " + FormatNumber(s.max_step) +
-                     " must lie in (0, 1]");
+  if (!(s.max_step >= kMinMaxStep && s.max_step <= 1))
+    throw UsageError(args.Source("max_step") + " = " + FormatNumber(s.max_step) + " must lie in [" +
+                     FormatNumber(kMinMaxStep) + ", 1] (1 / max_step rows of steady sliding)");
+  if (s.max_step * std::abs(s.to - s.from) < OrbitBranchOptions().palc.ds_min)
+    throw UsageError(
+        "--max_step x |--to - --from| = " + FormatNumber(s.max_step * std::abs(s.to - s.from)) +
+        " is below the branch's smallest step " + FormatNumber(OrbitBranchOptions().palc.ds_min) +
+        ": widen the range or raise --max_step");
+  s.max_amplitude = args.Number("max_amplitude", s.max_amplitude);
+  if (!(s.max_amplitude > 0))
+    throw UsageError(args.Source("max_amplitude") + " = " + FormatNumber(s.max_amplitude) +
+                     " must be > 0");
   s.flow = FlowOptionsFromArguments(args);
   s.settle.shooting.flow = s.flow;
   s.settle.transient = args.Number("transient", s.settle.transient);
+  // Each contact may stick once per period: the recurrence looks that far.
+  s.settle.max_returns = std::max(s.settle.max_returns, 2 * s.system->contacts());
   s.disturbance = args.Number("disturbance", s.disturbance);
   if (const std::string e = s.settle.ValidationError(); !e.empty())
     throw UsageError(args.Source("transient") + ": " + e);
@@ -80,6 +95,11 @@ SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
   return SettleOnStickSlip(*at, z0, o);
 }
 
+bool Complete(BranchStatus b) {
+  return b == BranchStatus::kReachedEnd || b == BranchStatus::kClosed ||
+         b == BranchStatus::kContactLost;
+}
+
 OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, RunControl& run) {
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, s.start_at);
@@ -88,12 +108,11 @@ OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, 
   o.palc.ds_max = s.max_step * std::abs(s.to - s.from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   o.palc.cancelled = [&run] { return run.Cancelled(); };
-  return ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
-}
-
-bool Complete(BranchStatus b) {
-  return b == BranchStatus::kReachedEnd || b == BranchStatus::kClosed ||
-         b == BranchStatus::kContactLost;
+  o.max_amplitude = s.max_amplitude;
+  OrbitBranch b = ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
+  if (run.Cancelled() && !Complete(b.status))  // the start's Newton says start-failed
+    b.status = BranchStatus::kCancelled, b.message = run.Reason();
+  return b;
 }
 
 }  // namespace
@@ -113,6 +132,11 @@ po::options_description SystemRunOptions() {
 
 namespace {
 
+// Why no orbit was found ("cancelled" where the run was).
+std::string NoOrbit(const SettledOrbit& settled) {
+  return settled.message.empty() ? std::string("cancelled") : settled.message;
+}
+
 // Why the run is cut short ("" if complete): the first piece that did not
 // end where it should, or a settling run that failed or was cancelled.
 std::string Partial(const SystemRun& r, const SettledOrbit& settled, RunControl& run) {
@@ -122,9 +146,14 @@ std::string Partial(const SystemRun& r, const SettledOrbit& settled, RunControl&
   if (!Complete(r.steady.status)) return cut("steady sliding", r.steady.status, r.steady.message);
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
     if (!Complete(r.pieces[i].status))
-      return cut("branch " + std::to_string(i + 1), r.pieces[i].status, r.pieces[i].message);
-  if (!settled.found && (run.Cancelled() || settled.run != FlowStatus::kTimeLimit))
-    return "no attractor: " + (run.Cancelled() ? run.Reason() : settled.message);
+      return cut("branch " + std::to_string(r.numbers[i]), r.pieces[i].status, r.pieces[i].message);
+  if (settled.found) return "";
+  if (run.Cancelled()) return "no attractor: " + run.Reason();
+  // Newton failed on a cycle that recurred, or the run failed: numerical
+  // failures. No stick phase, no recurrence, or a contact that opens: answers.
+  if (settled.recurred ||
+      (settled.run != FlowStatus::kTimeLimit && settled.run != FlowStatus::kContactOpen))
+    return "no attractor: " + settled.message;
   return "";
 }
 
@@ -139,12 +168,12 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
                {"orbit", settled.found ? "the attractor settled on from steady sliding + " +
                                              FormatNumber(s.disturbance) + " after " +
                                              FormatNumber(s.settle.transient) + " time units"
-                                       : "none: " + settled.message},
+                                       : "none: " + NoOrbit(settled)},
                {"rtol", FormatNumber(s.flow.rtol)},
                {"atol", FormatNumber(s.flow.atol)},
                {"steady_status", Name(r.steady.status)}});
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
-    meta.emplace_back("branch_" + std::to_string(i + 1) + "_status",
+    meta.emplace_back("branch_" + std::to_string(r.numbers[i]) + "_status",
                       std::string(Name(r.pieces[i].status)) +
                           (r.pieces[i].message.empty() ? "" : ": " + r.pieces[i].message));
   return meta;
@@ -156,9 +185,9 @@ void PrintSummary(const std::string& prog, const std::string& model, const Syste
             << FormatNumber(s.to) << "\nsteady sliding: " << r.steady.rows.size() << " rows, "
             << Name(r.steady.status) << "\n";
   if (!settled.found)
-    std::cerr << prog << ": note: no stick-slip orbit: " << settled.message << "\n";
+    std::cerr << prog << ": note: no stick-slip orbit: " << NoOrbit(settled) << "\n";
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
-    std::cout << "branch " << i + 1 << ": " << r.pieces[i].rows.size() << " rows, "
+    std::cout << "branch " << r.numbers[i] << ": " << r.pieces[i].rows.size() << " rows, "
               << Name(r.pieces[i].status) << "\n";
   auto point = [](SpecialKind k, double p, const std::string& what) {
     std::cout << "  " << Name(k) << " at " << FormatNumber(p) << ": " << what << "\n";
@@ -187,9 +216,11 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   run.Phase("settling");
   const SettledOrbit settled = run.Cancelled() ? SettledOrbit() : Settle(s, run);
   run.Phase("continuing");
-  if (settled.found) {
-    if (s.start_at != s.to) r.pieces.push_back(Piece(s, settled, s.to, run));
-    if (s.start_at != s.from) r.pieces.push_back(Piece(s, settled, s.from, run));
+  if (settled.found) {  // 1 toward --to, 2 back toward --from
+    if (s.start_at != s.to)
+      r.pieces.push_back(Piece(s, settled, s.to, run)), r.numbers.push_back(1);
+    if (s.start_at != s.from)
+      r.pieces.push_back(Piece(s, settled, s.from, run)), r.numbers.push_back(2);
   }
   const std::string partial = Partial(r, settled, run);
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);

@@ -30,18 +30,27 @@ Eigen::VectorXd StartState(const Arguments& args, const System& s) {
     z[0] += kDisturbance;
     return z;
   }
-  std::stringstream list(args.Text("state"));
-  std::string item;
+  const std::string text = args.Text("state");
+  std::size_t from = 0;
   int i = 0;
-  while (std::getline(list, item, ',')) {
-    if (i == s.dimension()) break;
-    z[i] = ParseNumber(item, args.Source("state") + " component " + std::to_string(i + 1));
-    ++i;
+  for (;; ++i) {  // every item: an empty one, or one too many, is refused
+    const std::size_t comma = text.find(',', from);
+    if (i == s.dimension())
+      throw UsageError(args.Source("state") + " = '" + text + "': expected " +
+                       std::to_string(s.dimension()) + " comma-separated numbers (" +
+                       StateColumn(s, 0) + ", ...)");
+    z[i] = ParseNumber(text.substr(from, comma - from),
+                       args.Source("state") + " component " + std::to_string(i + 1));
+    if (comma == std::string::npos) break;
+    from = comma + 1;
   }
-  if (i != s.dimension() || std::getline(list, item, ','))
-    throw UsageError(args.Source("state") + " = '" + args.Text("state") + "': expected " +
-                     std::to_string(s.dimension()) + " comma-separated numbers (" +
-                     StateColumn(s, 0) + ", ...)");
+  if (i + 1 != s.dimension())
+    throw UsageError(args.Source("state") + " = '" + text + "': " + std::to_string(i + 1) +
+                     " numbers, expected " + std::to_string(s.dimension()));
+  for (int c = 0; c < s.contacts(); ++c)
+    if (const auto n = s.NormalForce(c); n && !(n->At(z.data()) > 0))
+      throw UsageError(args.Source("state") + " = '" + text + "': contact " + std::to_string(c) +
+                       " is open there (normal force " + FormatNumber(n->At(z.data())) + " <= 0)");
   return z;
 }
 
@@ -79,7 +88,7 @@ void AddSimulateSystemOptions(po::options_description& d) {
 }
 
 int SimulateSystemApp(const Arguments& args, const std::string& prog, const std::string& command) {
-  for (const char* o : {"x0", "xdot0", "section", "orbits", "max_m"})
+  for (const char* o : {"x0", "xdot0", "section", "orbits", "max_m", "max_amplitude"})
     if (args.Given(o))
       throw UsageError(args.Source(o) +
                        " applies to the belt and the forced oscillator; give "
@@ -112,6 +121,10 @@ int SimulateSystemApp(const Arguments& args, const std::string& prog, const std:
   req.t_max = range.t_end;
   req.output_dt = range.dt;
   req.observer = [&](double t, const double* z, const ModeSet& m) {
+    if (table.rows() >= static_cast<std::size_t>(range.max_rows)) {  // one more than allowed
+      too_many = true;
+      return;
+    }
     std::vector<TsvTable::Cell> row = {t};
     for (int i = 0; i < s->dimension(); ++i) row.emplace_back(z[i]);
     for (int i = 0; i < s->dimension() && bad.empty(); ++i)
@@ -120,7 +133,6 @@ int SimulateSystemApp(const Arguments& args, const std::string& prog, const std:
     if (!bad.empty()) return;
     row.emplace_back(ModeSetName(m, s->contacts()));
     table.AddRow(row);
-    too_many = too_many || table.rows() >= static_cast<std::size_t>(range.max_rows);
     run.Progress("t = " + FormatNumber(t), t / range.t_end, t, "time units");
   };
   run.Phase("integrating");

@@ -1,6 +1,7 @@
 // The built-in systems as a choice of the apps (system_choice.hpp).
 #include "cli/system_choice.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -18,18 +19,27 @@ constexpr long kMaxBlocks = 64;  // the chain's blocks: a bound on the state (2 
 // (a later one of the same name wins).
 std::vector<Arguments::Setting> Settings(const Arguments& args) {
   std::vector<Arguments::Setting> out = args.settings();
-  std::stringstream list(args.Text("set", ""));
-  std::string item;
-  while (std::getline(list, item, ',')) {
+  if (!args.Given("set")) return out;
+  const std::string text = args.Text("set");
+  auto trim = [](const std::string& s) {
+    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+  };
+  std::vector<std::string> seen;
+  std::size_t from = 0;
+  for (;;) {  // every item, an empty one (",," or a trailing ",") included
+    const std::size_t comma = text.find(',', from);
+    const std::string item = text.substr(from, comma - from);
     const auto eq = item.find('=');
-    auto trim = [](std::string s) {
-      const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-      return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-    };
     const std::string key = eq == std::string::npos ? "" : trim(item.substr(0, eq));
     if (key.empty() || trim(item.substr(eq + 1)).empty())
       throw UsageError(args.Source("set") + ": expected NAME=VALUE, got '" + trim(item) + "'");
+    if (std::find(seen.begin(), seen.end(), key) != seen.end())
+      throw UsageError(args.Source("set") + ": '" + key + "' is set twice");
+    seen.push_back(key);
     out.push_back({key, trim(item.substr(eq + 1)), args.Source("set")});
+    if (comma == std::string::npos) break;
+    from = comma + 1;
   }
   return out;
 }
@@ -58,8 +68,8 @@ po::options_description SystemOptions() {
                   "mode_coupling (a brake model of two modes): ss_continue and ss_simulate")(
       "blocks", Value()->value_name("N"), "chain: the number of blocks, in [1, 64] (default 2)")(
       "set", Value()->value_name("A=X,B=Y"),
-      "the system's parameters by their own names (a study file's [system] section; "
-      "ss_continue --system NAME --help lists them)");
+      "the system's parameters by their own names, applied in order (a study file's [system] "
+      "section, then these; docs/systems.md lists them, and so does an unknown name's error)");
   return d;
 }
 
@@ -112,8 +122,15 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args) {
                        " (its parameters: " + ParameterList(*s) + ")");
     s->SetParameterValue(j, ParseNumber(set.value, set.where + " " + set.key));
   }
-  if (const std::string e = s->ValidationError(); !e.empty())
+  if (const std::string e = s->ValidationError(); !e.empty()) {
+    // Blamed on the last setting the message names, else on --system.
+    const std::vector<Arguments::Setting> all = Settings(args);
+    for (auto it = all.rbegin(); it != all.rend(); ++it)
+      if (e.find(it->key + " =") != std::string::npos ||
+          e.find(it->key + " must") != std::string::npos)
+        throw UsageError(it->where + " " + it->key + " = " + it->value + ": " + e);
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e);
+  }
   return s;
 }
 

@@ -23,20 +23,23 @@ int OpenContact(const System& s, const SteadyState& st, double* normal) {
   return -1;
 }
 
-// The point between rows a and b (max_real of opposite signs), bisected in p.
-SteadyRow Locate(System& s, int j, const SteadyRow& a, const SteadyRow& b,
-                 const SteadyBranchOptions& o) {
+// The point between rows a and b (max_real of opposite signs), bisected in p
+// (at least once: a point is never a copy of a row); false, with mid.p,
+// where a midpoint has no rest point.
+bool Locate(System& s, int j, const SteadyRow& a, const SteadyRow& b, const SteadyBranchOptions& o,
+            SteadyRow* out) {
   double lo = a.p, hi = b.p;
   const bool lo_negative = a.state.max_real < 0;
-  SteadyRow mid = a;
+  SteadyRow& mid = *out;
+  mid = a;
   for (int i = 0; i < Tolerances::kBranchBisectionCap; ++i) {
-    if (std::abs(hi - lo) <= o.locate_tol * (1 + std::abs(lo))) break;
-    if (o.cancelled && o.cancelled()) break;
     mid.p = 0.5 * (lo + hi);
     s.SetParameterValue(j, mid.p);
     mid.state = SteadySliding(s);
-    if (!mid.state.found) break;
+    if (!mid.state.found || mid.state.eigenvalues.empty()) return false;
     ((mid.state.max_real < 0) == lo_negative ? lo : hi) = mid.p;
+    if (std::abs(hi - lo) <= o.locate_tol * (1 + std::abs(lo))) break;
+    if (o.cancelled && o.cancelled()) break;
   }
   const std::complex<double> e = mid.state.eigenvalues.front();
   const bool pair = std::abs(e.imag()) > Tolerances::kSteadyRealPair * (1 + std::abs(e));
@@ -49,13 +52,13 @@ SteadyRow Locate(System& s, int j, const SteadyRow& a, const SteadyRow& b,
                  turn + " stability"
            : "a real eigenvalue crosses 0 (a fold or branch point of steady sliding); it " + turn +
                  " stability";
-  return mid;
+  return true;
 }
 
 }  // namespace
 
 std::string SteadyBranchOptions::ValidationError() const {
-  if (points < 2) return IntRangeError("points", points, 2, 1000000);
+  if (points < 2 || points > kMaxPoints) return IntRangeError("points", points, 2, kMaxPoints);
   if (!(locate_tol > 0) || !std::isfinite(locate_tol))
     return "locate_tol = " + Num(locate_tol) + " must be a finite number > 0";
   return "";
@@ -104,7 +107,13 @@ SteadyBranch ContinueSteadySliding(const System& system, int parameter, double t
       break;
     }
     if (!out.rows.empty() && (out.rows.back().state.max_real < 0) != (row.state.max_real < 0)) {
-      SteadyRow point = Locate(*s, parameter, out.rows.back(), row, options);
+      SteadyRow point;
+      if (!Locate(*s, parameter, out.rows.back(), row, options, &point)) {
+        out.status = BranchStatus::kStepTooSmall;
+        out.message = "no steady sliding at " + name + " = " + Num(point.p, 12) +
+                      ", between two rows where it exists";
+        break;
+      }
       if (options.cancelled && options.cancelled()) {  // not located: no point
         out.status = BranchStatus::kCancelled, out.message = "cancelled";
         break;

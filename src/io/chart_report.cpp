@@ -19,8 +19,8 @@ void Header(TsvTable& t, const ChartResult& r, const std::string& model) {
 }  // namespace
 
 TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string& model) {
-  TsvTable t({plane.p1.name(), plane.p2.name(), "curve", "id", "period", "amplitude", "multiplier", "l1", "type",
-              "unphysical"});
+  TsvTable t({plane.p1.name(), plane.p2.name(), "curve", "id", "period", "amplitude", "multiplier",
+              "l1", "type", "unphysical"});
   Header(t, r, model);
   for (size_t i = 0; i < r.curves.size(); ++i)
     t.AddComment("curve " + std::to_string(i + 1) + " " + CurveLabel(r.curves[i].kind) + ": " +

@@ -25,7 +25,7 @@ std::vector<SystemLine> SystemLines(const System& s, const SystemRun& run) {
   for (std::size_t b = 0; b < run.pieces.size(); ++b)
     for (const OrbitRow& r : run.pieces[b].rows) {
       SystemLine l;
-      l.branch = static_cast<int>(b) + 1, l.p = r.p;
+      l.branch = b < run.numbers.size() ? run.numbers[b] : static_cast<int>(b) + 1, l.p = r.p;
       l.kind = r.sticks > 0 ? "stick-slip" : "pure-slip";
       l.sticks = r.sticks, l.exits = r.exits, l.crossings = r.crossings;
       l.period = r.period, l.lo = r.lo, l.hi = r.hi, l.z0 = r.start.z;

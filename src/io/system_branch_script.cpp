@@ -60,18 +60,28 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
   const std::string p = s.ParameterName(run.parameter);
   const std::string x = StateColumn(s, 0);
   int specials = 0;
-  for (const SystemLine& l : lines) specials += l.label != SpecialKind::kNone;
+  bool orbits = false;  // without orbit rows: the first panel alone
+  for (const SystemLine& l : lines) {
+    specials += l.label != SpecialKind::kNone;
+    orbits = orbits || l.branch > 0;
+  }
   std::ostringstream os;
   os << "# The bifurcation figure of ss_continue --system: " << s.StateName(0)
      << "'s extremes, the period and the largest |multiplier| against " << p << ".\n"
-     << FigurePreamble(format, 1000, 1150) << "set output '" << FigureFile("bifurcation", format)
-     << "'\nc(name) = column(name)\n"
+     << FigurePreamble(format, 1000, orbits ? 1150 : 560) << "set output '"
+     << FigureFile("bifurcation", format) << "'\n";
+  if (lines.empty())  // nothing computed: an empty frame that says so
+    return os.str() + "set title " + GnuplotQuoted(EnhancedText(title)) +
+           "\nset xrange [0:1]\nset yrange [0:1]\nset label 1 'no rows' at graph 0.5, graph 0.5 "
+           "center\nplot NaN notitle\n";
+  os << "c(name) = column(name)\n"
      << "stats 'branch.tsv' using 1 nooutput\nN = STATS_records\narray P[N]\n"
      << "do for [i = 1:N] { P[i] = 0 }\n";
   if (specials > 0) os << "stats 'special_points.tsv' using (P[int(c('pt'))] = 1, 0) nooutput\n";
   os << "sel(b, k, s) = c('branch') == b && strcol('kind') eq k && "
         "(c('stable') == s || P[int(c('pt'))])\n"
-     << "set multiplot layout 3, 1 title " << GnuplotQuoted(EnhancedText(title)) << "\n"
+     << "set multiplot layout " << (orbits ? 3 : 1) << ", 1 title "
+     << GnuplotQuoted(EnhancedText(title)) << "\n"
      << "set xlabel " << GnuplotQuoted(EnhancedText(p)) << "\nset autoscale xfix\n"
      << "set ylabel " << GnuplotQuoted(EnhancedText(s.StateName(0) + " (min and max)")) << "\n"
      << "set offsets 0, 0, graph 0.12, graph 0.05\n";
@@ -85,12 +95,14 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
     os << ", \\\n  'special_points.tsv' using '" << p << "':(int($0) % 2 == " << k << " ? c('" << x
        << "_max') : 1/0):'lab' with labels offset 0, " << (k ? "-1.2" : "1.2")
        << " boxed font ',10' notitle";
-  os << "\nset key off\nset bmargin 3.5\nset offsets 0, 0, graph 0.05, graph 0.05\n"
-     << "set ylabel 'period'\n";
-  Panel(os, lines, p, {"period"}, false, true);
-  os << "\nset ylabel 'largest |Floquet multiplier|'\nset yrange [0:*]\n";
-  Panel(os, lines, p, {"mult_max"}, false, true);
-  os << ", \\\n  1 with lines ls " << kStyleThreshold << " notitle";  // stability's edge
+  if (orbits) {
+    os << "\nset key off\nset bmargin 3.5\nset offsets 0, 0, graph 0.05, graph 0.05\n"
+       << "set ylabel 'period'\n";
+    Panel(os, lines, p, {"period"}, false, true);
+    os << "\nset ylabel 'largest |Floquet multiplier|'\nset yrange [0:*]\n";
+    Panel(os, lines, p, {"mult_max"}, false, true);
+    os << ", \\\n  1 with lines ls " << kStyleThreshold << " notitle";  // stability's edge
+  }
   os << "\nunset multiplot\n";
   return os.str();
 }

@@ -115,6 +115,9 @@ struct FixedTolerances {
   // Settling (orbits/settle.cpp): two stick exits of one contact within this
   // (max norm, relative to 1 + |z|) close a cycle; Newton then refines it.
   static constexpr double kSettleRecur = 1e-4;
+  // Settling: the run goes in this many pieces, each keeping only the stick
+  // exits the recurrence needs (a bound on the switches held).
+  static constexpr int kSettleChunks = 64;
 
   // --- The flow's rounding windows (flow/engine.cpp) ---
   // A start in stick lies on its surface and within its band to this times

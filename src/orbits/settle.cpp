@@ -50,20 +50,34 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
   Shooting shooting(system, options.shooting);
   Flow& flow = shooting.flow();
   if (options.cancelled) flow.set_cancel(options.cancelled);
-  std::vector<FlowSwitch> switches;
+  // In kSettleChunks pieces, each keeping only the last max_returns + 1 stick
+  // exits: the switches held stay bounded by one piece's.
+  std::vector<FlowSwitch> switches, kept;
   FlowRequest req;
-  req.t_max = options.transient;
   req.max_steps = options.shooting.max_steps * 100;
   req.switches = &switches;
-  const FlowRun run = flow.Run(FlowPoint{0, z0, ModeOf(system, z0)}, req);
+  FlowRun run;
+  run.end = FlowPoint{0, z0, ModeOf(system, z0)};
+  for (int c = 1; c <= Tolerances::kSettleChunks; ++c) {
+    req.t_max = options.transient * c / Tolerances::kSettleChunks;
+    switches.clear();
+    const FlowPoint from = run.end;
+    flow.Run(from, req, &run);
+    for (const FlowSwitch& s : switches)
+      if (s.kind == SwitchKind::kStickOut) kept.push_back(s), ++out.stick_exits;
+    const std::size_t keep = static_cast<std::size_t>(options.max_returns) + 1;
+    if (kept.size() > keep) kept.erase(kept.begin(), kept.end() - keep);
+    if (run.status != FlowStatus::kTimeLimit) break;
+  }
   out.run = run.status;
   std::vector<const FlowSwitch*> exits;
-  for (const FlowSwitch& s : switches)
-    if (s.kind == SwitchKind::kStickOut) exits.push_back(&s);
-  out.stick_exits = static_cast<int>(exits.size());
+  for (const FlowSwitch& s : kept) exits.push_back(&s);
   if (run.status != FlowStatus::kTimeLimit) {
-    out.message = "the settling run ended " + std::string(Name(run.status)) +
-                  " at t = " + Num(run.end.t) + (run.message.empty() ? "" : ": " + run.message);
+    out.message = run.status == FlowStatus::kCancelled
+                      ? "cancelled"
+                      : "the settling run ended " + std::string(Name(run.status)) +
+                            " at t = " + Num(run.end.t) +
+                            (run.message.empty() ? "" : ": " + run.message);
     return out;
   }
   double closest = INFINITY;
@@ -77,6 +91,7 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
     return out;
   }
   const FlowSwitch& last = *exits.back();
+  out.recurred = true;
   out.section = PoincareSection::StickExit(last.contact, r);
   out.orbit = shooting.Find(FlowPoint{0, last.z, last.after}, out.section);
   out.found = out.orbit.ok();

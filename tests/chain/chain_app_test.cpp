@@ -73,7 +73,18 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc"}),
                  {"--set", "NAME=VALUE"});
   ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=x"}), {"kc", "x"});
-  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=-1"}), {"kc"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=-1"}),
+                 {"--set kc = -1", "must be >= 0"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=1,kc=2"}),
+                 {"--set", "'kc' is set twice"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--set", "kc=1,"}), {"--set", "''"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--max_step", "1e-8"}),
+                 {"--max_step", "1e-08"});
+  ExpectRejected("ss_continue",
+                 {"--system", "chain", "--param", "v", "--from", "0.3", "--to", "0.3000000001"},
+                 {"--max_step", "smallest step"});
+  ExpectRejected("ss_continue", with({"--system", "chain", "--max_amplitude", "0"}),
+                 {"--max_amplitude", "0"});
   ExpectRejected("ss_continue", with({"--system", "chain", "--blocks", "0"}), {"--blocks", "0"});
   ExpectRejected("ss_continue", with({"--system", "mode_coupling", "--blocks", "3"}),
                  {"--blocks", "--system chain"});
@@ -93,12 +104,47 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,x,4"}, {"--state", "x"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--x0", "1"}, {"--x0", "--state"});
   ExpectRejected("ss_simulate", {"--state", "1,2"}, {"--state", "--system"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,3,4,5"}, {"--state", "4"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,3,4,"}, {"--state", "4"});
+  ExpectRejected("ss_simulate", {"--system", "mode_coupling", "--state", "0.5,0,2,0"},
+                 {"--state", "contact 0 is open"});
   // A [system] section without a system, and an unknown key in it.
   const std::string study = dir_ + "/bad.ini";
   tu::WriteFile(study, "law = cubic\n[system]\nkc = 1\n");
   ExpectRejected("ss_continue", {"--study", study}, {"bad.ini:3", "[system]"});
   tu::WriteFile(study, "system = chain\n[system]\nkq = 1\n[continue]\nparam = v\nto = 0.4\n");
   ExpectRejected("ss_continue", {"--study", study}, {"bad.ini:3", "'kq' is no parameter"});
+}
+
+// Runs that end early end cleanly: a midpoint of the steady-sliding bisection
+// without a rest point ends it (step-too-small, exit 1; it was a segfault); a
+// run with no stick-slip attractor writes steady sliding and a one-panel
+// figure (exit 0; its script had an empty plot); exactly --max_rows rows fit.
+TEST_F(SystemApp, RunsThatEndEarlyEndCleanly) {
+  std::string dir = NewDir();
+  auto r = RunOut("ss_continue", dir,
+                  {"--system", "mode_coupling", "--law", "coulomb", "--mu_s", "0.8", "--mu_k",
+                   "0.3", "--set", "gamma=0,k12=-0.5,k22=1", "--param", "k11", "--from", "0",
+                   "--to", "1", "--max_step", "0.34"});
+  EXPECT_EQ(r.outcome.code, 1) << r.err;
+  EXPECT_TRUE(tu::Contains(r.err, "steady sliding step-too-small: no steady sliding at k11"));
+  dir = NewDir();
+  r = RunOut("ss_continue", dir,
+             {"--study", STICKSLIP_SOURCE_DIR "/studies/brake.ini", "--set", "beta=0.5"},
+             tu::HaveGnuplot());
+  EXPECT_EQ(r.outcome.code, tu::HaveGnuplot() ? 0 : 3) << r.err;
+  EXPECT_TRUE(tu::Contains(r.err, "note: no stick-slip orbit: no stick phase"));
+  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  EXPECT_EQ(b.meta.at("status"), "complete");
+  EXPECT_EQ(b.rows.size(), 21u);  // steady sliding only, stable throughout
+  if (tu::HaveGnuplot()) {
+    EXPECT_TRUE(tu::Exists(dir + "/out/bifurcation.png"));
+  }
+  dir = NewDir();
+  r = RunOut("ss_simulate", dir,
+             {"--system", "chain", "--max_rows", "101", "--t_end", "1", "--dt", "0.01"});
+  EXPECT_EQ(r.outcome.code, 0) << r.err;
+  EXPECT_EQ(tu::ReadTsv(tu::ReadFile(dir + "/out/trajectory.tsv")).rows.size(), 101u);
 }
 
 }  // namespace

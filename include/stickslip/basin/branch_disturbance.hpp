@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/io/branch_report.hpp"
 #include "stickslip/continuation/continuation.hpp"
+#include "stickslip/io/branch_report.hpp"
 
 namespace stickslip {
 

@@ -28,8 +28,8 @@ constexpr double kMinRelativeWidth = 1e-6;
 
 struct Plane {
   ParameterAxis p1 = Parameter::kV, p2 = Parameter::kBeta;  // the axes (of the law's parameters)
-  double from1 = 0.05, to1 = 0.6;     // p1 range, from1 < to1
-  double from2 = 0.0, to2 = 0.25;     // p2 range, from2 < to2
+  double from1 = 0.05, to1 = 0.6;                           // p1 range, from1 < to1
+  double from2 = 0.0, to2 = 0.25;                           // p2 range, from2 < to2
 
   // Empty if valid for `base`, else one line naming the violated constraint:
   // inapplicable axis, equal axes, non-finite, empty or inverted

@@ -23,7 +23,8 @@ namespace stickslip {
 
 /// Settings of ContinueSteadySliding, validated once.
 struct SteadyBranchOptions {
-  int points = 101;                 ///< grid rows from `from` to `to`, both ends included (>= 2)
+  static constexpr int kMaxPoints = 1000000;  ///< the rows' memory bound
+  int points = 101;  ///< grid rows from `from` to `to`, both ends included, in [2, kMaxPoints]
   double locate_tol = 1e-14;        ///< special points: the bracket, relative to 1 + |p|
   std::function<bool()> cancelled;  ///< polled between rows and bisection steps
   /// Empty if valid, else one line naming the offending value.

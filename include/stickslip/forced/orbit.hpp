@@ -47,7 +47,7 @@ struct ForcedOrbit {
   std::complex<double> multipliers[2];  ///< |first| >= |second|
   bool stable = false;                  ///< every |multiplier| < 1
   int sticks = 0, crossings = 0;        ///< per period of the orbit
-  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
+  Extrema extrema = Extrema::Empty();   ///< running extremes of x and x'
   int iterations = 0;
   double update = 0;  ///< the last Newton update (max norm)
   long steps = 0;     ///< flow steps of the last evaluation

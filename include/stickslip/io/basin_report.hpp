@@ -4,13 +4,12 @@
 // (WriteFileAtomically in report.hpp).
 #pragma once
 
-#include "stickslip/io/figure_style.hpp"
-
 #include <string>
 #include <vector>
 
 #include "stickslip/basin/basin.hpp"
 #include "stickslip/io/basin_stability_report.hpp"
+#include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip {

@@ -3,11 +3,10 @@
 // (WriteFileAtomically in report.hpp).
 #pragma once
 
-#include "stickslip/io/figure_style.hpp"
-
 #include <string>
 
 #include "stickslip/chart/chart.hpp"
+#include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip {

@@ -20,7 +20,8 @@ namespace stickslip {
 struct SystemRun {
   int parameter = 0;
   SteadyBranch steady;
-  std::vector<OrbitBranch> pieces;  ///< branch 1, 2, ... (toward to, then back toward from)
+  std::vector<OrbitBranch> pieces;  ///< toward to, then back toward from
+  std::vector<int> numbers;         ///< each piece's branch number (default 1, 2, ...)
 };
 
 /// A column name for state component i: StateName with ' as "dot".

@@ -3,10 +3,10 @@
 // pure-slip orbit, found as fixed points of the return map P of the section
 // x' = 0 scanned over every amplitude a = x - xbar from steady sliding up to
 // the amplitude whose trajectory first reaches the stick band. Inside a
-// bistable band (subcritical Hopf, docs/theory.md, "Steady sliding and the Hopf point") the unstable
-// pure-slip orbit lies between steady sliding and the stick-slip orbit.
-// Where the energy bound excludes every orbit (Model::NoPeriodicOrbit) the scan
-// integrates nothing and lists steady sliding alone.
+// bistable band (subcritical Hopf, docs/theory.md, "Steady sliding and the Hopf point") the
+// unstable pure-slip orbit lies between steady sliding and the stick-slip orbit. Where the energy
+// bound excludes every orbit (Model::NoPeriodicOrbit) the scan integrates nothing and lists steady
+// sliding alone.
 #pragma once
 
 #include <functional>
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/orbits/orbit.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/orbits/orbit.hpp"
 
 namespace stickslip {
 

@@ -28,10 +28,13 @@ struct SettledOrbit {
   PoincareSection section;                  ///< StickExit(contact, returns)
   PeriodicOrbit orbit;                      ///< Shooting::Find's result (found: ok)
   FlowStatus run = FlowStatus::kTimeLimit;  ///< how the settling run ended
-  int stick_exits = 0;                      ///< in the settling run
+  bool recurred = false;  ///< a stick exit recurred (then not found: Newton failed)
+  int stick_exits = 0;    ///< in the settling run
 };
 
 /// The stick-slip orbit `system` settles on from `z0` (its mode Filippov's).
+/// The run goes in kSettleChunks pieces and keeps the last max_returns + 1
+/// stick exits only, so its memory is bounded by one piece's switches.
 /// Not found, with a message, where the run fails, has no recurring stick
 /// exit (steady sliding, a pure-slip motion, chaos, or not yet settled) or
 /// Newton fails. Throws InvalidArgument on invalid options, a state of the
