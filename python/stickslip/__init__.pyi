@@ -73,7 +73,8 @@ class SpecialKind(enum.IntEnum):
     adding = 6
     crossing = 7
     contact_loss = 8
-    none = 9
+    branch_point = 9
+    none = 10
 class ContinuationStatus(enum.IntEnum):
     ok = 0
     failed = 1
