@@ -72,7 +72,7 @@ void BindEnums(py::module_& m) {
       .value("equilibrium", PointKind::kEquilibrium, "steady sliding");
   Enum<SpecialKind>(
       m, "SpecialKind",
-      "Special point of a branch (label GR, HB, LP, PD, NS, SL, AD, CR, CL, BP; none: a plain row).",
+      "Special point of a branch (label GR, HB, LP, PD, NS, SL, AD, CR, CL; none: a plain row).",
       &SpecialLabel)
       .value("grazing", SpecialKind::kGrazing, "GR: the stick phase shrinks to zero")
       .value("hopf", SpecialKind::kHopf, "HB: 2 beta + mu'(v) = 0")
@@ -83,8 +83,6 @@ void BindEnums(py::module_& m) {
       .value("adding", SpecialKind::kAdding, "AD: a stick phase splits, or two merge")
       .value("crossing", SpecialKind::kCrossing, "CR: a crossing reaches the static limit")
       .value("contact_loss", SpecialKind::kContactLoss, "CL: a normal force reaches 0")
-      .value("branch_point", SpecialKind::kBranchPoint,
-             "BP: a multiplier at +1 where the branch goes on (a pitchfork)")
       .value("none", SpecialKind::kNone, "a plain row");
   Enum<ContinuationStatus>(m, "ContinuationStatus", "How a continuation ended.",
                            &ContinuationStatusName)

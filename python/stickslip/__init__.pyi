@@ -73,8 +73,7 @@ class SpecialKind(enum.IntEnum):
     adding = 6
     crossing = 7
     contact_loss = 8
-    branch_point = 9
-    none = 10
+    none = 9
 class ContinuationStatus(enum.IntEnum):
     ok = 0
     failed = 1

@@ -104,14 +104,6 @@ void TestPoints(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const B
     if (i == 2 && !TorusPair(br.mid, Tolerances::kBranchTorusPair)) continue;
     br.mid.label = kKinds[i];
     br.mid.description = kWhat[i];
-    // A multiplier at +1 where p goes on past the point (the rows before and
-    // after it lie on either side of it in p) is no fold: a branch point.
-    if (i == 0 && (a.row.p - br.mid.p) * (b.row.p - br.mid.p) < 0) {
-      br.mid.label = SpecialKind::kBranchPoint;
-      br.mid.description =
-          "branch point: a multiplier at +1 where the branch goes on in the parameter (a "
-          "pitchfork or transcritical point: another branch of orbits meets it here)";
-    }
     found->push_back(br.mid);
   }
 }

@@ -28,7 +28,6 @@ OrbitBranchOptions CoreOptions(const ForcedBranchOptions& o) {
 ForcedLabel LabelOf(SpecialKind k) {
   switch (k) {
     case SpecialKind::kFold:
-    case SpecialKind::kBranchPoint:  // ForcedLabel has no BP: written LP
       return ForcedLabel::kLP;
     case SpecialKind::kPeriodDoubling:
       return ForcedLabel::kPD;

@@ -147,37 +147,4 @@ TEST_F(SystemApp, RunsThatEndEarlyEndCleanly) {
   EXPECT_EQ(tu::ReadTsv(tu::ReadFile(dir + "/out/trajectory.tsv")).rows.size(), 101u);
 }
 
-// Two identical blocks from v = 0.1 settle on an orbit where the blocks move
-// differently; it meets the symmetric orbit (x1 and x2 with one range) at a
-// pitchfork, where a multiplier is +1 but the branch goes on in v: BP, not LP.
-TEST_F(SystemApp, ThePitchforkOfTwoIdenticalBlocksIsABranchPoint) {
-  const auto r = RunOut(
-      "ss_continue", dir_,
-      {"--system", "chain", "--set", "kc=0.5", "--param", "v", "--from", "0.1", "--to", "0.5"});
-  const tu::Tsv special = tu::ReadTsv(tu::ReadFile(dir_ + "/out/special_points.tsv"));
-  const tu::Tsv branch = tu::ReadTsv(tu::ReadFile(dir_ + "/out/branch.tsv"));
-  auto at = [](const tu::Tsv& t, const std::vector<std::string>& row, const char* c) {
-    return std::stod(row[t.Column(c)]);
-  };
-  int bps = 0;
-  for (const auto& row : special.rows) {
-    EXPECT_NE(row[0], "LP") << r.err;
-    if (row[0] != "BP") continue;
-    ++bps;
-    EXPECT_NEAR(at(special, row, "mult_max"), 1, 1e-6);
-    EXPECT_LT(std::abs(at(special, row, "x1_max") - at(special, row, "x2_max")), 1e-5);
-    // The rows on either side lie on either side in v.
-    const int pt = static_cast<int>(at(special, row, "pt"));
-    const double v = at(special, row, "v");
-    EXPECT_LT(at(branch, branch.rows[pt - 2], "v"), v);
-    EXPECT_GT(at(branch, branch.rows[pt], "v"), v);
-  }
-  EXPECT_EQ(bps, 1) << r.err;
-  int row1 = 0;  // branch 1's first row, at v = 0.1
-  while (branch.rows[row1][0] != "1") ++row1;
-  EXPECT_GT(
-      std::abs(at(branch, branch.rows[row1], "x1_max") - at(branch, branch.rows[row1], "x2_max")),
-      1e-2);  // asymmetric at v = 0.1
-}
-
 }  // namespace

@@ -8,8 +8,7 @@
 // index). dF/du = DP - I from the variational equations and saltations;
 // dF/dp by central differences of two plain runs. Special points between two
 // rows, located on the branch by bisection (Kuznetsov 2004, ch. 10):
-//   LP  prod (mu_i - 1) changes sign where the branch turns back in p;
-//   BP  the same where it goes on in p (a pitchfork: another branch meets it);
+//   LP  prod (mu_i - 1) changes sign;
 //   PD  prod (mu_i + 1) changes sign;
 //   NS  prod_{i<j} (mu_i mu_j - 1) changes sign with a complex pair on the
 //       unit circle there (the bialternate product's eigenvalues; a real pair

@@ -5,9 +5,6 @@
 //       vanishes (the belt's exit point reaches x' = v);
 //   HB  Hopf point of steady sliding;
 //   LP  fold: a Floquet multiplier at +1 (the branch turns back);
-//   BP  branch point: a multiplier at +1 where the branch goes on in the
-//       parameter (a pitchfork or transcritical point: another branch meets
-//       it there, as a symmetric system's symmetric orbit);
 //   PD  period doubling: a multiplier at -1;
 //   NS  Neimark-Sacker: a complex pair on the unit circle;
 //   AD  adding-sliding: a stick phase splits around a short slip, or two
@@ -35,7 +32,6 @@ enum class SpecialKind {
   kAdding,
   kCrossing,
   kContactLoss,
-  kBranchPoint,
   kNone
 };
 template <>
@@ -45,11 +41,10 @@ struct EnumNames<SpecialKind> {
       {SpecialKind::kFold, "LP"},        {SpecialKind::kPeriodDoubling, "PD"},
       {SpecialKind::kTorus, "NS"},       {SpecialKind::kSliding, "SL"},
       {SpecialKind::kAdding, "AD"},      {SpecialKind::kCrossing, "CR"},
-      {SpecialKind::kContactLoss, "CL"}, {SpecialKind::kBranchPoint, "BP"},
-      {SpecialKind::kNone, ""},
+      {SpecialKind::kContactLoss, "CL"}, {SpecialKind::kNone, ""},
   };
 };
 const char* SpecialLabel(
-    SpecialKind k);  // "GR", "HB", "LP", "PD", "NS", "SL", "AD", "CR", "CL", "BP", ""
+    SpecialKind k);  // "GR", "HB", "LP", "PD", "NS", "SL", "AD", "CR", "CL", ""
 
 }  // namespace stickslip
