@@ -105,8 +105,8 @@ void BindRestart(py::module_& m);
 void BindBatch(py::module_& m);        // py_batch.cpp: orbits()
 void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
 void BindSystems(py::module_& m);      // py_systems.cpp: ChainParams, CouplingParams (issue 32)
-void BindSystemRuns(py::module_& m);
-void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle   // py_system_runs.cpp: simulate_system, system_orbit, ...
+void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
+void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
 
 // The System a Python parameter object stands for (Params, ForcedParams,
 // ChainParams, CouplingParams); InvalidArgument for anything else.

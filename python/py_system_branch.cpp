@@ -91,6 +91,10 @@ PySettled SettlePy(const py::object& system, const Eigen::VectorXd& state, doubl
   interrupt.RaiseIfInterrupted();
   PySettled out;
   out.found = r.found, out.message = r.message, out.stick_exits = r.stick_exits;
+  out.start = ReadOnly(std::vector<double>());  // read-only even when empty
+  py::array_t<std::complex<double>> none(0);
+  none.attr("setflags")(py::arg("write") = false);
+  out.multipliers = std::move(none);
   if (!r.found) return out;
   out.contact = r.section.contact, out.returns = r.section.returns;
   out.period = r.orbit.period, out.stable = r.orbit.stable, out.sticks = r.orbit.sticks;

@@ -1,6 +1,7 @@
 // The stick-slip attractor a run settles on (settle.hpp).
 #include "stickslip/orbits/settle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -54,7 +55,8 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
   // exits: the switches held stay bounded by one piece's.
   std::vector<FlowSwitch> switches, kept;
   FlowRequest req;
-  req.max_steps = options.shooting.max_steps * 100;
+  // The whole run's step budget, shared by the pieces.
+  req.max_steps = std::max(1L, options.shooting.max_steps * 100 / Tolerances::kSettleChunks);
   req.switches = &switches;
   FlowRun run;
   run.end = FlowPoint{0, z0, ModeOf(system, z0)};
