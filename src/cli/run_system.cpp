@@ -87,17 +87,9 @@ SystemSetup Configure(const Arguments& args) {
 SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, s.start_at);
-  const SteadyState rest = SteadySliding(*at);
-  Eigen::VectorXd z0 = rest.found ? rest.z : Eigen::VectorXd::Zero(at->dimension());
-  z0[0] += s.disturbance;
   SettleOptions o = s.settle;
   o.cancelled = [&run] { return run.Cancelled(); };
-  return SettleOnStickSlip(*at, z0, o);
-}
-
-bool Complete(BranchStatus b) {
-  return b == BranchStatus::kReachedEnd || b == BranchStatus::kClosed ||
-         b == BranchStatus::kContactLost;
+  return SettleOnStickSlip(*at, NearSteadySliding(*at, s.disturbance), o);
 }
 
 OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, RunControl& run) {
@@ -109,10 +101,7 @@ OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, 
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   o.palc.cancelled = [&run] { return run.Cancelled(); };
   o.max_amplitude = s.max_amplitude;
-  OrbitBranch b = ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
-  if (run.Cancelled() && !Complete(b.status))  // the start's Newton says start-failed
-    b.status = BranchStatus::kCancelled, b.message = run.Reason();
-  return b;
+  return ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
 }
 
 }  // namespace

@@ -23,30 +23,16 @@ constexpr double kDisturbance = 0.01;  // the default start: steady sliding, z_0
 
 // --state: n comma-separated numbers; else steady sliding moved by kDisturbance.
 Eigen::VectorXd StartState(const Arguments& args, const System& s) {
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(s.dimension());
-  if (!args.Given("state")) {
-    const SteadyState rest = SteadySliding(s);
-    if (rest.found) z = rest.z;
-    z[0] += kDisturbance;
-    return z;
-  }
+  if (!args.Given("state")) return NearSteadySliding(s, kDisturbance);
   const std::string text = args.Text("state");
-  std::size_t from = 0;
-  int i = 0;
-  for (;; ++i) {  // every item: an empty one, or one too many, is refused
-    const std::size_t comma = text.find(',', from);
-    if (i == s.dimension())
-      throw UsageError(args.Source("state") + " = '" + text + "': expected " +
-                       std::to_string(s.dimension()) + " comma-separated numbers (" +
-                       StateColumn(s, 0) + ", ...)");
-    z[i] = ParseNumber(text.substr(from, comma - from),
-                       args.Source("state") + " component " + std::to_string(i + 1));
-    if (comma == std::string::npos) break;
-    from = comma + 1;
-  }
-  if (i + 1 != s.dimension())
-    throw UsageError(args.Source("state") + " = '" + text + "': " + std::to_string(i + 1) +
-                     " numbers, expected " + std::to_string(s.dimension()));
+  const std::vector<std::string> items = CommaItems(text);  // an empty one is refused below
+  if (static_cast<int>(items.size()) != s.dimension())
+    throw UsageError(args.Source("state") + " = '" + text + "': " + std::to_string(items.size()) +
+                     " items, expected " + std::to_string(s.dimension()) +
+                     " comma-separated numbers (" + StateColumn(s, 0) + ", ...)");
+  Eigen::VectorXd z(s.dimension());
+  for (int i = 0; i < s.dimension(); ++i)
+    z[i] = ParseNumber(items[i], args.Source("state") + " component " + std::to_string(i + 1));
   for (int c = 0; c < s.contacts(); ++c)
     if (const auto n = s.NormalForce(c); n && !(n->At(z.data()) > 0))
       throw UsageError(args.Source("state") + " = '" + text + "': contact " + std::to_string(c) +

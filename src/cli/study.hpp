@@ -123,6 +123,9 @@ constexpr long kMaxStudyBytes = 1 << 20;
 void ReadStudyFile(const std::string& path, const po::options_description& desc,
                    const std::string& section, Arguments& args);
 
+// s without leading and trailing blanks (spaces, tabs, carriage returns).
+std::string Trim(const std::string& s);
+
 // Strict number: the whole text is a finite decimal number ("1e-3", "-0.5",
 // "+2"); no spaces, no trailing characters, no nan or inf. `what` names the
 // source in the message, e.g. "--beta".

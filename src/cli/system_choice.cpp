@@ -7,6 +7,7 @@
 
 #include "chain/chain.hpp"
 #include "mode_coupling/mode_coupling.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
@@ -20,26 +21,17 @@ constexpr long kMaxBlocks = 64;  // the chain's blocks: a bound on the state (2 
 std::vector<Arguments::Setting> Settings(const Arguments& args) {
   std::vector<Arguments::Setting> out = args.settings();
   if (!args.Given("set")) return out;
-  const std::string text = args.Text("set");
-  auto trim = [](const std::string& s) {
-    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-  };
   std::vector<std::string> seen;
-  std::size_t from = 0;
-  for (;;) {  // every item, an empty one (",," or a trailing ",") included
-    const std::size_t comma = text.find(',', from);
-    const std::string item = text.substr(from, comma - from);
+  for (const std::string& item : CommaItems(args.Text("set"))) {
     const auto eq = item.find('=');
-    const std::string key = eq == std::string::npos ? "" : trim(item.substr(0, eq));
-    if (key.empty() || trim(item.substr(eq + 1)).empty())
-      throw UsageError(args.Source("set") + ": expected NAME=VALUE, got '" + trim(item) + "'");
+    const std::string key = eq == std::string::npos ? "" : Trim(item.substr(0, eq));
+    const std::string value = eq == std::string::npos ? "" : Trim(item.substr(eq + 1));
+    if (key.empty() || value.empty())
+      throw UsageError(args.Source("set") + ": expected NAME=VALUE, got '" + item + "'");
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
       throw UsageError(args.Source("set") + ": '" + key + "' is set twice");
     seen.push_back(key);
-    out.push_back({key, trim(item.substr(eq + 1)), args.Source("set")});
-    if (comma == std::string::npos) break;
-    from = comma + 1;
+    out.push_back({key, value, args.Source("set")});
   }
   return out;
 }
@@ -132,6 +124,24 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args) {
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e);
   }
   return s;
+}
+
+std::vector<std::string> CommaItems(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', from);
+    out.push_back(Trim(text.substr(from, comma - from)));
+    if (comma == std::string::npos) return out;
+    from = comma + 1;
+  }
+}
+
+Eigen::VectorXd NearSteadySliding(const System& s, double d) {
+  const SteadyState rest = SteadySliding(s);
+  Eigen::VectorXd z = rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension());
+  z[0] += d;
+  return z;
 }
 
 std::string ParameterList(const System& s) {

@@ -39,6 +39,12 @@ void RefuseSystem(const Arguments& args, const std::string& prog,
 std::unique_ptr<System> SystemFromArguments(const Arguments& args);
 // "chain of 2 blocks: v = 0.25, kc = 1, ..." : the system and its parameters.
 std::string DescribeSystem(const System& s, SystemChoice choice, int continued);
+// The items of a comma-separated list, each trimmed of blanks; every item,
+// an empty one (",," or a trailing ",") included.
+std::vector<std::string> CommaItems(const std::string& text);
+// Steady sliding (or 0 where there is none) with its first component moved by
+// d: where ss_continue's settling run and ss_simulate's default run start.
+Eigen::VectorXd NearSteadySliding(const System& s, double d);
 // The system's parameter names, ", "-separated.
 std::string ParameterList(const System& s);
 

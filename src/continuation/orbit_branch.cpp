@@ -294,10 +294,12 @@ OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint&
   OrbitProblem problem(system, parameter, guess, section, options);
   if (options.palc.cancelled) problem.shooting().flow().set_cancel(options.palc.cancelled);
   const PeriodicOrbit first = problem.shooting().Find(guess, section);
+  const auto cancelled = [&] { return options.palc.cancelled && options.palc.cancelled(); };
   if (!first.ok()) {
-    OrbitBranch out;
-    out.status = first.status == OrbitStatus::kCancelled ? BranchStatus::kCancelled
-                                                         : BranchStatus::kStartFailed;
+    OrbitBranch out;  // a cancel inside Newton's runs shows as another failure: cancelled
+    out.status = first.status == OrbitStatus::kCancelled || cancelled()
+                     ? BranchStatus::kCancelled
+                     : BranchStatus::kStartFailed;
     out.message = "no periodic orbit at " + system.ParameterName(parameter) + " = " + Num(from) +
                   " near the guess (" + Name(first.status) + ": " + first.message + ")";
     return out;
@@ -306,6 +308,8 @@ OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint&
   OrbitBranch out =
       orbit_detail::TraceBranch(problem, system, parameter, problem.Unknowns(first.start, from), k,
                                 VectorXd::Unit(k + 1, k) * (to > from ? 1 : -1), from, to, options);
+  if (cancelled() && !Complete(out.status))
+    out.status = BranchStatus::kCancelled;  // cut short by the cancel, whatever failed first
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

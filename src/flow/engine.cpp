@@ -40,7 +40,7 @@ void CheckStart(const System& s, const FlowPoint& p) {
     const ContactVelocity c = s.Contact(i);
     const double h = c.At(p.z.data()), lambda = s.StickForce(p.mode, i, p.z);
     const double limit = s.StaticLimit(i, p.z);
-    const double slack = Tolerances::kEventRounding * (1 + std::abs(c.speed) + std::abs(limit));
+    const double slack = Tolerances::StickStart(c.speed, limit);
     if (!(std::abs(h) <= slack) || !(std::abs(lambda) <= limit + slack))
       throw InvalidArgument("Flow::Run: stick mode requested off the stick set (contact " +
                             std::to_string(i) + ")");

@@ -119,8 +119,7 @@ ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
   for (int i = 0; i < s.contacts(); ++i) {
     if (!held.sticks(i)) continue;
     const double lambda = s.StickForce(held, i, z), limit = s.StaticLimit(i, z);
-    const double slack =
-        Tolerances::kEventRounding * (1 + std::abs(s.Contact(i).speed) + std::abs(limit));
+    const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
     if (std::abs(lambda) < limit - slack) continue;
     if (!field) s.Field(held, z, f), field = true;
     s.StickForceGradient(held, i, z, g);

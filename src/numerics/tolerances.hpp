@@ -46,6 +46,11 @@ struct Tolerances : FixedTolerances {
   /// rounding, not an event (about 4500 eps: a root at the start, located
   /// by a stepper after a restart, is off by a few steps' roundings).
   static double EventAtStart(double t) { return 1e-12 * Scale(t); }
+  /// A start in stick lies on its surface and within (or on) its static
+  /// limit to this (kEventRounding of the contact's scale).
+  static double StickStart(double speed, double limit) {
+    return kEventRounding * (1 + std::abs(speed) + std::abs(limit));
+  }
   /// Roots at one instant, to this: the same root again (64 eps).
   static double RootRepeat(double t) { return 64 * kEps * Scale(t); }
   /// A stepper's stop time (and a root at the step end) within this of t:

@@ -15,13 +15,13 @@ namespace {
 
 // The least r (1..max) for which exit L - r is of L's contact and within
 // kSettleRecur of it; 0 if none. *closest: the smallest such distance seen.
-int Recurrence(const std::vector<const FlowSwitch*>& exits, int max, double* closest) {
-  const FlowSwitch& last = *exits.back();
+int Recurrence(const std::vector<FlowSwitch>& exits, int max, double* closest) {
+  const FlowSwitch& last = exits.back();
   const double scale = 1 + last.z.lpNorm<Eigen::Infinity>();
   *closest = INFINITY;
   const int n = static_cast<int>(exits.size());
   for (int r = 1; r <= max && r < n; ++r) {
-    const FlowSwitch& e = *exits[n - 1 - r];
+    const FlowSwitch& e = exits[n - 1 - r];
     if (e.contact != last.contact) continue;
     const double d = (e.z - last.z).lpNorm<Eigen::Infinity>() / scale;
     *closest = std::min(*closest, d);
@@ -72,8 +72,7 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
     if (run.status != FlowStatus::kTimeLimit) break;
   }
   out.run = run.status;
-  std::vector<const FlowSwitch*> exits;
-  for (const FlowSwitch& s : kept) exits.push_back(&s);
+  const std::vector<FlowSwitch>& exits = kept;
   if (run.status != FlowStatus::kTimeLimit) {
     out.message = run.status == FlowStatus::kCancelled
                       ? "cancelled"
@@ -92,7 +91,7 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
                                       Num(closest, 3) + "): not settled, or not periodic";
     return out;
   }
-  const FlowSwitch& last = *exits.back();
+  const FlowSwitch& last = exits.back();
   out.recurred = true;
   out.section = PoincareSection::StickExit(last.contact, r);
   out.orbit = shooting.Find(FlowPoint{0, last.z, last.after}, out.section);

@@ -30,4 +30,11 @@ struct EnumNames<BranchStatus> {
   };
 };
 
+/// Whether a branch ended where it should: at its end, closed, or at CL
+/// (anything else was cut short).
+inline bool Complete(BranchStatus s) {
+  return s == BranchStatus::kReachedEnd || s == BranchStatus::kClosed ||
+         s == BranchStatus::kContactLost;
+}
+
 }  // namespace stickslip
