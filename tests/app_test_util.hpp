@@ -21,6 +21,8 @@
 #include <thread>
 #include <vector>
 
+#include "wall_bound.hpp"
+
 namespace stickslip::testing_util {
 
 // Whether gnuplot runs here (figure tests skip without it).

@@ -20,6 +20,7 @@ import unittest
 import numpy as np
 
 import stickslip
+from wall_bound import WallBound
 
 STUB = pathlib.Path(stickslip.__file__).with_name("__init__.pyi")
 
@@ -233,10 +234,11 @@ class Integrators(unittest.TestCase):
 class RowCap(unittest.TestCase):
     def test_too_many_rows_raise_up_front_naming_max_rows(self):
         p = stickslip.Params()
+        bound = WallBound()
         start = time.monotonic()
         with self.assertRaisesRegex(ValueError, r"max_rows = 1000000 \(raise max_rows or dt\)"):
             stickslip.simulate(p, t_end=1e9, dt=1e-3)
-        self.assertLess(time.monotonic() - start, 1.0)
+        self.assertLess(time.monotonic() - start, bound.of(1.0))
         with self.assertRaisesRegex(ValueError, "max_rows = 100"):
             stickslip.simulate(p, t_end=100.0, dt=0.01, max_rows=100)
         run = stickslip.simulate(p, t_end=1.0, dt=0.01, max_rows=200)

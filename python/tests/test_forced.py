@@ -13,6 +13,7 @@ import unittest
 import numpy as np
 
 import stickslip
+from wall_bound import WallBound
 
 
 def den_hartog(mu, a, w):
@@ -109,6 +110,7 @@ class CtrlC(unittest.TestCase):
                 self.assertEqual(child.stdout.readline().strip(), "ready")
                 time.sleep(1.0)
                 self.assertIsNone(child.poll(), name + " finished before the signal")
+                bound = WallBound()
                 sent = time.time()
                 child.send_signal(signal.SIGINT)
                 out, _ = child.communicate(timeout=10)
@@ -117,7 +119,7 @@ class CtrlC(unittest.TestCase):
                     child.kill()
                     child.wait()
             self.assertTrue(out.startswith("interrupted"), name + ": " + out)
-            self.assertLess(float(out.split()[1]) - sent, 0.5, name)
+            self.assertLess(float(out.split()[1]) - sent, bound.of(0.5), name)
 
 
 if __name__ == "__main__":

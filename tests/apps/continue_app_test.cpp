@@ -41,6 +41,7 @@ using stickslip::testing_util::Listing;
 using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
+using stickslip::testing_util::WallBound;
 using stickslip::testing_util::WriteFile;
 
 std::vector<std::string> Lines(const std::string& text) {
@@ -589,10 +590,11 @@ const std::vector<std::string> kLongRun = {"--study",   kStudies + "/seed.ini", 
 TEST_F(ContinueApp, SigintWritesWholePartialBranch) {
   std::vector<std::string> args = kLongRun;
   args.insert(args.end(), {"--out", OutDir()});
+  const WallBound bound;
   const Result r = Run(args, 120, /*sigint_after=*/0.3);
   ASSERT_EQ(r.signal, 0) << "killed by signal " << r.signal;
   ASSERT_EQ(r.code, 1) << "the run ended before SIGINT? " << r.err;
-  EXPECT_LT(r.seconds, 30.0) << "SIGINT honoured late";
+  EXPECT_LT(r.seconds, bound.Of(30.0)) << "SIGINT honoured late";
   EXPECT_TRUE(Contains(r.err, "interrupted by signal " + std::to_string(SIGINT)));
   ExpectWholePartialBranch(OutDir() + "/branch.tsv", "cancelled");
   EXPECT_TRUE(Exists(OutDir() + "/special_points.tsv"));
@@ -604,9 +606,10 @@ TEST_F(ContinueApp, SigintWritesWholePartialBranch) {
 TEST_F(ContinueApp, MaxTimeWritesWholePartialBranch) {
   std::vector<std::string> args = kLongRun;
   args.insert(args.end(), {"--max_time", "0.05", "--out", OutDir()});
+  const WallBound bound;
   const Result r = Run(args, 120);
   ASSERT_EQ(r.code, 1) << r.err;
-  EXPECT_LT(r.seconds, 30.0) << "--max_time 0.05 honoured late";
+  EXPECT_LT(r.seconds, bound.Of(30.0)) << "--max_time 0.05 honoured late";
   const auto lines = Lines(r.err);
   ASSERT_FALSE(lines.empty());
   EXPECT_TRUE(Contains(lines.back(), "ss_continue: error: partial branch written (cancelled)"));
@@ -624,21 +627,23 @@ const std::vector<std::string> kPathological = {
 TEST_F(ContinueApp, MaxTimeStopsAPathologicalOrbit) {
   std::vector<std::string> args = kPathological;
   args.insert(args.end(), {"--max_time", "0.5", "--out", OutDir()});
+  const WallBound bound;
   const Result r = Run(args, 60);
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.code, 1) << r.err;
-  EXPECT_LT(r.seconds, 15.0) << "--max_time 0.5 honoured late";
+  EXPECT_LT(r.seconds, bound.Of(15.0)) << "--max_time 0.5 honoured late";
   ExpectWholePartialBranch(OutDir() + "/branch.tsv", "cancelled");
 }
 
 TEST_F(ContinueApp, SigintStopsAPathologicalOrbit) {
   std::vector<std::string> args = kPathological;
   args.insert(args.end(), {"--out", OutDir()});
+  const WallBound bound;
   const Result r = Run(args, 60, /*sigint_after=*/0.3);
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.signal, 0) << "killed by signal " << r.signal;
   ASSERT_EQ(r.code, 1) << r.err;
-  EXPECT_LT(r.seconds, 15.0) << "SIGINT honoured late";
+  EXPECT_LT(r.seconds, bound.Of(15.0)) << "SIGINT honoured late";
   ExpectWholePartialBranch(OutDir() + "/branch.tsv", "cancelled");
 }
 

@@ -30,6 +30,7 @@ using stickslip::testing_util::Listing;
 using stickslip::testing_util::Outcome;
 using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::RunChild;
+using stickslip::testing_util::WallBound;
 using stickslip::testing_util::WriteFile;
 
 using stickslip::testing_util::HaveGnuplot;
@@ -197,15 +198,17 @@ TEST_F(Reliability, StdoutFailuresAreReportedAfterTheFilesAreWritten) {
 }
 
 // Items 11 and 12: ss_simulate has --max_time and SIGINT handling, writes
-// the trajectory so far marked partial when stopped, and prints plain progress lines off a terminal.
+// the trajectory so far marked partial when stopped, and prints plain progress lines off a
+// terminal.
 TEST_F(Reliability, SimulateStopsOnTimeLimitAndSignal) {
   const std::vector<std::string> slow = {"--v_m", "1e-6", "--xdot0", "0",     "--t_end",
                                          "1e4",   "--dt", "0.01",    "--out", Path("w")};
   std::vector<std::string> timed = slow;
   timed.insert(timed.end(), {"--max_time", "2.5"});
+  const WallBound bound;
   Outcome r = Run(kSimulate, timed, Launch{});
   EXPECT_EQ(r.code, 1) << err_;
-  EXPECT_LT(r.seconds, 20.0);
+  EXPECT_LT(r.seconds, bound.Of(20.0));
   EXPECT_TRUE(Contains(err_, "time limit of 2.5 s"));
   EXPECT_TRUE(Contains(err_, "ss_simulate: t = "));  // a progress line
   EXPECT_FALSE(Contains(err_, "ETA"));               // plain: stderr is a file
@@ -223,10 +226,11 @@ TEST_F(Reliability, SimulateStopsOnTimeLimitAndSignal) {
 // Item 12 and issue 14: a slow phase with nothing else to report (the grid
 // search of --mu_s 1e6 --mu_m 1) still prints a line, and --max_time ends it.
 TEST_F(Reliability, SlowGridSearchShowsProgressAndStopsOnTime) {
+  const WallBound bound;
   const Outcome r = Run(kContinue, {"--mu_s", "1e6", "--mu_m", "1", "--max_time", "3", "--no_plots",
                                     "--out", Path("w")});
   EXPECT_EQ(r.code, 1) << err_;
-  EXPECT_LT(r.seconds, 20.0);
+  EXPECT_LT(r.seconds, bound.Of(20.0));
   EXPECT_TRUE(Contains(err_, "ss_continue: still continuing (searching for a periodic orbit)"));
   EXPECT_TRUE(Contains(ReadFile(Path("w/branch.tsv")), "status: partial (cancelled)"));
 }
@@ -235,9 +239,10 @@ TEST_F(Reliability, SlowGridSearchShowsProgressAndStopsOnTime) {
 // (util-linux `script` gives the app a pseudo-terminal).
 TEST_F(Reliability, ProgressOnATerminalHasRateAndEta) {
   if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
-  const std::string cmd = "script -qec '" + kContinue +
-                          " --integrator cvode --max_step 1e-4 --max_time 2.5 --no_plots --no_estimates --out " +
-                          Path("w") + " >/dev/null' /dev/null > " + Path("tty.txt") + " 2>&1";
+  const std::string cmd =
+      "script -qec '" + kContinue +
+      " --integrator cvode --max_step 1e-4 --max_time 2.5 --no_plots --no_estimates --out " +
+      Path("w") + " >/dev/null' /dev/null > " + Path("tty.txt") + " 2>&1";
   ASSERT_NE(std::system(cmd.c_str()), -1);
   const std::string tty = ReadFile(Path("tty.txt"));
   EXPECT_TRUE(Contains(tty, "points/s"));
@@ -260,8 +265,7 @@ TEST_F(Reliability, StudyFilesMustBeBoundedRegularText) {
   ExpectRefused(kContinue, {"--study", big, "--out", Path("w")}, "more than");
   ExpectRefused(kSimulate, {"--study", nul, "--out", Path("w")}, "nul.ini:2: a NUL byte");
   if (Exists("/dev/zero"))
-    ExpectRefused(kSimulate, {"--study", "/dev/zero", "--out", Path("w")},
-                  "not a regular file");
+    ExpectRefused(kSimulate, {"--study", "/dev/zero", "--out", Path("w")}, "not a regular file");
 }
 
 // Issue 14: a missing gnuplot exits 3; the data files and script are written.

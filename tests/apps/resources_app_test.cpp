@@ -27,9 +27,10 @@ class ResourcesApp : public tu::AppTest {
   void ExpectRefused(const std::string& app, const std::vector<std::string>& args,
                      const std::vector<std::string>& words) {
     const std::string dir = NewDir();
+    const tu::WallBound bound;
     const AppRun r = RunOut(app, dir, args);
     EXPECT_EQ(r.outcome.code, 2) << app << " " << args[0] << ": " << r.err;
-    EXPECT_LT(r.outcome.seconds, 30) << app << " " << args[0];
+    EXPECT_LT(r.outcome.seconds, bound.Of(30)) << app << " " << args[0];
     for (const auto& w : words) EXPECT_TRUE(tu::Contains(r.err, w)) << app << " " << args[0];
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(tu::Exists(dir + "/out")) << app << " " << args[0];

@@ -35,6 +35,7 @@ using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::RunChild;
 using stickslip::testing_util::Start;
 using stickslip::testing_util::Wait;
+using stickslip::testing_util::WallBound;
 
 using stickslip::testing_util::HaveGnuplot;
 
@@ -141,6 +142,7 @@ TEST_F(RobustnessApp, SignalsAndTimeLimitsAtRandomMomentsLeaveWholeFiles) {
       what = std::string(trial % 3 == 0 ? "SIGINT" : "SIGTERM") + " at " + std::to_string(t);
     }
     SCOPED_TRACE(what);
+    const WallBound bound;
     const Outcome r = RunChild(kContinue, args, l);
     ASSERT_FALSE(r.timed_out);
     // A signal can only come before the handler when sent at the start.
@@ -151,7 +153,7 @@ TEST_F(RobustnessApp, SignalsAndTimeLimitsAtRandomMomentsLeaveWholeFiles) {
       continue;
     }
     EXPECT_TRUE(r.code == 0 || r.code == 1) << "exit " << r.code;
-    EXPECT_LT(r.seconds, t + 10.0) << "honoured late";
+    EXPECT_LT(r.seconds, t + bound.Of(10.0)) << "honoured late";
     ExpectWhole(out, what);
   }
 }

@@ -20,6 +20,8 @@
 #include <thread>
 #include <vector>
 
+#include "wall_bound.hpp"
+
 namespace stickslip {
 namespace {
 
@@ -98,6 +100,7 @@ TEST(Pool, PollReturningTrueStopsTheRun) {
 TEST(Pool, AShortRunReturnsWithoutWaitingForThePoll) {
   std::atomic<bool> stop{false};
   int polls = 0;
+  const testing_util::WallBound bound;
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < 100; ++i) {
     const PoolRun r = RunPool(
@@ -105,7 +108,8 @@ TEST(Pool, AShortRunReturnsWithoutWaitingForThePoll) {
     ASSERT_TRUE(r.ok());
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_LT(s, 1.0);  // waiting for the poll: 100 x 20 ms = 2 s
+  EXPECT_LT(s, bound.Of(1.0));  // waiting for the poll: 100 x 20 ms = 2 s
+  // (under load the bound passes 2 s; the count below still tells)
   EXPECT_LT(polls, 50);
 }
 
