@@ -128,9 +128,8 @@ std::vector<Cycle> TimeAndScore(const Reference& ref, One one, Touches touches, 
 Row RunOurs(const Reference& ref, ss::Integrator integrator, ss::Method method, double rtol,
             int min_reps, int max_reps) {
   Row row;
-  row.method =
-      std::string("ours-") + (integrator == ss::Integrator::kTaylor ? ss::IntegratorName(integrator)
-                                                                    : ss::MethodName(method));
+  row.method = std::string("ours-") +
+               (integrator == ss::Integrator::kTaylor ? ss::Name(integrator) : ss::Name(method));
   row.rtol = rtol;
   ss::ContinuationOptions co;  // param v, 0.05 -> 0.5, max_step 0.01
   co.orbit.flow.rtol = rtol;
@@ -203,8 +202,7 @@ Row RunOurs(const Reference& ref, ss::Integrator integrator, ss::Method method, 
   const bool same =
       !res.partial() && row.n_gr == 1 && row.n_hb == 1 && row.n_lp == 0 && row.kinds == "ss>ps";
   row.same = same ? "yes" : "NO";
-  if (res.partial())
-    row.note = std::string("continuation ") + ss::ContinuationStatusName(res.status);
+  if (res.partial()) row.note = std::string("continuation ") + ss::Name(res.status);
   return row;
 }
 

@@ -17,7 +17,7 @@ int main() {
   try {
     const ss::ContinuationResult r = ss::Continue(seed, options);
     std::printf("stickslip %s: %zu points, status %s\n", ss::VersionString(), r.points.size(),
-                ss::ContinuationStatusName(r.status));
+                ss::Name(r.status));
     for (const ss::SpecialPoint& s : r.special)
       std::printf("%s  v = %.10f  period %.6f  x in [%.6f, %.6f]\n", ss::SpecialLabel(s.kind), s.p,
                   s.period, s.extrema.x_min, s.extrema.x_max);

@@ -90,7 +90,7 @@ ss::Params FromPhysical(const py::object& law, const py::kwargs& kwargs) {
 
 py::dict ParamsDict(const ss::Params& p) {
   py::dict d;
-  d["law"] = ss::LawName(p.law);
+  d["law"] = ss::Name(p.law);
   for (const auto& name : ss::ParameterNames(p.law)) d[name.c_str()] = ss::GetParameter(p, name);
   return d;
 }
@@ -132,7 +132,7 @@ PYBIND11_MODULE(_core, m) {
            "is not a number raises TypeError. Attributes set later are checked by validate() "
            "and by every computation.")
       .def_property(
-          "law", [](const ss::Params& p) { return std::string(ss::LawName(p.law)); },
+          "law", [](const ss::Params& p) { return std::string(ss::Name(p.law)); },
           [](ss::Params& p, const py::object& law) { p.law = LawOf(law); }, "the law's name")
       .def_readwrite("beta", &ss::Params::beta)
       .def_readwrite("v", &ss::Params::v)
@@ -153,7 +153,7 @@ PYBIND11_MODULE(_core, m) {
       .def("validate", &ss::Validate, "Raises InvalidArgument naming the offending value.")
       .def("to_dict", &ParamsDict, "The law and its parameters.")
       .def("__repr__", [](const ss::Params& p) {
-        std::string s = "Params(law='" + std::string(ss::LawName(p.law)) + "'";
+        std::string s = "Params(law='" + std::string(ss::Name(p.law)) + "'";
         for (const auto& n : ss::ParameterNames(p.law))
           s += ", " + n + "=" + Repr(ss::GetParameter(p, n));
         return s + ")";

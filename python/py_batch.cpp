@@ -77,7 +77,7 @@ SystemColumn ForcedColumnOf(const ForcedModel& model, const py::handle& key,
                                   [&](const ParameterAxis& a) { return a.name() == name; });
   if (j < 0 || (j < ForcedModel::kForceIndex && !of_law))
     throw InvalidArgument("orbits: column '" + name + "' is not a parameter of the forced " +
-                          LawName(model.params().base.law) + " oscillator");
+                          Name(model.params().base.law) + " oscillator");
   return {j, Values(name, values)};
 }
 

@@ -31,12 +31,12 @@ std::vector<std::pair<std::string, std::string>> Metadata(const Branch& b,
       {"tool", std::string(kPythonTool) + " " + Version()}};
   if (*GitCommit()) m.emplace_back("commit", GitCommit());
   m.emplace_back("command", command);
-  m.emplace_back("law", LawName(b.base.law));
+  m.emplace_back("law", Name(b.base.law));
   for (const auto& name : ParameterNames(b.base.law))
     m.emplace_back(name, name == param ? "continued" : FormatNumber(GetParameter(b.base, name)));
   m.emplace_back("integrator", flow.integrator == Integrator::kCvode
-                                   ? std::string("cvode ") + MethodName(flow.method)
-                                   : std::string(IntegratorName(flow.integrator)));
+                                   ? std::string("cvode ") + Name(flow.method)
+                                   : std::string(Name(flow.integrator)));
   m.insert(m.end(), {{"rtol", FormatNumber(flow.rtol)},
                      {"atol", FormatNumber(flow.atol)},
                      {"max_steps", std::to_string(flow.max_steps)},
@@ -53,7 +53,7 @@ std::vector<std::pair<std::string, std::string>> Metadata(const Branch& b,
 // (without its estimate and disturbance columns).
 py::dict Tables(const Branch& b, const std::string& command) {
   if (!b.result) throw InvalidArgument("this Branch has no result to write");
-  std::string model = "law=" + std::string(LawName(b.base.law));
+  std::string model = "law=" + std::string(Name(b.base.law));
   for (const auto& name : ParameterNames(b.base.law))
     model += " " + name + "=" +
              (name == b.param

@@ -75,7 +75,7 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
   }
   interrupt.RaiseIfInterrupted();
   if (r.status != LyapunovStatus::kDone)
-    RaiseNumerical(std::string(LyapunovStatusName(r.status)) + ": " + r.message);
+    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
   py::dict d;
   Points pts;
   pts.Add(r);
@@ -111,11 +111,10 @@ py::dict Diagram(ForcedParams base, ForcedAxis axis, double from, double to, int
   for (const DiagramColumn& c : r.columns) {
     if (!c.computed) continue;
     if (c.run.status != LyapunovStatus::kDone) {
-      failed.append(py::make_tuple(SweepDirectionName(c.direction), c.value,
-                                   LyapunovStatusName(c.run.status), c.run.message));
+      failed.append(py::make_tuple(Name(c.direction), c.value, Name(c.run.status), c.run.message));
       continue;
     }
-    value.push_back(c.value), dir.push_back(SweepDirectionName(c.direction));
+    value.push_back(c.value), dir.push_back(Name(c.direction));
     lyap.push_back(c.run.lyapunov), lyap_err.push_back(c.run.lyapunov_err);
     pts.Add(c.run);
     point_value.insert(point_value.end(), c.run.points.size(), c.value);
@@ -160,7 +159,7 @@ py::dict Basins(const ForcedParams& p, int nx, int ny, std::pair<double, double>
   py::list attractors;
   for (const Attractor& a : r.attractors) {
     py::dict q;
-    q["kind"] = AttractorKindName(a.kind), q["m"] = a.m, q["sticks"] = a.sticks;
+    q["kind"] = Name(a.kind), q["m"] = a.m, q["sticks"] = a.sticks;
     q["sticks_per_period"] = a.sticks_per_period;
     q["x"] = a.x, q["xdot"] = a.xdot, q["lyapunov"] = a.lyapunov, q["starts"] = a.starts;
     std::vector<double> cx, cxd;  // periodic: the cycle's m section points

@@ -71,7 +71,7 @@ FlowOptions Solver(FlowOptions f, std::optional<double> rtol, std::optional<doub
   if (!integrator.is_none())
     f.integrator = EnumArg<Integrator>(integrator, "integrator", &IntegratorFromName);
   if (!method.is_none() && f.integrator != Integrator::kCvode)
-    throw InvalidArgument("method = '" + std::string(MethodName(f.method)) +
+    throw InvalidArgument("method = '" + std::string(Name(f.method)) +
                           "' applies to integrator = 'cvode' only");
   const std::string err = f.ValidationError();
   if (!err.empty()) throw InvalidArgument("invalid solver options: " + err);

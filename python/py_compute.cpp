@@ -61,12 +61,12 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
     throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
                           " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
   if (!r.ok())
-    RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message +
-                   " (at t = " + Repr(r.t) + " in " + ModeName(r.mode) + ")");
+    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message + " (at t = " + Repr(r.t) +
+                   " in " + Name(r.mode) + ")");
   Trajectory out;
   out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xdot);
-  py::array names = ReadOnlyStrings(
-      {ModeName(Mode::kSlipBelow), ModeName(Mode::kStick), ModeName(Mode::kSlipAbove)});
+  py::array names =
+      ReadOnlyStrings({Name(Mode::kSlipBelow), Name(Mode::kStick), Name(Mode::kSlipAbove)});
   out.mode = names.attr("__getitem__")(ReadOnly(mode));  // codes to names
   out.mode.attr("setflags")(py::arg("write") = false);
   out.status = r.status, out.t_stick = r.t_stick, out.switches = r.switches;
@@ -96,7 +96,7 @@ Orbit PeriodicOrbit(const Params& p, std::optional<double> a_guess, bool floquet
     r = a_guess ? finder.PureSlip(*a_guess) : finder.StickSlip();
   }
   interrupt.RaiseIfInterrupted();
-  if (!r.ok()) RaiseNumerical(std::string(OrbitStatusName(r.status)) + ": " + r.message);
+  if (!r.ok()) RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
   return r.orbit;
 }
 
@@ -130,7 +130,7 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
   opts.cancelled = [&] { return call.failed() || interrupt(); };
   if (!progress.is_none()) {
     long n = 0;
-    opts.progress = [&](const BranchPoint& q) { call(++n, q.p, PointKindName(q.kind), q.stable); };
+    opts.progress = [&](const BranchPoint& q) { call(++n, q.p, Name(q.kind), q.stable); };
   }
   ContinuationResult r;
   {

@@ -34,8 +34,8 @@ namespace {
 std::string Num(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
 
 py::array Modes(const std::vector<std::uint8_t>& codes) {
-  py::array names = ReadOnlyStrings(
-      {ModeName(Mode::kSlipBelow), ModeName(Mode::kStick), ModeName(Mode::kSlipAbove)});
+  py::array names =
+      ReadOnlyStrings({Name(Mode::kSlipBelow), Name(Mode::kStick), Name(Mode::kSlipAbove)});
   py::array out = names.attr("__getitem__")(ReadOnly(codes));
   out.attr("setflags")(py::arg("write") = false);
   return out;
@@ -134,7 +134,7 @@ PyForcedOrbit Orbit(const ForcedParams& p, double x0, double xdot0, int m,
     r = ShootStroboscopic(model, x0, xdot0, m, o);
   }
   if (r.status != ForcedOrbitStatus::kConverged)
-    RaiseNumerical(std::string(ForcedOrbitStatusName(r.status)) + ": " + r.message);
+    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
   return MakeOrbit(r, {Vec2(r.start.x, r.start.xdot)}, false);
 }
 
@@ -176,16 +176,16 @@ void BindForcedTypes(py::module_& m) {
   py::enum_<ForcedSection>(m, "ForcedSection", "The Poincare section of simulate_forced().")
       .value("strobe", ForcedSection::kStrobe)
       .value("exit", ForcedSection::kExit);
-  py::enum_<ForcedBranchStatus>(m, "ForcedBranchStatus", "How a forced branch ended.")
-      .value("reached_end", ForcedBranchStatus::kReachedEnd)
-      .value("unbounded", ForcedBranchStatus::kUnbounded)
-      .value("step_too_small", ForcedBranchStatus::kStepTooSmall)
-      .value("start_failed", ForcedBranchStatus::kStartFailed)
-      .value("max_points", ForcedBranchStatus::kMaxPoints)
-      .value("closed", ForcedBranchStatus::kClosed)
-      .value("cancelled", ForcedBranchStatus::kCancelled)
-      .value("left_range", ForcedBranchStatus::kLeftRange)
-      .value("contact_lost", ForcedBranchStatus::kContactLost);
+  py::enum_<BranchStatus>(m, "ForcedBranchStatus", "How a forced branch ended.")
+      .value("reached_end", BranchStatus::kReachedEnd)
+      .value("unbounded", BranchStatus::kUnbounded)
+      .value("step_too_small", BranchStatus::kStepTooSmall)
+      .value("start_failed", BranchStatus::kStartFailed)
+      .value("max_points", BranchStatus::kMaxPoints)
+      .value("closed", BranchStatus::kClosed)
+      .value("cancelled", BranchStatus::kCancelled)
+      .value("left_range", BranchStatus::kLeftRange)
+      .value("contact_lost", BranchStatus::kContactLost);
   py::class_<ForcedParams>(m, "ForcedParams",
                            "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
                            "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")

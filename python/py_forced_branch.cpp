@@ -33,7 +33,7 @@ struct PyForcedSpecial {
 
 struct PyForcedBranch {
   ForcedAxis axis = ForcedAxis::kOmega;
-  ForcedBranchStatus status = ForcedBranchStatus::kStartFailed;
+  BranchStatus status = BranchStatus::kStartFailed;
   std::string message;
   py::array p, x0, xdot0, m, sticks, crossings, x_min, x_max, xdot_min, xdot_max, stable,
       multipliers;
@@ -56,7 +56,7 @@ ForcedBranchOptions Options(double width, int m, double max_amplitude,
 PyForcedSpecial Special(const ForcedBranchRow& s, const ForcedParams& base, ForcedAxis axis,
                         double from, double to) {
   PyForcedSpecial q;
-  q.label = ForcedLabelName(s.label), q.description = s.description, q.axis = axis;
+  q.label = Name(s.label), q.description = s.description, q.axis = axis;
   q.params = base;
   SetAxis(q.params, axis, s.p);
   q.p = s.p, q.x0 = s.x0, q.xdot0 = s.xdot0, q.run_from = from, q.run_to = to;
@@ -90,7 +90,7 @@ PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, Force
   out.x_min = ReadOnly(xmin), out.x_max = ReadOnly(xmax);
   out.xdot_min = ReadOnly(vmin), out.xdot_max = ReadOnly(vmax), out.multipliers = mult;
   for (const ForcedBranchRow& s : r.special) {
-    out.special.push_back(py::make_tuple(ForcedLabelName(s.label), s.p, s.extrema.x_max));
+    out.special.push_back(py::make_tuple(Name(s.label), s.p, s.extrema.x_max));
     out.special_points.push_back(Special(s, base, axis, from, to));
   }
   return out;
@@ -152,7 +152,7 @@ void BindClasses(py::module_& m) {
                   "A located point of a forced branch (LP, PD, NS, GR, SW, AD, CR, SL): "
                   "continue_doubled() starts from a PD one.");
   s.def("__getitem__", &GetItem, py::arg("key")).def("__repr__", [](const S& q) {
-    return "<ForcedSpecialPoint " + q.label + " at " + ForcedAxisName(q.axis) + " = " + Repr(q.p) +
+    return "<ForcedSpecialPoint " + q.label + " at " + Name(q.axis) + " = " + Repr(q.p) +
            ", m = " + std::to_string(q.m) + ">";
   });
   Fields(s, std::pair{"label", &S::label}, std::pair{"description", &S::description},

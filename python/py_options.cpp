@@ -25,22 +25,22 @@ py::enum_<E> Enum(py::module_& m, const char* name, const char* doc, const char*
 }
 
 void BindEnums(py::module_& m) {
-  Enum<LawKind>(m, "Law", "Friction law mu(s), s = |x' - v| (Params.law takes its name).", &LawName)
+  Enum<LawKind>(m, "Law", "Friction law mu(s), s = |x' - v| (Params.law takes its name).", &Name)
       .value("cubic", LawKind::kCubic, "mu_s - k1 s + k3 s^3 - k5 s^5 (seed eq. 3.3)")
       .value("coulomb", LawKind::kCoulomb, "mu_k in slip, static mu_s")
       .value("stribeck", LawKind::kStribeck, "mu_k + (mu_s - mu_k) exp(-s / v_s)")
       .value("leine", LawKind::kLeine, "mu_s / (1 + delta s) (Leine et al. 1998)");
-  Enum<Integrator>(m, "Integrator", "Integrator of the slip phases.", &IntegratorName)
+  Enum<Integrator>(m, "Integrator", "Integrator of the slip phases.", &Name)
       .value("taylor", Integrator::kTaylor, "Taylor series (Jorba & Zou 2005), the default")
       .value("cvode", Integrator::kCvode, "SUNDIALS CVODE with Method adams or bdf");
-  Enum<Method>(m, "Method", "CVODE's linear multistep method.", &MethodName)
+  Enum<Method>(m, "Method", "CVODE's linear multistep method.", &Name)
       .value("adams", Method::kAdams, "Adams-Moulton: non-stiff")
       .value("bdf", Method::kBdf, "BDF with Newton: stiff problems");
-  Enum<Mode>(m, "Mode", "Mode of the Filippov system (seed eq. 3.6-3.8).", &ModeName)
+  Enum<Mode>(m, "Mode", "Mode of the Filippov system (seed eq. 3.6-3.8).", &Name)
       .value("slip_below", Mode::kSlipBelow, "x' < v")
       .value("stick", Mode::kStick, "x' = v, |x + 2 beta v| <= mu_s")
       .value("slip_above", Mode::kSlipAbove, "x' > v");
-  Enum<FlowStatus>(m, "FlowStatus", "How a simulation ended.", &FlowStatusName)
+  Enum<FlowStatus>(m, "FlowStatus", "How a simulation ended.", &Name)
       .value("time_limit", FlowStatus::kTimeLimit)
       .value("stick", FlowStatus::kStick)
       .value("section", FlowStatus::kSection)
@@ -54,19 +54,19 @@ void BindEnums(py::module_& m) {
       .value("ambiguous_mode", FlowStatus::kAmbiguousMode)
       .value("too_many_at_once", FlowStatus::kTooManyAtOnce)
       .value("contact_open", FlowStatus::kContactOpen, "a normal force reached 0");
-  Enum<OrbitKind>(m, "OrbitKind", "Kind of periodic orbit.", &OrbitKindName)
+  Enum<OrbitKind>(m, "OrbitKind", "Kind of periodic orbit.", &Name)
       .value("stick_slip", OrbitKind::kStickSlip, "one stick phase per period")
       .value("pure_slip", OrbitKind::kPureSlip, "never sticks");
   {  // every value of its name table, "no-return" as no_return: complete by construction
-    auto e = Enum<OrbitStatus>(
-        m, "OrbitStatus", "How an orbit search ended (orbits()' status codes).", &OrbitStatusName);
+    auto e = Enum<OrbitStatus>(m, "OrbitStatus",
+                               "How an orbit search ended (orbits()' status codes).", &Name);
     for (const auto& [value, name] : EnumNames<OrbitStatus>::kTable) {
       std::string id(name);
       std::replace(id.begin(), id.end(), '-', '_');
       e.value(id.c_str(), value);
     }
   }
-  Enum<PointKind>(m, "PointKind", "Kind of branch point.", &PointKindName)
+  Enum<PointKind>(m, "PointKind", "Kind of branch point.", &Name)
       .value("stick_slip", PointKind::kStickSlip)
       .value("pure_slip", PointKind::kPureSlip)
       .value("equilibrium", PointKind::kEquilibrium, "steady sliding");
@@ -84,8 +84,7 @@ void BindEnums(py::module_& m) {
       .value("crossing", SpecialKind::kCrossing, "CR: a crossing reaches the static limit")
       .value("contact_loss", SpecialKind::kContactLoss, "CL: a normal force reaches 0")
       .value("none", SpecialKind::kNone, "a plain row");
-  Enum<ContinuationStatus>(m, "ContinuationStatus", "How a continuation ended.",
-                           &ContinuationStatusName)
+  Enum<ContinuationStatus>(m, "ContinuationStatus", "How a continuation ended.", &Name)
       .value("ok", ContinuationStatus::kOk)
       .value("failed", ContinuationStatus::kFailed, "a numerical failure: message says where")
       .value("cancelled", ContinuationStatus::kCancelled);
@@ -93,26 +92,26 @@ void BindEnums(py::module_& m) {
       .value("hopf", CurveKind::kHopf)
       .value("grazing", CurveKind::kGrazing)
       .value("fold", CurveKind::kFold);
-  Enum<ChartStatus>(m, "ChartStatus", "How a chart ended.", &ChartStatusName)
+  Enum<ChartStatus>(m, "ChartStatus", "How a chart ended.", &Name)
       .value("ok", ChartStatus::kOk)
       .value("failed", ChartStatus::kFailed, "a numerical failure: message says where")
       .value("partial", ChartStatus::kPartial, "a curve cut short or a region cell failed")
       .value("cancelled", ChartStatus::kCancelled);
-  Enum<Region>(m, "Region", "Region of the stability chart.", &RegionName)
+  Enum<Region>(m, "Region", "Region of the stability chart.", &Name)
       .value("steady_only", Region::kSteadyOnly, "stable steady sliding, no oscillation")
       .value("stick_slip", Region::kStickSlip, "stick-slip, steady sliding unstable")
       .value("pure_slip", Region::kPureSlip, "pure-slip oscillation, steady sliding unstable")
       .value("bistable", Region::kBistable, "an oscillation beside stable steady sliding");
-  Enum<Fate>(m, "Fate", "Where a start of the basin grid settles.", &FateName)
+  Enum<Fate>(m, "Fate", "Where a start of the basin grid settles.", &Name)
       .value("steady_sliding", Fate::kSteadySliding)
       .value("stick_slip", Fate::kStickSlip)
       .value("pure_slip", Fate::kPureSlip)
       .value("undecided", Fate::kUndecided, "not settled by t_cap");
-  Enum<OrbitScanStatus>(m, "OrbitScanStatus", "How periodic_orbits() ended.", &OrbitScanStatusName)
+  Enum<OrbitScanStatus>(m, "OrbitScanStatus", "How periodic_orbits() ended.", &Name)
       .value("ok", OrbitScanStatus::kOk)
       .value("failed", OrbitScanStatus::kFailed)
       .value("cancelled", OrbitScanStatus::kCancelled);
-  Enum<BasinStatus>(m, "BasinStatus", "How a basin classification ended.", &BasinStatusName)
+  Enum<BasinStatus>(m, "BasinStatus", "How a basin classification ended.", &Name)
       .value("ok", BasinStatus::kOk)
       .value("failed", BasinStatus::kFailed)
       .value("cancelled", BasinStatus::kCancelled);

@@ -148,7 +148,7 @@ BranchPoints::BranchPoints(const std::vector<BranchPoint>& pts) {
     xmax.push_back(q.extrema.x_max), vmin.push_back(q.extrema.xdot_min),
         vmax.push_back(q.extrema.xdot_max);
     ts.push_back(q.t_stick), mult.push_back(q.multiplier), amp.push_back(q.amplitude);
-    kinds.push_back(PointKindName(q.kind)), br.push_back(q.branch);
+    kinds.push_back(Name(q.kind)), br.push_back(q.branch);
     st.push_back(q.stable), stalled.push_back(q.newton_stalled);
   }
   p = ReadOnly(pp), kind = ReadOnlyStrings(kinds), branch = ReadOnly(br), period = ReadOnly(per);
@@ -206,7 +206,7 @@ Basins MakeBasins(const BasinResult& r) {
   std::vector<int> orbit;
   for (const BasinStart& s : r.starts) {
     x.push_back(s.x), xdot.push_back(s.xdot), t.push_back(s.t_settle);
-    fate.push_back(FateName(s.fate)), orbit.push_back(s.orbit);
+    fate.push_back(Name(s.fate)), orbit.push_back(s.orbit);
   }
   b.x = ReadOnly(x), b.xdot = ReadOnly(xdot), b.fate = ReadOnlyStrings(fate);
   b.orbit = ReadOnly(orbit), b.t_settle = ReadOnly(t);

@@ -113,8 +113,8 @@ PySystemTrajectory Simulate(const py::object& system, const Eigen::VectorXd& sta
     throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
                           " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
   if (!r.ok())  // contact-open is a result: the run stops there (issue 32)
-    RaiseNumerical(std::string(FlowStatusName(r.status)) + ": " + r.message +
-                   " (at t = " + Repr(r.end.t) + " in " + ModeSetName(r.end.mode, k) + ")");
+    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message + " (at t = " + Repr(r.end.t) +
+                   " in " + ModeSetName(r.end.mode, k) + ")");
   PySystemTrajectory out;
   out.t = ReadOnly(t);
   py::array_t<double> zz({static_cast<py::ssize_t>(t.size()), static_cast<py::ssize_t>(n)});
@@ -148,7 +148,7 @@ PySystemOrbit Orbit(const py::object& system, const Eigen::VectorXd& state,
     r = shooting.Find(guess, sec);
   }
   interrupt.RaiseIfInterrupted();
-  if (!r.ok()) RaiseNumerical(std::string(OrbitStatusName(r.status)) + ": " + r.message);
+  if (!r.ok()) RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
   PySystemOrbit out;
   const int k = s->contacts();
   out.status = r.status, out.message = r.message, out.mode = ModeSetName(r.start.mode, k);

@@ -116,7 +116,7 @@ void PrintSummary(const ss::BasinResult& r, const std::vector<ss::Disturbance>& 
   }
   std::cout << r.starts.size() << " starts in " << static_cast<int>(seconds * 1e3) << " ms:";
   for (int f = 0; f < 4; ++f)
-    std::cout << " " << r.count[f] << " " << ss::FateName(static_cast<ss::Fate>(f));
+    std::cout << " " << r.count[f] << " " << ss::Name(static_cast<ss::Fate>(f));
   std::cout << "\n";
   for (const std::string& line : ss::BasinStabilityLines(stability)) std::cout << line << "\n";
 }
@@ -190,7 +190,7 @@ int Main(int argc, char** argv) {
             << (app.gnuplot().ok() ? " and " + figure : std::string()) << "\n";
   std::string partial;
   if (r.partial())
-    partial = "partial basins written (" + std::string(ss::BasinStatusName(r.status)) +
+    partial = "partial basins written (" + std::string(ss::Name(r.status)) +
               "): " + (r.status == ss::BasinStatus::kCancelled ? run.Reason() : r.message);
   return app.ExitCode(partial);
 }

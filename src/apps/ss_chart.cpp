@@ -163,7 +163,7 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
 // "law=cubic k1=... v=[0.05, 0.6] beta=[0, 0.25]": the law's parameters but
 // the two axes, then the axes' ranges.
 std::string DescribeChart(const ss::Params& base, const ss::Plane& pl) {
-  std::string model = std::string("law=") + ss::LawName(base.law);
+  std::string model = std::string("law=") + ss::Name(base.law);
   for (const ss::ParameterAxis& a : ss::ParameterAxes(base.law))
     if (a != pl.p1 && a != pl.p2) model += " " + a.name() + "=" + ss::FormatNumber(a.Get(base));
   return model + " " + pl.p1.name() + "=[" + ss::FormatNumber(pl.from1) + ", " +
@@ -231,8 +231,7 @@ int Main(int argc, char** argv) {
                                "(not physical there; flagged in curves.tsv)");
   std::string partial;
   if (r.status != ss::ChartStatus::kOk)
-    partial = std::string("partial chart written (") + ss::ChartStatusName(r.status) +
-              "): " + r.message +
+    partial = std::string("partial chart written (") + ss::Name(r.status) + "): " + r.message +
               (r.status == ss::ChartStatus::kCancelled ? " (" + run.Reason() + ")" : "");
   return app.ExitCode(partial);
 }

@@ -329,15 +329,13 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
 
   PrintSummary(r, opts, model, seconds, prov.detail, prov.scales);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
-            << (app.gnuplot().ok()
-                    ? std::string(" and the ") + ss::FigureFormatName(format) + " figures"
-                    : std::string())
+            << (app.gnuplot().ok() ? std::string(" and the ") + ss::Name(format) + " figures"
+                                   : std::string())
             << "\n";
   if (cmp.applies && !cmp.rows.empty() && !cmp.cancelled) PrintComparison(cmp, opts.param.name());
   std::string partial;
   if (r.partial())
-    partial = "partial branch written (" + std::string(ss::ContinuationStatusName(r.status)) +
-              "): " + r.message;
+    partial = "partial branch written (" + std::string(ss::Name(r.status)) + "): " + r.message;
   return app.ExitCode(partial);
 }
 

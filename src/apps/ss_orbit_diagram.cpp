@@ -83,7 +83,7 @@ Setup Configure(const cli::Arguments& args) {
   bool found = false;
   for (ss::ForcedAxis a :
        {ss::ForcedAxis::kOmega, ss::ForcedAxis::kForce, ss::ForcedAxis::kV, ss::ForcedAxis::kBeta})
-    if (name == ss::ForcedAxisName(a)) s.o.axis = a, found = true;
+    if (name == ss::Name(a)) s.o.axis = a, found = true;
   if (!found)
     throw cli::UsageError("invalid value '" + name + "' for " + args.Source("param") +
                           ": must be omega, force, v or beta");
@@ -141,7 +141,7 @@ std::string Describe(const Setup& s) {
   std::string d = cli::DescribeModel(at.base);
   for (ss::ForcedAxis a : {ss::ForcedAxis::kForce, ss::ForcedAxis::kOmega})
     if (a != s.o.axis)
-      d += std::string(" ") + ss::ForcedAxisName(a) + "=" + ss::FormatNumber(ss::GetAxis(s.p, a));
+      d += std::string(" ") + ss::Name(a) + "=" + ss::FormatNumber(ss::GetAxis(s.p, a));
   return d;
 }
 
@@ -177,7 +177,7 @@ int Main(int argc, char** argv) {
     return cli::kExitFailed;
   }
   const std::string model = Describe(s);
-  const std::string axis = ss::ForcedAxisName(s.o.axis);
+  const std::string axis = ss::Name(s.o.axis);
   cli::Metadata meta =
       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.p.base, s.flow, axis);
   meta.insert(meta.end(),

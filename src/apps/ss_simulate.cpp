@@ -134,9 +134,9 @@ std::string Failure(const ss::FlowResult& r, const std::string& bad, const cli::
   std::string where;
   if (r.status != ss::FlowStatus::kIntegratorFailed &&  // these messages already say where
       r.status != ss::FlowStatus::kCancelled)
-    where = " (at t = " + ss::FormatNumber(r.t) + " in " + ss::ModeName(r.mode) +
+    where = " (at t = " + ss::FormatNumber(r.t) + " in " + ss::Name(r.mode) +
             ", x = " + ss::FormatNumber(r.z[0]) + ", x' = " + ss::FormatNumber(r.z[1]) + ")";
-  return std::string(ss::FlowStatusName(r.status)) + ": " + r.message + where +
+  return std::string(ss::Name(r.status)) + ": " + r.message + where +
          (r.status == ss::FlowStatus::kCancelled ? " (" + run.Reason() + ")" : "");
 }
 
@@ -178,10 +178,10 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
     }
     if (bad.empty()) bad = NonFinite(x);
     if (bad.empty() && scales)
-      table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode), x.t * scales->t0, x.z[0] * scales->L,
+      table.AddRow({x.t, x.z[0], x.z[1], ss::Name(x.mode), x.t * scales->t0, x.z[0] * scales->L,
                     x.z[1] * scales->L / scales->t0});
     else if (bad.empty())
-      table.AddRow({x.t, x.z[0], x.z[1], ss::ModeName(x.mode)});
+      table.AddRow({x.t, x.z[0], x.z[1], ss::Name(x.mode)});
     last = x;
     run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.range.t_end, x.t, "time units");
   };

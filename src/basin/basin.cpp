@@ -10,10 +10,6 @@
 
 namespace stickslip {
 
-const char* FateName(Fate f) { return Name(f); }
-
-const char* BasinStatusName(BasinStatus s) { return Name(s); }
-
 std::string BasinOptions::ValidationError() const {
   std::string err = scan.ValidationError();
   if (!err.empty()) return err;

@@ -8,8 +8,8 @@
 namespace stickslip {
 
 std::string BasinShare::Name() const {
-  if (fate != Fate::kPureSlip || orbit <= 0) return FateName(fate);
-  return std::string(FateName(fate)) + "-" + std::to_string(orbit + 1);
+  if (fate != Fate::kPureSlip || orbit <= 0) return stickslip::Name(fate);
+  return std::string(stickslip::Name(fate)) + "-" + std::to_string(orbit + 1);
 }
 
 double BasinStability::Of(Fate f) const {

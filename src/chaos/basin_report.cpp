@@ -17,7 +17,7 @@ std::string AttractorLabel(const Attractor& a) {
     case AttractorKind::kChaotic:  // the measured mean (issue 35: 0.66, not ~1)
       return "chaotic, " + Num(a.sticks_per_period, 2) + " sticks/period";
     default:
-      return AttractorKindName(a.kind);
+      return Name(a.kind);
   }
 }
 
@@ -33,8 +33,7 @@ TsvTable ForcedBasinTable(const ForcedBasins& b) {
     const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded;
     if (measured && !std::isfinite(s.lyapunov))
       throw InvalidArgument("basin start x = " + FormatNumber(s.x) + " has a non-finite exponent");
-    t.AddRow({s.x, s.xdot, s.attractor, AttractorKindName(a.kind), a.m, a.sticks,
-              measured ? s.lyapunov : 0.0});
+    t.AddRow({s.x, s.xdot, s.attractor, Name(a.kind), a.m, a.sticks, measured ? s.lyapunov : 0.0});
   }
   return t;
 }
@@ -46,7 +45,7 @@ TsvTable AttractorTable(const ForcedBasins& b) {
   for (const Attractor& a : b.attractors) total += a.starts;
   for (size_t i = 0; i < b.attractors.size(); ++i) {
     const Attractor& a = b.attractors[i];
-    t.AddRow({static_cast<int>(i), AttractorKindName(a.kind), a.m, a.sticks, a.x, a.xdot,
+    t.AddRow({static_cast<int>(i), Name(a.kind), a.m, a.sticks, a.x, a.xdot,
               std::isfinite(a.lyapunov) ? a.lyapunov : 0.0, a.starts,
               total > 0 ? static_cast<double>(a.starts) / total : 0.0, AttractorLabel(a),
               a.sticks_per_period});

@@ -16,8 +16,6 @@
 
 namespace stickslip {
 
-const char* AttractorKindName(AttractorKind k) { return Name(k); }
-
 std::string ForcedBasinOptions::ValidationError() const {
   if (nx < 1 || ny < 1 || nx > kMaxSide || ny > kMaxSide)
     return "nx and ny must lie in [1, " + std::to_string(kMaxSide) + "]";

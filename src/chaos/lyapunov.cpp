@@ -10,8 +10,6 @@
 
 namespace stickslip {
 
-const char* LyapunovStatusName(LyapunovStatus s) { return Name(s); }
-
 std::string LyapunovOptions::ValidationError() const {
   const std::string e = flow.ValidationError();
   if (!e.empty()) return e;

@@ -14,8 +14,6 @@
 
 namespace stickslip {
 
-const char* SweepDirectionName(SweepDirection d) { return Name(d); }
-
 std::string OrbitDiagramOptions::ValidationError() const {
   if (!(std::isfinite(from) && std::isfinite(to)) || from == to)
     return "from = " + Num(from) + " and to = " + Num(to) + " must be finite and differ";

@@ -17,21 +17,20 @@ bool Done(const DiagramColumn& c) { return c.computed && c.run.status == Lyapuno
 void AddFailures(const OrbitDiagram& d, ForcedAxis axis, TsvTable& t) {
   for (const DiagramColumn& c : d.columns)
     if (c.computed && !Done(c))
-      t.AddComment(std::string("failed: ") + SweepDirectionName(c.direction) + " " +
-                   ForcedAxisName(axis) + " = " + FormatNumber(c.value) + ": " +
-                   LyapunovStatusName(c.run.status) + ", " + c.run.message);
+      t.AddComment(std::string("failed: ") + Name(c.direction) + " " + Name(axis) + " = " +
+                   FormatNumber(c.value) + ": " + Name(c.run.status) + ", " + c.run.message);
 }
 
 void CheckFinite(double x, const DiagramColumn& c, ForcedAxis axis) {
   if (!std::isfinite(x))
-    throw InvalidArgument("orbit diagram at " + std::string(ForcedAxisName(axis)) + " = " +
+    throw InvalidArgument("orbit diagram at " + std::string(Name(axis)) + " = " +
                           FormatNumber(c.value) + " has a non-finite value");
 }
 
 }  // namespace
 
 TsvTable OrbitDiagramTable(const OrbitDiagram& d, ForcedAxis axis) {
-  TsvTable t({"direction", ForcedAxisName(axis), "period", "x", "xdot", "stuck", "sticks", "exits",
+  TsvTable t({"direction", Name(axis), "period", "x", "xdot", "stuck", "sticks", "exits",
               "exit_phase", "lyapunov", "lyapunov_err"});
   AddFailures(d, axis, t);
   for (const DiagramColumn& c : d.columns) {
@@ -40,17 +39,17 @@ TsvTable OrbitDiagramTable(const OrbitDiagram& d, ForcedAxis axis) {
     int k = 0;
     for (const SectionPoint& q : c.run.points) {
       CheckFinite(q.x + q.xdot, c, axis);
-      t.AddRow({SweepDirectionName(c.direction), c.value, ++k, q.x, q.xdot,
-                q.mode == Mode::kStick ? 1 : 0, q.sticks, q.exits,
-                static_cast<double>(q.first_exit_phase), c.run.lyapunov, c.run.lyapunov_err});
+      t.AddRow({Name(c.direction), c.value, ++k, q.x, q.xdot, q.mode == Mode::kStick ? 1 : 0,
+                q.sticks, q.exits, static_cast<double>(q.first_exit_phase), c.run.lyapunov,
+                c.run.lyapunov_err});
     }
   }
   return t;
 }
 
 TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
-  TsvTable t({"direction", ForcedAxisName(axis), "lyapunov", "lyapunov_err", "sticks_per_period",
-              "collapses", "x_min", "x_max"});
+  TsvTable t({"direction", Name(axis), "lyapunov", "lyapunov_err", "sticks_per_period", "collapses",
+              "x_min", "x_max"});
   AddFailures(d, axis, t);
   for (const DiagramColumn& c : d.columns) {
     if (!Done(c) || c.run.points.empty()) continue;
@@ -59,7 +58,7 @@ TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
       sticks += q.sticks;
       lo = std::min(lo, q.x), hi = std::max(hi, q.x);
     }
-    t.AddRow({SweepDirectionName(c.direction), c.value, c.run.lyapunov, c.run.lyapunov_err,
+    t.AddRow({Name(c.direction), c.value, c.run.lyapunov, c.run.lyapunov_err,
               sticks / c.run.points.size(), c.run.collapses, lo, hi});
   }
   return t;
@@ -67,7 +66,7 @@ TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
 
 std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::string& title,
                                bool up, bool down) {
-  const std::string ax = ForcedAxisName(axis);
+  const std::string ax = Name(axis);
   const std::string label = ParameterAxisLabel(axis);
   std::ostringstream os;
   os << "# The orbit diagram of ss_orbit_diagram: stroboscopic section points (phase 0) and\n"

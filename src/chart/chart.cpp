@@ -22,8 +22,6 @@ using Eigen::VectorXd;
 
 const char* CurveLabel(CurveKind k) { return Name(k); }
 
-const char* ChartStatusName(ChartStatus s) { return Name(s); }
-
 int ChartResult::points() const {
   int n = 0;
   for (const Curve& c : curves) n += static_cast<int>(c.points.size());

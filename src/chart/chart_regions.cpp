@@ -10,8 +10,6 @@
 
 namespace stickslip {
 
-const char* RegionName(Region r) { return Name(r); }
-
 namespace {
 // Iterates the section map from the first maximum of x after the exit point.
 // True if it settles on a pure-slip orbit (or sticks), false if it decays.
@@ -53,8 +51,7 @@ Region ClassifyPoint(OrbitFinder& finder, const Params& p, bool pure_slip_check,
   const bool stick_slip = ss.ok();
   if (failure && ss.status != OrbitStatus::kOk && ss.status != OrbitStatus::kMissed &&
       ss.status != OrbitStatus::kNoReturn)
-    *failure =
-        std::string(OrbitStatusName(ss.status)) + (ss.message.empty() ? "" : ": ") + ss.message;
+    *failure = std::string(Name(ss.status)) + (ss.message.empty() ? "" : ": ") + ss.message;
   if (!stable) return stick_slip ? Region::kStickSlip : Region::kPureSlip;
   if (stick_slip) return Region::kBistable;
   if (pure_slip_check && Oscillation(finder)) return Region::kBistable;

@@ -25,7 +25,7 @@ FoldSample FoldCurveProblem::Sample(const Eigen::VectorXd& u) {
   s.status = finder_.Desingularised(u[0], &s.g, &s.dg, &map);
   if (!s.ok()) {
     s.message = std::string("pure-slip return map at a = ") + std::to_string(u[0]) + ": " +
-                (map.message.empty() ? OrbitStatusName(s.status) : map.message);
+                (map.message.empty() ? Name(s.status) : map.message);
     return s;
   }
   s.period = map.period;

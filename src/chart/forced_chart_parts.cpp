@@ -23,7 +23,7 @@ Plane ForcedPlane::AsPlane() const {
 }
 
 std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
-  if (p1 == p2) return std::string("the two axes are both ") + ForcedAxisName(p1);
+  if (p1 == p2) return std::string("the two axes are both ") + Name(p1);
   for (double x : {from1, to1, from2, to2})
     if (!std::isfinite(x)) return "a range end is not finite";
   if (!(from1 < to1)) return "the first range is empty or inverted: from >= to";
@@ -42,16 +42,12 @@ std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
     for (const auto& pt : pts) {
       const std::string e = stickslip::ValidationError(At(base, pt[0], pt[1]));
       if (!e.empty())
-        return std::string("at ") + ForcedAxisName(p1) + " = " + Num(pt[0], 6) + ", " +
-               ForcedAxisName(p2) + " = " + Num(pt[1], 6) + ": " + e;
+        return std::string("at ") + Name(p1) + " = " + Num(pt[0], 6) + ", " + Name(p2) + " = " +
+               Num(pt[1], 6) + ": " + e;
     }
   }
   return {};
 }
-
-const char* ForcedCurveName(ForcedCurveKind k) { return Name(k); }
-
-const char* ForcedCodim2Name(ForcedCodim2Label l) { return Name(l); }
 
 std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const {
   std::string e = stickslip::ValidationError(base);

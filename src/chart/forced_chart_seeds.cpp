@@ -47,7 +47,7 @@ void Harvest(const ForcedBranch& b, const Line& line, const ForcedChartOptions& 
     s.m = r.m, s.x0 = r.x0, s.xdot0 = r.xdot0;
     s.p1 = line.along1 ? r.p : line.c, s.p2 = line.along1 ? line.c : r.p;
     s.fixed = line.along1 ? 3 : 2;
-    s.where = std::string(ForcedLabelName(r.label)) + " of the " + run + line.at;
+    s.where = std::string(Name(r.label)) + " of the " + run + line.at;
     seeds->push_back(s);
     const bool inside = r.p > line.lo && r.p < line.hi;
     if (r.label != ForcedLabel::kPD || 2 * r.m > o.max_m || !inside) continue;
@@ -58,7 +58,7 @@ void Harvest(const ForcedBranch& b, const Line& line, const ForcedChartOptions& 
     const ForcedBranch doubled =
         ContinueDoubled(at_pd, line.axis, r.x0, r.xdot0, line.lo, line.hi, bo);
     ++*runs;
-    const std::string name = "m = " + std::to_string(2 * r.m) + " " + ForcedAxisName(line.axis) +
+    const std::string name = "m = " + std::to_string(2 * r.m) + " " + Name(line.axis) +
                              " run (doubled at " + Num(r.p, 6) + ") ";
     Harvest(doubled, line, o, bo, name, runs, seeds);
   }
@@ -73,7 +73,7 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
   line.axis = along1 ? pl.p1 : pl.p2, line.along1 = along1, line.c = c;
   line.lo = along1 ? pl.from1 : pl.from2, line.hi = along1 ? pl.to1 : pl.to2;
   line.params = along1 ? pl.At(base, line.lo, c) : pl.At(base, c, line.lo);
-  line.at = std::string("at ") + ForcedAxisName(along1 ? pl.p2 : pl.p1) + " = " + Num(c, 6);
+  line.at = std::string("at ") + Name(along1 ? pl.p2 : pl.p1) + " = " + Num(c, 6);
   std::vector<ForcedSeed> seeds;
   for (const double from : {line.lo, line.hi}) {
     if (o.cancelled && o.cancelled()) break;
@@ -95,7 +95,7 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
           ContinueForced(start, line.axis, from, from == line.lo ? line.hi : line.lo,
                          f.points[0].x(), f.points[0].y(), bo);
       ++*runs;
-      Harvest(b, line, o, bo, std::string(ForcedAxisName(line.axis)) + " run ", runs, &seeds);
+      Harvest(b, line, o, bo, std::string(Name(line.axis)) + " run ", runs, &seeds);
     }
   }
   return seeds;

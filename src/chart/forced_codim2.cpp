@@ -102,8 +102,6 @@ bool Refine(ForcedCurveProblem& pr, const ForcedCurvePoint& a, const ForcedCurve
 
 }  // namespace
 
-const char* ForcedCodim2MethodName(ForcedCodim2Method m) { return Name(m); }
-
 void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const ForcedCurve& c,
                 int index, std::vector<ForcedCodim2>* out) {
   auto add = [&](ForcedCodim2 x, ForcedCodim2Label l, const std::string& d) {
@@ -118,7 +116,7 @@ void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const For
     ForcedCodim2 x;
     x.p1 = p.p1, x.p2 = p.p2, x.phase = p.phase, x.x0 = p.x0, x.xdot0 = p.xdot0;
     add(x, ForcedCodim2Label::kSliding,
-        std::string(ForcedCurveName(c.kind)) + " curve ends on a sliding point: " + e.why);
+        std::string(Name(c.kind)) + " curve ends on a sliding point: " + e.why);
   }
   ForcedCurveProblem problem(base, o.plane, c.kind, c.m, o.flow);
   const double tol = Tolerances::From(o.flow.rtol, o.flow.atol).ForcedCurveCorrector();

@@ -90,10 +90,10 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
   const Eigen::VectorXd d = (next.u - last.u).cwiseQuotient(scale);
   const double ds = last.tangent.dot(d), off = (d - ds * last.tangent).norm();
   if (!(off <= tol.forced_branch_offset * std::abs(ds)))
-    return {CurveEndKind::kBranchJump,
-            "the corrector moved " + Num(off / std::abs(ds), 3) + " steps off the predictor at " +
-                ForcedAxisName(plane_.p1) + " = " + Num(next.u[2], 6) + ", " +
-                ForcedAxisName(plane_.p2) + " = " + Num(next.u[3], 6)};
+    return {CurveEndKind::kBranchJump, "the corrector moved " + Num(off / std::abs(ds), 3) +
+                                           " steps off the predictor at " + Name(plane_.p1) +
+                                           " = " + Num(next.u[2], 6) + ", " + Name(plane_.p2) +
+                                           " = " + Num(next.u[3], 6)};
   ForcedCurveSample a, b;
   std::string why;
   if (!Sample(last.u, &a, &why) || !Sample(next.u, &b, &why))

@@ -19,7 +19,7 @@ GrazingSample SampleGrazing(OrbitFinder& finder, const Params& p, bool floquet) 
   FlowResult run;
   s.status = finder.GrazingGap(&s.gap, &run);
   if (!s.ok()) {
-    s.message = std::string("grazing gap: ") + OrbitStatusName(s.status) +
+    s.message = std::string("grazing gap: ") + Name(s.status) +
                 (run.message.empty() ? "" : ": " + run.message);
     return s;
   }

@@ -20,8 +20,8 @@ std::string Num(double x) {
 std::string AxisError(const Params& base, const ParameterAxis& axis, const char* which) {
   const auto axes = ParameterAxes(base.law);
   if (std::find(axes.begin(), axes.end(), axis) == axes.end())
-    return std::string(which) + " = '" + axis.name() + "' does not apply to the " +
-           LawName(base.law) + " law";
+    return std::string(which) + " = '" + axis.name() + "' does not apply to the " + Name(base.law) +
+           " law";
   return "";
 }
 
@@ -100,9 +100,9 @@ PlaneError Plane::Check(const Params& base) const {
   const std::string near = stickslip::ValidationError(At(base, from1, from2));
   if (!near.empty()) {
     // The end whose move to the far end cures it; else the one the error names.
-    const bool second =
-        stickslip::ValidationError(At(base, from1, to2)).empty() ||
-        (!stickslip::ValidationError(At(base, to1, from2)).empty() && near.rfind(p2.name() + " ", 0) == 0);
+    const bool second = stickslip::ValidationError(At(base, from1, to2)).empty() ||
+                        (!stickslip::ValidationError(At(base, to1, from2)).empty() &&
+                         near.rfind(p2.name() + " ", 0) == 0);
     return fail(second ? PlaneInput::kFrom2 : PlaneInput::kFrom,
                 PointError(*this, base, from1, from2));
   }

@@ -49,12 +49,12 @@ Metadata ToolMetadata(const std::string& prog, const std::string& command) {
 Metadata RunMetadata(const std::string& prog, const std::string& command, const Params& p,
                      const FlowOptions& flow, const std::string& continued) {
   Metadata m = ToolMetadata(prog, command);
-  m.emplace_back("law", LawName(p.law));
+  m.emplace_back("law", Name(p.law));
   for (const auto& name : ParameterNames(p.law))
     m.emplace_back(name, name == continued ? "continued" : FormatNumber(GetParameter(p, name)));
   m.emplace_back("integrator", flow.integrator == Integrator::kCvode
-                                   ? std::string("cvode ") + MethodName(flow.method)
-                                   : std::string(IntegratorName(flow.integrator)));
+                                   ? std::string("cvode ") + Name(flow.method)
+                                   : std::string(Name(flow.integrator)));
   m.emplace_back("rtol", FormatNumber(flow.rtol));
   m.emplace_back("atol", FormatNumber(flow.atol));
   m.emplace_back("max_steps", std::to_string(flow.max_steps));

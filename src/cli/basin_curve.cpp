@@ -103,7 +103,7 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   scan.cancelled = cancelled;
   const Box box{opts.x_lo, opts.x_hi, opts.xdot_lo, opts.xdot_hi};
   const BasinStabilityCurve r = BasinStabilityAlong(base, c.param, c.from, c.to, c.n, box, scan);
-  std::string model = std::string("law=") + LawName(base.law);  // the varied one left out
+  std::string model = std::string("law=") + Name(base.law);  // the varied one left out
   for (const auto& name : ParameterNames(base.law))
     if (name != c.param.name()) model += " " + name + "=" + FormatNumber(GetParameter(base, name));
   const std::vector<BasinStabilityMark> marks = BranchMarks(base, c, scan.orbit, cancelled);
@@ -126,7 +126,7 @@ int RunBasinStabilityCurve(const std::string& prog, const Arguments& args, const
   std::cout << "wrote " << out.dir() << "/basin_stability.tsv, basin_stability.gp"
             << (g.ok() ? " and " + figure : "") << "\n";
   if (r.status != BasinStatus::kOk) {
-    PrintError(prog, std::string("partial curve written (") + BasinStatusName(r.status) +
+    PrintError(prog, std::string("partial curve written (") + Name(r.status) +
                          "): " + (run.Cancelled() ? run.Reason() : r.message));
     return 1;
   }

@@ -18,7 +18,7 @@ namespace {
 ForcedAxis Axis(const Arguments& args, const char* key, const char* fallback) {
   const std::string name = args.Text(key, fallback);
   for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
-    if (name == ForcedAxisName(a)) return a;
+    if (name == Name(a)) return a;
   throw UsageError("invalid value '" + name + "' for " + args.Source(key) +
                    ": the forced chart's axes are omega, force, v or beta");
 }
@@ -41,7 +41,7 @@ Setup Configure(const Arguments& args) {
   pl.p1 = Axis(args, "param", "omega");
   pl.p2 = Axis(args, "param2", "force");
   if (pl.p1 == pl.p2)
-    throw UsageError(args.Source("param2") + " = " + ForcedAxisName(pl.p2) + " equals --param");
+    throw UsageError(args.Source("param2") + " = " + Name(pl.p2) + " equals --param");
   const double range[4][2] = {{0.5, 2}, {0.05, 1}, {0, 0.5}, {0, 0.3}};  // ForcedAxis order
   pl.from1 = args.Number("from", range[static_cast<int>(pl.p1)][0]);
   pl.to1 = args.Number("to", range[static_cast<int>(pl.p1)][1]);
@@ -88,19 +88,19 @@ Setup Configure(const Arguments& args) {
 }
 
 std::string Describe(const Setup& s) {
-  std::string d = "law=" + std::string(LawName(s.p.base.law));
+  std::string d = "law=" + std::string(Name(s.p.base.law));
   const ForcedPlane& pl = s.o.plane;
   auto range = [](double a, double b) {
     return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]";
   };
   for (const auto& name : ParameterNames(s.p.base.law))
-    if (name != ForcedAxisName(pl.p1) && name != ForcedAxisName(pl.p2))
+    if (name != Name(pl.p1) && name != Name(pl.p2))
       d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
   for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
     if (a != pl.p1 && a != pl.p2)
-      d += std::string(" ") + ForcedAxisName(a) + "=" + FormatNumber(GetAxis(s.p, a));
-  return d + " " + ForcedAxisName(pl.p1) + "=" + range(pl.from1, pl.to1) + " " +
-         ForcedAxisName(pl.p2) + "=" + range(pl.from2, pl.to2);
+      d += std::string(" ") + Name(a) + "=" + FormatNumber(GetAxis(s.p, a));
+  return d + " " + Name(pl.p1) + "=" + range(pl.from1, pl.to1) + " " + Name(pl.p2) + "=" +
+         range(pl.from2, pl.to2);
 }
 
 void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::string& model,
@@ -116,13 +116,12 @@ void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::
                 r.seeds_not_traced);
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ForcedCurve& c = r.curves[i];
-    std::printf("  curve %zu %s m=%d: %zu points, %.2f s, from %s; ends %s\n", i + 1,
-                ForcedCurveName(c.kind), c.m, c.points.size(), c.seconds, c.seed.c_str(),
-                c.ends.Text().c_str());
+    std::printf("  curve %zu %s m=%d: %zu points, %.2f s, from %s; ends %s\n", i + 1, Name(c.kind),
+                c.m, c.points.size(), c.seconds, c.seed.c_str(), c.ends.Text().c_str());
   }
   for (const ForcedCodim2& p : r.codim2)
-    std::printf("  %-4s %s = %.8f  %s = %.8f  %s%s\n", ForcedCodim2Name(p.label),
-                ForcedAxisName(pl.p1), p.p1, ForcedAxisName(pl.p2), p.p2, p.description.c_str(),
+    std::printf("  %-4s %s = %.8f  %s = %.8f  %s%s\n", Name(p.label), Name(pl.p1), p.p1,
+                Name(pl.p2), p.p2, p.description.c_str(),
                 p.method == ForcedCodim2Method::kChord ? " (chord: not refined)" : "");
   std::printf("wrote %s/curves.tsv, codim2.tsv, response.tsv, forced_chart.gp%s\n", dir.c_str(),
               drawn ? (", " + figure).c_str() : "");
@@ -156,7 +155,7 @@ int RunForcedChart(const Arguments& args, const std::string& prog, const std::st
   const std::string model = Describe(s);
   Metadata meta = RunMetadata(prog, command, s.p.base, s.flow);
   for (auto& [key, value] : meta)  // the axes' base values are never used
-    if (key == ForcedAxisName(pl.p1) || key == ForcedAxisName(pl.p2)) value = "axis";
+    if (key == Name(pl.p1) || key == Name(pl.p2)) value = "axis";
   meta.push_back({"model", "forced oscillator, " + model});
   meta.push_back({"grid", std::to_string(s.o.n1) + " x " + std::to_string(s.o.n2) + ", " +
                               std::to_string(s.o.iterate.transient) + " transient and " +
@@ -170,7 +169,7 @@ int RunForcedChart(const Arguments& args, const std::string& prog, const std::st
   app.out().Write("curves.tsv", text(ForcedCurvesTable(r, pl, model)));
   app.out().Write("codim2.tsv", text(ForcedCodim2Table(r, pl, model)));
   app.out().Write("response.tsv", text(ResponseTable(r, pl, model)));
-  const std::string title = FigureTitle(model, {ForcedAxisName(pl.p1), ForcedAxisName(pl.p2)}) +
+  const std::string title = FigureTitle(model, {Name(pl.p1), Name(pl.p2)}) +
                             (r.status == ChartStatus::kCancelled ? " (partial)" : "");
   app.out().Write("forced_chart.gp", ForcedChartScript(r, pl, title, format));
   if (!app.Finish("forced_chart.gp", {figure}, {figure})) return kExitFailed;
@@ -179,8 +178,7 @@ int RunForcedChart(const Arguments& args, const std::string& prog, const std::st
   if (r.status == ChartStatus::kCancelled)
     partial = "partial forced chart written (cut short: " + run.Reason() + ")";
   else if (r.status != ChartStatus::kOk)
-    partial = std::string("partial forced chart written (") + ChartStatusName(r.status) +
-              "): " + r.message;
+    partial = std::string("partial forced chart written (") + Name(r.status) + "): " + r.message;
   return app.ExitCode(partial);
 }
 

@@ -28,7 +28,7 @@ void PrintComparison(const EstimateComparison& c, const std::string& param) {
   for (size_t k = 0; k < 7 && n > 0; ++k) {
     const ComparisonRow& row = c.rows[k * (n - 1) / 6];
     char head[96];
-    std::snprintf(head, sizeof head, "  %-9.5f  %-11s  %9.5f  ", row.p, PointKindName(row.kind),
+    std::snprintf(head, sizeof head, "  %-9.5f  %-11s  %9.5f  ", row.p, Name(row.kind),
                   row.xdot_min);
     std::cout << head << cell(row.r1) << "  " << cell(row.a_ps) << "\n";
   }

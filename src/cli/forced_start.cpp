@@ -73,7 +73,7 @@ ForcedBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from
   c.m = o.m;
   c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
   ForcedBranch b = ContinueForced(base, axis, from, to, o.x, o.xdot, c);
-  if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
+  if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
   return b;
 }
 

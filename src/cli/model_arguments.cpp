@@ -46,8 +46,8 @@ void CheckOtherLaws(const Arguments& args, const Params& p) {
     q.law = law;
     const std::string err = ValidationError(q);
     if (!err.empty())
-      throw UsageError("invalid model: " + WithOrigin(args, err) + " (a " + LawName(law) +
-                       " parameter, unused by the " + LawName(p.law) + " law)");
+      throw UsageError("invalid model: " + WithOrigin(args, err) + " (a " + Name(law) +
+                       " parameter, unused by the " + Name(p.law) + " law)");
   }
 }
 
@@ -103,7 +103,7 @@ Params UncheckedModelFromArguments(const Arguments& args, const Params& defaults
     for (const auto& name : required)
       if (!args.Given(name))
         throw UsageError("physical inputs (" + args.Source(physical) + " given) need --" + name +
-                         " for the " + LawName(law) + " law");
+                         " for the " + Name(law) + " law");
     PhysicalParams phys;
     phys.law = law;
     phys.mass = args.Number("mass", phys.mass);
@@ -161,7 +161,7 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args, const FlowOptions& d
 std::string DescribeModel(const Params& p) { return DescribeModel(p, "", 0, 0); }
 
 std::string DescribeModel(const Params& p, const std::string& continued, double from, double to) {
-  std::string s = std::string("law=") + LawName(p.law);
+  std::string s = std::string("law=") + Name(p.law);
   for (const auto& name : ParameterNames(p.law))
     s += " " + name + "=" +
          (name == continued ? "[" + FormatNumber(from) + ", " + FormatNumber(to) + "]"

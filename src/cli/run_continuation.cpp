@@ -78,10 +78,9 @@ ContinuationResult RunContinuation(const Params& base, ContinuationOptions opts,
     sh->last = pt.p;
     sh->points.push_back(pt);
     if (run.ProgressDue())
-      run.Progress(
-          opts.param.name() + " = " + FormatNumber(pt.p) + " (" + PointKindName(pt.kind) + ")",
-          (pt.p - opts.from) / (opts.to - opts.from), static_cast<double>(sh->points.size()),
-          "points");
+      run.Progress(opts.param.name() + " = " + FormatNumber(pt.p) + " (" + Name(pt.kind) + ")",
+                   (pt.p - opts.from) / (opts.to - opts.from),
+                   static_cast<double>(sh->points.size()), "points");
   };
   run.Phase("continuing");
   std::thread worker([sh, &base, &opts] {

@@ -33,9 +33,9 @@ struct ForcedSetup {
 };
 
 ForcedAxis AxisFromName(const Arguments& args, ForcedAxis fallback) {
-  const std::string name = args.Text("param", ForcedAxisName(fallback));
+  const std::string name = args.Text("param", Name(fallback));
   for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
-    if (name == ForcedAxisName(a)) return a;
+    if (name == Name(a)) return a;
   throw UsageError("invalid value '" + name + "' for " + args.Source("param") +
                    ": the forced oscillator continues omega, force, v or beta");
 }
@@ -58,7 +58,7 @@ void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& 
         " needs --restart DIR --point PDn (a period "
         "doubling of a forced run)" +
         (s.restart ? ", not " + args.Text("point") + " (" + s.restart->type + ")" : std::string()));
-  if (args.Given(ForcedAxisName(s.axis)) || s.axis != s.restart->forced_param)
+  if (args.Given(Name(s.axis)) || s.axis != s.restart->forced_param)
     throw UsageError(args.Source("switch") + " continues the doubled branch in " +
                      s.restart->ParamName() + ", the PD point's parameter");
   s.doubled = true;
@@ -104,7 +104,7 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   if (s.from == s.to)
     throw UsageError(args.Source("to") + " = " + FormatNumber(s.to) + " equals the start");
   ForcedParams at = s.p;
-  if (!args.Given(ForcedAxisName(s.axis))) SetAxis(at, s.axis, s.from);
+  if (!args.Given(Name(s.axis))) SetAxis(at, s.axis, s.from);
   Check(args, at, "");
   SetAxis(at, s.axis, s.from);
   Check(args, at, " at --from");
@@ -141,24 +141,24 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run
     const double x = s.restart->state.x(), xdot = s.restart->state.y();
     ForcedBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
                                : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
-    if (b.status == ForcedBranchStatus::kCancelled) b.message = run.Reason();
+    if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
     return b;
   }
   const Vec2 z = SettledState(model, s.opts);
   const std::optional<StartOrbit> settled = SettledOrbit(model, z[0], z[1], s.opts, run);
   if (settled && settled->m > 1) {
     ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
-    if (b.status != ForcedBranchStatus::kStartFailed) return b;
+    if (b.status != BranchStatus::kStartFailed) return b;
   }
   StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
   newton.m = s.opts.m;
   newton.x = z[0], newton.xdot = z[1];
   ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
-  if (b.status != ForcedBranchStatus::kStartFailed || run.Cancelled()) return b;
+  if (b.status != BranchStatus::kStartFailed || run.Cancelled()) return b;
   const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, 0, run);
   for (const StartOrbit& o : ChooseStart(list, StartChoice(), "")) {
     ForcedBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
-    if (c.status != ForcedBranchStatus::kStartFailed) return c;
+    if (c.status != BranchStatus::kStartFailed) return c;
   }
   return b;
 }
@@ -172,7 +172,7 @@ std::vector<ForcedPiece> TraceChosen(const ForcedSetup& s, const StartChoice& c,
   const Vec2 z = SettledState(model, s.opts);
   const std::optional<StartOrbit> settled = SettledOrbit(model, z[0], z[1], s.opts, run);
   const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, c.m, run);
-  const std::string where = std::string(ForcedAxisName(s.axis)) + " = " + FormatNumber(s.from);
+  const std::string where = std::string(Name(s.axis)) + " = " + FormatNumber(s.from);
   PrintStartOrbits(std::cout, list, where);
   const std::vector<StartOrbit> chosen = ChooseStart(list, c, where);
   std::vector<ForcedPiece> pieces;
@@ -185,7 +185,7 @@ std::vector<ForcedPiece> TraceChosen(const ForcedSetup& s, const StartChoice& c,
 }
 
 std::string Describe(const ForcedSetup& s) {
-  std::string d = "law=" + std::string(LawName(s.p.base.law));
+  std::string d = "law=" + std::string(Name(s.p.base.law));
   for (const auto& name : ParameterNames(s.p.base.law)) {
     if (name == "beta" || name == "v") {
       const ForcedAxis a = name == "v" ? ForcedAxis::kV : ForcedAxis::kBeta;
@@ -197,7 +197,7 @@ std::string Describe(const ForcedSetup& s) {
     d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
   }
   for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
-    d += std::string(" ") + ForcedAxisName(a) + "=" +
+    d += std::string(" ") + Name(a) + "=" +
          (a == s.axis ? "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]"
                       : FormatNumber(GetAxis(s.p, a)));
   return d;
@@ -214,7 +214,7 @@ std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
   std::string status;
   for (const ForcedPiece& piece : pieces)
     status += (status.empty() ? "" : "; ") + std::string("branch ") + std::to_string(piece.index) +
-              " " + ForcedBranchStatusName(piece.branch.status) +
+              " " + Name(piece.branch.status) +
               (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
   return status;
 }
@@ -225,8 +225,8 @@ void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::stri
                   const std::vector<ForcedPiece>& pieces, LogDetail detail) {
   size_t rows = 0;
   for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
-  std::cout << prog << ": forced oscillator, " << ForcedAxisName(s.axis) << " from "
-            << FormatNumber(s.from) << " to " << FormatNumber(s.to) << "; " << model << "\n"
+  std::cout << prog << ": forced oscillator, " << Name(s.axis) << " from " << FormatNumber(s.from)
+            << " to " << FormatNumber(s.to) << "; " << model << "\n"
             << rows << " rows; " << status << "\n";
   if (!gap.empty()) std::cout << "gap: " << gap << "\n";
   PrintForcedLog(std::cout, pieces, s.p, s.axis, detail);
@@ -238,11 +238,11 @@ bool NoRows(const std::string& prog, const ForcedSetup& s, const std::vector<For
     if (!piece.branch.rows.empty()) return false;
   std::cerr << prog << ": error: no periodic orbit"
             << (s.choice.m > 0 ? " of period m = " + std::to_string(s.choice.m) : "") << " at "
-            << ForcedAxisName(s.axis) << " = " << FormatNumber(s.from);
+            << Name(s.axis) << " = " << FormatNumber(s.from);
   if (pieces.empty())
     std::cerr << " in the start list";
   else
-    std::cerr << " (" << ForcedBranchStatusName(pieces[0].branch.status)
+    std::cerr << " (" << Name(pieces[0].branch.status)
               << (pieces[0].branch.message.empty() ? "" : ": " + pieces[0].branch.message) << ")";
   std::cerr << "; nothing written\n";
   return true;
@@ -290,7 +290,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   if (NoRows(prog, s, pieces)) return kExitFailed;  // nothing to write or draw
   std::string gap;
   std::vector<double> gap_ends;
-  if (pieces[0].branch.status == ForcedBranchStatus::kUnbounded && !s.doubled && !s.choice.scan()) {
+  if (pieces[0].branch.status == BranchStatus::kUnbounded && !s.doubled && !s.choice.scan()) {
     // Undamped resonance: trace the other end too; between them x is unbounded.
     pieces.push_back({Trace(s, s.to, s.from, app.run()), 2});
     const auto& a = pieces[0].branch.rows;
@@ -304,12 +304,12 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   }
   const std::string model = Describe(s);
   // v, beta: "continued", not a value
-  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow, ForcedAxisName(s.axis));
+  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow, Name(s.axis));
   meta.insert(meta.end(),
               {{"model", "forced oscillator, " + model},
                {"force", Value(s, ForcedAxis::kForce)},
                {"omega", Value(s, ForcedAxis::kOmega)},
-               {"continued", ForcedAxisName(s.axis)},
+               {"continued", Name(s.axis)},
                {"from", FormatNumber(s.from)},
                {"to", FormatNumber(s.to)},
                {"transient", restart ? "none: from the restart point's state"
@@ -338,9 +338,9 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;
-  const ForcedBranchStatus last = pieces.back().branch.status;
-  if (last != ForcedBranchStatus::kReachedEnd && last != ForcedBranchStatus::kClosed &&
-      !(pieces.size() == 2 && last == ForcedBranchStatus::kUnbounded))
+  const BranchStatus last = pieces.back().branch.status;
+  if (last != BranchStatus::kReachedEnd && last != BranchStatus::kClosed &&
+      !(pieces.size() == 2 && last == BranchStatus::kUnbounded))
     partial = "partial branch written (" + status + ")";
   return app.ExitCode(partial);
 }

@@ -73,10 +73,10 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
       const int pt = static_cast<int>(i) + 1;
       const bool orbit = p.kind != PointKind::kEquilibrium;
       std::ostringstream line;
-      line << "  " << Pad(std::to_string(pt), 6) << Pad(PointKindName(p.kind), 12)
-           << Pad(Fixed(p.p, 10), 16) << Pad(orbit ? Fixed(p.period, 6) : "-", 11)
-           << Pad(Fixed(p.extrema.x_min, 6), 11) << Pad(Fixed(p.extrema.x_max, 6), 11)
-           << Pad(Fixed(p.multiplier, 6), 13) << Pad(p.stable ? "stable" : "unstable", 10)
+      line << "  " << Pad(std::to_string(pt), 6) << Pad(Name(p.kind), 12) << Pad(Fixed(p.p, 10), 16)
+           << Pad(orbit ? Fixed(p.period, 6) : "-", 11) << Pad(Fixed(p.extrema.x_min, 6), 11)
+           << Pad(Fixed(p.extrema.x_max, 6), 11) << Pad(Fixed(p.multiplier, 6), 13)
+           << Pad(p.stable ? "stable" : "unstable", 10)
            << Pad(lab_at.count(pt) ? lab_at[pt] : "", 8);
       if (scales) {
         line << PhysicalParameter(scales, param, p.p);
@@ -104,7 +104,7 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
 
 void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, const ForcedParams& p,
                     ForcedAxis axis, LogDetail detail) {
-  const std::string param = ForcedAxisName(axis);
+  const std::string param = Name(axis);
   if (detail == LogDetail::kEveryPoint) {
     os << "points:\n  " << Pad("pt", 6) << Pad("branch", 8) << Pad("kind", 12) << Pad(param, 16)
        << Pad("m", 4) << Pad("period", 11) << Pad("x_min", 11) << Pad("x_max", 11)
@@ -118,7 +118,7 @@ void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, co
       ++pt;
       std::string lab;
       if (r.label != ForcedLabel::kNone)
-        lab = std::string(ForcedLabelName(r.label)) + std::to_string(++count[r.label]);
+        lab = std::string(Name(r.label)) + std::to_string(++count[r.label]);
       ForcedParams at = p;
       SetAxis(at, axis, r.p);
       const double period = r.m * 2 * M_PI / at.omega;

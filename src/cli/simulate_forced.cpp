@@ -222,7 +222,7 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
   meta.insert(meta.end(), {{"model", "forced oscillator, " + title},
                            {"force", FormatNumber(p.force)},
                            {"omega", FormatNumber(p.omega)},
-                           {"section", ForcedSectionName(o.section)}});
+                           {"section", Name(o.section)}});
   const std::string why = r.ok() ? ""
                                  : r.message + (r.status == ForcedSimulationStatus::kCancelled
                                                     ? " (" + run.Reason() + ")"
@@ -235,10 +235,10 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     AddRangeMeta(*t, range);
   }
   for (const ForcedPoint& q : r.rows)
-    traj.AddRow({q.t, q.x, q.xdot, ModeName(q.mode), Phase(model, q.t)});
+    traj.AddRow({q.t, q.x, q.xdot, Name(q.mode), Phase(model, q.t)});
   for (const ForcedSectionPoint& q : r.section)
-    section.AddRow({static_cast<double>(q.n), q.p.t, Phase(model, q.p.t), q.p.x, q.p.xdot,
-                    ModeName(q.p.mode)});
+    section.AddRow(
+        {static_cast<double>(q.n), q.p.t, Phase(model, q.p.t), q.p.x, q.p.xdot, Name(q.p.mode)});
   app.out().Write("trajectory.tsv", traj.str());
   app.out().Write("section.tsv", section.str());
   if (!r.ok()) {
@@ -251,9 +251,9 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
   if (!app.Finish("trajectory.gp", {fig_t, fig_s}, {fig_t, fig_s})) return kExitFailed;
   std::cout << prog << ": forced oscillator, " << title << "\n"
             << r.rows.size() << " rows to t = " << FormatNumber(r.rows.back().t) << ", "
-            << r.section.size() << " section points (" << ForcedSectionName(o.section) << "), "
-            << r.sticks << " sticks, " << r.crossings << " crossings; x in ["
-            << FormatNumber(r.extrema.x_min) << ", " << FormatNumber(r.extrema.x_max) << "]\n"
+            << r.section.size() << " section points (" << Name(o.section) << "), " << r.sticks
+            << " sticks, " << r.crossings << " crossings; x in [" << FormatNumber(r.extrema.x_min)
+            << ", " << FormatNumber(r.extrema.x_max) << "]\n"
             << "wrote " << app.out().dir() << "/trajectory.tsv, section.tsv, trajectory.gp"
             << (app.gnuplot().ok() ? ", " + fig_t + " and " + fig_s : "") << "\n";
   return app.ExitCode("");

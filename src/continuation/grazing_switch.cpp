@@ -126,7 +126,7 @@ BranchStart SwitchAtGrazing(BranchContext& ctx, const BranchEnd& end) {
   const OrbitStatus s = finder.GrazingGap(&gap, &run);
   finder.set_floquet(false);
   if (s != OrbitStatus::kOk) {
-    ctx.Fail("grazing orbit at " + ctx.Where(end.p), OrbitStatusName(s));
+    ctx.Fail("grazing orbit at " + ctx.Where(end.p), Name(s));
     return {};
   }
   const bool from_ss = end.came_from == PointKind::kStickSlip;

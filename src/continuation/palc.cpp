@@ -12,8 +12,6 @@ namespace stickslip {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-const char* PalcStatusName(PalcStatus s) { return Name(s); }
-
 std::string PalcOptions::ValidationError(int unknowns) const {
   std::ostringstream os;
   if (unknowns < 2) {

@@ -160,8 +160,6 @@ BoundFit FitOne(Side side, const std::vector<double>& w_fit, const CheckGrid<W>&
 
 }  // namespace
 
-const char* BoundStatusName(BoundStatus s) { return Name(s); }
-
 SeedBounds FitSeedBounds(const Params& p, const BoundFitOptions& o) {
   RequireCubic(p);
   ValidateOptions(o);

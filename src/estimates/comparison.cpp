@@ -20,7 +20,7 @@ void Track(const EstimateCell& c, double p, double* max_err, double* p_at, int* 
 // Why the estimates do not apply to this model, or empty.
 std::string NotApplicable(const Params& base, const ParameterAxis& param) {
   if (base.law != LawKind::kCubic)
-    return std::string("the estimates are for the cubic law, not ") + LawName(base.law);
+    return std::string("the estimates are for the cubic law, not ") + Name(base.law);
   const bool k5 = param.id() == Parameter::kK5;
   if (base.k5 != 0 || k5)
     return std::string("the estimates are for the cubic law without the quintic term (k5 = 0)") +
@@ -48,8 +48,7 @@ void AddSpecialEstimates(const Params& base, const ContinuationResult& r,
 }  // namespace
 
 EstimateComparison CompareEstimates(const Params& base, const ContinuationResult& r,
-                                    int check_points,
-                                    const std::function<bool()>& cancelled) {
+                                    int check_points, const std::function<bool()>& cancelled) {
   EstimateComparison out;
   out.reason = NotApplicable(base, r.param);
   if (!out.reason.empty()) return out;

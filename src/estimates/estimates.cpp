@@ -111,7 +111,7 @@ SeedEstimate EstimateSeed(const Params& p, const SeedEstimateOptions& o) {
   e.velocity_amplitude = r1;  // section 4: "the negative zero is an estimate of the amplitude"
   const BoundFit& f1 = e.bounds.a1;
   if (f1.status != BoundStatus::kFitted || !f1.holds) {
-    e.reason = std::string("a1 ") + BoundStatusName(f1.status) + ": " + f1.reason;
+    e.reason = std::string("a1 ") + Name(f1.status) + ": " + f1.reason;
     return e;
   }
   const double a1 = f1.a;
@@ -141,7 +141,7 @@ SeedEstimate EstimateSeed(const Params& p, const SeedEstimateOptions& o) {
 
   const BoundFit& f2 = e.bounds.a2;
   if (f2.status != BoundStatus::kFitted || !f2.holds) {
-    e.reason = std::string("a2 ") + BoundStatusName(f2.status) + ": " + f2.reason;
+    e.reason = std::string("a2 ") + Name(f2.status) + ": " + f2.reason;
     return e;
   }
   const double a2 = f2.a, y1 = e.y1;

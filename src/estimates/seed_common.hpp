@@ -20,7 +20,7 @@ inline std::string Num6(double x) { return Num(x, 6); }
 inline void RequireCubic(const Params& p) {
   Validate(p);
   if (p.law != LawKind::kCubic)
-    throw InvalidArgument(std::string("estimates: law '") + LawName(p.law) +
+    throw InvalidArgument(std::string("estimates: law '") + Name(p.law) +
                           "' is not cubic; the seed's estimates (3.9-3.30) need the cubic law");
   if (p.k5 != 0)
     throw InvalidArgument("estimates: k5 = " + std::to_string(p.k5) +

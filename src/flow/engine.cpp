@@ -263,8 +263,7 @@ bool Engine::Segment() {
 }
 
 std::string Engine::Where(double t, const double* y, const std::string& reason) const {
-  return IntegratorName(flow_.options_.integrator) + std::string(" failed") + Place(t, y, 6) +
-         ": " + reason;
+  return Name(flow_.options_.integrator) + std::string(" failed") + Place(t, y, 6) + ": " + reason;
 }
 
 std::string Engine::Place(double t, const double* y, int digits) const {

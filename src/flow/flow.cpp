@@ -11,11 +11,6 @@
 
 namespace stickslip {
 
-const char* IntegratorName(Integrator i) { return Name(i); }
-const char* MethodName(Method m) { return Name(m); }
-const char* FlowStatusName(FlowStatus s) { return Name(s); }
-const char* SwitchKindName(SwitchKind k) { return Name(k); }
-
 std::string FlowOptions::ValidationError() const {
   std::ostringstream os;
   using T = Tolerances;

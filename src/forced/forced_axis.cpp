@@ -3,8 +3,6 @@
 
 namespace stickslip {
 
-const char* ForcedAxisName(ForcedAxis a) { return Name(a); }
-
 double GetAxis(const ForcedParams& p, ForcedAxis a) {
   switch (a) {
     case ForcedAxis::kOmega:
@@ -35,9 +33,5 @@ void SetAxis(ForcedParams& p, ForcedAxis a, double value) {
       return;
   }
 }
-
-const char* ForcedBranchStatusName(ForcedBranchStatus s) { return Name(s); }
-
-const char* ForcedLabelName(ForcedLabel l) { return Name(l); }
 
 }  // namespace stickslip

@@ -14,10 +14,6 @@
 
 namespace stickslip {
 
-const char* ForcedEventName(ForcedEventKind k) { return Name(k); }
-
-const char* ForcedStatusName(ForcedStatus s) { return Name(s); }
-
 std::string ForcedOptions::ValidationError() const {
   using T = Tolerances;
   if (!(rtol >= T::kForcedRtolMin && rtol <= T::kTolMax))

@@ -10,8 +10,6 @@
 
 namespace stickslip {
 
-const char* ForcedOrbitStatusName(ForcedOrbitStatus s) { return Name(s); }
-
 void Multipliers(const Mat2& M, std::complex<double> out[2]) {
   // lambda^2 - tr lambda + det = 0.
   const double tr = M.trace(), det = M.determinant();

@@ -11,10 +11,9 @@ namespace stickslip {
 namespace {
 
 std::vector<std::string> Columns(ForcedAxis axis) {
-  return {
-      "branch",   ForcedAxisName(axis), "m",        "sticks",   "crossings", "kind",  "x_min",
-      "x_max",    "xdot_min",           "xdot_max", "period",   "x0",        "xdot0", "mult1_re",
-      "mult1_im", "mult2_re",           "mult2_im", "mult_max", "stable",    "pt"};
+  return {"branch",   Name(axis), "m",        "sticks",   "crossings", "kind",  "x_min",
+          "x_max",    "xdot_min", "xdot_max", "period",   "x0",        "xdot0", "mult1_re",
+          "mult1_im", "mult2_re", "mult2_im", "mult_max", "stable",    "pt"};
 }
 
 std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const ForcedParams& p,
@@ -38,7 +37,7 @@ std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const For
                             mult_max};
   for (double x : numbers)
     if (!std::isfinite(x))
-      throw InvalidArgument("forced branch row at " + std::string(ForcedAxisName(axis)) + " = " +
+      throw InvalidArgument("forced branch row at " + std::string(Name(axis)) + " = " +
                             FormatNumber(r.p) + " has a non-finite value");
   return {piece,           r.p,         r.m,
           r.sticks,        r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
@@ -58,10 +57,9 @@ void ForEachRow(const std::vector<ForcedPiece>& pieces, F f) {
   for (const ForcedPiece& piece : pieces)
     for (const ForcedBranchRow& r : piece.branch.rows) {
       ++pt;
-      const std::string lab =
-          r.label == ForcedLabel::kNone
-              ? ""
-              : std::string(ForcedLabelName(r.label)) + std::to_string(++count[r.label]);
+      const std::string lab = r.label == ForcedLabel::kNone
+                                  ? ""
+                                  : std::string(Name(r.label)) + std::to_string(++count[r.label]);
       f(piece, r, pt, lab);
     }
 }
@@ -91,7 +89,7 @@ TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis a
                          const std::string& lab) {
     if (lab.empty()) return;
     auto cells = Cells(r, piece.index, p, axis);
-    cells.insert(cells.begin(), ForcedLabelName(r.label));
+    cells.insert(cells.begin(), Name(r.label));
     cells.insert(cells.end(), {pt, lab, r.description});
     t.AddRow(cells);
   });
@@ -108,7 +106,7 @@ bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis) {
 std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
                             const std::string& title, const std::vector<double>& gap, int specials,
                             FigureFormat format) {
-  const std::string ax = ForcedAxisName(axis);
+  const std::string ax = Name(axis);
   std::ostringstream os;
   os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax << ".\n"
      << FigurePreamble(format, 1000, 720) << "set output '" << FigureFile("resonance", format)

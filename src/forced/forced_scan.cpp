@@ -9,8 +9,6 @@
 
 namespace stickslip {
 
-const char* ForcedScanStatusName(ForcedScanStatus s) { return Name(s); }
-
 std::string ForcedScanOptions::ValidationError() const {
   const std::string e = orbit.flow.ValidationError();
   if (!e.empty()) return e;

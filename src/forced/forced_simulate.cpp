@@ -10,10 +10,6 @@
 
 namespace stickslip {
 
-const char* ForcedSectionName(ForcedSection s) { return Name(s); }
-
-const char* ForcedSimulationStatusName(ForcedSimulationStatus s) { return Name(s); }
-
 std::string ForcedSimulationOptions::ValidationError() const {
   const std::string e = flow.ValidationError();
   if (!e.empty()) return e;
@@ -62,7 +58,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
     }
     if (run.status != ForcedStatus::kReached) {
       r.status = ForcedSimulationStatus::kFailed;
-      r.message = std::string(ForcedStatusName(run.status)) + ": " + run.message;
+      r.message = std::string(Name(run.status)) + ": " + run.message;
       return r;
     }
     r.extrema.Merge(run.extrema);

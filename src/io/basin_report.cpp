@@ -15,7 +15,7 @@ TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
   TsvTable t({"x", "xdot", "fate", "orbit", "t_settle"});
   t.AddComment("model: " + model_description);
   if (r.partial())
-    t.AddComment(std::string("status: partial (") + BasinStatusName(r.status) + "): " + r.message);
+    t.AddComment(std::string("status: partial (") + Name(r.status) + "): " + r.message);
   else
     t.AddComment("status: complete");
   std::ostringstream grid;
@@ -41,10 +41,9 @@ TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
                    Num(disturbances[i].energy));
   }
   for (int f = 0; f < 4; ++f)
-    t.AddComment(std::string("count: ") + FateName(static_cast<Fate>(f)) + " " +
+    t.AddComment(std::string("count: ") + Name(static_cast<Fate>(f)) + " " +
                  std::to_string(r.count[f]));
-  for (const BasinStart& s : r.starts)
-    t.AddRow({s.x, s.xdot, FateName(s.fate), s.orbit, s.t_settle});
+  for (const BasinStart& s : r.starts) t.AddRow({s.x, s.xdot, Name(s.fate), s.orbit, s.t_settle});
   return t;
 }
 

@@ -27,10 +27,9 @@ TsvTable BasinStabilityTable(const BasinStabilityCurve& c, const std::string& mo
   t.AddMeta("box", "x in [" + FormatNumber(box.x_lo) + ", " + FormatNumber(box.x_hi) +
                        "], xdot in [" + FormatNumber(box.y_lo) + ", " + FormatNumber(box.y_hi) +
                        "]");
-  t.AddMeta("status",
-            c.status == BasinStatus::kOk
-                ? std::string("complete")
-                : std::string("partial (") + BasinStatusName(c.status) + "): " + c.message);
+  t.AddMeta("status", c.status == BasinStatus::kOk
+                          ? std::string("complete")
+                          : std::string("partial (") + Name(c.status) + "): " + c.message);
   for (size_t i = 0; i < c.p.size(); ++i) {
     const BasinStability& b = c.at[i];
     t.AddRow({c.p[i], b.Of(Fate::kSteadySliding), b.Of(Fate::kStickSlip), b.Of(Fate::kPureSlip),

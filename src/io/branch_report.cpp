@@ -64,7 +64,7 @@ void DropNonFinite(ContinuationResult* r) {
       ++kept;
     } else if (dropped++ == 0) {
       first = name + " = " + FormatNumber(x) + " at " + param + " = " + FormatNumber(points[i].p) +
-              " (" + PointKindName(points[i].kind) + ")";
+              " (" + Name(points[i].kind) + ")";
     }
   }
   points.resize(kept);
@@ -102,8 +102,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& model_descr
   TsvTable t(cols);
   t.AddMeta("model", model_description);
   if (r.partial())
-    t.AddMeta("status",
-              std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
+    t.AddMeta("status", std::string("partial (") + Name(r.status) + "): " + r.message);
   else
     t.AddMeta("status", "complete");
   for (const std::string& w : r.warnings) t.AddMeta("warning", w);
@@ -117,7 +116,7 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& model_descr
     const BranchPoint& p = r.points[i];
     row.clear();
     row.emplace_back(p.p);
-    row.emplace_back(PointKindName(p.kind));
+    row.emplace_back(Name(p.kind));
     row.emplace_back(p.branch);
     for (double x : {p.period, p.extrema.x_min, p.extrema.x_max, p.extrema.xdot_min,
                      p.extrema.xdot_max, p.t_stick, p.multiplier})
@@ -148,8 +147,7 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::vector<ExtraC
   const std::vector<std::string> labels = SpecialPointLabels(r);
   TsvTable t(cols);
   if (r.partial())
-    t.AddMeta("status",
-              std::string("partial (") + ContinuationStatusName(r.status) + "): " + r.message);
+    t.AddMeta("status", std::string("partial (") + Name(r.status) + "): " + r.message);
   else
     t.AddMeta("status", "complete");
   for (size_t i = 0; i < r.special.size(); ++i) {

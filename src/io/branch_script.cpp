@@ -47,9 +47,9 @@ std::string Curves(const ContinuationResult& r, int col, bool periodic, bool equ
     const PointKind kind = static_cast<PointKind>(k);
     if ((kind == PointKind::kEquilibrium ? !equilibrium : !periodic)) continue;
     os << (os.tellp() > 0 ? ", \\\n     " : "") << "'branch.tsv' using ($" << kP
-       << "*up):((strcol(2) eq '" << PointKindName(kind) << "' && $" << kBranch << "==" << b
-       << " && $" << kStable << "==" << st << ") ? $" << col << "*" << Unit(col)
-       << " : NaN) with lines ls " << Style(kind, st == 1) << " notitle";
+       << "*up):((strcol(2) eq '" << Name(kind) << "' && $" << kBranch << "==" << b << " && $"
+       << kStable << "==" << st << ") ? $" << col << "*" << Unit(col) << " : NaN) with lines ls "
+       << Style(kind, st == 1) << " notitle";
   }
   return os.str();
 }
@@ -212,7 +212,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& ti
   }
   if (!(hi > lo)) lo -= 0.5, hi += 0.5;
   os << "set xrange [up*" << FormatNumber(lo) << ":up*" << FormatNumber(hi) << "]\n";
-  const std::string ext = std::string(".") + FigureFormatName(format);
+  const std::string ext = std::string(".") + Name(format);
   // gnuplot refuses a plot with no defined point: an empty frame that says so.
   auto empty = [&](const std::string& why) {
     os << "set label 1 '" << why << "' at graph 0.5,0.5 center\nset yrange [0:1]\n"

@@ -12,7 +12,7 @@ void Header(TsvTable& t, const ChartResult& r, const std::string& model) {
   if (r.status == ChartStatus::kPartial)
     t.AddComment("status: partial: " + r.message);
   else if (r.status != ChartStatus::kOk)
-    t.AddComment(std::string("status: partial (") + ChartStatusName(r.status) + "): " + r.message);
+    t.AddComment(std::string("status: partial (") + Name(r.status) + "): " + r.message);
   else
     t.AddComment("status: complete");
 }
@@ -57,9 +57,9 @@ TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::strin
   for (size_t k = 0; k < r.faces.size(); ++k) {
     const Face& f = r.faces[k].face;
     std::ostringstream os;
-    os << "face " << k + 1 << ": " << RegionName(r.faces[k].region) << ", area "
-       << FormatNumber(f.area) << ", classified at " << plane.p1 << " = "
-       << FormatNumber(f.inside[0]) << ", " << plane.p2 << " = " << FormatNumber(f.inside[1]);
+    os << "face " << k + 1 << ": " << Name(r.faces[k].region) << ", area " << FormatNumber(f.area)
+       << ", classified at " << plane.p1 << " = " << FormatNumber(f.inside[0]) << ", " << plane.p2
+       << " = " << FormatNumber(f.inside[1]);
     t.AddComment(os.str());
   }
   for (size_t k = 0; k < r.faces.size(); ++k) {
@@ -69,7 +69,7 @@ TsvTable RegionsTable(const ChartResult& r, const Plane& plane, const std::strin
     for (size_t ring = 0; ring < rings.size(); ++ring)
       for (size_t i = 0; i <= rings[ring]->size(); ++i) {
         const Point2& p = (*rings[ring])[i % rings[ring]->size()];
-        t.AddRow({static_cast<int>(k + 1), static_cast<int>(rf.region), RegionName(rf.region),
+        t.AddRow({static_cast<int>(k + 1), static_cast<int>(rf.region), Name(rf.region),
                   static_cast<int>(ring), p[0], p[1]});
       }
   }

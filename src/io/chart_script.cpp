@@ -167,7 +167,7 @@ std::string ChartTitle(const Params& base, const Plane& plane) {
   const char* law[] = {"cubic", "Coulomb", "Stribeck", "Leine"};  // LawKind's order
   const int k = static_cast<int>(base.law);
   std::string t =
-      std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : LawName(base.law)) + " law";
+      std::string("Stability chart, ") + (k >= 0 && k < 4 ? law[k] : Name(base.law)) + " law";
   const char* sep = ": ";
   for (const auto& name : ParameterNames(base.law)) {
     if (name == plane.p1.name() || name == plane.p2.name()) continue;
@@ -217,7 +217,7 @@ std::string ChartScript(const ChartResult& r, const Plane& plane, const std::str
     for (const RegionFace& f : r.faces) present = present || static_cast<int>(f.region) == k;
     if (!present) continue;
     os << sep << "NaN with boxes fs solid 1.0 lc rgb '" << kFill[k] << "' title '"
-       << RegionName(static_cast<Region>(k)) << "'";
+       << Name(static_cast<Region>(k)) << "'";
     sep = ", \\\n     ";
   }
   if (*sep == 0) os << "NaN notitle";

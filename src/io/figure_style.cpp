@@ -16,13 +16,9 @@ const char* const kFillPureSlip = "#fdbf6f";
 const char* const kFillEquilibrium = "#d9d9d9";
 const char* const kFillUndecided = "#ffffff";
 
-const char* FigureFormatName(FigureFormat f) { return Name(f); }
-
 bool ParseFigureFormat(const std::string& text, FigureFormat* f) { return FromName(text, f); }
 
-std::string FigureFile(const std::string& stem, FigureFormat f) {
-  return stem + "." + FigureFormatName(f);
-}
+std::string FigureFile(const std::string& stem, FigureFormat f) { return stem + "." + Name(f); }
 
 const char* SeriesColor(int i) {
   static const char* const kColors[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
@@ -231,7 +227,7 @@ std::string ParameterAxisLabel(ForcedAxis param) {
     case ForcedAxis::kBeta:
       return ParameterAxisLabel(Parameter::kBeta);
   }
-  return ForcedAxisName(param);
+  return Name(param);
 }
 
 }  // namespace stickslip

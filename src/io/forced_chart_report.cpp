@@ -17,7 +17,7 @@ void Header(TsvTable& t, const ForcedChartResult& r, const std::string& model) {
   else if (r.status == ChartStatus::kCancelled)
     t.AddComment("status: cut short (cancelled: a signal or --max_time)");
   else
-    t.AddComment(std::string("status: partial (") + ChartStatusName(r.status) + "): " + r.message);
+    t.AddComment(std::string("status: partial (") + Name(r.status) + "): " + r.message);
 }
 
 // Periodic responses of m >= kManyPeriods share one class (the grid's m and
@@ -35,7 +35,7 @@ std::string PeriodicName(int m, int sticks) {
 TsvTable::Cell Number(double x) { return std::isfinite(x) ? TsvTable::Cell(x) : "-"; }
 
 std::string KindName(AttractorKind k) {
-  return k == AttractorKind::kUndecided ? "quasi-periodic" : AttractorKindName(k);
+  return k == AttractorKind::kUndecided ? "quasi-periodic" : Name(k);
 }
 
 }  // namespace
@@ -78,40 +78,38 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g) {
 
 TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
                            const std::string& model) {
-  TsvTable t({ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "curve", "id", "m", "phase", "x0",
-              "xdot0", "sticks", "crossings", "x_min", "x_max", "mult1_re", "mult1_im", "mult2_re",
-              "mult2_im", "flag"});
+  TsvTable t({Name(pl.p1), Name(pl.p2), "curve", "id", "m", "phase", "x0", "xdot0", "sticks",
+              "crossings", "x_min", "x_max", "mult1_re", "mult1_im", "mult2_re", "mult2_im",
+              "flag"});
   Header(t, r, model);
   t.AddComment("seed runs: " + std::to_string(r.seed_runs) + " one-parameter runs");
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ForcedCurve& c = r.curves[i];
-    t.AddComment("curve " + std::to_string(i + 1) + " " + ForcedCurveName(c.kind) +
+    t.AddComment("curve " + std::to_string(i + 1) + " " + Name(c.kind) +
                  " m = " + std::to_string(c.m) + ": " + std::to_string(c.points.size()) +
                  " points, from " + c.seed + ", ends " + c.ends.Text());
   }
   for (size_t i = 0; i < r.curves.size(); ++i) {
     const ForcedCurve& c = r.curves[i];
     for (const ForcedCurvePoint& p : c.points)
-      t.AddRow({p.p1, p.p2, ForcedCurveName(c.kind), static_cast<int>(i + 1), c.m, p.phase, p.x0,
-                p.xdot0, p.sticks, p.crossings, p.extrema.x_min, p.extrema.x_max,
-                p.multipliers[0].real(), p.multipliers[0].imag(), p.multipliers[1].real(),
-                p.multipliers[1].imag(), p.flag ? 1 : 0});
+      t.AddRow({p.p1, p.p2, Name(c.kind), static_cast<int>(i + 1), c.m, p.phase, p.x0, p.xdot0,
+                p.sticks, p.crossings, p.extrema.x_min, p.extrema.x_max, p.multipliers[0].real(),
+                p.multipliers[0].imag(), p.multipliers[1].real(), p.multipliers[1].imag(),
+                p.flag ? 1 : 0});
   }
   return t;
 }
 
 TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
                            const std::string& model) {
-  TsvTable t({"label", ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "curve", "on", "description",
-              "located"});
+  TsvTable t({"label", Name(pl.p1), Name(pl.p2), "curve", "on", "description", "located"});
   Header(t, r, model);
   t.AddComment(
       "located: refined (the test function's root on the corrected curve), chord (linear "
       "between two curve points: the refinement failed), end (SL: the curve's end; GG: the "
       "middle of two curve ends that meet)");
   for (const ForcedCodim2& p : r.codim2)
-    t.AddRow({ForcedCodim2Name(p.label), p.p1, p.p2, p.curve + 1, ForcedCurveName(p.on),
-              p.description, ForcedCodim2MethodName(p.method)});
+    t.AddRow({Name(p.label), p.p1, p.p2, p.curve + 1, Name(p.on), p.description, Name(p.method)});
   return t;
 }
 
@@ -119,11 +117,11 @@ TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl,
                        const std::string& model) {
   const ResponseGrid& g = r.grid;
   const ResponseClasses c = ClassifyResponses(g);
-  TsvTable t({ForcedAxisName(pl.p1), ForcedAxisName(pl.p2), "class", "response", "m", "sticks",
-              "lyapunov", "lyapunov_err"});
+  TsvTable t(
+      {Name(pl.p1), Name(pl.p2), "class", "response", "m", "sticks", "lyapunov", "lyapunov_err"});
   Header(t, r, model);
   t.AddComment("grid " + std::to_string(g.n1) + " x " + std::to_string(g.n2) +
-               " cell centres, each row swept along " + ForcedAxisName(pl.p1) +
+               " cell centres, each row swept along " + Name(pl.p1) +
                " from the previous cell's end state; " + std::to_string(g.failed) + " failed");
   for (size_t i = 0; i < c.names.size(); ++i)
     t.AddComment("class " + std::to_string(i) + ": " + c.names[i]);

@@ -69,7 +69,7 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
       for (size_t i = 0; i < r.curves.size(); ++i) {
         if (r.curves[i].kind != st.kind || (r.curves[i].m > 1) != multiple) continue;
         const std::string title =
-            multiple ? std::string(ForcedCurveName(st.kind)) + " of m ≥ 2 orbits" : st.title;
+            multiple ? std::string(Name(st.kind)) + " of m ≥ 2 orbits" : st.title;
         // NS: only where the multipliers are complex (flag, column 17, is 1
         // on the neutral-saddle stretch of det DP = 1, which is no bifurcation).
         const std::string only = st.kind == ForcedCurveKind::kNS ? " && $17 == 0" : "";
@@ -114,7 +114,7 @@ void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const ForcedPlan
   }
   for (const ForcedCodim2& p : r.codim2) {
     if (p.label == ForcedCodim2Label::kSliding) continue;
-    const std::string name = ForcedCodim2Name(p.label);
+    const std::string name = Name(p.label);
     const double hw = kCharW * name.size() / 2, hh = kTextH / 2;
     const auto at = px(p.p1, p.p2);
     double best = -HUGE_VAL;
@@ -193,7 +193,7 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
        << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
   const auto sliding = [](const ForcedCodim2& p) { return p.label == ForcedCodim2Label::kSliding; };
-  const std::string sl = ForcedCodim2Name(ForcedCodim2Label::kSliding);
+  const std::string sl = Name(ForcedCodim2Label::kSliding);
   if (std::any_of(r.codim2.begin(), r.codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq '" << sl
        << "' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title '" << sl

@@ -181,7 +181,7 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   lp->state = Vec2(Number(t, row[t.Column(x)], x), Number(t, row[t.Column(xdot)], xdot));
   lp->period = Number(t, row[t.Column("period")], "period");
   // Only steady sliding (an equilibrium row) has no period.
-  const bool periodic = lp->type != PointKindName(PointKind::kEquilibrium);
+  const bool periodic = lp->type != Name(PointKind::kEquilibrium);
   if (periodic && !(std::isfinite(lp->period) && lp->period > 0))
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " has period = " +
                                        row[t.Column("period")] + ", not a finite number > 0");

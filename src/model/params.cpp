@@ -1,17 +1,14 @@
 #include "stickslip/model/params.hpp"
 
-#include "stickslip/model/parameter_axis.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 
-#include "stickslip/errors.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip {
-
-const char* LawName(LawKind law) { return Name(law); }
 
 LawKind LawFromName(const std::string& name) {
   LawKind k;
@@ -44,8 +41,8 @@ std::vector<std::string> ParameterNames(LawKind law) {
 
 namespace {
 // The member each parameter (EnumNames<Parameter> order) stands for.
-constexpr double Params::*kMembers[] = {&Params::beta, &Params::v,   &Params::mu_s,
-                                        &Params::mu_m, &Params::v_m, &Params::mu_k,
+constexpr double Params::*kMembers[] = {&Params::beta, &Params::v,     &Params::mu_s,
+                                        &Params::mu_m, &Params::v_m,   &Params::mu_k,
                                         &Params::v_s,  &Params::delta, &Params::k5};
 static_assert(std::size(kMembers) == NameCount<Parameter>());
 }  // namespace
@@ -62,14 +59,18 @@ std::string ParameterNameList() {
   std::string list;
   const size_t n = NameCount<Parameter>();
   for (size_t i = 0; i < n; ++i)
-    list += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + EnumNames<Parameter>::kTable[i].name;
+    list += std::string(i == 0       ? ""
+                        : i + 1 == n ? " or "
+                                     : ", ") +
+            EnumNames<Parameter>::kTable[i].name;
   return list;
 }
 
 double Params::*ParameterMember(const std::string& name) {
   Parameter p;
   if (FromName(name, &p)) return ParameterMember(p);
-  throw InvalidArgument("unknown parameter '" + name + "' (expected one of " + ParameterNameList() + ")");
+  throw InvalidArgument("unknown parameter '" + name + "' (expected one of " + ParameterNameList() +
+                        ")");
 }
 
 bool IsParameterName(const std::string& name) {

@@ -11,10 +11,6 @@
 
 namespace stickslip {
 
-const char* OrbitKindName(OrbitKind k) { return Name(k); }
-
-const char* OrbitStatusName(OrbitStatus s) { return Name(s); }
-
 std::string OrbitOptions::ValidationError() const {
   std::string err = flow.ValidationError();
   if (!err.empty()) return err;

@@ -26,7 +26,7 @@ std::string ColumnError(const Params& base, const std::vector<ParameterColumn>& 
   for (std::size_t c = 0; c < columns.size(); ++c) {
     const ParameterAxis& a = columns[c].parameter;
     if (std::find(law_axes.begin(), law_axes.end(), a) == law_axes.end())
-      return "column '" + a.name() + "': not a parameter of the " + LawName(base.law) + " law";
+      return "column '" + a.name() + "': not a parameter of the " + Name(base.law) + " law";
     for (std::size_t d = 0; d < c; ++d)
       if (columns[d].parameter == a) return "column '" + a.name() + "' is given twice";
     if (columns[c].values.size() != columns[0].values.size()) {

@@ -10,8 +10,6 @@
 
 namespace stickslip {
 
-const char* OrbitScanStatusName(OrbitScanStatus s) { return Name(s); }
-
 std::string OrbitScanOptions::ValidationError() const {
   std::string err = orbit.ValidationError();
   if (!err.empty()) return err;

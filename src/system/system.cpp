@@ -7,14 +7,12 @@
 
 namespace stickslip {
 
-const char* ModeName(Mode m) { return Name(m); }
-
 std::string ModeSetName(const ModeSet& m, int contacts) {
-  if (contacts <= 1) return ModeName(m[0]);
+  if (contacts <= 1) return Name(m[0]);
   std::string s;
   for (int i = 0; i < contacts; ++i) {
     if (i) s += ',';
-    s += ModeName(m[i]);
+    s += Name(m[i]);
   }
   return s;
 }

@@ -47,7 +47,7 @@ TEST(Basin, EveryClassifiedStartLiesOnTheSideOfTheUnstableOrbit) {
   for (const BasinStart& s : r.starts) {
     const bool in = Inside(curve, s.x, s.xdot);
     SCOPED_TRACE("start (" + std::to_string(s.x) + ", " + std::to_string(s.xdot) + ") " +
-                 FateName(s.fate));
+                 Name(s.fate));
     if (s.fate == Fate::kUndecided) {
       EXPECT_LT(Distance(curve, s.x, s.xdot), 0.01);  // only on the boundary itself
       continue;

@@ -38,8 +38,8 @@ void ExpectFacesAgreeWithOrbits(const Params& base, const Plane& plane, size_t r
     area += f.face.area;
     seen.insert(f.region);
     EXPECT_EQ(RegionFromOrbits(plane.At(base, f.face.inside[0], f.face.inside[1])), f.region)
-        << RegionName(f.region) << " at " << plane.p1 << " = " << f.face.inside[0] << ", "
-        << plane.p2 << " = " << f.face.inside[1];
+        << Name(f.region) << " at " << plane.p1 << " = " << f.face.inside[0] << ", " << plane.p2
+        << " = " << f.face.inside[1];
   }
   EXPECT_EQ(seen.size(), regions);
   EXPECT_NEAR(area, plane.width1() * plane.width2(), 1e-12 * plane.width1() * plane.width2());
@@ -47,7 +47,8 @@ void ExpectFacesAgreeWithOrbits(const Params& base, const Plane& plane, size_t r
 
 TEST(ChartRegionFaces, SeedChartFacesAgreeWithOrbitScan) {
   // studies/seed_chart.ini: stick-slip, pure slip between GR and HB, steady only.
-  ExpectFacesAgreeWithOrbits(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25}, 3);
+  ExpectFacesAgreeWithOrbits(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25},
+                             3);
 }
 
 TEST(ChartRegionFaces, QuinticChartFacesAgreeWithOrbitScan) {

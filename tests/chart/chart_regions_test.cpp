@@ -117,8 +117,8 @@ void ExpectShadingAgrees(const std::string& name) {
       if (fits && want == got) continue;
       if (++wrong <= 8)
         ADD_FAILURE() << name << ": " << pl.p1 << " = " << x1 << ", " << pl.p2 << " = " << x2
-                      << " shaded " << RegionName(got) << ", reference "
-                      << (fits ? RegionName(want) : "none") << " (" << why << ")";
+                      << " shaded " << Name(got) << ", reference " << (fits ? Name(want) : "none")
+                      << " (" << why << ")";
     }
   EXPECT_GE(checked, 200) << name;
   EXPECT_EQ(wrong, 0) << name << ": " << wrong << " of " << checked << " cells disagree";

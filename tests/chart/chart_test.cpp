@@ -23,18 +23,27 @@ TEST(Chart, RectangleValidated) {
   const Params base;
   auto err = [&](Plane pl) { return pl.ValidationError(base); };
   EXPECT_EQ(err(Plane{}), "");
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kV, 0.1, 0.5, 0.1, 0.5}), "the two axes must differ"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kV, 0.1, 0.5, 0.1, 0.5}),
+                       "the two axes must differ"));
   EXPECT_TRUE(Contains(UnknownAxisError("gamma", "param"), "'gamma' is no parameter"));
   EXPECT_EQ(UnknownAxisError("beta", "param"), "");
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kDelta, 0.1, 0.5, 0, 0.1}), "does not apply to the cubic"));
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.5, 0.5, 0, 0.1}), "the rectangle is empty"));
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.5, 0.1, 0, 0.1}), "the rectangle is inverted"));
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.1, 0.5, 0.1, 0.05}), "from2 = 0.1 must be <"));
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, -0.1, 0.5, 0, 0.1}), "leaves the model's domain"));
-  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kMuS, 0.1, 0.5, 0.2, 0.5}), "mu_m = 0.25 must be < mu_s"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kDelta, 0.1, 0.5, 0, 0.1}),
+                       "does not apply to the cubic"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.5, 0.5, 0, 0.1}),
+                       "the rectangle is empty"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.5, 0.1, 0, 0.1}),
+                       "the rectangle is inverted"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, 0.1, 0.5, 0.1, 0.05}),
+                       "from2 = 0.1 must be <"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kBeta, -0.1, 0.5, 0, 0.1}),
+                       "leaves the model's domain"));
+  EXPECT_TRUE(Contains(err(Plane{Parameter::kV, Parameter::kMuS, 0.1, 0.5, 0.2, 0.5}),
+                       "mu_m = 0.25 must be < mu_s"));
   Params quintic;
   quintic.k5 = 0.24;  // mu(v) < 0 beyond v ~ 1.3
-  EXPECT_TRUE(Contains(Plane{Parameter::kV, Parameter::kBeta, 0.1, 1.5, 0, 0.1}.ValidationError(quintic), "k5 = 0.24"));
+  EXPECT_TRUE(
+      Contains(Plane{Parameter::kV, Parameter::kBeta, 0.1, 1.5, 0, 0.1}.ValidationError(quintic),
+               "k5 = 0.24"));
   ChartOptions o;
   o.plane = Plane{Parameter::kV, Parameter::kV, 0.1, 0.5, 0.1, 0.5};
   EXPECT_THROW(Chart(base, o), InvalidArgument);
@@ -45,13 +54,16 @@ TEST(Chart, RectangleValidated) {
 // (--max_step 1e-9), reported complete.
 TEST(Chart, DegenerateRangesAndStepsRefused) {
   const Params base;
-  const PlaneError e = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.0500000000000001, 0, 0.25}.Check(base);
+  const PlaneError e =
+      Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.0500000000000001, 0, 0.25}.Check(base);
   EXPECT_EQ(e.input, PlaneInput::kTo);
   EXPECT_TRUE(Contains(e.message, "to = 0.0500000000000001 is too close to from = 0.05"))
       << e.message;
-  EXPECT_TRUE(Contains(Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0.1, 0.1 + 1e-9}.ValidationError(base),
-                       "to2 = 0.100000001 is too close"));
-  const Plane tiny{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0, 1e-12};  // from2 = 0: relative to 1e-12
+  EXPECT_TRUE(Contains(
+      Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0.1, 0.1 + 1e-9}.ValidationError(base),
+      "to2 = 0.100000001 is too close"));
+  const Plane tiny{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0,
+                   1e-12};  // from2 = 0: relative to 1e-12
   EXPECT_EQ(tiny.ValidationError(base), "");
   ChartOptions o;
   o.max_step = 1e-9;
@@ -82,12 +94,13 @@ TEST(Chart, RangeEndErrorsNameTheEnd) {
 // A curve cut short inside the rectangle makes the chart partial, naming it.
 TEST(Chart, CutShortCurveMakesTheChartPartial) {
   ChartOptions o;
-  o.plane = Plane{Parameter::kV, Parameter::kBeta, 0.466, 0.5, 0, 0.03};  // HB crosses it diagonally
-  o.max_step = 1.0 / kMaxCurvePoints;                 // a crossing takes ~1.4 / max_step points
+  o.plane =
+      Plane{Parameter::kV, Parameter::kBeta, 0.466, 0.5, 0, 0.03};  // HB crosses it diagonally
+  o.max_step = 1.0 / kMaxCurvePoints;  // a crossing takes ~1.4 / max_step points
   o.grazing_curves = o.fold_curves = false;
   const ChartResult r = Chart(Params{}, o);
   EXPECT_EQ(r.status, ChartStatus::kPartial);
-  EXPECT_STREQ(ChartStatusName(r.status), "partial");
+  EXPECT_STREQ(Name(r.status), "partial");
   EXPECT_TRUE(Contains(r.message, "HB curve from v = 0.466"));
   EXPECT_TRUE(Contains(r.message, "cut short: max-points")) << r.message;
   o.max_step = 0.01;
@@ -144,13 +157,14 @@ void ExpectRegionsAgreeWithContinuation(const Params& base, const Plane& plane, 
   for (const auto& [region, ij] : cells) {
     const double v = r.regions.x1[ij.first], beta = r.regions.x2[ij.second];
     EXPECT_EQ(RegionFromContinuation(base, v, beta), region)
-        << RegionName(region) << " at v = " << v << ", beta = " << beta;
+        << Name(region) << " at v = " << v << ", beta = " << beta;
   }
 }
 
 TEST(Chart, SeedRegionsAgreeWithOneParameterRuns) {
   // Stick-slip, pure-slip and steady sliding only (no bistability: supercritical).
-  ExpectRegionsAgreeWithContinuation(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25}, 20, 3);
+  ExpectRegionsAgreeWithContinuation(
+      Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25}, 20, 3);
 }
 
 TEST(Chart, StribeckRegionsAgreeWithOneParameterRuns) {
@@ -158,14 +172,16 @@ TEST(Chart, StribeckRegionsAgreeWithOneParameterRuns) {
   p.law = LawKind::kStribeck;
   p.mu_s = 0.4, p.mu_k = 0.25, p.v_s = 0.5;
   // Subcritical: stick-slip beside stable steady sliding in a band past HB.
-  ExpectRegionsAgreeWithContinuation(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0.01, 0.14}, 20, 3);
+  ExpectRegionsAgreeWithContinuation(
+      p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.6, 0.01, 0.14}, 20, 3);
 }
 
 TEST(Chart, QuinticRegionsAgreeWithOneParameterRuns) {
   Params p;
   p.k5 = 0.24;
   // All four: stick-slip, pure slip (above GR-LP), steady only, bistable (below GH).
-  ExpectRegionsAgreeWithContinuation(p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12}, 20, 4);
+  ExpectRegionsAgreeWithContinuation(
+      p, Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12}, 20, 4);
 }
 
 }  // namespace

@@ -99,7 +99,7 @@ const ForcedBranchRow* First(const ForcedBranch& b, ForcedLabel l) {
 TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const ForcedBranch seed_run = OmegaRun(0.3);
   const ForcedBranchRow* pd = First(seed_run, ForcedLabel::kPD);
-  ASSERT_NE(pd, nullptr) << ForcedBranchStatusName(seed_run.status);
+  ASSERT_NE(pd, nullptr) << Name(seed_run.status);
   const ForcedChartOptions o =
       Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
   std::string why;

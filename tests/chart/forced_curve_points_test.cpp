@@ -116,8 +116,8 @@ void ExpectNoJumps(const ForcedCurve& c, const ForcedChartOptions& o) {
     const double d = std::hypot((c.points[i].p1 - c.points[i - 1].p1) / o.plane.width1(),
                                 (c.points[i].p2 - c.points[i - 1].p2) / o.plane.width2());
     EXPECT_LE(d, 1.01 * o.max_step)
-        << ForcedCurveName(c.kind) << " from (" << c.points[i - 1].p1 << ", " << c.points[i - 1].p2
-        << ") to (" << c.points[i].p1 << ", " << c.points[i].p2 << ")";
+        << Name(c.kind) << " from (" << c.points[i - 1].p1 << ", " << c.points[i - 1].p2 << ") to ("
+        << c.points[i].p1 << ", " << c.points[i].p2 << ")";
   }
 }
 
@@ -139,11 +139,11 @@ int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<d
       const ForcedCurvePoint* p = Near(c, a);
       if (!p) continue;
       const double located = Locate(*p, c.m, label);
-      EXPECT_NEAR(p->p1, located, 1e-8) << ForcedLabelName(label) << " at force " << p->p2;
+      EXPECT_NEAR(p->p1, located, 1e-8) << Name(label) << " at force " << p->p2;
       std::printf(
           "[ measured ] %s curve from Omega %.5f at force %.10f: Omega %.12f, one-parameter run "
           "%.12f (difference %.1e)\n",
-          ForcedLabelName(label), s.p, p->p2, p->p1, located, std::abs(p->p1 - located));
+          Name(label), s.p, p->p2, p->p1, located, std::abs(p->p1 - located));
       ++checked;
     }
     // An end on a sliding point lies on the sliding curve: its distance to
@@ -164,17 +164,17 @@ int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<d
       const double d = std::isnan(da)   ? std::abs(dw)
                        : std::isnan(dw) ? std::abs(da)
                                         : std::abs(dw * da) / std::hypot(dw, da);
-      EXPECT_LT(d, 2e-5) << ForcedLabelName(label) << " curve end at force " << p.p2;
+      EXPECT_LT(d, 2e-5) << Name(label) << " curve end at force " << p.p2;
       std::printf(
           "[ measured ] %s curve end (Omega %.12f, force %.12f): the runs' %s at Omega %.12f and "
           "force %.12f, distance %.1e (scaled)\n",
-          ForcedLabelName(label), p.p1, p.p2, ForcedLabelName(which), w, a, d);
+          Name(label), p.p1, p.p2, Name(which), w, a, d);
       ++ends;
     }
-    std::printf("[ measured ] %s curve from Omega %.5f: %zu points, ends %s\n",
-                ForcedLabelName(label), s.p, c.points.size(), c.ends.Text().c_str());
+    std::printf("[ measured ] %s curve from Omega %.5f: %zu points, ends %s\n", Name(label), s.p,
+                c.points.size(), c.ends.Text().c_str());
   }
-  EXPECT_GE(seeds, 1) << ForcedBranchStatusName(run.status);
+  EXPECT_GE(seeds, 1) << Name(run.status);
   EXPECT_GE(ends, 1);
   return checked;
 }

@@ -288,7 +288,7 @@ TEST(Continuation, SameStructureAtEveryTolerance) {
       o.orbit.flow.atol = rtol * 1e-2;
       const ContinuationResult r = Continue(p, o);
       const std::string at =
-          std::string(IntegratorName(in)) + " " + MethodName(m) + " rtol " + std::to_string(rtol);
+          std::string(Name(in)) + " " + Name(m) + " rtol " + std::to_string(rtol);
       ASSERT_EQ(r.status, ContinuationStatus::kOk) << at << ": " << r.message;
       const auto gr = Labelled(r, SpecialKind::kGrazing);
       ASSERT_EQ(gr.size(), 1u) << at;
@@ -324,7 +324,7 @@ TEST(Continuation, SubcriticalStribeckKeepsItsFoldAtLooseTolerances) {
       o.orbit.flow.rtol = rtol;
       o.orbit.flow.atol = rtol * 1e-2;
       const ContinuationResult r = Continue(p, o);
-      const std::string at = std::string(IntegratorName(in)) + " rtol " + std::to_string(rtol);
+      const std::string at = std::string(Name(in)) + " rtol " + std::to_string(rtol);
       ASSERT_EQ(r.status, ContinuationStatus::kOk) << at << ": " << r.message;
       ASSERT_EQ(r.special.size(), 3u) << at;
       EXPECT_EQ(r.special[0].kind, SpecialKind::kHopf) << at;
@@ -445,7 +445,7 @@ TEST(Continuation, StartsABranchFromEveryOrbitAtTheStartInEitherDirection) {
     p.beta = c.beta;
     p.mu_s = c.mu_s;
     for (bool forward : {true, false}) {
-      SCOPED_TRACE(std::string(LawName(c.law)) + (forward ? " forward" : " backward"));
+      SCOPED_TRACE(std::string(Name(c.law)) + (forward ? " forward" : " backward"));
       const ContinuationResult r = forward ? Trace(p, "v", c.lo, c.hi) : Trace(p, "v", c.hi, c.lo);
       ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
       EXPECT_GT(CountKind(r, PointKind::kStickSlip), 10);
@@ -551,7 +551,7 @@ TEST(Continuation, StickSlipRowsAtTheDefaultsMatchTheReferenceTo1e12) {
     double from, to;
   } cases[] = {{seed, 0.2, 0.3}, {stribeck, 0.3, 0.4}, {leine, 0.07, 0.1}};
   for (const auto& c : cases) {
-    SCOPED_TRACE(LawName(c.p.law));
+    SCOPED_TRACE(Name(c.p.law));
     const ContinuationResult r = Trace(c.p, "v", c.from, c.to);
     ASSERT_EQ(r.status, ContinuationStatus::kOk) << r.message;
     int rows = 0;
@@ -563,8 +563,7 @@ TEST(Continuation, StickSlipRowsAtTheDefaultsMatchTheReferenceTo1e12) {
       const reference::StickSlipOrbit ref = reference::StickSlip(q);
       ASSERT_TRUE(ref.found) << "v = " << pt.p;
       const double T = static_cast<double>(ref.period);
-      const double scale =
-          static_cast<double>(std::max(std::abs(ref.x_min), std::abs(ref.x_max)));
+      const double scale = static_cast<double>(std::max(std::abs(ref.x_min), std::abs(ref.x_max)));
       EXPECT_NEAR(pt.period, T, 1e-12 * T) << "v = " << pt.p;
       EXPECT_NEAR(pt.extrema.x_min, static_cast<double>(ref.x_min), 1e-12 * scale)
           << "v = " << pt.p;
@@ -589,7 +588,7 @@ TEST(Continuation, PureSlipRowsNextToAHopfPointMatchTheReference) {
   for (const Case& c : {Case{LawKind::kCubic, 0.05, 0.4, "beta", 0.17, 0.16},
                         Case{LawKind::kStribeck, 0.05, 0.4, "v", 0.549, 0.555},
                         Case{LawKind::kLeine, 0.05, 1.0, "v", 1.5, 1.49}}) {
-    SCOPED_TRACE(LawName(c.law));
+    SCOPED_TRACE(Name(c.law));
     Params p;
     p.law = c.law, p.beta = c.beta, p.mu_s = c.mu_s;
     const ContinuationResult r = Trace(p, c.param, c.from, c.to);

@@ -99,7 +99,7 @@ TEST(SpecialPoints, GrazingAtTheDefaultsIsWithin1e11OfTheReference) {
       {seed, 0.39, 0.40}, {stribeck, 0.65, 0.655}, {shallow, 1.48, 1.485}, {leine, 1.33, 1.335}};
   const ParameterAxis axis("v");
   for (const auto& c : cases) {
-    SCOPED_TRACE(LawName(c.p.law) + std::string(" beta ") + std::to_string(c.p.beta));
+    SCOPED_TRACE(Name(c.p.law) + std::string(" beta ") + std::to_string(c.p.beta));
     OrbitFinder finder(Model(c.p), OrbitOptions{});
     double g0 = 0, g1 = 0;
     ASSERT_TRUE(GrazingGap(finder, axis.At(c.p, c.lo), &g0));

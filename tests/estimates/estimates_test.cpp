@@ -200,9 +200,9 @@ TEST(Estimates, RejectsNonCubicLawsAndBadOptions) {
     p.law = law;
     try {
       EstimateSeed(p);
-      ADD_FAILURE() << "no throw for " << LawName(law);
+      ADD_FAILURE() << "no throw for " << Name(law);
     } catch (const InvalidArgument& e) {
-      EXPECT_NE(std::string(e.what()).find(LawName(law)), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(Name(law)), std::string::npos) << e.what();
     }
     EXPECT_THROW(ComputeSeedRoots(p), InvalidArgument);
     EXPECT_THROW(EstimateAveraging(p), InvalidArgument);

@@ -61,7 +61,7 @@ TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouch
   const ForcedBranchRow* ad = nullptr;
   for (const ForcedBranchRow& r : b.special)
     if (std::abs(r.p - 0.41025) < 1e-3) ad = &r;
-  ASSERT_NE(ad, nullptr) << ForcedBranchStatusName(b.status) << " " << b.message;
+  ASSERT_NE(ad, nullptr) << Name(b.status) << " " << b.message;
   EXPECT_EQ(ad->label, ForcedLabel::kAD) << ad->description;
   ASSERT_DOUBLE_EQ(ad->xdot0, 0.1);  // stuck at the section: the reference's start
   Real lo = 0.4101L, hi = 0.4104L;
@@ -95,7 +95,7 @@ TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
     if (std::abs(r.p - 0.35811) < 1e-4) near.push_back(r);
   ASSERT_EQ(near.size(), 1u) << near.size() << " labels; " << b.message;
   EXPECT_EQ(near[0].label, ForcedLabel::kAD) << near[0].description;
-  EXPECT_EQ(b.status, ForcedBranchStatus::kStepTooSmall);
+  EXPECT_EQ(b.status, BranchStatus::kStepTooSmall);
   for (const ForcedBranchRow& r : b.rows) EXPECT_LE(r.p, near[0].p);  // nothing beyond the edge
   ASSERT_DOUBLE_EQ(near[0].xdot0, 0.1);
   auto orbit = [&](Real w) {  // a 1-stick orbit near the edge's state
@@ -126,7 +126,7 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
   const ForcedBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_FALSE(b.rows.empty());
   EXPECT_EQ(b.rows.back().p, 0.5);
   for (size_t i = 1; i < b.rows.size(); ++i)  // the restart once wrote its start twice
@@ -156,7 +156,7 @@ TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
   o.palc.ds_max = o.palc.ds = 0.01;
   o.max_jumps = 0;
   const ForcedBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kStepTooSmall) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kStepTooSmall) << b.message;
   EXPECT_NE(b.message.find("turned back after a jump, max_jumps = 0"), std::string::npos)
       << b.message;
   EXPECT_EQ(b.jumps, 0);

@@ -37,7 +37,7 @@ TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
     const double to = from == 0.75 ? 2.5 : 0.75;
     const double V = 1 / (1 - from * from);
     const ForcedBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, o);
-    EXPECT_EQ(b.status, ForcedBranchStatus::kUnbounded) << b.message;
+    EXPECT_EQ(b.status, BranchStatus::kUnbounded) << b.message;
     EXPECT_GT(b.rows.size(), 20u);
     for (const ForcedBranchRow& r : b.rows) {
       if (r.sticks > 0) continue;
@@ -48,7 +48,7 @@ TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
       p_min = std::min(p_min, r.p), p_max = std::max(p_max, r.p);
     }
     std::printf("[ measured ] from %g: %zu rows, status %s, %d evaluations, %.3f s\n", from,
-                b.rows.size(), ForcedBranchStatusName(b.status), b.evaluations, b.seconds);
+                b.rows.size(), Name(b.status), b.evaluations, b.seconds);
   }
   EXPECT_EQ(p_min, 0.75);
   EXPECT_EQ(p_max, 2.5);
@@ -74,7 +74,7 @@ TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   o.palc.ds_max = 0.05;
   const ForcedBranch b =
       ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.x, transient.end.xdot, o);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   std::vector<ForcedBranchRow> pds;  // the sliding points are tested in forced_sliding_test
   for (const ForcedBranchRow& r : b.special)
     if (r.label == ForcedLabel::kPD) pds.push_back(r);

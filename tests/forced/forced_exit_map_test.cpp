@@ -106,7 +106,7 @@ TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
 TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
   const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
   const ForcedBranch b = testing_util::TraceOmega(p, 0.62, 0.605, ForcedBranchOptions());
-  ASSERT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int checked = 0;
   double lowest = 0;
   for (const ForcedBranchRow& r : b.rows) {

@@ -93,7 +93,7 @@ void ExpectDescriptionsFollowCounts(const ForcedBranch& b) {
 void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, double hi,
                      const ForcedBranchOptions& o, const char* name) {
   const ForcedBranch b = testing_util::TraceOmega(p, from, to, o);
-  ASSERT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ExpectDescriptionsFollowCounts(b);
   std::vector<double> pd;
   for (const ForcedBranchRow& s : b.special)
@@ -131,7 +131,7 @@ TEST(ForcedFlip, TwoCrossingsInOneLongStep) {
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 0.05;
   const ForcedBranch b = testing_util::TraceOmega(p, 0.62, 0.5795, o);
-  ASSERT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int pd = 0, steps = 0;
   for (const ForcedBranchRow& r : b.rows) (r.label == ForcedLabel::kPD ? pd : steps)++;
   std::printf("[ measured ] %d rows, %d PD points\n", steps, pd);

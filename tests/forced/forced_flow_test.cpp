@@ -151,17 +151,17 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
     rq.stop_at_exit = 1;
     const double x0 = p.base.mu_s - 2 * p.base.beta * p.base.v;
     const ForcedRun run = ForcedFlow(m, o).Run({0, x0, p.base.v, Mode::kSlipBelow}, rq);
-    ASSERT_EQ(run.exits, 1) << LawName(law) << ": " << run.message << " t = " << run.end.t;
+    ASSERT_EQ(run.exits, 1) << Name(law) << ": " << run.message << " t = " << run.end.t;
     const reference::StickSlipOrbit ref = reference::StickSlip(p.base);
     ASSERT_TRUE(ref.found);
-    EXPECT_NEAR(run.end.t, static_cast<double>(ref.period), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.end.t, static_cast<double>(ref.period), 1e-11) << Name(law);
     if (law == LawKind::kCoulomb) {  // the closed form
       EXPECT_NEAR(run.end.t, static_cast<double>(reference::CoulombPeriodBeta0(0.4L, 0.25L, 0.25L)),
                   1e-12);
     }
-    EXPECT_NEAR(run.extrema.x_max, static_cast<double>(ref.x_max), 1e-11) << LawName(law);
-    EXPECT_NEAR(run.extrema.x_min, static_cast<double>(ref.x_min), 1e-11) << LawName(law);
-    EXPECT_NEAR(run.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << LawName(law);
+    EXPECT_NEAR(run.extrema.x_max, static_cast<double>(ref.x_max), 1e-11) << Name(law);
+    EXPECT_NEAR(run.extrema.x_min, static_cast<double>(ref.x_min), 1e-11) << Name(law);
+    EXPECT_NEAR(run.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << Name(law);
   }
 }
 

@@ -66,7 +66,7 @@ TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
   const ForcedBranch b = testing_util::Trace(Scene(0.6), ForcedAxis::kV, 0.6, 0.3, o);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 1u);
   const ForcedBranchRow& ns = b.special[0];
   EXPECT_EQ(ns.label, ForcedLabel::kNS);
@@ -103,7 +103,7 @@ TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
   const ForcedBranch b = testing_util::TraceOmega(p, 2, 0.6, o);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 2u);
   for (const ForcedBranchRow& ns : b.special) {
     EXPECT_EQ(ns.label, ForcedLabel::kNS);
@@ -152,7 +152,7 @@ TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
   ForcedParams p = Scene(0.41);
   p.force = 0.113;
   const ForcedBranch b = testing_util::TraceOmega(p, 2.4, 1.6, ForcedBranchOptions());
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int pd = 0;
   for (const ForcedBranchRow& s : b.special) {
     EXPECT_NE(s.label, ForcedLabel::kNS)

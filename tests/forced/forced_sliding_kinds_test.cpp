@@ -51,7 +51,7 @@ TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
   const ForcedBranchRow* point = nullptr;
   for (const ForcedBranchRow& r : b.special)
     if (std::abs(r.p - 1.1962) < 1e-3) point = &r;
-  ASSERT_NE(point, nullptr) << ForcedBranchStatusName(b.status) << " " << b.message;
+  ASSERT_NE(point, nullptr) << Name(b.status) << " " << b.message;
   EXPECT_EQ(point->label, ForcedLabel::kCR) << point->description;
   // The reference: the stable orbit (multiplier -0.24) by 40 periods of the
   // closed-form pieces from the located point's state; g = |force at the
@@ -91,7 +91,7 @@ TEST(ForcedSlidingKinds, StickEntryReachingTheBandIsCrossingSliding) {
     if (std::abs(r.p - 0.6194) < 1e-3) gr = &r;
   for (const ForcedBranchRow& r : b2.special)
     if (std::abs(r.p - 0.7317) < 1e-3) cr = &r;
-  ASSERT_TRUE(gr && cr) << ForcedBranchStatusName(b.status) << " " << b.message;
+  ASSERT_TRUE(gr && cr) << Name(b.status) << " " << b.message;
   EXPECT_EQ(gr->label, ForcedLabel::kGR) << gr->description;
   EXPECT_EQ(cr->label, ForcedLabel::kCR) << cr->description;
   // Omega |P| = v, |P| = A / |1 - Omega^2 + 2 i beta Omega|.

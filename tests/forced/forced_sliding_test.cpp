@@ -56,7 +56,7 @@ TEST(ForcedSliding, GrazingSlidingMatchesTheSteadySlipClosedForm) {
   Real omegas[2];
   GrazingOmegas(0.2L, 0.05L, 0.3L, omegas);
   const ForcedBranch b = Trace(Coulomb(0.3, 0.3, 0.2, 0.05, 0.3), 0.45, 2.5);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   EXPECT_EQ(b.rows.back().p, 2.5);
   const auto gr = WithLabel(b, ForcedLabel::kGR);
   ASSERT_EQ(gr.size(), 2u);
@@ -88,8 +88,8 @@ TEST(ForcedSliding, GrazingWithStaticFrictionJumpsAndGoesOn) {
   std::printf(
       "[ measured ] mu_s > mu_k: GR at Omega = %.15g, closed form %.15Lg (%.1e); "
       "branch %s after %zu rows\n",
-      gr[0].p, omegas[0], std::abs(gr[0].p - static_cast<double>(omegas[0])),
-      ForcedBranchStatusName(b.status), b.rows.size());
+      gr[0].p, omegas[0], std::abs(gr[0].p - static_cast<double>(omegas[0])), Name(b.status),
+      b.rows.size());
 }
 
 // The half-wave-symmetric non-stop orbit on a floor: from a reversal
@@ -126,7 +126,7 @@ bool SymmetricReversal(const ref::Setup& s, Real* t_r, Real* x_r) {
 TEST(ForcedSliding, CrossingSlidingMatchesTheClosedFormReversal) {
   ForcedParams p = Coulomb(0.4, 0.25, 0, 0.05, 0.5);
   const ForcedBranch b = Trace(p, 0.5, 2.5);
-  EXPECT_EQ(b.status, ForcedBranchStatus::kReachedEnd) << b.message;
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   const auto cr = WithLabel(b, ForcedLabel::kCR);
   ASSERT_EQ(cr.size(), 2u);
   for (const ForcedBranchRow& point : cr) {

@@ -46,8 +46,7 @@ ForcedBranchRow FirstPeriodDoubling() {
       ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.x, tr.end.xdot, Options());
   for (const ForcedBranchRow& r : b.special)
     if (r.label == ForcedLabel::kPD) return r;
-  ADD_FAILURE() << "no PD on the m = 1 branch: " << ForcedBranchStatusName(b.status) << " "
-                << b.message;
+  ADD_FAILURE() << "no PD on the m = 1 branch: " << Name(b.status) << " " << b.message;
   return {};
 }
 
@@ -57,8 +56,8 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   ASSERT_EQ(pd.m, 1);
   const ForcedBranch d = ContinueDoubled(StribeckScene(pd.p), ForcedAxis::kOmega, pd.x0, pd.xdot0,
                                          pd.p - 0.006, pd.p + 0.006, Options());
-  ASSERT_GE(d.rows.size(), 4u) << ForcedBranchStatusName(d.status) << " " << d.message;
-  EXPECT_EQ(d.status, ForcedBranchStatus::kReachedEnd) << d.message;
+  ASSERT_GE(d.rows.size(), 4u) << Name(d.status) << " " << d.message;
+  EXPECT_EQ(d.status, BranchStatus::kReachedEnd) << d.message;
   // Supercritical: the doubled branch opens toward lower Omega, stable there.
   const ForcedBranchRow& first = d.rows.front();
   EXPECT_LT(first.p, pd.p);
@@ -94,8 +93,7 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   EXPECT_LT(std::abs(r0.multipliers[0]), 1);      // stable where it opens
   EXPECT_GT(std::abs(single.multipliers[0]), 1);  // the m = 1 orbit is not
   for (const ForcedBranchRow& r : d.special)
-    std::printf("[ measured ] doubled branch: %s at Omega = %.15g\n", ForcedLabelName(r.label),
-                r.p);
+    std::printf("[ measured ] doubled branch: %s at Omega = %.15g\n", Name(r.label), r.p);
   // Away from the PD, the independent map's attractor is the doubled orbit:
   // from the library's 2m point, 400 reference periods later the map still
   // alternates between it and its image (the m = 1 orbit there is unstable).
@@ -133,7 +131,7 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged);
   const ForcedBranch d =
       ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.x, orbit.start.xdot, 0.6, 0.8, o);
-  EXPECT_EQ(d.status, ForcedBranchStatus::kStartFailed);
+  EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());
   EXPECT_THROW(ContinueDoubled(p, ForcedAxis::kOmega, 0, 0, 0.8, 0.9, o), InvalidArgument);

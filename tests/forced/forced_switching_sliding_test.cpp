@@ -174,7 +174,7 @@ TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
   ASSERT_FALSE(b.rows.empty()) << b.message;
   int cr_near_omega1 = 0;
   for (const ForcedBranchRow& r : b.special) {
-    std::printf("[ measured ] %s at Omega = %.15g: %s\n", ForcedLabelName(r.label), r.p,
+    std::printf("[ measured ] %s at Omega = %.15g: %s\n", Name(r.label), r.p,
                 r.description.c_str());
     EXPECT_NE(r.label, ForcedLabel::kSW) << r.description;
     if (r.label == ForcedLabel::kCR && std::abs(r.p - 0.4807234) < 1e-4) ++cr_near_omega1;

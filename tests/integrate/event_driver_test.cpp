@@ -170,7 +170,7 @@ TEST(EventList, MasksCombineDirectionsAndFunctionsAreShared) {
 
 INSTANTIATE_TEST_SUITE_P(Steppers, EventDriver,
                          ::testing::Values(Integrator::kTaylor, Integrator::kCvode),
-                         [](const auto& info) { return std::string(IntegratorName(info.param)); });
+                         [](const auto& info) { return std::string(Name(info.param)); });
 
 }  // namespace
 }  // namespace stickslip

@@ -238,7 +238,7 @@ TEST(Flow, StartsWithinRoundingOfTheBeltSpeedStick) {
       int samples = 0;
       const FlowResult r = flow.Run(0.0, Vec2(0.0, xdot0), m.ModeAt(Vec2(0.0, xdot0)), stop, false,
                                     0.01, [&](const Sample&) { ++samples; });
-      const std::string at = std::string(IntegratorName(in)) + " from x' = v + " +
+      const std::string at = std::string(Name(in)) + " from x' = v + " +
                              std::to_string((xdot0 - p.v) / 2.8e-17) + " * 2.8e-17";
       ASSERT_TRUE(r.ok()) << at << ": " << r.message;
       EXPECT_EQ(r.t, 20.0) << at;
@@ -263,9 +263,9 @@ TEST(Flow, RunsPastOneBillion) {
     StopRule stop;
     stop.t_max = 1e10;
     const FlowResult r = flow.Run(0.0, Vec2(0.0, 0.3), stop);
-    EXPECT_EQ(r.status, FlowStatus::kTimeLimit) << IntegratorName(in);
-    EXPECT_EQ(r.t, 1e10) << IntegratorName(in);
-    EXPECT_NEAR(r.z[0], m.SteadySliding().x, 1e-9) << IntegratorName(in);
+    EXPECT_EQ(r.status, FlowStatus::kTimeLimit) << Name(in);
+    EXPECT_EQ(r.t, 1e10) << Name(in);
+    EXPECT_NEAR(r.z[0], m.SteadySliding().x, 1e-9) << Name(in);
   }
 }
 

@@ -214,8 +214,8 @@ TEST(Taylor, FindsATouchShorterThanAStep) {
   for (const FlowOptions& o : {Taylor(), Cvode()}) {
     const double tol = o.integrator == Integrator::kTaylor ? 1e-11 : 1e-7;
     const FlowResult r = RunTouch(t, o);
-    ASSERT_EQ(r.status, FlowStatus::kStick) << IntegratorName(o.integrator);
-    EXPECT_NEAR(r.t, t.Arrival(), tol) << IntegratorName(o.integrator);
+    ASSERT_EQ(r.status, FlowStatus::kStick) << Name(o.integrator);
+    EXPECT_NEAR(r.t, t.Arrival(), tol) << Name(o.integrator);
     EXPECT_NEAR(r.z[0], t.p.mu_k - t.R * std::cos(t.s0 + t.Arrival()), tol);
   }
 }

@@ -10,9 +10,9 @@
 
 #include "app_test_util.hpp"
 #include "cli/gnuplot.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/io/branch_report.hpp"
 #include "stickslip/io/figure_style.hpp"
-#include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
 namespace {
@@ -84,7 +84,7 @@ TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
   if (!HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
   const std::string seed = " --study " + kStudies + "/seed.ini";
   for (FigureFormat f : {FigureFormat::kPdf, FigureFormat::kSvg}) {
-    const std::string ext = FigureFormatName(f), out = dir_ + "/" + ext;
+    const std::string ext = Name(f), out = dir_ + "/" + ext;
     ASSERT_EQ(::mkdir(out.c_str(), 0755), 0);
     ASSERT_EQ(Run("ss_continue", seed + " --format " + ext + " --out " + out + "/c"), 0) << err_;
     for (const std::string& fig : BifurcationFigures(true, f)) {

@@ -49,7 +49,7 @@ TEST(EnergyBound, TheReferenceFindsNoOrbitWhereItHolds) {
   const Params cases[] = {With(LawKind::kCubic, 0.05, 0.8), With(LawKind::kStribeck, 0.05, 1.6),
                           With(LawKind::kLeine, 0.05, 10, 1.0), With(LawKind::kCoulomb, 0.1, 0.8)};
   for (const Params& p : cases) {
-    SCOPED_TRACE(std::string(LawName(p.law)) + " v = " + std::to_string(p.v));
+    SCOPED_TRACE(std::string(Name(p.law)) + " v = " + std::to_string(p.v));
     ASSERT_TRUE(Holds(p));
     // The slip phase from the exit point never reaches the stick set again ...
     EXPECT_FALSE(reference::StickSlip(p, 1e-14L, 200).found);

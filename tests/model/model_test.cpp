@@ -47,8 +47,8 @@ TEST(Model, QuinticFrictionAndDerivatives) {
     q.law = law;
     const Friction g(q);
     const double s = 0.3, h = 1e-5;
-    EXPECT_NEAR(g.D2Mu(s), (g.DMu(s + h) - g.DMu(s - h)) / (2 * h), 1e-8) << LawName(law);
-    EXPECT_NEAR(g.D3Mu(s), (g.D2Mu(s + h) - g.D2Mu(s - h)) / (2 * h), 1e-7) << LawName(law);
+    EXPECT_NEAR(g.D2Mu(s), (g.DMu(s + h) - g.DMu(s - h)) / (2 * h), 1e-8) << Name(law);
+    EXPECT_NEAR(g.D3Mu(s), (g.D2Mu(s + h) - g.D2Mu(s - h)) / (2 * h), 1e-7) << Name(law);
   }
 }
 
@@ -185,9 +185,9 @@ TEST(Model, ModeAfterArrival) {
 }
 
 TEST(Model, ModeNames) {
-  EXPECT_STREQ(ModeName(Mode::kSlipBelow), "slip-below");
-  EXPECT_STREQ(ModeName(Mode::kStick), "stick");
-  EXPECT_STREQ(ModeName(Mode::kSlipAbove), "slip-above");
+  EXPECT_STREQ(Name(Mode::kSlipBelow), "slip-below");
+  EXPECT_STREQ(Name(Mode::kStick), "stick");
+  EXPECT_STREQ(Name(Mode::kSlipAbove), "slip-above");
 }
 
 TEST(Model, SaltationEnteringStick) {

@@ -85,7 +85,7 @@ TEST(Params, RejectsMuKAtOrAboveMuS) {
     p.law = law;
     EXPECT_EQ(Rejection(p), "");
     p.mu_k = 0.45;
-    EXPECT_TRUE(Contains(Rejection(p), "mu_k = 0.45")) << LawName(law);
+    EXPECT_TRUE(Contains(Rejection(p), "mu_k = 0.45")) << Name(law);
   }
 }
 
@@ -146,7 +146,7 @@ TEST(Params, GetAndSetByName) {
 
 TEST(Params, LawNamesRoundTrip) {
   for (LawKind law : {LawKind::kCubic, LawKind::kCoulomb, LawKind::kStribeck, LawKind::kLeine})
-    EXPECT_EQ(LawFromName(LawName(law)), law);
+    EXPECT_EQ(LawFromName(Name(law)), law);
   EXPECT_THROW(LawFromName("viscous"), InvalidArgument);
   EXPECT_THROW(LawFromName("Cubic"), InvalidArgument);
 }
@@ -262,7 +262,7 @@ TEST(Params, DefaultRangesAreValidAtBothEnds) {
       for (double x : {r.from, r.to}) {
         Params q = base;
         SetParameter(q, name, x);
-        EXPECT_EQ(ValidationError(q), "") << LawName(law) << " " << name << " = " << x;
+        EXPECT_EQ(ValidationError(q), "") << Name(law) << " " << name << " = " << x;
       }
     }
   }

@@ -89,7 +89,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedOrbitStatus", ForcedOrbitStatus::kFlowFailed);
   Covers("ForcedScanStatus", ForcedScanStatus::kCancelled);
   Covers("ForcedAxis", ForcedAxis::kBeta);
-  Covers("ForcedBranchStatus", ForcedBranchStatus::kContactLost);
+  Covers("BranchStatus", BranchStatus::kContactLost);
   Covers("ForcedLabel", ForcedLabel::kSL);
   Covers("ForcedSimulationStatus", ForcedSimulationStatus::kRowLimit);
   Covers("ForcedSection", ForcedSection::kExit);
@@ -100,13 +100,13 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
 
 // Names the files and options carry (docs/formats.md, docs/cli.md).
 TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
-  EXPECT_STREQ(LawName(LawKind::kStribeck), "stribeck");
-  EXPECT_STREQ(IntegratorName(Integrator::kCvode), "cvode");
-  EXPECT_STREQ(ForcedLabelName(ForcedLabel::kNone), "");
-  EXPECT_STREQ(ForcedLabelName(ForcedLabel::kPD), "PD");
-  EXPECT_STREQ(ForcedCodim2Name(ForcedCodim2Label::kFoldFlip), "LPPD");
-  EXPECT_STREQ(ForcedAxisName(ForcedAxis::kOmega), "omega");
-  EXPECT_STREQ(FigureFormatName(FigureFormat::kPng), "png");
+  EXPECT_STREQ(Name(LawKind::kStribeck), "stribeck");
+  EXPECT_STREQ(Name(Integrator::kCvode), "cvode");
+  EXPECT_STREQ(Name(ForcedLabel::kNone), "");
+  EXPECT_STREQ(Name(ForcedLabel::kPD), "PD");
+  EXPECT_STREQ(Name(ForcedCodim2Label::kFoldFlip), "LPPD");
+  EXPECT_STREQ(Name(ForcedAxis::kOmega), "omega");
+  EXPECT_STREQ(Name(FigureFormat::kPng), "png");
 }
 
 TEST(Names, TablesCoverEveryEnumerator) {

@@ -68,7 +68,7 @@ TEST(OrbitScan, FindsEveryPureSlipOrbitAndMatchesTheReference) {
                         {LawKind::kCubic, 0.05, 0.25, 0.4, 0}};
   for (const Case& c : cases) {
     const Params p = At(c);
-    SCOPED_TRACE(std::string(LawName(c.law)) + " v = " + std::to_string(c.v));
+    SCOPED_TRACE(std::string(Name(c.law)) + " v = " + std::to_string(c.v));
     const PeriodicOrbits r = FindPeriodicOrbits(Model(p), Tight());
     ASSERT_TRUE(r.ok()) << r.message;
     ASSERT_EQ(static_cast<int>(r.pure_slip.size()), c.pure_slip);
@@ -149,7 +149,7 @@ TEST(OrbitScan, KeepsTheOrbitInTheLastBracketBeforeSticking) {
                         {LawKind::kStribeck, 0.05, 0.651, 0.4, 1}};
   for (const Case& c : cases) {
     const Params p = At(c);
-    SCOPED_TRACE(std::string(LawName(c.law)) + " v = " + std::to_string(c.v));
+    SCOPED_TRACE(std::string(Name(c.law)) + " v = " + std::to_string(c.v));
     const std::vector<reference::PureSlipOrbit> ref = ReferenceOrbitsBelowStick(p);
     ASSERT_EQ(static_cast<int>(ref.size()), c.pure_slip);
     for (const OrbitScanOptions& o : {OrbitScanOptions(), Tight()}) {

@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "coulomb_damped.hpp"
+#include "numerics/roots.hpp"
 #include "reference/reference_orbit.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "numerics/roots.hpp"
 
 namespace stickslip {
 namespace {
@@ -44,8 +44,7 @@ TEST(Orbit, StickSlipMatchesTheReferenceIncludingHardCases) {
     EXPECT_NEAR(r.orbit.t_stick, static_cast<double>(ref.t_stick), scale) << "v = " << v;
     EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.extrema.x_min, static_cast<double>(ref.x_min), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
-        << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
     EXPECT_GT(r.orbit.t_stick, 0.0);
   }
 }
@@ -82,8 +81,7 @@ TEST(Orbit, PureSlipMatchesReferenceAndTheTraceFormula) {
     ASSERT_TRUE(ref.found);
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.extrema.x_max, static_cast<double>(ref.x_max), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
-        << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
     // Trace formula exp(oint(-2 beta + F'(x' - v)) dt), integrated by the reference.
     EXPECT_NEAR(r.orbit.multiplier, static_cast<double>(ref.multiplier), 1e-8) << "v = " << v;
     EXPECT_NEAR(std::abs(r.orbit.eigenvalues[0] - 1.0), 0.0, 1e-7);
@@ -239,10 +237,8 @@ TEST(Orbit, PureSlipAtDefaultOptionsMatchesTheReferenceFixedPoint) {
     ASSERT_TRUE(ref.found) << "v = " << v;
     EXPECT_NEAR(r.orbit.start[0], static_cast<double>(ref.x_section), 1e-9) << "v = " << v;
     EXPECT_NEAR(r.orbit.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9)
-        << "v = " << v;
-    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.xdot_max), 1e-9)
-        << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-9) << "v = " << v;
+    EXPECT_NEAR(r.orbit.extrema.xdot_max, static_cast<double>(ref.xdot_max), 1e-9) << "v = " << v;
   }
 }
 
@@ -263,7 +259,7 @@ TEST(Orbit, PureSlipAmplitudeIsAtTheIntegrationNoiseFromAnyGuess) {
     double a;
   } cases[] = {{seed, 0.05}, {stribeck, 0.05}, {leine, 0.05}, {large, 2.5}};
   for (const auto& c : cases) {
-    SCOPED_TRACE(std::string(LawName(c.p.law)) + " v " + std::to_string(c.p.v));
+    SCOPED_TRACE(std::string(Name(c.p.law)) + " v " + std::to_string(c.p.v));
     const reference::Real xbar = reference::Law(c.p).Mu(c.p.v);
     const reference::PureSlipOrbit ref = reference::PureSlip(c.p, xbar + c.a);
     ASSERT_TRUE(ref.found);
@@ -291,7 +287,7 @@ TEST(Orbit, ReturnMapOfASmallOrbitIsAccurateRelativeToItsAmplitude) {
   leine.law = LawKind::kLeine, leine.mu_s = 1, leine.v = 1.4944;  // HB at 1.492409
   const double a = 1e-4;
   for (const Params& p : {seed, stribeck, leine}) {
-    SCOPED_TRACE(LawName(p.law));
+    SCOPED_TRACE(Name(p.law));
     OrbitFinder finder{Model(p), OrbitOptions{}};
     double g = 0;
     ASSERT_EQ(finder.Desingularised(a, &g, nullptr), OrbitStatus::kOk);

@@ -84,7 +84,7 @@ class Rng {
 std::string Describe(const ss::Params& p) {
   std::ostringstream os;
   os.precision(17);
-  os << "law=" << ss::LawName(p.law);
+  os << "law=" << ss::Name(p.law);
   for (const auto& name : ss::ParameterNames(p.law))
     os << " " << name << "=" << ss::GetParameter(p, name);
   return os.str();
@@ -313,7 +313,7 @@ void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& 
   std::ostringstream start;
   start.precision(17);
   start << "from (" << z0[0] << ", " << z0[1] << ") to t = " << stop.t_max;
-  tally.Add(Tagged(sampled ? "simulate (sampled)" : "simulate", in), ss::FlowStatusName(r.status),
+  tally.Add(Tagged(sampled ? "simulate (sampled)" : "simulate", in), ss::Name(r.status),
             r.ok() ? "" : what + " " + start.str() + ": " + r.message);
   EXPECT_EQ(bad_samples, 0) << what << ": non-finite samples";
   if (r.status == ss::FlowStatus::kCancelled) {
@@ -323,7 +323,7 @@ void Simulate(const ss::Model& model, Rng& rng, const std::string& what, Tally& 
   }
   if (!r.ok()) {
     EXPECT_FALSE(r.message.empty())
-        << what << ": status " << ss::FlowStatusName(r.status) << " without a message";
+        << what << ": status " << ss::Name(r.status) << " without a message";
     return;
   }
   EXPECT_EQ(r.status, ss::FlowStatus::kTimeLimit) << what;
@@ -364,7 +364,7 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally, s
     return true;
   };
   const ss::OrbitResult ssr = finder.StickSlip();
-  tally.Add(Tagged("stick-slip", in), ss::OrbitStatusName(ssr.status),
+  tally.Add(Tagged("stick-slip", in), ss::Name(ssr.status),
             ssr.ok() || ssr.status == ss::OrbitStatus::kNoReturn ? "" : what + ": " + ssr.message);
   if (hung(ssr.status, "StickSlip()", ssr.message)) return;
   if (ssr.ok()) {
@@ -383,7 +383,7 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally, s
     return;
   }
   EXPECT_FALSE(ssr.message.empty())
-      << what << ": status " << ss::OrbitStatusName(ssr.status) << " without a message";
+      << what << ": status " << ss::Name(ssr.status) << " without a message";
   const double a_hi = 1.5 * (model.params().mu_s + model.v());
   cap.Restart();
   const auto scan_start = CpuClock::now();
@@ -402,15 +402,14 @@ void FindOrbits(const ss::Model& model, const std::string& what, Tally& tally, s
   // One Newton shooting from a middle guess: converged or a clear status.
   cap.Restart();
   const ss::OrbitResult ps = finder.PureSlip(0.3 * a_hi);
-  tally.Add(Tagged("pure-slip", in), ss::OrbitStatusName(ps.status),
-            ps.ok() ? "" : what + ": " + ps.message);
+  tally.Add(Tagged("pure-slip", in), ss::Name(ps.status), ps.ok() ? "" : what + ": " + ps.message);
   if (hung(ps.status, "PureSlip(" + std::to_string(0.3 * a_hi) + ")", ps.message)) return;
   if (ps.ok()) {
     const std::string bad = NonFinite(ps.orbit);
     EXPECT_TRUE(bad.empty()) << what << ": pure-slip orbit with " << bad;
   } else {
     EXPECT_FALSE(ps.message.empty())
-        << what << ": status " << ss::OrbitStatusName(ps.status) << " without a message";
+        << what << ": status " << ss::Name(ps.status) << " without a message";
   }
 }
 
@@ -424,19 +423,18 @@ void ContinueAround(const ss::Params& p, double cap_s, const std::string& what, 
   const auto start = CpuClock::now();
   o.cancelled = [&] { return Seconds(start) > cap_s; };
   const ss::ContinuationResult r = ss::Continue(p, o);
-  tally.Add("continue", ss::ContinuationStatusName(r.status),
-            r.partial() ? what + ": " + r.message : "");
+  tally.Add("continue", ss::Name(r.status), r.partial() ? what + ": " + r.message : "");
   if (r.partial()) {
     EXPECT_FALSE(r.message.empty())
-        << what << ": status " << ss::ContinuationStatusName(r.status) << " without a message";
+        << what << ": status " << ss::Name(r.status) << " without a message";
   }
   if (r.status == ss::ContinuationStatus::kOk) {
     EXPECT_FALSE(r.points.empty()) << what;
   }
   for (size_t i = 0; i < r.points.size(); ++i) {
     const std::string bad = NonFinite(r.points[i]);
-    EXPECT_TRUE(bad.empty()) << what << ": point " << i << " ("
-                             << ss::PointKindName(r.points[i].kind) << ") with " << bad;
+    EXPECT_TRUE(bad.empty()) << what << ": point " << i << " (" << ss::Name(r.points[i].kind)
+                             << ") with " << bad;
     const double p_i = r.points[i].p;
     EXPECT_TRUE(p_i >= o.from - 1e-12 && p_i <= o.to + 1e-12)
         << what << ": point " << i << " at v = " << p_i << " outside the range";
@@ -528,8 +526,7 @@ TEST(Robustness, SimulationSettlesOnStableSteadySliding) {
   const ss::FlowResult r =
       flow.Run(0.0, ss::Vec2(0.0, 0.3), model.ModeAt(ss::Vec2(0.0, 0.3)), stop,
                /*variational=*/false, 0.01, [&](const ss::Sample&) { ++samples; });
-  EXPECT_EQ(r.status, ss::FlowStatus::kTimeLimit)
-      << ss::FlowStatusName(r.status) << ": " << r.message;
+  EXPECT_EQ(r.status, ss::FlowStatus::kTimeLimit) << ss::Name(r.status) << ": " << r.message;
   if (r.status == ss::FlowStatus::kTimeLimit) {
     EXPECT_NEAR(r.z[0], model.SteadySliding().x, 1e-8);
     EXPECT_NEAR(r.z[1], 0.0, 1e-8);
@@ -555,8 +552,7 @@ TEST(Robustness, UnsampledSimulationSettlesOnStableSteadySliding) {
   ss::StopRule stop;
   stop.t_max = 400;
   const ss::FlowResult r = flow.Run(0.0, ss::Vec2(0.35245194123532653, -0.48918052828254088), stop);
-  EXPECT_EQ(r.status, ss::FlowStatus::kTimeLimit)
-      << ss::FlowStatusName(r.status) << ": " << r.message;
+  EXPECT_EQ(r.status, ss::FlowStatus::kTimeLimit) << ss::Name(r.status) << ": " << r.message;
   if (r.status == ss::FlowStatus::kTimeLimit) {
     EXPECT_NEAR(r.z[0], model.SteadySliding().x, 1e-8);
     EXPECT_NEAR(r.z[1], 0.0, 1e-8);
@@ -580,8 +576,7 @@ TEST(Robustness, StickSlipOnStableSlidingIsNoReturn) {
   Cap cap(kCallCap);
   finder.flow().set_cancel(cap.Hook());
   const ss::OrbitResult r = finder.StickSlip();
-  EXPECT_EQ(r.status, ss::OrbitStatus::kNoReturn)
-      << ss::OrbitStatusName(r.status) << ": " << r.message;
+  EXPECT_EQ(r.status, ss::OrbitStatus::kNoReturn) << ss::Name(r.status) << ": " << r.message;
 }
 
 // Another model whose slip phase settles on steady sliding (at x = 1.95):
@@ -603,8 +598,7 @@ TEST(Robustness, OrbitSearchOnStableSlidingDoesNotFailInCvode) {
   Cap cap(kCallCap);
   finder.flow().set_cancel(cap.Hook());
   const ss::OrbitResult r = finder.StickSlip();
-  EXPECT_EQ(r.status, ss::OrbitStatus::kNoReturn)
-      << ss::OrbitStatusName(r.status) << ": " << r.message;
+  EXPECT_EQ(r.status, ss::OrbitStatus::kNoReturn) << ss::Name(r.status) << ": " << r.message;
   const double a_hi = 1.5 * (p.mu_s + p.v);
   cap.Restart();
   finder.PureSlipScan(0.005, a_hi, 12);
@@ -693,9 +687,8 @@ TEST(Robustness, ContinuePointsStayInRange) {
   const ss::ContinuationResult r = ss::Continue(p, o);
   EXPECT_EQ(r.status, ss::ContinuationStatus::kOk) << r.message;
   for (const auto& pt : r.points)
-    EXPECT_TRUE(pt.p >= o.from && pt.p <= o.to)
-        << ss::PointKindName(pt.kind) << " point at v = " << pt.p << " outside [" << o.from << ", "
-        << o.to << "]";
+    EXPECT_TRUE(pt.p >= o.from && pt.p <= o.to) << ss::Name(pt.kind) << " point at v = " << pt.p
+                                                << " outside [" << o.from << ", " << o.to << "]";
 }
 
 // Options the caller got wrong are the one exception the library may throw.

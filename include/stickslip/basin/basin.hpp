@@ -25,7 +25,6 @@ struct EnumNames<Fate> {
       {Fate::kUndecided, "undecided"},
   };
 };
-const char* FateName(Fate f);  // "steady-sliding", "stick-slip", "pure-slip", "undecided"
 
 struct BasinOptions {
   // nx * ny's upper bound (the grid's starts).
@@ -71,7 +70,6 @@ struct EnumNames<BasinStatus> {
       {BasinStatus::kCancelled, "cancelled"},
   };
 };
-const char* BasinStatusName(BasinStatus s);
 
 struct BasinResult {
   BasinStatus status = BasinStatus::kOk;

@@ -21,7 +21,6 @@
 namespace stickslip {
 
 enum class AttractorKind { kPeriodic, kRest, kChaotic, kUndecided, kUnbounded, kFailed };
-const char* AttractorKindName(AttractorKind k);  // "periodic", "rest", "chaotic", ...
 template <>
 struct EnumNames<AttractorKind> {
   static constexpr NamedValue<AttractorKind> kTable[] = {

@@ -56,7 +56,6 @@ enum class LyapunovStatus {
   kDiverged,    ///< |x| or |x'| passed max_amplitude
   kCancelled,
 };
-const char* LyapunovStatusName(LyapunovStatus s);
 template <>
 struct EnumNames<LyapunovStatus> {
   static constexpr NamedValue<LyapunovStatus> kTable[] = {

@@ -19,7 +19,6 @@
 namespace stickslip {
 
 enum class SweepDirection { kUp, kDown };
-const char* SweepDirectionName(SweepDirection d);  // "up", "down"
 template <>
 struct EnumNames<SweepDirection> {
   static constexpr NamedValue<SweepDirection> kTable[] = {

@@ -157,7 +157,6 @@ struct EnumNames<Region> {
       {Region::kBistable, "bistable"},
   };
 };
-const char* RegionName(Region r);
 
 // Classification of a grid of points: steady sliding stable where
 // 2 beta + mu'(v) > 0; a stick-slip orbit where the slip phase from the exit
@@ -235,7 +234,6 @@ struct EnumNames<ChartStatus> {
       {ChartStatus::kCancelled, "cancelled"},
   };
 };
-const char* ChartStatusName(ChartStatus s);
 
 struct ChartResult {
   ChartStatus status = ChartStatus::kOk;

@@ -38,7 +38,6 @@ struct ForcedPlane {
 };
 
 enum class ForcedCurveKind { kLP, kPD, kNS, kGR };
-const char* ForcedCurveName(ForcedCurveKind k);  // "LP", "PD", "NS", "GR"
 template <>
 struct EnumNames<ForcedCurveKind> {
   static constexpr NamedValue<ForcedCurveKind> kTable[] = {
@@ -83,7 +82,6 @@ enum class ForcedCodim2Label {
   /// (the grazing boundary switches from one touch to the other).
   kDoubleGrazing,
 };
-const char* ForcedCodim2Name(ForcedCodim2Label l);  // "R1", "R2", "LPPD", "SL", "GG"
 template <>
 struct EnumNames<ForcedCodim2Label> {
   static constexpr NamedValue<ForcedCodim2Label> kTable[] = {
@@ -101,7 +99,6 @@ enum class ForcedCodim2Method {
   kRefined,   ///< on the curve, its test function's root by Illinois on the corrected curve
   kChord,     ///< the refinement failed: interpolated linearly between two curve points
 };
-const char* ForcedCodim2MethodName(ForcedCodim2Method m);  // "end", "refined", "chord"
 template <>
 struct EnumNames<ForcedCodim2Method> {
   static constexpr NamedValue<ForcedCodim2Method> kTable[] = {

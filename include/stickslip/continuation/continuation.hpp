@@ -32,7 +32,6 @@ struct EnumNames<PointKind> {
       {PointKind::kEquilibrium, "equilibrium"},
   };
 };
-const char* PointKindName(PointKind k);  // "stick-slip", "pure-slip", "equilibrium"
 
 /// One point of a branch: the parameter, the orbit's measures and stability.
 struct BranchPoint {
@@ -107,8 +106,6 @@ struct EnumNames<ContinuationStatus> {
       {ContinuationStatus::kCancelled, "cancelled"},
   };
 };
-/// "ok", "failed", "cancelled".
-const char* ContinuationStatusName(ContinuationStatus s);
 
 /// Work done, for the summary and branch.tsv's metadata.
 struct ContinuationCounts {

@@ -97,7 +97,6 @@ struct EnumNames<PalcStatus> {
       {PalcStatus::kStartFailed, "start-failed"},
   };
 };
-const char* PalcStatusName(PalcStatus s);
 
 struct PalcResult {
   PalcStatus status = PalcStatus::kStopped;

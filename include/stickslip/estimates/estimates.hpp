@@ -72,8 +72,6 @@ struct EnumNames<BoundStatus> {
       {BoundStatus::kOptimizerFailed, "optimizer-failed"},
   };
 };
-/// "fitted", ... for messages.
-const char* BoundStatusName(BoundStatus s);
 
 /// One fitted bound: its slope a, whether it holds on its domain, and why not.
 struct BoundFit {

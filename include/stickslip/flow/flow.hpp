@@ -48,7 +48,6 @@ struct Section {
 };
 
 enum class SwitchKind { kStickIn, kStickOut, kCrossing, kTouch };
-const char* SwitchKindName(SwitchKind k);  // "stick-in", "stick-out", "crossing", "touch"
 template <>
 struct EnumNames<SwitchKind> {
   static constexpr NamedValue<SwitchKind> kTable[] = {

@@ -14,7 +14,6 @@ enum class Integrator {
   kTaylor,  // Taylor series, order and step from the tolerance (Jorba & Zou 2005)
   kCvode,   // SUNDIALS CVODE with the linear multistep Method below
 };
-const char* IntegratorName(Integrator i);  // "taylor", "cvode"
 template <>
 struct EnumNames<Integrator> {
   static constexpr NamedValue<Integrator> kTable[] = {
@@ -28,7 +27,6 @@ enum class Method {
   kAdams,  // Adams-Moulton with fixed-point iteration: non-stiff, the default
   kBdf,    // BDF with Newton and a dense linear solver: for stiff problems
 };
-const char* MethodName(Method m);  // "adams", "bdf"
 template <>
 struct EnumNames<Method> {
   static constexpr NamedValue<Method> kTable[] = {
@@ -65,7 +63,6 @@ enum class FlowStatus {
   kTooManyAtOnce,     // more than kMaxEnumeratedContacts contacts switched at once
   kContactOpen,       // a contact's normal force fell to 0 (System::NormalForce)
 };
-const char* FlowStatusName(FlowStatus s);
 template <>
 struct EnumNames<FlowStatus> {
   static constexpr NamedValue<FlowStatus> kTable[] = {

@@ -22,7 +22,6 @@ namespace stickslip {
 
 /// The continued parameter of the forced model.
 enum class ForcedAxis { kOmega, kForce, kV, kBeta };
-const char* ForcedAxisName(ForcedAxis a);  // "omega", "force", "v", "beta"
 template <>
 struct EnumNames<ForcedAxis> {
   static constexpr NamedValue<ForcedAxis> kTable[] = {
@@ -47,7 +46,6 @@ void SetAxis(ForcedParams& p, ForcedAxis a, double value);
 ///      becomes a stick phase (sticks +-1, crossings -+1);
 ///   SL any other change of the stick structure (several at once).
 enum class ForcedLabel { kNone, kLP, kPD, kNS, kGR, kSW, kAD, kCR, kSL };
-const char* ForcedLabelName(ForcedLabel l);  // "", "LP", "PD", "NS", "GR", ...
 template <>
 struct EnumNames<ForcedLabel> {
   static constexpr NamedValue<ForcedLabel> kTable[] = {
@@ -67,9 +65,6 @@ struct ForcedBranchRow {
   ForcedLabel label = ForcedLabel::kNone;  ///< special points only
   std::string description;                 ///< special points only: one line
 };
-
-using ForcedBranchStatus = BranchStatus;
-const char* ForcedBranchStatusName(ForcedBranchStatus s);
 
 struct ForcedBranchOptions {
   /// m's upper bound (1000 forcing periods, as a restart file's).
@@ -92,7 +87,7 @@ struct ForcedBranchOptions {
 };
 
 struct ForcedBranch {
-  ForcedBranchStatus status = ForcedBranchStatus::kStartFailed;
+  BranchStatus status = BranchStatus::kStartFailed;
   std::string message;
   std::vector<ForcedBranchRow> rows;
   std::vector<ForcedBranchRow> special;  ///< LP, PD, NS and sliding points, located

@@ -39,7 +39,6 @@ struct ForcedOptions {
 };
 
 enum class ForcedEventKind { kStickIn, kStickOut, kCrossing, kTouch };
-const char* ForcedEventName(ForcedEventKind k);  // "stick-in", "stick-out", "crossing", "touch"
 template <>
 struct EnumNames<ForcedEventKind> {
   static constexpr NamedValue<ForcedEventKind> kTable[] = {
@@ -61,7 +60,6 @@ enum class ForcedStatus {
   kTooMuchWork,  ///< max_steps or max_events before t_end
   kFailed,       ///< non-finite series, step underflow, or switching that does not advance t
 };
-const char* ForcedStatusName(ForcedStatus s);
 template <>
 struct EnumNames<ForcedStatus> {
   static constexpr NamedValue<ForcedStatus> kTable[] = {

@@ -26,7 +26,6 @@ enum class ForcedOrbitStatus {
   kSingular,       ///< DP^m - I singular (a multiplier at 1)
   kFlowFailed,     ///< the flow failed (message says where)
 };
-const char* ForcedOrbitStatusName(ForcedOrbitStatus s);
 template <>
 struct EnumNames<ForcedOrbitStatus> {
   static constexpr NamedValue<ForcedOrbitStatus> kTable[] = {

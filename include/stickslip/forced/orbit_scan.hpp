@@ -38,7 +38,6 @@ enum class ForcedScanStatus {
   kOk,
   kCancelled,  ///< cancelled() returned true; the orbits found so far are kept
 };
-const char* ForcedScanStatusName(ForcedScanStatus s);
 template <>
 struct EnumNames<ForcedScanStatus> {
   static constexpr NamedValue<ForcedScanStatus> kTable[] = {

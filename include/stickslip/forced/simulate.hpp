@@ -17,7 +17,6 @@ enum class ForcedSection {
   kStrobe,  ///< every t = n 2 pi / Omega (cos Omega t = 1)
   kExit,    ///< every stick exit
 };
-const char* ForcedSectionName(ForcedSection s);  // "strobe", "exit"
 template <>
 struct EnumNames<ForcedSection> {
   static constexpr NamedValue<ForcedSection> kTable[] = {
@@ -51,7 +50,6 @@ enum class ForcedSimulationStatus {
   kCancelled,  ///< cancelled() returned true; the rows so far are kept
   kRowLimit,   ///< rows + section points passed max_rows (message says when)
 };
-const char* ForcedSimulationStatusName(ForcedSimulationStatus s);
 template <>
 struct EnumNames<ForcedSimulationStatus> {
   static constexpr NamedValue<ForcedSimulationStatus> kTable[] = {

@@ -19,8 +19,6 @@ class ParameterAxis;
 enum class ForcedAxis;
 
 enum class FigureFormat { kPng, kPdf, kSvg };
-/// "png", "pdf", "svg": the --format value and the file extension.
-const char* FigureFormatName(FigureFormat f);
 template <>
 struct EnumNames<FigureFormat> {
   static constexpr NamedValue<FigureFormat> kTable[] = {

@@ -43,7 +43,7 @@ struct LabelledPoint {
   double run_to = std::numeric_limits<double>::quiet_NaN();
 
   /// The continued parameter's name as the run's files print it ("v", "omega").
-  std::string ParamName() const { return forced ? ForcedAxisName(forced_param) : param.name(); }
+  std::string ParamName() const { return forced ? Name(forced_param) : param.name(); }
 };
 
 /// Why a restart cannot be read: the run directory (a file missing, corrupt,

@@ -16,8 +16,6 @@ enum class LawKind {
   kLeine,     // mu_s / (1 + delta s), Leine et al. (1998)
 };
 
-/// "cubic", "coulomb", "stribeck", "leine".
-const char* LawName(LawKind law);
 template <>
 struct EnumNames<LawKind> {
   static constexpr NamedValue<LawKind> kTable[] = {

@@ -22,7 +22,6 @@ namespace stickslip {
 
 /// Stick-slip (one stick phase per period) or pure slip (never sticks).
 enum class OrbitKind { kStickSlip, kPureSlip };
-const char* OrbitKindName(OrbitKind k);  // "stick-slip", "pure-slip"
 template <>
 struct EnumNames<OrbitKind> {
   static constexpr NamedValue<OrbitKind> kTable[] = {

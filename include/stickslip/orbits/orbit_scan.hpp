@@ -37,7 +37,6 @@ enum class OrbitScanStatus {
   kFailed,     // an integration failed; message says where
   kCancelled,  // cancelled() returned true
 };
-const char* OrbitScanStatusName(OrbitScanStatus s);
 template <>
 struct EnumNames<OrbitScanStatus> {
   static constexpr NamedValue<OrbitScanStatus> kTable[] = {

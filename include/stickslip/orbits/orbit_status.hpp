@@ -20,8 +20,6 @@ enum class OrbitStatus {
   kAperiodic,         // a batch row: no section point recurs within max_m periods
   kContactOpen,       // a contact's normal force reached 0 (the flow's contact-open)
 };
-/// "ok", "no-return", ... for messages.
-const char* OrbitStatusName(OrbitStatus s);
 template <>
 struct EnumNames<OrbitStatus> {
   static constexpr NamedValue<OrbitStatus> kTable[] = {

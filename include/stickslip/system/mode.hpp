@@ -17,7 +17,6 @@ enum class Mode : std::uint8_t {
   kStick,      // h = 0 and the stick force within its static limit: Omega, eq. (3.6)
   kSlipAbove,  // h > 0: region Omega_+, eq. (3.8)
 };
-const char* ModeName(Mode m);  // "slip-below", "stick", "slip-above"
 template <>
 struct EnumNames<Mode> {
   static constexpr NamedValue<Mode> kTable[] = {
@@ -76,7 +75,7 @@ class ModeSet {
   std::uint64_t above_[kWords] = {};
 };
 
-/// The printed name of a mode of `contacts` contacts: ModeName for one
+/// The printed name of a mode of `contacts` contacts: Name for one
 /// contact, else the contacts' names joined by ',' ("stick,slip-below").
 std::string ModeSetName(const ModeSet& m, int contacts);
 
