@@ -139,7 +139,7 @@ std::array<Worst, kColumns> Measure(const Study& s) {
 // The bounds the rows reach against the reference (measured on every row:
 // 7.4e-14 in the state and the extremes, 1.9e-13 in the multipliers, the
 // reference's own limit there; before each row was polished, 1.15e-11 in x_max
-// and 1.1e-10 in the multipliers: docs/limits.md).
+// and 1.1e-10 in the multipliers: docs/validation.md, docs/CHANGELOG.md).
 constexpr double kStateBound = 3e-13, kMuBound = 1e-12;
 
 void ExpectWithin(const std::array<Worst, kColumns>& worst, const char* name) {
