@@ -7,8 +7,8 @@
 // held at the row's value (Omega away from folds; a state component near one,
 // where the state at fixed Omega is ill-conditioned, ~ 1 / |1 - mu|). The
 // multipliers are DP_s's (DP_0's nonzero ones: DP_0 = B A and DP_s = A B) by
-// fourth-order central differences of P_s; x_max, x_min by bisection on x' = 0
-// in slip (PieceSim::exact_extremes) and at the events.
+// sixth-order central differences of P_s (FixedStepPiece: a smooth map); x_max, x_min by bisection
+// on x' = 0 in slip (PieceSim::exact_extremes) and at the events.
 #pragma once
 
 #include <Eigen/Dense>
