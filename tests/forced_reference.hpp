@@ -158,6 +158,9 @@ struct PieceSim {
   explicit PieceSim(const Setup& setup) : s(setup) {}
   Setup s;
   Real dt = 1e-3L;
+  // x_max, x_min exact: the roots of x' inside slip phases bisected (else the
+  // slip phases' extremes are sampled on the grid of dt).
+  bool exact_extremes = false;
   std::vector<Event> events;
   Real x_max = -1e300L, x_min = 1e300L;
   int sticks = 0, crossings = 0;
@@ -227,6 +230,7 @@ struct PieceSim {
         if (gone(te)) hit = Bisect(gone, lo, te);
       }
       Real xx, yy;
+      if (exact_extremes) SlipExtremes(p, lo, hit >= 0 ? hit : t1, ydot_sign);
       if (hit >= 0) {
         p.At(hit, xx, yy);
         t = hit, x = xx, y = s.v;
@@ -246,6 +250,28 @@ struct PieceSim {
         t = t_end, x = xx, y = yy;
         return;
       }
+    }
+  }
+  // The roots of x' in [a, b] of slip piece p: at most one each side of an
+  // extremum of x' (a sign change of x''), each bisected; x there extends
+  // x_max, x_min.
+  template <class P, class Sign>
+  void SlipExtremes(P& p, Real a, Real b, const Sign& ydot_sign) {
+    auto y = [&](Real tt) {
+      Real xx, yy;
+      p.At(tt, xx, yy);
+      return yy;
+    };
+    Real cuts[3] = {a, b, b};
+    const bool s0 = ydot_sign(a);
+    if (s0 != ydot_sign(b)) cuts[1] = Bisect([&](Real tt) { return ydot_sign(tt) != s0; }, a, b);
+    for (int i = 0; i < 2; ++i) {
+      const Real c0 = cuts[i], c1 = cuts[i + 1];
+      const bool up = y(c0) > 0;
+      if (c1 <= c0 || (y(c1) > 0) == up) continue;
+      Real xx, yy;
+      p.At(Bisect([&](Real tt) { return (y(tt) > 0) != up; }, c0, c1), xx, yy);
+      x_max = std::max(x_max, xx), x_min = std::min(x_min, xx);
     }
   }
 };

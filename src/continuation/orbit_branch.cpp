@@ -130,6 +130,16 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
     }
     here = c.u;
   }
+  // The row one Newton step further, across the curve (p held at a trace's
+  // first row and at the end, where p is given).
+  if (end || curve.size() == 1) {
+    problem_.Polish(nullptr, &here);
+  } else {
+    const VectorXd& scale = palc_.options().scale;
+    const VectorXd& t = curve.back().tangent;
+    const VectorXd w = scale.size() ? VectorXd(t.cwiseQuotient(scale)) : t;
+    problem_.Polish(&w, &here);
+  }
   const BranchPoint point{here, problem_.Row()};
   const bool jumped = prev && have_prev_ && Special(prev_, point);
   prev_ = point;

@@ -95,6 +95,7 @@ bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
   }
   last_ = o;
   last_u_ = Unknowns(o.start, p);
+  jac_.resize(0, 0);  // Newton's, not kept
   *why = DomainError(last_u_);
   return why->empty();
 }
@@ -159,7 +160,38 @@ bool OrbitProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::
   jac->leftCols(nu_) = last_.monodromy - MatrixXd::Identity(nu_, nu_);
   const bool ok = Difference(p, z, jac, why);
   system_->SetParameterValue(j_, p);
+  jac_ = ok ? *jac : MatrixXd();
   return ok;
+}
+
+bool OrbitProblem::Polish(const VectorXd* w, VectorXd* u) {
+  if (jac_.rows() != nu_ || last_u_ != *u) return false;
+  VectorXd du = VectorXd::Zero(nu_ + 1);
+  if (w) {
+    MatrixXd a(nu_ + 1, nu_ + 1);
+    a.topRows(nu_) = jac_;
+    a.row(nu_) = w->transpose();
+    VectorXd rhs = VectorXd::Zero(nu_ + 1);
+    rhs.head(nu_) = -r_;
+    du = a.partialPivLu().solve(rhs);
+  } else {  // p held exactly
+    du.head(nu_) = jac_.leftCols(nu_).partialPivLu().solve(-r_);
+  }
+  const VectorXd v = *u + du;
+  if (!du.allFinite() || !DomainError(v).empty()) return false;
+  PeriodicOrbit o;
+  VectorXd r;
+  std::string why;
+  const bool opened = opened_;  // a failed polish is no contact's opening
+  const bool ok = MapAt(v[nu_], PointAt(v), true, &r, &o, &why) &&
+                  r.lpNorm<Eigen::Infinity>() <= r_.lpNorm<Eigen::Infinity>() &&
+                  o.sticks == last_.sticks && o.crossings == last_.crossings;
+  system_->SetParameterValue(j_, last_u_[nu_]);
+  opened_ = opened;
+  if (!ok) return false;
+  last_ = o, r_ = r, last_u_ = v, *u = v;
+  jac_.resize(0, 0);  // not v's
+  return true;
 }
 
 // dF/dp: central differences, step ~ cbrt(eps) relative (truncation and

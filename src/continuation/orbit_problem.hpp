@@ -22,6 +22,13 @@ class OrbitProblem final : public PalcProblem {
   std::string DomainError(const Eigen::VectorXd& u) const override;
   /// The row of the last point evaluated.
   OrbitRow Row() const;
+  /// One more Newton step from the last point evaluated (the corrector's last
+  /// iterate, whose update fell below its tol but was not evaluated): the
+  /// bordered step with constraint row w . du = 0 (null: p held), and the map
+  /// with its Jacobian there, so that Row() is the orbit at *u. Kept only
+  /// where the residual does not grow and the switching counts stay; else
+  /// false, with Row() and *u unchanged.
+  bool Polish(const Eigen::VectorXd* w, Eigen::VectorXd* u);
   /// The orbit at parameter p by the shooting's damped Newton from z (p
   /// held); on success Row() is its row. False, with *why, if none.
   bool FindAt(double p, const FlowPoint& z, std::string* why);
@@ -61,6 +68,7 @@ class OrbitProblem final : public PalcProblem {
   Shooting shooting_;
   PeriodicOrbit last_, plus_, minus_;
   Eigen::VectorXd last_u_, r_, rp_, rm_;
+  Eigen::MatrixXd jac_;  // dF/du at last_u_ (Evaluate's)
   bool opened_ = false;
 };
 
