@@ -33,7 +33,7 @@ struct Worst {
   int row = -1;
   std::string label;
   void Add(double e, int i, const ForcedBranchRow& r) {
-    if (!(e <= err)) err = e, row = i, p = r.p, label = ForcedLabelName(r.label);
+    if (!(e <= err)) err = e, row = i, p = r.p, label = Name(r.label);
   }
 };
 
