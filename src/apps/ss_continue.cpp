@@ -301,8 +301,10 @@ int Outputs(cli::AppRun& app, const ss::ContinuationResult& r, const ss::Params&
   std::vector<ss::ExtraColumn> extra = cmp.columns;
   run.Phase("smallest disturbances");
   auto cancelled = [&run] { return run.Cancelled(); };
-  for (auto& c : ss::DisturbanceColumns(base, r, opts.orbit.flow, cancelled))
-    extra.push_back(std::move(c));
+  ss::ExtraColumn dx{"dist_x", {}}, dy{"dist_xdot", {}}, de{"dist_energy", {}};
+  for (const ss::Disturbance& d : ss::BranchDisturbances(base, r, opts.orbit.flow, cancelled))
+    dx.values.push_back(d.x), dy.values.push_back(d.xdot), de.values.push_back(d.energy);
+  for (ss::ExtraColumn* c : {&dx, &dy, &de}) extra.push_back(std::move(*c));
   ss::ExtraColumn stalled{"newton_stalled", {}};
   for (const auto& pt : r.points) stalled.values.push_back(pt.newton_stalled ? 1 : 0);
   extra.push_back(std::move(stalled));

@@ -7,11 +7,12 @@
 
 namespace stickslip {
 
-std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const ContinuationResult& r,
+std::vector<Disturbance> BranchDisturbances(const Params& base, const ContinuationResult& r,
                                             const FlowOptions& flow,
                                             const std::function<bool()>& cancelled) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<ExtraColumn> cols = {{"dist_x", {}}, {"dist_xdot", {}}, {"dist_energy", {}}};
+  std::vector<Disturbance> out;
+  out.reserve(r.points.size());
   for (const BranchPoint& pt : r.points) {
     Disturbance d{nan, nan, nan};
     const bool unstable_orbit =
@@ -31,11 +32,9 @@ std::vector<ExtraColumn> DisturbanceColumns(const Params& base, const Continuati
         d = Disturbance{nan, nan, nan};  // the run failed: no value, not a guess
       }
     }
-    cols[0].values.push_back(d.x);
-    cols[1].values.push_back(d.xdot);
-    cols[2].values.push_back(d.energy);
+    out.push_back(d);
   }
-  return cols;
+  return out;
 }
 
 }  // namespace stickslip

@@ -288,7 +288,7 @@ OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int paramet
     out.message += " after the row at " + system.ParameterName(parameter) + " = " +
                    Num(out.rows.back().p, 12) + " (" + std::to_string(out.rows.back().sticks) +
                    " sticks, " + std::to_string(out.rows.back().crossings) + " crossings)";
-  out.evaluations = palc.evaluations();
+  out.evaluations = palc.evaluations() + problem.polishes();
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -183,10 +183,11 @@ bool OrbitProblem::Polish(const VectorXd* w, VectorXd* u) {
   VectorXd r;
   std::string why;
   const bool opened = opened_;  // a failed polish is no contact's opening
+  ++polishes_;
   const bool ok = MapAt(v[nu_], PointAt(v), true, &r, &o, &why) &&
                   r.lpNorm<Eigen::Infinity>() <= r_.lpNorm<Eigen::Infinity>() &&
                   o.sticks == last_.sticks && o.crossings == last_.crossings;
-  system_->SetParameterValue(j_, last_u_[nu_]);
+  system_->SetParameterValue(j_, ok ? v[nu_] : last_u_[nu_]);  // the row's p
   opened_ = opened;
   if (!ok) return false;
   last_ = o, r_ = r, last_u_ = v, *u = v;

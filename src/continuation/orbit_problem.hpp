@@ -29,6 +29,8 @@ class OrbitProblem final : public PalcProblem {
   /// where the residual does not grow and the switching counts stay; else
   /// false, with Row() and *u unchanged.
   bool Polish(const Eigen::VectorXd* w, Eigen::VectorXd* u);
+  /// Runs of the map with its Jacobian that Polish made (PALC counts its own).
+  int polishes() const { return polishes_; }
   /// The orbit at parameter p by the shooting's damped Newton from z (p
   /// held); on success Row() is its row. False, with *why, if none.
   bool FindAt(double p, const FlowPoint& z, std::string* why);
@@ -70,6 +72,7 @@ class OrbitProblem final : public PalcProblem {
   Eigen::VectorXd last_u_, r_, rp_, rm_;
   Eigen::MatrixXd jac_;  // dF/du at last_u_ (Evaluate's)
   bool opened_ = false;
+  int polishes_ = 0;
 };
 
 /// The section at system s for the state z: a stroboscopic section's time

@@ -35,16 +35,6 @@ std::string PalcOptions::ValidationError(int unknowns) const {
   return os.str();
 }
 
-bool NewtonConverged(double step, double last_step, int iteration, double tol, bool* stalled) {
-  *stalled = false;
-  if (step < tol) return true;
-  if (NewtonStalled(step, last_step, iteration, tol)) {  // the one stall test
-    *stalled = true;
-    return true;
-  }
-  return false;
-}
-
 Palc::Palc(PalcProblem& problem, const PalcOptions& options)
     : problem_(problem), options_(options) {
   const int m = problem.unknowns();

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/model/forced_axis.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 

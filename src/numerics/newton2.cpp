@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "stickslip/continuation/palc.hpp"
+#include "numerics/stall.hpp"
 
 namespace stickslip {
 

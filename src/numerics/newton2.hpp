@@ -22,7 +22,7 @@ struct Newton2Result {
 
 // Newton from x0; differences h = step .* max(|x|, 1) (per unknown). Converged
 // when |dx_k| <= tol * max(|x_k|, 1) for both k, or stalled at the noise floor
-// (NewtonConverged of palc.hpp).
+// (NewtonConverged of numerics/stall.hpp).
 Newton2Result Newton2(const Function2& f, const Eigen::Vector2d& x0, double tol = Tolerances::kNewton2Tol,
                       double step = Tolerances::kNewton2Step, int max_iterations = 30);
 

@@ -16,6 +16,14 @@ inline bool NewtonStalled(double step, double last_step, int iteration, double t
          step > Tolerances::kStallRatio * last_step;
 }
 
+// The stop of every corrector (PALC's, Newton2): converged below tol, or
+// stalled (NewtonStalled, then *stalled is set).
+inline bool NewtonConverged(double step, double last_step, int iteration, double tol,
+                            bool* stalled) {
+  *stalled = NewtonStalled(step, last_step, iteration, tol) && !(step < tol);
+  return step < tol || *stalled;
+}
+
 // The one stall guard of the flow: events (roots in a segment, switches in a
 // run) that keep coming at one t, to rounding, would loop for ever, so more
 // than `limit` in a row are a failure that says where.

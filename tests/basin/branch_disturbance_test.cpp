@@ -20,14 +20,14 @@ TEST(BranchDisturbance, UnstablePureSlipRowsMatchTheReferenceOrbit) {
   o.max_step = 0.05;
   const ContinuationResult r = Continue(base, o);
   ASSERT_FALSE(r.partial()) << r.message;
-  const std::vector<ExtraColumn> cols = DisturbanceColumns(base, r, o.orbit.flow);
-  ASSERT_EQ(cols.size(), 3u);
+  const std::vector<Disturbance> d = BranchDisturbances(base, r, o.orbit.flow);
+  ASSERT_EQ(d.size(), r.points.size());
   int checked = 0, unstable = 0;
   for (size_t i = 0; i < r.points.size(); ++i) {
     const BranchPoint& pt = r.points[i];
     const bool applies = pt.kind == PointKind::kPureSlip && !pt.stable;
-    EXPECT_EQ(std::isnan(cols[0].values[i]), !applies) << "row " << i;
-    EXPECT_EQ(std::isnan(cols[2].values[i]), !applies) << "row " << i;
+    EXPECT_EQ(std::isnan(d[i].x), !applies) << "row " << i;
+    EXPECT_EQ(std::isnan(d[i].energy), !applies) << "row " << i;
     if (!applies || pt.amplitude < 0.05 || unstable++ % 3 != 0) continue;
     Params p = base;
     p.v = pt.p;
@@ -36,9 +36,9 @@ TEST(BranchDisturbance, UnstablePureSlipRowsMatchTheReferenceOrbit) {
         testing_util::ReferenceCurve(p, static_cast<double>(xbar) + pt.amplitude, 400);
     ASSERT_FALSE(curve.empty());
     const auto [dx, dy, e] = testing_util::BruteDisturbance(curve, xbar);
-    EXPECT_NEAR(cols[0].values[i], static_cast<double>(dx), 1e-4) << "v = " << pt.p;
-    EXPECT_NEAR(cols[1].values[i], static_cast<double>(dy), 1e-4) << "v = " << pt.p;
-    EXPECT_NEAR(cols[2].values[i], static_cast<double>(e), 1e-7) << "v = " << pt.p;
+    EXPECT_NEAR(d[i].x, static_cast<double>(dx), 1e-4) << "v = " << pt.p;
+    EXPECT_NEAR(d[i].xdot, static_cast<double>(dy), 1e-4) << "v = " << pt.p;
+    EXPECT_NEAR(d[i].energy, static_cast<double>(e), 1e-7) << "v = " << pt.p;
     ++checked;
   }
   EXPECT_GE(checked, 2);

@@ -301,6 +301,10 @@ TEST_F(Skeleton, ContinueStopsPromptlyInEveryPhase) {
   const std::vector<std::string> args = {"--max_step", "1e-4",  "--integrator", "cvode",
                                          "--no_plots", "--out", Path("w")};
   const WallBound bound;
+  // Before the fix: 3.9 to 6.2 s, and 1 to 4.8 s after a signal. Where the
+  // load stretches the bounds past that, the test cannot tell: it skips.
+  if (bound.Of(2.0) >= 3.9)
+    GTEST_SKIP() << "load " << bound.Stretch() << " per CPU: 2 s would stretch past 3.9 s";
   double best = 1e9;
   for (int attempt = 0; attempt < 3 && best >= bound.Of(2.0); ++attempt) {
     const Outcome r = Run(kContinue, With(args, {"--max_time", "1"}));

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "numerics/stall.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {

@@ -215,7 +215,7 @@ class Watchdog {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
       if (t > bound_.Of(budget_)) {
         std::fprintf(stderr, "robustness_test: HANG: one sample ran %.1f s (budget %.1f s): %s\n",
-                     t, budget_, what_.c_str());
+                     t, bound_.Of(budget_), what_.c_str());
         std::fflush(stderr);
         std::abort();
       }

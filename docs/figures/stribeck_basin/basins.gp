@@ -17,6 +17,7 @@ set style line 8 lc rgb '#000000' pt 7 ps 1.0
 set style line 9 lc rgb '#000000' lw 2.5 dt 1
 set style line 10 lc rgb '#009e73' lw 2 dt 2
 set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set style line 12 lc rgb '#e69f00' lw 2 dt 5
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
@@ -29,7 +30,7 @@ up = 1
 up2 = 1
 set xlabel "initial displacement x (dimensionless)"
 set ylabel "initial velocity dx/dt (dimensionless)"
-set xrange [-0.8317013249398576:1.29477602239049]
+set xrange [-0.8317013249398576:1.2947760223904903]
 set yrange [-0.931555092145677:0.9244180737057345]
 unset grid
 set palette defined (-0.5 '#d9d9d9', 0.5 '#d9d9d9', 0.5 '#a6cee3', 1.5 '#a6cee3', 1.5 '#fdbf6f', 2.5 '#fdbf6f', 2.5 '#ffffff', 3.5 '#ffffff')

@@ -18,9 +18,9 @@ set xrange [0.050000000000000003:1.2]
 set yrange [0.01:0.14000000000000001]
 set title "Stability chart, Stribeck law: μ_s = 0.4, μ_k = 0.25, v_s = 0.5"
 set lmargin at screen 0.11
-set rmargin at screen 0.96
-set tmargin at screen 0.93
-set bmargin at screen 0.21
+set rmargin at screen 0.95999999999999996
+set tmargin at screen 0.93000000000000005
+set bmargin at screen 0.20999999999999999
 set key at screen 0.53, screen 0.015 center bottom horizontal maxcols 3 width 1 samplen 3
 set tics out nomirror
 set border 3 front

@@ -17,6 +17,7 @@ set style line 8 lc rgb '#000000' pt 7 ps 1.0
 set style line 9 lc rgb '#000000' lw 2.5 dt 1
 set style line 10 lc rgb '#009e73' lw 2 dt 2
 set style line 11 lc rgb '#cc79a7' lw 2 dt 4
+set style line 12 lc rgb '#e69f00' lw 2 dt 5
 set key outside below center horizontal box lc rgb '#c0c0c0' samplen 3 spacing 1.1 height 0.5
 set bmargin 7
 set style textbox opaque noborder margins 1,1
@@ -48,5 +49,5 @@ set key outside below center horizontal
 plot 0 with lines ls 7 notitle, \
      'lyapunov.tsv' using (sel('down', 'omega')):'lyapunov' with points pt 7 ps 0.35 lc rgb '#d55e00' title 'sweep down', \
      'lyapunov.tsv' using (sel('up', 'omega')):'lyapunov' with points pt 7 ps 0.35 lc rgb '#0072b2' title 'sweep up', \
-     'lyapunov.tsv' using 'omega':(column('lyapunov') > 3 * column('lyapunov_err') && column('lyapunov') > 1e-3 ? column('lyapunov') : 1/0) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'chaotic: λ_1 > max(3σ, 10^{-3})'
+     'lyapunov.tsv' using 'omega':(column('lyapunov') > 3 * column('lyapunov_err') && column('lyapunov') > 0.001 ? column('lyapunov') : 1/0) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'chaotic: λ_1 > max(3σ, 0.001)'
 unset multiplot

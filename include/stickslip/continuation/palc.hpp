@@ -67,10 +67,6 @@ struct PalcCorrection {
   std::string why;  ///< when !ok
 };
 
-/// Newton stall test shared by all correctors here: converged below tol, or
-/// stalled (after two iterations, within 1e3 tol and no longer halving).
-bool NewtonConverged(double step, double last_step, int iteration, double tol, bool* stalled);
-
 /// One accepted point of a curve.
 struct PalcPoint {
   Eigen::VectorXd u;        ///< unscaled

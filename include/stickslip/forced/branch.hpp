@@ -16,23 +16,10 @@
 #include "stickslip/continuation/branch_status.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/forced/orbit.hpp"
+#include "stickslip/model/forced_axis.hpp"
 #include "stickslip/names.hpp"
 
 namespace stickslip {
-
-/// The continued parameter of the forced model.
-enum class ForcedAxis { kOmega, kForce, kV, kBeta };
-template <>
-struct EnumNames<ForcedAxis> {
-  static constexpr NamedValue<ForcedAxis> kTable[] = {
-      {ForcedAxis::kOmega, "omega"},
-      {ForcedAxis::kForce, "force"},
-      {ForcedAxis::kV, "v"},
-      {ForcedAxis::kBeta, "beta"},
-  };
-};
-double GetAxis(const ForcedParams& p, ForcedAxis a);
-void SetAxis(ForcedParams& p, ForcedAxis a, double value);
 
 /// Special points. The sliding ones (docs/theory.md, forced section), by the
 /// change of (sticks, crossings) per orbit period across the point:

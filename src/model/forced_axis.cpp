@@ -1,5 +1,5 @@
-// The forced oscillator's axes and names (stickslip/forced/branch.hpp).
-#include "stickslip/forced/branch.hpp"
+// The forced model's lens (stickslip/model/forced_axis.hpp).
+#include "stickslip/model/forced_axis.hpp"
 
 namespace stickslip {
 
