@@ -130,7 +130,7 @@ py::dict Diagram(ForcedParams base, ForcedAxis axis, double from, double to, int
   return d;
 }
 
-py::dict Basins(const ForcedParams& p, int nx, int ny, std::pair<double, double> x_range,
+py::dict ForcedBasinsOf(const ForcedParams& p, int nx, int ny, std::pair<double, double> x_range,
                 std::pair<double, double> xdot_range, std::optional<int> transient,
                 std::optional<int> keep, std::optional<int> max_period, int threads,
                 std::optional<double> rtol, std::optional<double> atol) {
@@ -191,7 +191,7 @@ void BindChaos(py::module_& m) {
         "The orbit diagram (as ss_orbit_diagram): one row per kept section point (value, "
         "direction, x, xdot, stuck, sticks, exits, exit_phase), per value the exponent "
         "(columns), and the values that failed with why (failed).");
-  m.def("forced_basins", &Basins, py::arg("params"), py::arg("nx") = 41, py::arg("ny") = 41,
+  m.def("forced_basins", &ForcedBasinsOf, py::arg("params"), py::arg("nx") = 41, py::arg("ny") = 41,
         py::arg("x_range") = std::pair{-1.5, 1.5}, py::arg("xdot_range") = std::pair{-1.5, 1.5},
         py::arg("transient") = none, py::arg("keep") = none, py::arg("max_period") = none,
         py::arg("threads") = 2, py::arg("rtol") = none, py::arg("atol") = none,

@@ -77,7 +77,7 @@ PyForcedOrbit MakeOrbit(const ForcedOrbit& o, const std::vector<Vec2>& pts, bool
   return r;
 }
 
-PyForcedTrajectory Simulate(const ForcedParams& p, double x0, std::optional<double> xdot0,
+PyForcedTrajectory SimulateForced(const ForcedParams& p, double x0, std::optional<double> xdot0,
                             double t_end, double dt, ForcedSection section, long max_rows,
                             std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);  // throws InvalidArgument naming the value
@@ -249,7 +249,7 @@ void BindForced(py::module_& m) {
   BindForcedTypes(m);
   BindForcedBranch(m);
   BindChaos(m);
-  m.def("simulate_forced", &Simulate, py::arg("params"), py::arg("x0") = 0.0,
+  m.def("simulate_forced", &SimulateForced, py::arg("params"), py::arg("x0") = 0.0,
         py::arg("xdot0") = py::none(), py::arg("t_end") = 100.0, py::arg("dt") = 0.01,
         py::arg("section") = ForcedSection::kStrobe, py::arg("max_rows") = 1000000,
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(),

@@ -72,7 +72,7 @@ Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
   return state;
 }
 
-PySystemTrajectory Simulate(const py::object& system, const Eigen::VectorXd& state, double t_end,
+PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorXd& state, double t_end,
                             double dt, long max_rows, std::optional<double> rtol,
                             std::optional<double> atol) {
   const std::unique_ptr<System> s = SystemOf(system);
@@ -222,7 +222,7 @@ void BindSystemRuns(py::module_& m) {
       .def_readonly("max_real", &S::max_real)
       .def_readonly("stable", &S::stable);
   const py::object none = py::none();
-  m.def("simulate_system", &Simulate, py::arg("system"), py::arg("state"), py::arg("t_end") = 100.0,
+  m.def("simulate_system", &SimulateSystem, py::arg("system"), py::arg("state"), py::arg("t_end") = 100.0,
         py::arg("dt") = 0.01, py::arg("max_rows") = 1000000, py::arg("rtol") = none,
         py::arg("atol") = none,
         "One trajectory of any system (Params, ForcedParams, ChainParams, CouplingParams) from "

@@ -5,18 +5,12 @@
 #include <sstream>
 #include <vector>
 
+#include "numerics/numbers.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip {
 
 namespace {
-std::string Num(double x) {
-  std::ostringstream os;
-  os.precision(12);
-  os << x;
-  return os.str();
-}
-
 std::string AxisError(const Params& base, const ParameterAxis& axis, const char* which) {
   const auto axes = ParameterAxes(base.law);
   if (std::find(axes.begin(), axes.end(), axis) == axes.end())
@@ -26,17 +20,17 @@ std::string AxisError(const Params& base, const ParameterAxis& axis, const char*
 }
 
 std::string RangeError(double from, double to, const char* from_name, const char* to_name) {
-  if (!std::isfinite(from)) return std::string(from_name) + " = " + Num(from) + " is not finite";
-  if (!std::isfinite(to)) return std::string(to_name) + " = " + Num(to) + " is not finite";
+  if (!std::isfinite(from)) return std::string(from_name) + " = " + Num(from, 12) + " is not finite";
+  if (!std::isfinite(to)) return std::string(to_name) + " = " + Num(to, 12) + " is not finite";
   if (!(from < to))
-    return std::string(from_name) + " = " + Num(from) + " must be < " + to_name + " = " + Num(to) +
+    return std::string(from_name) + " = " + Num(from, 12) + " must be < " + to_name + " = " + Num(to, 12) +
            (from == to ? " (the rectangle is empty)" : " (the rectangle is inverted)");
   const double scale = std::max(std::abs(from), std::abs(to));
   if (to - from < kMinRelativeWidth * scale) {
     std::ostringstream os;
     os << to_name << " = " << FormatNumber(to) << " is too close to " << from_name << " = "
-       << FormatNumber(from) << ": the width " << Num(to - from)
-       << " must be >= " << Num(kMinRelativeWidth) << " max(|" << from_name << "|, |" << to_name
+       << FormatNumber(from) << ": the width " << Num(to - from, 12)
+       << " must be >= " << Num(kMinRelativeWidth, 12) << " max(|" << from_name << "|, |" << to_name
        << "|)";
     return os.str();
   }
@@ -47,8 +41,8 @@ std::string RangeError(double from, double to, const char* from_name, const char
 std::string PointError(const Plane& pl, const Params& base, double x1, double x2) {
   const std::string e = stickslip::ValidationError(pl.At(base, x1, x2));
   if (e.empty()) return e;
-  return "the rectangle leaves the model's domain at " + pl.p1.name() + " = " + Num(x1) + ", " +
-         pl.p2.name() + " = " + Num(x2) + ": " + e;
+  return "the rectangle leaves the model's domain at " + pl.p1.name() + " = " + Num(x1, 12) + ", " +
+         pl.p2.name() + " = " + Num(x2, 12) + ": " + e;
 }
 }  // namespace
 

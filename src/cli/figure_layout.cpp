@@ -17,7 +17,6 @@ constexpr double kScreenPoints = 12;  // the scripts' own font size (figure_styl
 constexpr double kLineWidth = 0.8;    // x the scripts' widths: 0.8 pt for their lw 2
 constexpr double kPointSize = 0.5;    // x the scripts' point sizes
 
-std::string Num(double x) { return FormatNumber(x); }
 
 bool ParseDouble(const std::string& text, double* x) {
   std::size_t used = 0;
@@ -118,17 +117,17 @@ std::string ApplyFigureLayout(const std::string& script, const FigureLayout& l) 
   const std::string name = l.font.substr(0, l.font.rfind(','));
   std::string t;
   if (terminal == "pdfcairo") {
-    t = "set terminal pdfcairo size " + Num(wi) + "in," + Num(hi) + "in enhanced " + font +
-        " fontscale 0.75 linewidth " + Num(kLineWidth) + " dashlength 1.5";
+    t = "set terminal pdfcairo size " + FormatNumber(wi) + "in," + FormatNumber(hi) + "in enhanced " + font +
+        " fontscale 0.75 linewidth " + FormatNumber(kLineWidth) + " dashlength 1.5";
   } else if (terminal == "svg") {  // 96 units an inch, the font in units
-    t = "set terminal svg size " + Num(std::round(wi * kSvgDpi)) + "," +
-        Num(std::round(hi * kSvgDpi)) + " enhanced font '" + name + "," +
-        Num(std::round(pt * kSvgDpi / 72 * 10) / 10) + "' linewidth " +
-        Num(kLineWidth * kSvgDpi / 144) + " dashlength 1.5 background '#ffffff'";
+    t = "set terminal svg size " + FormatNumber(std::round(wi * kSvgDpi)) + "," +
+        FormatNumber(std::round(hi * kSvgDpi)) + " enhanced font '" + name + "," +
+        FormatNumber(std::round(pt * kSvgDpi / 72 * 10) / 10) + "' linewidth " +
+        FormatNumber(kLineWidth * kSvgDpi / 144) + " dashlength 1.5 background '#ffffff'";
   } else {
-    t = "set terminal pngcairo size " + Num(std::round(wi * kPngDpi)) + "," +
-        Num(std::round(hi * kPngDpi)) + " enhanced " + font + " fontscale " +
-        Num(kPngDpi / kSvgDpi) + " linewidth " + Num(kLineWidth * kPngDpi / 144) +
+    t = "set terminal pngcairo size " + FormatNumber(std::round(wi * kPngDpi)) + "," +
+        FormatNumber(std::round(hi * kPngDpi)) + " enhanced " + font + " fontscale " +
+        FormatNumber(kPngDpi / kSvgDpi) + " linewidth " + FormatNumber(kLineWidth * kPngDpi / 144) +
         " dashlength 1.5";
   }
   std::string rest = ScaleAfter(script.substr(end), "font ',", '\'', pt / kScreenPoints);

@@ -77,7 +77,7 @@ ForcedBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from
   return b;
 }
 
-std::optional<StartOrbit> SettledOrbit(const ForcedModel& model, double x, double xdot,
+std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
                                        const ForcedBranchOptions& o, RunControl& run) {
   ForcedBasinOptions bo;
   bo.max_period = kSettleMaxPeriod;

@@ -53,7 +53,7 @@ ForcedBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from
 
 // The attractor the state (x, xdot) at phase 0 settles on, if periodic with
 // m <= kSettleMaxPeriod: its m, sticks and section point.
-std::optional<StartOrbit> SettledOrbit(const ForcedModel& model, double x, double xdot,
+std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
                                        const ForcedBranchOptions& o, RunControl& run);
 
 // The start list: the scan's orbits (m = choice.m, else 1..kStartScanMaxM)

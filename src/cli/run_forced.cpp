@@ -20,7 +20,7 @@ namespace stickslip::cli {
 
 namespace {
 
-struct ForcedSetup {
+struct BranchSetup {
   ForcedParams p;
   ForcedAxis axis = ForcedAxis::kOmega;
   double from = 0, to = 0;
@@ -51,7 +51,7 @@ void Check(const Arguments& args, const ForcedParams& p, const std::string& what
 // --switch at a PD point (AUTO-07p's ISW = -1): the 2m branch starts at the
 // point and runs to whichever of --from, --to (default: the axis's range) it
 // opens toward.
-void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& s) {
+void ConfigureSwitch(const Arguments& args, const double range[2], BranchSetup& s) {
   if (!s.restart || s.restart->type != "PD")
     throw UsageError(
         args.Source("switch") +
@@ -75,7 +75,7 @@ void ConfigureSwitch(const Arguments& args, const double range[2], ForcedSetup& 
   s.from = p, s.to = s.hi;  // to: set from the branch's side once traced
 }
 
-ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>& restart) {
+BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>& restart) {
   if (restart && !restart->forced)  // a belt point carries no forcing
     throw UsageError(args.Source("restart") + " " + args.Text("restart") +
                      " is a belt run: its restart cannot add a forcing (--force, --omega, "
@@ -83,7 +83,7 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
-  ForcedSetup s;
+  BranchSetup s;
   s.restart = restart;
   s.choice = StartChoiceFromArguments(args, restart.has_value());
   s.p.base = UncheckedModelFromArguments(args, restart ? restart->params : Params());
@@ -131,7 +131,7 @@ ForcedSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
 // period (a period-11 attractor at Omega 1.5 on the seed belt at A 0.1);
 // if that is not periodic, Newton at m = 1 from the settled state; if that
 // fails, the first stable orbit of the start scan (forced_start.hpp).
-ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run) {
+ForcedBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   SetAxis(p, s.axis, from);
   const ForcedModel model(p);
@@ -145,7 +145,7 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run
     return b;
   }
   const Vec2 z = SettledState(model, s.opts);
-  const std::optional<StartOrbit> settled = SettledOrbit(model, z[0], z[1], s.opts, run);
+  const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
   if (settled && settled->m > 1) {
     ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
     if (b.status != BranchStatus::kStartFailed) return b;
@@ -165,12 +165,12 @@ ForcedBranch Trace(const ForcedSetup& s, double from, double to, RunControl& run
 
 // --all, --m, --point: the branches from the chosen orbits of the start list,
 // printed first (UsageError if --point names none).
-std::vector<ForcedPiece> TraceChosen(const ForcedSetup& s, const StartChoice& c, RunControl& run) {
+std::vector<ForcedPiece> TraceChosen(const BranchSetup& s, const StartChoice& c, RunControl& run) {
   ForcedParams p = s.p;
   SetAxis(p, s.axis, s.from);
   const ForcedModel model(p);
   const Vec2 z = SettledState(model, s.opts);
-  const std::optional<StartOrbit> settled = SettledOrbit(model, z[0], z[1], s.opts, run);
+  const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
   const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, c.m, run);
   const std::string where = std::string(Name(s.axis)) + " = " + FormatNumber(s.from);
   PrintStartOrbits(std::cout, list, where);
@@ -184,7 +184,7 @@ std::vector<ForcedPiece> TraceChosen(const ForcedSetup& s, const StartChoice& c,
   return pieces;
 }
 
-std::string Describe(const ForcedSetup& s) {
+std::string Describe(const BranchSetup& s) {
   std::string d = "law=" + std::string(Name(s.p.base.law));
   for (const auto& name : ParameterNames(s.p.base.law)) {
     if (name == "beta" || name == "v") {
@@ -204,7 +204,7 @@ std::string Describe(const ForcedSetup& s) {
 }
 
 // A forcing value for the metadata; the continued one as its range.
-std::string Value(const ForcedSetup& s, ForcedAxis a) {
+std::string Value(const BranchSetup& s, ForcedAxis a) {
   if (a != s.axis) return FormatNumber(GetAxis(s.p, a));
   return "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "] (continued)";
 }
@@ -220,7 +220,7 @@ std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
 }
 
 // The run's summary on stdout: range, rows, status, gap and special points.
-void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::string& model,
+void PrintSummary(const std::string& prog, const BranchSetup& s, const std::string& model,
                   const std::string& status, const std::string& gap,
                   const std::vector<ForcedPiece>& pieces, LogDetail detail) {
   size_t rows = 0;
@@ -233,7 +233,7 @@ void PrintSummary(const std::string& prog, const ForcedSetup& s, const std::stri
 }
 
 // True (after one line on stderr) if no branch has a row.
-bool NoRows(const std::string& prog, const ForcedSetup& s, const std::vector<ForcedPiece>& pieces) {
+bool NoRows(const std::string& prog, const BranchSetup& s, const std::vector<ForcedPiece>& pieces) {
   for (const ForcedPiece& piece : pieces)
     if (!piece.branch.rows.empty()) return false;
   std::cerr << prog << ": error: no periodic orbit"
@@ -273,7 +273,7 @@ bool ForcedRequested(const Arguments& args) {
 
 int RunForced(const Arguments& args, const std::string& prog, const std::string& command,
               const std::optional<LabelledPoint>& restart) {
-  ForcedSetup s = Configure(args, restart);
+  BranchSetup s = Configure(args, restart);
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("resonance", format);
   const std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "resonance.gp",

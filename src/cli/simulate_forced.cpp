@@ -164,15 +164,15 @@ void AddSimulateForcedOptions(po::options_description& d) {
 }
 
 // The forced run's settings, all checked before anything runs or is written.
-struct ForcedSetup {
+struct SimulateSetup {
   ForcedParams p;
   ForcedSimulationOptions o;
   FlowOptions flow;  // as the metadata shows it
   SimulateRange range;
 };
 
-ForcedSetup ConfigureForced(const Arguments& args) {
-  ForcedSetup st;
+SimulateSetup ConfigureForced(const Arguments& args) {
+  SimulateSetup st;
   ForcedParams& p = st.p;
   ForcedSimulationOptions& o = st.o;
   const ForcedInputs in = ForcedInputsFromArguments(args);
@@ -189,7 +189,7 @@ ForcedSetup ConfigureForced(const Arguments& args) {
 }
 
 int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command) {
-  ForcedSetup st = ConfigureForced(args);
+  SimulateSetup st = ConfigureForced(args);
   const ForcedParams& p = st.p;
   ForcedSimulationOptions& o = st.o;
   const FlowOptions& flow = st.flow;

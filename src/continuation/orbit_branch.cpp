@@ -16,7 +16,7 @@
 namespace stickslip {
 
 using Eigen::VectorXd;
-using orbit_detail::BranchPoint;
+using orbit_detail::TracePoint;
 using orbit_detail::OrbitProblem;
 
 std::string OrbitBranchOptions::ValidationError() const {
@@ -58,7 +58,7 @@ class Monitor {
   }
 
  private:
-  bool Special(const BranchPoint& a, const BranchPoint& b);
+  bool Special(const TracePoint& a, const TracePoint& b);
   bool Ends(const OrbitRow& row);
 
   Palc& palc_;
@@ -70,14 +70,14 @@ class Monitor {
   const OrbitBranchOptions& o_;
   OrbitBranch& out_;
   bool have_prev_ = false, stopped_ = false, turned_ = false;
-  BranchPoint prev_;
+  TracePoint prev_;
   VectorXd turned_at_;
 };
 
 // The special points between a and b; true if the step crossed a jump.
-bool Monitor::Special(const BranchPoint& a, const BranchPoint& b) {
+bool Monitor::Special(const TracePoint& a, const TracePoint& b) {
   std::vector<OrbitRow> found;
-  std::vector<std::pair<BranchPoint, BranchPoint>> pieces;
+  std::vector<std::pair<TracePoint, TracePoint>> pieces;
   const double range[2] = {std::min(from_, to_), std::max(from_, to_)};
   const bool jumped =
       orbit_detail::Sliding(palc_, problem_, a, b, range, o_.locate_tol, &found, &pieces);
@@ -140,7 +140,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
     const VectorXd w = scale.size() ? VectorXd(t.cwiseQuotient(scale)) : t;
     problem_.Polish(&w, &here);
   }
-  const BranchPoint point{here, problem_.Row()};
+  const TracePoint point{here, problem_.Row()};
   const bool jumped = prev && have_prev_ && Special(prev_, point);
   prev_ = point;
   have_prev_ = true;

@@ -78,7 +78,7 @@ bool Locate(Palc& palc, OrbitProblem& problem, const VectorXd& a, const VectorXd
   return true;
 }
 
-void TestPoints(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
+void TestPoints(Palc& palc, OrbitProblem& problem, const TracePoint& a, const TracePoint& b,
                 double tol, std::vector<OrbitRow>* found, int depth) {
   if (!SameStructure(a.row, b.row)) return;
   const double step = Tolerances::kBranchMultiplierStep;
@@ -87,7 +87,7 @@ void TestPoints(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const B
   if ((far && depth < Tolerances::kBranchSplitDepth) || (near && depth == 0)) {
     const PalcCorrection c = palc.Correct(0.5 * (a.u + b.u), ChordTangent(palc, a.u, b.u));
     if (c.ok) {
-      const BranchPoint mid{c.u, problem.Row()};
+      const TracePoint mid{c.u, problem.Row()};
       TestPoints(palc, problem, a, mid, tol, found, depth + 1);
       TestPoints(palc, problem, mid, b, tol, found, depth + 1);
       return;
@@ -156,12 +156,12 @@ Bracket AcrossEdge(OrbitProblem& problem, const Bracket& br, bool chord, double 
 
 }  // namespace
 
-bool Sliding(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
+bool Sliding(Palc& palc, OrbitProblem& problem, const TracePoint& a, const TracePoint& b,
              const double range[2], double tol, std::vector<OrbitRow>* found,
-             std::vector<std::pair<BranchPoint, BranchPoint>>* pieces) {
+             std::vector<std::pair<TracePoint, TracePoint>>* pieces) {
   const int k_p = problem.parameter_index();
   const double edge_gap = Tolerances::kBranchEdgeGap * tol;
-  BranchPoint piece = a;
+  TracePoint piece = a;
   OrbitRow ref = a.row, first_lo;
   VectorXd from = a.u;
   bool jumped = false;

@@ -27,14 +27,14 @@ bool Locate(Palc& palc, OrbitProblem& problem, const Eigen::VectorXd& a, const E
             const std::function<double()>& test, double tol, Bracket* out, bool fail_is_hi = false);
 
 // A point on the branch: u and its row.
-struct BranchPoint {
+struct TracePoint {
   Eigen::VectorXd u;
   OrbitRow row;
 };
 
 // Every LP, PD and NS point between a and b (one switching sequence; none
 // otherwise), located on the chord to tol and appended to *found.
-void TestPoints(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
+void TestPoints(Palc& palc, OrbitProblem& problem, const TracePoint& a, const TracePoint& b,
                 double tol, std::vector<OrbitRow>* found, int depth = 0);
 
 // The changes of the switching sequence from a to b (at most kBranchEdges),
@@ -43,9 +43,9 @@ void TestPoints(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const B
 // the chord fails or meets the branch far apart either side of an edge, the
 // edge is found by natural steps in p (JumpAcross) within range = {lo, hi}:
 // then true (the trace crossed a jump).
-bool Sliding(Palc& palc, OrbitProblem& problem, const BranchPoint& a, const BranchPoint& b,
+bool Sliding(Palc& palc, OrbitProblem& problem, const TracePoint& a, const TracePoint& b,
              const double range[2], double tol, std::vector<OrbitRow>* found,
-             std::vector<std::pair<BranchPoint, BranchPoint>>* pieces);
+             std::vector<std::pair<TracePoint, TracePoint>>* pieces);
 
 // The label of a located change of the switching sequence from `before` to
 // `after` (the orbits either side): GR, AD, CR, else SL, with a one-line

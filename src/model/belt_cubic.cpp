@@ -6,10 +6,6 @@
 #include "model/belt_taylor.hpp"
 
 namespace stickslip {
-namespace {
-constexpr Reciprocals<kTaylorMaxOrder> kInverse;
-}  // namespace
-
 // With s = sigma (v - x'), s_k = -sigma x'_k (k >= 1), w = s^2 and
 // (s^3)_k = 3 s0^2 s_k + 6 s0 s1 s_{k-1} + T_k (k >= 3), where
 //   T_k = sum_{j=2}^{k-2} w_j s_{k-j} + s1 (s^2)'_{k-1} + s0 sum_{j=2}^{k-2} s_j s_{k-j}
@@ -43,7 +39,7 @@ STICKSLIP_KERNEL void BeltTaylorField::Cubic3(int order, const Rows& rows, const
   double sq_prev = 0;  // (s^2)'_{k-1}
   // Order k: x'_{k+1} from the sums q, p of T_k, then the rest of order k.
   auto order_k = [&](int k, double q, double p) __attribute__((always_inline)) {
-    const double inv = kInverse.r[k];
+    const double inv = kBeltInverse.r[k];
     const double sq = k < 3 ? (k == 1 ? 0.0 : xd1 * xd1) : q + 2 * (xd1 * xd[k - 1]);  // (s^2)'_k
     if (k < 3) {
       // (s^3)_1 without s_1 is 0; (s^3)_2 without s_2 is 3 s0 s1^2.
@@ -56,7 +52,7 @@ STICKSLIP_KERNEL void BeltTaylorField::Cubic3(int order, const Rows& rows, const
       // sigma c3 T_k = c3 (sg s0 q - p - x'_1 (s^2)'_{k-1}), sigma s = -x';
       // sigma c3 6 s0 s1 s_{k-1} - x_k = -b x'_{k-1} (x_k = x'_{k-1} / k).
       const double t = (sg_s0 * q - p) - xd1 * sq_prev;
-      const double b = kInverse.r[k - 1] - c3_6;
+      const double b = kBeltInverse.r[k - 1] - c3_6;
       const double next = ((c3 * inv) * t - (b * inv) * xd[k - 1]) - (damp * inv) * xd[k];
       xd[k + 1] = Forced ? next + (a * inv) * co[k] : next;
     }

@@ -17,7 +17,6 @@
 
 namespace stickslip {
 namespace {
-constexpr Reciprocals<kTaylorMaxOrder> kInverse;
 
 // The step of order p costs about p^2 + kLinearWork p (the Cauchy sums of
 // the law's series and of Phi, against sincos, exp, the event polynomials);
@@ -92,8 +91,8 @@ void BeltTaylorField::Forcing(int order, double theta0) {
   co[0] = std::cos(theta0);
   si[0] = std::sin(theta0);
   for (int k = 0; k <= order; ++k) {
-    co[k + 1] = -omega_ * si[k] * kInverse.r[k];
-    si[k + 1] = omega_ * co[k] * kInverse.r[k];
+    co[k + 1] = -omega_ * si[k] * kBeltInverse.r[k];
+    si[k + 1] = omega_ * co[k] * kBeltInverse.r[k];
   }
 }
 
@@ -174,7 +173,7 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
   for (int k = 0; k < order; ++k) {
     mu.Old<L, Var>(k, s);
     if (shifted) shifted->Old<L, false>(k, s);
-    const double inv = kInverse.r[k];
+    const double inv = kBeltInverse.r[k];
     if (k > 0) {
       // mu_k = alpha + mu'(s_0) s_k with s_k = -sigma x'_k: x'_{k+1} without
       // waiting for the products of s_k (the chain from x'_k is short).

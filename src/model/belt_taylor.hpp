@@ -16,6 +16,9 @@
 
 namespace stickslip {
 
+/// 1 / (k + 1) for the belt's Taylor recurrences (x_{k+1} = x'_k / (k + 1)).
+inline constexpr Reciprocals<kTaylorMaxOrder> kBeltInverse{};
+
 class BeltTaylorField final : public TaylorField {
  public:
   explicit BeltTaylorField(const TaylorRequest& rq) : request_(rq) {}
