@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app_test_util.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -19,7 +20,6 @@ using stickslip::testing_util::Exists;
 using stickslip::testing_util::ReadFile;
 
 const std::string kApp = STICKSLIP_BIN_DIR "/ss_basin";
-const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 class BasinApp : public stickslip::testing_util::AppTest {
  protected:

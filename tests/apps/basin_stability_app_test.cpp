@@ -12,6 +12,7 @@
 #include <string>
 
 #include "app_test_util.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -21,7 +22,6 @@ using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
 
-const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 const std::string kBox = " --x_min -0.4 --x_max 1.0 --xdot_min -0.8 --xdot_max 0.7";
 
 class BasinStabilityApp : public stickslip::testing_util::AppTest {

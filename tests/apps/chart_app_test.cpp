@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "app_test_util.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
-const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;

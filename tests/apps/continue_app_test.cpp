@@ -29,11 +29,11 @@
 #include <vector>
 
 #include "app_test_util.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
-const std::string kApp = STICKSLIP_BIN_DIR "/ss_continue";
-const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
+const std::string kContinueApp = STICKSLIP_BIN_DIR "/ss_continue";
 
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
@@ -51,7 +51,7 @@ std::vector<std::string> Lines(const std::string& text) {
   return lines;
 }
 
-struct Result {
+struct ContinueResult {
   int code = -1;           // exit status, -1 if killed by a signal
   int signal = 0;          // the signal that ended it, if any
   bool timed_out = false;  // killed at the time limit
@@ -60,22 +60,22 @@ struct Result {
   std::string shown;  // the command, for messages
 };
 
-// Runs kApp with args in a child process (app_test_util.hpp's RunChild);
+// Runs kContinueApp with args in a child process (app_test_util.hpp's RunChild);
 // stdout / stderr go to out_path / err_path. With sigint_after >= 0, SIGINT
 // is sent that many seconds after the child has installed its SIGINT handler.
 // A child still running after timeout seconds is killed (SIGKILL).
 // With run_as >= 0 (only as root), the child drops to that user id first.
-Result Exec(const std::vector<std::string>& args, const std::string& out_path,
+ContinueResult Exec(const std::vector<std::string>& args, const std::string& out_path,
             const std::string& err_path, double timeout, double sigint_after = -1,
             int run_as = -1) {
-  Result r;
+  ContinueResult r;
   r.shown = "ss_continue";
   for (const auto& a : args) r.shown += " " + a;
   stickslip::testing_util::Launch l;
   l.out_path = out_path, l.err_path = err_path, l.timeout = timeout, l.run_as = run_as;
   if (sigint_after >= 0) l.signal = SIGINT, l.signal_after = sigint_after;
   l.signal_when_caught = true;
-  const auto o = stickslip::testing_util::RunChild(kApp, args, l);
+  const auto o = stickslip::testing_util::RunChild(kContinueApp, args, l);
   r.code = o.code, r.signal = o.signal, r.timed_out = o.timed_out, r.seconds = o.seconds;
   r.out = ReadFile(out_path);
   r.err = ReadFile(err_path);
@@ -91,7 +91,7 @@ const char kSentinel[] = "# v\tkind\nsentinel: this file must not change\n";
 class ContinueApp : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(Exists(kApp)) << kApp << " not built";
+    ASSERT_TRUE(Exists(kContinueApp)) << kContinueApp << " not built";
     std::string tmpl = ::testing::TempDir() + "ss_continue_test_XXXXXX";
     ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
     dir_ = tmpl;
@@ -106,8 +106,8 @@ class ContinueApp : public ::testing::Test {
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
   std::string OutDir() const { return Path("out"); }
 
-  Result Run(const std::vector<std::string>& args, double timeout = 120, double sigint_after = -1) {
-    Result r = Exec(args, Path("stdout.txt"), Path("stderr.txt"), timeout, sigint_after);
+  ContinueResult Run(const std::vector<std::string>& args, double timeout = 120, double sigint_after = -1) {
+    ContinueResult r = Exec(args, Path("stdout.txt"), Path("stderr.txt"), timeout, sigint_after);
     EXPECT_FALSE(r.timed_out) << r.shown << ": still running after " << timeout << " s";
     return r;
   }
@@ -130,7 +130,7 @@ class ContinueApp : public ::testing::Test {
     args.push_back("--out");
     args.push_back(out);
     args.push_back("--no_plots");
-    const Result r = Run(args, 60);
+    const ContinueResult r = Run(args, 60);
     EXPECT_EQ(r.code, 2) << r.shown << "\n" << r.err;
     const auto lines = Lines(r.err);
     ASSERT_EQ(lines.size(), 1u) << r.shown << "\n" << r.err;
@@ -178,10 +178,10 @@ void ExpectWholePartialBranch(const std::string& path, const std::string& why) {
 // Bad input: exit 2, one line, nothing written.
 
 TEST_F(ContinueApp, VersionAndShortHelp) {
-  const Result v = Run({"--version"});
+  const ContinueResult v = Run({"--version"});
   ASSERT_EQ(v.code, 0) << v.err;
   EXPECT_EQ(v.out.rfind("ss_continue 0.", 0), 0u) << v.out;
-  const Result h = Run({"-h"});
+  const ContinueResult h = Run({"-h"});
   ASSERT_EQ(h.code, 0) << h.err;
   EXPECT_TRUE(Contains(h.out, "--version"));
 }
@@ -189,7 +189,7 @@ TEST_F(ContinueApp, VersionAndShortHelp) {
 // --param mu_s without a range used to fail (0.05 < mu_m); it takes mu_s's own range.
 TEST_F(ContinueApp, ParamMuSRunsOnItsDefaultRange) {
   const std::string out = OutDir();
-  const Result r = Run({"--param", "mu_s", "--out", out, "--no_plots", "--no_estimates"});
+  const ContinueResult r = Run({"--param", "mu_s", "--out", out, "--no_plots", "--no_estimates"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
   EXPECT_EQ(b.meta.at("from"), "0.3");  // 1.2 mu_m
@@ -202,7 +202,7 @@ TEST_F(ContinueApp, ParamMuSRunsOnItsDefaultRange) {
 // form sqrt((k1 - 2 beta) / (3 k3)) (seed 3.16) times L / t0.
 TEST_F(ContinueApp, BeltSpeedContinuesInPhysicalUnits) {
   const std::string out = OutDir();
-  const Result r = Run({"--mass",    "2",      "--stiffness",  "8",
+  const ContinueResult r = Run({"--mass",    "2",      "--stiffness",  "8",
                         "--damping", "0.4",    "--belt_speed", "1",
                         "--speed_m", "2.4525", "--param",      "belt_speed",
                         "--from",    "1.5",    "--to",         "2.4525",
@@ -309,7 +309,7 @@ TEST_F(ContinueApp, UnreadableStudyFileExits2) {
   ASSERT_EQ(::mkdir(out.c_str(), 0777), 0);
   ASSERT_EQ(::chmod(out.c_str(), 0777), 0);
   WriteFile(out + "/branch.tsv", kSentinel);
-  const Result r = Exec({"--study", path, "--out", out, "--no_plots"}, Path("stdout.txt"),
+  const ContinueResult r = Exec({"--study", path, "--out", out, "--no_plots"}, Path("stdout.txt"),
                         Path("stderr.txt"), 60, -1, kNobody);
   if (r.code == 125 || r.code == 126 || r.code == 127)
     GTEST_SKIP() << "running as root, where chmod 000 does not block reads, and the app cannot "
@@ -392,7 +392,7 @@ TEST_F(ContinueApp, ControlCharactersInInputAreEscaped) {
   ExpectRejected({"--law", "cu\x1b[2Jbic"}, {"'cu\\x1b[2Jbic'", "--law"});
   ExpectRejected({"--beta", "0.1\x07"}, {"'0.1\\x07'", "--beta"});
   ExpectRejected({"--study", Path("no\x1b\nfile.ini")}, {"no\\x1b\\nfile.ini"});
-  const Result r = Run({"--integrator", "tay\tlor\x7f", "--no_plots", "--out", OutDir()}, 60);
+  const ContinueResult r = Run({"--integrator", "tay\tlor\x7f", "--no_plots", "--out", OutDir()}, 60);
   EXPECT_EQ(r.code, 2);
   EXPECT_TRUE(Contains(r.err, "'tay\\tlor\\x7f'"));
   for (const char c : r.err.substr(0, r.err.size() - 1))
@@ -431,7 +431,7 @@ TEST_F(ContinueApp, UnwritableOutExits2) {
   WriteFile(file, "a regular file\n");
   for (const std::string& out : {file + "/x", file}) {
     SCOPED_TRACE(out);
-    const Result r = Run({"--out", out, "--no_plots"}, 60);
+    const ContinueResult r = Run({"--out", out, "--no_plots"}, 60);
     EXPECT_EQ(r.code, 2) << r.err;
     const auto lines = Lines(r.err);
     ASSERT_EQ(lines.size(), 1u) << r.err;
@@ -443,7 +443,7 @@ TEST_F(ContinueApp, UnwritableOutExits2) {
   }
   if (Exists("/etc/passwd")) {
     const std::string before = ReadFile("/etc/passwd");
-    const Result r = Run({"--out", "/etc/passwd/x", "--no_plots"}, 60);
+    const ContinueResult r = Run({"--out", "/etc/passwd/x", "--no_plots"}, 60);
     EXPECT_EQ(r.code, 2) << r.err;
     ASSERT_EQ(Lines(r.err).size(), 1u) << r.err;
     EXPECT_TRUE(Contains(r.err, "'/etc/passwd/x'"));
@@ -460,7 +460,7 @@ TEST_F(ContinueApp, ReadOnlyOutExits2) {
     run_as = 65534;
     ASSERT_EQ(::chmod(dir_.c_str(), 0755), 0);
   }
-  const Result r =
+  const ContinueResult r =
       Exec({"--out", out, "--no_plots"}, Path("stdout.txt"), Path("stderr.txt"), 60, -1, run_as);
   if (run_as >= 0 && (r.code == 125 || r.code == 126 || r.code == 127))
     GTEST_SKIP() << "running as root, where mode 0555 does not block writes, and the app cannot "
@@ -476,7 +476,7 @@ TEST_F(ContinueApp, ReadOnlyOutExits2) {
 // A rejected run must not even create a missing --out directory.
 TEST_F(ContinueApp, RejectionCreatesNoOutDirectory) {
   const std::string out = Path("new_out");
-  const Result r = Run({"--param", "gamma", "--out", out, "--no_plots"}, 60);
+  const ContinueResult r = Run({"--param", "gamma", "--out", out, "--no_plots"}, 60);
   EXPECT_EQ(r.code, 2);
   EXPECT_FALSE(Exists(out));
 }
@@ -498,7 +498,7 @@ TEST_F(ContinueApp, RejectionsLeaveExistingOutputsByteIdentical) {
       {"--rtol", "1"},        {"--law", "coulomb", "--mu_k", "0.5"}};
   for (auto args : bad) {
     args.insert(args.end(), {"--out", out, "--no_plots"});
-    const Result r = Run(args, 60);
+    const ContinueResult r = Run(args, 60);
     EXPECT_EQ(r.code, 2) << r.shown << "\n" << r.err;
     EXPECT_EQ(Lines(r.err).size(), 1u) << r.shown << "\n" << r.err;
   }
@@ -512,7 +512,7 @@ TEST_F(ContinueApp, RejectionsLeaveExistingOutputsByteIdentical) {
 }
 
 TEST_F(ContinueApp, HelpExitsZero) {
-  const Result r = Run({"--help"}, 60);
+  const ContinueResult r = Run({"--help"}, 60);
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.err, "");
   for (const char* opt : {"--study", "--param", "--from", "--to", "--out", "--max_step",
@@ -525,7 +525,7 @@ TEST_F(ContinueApp, HelpExitsZero) {
 
 TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
   const std::string out = OutDir();
-  const Result r = Run({"--study", kStudies + "/seed.ini", "--param", "v", "--from", "0.05", "--to",
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--param", "v", "--from", "0.05", "--to",
                         "0.5", "--out", out, "--no_plots"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Branch b = ReadBranch(ReadFile(out + "/branch.tsv"));
@@ -591,7 +591,7 @@ TEST_F(ContinueApp, SigintWritesWholePartialBranch) {
   std::vector<std::string> args = kLongRun;
   args.insert(args.end(), {"--out", OutDir()});
   const WallBound bound;
-  const Result r = Run(args, 120, /*sigint_after=*/0.3);
+  const ContinueResult r = Run(args, 120, /*sigint_after=*/0.3);
   ASSERT_EQ(r.signal, 0) << "killed by signal " << r.signal;
   ASSERT_EQ(r.code, 1) << "the run ended before SIGINT? " << r.err;
   EXPECT_LT(r.seconds, bound.Of(30.0)) << "SIGINT honoured late";
@@ -607,7 +607,7 @@ TEST_F(ContinueApp, MaxTimeWritesWholePartialBranch) {
   std::vector<std::string> args = kLongRun;
   args.insert(args.end(), {"--max_time", "0.05", "--out", OutDir()});
   const WallBound bound;
-  const Result r = Run(args, 120);
+  const ContinueResult r = Run(args, 120);
   ASSERT_EQ(r.code, 1) << r.err;
   EXPECT_LT(r.seconds, bound.Of(30.0)) << "--max_time 0.05 honoured late";
   const auto lines = Lines(r.err);
@@ -628,7 +628,7 @@ TEST_F(ContinueApp, MaxTimeStopsAPathologicalOrbit) {
   std::vector<std::string> args = kPathological;
   args.insert(args.end(), {"--max_time", "0.5", "--out", OutDir()});
   const WallBound bound;
-  const Result r = Run(args, 60);
+  const ContinueResult r = Run(args, 60);
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.code, 1) << r.err;
   EXPECT_LT(r.seconds, bound.Of(15.0)) << "--max_time 0.5 honoured late";
@@ -639,7 +639,7 @@ TEST_F(ContinueApp, SigintStopsAPathologicalOrbit) {
   std::vector<std::string> args = kPathological;
   args.insert(args.end(), {"--out", OutDir()});
   const WallBound bound;
-  const Result r = Run(args, 60, /*sigint_after=*/0.3);
+  const ContinueResult r = Run(args, 60, /*sigint_after=*/0.3);
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.signal, 0) << "killed by signal " << r.signal;
   ASSERT_EQ(r.code, 1) << r.err;
@@ -654,7 +654,7 @@ TEST_F(ContinueApp, PartialRunReplacesOldBranchWhole) {
   WriteFile(out + "/branch.tsv", kSentinel);
   std::vector<std::string> args = kLongRun;
   args.insert(args.end(), {"--max_time", "0.05", "--out", out});
-  const Result r = Run(args, 120);
+  const ContinueResult r = Run(args, 120);
   ASSERT_EQ(r.code, 1) << r.err;
   ExpectWholePartialBranch(out + "/branch.tsv", "cancelled");
 }
@@ -663,7 +663,7 @@ TEST_F(ContinueApp, PartialRunReplacesOldBranchWhole) {
 // Hard ranges finish: exit 0, or exit 1 with a partial branch and one clear
 // final line. Never a hang (the runner kills after 120 s and fails the test).
 
-void ExpectFinished(const Result& r, const std::string& out) {
+void ExpectFinished(const ContinueResult& r, const std::string& out) {
   ASSERT_FALSE(r.timed_out);
   ASSERT_EQ(r.signal, 0) << r.shown << ": killed by signal " << r.signal;
   ASSERT_TRUE(r.code == 0 || r.code == 1) << r.shown << ": exit " << r.code << "\n" << r.err;
@@ -679,7 +679,7 @@ void ExpectFinished(const Result& r, const std::string& out) {
 }
 
 TEST_F(ContinueApp, RangeFarPastHopfPointFinishes) {
-  const Result r = Run({"--study", kStudies + "/seed.ini", "--from", "0.05", "--to", "5", "--out",
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "0.05", "--to", "5", "--out",
                         OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
   if (r.code == 0) {  // the end of the range is on stable steady sliding
@@ -691,7 +691,7 @@ TEST_F(ContinueApp, RangeFarPastHopfPointFinishes) {
 }
 
 TEST_F(ContinueApp, TinyBeltSpeedFinishes) {
-  const Result r = Run({"--study", kStudies + "/seed.ini", "--from", "1e-4", "--to", "0.5", "--out",
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "1e-4", "--to", "0.5", "--out",
                         OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
   if (r.code == 0) {
@@ -703,13 +703,13 @@ TEST_F(ContinueApp, TinyBeltSpeedFinishes) {
 }
 
 TEST_F(ContinueApp, DownwardRangeFinishes) {
-  const Result r = Run({"--study", kStudies + "/seed.ini", "--from", "5", "--to", "1e-4", "--out",
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "5", "--to", "1e-4", "--out",
                         OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
 }
 
 TEST_F(ContinueApp, StribeckWideRangeFinishes) {
-  const Result r = Run({"--study", kStudies + "/stribeck.ini", "--from", "1e-4", "--to", "5",
+  const ContinueResult r = Run({"--study", kStudies + "/stribeck.ini", "--from", "1e-4", "--to", "5",
                         "--out", OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
 }
@@ -720,11 +720,11 @@ namespace {
 // A given base value of the continued parameter is validated too (issue 23,
 // old #20), as is any other parameter's.
 TEST_F(ContinueApp, ContinuedParameterBaseValueIsValidated) {
-  const Result given = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
+  const ContinueResult given = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
                             OutDir(), "--no_plots"});
   EXPECT_EQ(given.code, 2) << given.err;
   EXPECT_NE(given.err.find("v = -1"), std::string::npos) << given.err;
-  const Result bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2", "--out",
+  const ContinueResult bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2", "--out",
                           OutDir(), "--no_plots"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("v = -1"), std::string::npos) << bad.err;
@@ -737,7 +737,7 @@ namespace {
 // and the other parameters as they are.
 TEST_F(ContinueApp, ModelLineGivesTheContinuedParameterItsRange) {
   const std::string out = OutDir();
-  const Result r = Run({"--param", "v", "--from", "0.3", "--to", "0.35", "--out", out, "--no_plots",
+  const ContinueResult r = Run({"--param", "v", "--from", "0.3", "--to", "0.35", "--out", out, "--no_plots",
                         "--no_estimates"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));

@@ -14,11 +14,11 @@
 
 #include "app_test_util.hpp"
 #include "reference/forced_lyapunov.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
 namespace tu = stickslip::testing_util;
-const std::string kBin = STICKSLIP_BIN_DIR;
 const std::string kStudy = STICKSLIP_SOURCE_DIR "/studies/stribeck_forced.ini";
 
 class ForcedOrbitsApp : public tu::AppTest {

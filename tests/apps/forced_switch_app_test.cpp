@@ -11,18 +11,18 @@
 
 #include "app_test_util.hpp"
 #include "reference/forced_lyapunov.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
 namespace tu = stickslip::testing_util;
-const std::string kBin = STICKSLIP_BIN_DIR;
-const std::string kStudy = STICKSLIP_SOURCE_DIR "/studies/stribeck_forced.ini";
+const std::string kSwitchStudy = STICKSLIP_SOURCE_DIR "/studies/stribeck_forced.ini";
 
 class ForcedSwitchApp : public tu::AppTest {
  protected:
   void SetUp() override {
     AppTest::SetUp();
-    ASSERT_EQ(Run("--study " + kStudy + " --from 0.7 --to 0.6 --out " + dir_ + "/one"), 0) << err_;
+    ASSERT_EQ(Run("--study " + kSwitchStudy + " --from 0.7 --to 0.6 --out " + dir_ + "/one"), 0) << err_;
   }
   int Run(const std::string& args) { return RunApp(kBin, "ss_continue", args + " --no_plots"); }
   tu::Tsv Table(const std::string& path) const { return tu::ReadTsv(tu::ReadFile(path)); }

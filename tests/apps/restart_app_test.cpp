@@ -12,6 +12,7 @@
 #include <string>
 
 #include "app_test_util.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -21,7 +22,6 @@ using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
 
-const std::string kBin = STICKSLIP_BIN_DIR;
 
 class Restart : public stickslip::testing_util::AppTest {
  protected:

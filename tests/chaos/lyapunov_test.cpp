@@ -19,7 +19,7 @@
 namespace stickslip {
 namespace {
 
-ForcedParams Params(LawKind law, double beta, double v, double force, double omega) {
+ForcedParams LyapunovParams(LawKind law, double beta, double v, double force, double omega) {
   return forced_reference::Belt(law, beta, v, force, omega);
 }
 
@@ -39,7 +39,7 @@ double FloquetExponent(const ForcedModel& m, const StroboscopicRun& r) {
 TEST(Lyapunov, StickSlipWindowMatchesExitMapMultiplier) {
   // One stick per period (forced_bench's belt): one multiplier 0 (stick
   // collapses x'), the other the exit map's derivative.
-  const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   ForcedOrbitOptions o;
@@ -62,7 +62,7 @@ TEST(Lyapunov, StickSlipWindowMatchesExitMapMultiplier) {
 // K (measured 9.4e-15); a complex pair turns the tangent, so the estimate
 // converges like 1/K (measured 4.7e-5 at K = 200).
 void ConvergenceOnNonStopOrbit(double omega, double at_defaults, bool every_k) {
-  const ForcedModel m(Params(LawKind::kStribeck, 0.02, 0.2, 1.0, omega));
+  const ForcedModel m(LyapunovParams(LawKind::kStribeck, 0.02, 0.2, 1.0, omega));
   double floquet = 0, last_err = 1;
   std::printf("omega %.3f: K, lambda, |lambda - floquet|\n", omega);
   for (int keep : {25, 50, 100, 200, 400, 800}) {
@@ -93,7 +93,7 @@ TEST(Lyapunov, NonStopComplexMultipliersMatchFloquet) {
 
 TEST(Lyapunov, LinearPureSlipIsMinusBeta) {
   // Coulomb pure slip is linear: both multipliers have modulus exp(-beta T).
-  const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.4));
+  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.4));
   const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   std::printf("[ measured ] linear pure slip: |lambda + beta| %.2e\n", std::abs(r.lyapunov + 0.05));
@@ -104,7 +104,7 @@ TEST(Lyapunov, LinearPureSlipIsMinusBeta) {
 
 TEST(Lyapunov, ChaoticTaylorAgreesWithOdeintReference) {
   // Stribeck, beta 0.01, v 0.1, A 0.5, Omega 0.35: positive exponent, about 1.8 sticks per period.
-  const ForcedParams p = Params(LawKind::kStribeck, 0.01, 0.1, 0.5, 0.35);
+  const ForcedParams p = LyapunovParams(LawKind::kStribeck, 0.01, 0.1, 0.5, 0.35);
   const ForcedModel m(p);
   LyapunovOptions o;
   o.transient = 200, o.keep = 1000;
@@ -121,7 +121,7 @@ TEST(Lyapunov, ChaoticTaylorAgreesWithOdeintReference) {
 }
 
 TEST(Lyapunov, InvalidOptionsThrow) {
-  const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   LyapunovOptions o;
   o.keep = 0;
   EXPECT_THROW(IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), o), InvalidArgument);

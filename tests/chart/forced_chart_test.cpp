@@ -74,18 +74,18 @@ TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
 }
 
 // The stribeck_forced study's scene (studies/stribeck_forced.ini).
-ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
+ForcedParams StribeckChartParams(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
 
 // The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
 ForcedBranch OmegaRun(double a) {
-  const ForcedModel model(Stribeck(a, 0.8));
+  const ForcedModel model(StribeckChartParams(a, 0.8));
   ForcedRequest rq;
   rq.t_end = 200 * model.period();
   const ForcedRun tr = ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, 0, 0.25), rq);
   ForcedBranchOptions o;
   o.flow.rtol = o.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(Stribeck(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x, tr.end.xdot, o);
+  return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x, tr.end.xdot, o);
 }
 
 const ForcedBranchRow* First(const ForcedBranch& b, ForcedLabel l) {
@@ -103,7 +103,7 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const ForcedChartOptions o =
       Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
   std::string why;
-  const ForcedCurve c = TraceForcedCurve(Stribeck(0.3, pd->p), o, ForcedCurveKind::kPD, pd->m,
+  const ForcedCurve c = TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, ForcedCurveKind::kPD, pd->m,
                                          pd->x0, pd->xdot0, pd->p, 0.3, &why);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
   int checked = 0;
@@ -134,7 +134,7 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
   o.iterate.flow = o.flow;
   o.n1 = 8, o.n2 = 5;
   bool cancelled = false;
-  const ResponseGrid g = ForcedResponseGrid(Stribeck(0.3, 0.8), o, &cancelled);
+  const ResponseGrid g = ForcedResponseGrid(StribeckChartParams(0.3, 0.8), o, &cancelled);
   int periodic = 0, chaotic = 0;
   for (int j = 0; j < g.n2; ++j)
     for (int i = 0; i < g.n1; ++i) {
@@ -145,7 +145,7 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
       ForcedScanOptions so;
       so.orbit.flow = o.flow;
       so.max_m = 4, so.max_sticks = 6;
-      const ForcedOrbits f = FindForcedOrbits(ForcedModel(Stribeck(g.x2[j], g.x1[i])), so);
+      const ForcedOrbits f = FindForcedOrbits(ForcedModel(StribeckChartParams(g.x2[j], g.x1[i])), so);
       bool match = false, any_stable = false;
       for (const ForcedScanOrbit& s : f.orbits) {
         any_stable = any_stable || s.orbit.stable;

@@ -28,7 +28,7 @@ ForcedOptions BeltFlow() {
 }
 
 // The study's chart: Omega 0.3..1.2, A 0.05..0.6, its tolerances (1e-12).
-ForcedChartOptions ChartOptions() {
+ForcedChartOptions PointsChartOptions() {
   ForcedChartOptions o;
   o.plane.from1 = 0.3, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
   o.max_step = 0.01;
@@ -125,7 +125,7 @@ void ExpectNoJumps(const ForcedCurve& c, const ForcedChartOptions& o) {
 // for jumps and its points near `levels` against one-parameter runs.
 int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<double> levels) {
   const ForcedBranch run = SeedRun(0.5);
-  const ForcedChartOptions o = ChartOptions();
+  const ForcedChartOptions o = PointsChartOptions();
   int checked = 0, seeds = 0, ends = 0;
   for (const ForcedBranchRow& s : run.special) {
     if (s.label != label) continue;

@@ -21,7 +21,7 @@ namespace {
 ForcedParams Scene(double a, double w) { return forced_reference::SeedBelt(0.42, a, w); }
 
 // The study's chart: Omega 0.6..1.6, A 0.002..0.1.
-ForcedChartOptions ChartOptions() {
+ForcedChartOptions NsChartOptions() {
   ForcedChartOptions o;
   o.plane.from1 = 0.6, o.plane.to1 = 1.6, o.plane.from2 = 0.002, o.plane.to2 = 0.1;
   return o;
@@ -65,7 +65,7 @@ const ForcedCurve& StudyCurve() {
     if (run.special.empty() || run.special[0].label != ForcedLabel::kNS) return ForcedCurve();
     const ForcedBranchRow& s = run.special[0];
     std::string why;
-    return TraceForcedCurve(Scene(0.05, s.p), ChartOptions(), ForcedCurveKind::kNS, 1, s.x0,
+    return TraceForcedCurve(Scene(0.05, s.p), NsChartOptions(), ForcedCurveKind::kNS, 1, s.x0,
                             s.xdot0, s.p, 0.05, &why);
   }();
   return curve;

@@ -58,14 +58,14 @@ TEST(HopfCurve, StribeckMatchesClosedForm) {
   }
 }
 
-Params Quintic() {
+Params QuinticHopf() {
   Params p;
   p.k5 = 0.24;  // mu_s 0.4, mu_m 0.25, v_m 0.5: k1 = 0.45, k3 = 0.6
   return p;
 }
 
 TEST(HopfCurve, QuinticMatchesClosedFormAndHasItsGeneralizedHopfPoint) {
-  const ChartResult r = HopfChart(Quintic(), Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12});
+  const ChartResult r = HopfChart(QuinticHopf(), Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12});
   ASSERT_EQ(r.curves.size(), 1u);
   for (const CurvePoint& c : r.curves[0].points) {
     const double v = c.p1;
@@ -137,7 +137,7 @@ TEST(HopfCurve, CriticalityPredictsTheOrbitAmplitudeSubcritical) {
 }
 
 TEST(HopfCurve, CriticalityPredictsTheOrbitAmplitudeQuinticPastGH) {
-  Params p = Quintic();
+  Params p = QuinticHopf();
   const double v = 0.53;  // mu''' < 0 here: subcritical
   p.beta = (0.45 - 1.8 * v * v + 1.2 * std::pow(v, 4)) / 2;
   ExpectAmplitudeFollowsL1(p, v);

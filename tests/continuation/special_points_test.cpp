@@ -13,7 +13,7 @@
 namespace stickslip {
 namespace {
 
-OrbitOptions Tight() {
+OrbitOptions TightOrbit() {
   OrbitOptions o;
   o.flow.rtol = 1e-12;
   o.flow.atol = 1e-14;
@@ -58,7 +58,7 @@ TEST(SpecialPoints, HopfLocatorMatchesTheStribeckClosedForm) {
 
 TEST(SpecialPoints, GrazingGapMatchesTheReferenceIntegrator) {
   Params p;
-  OrbitFinder finder(Model(p), Tight());
+  OrbitFinder finder(Model(p), TightOrbit());
   for (double v : {0.2, 0.3, 0.39, 0.42}) {
     p.v = v;
     double gap = 0;
@@ -71,7 +71,7 @@ TEST(SpecialPoints, GrazingGapMatchesTheReferenceIntegrator) {
 
 TEST(SpecialPoints, GrazingLocatorMatchesTheReferenceIntegrator) {
   const Params p;
-  OrbitFinder finder(Model(p), Tight());
+  OrbitFinder finder(Model(p), TightOrbit());
   const ParameterAxis axis("v");
   double g0 = 0, g1 = 0;
   ASSERT_TRUE(GrazingGap(finder, axis.At(p, 0.39), &g0));

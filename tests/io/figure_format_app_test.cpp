@@ -13,6 +13,7 @@
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/io/branch_report.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "test_paths.hpp"
 
 namespace stickslip {
 namespace {
@@ -21,8 +22,6 @@ using testing_util::Exists;
 using testing_util::ReadFile;
 using testing_util::WriteFile;
 
-const std::string kBin = STICKSLIP_BIN_DIR;
-const std::string kStudies = STICKSLIP_SOURCE_DIR "/studies";
 
 using stickslip::testing_util::HaveGnuplot;
 

@@ -13,13 +13,13 @@
 #include "app_test_util.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/model/parameter_axis.hpp"
+#include "test_paths.hpp"
 
 namespace stickslip {
 namespace {
 
 using testing_util::Contains;
 
-const std::string kBin = STICKSLIP_BIN_DIR;
 const double kL = 2 * 9.81 / 8, kT0 = std::sqrt(2.0 / 8), kSpeed = kL / kT0;
 const std::string kPhysical =
     " --mass 2 --stiffness 8 --damping 0.4 --belt_speed 1 --speed_m 2.4525 --mu_s 0.4 "

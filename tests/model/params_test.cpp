@@ -19,7 +19,7 @@ namespace {
   return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
 }
 
-Params Seed() { return Params{}; }
+Params SeedParams() { return Params{}; }
 
 // The message of a rejected parameter set; empty if it was accepted.
 std::string Rejection(const Params& p) {
@@ -32,18 +32,18 @@ std::string Rejection(const Params& p) {
   return msg;
 }
 
-TEST(Params, SeedSetIsValid) { EXPECT_EQ(ValidationError(Seed()), ""); }
+TEST(Params, SeedSetIsValid) { EXPECT_EQ(ValidationError(SeedParams()), ""); }
 
 TEST(Params, SeedSetCubicCoefficients) {
   // Seed section 4: k1 = 0.45, k3 = 0.6.
-  const Params p = Seed();
+  const Params p = SeedParams();
   EXPECT_NEAR(p.k1(), 0.45, 1e-15);
   EXPECT_NEAR(p.k3(), 0.6, 1e-15);
   EXPECT_EQ(p.law, LawKind::kCubic);
 }
 
 TEST(Params, RejectsMuMAtOrAboveMuS) {
-  Params p = Seed();
+  Params p = SeedParams();
   p.mu_m = 0.5;
   EXPECT_TRUE(Contains(Rejection(p), "mu_m = 0.5"));
   p.mu_m = 0.4;  // equal is not allowed either
@@ -51,7 +51,7 @@ TEST(Params, RejectsMuMAtOrAboveMuS) {
 }
 
 TEST(Params, RejectsNonPositiveVm) {
-  Params p = Seed();
+  Params p = SeedParams();
   p.v_m = 0;
   EXPECT_TRUE(Contains(Rejection(p), "v_m = 0"));
   p.v_m = -0.5;
@@ -59,7 +59,7 @@ TEST(Params, RejectsNonPositiveVm) {
 }
 
 TEST(Params, RejectsNegativeBeta) {
-  Params p = Seed();
+  Params p = SeedParams();
   p.beta = -0.1;
   EXPECT_TRUE(Contains(Rejection(p), "beta = -0.1"));
   p.beta = 0;  // undamped is fine
@@ -72,7 +72,7 @@ TEST(Params, RejectsNegativeBeta) {
 }
 
 TEST(Params, RejectsNonPositiveBeltSpeed) {
-  Params p = Seed();
+  Params p = SeedParams();
   p.v = 0;
   EXPECT_TRUE(Contains(Rejection(p), "v = 0"));
   p.v = -0.25;
@@ -81,7 +81,7 @@ TEST(Params, RejectsNonPositiveBeltSpeed) {
 
 TEST(Params, RejectsMuKAtOrAboveMuS) {
   for (LawKind law : {LawKind::kCoulomb, LawKind::kStribeck}) {
-    Params p = Seed();
+    Params p = SeedParams();
     p.law = law;
     EXPECT_EQ(Rejection(p), "");
     p.mu_k = 0.45;
@@ -90,7 +90,7 @@ TEST(Params, RejectsMuKAtOrAboveMuS) {
 }
 
 TEST(Params, QuinticTermValidated) {
-  Params p = Seed();
+  Params p = SeedParams();
   p.k5 = -0.1;
   EXPECT_TRUE(Contains(Rejection(p), "k5 = -0.1 must be >= 0"));
   // mu(v) = 0.4 - 0.45 v + 0.6 v^3 - k5 v^5 at v = 1: 0.55 - k5, so k5 = 0.55 is the limit.
@@ -107,7 +107,7 @@ TEST(Params, RejectsNanAndInfinity) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   for (const std::string& name : ParameterNames(LawKind::kCubic)) {
-    Params p = Seed();
+    Params p = SeedParams();
     SetParameter(p, name, nan);
     EXPECT_TRUE(Contains(Rejection(p), name + " = nan")) << name;
     SetParameter(p, name, inf);
@@ -116,14 +116,14 @@ TEST(Params, RejectsNanAndInfinity) {
 }
 
 TEST(Params, IgnoresParametersOfOtherLaws) {
-  Params p = Seed();
+  Params p = SeedParams();
   p.mu_k = 0.9;                                        // coulomb / stribeck only
   p.delta = std::numeric_limits<double>::quiet_NaN();  // leine only
   EXPECT_EQ(ValidationError(p), "");
 }
 
 TEST(Params, UnknownNameThrows) {
-  Params p = Seed();
+  Params p = SeedParams();
   EXPECT_THROW(GetParameter(p, "gamma"), InvalidArgument);
   EXPECT_THROW(SetParameter(p, "gamma", 1.0), InvalidArgument);
   EXPECT_THROW(GetParameter(p, ""), InvalidArgument);
@@ -136,7 +136,7 @@ TEST(Params, UnknownNameThrows) {
 }
 
 TEST(Params, GetAndSetByName) {
-  Params p = Seed();
+  Params p = SeedParams();
   for (const auto& name : AllParameterNames()) {
     EXPECT_TRUE(IsParameterName(name));
     SetParameter(p, name, 0.125);
@@ -190,7 +190,7 @@ TEST(Params, HandComputedConversion) {
 
 TEST(Params, SeedSetIsItsOwnPhysicalImageAtUnitScales) {
   // M = K = g = 1 makes L = t0 = 1: the physical numbers are the dimensionless ones.
-  const PhysicalParams phys = ToPhysical(Seed(), 1, 1, 1);
+  const PhysicalParams phys = ToPhysical(SeedParams(), 1, 1, 1);
   EXPECT_DOUBLE_EQ(phys.damping, 0.1);
   EXPECT_DOUBLE_EQ(phys.belt_speed, 0.25);
   EXPECT_DOUBLE_EQ(phys.speed_m, 0.5);
@@ -223,7 +223,7 @@ TEST(Params, PhysicalDimensionlessRoundTrip) {
   EXPECT_EQ(back.mu_k, phys.mu_k);
 
   // And the other way round.
-  const Params p = Seed();
+  const Params p = SeedParams();
   const Params again = ToDimensionless(ToPhysical(p, 0.5, 20, 9.81));
   for (const auto& name : AllParameterNames())
     EXPECT_NEAR(GetParameter(again, name), GetParameter(p, name), 1e-14) << name;
@@ -266,11 +266,11 @@ TEST(Params, DefaultRangesAreValidAtBothEnds) {
       }
     }
   }
-  const ParameterRange v = DefaultRange(Seed(), Parameter::kV);
-  const double hopf = std::sqrt((Seed().k1() - 2 * Seed().beta) / (3 * Seed().k3()));  // (3.16)
+  const ParameterRange v = DefaultRange(SeedParams(), Parameter::kV);
+  const double hopf = std::sqrt((SeedParams().k1() - 2 * SeedParams().beta) / (3 * SeedParams().k3()));  // (3.16)
   EXPECT_LT(v.from, hopf);
   EXPECT_GT(v.to, hopf);
-  EXPECT_THROW(DefaultRange(Seed(), ParameterAxis("gamma")), InvalidArgument);
+  EXPECT_THROW(DefaultRange(SeedParams(), ParameterAxis("gamma")), InvalidArgument);
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ Params At(const Case& c) {
   return p;
 }
 
-OrbitScanOptions Tight() {
+OrbitScanOptions TightScan() {
   OrbitScanOptions o;
   o.orbit.flow.rtol = 1e-12;
   o.orbit.flow.atol = 1e-14;
@@ -69,7 +69,7 @@ TEST(OrbitScan, FindsEveryPureSlipOrbitAndMatchesTheReference) {
   for (const Case& c : cases) {
     const Params p = At(c);
     SCOPED_TRACE(std::string(Name(c.law)) + " v = " + std::to_string(c.v));
-    const PeriodicOrbits r = FindPeriodicOrbits(Model(p), Tight());
+    const PeriodicOrbits r = FindPeriodicOrbits(Model(p), TightScan());
     ASSERT_TRUE(r.ok()) << r.message;
     ASSERT_EQ(static_cast<int>(r.pure_slip.size()), c.pure_slip);
     EXPECT_EQ(ReferenceFixedPoints(p, r.a_stick < r.a_max ? r.a_stick : r.a_max), c.pure_slip);
@@ -95,7 +95,7 @@ TEST(OrbitScan, StickSlipOrbitMatchesTheReference) {
                         {LawKind::kCubic, 0.05, 0.25, 0.4, 0}};
   for (const Case& c : cases) {
     const Params p = At(c);
-    const PeriodicOrbits r = FindPeriodicOrbits(Model(p), Tight());
+    const PeriodicOrbits r = FindPeriodicOrbits(Model(p), TightScan());
     ASSERT_TRUE(r.ok()) << r.message;
     const reference::StickSlipOrbit ref = reference::StickSlip(p);
     ASSERT_TRUE(ref.found);
@@ -106,7 +106,7 @@ TEST(OrbitScan, StickSlipOrbitMatchesTheReference) {
   }
   // Cubic v = 0.42, past grazing: no stick-slip orbit.
   const PeriodicOrbits r =
-      FindPeriodicOrbits(Model(At({LawKind::kCubic, 0.05, 0.42, 0.4, 1})), Tight());
+      FindPeriodicOrbits(Model(At({LawKind::kCubic, 0.05, 0.42, 0.4, 1})), TightScan());
   EXPECT_FALSE(r.has_stick_slip);
 }
 
@@ -152,7 +152,7 @@ TEST(OrbitScan, KeepsTheOrbitInTheLastBracketBeforeSticking) {
     SCOPED_TRACE(std::string(Name(c.law)) + " v = " + std::to_string(c.v));
     const std::vector<reference::PureSlipOrbit> ref = ReferenceOrbitsBelowStick(p);
     ASSERT_EQ(static_cast<int>(ref.size()), c.pure_slip);
-    for (const OrbitScanOptions& o : {OrbitScanOptions(), Tight()}) {
+    for (const OrbitScanOptions& o : {OrbitScanOptions(), TightScan()}) {
       const PeriodicOrbits r = FindPeriodicOrbits(Model(p), o);
       ASSERT_TRUE(r.ok()) << r.message;
       EXPECT_EQ(r.pure_slip.size(), ref.size()) << "rtol " << o.orbit.flow.rtol;

@@ -195,7 +195,7 @@ ClosedOrbit StickSlipOrbit(const Block& b) {
   return o;
 }
 
-OrbitOptions Tight(Integrator integrator = Integrator::kTaylor) {
+OrbitOptions TightSeam(Integrator integrator = Integrator::kTaylor) {
   OrbitOptions o;
   o.flow.rtol = integrator == Integrator::kTaylor ? 1e-13 : 1e-12;
   o.flow.atol = 1e-15;
@@ -208,7 +208,7 @@ TEST(Seam, StickSlipOrbitOfASecondSystemMatchesClosedForm) {
   const Block b;
   const ClosedOrbit c = StickSlipOrbit(b);
   ASSERT_GT(c.t_slip, 0);
-  OrbitFinder finder(SpringBlock(b), Tight());
+  OrbitFinder finder(SpringBlock(b), TightSeam());
   const OrbitResult r = finder.StickSlip();
   ASSERT_TRUE(r.ok()) << r.message;
   const Orbit& o = r.orbit;
@@ -230,7 +230,7 @@ TEST(Seam, TheOneShootingFindsTheSecondSystemsOrbit) {
   const Block b;
   const ClosedOrbit c = StickSlipOrbit(b);
   ShootingOptions so;
-  so.flow = Tight().flow;
+  so.flow = TightSeam().flow;
   Shooting shooting(SpringBlock(b), so);
   const FlowPoint start{0, Eigen::Vector2d(0.1, b.v), ModeSet(Mode::kSlipBelow)};
   const PeriodicOrbit o = shooting.Find(start, PoincareSection::StickExit(0));
@@ -246,7 +246,7 @@ TEST(Seam, TheOneShootingFindsTheSecondSystemsOrbit) {
 TEST(Seam, TheCvodeStepperRunsTheSecondSystemToo) {
   const Block b;
   const ClosedOrbit c = StickSlipOrbit(b);
-  OrbitFinder finder(SpringBlock(b), Tight(Integrator::kCvode));
+  OrbitFinder finder(SpringBlock(b), TightSeam(Integrator::kCvode));
   const OrbitResult r = finder.StickSlip();
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(r.orbit.period, double(c.t_slip + c.t_stick), 1e-8);

@@ -19,14 +19,14 @@
 namespace stickslip {
 namespace {
 
-ShootingOptions Tight() {
+ShootingOptions TightShooting() {
   ShootingOptions o;
   o.flow.rtol = 1e-14;
   o.flow.atol = 1e-14;
   return o;
 }
 
-Params Seed(double v) {
+Params SeedShooting(double v) {
   Params p;
   p.v = v;
   return p;
@@ -38,9 +38,9 @@ FlowPoint At(const Eigen::VectorXd& z, Mode mode, double t = 0) { return {t, z, 
 // point off it: the exit set is a point, so DP = 0 and one step lands there.
 TEST(Shooting, BeltStickExitMatchesTheReference) {
   for (double v : {0.05, 0.25, 0.39}) {
-    const Model m(Seed(v));
-    Shooting shooting(m, Tight());
-    const reference::StickSlipOrbit ref = reference::StickSlip(Seed(v));
+    const Model m(SeedShooting(v));
+    Shooting shooting(m, TightShooting());
+    const reference::StickSlipOrbit ref = reference::StickSlip(SeedShooting(v));
     ASSERT_TRUE(ref.found);
     for (double off : {0.0, 0.1}) {
       const Eigen::Vector2d exit(m.ExitPoint()[0] + off, v);
@@ -64,8 +64,8 @@ TEST(Shooting, BeltStickExitMatchesTheReference) {
 // formula's multiplier exp(oint(-2 beta + F'(x' - v)) dt).
 TEST(Shooting, BeltPureSlipOnASurfaceMatchesTheReference) {
   for (double v : {0.40, 0.42, 0.44}) {
-    const Model m(Seed(v));
-    Shooting shooting(m, Tight());
+    const Model m(SeedShooting(v));
+    Shooting shooting(m, TightShooting());
     PoincareSection s;
     s.kind = SectionKind::kSurface;
     s.surface.g.terms[0] = {1, 1.0};
@@ -75,7 +75,7 @@ TEST(Shooting, BeltPureSlipOnASurfaceMatchesTheReference) {
     const PeriodicOrbit o = shooting.Find(At(Eigen::Vector2d(xbar + 0.3, 0), Mode::kSlipBelow), s);
     ASSERT_TRUE(o.ok()) << "v = " << v << ": " << o.message;
     const reference::PureSlipOrbit ref =
-        reference::PureSlip(Seed(v), static_cast<long double>(o.start.z[0]));
+        reference::PureSlip(SeedShooting(v), static_cast<long double>(o.start.z[0]));
     ASSERT_TRUE(ref.found);
     EXPECT_NEAR(o.start.z[0], static_cast<double>(ref.x_section), 1e-10) << "v = " << v;
     EXPECT_NEAR(o.period, static_cast<double>(ref.period), 1e-9) << "v = " << v;
@@ -103,7 +103,7 @@ ForcedParams Floor(double w) {
 TEST(Shooting, StroboscopicMapFindsDenHartogsNonStopOrbits) {
   for (double w : {0.75, 0.9, 1.3, 2.0}) {
     const ForcedModel m(Floor(w));
-    Shooting shooting(m, Tight());
+    Shooting shooting(m, TightShooting());
     const Eigen::Vector3d z(1 / (1 - w * w), 0.01, 0);
     const PeriodicOrbit o =
         shooting.Find(At(z, Mode::kSlipBelow), PoincareSection::Stroboscopic(m, z, 1));
@@ -135,7 +135,7 @@ TEST(Shooting, ForcedOrbitThroughTwoSectionsHasOneSetOfMultipliers) {
   ForcedParams p = Floor(0.8);
   p.base.beta = 0.05, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v = 0.2, p.force = 0.3;
   const ForcedModel m(p);
-  Shooting shooting(m, Tight());
+  Shooting shooting(m, TightShooting());
   const Eigen::Vector3d z0(0.3, 0.2, 0);
   const PeriodicOrbit strobe =
       shooting.Find(At(z0, Mode::kSlipBelow), PoincareSection::Stroboscopic(m, z0, 1));
@@ -174,8 +174,8 @@ TEST(Shooting, ForcedOrbitThroughTwoSectionsHasOneSetOfMultipliers) {
 }
 
 TEST(Shooting, MisuseThrowsAndAMissingReturnIsAStatus) {
-  const Model m(Seed(0.2));
-  ShootingOptions opt = Tight();
+  const Model m(SeedShooting(0.2));
+  ShootingOptions opt = TightShooting();
   opt.max_return_time = 1;  // far less than one period
   Shooting shooting(m, opt);
   const FlowPoint z = At(Eigen::Vector2d(m.ExitPoint()[0], 0.2), Mode::kSlipBelow);

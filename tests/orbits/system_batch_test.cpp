@@ -24,7 +24,7 @@ using ref::Real;
 ForcedParams Belt() { return ref::Coulomb(0.4, 0.25, 0.05, 0.2, 0.3, 0.8); }
 
 // Omega over [0.6, 1.2] by mu_s over [0.3, 0.5], Omega slowest.
-std::vector<SystemColumn> Grid(int nw, int nmu) {
+std::vector<SystemColumn> BatchGrid(int nw, int nmu) {
   SystemColumn w{ForcedModel::kOmegaIndex, {}}, mu{static_cast<int>(Parameter::kMuS), {}};
   for (int i = 0; i < nw; ++i)
     for (int j = 0; j < nmu; ++j) {
@@ -34,7 +34,7 @@ std::vector<SystemColumn> Grid(int nw, int nmu) {
   return {w, mu};
 }
 
-SystemBatchOptions Options(int threads) {
+SystemBatchOptions BatchOptions(int threads) {
   SystemBatchOptions o;
   o.threads = threads;
   o.start = Eigen::Vector3d(0.3, 0.2, 0);
@@ -60,8 +60,8 @@ Vec2 ClosedFormMap(const ForcedParams& p, Real x, Real y, Real t_end) {
 
 TEST(SystemBatch, ForcedRowsAreFixedPointsOfTheClosedFormMap) {
   const ForcedParams base = Belt();
-  const auto cols = Grid(7, 5);
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(base), cols, Options(2));
+  const auto cols = BatchGrid(7, 5);
+  const SystemBatch b = StroboscopicOrbits(ForcedModel(base), cols, BatchOptions(2));
   ASSERT_EQ(b.rows(), 35u);
   ASSERT_EQ(b.tangent, 2);
   EXPECT_TRUE(b.error.empty()) << b.error;
@@ -96,8 +96,8 @@ TEST(SystemBatch, ForcedRowsAreFixedPointsOfTheClosedFormMap) {
 // adapter) started from the row's point with the row's m.
 TEST(SystemBatch, ForcedRowsEqualTheSingleOrbitApi) {
   const ForcedParams base = Belt();
-  const auto cols = Grid(5, 4);
-  const SystemBatchOptions opt = Options(1);
+  const auto cols = BatchGrid(5, 4);
+  const SystemBatchOptions opt = BatchOptions(1);
   const SystemBatch b = StroboscopicOrbits(ForcedModel(base), cols, opt);
   ForcedOrbitOptions fo;
   fo.flow.rtol = fo.flow.atol = 1e-13;
@@ -120,7 +120,7 @@ TEST(SystemBatch, ForcedRowsEqualTheSingleOrbitApi) {
 TEST(SystemBatch, NonStopRowsMatchDenHartog) {
   ForcedParams base = ref::Coulomb(0.3, 0.3, 0, 0, 1, 1.3);
   SystemColumn w{ForcedModel::kOmegaIndex, {1.3, 1.5, 1.75, 2, 2.25, 2.5}};
-  SystemBatchOptions o = Options(2);
+  SystemBatchOptions o = BatchOptions(2);
   o.start = Eigen::Vector3d(-0.5, 0.0, 0);
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.transient = 0;  // Newton from the start: the undamped approach is slow
@@ -136,9 +136,9 @@ TEST(SystemBatch, NonStopRowsMatchDenHartog) {
 }
 
 TEST(SystemBatch, OneAndTwoThreadsGiveTheSameColumns) {
-  const auto cols = Grid(12, 10);
-  const SystemBatch one = StroboscopicOrbits(ForcedModel(Belt()), cols, Options(1));
-  const SystemBatch two = StroboscopicOrbits(ForcedModel(Belt()), cols, Options(2));
+  const auto cols = BatchGrid(12, 10);
+  const SystemBatch one = StroboscopicOrbits(ForcedModel(Belt()), cols, BatchOptions(1));
+  const SystemBatch two = StroboscopicOrbits(ForcedModel(Belt()), cols, BatchOptions(2));
   EXPECT_EQ(one.threads, 1);
   EXPECT_EQ(two.threads, 2);
   EXPECT_EQ(one.status, two.status);
@@ -153,17 +153,17 @@ TEST(SystemBatch, OneAndTwoThreadsGiveTheSameColumns) {
 }
 
 // The seed belt forced at A 0.3 (studies/seed_forced.ini).
-ForcedParams Seed(double w) { return ref::SeedBelt(0.25, 0.3, w); }
+ForcedParams BatchSeed(double w) { return ref::SeedBelt(0.25, 0.3, w); }
 
 TEST(SystemBatch, FailedRowsKeepTheirStatusAndZeros) {
   // Omega 0.52: no period up to 4 (the orbit diagram's chaotic band); one
   // Newton step from the start: kNotConverged.
   SystemColumn w{ForcedModel::kOmegaIndex, {0.52, 0.53}};
-  SystemBatchOptions o = Options(1);
+  SystemBatchOptions o = BatchOptions(1);
   o.start = Eigen::Vector3d(0, 0, 0);
-  SystemBatch b = StroboscopicOrbits(ForcedModel(Seed(0.52)), {w}, o);
+  SystemBatch b = StroboscopicOrbits(ForcedModel(BatchSeed(0.52)), {w}, o);
   o.transient = 0, o.max_m = 1, o.shooting.max_newton = 1;
-  const SystemBatch c = StroboscopicOrbits(ForcedModel(Seed(0.52)), {w}, o);
+  const SystemBatch c = StroboscopicOrbits(ForcedModel(BatchSeed(0.52)), {w}, o);
   for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_EQ(b.status[i], OrbitStatus::kAperiodic);
     EXPECT_EQ(c.status[i], OrbitStatus::kNotConverged);
@@ -183,16 +183,16 @@ TEST(SystemBatch, FailedRowsKeepTheirStatusAndZeros) {
 // the single-orbit API's, not a doubled copy of it.
 TEST(SystemBatch, SlowlyAttractingOrbitsKeepTheirLeastPeriod) {
   SystemColumn w{ForcedModel::kOmegaIndex, {1.45, 1.5}};
-  SystemBatchOptions o = Options(2);
+  SystemBatchOptions o = BatchOptions(2);
   o.start = Eigen::Vector3d(0, 0, 0);
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(Seed(1.45)), {w}, o);
+  const SystemBatch b = StroboscopicOrbits(ForcedModel(BatchSeed(1.45)), {w}, o);
   ForcedOrbitOptions fo;
   fo.flow.rtol = fo.flow.atol = 1e-13;
   for (std::size_t i = 0; i < 2; ++i) {
     ASSERT_EQ(b.status[i], OrbitStatus::kOk) << i;
     EXPECT_EQ(b.m[i], 1) << i;
     EXPECT_GT(b.multiplier[i], 0.8) << i;
-    const ForcedOrbit r = ShootStroboscopic(ForcedModel(Seed(w.values[i])), b.start[2 * i],
+    const ForcedOrbit r = ShootStroboscopic(ForcedModel(BatchSeed(w.values[i])), b.start[2 * i],
                                             b.start[2 * i + 1], 1, fo);
     ASSERT_EQ(r.status, ForcedOrbitStatus::kConverged);
     EXPECT_NEAR(std::abs(r.multipliers[0]), b.multiplier[i], 1e-9);
@@ -204,12 +204,12 @@ TEST(SystemBatch, SlowlyAttractingOrbitsKeepTheirLeastPeriod) {
 TEST(SystemBatch, CancelStopsTheRowsAndReportsProgress) {
   for (int threads : {1, 2}) {
     std::size_t last = 0;
-    SystemBatchOptions o = Options(threads);
+    SystemBatchOptions o = BatchOptions(threads);
     o.cancelled = [&] { return last >= 64; };  // progress comes first
     o.progress = [&](std::size_t done) { last = done; };
     // 10^4 rows (~0.25 s on two threads): the pool polls the hook every
     // 20 ms, so most rows are still queued when it fires.
-    const SystemBatch b = StroboscopicOrbits(ForcedModel(Belt()), Grid(40, 250), o);
+    const SystemBatch b = StroboscopicOrbits(ForcedModel(Belt()), BatchGrid(40, 250), o);
     EXPECT_TRUE(b.cancelled) << threads;
     const auto cancelled = std::count(b.status.begin(), b.status.end(), OrbitStatus::kCancelled);
     EXPECT_GT(cancelled, 5000) << threads;
@@ -220,9 +220,9 @@ TEST(SystemBatch, CancelStopsTheRowsAndReportsProgress) {
         EXPECT_EQ(b.period[i], 0.0);
       }
   }
-  SystemBatchOptions o = Options(1);
+  SystemBatchOptions o = BatchOptions(1);
   o.cancelled = [] { return true; };
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(Belt()), Grid(3, 3), o);
+  const SystemBatch b = StroboscopicOrbits(ForcedModel(Belt()), BatchGrid(3, 3), o);
   EXPECT_TRUE(b.cancelled);
   EXPECT_EQ(b.found(), 0u);
 }
@@ -238,7 +238,7 @@ void ExpectRefused(const std::vector<SystemColumn>& cols, const SystemBatchOptio
 }
 
 TEST(SystemBatch, BadColumnsAndOptionsAreRefusedBeforeAnyWork) {
-  const SystemBatchOptions o = Options(1);
+  const SystemBatchOptions o = BatchOptions(1);
   const int mu = static_cast<int>(Parameter::kMuS);
   ExpectRefused({}, o, "no parameter column");
   ExpectRefused({{99, {1.0}}}, o, "parameter index 99");
