@@ -15,7 +15,7 @@ done
 build=${1:-build}
 shift || true
 
-packages=(g++ make cmake libeigen3-dev libnlopt-cxx-dev libsundials-dev
+packages=(g++ make cmake ninja-build libeigen3-dev libnlopt-cxx-dev libsundials-dev
           libboost-program-options-dev libboost-dev libgtest-dev gnuplot-nox
           python3-dev pybind11-dev python3-pybind11 python3-numpy
           python3-pip python3-setuptools python3-wheel python3-venv
@@ -35,5 +35,11 @@ if ((${#missing[@]})); then
     "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+# Ninja for a new build directory: one job graph across the targets, where the
+# Makefiles build a target's objects only after the targets it links (a fresh
+# Release build: 392 s against 591 s of wall time on 2 cores, docs/benchmarks.md).
+# An existing build directory keeps its generator.
+generator=()
+if [ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null; then generator=(-G Ninja); fi
+cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build "$build" -j "$(nproc)" "${targets[@]}"
