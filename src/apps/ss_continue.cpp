@@ -22,6 +22,7 @@
 #include "cli/run_system.hpp"
 #include "cli/study.hpp"
 #include "cli/system_choice.hpp"
+#include "cli/system_restart.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/basin/branch_disturbance.hpp"
 #include "stickslip/continuation/continuation.hpp"
@@ -83,12 +84,13 @@ po::options_description AppOptions() {
       "label), as AUTO-07p does; the special points with their labels and pt are printed "
       "always");
   cli::AddRunOptions(d, "plots", "write the TSV files and the script, but do not run gnuplot");
-  cli::AddRestartOptions(d);
+  cli::AddRestartOptions(d, true);
   cli::AddStartOptions(d);
   d.add_options()("switch", po::bool_switch(),
-                  "with --restart DIR --point PDn of a forced run: continue the period-doubled "
-                  "branch (m -> 2m; AUTO's ISW=-1) from the PD point to whichever of --from, --to "
-                  "(default: the range of the run the point came from) it opens toward");
+                  "with --restart DIR --point PDn of a forced or a --system run: continue the "
+                  "period-doubled branch (m -> 2m, or twice the section's returns; AUTO's "
+                  "ISW=-1) from the PD point to whichever of --from, --to (default: the range of "
+                  "the run the point came from) it opens toward");
   return d;
 }
 
@@ -235,7 +237,7 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
-  if (cli::SystemRequested(args))  // chain, mode_coupling (docs/systems.md)
+  if (cli::SystemRequested(args) || cli::SystemRestartRequested(args))  // docs/systems.md
     return cli::RunSystem(args, kProg, cli::CommandLine(argc, argv));
   cli::RefuseSystem(args, kProg, {"start_at", "transient", "disturbance"});
   // A forced run's point restarts the forced oscillator (its files say so).

@@ -5,14 +5,16 @@
 
 namespace stickslip::cli {
 
-void AddRestartOptions(po::options_description& d) {
+void AddRestartOptions(po::options_description& d, bool systems) {
   d.add_options()(
       "restart", Value()->value_name("DIR"),
-      "start from a point of the ss_continue run in DIR, belt or forced (its parameters "
-      "and solver options are the defaults)")(
+      systems ? "start from a point of the ss_continue run in DIR, belt, forced or --system (its "
+                "system, parameters and solver options are the defaults)"
+              : "start from a point of the ss_continue run in DIR, belt or forced (its parameters "
+                "and solver options are the defaults)")(
       "point", Value()->value_name("LABEL"),
       "with --restart: the point, a label of its special_points.tsv (GR1, HB1, LP1, PD1, CR1, "
-      "...) or a point number of its branch.tsv");
+      "CL1, ...) or a point number of its branch.tsv");
 }
 
 std::optional<LabelledPoint> RestartFromArguments(const Arguments& args) {

@@ -12,8 +12,9 @@
 
 namespace stickslip::cli {
 
-// The two options, for an app's own options_description.
-void AddRestartOptions(po::options_description& d);
+// The two options, for an app's own options_description; `systems`: the
+// app restarts --system runs too (ss_continue).
+void AddRestartOptions(po::options_description& d, bool systems = false);
 
 // The point if --restart was given, else nothing. Throws UsageError naming
 // --restart or --point and the value (missing or corrupt files, an unknown

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/system_choice.hpp"
+#include "cli/system_restart.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 #include "stickslip/orbits/settle.hpp"
 
@@ -21,6 +23,9 @@ constexpr double kMinMaxStep = 1e-5;
 struct SystemSetup {
   std::unique_ptr<System> system;  // at --from
   SystemChoice choice = SystemChoice::kChain;
+  Params law;  // the contacts' law, as given
+  std::optional<SystemPoint> restart;
+  bool doubled = false;  // --switch: the period-doubled branch from a PD point
   int param = 0;
   double from = 0, to = 0, start_at = 0, max_step = 0.01, disturbance = 0.01;
   double max_amplitude = OrbitBranchOptions().max_amplitude;
@@ -28,24 +33,68 @@ struct SystemSetup {
   SettleOptions settle;
 };
 
+// A restart's start and range (system_restart.hpp): the run starts at the
+// point's value; in the run's own parameter it goes by default to the far end
+// of that run's range (--switch: the doubled branch within that range), in
+// another --to is required.
+void ConfigureRestart(const Arguments& args, SystemSetup& s) {
+  const SystemPoint& sp = *s.restart;
+  if (sp.start.z.size() != s.system->dimension() || sp.contacts != s.system->contacts())
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": the point has " +
+                     std::to_string(sp.start.z.size()) + " state components and " +
+                     std::to_string(sp.contacts) + " contacts, the system " +
+                     std::to_string(s.system->dimension()) + " and " +
+                     std::to_string(s.system->contacts()));
+  if (args.Given("start_at"))
+    throw UsageError(args.Source("start_at") + ": a restart starts at its point");
+  const double p = s.system->ParameterValue(s.param);
+  s.start_at = s.from = p;
+  const bool same = s.system->ParameterName(s.param) == sp.continued;
+  if (same)
+    s.to = std::abs(sp.run_to - p) >= std::abs(sp.run_from - p) ? sp.run_to : sp.run_from;
+  else if (!args.Given("to"))
+    throw UsageError("--to is required with --restart in " + s.system->ParameterName(s.param) +
+                     " (the run's parameter is " + sp.continued + ")");
+  if (!args.Flag("switch")) return;
+  if (sp.type != "PD")
+    throw UsageError(args.Source("switch") + " needs --point PDn (a period doubling), not " +
+                     sp.label + " (" + sp.type + ")");
+  if (!same)
+    throw UsageError(args.Source("switch") + " continues the doubled branch in " + sp.continued +
+                     ", the PD point's parameter");
+  s.doubled = true;
+  s.from = sp.run_from, s.to = sp.run_to;
+}
+
 SystemSetup Configure(const Arguments& args) {
-  for (const char* o : {"restart", "point", "switch", "all", "m", "floquet", "no_estimates"})
+  for (const char* o : {"all", "m", "floquet", "no_estimates"})
     if (args.Given(o) && (args.map()[o].value().type() != typeid(bool) || args.Flag(o)))
       throw UsageError(args.Source(o) + " applies to the belt and the forced oscillator, not to " +
                        "--system " + args.Text("system"));
   SystemSetup s;
+  if (args.Given("restart")) s.restart = SystemRestartFromArguments(args);
+  if (args.Given("point") && !s.restart)
+    throw UsageError(args.Source("point") + " " + args.Text("point") + " needs --restart DIR");
+  if (args.Flag("switch") && !s.restart)
+    throw UsageError(args.Source("switch") + " needs --restart DIR --point PDn");
+  s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
+  s.system = SystemFromArguments(args, s.restart ? &*s.restart : nullptr);
   s.choice = SystemChoiceOf(args);
-  s.system = SystemFromArguments(args);
-  if (!args.Given("param"))
-    throw UsageError("--param is required with --system " + args.Text("system") + " (one of " +
+  if (s.restart) FromName(s.restart->system, &s.choice);  // known: SystemFromArguments built it
+  const std::string system = Name(s.choice);
+  if (!args.Given("param") && !s.restart)
+    throw UsageError("--param is required with --system " + system + " (one of " +
                      ParameterList(*s.system) + ")");
-  s.param = s.system->ParameterIndex(args.Text("param"));
+  const std::string param = args.Text("param", s.restart ? s.restart->continued : "");
+  s.param = s.system->ParameterIndex(param);
   if (s.param < 0)
-    throw UsageError(args.Source("param") + ": '" + args.Text("param") + "' is no parameter of " +
-                     args.Text("system") + " (its parameters: " + ParameterList(*s.system) + ")");
-  if (!args.Given("to")) throw UsageError("--to is required with --system");
-  s.from = args.Number("from", s.system->ParameterValue(s.param));
-  s.to = args.Number("to", 0);
+    throw UsageError(args.Source("param") + ": '" + param + "' is no parameter of " + system +
+                     " (its parameters: " + ParameterList(*s.system) + ")");
+  s.from = s.system->ParameterValue(s.param);
+  if (s.restart) ConfigureRestart(args, s);
+  if (!args.Given("to") && !s.restart) throw UsageError("--to is required with --system");
+  s.from = args.Number("from", s.from);
+  s.to = args.Number("to", s.to);
   if (s.to == s.from) throw UsageError(args.Source("to") + " must differ from --from");
   for (const auto& [name, value] : {std::pair{"from", s.from}, std::pair{"to", s.to}}) {
     std::unique_ptr<System> at = s.system->Clone();
@@ -55,10 +104,16 @@ SystemSetup Configure(const Arguments& args) {
                        FormatNumber(value) + ": " + e);
   }
   s.system->SetParameterValue(s.param, s.from);
-  s.start_at = args.Number("start_at", s.from);
+  if (!s.restart) s.start_at = args.Number("start_at", s.from);
   if (!(std::min(s.from, s.to) <= s.start_at && s.start_at <= std::max(s.from, s.to)))
-    throw UsageError(args.Source("start_at") + " = " + FormatNumber(s.start_at) +
-                     " must lie between --from and --to");
+    throw UsageError(
+        (s.restart ? "--restart " + args.Text("restart") + " point " + args.Text("point") + ": its "
+                   : args.Source("start_at") + " = ") +
+        param + " = " + FormatNumber(s.start_at) + " must lie between --from and --to" +
+        (s.doubled ? ", not at either" : ""));
+  if (s.doubled && (s.start_at == s.from || s.start_at == s.to))
+    throw UsageError(args.Source("switch") + ": the PD point's " + param + " = " +
+                     FormatNumber(s.start_at) + " must lie strictly between --from and --to");
   s.max_step = args.Number("max_step", s.max_step);
   if (!(s.max_step >= kMinMaxStep && s.max_step <= 1))
     throw UsageError(args.Source("max_step") + " = " + FormatNumber(s.max_step) + " must lie in [" +
@@ -68,11 +123,12 @@ SystemSetup Configure(const Arguments& args) {
         "--max_step x |--to - --from| = " + FormatNumber(s.max_step * std::abs(s.to - s.from)) +
         " is below the branch's smallest step " + FormatNumber(OrbitBranchOptions().palc.ds_min) +
         ": widen the range or raise --max_step");
-  s.max_amplitude = args.Number("max_amplitude", s.max_amplitude);
+  s.max_amplitude =
+      args.Number("max_amplitude", s.restart ? s.restart->max_amplitude : s.max_amplitude);
   if (!(s.max_amplitude > 0))
     throw UsageError(args.Source("max_amplitude") + " = " + FormatNumber(s.max_amplitude) +
                      " must be > 0");
-  s.flow = FlowOptionsFromArguments(args);
+  s.flow = FlowOptionsFromArguments(args, s.restart ? s.restart->flow : FlowOptions());
   s.settle.shooting.flow = s.flow;
   s.settle.transient = args.Number("transient", s.settle.transient);
   // Each contact may stick once per period: the recurrence looks that far.
@@ -92,7 +148,21 @@ SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
   return SettleOnStickSlip(*at, NearSteadySliding(*at, s.disturbance), o);
 }
 
-OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, RunControl& run) {
+// A restart's orbit, as if settled on: its point and section.
+SettledOrbit AtPoint(const SystemPoint& sp) {
+  SettledOrbit o;
+  o.found = true;
+  o.section = sp.section;
+  o.orbit.start = sp.start;
+  o.orbit.period = sp.period;
+  return o;
+}
+
+// The branch from the start to `to`; a restart's leaves along the tangent
+// (`side` picks the half at a fold); --switch: the doubled branch from the
+// PD point to whichever end it opens toward.
+OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, int side,
+                  RunControl& run) {
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, s.start_at);
   OrbitBranchOptions o;
@@ -101,6 +171,11 @@ OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, 
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   o.palc.cancelled = [&run] { return run.Cancelled(); };
   o.max_amplitude = s.max_amplitude;
+  if (s.doubled)
+    return ContinueDoubled(*at, s.param, settled.orbit.start, settled.section,
+                           std::min(s.from, s.to), std::max(s.from, s.to), o);
+  if (s.restart)
+    return ContinueOrbitsFrom(*at, s.param, settled.orbit.start, settled.section, to, side, o);
   return ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
 }
 
@@ -154,13 +229,18 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
                {"from", FormatNumber(s.from)},
                {"to", FormatNumber(s.to)},
                {"start_at", FormatNumber(s.start_at)},
-               {"orbit", settled.found ? "the attractor settled on from steady sliding + " +
-                                             FormatNumber(s.disturbance) + " after " +
-                                             FormatNumber(s.settle.transient) + " time units"
-                                       : "none: " + NoOrbit(settled)},
+               {"orbit", s.restart       ? std::string("the restart point's orbit, no settling")
+                         : settled.found ? "the attractor settled on from steady sliding + " +
+                                               FormatNumber(s.disturbance) + " after " +
+                                               FormatNumber(s.settle.transient) + " time units"
+                                         : "none: " + NoOrbit(settled)},
                {"rtol", FormatNumber(s.flow.rtol)},
                {"atol", FormatNumber(s.flow.atol)},
                {"steady_status", Name(r.steady.status)}});
+  const int returns = settled.section.returns * (s.doubled ? 2 : 1);  // ContinueDoubled's
+  const PoincareSection section = PoincareSection::StickExit(settled.section.contact, returns);
+  AddRestartMetadata(*s.system, s.choice, s.law, s.flow, s.max_amplitude,
+                     settled.found ? &section : nullptr, meta);
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
     meta.emplace_back("branch_" + std::to_string(r.numbers[i]) + "_status",
                       std::string(Name(r.pieces[i].status)) +
@@ -203,17 +283,27 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   so.cancelled = [&run] { return run.Cancelled(); };
   r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
   run.Phase("settling");
-  const SettledOrbit settled = run.Cancelled() ? SettledOrbit() : Settle(s, run);
+  const SettledOrbit settled = run.Cancelled() ? SettledOrbit()
+                               : s.restart     ? AtPoint(*s.restart)
+                                               : Settle(s, run);
   run.Phase("continuing");
-  if (settled.found) {  // 1 toward --to, 2 back toward --from
+  const bool fold = s.restart && s.restart->type == "LP";
+  if (s.doubled && settled.found) {
+    r.pieces.push_back(Piece(s, settled, s.to, 1, run)), r.numbers.push_back(1);
+  } else if (settled.found) {  // 1 toward --to, 2 back toward --from (a fold: both halves)
     if (s.start_at != s.to)
-      r.pieces.push_back(Piece(s, settled, s.to, run)), r.numbers.push_back(1);
-    if (s.start_at != s.from)
-      r.pieces.push_back(Piece(s, settled, s.from, run)), r.numbers.push_back(2);
+      r.pieces.push_back(Piece(s, settled, s.to, 1, run)), r.numbers.push_back(1);
+    if (s.start_at != s.from || (fold && s.start_at != s.to))
+      r.pieces.push_back(Piece(s, settled, fold ? s.to : s.from, -1, run)), r.numbers.push_back(2);
   }
   const std::string partial = Partial(r, settled, run);
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);
   Metadata meta = FileMetadata(s, r, settled, model, ToolMetadata(prog, command));
+  if (s.restart) meta.emplace_back("restart", DescribeSystemRestart(args, *s.restart));
+  if (s.doubled)
+    meta.emplace_back("switch", "period-doubled branch, returns " +
+                                    std::to_string(s.restart->section.returns) + " -> " +
+                                    std::to_string(2 * s.restart->section.returns));
   meta.emplace_back("status", partial.empty() ? "complete" : "partial: " + partial);
   TsvTable branch = SystemBranchTable(*s.system, r), special = SystemSpecialTable(*s.system, r);
   branch.PrependMeta(meta);

@@ -36,9 +36,10 @@ std::vector<Arguments::Setting> Settings(const Arguments& args) {
   return out;
 }
 
-std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const Params& law) {
+std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const Params& law,
+                              long blocks) {
   if (choice == SystemChoice::kChain) {
-    const long n = args.Integer("blocks", 2);
+    const long n = args.Integer("blocks", blocks);
     if (n < 1 || n > kMaxBlocks)
       throw UsageError(args.Source("blocks") + " = " + std::to_string(n) + ": must lie in [1, " +
                        std::to_string(kMaxBlocks) + "]");
@@ -47,6 +48,17 @@ std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const 
   mode_coupling::CouplingParams c;
   c.law = law;
   return std::make_unique<mode_coupling::ModeCoupling>(c);
+}
+
+// The parameters the restart's run recorded, at the point.
+void SetRestartParameters(const Arguments& args, const SystemPoint& sp, System* s) {
+  for (const auto& [name, value] : sp.parameters) {
+    const int j = s->ParameterIndex(name);
+    if (j < 0)
+      throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": '" + name +
+                       "' is no parameter of " + sp.system);
+    s->SetParameterValue(j, value);
+  }
 }
 
 }  // namespace
@@ -89,21 +101,25 @@ void RefuseSystem(const Arguments& args, const std::string& prog,
                      ": a [system] section needs system = chain or mode_coupling");
 }
 
-std::unique_ptr<System> SystemFromArguments(const Arguments& args) {
-  const SystemChoice choice = SystemChoiceOf(args);
+std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemPoint* restart) {
+  SystemChoice choice = SystemChoiceOf(args);
+  if (restart && !FromName(restart->system, &choice))
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": unknown system '" +
+                     restart->system + "'");
   if (args.Given("blocks") && choice != SystemChoice::kChain)
     throw UsageError(args.Source("blocks") + " needs --system chain");
   for (const char* o : {"mass", "damping", "stiffness", "belt_speed", "force", "omega"})
     if (args.Given(o))
       throw UsageError(args.Source(o) + ": --system " + Name(choice) +
                        " takes dimensionless inputs without forcing");
-  const Params law = UncheckedModelFromArguments(args);
+  const Params law = UncheckedModelFromArguments(args, restart ? restart->law : Params());
   std::unique_ptr<System> s;
   try {
-    s = Build(choice, args, law);
+    s = Build(choice, args, law, restart ? restart->blocks : 2);
   } catch (const InvalidArgument& e) {
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e.what());
   }
+  if (restart) SetRestartParameters(args, *restart, s.get());
   for (const char* o : {"beta", "v", "mu_s", "mu_k"})  // the model options the system names
     if (args.Given(o) && s->ParameterIndex(o) >= 0)
       s->SetParameterValue(s->ParameterIndex(o), args.Number(o, 0));

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli/study.hpp"
+#include "stickslip/io/system_restart.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/system/system.hpp"
 
@@ -35,8 +36,11 @@ inline bool SystemRequested(const Arguments& args) {
 void RefuseSystem(const Arguments& args, const std::string& prog,
                   const std::vector<std::string>& also = {});
 // The chosen system with every setting applied and validated; UsageError
-// naming the option or study line and the value otherwise.
-std::unique_ptr<System> SystemFromArguments(const Arguments& args);
+// naming the option or study line and the value otherwise. With a restart
+// (system_restart.hpp), its system, blocks, law and parameters at the point
+// are the defaults the options override.
+std::unique_ptr<System> SystemFromArguments(const Arguments& args,
+                                            const SystemPoint* restart = nullptr);
 // "chain of 2 blocks: v = 0.25, kc = 1, ..." : the system and its parameters.
 std::string DescribeSystem(const System& s, SystemChoice choice, int continued);
 // The items of a comma-separated list, each trimmed of blanks; every item,

@@ -28,7 +28,7 @@ std::vector<SystemLine> SystemLines(const System& s, const SystemRun& run) {
       l.branch = b < run.numbers.size() ? run.numbers[b] : static_cast<int>(b) + 1, l.p = r.p;
       l.kind = r.sticks > 0 ? "stick-slip" : "pure-slip";
       l.sticks = r.sticks, l.exits = r.exits, l.crossings = r.crossings;
-      l.period = r.period, l.lo = r.lo, l.hi = r.hi, l.z0 = r.start.z;
+      l.period = r.period, l.lo = r.lo, l.hi = r.hi, l.z0 = r.start.z, l.mode = r.start.mode;
       l.multipliers = r.multipliers, l.stable = r.stable;
       l.mult_max = 0;
       for (const auto& m : r.multipliers) l.mult_max = std::max(l.mult_max, std::abs(m));
@@ -56,18 +56,20 @@ std::vector<std::string> Columns(const System& s, const SystemRun& run, int k) {
   for (int i = 0; i < s.tangent_dimension(); ++i)
     c.insert(c.end(), {StateColumn(s, i) + "_min", StateColumn(s, i) + "_max"});
   for (int i = 0; i < s.dimension(); ++i) c.push_back(StateColumn(s, i) + "_0");
+  c.push_back("mode_0");
   for (int j = 1; j <= k; ++j)
     c.insert(c.end(), {"mult" + std::to_string(j) + "_re", "mult" + std::to_string(j) + "_im"});
   c.insert(c.end(), {"mult_max", "max_real", "stable", "pt"});
   return c;
 }
 
-std::vector<TsvTable::Cell> Cells(const SystemLine& l, int k, int pt) {
+std::vector<TsvTable::Cell> Cells(const SystemLine& l, int k, int pt, int contacts) {
   const bool eq = l.branch == 0;
   std::vector<TsvTable::Cell> row = {
       l.branch, l.p, l.kind, l.sticks, l.exits, l.crossings, eq ? kNan : l.period};
   for (Eigen::Index i = 0; i < l.lo.size(); ++i) row.insert(row.end(), {l.lo[i], l.hi[i]});
   for (Eigen::Index i = 0; i < l.z0.size(); ++i) row.emplace_back(l.z0[i]);
+  row.emplace_back(ModeSetName(l.mode, contacts));
   for (int j = 0; j < k; ++j) {
     const bool has = j < static_cast<int>(l.multipliers.size());
     row.insert(row.end(),
@@ -91,7 +93,7 @@ TsvTable SystemBranchTable(const System& s, const SystemRun& run) {
   const int k = io_detail::Multipliers(lines);
   TsvTable t(Columns(s, run, k));
   int pt = 0;
-  for (const SystemLine& l : lines) t.AddRow(Cells(l, k, ++pt));
+  for (const SystemLine& l : lines) t.AddRow(Cells(l, k, ++pt, s.contacts()));
   return t;
 }
 
@@ -107,7 +109,7 @@ TsvTable SystemSpecialTable(const System& s, const SystemRun& run) {
   for (const SystemLine& l : lines) {
     ++pt;
     if (l.label == SpecialKind::kNone) continue;
-    std::vector<TsvTable::Cell> row = Cells(l, k, pt);
+    std::vector<TsvTable::Cell> row = Cells(l, k, pt, s.contacts());
     row.insert(row.begin(), Name(l.label));
     row.emplace_back(std::string(Name(l.label)) + std::to_string(++count[l.label]));
     row.emplace_back(l.description);

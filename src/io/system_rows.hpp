@@ -18,6 +18,7 @@ struct SystemLine {
   int sticks = 0, exits = 0, crossings = 0;
   double period = 0;
   Eigen::VectorXd lo, hi, z0;
+  ModeSet mode;  ///< z0's mode (steady sliding: every contact slips below)
   std::vector<std::complex<double>> multipliers;
   double mult_max = 0, max_real = 0;
   bool stable = false;

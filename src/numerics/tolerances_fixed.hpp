@@ -37,6 +37,10 @@ struct FixedTolerances {
   // Orbit branches: the edge search behind a failed chord steps at least
   // kBranchEdgeStep (1 + |p|), and a switched branch's kBranchEdgeStep |range|.
   static constexpr double kBranchEdgeStep = 1e-6;
+  // A restart's start is a fold where |t_p| of the branch's unit tangent is
+  // below this (ContinueOrbitsFrom): t_p vanishes like sqrt(|p - p_fold|), so
+  // a fold located to 1e-12 has |t_p| near 1e-6.
+  static constexpr double kFoldTangent = 1e-4;
   // Orbit branches: a branch back past its start by kBranchTurnBack times the
   // range has left it (a turn within rounding of the start is not).
   static constexpr double kBranchTurnBack = 1e-3;

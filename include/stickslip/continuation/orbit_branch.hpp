@@ -83,6 +83,20 @@ OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint&
                            const PoincareSection& section, double to,
                            const OrbitBranchOptions& options);
 
+/// The branch through `start`, an orbit already computed at the system's
+/// value of `parameter` (a restart: AUTO-07p's IRS), toward `to`. There is
+/// no Newton with p held first (at a fold DP - I is singular): the first
+/// correction holds the component of the branch's tangent (the null vector
+/// of [F_u F_p] at start) that moves most, and the branch leaves along the
+/// tangent oriented toward `to`; where the tangent has no component in p
+/// (|t_p| < 1e-4: a fold), along the half `side` (1 or -1) picks: the
+/// orientation whose largest component is positive, or its opposite. The
+/// first row is the start, corrected. Throws InvalidArgument as
+/// ContinueOrbits does, and for a side other than 1 or -1.
+OrbitBranch ContinueOrbitsFrom(const System& system, int parameter, const FlowPoint& start,
+                               const PoincareSection& section, double to, int side,
+                               const OrbitBranchOptions& options);
+
 /// Branch switching at a period doubling, for any system (AUTO-07p's ISW =
 /// -1 at a PD label; Kuznetsov 2004, section 4.4): `system` at the PD's
 /// parameter value, `pd` the PD orbit's section point (an OrbitRow's start)

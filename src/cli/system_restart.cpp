@@ -1,0 +1,71 @@
+// A system's restart from the command line (system_restart.hpp).
+#include "cli/system_restart.hpp"
+
+#include "cli/physical.hpp"
+#include "stickslip/io/report.hpp"
+
+namespace stickslip::cli {
+
+bool SystemRestartRequested(const Arguments& args) {
+  return args.Given("restart") && args.Given("point") &&
+         IsSystemRun(args.Text("restart"), args.Text("point"));
+}
+
+SystemPoint SystemRestartFromArguments(const Arguments& args) {
+  if (!args.Given("point"))
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") +
+                     " needs --point LABEL (LP1, PD1, GR1, ... or a point number)");
+  if (ScalesFromArguments(args))
+    throw UsageError(args.Source("restart") +
+                     " restarts in dimensionless parameters: physical inputs cannot be combined "
+                     "with it");
+  SystemPoint sp;
+  try {
+    sp = ReadSystemPoint(args.Text("restart"), args.Text("point"));
+  } catch (const RestartError& e) {
+    const std::string opt = e.part() == RestartError::Part::kRun ? "restart" : "point";
+    throw UsageError(args.Source(opt) + " " + args.Text(opt) + ": " + e.what());
+  }
+  const std::string run = args.Text("restart") + " is a run of --system " + sp.system;
+  if (args.Given("system") && args.Text("system") != sp.system)
+    throw UsageError(args.Source("system") + " " + args.Text("system") + ": " + run);
+  if (args.Given("blocks") && args.Integer("blocks", 0) != sp.blocks)
+    throw UsageError(args.Source("blocks") + " " + args.Text("blocks") + ": " + run +
+                     (sp.blocks > 0 ? " of " + std::to_string(sp.blocks) + " blocks" : ""));
+  if (!sp.periodic())
+    throw UsageError(args.Source("point") + " " + args.Text("point") +
+                     " is a point of steady sliding (branch 0): a system's restart starts on an "
+                     "orbit (LP, PD, GR, CL, ... or a point number of branch 1 or 2)");
+  return sp;
+}
+
+std::string DescribeSystemRestart(const Arguments& args, const SystemPoint& sp) {
+  return args.Text("restart") + " point " + sp.label + " (pt " + std::to_string(sp.pt) + ", " +
+         sp.type + ", " + sp.continued + " = " + FormatNumber(sp.p) + ")";
+}
+
+void AddRestartMetadata(const System& s, SystemChoice choice, const Params& law,
+                        const FlowOptions& flow, double max_amplitude,
+                        const PoincareSection* section, Metadata& meta) {
+  std::string parameters, coefficients;
+  for (int j = 0; j < s.parameters(); ++j)
+    parameters += (j ? "," : "") + s.ParameterName(j) + "=" + FormatNumber(s.ParameterValue(j));
+  for (const std::string& name : ParameterNames(law.law))
+    coefficients +=
+        (coefficients.empty() ? "" : ",") + name + "=" + FormatNumber(GetParameter(law, name));
+  meta.emplace_back("system_name", Name(choice));
+  if (choice == SystemChoice::kChain) meta.emplace_back("blocks", std::to_string(s.contacts()));
+  meta.insert(meta.end(), {{"law", Name(law.law)},
+                           {"law_parameters", coefficients},
+                           {"parameters", parameters},
+                           {"integrator", flow.integrator == Integrator::kCvode
+                                              ? std::string("cvode ") + Name(flow.method)
+                                              : std::string(Name(flow.integrator))},
+                           {"max_steps", std::to_string(flow.max_steps)},
+                           {"max_amplitude", FormatNumber(max_amplitude)}});
+  if (!section) return;
+  meta.insert(meta.end(), {{"section_contact", std::to_string(section->contact)},
+                           {"section_returns", std::to_string(section->returns)}});
+}
+
+}  // namespace stickslip::cli

@@ -1,0 +1,165 @@
+// A point of a system's run read back (system_restart.hpp). The run writes
+// what is read here: cli/run_system.cpp's metadata, system_branch_report.cpp's
+// columns.
+#include "stickslip/io/system_restart.hpp"
+
+#include <cmath>
+#include <regex>
+
+#include "io/tsv_read.hpp"
+#include "stickslip/system/mode.hpp"
+
+namespace stickslip {
+
+namespace {
+
+using Part = RestartError::Part;
+using io_detail::ReadTable;
+using io_detail::Table;
+
+// The most returns a section is read with (a sanity bound on the file).
+constexpr int kMaxReturns = 1 << 20;
+
+bool IsNumber(const std::string& point) {
+  return std::regex_match(point, std::regex("[1-9][0-9]{0,8}"));
+}
+
+std::string FileOf(const std::string& dir, const std::string& point) {
+  return dir + (IsNumber(point) ? "/branch.tsv" : "/special_points.tsv");
+}
+
+RestartError Corrupt(const Table& t, const std::string& why) {
+  return RestartError(Part::kRun, "'" + t.path + "' is corrupt: " + why);
+}
+
+// "a=1,b=2" as (name, value) pairs, in order.
+std::vector<std::pair<std::string, double>> Pairs(const Table& t, const std::string& key) {
+  std::vector<std::pair<std::string, double>> out;
+  const std::string& text = t.Meta(key);
+  std::size_t from = 0;
+  while (from <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    const std::string item = text.substr(from, comma - from);
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) throw Corrupt(t, key + " item '" + item + "'");
+    out.emplace_back(item.substr(0, eq), t.Number(item.substr(eq + 1), item.substr(0, eq)));
+    from = comma + 1;
+  }
+  return out;
+}
+
+// The system, its parameters, the law and the options from the metadata.
+void ReadRun(const Table& t, SystemPoint* sp) {
+  const std::string& tool = t.Meta("tool");
+  if (tool.rfind("ss_continue", 0) != 0)
+    throw RestartError(Part::kRun, "'" + t.path + "' was not written by ss_continue");
+  if (!t.meta.count("system"))
+    throw RestartError(Part::kRun, "'" + t.path +
+                                       "' is a run of the belt or the forced oscillator, not of "
+                                       "a --system: restart it without --system");
+  sp->system = t.Meta("system_name");
+  if (sp->system == "chain") {
+    sp->blocks = static_cast<int>(t.Number(t.Meta("blocks"), "blocks"));
+    if (!(sp->blocks >= 1 && sp->blocks <= ModeSet::kMaxContacts))
+      throw Corrupt(t, "blocks = " + t.Meta("blocks"));
+  }
+  try {
+    sp->law.law = LawFromName(t.Meta("law"));
+    for (const auto& [name, value] : Pairs(t, "law_parameters")) SetParameter(sp->law, name, value);
+  } catch (const RestartError&) {
+    throw;
+  } catch (const InvalidArgument& e) {
+    throw RestartError(Part::kRun, "'" + t.path + "': " + e.what());
+  }
+  sp->parameters = Pairs(t, "parameters");
+  sp->continued = t.Meta("continued");
+  sp->flow = io_detail::ReadFlowOptions(t);
+  sp->max_amplitude = t.Number(t.Meta("max_amplitude"), "max_amplitude");
+  const double contact = t.Number(t.Meta("section_contact"), "section_contact");
+  const double returns = t.Number(t.Meta("section_returns"), "section_returns");
+  if (!(contact >= 0 && contact < ModeSet::kMaxContacts && returns >= 1 && returns <= kMaxReturns))
+    throw Corrupt(t, "section_contact = " + t.Meta("section_contact") +
+                         ", section_returns = " + t.Meta("section_returns"));
+  sp->section = PoincareSection::StickExit(static_cast<int>(contact), static_cast<int>(returns));
+  sp->run_from = t.Number(t.Meta("from"), "from");
+  sp->run_to = t.Number(t.Meta("to"), "to");
+  if (const std::string e = sp->flow.ValidationError(); !e.empty()) throw Corrupt(t, e);
+}
+
+// The row's parameter value, state, mode and period.
+void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* sp) {
+  sp->branch = static_cast<int>(t.Number(row[t.Column("branch")], "branch"));
+  sp->p = t.Number(row[t.Column(sp->continued)], sp->continued);
+  bool found = false;
+  for (auto& [name, value] : sp->parameters)
+    if (name == sp->continued) value = sp->p, found = true;
+  if (!found) throw Corrupt(t, "continued '" + sp->continued + "' is not among its parameters");
+  std::vector<double> z;
+  for (std::size_t j = 0; j < t.header.size(); ++j) {
+    const std::string& c = t.header[j];
+    if (c.size() > 2 && c.compare(c.size() - 2, 2, "_0") == 0 && c != "mode_0")
+      z.push_back(t.Number(row[j], c));
+  }
+  sp->start.z = Eigen::Map<Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
+  const std::string modes = row[t.Column("mode_0")];
+  sp->contacts = 0;
+  for (std::size_t from = 0; from <= modes.size(); ++sp->contacts) {
+    const std::size_t comma = std::min(modes.find(',', from), modes.size());
+    Mode m = Mode::kSlipBelow;
+    if (sp->contacts >= ModeSet::kMaxContacts || !FromName(modes.substr(from, comma - from), &m))
+      throw Corrupt(t, "mode_0 = '" + modes + "'");
+    sp->start.mode.set(sp->contacts, m);
+    from = comma + 1;
+  }
+  sp->period = t.Number(row[t.Column("period")], "period");
+  if (!std::isfinite(sp->p) || !sp->start.z.allFinite() ||
+      (sp->periodic() && !(std::isfinite(sp->period) && sp->period > 0)))
+    throw RestartError(Part::kRun, "'" + t.path + "': the point " + sp->label +
+                                       " is invalid (parameter, state or period not finite)");
+}
+
+}  // namespace
+
+bool IsSystemRun(const std::string& dir, const std::string& point) {
+  try {
+    return ReadTable(FileOf(dir, point)).meta.count("system") > 0;
+  } catch (const RestartError&) {
+    return false;
+  }
+}
+
+SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point) {
+  SystemPoint sp;
+  sp.label = point;
+  const bool number = IsNumber(point);
+  if (!number &&
+      !std::regex_match(point, std::regex("(HB|LP|PD|NS|AD|GR|CR|SL|CL)[1-9][0-9]{0,8}")))
+    throw RestartError(Part::kPoint, "'" + point +
+                                         "' is neither a label (LP1, PD1, GR1, CL1, ...) nor a "
+                                         "point number (1, 2, ... of branch.tsv)");
+  const Table t = ReadTable(FileOf(dir, point));
+  ReadRun(t, &sp);
+  if (number) {
+    sp.pt = std::stoi(point);
+    if (sp.pt > static_cast<int>(t.rows.size()))
+      throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path + "' (it has " +
+                                           std::to_string(t.rows.size()) + " points)");
+    sp.type = t.rows[sp.pt - 1][t.Column("kind")];
+    ReadRow(t, t.rows[sp.pt - 1], &sp);
+    return sp;
+  }
+  const int lab = t.Column("lab");
+  std::string have;
+  for (const auto& row : t.rows) {
+    have += (have.empty() ? "" : ", ") + row[lab];
+    if (row[lab] != point) continue;
+    sp.type = row[t.Column("label")];
+    sp.pt = static_cast<int>(t.Number(row[t.Column("pt")], "pt"));
+    ReadRow(t, row, &sp);
+    return sp;
+  }
+  throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path +
+                                       "' (its labels: " + (have.empty() ? "none" : have) + ")");
+}
+
+}  // namespace stickslip

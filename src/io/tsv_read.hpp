@@ -1,0 +1,37 @@
+// Private to src/io/: a TSV as TsvTable writes it ('# key: value' lines, a
+// header, rows), read back for a restart (restart.cpp, system_restart.cpp).
+// Every failure is a RestartError of Part::kRun naming the file.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "stickslip/io/restart.hpp"
+
+namespace stickslip::io_detail {
+
+struct Table {
+  std::string path;
+  std::map<std::string, std::string> meta;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+
+  /// The column's index; throws if there is none.
+  int Column(const std::string& name) const;
+  /// The value of a '# key:' line; throws if there is none.
+  const std::string& Meta(const std::string& key) const;
+  /// A cell or metadata value as a number; throws naming `what` if it is none.
+  double Number(const std::string& text, const std::string& what) const;
+};
+
+/// The file at path, if it is a regular file of at most
+/// LabelledPoint::kMaxFileBytes (a FIFO, a device or a socket is refused
+/// without blocking).
+Table ReadTable(const std::string& path);
+
+/// The integrator, rtol, atol and max_steps of the metadata (cli/about.cpp's
+/// RunMetadata); throws if one is missing or unknown.
+FlowOptions ReadFlowOptions(const Table& t);
+
+}  // namespace stickslip::io_detail
