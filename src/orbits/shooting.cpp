@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "numerics/max_abs.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
@@ -96,7 +97,6 @@ void Shooting::Check(const PoincareSection& p) const {
 
 namespace {
 // The largest |entry| of v.
-double MaxAbs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 }  // namespace
 
 PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& section) {

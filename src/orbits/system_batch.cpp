@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "batch_rows.hpp"
+#include "numerics/max_abs.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
@@ -23,7 +24,6 @@ constexpr std::size_t kThreadRows = 32;
 // Newton iterations from a run that did not recur (system_batch.hpp, step 3).
 constexpr int kUnsettledNewton = 8;
 
-double MaxAbs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
 // The column checks; empty if the columns are usable.
 std::string ColumnError(const System& base, const std::vector<SystemColumn>& columns) {
