@@ -131,9 +131,9 @@ py::dict Diagram(ForcedParams base, ForcedAxis axis, double from, double to, int
 }
 
 py::dict ForcedBasinsOf(const ForcedParams& p, int nx, int ny, std::pair<double, double> x_range,
-                std::pair<double, double> xdot_range, std::optional<int> transient,
-                std::optional<int> keep, std::optional<int> max_period, int threads,
-                std::optional<double> rtol, std::optional<double> atol) {
+                        std::pair<double, double> xdot_range, std::optional<int> transient,
+                        std::optional<int> keep, std::optional<int> max_period, int threads,
+                        std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);
   ForcedBasinOptions o;
   o.nx = nx, o.ny = ny, o.x_lo = x_range.first, o.x_hi = x_range.second;

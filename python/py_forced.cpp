@@ -78,8 +78,8 @@ PyForcedOrbit MakeOrbit(const ForcedOrbit& o, const std::vector<Vec2>& pts, bool
 }
 
 PyForcedTrajectory SimulateForced(const ForcedParams& p, double x0, std::optional<double> xdot0,
-                            double t_end, double dt, ForcedSection section, long max_rows,
-                            std::optional<double> rtol, std::optional<double> atol) {
+                                  double t_end, double dt, ForcedSection section, long max_rows,
+                                  std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);  // throws InvalidArgument naming the value
   ForcedSimulationOptions o;
   o.flow = FlowOf(rtol, atol), o.t_end = t_end, o.dt = dt, o.section = section;

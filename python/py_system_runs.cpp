@@ -72,9 +72,9 @@ Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
   return state;
 }
 
-PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorXd& state, double t_end,
-                            double dt, long max_rows, std::optional<double> rtol,
-                            std::optional<double> atol) {
+PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorXd& state,
+                                  double t_end, double dt, long max_rows,
+                                  std::optional<double> rtol, std::optional<double> atol) {
   const std::unique_ptr<System> s = SystemOf(system);
   const Eigen::VectorXd z0 = CheckedState(*s, state);
   if (!(t_end > 0) || !std::isfinite(t_end))
@@ -222,9 +222,9 @@ void BindSystemRuns(py::module_& m) {
       .def_readonly("max_real", &S::max_real)
       .def_readonly("stable", &S::stable);
   const py::object none = py::none();
-  m.def("simulate_system", &SimulateSystem, py::arg("system"), py::arg("state"), py::arg("t_end") = 100.0,
-        py::arg("dt") = 0.01, py::arg("max_rows") = 1000000, py::arg("rtol") = none,
-        py::arg("atol") = none,
+  m.def("simulate_system", &SimulateSystem, py::arg("system"), py::arg("state"),
+        py::arg("t_end") = 100.0, py::arg("dt") = 0.01, py::arg("max_rows") = 1000000,
+        py::arg("rtol") = none, py::arg("atol") = none,
         "One trajectory of any system (Params, ForcedParams, ChainParams, CouplingParams) from "
         "`state` (its state_names' order), one row every dt and at every switch; the one flow "
         "(C++ Flow). More than max_rows rows raise ValueError.");

@@ -3,7 +3,7 @@
 #  1. builds in build-asan with -DSTICKSLIP_SANITIZE=ON (AddressSanitizer +
 #     UndefinedBehaviorSanitizer, RelWithDebInfo) and runs the library's tests
 #     there (ctest -L unit: the app tests, the docs and Python checks run once,
-#     in the Release suite; two long reference runs too, see below) with ASAN_OPTIONS=detect_leaks=1 and
+#     in the Release suite; three long reference runs too, see below) with ASAN_OPTIONS=detect_leaks=1 and
 #     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1;
 #  2. runs one continuation of the seed study under valgrind
 #     (--leak-check=full --error-exitcode=3) on the plain Release build in build.
@@ -88,12 +88,13 @@ t=$SECONDS
 say "ctest under ASan + UBSan (ASAN_OPTIONS=$ASAN_OPTIONS)"
 ctest_log="$asan_build/ctest-sanitize.log"
 ctest_ok=1
-# Two long reference runs are left to the Release suite: each repeats, for
-# minutes under the sanitizers, code that shorter tests here run too (the
-# doubled chart curves: ForcedChartDoubled.SecondDoubling...; the sliding
-# bifurcations: the other ForcedSwitchingSliding tests). Under ASan they took
-# 185 s and 33 s of the suite's 609 s (docs/benchmarks.md, "CI build time").
-heavy='^(ForcedChartDoubled\.ThirdDoublingCurveMatchesOneParameterRuns|'
+# Three long reference runs are left to the Release suite: each repeats, for
+# a minute or more under the sanitizers, code that shorter tests here run too
+# (the doubled chart curves are the forced chart's curves at m = 2 and 4:
+# ForcedChart*, ForcedCurvePoints.*; the sliding bifurcations: the other
+# ForcedSwitchingSliding tests). Under ASan they took 185 s, 78 s and 33 s of
+# the suite's 609 s (docs/benchmarks.md, "CI build time").
+heavy='^(ForcedChartDoubled\.(Second|Third)DoublingCurveMatchesOneParameterRuns|'
 heavy+='ForcedSwitchingSliding\.DenHartogFloorReferenceHasCrossingThenGrazingSlidingNoSwitching)$'
 # shellcheck disable=SC2086
 ctest --test-dir "$asan_build" --output-on-failure -j "$jobs" -L unit -E "$heavy" ${CTEST_ARGS:-} \

@@ -20,10 +20,12 @@ std::string AxisError(const Params& base, const ParameterAxis& axis, const char*
 }
 
 std::string RangeError(double from, double to, const char* from_name, const char* to_name) {
-  if (!std::isfinite(from)) return std::string(from_name) + " = " + Num(from, 12) + " is not finite";
+  if (!std::isfinite(from))
+    return std::string(from_name) + " = " + Num(from, 12) + " is not finite";
   if (!std::isfinite(to)) return std::string(to_name) + " = " + Num(to, 12) + " is not finite";
   if (!(from < to))
-    return std::string(from_name) + " = " + Num(from, 12) + " must be < " + to_name + " = " + Num(to, 12) +
+    return std::string(from_name) + " = " + Num(from, 12) + " must be < " + to_name + " = " +
+           Num(to, 12) +
            (from == to ? " (the rectangle is empty)" : " (the rectangle is inverted)");
   const double scale = std::max(std::abs(from), std::abs(to));
   if (to - from < kMinRelativeWidth * scale) {

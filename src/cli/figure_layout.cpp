@@ -17,7 +17,6 @@ constexpr double kScreenPoints = 12;  // the scripts' own font size (figure_styl
 constexpr double kLineWidth = 0.8;    // x the scripts' widths: 0.8 pt for their lw 2
 constexpr double kPointSize = 0.5;    // x the scripts' point sizes
 
-
 bool ParseDouble(const std::string& text, double* x) {
   std::size_t used = 0;
   try {
@@ -117,8 +116,9 @@ std::string ApplyFigureLayout(const std::string& script, const FigureLayout& l) 
   const std::string name = l.font.substr(0, l.font.rfind(','));
   std::string t;
   if (terminal == "pdfcairo") {
-    t = "set terminal pdfcairo size " + FormatNumber(wi) + "in," + FormatNumber(hi) + "in enhanced " + font +
-        " fontscale 0.75 linewidth " + FormatNumber(kLineWidth) + " dashlength 1.5";
+    t = "set terminal pdfcairo size " + FormatNumber(wi) + "in," + FormatNumber(hi) +
+        "in enhanced " + font + " fontscale 0.75 linewidth " + FormatNumber(kLineWidth) +
+        " dashlength 1.5";
   } else if (terminal == "svg") {  // 96 units an inch, the font in units
     t = "set terminal svg size " + FormatNumber(std::round(wi * kSvgDpi)) + "," +
         FormatNumber(std::round(hi * kSvgDpi)) + " enhanced font '" + name + "," +

@@ -16,8 +16,8 @@
 namespace stickslip {
 
 using Eigen::VectorXd;
-using orbit_detail::TracePoint;
 using orbit_detail::OrbitProblem;
+using orbit_detail::TracePoint;
 
 std::string OrbitBranchOptions::ValidationError() const {
   std::string e = shooting.ValidationError();

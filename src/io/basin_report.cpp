@@ -6,8 +6,7 @@
 
 namespace stickslip {
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
                     const std::vector<Disturbance>& disturbances) {
@@ -18,15 +17,17 @@ TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
   else
     t.AddComment("status: complete");
   std::ostringstream grid;
-  grid << r.nx << " x " << r.ny << " starts, x in [" << FormatNumber(r.x_lo) << ", " << FormatNumber(r.x_hi)
-       << "], x' in [" << FormatNumber(r.xdot_lo) << ", " << FormatNumber(r.xdot_hi) << "]";
+  grid << r.nx << " x " << r.ny << " starts, x in [" << FormatNumber(r.x_lo) << ", "
+       << FormatNumber(r.x_hi) << "], x' in [" << FormatNumber(r.xdot_lo) << ", "
+       << FormatNumber(r.xdot_hi) << "]";
   t.AddComment("grid: " + grid.str());
   const PeriodicOrbits& po = r.orbits;
   t.AddComment("steady sliding: x = " + FormatNumber(po.steady.x) + ", " +
                (po.steady.stable() ? "stable" : "unstable"));
   if (po.has_stick_slip)
-    t.AddComment("orbit: stick-slip, stable, period " + FormatNumber(po.stick_slip.period) + ", t_stick " +
-                 FormatNumber(po.stick_slip.t_stick) + ", x in [" + FormatNumber(po.stick_slip.extrema.x_min) + ", " +
+    t.AddComment("orbit: stick-slip, stable, period " + FormatNumber(po.stick_slip.period) +
+                 ", t_stick " + FormatNumber(po.stick_slip.t_stick) + ", x in [" +
+                 FormatNumber(po.stick_slip.extrema.x_min) + ", " +
                  FormatNumber(po.stick_slip.extrema.x_max) + "]");
   for (size_t i = 0; i < po.pure_slip.size(); ++i) {
     const Orbit& o = po.pure_slip[i];
@@ -36,8 +37,8 @@ TsvTable BasinTable(const BasinResult& r, const std::string& model_description,
                  FormatNumber(o.start[0] - po.steady.x));
     if (i < disturbances.size() && !o.stable)
       t.AddComment("smallest disturbance: pure-slip " + std::to_string(i) + ": x " +
-                   FormatNumber(disturbances[i].x) + ", x' " + FormatNumber(disturbances[i].xdot) + ", energy " +
-                   FormatNumber(disturbances[i].energy));
+                   FormatNumber(disturbances[i].x) + ", x' " + FormatNumber(disturbances[i].xdot) +
+                   ", energy " + FormatNumber(disturbances[i].energy));
   }
   for (int f = 0; f < 4; ++f)
     t.AddComment(std::string("count: ") + Name(static_cast<Fate>(f)) + " " +
@@ -90,9 +91,10 @@ std::string BasinScript(const BasinResult& r, const Model& model,
      << FigureUnitVariables(units) << "set xlabel "
      << GnuplotQuoted("initial displacement x" + units.LengthUnit()) << "\n"
      << "set ylabel " << GnuplotQuoted("initial velocity dx/dt" + units.SpeedUnit()) << "\n"
-     << "set xrange [" << FormatNumber(ul * (r.x_lo - dx / 2)) << ":" << FormatNumber(ul * (r.x_hi + dx / 2)) << "]\n"
-     << "set yrange [" << FormatNumber(uv * (r.xdot_lo - dy / 2)) << ":" << FormatNumber(uv * (r.xdot_hi + dy / 2))
-     << "]\n"
+     << "set xrange [" << FormatNumber(ul * (r.x_lo - dx / 2)) << ":"
+     << FormatNumber(ul * (r.x_hi + dx / 2)) << "]\n"
+     << "set yrange [" << FormatNumber(uv * (r.xdot_lo - dy / 2)) << ":"
+     << FormatNumber(uv * (r.xdot_hi + dy / 2)) << "]\n"
      << "unset grid\n"
      << "set palette defined (-0.5 " << fill(kFillEquilibrium) << ", 0.5 " << fill(kFillEquilibrium)
      << ", 0.5 " << fill(kFillStickSlip) << ", 1.5 " << fill(kFillStickSlip) << ", 1.5 "
@@ -102,8 +104,8 @@ std::string BasinScript(const BasinResult& r, const Model& model,
      << "fate(s) = s eq 'steady-sliding' ? 0 : s eq 'stick-slip' ? 1 : "
         "s eq 'pure-slip' ? 2 : 3\n"
      << "set arrow from " << FormatNumber(ul * (exit[0] - 2 * model.params().mu_s)) << ","
-     << FormatNumber(uv * model.v()) << " to " << FormatNumber(ul * exit[0]) << "," << FormatNumber(uv * model.v())
-     << " nohead lw 4 lc rgb 'black' front\n"
+     << FormatNumber(uv * model.v()) << " to " << FormatNumber(ul * exit[0]) << ","
+     << FormatNumber(uv * model.v()) << " nohead lw 4 lc rgb 'black' front\n"
      << "set bmargin 9\n"
      << "plot 'basins.tsv' using ($1*ul):($2*uv):(fate(strcol(3))) with image notitle";
   // Key entries for the fates that occur, in the order of fate().
@@ -122,7 +124,8 @@ std::string BasinScript(const BasinResult& r, const Model& model,
        << ls << " lw 3 title '" << (stick ? "stick-slip" : "pure slip")
        << (curves[k].stable ? " orbit, stable" : " orbit, unstable") << "'";
   }
-  os << ", \\\n     '+' using (" << FormatNumber(ul * r.orbits.steady.x) << "):(0) every ::0::0 with points "
+  os << ", \\\n     '+' using (" << FormatNumber(ul * r.orbits.steady.x)
+     << "):(0) every ::0::0 with points "
      << "pt 7 ps 1.5 lc rgb 'black' title 'steady sliding (x̄, 0)'\n"
      << "unset output\n";
   return os.str();

@@ -24,7 +24,6 @@ constexpr std::size_t kThreadRows = 32;
 // Newton iterations from a run that did not recur (system_batch.hpp, step 3).
 constexpr int kUnsettledNewton = 8;
 
-
 // The column checks; empty if the columns are usable.
 std::string ColumnError(const System& base, const std::vector<SystemColumn>& columns) {
   if (columns.empty()) return "no parameter column: give at least one";

@@ -66,8 +66,8 @@ struct ContinueResult {
 // A child still running after timeout seconds is killed (SIGKILL).
 // With run_as >= 0 (only as root), the child drops to that user id first.
 ContinueResult Exec(const std::vector<std::string>& args, const std::string& out_path,
-            const std::string& err_path, double timeout, double sigint_after = -1,
-            int run_as = -1) {
+                    const std::string& err_path, double timeout, double sigint_after = -1,
+                    int run_as = -1) {
   ContinueResult r;
   r.shown = "ss_continue";
   for (const auto& a : args) r.shown += " " + a;
@@ -106,7 +106,8 @@ class ContinueApp : public ::testing::Test {
   std::string Path(const std::string& name) const { return dir_ + "/" + name; }
   std::string OutDir() const { return Path("out"); }
 
-  ContinueResult Run(const std::vector<std::string>& args, double timeout = 120, double sigint_after = -1) {
+  ContinueResult Run(const std::vector<std::string>& args, double timeout = 120,
+                     double sigint_after = -1) {
     ContinueResult r = Exec(args, Path("stdout.txt"), Path("stderr.txt"), timeout, sigint_after);
     EXPECT_FALSE(r.timed_out) << r.shown << ": still running after " << timeout << " s";
     return r;
@@ -203,10 +204,10 @@ TEST_F(ContinueApp, ParamMuSRunsOnItsDefaultRange) {
 TEST_F(ContinueApp, BeltSpeedContinuesInPhysicalUnits) {
   const std::string out = OutDir();
   const ContinueResult r = Run({"--mass",    "2",      "--stiffness",  "8",
-                        "--damping", "0.4",    "--belt_speed", "1",
-                        "--speed_m", "2.4525", "--param",      "belt_speed",
-                        "--from",    "1.5",    "--to",         "2.4525",
-                        "--out",     out,      "--no_plots",   "--no_estimates"});
+                                "--damping", "0.4",    "--belt_speed", "1",
+                                "--speed_m", "2.4525", "--param",      "belt_speed",
+                                "--from",    "1.5",    "--to",         "2.4525",
+                                "--out",     out,      "--no_plots",   "--no_estimates"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
   EXPECT_EQ(b.meta.at("L"), "2.4525 m (M g / K)");
@@ -310,7 +311,7 @@ TEST_F(ContinueApp, UnreadableStudyFileExits2) {
   ASSERT_EQ(::chmod(out.c_str(), 0777), 0);
   WriteFile(out + "/branch.tsv", kSentinel);
   const ContinueResult r = Exec({"--study", path, "--out", out, "--no_plots"}, Path("stdout.txt"),
-                        Path("stderr.txt"), 60, -1, kNobody);
+                                Path("stderr.txt"), 60, -1, kNobody);
   if (r.code == 125 || r.code == 126 || r.code == 127)
     GTEST_SKIP() << "running as root, where chmod 000 does not block reads, and the app cannot "
                     "be run as nobody (exit "
@@ -392,7 +393,8 @@ TEST_F(ContinueApp, ControlCharactersInInputAreEscaped) {
   ExpectRejected({"--law", "cu\x1b[2Jbic"}, {"'cu\\x1b[2Jbic'", "--law"});
   ExpectRejected({"--beta", "0.1\x07"}, {"'0.1\\x07'", "--beta"});
   ExpectRejected({"--study", Path("no\x1b\nfile.ini")}, {"no\\x1b\\nfile.ini"});
-  const ContinueResult r = Run({"--integrator", "tay\tlor\x7f", "--no_plots", "--out", OutDir()}, 60);
+  const ContinueResult r =
+      Run({"--integrator", "tay\tlor\x7f", "--no_plots", "--out", OutDir()}, 60);
   EXPECT_EQ(r.code, 2);
   EXPECT_TRUE(Contains(r.err, "'tay\\tlor\\x7f'"));
   for (const char c : r.err.substr(0, r.err.size() - 1))
@@ -525,8 +527,8 @@ TEST_F(ContinueApp, HelpExitsZero) {
 
 TEST_F(ContinueApp, SeedStudyBranchHasOneGrazingAndOneHopfPoint) {
   const std::string out = OutDir();
-  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--param", "v", "--from", "0.05", "--to",
-                        "0.5", "--out", out, "--no_plots"});
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--param", "v", "--from", "0.05",
+                                "--to", "0.5", "--out", out, "--no_plots"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Branch b = ReadBranch(ReadFile(out + "/branch.tsv"));
   // Metadata first, then the header line without '#' (pandas, csv.DictReader).
@@ -679,8 +681,8 @@ void ExpectFinished(const ContinueResult& r, const std::string& out) {
 }
 
 TEST_F(ContinueApp, RangeFarPastHopfPointFinishes) {
-  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "0.05", "--to", "5", "--out",
-                        OutDir(), "--no_plots"});
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "0.05", "--to", "5",
+                                "--out", OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
   if (r.code == 0) {  // the end of the range is on stable steady sliding
     const Branch b = ReadBranch(ReadFile(OutDir() + "/branch.tsv"));
@@ -691,8 +693,8 @@ TEST_F(ContinueApp, RangeFarPastHopfPointFinishes) {
 }
 
 TEST_F(ContinueApp, TinyBeltSpeedFinishes) {
-  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "1e-4", "--to", "0.5", "--out",
-                        OutDir(), "--no_plots"});
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "1e-4", "--to", "0.5",
+                                "--out", OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
   if (r.code == 0) {
     const Branch b = ReadBranch(ReadFile(OutDir() + "/branch.tsv"));
@@ -703,14 +705,14 @@ TEST_F(ContinueApp, TinyBeltSpeedFinishes) {
 }
 
 TEST_F(ContinueApp, DownwardRangeFinishes) {
-  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "5", "--to", "1e-4", "--out",
-                        OutDir(), "--no_plots"});
+  const ContinueResult r = Run({"--study", kStudies + "/seed.ini", "--from", "5", "--to", "1e-4",
+                                "--out", OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
 }
 
 TEST_F(ContinueApp, StribeckWideRangeFinishes) {
-  const ContinueResult r = Run({"--study", kStudies + "/stribeck.ini", "--from", "1e-4", "--to", "5",
-                        "--out", OutDir(), "--no_plots"});
+  const ContinueResult r = Run({"--study", kStudies + "/stribeck.ini", "--from", "1e-4", "--to",
+                                "5", "--out", OutDir(), "--no_plots"});
   ExpectFinished(r, OutDir());
 }
 
@@ -720,12 +722,12 @@ namespace {
 // A given base value of the continued parameter is validated too (issue 23,
 // old #20), as is any other parameter's.
 TEST_F(ContinueApp, ContinuedParameterBaseValueIsValidated) {
-  const ContinueResult given = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5", "--out",
-                            OutDir(), "--no_plots"});
+  const ContinueResult given = Run({"--param", "v", "--v", "-1", "--from", "0.05", "--to", "0.5",
+                                    "--out", OutDir(), "--no_plots"});
   EXPECT_EQ(given.code, 2) << given.err;
   EXPECT_NE(given.err.find("v = -1"), std::string::npos) << given.err;
-  const ContinueResult bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2", "--out",
-                          OutDir(), "--no_plots"});
+  const ContinueResult bad = Run({"--param", "beta", "--v", "-1", "--from", "0.01", "--to", "0.2",
+                                  "--out", OutDir(), "--no_plots"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("v = -1"), std::string::npos) << bad.err;
 }
@@ -737,8 +739,8 @@ namespace {
 // and the other parameters as they are.
 TEST_F(ContinueApp, ModelLineGivesTheContinuedParameterItsRange) {
   const std::string out = OutDir();
-  const ContinueResult r = Run({"--param", "v", "--from", "0.3", "--to", "0.35", "--out", out, "--no_plots",
-                        "--no_estimates"});
+  const ContinueResult r = Run({"--param", "v", "--from", "0.3", "--to", "0.35", "--out", out,
+                                "--no_plots", "--no_estimates"});
   ASSERT_EQ(r.code, 0) << r.err;
   const Tsv b = ReadTsv(ReadFile(out + "/branch.tsv"));
   EXPECT_EQ(b.meta.at("model"),

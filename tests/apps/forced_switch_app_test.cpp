@@ -22,7 +22,8 @@ class ForcedSwitchApp : public tu::AppTest {
  protected:
   void SetUp() override {
     AppTest::SetUp();
-    ASSERT_EQ(Run("--study " + kSwitchStudy + " --from 0.7 --to 0.6 --out " + dir_ + "/one"), 0) << err_;
+    ASSERT_EQ(Run("--study " + kSwitchStudy + " --from 0.7 --to 0.6 --out " + dir_ + "/one"), 0)
+        << err_;
   }
   int Run(const std::string& args) { return RunApp(kBin, "ss_continue", args + " --no_plots"); }
   tu::Tsv Table(const std::string& path) const { return tu::ReadTsv(tu::ReadFile(path)); }

@@ -22,7 +22,6 @@ using stickslip::testing_util::ReadFile;
 using stickslip::testing_util::ReadTsv;
 using stickslip::testing_util::Tsv;
 
-
 class Restart : public stickslip::testing_util::AppTest {
  protected:
   void SetUp() override {

@@ -19,7 +19,6 @@
 
 namespace {
 
-
 using stickslip::testing_util::Contains;
 using stickslip::testing_util::Exists;
 using stickslip::testing_util::ReadFile;

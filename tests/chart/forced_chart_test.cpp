@@ -74,7 +74,9 @@ TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
 }
 
 // The stribeck_forced study's scene (studies/stribeck_forced.ini).
-ForcedParams StribeckChartParams(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
+ForcedParams StribeckChartParams(double a, double w) {
+  return forced_reference::StribeckBelt(0.25, a, w);
+}
 
 // The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
 ForcedBranch OmegaRun(double a) {
@@ -85,7 +87,8 @@ ForcedBranch OmegaRun(double a) {
   ForcedBranchOptions o;
   o.flow.rtol = o.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x, tr.end.xdot, o);
+  return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x,
+                        tr.end.xdot, o);
 }
 
 const ForcedBranchRow* First(const ForcedBranch& b, ForcedLabel l) {
@@ -103,8 +106,8 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const ForcedChartOptions o =
       Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
   std::string why;
-  const ForcedCurve c = TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, ForcedCurveKind::kPD, pd->m,
-                                         pd->x0, pd->xdot0, pd->p, 0.3, &why);
+  const ForcedCurve c = TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, ForcedCurveKind::kPD,
+                                         pd->m, pd->x0, pd->xdot0, pd->p, 0.3, &why);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
   int checked = 0;
   for (const double target : {0.27, 0.33}) {
@@ -145,7 +148,8 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
       ForcedScanOptions so;
       so.orbit.flow = o.flow;
       so.max_m = 4, so.max_sticks = 6;
-      const ForcedOrbits f = FindForcedOrbits(ForcedModel(StribeckChartParams(g.x2[j], g.x1[i])), so);
+      const ForcedOrbits f =
+          FindForcedOrbits(ForcedModel(StribeckChartParams(g.x2[j], g.x1[i])), so);
       bool match = false, any_stable = false;
       for (const ForcedScanOrbit& s : f.orbits) {
         any_stable = any_stable || s.orbit.stable;

@@ -30,7 +30,8 @@ int HopfPoints(const ChartResult& r) {
 
 TEST(HopfCurve, CubicMatchesClosedForm) {
   // Seed (3.16): v = sqrt((k1 - 2 beta) / (3 k3)), k1 = 0.45, k3 = 0.6.
-  const ChartResult r = HopfChart(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25});
+  const ChartResult r =
+      HopfChart(Params{}, Plane{Parameter::kV, Parameter::kBeta, 0.02, 0.6, 0.0, 0.25});
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_GT(HopfPoints(r), 50);
   for (const CurvePoint& p : r.curves[0].points) {
@@ -65,7 +66,8 @@ Params QuinticHopf() {
 }
 
 TEST(HopfCurve, QuinticMatchesClosedFormAndHasItsGeneralizedHopfPoint) {
-  const ChartResult r = HopfChart(QuinticHopf(), Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12});
+  const ChartResult r =
+      HopfChart(QuinticHopf(), Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12});
   ASSERT_EQ(r.curves.size(), 1u);
   for (const CurvePoint& c : r.curves[0].points) {
     const double v = c.p1;
@@ -83,7 +85,8 @@ TEST(HopfCurve, QuinticMatchesClosedFormAndHasItsGeneralizedHopfPoint) {
 TEST(HopfCurve, AnyParameterPair) {
   // (v, mu_s) for the cubic law: 2 beta = k1 - 3 k3 v^2 with k1 = 3 (mu_s - mu_m) / (2 v_m),
   // k3 = (mu_s - mu_m) / (2 v_m^3): mu_s - mu_m = 2 beta / (3 / (2 v_m) - 3 v^2 / (2 v_m^3)).
-  const ChartResult r = HopfChart(Params{}, Plane{Parameter::kV, Parameter::kMuS, 0.05, 0.45, 0.3, 0.8});
+  const ChartResult r =
+      HopfChart(Params{}, Plane{Parameter::kV, Parameter::kMuS, 0.05, 0.45, 0.3, 0.8});
   ASSERT_GE(r.curves.size(), 1u);
   for (const CurvePoint& c : r.curves[0].points) {
     const double v = c.p1, vm = 0.5;

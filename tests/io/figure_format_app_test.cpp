@@ -22,7 +22,6 @@ using testing_util::Exists;
 using testing_util::ReadFile;
 using testing_util::WriteFile;
 
-
 using stickslip::testing_util::HaveGnuplot;
 
 class FigureFormatTest : public testing_util::AppTest {

@@ -267,7 +267,8 @@ TEST(Params, DefaultRangesAreValidAtBothEnds) {
     }
   }
   const ParameterRange v = DefaultRange(SeedParams(), Parameter::kV);
-  const double hopf = std::sqrt((SeedParams().k1() - 2 * SeedParams().beta) / (3 * SeedParams().k3()));  // (3.16)
+  const double hopf =
+      std::sqrt((SeedParams().k1() - 2 * SeedParams().beta) / (3 * SeedParams().k3()));  // (3.16)
   EXPECT_LT(v.from, hopf);
   EXPECT_GT(v.to, hopf);
   EXPECT_THROW(DefaultRange(SeedParams(), ParameterAxis("gamma")), InvalidArgument);
