@@ -14,6 +14,7 @@ namespace stickslip {
 namespace {
 
 using Part = RestartError::Part;
+using io_detail::PointRow;
 using io_detail::ReadTable;
 using io_detail::Table;
 
@@ -98,28 +99,8 @@ LabelledPoint ReadLabelledPoint(const std::string& dir, const std::string& point
                            "number (1, 2, ... of branch.tsv)");
   const Table t = ReadTable(dir + (number ? "/branch.tsv" : "/special_points.tsv"));
   ReadModel(t, &lp);
-  if (number) {
-    lp.pt = std::stoi(point);
-    if (lp.pt > static_cast<int>(t.rows.size()))
-      throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path + "' (it has " +
-                                           std::to_string(t.rows.size()) + " points)");
-    const auto& row = t.rows[lp.pt - 1];
-    lp.type = row[t.Column("kind")];
-    ReadRow(t, row, &lp);
-    return lp;
-  }
-  const int lab = t.Column("lab");
-  std::string have;
-  for (const auto& row : t.rows) {
-    have += (have.empty() ? "" : ", ") + row[lab];
-    if (row[lab] != point) continue;
-    lp.type = row[t.Column("label")];
-    lp.pt = static_cast<int>(t.Number(row[t.Column("pt")], "pt"));
-    ReadRow(t, row, &lp);
-    return lp;
-  }
-  throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path +
-                                       "' (its labels: " + (have.empty() ? "none" : have) + ")");
+  ReadRow(t, PointRow(t, point, number, &lp.type, &lp.pt), &lp);
+  return lp;
 }
 
 }  // namespace stickslip

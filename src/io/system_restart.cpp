@@ -14,6 +14,7 @@ namespace stickslip {
 namespace {
 
 using Part = RestartError::Part;
+using io_detail::PointRow;
 using io_detail::ReadTable;
 using io_detail::Table;
 
@@ -139,27 +140,8 @@ SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point) {
                                          "point number (1, 2, ... of branch.tsv)");
   const Table t = ReadTable(FileOf(dir, point));
   ReadRun(t, &sp);
-  if (number) {
-    sp.pt = std::stoi(point);
-    if (sp.pt > static_cast<int>(t.rows.size()))
-      throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path + "' (it has " +
-                                           std::to_string(t.rows.size()) + " points)");
-    sp.type = t.rows[sp.pt - 1][t.Column("kind")];
-    ReadRow(t, t.rows[sp.pt - 1], &sp);
-    return sp;
-  }
-  const int lab = t.Column("lab");
-  std::string have;
-  for (const auto& row : t.rows) {
-    have += (have.empty() ? "" : ", ") + row[lab];
-    if (row[lab] != point) continue;
-    sp.type = row[t.Column("label")];
-    sp.pt = static_cast<int>(t.Number(row[t.Column("pt")], "pt"));
-    ReadRow(t, row, &sp);
-    return sp;
-  }
-  throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path +
-                                       "' (its labels: " + (have.empty() ? "none" : have) + ")");
+  ReadRow(t, PointRow(t, point, number, &sp.type, &sp.pt), &sp);
+  return sp;
 }
 
 }  // namespace stickslip

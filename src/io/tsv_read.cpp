@@ -126,4 +126,27 @@ FlowOptions ReadFlowOptions(const Table& t) {
   return flow;
 }
 
+const std::vector<std::string>& PointRow(const Table& t, const std::string& point, bool number,
+                                         std::string* type, int* pt) {
+  if (number) {
+    *pt = std::stoi(point);
+    if (*pt > static_cast<int>(t.rows.size()))
+      throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path + "' (it has " +
+                                           std::to_string(t.rows.size()) + " points)");
+    *type = t.rows[*pt - 1][t.Column("kind")];
+    return t.rows[*pt - 1];
+  }
+  const int lab = t.Column("lab");
+  std::string have;
+  for (const auto& row : t.rows) {
+    have += (have.empty() ? "" : ", ") + row[lab];
+    if (row[lab] != point) continue;
+    *type = row[t.Column("label")];
+    *pt = static_cast<int>(t.Number(row[t.Column("pt")], "pt"));
+    return row;
+  }
+  throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path +
+                                       "' (its labels: " + (have.empty() ? "none" : have) + ")");
+}
+
 }  // namespace stickslip::io_detail

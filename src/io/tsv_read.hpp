@@ -34,4 +34,11 @@ Table ReadTable(const std::string& path);
 /// RunMetadata); throws if one is missing or unknown.
 FlowOptions ReadFlowOptions(const Table& t);
 
+/// The row of a restart's point: row `point` of branch.tsv when `number`,
+/// else the row of special_points.tsv whose label is `point` (a RestartError
+/// of Part::kPoint listing the labels if none is). Sets *type (the row's kind
+/// or label) and *pt.
+const std::vector<std::string>& PointRow(const Table& t, const std::string& point, bool number,
+                                         std::string* type, int* pt);
+
 }  // namespace stickslip::io_detail
