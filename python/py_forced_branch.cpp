@@ -17,7 +17,7 @@ namespace stickslip::python {
 
 namespace {
 
-// One located point of a branch (LP, PD, NS, GR, SW, AD, CR, SL), with what
+// One located point of a branch (LP, PD, NS, GR, AD, CR, SL), with what
 // a switch or a restart from it needs.
 struct PyForcedSpecial {
   std::string label, description;
@@ -53,21 +53,21 @@ ForcedBranchOptions Options(double width, int m, double max_amplitude,
   return o;
 }
 
-PyForcedSpecial Special(const ForcedBranchRow& s, const ForcedParams& base, ForcedAxis axis,
+PyForcedSpecial Special(const OrbitRow& s, int m, const ForcedParams& base, ForcedAxis axis,
                         double from, double to) {
   PyForcedSpecial q;
   q.label = Name(s.label), q.description = s.description, q.axis = axis;
   q.params = base;
   SetAxis(q.params, axis, s.p);
-  q.p = s.p, q.x0 = s.x0, q.xdot0 = s.xdot0, q.run_from = from, q.run_to = to;
-  q.m = s.m, q.sticks = s.sticks, q.crossings = s.crossings, q.stable = s.stable;
-  q.x_min = s.extrema.x_min, q.x_max = s.extrema.x_max;
-  q.xdot_min = s.extrema.xdot_min, q.xdot_max = s.extrema.xdot_max;
+  q.p = s.p, q.x0 = s.start.z[0], q.xdot0 = s.start.z[1], q.run_from = from, q.run_to = to;
+  q.m = m, q.sticks = s.sticks, q.crossings = s.crossings, q.stable = s.stable;
+  const Extrema e = RowExtrema(s);
+  q.x_min = e.x_min, q.x_max = e.x_max, q.xdot_min = e.xdot_min, q.xdot_max = e.xdot_max;
   q.multipliers = ReadOnly(std::vector<std::complex<double>>{s.multipliers[0], s.multipliers[1]});
   return q;
 }
 
-PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, ForcedAxis axis,
+PyForcedBranch MakeBranch(const OrbitBranch& r, const ForcedParams& base, ForcedAxis axis,
                           double from, double to) {
   PyForcedBranch out;
   out.axis = axis, out.status = r.status, out.message = r.message;
@@ -76,12 +76,14 @@ PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, Force
   std::vector<int> mm, st, cr;
   std::vector<bool> stable;
   py::array_t<std::complex<double>> mult({static_cast<py::ssize_t>(r.rows.size()), py::ssize_t(2)});
+  const int m = PeriodMultiple(r);
   for (size_t i = 0; i < r.rows.size(); ++i) {
-    const ForcedBranchRow& w = r.rows[i];
-    pp.push_back(w.p), x0.push_back(w.x0), xd0.push_back(w.xdot0), mm.push_back(w.m);
+    const OrbitRow& w = r.rows[i];
+    const Extrema e = RowExtrema(w);
+    pp.push_back(w.p), x0.push_back(w.start.z[0]), xd0.push_back(w.start.z[1]), mm.push_back(m);
     st.push_back(w.sticks), cr.push_back(w.crossings), stable.push_back(w.stable);
-    xmin.push_back(w.extrema.x_min), xmax.push_back(w.extrema.x_max);
-    vmin.push_back(w.extrema.xdot_min), vmax.push_back(w.extrema.xdot_max);
+    xmin.push_back(e.x_min), xmax.push_back(e.x_max);
+    vmin.push_back(e.xdot_min), vmax.push_back(e.xdot_max);
     mult.mutable_at(i, 0) = w.multipliers[0], mult.mutable_at(i, 1) = w.multipliers[1];
   }
   mult.attr("setflags")(py::arg("write") = false);
@@ -89,9 +91,9 @@ PyForcedBranch MakeBranch(const ForcedBranch& r, const ForcedParams& base, Force
   out.sticks = ReadOnly(st), out.crossings = ReadOnly(cr), out.stable = ReadOnlyBool(stable);
   out.x_min = ReadOnly(xmin), out.x_max = ReadOnly(xmax);
   out.xdot_min = ReadOnly(vmin), out.xdot_max = ReadOnly(vmax), out.multipliers = mult;
-  for (const ForcedBranchRow& s : r.special) {
-    out.special.push_back(py::make_tuple(Name(s.label), s.p, s.extrema.x_max));
-    out.special_points.push_back(Special(s, base, axis, from, to));
+  for (const OrbitRow& s : r.special) {
+    out.special.push_back(py::make_tuple(Name(s.label), s.p, RowExtrema(s).x_max));
+    out.special_points.push_back(Special(s, m, base, axis, from, to));
   }
   return out;
 }
@@ -103,7 +105,7 @@ PyForcedBranch Continue(ForcedParams base, ForcedAxis axis, double from, double 
   ForcedBranchOptions o = Options(std::abs(to - from), m, max_amplitude, max_step, rtol, atol);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
-  ForcedBranch r;
+  OrbitBranch r;
   {
     py::gil_scoped_release nogil;
     r = ContinueForced(base, axis, from, to, x_guess.value_or(0), xdot_guess.value_or(base.base.v),
@@ -132,7 +134,7 @@ PyForcedBranch Doubled(const PyForcedSpecial& pd, std::optional<double> lo,
   const ForcedParams at = pd.params;  // copies: read without the GIL
   const ForcedAxis axis = pd.axis;
   const double x0 = pd.x0, xdot0 = pd.xdot0;
-  ForcedBranch r;
+  OrbitBranch r;
   {
     py::gil_scoped_release nogil;
     r = ContinueDoubled(at, axis, x0, xdot0, a, b, o);

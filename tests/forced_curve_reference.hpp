@@ -68,11 +68,11 @@ class CurveReference {
   explicit CurveReference(const ForcedParams& p)
       : law_(p.base), beta_(p.base.beta), v_(p.base.v), a_(p.force) {}
 
-  CurvePoint Near(const ForcedBranchRow& r) const {
+  CurvePoint Near(const OrbitRow& r) const {
     CurvePoint out;
     const Real w = r.p;
-    const Real ths = SlipMiddle(w, r.x0, r.xdot0);
-    Leg l = Run(w, 0, r.x0, r.xdot0, ths);
+    const Real ths = SlipMiddle(w, r.start.z[0], r.start.z[1]);
+    Leg l = Run(w, 0, r.start.z[0], r.start.z[1], ths);
     V3 u(l.x, l.y, w);
     // Forward differences for the chord Newton and the tangent.
     Eigen::Matrix<Real, 2, 3> j;

@@ -6,8 +6,8 @@
 
 namespace stickslip::testing_util {
 
-inline ForcedBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to,
-                          const ForcedBranchOptions& o) {
+inline OrbitBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to,
+                         const ForcedBranchOptions& o) {
   SetAxis(p, axis, from);
   const ForcedModel m(p);
   ForcedRequest rq;
@@ -16,8 +16,8 @@ inline ForcedBranch Trace(ForcedParams p, ForcedAxis axis, double from, double t
   return ContinueForced(p, axis, from, to, tr.end.x, tr.end.xdot, o);
 }
 
-inline ForcedBranch TraceOmega(const ForcedParams& p, double from, double to,
-                               const ForcedBranchOptions& o) {
+inline OrbitBranch TraceOmega(const ForcedParams& p, double from, double to,
+                              const ForcedBranchOptions& o) {
   return Trace(p, ForcedAxis::kOmega, from, to, o);
 }
 

@@ -13,9 +13,9 @@ namespace stickslip {
 
 namespace {
 
-bool Sliding(ForcedLabel l) {
-  return l == ForcedLabel::kGR || l == ForcedLabel::kSW || l == ForcedLabel::kAD ||
-         l == ForcedLabel::kCR || l == ForcedLabel::kSL;
+bool Sliding(SpecialKind l) {
+  return l == SpecialKind::kGrazing || l == SpecialKind::kAdding || l == SpecialKind::kCrossing ||
+         l == SpecialKind::kSliding;
 }
 
 // One line: its constant, its range and where the seeds' text says they are.
@@ -29,36 +29,37 @@ struct Line {
 
 // The seeds among b's special points; each PD with 2m <= max_m also starts
 // the doubled branch (ContinueDoubled), whose special points are seeds too.
-void Harvest(const ForcedBranch& b, const Line& line, const ForcedChartOptions& o,
+void Harvest(const OrbitBranch& b, const Line& line, const ForcedChartOptions& o,
              ForcedBranchOptions bo, const std::string& run, int* runs,
              std::vector<ForcedSeed>* seeds) {
-  for (const ForcedBranchRow& r : b.special) {
+  const int m = PeriodMultiple(b);
+  for (const OrbitRow& r : b.special) {
     ForcedSeed s;
-    if (r.label == ForcedLabel::kLP)
+    if (r.label == SpecialKind::kFold)
       s.kind = ForcedCurveKind::kLP;
-    else if (r.label == ForcedLabel::kPD)
+    else if (r.label == SpecialKind::kPeriodDoubling)
       s.kind = ForcedCurveKind::kPD;
-    else if (r.label == ForcedLabel::kNS)
+    else if (r.label == SpecialKind::kTorus)
       s.kind = ForcedCurveKind::kNS;
     else if (Sliding(r.label))
       s.kind = ForcedCurveKind::kGR;
     else
       continue;
-    s.m = r.m, s.x0 = r.x0, s.xdot0 = r.xdot0;
+    s.m = m, s.x0 = r.start.z[0], s.xdot0 = r.start.z[1];
     s.p1 = line.along1 ? r.p : line.c, s.p2 = line.along1 ? line.c : r.p;
     s.fixed = line.along1 ? 3 : 2;
     s.where = std::string(Name(r.label)) + " of the " + run + line.at;
     seeds->push_back(s);
     const bool inside = r.p > line.lo && r.p < line.hi;
-    if (r.label != ForcedLabel::kPD || 2 * r.m > o.max_m || !inside) continue;
+    if (r.label != SpecialKind::kPeriodDoubling || 2 * m > o.max_m || !inside) continue;
     if (o.cancelled && o.cancelled()) return;
     ForcedParams at_pd = line.params;
     SetAxis(at_pd, line.axis, r.p);
-    bo.m = r.m;
-    const ForcedBranch doubled =
-        ContinueDoubled(at_pd, line.axis, r.x0, r.xdot0, line.lo, line.hi, bo);
+    bo.m = m;
+    const OrbitBranch doubled =
+        ContinueDoubled(at_pd, line.axis, s.x0, s.xdot0, line.lo, line.hi, bo);
     ++*runs;
-    const std::string name = "m = " + std::to_string(2 * r.m) + " " + Name(line.axis) +
+    const std::string name = "m = " + std::to_string(2 * m) + " " + Name(line.axis) +
                              " run (doubled at " + Num(r.p, 6) + ") ";
     Harvest(doubled, line, o, bo, name, runs, seeds);
   }
@@ -91,7 +92,7 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
       bo.palc.ds_max = 0.02 * (line.hi - line.lo);
       bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
       bo.palc.cancelled = o.cancelled;
-      const ForcedBranch b =
+      const OrbitBranch b =
           ContinueForced(start, line.axis, from, from == line.lo ? line.hi : line.lo,
                          f.points[0].x(), f.points[0].y(), bo);
       ++*runs;

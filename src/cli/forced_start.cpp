@@ -67,12 +67,12 @@ Vec2 SettledState(const ForcedModel& model, const ForcedBranchOptions& o) {
   return Vec2(0, model.v());
 }
 
-ForcedBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                          const StartOrbit& o, const ForcedBranchOptions& opts, RunControl& run) {
+OrbitBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                         const StartOrbit& o, const ForcedBranchOptions& opts, RunControl& run) {
   ForcedBranchOptions c = opts;
   c.m = o.m;
   c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
-  ForcedBranch b = ContinueForced(base, axis, from, to, o.x, o.xdot, c);
+  OrbitBranch b = ContinueForced(base, axis, from, to, o.x, o.xdot, c);
   if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
   return b;
 }

@@ -48,8 +48,8 @@ struct StartOrbit {
 Vec2 SettledState(const ForcedModel& model, const ForcedBranchOptions& o);
 
 // ContinueForced from the orbit o (its m and point), cancelled by run.
-ForcedBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                          const StartOrbit& o, const ForcedBranchOptions& opts, RunControl& run);
+OrbitBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                         const StartOrbit& o, const ForcedBranchOptions& opts, RunControl& run);
 
 // The attractor the state (x, xdot) at phase 0 settles on, if periodic with
 // m <= kSettleMaxPeriod: its m, sticks and section point.

@@ -131,7 +131,7 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
 // period (a period-11 attractor at Omega 1.5 on the seed belt at A 0.1);
 // if that is not periodic, Newton at m = 1 from the settled state; if that
 // fails, the first stable orbit of the start scan (forced_start.hpp).
-ForcedBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
+OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   SetAxis(p, s.axis, from);
   const ForcedModel model(p);
@@ -139,25 +139,25 @@ ForcedBranch Trace(const BranchSetup& s, double from, double to, RunControl& run
     ForcedBranchOptions opts = s.opts;
     opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
     const double x = s.restart->state.x(), xdot = s.restart->state.y();
-    ForcedBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
-                               : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
+    OrbitBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
+                              : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
     if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
     return b;
   }
   const Vec2 z = SettledState(model, s.opts);
   const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
   if (settled && settled->m > 1) {
-    ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
+    OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
     if (b.status != BranchStatus::kStartFailed) return b;
   }
   StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
   newton.m = s.opts.m;
   newton.x = z[0], newton.xdot = z[1];
-  ForcedBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
+  OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
   if (b.status != BranchStatus::kStartFailed || run.Cancelled()) return b;
   const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, 0, run);
   for (const StartOrbit& o : ChooseStart(list, StartChoice(), "")) {
-    ForcedBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
+    OrbitBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
     if (c.status != BranchStatus::kStartFailed) return c;
   }
   return b;

@@ -111,30 +111,32 @@ void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, co
        << Pad("|mu|max", 11) << Pad("stability", 10) << "lab\n";
   }
   int pt = 0;
-  std::map<ForcedLabel, int> count;
+  std::map<SpecialKind, int> count;
   std::vector<std::string> special;
   for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.rows) {
+    for (const OrbitRow& r : piece.branch.rows) {
       ++pt;
       std::string lab;
-      if (r.label != ForcedLabel::kNone)
+      if (r.label != SpecialKind::kNone)
         lab = std::string(Name(r.label)) + std::to_string(++count[r.label]);
       ForcedParams at = p;
       SetAxis(at, axis, r.p);
-      const double period = r.m * 2 * M_PI / at.omega;
+      const int m = PeriodMultiple(piece.branch);
+      const double period = m * 2 * M_PI / at.omega;
+      const Extrema e = RowExtrema(r);
       if (detail == LogDetail::kEveryPoint) {
         const double mu = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
         std::ostringstream line;
         line << "  " << Pad(std::to_string(pt), 6) << Pad(std::to_string(piece.index), 8)
              << Pad(r.sticks > 0 ? "stick-slip" : "non-stop", 12) << Pad(Fixed(r.p, 10), 16)
-             << Pad(std::to_string(r.m), 4) << Pad(Fixed(period, 6), 11)
-             << Pad(Fixed(r.extrema.x_min, 6), 11) << Pad(Fixed(r.extrema.x_max, 6), 11)
-             << Pad(Fixed(mu, 6), 11) << Pad(r.stable ? "stable" : "unstable", 10) << lab;
+             << Pad(std::to_string(m), 4) << Pad(Fixed(period, 6), 11) << Pad(Fixed(e.x_min, 6), 11)
+             << Pad(Fixed(e.x_max, 6), 11) << Pad(Fixed(mu, 6), 11)
+             << Pad(r.stable ? "stable" : "unstable", 10) << lab;
         Row(os, line.str());
       }
       if (!lab.empty())
         special.push_back("  " + lab + "  pt " + std::to_string(pt) + "  " + param + " = " +
-                          FormatNumber(r.p) + "  x_max " + FormatNumber(r.extrema.x_max) + "  " +
+                          FormatNumber(r.p) + "  x_max " + FormatNumber(e.x_max) + "  " +
                           r.description);
     }
   os << "special points (restart one with --restart DIR --point LAB or PT):\n";

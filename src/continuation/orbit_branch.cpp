@@ -282,6 +282,7 @@ OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int paramet
   if (options.palc.cancelled) problem.shooting().flow().set_cancel(options.palc.cancelled);
   OrbitBranch out;
   out.status = BranchStatus::kMaxPoints;
+  out.section = problem.section();
   Monitor monitor(palc, problem, system, parameter, from, to, options, out);
   Trace(palc, problem, monitor, u0, fixed, along, from, to, options, &out);
   if (out.status == BranchStatus::kStepTooSmall && !out.rows.empty())  // where it ended
@@ -307,6 +308,7 @@ OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint&
   const auto cancelled = [&] { return options.palc.cancelled && options.palc.cancelled(); };
   if (!first.ok()) {
     OrbitBranch out;  // a cancel inside Newton's runs shows as another failure: cancelled
+    out.section = section;
     out.status = first.status == OrbitStatus::kCancelled || cancelled()
                      ? BranchStatus::kCancelled
                      : BranchStatus::kStartFailed;

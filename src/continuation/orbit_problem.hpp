@@ -41,6 +41,7 @@ class OrbitProblem final : public PalcProblem {
   /// u of an orbit found at parameter p.
   Eigen::VectorXd Unknowns(const FlowPoint& z, double p) const;
   int parameter_index() const { return nu_; }  ///< p's component in u
+  const PoincareSection& section() const { return section_; }
   /// The state after `periods` of row r's periods at parameter p from r's
   /// start, with r's clock (a guess for FindAt). Stroboscopic sections only;
   /// false where the run fails.

@@ -25,55 +25,6 @@ OrbitBranchOptions CoreOptions(const ForcedBranchOptions& o) {
   return c;
 }
 
-ForcedLabel LabelOf(SpecialKind k) {
-  switch (k) {
-    case SpecialKind::kFold:
-      return ForcedLabel::kLP;
-    case SpecialKind::kPeriodDoubling:
-      return ForcedLabel::kPD;
-    case SpecialKind::kTorus:
-      return ForcedLabel::kNS;
-    case SpecialKind::kGrazing:
-      return ForcedLabel::kGR;
-    case SpecialKind::kAdding:
-      return ForcedLabel::kAD;
-    case SpecialKind::kCrossing:
-      return ForcedLabel::kCR;
-    case SpecialKind::kSliding:
-    case SpecialKind::kContactLoss:  // no normal force that can reach 0 in the forced model
-      return ForcedLabel::kSL;
-    case SpecialKind::kHopf:
-    case SpecialKind::kNone:
-      break;
-  }
-  return ForcedLabel::kNone;
-}
-
-ForcedBranchRow RowOf(const OrbitRow& c, int m) {
-  ForcedBranchRow r;
-  r.p = c.p;
-  r.x0 = c.start.z[0], r.xdot0 = c.start.z[1];
-  r.m = m;
-  r.sticks = c.sticks, r.crossings = c.crossings;
-  r.extrema = c.lo.size() >= 2 && c.hi.size() >= 2 ? Extrema{c.lo[0], c.hi[0], c.lo[1], c.hi[1]}
-                                                   : Extrema::Empty();
-  r.multipliers[0] = c.multipliers[0], r.multipliers[1] = c.multipliers[1];
-  r.stable = c.stable;
-  r.label = LabelOf(c.label);
-  r.description = c.description;
-  return r;
-}
-
-ForcedBranch FromCore(const OrbitBranch& b, int m) {
-  ForcedBranch out;
-  out.status = b.status;
-  out.message = b.message;
-  for (const OrbitRow& r : b.rows) out.rows.push_back(RowOf(r, m));
-  for (const OrbitRow& r : b.special) out.special.push_back(RowOf(r, m));
-  out.jumps = b.jumps, out.evaluations = b.evaluations, out.seconds = b.seconds;
-  return out;
-}
-
 // The stroboscopic point (x, x') at theta = 0.
 FlowPoint Strobe(double x, double xdot) {
   return {0, Eigen::Vector3d(x, xdot, 0), ModeSet(Mode::kSlipBelow)};
@@ -81,22 +32,26 @@ FlowPoint Strobe(double x, double xdot) {
 
 }  // namespace
 
-ForcedBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                            double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
+Extrema RowExtrema(const OrbitRow& c) {
+  return c.lo.size() >= 2 && c.hi.size() >= 2 ? Extrema{c.lo[0], c.hi[0], c.lo[1], c.hi[1]}
+                                              : Extrema::Empty();
+}
+
+OrbitBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                           double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
   const std::string e = options.ValidationError(base, axis, from, to, x_guess, xdot_guess);
   if (!e.empty()) throw InvalidArgument(e);
   ForcedParams at = base;
   SetAxis(at, axis, from);
   const ForcedModel model(at);
   const FlowPoint guess = Strobe(x_guess, xdot_guess);
-  const OrbitBranch b = ContinueOrbits(model, model.ParameterIndex(Name(axis)), guess,
-                                       PoincareSection::Stroboscopic(model, guess.z, options.m), to,
-                                       CoreOptions(options));
-  return FromCore(b, options.m);
+  return ContinueOrbits(model, model.ParameterIndex(Name(axis)), guess,
+                        PoincareSection::Stroboscopic(model, guess.z, options.m), to,
+                        CoreOptions(options));
 }
 
-ForcedBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x0, double xdot0,
-                             double lo, double hi, const ForcedBranchOptions& options) {
+OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x0, double xdot0,
+                            double lo, double hi, const ForcedBranchOptions& options) {
   if (const std::string e = ValidationError(at_pd); !e.empty()) throw InvalidArgument(e);
   const double p_pd = GetAxis(at_pd, axis);
   if (!(lo < p_pd && p_pd < hi) || !std::isfinite(lo) || !std::isfinite(hi))
@@ -108,10 +63,9 @@ ForcedBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double 
     throw InvalidArgument("x0 = " + Num(x0) + ", xdot0 = " + Num(xdot0) + ": both must be finite");
   const ForcedModel model(at_pd);
   const FlowPoint pd = Strobe(x0, xdot0);
-  const OrbitBranch b = ContinueDoubled(model, model.ParameterIndex(Name(axis)), pd,
-                                        PoincareSection::Stroboscopic(model, pd.z, options.m), lo,
-                                        hi, CoreOptions(options));
-  return FromCore(b, 2 * options.m);
+  return ContinueDoubled(model, model.ParameterIndex(Name(axis)), pd,
+                         PoincareSection::Stroboscopic(model, pd.z, options.m), lo, hi,
+                         CoreOptions(options));
 }
 
 }  // namespace stickslip

@@ -16,20 +16,22 @@ std::vector<std::string> Columns(ForcedAxis axis) {
           "mult1_im", "mult2_re", "mult2_im", "mult_max", "stable",    "pt"};
 }
 
-std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const ForcedParams& p,
-                                  ForcedAxis axis) {
+std::vector<TsvTable::Cell> Cells(const OrbitRow& r, const ForcedPiece& piece,
+                                  const ForcedParams& p, ForcedAxis axis) {
   ForcedParams at = p;
   SetAxis(at, axis, r.p);
-  const double period = r.m * 2 * M_PI / at.omega;
+  const int m = PeriodMultiple(piece.branch);
+  const double period = m * 2 * M_PI / at.omega;
   const double mult_max = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
+  const Extrema e = RowExtrema(r);
   const double numbers[] = {r.p,
-                            r.extrema.x_min,
-                            r.extrema.x_max,
-                            r.extrema.xdot_min,
-                            r.extrema.xdot_max,
+                            e.x_min,
+                            e.x_max,
+                            e.xdot_min,
+                            e.xdot_max,
                             period,
-                            r.x0,
-                            r.xdot0,
+                            r.start.z[0],
+                            r.start.z[1],
                             r.multipliers[0].real(),
                             r.multipliers[0].imag(),
                             r.multipliers[1].real(),
@@ -39,11 +41,11 @@ std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const For
     if (!std::isfinite(x))
       throw InvalidArgument("forced branch row at " + std::string(Name(axis)) + " = " +
                             FormatNumber(r.p) + " has a non-finite value");
-  return {piece,           r.p,         r.m,
+  return {piece.index,     r.p,         m,
           r.sticks,        r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
           numbers[1],      numbers[2],  numbers[3],
-          numbers[4],      period,      r.x0,
-          r.xdot0,         numbers[8],  numbers[9],
+          numbers[4],      period,      numbers[6],
+          numbers[7],      numbers[8],  numbers[9],
           numbers[10],     numbers[11], mult_max,
           r.stable ? 1 : 0};
 }
@@ -53,11 +55,11 @@ std::vector<TsvTable::Cell> Cells(const ForcedBranchRow& r, int piece, const For
 template <class F>
 void ForEachRow(const std::vector<ForcedPiece>& pieces, F f) {
   int pt = 0;
-  std::map<ForcedLabel, int> count;
+  std::map<SpecialKind, int> count;
   for (const ForcedPiece& piece : pieces)
-    for (const ForcedBranchRow& r : piece.branch.rows) {
+    for (const OrbitRow& r : piece.branch.rows) {
       ++pt;
-      const std::string lab = r.label == ForcedLabel::kNone
+      const std::string lab = r.label == SpecialKind::kNone
                                   ? ""
                                   : std::string(Name(r.label)) + std::to_string(++count[r.label]);
       f(piece, r, pt, lab);
@@ -70,12 +72,11 @@ TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis ax
                            const ForcedParams& p) {
   auto cols = Columns(axis);
   TsvTable t(cols);
-  ForEachRow(pieces,
-             [&](const ForcedPiece& piece, const ForcedBranchRow& r, int pt, const std::string&) {
-               auto cells = Cells(r, piece.index, p, axis);
-               cells.push_back(pt);
-               t.AddRow(cells);
-             });
+  ForEachRow(pieces, [&](const ForcedPiece& piece, const OrbitRow& r, int pt, const std::string&) {
+    auto cells = Cells(r, piece, p, axis);
+    cells.push_back(pt);
+    t.AddRow(cells);
+  });
   return t;
 }
 
@@ -85,14 +86,14 @@ TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis a
   cols.insert(cols.begin(), "label");
   cols.insert(cols.end(), {"lab", "description"});
   TsvTable t(cols);
-  ForEachRow(pieces, [&](const ForcedPiece& piece, const ForcedBranchRow& r, int pt,
-                         const std::string& lab) {
-    if (lab.empty()) return;
-    auto cells = Cells(r, piece.index, p, axis);
-    cells.insert(cells.begin(), Name(r.label));
-    cells.insert(cells.end(), {pt, lab, r.description});
-    t.AddRow(cells);
-  });
+  ForEachRow(pieces,
+             [&](const ForcedPiece& piece, const OrbitRow& r, int pt, const std::string& lab) {
+               if (lab.empty()) return;
+               auto cells = Cells(r, piece, p, axis);
+               cells.insert(cells.begin(), Name(r.label));
+               cells.insert(cells.end(), {pt, lab, r.description});
+               t.AddRow(cells);
+             });
   return t;
 }
 

@@ -24,17 +24,17 @@ ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBel
 // The Omegas of the PD points of the period-m orbits at force a: the m = 1
 // branch traced in Omega from 0.8 down to 0.5 from the state settled over 200
 // periods, switched at each PD onto the doubled branch, m = 2, 4, ... .
-void CollectPds(double a, const ForcedBranch& b, int m, int target, ForcedBranchOptions o,
+void CollectPds(double a, const OrbitBranch& b, int m, int target, ForcedBranchOptions o,
                 std::vector<double>* pds) {
-  for (const ForcedBranchRow& r : b.special) {
-    if (r.label != ForcedLabel::kPD || r.m != m) continue;
+  for (const OrbitRow& r : b.special) {
+    if (r.label != SpecialKind::kPeriodDoubling || PeriodMultiple(b) != m) continue;
     if (m == target) {
       pds->push_back(r.p);
       continue;
     }
     o.m = m;
-    const ForcedBranch d =
-        ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.x0, r.xdot0, 0.5, 0.8, o);
+    const OrbitBranch d = ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.start.z[0],
+                                          r.start.z[1], 0.5, 0.8, o);
     CollectPds(a, d, 2 * m, target, o, pds);
   }
 }
@@ -42,7 +42,7 @@ void CollectPds(double a, const ForcedBranch& b, int m, int target, ForcedBranch
 std::vector<double> DoubledPds(double a, int m = 2) {
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 0.01;
-  const ForcedBranch b = testing_util::TraceOmega(Stribeck(a, 0.8), 0.8, 0.5, o);
+  const OrbitBranch b = testing_util::TraceOmega(Stribeck(a, 0.8), 0.8, 0.5, o);
   std::vector<double> pds;
   CollectPds(a, b, 1, m, o, &pds);
   return pds;

@@ -79,7 +79,7 @@ ForcedParams StribeckChartParams(double a, double w) {
 }
 
 // The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
-ForcedBranch OmegaRun(double a) {
+OrbitBranch OmegaRun(double a) {
   const ForcedModel model(StribeckChartParams(a, 0.8));
   ForcedRequest rq;
   rq.t_end = 200 * model.period();
@@ -91,8 +91,8 @@ ForcedBranch OmegaRun(double a) {
                         tr.end.xdot, o);
 }
 
-const ForcedBranchRow* First(const ForcedBranch& b, ForcedLabel l) {
-  for (const ForcedBranchRow& r : b.special)
+const OrbitRow* First(const OrbitBranch& b, SpecialKind l) {
+  for (const OrbitRow& r : b.special)
     if (r.label == l) return &r;
   return nullptr;
 }
@@ -100,14 +100,15 @@ const ForcedBranchRow* First(const ForcedBranch& b, ForcedLabel l) {
 // A PD curve point at a force other than its seed's, against a one-parameter
 // run in Omega at exactly that force (its own start, branch and bisection).
 TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
-  const ForcedBranch seed_run = OmegaRun(0.3);
-  const ForcedBranchRow* pd = First(seed_run, ForcedLabel::kPD);
+  const OrbitBranch seed_run = OmegaRun(0.3);
+  const OrbitRow* pd = First(seed_run, SpecialKind::kPeriodDoubling);
   ASSERT_NE(pd, nullptr) << Name(seed_run.status);
   const ForcedChartOptions o =
       Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
   std::string why;
-  const ForcedCurve c = TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, ForcedCurveKind::kPD,
-                                         pd->m, pd->x0, pd->xdot0, pd->p, 0.3, &why);
+  const ForcedCurve c =
+      TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, ForcedCurveKind::kPD,
+                       PeriodMultiple(seed_run), pd->start.z[0], pd->start.z[1], pd->p, 0.3, &why);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
   int checked = 0;
   for (const double target : {0.27, 0.33}) {
@@ -115,8 +116,8 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
     for (const ForcedCurvePoint& p : c.points)
       if (std::abs(p.p2 - target) < std::abs(best->p2 - target)) best = &p;
     if (std::abs(best->p2 - target) > 0.01) continue;  // the curve ends before
-    const ForcedBranch run = OmegaRun(best->p2);
-    const ForcedBranchRow* located = First(run, ForcedLabel::kPD);
+    const OrbitBranch run = OmegaRun(best->p2);
+    const OrbitRow* located = First(run, SpecialKind::kPeriodDoubling);
     ASSERT_NE(located, nullptr) << "force = " << best->p2;
     EXPECT_NEAR(best->p1, located->p, 1e-8) << "force = " << best->p2;
     std::printf(

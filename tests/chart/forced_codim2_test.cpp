@@ -142,10 +142,11 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
     o.palc.ds = o.palc.ds_max = 2e-4;
     double best = NAN;
     for (const double side : {1.0, -1.0}) {
-      const ForcedBranch b = ContinueForced(q, ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                                            p.p1 - side * 2e-3, z.x, z.xdot, o);
-      for (const ForcedBranchRow& row : b.special)
-        if (row.label == ForcedLabel::kGR && !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))
+      const OrbitBranch b = ContinueForced(q, ForcedAxis::kOmega, p.p1 + side * 2e-3,
+                                           p.p1 - side * 2e-3, z.x, z.xdot, o);
+      for (const OrbitRow& row : b.special)
+        if (row.label == SpecialKind::kGrazing &&
+            !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))
           best = row.p;
       if (!std::isnan(best)) break;
     }

@@ -37,7 +37,7 @@ ForcedChartOptions PointsChartOptions() {
 
 // The m = 1 branch in Omega from 1 down to 0.3 at force a, from the state
 // settled over 200 periods at Omega = 1 (as ss_continue starts).
-ForcedBranch SeedRun(double a) {
+OrbitBranch SeedRun(double a) {
   const ForcedModel model(Seed(a, 1));
   ForcedRequest rq;
   rq.t_end = 200 * model.period();
@@ -52,15 +52,15 @@ ForcedBranch SeedRun(double a) {
 // Omega at force p.p2 through the curve point's orbit (carried to phase 0;
 // for an LP moved off the fold along the multiplier's eigenvector, so that
 // Newton at fixed Omega has a regular start). NaN if none within 1e-3.
-bool Sliding(ForcedLabel l) {
-  return l == ForcedLabel::kGR || l == ForcedLabel::kSW || l == ForcedLabel::kAD ||
-         l == ForcedLabel::kCR || l == ForcedLabel::kSL;
+bool Sliding(SpecialKind l) {
+  return l == SpecialKind::kGrazing || l == SpecialKind::kAdding || l == SpecialKind::kCrossing ||
+         l == SpecialKind::kSliding;
 }
 
 // As Locate below, for any label `want` accepts; the fold's eigenvector (at
 // +1 if fold, else -1) sets the start's offset.
-double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(ForcedLabel),
-                 ForcedLabel* found = nullptr, ForcedAxis axis = ForcedAxis::kOmega) {
+double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(SpecialKind),
+                 SpecialKind* found = nullptr, ForcedAxis axis = ForcedAxis::kOmega) {
   const double at = axis == ForcedAxis::kOmega ? p.p1 : p.p2;
   const ForcedModel model(Seed(p.p2, p.p1));
   ForcedRequest rq;
@@ -82,10 +82,10 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Force
   double best = NAN;
   for (const double side : {1.0, -1.0})
     for (const double sign : {1.0, -1.0}) {
-      const ForcedBranch b =
+      const OrbitBranch b =
           ContinueForced(Seed(p.p2, p.p1), axis, at + side * 2e-3, at - side * 2e-3,
                          z.x + sign * h * e[0], z.xdot + sign * h * e[1], o);
-      for (const ForcedBranchRow& r : b.special)
+      for (const OrbitRow& r : b.special)
         if (want(r.label) && std::abs(r.p - at) < 1e-3 &&
             !(std::abs(best - at) <= std::abs(r.p - at))) {
           best = r.p;
@@ -96,10 +96,10 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Force
   return best;
 }
 
-double Locate(const ForcedCurvePoint& p, int m, ForcedLabel label) {
-  if (label == ForcedLabel::kLP)
-    return LocateAny(p, m, true, [](ForcedLabel l) { return l == ForcedLabel::kLP; });
-  return LocateAny(p, m, false, [](ForcedLabel l) { return l == ForcedLabel::kPD; });
+double Locate(const ForcedCurvePoint& p, int m, SpecialKind label) {
+  if (label == SpecialKind::kFold)
+    return LocateAny(p, m, true, [](SpecialKind l) { return l == SpecialKind::kFold; });
+  return LocateAny(p, m, false, [](SpecialKind l) { return l == SpecialKind::kPeriodDoubling; });
 }
 
 // The curve point nearest force a, if within 0.01 of it.
@@ -123,16 +123,16 @@ void ExpectNoJumps(const ForcedCurve& c, const ForcedChartOptions& o) {
 
 // Traces the curve of each `label` point of the A = 0.5 seed run, checks it
 // for jumps and its points near `levels` against one-parameter runs.
-int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<double> levels) {
-  const ForcedBranch run = SeedRun(0.5);
+int CheckCurves(SpecialKind label, ForcedCurveKind kind, std::initializer_list<double> levels) {
+  const OrbitBranch run = SeedRun(0.5);
   const ForcedChartOptions o = PointsChartOptions();
   int checked = 0, seeds = 0, ends = 0;
-  for (const ForcedBranchRow& s : run.special) {
+  for (const OrbitRow& s : run.special) {
     if (s.label != label) continue;
     ++seeds;
     std::string why;
-    const ForcedCurve c =
-        TraceForcedCurve(Seed(0.5, s.p), o, kind, s.m, s.x0, s.xdot0, s.p, 0.5, &why);
+    const ForcedCurve c = TraceForcedCurve(Seed(0.5, s.p), o, kind, PeriodMultiple(run),
+                                           s.start.z[0], s.start.z[1], s.p, 0.5, &why);
     EXPECT_GT(c.points.size(), 5u) << c.ends.Text();
     ExpectNoJumps(c, o);
     for (const double a : levels) {
@@ -156,8 +156,8 @@ int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<d
     for (const bool first : {true, false}) {
       if ((first ? c.ends.first : c.ends.last).kind != CurveEndKind::kSliding) continue;
       const ForcedCurvePoint& p = first ? c.points.front() : c.points.back();
-      ForcedLabel which = ForcedLabel::kNone;
-      const bool fold = label == ForcedLabel::kLP;
+      SpecialKind which = SpecialKind::kNone;
+      const bool fold = label == SpecialKind::kFold;
       const double w = LocateAny(p, c.m, fold, Sliding, &which);
       const double a = LocateAny(p, c.m, fold, Sliding, nullptr, ForcedAxis::kForce);
       const double dw = (w - p.p1) / o.plane.width1(), da = (a - p.p2) / o.plane.width2();
@@ -184,11 +184,11 @@ int CheckCurves(ForcedLabel label, ForcedCurveKind kind, std::initializer_list<d
 // at Omega 0.445, A 0.19 to another branch's fold): its points down to
 // A = 0.2 are folds of the one-parameter runs.
 TEST(ForcedCurvePoints, FoldCurvesMatchOneParameterRunsAndDoNotJump) {
-  EXPECT_GE(CheckCurves(ForcedLabel::kLP, ForcedCurveKind::kLP, {0.22, 0.3, 0.45, 0.55}), 5);
+  EXPECT_GE(CheckCurves(SpecialKind::kFold, ForcedCurveKind::kLP, {0.22, 0.3, 0.45, 0.55}), 5);
 }
 
 TEST(ForcedCurvePoints, PeriodDoublingCurvesMatchOneParameterRuns) {
-  EXPECT_GE(CheckCurves(ForcedLabel::kPD, ForcedCurveKind::kPD, {0.3, 0.45, 0.55}), 2);
+  EXPECT_GE(CheckCurves(SpecialKind::kPeriodDoubling, ForcedCurveKind::kPD, {0.3, 0.45, 0.55}), 2);
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ ForcedChartOptions NsChartOptions() {
 
 // The NS row of the run in Omega at force a nearest p.p1, from the curve
 // point's orbit carried to phase 0, over Omega +- 2e-3 both ways. p NaN if none.
-ForcedBranchRow LocateNsRow(const ForcedCurvePoint& p, double a) {
+OrbitRow LocateNsRow(const ForcedCurvePoint& p, double a) {
   const ForcedModel model(Scene(a, p.p1));
   ForcedRequest rq;
   rq.t_end = model.period();  // the phase lies in [0, 2 pi)
@@ -38,13 +38,13 @@ ForcedBranchRow LocateNsRow(const ForcedCurvePoint& p, double a) {
                             .end;
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 2e-4;
-  ForcedBranchRow best;
+  OrbitRow best;
   best.p = NAN;
   for (const double side : {1.0, -1.0}) {
-    const ForcedBranch b = ContinueForced(Scene(a, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                                          p.p1 - side * 2e-3, z.x, z.xdot, o);
-    for (const ForcedBranchRow& r : b.special)
-      if (r.label == ForcedLabel::kNS && !(std::abs(best.p - p.p1) <= std::abs(r.p - p.p1)))
+    const OrbitBranch b = ContinueForced(Scene(a, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
+                                         p.p1 - side * 2e-3, z.x, z.xdot, o);
+    for (const OrbitRow& r : b.special)
+      if (r.label == SpecialKind::kTorus && !(std::abs(best.p - p.p1) <= std::abs(r.p - p.p1)))
         best = r;
     if (!std::isnan(best.p)) return best;
   }
@@ -60,13 +60,13 @@ const ForcedCurve& StudyCurve() {
     const ForcedParams p = Scene(0.05, 1.3);
     ForcedBranchOptions bo;
     bo.palc.ds = bo.palc.ds_max = 0.01;
-    const ForcedBranch run = testing_util::TraceOmega(p, 1.3, 1.05, bo);
+    const OrbitBranch run = testing_util::TraceOmega(p, 1.3, 1.05, bo);
     EXPECT_FALSE(run.special.empty()) << run.message;
-    if (run.special.empty() || run.special[0].label != ForcedLabel::kNS) return ForcedCurve();
-    const ForcedBranchRow& s = run.special[0];
+    if (run.special.empty() || run.special[0].label != SpecialKind::kTorus) return ForcedCurve();
+    const OrbitRow& s = run.special[0];
     std::string why;
-    return TraceForcedCurve(Scene(0.05, s.p), NsChartOptions(), ForcedCurveKind::kNS, 1, s.x0,
-                            s.xdot0, s.p, 0.05, &why);
+    return TraceForcedCurve(Scene(0.05, s.p), NsChartOptions(), ForcedCurveKind::kNS, 1,
+                            s.start.z[0], s.start.z[1], s.p, 0.05, &why);
   }();
   return curve;
 }

@@ -57,19 +57,19 @@ TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouch
   const ForcedParams p = ref::Coulomb(0.3, 0.3, 0.05, 0.1, 0.4, 1);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.005;
-  const ForcedBranch b = testing_util::TraceOmega(p, 0.38, 0.44, o);
-  const ForcedBranchRow* ad = nullptr;
-  for (const ForcedBranchRow& r : b.special)
+  const OrbitBranch b = testing_util::TraceOmega(p, 0.38, 0.44, o);
+  const OrbitRow* ad = nullptr;
+  for (const OrbitRow& r : b.special)
     if (std::abs(r.p - 0.41025) < 1e-3) ad = &r;
   ASSERT_NE(ad, nullptr) << Name(b.status) << " " << b.message;
-  EXPECT_EQ(ad->label, ForcedLabel::kAD) << ad->description;
-  ASSERT_DOUBLE_EQ(ad->xdot0, 0.1);  // stuck at the section: the reference's start
+  EXPECT_EQ(ad->label, SpecialKind::kAdding) << ad->description;
+  ASSERT_DOUBLE_EQ(ad->start.z[1], 0.1);  // stuck at the section: the reference's start
   Real lo = 0.4101L, hi = 0.4104L;
-  ASSERT_EQ(SticksOfOrbit(p, lo, ad->x0), 2);
-  ASSERT_EQ(SticksOfOrbit(p, hi, ad->x0), 1);
+  ASSERT_EQ(SticksOfOrbit(p, lo, ad->start.z[0]), 2);
+  ASSERT_EQ(SticksOfOrbit(p, hi, ad->start.z[0]), 1);
   for (int i = 0; i < 50 && hi - lo > 1e-15L; ++i) {
     const Real mid = (lo + hi) / 2;
-    (SticksOfOrbit(p, mid, ad->x0) == 2 ? lo : hi) = mid;
+    (SticksOfOrbit(p, mid, ad->start.z[0]) == 2 ? lo : hi) = mid;
   }
   std::printf("[ measured ] AD at Omega = %.15g, reference %.15Lg, error %.1e\n", ad->p, lo,
               double(ad->p - lo));
@@ -89,19 +89,19 @@ TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
   ForcedBranchOptions o;
   o.palc.ds_max = 0.02 * 0.02;
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
-  const ForcedBranch b = testing_util::TraceOmega(p, 0.35, 0.37, o);
-  std::vector<ForcedBranchRow> near;
-  for (const ForcedBranchRow& r : b.special)
+  const OrbitBranch b = testing_util::TraceOmega(p, 0.35, 0.37, o);
+  std::vector<OrbitRow> near;
+  for (const OrbitRow& r : b.special)
     if (std::abs(r.p - 0.35811) < 1e-4) near.push_back(r);
   ASSERT_EQ(near.size(), 1u) << near.size() << " labels; " << b.message;
-  EXPECT_EQ(near[0].label, ForcedLabel::kAD) << near[0].description;
+  EXPECT_EQ(near[0].label, SpecialKind::kAdding) << near[0].description;
   EXPECT_EQ(b.status, BranchStatus::kStepTooSmall);
-  for (const ForcedBranchRow& r : b.rows) EXPECT_LE(r.p, near[0].p);  // nothing beyond the edge
-  ASSERT_DOUBLE_EQ(near[0].xdot0, 0.1);
+  for (const OrbitRow& r : b.rows) EXPECT_LE(r.p, near[0].p);  // nothing beyond the edge
+  ASSERT_DOUBLE_EQ(near[0].start.z[1], 0.1);
   auto orbit = [&](Real w) {  // a 1-stick orbit near the edge's state
     const ref::Setup s{reference::Law(p.base), Real(0.05), Real(0.1), Real(0.6), w};
     int sticks = 0;
-    return StuckOrbit(s, near[0].x0, &sticks) && sticks == 1;
+    return StuckOrbit(s, near[0].start.z[0], &sticks) && sticks == 1;
   };
   Real lo = 0.35811L, hi = 0.358111L;
   ASSERT_TRUE(orbit(lo));
@@ -125,26 +125,26 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
+  const OrbitBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_FALSE(b.rows.empty());
   EXPECT_EQ(b.rows.back().p, 0.5);
   for (size_t i = 1; i < b.rows.size(); ++i)  // the restart once wrote its start twice
     EXPECT_NE(b.rows[i].p, b.rows[i - 1].p) << "row " << i << " repeats the row before";
-  const ForcedBranchRow* row = nullptr;
-  for (const ForcedBranchRow& r : b.rows)
+  const OrbitRow* row = nullptr;
+  for (const OrbitRow& r : b.rows)
     if (r.p >= 0.3 && r.stable && !row) row = &r;
   ASSERT_NE(row, nullptr);
   p.base.v = row->p;
   const ref::Setup s{reference::Law(p.base), Real(0.1), Real(row->p), Real(0.5), Real(p.omega)};
   ref::PieceSim<ref::CoulombPiece> sim(s);
   const Real T = 2 * std::acos(Real(-1)) / p.omega;
-  Real t = 0, x = row->x0, y = row->xdot0;
+  Real t = 0, x = row->start.z[0], y = row->start.z[1];
   sim.Run(t, x, y, 40 * T);
   std::printf("[ measured ] v = %.6g: closed-form pieces return to (%.3e, %.3e) of the row\n",
-              row->p, double(x - row->x0), double(y - row->xdot0));
-  EXPECT_NEAR(double(x), row->x0, 1e-9);
-  EXPECT_NEAR(double(y), row->xdot0, 1e-9);
+              row->p, double(x - row->start.z[0]), double(y - row->start.z[1]));
+  EXPECT_NEAR(double(x), row->start.z[0], 1e-9);
+  EXPECT_NEAR(double(y), row->start.z[1], 1e-9);
 }
 
 // With no jump allowed, the turn back after Palc's landing across the jump is
@@ -155,7 +155,7 @@ TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
   o.max_jumps = 0;
-  const ForcedBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
+  const OrbitBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, BranchStatus::kStepTooSmall) << b.message;
   EXPECT_NE(b.message.find("turned back after a jump, max_jumps = 0"), std::string::npos)
       << b.message;

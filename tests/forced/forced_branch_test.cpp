@@ -26,7 +26,7 @@ ForcedParams DenHartog() {
 
 // Without damping the amplitude grows without bound at Omega = 1 (mu < pi A / 4):
 // one branch from each end, each stopped at |x| = 10.
-TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
+TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   ForcedBranchOptions o;
   o.flow.rtol = o.flow.atol = 1e-14;
   o.max_amplitude = 10;
@@ -36,15 +36,15 @@ TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   for (const double from : {0.75, 2.5}) {
     const double to = from == 0.75 ? 2.5 : 0.75;
     const double V = 1 / (1 - from * from);
-    const ForcedBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, o);
+    const OrbitBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, o);
     EXPECT_EQ(b.status, BranchStatus::kUnbounded) << b.message;
     EXPECT_GT(b.rows.size(), 20u);
-    for (const ForcedBranchRow& r : b.rows) {
+    for (const OrbitRow& r : b.rows) {
       if (r.sticks > 0) continue;
       ++compared;
       const double X = DenHartogX(0.3, 1, r.p);
-      EXPECT_NEAR(r.extrema.x_max, X, 1e-9 * std::max(1.0, X)) << "Omega = " << r.p;
-      worst = std::max(worst, std::abs(r.extrema.x_max - X) / std::max(1.0, X));
+      EXPECT_NEAR(RowExtrema(r).x_max, X, 1e-9 * std::max(1.0, X)) << "Omega = " << r.p;
+      worst = std::max(worst, std::abs(RowExtrema(r).x_max - X) / std::max(1.0, X));
       p_min = std::min(p_min, r.p), p_max = std::max(p_max, r.p);
     }
     std::printf("[ measured ] from %g: %zu rows, status %s, %d evaluations, %.3f s\n", from,
@@ -60,7 +60,7 @@ TEST(ForcedBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
 // mu_s = 0.4, mu_k = 0.25, v = 0.2, beta = 0, A = 0.3): located on the
 // stroboscopic branch (det(DP + I) = 0), checked by the exit-phase map, whose
 // multiplier comes from the exit time's derivative instead.
-TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
+TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   ForcedParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0, p.base.v = 0.2;
@@ -72,15 +72,15 @@ TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   ForcedBranchOptions o;
   o.flow.rtol = o.flow.atol = 1e-14;
   o.palc.ds_max = 0.05;
-  const ForcedBranch b =
+  const OrbitBranch b =
       ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.x, transient.end.xdot, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
-  std::vector<ForcedBranchRow> pds;  // the sliding points are tested in forced_sliding_test
-  for (const ForcedBranchRow& r : b.special)
-    if (r.label == ForcedLabel::kPD) pds.push_back(r);
+  std::vector<OrbitRow> pds;  // the sliding points are tested in forced_sliding_test
+  for (const OrbitRow& r : b.special)
+    if (r.label == SpecialKind::kPeriodDoubling) pds.push_back(r);
   ASSERT_EQ(pds.size(), 1u);
-  const ForcedBranchRow& pd = pds[0];
-  EXPECT_EQ(pd.label, ForcedLabel::kPD);
+  const OrbitRow& pd = pds[0];
+  EXPECT_EQ(pd.label, SpecialKind::kPeriodDoubling);
   EXPECT_EQ(pd.sticks, 1);
   EXPECT_NEAR(pd.multipliers[0].real(), -1, 1e-9);
   // The exit-phase map at the located Omega: its multiplier is -1 there too.
@@ -89,7 +89,7 @@ TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   std::vector<ForcedEvent> events;
   rq.t_end = m.period();
   rq.events = &events;
-  ForcedFlow(m, o.flow).Run(ForcedStart(m, 0, pd.x0, pd.xdot0), rq);
+  ForcedFlow(m, o.flow).Run(ForcedStart(m, 0, pd.start.z[0], pd.start.z[1]), rq);
   double t_exit = -1;
   Mode mode = Mode::kSlipBelow;
   for (const auto& e : events)
@@ -100,7 +100,7 @@ TEST(ForcedBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   const ForcedExitOrbit exit = ExitPhaseOrbit(m, t_exit, mode, 1, 1, oo);
   ASSERT_EQ(exit.status, ForcedOrbitStatus::kConverged) << exit.message;
   EXPECT_NEAR(exit.multiplier, -1, 1e-9);
-  EXPECT_NEAR(exit.extrema.x_max, pd.extrema.x_max, 1e-11);
+  EXPECT_NEAR(exit.extrema.x_max, RowExtrema(pd).x_max, 1e-11);
   std::printf("[ measured ] PD at Omega = %.15g: multiplier %.15g (strobe), %.15g (exit map)\n",
               pd.p, pd.multipliers[0].real(), exit.multiplier);
 }

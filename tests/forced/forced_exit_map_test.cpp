@@ -105,12 +105,12 @@ TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
 // doubled attractors there); its multiplier against the stroboscopic one.
 TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
   const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
-  const ForcedBranch b = testing_util::TraceOmega(p, 0.62, 0.605, ForcedBranchOptions());
+  const OrbitBranch b = testing_util::TraceOmega(p, 0.62, 0.605, ForcedBranchOptions());
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int checked = 0;
   double lowest = 0;
-  for (const ForcedBranchRow& r : b.rows) {
-    if (r.p > 0.618 || r.label != ForcedLabel::kNone) continue;
+  for (const OrbitRow& r : b.rows) {
+    if (r.p > 0.618 || r.label != SpecialKind::kNone) continue;
     ForcedParams q = p;
     q.omega = r.p;
     const ForcedModel model(q);
@@ -118,7 +118,7 @@ TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
     std::vector<ForcedEvent> events;
     rq.t_end = model.period();
     rq.events = &events;
-    ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, r.x0, r.xdot0), rq);
+    ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, r.start.z[0], r.start.z[1]), rq);
     double t = -1;
     Mode mode = Mode::kSlipBelow;
     for (const auto& e : events)

@@ -27,7 +27,7 @@ using reference::LReal;
 // The reference's roots of det(Phi + I) on a grid of n steps over [lo, hi],
 // each bisected to 1e-13, from the state of the branch row nearest each value
 // (after the last fold).
-std::vector<double> RefFlipRoots(ForcedParams p, const ForcedBranch& b, double lo, double hi,
+std::vector<double> RefFlipRoots(ForcedParams p, const OrbitBranch& b, double lo, double hi,
                                  int n) {
   auto at = [&](double w, LReal* x, LReal* y) {
     p.omega = w;
@@ -37,15 +37,15 @@ std::vector<double> RefFlipRoots(ForcedParams p, const ForcedBranch& b, double l
     return g;
   };
   auto start = [&](double w, LReal* x, LReal* y) {
-    const ForcedBranchRow* best = nullptr;
+    const OrbitRow* best = nullptr;
     size_t first = 0;  // past the folds: the sheet the window lies on
     for (size_t i = 0; i < b.rows.size(); ++i)
-      if (b.rows[i].label == ForcedLabel::kLP) first = i + 1;
+      if (b.rows[i].label == SpecialKind::kFold) first = i + 1;
     for (size_t i = first; i < b.rows.size(); ++i)
-      if (const ForcedBranchRow& r = b.rows[i];
+      if (const OrbitRow& r = b.rows[i];
           r.sticks == 1 && (!best || std::abs(r.p - w) < std::abs(best->p - w)))
         best = &r;
-    *x = best->x0, *y = best->xdot0;
+    *x = best->start.z[0], *y = best->start.z[1];
   };
   std::vector<double> roots;
   LReal x, y;
@@ -72,8 +72,8 @@ std::vector<double> RefFlipRoots(ForcedParams p, const ForcedBranch& b, double l
 
 // Issue 35, item 4: a sliding point's description follows its counts, "(sticks
 // a -> b": "born" or "splits" only where b > a, "vanishes", "merge" or "shrinks" where b < a.
-void ExpectDescriptionsFollowCounts(const ForcedBranch& b) {
-  for (const ForcedBranchRow& s : b.special) {
+void ExpectDescriptionsFollowCounts(const OrbitBranch& b) {
+  for (const OrbitRow& s : b.special) {
     int a = 0, c = 0;
     const size_t at = s.description.find("(sticks ");
     if (at == std::string::npos) continue;
@@ -92,12 +92,12 @@ void ExpectDescriptionsFollowCounts(const ForcedBranch& b) {
 // The branch's PD points within (lo, hi) against the reference's roots.
 void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, double hi,
                      const ForcedBranchOptions& o, const char* name) {
-  const ForcedBranch b = testing_util::TraceOmega(p, from, to, o);
+  const OrbitBranch b = testing_util::TraceOmega(p, from, to, o);
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ExpectDescriptionsFollowCounts(b);
   std::vector<double> pd;
-  for (const ForcedBranchRow& s : b.special)
-    if (s.label == ForcedLabel::kPD && s.p > lo && s.p < hi) pd.push_back(s.p);
+  for (const OrbitRow& s : b.special)
+    if (s.label == SpecialKind::kPeriodDoubling && s.p > lo && s.p < hi) pd.push_back(s.p);
   std::sort(pd.begin(), pd.end());
   const std::vector<double> ref = RefFlipRoots(p, b, lo, hi, 200);
   ASSERT_EQ(pd.size(), ref.size()) << name;
@@ -130,14 +130,14 @@ TEST(ForcedFlip, TwoCrossingsInOneLongStep) {
   const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 0.05;
-  const ForcedBranch b = testing_util::TraceOmega(p, 0.62, 0.5795, o);
+  const OrbitBranch b = testing_util::TraceOmega(p, 0.62, 0.5795, o);
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int pd = 0, steps = 0;
-  for (const ForcedBranchRow& r : b.rows) (r.label == ForcedLabel::kPD ? pd : steps)++;
+  for (const OrbitRow& r : b.rows) (r.label == SpecialKind::kPeriodDoubling ? pd : steps)++;
   std::printf("[ measured ] %d rows, %d PD points\n", steps, pd);
   EXPECT_EQ(pd, 2);
-  for (const ForcedBranchRow& s : b.special) {
-    if (s.label == ForcedLabel::kPD) {
+  for (const OrbitRow& s : b.special) {
+    if (s.label == SpecialKind::kPeriodDoubling) {
       EXPECT_NEAR(s.multipliers[0].real(), -1, 1e-9);
     }
   }

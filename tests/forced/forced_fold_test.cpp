@@ -57,12 +57,12 @@ Real OmegaAt(const ForcedParams& p, Real theta, Real w0) {
 
 // The exit phase (mod 2 pi) of the orbit of row r (the reference's run from
 // its stroboscopic point).
-Real ExitPhase(const ForcedParams& p, const ForcedBranchRow& r) {
+Real ExitPhase(const ForcedParams& p, const OrbitRow& r) {
   const ref::Setup s{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force),
                      Real(r.p)};
   ref::PieceSim<ref::OdeintPiece> sim(s);
   sim.dt = 1e-2L;
-  Real t = 0, x = r.x0, y = r.xdot0;
+  Real t = 0, x = r.start.z[0], y = r.start.z[1];
   sim.Run(t, x, y, 2 * kPi / Real(r.p));
   for (const ref::Event& e : sim.events)
     if (e.kind == 1) return std::fmod(e.t * Real(r.p), 2 * kPi);
@@ -71,7 +71,7 @@ Real ExitPhase(const ForcedParams& p, const ForcedBranchRow& r) {
 
 // The extremum of Omega(theta) within +-half_width of the LP row's exit
 // phase: a minimum if sign = +1, a maximum if sign = -1.
-Real ReferenceFold(const ForcedParams& p, const ForcedBranchRow& lp, Real half_width, int sign) {
+Real ReferenceFold(const ForcedParams& p, const OrbitRow& lp, Real half_width, int sign) {
   const Real theta0 = ExitPhase(p, lp);
   Real w = lp.p;  // the last root: the next secant's start
   auto f = [&](Real theta) {
@@ -94,11 +94,11 @@ void CheckFolds(const ForcedParams& p, double from, double to, const std::vector
   ForcedBranchOptions o;  // as ss_continue: max_step 0.02 of the range, rtol 1e-12
   o.palc.ds_max = 0.02 * std::abs(to - from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
-  const ForcedBranch b = testing_util::TraceOmega(p, from, to, o);
+  const OrbitBranch b = testing_util::TraceOmega(p, from, to, o);
   for (const Fold& f : folds) {
-    const ForcedBranchRow* lp = nullptr;
-    for (const ForcedBranchRow& r : b.special)
-      if (r.label == ForcedLabel::kLP && std::abs(r.p - f.near) < 1e-4) lp = &r;
+    const OrbitRow* lp = nullptr;
+    for (const OrbitRow& r : b.special)
+      if (r.label == SpecialKind::kFold && std::abs(r.p - f.near) < 1e-4) lp = &r;
     ASSERT_NE(lp, nullptr) << "no LP near " << f.near << ": " << b.message;
     ASSERT_EQ(lp->sticks, 1);  // the reference parametrises 1-stick orbits
     ASSERT_EQ(lp->crossings, 0);

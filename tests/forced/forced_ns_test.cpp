@@ -65,11 +65,11 @@ double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
 TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = testing_util::Trace(Scene(0.6), ForcedAxis::kV, 0.6, 0.3, o);
+  const OrbitBranch b = testing_util::Trace(Scene(0.6), ForcedAxis::kV, 0.6, 0.3, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 1u);
-  const ForcedBranchRow& ns = b.special[0];
-  EXPECT_EQ(ns.label, ForcedLabel::kNS);
+  const OrbitRow& ns = b.special[0];
+  EXPECT_EQ(ns.label, SpecialKind::kTorus);
   EXPECT_EQ(ns.sticks, 0);
   EXPECT_NEAR(std::abs(ns.multipliers[0]), 1, 1e-9);
   EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);  // a complex pair, not +-1
@@ -78,13 +78,13 @@ TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
   // The reference: det(Phi) - 1 changes sign at the NS; bisect in v.
   bool ok = false;
   double lo = ns.p + 0.002, hi = ns.p - 0.002;  // stable at lo, unstable at hi
-  ASSERT_LT(RefDet(lo, ns.x0, ns.xdot0, &ok), 1);
+  ASSERT_LT(RefDet(lo, ns.start.z[0], ns.start.z[1], &ok), 1);
   ASSERT_TRUE(ok);
-  ASSERT_GT(RefDet(hi, ns.x0, ns.xdot0, &ok), 1);
+  ASSERT_GT(RefDet(hi, ns.start.z[0], ns.start.z[1], &ok), 1);
   ASSERT_TRUE(ok);
   for (int i = 0; i < 60 && std::abs(hi - lo) > 1e-15; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (RefDet(mid, ns.x0, ns.xdot0, &ok) < 1 ? lo : hi) = mid;
+    (RefDet(mid, ns.start.z[0], ns.start.z[1], &ok) < 1 ? lo : hi) = mid;
     ASSERT_TRUE(ok) << "v = " << mid;
   }
   std::printf("[ measured ] NS at v = %.15g, reference %.15g, error %.2e; |mu| - 1 = %.2e\n", ns.p,
@@ -102,18 +102,18 @@ TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
   p.force = 0.02;
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = testing_util::TraceOmega(p, 2, 0.6, o);
+  const OrbitBranch b = testing_util::TraceOmega(p, 2, 0.6, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 2u);
-  for (const ForcedBranchRow& ns : b.special) {
-    EXPECT_EQ(ns.label, ForcedLabel::kNS);
+  for (const OrbitRow& ns : b.special) {
+    EXPECT_EQ(ns.label, SpecialKind::kTorus);
     EXPECT_EQ(ns.sticks, 0);
     EXPECT_NEAR(std::abs(ns.multipliers[0]), 1, 1e-9);
     EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);
     // Unstable towards Omega = 1, stable away from it.
     const double out = ns.p > 1 ? 0.002 : -0.002;
     p.omega = ns.p;
-    const double ref = RefNsOmega(p, ns.p + out, ns.p - out, ns.x0, ns.xdot0);
+    const double ref = RefNsOmega(p, ns.p + out, ns.p - out, ns.start.z[0], ns.start.z[1]);
     std::printf("[ measured ] NS at Omega = %.15g, reference %.15g, error %.2e\n", ns.p, ref,
                 ns.p - ref);
     EXPECT_NEAR(ns.p, ref, 1e-12);
@@ -127,15 +127,15 @@ TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
   ForcedParams p = forced_reference::SeedBelt(0.42, 0.05, 1);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  const ForcedBranch b = testing_util::TraceOmega(p, 1.3, 0.6, o);
+  const OrbitBranch b = testing_util::TraceOmega(p, 1.3, 0.6, o);
   int checked = 0;
-  for (const ForcedBranchRow& ns : b.special) {
-    if (ns.label != ForcedLabel::kNS) continue;
+  for (const OrbitRow& ns : b.special) {
+    if (ns.label != SpecialKind::kTorus) continue;
     EXPECT_EQ(ns.sticks, 0);
     EXPECT_GT(std::abs(ns.multipliers[0].imag()), 0.1);
     const double in = ns.p > 1 ? -0.002 : 0.002;
     p.omega = ns.p;
-    const double ref = RefNsOmega(p, ns.p + in, ns.p - in, ns.x0, ns.xdot0);
+    const double ref = RefNsOmega(p, ns.p + in, ns.p - in, ns.start.z[0], ns.start.z[1]);
     std::printf("[ measured ] seed belt NS at Omega = %.15g, reference %.15g, error %.2e\n", ns.p,
                 ref, ns.p - ref);
     EXPECT_NEAR(ns.p, ref, 1e-12);
@@ -151,18 +151,18 @@ TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
 TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
   ForcedParams p = Scene(0.41);
   p.force = 0.113;
-  const ForcedBranch b = testing_util::TraceOmega(p, 2.4, 1.6, ForcedBranchOptions());
+  const OrbitBranch b = testing_util::TraceOmega(p, 2.4, 1.6, ForcedBranchOptions());
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int pd = 0;
-  for (const ForcedBranchRow& s : b.special) {
-    EXPECT_NE(s.label, ForcedLabel::kNS)
+  for (const OrbitRow& s : b.special) {
+    EXPECT_NE(s.label, SpecialKind::kTorus)
         << "Omega = " << s.p << ", mu " << s.multipliers[0] << ", " << s.multipliers[1];
-    if (s.label == ForcedLabel::kNS) {
+    if (s.label == SpecialKind::kTorus) {
       OrbitRow o;
       o.multipliers = {s.multipliers[0], s.multipliers[1]};
       EXPECT_TRUE(orbit_detail::TorusPair(o, 1e-6));
     }
-    pd += s.label == ForcedLabel::kPD;
+    pd += s.label == SpecialKind::kPeriodDoubling;
   }
   EXPECT_EQ(pd, 2);
 }

@@ -32,7 +32,7 @@ struct Worst {
   double err = 0, p = 0;
   int row = -1;
   std::string label;
-  void Add(double e, int i, const ForcedBranchRow& r) {
+  void Add(double e, int i, const OrbitRow& r) {
     if (!(e <= err)) err = e, row = i, p = r.p, label = Name(r.label);
   }
 };
@@ -45,7 +45,7 @@ double Rel(double got, Real want) {
 }
 
 // The multipliers' distance, paired by the closer of the two pairings.
-double MuError(const ForcedBranchRow& r, const std::array<std::complex<Real>, 2>& mu) {
+double MuError(const OrbitRow& r, const std::array<std::complex<Real>, 2>& mu) {
   auto d = [&](int i, int j) {
     const std::complex<Real> got(r.multipliers[i].real(), r.multipliers[i].imag());
     return static_cast<double>(std::abs(got - mu[j]) / std::max(Real(1), std::abs(mu[j])));
@@ -63,7 +63,7 @@ constexpr Real kOtherSteps[2] = {3e-4L, 2.5e-5L};  // CurveReference::mu_step: 1
 constexpr double kOtherStepsAbove = 1e-13;
 
 template <class Piece>
-double MuError(const ForcedBranchRow& r, const ref::CurveReference<Piece>& reference,
+double MuError(const OrbitRow& r, const ref::CurveReference<Piece>& reference,
                const ref::CurvePoint& c) {
   double e = MuError(r, c.mu);
   for (const Real h : kOtherSteps)
@@ -71,9 +71,9 @@ double MuError(const ForcedBranchRow& r, const ref::CurveReference<Piece>& refer
   return e;
 }
 
-bool Sliding(ForcedLabel l) {
-  return l != ForcedLabel::kNone && l != ForcedLabel::kLP && l != ForcedLabel::kPD &&
-         l != ForcedLabel::kNS;
+bool Sliding(SpecialKind l) {
+  return l != SpecialKind::kNone && l != SpecialKind::kFold && l != SpecialKind::kPeriodDoubling &&
+         l != SpecialKind::kTorus;
 }
 
 struct Study {
@@ -88,7 +88,7 @@ struct Study {
 
 // The app's branch (run_forced.cpp, Trace): the state after the transient
 // from rest, Newton at m = 1 there, ContinueForced at the app's defaults.
-ForcedBranch AppBranch(const Study& s, double from, double to) {
+OrbitBranch AppBranch(const Study& s, double from, double to) {
   ForcedBranchOptions o;
   o.palc.ds_max = 0.02 * std::abs(to - from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
@@ -108,20 +108,20 @@ std::array<Worst, kColumns> Measure(const Study& s) {
   const ref::CurveReference<Piece> reference(s.p);
   int rows = 0, compared = 0;
   for (int end = 0; end < (s.both_ends ? 2 : 1); ++end) {
-    const ForcedBranch b = AppBranch(s, end ? s.to : s.from, end ? s.from : s.to);
+    const OrbitBranch b = AppBranch(s, end ? s.to : s.from, end ? s.from : s.to);
     EXPECT_GT(b.rows.size(), 20u) << s.name << ": " << b.message;
     for (int i = 0; i < static_cast<int>(b.rows.size()); ++i, ++rows) {
-      const ForcedBranchRow& r = b.rows[i];
-      if (r.m != 1 || (rows % stride != 0 && r.label == ForcedLabel::kNone)) continue;
+      const OrbitRow& r = b.rows[i];
+      if (PeriodMultiple(b) != 1 || (rows % stride != 0 && r.label == SpecialKind::kNone)) continue;
       const ref::CurvePoint c = reference.Near(r);
       EXPECT_TRUE(c.ok) << s.name << " row " << i << " at Omega = " << r.p;
       if (!c.ok) continue;
       ++compared;
       worst[kP].Add(Rel(r.p, c.omega), rows, r);
-      worst[kX0].Add(Rel(r.x0, c.x0), rows, r);
-      worst[kXdot0].Add(Rel(r.xdot0, c.xdot0), rows, r);
-      worst[kXmax].Add(Rel(r.extrema.x_max, c.x_max), rows, r);
-      worst[kXmin].Add(Rel(r.extrema.x_min, c.x_min), rows, r);
+      worst[kX0].Add(Rel(r.start.z[0], c.x0), rows, r);
+      worst[kXdot0].Add(Rel(r.start.z[1], c.xdot0), rows, r);
+      worst[kXmax].Add(Rel(RowExtrema(r).x_max, c.x_max), rows, r);
+      worst[kXmin].Add(Rel(RowExtrema(r).x_min, c.x_min), rows, r);
       if (!Sliding(r.label)) worst[kMu].Add(MuError(r, reference, c), rows, r);
     }
   }

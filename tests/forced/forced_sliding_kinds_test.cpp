@@ -17,7 +17,7 @@ namespace {
 namespace ref = forced_reference;
 using ref::Real;
 
-ForcedBranch Trace(ForcedParams p, double from, double to, double ds_max) {
+OrbitBranch Trace(ForcedParams p, double from, double to, double ds_max) {
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = ds_max;
   return testing_util::TraceOmega(p, from, to, o);
@@ -47,17 +47,17 @@ std::vector<ref::Event> LastPeriod(const ForcedParams& p, Real w, Real x0, Real 
 // sliding, which the branch once labelled SW, 9e-6 short of the edge.
 TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
   const ForcedParams p = ref::Coulomb(0.4, 0.25, 0, 0.2, 0.3, 1);
-  const ForcedBranch b = Trace(p, 1.15, 1.25, 0.005);
-  const ForcedBranchRow* point = nullptr;
-  for (const ForcedBranchRow& r : b.special)
+  const OrbitBranch b = Trace(p, 1.15, 1.25, 0.005);
+  const OrbitRow* point = nullptr;
+  for (const OrbitRow& r : b.special)
     if (std::abs(r.p - 1.1962) < 1e-3) point = &r;
   ASSERT_NE(point, nullptr) << Name(b.status) << " " << b.message;
-  EXPECT_EQ(point->label, ForcedLabel::kCR) << point->description;
+  EXPECT_EQ(point->label, SpecialKind::kCrossing) << point->description;
   // The reference: the stable orbit (multiplier -0.24) by 40 periods of the
   // closed-form pieces from the located point's state; g = |force at the
   // crossing| - mu_s, bisected in Omega (no crossing: past the edge).
   auto g = [&](Real w) {
-    const std::vector<ref::Event> ev = LastPeriod(p, w, point->x0, point->xdot0, 40);
+    const std::vector<ref::Event> ev = LastPeriod(p, w, point->start.z[0], point->start.z[1], 40);
     const ref::Setup s = SetupOf(p, w);
     for (const ref::Event& e : ev)
       if (e.kind == 2) return std::abs(s.StickForce(e.t, e.x)) - Real(0.4);
@@ -85,15 +85,15 @@ TEST(ForcedSlidingKinds, StickEntryReachingTheBandIsCrossingSliding) {
   // Two runs: the one from 0.3 ends where its 1-stick orbits end, at Omega
   // 0.6436414 (no m = 1 orbit just beyond; it once went on through points
   // with residual 3e-6); the one from 0.7 is on the orbits of the CR.
-  const ForcedBranch b = Trace(p, 0.3, 1.5, 0.02 * 1.2), b2 = Trace(p, 0.7, 1.5, 0.02 * 1.2);
-  const ForcedBranchRow *gr = nullptr, *cr = nullptr;
-  for (const ForcedBranchRow& r : b.special)
+  const OrbitBranch b = Trace(p, 0.3, 1.5, 0.02 * 1.2), b2 = Trace(p, 0.7, 1.5, 0.02 * 1.2);
+  const OrbitRow *gr = nullptr, *cr = nullptr;
+  for (const OrbitRow& r : b.special)
     if (std::abs(r.p - 0.6194) < 1e-3) gr = &r;
-  for (const ForcedBranchRow& r : b2.special)
+  for (const OrbitRow& r : b2.special)
     if (std::abs(r.p - 0.7317) < 1e-3) cr = &r;
   ASSERT_TRUE(gr && cr) << Name(b.status) << " " << b.message;
-  EXPECT_EQ(gr->label, ForcedLabel::kGR) << gr->description;
-  EXPECT_EQ(cr->label, ForcedLabel::kCR) << cr->description;
+  EXPECT_EQ(gr->label, SpecialKind::kGrazing) << gr->description;
+  EXPECT_EQ(cr->label, SpecialKind::kCrossing) << cr->description;
   // Omega |P| = v, |P| = A / |1 - Omega^2 + 2 i beta Omega|.
   auto slip = [](Real w) {
     const Real re = 1 - w * w, im = 2 * Real(0.05) * w;
@@ -113,7 +113,7 @@ TEST(ForcedSlidingKinds, StickEntryReachingTheBandIsCrossingSliding) {
       if (ev) *ev = sim.events;
       return x;
     };
-    Real a = cr->x0, b = cr->x0 + 1e-6L, fa = X(a, nullptr) - a;
+    Real a = cr->start.z[0], b = cr->start.z[0] + 1e-6L, fa = X(a, nullptr) - a;
     for (int i = 0; i < 30 && std::abs(b - a) > 1e-18L; ++i) {
       const Real fb = X(b, nullptr) - b, c = b - fb * (b - a) / (fb - fa);
       a = b, fa = fb, b = c;
@@ -149,30 +149,30 @@ TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
   ForcedBranchOptions o;
   o.palc.ds_max = o.palc.ds = 0.01;
-  ForcedBranch b;
+  OrbitBranch b;
   ASSERT_NO_THROW(b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o));
   ASSERT_FALSE(b.rows.empty()) << b.message;
   EXPECT_EQ(b.rows.front().p, 0);
-  EXPECT_NEAR(b.rows.front().extrema.x_min, -b.rows.front().extrema.x_max, 1e-10);
+  EXPECT_NEAR(RowExtrema(b.rows.front()).x_min, -RowExtrema(b.rows.front()).x_max, 1e-10);
   double v_max = 0;
-  for (const ForcedBranchRow& r : b.rows) {
+  for (const OrbitRow& r : b.rows) {
     EXPECT_GE(r.p, 0);
     v_max = std::max(v_max, r.p);
   }
   EXPECT_GT(v_max, 0.17);  // past the first jump (GR near v = 0.173)
   // A stable row near v = 0.05: 40 periods of the closed-form pieces from
   // its stroboscopic point come back to it.
-  for (const ForcedBranchRow& r : b.rows) {
+  for (const OrbitRow& r : b.rows) {
     if (r.p < 0.05 || !r.stable) continue;
     p.base.v = r.p;
     ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p, p.omega));
     const Real T = 2 * std::acos(Real(-1)) / p.omega;
-    Real t = 0, x = r.x0, y = r.xdot0;
+    Real t = 0, x = r.start.z[0], y = r.start.z[1];
     sim.Run(t, x, y, 40 * T);
     std::printf("[ measured ] v = %.6g: closed-form pieces return to (%.3e, %.3e) of the row\n",
-                r.p, double(x - r.x0), double(y - r.xdot0));
-    EXPECT_NEAR(double(x), r.x0, 1e-9);
-    EXPECT_NEAR(double(y), r.xdot0, 1e-9);
+                r.p, double(x - r.start.z[0]), double(y - r.start.z[1]));
+    EXPECT_NEAR(double(x), r.start.z[0], 1e-9);
+    EXPECT_NEAR(double(y), r.start.z[1], 1e-9);
     break;
   }
 }

@@ -28,15 +28,15 @@ ForcedParams Coulomb(double mu_s, double mu_k, double v, double beta, double a) 
   return p;
 }
 
-ForcedBranch Trace(ForcedParams p, double from, double to) {
+OrbitBranch Trace(ForcedParams p, double from, double to) {
   ForcedBranchOptions o;
   o.palc.ds_max = 0.02 * std::abs(to - from);
   return testing_util::TraceOmega(p, from, to, o);
 }
 
-std::vector<ForcedBranchRow> WithLabel(const ForcedBranch& b, ForcedLabel l) {
-  std::vector<ForcedBranchRow> out;
-  for (const ForcedBranchRow& r : b.special)
+std::vector<OrbitRow> WithLabel(const OrbitBranch& b, SpecialKind l) {
+  std::vector<OrbitRow> out;
+  for (const OrbitRow& r : b.special)
     if (r.label == l) out.push_back(r);
   return out;
 }
@@ -55,10 +55,10 @@ void GrazingOmegas(Real v, Real beta, Real a, Real out[2]) {
 TEST(ForcedSliding, GrazingSlidingMatchesTheSteadySlipClosedForm) {
   Real omegas[2];
   GrazingOmegas(0.2L, 0.05L, 0.3L, omegas);
-  const ForcedBranch b = Trace(Coulomb(0.3, 0.3, 0.2, 0.05, 0.3), 0.45, 2.5);
+  const OrbitBranch b = Trace(Coulomb(0.3, 0.3, 0.2, 0.05, 0.3), 0.45, 2.5);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   EXPECT_EQ(b.rows.back().p, 2.5);
-  const auto gr = WithLabel(b, ForcedLabel::kGR);
+  const auto gr = WithLabel(b, SpecialKind::kGrazing);
   ASSERT_EQ(gr.size(), 2u);
   for (int i = 0; i < 2; ++i) {
     EXPECT_NEAR(gr[i].p, static_cast<double>(omegas[i]), 1e-10);
@@ -76,13 +76,13 @@ TEST(ForcedSliding, GrazingSlidingMatchesTheSteadySlipClosedForm) {
 TEST(ForcedSliding, GrazingWithStaticFrictionJumpsAndGoesOn) {
   Real omegas[2];
   GrazingOmegas(0.2L, 0.05L, 0.3L, omegas);
-  const ForcedBranch b = Trace(Coulomb(0.4, 0.3, 0.2, 0.05, 0.3), 0.45, 2.5);
-  const auto gr = WithLabel(b, ForcedLabel::kGR);
+  const OrbitBranch b = Trace(Coulomb(0.4, 0.3, 0.2, 0.05, 0.3), 0.45, 2.5);
+  const auto gr = WithLabel(b, SpecialKind::kGrazing);
   ASSERT_GE(gr.size(), 1u);
   EXPECT_NEAR(gr[0].p, static_cast<double>(omegas[0]), 1e-10);
   EXPECT_EQ(gr[0].sticks, 0);
   size_t i = 0;
-  while (i < b.rows.size() && b.rows[i].label != ForcedLabel::kGR) ++i;
+  while (i < b.rows.size() && b.rows[i].label != SpecialKind::kGrazing) ++i;
   ASSERT_LT(i + 1, b.rows.size()) << "the branch ends at the GR: " << b.message;
   EXPECT_EQ(b.rows[i + 1].sticks, 1);
   std::printf(
@@ -125,11 +125,11 @@ bool SymmetricReversal(const ref::Setup& s, Real* t_r, Real* x_r) {
 // on the closed-form orbit.
 TEST(ForcedSliding, CrossingSlidingMatchesTheClosedFormReversal) {
   ForcedParams p = Coulomb(0.4, 0.25, 0, 0.05, 0.5);
-  const ForcedBranch b = Trace(p, 0.5, 2.5);
+  const OrbitBranch b = Trace(p, 0.5, 2.5);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
-  const auto cr = WithLabel(b, ForcedLabel::kCR);
+  const auto cr = WithLabel(b, SpecialKind::kCrossing);
   ASSERT_EQ(cr.size(), 2u);
-  for (const ForcedBranchRow& point : cr) {
+  for (const OrbitRow& point : cr) {
     // Start Newton from the library's reversal (a crossing with x > 0).
     p.omega = point.p;
     const ForcedModel m(p);
@@ -137,7 +137,7 @@ TEST(ForcedSliding, CrossingSlidingMatchesTheClosedFormReversal) {
     ForcedRequest rq;
     rq.t_end = m.period();
     rq.events = &ev;
-    ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, point.x0, point.xdot0), rq);
+    ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, point.start.z[0], point.start.z[1]), rq);
     Real t0 = -1, x0 = 0;
     for (const ForcedEvent& e : ev)
       if (e.x > 0) t0 = e.t, x0 = e.x;

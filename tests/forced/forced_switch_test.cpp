@@ -36,39 +36,39 @@ ForcedBranchOptions Options() {
 }
 
 // The m = 1 branch from Omega = 0.7 down to 0.6 and its first PD.
-ForcedBranchRow FirstPeriodDoubling() {
+OrbitRow FirstPeriodDoubling() {
   const ForcedParams p = StribeckScene(0.7);
   const ForcedModel m(p);
   ForcedRequest rq;
   rq.t_end = 200 * m.period();
   const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.25), rq);
-  const ForcedBranch b =
+  const OrbitBranch b =
       ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.x, tr.end.xdot, Options());
-  for (const ForcedBranchRow& r : b.special)
-    if (r.label == ForcedLabel::kPD) return r;
+  for (const OrbitRow& r : b.special)
+    if (r.label == SpecialKind::kPeriodDoubling) return r;
   ADD_FAILURE() << "no PD on the m = 1 branch: " << Name(b.status) << " " << b.message;
   return {};
 }
 
 TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
-  const ForcedBranchRow pd = FirstPeriodDoubling();
-  ASSERT_EQ(pd.label, ForcedLabel::kPD);
-  ASSERT_EQ(pd.m, 1);
-  const ForcedBranch d = ContinueDoubled(StribeckScene(pd.p), ForcedAxis::kOmega, pd.x0, pd.xdot0,
-                                         pd.p - 0.006, pd.p + 0.006, Options());
+  const OrbitRow pd = FirstPeriodDoubling();
+  ASSERT_EQ(pd.label, SpecialKind::kPeriodDoubling);
+  const OrbitBranch d = ContinueDoubled(StribeckScene(pd.p), ForcedAxis::kOmega, pd.start.z[0],
+                                        pd.start.z[1], pd.p - 0.006, pd.p + 0.006, Options());
   ASSERT_GE(d.rows.size(), 4u) << Name(d.status) << " " << d.message;
   EXPECT_EQ(d.status, BranchStatus::kReachedEnd) << d.message;
   // Supercritical: the doubled branch opens toward lower Omega, stable there.
-  const ForcedBranchRow& first = d.rows.front();
+  const OrbitRow& first = d.rows.front();
   EXPECT_LT(first.p, pd.p);
-  EXPECT_EQ(first.m, 2);
+  EXPECT_EQ(PeriodMultiple(d), 2);
   // Near the PD the 2-cycle's points are z +- a sqrt(|p - p_PD|) e: the
   // offset from the m = 1 orbit, squared over |p - p_PD|, tends to a constant,
   // and the multiplier of the doubled orbit tends to +1.
   double ratio[2] = {0, 0};
   for (int i = 0; i < 2; ++i) {
-    const ForcedBranchRow& r = d.rows[i];
-    const double off2 = std::pow(r.x0 - pd.x0, 2) + std::pow(r.xdot0 - pd.xdot0, 2);
+    const OrbitRow& r = d.rows[i];
+    const double off2 =
+        std::pow(r.start.z[0] - pd.start.z[0], 2) + std::pow(r.start.z[1] - pd.start.z[1], 2);
     ratio[i] = off2 / std::abs(r.p - pd.p);
     std::printf(
         "[ measured ] doubled row %d: Omega - Omega_PD = %.3e, |z - z_PD| = %.3e, "
@@ -79,11 +79,11 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   // The flip normal form x -> -(1 + a) x + c x^3 (Kuznetsov, section 4.4):
   // the m orbit's multiplier is -(1 + a), the 2-cycle's (1 - 2a)^2 ~ 1 - 4a,
   // so (1 - mu_2m) / |1 + mu_m| -> 4 at the PD (mu_m by separate shooting).
-  const ForcedBranchRow& r0 = d.rows.front();
+  const OrbitRow& r0 = d.rows.front();
   ForcedOrbitOptions oo;
   oo.flow = Options().flow;
   const ForcedModel m0(StribeckScene(r0.p));
-  const ForcedOrbit single = ShootStroboscopic(m0, pd.x0, pd.xdot0, 1, oo);
+  const ForcedOrbit single = ShootStroboscopic(m0, pd.start.z[0], pd.start.z[1], 1, oo);
   ASSERT_EQ(single.status, ForcedOrbitStatus::kConverged);
   const double flip = std::abs(1 + single.multipliers[0].real());
   const double ratio4 = (1 - r0.multipliers[0].real()) / flip;
@@ -92,25 +92,25 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   EXPECT_NEAR(ratio4, 4, 0.1);
   EXPECT_LT(std::abs(r0.multipliers[0]), 1);      // stable where it opens
   EXPECT_GT(std::abs(single.multipliers[0]), 1);  // the m = 1 orbit is not
-  for (const ForcedBranchRow& r : d.special)
+  for (const OrbitRow& r : d.special)
     std::printf("[ measured ] doubled branch: %s at Omega = %.15g\n", Name(r.label), r.p);
   // Away from the PD, the independent map's attractor is the doubled orbit:
   // from the library's 2m point, 400 reference periods later the map still
   // alternates between it and its image (the m = 1 orbit there is unstable).
-  const ForcedBranchRow& far = d.rows.back();
+  const OrbitRow& far = d.rows.back();
   EXPECT_NEAR(far.p, pd.p - 0.006, 1e-12);
   ASSERT_TRUE(far.stable);
   const ForcedParams q = StribeckScene(far.p);
   const reference::ForcedRef m(q);
-  reference::LReal x = far.x0 + 1e-4, y = far.xdot0;
-  bool stuck = far.xdot0 == q.base.v;
+  reference::LReal x = far.start.z[0] + 1e-4, y = far.start.z[1];
+  bool stuck = far.start.z[1] == q.base.v;
   for (int k = 0; k < 400; ++k) {
     const reference::RefPeriod per = reference::RefOnePeriod(m, x, y, stuck, 1e-16L);
     ASSERT_TRUE(per.ok);
     x = per.x, y = per.y, stuck = per.stuck;
   }
   const reference::RefPeriod half = reference::RefOnePeriod(m, x, y, stuck, 1e-16L);
-  const double gap0 = std::hypot(double(x) - far.x0, double(y) - far.xdot0);
+  const double gap0 = std::hypot(double(x) - far.start.z[0], double(y) - far.start.z[1]);
   const double split = std::hypot(double(half.x - x), double(half.y - y));
   std::printf("[ measured ] Omega = %.12g: reference attractor vs doubled row %.2e, split %.3e\n",
               far.p, gap0, split);
@@ -129,7 +129,7 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   oo.flow = o.flow;
   const ForcedOrbit orbit = ShootStroboscopic(m, tr.end.x, tr.end.xdot, 1, oo);
   ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged);
-  const ForcedBranch d =
+  const OrbitBranch d =
       ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.x, orbit.start.xdot, 0.6, 0.8, o);
   EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;

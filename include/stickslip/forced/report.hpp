@@ -16,8 +16,8 @@ namespace stickslip {
 
 /// One traced piece of a forced run; a run from both ends has two.
 struct ForcedPiece {
-  ForcedBranch branch;
-  int index = 1;  ///< the `branch` column
+  OrbitBranch branch;  ///< its m: PeriodMultiple(branch)
+  int index = 1;       ///< the `branch` column
 };
 
 /// Columns: branch, <axis>, m, sticks, crossings, kind, x_min, x_max,
