@@ -177,7 +177,25 @@ TEST_F(SystemRestart, BadRestartsExitTwoWithOneLineNamingTheOption) {
                          "/big && truncate -s 65M " + dir_ + "/big/special_points.tsv")
                             .c_str()),
             0);
+  // chain2's run with one '# key:' line of both files hand-edited.
+  auto edited = [&](const std::string& key, const std::string& value) {
+    const std::string d = dir_ + "/edit_" + key;
+    const std::string sed = "sed -i 's/^# " + key + ": .*/# " + key + ": " + value + "/' ";
+    EXPECT_EQ(std::system(("cp -r " + chain + " " + d + " && " + sed + d + "/branch.tsv " + d +
+                           "/special_points.tsv")
+                              .c_str()),
+              0);
+    return d;
+  };
   const std::pair<std::string, std::string> cases[] = {
+      {"--restart " + edited("blocks", "nan") + " --point GR1", "blocks = 'nan' is not a whole"},
+      {"--restart " + edited("section_returns", "1.5") + " --point GR1",
+       "section_returns = '1.5' is not a whole"},
+      {"--restart " + edited("max_steps", "1e300") + " --point 3", "max_steps = '1e300' is not"},
+      {"--restart " + edited("to", "inf") + " --point GR1", "to = 'inf' is not finite"},
+      {"--restart " + edited("from", "nan") + " --point 3", "branch.tsv' is corrupt: from = 'nan'"},
+      {"--restart " + edited("max_amplitude", "inf") + " --point GR1",
+       "max_amplitude = 'inf' is not finite"},
       {"--restart " + chain + " --point LP7", "--point LP7: no point LP7 in"},
       {"--restart " + chain + " --point GR9", "(its labels: HB1, GR1)"},
       {"--restart " + dir_ + "/belt --point GR1 --system chain",
