@@ -159,7 +159,7 @@ SettledOrbit AtPoint(const SystemPoint& sp) {
 }
 
 // The branch from the start to `to`; a restart's leaves along the tangent
-// (`side` picks the half at a fold); --switch: the doubled branch from the
+// (at an LP, `side` 1 or -1 picks the half; 0 elsewhere); --switch: the doubled branch from the
 // PD point to whichever end it opens toward.
 OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, int side,
                   RunControl& run) {
@@ -289,12 +289,13 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   run.Phase("continuing");
   const bool fold = s.restart && s.restart->type == "LP";
   if (s.doubled && settled.found) {
-    r.pieces.push_back(Piece(s, settled, s.to, 1, run)), r.numbers.push_back(1);
+    r.pieces.push_back(Piece(s, settled, s.to, 0, run)), r.numbers.push_back(1);
   } else if (settled.found) {  // 1 toward --to, 2 back toward --from (a fold: both halves)
     if (s.start_at != s.to)
-      r.pieces.push_back(Piece(s, settled, s.to, 1, run)), r.numbers.push_back(1);
+      r.pieces.push_back(Piece(s, settled, s.to, fold ? 1 : 0, run)), r.numbers.push_back(1);
     if (s.start_at != s.from || (fold && s.start_at != s.to))
-      r.pieces.push_back(Piece(s, settled, fold ? s.to : s.from, -1, run)), r.numbers.push_back(2);
+      r.pieces.push_back(Piece(s, settled, fold ? s.to : s.from, fold ? -1 : 0, run)),
+          r.numbers.push_back(2);
   }
   const std::string partial = Partial(r, settled, run);
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);

@@ -149,6 +149,27 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
   }
 }
 
+// A restart stopped by --max_time reports its cut piece as cancelled, not as
+// the numerical failure the cancel caused inside a run of the flow. Small
+// steps make the restart last seconds (0.2 s with the default --max_step);
+// steady sliding, 10001 rows, takes a few ms.
+TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
+  const std::string out = dir_ + "/late";
+  EXPECT_EQ(
+      Continue("--restart " + Study("brake") + " --point LP1 --max_step 1e-4 --max_time 0.5", out),
+      1)
+      << err_;
+  const tu::Tsv t = Table(out + "/branch.tsv");
+  ASSERT_EQ(t.meta.at("steady_status"), "reached-end") << "the limit fell before the branch";
+  EXPECT_TRUE(tu::Contains(t.meta.at("status"), "partial: branch 1 cancelled: time limit"))
+      << t.meta.at("status");
+  for (const char* key : {"branch_1_status", "branch_2_status"})
+    if (t.meta.count(key)) {
+      EXPECT_EQ(t.meta.at(key).rfind("cancelled", 0), 0u) << t.meta.at(key);
+    }
+  EXPECT_TRUE(tu::Contains(err_, "cancelled")) << err_;
+}
+
 // From chain2's GR back down in v, to the v of a row of the first run.
 TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
   const tu::Tsv first = Table(Study("chain2") + "/branch.tsv");
