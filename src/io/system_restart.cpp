@@ -120,6 +120,22 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* s
                                        " is invalid (parameter, state or period not finite)");
 }
 
+// A point given by its number: the type of the special point at the same pt
+// in special_points.tsv (LP, GR, ...), so an LP is a fold however it is
+// named. Without that file, or a special point there, the row's kind stands.
+void TakeSpecialPointType(const std::string& dir, SystemPoint* sp) {
+  try {
+    const Table special = ReadTable(dir + "/special_points.tsv");
+    const int pt = special.Column("pt"), label = special.Column("label");
+    for (const auto& row : special.rows)
+      if (row[pt] == std::to_string(sp->pt)) {
+        sp->type = row[label];
+        if (sp->type == "LP") return;  // a fold first, should a row carry two
+      }
+  } catch (const RestartError&) {  // no such file or columns: the row's kind
+  }
+}
+
 }  // namespace
 
 bool IsSystemRun(const std::string& dir, const std::string& point) {
@@ -142,6 +158,7 @@ SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point) {
   const Table t = ReadTable(FileOf(dir, point));
   ReadRun(t, &sp);
   ReadRow(t, PointRow(t, point, number, &sp.type, &sp.pt), &sp);
+  if (number) TakeSpecialPointType(dir, &sp);
   return sp;
 }
 

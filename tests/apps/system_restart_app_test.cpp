@@ -149,6 +149,37 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
   }
 }
 
+// LP1 given by its point number is the same fold: two halves, one of each
+// stability ending on the first run's row, as by its label.
+TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
+  const tu::Tsv first = Table(Study("brake") + "/branch.tsv");
+  const tu::Tsv special = Table(Study("brake") + "/special_points.tsv");
+  const std::string pt = Labelled(special, "LP1")[special.Column("pt")];
+  const std::vector<Row> b1 = Branch(first, 1);
+  int lp = -1;
+  for (int i = 0; i < static_cast<int>(b1.size()); ++i)
+    if (b1[i][first.Column("pt")] == pt) lp = i;
+  ASSERT_GE(lp, 4);
+  const Row& want = b1.at(lp - 3);
+  const std::string out = dir_ + "/bynumber";
+  ASSERT_EQ(Continue("--restart " + Study("brake") + " --point " + pt + " --to " +
+                         want[first.Column("mu_k")],
+                     out),
+            0)
+      << err_;
+  const tu::Tsv t = Table(out + "/branch.tsv");
+  EXPECT_TRUE(tu::Contains(t.meta.at("restart"), "LP")) << t.meta.at("restart");
+  int matched = 0;
+  for (int b : {1, 2}) {
+    const std::vector<Row> rows = Branch(t, b);
+    ASSERT_GE(rows.size(), 2u) << "branch " << b << ": both halves of the fold";
+    if (rows.back()[t.Column("stable")] != want[first.Column("stable")]) continue;
+    ExpectSameOrbit(t, rows.back(), first, want, "mu_k", 1e-9);
+    ++matched;
+  }
+  EXPECT_EQ(matched, 1);
+}
+
 // A restart stopped by --max_time reports its cut piece as cancelled, not as
 // the numerical failure the cancel caused inside a run of the flow. Small
 // steps make the restart last seconds (0.2 s with the default --max_step);

@@ -50,7 +50,9 @@ struct SystemPoint {
 bool IsSystemRun(const std::string& dir, const std::string& point);
 
 /// Reads `point` (a label such as "LP1", or a point number "17" of
-/// branch.tsv) from the system's run in `dir`. Throws RestartError naming
+/// branch.tsv) from the system's run in `dir`. A number takes the type of a
+/// special point at the same row (special_points.tsv's pt), so an LP is a
+/// fold either way. Throws RestartError naming
 /// the file (missing, corrupt, too large, not a regular file, not a system's
 /// run) or the point (no such label or number: the message lists the labels).
 SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point);
