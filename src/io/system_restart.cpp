@@ -136,6 +136,23 @@ void TakeSpecialPointType(const std::string& dir, SystemPoint* sp) {
   }
 }
 
+// At an LP: the side of its value on which the first run's rows next to it
+// (branch.tsv's rows pt - 1 and pt + 1, of its branch) lie; 0 if unknown or
+// if they lie on both sides.
+int FoldSideOfRows(const Table& rows, const SystemPoint& sp) {
+  const int branch = rows.Column("branch"), p = rows.Column(sp.continued);
+  int above = 0, below = 0;
+  for (const int i : {sp.pt - 2, sp.pt}) {  // 0-based indices of the neighbours
+    if (i < 0 || i >= static_cast<int>(rows.rows.size())) continue;
+    const std::vector<std::string>& row = rows.rows[i];
+    if (row[branch] != std::to_string(sp.branch)) continue;
+    const double x = rows.Number(row[p], sp.continued);
+    above += std::isfinite(x) && x > sp.p;
+    below += std::isfinite(x) && x < sp.p;
+  }
+  return above && !below ? 1 : below && !above ? -1 : 0;
+}
+
 }  // namespace
 
 bool IsSystemRun(const std::string& dir, const std::string& point) {
@@ -159,6 +176,15 @@ SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point) {
   ReadRun(t, &sp);
   ReadRow(t, PointRow(t, point, number, &sp.type, &sp.pt), &sp);
   if (number) TakeSpecialPointType(dir, &sp);
+  if (sp.type != "LP") return sp;
+  if (number) {
+    sp.fold_side = FoldSideOfRows(t, sp);
+  } else {
+    try {  // only for --to's default: without branch.tsv, the far end
+      sp.fold_side = FoldSideOfRows(ReadTable(dir + "/branch.tsv"), sp);
+    } catch (const RestartError&) {
+    }
+  }
   return sp;
 }
 

@@ -180,6 +180,31 @@ TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
   EXPECT_EQ(matched, 1);
 }
 
+// The first run's range made [0.5, 0.7] (as if run from 0.7 down to 0.5): its
+// far end from the LP (0.529), 0.7, lies on the side without the branch. With
+// --to omitted the restart runs to 0.5, where the first run's rows next to
+// the LP lie, and both halves get there.
+TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
+  const std::string run = dir_ + "/range";
+  ASSERT_EQ(std::system(("cp -r " + Study("brake") + " " + run +
+                         " && sed -i 's/^# from: .*/# from: 0.5/' " + run + "/branch.tsv " + run +
+                         "/special_points.tsv")
+                            .c_str()),
+            0);
+  ASSERT_EQ(Continue("--restart " + run + " --point LP1", dir_ + "/side"), 0) << err_;
+  const tu::Tsv special = Table(run + "/special_points.tsv");
+  const double lp = At(special, Labelled(special, "LP1"), "mu_k");
+  const tu::Tsv t = Table(dir_ + "/side/branch.tsv");
+  EXPECT_EQ(t.meta.at("to"), "0.5");
+  EXPECT_EQ(t.meta.at("status"), "complete");
+  for (int b : {1, 2}) {
+    const std::vector<Row> rows = Branch(t, b);
+    ASSERT_GE(rows.size(), 3u) << b;
+    for (const Row& r : rows) EXPECT_LE(At(t, r, "mu_k"), lp + 1e-9) << b;
+    EXPECT_LT(At(t, rows.back(), "mu_k"), lp - 1e-3) << b;
+  }
+}
+
 // A restart stopped by --max_time reports its cut piece as cancelled, not as
 // the numerical failure the cancel caused inside a run of the flow. Small
 // steps make the restart last seconds (0.2 s with the default --max_step);

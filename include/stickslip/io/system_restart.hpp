@@ -39,6 +39,9 @@ struct SystemPoint {
   /// That run's range (its --from and --to).
   double run_from = std::numeric_limits<double>::quiet_NaN();
   double run_to = std::numeric_limits<double>::quiet_NaN();
+  /// At an LP: the side of p on which that run's rows next to it lie (1
+  /// above, -1 below; 0 unknown), the side of the fold's branch.
+  int fold_side = 0;
   /// Whether the point is an orbit (steady sliding's rows are not).
   bool periodic() const { return branch > 0; }
 };
