@@ -35,8 +35,9 @@ struct SystemSetup {
 
 // A restart's start and range (system_restart.hpp): the run starts at the
 // point's value; in the run's own parameter it goes by default to the far end
-// of that run's range (--switch: the doubled branch within that range), in
-// another --to is required.
+// of that run's range (at an LP: the end on the side of the fold's branch;
+// --switch: the doubled branch within that range), in another --to is
+// required.
 void ConfigureRestart(const Arguments& args, SystemSetup& s) {
   const SystemPoint& sp = *s.restart;
   if (sp.start.z.size() != s.system->dimension() || sp.contacts != s.system->contacts())
@@ -50,9 +51,12 @@ void ConfigureRestart(const Arguments& args, SystemSetup& s) {
   const double p = s.system->ParameterValue(s.param);
   s.start_at = s.from = p;
   const bool same = s.system->ParameterName(s.param) == sp.continued;
-  if (same)
+  if (same) {
     s.to = std::abs(sp.run_to - p) >= std::abs(sp.run_from - p) ? sp.run_to : sp.run_from;
-  else if (!args.Given("to"))
+    const double end =
+        sp.fold_side > 0 ? std::max(sp.run_from, sp.run_to) : std::min(sp.run_from, sp.run_to);
+    if (sp.type == "LP" && (end - p) * sp.fold_side > 0) s.to = end;
+  } else if (!args.Given("to"))
     throw UsageError("--to is required with --restart in " + s.system->ParameterName(s.param) +
                      " (the run's parameter is " + sp.continued + ")");
   if (!args.Flag("switch")) return;
@@ -159,7 +163,7 @@ SettledOrbit AtPoint(const SystemPoint& sp) {
 }
 
 // The branch from the start to `to`; a restart's leaves along the tangent
-// (`side` picks the half at a fold); --switch: the doubled branch from the
+// (at an LP, `side` 1 or -1 picks the half; 0 elsewhere); --switch: the doubled branch from the
 // PD point to whichever end it opens toward.
 OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, int side,
                   RunControl& run) {
@@ -289,12 +293,13 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   run.Phase("continuing");
   const bool fold = s.restart && s.restart->type == "LP";
   if (s.doubled && settled.found) {
-    r.pieces.push_back(Piece(s, settled, s.to, 1, run)), r.numbers.push_back(1);
+    r.pieces.push_back(Piece(s, settled, s.to, 0, run)), r.numbers.push_back(1);
   } else if (settled.found) {  // 1 toward --to, 2 back toward --from (a fold: both halves)
     if (s.start_at != s.to)
-      r.pieces.push_back(Piece(s, settled, s.to, 1, run)), r.numbers.push_back(1);
+      r.pieces.push_back(Piece(s, settled, s.to, fold ? 1 : 0, run)), r.numbers.push_back(1);
     if (s.start_at != s.from || (fold && s.start_at != s.to))
-      r.pieces.push_back(Piece(s, settled, fold ? s.to : s.from, -1, run)), r.numbers.push_back(2);
+      r.pieces.push_back(Piece(s, settled, fold ? s.to : s.from, fold ? -1 : 0, run)),
+          r.numbers.push_back(2);
   }
   const std::string partial = Partial(r, settled, run);
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);

@@ -19,9 +19,9 @@ OrbitBranch ContinueOrbitsFrom(const System& system, int parameter, const FlowPo
                                const PoincareSection& section, double to, int side,
                                const OrbitBranchOptions& options) {
   orbit_detail::CheckInputs(system, parameter, start, to, options);
-  if (side != 1 && side != -1)
+  if (side < -1 || side > 1)
     throw InvalidArgument("ContinueOrbitsFrom: side = " + std::to_string(side) +
-                          " must be 1 or -1");
+                          " must be -1, 0 or 1");
   const auto t0 = std::chrono::steady_clock::now();
   const double from = system.ParameterValue(parameter);
   orbit_detail::OrbitProblem problem(system, parameter, start, section, options);
@@ -46,12 +46,15 @@ OrbitBranch ContinueOrbitsFrom(const System& system, int parameter, const FlowPo
   int fixed = 0;
   t.cwiseAbs().maxCoeff(&fixed);
   const bool fold = std::abs(t[k]) < Tolerances::kFoldTangent;
-  const double sign = fold ? side * (t[fixed] > 0 ? 1 : -1) : (t[k] * (to - from) > 0 ? 1 : -1);
+  const double sign =
+      fold && side != 0 ? side * (t[fixed] > 0 ? 1 : -1) : (t[k] * (to - from) > 0 ? 1 : -1);
   const Eigen::VectorXd scale =
       options.palc.scale.size() ? options.palc.scale : Eigen::VectorXd::Ones(k + 1);
   OrbitBranch out = orbit_detail::TraceBranch(problem, system, parameter, u0, fixed,
                                               sign * t.cwiseQuotient(scale), from, to, options);
   out.evaluations += 1;
+  if (options.palc.cancelled && options.palc.cancelled() && !Complete(out.status))
+    out.status = BranchStatus::kCancelled;  // cut short by the cancel, whatever failed first
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

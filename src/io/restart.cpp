@@ -74,7 +74,8 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   if (periodic && !(std::isfinite(lp->period) && lp->period > 0))
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " has period = " +
                                        row[t.Column("period")] + ", not a finite number > 0");
-  if (lp->forced) lp->m = static_cast<int>(t.Number(row[t.Column("m")], "m"));
+  if (lp->forced)
+    lp->m = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, LabelledPoint::kMaxM));
   std::string err = lp->forced ? ValidationError(ForcedParams{lp->params, lp->force, lp->omega})
                                : ValidationError(lp->params);
   if (err.empty() && lp->forced && !(lp->m >= 1 && lp->m <= LabelledPoint::kMaxM))

@@ -20,6 +20,8 @@ using io_detail::Table;
 
 // The most returns a section is read with (a sanity bound on the file).
 constexpr int kMaxReturns = 1 << 20;
+// The most branches a run's rows are numbered with (a sanity bound).
+constexpr int kMaxBranches = 1 << 20;
 
 bool IsNumber(const std::string& point) {
   return std::regex_match(point, std::regex("[1-9][0-9]{0,8}"));
@@ -43,7 +45,8 @@ std::vector<std::pair<std::string, double>> Pairs(const Table& t, const std::str
     const std::string item = text.substr(from, comma - from);
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos || eq == 0) throw Corrupt(t, key + " item '" + item + "'");
-    out.emplace_back(item.substr(0, eq), t.Number(item.substr(eq + 1), item.substr(0, eq)));
+    out.emplace_back(item.substr(0, eq),
+                     t.Finite(item.substr(eq + 1), key + " " + item.substr(0, eq)));
     from = comma + 1;
   }
   return out;
@@ -59,11 +62,8 @@ void ReadRun(const Table& t, SystemPoint* sp) {
                                        "' is a run of the belt or the forced oscillator, not of "
                                        "a --system: restart it without --system");
   sp->system = t.Meta("system_name");
-  if (sp->system == "chain") {
-    sp->blocks = static_cast<int>(t.Number(t.Meta("blocks"), "blocks"));
-    if (!(sp->blocks >= 1 && sp->blocks <= ModeSet::kMaxContacts))
-      throw Corrupt(t, "blocks = " + t.Meta("blocks"));
-  }
+  if (sp->system == "chain")
+    sp->blocks = static_cast<int>(t.MetaWhole("blocks", 1, ModeSet::kMaxContacts));
   try {
     sp->law.law = LawFromName(t.Meta("law"));
     for (const auto& [name, value] : Pairs(t, "law_parameters")) SetParameter(sp->law, name, value);
@@ -75,21 +75,22 @@ void ReadRun(const Table& t, SystemPoint* sp) {
   sp->parameters = Pairs(t, "parameters");
   sp->continued = t.Meta("continued");
   sp->flow = io_detail::ReadFlowOptions(t);
-  sp->max_amplitude = t.Number(t.Meta("max_amplitude"), "max_amplitude");
-  const double contact = t.Number(t.Meta("section_contact"), "section_contact");
-  const double returns = t.Number(t.Meta("section_returns"), "section_returns");
-  if (!(contact >= 0 && contact < ModeSet::kMaxContacts && returns >= 1 && returns <= kMaxReturns))
-    throw Corrupt(t, "section_contact = " + t.Meta("section_contact") +
-                         ", section_returns = " + t.Meta("section_returns"));
+  sp->max_amplitude = t.MetaFinite("max_amplitude");
+  if (!(sp->max_amplitude > 0))
+    throw Corrupt(t, "max_amplitude = '" + t.Meta("max_amplitude") + "' must be > 0");
+  const auto contact = t.MetaWhole("section_contact", 0, ModeSet::kMaxContacts - 1);
+  const auto returns = t.MetaWhole("section_returns", 1, kMaxReturns);
   sp->section = PoincareSection::StickExit(static_cast<int>(contact), static_cast<int>(returns));
-  sp->run_from = t.Number(t.Meta("from"), "from");
-  sp->run_to = t.Number(t.Meta("to"), "to");
+  sp->run_from = t.MetaFinite("from");
+  sp->run_to = t.MetaFinite("to");
+  if (sp->run_from == sp->run_to)
+    throw Corrupt(t, "from = to = '" + t.Meta("to") + "' (the run's range is empty)");
   if (const std::string e = sp->flow.ValidationError(); !e.empty()) throw Corrupt(t, e);
 }
 
 // The row's parameter value, state, mode and period.
 void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* sp) {
-  sp->branch = static_cast<int>(t.Number(row[t.Column("branch")], "branch"));
+  sp->branch = static_cast<int>(t.Whole(row[t.Column("branch")], "branch", 0, kMaxBranches));
   sp->p = t.Number(row[t.Column(sp->continued)], sp->continued);
   bool found = false;
   for (auto& [name, value] : sp->parameters)
@@ -119,6 +120,39 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* s
                                        " is invalid (parameter, state or period not finite)");
 }
 
+// A point given by its number: the type of the special point at the same pt
+// in special_points.tsv (LP, GR, ...), so an LP is a fold however it is
+// named. Without that file, or a special point there, the row's kind stands.
+void TakeSpecialPointType(const std::string& dir, SystemPoint* sp) {
+  try {
+    const Table special = ReadTable(dir + "/special_points.tsv");
+    const int pt = special.Column("pt"), label = special.Column("label");
+    for (const auto& row : special.rows)
+      if (row[pt] == std::to_string(sp->pt)) {
+        sp->type = row[label];
+        if (sp->type == "LP") return;  // a fold first, should a row carry two
+      }
+  } catch (const RestartError&) {  // no such file or columns: the row's kind
+  }
+}
+
+// At an LP: the side of its value on which the first run's rows next to it
+// (branch.tsv's rows pt - 1 and pt + 1, of its branch) lie; 0 if unknown or
+// if they lie on both sides.
+int FoldSideOfRows(const Table& rows, const SystemPoint& sp) {
+  const int branch = rows.Column("branch"), p = rows.Column(sp.continued);
+  int above = 0, below = 0;
+  for (const int i : {sp.pt - 2, sp.pt}) {  // 0-based indices of the neighbours
+    if (i < 0 || i >= static_cast<int>(rows.rows.size())) continue;
+    const std::vector<std::string>& row = rows.rows[i];
+    if (row[branch] != std::to_string(sp.branch)) continue;
+    const double x = rows.Number(row[p], sp.continued);
+    above += std::isfinite(x) && x > sp.p;
+    below += std::isfinite(x) && x < sp.p;
+  }
+  return above && !below ? 1 : below && !above ? -1 : 0;
+}
+
 }  // namespace
 
 bool IsSystemRun(const std::string& dir, const std::string& point) {
@@ -141,6 +175,16 @@ SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point) {
   const Table t = ReadTable(FileOf(dir, point));
   ReadRun(t, &sp);
   ReadRow(t, PointRow(t, point, number, &sp.type, &sp.pt), &sp);
+  if (number) TakeSpecialPointType(dir, &sp);
+  if (sp.type != "LP") return sp;
+  if (number) {
+    sp.fold_side = FoldSideOfRows(t, sp);
+  } else {
+    try {  // only for --to's default: without branch.tsv, the far end
+      sp.fold_side = FoldSideOfRows(ReadTable(dir + "/branch.tsv"), sp);
+    } catch (const RestartError&) {
+    }
+  }
   return sp;
 }
 

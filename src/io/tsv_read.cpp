@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 namespace stickslip::io_detail {
@@ -15,6 +17,9 @@ namespace stickslip::io_detail {
 namespace {
 
 using Part = RestartError::Part;
+
+// The most flow steps per run a restart reads back (a sanity bound, 2^40).
+constexpr long long kMaxFlowSteps = 1LL << 40;
 
 std::vector<std::string> Split(const std::string& line) {
   std::vector<std::string> cells;
@@ -84,6 +89,25 @@ double Table::Number(const std::string& text, const std::string& what) const {
   return x;
 }
 
+double Table::Finite(const std::string& text, const std::string& what) const {
+  const double x = Number(text, what);
+  if (!std::isfinite(x))
+    throw RestartError(Part::kRun,
+                       "'" + path + "' is corrupt: " + what + " = '" + text + "' is not finite");
+  return x;
+}
+
+long long Table::Whole(const std::string& text, const std::string& what, long long lo,
+                       long long hi) const {
+  const double x = Number(text, what);
+  // lo and hi are exact in a double for the bounds used (at most 2^53).
+  if (!(x >= static_cast<double>(lo) && x <= static_cast<double>(hi) && x == std::floor(x)))
+    throw RestartError(Part::kRun, "'" + path + "' is corrupt: " + what + " = '" + text +
+                                       "' is not a whole number from " + std::to_string(lo) +
+                                       " to " + std::to_string(hi));
+  return static_cast<long long>(x);
+}
+
 Table ReadTable(const std::string& path) {
   std::istringstream in(Slurp(path));
   Table t;
@@ -120,9 +144,9 @@ FlowOptions ReadFlowOptions(const Table& t) {
   } else {
     throw RestartError(Part::kRun, "'" + t.path + "': unknown integrator '" + integrator + "'");
   }
-  flow.rtol = t.Number(t.Meta("rtol"), "rtol");
-  flow.atol = t.Number(t.Meta("atol"), "atol");
-  flow.max_steps = static_cast<long>(t.Number(t.Meta("max_steps"), "max_steps"));
+  flow.rtol = t.MetaFinite("rtol");
+  flow.atol = t.MetaFinite("atol");
+  flow.max_steps = static_cast<long>(t.MetaWhole("max_steps", 1, kMaxFlowSteps));
   return flow;
 }
 
@@ -142,7 +166,7 @@ const std::vector<std::string>& PointRow(const Table& t, const std::string& poin
     have += (have.empty() ? "" : ", ") + row[lab];
     if (row[lab] != point) continue;
     *type = row[t.Column("label")];
-    *pt = static_cast<int>(t.Number(row[t.Column("pt")], "pt"));
+    *pt = static_cast<int>(t.Whole(row[t.Column("pt")], "pt", 1, std::numeric_limits<int>::max()));
     return row;
   }
   throw RestartError(Part::kPoint, "no point " + point + " in '" + t.path +

@@ -23,6 +23,18 @@ struct Table {
   const std::string& Meta(const std::string& key) const;
   /// A cell or metadata value as a number; throws naming `what` if it is none.
   double Number(const std::string& text, const std::string& what) const;
+  /// Number, refusing nan and inf ("'path' is corrupt: what = 'text' is not
+  /// finite").
+  double Finite(const std::string& text, const std::string& what) const;
+  /// Number, refusing all but a whole number in [lo, hi] (checked before any
+  /// cast: nan, inf and 1e300 are refused, naming `what` and `text`).
+  long long Whole(const std::string& text, const std::string& what, long long lo,
+                  long long hi) const;
+  /// Finite or Whole of the '# key:' line's value, naming the key.
+  double MetaFinite(const std::string& key) const { return Finite(Meta(key), key); }
+  long long MetaWhole(const std::string& key, long long lo, long long hi) const {
+    return Whole(Meta(key), key, lo, hi);
+  }
 };
 
 /// The file at path, if it is a regular file of at most

@@ -149,6 +149,83 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
   }
 }
 
+// LP1 given by its point number is the same fold: two halves, one of each
+// stability ending on the first run's row, as by its label.
+TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
+  const tu::Tsv first = Table(Study("brake") + "/branch.tsv");
+  const tu::Tsv special = Table(Study("brake") + "/special_points.tsv");
+  const std::string pt = Labelled(special, "LP1")[special.Column("pt")];
+  const std::vector<Row> b1 = Branch(first, 1);
+  int lp = -1;
+  for (int i = 0; i < static_cast<int>(b1.size()); ++i)
+    if (b1[i][first.Column("pt")] == pt) lp = i;
+  ASSERT_GE(lp, 4);
+  const Row& want = b1.at(lp - 3);
+  const std::string out = dir_ + "/bynumber";
+  ASSERT_EQ(Continue("--restart " + Study("brake") + " --point " + pt + " --to " +
+                         want[first.Column("mu_k")],
+                     out),
+            0)
+      << err_;
+  const tu::Tsv t = Table(out + "/branch.tsv");
+  EXPECT_TRUE(tu::Contains(t.meta.at("restart"), "LP")) << t.meta.at("restart");
+  int matched = 0;
+  for (int b : {1, 2}) {
+    const std::vector<Row> rows = Branch(t, b);
+    ASSERT_GE(rows.size(), 2u) << "branch " << b << ": both halves of the fold";
+    if (rows.back()[t.Column("stable")] != want[first.Column("stable")]) continue;
+    ExpectSameOrbit(t, rows.back(), first, want, "mu_k", 1e-9);
+    ++matched;
+  }
+  EXPECT_EQ(matched, 1);
+}
+
+// The first run's range made [0.5, 0.7] (as if run from 0.7 down to 0.5): its
+// far end from the LP (0.529), 0.7, lies on the side without the branch. With
+// --to omitted the restart runs to 0.5, where the first run's rows next to
+// the LP lie, and both halves get there.
+TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
+  const std::string run = dir_ + "/range";
+  ASSERT_EQ(std::system(("cp -r " + Study("brake") + " " + run +
+                         " && sed -i 's/^# from: .*/# from: 0.5/' " + run + "/branch.tsv " + run +
+                         "/special_points.tsv")
+                            .c_str()),
+            0);
+  ASSERT_EQ(Continue("--restart " + run + " --point LP1", dir_ + "/side"), 0) << err_;
+  const tu::Tsv special = Table(run + "/special_points.tsv");
+  const double lp = At(special, Labelled(special, "LP1"), "mu_k");
+  const tu::Tsv t = Table(dir_ + "/side/branch.tsv");
+  EXPECT_EQ(t.meta.at("to"), "0.5");
+  EXPECT_EQ(t.meta.at("status"), "complete");
+  for (int b : {1, 2}) {
+    const std::vector<Row> rows = Branch(t, b);
+    ASSERT_GE(rows.size(), 3u) << b;
+    for (const Row& r : rows) EXPECT_LE(At(t, r, "mu_k"), lp + 1e-9) << b;
+    EXPECT_LT(At(t, rows.back(), "mu_k"), lp - 1e-3) << b;
+  }
+}
+
+// A restart stopped by --max_time reports its cut piece as cancelled, not as
+// the numerical failure the cancel caused inside a run of the flow. Small
+// steps make the restart last seconds (0.2 s with the default --max_step);
+// steady sliding, 10001 rows, takes a few ms.
+TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
+  const std::string out = dir_ + "/late";
+  EXPECT_EQ(
+      Continue("--restart " + Study("brake") + " --point LP1 --max_step 1e-4 --max_time 0.5", out),
+      1)
+      << err_;
+  const tu::Tsv t = Table(out + "/branch.tsv");
+  ASSERT_EQ(t.meta.at("steady_status"), "reached-end") << "the limit fell before the branch";
+  EXPECT_TRUE(tu::Contains(t.meta.at("status"), "partial: branch 1 cancelled: time limit"))
+      << t.meta.at("status");
+  for (const char* key : {"branch_1_status", "branch_2_status"})
+    if (t.meta.count(key)) {
+      EXPECT_EQ(t.meta.at(key).rfind("cancelled", 0), 0u) << t.meta.at(key);
+    }
+  EXPECT_TRUE(tu::Contains(err_, "cancelled")) << err_;
+}
+
 // From chain2's GR back down in v, to the v of a row of the first run.
 TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
   const tu::Tsv first = Table(Study("chain2") + "/branch.tsv");
@@ -177,7 +254,25 @@ TEST_F(SystemRestart, BadRestartsExitTwoWithOneLineNamingTheOption) {
                          "/big && truncate -s 65M " + dir_ + "/big/special_points.tsv")
                             .c_str()),
             0);
+  // chain2's run with one '# key:' line of both files hand-edited.
+  auto edited = [&](const std::string& key, const std::string& value) {
+    const std::string d = dir_ + "/edit_" + key;
+    const std::string sed = "sed -i 's/^# " + key + ": .*/# " + key + ": " + value + "/' ";
+    EXPECT_EQ(std::system(("cp -r " + chain + " " + d + " && " + sed + d + "/branch.tsv " + d +
+                           "/special_points.tsv")
+                              .c_str()),
+              0);
+    return d;
+  };
   const std::pair<std::string, std::string> cases[] = {
+      {"--restart " + edited("blocks", "nan") + " --point GR1", "blocks = 'nan' is not a whole"},
+      {"--restart " + edited("section_returns", "1.5") + " --point GR1",
+       "section_returns = '1.5' is not a whole"},
+      {"--restart " + edited("max_steps", "1e300") + " --point 3", "max_steps = '1e300' is not"},
+      {"--restart " + edited("to", "inf") + " --point GR1", "to = 'inf' is not finite"},
+      {"--restart " + edited("from", "nan") + " --point 3", "branch.tsv' is corrupt: from = 'nan'"},
+      {"--restart " + edited("max_amplitude", "inf") + " --point GR1",
+       "max_amplitude = 'inf' is not finite"},
       {"--restart " + chain + " --point LP7", "--point LP7: no point LP7 in"},
       {"--restart " + chain + " --point GR9", "(its labels: HB1, GR1)"},
       {"--restart " + dir_ + "/belt --point GR1 --system chain",

@@ -201,5 +201,35 @@ TEST(OrbitBranch, MisuseThrows) {
                InvalidArgument);
 }
 
+// A restart cut short by its cancel hook is kCancelled, wherever the cancel
+// falls: in the first correction (before the fix: start-failed), in a step's
+// corrector, in a jump. The hook turns true at its n-th poll, for many n.
+TEST(OrbitBranch, RestartCutShortByTheCancelIsCancelled) {
+  const Model first(Seed(0.42));
+  const OrbitBranch b =
+      ContinueOrbits(first, first.ParameterIndex("v"), At(first.SteadySliding().x + 0.3, 0),
+                     FallingXdot(), 0.44, OrbitBranchOptions());
+  ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
+  ASSERT_GE(b.rows.size(), 3u);
+  const OrbitRow& row = b.rows[1];
+  const Model m(Seed(row.p));
+  int cut = 0;
+  for (long n = 1; n < 200000; n = n * 3 / 2 + 1) {
+    long polls = 0;
+    OrbitBranchOptions o;
+    o.palc.cancelled = [&polls, n] { return ++polls >= n; };
+    const OrbitBranch r =
+        ContinueOrbitsFrom(m, m.ParameterIndex("v"), row.start, FallingXdot(), 0.38, 0, o);
+    if (Complete(r.status)) break;  // done before the n-th poll
+    EXPECT_EQ(r.status, BranchStatus::kCancelled)
+        << "n = " << n << ": " << Name(r.status) << ": " << r.message;
+    ++cut;
+  }
+  EXPECT_GE(cut, 10);
+  EXPECT_THROW(ContinueOrbitsFrom(m, m.ParameterIndex("v"), row.start, FallingXdot(), 0.38, 2,
+                                  OrbitBranchOptions()),
+               InvalidArgument);
+}
+
 }  // namespace
 }  // namespace stickslip

@@ -91,11 +91,14 @@ OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint&
 /// no Newton with p held first (at a fold DP - I is singular): the first
 /// correction holds the component of the branch's tangent (the null vector
 /// of [F_u F_p] at start) that moves most, and the branch leaves along the
-/// tangent oriented toward `to`; where the tangent has no component in p
-/// (|t_p| < 1e-4: a fold), along the half `side` (1 or -1) picks: the
-/// orientation whose largest component is positive, or its opposite. The
-/// first row is the start, corrected. Throws InvalidArgument as
-/// ContinueOrbits does, and for a side other than 1 or -1.
+/// tangent oriented toward `to`. At a fold (an LP: pass side 1 or -1; the
+/// tangent has no component in p there, |t_p| < 1e-4), it leaves along the
+/// half `side` picks: the orientation whose largest component is positive,
+/// or its opposite. side 0 (an ordinary point) always orients toward `to`.
+/// The first row is the start, corrected. A branch cut short while
+/// options.palc.cancelled() holds is kCancelled, whatever failed first.
+/// Throws InvalidArgument as ContinueOrbits does, and for a side other than
+/// -1, 0 or 1.
 OrbitBranch ContinueOrbitsFrom(const System& system, int parameter, const FlowPoint& start,
                                const PoincareSection& section, double to, int side,
                                const OrbitBranchOptions& options);

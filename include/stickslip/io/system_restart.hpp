@@ -39,6 +39,9 @@ struct SystemPoint {
   /// That run's range (its --from and --to).
   double run_from = std::numeric_limits<double>::quiet_NaN();
   double run_to = std::numeric_limits<double>::quiet_NaN();
+  /// At an LP: the side of p on which that run's rows next to it lie (1
+  /// above, -1 below; 0 unknown), the side of the fold's branch.
+  int fold_side = 0;
   /// Whether the point is an orbit (steady sliding's rows are not).
   bool periodic() const { return branch > 0; }
 };
@@ -50,7 +53,9 @@ struct SystemPoint {
 bool IsSystemRun(const std::string& dir, const std::string& point);
 
 /// Reads `point` (a label such as "LP1", or a point number "17" of
-/// branch.tsv) from the system's run in `dir`. Throws RestartError naming
+/// branch.tsv) from the system's run in `dir`. A number takes the type of a
+/// special point at the same row (special_points.tsv's pt), so an LP is a
+/// fold either way. Throws RestartError naming
 /// the file (missing, corrupt, too large, not a regular file, not a system's
 /// run) or the point (no such label or number: the message lists the labels).
 SystemPoint ReadSystemPoint(const std::string& dir, const std::string& point);
