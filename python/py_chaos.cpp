@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "py_forced.hpp"
-#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/basin/forced_basin.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/report.hpp"

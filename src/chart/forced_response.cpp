@@ -1,7 +1,7 @@
 // The forced chart's response grid (stickslip/chart/forced_chart.hpp): each
 // row (p2 fixed) swept along p1 as an orbit diagram does, every cell starting
 // from the end state of the one before (from rest at the row's first cell and
-// after a failure), classified by ClassifyAttractor (chaos/forced_basin.hpp).
+// after a failure), classified by ClassifyAttractor (basin/forced_basin.hpp).
 // Rows are tasks of a bounded pool (parallel/pool.hpp); no exception crosses a thread.
 #include <algorithm>
 #include <atomic>

@@ -7,7 +7,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "stickslip/basin/basin.hpp"
-#include "stickslip/chaos/basin_report.hpp"
+#include "stickslip/io/forced_basin_report.hpp"
 
 namespace stickslip::cli {
 

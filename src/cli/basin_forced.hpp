@@ -1,6 +1,6 @@
 // ss_basin for the harmonically forced oscillator:
 // --force A --omega W classifies a grid of starts (x, x') at forcing phase 0
-// by the attractor they reach (chaos/forced_basin.hpp), written as
+// by the attractor they reach (basin/forced_basin.hpp), written as
 // basins_forced.tsv, attractors.tsv and the basin figure.
 #pragma once
 

@@ -6,7 +6,7 @@
 #include <ostream>
 
 #include "cli/app.hpp"
-#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/basin/forced_basin.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/forced/orbit_scan.hpp"

@@ -3,14 +3,14 @@
 // found, the pure-slip one at the closed-form steady state of the linear
 // slip field, the stick-slip one a converged fixed point of stroboscopic
 // shooting (an independent Newton solve) with one stick per period.
-#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/basin/forced_basin.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "stickslip/chaos/basin_report.hpp"
+#include "stickslip/io/forced_basin_report.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
 

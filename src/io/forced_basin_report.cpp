@@ -1,5 +1,5 @@
-// Forced basins' tables and figure (chaos/basin_report.hpp).
-#include "stickslip/chaos/basin_report.hpp"
+// Forced basins' tables and figure (io/forced_basin_report.hpp).
+#include "stickslip/io/forced_basin_report.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,7 +1,7 @@
-// Basins on the stroboscopic section (chaos/forced_basin.hpp): each start's
+// Basins on the stroboscopic section (basin/forced_basin.hpp): each start's
 // kept section points decide its attractor; attractors are merged on the
 // calling thread after the workers join, in grid order (deterministic).
-#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/basin/forced_basin.hpp"
 
 #include <algorithm>
 #include <atomic>

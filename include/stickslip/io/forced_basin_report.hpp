@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "stickslip/chaos/forced_basin.hpp"
+#include "stickslip/basin/forced_basin.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 
