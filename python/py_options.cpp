@@ -88,10 +88,13 @@ void BindEnums(py::module_& m) {
       .value("ok", ContinuationStatus::kOk)
       .value("failed", ContinuationStatus::kFailed, "a numerical failure: message says where")
       .value("cancelled", ContinuationStatus::kCancelled);
-  Enum<CurveKind>(m, "CurveKind", "Curve of the stability chart (label HB, GR, LP).", &CurveLabel)
+  Enum<CurveKind>(m, "CurveKind", "Curve of a stability chart (label HB, GR, LP, PD, NS).",
+                  &CurveLabel)
       .value("hopf", CurveKind::kHopf)
       .value("grazing", CurveKind::kGrazing)
-      .value("fold", CurveKind::kFold);
+      .value("fold", CurveKind::kFold)
+      .value("period_doubling", CurveKind::kPeriodDoubling, "PD: a forced orbit's")
+      .value("torus", CurveKind::kTorus, "NS: a forced orbit's");
   Enum<ChartStatus>(m, "ChartStatus", "How a chart ended.", &Name)
       .value("ok", ChartStatus::kOk)
       .value("failed", ChartStatus::kFailed, "a numerical failure: message says where")

@@ -82,6 +82,8 @@ class CurveKind(enum.IntEnum):
     hopf = 0
     grazing = 1
     fold = 2
+    period_doubling = 3
+    torus = 4
 class ChartStatus(enum.IntEnum):
     ok = 0
     failed = 1

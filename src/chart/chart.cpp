@@ -44,9 +44,10 @@ std::string ChartOptions::ValidationError(const Params& base) const {
   else if (region_n1 < 0 || region_n2 < 0 || (region_n1 == 0) != (region_n2 == 0))
     os << "region grid " << region_n1 << " x " << region_n2 << " must be empty or positive";
   for (const Seed& s : seeds)
-    if (os.str().empty() && (s.kind == CurveKind::kFold || !plane.Contains(s.p1, s.p2)))
+    if (const bool kind = s.kind == CurveKind::kHopf || s.kind == CurveKind::kGrazing;
+        os.str().empty() && (!kind || !plane.Contains(s.p1, s.p2)))
       os << "seed " << CurveLabel(s.kind) << " at (" << s.p1 << ", " << s.p2 << ")"
-         << (s.kind == CurveKind::kFold ? ": LP seeds are not supported" : " is outside the plane");
+         << (!kind ? ": only HB and GR seeds are supported" : " is outside the plane");
   return os.str();
 }
 

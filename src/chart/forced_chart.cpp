@@ -60,7 +60,7 @@ CurveEnd GoOn(ForcedCurveProblem& problem, const TraceOptions& t, VectorXd u, Ei
 
 // The rows of the traced stretches, each sampled at its section phase.
 std::vector<ForcedCurvePoint> Points(ForcedCurveProblem& problem, const std::vector<Stretch>& all,
-                                     ForcedCurveKind kind) {
+                                     CurveKind kind) {
   std::vector<ForcedCurvePoint> points;
   std::string why;
   for (const Stretch& st : all) {
@@ -73,7 +73,7 @@ std::vector<ForcedCurvePoint> Points(ForcedCurveProblem& problem, const std::vec
       p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
       p.extrema = smp.run.extrema;
       Multipliers(smp.run.jacobian, p.multipliers);
-      p.flag = kind == ForcedCurveKind::kNS ? p.multipliers[0].imag() == 0 : smp.crossing;
+      p.flag = kind == CurveKind::kTorus ? p.multipliers[0].imag() == 0 : smp.crossing;
       points.push_back(p);
     }
   }
@@ -126,7 +126,7 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const F
     *message = curve.ends.Text();
     return curve;
   }
-  if (s.kind == ForcedCurveKind::kGR) ChooseMargin(problem, u0);
+  if (s.kind == CurveKind::kGrazing) ChooseMargin(problem, u0);
   TraceOptions t;
   t.plane = o.plane.AsPlane();
   t.i1 = 2;
@@ -191,10 +191,12 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const F
 }  // namespace
 
 ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions& options,
-                             ForcedCurveKind kind, int m, double x0, double xdot0, double p1,
-                             double p2, std::string* message) {
+                             CurveKind kind, int m, double x0, double xdot0, double p1, double p2,
+                             std::string* message) {
   const std::string e = options.ValidationError(base);
   if (!e.empty()) throw InvalidArgument(e);
+  if (kind == CurveKind::kHopf)
+    throw InvalidArgument("kind HB: a forced orbit's curves are LP, PD, NS and GR");
   ForcedSeed s{kind, m, x0, xdot0, p1, p2, 3, "given"};
   return Trace(base, options, s, message);
 }

@@ -36,13 +36,13 @@ void Harvest(const OrbitBranch& b, const Line& line, const ForcedChartOptions& o
   for (const OrbitRow& r : b.special) {
     ForcedSeed s;
     if (r.label == SpecialKind::kFold)
-      s.kind = ForcedCurveKind::kLP;
+      s.kind = CurveKind::kFold;
     else if (r.label == SpecialKind::kPeriodDoubling)
-      s.kind = ForcedCurveKind::kPD;
+      s.kind = CurveKind::kPeriodDoubling;
     else if (r.label == SpecialKind::kTorus)
-      s.kind = ForcedCurveKind::kNS;
+      s.kind = CurveKind::kTorus;
     else if (Sliding(r.label))
-      s.kind = ForcedCurveKind::kGR;
+      s.kind = CurveKind::kGrazing;
     else
       continue;
     s.m = m, s.x0 = r.start.z[0], s.xdot0 = r.start.z[1];

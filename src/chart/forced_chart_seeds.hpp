@@ -11,7 +11,7 @@
 namespace stickslip {
 
 struct ForcedSeed {
-  ForcedCurveKind kind = ForcedCurveKind::kLP;
+  CurveKind kind = CurveKind::kFold;
   int m = 1;
   double x0 = 0, xdot0 = 0, p1 = 0, p2 = 0;
   int fixed = 3;  // the unknown held while the seed is corrected (the line's constant)

@@ -26,7 +26,7 @@ using Eigen::VectorXd;
 
 // The test function of one codimension-two label on an orbit's DP^m.
 struct Codim2Test {
-  ForcedCodim2Label label;
+  Codim2Label label;
   double sign = 1;  // NS: tr DP's sign at the real end
   double offset = -1;
   bool trace = false;
@@ -104,7 +104,7 @@ bool Refine(ForcedCurveProblem& pr, const ForcedCurvePoint& a, const ForcedCurve
 
 void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const ForcedCurve& c,
                 int index, std::vector<ForcedCodim2>* out) {
-  auto add = [&](ForcedCodim2 x, ForcedCodim2Label l, const std::string& d) {
+  auto add = [&](ForcedCodim2 x, Codim2Label l, const std::string& d) {
     x.label = l, x.on = c.kind, x.curve = index, x.description = d;
     out->push_back(x);
   };
@@ -115,7 +115,7 @@ void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const For
     const ForcedCurvePoint& p = first ? c.points.front() : c.points.back();
     ForcedCodim2 x;
     x.p1 = p.p1, x.p2 = p.p2, x.phase = p.phase, x.x0 = p.x0, x.xdot0 = p.xdot0;
-    add(x, ForcedCodim2Label::kSliding,
+    add(x, Codim2Label::kSliding,
         std::string(Name(c.kind)) + " curve ends on a sliding point: " + e.why);
   }
   ForcedCurveProblem problem(base, o.plane, c.kind, c.m, o.flow);
@@ -151,18 +151,18 @@ void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const For
   };
   for (size_t i = 1; i < c.points.size(); ++i) {
     const ForcedCurvePoint &a = c.points[i - 1], &b = c.points[i];
-    if (c.kind == ForcedCurveKind::kLP)
-      locate(a, b, {ForcedCodim2Label::kR1}, "LP curve: both multipliers at +1 (1:1)");
-    if (c.kind == ForcedCurveKind::kPD) {
-      locate(a, b, {ForcedCodim2Label::kR2}, "PD curve: both multipliers at -1 (1:2)");
-      locate(a, b, {ForcedCodim2Label::kFoldFlip, 1, 1},
+    if (c.kind == CurveKind::kFold)
+      locate(a, b, {Codim2Label::kR1}, "LP curve: both multipliers at +1 (1:1)");
+    if (c.kind == CurveKind::kPeriodDoubling) {
+      locate(a, b, {Codim2Label::kR2}, "PD curve: both multipliers at -1 (1:2)");
+      locate(a, b, {Codim2Label::kFoldFlip, 1, 1},
              "PD curve: the other multiplier at +1 (an LP curve meets it)");
     }
-    if (c.kind == ForcedCurveKind::kNS && a.flag != b.flag) {
+    if (c.kind == CurveKind::kTorus && a.flag != b.flag) {
       const double tr = mat(a.flag ? a : b).first;
       const bool r1 = tr > 0;
       locate(
-          a, b, {r1 ? ForcedCodim2Label::kR1 : ForcedCodim2Label::kR2, r1 ? 1.0 : -1.0, 0, true},
+          a, b, {r1 ? Codim2Label::kR1 : Codim2Label::kR2, r1 ? 1.0 : -1.0, 0, true},
           std::string("NS curve ends: the pair turns real at ") + (r1 ? "+1 (1:1)" : "-1 (1:2)"));
     }
   }
@@ -180,7 +180,7 @@ void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane
   for (size_t i = 0; i < curves.size(); ++i)
     for (size_t j = i + 1; j < curves.size(); ++j) {
       const ForcedCurve &a = curves[i], &b = curves[j];
-      if (a.kind != ForcedCurveKind::kGR || b.kind != ForcedCurveKind::kGR || a.m != b.m) continue;
+      if (a.kind != CurveKind::kGrazing || b.kind != CurveKind::kGrazing || a.m != b.m) continue;
       bool met = false;  // one GG per pair of curves
       for (const bool fa : {true, false})
         for (const bool fb : {true, false}) {
@@ -189,7 +189,7 @@ void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane
                                  &q = fb ? b.points.front() : b.points.back();
           if (std::hypot((p.p1 - q.p1) / pl.width1(), (p.p2 - q.p2) / pl.width2()) > tol) continue;
           ForcedCodim2 x;
-          x.label = ForcedCodim2Label::kDoubleGrazing, x.on = ForcedCurveKind::kGR;
+          x.label = Codim2Label::kDoubleGrazing, x.on = CurveKind::kGrazing;
           x.curve = static_cast<int>(i);
           x.p1 = (p.p1 + q.p1) / 2, x.p2 = (p.p2 + q.p2) / 2;
           x.description = "GR curves " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +

@@ -54,7 +54,7 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
     const Extrema& x = s->run.extrema;
     s->margin = u[1] <= model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
   }
-  if (!std::isfinite(s->margin) && kind_ == ForcedCurveKind::kGR) {
+  if (!std::isfinite(s->margin) && kind_ == CurveKind::kGrazing) {
     *why = "the orbit does not reach x' = v (no crossing, no stick)";
     return false;
   }
@@ -104,7 +104,7 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
     return {CurveEndKind::kSliding,
             "residual " + Num(res, 3) + " (the map is not smooth there: a sliding point)"};
   // (a GR curve is where the structure changes: its margin spans both sides)
-  if (kind_ != ForcedCurveKind::kGR &&
+  if (kind_ != CurveKind::kGrazing &&
       (a.run.sticks != b.run.sticks || a.run.crossings != b.run.crossings))
     return {CurveEndKind::kSliding, "sticks " + std::to_string(a.run.sticks) + " -> " +
                                         std::to_string(b.run.sticks) + ", crossings " +
@@ -130,14 +130,16 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
 
 double ForcedCurveProblem::Test(const ForcedCurveSample& s) const {
   switch (kind_) {
-    case ForcedCurveKind::kLP:
+    case CurveKind::kFold:
       return s.lp;
-    case ForcedCurveKind::kPD:
+    case CurveKind::kPeriodDoubling:
       return s.pd;
-    case ForcedCurveKind::kNS:
+    case CurveKind::kTorus:
       return s.ns;
-    case ForcedCurveKind::kGR:
+    case CurveKind::kGrazing:
       return s.margin;
+    case CurveKind::kHopf:  // no forced curve (TraceForcedCurve refuses it)
+      break;
   }
   return 0;
 }

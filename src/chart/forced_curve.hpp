@@ -39,8 +39,8 @@ struct ForcedCurveSample {
 
 class ForcedCurveProblem final : public PalcProblem {
  public:
-  ForcedCurveProblem(const ForcedParams& base, const ForcedPlane& plane, ForcedCurveKind kind,
-                     int m, const ForcedOptions& flow)
+  ForcedCurveProblem(const ForcedParams& base, const ForcedPlane& plane, CurveKind kind, int m,
+                     const ForcedOptions& flow)
       : base_(base), plane_(plane), kind_(kind), m_(m), flow_(flow) {}
   int unknowns() const override { return 4; }
   const ForcedPlane& plane() const { return plane_; }
@@ -52,7 +52,7 @@ class ForcedCurveProblem final : public PalcProblem {
   // The GR margin's kind: chosen at the seed, held along the curve.
   void set_crossing(bool crossing) { crossing_ = crossing; }
   // Runs without switching: a grazing GR curve (the header's GR).
-  bool smooth() const { return kind_ == ForcedCurveKind::kGR && !crossing_; }
+  bool smooth() const { return kind_ == CurveKind::kGrazing && !crossing_; }
   // This curve's test function of a sample.
   double TestOf(const ForcedCurveSample& s) const { return Test(s); }
   // The section: forcing phase theta (z at t = theta / Omega), 0 by default.
@@ -76,7 +76,7 @@ class ForcedCurveProblem final : public PalcProblem {
   ForcedPoint Start(const ForcedModel& m, double t, double x, double xdot) const;
   ForcedParams base_;
   ForcedPlane plane_;
-  ForcedCurveKind kind_;
+  CurveKind kind_;
   int m_;
   ForcedOptions flow_;
   bool crossing_ = true;

@@ -48,7 +48,7 @@ std::string Fill(const ResponseClasses& c, int cls) {
 
 void CurveLines(std::ostream& os, const ForcedChartResult& r) {
   struct Style {
-    ForcedCurveKind kind;
+    CurveKind kind;
     const char* color;
     const char* dash;
     double width;
@@ -57,10 +57,10 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
   };
   // Every kind and multiple its own line: colour by kind, dash by kind and m.
   const Style styles[] = {
-      {ForcedCurveKind::kGR, "#c00000", "1", 3.5, "GR, non-stop motion ends", "(2,3)"},
-      {ForcedCurveKind::kLP, "black", "1", 2.5, "LP, fold", "(2,3)"},
-      {ForcedCurveKind::kPD, "black", "(8,4)", 2.5, "PD, period doubling", "(8,3,2,3)"},
-      {ForcedCurveKind::kNS, "#ff00ff", "(10,4,2,4)", 2.5, "NS, Neimark-Sacker", "(2,3)"},
+      {CurveKind::kGrazing, "#c00000", "1", 3.5, "GR, non-stop motion ends", "(2,3)"},
+      {CurveKind::kFold, "black", "1", 2.5, "LP, fold", "(2,3)"},
+      {CurveKind::kPeriodDoubling, "black", "(8,4)", 2.5, "PD, period doubling", "(8,3,2,3)"},
+      {CurveKind::kTorus, "#ff00ff", "(10,4,2,4)", 2.5, "NS, Neimark-Sacker", "(2,3)"},
   };
   // Curves of m >= 2 orbits (seeded from doubled branches too): thinner, their own dashes.
   for (const Style& st : styles)
@@ -72,7 +72,7 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
             multiple ? std::string(Name(st.kind)) + " of m ≥ 2 orbits" : st.title;
         // NS: only where the multipliers are complex (flag, column 17, is 1
         // on the neutral-saddle stretch of det DP = 1, which is no bifurcation).
-        const std::string only = st.kind == ForcedCurveKind::kNS ? " && $17 == 0" : "";
+        const std::string only = st.kind == CurveKind::kTorus ? " && $17 == 0" : "";
         os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << only
            << " ? $2 : NaN) with lines lw " << (multiple ? 2.0 : st.width) << " lc rgb '"
            << st.color << "' dt " << (multiple ? st.dash_multiple : st.dash)
@@ -113,7 +113,7 @@ void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const ForcedPlan
     taken.push_back({q[0], q[1], 3, 3});
   }
   for (const ForcedCodim2& p : r.codim2) {
-    if (p.label == ForcedCodim2Label::kSliding) continue;
+    if (p.label == Codim2Label::kSliding) continue;
     const std::string name = Name(p.label);
     const double hw = kCharW * name.size() / 2, hh = kTextH / 2;
     const auto at = px(p.p1, p.p2);
@@ -192,8 +192,8 @@ std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
     os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(c, static_cast<int>(i))
        << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
-  const auto sliding = [](const ForcedCodim2& p) { return p.label == ForcedCodim2Label::kSliding; };
-  const std::string sl = Name(ForcedCodim2Label::kSliding);
+  const auto sliding = [](const ForcedCodim2& p) { return p.label == Codim2Label::kSliding; };
+  const std::string sl = Name(Codim2Label::kSliding);
   if (std::any_of(r.codim2.begin(), r.codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq '" << sl
        << "' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title '" << sl

@@ -70,6 +70,16 @@ TEST(Chart, DegenerateRangesAndStepsRefused) {
   EXPECT_TRUE(Contains(o.ValidationError(base), "max_step = 1e-09 must be in [5e-05, 0.2]"));
   o.max_step = 1.0 / kMaxCurvePoints;
   EXPECT_EQ(o.ValidationError(base), "");
+  // The belt's chart follows HB and GR seeds; LP, PD and NS (a forced
+  // orbit's curves, the one CurveKind) are refused by name.
+  o.seeds = {{CurveKind::kGrazing, 0.3, 0.05}};
+  EXPECT_EQ(o.ValidationError(base), "");
+  for (const CurveKind k : {CurveKind::kFold, CurveKind::kPeriodDoubling, CurveKind::kTorus}) {
+    o.seeds = {{k, 0.3, 0.05}};
+    EXPECT_TRUE(Contains(o.ValidationError(base),
+                         std::string("seed ") + Name(k) + " at (0.3, 0.05): only HB and GR"))
+        << o.ValidationError(base);
+  }
 }
 
 // A range end outside the model's domain is blamed on that end, at the value

@@ -64,7 +64,7 @@ TEST(ForcedChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
   ASSERT_EQ(r.status, ChartStatus::kOk) << r.message;
   int curves = 0, checked = 0;
   for (const ForcedCurve& c : r.curves) {
-    if (c.kind != ForcedCurveKind::kPD || c.m != 2) continue;
+    if (c.kind != CurveKind::kPeriodDoubling || c.m != 2) continue;
     ++curves;
     for (const double level : {0.3, 0.4}) {  // 2 points a curve
       const ForcedCurvePoint* p = nullptr;   // nearest inner point (an end may be a sliding point)
@@ -91,7 +91,7 @@ TEST(ForcedChartDoubled, ThirdDoublingCurveMatchesOneParameterRuns) {
   ASSERT_EQ(r.status, ChartStatus::kOk) << r.message;
   int curves = 0, checked = 0;
   for (const ForcedCurve& c : r.curves) {
-    if (c.kind != ForcedCurveKind::kPD || c.m != 4) continue;
+    if (c.kind != CurveKind::kPeriodDoubling || c.m != 4) continue;
     ++curves;
     const ForcedCurvePoint& p = c.points[c.points.size() / 2];  // an inner point
     double best = NAN;

@@ -54,7 +54,7 @@ TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
     ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
     ASSERT_EQ(orbit.sticks, 0);
     std::string why;
-    const ForcedCurve c = TraceForcedCurve(Coulomb(mu, mu, 0, 0, a, w), o, ForcedCurveKind::kGR, 1,
+    const ForcedCurve c = TraceForcedCurve(Coulomb(mu, mu, 0, 0, a, w), o, CurveKind::kGrazing, 1,
                                            orbit.start.x, orbit.start.xdot, w, a, &why);
     EXPECT_EQ(why, "") << c.ends.Text();
     ASSERT_GT(c.points.size(), 10u);
@@ -107,7 +107,7 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
       Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
   std::string why;
   const ForcedCurve c =
-      TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, ForcedCurveKind::kPD,
+      TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, CurveKind::kPeriodDoubling,
                        PeriodMultiple(seed_run), pd->start.z[0], pd->start.z[1], pd->p, 0.3, &why);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
   int checked = 0;

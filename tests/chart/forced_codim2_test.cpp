@@ -67,9 +67,9 @@ TEST(ForcedCodim2, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMinusOne) {
   const ForcedChartResult r = Chart(base, 0.6, 2.4, 0.002, 0.16);
   std::vector<const ForcedCodim2*> pd, ns;
   for (const ForcedCodim2& c : r.codim2)
-    if (c.label == ForcedCodim2Label::kR2) {
+    if (c.label == Codim2Label::kR2) {
       EXPECT_EQ(c.method, ForcedCodim2Method::kRefined);
-      (c.on == ForcedCurveKind::kPD ? pd : ns).push_back(&c);
+      (c.on == CurveKind::kPeriodDoubling ? pd : ns).push_back(&c);
     }
   ASSERT_EQ(pd.size(), 2u);
   ASSERT_EQ(ns.size(), 2u);
@@ -94,7 +94,7 @@ TEST(ForcedCodim2, R1AtTheTongueTipHasBothMultipliersAtPlusOne) {
   const ForcedChartResult r = Chart(base, 0.6, 1.6, 0.002, 0.1);  // the study's [chart]
   int n = 0;
   for (const ForcedCodim2& c : r.codim2) {
-    if (c.label != ForcedCodim2Label::kR1) continue;
+    if (c.label != Codim2Label::kR1) continue;
     ++n;
     EXPECT_EQ(c.method, ForcedCodim2Method::kRefined);
     const RefCheck ref = Reference(base, c);
@@ -122,7 +122,7 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
   const ForcedChartResult r = Chart(base, 0.6, 1.6, 0.002, 0.1);
   const ForcedCurve* gr = nullptr;
   for (const ForcedCurve& c : r.curves)
-    if (c.kind == ForcedCurveKind::kGR && c.m == 1) gr = &c;
+    if (c.kind == CurveKind::kGrazing && c.m == 1) gr = &c;
   ASSERT_NE(gr, nullptr);
   EXPECT_GT(gr->points.size(), 100u);
   EXPECT_EQ(gr->ends.first.kind, CurveEndKind::kBorder);

@@ -123,7 +123,7 @@ void ExpectNoJumps(const ForcedCurve& c, const ForcedChartOptions& o) {
 
 // Traces the curve of each `label` point of the A = 0.5 seed run, checks it
 // for jumps and its points near `levels` against one-parameter runs.
-int CheckCurves(SpecialKind label, ForcedCurveKind kind, std::initializer_list<double> levels) {
+int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double> levels) {
   const OrbitBranch run = SeedRun(0.5);
   const ForcedChartOptions o = PointsChartOptions();
   int checked = 0, seeds = 0, ends = 0;
@@ -184,11 +184,12 @@ int CheckCurves(SpecialKind label, ForcedCurveKind kind, std::initializer_list<d
 // at Omega 0.445, A 0.19 to another branch's fold): its points down to
 // A = 0.2 are folds of the one-parameter runs.
 TEST(ForcedCurvePoints, FoldCurvesMatchOneParameterRunsAndDoNotJump) {
-  EXPECT_GE(CheckCurves(SpecialKind::kFold, ForcedCurveKind::kLP, {0.22, 0.3, 0.45, 0.55}), 5);
+  EXPECT_GE(CheckCurves(SpecialKind::kFold, CurveKind::kFold, {0.22, 0.3, 0.45, 0.55}), 5);
 }
 
 TEST(ForcedCurvePoints, PeriodDoublingCurvesMatchOneParameterRuns) {
-  EXPECT_GE(CheckCurves(SpecialKind::kPeriodDoubling, ForcedCurveKind::kPD, {0.3, 0.45, 0.55}), 2);
+  EXPECT_GE(
+      CheckCurves(SpecialKind::kPeriodDoubling, CurveKind::kPeriodDoubling, {0.3, 0.45, 0.55}), 2);
 }
 
 }  // namespace

@@ -65,8 +65,8 @@ const ForcedCurve& StudyCurve() {
     if (run.special.empty() || run.special[0].label != SpecialKind::kTorus) return ForcedCurve();
     const OrbitRow& s = run.special[0];
     std::string why;
-    return TraceForcedCurve(Scene(0.05, s.p), NsChartOptions(), ForcedCurveKind::kNS, 1,
-                            s.start.z[0], s.start.z[1], s.p, 0.05, &why);
+    return TraceForcedCurve(Scene(0.05, s.p), NsChartOptions(), CurveKind::kTorus, 1, s.start.z[0],
+                            s.start.z[1], s.p, 0.05, &why);
   }();
   return curve;
 }

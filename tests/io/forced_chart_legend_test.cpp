@@ -24,8 +24,8 @@ std::string StyleOf(const std::string& line) {
 
 TEST(ForcedChartLegend, EveryCurveKindHasItsOwnStyleAndCodim2DotsAKeyEntry) {
   ForcedChartResult r;
-  for (ForcedCurveKind kind :
-       {ForcedCurveKind::kGR, ForcedCurveKind::kLP, ForcedCurveKind::kPD, ForcedCurveKind::kNS})
+  for (CurveKind kind :
+       {CurveKind::kGrazing, CurveKind::kFold, CurveKind::kPeriodDoubling, CurveKind::kTorus})
     for (int m : {1, 2}) {
       ForcedCurve c;
       c.kind = kind, c.m = m;
@@ -35,7 +35,7 @@ TEST(ForcedChartLegend, EveryCurveKindHasItsOwnStyleAndCodim2DotsAKeyEntry) {
       r.curves.push_back(c);
     }
   ForcedCodim2 gg;
-  gg.label = ForcedCodim2Label::kDoubleGrazing, gg.p1 = 1, gg.p2 = 0.5;
+  gg.label = Codim2Label::kDoubleGrazing, gg.p1 = 1, gg.p2 = 0.5;
   r.codim2.push_back(gg);
   ForcedPlane pl;
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 1;
@@ -94,7 +94,7 @@ TEST(ForcedChartLegend, Codim2LabelsKeepOffCurvesAndEachOther) {
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 1;
   for (double shift : {0.0, 0.02}) {  // two parallel curves, one through each point
     ForcedCurve c;
-    c.kind = ForcedCurveKind::kNS;
+    c.kind = CurveKind::kTorus;
     for (int i = 0; i <= 20; ++i) {
       ForcedCurvePoint p;
       p.p1 = 0.9 + shift + 0.01 * i, p.p2 = 0.4 + 0.01 * i;
@@ -102,7 +102,7 @@ TEST(ForcedChartLegend, Codim2LabelsKeepOffCurvesAndEachOther) {
     }
     r.curves.push_back(c);
     ForcedCodim2 r1;
-    r1.label = ForcedCodim2Label::kR1, r1.p1 = 1 + shift, r1.p2 = 0.5;
+    r1.label = Codim2Label::kR1, r1.p1 = 1 + shift, r1.p2 = 0.5;
     r.codim2.push_back(r1);
   }
   const std::string script = ForcedChartScript(r, pl, "test", FigureFormat::kPng);

@@ -18,7 +18,7 @@ namespace {
 TEST(ForcedChartScript, NsCurveDrawnOnlyWhereTheMultipliersAreComplex) {
   ForcedChartResult r;
   ForcedCurve ns;
-  ns.kind = ForcedCurveKind::kNS;
+  ns.kind = CurveKind::kTorus;
   for (int i = 0; i < 3; ++i) {
     ForcedCurvePoint p;
     p.p1 = 1 + 0.01 * i, p.p2 = 0.01, p.flag = i == 2;
@@ -48,7 +48,7 @@ TEST(ForcedChartScript, SlidingEndsAreMarkersAndOnlyCodim2PointsAreNamed) {
   ForcedChartResult r;
   for (int i = 0; i < 3; ++i) {
     ForcedCodim2 p;
-    p.label = i < 2 ? ForcedCodim2Label::kSliding : ForcedCodim2Label::kDoubleGrazing;
+    p.label = i < 2 ? Codim2Label::kSliding : Codim2Label::kDoubleGrazing;
     p.p1 = 0.4 + 0.001 * i, p.p2 = 0.5;
     r.codim2.push_back(p);
   }
@@ -63,7 +63,8 @@ TEST(ForcedChartScript, SlidingEndsAreMarkersAndOnlyCodim2PointsAreNamed) {
       ++labels;
       sl_labels += line.find("\"SL\"") != std::string::npos;
     }
-    sl_key += line.find("eq 'SL'") != std::string::npos && line.find(" title ") != std::string::npos;
+    sl_key +=
+        line.find("eq 'SL'") != std::string::npos && line.find(" title ") != std::string::npos;
   }
   EXPECT_EQ(labels, 1);  // GG only
   EXPECT_EQ(sl_labels, 0);

@@ -92,8 +92,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("BranchStatus", BranchStatus::kContactLost);
   Covers("ForcedSimulationStatus", ForcedSimulationStatus::kRowLimit);
   Covers("ForcedSection", ForcedSection::kExit);
-  Covers("ForcedCurveKind", ForcedCurveKind::kGR);
-  Covers("ForcedCodim2Label", ForcedCodim2Label::kDoubleGrazing);
+  Covers("CurveKind", CurveKind::kTorus);
+  Covers("Codim2Label", Codim2Label::kDoubleGrazing);
   Covers("ForcedCodim2Method", ForcedCodim2Method::kChord);
 }
 
@@ -103,7 +103,7 @@ TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
   EXPECT_STREQ(Name(Integrator::kCvode), "cvode");
   EXPECT_STREQ(Name(SpecialKind::kNone), "");
   EXPECT_STREQ(Name(SpecialKind::kPeriodDoubling), "PD");
-  EXPECT_STREQ(Name(ForcedCodim2Label::kFoldFlip), "LPPD");
+  EXPECT_STREQ(Name(Codim2Label::kFoldFlip), "LPPD");
   EXPECT_STREQ(Name(ForcedAxis::kOmega), "omega");
   EXPECT_STREQ(Name(FigureFormat::kPng), "png");
 }
@@ -112,7 +112,7 @@ TEST(Names, TablesCoverEveryEnumerator) {
   // The enums are dense from 0: a table as long as the enum covers it.
   EXPECT_EQ(NameCount<CurvePointType>(), static_cast<size_t>(CurvePointType::kFold) + 1);
   EXPECT_EQ(NameCount<CurveEndKind>(), static_cast<size_t>(CurveEndKind::kNoStart) + 1);
-  EXPECT_EQ(NameCount<Codim2Label>(), static_cast<size_t>(Codim2Label::kGrazingFold) + 1);
+  EXPECT_EQ(NameCount<Codim2Label>(), static_cast<size_t>(Codim2Label::kDoubleGrazing) + 1);
   EXPECT_EQ(NameCount<PalcStatus>(), static_cast<size_t>(PalcStatus::kStartFailed) + 1);
   for (size_t i = 0; i < NameCount<CurvePointType>(); ++i)
     EXPECT_STRNE(Name(static_cast<CurvePointType>(i)), "?");

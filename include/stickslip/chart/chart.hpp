@@ -22,16 +22,18 @@
 
 namespace stickslip {
 
-enum class CurveKind { kHopf, kGrazing, kFold };
+/// A chart's curve, for every system: HB of steady sliding, GR grazing
+/// (a stick phase born or lost), LP fold, PD period doubling and NS
+/// Neimark-Sacker of periodic orbits (special_kind.hpp's points, followed).
+enum class CurveKind { kHopf, kGrazing, kFold, kPeriodDoubling, kTorus };
 template <>
 struct EnumNames<CurveKind> {
   static constexpr NamedValue<CurveKind> kTable[] = {
-      {CurveKind::kHopf, "HB"},
-      {CurveKind::kGrazing, "GR"},
-      {CurveKind::kFold, "LP"},
+      {CurveKind::kHopf, "HB"},           {CurveKind::kGrazing, "GR"}, {CurveKind::kFold, "LP"},
+      {CurveKind::kPeriodDoubling, "PD"}, {CurveKind::kTorus, "NS"},
   };
 };
-const char* CurveLabel(CurveKind k);  // "HB", "GR", "LP"
+const char* CurveLabel(CurveKind k);  // "HB", "GR", "LP", "PD", "NS"
 
 /// The type of a curve point: HB supercritical / subcritical (degenerate
 /// where l1 = 0); GR persistence / nonsmooth-fold; LP fold.
@@ -123,16 +125,28 @@ struct Curve {
   int evaluations = 0;  // of its defining function
 };
 
-/// The label of a codimension-two point of a chart.
+/// The label of a codimension-two point of a chart, for every system.
 enum class Codim2Label {
-  kGeneralizedHopf,  // GH: l1 changes sign on an HB curve
-  kGrazingFold,      // GR-LP: the grazing type changes on a GR curve
+  kGeneralizedHopf,  ///< GH: l1 changes sign on an HB curve
+  kGrazingFold,      ///< GR-LP: the grazing type changes on a GR curve
+  kR1,               ///< LP with the other multiplier at +1 (1:1 resonance; an NS curve ends)
+  kR2,               ///< PD with the other multiplier at -1 (1:2 resonance; an NS curve ends)
+  kFoldFlip,         ///< LPPD: PD with the other multiplier at +1 (an LP curve meets it)
+  kSliding,  ///< SL: the orbit's stick structure changes on an LP/PD/NS curve (it ends on GR)
+  /// GG: two GR curves meet at a corner, the orbit touches the surface twice
+  /// at once (the grazing boundary switches from one touch to the other).
+  kDoubleGrazing,
 };
 template <>
 struct EnumNames<Codim2Label> {
   static constexpr NamedValue<Codim2Label> kTable[] = {
       {Codim2Label::kGeneralizedHopf, "GH"},
       {Codim2Label::kGrazingFold, "GR-LP"},
+      {Codim2Label::kR1, "R1"},
+      {Codim2Label::kR2, "R2"},
+      {Codim2Label::kFoldFlip, "LPPD"},
+      {Codim2Label::kSliding, "SL"},
+      {Codim2Label::kDoubleGrazing, "GG"},
   };
 };
 

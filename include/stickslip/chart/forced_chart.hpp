@@ -37,17 +37,6 @@ struct ForcedPlane {
   std::string ValidationError(const ForcedParams& base) const;
 };
 
-enum class ForcedCurveKind { kLP, kPD, kNS, kGR };
-template <>
-struct EnumNames<ForcedCurveKind> {
-  static constexpr NamedValue<ForcedCurveKind> kTable[] = {
-      {ForcedCurveKind::kLP, "LP"},
-      {ForcedCurveKind::kPD, "PD"},
-      {ForcedCurveKind::kNS, "NS"},
-      {ForcedCurveKind::kGR, "GR"},
-  };
-};
-
 struct ForcedCurvePoint {
   double p1 = 0, p2 = 0;
   double x0 = 0, xdot0 = 0;  ///< the orbit's point at the section phase
@@ -63,7 +52,7 @@ struct ForcedCurvePoint {
 };
 
 struct ForcedCurve {
-  ForcedCurveKind kind = ForcedCurveKind::kLP;
+  CurveKind kind = CurveKind::kFold;
   int m = 1;  ///< period multiple of the orbit
   std::vector<ForcedCurvePoint> points;
   CurveEnds ends;
@@ -73,26 +62,6 @@ struct ForcedCurve {
 };
 
 /// Codimension-two points on the curves.
-enum class ForcedCodim2Label {
-  kR1,        ///< LP with the other multiplier at +1 (1:1 resonance; an NS curve ends)
-  kR2,        ///< PD with the other multiplier at -1 (1:2 resonance; an NS curve ends)
-  kFoldFlip,  ///< PD with the other multiplier at +1 (an LP curve meets it)
-  kSliding,   ///< the orbit's stick structure changes on an LP/PD/NS curve (it ends on GR)
-  /// Two GR curves meet at a corner: the orbit touches x' = v twice at once
-  /// (the grazing boundary switches from one touch to the other).
-  kDoubleGrazing,
-};
-template <>
-struct EnumNames<ForcedCodim2Label> {
-  static constexpr NamedValue<ForcedCodim2Label> kTable[] = {
-      {ForcedCodim2Label::kR1, "R1"},
-      {ForcedCodim2Label::kR2, "R2"},
-      {ForcedCodim2Label::kFoldFlip, "LPPD"},
-      {ForcedCodim2Label::kSliding, "SL"},
-      {ForcedCodim2Label::kDoubleGrazing, "GG"},
-  };
-};
-
 /// How a codimension-two point was placed.
 enum class ForcedCodim2Method {
   kCurveEnd,  ///< SL: the curve's end (its last step bisected by the tracer)
@@ -109,8 +78,8 @@ struct EnumNames<ForcedCodim2Method> {
 };
 
 struct ForcedCodim2 {
-  ForcedCodim2Label label = ForcedCodim2Label::kR1;
-  ForcedCurveKind on = ForcedCurveKind::kLP;
+  Codim2Label label = Codim2Label::kR1;
+  CurveKind on = CurveKind::kFold;
   int curve = 0;  ///< index into ForcedChartResult::curves
   double p1 = 0, p2 = 0;
   ForcedCodim2Method method = ForcedCodim2Method::kCurveEnd;
@@ -176,9 +145,10 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
 /// One curve from a point near it (x0, xdot0 at (p1, p2); p2 held while it
 /// is corrected), both ways to the rectangle's border: what ForcedChart does
 /// per seed, for callers and tests. status kOk, or kPartial (why in *message).
+/// Throws InvalidArgument for kind kHopf, or invalid options or parameters.
 ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions& options,
-                             ForcedCurveKind kind, int m, double x0, double xdot0, double p1,
-                             double p2, std::string* message);
+                             CurveKind kind, int m, double x0, double xdot0, double p1, double p2,
+                             std::string* message);
 
 /// The response grid alone (ForcedChart's second half).
 ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptions& options,
