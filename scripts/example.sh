@@ -12,4 +12,5 @@ cmake -S examples -B "$tmp/example" -DCMAKE_PREFIX_PATH="$tmp/prefix" \
   -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$tmp/example" >/dev/null
 "$tmp/example/seed_branch"
+"$tmp/example/own_system"
 "$tmp/prefix/bin/ss_continue" --version
