@@ -10,9 +10,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "stickslip/io/forced_basin_report.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
+#include "stickslip/io/forced_basin_report.hpp"
 
 namespace stickslip {
 namespace {
