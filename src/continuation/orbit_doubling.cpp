@@ -22,8 +22,10 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-OrbitBranch Failed(const std::string& why) {
+// A start that failed, on the section of twice the period (OrbitBranch::section).
+OrbitBranch Failed(const std::string& why, const PoincareSection& doubled) {
   OrbitBranch b;
+  b.section = doubled;
   b.status = BranchStatus::kStartFailed;
   b.message = why;
   return b;
@@ -68,22 +70,23 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
   }
   const auto start = std::chrono::steady_clock::now();
   const std::string at = system.ParameterName(parameter) + " = " + Num(p_pd, 12);
+  const PoincareSection doubled = Doubled(section);
   // The flip direction from DP at the point.
   Shooting shooting(system, options.shooting);
   if (options.palc.cancelled) shooting.flow().set_cancel(options.palc.cancelled);
   VectorXd r;
   PeriodicOrbit orbit;
   if (!shooting.Map(pd, orbit_detail::SectionFor(system, section, pd.z), true, &r, &orbit))
-    return Failed("the PD orbit: " + orbit.message);
+    return Failed("the PD orbit: " + orbit.message, doubled);
   VectorXd e;
   const double mu = FlipVector(orbit.monodromy, &e);
   const auto& fo = options.shooting.flow;
   const Tolerances tol = Tolerances::From(fo.rtol, fo.atol);
   if (!(std::abs(mu + 1) <= tol.FlipMultiplier()))
-    return Failed("no multiplier at -1 at " + at + " (nearest " + Num(mu, 6) +
-                  "): not a period doubling");
+    return Failed(
+        "no multiplier at -1 at " + at + " (nearest " + Num(mu, 6) + "): not a period doubling",
+        doubled);
   // The first doubled orbit: z + h e, its projection on e held, p free.
-  const PoincareSection doubled = Doubled(section);
   orbit_detail::OrbitProblem problem(system, parameter, pd, doubled, options);
   Palc palc(problem, options.palc);
   const int nu = problem.parameter_index();
@@ -93,7 +96,7 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
   t.head(nu) = e;
   const double h = options.palc.ds;
   const PalcCorrection c = palc.Correct(z + h * t.cwiseProduct(scale), t.normalized());
-  if (!c.ok) return Failed("the first doubled orbit did not converge: " + c.why);
+  if (!c.ok) return Failed("the first doubled orbit did not converge: " + c.why, doubled);
   // On the doubled branch P z' != z' (the two points of the 2-cycle).
   std::unique_ptr<System> q = system.Clone();
   q->SetParameterValue(parameter, c.u[nu]);
@@ -104,7 +107,8 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
       shooting.Map(zq, orbit_detail::SectionFor(*q, section, zq.z), false, &r, &orbit);
   if (!mapped || !(r.norm() > tol.DoubledSplit() * h))
     return Failed("the first doubled orbit fell back onto the single orbit at " +
-                  system.ParameterName(parameter) + " = " + Num(c.u[nu], 12));
+                      system.ParameterName(parameter) + " = " + Num(c.u[nu], 12),
+                  doubled);
   // Away from the single orbit, holding the component of e that moves most.
   int fixed = 0;
   e.cwiseAbs().maxCoeff(&fixed);

@@ -33,6 +33,7 @@ OrbitBranch ContinueOrbitsFrom(const System& system, int parameter, const FlowPo
   std::string why;
   if (!problem.Evaluate(u0, &f, &jac, &why)) {
     OrbitBranch out;
+    out.section = section;
     const bool cancelled = options.palc.cancelled && options.palc.cancelled();
     out.status = cancelled ? BranchStatus::kCancelled : BranchStatus::kStartFailed;
     out.message = "the map fails at the start, " + system.ParameterName(parameter) + " = " +

@@ -134,6 +134,7 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());
+  EXPECT_EQ(PeriodMultiple(d), 2);  // the section it would have had, also on failure
   EXPECT_THROW(ContinueDoubled(p, ForcedAxis::kOmega, 0, 0, 0.8, 0.9, o), InvalidArgument);
 }
 

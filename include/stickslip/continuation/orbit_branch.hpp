@@ -72,7 +72,8 @@ struct OrbitBranch {
   int evaluations = 0;            ///< of the map with its Jacobian
   double seconds = 0;
   /// The section the rows are fixed points of, at the branch's start (its
-  /// returns and clock turns: a doubled branch's are twice the PD orbit's).
+  /// returns and clock turns: a doubled branch's are twice the PD orbit's);
+  /// set also where the start failed.
   PoincareSection section;
 };
 
