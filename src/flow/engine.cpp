@@ -94,6 +94,8 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   for (int p = 0; p < ne; ++p) r.lo[p] = r.hi[p] = start.z[rq.extrema[p]];
   r.dzdp.setZero(nt_);
   r.has_dzdp = false;
+  C_.setZero(nt_);
+  t_start_ = start.t;
   r.steps = 0;
   r.orders = TaylorOrders();
   t_ = start.t;
@@ -105,6 +107,9 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   const int clocks = n_ - nt_;
   clock_rate_.resize(clocks);
   clock_offset_.resize(clocks);
+  clock_drate_.assign(clocks, 0.0);
+  for (int j = 0; j < clocks && column_; ++j)
+    clock_drate_[j] = s_->ClockRateDerivative(j, *flow_.parameter_);
   if (clocks > 0) {
     f_before_.resize(n_);
     s_->Field(mode_, z_, f_before_);
@@ -204,12 +209,7 @@ bool Engine::Segment() {
   p.has_rest = cur_->has_rest;
   const bool stable = cur_->rest_stable;
   rest_ = cur_->rest;
-  // y0: the state, Phi = I, the column 0.
-  const int m = p.layout.aux_first();
-  y0_.assign(m, 0.0);
-  std::copy(z_.data(), z_.data() + n_, y0_.begin());
-  if (variational_)
-    for (int j = 0; j < nt_; ++j) y0_[n_ + j * nt_ + j] = 1.0;
+  InitialRows(p.layout);
   SegmentOutput out;
   if (rq_->observer && rq_->output_dt > 0)
     out = SegmentOutput{rq_->output_dt, &next_output_, &Engine::OnOutput, this};
@@ -230,8 +230,10 @@ bool Engine::Segment() {
     Eigen::Map<const Eigen::MatrixXd> phi(y + n_, nt_, nt_);
     tmp_.noalias() = phi * M_;
     M_ = tmp_;
-    if (column_ && r.switches == 0)
-      r.dzdp = Eigen::Map<const Eigen::VectorXd>(y + p.layout.param(), nt_);
+    if (column_) {  // C <- Phi C + the segment's own column
+      ctmp_.noalias() = phi * C_;
+      C_ = ctmp_ + Eigen::Map<const Eigen::VectorXd>(y + p.layout.param(), nt_);
+    }
   }
   switch (e.kind) {
     case SegmentEnd::kEvent:
@@ -260,6 +262,17 @@ bool Engine::Segment() {
       return Fail(FlowStatus::kIntegratorFailed, Where(e.t, y, e.reason));
   }
   return Fail(FlowStatus::kIntegratorFailed, "unknown segment end");
+}
+
+// y0: the state, Phi = I, the column (0 but its clocks' (t - t0) d omega / dp).
+void Engine::InitialRows(const TaylorLayout& layout) {
+  y0_.assign(layout.aux_first(), 0.0);
+  std::copy(z_.data(), z_.data() + n_, y0_.begin());
+  if (variational_)
+    for (int j = 0; j < nt_; ++j) y0_[n_ + j * nt_ + j] = 1.0;
+  if (column_)
+    for (int j = 0; j < n_ - nt_; ++j)
+      y0_[layout.param() + nt_ + j] = (t_ - t_start_) * clock_drate_[j];
 }
 
 std::string Engine::Where(double t, const double* y, const std::string& reason) const {
@@ -296,8 +309,8 @@ bool Engine::Done(FlowStatus s) {
   r.end.z = z_;
   r.end.mode = mode_;
   r.jacobian = M_;
-  r.has_dzdp = column_ && r.switches == 0;
-  if (!r.has_dzdp) r.dzdp.setZero(nt_);
+  r.has_dzdp = column_;
+  r.dzdp = column_ ? C_ : Eigen::VectorXd::Zero(nt_);
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.
   const bool sampled = r.switches > 0 && last_switch_t_ == t_;

@@ -51,7 +51,13 @@ class Engine {
   void Exit(int contact, int sign, const ModeSet& detected);
   bool SwitchAtOnce(const std::vector<int>& roots);
   // S = I + (f+ - f-) grad^T / (grad . f-) on the tangent block, M = S M.
-  void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad);
+  // M <- S M, and the column with the event's own d g / dp (g_p).
+  void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad,
+                 double g_p);
+  // d g / dp of contact c's arrival (its velocity) or exit (sign: the slip
+  // side), for the column.
+  double ArrivalDp(int c) const;
+  double ExitDp(const ModeSet& stick, int c, int sign) const;
   void Record(SwitchKind kind, int contact, const ModeSet& before, const ModeSet& after);
   bool Done(FlowStatus s);
   bool Fail(FlowStatus s, const std::string& why);
@@ -62,6 +68,7 @@ class Engine {
   // " at t = ... in <mode> at x = ..., x' = ...".
   std::string Place(double t, const double* y, int digits = 17) const;
   Stepper& Solver();
+  void InitialRows(const TaylorLayout& layout);
   static void OnEvent(void* self, int g, const double* y);
   static void OnStep(void* self, double t, const double* y);
   static void OnOutput(void* self, double t, const double* y);
@@ -87,6 +94,9 @@ class Engine {
   Eigen::VectorXd z_;
   ModeSet mode_;
   Eigen::MatrixXd M_;                              // d z / d z0 on the tangent block
+  Eigen::VectorXd C_, ctmp_;                       // d z / dp on the tangent block (column_)
+  double t_start_ = 0;                             // the run's start (a clock's column)
+  std::vector<double> clock_drate_;                // d omega / dp of each clock (column_)
   Eigen::VectorXd rest_;                           // the mode's rest point, if any
   std::vector<double> clock_rate_, clock_offset_;  // clocks = rate t + offset
   double next_output_ = 0;

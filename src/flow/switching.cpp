@@ -143,7 +143,7 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
     }
     grad_.resize(n_);
     ContactGradient(*s_, c, grad_);
-    Saltation(before, after, grad_);
+    Saltation(before, after, grad_, ArrivalDp(c));
     mode_ = after;
     const bool stick = after.sticks(c);
     ++(stick ? out_->sticks : out_->crossings);
@@ -161,7 +161,7 @@ bool Engine::Arrive(int c) {
   if (next[c] == Mode::kStick) {
     const ModeSet& stick = next;
     if (rq_->stop_at_stick) return Done(FlowStatus::kStick);
-    Saltation(before, stick, grad_);
+    Saltation(before, stick, grad_, ArrivalDp(c));
     mode_ = stick;
     ++out_->sticks;
     Record(SwitchKind::kStickIn, c, before, stick);
@@ -173,7 +173,7 @@ bool Engine::Arrive(int c) {
     Record(SwitchKind::kTouch, c, before, after);
     return true;
   }
-  Saltation(before, after, grad_);
+  Saltation(before, after, grad_, ArrivalDp(c));
   mode_ = after;
   ++out_->crossings;
   Record(SwitchKind::kCrossing, c, before, after);
@@ -196,14 +196,15 @@ void Engine::Exit(int c, int sign, const ModeSet& detected) {
     s_->StickForceGradient(detected, c, z_, grad_);
     s_->StaticLimitGradient(c, z_, grad2_);
     grad_ -= sign * grad2_;
-    Saltation(before, after, grad_);
+    Saltation(before, after, grad_, ExitDp(detected, c, sign));
   }
   mode_ = after;
   ++out_->exits;
   Record(SwitchKind::kStickOut, c, before, after);
 }
 
-void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad) {
+void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad,
+                       double g_p) {
   if (!variational_) return;
   f_before_.resize(n_);
   f_after_.resize(n_);
@@ -214,6 +215,24 @@ void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen:
   // M <- S M = M + ((f+ - f-) / den) (grad^T M), on the tangent block.
   tmp_.noalias() = grad.head(nt_).transpose() * M_;
   M_.noalias() += ((f_after_ - f_before_).head(nt_) / den) * tmp_;
+  if (!column_) return;
+  // The parameter as a state of rate 0: the event time moves by -(grad .
+  // dz/dp + g_p) / den, the column jumps by (f+ - f-) times that's negative
+  // (the clocks' column is (t - t0) d omega / dp).
+  double q = grad.head(nt_).dot(C_) + g_p;
+  for (int j = 0; j < n_ - nt_; ++j) q += grad[nt_ + j] * (t_ - t_start_) * clock_drate_[j];
+  C_ += ((f_after_ - f_before_).head(nt_) / den) * q;
+}
+
+double Engine::ArrivalDp(int c) const {
+  if (!column_) return 0;
+  return -s_->ContactParameterDerivative(mode_, c, *flow_.parameter_, z_).speed;
+}
+
+double Engine::ExitDp(const ModeSet& stick, int c, int sign) const {
+  if (!column_) return 0;
+  const ContactSensitivity d = s_->ContactParameterDerivative(stick, c, *flow_.parameter_, z_);
+  return d.stick_force - sign * d.static_limit;
 }
 
 void Engine::Record(SwitchKind kind, int c, const ModeSet& before, const ModeSet& after) {

@@ -3,6 +3,7 @@
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/forced.hpp"
+#include "stickslip/model/model.hpp"
 
 namespace stickslip {
 
@@ -123,6 +124,18 @@ bool ForcedModel::Rest(const ModeSet& m, StateOut z, bool* stable) const {
   z << friction_.Mu(v()), 0.0, 0.0;  // steady sliding, as Model::SteadySliding
   *stable = two_beta_ + friction_.DMu(v()) > 0;
   return true;
+}
+
+bool ForcedModel::SupportsParameterColumn(int j) const {
+  if (j == kForceIndex || j == kOmegaIndex) return true;
+  return j >= 0 && j < kForceIndex &&
+         ParameterColumnSupported(p_.base.law, ParameterAxis(static_cast<Parameter>(j)));
+}
+
+ContactSensitivity ForcedModel::ContactParameterDerivative(const ModeSet&, int, int j,
+                                                           ConstState z) const {
+  if (j == kForceIndex) return {0, -std::cos(z[2]), 0};
+  return j < kForceIndex ? BeltContactDerivative(p_.base, j) : ContactSensitivity{};
 }
 
 int ForcedModel::parameters() const { return kOmegaIndex + 1; }

@@ -112,6 +112,15 @@ void BeltTaylorField::Stick(int order, const TaylorLayout& layout, TaylorRow* c)
   }
   lambda[0] += two_beta_ * v_;
   limit[0] = mu_s_;
+  if (!layout.column) return;
+  // The column of the stick field (v, 0, Omega): d/dv gives x_p' = 1.
+  if (kind_ == ParamKind::kV) c[layout.param()][1] = 1;
+  if (forced_) ClockColumn(order, c + layout.param());
+}
+
+void BeltTaylorField::ClockColumn(int order, TaylorRow* col) const {
+  std::fill(col[2] + 1, col[2] + order + 1, 0.0);
+  if (kind_ == ParamKind::kOmega) col[2][1] = 1;
 }
 
 void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, TaylorRow* c) {
@@ -126,6 +135,7 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
     double* ac = c[layout.aux_first()];
     double* as = c[layout.aux_first() + 1];
     for (int k = 0; k <= order; ++k) ac[k] = force_ * cos_.c()[k], as[k] = force_ * sin_.c()[k];
+    if (r.col) ClockColumn(order, r.col);
   }
   const bool affine_column = layout.column && kind_ == ParamKind::kAffine;
   if (cubic3_ && !affine_column) {
@@ -210,9 +220,16 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
 // v enters through s = sigma (v - x') only, giving (0, mu'(s)); a law
 // parameter mu depends on affinely (mu_s, mu_m, mu_k, k5) gives
 // (0, sigma (mu(s; p + dp) - mu(s; p)) / dp), exact for any dp. v_m, v_s and
-// delta enter mu non-affinely: no column (InvalidArgument).
+// delta enter mu non-affinely: no column (InvalidArgument). The forcing's A
+// gives (0, cos theta); Omega enters through theta (its column row, t - t0).
 void BeltTaylorField::ResolveParameter() {
   const int j = *request_.parameter;
+  mu_shifted_.reset();
+  if (forced_ && (j == ForcedModel::kForceIndex || j == ForcedModel::kOmegaIndex)) {
+    kind_ = j == ForcedModel::kForceIndex ? ParamKind::kForce : ParamKind::kOmega;
+    parameter_.reset();
+    return;
+  }
   if (j < 0 || j >= static_cast<int>(NameCount<Parameter>()))
     throw InvalidArgument("parameter column: no belt parameter " + std::to_string(j));
   const ParameterAxis axis(static_cast<Parameter>(j));
@@ -243,6 +260,12 @@ double BeltTaylorField::ParamTerm(const Rows& r, int k, double muk, double muk_s
       return dmu;
     case ParamKind::kAffine:
       return sigma_ * (muk_shifted - muk) / dp_;
+    case ParamKind::kForce:  // d(A cos theta)/dA
+      return cos_.c()[k];
+    case ParamKind::kOmega: {  // -A sin(theta) d theta / d Omega, a linear series
+      const double* th = r.col[2];
+      return -force_ * (sin_.c()[k] * th[0] + (k > 0 ? sin_.c()[k - 1] * th[1] : 0.0));
+    }
   }
   return 0;
 }

@@ -39,7 +39,7 @@ class BeltTaylorField final : public TaylorField {
     double* x;
     double* xd;
     TaylorRow* phi;  // 4 rows, or null
-    TaylorRow* col;  // 2 rows, or null
+    TaylorRow* col;  // 2 rows (forced: 3, with theta's), or null
   };
 
  private:
@@ -58,6 +58,8 @@ class BeltTaylorField final : public TaylorField {
   template <bool Newest>
   void Columns(int k, double inv, double dmu, const Rows& r);
   void Stick(int order, const TaylorLayout& layout, TaylorRow* c);
+  // theta's column row: d theta / dp, of rate 1 for omega's column, else 0.
+  void ClockColumn(int order, TaylorRow* col) const;
   void Forcing(int order, double theta0);
   void ResolveParameter();
   double ParamTerm(const Rows& r, int k, double muk, double muk_shifted, double dmu) const;
@@ -76,7 +78,7 @@ class BeltTaylorField final : public TaylorField {
   Series<kTaylorMaxOrder + 1> s_, cc_, cos_, sin_;
   std::optional<MuSeries> mu_;
   // The parameter column dz/dp: which term df/dp carries.
-  enum class ParamKind { kBeta, kV, kAffine };
+  enum class ParamKind { kBeta, kV, kAffine, kForce, kOmega };
   std::optional<ParameterAxis> parameter_;
   ParamKind kind_ = ParamKind::kBeta;
   std::optional<MuSeries> mu_shifted_;  // kAffine: the law at p + dp_

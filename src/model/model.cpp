@@ -32,6 +32,14 @@ bool ParameterColumnSupported(LawKind law, const ParameterAxis& axis) {
            (p == Parameter::kDelta && law == LawKind::kLeine));
 }
 
+ContactSensitivity BeltContactDerivative(const Params& p, int j) {
+  ContactSensitivity d;
+  if (j == static_cast<int>(Parameter::kV)) d.speed = 1, d.stick_force = 2 * p.beta;
+  if (j == static_cast<int>(Parameter::kBeta)) d.stick_force = 2 * p.v;
+  if (j == static_cast<int>(Parameter::kMuS)) d.static_limit = 1;
+  return d;
+}
+
 bool Model::SupportsParameterColumn(const ParameterAxis& axis) const {
   return ParameterColumnSupported(p_.law, axis);
 }

@@ -57,6 +57,7 @@ void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variat
   FlowRequest& rq = request_;
   rq.t_max = z.t + (p.kind == SectionKind::kTime ? p.time : options_.max_return_time);
   rq.variational = variational;
+  rq.parameter_column = variational && flow_.has_parameter_column();
   rq.stop_at_exit = p.kind == SectionKind::kStickExit ? p.returns : 0;
   rq.sections.clear();
   if (p.kind == SectionKind::kSurface) rq.sections.push_back(p.surface);
@@ -158,6 +159,7 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   if (p.kind == SectionKind::kTime) {
     dp_ = run_.jacobian;
     Residual(z, p);
+    MapParameterDerivative(z, p);
     return;
   }
   f0_.resize(n);
@@ -172,6 +174,38 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   // DP = (I - f g^T / (g . f)) Phi at the arrival.
   dp_ = full_ - f1_ * (grad_.transpose() * full_) / grad_.dot(f1_);
   Residual(z, p);
+  MapParameterDerivative(z, p);
+}
+
+// dP/dp from the column dz/dp at fixed t: a time section adds f dT/dp (T =
+// 2 pi m / omega); an event section projects as DP does, less f g_p / (g .
+// f) for the event's own motion g_p (the clock's column: T d omega / dp).
+void Shooting::MapParameterDerivative(const FlowPoint& z, const PoincareSection& p) {
+  if (!run_.has_dzdp) return;
+  const System& s = system();
+  const int n = s.dimension(), nt = s.tangent_dimension();
+  const int j = *flow_.parameter();
+  const double T = run_.end.t - z.t;
+  const double drate = n > nt ? s.ClockRateDerivative(0, j) : 0.0;
+  f1_.resize(n);
+  s.Field(run_.end.mode, run_.end.z, f1_);
+  if (p.kind == SectionKind::kTime) {
+    dpdp_ = run_.dzdp;
+    if (p.turns >= 1 && drate != 0) dpdp_ -= f1_.head(nt) * (T / f1_[nt] * drate);
+    return;
+  }
+  col_.resize(n);
+  col_.head(nt) = run_.dzdp;
+  if (n > nt) col_[nt] = T * drate;
+  double g_p = 0;
+  if (p.kind == SectionKind::kStickExit) {
+    ModeSet stick = run_.end.mode;
+    stick.set(p.contact, Mode::kStick);
+    const double sign = run_.end.mode[p.contact] == Mode::kSlipBelow ? 1 : -1;
+    const ContactSensitivity d = s.ContactParameterDerivative(stick, p.contact, j, run_.end.z);
+    g_p = d.stick_force - sign * d.static_limit;
+  }
+  dpdp_ = col_ - f1_ * ((grad_.dot(col_) + g_p) / grad_.dot(f1_));
 }
 
 void Shooting::OntoSection(const PoincareSection& p, FlowPoint* z) const {

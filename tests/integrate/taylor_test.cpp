@@ -315,7 +315,8 @@ TEST(Taylor, ParameterColumnMatchesTheReferenceReturnMap) {
   }
 }
 
-TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
+// The column's values through switches: tests/flow/parameter_column_test.cpp.
+TEST(Taylor, ParameterColumnThroughSwitchesOnTaylorOnly) {
   const Model m{Params()};  // seed set: the stick-slip orbit switches twice
   BeltFlow flow(m, Taylor());
   flow.set_parameter_column(Parameter::kV);
@@ -326,7 +327,7 @@ TEST(Taylor, ParameterColumnOnlyOnSmoothRuns) {
   stop.t_max = 30;
   r = flow.Run(0.0, m.ExitPoint(), Mode::kSlipBelow, stop, true);
   EXPECT_GT(r.switches, 0);
-  EXPECT_FALSE(r.has_dzdp);
+  EXPECT_TRUE(r.has_dzdp);  // saltations carry it (System::ContactParameterDerivative)
   EXPECT_THROW(flow.set_parameter_column(ParameterAxis("not_a_parameter")), InvalidArgument);
   Params s;
   s.law = LawKind::kStribeck;

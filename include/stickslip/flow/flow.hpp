@@ -104,8 +104,9 @@ struct FlowRun {
   std::vector<ModeSet> modes;  ///< the mode sequence, start mode first
   /// d z(t) / d z(t0) on the tangent block, saltations included (variational).
   Eigen::MatrixXd jacobian;
-  /// d z(t) / dp at fixed t and start (parameter_column): only on a run
-  /// without switches (the saltation of a parameter is not modelled).
+  /// d z(t) / dp at fixed t and start on the tangent block
+  /// (parameter_column), saltations included: each switch moves it as the
+  /// parameter were a state of rate 0 (System::ContactParameterDerivative).
   Eigen::VectorXd dzdp;
   bool has_dzdp = false;
   long steps = 0;
@@ -150,6 +151,7 @@ class Flow {
   /// InvalidArgument for one the system has no column for.
   void set_parameter_column(int j);
   void clear_parameter_column() { parameter_.reset(); }
+  std::optional<int> parameter() const { return parameter_; }
   bool has_parameter_column() const {
     return parameter_.has_value() && options_.integrator == Integrator::kTaylor;
   }

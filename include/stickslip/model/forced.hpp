@@ -56,6 +56,12 @@ class ForcedModel final : public System {
   void Field(const ModeSet& m, ConstState z, StateOut f) const override;
   void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const override;
   std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest& request) const override;
+  /// The belt's columns (ParameterColumnSupported), force and omega.
+  bool SupportsParameterColumn(int j) const override;
+  /// The belt's, and d lambda / dA = -cos(theta).
+  ContactSensitivity ContactParameterDerivative(const ModeSet& m, int i, int j,
+                                                ConstState z) const override;
+  double ClockRateDerivative(int, int j) const override { return j == kOmegaIndex ? 1 : 0; }
   /// Steady sliding only without forcing (A = 0).
   bool Rest(const ModeSet& m, StateOut z, bool* stable) const override;
   int parameters() const override;

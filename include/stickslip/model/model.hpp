@@ -18,6 +18,9 @@ namespace stickslip {
 /// this parameter under this law: beta, v, and every law parameter mu(s)
 /// depends on affinely (all but v_m, v_s and delta of their own laws).
 bool ParameterColumnSupported(LawKind law, const ParameterAxis& axis);
+/// The belt's contact events in parameter j (Parameter's order): the speed
+/// v, the stick force x + 2 beta v and the static limit mu_s.
+ContactSensitivity BeltContactDerivative(const Params& p, int j);
 
 /// The belt model for one parameter set: fields, Jacobians, switching rules.
 /// Its parameters (System's lenses) are the Parameter enum's, in its order.
@@ -46,6 +49,10 @@ class Model final : public FrictionSystem {
   /// beta, v, and every law parameter mu(s) depends on affinely.
   bool SupportsParameterColumn(const ParameterAxis& parameter) const;
   bool SupportsParameterColumn(int j) const override;
+  ContactSensitivity ContactParameterDerivative(const ModeSet&, int, int j,
+                                                ConstState) const override {
+    return BeltContactDerivative(p_, j);
+  }
   /// dF/dx' on the mode's branch.
   double SlipForceSlope(Mode m, double xdot) const {
     return m == Mode::kSlipBelow ? -friction_.DMu(p_.v - xdot) : -friction_.DMu(xdot - p_.v);

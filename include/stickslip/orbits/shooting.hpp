@@ -123,6 +123,18 @@ class Shooting {
   bool Map(const FlowPoint& z, const PoincareSection& section, bool jacobian,
            Eigen::VectorXd* residual, PeriodicOrbit* orbit);
 
+  /// The parameter column: a Map with its Jacobian then also gives dP/dp
+  /// for parameter j (parameter_derivative), by the flow's column with its
+  /// saltations and the section's own motion (a clock's time 2 pi m / omega,
+  /// an exit's limit). Taylor only; throws InvalidArgument where the system
+  /// has no column for j.
+  void set_parameter_column(int j) { flow_.set_parameter_column(j); }
+  void clear_parameter_column() { flow_.clear_parameter_column(); }
+  bool has_parameter_column() const { return flow_.has_parameter_column(); }
+  /// d(P(z) - z)/dp on the unknowns, of the last Map with its Jacobian while
+  /// a column was set.
+  const Eigen::VectorXd& parameter_derivative() const { return dpdp_; }
+
   Flow& flow() { return flow_; }
 
  private:
@@ -131,6 +143,7 @@ class Shooting {
   bool Evaluate(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o);
   void Residual(const FlowPoint& z, const PoincareSection& s);
   void MapJacobian(const FlowPoint& z, const PoincareSection& s);
+  void MapParameterDerivative(const FlowPoint& z, const PoincareSection& s);
   void EventGradient(const PoincareSection& s);
   void OntoSection(const PoincareSection& s, FlowPoint* z) const;
   void Describe(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o) const;
@@ -139,8 +152,9 @@ class Shooting {
   Flow flow_;
   FlowRequest request_;
   FlowRun run_;
-  Eigen::MatrixXd dp_, full_;  // DP; Phi with the clock's column
-  Eigen::VectorXd r_;          // P(z) - z on the unknowns
+  Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column
+  Eigen::VectorXd r_;           // P(z) - z on the unknowns
+  Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry
   Eigen::VectorXd f0_, f1_, grad_, grad2_;
 };
 

@@ -45,6 +45,12 @@ struct ContactVelocity {
   }
 };
 
+/// A contact's event functions differentiated in one parameter
+/// (System::ContactParameterDerivative).
+struct ContactSensitivity {
+  double speed = 0, stick_force = 0, static_limit = 0;
+};
+
 /// What a Taylor field computes besides the state (taylor_field.hpp).
 struct TaylorRequest {
   bool variational = false;      ///< Phi' = J Phi on the tangent block
@@ -104,8 +110,21 @@ class System {
   virtual void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const = 0;
   /// The Taylor recurrences of the modes (taylor_field.hpp).
   virtual std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest& request) const = 0;
-  /// Whether MakeTaylorField takes a column for parameter j.
+  /// Whether MakeTaylorField takes a column for parameter j. A system that
+  /// says yes also gives the events' derivatives in j below (their defaults
+  /// say the events do not depend on it).
   virtual bool SupportsParameterColumn(int /*j*/) const { return false; }
+  /// d/dp_j of contact i's event functions at z (mode m has i sticking): the
+  /// velocity's speed (ContactVelocity::speed), the stick force lambda_i and
+  /// the static limit. The flow carries the column dz/dp across switches
+  /// with them (the saltation of a parameter, docs/theory.md).
+  virtual ContactSensitivity ContactParameterDerivative(const ModeSet& /*m*/, int /*i*/, int /*j*/,
+                                                        ConstState /*z*/) const {
+    return {};
+  }
+  /// d omega_c / dp_j of clock c's frequency (a clock's column is
+  /// d theta / dp = (t - t0) d omega / dp).
+  virtual double ClockRateDerivative(int /*c*/, int /*j*/) const { return 0; }
   /// An equilibrium of mode m's field, if it has one, and whether it is
   /// stable: near it the flow treats extrema as noise, and it ends a run
   /// that has settled on a stable one to within the integration noise.

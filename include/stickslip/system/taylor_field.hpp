@@ -2,7 +2,8 @@
 // step (Jorba & Zou 2005, Exp. Math. 14, section 2): from coefficient 0 of
 // each row, coefficients 1..order. The rows of a step (TaylorLayout): the
 // state, then Phi = dz/dz0 on the tangent block (column-major), then the
-// parameter column dz/dp, then the auxiliary rows the events need: for each
+// parameter column dz/dp (all n components: a clock's row is d theta / dp,
+// of rate d omega / dp), then the auxiliary rows the events need: for each
 // sticking contact in increasing order, lambda_i and StaticLimit_i
 // (system.hpp), then any rows of the field's own that bound the step (a
 // forcing's series).
@@ -22,11 +23,11 @@ struct TaylorLayout {
   int n = 0;                 ///< state rows [0, n)
   int tangent = 0;           ///< the tangent block's size (n minus the clocks)
   bool variational = false;  ///< Phi rows [n, n + tangent^2), column-major
-  bool column = false;       ///< dz/dp rows, tangent of them, after Phi
+  bool column = false;       ///< dz/dp rows, n of them, after Phi
   int aux = 0;               ///< auxiliary rows after those
   int phi() const { return n; }
   int param() const { return n + (variational ? tangent * tangent : 0); }
-  int aux_first() const { return param() + (column ? tangent : 0); }
+  int aux_first() const { return param() + (column ? n : 0); }
   int rows() const { return aux_first() + aux; }
 };
 
