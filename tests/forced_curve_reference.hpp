@@ -68,7 +68,15 @@ class CurveReference {
   explicit CurveReference(const ForcedParams& p)
       : law_(p.base), beta_(p.base.beta), v_(p.base.v), a_(p.force) {}
 
+  // The difference step of Near's Newton is 1e-8; where the row lies within
+  // that of an edge of its family (a sliding point: the map jumps there),
+  // 1e-11 too (long double leaves 1e-8 of the Jacobian's digits).
   CurvePoint Near(const OrbitRow& r) const {
+    const CurvePoint c = Near(r, 1e-8L);
+    return c.ok ? c : Near(r, 1e-11L);
+  }
+
+  CurvePoint Near(const OrbitRow& r, Real step) const {
     CurvePoint out;
     const Real w = r.p;
     const Real ths = SlipMiddle(w, r.start.z[0], r.start.z[1]);
@@ -79,7 +87,7 @@ class CurveReference {
     V2 g = G(u, ths);
     for (int c = 0; c < 3; ++c) {
       V3 e = u;
-      const Real h = 1e-8L * std::max(Real(1), std::abs(u[c]));
+      const Real h = step * std::max(Real(1), std::abs(u[c]));
       e[c] += h;
       j.col(c) = (G(e, ths) - g) / h;
     }

@@ -59,6 +59,7 @@ class Monitor {
 
  private:
   bool Special(const TracePoint& a, const TracePoint& b);
+  bool Repeats(const OrbitRow& sp);
   bool Ends(const OrbitRow& row);
 
   Palc& palc_;
@@ -69,7 +70,7 @@ class Monitor {
   int k_;  // p's component of u
   const OrbitBranchOptions& o_;
   OrbitBranch& out_;
-  bool have_prev_ = false, stopped_ = false, turned_ = false;
+  bool have_prev_ = false, stopped_ = false, turned_ = false, closed_ = false;
   TracePoint prev_;
   VectorXd turned_at_;
 };
@@ -86,8 +87,28 @@ bool Monitor::Special(const TracePoint& a, const TracePoint& b) {
   std::sort(found.begin(), found.end(), [&](const OrbitRow& x, const OrbitRow& y) {
     return std::abs(x.p - a.row.p) < std::abs(y.p - a.row.p);
   });
-  for (const OrbitRow& sp : found) out_.special.push_back(sp), out_.rows.push_back(sp);
+  for (const OrbitRow& sp : found) {
+    if (Repeats(sp)) return jumped;
+    out_.special.push_back(sp), out_.rows.push_back(sp);
+  }
   return jumped;
+}
+
+// A special point located before: the branch came around a closed curve whose
+// start Palc's chord test does not see (a doubled branch's start off its loop).
+bool Monitor::Repeats(const OrbitRow& sp) {
+  const double tol = Tolerances::kBranchSamePoint;
+  for (const OrbitRow& s : out_.special) {
+    if (s.label != sp.label || std::abs(s.p - sp.p) > tol * (1 + std::abs(sp.p))) continue;
+    const double dz = (s.start.z - sp.start.z).lpNorm<Eigen::Infinity>();
+    if (dz > tol * (1 + sp.start.z.lpNorm<Eigen::Infinity>())) continue;
+    closed_ = true;
+    out_.status = BranchStatus::kClosed;
+    out_.message = std::string("came back to its ") + Name(sp.label) + " at " +
+                   system_.ParameterName(j_) + " = " + Num(sp.p, 12);
+    return true;
+  }
+  return false;
 }
 
 // The branch's ends at a row: unbounded (a displacement beyond
@@ -145,7 +166,7 @@ bool Monitor::operator()(const std::vector<PalcPoint>& curve) {
   prev_ = point;
   have_prev_ = true;
   out_.rows.push_back(point.row);
-  stopped_ = Ends(point.row) || end;
+  stopped_ = closed_ || Ends(point.row) || end;
   // Across a jump Palc orients the far family's tangent by the near one's,
   // which can point back: the sweep goes on toward `to`.
   if (!stopped_ && jumped && curve.back().tangent[k_] * dir_ < 0) turned_ = true, turned_at_ = here;

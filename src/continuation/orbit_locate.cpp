@@ -45,9 +45,16 @@ const char* const kWhat[3] = {"fold: a multiplier at +1", "period doubling: a mu
 bool Locate(Palc& palc, OrbitProblem& problem, const VectorXd& a, const VectorXd& b,
             const std::function<double()>& test, double tol, Bracket* out, bool fail_is_hi) {
   const VectorXd t = ChordTangent(palc, a, b);
+  const VectorXd& scale = palc.options().scale;
+  const VectorXd w = scale.size() ? VectorXd(t.cwiseQuotient(scale)) : t;
+  // Each point polished as a row is (OrbitProblem::Polish), also where its
+  // switching counts change: the corrector's last point lies up to its last
+  // update (1e-11) off the branch, and the test's sign on the branch decides
+  // the bisection (near a sliding point, the side).
   auto at = [&](double s, double* g) {
-    const PalcCorrection c = palc.Correct(a + s * (b - a), t);
+    PalcCorrection c = palc.Correct(a + s * (b - a), t);
     if (!c.ok) return false;
+    problem.Polish(&w, &c.u, false);
     *g = test();
     return true;
   };

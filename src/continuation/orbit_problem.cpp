@@ -21,7 +21,10 @@ OrbitProblem::OrbitProblem(const System& system, int parameter, const FlowPoint&
       section_(section),
       o_(o),
       shooting_(system, o.shooting),
-      last_u_(VectorXd::Zero(nu_ + 1)) {}
+      last_u_(VectorXd::Zero(nu_ + 1)) {
+  // dF/dp by the flow's parameter column where the system has one (Taylor).
+  if (system.SupportsParameterColumn(parameter)) shooting_.set_parameter_column(parameter);
+}
 
 FlowPoint OrbitProblem::PointAt(const VectorXd& u) const {
   FlowPoint z = start_;
@@ -158,13 +161,15 @@ bool OrbitProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::
   *f = r_;
   jac->resize(nu_, nu_ + 1);
   jac->leftCols(nu_) = last_.monodromy - MatrixXd::Identity(nu_, nu_);
-  const bool ok = Difference(p, z, jac, why);
+  const bool column = shooting_.has_parameter_column();
+  if (column) jac->col(nu_) = shooting_.parameter_derivative();
+  const bool ok = column || Difference(p, z, jac, why);
   system_->SetParameterValue(j_, p);
   jac_ = ok ? *jac : MatrixXd();
   return ok;
 }
 
-bool OrbitProblem::Polish(const VectorXd* w, VectorXd* u) {
+bool OrbitProblem::Polish(const VectorXd* w, VectorXd* u, bool same_counts) {
   if (jac_.rows() != nu_ || last_u_ != *u) return false;
   VectorXd du = VectorXd::Zero(nu_ + 1);
   if (w) {
@@ -186,7 +191,7 @@ bool OrbitProblem::Polish(const VectorXd* w, VectorXd* u) {
   ++polishes_;
   const bool ok = MapAt(v[nu_], PointAt(v), true, &r, &o, &why) &&
                   r.lpNorm<Eigen::Infinity>() <= r_.lpNorm<Eigen::Infinity>() &&
-                  o.sticks == last_.sticks && o.crossings == last_.crossings;
+                  (!same_counts || (o.sticks == last_.sticks && o.crossings == last_.crossings));
   system_->SetParameterValue(j_, ok ? v[nu_] : last_u_[nu_]);  // the row's p
   opened_ = opened;
   if (!ok) return false;

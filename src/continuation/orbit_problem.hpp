@@ -26,9 +26,9 @@ class OrbitProblem final : public PalcProblem {
   /// iterate, whose update fell below its tol but was not evaluated): the
   /// bordered step with constraint row w . du = 0 (null: p held), and the map
   /// with its Jacobian there, so that Row() is the orbit at *u. Kept only
-  /// where the residual does not grow and the switching counts stay; else
-  /// false, with Row() and *u unchanged.
-  bool Polish(const Eigen::VectorXd* w, Eigen::VectorXd* u);
+  /// where the residual does not grow and (same_counts) the switching
+  /// counts stay; else false, with Row() and *u unchanged.
+  bool Polish(const Eigen::VectorXd* w, Eigen::VectorXd* u, bool same_counts = true);
   /// Runs of the map with its Jacobian that Polish made (PALC counts its own).
   int polishes() const { return polishes_; }
   /// The orbit at parameter p by the shooting's damped Newton from z (p

@@ -113,6 +113,11 @@ struct FixedTolerances {
   // Orbit branches: in an edge's bisection, an orbit whose period differs by
   // more than this share from the last one's is another orbit, not the edge's.
   static constexpr double kBranchEdgePeriod = 0.2;
+  // Orbit branches: a special point of one label located again within this
+  // times (1 + |p|) in p and (1 + |z|) in the state (max norm) is the same
+  // point: the branch came around a closed curve (special points lie within
+  // locate_tol of theirs; a doubled branch's two phase copies differ in z).
+  static constexpr double kBranchSamePoint = 1e-8;
   // Steady sliding (steady_branch.cpp): an eigenvalue with |Im| below this
   // times (1 + |lambda|) is real, so its crossing of 0 is LP, not HB.
   static constexpr double kSteadyRealPair = 1e-9;

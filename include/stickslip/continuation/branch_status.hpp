@@ -12,7 +12,7 @@ enum class BranchStatus {
   kStepTooSmall,  ///< the corrector failed below ds_min (message says why and where)
   kStartFailed,   ///< no orbit at p = from near the guess
   kMaxPoints,
-  kClosed,     ///< the branch came back to its start
+  kClosed,     ///< the branch came back to its start, or to a special point it had located
   kCancelled,  ///< palc.cancelled() returned true (a signal, a time limit)
   kLeftRange,  ///< the branch turned back and passed p = from
   /// A contact's normal force reached 0 (labelled CL): beyond, the contact
