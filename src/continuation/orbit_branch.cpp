@@ -59,7 +59,7 @@ class Monitor {
 
  private:
   bool Special(const TracePoint& a, const TracePoint& b);
-  bool Repeats(const OrbitRow& sp);
+  bool Repeats(const OrbitRow& sp, std::size_t earlier);
   bool Ends(const OrbitRow& row);
 
   Palc& palc_;
@@ -87,23 +87,23 @@ bool Monitor::Special(const TracePoint& a, const TracePoint& b) {
   std::sort(found.begin(), found.end(), [&](const OrbitRow& x, const OrbitRow& y) {
     return std::abs(x.p - a.row.p) < std::abs(y.p - a.row.p);
   });
+  const std::size_t earlier = out_.special.size();
   for (const OrbitRow& sp : found) {
-    if (Repeats(sp)) return jumped;
+    if (Repeats(sp, earlier)) return jumped;
     out_.special.push_back(sp), out_.rows.push_back(sp);
   }
   return jumped;
 }
 
-// A special point located before: the branch came around a closed curve whose
-// start Palc's chord test does not see (a doubled branch's start off its loop).
-bool Monitor::Repeats(const OrbitRow& sp) {
+// A special point found before: the branch came around a closed curve.
+bool Monitor::Repeats(const OrbitRow& sp, std::size_t earlier) {
   const double tol = Tolerances::kBranchSamePoint;
-  for (const OrbitRow& s : out_.special) {
+  for (std::size_t i = 0; i < earlier; ++i) {  // not this step's: two edges may coincide
+    const OrbitRow& s = out_.special[i];
     if (s.label != sp.label || std::abs(s.p - sp.p) > tol * (1 + std::abs(sp.p))) continue;
     const double dz = (s.start.z - sp.start.z).lpNorm<Eigen::Infinity>();
     if (dz > tol * (1 + sp.start.z.lpNorm<Eigen::Infinity>())) continue;
-    closed_ = true;
-    out_.status = BranchStatus::kClosed;
+    closed_ = true, out_.status = BranchStatus::kClosed;
     out_.message = std::string("came back to its ") + Name(sp.label) + " at " +
                    system_.ParameterName(j_) + " = " + Num(sp.p, 12);
     return true;

@@ -161,7 +161,7 @@ bool OrbitProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, std::
   *f = r_;
   jac->resize(nu_, nu_ + 1);
   jac->leftCols(nu_) = last_.monodromy - MatrixXd::Identity(nu_, nu_);
-  const bool column = shooting_.has_parameter_column();
+  const bool column = shooting_.has_parameter_derivative();
   if (column) jac->col(nu_) = shooting_.parameter_derivative();
   const bool ok = column || Difference(p, z, jac, why);
   system_->SetParameterValue(j_, p);

@@ -89,15 +89,11 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   r.t_stick = 0;
   r.switches = r.sticks = r.exits = r.crossings = r.touches = 0;
   const int ne = static_cast<int>(rq.extrema.size());
-  r.lo.resize(ne);
-  r.hi.resize(ne);
+  r.lo.resize(ne), r.hi.resize(ne);
   for (int p = 0; p < ne; ++p) r.lo[p] = r.hi[p] = start.z[rq.extrema[p]];
-  r.dzdp.setZero(nt_);
-  r.has_dzdp = false;
-  C_.setZero(nt_);
-  t_start_ = start.t;
-  r.steps = 0;
-  r.orders = TaylorOrders();
+  C_.setZero(nt_);  // r.dzdp and has_dzdp are set by Done
+  t_start_ = start.t, column_lost_ = false;
+  r.steps = 0, r.orders = TaylorOrders();
   t_ = start.t;
   z_ = start.z;
   mode_ = ReleasedAtEdge(*s_, start.mode, start.z);  // an exit at t = 0 is taken now
@@ -125,7 +121,10 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
     Eigen::VectorXd g = Eigen::VectorXd::Zero(nt_);
     for (int t = 0; t < c.size; ++t)
       if (c.terms[t].index < nt_) g[c.terms[t].index] += c.terms[t].weight;
-    if (g.squaredNorm() > 0) M_ -= g * (g.transpose() * M_) / g.squaredNorm();
+    if (!(g.squaredNorm() > 0)) continue;
+    M_ -= g * (g.transpose() * M_) / g.squaredNorm();
+    // And the start moved onto the surface as the parameter moves it (h = g z - s(p)).
+    if (column_) C_ -= g * (ArrivalDp(i) / g.squaredNorm());
   }
 }
 
@@ -255,6 +254,7 @@ bool Engine::Segment() {
           next_output_ += out.dt;
         }
         t_ = t_rest;
+        column_lost_ = column_;  // the segment's column is not the rest's
         return Done(FlowStatus::kTimeLimit);
       }
       return Fail(FlowStatus::kIntegratorFailed, Where(cv.CurrentTime(), y, cv.last_error()));
@@ -309,7 +309,7 @@ bool Engine::Done(FlowStatus s) {
   r.end.z = z_;
   r.end.mode = mode_;
   r.jacobian = M_;
-  r.has_dzdp = column_;
+  r.has_dzdp = column_ && !column_lost_;
   r.dzdp = column_ ? C_ : Eigen::VectorXd::Zero(nt_);
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.

@@ -96,6 +96,7 @@ class Engine {
   Eigen::MatrixXd M_;                              // d z / d z0 on the tangent block
   Eigen::VectorXd C_, ctmp_;                       // d z / dp on the tangent block (column_)
   double t_start_ = 0;                             // the run's start (a clock's column)
+  bool column_lost_ = false;                       // settled at rest: no column reported
   std::vector<double> clock_drate_;                // d omega / dp of each clock (column_)
   Eigen::VectorXd rest_;                           // the mode's rest point, if any
   std::vector<double> clock_rate_, clock_offset_;  // clocks = rate t + offset

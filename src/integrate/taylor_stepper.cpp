@@ -42,6 +42,8 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   const int n = layout_.n;
   clock_first_ = layout_.tangent;
   clock_last_ = n;
+  col_clock_first_ = layout_.column ? layout_.param() + layout_.tangent : m_;
+  col_clock_last_ = layout_.column ? layout_.param() + n : m_;
   center_.resize(n);
   for (int i = 0; i < n; ++i) center_[i] = field_->ScaleCenter(i);
   yend_.assign(y0, y0 + m_);
@@ -83,7 +85,8 @@ double TaylorStepper::StateScale(const double* y) const {
   double z0 = 0;
   for (int i = 0; i < clock_first_; ++i)
     z0 = std::max(z0, std::min(std::abs(y[i]), std::abs(y[i] - center_[i])));
-  for (int i = clock_last_; i < m_; ++i) z0 = std::max(z0, std::abs(y[i]));
+  for (int i = clock_last_; i < col_clock_first_; ++i) z0 = std::max(z0, std::abs(y[i]));
+  for (int i = col_clock_last_; i < m_; ++i) z0 = std::max(z0, std::abs(y[i]));
   return z0;
 }
 
@@ -92,19 +95,21 @@ double TaylorStepper::StateScale(const double* y) const {
 // takes the state by StateScale. At an order q above JZ's p (jz_order),
 // rho from z_{q-1}, z_q and the step that keeps their error per step,
 // (h / rho)^(q+1) = (e^-2 exp(-0.7 / (p - 1)))^(p+1). Every row counts but
-// the clocks' (their series is exact).
+// the clocks' and the column's clock rows (their series are exact).
 double TaylorStepper::StepSize(int order, int jz_order) const {
   const TaylorRow* r = c();
   auto norm = [&](int k) {
     double m = 0;
     for (int i = 0; i < clock_first_; ++i) m = std::max(m, std::abs(r[i][k]));
-    for (int i = clock_last_; i < rows_n_; ++i) m = std::max(m, std::abs(r[i][k]));
+    for (int i = clock_last_; i < col_clock_first_; ++i) m = std::max(m, std::abs(r[i][k]));
+    for (int i = col_clock_last_; i < rows_n_; ++i) m = std::max(m, std::abs(r[i][k]));
     return m;
   };
   double z0 = 0;
   for (int i = 0; i < clock_first_; ++i)
     z0 = std::max(z0, std::min(std::abs(r[i][0]), std::abs(r[i][0] - center_[i])));
-  for (int i = clock_last_; i < rows_n_; ++i) z0 = std::max(z0, std::abs(r[i][0]));
+  for (int i = clock_last_; i < col_clock_first_; ++i) z0 = std::max(z0, std::abs(r[i][0]));
+  for (int i = col_clock_last_; i < rows_n_; ++i) z0 = std::max(z0, std::abs(r[i][0]));
   const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
   const double r1 = (log_scale - std::log(norm(order - 1))) / (order - 1);

@@ -125,6 +125,8 @@ class TaylorStepper final : public Stepper {
   int m_ = 0;                             // the integrated rows (state, Phi, column)
   int rows_n_ = 0;                        // with the auxiliary rows
   int clock_first_ = 0, clock_last_ = 0;  // clock rows [first, last): out of the step size
+  int col_clock_first_ = 0,
+      col_clock_last_ = 0;  // the column's clock rows (t - t0 exactly): out too
   // This step's Taylor coefficients, kPad finite entries past the order;
   // the recurrences that fill them (the system's, per mode).
   std::vector<double> rows_;

@@ -69,6 +69,7 @@ void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variat
 }
 
 bool Shooting::Evaluate(const FlowPoint& z, const PoincareSection& p, PeriodicOrbit* o) {
+  has_dpdp_ = false;
   flow_.Run(z, request_, &run_);
   const FlowStatus want = p.kind == SectionKind::kTime        ? FlowStatus::kTimeLimit
                           : p.kind == SectionKind::kStickExit ? FlowStatus::kStickExit
@@ -181,7 +182,8 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
 // 2 pi m / omega); an event section projects as DP does, less f g_p / (g .
 // f) for the event's own motion g_p (the clock's column: T d omega / dp).
 void Shooting::MapParameterDerivative(const FlowPoint& z, const PoincareSection& p) {
-  if (!run_.has_dzdp) return;
+  has_dpdp_ = run_.has_dzdp;
+  if (!has_dpdp_) return;
   const System& s = system();
   const int n = s.dimension(), nt = s.tangent_dimension();
   const int j = *flow_.parameter();

@@ -42,20 +42,23 @@ void ExpectClose(const VectorXd& got, const VectorXd& ref, double tol, const std
       << what << ": column " << got.transpose() << ", differences " << ref.transpose();
 }
 
-// z(t_max) of a plain run of system s with parameter j at p.
+// z(t_max) of a plain run of system s with parameter j at p. A start in
+// stick moves with the contact's surface (x' = v), as the column assumes.
 VectorXd EndAt(System& s, int j, double p, const FlowPoint& start, double t_max, int* switches) {
   s.SetParameterValue(j, p);
   Flow flow(s, Tight());
   FlowRequest rq;
   rq.t_max = t_max;
-  const FlowRun r = flow.Run(start, rq);
+  FlowPoint from = start;
+  if (from.mode.sticks(0)) from.z[1] = s.Contact(0).speed;
+  const FlowRun r = flow.Run(from, rq);
   EXPECT_EQ(r.status, FlowStatus::kTimeLimit);
   if (switches) *switches = r.switches;
   return r.end.z.head(s.tangent_dimension());
 }
 
 void CheckColumn(const System& system, const FlowPoint& start, double t_max,
-                 const std::vector<std::string>& names) {
+                 const std::vector<std::string>& names, int min_exits = 2) {
   for (const std::string& name : names) {
     const int j = system.ParameterIndex(name);
     ASSERT_GE(j, 0) << name;
@@ -68,7 +71,7 @@ void CheckColumn(const System& system, const FlowPoint& start, double t_max,
     const FlowRun r = flow.Run(start, rq);
     ASSERT_EQ(r.status, FlowStatus::kTimeLimit) << name;
     ASSERT_TRUE(r.has_dzdp) << name;
-    EXPECT_GE(r.exits, 2) << name;  // stick phases entered and left
+    EXPECT_GE(r.exits, min_exits) << name;  // stick phases entered and left
     const std::unique_ptr<System> s = system.Clone();
     const double p0 = system.ParameterValue(j);
     const double h = 1e-4 * std::max(1.0, std::abs(p0));
@@ -95,6 +98,18 @@ TEST(ParameterColumn, BeltThroughStickPhases) {
   p.law = LawKind::kStribeck;
   p.mu_k = 0.25;
   CheckColumn(Model(p), start, 30, {"beta", "v", "mu_s", "mu_k"});
+}
+
+TEST(ParameterColumn, FromAStickStart) {
+  Params p;
+  FlowPoint start;
+  start.z = Eigen::Vector2d(0.1, p.v);
+  start.mode = ModeSet(Mode::kStick);
+  CheckColumn(Model(p), start, 30, {"beta", "v", "mu_s", "mu_m"}, 1);
+  ForcedParams f;
+  f.force = 0.5, f.omega = 1.1;
+  start.z = Eigen::Vector3d(0.1, f.base.v, 0.3);
+  CheckColumn(ForcedModel(f), start, 30, {"beta", "v", "mu_s", "force", "omega"}, 1);
 }
 
 TEST(ParameterColumn, ForcedThroughStickPhasesAndTheClock) {

@@ -132,8 +132,10 @@ class Shooting {
   void clear_parameter_column() { flow_.clear_parameter_column(); }
   bool has_parameter_column() const { return flow_.has_parameter_column(); }
   /// d(P(z) - z)/dp on the unknowns, of the last Map with its Jacobian while
-  /// a column was set.
+  /// a column was set, where has_parameter_derivative() (not where the run
+  /// settled on a rest point: FlowRun::has_dzdp).
   const Eigen::VectorXd& parameter_derivative() const { return dpdp_; }
+  bool has_parameter_derivative() const { return has_dpdp_; }
 
   Flow& flow() { return flow_; }
 
@@ -155,6 +157,7 @@ class Shooting {
   Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column
   Eigen::VectorXd r_;           // P(z) - z on the unknowns
   Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry
+  bool has_dpdp_ = false;
   Eigen::VectorXd f0_, f1_, grad_, grad2_;
 };
 
