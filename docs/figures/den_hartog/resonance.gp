@@ -37,8 +37,8 @@ owner(i) = P[i + 1] && !P[i] ? i : i + 1
 seg(i, k, s) = i >= 1 && i < N && B[i] == B[i + 1] ? (K[owner(i)] == k && S[owner(i)] == s) : 0
 row(j) = int((j + 1) / 2)
 sel(j, k, s) = int(j) % 2 ? (seg(row(j) - 1, k, s) || seg(row(j), k, s) ? Y[row(j)] : NaN) : (seg(row(j), k, s) ? Y[row(j)] : NaN)
-set object 1 rect from 0.9766122338634438, graph 0 to 1.0227630451873284, graph 1 fc rgb '#e8e8e8' fs solid noborder behind
-set label 1 'not traced: |x| unbounded' at 1.0227630451873284, graph 0.93 offset 1, 0 tc rgb '#555555'
+set object 1 rect from 0.9766122338634431, graph 0 to 1.022763045187328, graph 1 fc rgb '#e8e8e8' fs solid noborder behind
+set label 1 'not traced: |x| unbounded' at 1.022763045187328, graph 0.93 offset 1, 0 tc rgb '#555555'
 set bmargin 8.5
 mu = 0.3; A = 1
 V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))

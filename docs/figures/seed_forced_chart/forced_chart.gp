@@ -20,7 +20,7 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
-set label "GG" at 0.45772779285036447,0.49351788450071798 center front font ',12' noenhanced
+set label "GG" at 0.45772780095617471,0.49351791930843825 center front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.011362499999999999):(0.0069437499999999994):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
@@ -38,23 +38,23 @@ plot 'response.tsv' using 1:2:(0.011362499999999999):(0.0069437499999999994):(C[
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
-     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 18 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
-     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 16 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
-     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
-     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
-     'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
-     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'curves.tsv' using 1:($4 == 17 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 17 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
+     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 16 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 18 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding', \
      'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title 'codimension 2'
 unset output
