@@ -23,6 +23,12 @@ ModeSet ModeAfterArrival(const System& s, const ModeSet& before, int c, ConstSta
   return after;
 }
 
+double ExitParameterDerivative(const System& s, const ModeSet& stick, int c, int sign, int j,
+                               ConstState z) {
+  const ContactSensitivity d = s.ContactParameterDerivative(stick, c, j, z);
+  return d.stick_force - sign * d.static_limit;
+}
+
 void ContactGradient(const System& s, int c, StateOut grad) {
   const ContactVelocity v = s.Contact(c);
   grad.setZero();
@@ -217,8 +223,8 @@ void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen:
   M_.noalias() += ((f_after_ - f_before_).head(nt_) / den) * tmp_;
   if (!column_) return;
   // The parameter as a state of rate 0: the event time moves by -(grad .
-  // dz/dp + g_p) / den, the column jumps by (f+ - f-) times that's negative
-  // (the clocks' column is (t - t0) d omega / dp).
+  // dz/dp + g_p) / den, and the column by (f+ - f-) times minus that (the
+  // clocks' column is (t - t0) d omega / dp).
   double q = grad.head(nt_).dot(C_) + g_p;
   for (int j = 0; j < n_ - nt_; ++j) q += grad[nt_ + j] * (t_ - t_start_) * clock_drate_[j];
   C_ += ((f_after_ - f_before_).head(nt_) / den) * q;
@@ -230,9 +236,7 @@ double Engine::ArrivalDp(int c) const {
 }
 
 double Engine::ExitDp(const ModeSet& stick, int c, int sign) const {
-  if (!column_) return 0;
-  const ContactSensitivity d = s_->ContactParameterDerivative(stick, c, *flow_.parameter_, z_);
-  return d.stick_force - sign * d.static_limit;
+  return column_ ? ExitParameterDerivative(*s_, stick, c, sign, *flow_.parameter_, z_) : 0.0;
 }
 
 void Engine::Record(SwitchKind kind, int c, const ModeSet& before, const ModeSet& after) {

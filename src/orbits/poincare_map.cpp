@@ -6,6 +6,7 @@
 
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {
@@ -52,12 +53,13 @@ std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& M) {
 }
 }  // namespace
 
-void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variational) {
+void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variational,
+                       bool column) {
   const System& s = system();
   FlowRequest& rq = request_;
   rq.t_max = z.t + (p.kind == SectionKind::kTime ? p.time : options_.max_return_time);
   rq.variational = variational;
-  rq.parameter_column = variational && flow_.has_parameter_column();
+  rq.parameter_column = column && variational && flow_.has_parameter_column();
   rq.stop_at_exit = p.kind == SectionKind::kStickExit ? p.returns : 0;
   rq.sections.clear();
   if (p.kind == SectionKind::kSurface) rq.sections.push_back(p.surface);
@@ -118,7 +120,7 @@ bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jaco
                           " components, the system " + std::to_string(s.dimension()));
   FlowPoint at = z;
   if (section.kind == SectionKind::kTime) at.mode = ModeOf(s, at.z);
-  Prepare(at, section, jacobian);
+  Prepare(at, section, jacobian, true);
   if (!Evaluate(at, section, orbit)) return false;
   if (jacobian) {
     Describe(at, section, orbit);
@@ -189,13 +191,15 @@ void Shooting::MapParameterDerivative(const FlowPoint& z, const PoincareSection&
   const int j = *flow_.parameter();
   const double T = run_.end.t - z.t;
   const double drate = n > nt ? s.ClockRateDerivative(0, j) : 0.0;
-  f1_.resize(n);
-  s.Field(run_.end.mode, run_.end.z, f1_);
   if (p.kind == SectionKind::kTime) {
     dpdp_ = run_.dzdp;
-    if (p.turns >= 1 && drate != 0) dpdp_ -= f1_.head(nt) * (T / f1_[nt] * drate);
+    if (p.turns < 1 || drate == 0) return;
+    f1_.resize(n);
+    s.Field(run_.end.mode, run_.end.z, f1_);
+    dpdp_ -= f1_.head(nt) * (T / f1_[nt] * drate);
     return;
   }
+  // An event section: f1_ and grad_ are MapJacobian's, at the arrival.
   col_.resize(n);
   col_.head(nt) = run_.dzdp;
   if (n > nt) col_[nt] = T * drate;
@@ -203,9 +207,8 @@ void Shooting::MapParameterDerivative(const FlowPoint& z, const PoincareSection&
   if (p.kind == SectionKind::kStickExit) {
     ModeSet stick = run_.end.mode;
     stick.set(p.contact, Mode::kStick);
-    const double sign = run_.end.mode[p.contact] == Mode::kSlipBelow ? 1 : -1;
-    const ContactSensitivity d = s.ContactParameterDerivative(stick, p.contact, j, run_.end.z);
-    g_p = d.stick_force - sign * d.static_limit;
+    const int sign = run_.end.mode[p.contact] == Mode::kSlipBelow ? 1 : -1;
+    g_p = ExitParameterDerivative(s, stick, p.contact, sign, j, run_.end.z);
   }
   dpdp_ = col_ - f1_ * ((grad_.dot(col_) + g_p) / grad_.dot(f1_));
 }

@@ -111,8 +111,7 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
   PeriodicOrbit o;
   FlowPoint z = guess;
   if (timed) z.mode = ModeOf(s, z.z);
-  Prepare(z, section);
-  request_.parameter_column = false;  // Newton in z only
+  Prepare(z, section);  // Newton in z only: no parameter column
   for (o.iterations = 1; o.iterations <= options_.max_newton; ++o.iterations) {
     if (!Evaluate(z, section, &o)) return o;
     if (!dp_.allFinite() || !r_.allFinite()) {  // g . f = 0: a tangential arrival

@@ -68,6 +68,11 @@ ModeSet ModeAfterArrival(const System& s, const ModeSet& before, int c, ConstSta
 /// grad h_c (n entries): the contact's relative velocity's gradient.
 void ContactGradient(const System& s, int c, StateOut grad);
 
+/// d g / dp_j of contact c's stick exit g = lambda_c - sign StaticLimit_c
+/// (mode `stick` has c sticking; sign +1 into slip below) at z.
+double ExitParameterDerivative(const System& s, const ModeSet& stick, int c, int sign, int j,
+                               ConstState z);
+
 /// The saltation matrix of an event g = 0 (gradient grad, n entries) where
 /// the field switches from mode `before` to `after` at z, on the tangent
 /// block: S = I + (f+ - f-) grad^T / (grad . f-). False (S = I) where the

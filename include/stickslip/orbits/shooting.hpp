@@ -141,7 +141,8 @@ class Shooting {
 
  private:
   void Check(const PoincareSection& s) const;
-  void Prepare(const FlowPoint& z, const PoincareSection& s, bool variational = true);
+  void Prepare(const FlowPoint& z, const PoincareSection& s, bool variational = true,
+               bool column = false);
   bool Evaluate(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o);
   void Residual(const FlowPoint& z, const PoincareSection& s);
   void MapJacobian(const FlowPoint& z, const PoincareSection& s);
