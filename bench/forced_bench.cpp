@@ -57,14 +57,15 @@ void StickSlipOrbit(double rtol) {
   ForcedOrbitOptions o;
   o.flow.rtol = o.flow.atol = rtol;
   const ForcedExitOrbit exact = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
-  ForcedRequest rq;
-  rq.t_end = exact.t_exit + 3 * m.period();
+  FlowRequest rq;
+  rq.t_max = exact.t_exit + 3 * m.period();
   rq.variational = true;
   rq.stop_at_exit = 1;
-  const ForcedFlow flow(m, o.flow);
-  const ForcedPoint start{exact.t_exit, exact.x_exit, p.base.v, Mode::kSlipBelow};
-  ForcedRun run;
-  const double t_return = MedianMicros([&] { run = flow.Run(start, rq); }, 2001);
+  rq.extrema = {0, 1};
+  Flow flow(m, o.flow);
+  const FlowPoint start = ToFlowPoint(m, {exact.t_exit, exact.x_exit, p.base.v, Mode::kSlipBelow});
+  FlowRun run;
+  const double t_return = MedianMicros([&] { flow.Run(start, rq, &run); }, 2001);
   const double t_solve =
       MedianMicros([&] { ExitPhaseOrbit(m, exact.t_exit + 1e-3, Mode::kSlipBelow, 1, 1, o); }, 501);
   // The closed form's return time from the same exit.
@@ -92,12 +93,14 @@ void NonStopOrbit(double rtol) {
   ForcedOrbitOptions o;
   o.flow.rtol = o.flow.atol = rtol;
   const ForcedOrbit exact = ShootStroboscopic(m, -1.4, 0.01, 1, o);
-  ForcedRequest rq;
-  rq.t_end = m.period();
+  FlowRequest rq;
+  rq.t_max = m.period();
   rq.variational = true;
-  const ForcedFlow flow(m, o.flow);
-  const double t_map =
-      MedianMicros([&] { flow.Run(ForcedStart(m, 0, exact.start.x, exact.start.xdot), rq); }, 2001);
+  rq.extrema = {0, 1};
+  Flow flow(m, o.flow);
+  FlowRun run;
+  const FlowPoint start = ToFlowPoint(m, ForcedStart(m, 0, exact.start.x, exact.start.xdot));
+  const double t_map = MedianMicros([&] { flow.Run(start, rq, &run); }, 2001);
   const double t_solve = MedianMicros(
       [&] { ShootStroboscopic(m, exact.start.x + 1e-3, exact.start.xdot, 1, o); }, 501);
   const double V = 1 / (1 - 1.69), U = std::sin(M_PI / 1.3) / (1.3 * (1 + std::cos(M_PI / 1.3)));

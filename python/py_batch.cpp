@@ -140,10 +140,7 @@ py::dict ForcedOrbits(const ForcedParams& base, const py::object& columns, int t
   for (const auto& item : columns.cast<py::dict>())
     cols.push_back(ForcedColumnOf(model, item.first, item.second));
   SystemBatchOptions o;
-  FlowOptions flow;  // the forced defaults (ForcedOptions): 1e-12, 1e5 switches
-  flow.rtol = flow.atol = 1e-12;
-  flow.max_switches = 100000;
-  o.shooting.flow = Solver(flow, rtol, atol, integrator, method);
+  o.shooting.flow = Solver(ForcedModel::FlowDefaults(), rtol, atol, integrator, method);
   o.start = Eigen::Vector3d(x0, xdot0, 0);
   o.transient = transient, o.max_m = max_m, o.recurrence = recurrence;
   o.threads = threads;

@@ -20,8 +20,8 @@
 
 namespace stickslip::python {
 
-ForcedOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
-  ForcedOptions o;  // the forced flow's own defaults, 1e-12
+FlowOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
+  FlowOptions o = ForcedModel::FlowDefaults();
   if (rtol) o.rtol = *rtol;
   if (atol) o.atol = *atol;
   const std::string e = o.ValidationError();

@@ -11,7 +11,7 @@ namespace stickslip::python {
 
 // The forced flow's options: its own defaults (1e-12), rtol/atol over them;
 // InvalidArgument naming the value if they are not valid.
-ForcedOptions FlowOf(std::optional<double> rtol, std::optional<double> atol);
+FlowOptions FlowOf(std::optional<double> rtol, std::optional<double> atol);
 
 void BindForcedBranch(py::module_& m);  // py_forced_branch.cpp
 void BindChaos(py::module_& m);         // py_chaos.cpp

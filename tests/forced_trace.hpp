@@ -2,6 +2,7 @@
 // axis at `from`, then ContinueForced from that state to `to` with options `o`.
 #pragma once
 
+#include "forced_run.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip::testing_util {
@@ -10,10 +11,8 @@ inline OrbitBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to
                          const ForcedBranchOptions& o) {
   SetAxis(p, axis, from);
   const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, p.base.v), rq);
-  return ContinueForced(p, axis, from, to, tr.end.x, tr.end.xdot, o);
+  const FlowRun tr = RunForced(m, ForcedStart(m, 0, 0, p.base.v), 200 * m.period());
+  return ContinueForced(p, axis, from, to, tr.end.z[0], tr.end.z[1], o);
 }
 
 inline OrbitBranch TraceOmega(const ForcedParams& p, double from, double to,

@@ -5,6 +5,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "flow/cached_flow.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 
@@ -80,12 +81,15 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
                                     const std::function<bool()>& cancelled, double max_amplitude) {
   const std::string e = options.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
-  const ForcedFlow flow(model, options.flow);
+  Flow& flow = CachedFlow(model, options.flow);
   const double T = model.period(), w = model.omega();
   StroboscopicRun run;
   run.points.reserve(options.keep);
   TangentProduct tangent(options.keep, options.batches);
-  std::vector<ForcedEvent> events;
+  std::vector<FlowSwitch> switches;
+  FlowRequest rq;
+  rq.max_steps = options.flow.max_steps;
+  FlowRun r;
   ForcedPoint z = start;
   z.t = 0;
   const int total = options.transient + options.keep;
@@ -96,33 +100,31 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
       break;
     }
     const bool kept = k >= options.transient;
-    ForcedRequest rq;
-    rq.t_end = T;
-    rq.extremes = false;
+    rq.t_max = T;
     rq.variational = options.exponent && k >= options.transient - options.align;
-    events.clear();
-    if (kept) rq.events = &events;
-    const ForcedRun r = flow.Run(z, rq);
+    switches.clear();
+    rq.switches = kept ? &switches : nullptr;
+    flow.Run(ToFlowPoint(model, z), rq, &r);
     run.steps += r.steps;
-    if (r.status != ForcedStatus::kReached) {
+    if (!Reached(r)) {
       run.status = LyapunovStatus::kFlowFailed;
       run.message = r.message + " (period " + std::to_string(k) + ")";
       break;
     }
-    if (!(std::abs(r.end.x) <= max_amplitude && std::abs(r.end.xdot) <= max_amplitude)) {
+    z = ToForcedPoint(r.end);
+    if (!(std::abs(z.x) <= max_amplitude && std::abs(z.xdot) <= max_amplitude)) {
       run.status = LyapunovStatus::kDiverged;
       run.message = "|x| or |x'| passed " + Num(max_amplitude) + " in period " + std::to_string(k);
       break;
     }
-    z = r.end;
     z.t = 0;  // the field is T-periodic: each period starts again at phase 0
     if (rq.variational) tangent.Apply(r.jacobian, kept);
     if (!kept) continue;
     SectionPoint p;
     p.x = z.x, p.xdot = z.xdot, p.mode = z.mode;
     p.sticks = r.sticks, p.exits = r.exits;
-    for (const ForcedEvent& ev : events)
-      if (ev.kind == ForcedEventKind::kStickOut) {
+    for (const FlowSwitch& ev : switches)
+      if (ev.kind == SwitchKind::kStickOut) {
         p.first_exit_phase = static_cast<float>(std::fmod(w * ev.t, 2 * M_PI));
         break;
       }

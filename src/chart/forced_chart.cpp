@@ -70,9 +70,9 @@ std::vector<ForcedCurvePoint> Points(ForcedCurveProblem& problem, const std::vec
       if (!problem.Sample(u, &smp, &why)) continue;
       ForcedCurvePoint p;
       p.p1 = u[2], p.p2 = u[3], p.x0 = u[0], p.xdot0 = u[1], p.phase = st.phase;
-      p.sticks = smp.run.sticks, p.crossings = smp.run.crossings;
-      p.extrema = smp.run.extrema;
-      Multipliers(smp.run.jacobian, p.multipliers);
+      p.sticks = smp.sticks, p.crossings = smp.crossings;
+      p.extrema = smp.extrema;
+      Multipliers(smp.jacobian, p.multipliers);
       p.flag = kind == CurveKind::kTorus ? p.multipliers[0].imag() == 0 : smp.crossing;
       points.push_back(p);
     }
@@ -102,8 +102,8 @@ std::function<bool(const VectorXd&)> StopTest(ForcedCurveProblem& problem, doubl
     ForcedCurveSample smp;
     std::string w;
     if (!problem.Sample(u, &smp, &w)) return !(*bad = w).empty();
-    const double res = std::max({std::abs(smp.run.end.x - u[0]), std::abs(smp.run.end.xdot - u[1]),
-                                 std::abs(problem.TestOf(smp))});
+    const double res = std::max(
+        {std::abs(smp.end.x - u[0]), std::abs(smp.end.xdot - u[1]), std::abs(problem.TestOf(smp))});
     if (!(res <= max_residual))
       return !(*bad = "residual " + Num(res, 3) +
                       " at an accepted point (the map is not smooth there)")

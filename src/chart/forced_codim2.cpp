@@ -79,11 +79,11 @@ bool Refine(ForcedCurveProblem& pr, const ForcedCurvePoint& a, const ForcedCurve
     ForcedCurveSample smp;
     std::string why;
     if (!pr.Sample(u, &smp, &why)) return false;
-    const double g = test.Of(smp.run.jacobian);
+    const double g = test.Of(smp.jacobian);
     if (g == 0 || std::abs(s - last) * len <= tol || (hi - lo) * len <= tol) {
       x->p1 = u[2], x->p2 = u[3], x->x0 = u[0], x->xdot0 = u[1], x->phase = pr.phase();
       x->test = g;
-      Multipliers(smp.run.jacobian, x->multipliers);
+      Multipliers(smp.jacobian, x->multipliers);
       return true;
     }
     last = s;

@@ -4,10 +4,22 @@
 #include <cmath>
 #include <vector>
 
+#include "flow/cached_flow.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 
 namespace stickslip {
+
+FlowRequest ForcedCurveProblem::Request(double t_end, std::vector<FlowSwitch>* events) const {
+  FlowRequest rq;
+  rq.t_max = t_end;
+  rq.variational = true;
+  rq.switching = !smooth();
+  rq.extrema = {0, 1};
+  rq.max_steps = flow_.max_steps;
+  rq.switches = events;
+  return rq;
+}
 
 ForcedPoint ForcedCurveProblem::Start(const ForcedModel& m, double t, double x, double xdot) const {
   if (!smooth()) return ForcedStart(m, t, x, xdot);
@@ -18,19 +30,20 @@ ForcedPoint ForcedCurveProblem::Start(const ForcedModel& m, double t, double x, 
 bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
                                 std::string* why) const {
   const ForcedModel model(plane_.At(base_, u[2], u[3]));
-  std::vector<ForcedEvent> events;
-  ForcedRequest rq;
+  std::vector<FlowSwitch> events;
   const double t0 = phase_ / model.omega();
-  rq.t_end = t0 + m_ * model.period();
-  rq.variational = true;
-  rq.events = &events;
-  rq.switching = !smooth();
-  s->run = ForcedFlow(model, flow_).Run(Start(model, t0, u[0], u[1]), rq);
-  if (s->run.status != ForcedStatus::kReached) {
-    *why = s->run.message;
+  const FlowRun r = CachedFlow(model, flow_)
+                        .Run(ToFlowPoint(model, Start(model, t0, u[0], u[1])),
+                             Request(t0 + m_ * model.period(), &events));
+  if (!Reached(r)) {
+    *why = r.message;
     return false;
   }
-  const Mat2& M = s->run.jacobian;
+  s->end = ToForcedPoint(r.end);
+  s->jacobian = r.jacobian;
+  s->extrema = RunExtrema(r);
+  s->sticks = r.sticks, s->crossings = r.crossings;
+  const Mat2& M = s->jacobian;
   s->lp = (M - Mat2::Identity()).determinant();
   s->pd = (M + Mat2::Identity()).determinant();
   s->ns = M.determinant() - 1;
@@ -39,9 +52,9 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
   const double mu_s = model.static_limit();
   double cross = HUGE_VAL;
   bool any = false;
-  for (const ForcedEvent& e : events)
-    if (e.kind == ForcedEventKind::kCrossing || e.kind == ForcedEventKind::kStickIn) {
-      cross = std::min(cross, std::abs(model.StickForce(e.t, e.x)) - mu_s);
+  for (const FlowSwitch& e : events)
+    if (e.kind == SwitchKind::kCrossing || e.kind == SwitchKind::kStickIn) {
+      cross = std::min(cross, std::abs(model.StickForce(e.t, e.z[0])) - mu_s);
       any = true;
     }
   if (crossing_) {
@@ -51,7 +64,7 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
     s->crossing = false;
     // The slip field of the section point's side, continued across x' = v
     // (smooth()): the gap is smooth through 0, negative past the grazing.
-    const Extrema& x = s->run.extrema;
+    const Extrema& x = s->extrema;
     s->margin = u[1] <= model.v() ? model.v() - x.xdot_max : x.xdot_min - model.v();
   }
   if (!std::isfinite(s->margin) && kind_ == CurveKind::kGrazing) {
@@ -64,13 +77,16 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
 bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
   const ForcedModel model(plane_.At(base_, (*u)[2], (*u)[3]));
   std::vector<ForcedPoint> samples;
-  ForcedRequest rq;
   const double t0 = phase_ / model.omega();
-  rq.t_end = t0 + m_ * model.period();
-  rq.samples = &samples;
-  rq.switching = !smooth();
-  const ForcedRun run = ForcedFlow(model, flow_).Run(Start(model, t0, (*u)[0], (*u)[1]), rq);
-  if (run.status != ForcedStatus::kReached) return *why = run.message, false;
+  const FlowPoint start = ToFlowPoint(model, Start(model, t0, (*u)[0], (*u)[1]));
+  samples.push_back(ToForcedPoint(start));
+  FlowRequest rq = Request(t0 + m_ * model.period(), nullptr);
+  rq.variational = false;
+  rq.step_observer = [&](double t, const double* z, const ModeSet& md) {
+    samples.push_back({t, z[0], z[1], md[0]});
+  };
+  const FlowRun run = CachedFlow(model, flow_).Run(start, rq);
+  if (!Reached(run)) return *why = run.message, false;
   const ForcedPoint* best = nullptr;
   for (const ForcedPoint& p : samples)
     if (p.mode != Mode::kStick &&
@@ -99,29 +115,27 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
   if (!Sample(last.u, &a, &why) || !Sample(next.u, &b, &why))
     return {CurveEndKind::kBranchJump, why};
   const double res = std::max(
-      {std::abs(b.run.end.x - next.u[0]), std::abs(b.run.end.xdot - next.u[1]), std::abs(Test(b))});
+      {std::abs(b.end.x - next.u[0]), std::abs(b.end.xdot - next.u[1]), std::abs(Test(b))});
   if (!(res <= tol.forced_curve_residual))
     return {CurveEndKind::kSliding,
             "residual " + Num(res, 3) + " (the map is not smooth there: a sliding point)"};
   // (a GR curve is where the structure changes: its margin spans both sides)
-  if (kind_ != CurveKind::kGrazing &&
-      (a.run.sticks != b.run.sticks || a.run.crossings != b.run.crossings))
-    return {CurveEndKind::kSliding, "sticks " + std::to_string(a.run.sticks) + " -> " +
-                                        std::to_string(b.run.sticks) + ", crossings " +
-                                        std::to_string(a.run.crossings) + " -> " +
-                                        std::to_string(b.run.crossings)};
+  if (kind_ != CurveKind::kGrazing && (a.sticks != b.sticks || a.crossings != b.crossings))
+    return {CurveEndKind::kSliding, "sticks " + std::to_string(a.sticks) + " -> " +
+                                        std::to_string(b.sticks) + ", crossings " +
+                                        std::to_string(a.crossings) + " -> " +
+                                        std::to_string(b.crossings)};
   // A shorter period: the point comes back after d | m, d < m, periods.
   const ForcedModel model(plane_.At(base_, next.u[2], next.u[3]));
   const double t0 = phase_ / model.omega();
   for (int d = 1; d < m_; ++d) {
     if (m_ % d != 0) continue;
-    ForcedRequest rq;
-    rq.t_end = t0 + d * model.period();
-    rq.switching = !smooth();
-    const ForcedRun r = ForcedFlow(model, flow_).Run(Start(model, t0, next.u[0], next.u[1]), rq);
-    if (r.status == ForcedStatus::kReached &&
-        std::max(std::abs(r.end.x - next.u[0]), std::abs(r.end.xdot - next.u[1])) <
-            tol.forced_lower_period)
+    FlowRequest rq = Request(t0 + d * model.period(), nullptr);
+    rq.variational = false;
+    const FlowRun r = CachedFlow(model, flow_)
+                          .Run(ToFlowPoint(model, Start(model, t0, next.u[0], next.u[1])), rq);
+    if (Reached(r) && std::max(std::abs(r.end.z[0] - next.u[0]), std::abs(r.end.z[1] - next.u[1])) <
+                          tol.forced_lower_period)
       return {CurveEndKind::kBranchJump,
               "the orbit has period " + std::to_string(d) + " < m = " + std::to_string(m_)};
   }
@@ -159,7 +173,7 @@ bool ForcedCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
   ForcedCurveSample s;
   if (!Sample(u, &s, why)) return false;
   f->resize(3);
-  *f << s.run.end.x - u[0], s.run.end.xdot - u[1], Test(s);
+  *f << s.end.x - u[0], s.end.xdot - u[1], Test(s);
   {
     // Central differences, step ~ cbrt(eps) of each unknown's scale.
     chord_.resize(3, 4);
@@ -172,13 +186,13 @@ bool ForcedCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
       if (!DomainError(um).empty()) um = u;
       if (!Sample(up, &sp, why) || !Sample(um, &sm, why)) return false;
       const double span = up[k] - um[k];
-      chord_(0, k) = (sp.run.end.x - sm.run.end.x) / span;
-      chord_(1, k) = (sp.run.end.xdot - sm.run.end.xdot) / span;
+      chord_(0, k) = (sp.end.x - sm.end.x) / span;
+      chord_(1, k) = (sp.end.xdot - sm.end.xdot) / span;
       chord_(2, k) = (Test(sp) - Test(sm)) / span;
     }
   }
   *jac = chord_;
-  jac->block(0, 0, 2, 2) = s.run.jacobian - Mat2::Identity();  // exact at every point
+  jac->block(0, 0, 2, 2) = s.jacobian - Mat2::Identity();  // exact at every point
   return true;
 }
 

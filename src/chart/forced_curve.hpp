@@ -11,7 +11,7 @@
 //       condition on a floor; past it |force| - mu_s at the stick-in, <= 0),
 //       or v - max x' (slip below; min x' - v above) for an orbit that never
 //       reaches x' = v (grazing-sliding, docs/theory.md "Continuation"), on the orbit of
-//       that slip field continued across x' = v (ForcedRequest::switching
+//       that slip field continued across x' = v (FlowRequest::switching
 //       false): smooth through 0, as the belt's grazing gap. (The true flow's
 //       margin past grazing, minus the stick time, grows like a square root:
 //       the corrector stalled on it after 2-3 points.)
@@ -23,6 +23,7 @@
 
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/continuation/palc.hpp"
@@ -31,7 +32,12 @@ namespace stickslip {
 
 // One evaluation of the orbit map and the test functions at u.
 struct ForcedCurveSample {
-  ForcedRun run;  // over m forcing periods, variational, with extremes
+  // The run over m forcing periods (variational, with extremes): its end,
+  // state transition matrix, extremes and switch counts.
+  ForcedPoint end;
+  Mat2 jacobian = Mat2::Identity();
+  Extrema extrema = Extrema::Empty();
+  int sticks = 0, crossings = 0;
   double lp = 0, pd = 0, ns = 0;
   double margin = 0;      // the GR test (header)
   bool crossing = false;  // the margin is a crossing's (else a grazing's)
@@ -40,7 +46,7 @@ struct ForcedCurveSample {
 class ForcedCurveProblem final : public PalcProblem {
  public:
   ForcedCurveProblem(const ForcedParams& base, const ForcedPlane& plane, CurveKind kind, int m,
-                     const ForcedOptions& flow)
+                     const FlowOptions& flow)
       : base_(base), plane_(plane), kind_(kind), m_(m), flow_(flow) {}
   int unknowns() const override { return 4; }
   const ForcedPlane& plane() const { return plane_; }
@@ -74,11 +80,14 @@ class ForcedCurveProblem final : public PalcProblem {
   double Test(const ForcedCurveSample& s) const;
   // ForcedStart, or with smooth() the slip mode of x''s side.
   ForcedPoint Start(const ForcedModel& m, double t, double x, double xdot) const;
+  // A run to t_end as the tests need it: variational, extremes in steps,
+  // switching unless smooth(), the switches appended to `events` if given.
+  FlowRequest Request(double t_end, std::vector<FlowSwitch>* events) const;
   ForcedParams base_;
   ForcedPlane plane_;
   CurveKind kind_;
   int m_;
-  ForcedOptions flow_;
+  FlowOptions flow_;
   bool crossing_ = true;
   double phase_ = 0;
   Eigen::MatrixXd chord_;  // 3 x 4: the difference columns and row

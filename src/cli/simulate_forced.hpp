@@ -27,7 +27,7 @@ void AddRangeMeta(TsvTable& table, const SimulateRange& r);
 // the metadata prints.
 struct ForcedInputs {
   ForcedParams p;
-  ForcedOptions flow;
+  FlowOptions flow = ForcedModel::FlowDefaults();
   FlowOptions shown;
 };
 ForcedInputs ForcedInputsFromArguments(const Arguments& args);

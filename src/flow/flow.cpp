@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "flow/cached_flow.hpp"
 #include "flow/engine.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
@@ -18,6 +19,10 @@ std::string FlowOptions::ValidationError() const {
     os << "rtol = " << rtol << " must be in [" << T::kRtolMin << ", " << T::kTolMax << "]";
   } else if (!(atol >= T::kAtolMin && atol <= T::kTolMax)) {
     os << "atol = " << atol << " must be in [" << T::kAtolMin << ", " << T::kTolMax << "]";
+  } else if (integrator == Integrator::kCvode &&
+             !(rtol >= T::kCvodeRtolMin && atol >= T::kCvodeAtolMin)) {
+    os << "rtol = " << rtol << ", atol = " << atol << ": CVODE needs rtol >= " << T::kCvodeRtolMin
+       << " and atol >= " << T::kCvodeAtolMin;
   } else if (max_steps < kMinSteps) {
     os << "max_steps = " << max_steps << " must be >= " << kMinSteps;
   } else if (max_switches < 1) {
@@ -40,13 +45,13 @@ std::unique_ptr<Stepper> MakeStepper(const FlowOptions& options, const System& s
 
 namespace {
 // What the flow itself needs of its options: tolerances the steppers can
-// meet (Taylor to kForcedRtolMin; CVODE stalls below its floors) and
+// meet (Taylor to kFlowRtolMin; CVODE stalls below its floors) and
 // positive caps. Tools check their own, tighter, ranges at entry.
 std::string CoreError(const FlowOptions& o) {
   using T = Tolerances;
   std::ostringstream os;
-  if (!(o.rtol >= T::kForcedRtolMin && o.rtol <= T::kTolMax))
-    os << "rtol = " << o.rtol << " must lie in [" << T::kForcedRtolMin << ", " << T::kTolMax << "]";
+  if (!(o.rtol >= T::kFlowRtolMin && o.rtol <= T::kTolMax))
+    os << "rtol = " << o.rtol << " must lie in [" << T::kFlowRtolMin << ", " << T::kTolMax << "]";
   else if (!(o.atol >= T::kAtolMin && o.atol <= T::kTolMax))
     os << "atol = " << o.atol << " must lie in [" << T::kAtolMin << ", " << T::kTolMax << "]";
   else if (o.integrator == Integrator::kCvode &&
@@ -106,6 +111,20 @@ void Flow::set_parameter_column(int j) {
 void Flow::Run(const FlowPoint& start, const FlowRequest& request, FlowRun* out) {
   if (!engine_) engine_ = std::make_unique<flow_detail::Engine>(*this);
   engine_->Run(start, request, out);
+}
+
+}  // namespace stickslip
+
+namespace stickslip {
+
+Flow& CachedFlow(const System& system, const FlowOptions& options) {
+  thread_local std::unique_ptr<Flow> cached;
+  if (cached && cached->options() == options) {
+    cached->set_system(system);
+    return *cached;
+  }
+  cached = std::make_unique<Flow>(system, options);
+  return *cached;
 }
 
 }  // namespace stickslip

@@ -16,7 +16,7 @@ namespace {
 
 OrbitBranchOptions CoreOptions(const ForcedBranchOptions& o) {
   OrbitBranchOptions c;
-  c.shooting.flow = forced_detail::FlowOptionsOf(o.flow);
+  c.shooting.flow = o.flow;
   c.shooting.max_steps = o.flow.max_steps;
   c.palc = o.palc;
   c.max_amplitude = o.max_amplitude;

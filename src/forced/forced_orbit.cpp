@@ -30,14 +30,14 @@ Shooting& CachedShooting(const ForcedModel& model, const ForcedOrbitOptions& o) 
   if (!(o.tol > 0) || o.max_newton < 1)
     throw InvalidArgument("orbit options: tol must be > 0 and max_newton >= 1");
   ShootingOptions so;
-  so.flow = FlowOptionsOf(o.flow);
+  so.flow = o.flow;
   so.max_newton = o.max_newton;
   so.tol = o.tol;
   so.max_steps = o.flow.max_steps;
   thread_local std::unique_ptr<Shooting> cached;
   if (cached) {
     const ShootingOptions& c = cached->options();
-    if (SameFlowOptions(c.flow, so.flow) && c.max_newton == so.max_newton && c.tol == so.tol &&
+    if (c.flow == so.flow && c.max_newton == so.max_newton && c.tol == so.tol &&
         c.max_steps == so.max_steps) {
       cached->set_system(model);
       return *cached;

@@ -38,23 +38,31 @@ bool Same(const Vec2& a, const Vec2& b) {
 
 class Scan {
  public:
-  Scan(const ForcedModel& m, const ForcedScanOptions& o) : m_(m), o_(o), flow_(m, o.orbit.flow) {}
+  Scan(const ForcedModel& m, const ForcedScanOptions& o) : m_(m), o_(o), flow_(m, o.orbit.flow) {
+    rq_.max_steps = o.orbit.flow.max_steps;
+  }
   bool Cancelled() {
     if (o_.cancelled && o_.cancelled()) r_.status = ForcedScanStatus::kCancelled;
     return !r_.ok();
   }
   // The stroboscopic iterates z, P(z), ..., P^n(z); fewer if the flow fails.
-  std::vector<Vec2> Iterates(const Vec2& z, int n) const {
+  std::vector<Vec2> Iterates(const Vec2& z, int n) {
     std::vector<Vec2> pts{z};
-    ForcedRequest rq;
-    rq.t_end = m_.period();
-    rq.extremes = false;
     for (int j = 0; j < n; ++j) {
-      const ForcedRun run = flow_.Run(ForcedStart(m_, 0, pts.back()[0], pts.back()[1]), rq);
-      if (run.status != ForcedStatus::kReached) break;
-      pts.emplace_back(run.end.x, run.end.xdot);
+      if (!Run(ForcedStart(m_, 0, pts.back()[0], pts.back()[1]), m_.period())) break;
+      pts.emplace_back(run_.end.z[0], run_.end.z[1]);
     }
     return pts;
+  }
+  // One run from p to t_end (to the stop_at_exit-th stick exit if > 0, the
+  // switches appended to `switches` if given): whether it reached its end.
+  bool Run(const ForcedPoint& p, double t_end, int stop_at_exit = 0,
+           std::vector<FlowSwitch>* switches = nullptr) {
+    rq_.t_max = t_end;
+    rq_.stop_at_exit = stop_at_exit;
+    rq_.switches = switches;
+    flow_.Run(ToFlowPoint(m_, p), rq_, &run_);
+    return Reached(run_);
   }
   // A converged fixed point of P^m: reduced to its least period, kept if new.
   void Add(const Vec2& z, int m, bool from_exit) {
@@ -87,7 +95,9 @@ class Scan {
  private:
   const ForcedModel& m_;
   const ForcedScanOptions& o_;
-  ForcedFlow flow_;
+  Flow flow_;
+  FlowRequest rq_;
+  FlowRun run_;
   ForcedOrbits r_;
 };
 
@@ -120,17 +130,11 @@ void Scan::ExitMap(Mode mode) {
   for (int i = 0; i < N; ++i) {
     if (Cancelled()) return;
     const double te = i * T / N;
-    std::vector<ForcedEvent> ev;
-    ForcedRequest rq;
-    rq.t_end = te + (o_.max_m + 1) * T;
-    rq.extremes = false;
-    rq.stop_at_exit = S;
-    rq.events = &ev;
-    const ForcedRun run = flow_.Run({te, Edge(m_, te, mode), m_.v(), mode}, rq);
-    if (run.status != ForcedStatus::kReached) continue;
+    std::vector<FlowSwitch> ev;
+    if (!Run({te, Edge(m_, te, mode), m_.v(), mode}, te + (o_.max_m + 1) * T, S, &ev)) continue;
     int s = 0;
-    for (const ForcedEvent& e : ev)
-      if (e.kind == ForcedEventKind::kStickOut && s < S) tp[i][s++] = e.after == mode ? e.t : NAN;
+    for (const FlowSwitch& e : ev)
+      if (e.kind == SwitchKind::kStickOut && s < S) tp[i][s++] = e.after[0] == mode ? e.t : NAN;
   }
   for (int s = 0; s < S; ++s) tp[N][s] = tp[0][s] + T;
   for (int i = 0; i < N; ++i)
@@ -147,11 +151,8 @@ void Scan::ExitMap(Mode mode) {
         if (e.status != ForcedOrbitStatus::kConverged) continue;
         // Its stroboscopic point: from the exit on to the next multiple of T.
         const double t1 = std::ceil(e.t_exit / T) * T;
-        ForcedRequest rq;
-        rq.t_end = t1;
-        rq.extremes = false;
-        const ForcedRun run = flow_.Run({e.t_exit, e.x_exit, m_.v(), mode}, rq);
-        if (run.status == ForcedStatus::kReached) Add(Vec2(run.end.x, run.end.xdot), m, true);
+        if (Run({e.t_exit, e.x_exit, m_.v(), mode}, t1))
+          Add(Vec2(run_.end.z[0], run_.end.z[1]), m, true);
       }
     }
 }

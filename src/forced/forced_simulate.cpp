@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flow/cached_flow.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/simulate.hpp"
@@ -25,7 +26,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
   if (!e.empty()) throw InvalidArgument(e);
   if (!(o.t_end > start.t))
     throw InvalidArgument("t_end = " + Num(o.t_end) + " must be > the start's t = " + Num(start.t));
-  const ForcedFlow flow(model, o.flow);
+  Flow& flow = CachedFlow(model, o.flow);
   const double T = model.period();
   const bool strobe = o.section == ForcedSection::kStrobe;
   ForcedSimulation r;
@@ -35,7 +36,12 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
   // Breakpoints: k dt and (strobe) n T, the next ones after the start.
   double k = std::floor(start.t / o.dt) + 1, n = std::ceil(start.t / T);
   if (strobe && n * T == start.t) r.section.push_back({0, p}), n += 1;
-  std::vector<ForcedEvent> events;
+  std::vector<FlowSwitch> events;
+  FlowRequest rq;
+  rq.extrema = {0, 1};
+  rq.max_steps = o.flow.max_steps;
+  rq.switches = &events;
+  FlowRun run;
   while (p.t < o.t_end) {
     if (o.cancelled && o.cancelled()) {
       r.status = ForcedSimulationStatus::kCancelled;
@@ -43,31 +49,29 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
       return r;
     }
     const double t_row = k * o.dt, t_sec = strobe ? n * T : INFINITY;
-    ForcedRequest rq;
-    rq.t_end = std::min({t_row, t_sec, o.t_end});
-    rq.events = &events;
+    rq.t_max = std::min({t_row, t_sec, o.t_end});
     events.clear();
-    const ForcedRun run = flow.Run(p, rq);
+    flow.Run(ToFlowPoint(model, p), rq, &run);
     r.steps += run.steps, r.sticks += run.sticks, r.exits += run.exits;
     r.crossings += run.crossings;
-    for (const ForcedEvent& ev : events) {
-      const ForcedPoint q{ev.t, ev.x, model.v(), ev.after};
+    for (const FlowSwitch& ev : events) {
+      const ForcedPoint q{ev.t, ev.z[0], model.v(), ev.after[0]};
       r.rows.push_back(q);
-      if (!strobe && ev.kind == ForcedEventKind::kStickOut)
+      if (!strobe && ev.kind == SwitchKind::kStickOut)
         r.section.push_back({static_cast<long>(r.section.size()), q});
     }
-    if (run.status != ForcedStatus::kReached) {
+    if (!Reached(run)) {
       r.status = ForcedSimulationStatus::kFailed;
       r.message = std::string(Name(run.status)) + ": " + run.message;
       return r;
     }
-    r.extrema.Merge(run.extrema);
-    if (!std::isfinite(run.end.x) || !std::isfinite(run.end.xdot)) {
+    r.extrema.Merge(RunExtrema(run));
+    p = ToForcedPoint(run.end);
+    if (!std::isfinite(p.x) || !std::isfinite(p.xdot)) {
       r.status = ForcedSimulationStatus::kFailed;
-      r.message = "non-finite state at t = " + Num(run.end.t);
+      r.message = "non-finite state at t = " + Num(p.t);
       return r;
     }
-    p = run.end;
     if (p.t >= t_row || p.t >= o.t_end) r.rows.push_back(p), k += 1;
     if (p.t >= t_sec) r.section.push_back({static_cast<long>(r.section.size()), p}), n += 1;
     if (static_cast<long>(r.rows.size() + r.section.size()) > o.max_rows) {

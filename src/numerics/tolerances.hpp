@@ -29,12 +29,12 @@ struct Tolerances : FixedTolerances {
   // with max(1, |t|) (times) or the state's size, never with rtol.
   static constexpr double kEps = 2.2e-16;  // the unit roundoff DBL_EPSILON, rounded
 
-  /// The tolerances a flow accepts: rtol in [kRtolMin, kTolMax] (belt: Taylor
-  /// and CVODE), atol in [kAtolMin, kTolMax]; the forced flow takes rtol down
-  /// to kForcedRtolMin, but its CVODE path needs rtol >= kCvodeRtolMin and atol >=
+  /// The tolerances the tools accept (FlowOptions::ValidationError): rtol in
+  /// [kRtolMin, kTolMax], atol in [kAtolMin, kTolMax]; the Flow itself takes
+  /// rtol down to kFlowRtolMin. CVODE needs rtol >= kCvodeRtolMin and atol >=
   /// kCvodeAtolMin (below, CVODE stalls).
   static constexpr double kRtolMin = 1e-14, kAtolMin = 1e-16, kTolMax = 1e-2;
-  static constexpr double kForcedRtolMin = 1e-16;
+  static constexpr double kFlowRtolMin = 1e-16;
   static constexpr double kCvodeRtolMin = 1e-13, kCvodeAtolMin = 1e-15;
   /// The flow's stop time advances in chunks this long: CVODE needs a finite
   /// stop time, and t + 1e9 keeps 1e-7 resolution in t.

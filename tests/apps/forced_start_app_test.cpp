@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app_test_util.hpp"
+#include "forced_run.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/model/forced.hpp"
 
@@ -42,17 +43,15 @@ void ExpectFixedPointOfPm(double x0, double xdot0, int m, int sticks) {
   stickslip::ForcedParams p;
   p.force = 0.1, p.omega = 1.5;
   const stickslip::ForcedModel model(p);
-  stickslip::ForcedOptions o;
+  stickslip::FlowOptions o = stickslip::ForcedModel::FlowDefaults();
   o.rtol = o.atol = 1e-13;
-  const stickslip::ForcedFlow flow(model, o);
   stickslip::ForcedPoint z = stickslip::ForcedStart(model, 0, x0, xdot0);
   int counted = 0;
   for (int k = 1; k <= m; ++k) {
-    stickslip::ForcedRequest rq;
-    rq.t_end = k * model.period();
-    const stickslip::ForcedRun run = flow.Run(z, rq);
-    ASSERT_EQ(run.status, stickslip::ForcedStatus::kReached) << run.message;
-    z = run.end;
+    const stickslip::FlowRun run =
+        stickslip::testing_util::RunForced(model, z, k * model.period(), {}, o);
+    ASSERT_TRUE(stickslip::Reached(run)) << run.message;
+    z = stickslip::ToForcedPoint(run.end);
     counted += run.sticks;
     const double gap = std::hypot(z.x - x0, z.xdot - xdot0);
     if (k < m)

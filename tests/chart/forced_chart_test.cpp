@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 #include "stickslip/forced/orbit_scan.hpp"
@@ -81,14 +82,13 @@ ForcedParams StribeckChartParams(double a, double w) {
 // The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
 OrbitBranch OmegaRun(double a) {
   const ForcedModel model(StribeckChartParams(a, 0.8));
-  ForcedRequest rq;
-  rq.t_end = 200 * model.period();
-  const ForcedRun tr = ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, 0, 0.25), rq);
+  const FlowRun tr =
+      testing_util::RunForced(model, ForcedStart(model, 0, 0, 0.25), 200 * model.period());
   ForcedBranchOptions o;
   o.flow.rtol = o.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.x,
-                        tr.end.xdot, o);
+  return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.z[0],
+                        tr.end.z[1], o);
 }
 
 const OrbitRow* First(const OrbitBranch& b, SpecialKind l) {

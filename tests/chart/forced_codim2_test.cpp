@@ -17,6 +17,7 @@
 #include <cstdio>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -49,16 +50,16 @@ RefCheck Reference(const ForcedParams& base, const ForcedCodim2& c) {
   ForcedParams p = base;
   p.omega = c.p1, p.force = c.p2;
   const ForcedModel model(p);
-  ForcedOptions f;
+  FlowOptions f = ForcedModel::FlowDefaults();
   f.rtol = f.atol = 1e-14;
-  ForcedRequest rq;
-  rq.t_end = model.period();
-  const ForcedRun r =
-      ForcedFlow(model, f).Run(ForcedStart(model, c.phase / model.omega(), c.x0, c.xdot0), rq);
+  const ForcedPoint r = ToForcedPoint(
+      testing_util::RunForced(model, ForcedStart(model, c.phase / model.omega(), c.x0, c.xdot0),
+                              model.period(), {}, f)
+          .end);
   const reference::ForcedRef m(p);
-  const reference::RefPeriod q = reference::RefOnePeriod(m, r.end.x, r.end.xdot, false, 1e-18L);
+  const reference::RefPeriod q = reference::RefOnePeriod(m, r.x, r.xdot, false, 1e-18L);
   EXPECT_TRUE(q.ok);
-  return {std::max(std::abs(q.x - r.end.x), std::abs(q.y - r.end.xdot)), q.phi[0][0] + q.phi[1][1],
+  return {std::max(std::abs(q.x - r.x), std::abs(q.y - r.xdot)), q.phi[0][0] + q.phi[1][1],
           q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0], q.sticks};
 }
 
@@ -133,11 +134,10 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
     ForcedParams q = base;
     q.omega = p.p1, q.force = p.p2;
     const ForcedModel model(q);
-    ForcedRequest rq;
-    rq.t_end = model.period();
-    const ForcedPoint z = ForcedFlow(model, ForcedOptions())
-                              .Run(ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0), rq)
-                              .end;
+    const ForcedPoint z = ToForcedPoint(
+        testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
+                                model.period())
+            .end);
     ForcedBranchOptions o;
     o.palc.ds = o.palc.ds_max = 2e-4;
     double best = NAN;

@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 
@@ -21,8 +22,8 @@ namespace {
 // studies/seed_forced.ini: the seed set forced by A cos(Omega t).
 ForcedParams Seed(double a, double w) { return forced_reference::SeedBelt(0.25, a, w); }
 
-ForcedOptions BeltFlow() {
-  ForcedOptions f;
+FlowOptions BeltFlow() {
+  FlowOptions f = ForcedModel::FlowDefaults();
   f.rtol = f.atol = 1e-13;
   return f;
 }
@@ -39,13 +40,12 @@ ForcedChartOptions PointsChartOptions() {
 // settled over 200 periods at Omega = 1 (as ss_continue starts).
 OrbitBranch SeedRun(double a) {
   const ForcedModel model(Seed(a, 1));
-  ForcedRequest rq;
-  rq.t_end = 200 * model.period();
-  const ForcedRun tr = ForcedFlow(model, BeltFlow()).Run(ForcedStart(model, 0, 0, 0.25), rq);
+  const FlowRun tr = testing_util::RunForced(model, ForcedStart(model, 0, 0, 0.25),
+                                             200 * model.period(), {}, BeltFlow());
   ForcedBranchOptions o;
   o.flow = BeltFlow();
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(Seed(a, 1), ForcedAxis::kOmega, 1, 0.3, tr.end.x, tr.end.xdot, o);
+  return ContinueForced(Seed(a, 1), ForcedAxis::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1], o);
 }
 
 // The special point `label` nearest Omega = p.p1 of the one-parameter run in
@@ -63,13 +63,16 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Speci
                  SpecialKind* found = nullptr, ForcedAxis axis = ForcedAxis::kOmega) {
   const double at = axis == ForcedAxis::kOmega ? p.p1 : p.p2;
   const ForcedModel model(Seed(p.p2, p.p1));
-  ForcedRequest rq;
   const double t0 = p.phase / model.omega();
-  rq.t_end = model.period();
   const ForcedPoint z =
-      ForcedFlow(model, BeltFlow()).Run(ForcedStart(model, t0, p.x0, p.xdot0), rq).end;
-  rq.t_end = m * model.period(), rq.variational = true;
-  const Mat2 M = ForcedFlow(model, BeltFlow()).Run(ForcedStart(model, 0, z.x, z.xdot), rq).jacobian;
+      ToForcedPoint(testing_util::RunForced(model, ForcedStart(model, t0, p.x0, p.xdot0),
+                                            model.period(), {}, BeltFlow())
+                        .end);
+  FlowRequest rq;
+  rq.variational = true;
+  const Mat2 M = testing_util::RunForced(model, ForcedStart(model, 0, z.x, z.xdot),
+                                         m * model.period(), rq, BeltFlow())
+                     .jacobian;
   Eigen::EigenSolver<Eigen::Matrix2d> es(M);
   const double target = fold ? 1 : -1;
   const int k = std::abs(es.eigenvalues()[0] - target) < std::abs(es.eigenvalues()[1] - target);

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -31,11 +32,11 @@ ForcedChartOptions NsChartOptions() {
 // point's orbit carried to phase 0, over Omega +- 2e-3 both ways. p NaN if none.
 OrbitRow LocateNsRow(const ForcedCurvePoint& p, double a) {
   const ForcedModel model(Scene(a, p.p1));
-  ForcedRequest rq;
-  rq.t_end = model.period();  // the phase lies in [0, 2 pi)
-  const ForcedPoint z = ForcedFlow(model, ForcedOptions())
-                            .Run(ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0), rq)
-                            .end;
+  // (the phase lies in [0, 2 pi): one period reaches phase 0)
+  const ForcedPoint z = ToForcedPoint(
+      testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
+                              model.period())
+          .end);
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 2e-4;
   OrbitRow best;

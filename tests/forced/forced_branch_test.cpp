@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -66,14 +67,13 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0, p.base.v = 0.2;
   p.force = 0.3, p.omega = 0.8;
   const ForcedModel m0(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m0.period();
-  const ForcedRun transient = ForcedFlow(m0, ForcedOptions()).Run(ForcedStart(m0, 0, 0, 0.2), rq);
+  const FlowRun transient =
+      testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0.2), 200 * m0.period());
   ForcedBranchOptions o;
   o.flow.rtol = o.flow.atol = 1e-14;
   o.palc.ds_max = 0.05;
   const OrbitBranch b =
-      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.x, transient.end.xdot, o);
+      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.z[0], transient.end.z[1], o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   std::vector<OrbitRow> pds;  // the sliding points are tested in forced_sliding_test
   for (const OrbitRow& r : b.special)
@@ -86,14 +86,15 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   // The exit-phase map at the located Omega: its multiplier is -1 there too.
   p.omega = pd.p;
   const ForcedModel m(p);
-  std::vector<ForcedEvent> events;
-  rq.t_end = m.period();
-  rq.events = &events;
-  ForcedFlow(m, o.flow).Run(ForcedStart(m, 0, pd.start.z[0], pd.start.z[1]), rq);
+  std::vector<FlowSwitch> events;
+  FlowRequest rq;
+  rq.switches = &events;
+  testing_util::RunForced(m, ForcedStart(m, 0, pd.start.z[0], pd.start.z[1]), m.period(), rq,
+                          o.flow);
   double t_exit = -1;
   Mode mode = Mode::kSlipBelow;
   for (const auto& e : events)
-    if (e.kind == ForcedEventKind::kStickOut) t_exit = e.t, mode = e.after;
+    if (e.kind == SwitchKind::kStickOut) t_exit = e.t, mode = e.after[0];
   ASSERT_GE(t_exit, 0);
   ForcedOrbitOptions oo;
   oo.flow = o.flow;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
@@ -35,13 +36,8 @@ Real ClosedFormReturn(const ForcedParams& p, Real t_e, int sigma, int sticks) {
 
 // An exit time and side after a transient of 60 forcing periods.
 void GuessExit(const ForcedModel& m, double* t, Mode* mode) {
-  ForcedRequest rq;
-  std::vector<ForcedEvent> events;
-  rq.t_end = 60 * m.period();
-  rq.events = &events;
-  ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0), rq);
-  for (const auto& e : events)
-    if (e.kind == ForcedEventKind::kStickOut) *t = e.t, *mode = e.after;
+  for (const FlowSwitch& e : testing_util::RunSwitches(m, ForcedStart(m, 0, 0, 0), 60 * m.period()))
+    if (e.kind == SwitchKind::kStickOut) *t = e.t, *mode = e.after[0];
 }
 
 void Check(const ForcedParams& p, int sticks, int m) {
@@ -65,11 +61,10 @@ void Check(const ForcedParams& p, int sticks, int m) {
   EXPECT_NEAR(orbit.multiplier, static_cast<double>(fd), 1e-7);
   // The same orbit by stroboscopic shooting: the same nontrivial multiplier.
   // Its state at the next theta = 0 starts the shooting.
-  ForcedRequest rq;
-  rq.t_end = std::ceil(orbit.t_exit / model.period()) * model.period();
-  const ForcedRun to_zero =
-      ForcedFlow(model, o.flow).Run({orbit.t_exit, orbit.x_exit, model.v(), mode}, rq);
-  const ForcedOrbit strobe = ShootStroboscopic(model, to_zero.end.x, to_zero.end.xdot, m, o);
+  const FlowRun to_zero = testing_util::RunForced(
+      model, {orbit.t_exit, orbit.x_exit, model.v(), mode},
+      std::ceil(orbit.t_exit / model.period()) * model.period(), {}, o.flow);
+  const ForcedOrbit strobe = ShootStroboscopic(model, to_zero.end.z[0], to_zero.end.z[1], m, o);
   ASSERT_EQ(strobe.status, ForcedOrbitStatus::kConverged) << strobe.message;
   EXPECT_NEAR(strobe.multipliers[0].real(), orbit.multiplier, 1e-9);
   EXPECT_EQ(strobe.sticks, sticks);
@@ -114,15 +109,11 @@ TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
     ForcedParams q = p;
     q.omega = r.p;
     const ForcedModel model(q);
-    ForcedRequest rq;
-    std::vector<ForcedEvent> events;
-    rq.t_end = model.period();
-    rq.events = &events;
-    ForcedFlow(model, ForcedOptions()).Run(ForcedStart(model, 0, r.start.z[0], r.start.z[1]), rq);
     double t = -1;
     Mode mode = Mode::kSlipBelow;
-    for (const auto& e : events)
-      if (e.kind == ForcedEventKind::kStickOut) t = e.t, mode = e.after;
+    for (const FlowSwitch& e : testing_util::RunSwitches(
+             model, ForcedStart(model, 0, r.start.z[0], r.start.z[1]), model.period()))
+      if (e.kind == SwitchKind::kStickOut) t = e.t, mode = e.after[0];
     ASSERT_GT(t, 0) << "Omega = " << r.p;
     const ForcedExitOrbit o = ExitPhaseOrbit(model, t, mode, 1, 1, ForcedOrbitOptions());
     ASSERT_EQ(o.status, ForcedOrbitStatus::kConverged) << o.message;

@@ -1,10 +1,11 @@
-// The forced flow (issue 20, item 1) against the coulomb closed form and an
+// The forced oscillator on the one flow (issue 20, item 1) against the coulomb closed form and an
 // independent long-double RKF78 integrator (tests/forced_reference.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"
 
@@ -29,35 +30,33 @@ struct Case {
 template <class Piece>
 void CompareWithReference(const Case& c, double tol, int min_events, double rtol = 1e-13) {
   const ForcedModel m(c.p);
-  ForcedOptions o;
+  FlowOptions o = ForcedModel::FlowDefaults();
   o.rtol = o.atol = rtol;
-  const ForcedFlow flow(m, o);
-  std::vector<ForcedEvent> events;
-  ForcedRequest rq;
-  rq.t_end = c.t_end;
-  rq.events = &events;
-  const ForcedRun run = flow.Run(ForcedStart(m, 0, c.x0, c.xdot0), rq);
-  ASSERT_EQ(run.status, ForcedStatus::kReached) << run.message;
+  std::vector<FlowSwitch> events;
+  FlowRequest rq;
+  rq.switches = &events;
+  const FlowRun run = testing_util::RunForced(m, ForcedStart(m, 0, c.x0, c.xdot0), c.t_end, rq, o);
+  ASSERT_TRUE(Reached(run)) << run.message;
 
   ref::PieceSim<Piece> sim(SetupOf(c.p));
   Real t = 0, x = c.x0, y = c.xdot0;
   sim.Run(t, x, y, c.t_end);
-  std::vector<ForcedEvent> lib;  // touches are no switch in the reference
+  std::vector<FlowSwitch> lib;  // touches are no switch in the reference
   for (const auto& e : events)
-    if (e.kind != ForcedEventKind::kTouch) lib.push_back(e);
+    if (e.kind != SwitchKind::kTouch) lib.push_back(e);
   ASSERT_EQ(lib.size(), sim.events.size());
   EXPECT_GE(static_cast<int>(lib.size()), min_events);
   double worst = 0;
   for (size_t i = 0; i < lib.size(); ++i) {
-    const int kind = lib[i].kind == ForcedEventKind::kStickIn    ? 0
-                     : lib[i].kind == ForcedEventKind::kStickOut ? 1
-                                                                 : 2;
+    const int kind = lib[i].kind == SwitchKind::kStickIn    ? 0
+                     : lib[i].kind == SwitchKind::kStickOut ? 1
+                                                            : 2;
     ASSERT_EQ(kind, sim.events[i].kind) << "event " << i << " at t = " << lib[i].t;
     worst = std::max(worst, std::abs(lib[i].t - static_cast<double>(sim.events[i].t)));
-    worst = std::max(worst, std::abs(lib[i].x - static_cast<double>(sim.events[i].x)));
+    worst = std::max(worst, std::abs(lib[i].z[0] - static_cast<double>(sim.events[i].x)));
   }
-  worst = std::max(worst, std::abs(run.end.x - static_cast<double>(x)));
-  worst = std::max(worst, std::abs(run.end.xdot - static_cast<double>(y)));
+  worst = std::max(worst, std::abs(run.end.z[0] - static_cast<double>(x)));
+  worst = std::max(worst, std::abs(run.end.z[1] - static_cast<double>(y)));
   EXPECT_LT(worst, tol) << lib.size() << " events";
   std::printf("[ measured ] %zu events (%d sticks, %d crossings), %ld steps: max error %.2e\n",
               lib.size(), run.sticks, run.crossings, run.steps, worst);
@@ -107,14 +106,13 @@ TEST(ForcedFlow, JacobianMatchesClosedFormDifferences) {
   for (const ForcedParams& p : {Coulomb(0.4, 0.3, 0.05, 0.1, 0.6, 0.9),  // sticks on a belt
                                 Coulomb(0.3, 0.2, 0.02, 0, 1, 1.3)}) {   // reversals on a floor
     const ForcedModel m(p);
-    ForcedOptions o;
+    FlowOptions o = ForcedModel::FlowDefaults();
     o.rtol = o.atol = 1e-14;
-    ForcedRequest rq;
-    rq.t_end = 12;
+    FlowRequest rq;
     rq.variational = true;
-    const double x0 = 0.7, y0 = -0.3;
-    const ForcedRun run = ForcedFlow(m, o).Run(ForcedStart(m, 0, x0, y0), rq);
-    ASSERT_EQ(run.status, ForcedStatus::kReached) << run.message;
+    const double x0 = 0.7, y0 = -0.3, t_end = 12;
+    const FlowRun run = testing_util::RunForced(m, ForcedStart(m, 0, x0, y0), t_end, rq, o);
+    ASSERT_TRUE(Reached(run)) << run.message;
     EXPECT_GE(run.sticks + run.crossings, 2);
     const Real d = 1e-6L;
     for (int col = 0; col < 2; ++col) {
@@ -123,7 +121,7 @@ TEST(ForcedFlow, JacobianMatchesClosedFormDifferences) {
         ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p));
         Real t = 0, x = x0 + (col == 0 ? (sgn ? d : -d) : 0),
              y = y0 + (col == 1 ? (sgn ? d : -d) : 0);
-        sim.Run(t, x, y, rq.t_end);
+        sim.Run(t, x, y, t_end);
         end[sgn][0] = x, end[sgn][1] = y;
       }
       for (int row = 0; row < 2; ++row) {
@@ -144,13 +142,13 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
     p.base.law = law;
     if (law == LawKind::kCoulomb) p.base.beta = 0;  // damped, its slip spirals into x = mu_k
     const ForcedModel m(p);
-    ForcedOptions o;
+    FlowOptions o = ForcedModel::FlowDefaults();
     o.rtol = o.atol = 1e-13;
-    ForcedRequest rq;
-    rq.t_end = 100;
+    FlowRequest rq;
     rq.stop_at_exit = 1;
     const double x0 = p.base.mu_s - 2 * p.base.beta * p.base.v;
-    const ForcedRun run = ForcedFlow(m, o).Run({0, x0, p.base.v, Mode::kSlipBelow}, rq);
+    const FlowRun run = testing_util::RunForced(m, {0, x0, p.base.v, Mode::kSlipBelow}, 100, rq, o);
+    const Extrema e = RunExtrema(run);
     ASSERT_EQ(run.exits, 1) << Name(law) << ": " << run.message << " t = " << run.end.t;
     const reference::StickSlipOrbit ref = reference::StickSlip(p.base);
     ASSERT_TRUE(ref.found);
@@ -159,9 +157,9 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
       EXPECT_NEAR(run.end.t, static_cast<double>(reference::CoulombPeriodBeta0(0.4L, 0.25L, 0.25L)),
                   1e-12);
     }
-    EXPECT_NEAR(run.extrema.x_max, static_cast<double>(ref.x_max), 1e-11) << Name(law);
-    EXPECT_NEAR(run.extrema.x_min, static_cast<double>(ref.x_min), 1e-11) << Name(law);
-    EXPECT_NEAR(run.extrema.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << Name(law);
+    EXPECT_NEAR(e.x_max, static_cast<double>(ref.x_max), 1e-11) << Name(law);
+    EXPECT_NEAR(e.x_min, static_cast<double>(ref.x_min), 1e-11) << Name(law);
+    EXPECT_NEAR(e.xdot_min, static_cast<double>(ref.xdot_min), 1e-11) << Name(law);
   }
 }
 
@@ -171,11 +169,9 @@ TEST(ForcedFlow, HeldBlockStaysPut) {
   p.base.law = LawKind::kCoulomb, p.base.v = 0, p.base.mu_s = 0.4, p.base.mu_k = 0.3;
   p.force = 0.2, p.omega = 1.7;
   const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 50;
-  const ForcedRun run = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0.1, 0), rq);
-  EXPECT_EQ(run.end.mode, Mode::kStick);
-  EXPECT_EQ(run.end.x, 0.1);
+  const FlowRun run = testing_util::RunForced(m, ForcedStart(m, 0, 0.1, 0), 50);
+  EXPECT_EQ(run.end.mode[0], Mode::kStick);
+  EXPECT_EQ(run.end.z[0], 0.1);
   EXPECT_EQ(run.end.t, 50);
   EXPECT_EQ(run.exits, 0);
 }
@@ -187,13 +183,12 @@ TEST(ForcedFlow, BarelyReachedBandEdgeEndsTheStick) {
   p.base.law = LawKind::kCoulomb, p.base.v = 0, p.base.mu_s = 0.4, p.base.mu_k = 0.3;
   p.force = 0.3 + 1e-9, p.omega = 1.7;
   const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 10;
+  FlowRequest rq;
   rq.stop_at_exit = 1;
-  const ForcedRun run = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0.1, 0), rq);
+  const FlowRun run = testing_util::RunForced(m, ForcedStart(m, 0, 0.1, 0), 10, rq);
   ASSERT_EQ(run.exits, 1);
   EXPECT_NEAR(run.end.t, std::acos(-0.3 / p.force) / p.omega, 1e-9);
-  EXPECT_EQ(run.end.mode, Mode::kSlipBelow);
+  EXPECT_EQ(run.end.mode[0], Mode::kSlipBelow);
 }
 
 // A slip arc that rises above x' = v by 1e-10 only (coulomb, beta = 0, A = 0:
@@ -206,13 +201,10 @@ TEST(ForcedFlow, BarelyReachedSurfaceEndsTheSlip) {
   p.force = 0;
   const ForcedModel m(p);
   const double r = 0.25 + 1e-10;
-  std::vector<ForcedEvent> events;
-  ForcedRequest rq;
-  rq.t_end = 10;
-  rq.events = &events;
-  ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0.25 + r, 0), rq);
+  const std::vector<FlowSwitch> events =
+      testing_util::RunSwitches(m, ForcedStart(m, 0, 0.25 + r, 0), 10);
   ASSERT_FALSE(events.empty());
-  EXPECT_EQ(events[0].kind, ForcedEventKind::kStickIn);
+  EXPECT_EQ(events[0].kind, SwitchKind::kStickIn);
   EXPECT_NEAR(events[0].t, M_PI + std::asin(0.25 / r), 1e-9);
 }
 
@@ -227,9 +219,9 @@ TEST(ForcedFlow, InvalidInputIsNamed) {
   EXPECT_THROW(ForcedModel{p}, InvalidArgument);
   p.base.v = 0;
   EXPECT_EQ(ValidationError(p), "");
-  ForcedOptions o;
+  FlowOptions o = ForcedModel::FlowDefaults();
   o.rtol = 0;
-  EXPECT_THROW(ForcedFlow(ForcedModel(p), o), InvalidArgument);
+  EXPECT_THROW(Flow(ForcedModel(p), o), InvalidArgument);
 }
 
 }  // namespace

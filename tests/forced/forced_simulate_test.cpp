@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "forced_run.hpp"
 #include "stickslip/forced/simulate.hpp"
 
 namespace stickslip {
@@ -48,16 +49,15 @@ TEST(ForcedSimulate, ShortStepAfterAStickExitLeavesTheSurface) {
   ForcedParams p;  // the seed set, forced: studies/seed_forced.ini
   p.force = 0.3, p.omega = 0.6;
   const ForcedModel model(p);
-  std::vector<ForcedEvent> events;
-  ForcedRequest rq;
-  rq.t_end = 70.43;
-  rq.events = &events;
-  const ForcedRun r = ForcedFlow(model, ForcedOptions())
-                          .Run({70.42, 0.32673483409726917, p.base.v, Mode::kStick}, rq);
-  ASSERT_EQ(r.status, ForcedStatus::kReached) << r.message;
+  std::vector<FlowSwitch> events;
+  FlowRequest rq;
+  rq.switches = &events;
+  const FlowRun r = testing_util::RunForced(
+      model, {70.42, 0.32673483409726917, p.base.v, Mode::kStick}, 70.43, rq);
+  ASSERT_TRUE(Reached(r)) << r.message;
   ASSERT_EQ(events.size(), 1u);
-  EXPECT_EQ(events[0].kind, ForcedEventKind::kStickOut);
-  EXPECT_LT(r.end.xdot, p.base.v);  // slipping below the belt
+  EXPECT_EQ(events[0].kind, SwitchKind::kStickOut);
+  EXPECT_LT(r.end.z[1], p.base.v);  // slipping below the belt
   ForcedSimulationOptions o;
   o.t_end = 1000;
   const ForcedSimulation s = SimulateForced(model, ForcedStart(model, 0, 0, p.base.v), o);

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/forced/branch.hpp"
 
@@ -133,14 +134,14 @@ TEST(ForcedSliding, CrossingSlidingMatchesTheClosedFormReversal) {
     // Start Newton from the library's reversal (a crossing with x > 0).
     p.omega = point.p;
     const ForcedModel m(p);
-    std::vector<ForcedEvent> ev;
-    ForcedRequest rq;
-    rq.t_end = m.period();
-    rq.events = &ev;
-    ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, point.start.z[0], point.start.z[1]), rq);
+    std::vector<FlowSwitch> ev;
+    FlowRequest rq;
+    rq.switches = &ev;
+    testing_util::RunForced(m, ForcedStart(m, 0, point.start.z[0], point.start.z[1]), m.period(),
+                            rq);
     Real t0 = -1, x0 = 0;
-    for (const ForcedEvent& e : ev)
-      if (e.x > 0) t0 = e.t, x0 = e.x;
+    for (const FlowSwitch& e : ev)
+      if (e.z[0] > 0) t0 = e.t, x0 = e.z[0];
     ASSERT_GE(t0, 0);
     auto edge = [&](Real w) {  // |x_r - A cos(Omega t_r)| - mu_s on the closed-form orbit
       ref::Setup s{reference::Law(p.base), 0.05L, 0, 0.5L, w};

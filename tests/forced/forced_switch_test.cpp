@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "forced_run.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/branch.hpp"
@@ -39,11 +40,9 @@ ForcedBranchOptions Options() {
 OrbitRow FirstPeriodDoubling() {
   const ForcedParams p = StribeckScene(0.7);
   const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.25), rq);
+  const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
   const OrbitBranch b =
-      ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.x, tr.end.xdot, Options());
+      ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], Options());
   for (const OrbitRow& r : b.special)
     if (r.label == SpecialKind::kPeriodDoubling) return r;
   ADD_FAILURE() << "no PD on the m = 1 branch: " << Name(b.status) << " " << b.message;
@@ -122,12 +121,10 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   ForcedBranchOptions o = Options();
   const ForcedParams p = StribeckScene(0.7);
   const ForcedModel m(p);
-  ForcedRequest rq;
-  rq.t_end = 200 * m.period();
-  const ForcedRun tr = ForcedFlow(m, ForcedOptions()).Run(ForcedStart(m, 0, 0, 0.25), rq);
+  const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
   ForcedOrbitOptions oo;
   oo.flow = o.flow;
-  const ForcedOrbit orbit = ShootStroboscopic(m, tr.end.x, tr.end.xdot, 1, oo);
+  const ForcedOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
   ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged);
   const OrbitBranch d =
       ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.x, orbit.start.xdot, 0.6, 0.8, o);

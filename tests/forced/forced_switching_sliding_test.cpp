@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "forced_reference.hpp"
+#include "forced_run.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/flow.hpp"
@@ -166,11 +167,10 @@ TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
   ForcedParams p0 = kFloor;
   p0.omega = 0.3;
   const ForcedModel m0(p0);
-  ForcedRequest rq;
-  rq.t_end = 200 * m0.period();
-  const ForcedRun tr = ForcedFlow(m0, o.flow).Run(ForcedStart(m0, 0, 0, 0), rq);
+  const FlowRun tr =
+      testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0), 200 * m0.period(), {}, o.flow);
   const OrbitBranch b =
-      ContinueForced(kFloor, ForcedAxis::kOmega, 0.3, 0.75, tr.end.x, tr.end.xdot, o);
+      ContinueForced(kFloor, ForcedAxis::kOmega, 0.3, 0.75, tr.end.z[0], tr.end.z[1], o);
   ASSERT_FALSE(b.rows.empty()) << b.message;
   int cr_near_omega1 = 0;
   for (const OrbitRow& r : b.special) {

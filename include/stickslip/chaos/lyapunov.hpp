@@ -31,7 +31,7 @@ namespace stickslip {
 struct LyapunovOptions {
   /// transient's and keep's upper bound (1e6 forcing periods each), as the apps'.
   static constexpr int kMaxPeriods = 1000000;
-  ForcedOptions flow;
+  FlowOptions flow = ForcedModel::FlowDefaults();
   int transient = 500;   ///< forcing periods discarded
   int keep = 200;        ///< forcing periods recorded (section points, exponent)
   int align = 50;        ///< last transient periods that align the tangent matrix

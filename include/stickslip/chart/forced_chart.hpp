@@ -111,8 +111,8 @@ struct ForcedChartOptions {
   /// Upper bounds of seed_lines and of the response grid's n1 and n2.
   static constexpr int kMaxSeedLines = 50, kMaxGridSide = 1000;
   ForcedPlane plane;
-  ForcedOptions flow;         ///< rtol, atol 1e-12 (forced flow defaults)
-  int max_m = 2;              ///< curves of orbits of period multiple 1..max_m
+  FlowOptions flow = ForcedModel::FlowDefaults();  ///< rtol, atol 1e-12 (forced flow defaults)
+  int max_m = 2;                                   ///< curves of orbits of period multiple 1..max_m
   int seed_lines = 3;         ///< one-parameter runs per axis, across the rectangle
   double max_step = 0.01;     ///< largest curve step, fraction of the rectangle
   double max_amplitude = 50;  ///< seed branches stop at |x| = max_amplitude

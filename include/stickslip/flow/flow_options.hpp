@@ -46,6 +46,11 @@ struct FlowOptions {
   long max_switches = 1000000;  // mode changes per run
   // Empty if valid, otherwise one line naming the offending option.
   std::string ValidationError() const;
+  bool operator==(const FlowOptions& o) const {
+    return rtol == o.rtol && atol == o.atol && integrator == o.integrator && method == o.method &&
+           max_steps == o.max_steps && max_switches == o.max_switches;
+  }
+  bool operator!=(const FlowOptions& o) const { return !(*this == o); }
 };
 
 enum class FlowStatus {

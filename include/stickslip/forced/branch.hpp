@@ -28,7 +28,7 @@ inline int PeriodMultiple(const OrbitBranch& b) { return b.section.turns; }
 struct ForcedBranchOptions {
   /// m's upper bound (1000 forcing periods, as a restart file's).
   static constexpr int kMaxM = 1000;
-  ForcedOptions flow;
+  FlowOptions flow = ForcedModel::FlowDefaults();
   int m = 1;                   ///< period multiple, in [1, kMaxM]
   PalcOptions palc;            ///< on (x, x', p)
   double max_amplitude = 1e3;  ///< rows stop beyond |x| = max_amplitude

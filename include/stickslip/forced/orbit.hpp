@@ -14,7 +14,7 @@
 namespace stickslip {
 
 struct ForcedOrbitOptions {
-  ForcedOptions flow;
+  FlowOptions flow = ForcedModel::FlowDefaults();
   int max_newton = 40;
   /// Converged when the Newton update is below tol (1 + |z|) (max norm).
   double tol = 1e-12;

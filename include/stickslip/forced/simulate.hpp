@@ -26,7 +26,7 @@ struct EnumNames<ForcedSection> {
 };
 
 struct ForcedSimulationOptions {
-  ForcedOptions flow;
+  FlowOptions flow = ForcedModel::FlowDefaults();
   double t_end = 100;  ///< > start.t
   double dt = 0.01;    ///< > 0: a row at every multiple of dt (and at every switch)
   ForcedSection section = ForcedSection::kStrobe;

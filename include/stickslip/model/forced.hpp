@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "stickslip/flow/flow_options.hpp"
 #include "stickslip/model/friction.hpp"
 #include "stickslip/model/model.hpp"
 #include "stickslip/model/params.hpp"
@@ -37,6 +38,17 @@ class ForcedModel final : public System {
   static constexpr int kForceIndex = 9, kOmegaIndex = 10;
   /// Throws InvalidArgument naming the offending value.
   explicit ForcedModel(const ForcedParams& p);
+  /// The tolerance its tools default to (rtol = atol): at the belt's 1e-11
+  /// the branch corrector, tol 1e-11, stalls on the flow's noise.
+  static constexpr double kFlowTol = 1e-12;
+  /// Their flow settings: kFlowTol, 1e6 steps and 1e5 switches per run.
+  static FlowOptions FlowDefaults() {
+    FlowOptions o;
+    o.rtol = o.atol = kFlowTol;
+    o.max_steps = 1000000;
+    o.max_switches = 100000;
+    return o;
+  }
 
   // --- The system interface (theta = Omega t) ---
   std::unique_ptr<System> Clone() const override { return std::make_unique<ForcedModel>(*this); }
