@@ -54,26 +54,27 @@ ForcedParams DenHartog(double w) {
 void StickSlipOrbit(double rtol) {
   const ForcedParams p = Belt();
   const ForcedModel m(p);
-  ForcedOrbitOptions o;
+  ShootingOptions o(ForcedModel::FlowDefaults());
   o.flow.rtol = o.flow.atol = rtol;
-  const ForcedExitOrbit exact = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
+  const PeriodicOrbit exact = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
+  const double t_exit = exact.start.t, x_exit = exact.start.z[0];
   FlowRequest rq;
-  rq.t_max = exact.t_exit + 3 * m.period();
+  rq.t_max = t_exit + 3 * m.period();
   rq.variational = true;
   rq.stop_at_exit = 1;
   rq.extrema = {0, 1};
   Flow flow(m, o.flow);
-  const FlowPoint start = ToFlowPoint(m, {exact.t_exit, exact.x_exit, p.base.v, Mode::kSlipBelow});
+  const FlowPoint start = ToFlowPoint(m, {t_exit, x_exit, p.base.v, Mode::kSlipBelow});
   FlowRun run;
   const double t_return = MedianMicros([&] { flow.Run(start, rq, &run); }, 2001);
   const double t_solve =
-      MedianMicros([&] { ExitPhaseOrbit(m, exact.t_exit + 1e-3, Mode::kSlipBelow, 1, 1, o); }, 501);
+      MedianMicros([&] { ExitPhaseOrbit(m, t_exit + 1e-3, Mode::kSlipBelow, 1, 1, o); }, 501);
   // The closed form's return time from the same exit.
   namespace ref = forced_reference;
   ref::PieceSim<ref::CoulombPiece> sim(
       ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
-  ref::Real t = exact.t_exit, x = exact.x_exit, y = p.base.v;
-  sim.Run(t, x, y, exact.t_exit + 3 * m.period(), 1);
+  ref::Real t = t_exit, x = x_exit, y = p.base.v;
+  sim.Run(t, x, y, t_exit + 3 * m.period(), 1);
   ref::Real back = -1;
   for (const auto& e : sim.events)
     if (e.kind == 1) {
@@ -84,31 +85,31 @@ void StickSlipOrbit(double rtol) {
       "stick-slip orbit (coulomb belt, A 0.3, Omega 0.8), rtol %.0e: %ld steps; one "
       "return %.2f us, Newton solve from 1e-3 off %.2f us; period error %.1e; exit t_e %.17g "
       "x_e %.17g\n",
-      rtol, run.steps, t_return, t_solve, std::abs(static_cast<double>(back) - run.end.t),
-      exact.t_exit, exact.x_exit);
+      rtol, run.steps, t_return, t_solve, std::abs(static_cast<double>(back) - run.end.t), t_exit,
+      x_exit);
 }
 
 void NonStopOrbit(double rtol) {
   const ForcedModel m(DenHartog(1.3));
-  ForcedOrbitOptions o;
+  ShootingOptions o(ForcedModel::FlowDefaults());
   o.flow.rtol = o.flow.atol = rtol;
-  const ForcedOrbit exact = ShootStroboscopic(m, -1.4, 0.01, 1, o);
+  const PeriodicOrbit exact = ShootStroboscopic(m, -1.4, 0.01, 1, o);
+  const double x0 = exact.start.z[0], xdot0 = exact.start.z[1];
   FlowRequest rq;
   rq.t_max = m.period();
   rq.variational = true;
   rq.extrema = {0, 1};
   Flow flow(m, o.flow);
   FlowRun run;
-  const FlowPoint start = ToFlowPoint(m, ForcedStart(m, 0, exact.start.x, exact.start.xdot));
+  const FlowPoint start = ToFlowPoint(m, ForcedStart(m, 0, x0, xdot0));
   const double t_map = MedianMicros([&] { flow.Run(start, rq, &run); }, 2001);
-  const double t_solve = MedianMicros(
-      [&] { ShootStroboscopic(m, exact.start.x + 1e-3, exact.start.xdot, 1, o); }, 501);
+  const double t_solve = MedianMicros([&] { ShootStroboscopic(m, x0 + 1e-3, xdot0, 1, o); }, 501);
   const double V = 1 / (1 - 1.69), U = std::sin(M_PI / 1.3) / (1.3 * (1 + std::cos(M_PI / 1.3)));
   std::printf(
       "non-stop orbit (Den Hartog, Omega 1.3), rtol %.0e: %ld steps; one period %.2f us, "
       "Newton solve from 1e-3 off %.2f us; x_max error %.1e\n",
       rtol, exact.steps, t_map, t_solve,
-      std::abs(exact.extrema.x_max - std::sqrt(V * V - 0.09 * U * U)));
+      std::abs(OrbitExtrema(exact).x_max - std::sqrt(V * V - 0.09 * U * U)));
 }
 
 void DenHartogRun() {
@@ -137,7 +138,7 @@ void DenHartogRun() {
 // The resonance curve as bench/peers/scipy_forced.py sweeps it: 500 values of
 // Omega in [1.2, 2.5], each orbit by stroboscopic Newton from the previous one.
 void ResonanceSweep() {
-  ForcedOrbitOptions o;
+  ShootingOptions o(ForcedModel::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-12;
   double worst = 0;
   const double t = MedianMicros(
@@ -146,10 +147,11 @@ void ResonanceSweep() {
         worst = 0;
         for (int i = 0; i < 500; ++i) {
           const double w = 1.2 + 1.3 * i / 499;
-          const ForcedOrbit orbit = ShootStroboscopic(ForcedModel(DenHartog(w)), x, xd, 1, o);
-          x = orbit.start.x, xd = orbit.start.xdot;
+          const PeriodicOrbit orbit = ShootStroboscopic(ForcedModel(DenHartog(w)), x, xd, 1, o);
+          x = orbit.start.z[0], xd = orbit.start.z[1];
           const double V = 1 / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
-          worst = std::max(worst, std::abs(orbit.extrema.x_max - std::sqrt(V * V - 0.09 * U * U)));
+          worst = std::max(worst,
+                           std::abs(OrbitExtrema(orbit).x_max - std::sqrt(V * V - 0.09 * U * U)));
         }
       },
       11);

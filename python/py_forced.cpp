@@ -58,14 +58,16 @@ struct PyForcedOrbit {
   bool stable = false, from_exit_map = false;
 };
 
-PyForcedOrbit MakeOrbit(const ForcedOrbit& o, const std::vector<Vec2>& pts, bool exit_map) {
+PyForcedOrbit MakeOrbit(const stickslip::PeriodicOrbit& o, int m, const std::vector<Vec2>& pts,
+                        bool exit_map) {
   PyForcedOrbit r;
-  r.m = o.m, r.sticks = o.sticks, r.crossings = o.crossings, r.iterations = o.iterations;
-  r.x0 = o.start.x, r.xdot0 = o.start.xdot, r.period = o.period;
-  r.x_min = o.extrema.x_min, r.x_max = o.extrema.x_max;
-  r.xdot_min = o.extrema.xdot_min, r.xdot_max = o.extrema.xdot_max;
+  const Extrema e = OrbitExtrema(o);
+  r.m = m, r.sticks = o.sticks, r.crossings = o.crossings, r.iterations = o.iterations;
+  r.x0 = o.start.z[0], r.xdot0 = o.start.z[1], r.period = o.period;
+  r.x_min = e.x_min, r.x_max = e.x_max;
+  r.xdot_min = e.xdot_min, r.xdot_max = e.xdot_max;
   r.stable = o.stable, r.from_exit_map = exit_map;
-  r.multipliers = ReadOnly(std::vector<std::complex<double>>{o.multipliers[0], o.multipliers[1]});
+  r.multipliers = ReadOnly(o.multipliers);
   py::array_t<double> mono({2, 2}), p({static_cast<py::ssize_t>(pts.size()), py::ssize_t(2)});
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) mono.mutable_at(i, j) = o.monodromy(i, j);
@@ -126,16 +128,14 @@ PyForcedTrajectory SimulateForced(const ForcedParams& p, double x0, std::optiona
 PyForcedOrbit Orbit(const ForcedParams& p, double x0, double xdot0, int m,
                     std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);
-  ForcedOrbitOptions o;
-  o.flow = FlowOf(rtol, atol);
-  ForcedOrbit r;
+  const ShootingOptions o(FlowOf(rtol, atol));
+  stickslip::PeriodicOrbit r;
   {
     py::gil_scoped_release nogil;
     r = ShootStroboscopic(model, x0, xdot0, m, o);
   }
-  if (r.status != ForcedOrbitStatus::kConverged)
-    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
-  return MakeOrbit(r, {Vec2(r.start.x, r.start.xdot)}, false);
+  if (!r.ok()) RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
+  return MakeOrbit(r, m, {Vec2(r.start.z[0], r.start.z[1])}, false);
 }
 
 std::vector<PyForcedOrbit> Scan(const ForcedParams& p, int max_m, int max_sticks, int grid,
@@ -143,7 +143,7 @@ std::vector<PyForcedOrbit> Scan(const ForcedParams& p, int max_m, int max_sticks
                                 std::optional<double> atol) {
   const ForcedModel model(p);
   ForcedScanOptions o;
-  o.orbit.flow = FlowOf(rtol, atol);
+  o.orbit = ShootingOptions(FlowOf(rtol, atol));
   o.max_m = max_m, o.max_sticks = max_sticks, o.grid = grid, o.exit_samples = exit_samples;
   o.radius = radius;
   const std::string e = o.ValidationError();
@@ -158,7 +158,7 @@ std::vector<PyForcedOrbit> Scan(const ForcedParams& p, int max_m, int max_sticks
   interrupt.RaiseIfInterrupted();
   std::vector<PyForcedOrbit> out;
   for (const ForcedScanOrbit& s : r.orbits)
-    out.push_back(MakeOrbit(s.orbit, s.points, s.from_exit_map));
+    out.push_back(MakeOrbit(s.orbit, s.m, s.points, s.from_exit_map));
   return out;
 }
 

@@ -81,14 +81,14 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
     ForcedParams start = line.params;
     SetAxis(start, line.axis, from);
     ForcedScanOptions so;
-    so.orbit.flow = o.flow;
+    so.orbit = ShootingOptions(o.flow);
     so.max_m = o.max_m, so.max_sticks = 2, so.grid = 3, so.exit_samples = 24;
     so.cancelled = o.cancelled;
     const ForcedOrbits found = FindForcedOrbits(ForcedModel(start), so);
     for (const ForcedScanOrbit& f : found.orbits) {
       if (!f.orbit.stable) continue;
       ForcedBranchOptions bo;
-      bo.flow = o.flow, bo.m = f.orbit.m, bo.max_amplitude = o.max_amplitude;
+      bo.flow = o.flow, bo.m = f.m, bo.max_amplitude = o.max_amplitude;
       bo.palc.ds_max = 0.02 * (line.hi - line.lo);
       bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
       bo.palc.cancelled = o.cancelled;

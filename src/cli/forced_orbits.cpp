@@ -36,7 +36,7 @@ std::string OrbitsScript(const std::string& title, FigureFormat f) {
 int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::string& command) {
   const ForcedInputs in = ForcedInputsFromArguments(args);
   ForcedScanOptions so;
-  so.orbit.flow = in.flow;
+  so.orbit = ShootingOptions(in.flow);
   so.max_m = static_cast<int>(args.Integer("max_m", so.max_m));
   if (so.max_m < 1 || so.max_m > kMaxPeriodMultiple)
     throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
@@ -68,15 +68,15 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
   t.PrependMeta(meta);
   int index = 0;
   for (const ForcedScanOrbit& so_ : r.orbits) {
-    const ForcedOrbit& o = so_.orbit;
+    const PeriodicOrbit& o = so_.orbit;
+    const Extrema e = OrbitExtrema(o);
     ++index;
     for (size_t k = 0; k < so_.points.size(); ++k)
-      t.AddRow({index, o.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
-                static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), o.extrema.x_min,
-                o.extrema.x_max, o.extrema.xdot_min, o.extrema.xdot_max, o.multipliers[0].real(),
-                o.multipliers[0].imag(), o.multipliers[1].real(), o.multipliers[1].imag(),
-                std::abs(o.multipliers[0]), o.stable ? 1 : 0,
-                so_.from_exit_map ? "exit-map" : "strobe"});
+      t.AddRow({index, so_.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
+                static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), e.x_min, e.x_max,
+                e.xdot_min, e.xdot_max, o.multipliers[0].real(), o.multipliers[0].imag(),
+                o.multipliers[1].real(), o.multipliers[1].imag(), std::abs(o.multipliers[0]),
+                o.stable ? 1 : 0, so_.from_exit_map ? "exit-map" : "strobe"});
   }
   app.out().Write("orbits.tsv", t.str());
   app.out().Write("orbits.gp", OrbitsScript(title, format));
@@ -84,8 +84,8 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
   std::cout << prog << ": forced oscillator, " << title << "; " << r.orbits.size()
             << " periodic orbits with m <= " << so.max_m << "\n";
   for (const ForcedScanOrbit& so_ : r.orbits)
-    std::cout << "  m = " << so_.orbit.m << ", " << so_.orbit.sticks << " sticks, x_max "
-              << FormatNumber(so_.orbit.extrema.x_max) << ", |multiplier| "
+    std::cout << "  m = " << so_.m << ", " << so_.orbit.sticks << " sticks, x_max "
+              << FormatNumber(OrbitExtrema(so_.orbit).x_max) << ", |multiplier| "
               << FormatNumber(std::abs(so_.orbit.multipliers[0])) << ", "
               << (so_.orbit.stable ? "stable" : "unstable") << "\n";
   std::cout << "wrote " << app.out().dir() << "/orbits.tsv, orbits.gp"

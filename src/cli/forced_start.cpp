@@ -98,11 +98,9 @@ std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, doubl
   s.m = a.m, s.sticks = a.sticks, s.stable = true, s.settled = true;
   s.x = a.x, s.xdot = a.xdot;
   // Its extrema and multipliers: the orbit solved from the settled point.
-  ForcedOrbitOptions oo;
-  oo.flow = o.flow;
-  const ForcedOrbit orbit = ShootStroboscopic(model, a.x, a.xdot, a.m, oo);
-  if (orbit.status == ForcedOrbitStatus::kConverged) {
-    s.x_max = orbit.extrema.x_max;
+  const PeriodicOrbit orbit = ShootStroboscopic(model, a.x, a.xdot, a.m, ShootingOptions(o.flow));
+  if (orbit.ok()) {
+    s.x_max = OrbitExtrema(orbit).x_max;
     s.mult_max = std::abs(orbit.multipliers[0]);
   }
   return s;
@@ -113,7 +111,7 @@ namespace {
 // The settled point lies on a scanned orbit: same m, near one of its points
 // (the settled iterate is within the attractor's contraction of it).
 bool SameOrbit(const ForcedScanOrbit& o, const StartOrbit& s) {
-  if (o.orbit.m != s.m) return false;
+  if (o.m != s.m) return false;
   for (const Vec2& p : o.points)
     if (std::abs(p[0] - s.x) + std::abs(p[1] - s.xdot) <=
         1e-5 * (1 + std::abs(s.x) + std::abs(s.xdot)))
@@ -127,7 +125,7 @@ std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
                                     const std::optional<StartOrbit>& settled,
                                     const ForcedBranchOptions& o, int m, RunControl& run) {
   ForcedScanOptions so;
-  so.orbit.flow = o.flow;
+  so.orbit = ShootingOptions(o.flow);
   so.min_m = m > 0 ? m : 1;
   so.max_m = m > 0 ? m : kStartScanMaxM;
   so.cancelled = [&run] { return run.Cancelled(); };
@@ -135,13 +133,13 @@ std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
   std::vector<StartOrbit> list;
   bool found = false;
   for (const ForcedScanOrbit& f : r.orbits) {
-    if (std::abs(f.orbit.extrema.x_max) > o.max_amplitude) continue;
+    if (std::abs(OrbitExtrema(f.orbit).x_max) > o.max_amplitude) continue;
     StartOrbit s;
-    s.m = f.orbit.m, s.sticks = f.orbit.sticks, s.stable = f.orbit.stable;
+    s.m = f.m, s.sticks = f.orbit.sticks, s.stable = f.orbit.stable;
     s.settled = settled && SameOrbit(f, *settled);
     found = found || s.settled;
     s.x = f.points[0][0], s.xdot = f.points[0][1];
-    s.x_max = f.orbit.extrema.x_max, s.mult_max = std::abs(f.orbit.multipliers[0]);
+    s.x_max = OrbitExtrema(f.orbit).x_max, s.mult_max = std::abs(f.orbit.multipliers[0]);
     list.push_back(s);
   }
   if (settled && !found && (m == 0 || settled->m == m)) list.push_back(*settled);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include "forced_shooting.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"

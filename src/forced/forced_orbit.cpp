@@ -4,7 +4,6 @@
 #include <cmath>
 #include <memory>
 
-#include "forced_shooting.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -19,80 +18,75 @@ void Multipliers(const Mat2& M, std::complex<double> out[2]) {
   if (std::abs(out[1]) > std::abs(out[0])) std::swap(out[0], out[1]);
 }
 
-namespace forced_detail {
+int PeriodMultiple(const ForcedModel& model, const PeriodicOrbit& o) {
+  return static_cast<int>(std::lround(o.period / model.period()));
+}
 
-// One shooting per thread for the options last used (a forced orbit is
-// shot per scan point and per branch step: the flow and its buffers are
-// kept, the model assigned).
-Shooting& CachedShooting(const ForcedModel& model, const ForcedOrbitOptions& o) {
-  const std::string err = o.flow.ValidationError();
+Extrema OrbitExtrema(const PeriodicOrbit& o) {
+  return o.lo.size() >= 2 && o.hi.size() >= 2 ? Extrema{o.lo[0], o.hi[0], o.lo[1], o.hi[1]}
+                                              : Extrema::Empty();
+}
+
+namespace {
+
+// One shooting per thread for the options last used (a forced orbit is shot
+// per scan point: the flow and its buffers are kept, the model assigned).
+// An exit-phase search sets its own return time, so that is not compared.
+Shooting& CachedShooting(const ForcedModel& model, const ShootingOptions& o) {
+  const std::string err = o.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
-  if (!(o.tol > 0) || o.max_newton < 1)
-    throw InvalidArgument("orbit options: tol must be > 0 and max_newton >= 1");
-  ShootingOptions so;
-  so.flow = o.flow;
-  so.max_newton = o.max_newton;
-  so.tol = o.tol;
-  so.max_steps = o.flow.max_steps;
   thread_local std::unique_ptr<Shooting> cached;
   if (cached) {
     const ShootingOptions& c = cached->options();
-    if (c.flow == so.flow && c.max_newton == so.max_newton && c.tol == so.tol &&
-        c.max_steps == so.max_steps) {
+    if (c.flow == o.flow && c.max_newton == o.max_newton && c.tol == o.tol &&
+        c.max_steps == o.max_steps && c.extrema == o.extrema) {
       cached->set_system(model);
+      cached->set_max_return_time(o.max_return_time);
       return *cached;
     }
   }
-  cached = std::make_unique<Shooting>(model, so);
+  cached = std::make_unique<Shooting>(model, o);
   return *cached;
 }
 
-ForcedOrbitStatus FromOrbitStatus(OrbitStatus s) {
-  switch (s) {
-    case OrbitStatus::kOk:
-      return ForcedOrbitStatus::kConverged;
-    case OrbitStatus::kSingular:
-      return ForcedOrbitStatus::kSingular;
-    case OrbitStatus::kNotConverged:
-    case OrbitStatus::kNoReturn:
-      return ForcedOrbitStatus::kNoConvergence;
-    default:
-      return ForcedOrbitStatus::kFlowFailed;
-  }
-}
+}  // namespace
 
-Extrema ExtremaOf(const PeriodicOrbit& o) {
-  return o.lo.size() >= 2 ? Extrema{o.lo[0], o.hi[0], o.lo[1], o.hi[1]} : Extrema::Empty();
-}
-
-}  // namespace forced_detail
-
-ForcedOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0, int m,
-                              const ForcedOrbitOptions& options) {
+PeriodicOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0, int m,
+                                const ShootingOptions& options) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
-  Shooting& shooting = forced_detail::CachedShooting(model, options);
+  Shooting& shooting = CachedShooting(model, options);
   PoincareSection section;
   section.kind = SectionKind::kTime;
   section.time = m * model.period();
-  const PeriodicOrbit p = shooting.Find({0, Eigen::Vector3d(x0, xdot0, 0), ModeSet()}, section);
-  ForcedOrbit o;
-  o.m = m;
-  o.period = section.time;
-  o.status = forced_detail::FromOrbitStatus(p.status);
-  o.message = p.message;
-  o.iterations = p.iterations;
-  o.update = p.update;
-  if (!p.ok()) return o;
-  o.start = {p.start.t, p.start.z[0], p.start.z[1], p.start.mode[0]};
-  o.monodromy = p.monodromy;
-  o.multipliers[0] = p.multipliers[0];
-  o.multipliers[1] = p.multipliers[1];
-  o.stable = p.stable;
-  o.sticks = p.sticks;
-  o.crossings = p.crossings;
-  o.extrema = forced_detail::ExtremaOf(p);
-  o.steps = p.steps;
-  return o;
+  return shooting.Find({0, Eigen::Vector3d(x0, xdot0, 0), ModeSet()}, section);
+}
+
+// The exit-phase map (docs/theory.md, "One shooting"): stick collapses the
+// state to one number, the phase at which it ends, so the return from one
+// exit to the next is a circle map t_e -> t'; on the one shooting it is the
+// stick-exit section of (x, x', theta), closing after `sticks` exits and m
+// turns of theta.
+PeriodicOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode exit_mode, int sticks,
+                             int m, const ShootingOptions& options) {
+  if (m < 1 || sticks < 1) throw InvalidArgument("m and sticks must be >= 1");
+  if (exit_mode == Mode::kStick) throw InvalidArgument("exit_mode must be a slip mode");
+  Shooting& shooting = CachedShooting(model, options);
+  const double T = model.period();
+  shooting.set_max_return_time((m + 2) * T);  // well past the expected return
+  FlowPoint start{t_guess, Eigen::Vector3d(0, model.v(), model.omega() * t_guess),
+                  ModeSet(exit_mode)};
+  // On the band's edge x_e = +-mu_s - 2 beta v + A cos(Omega t_e).
+  const double sign = exit_mode == Mode::kSlipBelow ? 1 : -1;
+  model.ProjectOnExit(ModeSet(Mode::kStick), 0, sign * model.static_limit(), start.z);
+  PeriodicOrbit p = shooting.Find(start, PoincareSection::StickExit(0, sticks, m));
+  if (p.status == OrbitStatus::kNoReturn)
+    p.message = "fewer stick exits than asked for within m + 2 periods";
+  if (!p.ok()) return p;
+  // The exit time in [0, T) (theta is its clock: t = theta / Omega).
+  const double t = p.start.z[2] / model.omega();
+  p.start.t = t - std::floor(t / T) * T;
+  p.start.z[2] = model.omega() * p.start.t;
+  return p;
 }
 
 }  // namespace stickslip

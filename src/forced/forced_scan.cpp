@@ -10,7 +10,7 @@
 namespace stickslip {
 
 std::string ForcedScanOptions::ValidationError() const {
-  const std::string e = orbit.flow.ValidationError();
+  const std::string e = orbit.ValidationError();
   if (!e.empty()) return e;
   for (const std::string& range : {IntRangeError("min_m", min_m, 1, kMaxMultiple),
                                    IntRangeError("max_m", max_m, min_m, kMaxMultiple),
@@ -19,7 +19,6 @@ std::string ForcedScanOptions::ValidationError() const {
                                    IntRangeError("exit_samples", exit_samples, 2, kMaxExitSamples)})
     if (!range.empty()) return range;
   if (!(radius >= 0) || !std::isfinite(radius)) return "radius = " + Num(radius) + " must be >= 0";
-  if (!(orbit.tol > 0) || orbit.max_newton < 1) return "orbit: tol must be > 0, max_newton >= 1";
   return "";
 }
 
@@ -72,12 +71,13 @@ class Scan {
     int d = 1;
     while (d < m && !(m % d == 0 && Same(pts[d], z))) ++d;
     for (const ForcedScanOrbit& known : r_.orbits)
-      if (known.orbit.m == d)
+      if (known.m == d)
         for (const Vec2& p : known.points)
           if (Same(p, z)) return;
     ForcedScanOrbit o;
     o.orbit = ShootStroboscopic(m_, z[0], z[1], d, o_.orbit);
-    if (o.orbit.status != ForcedOrbitStatus::kConverged) return;
+    if (!o.orbit.ok()) return;
+    o.m = d;
     o.points.assign(pts.begin(), pts.begin() + d);
     o.from_exit_map = from_exit;
     r_.orbits.push_back(o);
@@ -86,8 +86,7 @@ class Scan {
   void ExitMap(Mode mode);
   ForcedOrbits Result() {
     std::sort(r_.orbits.begin(), r_.orbits.end(), [](const auto& a, const auto& b) {
-      return a.orbit.m != b.orbit.m ? a.orbit.m < b.orbit.m
-                                    : a.orbit.extrema.x_max < b.orbit.extrema.x_max;
+      return a.m != b.m ? a.m < b.m : OrbitExtrema(a.orbit).x_max < OrbitExtrema(b.orbit).x_max;
     });
     return r_;
   }
@@ -115,8 +114,8 @@ void Scan::Strobe() {
         const double x = n == 1 ? 0 : -r + 2 * r * i / (n - 1);
         const double xd = n == 1 ? m_.v() : -rv + 2 * rv * j / (n - 1);
         ++r_.shots;
-        const ForcedOrbit o = ShootStroboscopic(m_, x, xd, m, o_.orbit);
-        if (o.status == ForcedOrbitStatus::kConverged) Add(Vec2(o.start.x, o.start.xdot), m, false);
+        const PeriodicOrbit o = ShootStroboscopic(m_, x, xd, m, o_.orbit);
+        if (o.ok()) Add(Vec2(o.start.z[0], o.start.z[1]), m, false);
       }
 }
 
@@ -147,11 +146,11 @@ void Scan::ExitMap(Mode mode) {
         if (Cancelled()) return;
         ++r_.shots;
         const double guess = a + (b - a) * ga / (ga - gb);
-        const ForcedExitOrbit e = ExitPhaseOrbit(m_, guess, mode, s + 1, m, o_.orbit);
-        if (e.status != ForcedOrbitStatus::kConverged) continue;
+        const PeriodicOrbit e = ExitPhaseOrbit(m_, guess, mode, s + 1, m, o_.orbit);
+        if (!e.ok()) continue;
         // Its stroboscopic point: from the exit on to the next multiple of T.
-        const double t1 = std::ceil(e.t_exit / T) * T;
-        if (Run({e.t_exit, e.x_exit, m_.v(), mode}, t1))
+        const double t1 = std::ceil(e.start.t / T) * T;
+        if (Run({e.start.t, e.start.z[0], m_.v(), mode}, t1))
           Add(Vec2(run_.end.z[0], run_.end.z[1]), m, true);
       }
     }

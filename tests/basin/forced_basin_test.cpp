@@ -47,9 +47,10 @@ TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
       ++checked;
     } else {
       EXPECT_EQ(a.sticks, 1);
-      const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 1, ForcedOrbitOptions());
-      ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
-      EXPECT_NEAR(orbit.start.x, a.x, 1e-7);
+      const PeriodicOrbit orbit =
+          ShootStroboscopic(m, a.x, a.xdot, 1, ShootingOptions(ForcedModel::FlowDefaults()));
+      ASSERT_TRUE(orbit.ok()) << orbit.message;
+      EXPECT_NEAR(orbit.start.z[0], a.x, 1e-7);
       EXPECT_EQ(orbit.sticks, 1);
       EXPECT_TRUE(orbit.stable);
       checked += 2;
@@ -135,11 +136,12 @@ TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
   int checked = 0;
   for (const Attractor& a : b.attractors) {
     if (a.kind != AttractorKind::kPeriodic || a.m != 2) continue;
-    const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 2, ForcedOrbitOptions());
-    ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
-    EXPECT_NEAR(orbit.start.x, a.x, 1e-7);
-    const FlowRun half =
-        testing_util::RunForced(m, ForcedStart(m, 0, orbit.start.x, orbit.start.xdot), m.period());
+    const PeriodicOrbit orbit =
+        ShootStroboscopic(m, a.x, a.xdot, 2, ShootingOptions(ForcedModel::FlowDefaults()));
+    ASSERT_TRUE(orbit.ok()) << orbit.message;
+    EXPECT_NEAR(orbit.start.z[0], a.x, 1e-7);
+    const FlowRun half = testing_util::RunForced(
+        m, ForcedStart(m, 0, orbit.start.z[0], orbit.start.z[1]), m.period());
     ASSERT_TRUE(Reached(half));
     std::printf("[ measured ] m = 2 cycle: x = %.10g (representative), %.10g\n", a.x,
                 half.end.z[0]);
@@ -189,9 +191,10 @@ TEST(ForcedBasin, PeriodLimitIsAnOption) {
   for (const Attractor& a : b.attractors)
     if (a.kind == AttractorKind::kPeriodic && a.m == 27) {
       EXPECT_EQ(a.sticks, 18);
-      const ForcedOrbit orbit = ShootStroboscopic(m, a.x, a.xdot, 27, ForcedOrbitOptions());
-      ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
-      EXPECT_NEAR(orbit.start.x, a.x, 1e-6);
+      const PeriodicOrbit orbit =
+          ShootStroboscopic(m, a.x, a.xdot, 27, ShootingOptions(ForcedModel::FlowDefaults()));
+      ASSERT_TRUE(orbit.ok()) << orbit.message;
+      EXPECT_NEAR(orbit.start.z[0], a.x, 1e-6);
       EXPECT_TRUE(orbit.stable);
       std::printf("[ measured ] period 27: %d starts, |mu| = %.4f\n", a.starts,
                   std::abs(orbit.multipliers[0]));

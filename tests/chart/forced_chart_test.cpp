@@ -49,14 +49,14 @@ TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
     // The non-stop orbit a little above the boundary, then the seed there.
     const double a = DenHartogStopForce(mu, w) * 1.02;
     const ForcedModel model(Coulomb(mu, mu, 0, 0, a, w));
-    ForcedOrbitOptions oo;
+    ShootingOptions oo(ForcedModel::FlowDefaults());
     oo.flow = o.flow;
-    const ForcedOrbit orbit = ShootStroboscopic(model, a / (1 - w * w), 0.01, 1, oo);
-    ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+    const PeriodicOrbit orbit = ShootStroboscopic(model, a / (1 - w * w), 0.01, 1, oo);
+    ASSERT_TRUE(orbit.ok()) << orbit.message;
     ASSERT_EQ(orbit.sticks, 0);
     std::string why;
     const ForcedCurve c = TraceForcedCurve(Coulomb(mu, mu, 0, 0, a, w), o, CurveKind::kGrazing, 1,
-                                           orbit.start.x, orbit.start.xdot, w, a, &why);
+                                           orbit.start.z[0], orbit.start.z[1], w, a, &why);
     EXPECT_EQ(why, "") << c.ends.Text();
     ASSERT_GT(c.points.size(), 10u);
     double worst = 0;
@@ -154,7 +154,7 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
       bool match = false, any_stable = false;
       for (const ForcedScanOrbit& s : f.orbits) {
         any_stable = any_stable || s.orbit.stable;
-        match = match || (s.orbit.stable && s.orbit.m == a.m && s.orbit.sticks == a.sticks);
+        match = match || (s.orbit.stable && s.m == a.m && s.orbit.sticks == a.sticks);
       }
       if (a.kind == AttractorKind::kPeriodic) {
         EXPECT_TRUE(match) << "Omega = " << g.x1[i] << ", force = " << g.x2[j] << ": m = " << a.m

@@ -46,35 +46,35 @@ void Check(const ForcedParams& p, int sticks, int m) {
   Mode mode = Mode::kSlipBelow;
   GuessExit(model, &t_guess, &mode);
   ASSERT_GT(t_guess, 0) << "no stick exit in the transient";
-  ForcedOrbitOptions o;
+  ShootingOptions o(ForcedModel::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-14;
-  const ForcedExitOrbit orbit = ExitPhaseOrbit(model, t_guess, mode, sticks, m, o);
-  ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
+  const PeriodicOrbit orbit = ExitPhaseOrbit(model, t_guess, mode, sticks, m, o);
+  ASSERT_TRUE(orbit.ok()) << orbit.message;
   const int sigma = mode == Mode::kSlipBelow ? 1 : -1;
   const Real T = model.period();
-  const Real back = ClosedFormReturn(p, orbit.t_exit, sigma, sticks);
-  EXPECT_NEAR(static_cast<double>(back - orbit.t_exit - m * T), 0, 1e-11);
+  const Real back = ClosedFormReturn(p, orbit.start.t, sigma, sticks);
+  EXPECT_NEAR(static_cast<double>(back - orbit.start.t - m * T), 0, 1e-11);
   const Real d = 1e-6L;
-  const Real fd = (ClosedFormReturn(p, orbit.t_exit + d, sigma, sticks) -
-                   ClosedFormReturn(p, orbit.t_exit - d, sigma, sticks)) /
+  const Real fd = (ClosedFormReturn(p, orbit.start.t + d, sigma, sticks) -
+                   ClosedFormReturn(p, orbit.start.t - d, sigma, sticks)) /
                   (2 * d);
-  EXPECT_NEAR(orbit.multiplier, static_cast<double>(fd), 1e-7);
+  EXPECT_NEAR(orbit.multipliers[0].real(), static_cast<double>(fd), 1e-7);
   // The same orbit by stroboscopic shooting: the same nontrivial multiplier.
   // Its state at the next theta = 0 starts the shooting.
   const FlowRun to_zero = testing_util::RunForced(
-      model, {orbit.t_exit, orbit.x_exit, model.v(), mode},
-      std::ceil(orbit.t_exit / model.period()) * model.period(), {}, o.flow);
-  const ForcedOrbit strobe = ShootStroboscopic(model, to_zero.end.z[0], to_zero.end.z[1], m, o);
-  ASSERT_EQ(strobe.status, ForcedOrbitStatus::kConverged) << strobe.message;
-  EXPECT_NEAR(strobe.multipliers[0].real(), orbit.multiplier, 1e-9);
+      model, {orbit.start.t, orbit.start.z[0], model.v(), mode},
+      std::ceil(orbit.start.t / model.period()) * model.period(), {}, o.flow);
+  const PeriodicOrbit strobe = ShootStroboscopic(model, to_zero.end.z[0], to_zero.end.z[1], m, o);
+  ASSERT_TRUE(strobe.ok()) << strobe.message;
+  EXPECT_NEAR(strobe.multipliers[0].real(), orbit.multipliers[0].real(), 1e-9);
   EXPECT_EQ(strobe.sticks, sticks);
   EXPECT_EQ(strobe.crossings, orbit.crossings);
-  EXPECT_NEAR(strobe.extrema.x_max, orbit.extrema.x_max, 1e-11);
+  EXPECT_NEAR(OrbitExtrema(strobe).x_max, OrbitExtrema(orbit).x_max, 1e-11);
   std::printf(
       "[ measured ] %d sticks in %d periods: t_e = %.15g, multiplier %.12g, "
       "closed form: return error %.2e, multiplier %.12g\n",
-      sticks, m, orbit.t_exit, orbit.multiplier, static_cast<double>(back - orbit.t_exit - m * T),
-      static_cast<double>(fd));
+      sticks, m, orbit.start.t, orbit.multipliers[0].real(),
+      static_cast<double>(back - orbit.start.t - m * T), static_cast<double>(fd));
 }
 
 TEST(ForcedExitMap, BeltStickSlipOrbitMatchesCoulombClosedForm) {
@@ -115,12 +115,13 @@ TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
              model, ForcedStart(model, 0, r.start.z[0], r.start.z[1]), model.period()))
       if (e.kind == SwitchKind::kStickOut) t = e.t, mode = e.after[0];
     ASSERT_GT(t, 0) << "Omega = " << r.p;
-    const ForcedExitOrbit o = ExitPhaseOrbit(model, t, mode, 1, 1, ForcedOrbitOptions());
-    ASSERT_EQ(o.status, ForcedOrbitStatus::kConverged) << o.message;
-    EXPECT_NEAR(o.multiplier, r.multipliers[0].real(), 1e-8) << "Omega = " << r.p;
-    EXPECT_LT(o.multiplier, -1) << "Omega = " << r.p;
-    EXPECT_FALSE(o.stable) << "Omega = " << r.p << ", multiplier " << o.multiplier;
-    lowest = std::min(lowest, o.multiplier);
+    const PeriodicOrbit o =
+        ExitPhaseOrbit(model, t, mode, 1, 1, ShootingOptions(ForcedModel::FlowDefaults()));
+    ASSERT_TRUE(o.ok()) << o.message;
+    EXPECT_NEAR(o.multipliers[0].real(), r.multipliers[0].real(), 1e-8) << "Omega = " << r.p;
+    EXPECT_LT(o.multipliers[0].real(), -1) << "Omega = " << r.p;
+    EXPECT_FALSE(o.stable) << "Omega = " << r.p << ", multiplier " << o.multipliers[0].real();
+    lowest = std::min(lowest, o.multipliers[0].real());
     ++checked;
   }
   std::printf("[ measured ] %d orbits, multipliers down to %.4f\n", checked, lowest);

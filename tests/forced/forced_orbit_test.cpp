@@ -95,21 +95,21 @@ TEST(ForcedOrbit, DenHartogFormulaSolvesTheClosedFormPieces) {
 }
 
 TEST(ForcedOrbit, NonStopOrbitsMatchDenHartog) {
-  ForcedOrbitOptions o;
+  ShootingOptions o(ForcedModel::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-14;
   double worst = 0;
   for (double w : kOmegas) {
     const ForcedModel m(DenHartog(w));
     const double V = 1 / (1 - w * w);
-    const ForcedOrbit orbit = ShootStroboscopic(m, V, 0.01, 1, o);
-    ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged)
-        << "Omega = " << w << ": " << orbit.message;
+    const PeriodicOrbit orbit = ShootStroboscopic(m, V, 0.01, 1, o);
+    ASSERT_TRUE(orbit.ok()) << "Omega = " << w << ": " << orbit.message;
     ASSERT_EQ(orbit.sticks, 0) << "Omega = " << w;
     EXPECT_EQ(orbit.crossings, 2) << "Omega = " << w;
     const double X = static_cast<double>(DenHartogX(0.3L, 1, w));
-    EXPECT_NEAR(orbit.extrema.x_max, X, 1e-9) << "Omega = " << w;
-    EXPECT_NEAR(-orbit.extrema.x_min, X, 1e-9) << "Omega = " << w;
-    worst = std::max({worst, std::abs(orbit.extrema.x_max - X), std::abs(orbit.extrema.x_min + X)});
+    EXPECT_NEAR(OrbitExtrema(orbit).x_max, X, 1e-9) << "Omega = " << w;
+    EXPECT_NEAR(-OrbitExtrema(orbit).x_min, X, 1e-9) << "Omega = " << w;
+    worst = std::max(
+        {worst, std::abs(OrbitExtrema(orbit).x_max - X), std::abs(OrbitExtrema(orbit).x_min + X)});
   }
   std::printf("[ measured ] Den Hartog x_max, x_min: max error %.2e over %zu Omegas\n", worst,
               std::size(kOmegas));
@@ -127,24 +127,24 @@ Vec2 ClosedFormMap(const ForcedParams& p, Real x, Real y, Real t_end) {
 // A fixed point is one for the closed-form map too, and its multipliers are
 // those of the closed-form map's central differences.
 void CheckAgainstClosedForm(const ForcedParams& p, double x0, double xdot0, int m) {
-  ForcedOrbitOptions o;
+  ShootingOptions o(ForcedModel::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-14;
   const ForcedModel model(p);
-  const ForcedOrbit orbit = ShootStroboscopic(model, x0, xdot0, m, o);
-  ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged) << orbit.message;
-  const Vec2 end = ClosedFormMap(p, orbit.start.x, orbit.start.xdot, orbit.period);
-  EXPECT_NEAR(end[0], orbit.start.x, 1e-11);
-  EXPECT_NEAR(end[1], orbit.start.xdot, 1e-11);
+  const PeriodicOrbit orbit = ShootStroboscopic(model, x0, xdot0, m, o);
+  ASSERT_TRUE(orbit.ok()) << orbit.message;
+  const Vec2 end = ClosedFormMap(p, orbit.start.z[0], orbit.start.z[1], orbit.period);
+  EXPECT_NEAR(end[0], orbit.start.z[0], 1e-11);
+  EXPECT_NEAR(end[1], orbit.start.z[1], 1e-11);
   const Real d = 1e-6L;
   Mat2 fd;
   for (int col = 0; col < 2; ++col) {
-    if (col == 1 && orbit.start.mode == Mode::kStick) {  // no x' direction in stick
+    if (col == 1 && orbit.start.mode[0] == Mode::kStick) {  // no x' direction in stick
       fd.col(1).setZero();
       continue;
     }
     const Real dx = col == 0 ? d : 0, dy = col == 1 ? d : 0;
-    const Vec2 plus = ClosedFormMap(p, orbit.start.x + dx, orbit.start.xdot + dy, orbit.period);
-    const Vec2 minus = ClosedFormMap(p, orbit.start.x - dx, orbit.start.xdot - dy, orbit.period);
+    const Vec2 plus = ClosedFormMap(p, orbit.start.z[0] + dx, orbit.start.z[1] + dy, orbit.period);
+    const Vec2 minus = ClosedFormMap(p, orbit.start.z[0] - dx, orbit.start.z[1] - dy, orbit.period);
     fd.col(col) = (plus - minus) / static_cast<double>(2 * d);
   }
   std::complex<double> ref_mult[2];

@@ -26,8 +26,8 @@ ForcedOrbits Scan(const ForcedParams& p) {
   std::printf("[ measured ] scan: %zu orbits from %d shots (%d converged) in %.3f s\n",
               r.orbits.size(), r.shots, r.converged, s);
   for (const ForcedScanOrbit& o : r.orbits)
-    std::printf("             m = %d, sticks %d, x_max %.12g, |mult| %.3g, %s, %s\n", o.orbit.m,
-                o.orbit.sticks, o.orbit.extrema.x_max, std::abs(o.orbit.multipliers[0]),
+    std::printf("             m = %d, sticks %d, x_max %.12g, |mult| %.3g, %s, %s\n", o.m,
+                o.orbit.sticks, OrbitExtrema(o.orbit).x_max, std::abs(o.orbit.multipliers[0]),
                 o.orbit.stable ? "stable" : "unstable", o.from_exit_map ? "exit map" : "strobe");
   return r;
 }
@@ -45,10 +45,10 @@ TEST(ForcedScan, FindsDenHartogsNonStopOrbit) {
     ASSERT_TRUE(r.ok());
     int nonstop = 0;
     for (const ForcedScanOrbit& o : r.orbits) {
-      if (o.orbit.m != 1 || o.orbit.sticks != 0) continue;
+      if (o.m != 1 || o.orbit.sticks != 0) continue;
       ++nonstop;
-      EXPECT_NEAR(o.orbit.extrema.x_max, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
-      EXPECT_NEAR(-o.orbit.extrema.x_min, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
+      EXPECT_NEAR(OrbitExtrema(o.orbit).x_max, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
+      EXPECT_NEAR(-OrbitExtrema(o.orbit).x_min, DenHartogX(0.3, 1, w), 1e-9) << "Omega = " << w;
     }
     EXPECT_EQ(nonstop, 1) << "Omega = " << w;
   }
@@ -58,18 +58,18 @@ TEST(ForcedScan, FindsDenHartogsNonStopOrbit) {
 // closed-form simulation, which sticks as often.
 void CheckAgainstClosedForm(const ForcedParams& p, const ForcedOrbits& r) {
   for (const ForcedScanOrbit& o : r.orbits) {
-    ASSERT_EQ(static_cast<int>(o.points.size()), o.orbit.m);
+    ASSERT_EQ(static_cast<int>(o.points.size()), o.m);
     ref::PieceSim<ref::CoulombPiece> sim(
         ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
     Real t = 0, x = o.points[0][0], y = o.points[0][1];
     const Real T = 2 * std::acos(Real(-1)) / p.omega;
-    for (int j = 1; j <= o.orbit.m; ++j) {
+    for (int j = 1; j <= o.m; ++j) {
       sim.Run(t, x, y, j * T);
-      const Vec2 next = o.points[j % o.orbit.m];
-      EXPECT_NEAR(static_cast<double>(x), next[0], 1e-9) << "m " << o.orbit.m << " point " << j;
-      EXPECT_NEAR(static_cast<double>(y), next[1], 1e-9) << "m " << o.orbit.m << " point " << j;
+      const Vec2 next = o.points[j % o.m];
+      EXPECT_NEAR(static_cast<double>(x), next[0], 1e-9) << "m " << o.m << " point " << j;
+      EXPECT_NEAR(static_cast<double>(y), next[1], 1e-9) << "m " << o.m << " point " << j;
     }
-    EXPECT_EQ(sim.sticks, o.orbit.sticks) << "m " << o.orbit.m;
+    EXPECT_EQ(sim.sticks, o.orbit.sticks) << "m " << o.m;
   }
 }
 
@@ -105,8 +105,8 @@ TEST(ForcedScan, FindsThePeriodDoubledOrbit) {
   const ForcedScanOrbit* doubled = nullptr;
   bool m1_unstable = false;
   for (const ForcedScanOrbit& o : r.orbits) {
-    if (o.orbit.m == 2 && o.orbit.stable) doubled = &o;
-    if (o.orbit.m == 1 && o.orbit.sticks == 1) m1_unstable = !o.orbit.stable;
+    if (o.m == 2 && o.orbit.stable) doubled = &o;
+    if (o.m == 1 && o.orbit.sticks == 1) m1_unstable = !o.orbit.stable;
   }
   EXPECT_TRUE(m1_unstable);
   ASSERT_NE(doubled, nullptr);
@@ -149,11 +149,11 @@ TEST(ForcedScan, CancelKeepsWhatWasFound) {
     for (const ForcedScanOrbit& c : r.orbits) {
       bool known = false;
       for (const ForcedScanOrbit& a : all.orbits)
-        known = known || (a.orbit.m == c.orbit.m &&
-                          std::abs(a.orbit.extrema.x_max - c.orbit.extrema.x_max) < 1e-10);
-      EXPECT_TRUE(known) << "m = " << c.orbit.m << ", x_max " << c.orbit.extrema.x_max;
-      EXPECT_EQ(c.orbit.status, ForcedOrbitStatus::kConverged);
-      EXPECT_EQ(static_cast<int>(c.points.size()), c.orbit.m);
+        known = known || (a.m == c.m && std::abs(OrbitExtrema(a.orbit).x_max -
+                                                 OrbitExtrema(c.orbit).x_max) < 1e-10);
+      EXPECT_TRUE(known) << "m = " << c.m << ", x_max " << OrbitExtrema(c.orbit).x_max;
+      EXPECT_TRUE(c.orbit.ok());
+      EXPECT_EQ(static_cast<int>(c.points.size()), c.m);
     }
   }
   EXPECT_GT(found_at, 0) << "no cancelled scan kept an orbit";

@@ -79,11 +79,11 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   // the m orbit's multiplier is -(1 + a), the 2-cycle's (1 - 2a)^2 ~ 1 - 4a,
   // so (1 - mu_2m) / |1 + mu_m| -> 4 at the PD (mu_m by separate shooting).
   const OrbitRow& r0 = d.rows.front();
-  ForcedOrbitOptions oo;
+  ShootingOptions oo(ForcedModel::FlowDefaults());
   oo.flow = Options().flow;
   const ForcedModel m0(StribeckScene(r0.p));
-  const ForcedOrbit single = ShootStroboscopic(m0, pd.start.z[0], pd.start.z[1], 1, oo);
-  ASSERT_EQ(single.status, ForcedOrbitStatus::kConverged);
+  const PeriodicOrbit single = ShootStroboscopic(m0, pd.start.z[0], pd.start.z[1], 1, oo);
+  ASSERT_TRUE(single.ok());
   const double flip = std::abs(1 + single.multipliers[0].real());
   const double ratio4 = (1 - r0.multipliers[0].real()) / flip;
   std::printf("[ measured ] (1 - mu_2) / |1 + mu_1| = %.6f at Omega - Omega_PD = %.3e\n", ratio4,
@@ -122,12 +122,12 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   const ForcedParams p = StribeckScene(0.7);
   const ForcedModel m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
-  ForcedOrbitOptions oo;
+  ShootingOptions oo(ForcedModel::FlowDefaults());
   oo.flow = o.flow;
-  const ForcedOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
-  ASSERT_EQ(orbit.status, ForcedOrbitStatus::kConverged);
+  const PeriodicOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
+  ASSERT_TRUE(orbit.ok());
   const OrbitBranch d =
-      ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.x, orbit.start.xdot, 0.6, 0.8, o);
+      ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, o);
   EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());

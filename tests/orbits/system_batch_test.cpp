@@ -99,19 +99,20 @@ TEST(SystemBatch, ForcedRowsEqualTheSingleOrbitApi) {
   const auto cols = BatchGrid(5, 4);
   const SystemBatchOptions opt = BatchOptions(1);
   const SystemBatch b = StroboscopicOrbits(ForcedModel(base), cols, opt);
-  ForcedOrbitOptions fo;
+  ShootingOptions fo(ForcedModel::FlowDefaults());
   fo.flow.rtol = fo.flow.atol = 1e-13;
   for (std::size_t i = 0; i < b.rows(); ++i) {
     if (b.status[i] != OrbitStatus::kOk) continue;
     const ForcedModel model(RowParams(base, cols, i));
-    const ForcedOrbit o = ShootStroboscopic(model, b.start[2 * i], b.start[2 * i + 1], b.m[i], fo);
-    ASSERT_EQ(o.status, ForcedOrbitStatus::kConverged) << "row " << i << ": " << o.message;
+    const PeriodicOrbit o =
+        ShootStroboscopic(model, b.start[2 * i], b.start[2 * i + 1], b.m[i], fo);
+    ASSERT_TRUE(o.ok()) << "row " << i << ": " << o.message;
     EXPECT_EQ(o.sticks, b.sticks[i]) << "row " << i;
     EXPECT_EQ(o.stable, b.stable[i] == 1) << "row " << i;
-    EXPECT_NEAR(o.start.x, b.start[2 * i], 1e-12) << "row " << i;
-    EXPECT_NEAR(o.extrema.x_min, b.lo[2 * i], 1e-12) << "row " << i;
-    EXPECT_NEAR(o.extrema.x_max, b.hi[2 * i], 1e-12) << "row " << i;
-    EXPECT_NEAR(o.extrema.xdot_max, b.hi[2 * i + 1], 1e-12) << "row " << i;
+    EXPECT_NEAR(o.start.z[0], b.start[2 * i], 1e-12) << "row " << i;
+    EXPECT_NEAR(OrbitExtrema(o).x_min, b.lo[2 * i], 1e-12) << "row " << i;
+    EXPECT_NEAR(OrbitExtrema(o).x_max, b.hi[2 * i], 1e-12) << "row " << i;
+    EXPECT_NEAR(OrbitExtrema(o).xdot_max, b.hi[2 * i + 1], 1e-12) << "row " << i;
     EXPECT_NEAR(std::abs(o.multipliers[0]), b.multiplier[i], 1e-9) << "row " << i;
   }
   EXPECT_GE(b.found(), 16u);
@@ -186,17 +187,17 @@ TEST(SystemBatch, SlowlyAttractingOrbitsKeepTheirLeastPeriod) {
   SystemBatchOptions o = BatchOptions(2);
   o.start = Eigen::Vector3d(0, 0, 0);
   const SystemBatch b = StroboscopicOrbits(ForcedModel(BatchSeed(1.45)), {w}, o);
-  ForcedOrbitOptions fo;
+  ShootingOptions fo(ForcedModel::FlowDefaults());
   fo.flow.rtol = fo.flow.atol = 1e-13;
   for (std::size_t i = 0; i < 2; ++i) {
     ASSERT_EQ(b.status[i], OrbitStatus::kOk) << i;
     EXPECT_EQ(b.m[i], 1) << i;
     EXPECT_GT(b.multiplier[i], 0.8) << i;
-    const ForcedOrbit r = ShootStroboscopic(ForcedModel(BatchSeed(w.values[i])), b.start[2 * i],
-                                            b.start[2 * i + 1], 1, fo);
-    ASSERT_EQ(r.status, ForcedOrbitStatus::kConverged);
+    const PeriodicOrbit r = ShootStroboscopic(ForcedModel(BatchSeed(w.values[i])), b.start[2 * i],
+                                              b.start[2 * i + 1], 1, fo);
+    ASSERT_TRUE(r.ok());
     EXPECT_NEAR(std::abs(r.multipliers[0]), b.multiplier[i], 1e-9);
-    EXPECT_NEAR(r.extrema.x_max, b.hi[2 * i], 1e-12);
+    EXPECT_NEAR(OrbitExtrema(r).x_max, b.hi[2 * i], 1e-12);
     EXPECT_EQ(r.sticks, b.sticks[i]);
   }
 }

@@ -1,91 +1,42 @@
-// Periodic orbits of the forced friction oscillator (issue 20, item 2):
-// fixed points of the stroboscopic map P^m: (x, x') at t = 0 -> (x, x') at
-// t = m 2 pi / Omega, by Newton with the map's Jacobian from the variational
-// equations and saltation (forced/flow.hpp); Floquet multipliers are the
-// eigenvalues of that Jacobian at the fixed point.
+// Periodic orbits of the forced friction oscillator on the one shooting
+// (orbits/shooting.hpp, docs/theory.md "One shooting"): fixed points of the
+// stroboscopic map P^m, (x, x') at theta = 0 -> (x, x') m forcing periods
+// later, and of the exit-phase map, from one stick exit to the `sticks`-th
+// next. Both are sections of ForcedModel (x, x', theta) and return the one
+// PeriodicOrbit, its Floquet multipliers from the monodromy with saltations.
 #pragma once
 
 #include <complex>
-#include <string>
 
 #include "stickslip/forced/flow.hpp"
-#include "stickslip/names.hpp"
+#include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {
 
-struct ForcedOrbitOptions {
-  FlowOptions flow = ForcedModel::FlowDefaults();
-  int max_newton = 40;
-  /// Converged when the Newton update is below tol (1 + |z|) (max norm).
-  double tol = 1e-12;
-};
+/// Newton on P^m(z) - z = 0 from (x0, xdot0) at theta = 0. The orbit's start
+/// is (x, x', 0) with its mode, its period m 2 pi / Omega, its monodromy DP^m
+/// on (x, x'). The forced tools shoot with
+/// ShootingOptions(ForcedModel::FlowDefaults()). Throws InvalidArgument for
+/// m < 1 or invalid options.
+PeriodicOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0, int m,
+                                const ShootingOptions& options);
 
-enum class ForcedOrbitStatus {
-  kConverged,
-  kNoConvergence,  ///< max_newton iterations without the update falling below tol
-  kSingular,       ///< DP^m - I singular (a multiplier at 1)
-  kFlowFailed,     ///< the flow failed (message says where)
-};
-template <>
-struct EnumNames<ForcedOrbitStatus> {
-  static constexpr NamedValue<ForcedOrbitStatus> kTable[] = {
-      {ForcedOrbitStatus::kConverged, "converged"},
-      {ForcedOrbitStatus::kNoConvergence, "no-convergence"},
-      {ForcedOrbitStatus::kSingular, "singular"},
-      {ForcedOrbitStatus::kFlowFailed, "flow-failed"},
-  };
-};
+/// Newton on t' - t_e - m T = 0 from the exit time t_guess into exit_mode:
+/// from a stick exit at t_e, on the band's edge x_e = +-mu_s - 2 beta v +
+/// A cos(Omega t_e), x' = v, to the `sticks`-th next exit t'. The orbit's
+/// start is that exit, t_e in [0, T), in the slip mode it leaves into; its one
+/// multiplier is the exit map's dt'/dt_e (the others are 0: stick collapses
+/// the state). Throws InvalidArgument for m, sticks < 1 or a stick exit_mode.
+PeriodicOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode exit_mode, int sticks,
+                             int m, const ShootingOptions& options);
 
-struct ForcedOrbit {
-  ForcedOrbitStatus status = ForcedOrbitStatus::kNoConvergence;
-  std::string message;
-  int m = 1;                      ///< period multiple: the orbit closes after m forcing periods
-  ForcedPoint start;              ///< at t = 0 (theta = 0)
-  double period = 0;              ///< m 2 pi / Omega
-  Mat2 monodromy = Mat2::Zero();  ///< DP^m at the fixed point
-  std::complex<double> multipliers[2];  ///< |first| >= |second|
-  bool stable = false;                  ///< every |multiplier| < 1
-  int sticks = 0, crossings = 0;        ///< per period of the orbit
-  Extrema extrema = Extrema::Empty();   ///< running extremes of x and x'
-  int iterations = 0;
-  double update = 0;  ///< the last Newton update (max norm)
-  long steps = 0;     ///< flow steps of the last evaluation
-};
+/// A forced orbit's period in forcing periods (its clock's turns).
+int PeriodMultiple(const ForcedModel& model, const PeriodicOrbit& o);
 
-/// Newton on P^m(z) - z = 0 from (x0, xdot0) at t = 0.
-ForcedOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0, int m,
-                              const ForcedOrbitOptions& options);
+/// The extremes of x and x' of an orbit (PeriodicOrbit::lo, hi), else Empty().
+Extrema OrbitExtrema(const PeriodicOrbit& o);
 
 /// Multipliers of a 2 x 2 monodromy, the larger modulus first.
 void Multipliers(const Mat2& M, std::complex<double> out[2]);
-
-}  // namespace stickslip
-
-namespace stickslip {
-
-/// A stick-slip orbit as a fixed point of the exit-phase map (docs/theory.md,
-/// "One shooting"): from a stick exit at t_e, on the band's edge
-/// x_e = +-mu_s - 2 beta v + A cos(Omega t_e), x' = v, to the `sticks`-th
-/// next exit t'; the orbit closes when t' = t_e + m 2 pi / Omega.
-struct ForcedExitOrbit {
-  ForcedOrbitStatus status = ForcedOrbitStatus::kNoConvergence;
-  std::string message;
-  int m = 1, sticks = 1;  ///< forcing periods and stick phases per period of the orbit
-  double t_exit = 0;      ///< in [0, 2 pi / Omega)
-  double x_exit = 0;
-  Mode exit_mode = Mode::kSlipBelow;  ///< the slip mode it leaves into
-  /// dt'/dt_e = -(Phi w)_x / phi'(t'), w = (-phi'(t_e), -x''(t_e+)): the exit
-  /// map's derivative, the orbit's nontrivial multiplier (the other is 0).
-  double multiplier = 0;
-  bool stable = false;
-  int crossings = 0;
-  Extrema extrema = Extrema::Empty();  ///< running extremes of x and x'
-  int iterations = 0;
-  double update = 0;
-};
-
-/// Newton on t' - t_e - m T = 0 from the exit time t_guess into exit_mode.
-ForcedExitOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode exit_mode, int sticks,
-                               int m, const ForcedOrbitOptions& options);
 
 }  // namespace stickslip

@@ -20,7 +20,7 @@ namespace stickslip {
 struct ForcedScanOptions {
   /// Upper bounds: min_m, max_m and max_sticks, grid, exit_samples.
   static constexpr int kMaxMultiple = 64, kMaxGrid = 100, kMaxExitSamples = 10000;
-  ForcedOrbitOptions orbit;
+  ShootingOptions orbit{ForcedModel::FlowDefaults()};
   int min_m = 1;  ///< period multiples min_m..max_m
   int max_m = 4;
   int max_sticks = 4;     ///< exit-phase map: stick phases per orbit 1..max_sticks
@@ -47,7 +47,9 @@ struct EnumNames<ForcedScanStatus> {
 };
 
 struct ForcedScanOrbit {
-  ForcedOrbit orbit;           ///< least period m, multipliers, stability, sticks
+  PeriodicOrbit
+      orbit;  ///< on the stroboscopic section of m periods: multipliers, stability, sticks
+  int m = 1;  ///< its least period, in forcing periods
   std::vector<Vec2> points;    ///< its m stroboscopic points (x, x') at t = 0, T, ...
   bool from_exit_map = false;  ///< first found on the exit-phase map (else by strobe shooting)
 };

@@ -62,6 +62,9 @@ struct PoincareSection {
 
 /// Newton settings, validated once.
 struct ShootingOptions {
+  ShootingOptions() = default;
+  /// On `flow`, whose step cap is also the cap per evaluation (max_steps).
+  explicit ShootingOptions(const FlowOptions& f) : flow(f), max_steps(f.max_steps) {}
   FlowOptions flow;
   int max_newton = 40;
   /// Converged when the Newton update is below tol (1 + |z|) (max norm).
