@@ -5,7 +5,6 @@
 #include <cfloat>
 #include <cmath>
 
-#include "flow/cached_flow.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 
@@ -81,7 +80,8 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
                                     const std::function<bool()>& cancelled, double max_amplitude) {
   const std::string e = options.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
-  Flow& flow = CachedFlow(model, options.flow);
+  // A flow of its own: `cancelled` may run another forced tool on this thread.
+  Flow flow(model, options.flow);
   const double T = model.period(), w = model.omega();
   StroboscopicRun run;
   run.points.reserve(options.keep);
@@ -111,12 +111,12 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
       run.message = r.message + " (period " + std::to_string(k) + ")";
       break;
     }
-    z = ToForcedPoint(r.end);
-    if (!(std::abs(z.x) <= max_amplitude && std::abs(z.xdot) <= max_amplitude)) {
-      run.status = LyapunovStatus::kDiverged;
+    if (!(std::abs(r.end.z[0]) <= max_amplitude && std::abs(r.end.z[1]) <= max_amplitude)) {
+      run.status = LyapunovStatus::kDiverged;  // end: the last state within bounds
       run.message = "|x| or |x'| passed " + Num(max_amplitude) + " in period " + std::to_string(k);
       break;
     }
+    z = ToForcedPoint(r.end);
     z.t = 0;  // the field is T-periodic: each period starts again at phase 0
     if (rq.variational) tangent.Apply(r.jacobian, kept);
     if (!kept) continue;

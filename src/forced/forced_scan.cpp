@@ -150,7 +150,9 @@ void Scan::ExitMap(Mode mode) {
         if (!e.ok()) continue;
         // Its stroboscopic point: from the exit on to the next multiple of T.
         const double t1 = std::ceil(e.start.t / T) * T;
-        if (Run({e.start.t, e.start.z[0], m_.v(), mode}, t1))
+        if (t1 <= e.start.t)  // the exit at phase 0 is its stroboscopic point
+          Add(Vec2(e.start.z[0], m_.v()), m, true);
+        else if (Run({e.start.t, e.start.z[0], m_.v(), mode}, t1))
           Add(Vec2(run_.end.z[0], run_.end.z[1]), m, true);
       }
     }

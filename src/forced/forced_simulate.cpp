@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flow/cached_flow.hpp"
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/simulate.hpp"
@@ -26,7 +25,8 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
   if (!e.empty()) throw InvalidArgument(e);
   if (!(o.t_end > start.t))
     throw InvalidArgument("t_end = " + Num(o.t_end) + " must be > the start's t = " + Num(start.t));
-  Flow& flow = CachedFlow(model, o.flow);
+  // A flow of its own: `cancelled` may run another forced tool on this thread.
+  Flow flow(model, o.flow);
   const double T = model.period();
   const bool strobe = o.section == ForcedSection::kStrobe;
   ForcedSimulation r;
@@ -35,6 +35,8 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
   r.extrema.Add(p.x, p.xdot);
   // Breakpoints: k dt and (strobe) n T, the next ones after the start.
   double k = std::floor(start.t / o.dt) + 1, n = std::ceil(start.t / T);
+  while (k * o.dt <= start.t) k += 1;  // rounding: the breakpoints lie after the start
+  while (n * T < start.t) n += 1;
   if (strobe && n * T == start.t) r.section.push_back({0, p}), n += 1;
   std::vector<FlowSwitch> events;
   FlowRequest rq;

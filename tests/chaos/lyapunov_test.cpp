@@ -127,5 +127,19 @@ TEST(Lyapunov, InvalidOptionsThrow) {
   EXPECT_THROW(IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), o), InvalidArgument);
 }
 
+// A run that passes max_amplitude ends on its last section point within it,
+// at phase 0 (StroboscopicRun::end), not on the point beyond.
+TEST(Lyapunov, DivergedRunEndsOnItsLastPointWithinBounds) {
+  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  LyapunovOptions o;
+  o.transient = 10, o.keep = 10, o.align = 5, o.batches = 2;
+  const double bound = 0.1;  // the start lies within it, the attractor does not
+  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.01, 0.01), o, {}, bound);
+  ASSERT_EQ(r.status, LyapunovStatus::kDiverged) << r.message;
+  EXPECT_EQ(r.end.t, 0);
+  EXPECT_LE(std::abs(r.end.x), bound);
+  EXPECT_LE(std::abs(r.end.xdot), bound);
+}
+
 }  // namespace
 }  // namespace stickslip

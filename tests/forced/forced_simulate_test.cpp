@@ -80,5 +80,20 @@ TEST(ForcedSimulate, StroboscopicPointsAreAtMultiplesOfThePeriod) {
   for (size_t i = 1; i < r.rows.size(); ++i) EXPECT_GE(r.rows[i].t, r.rows[i - 1].t);
 }
 
+// A start between rows whose next multiple of dt rounds onto it (0.29 / 0.01
+// = 28.999...): the first row after the start lies after it, none at it.
+TEST(ForcedSimulate, StartBetweenRowsRoundsItsFirstBreakpointForward) {
+  const ForcedParams p = StribeckScene();
+  const ForcedModel model(p);
+  ForcedSimulationOptions o;
+  o.t_end = 1, o.dt = 0.01;
+  const ForcedSimulation r = SimulateForced(model, ForcedStart(model, 0.29, 0.1, 0), o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_GE(r.rows.size(), 2u);
+  EXPECT_EQ(r.rows[0].t, 0.29);
+  EXPECT_GT(r.rows[1].t, 0.29);  // a switch's row, or the row at 0.30
+  EXPECT_LE(r.rows[1].t, 0.30);
+}
+
 }  // namespace
 }  // namespace stickslip

@@ -20,8 +20,8 @@ set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 s
 set tics out nomirror front
 set border 3 front
 array C[4] = [0x08519c, 0x3182bd, 0x8c6d31, 0xd9d9d9]
-set label "R1" at 1.0340741248910748,0.0036860340375501482 center front font ',12' noenhanced
-set label "R1" at 0.95209284364821212,0.0056012896286633173 center front font ',12' noenhanced
+set label "R1" at 1.0340741248910805,0.0036860340375513474 center front font ',12' noenhanced
+set label "R1" at 0.95209284364820679,0.0056012896286649662 center front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.012625000000000001):(0.0012372500000000001):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
