@@ -64,7 +64,7 @@ void StickSlipOrbit(double rtol) {
   rq.stop_at_exit = 1;
   rq.extrema = {0, 1};
   Flow flow(m, o.flow);
-  const FlowPoint start = ToFlowPoint(m, {t_exit, x_exit, p.base.v, Mode::kSlipBelow});
+  const FlowPoint start = ForcedStart(m, t_exit, x_exit, p.base.v, Mode::kSlipBelow);
   FlowRun run;
   const double t_return = MedianMicros([&] { flow.Run(start, rq, &run); }, 2001);
   const double t_solve =
@@ -101,7 +101,7 @@ void NonStopOrbit(double rtol) {
   rq.extrema = {0, 1};
   Flow flow(m, o.flow);
   FlowRun run;
-  const FlowPoint start = ToFlowPoint(m, ForcedStart(m, 0, x0, xdot0));
+  const FlowPoint start = ForcedStart(m, 0, x0, xdot0);
   const double t_map = MedianMicros([&] { flow.Run(start, rq, &run); }, 2001);
   const double t_solve = MedianMicros([&] { ShootStroboscopic(m, x0 + 1e-3, xdot0, 1, o); }, 501);
   const double V = 1 / (1 - 1.69), U = std::sin(M_PI / 1.3) / (1.3 * (1 + std::cos(M_PI / 1.3)));

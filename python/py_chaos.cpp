@@ -82,7 +82,7 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
   pts.To(d);
   d["lyapunov"] = r.lyapunov, d["lyapunov_err"] = r.lyapunov_err;
   d["collapses"] = r.collapses, d["steps"] = r.steps;
-  d["end"] = py::make_tuple(r.end.x, r.end.xdot);
+  d["end"] = py::make_tuple(r.end.z[0], r.end.z[1]);
   return d;
 }
 

@@ -9,16 +9,16 @@
 
 namespace stickslip::testing_util {
 
-inline FlowRun RunForced(const ForcedModel& m, const ForcedPoint& start, double t_end,
+inline FlowRun RunForced(const ForcedModel& m, const FlowPoint& start, double t_end,
                          FlowRequest rq = {}, const FlowOptions& o = ForcedModel::FlowDefaults()) {
   rq.t_max = t_end;
   if (rq.extrema.empty()) rq.extrema = {0, 1};
   if (rq.max_steps == 0) rq.max_steps = o.max_steps;
-  return Flow(m, o).Run(ToFlowPoint(m, start), rq);
+  return Flow(m, o).Run(start, rq);
 }
 
 /// The switches of such a run.
-inline std::vector<FlowSwitch> RunSwitches(const ForcedModel& m, const ForcedPoint& start,
+inline std::vector<FlowSwitch> RunSwitches(const ForcedModel& m, const FlowPoint& start,
                                            double t_end,
                                            const FlowOptions& o = ForcedModel::FlowDefaults()) {
   std::vector<FlowSwitch> switches;

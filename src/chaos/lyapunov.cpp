@@ -75,7 +75,7 @@ class TangentProduct {
 
 }  // namespace
 
-StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint& start,
+StroboscopicRun IterateStroboscopic(const ForcedModel& model, const FlowPoint& start,
                                     const LyapunovOptions& options,
                                     const std::function<bool()>& cancelled, double max_amplitude) {
   const std::string e = options.ValidationError();
@@ -90,8 +90,8 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
   FlowRequest rq;
   rq.max_steps = options.flow.max_steps;
   FlowRun r;
-  ForcedPoint z = start;
-  z.t = 0;
+  // Each period starts again at phase 0 (t = theta = 0: the field is T-periodic).
+  FlowPoint z = ForcedStart(model, 0, start.z[0], start.z[1], start.mode[0]);
   const int total = options.transient + options.keep;
   for (int k = 0; k < total; ++k) {
     if (cancelled && cancelled()) {
@@ -104,7 +104,7 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
     rq.variational = options.exponent && k >= options.transient - options.align;
     switches.clear();
     rq.switches = kept ? &switches : nullptr;
-    flow.Run(ToFlowPoint(model, z), rq, &r);
+    flow.Run(z, rq, &r);
     run.steps += r.steps;
     if (!Reached(r)) {
       run.status = LyapunovStatus::kFlowFailed;
@@ -116,12 +116,11 @@ StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint&
       run.message = "|x| or |x'| passed " + Num(max_amplitude) + " in period " + std::to_string(k);
       break;
     }
-    z = ToForcedPoint(r.end);
-    z.t = 0;  // the field is T-periodic: each period starts again at phase 0
+    z = ForcedStart(model, 0, r.end.z[0], r.end.z[1], r.end.mode[0]);
     if (rq.variational) tangent.Apply(r.jacobian, kept);
     if (!kept) continue;
     SectionPoint p;
-    p.x = z.x, p.xdot = z.xdot, p.mode = z.mode;
+    p.x = z.z[0], p.xdot = r.end.z[1], p.mode = z.mode[0];
     p.sticks = r.sticks, p.exits = r.exits;
     for (const FlowSwitch& ev : switches)
       if (ev.kind == SwitchKind::kStickOut) {

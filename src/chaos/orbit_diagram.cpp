@@ -35,7 +35,7 @@ namespace {
 void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<DiagramColumn*> cols,
            const std::atomic<bool>& stop, std::atomic<int>& done) {
   bool restart = true;
-  ForcedPoint z;
+  FlowPoint z;
   for (DiagramColumn* c : cols) {
     if (stop.load(std::memory_order_relaxed)) return;
     try {
@@ -43,7 +43,7 @@ void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<D
       SetAxis(p, o.axis, c->value);
       const ForcedModel m(p);
       if (restart) z = ForcedStart(m, 0, 0, p.base.v);  // from rest on the belt
-      z = ForcedStart(m, 0, z.x, z.mode == Mode::kStick ? p.base.v : z.xdot);
+      z = ForcedStart(m, 0, z.z[0], z.mode[0] == Mode::kStick ? p.base.v : z.z[1]);
       c->run = IterateStroboscopic(
           m, z, o.iterate, [&stop] { return stop.load(std::memory_order_relaxed); },
           o.max_amplitude);

@@ -103,7 +103,7 @@ std::function<bool(const VectorXd&)> StopTest(ForcedCurveProblem& problem, doubl
     std::string w;
     if (!problem.Sample(u, &smp, &w)) return !(*bad = w).empty();
     const double res = std::max(
-        {std::abs(smp.end.x - u[0]), std::abs(smp.end.xdot - u[1]), std::abs(problem.TestOf(smp))});
+        {std::abs(smp.end[0] - u[0]), std::abs(smp.end[1] - u[1]), std::abs(problem.TestOf(smp))});
     if (!(res <= max_residual))
       return !(*bad = "residual " + Num(res, 3) +
                       " at an accepted point (the map is not smooth there)")

@@ -21,10 +21,10 @@ FlowRequest ForcedCurveProblem::Request(double t_end, std::vector<FlowSwitch>* e
   return rq;
 }
 
-ForcedPoint ForcedCurveProblem::Start(const ForcedModel& m, double t, double x, double xdot) const {
+FlowPoint ForcedCurveProblem::Start(const ForcedModel& m, double t, double x, double xdot) const {
   if (!smooth()) return ForcedStart(m, t, x, xdot);
   // Without switching the start's slip side is its field (x' = v: below).
-  return {t, x, xdot, xdot > m.v() ? Mode::kSlipAbove : Mode::kSlipBelow};
+  return ForcedStart(m, t, x, xdot, xdot > m.v() ? Mode::kSlipAbove : Mode::kSlipBelow);
 }
 
 bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
@@ -32,14 +32,14 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
   const ForcedModel model(plane_.At(base_, u[2], u[3]));
   std::vector<FlowSwitch> events;
   const double t0 = phase_ / model.omega();
-  const FlowRun r = CachedFlow(model, flow_)
-                        .Run(ToFlowPoint(model, Start(model, t0, u[0], u[1])),
-                             Request(t0 + m_ * model.period(), &events));
+  const FlowRun r =
+      CachedFlow(model, flow_)
+          .Run(Start(model, t0, u[0], u[1]), Request(t0 + m_ * model.period(), &events));
   if (!Reached(r)) {
     *why = r.message;
     return false;
   }
-  s->end = ToForcedPoint(r.end);
+  s->end = Vec2(r.end.z[0], r.end.z[1]);
   s->jacobian = r.jacobian;
   s->extrema = RunExtrema(r);
   s->sticks = r.sticks, s->crossings = r.crossings;
@@ -76,10 +76,14 @@ bool ForcedCurveProblem::Sample(const Eigen::VectorXd& u, ForcedCurveSample* s,
 
 bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
   const ForcedModel model(plane_.At(base_, (*u)[2], (*u)[3]));
-  std::vector<ForcedPoint> samples;
+  struct Sample {
+    double t, x, xdot;
+    Mode mode;
+  };
+  std::vector<Sample> samples;
   const double t0 = phase_ / model.omega();
-  const FlowPoint start = ToFlowPoint(model, Start(model, t0, (*u)[0], (*u)[1]));
-  samples.push_back(ToForcedPoint(start));
+  const FlowPoint start = Start(model, t0, (*u)[0], (*u)[1]);
+  samples.push_back({start.t, start.z[0], start.z[1], start.mode[0]});
   FlowRequest rq = Request(t0 + m_ * model.period(), nullptr);
   rq.variational = false;
   rq.step_observer = [&](double t, const double* z, const ModeSet& md) {
@@ -87,8 +91,8 @@ bool ForcedCurveProblem::Rephase(Eigen::VectorXd* u, std::string* why) {
   };
   const FlowRun run = CachedFlow(model, flow_).Run(start, rq);
   if (!Reached(run)) return *why = run.message, false;
-  const ForcedPoint* best = nullptr;
-  for (const ForcedPoint& p : samples)
+  const Sample* best = nullptr;
+  for (const Sample& p : samples)
     if (p.mode != Mode::kStick &&
         (!best || std::abs(p.xdot - model.v()) > std::abs(best->xdot - model.v())))
       best = &p;
@@ -114,8 +118,8 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
   std::string why;
   if (!Sample(last.u, &a, &why) || !Sample(next.u, &b, &why))
     return {CurveEndKind::kBranchJump, why};
-  const double res = std::max(
-      {std::abs(b.end.x - next.u[0]), std::abs(b.end.xdot - next.u[1]), std::abs(Test(b))});
+  const double res =
+      std::max({std::abs(b.end[0] - next.u[0]), std::abs(b.end[1] - next.u[1]), std::abs(Test(b))});
   if (!(res <= tol.forced_curve_residual))
     return {CurveEndKind::kSliding,
             "residual " + Num(res, 3) + " (the map is not smooth there: a sliding point)"};
@@ -132,8 +136,7 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
     if (m_ % d != 0) continue;
     FlowRequest rq = Request(t0 + d * model.period(), nullptr);
     rq.variational = false;
-    const FlowRun r = CachedFlow(model, flow_)
-                          .Run(ToFlowPoint(model, Start(model, t0, next.u[0], next.u[1])), rq);
+    const FlowRun r = CachedFlow(model, flow_).Run(Start(model, t0, next.u[0], next.u[1]), rq);
     if (Reached(r) && std::max(std::abs(r.end.z[0] - next.u[0]), std::abs(r.end.z[1] - next.u[1])) <
                           tol.forced_lower_period)
       return {CurveEndKind::kBranchJump,
@@ -173,7 +176,7 @@ bool ForcedCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
   ForcedCurveSample s;
   if (!Sample(u, &s, why)) return false;
   f->resize(3);
-  *f << s.end.x - u[0], s.end.xdot - u[1], Test(s);
+  *f << s.end[0] - u[0], s.end[1] - u[1], Test(s);
   {
     // Central differences, step ~ cbrt(eps) of each unknown's scale.
     chord_.resize(3, 4);
@@ -186,8 +189,8 @@ bool ForcedCurveProblem::Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f,
       if (!DomainError(um).empty()) um = u;
       if (!Sample(up, &sp, why) || !Sample(um, &sm, why)) return false;
       const double span = up[k] - um[k];
-      chord_(0, k) = (sp.end.x - sm.end.x) / span;
-      chord_(1, k) = (sp.end.xdot - sm.end.xdot) / span;
+      chord_(0, k) = (sp.end[0] - sm.end[0]) / span;
+      chord_(1, k) = (sp.end[1] - sm.end[1]) / span;
       chord_(2, k) = (Test(sp) - Test(sm)) / span;
     }
   }

@@ -34,7 +34,7 @@ namespace stickslip {
 struct ForcedCurveSample {
   // The run over m forcing periods (variational, with extremes): its end,
   // state transition matrix, extremes and switch counts.
-  ForcedPoint end;
+  Vec2 end;  // (x, x') at its end
   Mat2 jacobian = Mat2::Identity();
   Extrema extrema = Extrema::Empty();
   int sticks = 0, crossings = 0;
@@ -79,7 +79,7 @@ class ForcedCurveProblem final : public PalcProblem {
  private:
   double Test(const ForcedCurveSample& s) const;
   // ForcedStart, or with smooth() the slip mode of x''s side.
-  ForcedPoint Start(const ForcedModel& m, double t, double x, double xdot) const;
+  FlowPoint Start(const ForcedModel& m, double t, double x, double xdot) const;
   // A run to t_end as the tests need it: variational, extremes in steps,
   // switching unless smooth(), the switches appended to `events` if given.
   FlowRequest Request(double t_end, std::vector<FlowSwitch>* events) const;

@@ -36,15 +36,14 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
     return false;
   };
   auto row = [&](int j) {
-    ForcedPoint z;
+    FlowPoint z;
     bool fresh = true;
     for (int i = 0; i < g.n1 && !poll(); ++i) {
       const size_t k = static_cast<size_t>(j) * g.n1 + i;
       try {
         const ForcedModel model(pl.At(base, g.x1[i], g.x2[j]));
         if (fresh) z = ForcedStart(model, 0, 0, model.v());
-        z.t = 0;
-        const StroboscopicRun r = IterateStroboscopic(model, ForcedStart(model, 0, z.x, z.xdot),
+        const StroboscopicRun r = IterateStroboscopic(model, ForcedStart(model, 0, z.z[0], z.z[1]),
                                                       bo.iterate, poll, o.max_amplitude);
         if (r.status == LyapunovStatus::kCancelled) return;
         g.cells[k] = ClassifyAttractor(model, r, bo);

@@ -63,8 +63,7 @@ Vec2 SettledState(const ForcedModel& model, const ForcedBranchOptions& o) {
   rq.t_max = kTransientPeriods * model.period();
   rq.max_steps = o.flow.max_steps;
   rq.extrema = {0, 1};
-  const FlowRun tr =
-      Flow(model, o.flow).Run(ToFlowPoint(model, ForcedStart(model, 0, 0, model.v())), rq);
+  const FlowRun tr = Flow(model, o.flow).Run(ForcedStart(model, 0, 0, model.v()), rq);
   if (Reached(tr) && std::abs(tr.end.z[0]) <= o.max_amplitude)
     return Vec2(tr.end.z[0], tr.end.z[1]);
   return Vec2(0, model.v());

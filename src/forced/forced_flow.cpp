@@ -1,22 +1,19 @@
 // The forced oscillator's points on the one flow (forced/flow.hpp): the state
-// (x, x', theta = Omega t) of ForcedModel, and back.
+// (x, x', theta = Omega t) of ForcedModel.
 #include "stickslip/forced/flow.hpp"
 
 namespace stickslip {
 
-ForcedPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot) {
-  ForcedPoint p{t, x, xdot, Mode::kSlipBelow};
-  if (xdot > m.v()) p.mode = Mode::kSlipAbove;
-  if (xdot == m.v()) p.mode = m.InStickBand(t, x) ? Mode::kStick : m.ExitMode(t, x);
-  return p;
+FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot) {
+  Mode mode = Mode::kSlipBelow;
+  if (xdot > m.v()) mode = Mode::kSlipAbove;
+  if (xdot == m.v()) mode = m.InStickBand(t, x) ? Mode::kStick : m.ExitMode(t, x);
+  return ForcedStart(m, t, x, xdot, mode);
 }
 
-FlowPoint ToFlowPoint(const ForcedModel& m, const ForcedPoint& p) {
-  return {p.t, Eigen::Vector3d(p.x, p.mode == Mode::kStick ? m.v() : p.xdot, m.omega() * p.t),
-          ModeSet(p.mode)};
+FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot, Mode mode) {
+  return {t, Eigen::Vector3d(x, mode == Mode::kStick ? m.v() : xdot, m.omega() * t), ModeSet(mode)};
 }
-
-ForcedPoint ToForcedPoint(const FlowPoint& p) { return {p.t, p.z[0], p.z[1], p.mode[0]}; }
 
 Extrema RunExtrema(const FlowRun& r) {
   return r.lo.size() >= 2 && r.hi.size() >= 2 ? Extrema{r.lo[0], r.hi[0], r.lo[1], r.hi[1]}

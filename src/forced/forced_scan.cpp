@@ -55,12 +55,12 @@ class Scan {
   }
   // One run from p to t_end (to the stop_at_exit-th stick exit if > 0, the
   // switches appended to `switches` if given): whether it reached its end.
-  bool Run(const ForcedPoint& p, double t_end, int stop_at_exit = 0,
+  bool Run(const FlowPoint& p, double t_end, int stop_at_exit = 0,
            std::vector<FlowSwitch>* switches = nullptr) {
     rq_.t_max = t_end;
     rq_.stop_at_exit = stop_at_exit;
     rq_.switches = switches;
-    flow_.Run(ToFlowPoint(m_, p), rq_, &run_);
+    flow_.Run(p, rq_, &run_);
     return Reached(run_);
   }
   // A converged fixed point of P^m: reduced to its least period, kept if new.
@@ -130,7 +130,9 @@ void Scan::ExitMap(Mode mode) {
     if (Cancelled()) return;
     const double te = i * T / N;
     std::vector<FlowSwitch> ev;
-    if (!Run({te, Edge(m_, te, mode), m_.v(), mode}, te + (o_.max_m + 1) * T, S, &ev)) continue;
+    if (!Run(ForcedStart(m_, te, Edge(m_, te, mode), m_.v(), mode), te + (o_.max_m + 1) * T, S,
+             &ev))
+      continue;
     int s = 0;
     for (const FlowSwitch& e : ev)
       if (e.kind == SwitchKind::kStickOut && s < S) tp[i][s++] = e.after[0] == mode ? e.t : NAN;
@@ -152,7 +154,7 @@ void Scan::ExitMap(Mode mode) {
         const double t1 = std::ceil(e.start.t / T) * T;
         if (t1 <= e.start.t)  // the exit at phase 0 is its stroboscopic point
           Add(Vec2(e.start.z[0], m_.v()), m, true);
-        else if (Run({e.start.t, e.start.z[0], m_.v(), mode}, t1))
+        else if (Run(ForcedStart(m_, e.start.t, e.start.z[0], m_.v(), mode), t1))
           Add(Vec2(run_.end.z[0], run_.end.z[1]), m, true);
       }
     }

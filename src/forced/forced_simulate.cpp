@@ -19,7 +19,11 @@ std::string ForcedSimulationOptions::ValidationError() const {
   return "";
 }
 
-ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& start,
+namespace {
+ForcedPoint Row(const FlowPoint& z) { return {z.t, z.z[0], z.z[1], z.mode[0]}; }
+}  // namespace
+
+ForcedSimulation SimulateForced(const ForcedModel& model, const FlowPoint& start,
                                 const ForcedSimulationOptions& o) {
   const std::string e = o.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
@@ -30,7 +34,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
   const double T = model.period();
   const bool strobe = o.section == ForcedSection::kStrobe;
   ForcedSimulation r;
-  ForcedPoint p = start;
+  ForcedPoint p = Row(start);
   r.rows.push_back(p);
   r.extrema.Add(p.x, p.xdot);
   // Breakpoints: k dt and (strobe) n T, the next ones after the start.
@@ -53,7 +57,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
     const double t_row = k * o.dt, t_sec = strobe ? n * T : INFINITY;
     rq.t_max = std::min({t_row, t_sec, o.t_end});
     events.clear();
-    flow.Run(ToFlowPoint(model, p), rq, &run);
+    flow.Run(ForcedStart(model, p.t, p.x, p.xdot, p.mode), rq, &run);
     r.steps += run.steps, r.sticks += run.sticks, r.exits += run.exits;
     r.crossings += run.crossings;
     for (const FlowSwitch& ev : events) {
@@ -68,7 +72,7 @@ ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& sta
       return r;
     }
     r.extrema.Merge(RunExtrema(run));
-    p = ToForcedPoint(run.end);
+    p = Row(run.end);
     if (!std::isfinite(p.x) || !std::isfinite(p.xdot)) {
       r.status = ForcedSimulationStatus::kFailed;
       r.message = "non-finite state at t = " + Num(p.t);

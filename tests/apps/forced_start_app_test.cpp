@@ -45,15 +45,15 @@ void ExpectFixedPointOfPm(double x0, double xdot0, int m, int sticks) {
   const stickslip::ForcedModel model(p);
   stickslip::FlowOptions o = stickslip::ForcedModel::FlowDefaults();
   o.rtol = o.atol = 1e-13;
-  stickslip::ForcedPoint z = stickslip::ForcedStart(model, 0, x0, xdot0);
+  stickslip::FlowPoint z = stickslip::ForcedStart(model, 0, x0, xdot0);
   int counted = 0;
   for (int k = 1; k <= m; ++k) {
     const stickslip::FlowRun run =
         stickslip::testing_util::RunForced(model, z, k * model.period(), {}, o);
     ASSERT_TRUE(stickslip::Reached(run)) << run.message;
-    z = stickslip::ToForcedPoint(run.end);
+    z = run.end;
     counted += run.sticks;
-    const double gap = std::hypot(z.x - x0, z.xdot - xdot0);
+    const double gap = std::hypot(z.z[0] - x0, z.z[1] - xdot0);
     if (k < m)
       EXPECT_GT(gap, 1e-3) << "back after " << k << " of m = " << m << " periods";
     else

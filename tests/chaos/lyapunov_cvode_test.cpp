@@ -64,7 +64,7 @@ TEST(LyapunovCvode, CvodeExtremesInsideStepsAgreeWithTaylor) {
   const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   FlowOptions o = ForcedModel::FlowDefaults();
   o.rtol = o.atol = 1e-13;
-  const ForcedPoint start = ForcedStart(m, 0, 0, 0.2);
+  const FlowPoint start = ForcedStart(m, 0, 0, 0.2);
   const FlowRun taylor = testing_util::RunForced(m, start, 3 * m.period(), {}, o);
   o.integrator = Integrator::kCvode;
   o.rtol = 1e-12, o.atol = 1e-14;

@@ -30,7 +30,7 @@ constexpr double kAligned = 1e-12;
 // ln|mu_max| / T of the stroboscopic fixed point shot from the run's last point.
 double FloquetExponent(const ForcedModel& m, const StroboscopicRun& r) {
   ShootingOptions o(ForcedModel::FlowDefaults());
-  const PeriodicOrbit orbit = ShootStroboscopic(m, r.end.x, r.end.xdot, 1, o);
+  const PeriodicOrbit orbit = ShootStroboscopic(m, r.end.z[0], r.end.z[1], 1, o);
   EXPECT_TRUE(orbit.ok()) << orbit.message;
   EXPECT_TRUE(orbit.stable);
   return std::log(std::abs(orbit.multipliers[0])) / orbit.period;
@@ -137,8 +137,8 @@ TEST(Lyapunov, DivergedRunEndsOnItsLastPointWithinBounds) {
   const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.01, 0.01), o, {}, bound);
   ASSERT_EQ(r.status, LyapunovStatus::kDiverged) << r.message;
   EXPECT_EQ(r.end.t, 0);
-  EXPECT_LE(std::abs(r.end.x), bound);
-  EXPECT_LE(std::abs(r.end.xdot), bound);
+  EXPECT_LE(std::abs(r.end.z[0]), bound);
+  EXPECT_LE(std::abs(r.end.z[1]), bound);
 }
 
 }  // namespace

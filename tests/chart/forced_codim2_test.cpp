@@ -52,14 +52,14 @@ RefCheck Reference(const ForcedParams& base, const ForcedCodim2& c) {
   const ForcedModel model(p);
   FlowOptions f = ForcedModel::FlowDefaults();
   f.rtol = f.atol = 1e-14;
-  const ForcedPoint r = ToForcedPoint(
-      testing_util::RunForced(model, ForcedStart(model, c.phase / model.omega(), c.x0, c.xdot0),
-                              model.period(), {}, f)
-          .end);
+  const FlowPoint r =
+      (testing_util::RunForced(model, ForcedStart(model, c.phase / model.omega(), c.x0, c.xdot0),
+                               model.period(), {}, f)
+           .end);
   const reference::ForcedRef m(p);
-  const reference::RefPeriod q = reference::RefOnePeriod(m, r.x, r.xdot, false, 1e-18L);
+  const reference::RefPeriod q = reference::RefOnePeriod(m, r.z[0], r.z[1], false, 1e-18L);
   EXPECT_TRUE(q.ok);
-  return {std::max(std::abs(q.x - r.x), std::abs(q.y - r.xdot)), q.phi[0][0] + q.phi[1][1],
+  return {std::max(std::abs(q.x - r.z[0]), std::abs(q.y - r.z[1])), q.phi[0][0] + q.phi[1][1],
           q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0], q.sticks};
 }
 
@@ -134,16 +134,16 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
     ForcedParams q = base;
     q.omega = p.p1, q.force = p.p2;
     const ForcedModel model(q);
-    const ForcedPoint z = ToForcedPoint(
-        testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
-                                model.period())
-            .end);
+    const FlowPoint z =
+        (testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
+                                 model.period())
+             .end);
     ForcedBranchOptions o;
     o.palc.ds = o.palc.ds_max = 2e-4;
     double best = NAN;
     for (const double side : {1.0, -1.0}) {
       const OrbitBranch b = ContinueForced(q, ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                                           p.p1 - side * 2e-3, z.x, z.xdot, o);
+                                           p.p1 - side * 2e-3, z.z[0], z.z[1], o);
       for (const OrbitRow& row : b.special)
         if (row.label == SpecialKind::kGrazing &&
             !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))

@@ -64,13 +64,12 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Speci
   const double at = axis == ForcedAxis::kOmega ? p.p1 : p.p2;
   const ForcedModel model(Seed(p.p2, p.p1));
   const double t0 = p.phase / model.omega();
-  const ForcedPoint z =
-      ToForcedPoint(testing_util::RunForced(model, ForcedStart(model, t0, p.x0, p.xdot0),
-                                            model.period(), {}, BeltFlow())
-                        .end);
+  const FlowPoint z = testing_util::RunForced(model, ForcedStart(model, t0, p.x0, p.xdot0),
+                                              model.period(), {}, BeltFlow())
+                          .end;
   FlowRequest rq;
   rq.variational = true;
-  const Mat2 M = testing_util::RunForced(model, ForcedStart(model, 0, z.x, z.xdot),
+  const Mat2 M = testing_util::RunForced(model, ForcedStart(model, 0, z.z[0], z.z[1]),
                                          m * model.period(), rq, BeltFlow())
                      .jacobian;
   Eigen::EigenSolver<Eigen::Matrix2d> es(M);
@@ -87,7 +86,7 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Speci
     for (const double sign : {1.0, -1.0}) {
       const OrbitBranch b =
           ContinueForced(Seed(p.p2, p.p1), axis, at + side * 2e-3, at - side * 2e-3,
-                         z.x + sign * h * e[0], z.xdot + sign * h * e[1], o);
+                         z.z[0] + sign * h * e[0], z.z[1] + sign * h * e[1], o);
       for (const OrbitRow& r : b.special)
         if (want(r.label) && std::abs(r.p - at) < 1e-3 &&
             !(std::abs(best - at) <= std::abs(r.p - at))) {

@@ -33,17 +33,17 @@ ForcedChartOptions NsChartOptions() {
 OrbitRow LocateNsRow(const ForcedCurvePoint& p, double a) {
   const ForcedModel model(Scene(a, p.p1));
   // (the phase lies in [0, 2 pi): one period reaches phase 0)
-  const ForcedPoint z = ToForcedPoint(
-      testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
-                              model.period())
-          .end);
+  const FlowPoint z =
+      (testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
+                               model.period())
+           .end);
   ForcedBranchOptions o;
   o.palc.ds = o.palc.ds_max = 2e-4;
   OrbitRow best;
   best.p = NAN;
   for (const double side : {1.0, -1.0}) {
     const OrbitBranch b = ContinueForced(Scene(a, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                                         p.p1 - side * 2e-3, z.x, z.xdot, o);
+                                         p.p1 - side * 2e-3, z.z[0], z.z[1], o);
     for (const OrbitRow& r : b.special)
       if (r.label == SpecialKind::kTorus && !(std::abs(best.p - p.p1) <= std::abs(r.p - p.p1)))
         best = r;

@@ -62,7 +62,7 @@ void Check(const ForcedParams& p, int sticks, int m) {
   // The same orbit by stroboscopic shooting: the same nontrivial multiplier.
   // Its state at the next theta = 0 starts the shooting.
   const FlowRun to_zero = testing_util::RunForced(
-      model, {orbit.start.t, orbit.start.z[0], model.v(), mode},
+      model, ForcedStart(model, orbit.start.t, orbit.start.z[0], model.v(), mode),
       std::ceil(orbit.start.t / model.period()) * model.period(), {}, o.flow);
   const PeriodicOrbit strobe = ShootStroboscopic(model, to_zero.end.z[0], to_zero.end.z[1], m, o);
   ASSERT_TRUE(strobe.ok()) << strobe.message;

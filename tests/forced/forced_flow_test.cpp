@@ -147,7 +147,8 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
     FlowRequest rq;
     rq.stop_at_exit = 1;
     const double x0 = p.base.mu_s - 2 * p.base.beta * p.base.v;
-    const FlowRun run = testing_util::RunForced(m, {0, x0, p.base.v, Mode::kSlipBelow}, 100, rq, o);
+    const FlowRun run =
+        testing_util::RunForced(m, ForcedStart(m, 0, x0, p.base.v, Mode::kSlipBelow), 100, rq, o);
     const Extrema e = RunExtrema(run);
     ASSERT_EQ(run.exits, 1) << Name(law) << ": " << run.message << " t = " << run.end.t;
     const reference::StickSlipOrbit ref = reference::StickSlip(p.base);

@@ -53,7 +53,7 @@ TEST(ForcedSimulate, ShortStepAfterAStickExitLeavesTheSurface) {
   FlowRequest rq;
   rq.switches = &events;
   const FlowRun r = testing_util::RunForced(
-      model, {70.42, 0.32673483409726917, p.base.v, Mode::kStick}, 70.43, rq);
+      model, ForcedStart(model, 70.42, 0.32673483409726917, p.base.v, Mode::kStick), 70.43, rq);
   ASSERT_TRUE(Reached(r)) << r.message;
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].kind, SwitchKind::kStickOut);

@@ -70,7 +70,7 @@ struct StroboscopicRun {
   LyapunovStatus status = LyapunovStatus::kDone;
   std::string message;
   std::vector<SectionPoint> points;  ///< the kept periods' section points
-  ForcedPoint end;                   ///< the last state, at t = 0 (phase 0)
+  FlowPoint end;                     ///< the last state, at t = theta = 0
   double lyapunov = 0;               ///< largest exponent, per unit time
   double lyapunov_err = 0;           ///< standard error of the batch means
   int collapses = 0;                 ///< periods with J_k M = 0 (see above)
@@ -83,7 +83,7 @@ constexpr double kStroboscopicMaxAmplitude = 1e6;
 /// Iterates the stroboscopic map from `start` (its t is taken as phase 0).
 /// `cancelled` is polled once per period. |x| or |x'| above max_amplitude ends
 /// the run as kDiverged.
-StroboscopicRun IterateStroboscopic(const ForcedModel& model, const ForcedPoint& start,
+StroboscopicRun IterateStroboscopic(const ForcedModel& model, const FlowPoint& start,
                                     const LyapunovOptions& options,
                                     const std::function<bool()>& cancelled = {},
                                     double max_amplitude = kStroboscopicMaxAmplitude);

@@ -1,6 +1,6 @@
-// The forced oscillator's points (t, x, x', mode) on the one flow
-// (flow/flow.hpp): ForcedModel is a system with the phase theta = Omega t, so
-// a run of it is a Flow::Run from ToFlowPoint; these convert its points.
+// The forced oscillator's points on the one flow (flow/flow.hpp): ForcedModel
+// is a system with the phase theta = Omega t, so a run of it is a Flow::Run
+// from a ForcedStart.
 #pragma once
 
 #include "stickslip/flow/flow.hpp"
@@ -9,19 +9,12 @@
 
 namespace stickslip {
 
-/// A point of the forced flow: time, state and mode (kStick has x' = v).
-struct ForcedPoint {
-  double t = 0, x = 0, xdot = 0;
-  Mode mode = Mode::kSlipBelow;
-};
-/// The mode of (x, x') at time t: slip by the sign of x' - v; on x' = v stick
-/// inside the band, else the slip side the force points to.
-ForcedPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot);
-
-/// The forced point as the one flow's start (x, x', theta = Omega t; x' = v
-/// in stick), and a flow point as a forced point (contact 0's mode).
-FlowPoint ToFlowPoint(const ForcedModel& m, const ForcedPoint& p);
-ForcedPoint ToForcedPoint(const FlowPoint& p);
+/// The forced oscillator's state at time t as a start of the one flow: (x, x',
+/// theta = Omega t) with Filippov's mode: slip by the sign of x' - v; on x' = v
+/// stick inside the band, else the slip side the force points to.
+FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot);
+/// The same in a given mode (trusted; x' = v in stick).
+FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot, Mode mode);
 
 /// The extremes of x and x' of a run that recorded them (FlowRequest::extrema
 /// = {0, 1}), else Extrema::Empty().

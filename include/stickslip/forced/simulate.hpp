@@ -38,6 +38,12 @@ struct ForcedSimulationOptions {
   std::string ValidationError() const;
 };
 
+/// A row of a trajectory: time, state and mode (kStick has x' = v).
+struct ForcedPoint {
+  double t = 0, x = 0, xdot = 0;
+  Mode mode = Mode::kSlipBelow;
+};
+
 /// A point of the section: n counts the section's points from 0.
 struct ForcedSectionPoint {
   long n = 0;
@@ -73,7 +79,7 @@ struct ForcedSimulation {
 
 /// Integrates from `start` (its mode is trusted) to options.t_end.
 /// Throws InvalidArgument if the options are not valid.
-ForcedSimulation SimulateForced(const ForcedModel& model, const ForcedPoint& start,
+ForcedSimulation SimulateForced(const ForcedModel& model, const FlowPoint& start,
                                 const ForcedSimulationOptions& options);
 
 }  // namespace stickslip
