@@ -176,7 +176,7 @@ void BindForcedTypes(py::module_& m) {
   py::enum_<ForcedSection>(m, "ForcedSection", "The Poincare section of simulate_forced().")
       .value("strobe", ForcedSection::kStrobe)
       .value("exit", ForcedSection::kExit);
-  py::enum_<BranchStatus>(m, "ForcedBranchStatus", "How a forced branch ended.")
+  py::enum_<BranchStatus>(m, "BranchStatus", "How a branch ended (every system's).")
       .value("reached_end", BranchStatus::kReachedEnd)
       .value("unbounded", BranchStatus::kUnbounded)
       .value("step_too_small", BranchStatus::kStepTooSmall)

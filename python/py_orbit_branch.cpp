@@ -194,7 +194,7 @@ void BindOrbitBranch(py::module_& m) {
         return "<OrbitBranch " + x.parameter + ", " + std::to_string(x.p.size()) + " rows, " +
                Name(x.status) + ">";
       });
-  m.attr("BranchStatus") = m.attr("ForcedBranchStatus");
+  m.attr("ForcedBranchStatus") = m.attr("BranchStatus");  // its older name
   const py::object none = py::none();
   m.def("continue_orbits", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
         py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,

@@ -115,7 +115,7 @@ class ForcedAxis(enum.IntEnum):
 class ForcedSection(enum.IntEnum):
     strobe = 0
     exit = 1
-class ForcedBranchStatus(enum.IntEnum):
+class BranchStatus(enum.IntEnum):
     reached_end = 0
     unbounded = 1
     step_too_small = 2
@@ -273,7 +273,7 @@ class ForcedOrbit:
 
 class ForcedBranch:
     axis: ForcedAxis
-    status: ForcedBranchStatus
+    status: BranchStatus
     message: str
     p: Array
     x0: Array
@@ -298,7 +298,7 @@ class ForcedBranch:
     def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True) -> Any: ...
 
 class OrbitBranch:
-    status: ForcedBranchStatus
+    status: BranchStatus
     message: str
     parameter: str
     p: Array
@@ -317,7 +317,7 @@ class OrbitBranch:
     evaluations: int
     seconds: float
 
-BranchStatus: type[ForcedBranchStatus]
+ForcedBranchStatus: type[BranchStatus]
 
 class ForcedSpecialPoint:
     label: str
@@ -764,7 +764,7 @@ def system_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m:
 def steady_sliding(system: SystemLike) -> SteadyState: ...
 
 class SteadyBranch:
-    status: ForcedBranchStatus
+    status: BranchStatus
     message: str
     parameter: str
     p: Array

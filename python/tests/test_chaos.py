@@ -40,7 +40,7 @@ class Switch(unittest.TestCase):
         self.assertAlmostEqual(pd.multipliers[0].real, -1, delta=1e-6)
         d = stickslip.continue_doubled(pd, lo=pd.p - 0.006, hi=pd.p + 0.006, max_step=0.33,
                                        rtol=1e-13, atol=1e-13)
-        self.assertEqual(d.status, stickslip.ForcedBranchStatus.reached_end, d.message)
+        self.assertEqual(d.status, stickslip.BranchStatus.reached_end, d.message)
         self.assertTrue(np.all(d.m == 2))
         self.assertLess(d.p[0], pd.p)  # supercritical: it opens toward lower Omega
         # A stable row away from the PD: 300 periods of the plain map from a

@@ -59,7 +59,8 @@ class Forced(unittest.TestCase):
         o = stickslip.forced_orbit(p, 0.5, 0.0)
         b = stickslip.continue_forced(p, stickslip.ForcedAxis.omega, 1.5, 2.5, x_guess=o.x0,
                                       xdot_guess=o.xdot0)
-        self.assertEqual(b.status, stickslip.ForcedBranchStatus.reached_end)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        self.assertIs(stickslip.ForcedBranchStatus, stickslip.BranchStatus)  # the older name
         self.assertGreater(len(b.p), 20)
         self.assertAlmostEqual(b.p[-1], 2.5, delta=1e-12)
         X = np.array([den_hartog(0.3, 1, w) for w in b.p])
