@@ -31,11 +31,6 @@ FlowPoint Strobe(double x, double xdot) {
 
 }  // namespace
 
-Extrema RowExtrema(const OrbitRow& c) {
-  return c.lo.size() >= 2 && c.hi.size() >= 2 ? Extrema{c.lo[0], c.hi[0], c.lo[1], c.hi[1]}
-                                              : Extrema::Empty();
-}
-
 OrbitBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
                            double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
   const std::string e = options.ValidationError(base, axis, from, to, x_guess, xdot_guess);

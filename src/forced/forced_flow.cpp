@@ -15,9 +15,8 @@ FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot, Mod
   return {t, Eigen::Vector3d(x, mode == Mode::kStick ? m.v() : xdot, m.omega() * t), ModeSet(mode)};
 }
 
-Extrema RunExtrema(const FlowRun& r) {
-  return r.lo.size() >= 2 && r.hi.size() >= 2 ? Extrema{r.lo[0], r.hi[0], r.lo[1], r.hi[1]}
-                                              : Extrema::Empty();
+Extrema ExtremaOf(const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+  return lo.size() >= 2 && hi.size() >= 2 ? Extrema{lo[0], hi[0], lo[1], hi[1]} : Extrema::Empty();
 }
 
 }  // namespace stickslip

@@ -22,11 +22,6 @@ int PeriodMultiple(const ForcedModel& model, const PeriodicOrbit& o) {
   return static_cast<int>(std::lround(o.period / model.period()));
 }
 
-Extrema OrbitExtrema(const PeriodicOrbit& o) {
-  return o.lo.size() >= 2 && o.hi.size() >= 2 ? Extrema{o.lo[0], o.hi[0], o.lo[1], o.hi[1]}
-                                              : Extrema::Empty();
-}
-
 namespace {
 
 // One shooting per thread for the options last used (a forced orbit is shot

@@ -64,12 +64,16 @@ TEST(ForcedSimulate, ShortStepAfterAStickExitLeavesTheSurface) {
   EXPECT_TRUE(s.ok()) << s.message;
 }
 
-TEST(ForcedSimulate, StroboscopicPointsAreAtMultiplesOfThePeriod) {
-  const ForcedParams p = StribeckScene();
-  const ForcedModel model(p);
+// The Stribeck scene from (t0, 0.1, 0) to t_end, a row every dt.
+ForcedSimulation SimulateScene(const ForcedModel& model, double t0, double t_end, double dt) {
   ForcedSimulationOptions o;
-  o.t_end = 100, o.dt = 0.3;
-  const ForcedSimulation r = SimulateForced(model, ForcedStart(model, 0, 0.1, 0), o);
+  o.t_end = t_end, o.dt = dt;
+  return SimulateForced(model, ForcedStart(model, t0, 0.1, 0), o);
+}
+
+TEST(ForcedSimulate, StroboscopicPointsAreAtMultiplesOfThePeriod) {
+  const ForcedModel model(StribeckScene());
+  const ForcedSimulation r = SimulateScene(model, 0, 100, 0.3);
   ASSERT_TRUE(r.ok()) << r.message;
   const double T = model.period();
   ASSERT_EQ(r.section.size(), static_cast<size_t>(std::floor(100 / T)) + 1);
@@ -83,11 +87,7 @@ TEST(ForcedSimulate, StroboscopicPointsAreAtMultiplesOfThePeriod) {
 // A start between rows whose next multiple of dt rounds onto it (0.29 / 0.01
 // = 28.999...): the first row after the start lies after it, none at it.
 TEST(ForcedSimulate, StartBetweenRowsRoundsItsFirstBreakpointForward) {
-  const ForcedParams p = StribeckScene();
-  const ForcedModel model(p);
-  ForcedSimulationOptions o;
-  o.t_end = 1, o.dt = 0.01;
-  const ForcedSimulation r = SimulateForced(model, ForcedStart(model, 0.29, 0.1, 0), o);
+  const ForcedSimulation r = SimulateScene(ForcedModel(StribeckScene()), 0.29, 1, 0.01);
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_GE(r.rows.size(), 2u);
   EXPECT_EQ(r.rows[0].t, 0.29);

@@ -20,7 +20,7 @@ namespace stickslip {
 
 /// The extremes of x and x' of a row (OrbitRow::lo, hi); Extrema::Empty()
 /// where the shooting did not record them.
-Extrema RowExtrema(const OrbitRow& r);
+inline Extrema RowExtrema(const OrbitRow& r) { return ExtremaOf(r.lo, r.hi); }
 
 /// The period multiple m of a branch: its section's clock turns.
 inline int PeriodMultiple(const OrbitBranch& b) { return b.section.turns; }

@@ -34,7 +34,7 @@ PeriodicOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode exit
 int PeriodMultiple(const ForcedModel& model, const PeriodicOrbit& o);
 
 /// The extremes of x and x' of an orbit (PeriodicOrbit::lo, hi), else Empty().
-Extrema OrbitExtrema(const PeriodicOrbit& o);
+inline Extrema OrbitExtrema(const PeriodicOrbit& o) { return ExtremaOf(o.lo, o.hi); }
 
 /// Multipliers of a 2 x 2 monodromy, the larger modulus first.
 void Multipliers(const Mat2& M, std::complex<double> out[2]);
