@@ -9,6 +9,7 @@
 
 #include "py_results.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip::python {
@@ -34,44 +35,35 @@ Trajectory Simulate(const Params& p, double x0, double xdot0, double t_end, doub
   std::vector<double> t, x, xdot;
   std::vector<std::uint8_t> mode;
   Interrupt interrupt;
-  bool too_many = false;
-  FlowResult r;
+  SimulationOptions o;
+  o.flow = options, o.t_end = t_end, o.dt = dt, o.max_rows = max_rows, o.extrema = {0, 1};
+  o.cancelled = [&] { return interrupt(); };
+  SimulationSink sink;
+  sink.row = [&](double ti, const double* z, const ModeSet& m) {
+    t.push_back(ti), x.push_back(z[0]), xdot.push_back(z[1]);
+    mode.push_back(static_cast<std::uint8_t>(m[0]));
+  };
+  Simulation r;
   {
     py::gil_scoped_release nogil;
-    BeltFlow flow(model, options);
-    flow.set_cancel([&] { return too_many || interrupt(); });
     const Vec2 z0(x0, xdot0);
-    StopRule stop;
-    stop.t_max = t_end;
-    auto observer = [&](const Sample& s) {
-      const auto m = static_cast<std::uint8_t>(s.mode);
-      if (!t.empty() && s.t == t.back() && s.z[0] == x.back() && s.z[1] == xdot.back() &&
-          m == mode.back())
-        return;  // a repeated point (as in ss_simulate)
-      if (static_cast<long>(t.size()) >= max_rows) {
-        too_many = true;
-        return;
-      }
-      t.push_back(s.t), x.push_back(s.z[0]), xdot.push_back(s.z[1]), mode.push_back(m);
-    };
-    r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, dt, observer);
+    r = stickslip::Simulate(model, FlowPoint{0, z0, ModeSet(model.ModeAt(z0))}, o, sink);
   }
   interrupt.RaiseIfInterrupted();
-  if (too_many)
+  if (r.status == SimulationStatus::kRowLimit)
     throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
                           " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
   if (!r.ok())
-    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message + " (at t = " + Repr(r.t) +
-                   " in " + Name(r.mode) + ")");
+    RaiseNumerical(r.message + " (at t = " + Repr(r.end.t) + " in " + Name(r.end.mode[0]) + ")");
   Trajectory out;
   out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xdot);
   py::array names =
       ReadOnlyStrings({Name(Mode::kSlipBelow), Name(Mode::kStick), Name(Mode::kSlipAbove)});
   out.mode = names.attr("__getitem__")(ReadOnly(mode));  // codes to names
   out.mode.attr("setflags")(py::arg("write") = false);
-  out.status = r.status, out.t_stick = r.t_stick, out.switches = r.switches;
-  out.crossings = r.crossings, out.x_min = r.extrema.x_min, out.x_max = r.extrema.x_max;
-  out.xdot_min = r.extrema.xdot_min, out.xdot_max = r.extrema.xdot_max;
+  out.status = r.flow, out.t_stick = r.t_stick, out.switches = r.switches;
+  out.crossings = r.crossings, out.x_min = r.lo[0], out.x_max = r.hi[0];
+  out.xdot_min = r.lo[1], out.xdot_max = r.hi[1];
   return out;
 }
 

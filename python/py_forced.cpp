@@ -1,6 +1,6 @@
 // The forced oscillator in the Python module (issue 20, item 6):
 // x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
-// ForcedAxis and ForcedSection enums, and simulate_forced, forced_orbit and
+// ForcedAxis and SimulationSection enums, and simulate_forced, forced_orbit and
 // find_forced_orbits (branches: py_forced_branch.cpp), each without the GIL with
 // Ctrl-C polled by the library's cancel hooks (py_common.hpp, Interrupt).
 #include "py_forced.hpp"
@@ -14,9 +14,10 @@
 
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/flow.hpp"
 #include "stickslip/forced/orbit_scan.hpp"
-#include "stickslip/forced/simulate.hpp"
 
 namespace stickslip::python {
 
@@ -44,7 +45,7 @@ py::array Modes(const std::vector<std::uint8_t>& codes) {
 struct PyForcedTrajectory {
   py::array t, x, xdot, mode, phase;  // every dt and every switch
   py::array section_t, section_x, section_xdot, section_phase;
-  ForcedSection section = ForcedSection::kStrobe;
+  SimulationSection section = SimulationSection::kStrobe;
   int sticks = 0, exits = 0, crossings = 0;
   long steps = 0;
   double x_min = 0, x_max = 0, xdot_min = 0, xdot_max = 0;
@@ -80,11 +81,12 @@ PyForcedOrbit MakeOrbit(const stickslip::PeriodicOrbit& o, int m, const std::vec
 }
 
 PyForcedTrajectory SimulateForced(const ForcedParams& p, double x0, std::optional<double> xdot0,
-                                  double t_end, double dt, ForcedSection section, long max_rows,
+                                  double t_end, double dt, SimulationSection section, long max_rows,
                                   std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);  // throws InvalidArgument naming the value
-  ForcedSimulationOptions o;
+  SimulationOptions o;
   o.flow = FlowOf(rtol, atol), o.t_end = t_end, o.dt = dt, o.section = section;
+  o.period = model.period(), o.max_rows = max_rows, o.extrema = {0, 1};
   const std::string e = o.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
   if (!std::isfinite(x0) || (xdot0 && !std::isfinite(*xdot0)))
@@ -94,25 +96,29 @@ PyForcedTrajectory SimulateForced(const ForcedParams& p, double x0, std::optiona
                           std::to_string(max_rows) + " (raise max_rows or dt)");
   Interrupt interrupt;
   o.cancelled = [&] { return interrupt(); };
-  ForcedSimulation r;
-  {
-    py::gil_scoped_release nogil;
-    r = SimulateForced(model, ForcedStart(model, 0, x0, xdot0.value_or(p.base.v)), o);
-  }
-  interrupt.RaiseIfInterrupted();
-  if (r.status == ForcedSimulationStatus::kFailed) RaiseNumerical(r.message);
   std::vector<double> t, x, xd, ph, st, sx, sxd, sph;
   std::vector<std::uint8_t> mode;
   auto phase = [&](double tt) {
     const double a = std::fmod(p.omega * tt, 2 * M_PI);
     return a < 0 ? a + 2 * M_PI : a;
   };
-  for (const ForcedPoint& q : r.rows) {
-    t.push_back(q.t), x.push_back(q.x), xd.push_back(q.xdot), ph.push_back(phase(q.t));
-    mode.push_back(static_cast<std::uint8_t>(q.mode));
+  SimulationSink sink;
+  sink.row = [&](double tt, const double* z, const ModeSet& m) {
+    t.push_back(tt), x.push_back(z[0]), xd.push_back(z[1]), ph.push_back(phase(tt));
+    mode.push_back(static_cast<std::uint8_t>(m[0]));
+  };
+  sink.section = [&](long, double tt, const double* z, const ModeSet&) {
+    st.push_back(tt), sx.push_back(z[0]), sxd.push_back(z[1]), sph.push_back(phase(tt));
+  };
+  Simulation r;
+  {
+    py::gil_scoped_release nogil;
+    r = Simulate(model, ForcedStart(model, 0, x0, xdot0.value_or(p.base.v)), o, sink);
   }
-  for (const ForcedSectionPoint& q : r.section)
-    st.push_back(q.p.t), sx.push_back(q.p.x), sxd.push_back(q.p.xdot), sph.push_back(phase(q.p.t));
+  interrupt.RaiseIfInterrupted();
+  if (r.status == SimulationStatus::kRowLimit)
+    throw InvalidArgument(r.message + " (raise max_rows or dt)");
+  if (!r.ok()) RaiseNumerical(r.message);
   PyForcedTrajectory out;
   out.t = ReadOnly(t), out.x = ReadOnly(x), out.xdot = ReadOnly(xd), out.phase = ReadOnly(ph);
   out.mode = Modes(mode);
@@ -120,8 +126,7 @@ PyForcedTrajectory SimulateForced(const ForcedParams& p, double x0, std::optiona
   out.section_phase = ReadOnly(sph);
   out.section = section, out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings;
   out.steps = r.steps;
-  out.x_min = r.extrema.x_min, out.x_max = r.extrema.x_max;
-  out.xdot_min = r.extrema.xdot_min, out.xdot_max = r.extrema.xdot_max;
+  out.x_min = r.lo[0], out.x_max = r.hi[0], out.xdot_min = r.lo[1], out.xdot_max = r.hi[1];
   return out;
 }
 
@@ -173,9 +178,11 @@ void BindForcedTypes(py::module_& m) {
       .value("force", ForcedAxis::kForce)
       .value("v", ForcedAxis::kV)
       .value("beta", ForcedAxis::kBeta);
-  py::enum_<ForcedSection>(m, "ForcedSection", "The Poincare section of simulate_forced().")
-      .value("strobe", ForcedSection::kStrobe)
-      .value("exit", ForcedSection::kExit);
+  py::enum_<SimulationSection>(m, "SimulationSection", "The Poincare section of a simulation.")
+      .value("none", SimulationSection::kNone)
+      .value("strobe", SimulationSection::kStrobe)
+      .value("exit", SimulationSection::kExit);
+  m.attr("ForcedSection") = m.attr("SimulationSection");  // its older name
   py::enum_<BranchStatus>(m, "BranchStatus", "How a branch ended (every system's).")
       .value("reached_end", BranchStatus::kReachedEnd)
       .value("unbounded", BranchStatus::kUnbounded)
@@ -251,7 +258,7 @@ void BindForced(py::module_& m) {
   BindChaos(m);
   m.def("simulate_forced", &SimulateForced, py::arg("params"), py::arg("x0") = 0.0,
         py::arg("xdot0") = py::none(), py::arg("t_end") = 100.0, py::arg("dt") = 0.01,
-        py::arg("section") = ForcedSection::kStrobe, py::arg("max_rows") = 1000000,
+        py::arg("section") = SimulationSection::kStrobe, py::arg("max_rows") = 1000000,
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
         "One trajectory of the forced oscillator from (x0, xdot0 (default v)) at t = 0, as "
         "ss_simulate --force: rows every dt and at every switch, and the Poincare section.");

@@ -15,7 +15,7 @@
 #include "py_common.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/flow/flow.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip::python {
@@ -90,31 +90,25 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   std::vector<double> t, z;
   std::vector<std::string> mode;
   Interrupt interrupt;
-  bool too_many = false;
-  FlowRun r;
+  SimulationOptions o;
+  o.flow = options, o.t_end = t_end, o.dt = dt, o.max_rows = max_rows;
+  o.cancelled = [&] { return interrupt(); };
+  SimulationSink sink;
+  sink.row = [&](double ti, const double* zi, const ModeSet& m) {
+    t.push_back(ti), z.insert(z.end(), zi, zi + n), mode.push_back(ModeSetName(m, k));
+  };
+  Simulation r;
   {
     py::gil_scoped_release nogil;
-    Flow flow(*s, options);
-    flow.set_cancel([&] { return too_many || interrupt(); });
-    FlowRequest req;
-    req.t_max = t_end;
-    req.output_dt = dt;
-    req.observer = [&](double ti, const double* zi, const ModeSet& m) {
-      if (static_cast<long>(t.size()) >= max_rows) {
-        too_many = true;
-        return;
-      }
-      t.push_back(ti), z.insert(z.end(), zi, zi + n), mode.push_back(ModeSetName(m, k));
-    };
-    r = flow.Run(FlowPoint{0, z0, ModeOf(*s, z0)}, req);
+    r = Simulate(*s, FlowPoint{0, z0, ModeOf(*s, z0)}, o, sink);
   }
   interrupt.RaiseIfInterrupted();
-  if (too_many)
+  if (r.status == SimulationStatus::kRowLimit)
     throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
                           " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
   if (!r.ok())  // contact-open is a result: the run stops there (issue 32)
-    RaiseNumerical(std::string(Name(r.status)) + ": " + r.message + " (at t = " + Repr(r.end.t) +
-                   " in " + ModeSetName(r.end.mode, k) + ")");
+    RaiseNumerical(r.message + " (at t = " + Repr(r.end.t) + " in " + ModeSetName(r.end.mode, k) +
+                   ")");
   PySystemTrajectory out;
   out.t = ReadOnly(t);
   py::array_t<double> zz({static_cast<py::ssize_t>(t.size()), static_cast<py::ssize_t>(n)});
@@ -123,7 +117,8 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   out.z = std::move(zz);
   out.mode = ReadOnlyStrings(mode);
   for (int i = 0; i < n; ++i) out.names.push_back(s->StateName(i));
-  out.status = r.status, out.message = r.message, out.opened = r.opened;
+  out.status = r.flow, out.message = r.message;
+  out.opened = r.opened;
   out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings, out.t_stick = r.t_stick;
   return out;
 }

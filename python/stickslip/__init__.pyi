@@ -112,9 +112,11 @@ class ForcedAxis(enum.IntEnum):
     force = 1
     v = 2
     beta = 3
-class ForcedSection(enum.IntEnum):
-    strobe = 0
-    exit = 1
+class SimulationSection(enum.IntEnum):
+    none = 0
+    strobe = 1
+    exit = 2
+ForcedSection: type[SimulationSection]
 class BranchStatus(enum.IntEnum):
     reached_end = 0
     unbounded = 1
@@ -237,7 +239,7 @@ class ForcedTrajectory:
     xdot: Array
     mode: Array
     phase: Array
-    section: ForcedSection
+    section: SimulationSection
     section_t: Array
     section_x: Array
     section_xdot: Array
@@ -562,7 +564,7 @@ def simulate(params: Params, x0: float = 0.0, xdot0: float = 0.25, t_end: float 
              method: MethodLike = None) -> Trajectory: ...
 def simulate_forced(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
                     t_end: float = 100.0, dt: float = 0.01,
-                    section: ForcedSection = ForcedSection.strobe, max_rows: int = 1000000,
+                    section: SimulationSection = SimulationSection.strobe, max_rows: int = 1000000,
                     rtol: Optional[float] = None,
                     atol: Optional[float] = None) -> ForcedTrajectory: ...
 def forced_orbit(params: ForcedParams, x0: float, xdot0: float, m: int = 1,

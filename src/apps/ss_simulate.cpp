@@ -18,7 +18,7 @@
 #include "cli/simulate_system.hpp"
 #include "cli/study.hpp"
 #include "cli/system_choice.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 #include "stickslip/model/model.hpp"
@@ -106,13 +106,6 @@ std::string PlotScript(const std::string& data, const std::string& figure, const
   return s;
 }
 
-// The first row with a non-finite number, or empty.
-std::string NonFinite(const ss::Sample& s) {
-  if (std::isfinite(s.t) && std::isfinite(s.z[0]) && std::isfinite(s.z[1])) return "";
-  return "non-finite state at t = " + ss::FormatNumber(s.t) + ": x = " + ss::FormatNumber(s.z[0]) +
-         ", x' = " + ss::FormatNumber(s.z[1]);
-}
-
 // The belt run's settings, all checked before anything runs or is written.
 struct Settings {
   ss::Params params;
@@ -128,16 +121,16 @@ Settings Configure(const cli::Arguments& args) {
   return s;
 }
 
-// Why a run gives no data: a non-finite row, or the flow's status and where.
-std::string Failure(const ss::FlowResult& r, const std::string& bad, const cli::RunControl& run) {
-  if (!bad.empty()) return bad;
+// Why a run gives no data: the simulation's status, and where.
+std::string Failure(const ss::Simulation& r, const cli::RunControl& run) {
   std::string where;
-  if (r.status != ss::FlowStatus::kIntegratorFailed &&  // these messages already say where
-      r.status != ss::FlowStatus::kCancelled)
-    where = " (at t = " + ss::FormatNumber(r.t) + " in " + ss::Name(r.mode) +
-            ", x = " + ss::FormatNumber(r.z[0]) + ", x' = " + ss::FormatNumber(r.z[1]) + ")";
-  return std::string(ss::Name(r.status)) + ": " + r.message + where +
-         (r.status == ss::FlowStatus::kCancelled ? " (" + run.Reason() + ")" : "");
+  if (r.status == ss::SimulationStatus::kFailed &&
+      r.message.find("non-finite") == std::string::npos)
+    where = " (at t = " + ss::FormatNumber(r.end.t) + " in " + ss::Name(r.end.mode[0]) +
+            ", x = " + ss::FormatNumber(r.end.z[0]) + ", x' = " + ss::FormatNumber(r.end.z[1]) +
+            ")";
+  return r.message + where +
+         (r.status == ss::SimulationStatus::kCancelled ? " (" + run.Reason() + ")" : "");
 }
 
 int SimulateBelt(const cli::Arguments& args, const std::string& command) {
@@ -149,14 +142,13 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   cli::AppRun app(kProg, args, "plots/simulate", {"trajectory.tsv", "trajectory.gp", figure});
   cli::RunControl& run = app.run();
   const ss::Model model(s.params);
-  ss::BeltFlow flow(model, s.options);
-  bool too_many = false;  // rows at switches count toward kMaxRows too
-  flow.set_cancel([&] {
+  ss::SimulationOptions o;
+  o.flow = s.options, o.t_end = s.range.t_end, o.dt = s.range.dt, o.max_rows = s.range.max_rows;
+  o.cancelled = [&] {
     run.Heartbeat("");
-    return too_many || run.Cancelled();
-  });
+    return run.Cancelled();
+  };
   run.Phase("integrating");
-  const ss::Vec2 z0(s.range.x0, s.range.xdot0);
   std::vector<std::string> columns = {"t", "x", "xdot", "mode"};
   if (scales) columns.insert(columns.end(), {"t_s", "x_m", "xdot_m_s"});
   ss::TsvTable table(columns);
@@ -168,42 +160,33 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
     table.AddMeta("L", ss::FormatNumber(scales->L) + " m (M g / K)");
     table.AddMeta("t0", ss::FormatNumber(scales->t0) + " s (sqrt(M / K))");
   }
-  ss::Sample last{std::nan(""), ss::Vec2::Zero(), ss::Mode::kStick};
-  std::string bad;
-  auto observer = [&](const ss::Sample& x) {
-    if (x.t == last.t && x.z == last.z && x.mode == last.mode) return;  // a repeated point
-    if (table.rows() >= static_cast<std::size_t>(s.range.max_rows)) {   // one more than allowed
-      too_many = true;
-      return;
-    }
-    if (bad.empty()) bad = NonFinite(x);
-    if (bad.empty() && scales)
-      table.AddRow({x.t, x.z[0], x.z[1], ss::Name(x.mode), x.t * scales->t0, x.z[0] * scales->L,
-                    x.z[1] * scales->L / scales->t0});
-    else if (bad.empty())
-      table.AddRow({x.t, x.z[0], x.z[1], ss::Name(x.mode)});
-    last = x;
-    run.Progress("t = " + ss::FormatNumber(x.t), x.t / s.range.t_end, x.t, "time units");
+  ss::SimulationSink sink;
+  sink.row = [&](double t, const double* z, const ss::ModeSet& m) {
+    if (scales)
+      table.AddRow({t, z[0], z[1], ss::Name(m[0]), t * scales->t0, z[0] * scales->L,
+                    z[1] * scales->L / scales->t0});
+    else
+      table.AddRow({t, z[0], z[1], ss::Name(m[0])});
+    run.Progress("t = " + ss::FormatNumber(t), t / s.range.t_end, t, "time units");
   };
-  ss::StopRule stop;
-  stop.t_max = s.range.t_end;
-  ss::FlowResult r;
+  const ss::Vec2 start(s.range.x0, s.range.xdot0);
+  ss::Simulation r;
   try {
-    r = flow.Run(0.0, z0, model.ModeAt(z0), stop, false, s.range.dt, observer);
+    r = ss::Simulate(model, ss::FlowPoint{0, start, ss::ModeSet(model.ModeAt(start))}, o, sink);
   } catch (const ss::InvalidArgument& e) {  // valid input: a numerical failure
     throw ss::Error(std::string("numerical failure: ") + e.what());
   }
-  if (too_many)  // bad input found late: nothing written
+  if (r.status == ss::SimulationStatus::kRowLimit)  // bad input found late: nothing written
     throw cli::UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
-                          args.Source("dt") + " " + args.Text("dt", "0.01") + ": " + "more than " +
+                          args.Source("dt") + " " + args.Text("dt", "0.01") + ": more than " +
                           args.Source("max_rows") + " = " + std::to_string(s.range.max_rows) +
-                          " rows (rows at switches included) by t = " + ss::FormatNumber(last.t) +
+                          " rows (rows at switches included) by t = " + ss::FormatNumber(r.end.t) +
                           "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
-  if (!r.ok() || !bad.empty()) {
+  if (!r.ok()) {
     // As every app: the rows so far (all finite), marked partial with where
     // the run stopped; no figure, and an older one is removed (not this run's).
-    const std::string why = Failure(r, bad, run);
+    const std::string why = Failure(r, run);
     table.AddMeta("status", "partial (" + why + ")");
     app.out().Write("trajectory.tsv", table.str());
     app.out().Commit({"trajectory.gp", figure});
@@ -214,7 +197,7 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
   app.out().Write("trajectory.tsv", table.str());
   app.out().Write("trajectory.gp", PlotScript("trajectory.tsv", figure, model, scales, format));
   if (!app.Finish("trajectory.gp", {figure}, {figure})) return cli::kExitFailed;
-  std::cout << kProg << ": " << table.rows() << " rows to t = " << ss::FormatNumber(r.t)
+  std::cout << kProg << ": " << table.rows() << " rows to t = " << ss::FormatNumber(r.end.t)
             << "; wrote " << app.out().dir() << "/trajectory.tsv"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   return app.ExitCode("");

@@ -9,7 +9,8 @@
 #include "cli/app.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
-#include "stickslip/forced/simulate.hpp"
+#include "stickslip/flow/simulate.hpp"
+#include "stickslip/forced/flow.hpp"
 #include "stickslip/io/figure_style.hpp"
 
 namespace stickslip::cli {
@@ -33,8 +34,8 @@ constexpr double kShownPeriods = 8;
 // periods) and section (strobe: x' against x; exit: the exit-phase map, phase
 // of exit n+1 against exit n). The first half of the run (t < t_end / 2) is
 // drawn as the transient, in gray, apart from the rest.
-std::string ForcedScript(ForcedSection sec, const std::string& title, FigureFormat f, double t_end,
-                         double period) {
+std::string ForcedScript(SimulationSection sec, const std::string& title, FigureFormat f,
+                         double t_end, double period) {
   const std::string ts = FormatNumber(t_end / 2);
   const std::string late = "'after the transient (t ≥ " + Num(t_end / 2, 4) + ")'";
   const std::string early = "'transient (t < " + Num(t_end / 2, 4) + ")'";
@@ -60,7 +61,7 @@ std::string ForcedScript(ForcedSection sec, const std::string& title, FigureForm
   s += "unset multiplot\nset autoscale x\nset bmargin 7\n";
   s += FigureTerminal(f, 950, 750);
   s += "set output " + Quoted(FigureFile("section", f)) + "\n";
-  if (sec == ForcedSection::kStrobe) {
+  if (sec == SimulationSection::kStrobe) {
     s += "set title \"stroboscopic section (cos Ωt = 1)\\n\" . " + Quoted(FigureTitle(title, {})) +
          "\n";
     s += "set xlabel 'displacement x (dimensionless)'\n";
@@ -166,36 +167,34 @@ void AddSimulateForcedOptions(po::options_description& d) {
 // The forced run's settings, all checked before anything runs or is written.
 struct SimulateSetup {
   ForcedParams p;
-  ForcedSimulationOptions o;
+  SimulationOptions o;
   FlowOptions flow;  // as the metadata shows it
   SimulateRange range;
 };
 
 SimulateSetup ConfigureForced(const Arguments& args) {
   SimulateSetup st;
-  ForcedParams& p = st.p;
-  ForcedSimulationOptions& o = st.o;
   const ForcedInputs in = ForcedInputsFromArguments(args);
-  p = in.p, st.flow = in.shown, o.flow = in.flow;
+  st.p = in.p, st.flow = in.shown, st.o.flow = in.flow;
   const std::string sec = args.Text("section", "strobe");
   if (sec != "strobe" && sec != "exit")
     throw UsageError("invalid value '" + sec + "' for " + args.Source("section") +
                      ": must be strobe or exit");
-  o.section = sec == "strobe" ? ForcedSection::kStrobe : ForcedSection::kExit;
-  st.range = SimulateRangeFromArguments(args, p.base.v);
-  const SimulateRange& range = st.range;
-  o.t_end = range.t_end, o.dt = range.dt;
+  st.o.section = sec == "strobe" ? SimulationSection::kStrobe : SimulationSection::kExit;
+  st.range = SimulateRangeFromArguments(args, st.p.base.v);
+  st.o.t_end = st.range.t_end, st.o.dt = st.range.dt, st.o.max_rows = st.range.max_rows;
+  st.o.period = ForcedModel(st.p).period();
+  st.o.extrema = {0, 1};
   return st;
 }
 
 int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command) {
   SimulateSetup st = ConfigureForced(args);
   const ForcedParams& p = st.p;
-  ForcedSimulationOptions& o = st.o;
-  const FlowOptions& flow = st.flow;
+  SimulationOptions& o = st.o;
   const SimulateRange& range = st.range;
   const ForcedModel model(p);
-  if (o.section == ForcedSection::kStrobe && o.t_end / model.period() > range.max_rows)
+  if (o.section == SimulationSection::kStrobe && o.t_end / model.period() > range.max_rows)
     throw UsageError("t_end / (2 pi / omega) = " + FormatNumber(o.t_end / model.period()) +
                      " section points is more than " + args.Source("max_rows") + " = " +
                      std::to_string(range.max_rows));
@@ -209,36 +208,39 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     run.Heartbeat("");
     return run.Cancelled();
   };
-  o.max_rows = range.max_rows;
-  const ForcedSimulation r = SimulateForced(model, ForcedStart(model, 0, range.x0, range.xdot0), o);
-  if (r.status == ForcedSimulationStatus::kRowLimit)  // bad input found late: nothing written
+  TsvTable traj({"t", "x", "xdot", "mode", "phase"});
+  TsvTable section({"n", "t", "phase", "x", "xdot", "mode"});
+  double t_last = 0;
+  SimulationSink sink;
+  sink.row = [&](double t, const double* z, const ModeSet& m) {
+    traj.AddRow({t, z[0], z[1], Name(m[0]), Phase(model, t)});
+    t_last = t;
+  };
+  sink.section = [&](long n, double t, const double* z, const ModeSet& m) {
+    section.AddRow({static_cast<double>(n), t, Phase(model, t), z[0], z[1], Name(m[0])});
+  };
+  const Simulation r = Simulate(model, ForcedStart(model, 0, range.x0, range.xdot0), o, sink);
+  if (r.status == SimulationStatus::kRowLimit)  // bad input found late: nothing written
     throw UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
                      args.Source("dt") + " " + args.Text("dt", "0.01") + ": " + r.message +
                      "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
   const std::string title =
       DescribeModel(p.base) + " force=" + FormatNumber(p.force) + " omega=" + FormatNumber(p.omega);
-  Metadata meta = RunMetadata(prog, command, p.base, flow);
+  Metadata meta = RunMetadata(prog, command, p.base, st.flow);
   meta.insert(meta.end(), {{"model", "forced oscillator, " + title},
                            {"force", FormatNumber(p.force)},
                            {"omega", FormatNumber(p.omega)},
                            {"section", Name(o.section)}});
-  const std::string why = r.ok() ? ""
-                                 : r.message + (r.status == ForcedSimulationStatus::kCancelled
-                                                    ? " (" + run.Reason() + ")"
-                                                    : "");
+  const std::string why =
+      r.ok()
+          ? ""
+          : r.message + (r.status == SimulationStatus::kCancelled ? " (" + run.Reason() + ")" : "");
   meta.emplace_back("status", r.ok() ? "complete" : "partial (" + why + ")");
-  TsvTable traj({"t", "x", "xdot", "mode", "phase"});
-  TsvTable section({"n", "t", "phase", "x", "xdot", "mode"});
   for (TsvTable* t : {&traj, &section}) {
     t->PrependMeta(meta);
     AddRangeMeta(*t, range);
   }
-  for (const ForcedPoint& q : r.rows)
-    traj.AddRow({q.t, q.x, q.xdot, Name(q.mode), Phase(model, q.t)});
-  for (const ForcedSectionPoint& q : r.section)
-    section.AddRow(
-        {static_cast<double>(q.n), q.p.t, Phase(model, q.p.t), q.p.x, q.p.xdot, Name(q.p.mode)});
   app.out().Write("trajectory.tsv", traj.str());
   app.out().Write("section.tsv", section.str());
   if (!r.ok()) {
@@ -246,14 +248,13 @@ int SimulateForcedApp(const Arguments& args, const std::string& prog, const std:
     return app.ExitCode(why + "; the trajectory so far is written to " + app.out().dir() +
                         ", marked partial");
   }
-  app.out().Write("trajectory.gp",
-                  ForcedScript(o.section, title, format, r.rows.back().t, model.period()));
+  app.out().Write("trajectory.gp", ForcedScript(o.section, title, format, t_last, model.period()));
   if (!app.Finish("trajectory.gp", {fig_t, fig_s}, {fig_t, fig_s})) return kExitFailed;
   std::cout << prog << ": forced oscillator, " << title << "\n"
-            << r.rows.size() << " rows to t = " << FormatNumber(r.rows.back().t) << ", "
-            << r.section.size() << " section points (" << Name(o.section) << "), " << r.sticks
-            << " sticks, " << r.crossings << " crossings; x in [" << FormatNumber(r.extrema.x_min)
-            << ", " << FormatNumber(r.extrema.x_max) << "]\n"
+            << r.rows << " rows to t = " << FormatNumber(t_last) << ", " << r.section_points
+            << " section points (" << Name(o.section) << "), " << r.sticks << " sticks, "
+            << r.crossings << " crossings; x in [" << FormatNumber(r.lo[0]) << ", "
+            << FormatNumber(r.hi[0]) << "]\n"
             << "wrote " << app.out().dir() << "/trajectory.tsv, section.tsv, trajectory.gp"
             << (app.gnuplot().ok() ? ", " + fig_t + " and " + fig_s : "") << "\n";
   return app.ExitCode("");

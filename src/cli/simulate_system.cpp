@@ -11,7 +11,7 @@
 #include "cli/simulate_forced.hpp"
 #include "cli/system_choice.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
-#include "stickslip/flow/flow.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 
@@ -99,47 +99,33 @@ int SimulateSystemApp(const Arguments& args, const std::string& prog, const std:
   table.AddMeta("dt", FormatNumber(range.dt));
   table.AddMeta("rtol", FormatNumber(options.rtol));
   table.AddMeta("atol", FormatNumber(options.atol));
-  Flow flow(*s, options);
-  bool too_many = false;
-  std::string bad;  // a non-finite state: never written
-  flow.set_cancel([&] { return too_many || !bad.empty() || run.Cancelled(); });
-  FlowRequest req;
-  req.t_max = range.t_end;
-  req.output_dt = range.dt;
-  req.observer = [&](double t, const double* z, const ModeSet& m) {
-    if (table.rows() >= static_cast<std::size_t>(range.max_rows)) {  // one more than allowed
-      too_many = true;
-      return;
-    }
+  SimulationOptions o;
+  o.flow = options, o.t_end = range.t_end, o.dt = range.dt, o.max_rows = range.max_rows;
+  o.cancelled = [&] { return run.Cancelled(); };
+  SimulationSink sink;
+  sink.row = [&](double t, const double* z, const ModeSet& m) {
     std::vector<TsvTable::Cell> row = {t};
     for (int i = 0; i < s->dimension(); ++i) row.emplace_back(z[i]);
-    for (int i = 0; i < s->dimension() && bad.empty(); ++i)
-      if (!std::isfinite(z[i]) || !std::isfinite(t))
-        bad = "non-finite state at t = " + FormatNumber(t);
-    if (!bad.empty()) return;
     row.emplace_back(ModeSetName(m, s->contacts()));
     table.AddRow(row);
     run.Progress("t = " + FormatNumber(t), t / range.t_end, t, "time units");
   };
   run.Phase("integrating");
-  const FlowRun r = flow.Run(FlowPoint{0, z0, ModeOf(*s, z0)}, req);
-  if (too_many)
+  const Simulation r = Simulate(*s, FlowPoint{0, z0, ModeOf(*s, z0)}, o, sink);
+  if (r.status == SimulationStatus::kRowLimit)
     throw UsageError(args.Source("max_rows") + " = " + std::to_string(range.max_rows) +
                      ": the rows at switches took the table past it by t = " +
                      FormatNumber(r.end.t) + "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
-  if (!r.ok() || !bad.empty()) {  // the rows so far, marked partial; no figure
+  if (!r.ok()) {  // the rows so far, marked partial; no figure
     const std::string why =
-        !bad.empty()
-            ? bad
-            : std::string(Name(r.status)) + ": " + r.message + " (at t = " + FormatNumber(r.end.t) +
-                  ")" + (r.status == FlowStatus::kCancelled ? " (" + run.Reason() + ")" : "");
+        r.message + (r.status == SimulationStatus::kCancelled ? " (" + run.Reason() + ")" : "");
     table.AddMeta("status", "partial (" + why + ")");
     app.out().Write("trajectory.tsv", table.str());
     app.out().Commit({"trajectory.gp", figure});
     return app.ExitCode(why + "; the trajectory so far is written, marked partial");
   }
-  table.AddMeta("status", r.status == FlowStatus::kContactOpen
+  table.AddMeta("status", r.status == SimulationStatus::kContactOpen
                               ? "complete: contact " + std::to_string(r.opened) +
                                     " opens at t = " + FormatNumber(r.end.t) + ", the run ends"
                               : std::string("complete"));

@@ -31,23 +31,6 @@ Stepper& Engine::Solver() {
   return *slot;
 }
 
-namespace {
-// Throws InvalidArgument unless the start lies where its mode says: each
-// sticking contact on its surface, within its static limit.
-void CheckStart(const System& s, const FlowPoint& p) {
-  for (int i = 0; i < s.contacts(); ++i) {
-    if (!p.mode.sticks(i)) continue;
-    const ContactVelocity c = s.Contact(i);
-    const double h = c.At(p.z.data()), lambda = s.StickForce(p.mode, i, p.z);
-    const double limit = s.StaticLimit(i, p.z);
-    const double slack = Tolerances::StickStart(c.speed, limit);
-    if (!(std::abs(h) <= slack) || !(std::abs(lambda) <= limit + slack))
-      throw InvalidArgument("Flow::Run: stick mode requested off the stick set (contact " +
-                            std::to_string(i) + ")");
-  }
-}
-}  // namespace
-
 void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
   s_ = flow_.system_.get();
   rq_ = &rq;
@@ -128,12 +111,22 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   }
 }
 
+// The grid origin + k dt (FlowRequest::output_origin): the start is sampled
+// when it lies on it, to rounding.
+void Engine::StartOutput(const FlowRequest& rq) {
+  output_origin_ = std::isnan(rq.output_origin) ? t_ : rq.output_origin;
+  next_output_ = FirstSample(output_origin_, rq.output_dt, t_);
+  if (output_origin_ + next_output_ * rq.output_dt <= t_ + Tolerances::OutputAtStart(t_)) {
+    rq.observer(t_, z_.data(), mode_);
+    ++next_output_;
+  }
+}
+
 void Engine::Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
   Start(start, rq, out);
   FlowRun& r = *out;
-  next_output_ = t_ + rq.output_dt;
   last_switch_t_ = NAN;
-  if (rq.observer && rq.output_dt > 0) rq.observer(t_, z_.data(), mode_);
+  if (rq.observer && rq.output_dt > 0) StartOutput(rq);
   if (rq.step_observer) rq.step_observer(t_, z_.data(), mode_);
   RootRepeats stalls(Tolerances::kSwitchStalls);
   for (;;) {
@@ -211,7 +204,7 @@ bool Engine::Segment() {
   InitialRows(p.layout);
   SegmentOutput out;
   if (rq_->observer && rq_->output_dt > 0)
-    out = SegmentOutput{rq_->output_dt, &next_output_, &Engine::OnOutput, this};
+    out = SegmentOutput{rq_->output_dt, output_origin_, &next_output_, &Engine::OnOutput, this};
   Stepper& cv = Solver();
   const double t0 = t_;
   const SegmentEnd e = RunSegment(cv, p, t_, y0_.data(), rq_->t_max, out, &roots_);
@@ -249,10 +242,8 @@ bool Engine::Segment() {
         // segment is that rest point, and no event can follow.
         z_ = rest_;
         const double t_rest = std::isfinite(rq_->t_max) ? rq_->t_max : e.t_end;
-        while (out.on() && next_output_ < t_rest) {
-          rq_->observer(next_output_, z_.data(), mode_);
-          next_output_ += out.dt;
-        }
+        for (; out.on() && out.at() < t_rest; ++next_output_)
+          rq_->observer(out.at(), z_.data(), mode_);
         t_ = t_rest;
         column_lost_ = column_;  // the segment's column is not the rest's
         return Done(FlowStatus::kTimeLimit);
@@ -314,7 +305,8 @@ bool Engine::Done(FlowStatus s) {
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.
   const bool sampled = r.switches > 0 && last_switch_t_ == t_;
-  if (rq_->observer && rq_->output_dt > 0 && !sampled) rq_->observer(t_, z_.data(), mode_);
+  if (rq_->observer && rq_->output_dt > 0 && rq_->output_end && !sampled)
+    rq_->observer(t_, z_.data(), mode_);
   if (rq_->step_observer && !sampled) rq_->step_observer(t_, z_.data(), mode_);
   return false;
 }

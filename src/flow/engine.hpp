@@ -21,6 +21,10 @@ struct FunctionRole {
   int sign = 0;   // an exit: +1 at lambda = +limit, -1 at -limit
 };
 
+// Throws InvalidArgument unless the start lies where its mode says: each
+// sticking contact on its surface, within its static limit (mode_choice.cpp).
+void CheckStart(const System& s, const FlowPoint& p);
+
 class Engine {
  public:
   explicit Engine(Flow& flow);
@@ -60,6 +64,7 @@ class Engine {
   double ExitDp(const ModeSet& stick, int c, int sign) const;
   void Record(SwitchKind kind, int contact, const ModeSet& before, const ModeSet& after);
   bool Done(FlowStatus s);
+  void StartOutput(const FlowRequest& rq);
   bool Fail(FlowStatus s, const std::string& why);
   void Extend(const double* z);
   bool Settled(const double* y) const;
@@ -100,8 +105,9 @@ class Engine {
   std::vector<double> clock_drate_;                // d omega / dp of each clock (column_)
   Eigen::VectorXd rest_;                           // the mode's rest point, if any
   std::vector<double> clock_rate_, clock_offset_;  // clocks = rate t + offset
-  double next_output_ = 0;
-  double last_switch_t_ = 0;  // where the last switch was recorded
+  double output_origin_ = 0;                       // samples at origin + k output_dt
+  long next_output_ = 0;                           // the next sample's k
+  double last_switch_t_ = 0;                       // where the last switch was recorded
   // The segment's problem; the events of the last few modes (a mode's
   // events, the roles of its functions, the extremum components each
   // records, its arrivals), reused while the request keeps its shape.

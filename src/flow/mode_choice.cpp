@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flow/engine.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/flow/switching.hpp"
 
@@ -129,4 +131,20 @@ ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
   return m;
 }
 
+namespace flow_detail {
+
+void CheckStart(const System& s, const FlowPoint& p) {
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (!p.mode.sticks(i)) continue;
+    const ContactVelocity c = s.Contact(i);
+    const double h = c.At(p.z.data()), lambda = s.StickForce(p.mode, i, p.z);
+    const double limit = s.StaticLimit(i, p.z);
+    const double slack = Tolerances::StickStart(c.speed, limit);
+    if (!(std::abs(h) <= slack) || !(std::abs(lambda) <= limit + slack))
+      throw InvalidArgument("Flow::Run: stick mode requested off the stick set (contact " +
+                            std::to_string(i) + ")");
+  }
+}
+
+}  // namespace flow_detail
 }  // namespace stickslip

@@ -247,9 +247,10 @@ void Engine::Record(SwitchKind kind, int c, const ModeSet& before, const ModeSet
   }
   Extend(z_.data());
   last_switch_t_ = t_;
+  // The switch first: an observer may read it (Simulate's exit section).
+  if (rq_->switches) rq_->switches->push_back(FlowSwitch{kind, t_, c, z_, before, after});
   if (rq_->observer && rq_->output_dt > 0) rq_->observer(t_, z_.data(), after);
   if (rq_->step_observer) rq_->step_observer(t_, z_.data(), after);
-  if (rq_->switches) rq_->switches->push_back(FlowSwitch{kind, t_, c, z_, before, after});
 }
 
 }  // namespace stickslip::flow_detail

@@ -11,7 +11,7 @@ namespace {
 
 void Emit(const SegmentOutput& out, double t, const double* y) {
   out.emit(out.context, t, y);
-  *out.next += out.dt;
+  ++*out.next;
 }
 
 // The events at a root: non-terminal hooks in the order of the functions;
@@ -42,6 +42,14 @@ bool CountsAtStart(const SegmentProblem& p, const int* rf) {
 
 }  // namespace
 
+long FirstSample(double origin, double dt, double t) {
+  const double tol = Tolerances::OutputAtStart(t);
+  long k = static_cast<long>(std::max(0.0, std::ceil((t - tol - origin) / dt)));
+  while (k > 0 && origin + (k - 1) * dt >= t - tol) --k;  // ceil's rounding, either way
+  while (origin + k * dt < t - tol) ++k;
+  return k;
+}
+
 SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, const double* y0,
                       double t_max, const SegmentOutput& out, std::vector<int>* roots) {
   cv.Reset(problem, t0, y0);
@@ -59,7 +67,7 @@ SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, con
   // A segment that starts at an output time (a switch there, to rounding) has
   // that sample already: the switch's.
   const bool sampling = out.on();
-  while (sampling && *out.next <= t0 + Tolerances::OutputAtStart(t0)) *out.next += out.dt;
+  while (sampling && out.at() <= t0 + Tolerances::OutputAtStart(t0)) ++*out.next;
   // Each root function fires once per instant (two repeats per function).
   RootRepeats repeats(2 * std::max(nf, 3));
   auto done = [&](SegmentEnd::Kind kind, double t) {
@@ -69,7 +77,7 @@ SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, con
     return end;
   };
   for (;;) {
-    const double tout = sampling ? std::min(*out.next, end.t_end) : end.t_end;
+    const double tout = sampling ? std::min(out.at(), end.t_end) : end.t_end;
     double t = t0;
     const StepOutcome flag = cv.Advance(tout, &t);
     if (flag == StepOutcome::kCancelled || (problem.cancel && (*problem.cancel)()))
@@ -87,7 +95,7 @@ SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, con
       }
       // A root exactly at an output time: report the sample, or the next
       // call would ask for tout = t.
-      if (sampling && t >= *out.next) Emit(out, t, cv.y());
+      if (sampling && t >= out.at()) Emit(out, t, cv.y());
       // A start on a root surface holds only to rounding: a root there is not
       // an event, unless an event says it counts at the start.
       const double start = cv.SegmentStart();

@@ -28,15 +28,21 @@ struct SegmentEnd {
   const char* reason = "";    // kFailed: why (the stepper's, until its next call)
 };
 
-// The output samples of a segment: every dt from *next (advanced past the
-// samples emitted).
+// The output samples of a segment: at origin + k dt from k = *next (advanced
+// past the samples emitted). A product, not a running sum: sample n is
+// origin + n dt to rounding however long the run.
 struct SegmentOutput {
   double dt = 0;
-  double* next = nullptr;
+  double origin = 0;
+  long* next = nullptr;
   void (*emit)(void* context, double t, const double* y) = nullptr;
   void* context = nullptr;
   bool on() const { return dt > 0 && emit; }
+  double at() const { return origin + static_cast<double>(*next) * dt; }
 };
+
+// The first k with origin + k dt at or after t (to OutputAtStart's rounding).
+long FirstSample(double origin, double dt, double t);
 
 // Integrates problem's field from (t0, y0) until a terminal event or t_max.
 // Roots that no event asks for are passed. *roots (one per function) holds

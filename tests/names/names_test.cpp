@@ -17,10 +17,10 @@
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/estimates/estimates.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 #include "stickslip/forced/orbit_scan.hpp"
-#include "stickslip/forced/simulate.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/orbits/orbit.hpp"
@@ -87,8 +87,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedScanStatus", ForcedScanStatus::kCancelled);
   Covers("ForcedAxis", ForcedAxis::kBeta);
   Covers("BranchStatus", BranchStatus::kContactLost);
-  Covers("ForcedSimulationStatus", ForcedSimulationStatus::kRowLimit);
-  Covers("ForcedSection", ForcedSection::kExit);
+  Covers("SimulationStatus", SimulationStatus::kRowLimit);
+  Covers("SimulationSection", SimulationSection::kExit);
   Covers("CurveKind", CurveKind::kTorus);
   Covers("Codim2Label", Codim2Label::kDoubleGrazing);
   Covers("ForcedCodim2Method", ForcedCodim2Method::kChord);

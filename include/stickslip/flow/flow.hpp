@@ -85,11 +85,17 @@ struct FlowRequest {
   std::vector<int> extrema;
   bool extrema_in_steps = true;
   long max_steps = 0;  ///< > 0: at most this many steps per run (kTooMuchWork)
-  /// Samples every output_dt and at every switch, to observer.
+  /// Samples at output_origin + k output_dt (k an integer; the start's t
+  /// if NaN) and at every switch, to observer; the start when it lies on
+  /// that grid, and the end unless output_end is false (a run that another
+  /// one continues: Simulate, simulate.hpp).
   double output_dt = 0;
+  double output_origin = std::numeric_limits<double>::quiet_NaN();
+  bool output_end = true;
   FlowObserver observer;
-  FlowObserver step_observer;                   ///< every step end and switch
-  std::vector<FlowSwitch>* switches = nullptr;  ///< appended to when set
+  FlowObserver step_observer;  ///< every step end and switch
+  /// Appended to when set, each switch before its observer call.
+  std::vector<FlowSwitch>* switches = nullptr;
 };
 
 struct FlowRun {
