@@ -179,9 +179,9 @@ void BindForcedTypes(py::module_& m) {
       .value("v", ForcedAxis::kV)
       .value("beta", ForcedAxis::kBeta);
   py::enum_<SimulationSection>(m, "SimulationSection", "The Poincare section of a simulation.")
-      .value("none", SimulationSection::kNone)
       .value("strobe", SimulationSection::kStrobe)
-      .value("exit", SimulationSection::kExit);
+      .value("exit", SimulationSection::kExit)
+      .value("none", SimulationSection::kNone);
   m.attr("ForcedSection") = m.attr("SimulationSection");  // its older name
   py::enum_<BranchStatus>(m, "BranchStatus", "How a branch ended (every system's).")
       .value("reached_end", BranchStatus::kReachedEnd)

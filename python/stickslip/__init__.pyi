@@ -113,9 +113,9 @@ class ForcedAxis(enum.IntEnum):
     v = 2
     beta = 3
 class SimulationSection(enum.IntEnum):
-    none = 0
-    strobe = 1
-    exit = 2
+    strobe = 0
+    exit = 1
+    none = 2
 ForcedSection: type[SimulationSection]
 class BranchStatus(enum.IntEnum):
     reached_end = 0

@@ -124,8 +124,8 @@ Settings Configure(const cli::Arguments& args) {
 // Why a run gives no data: the simulation's status, and where.
 std::string Failure(const ss::Simulation& r, const cli::RunControl& run) {
   std::string where;
-  if (r.status == ss::SimulationStatus::kFailed &&
-      r.message.find("non-finite") == std::string::npos)
+  if (r.status == ss::SimulationStatus::kFailed && r.flow != ss::FlowStatus::kIntegratorFailed &&
+      r.message.find("non-finite") == std::string::npos)  // these messages say where
     where = " (at t = " + ss::FormatNumber(r.end.t) + " in " + ss::Name(r.end.mode[0]) +
             ", x = " + ss::FormatNumber(r.end.z[0]) + ", x' = " + ss::FormatNumber(r.end.z[1]) +
             ")";
@@ -161,7 +161,9 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
     table.AddMeta("t0", ss::FormatNumber(scales->t0) + " s (sqrt(M / K))");
   }
   ss::SimulationSink sink;
+  double t_last = 0;  // the last row's t
   sink.row = [&](double t, const double* z, const ss::ModeSet& m) {
+    t_last = t;
     if (scales)
       table.AddRow({t, z[0], z[1], ss::Name(m[0]), t * scales->t0, z[0] * scales->L,
                     z[1] * scales->L / scales->t0});
@@ -180,7 +182,7 @@ int SimulateBelt(const cli::Arguments& args, const std::string& command) {
     throw cli::UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
                           args.Source("dt") + " " + args.Text("dt", "0.01") + ": more than " +
                           args.Source("max_rows") + " = " + std::to_string(s.range.max_rows) +
-                          " rows (rows at switches included) by t = " + ss::FormatNumber(r.end.t) +
+                          " rows (rows at switches included) by t = " + ss::FormatNumber(t_last) +
                           "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
   if (!r.ok()) {

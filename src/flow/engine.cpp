@@ -115,7 +115,8 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
 // when it lies on it, to rounding.
 void Engine::StartOutput(const FlowRequest& rq) {
   output_origin_ = std::isnan(rq.output_origin) ? t_ : rq.output_origin;
-  next_output_ = FirstSample(output_origin_, rq.output_dt, t_);
+  next_output_ =
+      rq.output_index >= 0 ? rq.output_index : FirstSample(output_origin_, rq.output_dt, t_);
   if (output_origin_ + next_output_ * rq.output_dt <= t_ + Tolerances::OutputAtStart(t_)) {
     rq.observer(t_, z_.data(), mode_);
     ++next_output_;
@@ -305,8 +306,10 @@ bool Engine::Done(FlowStatus s) {
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.
   const bool sampled = r.switches > 0 && last_switch_t_ == t_;
-  if (rq_->observer && rq_->output_dt > 0 && rq_->output_end && !sampled)
+  const bool continued = !rq_->output_end && s == FlowStatus::kTimeLimit;
+  if (rq_->observer && rq_->output_dt > 0 && !continued && !sampled)
     rq_->observer(t_, z_.data(), mode_);
+  r.output_index = next_output_;
   if (rq_->step_observer && !sampled) rq_->step_observer(t_, z_.data(), mode_);
   return false;
 }

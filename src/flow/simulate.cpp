@@ -35,6 +35,8 @@ bool Finite(double t, const double* z, int n) {
 // The run's bookkeeping: counts the rows against max_rows, and stops the
 // flow (through its cancel hook) at a non-finite state or a full table.
 struct Stream {
+  Stream(const SimulationOptions& o, const SimulationSink& sink, int n, Simulation& r)
+      : o(o), sink(sink), n(n), r(r) {}
   const SimulationOptions& o;
   const SimulationSink& sink;
   const int n;
@@ -84,6 +86,16 @@ struct Stream {
   }
 };
 
+// One flow run's counts, extremes and end into the simulation's.
+void Add(const FlowRun& run, const SimulationOptions& o, int n, Simulation* r) {
+  r->steps += run.steps, r->sticks += run.sticks, r->exits += run.exits;
+  r->crossings += run.crossings, r->switches += run.switches, r->t_stick += run.t_stick;
+  r->flow = run.status;
+  if (Finite(run.end.t, run.end.z.data(), n)) r->end = run.end;
+  for (std::size_t i = 0; i < o.extrema.size(); ++i)
+    r->lo[i] = std::min(r->lo[i], run.lo[i]), r->hi[i] = std::max(r->hi[i], run.hi[i]);
+}
+
 // The run's end after one flow run; false if the simulation ends here.
 bool Continues(const FlowRun& run, Stream& st, Simulation& r) {
   if (st.Stopped()) {
@@ -118,7 +130,7 @@ Simulation Simulate(const System& system, const FlowPoint& start, const Simulati
   const double inf = std::numeric_limits<double>::infinity();
   r.lo = Eigen::VectorXd::Constant(o.extrema.size(), inf);
   r.hi = Eigen::VectorXd::Constant(o.extrema.size(), -inf);
-  Stream st{o, sink, system.dimension(), r};
+  Stream st(o, sink, system.dimension(), r);
   flow.set_cancel([&] { return st.Stopped() || (o.cancelled && o.cancelled()); });
   FlowRequest rq;
   rq.output_dt = o.dt;
@@ -130,6 +142,7 @@ Simulation Simulate(const System& system, const FlowPoint& start, const Simulati
   double n = strobe ? std::ceil(start.t / o.period) : 0;
   while (strobe && n * o.period < start.t) n += 1;
   if (strobe && n * o.period == start.t) st.Section(start.t, start.z.data(), start.mode), n += 1;
+  rq.stop_after_switches = o.flow.max_switches;  // a bound per output interval, below
   FlowRun run;
   FlowPoint p = start;
   for (;;) {
@@ -137,16 +150,30 @@ Simulation Simulate(const System& system, const FlowPoint& start, const Simulati
     const bool last = !(t_sec < o.t_end);
     rq.t_max = last ? o.t_end : t_sec;
     rq.output_end = last;
+    const double t0 = p.t;
     flow.Run(p, rq, &run);
-    r.steps += run.steps, r.sticks += run.sticks, r.exits += run.exits;
-    r.crossings += run.crossings, r.switches += run.switches, r.t_stick += run.t_stick;
-    r.flow = run.status;
-    if (Finite(run.end.t, run.end.z.data(), system.dimension())) r.end = run.end;
-    for (std::size_t i = 0; i < o.extrema.size(); ++i)
-      r.lo[i] = std::min(r.lo[i], run.lo[i]), r.hi[i] = std::max(r.hi[i], run.hi[i]);
-    if (!Continues(run, st, r) || last) return r;
+    rq.output_index = run.output_index;  // the next run goes on on the same grid
+    Add(run, o, system.dimension(), &r);
+    if (run.status == FlowStatus::kSwitchCount && !st.Stopped()) {
+      if (!(run.end.t - t0 > o.dt)) {  // Zeno-like: FlowOptions::max_switches within one dt
+        r.status = SimulationStatus::kFailed;
+        r.message =
+            "too-many-switches: more than max_switches = " + std::to_string(o.flow.max_switches) +
+            " mode changes between t = " + Num(t0) + " and " + Num(run.end.t) +
+            ", within one output interval";
+        return r;
+      }
+      p = run.end;
+      continue;
+    }
+    if (!Continues(run, st, r)) return r;
     p = run.end;
-    st.Section(p.t, p.z.data(), p.mode);
+    if (!last || t_sec == o.t_end) st.Section(p.t, p.z.data(), p.mode);  // t = n T, t_end's too
+    if (st.Stopped()) {
+      r.status = st.stop_status, r.message = st.stop;
+      return r;
+    }
+    if (last) return r;
     n += 1;
   }
 }

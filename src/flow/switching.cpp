@@ -99,6 +99,8 @@ bool Engine::Switch(const std::vector<int>& roots) {
   // The requested exit ends the run after every switch of its instant.
   if (rq_->stop_at_exit > 0 && out_->exits >= rq_->stop_at_exit && out_->exits > exits_before)
     return Done(FlowStatus::kStickExit);
+  if (rq_->stop_after_switches > 0 && out_->switches >= rq_->stop_after_switches)
+    return Done(FlowStatus::kSwitchCount);
   return true;
 }
 

@@ -60,7 +60,9 @@ TEST(Simulate, DenseRowsFollowTheCoulombClosedForm) {
   double vmin = INFINITY;
   for (size_t k = 0; k < rec.rows.size(); ++k) {
     const Row& r = rec.rows[k];
-    if (k + 1 < rec.rows.size()) EXPECT_EQ(r.t, k * o.dt);  // origin + k dt, not a running sum
+    if (k + 1 < rec.rows.size()) {
+      EXPECT_EQ(r.t, k * o.dt);  // origin + k dt, not a running sum
+    }
     const double xd = std::exp(-p.beta * r.t) * (p.v * std::cos(w * r.t) + d * std::sin(w * r.t));
     EXPECT_NEAR(r.z[1], xd, 1e-12) << "t = " << r.t;
     vmin = std::min(vmin, r.z[1]);
@@ -165,6 +167,59 @@ TEST(Simulate, StartBetweenRowsRoundsItsFirstBreakpointForward) {
   EXPECT_EQ(rec.rows[0].t, 0.29);
   EXPECT_GT(rec.rows[1].t, 0.29);  // a switch's row, or the row at 0.30
   EXPECT_LE(rec.rows[1].t, 0.30);
+}
+
+// FlowOptions::max_switches bounds the switches within one output interval,
+// not within the run: a long run goes on from a run stopped after its
+// switches, and integrates as one run would (every switch restarts the
+// stepper), row for row and bit for bit. Within one dt it is a failure.
+TEST(Simulate, SwitchBoundIsPerOutputIntervalAndContinuesBitForBit) {
+  const ForcedParams p = StribeckScene();
+  const ForcedModel model(p);
+  const FlowPoint start = ForcedStart(model, 0, 0, p.base.v);
+  const SimulationOptions one = Options(model, 600, 1, SimulationSection::kExit);
+  SimulationOptions chunked = one;
+  chunked.flow.max_switches = 7;
+  const Recorded a = Record(model, start, one), b = Record(model, start, chunked);
+  ASSERT_EQ(a.r.status, SimulationStatus::kComplete) << a.r.message;
+  ASSERT_EQ(b.r.status, SimulationStatus::kComplete) << b.r.message;
+  ASSERT_GT(a.r.switches, 10 * chunked.flow.max_switches);
+  EXPECT_EQ(b.r.switches, a.r.switches);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  for (size_t i = 0; i < a.rows.size(); ++i) {
+    ASSERT_EQ(a.rows[i].t, b.rows[i].t) << i;
+    ASSERT_EQ(a.rows[i].z, b.rows[i].z) << "t = " << a.rows[i].t;
+  }
+  ASSERT_EQ(a.section.size(), b.section.size());
+  EXPECT_EQ(static_cast<int>(b.section.size()), b.r.exits);
+  SimulationOptions coarse = chunked;
+  coarse.dt = 500;  // 7 switches within one output interval: a failure, with where
+  const Recorded c = Record(model, start, coarse);
+  EXPECT_EQ(c.r.status, SimulationStatus::kFailed);
+  EXPECT_NE(c.r.message.find("within one output interval"), std::string::npos) << c.r.message;
+}
+
+// A section time that is t_end is a section point; a grid row just before a
+// section time (0.9 against T = 0.9000000000000001) is given once, not again
+// from the run that starts at T.
+TEST(Simulate, SectionAtTheEndAndRowsAtChunkEdgesAreGivenOnce) {
+  ForcedParams p = StribeckScene();
+  p.omega = 2 * M_PI;  // T = 1 exactly
+  const ForcedModel unit(p);
+  ASSERT_EQ(unit.period(), 1.0);
+  const Recorded a = Record(unit, ForcedStart(unit, 0, 0.1, 0),
+                            Options(unit, 10, 0.25, SimulationSection::kStrobe));
+  ASSERT_TRUE(a.r.ok()) << a.r.message;
+  ASSERT_EQ(a.section.size(), 11u);
+  EXPECT_EQ(a.section.back().t, 10.0);
+  p.omega = 20.94395102393195;  // T = 0.3 to rounding: 3 T falls on the row 9 dt
+  const ForcedModel tight(p);
+  const Recorded b = Record(tight, ForcedStart(tight, 0, 0.1, 0),
+                            Options(tight, 3, 0.1, SimulationSection::kStrobe));
+  ASSERT_TRUE(b.r.ok()) << b.r.message;
+  EXPECT_EQ(b.rows.size(), 31u + static_cast<size_t>(b.r.switches));
+  for (size_t i = 1; i < b.rows.size(); ++i)
+    EXPECT_GT(b.rows[i].t - b.rows[i - 1].t, 1e-9) << "t = " << b.rows[i].t;
 }
 
 // The row bound counts rows and section points and stops the run there,

@@ -74,7 +74,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("LawKind", LawKind::kLeine);
   Covers("Integrator", Integrator::kCvode);
   Covers("Method", Method::kBdf);
-  Covers("FlowStatus", FlowStatus::kContactOpen);
+  Covers("FlowStatus", FlowStatus::kSwitchCount);
   Covers("SwitchKind", SwitchKind::kTouch);
   Covers("OrbitKind", OrbitKind::kPureSlip);
   Covers("OrbitStatus", OrbitStatus::kContactOpen);
@@ -88,7 +88,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("ForcedAxis", ForcedAxis::kBeta);
   Covers("BranchStatus", BranchStatus::kContactLost);
   Covers("SimulationStatus", SimulationStatus::kRowLimit);
-  Covers("SimulationSection", SimulationSection::kExit);
+  Covers("SimulationSection", SimulationSection::kNone);
   Covers("CurveKind", CurveKind::kTorus);
   Covers("Codim2Label", Codim2Label::kDoubleGrazing);
   Covers("ForcedCodim2Method", ForcedCodim2Method::kChord);

@@ -79,6 +79,10 @@ struct FlowRequest {
   bool parameter_column = false;  ///< FlowRun::dzdp (Flow::set_parameter_column)
   bool stop_at_stick = false;     ///< at an arrival where the contact sticks, before sticking
   int stop_at_exit = 0;           ///< > 0: at that stick exit (after the switch)
+  /// > 0: after the instant whose switches bring the run's count to this
+  /// (kSwitchCount). A run continued from there integrates as one run would:
+  /// every switch restarts the stepper anyway.
+  int stop_after_switches = 0;
   std::vector<Section> sections;  ///< terminal; FlowRun::section says which
   /// Components whose extremes are recorded (FlowRun::lo, hi): at the roots
   /// of their derivatives when extrema_in_steps, else at step ends.
@@ -87,10 +91,11 @@ struct FlowRequest {
   long max_steps = 0;  ///< > 0: at most this many steps per run (kTooMuchWork)
   /// Samples at output_origin + k output_dt (k an integer; the start's t
   /// if NaN) and at every switch, to observer; the start when it lies on
-  /// that grid, and the end unless output_end is false (a run that another
-  /// one continues: Simulate, simulate.hpp).
+  /// that grid, and the end unless the run reaches t_max with output_end
+  /// false (a run that another one continues: Simulate, simulate.hpp).
   double output_dt = 0;
   double output_origin = std::numeric_limits<double>::quiet_NaN();
+  long output_index = -1;  ///< >= 0: the first k (a continued run's FlowRun::output_index)
   bool output_end = true;
   FlowObserver observer;
   FlowObserver step_observer;  ///< every step end and switch
@@ -116,6 +121,7 @@ struct FlowRun {
   Eigen::VectorXd dzdp;
   bool has_dzdp = false;
   long steps = 0;
+  long output_index = 0;  ///< the next output sample's k (FlowRequest::output_index)
   TaylorOrders orders;
   bool ok() const {
     return status != FlowStatus::kIntegratorFailed && status != FlowStatus::kTooManySwitches &&

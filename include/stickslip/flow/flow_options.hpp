@@ -67,6 +67,7 @@ enum class FlowStatus {
   kAmbiguousMode,     // contacts switched at once and several modes are consistent
   kTooManyAtOnce,     // more than kMaxEnumeratedContacts contacts switched at once
   kContactOpen,       // a contact's normal force fell to 0 (System::NormalForce)
+  kSwitchCount,       // FlowRequest::stop_after_switches switches (Simulate runs on from there)
 };
 template <>
 struct EnumNames<FlowStatus> {
@@ -84,6 +85,7 @@ struct EnumNames<FlowStatus> {
       {FlowStatus::kAmbiguousMode, "ambiguous-mode"},
       {FlowStatus::kTooManyAtOnce, "too-many-at-once"},
       {FlowStatus::kContactOpen, "contact-open"},
+      {FlowStatus::kSwitchCount, "switch-count"},
   };
 };
 

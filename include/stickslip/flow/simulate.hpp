@@ -17,16 +17,16 @@
 namespace stickslip {
 
 enum class SimulationSection {
-  kNone,
   kStrobe,  ///< every t = n period, n an integer (the run stops there exactly)
   kExit,    ///< every stick exit of any contact
+  kNone,
 };
 template <>
 struct EnumNames<SimulationSection> {
   static constexpr NamedValue<SimulationSection> kTable[] = {
-      {SimulationSection::kNone, "none"},
       {SimulationSection::kStrobe, "strobe"},
       {SimulationSection::kExit, "exit"},
+      {SimulationSection::kNone, "none"},
   };
 };
 
