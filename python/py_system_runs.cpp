@@ -16,6 +16,7 @@
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
+#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip::python {
@@ -23,7 +24,9 @@ namespace stickslip::python {
 namespace {
 
 struct PySystemTrajectory {
-  py::array t, z, mode;  // every dt and at every switch; z one row per t
+  py::array t, z, mode;            // every dt and at every switch; z one row per t
+  py::array section_t, section_z;  // the Poincare section's points (section != none)
+  SimulationSection section = SimulationSection::kNone;
   std::vector<std::string> names;
   FlowStatus status = FlowStatus::kTimeLimit;
   std::string message;
@@ -72,11 +75,31 @@ Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
   return state;
 }
 
+// Rows (one per t, n columns) as a read-only 2-D array.
+py::array Rows(const std::vector<double>& z, int n) {
+  py::array_t<double> a({static_cast<py::ssize_t>(z.size() / n), static_cast<py::ssize_t>(n)});
+  std::copy(z.begin(), z.end(), a.mutable_data());
+  a.attr("setflags")(py::arg("write") = false);
+  return std::move(a);
+}
+
+// The stroboscopic section's spacing: `period`, else one period of the
+// system's clock (a forced system's 2 pi / Omega).
+double SectionPeriod(const System& s, const Eigen::VectorXd& z0, std::optional<double> period) {
+  if (period) return *period;  // SimulationOptions::ValidationError checks it
+  if (s.clocks() != 1)
+    throw InvalidArgument("section = strobe: give period, the system has no forcing clock");
+  return PoincareSection::Stroboscopic(s, z0, 1).time;
+}
+
 PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorXd& state,
                                   double t_end, double dt, long max_rows,
-                                  std::optional<double> rtol, std::optional<double> atol) {
+                                  std::optional<double> rtol, std::optional<double> atol,
+                                  SimulationSection section, std::optional<double> period) {
   const std::unique_ptr<System> s = SystemOf(system);
   const Eigen::VectorXd z0 = CheckedState(*s, state);
+  if (period && section != SimulationSection::kStrobe)
+    throw InvalidArgument("period = " + Repr(*period) + " needs section = strobe");
   if (!(t_end > 0) || !std::isfinite(t_end))
     throw InvalidArgument("t_end = " + Repr(t_end) + " must be a finite number > 0");
   if (!(dt > 0)) throw InvalidArgument("dt = " + Repr(dt) + " must be > 0");
@@ -85,17 +108,26 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   if (!(std::floor(t_end / dt) + 1 <= static_cast<double>(max_rows)))
     throw InvalidArgument("t_end / dt = " + Repr(t_end / dt) + " gives more rows than max_rows = " +
                           std::to_string(max_rows) + " (raise max_rows or dt)");
-  const FlowOptions options = Solver(FlowOptions(), rtol, atol, py::none(), py::none());
+  // The forced oscillator's own tolerances, as simulate_forced's (rtol = atol = 1e-12).
+  const FlowOptions base =
+      py::isinstance<ForcedParams>(system) ? ForcedModel::FlowDefaults() : FlowOptions();
+  const FlowOptions options = Solver(base, rtol, atol, py::none(), py::none());
   const int n = s->dimension(), k = s->contacts();
-  std::vector<double> t, z;
+  std::vector<double> t, z, st, sz;
   std::vector<std::string> mode;
   Interrupt interrupt;
   SimulationOptions o;
-  o.flow = options, o.t_end = t_end, o.dt = dt, o.max_rows = max_rows;
+  o.flow = options, o.t_end = t_end, o.dt = dt, o.max_rows = max_rows, o.section = section;
+  if (section == SimulationSection::kStrobe) o.period = SectionPeriod(*s, z0, period);
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
   o.cancelled = [&] { return interrupt(); };
   SimulationSink sink;
   sink.row = [&](double ti, const double* zi, const ModeSet& m) {
     t.push_back(ti), z.insert(z.end(), zi, zi + n), mode.push_back(ModeSetName(m, k));
+  };
+  sink.section = [&](long, double ti, const double* zi, const ModeSet&) {
+    st.push_back(ti), sz.insert(sz.end(), zi, zi + n);
   };
   Simulation r;
   {
@@ -110,12 +142,8 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
     RaiseNumerical(r.message + " (at t = " + Repr(r.end.t) + " in " + ModeSetName(r.end.mode, k) +
                    ")");
   PySystemTrajectory out;
-  out.t = ReadOnly(t);
-  py::array_t<double> zz({static_cast<py::ssize_t>(t.size()), static_cast<py::ssize_t>(n)});
-  std::copy(z.begin(), z.end(), zz.mutable_data());
-  zz.attr("setflags")(py::arg("write") = false);
-  out.z = std::move(zz);
-  out.mode = ReadOnlyStrings(mode);
+  out.t = ReadOnly(t), out.z = Rows(z, n), out.mode = ReadOnlyStrings(mode);
+  out.section = section, out.section_t = ReadOnly(st), out.section_z = Rows(sz, n);
   for (int i = 0; i < n; ++i) out.names.push_back(s->StateName(i));
   out.status = r.flow, out.message = r.message;
   out.opened = r.opened;
@@ -177,12 +205,16 @@ PySteadyState Steady(const py::object& system) {
 void BindSystemRuns(py::module_& m) {
   using T = PySystemTrajectory;
   py::class_<T>(m, "SystemTrajectory",
-                "Result of simulate_system(): t, z (one row per t, columns `names`), mode (the "
+                "Result of simulate(system, state) and simulate_system(): t, z (one row per t, "
+                "columns `names`), mode (the "
                 "mode set's name per row), how the run ended (status; contact_open: the normal "
                 "force of contact `opened` reached 0 and the run stopped there).")
       .def_readonly("t", &T::t)
       .def_readonly("z", &T::z)
       .def_readonly("mode", &T::mode)
+      .def_readonly("section", &T::section)
+      .def_readonly("section_t", &T::section_t)
+      .def_readonly("section_z", &T::section_z)
       .def_readonly("names", &T::names)
       .def_readonly("status", &T::status)
       .def_readonly("message", &T::message)
@@ -217,12 +249,17 @@ void BindSystemRuns(py::module_& m) {
       .def_readonly("max_real", &S::max_real)
       .def_readonly("stable", &S::stable);
   const py::object none = py::none();
-  m.def("simulate_system", &SimulateSystem, py::arg("system"), py::arg("state"),
-        py::arg("t_end") = 100.0, py::arg("dt") = 0.01, py::arg("max_rows") = 1000000,
-        py::arg("rtol") = none, py::arg("atol") = none,
-        "One trajectory of any system (Params, ForcedParams, ChainParams, CouplingParams) from "
-        "`state` (its state_names' order), one row every dt and at every switch; the one flow "
-        "(C++ Flow). More than max_rows rows raise ValueError.");
+  const char* doc =
+      "One trajectory of any system (Params, ForcedParams, ChainParams, CouplingParams) from "
+      "`state` (its state_names' order) at t = 0, one row every dt and at every switch, and with "
+      "`section` its Poincare section (strobe: every `period`, by default the forcing's 2 pi / "
+      "Omega; exit: every stick exit) in section_t, section_z; the one Simulate (C++). More "
+      "than max_rows rows and section points raise ValueError.";
+  for (const char* name : {"simulate_system", "simulate"})
+    m.def(name, &SimulateSystem, py::arg("system"), py::arg("state"), py::arg("t_end") = 100.0,
+          py::arg("dt") = 0.01, py::arg("max_rows") = 1000000, py::arg("rtol") = none,
+          py::arg("atol") = none, py::arg("section") = SimulationSection::kNone,
+          py::arg("period") = none, doc);
   m.def("system_orbit", &Orbit, py::arg("system"), py::arg("state"),
         py::arg("section") = "stick-exit", py::arg("m") = 1, py::arg("turns") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,

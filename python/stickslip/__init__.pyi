@@ -558,10 +558,16 @@ class LabelledPoint:
 def parameter_names(law: LawLike = "cubic") -> List[str]: ...
 def default_range(params: Params, name: str) -> Tuple[float, float]: ...
 def scales(mass: float, stiffness: float, gravity: float = 9.81) -> Tuple[float, float]: ...
+@overload
 def simulate(params: Params, x0: float = 0.0, xdot0: float = 0.25, t_end: float = 100.0,
              dt: float = 0.01, max_rows: int = 1000000, rtol: Optional[float] = None,
              atol: Optional[float] = None, integrator: IntegratorLike = None,
              method: MethodLike = None) -> Trajectory: ...
+@overload
+def simulate(system: SystemLike, state: Any, t_end: float = 100.0, dt: float = 0.01,
+             max_rows: int = 1000000, rtol: Optional[float] = None, atol: Optional[float] = None,
+             section: SimulationSection = SimulationSection.none,
+             period: Optional[float] = None) -> SystemTrajectory: ...
 def simulate_forced(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
                     t_end: float = 100.0, dt: float = 0.01,
                     section: SimulationSection = SimulationSection.strobe, max_rows: int = 1000000,
@@ -723,6 +729,9 @@ class SystemTrajectory:
     t: Array
     z: Array
     mode: Array
+    section: SimulationSection
+    section_t: Array
+    section_z: Array
     names: List[str]
     status: FlowStatus
     message: str
@@ -759,7 +768,9 @@ class SteadyState:
 
 def simulate_system(system: SystemLike, state: Any, t_end: float = 100.0, dt: float = 0.01,
                     max_rows: int = 1000000, rtol: Optional[float] = None,
-                    atol: Optional[float] = None) -> SystemTrajectory: ...
+                    atol: Optional[float] = None,
+                    section: SimulationSection = SimulationSection.none,
+                    period: Optional[float] = None) -> SystemTrajectory: ...
 def system_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m: int = 1,
                  turns: Optional[int] = None, rtol: Optional[float] = None,
                  atol: Optional[float] = None, contact: int = 0) -> SystemOrbit: ...

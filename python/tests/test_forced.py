@@ -54,6 +54,40 @@ class Forced(unittest.TestCase):
                                           section=stickslip.ForcedSection.exit)
         self.assertEqual(len(exits.section_t), exits.exits)
 
+    def test_one_simulate_takes_any_system(self):
+        # simulate(system, state) runs the same Simulate as simulate_forced, at
+        # the same tolerances: the same rows and section points, to rounding
+        # (simulate_forced also records the extremes, which moves the steps).
+        p = den_hartog_params(1.5)
+        old = stickslip.simulate_forced(p, x0=0.2, xdot0=0.0, t_end=40.0, dt=0.05)
+        new = stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=40.0, dt=0.05,
+                                 section=stickslip.SimulationSection.strobe)
+        np.testing.assert_allclose(new.t, old.t, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(new.z[:, :2], np.column_stack([old.x, old.xdot]), rtol=0,
+                                   atol=1e-12)
+        np.testing.assert_array_equal(new.mode, old.mode)
+        np.testing.assert_array_equal(new.section_t, old.section_t)  # n T exactly
+        np.testing.assert_allclose(new.section_z[:, :2],
+                                   np.column_stack([old.section_x, old.section_xdot]),
+                                   rtol=0, atol=1e-12)
+        self.assertEqual(new.section, stickslip.SimulationSection.strobe)
+        plain = stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=40.0, dt=0.05)
+        self.assertEqual(plain.section_z.shape, (0, 3))
+        np.testing.assert_allclose(plain.z, new.z, rtol=0, atol=1e-10)
+        chain = stickslip.ChainParams(2)
+        a = stickslip.simulate(chain, [0.1, 0.0, 0.0, 0.0], t_end=20.0,
+                               section=stickslip.SimulationSection.exit)
+        b = stickslip.simulate_system(chain, [0.1, 0.0, 0.0, 0.0], t_end=20.0)
+        np.testing.assert_array_equal(a.z, b.z)
+        self.assertEqual(len(a.section_t), a.exits)
+        with self.assertRaisesRegex(ValueError, "give period"):
+            stickslip.simulate(chain, [0.1, 0, 0, 0], section=stickslip.SimulationSection.strobe)
+        with self.assertRaisesRegex(ValueError, "period = -1"):
+            stickslip.simulate(chain, [0.1, 0, 0, 0], period=-1.0,
+                               section=stickslip.SimulationSection.strobe)
+        # The belt's own signature stays.
+        self.assertEqual(stickslip.simulate(stickslip.Params(), t_end=1.0).t[-1], 1.0)
+
     def test_continuation_matches_den_hartog_on_every_row(self):
         p = den_hartog_params(1.5)
         o = stickslip.forced_orbit(p, 0.5, 0.0)
