@@ -113,8 +113,8 @@ void NonStopOrbit(double rtol) {
 }
 
 void DenHartogRun() {
-  ForcedBranchOptions o;
-  o.flow.rtol = o.flow.atol = 1e-12;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.shooting.flow.rtol = o.shooting.flow.atol = 1e-12;
   o.max_amplitude = 10;
   o.palc.ds_max = 0.05;
   size_t rows = 0;
@@ -124,7 +124,7 @@ void DenHartogRun() {
         for (const double from : {0.75, 2.5}) {
           const double to = from == 0.75 ? 2.5 : 0.75;
           rows += ContinueForced(DenHartog(from), ForcedAxis::kOmega, from, to,
-                                 1 / (1 - from * from), 0.01, o)
+                                 1 / (1 - from * from), 0.01, 1, o)
                       .rows.size();
         }
       },

@@ -43,11 +43,10 @@ struct PyForcedBranch {
   double seconds = 0;
 };
 
-ForcedBranchOptions Options(double width, int m, double max_amplitude,
-                            std::optional<double> max_step, std::optional<double> rtol,
-                            std::optional<double> atol) {
-  ForcedBranchOptions o;
-  o.flow = FlowOf(rtol, atol), o.m = m, o.max_amplitude = max_amplitude;
+OrbitBranchOptions Options(double width, double max_amplitude, std::optional<double> max_step,
+                           std::optional<double> rtol, std::optional<double> atol) {
+  OrbitBranchOptions o(FlowOf(rtol, atol));
+  o.max_amplitude = max_amplitude;
   o.palc.ds_max = max_step.value_or(0.02) * width;  // as ss_continue's --max_step 0.02
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   return o;
@@ -102,14 +101,14 @@ PyForcedBranch Continue(ForcedParams base, ForcedAxis axis, double from, double 
                         std::optional<double> x_guess, std::optional<double> xdot_guess, int m,
                         double max_amplitude, std::optional<double> max_step,
                         std::optional<double> rtol, std::optional<double> atol) {
-  ForcedBranchOptions o = Options(std::abs(to - from), m, max_amplitude, max_step, rtol, atol);
+  OrbitBranchOptions o = Options(std::abs(to - from), max_amplitude, max_step, rtol, atol);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
   OrbitBranch r;
   {
     py::gil_scoped_release nogil;
     r = ContinueForced(base, axis, from, to, x_guess.value_or(0), xdot_guess.value_or(base.base.v),
-                       o);
+                       m, o);
   }
   interrupt.RaiseIfInterrupted();
   return MakeBranch(r, base, axis, from, to);
@@ -128,16 +127,17 @@ PyForcedBranch Doubled(const PyForcedSpecial& pd, std::optional<double> lo,
   if (!(a < pd.p && pd.p < b))
     throw InvalidArgument("lo = " + Repr(a) + ", hi = " + Repr(b) + " must bracket the PD at " +
                           Repr(pd.p));
-  ForcedBranchOptions o = Options(b - a, pd.m, max_amplitude, max_step, rtol, atol);
+  OrbitBranchOptions o = Options(b - a, max_amplitude, max_step, rtol, atol);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
   const ForcedParams at = pd.params;  // copies: read without the GIL
   const ForcedAxis axis = pd.axis;
   const double x0 = pd.x0, xdot0 = pd.xdot0;
+  const int m = pd.m;
   OrbitBranch r;
   {
     py::gil_scoped_release nogil;
-    r = ContinueDoubled(at, axis, x0, xdot0, a, b, o);
+    r = ContinueDoubled(at, axis, x0, xdot0, a, b, m, o);
   }
   interrupt.RaiseIfInterrupted();
   return MakeBranch(r, at, axis, a, b);

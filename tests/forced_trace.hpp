@@ -1,5 +1,5 @@
 // A forced branch for the tests: 200 forcing periods from rest at p with the
-// axis at `from`, then ContinueForced from that state to `to` with options `o`.
+// axis at `from`, then ContinueForced (m = 1) from that state to `to` with options `o`.
 #pragma once
 
 #include "forced_run.hpp"
@@ -8,15 +8,15 @@
 namespace stickslip::testing_util {
 
 inline OrbitBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to,
-                         const ForcedBranchOptions& o) {
+                         const OrbitBranchOptions& o) {
   SetAxis(p, axis, from);
   const ForcedModel m(p);
   const FlowRun tr = RunForced(m, ForcedStart(m, 0, 0, p.base.v), 200 * m.period());
-  return ContinueForced(p, axis, from, to, tr.end.z[0], tr.end.z[1], o);
+  return ContinueForced(p, axis, from, to, tr.end.z[0], tr.end.z[1], 1, o);
 }
 
 inline OrbitBranch TraceOmega(const ForcedParams& p, double from, double to,
-                              const ForcedBranchOptions& o) {
+                              const OrbitBranchOptions& o) {
   return Trace(p, ForcedAxis::kOmega, from, to, o);
 }
 

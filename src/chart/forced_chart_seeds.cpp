@@ -30,7 +30,7 @@ struct Line {
 // The seeds among b's special points; each PD with 2m <= max_m also starts
 // the doubled branch (ContinueDoubled), whose special points are seeds too.
 void Harvest(const OrbitBranch& b, const Line& line, const ForcedChartOptions& o,
-             ForcedBranchOptions bo, const std::string& run, int* runs,
+             OrbitBranchOptions bo, const std::string& run, int* runs,
              std::vector<ForcedSeed>* seeds) {
   const int m = PeriodMultiple(b);
   for (const OrbitRow& r : b.special) {
@@ -55,9 +55,8 @@ void Harvest(const OrbitBranch& b, const Line& line, const ForcedChartOptions& o
     if (o.cancelled && o.cancelled()) return;
     ForcedParams at_pd = line.params;
     SetAxis(at_pd, line.axis, r.p);
-    bo.m = m;
     const OrbitBranch doubled =
-        ContinueDoubled(at_pd, line.axis, s.x0, s.xdot0, line.lo, line.hi, bo);
+        ContinueDoubled(at_pd, line.axis, s.x0, s.xdot0, line.lo, line.hi, m, bo);
     ++*runs;
     const std::string name = "m = " + std::to_string(2 * m) + " " + Name(line.axis) +
                              " run (doubled at " + Num(r.p, 6) + ") ";
@@ -87,14 +86,14 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
     const ForcedOrbits found = FindForcedOrbits(ForcedModel(start), so);
     for (const ForcedScanOrbit& f : found.orbits) {
       if (!f.orbit.stable) continue;
-      ForcedBranchOptions bo;
-      bo.flow = o.flow, bo.m = f.m, bo.max_amplitude = o.max_amplitude;
+      OrbitBranchOptions bo(o.flow);  // every map on the chart's flow, its step cap too
+      bo.max_amplitude = o.max_amplitude;
       bo.palc.ds_max = 0.02 * (line.hi - line.lo);
       bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
       bo.palc.cancelled = o.cancelled;
       const OrbitBranch b =
           ContinueForced(start, line.axis, from, from == line.lo ? line.hi : line.lo,
-                         f.points[0].x(), f.points[0].y(), bo);
+                         f.points[0].x(), f.points[0].y(), f.m, bo);
       ++*runs;
       Harvest(b, line, o, bo, std::string(Name(line.axis)) + " run ", runs, &seeds);
     }

@@ -58,32 +58,31 @@ StartChoice StartChoiceFromArguments(const Arguments& args, bool restart) {
   return c;
 }
 
-Vec2 SettledState(const ForcedModel& model, const ForcedBranchOptions& o) {
+Vec2 SettledState(const ForcedModel& model, const OrbitBranchOptions& o) {
   FlowRequest rq;
   rq.t_max = kTransientPeriods * model.period();
-  rq.max_steps = o.flow.max_steps;
+  rq.max_steps = o.shooting.flow.max_steps;
   rq.extrema = {0, 1};
-  const FlowRun tr = Flow(model, o.flow).Run(ForcedStart(model, 0, 0, model.v()), rq);
+  const FlowRun tr = Flow(model, o.shooting.flow).Run(ForcedStart(model, 0, 0, model.v()), rq);
   if (Reached(tr) && std::abs(tr.end.z[0]) <= o.max_amplitude)
     return Vec2(tr.end.z[0], tr.end.z[1]);
   return Vec2(0, model.v());
 }
 
 OrbitBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                         const StartOrbit& o, const ForcedBranchOptions& opts, RunControl& run) {
-  ForcedBranchOptions c = opts;
-  c.m = o.m;
+                         const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run) {
+  OrbitBranchOptions c = opts;
   c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
-  OrbitBranch b = ContinueForced(base, axis, from, to, o.x, o.xdot, c);
+  OrbitBranch b = ContinueForced(base, axis, from, to, o.x, o.xdot, o.m, c);
   if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
   return b;
 }
 
 std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
-                                       const ForcedBranchOptions& o, RunControl& run) {
+                                       const OrbitBranchOptions& o, RunControl& run) {
   ForcedBasinOptions bo;
   bo.max_period = kSettleMaxPeriod;
-  bo.iterate.flow = o.flow;
+  bo.iterate.flow = o.shooting.flow;
   bo.iterate.transient = bo.iterate.align;
   bo.iterate.keep = 2 * kSettleMaxPeriod;
   bo.max_amplitude = o.max_amplitude;
@@ -97,7 +96,7 @@ std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, doubl
   s.m = a.m, s.sticks = a.sticks, s.stable = true, s.settled = true;
   s.x = a.x, s.xdot = a.xdot;
   // Its extrema and multipliers: the orbit solved from the settled point.
-  const PeriodicOrbit orbit = ShootStroboscopic(model, a.x, a.xdot, a.m, ShootingOptions(o.flow));
+  const PeriodicOrbit orbit = ShootStroboscopic(model, a.x, a.xdot, a.m, o.shooting);
   if (orbit.ok()) {
     s.x_max = OrbitExtrema(orbit).x_max;
     s.mult_max = std::abs(orbit.multipliers[0]);
@@ -122,9 +121,9 @@ bool SameOrbit(const ForcedScanOrbit& o, const StartOrbit& s) {
 
 std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
                                     const std::optional<StartOrbit>& settled,
-                                    const ForcedBranchOptions& o, int m, RunControl& run) {
+                                    const OrbitBranchOptions& o, int m, RunControl& run) {
   ForcedScanOptions so;
-  so.orbit = ShootingOptions(o.flow);
+  so.orbit = o.shooting;
   so.min_m = m > 0 ? m : 1;
   so.max_m = m > 0 ? m : kStartScanMaxM;
   so.cancelled = [&run] { return run.Cancelled(); };

@@ -45,22 +45,22 @@ struct StartOrbit {
 
 // The state after kTransientPeriods forcing periods from rest, at t = N T
 // (from rest itself if the transient fails or leaves max_amplitude).
-Vec2 SettledState(const ForcedModel& model, const ForcedBranchOptions& o);
+Vec2 SettledState(const ForcedModel& model, const OrbitBranchOptions& o);
 
 // ContinueForced from the orbit o (its m and point), cancelled by run.
 OrbitBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                         const StartOrbit& o, const ForcedBranchOptions& opts, RunControl& run);
+                         const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run);
 
 // The attractor the state (x, xdot) at phase 0 settles on, if periodic with
 // m <= kSettleMaxPeriod: its m, sticks and section point.
 std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
-                                       const ForcedBranchOptions& o, RunControl& run);
+                                       const OrbitBranchOptions& o, RunControl& run);
 
 // The start list: the scan's orbits (m = choice.m, else 1..kStartScanMaxM)
 // and the settled orbit if the scan missed it; by m, then x_max.
 std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
                                     const std::optional<StartOrbit>& settled,
-                                    const ForcedBranchOptions& o, int m, RunControl& run);
+                                    const OrbitBranchOptions& o, int m, RunControl& run);
 
 // The orbits the choice selects (throws UsageError naming --point or --m if
 // it selects none); the default choice: the settled orbit, else the first

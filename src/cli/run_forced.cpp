@@ -24,7 +24,8 @@ struct BranchSetup {
   ForcedParams p;
   ForcedAxis axis = ForcedAxis::kOmega;
   double from = 0, to = 0;
-  ForcedBranchOptions opts;
+  OrbitBranchOptions opts = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  int m = 1;                             // the period multiple (a restart's)
   FlowOptions flow;                      // rtol and atol as given, for the metadata
   std::optional<LabelledPoint> restart;  // a forced run's point to start from
   bool doubled = false;                  // --switch: the 2m branch from a PD point
@@ -113,11 +114,11 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   s.flow = FlowOptionsFromArguments(args, restart ? restart->flow : FlowOptions());  // validated
   // The forced flow's own defaults (1e-12): at the belt's rtol 1e-11 the
   // corrector (tol 1e-11) stalls on the flow's noise (measured: step-too-small).
-  if (!args.Given("rtol") && !restart) s.flow.rtol = s.opts.flow.rtol;
-  if (!args.Given("atol") && !restart) s.flow.atol = s.opts.flow.atol;
-  if (restart) s.opts.m = restart->m;
-  s.opts.flow.rtol = s.flow.rtol, s.opts.flow.atol = s.flow.atol;
-  s.opts.flow.max_steps = s.flow.max_steps;
+  if (!args.Given("rtol") && !restart) s.flow.rtol = s.opts.shooting.flow.rtol;
+  if (!args.Given("atol") && !restart) s.flow.atol = s.opts.shooting.flow.atol;
+  if (restart) s.m = restart->m;
+  s.opts.shooting.flow.rtol = s.flow.rtol, s.opts.shooting.flow.atol = s.flow.atol;
+  s.opts.shooting.flow.max_steps = s.opts.shooting.max_steps = s.flow.max_steps;
   s.opts.palc.ds_max = args.Number("max_step", 0.02) * std::abs(s.to - s.from);
   if (!(s.opts.palc.ds_max > 0) || s.opts.palc.ds_max > std::abs(s.to - s.from))
     throw UsageError(args.Source("max_step") + " must be in (0, 1]");
@@ -136,11 +137,11 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
   SetAxis(p, s.axis, from);
   const ForcedModel model(p);
   if (s.restart && from == s.from) {  // the point's stroboscopic state
-    ForcedBranchOptions opts = s.opts;
+    OrbitBranchOptions opts = s.opts;
     opts.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
     const double x = s.restart->state.x(), xdot = s.restart->state.y();
-    OrbitBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, opts)
-                              : ContinueForced(s.p, s.axis, from, to, x, xdot, opts);
+    OrbitBranch b = s.doubled ? ContinueDoubled(p, s.axis, x, xdot, s.lo, s.hi, s.m, opts)
+                              : ContinueForced(s.p, s.axis, from, to, x, xdot, s.m, opts);
     if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
     return b;
   }
@@ -151,7 +152,7 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
     if (b.status != BranchStatus::kStartFailed) return b;
   }
   StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
-  newton.m = s.opts.m;
+  newton.m = s.m;
   newton.x = z[0], newton.xdot = z[1];
   OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
   if (b.status != BranchStatus::kStartFailed || run.Cancelled()) return b;
@@ -318,8 +319,8 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   const std::string status = StatusOf(pieces);
   if (restart) meta.emplace_back("restart", DescribeRestart(args, *restart));
   if (s.doubled)
-    meta.emplace_back("switch", "period-doubled branch, m = " + std::to_string(s.opts.m) + " -> " +
-                                    std::to_string(2 * s.opts.m));
+    meta.emplace_back("switch", "period-doubled branch, m = " + std::to_string(s.m) + " -> " +
+                                    std::to_string(2 * s.m));
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;

@@ -13,15 +13,27 @@ namespace stickslip {
 
 namespace {
 
-OrbitBranchOptions CoreOptions(const ForcedBranchOptions& o) {
-  OrbitBranchOptions c;
-  c.shooting.flow = o.flow;
-  c.shooting.max_steps = o.flow.max_steps;
-  c.palc = o.palc;
-  c.max_amplitude = o.max_amplitude;
-  c.locate_tol = o.locate_tol;
-  c.max_jumps = o.max_jumps;
-  return c;
+// m, then the options: every one checked before a branch starts, so that a
+// bad one is InvalidArgument naming it, never a start-failed status.
+std::string OptionsError(int m, const OrbitBranchOptions& o) {
+  if (m < 1 || m > kMaxPeriodMultiple)
+    return "m = " + std::to_string(m) + " must lie in [1, " + std::to_string(kMaxPeriodMultiple) +
+           "]";
+  return o.ValidationError();
+}
+
+// ContinueForced's checks: the model at from, the range (to finite and !=
+// from), m and the options, then a start guess that is not finite.
+std::string StartError(const ForcedParams& base, ForcedAxis axis, double from, double to,
+                       double x_guess, double xdot_guess, int m, const OrbitBranchOptions& o) {
+  ForcedParams at_from = base;
+  SetAxis(at_from, axis, from);
+  if (std::string e = ValidationError(at_from); !e.empty()) return e;
+  if (!(to != from) || !std::isfinite(to)) return "to must be finite and != from";
+  if (std::string e = OptionsError(m, o); !e.empty()) return e;
+  if (std::isfinite(x_guess) && std::isfinite(xdot_guess)) return "";
+  return "x_guess = " + Num(x_guess) + ", xdot_guess = " + Num(xdot_guess) +
+         ": both must be finite";
 }
 
 // The stroboscopic point (x, x') at theta = 0.
@@ -32,34 +44,33 @@ FlowPoint Strobe(double x, double xdot) {
 }  // namespace
 
 OrbitBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
-                           double x_guess, double xdot_guess, const ForcedBranchOptions& options) {
-  const std::string e = options.ValidationError(base, axis, from, to, x_guess, xdot_guess);
+                           double x_guess, double xdot_guess, int m,
+                           const OrbitBranchOptions& options) {
+  const std::string e = StartError(base, axis, from, to, x_guess, xdot_guess, m, options);
   if (!e.empty()) throw InvalidArgument(e);
   ForcedParams at = base;
   SetAxis(at, axis, from);
   const ForcedModel model(at);
   const FlowPoint guess = Strobe(x_guess, xdot_guess);
   return ContinueOrbits(model, model.ParameterIndex(Name(axis)), guess,
-                        PoincareSection::Stroboscopic(model, guess.z, options.m), to,
-                        CoreOptions(options));
+                        PoincareSection::Stroboscopic(model, guess.z, m), to, options);
 }
 
 OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x0, double xdot0,
-                            double lo, double hi, const ForcedBranchOptions& options) {
+                            double lo, double hi, int m, const OrbitBranchOptions& options) {
   if (const std::string e = ValidationError(at_pd); !e.empty()) throw InvalidArgument(e);
   const double p_pd = GetAxis(at_pd, axis);
   if (!(lo < p_pd && p_pd < hi) || !std::isfinite(lo) || !std::isfinite(hi))
     throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " + Num(p_pd, 12) +
                           " < hi");
   if (const std::string e = options.palc.ValidationError(3); !e.empty()) throw InvalidArgument(e);
-  if (const std::string e = options.ValidationError(); !e.empty()) throw InvalidArgument(e);
+  if (const std::string e = OptionsError(m, options); !e.empty()) throw InvalidArgument(e);
   if (!(std::isfinite(x0) && std::isfinite(xdot0)))
     throw InvalidArgument("x0 = " + Num(x0) + ", xdot0 = " + Num(xdot0) + ": both must be finite");
   const ForcedModel model(at_pd);
   const FlowPoint pd = Strobe(x0, xdot0);
   return ContinueDoubled(model, model.ParameterIndex(Name(axis)), pd,
-                         PoincareSection::Stroboscopic(model, pd.z, options.m), lo, hi,
-                         CoreOptions(options));
+                         PoincareSection::Stroboscopic(model, pd.z, m), lo, hi, options);
 }
 
 }  // namespace stickslip

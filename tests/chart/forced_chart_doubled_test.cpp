@@ -25,7 +25,7 @@ ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBel
 // The Omegas of the PD points of the period-m orbits at force a: the m = 1
 // branch traced in Omega from 0.8 down to 0.5 from the state settled over 200
 // periods, switched at each PD onto the doubled branch, m = 2, 4, ... .
-void CollectPds(double a, const OrbitBranch& b, int m, int target, ForcedBranchOptions o,
+void CollectPds(double a, const OrbitBranch& b, int m, int target, OrbitBranchOptions o,
                 std::vector<double>* pds) {
   for (const OrbitRow& r : b.special) {
     if (r.label != SpecialKind::kPeriodDoubling || PeriodMultiple(b) != m) continue;
@@ -33,15 +33,14 @@ void CollectPds(double a, const OrbitBranch& b, int m, int target, ForcedBranchO
       pds->push_back(r.p);
       continue;
     }
-    o.m = m;
     const OrbitBranch d = ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.start.z[0],
-                                          r.start.z[1], 0.5, 0.8, o);
+                                          r.start.z[1], 0.5, 0.8, m, o);
     CollectPds(a, d, 2 * m, target, o, pds);
   }
 }
 
 std::vector<double> DoubledPds(double a, int m = 2) {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds = o.palc.ds_max = 0.01;
   const OrbitBranch b = testing_util::TraceOmega(Stribeck(a, 0.8), 0.8, 0.5, o);
   std::vector<double> pds;

@@ -84,11 +84,11 @@ OrbitBranch OmegaRun(double a) {
   const ForcedModel model(StribeckChartParams(a, 0.8));
   const FlowRun tr =
       testing_util::RunForced(model, ForcedStart(model, 0, 0, 0.25), 200 * model.period());
-  ForcedBranchOptions o;
-  o.flow.rtol = o.flow.atol = 1e-13;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
   return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.z[0],
-                        tr.end.z[1], o);
+                        tr.end.z[1], 1, o);
 }
 
 const OrbitRow* First(const OrbitBranch& b, SpecialKind l) {

@@ -138,12 +138,12 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
         (testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
                                  model.period())
              .end);
-    ForcedBranchOptions o;
+    OrbitBranchOptions o(ForcedModel::FlowDefaults());
     o.palc.ds = o.palc.ds_max = 2e-4;
     double best = NAN;
     for (const double side : {1.0, -1.0}) {
       const OrbitBranch b = ContinueForced(q, ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                                           p.p1 - side * 2e-3, z.z[0], z.z[1], o);
+                                           p.p1 - side * 2e-3, z.z[0], z.z[1], 1, o);
       for (const OrbitRow& row : b.special)
         if (row.label == SpecialKind::kGrazing &&
             !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))

@@ -42,10 +42,9 @@ OrbitBranch SeedRun(double a) {
   const ForcedModel model(Seed(a, 1));
   const FlowRun tr = testing_util::RunForced(model, ForcedStart(model, 0, 0, 0.25),
                                              200 * model.period(), {}, BeltFlow());
-  ForcedBranchOptions o;
-  o.flow = BeltFlow();
+  OrbitBranchOptions o(BeltFlow());
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(Seed(a, 1), ForcedAxis::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1], o);
+  return ContinueForced(Seed(a, 1), ForcedAxis::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1], 1, o);
 }
 
 // The special point `label` nearest Omega = p.p1 of the one-parameter run in
@@ -76,9 +75,7 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Speci
   const double target = fold ? 1 : -1;
   const int k = std::abs(es.eigenvalues()[0] - target) < std::abs(es.eigenvalues()[1] - target);
   const Eigen::Vector2d e = es.eigenvectors().col(k ? 0 : 1).real().normalized();
-  ForcedBranchOptions o;
-  o.flow = BeltFlow();
-  o.m = m;
+  OrbitBranchOptions o(BeltFlow());
   o.palc.ds = o.palc.ds_max = 2e-4;
   const double h = fold ? 0.02 : 0;
   double best = NAN;
@@ -86,7 +83,7 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Speci
     for (const double sign : {1.0, -1.0}) {
       const OrbitBranch b =
           ContinueForced(Seed(p.p2, p.p1), axis, at + side * 2e-3, at - side * 2e-3,
-                         z.z[0] + sign * h * e[0], z.z[1] + sign * h * e[1], o);
+                         z.z[0] + sign * h * e[0], z.z[1] + sign * h * e[1], m, o);
       for (const OrbitRow& r : b.special)
         if (want(r.label) && std::abs(r.p - at) < 1e-3 &&
             !(std::abs(best - at) <= std::abs(r.p - at))) {

@@ -37,13 +37,13 @@ OrbitRow LocateNsRow(const ForcedCurvePoint& p, double a) {
       (testing_util::RunForced(model, ForcedStart(model, p.phase / model.omega(), p.x0, p.xdot0),
                                model.period())
            .end);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds = o.palc.ds_max = 2e-4;
   OrbitRow best;
   best.p = NAN;
   for (const double side : {1.0, -1.0}) {
     const OrbitBranch b = ContinueForced(Scene(a, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
-                                         p.p1 - side * 2e-3, z.z[0], z.z[1], o);
+                                         p.p1 - side * 2e-3, z.z[0], z.z[1], 1, o);
     for (const OrbitRow& r : b.special)
       if (r.label == SpecialKind::kTorus && !(std::abs(best.p - p.p1) <= std::abs(r.p - p.p1)))
         best = r;
@@ -59,7 +59,7 @@ double LocateNs(const ForcedCurvePoint& p) { return LocateNsRow(p, p.p2).p; }
 const ForcedCurve& StudyCurve() {
   static const ForcedCurve curve = [] {
     const ForcedParams p = Scene(0.05, 1.3);
-    ForcedBranchOptions bo;
+    OrbitBranchOptions bo(ForcedModel::FlowDefaults());
     bo.palc.ds = bo.palc.ds_max = 0.01;
     const OrbitBranch run = testing_util::TraceOmega(p, 1.3, 1.05, bo);
     EXPECT_FALSE(run.special.empty()) << run.message;

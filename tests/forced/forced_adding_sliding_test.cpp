@@ -55,7 +55,7 @@ int SticksOfOrbit(const ForcedParams& p, Real w, Real x_guess) {
 // the two stick phases of the m = 1 orbit merge (2 -> 1 with Omega up).
 TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouchesMuS) {
   const ForcedParams p = ref::Coulomb(0.3, 0.3, 0.05, 0.1, 0.4, 1);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.005;
   const OrbitBranch b = testing_util::TraceOmega(p, 0.38, 0.44, o);
   const OrbitRow* ad = nullptr;
@@ -86,7 +86,7 @@ TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouch
 // (the secant on the closed-form pieces finds none beyond it).
 TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
   const ForcedParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.1, 0.6, 1);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = 0.02 * 0.02;
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   const OrbitBranch b = testing_util::TraceOmega(p, 0.35, 0.37, o);
@@ -123,7 +123,7 @@ TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
 // a stable row near v = 0.3 is an orbit of the closed-form pieces.
 TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -152,7 +152,7 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
 // with no message, at v = 0.185).
 TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
   const ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   o.max_jumps = 0;
   const OrbitBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);

@@ -28,8 +28,8 @@ ForcedParams DenHartog() {
 // Without damping the amplitude grows without bound at Omega = 1 (mu < pi A / 4):
 // one branch from each end, each stopped at |x| = 10.
 TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
-  ForcedBranchOptions o;
-  o.flow.rtol = o.flow.atol = 1e-14;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.max_amplitude = 10;
   o.palc.ds_max = 0.05;
   int compared = 0;
@@ -37,7 +37,7 @@ TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   for (const double from : {0.75, 2.5}) {
     const double to = from == 0.75 ? 2.5 : 0.75;
     const double V = 1 / (1 - from * from);
-    const OrbitBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, o);
+    const OrbitBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, 1, o);
     EXPECT_EQ(b.status, BranchStatus::kUnbounded) << b.message;
     EXPECT_GT(b.rows.size(), 20u);
     for (const OrbitRow& r : b.rows) {
@@ -69,11 +69,11 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   const ForcedModel m0(p);
   const FlowRun transient =
       testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0.2), 200 * m0.period());
-  ForcedBranchOptions o;
-  o.flow.rtol = o.flow.atol = 1e-14;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.palc.ds_max = 0.05;
   const OrbitBranch b =
-      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.z[0], transient.end.z[1], o);
+      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.z[0], transient.end.z[1], 1, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   std::vector<OrbitRow> pds;  // the sliding points are tested in forced_sliding_test
   for (const OrbitRow& r : b.special)
@@ -90,14 +90,14 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   FlowRequest rq;
   rq.switches = &events;
   testing_util::RunForced(m, ForcedStart(m, 0, pd.start.z[0], pd.start.z[1]), m.period(), rq,
-                          o.flow);
+                          o.shooting.flow);
   double t_exit = -1;
   Mode mode = Mode::kSlipBelow;
   for (const auto& e : events)
     if (e.kind == SwitchKind::kStickOut) t_exit = e.t, mode = e.after[0];
   ASSERT_GE(t_exit, 0);
   ShootingOptions oo(ForcedModel::FlowDefaults());
-  oo.flow = o.flow;
+  oo.flow = o.shooting.flow;
   const PeriodicOrbit exit = ExitPhaseOrbit(m, t_exit, mode, 1, 1, oo);
   ASSERT_TRUE(exit.ok()) << exit.message;
   EXPECT_NEAR(exit.multipliers[0].real(), -1, 1e-9);

@@ -100,7 +100,8 @@ TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
 // doubled attractors there); its multiplier against the stroboscopic one.
 TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
   const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
-  const OrbitBranch b = testing_util::TraceOmega(p, 0.62, 0.605, ForcedBranchOptions());
+  const OrbitBranch b =
+      testing_util::TraceOmega(p, 0.62, 0.605, OrbitBranchOptions(ForcedModel::FlowDefaults()));
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int checked = 0;
   double lowest = 0;

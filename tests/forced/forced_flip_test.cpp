@@ -91,7 +91,7 @@ void ExpectDescriptionsFollowCounts(const OrbitBranch& b) {
 
 // The branch's PD points within (lo, hi) against the reference's roots.
 void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, double hi,
-                     const ForcedBranchOptions& o, const char* name) {
+                     const OrbitBranchOptions& o, const char* name) {
   const OrbitBranch b = testing_util::TraceOmega(p, from, to, o);
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ExpectDescriptionsFollowCounts(b);
@@ -113,13 +113,15 @@ void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, d
 // single-valued stick-slip stretch between GR1 and the folds (LP 0.62374).
 TEST(ForcedFlip, StribeckStudyBothCrossingsOfMinusOne) {
   const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.8);
-  ExpectEveryFlip(p, 0.8, 0.5, 0.5790, 0.6230, ForcedBranchOptions(), "stribeck");
+  ExpectEveryFlip(p, 0.8, 0.5, 0.5790, 0.6230, OrbitBranchOptions(ForcedModel::FlowDefaults()),
+                  "stribeck");
 }
 
 // The seed belt: PD1 0.61397, PD2 0.58019, GR1 0.57949 (LP 0.62849).
 TEST(ForcedFlip, SeedStudyBothCrossingsOfMinusOne) {
   const ForcedParams p = forced_reference::SeedBelt(0.25, 0.3, 1);
-  ExpectEveryFlip(p, 1, 0.5, 0.5797, 0.6280, ForcedBranchOptions(), "seed");
+  ExpectEveryFlip(p, 1, 0.5, 0.5797, 0.6280, OrbitBranchOptions(ForcedModel::FlowDefaults()),
+                  "seed");
 }
 
 // Two crossings within one step of one stick structure: steps up to 0.05 in
@@ -128,7 +130,7 @@ TEST(ForcedFlip, SeedStudyBothCrossingsOfMinusOne) {
 // than 0.1, and both are found.
 TEST(ForcedFlip, TwoCrossingsInOneLongStep) {
   const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds = o.palc.ds_max = 0.05;
   const OrbitBranch b = testing_util::TraceOmega(p, 0.62, 0.5795, o);
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;

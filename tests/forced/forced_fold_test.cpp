@@ -91,7 +91,8 @@ struct Fold {
 };
 
 void CheckFolds(const ForcedParams& p, double from, double to, const std::vector<Fold>& folds) {
-  ForcedBranchOptions o;  // as ss_continue: max_step 0.02 of the range, rtol 1e-12
+  OrbitBranchOptions o(
+      ForcedModel::FlowDefaults());  // as ss_continue: max_step 0.02 of the range, rtol 1e-12
   o.palc.ds_max = 0.02 * std::abs(to - from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   const OrbitBranch b = testing_util::TraceOmega(p, from, to, o);

@@ -63,7 +63,7 @@ double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
 }
 
 TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::Trace(Scene(0.6), ForcedAxis::kV, 0.6, 0.3, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -100,7 +100,7 @@ TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
 TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
   ForcedParams p = Scene(0.41);
   p.force = 0.02;
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::TraceOmega(p, 2, 0.6, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -125,7 +125,7 @@ TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
 // pure-slip orbit is stable towards Omega = 1.
 TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
   ForcedParams p = forced_reference::SeedBelt(0.42, 0.05, 1);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::TraceOmega(p, 1.3, 0.6, o);
   int checked = 0;
@@ -151,7 +151,8 @@ TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
 TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
   ForcedParams p = Scene(0.41);
   p.force = 0.113;
-  const OrbitBranch b = testing_util::TraceOmega(p, 2.4, 1.6, ForcedBranchOptions());
+  const OrbitBranch b =
+      testing_util::TraceOmega(p, 2.4, 1.6, OrbitBranchOptions(ForcedModel::FlowDefaults()));
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int pd = 0;
   for (const OrbitRow& s : b.special) {

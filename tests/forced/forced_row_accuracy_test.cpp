@@ -89,14 +89,14 @@ struct Study {
 // The app's branch (run_forced.cpp, Trace): the state after the transient
 // from rest, Newton at m = 1 there, ContinueForced at the app's defaults.
 OrbitBranch AppBranch(const Study& s, double from, double to) {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   o.max_amplitude = s.max_amplitude;
   ForcedParams at = s.p;
   SetAxis(at, ForcedAxis::kOmega, from);
   const Vec2 z = cli::SettledState(ForcedModel(at), o);
-  return ContinueForced(s.p, ForcedAxis::kOmega, from, to, z[0], z[1], o);
+  return ContinueForced(s.p, ForcedAxis::kOmega, from, to, z[0], z[1], 1, o);
 }
 
 template <class Piece>

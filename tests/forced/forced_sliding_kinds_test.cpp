@@ -18,7 +18,7 @@ namespace ref = forced_reference;
 using ref::Real;
 
 OrbitBranch Trace(ForcedParams p, double from, double to, double ds_max) {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = ds_max;
   return testing_util::TraceOmega(p, from, to, o);
 }
@@ -147,7 +147,7 @@ namespace {
 // jump of the map once stepped below v = 0 and threw "v = -0.085 must be >= 0".
 TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   OrbitBranch b;
   ASSERT_NO_THROW(b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o));

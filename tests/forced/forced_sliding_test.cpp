@@ -30,7 +30,7 @@ ForcedParams Coulomb(double mu_s, double mu_k, double v, double beta, double a) 
 }
 
 OrbitBranch Trace(ForcedParams p, double from, double to) {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);
   return testing_util::TraceOmega(p, from, to, o);
 }

@@ -28,9 +28,9 @@ ForcedParams StribeckScene(double omega) {
   return p;
 }
 
-ForcedBranchOptions Options() {
-  ForcedBranchOptions o;
-  o.flow.rtol = o.flow.atol = 1e-13;
+OrbitBranchOptions Options() {
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
   o.palc.ds_max = 0.004;
   o.palc.ds = 0.004;
   return o;
@@ -42,7 +42,7 @@ OrbitRow FirstPeriodDoubling() {
   const ForcedModel m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
   const OrbitBranch b =
-      ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], Options());
+      ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], 1, Options());
   for (const OrbitRow& r : b.special)
     if (r.label == SpecialKind::kPeriodDoubling) return r;
   ADD_FAILURE() << "no PD on the m = 1 branch: " << Name(b.status) << " " << b.message;
@@ -53,7 +53,7 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   const OrbitRow pd = FirstPeriodDoubling();
   ASSERT_EQ(pd.label, SpecialKind::kPeriodDoubling);
   const OrbitBranch d = ContinueDoubled(StribeckScene(pd.p), ForcedAxis::kOmega, pd.start.z[0],
-                                        pd.start.z[1], pd.p - 0.006, pd.p + 0.006, Options());
+                                        pd.start.z[1], pd.p - 0.006, pd.p + 0.006, 1, Options());
   ASSERT_GE(d.rows.size(), 4u) << Name(d.status) << " " << d.message;
   EXPECT_EQ(d.status, BranchStatus::kReachedEnd) << d.message;
   // Supercritical: the doubled branch opens toward lower Omega, stable there.
@@ -80,7 +80,7 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   // so (1 - mu_2m) / |1 + mu_m| -> 4 at the PD (mu_m by separate shooting).
   const OrbitRow& r0 = d.rows.front();
   ShootingOptions oo(ForcedModel::FlowDefaults());
-  oo.flow = Options().flow;
+  oo.flow = Options().shooting.flow;
   const ForcedModel m0(StribeckScene(r0.p));
   const PeriodicOrbit single = ShootStroboscopic(m0, pd.start.z[0], pd.start.z[1], 1, oo);
   ASSERT_TRUE(single.ok());
@@ -118,21 +118,21 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
 }
 
 TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
-  ForcedBranchOptions o = Options();
+  OrbitBranchOptions o = Options();
   const ForcedParams p = StribeckScene(0.7);
   const ForcedModel m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
   ShootingOptions oo(ForcedModel::FlowDefaults());
-  oo.flow = o.flow;
+  oo.flow = o.shooting.flow;
   const PeriodicOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
   ASSERT_TRUE(orbit.ok());
   const OrbitBranch d =
-      ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, o);
+      ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, 1, o);
   EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());
   EXPECT_EQ(PeriodMultiple(d), 2);  // the section it would have had, also on failure
-  EXPECT_THROW(ContinueDoubled(p, ForcedAxis::kOmega, 0, 0, 0.8, 0.9, o), InvalidArgument);
+  EXPECT_THROW(ContinueDoubled(p, ForcedAxis::kOmega, 0, 0, 0.8, 0.9, 1, o), InvalidArgument);
 }
 
 }  // namespace

@@ -106,7 +106,7 @@ struct Events {
   Real omega1a, omega1b, omega2;
 };
 Events ReferenceEvents() {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.max_amplitude = 20;
   const OrbitBranch b = testing_util::TraceOmega(kFloor, 0.48, 0.4801, o);
   EXPECT_FALSE(b.rows.empty()) << b.message;
@@ -160,7 +160,7 @@ TEST(ForcedSwitchingSliding, DenHartogFloorReferenceHasCrossingThenGrazingSlidin
 // fix the crossings-only changes were SW (at 0.4807234 in the app's run,
 // at 0.49999998 (sticks 1 -> 1, crossings 1 -> 2... ) here).
 TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
-  ForcedBranchOptions o;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.max_amplitude = 20;
   o.palc.ds_max = 0.009;  // ss_continue's 0.02 |to - from|
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
@@ -168,9 +168,9 @@ TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
   p0.omega = 0.3;
   const ForcedModel m0(p0);
   const FlowRun tr =
-      testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0), 200 * m0.period(), {}, o.flow);
+      testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0), 200 * m0.period(), {}, o.shooting.flow);
   const OrbitBranch b =
-      ContinueForced(kFloor, ForcedAxis::kOmega, 0.3, 0.75, tr.end.z[0], tr.end.z[1], o);
+      ContinueForced(kFloor, ForcedAxis::kOmega, 0.3, 0.75, tr.end.z[0], tr.end.z[1], 1, o);
   ASSERT_FALSE(b.rows.empty()) << b.message;
   int cr_near_omega1 = 0;
   for (const OrbitRow& r : b.special) {

@@ -36,6 +36,9 @@ namespace stickslip {
 
 /// Settings of ContinueOrbits, validated once.
 struct OrbitBranchOptions {
+  OrbitBranchOptions() = default;
+  /// Every map on this flow (its step cap too: ShootingOptions(flow)).
+  explicit OrbitBranchOptions(const FlowOptions& flow) : shooting(flow) {}
   ShootingOptions shooting;  ///< the start's Newton and every map's flow
   PalcOptions palc;          ///< on (u, p)
   /// Rows stop beyond this |z_i| of a displacement (a tangent component no
