@@ -41,7 +41,7 @@ class Scan {
     rq_.max_steps = o.orbit.flow.max_steps;
   }
   bool Cancelled() {
-    if (o_.cancelled && o_.cancelled()) r_.status = ForcedScanStatus::kCancelled;
+    if (o_.cancelled && o_.cancelled()) r_.status = OrbitScanStatus::kCancelled;
     return !r_.ok();
   }
   // The stroboscopic iterates z, P(z), ..., P^n(z); fewer if the flow fails.

@@ -142,7 +142,7 @@ TEST(ForcedScan, CancelKeepsWhatWasFound) {
     o.cancelled = [&] { return ++polls > k; };
     polls = 0;
     const ForcedOrbits r = FindForcedOrbits(model, o);
-    EXPECT_EQ(r.status, ForcedScanStatus::kCancelled) << "after " << k << " polls";
+    EXPECT_EQ(r.status, OrbitScanStatus::kCancelled) << "after " << k << " polls";
     if (r.orbits.empty()) continue;
     found_at = k;
     EXPECT_LT(r.shots, all.shots);

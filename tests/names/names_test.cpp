@@ -84,7 +84,6 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("AttractorKind", AttractorKind::kFailed);
   Covers("LyapunovStatus", LyapunovStatus::kCancelled);
   Covers("SweepDirection", SweepDirection::kDown);
-  Covers("ForcedScanStatus", ForcedScanStatus::kCancelled);
   Covers("ForcedAxis", ForcedAxis::kBeta);
   Covers("BranchStatus", BranchStatus::kContactLost);
   Covers("SimulationStatus", SimulationStatus::kRowLimit);

@@ -14,6 +14,7 @@
 
 #include "stickslip/forced/orbit.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip {
 
@@ -34,18 +35,6 @@ struct ForcedScanOptions {
   std::string ValidationError() const;
 };
 
-enum class ForcedScanStatus {
-  kOk,
-  kCancelled,  ///< cancelled() returned true; the orbits found so far are kept
-};
-template <>
-struct EnumNames<ForcedScanStatus> {
-  static constexpr NamedValue<ForcedScanStatus> kTable[] = {
-      {ForcedScanStatus::kOk, "ok"},
-      {ForcedScanStatus::kCancelled, "cancelled"},
-  };
-};
-
 struct ForcedScanOrbit {
   PeriodicOrbit
       orbit;  ///< on the stroboscopic section of m periods: multipliers, stability, sticks
@@ -55,11 +44,11 @@ struct ForcedScanOrbit {
 };
 
 struct ForcedOrbits {
-  ForcedScanStatus status = ForcedScanStatus::kOk;
-  std::vector<ForcedScanOrbit> orbits;  ///< by m, then by x_max
-  int shots = 0;                        ///< Newton solves started
-  int converged = 0;                    ///< of them converged (before deduplication)
-  bool ok() const { return status == ForcedScanStatus::kOk; }
+  OrbitScanStatus status = OrbitScanStatus::kOk;  ///< kOk or kCancelled (the orbits so far kept)
+  std::vector<ForcedScanOrbit> orbits;            ///< by m, then by x_max
+  int shots = 0;                                  ///< Newton solves started
+  int converged = 0;                              ///< of them converged (before deduplication)
+  bool ok() const { return status == OrbitScanStatus::kOk; }
 };
 
 /// Throws InvalidArgument if the options are not valid.
