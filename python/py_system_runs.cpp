@@ -102,7 +102,8 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
     throw InvalidArgument("period = " + Repr(*period) + " needs section = strobe");
   if (!(t_end > 0) || !std::isfinite(t_end))
     throw InvalidArgument("t_end = " + Repr(t_end) + " must be a finite number > 0");
-  if (!(dt > 0)) throw InvalidArgument("dt = " + Repr(dt) + " must be > 0");
+  if (!(dt > 0) || !std::isfinite(dt))
+    throw InvalidArgument("dt = " + Repr(dt) + " must be a finite number > 0");
   if (max_rows < 2)
     throw InvalidArgument("max_rows = " + std::to_string(max_rows) + " must be >= 2");
   if (!(std::floor(t_end / dt) + 1 <= static_cast<double>(max_rows)))
@@ -121,6 +122,11 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   if (section == SimulationSection::kStrobe) o.period = SectionPeriod(*s, z0, period);
   const std::string e = o.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
+  if (section == SimulationSection::kStrobe &&
+      !(std::floor(t_end / dt) + std::floor(t_end / o.period) + 2 <= static_cast<double>(max_rows)))
+    throw InvalidArgument("t_end / dt + t_end / period = " + Repr(t_end / dt + t_end / o.period) +
+                          " rows and section points is more than max_rows = " +
+                          std::to_string(max_rows) + " (raise max_rows, dt or period)");
   o.cancelled = [&] { return interrupt(); };
   SimulationSink sink;
   sink.row = [&](double ti, const double* zi, const ModeSet& m) {
@@ -136,8 +142,7 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   }
   interrupt.RaiseIfInterrupted();
   if (r.status == SimulationStatus::kRowLimit)
-    throw InvalidArgument("the switches took the rows past max_rows = " + std::to_string(max_rows) +
-                          " at t = " + Repr(t.back()) + " (raise max_rows or dt)");
+    throw InvalidArgument(r.message + " (raise max_rows or dt)");
   if (!r.ok())  // contact-open is a result: the run stops there (issue 32)
     RaiseNumerical(r.message + " (at t = " + Repr(r.end.t) + " in " + ModeSetName(r.end.mode, k) +
                    ")");

@@ -82,6 +82,11 @@ class Forced(unittest.TestCase):
         self.assertEqual(len(a.section_t), a.exits)
         with self.assertRaisesRegex(ValueError, "give period"):
             stickslip.simulate(chain, [0.1, 0, 0, 0], section=stickslip.SimulationSection.strobe)
+        with self.assertRaisesRegex(ValueError, "rows and section points is more than max_rows"):
+            stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=100.0, dt=0.01, max_rows=10002,
+                               section=stickslip.SimulationSection.strobe)
+        with self.assertRaisesRegex(ValueError, "dt = inf must be a finite number > 0"):
+            stickslip.simulate(chain, [0.1, 0, 0, 0], dt=float("inf"))
         with self.assertRaisesRegex(ValueError, "period = -1"):
             stickslip.simulate(chain, [0.1, 0, 0, 0], period=-1.0,
                                section=stickslip.SimulationSection.strobe)

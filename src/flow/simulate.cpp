@@ -15,10 +15,11 @@ namespace stickslip {
 std::string SimulationOptions::ValidationError() const {
   const std::string e = flow.ValidationError();
   if (!e.empty()) return e;
-  if (!(t_end > 0) || !std::isfinite(t_end)) return "t_end = " + Num(t_end) + " must be > 0";
-  if (!(dt > 0) || !std::isfinite(dt)) return "dt = " + Num(dt) + " must be > 0";
+  if (!(t_end > 0) || !std::isfinite(t_end))
+    return "t_end = " + Num(t_end) + " must be a finite number > 0";
+  if (!(dt > 0) || !std::isfinite(dt)) return "dt = " + Num(dt) + " must be a finite number > 0";
   if (section == SimulationSection::kStrobe && (!(period > 0) || !std::isfinite(period)))
-    return "period = " + Num(period) + " must be > 0 for the stroboscopic section";
+    return "period = " + Num(period) + " must be a finite number > 0 for the stroboscopic section";
   if (max_rows < 1) return "max_rows = " + std::to_string(max_rows) + " must be >= 1";
   return "";
 }
