@@ -1,6 +1,6 @@
 // The forced oscillator in the Python module (issue 20, item 6):
 // x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
-// ForcedAxis and SimulationSection enums, and simulate_forced, forced_orbit and
+// ForcedAxis enum, and simulate_forced, forced_orbit and
 // find_forced_orbits (branches: py_forced_branch.cpp), each without the GIL with
 // Ctrl-C polled by the library's cancel hooks (py_common.hpp, Interrupt).
 #include "py_forced.hpp"
@@ -178,11 +178,6 @@ void BindForcedTypes(py::module_& m) {
       .value("force", ForcedAxis::kForce)
       .value("v", ForcedAxis::kV)
       .value("beta", ForcedAxis::kBeta);
-  py::enum_<SimulationSection>(m, "SimulationSection", "The Poincare section of a simulation.")
-      .value("strobe", SimulationSection::kStrobe)
-      .value("exit", SimulationSection::kExit)
-      .value("none", SimulationSection::kNone);
-  m.attr("ForcedSection") = m.attr("SimulationSection");  // its older name
   py::enum_<BranchStatus>(m, "BranchStatus", "How a branch ended (every system's).")
       .value("reached_end", BranchStatus::kReachedEnd)
       .value("unbounded", BranchStatus::kUnbounded)

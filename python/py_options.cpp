@@ -9,6 +9,7 @@
 #include "stickslip/basin/basin.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
+#include "stickslip/flow/simulate.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 
 namespace stickslip::python {
@@ -132,6 +133,11 @@ py::class_<T> Options(py::module_& m, const char* name, const char* doc) {
 
 void BindOptions(py::module_& m) {
   BindEnums(m);
+  py::enum_<SimulationSection>(m, "SimulationSection", "The Poincare section of a simulation.")
+      .value("strobe", SimulationSection::kStrobe)
+      .value("exit", SimulationSection::kExit)
+      .value("none", SimulationSection::kNone);
+  m.attr("ForcedSection") = m.attr("SimulationSection");  // its older name
   Options<FlowOptions>(m, "FlowOptions", "Integrator settings of every run.")
       .def_readwrite("rtol", &FlowOptions::rtol, "relative tolerance (1e-11)")
       .def_readwrite("atol", &FlowOptions::atol, "absolute tolerance (1e-13)")

@@ -51,6 +51,8 @@ struct Stream {
   ModeSet last_mode;
 
   bool Stopped() const { return !stop.empty(); }
+  // The simulation ends where the stream stopped the flow.
+  void End(Simulation* out) const { out->status = stop_status, out->message = stop; }
   // A point given twice (a switch on an output time, say) is one row.
   bool Repeats(double t, const double* z, const ModeSet& m) {
     const Eigen::Map<const Eigen::VectorXd> zz(z, n);
@@ -100,7 +102,7 @@ void Add(const FlowRun& run, const SimulationOptions& o, int n, Simulation* r) {
 // The run's end after one flow run; false if the simulation ends here.
 bool Continues(const FlowRun& run, Stream& st, Simulation& r) {
   if (st.Stopped()) {
-    r.status = st.stop_status, r.message = st.stop;
+    st.End(&r);
     return false;
   }
   if (run.status == FlowStatus::kContactOpen) {
@@ -171,7 +173,7 @@ Simulation Simulate(const System& system, const FlowPoint& start, const Simulati
     p = run.end;
     if (!last || t_sec == o.t_end) st.Section(p.t, p.z.data(), p.mode);  // t = n T, t_end's too
     if (st.Stopped()) {
-      r.status = st.stop_status, r.message = st.stop;
+      st.End(&r);
       return r;
     }
     if (last) return r;
