@@ -123,7 +123,7 @@ void DenHartogRun() {
         rows = 0;
         for (const double from : {0.75, 2.5}) {
           const double to = from == 0.75 ? 2.5 : 0.75;
-          rows += ContinueForced(DenHartog(from), ForcedAxis::kOmega, from, to,
+          rows += ContinueForced(DenHartog(from), Parameter::kOmega, from, to,
                                  1 / (1 - from * from), 0.01, 1, o)
                       .rows.size();
         }

@@ -86,7 +86,7 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
   return d;
 }
 
-py::dict Diagram(ForcedParams base, ForcedAxis axis, double from, double to, int n,
+py::dict Diagram(ForcedParams base, ParameterAxis axis, double from, double to, int n,
                  std::optional<int> transient, std::optional<int> keep, bool up, bool down,
                  int chunks, double max_amplitude, std::optional<double> rtol,
                  std::optional<double> atol) {

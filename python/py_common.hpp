@@ -14,7 +14,39 @@
 #include <vector>
 
 #include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/orbits/shooting.hpp"
+
+// The one lens (parameter_axis.hpp) in Python: a Parameter member or its
+// name in, a Parameter out. An unknown name raises ValueError (InvalidArgument).
+namespace pybind11::detail {
+template <>
+class type_caster<stickslip::ParameterAxis> {
+ public:
+  static constexpr auto name = const_name("Parameter");
+  bool load(handle src, bool convert) {
+    if (isinstance<str>(src)) {
+      value_.emplace(src.cast<std::string>());
+      return true;
+    }
+    make_caster<stickslip::Parameter> id;
+    if (!id.load(src, convert)) return false;
+    value_.emplace(cast_op<stickslip::Parameter>(id));
+    return true;
+  }
+  static handle cast(const stickslip::ParameterAxis& a, return_value_policy, handle parent) {
+    return make_caster<stickslip::Parameter>::cast(a.id(), return_value_policy::copy, parent);
+  }
+  template <typename T>
+  using cast_op_type = movable_cast_op_type<T>;
+  operator stickslip::ParameterAxis*() { return &*value_; }
+  operator stickslip::ParameterAxis&() { return *value_; }
+  operator stickslip::ParameterAxis&&() && { return std::move(*value_); }
+
+ private:
+  std::optional<stickslip::ParameterAxis> value_;
+};
+}  // namespace pybind11::detail
 
 namespace stickslip::python {
 
@@ -102,9 +134,9 @@ void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
-void BindBatch(py::module_& m);        // py_batch.cpp: orbits()
-void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
-void BindSystems(py::module_& m);      // py_systems.cpp: ChainParams, CouplingParams (issue 32)
+void BindBatch(py::module_& m);         // py_batch.cpp: orbits()
+void BindOrbitBranch(py::module_& m);   // py_orbit_branch.cpp: continue_orbits() (after BindForced)
+void BindSystems(py::module_& m);       // py_systems.cpp: ChainParams, CouplingParams (issue 32)
 void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
 void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
 

@@ -1,6 +1,6 @@
 // The forced oscillator in the Python module (issue 20, item 6):
 // x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
-// ForcedAxis enum, and simulate_forced, forced_orbit and
+// Parameter enum (ForcedAxis), and simulate_forced, forced_orbit and
 // find_forced_orbits (branches: py_forced_branch.cpp), each without the GIL with
 // Ctrl-C polled by the library's cancel hooks (py_common.hpp, Interrupt).
 #include "py_forced.hpp"
@@ -173,11 +173,11 @@ namespace {
 
 // The enums, ForcedParams and the result classes.
 void BindForcedTypes(py::module_& m) {
-  py::enum_<ForcedAxis>(m, "ForcedAxis", "The continued parameter of the forced oscillator.")
-      .value("omega", ForcedAxis::kOmega)
-      .value("force", ForcedAxis::kForce)
-      .value("v", ForcedAxis::kV)
-      .value("beta", ForcedAxis::kBeta);
+  py::enum_<Parameter> axis(m, "Parameter",
+                            "A parameter of the oscillators, the one lens: the belt's, then the "
+                            "forcing's (force, omega). Functions take a member or its name.");
+  for (const auto& e : EnumNames<Parameter>::kTable) axis.value(e.name, e.value);
+  m.attr("ForcedAxis") = axis;  // its older name
   py::enum_<BranchStatus>(m, "BranchStatus", "How a branch ended (every system's).")
       .value("reached_end", BranchStatus::kReachedEnd)
       .value("unbounded", BranchStatus::kUnbounded)

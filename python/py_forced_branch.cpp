@@ -21,7 +21,7 @@ namespace {
 // a switch or a restart from it needs.
 struct PyForcedSpecial {
   std::string label, description;
-  ForcedAxis axis = ForcedAxis::kOmega;
+  ParameterAxis axis = Parameter::kOmega;
   ForcedParams params;  // every parameter at the point (axis = p)
   double p = 0, x0 = 0, xdot0 = 0;
   double run_from = 0, run_to = 0;  // the range of the run it was found in
@@ -32,7 +32,7 @@ struct PyForcedSpecial {
 };
 
 struct PyForcedBranch {
-  ForcedAxis axis = ForcedAxis::kOmega;
+  ParameterAxis axis = Parameter::kOmega;
   BranchStatus status = BranchStatus::kStartFailed;
   std::string message;
   py::array p, x0, xdot0, m, sticks, crossings, x_min, x_max, xdot_min, xdot_max, stable,
@@ -52,12 +52,12 @@ OrbitBranchOptions Options(double width, double max_amplitude, std::optional<dou
   return o;
 }
 
-PyForcedSpecial Special(const OrbitRow& s, int m, const ForcedParams& base, ForcedAxis axis,
+PyForcedSpecial Special(const OrbitRow& s, int m, const ForcedParams& base, ParameterAxis axis,
                         double from, double to) {
   PyForcedSpecial q;
   q.label = Name(s.label), q.description = s.description, q.axis = axis;
   q.params = base;
-  SetAxis(q.params, axis, s.p);
+  axis.Set(q.params, s.p);
   q.p = s.p, q.x0 = s.start.z[0], q.xdot0 = s.start.z[1], q.run_from = from, q.run_to = to;
   q.m = m, q.sticks = s.sticks, q.crossings = s.crossings, q.stable = s.stable;
   const Extrema e = RowExtrema(s);
@@ -66,7 +66,7 @@ PyForcedSpecial Special(const OrbitRow& s, int m, const ForcedParams& base, Forc
   return q;
 }
 
-PyForcedBranch MakeBranch(const OrbitBranch& r, const ForcedParams& base, ForcedAxis axis,
+PyForcedBranch MakeBranch(const OrbitBranch& r, const ForcedParams& base, ParameterAxis axis,
                           double from, double to) {
   PyForcedBranch out;
   out.axis = axis, out.status = r.status, out.message = r.message;
@@ -97,7 +97,7 @@ PyForcedBranch MakeBranch(const OrbitBranch& r, const ForcedParams& base, Forced
   return out;
 }
 
-PyForcedBranch Continue(ForcedParams base, ForcedAxis axis, double from, double to,
+PyForcedBranch Continue(ForcedParams base, ParameterAxis axis, double from, double to,
                         std::optional<double> x_guess, std::optional<double> xdot_guess, int m,
                         double max_amplitude, std::optional<double> max_step,
                         std::optional<double> rtol, std::optional<double> atol) {
@@ -131,7 +131,7 @@ PyForcedBranch Doubled(const PyForcedSpecial& pd, std::optional<double> lo,
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
   const ForcedParams at = pd.params;  // copies: read without the GIL
-  const ForcedAxis axis = pd.axis;
+  const ParameterAxis axis = pd.axis;
   const double x0 = pd.x0, xdot0 = pd.xdot0;
   const int m = pd.m;
   OrbitBranch r;
@@ -154,7 +154,7 @@ void BindClasses(py::module_& m) {
                   "A located point of a forced branch (LP, PD, NS, GR, SW, AD, CR, SL): "
                   "continue_doubled() starts from a PD one.");
   s.def("__getitem__", &GetItem, py::arg("key")).def("__repr__", [](const S& q) {
-    return "<ForcedSpecialPoint " + q.label + " at " + Name(q.axis) + " = " + Repr(q.p) +
+    return "<ForcedSpecialPoint " + q.label + " at " + q.axis.name() + " = " + Repr(q.p) +
            ", m = " + std::to_string(q.m) + ">";
   });
   Fields(s, std::pair{"label", &S::label}, std::pair{"description", &S::description},

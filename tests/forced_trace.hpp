@@ -7,9 +7,9 @@
 
 namespace stickslip::testing_util {
 
-inline OrbitBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to,
+inline OrbitBranch Trace(ForcedParams p, ParameterAxis axis, double from, double to,
                          const OrbitBranchOptions& o) {
-  SetAxis(p, axis, from);
+  axis.Set(p, from);
   const ForcedModel m(p);
   const FlowRun tr = RunForced(m, ForcedStart(m, 0, 0, p.base.v), 200 * m.period());
   return ContinueForced(p, axis, from, to, tr.end.z[0], tr.end.z[1], 1, o);
@@ -17,7 +17,7 @@ inline OrbitBranch Trace(ForcedParams p, ForcedAxis axis, double from, double to
 
 inline OrbitBranch TraceOmega(const ForcedParams& p, double from, double to,
                               const OrbitBranchOptions& o) {
-  return Trace(p, ForcedAxis::kOmega, from, to, o);
+  return Trace(p, Parameter::kOmega, from, to, o);
 }
 
 }  // namespace stickslip::testing_util

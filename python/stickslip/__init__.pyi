@@ -107,11 +107,20 @@ class BasinStatus(enum.IntEnum):
     ok = 0
     failed = 1
     cancelled = 2
-class ForcedAxis(enum.IntEnum):
-    omega = 0
-    force = 1
-    v = 2
-    beta = 3
+class Parameter(enum.IntEnum):
+    """A parameter of the oscillators (the one lens); functions take a member or its name."""
+    beta = 0
+    v = 1
+    mu_s = 2
+    mu_m = 3
+    v_m = 4
+    mu_k = 5
+    v_s = 6
+    delta = 7
+    k5 = 8
+    force = 9
+    omega = 10
+ForcedAxis: type[Parameter]
 class SimulationSection(enum.IntEnum):
     strobe = 0
     exit = 1
@@ -274,7 +283,7 @@ class ForcedOrbit:
     def __getitem__(self, key: str) -> Any: ...
 
 class ForcedBranch:
-    axis: ForcedAxis
+    axis: Parameter
     status: BranchStatus
     message: str
     p: Array
@@ -324,7 +333,7 @@ ForcedBranchStatus: type[BranchStatus]
 class ForcedSpecialPoint:
     label: str
     description: str
-    axis: ForcedAxis
+    axis: Parameter
     params: ForcedParams
     p: float
     x0: float
@@ -579,7 +588,7 @@ def find_forced_orbits(params: ForcedParams, max_m: int = 4, max_sticks: int = 4
                        exit_samples: int = 48, radius: float = 0.0,
                        rtol: Optional[float] = None,
                        atol: Optional[float] = None) -> List[ForcedOrbit]: ...
-def continue_forced(params: ForcedParams, axis: ForcedAxis, from_: float, to: float,
+def continue_forced(params: ForcedParams, axis: Parameter | str, from_: float, to: float,
                     x_guess: Optional[float] = None, xdot_guess: Optional[float] = None,
                     m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None,
@@ -597,7 +606,7 @@ def stroboscopic(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] =
                  transient: Optional[int] = None, keep: Optional[int] = None,
                  max_amplitude: float = 1e6, rtol: Optional[float] = None,
                  atol: Optional[float] = None) -> Dict[str, Any]: ...
-def orbit_diagram(params: ForcedParams, axis: ForcedAxis, from_: float, to: float, n: int = 200,
+def orbit_diagram(params: ForcedParams, axis: Parameter | str, from_: float, to: float, n: int = 200,
                   transient: Optional[int] = None, keep: Optional[int] = None, up: bool = True,
                   down: bool = True, chunks: int = 1, max_amplitude: float = 50.0,
                   rtol: Optional[float] = None,

@@ -120,7 +120,7 @@ class EveryResultArrayReadOnly(unittest.TestCase):
         slip.v = 0.42  # a stable pure-slip orbit inside the stick-slip one
         sp = stickslip.Params("stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25)
         fp = stickslip.ForcedParams(sp, force=0.3, omega=0.617)
-        w = stickslip.ForcedAxis.omega
+        w = "omega"
         s = stickslip.stroboscopic(fp, 0.0, 0.25, transient=100, keep=2)
         fo = stickslip.forced_orbit(fp, s["x"][0], s["xdot"][0])
         branch = stickslip.continue_forced(fp, w, 0.62, 0.617, x_guess=fo.x0, xdot_guess=fo.xdot0)

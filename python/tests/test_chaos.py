@@ -27,7 +27,7 @@ class Switch(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         o = settled_orbit(0.7)
-        cls.branch = stickslip.continue_forced(stribeck(0.7), stickslip.ForcedAxis.omega, 0.7,
+        cls.branch = stickslip.continue_forced(stribeck(0.7), stickslip.Parameter.omega, 0.7,
                                                0.6, x_guess=o.x0, xdot_guess=o.xdot0,
                                                max_step=0.04, rtol=1e-13, atol=1e-13)
 
@@ -73,7 +73,7 @@ class Chaos(unittest.TestCase):
         np.testing.assert_allclose(s["x"], o.x0, atol=1e-9)
 
     def test_orbit_diagram_settles_on_newtons_orbit(self):
-        d = stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.69, 0.71, n=3,
+        d = stickslip.orbit_diagram(stribeck(0.7), stickslip.Parameter.omega, 0.69, 0.71, n=3,
                                     transient=300, keep=8)
         self.assertEqual(d["failed"], [])
         self.assertEqual(len(d["columns"]["value"]), 6)  # 3 up, 3 down
@@ -104,7 +104,7 @@ class Chaos(unittest.TestCase):
         with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):
             stickslip.stroboscopic(stribeck(0.7), keep=0)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "n"):
-            stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7, n=0)
+            stickslip.orbit_diagram(stribeck(0.7), stickslip.Parameter.omega, 0.6, 0.7, n=0)
 
 
 class Bounds(unittest.TestCase):
@@ -117,14 +117,14 @@ class Bounds(unittest.TestCase):
                                     r"in \[0, 1000000\]"):
             stickslip.stroboscopic(stribeck(0.7), transient=big, keep=10)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "transient"):
-            stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7, n=2,
+            stickslip.orbit_diagram(stribeck(0.7), stickslip.Parameter.omega, 0.6, 0.7, n=2,
                                     transient=big)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "transient"):
             stickslip.forced_basins(stribeck(0.7), nx=1, ny=1, transient=big)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):
             stickslip.stroboscopic(stribeck(0.7), keep=10**6 + 1)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "section points"):
-            stickslip.orbit_diagram(stribeck(0.7), stickslip.ForcedAxis.omega, 0.6, 0.7,
+            stickslip.orbit_diagram(stribeck(0.7), stickslip.Parameter.omega, 0.6, 0.7,
                                     n=100000, keep=1000)
 
     def test_a_short_transient_aligns_over_all_of_it(self):
@@ -156,7 +156,7 @@ class Bounds(unittest.TestCase):
             stickslip.stroboscopic(stribeck(0.7), math.nan)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "xdot0 = inf"):
             stickslip.stroboscopic(stribeck(0.7), 0.0, math.inf)
-        omega = stickslip.ForcedAxis.omega
+        omega = stickslip.Parameter.omega
         cases = (({"m": 0}, r"m = 0 must lie in \[1, 1000\]"),
                  ({"max_amplitude": 0}, "max_amplitude = 0"),
                  ({"max_amplitude": math.nan}, "max_amplitude = nan"),

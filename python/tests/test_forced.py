@@ -107,6 +107,23 @@ class Forced(unittest.TestCase):
         self.assertTrue(np.all(b.sticks == 0) and np.all(b.m == 1))
         self.assertEqual(b.multipliers.shape, (len(b.p), 2))
 
+    def test_any_parameter_by_member_or_name_is_the_axis(self):
+        # The one lens: the Den Hartog branch in mu_k at Omega = 2 (mu_s = 0.3
+        # held), its axis by name, against his closed form X(mu_k) on every row.
+        p = den_hartog_params(2.0)
+        V = 1 / (1 - 4.0)
+        b = stickslip.continue_forced(p, "mu_k", 0.3, 0.05, x_guess=V, xdot_guess=0.01)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        self.assertEqual(b.axis, stickslip.Parameter.mu_k)
+        self.assertIs(stickslip.ForcedAxis, stickslip.Parameter)  # the older name
+        X = np.array([den_hartog(mu, 1, 2.0) for mu in b.p])
+        np.testing.assert_allclose(b.x_max, X, atol=1e-9, rtol=0)
+        with self.assertRaisesRegex(ValueError, "'mu_m' does not apply"):
+            stickslip.continue_forced(p, stickslip.Parameter.mu_m, 0.2, 0.1, x_guess=V,
+                                      xdot_guess=0.01)
+        with self.assertRaisesRegex(ValueError, "unknown parameter 'gamma'"):
+            stickslip.continue_forced(p, "gamma", 0.2, 0.1, x_guess=V, xdot_guess=0.01)
+
     def test_arrays_are_read_only_and_bad_input_raises(self):
         tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)
         for a in (tr.t, tr.x, tr.section_x, tr.mode):

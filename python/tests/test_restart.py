@@ -159,7 +159,7 @@ class ForcedRestart(unittest.TestCase):
                 lp.options("beta")  # a belt branch from a forced point
             with self.assertRaisesRegex(ValueError, "forced run"):
                 lp.chart_options()  # nor a belt chart (its axis is no belt parameter)
-            b = stickslip.continue_forced(lp.forced_params(), stickslip.ForcedAxis.force,
+            b = stickslip.continue_forced(lp.forced_params(), stickslip.Parameter.force,
                                           lp.force, 2.0, *lp.state, m=lp.m)
         self.assertGreater(len(b.p), 10)
         self.assertAlmostEqual(b.p[0], 1.0, delta=1e-12)

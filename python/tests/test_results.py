@@ -221,7 +221,7 @@ class Figures(unittest.TestCase):
         p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
                                                     v=0.0), force=1.0, omega=1.5)
         o = stickslip.forced_orbit(p, 0.5, 0.0)
-        b = stickslip.continue_forced(p, stickslip.ForcedAxis.omega, 1.5, 2.5, x_guess=o.x0,
+        b = stickslip.continue_forced(p, stickslip.Parameter.omega, 1.5, 2.5, x_guess=o.x0,
                                       xdot_guess=o.xdot0)
         self.assertIn("points %d" % len(b.p), repr(b))
         df = b.to_pandas()

@@ -56,8 +56,8 @@ constexpr const char* kNotes =
     "(pt) and a label (lab: GR1, HB1, LP1, ... per type in branch order). --restart DIR\n"
     "--point HB1 starts at that point: its parameters, solver options and continued\n"
     "parameter are the defaults, --from is its value (--to the far end of the range).\n"
-    "A forced run's point (PD1, CR1, ... or a pt) restarts the forced oscillator from its\n"
-    "stroboscopic state (x0, xdot0), --param omega|force|v|beta; no --force needed.\n";
+    "A forced run (--param: its law's, force or omega) restarts from a point (PD1, ...)\n"
+    "at its stroboscopic state (x0, xdot0); no --force needed.\n";
 constexpr const char* kExample =
     "\nExample: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5\n"
     "         ss_continue --restart plots --point HB1 --param beta --out hb_beta";

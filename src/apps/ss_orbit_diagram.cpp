@@ -40,7 +40,7 @@ constexpr const char* kExample =
 po::options_description AppOptions() {
   po::options_description d("Orbit diagram (study section [orbit_diagram])");
   d.add_options()("param", cli::Value()->value_name("NAME"),
-                  "the swept parameter: omega, force, v or beta (default omega)")(
+                  "the swept parameter: one of the law's, force or omega (default omega)")(
       "from", cli::Value()->value_name("P"), "first value (default 0.5)")(
       "to", cli::Value()->value_name("P"), "last value (default 2.5)")(
       "n", cli::Value()->value_name("N"), "parameter values, in [2, 100000] (default 200)")(
@@ -79,14 +79,7 @@ Setup Configure(const cli::Arguments& args) {
   s.p.base = cli::UncheckedModelFromArguments(args);
   s.p.force = args.Number("force", 0.3);
   s.p.omega = args.Number("omega", 1);
-  const std::string name = args.Text("param", "omega");
-  bool found = false;
-  for (ss::ForcedAxis a :
-       {ss::ForcedAxis::kOmega, ss::ForcedAxis::kForce, ss::ForcedAxis::kV, ss::ForcedAxis::kBeta})
-    if (name == ss::Name(a)) s.o.axis = a, found = true;
-  if (!found)
-    throw cli::UsageError("invalid value '" + name + "' for " + args.Source("param") +
-                          ": must be omega, force, v or beta");
+  s.o.axis = cli::AxisFromArguments(args, "param", "omega", s.p.base.law, true);
   // Every given value is checked, the swept one too (--omega -1 with --param omega).
   if (const std::string e = ss::ValidationError(s.p); !e.empty()) {
     const std::string key = e.substr(0, e.find(' '));
@@ -99,7 +92,7 @@ Setup Configure(const cli::Arguments& args) {
     throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");
   for (const char* end : {"from", "to"}) {
     ss::ForcedParams at = s.p;
-    ss::SetAxis(at, s.o.axis, end[0] == 'f' ? s.o.from : s.o.to);
+    s.o.axis.Set(at, end[0] == 'f' ? s.o.from : s.o.to);
     const std::string e = ss::ValidationError(at);
     if (!e.empty())
       throw cli::UsageError("invalid forced model at --" + std::string(end) + ": " + e);
@@ -139,9 +132,8 @@ Setup Configure(const cli::Arguments& args) {
 std::string Describe(const Setup& s) {
   ss::ForcedParams at = s.p;
   std::string d = cli::DescribeModel(at.base);
-  for (ss::ForcedAxis a : {ss::ForcedAxis::kForce, ss::ForcedAxis::kOmega})
-    if (a != s.o.axis)
-      d += std::string(" ") + ss::Name(a) + "=" + ss::FormatNumber(ss::GetAxis(s.p, a));
+  for (ss::ParameterAxis a : {ss::Parameter::kForce, ss::Parameter::kOmega})
+    if (a != s.o.axis) d += std::string(" ") + a.name() + "=" + ss::FormatNumber(a.Get(s.p));
   return d;
 }
 
@@ -177,7 +169,7 @@ int Main(int argc, char** argv) {
     return cli::kExitFailed;
   }
   const std::string model = Describe(s);
-  const std::string axis = ss::Name(s.o.axis);
+  const std::string axis = s.o.axis.name();
   cli::Metadata meta =
       cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.p.base, s.flow, axis);
   meta.insert(meta.end(),

@@ -40,7 +40,7 @@ void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<D
     if (stop.load(std::memory_order_relaxed)) return;
     try {
       ForcedParams p = base;
-      SetAxis(p, o.axis, c->value);
+      o.axis.Set(p, c->value);
       const ForcedModel m(p);
       if (restart) z = ForcedStart(m, 0, 0, p.base.v);  // from rest on the belt
       z = ForcedStart(m, 0, z.z[0], z.mode[0] == Mode::kStick ? p.base.v : z.z[1]);
@@ -68,9 +68,11 @@ void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<D
 OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOptions& o) {
   const std::string e = o.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
+  if (const std::string ae = AxisError(o.axis, base.base.law, true); !ae.empty())
+    throw InvalidArgument(ae);
   for (double v : {o.from, o.to}) {
     ForcedParams p = base;
-    SetAxis(p, o.axis, v);
+    o.axis.Set(p, v);
     const std::string pe = ValidationError(p);
     if (!pe.empty()) throw InvalidArgument(pe);
   }

@@ -14,23 +14,23 @@ namespace {
 
 bool Done(const DiagramColumn& c) { return c.computed && c.run.status == LyapunovStatus::kDone; }
 
-void AddFailures(const OrbitDiagram& d, ForcedAxis axis, TsvTable& t) {
+void AddFailures(const OrbitDiagram& d, ParameterAxis axis, TsvTable& t) {
   for (const DiagramColumn& c : d.columns)
     if (c.computed && !Done(c))
-      t.AddComment(std::string("failed: ") + Name(c.direction) + " " + Name(axis) + " = " +
+      t.AddComment(std::string("failed: ") + Name(c.direction) + " " + axis.name() + " = " +
                    FormatNumber(c.value) + ": " + Name(c.run.status) + ", " + c.run.message);
 }
 
-void CheckFinite(double x, const DiagramColumn& c, ForcedAxis axis) {
+void CheckFinite(double x, const DiagramColumn& c, ParameterAxis axis) {
   if (!std::isfinite(x))
-    throw InvalidArgument("orbit diagram at " + std::string(Name(axis)) + " = " +
+    throw InvalidArgument("orbit diagram at " + std::string(axis.name()) + " = " +
                           FormatNumber(c.value) + " has a non-finite value");
 }
 
 }  // namespace
 
-TsvTable OrbitDiagramTable(const OrbitDiagram& d, ForcedAxis axis) {
-  TsvTable t({"direction", Name(axis), "period", "x", "xdot", "stuck", "sticks", "exits",
+TsvTable OrbitDiagramTable(const OrbitDiagram& d, ParameterAxis axis) {
+  TsvTable t({"direction", axis.name(), "period", "x", "xdot", "stuck", "sticks", "exits",
               "exit_phase", "lyapunov", "lyapunov_err"});
   AddFailures(d, axis, t);
   for (const DiagramColumn& c : d.columns) {
@@ -47,9 +47,9 @@ TsvTable OrbitDiagramTable(const OrbitDiagram& d, ForcedAxis axis) {
   return t;
 }
 
-TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
-  TsvTable t({"direction", Name(axis), "lyapunov", "lyapunov_err", "sticks_per_period", "collapses",
-              "x_min", "x_max"});
+TsvTable ExponentTable(const OrbitDiagram& d, ParameterAxis axis) {
+  TsvTable t({"direction", axis.name(), "lyapunov", "lyapunov_err", "sticks_per_period",
+              "collapses", "x_min", "x_max"});
   AddFailures(d, axis, t);
   for (const DiagramColumn& c : d.columns) {
     if (!Done(c) || c.run.points.empty()) continue;
@@ -64,9 +64,9 @@ TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis) {
   return t;
 }
 
-std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::string& title,
+std::string OrbitDiagramScript(FigureFormat format, ParameterAxis axis, const std::string& title,
                                bool up, bool down) {
-  const std::string ax = Name(axis);
+  const std::string ax = axis.name();
   const std::string label = ParameterAxisLabel(axis);
   std::ostringstream os;
   os << "# The orbit diagram of ss_orbit_diagram: stroboscopic section points (phase 0) and\n"

@@ -10,8 +10,8 @@ namespace stickslip {
 
 ForcedParams ForcedPlane::At(const ForcedParams& base, double x1, double x2) const {
   ForcedParams q = base;
-  SetAxis(q, p1, x1);
-  SetAxis(q, p2, x2);
+  p1.Set(q, x1);
+  p2.Set(q, x2);
   return q;
 }
 
@@ -23,7 +23,9 @@ Plane ForcedPlane::AsPlane() const {
 }
 
 std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
-  if (p1 == p2) return std::string("the two axes are both ") + Name(p1);
+  if (p1 == p2) return "the two axes are both " + p1.name();
+  for (const ParameterAxis& a : {p1, p2})
+    if (std::string e = AxisError(a, base.base.law, true); !e.empty()) return e;
   for (double x : {from1, to1, from2, to2})
     if (!std::isfinite(x)) return "a range end is not finite";
   if (!(from1 < to1)) return "the first range is empty or inverted: from >= to";
@@ -42,7 +44,7 @@ std::string ForcedPlane::ValidationError(const ForcedParams& base) const {
     for (const auto& pt : pts) {
       const std::string e = stickslip::ValidationError(At(base, pt[0], pt[1]));
       if (!e.empty())
-        return std::string("at ") + Name(p1) + " = " + Num(pt[0], 6) + ", " + Name(p2) + " = " +
+        return "at " + p1.name() + " = " + Num(pt[0], 6) + ", " + p2.name() + " = " +
                Num(pt[1], 6) + ": " + e;
     }
   }

@@ -21,7 +21,7 @@ bool Sliding(SpecialKind l) {
 // One line: its constant, its range and where the seeds' text says they are.
 struct Line {
   ForcedParams params;
-  ForcedAxis axis;
+  ParameterAxis axis = Parameter::kOmega;
   bool along1;
   double c, lo, hi;
   std::string at;  // "at force = 0.3"
@@ -54,11 +54,11 @@ void Harvest(const OrbitBranch& b, const Line& line, const ForcedChartOptions& o
     if (r.label != SpecialKind::kPeriodDoubling || 2 * m > o.max_m || !inside) continue;
     if (o.cancelled && o.cancelled()) return;
     ForcedParams at_pd = line.params;
-    SetAxis(at_pd, line.axis, r.p);
+    line.axis.Set(at_pd, r.p);
     const OrbitBranch doubled =
         ContinueDoubled(at_pd, line.axis, s.x0, s.xdot0, line.lo, line.hi, m, bo);
     ++*runs;
-    const std::string name = "m = " + std::to_string(2 * m) + " " + Name(line.axis) +
+    const std::string name = "m = " + std::to_string(2 * m) + " " + line.axis.name() +
                              " run (doubled at " + Num(r.p, 6) + ") ";
     Harvest(doubled, line, o, bo, name, runs, seeds);
   }
@@ -73,12 +73,12 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
   line.axis = along1 ? pl.p1 : pl.p2, line.along1 = along1, line.c = c;
   line.lo = along1 ? pl.from1 : pl.from2, line.hi = along1 ? pl.to1 : pl.to2;
   line.params = along1 ? pl.At(base, line.lo, c) : pl.At(base, c, line.lo);
-  line.at = std::string("at ") + Name(along1 ? pl.p2 : pl.p1) + " = " + Num(c, 6);
+  line.at = "at " + (along1 ? pl.p2 : pl.p1).name() + " = " + Num(c, 6);
   std::vector<ForcedSeed> seeds;
   for (const double from : {line.lo, line.hi}) {
     if (o.cancelled && o.cancelled()) break;
     ForcedParams start = line.params;
-    SetAxis(start, line.axis, from);
+    line.axis.Set(start, from);
     ForcedScanOptions so;
     so.orbit = ShootingOptions(o.flow);
     so.max_m = o.max_m, so.max_sticks = 2, so.grid = 3, so.exit_samples = 24;
@@ -95,7 +95,7 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
           ContinueForced(start, line.axis, from, from == line.lo ? line.hi : line.lo,
                          f.points[0].x(), f.points[0].y(), f.m, bo);
       ++*runs;
-      Harvest(b, line, o, bo, std::string(Name(line.axis)) + " run ", runs, &seeds);
+      Harvest(b, line, o, bo, std::string(line.axis.name()) + " run ", runs, &seeds);
     }
   }
   return seeds;

@@ -111,8 +111,8 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
   const double ds = last.tangent.dot(d), off = (d - ds * last.tangent).norm();
   if (!(off <= tol.forced_branch_offset * std::abs(ds)))
     return {CurveEndKind::kBranchJump, "the corrector moved " + Num(off / std::abs(ds), 3) +
-                                           " steps off the predictor at " + Name(plane_.p1) +
-                                           " = " + Num(next.u[2], 6) + ", " + Name(plane_.p2) +
+                                           " steps off the predictor at " + plane_.p1.name() +
+                                           " = " + Num(next.u[2], 6) + ", " + plane_.p2.name() +
                                            " = " + Num(next.u[3], 6)};
   ForcedCurveSample a, b;
   std::string why;

@@ -70,8 +70,8 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
   for (size_t k = 0; k < n; ++k) {
     if (!g.done[k] || g.cells[k].kind != AttractorKind::kFailed) continue;
     if (g.failed++ == 0)
-      g.failure = std::string("response cell ") + Name(pl.p1) + " = " + Num(g.x1[k % g.n1], 6) +
-                  ", " + Name(pl.p2) + " = " + Num(g.x2[k / g.n1], 6) + ": " + why[k];
+      g.failure = std::string("response cell ") + pl.p1.name() + " = " + Num(g.x1[k % g.n1], 6) +
+                  ", " + pl.p2.name() + " = " + Num(g.x2[k / g.n1], 6) + ": " + why[k];
   }
   return g;
 }

@@ -15,14 +15,6 @@ namespace stickslip::cli {
 
 namespace {
 
-ForcedAxis Axis(const Arguments& args, const char* key, const char* fallback) {
-  const std::string name = args.Text(key, fallback);
-  for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
-    if (name == Name(a)) return a;
-  throw UsageError("invalid value '" + name + "' for " + args.Source(key) +
-                   ": the forced chart's axes are omega, force, v or beta");
-}
-
 struct Setup {
   ForcedParams p;
   ForcedChartOptions o;
@@ -38,15 +30,19 @@ Setup Configure(const Arguments& args) {
   s.p.force = args.Number("force", 0.3);
   s.p.omega = args.Number("omega", 1);
   ForcedPlane& pl = s.o.plane;
-  pl.p1 = Axis(args, "param", "omega");
-  pl.p2 = Axis(args, "param2", "force");
+  pl.p1 = AxisFromArguments(args, "param", "omega", s.p.base.law, true);
+  pl.p2 = AxisFromArguments(args, "param2", "force", s.p.base.law, true);
   if (pl.p1 == pl.p2)
-    throw UsageError(args.Source("param2") + " = " + Name(pl.p2) + " equals --param");
-  const double range[4][2] = {{0.5, 2}, {0.05, 1}, {0, 0.5}, {0, 0.3}};  // ForcedAxis order
-  pl.from1 = args.Number("from", range[static_cast<int>(pl.p1)][0]);
-  pl.to1 = args.Number("to", range[static_cast<int>(pl.p1)][1]);
-  pl.from2 = args.Number("from2", range[static_cast<int>(pl.p2)][0]);
-  pl.to2 = args.Number("to2", range[static_cast<int>(pl.p2)][1]);
+    throw UsageError(args.Source("param2") + " = " + pl.p2.name() + " equals --param");
+  // The chart's own ranges of omega and force; the others the forced oscillator's.
+  auto range = [&](const ParameterAxis& a) {
+    if (a == Parameter::kOmega) return ParameterRange{0.5, 2};
+    return a == Parameter::kForce ? ParameterRange{0.05, 1} : DefaultRange(s.p, a);
+  };
+  pl.from1 = args.Number("from", range(pl.p1).from);
+  pl.to1 = args.Number("to", range(pl.p1).to);
+  pl.from2 = args.Number("from2", range(pl.p2).from);
+  pl.to2 = args.Number("to2", range(pl.p2).to);
   if (!(pl.from1 < pl.to1))
     throw UsageError(args.Source("to") + " = " + args.Text("to", "") + " must exceed --from");
   if (!(pl.from2 < pl.to2))
@@ -94,12 +90,11 @@ std::string Describe(const Setup& s) {
     return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]";
   };
   for (const auto& name : ParameterNames(s.p.base.law))
-    if (name != Name(pl.p1) && name != Name(pl.p2))
+    if (name != pl.p1.name() && name != pl.p2.name())
       d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
-  for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
-    if (a != pl.p1 && a != pl.p2)
-      d += std::string(" ") + Name(a) + "=" + FormatNumber(GetAxis(s.p, a));
-  return d + " " + Name(pl.p1) + "=" + range(pl.from1, pl.to1) + " " + Name(pl.p2) + "=" +
+  for (ParameterAxis a : {Parameter::kForce, Parameter::kOmega})
+    if (a != pl.p1 && a != pl.p2) d += std::string(" ") + a.name() + "=" + FormatNumber(a.Get(s.p));
+  return d + " " + pl.p1.name() + "=" + range(pl.from1, pl.to1) + " " + pl.p2.name() + "=" +
          range(pl.from2, pl.to2);
 }
 
@@ -120,8 +115,8 @@ void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::
                 c.m, c.points.size(), c.seconds, c.seed.c_str(), c.ends.Text().c_str());
   }
   for (const ForcedCodim2& p : r.codim2)
-    std::printf("  %-4s %s = %.8f  %s = %.8f  %s%s\n", Name(p.label), Name(pl.p1), p.p1,
-                Name(pl.p2), p.p2, p.description.c_str(),
+    std::printf("  %-4s %s = %.8f  %s = %.8f  %s%s\n", Name(p.label), pl.p1.name().c_str(), p.p1,
+                pl.p2.name().c_str(), p.p2, p.description.c_str(),
                 p.method == ForcedCodim2Method::kChord ? " (chord: not refined)" : "");
   std::printf("wrote %s/curves.tsv, codim2.tsv, response.tsv, forced_chart.gp%s\n", dir.c_str(),
               drawn ? (", " + figure).c_str() : "");
@@ -155,7 +150,7 @@ int RunForcedChart(const Arguments& args, const std::string& prog, const std::st
   const std::string model = Describe(s);
   Metadata meta = RunMetadata(prog, command, s.p.base, s.flow);
   for (auto& [key, value] : meta)  // the axes' base values are never used
-    if (key == Name(pl.p1) || key == Name(pl.p2)) value = "axis";
+    if (key == pl.p1.name() || key == pl.p2.name()) value = "axis";
   meta.push_back({"model", "forced oscillator, " + model});
   meta.push_back({"grid", std::to_string(s.o.n1) + " x " + std::to_string(s.o.n2) + ", " +
                               std::to_string(s.o.iterate.transient) + " transient and " +
@@ -169,7 +164,7 @@ int RunForcedChart(const Arguments& args, const std::string& prog, const std::st
   app.out().Write("curves.tsv", text(ForcedCurvesTable(r, pl, model)));
   app.out().Write("codim2.tsv", text(ForcedCodim2Table(r, pl, model)));
   app.out().Write("response.tsv", text(ResponseTable(r, pl, model)));
-  const std::string title = FigureTitle(model, {Name(pl.p1), Name(pl.p2)}) +
+  const std::string title = FigureTitle(model, {pl.p1.name(), pl.p2.name()}) +
                             (r.status == ChartStatus::kCancelled ? " (partial)" : "");
   app.out().Write("forced_chart.gp", ForcedChartScript(r, pl, title, format));
   if (!app.Finish("forced_chart.gp", {figure}, {figure})) return kExitFailed;

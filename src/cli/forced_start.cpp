@@ -69,7 +69,7 @@ Vec2 SettledState(const ForcedModel& model, const OrbitBranchOptions& o) {
   return Vec2(0, model.v());
 }
 
-OrbitBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
+OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double from, double to,
                          const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run) {
   OrbitBranchOptions c = opts;
   c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time

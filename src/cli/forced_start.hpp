@@ -48,7 +48,7 @@ struct StartOrbit {
 Vec2 SettledState(const ForcedModel& model, const OrbitBranchOptions& o);
 
 // ContinueForced from the orbit o (its m and point), cancelled by run.
-OrbitBranch ContinueFrom(const ForcedParams& base, ForcedAxis axis, double from, double to,
+OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double from, double to,
                          const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run);
 
 // The attractor the state (x, xdot) at phase 0 settles on, if periodic with

@@ -5,6 +5,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 
 namespace stickslip::cli {
 
@@ -156,6 +157,20 @@ FlowOptions FlowOptionsFromArguments(const Arguments& args, const FlowOptions& d
   const std::string err = f.ValidationError();
   if (!err.empty()) throw UsageError("invalid solver options: " + WithOrigin(args, err));
   return f;
+}
+
+ParameterAxis AxisFromArguments(const Arguments& args, const char* key, const std::string& fallback,
+                                LawKind law, bool forced) {
+  const std::string name = args.Text(key, fallback);
+  const std::vector<ParameterAxis> axes = ParameterAxes(law, forced);
+  std::string list;
+  for (size_t i = 0; i < axes.size(); ++i) {
+    if (axes[i].name() == name) return axes[i];
+    list += (i == 0 ? "" : i + 1 == axes.size() ? " or " : ", ") + axes[i].name();
+  }
+  throw UsageError("invalid value '" + name + "' for " + args.Source(key) + ": the " +
+                   (forced ? "forced oscillator's" : "oscillator's") + " parameters under the " +
+                   Name(law) + " law are " + list);
 }
 
 std::string DescribeModel(const Params& p) { return DescribeModel(p, "", 0, 0); }

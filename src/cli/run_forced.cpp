@@ -22,7 +22,7 @@ namespace {
 
 struct BranchSetup {
   ForcedParams p;
-  ForcedAxis axis = ForcedAxis::kOmega;
+  ParameterAxis axis = Parameter::kOmega;
   double from = 0, to = 0;
   OrbitBranchOptions opts = OrbitBranchOptions(ForcedModel::FlowDefaults());
   int m = 1;                             // the period multiple (a restart's)
@@ -32,14 +32,6 @@ struct BranchSetup {
   double lo = 0, hi = 0;                 // --switch: the bounds the 2m branch runs to
   StartChoice choice;                    // --all, --m, --point without --restart
 };
-
-ForcedAxis AxisFromName(const Arguments& args, ForcedAxis fallback) {
-  const std::string name = args.Text("param", Name(fallback));
-  for (ForcedAxis a : {ForcedAxis::kOmega, ForcedAxis::kForce, ForcedAxis::kV, ForcedAxis::kBeta})
-    if (name == Name(a)) return a;
-  throw UsageError("invalid value '" + name + "' for " + args.Source("param") +
-                   ": the forced oscillator continues omega, force, v or beta");
-}
 
 void Check(const Arguments& args, const ForcedParams& p, const std::string& what) {
   const std::string err = ValidationError(p);
@@ -52,22 +44,22 @@ void Check(const Arguments& args, const ForcedParams& p, const std::string& what
 // --switch at a PD point (AUTO-07p's ISW = -1): the 2m branch starts at the
 // point and runs to whichever of --from, --to (default: the axis's range) it
 // opens toward.
-void ConfigureSwitch(const Arguments& args, const double range[2], BranchSetup& s) {
+void ConfigureSwitch(const Arguments& args, const ParameterRange& range, BranchSetup& s) {
   if (!s.restart || s.restart->type != "PD")
     throw UsageError(
         args.Source("switch") +
         " needs --restart DIR --point PDn (a period "
         "doubling of a forced run)" +
         (s.restart ? ", not " + args.Text("point") + " (" + s.restart->type + ")" : std::string()));
-  if (args.Given(Name(s.axis)) || s.axis != s.restart->forced_param)
+  if (args.Given(s.axis.name()) || s.axis != s.restart->param)
     throw UsageError(args.Source("switch") + " continues the doubled branch in " +
                      s.restart->ParamName() + ", the PD point's parameter");
   s.doubled = true;
-  const double p = GetAxis(s.p, s.axis);
+  const double p = s.axis.Get(s.p);
   // By default the range of the run the PD point came from (AUTO's RL0, RL1).
   const bool recorded = std::isfinite(s.restart->run_from) && std::isfinite(s.restart->run_to);
-  s.lo = args.Number("from", recorded ? s.restart->run_from : range[0]);
-  s.hi = args.Number("to", recorded ? s.restart->run_to : range[1]);
+  s.lo = args.Number("from", recorded ? s.restart->run_from : range.from);
+  s.hi = args.Number("to", recorded ? s.restart->run_to : range.to);
   if (s.lo > s.hi) std::swap(s.lo, s.hi);
   if (!(s.lo < p && p < s.hi))
     throw UsageError(args.Source("switch") + ": the PD point's " + s.restart->ParamName() + " = " +
@@ -90,26 +82,26 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   s.p.base = UncheckedModelFromArguments(args, restart ? restart->params : Params());
   s.p.force = args.Number("force", restart ? restart->force : 0);
   s.p.omega = args.Number("omega", restart ? restart->omega : 1);
-  s.axis = AxisFromName(args, restart ? restart->forced_param : ForcedAxis::kOmega);
-  const double defaults[4][2] = {{0.75, 2.5}, {0.1, 2}, {0, 0.5}, {0, 0.3}};
-  const int k = static_cast<int>(s.axis);
-  double from = defaults[k][0], to = defaults[k][1];
+  s.axis = AxisFromArguments(args, "param", restart ? restart->param.name() : "omega", s.p.base.law,
+                             true);
+  const ParameterRange range = DefaultRange(s.p, s.axis);
+  double from = range.from, to = range.to;
   if (restart) {  // from the point to the far end of the default range (RangeFromPoint)
-    const double x = GetAxis(s.p, s.axis);
+    const double x = s.axis.Get(s.p);
     to = std::abs(to - x) >= std::abs(from - x) ? to : from;
     from = x;
   }
   s.from = args.Number("from", from);
   s.to = args.Number("to", to);
-  if (args.Flag("switch")) ConfigureSwitch(args, defaults[k], s);
+  if (args.Flag("switch")) ConfigureSwitch(args, range, s);
   if (s.from == s.to)
     throw UsageError(args.Source("to") + " = " + FormatNumber(s.to) + " equals the start");
   ForcedParams at = s.p;
-  if (!args.Given(Name(s.axis))) SetAxis(at, s.axis, s.from);
+  if (!args.Given(s.axis.name())) s.axis.Set(at, s.from);
   Check(args, at, "");
-  SetAxis(at, s.axis, s.from);
+  s.axis.Set(at, s.from);
   Check(args, at, " at --from");
-  SetAxis(at, s.axis, s.to);
+  s.axis.Set(at, s.to);
   Check(args, at, " at --to");
   s.flow = FlowOptionsFromArguments(args, restart ? restart->flow : FlowOptions());  // validated
   // The forced flow's own defaults (1e-12): at the belt's rtol 1e-11 the
@@ -134,7 +126,7 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
 // fails, the first stable orbit of the start scan (forced_start.hpp).
 OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
-  SetAxis(p, s.axis, from);
+  s.axis.Set(p, from);
   const ForcedModel model(p);
   if (s.restart && from == s.from) {  // the point's stroboscopic state
     OrbitBranchOptions opts = s.opts;
@@ -168,12 +160,12 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
 // printed first (UsageError if --point names none).
 std::vector<ForcedPiece> TraceChosen(const BranchSetup& s, const StartChoice& c, RunControl& run) {
   ForcedParams p = s.p;
-  SetAxis(p, s.axis, s.from);
+  s.axis.Set(p, s.from);
   const ForcedModel model(p);
   const Vec2 z = SettledState(model, s.opts);
   const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
   const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, c.m, run);
-  const std::string where = std::string(Name(s.axis)) + " = " + FormatNumber(s.from);
+  const std::string where = std::string(s.axis.name()) + " = " + FormatNumber(s.from);
   PrintStartOrbits(std::cout, list, where);
   const std::vector<StartOrbit> chosen = ChooseStart(list, c, where);
   std::vector<ForcedPiece> pieces;
@@ -189,7 +181,7 @@ std::string Describe(const BranchSetup& s) {
   std::string d = "law=" + std::string(Name(s.p.base.law));
   for (const auto& name : ParameterNames(s.p.base.law)) {
     if (name == "beta" || name == "v") {
-      const ForcedAxis a = name == "v" ? ForcedAxis::kV : ForcedAxis::kBeta;
+      const ParameterAxis a = name == "v" ? Parameter::kV : Parameter::kBeta;
       if (a == s.axis) {
         d += " " + name + "=[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]";
         continue;
@@ -197,16 +189,16 @@ std::string Describe(const BranchSetup& s) {
     }
     d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
   }
-  for (ForcedAxis a : {ForcedAxis::kForce, ForcedAxis::kOmega})
-    d += std::string(" ") + Name(a) + "=" +
+  for (ParameterAxis a : {Parameter::kForce, Parameter::kOmega})
+    d += std::string(" ") + a.name() + "=" +
          (a == s.axis ? "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]"
-                      : FormatNumber(GetAxis(s.p, a)));
+                      : FormatNumber(a.Get(s.p)));
   return d;
 }
 
 // A forcing value for the metadata; the continued one as its range.
-std::string Value(const BranchSetup& s, ForcedAxis a) {
-  if (a != s.axis) return FormatNumber(GetAxis(s.p, a));
+std::string Value(const BranchSetup& s, ParameterAxis a) {
+  if (a != s.axis) return FormatNumber(a.Get(s.p));
   return "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "] (continued)";
 }
 
@@ -226,7 +218,7 @@ void PrintSummary(const std::string& prog, const BranchSetup& s, const std::stri
                   const std::vector<ForcedPiece>& pieces, LogDetail detail) {
   size_t rows = 0;
   for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
-  std::cout << prog << ": forced oscillator, " << Name(s.axis) << " from " << FormatNumber(s.from)
+  std::cout << prog << ": forced oscillator, " << s.axis.name() << " from " << FormatNumber(s.from)
             << " to " << FormatNumber(s.to) << "; " << model << "\n"
             << rows << " rows; " << status << "\n";
   if (!gap.empty()) std::cout << "gap: " << gap << "\n";
@@ -239,7 +231,7 @@ bool NoRows(const std::string& prog, const BranchSetup& s, const std::vector<For
     if (!piece.branch.rows.empty()) return false;
   std::cerr << prog << ": error: no periodic orbit"
             << (s.choice.m > 0 ? " of period m = " + std::to_string(s.choice.m) : "") << " at "
-            << Name(s.axis) << " = " << FormatNumber(s.from);
+            << s.axis.name() << " = " << FormatNumber(s.from);
   if (pieces.empty())
     std::cerr << " in the start list";
   else
@@ -305,12 +297,12 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   }
   const std::string model = Describe(s);
   // v, beta: "continued", not a value
-  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow, Name(s.axis));
+  Metadata meta = RunMetadata(prog, command, s.p.base, s.flow, s.axis.name());
   meta.insert(meta.end(),
               {{"model", "forced oscillator, " + model},
-               {"force", Value(s, ForcedAxis::kForce)},
-               {"omega", Value(s, ForcedAxis::kOmega)},
-               {"continued", Name(s.axis)},
+               {"force", Value(s, Parameter::kForce)},
+               {"omega", Value(s, Parameter::kOmega)},
+               {"continued", s.axis.name()},
                {"from", FormatNumber(s.from)},
                {"to", FormatNumber(s.to)},
                {"transient", restart ? "none: from the restart point's state"

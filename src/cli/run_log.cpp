@@ -103,8 +103,8 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
 }
 
 void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, const ForcedParams& p,
-                    ForcedAxis axis, LogDetail detail) {
-  const std::string param = Name(axis);
+                    ParameterAxis axis, LogDetail detail) {
+  const std::string param = axis.name();
   if (detail == LogDetail::kEveryPoint) {
     os << "points:\n  " << Pad("pt", 6) << Pad("branch", 8) << Pad("kind", 12) << Pad(param, 16)
        << Pad("m", 4) << Pad("period", 11) << Pad("x_min", 11) << Pad("x_max", 11)
@@ -120,7 +120,7 @@ void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, co
       if (r.label != SpecialKind::kNone)
         lab = std::string(Name(r.label)) + std::to_string(++count[r.label]);
       ForcedParams at = p;
-      SetAxis(at, axis, r.p);
+      axis.Set(at, r.p);
       const int m = PeriodMultiple(piece.branch);
       const double period = m * 2 * M_PI / at.omega;
       const Extrema e = RowExtrema(r);

@@ -26,6 +26,6 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
 
 // The forced branch (its pieces in branch.tsv's order, pt counted over them).
 void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, const ForcedParams& p,
-                    ForcedAxis axis, LogDetail detail);
+                    ParameterAxis axis, LogDetail detail);
 
 }  // namespace stickslip::cli

@@ -39,6 +39,7 @@
 
 #include "stickslip/errors.hpp"
 #include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip::cli {
@@ -144,6 +145,11 @@ Params ModelFromArguments(const Arguments& args, const std::string& continued, d
 // defaults that depend on it, such as a parameter's range (DefaultRange).
 // Throws UsageError on unreadable or inconsistent options.
 Params UncheckedModelFromArguments(const Arguments& args, const Params& defaults = Params());
+// The parameter named by option `key` (`fallback` if not given): one of
+// ParameterAxes(law, forced), the law's (with forced, force and omega too).
+// Throws UsageError naming the option and the choices otherwise.
+ParameterAxis AxisFromArguments(const Arguments& args, const char* key, const std::string& fallback,
+                                LawKind law, bool forced);
 // The solver options from SolverOptions(), validated (throws UsageError);
 // what is not given keeps its value in `defaults`.
 FlowOptions FlowOptionsFromArguments(const Arguments& args,

@@ -14,9 +14,7 @@ namespace stickslip {
 const char* SpecialLabel(SpecialKind k) { return Name(k); }
 
 std::string ContinuationOptions::ValidationError(const Params& base) const {
-  const auto names = ParameterNames(base.law);
-  if (std::find(names.begin(), names.end(), param.name()) == names.end())
-    return "parameter '" + param.name() + "' does not apply to the " + Name(base.law) + " law";
+  if (std::string err = AxisError(param, base.law); !err.empty()) return err;
   if (!std::isfinite(from)) return "from = " + Num(from) + " is not a finite number";
   if (!std::isfinite(to)) return "to = " + Num(to) + " is not a finite number";
   if (from == to) return "from = to = " + Num(from) + ": the range is empty";

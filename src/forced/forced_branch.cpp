@@ -24,10 +24,11 @@ std::string OptionsError(int m, const OrbitBranchOptions& o) {
 
 // ContinueForced's checks: the model at from, the range (to finite and !=
 // from), m and the options, then a start guess that is not finite.
-std::string StartError(const ForcedParams& base, ForcedAxis axis, double from, double to,
+std::string StartError(const ForcedParams& base, ParameterAxis axis, double from, double to,
                        double x_guess, double xdot_guess, int m, const OrbitBranchOptions& o) {
+  if (std::string e = AxisError(axis, base.base.law, true); !e.empty()) return e;
   ForcedParams at_from = base;
-  SetAxis(at_from, axis, from);
+  axis.Set(at_from, from);
   if (std::string e = ValidationError(at_from); !e.empty()) return e;
   if (!(to != from) || !std::isfinite(to)) return "to must be finite and != from";
   if (std::string e = OptionsError(m, o); !e.empty()) return e;
@@ -43,23 +44,25 @@ FlowPoint Strobe(double x, double xdot) {
 
 }  // namespace
 
-OrbitBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
+OrbitBranch ContinueForced(const ForcedParams& base, ParameterAxis axis, double from, double to,
                            double x_guess, double xdot_guess, int m,
                            const OrbitBranchOptions& options) {
   const std::string e = StartError(base, axis, from, to, x_guess, xdot_guess, m, options);
   if (!e.empty()) throw InvalidArgument(e);
   ForcedParams at = base;
-  SetAxis(at, axis, from);
+  axis.Set(at, from);
   const ForcedModel model(at);
   const FlowPoint guess = Strobe(x_guess, xdot_guess);
-  return ContinueOrbits(model, model.ParameterIndex(Name(axis)), guess,
+  return ContinueOrbits(model, axis.index(), guess,
                         PoincareSection::Stroboscopic(model, guess.z, m), to, options);
 }
 
-OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x0, double xdot0,
+OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ParameterAxis axis, double x0, double xdot0,
                             double lo, double hi, int m, const OrbitBranchOptions& options) {
   if (const std::string e = ValidationError(at_pd); !e.empty()) throw InvalidArgument(e);
-  const double p_pd = GetAxis(at_pd, axis);
+  if (const std::string e = AxisError(axis, at_pd.base.law, true); !e.empty())
+    throw InvalidArgument(e);
+  const double p_pd = axis.Get(at_pd);
   if (!(lo < p_pd && p_pd < hi) || !std::isfinite(lo) || !std::isfinite(hi))
     throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " + Num(p_pd, 12) +
                           " < hi");
@@ -69,8 +72,8 @@ OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x
     throw InvalidArgument("x0 = " + Num(x0) + ", xdot0 = " + Num(xdot0) + ": both must be finite");
   const ForcedModel model(at_pd);
   const FlowPoint pd = Strobe(x0, xdot0);
-  return ContinueDoubled(model, model.ParameterIndex(Name(axis)), pd,
-                         PoincareSection::Stroboscopic(model, pd.z, m), lo, hi, options);
+  return ContinueDoubled(model, axis.index(), pd, PoincareSection::Stroboscopic(model, pd.z, m), lo,
+                         hi, options);
 }
 
 }  // namespace stickslip

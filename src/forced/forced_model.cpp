@@ -140,28 +140,18 @@ ContactSensitivity ForcedModel::ContactParameterDerivative(const ModeSet&, int, 
 
 int ForcedModel::parameters() const { return kOmegaIndex + 1; }
 
-std::string ForcedModel::ParameterName(int j) const {
-  if (j == kForceIndex) return "force";
-  if (j == kOmegaIndex) return "omega";
-  return Name(static_cast<Parameter>(j));
-}
+std::string ForcedModel::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
 
 double ForcedModel::ParameterValue(int j) const {
-  if (j == kForceIndex) return p_.force;
-  if (j == kOmegaIndex) return p_.omega;
-  return ParameterAxis(static_cast<Parameter>(j)).Get(p_.base);
+  return ParameterAxis(static_cast<Parameter>(j)).Get(p_);
 }
 
 void ForcedModel::SetParameterValue(int j, double value) {
-  if (j == kForceIndex) {
-    p_.force = value;
-  } else if (j == kOmegaIndex) {
-    p_.omega = value;
-  } else {
-    ParameterAxis(static_cast<Parameter>(j)).Set(p_.base, value);
-    friction_ = Friction(p_.base);
-    two_beta_ = 2 * p_.base.beta;
-  }
+  const ParameterAxis axis(static_cast<Parameter>(j));
+  axis.Set(p_, value);
+  if (axis.forcing()) return;
+  friction_ = Friction(p_.base);
+  two_beta_ = 2 * p_.base.beta;
 }
 
 }  // namespace stickslip

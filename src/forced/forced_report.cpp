@@ -10,16 +10,16 @@ namespace stickslip {
 
 namespace {
 
-std::vector<std::string> Columns(ForcedAxis axis) {
-  return {"branch",   Name(axis), "m",        "sticks",   "crossings", "kind",  "x_min",
-          "x_max",    "xdot_min", "xdot_max", "period",   "x0",        "xdot0", "mult1_re",
-          "mult1_im", "mult2_re", "mult2_im", "mult_max", "stable",    "pt"};
+std::vector<std::string> Columns(ParameterAxis axis) {
+  return {"branch",   axis.name(), "m",        "sticks",   "crossings", "kind",  "x_min",
+          "x_max",    "xdot_min",  "xdot_max", "period",   "x0",        "xdot0", "mult1_re",
+          "mult1_im", "mult2_re",  "mult2_im", "mult_max", "stable",    "pt"};
 }
 
 std::vector<TsvTable::Cell> Cells(const OrbitRow& r, const ForcedPiece& piece,
-                                  const ForcedParams& p, ForcedAxis axis) {
+                                  const ForcedParams& p, ParameterAxis axis) {
   ForcedParams at = p;
-  SetAxis(at, axis, r.p);
+  axis.Set(at, r.p);
   const int m = PeriodMultiple(piece.branch);
   const double period = m * 2 * M_PI / at.omega;
   const double mult_max = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
@@ -39,7 +39,7 @@ std::vector<TsvTable::Cell> Cells(const OrbitRow& r, const ForcedPiece& piece,
                             mult_max};
   for (double x : numbers)
     if (!std::isfinite(x))
-      throw InvalidArgument("forced branch row at " + std::string(Name(axis)) + " = " +
+      throw InvalidArgument("forced branch row at " + std::string(axis.name()) + " = " +
                             FormatNumber(r.p) + " has a non-finite value");
   return {piece.index,     r.p,         m,
           r.sticks,        r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
@@ -68,7 +68,7 @@ void ForEachRow(const std::vector<ForcedPiece>& pieces, F f) {
 
 }  // namespace
 
-TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
                            const ForcedParams& p) {
   auto cols = Columns(axis);
   TsvTable t(cols);
@@ -80,7 +80,7 @@ TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis ax
   return t;
 }
 
-TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
                             const ForcedParams& p) {
   auto cols = Columns(axis);
   cols.insert(cols.begin(), "label");
@@ -97,23 +97,23 @@ TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis a
   return t;
 }
 
-bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis) {
-  return axis == ForcedAxis::kOmega && p.base.law == LawKind::kCoulomb &&
+bool DenHartogApplies(const ForcedParams& p, ParameterAxis axis) {
+  return axis == Parameter::kOmega && p.base.law == LawKind::kCoulomb &&
          p.base.mu_s == p.base.mu_k && p.base.v == 0 && p.base.beta == 0;
 }
 
 // Den Hartog (1931): X = sqrt(V^2 - (mu U)^2), V = A / (1 - W^2),
 // U = sin(pi / W) / (W (1 + cos(pi / W))), real where the motion has no stop.
-std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
+std::string ResonanceScript(const ForcedParams& p, ParameterAxis axis, int pieces,
                             const std::string& title, const std::vector<double>& gap, int specials,
                             FigureFormat format) {
-  const std::string ax = Name(axis);
+  const std::string ax = axis.name();
   std::ostringstream os;
   os << "# The resonance figure of ss_continue (forced oscillator): x_max against " << ax << ".\n"
      << FigurePreamble(format, 1000, 720) << "set output '" << FigureFile("resonance", format)
      << "'\nset title " << GnuplotQuoted(FigureTitle(title, {ax})) << "\nset xlabel "
      << GnuplotQuoted(ParameterAxisLabel(axis) +
-                      (axis == ForcedAxis::kOmega ? " (over the natural one)" : ""))
+                      (axis == Parameter::kOmega ? " (over the natural one)" : ""))
      << "\nset ylabel 'largest displacement x_{max} (dimensionless)'\nset yrange [0:*]\n"
      << "set offsets 0, 0, graph 0.1, 0  # room above the top point for its label\n"
      << "set autoscale xfix\n"

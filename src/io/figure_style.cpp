@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced_axis.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 
@@ -210,24 +209,12 @@ std::string ParameterAxisLabel(const ParameterAxis& param) {
       {Parameter::kVS, "Stribeck speed v_s"},
       {Parameter::kDelta, "friction decay rate δ"},
       {Parameter::kK5, "quintic coefficient k_5"},
+      {Parameter::kOmega, "forcing frequency Ω"},
+      {Parameter::kForce, "force amplitude A"},
   };
   for (const auto& w : kWords)
     if (w.value == param.id()) return w.name;
   return EnhancedText(param.name());
-}
-
-std::string ParameterAxisLabel(ForcedAxis param) {
-  switch (param) {
-    case ForcedAxis::kOmega:
-      return "forcing frequency Ω";
-    case ForcedAxis::kForce:
-      return "force amplitude A";
-    case ForcedAxis::kV:
-      return ParameterAxisLabel(Parameter::kV);
-    case ForcedAxis::kBeta:
-      return ParameterAxisLabel(Parameter::kBeta);
-  }
-  return Name(param);
 }
 
 }  // namespace stickslip

@@ -78,7 +78,7 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g) {
 
 TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
                            const std::string& model) {
-  TsvTable t({Name(pl.p1), Name(pl.p2), "curve", "id", "m", "phase", "x0", "xdot0", "sticks",
+  TsvTable t({pl.p1.name(), pl.p2.name(), "curve", "id", "m", "phase", "x0", "xdot0", "sticks",
               "crossings", "x_min", "x_max", "mult1_re", "mult1_im", "mult2_re", "mult2_im",
               "flag"});
   Header(t, r, model);
@@ -102,7 +102,7 @@ TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
 
 TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
                            const std::string& model) {
-  TsvTable t({"label", Name(pl.p1), Name(pl.p2), "curve", "on", "description", "located"});
+  TsvTable t({"label", pl.p1.name(), pl.p2.name(), "curve", "on", "description", "located"});
   Header(t, r, model);
   t.AddComment(
       "located: refined (the test function's root on the corrected curve), chord (linear "
@@ -118,10 +118,10 @@ TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl,
   const ResponseGrid& g = r.grid;
   const ResponseClasses c = ClassifyResponses(g);
   TsvTable t(
-      {Name(pl.p1), Name(pl.p2), "class", "response", "m", "sticks", "lyapunov", "lyapunov_err"});
+      {pl.p1.name(), pl.p2.name(), "class", "response", "m", "sticks", "lyapunov", "lyapunov_err"});
   Header(t, r, model);
   t.AddComment("grid " + std::to_string(g.n1) + " x " + std::to_string(g.n2) +
-               " cell centres, each row swept along " + Name(pl.p1) +
+               " cell centres, each row swept along " + pl.p1.name() +
                " from the previous cell's end state; " + std::to_string(g.failed) + " failed");
   for (size_t i = 0; i < c.names.size(); ++i)
     t.AddComment("class " + std::to_string(i) + ": " + c.names[i]);

@@ -1,5 +1,6 @@
 #include "stickslip/io/restart.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <vector>
@@ -35,10 +36,14 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
   const std::string continued = t.Meta("continued");
   const auto model = t.meta.find("model");  // run_forced.cpp: "forced oscillator, ..."
   lp->forced = model != t.meta.end() && model->second.rfind("forced oscillator", 0) == 0;
-  if (lp->forced ? !FromName(continued, &lp->forced_param) : !IsParameterName(continued))
+  const std::vector<ParameterAxis> axes = ParameterAxes(lp->params.law, lp->forced);
+  const auto axis = std::find_if(axes.begin(), axes.end(),
+                                 [&](const ParameterAxis& a) { return a.name() == continued; });
+  if (axis == axes.end())
     throw RestartError(Part::kRun, "'" + t.path + "': continued '" + continued + "' is no " +
-                                       (lp->forced ? "axis of a forced run" : "parameter"));
-  if (!lp->forced) lp->param = ParameterAxis(continued);
+                                       (lp->forced ? "parameter of a forced run" : "parameter") +
+                                       " of the " + Name(lp->params.law) + " law");
+  lp->param = *axis;
   for (const std::string& name : ParameterNames(lp->params.law))
     if (name != continued) SetParameter(lp->params, name, t.Number(t.Meta(name), name));
   if (lp->forced && continued != "force") lp->force = t.Number(t.Meta("force"), "force");
@@ -61,7 +66,7 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   if (lp->forced) {  // the forcing or a belt parameter of the forced model
     ForcedParams fp;
     fp.base = lp->params, fp.force = lp->force, fp.omega = lp->omega;
-    SetAxis(fp, lp->forced_param, lp->p);
+    lp->param.Set(fp, lp->p);
     lp->params = fp.base, lp->force = fp.force, lp->omega = fp.omega;
   } else {
     lp->param.Set(lp->params, lp->p);

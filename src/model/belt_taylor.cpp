@@ -230,7 +230,7 @@ void BeltTaylorField::ResolveParameter() {
     parameter_.reset();
     return;
   }
-  if (j < 0 || j >= static_cast<int>(NameCount<Parameter>()))
+  if (j < 0 || j >= kBeltParameters)
     throw InvalidArgument("parameter column: no belt parameter " + std::to_string(j));
   const ParameterAxis axis(static_cast<Parameter>(j));
   if (!ParameterColumnSupported(q_.law, axis))

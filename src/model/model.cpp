@@ -49,7 +49,7 @@ bool Model::SupportsParameterColumn(int j) const {
          SupportsParameterColumn(ParameterAxis(static_cast<Parameter>(j)));
 }
 
-int Model::parameters() const { return static_cast<int>(NameCount<Parameter>()); }
+int Model::parameters() const { return kBeltParameters; }
 
 std::string Model::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
 

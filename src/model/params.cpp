@@ -44,20 +44,25 @@ namespace {
 constexpr double Params::*kMembers[] = {&Params::beta, &Params::v,     &Params::mu_s,
                                         &Params::mu_m, &Params::v_m,   &Params::mu_k,
                                         &Params::v_s,  &Params::delta, &Params::k5};
-static_assert(std::size(kMembers) == NameCount<Parameter>());
+static_assert(std::size(kMembers) == kBeltParameters);
 }  // namespace
 
-double Params::*ParameterMember(Parameter p) { return kMembers[static_cast<int>(p)]; }
+double Params::*ParameterMember(Parameter p) {
+  if (IsForcing(p))
+    throw InvalidArgument(std::string(Name(p)) +
+                          " is a parameter of the forcing: the belt oscillator has none");
+  return kMembers[static_cast<int>(p)];
+}
 
 std::vector<std::string> AllParameterNames() {
   std::vector<std::string> names;
-  for (const auto& e : EnumNames<Parameter>::kTable) names.push_back(e.name);
+  for (int i = 0; i < kBeltParameters; ++i) names.push_back(EnumNames<Parameter>::kTable[i].name);
   return names;
 }
 
 std::string ParameterNameList() {
   std::string list;
-  const size_t n = NameCount<Parameter>();
+  const size_t n = kBeltParameters;
   for (size_t i = 0; i < n; ++i)
     list += std::string(i == 0       ? ""
                         : i + 1 == n ? " or "
@@ -68,14 +73,14 @@ std::string ParameterNameList() {
 
 double Params::*ParameterMember(const std::string& name) {
   Parameter p;
-  if (FromName(name, &p)) return ParameterMember(p);
+  if (FromName(name, &p) && !IsForcing(p)) return ParameterMember(p);
   throw InvalidArgument("unknown parameter '" + name + "' (expected one of " + ParameterNameList() +
                         ")");
 }
 
 bool IsParameterName(const std::string& name) {
   Parameter p;
-  return FromName(name, &p);
+  return FromName(name, &p) && !IsForcing(p);
 }
 
 double GetParameter(const Params& p, const std::string& name) { return p.*ParameterMember(name); }
@@ -115,16 +120,52 @@ ParameterRange DefaultRange(const Params& base, const ParameterAxis& axis) {
   }
 }
 
+ParameterRange DefaultRange(const ForcedParams& base, const ParameterAxis& axis) {
+  switch (axis.id()) {
+    case Parameter::kOmega:
+      return {0.75, 2.5};
+    case Parameter::kForce:
+      return {0.1, 2};
+    case Parameter::kV:
+      return {0, 0.5};
+    case Parameter::kBeta:
+      return {0, 0.3};
+    default:
+      return DefaultRange(base.base, axis);
+  }
+}
+
 ParameterRange RangeFromPoint(const Params& at, const ParameterAxis& axis) {
   const ParameterRange r = DefaultRange(at, axis);
   const double x = axis.Get(at);
   return {x, std::abs(r.to - x) >= std::abs(r.from - x) ? r.to : r.from};
 }
 
-std::vector<ParameterAxis> ParameterAxes(LawKind law) {
+ParameterAxis::ParameterAxis(const std::string& name) {
+  if (!FromName(name, &id_))
+    throw InvalidArgument("unknown parameter '" + name + "' (expected one of " +
+                          ParameterNameList() + ", force or omega)");
+  member_ = IsForcing(id_) ? nullptr : ParameterMember(id_);
+}
+
+void ParameterAxis::ForcingOnBelt() const {
+  throw InvalidArgument(name() + " is a parameter of the forcing: the belt oscillator has none");
+}
+
+std::vector<ParameterAxis> ParameterAxes(LawKind law, bool forced) {
   std::vector<ParameterAxis> axes;
   for (const std::string& name : ParameterNames(law)) axes.emplace_back(name);
+  if (forced) axes.insert(axes.end(), {Parameter::kForce, Parameter::kOmega});
   return axes;
+}
+
+std::string AxisError(const ParameterAxis& axis, LawKind law, bool forced) {
+  if (forced && axis.forcing()) return "";
+  const auto names = ParameterNames(law);
+  if (std::find(names.begin(), names.end(), axis.name()) != names.end()) return "";
+  return "parameter '" + axis.name() + "' does not apply to the " +
+         (forced ? "forced oscillator" : std::string(Name(law)) + " law") +
+         (forced ? " under the " + std::string(Name(law)) + " law" : std::string());
 }
 
 namespace {

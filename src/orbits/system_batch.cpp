@@ -19,8 +19,8 @@ namespace {
 
 // A row costs a transient and a Newton solve (about 0.1 ms): small blocks
 // balance the workers, and a thread pays for its start within a block.
-constexpr std::size_t kBlockRows = 16;
-constexpr std::size_t kThreadRows = 32;
+constexpr std::size_t kSystemBlockRows = 16;
+constexpr std::size_t kSystemThreadRows = 32;
 // Newton iterations from a run that did not recur (system_batch.hpp, step 3).
 constexpr int kUnsettledNewton = 8;
 
@@ -278,9 +278,9 @@ SystemBatch StroboscopicOrbits(const System& base, const std::vector<SystemColum
     out.cancelled = true;
     return out;
   }
-  batch_detail::RowQueue queue(rows, kBlockRows);
+  batch_detail::RowQueue queue(rows, kSystemBlockRows);
   const batch_detail::RowsRun run = batch_detail::RunRows(
-      queue, o.threads, kThreadRows, o.cancelled, o.progress,
+      queue, o.threads, kSystemThreadRows, o.cancelled, o.progress,
       [&](batch_detail::RowQueue& q) { Worker(base, columns, o, q).Work(out); });
   out.threads = run.threads;
   out.error = run.error;

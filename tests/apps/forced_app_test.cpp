@@ -57,6 +57,27 @@ TEST_F(ForcedApp, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
               compared, t.rows.size(), worst);
 }
 
+// The one lens: a forced run continues any parameter of its law, here the
+// Den Hartog run in mu_k at Omega = 2 (mu_s = 0.3 held), against his closed form.
+TEST_F(ForcedApp, ContinuesAParameterOfTheLaw) {
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_continue", dir,
+                          {"--law",   "coulomb", "--mu_s", "0.3",     "--mu_k", "0.3",     "--v",
+                           "0",       "--beta",  "0",      "--force", "1",      "--omega", "2",
+                           "--param", "mu_k",    "--from", "0.3",     "--to",   "0.05"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  EXPECT_EQ(t.meta.at("continued"), "mu_k");
+  const auto mu = std::find(t.columns.begin(), t.columns.end(), "mu_k");
+  const auto x_max = std::find(t.columns.begin(), t.columns.end(), "x_max");
+  ASSERT_TRUE(mu != t.columns.end() && x_max != t.columns.end());
+  for (const auto& row : t.rows) {
+    const double m = std::stod(row[mu - t.columns.begin()]);
+    EXPECT_NEAR(std::stod(row[x_max - t.columns.begin()]), DenHartogX(m, 1, 2), 1e-9) << m;
+  }
+  EXPECT_GT(t.rows.size(), 10u);
+}
+
 TEST_F(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--force", "1", "--omega", "0"}, "omega"},
@@ -64,7 +85,8 @@ TEST_F(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
       {{"--force", "1", "--param", "omega", "--from", "-1"}, "omega"},
       {{"--force", "1", "--param", "omega", "--from", "1", "--to", "1"}, "--to"},
       {{"--omega", "2"}, "--omega"},
-      {{"--force", "1", "--param", "mu_s"}, "--param"},
+      {{"--force", "1", "--param", "mu_k"}, "--param"},  // the cubic law has none
+      {{"--force", "1", "--param", "gamma"}, "--param"},
       {{"--force", "1", "--restart", "plots", "--point", "PD1"}, "--restart"},
   };
   for (const auto& c : cases) {

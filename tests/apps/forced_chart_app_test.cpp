@@ -67,7 +67,7 @@ TEST_F(ForcedChartAppTest, BadInputExits2NamingTheOption) {
   const std::string base = "--force 0.3 --param omega ";
   const std::pair<std::string, std::string> cases[] = {
       {base + "--param2 omega", "--param2"},
-      {base + "--param2 mu_s", "mu_s"},
+      {base + "--param2 mu_k", "mu_k"},  // the cubic law has none
       {base + "--param2 force --from 2 --to 1", "--to"},
       {base + "--param2 force --grid 1", "--grid"},
       {base + "--param2 force --from2 -1", "force"},

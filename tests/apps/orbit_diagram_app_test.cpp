@@ -79,7 +79,7 @@ TEST_F(OrbitDiagramApp, TimeLimitWritesAPartialResult) {
 
 TEST_F(OrbitDiagramApp, BadInputIsExitTwoNamingTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"--param", "mu_s"}, "--param"},
+      {{"--param", "mu_k"}, "--param"},  // the cubic law has none
       {{"--n", "1"}, "--n"},
       {{"--keep", "abc"}, "--keep"},
       {{"--direction", "sideways"}, "--direction"},

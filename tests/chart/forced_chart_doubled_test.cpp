@@ -33,7 +33,7 @@ void CollectPds(double a, const OrbitBranch& b, int m, int target, OrbitBranchOp
       pds->push_back(r.p);
       continue;
     }
-    const OrbitBranch d = ContinueDoubled(Stribeck(a, r.p), ForcedAxis::kOmega, r.start.z[0],
+    const OrbitBranch d = ContinueDoubled(Stribeck(a, r.p), Parameter::kOmega, r.start.z[0],
                                           r.start.z[1], 0.5, 0.8, m, o);
     CollectPds(a, d, 2 * m, target, o, pds);
   }

@@ -31,8 +31,8 @@ double DenHartogStopForce(double mu, double w) {
   return mu * std::abs(1 - w * w) * std::sqrt(U * U + 1 / (w * w * w * w));
 }
 
-ForcedChartOptions Options(ForcedAxis a1, double from1, double to1, ForcedAxis a2, double from2,
-                           double to2) {
+ForcedChartOptions Options(ParameterAxis a1, double from1, double to1, ParameterAxis a2,
+                           double from2, double to2) {
   ForcedChartOptions o;
   o.plane.p1 = a1, o.plane.p2 = a2;
   o.plane.from1 = from1, o.plane.to1 = to1, o.plane.from2 = from2, o.plane.to2 = to2;
@@ -44,8 +44,8 @@ ForcedChartOptions Options(ForcedAxis a1, double from1, double to1, ForcedAxis a
 TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
   const double mu = 0.3;
   for (const double w : {0.7, 1.5}) {  // one curve below and one above resonance
-    const ForcedChartOptions o = Options(ForcedAxis::kOmega, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0,
-                                         ForcedAxis::kForce, 0.05, 1.5);
+    const ForcedChartOptions o = Options(Parameter::kOmega, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0,
+                                         Parameter::kForce, 0.05, 1.5);
     // The non-stop orbit a little above the boundary, then the seed there.
     const double a = DenHartogStopForce(mu, w) * 1.02;
     const ForcedModel model(Coulomb(mu, mu, 0, 0, a, w));
@@ -87,7 +87,7 @@ OrbitBranch OmegaRun(double a) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(StribeckChartParams(a, 0.8), ForcedAxis::kOmega, 0.8, 0.5, tr.end.z[0],
+  return ContinueForced(StribeckChartParams(a, 0.8), Parameter::kOmega, 0.8, 0.5, tr.end.z[0],
                         tr.end.z[1], 1, o);
 }
 
@@ -103,8 +103,7 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const OrbitBranch seed_run = OmegaRun(0.3);
   const OrbitRow* pd = First(seed_run, SpecialKind::kPeriodDoubling);
   ASSERT_NE(pd, nullptr) << Name(seed_run.status);
-  const ForcedChartOptions o =
-      Options(ForcedAxis::kOmega, 0.5, 0.8, ForcedAxis::kForce, 0.25, 0.35);
+  const ForcedChartOptions o = Options(Parameter::kOmega, 0.5, 0.8, Parameter::kForce, 0.25, 0.35);
   std::string why;
   const ForcedCurve c =
       TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, CurveKind::kPeriodDoubling,
@@ -133,7 +132,7 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
 // (m <= 4) has a stable orbit of that m and stick count there; a chaotic
 // cell has no stable orbit of m <= 4.
 TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
-  ForcedChartOptions o = Options(ForcedAxis::kOmega, 0.56, 1.0, ForcedAxis::kForce, 0.1, 0.5);
+  ForcedChartOptions o = Options(Parameter::kOmega, 0.56, 1.0, Parameter::kForce, 0.1, 0.5);
   o.flow.rtol = o.flow.atol = 1e-12;
   o.iterate.flow = o.flow;
   o.n1 = 8, o.n2 = 5;

@@ -142,7 +142,7 @@ TEST(ForcedCodim2, PureSlipGrazingCurveMatchesOneParameterRuns) {
     o.palc.ds = o.palc.ds_max = 2e-4;
     double best = NAN;
     for (const double side : {1.0, -1.0}) {
-      const OrbitBranch b = ContinueForced(q, ForcedAxis::kOmega, p.p1 + side * 2e-3,
+      const OrbitBranch b = ContinueForced(q, Parameter::kOmega, p.p1 + side * 2e-3,
                                            p.p1 - side * 2e-3, z.z[0], z.z[1], 1, o);
       for (const OrbitRow& row : b.special)
         if (row.label == SpecialKind::kGrazing &&

@@ -44,7 +44,7 @@ OrbitBranch SeedRun(double a) {
                                              200 * model.period(), {}, BeltFlow());
   OrbitBranchOptions o(BeltFlow());
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(Seed(a, 1), ForcedAxis::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1], 1, o);
+  return ContinueForced(Seed(a, 1), Parameter::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1], 1, o);
 }
 
 // The special point `label` nearest Omega = p.p1 of the one-parameter run in
@@ -59,8 +59,8 @@ bool Sliding(SpecialKind l) {
 // As Locate below, for any label `want` accepts; the fold's eigenvector (at
 // +1 if fold, else -1) sets the start's offset.
 double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(SpecialKind),
-                 SpecialKind* found = nullptr, ForcedAxis axis = ForcedAxis::kOmega) {
-  const double at = axis == ForcedAxis::kOmega ? p.p1 : p.p2;
+                 SpecialKind* found = nullptr, ParameterAxis axis = Parameter::kOmega) {
+  const double at = axis == Parameter::kOmega ? p.p1 : p.p2;
   const ForcedModel model(Seed(p.p2, p.p1));
   const double t0 = p.phase / model.omega();
   const FlowPoint z = testing_util::RunForced(model, ForcedStart(model, t0, p.x0, p.xdot0),
@@ -158,7 +158,7 @@ int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double>
       SpecialKind which = SpecialKind::kNone;
       const bool fold = label == SpecialKind::kFold;
       const double w = LocateAny(p, c.m, fold, Sliding, &which);
-      const double a = LocateAny(p, c.m, fold, Sliding, nullptr, ForcedAxis::kForce);
+      const double a = LocateAny(p, c.m, fold, Sliding, nullptr, Parameter::kForce);
       const double dw = (w - p.p1) / o.plane.width1(), da = (a - p.p2) / o.plane.width2();
       const double d = std::isnan(da)   ? std::abs(dw)
                        : std::isnan(dw) ? std::abs(da)

@@ -42,7 +42,7 @@ OrbitRow LocateNsRow(const ForcedCurvePoint& p, double a) {
   OrbitRow best;
   best.p = NAN;
   for (const double side : {1.0, -1.0}) {
-    const OrbitBranch b = ContinueForced(Scene(a, p.p1), ForcedAxis::kOmega, p.p1 + side * 2e-3,
+    const OrbitBranch b = ContinueForced(Scene(a, p.p1), Parameter::kOmega, p.p1 + side * 2e-3,
                                          p.p1 - side * 2e-3, z.z[0], z.z[1], 1, o);
     for (const OrbitRow& r : b.special)
       if (r.label == SpecialKind::kTorus && !(std::abs(best.p - p.p1) <= std::abs(r.p - p.p1)))

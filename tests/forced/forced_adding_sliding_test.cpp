@@ -125,7 +125,7 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
   ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
-  const OrbitBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
+  const OrbitBranch b = testing_util::Trace(p, Parameter::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_FALSE(b.rows.empty());
   EXPECT_EQ(b.rows.back().p, 0.5);
@@ -155,7 +155,7 @@ TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   o.max_jumps = 0;
-  const OrbitBranch b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o);
+  const OrbitBranch b = testing_util::Trace(p, Parameter::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, BranchStatus::kStepTooSmall) << b.message;
   EXPECT_NE(b.message.find("turned back after a jump, max_jumps = 0"), std::string::npos)
       << b.message;

@@ -7,6 +7,7 @@
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 
@@ -37,7 +38,7 @@ TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   for (const double from : {0.75, 2.5}) {
     const double to = from == 0.75 ? 2.5 : 0.75;
     const double V = 1 / (1 - from * from);
-    const OrbitBranch b = ContinueForced(DenHartog(), ForcedAxis::kOmega, from, to, V, 0.01, 1, o);
+    const OrbitBranch b = ContinueForced(DenHartog(), Parameter::kOmega, from, to, V, 0.01, 1, o);
     EXPECT_EQ(b.status, BranchStatus::kUnbounded) << b.message;
     EXPECT_GT(b.rows.size(), 20u);
     for (const OrbitRow& r : b.rows) {
@@ -73,7 +74,7 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.palc.ds_max = 0.05;
   const OrbitBranch b =
-      ContinueForced(p, ForcedAxis::kOmega, 0.8, 2, transient.end.z[0], transient.end.z[1], 1, o);
+      ContinueForced(p, Parameter::kOmega, 0.8, 2, transient.end.z[0], transient.end.z[1], 1, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   std::vector<OrbitRow> pds;  // the sliding points are tested in forced_sliding_test
   for (const OrbitRow& r : b.special)
@@ -104,6 +105,43 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   EXPECT_NEAR(OrbitExtrema(exit).x_max, RowExtrema(pd).x_max, 1e-11);
   std::printf("[ measured ] PD at Omega = %.15g: multiplier %.15g (strobe), %.15g (exit map)\n",
               pd.p, pd.multipliers[0].real(), exit.multipliers[0].real());
+}
+
+}  // namespace
+}  // namespace stickslip
+
+namespace stickslip {
+namespace {
+
+// The one lens (parameter_axis.hpp) takes any parameter of the forced model:
+// the Den Hartog branch in the kinetic coefficient mu_k at Omega = 2 (mu_s =
+// 0.3 held) against his closed form X(mu_k) on every non-stop row.
+TEST(OrbitBranch, ContinuesABeltParameterOfTheForcedModel) {
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
+  o.palc.ds_max = 0.01;
+  ForcedParams p = DenHartog();
+  p.omega = 2;
+  const double V = 1 / (1 - 4.0);
+  const OrbitBranch b = ContinueForced(p, Parameter::kMuK, 0.3, 0.05, V, 0.01, 1, o);
+  EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
+  int compared = 0;
+  for (const OrbitRow& r : b.rows) {
+    if (r.sticks > 0) continue;
+    ++compared;
+    EXPECT_NEAR(RowExtrema(r).x_max, DenHartogX(r.p, 1, 2), 1e-9) << "mu_k = " << r.p;
+  }
+  EXPECT_GT(compared, 10);
+  EXPECT_EQ(b.rows.back().p, 0.05);
+  std::printf("[ measured ] mu_k 0.3 -> 0.05: %zu rows, %d non-stop, %d evaluations\n",
+              b.rows.size(), compared, b.evaluations);
+  // A parameter the law has not is refused, naming it.
+  try {
+    ContinueForced(p, Parameter::kMuM, 0.25, 0.2, V, 0.01, 1, o);
+    ADD_FAILURE() << "mu_m accepted under the coulomb law";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("'mu_m' does not apply"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

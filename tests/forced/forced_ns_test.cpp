@@ -65,7 +65,7 @@ double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
 TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
-  const OrbitBranch b = testing_util::Trace(Scene(0.6), ForcedAxis::kV, 0.6, 0.3, o);
+  const OrbitBranch b = testing_util::Trace(Scene(0.6), Parameter::kV, 0.6, 0.3, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   ASSERT_EQ(b.special.size(), 1u);
   const OrbitRow& ns = b.special[0];

@@ -94,9 +94,9 @@ OrbitBranch AppBranch(const Study& s, double from, double to) {
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   o.max_amplitude = s.max_amplitude;
   ForcedParams at = s.p;
-  SetAxis(at, ForcedAxis::kOmega, from);
+  ParameterAxis(Parameter::kOmega).Set(at, from);
   const Vec2 z = cli::SettledState(ForcedModel(at), o);
-  return ContinueForced(s.p, ForcedAxis::kOmega, from, to, z[0], z[1], 1, o);
+  return ContinueForced(s.p, Parameter::kOmega, from, to, z[0], z[1], 1, o);
 }
 
 template <class Piece>

@@ -150,7 +150,7 @@ TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   OrbitBranch b;
-  ASSERT_NO_THROW(b = testing_util::Trace(p, ForcedAxis::kV, 0, 0.5, o));
+  ASSERT_NO_THROW(b = testing_util::Trace(p, Parameter::kV, 0, 0.5, o));
   ASSERT_FALSE(b.rows.empty()) << b.message;
   EXPECT_EQ(b.rows.front().p, 0);
   EXPECT_NEAR(RowExtrema(b.rows.front()).x_min, -RowExtrema(b.rows.front()).x_max, 1e-10);

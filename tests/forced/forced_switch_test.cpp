@@ -42,7 +42,7 @@ OrbitRow FirstPeriodDoubling() {
   const ForcedModel m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
   const OrbitBranch b =
-      ContinueForced(p, ForcedAxis::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], 1, Options());
+      ContinueForced(p, Parameter::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], 1, Options());
   for (const OrbitRow& r : b.special)
     if (r.label == SpecialKind::kPeriodDoubling) return r;
   ADD_FAILURE() << "no PD on the m = 1 branch: " << Name(b.status) << " " << b.message;
@@ -52,7 +52,7 @@ OrbitRow FirstPeriodDoubling() {
 TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   const OrbitRow pd = FirstPeriodDoubling();
   ASSERT_EQ(pd.label, SpecialKind::kPeriodDoubling);
-  const OrbitBranch d = ContinueDoubled(StribeckScene(pd.p), ForcedAxis::kOmega, pd.start.z[0],
+  const OrbitBranch d = ContinueDoubled(StribeckScene(pd.p), Parameter::kOmega, pd.start.z[0],
                                         pd.start.z[1], pd.p - 0.006, pd.p + 0.006, 1, Options());
   ASSERT_GE(d.rows.size(), 4u) << Name(d.status) << " " << d.message;
   EXPECT_EQ(d.status, BranchStatus::kReachedEnd) << d.message;
@@ -127,12 +127,12 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   const PeriodicOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
   ASSERT_TRUE(orbit.ok());
   const OrbitBranch d =
-      ContinueDoubled(p, ForcedAxis::kOmega, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, 1, o);
+      ContinueDoubled(p, Parameter::kOmega, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, 1, o);
   EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());
   EXPECT_EQ(PeriodMultiple(d), 2);  // the section it would have had, also on failure
-  EXPECT_THROW(ContinueDoubled(p, ForcedAxis::kOmega, 0, 0, 0.8, 0.9, 1, o), InvalidArgument);
+  EXPECT_THROW(ContinueDoubled(p, Parameter::kOmega, 0, 0, 0.8, 0.9, 1, o), InvalidArgument);
 }
 
 }  // namespace

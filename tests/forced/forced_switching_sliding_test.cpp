@@ -170,7 +170,7 @@ TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
   const FlowRun tr =
       testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0), 200 * m0.period(), {}, o.shooting.flow);
   const OrbitBranch b =
-      ContinueForced(kFloor, ForcedAxis::kOmega, 0.3, 0.75, tr.end.z[0], tr.end.z[1], 1, o);
+      ContinueForced(kFloor, Parameter::kOmega, 0.3, 0.75, tr.end.z[0], tr.end.z[1], 1, o);
   ASSERT_FALSE(b.rows.empty()) << b.message;
   int cr_near_omega1 = 0;
   for (const OrbitRow& r : b.special) {

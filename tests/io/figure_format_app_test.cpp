@@ -70,8 +70,8 @@ TEST(FigureStyle, FormatNamesAndTitles) {
   // The forced oscillator's parameters as the issue writes them: A cos(Ω t).
   EXPECT_EQ(FigureTitle("law=coulomb beta=0 force=1 omega=[0.75, 2.5]", {"omega"}),
             "Coulomb law: β = 0, A = 1");
-  EXPECT_EQ(ParameterAxisLabel(ForcedAxis::kForce), "force amplitude A");
-  EXPECT_EQ(ParameterAxisLabel(ForcedAxis::kBeta), "damping ratio β");
+  EXPECT_EQ(ParameterAxisLabel(Parameter::kForce), "force amplitude A");
+  EXPECT_EQ(ParameterAxisLabel(Parameter::kBeta), "damping ratio β");
   EXPECT_NE(FigurePreamble(FigureFormat::kPdf, 1000, 700).find("pdfcairo size 10in,7in"),
             std::string::npos);
 }

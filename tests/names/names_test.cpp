@@ -84,7 +84,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("AttractorKind", AttractorKind::kFailed);
   Covers("LyapunovStatus", LyapunovStatus::kCancelled);
   Covers("SweepDirection", SweepDirection::kDown);
-  Covers("ForcedAxis", ForcedAxis::kBeta);
+  Covers("Parameter", Parameter::kOmega);
   Covers("BranchStatus", BranchStatus::kContactLost);
   Covers("SimulationStatus", SimulationStatus::kRowLimit);
   Covers("SimulationSection", SimulationSection::kNone);
@@ -100,7 +100,7 @@ TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
   EXPECT_STREQ(Name(SpecialKind::kNone), "");
   EXPECT_STREQ(Name(SpecialKind::kPeriodDoubling), "PD");
   EXPECT_STREQ(Name(Codim2Label::kFoldFlip), "LPPD");
-  EXPECT_STREQ(Name(ForcedAxis::kOmega), "omega");
+  EXPECT_STREQ(Name(Parameter::kOmega), "omega");
   EXPECT_STREQ(Name(FigureFormat::kPng), "png");
 }
 

@@ -32,7 +32,7 @@ struct OrbitDiagramOptions {
   static constexpr int kMaxValues = 1000000;
   /// Upper bound of n x keep x directions, the section points held in memory.
   static constexpr double kMaxPoints = 1e7;
-  ForcedAxis axis = ForcedAxis::kOmega;
+  ParameterAxis axis = Parameter::kOmega;
   double from = 0.5, to = 2.5;
   int n = 200;  ///< parameter values, from..to inclusive
   bool up = true, down = true;

@@ -16,15 +16,15 @@ namespace stickslip {
 /// direction, <axis>, period (1..K), x, xdot, stuck, sticks, exits, exit_phase
 /// (Omega t of the period's first stick exit in [0, 2 pi), -1 if none),
 /// lyapunov, lyapunov_err. Failed values are `# failed:` comment lines.
-TsvTable OrbitDiagramTable(const OrbitDiagram& d, ForcedAxis axis);
+TsvTable OrbitDiagramTable(const OrbitDiagram& d, ParameterAxis axis);
 /// One row per value whose run is done: direction, <axis>, lyapunov,
 /// lyapunov_err, sticks_per_period, collapses, x_min, x_max (of the section points).
-TsvTable ExponentTable(const OrbitDiagram& d, ForcedAxis axis);
+TsvTable ExponentTable(const OrbitDiagram& d, ParameterAxis axis);
 
 /// Draws orbit_diagram.<ext> from orbit_diagram.tsv and lyapunov.tsv: the
 /// section points x (up sweep blue, down sweep vermillion) over the exponent
 /// panel (zero line dotted).
-std::string OrbitDiagramScript(FigureFormat format, ForcedAxis axis, const std::string& title,
+std::string OrbitDiagramScript(FigureFormat format, ParameterAxis axis, const std::string& title,
                                bool up, bool down);
 
 }  // namespace stickslip

@@ -22,7 +22,7 @@ namespace stickslip {
 
 /// Two forced axes and a rectangle in them.
 struct ForcedPlane {
-  ForcedAxis p1 = ForcedAxis::kOmega, p2 = ForcedAxis::kForce;
+  ParameterAxis p1 = Parameter::kOmega, p2 = Parameter::kForce;
   double from1 = 0.5, to1 = 2, from2 = 0.05, to2 = 1;
   ForcedParams At(const ForcedParams& base, double x1, double x2) const;
   bool Contains(double x1, double x2) const {

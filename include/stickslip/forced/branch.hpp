@@ -13,7 +13,7 @@
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/model/forced_axis.hpp"
+#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/names.hpp"
 
 namespace stickslip {
@@ -33,12 +33,12 @@ inline constexpr int kMaxPeriodMultiple = 1000;
 /// The forced tools pass OrbitBranchOptions(ForcedModel::FlowDefaults()).
 /// Throws InvalidArgument on invalid parameters, options or a non-finite
 /// guess. options.palc.cancelled (if set) is polled before every correction.
-OrbitBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double from, double to,
+OrbitBranch ContinueForced(const ForcedParams& base, ParameterAxis axis, double from, double to,
                            double x_guess, double xdot_guess, int m,
                            const OrbitBranchOptions& options);
 
 /// Branch switching at a period doubling (AUTO-07p's ISW = -1 at a PD label).
-/// at_pd holds the PD point's parameters (GetAxis(at_pd, axis) = p_PD),
+/// at_pd holds the PD point's parameters (axis.Get(at_pd) = p_PD),
 /// (x0, xdot0) its stroboscopic point and m its period multiple. The
 /// 2m-periodic branch starts at z + h e (e the eigenvector of the multiplier
 /// -1 of DP^m, h = options.palc.ds, scaled), corrected with its projection on
@@ -48,7 +48,7 @@ OrbitBranch ContinueForced(const ForcedParams& base, ForcedAxis axis, double fro
 /// the point has no multiplier near -1 or the start falls back onto the m
 /// orbit. Throws InvalidArgument on invalid parameters, options or bounds
 /// (lo < p_PD < hi).
-OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ForcedAxis axis, double x0, double xdot0,
+OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ParameterAxis axis, double x0, double xdot0,
                             double lo, double hi, int m, const OrbitBranchOptions& options);
 
 }  // namespace stickslip

@@ -24,21 +24,21 @@ struct ForcedPiece {
 /// xdot_min, xdot_max, period, x0, xdot0, mult1_re, mult1_im, mult2_re,
 /// mult2_im, mult_max (the largest modulus), stable, pt (the row's number,
 /// 1-based). Throws InvalidArgument if a value is not finite.
-TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
                            const ForcedParams& p);
 /// label, then the same columns, then lab (GR1, CR1, PD1, ...: the label
 /// with its index per type, as AUTO-07p's LAB) and description (one line),
 /// for the located special points.
-TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ForcedAxis axis,
+TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
                             const ForcedParams& p);
 
 /// Den Hartog's non-stop setting: coulomb, mu_s = mu_k, v = 0, beta = 0, in omega.
-bool DenHartogApplies(const ForcedParams& p, ForcedAxis axis);
+bool DenHartogApplies(const ForcedParams& p, ParameterAxis axis);
 
 /// The resonance figure: draws resonance.<format> from branch.tsv.
 /// A run from both ends shades the untraced interval `gap` (empty: none);
 /// `specials` > 0 marks and labels the rows of special_points.tsv.
-std::string ResonanceScript(const ForcedParams& p, ForcedAxis axis, int pieces,
+std::string ResonanceScript(const ForcedParams& p, ParameterAxis axis, int pieces,
                             const std::string& title, const std::vector<double>& gap, int specials,
                             FigureFormat format = FigureFormat::kPng);
 

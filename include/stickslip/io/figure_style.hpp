@@ -16,7 +16,6 @@
 namespace stickslip {
 
 class ParameterAxis;
-enum class ForcedAxis;
 
 enum class FigureFormat { kPng, kPdf, kSvg };
 template <>
@@ -75,9 +74,6 @@ std::string FigureTitle(const std::string& description, const std::vector<std::s
 std::string GnuplotQuoted(const std::string& text);
 /// The axis words for a parameter: "belt speed v", "damping ratio β", ...
 std::string ParameterAxisLabel(const ParameterAxis& param);
-/// The forced oscillator's: "forcing frequency Ω", "forcing amplitude A", or
-/// the belt parameter's words.
-std::string ParameterAxisLabel(ForcedAxis param);
 
 /// A parameter axis as drawn: value on the axis = factor x dimensionless value.
 struct FigureAxis {

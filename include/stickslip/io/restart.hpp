@@ -24,10 +24,8 @@ struct LabelledPoint {
   std::string label;  // "HB1", "GR1", ..., or the point number as given ("17")
   int pt = 0;         // its row in branch.tsv (1-based)
   std::string type;   // GR, HB, LP, or the row's kind: stick-slip, pure-slip, equilibrium
-  // The parameter that run continued: param for a belt run, forced_param for
-  // a forced one (forced below).
+  // The parameter that run continued (a forced run's: the law's, force or omega).
   ParameterAxis param = Parameter::kV;
-  ForcedAxis forced_param = ForcedAxis::kOmega;
   double p = 0;               // its value at the point
   Params params;              // every parameter at the point (the continued one = p)
   FlowOptions flow;           // that run's integrator and tolerances
@@ -43,7 +41,7 @@ struct LabelledPoint {
   double run_to = std::numeric_limits<double>::quiet_NaN();
 
   /// The continued parameter's name as the run's files print it ("v", "omega").
-  std::string ParamName() const { return forced ? Name(forced_param) : param.name(); }
+  std::string ParamName() const { return param.name(); }
 };
 
 /// Why a restart cannot be read: the run directory (a file missing, corrupt,

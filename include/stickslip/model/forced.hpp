@@ -16,17 +16,6 @@
 
 namespace stickslip {
 
-/// The belt parameters plus the forcing. Here v >= 0 (v = 0: a fixed floor)
-/// and the coulomb law may have mu_k = mu_s (Den Hartog).
-struct ForcedParams {
-  Params base;
-  double force = 0;  ///< A, in the unit of the friction coefficients
-  double omega = 1;  ///< Omega, forcing over natural frequency
-};
-
-/// Empty if valid, else one line naming the offending value.
-std::string ValidationError(const ForcedParams& p);
-
 /// The forced oscillator on the one system interface: the belt plus a phase
 /// theta' = Omega (a clock, COCO's way of making forcing autonomous), state
 /// (x, x', theta); its parameters are the belt's (Parameter's order), then
@@ -35,7 +24,8 @@ class ForcedModel final : public System {
  public:
   static constexpr int kStateSize = 2;
   /// The parameter indexes of A and Omega (after the belt's).
-  static constexpr int kForceIndex = 9, kOmegaIndex = 10;
+  static constexpr int kForceIndex = static_cast<int>(Parameter::kForce),
+                       kOmegaIndex = static_cast<int>(Parameter::kOmega);
   /// Throws InvalidArgument naming the offending value.
   explicit ForcedModel(const ForcedParams& p);
   /// The tolerance its tools default to (rtol = atol): at the belt's 1e-11

@@ -48,26 +48,34 @@ struct Params {
   double k3() const;
 };
 
-/// The parameters of Params by name; EnumNames<Parameter> is the one table of
-/// their printed names (options, TSV columns and metadata).
-enum class Parameter { kBeta, kV, kMuS, kMuM, kVM, kMuK, kVS, kDelta, kK5 };
+/// The parameters of the friction oscillators by name, in the order of their
+/// System parameter indexes: the belt's (the members of Params), then the
+/// forcing's (force A and omega, ForcedParams). EnumNames<Parameter> is the
+/// one table of their printed names (options, TSV columns and metadata).
+enum class Parameter { kBeta, kV, kMuS, kMuM, kVM, kMuK, kVS, kDelta, kK5, kForce, kOmega };
 template <>
 struct EnumNames<Parameter> {
   static constexpr NamedValue<Parameter> kTable[] = {
-      {Parameter::kBeta, "beta"}, {Parameter::kV, "v"},         {Parameter::kMuS, "mu_s"},
-      {Parameter::kMuM, "mu_m"},  {Parameter::kVM, "v_m"},      {Parameter::kMuK, "mu_k"},
-      {Parameter::kVS, "v_s"},    {Parameter::kDelta, "delta"}, {Parameter::kK5, "k5"}};
+      {Parameter::kBeta, "beta"},   {Parameter::kV, "v"},         {Parameter::kMuS, "mu_s"},
+      {Parameter::kMuM, "mu_m"},    {Parameter::kVM, "v_m"},      {Parameter::kMuK, "mu_k"},
+      {Parameter::kVS, "v_s"},      {Parameter::kDelta, "delta"}, {Parameter::kK5, "k5"},
+      {Parameter::kForce, "force"}, {Parameter::kOmega, "omega"}};
 };
-/// The member of Params a parameter stands for.
+/// The belt's parameters: the first kBeltParameters of Parameter.
+inline constexpr int kBeltParameters = 9;
+/// A parameter of the forcing (force, omega): not one of Params.
+inline bool IsForcing(Parameter p) { return static_cast<int>(p) >= kBeltParameters; }
+/// The member of Params a belt parameter stands for; throws InvalidArgument
+/// for a forcing parameter.
 double Params::*ParameterMember(Parameter p);
 
 /// Names of the parameters that apply to a law, in a fixed order:
 /// beta, v, mu_s, then the law's own (cubic: mu_m, v_m, k5; coulomb: mu_k;
 /// stribeck: mu_k, v_s; leine: delta).
 std::vector<std::string> ParameterNames(LawKind law);
-/// Every parameter name any law knows.
+/// Every parameter name any law of the belt knows (not the forcing's).
 std::vector<std::string> AllParameterNames();
-/// True for any name in AllParameterNames().
+/// True for any name in AllParameterNames() (the belt's: not force, omega).
 bool IsParameterName(const std::string& name);
 /// "beta, v, mu_s, mu_m, v_m, mu_k, v_s, delta or k5", for messages.
 std::string ParameterNameList();
@@ -106,6 +114,23 @@ constexpr double kMinScale = 1e-6, kMaxScale = 1e6;
 std::string ValidationError(const Params& p);
 /// Throws InvalidArgument with ValidationError(p) if it is not empty.
 void Validate(const Params& p);
+
+/// The belt parameters plus a harmonic forcing A cos(Omega t) (forced.hpp).
+/// Here v >= 0 (v = 0: a fixed floor) and the coulomb law may have mu_k =
+/// mu_s (Den Hartog).
+struct ForcedParams {
+  Params base;
+  double force = 0;  ///< A, in the unit of the friction coefficients
+  double omega = 1;  ///< Omega, forcing over natural frequency
+};
+
+/// Empty if valid, else one line naming the offending value.
+std::string ValidationError(const ForcedParams& p);
+
+/// The forced oscillator's default range of a parameter: omega 0.75 -> 2.5,
+/// force 0.1 -> 2, v 0 -> 0.5 (from the fixed floor), beta 0 -> 0.3, the
+/// others as the belt's (DefaultRange above).
+ParameterRange DefaultRange(const ForcedParams& base, const ParameterAxis& axis);
 
 /// Physical inputs and the seed's scaling (section 3): L = M g / K,
 /// omega0 = sqrt(K / M), t0 = 1 / omega0, 2 beta = C / sqrt(K M),
