@@ -178,7 +178,9 @@ void BindOptions(py::module_& m) {
       .def_readwrite("to1", &Plane::to1)
       .def_readwrite("from2", &Plane::from2)
       .def_readwrite("to2", &Plane::to2)
-      .def("validation_error", &Plane::ValidationError, py::arg("params"));
+      .def("validation_error",
+           py::overload_cast<const Params&>(&Plane::ValidationError, py::const_),
+           py::arg("params"));
   Options<ChartOptions>(m, "ChartOptions", "Settings of chart().")
       .def_readwrite("plane", &ChartOptions::plane)
       .def_readwrite("orbit", &ChartOptions::orbit)

@@ -128,7 +128,7 @@ ForcedCurve Trace(const ForcedParams& base, const ForcedChartOptions& o, const F
   }
   if (s.kind == CurveKind::kGrazing) ChooseMargin(problem, u0);
   TraceOptions t;
-  t.plane = o.plane.AsPlane();
+  t.plane = o.plane;
   t.i1 = 2;
   t.max_step = o.max_step;
   t.tol = Tolerances::From(o.flow.rtol, o.flow.atol).ForcedCurveCorrector();
@@ -203,7 +203,7 @@ ForcedCurve TraceForcedCurve(const ForcedParams& base, const ForcedChartOptions&
 
 void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const ForcedCurve& c,
                 int index, std::vector<ForcedCodim2>* out);  // forced_codim2.cpp
-void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane& pl,
+void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const Plane& pl,
                        std::vector<ForcedCodim2>* out);
 
 ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions& o) {
@@ -213,7 +213,7 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
   ForcedChartResult r;
   auto cancelled = [&o] { return o.cancelled && o.cancelled(); };
   if (o.curves) {
-    const ForcedPlane& pl = o.plane;
+    const Plane& pl = o.plane;
     for (int line = 0; line < o.seed_lines && !cancelled(); ++line) {
       const double f = (line + 0.5) / o.seed_lines;
       for (const bool along1 : {true, false}) {

@@ -68,7 +68,7 @@ void Harvest(const OrbitBranch& b, const Line& line, const ForcedChartOptions& o
 
 std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartOptions& o,
                                     bool along1, double c, int* runs) {
-  const ForcedPlane& pl = o.plane;
+  const Plane& pl = o.plane;
   Line line;
   line.axis = along1 ? pl.p1 : pl.p2, line.along1 = along1, line.c = c;
   line.lo = along1 ? pl.from1 : pl.from2, line.hi = along1 ? pl.to1 : pl.to2;
@@ -101,8 +101,7 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
   return seeds;
 }
 
-bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const ForcedSeed& s,
-                     const ForcedPlane& pl) {
+bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const ForcedSeed& s, const Plane& pl) {
   const Eigen::Vector2d scale(pl.width1(), pl.width2());
   for (const ForcedCurve& c : curves)
     if (c.kind == s.kind && c.m == s.m &&

@@ -26,7 +26,6 @@ std::vector<ForcedSeed> SeedsOnLine(const ForcedParams& base, const ForcedChartO
                                     bool along1, double c, int* runs);
 
 /// True if s lies on a traced curve of its kind and m.
-bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const ForcedSeed& s,
-                     const ForcedPlane& pl);
+bool NearForcedCurve(const std::vector<ForcedCurve>& curves, const ForcedSeed& s, const Plane& pl);
 
 }  // namespace stickslip

@@ -171,7 +171,7 @@ void FindCodim2(const ForcedParams& base, const ForcedChartOptions& o, const For
 // GG: two GR curves of one period whose inner ends (not on the border) meet.
 // Each end of a grazing curve traced by Newton stops there (a corner of
 // v - max x', the larger of two touches), so the two ends straddle it.
-void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const ForcedPlane& pl,
+void FindDoubleGrazing(const std::vector<ForcedCurve>& curves, const Plane& pl,
                        std::vector<ForcedCodim2>* out) {
   const double tol = Tolerances().forced_double_grazing;
   auto inner = [](const ForcedCurve& c, bool first) {

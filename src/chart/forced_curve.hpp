@@ -45,11 +45,11 @@ struct ForcedCurveSample {
 
 class ForcedCurveProblem final : public PalcProblem {
  public:
-  ForcedCurveProblem(const ForcedParams& base, const ForcedPlane& plane, CurveKind kind, int m,
+  ForcedCurveProblem(const ForcedParams& base, const Plane& plane, CurveKind kind, int m,
                      const FlowOptions& flow)
       : base_(base), plane_(plane), kind_(kind), m_(m), flow_(flow) {}
   int unknowns() const override { return 4; }
-  const ForcedPlane& plane() const { return plane_; }
+  const Plane& plane() const { return plane_; }
   bool Evaluate(const Eigen::VectorXd& u, Eigen::VectorXd* f, Eigen::MatrixXd* jac,
                 std::string* why) override;
   std::string DomainError(const Eigen::VectorXd& u) const override;
@@ -84,7 +84,7 @@ class ForcedCurveProblem final : public PalcProblem {
   // switching unless smooth(), the switches appended to `events` if given.
   FlowRequest Request(double t_end, std::vector<FlowSwitch>* events) const;
   ForcedParams base_;
-  ForcedPlane plane_;
+  Plane plane_;
   CurveKind kind_;
   int m_;
   FlowOptions flow_;

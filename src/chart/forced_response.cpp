@@ -17,7 +17,7 @@ namespace stickslip {
 
 ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptions& o,
                                 bool* cancelled) {
-  const ForcedPlane& pl = o.plane;
+  const Plane& pl = o.plane;
   ResponseGrid g;
   g.n1 = o.n1, g.n2 = o.n2;
   for (int i = 0; i < g.n1; ++i) g.x1.push_back(pl.from1 + (i + 0.5) * pl.width1() / g.n1);

@@ -29,7 +29,7 @@ Setup Configure(const Arguments& args) {
   s.p.base = UncheckedModelFromArguments(args);
   s.p.force = args.Number("force", 0.3);
   s.p.omega = args.Number("omega", 1);
-  ForcedPlane& pl = s.o.plane;
+  Plane& pl = s.o.plane;
   pl.p1 = AxisFromArguments(args, "param", "omega", s.p.base.law, true);
   pl.p2 = AxisFromArguments(args, "param2", "force", s.p.base.law, true);
   if (pl.p1 == pl.p2)
@@ -85,7 +85,7 @@ Setup Configure(const Arguments& args) {
 
 std::string Describe(const Setup& s) {
   std::string d = "law=" + std::string(Name(s.p.base.law));
-  const ForcedPlane& pl = s.o.plane;
+  const Plane& pl = s.o.plane;
   auto range = [](double a, double b) {
     return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]";
   };
@@ -98,7 +98,7 @@ std::string Describe(const Setup& s) {
          range(pl.from2, pl.to2);
 }
 
-void PrintSummary(const ForcedChartResult& r, const ForcedPlane& pl, const std::string& model,
+void PrintSummary(const ForcedChartResult& r, const Plane& pl, const std::string& model,
                   const std::string& dir, bool drawn, const std::string& figure) {
   std::printf("ss_chart: forced oscillator, %s\n%zu curves from %d one-parameter runs in %.2f s",
               model.c_str(), r.curves.size(), r.seed_runs, r.seconds);
@@ -135,7 +135,7 @@ bool ForcedChartRequested(const Arguments& args) {
 
 int RunForcedChart(const Arguments& args, const std::string& prog, const std::string& command) {
   Setup s = Configure(args);
-  const ForcedPlane& pl = s.o.plane;
+  const Plane& pl = s.o.plane;
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("forced_chart", format);
   AppRun app(prog, args, "chart",

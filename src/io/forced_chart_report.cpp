@@ -76,8 +76,7 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g) {
   return c;
 }
 
-TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
-                           const std::string& model) {
+TsvTable ForcedCurvesTable(const ForcedChartResult& r, const Plane& pl, const std::string& model) {
   TsvTable t({pl.p1.name(), pl.p2.name(), "curve", "id", "m", "phase", "x0", "xdot0", "sticks",
               "crossings", "x_min", "x_max", "mult1_re", "mult1_im", "mult2_re", "mult2_im",
               "flag"});
@@ -100,8 +99,7 @@ TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
   return t;
 }
 
-TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
-                           const std::string& model) {
+TsvTable ForcedCodim2Table(const ForcedChartResult& r, const Plane& pl, const std::string& model) {
   TsvTable t({"label", pl.p1.name(), pl.p2.name(), "curve", "on", "description", "located"});
   Header(t, r, model);
   t.AddComment(
@@ -113,8 +111,7 @@ TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
   return t;
 }
 
-TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl,
-                       const std::string& model) {
+TsvTable ResponseTable(const ForcedChartResult& r, const Plane& pl, const std::string& model) {
   const ResponseGrid& g = r.grid;
   const ResponseClasses c = ClassifyResponses(g);
   TsvTable t(

@@ -99,7 +99,7 @@ double SegmentDistance(double x, double y, double ax, double ay, double bx, doub
 // far) whose text box keeps the most room from every curve, every
 // codimension-two point and the labels placed before it, inside the frame:
 // "set label" lines at the centre, in data coordinates.
-void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const ForcedPlane& pl) {
+void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const Plane& pl) {
   const double sx = kPlotW / pl.width1(), sy = kPlotH / pl.width2();
   auto px = [&](double p1, double p2) {
     return std::array<double, 2>{(p1 - pl.from1) * sx, (p2 - pl.from2) * sy};
@@ -146,8 +146,8 @@ void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const ForcedPlan
 
 }  // namespace
 
-std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
-                              const std::string& title, FigureFormat format) {
+std::string ForcedChartScript(const ForcedChartResult& r, const Plane& pl, const std::string& title,
+                              FigureFormat format) {
   const ResponseGrid& g = r.grid;
   const ResponseClasses c = ClassifyResponses(g);
   std::ostringstream os;

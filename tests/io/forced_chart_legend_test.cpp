@@ -37,7 +37,7 @@ TEST(ForcedChartLegend, EveryCurveKindHasItsOwnStyleAndCodim2DotsAKeyEntry) {
   ForcedCodim2 gg;
   gg.label = Codim2Label::kDoubleGrazing, gg.p1 = 1, gg.p2 = 0.5;
   r.codim2.push_back(gg);
-  ForcedPlane pl;
+  Plane pl = ForcedChartOptions().plane;
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 1;
   const std::string script = ForcedChartScript(r, pl, "test", FigureFormat::kPng);
   std::istringstream in(script);
@@ -65,7 +65,7 @@ TEST(ForcedChartLegend, EveryCurveKindHasItsOwnStyleAndCodim2DotsAKeyEntry) {
 struct TextBox {
   double x = 0, y = 0, hw = 0, hh = 8;
 };
-TextBox BoxOf(const std::string& line, const ForcedPlane& pl) {
+TextBox BoxOf(const std::string& line, const Plane& pl) {
   const auto q0 = line.find_first_of("'\""), q1 = line.find_first_of("'\"", q0 + 1);
   const size_t len = q1 - q0 - 1;
   std::istringstream at(line.substr(line.find(" at ") + 4));
@@ -90,7 +90,7 @@ TextBox BoxOf(const std::string& line, const ForcedPlane& pl) {
 // labels sat up and right of their points, on the curve and on each other).
 TEST(ForcedChartLegend, Codim2LabelsKeepOffCurvesAndEachOther) {
   ForcedChartResult r;
-  ForcedPlane pl;
+  Plane pl = ForcedChartOptions().plane;
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 1;
   for (double shift : {0.0, 0.02}) {  // two parallel curves, one through each point
     ForcedCurve c;

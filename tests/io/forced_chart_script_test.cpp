@@ -25,7 +25,7 @@ TEST(ForcedChartScript, NsCurveDrawnOnlyWhereTheMultipliersAreComplex) {
     ns.points.push_back(p);
   }
   r.curves.push_back(ns);
-  ForcedPlane pl;
+  Plane pl = ForcedChartOptions().plane;
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 0.1;
   const TsvTable t = ForcedCurvesTable(r, pl, "test");
   const auto& c = t.columns();
@@ -52,7 +52,7 @@ TEST(ForcedChartScript, SlidingEndsAreMarkersAndOnlyCodim2PointsAreNamed) {
     p.p1 = 0.4 + 0.001 * i, p.p2 = 0.5;
     r.codim2.push_back(p);
   }
-  ForcedPlane pl;
+  Plane pl = ForcedChartOptions().plane;
   pl.from1 = 0.3, pl.to1 = 1.2, pl.from2 = 0.05, pl.to2 = 0.6;
   const std::string script = ForcedChartScript(r, pl, "test", FigureFormat::kPng);
   std::istringstream in(script);

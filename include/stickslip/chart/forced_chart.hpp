@@ -20,23 +20,6 @@
 
 namespace stickslip {
 
-/// Two forced axes and a rectangle in them.
-struct ForcedPlane {
-  ParameterAxis p1 = Parameter::kOmega, p2 = Parameter::kForce;
-  double from1 = 0.5, to1 = 2, from2 = 0.05, to2 = 1;
-  ForcedParams At(const ForcedParams& base, double x1, double x2) const;
-  bool Contains(double x1, double x2) const {
-    return x1 >= from1 && x1 <= to1 && x2 >= from2 && x2 <= to2;
-  }
-  double width1() const { return to1 - from1; }
-  double width2() const { return to2 - from2; }
-  /// The rectangle as a belt chart's Plane (names only; for the tracer).
-  Plane AsPlane() const;
-  /// Empty if valid for base, else one line: equal axes, empty or inverted
-  /// range, or a corner or edge point (17 per edge) that is no valid model.
-  std::string ValidationError(const ForcedParams& base) const;
-};
-
 struct ForcedCurvePoint {
   double p1 = 0, p2 = 0;
   double x0 = 0, xdot0 = 0;  ///< the orbit's point at the section phase
@@ -110,7 +93,8 @@ struct ForcedChartOptions {
   static constexpr double kMaxStepLimit = 0.5;
   /// Upper bounds of seed_lines and of the response grid's n1 and n2.
   static constexpr int kMaxSeedLines = 50, kMaxGridSide = 1000;
-  ForcedPlane plane;
+  /// Default: (omega, force) on [0.5, 2] x [0.05, 1].
+  Plane plane{Parameter::kOmega, Parameter::kForce, 0.5, 2, 0.05, 1};
   FlowOptions flow = ForcedModel::FlowDefaults();  ///< rtol, atol 1e-12 (forced flow defaults)
   int max_m = 2;                                   ///< curves of orbits of period multiple 1..max_m
   int seed_lines = 3;         ///< one-parameter runs per axis, across the rectangle

@@ -1,5 +1,6 @@
-// The parameter plane of a stability chart: two model parameters (axes) and a
-// rectangle in them. Every point of the rectangle must be a valid model.
+// The parameter plane of a chart, the belt's or the forced oscillator's: two
+// of its parameters (axes, the one lens) and a rectangle in them. Every point
+// of the rectangle must be a valid model.
 #pragma once
 
 #include <string>
@@ -41,8 +42,18 @@ struct Plane {
   // is blamed on the range end that reaches it (from the corner (from, from2)
   // along each edge), or on the rectangle.
   PlaneError Check(const Params& base) const;
-  // base with the two axes set to (x1, x2).
-  Params At(const Params& base, double x1, double x2) const;
+  // The forced oscillator's: empty if valid for `base`, else one line (an
+  // axis the law has not, equal axes, an empty or inverted range, or a corner
+  // or edge point, 17 per edge, that is no valid model).
+  std::string ValidationError(const ForcedParams& base) const;
+  // base (Params or ForcedParams) with the two axes set to (x1, x2).
+  template <class P>
+  P At(const P& base, double x1, double x2) const {
+    P q = base;
+    p1.Set(q, x1);
+    p2.Set(q, x2);
+    return q;
+  }
   bool Contains(double x1, double x2) const {
     return x1 >= from1 && x1 <= to1 && x2 >= from2 && x2 <= to2;
   }

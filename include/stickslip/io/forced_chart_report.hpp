@@ -29,19 +29,17 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g);
 /// sticks, crossings, x_min, x_max, mult1_re, mult1_im, mult2_re, mult2_im,
 /// flag (NS: 1 a neutral saddle, real multipliers; GR: 1 the crossing margin,
 /// 0 the grazing one). A comment line per curve: its seed and its ends.
-TsvTable ForcedCurvesTable(const ForcedChartResult& r, const ForcedPlane& pl,
-                           const std::string& model);
+TsvTable ForcedCurvesTable(const ForcedChartResult& r, const Plane& pl, const std::string& model);
 /// Columns: label (R1, R2, LPPD, SL), <p1>, <p2>, curve (its id), on (its kind), description.
-TsvTable ForcedCodim2Table(const ForcedChartResult& r, const ForcedPlane& pl,
-                           const std::string& model);
+TsvTable ForcedCodim2Table(const ForcedChartResult& r, const Plane& pl, const std::string& model);
 /// One row per grid cell, p1 fastest: <p1>, <p2> (the cell centre), class
 /// (index into the comment lines' list), response (periodic, rest,
 /// quasi-periodic, chaotic, unbounded, failed), m, sticks (per m periods),
 /// lyapunov, lyapunov_err. Cells not reached (cancelled) are left out.
-TsvTable ResponseTable(const ForcedChartResult& r, const ForcedPlane& pl, const std::string& model);
+TsvTable ResponseTable(const ForcedChartResult& r, const Plane& pl, const std::string& model);
 
 /// Draws forced_chart.<ext> from response.tsv, curves.tsv and codim2.tsv.
-std::string ForcedChartScript(const ForcedChartResult& r, const ForcedPlane& pl,
-                              const std::string& title, FigureFormat format);
+std::string ForcedChartScript(const ForcedChartResult& r, const Plane& pl, const std::string& title,
+                              FigureFormat format);
 
 }  // namespace stickslip
