@@ -163,8 +163,8 @@ PYBIND11_MODULE(_core, m) {
       py::arg("law") = "cubic", "Names of the parameters of a law, in a fixed order.");
   m.def(
       "default_range",
-      [](const ss::Params& base, const std::string& name) {
-        const ss::ParameterRange r = ss::DefaultRange(base, ss::ParameterAxis(name));
+      [](const ss::Params& base, const ss::ParameterAxis& name) {
+        const ss::ParameterRange r = ss::DefaultRange(base, name);
         return py::make_tuple(r.from, r.to);
       },
       py::arg("params"), py::arg("name"),

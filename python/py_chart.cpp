@@ -8,8 +8,8 @@ namespace stickslip::python {
 
 namespace {
 
-ChartOut ChartOf(const Params& base, std::optional<std::string> param, std::optional<double> from,
-                 std::optional<double> to, std::optional<std::string> param2,
+ChartOut ChartOf(const Params& base, std::optional<ParameterAxis> param, std::optional<double> from,
+                 std::optional<double> to, std::optional<ParameterAxis> param2,
                  std::optional<double> from2, std::optional<double> to2,
                  std::optional<double> max_step, std::optional<std::pair<int, int>> regions,
                  std::optional<double> rtol, std::optional<double> atol,
@@ -17,10 +17,10 @@ ChartOut ChartOf(const Params& base, std::optional<std::string> param, std::opti
                  std::optional<ChartOptions> options) {
   ChartOptions opts = options.value_or(ChartOptions());
   Plane& pl = opts.plane;
-  if (param) pl.p1 = ParameterAxis(*param);  // InvalidArgument for an unknown name
+  if (param) pl.p1 = *param;  // a member or a name (py_common.hpp)
   if (from) pl.from1 = *from;
   if (to) pl.to1 = *to;
-  if (param2) pl.p2 = ParameterAxis(*param2);
+  if (param2) pl.p2 = *param2;
   if (from2) pl.from2 = *from2;
   if (to2) pl.to2 = *to2;
   if (max_step) opts.max_step = *max_step;

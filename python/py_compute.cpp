@@ -99,7 +99,7 @@ void CheckCallable(const py::object& progress) {
                          py::str(py::type::of(progress).attr("__name__")).cast<std::string>());
 }
 
-Branch ContinueBranch(const Params& base, std::optional<std::string> param,
+Branch ContinueBranch(const Params& base, std::optional<ParameterAxis> param,
                       std::optional<double> from, std::optional<double> to,
                       std::optional<double> max_step, std::optional<bool> floquet,
                       std::optional<double> rtol, std::optional<double> atol,
@@ -107,8 +107,8 @@ Branch ContinueBranch(const Params& base, std::optional<std::string> param,
                       std::optional<ContinuationOptions> options, const py::object& progress) {
   CheckCallable(progress);
   ContinuationOptions opts = options.value_or(ContinuationOptions());
-  if (param) opts.param = ParameterAxis(*param);  // InvalidArgument for an unknown name
-  if (!options) {  // the library's range for this parameter around base
+  if (param) opts.param = *param;  // a member or a name (py_common.hpp)
+  if (!options) {                  // the library's range for this parameter around base
     const ParameterRange range = DefaultRange(base, opts.param);
     opts.from = range.from, opts.to = range.to;
   }

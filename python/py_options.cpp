@@ -156,8 +156,8 @@ void BindOptions(py::module_& m) {
   Options<ContinuationOptions>(m, "ContinuationOptions", "Settings of continue_branch().")
       .def_property(
           "param", [](const ContinuationOptions& o) { return o.param.name(); },
-          [](ContinuationOptions& o, const std::string& name) { o.param = ParameterAxis(name); },
-          "the continued parameter (a name; an unknown one raises ValueError)")
+          [](ContinuationOptions& o, const ParameterAxis& a) { o.param = a; },
+          "the continued parameter (a Parameter or its name; an unknown one raises ValueError)")
       .def_readwrite("from_", &ContinuationOptions::from, "first value of the parameter")
       .def_readwrite("to", &ContinuationOptions::to, "last value of the parameter")
       .def_readwrite("orbit", &ContinuationOptions::orbit)
@@ -170,10 +170,10 @@ void BindOptions(py::module_& m) {
   Options<Plane>(m, "Plane", "The rectangle of a chart: p1 in [from1, to1], p2 in [from2, to2].")
       .def_property(
           "p1", [](const Plane& pl) { return pl.p1.name(); },
-          [](Plane& pl, const std::string& name) { pl.p1 = ParameterAxis(name); })
+          [](Plane& pl, const ParameterAxis& a) { pl.p1 = a; })
       .def_property(
           "p2", [](const Plane& pl) { return pl.p2.name(); },
-          [](Plane& pl, const std::string& name) { pl.p2 = ParameterAxis(name); })
+          [](Plane& pl, const ParameterAxis& a) { pl.p2 = a; })
       .def_readwrite("from1", &Plane::from1)
       .def_readwrite("to1", &Plane::to1)
       .def_readwrite("from2", &Plane::from2)

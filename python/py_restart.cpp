@@ -17,13 +17,13 @@ namespace {
 
 // The new branch in `param` (default: the run's) from the point to the far
 // end of the parameter's default range (`to` overrides), with the run's solver.
-ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::string> param,
+ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<ParameterAxis> param,
                                   std::optional<double> to) {
   if (lp.forced)
     throw InvalidArgument(lp.label + " is a point of a forced run: continue_forced(point." +
                           "forced_params(), axis, from_, to, *point.state, m=point.m)");
   ContinuationOptions o;
-  o.param = param ? ParameterAxis(*param) : lp.param;  // InvalidArgument for an unknown name
+  o.param = param.value_or(lp.param);
   const ParameterRange r = RangeFromPoint(lp.params, o.param);
   o.from = r.from, o.to = to.value_or(r.to);
   o.orbit.flow = lp.flow;
@@ -34,7 +34,7 @@ ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<std::st
 
 // A chart of the run's parameter by param2 whose first curve starts at the
 // point (a GR or HB point, inside the rectangle), with the run's solver.
-ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, double from, double to,
+ChartOptions ChartFrom(const LabelledPoint& lp, const ParameterAxis& param2, double from, double to,
                        double from2, double to2) {
   if (lp.forced)  // its axis is the forcing's or the forced model's: no belt chart
     throw InvalidArgument(lp.label + " is a point of a forced run: a forced chart is ss_chart " +
@@ -43,7 +43,7 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
     throw InvalidArgument(lp.label + " is a " + lp.type + " point: a chart starts from a GR or " +
                           "HB point");
   ChartOptions o;
-  o.plane.p1 = lp.param, o.plane.p2 = ParameterAxis(param2);
+  o.plane.p1 = lp.param, o.plane.p2 = param2;
   o.plane.from1 = from, o.plane.to1 = to, o.plane.from2 = from2, o.plane.to2 = to2;
   const int max_steps = o.orbit.flow.max_steps;  // the chart's step cap
   o.orbit.flow = lp.flow, o.orbit.flow.max_steps = max_steps;
@@ -53,8 +53,9 @@ ChartOptions ChartFrom(const LabelledPoint& lp, const std::string& param2, doubl
   s.kind = lp.type == "GR" ? CurveKind::kGrazing : CurveKind::kHopf;
   s.p1 = o.plane.p1.Get(lp.params), s.p2 = o.plane.p2.Get(lp.params);
   if (!o.plane.Contains(s.p1, s.p2))
-    throw InvalidArgument(lp.label + ": (" + o.plane.p1.name() + ", " + o.plane.p2.name() + ") = (" + Repr(s.p1) +
-                          ", " + Repr(s.p2) + ") lies outside the chart's rectangle");
+    throw InvalidArgument(lp.label + ": (" + o.plane.p1.name() + ", " + o.plane.p2.name() +
+                          ") = (" + Repr(s.p1) + ", " + Repr(s.p2) +
+                          ") lies outside the chart's rectangle");
   o.seeds.push_back(s);
   return o;
 }

@@ -559,13 +559,13 @@ class LabelledPoint:
     omega: float
     m: int
     def forced_params(self) -> ForcedParams: ...
-    def options(self, param: Optional[str] = None,
+    def options(self, param: Optional[Parameter | str] = None,
                 to: Optional[float] = None) -> ContinuationOptions: ...
-    def chart_options(self, param2: str = "beta", from_: float = 0.05, to: float = 0.6,
+    def chart_options(self, param2: Parameter | str = "beta", from_: float = 0.05, to: float = 0.6,
                       from2: float = 0.0, to2: float = 0.25) -> ChartOptions: ...
 
 def parameter_names(law: LawLike = "cubic") -> List[str]: ...
-def default_range(params: Params, name: str) -> Tuple[float, float]: ...
+def default_range(params: Params, name: Parameter | str) -> Tuple[float, float]: ...
 def scales(mass: float, stiffness: float, gravity: float = 9.81) -> Tuple[float, float]: ...
 @overload
 def simulate(params: Params, x0: float = 0.0, xdot0: float = 0.25, t_end: float = 100.0,
@@ -620,7 +620,7 @@ def forced_basins(params: ForcedParams, nx: int = 41, ny: int = 41,
 def periodic_orbit(params: Params, a_guess: Optional[float] = None, floquet: bool = False,
                    rtol: Optional[float] = None, atol: Optional[float] = None,
                    integrator: IntegratorLike = None, method: MethodLike = None) -> Orbit: ...
-def continue_branch(params: Params, param: Optional[str] = None, from_: Optional[float] = None,
+def continue_branch(params: Params, param: Optional[Parameter | str] = None, from_: Optional[float] = None,
                     to: Optional[float] = None, max_step: Optional[float] = None,
                     floquet: Optional[bool] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
@@ -656,8 +656,8 @@ def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            progress: Optional[Callable[[int, int], Any]] = None) -> Basins: ...
 def orbit_curve(params: Params, orbit: Orbit, n: int = 400) -> Array: ...
 def smallest_disturbance(params: Params, orbit: Orbit, n: int = 4000) -> Disturbance: ...
-def chart(params: Params, param: Optional[str] = None, from_: Optional[float] = None,
-          to: Optional[float] = None, param2: Optional[str] = None,
+def chart(params: Params, param: Optional[Parameter | str] = None, from_: Optional[float] = None,
+          to: Optional[float] = None, param2: Optional[Parameter | str] = None,
           from2: Optional[float] = None, to2: Optional[float] = None,
           max_step: Optional[float] = None, regions: Optional[Tuple[int, int]] = None,
           rtol: Optional[float] = None, atol: Optional[float] = None,

@@ -123,6 +123,13 @@ class Forced(unittest.TestCase):
                                       xdot_guess=0.01)
         with self.assertRaisesRegex(ValueError, "unknown parameter 'gamma'"):
             stickslip.continue_forced(p, "gamma", 0.2, 0.1, x_guess=V, xdot_guess=0.01)
+        # The belt's functions take the same lens, and refuse the forcing's.
+        belt = stickslip.Params()
+        self.assertEqual(stickslip.default_range(belt, stickslip.Parameter.v), (0.05, 0.5))
+        with self.assertRaisesRegex(ValueError, "'omega' does not apply to the cubic law"):
+            stickslip.default_range(belt, "omega")
+        with self.assertRaisesRegex(ValueError, "'force' does not apply to the cubic law"):
+            stickslip.continue_branch(belt, stickslip.Parameter.force)
 
     def test_arrays_are_read_only_and_bad_input_raises(self):
         tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)

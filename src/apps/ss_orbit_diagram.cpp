@@ -41,8 +41,10 @@ po::options_description AppOptions() {
   po::options_description d("Orbit diagram (study section [orbit_diagram])");
   d.add_options()("param", cli::Value()->value_name("NAME"),
                   "the swept parameter: one of the law's, force or omega (default omega)")(
-      "from", cli::Value()->value_name("P"), "first value (default 0.5)")(
-      "to", cli::Value()->value_name("P"), "last value (default 2.5)")(
+      "from", cli::Value()->value_name("P"),
+      "first value (default: omega 0.5, else the parameter's range)")(
+      "to", cli::Value()->value_name("P"),
+      "last value (default: omega 2.5, else the parameter's range)")(
       "n", cli::Value()->value_name("N"), "parameter values, in [2, 100000] (default 200)")(
       "transient", cli::Value()->value_name("P"),
       "forcing periods discarded per value, in [0, 1e6] (default 500)")(
@@ -80,22 +82,31 @@ Setup Configure(const cli::Arguments& args) {
   s.p.force = args.Number("force", 0.3);
   s.p.omega = args.Number("omega", 1);
   s.o.axis = cli::AxisFromArguments(args, "param", "omega", s.p.base.law, true);
-  // Every given value is checked, the swept one too (--omega -1 with --param omega).
-  if (const std::string e = ss::ValidationError(s.p); !e.empty()) {
-    const std::string key = e.substr(0, e.find(' '));
-    throw cli::UsageError("invalid forced model: " + e +
+  // omega's own range; the others the forced oscillator's (DefaultRange).
+  const ss::ParameterRange range = s.o.axis == ss::Parameter::kOmega
+                                       ? ss::ParameterRange{0.5, 2.5}
+                                       : ss::DefaultRange(s.p, s.o.axis);
+  s.o.from = args.Number("from", range.from);
+  s.o.to = args.Number("to", range.to);
+  // Every given value is checked, the swept one too (--omega -1 with --param
+  // omega); a swept one not given is checked at --from and --to below only.
+  const std::string given = args.Given(s.o.axis.name()) ? ss::ValidationError(s.p) : "";
+  if (!given.empty()) {
+    const std::string key = given.substr(0, given.find(' '));
+    throw cli::UsageError("invalid forced model: " + given +
                           (args.Given(key) ? " (from " + args.Origin(key) + ")" : ""));
   }
-  s.o.from = args.Number("from", 0.5);
-  s.o.to = args.Number("to", 2.5);
   if (s.o.from == s.o.to)
     throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");
   for (const char* end : {"from", "to"}) {
     ss::ForcedParams at = s.p;
     s.o.axis.Set(at, end[0] == 'f' ? s.o.from : s.o.to);
     const std::string e = ss::ValidationError(at);
+    const std::string key = e.substr(0, e.find(' '));
     if (!e.empty())
-      throw cli::UsageError("invalid forced model at --" + std::string(end) + ": " + e);
+      throw cli::UsageError(
+          "invalid forced model at --" + std::string(end) + ": " + e +
+          (key != s.o.axis.name() && args.Given(key) ? " (from " + args.Origin(key) + ")" : ""));
   }
   s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
   s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
@@ -130,10 +141,10 @@ Setup Configure(const cli::Arguments& args) {
 }
 
 std::string Describe(const Setup& s) {
-  ss::ForcedParams at = s.p;
-  std::string d = cli::DescribeModel(at.base);
-  for (ss::ParameterAxis a : {ss::Parameter::kForce, ss::Parameter::kOmega})
-    if (a != s.o.axis) d += std::string(" ") + a.name() + "=" + ss::FormatNumber(a.Get(s.p));
+  std::string d = std::string("law=") + ss::Name(s.p.base.law);
+  for (const ss::ParameterAxis& a :
+       ss::ParameterAxes(s.p.base.law, true))  // the swept one left out
+    if (a != s.o.axis) d += " " + a.name() + "=" + ss::FormatNumber(a.Get(s.p));
   return d;
 }
 

@@ -9,7 +9,8 @@
 namespace stickslip {
 
 std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const {
-  std::string e = stickslip::ValidationError(base);
+  // base's values of the two axes are not used: it is checked at (from1, from2).
+  std::string e = stickslip::ValidationError(plane.At(base, plane.from1, plane.from2));
   if (!e.empty()) return e;
   e = plane.ValidationError(base);
   if (!e.empty()) return e;

@@ -44,9 +44,11 @@ Setup Configure(const Arguments& args) {
   pl.from2 = args.Number("from2", range(pl.p2).from);
   pl.to2 = args.Number("to2", range(pl.p2).to);
   if (!(pl.from1 < pl.to1))
-    throw UsageError(args.Source("to") + " = " + args.Text("to", "") + " must exceed --from");
+    throw UsageError(args.Source("to") + " = " + FormatNumber(pl.to1) +
+                     " must exceed --from = " + FormatNumber(pl.from1));
   if (!(pl.from2 < pl.to2))
-    throw UsageError(args.Source("to2") + " = " + args.Text("to2", "") + " must exceed --from2");
+    throw UsageError(args.Source("to2") + " = " + FormatNumber(pl.to2) +
+                     " must exceed --from2 = " + FormatNumber(pl.from2));
   for (const auto& [from, to, a, b] :
        {std::tuple{pl.from1, pl.to1, "from", "to"}, std::tuple{pl.from2, pl.to2, "from2", "to2"}})
     if (to - from < kMinRelativeWidth * std::max(std::abs(from), std::abs(to)))

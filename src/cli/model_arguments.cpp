@@ -168,9 +168,12 @@ ParameterAxis AxisFromArguments(const Arguments& args, const char* key, const st
     if (axes[i].name() == name) return axes[i];
     list += (i == 0 ? "" : i + 1 == axes.size() ? " or " : ", ") + axes[i].name();
   }
-  throw UsageError("invalid value '" + name + "' for " + args.Source(key) + ": the " +
-                   (forced ? "forced oscillator's" : "oscillator's") + " parameters under the " +
-                   Name(law) + " law are " + list);
+  // Not given: the default came from elsewhere (a restart's continued parameter).
+  const std::string what =
+      args.Given(key) ? "invalid value '" + name + "' for " + args.Source(key)
+                      : "--" + std::string(key) + " defaults to '" + name + "' here (give another)";
+  throw UsageError(what + ": the " + (forced ? "forced oscillator's" : "oscillator's") +
+                   " parameters under the " + Name(law) + " law are " + list);
 }
 
 std::string DescribeModel(const Params& p) { return DescribeModel(p, "", 0, 0); }

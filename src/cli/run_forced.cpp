@@ -179,18 +179,8 @@ std::vector<ForcedPiece> TraceChosen(const BranchSetup& s, const StartChoice& c,
 
 std::string Describe(const BranchSetup& s) {
   std::string d = "law=" + std::string(Name(s.p.base.law));
-  for (const auto& name : ParameterNames(s.p.base.law)) {
-    if (name == "beta" || name == "v") {
-      const ParameterAxis a = name == "v" ? Parameter::kV : Parameter::kBeta;
-      if (a == s.axis) {
-        d += " " + name + "=[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]";
-        continue;
-      }
-    }
-    d += " " + name + "=" + FormatNumber(GetParameter(s.p.base, name));
-  }
-  for (ParameterAxis a : {Parameter::kForce, Parameter::kOmega})
-    d += std::string(" ") + a.name() + "=" +
+  for (const ParameterAxis& a : ParameterAxes(s.p.base.law, true))
+    d += " " + a.name() + "=" +
          (a == s.axis ? "[" + FormatNumber(s.from) + ", " + FormatNumber(s.to) + "]"
                       : FormatNumber(a.Get(s.p)));
   return d;

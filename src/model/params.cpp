@@ -60,9 +60,10 @@ std::vector<std::string> AllParameterNames() {
   return names;
 }
 
-std::string ParameterNameList() {
+namespace {
+// "beta, v, ... or k5": the first n names of EnumNames<Parameter>.
+std::string NameList(size_t n) {
   std::string list;
-  const size_t n = kBeltParameters;
   for (size_t i = 0; i < n; ++i)
     list += std::string(i == 0       ? ""
                         : i + 1 == n ? " or "
@@ -70,6 +71,9 @@ std::string ParameterNameList() {
             EnumNames<Parameter>::kTable[i].name;
   return list;
 }
+}  // namespace
+
+std::string ParameterNameList() { return NameList(kBeltParameters); }
 
 double Params::*ParameterMember(const std::string& name) {
   Parameter p;
@@ -102,6 +106,7 @@ std::string QuinticError(const Params& p) {
 }  // namespace
 
 ParameterRange DefaultRange(const Params& base, const ParameterAxis& axis) {
+  if (axis.forcing()) throw InvalidArgument(AxisError(axis, base.law));
   const double x = axis.Get(base);
   switch (axis.id()) {
     case Parameter::kBeta:
@@ -144,7 +149,7 @@ ParameterRange RangeFromPoint(const Params& at, const ParameterAxis& axis) {
 ParameterAxis::ParameterAxis(const std::string& name) {
   if (!FromName(name, &id_))
     throw InvalidArgument("unknown parameter '" + name + "' (expected one of " +
-                          ParameterNameList() + ", force or omega)");
+                          NameList(NameCount<Parameter>()) + ")");
   member_ = IsForcing(id_) ? nullptr : ParameterMember(id_);
 }
 

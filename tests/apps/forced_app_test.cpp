@@ -68,6 +68,7 @@ TEST_F(ForcedApp, ContinuesAParameterOfTheLaw) {
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
   EXPECT_EQ(t.meta.at("continued"), "mu_k");
+  EXPECT_TRUE(tu::Contains(t.meta.at("model"), " mu_k=[0.3, 0.05] ")) << t.meta.at("model");
   const auto mu = std::find(t.columns.begin(), t.columns.end(), "mu_k");
   const auto x_max = std::find(t.columns.begin(), t.columns.end(), "x_max");
   ASSERT_TRUE(mu != t.columns.end() && x_max != t.columns.end());
