@@ -243,7 +243,11 @@ def _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout, worke
     futures = []
     try:
         n = len(bounds)
-        futures = client.map(_run_chunk, [fn] * n, [batch] * n, [axes] * n,
+        # The axes (grid and sample columns) go to every worker once: passed to
+        # each task, they were pickled per task and held by the scheduler, whose
+        # memory then grew with tasks x sample size (220 MB at 10^7 points).
+        shared = client.scatter(axes, broadcast=True, hash=False)
+        futures = client.map(_run_chunk, [fn] * n, [batch] * n, [shared] * n,
                              [b[0] for b in bounds], [b[1] for b in bounds], pure=False)
         _gather(client, futures, consume, timeout, worker_timeout)
         return len(client.scheduler_info()["workers"])

@@ -261,6 +261,19 @@ r = stickslip.read_sweep(sys.argv[2])
 print(len(r), resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
 """
 
+# On a LocalCluster (its scheduler lives in this process): 100 tasks over a
+# sample of n draws. Passed to every task, the sample was pickled per task and
+# held by the scheduler: 100 x 8 MB at n = 1e6.
+DASK_MEMORY_SCRIPT = """
+import resource, sys, numpy as np, stickslip
+sys.path.insert(0, {here!r})
+from test_sweep import cheap
+n = int(sys.argv[1])
+sample = {{"mu_s": np.linspace(0.35, 0.45, n)}}
+stickslip.sweep(cheap, {{"v": [0.2]}}, sample, chunk_size=n // 100, out=sys.argv[2])
+print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+"""
+
 
 class Stream(unittest.TestCase):
     """sweep(out=...) streams to one HDF5 file (python3-h5py); progress."""
@@ -347,6 +360,21 @@ class Stream(unittest.TestCase):
         print(f"[ measured ] peak RSS {peak[200000]:.1f} MB at 2e5 points, "
               f"{peak[2000000]:.1f} MB at 2e6")
         self.assertLess(peak[2000000] - peak[200000], 20)
+
+    def test_memory_on_dask_does_not_grow_with_tasks_times_the_sample(self):
+        import subprocess
+        import sys
+        script = DASK_MEMORY_SCRIPT.format(here=os.path.dirname(os.path.abspath(__file__)))
+        peak = {}
+        for n in (100000, 1000000):
+            out = subprocess.run([sys.executable, "-c", script, str(n),
+                                  os.path.join(self.dir, f"d{n}.h5")],
+                                 capture_output=True, text=True, check=True)
+            peak[n] = int(out.stdout.split()[-1]) / 1024
+        print(f"[ measured ] LocalCluster, 100 tasks: peak RSS {peak[100000]:.1f} MB with a "
+              f"1e5-draw sample, {peak[1000000]:.1f} MB with 1e6 draws")
+        # The sample itself is 8 MB; per task it was 800 MB.
+        self.assertLess(peak[1000000] - peak[100000], 60)
 
 
 class _Future:
