@@ -5,9 +5,10 @@ mu_s ~ N(0.4, 0.02^2) x SPEEDS belt speeds, as examples/python/sweep.py.
     PYTHONPATH=build/python /usr/bin/python3 bench/sweep_scale.py DRAWS SPEEDS \\
         [dask|serial [CHUNK]]
 
-Prints the wall time per point, the steady time per point (from the first
-chunk's arrival to the last: the cluster's start left out), the parent's peak
-RSS and the CPU of the parent and of its reaped workers."""
+Prints the wall time per point, the steady time per point (the slope of the
+seconds against the points done, fitted by least squares over every chunk's
+arrival after the first: the cluster's start left out), the parent's peak RSS
+and the CPU of the parent and of its reaped workers."""
 import os
 import resource
 import sys
@@ -26,12 +27,10 @@ def main():
     rng = np.random.default_rng(1)
     grid = {"v": np.linspace(0.05, 0.45, speeds)}
     sample = {"mu_s": rng.normal(0.4, 0.02, draws)}
-    seen = {}
+    arrivals = []
 
     def progress(points, total, seconds):
-        seen.setdefault("t0", seconds)
-        seen.setdefault("p0", points)
-        seen["t1"] = seconds
+        arrivals.append((points, seconds))
 
     with tempfile.TemporaryDirectory() as d:
         start = time.perf_counter()
@@ -39,7 +38,8 @@ def main():
                         progress=progress, scheduler=scheduler, chunk_size=chunk)
         wall = time.perf_counter() - start
     n = draws * speeds
-    steady = (seen["t1"] - seen["t0"]) / max(1, n - seen["p0"])
+    p, s = np.array(arrivals[1:]).T
+    steady = np.polyfit(p, s, 1)[0] if p.size > 1 else float("nan")
     t = os.times()
     print(f"{n} points: wall {wall:.2f} s, {wall / n * 1e6:.3f} us/point; steady "
           f"{steady * 1e6:.3f} us/point; parent peak RSS "

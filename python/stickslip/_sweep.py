@@ -229,6 +229,10 @@ def _gather(client, futures, consume, timeout, worker_timeout):
         time.sleep(0.05)
 
 
+def _identity(x):
+    return x
+
+
 def _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout, worker_timeout):
     """Runs the chunks on Dask; returns the number of workers."""
     from dask.distributed import Client, LocalCluster  # Debian: python3-distributed
@@ -243,10 +247,12 @@ def _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout, worke
     futures = []
     try:
         n = len(bounds)
-        # The axes (grid and sample columns) go to every worker once: passed to
-        # each task, they were pickled per task and held by the scheduler, whose
-        # memory then grew with tasks x sample size (220 MB at 10^7 points).
-        shared = client.scatter(axes, broadcast=True, hash=False)
+        # The axes (grid and sample columns) are one task's result that every
+        # chunk depends on: passed to each task, they were pickled per task and
+        # held by the scheduler, whose memory grew with tasks x sample size (220
+        # MB at 10^7 points). A task, not client.scatter: scatter needs a worker
+        # now, and its data is lost with the worker; a task is computed again.
+        shared = client.submit(_identity, axes, pure=False)
         futures = client.map(_run_chunk, [fn] * n, [batch] * n, [shared] * n,
                              [b[0] for b in bounds], [b[1] for b in bounds], pure=False)
         _gather(client, futures, consume, timeout, worker_timeout)
