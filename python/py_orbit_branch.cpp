@@ -44,8 +44,9 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
                           std::optional<int> turns, int contact) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
   if (contact < 0 || contact >= s.contacts() || (contact > 0 && name != "stick-exit"))
-    throw InvalidArgument("contact = " + std::to_string(contact) + ": a stick-exit section's, in [0, " +
-                          std::to_string(s.contacts() - 1) + "]");
+    throw InvalidArgument("contact = " + std::to_string(contact) +
+                          ": a stick-exit section's, in [0, " + std::to_string(s.contacts() - 1) +
+                          "]");
   if (turns && (*turns < 1 || s.clocks() != 1 || name != "stick-exit"))
     throw InvalidArgument("turns = " + std::to_string(*turns) +
                           ": a forced system's stick-exit section only, >= 1");
@@ -205,8 +206,17 @@ void BindOrbitBranch(py::module_& m) {
         "`state` (x, x'[, theta]) on `section` "
         "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit, after `turns` forcing "
         "periods (default m) on a forced system; 'xdot-falling': the "
-        "belt's x' = 0; `contact`: the stick-exit section's contact), continued in `parameter` from its value in `system` to `to`, with the "
+        "belt's x' = 0; `contact`: the stick-exit section's contact), continued in `parameter` "
+        "from its value in `system` to `to`, with the "
         "LP, PD, NS and SL points located (the one branch driver, C++ ContinueOrbits).");
+  // The same under the belt's name (issue 31 item 8), after the belt's
+  // continue_branch(params, param, from_, to, ...).
+  m.def("continue_branch", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
+        py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
+        py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
+        "continue_branch(system, parameter, state, to, section, ...): continue_orbits', for "
+        "any system.");
 }
 
 }  // namespace stickslip::python

@@ -271,6 +271,12 @@ void BindSystemRuns(py::module_& m) {
         "The periodic orbit of any system through the one near `state` on `section` (as "
         "continue_orbits'), by the one shooting (C++ Shooting::Find), with its monodromy and "
         "multipliers. NumericalError where Newton fails.");
+  // The same under the belt's name (issue 31 item 8): periodic_orbit(system, state, ...)
+  // for any system, after the belt's periodic_orbit(params, a_guess, ...).
+  m.def("periodic_orbit", &Orbit, py::arg("system"), py::arg("state"),
+        py::arg("section") = "stick-exit", py::arg("m") = 1, py::arg("turns") = none,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
+        "periodic_orbit(system, state, section, ...): system_orbit's, for any system.");
   m.def("steady_sliding", &Steady, py::arg("system"),
         "Steady sliding of any system with every contact slipping below (C++ SteadySliding): "
         "its state z and the Jacobian's eigenvalues, the largest real part first.");

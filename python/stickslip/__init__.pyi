@@ -617,9 +617,15 @@ def forced_basins(params: ForcedParams, nx: int = 41, ny: int = 41,
                   transient: Optional[int] = None, keep: Optional[int] = None,
                   max_period: Optional[int] = None, threads: int = 2,
                   rtol: Optional[float] = None, atol: Optional[float] = None) -> Dict[str, Any]: ...
+@overload
 def periodic_orbit(params: Params, a_guess: Optional[float] = None, floquet: bool = False,
                    rtol: Optional[float] = None, atol: Optional[float] = None,
                    integrator: IntegratorLike = None, method: MethodLike = None) -> Orbit: ...
+@overload
+def periodic_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m: int = 1,
+                   turns: Optional[int] = None, rtol: Optional[float] = None,
+                   atol: Optional[float] = None, contact: int = 0) -> SystemOrbit: ...
+@overload
 def continue_branch(params: Params, param: Optional[Parameter | str] = None, from_: Optional[float] = None,
                     to: Optional[float] = None, max_step: Optional[float] = None,
                     floquet: Optional[bool] = None, rtol: Optional[float] = None,
@@ -628,6 +634,12 @@ def continue_branch(params: Params, param: Optional[Parameter | str] = None, fro
                     options: Optional[ContinuationOptions] = None,
                     progress: Optional[Callable[[int, float, str, bool], Any]] = None
                     ) -> Branch: ...
+@overload
+def continue_branch(system: SystemLike, parameter: str, state: Any, to: float,
+                    section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
+                    max_amplitude: float = 1e3, max_step: Optional[float] = None,
+                    rtol: Optional[float] = None, atol: Optional[float] = None,
+                    contact: int = 0) -> OrbitBranch: ...
 def continue_physical(law: LawLike = "cubic", param: str = "belt_speed",
                       from_: Optional[float] = None, to: Optional[float] = None,
                       progress: Optional[Callable[[int, float, str, bool], Any]] = None,

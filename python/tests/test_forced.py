@@ -131,6 +131,21 @@ class Forced(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "'force' does not apply to the cubic law"):
             stickslip.continue_branch(belt, stickslip.Parameter.force)
 
+    def test_periodic_orbit_and_continue_branch_take_any_system(self):
+        # The belt's names with a system and its state (issue 31 item 8): the
+        # one shooting and the one branch driver, against Den Hartog's X.
+        p = den_hartog_params(2.0)
+        o = stickslip.periodic_orbit(p, [-1 / 3, 0.01, 0.0], section="stroboscopic")
+        self.assertEqual(type(o), stickslip.SystemOrbit)
+        self.assertAlmostEqual(o.hi[0], den_hartog(0.3, 1, 2.0), delta=1e-9)
+        b = stickslip.continue_branch(p, "omega", o.start, 2.5)
+        self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
+        self.assertAlmostEqual(b.p[-1], 2.5, delta=1e-12)
+        X = np.array([den_hartog(0.3, 1, w) for w in b.p])
+        np.testing.assert_allclose(b.hi[:, 0], X, atol=1e-9, rtol=0)
+        # The belt's own signatures stay.
+        self.assertEqual(type(stickslip.periodic_orbit(stickslip.Params())), stickslip.Orbit)
+
     def test_arrays_are_read_only_and_bad_input_raises(self):
         tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)
         for a in (tr.t, tr.x, tr.section_x, tr.mode):
