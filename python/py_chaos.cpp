@@ -200,6 +200,12 @@ void BindChaos(py::module_& m) {
         "index of its attractor (-1: failed) and its exponent; attractors as dicts (kind, m, "
         "sticks, sticks_per_period, x, xdot, lyapunov, starts). max_period defaults to min(16, "
         "keep / 2).");
+  // The belt's name for the forced oscillator too (issue 31 item 8), after basins(Params).
+  m.def("basins", &ForcedBasinsOf, py::arg("params"), py::arg("nx") = 41, py::arg("ny") = 41,
+        py::arg("x_range") = std::pair{-1.5, 1.5}, py::arg("xdot_range") = std::pair{-1.5, 1.5},
+        py::arg("transient") = none, py::arg("keep") = none, py::arg("max_period") = none,
+        py::arg("threads") = 2, py::arg("rtol") = none, py::arg("atol") = none,
+        "basins(ForcedParams, ...): forced_basins'.");
 }
 
 }  // namespace stickslip::python

@@ -266,6 +266,11 @@ void BindForced(py::module_& m) {
         py::arg("radius") = 0.0, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
         "Every periodic orbit found at one parameter point (m = 1..max_m), by shooting on the "
         "stroboscopic map and on the exit-phase map; a list of ForcedOrbit.");
+  // The belt's name for the forced oscillator too (issue 31 item 8), after periodic_orbits(Params).
+  m.def("periodic_orbits", &Scan, py::arg("params"), py::arg("max_m") = 4,
+        py::arg("max_sticks") = 4, py::arg("grid") = 5, py::arg("exit_samples") = 48,
+        py::arg("radius") = 0.0, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "periodic_orbits(ForcedParams, ...): find_forced_orbits'.");
 }
 
 }  // namespace stickslip::python

@@ -655,10 +655,22 @@ def orbits(params: ForcedParams, columns: Mapping[str, npt.ArrayLike], threads: 
            recurrence: float = 1e-3, rtol: Optional[float] = None, atol: Optional[float] = None,
            integrator: IntegratorLike = None,
            method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
+@overload
+def periodic_orbits(params: ForcedParams, max_m: int = 4, max_sticks: int = 4, grid: int = 5,
+                    exit_samples: int = 48, radius: float = 0.0, rtol: Optional[float] = None,
+                    atol: Optional[float] = None) -> List[ForcedOrbit]: ...
+@overload
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,
                     options: Optional[OrbitScanOptions] = None) -> PeriodicOrbits: ...
+@overload
+def basins(params: ForcedParams, nx: int = 41, ny: int = 41,
+           x_range: Tuple[float, float] = (-1.5, 1.5),
+           xdot_range: Tuple[float, float] = (-1.5, 1.5), transient: Optional[int] = None,
+           keep: Optional[int] = None, max_period: Optional[int] = None, threads: int = 2,
+           rtol: Optional[float] = None, atol: Optional[float] = None) -> Dict[str, Any]: ...
+@overload
 def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            x_range: Optional[Tuple[float, float]] = None,
            xdot_range: Optional[Tuple[float, float]] = None, t_cap: Optional[float] = None,

@@ -143,8 +143,17 @@ class Forced(unittest.TestCase):
         self.assertAlmostEqual(b.p[-1], 2.5, delta=1e-12)
         X = np.array([den_hartog(0.3, 1, w) for w in b.p])
         np.testing.assert_allclose(b.hi[:, 0], X, atol=1e-9, rtol=0)
+        # periodic_orbits and basins on the forced oscillator are its scan and basins.
+        found = stickslip.periodic_orbits(p, max_m=1)
+        self.assertEqual(len(found), 1)
+        self.assertAlmostEqual(found[0].x_max, den_hartog(0.3, 1, 2.0), delta=1e-9)
+        grid = dict(nx=3, ny=3, transient=20, keep=16)
+        self.assertEqual(list(stickslip.basins(p, **grid)["attractor"]),
+                         list(stickslip.forced_basins(p, **grid)["attractor"]))
         # The belt's own signatures stay.
         self.assertEqual(type(stickslip.periodic_orbit(stickslip.Params())), stickslip.Orbit)
+        self.assertEqual(type(stickslip.periodic_orbits(stickslip.Params())),
+                         stickslip.PeriodicOrbits)
 
     def test_arrays_are_read_only_and_bad_input_raises(self):
         tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)
