@@ -38,7 +38,7 @@ def main():
                         progress=progress, scheduler=scheduler, chunk_size=chunk)
         wall = time.perf_counter() - start
     n = draws * speeds
-    p, s = np.array(arrivals[1:]).T
+    p, s = np.array(arrivals[1:], dtype=float).reshape(-1, 2).T
     steady = np.polyfit(p, s, 1)[0] if p.size > 1 else float("nan")
     t = os.times()
     print(f"{n} points: wall {wall:.2f} s, {wall / n * 1e6:.3f} us/point; steady "

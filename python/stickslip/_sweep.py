@@ -233,6 +233,27 @@ def _identity(x):
     return x
 
 
+def _shared_axes(client, axes, worker_timeout):
+    """The axes (grid and sample columns) as one task's result that every chunk
+    depends on. Passed to each task, they were pickled per task and held by the
+    scheduler, whose memory grew with tasks x sample size (220 MB at 10^7
+    points). A task, not client.scatter: scatter needs a worker now and loses
+    its data with the worker; a task is computed again. Once computed, it is
+    copied to every worker: a chunk then goes to any free worker, not only to
+    the one holding the axes (without work stealing all went there)."""
+    import warnings
+    from dask.distributed import wait
+    with warnings.catch_warnings():  # Dask's advice to scatter a large argument
+        warnings.filterwarnings("ignore", message="Large object of size", category=UserWarning)
+        shared = client.submit(_identity, axes, pure=False)
+    try:
+        wait(shared, timeout=worker_timeout)
+        client.replicate(shared)
+    except Exception:  # no worker yet, or one lost: _gather waits and names the points
+        pass
+    return shared
+
+
 def _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout, worker_timeout):
     """Runs the chunks on Dask; returns the number of workers."""
     from dask.distributed import Client, LocalCluster  # Debian: python3-distributed
@@ -247,12 +268,7 @@ def _dask(fn, batch, axes, bounds, consume, scheduler, n_workers, timeout, worke
     futures = []
     try:
         n = len(bounds)
-        # The axes (grid and sample columns) are one task's result that every
-        # chunk depends on: passed to each task, they were pickled per task and
-        # held by the scheduler, whose memory grew with tasks x sample size (220
-        # MB at 10^7 points). A task, not client.scatter: scatter needs a worker
-        # now, and its data is lost with the worker; a task is computed again.
-        shared = client.submit(_identity, axes, pure=False)
+        shared = _shared_axes(client, axes, worker_timeout)
         futures = client.map(_run_chunk, [fn] * n, [batch] * n, [shared] * n,
                              [b[0] for b in bounds], [b[1] for b in bounds], pure=False)
         _gather(client, futures, consume, timeout, worker_timeout)

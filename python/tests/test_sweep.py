@@ -274,6 +274,29 @@ stickslip.sweep(cheap, {{"v": [0.2]}}, sample, chunk_size=n // 100, out=sys.argv
 print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
 """
 
+# Without work stealing the scheduler places a task where its inputs are: the
+# chunks, which all take the shared axes, must still spread over both workers.
+SPREAD_SCRIPT = """
+import os, sys, time, numpy as np
+os.environ["DASK_DISTRIBUTED__SCHEDULER__WORK_STEALING"] = "False"
+sys.path.insert(0, {here!r})
+import stickslip
+from test_sweep import which_worker
+if __name__ == "__main__":
+    r = stickslip.sweep(which_worker, {{"v": np.linspace(0.1, 0.4, 8)}}, chunk_size=2)
+    print(len(set(r["pid"].tolist())))
+"""
+
+
+def which_worker(columns):
+    """Each chunk's worker process, after half a second of work."""
+    import time
+    time.sleep(0.5)
+    return {"pid": np.full(columns["v"].size, float(os.getpid()))}
+
+
+which_worker.batch = True
+
 
 class Stream(unittest.TestCase):
     """sweep(out=...) streams to one HDF5 file (python3-h5py); progress."""
@@ -360,6 +383,15 @@ class Stream(unittest.TestCase):
         print(f"[ measured ] peak RSS {peak[200000]:.1f} MB at 2e5 points, "
               f"{peak[2000000]:.1f} MB at 2e6")
         self.assertLess(peak[2000000] - peak[200000], 20)
+
+    def test_chunks_spread_over_the_workers_without_work_stealing(self):
+        import subprocess
+        import sys
+        path = os.path.join(self.dir, "spread.py")
+        with open(path, "w") as f:
+            f.write(SPREAD_SCRIPT.format(here=os.path.dirname(os.path.abspath(__file__))))
+        out = subprocess.run([sys.executable, path], capture_output=True, text=True, check=True)
+        self.assertEqual(out.stdout.split()[-1], "2", out.stderr[-2000:])
 
     def test_memory_on_dask_does_not_grow_with_tasks_times_the_sample(self):
         import subprocess

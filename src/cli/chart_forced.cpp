@@ -25,10 +25,11 @@ Setup Configure(const Arguments& args) {
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
-  if (args.Given("restart"))  // ss_chart's restarts are a belt run's GR or HB points
-    throw UsageError(args.Source("restart") +
-                     ": the forced chart starts from no point; give the forced run's law, "
-                     "parameters, --force and --omega");
+  for (const char* key : {"restart", "point"})  // a belt run's GR or HB points only
+    if (args.Given(key))
+      throw UsageError(args.Source(key) +
+                       ": the forced chart starts from no point; give the forced run's law, "
+                       "parameters, --force and --omega");
   Setup s;
   s.p.base = UncheckedModelFromArguments(args);
   s.p.force = args.Number("force", 0.3);

@@ -10,8 +10,8 @@ void AddRestartOptions(po::options_description& d, bool systems) {
       "restart", Value()->value_name("DIR"),
       systems ? "start from a point of the ss_continue run in DIR, belt, forced or --system (its "
                 "system, parameters and solver options are the defaults)"
-              : "start from a point of the ss_continue run in DIR, belt or forced (its parameters "
-                "and solver options are the defaults)")(
+              : "start from a GR or HB point of the belt's ss_continue run in DIR (its parameters "
+                "and solver options are the defaults; the forced chart takes none)")(
       "point", Value()->value_name("LABEL"),
       "with --restart: the point, a label of its special_points.tsv (GR1, HB1, LP1, PD1, CR1, "
       "CL1, ...) or a point number of its branch.tsv");

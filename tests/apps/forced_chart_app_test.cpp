@@ -74,6 +74,7 @@ TEST_F(ForcedChartAppTest, BadInputExits2NamingTheOption) {
       {base + "--param2 force --max_m 9", "--max_m"},
       {base + "--param2 force --max_m 0", "--max_m"},
       {base + "--param2 force --restart plots --point 2", "--restart"},  // was ignored
+      {base + "--param2 force --point 2", "--point"},
       {"--param v --param2 beta --seed_lines 2", "--seed_lines"},  // a belt chart: forced only
       {"--param v --param2 beta --max_m 4", "--max_m"},
   };
