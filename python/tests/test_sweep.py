@@ -298,6 +298,16 @@ def which_worker(columns):
 which_worker.batch = True
 
 
+def run_script(template, *args):
+    """A script of this file's templates, run by this Python: its stdout's words."""
+    import subprocess
+    import sys
+    script = template.format(here=os.path.dirname(os.path.abspath(__file__)))
+    out = subprocess.run([sys.executable, "-c", script, *map(str, args)], capture_output=True,
+                         text=True, check=True)
+    return out.stdout.split()
+
+
 class Stream(unittest.TestCase):
     """sweep(out=...) streams to one HDF5 file (python3-h5py); progress."""
 
@@ -368,15 +378,9 @@ class Stream(unittest.TestCase):
                          r"\d+ s left\n$")
 
     def test_memory_does_not_grow_with_the_points(self):
-        import subprocess
-        import sys
-        script = MEMORY_SCRIPT.format(here=os.path.dirname(os.path.abspath(__file__)))
         peak = {}
         for n in (200000, 2000000):
-            out = subprocess.run([sys.executable, "-c", script, str(n),
-                                  os.path.join(self.dir, f"{n}.h5")],
-                                 capture_output=True, text=True, check=True)
-            rows, kb = map(int, out.stdout.split())
+            rows, kb = map(int, run_script(MEMORY_SCRIPT, n, os.path.join(self.dir, f"{n}.h5")))
             self.assertEqual(rows, n)
             peak[n] = kb / 1024
         # In memory the 2e6-point table alone is 2e6 x 5 x 8 B = 76 MB.
@@ -385,24 +389,13 @@ class Stream(unittest.TestCase):
         self.assertLess(peak[2000000] - peak[200000], 20)
 
     def test_chunks_spread_over_the_workers_without_work_stealing(self):
-        import subprocess
-        import sys
-        path = os.path.join(self.dir, "spread.py")
-        with open(path, "w") as f:
-            f.write(SPREAD_SCRIPT.format(here=os.path.dirname(os.path.abspath(__file__))))
-        out = subprocess.run([sys.executable, path], capture_output=True, text=True, check=True)
-        self.assertEqual(out.stdout.split()[-1], "2", out.stderr[-2000:])
+        self.assertEqual(run_script(SPREAD_SCRIPT)[-1], "2")
 
     def test_memory_on_dask_does_not_grow_with_tasks_times_the_sample(self):
-        import subprocess
-        import sys
-        script = DASK_MEMORY_SCRIPT.format(here=os.path.dirname(os.path.abspath(__file__)))
         peak = {}
         for n in (100000, 1000000):
-            out = subprocess.run([sys.executable, "-c", script, str(n),
-                                  os.path.join(self.dir, f"d{n}.h5")],
-                                 capture_output=True, text=True, check=True)
-            peak[n] = int(out.stdout.split()[-1]) / 1024
+            kb = run_script(DASK_MEMORY_SCRIPT, n, os.path.join(self.dir, f"d{n}.h5"))[-1]
+            peak[n] = int(kb) / 1024
         print(f"[ measured ] LocalCluster, 100 tasks: peak RSS {peak[100000]:.1f} MB with a "
               f"1e5-draw sample, {peak[1000000]:.1f} MB with 1e6 draws")
         # The sample itself is 8 MB; per task it was 800 MB.

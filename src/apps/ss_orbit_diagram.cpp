@@ -90,23 +90,13 @@ Setup Configure(const cli::Arguments& args) {
   s.o.to = args.Number("to", range.to);
   // Every given value is checked, the swept one too (--omega -1 with --param
   // omega); a swept one not given is checked at --from and --to below only.
-  const std::string given = args.Given(s.o.axis.name()) ? ss::ValidationError(s.p) : "";
-  if (!given.empty()) {
-    const std::string key = given.substr(0, given.find(' '));
-    throw cli::UsageError("invalid forced model: " + given +
-                          (args.Given(key) ? " (from " + args.Origin(key) + ")" : ""));
-  }
+  if (args.Given(s.o.axis.name())) cli::CheckForcedModel(args, s.p);
   if (s.o.from == s.o.to)
     throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");
   for (const char* end : {"from", "to"}) {
     ss::ForcedParams at = s.p;
     s.o.axis.Set(at, end[0] == 'f' ? s.o.from : s.o.to);
-    const std::string e = ss::ValidationError(at);
-    const std::string key = e.substr(0, e.find(' '));
-    if (!e.empty())
-      throw cli::UsageError(
-          "invalid forced model at --" + std::string(end) + ": " + e +
-          (key != s.o.axis.name() && args.Given(key) ? " (from " + args.Origin(key) + ")" : ""));
+    cli::CheckForcedModel(args, at, " at --" + std::string(end), s.o.axis.name());
   }
   s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
   s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));

@@ -176,6 +176,15 @@ ParameterAxis AxisFromArguments(const Arguments& args, const char* key, const st
                    " parameters under the " + Name(law) + " law are " + list);
 }
 
+void CheckForcedModel(const Arguments& args, const ForcedParams& p, const std::string& where,
+                      const std::string& swept) {
+  const std::string err = ValidationError(p);
+  if (err.empty()) return;
+  const std::string name = err.substr(0, err.find(' '));
+  throw UsageError("invalid forced model" + where + ": " + err +
+                   (name != swept && args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
+}
+
 std::string DescribeModel(const Params& p) { return DescribeModel(p, "", 0, 0); }
 
 std::string DescribeModel(const Params& p, const std::string& continued, double from, double to) {

@@ -33,14 +33,6 @@ struct BranchSetup {
   StartChoice choice;                    // --all, --m, --point without --restart
 };
 
-void Check(const Arguments& args, const ForcedParams& p, const std::string& what) {
-  const std::string err = ValidationError(p);
-  if (err.empty()) return;
-  const std::string name = err.substr(0, err.find(' '));
-  throw UsageError("invalid forced model" + what + ": " + err +
-                   (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
-}
-
 // --switch at a PD point (AUTO-07p's ISW = -1): the 2m branch starts at the
 // point and runs to whichever of --from, --to (default: the axis's range) it
 // opens toward.
@@ -98,11 +90,11 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
     throw UsageError(args.Source("to") + " = " + FormatNumber(s.to) + " equals the start");
   ForcedParams at = s.p;
   if (!args.Given(s.axis.name())) s.axis.Set(at, s.from);
-  Check(args, at, "");
+  CheckForcedModel(args, at);
   s.axis.Set(at, s.from);
-  Check(args, at, " at --from");
+  CheckForcedModel(args, at, " at --from");
   s.axis.Set(at, s.to);
-  Check(args, at, " at --to");
+  CheckForcedModel(args, at, " at --to");
   s.flow = FlowOptionsFromArguments(args, restart ? restart->flow : FlowOptions());  // validated
   // The forced flow's own defaults (1e-12): at the belt's rtol 1e-11 the
   // corrector (tol 1e-11) stalls on the flow's noise (measured: step-too-small).

@@ -134,12 +134,7 @@ ForcedInputs ForcedInputsFromArguments(const Arguments& args) {
   p.base = UncheckedModelFromArguments(args);
   p.force = args.Number("force", 0);
   p.omega = args.Number("omega", 1);
-  const std::string err = ValidationError(p);
-  if (!err.empty()) {
-    const std::string name = err.substr(0, err.find(' '));
-    throw UsageError("invalid forced model: " + err +
-                     (args.Given(name) ? " (from " + args.Origin(name) + ")" : ""));
-  }
+  CheckForcedModel(args, p);
   FlowOptions& flow = in.shown;
   flow = FlowOptionsFromArguments(args);
   if (flow.integrator != Integrator::kTaylor)
