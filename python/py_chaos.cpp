@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "py_forced.hpp"
-#include "stickslip/basin/forced_basin.hpp"
+#include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/report.hpp"
@@ -40,9 +40,9 @@ struct Points {
   std::vector<double> x, xdot, exit_phase;
   std::vector<int> sticks, exits;
   std::vector<bool> stuck;
-  void Add(const StroboscopicRun& r) {
+  void Add(const SectionRun& r) {
     for (const SectionPoint& q : r.points) {
-      x.push_back(q.x), xdot.push_back(q.xdot), stuck.push_back(q.mode == Mode::kStick);
+      x.push_back(q.z[0]), xdot.push_back(q.z[1]), stuck.push_back(q.mode[0] == Mode::kStick);
       sticks.push_back(q.sticks), exits.push_back(q.exits);
       exit_phase.push_back(q.first_exit_phase);
     }
@@ -67,7 +67,7 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
   if (!(max_amplitude > 0))
     throw InvalidArgument("max_amplitude = " + FormatNumber(max_amplitude) + " must be > 0");
   Interrupt interrupt;
-  StroboscopicRun r;
+  SectionRun r;
   {
     py::gil_scoped_release nogil;
     r = IterateStroboscopic(
@@ -135,33 +135,35 @@ py::dict ForcedBasinsOf(const ForcedParams& p, int nx, int ny, std::pair<double,
                         std::optional<int> keep, std::optional<int> max_period, int threads,
                         std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);
-  ForcedBasinOptions o;
-  o.nx = nx, o.ny = ny, o.x_lo = x_range.first, o.x_hi = x_range.second;
-  o.xdot_lo = xdot_range.first, o.xdot_hi = xdot_range.second;
+  AttractorOptions o;
+  StartSlice& g = o.slice;
+  g.n = {nx, ny};
+  g.lo = {x_range.first, xdot_range.first}, g.hi = {x_range.second, xdot_range.second};
   o.threads = threads;
   o.iterate = Iterate(o.iterate, transient, keep, rtol, atol);
   o.max_period = max_period.value_or(std::clamp(o.iterate.keep / 2, 1, o.max_period));
-  Check(o.ValidationError());
+  Check(o.ValidationError(model));
   Interrupt interrupt;
   o.cancelled = [&] { return interrupt(); };
-  ForcedBasins r;
+  AttractorBasins r;
   {
     py::gil_scoped_release nogil;
-    r = ClassifyForcedBasins(model, o);
+    r = ClassifyAttractors(model, o);
   }
   interrupt.RaiseIfInterrupted();
   if (!r.error.empty()) RaiseNumerical("forced_basins: " + r.error);
   if (r.cancelled) RaiseNumerical("forced_basins: cancelled");
   std::vector<double> x, xd, lyap;
   std::vector<int> att;
-  for (const ForcedBasinStart& s : r.starts)
-    x.push_back(s.x), xd.push_back(s.xdot), att.push_back(s.attractor), lyap.push_back(s.lyapunov);
+  for (const AttractorStart& s : r.starts)
+    x.push_back(s.at[0]), xd.push_back(s.at[1]), att.push_back(s.attractor),
+        lyap.push_back(s.lyapunov);
   py::list attractors;
   for (const Attractor& a : r.attractors) {
     py::dict q;
     q["kind"] = Name(a.kind), q["m"] = a.m, q["sticks"] = a.sticks;
     q["sticks_per_period"] = a.sticks_per_period;
-    q["x"] = a.x, q["xdot"] = a.xdot, q["lyapunov"] = a.lyapunov, q["starts"] = a.starts;
+    q["x"] = a.z[0], q["xdot"] = a.z[1], q["lyapunov"] = a.lyapunov, q["starts"] = a.starts;
     std::vector<double> cx, cxd;  // periodic: the cycle's m section points
     for (const auto& c : a.cycle) cx.push_back(c[0]), cxd.push_back(c[1]);
     q["cycle_x"] = ReadOnly(cx), q["cycle_xdot"] = ReadOnly(cxd);

@@ -1,4 +1,4 @@
-// The stroboscopic map's iterates and the largest Lyapunov exponent
+// Iterates of a Poincare map and the largest Lyapunov exponent
 // (chaos/lyapunov.hpp; docs/theory.md "Lyapunov exponents").
 #include "stickslip/chaos/lyapunov.hpp"
 
@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
 namespace stickslip {
@@ -22,44 +23,52 @@ std::string LyapunovOptions::ValidationError() const {
     return "align = " + std::to_string(align) + " must lie in [0, transient]";
   if (batches < 1 || batches > keep)
     return "batches = " + std::to_string(batches) + " must lie in [1, keep]";
+  if (!(max_return_time > 0) || !std::isfinite(max_return_time))
+    return "max_return_time = " + Num(max_return_time) + " must be finite and > 0";
   return "";
 }
 
 namespace {
 
-// Accumulates ln|J_k M|_F per kept period into batch sums.
+// Accumulates ln|J_k M|_F per kept return into batch sums.
 class TangentProduct {
  public:
-  explicit TangentProduct(int keep, int batches) : keep_(keep), sums_(batches, 0.0) {}
-  // One period's Jacobian; `record` adds its growth to the kept sum.
-  void Apply(const Mat2& J, bool record) {
-    Mat2 next = J * m_;
-    double norm = next.norm();
+  TangentProduct(int n, int keep, int batches)
+      : keep_(keep), sums_(batches, 0.0), times_(batches, 0.0) {
+    m_ = Eigen::MatrixXd::Identity(n, n) / std::sqrt(static_cast<double>(n));
+  }
+  // One return's Jacobian over time dt; `record` adds its growth to the kept sum.
+  void Apply(const Eigen::MatrixXd& J, double dt, bool record) {
+    next_.noalias() = J * m_;
+    double norm = next_.norm();
     double growth = std::log(norm);
     if (!(norm > 0)) {  // collapsed onto zero: count a factor DBL_EPSILON, reseed with J
       ++collapses_;
       growth = std::log(DBL_EPSILON);
-      next = J;
-      norm = next.norm();
-      if (!(norm > 0)) next = Mat2::Identity(), norm = next.norm();
+      next_ = J;
+      norm = next_.norm();
+      if (!(norm > 0)) next_.setIdentity(), norm = next_.norm();
     }
-    m_ = next / norm;
+    m_ = next_ / norm;
     if (!record) return;
-    sums_[static_cast<size_t>(recorded_) * sums_.size() / keep_] += growth;
+    const size_t b = static_cast<size_t>(recorded_) * sums_.size() / keep_;
+    sums_[b] += growth;
+    times_[b] += dt;
     ++recorded_;
   }
-  // The exponent per unit time and the standard error of the batch means.
+  // The exponent per unit time and the standard error of the batch means; a
+  // fixed return time `period` > 0 counts returns x period (the stroboscopic map).
   void Result(double period, double* lambda, double* err) const {
     const int b = static_cast<int>(sums_.size());
-    double total = 0;
-    for (double s : sums_) total += s;
-    *lambda = total / (recorded_ * period);
+    double total = 0, time = 0;
+    for (int i = 0; i < b; ++i) total += sums_[i], time += times_[i];
+    *lambda = total / (period > 0 ? recorded_ * period : time);
     *err = 0;
     if (b < 2) return;
     double var = 0;
     for (int i = 0; i < b; ++i) {
-      const int n = (i + 1) * keep_ / b - i * keep_ / b;  // periods in batch i
-      const double d = sums_[i] / (n * period) - *lambda;
+      const int n = (i + 1) * keep_ / b - i * keep_ / b;  // returns in batch i
+      const double d = sums_[i] / (period > 0 ? n * period : times_[i]) - *lambda;
       var += d * d;
     }
     *err = std::sqrt(var / (b - 1) / b);
@@ -68,72 +77,184 @@ class TangentProduct {
 
  private:
   int keep_;
-  std::vector<double> sums_;
-  Mat2 m_ = Mat2::Identity() / std::sqrt(2.0);
+  std::vector<double> sums_, times_;
+  Eigen::MatrixXd m_, next_;
   int recorded_ = 0, collapses_ = 0;
 };
 
+// The first component with |z_i| above a (or not finite), else -1.
+int Diverged(const Eigen::VectorXd& z, double a) {
+  for (int i = 0; i < z.size(); ++i)
+    if (!(std::abs(z[i]) <= a)) return i;
+  return -1;
+}
+
+// The kept point at z after the return r (its switches recorded).
+SectionPoint Point(const System& s, const FlowPoint& z, const FlowRun& r,
+                   const std::vector<FlowSwitch>& switches, double dt) {
+  const int nt = s.tangent_dimension();
+  SectionPoint p;
+  p.z = z.z.head(nt);
+  p.mode = z.mode;
+  p.sticks = r.sticks, p.exits = r.exits;
+  p.dt = dt;
+  if (s.clocks() > 0)
+    for (const FlowSwitch& ev : switches)
+      if (ev.kind == SwitchKind::kStickOut) {
+        p.first_exit_phase = static_cast<float>(std::fmod(ev.z[nt], 2 * M_PI));
+        break;
+      }
+  return p;
+}
+
+// The map's Jacobian on the tangent block over one return: Phi on a time
+// section; (I - f g^T / (g . f)) Phi at the arrival on a surface (shooting.hpp).
+void ReturnJacobian(const System& s, const PoincareSection& p, const FlowRun& r, Eigen::VectorXd& f,
+                    Eigen::VectorXd& g, Eigen::MatrixXd* J) {
+  if (p.kind == SectionKind::kTime) {
+    *J = r.jacobian;
+    return;
+  }
+  const int n = s.dimension();
+  f.resize(n);
+  s.Field(r.end.mode, r.end.z, f);
+  g.setZero(n);
+  for (int t = 0; t < p.surface.g.size; ++t)
+    g[p.surface.g.terms[t].index] += p.surface.g.terms[t].weight;
+  *J = r.jacobian - f * (g.transpose() * r.jacobian) / g.dot(f);
+}
+
+// A contact that sticks holds h = 0: exactly so where one component carries
+// its velocity (the stroboscopic map's restart, as the flow's stick phase).
+void OntoSticking(const System& s, FlowPoint* z) {
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (z->mode[i] != Mode::kStick) continue;
+    const ContactVelocity c = s.Contact(i);
+    if (c.size == 1 && c.terms[0].weight == 1) z->z[c.terms[0].index] = c.speed;
+  }
+}
+
+// Whether the tangent field vanishes at z (to tol relative): a rest point.
+bool AtRest(const System& s, const FlowPoint& z, double tol) {
+  Eigen::VectorXd f(s.dimension());
+  s.Field(z.mode, z.z, f);
+  const int nt = s.tangent_dimension();
+  return f.head(nt).lpNorm<Eigen::Infinity>() <= tol * (1 + z.z.head(nt).lpNorm<Eigen::Infinity>());
+}
+
+void Check(const System& s, const FlowPoint& start, const PoincareSection& p,
+           const LyapunovOptions& o) {
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  if (start.z.size() != s.dimension())
+    throw InvalidArgument("the start has " + std::to_string(start.z.size()) +
+                          " components, the system " + std::to_string(s.dimension()));
+  if (p.kind == SectionKind::kStickExit)
+    throw InvalidArgument("a map is iterated on a time or surface section, not a stick exit");
+  if (p.kind == SectionKind::kTime && !(p.time > 0 && std::isfinite(p.time)))
+    throw InvalidArgument("the section's time = " + Num(p.time) + " must be finite and > 0");
+  if (p.kind == SectionKind::kSurface && s.clocks() > 0)
+    throw InvalidArgument("a system with a clock is iterated on its stroboscopic section");
+}
+
+// The end of return k that is not a return: the run's status and message.
+void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double rest_tol,
+                SectionRun* run) {
+  const std::string where =
+      std::string(timed ? " (period " : " (return ") + std::to_string(k) + ")";
+  if (!timed && r.status == FlowStatus::kTimeLimit) {
+    const bool rest = AtRest(s, r.end, rest_tol);
+    run->status = rest ? LyapunovStatus::kRest : LyapunovStatus::kNoReturn;
+    run->message = (rest ? "at rest at t = " : "no return by t = ") + Num(r.end.t) + where;
+    return;
+  }
+  run->status =
+      r.status == FlowStatus::kCancelled ? LyapunovStatus::kCancelled : LyapunovStatus::kFlowFailed;
+  run->message = r.message + where;
+}
+
 }  // namespace
 
-StroboscopicRun IterateStroboscopic(const ForcedModel& model, const FlowPoint& start,
-                                    const LyapunovOptions& options,
-                                    const std::function<bool()>& cancelled, double max_amplitude) {
-  const std::string e = options.ValidationError();
-  if (!e.empty()) throw InvalidArgument(e);
-  // A flow of its own: `cancelled` may run another forced tool on this thread.
-  Flow flow(model, options.flow);
-  const double T = model.period(), w = model.omega();
-  StroboscopicRun run;
-  run.points.reserve(options.keep);
-  TangentProduct tangent(options.keep, options.batches);
+Section MaximaSection(const System& s) {
+  const int d = s.DerivativeOf(0);
+  if (d < 0)
+    throw InvalidArgument("component " + s.StateName(0) +
+                          " has no velocity component: give the section");
+  Section x;
+  x.g.terms[0] = {d, 1.0};
+  x.g.size = 1;
+  x.direction = -1;
+  return x;
+}
+
+SectionRun IterateSection(const System& s, const FlowPoint& start, const PoincareSection& section,
+                          const LyapunovOptions& o, const std::function<bool()>& cancelled,
+                          double max_amplitude) {
+  Check(s, start, section, o);
+  // A flow of its own: `cancelled` may run another tool on this thread.
+  Flow flow(s, o.flow);
+  const bool timed = section.kind == SectionKind::kTime;
+  const int n = s.dimension(), nt = s.tangent_dimension();
+  const Eigen::VectorXd clocks = start.z.tail(n - nt);
+  const double rest_tol = Tolerances::From(o.flow.rtol, o.flow.atol).SectionCycle();
+  SectionRun run;
+  run.points.reserve(o.keep);
+  TangentProduct tangent(nt, o.keep, o.batches);
   std::vector<FlowSwitch> switches;
   FlowRequest rq;
-  rq.max_steps = options.flow.max_steps;
+  rq.max_steps = o.flow.max_steps;
+  if (!timed) rq.sections.push_back(section.surface);
   FlowRun r;
-  // Each period starts again at phase 0 (t = theta = 0: the field is T-periodic).
-  FlowPoint z = ForcedStart(model, 0, start.z[0], start.z[1], start.mode[0]);
-  const int total = options.transient + options.keep;
+  Eigen::MatrixXd J;
+  Eigen::VectorXd f, g;
+  FlowPoint z = start;
+  if (timed) z.t = 0;  // each period starts again at t = 0, phase as at the start
+  const int total = o.transient + o.keep;
   for (int k = 0; k < total; ++k) {
     if (cancelled && cancelled()) {
       run.status = LyapunovStatus::kCancelled;
-      run.message = "cancelled after " + std::to_string(k) + " periods";
+      run.message = "cancelled after " + std::to_string(k) + " returns";
       break;
     }
-    const bool kept = k >= options.transient;
-    rq.t_max = T;
-    rq.variational = options.exponent && k >= options.transient - options.align;
+    const bool kept = k >= o.transient;
+    rq.t_max = z.t + (timed ? section.time : o.max_return_time);
+    rq.variational = o.exponent && k >= o.transient - o.align;
     switches.clear();
     rq.switches = kept ? &switches : nullptr;
     flow.Run(z, rq, &r);
     run.steps += r.steps;
-    if (!Reached(r)) {
-      run.status = LyapunovStatus::kFlowFailed;
-      run.message = r.message + " (period " + std::to_string(k) + ")";
+    if (r.status != (timed ? FlowStatus::kTimeLimit : FlowStatus::kSection)) {
+      EndWithout(s, r, timed, k, rest_tol, &run);
+      if (run.status == LyapunovStatus::kRest) z = r.end;
       break;
     }
-    if (!(std::abs(r.end.z[0]) <= max_amplitude && std::abs(r.end.z[1]) <= max_amplitude)) {
-      run.status = LyapunovStatus::kDiverged;  // end: the last state within bounds
-      run.message = "|x| or |x'| passed " + Num(max_amplitude) + " in period " + std::to_string(k);
+    const int big = Diverged(r.end.z.head(nt), max_amplitude);
+    if (big >= 0) {  // end: the last state within bounds
+      run.status = LyapunovStatus::kDiverged;
+      run.message = "|" + s.StateName(big) + "| passed " + Num(max_amplitude) + " in return " +
+                    std::to_string(k);
       break;
     }
-    z = ForcedStart(model, 0, r.end.z[0], r.end.z[1], r.end.mode[0]);
-    if (rq.variational) tangent.Apply(r.jacobian, kept);
-    if (!kept) continue;
-    SectionPoint p;
-    p.x = z.z[0], p.xdot = r.end.z[1], p.mode = z.mode[0];
-    p.sticks = r.sticks, p.exits = r.exits;
-    for (const FlowSwitch& ev : switches)
-      if (ev.kind == SwitchKind::kStickOut) {
-        p.first_exit_phase = static_cast<float>(std::fmod(w * ev.t, 2 * M_PI));
-        break;
-      }
-    run.points.push_back(p);
+    const double dt = r.end.t - z.t;
+    z = r.end;
+    if (timed) z.t = 0, z.z.tail(n - nt) = clocks, OntoSticking(s, &z);
+    if (rq.variational) {
+      ReturnJacobian(s, section, r, f, g, &J);
+      tangent.Apply(J, dt, kept);
+    }
+    if (kept) run.points.push_back(Point(s, z, r, switches, dt));
   }
   run.end = z;
   run.collapses = tangent.collapses();
-  if (run.status == LyapunovStatus::kDone && options.exponent)
-    tangent.Result(T, &run.lyapunov, &run.lyapunov_err);
+  if (run.status == LyapunovStatus::kDone && o.exponent)
+    tangent.Result(timed ? section.time : 0, &run.lyapunov, &run.lyapunov_err);
   return run;
+}
+
+SectionRun IterateStroboscopic(const System& s, const FlowPoint& start, const LyapunovOptions& o,
+                               const std::function<bool()>& cancelled, double max_amplitude) {
+  return IterateSection(s, start, PoincareSection::Stroboscopic(s, start.z, 1), o, cancelled,
+                        max_amplitude);
 }
 
 }  // namespace stickslip

@@ -38,8 +38,8 @@ TsvTable OrbitDiagramTable(const OrbitDiagram& d, ParameterAxis axis) {
     CheckFinite(c.run.lyapunov + c.run.lyapunov_err, c, axis);
     int k = 0;
     for (const SectionPoint& q : c.run.points) {
-      CheckFinite(q.x + q.xdot, c, axis);
-      t.AddRow({Name(c.direction), c.value, ++k, q.x, q.xdot, q.mode == Mode::kStick ? 1 : 0,
+      CheckFinite(q.z[0] + q.z[1], c, axis);
+      t.AddRow({Name(c.direction), c.value, ++k, q.z[0], q.z[1], q.mode[0] == Mode::kStick ? 1 : 0,
                 q.sticks, q.exits, static_cast<double>(q.first_exit_phase), c.run.lyapunov,
                 c.run.lyapunov_err});
     }
@@ -53,10 +53,10 @@ TsvTable ExponentTable(const OrbitDiagram& d, ParameterAxis axis) {
   AddFailures(d, axis, t);
   for (const DiagramColumn& c : d.columns) {
     if (!Done(c) || c.run.points.empty()) continue;
-    double sticks = 0, lo = c.run.points[0].x, hi = lo;
+    double sticks = 0, lo = c.run.points[0].z[0], hi = lo;
     for (const SectionPoint& q : c.run.points) {
       sticks += q.sticks;
-      lo = std::min(lo, q.x), hi = std::max(hi, q.x);
+      lo = std::min(lo, q.z[0]), hi = std::max(hi, q.z[0]);
     }
     t.AddRow({Name(c.direction), c.value, c.run.lyapunov, c.run.lyapunov_err,
               sticks / c.run.points.size(), c.run.collapses, lo, hi});

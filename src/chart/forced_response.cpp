@@ -1,7 +1,7 @@
 // The forced chart's response grid (stickslip/chart/forced_chart.hpp): each
 // row (p2 fixed) swept along p1 as an orbit diagram does, every cell starting
 // from the end state of the one before (from rest at the row's first cell and
-// after a failure), classified by ClassifyAttractor (basin/forced_basin.hpp).
+// after a failure), classified by ClassifyAttractor (basin/attractors.hpp).
 // Rows are tasks of a bounded pool (parallel/pool.hpp); no exception crosses a thread.
 #include <algorithm>
 #include <atomic>
@@ -27,7 +27,7 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
   g.lyapunov_err.assign(n, 0);
   g.done.assign(n, 0);
   std::vector<std::string> why(n);
-  ForcedBasinOptions bo;  // the classifier's settings
+  AttractorOptions bo;  // the classifier's settings
   bo.iterate = o.iterate, bo.iterate.flow = o.flow, bo.max_period = o.max_period;
   bo.max_amplitude = o.max_amplitude;
   std::atomic<bool> stop{false};
@@ -43,7 +43,7 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
       try {
         const ForcedModel model(pl.At(base, g.x1[i], g.x2[j]));
         if (fresh) z = ForcedStart(model, 0, 0, model.v());
-        const StroboscopicRun r = IterateStroboscopic(model, ForcedStart(model, 0, z.z[0], z.z[1]),
+        const SectionRun r = IterateStroboscopic(model, ForcedStart(model, 0, z.z[0], z.z[1]),
                                                       bo.iterate, poll, o.max_amplitude);
         if (r.status == LyapunovStatus::kCancelled) return;
         g.cells[k] = ClassifyAttractor(model, r, bo);

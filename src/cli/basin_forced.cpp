@@ -7,7 +7,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "stickslip/basin/basin.hpp"
-#include "stickslip/io/forced_basin_report.hpp"
+#include "stickslip/io/attractor_report.hpp"
 
 namespace stickslip::cli {
 
@@ -36,7 +36,7 @@ long Count(const Arguments& args, const char* name, long fallback, long lo, long
   return n;
 }
 
-stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, FlowOptions* flow) {
+stickslip::AttractorOptions Configure(const Arguments& args, ForcedParams* p, FlowOptions* flow) {
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
@@ -46,19 +46,20 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
   p->omega = args.Number("omega", 1);
   const std::string e = ValidationError(*p);
   if (!e.empty()) throw UsageError("invalid forced model: " + e);
-  stickslip::ForcedBasinOptions o;
-  o.nx = static_cast<int>(Count(args, "nx", 41, 1, 2000));
-  o.ny = static_cast<int>(Count(args, "ny", 41, 1, 2000));
+  stickslip::AttractorOptions o;
+  StartSlice& g = o.slice;
+  g.n[0] = static_cast<int>(Count(args, "nx", 41, 1, 2000));
+  g.n[1] = static_cast<int>(Count(args, "ny", 41, 1, 2000));
   const char* box[] = {"x_min", "x_max", "xdot_min", "xdot_max"};
   int given = 0;
   for (const char* k : box) given += args.Given(k);
   if (given != 0 && given != 4)
     throw UsageError("--x_min --x_max --xdot_min --xdot_max: give all four or none");
-  o.x_lo = args.Number("x_min", o.x_lo), o.x_hi = args.Number("x_max", o.x_hi);
-  o.xdot_lo = args.Number("xdot_min", o.xdot_lo), o.xdot_hi = args.Number("xdot_max", o.xdot_hi);
+  g.lo[0] = args.Number("x_min", g.lo[0]), g.hi[0] = args.Number("x_max", g.hi[0]);
+  g.lo[1] = args.Number("xdot_min", g.lo[1]), g.hi[1] = args.Number("xdot_max", g.hi[1]);
   CheckBoxCorners(args);
-  if (!(o.x_lo < o.x_hi)) throw UsageError("--x_min must be < --x_max");
-  if (!(o.xdot_lo < o.xdot_hi)) throw UsageError("--xdot_min must be < --xdot_max");
+  if (!(g.lo[0] < g.hi[0])) throw UsageError("--x_min must be < --x_max");
+  if (!(g.lo[1] < g.hi[1])) throw UsageError("--xdot_min must be < --xdot_max");
   o.iterate.transient = static_cast<int>(Count(args, "transient", 300, 0, 1000000));
   o.iterate.keep = static_cast<int>(Count(args, "keep", 64, 8, 1000000));
   o.iterate.align = std::min(o.iterate.align, o.iterate.transient);
@@ -73,7 +74,7 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
   o.iterate.flow.rtol = flow->rtol, o.iterate.flow.atol = flow->atol;
   o.iterate.flow.max_steps = flow->max_steps;
   o.iterate.flow.integrator = flow->integrator, o.iterate.flow.method = flow->method;
-  const std::string oe = o.ValidationError();
+  const std::string oe = o.ValidationError(ForcedModel(*p));
   if (!oe.empty()) throw UsageError(oe);
   return o;
 }
@@ -81,7 +82,7 @@ stickslip::ForcedBasinOptions Configure(const Arguments& args, ForcedParams* p, 
 }  // namespace
 
 void CheckBoxCorners(const Arguments& args) {
-  constexpr double kMax = stickslip::ForcedBasinOptions::kMaxCorner;
+  constexpr double kMax = stickslip::AttractorOptions::kMaxCorner;
   static_assert(kMax == BasinOptions::kMaxCorner, "one bound for both paths");
   for (const char* k : {"x_min", "x_max", "xdot_min", "xdot_max"})
     if (args.Given(k) && !(std::abs(args.Number(k, 0)) <= kMax))
@@ -92,7 +93,7 @@ void CheckBoxCorners(const Arguments& args) {
 int RunForcedBasin(const Arguments& args, const std::string& prog, const std::string& command) {
   ForcedParams p;
   FlowOptions flow;
-  stickslip::ForcedBasinOptions o = Configure(args, &p, &flow);
+  stickslip::AttractorOptions o = Configure(args, &p, &flow);
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("basins_forced", format);
   AppRun app(prog, args, "plots/basin",
@@ -106,7 +107,7 @@ int RunForcedBasin(const Arguments& args, const std::string& prog, const std::st
                    static_cast<double>(done) / total, done, "starts");
   };
   const ForcedModel model(p);
-  const ForcedBasins b = ClassifyForcedBasins(model, o);
+  const AttractorBasins b = ClassifyAttractors(model, o);
   if (!b.error.empty()) {  // nothing classified: nothing written
     std::cerr << prog << ": " << b.error << "\n";
     return kExitFailed;
@@ -122,7 +123,7 @@ int RunForcedBasin(const Arguments& args, const std::string& prog, const std::st
                             "x4 while undecided, up to " + std::to_string(o.max_keep) + " periods"},
                            {"status", b.cancelled ? "partial (" + run.Reason() + ")"
                                                   : std::to_string(b.failed) + " starts failed"}});
-  TsvTable starts = ForcedBasinTable(b), attractors = AttractorTable(b);
+  TsvTable starts = AttractorStartTable(model, b, o.slice), attractors = AttractorTable(model, b);
   starts.PrependMeta(meta);
   attractors.PrependMeta(meta);
   run.Phase("writing");
@@ -130,7 +131,8 @@ int RunForcedBasin(const Arguments& args, const std::string& prog, const std::st
   app.out().Write("attractors.tsv", attractors.str());
   app.out().Write(
       "basins_forced.gp",
-      ForcedBasinScript(b, o, FigureTitle(desc, {}) + (b.cancelled ? " (partial)" : ""), format));
+      AttractorScript(model, b, o.slice, AttractorFigure(),
+                      FigureTitle(desc, {}) + (b.cancelled ? " (partial)" : ""), format));
   if (!app.Finish("basins_forced.gp", {figure}, {figure})) return kExitFailed;
   std::cout << prog << ": forced oscillator, " << desc << "\n"
             << starts.rows() << " starts in " << FormatNumber(std::round(b.seconds * 1e3) / 1e3)

@@ -6,7 +6,7 @@
 #include <ostream>
 
 #include "cli/app.hpp"
-#include "stickslip/basin/forced_basin.hpp"
+#include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/forced/orbit_scan.hpp"
@@ -80,13 +80,13 @@ OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double fr
 
 std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
                                        const OrbitBranchOptions& o, RunControl& run) {
-  ForcedBasinOptions bo;
+  AttractorOptions bo;
   bo.max_period = kSettleMaxPeriod;
   bo.iterate.flow = o.shooting.flow;
   bo.iterate.transient = bo.iterate.align;
   bo.iterate.keep = 2 * kSettleMaxPeriod;
   bo.max_amplitude = o.max_amplitude;
-  const StroboscopicRun r = IterateStroboscopic(
+  const SectionRun r = IterateStroboscopic(
       model, ForcedStart(model, 0, x, xdot), bo.iterate, [&run] { return run.Cancelled(); },
       o.max_amplitude);
   if (r.status != LyapunovStatus::kDone) return std::nullopt;
@@ -94,9 +94,9 @@ std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, doubl
   if (a.kind != AttractorKind::kPeriodic) return std::nullopt;
   StartOrbit s;
   s.m = a.m, s.sticks = a.sticks, s.stable = true, s.settled = true;
-  s.x = a.x, s.xdot = a.xdot;
+  s.x = a.z[0], s.xdot = a.z[1];
   // Its extrema and multipliers: the orbit solved from the settled point.
-  const PeriodicOrbit orbit = ShootStroboscopic(model, a.x, a.xdot, a.m, o.shooting);
+  const PeriodicOrbit orbit = ShootStroboscopic(model, a.z[0], a.z[1], a.m, o.shooting);
   if (orbit.ok()) {
     s.x_max = OrbitExtrema(orbit).x_max;
     s.mult_max = std::abs(orbit.multipliers[0]);

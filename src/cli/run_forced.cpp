@@ -10,7 +10,7 @@
 #include "cli/forced_start.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_log.hpp"
-#include "stickslip/basin/forced_basin.hpp"
+#include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"

@@ -226,7 +226,7 @@ struct Tolerances : FixedTolerances {
   /// Forced branches: a crossing of x' = v this close to the stick band's edge
   /// (times 1 + the orbit's width) is on it at a located sliding point.
   double BandEdge() const { return std::max(1e-8, 1e3 * rtol); }
-  /// Forced basins (basin/forced_basin.hpp): stroboscopic points of one
+  /// Forced basins (basin/attractors.hpp): stroboscopic points of one
   /// periodic cycle agree to this, relative to 1 + |z|: max(1e-6, 1e3 rtol).
   double SectionCycle() const { return std::max(1e-6, 1e3 * rtol); }
   /// ... and two periodic attractors are one if their points agree to max(1e-4, 1e5 rtol).

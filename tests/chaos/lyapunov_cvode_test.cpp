@@ -34,8 +34,8 @@ TEST(LyapunovCvode, ChaoticStribeckAgreesWithTaylor) {
   LyapunovOptions taylor;
   LyapunovOptions cvode = Cvode(1e-10);
   for (LyapunovOptions* o : {&taylor, &cvode}) o->transient = 200, o->keep = 1000;
-  const StroboscopicRun a = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), taylor);
-  const StroboscopicRun b = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), cvode);
+  const SectionRun a = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), taylor);
+  const SectionRun b = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), cvode);
   ASSERT_EQ(a.status, LyapunovStatus::kDone) << a.message;
   ASSERT_EQ(b.status, LyapunovStatus::kDone) << b.message;
   const double err = std::hypot(a.lyapunov_err, b.lyapunov_err);
@@ -48,7 +48,7 @@ TEST(LyapunovCvode, ChaoticStribeckAgreesWithTaylor) {
 
 TEST(LyapunovCvode, StickSlipWindowMatchesExitMapMultiplier) {
   const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), Cvode(1e-10));
+  const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), Cvode(1e-10));
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   ShootingOptions o(ForcedModel::FlowDefaults());
   const PeriodicOrbit exit = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);

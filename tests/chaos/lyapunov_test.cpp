@@ -28,7 +28,7 @@ ForcedParams LyapunovParams(LawKind law, double beta, double v, double force, do
 constexpr double kAligned = 1e-12;
 
 // ln|mu_max| / T of the stroboscopic fixed point shot from the run's last point.
-double FloquetExponent(const ForcedModel& m, const StroboscopicRun& r) {
+double FloquetExponent(const ForcedModel& m, const SectionRun& r) {
   ShootingOptions o(ForcedModel::FlowDefaults());
   const PeriodicOrbit orbit = ShootStroboscopic(m, r.end.z[0], r.end.z[1], 1, o);
   EXPECT_TRUE(orbit.ok()) << orbit.message;
@@ -40,7 +40,7 @@ TEST(Lyapunov, StickSlipWindowMatchesExitMapMultiplier) {
   // One stick per period (forced_bench's belt): one multiplier 0 (stick
   // collapses x'), the other the exit map's derivative.
   const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
+  const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   ShootingOptions o(ForcedModel::FlowDefaults());
   const PeriodicOrbit exit = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
@@ -68,7 +68,7 @@ void ConvergenceOnNonStopOrbit(double omega, double at_defaults, bool every_k) {
   for (int keep : {25, 50, 100, 200, 400, 800}) {
     LyapunovOptions o;
     o.keep = keep;
-    const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), o);
+    const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), o);
     ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
     for (const SectionPoint& q : r.points) ASSERT_EQ(q.sticks, 0);
     if (keep == 25) floquet = FloquetExponent(m, r);
@@ -94,7 +94,7 @@ TEST(Lyapunov, NonStopComplexMultipliersMatchFloquet) {
 TEST(Lyapunov, LinearPureSlipIsMinusBeta) {
   // Coulomb pure slip is linear: both multipliers have modulus exp(-beta T).
   const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.4));
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
+  const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   std::printf("[ measured ] linear pure slip: |lambda + beta| %.2e\n", std::abs(r.lyapunov + 0.05));
   // A complex pair of one modulus: the Frobenius norm of the turning tangent
@@ -108,7 +108,7 @@ TEST(Lyapunov, ChaoticTaylorAgreesWithOdeintReference) {
   const ForcedModel m(p);
   LyapunovOptions o;
   o.transient = 200, o.keep = 1000;
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), o);
+  const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), o);
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   const reference::RefLyapunov ref =
       reference::RefLargestExponent(p, 0, 0.1L, o.transient, o.align, o.keep, o.batches, 1e-14L);
@@ -128,13 +128,13 @@ TEST(Lyapunov, InvalidOptionsThrow) {
 }
 
 // A run that passes max_amplitude ends on its last section point within it,
-// at phase 0 (StroboscopicRun::end), not on the point beyond.
+// at phase 0 (SectionRun::end), not on the point beyond.
 TEST(Lyapunov, DivergedRunEndsOnItsLastPointWithinBounds) {
   const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   LyapunovOptions o;
   o.transient = 10, o.keep = 10, o.align = 5, o.batches = 2;
   const double bound = 0.1;  // the start lies within it, the attractor does not
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.01, 0.01), o, {}, bound);
+  const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.01, 0.01), o, {}, bound);
   ASSERT_EQ(r.status, LyapunovStatus::kDiverged) << r.message;
   EXPECT_EQ(r.end.t, 0);
   EXPECT_LE(std::abs(r.end.z[0]), bound);

@@ -31,13 +31,13 @@ TEST(OrbitDiagram, PiecesFromRestMatchTheContinuedSweep) {
   const OrbitDiagram three = ComputeOrbitDiagram(CoulombBelt(), o);
   ASSERT_EQ(one.columns.size(), three.columns.size());
   for (size_t i = 0; i < one.columns.size(); ++i) {
-    const StroboscopicRun &a = one.columns[i].run, &b = three.columns[i].run;
+    const SectionRun &a = one.columns[i].run, &b = three.columns[i].run;
     ASSERT_EQ(a.status, LyapunovStatus::kDone) << a.message;
     ASSERT_EQ(b.status, LyapunovStatus::kDone) << b.message;
     ASSERT_EQ(a.points.size(), b.points.size());
     for (size_t k = 0; k < a.points.size(); ++k) {
-      EXPECT_NEAR(a.points[k].x, b.points[k].x, 1e-10 * (1 + std::abs(a.points[k].x)));
-      EXPECT_NEAR(a.points[k].xdot, b.points[k].xdot, 1e-10 * (1 + std::abs(a.points[k].xdot)));
+      EXPECT_NEAR(a.points[k].z[0], b.points[k].z[0], 1e-10 * (1 + std::abs(a.points[k].z[0])));
+      EXPECT_NEAR(a.points[k].z[1], b.points[k].z[1], 1e-10 * (1 + std::abs(a.points[k].z[1])));
     }
   }
 }

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "stickslip/basin/basin.hpp"
-#include "stickslip/basin/forced_basin.hpp"
+#include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/chart/chart.hpp"

@@ -56,7 +56,7 @@ struct OrbitDiagramOptions {
 struct DiagramColumn {
   SweepDirection direction = SweepDirection::kUp;
   double value = 0;
-  StroboscopicRun run;
+  SectionRun run;
   bool computed = false;  ///< false: not reached (cancelled)
 };
 

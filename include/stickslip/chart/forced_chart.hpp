@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/basin/forced_basin.hpp"
+#include "stickslip/basin/attractors.hpp"
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/names.hpp"

@@ -3,7 +3,7 @@
 // found, the pure-slip one at the closed-form steady state of the linear
 // slip field, the stick-slip one a converged fixed point of stroboscopic
 // shooting (an independent Newton solve) with one stick per period.
-#include "stickslip/basin/forced_basin.hpp"
+#include "stickslip/basin/attractors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "forced_run.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/io/forced_basin_report.hpp"
+#include "stickslip/io/attractor_report.hpp"
 
 namespace stickslip {
 namespace {
@@ -28,10 +28,10 @@ ForcedParams Belt(double omega) {
 
 TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
   const ForcedModel m(Belt(0.45));
-  ForcedBasinOptions o;
-  o.nx = o.ny = 11;
-  o.x_lo = 0.3, o.x_hi = 0.8, o.xdot_lo = -0.2, o.xdot_hi = 0.2;
-  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  AttractorOptions o;
+  o.slice.n = {11, 11};
+  o.slice.lo = {0.3, -0.2}, o.slice.hi = {0.8, 0.2};
+  const AttractorBasins b = ClassifyAttractors(m, o);
   ASSERT_EQ(b.failed, 0);
   ASSERT_EQ(b.attractors.size(), 2u);
   int checked = 0;
@@ -42,15 +42,15 @@ TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
     EXPECT_LT(a.lyapunov, 0);
     if (a.sticks == 0) {  // x = mu_k + A (1 - W^2) / D, x' = 2 beta A W^2 / D
       const double W = 0.45, D = (1 - W * W) * (1 - W * W) + 4 * 0.05 * 0.05 * W * W;
-      EXPECT_NEAR(a.x, 0.25 + 0.3 * (1 - W * W) / D, 1e-7);
-      EXPECT_NEAR(a.xdot, 0.3 * 2 * 0.05 * W * W / D, 1e-7);
+      EXPECT_NEAR(a.z[0], 0.25 + 0.3 * (1 - W * W) / D, 1e-7);
+      EXPECT_NEAR(a.z[1], 0.3 * 2 * 0.05 * W * W / D, 1e-7);
       ++checked;
     } else {
       EXPECT_EQ(a.sticks, 1);
       const PeriodicOrbit orbit =
-          ShootStroboscopic(m, a.x, a.xdot, 1, ShootingOptions(ForcedModel::FlowDefaults()));
+          ShootStroboscopic(m, a.z[0], a.z[1], 1, ShootingOptions(ForcedModel::FlowDefaults()));
       ASSERT_TRUE(orbit.ok()) << orbit.message;
-      EXPECT_NEAR(orbit.start.z[0], a.x, 1e-7);
+      EXPECT_NEAR(orbit.start.z[0], a.z[0], 1e-7);
       EXPECT_EQ(orbit.sticks, 1);
       EXPECT_TRUE(orbit.stable);
       checked += 2;
@@ -58,7 +58,7 @@ TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
   }
   EXPECT_EQ(checked, 3);
   int counted = 0;
-  for (const ForcedBasinStart& s : b.starts) counted += s.attractor >= 0;
+  for (const AttractorStart& s : b.starts) counted += s.attractor >= 0;
   EXPECT_EQ(counted, 121);
 }
 
@@ -67,10 +67,10 @@ TEST(ForcedBasin, ChaoticStartsAreChaotic) {
   p.base.law = LawKind::kStribeck;
   p.base.beta = 0.01, p.base.v = 0.1, p.force = 0.5;
   const ForcedModel m(p);
-  ForcedBasinOptions o;
-  o.nx = o.ny = 2;
+  AttractorOptions o;
+  o.slice.n = {2, 2};
   o.iterate.keep = 400;
-  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  const AttractorBasins b = ClassifyAttractors(m, o);
   ASSERT_EQ(b.attractors.size(), 1u);
   EXPECT_EQ(b.attractors[0].kind, AttractorKind::kChaotic);
 }
@@ -87,17 +87,17 @@ TEST(ForcedBasin, WeaklyChaoticStartRunsOnUntilDecided) {
   p.base.beta = 0.05, p.base.v = 0.25;  // the seed's cubic law (mu_s 0.4, mu_m 0.25, v_m 0.5)
   p.force = 0.3, p.omega = 0.559;
   const ForcedModel m(p);
-  ForcedBasinOptions o;
-  o.nx = o.ny = 3;
-  o.x_lo = 0.7, o.x_hi = 0.9, o.xdot_lo = -0.45, o.xdot_hi = -0.25;
+  AttractorOptions o;
+  o.slice.n = {3, 3};
+  o.slice.lo = {0.7, -0.45}, o.slice.hi = {0.9, -0.25};
   o.max_keep = o.iterate.keep;
-  const ForcedBasins short_run = ClassifyForcedBasins(m, o);
-  o.max_keep = ForcedBasinOptions().max_keep;
-  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  const AttractorBasins short_run = ClassifyAttractors(m, o);
+  o.max_keep = AttractorOptions().max_keep;
+  const AttractorBasins b = ClassifyAttractors(m, o);
   ASSERT_EQ(b.starts.size(), short_run.starts.size());
   LyapunovOptions lo;
   lo.keep = 4000;
-  const StroboscopicRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.8, -0.35), lo);
+  const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0.8, -0.35), lo);
   ASSERT_EQ(r.status, LyapunovStatus::kDone);
   EXPECT_GT(r.lyapunov, 3 * r.lyapunov_err);
   int undecided = 0;
@@ -117,9 +117,9 @@ TEST(ForcedBasin, WeaklyChaoticStartRunsOnUntilDecided) {
 
 TEST(ForcedBasin, InvalidOptionsThrow) {
   const ForcedModel m(Belt(0.45));
-  ForcedBasinOptions o;
+  AttractorOptions o;
   o.max_period = 100;  // > keep / 2
-  EXPECT_THROW(ClassifyForcedBasins(m, o), InvalidArgument);
+  EXPECT_THROW(ClassifyAttractors(m, o), InvalidArgument);
 }
 
 // The representative point of a period-2 attractor is the cycle's smallest x
@@ -130,22 +130,22 @@ TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
   ForcedParams p = Belt(0.617);
   p.base.law = LawKind::kStribeck, p.base.v_s = 0.2, p.base.v = 0.25;
   const ForcedModel m(p);
-  ForcedBasinOptions o;
-  o.nx = o.ny = 3;
-  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  AttractorOptions o;
+  o.slice.n = {3, 3};
+  const AttractorBasins b = ClassifyAttractors(m, o);
   int checked = 0;
   for (const Attractor& a : b.attractors) {
     if (a.kind != AttractorKind::kPeriodic || a.m != 2) continue;
     const PeriodicOrbit orbit =
-        ShootStroboscopic(m, a.x, a.xdot, 2, ShootingOptions(ForcedModel::FlowDefaults()));
+        ShootStroboscopic(m, a.z[0], a.z[1], 2, ShootingOptions(ForcedModel::FlowDefaults()));
     ASSERT_TRUE(orbit.ok()) << orbit.message;
-    EXPECT_NEAR(orbit.start.z[0], a.x, 1e-7);
+    EXPECT_NEAR(orbit.start.z[0], a.z[0], 1e-7);
     const FlowRun half = testing_util::RunForced(
         m, ForcedStart(m, 0, orbit.start.z[0], orbit.start.z[1]), m.period());
     ASSERT_TRUE(Reached(half));
-    std::printf("[ measured ] m = 2 cycle: x = %.10g (representative), %.10g\n", a.x,
+    std::printf("[ measured ] m = 2 cycle: x = %.10g (representative), %.10g\n", a.z[0],
                 half.end.z[0]);
-    EXPECT_GT(half.end.z[0], a.x + 1e-3);  // the other point of the cycle lies to the right
+    EXPECT_GT(half.end.z[0], a.z[0] + 1e-3);  // the other point of the cycle lies to the right
     ++checked;
   }
   EXPECT_EQ(checked, 1);
@@ -156,14 +156,14 @@ TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
 // periods here: 0.67, which `sticks` rounds to 1) in its label.
 TEST(ForcedBasin, ChaoticOnlyBeyondTheExponentsErrorWithMeanSticks) {
   const ForcedModel m(Belt(0.45));
-  StroboscopicRun r;
+  SectionRun r;
   for (int k = 0; k < 60; ++k) {  // no period up to 16: x = k^2 mod 61
     SectionPoint q;
-    q.x = (k * k) % 61 / 61.0, q.xdot = 0.1 * k;
+    q.z = Eigen::Vector2d((k * k) % 61 / 61.0, 0.1 * k);
     q.sticks = k % 3 == 2 ? 0 : 1;
     r.points.push_back(q);
   }
-  ForcedBasinOptions o;
+  AttractorOptions o;
   r.lyapunov = 0.02, r.lyapunov_err = 0.01;  // 2 errors from 0
   EXPECT_EQ(ClassifyAttractor(m, r, o).kind, AttractorKind::kUndecided);
   r.lyapunov = -0.02;
@@ -183,18 +183,18 @@ TEST(ForcedBasin, PeriodLimitIsAnOption) {
   ForcedParams p = Belt(0.558);
   p.base.law = LawKind::kCubic, p.base.mu_m = 0.25, p.base.v_m = 0.5, p.base.v = 0.25;
   const ForcedModel m(p);
-  ForcedBasinOptions o;
-  o.nx = o.ny = 3;
+  AttractorOptions o;
+  o.slice.n = {3, 3};
   o.max_period = 32;
-  const ForcedBasins b = ClassifyForcedBasins(m, o);
+  const AttractorBasins b = ClassifyAttractors(m, o);
   int found = 0;
   for (const Attractor& a : b.attractors)
     if (a.kind == AttractorKind::kPeriodic && a.m == 27) {
       EXPECT_EQ(a.sticks, 18);
       const PeriodicOrbit orbit =
-          ShootStroboscopic(m, a.x, a.xdot, 27, ShootingOptions(ForcedModel::FlowDefaults()));
+          ShootStroboscopic(m, a.z[0], a.z[1], 27, ShootingOptions(ForcedModel::FlowDefaults()));
       ASSERT_TRUE(orbit.ok()) << orbit.message;
-      EXPECT_NEAR(orbit.start.z[0], a.x, 1e-6);
+      EXPECT_NEAR(orbit.start.z[0], a.z[0], 1e-6);
       EXPECT_TRUE(orbit.stable);
       std::printf("[ measured ] period 27: %d starts, |mu| = %.4f\n", a.starts,
                   std::abs(orbit.multipliers[0]));
@@ -202,7 +202,7 @@ TEST(ForcedBasin, PeriodLimitIsAnOption) {
     }
   EXPECT_GT(found, 0);
   o.max_period = 16;
-  for (const Attractor& a : ClassifyForcedBasins(m, o).attractors)
+  for (const Attractor& a : ClassifyAttractors(m, o).attractors)
     EXPECT_FALSE(a.kind == AttractorKind::kPeriodic && a.m > 16);
 }
 
