@@ -78,12 +78,35 @@ bool FieldVanishes(const System& s, const SectionPoint& q, double tol) {
   return MaxAbs(f.head(nt)) <= tol * (1 + MaxAbs(q.z));
 }
 
-// The periodic (or rest) attractor of the cycle of length m the points close.
-Attractor Cycle(const System& s, const std::vector<SectionPoint>& p, int m, double tol) {
+// The stable rest point of the mode of the points (System::Rest) if every
+// one lies within tol of it: a spiral onto steady sliding, whose returns
+// agree to the cycle tolerance before they reach the rest point.
+std::optional<Eigen::VectorXd> NearStableRest(const System& s, const std::vector<SectionPoint>& p,
+                                              double tol) {
+  Eigen::VectorXd rest(s.dimension());
+  bool stable = false;
+  if (p.empty() || !s.Rest(p.back().mode, rest, &stable) || !stable) return std::nullopt;
+  const Eigen::VectorXd z = rest.head(s.tangent_dimension());
+  for (const SectionPoint& q : p)
+    if (q.exits > 0 || !Close(q.z, z, tol)) return std::nullopt;
+  return z;
+}
+
+// The periodic (or rest) attractor of the cycle of length m the points close:
+// rest where no contact leaves a stick and the field vanishes (to `cycle`),
+// or a stable rest point lies within `same` of every point (then it is the
+// attractor's point).
+Attractor Cycle(const System& s, const std::vector<SectionPoint>& p, int m, double cycle,
+                double same) {
   const int K = static_cast<int>(p.size());
   Attractor a;
+  if (const auto rest = NearStableRest(s, p, same)) {
+    a.kind = AttractorKind::kRest, a.m = 1;
+    a.z = *rest, a.cycle = {*rest};
+    return a;
+  }
   bool rest = true;
-  for (const SectionPoint& q : p) rest = rest && q.exits == 0 && FieldVanishes(s, q, tol);
+  for (const SectionPoint& q : p) rest = rest && q.exits == 0 && FieldVanishes(s, q, cycle);
   a.kind = rest ? AttractorKind::kRest : AttractorKind::kPeriodic;
   a.m = m;
   int best = K - m;
@@ -119,7 +142,7 @@ Attractor ClassifyAttractor(const System& s, const SectionRun& r, const Attracto
     bool cycle = true;
     for (int k = 0; k + m < K && cycle; ++k) cycle = Close(p[k].z, p[k + m].z, tol.SectionCycle());
     if (!cycle) continue;
-    Attractor c = Cycle(s, p, m, tol.SectionCycle());
+    Attractor c = Cycle(s, p, m, tol.SectionCycle(), tol.SameAttractor());
     c.lyapunov = r.lyapunov;
     return c;
   }

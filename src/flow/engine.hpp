@@ -54,6 +54,7 @@ class Engine {
   // earlier switches.
   void Exit(int contact, int sign, const ModeSet& detected);
   bool SwitchAtOnce(const std::vector<int>& roots);
+  void AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals);
   // S = I + (f+ - f-) grad^T / (grad . f-) on the tangent block, M = S M.
   // M <- S M, and the column with the event's own d g / dp (g_p).
   void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad,

@@ -118,6 +118,7 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
       if (cur_->roles[i].kind == FunctionRole::kArrival) arrivals.push_back(c);
       if (cur_->roles[i].kind == FunctionRole::kExit) Exit(c, cur_->roles[i].sign, detected);
     }
+  AlsoArriving(detected, &arrivals);
   for (int c : arrivals) OnSurface(contacts_[c], z_);
   const ModeChoiceResult r = ConsistentMode(*s_, mode_, arrivals, z_);
   if (r.choice != ModeChoice::kUnique) {
@@ -158,6 +159,30 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
     Record(stick ? SwitchKind::kStickIn : SwitchKind::kCrossing, c, before, after);
   }
   return true;
+}
+
+// A slipping contact past its surface at this instant (its root fell just
+// after the first one's in the step, by rounding, and would be lost with the
+// segment: two blocks arriving in step), or within rounding of it and
+// approaching, arrives too. One exactly on it has just switched there.
+void Engine::AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals) {
+  bool field = false;
+  for (int c = 0; c < k_; ++c) {
+    if (detected[c] == Mode::kStick || mode_[c] == Mode::kStick) continue;
+    if (std::find(arrivals->begin(), arrivals->end(), c) != arrivals->end()) continue;
+    const ContactVelocity& h = contacts_[c];
+    const double side = mode_[c] == Mode::kSlipBelow ? 1 : -1;  // below: h < 0
+    const double g = side * h.At(z_.data());
+    if (g == 0 || g < -Tolerances::StickStart(h.speed, 0)) continue;
+    if (g < 0) {  // within rounding: only if approaching
+      if (!field) f_before_.resize(n_), s_->Field(mode_, z_, f_before_), field = true;
+      double dh = 0;
+      for (int t = 0; t < h.size; ++t) dh += h.terms[t].weight * f_before_[h.terms[t].index];
+      if (!(side * dh > 0)) continue;
+    }
+    arrivals->push_back(c);
+  }
+  std::sort(arrivals->begin(), arrivals->end());
 }
 
 bool Engine::Arrive(int c) {

@@ -82,7 +82,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
   Covers("FigureFormat", FigureFormat::kSvg);
   Covers("AttractorKind", AttractorKind::kFailed);
-  Covers("LyapunovStatus", LyapunovStatus::kCancelled);
+  Covers("LyapunovStatus", LyapunovStatus::kRest);
   Covers("SweepDirection", SweepDirection::kDown);
   Covers("Parameter", Parameter::kOmega);
   Covers("BranchStatus", BranchStatus::kContactLost);

@@ -1,0 +1,79 @@
+// Basins of a chain of two blocks on a 2-D slice of its 4-D state (issue 32
+// item 3, through the one classifier of issue 31 item 6): starts in (x1, x1')
+// with block 2 at steady sliding, classified on the returns to x1' = 0
+// falling. Rest must be steady sliding in closed form (x_i = mu(v) for
+// identical blocks, the springs between them unstretched); each periodic
+// attractor's section point must be a fixed point that an independent Newton
+// solve (the one shooting on the same surface) converges to, and stable.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "chain/chain.hpp"
+#include "stickslip/basin/attractors.hpp"
+#include "stickslip/io/attractor_report.hpp"
+#include "stickslip/orbits/shooting.hpp"
+
+namespace stickslip::chain {
+namespace {
+
+Params CubicBelt(double v) {  // studies/chain2.ini
+  Params p;
+  p.law = LawKind::kCubic;
+  p.beta = 0.05, p.mu_s = 0.4, p.mu_m = 0.25, p.v_m = 0.5, p.v = v;
+  return p;
+}
+
+// The seed's cubic law mu(s) = mu_s - 3/2 (mu_s - mu_m) (s/v_m - (s/v_m)^3 / 3).
+double CubicMu(double s) { return 0.4 - 1.5 * 0.15 * (s / 0.5 - std::pow(s / 0.5, 3) / 3); }
+
+TEST(ChainAttractors, RestIsSteadySlidingAndEveryOrbitIsAFixedPointOfTheShooting) {
+  const double v = 0.3;  // steady sliding stable (2 beta + mu'(v) = 0.0145 > 0)
+  const Chain chain(Uniform(2, CubicBelt(v), 0.5));
+  const double xbar = CubicMu(v);
+  AttractorOptions o;
+  o.slice.base = Eigen::Vector4d(xbar, 0, xbar, 0);
+  o.slice.lo = {xbar - 1.2, -1.2}, o.slice.hi = {xbar + 1.2, 1.2};
+  o.slice.n = {7, 7};
+  const AttractorBasins b = ClassifyAttractors(chain, o);
+  ASSERT_TRUE(b.error.empty()) << b.error;
+  for (const AttractorStart& s : b.starts)
+    EXPECT_TRUE(s.message.empty()) << s.at[0] << " " << s.at[1] << ": " << s.message;
+  ASSERT_EQ(b.failed, 0);
+  int rest = 0, periodic = 0;
+  ShootingOptions so;
+  Shooting shooting(chain, so);
+  for (const Attractor& a : b.attractors) {
+    SCOPED_TRACE(AttractorLabel(a));
+    std::printf("[ measured ] %s: x1 = %.10g, %d starts\n", AttractorLabel(a).c_str(), a.z[0],
+                a.starts);
+    ASSERT_EQ(a.z.size(), 4);
+    if (a.kind == AttractorKind::kRest) {
+      for (int i : {0, 2}) EXPECT_NEAR(a.z[i], xbar, 1e-12);
+      for (int i : {1, 3}) EXPECT_NEAR(a.z[i], 0, 1e-12);
+      rest += a.starts;
+      continue;
+    }
+    ASSERT_EQ(a.kind, AttractorKind::kPeriodic);
+    PoincareSection section;
+    section.kind = SectionKind::kSurface;
+    section.surface = MaximaSection(chain);
+    section.returns = a.m;
+    FlowPoint guess;
+    guess.z = a.z;
+    guess.mode = ModeOf(chain, guess.z);
+    const PeriodicOrbit orbit = shooting.Find(guess, section);
+    ASSERT_TRUE(orbit.ok()) << orbit.message;
+    EXPECT_LT((orbit.start.z - a.z).lpNorm<Eigen::Infinity>(), 1e-6);
+    EXPECT_TRUE(orbit.stable);
+    EXPECT_EQ(orbit.sticks, a.sticks);
+    periodic += a.starts;
+  }
+  EXPECT_GT(rest, 0);  // the box's centre is steady sliding itself
+  EXPECT_GT(periodic, 0);
+  EXPECT_EQ(rest + periodic, 49);
+}
+
+}  // namespace
+}  // namespace stickslip::chain
