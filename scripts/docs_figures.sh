@@ -62,4 +62,5 @@ done
 # ends at GR with no orbit of its period beyond: exit 1 (partial) by design.
 "$build/ss_continue" --study studies/brake.ini --out "$fig/brake" >/dev/null
 "$build/ss_continue" --study studies/chain2.ini --out "$fig/chain2" >/dev/null 2>&1 || [[ $? -eq 1 ]]
+run "$build/ss_basin" --study studies/chain2_basin.ini --out "$fig/chain2_basin"
 du -sh "$fig"

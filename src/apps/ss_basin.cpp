@@ -9,7 +9,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/basin_curve.hpp"
-#include "cli/basin_forced.hpp"
+#include "cli/basin_section.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_forced.hpp"
 #include "cli/study.hpp"
@@ -54,7 +54,7 @@ po::options_description AppOptions() {
   cli::AddRunOptions(d, "plots/basin",
                      "write the TSV files and the script, but do not run gnuplot");
   cli::AddBasinCurveOptions(d);
-  d.add(cli::ForcingOptions()).add(cli::ForcedBasinOptionGroup());  // --force: basin_forced.hpp
+  d.add(cli::ForcingOptions()).add(cli::SectionBasinOptionGroup());  // basin_section.hpp
   return d;
 }
 
@@ -127,9 +127,15 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_basin [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  // The forced oscillator and every other system: basins on a section (basin_section.hpp).
+  if (args.Number("force", 0) != 0 || cli::SystemRequested(args))
+    return cli::RunSectionBasin(args, kProg, cli::CommandLine(argc, argv));
   cli::RefuseSystem(args, kProg);
-  if (args.Number("force", 0) != 0)  // the forced oscillator's section (basin_forced.hpp)
-    return cli::RunForcedBasin(args, kProg, cli::CommandLine(argc, argv));
+  for (const char* o : {"transient", "keep", "max_period", "threads", "slice"})
+    if (args.Given(o))
+      throw cli::UsageError(args.Source(o) +
+                            " needs --force or --system (the belt's basins "
+                            "follow each start to --t_cap)");
   if (args.Given("omega"))
     throw cli::UsageError(args.Source("omega") +
                           " needs the forced oscillator: give --force A > 0");

@@ -67,9 +67,10 @@ po::options_description SystemOptions() {
   po::options_description d(
       "System (docs/systems.md; default the belt, or the forced oscillator "
       "with --force)");
-  d.add_options()("system", Value()->value_name("NAME"),
-                  "belt (default), chain (blocks on a belt, coupled by springs) or "
-                  "mode_coupling (a brake model of two modes): ss_continue and ss_simulate")(
+  d.add_options()(
+      "system", Value()->value_name("NAME"),
+      "belt (default), chain (blocks on a belt, coupled by springs) or "
+      "mode_coupling (a brake model of two modes): ss_continue, ss_simulate and ss_basin")(
       "blocks", Value()->value_name("N"), "chain: the number of blocks, in [1, 64] (default 2)")(
       "set", Value()->value_name("A=X,B=Y"),
       "the system's parameters by their own names, applied in order (a study file's [system] "
@@ -90,8 +91,8 @@ void RefuseSystem(const Arguments& args, const std::string& prog,
                   const std::vector<std::string>& also) {
   if (SystemRequested(args))
     throw UsageError(args.Source("system") + " = " + args.Text("system") + ": " + prog +
-                     " takes the belt and the forced oscillator only (ss_continue and "
-                     "ss_simulate take every system)");
+                     " takes the belt and the forced oscillator only (ss_continue, "
+                     "ss_simulate and ss_basin take every system)");
   std::vector<std::string> options = {"set", "blocks"};
   options.insert(options.end(), also.begin(), also.end());
   for (const std::string& o : options)

@@ -61,6 +61,28 @@ TEST_F(SystemApp, ChainStudyHopfIsTheSingleBlocksAndItsOrbitsAreSymmetric) {
   EXPECT_GT(rows, 100);
 }
 
+// Basins of the chain study at v = 0.45, where steady sliding is stable and
+// no stick-slip orbit is left (beyond the study's GR at 0.395): every start
+// on the (x1, x1') slice comes to rest at steady sliding, x_i = mu(v) in
+// closed form (identical blocks, the coupling spring unstretched).
+TEST_F(SystemApp, ChainBasinsRestOnSteadySlidingInClosedForm) {
+  const auto r =
+      RunOut("ss_basin", dir_, {"--study", kChain, "--v", "0.45", "--nx", "4", "--ny", "3"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv starts = tu::ReadTsv(tu::ReadFile(dir_ + "/out/basins.tsv"));
+  const tu::Tsv att = tu::ReadTsv(tu::ReadFile(dir_ + "/out/attractors.tsv"));
+  EXPECT_EQ(starts.rows.size(), 12u);
+  for (const auto& row : starts.rows) EXPECT_EQ(row[starts.Column("kind")], "rest");
+  ASSERT_EQ(att.rows.size(), 1u);
+  const double s = 0.45 / 0.5, mu = 0.4 - 1.5 * 0.15 * (s - s * s * s / 3);
+  for (const char* c : {"x1", "x2"})
+    EXPECT_NEAR(std::stod(att.rows[0][att.Column(c)]), mu, 1e-12) << c;
+  for (const char* c : {"x1dot", "x2dot"})
+    EXPECT_NEAR(std::stod(att.rows[0][att.Column(c)]), 0, 1e-12) << c;
+  EXPECT_TRUE(tu::Contains(starts.meta.at("section"), "x1' = 0 falling"));
+  EXPECT_EQ(att.rows[0][att.Column("starts")], "12");
+}
+
 TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   const std::vector<std::string> run = {"--param", "v", "--to", "0.4"};
   auto with = [&](std::vector<std::string> a) {
@@ -99,7 +121,15 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_continue", {"--set", "kc=1"}, {"--set", "--system chain"});
   ExpectRejected("ss_continue", {"--start_at", "0.2"}, {"--start_at", "--system"});
   ExpectRejected("ss_chart", {"--system", "chain"}, {"--system", "ss_chart"});
-  ExpectRejected("ss_basin", {"--system", "mode_coupling"}, {"--system", "ss_basin"});
+  ExpectRejected("ss_orbit_diagram", {"--system", "mode_coupling"},
+                 {"--system", "ss_orbit_diagram"});
+  ExpectRejected("ss_basin", {"--system", "chain", "--slice", "x1,x9"}, {"--slice", "'x9'"});
+  ExpectRejected("ss_basin", {"--system", "chain", "--slice", "x1',x1dot"}, {"--slice", "differ"});
+  ExpectRejected("ss_basin", {"--system", "chain", "--slice", "x1"}, {"--slice", "two"});
+  ExpectRejected("ss_basin", {"--system", "chain", "--t_cap", "5"}, {"--t_cap", "--system"});
+  ExpectRejected("ss_basin", {"--system", "chain", "--force", "0.3"}, {"--force"});
+  ExpectRejected("ss_basin", {"--transient", "5"}, {"--transient", "--force or --system"});
+  ExpectRejected("ss_basin", {"--slice", "x,xdot", "--force", "0.3"}, {"--slice", "--system"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,3"}, {"--state", "4"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,x,4"}, {"--state", "x"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--x0", "1"}, {"--x0", "--state"});

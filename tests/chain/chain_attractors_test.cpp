@@ -5,6 +5,9 @@
 // identical blocks, the springs between them unstretched); each periodic
 // attractor's section point must be a fixed point that an independent Newton
 // solve (the one shooting on the same surface) converges to, and stable.
+// The attractor with the blocks in step (x1 = x2) is the single block's
+// orbit, the spring between them unstretched: its period must be the belt's
+// stick-slip period, from the belt's own 2-D orbit finder.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +16,8 @@
 #include "chain/chain.hpp"
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/io/attractor_report.hpp"
+#include "stickslip/model/model.hpp"
+#include "stickslip/orbits/orbit_scan.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip::chain {
@@ -41,7 +46,7 @@ TEST(ChainAttractors, RestIsSteadySlidingAndEveryOrbitIsAFixedPointOfTheShooting
   for (const AttractorStart& s : b.starts)
     EXPECT_TRUE(s.message.empty()) << s.at[0] << " " << s.at[1] << ": " << s.message;
   ASSERT_EQ(b.failed, 0);
-  int rest = 0, periodic = 0;
+  int rest = 0, periodic = 0, in_step = 0;
   ShootingOptions so;
   Shooting shooting(chain, so);
   for (const Attractor& a : b.attractors) {
@@ -68,10 +73,18 @@ TEST(ChainAttractors, RestIsSteadySlidingAndEveryOrbitIsAFixedPointOfTheShooting
     EXPECT_LT((orbit.start.z - a.z).lpNorm<Eigen::Infinity>(), 1e-6);
     EXPECT_TRUE(orbit.stable);
     EXPECT_EQ(orbit.sticks, a.sticks);
+    if (std::abs(a.z[0] - a.z[2]) < 1e-8) {  // in step: the single block's orbit
+      const PeriodicOrbits belt = FindPeriodicOrbits(Model(CubicBelt(v)), OrbitScanOptions());
+      ASSERT_TRUE(belt.has_stick_slip);
+      EXPECT_NEAR(orbit.period, belt.stick_slip.period, 1e-9);
+      EXPECT_NEAR(a.z[0], belt.stick_slip.extrema.x_max, 1e-9);
+      ++in_step;
+    }
     periodic += a.starts;
   }
   EXPECT_GT(rest, 0);  // the box's centre is steady sliding itself
   EXPECT_GT(periodic, 0);
+  EXPECT_EQ(in_step, 1);
   EXPECT_EQ(rest + periodic, 49);
 }
 
