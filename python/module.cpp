@@ -190,4 +190,5 @@ PYBIND11_MODULE(_core, m) {
   BindSystems(m);
   BindSystemRuns(m);
   BindSystemBranch(m);
+  BindAttractors(m);
 }

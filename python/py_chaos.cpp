@@ -18,10 +18,9 @@
 
 namespace stickslip::python {
 
-namespace {
-
-LyapunovOptions Iterate(LyapunovOptions o, std::optional<int> transient, std::optional<int> keep,
-                        std::optional<double> rtol, std::optional<double> atol) {
+LyapunovOptions IterateOptions(LyapunovOptions o, std::optional<int> transient,
+                               std::optional<int> keep, std::optional<double> rtol,
+                               std::optional<double> atol) {
   o.flow = FlowOf(rtol, atol);
   if (transient) o.transient = *transient;
   if (keep) o.keep = *keep;
@@ -30,6 +29,8 @@ LyapunovOptions Iterate(LyapunovOptions o, std::optional<int> transient, std::op
   if (o.keep >= 1) o.batches = std::min(o.batches, o.keep);  // as ss_basin --force
   return o;
 }
+
+namespace {
 
 void Check(const std::string& error) {
   if (!error.empty()) throw InvalidArgument(error);
@@ -58,7 +59,7 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
                       std::optional<int> transient, std::optional<int> keep, double max_amplitude,
                       std::optional<double> rtol, std::optional<double> atol) {
   const ForcedModel model(p);  // throws InvalidArgument naming the value
-  const LyapunovOptions o = Iterate(LyapunovOptions(), transient, keep, rtol, atol);
+  const LyapunovOptions o = IterateOptions(LyapunovOptions(), transient, keep, rtol, atol);
   Check(o.ValidationError());
   const double xd0 = xdot0.value_or(p.base.v);
   if (!(std::isfinite(x0) && std::isfinite(xd0)))
@@ -93,7 +94,7 @@ py::dict Diagram(ForcedParams base, ParameterAxis axis, double from, double to, 
   OrbitDiagramOptions o;
   o.axis = axis, o.from = from, o.to = to, o.n = n, o.up = up, o.down = down;
   o.chunks = chunks, o.max_amplitude = max_amplitude;
-  o.iterate = Iterate(o.iterate, transient, keep, rtol, atol);
+  o.iterate = IterateOptions(o.iterate, transient, keep, rtol, atol);
   Check(o.ValidationError());
   Interrupt interrupt;
   o.cancelled = [&] { return interrupt(); };
@@ -140,7 +141,7 @@ py::dict ForcedBasinsOf(const ForcedParams& p, int nx, int ny, std::pair<double,
   g.n = {nx, ny};
   g.lo = {x_range.first, xdot_range.first}, g.hi = {x_range.second, xdot_range.second};
   o.threads = threads;
-  o.iterate = Iterate(o.iterate, transient, keep, rtol, atol);
+  o.iterate = IterateOptions(o.iterate, transient, keep, rtol, atol);
   o.max_period = max_period.value_or(std::clamp(o.iterate.keep / 2, 1, o.max_period));
   Check(o.ValidationError(model));
   Interrupt interrupt;

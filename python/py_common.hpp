@@ -139,6 +139,7 @@ void BindOrbitBranch(py::module_& m);   // py_orbit_branch.cpp: continue_orbits(
 void BindSystems(py::module_& m);       // py_systems.cpp: ChainParams, CouplingParams (issue 32)
 void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
 void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
+void BindAttractors(py::module_& m);    // py_attractors.cpp: basins(system), attractor_basins
 
 // The System a Python parameter object stands for (Params, ForcedParams,
 // ChainParams, CouplingParams); InvalidArgument for anything else.

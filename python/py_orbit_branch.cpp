@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "py_common.hpp"
+#include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/model/forced.hpp"
@@ -57,14 +58,13 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
   }
   if (name == "stick-exit")  // m exits close the orbit; a clock turns `turns` (m) times
     return PoincareSection::StickExit(contact, m, s.clocks() ? turns.value_or(m) : 0);
-  if (name == "xdot-falling") {
-    if (s.clocks() != 0 || m != 1)
-      throw InvalidArgument("section: 'xdot-falling' is the belt's (Params), once per period");
+  if (name == "xdot-falling") {  // the first velocity's zero, falling: the maxima of z_0
+    if (s.clocks() != 0)
+      throw InvalidArgument("section: 'xdot-falling' is an autonomous system's (no forcing)");
     PoincareSection p;
     p.kind = SectionKind::kSurface;
-    p.surface.g.terms[0] = {1, 1.0};
-    p.surface.g.size = 1;
-    p.surface.direction = -1;
+    p.surface = MaximaSection(s);  // attractor_basins' section
+    p.returns = m;
     return p;
   }
   throw InvalidArgument("section = '" + name +

@@ -678,6 +678,13 @@ def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            integrator: IntegratorLike = None, method: MethodLike = None,
            options: Optional[BasinOptions] = None,
            progress: Optional[Callable[[int, int], Any]] = None) -> Basins: ...
+@overload
+def basins(system: Union[ChainParams, CouplingParams], nx: int = 41, ny: int = 41,
+           slice: Optional[Tuple[str, str]] = None, base: Optional[Any] = None,
+           x_range: Optional[Tuple[float, float]] = None,
+           y_range: Optional[Tuple[float, float]] = None, transient: Optional[int] = None,
+           keep: Optional[int] = None, max_period: Optional[int] = None, threads: int = 2,
+           rtol: Optional[float] = None, atol: Optional[float] = None) -> AttractorBasins: ...
 def orbit_curve(params: Params, orbit: Orbit, n: int = 400) -> Array: ...
 def smallest_disturbance(params: Params, orbit: Orbit, n: int = 4000) -> Disturbance: ...
 def chart(params: Params, param: Optional[Parameter | str] = None, from_: Optional[float] = None,
@@ -808,6 +815,38 @@ def system_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m:
                  turns: Optional[int] = None, rtol: Optional[float] = None,
                  atol: Optional[float] = None, contact: int = 0) -> SystemOrbit: ...
 def steady_sliding(system: SystemLike) -> SteadyState: ...
+
+class Attractor:
+    kind: str
+    label: str
+    m: int
+    sticks: int
+    sticks_per_period: float
+    lyapunov: float
+    starts: int
+    z: Array
+    cycle: Array
+
+class AttractorBasins:
+    slice: List[str]
+    state_names: List[str]
+    u: Array
+    w: Array
+    attractor: Array
+    lyapunov: Array
+    attractors: List[Attractor]
+    failures: List[str]
+    failed: int
+    seconds: float
+
+def attractor_basins(system: SystemLike, nx: int = 41, ny: int = 41,
+                     slice: Optional[Tuple[str, str]] = None, base: Optional[Any] = None,
+                     x_range: Optional[Tuple[float, float]] = None,
+                     y_range: Optional[Tuple[float, float]] = None,
+                     transient: Optional[int] = None, keep: Optional[int] = None,
+                     max_period: Optional[int] = None, threads: int = 2,
+                     rtol: Optional[float] = None,
+                     atol: Optional[float] = None) -> AttractorBasins: ...
 
 class SteadyBranch:
     status: BranchStatus

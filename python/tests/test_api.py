@@ -139,6 +139,8 @@ class EveryResultArrayReadOnly(unittest.TestCase):
                 speed_m=0.2, from_=0.1, to=0.12),
             "find_forced_orbits": lambda: stickslip.find_forced_orbits(fp, max_m=2, grid=3),
             "forced_basins": lambda: stickslip.forced_basins(fp, nx=2, ny=2),
+            "attractor_basins": lambda: stickslip.attractor_basins(
+                stickslip.ChainParams(2, kc=0.2), nx=2, ny=2, transient=20, keep=8),
             "forced_orbit": lambda: fo,
             "orbits": lambda: (stickslip.orbits(p, {"v": [0.25, 0.47]}, floquet=True),
                                stickslip.orbits(fp, {"omega": [0.6, 0.52]})),

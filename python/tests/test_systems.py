@@ -178,6 +178,45 @@ class SteadyBranchAndSettle(unittest.TestCase):
         self.assertFalse(stickslip.settle(c, [0.3, 0, 0.3, 0], transient=1.0).found)
 
 
+class Basins(unittest.TestCase):
+    """basins(system) on a slice of the state, through the one classifier."""
+
+    def chain(self, v):
+        law = stickslip.Params("cubic", beta=0.05, mu_s=0.4, mu_m=0.25, v_m=0.5, v=v)
+        return stickslip.ChainParams(2, law=law, kc=0.5)
+
+    def test_chain_rests_on_closed_form_steady_sliding_and_orbits_close_under_the_shooting(self):
+        b = stickslip.basins(self.chain(0.3), nx=5, ny=5)
+        self.assertEqual(b.slice, ["x1", "x1'"])
+        self.assertEqual(b.failed, 0)
+        self.assertEqual(len(b.u), 25)
+        self.assertFalse(b.u.flags.writeable)
+        kinds = sorted(a.kind for a in b.attractors)
+        self.assertIn("periodic", kinds)
+        for a in b.attractors:
+            if a.kind != "periodic":
+                continue
+            self.assertEqual(a.cycle.shape, (a.m, 4))
+            # The attractor's section point is a fixed point of the one shooting on
+            # the same surface (x1' = 0 falling) that Newton converges to.
+            o = stickslip.system_orbit(self.chain(0.3), list(a.z), section="xdot-falling", m=a.m)
+            self.assertLess(np.max(np.abs(o.start - a.z)), 1e-6)
+            self.assertTrue(o.stable)
+        s = 0.45 / 0.5
+        mu = 0.4 - 1.5 * 0.15 * (s - s ** 3 / 3)  # the cubic law at v = 0.45
+        rest = stickslip.basins(self.chain(0.45), nx=3, ny=2)
+        self.assertEqual([a.kind for a in rest.attractors], ["rest"])
+        np.testing.assert_allclose(rest.attractors[0].z, [mu, 0, mu, 0], atol=1e-12)
+
+    def test_bad_slices_are_refused_by_name(self):
+        with self.assertRaises(ValueError) as c:
+            stickslip.basins(self.chain(0.3), slice=("x1", "q"))
+        self.assertIn("'q'", str(c.exception))
+        with self.assertRaises(ValueError) as c:
+            stickslip.basins(self.chain(0.3), slice=("x1'", "x1dot"))
+        self.assertIn("differ", str(c.exception))
+
+
 class ContactLoss(unittest.TestCase):
     def test_a_run_stops_where_the_normal_force_reaches_zero(self):
         m = stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.6))

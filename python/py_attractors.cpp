@@ -1,0 +1,187 @@
+// Basins of any system on a Poincare section in the Python module (issue 31
+// items 6 and 8; basin/attractors.hpp): basins(system, ...) for ChainParams,
+// CouplingParams and the forced oscillator's ForcedParams alike (the belt's
+// Params keep their own basins), and attractor_basins(system, ...) for every
+// system, the belt included. Results are bound types of read-only arrays;
+// the classification runs without the GIL, with Ctrl-C.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "py_forced.hpp"
+#include "stickslip/basin/attractors.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/io/attractor_report.hpp"
+#include "stickslip/io/system_branch_report.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+struct PyAttractor {
+  std::string kind, label;
+  int m = 0, sticks = 0, starts = 0;
+  double sticks_per_period = 0, lyapunov = 0;
+  py::array z, cycle;  // the section point (tangent block); the cycle, one row per point
+};
+
+struct PyAttractorBasins {
+  std::vector<std::string> slice, state_names;  // the grid's two components; z's
+  py::array u, w, attractor, lyapunov;          // per start, the slice's first component fastest
+  std::vector<PyAttractor> attractors;
+  std::vector<std::string> failures;  // "u = ..., w = ...: why" per failed start
+  int failed = 0;
+  double seconds = 0;
+};
+
+py::array Vector(const Eigen::VectorXd& z) {
+  return ReadOnly(std::vector<double>(z.data(), z.data() + z.size()));
+}
+
+// The component a slice name gives (its state name or column name).
+int Component(const System& s, const std::string& name) {
+  for (int i = 0; i < s.tangent_dimension(); ++i)
+    if (name == s.StateName(i) || name == StateColumn(s, i)) return i;
+  throw InvalidArgument("slice: no state component '" + name + "' in this system");
+}
+
+// The starts' slice: components by name, base (default: steady sliding of an
+// autonomous system, zeros with a clock), ranges (default: base +- 1, or +-1.5
+// with a clock as ss_basin --force).
+StartSlice Slice(const System& s, const std::optional<std::pair<std::string, std::string>>& names,
+                 const std::optional<Eigen::VectorXd>& base,
+                 const std::optional<std::pair<double, double>>& u_range,
+                 const std::optional<std::pair<double, double>>& w_range, int nx, int ny) {
+  StartSlice g;
+  if (names) g.components = {Component(s, names->first), Component(s, names->second)};
+  const bool clock = s.clocks() > 0;
+  const SteadyState rest = clock ? SteadyState() : SteadySliding(s);
+  g.base = base ? *base : (rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension()));
+  const double half = clock ? 1.5 : 1.0;
+  for (int c = 0; c < 2; ++c) {
+    const double mid = clock || g.base.size() == 0 ? 0.0 : g.base[g.components[c]];
+    const auto& r = c == 0 ? u_range : w_range;
+    g.lo[c] = r ? r->first : mid - half;
+    g.hi[c] = r ? r->second : mid + half;
+  }
+  g.n = {nx, ny};
+  return g;
+}
+
+PyAttractorBasins Result(const System& s, const AttractorBasins& r, const StartSlice& g) {
+  PyAttractorBasins out;
+  out.slice = {s.StateName(g.components[0]), s.StateName(g.components[1])};
+  for (int i = 0; i < s.tangent_dimension(); ++i) out.state_names.push_back(s.StateName(i));
+  std::vector<double> u, w, lyap;
+  std::vector<int> att;
+  for (const AttractorStart& a : r.starts) {
+    u.push_back(a.at[0]), w.push_back(a.at[1]), att.push_back(a.attractor);
+    lyap.push_back(a.lyapunov);
+    if (!a.message.empty())
+      out.failures.push_back(out.slice[0] + " = " + Repr(a.at[0]) + ", " + out.slice[1] + " = " +
+                             Repr(a.at[1]) + ": " + a.message);
+  }
+  out.u = ReadOnly(u), out.w = ReadOnly(w), out.attractor = ReadOnly(att);
+  out.lyapunov = ReadOnly(lyap);
+  for (const Attractor& a : r.attractors) {
+    PyAttractor p;
+    p.kind = Name(a.kind), p.label = AttractorLabel(a);
+    p.m = a.m, p.sticks = a.sticks, p.starts = a.starts;
+    p.sticks_per_period = a.sticks_per_period, p.lyapunov = a.lyapunov;
+    p.z = Vector(a.z);
+    const int n = s.tangent_dimension();
+    py::array_t<double> cycle(
+        {static_cast<py::ssize_t>(a.cycle.size()), static_cast<py::ssize_t>(n)});
+    auto c = cycle.mutable_unchecked<2>();
+    for (size_t k = 0; k < a.cycle.size(); ++k)
+      for (int i = 0; i < n; ++i) c(k, i) = a.cycle[k][i];
+    cycle.attr("setflags")(py::arg("write") = false);
+    p.cycle = cycle;
+    out.attractors.push_back(p);
+  }
+  out.failed = r.failed, out.seconds = r.seconds;
+  return out;
+}
+
+PyAttractorBasins AttractorBasinsOf(const py::object& system, int nx, int ny,
+                                    const std::optional<std::pair<std::string, std::string>>& slice,
+                                    const std::optional<Eigen::VectorXd>& base,
+                                    const std::optional<std::pair<double, double>>& x_range,
+                                    const std::optional<std::pair<double, double>>& y_range,
+                                    std::optional<int> transient, std::optional<int> keep,
+                                    std::optional<int> max_period, int threads,
+                                    std::optional<double> rtol, std::optional<double> atol) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  AttractorOptions o;
+  o.slice = Slice(*s, slice, base, x_range, y_range, nx, ny);
+  o.threads = threads;
+  o.iterate = IterateOptions(o.iterate, transient, keep, rtol, atol);
+  o.max_period = max_period.value_or(std::clamp(o.iterate.keep / 2, 1, o.max_period));
+  const std::string e = o.ValidationError(*s);
+  if (!e.empty()) throw InvalidArgument(e);
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  AttractorBasins r;
+  {
+    py::gil_scoped_release nogil;
+    r = ClassifyAttractors(*s, o);
+  }
+  interrupt.RaiseIfInterrupted();
+  if (!r.error.empty()) RaiseNumerical("basins: " + r.error);
+  if (r.cancelled) RaiseNumerical("basins: cancelled");
+  return Result(*s, r, o.slice);
+}
+
+}  // namespace
+
+void BindAttractors(py::module_& m) {
+  py::class_<PyAttractor>(m, "Attractor",
+                          "One attractor of attractor_basins(): kind (periodic, rest, chaotic, "
+                          "undecided, unbounded, failed), m (returns per period), sticks, its "
+                          "section point z (the state but the phase) and cycle (m rows).")
+      .def_readonly("kind", &PyAttractor::kind)
+      .def_readonly("label", &PyAttractor::label)
+      .def_readonly("m", &PyAttractor::m)
+      .def_readonly("sticks", &PyAttractor::sticks)
+      .def_readonly("sticks_per_period", &PyAttractor::sticks_per_period)
+      .def_readonly("lyapunov", &PyAttractor::lyapunov)
+      .def_readonly("starts", &PyAttractor::starts)
+      .def_readonly("z", &PyAttractor::z)
+      .def_readonly("cycle", &PyAttractor::cycle);
+  using B = PyAttractorBasins;
+  py::class_<B>(m, "AttractorBasins",
+                "Result of attractor_basins(): per start (the slice's first component fastest) "
+                "u, w (its two components, named in `slice`), attractor (index into "
+                "`attractors`, -1 failed) and lyapunov; `failures` says why.")
+      .def_readonly("slice", &B::slice)
+      .def_readonly("state_names", &B::state_names)
+      .def_readonly("u", &B::u)
+      .def_readonly("w", &B::w)
+      .def_readonly("attractor", &B::attractor)
+      .def_readonly("lyapunov", &B::lyapunov)
+      .def_readonly("attractors", &B::attractors)
+      .def_readonly("failures", &B::failures)
+      .def_readonly("failed", &B::failed)
+      .def_readonly("seconds", &B::seconds);
+  const py::object none = py::none();
+  const char* doc =
+      "Basins of any system on a Poincare section (as ss_basin --force / --system; the one "
+      "classifier, C++ ClassifyAttractors): nx x ny starts on the slice of two state "
+      "components (`slice`, names; default the first two) through `base` (default steady "
+      "sliding, or zeros with a forcing phase), over x_range and y_range (default base +- 1; "
+      "+-1.5 with a phase). A forced system's section is the stroboscopic one, an autonomous "
+      "system's the returns to its first velocity's zero, falling.";
+  for (const char* name : {"attractor_basins", "basins"})
+    m.def(name, &AttractorBasinsOf, py::arg("system"), py::arg("nx") = 41, py::arg("ny") = 41,
+          py::arg("slice") = none, py::arg("base") = none, py::arg("x_range") = none,
+          py::arg("y_range") = none, py::arg("transient") = none, py::arg("keep") = none,
+          py::arg("max_period") = none, py::arg("threads") = 2, py::arg("rtol") = none,
+          py::arg("atol") = none, doc);
+}
+
+}  // namespace stickslip::python
