@@ -63,4 +63,6 @@ done
 "$build/ss_continue" --study studies/brake.ini --out "$fig/brake" >/dev/null
 "$build/ss_continue" --study studies/chain2.ini --out "$fig/chain2" >/dev/null 2>&1 || [[ $? -eq 1 ]]
 run "$build/ss_basin" --study studies/chain2_basin.ini --out "$fig/chain2_basin"
+run "$build/ss_orbit_diagram" --study studies/chain2.ini --from 0.05 --to 0.45 --n 200 \
+  --transient 300 --keep 100 --out "$fig/chain2_od"
 du -sh "$fig"

@@ -1,8 +1,10 @@
-// ss_orbit_diagram: the orbit diagram of the forced oscillator:
-// stroboscopic section points, stick counts and exit phases against one
-// parameter, swept up and down, with the largest Lyapunov exponent below.
+// ss_orbit_diagram: the orbit diagram of the forced oscillator (stroboscopic
+// section points) or of any --system (its returns to x1' = 0 falling), with
+// stick counts and exit phases against one parameter, swept up and down, and
+// the largest Lyapunov exponent below.
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,24 +34,29 @@ constexpr const char* kNotes =
     "A value whose flow fails or passes --max_amplitude is a `# failed:` line; the next\n"
     "starts from rest. An interrupted run writes the values done, marked partial.\n"
     "The forced flow's rtol and atol default to 1e-12. --integrator cvode integrates the\n"
-    "slip phases by CVODE instead of Taylor series: an independent check of the exponent.\n";
+    "slip phases by CVODE instead of Taylor series: an independent check of the exponent.\n"
+    "--system chain|mode_coupling: the map is the returns to x1' = 0 falling (the maxima of\n"
+    "the first component), --param any of the system's parameters, --from and --to required;\n"
+    "the tables' columns are the system's states (x1, x1dot, ..., stuck1, stuck2, ...).\n";
 constexpr const char* kExample =
     "\nExample: ss_orbit_diagram --law stribeck --beta 0.01 --v 0.1 --force 0.5 --param omega "
     "--from 0.2 --to 1.2 --n 400";
 
 po::options_description AppOptions() {
   po::options_description d("Orbit diagram (study section [orbit_diagram])");
-  d.add_options()("param", cli::Value()->value_name("NAME"),
-                  "the swept parameter: one of the law's, force or omega (default omega)")(
+  d.add_options()(
+      "param", cli::Value()->value_name("NAME"),
+      "the swept parameter: one of the law's, force or omega (default omega); --system: any "
+      "of its parameters (default v)")(
       "from", cli::Value()->value_name("P"),
-      "first value (default: omega 0.5, else the parameter's range)")(
+      "first value (default: omega 0.5, else the parameter's range; --system: required)")(
       "to", cli::Value()->value_name("P"),
-      "last value (default: omega 2.5, else the parameter's range)")(
+      "last value (default: omega 2.5, else the parameter's range; --system: required)")(
       "n", cli::Value()->value_name("N"), "parameter values, in [2, 100000] (default 200)")(
       "transient", cli::Value()->value_name("P"),
-      "forcing periods discarded per value, in [0, 1e6] (default 500)")(
+      "returns (forcing periods) discarded per value, in [0, 1e6] (default 500)")(
       "keep", cli::Value()->value_name("K"),
-      "forcing periods recorded per value, in [10, 1e6] (default 200)")(
+      "returns (forcing periods) recorded per value, in [10, 1e6] (default 200)")(
       "direction", cli::Value()->value_name("D"), "up, down or both (default both)")(
       "chunks", cli::Value()->value_name("C"),
       "pieces each sweep is cut into and run in parallel, each from rest: hysteresis shows only "
@@ -63,9 +70,13 @@ po::options_description AppOptions() {
 }
 
 struct Setup {
-  ss::ForcedParams p;
+  ss::ForcedParams p;                  // the forced oscillator's (without --system)
+  std::unique_ptr<ss::System> system;  // what is swept: p's model, or --system's
+  int param = 0;                       // its parameter index
   ss::OrbitDiagramOptions o;
   ss::FlowOptions flow;  // for the metadata
+  ss::DiagramLabels labels;
+  std::string model;  // one line
 };
 
 long Count(const cli::Arguments& args, const char* name, long fallback, long lo, long hi) {
@@ -76,8 +87,12 @@ long Count(const cli::Arguments& args, const char* name, long fallback, long lo,
   return n;
 }
 
-Setup Configure(const cli::Arguments& args) {
-  Setup s;
+// The forced oscillator and its swept parameter (checked at --from and --to).
+void ConfigureForced(const cli::Arguments& args, Setup& s) {
+  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
+    if (args.Given(phys))
+      throw cli::UsageError(args.Source(phys) +
+                            ": the forced oscillator takes dimensionless inputs");
   s.p.base = cli::UncheckedModelFromArguments(args);
   s.p.force = args.Number("force", 0.3);
   s.p.omega = args.Number("omega", 1);
@@ -98,6 +113,43 @@ Setup Configure(const cli::Arguments& args) {
     s.o.axis.Set(at, end[0] == 'f' ? s.o.from : s.o.to);
     cli::CheckForcedModel(args, at, " at --" + std::string(end), s.o.axis.name());
   }
+  s.system = std::make_unique<ss::ForcedModel>(s.p);
+  s.param = s.o.axis.index();
+  s.labels = {s.o.axis.name(), ss::ParameterAxisLabel(s.o.axis), "forcing phase 0"};
+}
+
+// --system's system and its swept parameter (checked at --from and --to).
+void ConfigureSystem(const cli::Arguments& args, Setup& s) {
+  s.system = cli::SystemFromArguments(args);
+  const std::string name = args.Text("param", "v");
+  s.param = s.system->ParameterIndex(name);
+  if (s.param < 0)
+    throw cli::UsageError(args.Source("param") + " = " + name + ": no parameter of " +
+                          args.Text("system") + " (" + cli::ParameterList(*s.system) + ")");
+  for (const char* end : {"from", "to"})
+    if (!args.Given(end))
+      throw cli::UsageError("--system " + args.Text("system") + " needs --" + end);
+  s.o.from = args.Number("from", 0), s.o.to = args.Number("to", 0);
+  if (s.o.from == s.o.to)
+    throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");
+  for (const char* end : {"from", "to"}) {
+    std::unique_ptr<ss::System> at = s.system->Clone();
+    at->SetParameterValue(s.param, args.Number(end, 0));
+    const std::string e = at->ValidationError();
+    if (!e.empty()) throw cli::UsageError(args.Source(end) + " = " + args.Text(end) + ": " + e);
+  }
+  const ss::Section x = ss::MaximaSection(*s.system);
+  s.labels = {name, name,
+              s.system->StateName(x.g.terms[0].index) + " = 0 falling (maxima of " +
+                  s.system->StateName(0) + ")"};
+}
+
+Setup Configure(const cli::Arguments& args) {
+  Setup s;
+  if (cli::SystemRequested(args))
+    ConfigureSystem(args, s);
+  else
+    ConfigureForced(args, s);
   s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
   s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
   s.o.iterate.keep = static_cast<int>(Count(args, "keep", 200, 10, 1000000));
@@ -130,12 +182,33 @@ Setup Configure(const cli::Arguments& args) {
   return s;
 }
 
-std::string Describe(const Setup& s) {
+std::string Describe(const cli::Arguments& args, const Setup& s) {
+  if (cli::SystemRequested(args)) {
+    std::string d = cli::DescribeSystem(*s.system, cli::SystemChoiceOf(args), s.param);
+    const size_t at = d.find("[continued]");
+    return at == std::string::npos ? d : d.replace(at, 11, "[swept]");
+  }
   std::string d = std::string("law=") + ss::Name(s.p.base.law);
   for (const ss::ParameterAxis& a :
        ss::ParameterAxes(s.p.base.law, true))  // the swept one left out
     if (a != s.o.axis) d += " " + a.name() + "=" + ss::FormatNumber(a.Get(s.p));
   return d;
+}
+
+// The files' metadata: the tool, the model, the integrator.
+cli::Metadata Metadata(const cli::Arguments& args, const Setup& s, const std::string& command,
+                       const std::string& model) {
+  if (!cli::SystemRequested(args)) {
+    cli::Metadata m = cli::RunMetadata(kProg, command, s.p.base, s.flow, s.labels.param);
+    m.emplace_back("model", "forced oscillator, " + model);
+    return m;
+  }
+  cli::Metadata m = cli::ToolMetadata(kProg, command);
+  m.insert(m.end(), {{"system", model},
+                     {"integrator", ss::Name(s.flow.integrator)},
+                     {"rtol", ss::FormatNumber(s.flow.rtol)},
+                     {"atol", ss::FormatNumber(s.flow.atol)}});
+  return m;
 }
 
 int Main(int argc, char** argv) {
@@ -146,54 +219,50 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_orbit_diagram [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
-  cli::RefuseSystem(args, kProg);
-  for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
-    if (args.Given(phys))
-      throw cli::UsageError(args.Source(phys) +
-                            ": the forced oscillator takes dimensionless inputs");
   Setup s = Configure(args);
   const ss::FigureFormat format = cli::FigureFormatOf(args);
   const std::string figure = ss::FigureFile("orbit_diagram", format);
   cli::AppRun app(kProg, args, "plots/orbit_diagram",
                   {"orbit_diagram.tsv", "lyapunov.tsv", "orbit_diagram.gp", figure});
   cli::RunControl& run = app.run();
-  run.Phase("iterating the stroboscopic map");
+  run.Phase("iterating the Poincare map");
   s.o.cancelled = [&run] { return run.Cancelled(); };
   s.o.progress = [&run](int done, int total) {
     if (run.ProgressDue())
       run.Progress(std::to_string(done) + " of " + std::to_string(total) + " values",
                    static_cast<double>(done) / total, done, "values");
   };
-  const ss::OrbitDiagram d = ss::ComputeOrbitDiagram(s.p, s.o);
+  const ss::OrbitDiagram d = ss::ComputeOrbitDiagram(*s.system, s.param, s.o);
   if (!d.error.empty()) {  // nothing computed: nothing written
     std::cerr << kProg << ": " << d.error << "\n";
     return cli::kExitFailed;
   }
-  const std::string model = Describe(s);
-  const std::string axis = s.o.axis.name();
-  cli::Metadata meta =
-      cli::RunMetadata(kProg, cli::CommandLine(argc, argv), s.p.base, s.flow, axis);
+  const bool forced = !cli::SystemRequested(args);
+  const std::string model = Describe(args, s), axis = s.labels.param;
+  const std::string unit = forced ? " forcing periods" : " returns";
+  cli::Metadata meta = Metadata(args, s, cli::CommandLine(argc, argv), model);
   meta.insert(meta.end(),
-              {{"model", "forced oscillator, " + model},
-               {"swept", axis + " from " + ss::FormatNumber(s.o.from) + " to " +
+              {{"swept", axis + " from " + ss::FormatNumber(s.o.from) + " to " +
                              ss::FormatNumber(s.o.to) + ", " + std::to_string(s.o.n) + " values"},
-               {"transient", std::to_string(s.o.iterate.transient) + " forcing periods"},
-               {"keep", std::to_string(s.o.iterate.keep) + " forcing periods"},
-               {"section", "forcing phase 0 (cos Omega t = 1)"},
+               {"transient", std::to_string(s.o.iterate.transient) + unit},
+               {"keep", std::to_string(s.o.iterate.keep) + unit},
+               {"section", forced ? "forcing phase 0 (cos Omega t = 1)" : s.labels.section},
                {"status", d.cancelled ? "partial (" + run.Reason() + ")"
                                       : std::to_string(d.failed) + " values failed"}});
   run.Phase("writing");
-  ss::TsvTable points = ss::OrbitDiagramTable(d, s.o.axis), exps = ss::ExponentTable(d, s.o.axis);
+  ss::TsvTable points = ss::OrbitDiagramTable(*s.system, d, s.labels),
+               exps = ss::ExponentTable(*s.system, d, s.labels);
   points.PrependMeta(meta);
   exps.PrependMeta(meta);
   app.out().Write("orbit_diagram.tsv", points.str());
   app.out().Write("lyapunov.tsv", exps.str());
-  app.out().Write("orbit_diagram.gp", ss::OrbitDiagramScript(format, s.o.axis,
-                                                             ss::FigureTitle(model, {axis}) +
-                                                                 (d.cancelled ? " (partial)" : ""),
-                                                             s.o.up, s.o.down));
+  const std::string title = forced ? ss::FigureTitle(model, {axis}) : ss::EnhancedText(model);
+  app.out().Write(
+      "orbit_diagram.gp",
+      ss::OrbitDiagramScript(*s.system, format, s.labels, title + (d.cancelled ? " (partial)" : ""),
+                             s.o.up, s.o.down));
   if (!app.Finish("orbit_diagram.gp", {figure}, {figure})) return cli::kExitFailed;
-  std::cout << kProg << ": forced oscillator, " << model << "\n"
+  std::cout << kProg << ": " << (forced ? "forced oscillator, " : "") << model << "\n"
             << axis << " from " << ss::FormatNumber(s.o.from) << " to " << ss::FormatNumber(s.o.to)
             << ": " << exps.rows() << " values done, " << d.failed << " failed, in "
             << ss::FormatNumber(std::round(d.seconds * 1e3) / 1e3) << " s\n"

@@ -2,6 +2,7 @@
 // (chaos/lyapunov.hpp; docs/theory.md "Lyapunov exponents").
 #include "stickslip/chaos/lyapunov.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cfloat>
 #include <cmath>
 
@@ -142,6 +143,16 @@ bool AtRest(const System& s, const FlowPoint& z, double tol) {
   return f.head(nt).lpNorm<Eigen::Infinity>() <= tol * (1 + z.z.head(nt).lpNorm<Eigen::Infinity>());
 }
 
+// The largest real part of the field's eigenvalues at a rest point: the
+// exponent of a run settled there.
+double LargestRealPart(const System& s, const FlowPoint& z) {
+  const int nt = s.tangent_dimension();
+  Eigen::MatrixXd J(nt, nt);
+  s.Jacobian(z.mode, z.z, J);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, false);
+  return es.eigenvalues().real().maxCoeff();
+}
+
 void Check(const System& s, const FlowPoint& start, const PoincareSection& p,
            const LyapunovOptions& o) {
   const std::string e = o.ValidationError();
@@ -166,6 +177,7 @@ void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double res
     const bool rest = AtRest(s, r.end, rest_tol);
     run->status = rest ? LyapunovStatus::kRest : LyapunovStatus::kNoReturn;
     run->message = (rest ? "at rest at t = " : "no return by t = ") + Num(r.end.t) + where;
+    if (rest) run->lyapunov = LargestRealPart(s, r.end);
     return;
   }
   run->status =

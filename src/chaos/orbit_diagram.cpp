@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <memory>
 
 #include "numerics/numbers.hpp"
 #include "parallel/pool.hpp"
@@ -31,23 +32,67 @@ std::string OrbitDiagramOptions::ValidationError() const {
 
 namespace {
 
+// At rest on the belt: every contact's velocity on its surface (where one
+// component carries it), the rest 0, the clocks at phase 0.
+FlowPoint OnTheBelt(const System& s) {
+  FlowPoint z{0, Eigen::VectorXd::Zero(s.dimension()), ModeSet()};
+  for (int i = 0; i < s.contacts(); ++i) {
+    const ContactVelocity c = s.Contact(i);
+    if (c.size == 1 && c.terms[0].weight == 1) z.z[c.terms[0].index] = c.speed;
+  }
+  z.mode = ModeOf(s, z.z);
+  return z;
+}
+
+// The last value's end as this value's start: a sticking contact moves onto
+// its surface (the belt's speed may be the swept parameter), and the mode is
+// Filippov's at the new value.
+FlowPoint Carried(const System& s, FlowPoint z) {
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (z.mode[i] != Mode::kStick) continue;
+    const ContactVelocity c = s.Contact(i);
+    if (c.size == 1 && c.terms[0].weight == 1) z.z[c.terms[0].index] = c.speed;
+  }
+  z.t = 0;
+  z.mode = ModeOf(s, z.z);
+  return z;
+}
+
+PoincareSection SectionAt(const System& s, const OrbitDiagramOptions& o, const FlowPoint& z) {
+  if (s.clocks() > 0) return PoincareSection::Stroboscopic(s, z.z, 1);
+  PoincareSection p;
+  p.kind = SectionKind::kSurface;
+  p.surface = o.surface ? *o.surface : MaximaSection(s);
+  return p;
+}
+
+SectionPoint RestPoint(const System& s, const FlowPoint& z) {
+  SectionPoint p;
+  p.z = z.z.head(s.tangent_dimension());
+  p.mode = z.mode;
+  return p;
+}
+
 // One direction's sweep over `cols` (in sweep order); never throws.
-void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<DiagramColumn*> cols,
-           const std::atomic<bool>& stop, std::atomic<int>& done) {
+void Sweep(const System& base, int j, const OrbitDiagramOptions& o,
+           std::vector<DiagramColumn*> cols, const std::atomic<bool>& stop,
+           std::atomic<int>& done) {
   bool restart = true;
   FlowPoint z;
+  std::unique_ptr<System> s = base.Clone();
   for (DiagramColumn* c : cols) {
     if (stop.load(std::memory_order_relaxed)) return;
     try {
-      ForcedParams p = base;
-      o.axis.Set(p, c->value);
-      const ForcedModel m(p);
-      if (restart) z = ForcedStart(m, 0, 0, p.base.v);  // from rest on the belt
-      z = ForcedStart(m, 0, z.z[0], z.mode[0] == Mode::kStick ? p.base.v : z.z[1]);
-      c->run = IterateStroboscopic(
-          m, z, o.iterate, [&stop] { return stop.load(std::memory_order_relaxed); },
-          o.max_amplitude);
-      restart = c->run.status != LyapunovStatus::kDone;
+      s->SetParameterValue(j, c->value);
+      const std::string e = s->ValidationError();
+      if (!e.empty()) throw InvalidArgument(e);
+      z = Carried(*s, restart ? OnTheBelt(*s) : z);
+      c->run = IterateSection(
+          *s, z, SectionAt(*s, o, z), o.iterate,
+          [&stop] { return stop.load(std::memory_order_relaxed); }, o.max_amplitude);
+      if (c->run.status == LyapunovStatus::kRest)  // steady sliding: its point, one row
+        c->run.points.assign(1, RestPoint(*s, c->run.end));
+      restart = c->run.status != LyapunovStatus::kDone && c->run.status != LyapunovStatus::kRest;
       z = c->run.end;
     } catch (const std::exception& e) {  // no exception leaves the thread
       c->run.status = LyapunovStatus::kFlowFailed;
@@ -66,8 +111,6 @@ void Sweep(const ForcedParams& base, const OrbitDiagramOptions& o, std::vector<D
 }  // namespace
 
 OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOptions& o) {
-  const std::string e = o.ValidationError();
-  if (!e.empty()) throw InvalidArgument(e);
   if (const std::string ae = AxisError(o.axis, base.base.law, true); !ae.empty())
     throw InvalidArgument(ae);
   for (double v : {o.from, o.to}) {
@@ -75,6 +118,23 @@ OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOpt
     o.axis.Set(p, v);
     const std::string pe = ValidationError(p);
     if (!pe.empty()) throw InvalidArgument(pe);
+  }
+  return ComputeOrbitDiagram(ForcedModel(base), o.axis.index(), o);
+}
+
+OrbitDiagram ComputeOrbitDiagram(const System& base, int j, const OrbitDiagramOptions& o) {
+  const std::string e = o.ValidationError();
+  if (!e.empty()) throw InvalidArgument(e);
+  if (j < 0 || j >= base.parameters())
+    throw InvalidArgument("parameter index " + std::to_string(j) + " must lie in [0, " +
+                          std::to_string(base.parameters() - 1) + "]");
+  if (base.clocks() > 1) throw InvalidArgument("a system with more than one clock");
+  if (base.clocks() == 0 && !o.surface) MaximaSection(base);  // throws without a velocity
+  for (double v : {o.from, o.to}) {
+    std::unique_ptr<System> s = base.Clone();
+    s->SetParameterValue(j, v);
+    const std::string pe = s->ValidationError();
+    if (!pe.empty()) throw InvalidArgument(base.ParameterName(j) + " = " + Num(v) + ": " + pe);
   }
   const auto t0 = std::chrono::steady_clock::now();
   OrbitDiagram d;
@@ -109,7 +169,7 @@ OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOpt
   const int total = static_cast<int>(d.columns.size());
   const PoolRun pool = RunPool(
       static_cast<int>(pieces.size()), o.threads,
-      [&](int k) { Sweep(base, o, pieces[k], stop, done); }, stop,
+      [&](int k) { Sweep(base, j, o, pieces[k], stop, done); }, stop,
       [&] {
         if (o.cancelled && o.cancelled()) return true;
         if (o.progress) o.progress(done.load(), total);
@@ -119,7 +179,7 @@ OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOpt
   d.error = pool.error;
   d.cancelled = stop.load();
   for (const DiagramColumn& c : d.columns) {
-    if (c.computed && c.run.status != LyapunovStatus::kDone) ++d.failed;
+    if (c.computed && !c.settled()) ++d.failed;
     d.steps += c.run.steps;
   }
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -83,6 +83,28 @@ TEST_F(SystemApp, ChainBasinsRestOnSteadySlidingInClosedForm) {
   EXPECT_EQ(att.rows[0][att.Column("starts")], "12");
 }
 
+// The orbit diagram of the chain study swept up from rest on the belt (both
+// blocks stuck at x = 0): the blocks stay in step (library test
+// ChainOrbitDiagram checks that orbit against the single belt's); every
+// section point lies on x1' = 0 with both blocks' columns named.
+TEST_F(SystemApp, ChainOrbitDiagramKeepsTheBlocksInStep) {
+  const auto r = RunOut("ss_orbit_diagram", dir_,
+                        {"--study", kChain, "--from", "0.28", "--to", "0.32", "--n", "2",
+                         "--direction", "up", "--transient", "100", "--keep", "10"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir_ + "/out/orbit_diagram.tsv"));
+  ASSERT_EQ(t.rows.size(), 20u);
+  for (const char* c : {"v", "x1", "x1dot", "x2", "x2dot", "stuck1", "stuck2", "sticks"})
+    EXPECT_GE(t.Column(c), 0) << c;
+  for (const auto& row : t.rows) {
+    EXPECT_EQ(std::stod(row[t.Column("x1dot")]), 0);
+    EXPECT_NEAR(std::stod(row[t.Column("x1")]), std::stod(row[t.Column("x2")]), 1e-9);
+    EXPECT_EQ(row[t.Column("sticks")], "2");
+  }
+  EXPECT_TRUE(tu::Contains(t.meta.at("section"), "x1' = 0 falling"));
+  EXPECT_TRUE(tu::Contains(t.meta.at("system"), "v=[swept]"));
+}
+
 TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   const std::vector<std::string> run = {"--param", "v", "--to", "0.4"};
   auto with = [&](std::vector<std::string> a) {
@@ -121,8 +143,11 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_continue", {"--set", "kc=1"}, {"--set", "--system chain"});
   ExpectRejected("ss_continue", {"--start_at", "0.2"}, {"--start_at", "--system"});
   ExpectRejected("ss_chart", {"--system", "chain"}, {"--system", "ss_chart"});
-  ExpectRejected("ss_orbit_diagram", {"--system", "mode_coupling"},
-                 {"--system", "ss_orbit_diagram"});
+  ExpectRejected("ss_orbit_diagram", {"--system", "mode_coupling"}, {"--from"});
+  ExpectRejected("ss_orbit_diagram", {"--system", "chain", "--param", "q", "--from", "0.1"},
+                 {"--param", "q", "kc"});
+  ExpectRejected("ss_orbit_diagram", {"--system", "chain", "--from", "-0.1", "--to", "0.3"},
+                 {"--from", "-0.1"});
   ExpectRejected("ss_basin", {"--system", "chain", "--slice", "x1,x9"}, {"--slice", "'x9'"});
   ExpectRejected("ss_basin", {"--system", "chain", "--slice", "x1',x1dot"}, {"--slice", "differ"});
   ExpectRejected("ss_basin", {"--system", "chain", "--slice", "x1"}, {"--slice", "two"});

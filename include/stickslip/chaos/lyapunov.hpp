@@ -66,7 +66,8 @@ enum class LyapunovStatus {
   kDiverged,    ///< a state component passed max_amplitude
   kCancelled,
   kNoReturn,  ///< a surface section: no return within max_return_time (not at rest)
-  kRest,      ///< a surface section: settled at a rest point, no more returns
+  kRest,      ///< a surface section: settled at a rest point (end), no more returns;
+              ///< lyapunov is the largest real part of the field's eigenvalues there
 };
 template <>
 struct EnumNames<LyapunovStatus> {

@@ -1,7 +1,8 @@
-// The orbit diagram of the forced oscillator (issue 21 item 1): for each
-// value of one parameter, the stroboscopic map's section points after a
-// transient, the stick counts and exit phases, and the largest Lyapunov
-// exponent (chaos/lyapunov.hpp). Swept up and down, each value starting from
+// The orbit diagram of any system (issue 21 item 1, issue 32 item 3): for
+// each value of one parameter, the section points of its Poincare map after a
+// transient (a forced system's stroboscopic map, an autonomous system's
+// returns to a surface), the stick counts and exit phases, and the largest
+// Lyapunov exponent (chaos/lyapunov.hpp). Swept up and down, each value starting from
 // the last state of the one before, so that hysteresis shows. The two
 // directions (and, with chunks > 1, their pieces) are tasks of a pool of at
 // most `threads` threads, capped by the hardware threads; no exception crosses
@@ -9,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,8 +46,11 @@ struct OrbitDiagramOptions {
   int chunks = 1;
   /// Worker threads, capped by the hardware threads; 0: all of them.
   int threads = 0;
-  /// A value whose |x| or |x'| passes this is kDiverged; the next starts from rest.
+  /// A value whose state passes this is kDiverged; the next starts from rest.
   double max_amplitude = 50;
+  /// An autonomous system's section (default MaximaSection); a forced
+  /// system's is its stroboscopic map.
+  std::optional<Section> surface;
   std::function<bool()> cancelled;                    ///< polled by the calling thread
   std::function<void(int done, int total)> progress;  ///< called on the calling thread
   /// Empty if valid, else one line naming the offending value.
@@ -56,13 +61,16 @@ struct OrbitDiagramOptions {
 struct DiagramColumn {
   SweepDirection direction = SweepDirection::kUp;
   double value = 0;
-  SectionRun run;
+  SectionRun run;         ///< kRest: settled on steady sliding, its one point in run.points
   bool computed = false;  ///< false: not reached (cancelled)
+  bool settled() const {
+    return run.status == LyapunovStatus::kDone || run.status == LyapunovStatus::kRest;
+  }
 };
 
 struct OrbitDiagram {
   std::vector<DiagramColumn> columns;  ///< the up sweep, then the down sweep
-  int failed = 0;                      ///< computed values whose status is not kDone
+  int failed = 0;                      ///< computed values neither kDone nor kRest
   int threads = 0;                     ///< worker threads that ran
   std::string error;  ///< not empty: no worker thread could start (nothing computed)
   bool cancelled = false;
@@ -70,7 +78,13 @@ struct OrbitDiagram {
   long steps = 0;
 };
 
-/// Throws InvalidArgument if the options or the model at either end are not valid.
+/// Parameter `parameter` of `base` (its index, System::ParameterIndex) swept
+/// over from..to; each sweep starts from rest on the belt (every contact's
+/// velocity on its surface, the rest 0). Throws InvalidArgument if the
+/// options or the system at either end are not valid.
+OrbitDiagram ComputeOrbitDiagram(const System& base, int parameter,
+                                 const OrbitDiagramOptions& options);
+/// The forced oscillator, options.axis swept (any of the law's, force, omega).
 OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOptions& options);
 
 }  // namespace stickslip
