@@ -1,8 +1,9 @@
-// Basins of any system on a Poincare section in the Python module (issue 31
-// items 6 and 8; basin/attractors.hpp): basins(system, ...) for ChainParams,
-// CouplingParams and the forced oscillator's ForcedParams alike (the belt's
-// Params keep their own basins), and attractor_basins(system, ...) for every
-// system, the belt included. Results are bound types of read-only arrays;
+// Basins and orbit diagrams of any system on a Poincare section in the Python
+// module (issue 31 items 6 and 8, issue 32 item 3; basin/attractors.hpp,
+// chaos/orbit_diagram.hpp): basins(system, ...) and orbit_diagram(system,
+// parameter, ...) for ChainParams and CouplingParams (the belt's and the
+// forced oscillator's keep theirs), and attractor_basins(system, ...) for
+// every system, the belt included. Results are bound types of read-only arrays;
 // the classification runs without the GIL, with Ctrl-C.
 #include <pybind11/stl.h>
 
@@ -14,6 +15,7 @@
 
 #include "py_forced.hpp"
 #include "stickslip/basin/attractors.hpp"
+#include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/attractor_report.hpp"
@@ -137,6 +139,65 @@ PyAttractorBasins AttractorBasinsOf(const py::object& system, int nx, int ny,
   return Result(*s, r, o.slice);
 }
 
+// A matrix of rows, read-only.
+py::array Rows(const std::vector<double>& flat, int cols) {
+  const auto rows = static_cast<py::ssize_t>(cols ? flat.size() / cols : 0);
+  py::array_t<double> a({rows, static_cast<py::ssize_t>(cols)}, flat.data());
+  a.attr("setflags")(py::arg("write") = false);
+  return std::move(a);
+}
+
+py::dict SystemDiagram(const py::object& system, const std::string& parameter, double from,
+                       double to, int n, std::optional<int> transient, std::optional<int> keep,
+                       bool up, bool down, int chunks, double max_amplitude,
+                       std::optional<double> rtol, std::optional<double> atol) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  const int j = s->ParameterIndex(parameter);
+  if (j < 0) throw InvalidArgument("parameter '" + parameter + "' is no parameter of this system");
+  OrbitDiagramOptions o;
+  o.from = from, o.to = to, o.n = n, o.up = up, o.down = down;
+  o.chunks = chunks, o.max_amplitude = max_amplitude;
+  o.iterate = IterateOptions(o.iterate, transient, keep, rtol, atol);
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  OrbitDiagram r;
+  {
+    py::gil_scoped_release nogil;
+    r = ComputeOrbitDiagram(*s, j, o);  // throws InvalidArgument before computing
+  }
+  interrupt.RaiseIfInterrupted();
+  if (!r.error.empty()) RaiseNumerical("orbit_diagram: " + r.error);
+  const int nt = s->tangent_dimension();
+  std::vector<double> value, lyap, err, point_value, z;
+  std::vector<std::string> dir, point_dir, names;
+  std::vector<int> sticks, exits;
+  py::list failed;
+  for (const DiagramColumn& c : r.columns) {
+    if (!c.computed) continue;
+    if (!c.settled()) {
+      failed.append(py::make_tuple(Name(c.direction), c.value, Name(c.run.status), c.run.message));
+      continue;
+    }
+    value.push_back(c.value), dir.push_back(Name(c.direction));
+    lyap.push_back(c.run.lyapunov), err.push_back(c.run.lyapunov_err);
+    for (const SectionPoint& q : c.run.points) {
+      point_value.push_back(c.value), point_dir.push_back(dir.back());
+      z.insert(z.end(), q.z.data(), q.z.data() + nt);
+      sticks.push_back(q.sticks), exits.push_back(q.exits);
+    }
+  }
+  for (int i = 0; i < nt; ++i) names.push_back(s->StateName(i));
+  py::dict d, per_value;
+  per_value["value"] = ReadOnly(value), per_value["direction"] = ReadOnlyStrings(dir);
+  per_value["lyapunov"] = ReadOnly(lyap), per_value["lyapunov_err"] = ReadOnly(err);
+  d["columns"] = per_value;
+  d["value"] = ReadOnly(point_value), d["direction"] = ReadOnlyStrings(point_dir);
+  d["z"] = Rows(z, nt), d["names"] = names;
+  d["sticks"] = ReadOnly(sticks), d["exits"] = ReadOnly(exits);
+  d["failed"] = failed, d["seconds"] = r.seconds, d["steps"] = r.steps;
+  return d;
+}
+
 }  // namespace
 
 void BindAttractors(py::module_& m) {
@@ -182,6 +243,16 @@ void BindAttractors(py::module_& m) {
           py::arg("y_range") = none, py::arg("transient") = none, py::arg("keep") = none,
           py::arg("max_period") = none, py::arg("threads") = 2, py::arg("rtol") = none,
           py::arg("atol") = none, doc);
+  // After the forced oscillator's orbit_diagram(ForcedParams, axis, ...).
+  m.def("orbit_diagram", &SystemDiagram, py::arg("system"), py::arg("parameter"), py::arg("from_"),
+        py::arg("to"), py::arg("n") = 200, py::arg("transient") = none, py::arg("keep") = none,
+        py::arg("up") = true, py::arg("down") = true, py::arg("chunks") = 1,
+        py::arg("max_amplitude") = 50.0, py::arg("rtol") = none, py::arg("atol") = none,
+        "orbit_diagram(system, parameter, from_, to, ...) for ChainParams and CouplingParams "
+        "(as ss_orbit_diagram --system): a row per kept section point (value, direction, z "
+        "with columns `names`, sticks, exits) on the returns to x1' = 0 falling; per value "
+        "`columns` (lyapunov; a value settled on steady sliding: one point, the largest real "
+        "part there); the values that failed with why (failed).");
 }
 
 }  // namespace stickslip::python

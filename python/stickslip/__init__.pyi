@@ -606,10 +606,17 @@ def stroboscopic(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] =
                  transient: Optional[int] = None, keep: Optional[int] = None,
                  max_amplitude: float = 1e6, rtol: Optional[float] = None,
                  atol: Optional[float] = None) -> Dict[str, Any]: ...
+@overload
 def orbit_diagram(params: ForcedParams, axis: Parameter | str, from_: float, to: float, n: int = 200,
                   transient: Optional[int] = None, keep: Optional[int] = None, up: bool = True,
                   down: bool = True, chunks: int = 1, max_amplitude: float = 50.0,
                   rtol: Optional[float] = None,
+                  atol: Optional[float] = None) -> Dict[str, Any]: ...
+@overload
+def orbit_diagram(system: Union[ChainParams, CouplingParams], parameter: str, from_: float,
+                  to: float, n: int = 200, transient: Optional[int] = None,
+                  keep: Optional[int] = None, up: bool = True, down: bool = True, chunks: int = 1,
+                  max_amplitude: float = 50.0, rtol: Optional[float] = None,
                   atol: Optional[float] = None) -> Dict[str, Any]: ...
 def forced_basins(params: ForcedParams, nx: int = 41, ny: int = 41,
                   x_range: Tuple[float, float] = (-1.5, 1.5),

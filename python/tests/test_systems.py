@@ -208,6 +208,22 @@ class Basins(unittest.TestCase):
         self.assertEqual([a.kind for a in rest.attractors], ["rest"])
         np.testing.assert_allclose(rest.attractors[0].z, [mu, 0, mu, 0], atol=1e-12)
 
+    def test_orbit_diagram_of_blocks_started_together_is_the_single_belts(self):
+        # From rest on the belt both blocks stay in step: each section point is
+        # the single belt's stick-slip maximum (its own 2-D orbit finder).
+        d = stickslip.orbit_diagram(self.chain(0.3), "v", 0.26, 0.34, n=3, transient=200,
+                                    keep=5, down=False)
+        self.assertEqual(d["names"], ["x1", "x1'", "x2", "x2'"])
+        self.assertEqual(d["z"].shape, (15, 4))
+        self.assertEqual(d["failed"], [])
+        for v, z in zip(d["value"], d["z"]):
+            law = stickslip.Params("cubic", beta=0.05, mu_s=0.4, mu_m=0.25, v_m=0.5, v=v)
+            self.assertAlmostEqual(z[0], stickslip.periodic_orbit(law).x_max, delta=1e-9)
+            self.assertAlmostEqual(z[2], z[0], delta=1e-9)
+        with self.assertRaises(ValueError) as c:
+            stickslip.orbit_diagram(self.chain(0.3), "q", 0.2, 0.3)
+        self.assertIn("'q'", str(c.exception))
+
     def test_bad_slices_are_refused_by_name(self):
         with self.assertRaises(ValueError) as c:
             stickslip.basins(self.chain(0.3), slice=("x1", "q"))
