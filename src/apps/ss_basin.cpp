@@ -34,6 +34,10 @@ constexpr const char* kNotes =
     "<attractor> <fraction>` and written to orbits.tsv (comment lines and the column\n"
     "basin_stability). With --param the curve of it against that parameter in the given\n"
     "box: basin_stability.tsv, basin_stability.gp and basin_stability.png, no grid.\n"
+    "With --force A --omega W or --system NAME: basins on a Poincare section instead\n"
+    "(the stroboscopic one, or the returns to x1' = 0 falling), each start classified as\n"
+    "periodic (m, sticks), rest, chaotic, unbounded or undecided: basins_forced.tsv (with\n"
+    "--system basins.tsv) per start, attractors.tsv per attractor, and the figure.\n"
     "The files are written as one set (docs/reliability.md).\n"
     "Study files: model and solver keys at top level, this app's keys in [basin].\n"
     "An interrupted or failed run writes the starts so far, marked partial.\n";

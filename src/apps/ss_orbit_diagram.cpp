@@ -146,10 +146,12 @@ void ConfigureSystem(const cli::Arguments& args, Setup& s) {
 
 Setup Configure(const cli::Arguments& args) {
   Setup s;
-  if (cli::SystemRequested(args))
+  if (cli::SystemRequested(args)) {
     ConfigureSystem(args, s);
-  else
+  } else {
+    cli::RefuseSystem(args, kProg);  // --set, --blocks or [system] without --system
     ConfigureForced(args, s);
+  }
   s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
   s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
   s.o.iterate.keep = static_cast<int>(Count(args, "keep", 200, 10, 1000000));

@@ -30,7 +30,8 @@ std::string AttractorOptions::ValidationError(const System& s) const {
   if (g.n[0] < 1 || g.n[1] < 1 || g.n[0] > kMaxSide || g.n[1] > kMaxSide)
     return "nx and ny must lie in [1, " + std::to_string(kMaxSide) + "]";
   if (!(g.lo[0] < g.hi[0]) || !(g.lo[1] < g.hi[1]))
-    return "the box must have x_min < x_max and xdot_min < xdot_max";
+    return "the box must have " + s.StateName(g.components[0]) + " from < to and " +
+           s.StateName(g.components[1]) + " from < to";
   for (double c : {g.lo[0], g.hi[0], g.lo[1], g.hi[1]})
     if (!(std::abs(c) <= kMaxCorner))
       return "the box's corners must be finite and within +-" + Num(kMaxCorner) + " (" +
@@ -233,7 +234,8 @@ AttractorBasins ClassifyAttractors(const System& sys, const AttractorOptions& o)
           [&stop] { return stop.load(std::memory_order_relaxed); }, &r);
       if (r.status == LyapunovStatus::kCancelled) return;
       found[k] = a;
-      if (found[k].kind == AttractorKind::kFailed) b.starts[k].message = r.message;
+      if (found[k].kind == AttractorKind::kFailed || r.status == LyapunovStatus::kNoReturn)
+        b.starts[k].message = r.message;  // why it failed, or why it is undecided
     } catch (const std::exception& ex) {  // no exception leaves the worker
       found[k].kind = AttractorKind::kFailed;
       b.starts[k].message = ex.what();

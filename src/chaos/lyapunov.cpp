@@ -38,10 +38,12 @@ class TangentProduct {
       : keep_(keep), sums_(batches, 0.0), times_(batches, 0.0) {
     m_ = Eigen::MatrixXd::Identity(n, n) / std::sqrt(static_cast<double>(n));
   }
-  // One return's Jacobian over time dt; `record` adds its growth to the kept sum.
-  void Apply(const Eigen::MatrixXd& J, double dt, bool record) {
+  // One return's Jacobian over time dt; `record` adds its growth to the kept
+  // sum. False (nothing changed) if J M is not finite (a grazing return).
+  bool Apply(const Eigen::MatrixXd& J, double dt, bool record) {
     next_.noalias() = J * m_;
     double norm = next_.norm();
+    if (!std::isfinite(norm)) return false;
     double growth = std::log(norm);
     if (!(norm > 0)) {  // collapsed onto zero: count a factor DBL_EPSILON, reseed with J
       ++collapses_;
@@ -51,11 +53,12 @@ class TangentProduct {
       if (!(norm > 0)) next_.setIdentity(), norm = next_.norm();
     }
     m_ = next_ / norm;
-    if (!record) return;
+    if (!record) return true;
     const size_t b = static_cast<size_t>(recorded_) * sums_.size() / keep_;
     sums_[b] += growth;
     times_[b] += dt;
     ++recorded_;
+    return true;
   }
   // The exponent per unit time and the standard error of the batch means; a
   // fixed return time `period` > 0 counts returns x period (the stroboscopic map).
@@ -102,7 +105,8 @@ SectionPoint Point(const System& s, const FlowPoint& z, const FlowRun& r,
   if (s.clocks() > 0)
     for (const FlowSwitch& ev : switches)
       if (ev.kind == SwitchKind::kStickOut) {
-        p.first_exit_phase = static_cast<float>(std::fmod(ev.z[nt], 2 * M_PI));
+        const double phase = std::fmod(ev.z[nt], 2 * M_PI);
+        p.first_exit_phase = static_cast<float>(phase < 0 ? phase + 2 * M_PI : phase);
         break;
       }
   return p;
@@ -174,10 +178,18 @@ void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double res
   const std::string where =
       std::string(timed ? " (period " : " (return ") + std::to_string(k) + ")";
   if (!timed && r.status == FlowStatus::kTimeLimit) {
-    const bool rest = AtRest(s, r.end, rest_tol);
+    // At rest: settled there if the rest point is stable; a start placed on
+    // an unstable one stays there too, but attracts nothing (no return).
+    const bool at_rest = AtRest(s, r.end, rest_tol);
+    const double lambda = at_rest ? LargestRealPart(s, r.end) : 0;
+    const bool rest = at_rest && lambda < 0;
     run->status = rest ? LyapunovStatus::kRest : LyapunovStatus::kNoReturn;
-    run->message = (rest ? "at rest at t = " : "no return by t = ") + Num(r.end.t) + where;
-    if (rest) run->lyapunov = LargestRealPart(s, r.end);
+    run->message =
+        (rest      ? "at rest at t = "
+         : at_rest ? "on an unstable rest point (largest real part " + Num(lambda) + ") by t = "
+                   : "no return by t = ") +
+        Num(r.end.t) + where;
+    if (rest) run->lyapunov = lambda;
     return;
   }
   run->status =
@@ -252,7 +264,12 @@ SectionRun IterateSection(const System& s, const FlowPoint& start, const Poincar
     if (timed) z.t = 0, z.z.tail(n - nt) = clocks, OntoSticking(s, &z);
     if (rq.variational) {
       ReturnJacobian(s, section, r, f, g, &J);
-      tangent.Apply(J, dt, kept);
+      if (!tangent.Apply(J, dt, kept)) {
+        run.status = LyapunovStatus::kFlowFailed;
+        run.message = "the map's Jacobian is not finite at return " + std::to_string(k) +
+                      ", t = " + Num(r.end.t) + " (the orbit grazes the section)";
+        break;
+      }
     }
     if (kept) run.points.push_back(Point(s, z, r, switches, dt));
   }

@@ -172,11 +172,12 @@ Described Describe(const Arguments& args, const std::string& prog, const std::st
     d.figure.comment =
         "Basins of ss_basin --system on the slice (" + u + ", " + w + ") through steady sliding.";
   }
-  d.meta.insert(d.meta.end(), {{"section", section},
-                               {"transient", std::to_string(o.iterate.transient) + " " + unit},
-                               {"keep", std::to_string(o.iterate.keep) + " " + unit},
-                               {"undecided_run_on", "x4 while undecided, up to " +
-                                                        std::to_string(o.max_keep) + " " + unit}});
+  d.meta.insert(d.meta.end(),
+                {{"section", section},
+                 {"transient", std::to_string(o.iterate.transient) + " " + unit},
+                 {"keep", std::to_string(o.iterate.keep) + " " + unit},
+                 {"undecided_run_on", "x4 while undecided, up to " + std::to_string(o.max_keep) +
+                                          (fp ? " periods" : " returns")}});
   return d;
 }
 
@@ -196,6 +197,7 @@ int RunSectionBasin(const Arguments& args, const std::string& prog, const std::s
   std::unique_ptr<ForcedParams> fp;
   std::unique_ptr<System> s;
   if (forced) {
+    RefuseSystem(args, prog);  // --set, --blocks or a [system] section without --system
     fp = std::make_unique<ForcedParams>(ForcedFromArguments(args));
     s = std::make_unique<ForcedModel>(*fp);
   } else {

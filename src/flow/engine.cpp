@@ -127,6 +127,7 @@ void Engine::Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
   Start(start, rq, out);
   FlowRun& r = *out;
   last_switch_t_ = NAN;
+  switched_at_.assign(k_, NAN);  // no allocation once warm (same k)
   if (rq.observer && rq.output_dt > 0) StartOutput(rq);
   if (rq.step_observer) rq.step_observer(t_, z_.data(), mode_);
   RootRepeats stalls(Tolerances::kSwitchStalls);

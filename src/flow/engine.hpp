@@ -54,7 +54,7 @@ class Engine {
   // earlier switches.
   void Exit(int contact, int sign, const ModeSet& detected);
   bool SwitchAtOnce(const std::vector<int>& roots);
-  void AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals);
+  bool AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals);
   // S = I + (f+ - f-) grad^T / (grad . f-) on the tangent block, M = S M.
   // M <- S M, and the column with the event's own d g / dp (g_p).
   void Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad,
@@ -109,6 +109,7 @@ class Engine {
   double output_origin_ = 0;                       // samples at origin + k output_dt
   long next_output_ = 0;                           // the next sample's k
   double last_switch_t_ = 0;                       // where the last switch was recorded
+  std::vector<double> switched_at_;                // per contact: its last switch's t
   // The segment's problem; the events of the last few modes (a mode's
   // events, the roles of its functions, the extremum components each
   // records, its arrivals), reused while the request keeps its shape.

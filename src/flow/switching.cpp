@@ -118,7 +118,7 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
       if (cur_->roles[i].kind == FunctionRole::kArrival) arrivals.push_back(c);
       if (cur_->roles[i].kind == FunctionRole::kExit) Exit(c, cur_->roles[i].sign, detected);
     }
-  AlsoArriving(detected, &arrivals);
+  if (!AlsoArriving(detected, &arrivals)) return false;
   for (int c : arrivals) OnSurface(contacts_[c], z_);
   const ModeChoiceResult r = ConsistentMode(*s_, mode_, arrivals, z_);
   if (r.choice != ModeChoice::kUnique) {
@@ -161,28 +161,36 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
   return true;
 }
 
-// A slipping contact past its surface at this instant (its root fell just
-// after the first one's in the step, by rounding, and would be lost with the
-// segment: two blocks arriving in step), or within rounding of it and
-// approaching, arrives too. One exactly on it has just switched there.
-void Engine::AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals) {
+// A slipping contact on or past its surface at this instant by the rounding
+// of its root (which fell just after the first one's in the step and would
+// be lost with the segment: two blocks arriving in step), or within rounding
+// of it and approaching faster than rounding, arrives too, unless it switched
+// at this instant already. Farther past, an event was lost: the run fails
+// there (false).
+bool Engine::AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals) {
   bool field = false;
   for (int c = 0; c < k_; ++c) {
     if (detected[c] == Mode::kStick || mode_[c] == Mode::kStick) continue;
     if (std::find(arrivals->begin(), arrivals->end(), c) != arrivals->end()) continue;
+    if (std::abs(t_ - switched_at_[c]) <= Tolerances::RootRepeat(t_)) continue;
     const ContactVelocity& h = contacts_[c];
     const double side = mode_[c] == Mode::kSlipBelow ? 1 : -1;  // below: h < 0
-    const double g = side * h.At(z_.data());
-    if (g == 0 || g < -Tolerances::StickStart(h.speed, 0)) continue;
+    const double g = side * h.At(z_.data()), band = Tolerances::StickStart(h.speed, 0);
+    if (g > Tolerances::kLostEventBand * band)
+      return Fail(FlowStatus::kIntegratorFailed, "contact " + std::to_string(c) +
+                                                     " is past its surface by " + Num(g) +
+                                                     " (an event lost)" + Place(t_, z_.data()));
+    if (g < -band) continue;
     if (g < 0) {  // within rounding: only if approaching
       if (!field) f_before_.resize(n_), s_->Field(mode_, z_, f_before_), field = true;
       double dh = 0;
       for (int t = 0; t < h.size; ++t) dh += h.terms[t].weight * f_before_[h.terms[t].index];
-      if (!(side * dh > 0)) continue;
+      if (!(side * dh > band)) continue;
     }
     arrivals->push_back(c);
   }
   std::sort(arrivals->begin(), arrivals->end());
+  return true;
 }
 
 bool Engine::Arrive(int c) {
@@ -274,6 +282,7 @@ void Engine::Record(SwitchKind kind, int c, const ModeSet& before, const ModeSet
   }
   Extend(z_.data());
   last_switch_t_ = t_;
+  switched_at_[c] = t_;
   // The switch first: an observer may read it (Simulate's exit section).
   if (rq_->switches) rq_->switches->push_back(FlowSwitch{kind, t_, c, z_, before, after});
   if (rq_->observer && rq_->output_dt > 0) rq_->observer(t_, z_.data(), after);

@@ -178,9 +178,9 @@ void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, 
     const PolyRoot pr = FirstSignChange(poly, d, sign, zero_sign);
     if (!pr.found) return;
     const double u = pr.u == 1 ? 1.0 : u0 + (1 - u0) * pr.u;
-    // A surface just left, back at the start's time (two contacts leaving
-    // stick at once): a touch, passed; returned, it would end the step there.
-    const bool touch = deflated && f.surface && ta_ + u * h == ta_;
+    // A surface just left, back on the mode's side at the start's time (two
+    // contacts leaving stick at once): a touch, passed, not a step of 0.
+    const bool touch = deflated && f.surface && ta_ + u * h == ta_ && -sign == zero_sign;
     if (u > roots.first || roots.Add(i, u, -sign, !touch && ev.Stops(i, -sign)) || u >= 1) return;
     if (guard == 0 && Monotone(gi, deg)) return;  // the only root on [0, 1]
     // Passed: go on from u with g / (w - u) (the root is not an event twice).

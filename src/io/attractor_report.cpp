@@ -25,10 +25,11 @@ std::string AttractorLabel(const Attractor& a) {
 TsvTable AttractorStartTable(const System& sys, const AttractorBasins& b, const StartSlice& g) {
   const std::string u = StateColumn(sys, g.components[0]), w = StateColumn(sys, g.components[1]);
   TsvTable t({u, w, "attractor", "kind", "m", "sticks", "lyapunov"});
-  for (const AttractorStart& s : b.starts)
+  for (const AttractorStart& s : b.starts)  // failed, or undecided for want of a return
     if (s.attractor >= 0 && !s.message.empty())
-      t.AddComment("failed: " + u + " = " + FormatNumber(s.at[0]) + ", " + w + " = " +
-                   FormatNumber(s.at[1]) + ": " + s.message);
+      t.AddComment(std::string(Name(b.attractors[s.attractor].kind)) + ": " + u + " = " +
+                   FormatNumber(s.at[0]) + ", " + w + " = " + FormatNumber(s.at[1]) + ": " +
+                   s.message);
   for (const AttractorStart& s : b.starts) {
     if (s.attractor < 0) continue;
     const Attractor& a = b.attractors[s.attractor];

@@ -51,6 +51,10 @@ struct Tolerances : FixedTolerances {
   static double StickStart(double speed, double limit) {
     return kEventRounding * (1 + std::abs(speed) + std::abs(limit));
   }
+  /// A slipping contact past its surface at a switch by up to this many
+  /// StickStart bands lost its root to rounding (it arrives then); farther
+  /// past, an event was lost and the run fails.
+  static constexpr double kLostEventBand = 1e3;
   /// Roots at one instant, to this: the same root again (64 eps).
   static double RootRepeat(double t) { return 64 * kEps * Scale(t); }
   /// A stepper's stop time (and a root at the step end) within this of t:

@@ -154,6 +154,10 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_basin", {"--system", "chain", "--t_cap", "5"}, {"--t_cap", "--system"});
   ExpectRejected("ss_basin", {"--system", "chain", "--force", "0.3"}, {"--force"});
   ExpectRejected("ss_basin", {"--transient", "5"}, {"--transient", "--force or --system"});
+  ExpectRejected("ss_basin", {"--force", "0.3", "--set", "kc=1"}, {"--set", "--system chain"});
+  ExpectRejected("ss_basin", {"--force", "0.3", "--blocks", "5"}, {"--blocks", "--system"});
+  ExpectRejected("ss_orbit_diagram", {"--force", "0.3", "--set", "kc=1"},
+                 {"--set", "--system chain"});
   ExpectRejected("ss_basin", {"--slice", "x,xdot", "--force", "0.3"}, {"--slice", "--system"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,3"}, {"--state", "4"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,x,4"}, {"--state", "x"});

@@ -36,6 +36,6 @@ set yrange [-1.025:1.025]
 set style fill solid 1.0 noborder
 plot 'basins.tsv' using 'x1':(column('attractor') == 0 ? column('x1dot') : 1/0):(0.025500000000000002):(0.025500000000000002) with boxxyerror lc rgb '#0072b2' title "period 1, 2 sticks, x1 = 0.529 (1230 starts)", \
      'basins.tsv' using 'x1':(column('attractor') == 1 ? column('x1dot') : 1/0):(0.025500000000000002):(0.025500000000000002) with boxxyerror lc rgb '#d55e00' title "period 1, 2 sticks, x1 = 0.65 (450 starts)", \
-     'basins.tsv' using 'x1':(column('attractor') == 2 ? column('x1dot') : 1/0):(0.025500000000000002):(0.025500000000000002) with boxxyerror lc rgb '#009e73' title "rest (1 starts)", \
+     'basins.tsv' using 'x1':(column('attractor') == 2 ? column('x1dot') : 1/0):(0.025500000000000002):(0.025500000000000002) with boxxyerror lc rgb '#bdbdbd' title "undecided (1 starts)", \
      $cycles using 'x1':'x1dot' with points pt 7 ps 1.4 lc rgb 'white' notitle, \
      $cycles using 'x1':'x1dot' with points pt 6 ps 1.4 lw 2 lc rgb 'black' title 'the m section points of each periodic attractor'
