@@ -263,13 +263,16 @@ int Main(int argc, char** argv) {
       "orbit_diagram.gp",
       ss::OrbitDiagramScript(*s.system, format, s.labels, title + (d.cancelled ? " (partial)" : ""),
                              s.o.up, s.o.down));
-  if (!app.Finish("orbit_diagram.gp", {figure}, {figure})) return cli::kExitFailed;
+  // No value done (every one failed): the tables with their `# failed:` lines, no figure.
+  const std::vector<std::string> drawn =
+      exps.rows() > 0 ? std::vector<std::string>{figure} : std::vector<std::string>{};
+  if (!app.Finish("orbit_diagram.gp", drawn, {figure})) return cli::kExitFailed;
   std::cout << kProg << ": " << (forced ? "forced oscillator, " : "") << model << "\n"
             << axis << " from " << ss::FormatNumber(s.o.from) << " to " << ss::FormatNumber(s.o.to)
             << ": " << exps.rows() << " values done, " << d.failed << " failed, in "
             << ss::FormatNumber(std::round(d.seconds * 1e3) / 1e3) << " s\n"
             << "wrote " << app.out().dir() << "/orbit_diagram.tsv, lyapunov.tsv, orbit_diagram.gp"
-            << (app.gnuplot().ok() ? " and " + figure : std::string()) << "\n";
+            << (app.gnuplot().ok() && !drawn.empty() ? " and " + figure : std::string()) << "\n";
   std::string partial;
   if (d.cancelled) partial = "partial orbit diagram written: " + run.Reason();
   if (partial.empty() && d.failed > 0)

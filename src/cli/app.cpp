@@ -65,7 +65,7 @@ AppRun::AppRun(const std::string& prog, const Arguments& args, const std::string
 bool AppRun::Finish(const std::string& script, const std::vector<std::string>& figures,
                     const std::vector<std::string>& all_figures,
                     const std::vector<std::string>& stale) {
-  if (plots_ && !run_.Cancelled()) {
+  if (plots_ && !run_.Cancelled() && !figures.empty()) {  // nothing to draw: no gnuplot
     run_.Phase("plotting");
     if (layout_) out_.Write(script, ApplyFigureLayout(out_.Read(script), *layout_));
     gnuplot_ = out_.Draw(script, figures, [this] { return run_.Cancelled(); });

@@ -64,8 +64,8 @@ class AppRun {
   bool plots() const { return plots_; }
   const GnuplotResult& gnuplot() const { return gnuplot_; }
 
-  // Draws `figures` from the staged `script` (unless --no_plots or the run is
-  // cancelled; gnuplot is killed on a signal or --max_time), checks each,
+  // Draws `figures` from the staged `script` (unless --no_plots, the run is
+  // cancelled or `figures` is empty; gnuplot is killed on a signal or --max_time), checks each,
   // then commits the set; the names of `all_figures` not drawn are removed
   // as stale. False (after one line on stderr) if a figure was not drawn
   // whole: nothing was replaced, exit 1. Throws Error if the commit fails.

@@ -66,6 +66,24 @@ TEST_F(OrbitDiagramApp, DrawsTheFigure) {
   EXPECT_TRUE(tu::Exists(dir + "/out/orbit_diagram.png"));
 }
 
+// Every value fails (|x| passes --max_amplitude at once): the tables are
+// written with a `# failed:` line per value and no figure (gnuplot has no
+// range to draw), exit 1; it used to leave an empty --out and no tables.
+TEST_F(OrbitDiagramApp, EveryValueFailedWritesTheTablesWithoutAFigure) {
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_orbit_diagram", dir,
+                          {"--force", "0.3", "--n", "3", "--transient", "10", "--keep", "10",
+                           "--max_amplitude", "0.001"},
+                          true);
+  EXPECT_EQ(r.outcome.code, 1) << r.err;
+  const tu::Tsv e = tu::ReadTsv(tu::ReadFile(dir + "/out/lyapunov.tsv"));
+  EXPECT_EQ(e.rows.size(), 0u);
+  EXPECT_EQ(e.meta.at("status"), "6 values failed");
+  EXPECT_NE(tu::ReadFile(dir + "/out/orbit_diagram.tsv").find("# failed: up omega = 0.5"),
+            std::string::npos);
+  EXPECT_FALSE(tu::Exists(dir + "/out/orbit_diagram.png"));
+}
+
 TEST_F(OrbitDiagramApp, TimeLimitWritesAPartialResult) {
   const std::string dir = NewDir();
   const AppRun r = RunOut("ss_orbit_diagram", dir,
