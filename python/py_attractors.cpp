@@ -47,9 +47,10 @@ py::array Vector(const Eigen::VectorXd& z) {
 
 // The component a slice name gives (its state name or column name).
 int Component(const System& s, const std::string& name) {
-  for (int i = 0; i < s.tangent_dimension(); ++i)
-    if (name == s.StateName(i) || name == StateColumn(s, i)) return i;
-  throw InvalidArgument("slice: no state component '" + name + "' in this system");
+  const int i = StateIndex(s, name);
+  if (i < 0)
+    throw InvalidArgument("slice: no state component '" + name + "' (" + StateNameList(s) + ")");
+  return i;
 }
 
 // The starts' slice: components by name, base (default: steady sliding of an
@@ -218,7 +219,8 @@ void BindAttractors(py::module_& m) {
   py::class_<B>(m, "AttractorBasins",
                 "Result of attractor_basins(): per start (the slice's first component fastest) "
                 "u, w (its two components, named in `slice`), attractor (index into "
-                "`attractors`, -1 failed) and lyapunov; `failures` says why.")
+                "`attractors`; a failed start's is a `failed` one; -1: not run) and lyapunov; "
+                "`failures` says why a start failed or never returned.")
       .def_readonly("slice", &B::slice)
       .def_readonly("state_names", &B::state_names)
       .def_readonly("u", &B::u)

@@ -59,12 +59,11 @@ ForcedParams ForcedFromArguments(const Arguments& args) {
 
 // The component a --slice item names (its StateName or its column name).
 int Component(const Arguments& args, const System& s, const std::string& item) {
-  for (int i = 0; i < s.tangent_dimension(); ++i)
-    if (item == s.StateName(i) || item == StateColumn(s, i)) return i;
-  std::string names;
-  for (int i = 0; i < s.tangent_dimension(); ++i) names += (i ? ", " : "") + s.StateName(i);
-  throw UsageError(args.Source("slice") + " = '" + args.Text("slice") + "': no state component '" +
-                   item + "' (" + names + ")");
+  const int i = StateIndex(s, item);
+  if (i < 0)
+    throw UsageError(args.Source("slice") + " = '" + args.Text("slice") +
+                     "': no state component '" + item + "' (" + StateNameList(s) + ")");
+  return i;
 }
 
 // The slice: --slice's components through the base state, the box about it.

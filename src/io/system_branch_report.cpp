@@ -88,6 +88,18 @@ std::string StateColumn(const System& s, int i) {
   return out;
 }
 
+int StateIndex(const System& s, const std::string& name) {
+  for (int i = 0; i < s.tangent_dimension(); ++i)
+    if (name == s.StateName(i) || name == StateColumn(s, i)) return i;
+  return -1;
+}
+
+std::string StateNameList(const System& s) {
+  std::string names;
+  for (int i = 0; i < s.tangent_dimension(); ++i) names += (i ? ", " : "") + s.StateName(i);
+  return names;
+}
+
 TsvTable SystemBranchTable(const System& s, const SystemRun& run) {
   const std::vector<SystemLine> lines = io_detail::SystemLines(s, run);
   const int k = io_detail::Multipliers(lines);

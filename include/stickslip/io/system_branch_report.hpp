@@ -26,6 +26,10 @@ struct SystemRun {
 
 /// A column name for state component i: StateName with ' as "dot".
 std::string StateColumn(const System& s, int i);
+/// The tangent component `name` names (its StateName or StateColumn); -1 if none.
+int StateIndex(const System& s, const std::string& name);
+/// The tangent components' names, ", "-separated (for messages).
+std::string StateNameList(const System& s);
 
 /// branch.tsv: one row per point, steady sliding first.
 TsvTable SystemBranchTable(const System& s, const SystemRun& run);
