@@ -63,20 +63,16 @@ PoincareSection AttractorSection(const System& s, const AttractorOptions& o) {
 
 namespace {
 
-double MaxAbs(const Eigen::VectorXd& z) { return z.lpNorm<Eigen::Infinity>(); }
-
 // max |u_i - w_i| <= tol (1 + sum |u_i|) on the tangent block.
 bool Close(const Eigen::VectorXd& u, const Eigen::VectorXd& w, double tol) {
   return (u - w).lpNorm<Eigen::Infinity>() <= tol * (1 + u.lpNorm<1>());
 }
 
-// Whether the tangent field vanishes at the section point (to tol relative).
-bool FieldVanishes(const System& s, const SectionPoint& q, double tol) {
-  const int n = s.dimension(), nt = s.tangent_dimension();
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(n), f(n);
-  z.head(nt) = q.z;
-  s.Field(q.mode, z, f);
-  return MaxAbs(f.head(nt)) <= tol * (1 + MaxAbs(q.z));
+// Whether the tangent field vanishes at the section point (the phase 0).
+bool Vanishes(const System& s, const SectionPoint& q, double tol) {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(s.dimension());
+  z.head(s.tangent_dimension()) = q.z;
+  return FieldVanishes(s, q.mode, z, tol);
 }
 
 // The stable rest point of the mode of the points (System::Rest) if every
@@ -107,7 +103,7 @@ Attractor Cycle(const System& s, const std::vector<SectionPoint>& p, int m, doub
     return a;
   }
   bool rest = true;
-  for (const SectionPoint& q : p) rest = rest && q.exits == 0 && FieldVanishes(s, q, cycle);
+  for (const SectionPoint& q : p) rest = rest && q.exits == 0 && Vanishes(s, q, cycle);
   a.kind = rest ? AttractorKind::kRest : AttractorKind::kPeriodic;
   a.m = m;
   int best = K - m;

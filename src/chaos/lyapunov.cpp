@@ -2,13 +2,14 @@
 // (chaos/lyapunov.hpp; docs/theory.md "Lyapunov exponents").
 #include "stickslip/chaos/lyapunov.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <cfloat>
 #include <cmath>
 
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 
 namespace stickslip {
 
@@ -123,38 +124,9 @@ void ReturnJacobian(const System& s, const PoincareSection& p, const FlowRun& r,
   const int n = s.dimension();
   f.resize(n);
   s.Field(r.end.mode, r.end.z, f);
-  g.setZero(n);
-  for (int t = 0; t < p.surface.g.size; ++t)
-    g[p.surface.g.terms[t].index] += p.surface.g.terms[t].weight;
+  g.resize(n);
+  SurfaceGradient(p.surface.g, g);
   *J = r.jacobian - f * (g.transpose() * r.jacobian) / g.dot(f);
-}
-
-// A contact that sticks holds h = 0: exactly so where one component carries
-// its velocity (the stroboscopic map's restart, as the flow's stick phase).
-void OntoSticking(const System& s, FlowPoint* z) {
-  for (int i = 0; i < s.contacts(); ++i) {
-    if (z->mode[i] != Mode::kStick) continue;
-    const ContactVelocity c = s.Contact(i);
-    if (c.size == 1 && c.terms[0].weight == 1) z->z[c.terms[0].index] = c.speed;
-  }
-}
-
-// Whether the tangent field vanishes at z (to tol relative): a rest point.
-bool AtRest(const System& s, const FlowPoint& z, double tol) {
-  Eigen::VectorXd f(s.dimension());
-  s.Field(z.mode, z.z, f);
-  const int nt = s.tangent_dimension();
-  return f.head(nt).lpNorm<Eigen::Infinity>() <= tol * (1 + z.z.head(nt).lpNorm<Eigen::Infinity>());
-}
-
-// The largest real part of the field's eigenvalues at a rest point: the
-// exponent of a run settled there.
-double LargestRealPart(const System& s, const FlowPoint& z) {
-  const int nt = s.tangent_dimension();
-  Eigen::MatrixXd J(nt, nt);
-  s.Jacobian(z.mode, z.z, J);
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, false);
-  return es.eigenvalues().real().maxCoeff();
 }
 
 void Check(const System& s, const FlowPoint& start, const PoincareSection& p,
@@ -180,16 +152,15 @@ void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double res
   if (!timed && r.status == FlowStatus::kTimeLimit) {
     // At rest: settled there if the rest point is stable; a start placed on
     // an unstable one stays there too, but attracts nothing (no return).
-    const bool at_rest = AtRest(s, r.end, rest_tol);
-    const double lambda = at_rest ? LargestRealPart(s, r.end) : 0;
-    const bool rest = at_rest && lambda < 0;
-    run->status = rest ? LyapunovStatus::kRest : LyapunovStatus::kNoReturn;
-    run->message =
-        (rest      ? "at rest at t = "
-         : at_rest ? "on an unstable rest point (largest real part " + Num(lambda) + ") by t = "
-                   : "no return by t = ") +
-        Num(r.end.t) + where;
-    if (rest) run->lyapunov = lambda;
+    const bool at_rest = FieldVanishes(s, r.end.mode, r.end.z, rest_tol);
+    const SteadyState eq = at_rest ? SteadySliding(s, r.end.mode) : SteadyState();
+    run->status = eq.stable() ? LyapunovStatus::kRest : LyapunovStatus::kNoReturn;
+    run->message = (eq.stable() ? "at rest at t = "
+                    : at_rest ? "on an unstable rest point (largest real part " + Num(eq.max_real) +
+                                    ") by t = "
+                              : "no return by t = ") +
+                   Num(r.end.t) + where;
+    if (eq.stable()) run->lyapunov = eq.max_real;
     return;
   }
   run->status =
@@ -198,6 +169,13 @@ void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double res
 }
 
 }  // namespace
+
+bool FieldVanishes(const System& s, const ModeSet& m, ConstState z, double tol) {
+  Eigen::VectorXd f(s.dimension());
+  s.Field(m, z, f);
+  const int nt = s.tangent_dimension();
+  return f.head(nt).lpNorm<Eigen::Infinity>() <= tol * (1 + z.head(nt).lpNorm<Eigen::Infinity>());
+}
 
 Section MaximaSection(const System& s) {
   const int d = s.DerivativeOf(0);
@@ -261,7 +239,7 @@ SectionRun IterateSection(const System& s, const FlowPoint& start, const Poincar
     }
     const double dt = r.end.t - z.t;
     z = r.end;
-    if (timed) z.t = 0, z.z.tail(n - nt) = clocks, OntoSticking(s, &z);
+    if (timed) z.t = 0, z.z.tail(n - nt) = clocks, OntoStickSurfaces(s, z.mode, z.z);
     if (rq.variational) {
       ReturnJacobian(s, section, r, f, g, &J);
       if (!tangent.Apply(J, dt, kept)) {

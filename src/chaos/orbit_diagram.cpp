@@ -12,6 +12,7 @@
 #include "numerics/numbers.hpp"
 #include "parallel/pool.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 
 namespace stickslip {
 
@@ -32,14 +33,11 @@ std::string OrbitDiagramOptions::ValidationError() const {
 
 namespace {
 
-// At rest on the belt: every contact's velocity on its surface (where one
-// component carries it), the rest 0, the clocks at phase 0.
+// At rest on the belt: every contact's velocity on its surface (OntoSurface),
+// the rest 0, the clocks at phase 0.
 FlowPoint OnTheBelt(const System& s) {
   FlowPoint z{0, Eigen::VectorXd::Zero(s.dimension()), ModeSet()};
-  for (int i = 0; i < s.contacts(); ++i) {
-    const ContactVelocity c = s.Contact(i);
-    if (c.size == 1 && c.terms[0].weight == 1) z.z[c.terms[0].index] = c.speed;
-  }
+  for (int i = 0; i < s.contacts(); ++i) OntoSurface(s.Contact(i), z.z);
   z.mode = ModeOf(s, z.z);
   return z;
 }
@@ -48,11 +46,7 @@ FlowPoint OnTheBelt(const System& s) {
 // its surface (the belt's speed may be the swept parameter), and the mode is
 // Filippov's at the new value.
 FlowPoint Carried(const System& s, FlowPoint z) {
-  for (int i = 0; i < s.contacts(); ++i) {
-    if (z.mode[i] != Mode::kStick) continue;
-    const ContactVelocity c = s.Contact(i);
-    if (c.size == 1 && c.terms[0].weight == 1) z.z[c.terms[0].index] = c.speed;
-  }
+  OntoStickSurfaces(s, z.mode, z.z);
   z.t = 0;
   z.mode = ModeOf(s, z.z);
   return z;

@@ -29,10 +29,27 @@ double ExitParameterDerivative(const System& s, const ModeSet& stick, int c, int
   return d.stick_force - sign * d.static_limit;
 }
 
-void ContactGradient(const System& s, int c, StateOut grad) {
-  const ContactVelocity v = s.Contact(c);
+void ContactGradient(const System& s, int c, StateOut grad) { SurfaceGradient(s.Contact(c), grad); }
+
+void SurfaceGradient(const ContactVelocity& h, StateOut grad) {
   grad.setZero();
-  for (int t = 0; t < v.size; ++t) grad[v.terms[t].index] += v.terms[t].weight;
+  for (int t = 0; t < h.size; ++t) grad[h.terms[t].index] += h.terms[t].weight;
+}
+
+void OntoSurface(const ContactVelocity& h, StateOut z) {
+  if (h.size == 1 && (h.terms[0].weight == 1 || h.terms[0].weight == -1)) {
+    z[h.terms[0].index] = h.terms[0].weight * h.speed;
+    return;
+  }
+  double norm2 = 0;
+  for (int t = 0; t < h.size; ++t) norm2 += h.terms[t].weight * h.terms[t].weight;
+  const double g = h.At(z.data());
+  for (int t = 0; t < h.size; ++t) z[h.terms[t].index] -= g * h.terms[t].weight / norm2;
+}
+
+void OntoStickSurfaces(const System& s, const ModeSet& m, StateOut z) {
+  for (int i = 0; i < s.contacts(); ++i)
+    if (m[i] == Mode::kStick) OntoSurface(s.Contact(i), z);
 }
 
 bool Saltation(const System& s, const ModeSet& before, const ModeSet& after, ConstState z,
@@ -51,14 +68,6 @@ bool Saltation(const System& s, const ModeSet& before, const ModeSet& after, Con
 }  // namespace stickslip
 
 namespace stickslip::flow_detail {
-
-namespace {
-// On the surface h = 0 exactly where one component carries the velocity.
-void OnSurface(const ContactVelocity& c, Eigen::VectorXd& z) {
-  if (c.size == 1 && (c.terms[0].weight == 1 || c.terms[0].weight == -1))
-    z[c.terms[0].index] = c.terms[0].weight * c.speed;
-}
-}  // namespace
 
 bool Engine::Switch(const std::vector<int>& roots) {
   // Contact events first (several at one instant are a normal outcome: one
@@ -83,7 +92,7 @@ bool Engine::Switch(const std::vector<int>& roots) {
     out_->section = section;
     // On the section exactly where one component carries it (x' = 0).
     const Section& sec = rq_->sections[section];
-    if (!sec.derivative) OnSurface(sec.g, z_);
+    if (!sec.derivative) OntoSurface(sec.g, z_);
     return Done(FlowStatus::kSection);
   }
   const int exits_before = out_->exits;
@@ -119,7 +128,7 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
       if (cur_->roles[i].kind == FunctionRole::kExit) Exit(c, cur_->roles[i].sign, detected);
     }
   if (!AlsoArriving(detected, &arrivals)) return false;
-  for (int c : arrivals) OnSurface(contacts_[c], z_);
+  for (int c : arrivals) OntoSurface(contacts_[c], z_);
   const ModeChoiceResult r = ConsistentMode(*s_, mode_, arrivals, z_);
   if (r.choice != ModeChoice::kUnique) {
     const FlowStatus st = r.choice == ModeChoice::kAmbiguous      ? FlowStatus::kAmbiguousMode
@@ -195,7 +204,7 @@ bool Engine::AlsoArriving(const ModeSet& detected, std::vector<int>* arrivals) {
 
 bool Engine::Arrive(int c) {
   const ModeSet before = mode_;
-  OnSurface(contacts_[c], z_);
+  OntoSurface(contacts_[c], z_);
   const ModeSet next = ModeAfterArrival(*s_, before, c, z_);
   grad_.resize(n_);
   ContactGradient(*s_, c, grad_);
@@ -230,7 +239,7 @@ void Engine::Exit(int c, int sign, const ModeSet& detected) {
   // slip (docs/theory.md, "Stick exits").
   const double limit = s_->StaticLimit(c, z_);
   s_->ProjectOnExit(detected, c, sign * limit, z_);
-  OnSurface(contacts_[c], z_);
+  OntoSurface(contacts_[c], z_);
   if (variational_) {
     grad_.resize(n_);
     grad2_.resize(n_);

@@ -12,25 +12,6 @@
 namespace stickslip {
 
 namespace {
-// Puts z on the contact's surface h = 0: exactly where one component carries
-// the velocity, else by the least-norm step along its weights.
-void OntoContact(const ContactVelocity& c, Eigen::VectorXd& z) {
-  if (c.size == 1 && (c.terms[0].weight == 1 || c.terms[0].weight == -1)) {
-    z[c.terms[0].index] = c.terms[0].weight * c.speed;
-    return;
-  }
-  double norm2 = 0;
-  for (int t = 0; t < c.size; ++t) norm2 += c.terms[t].weight * c.terms[t].weight;
-  const double h = c.At(z.data());
-  for (int t = 0; t < c.size; ++t) z[c.terms[t].index] -= h * c.terms[t].weight / norm2;
-}
-
-// The dense gradient of a linear functional.
-void Gradient(const ContactVelocity& c, Eigen::VectorXd& g) {
-  g.setZero();
-  for (int t = 0; t < c.size; ++t) g[c.terms[t].index] += c.terms[t].weight;
-}
-
 // The eigenvalues of M by modulus, the largest first (2 x 2 in closed form:
 // lambda^2 - tr lambda + det = 0).
 std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& M) {
@@ -142,7 +123,7 @@ void Shooting::EventGradient(const PoincareSection& p) {
   const int n = s.dimension();
   grad_.resize(n);
   if (p.kind == SectionKind::kSurface) {
-    Gradient(p.surface.g, grad_);
+    SurfaceGradient(p.surface.g, grad_);
     return;
   }
   // The exit event lambda_c - sign mu_s N_c = 0 of the stick mode it left.
@@ -218,16 +199,16 @@ void Shooting::OntoSection(const PoincareSection& p, FlowPoint* z) const {
   if (p.kind == SectionKind::kTime) {
     // A return in stick stays on its surface: DP's rows there are 0.
     for (int c = 0; c < s.contacts(); ++c)
-      if (run_.end.mode.sticks(c)) OntoContact(s.Contact(c), z->z);
+      if (run_.end.mode.sticks(c)) OntoSurface(s.Contact(c), z->z);
     z->mode = ModeOf(s, z->z);
     return;
   }
   if (p.kind == SectionKind::kSurface) {
-    OntoContact(p.surface.g, z->z);
+    OntoSurface(p.surface.g, z->z);
     return;
   }
   const int c = p.contact;
-  OntoContact(s.Contact(c), z->z);
+  OntoSurface(s.Contact(c), z->z);
   ModeSet stick = z->mode;
   stick.set(c, Mode::kStick);
   const double sign = z->mode[c] == Mode::kSlipBelow ? 1 : -1;

@@ -66,8 +66,8 @@ enum class LyapunovStatus {
   kDiverged,    ///< a state component passed max_amplitude
   kCancelled,
   kNoReturn,  ///< a surface section: no return within max_return_time (not at rest)
-  kRest,      ///< a surface section: settled at a rest point (end), no more returns;
-              ///< lyapunov is the largest real part of the field's eigenvalues there
+  kRest,      ///< a surface section: settled at a stable rest point (end), no more
+              ///< returns; lyapunov is steady sliding's largest real part there
 };
 template <>
 struct EnumNames<LyapunovStatus> {
@@ -110,6 +110,10 @@ SectionRun IterateStroboscopic(const System& system, const FlowPoint& start,
                                const LyapunovOptions& options,
                                const std::function<bool()>& cancelled = {},
                                double max_amplitude = kStroboscopicMaxAmplitude);
+
+/// Whether the field of mode m vanishes at z on the tangent block, to tol
+/// relative to 1 + |z|: a rest point.
+bool FieldVanishes(const System& system, const ModeSet& m, ConstState z, double tol);
 
 /// The default section of an autonomous second-order system: the maxima of
 /// component 0 (its velocity, DerivativeOf(0), falling through 0). Throws

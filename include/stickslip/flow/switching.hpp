@@ -67,6 +67,13 @@ ModeSet ModeAfterArrival(const System& s, const ModeSet& before, int c, ConstSta
 
 /// grad h_c (n entries): the contact's relative velocity's gradient.
 void ContactGradient(const System& s, int c, StateOut grad);
+/// The gradient of a linear functional (n entries; a contact's velocity or a section).
+void SurfaceGradient(const ContactVelocity& h, StateOut grad);
+/// Puts z on h = 0: exactly where one component carries h (weight +-1),
+/// else by the least-norm step along its weights.
+void OntoSurface(const ContactVelocity& h, StateOut z);
+/// Every contact that sticks in m onto its surface (a stick phase holds h = 0).
+void OntoStickSurfaces(const System& s, const ModeSet& m, StateOut z);
 
 /// d g / dp_j of contact c's stick exit g = lambda_c - sign StaticLimit_c
 /// (mode `stick` has c sticking; sign +1 into slip below) at z.
