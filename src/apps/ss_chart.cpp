@@ -10,6 +10,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/chart_forced.hpp"
+#include "cli/chart_system.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_forced.hpp"
@@ -48,7 +49,13 @@ constexpr const char* kNotes =
     "classifies N x N cells by the attractor reached (period m and sticks, quasi-periodic,\n"
     "chaotic by the largest Lyapunov exponent; each row swept along --param). Outputs:\n"
     "curves.tsv, codim2.tsv (R1, R2, LPPD, SL, GG), response.tsv, forced_chart.gp and\n"
-    "forced_chart.png.\n";
+    "forced_chart.png.\n"
+    "A system of several masses or contacts (--system chain or mode_coupling): --param and\n"
+    "--param2 name two of its parameters, --from, --to, --from2 and --to2 are required. HB\n"
+    "curves of steady sliding and LP, PD and NS curves of periodic orbits are traced from the\n"
+    "special points of one-parameter runs on --seed_lines lines per axis (each from the\n"
+    "attractors settled on at 5 points of the line). Outputs: curves.tsv, codim2.tsv (SL,\n"
+    "LPPD, R1, R2), chart.gp and chart.png (docs/systems.md, \"Charts\").\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 
 po::options_description AppOptions() {
@@ -67,7 +74,8 @@ po::options_description AppOptions() {
       "summary counts the cells whose region differs from the polygon drawn there "
       "(default 0: none); forced: the response grid, N x N cells (default 40, 0: none)")(
       "seed_lines", cli::Value()->value_name("N"),
-      "forced: one-parameter runs per axis that seed the curves, in [0, 20] (default 3)")(
+      "forced and --system: lines per axis whose one-parameter runs seed the curves, in [0, 20] "
+      "(default 3)")(
       "max_m", cli::Value()->value_name("M"),
       "forced: curves of orbits of period m <= M: each PD with 2m <= M starts the doubled "
       "branch, whose points seed curves too, in [1, 8] (default 2)");
@@ -117,8 +125,8 @@ ss::ChartOptions Configure(const cli::Arguments& args, ss::Params* base) {
   for (const char* key : {"seed_lines", "max_m"})  // the forced chart's only
     if (args.Given(key))
       throw cli::UsageError(args.Source(key) +
-                            " applies to the forced chart only (--force, or "
-                            "an axis omega or force)");
+                            " applies to the forced chart and --system only (--force, "
+                            "an axis omega or force, or --system)");
   ss::ChartOptions opts;
   ss::Plane& pl = opts.plane;
   const auto restart = cli::RestartFromArguments(args);
@@ -180,6 +188,8 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_chart [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
+  if (cli::SystemRequested(args))
+    return cli::RunSystemChart(args, kProg, cli::CommandLine(argc, argv));
   cli::RefuseSystem(args, kProg);
   if (cli::ForcedChartRequested(args))
     return cli::RunForcedChart(args, kProg, cli::CommandLine(argc, argv));

@@ -97,7 +97,7 @@ void ChooseMargin(ForcedCurveProblem& problem, const VectorXd& u0) {
 std::function<bool(const VectorXd&)> StopTest(ForcedCurveProblem& problem, double v,
                                               std::string* bad) {
   const double near = Tolerances().forced_section_near_stick;
-  const double max_residual = Tolerances().forced_curve_residual;
+  const double max_residual = Tolerances().curve_residual;
   return [&problem, v, near, max_residual, bad](const VectorXd& u) {
     ForcedCurveSample smp;
     std::string w;

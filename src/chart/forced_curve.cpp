@@ -120,7 +120,7 @@ CurveEnd ForcedCurveProblem::SameBranch(const PalcPoint& last, const PalcPoint& 
     return {CurveEndKind::kBranchJump, why};
   const double res =
       std::max({std::abs(b.end[0] - next.u[0]), std::abs(b.end[1] - next.u[1]), std::abs(Test(b))});
-  if (!(res <= tol.forced_curve_residual))
+  if (!(res <= tol.curve_residual))
     return {CurveEndKind::kSliding,
             "residual " + Num(res, 3) + " (the map is not smooth there: a sliding point)"};
   // (a GR curve is where the structure changes: its margin spans both sides)

@@ -54,6 +54,17 @@ class OrbitProblem final : public PalcProblem {
   /// itself is degenerate); the system at r.p (null where it is invalid).
   const System* Switches(const OrbitRow& r, std::vector<FlowSwitch>* out);
   Shooting& shooting() { return shooting_; }
+  /// Sets another parameter of the system (a chart's second axis), held by
+  /// every later map until set again.
+  void set_held(int parameter, double value) { system_->SetParameterValue(parameter, value); }
+  /// The map at u (p = u's last component), without the branch's caches:
+  /// *r = P(z) - z and *o its orbit (with the monodromy if `jacobian`).
+  bool MapOf(const Eigen::VectorXd& u, bool jacobian, Eigen::VectorXd* r, PeriodicOrbit* o,
+             std::string* why) {
+    return MapAt(u[nu_], PointAt(u), jacobian, r, o, why);
+  }
+  /// The orbit of the last point evaluated.
+  const PeriodicOrbit& last() const { return last_; }
 
  private:
   FlowPoint PointAt(const Eigen::VectorXd& u) const;

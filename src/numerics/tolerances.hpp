@@ -181,9 +181,9 @@ struct Tolerances : FixedTolerances {
   /// Forced chart curves: a section point within this of x' = v is near the
   /// stick phase (the map is not smooth there): the section moves on.
   double forced_section_near_stick = 1e-3;
-  /// Forced chart curves: an accepted point's residual (orbit and test
+  /// Chart curves (forced and systems): an accepted point's residual (orbit and test
   /// function, max norm) above this is no root: the way ends there.
-  double forced_curve_residual = 1e-8;
+  double curve_residual = 1e-8;
   /// Forced chart curves: an accepted point whose corrector moved it more
   /// than this times the step off the predictor (scaled, across the last
   /// tangent) left the branch: the way ends there (on the seed_forced chart

@@ -83,6 +83,7 @@ enum class CurveEndKind {
   kBranchJump,       // the next point was no continuation of the last (why says how)
   kSliding,          // the orbit's stick structure changes here (a sliding point)
   kNoStart,          // the start point could not be corrected (why says why)
+  kContactLost,      // a contact's normal force reaches 0 on the orbit (why says where)
 };
 template <>
 struct EnumNames<CurveEndKind> {
@@ -100,6 +101,7 @@ struct EnumNames<CurveEndKind> {
       {CurveEndKind::kBranchJump, "branch-jump"},
       {CurveEndKind::kSliding, "sliding"},
       {CurveEndKind::kNoStart, "start failed"},
+      {CurveEndKind::kContactLost, "contact-lost"},
   };
 };
 
@@ -136,6 +138,9 @@ enum class Codim2Label {
   /// GG: two GR curves meet at a corner, the orbit touches the surface twice
   /// at once (the grazing boundary switches from one touch to the other).
   kDoubleGrazing,
+  /// CP: a cusp of an LP curve, where two folds of the branch merge (the
+  /// curve's direction in the plane reverses).
+  kCusp,
 };
 template <>
 struct EnumNames<Codim2Label> {
@@ -147,6 +152,7 @@ struct EnumNames<Codim2Label> {
       {Codim2Label::kFoldFlip, "LPPD"},
       {Codim2Label::kSliding, "SL"},
       {Codim2Label::kDoubleGrazing, "GG"},
+      {Codim2Label::kCusp, "CP"},
   };
 };
 

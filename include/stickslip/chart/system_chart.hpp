@@ -1,0 +1,125 @@
+// The chart of any autonomous system (system.hpp) in two of its parameters
+// (docs/systems.md, "Charts"): codimension-one curves followed by
+// pseudo-arclength continuation through a rectangle,
+//   HB  of steady sliding (a complex pair of the Jacobian on the imaginary
+//       axis: prod_{i<j} (lambda_i + lambda_j) = 0, Kuznetsov 2004, ch. 10);
+//   LP, PD, NS  of periodic orbits: the one branch driver's problem with the
+//       second parameter free, bordered by its test function on the
+//       monodromy (orbit_branch.hpp);
+// seeded by the special points of one-parameter runs (ContinueSteadySliding,
+// and ContinueOrbits from the stick-slip attractor settled on at each end) on
+// lines across the rectangle. A curve of orbits ends where the orbit's
+// switching sequence changes (an SL point: a sliding bifurcation meets it) or
+// the normal force of a contact reaches 0 on it. Codimension-two points:
+// those SL ends, and LPPD where the LP and PD tests vanish together.
+#pragma once
+
+#include <complex>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stickslip/chart/chart.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
+
+namespace stickslip {
+
+/// Two parameters of a system by index (System::ParameterIndex: the lens)
+/// and a rectangle in them.
+struct SystemPlane {
+  int p1 = 0, p2 = 1;
+  double from1 = 0, to1 = 1, from2 = 0, to2 = 1;
+  /// Empty if valid for `system`, else one line naming the offending value:
+  /// an index out of range, equal axes, a range not finite, empty, inverted
+  /// or narrower than kMinRelativeWidth, or a point of the rectangle's
+  /// border (17 per edge) where the system is invalid.
+  std::string ValidationError(const System& system) const;
+  bool Contains(double x1, double x2) const {
+    return x1 >= from1 && x1 <= to1 && x2 >= from2 && x2 <= to2;
+  }
+};
+
+struct SystemChartOptions {
+  /// Upper bound of seed_lines; max_step's bounds (a curve across the
+  /// rectangle in at least 2 steps, at most kMaxCurvePoints per way).
+  static constexpr int kMaxSeedLines = 20, kMaxSettlePoints = 50;
+  static constexpr double kMaxStepLimit = 0.5;
+  SystemPlane plane;
+  /// Every run's flow and Newton, and the seed runs' PALC and max_amplitude.
+  OrbitBranchOptions branch;
+  /// The settling run at a line's end, from steady sliding moved by
+  /// `disturbance` in the first component (its transient, max_returns).
+  double transient = 3000, disturbance = 0.5;
+  int seed_lines = 3;  ///< lines per axis across the rectangle, each seeding curves
+  /// Points per line (ends included) where a run settles on an attractor,
+  /// whose branch is continued to both ends of the line.
+  int settle_points = 5;
+  double max_step = 0.01;           ///< largest curve step, fraction of the rectangle
+  bool hopf_curves = true;          ///< HB of steady sliding
+  bool orbit_curves = true;         ///< LP, PD and NS of periodic orbits
+  std::function<bool()> cancelled;  ///< polled between points and inside runs
+  /// Empty if valid for `system`, else one line naming the offending value.
+  std::string ValidationError(const System& system) const;
+};
+
+struct SystemCurvePoint {
+  double p1 = 0, p2 = 0;
+  /// LP, PD, NS: the orbit there (its p is p1). HB: orbit.start.z is the rest
+  /// point and orbit.period 2 pi / omega (0 where the pair is real: a
+  /// neutral saddle, no Hopf point).
+  OrbitRow orbit;
+  double test = 0;  ///< the curve's own test function there (about 0)
+  /// The other tests there: LP, PD, NS (prod (mu - 1), prod (mu + 1),
+  /// prod (mu_i mu_j - 1)); HB: unused.
+  double tests[3] = {0, 0, 0};
+};
+
+struct SystemCurve {
+  CurveKind kind = CurveKind::kFold;
+  std::vector<SystemCurvePoint> points;
+  CurveEnds ends;
+  PoincareSection section;  ///< the orbits' section (LP, PD, NS)
+  std::string seed;         ///< where it started: "LP of the v run at mu_k = 0.5"
+  int evaluations = 0;
+  double seconds = 0;
+};
+
+struct SystemCodim2 {
+  Codim2Label label = Codim2Label::kSliding;
+  CurveKind on = CurveKind::kFold;
+  int curve = 0;  ///< index into SystemChart::curves
+  double p1 = 0, p2 = 0;
+  std::string description;
+};
+
+struct SystemChart {
+  SystemPlane plane;  ///< the chart's axes and rectangle
+  ChartStatus status = ChartStatus::kOk;
+  std::string message;
+  std::vector<SystemCurve> curves;
+  std::vector<SystemCodim2> codim2;
+  int seed_runs = 0;         ///< one-parameter runs made for seeds
+  int seeds_not_traced = 0;  ///< seeds whose start failed both ways
+  /// Curves with an end inside the rectangle other than SL (ends say why).
+  int cut_curves = 0;
+  double seconds = 0;
+  int points() const;
+};
+
+/// The chart of `system` (its values of the two axes are not used). Throws
+/// InvalidArgument on an invalid system or options, or a system with a clock.
+SystemChart ChartSystem(const System& system, const SystemChartOptions& options);
+
+/// One curve of periodic orbits from `start`, a point of an orbit of
+/// `section` at (p1, p2) near the curve (`fixed` 0 holds p1 while it is
+/// corrected, 1 holds p2), both ways to the rectangle's border: what
+/// ChartSystem does per seed. kind LP, PD or NS (else InvalidArgument).
+SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& options, CurveKind kind,
+                            const FlowPoint& start, double p1, double p2,
+                            const PoincareSection& section, int fixed);
+
+/// One HB curve of steady sliding from (p1, p2) near it, both ways.
+SystemCurve TraceHopfCurve(const System& system, const SystemChartOptions& options, double p1,
+                           double p2, int fixed);
+
+}  // namespace stickslip

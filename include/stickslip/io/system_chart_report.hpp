@@ -1,0 +1,30 @@
+// A system's chart as files (ss_chart --system; docs/formats.md, "A
+// system's chart"): its curves and codimension-two points as TSV tables and
+// the (p1, p2) plane as a gnuplot script. Columns are named from the system
+// (its parameters and state names). The library writes text only.
+#pragma once
+
+#include <string>
+
+#include "stickslip/chart/system_chart.hpp"
+#include "stickslip/io/figure_style.hpp"
+#include "stickslip/io/report.hpp"
+
+namespace stickslip {
+
+/// curves.tsv: <p1>, <p2>, curve (HB, LP, PD, NS), id (1-based), period,
+/// sticks, crossings, then <z>_min and <z>_max per tangent component (HB:
+/// both the rest point's), mult_max (the largest |multiplier|; HB: 0) and
+/// test (the curve's test function there). A comment line per curve: its
+/// seed and its ends.
+TsvTable SystemCurvesTable(const System& s, const SystemChart& c);
+/// codim2.tsv: label (SL, LPPD, R1, R2), <p1>, <p2>, curve (its id), on (its
+/// kind), description.
+TsvTable SystemCodim2Table(const System& s, const SystemChart& c);
+/// chart.gp: the curves from curves.tsv (HB red, LP black, PD black dashed,
+/// NS magenta) and codim2.tsv's points (SL open circles, the others filled)
+/// in the rectangle.
+std::string SystemChartScript(const System& s, const SystemChart& c, const std::string& title,
+                              FigureFormat format);
+
+}  // namespace stickslip

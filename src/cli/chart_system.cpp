@@ -1,0 +1,130 @@
+// ss_chart --system (chart_system.hpp).
+#include "cli/chart_system.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "cli/about.hpp"
+#include "cli/app.hpp"
+#include "cli/system_choice.hpp"
+#include "stickslip/chart/system_chart.hpp"
+#include "stickslip/io/system_chart_report.hpp"
+
+namespace stickslip::cli {
+
+namespace {
+
+// A parameter of s by the option `key` (UsageError naming it otherwise).
+int Axis(const Arguments& args, const System& s, const char* key) {
+  if (!args.Given(key))
+    throw UsageError("--" + std::string(key) + " is required with --system (one of " +
+                     ParameterList(s) + ")");
+  const int j = s.ParameterIndex(args.Text(key));
+  if (j < 0)
+    throw UsageError(args.Source(key) + " = '" + args.Text(key) + "' is no parameter of " +
+                     Name(SystemChoiceOf(args)) + " (its parameters: " + ParameterList(s) + ")");
+  return j;
+}
+
+double Required(const Arguments& args, const char* key) {
+  if (!args.Given(key)) throw UsageError("--" + std::string(key) + " is required with --system");
+  return args.Number(key, 0);
+}
+
+SystemChartOptions Configure(const Arguments& args, const System& s) {
+  for (const char* k : {"grid", "max_m", "restart", "point"})
+    if (args.Given(k)) throw UsageError(args.Source(k) + ": not with --system");
+  SystemChartOptions o;
+  SystemPlane& pl = o.plane;
+  pl.p1 = Axis(args, s, "param");
+  pl.p2 = Axis(args, s, "param2");
+  if (pl.p1 == pl.p2) throw UsageError(args.Source("param2") + ": the two axes must differ");
+  pl.from1 = Required(args, "from"), pl.to1 = Required(args, "to");
+  pl.from2 = Required(args, "from2"), pl.to2 = Required(args, "to2");
+  if (const std::string e = pl.ValidationError(s); !e.empty())
+    throw UsageError(args.Source("from") + ", " + args.Source("to") + ", " + args.Source("from2") +
+                     ", " + args.Source("to2") + ": " + e);
+  o.branch = OrbitBranchOptions(FlowOptionsFromArguments(args));
+  o.max_step = args.Number("max_step", o.max_step);
+  const long lines = args.Integer("seed_lines", o.seed_lines);
+  if (lines < 0 || lines > SystemChartOptions::kMaxSeedLines)
+    throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
+                     args.Source("seed_lines") + ": must be in [0, " +
+                     std::to_string(SystemChartOptions::kMaxSeedLines) + "]");
+  o.seed_lines = static_cast<int>(lines);
+  if (const std::string e = o.ValidationError(s); !e.empty()) throw UsageError(e);
+  return o;
+}
+
+void PrintSummary(const std::string& prog, const System& s, const SystemChart& c,
+                  const std::string& model, const std::string& dir, const std::string& figure) {
+  const std::string p1 = s.ParameterName(c.plane.p1), p2 = s.ParameterName(c.plane.p2);
+  std::printf("%s: %s; %s x %s\n%d curves, %d points, %d seed runs in %.2f s\n", prog.c_str(),
+              model.c_str(), p1.c_str(), p2.c_str(), static_cast<int>(c.curves.size()), c.points(),
+              c.seed_runs, c.seconds);
+  for (size_t i = 0; i < c.curves.size(); ++i) {
+    const SystemCurve& cv = c.curves[i];
+    std::printf("  curve %zu %s: %zu points, %d evaluations, %.2f s, ends %s\n", i + 1,
+                CurveLabel(cv.kind), cv.points.size(), cv.evaluations, cv.seconds,
+                cv.ends.Text().c_str());
+  }
+  for (const SystemCodim2& p : c.codim2)
+    std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", Name(p.label), p1.c_str(), p.p1, p2.c_str(),
+                p.p2, p.description.c_str());
+  std::printf("wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(),
+              figure.empty() ? "" : (", chart.gp, " + figure).c_str());
+}
+
+}  // namespace
+
+int RunSystemChart(const Arguments& args, const std::string& prog, const std::string& command) {
+  const std::unique_ptr<System> s = SystemFromArguments(args);
+  SystemChartOptions o = Configure(args, *s);
+  const FlowOptions& flow = o.branch.shooting.flow;
+  const std::string model = DescribeSystem(*s, SystemChoiceOf(args), -1);
+  const FigureFormat format = FigureFormatOf(args);
+  const std::string figure = FigureFile("chart", format);
+  AppRun app(prog, args, "chart", {"curves.tsv", "codim2.tsv", "chart.gp", figure});
+  RunControl& run = app.run();
+  run.Phase("following curves");
+  o.cancelled = [&run] {
+    run.Heartbeat("");
+    return run.Cancelled();
+  };
+  o.branch.palc.cancelled = o.cancelled;
+  const SystemChart c = ChartSystem(*s, o);
+  Metadata meta = ToolMetadata(prog, command);
+  meta.insert(
+      meta.end(),
+      {{"system", model},
+       {"integrator", Name(flow.integrator)},
+       {"rtol", FormatNumber(flow.rtol)},
+       {"atol", FormatNumber(flow.atol)},
+       {"range", s->ParameterName(o.plane.p1) + " = [" + FormatNumber(o.plane.from1) + ", " +
+                     FormatNumber(o.plane.to1) + "], " + s->ParameterName(o.plane.p2) + " = [" +
+                     FormatNumber(o.plane.from2) + ", " + FormatNumber(o.plane.to2) + "]"},
+       {"status", c.status == ChartStatus::kOk ? std::string("complete")
+                                               : "partial (" + run.Reason() + ")"}});
+  auto text = [&meta](TsvTable t) {
+    t.PrependMeta(meta);
+    return t.str();
+  };
+  run.Phase("writing");
+  app.out().Write("curves.tsv", text(SystemCurvesTable(*s, c)));
+  app.out().Write("codim2.tsv", text(SystemCodim2Table(*s, c)));
+  const std::string title =
+      EnhancedText(model) + (c.status == ChartStatus::kOk ? "" : " (partial)");
+  if (app.plots()) app.out().Write("chart.gp", SystemChartScript(*s, c, title, format));
+  const std::vector<std::string> stale =
+      app.plots() ? std::vector<std::string>{} : std::vector<std::string>{"chart.gp"};
+  if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return kExitFailed;
+  PrintSummary(prog, *s, c, model, app.out().dir(),
+               app.plots() && app.gnuplot().ok() ? figure : std::string());
+  return app.ExitCode(c.status == ChartStatus::kOk
+                          ? std::string()
+                          : "partial chart written (" + std::string(Name(c.status)) +
+                                "): " + c.message + " (" + run.Reason() + ")");
+}
+
+}  // namespace stickslip::cli

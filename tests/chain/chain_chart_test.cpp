@@ -1,0 +1,112 @@
+// The chart of two unequal blocks (m2 = 1.3, studies/chain2.ini otherwise)
+// in (v, kc) (ChartSystem, system_chart.hpp): steady sliding's HB where the
+// blocks' damping c + mu'(v) vanishes (closed form), and an NS curve of the
+// stick-slip orbit checked against one-parameter runs of the branch driver,
+// which locate NS by bisection on the sign of its test along the branch.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "chain/chain.hpp"
+#include "stickslip/chart/system_chart.hpp"
+#include "stickslip/equilibria/steady_branch.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
+#include "stickslip/model/model.hpp"
+#include "stickslip/orbits/settle.hpp"
+
+namespace stickslip::chain {
+namespace {
+
+Chain Unequal(double v, double kc) {
+  Params p;  // the seed's cubic law, beta 0.05
+  p.v = v;
+  ChainParams c = Uniform(2, p, kc);
+  c.blocks[1].m = 1.3;
+  return Chain(c);
+}
+
+SystemChartOptions Plane(const System& s) {
+  SystemChartOptions o;
+  o.plane.p1 = s.ParameterIndex("v"), o.plane.p2 = s.ParameterIndex("kc");
+  o.plane.from1 = 0.1, o.plane.to1 = 0.5, o.plane.from2 = 0.1, o.plane.to2 = 1;
+  return o;
+}
+
+// The NS point of the branch in kc at v from the attractor at kc = 0.55.
+OrbitRow TorusPoint(double v, PoincareSection* section) {
+  const Chain s = Unequal(v, 0.55);
+  SettleOptions so;
+  so.shooting = Plane(s).branch.shooting;
+  Eigen::VectorXd z0 = SteadySliding(s).z;
+  z0[0] += 0.5;
+  const SettledOrbit st = SettleOnStickSlip(s, z0, so);
+  EXPECT_TRUE(st.found) << st.message;
+  OrbitBranchOptions o(so.shooting.flow);
+  o.palc.ds = o.palc.ds_max = 0.01;
+  const OrbitBranch b =
+      ContinueOrbits(s, s.ParameterIndex("kc"), st.orbit.start, st.section, 0.1, o);
+  *section = b.section;
+  for (const OrbitRow& r : b.special)
+    if (r.label == SpecialKind::kTorus) return r;
+  ADD_FAILURE() << "no NS in kc at v = " << v;
+  return {};
+}
+
+// With unequal damping too (c2 = 0.15) the HB curve is where the Hurwitz
+// determinant of det(M l^2 + D l + K) vanishes (Routh-Hurwitz, the quartic
+// a4 l^4 + ... + a0: a1 a2 a3 - a0 a3^2 - a4 a1^2 = 0), D = diag(c_i + mu'(v)).
+TEST(ChainChart, HopfCurveIsTheHurwitzDeterminantsZero) {
+  ChainParams c = Unequal(0.3, 0.5).params();
+  c.blocks[1].c = 0.15;
+  const Chain s(c);
+  SteadyBranchOptions so;
+  so.points = 201;
+  const SteadyBranch line = ContinueSteadySliding(s, s.ParameterIndex("v"), 0.6, so);
+  ASSERT_FALSE(line.special.empty());
+  SystemChartOptions o = Plane(s);
+  const SystemCurve hb = TraceHopfCurve(s, o, line.special[0].p, 0.5, 1);
+  EXPECT_EQ(hb.ends.Text(), "border / border");
+  ASSERT_GT(hb.points.size(), 20u);
+  auto hurwitz = [](double v, double kc) {
+    const double mu1 = -0.45 + 1.8 * v * v;  // mu'(v), the cubic law
+    const double m1 = 1, m2 = 1.3, d1 = 0.1 + mu1, d2 = 0.15 + mu1, k11 = 1 + kc, k22 = 1 + kc;
+    const double a4 = m1 * m2, a3 = m1 * d2 + m2 * d1, a2 = m1 * k22 + m2 * k11 + d1 * d2,
+                 a1 = d1 * k22 + d2 * k11, a0 = k11 * k22 - kc * kc;
+    return a1 * a2 * a3 - a0 * a3 * a3 - a4 * a1 * a1;
+  };
+  for (const SystemCurvePoint& p : hb.points) {  // the root in v at the point's kc, by bisection
+    double lo = p.p1 - 1e-6, hi = p.p1 + 1e-6;
+    ASSERT_LT(hurwitz(lo, p.p2) * hurwitz(hi, p.p2), 0) << "kc " << p.p2;
+    for (int i = 0; i < 60; ++i)
+      (hurwitz(lo, p.p2) * hurwitz((lo + hi) / 2, p.p2) <= 0 ? hi : lo) = (lo + hi) / 2;
+    EXPECT_NEAR(p.p1, (lo + hi) / 2, 1e-12) << "kc " << p.p2;
+    EXPECT_GT(p.orbit.period, 0) << "a complex pair";
+  }
+}
+
+TEST(ChainChart, TorusCurveMeetsTheBranchTorusPoints) {
+  PoincareSection section;
+  const OrbitRow seed = TorusPoint(0.3, &section);
+  const Chain s = Unequal(0.3, seed.p);
+  const SystemCurve ns =
+      TraceOrbitCurve(s, Plane(s), CurveKind::kTorus, seed.start, 0.3, seed.p, section, 0);
+  ASSERT_GT(ns.points.size(), 10u);
+  // A complex pair on the unit circle at every point.
+  for (const SystemCurvePoint& p : ns.points) {
+    double off = 1;
+    for (const auto& m : p.orbit.multipliers)
+      if (std::abs(m.imag()) > 1e-3) off = std::min(off, std::abs(std::abs(m) - 1));
+    EXPECT_LT(off, 1e-7) << "v " << p.p1;
+  }
+  // At v = 0.35 (a point of the curve nearest it), the branch in kc there has
+  // its NS at the curve's kc.
+  const SystemCurvePoint* near = &ns.points[0];
+  for (const SystemCurvePoint& p : ns.points)
+    if (std::abs(p.p1 - 0.35) < std::abs(near->p1 - 0.35)) near = &p;
+  ASSERT_LT(std::abs(near->p1 - 0.35), 0.02);
+  const OrbitRow at = TorusPoint(near->p1, &section);
+  EXPECT_NEAR(at.p, near->p2, 1e-8);
+}
+
+}  // namespace
+}  // namespace stickslip::chain
