@@ -65,4 +65,6 @@ done
 run "$build/ss_basin" --study studies/chain2_basin.ini --out "$fig/chain2_basin"
 run "$build/ss_orbit_diagram" --study studies/chain2.ini --from 0.05 --to 0.45 --n 200 \
   --transient 300 --keep 100 --out "$fig/chain2_od"
+run "$build/ss_chart" --study studies/brake_chart.ini --out "$fig/brake_chart"
+run "$build/ss_chart" --study studies/chain2_chart.ini --out "$fig/chain2_chart"
 du -sh "$fig"

@@ -81,7 +81,8 @@ std::vector<Segment> UnitSegments(const Plane& plane,
         if (j != k)
           for (size_t s = first[j]; s < first[j + 1]; ++s) consider(Nearest(segs[s], p));
       if (first[k + 1] - first[k] > 2) consider(ends[k][1 - e]);
-      if (best > Tolerances::kSegmentMinLength && best < Tolerances::kEndSnap) segs.push_back({p, to});
+      if (best > Tolerances::kSegmentMinLength && best < Tolerances::kEndSnap)
+        segs.push_back({p, to});
     }
   return segs;
 }

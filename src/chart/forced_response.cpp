@@ -44,7 +44,7 @@ ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptio
         const ForcedModel model(pl.At(base, g.x1[i], g.x2[j]));
         if (fresh) z = ForcedStart(model, 0, 0, model.v());
         const SectionRun r = IterateStroboscopic(model, ForcedStart(model, 0, z.z[0], z.z[1]),
-                                                      bo.iterate, poll, o.max_amplitude);
+                                                 bo.iterate, poll, o.max_amplitude);
         if (r.status == LyapunovStatus::kCancelled) return;
         g.cells[k] = ClassifyAttractor(model, r, bo);
         g.lyapunov_err[k] = r.lyapunov_err;

@@ -14,9 +14,8 @@ double HopfCriticality(const Params& p) { return -Friction(p).D3Mu(p.v) / 16.0; 
 double HopfCurveProblem::Partial(const Params& p, const ParameterAxis& axis) const {
   if (axis.id() == Parameter::kBeta) return 2.0;
   if (axis.id() == Parameter::kV) return Friction(p).D2Mu(p.v);
-  const double x = axis.Get(p),
-               h = Tolerances::kHopfDifference *
-                   std::max(std::abs(x), Tolerances::kHopfDifferenceFloor);
+  const double x = axis.Get(p), h = Tolerances::kHopfDifference *
+                                    std::max(std::abs(x), Tolerances::kHopfDifferenceFloor);
   Params lo = p, hi = p;
   axis.Set(lo, x - h);
   axis.Set(hi, x + h);

@@ -89,7 +89,8 @@ bool OrbitCurveProblem::Residual(const VectorXd& u, double* residual, std::strin
   return std::isfinite(*residual);
 }
 
-bool OrbitCurveProblem::Sample(const VectorXd& u, OrbitRow* row, double* test, std::string* why) {
+bool OrbitCurveProblem::Sample(const VectorXd& u, OrbitRow* row, double* test, std::string* why,
+                               std::vector<ModeSet>* modes) {
   *why = DomainError(u);
   if (!why->empty()) return false;
   PeriodicOrbit o;
@@ -97,6 +98,7 @@ bool OrbitCurveProblem::Sample(const VectorXd& u, OrbitRow* row, double* test, s
   if (!orbit_.MapOf(u.head(nu_ + 1), true, &r, &o, why)) return false;
   *row = RowOf(o, u[nu_]);
   *test = Test(*row);
+  if (modes) *modes = o.modes;
   return true;
 }
 

@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "continuation/orbit_problem.hpp"
 #include "stickslip/chart/chart.hpp"
@@ -33,8 +34,10 @@ class OrbitCurveProblem final : public PalcProblem {
   /// u of a row (its start and p) at p2.
   Eigen::VectorXd Unknowns(const OrbitRow& row, double p2) const;
   /// The orbit at u (with its multipliers, counts and extremes) as a row; its
-  /// test function in *test. False with *why where the map fails.
-  bool Sample(const Eigen::VectorXd& u, OrbitRow* row, double* test, std::string* why);
+  /// test function in *test, its mode sequence in *modes if given. False
+  /// with *why where the map fails.
+  bool Sample(const Eigen::VectorXd& u, OrbitRow* row, double* test, std::string* why,
+              std::vector<ModeSet>* modes = nullptr);
   /// max(|P(z) - z|, |test|) at u (max norm): an accepted point's residual.
   bool Residual(const Eigen::VectorXd& u, double* residual, std::string* why);
   /// This curve's test function of a row (RowTest's LP, PD or NS).

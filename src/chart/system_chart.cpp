@@ -38,18 +38,24 @@ TraceOptions TraceFor(const SystemChartOptions& o, int i1) {
   return t;
 }
 
-// A way ends where the orbit's switching sequence changes (an SL point).
+// A way ends where the orbit's switching sequence changes (an SL point): its
+// counts of sticks and crossings, or the order of its modes.
 CurveEnd SameSequence(OrbitCurveProblem& problem, const PalcPoint& last, const PalcPoint& next) {
   OrbitRow a, b;
+  std::vector<ModeSet> ma, mb;
   double t = 0;
   std::string why;
-  if (!problem.Sample(last.u, &a, &t, &why)) return {CurveEndKind::kStartFailed, why};
-  if (!problem.Sample(next.u, &b, &t, &why)) return {CurveEndKind::kStartFailed, why};
-  if (orbit_detail::SameStructure(a, b)) return {};
-  return {CurveEndKind::kSliding, "the switching sequence changes: sticks " +
-                                      std::to_string(a.sticks) + " -> " + std::to_string(b.sticks) +
-                                      ", crossings " + std::to_string(a.crossings) + " -> " +
-                                      std::to_string(b.crossings)};
+  if (!problem.Sample(last.u, &a, &t, &why, &ma)) return {CurveEndKind::kStartFailed, why};
+  if (!problem.Sample(next.u, &b, &t, &why, &mb)) return {CurveEndKind::kStartFailed, why};
+  if (!orbit_detail::SameStructure(a, b))
+    return {CurveEndKind::kSliding,
+            "the switching sequence changes: sticks " + std::to_string(a.sticks) + " -> " +
+                std::to_string(b.sticks) + ", crossings " + std::to_string(a.crossings) + " -> " +
+                std::to_string(b.crossings)};
+  if (ma != mb)
+    return {CurveEndKind::kSliding,
+            "the order of the orbit's " + std::to_string(ma.size()) + " modes changes"};
+  return {};
 }
 
 // A point of an HB curve onto the test's zero by Newton steps in one plane

@@ -82,7 +82,8 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
   const std::unique_ptr<System> s = SystemFromArguments(args);
   SystemChartOptions o = Configure(args, *s);
   const FlowOptions& flow = o.branch.shooting.flow;
-  const std::string model = DescribeSystem(*s, SystemChoiceOf(args), -1);
+  const std::string model =
+      DescribeSystem(*s, SystemChoiceOf(args), o.plane.p1, o.plane.p2, "[axis]");
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("chart", format);
   AppRun app(prog, args, "chart", {"curves.tsv", "codim2.tsv", "chart.gp", figure});

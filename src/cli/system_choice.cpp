@@ -167,11 +167,12 @@ std::string ParameterList(const System& s) {
   return out;
 }
 
-std::string DescribeSystem(const System& s, SystemChoice choice, int continued) {
+std::string DescribeSystem(const System& s, SystemChoice choice, int continued, int other,
+                           const char* mark) {
   std::string out = Name(choice);
   for (int j = 0; j < s.parameters(); ++j)
     out += (j ? " " : ": ") + s.ParameterName(j) + "=" +
-           (j == continued ? std::string("[continued]") : FormatNumber(s.ParameterValue(j)));
+           (j == continued || j == other ? std::string(mark) : FormatNumber(s.ParameterValue(j)));
   return out;
 }
 

@@ -42,7 +42,10 @@ void RefuseSystem(const Arguments& args, const std::string& prog,
 std::unique_ptr<System> SystemFromArguments(const Arguments& args,
                                             const SystemPoint* restart = nullptr);
 // "chain of 2 blocks: v = 0.25, kc = 1, ..." : the system and its parameters.
-std::string DescribeSystem(const System& s, SystemChoice choice, int continued);
+// Parameter `continued` (-1: none) reads "[continued]"; `other` (-1: none)
+// reads `mark` (a chart's second axis: both then "[axis]").
+std::string DescribeSystem(const System& s, SystemChoice choice, int continued, int other = -1,
+                           const char* mark = "[continued]");
 // The items of a comma-separated list, each trimmed of blanks; every item,
 // an empty one (",," or a trailing ",") included.
 std::vector<std::string> CommaItems(const std::string& text);

@@ -1,0 +1,78 @@
+// ss_chart --study brake_chart (studies/brake_chart.ini; docs/systems.md,
+// "Charts"): the mode-coupling model's chart through the app. The HB rows of
+// curves.tsv against the closed flutter threshold mu_k*(beta)
+// (mode_coupling.hpp), the LP rows' largest multiplier against 1, the cusp
+// in codim2.tsv; bad inputs refused with one line naming the option and
+// nothing written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "app_test_util.hpp"
+#include "mode_coupling/mode_coupling.hpp"
+
+namespace {
+
+namespace tu = stickslip::testing_util;
+class ModeCouplingChartApp : public tu::AppTest {};
+
+const std::string kChartStudy = STICKSLIP_SOURCE_DIR "/studies/brake_chart.ini";
+
+TEST_F(ModeCouplingChartApp, StudyCurvesAgreeWithTheClosedFormAndTheirTests) {
+  const auto r = RunOut("ss_chart", dir_, {"--study", kChartStudy});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv curves = tu::ReadTsv(tu::ReadFile(dir_ + "/out/curves.tsv"));
+  const tu::Tsv codim2 = tu::ReadTsv(tu::ReadFile(dir_ + "/out/codim2.tsv"));
+  EXPECT_EQ(curves.meta.at("status"), "complete");
+  for (const char* c : {"mu_k", "beta", "curve", "x_min", "ydot_max", "mult_max", "test"})
+    EXPECT_GE(curves.Column(c), 0) << c;
+  stickslip::mode_coupling::CouplingParams p;
+  p.law.law = stickslip::LawKind::kCoulomb;
+  p.law.mu_s = 0.8;
+  int hb = 0, lp = 0;
+  for (const auto& row : curves.rows) {
+    const double mu = std::stod(row[0]), beta = std::stod(row[1]);
+    if (row[2] == "HB") {
+      p.beta = beta;
+      EXPECT_NEAR(mu, stickslip::mode_coupling::FlutterMuK(p), 1e-12) << "beta " << beta;
+      ++hb;
+    } else if (row[2] == "LP") {
+      EXPECT_NEAR(std::stod(row[curves.Column("mult_max")]), 1, 1e-7) << "beta " << beta;
+      EXPECT_LE(std::stod(row[curves.Column("y_max")]), 1);  // the contact stays closed
+      ++lp;
+    }
+  }
+  EXPECT_GT(hb, 20);
+  EXPECT_GT(lp, 20);
+  ASSERT_EQ(codim2.rows.size(), 1u);
+  EXPECT_EQ(codim2.rows[0][0], "CP");
+  EXPECT_TRUE(tu::Contains(r.out, "contact-lost"));
+}
+
+TEST_F(ModeCouplingChartApp, BadInputsAreRefusedAndWriteNothing) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--param2", "mu_k"}, "the two axes must differ"},
+      {{"--param", "zeta"}, "'zeta' is no parameter of mode_coupling"},
+      {{"--to", "0.9"}, "mu_k = 0.9"},
+      {{"--from2", "0.05"}, "empty or inverted"},
+      {{"--max_m", "2"}, "--max_m"},
+      {{"--seed_lines", "21"}, "--seed_lines"},
+      {{"--max_step", "0.9"}, "max_step"},
+  };
+  for (const auto& [extra, message] : cases) {
+    const std::string d = NewDir();
+    std::vector<std::string> args = {"--study", kChartStudy};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = RunOut("ss_chart", d, args);
+    EXPECT_EQ(r.outcome.code, 2) << extra[0] << ": " << r.err;
+    EXPECT_TRUE(tu::Contains(r.err, message)) << r.err;
+    EXPECT_FALSE(tu::Exists(d + "/out/curves.tsv")) << extra[0];
+  }
+  const auto r = RunOut("ss_chart", NewDir(), {"--system", "chain", "--param", "v"});
+  EXPECT_EQ(r.outcome.code, 2);
+  EXPECT_TRUE(tu::Contains(r.err, "--param2 is required with --system")) << r.err;
+}
+
+}  // namespace
