@@ -191,4 +191,5 @@ PYBIND11_MODULE(_core, m) {
   BindSystemRuns(m);
   BindSystemBranch(m);
   BindAttractors(m);
+  BindSystemChart(m);
 }

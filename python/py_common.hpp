@@ -140,6 +140,7 @@ void BindSystems(py::module_& m);       // py_systems.cpp: ChainParams, Coupling
 void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
 void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
 void BindAttractors(py::module_& m);    // py_attractors.cpp: basins(system), attractor_basins
+void BindSystemChart(py::module_& m);   // py_system_chart.cpp: chart(system, ...) (after BindCharts)
 
 // The System a Python parameter object stands for (Params, ForcedParams,
 // ChainParams, CouplingParams); InvalidArgument for anything else.

@@ -694,6 +694,7 @@ def basins(system: Union[ChainParams, CouplingParams], nx: int = 41, ny: int = 4
            rtol: Optional[float] = None, atol: Optional[float] = None) -> AttractorBasins: ...
 def orbit_curve(params: Params, orbit: Orbit, n: int = 400) -> Array: ...
 def smallest_disturbance(params: Params, orbit: Orbit, n: int = 4000) -> Disturbance: ...
+@overload
 def chart(params: Params, param: Optional[Parameter | str] = None, from_: Optional[float] = None,
           to: Optional[float] = None, param2: Optional[Parameter | str] = None,
           from2: Optional[float] = None, to2: Optional[float] = None,
@@ -701,6 +702,11 @@ def chart(params: Params, param: Optional[Parameter | str] = None, from_: Option
           rtol: Optional[float] = None, atol: Optional[float] = None,
           integrator: IntegratorLike = None, method: MethodLike = None,
           options: Optional[ChartOptions] = None) -> Chart: ...
+@overload
+def chart(system: Union[ChainParams, CouplingParams], param: str, from_: float, to: float,
+          param2: str, from2: float, to2: float, seed_lines: int = 3, max_step: float = 0.01,
+          hopf: bool = True, orbits: bool = True, rtol: Optional[float] = None,
+          atol: Optional[float] = None) -> SystemChart: ...
 def restart(dir: str, point: Union[str, int]) -> LabelledPoint: ...
 
 # Sweeps (stickslip._sweep): grid x sample on Dask, serially, or on a cluster.
@@ -833,6 +839,41 @@ class Attractor:
     starts: int
     z: Array
     cycle: Array
+
+class SystemCurve:
+    kind: str
+    seed: str
+    ends: str
+    p1: Array
+    p2: Array
+    period: Array
+    sticks: Array
+    crossings: Array
+    lo: Array
+    hi: Array
+    mult_max: Array
+    test: Array
+    evaluations: int
+    seconds: float
+
+class SystemCodim2:
+    label: str
+    on: str
+    curve: int
+    p1: float
+    p2: float
+    description: str
+
+class SystemChart:
+    param: str
+    param2: str
+    state_names: List[str]
+    curves: List[SystemCurve]
+    codim2: List[SystemCodim2]
+    status: str
+    message: str
+    seed_runs: int
+    seconds: float
 
 class AttractorBasins:
     slice: List[str]

@@ -127,7 +127,9 @@ class EveryResultArrayReadOnly(unittest.TestCase):
         pd = [q for q in branch.special_points if q.label == "PD"][0]
         return {
             "basins": lambda: stickslip.basins(p, nx=3, ny=3),
-            "chart": lambda: stickslip.chart(p),
+            "chart": lambda: (stickslip.chart(p), stickslip.chart(
+                stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.52)),
+                "mu_k", 0.5, 0.55, "beta", 0.015, 0.025, seed_lines=1)),
             "continue_branch": lambda: stickslip.continue_branch(p, "v", from_=0.3, to=0.5),
             "continue_doubled": lambda: stickslip.continue_doubled(pd, lo=pd.p - 0.003,
                                                                    hi=pd.p + 0.003),

@@ -150,6 +150,29 @@ class SteadyBranchAndSettle(unittest.TestCase):
         with self.assertRaises(ValueError):
             stickslip.steady_branch(self.brake(0.3), "gamma2", 0.7)
 
+    def test_chart_hopf_curve_is_the_flutter_closed_form_and_its_fold_has_a_cusp(self):
+        """chart(system, ...) as ss_chart --study brake_chart: every HB point at mu_k*(beta);
+        the LP curve's largest multiplier 1; its cusp (CP) where two folds merge."""
+        c = stickslip.chart(self.brake(0.52), "mu_k", 0.45, 0.6, "beta", 0.01, 0.03,
+                            rtol=1e-12, atol=1e-12)
+        self.assertEqual(c.status, "ok")
+        kinds = [k.kind for k in c.curves]
+        self.assertEqual(kinds, ["HB", "LP"])
+        hb, lp = c.curves
+        for mu, beta in zip(hb.p1, hb.p2):
+            closed = stickslip.CouplingParams(beta=beta, k11=1.0, k22=1.5, k12=-0.3, gamma=1.0,
+                                              v=0.5, law=self.brake(0.52).law).flutter_mu_k
+            self.assertAlmostEqual(mu, closed, delta=1e-12)
+        self.assertTrue(np.all(np.abs(lp.mult_max - 1) < 1e-7))
+        self.assertEqual(lp.lo.shape, (len(lp.p1), 4))
+        self.assertTrue(lp.ends.endswith("contact-lost: " + lp.ends.split("contact-lost: ")[-1]))
+        self.assertEqual([q.label for q in c.codim2], ["CP"])
+        self.assertAlmostEqual(c.codim2[0].p2, 0.02442, delta=1e-5)
+        with self.assertRaises(ValueError):
+            stickslip.chart(self.brake(0.52), "zeta", 0.45, 0.6, "beta", 0.01, 0.03)
+        with self.assertRaises(ValueError):  # mu_k reaches mu_s on the border
+            stickslip.chart(self.brake(0.52), "mu_k", 0.45, 0.9, "beta", 0.01, 0.03)
+
     def test_settled_orbit_closes_under_the_flow(self):
         """The brake above mu_k*: the orbit settle refines returns to its start after one
         period of a plain run at a tighter tolerance (no Newton)."""

@@ -1,0 +1,170 @@
+// chart(system, ...) for ChainParams and CouplingParams in the Python module
+// (chart/system_chart.hpp; as ss_chart --system): HB curves of steady
+// sliding and LP, PD and NS curves of periodic orbits in two parameters, as
+// bound types of read-only arrays; the tracing runs without the GIL, with
+// Ctrl-C. The belt's chart(params, ...) keeps its own.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "py_common.hpp"
+#include "stickslip/chart/system_chart.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/io/system_branch_report.hpp"
+
+namespace stickslip::python {
+
+namespace {
+
+struct PySystemCurve {
+  std::string kind, seed, ends;
+  py::array p1, p2, period, sticks, crossings, lo, hi, mult_max, test;
+  int evaluations = 0;
+  double seconds = 0;
+};
+
+struct PyCodim2 {
+  std::string label, on, description;
+  int curve = 0;
+  double p1 = 0, p2 = 0;
+};
+
+struct PySystemChart {
+  std::string param, param2, status, message;
+  std::vector<std::string> state_names;
+  std::vector<PySystemCurve> curves;
+  std::vector<PyCodim2> codim2;
+  int seed_runs = 0;
+  double seconds = 0;
+};
+
+py::array Matrix(const std::vector<double>& flat, int cols) {
+  const auto rows = static_cast<py::ssize_t>(cols ? flat.size() / cols : 0);
+  py::array_t<double> a({rows, static_cast<py::ssize_t>(cols)}, flat.data());
+  a.attr("setflags")(py::arg("write") = false);
+  return std::move(a);
+}
+
+PySystemCurve CurveOf(const SystemCurve& c, int nt) {
+  PySystemCurve out;
+  out.kind = CurveLabel(c.kind), out.seed = c.seed, out.ends = c.ends.Text();
+  out.evaluations = c.evaluations, out.seconds = c.seconds;
+  std::vector<double> p1, p2, period, lo, hi, mult, test;
+  std::vector<int> sticks, crossings;
+  for (const SystemCurvePoint& p : c.points) {
+    p1.push_back(p.p1), p2.push_back(p.p2), period.push_back(p.orbit.period);
+    sticks.push_back(p.orbit.sticks), crossings.push_back(p.orbit.crossings);
+    const bool hb = c.kind == CurveKind::kHopf;
+    for (int i = 0; i < nt; ++i) {
+      lo.push_back(hb ? p.orbit.start.z[i] : p.orbit.lo[i]);
+      hi.push_back(hb ? p.orbit.start.z[i] : p.orbit.hi[i]);
+    }
+    double m = 0;
+    for (const auto& mu : p.orbit.multipliers) m = std::max(m, std::abs(mu));
+    mult.push_back(m), test.push_back(p.test);
+  }
+  out.p1 = ReadOnly(p1), out.p2 = ReadOnly(p2), out.period = ReadOnly(period);
+  out.sticks = ReadOnly(sticks), out.crossings = ReadOnly(crossings);
+  out.lo = Matrix(lo, nt), out.hi = Matrix(hi, nt);
+  out.mult_max = ReadOnly(mult), out.test = ReadOnly(test);
+  return out;
+}
+
+PySystemChart SystemChartOf(const py::object& system, const std::string& param, double from,
+                            double to, const std::string& param2, double from2, double to2,
+                            int seed_lines, double max_step, bool hopf, bool orbits,
+                            std::optional<double> rtol, std::optional<double> atol) {
+  const std::unique_ptr<System> s = SeveralMassSystemOf(system);
+  if (!s) throw InvalidArgument("chart(system, ...) takes ChainParams or CouplingParams");
+  SystemChartOptions o;
+  SystemPlane& pl = o.plane;
+  pl.p1 = s->ParameterIndex(param), pl.p2 = s->ParameterIndex(param2);
+  for (const auto& [j, name] : {std::pair{pl.p1, param}, std::pair{pl.p2, param2}})
+    if (j < 0) throw InvalidArgument("'" + name + "' is no parameter of this system");
+  pl.from1 = from, pl.to1 = to, pl.from2 = from2, pl.to2 = to2;
+  o.seed_lines = seed_lines, o.max_step = max_step;
+  o.hopf_curves = hopf, o.orbit_curves = orbits;
+  FlowOptions& flow = o.branch.shooting.flow;
+  if (rtol) flow.rtol = *rtol;
+  if (atol) flow.atol = *atol;
+  if (const std::string e = o.ValidationError(*s); !e.empty()) throw InvalidArgument(e);
+  Interrupt interrupt;
+  o.cancelled = [&] { return interrupt(); };
+  o.branch.palc.cancelled = o.cancelled;
+  SystemChart r;
+  {
+    py::gil_scoped_release nogil;
+    r = ChartSystem(*s, o);
+  }
+  interrupt.RaiseIfInterrupted();
+  PySystemChart out;
+  out.param = param, out.param2 = param2;
+  out.status = Name(r.status), out.message = r.message;
+  out.seed_runs = r.seed_runs, out.seconds = r.seconds;
+  const int nt = s->tangent_dimension();
+  for (int i = 0; i < nt; ++i) out.state_names.push_back(s->StateName(i));
+  for (const SystemCurve& c : r.curves) out.curves.push_back(CurveOf(c, nt));
+  for (const SystemCodim2& p : r.codim2)
+    out.codim2.push_back({Name(p.label), CurveLabel(p.on), p.description, p.curve, p.p1, p.p2});
+  return out;
+}
+
+}  // namespace
+
+void BindSystemChart(py::module_& m) {
+  py::class_<PySystemCurve>(m, "SystemCurve",
+                            "One curve of chart(system, ...): kind (HB, LP, PD, NS), per point "
+                            "p1, p2, period, sticks, crossings, lo and hi (rows: the state "
+                            "components' extremes; HB: the rest point), mult_max and test; "
+                            "seed and ends say where it started and how each end ended.")
+      .def_readonly("kind", &PySystemCurve::kind)
+      .def_readonly("seed", &PySystemCurve::seed)
+      .def_readonly("ends", &PySystemCurve::ends)
+      .def_readonly("p1", &PySystemCurve::p1)
+      .def_readonly("p2", &PySystemCurve::p2)
+      .def_readonly("period", &PySystemCurve::period)
+      .def_readonly("sticks", &PySystemCurve::sticks)
+      .def_readonly("crossings", &PySystemCurve::crossings)
+      .def_readonly("lo", &PySystemCurve::lo)
+      .def_readonly("hi", &PySystemCurve::hi)
+      .def_readonly("mult_max", &PySystemCurve::mult_max)
+      .def_readonly("test", &PySystemCurve::test)
+      .def_readonly("evaluations", &PySystemCurve::evaluations)
+      .def_readonly("seconds", &PySystemCurve::seconds);
+  py::class_<PyCodim2>(m, "SystemCodim2",
+                       "A codimension-two point of chart(system, ...): label (SL, LPPD, R1, R2, "
+                       "CP), on (the curve's kind), curve (its index), p1, p2, description.")
+      .def_readonly("label", &PyCodim2::label)
+      .def_readonly("on", &PyCodim2::on)
+      .def_readonly("curve", &PyCodim2::curve)
+      .def_readonly("p1", &PyCodim2::p1)
+      .def_readonly("p2", &PyCodim2::p2)
+      .def_readonly("description", &PyCodim2::description);
+  py::class_<PySystemChart>(m, "SystemChart",
+                            "Result of chart(system, ...): param, param2, curves (SystemCurve), "
+                            "codim2 (SystemCodim2), status (ok, cancelled), seed_runs, seconds.")
+      .def_readonly("param", &PySystemChart::param)
+      .def_readonly("param2", &PySystemChart::param2)
+      .def_readonly("state_names", &PySystemChart::state_names)
+      .def_readonly("curves", &PySystemChart::curves)
+      .def_readonly("codim2", &PySystemChart::codim2)
+      .def_readonly("status", &PySystemChart::status)
+      .def_readonly("message", &PySystemChart::message)
+      .def_readonly("seed_runs", &PySystemChart::seed_runs)
+      .def_readonly("seconds", &PySystemChart::seconds);
+  // After the belt's chart(params, ...).
+  m.def("chart", &SystemChartOf, py::arg("system"), py::arg("param"), py::arg("from_"),
+        py::arg("to"), py::arg("param2"), py::arg("from2"), py::arg("to2"),
+        py::arg("seed_lines") = 3, py::arg("max_step") = 0.01, py::arg("hopf") = true,
+        py::arg("orbits") = true, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "chart(system, param, from_, to, param2, from2, to2, ...) for ChainParams and "
+        "CouplingParams (as ss_chart --system): HB curves of steady sliding and LP, PD, NS "
+        "curves of periodic orbits in two of the system's parameters, seeded by one-parameter "
+        "runs on seed_lines lines per axis; a SystemChart.");
+}
+
+}  // namespace stickslip::python
