@@ -1,5 +1,5 @@
-// chart(system, ...) for ChainParams and CouplingParams in the Python module
-// (chart/system_chart.hpp; as ss_chart --system): HB curves of steady
+// chart(system, ...) for ForcedParams, ChainParams and CouplingParams in the
+// Python module (chart/system_chart.hpp; as ss_chart --system): HB curves of steady
 // sliding and LP, PD and NS curves of periodic orbits in two parameters, as
 // bound types of read-only arrays; the tracing runs without the GIL, with
 // Ctrl-C. The belt's chart(params, ...) keeps its own.
@@ -38,7 +38,7 @@ struct PySystemChart {
   std::vector<std::string> state_names;
   std::vector<PySystemCurve> curves;
   std::vector<PyCodim2> codim2;
-  int seed_runs = 0;
+  int seed_runs = 0, failed_seed_runs = 0, seeds_not_traced = 0, cut_curves = 0;
   double seconds = 0;
 };
 
@@ -78,8 +78,7 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
                             double to, const std::string& param2, double from2, double to2,
                             int seed_lines, double max_step, bool hopf, bool orbits,
                             std::optional<double> rtol, std::optional<double> atol) {
-  const std::unique_ptr<System> s = SeveralMassSystemOf(system);
-  if (!s) throw InvalidArgument("chart(system, ...) takes ChainParams or CouplingParams");
+  const std::unique_ptr<System> s = SystemOf(system);  // InvalidArgument for another object
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
   pl.p1 = s->ParameterIndex(param), pl.p2 = s->ParameterIndex(param2);
@@ -105,6 +104,8 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   out.param = param, out.param2 = param2;
   out.status = Name(r.status), out.message = r.message;
   out.seed_runs = r.seed_runs, out.seconds = r.seconds;
+  out.failed_seed_runs = r.failed_seed_runs, out.seeds_not_traced = r.seeds_not_traced;
+  out.cut_curves = r.cut_curves;
   const int nt = s->tangent_dimension();
   for (int i = 0; i < nt; ++i) out.state_names.push_back(s->StateName(i));
   for (const SystemCurve& c : r.curves) out.curves.push_back(CurveOf(c, nt));
@@ -146,7 +147,9 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("description", &PyCodim2::description);
   py::class_<PySystemChart>(m, "SystemChart",
                             "Result of chart(system, ...): param, param2, curves (SystemCurve), "
-                            "codim2 (SystemCodim2), status (ok, cancelled), seed_runs, seconds.")
+                            "codim2 (SystemCodim2), status (ok; partial where a curve was cut "
+                            "short or a seed run failed, message says which; cancelled), "
+                            "seed_runs, failed_seed_runs, seeds_not_traced, cut_curves, seconds.")
       .def_readonly("param", &PySystemChart::param)
       .def_readonly("param2", &PySystemChart::param2)
       .def_readonly("state_names", &PySystemChart::state_names)
@@ -155,16 +158,20 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("status", &PySystemChart::status)
       .def_readonly("message", &PySystemChart::message)
       .def_readonly("seed_runs", &PySystemChart::seed_runs)
+      .def_readonly("failed_seed_runs", &PySystemChart::failed_seed_runs)
+      .def_readonly("seeds_not_traced", &PySystemChart::seeds_not_traced)
+      .def_readonly("cut_curves", &PySystemChart::cut_curves)
       .def_readonly("seconds", &PySystemChart::seconds);
   // After the belt's chart(params, ...).
   m.def("chart", &SystemChartOf, py::arg("system"), py::arg("param"), py::arg("from_"),
         py::arg("to"), py::arg("param2"), py::arg("from2"), py::arg("to2"),
         py::arg("seed_lines") = 3, py::arg("max_step") = 0.01, py::arg("hopf") = true,
         py::arg("orbits") = true, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
-        "chart(system, param, from_, to, param2, from2, to2, ...) for ChainParams and "
-        "CouplingParams (as ss_chart --system): HB curves of steady sliding and LP, PD, NS "
-        "curves of periodic orbits in two of the system's parameters, seeded by one-parameter "
-        "runs on seed_lines lines per axis; a SystemChart.");
+        "chart(system, param, from_, to, param2, from2, to2, ...) for ForcedParams, "
+        "ChainParams and CouplingParams (as ss_chart --system): HB curves of steady sliding "
+        "and LP, PD, NS curves of periodic orbits (a forced system's on its stroboscopic "
+        "section) in two of the system's parameters, seeded by one-parameter runs on "
+        "seed_lines lines per axis; a SystemChart.");
 }
 
 }  // namespace stickslip::python

@@ -59,6 +59,7 @@ class OrbitStatus(enum.IntEnum):
     singular = 8
     aperiodic = 9
     contact_open = 10
+    mode_changed = 11
 class PointKind(enum.IntEnum):
     stick_slip = 0
     pure_slip = 1
@@ -703,7 +704,8 @@ def chart(params: Params, param: Optional[Parameter | str] = None, from_: Option
           integrator: IntegratorLike = None, method: MethodLike = None,
           options: Optional[ChartOptions] = None) -> Chart: ...
 @overload
-def chart(system: Union[ChainParams, CouplingParams], param: str, from_: float, to: float,
+def chart(system: Union[ForcedParams, ChainParams, CouplingParams], param: str, from_: float,
+          to: float,
           param2: str, from2: float, to2: float, seed_lines: int = 3, max_step: float = 0.01,
           hopf: bool = True, orbits: bool = True, rtol: Optional[float] = None,
           atol: Optional[float] = None) -> SystemChart: ...
@@ -873,6 +875,9 @@ class SystemChart:
     status: str
     message: str
     seed_runs: int
+    failed_seed_runs: int
+    seeds_not_traced: int
+    cut_curves: int
     seconds: float
 
 class AttractorBasins:

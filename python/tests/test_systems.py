@@ -165,7 +165,9 @@ class SteadyBranchAndSettle(unittest.TestCase):
             self.assertAlmostEqual(mu, closed, delta=1e-12)
         self.assertTrue(np.all(np.abs(lp.mult_max - 1) < 1e-7))
         self.assertEqual(lp.lo.shape, (len(lp.p1), 4))
-        self.assertTrue(lp.ends.endswith("contact-lost: " + lp.ends.split("contact-lost: ")[-1]))
+        self.assertEqual(lp.ends.split(" / ")[0], "border")
+        self.assertTrue(lp.ends.split(" / ")[1].startswith("contact-lost: "), lp.ends)
+        self.assertEqual((c.failed_seed_runs, c.cut_curves), (0, 0))
         self.assertEqual([q.label for q in c.codim2], ["CP"])
         self.assertAlmostEqual(c.codim2[0].p2, 0.02442, delta=1e-5)
         with self.assertRaises(ValueError):

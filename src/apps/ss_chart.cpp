@@ -55,7 +55,9 @@ constexpr const char* kNotes =
     "curves of steady sliding and LP, PD and NS curves of periodic orbits are traced from the\n"
     "special points of one-parameter runs on --seed_lines lines per axis (each from the\n"
     "attractors settled on at 5 points of the line). Outputs: curves.tsv, codim2.tsv (SL,\n"
-    "LPPD, R1, R2), chart.gp and chart.png (docs/systems.md, \"Charts\").\n";
+    "LPPD, R1, R2, CP), chart.gp and chart.png (docs/systems.md, \"Charts\"). A curve cut\n"
+    "short or a failed seed run makes it partial (exit 1). Its solver defaults are the\n"
+    "library's (--max_steps 200000, no time limit on a return).\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 
 po::options_description AppOptions() {

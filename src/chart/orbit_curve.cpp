@@ -14,8 +14,6 @@ using Eigen::VectorXd;
 
 namespace {
 
-constexpr std::size_t kMaxKept = 1000;  // opened_'s bound
-
 int TestIndex(CurveKind kind) {
   switch (kind) {
     case CurveKind::kFold:
@@ -53,6 +51,7 @@ OrbitCurveProblem::OrbitCurveProblem(const System& system, int p1, int p2, const
       nu_(orbit_.parameter_index()),
       kind_(kind) {
   TestIndex(kind);  // throws for HB, GR
+  if (options_.palc.cancelled) orbit_.shooting().flow().set_cancel(options_.palc.cancelled);
 }
 
 double OrbitCurveProblem::Test(const OrbitRow& r) const {
@@ -107,9 +106,8 @@ bool OrbitCurveProblem::Evaluate(const VectorXd& u, VectorXd* f, MatrixXd* jac, 
   if (!why->empty()) return false;
   VectorXd f0;
   MatrixXd j0;
-  orbit_.ClearOpened();
   if (!orbit_.Evaluate(u.head(nu_ + 1), &f0, &j0, why)) {
-    if (orbit_.Opened() && opened_.size() < kMaxKept) opened_.insert(*why);
+    last_failure_ = *why, last_status_ = orbit_.last_failure();
     return false;
   }
   f->resize(nu_ + 1);

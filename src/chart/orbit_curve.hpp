@@ -11,7 +11,6 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -43,9 +42,12 @@ class OrbitCurveProblem final : public PalcProblem {
   /// This curve's test function of a row (RowTest's LP, PD or NS).
   double Test(const OrbitRow& r) const;
   int plane_index() const { return nu_; }  ///< u[nu], u[nu + 1] are (p1, p2)
-  /// Whether an evaluation that failed with *why failed on a contact's
-  /// opening (a normal force at 0 on the orbit).
-  bool OpenedWith(const std::string& why) const { return opened_.count(why) > 0; }
+  /// The status of the orbit of the last Evaluate that failed with `why`
+  /// (kContactOpen: a normal force at 0 on the orbit; kModeChanged: the
+  /// return's mode differs, the switching sequence changed), else kOk.
+  OrbitStatus FailureOf(const std::string& why) const {
+    return why == last_failure_ ? last_status_ : OrbitStatus::kOk;
+  }
 
  private:
   // The map at u: the residual and the test (the orbit's multipliers).
@@ -55,7 +57,8 @@ class OrbitCurveProblem final : public PalcProblem {
   mutable orbit_detail::OrbitProblem orbit_;
   int p2_, nu_;
   CurveKind kind_;
-  std::set<std::string> opened_;  // the failures of Evaluate where a contact opened
+  std::string last_failure_;  // the last failed Evaluate's why and its orbit's status
+  OrbitStatus last_status_ = OrbitStatus::kOk;
 };
 
 }  // namespace stickslip

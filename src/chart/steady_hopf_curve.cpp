@@ -16,12 +16,12 @@ using Eigen::VectorXd;
 SteadyHopfProblem::SteadyHopfProblem(const System& system, int p1, int p2)
     : system_(system.Clone()), p1_(p1), p2_(p2) {}
 
-double SteadyHopfProblem::Test(const SteadyState& s) {
-  std::complex<double> prod = 1;
-  const auto& l = s.eigenvalues;
-  for (std::size_t a = 0; a < l.size(); ++a)
-    for (std::size_t b = a + 1; b < l.size(); ++b) prod *= l[a] + l[b];
-  return prod.real();
+bool SteadyHopfProblem::Test(const SteadyState& s, double* test, double* omega) {
+  double best = HUGE_VAL;
+  for (const auto& l : s.eigenvalues)
+    if (l.imag() > 0 && std::abs(l.real()) < best)
+      best = std::abs(l.real()), *test = l.real(), *omega = l.imag();
+  return best < HUGE_VAL;
 }
 
 bool SteadyHopfProblem::Sample(const VectorXd& u, SteadyState* state, double* test,
@@ -46,9 +46,10 @@ bool SteadyHopfProblem::Sample(const VectorXd& u, SteadyState* state, double* te
              Num(n->At(state->z.data())) + ")";
       return false;
     }
-  *test = Test(*state);
-  if (std::isfinite(*test)) return true;
-  *why = "the Hopf test is not finite";
+  double omega = 0;
+  if (Test(*state, test, &omega) && std::isfinite(*test)) return true;
+  *why = "no complex pair of eigenvalues at " + system_->ParameterName(p1_) + " = " + Num(u[0]) +
+         ", " + system_->ParameterName(p2_) + " = " + Num(u[1]);
   return false;
 }
 

@@ -1,10 +1,11 @@
 // HB curves of any system's steady sliding in two parameters
-// (system_chart.hpp): unknowns (p1, p2), one equation, the bialternate test
-//   prod_{i<j} (lambda_i + lambda_j) = 0
-// of the Jacobian's eigenvalues at the rest point (Kuznetsov 2004, ch. 10:
-// zero where a pair sums to 0, a Hopf pair or a neutral saddle). The rest
-// point is explicit (System::Rest), so the test is a function of (p1, p2)
-// alone; its gradient by central differences.
+// (system_chart.hpp): unknowns (p1, p2), one equation, Re lambda = 0 for the
+// complex pair of the Jacobian at the rest point nearest the imaginary axis
+// (Kuznetsov 2004, ch. 3). It is O(1) for any n, where the bialternate
+// product prod_{i<j} (lambda_i + lambda_j) has n(n-1)/2 factors and under- or
+// overflows, and it vanishes at Hopf points only (no neutral saddles). The
+// rest point is explicit (System::Rest), so the test is a function of
+// (p1, p2) alone; its gradient by central differences.
 #pragma once
 
 #include <Eigen/Dense>
@@ -26,8 +27,8 @@ class SteadyHopfProblem final : public PalcProblem {
   std::string DomainError(const Eigen::VectorXd& u) const override;
   /// Steady sliding at u and its test; false with *why outside the domain.
   bool Sample(const Eigen::VectorXd& u, SteadyState* state, double* test, std::string* why) const;
-  /// The test of eigenvalues.
-  static double Test(const SteadyState& s);
+  /// The test of eigenvalues; false where no pair is complex.
+  static bool Test(const SteadyState& s, double* test, double* omega);
 
  private:
   std::unique_ptr<System> system_;  // its p1, p2 set at every sample

@@ -58,6 +58,24 @@ CurveEnd SameSequence(OrbitCurveProblem& problem, const PalcPoint& last, const P
   return {};
 }
 
+// Why an accepted point u of a curve of orbits is no point of it, or "": its
+// residual max(|P(u) - u|, |test|) exceeds `bound` (an update that shrank on
+// a kink of the map, not at a root), or on an NS curve no complex pair lies
+// on the unit circle (past R1 or R2 the test's zero is a neutral saddle).
+std::string BadPoint(OrbitCurveProblem& problem, const VectorXd& u, double bound, CurveKind kind) {
+  double res = 0;
+  std::string why;
+  if (!problem.Residual(u, &res, &why)) return why.empty() ? "the map failed" : why;
+  if (!(res <= bound))
+    return "residual " + Num(res, 3) + " at an accepted point (the map is not smooth there)";
+  OrbitRow row;
+  double test = 0;
+  if (kind == CurveKind::kTorus && problem.Sample(u, &row, &test, &why) &&
+      !orbit_detail::TorusPair(row, std::max(Tolerances::kBranchTorusPair, bound)))
+    return "no complex pair on the unit circle: a neutral saddle (R1 or R2 lies before)";
+  return {};
+}
+
 // A point of an HB curve onto the test's zero by Newton steps in one plane
 // coordinate, the other held: the one on the rectangle's border if u lies on
 // it, else the one with the smaller gradient component. Steps are kept while
@@ -123,13 +141,12 @@ std::string SystemPlane::ValidationError(const System& s) const {
 }
 
 std::string SystemChartOptions::ValidationError(const System& s) const {
-  if (s.clocks() > 0)
-    return "a chart of a system with a clock is the forced chart's (ForcedChart): this chart "
-           "takes autonomous systems";
+  if (s.clocks() > 1) return "a chart takes systems with at most one clock";
   std::string e = plane.ValidationError(s);
   if (e.empty()) e = branch.ValidationError();
   if (e.empty()) e = IntRangeError("seed_lines", seed_lines, 0, kMaxSeedLines);
   if (e.empty()) e = IntRangeError("settle_points", settle_points, 2, kMaxSettlePoints);
+  if (e.empty()) e = IntRangeError("max_m", max_m, 1, kMaxMultiple);
   if (!e.empty()) return e;
   if (!(max_step >= 1.0 / kMaxCurvePoints && max_step <= kMaxStepLimit))
     return "max_step = " + Num(max_step) + " must lie in [1/" + std::to_string(kMaxCurvePoints) +
@@ -149,7 +166,9 @@ SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& o, C
   SystemCurve curve;
   curve.kind = kind, curve.section = section;
   const auto at = SystemAt(system, o.plane, p1, p2);
-  OrbitCurveProblem problem(*at, o.plane.p1, o.plane.p2, start, section, kind, o.branch);
+  OrbitBranchOptions bo = o.branch;
+  bo.palc.cancelled = o.cancelled;  // also inside every run of the flow
+  OrbitCurveProblem problem(*at, o.plane.p1, o.plane.p2, start, section, kind, bo);
   const int i1 = problem.plane_index();
   OrbitRow seed;
   seed.p = p1, seed.start = start;
@@ -164,12 +183,11 @@ SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& o, C
   // update shrank on a kink of the map, not at a root. Such points (one per
   // way) are dropped below, and the end says why.
   std::vector<std::pair<VectorXd, std::string>> bad;
-  t.stop = [&problem, &bad](const VectorXd& u) {
-    double res = 0;
-    std::string why;
-    if (problem.Residual(u, &res, &why) && res <= Tolerances().curve_residual) return false;
-    if (why.empty())
-      why = "residual " + Num(res, 3) + " at an accepted point (the map is not smooth there)";
+  const FlowOptions& flow = o.branch.shooting.flow;
+  const double bound = Tolerances::From(flow.rtol, flow.atol).CurveResidual();
+  t.stop = [&problem, &bad, bound, kind](const VectorXd& u) {
+    std::string why = BadPoint(problem, u, bound, kind);
+    if (why.empty()) return false;
     bad.emplace_back(u, why);
     return true;
   };
@@ -181,11 +199,17 @@ SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& o, C
     else if (!r.u.empty() && r.u.back() == u && curve.ends.last.kind == CurveEndKind::kStopped)
       r.u.pop_back(), curve.ends.last.why = why;
   }
-  for (CurveEnd* e : {&curve.ends.first, &curve.ends.last})  // a cut at a contact's opening
-    if (e->kind == CurveEndKind::kStepTooSmall && problem.OpenedWith(e->why))
-      e->kind = CurveEndKind::kContactLost;
+  // A cut where a contact opens, or where the return's mode changed (the
+  // switching sequence changes: an SL point), is an end of the curve.
+  for (CurveEnd* e : {&curve.ends.first, &curve.ends.last}) {
+    if (e->kind != CurveEndKind::kStepTooSmall && e->kind != CurveEndKind::kStartFailed) continue;
+    const OrbitStatus why = problem.FailureOf(e->why);
+    if (why == OrbitStatus::kContactOpen) e->kind = CurveEndKind::kContactLost;
+    if (why == OrbitStatus::kModeChanged) e->kind = CurveEndKind::kSliding;
+  }
   curve.evaluations = r.evaluations;
   for (const VectorXd& u : r.u) {
+    if (o.cancelled && o.cancelled()) break;
     SystemCurvePoint p;
     std::string why;
     if (!problem.Sample(u, &p.orbit, &p.test, &why)) continue;
@@ -209,6 +233,7 @@ SystemCurve TraceHopfCurve(const System& system, const SystemChartOptions& o, do
   curve.ends = r.ends;
   curve.evaluations = r.evaluations;
   for (VectorXd u : r.u) {
+    if (o.cancelled && o.cancelled()) break;
     Polish(problem, o.plane, &u);
     SystemCurvePoint p;
     SteadyState s;
@@ -217,11 +242,9 @@ SystemCurve TraceHopfCurve(const System& system, const SystemChartOptions& o, do
     p.p1 = u[0], p.p2 = u[1];
     p.orbit.p = u[0];
     p.orbit.start.z = s.z;
-    // The pair nearest the imaginary axis: its frequency (a real pair: none).
-    double omega = 0, best = INFINITY;
-    for (const auto& l : s.eigenvalues)
-      if (l.imag() > 0 && std::abs(l.real()) < best) best = std::abs(l.real()), omega = l.imag();
-    p.orbit.period = omega > 0 ? 2 * M_PI / omega : 0;
+    double test = 0, omega = 0;  // the pair nearest the imaginary axis: its frequency
+    SteadyHopfProblem::Test(s, &test, &omega);
+    p.orbit.period = 2 * M_PI / omega;
     curve.points.push_back(std::move(p));
   }
   curve.seconds = Seconds(t0);

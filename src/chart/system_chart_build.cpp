@@ -80,6 +80,8 @@ SystemChart ChartSystem(const System& system, const SystemChartOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   SystemChart r;
   r.plane = o.plane;
+  SeedRuns runs;
+  std::string cut;  // the first cut curve
   auto cancelled = [&o] { return o.cancelled && o.cancelled(); };
   const SystemPlane& pl = o.plane;
   for (int line = 0; line < o.seed_lines && !cancelled(); ++line) {
@@ -87,7 +89,7 @@ SystemChart ChartSystem(const System& system, const SystemChartOptions& o) {
     for (const bool along1 : {true, false}) {
       const double c =
           along1 ? pl.from2 + f * (pl.to2 - pl.from2) : pl.from1 + f * (pl.to1 - pl.from1);
-      for (const SystemSeed& s : SystemSeedsOnLine(system, o, along1, c, &r.seed_runs)) {
+      for (const SystemSeed& s : SystemSeedsOnLine(system, o, along1, c, &runs)) {
         if (cancelled() || NearSystemCurve(r.curves, s, pl)) continue;
         SystemCurve curve =
             s.kind == CurveKind::kHopf
@@ -101,14 +103,26 @@ SystemChart ChartSystem(const System& system, const SystemChartOptions& o) {
           ++r.seeds_not_traced;
           continue;
         }
-        r.cut_curves += Cut(curve.ends.first) || Cut(curve.ends.last);
+        if (Cut(curve.ends.first) || Cut(curve.ends.last)) {
+          if (r.cut_curves++ == 0)
+            cut = std::string(CurveLabel(curve.kind)) + " curve from " + curve.seed +
+                  " cut short: " + curve.ends.Text();
+        }
         FindCodim2(system, pl, curve, static_cast<int>(r.curves.size()), &r.codim2);
         r.curves.push_back(std::move(curve));
       }
     }
   }
+  r.seed_runs = runs.runs, r.failed_seed_runs = runs.failed;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (cancelled()) r.status = ChartStatus::kCancelled, r.message = "cancelled";
+  if (cancelled()) {
+    r.status = ChartStatus::kCancelled, r.message = "cancelled";
+  } else if (runs.failed > 0 || r.cut_curves > 0) {
+    r.status = ChartStatus::kPartial;
+    r.message = runs.failed > 0
+                    ? std::to_string(runs.failed) + " seed runs failed, the first " + runs.failure
+                    : std::to_string(r.cut_curves) + " curves cut short, the first " + cut;
+  }
   return r;
 }
 

@@ -5,7 +5,10 @@
 
 #include "numerics/numbers.hpp"
 #include "stickslip/equilibria/steady_branch.hpp"
+#include "stickslip/errors.hpp"
+#include "stickslip/flow/flow.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/orbits/system_batch.hpp"
 
 namespace stickslip {
 
@@ -42,7 +45,7 @@ SystemSeed SeedAt(const Line& line, CurveKind kind, double p) {
   return s;
 }
 
-void HopfSeeds(const System& base, const SystemChartOptions& o, const Line& line, int* runs,
+void HopfSeeds(const System& base, const SystemChartOptions& o, const Line& line, SeedRuns* runs,
                std::vector<SystemSeed>* out) {
   const SystemPlane& pl = o.plane;
   const auto s =
@@ -50,7 +53,7 @@ void HopfSeeds(const System& base, const SystemChartOptions& o, const Line& line
   SteadyBranchOptions so;
   so.cancelled = o.cancelled;
   const SteadyBranch b = ContinueSteadySliding(*s, line.param, line.hi, so);
-  ++*runs;
+  ++runs->runs;
   for (const SteadyRow& r : b.special) {
     if (r.label != SpecialKind::kHopf) continue;
     SystemSeed seed = SeedAt(line, CurveKind::kHopf, r.p);
@@ -62,13 +65,18 @@ void HopfSeeds(const System& base, const SystemChartOptions& o, const Line& line
 // The branch of the attractor settled on at (line, from) to `to`: its LP,
 // PD and NS points.
 void BranchSeeds(const System& s, const SystemChartOptions& o, const Line& line,
-                 const SettledOrbit& settled, double to, int* runs, std::vector<SystemSeed>* out) {
+                 const FlowPoint& start, const PoincareSection& section, double to, SeedRuns* runs,
+                 std::vector<SystemSeed>* out) {
   OrbitBranchOptions bo = o.branch;
   bo.palc.ds_max = std::min(bo.palc.ds_max, 0.02 * (line.hi - line.lo));
   bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
+  bo.palc.ds_min = std::min(bo.palc.ds_min, bo.palc.ds_max / 100);  // a narrow rectangle
   bo.palc.cancelled = o.cancelled;
-  const OrbitBranch b = ContinueOrbits(s, line.param, settled.orbit.start, settled.section, to, bo);
-  ++*runs;
+  const OrbitBranch b = ContinueOrbits(s, line.param, start, section, to, bo);
+  ++runs->runs;
+  if (b.status == BranchStatus::kStartFailed && !(o.cancelled && o.cancelled()))
+    runs->Fail(s.ParameterName(line.param) + " run " + line.at + " from an attractor at " +
+               Num(s.ParameterValue(line.param), 6) + ": " + b.message);
   for (const OrbitRow& r : b.special) {
     bool ok = false;
     const CurveKind kind = KindOf(r.label, &ok);
@@ -82,9 +90,45 @@ void BranchSeeds(const System& s, const SystemChartOptions& o, const Line& line,
   }
 }
 
-// At settle_points points of the line (ends included) the attractor a run
-// from steady sliding + disturbance settles on, continued to both ends.
-void OrbitSeeds(const System& base, const SystemChartOptions& o, const Line& line, int* runs,
+// The attractor a run from steady sliding + disturbance settles on at s (an
+// autonomous system), or, for a system with a clock, the orbit of period
+// multiple <= max_m reached from rest (StroboscopicOrbits: transient,
+// recurrence, the one shooting). False where there is none.
+bool Attractor(const System& s, const SystemChartOptions& o, FlowPoint* start,
+               PoincareSection* section) {
+  if (s.clocks() == 0) {
+    SettleOptions so;
+    so.shooting = o.branch.shooting;
+    so.transient = o.transient;
+    so.max_returns = std::max(so.max_returns, 2 * s.contacts());
+    so.cancelled = o.cancelled;
+    const SteadyState rest = SteadySliding(s);
+    Eigen::VectorXd z0 = rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension());
+    z0[0] += o.disturbance;
+    const SettledOrbit settled = SettleOnStickSlip(s, z0, so);
+    *start = settled.orbit.start, *section = settled.section;
+    return settled.found;
+  }
+  SystemBatchOptions bo;
+  bo.shooting = o.branch.shooting;
+  bo.max_m = o.max_m;
+  bo.threads = 1;
+  bo.cancelled = o.cancelled;
+  const int j = 0;  // any parameter: its own value, one row
+  const SystemBatch b = StroboscopicOrbits(s, {{j, {s.ParameterValue(j)}}}, bo);
+  if (b.rows() != 1 || b.status[0] != OrbitStatus::kOk) return false;
+  const int nt = b.tangent;
+  start->z = Eigen::VectorXd::Zero(s.dimension());
+  start->z.head(nt) = Eigen::Map<const Eigen::VectorXd>(b.start.data(), nt);
+  start->t = 0;
+  start->mode = ModeOf(s, start->z);
+  *section = PoincareSection::Stroboscopic(s, start->z, b.m[0]);
+  return true;
+}
+
+// At settle_points points of the line (ends included) the attractor there,
+// continued to both ends of the line.
+void OrbitSeeds(const System& base, const SystemChartOptions& o, const Line& line, SeedRuns* runs,
                 std::vector<SystemSeed>* out) {
   const SystemPlane& pl = o.plane;
   for (int k = 0; k < o.settle_points; ++k) {
@@ -92,18 +136,16 @@ void OrbitSeeds(const System& base, const SystemChartOptions& o, const Line& lin
     const double from = line.lo + (line.hi - line.lo) * k / (o.settle_points - 1);
     const auto s =
         line.along1 ? SystemAt(base, pl, from, line.c) : SystemAt(base, pl, line.c, from);
-    SettleOptions so;
-    so.shooting = o.branch.shooting;
-    so.transient = o.transient;
-    so.max_returns = std::max(so.max_returns, 2 * s->contacts());
-    so.cancelled = o.cancelled;
-    const SteadyState rest = SteadySliding(*s);
-    Eigen::VectorXd z0 = rest.found ? rest.z : Eigen::VectorXd::Zero(s->dimension());
-    z0[0] += o.disturbance;
-    const SettledOrbit settled = SettleOnStickSlip(*s, z0, so);
-    if (!settled.found) continue;
-    for (const double to : {line.lo, line.hi})
-      if (to != from) BranchSeeds(*s, o, line, settled, to, runs, out);
+    FlowPoint start;
+    PoincareSection section;
+    try {  // a run meeting a state the flow refuses (a contact open at a rest point)
+      if (!Attractor(*s, o, &start, &section)) continue;
+      for (const double to : {line.lo, line.hi})
+        if (to != from) BranchSeeds(*s, o, line, start, section, to, runs, out);
+    } catch (const InvalidArgument& e) {
+      runs->Fail(s->ParameterName(line.param) + " = " + Num(from, 6) + " " + line.at + ": " +
+                 e.what());
+    }
   }
 }
 
@@ -118,7 +160,7 @@ std::unique_ptr<System> SystemAt(const System& base, const SystemPlane& plane, d
 }
 
 std::vector<SystemSeed> SystemSeedsOnLine(const System& base, const SystemChartOptions& o,
-                                          bool along1, double c, int* runs) {
+                                          bool along1, double c, SeedRuns* runs) {
   const SystemPlane& pl = o.plane;
   Line line;
   line.along1 = along1, line.c = c;
@@ -126,7 +168,13 @@ std::vector<SystemSeed> SystemSeedsOnLine(const System& base, const SystemChartO
   line.lo = along1 ? pl.from1 : pl.from2, line.hi = along1 ? pl.to1 : pl.to2;
   line.at = "at " + base.ParameterName(along1 ? pl.p2 : pl.p1) + " = " + Num(c, 6);
   std::vector<SystemSeed> seeds;
-  if (o.hopf_curves) HopfSeeds(base, o, line, runs, &seeds);
+  if (o.hopf_curves && base.clocks() == 0) {
+    try {
+      HopfSeeds(base, o, line, runs, &seeds);
+    } catch (const InvalidArgument& e) {
+      runs->Fail("steady sliding " + line.at + ": " + e.what());
+    }
+  }
   if (o.orbit_curves) OrbitSeeds(base, o, line, runs, &seeds);
   return seeds;
 }

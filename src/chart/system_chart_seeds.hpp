@@ -21,10 +21,20 @@ struct SystemSeed {
   std::string where;
 };
 
+/// The one-parameter runs made for seeds, and those that failed: a branch
+/// from an attractor found that could not start, or a run that threw (the
+/// first one's why kept).
+struct SeedRuns {
+  int runs = 0, failed = 0;
+  std::string failure;
+  void Fail(const std::string& why) {
+    if (failed++ == 0) failure = why;
+  }
+};
+
 /// The seeds of the line along p1 at p2 = c (along1) or along p2 at p1 = c.
-/// *runs counts the one-parameter runs made.
 std::vector<SystemSeed> SystemSeedsOnLine(const System& base, const SystemChartOptions& o,
-                                          bool along1, double c, int* runs);
+                                          bool along1, double c, SeedRuns* runs);
 
 /// The system with the plane's two parameters set to (x1, x2).
 std::unique_ptr<System> SystemAt(const System& base, const SystemPlane& plane, double x1,

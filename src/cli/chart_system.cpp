@@ -8,6 +8,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/system_choice.hpp"
+#include "cli/system_restart.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/io/system_chart_report.hpp"
 
@@ -33,7 +34,7 @@ double Required(const Arguments& args, const char* key) {
 }
 
 SystemChartOptions Configure(const Arguments& args, const System& s) {
-  for (const char* k : {"grid", "max_m", "restart", "point"})
+  for (const char* k : {"grid", "max_m", "restart", "point", "max_amplitude"})
     if (args.Given(k)) throw UsageError(args.Source(k) + ": not with --system");
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
@@ -47,6 +48,11 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
                      ", " + args.Source("to2") + ": " + e);
   o.branch = OrbitBranchOptions(FlowOptionsFromArguments(args));
   o.max_step = args.Number("max_step", o.max_step);
+  if (!(o.max_step >= 1.0 / kMaxCurvePoints && o.max_step <= SystemChartOptions::kMaxStepLimit))
+    throw UsageError("invalid value '" + args.Text("max_step") + "' for " +
+                     args.Source("max_step") + ": must be in [1/" +
+                     std::to_string(kMaxCurvePoints) + ", " +
+                     FormatNumber(SystemChartOptions::kMaxStepLimit) + "]");
   const long lines = args.Integer("seed_lines", o.seed_lines);
   if (lines < 0 || lines > SystemChartOptions::kMaxSeedLines)
     throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
@@ -57,12 +63,22 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
   return o;
 }
 
+// "complete", "partial: 2 curves cut short, ..." or "partial (interrupted ...)".
+std::string Status(const SystemChart& c, RunControl& run) {
+  if (c.status == ChartStatus::kOk) return "complete";
+  if (c.status == ChartStatus::kCancelled) return "partial (" + run.Reason() + ")";
+  return "partial: " + c.message;
+}
+
 void PrintSummary(const std::string& prog, const System& s, const SystemChart& c,
                   const std::string& model, const std::string& dir, const std::string& figure) {
   const std::string p1 = s.ParameterName(c.plane.p1), p2 = s.ParameterName(c.plane.p2);
   std::printf("%s: %s; %s x %s\n%d curves, %d points, %d seed runs in %.2f s\n", prog.c_str(),
               model.c_str(), p1.c_str(), p2.c_str(), static_cast<int>(c.curves.size()), c.points(),
               c.seed_runs, c.seconds);
+  if (c.failed_seed_runs + c.seeds_not_traced + c.cut_curves > 0)
+    std::printf("%d seed runs failed, %d seeds gave no curve, %d curves cut short\n",
+                c.failed_seed_runs, c.seeds_not_traced, c.cut_curves);
   for (size_t i = 0; i < c.curves.size(); ++i) {
     const SystemCurve& cv = c.curves[i];
     std::printf("  curve %zu %s: %zu points, %d evaluations, %.2f s, ends %s\n", i + 1,
@@ -96,17 +112,17 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
   o.branch.palc.cancelled = o.cancelled;
   const SystemChart c = ChartSystem(*s, o);
   Metadata meta = ToolMetadata(prog, command);
+  meta.emplace_back("system", model);
+  AddRestartMetadata(*s, SystemChoiceOf(args), UncheckedModelFromArguments(args), flow,
+                     o.branch.max_amplitude, nullptr, meta);
   meta.insert(
       meta.end(),
-      {{"system", model},
-       {"integrator", Name(flow.integrator)},
-       {"rtol", FormatNumber(flow.rtol)},
+      {{"rtol", FormatNumber(flow.rtol)},
        {"atol", FormatNumber(flow.atol)},
        {"range", s->ParameterName(o.plane.p1) + " = [" + FormatNumber(o.plane.from1) + ", " +
                      FormatNumber(o.plane.to1) + "], " + s->ParameterName(o.plane.p2) + " = [" +
                      FormatNumber(o.plane.from2) + ", " + FormatNumber(o.plane.to2) + "]"},
-       {"status", c.status == ChartStatus::kOk ? std::string("complete")
-                                               : "partial (" + run.Reason() + ")"}});
+       {"status", Status(c, run)}});
   auto text = [&meta](TsvTable t) {
     t.PrependMeta(meta);
     return t.str();
@@ -122,10 +138,8 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
   if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return kExitFailed;
   PrintSummary(prog, *s, c, model, app.out().dir(),
                app.plots() && app.gnuplot().ok() ? figure : std::string());
-  return app.ExitCode(c.status == ChartStatus::kOk
-                          ? std::string()
-                          : "partial chart written (" + std::string(Name(c.status)) +
-                                "): " + c.message + " (" + run.Reason() + ")");
+  return app.ExitCode(c.status == ChartStatus::kOk ? std::string()
+                                                   : "partial chart written: " + Status(c, run));
 }
 
 }  // namespace stickslip::cli

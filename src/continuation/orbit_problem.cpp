@@ -80,6 +80,7 @@ bool OrbitProblem::MapAt(double p, const FlowPoint& z, bool jacobian, VectorXd* 
   if (!why->empty()) return false;
   shooting_.set_system(*system_);
   if (shooting_.Map(z, SectionAt(z), jacobian, r, o)) return true;
+  last_failure_ = o->status;
   opened_ = opened_ || o->status == OrbitStatus::kContactOpen;
   *why = o->message;
   return false;
@@ -211,7 +212,7 @@ bool OrbitProblem::Difference(double p, const FlowPoint& z, MatrixXd* jac, std::
   const bool up = MapAt(p + d, z, false, &rp_, &plus_, &why_up);
   const bool down = MapAt(p - d, z, false, &rm_, &minus_, &why_down);
   if (!up && !down) {
-    *why = why_up;
+    *why = why_up, last_failure_ = plus_.status;  // the failure *why tells
     return false;
   }
   if (!up || !down) {  // one-sided: beyond the domain's edge, or no return on one side

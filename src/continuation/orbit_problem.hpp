@@ -63,8 +63,8 @@ class OrbitProblem final : public PalcProblem {
              std::string* why) {
     return MapAt(u[nu_], PointAt(u), jacobian, r, o, why);
   }
-  /// The orbit of the last point evaluated.
-  const PeriodicOrbit& last() const { return last_; }
+  /// The status of the last map that failed (kOk: none yet).
+  OrbitStatus last_failure() const { return last_failure_; }
 
  private:
   FlowPoint PointAt(const Eigen::VectorXd& u) const;
@@ -84,6 +84,7 @@ class OrbitProblem final : public PalcProblem {
   Eigen::VectorXd last_u_, r_, rp_, rm_;
   Eigen::MatrixXd jac_;  // dF/du at last_u_ (Evaluate's)
   bool opened_ = false;
+  OrbitStatus last_failure_ = OrbitStatus::kOk;
   int polishes_ = 0;
 };
 

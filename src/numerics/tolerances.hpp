@@ -184,6 +184,10 @@ struct Tolerances : FixedTolerances {
   /// Chart curves (forced and systems): an accepted point's residual (orbit and test
   /// function, max norm) above this is no root: the way ends there.
   double curve_residual = 1e-8;
+  /// The one chart's bound on an accepted point's residual: curve_residual, or
+  /// 1e3 rtol where the flow's own error is larger (the test is a product of
+  /// multipliers from a run at rtol).
+  double CurveResidual() const { return std::max(curve_residual, 1e3 * rtol); }
   /// Forced chart curves: an accepted point whose corrector moved it more
   /// than this times the step off the predictor (scaled, across the last
   /// tangent) left the branch: the way ends there (on the seed_forced chart

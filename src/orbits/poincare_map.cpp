@@ -71,7 +71,7 @@ bool Shooting::Evaluate(const FlowPoint& z, const PoincareSection& p, PeriodicOr
     return false;
   }
   if (p.kind != SectionKind::kTime && run_.end.mode != z.mode) {
-    o->status = OrbitStatus::kNotConverged;
+    o->status = OrbitStatus::kModeChanged;
     o->message = "the return at t = " + Num(run_.end.t) + " is in mode " +
                  ModeSetName(run_.end.mode, system().contacts()) + ", the start in " +
                  ModeSetName(z.mode, system().contacts());

@@ -77,7 +77,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("FlowStatus", FlowStatus::kSwitchCount);
   Covers("SwitchKind", SwitchKind::kTouch);
   Covers("OrbitKind", OrbitKind::kPureSlip);
-  Covers("OrbitStatus", OrbitStatus::kContactOpen);
+  Covers("OrbitStatus", OrbitStatus::kModeChanged);
   Covers("SectionKind", SectionKind::kSurface);
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
   Covers("FigureFormat", FigureFormat::kSvg);

@@ -1,17 +1,19 @@
-// The chart of any autonomous system (system.hpp) in two of its parameters
+// The chart of any system (system.hpp) in two of its parameters
 // (docs/systems.md, "Charts"): codimension-one curves followed by
 // pseudo-arclength continuation through a rectangle,
-//   HB  of steady sliding (a complex pair of the Jacobian on the imaginary
-//       axis: prod_{i<j} (lambda_i + lambda_j) = 0, Kuznetsov 2004, ch. 10);
+//   HB  of steady sliding (the Jacobian's complex pair nearest the imaginary
+//       axis reaches it: Re lambda = 0; Kuznetsov 2004, ch. 3);
 //   LP, PD, NS  of periodic orbits: the one branch driver's problem with the
 //       second parameter free, bordered by its test function on the
 //       monodromy (orbit_branch.hpp);
 // seeded by the special points of one-parameter runs (ContinueSteadySliding,
-// and ContinueOrbits from the stick-slip attractor settled on at each end) on
-// lines across the rectangle. A curve of orbits ends where the orbit's
-// switching sequence changes (an SL point: a sliding bifurcation meets it) or
-// the normal force of a contact reaches 0 on it. Codimension-two points:
-// those SL ends, and LPPD where the LP and PD tests vanish together.
+// and ContinueOrbits from the attractor at points of the line: the stick-slip
+// orbit settled on, or with a clock the stroboscopic orbit reached from rest)
+// on lines across the rectangle. A system with a clock has no steady sliding:
+// its curves are of orbits only, on the stroboscopic section. A curve of orbits ends where the
+// orbit's switching sequence changes (an SL point: a sliding bifurcation meets it) or the normal
+// force of a contact reaches 0 on it. Codimension-two points: those SL ends, LPPD where the LP and
+// PD tests vanish together, R1 and R2 on NS curves, and CP, a cusp of an LP curve.
 #pragma once
 
 #include <complex>
@@ -42,22 +44,27 @@ struct SystemPlane {
 struct SystemChartOptions {
   /// Upper bound of seed_lines; max_step's bounds (a curve across the
   /// rectangle in at least 2 steps, at most kMaxCurvePoints per way).
-  static constexpr int kMaxSeedLines = 20, kMaxSettlePoints = 50;
+  static constexpr int kMaxSeedLines = 20, kMaxSettlePoints = 50, kMaxMultiple = 8;
   static constexpr double kMaxStepLimit = 0.5;
   SystemPlane plane;
   /// Every run's flow and Newton, and the seed runs' PALC and max_amplitude.
   OrbitBranchOptions branch;
-  /// The settling run at a line's end, from steady sliding moved by
-  /// `disturbance` in the first component (its transient, max_returns).
+  /// An autonomous system's settling run at a line's point, from steady
+  /// sliding moved by `disturbance` in the first component.
   double transient = 3000, disturbance = 0.5;
+  /// A system with a clock: the orbit reached from rest of period multiple
+  /// 1..max_m (StroboscopicOrbits' transient and recurrence).
+  int max_m = 2;
   int seed_lines = 3;  ///< lines per axis across the rectangle, each seeding curves
   /// Points per line (ends included) where a run settles on an attractor,
   /// whose branch is continued to both ends of the line.
   int settle_points = 5;
-  double max_step = 0.01;           ///< largest curve step, fraction of the rectangle
-  bool hopf_curves = true;          ///< HB of steady sliding
-  bool orbit_curves = true;         ///< LP, PD and NS of periodic orbits
-  std::function<bool()> cancelled;  ///< polled between points and inside runs
+  double max_step = 0.01;    ///< largest curve step, fraction of the rectangle
+  bool hopf_curves = true;   ///< HB of steady sliding
+  bool orbit_curves = true;  ///< LP, PD and NS of periodic orbits
+  /// Polled between points, inside every run of a curve's maps and by the
+  /// seed runs.
+  std::function<bool()> cancelled;
   /// Empty if valid for `system`, else one line naming the offending value.
   std::string ValidationError(const System& system) const;
 };
@@ -65,8 +72,7 @@ struct SystemChartOptions {
 struct SystemCurvePoint {
   double p1 = 0, p2 = 0;
   /// LP, PD, NS: the orbit there (its p is p1). HB: orbit.start.z is the rest
-  /// point and orbit.period 2 pi / omega (0 where the pair is real: a
-  /// neutral saddle, no Hopf point).
+  /// point and orbit.period 2 pi / omega of the pair on the imaginary axis.
   OrbitRow orbit;
   double test = 0;  ///< the curve's own test function there (about 0)
   /// The other tests there: LP, PD, NS (prod (mu - 1), prod (mu + 1),
@@ -94,20 +100,26 @@ struct SystemCodim2 {
 
 struct SystemChart {
   SystemPlane plane;  ///< the chart's axes and rectangle
+  /// kOk; kPartial where a curve was cut short or a seed run failed;
+  /// kCancelled.
   ChartStatus status = ChartStatus::kOk;
   std::string message;
   std::vector<SystemCurve> curves;
   std::vector<SystemCodim2> codim2;
   int seed_runs = 0;         ///< one-parameter runs made for seeds
-  int seeds_not_traced = 0;  ///< seeds whose start failed both ways
-  /// Curves with an end inside the rectangle other than SL (ends say why).
+  int failed_seed_runs = 0;  ///< of them, those that failed (message: the first)
+  int seeds_not_traced = 0;  ///< seeds that gave no curve of two points or more
+  /// Curves cut short inside the rectangle: an end at max-points,
+  /// step-too-small, start-failed or branch-jump (message: the first). The
+  /// ends where the map stops being smooth, SL and contact-lost are ends of
+  /// the curve, not cuts.
   int cut_curves = 0;
   double seconds = 0;
   int points() const;
 };
 
 /// The chart of `system` (its values of the two axes are not used). Throws
-/// InvalidArgument on an invalid system or options, or a system with a clock.
+/// InvalidArgument on an invalid system or options.
 SystemChart ChartSystem(const System& system, const SystemChartOptions& options);
 
 /// One curve of periodic orbits from `start`, a point of an orbit of

@@ -18,7 +18,7 @@ namespace stickslip {
 /// test (the curve's test function there). A comment line per curve: its
 /// seed and its ends.
 TsvTable SystemCurvesTable(const System& s, const SystemChart& c);
-/// codim2.tsv: label (SL, LPPD, R1, R2), <p1>, <p2>, curve (its id), on (its
+/// codim2.tsv: label (SL, LPPD, R1, R2, CP), <p1>, <p2>, curve (its id), on (its
 /// kind), description.
 TsvTable SystemCodim2Table(const System& s, const SystemChart& c);
 /// chart.gp: the curves from curves.tsv (HB red, LP black, PD black dashed,

@@ -19,6 +19,7 @@ enum class OrbitStatus {
   kSingular,          // shooting: DP - I is singular (a multiplier at 1)
   kAperiodic,         // a batch row: no section point recurs within max_m periods
   kContactOpen,       // a contact's normal force reached 0 (the flow's contact-open)
+  kModeChanged,       // an event section's return is in another mode than the start
 };
 template <>
 struct EnumNames<OrbitStatus> {
@@ -34,6 +35,7 @@ struct EnumNames<OrbitStatus> {
       {OrbitStatus::kSingular, "singular"},
       {OrbitStatus::kAperiodic, "aperiodic"},
       {OrbitStatus::kContactOpen, "contact-open"},
+      {OrbitStatus::kModeChanged, "mode-changed"},
   };
 };
 
