@@ -42,6 +42,8 @@ class OrbitCurveProblem final : public PalcProblem {
   /// This curve's test function of a row (RowTest's LP, PD or NS).
   double Test(const OrbitRow& r) const;
   int plane_index() const { return nu_; }  ///< u[nu], u[nu + 1] are (p1, p2)
+  /// The status of the last map that failed, in any call.
+  OrbitStatus last_map_failure() const { return orbit_.last_failure(); }
   /// The status of the orbit of the last Evaluate that failed with `why`
   /// (kContactOpen: a normal force at 0 on the orbit; kModeChanged: the
   /// return's mode differs, the switching sequence changed), else kOk.

@@ -1,4 +1,4 @@
-// The chart of any autonomous system (stickslip/chart/system_chart.hpp):
+// The chart of any system (stickslip/chart/system_chart.hpp):
 // seeds from one-parameter runs on lines across the rectangle
 // (system_chart_seeds.hpp), each seed's curve traced both ways by
 // chart_trace.hpp on orbit_curve.hpp's or steady_hopf_curve.hpp's problem.
@@ -46,7 +46,10 @@ CurveEnd SameSequence(OrbitCurveProblem& problem, const PalcPoint& last, const P
   double t = 0;
   std::string why;
   if (!problem.Sample(last.u, &a, &t, &why, &ma)) return {CurveEndKind::kStartFailed, why};
-  if (!problem.Sample(next.u, &b, &t, &why, &mb)) return {CurveEndKind::kStartFailed, why};
+  if (!problem.Sample(next.u, &b, &t, &why, &mb))  // a return in another mode: SL
+    return {problem.last_map_failure() == OrbitStatus::kModeChanged ? CurveEndKind::kSliding
+                                                                    : CurveEndKind::kStartFailed,
+            why};
   if (!orbit_detail::SameStructure(a, b))
     return {CurveEndKind::kSliding,
             "the switching sequence changes: sticks " + std::to_string(a.sticks) + " -> " +
