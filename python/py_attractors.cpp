@@ -140,14 +140,6 @@ PyAttractorBasins AttractorBasinsOf(const py::object& system, int nx, int ny,
   return Result(*s, r, o.slice);
 }
 
-// A matrix of rows, read-only.
-py::array Rows(const std::vector<double>& flat, int cols) {
-  const auto rows = static_cast<py::ssize_t>(cols ? flat.size() / cols : 0);
-  py::array_t<double> a({rows, static_cast<py::ssize_t>(cols)}, flat.data());
-  a.attr("setflags")(py::arg("write") = false);
-  return std::move(a);
-}
-
 py::dict SystemDiagram(const py::object& system, const std::string& parameter, double from,
                        double to, int n, std::optional<int> transient, std::optional<int> keep,
                        bool up, bool down, int chunks, double max_amplitude,
@@ -193,7 +185,7 @@ py::dict SystemDiagram(const py::object& system, const std::string& parameter, d
   per_value["lyapunov"] = ReadOnly(lyap), per_value["lyapunov_err"] = ReadOnly(err);
   d["columns"] = per_value;
   d["value"] = ReadOnly(point_value), d["direction"] = ReadOnlyStrings(point_dir);
-  d["z"] = Rows(z, nt), d["names"] = names;
+  d["z"] = ReadOnlyRows(z, nt), d["names"] = names;
   d["sticks"] = ReadOnly(sticks), d["exits"] = ReadOnly(exits);
   d["failed"] = failed, d["seconds"] = r.seconds, d["steps"] = r.steps;
   return d;

@@ -121,4 +121,11 @@ void ProgressCall::RaiseIfFailed() {
   throw e;
 }
 
+py::array ReadOnlyRows(const std::vector<double>& flat, int cols) {
+  const auto rows = static_cast<py::ssize_t>(cols ? flat.size() / cols : 0);
+  py::array_t<double> a({rows, static_cast<py::ssize_t>(cols)}, flat.data());
+  a.attr("setflags")(py::arg("write") = false);
+  return std::move(a);
+}
+
 }  // namespace stickslip::python

@@ -60,6 +60,8 @@ py::array ReadOnly(const std::vector<T>& v) {
   return std::move(a);
 }
 py::array ReadOnlyBool(const std::vector<bool>& v);
+// Row-major values, `cols` per row, as a read-only 2-D array (rows x cols).
+py::array ReadOnlyRows(const std::vector<double>& flat, int cols);
 // A read-only NumPy array of strings (dtype U).
 py::array ReadOnlyStrings(const std::vector<std::string>& v);
 
@@ -140,7 +142,7 @@ void BindSystems(py::module_& m);       // py_systems.cpp: ChainParams, Coupling
 void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
 void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
 void BindAttractors(py::module_& m);    // py_attractors.cpp: basins(system), attractor_basins
-void BindSystemChart(py::module_& m);   // py_system_chart.cpp: chart(system, ...) (after BindCharts)
+void BindSystemChart(py::module_& m);  // py_system_chart.cpp: chart(system, ...) (after BindCharts)
 
 // The System a Python parameter object stands for (Params, ForcedParams,
 // ChainParams, CouplingParams); InvalidArgument for anything else.

@@ -65,7 +65,8 @@ PySteadyBranch SteadyBranchPy(const py::object& system, const std::string& param
   }
   out.p = ReadOnly(p), out.max_real = ReadOnly(max_real), out.stable = ReadOnlyBool(stable);
   out.label = ReadOnlyStrings(label);
-  py::array_t<double> zz({static_cast<py::ssize_t>(p.size()), static_cast<py::ssize_t>(s->dimension())});
+  py::array_t<double> zz(
+      {static_cast<py::ssize_t>(p.size()), static_cast<py::ssize_t>(s->dimension())});
   std::copy(z.begin(), z.end(), zz.mutable_data());
   zz.attr("setflags")(py::arg("write") = false);
   out.z = std::move(zz);
@@ -98,8 +99,8 @@ PySettled SettlePy(const py::object& system, const Eigen::VectorXd& state, doubl
   if (!r.found) return out;
   out.contact = r.section.contact, out.returns = r.section.returns;
   out.period = r.orbit.period, out.stable = r.orbit.stable, out.sticks = r.orbit.sticks;
-  out.start = ReadOnly(std::vector<double>(r.orbit.start.z.data(),
-                                           r.orbit.start.z.data() + r.orbit.start.z.size()));
+  out.start = ReadOnly(
+      std::vector<double>(r.orbit.start.z.data(), r.orbit.start.z.data() + r.orbit.start.z.size()));
   py::array_t<std::complex<double>> mu(static_cast<py::ssize_t>(r.orbit.multipliers.size()));
   std::copy(r.orbit.multipliers.begin(), r.orbit.multipliers.end(), mu.mutable_data());
   mu.attr("setflags")(py::arg("write") = false);

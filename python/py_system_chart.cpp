@@ -42,13 +42,6 @@ struct PySystemChart {
   double seconds = 0;
 };
 
-py::array Matrix(const std::vector<double>& flat, int cols) {
-  const auto rows = static_cast<py::ssize_t>(cols ? flat.size() / cols : 0);
-  py::array_t<double> a({rows, static_cast<py::ssize_t>(cols)}, flat.data());
-  a.attr("setflags")(py::arg("write") = false);
-  return std::move(a);
-}
-
 PySystemCurve CurveOf(const SystemCurve& c, int nt) {
   PySystemCurve out;
   out.kind = CurveLabel(c.kind), out.seed = c.seed, out.ends = c.ends.Text();
@@ -69,7 +62,7 @@ PySystemCurve CurveOf(const SystemCurve& c, int nt) {
   }
   out.p1 = ReadOnly(p1), out.p2 = ReadOnly(p2), out.period = ReadOnly(period);
   out.sticks = ReadOnly(sticks), out.crossings = ReadOnly(crossings);
-  out.lo = Matrix(lo, nt), out.hi = Matrix(hi, nt);
+  out.lo = ReadOnlyRows(lo, nt), out.hi = ReadOnlyRows(hi, nt);
   out.mult_max = ReadOnly(mult), out.test = ReadOnly(test);
   return out;
 }

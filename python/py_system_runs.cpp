@@ -75,14 +75,6 @@ Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
   return state;
 }
 
-// Rows (one per t, n columns) as a read-only 2-D array.
-py::array Rows(const std::vector<double>& z, int n) {
-  py::array_t<double> a({static_cast<py::ssize_t>(z.size() / n), static_cast<py::ssize_t>(n)});
-  std::copy(z.begin(), z.end(), a.mutable_data());
-  a.attr("setflags")(py::arg("write") = false);
-  return std::move(a);
-}
-
 // The stroboscopic section's spacing: `period`, else one period of the
 // system's clock (a forced system's 2 pi / Omega).
 double SectionPeriod(const System& s, const Eigen::VectorXd& z0, std::optional<double> period) {
@@ -147,8 +139,8 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
     RaiseNumerical(r.message + " (at t = " + Repr(r.end.t) + " in " + ModeSetName(r.end.mode, k) +
                    ")");
   PySystemTrajectory out;
-  out.t = ReadOnly(t), out.z = Rows(z, n), out.mode = ReadOnlyStrings(mode);
-  out.section = section, out.section_t = ReadOnly(st), out.section_z = Rows(sz, n);
+  out.t = ReadOnly(t), out.z = ReadOnlyRows(z, n), out.mode = ReadOnlyStrings(mode);
+  out.section = section, out.section_t = ReadOnly(st), out.section_z = ReadOnlyRows(sz, n);
   for (int i = 0; i < n; ++i) out.names.push_back(s->StateName(i));
   out.status = r.flow, out.message = r.message;
   out.opened = r.opened;

@@ -28,18 +28,6 @@ int TestIndex(CurveKind kind) {
   }
 }
 
-OrbitRow RowOf(const PeriodicOrbit& o, double p) {
-  OrbitRow r;
-  r.p = p;
-  r.start = o.start;
-  r.period = o.period;
-  r.sticks = o.sticks, r.exits = o.exits, r.crossings = o.crossings;
-  r.lo = o.lo, r.hi = o.hi;
-  r.multipliers = o.multipliers;
-  r.stable = o.stable;
-  return r;
-}
-
 }  // namespace
 
 OrbitCurveProblem::OrbitCurveProblem(const System& system, int p1, int p2, const FlowPoint& start,
@@ -76,7 +64,7 @@ bool OrbitCurveProblem::At(const VectorXd& u, VectorXd* r, double* test, std::st
   if (!why->empty()) return false;
   PeriodicOrbit o;
   if (!orbit_.MapOf(u.head(nu_ + 1), true, r, &o, why)) return false;
-  *test = Test(RowOf(o, u[nu_]));
+  *test = Test(orbit_detail::RowOf(o, u[nu_]));
   return true;
 }
 
@@ -95,7 +83,7 @@ bool OrbitCurveProblem::Sample(const VectorXd& u, OrbitRow* row, double* test, s
   PeriodicOrbit o;
   VectorXd r;
   if (!orbit_.MapOf(u.head(nu_ + 1), true, &r, &o, why)) return false;
-  *row = RowOf(o, u[nu_]);
+  *row = orbit_detail::RowOf(o, u[nu_]);
   *test = Test(*row);
   if (modes) *modes = o.modes;
   return true;

@@ -102,10 +102,7 @@ bool Attractor(const System& s, const SystemChartOptions& o, FlowPoint* start,
     so.transient = o.transient;
     so.max_returns = std::max(so.max_returns, 2 * s.contacts());
     so.cancelled = o.cancelled;
-    const SteadyState rest = SteadySliding(s);
-    Eigen::VectorXd z0 = rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension());
-    z0[0] += o.disturbance;
-    const SettledOrbit settled = SettleOnStickSlip(s, z0, so);
+    const SettledOrbit settled = SettleOnStickSlip(s, NearSteadySliding(s, o.disturbance), so);
     *start = settled.orbit.start, *section = settled.section;
     return settled.found;
   }

@@ -10,6 +10,7 @@
 #include "cli/app.hpp"
 #include "cli/system_choice.hpp"
 #include "cli/system_restart.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 #include "stickslip/orbits/settle.hpp"
 

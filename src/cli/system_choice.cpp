@@ -154,13 +154,6 @@ std::vector<std::string> CommaItems(const std::string& text) {
   }
 }
 
-Eigen::VectorXd NearSteadySliding(const System& s, double d) {
-  const SteadyState rest = SteadySliding(s);
-  Eigen::VectorXd z = rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension());
-  z[0] += d;
-  return z;
-}
-
 std::string ParameterList(const System& s) {
   std::string out;
   for (int j = 0; j < s.parameters(); ++j) out += (j ? ", " : "") + s.ParameterName(j);

@@ -49,9 +49,6 @@ std::string DescribeSystem(const System& s, SystemChoice choice, int continued, 
 // The items of a comma-separated list, each trimmed of blanks; every item,
 // an empty one (",," or a trailing ",") included.
 std::vector<std::string> CommaItems(const std::string& text);
-// Steady sliding (or 0 where there is none) with its first component moved by
-// d: where ss_continue's settling run and ss_simulate's default run start.
-Eigen::VectorXd NearSteadySliding(const System& s, double d);
 // The system's parameter names, ", "-separated.
 std::string ParameterList(const System& s);
 

@@ -234,17 +234,19 @@ bool OrbitProblem::Difference(double p, const FlowPoint& z, MatrixXd* jac, std::
   return true;
 }
 
-OrbitRow OrbitProblem::Row() const {
+OrbitRow RowOf(const PeriodicOrbit& o, double p) {
   OrbitRow r;
-  r.p = last_u_[nu_];
-  r.start = last_.start;
-  r.period = last_.period;
-  r.sticks = last_.sticks, r.exits = last_.exits, r.crossings = last_.crossings;
-  r.lo = last_.lo, r.hi = last_.hi;
-  r.multipliers = last_.multipliers;
-  r.stable = last_.stable;
+  r.p = p;
+  r.start = o.start;
+  r.period = o.period;
+  r.sticks = o.sticks, r.exits = o.exits, r.crossings = o.crossings;
+  r.lo = o.lo, r.hi = o.hi;
+  r.multipliers = o.multipliers;
+  r.stable = o.stable;
   return r;
 }
+
+OrbitRow OrbitProblem::Row() const { return RowOf(last_, last_u_[nu_]); }
 
 double RowTest(const OrbitRow& r, int i) {
   std::complex<double> prod = 1;

@@ -108,6 +108,8 @@ OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int paramet
                         const Eigen::VectorXd& u0, int fixed, const Eigen::VectorXd& along,
                         double from, double to, const OrbitBranchOptions& options);
 
+/// An orbit as a row at parameter p (no label).
+OrbitRow RowOf(const PeriodicOrbit& o, double p);
 /// A test function of a row's multipliers: 0 LP prod (mu - 1), 1 PD
 /// prod (mu + 1), 2 NS prod_{i<j} (mu_i mu_j - 1).
 double RowTest(const OrbitRow& r, int i);

@@ -25,4 +25,11 @@ SteadyState SteadySliding(const System& s, const ModeSet& m) {
   return r;
 }
 
+Eigen::VectorXd NearSteadySliding(const System& s, double d) {
+  const SteadyState rest = SteadySliding(s);
+  Eigen::VectorXd z = rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension());
+  z[0] += d;
+  return z;
+}
+
 }  // namespace stickslip

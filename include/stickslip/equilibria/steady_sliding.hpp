@@ -25,4 +25,8 @@ struct SteadyState {
 /// Steady sliding of mode m (default: every contact slips below).
 SteadyState SteadySliding(const System& s, const ModeSet& m = ModeSet());
 
+/// Steady sliding (or 0 where there is none) with its first component moved
+/// by d: where a settling run starts.
+Eigen::VectorXd NearSteadySliding(const System& s, double d);
+
 }  // namespace stickslip
