@@ -15,6 +15,7 @@
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/system_branch_report.hpp"
+#include "stickslip/model/forced.hpp"
 
 namespace stickslip::python {
 
@@ -22,13 +23,15 @@ namespace {
 
 struct PySystemCurve {
   std::string kind, seed, ends;
+  int m = 0;
+  bool gap = false;
   py::array p1, p2, period, sticks, crossings, lo, hi, mult_max, test;
   int evaluations = 0;
   double seconds = 0;
 };
 
 struct PyCodim2 {
-  std::string label, on, description;
+  std::string label, on, description, located;
   int curve = 0;
   double p1 = 0, p2 = 0;
 };
@@ -38,7 +41,7 @@ struct PySystemChart {
   std::vector<std::string> state_names;
   std::vector<PySystemCurve> curves;
   std::vector<PyCodim2> codim2;
-  int seed_runs = 0, failed_seed_runs = 0, seeds_not_traced = 0, cut_curves = 0;
+  int seed_runs = 0, failed_seed_runs = 0, seeds_not_traced = 0, cut_curves = 0, duplicates = 0;
   double seconds = 0;
 };
 
@@ -46,6 +49,7 @@ PySystemCurve CurveOf(const SystemCurve& c, int nt) {
   PySystemCurve out;
   out.kind = CurveLabel(c.kind), out.seed = c.seed, out.ends = c.ends.Text();
   out.evaluations = c.evaluations, out.seconds = c.seconds;
+  out.m = c.kind == CurveKind::kHopf ? 0 : PeriodMultiple(c.section), out.gap = c.gap;
   std::vector<double> p1, p2, period, lo, hi, mult, test;
   std::vector<int> sticks, crossings;
   for (const SystemCurvePoint& p : c.points) {
@@ -80,6 +84,9 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   pl.from1 = from, pl.to1 = to, pl.from2 = from2, pl.to2 = to2;
   o.seed_lines = seed_lines, o.max_step = max_step;
   o.hopf_curves = hopf, o.orbit_curves = orbits;
+  // The forced oscillator's own tolerances (rtol = atol = 1e-12), as ss_chart's.
+  if (py::isinstance<ForcedParams>(system))
+    o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
   FlowOptions& flow = o.branch.shooting.flow;
   if (rtol) flow.rtol = *rtol;
   if (atol) flow.atol = *atol;
@@ -98,12 +105,13 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   out.status = Name(r.status), out.message = r.message;
   out.seed_runs = r.seed_runs, out.seconds = r.seconds;
   out.failed_seed_runs = r.failed_seed_runs, out.seeds_not_traced = r.seeds_not_traced;
-  out.cut_curves = r.cut_curves;
+  out.cut_curves = r.cut_curves, out.duplicates = r.duplicates;
   const int nt = s->tangent_dimension();
   for (int i = 0; i < nt; ++i) out.state_names.push_back(s->StateName(i));
   for (const SystemCurve& c : r.curves) out.curves.push_back(CurveOf(c, nt));
   for (const SystemCodim2& p : r.codim2)
-    out.codim2.push_back({Name(p.label), CurveLabel(p.on), p.description, p.curve, p.p1, p.p2});
+    out.codim2.push_back(
+        {Name(p.label), CurveLabel(p.on), p.description, Name(p.method), p.curve, p.p1, p.p2});
   return out;
 }
 
@@ -111,11 +119,15 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
 
 void BindSystemChart(py::module_& m) {
   py::class_<PySystemCurve>(m, "SystemCurve",
-                            "One curve of chart(system, ...): kind (HB, LP, PD, NS), per point "
-                            "p1, p2, period, sticks, crossings, lo and hi (rows: the state "
-                            "components' extremes; HB: the rest point), mult_max and test; "
-                            "seed and ends say where it started and how each end ended.")
+                            "One curve of chart(system, ...): kind (HB, LP, PD, NS, GR), m (the "
+                            "period in forcing periods or section returns), gap (GR: the gap "
+                            "margin, else an arrival's), per point p1, p2, period, sticks, "
+                            "crossings, lo and hi (rows: the state components' extremes; HB: "
+                            "the rest point), mult_max and test; seed and ends say where it "
+                            "started and how each end ended.")
       .def_readonly("kind", &PySystemCurve::kind)
+      .def_readonly("m", &PySystemCurve::m)
+      .def_readonly("gap", &PySystemCurve::gap)
       .def_readonly("seed", &PySystemCurve::seed)
       .def_readonly("ends", &PySystemCurve::ends)
       .def_readonly("p1", &PySystemCurve::p1)
@@ -131,18 +143,22 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("seconds", &PySystemCurve::seconds);
   py::class_<PyCodim2>(m, "SystemCodim2",
                        "A codimension-two point of chart(system, ...): label (SL, LPPD, R1, R2, "
-                       "CP), on (the curve's kind), curve (its index), p1, p2, description.")
+                       "CP, GG), on (the curve's kind), curve (its index), p1, p2, description, "
+                       "located (end, refined, chord or point).")
       .def_readonly("label", &PyCodim2::label)
       .def_readonly("on", &PyCodim2::on)
       .def_readonly("curve", &PyCodim2::curve)
       .def_readonly("p1", &PyCodim2::p1)
       .def_readonly("p2", &PyCodim2::p2)
-      .def_readonly("description", &PyCodim2::description);
-  py::class_<PySystemChart>(m, "SystemChart",
-                            "Result of chart(system, ...): param, param2, curves (SystemCurve), "
-                            "codim2 (SystemCodim2), status (ok; partial where a curve was cut "
-                            "short or a seed run failed, message says which; cancelled), "
-                            "seed_runs, failed_seed_runs, seeds_not_traced, cut_curves, seconds.")
+      .def_readonly("description", &PyCodim2::description)
+      .def_readonly("located", &PyCodim2::located);
+  py::class_<PySystemChart>(
+      m, "SystemChart",
+      "Result of chart(system, ...): param, param2, curves (SystemCurve), "
+      "codim2 (SystemCodim2), status (ok; partial where a curve was cut "
+      "short or a seed run failed, message says which; cancelled), "
+      "seed_runs, failed_seed_runs, seeds_not_traced, cut_curves, duplicates (curves "
+      "dropped: most of their points on one drawn), seconds.")
       .def_readonly("param", &PySystemChart::param)
       .def_readonly("param2", &PySystemChart::param2)
       .def_readonly("state_names", &PySystemChart::state_names)
@@ -154,6 +170,7 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("failed_seed_runs", &PySystemChart::failed_seed_runs)
       .def_readonly("seeds_not_traced", &PySystemChart::seeds_not_traced)
       .def_readonly("cut_curves", &PySystemChart::cut_curves)
+      .def_readonly("duplicates", &PySystemChart::duplicates)
       .def_readonly("seconds", &PySystemChart::seconds);
   // After the belt's chart(params, ...).
   m.def("chart", &SystemChartOf, py::arg("system"), py::arg("param"), py::arg("from_"),
@@ -163,8 +180,9 @@ void BindSystemChart(py::module_& m) {
         "chart(system, param, from_, to, param2, from2, to2, ...) for ForcedParams, "
         "ChainParams and CouplingParams (as ss_chart --system): HB curves of steady sliding "
         "and LP, PD, NS curves of periodic orbits (a forced system's on its stroboscopic "
-        "section) in two of the system's parameters, seeded by one-parameter runs on "
-        "seed_lines lines per axis; a SystemChart.");
+        "section, with GR curves and rtol = atol = 1e-12 by default) in two of the system's "
+        "parameters, seeded by one-parameter runs on seed_lines lines per axis; a "
+        "SystemChart.");
 }
 
 }  // namespace stickslip::python

@@ -844,6 +844,8 @@ class Attractor:
 
 class SystemCurve:
     kind: str
+    m: int
+    gap: bool
     seed: str
     ends: str
     p1: Array
@@ -865,6 +867,7 @@ class SystemCodim2:
     p1: float
     p2: float
     description: str
+    located: str
 
 class SystemChart:
     param: str
@@ -878,6 +881,7 @@ class SystemChart:
     failed_seed_runs: int
     seeds_not_traced: int
     cut_curves: int
+    duplicates: int
     seconds: float
 
 class AttractorBasins:

@@ -155,6 +155,29 @@ class Forced(unittest.TestCase):
         self.assertEqual(type(stickslip.periodic_orbits(stickslip.Params())),
                          stickslip.PeriodicOrbits)
 
+    def test_chart_of_the_tongue_ends_its_ns_curves_at_r1(self):
+        """chart(ForcedParams, ...) as studies/forced_ns_seed.ini's [chart]: the 1:1 tongue's
+        NS curves end where the pair turns real, each at an R1 refined on the curve next to
+        its last point; the GR curve of the pure-slip orbits follows their gap to x' = v."""
+        p = stickslip.ForcedParams(stickslip.Params("cubic", beta=0.05, v=0.42, mu_s=0.4,
+                                                    mu_m=0.25, v_m=0.5), force=0.05, omega=1.3)
+        c = stickslip.chart(p, "omega", 0.6, 1.6, "force", 0.002, 0.1)
+        self.assertEqual(c.status, "ok", c.message)
+        self.assertEqual(sorted(k.kind for k in c.curves), ["GR", "NS", "NS"])
+        self.assertTrue(all(k.m == 1 for k in c.curves))
+        gr = [k for k in c.curves if k.kind == "GR"][0]
+        self.assertTrue(gr.gap)
+        r1 = [q for q in c.codim2 if q.label == "R1"]
+        self.assertEqual(len(r1), 2)
+        for q in r1:
+            self.assertEqual((q.on, q.located), ("NS", "refined"))
+            ns = c.curves[q.curve]
+            self.assertIn("stopped: no complex pair", ns.ends)
+            # next to the curve's end there, within a step (1e-2 of the rectangle)
+            end = 0 if ns.ends.startswith("stopped") else -1
+            self.assertLess(math.hypot(q.p1 - ns.p1[end], (q.p2 - ns.p2[end]) / 0.098), 1e-2)
+            self.assertLess(abs(ns.mult_max[end] - 1), 1e-7)
+
     def test_arrays_are_read_only_and_bad_input_raises(self):
         tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)
         for a in (tr.t, tr.x, tr.section_x, tr.mode):

@@ -7,10 +7,9 @@
 #include <chrono>
 #include <cmath>
 
-#include "chart/chart_trace.hpp"
-#include "chart/orbit_curve.hpp"
 #include "chart/steady_hopf_curve.hpp"
 #include "chart/system_chart_seeds.hpp"
+#include "chart/system_chart_trace.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
@@ -23,60 +22,6 @@ namespace {
 
 double Seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// The tracer's rectangle (only its ranges are read).
-TraceOptions TraceFor(const SystemChartOptions& o, int i1) {
-  TraceOptions t;
-  t.plane.from1 = o.plane.from1, t.plane.to1 = o.plane.to1;
-  t.plane.from2 = o.plane.from2, t.plane.to2 = o.plane.to2;
-  t.i1 = i1;
-  t.max_step = o.max_step;
-  const FlowOptions& flow = o.branch.shooting.flow;
-  t.tol = Tolerances::From(flow.rtol, flow.atol).ForcedCurveCorrector();
-  t.cancelled = o.cancelled;
-  return t;
-}
-
-// A way ends where the orbit's switching sequence changes (an SL point): its
-// counts of sticks and crossings, or the order of its modes.
-CurveEnd SameSequence(OrbitCurveProblem& problem, const PalcPoint& last, const PalcPoint& next) {
-  OrbitRow a, b;
-  std::vector<ModeSet> ma, mb;
-  double t = 0;
-  std::string why;
-  if (!problem.Sample(last.u, &a, &t, &why, &ma)) return {CurveEndKind::kStartFailed, why};
-  if (!problem.Sample(next.u, &b, &t, &why, &mb))  // a return in another mode: SL
-    return {problem.last_map_failure() == OrbitStatus::kModeChanged ? CurveEndKind::kSliding
-                                                                    : CurveEndKind::kStartFailed,
-            why};
-  if (!orbit_detail::SameStructure(a, b))
-    return {CurveEndKind::kSliding,
-            "the switching sequence changes: sticks " + std::to_string(a.sticks) + " -> " +
-                std::to_string(b.sticks) + ", crossings " + std::to_string(a.crossings) + " -> " +
-                std::to_string(b.crossings)};
-  if (ma != mb)
-    return {CurveEndKind::kSliding,
-            "the order of the orbit's " + std::to_string(ma.size()) + " modes changes"};
-  return {};
-}
-
-// Why an accepted point u of a curve of orbits is no point of it, or "": its
-// residual max(|P(u) - u|, |test|) exceeds `bound` (an update that shrank on
-// a kink of the map, not at a root), or on an NS curve no complex pair lies
-// on the unit circle (past R1 or R2 the test's zero is a neutral saddle).
-std::string BadPoint(OrbitCurveProblem& problem, const VectorXd& u, double bound, CurveKind kind) {
-  double res = 0;
-  std::string why;
-  if (!problem.Residual(u, &res, &why)) return why.empty() ? "the map failed" : why;
-  if (!(res <= bound))
-    return "residual " + Num(res, 3) + " at an accepted point (the map is not smooth there)";
-  OrbitRow row;
-  double test = 0;
-  if (kind == CurveKind::kTorus && problem.Sample(u, &row, &test, &why) &&
-      !orbit_detail::TorusPair(row, std::max(Tolerances::kBranchTorusPair, bound)))
-    return "no complex pair on the unit circle: a neutral saddle (R1 or R2 lies before)";
-  return {};
 }
 
 // A point of an HB curve onto the test's zero by Newton steps in one plane
@@ -109,6 +54,18 @@ void Polish(SteadyHopfProblem& problem, const SystemPlane& pl, VectorXd* u) {
 }
 
 }  // namespace
+
+TraceOptions TraceFor(const SystemChartOptions& o, int i1) {
+  TraceOptions t;
+  t.plane.from1 = o.plane.from1, t.plane.to1 = o.plane.to1;
+  t.plane.from2 = o.plane.from2, t.plane.to2 = o.plane.to2;
+  t.i1 = i1;
+  t.max_step = o.max_step;
+  const FlowOptions& flow = o.branch.shooting.flow;
+  t.tol = Tolerances::From(flow.rtol, flow.atol).ForcedCurveCorrector();
+  t.cancelled = o.cancelled;
+  return t;
+}
 
 int SystemChart::points() const {
   int n = 0;
@@ -158,70 +115,6 @@ std::string SystemChartOptions::ValidationError(const System& s) const {
     return "transient = " + Num(transient) + " must be finite and > 0";
   if (!std::isfinite(disturbance)) return "disturbance must be finite";
   return {};
-}
-
-SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& o, CurveKind kind,
-                            const FlowPoint& start, double p1, double p2,
-                            const PoincareSection& section, int fixed) {
-  if (const std::string e = o.ValidationError(system); !e.empty()) throw InvalidArgument(e);
-  if (fixed != 0 && fixed != 1) throw InvalidArgument("fixed must be 0 (p1) or 1 (p2)");
-  const auto t0 = std::chrono::steady_clock::now();
-  SystemCurve curve;
-  curve.kind = kind, curve.section = section;
-  const auto at = SystemAt(system, o.plane, p1, p2);
-  OrbitBranchOptions bo = o.branch;
-  bo.palc.cancelled = o.cancelled;  // also inside every run of the flow
-  OrbitCurveProblem problem(*at, o.plane.p1, o.plane.p2, start, section, kind, bo);
-  const int i1 = problem.plane_index();
-  OrbitRow seed;
-  seed.p = p1, seed.start = start;
-  const VectorXd u0 = problem.Unknowns(seed, p2);
-  TraceOptions t = TraceFor(o, i1);
-  t.other_scale = std::max(1.0, u0.head(i1).cwiseAbs().maxCoeff());
-  t.refine_ends = true;
-  t.same_branch = [&problem](const PalcPoint& a, const PalcPoint& b, const VectorXd&) {
-    return SameSequence(problem, a, b);
-  };
-  // An accepted point whose residual is not small ends the way there: the
-  // update shrank on a kink of the map, not at a root. Such points (one per
-  // way) are dropped below, and the end says why.
-  std::vector<std::pair<VectorXd, std::string>> bad;
-  const FlowOptions& flow = o.branch.shooting.flow;
-  const double bound = Tolerances::From(flow.rtol, flow.atol).CurveResidual();
-  t.stop = [&problem, &bad, bound, kind](const VectorXd& u) {
-    std::string why = BadPoint(problem, u, bound, kind);
-    if (why.empty()) return false;
-    bad.emplace_back(u, why);
-    return true;
-  };
-  TraceResult r = TraceBothWays(problem, t, u0, i1 + fixed);
-  curve.ends = r.ends;
-  for (const auto& [u, why] : bad) {
-    if (!r.u.empty() && r.u.front() == u && curve.ends.first.kind == CurveEndKind::kStopped)
-      r.u.erase(r.u.begin()), curve.ends.first.why = why;
-    else if (!r.u.empty() && r.u.back() == u && curve.ends.last.kind == CurveEndKind::kStopped)
-      r.u.pop_back(), curve.ends.last.why = why;
-  }
-  // A cut where a contact opens, or where the return's mode changed (the
-  // switching sequence changes: an SL point), is an end of the curve.
-  for (CurveEnd* e : {&curve.ends.first, &curve.ends.last}) {
-    if (e->kind != CurveEndKind::kStepTooSmall && e->kind != CurveEndKind::kStartFailed) continue;
-    const OrbitStatus why = problem.FailureOf(e->why);
-    if (why == OrbitStatus::kContactOpen) e->kind = CurveEndKind::kContactLost;
-    if (why == OrbitStatus::kModeChanged) e->kind = CurveEndKind::kSliding;
-  }
-  curve.evaluations = r.evaluations;
-  for (const VectorXd& u : r.u) {
-    if (o.cancelled && o.cancelled()) break;
-    SystemCurvePoint p;
-    std::string why;
-    if (!problem.Sample(u, &p.orbit, &p.test, &why)) continue;
-    p.p1 = u[i1], p.p2 = u[i1 + 1];
-    for (int k = 0; k < 3; ++k) p.tests[k] = orbit_detail::RowTest(p.orbit, k);
-    curve.points.push_back(std::move(p));
-  }
-  curve.seconds = Seconds(t0);
-  return curve;
 }
 
 SystemCurve TraceHopfCurve(const System& system, const SystemChartOptions& o, double p1, double p2,

@@ -2,6 +2,7 @@
 // seed's curve unless one of its kind passes there, and the codimension-two
 // points along the curves.
 #include <chrono>
+#include <cmath>
 
 #include "chart/chart_trace.hpp"
 #include "chart/system_chart_seeds.hpp"
@@ -14,62 +15,84 @@ namespace stickslip {
 
 namespace {
 
+// Curves are told apart by kind and, with a clock, by their forcing periods
+// m (section turns; 0 without a clock). Without a clock an orbit's returns to
+// its section depend on the section (which contact's exit cuts it), so only
+// the curves' places tell a doubled orbit's curve from its parent's.
+
+// Whether seed s lies on a curve of its kind and turns already traced.
 bool NearSystemCurve(const std::vector<SystemCurve>& curves, const SystemSeed& s,
                      const SystemPlane& pl) {
   const Eigen::Vector2d scale(pl.to1 - pl.from1, pl.to2 - pl.from2);
   for (const SystemCurve& c : curves)
-    if (c.kind == s.kind &&
+    if (c.kind == s.kind && c.section.turns == s.section.turns &&
         NearPolyline(c.points, Eigen::Vector2d(s.p1, s.p2), scale, Tolerances().forced_same_curve))
       return true;
   return false;
 }
 
-bool Cut(const CurveEnd& e) {
-  return e.kind == CurveEndKind::kMaxPoints || e.kind == CurveEndKind::kStepTooSmall ||
-         e.kind == CurveEndKind::kStartFailed || e.kind == CurveEndKind::kNoStart ||
-         e.kind == CurveEndKind::kBranchJump;
+// Whether most of curve c's points lie on a curve of its kind and turns
+// already traced (a seed off its curve that corrected onto one drawn).
+bool Duplicate(const std::vector<SystemCurve>& curves, const SystemCurve& c,
+               const SystemPlane& pl) {
+  const Eigen::Vector2d scale(pl.to1 - pl.from1, pl.to2 - pl.from2);
+  for (const SystemCurve& d : curves) {
+    if (d.kind != c.kind || d.section.turns != c.section.turns) continue;
+    std::size_t on = 0;
+    for (const SystemCurvePoint& p : c.points)
+      on += NearPolyline(d.points, Eigen::Vector2d(p.p1, p.p2), scale,
+                         Tolerances().forced_same_curve);
+    if (2 * on > c.points.size()) return true;
+  }
+  return false;
 }
 
-// SL at an end where the switching sequence changes; LPPD, R1 and R2 where
-// another test changes sign between two points (placed on the chord).
-void FindCodim2(const System& s, const SystemPlane& pl, const SystemCurve& c, int index,
-                std::vector<SystemCodim2>* out) {
-  if (c.kind == CurveKind::kHopf || c.points.empty()) return;
-  auto add = [&](Codim2Label label, double p1, double p2, const std::string& what) {
-    out->push_back({label, c.kind, index, p1, p2, what});
+// A way cut short by the continuation. (A branch jump is an end: the next
+// point, also at half the step, lies off the curve, at a corner of it or on
+// another curve.)
+bool Cut(const CurveEnd& e) {
+  return e.kind == CurveEndKind::kMaxPoints || e.kind == CurveEndKind::kStepTooSmall ||
+         e.kind == CurveEndKind::kStartFailed || e.kind == CurveEndKind::kNoStart;
+}
+
+// GG: two GR gap curves of one period (clock turns) whose inner ends meet.
+// Each end of a gap curve traced by Newton stops there (a corner of the gap:
+// the larger of two touches), so the two ends straddle it. Both ends, where
+// the tracer stopped or was cut, become corners (CurveEndKind::kCorner).
+void FindDoubleGrazing(std::vector<SystemCurve>& curves, const SystemPlane& pl,
+                       std::vector<SystemCodim2>* out) {
+  const double tol = Tolerances().forced_double_grazing;
+  auto inner = [](const SystemCurve& c, bool first) {
+    const CurveEndKind k = (first ? c.ends.first : c.ends.last).kind;
+    return !c.points.empty() &&
+           (k == CurveEndKind::kStopped || k == CurveEndKind::kBranchJump || Cut({k, ""}));
   };
-  const CurveEnd* ends[2] = {&c.ends.first, &c.ends.last};
-  for (int k = 0; k < 2; ++k)
-    if (ends[k]->kind == CurveEndKind::kSliding) {
-      const SystemCurvePoint& p = k == 0 ? c.points.front() : c.points.back();
-      add(Codim2Label::kSliding, p.p1, p.p2,
-          std::string(CurveLabel(c.kind)) + " curve ends: " + ends[k]->why);
-    }
-  // CP: an LP curve's direction in the (scaled) plane reverses at a point.
-  const double w1 = pl.to1 - pl.from1, w2 = pl.to2 - pl.from2;
-  for (std::size_t i = 1; c.kind == CurveKind::kFold && i + 1 < c.points.size(); ++i) {
-    const SystemCurvePoint &a = c.points[i - 1], &b = c.points[i], &d = c.points[i + 1];
-    const double dot =
-        (b.p1 - a.p1) * (d.p1 - b.p1) / (w1 * w1) + (b.p2 - a.p2) * (d.p2 - b.p2) / (w2 * w2);
-    if (dot < 0)
-      add(Codim2Label::kCusp, b.p1, b.p2,
-          "cusp: two folds merge (the LP curve turns back at this point of it)");
-  }
-  // (other test, label): on LP the PD test (LPPD); on PD the LP test (LPPD);
-  // on NS the LP test (R1) and the PD test (R2).
-  std::vector<std::pair<int, Codim2Label>> watch;
-  if (c.kind == CurveKind::kFold) watch = {{1, Codim2Label::kFoldFlip}};
-  if (c.kind == CurveKind::kPeriodDoubling) watch = {{0, Codim2Label::kFoldFlip}};
-  if (c.kind == CurveKind::kTorus) watch = {{0, Codim2Label::kR1}, {1, Codim2Label::kR2}};
-  for (const auto& [k, label] : watch)
-    for (std::size_t i = 1; i < c.points.size(); ++i) {
-      const SystemCurvePoint &a = c.points[i - 1], &b = c.points[i];
-      if ((a.tests[k] > 0) == (b.tests[k] > 0)) continue;
-      const double f = a.tests[k] / (a.tests[k] - b.tests[k]);
-      add(label, a.p1 + f * (b.p1 - a.p1), a.p2 + f * (b.p2 - a.p2),
-          std::string(k == 0 ? "LP" : "PD") + " test changes sign on the " + CurveLabel(c.kind) +
-              " curve between " + s.ParameterName(pl.p1) + " = " + Num(a.p1, 8) + " and " +
-              Num(b.p1, 8) + " (chord)");
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    for (std::size_t j = i + 1; j < curves.size(); ++j) {
+      SystemCurve &a = curves[i], &b = curves[j];
+      if (a.kind != CurveKind::kGrazing || b.kind != CurveKind::kGrazing || !a.gap || !b.gap ||
+          a.section.turns != b.section.turns)
+        continue;
+      bool met = false;  // one GG per pair of curves
+      for (const bool fa : {true, false})
+        for (const bool fb : {true, false}) {
+          if (met || !inner(a, fa) || !inner(b, fb)) continue;
+          const SystemCurvePoint &p = fa ? a.points.front() : a.points.back(),
+                                 &q = fb ? b.points.front() : b.points.back();
+          if (std::hypot((p.p1 - q.p1) / (pl.to1 - pl.from1), (p.p2 - q.p2) / (pl.to2 - pl.from2)) >
+              tol)
+            continue;
+          SystemCodim2 x =
+              SystemCodim2::At(Codim2Label::kDoubleGrazing, CurveKind::kGrazing, (p.p1 + q.p1) / 2,
+                               (p.p2 + q.p2) / 2, Codim2Method::kCurveEnd);
+          x.curve = static_cast<int>(i);
+          x.description = "GR curves " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                          " meet: two touches of a surface at once (double grazing)";
+          out->push_back(x);
+          for (CurveEnd* e : {fa ? &a.ends.first : &a.ends.last, fb ? &b.ends.first : &b.ends.last})
+            e->kind = CurveEndKind::kCorner;
+          met = true;
+        }
     }
 }
 
@@ -103,16 +126,23 @@ SystemChart ChartSystem(const System& system, const SystemChartOptions& o) {
           ++r.seeds_not_traced;
           continue;
         }
-        if (Cut(curve.ends.first) || Cut(curve.ends.last)) {
-          if (r.cut_curves++ == 0)
-            cut = std::string(CurveLabel(curve.kind)) + " curve from " + curve.seed +
-                  " cut short: " + curve.ends.Text();
+        if (Duplicate(r.curves, curve, pl)) {
+          ++r.duplicates;
+          continue;
         }
-        FindCodim2(system, pl, curve, static_cast<int>(r.curves.size()), &r.codim2);
+        for (SystemCodim2& x : curve.codim2) {
+          x.curve = static_cast<int>(r.curves.size());
+          r.codim2.push_back(x);
+        }
         r.curves.push_back(std::move(curve));
       }
     }
   }
+  FindDoubleGrazing(r.curves, pl, &r.codim2);
+  for (const SystemCurve& curve : r.curves)
+    if ((Cut(curve.ends.first) || Cut(curve.ends.last)) && r.cut_curves++ == 0)
+      cut = std::string(CurveLabel(curve.kind)) + " curve from " + curve.seed +
+            " cut short: " + curve.ends.Text();
   r.seed_runs = runs.runs, r.failed_seed_runs = runs.failed;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (cancelled()) {

@@ -31,6 +31,11 @@ CurveKind KindOf(SpecialKind l, bool* ok) {
       return CurveKind::kPeriodDoubling;
     case SpecialKind::kTorus:
       return CurveKind::kTorus;
+    case SpecialKind::kGrazing:  // a change of the switching sequence: GR's margin
+    case SpecialKind::kAdding:
+    case SpecialKind::kCrossing:
+    case SpecialKind::kSliding:
+      return CurveKind::kGrazing;
     default:
       *ok = false;
       return CurveKind::kFold;
@@ -62,32 +67,67 @@ void HopfSeeds(const System& base, const SystemChartOptions& o, const Line& line
   }
 }
 
-// The branch of the attractor settled on at (line, from) to `to`: its LP,
-// PD and NS points.
-void BranchSeeds(const System& s, const SystemChartOptions& o, const Line& line,
-                 const FlowPoint& start, const PoincareSection& section, double to, SeedRuns* runs,
-                 std::vector<SystemSeed>* out) {
+// The seed runs' continuation settings: steps of at most 2 % of the line.
+OrbitBranchOptions SeedBranchOptions(const SystemChartOptions& o, const Line& line) {
   OrbitBranchOptions bo = o.branch;
   bo.palc.ds_max = std::min(bo.palc.ds_max, 0.02 * (line.hi - line.lo));
   bo.palc.ds = std::min(bo.palc.ds, bo.palc.ds_max);
   bo.palc.ds_min = std::min(bo.palc.ds_min, bo.palc.ds_max / 100);  // a narrow rectangle
   bo.palc.cancelled = o.cancelled;
-  const OrbitBranch b = ContinueOrbits(s, line.param, start, section, to, bo);
+  return bo;
+}
+
+// Whether a PD of a branch on `section`, `depth` doublings from the
+// attractor's, starts the doubled branch: with a clock while its period
+// multiple 2m <= max_m, else while 2^(depth + 1) <= max_m.
+bool Doubles(const System& s, const SystemChartOptions& o, const PoincareSection& section,
+             int depth) {
+  if (s.clocks() > 0 && section.turns > 0) return 2 * section.turns <= o.max_m;
+  return (2 << depth) <= o.max_m;
+}
+
+// The LP, PD and NS points of branch b as seeds (`run` names it); each PD
+// inside the line starts the doubled branch (ContinueDoubled) where Doubles
+// says so, whose points are seeds too.
+void Harvest(const System& s, const SystemChartOptions& o, const Line& line, const OrbitBranch& b,
+             const std::string& run, int depth, SeedRuns* runs, std::vector<SystemSeed>* out) {
+  for (const OrbitRow& r : b.special) {
+    bool ok = false;
+    const CurveKind kind = KindOf(r.label, &ok);
+    // GR curves: on a stroboscopic section only (a stick-exit section has
+    // no smooth map across a stick phase that vanishes).
+    if (!ok || (kind == CurveKind::kGrazing && b.section.kind != SectionKind::kTime)) continue;
+    SystemSeed seed = SeedAt(line, kind, r.p);
+    seed.start = r.start;
+    seed.section = b.section;
+    seed.where = std::string(Name(r.label)) + " of the " + run + line.at;
+    out->push_back(seed);
+    if (kind != CurveKind::kPeriodDoubling || !(r.p > line.lo && r.p < line.hi) ||
+        !Doubles(s, o, b.section, depth) || (o.cancelled && o.cancelled()))
+      continue;
+    const std::unique_ptr<System> at = s.Clone();
+    at->SetParameterValue(line.param, r.p);
+    const OrbitBranch doubled = ContinueDoubled(*at, line.param, r.start, b.section, line.lo,
+                                                line.hi, SeedBranchOptions(o, line));
+    ++runs->runs;
+    Harvest(s, o, line, doubled,
+            s.ParameterName(line.param) + " run doubled at " + Num(r.p, 6) + " ", depth + 1, runs,
+            out);
+  }
+}
+
+// The branch of the attractor settled on at (line, from) to `to`: its LP,
+// PD and NS points, and the doubled branches' (Harvest).
+void BranchSeeds(const System& s, const SystemChartOptions& o, const Line& line,
+                 const FlowPoint& start, const PoincareSection& section, double to, SeedRuns* runs,
+                 std::vector<SystemSeed>* out) {
+  const OrbitBranch b =
+      ContinueOrbits(s, line.param, start, section, to, SeedBranchOptions(o, line));
   ++runs->runs;
   if (b.status == BranchStatus::kStartFailed && !(o.cancelled && o.cancelled()))
     runs->Fail(s.ParameterName(line.param) + " run " + line.at + " from an attractor at " +
                Num(s.ParameterValue(line.param), 6) + ": " + b.message);
-  for (const OrbitRow& r : b.special) {
-    bool ok = false;
-    const CurveKind kind = KindOf(r.label, &ok);
-    if (!ok) continue;
-    SystemSeed seed = SeedAt(line, kind, r.p);
-    seed.start = r.start;
-    seed.section = b.section;
-    seed.where =
-        std::string(Name(r.label)) + " of the " + s.ParameterName(line.param) + " run " + line.at;
-    out->push_back(seed);
-  }
+  Harvest(s, o, line, b, s.ParameterName(line.param) + " run ", 0, runs, out);
 }
 
 // The attractor a run from steady sliding + disturbance settles on at s (an

@@ -76,9 +76,10 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
   std::printf("%s: %s; %s x %s\n%d curves, %d points, %d seed runs in %.2f s\n", prog.c_str(),
               model.c_str(), p1.c_str(), p2.c_str(), static_cast<int>(c.curves.size()), c.points(),
               c.seed_runs, c.seconds);
-  if (c.failed_seed_runs + c.seeds_not_traced + c.cut_curves > 0)
-    std::printf("%d seed runs failed, %d seeds gave no curve, %d curves cut short\n",
-                c.failed_seed_runs, c.seeds_not_traced, c.cut_curves);
+  if (c.failed_seed_runs + c.seeds_not_traced + c.cut_curves + c.duplicates > 0)
+    std::printf(
+        "%d seed runs failed, %d seeds gave no curve, %d curves cut short, %d duplicates dropped\n",
+        c.failed_seed_runs, c.seeds_not_traced, c.cut_curves, c.duplicates);
   for (size_t i = 0; i < c.curves.size(); ++i) {
     const SystemCurve& cv = c.curves[i];
     std::printf("  curve %zu %s: %zu points, %d evaluations, %.2f s, ends %s\n", i + 1,

@@ -111,8 +111,7 @@ bool Monitor::Repeats(const OrbitRow& sp, std::size_t earlier) {
   return false;
 }
 
-// The branch's ends at a row: unbounded (a displacement beyond
-// max_amplitude: a component no other one is the rate of), or back past its start.
+// The ends at a row: unbounded (a displacement beyond max_amplitude) or back past the start.
 bool Monitor::Ends(const OrbitRow& row) {
   const std::vector<bool> displacement = orbit_detail::Displacements(system_);
   double size = 0;
@@ -325,7 +324,8 @@ OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint&
   const double from = system.ParameterValue(parameter);
   OrbitProblem problem(system, parameter, guess, section, options);
   if (options.palc.cancelled) problem.shooting().flow().set_cancel(options.palc.cancelled);
-  const PeriodicOrbit first = problem.shooting().Find(guess, section);
+  const PeriodicOrbit first =  // a stroboscopic section's time at this clock's frequency
+      problem.shooting().Find(guess, orbit_detail::SectionFor(system, section, guess.z));
   const auto cancelled = [&] { return options.palc.cancelled && options.palc.cancelled(); };
   if (!first.ok()) {
     OrbitBranch out;  // a cancel inside Newton's runs shows as another failure: cancelled

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
@@ -104,16 +105,32 @@ bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
   return why->empty();
 }
 
-const System* OrbitProblem::Switches(const OrbitRow& r, std::vector<FlowSwitch>* out) {
+const System* OrbitProblem::Switches(const OrbitRow& r, std::vector<FlowSwitch>* out,
+                                     const FlowObserver& steps, bool* reached) {
+  if (reached) *reached = false;
   system_->SetParameterValue(j_, r.p);
   if (!system_->ValidationError().empty()) return nullptr;
   shooting_.set_system(*system_);
   FlowRequest rq;
   rq.t_max = r.start.t + r.period;
   rq.switches = out;
+  rq.step_observer = steps;
+  rq.switching = shooting_.options().switching;
   out->clear();
-  shooting_.flow().Run(StartOf(r), rq);  // a failed run keeps the switches before it
+  const FlowRun run = shooting_.flow().Run(StartOf(r), rq);  // a failed run keeps the switches
+  if (reached) *reached = run.status == FlowStatus::kTimeLimit;
   return system_.get();
+}
+
+double OrbitProblem::SlipGap(const VectorXd& u) const {
+  const double old = system_->ParameterValue(j_);
+  system_->SetParameterValue(j_, u[nu_]);
+  const FlowPoint z = PointAt(u);
+  double gap = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < system_->contacts(); ++i)
+    gap = std::min(gap, std::abs(system_->Contact(i).At(z.z.data())));
+  system_->SetParameterValue(j_, old);
+  return gap;
 }
 
 // A row's section point as a start of the flow: on a time section its mode

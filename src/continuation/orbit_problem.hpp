@@ -51,9 +51,20 @@ class OrbitProblem final : public PalcProblem {
   bool Counts(OrbitRow* r);
   /// One period of row r's orbit with its switches recorded in *out (those
   /// before a failure, where the run fails: at a sliding point the orbit
-  /// itself is degenerate); the system at r.p (null where it is invalid).
-  const System* Switches(const OrbitRow& r, std::vector<FlowSwitch>* out);
+  /// itself is degenerate), and its step ends passed to `steps` if given;
+  /// *reached (if given): whether the run reached the period's end. The
+  /// system at r.p (null where it is invalid).
+  const System* Switches(const OrbitRow& r, std::vector<FlowSwitch>* out,
+                         const FlowObserver& steps = nullptr, bool* reached = nullptr);
+  /// The smallest |h_i| of the contacts at u's section point, with the
+  /// system at u's p (0 where a contact sticks there).
+  double SlipGap(const Eigen::VectorXd& u) const;
   Shooting& shooting() { return shooting_; }
+  /// The system with parameter p set (and the held ones).
+  const System& SystemAt(double p) {
+    system_->SetParameterValue(j_, p);
+    return *system_;
+  }
   /// Sets another parameter of the system (a chart's second axis), held by
   /// every later map until set again.
   void set_held(int parameter, double value) { system_->SetParameterValue(parameter, value); }

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "flow/engine.hpp"
+#include "numerics/numbers.hpp"
 #include "stickslip/names.hpp"
 
 namespace stickslip {

@@ -16,22 +16,30 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c) {
                                    s.ParameterName(pl.p2),
                                    "curve",
                                    "id",
+                                   "m",
                                    "period",
                                    "sticks",
                                    "crossings"};
+  for (int i = 0; i < s.dimension(); ++i) cols.push_back(StateColumn(s, i) + "_0");
   for (int i = 0; i < nt; ++i) cols.push_back(StateColumn(s, i) + "_min");
   for (int i = 0; i < nt; ++i) cols.push_back(StateColumn(s, i) + "_max");
   cols.insert(cols.end(), {"mult_max", "test"});
   TsvTable t(cols);
   for (std::size_t k = 0; k < c.curves.size(); ++k) {
     const SystemCurve& cv = c.curves[k];
-    t.AddComment("curve " + std::to_string(k + 1) + " " + CurveLabel(cv.kind) + ": from " +
+    const std::string margin = cv.kind != CurveKind::kGrazing ? ""
+                               : cv.gap                       ? " (the gap to the surface)"
+                                        : " (an arrival's margin to the static limit)";
+    t.AddComment("curve " + std::to_string(k + 1) + " " + CurveLabel(cv.kind) + margin + ": from " +
                  cv.seed + "; ends " + cv.ends.Text());
+    const int m = cv.kind == CurveKind::kHopf ? 0 : PeriodMultiple(cv.section);
     for (const SystemCurvePoint& p : cv.points) {
       const OrbitRow& o = p.orbit;
       std::vector<TsvTable::Cell> row = {
-          p.p1,     p.p2,     CurveLabel(cv.kind), static_cast<int>(k + 1),
+          p.p1,     p.p2,     CurveLabel(cv.kind), static_cast<int>(k + 1), m,
           o.period, o.sticks, o.crossings};
+      for (int i = 0; i < s.dimension(); ++i)
+        row.emplace_back(i < o.start.z.size() ? o.start.z[i] : 0.0);
       const bool hb = cv.kind == CurveKind::kHopf;
       for (const Eigen::VectorXd* v : {&o.lo, &o.hi})
         for (int i = 0; i < nt; ++i) row.emplace_back(hb ? o.start.z[i] : (*v)[i]);
@@ -47,9 +55,10 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c) {
 
 TsvTable SystemCodim2Table(const System& s, const SystemChart& c) {
   TsvTable t({"label", s.ParameterName(c.plane.p1), s.ParameterName(c.plane.p2), "curve", "on",
-              "description"});
+              "description", "located"});
   for (const SystemCodim2& p : c.codim2)
-    t.AddRow({Name(p.label), p.p1, p.p2, p.curve + 1, CurveLabel(p.on), p.description});
+    t.AddRow(
+        {Name(p.label), p.p1, p.p2, p.curve + 1, CurveLabel(p.on), p.description, Name(p.method)});
   return t;
 }
 
@@ -65,11 +74,13 @@ std::string SystemChartScript(const System& s, const SystemChart& c, const std::
       {CurveKind::kFold, "black", "1", "LP, fold"},
       {CurveKind::kPeriodDoubling, "black", "(8,4)", "PD, period doubling"},
       {CurveKind::kTorus, "#ff00ff", "(10,4,2,4)", "NS, Neimark-Sacker"},
+      {CurveKind::kGrazing, "#0060c0", "1", "GR, grazing or crossing-sliding"},
   };
   std::ostringstream os;
   os.precision(17);
   os << "# A system's chart written by ss_chart; run `gnuplot chart.gp` in this directory.\n"
-     << "# curves.tsv: HB red, LP black, PD black dashed, NS magenta; codim2.tsv: SL open\n"
+     << "# curves.tsv: HB red, LP black, PD black dashed, NS magenta, GR blue; codim2.tsv: SL "
+        "open\n"
      << "# circles, the others black dots with their labels.\n"
      << "if (!exists('suffix')) suffix = ''\n"
      << FigureTerminal(format, 900, 700) << "set output '" << FigureFile("chart", format)

@@ -34,6 +34,14 @@ struct FixedTolerances {
   // Orbit branches: dP/dp by central differences of step kBranchDifference
   // max(1, |p|) (about cbrt(eps): truncation and rounding balanced).
   static constexpr double kBranchDifference = 6e-6;
+  // Chart curves: an accepted point whose test function (not its map) exceeds
+  // the residual bound is kept within this many corrector tolerances of the
+  // test's zero (|test| / |grad test|; measured 1.6e-11 to 5e-11 on the
+  // seed_forced chart's doubled PD curves, test gradient 250 to 390).
+  static constexpr double kCurveTestSteps = 10;
+  // R1 on an LP curve, R2 on a PD curve: two multipliers within this of +1
+  // (-1) at the located point (else the NS test's zero is another pair's).
+  static constexpr double kResonantPair = 1e-3;
   // Orbit branches: the edge search behind a failed chord steps at least
   // kBranchEdgeStep (1 + |p|), and a switched branch's kBranchEdgeStep |range|.
   static constexpr double kBranchEdgeStep = 1e-6;

@@ -40,6 +40,7 @@ void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variat
   FlowRequest& rq = request_;
   rq.t_max = z.t + (p.kind == SectionKind::kTime ? p.time : options_.max_return_time);
   rq.variational = variational;
+  rq.switching = options_.switching;
   rq.parameter_column = column && variational && flow_.has_parameter_column();
   rq.stop_at_exit = p.kind == SectionKind::kStickExit ? p.returns : 0;
   rq.sections.clear();

@@ -58,63 +58,78 @@ double Distance(const Points& points, double x, double y) {
 
 TEST(SystemChartForced, CurvesLieOnTheForcedChartsCurves) {
   const SystemChart& c = Chart();
-  EXPECT_EQ(c.status, ChartStatus::kOk);
-  // The forced chart's m = 1 curves of the kind, as polylines.
+  EXPECT_EQ(c.status, ChartStatus::kOk) << c.message;
+  // The forced chart's curves by kind and period multiple, as polylines.
   const testing_util::Tsv f = testing_util::ReadTsv(
       testing_util::ReadFile(STICKSLIP_SOURCE_DIR "/docs/figures/seed_forced_chart/curves.tsv"));
   struct P {
     double p1, p2;
   };
-  std::map<std::string, std::vector<P>> forced;  // "LP 3" -> points
+  std::map<std::string, std::vector<P>> forced;  // "LP 1 3": kind, m, id
   for (const auto& row : f.rows)
-    if (row[f.Column("m")] == "1")
-      forced[row[f.Column("curve")] + " " + row[f.Column("id")]].push_back(
-          {std::stod(row[0]), std::stod(row[1])});
-  int lp = 0, pd = 0;
+    forced[row[f.Column("curve")] + " " + row[f.Column("m")] + " " + row[f.Column("id")]].push_back(
+        {std::stod(row[0]), std::stod(row[1])});
+  std::map<std::string, int> count;  // "LP 1": curves
   for (const SystemCurve& cv : c.curves) {
-    ASSERT_TRUE(cv.kind == CurveKind::kFold || cv.kind == CurveKind::kPeriodDoubling);
-    (cv.kind == CurveKind::kFold ? lp : pd) += 1;
+    const std::string key =
+        std::string(CurveLabel(cv.kind)) + " " + std::to_string(cv.section.turns) + " ";
+    ++count[key];
     std::vector<double> d;
     for (const SystemCurvePoint& p : cv.points) {
       double best = HUGE_VAL;
       for (const auto& [name, points] : forced)
-        if (name.rfind(std::string(CurveLabel(cv.kind)) + " ", 0) == 0)
-          best = std::min(best, Distance(points, p.p1, p.p2));
+        if (name.rfind(key, 0) == 0) best = std::min(best, Distance(points, p.p1, p.p2));
       d.push_back(best);
     }
     std::sort(d.begin(), d.end());
     // Most points within the forced polylines' chord error. Near a point
     // where the map stops being smooth each chart ends its curve on its own
-    // residual test, a few points apart: there the distance is the gap
-    // between the two ends.
-    EXPECT_LT(d[d.size() * 3 / 4], 1e-4) << cv.seed;
-    EXPECT_LT(d.back(), 1e-2) << cv.seed;
+    // test, a few points apart; two doubled PD curves go on past the forced
+    // chart's ends (branch jumps there), one round a turn: there the distance
+    // is the gap between the two ends.
+    EXPECT_LT(d[d.size() / 4], 1e-4) << cv.seed;
+    if (cv.section.turns == 1) {
+      EXPECT_LT(d[d.size() / 2], 1e-4) << cv.seed;
+    }
   }
-  EXPECT_GE(lp, 3);
-  EXPECT_GE(pd, 2);
+  // As many curves of each kind and m as the forced chart has.
+  EXPECT_EQ(count["LP 1 "], 4);
+  EXPECT_EQ(count["PD 1 "], 3);
+  EXPECT_EQ(count["GR 1 "], 3);
+  EXPECT_EQ(count["PD 2 "], 6);
+  EXPECT_EQ(count["LP 2 "], 2);
 }
 
+// At points of every PD curve of 20 points or more (period multiple m = 1 or
+// a doubled m = 2), the branch in A from 5e-4 below (the one branch driver,
+// which locates PD by bisection on the test's sign along the branch) has its
+// PD at the curve's A.
 TEST(SystemChartForced, PeriodDoublingCurveMeetsTheForcedBranchesPD) {
-  int checked = 0;
+  int checked = 0, doubled = 0;
   for (const SystemCurve& cv : Chart().curves) {
     if (cv.kind != CurveKind::kPeriodDoubling || cv.points.size() < 20) continue;
     for (const std::size_t i : {cv.points.size() / 4, cv.points.size() / 2}) {
       const SystemCurvePoint& p = cv.points[i];
       ForcedParams q = SeedForced();
-      q.omega = p.p1;
+      q.omega = p.p1, q.force = p.p2 - 5e-4;
+      const ForcedModel s(q);
       OrbitBranchOptions o(ForcedModel::FlowDefaults());
-      o.palc.ds = o.palc.ds_max = 5e-4;
-      // From the curve's orbit, as a guess at A 0.002 below (Newton pulls it on).
-      const OrbitBranch b = ContinueForced(q, Parameter::kForce, p.p2 - 0.002, p.p2 + 0.002,
-                                           p.orbit.start.z[0], p.orbit.start.z[1], 1, o);
+      o.palc.ds = o.palc.ds_max = 1e-4;
+      // From the curve's orbit (its section phase and m), as a guess 5e-4
+      // below in A (Newton pulls it on).
+      const OrbitBranch b =
+          ContinueOrbits(s, ForcedModel::kForceIndex, p.orbit.start, cv.section, p.p2 + 5e-4, o);
       double found = -1;
       for (const OrbitRow& r : b.special)
         if (r.label == SpecialKind::kPeriodDoubling) found = r.p;
-      EXPECT_NEAR(found, p.p2, 1e-9) << "omega " << p.p1 << ": " << b.message;
+      EXPECT_NEAR(found, p.p2, 1e-9)
+          << "omega " << p.p1 << ", m " << cv.section.turns << ": " << b.message;
       ++checked;
+      doubled += cv.section.turns == 2;
     }
   }
-  EXPECT_GE(checked, 4);  // two points on each of two PD curves at least
+  EXPECT_GE(checked, 8);
+  EXPECT_GE(doubled, 4);  // two points on each of two doubled PD curves at least
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("SimulationSection", SimulationSection::kNone);
   Covers("CurveKind", CurveKind::kTorus);
   Covers("Codim2Label", Codim2Label::kCusp);
-  Covers("ForcedCodim2Method", ForcedCodim2Method::kChord);
+  Covers("Codim2Method", Codim2Method::kPoint);
 }
 
 // Names the files and options carry (docs/formats.md, docs/cli.md).
@@ -107,7 +107,7 @@ TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
 TEST(Names, TablesCoverEveryEnumerator) {
   // The enums are dense from 0: a table as long as the enum covers it.
   EXPECT_EQ(NameCount<CurvePointType>(), static_cast<size_t>(CurvePointType::kFold) + 1);
-  EXPECT_EQ(NameCount<CurveEndKind>(), static_cast<size_t>(CurveEndKind::kContactLost) + 1);
+  EXPECT_EQ(NameCount<CurveEndKind>(), static_cast<size_t>(CurveEndKind::kCorner) + 1);
   EXPECT_EQ(NameCount<Codim2Label>(), static_cast<size_t>(Codim2Label::kCusp) + 1);
   EXPECT_EQ(NameCount<PalcStatus>(), static_cast<size_t>(PalcStatus::kStartFailed) + 1);
   for (size_t i = 0; i < NameCount<CurvePointType>(); ++i)

@@ -1,5 +1,5 @@
 # A system's chart written by ss_chart; run `gnuplot chart.gp` in this directory.
-# curves.tsv: HB red, LP black, PD black dashed, NS magenta; codim2.tsv: SL open
+# curves.tsv: HB red, LP black, PD black dashed, NS magenta, GR blue; codim2.tsv: SL open
 # circles, the others black dots with their labels.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 900,700 enhanced font 'Sans,12'

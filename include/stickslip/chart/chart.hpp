@@ -84,6 +84,7 @@ enum class CurveEndKind {
   kSliding,          // the orbit's stick structure changes here (a sliding point)
   kNoStart,          // the start point could not be corrected (why says why)
   kContactLost,      // a contact's normal force reaches 0 on the orbit (why says where)
+  kCorner,           // GR: meets another GR curve at a corner (GG; why: the tracer's end)
 };
 template <>
 struct EnumNames<CurveEndKind> {
@@ -102,6 +103,7 @@ struct EnumNames<CurveEndKind> {
       {CurveEndKind::kSliding, "sliding"},
       {CurveEndKind::kNoStart, "start failed"},
       {CurveEndKind::kContactLost, "contact-lost"},
+      {CurveEndKind::kCorner, "corner"},
   };
 };
 
@@ -153,6 +155,23 @@ struct EnumNames<Codim2Label> {
       {Codim2Label::kSliding, "SL"},
       {Codim2Label::kDoubleGrazing, "GG"},
       {Codim2Label::kCusp, "CP"},
+  };
+};
+
+/// How a codimension-two point was placed on its curve.
+enum class Codim2Method {
+  kCurveEnd,  ///< SL: the curve's end (its last step bisected by the tracer); GG: two ends' middle
+  kRefined,   ///< the test function's root by Illinois on the corrected curve
+  kChord,     ///< the refinement failed: interpolated linearly between two curve points
+  kPoint,     ///< CP: the curve point where its direction reverses
+};
+template <>
+struct EnumNames<Codim2Method> {
+  static constexpr NamedValue<Codim2Method> kTable[] = {
+      {Codim2Method::kCurveEnd, "end"},
+      {Codim2Method::kRefined, "refined"},
+      {Codim2Method::kChord, "chord"},
+      {Codim2Method::kPoint, "point"},
   };
 };
 

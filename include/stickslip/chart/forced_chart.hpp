@@ -45,20 +45,7 @@ struct ForcedCurve {
 };
 
 /// Codimension-two points on the curves.
-/// How a codimension-two point was placed.
-enum class ForcedCodim2Method {
-  kCurveEnd,  ///< SL: the curve's end (its last step bisected by the tracer)
-  kRefined,   ///< on the curve, its test function's root by Illinois on the corrected curve
-  kChord,     ///< the refinement failed: interpolated linearly between two curve points
-};
-template <>
-struct EnumNames<ForcedCodim2Method> {
-  static constexpr NamedValue<ForcedCodim2Method> kTable[] = {
-      {ForcedCodim2Method::kCurveEnd, "end"},
-      {ForcedCodim2Method::kRefined, "refined"},
-      {ForcedCodim2Method::kChord, "chord"},
-  };
-};
+using ForcedCodim2Method = Codim2Method;
 
 struct ForcedCodim2 {
   Codim2Label label = Codim2Label::kR1;

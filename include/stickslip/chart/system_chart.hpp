@@ -6,14 +6,20 @@
 //   LP, PD, NS  of periodic orbits: the one branch driver's problem with the
 //       second parameter free, bordered by its test function on the
 //       monodromy (orbit_branch.hpp);
+//   GR  with a clock: an orbit's arrivals on a contact's surface turn from
+//       crossings into sticks, or an orbit first touches a surface
+//       (docs/theory.md, "Charts of any system");
 // seeded by the special points of one-parameter runs (ContinueSteadySliding,
 // and ContinueOrbits from the attractor at points of the line: the stick-slip
-// orbit settled on, or with a clock the stroboscopic orbit reached from rest)
-// on lines across the rectangle. A system with a clock has no steady sliding:
-// its curves are of orbits only, on the stroboscopic section. A curve of orbits ends where the
-// orbit's switching sequence changes (an SL point: a sliding bifurcation meets it) or the normal
-// force of a contact reaches 0 on it. Codimension-two points: those SL ends, LPPD where the LP and
-// PD tests vanish together, R1 and R2 on NS curves, and CP, a cusp of an LP curve.
+// orbit settled on, or with a clock the stroboscopic orbit reached from rest,
+// and the doubled branches from their PD points) on lines across the
+// rectangle. A system with a clock has no steady sliding: its curves are of
+// orbits only, on stroboscopic sections kept off the orbits' stick phases.
+// A curve of orbits ends where the orbit's switching sequence changes (an SL
+// point: a sliding bifurcation meets it) or the normal force of a contact
+// reaches 0 on it. Codimension-two points, located on the curves: those SL
+// ends, LPPD, R1 and R2, CP (a cusp of an LP curve) and GG (two GR curves
+// meet).
 #pragma once
 
 #include <complex>
@@ -53,7 +59,9 @@ struct SystemChartOptions {
   /// sliding moved by `disturbance` in the first component.
   double transient = 3000, disturbance = 0.5;
   /// A system with a clock: the orbit reached from rest of period multiple
-  /// 1..max_m (StroboscopicOrbits' transient and recurrence).
+  /// 1..max_m (StroboscopicOrbits' transient and recurrence), and the
+  /// doubled branch of each PD of period multiple 2m <= max_m. Without a
+  /// clock: doubled branches while 2^doublings <= max_m.
   int max_m = 2;
   int seed_lines = 3;  ///< lines per axis across the rectangle, each seeding curves
   /// Points per line (ends included) where a run settles on an attractor,
@@ -80,22 +88,38 @@ struct SystemCurvePoint {
   double tests[3] = {0, 0, 0};
 };
 
-struct SystemCurve {
-  CurveKind kind = CurveKind::kFold;
-  std::vector<SystemCurvePoint> points;
-  CurveEnds ends;
-  PoincareSection section;  ///< the orbits' section (LP, PD, NS)
-  std::string seed;         ///< where it started: "LP of the v run at mu_k = 0.5"
-  int evaluations = 0;
-  double seconds = 0;
-};
-
 struct SystemCodim2 {
   Codim2Label label = Codim2Label::kSliding;
   CurveKind on = CurveKind::kFold;
   int curve = 0;  ///< index into SystemChart::curves
   double p1 = 0, p2 = 0;
+  Codim2Method method = Codim2Method::kCurveEnd;
+  /// kRefined: the orbit there (its p is p1) and the located test's value.
+  OrbitRow orbit;
+  double test = 0;
   std::string description;
+  static SystemCodim2 At(Codim2Label label, CurveKind on, double p1, double p2,
+                         Codim2Method method) {
+    SystemCodim2 x;
+    x.label = label, x.on = on, x.p1 = p1, x.p2 = p2, x.method = method;
+    return x;
+  }
+};
+
+struct SystemCurve {
+  CurveKind kind = CurveKind::kFold;
+  std::vector<SystemCurvePoint> points;
+  CurveEnds ends;
+  PoincareSection section;  ///< the orbits' section (LP, PD, NS, GR)
+  /// GR: the margin traced, an arrival's (|lambda| - mu_s N at a crossing)
+  /// or, if true, the gap of an orbit that reaches no surface.
+  bool gap = false;
+  std::string seed;  ///< where it started: "LP of the v run at mu_k = 0.5"
+  /// Its codimension-two points, located on it (curve: 0 until ChartSystem
+  /// numbers it).
+  std::vector<SystemCodim2> codim2;
+  int evaluations = 0;
+  double seconds = 0;
 };
 
 struct SystemChart {
@@ -109,14 +133,25 @@ struct SystemChart {
   int seed_runs = 0;         ///< one-parameter runs made for seeds
   int failed_seed_runs = 0;  ///< of them, those that failed (message: the first)
   int seeds_not_traced = 0;  ///< seeds that gave no curve of two points or more
+  /// Curves traced from seeds off their curve, most of whose points lie on
+  /// one already drawn (dropped).
+  int duplicates = 0;
   /// Curves cut short inside the rectangle: an end at max-points,
-  /// step-too-small, start-failed or branch-jump (message: the first). The
-  /// ends where the map stops being smooth, SL and contact-lost are ends of
-  /// the curve, not cuts.
+  /// step-too-small or start-failed (message: the first). The ends where the
+  /// map stops being smooth (stopped), SL, contact-lost, a branch jump (the
+  /// next point, also at half the step, lies off the curve: a corner or
+  /// another curve) and a GR curve's corner at GG are ends of the curve, not
+  /// cuts.
   int cut_curves = 0;
   double seconds = 0;
   int points() const;
 };
+
+/// A curve's orbits' period in units of its section: forcing periods (a
+/// stroboscopic section's clock turns), else returns to the section.
+inline int PeriodMultiple(const PoincareSection& s) {
+  return s.kind == SectionKind::kTime ? s.turns : s.returns;
+}
 
 /// The chart of `system` (its values of the two axes are not used). Throws
 /// InvalidArgument on an invalid system or options.
@@ -125,7 +160,8 @@ SystemChart ChartSystem(const System& system, const SystemChartOptions& options)
 /// One curve of periodic orbits from `start`, a point of an orbit of
 /// `section` at (p1, p2) near the curve (`fixed` 0 holds p1 while it is
 /// corrected, 1 holds p2), both ways to the rectangle's border: what
-/// ChartSystem does per seed. kind LP, PD or NS (else InvalidArgument).
+/// ChartSystem does per seed. kind LP, PD, NS or GR (else InvalidArgument);
+/// GR takes the margin nearer 0 at the start (orbit_curve.hpp).
 SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& options, CurveKind kind,
                             const FlowPoint& start, double p1, double p2,
                             const PoincareSection& section, int fixed);

@@ -71,7 +71,11 @@ struct ShootingOptions {
   double tol = 1e-12;
   /// Event sections: no arrival within this time is kNoReturn.
   double max_return_time = 2e3;
-  bool extrema = true;       ///< PeriodicOrbit::lo, hi
+  bool extrema = true;  ///< PeriodicOrbit::lo, hi
+  /// false: every run stays on its start mode's smooth field, continued
+  /// across the contacts' surfaces (a grazing curve's orbits: the gap to a
+  /// surface is smooth through 0 there).
+  bool switching = true;
   long max_steps = 1000000;  ///< flow steps per evaluation of the map
   std::string ValidationError() const;
 };

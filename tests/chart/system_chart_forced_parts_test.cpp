@@ -1,0 +1,114 @@
+// The one chart (ChartSystem, TraceOrbitCurve; system_chart.hpp) on the
+// forced oscillator, against references computed another way:
+//  - a GR curve (the arrival's margin |lambda| - mu_s at a crossing) of Den
+//    Hartog's (1931) non-stop orbit against his closed-form stop condition;
+//  - the R1 points where studies/forced_ns_seed.ini's NS curves end (the
+//    pair turns real at +1): refined on the curve, and at each the long-double
+//    reference map (reference/forced_lyapunov.hpp, RKF78 with its own
+//    variational equations) has the orbit as a fixed point with tr Phi = 2
+//    and det Phi = 1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "forced_reference.hpp"
+#include "forced_run.hpp"
+#include "reference/forced_lyapunov.hpp"
+#include "stickslip/chart/system_chart.hpp"
+#include "stickslip/forced/orbit.hpp"
+
+namespace stickslip {
+namespace {
+
+using reference::LReal;
+
+// Den Hartog (1931), v = 0, beta = 0, mu_s = mu_k = mu: the non-stop orbit
+// stops where A = mu |1 - W^2| sqrt(U^2 + W^-4), U = sin(pi/W) / (W (1 +
+// cos(pi/W))) (tests/chart/forced_chart_test.cpp derives it).
+double DenHartogStopForce(double mu, double w) {
+  const double U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
+  return mu * std::abs(1 - w * w) * std::sqrt(U * U + 1 / (w * w * w * w));
+}
+
+SystemChartOptions Options(const System& s, double from1, double to1, double from2, double to2) {
+  SystemChartOptions o;
+  o.plane.p1 = s.ParameterIndex("omega"), o.plane.p2 = s.ParameterIndex("force");
+  o.plane.from1 = from1, o.plane.to1 = to1, o.plane.from2 = from2, o.plane.to2 = to2;
+  o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  return o;
+}
+
+TEST(SystemChartForcedParts, DenHartogGrazingCurveIsHisStopCondition) {
+  const double mu = 0.3;
+  for (const double w : {0.7, 1.5}) {  // one curve below and one above resonance
+    // The non-stop orbit a little above the boundary, then the curve from it.
+    const double a = DenHartogStopForce(mu, w) * 1.02;
+    const ForcedModel model(forced_reference::Coulomb(mu, mu, 0, 0, a, w));
+    SystemChartOptions o = Options(model, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0, 0.05, 1.5);
+    o.branch.shooting.flow.rtol = o.branch.shooting.flow.atol = 1e-13;
+    o.max_step = 0.02;
+    const PeriodicOrbit orbit =
+        ShootStroboscopic(model, a / (1 - w * w), 0.01, 1, o.branch.shooting);
+    ASSERT_TRUE(orbit.ok()) << orbit.message;
+    ASSERT_EQ(orbit.sticks, 0);
+    const SystemCurve c =
+        TraceOrbitCurve(model, o, CurveKind::kGrazing, orbit.start, w, a,
+                        PoincareSection::Stroboscopic(model, orbit.start.z, 1), 1);
+    EXPECT_FALSE(c.gap);  // the arrival's margin: the orbit crosses x' = v
+    ASSERT_GT(c.points.size(), 10u) << c.ends.Text();
+    double worst = 0;
+    for (const SystemCurvePoint& p : c.points) {
+      const double ref = DenHartogStopForce(mu, p.p1);
+      EXPECT_NEAR(p.p2, ref, 1e-8 * std::max(1.0, ref)) << "Omega = " << p.p1;
+      worst = std::max(worst, std::abs(p.p2 - ref));
+    }
+    std::printf(
+        "[ measured ] GR curve Omega in [%g, %g]: %zu points, max |A - A_DenHartog| = "
+        "%.2e, ends %s\n",
+        c.points.front().p1, c.points.back().p1, c.points.size(), worst, c.ends.Text().c_str());
+  }
+}
+
+TEST(SystemChartForcedParts, R1WhereTheNsCurvesEndHasBothMultipliersAtPlusOne) {
+  const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
+  const ForcedModel s(base);
+  const SystemChart c = ChartSystem(s, Options(s, 0.6, 1.6, 0.002, 0.1));  // the study's [chart]
+  int n = 0;
+  for (const SystemCodim2& x : c.codim2) {
+    if (x.label != Codim2Label::kR1) continue;
+    ++n;
+    EXPECT_EQ(x.on, CurveKind::kTorus);
+    ASSERT_EQ(x.method, Codim2Method::kRefined);
+    // The orbit's state at phase 0 (carried there by the library's flow: a
+    // start only), then the reference map over one period from it.
+    ForcedParams p = base;
+    p.omega = x.p1, p.force = x.p2;
+    const ForcedModel model(p);
+    FlowOptions f = ForcedModel::FlowDefaults();
+    f.rtol = f.atol = 1e-14;
+    const FlowPoint& z = x.orbit.start;
+    const FlowRun to0 =
+        testing_util::RunForced(model, z, z.t + (2 * M_PI - z.z[2]) / model.omega(), {}, f);
+    ASSERT_TRUE(to0.ok()) << to0.message;
+    const reference::ForcedRef m(p);
+    const reference::RefPeriod q =
+        reference::RefOnePeriod(m, to0.end.z[0], to0.end.z[1], false, 1e-18L);
+    ASSERT_TRUE(q.ok);
+    const LReal residual = std::max(std::abs(q.x - to0.end.z[0]), std::abs(q.y - to0.end.z[1]));
+    const LReal trace = q.phi[0][0] + q.phi[1][1];
+    const LReal det = q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0];
+    std::printf(
+        "[ measured ] R1 at Omega %.12f A %.12f: reference residual %.2Le, tr - 2 = "
+        "%.2Le, det - 1 = %.2Le\n",
+        x.p1, x.p2, residual, trace - 2, det - 1);
+    EXPECT_EQ(q.sticks, 0);
+    EXPECT_LT(residual, 1e-10L);
+    EXPECT_LT(std::abs(trace - 2), 1e-12L);
+    EXPECT_LT(std::abs(det - 1), 1e-12L);
+  }
+  EXPECT_EQ(n, 2);  // one where each NS curve of the 1:1 tongue ends
+}
+
+}  // namespace
+}  // namespace stickslip
