@@ -3,14 +3,16 @@
 //  - a GR curve (the arrival's margin |lambda| - mu_s at a crossing) of Den
 //    Hartog's (1931) non-stop orbit against his closed-form stop condition;
 //  - the R1 points where studies/forced_ns_seed.ini's NS curves end (the
-//    pair turns real at +1): refined on the curve, and at each the long-double
-//    reference map (reference/forced_lyapunov.hpp, RKF78 with its own
-//    variational equations) has the orbit as a fixed point with tr Phi = 2
-//    and det Phi = 1.
+//    pair turns real at +1), and the R2 points of the Stribeck belt at v =
+//    0.41, each on a PD and an NS curve: refined on the curve, and at each
+//    the long-double reference map (reference/forced_lyapunov.hpp, RKF78 with
+//    its own variational equations) has the orbit as a fixed point with
+//    tr Phi = 2 (-2) and det Phi = 1.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
@@ -70,6 +72,32 @@ TEST(SystemChartForcedParts, DenHartogGrazingCurveIsHisStopCondition) {
   }
 }
 
+// The reference map over one period from phase 0 at a codim-2 point's orbit
+// (carried from its section phase to phase 0 by the library's flow: a start
+// only; the reference's own fixed-point residual is asserted).
+struct RefCheck {
+  LReal residual, trace, det;
+  int sticks;
+};
+RefCheck Reference(const ForcedParams& base, const SystemCodim2& x) {
+  ForcedParams p = base;
+  p.omega = x.p1, p.force = x.p2;
+  const ForcedModel model(p);
+  FlowOptions f = ForcedModel::FlowDefaults();
+  f.rtol = f.atol = 1e-14;
+  const FlowPoint& z = x.orbit.start;
+  const FlowRun to0 =
+      testing_util::RunForced(model, z, z.t + (2 * M_PI - z.z[2]) / model.omega(), {}, f);
+  EXPECT_TRUE(to0.ok()) << to0.message;
+  const reference::ForcedRef m(p);
+  const reference::RefPeriod q =
+      reference::RefOnePeriod(m, to0.end.z[0], to0.end.z[1], false, 1e-18L);
+  EXPECT_TRUE(q.ok);
+  return {std::max(std::abs(q.x - to0.end.z[0]), std::abs(q.y - to0.end.z[1])),
+          q.phi[0][0] + q.phi[1][1], q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0],
+          q.sticks};
+}
+
 TEST(SystemChartForcedParts, R1WhereTheNsCurvesEndHasBothMultipliersAtPlusOne) {
   const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
   const ForcedModel s(base);
@@ -80,34 +108,51 @@ TEST(SystemChartForcedParts, R1WhereTheNsCurvesEndHasBothMultipliersAtPlusOne) {
     ++n;
     EXPECT_EQ(x.on, CurveKind::kTorus);
     ASSERT_EQ(x.method, Codim2Method::kRefined);
-    // The orbit's state at phase 0 (carried there by the library's flow: a
-    // start only), then the reference map over one period from it.
-    ForcedParams p = base;
-    p.omega = x.p1, p.force = x.p2;
-    const ForcedModel model(p);
-    FlowOptions f = ForcedModel::FlowDefaults();
-    f.rtol = f.atol = 1e-14;
-    const FlowPoint& z = x.orbit.start;
-    const FlowRun to0 =
-        testing_util::RunForced(model, z, z.t + (2 * M_PI - z.z[2]) / model.omega(), {}, f);
-    ASSERT_TRUE(to0.ok()) << to0.message;
-    const reference::ForcedRef m(p);
-    const reference::RefPeriod q =
-        reference::RefOnePeriod(m, to0.end.z[0], to0.end.z[1], false, 1e-18L);
-    ASSERT_TRUE(q.ok);
-    const LReal residual = std::max(std::abs(q.x - to0.end.z[0]), std::abs(q.y - to0.end.z[1]));
-    const LReal trace = q.phi[0][0] + q.phi[1][1];
-    const LReal det = q.phi[0][0] * q.phi[1][1] - q.phi[0][1] * q.phi[1][0];
+    const RefCheck ref = Reference(base, x);
     std::printf(
         "[ measured ] R1 at Omega %.12f A %.12f: reference residual %.2Le, tr - 2 = "
         "%.2Le, det - 1 = %.2Le\n",
-        x.p1, x.p2, residual, trace - 2, det - 1);
-    EXPECT_EQ(q.sticks, 0);
-    EXPECT_LT(residual, 1e-10L);
-    EXPECT_LT(std::abs(trace - 2), 1e-12L);
-    EXPECT_LT(std::abs(det - 1), 1e-12L);
+        x.p1, x.p2, ref.residual, ref.trace - 2, ref.det - 1);
+    EXPECT_EQ(ref.sticks, 0);
+    EXPECT_LT(ref.residual, 1e-10L);
+    EXPECT_LT(std::abs(ref.trace - 2), 1e-12L);
+    EXPECT_LT(std::abs(ref.det - 1), 1e-12L);
   }
   EXPECT_EQ(n, 2);  // one where each NS curve of the 1:1 tongue ends
+}
+
+// R2 (both multipliers at -1) on the Stribeck belt at v = 0.41 near Omega = 2
+// (docs/studies.md): located on the PD curve (the NS test's zero with two
+// multipliers at -1) and on the NS curve (the PD test's zero), two different
+// defining systems that must give one point, which the reference map has as
+// a fixed point with tr Phi = -2 and det Phi = 1.
+TEST(SystemChartForcedParts, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMinusOne) {
+  const ForcedParams base = forced_reference::StribeckBelt(0.41, 0.05, 1);
+  const ForcedModel s(base);
+  const SystemChart c = ChartSystem(s, Options(s, 0.6, 2.4, 0.002, 0.16));
+  std::vector<const SystemCodim2*> pd, ns;
+  for (const SystemCodim2& x : c.codim2)
+    if (x.label == Codim2Label::kR2) {
+      EXPECT_EQ(x.method, Codim2Method::kRefined);
+      (x.on == CurveKind::kPeriodDoubling ? pd : ns).push_back(&x);
+    }
+  ASSERT_GE(pd.size(), 1u);
+  ASSERT_GE(ns.size(), 1u);
+  for (const SystemCodim2* a : pd) {
+    double best = INFINITY;
+    for (const SystemCodim2* b : ns)
+      best = std::min(best, std::max(std::abs(a->p1 - b->p1), std::abs(a->p2 - b->p2)));
+    const RefCheck ref = Reference(base, *a);
+    std::printf(
+        "[ measured ] R2 at Omega %.12f A %.12f: the NS curve's R2 %.2e away; reference "
+        "residual %.2Le, tr + 2 = %.2Le, det - 1 = %.2Le\n",
+        a->p1, a->p2, best, ref.residual, ref.trace + 2, ref.det - 1);
+    EXPECT_LT(best, 1e-10);
+    EXPECT_EQ(ref.sticks, 0);
+    EXPECT_LT(ref.residual, 1e-10L);
+    EXPECT_LT(std::abs(ref.trace + 2), 1e-12L);
+    EXPECT_LT(std::abs(ref.det - 1), 1e-12L);
+  }
 }
 
 }  // namespace
