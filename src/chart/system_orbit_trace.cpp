@@ -201,7 +201,9 @@ class OrbitTracer {
       VectorXd d = VectorXd::Zero(u.size());
       d[i1] = dir[0] / (o_.plane.to1 - o_.plane.from1);
       d[i1 + 1] = dir[1] / (o_.plane.to2 - o_.plane.from2);
-      const int fixed = std::abs(d[i1]) >= std::abs(d[i1 + 1]) ? i1 + 1 : i1;
+      // The first correction holds the coordinate the curve moves most in
+      // (its line crosses the curve transversally).
+      const int fixed = std::abs(d[i1]) >= std::abs(d[i1 + 1]) ? i1 : i1 + 1;
       TraceResult r = TraceOneWay(*pr, Options(pr, u), u, fixed, d);
       *evaluations += r.evaluations;
       if (DropBad(*pr, &r.u, true, &r.ends.last, saddle)) {
