@@ -7,7 +7,9 @@
 //    0.41, each on a PD and an NS curve: refined on the curve, and at each
 //    the long-double reference map (reference/forced_lyapunov.hpp, RKF78 with
 //    its own variational equations) has the orbit as a fixed point with
-//    tr Phi = 2 (-2) and det Phi = 1.
+//    tr Phi = 2 (-2) and det Phi = 1;
+//  - the GR gap curve of forced_ns_seed.ini's pure-slip orbits against
+//    one-parameter runs in Omega, which locate its GR by their own bisection.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -153,6 +155,49 @@ TEST(SystemChartForcedParts, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMin
     EXPECT_LT(std::abs(ref.trace + 2), 1e-12L);
     EXPECT_LT(std::abs(ref.det - 1), 1e-12L);
   }
+}
+
+// The GR curve of the pure-slip orbits on studies/forced_ns_seed.ini (the gap
+// margin, on the slip field without switching): it crosses the rectangle, and
+// at points across it a one-parameter run in Omega through the point's orbit
+// (the one branch driver, its own bisection of the switching sequence's
+// change) locates its GR at the curve's Omega.
+TEST(SystemChartForcedParts, GapGrazingCurveMatchesOneParameterRuns) {
+  const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
+  const ForcedModel s(base);
+  const SystemChart c = ChartSystem(s, Options(s, 0.6, 1.6, 0.002, 0.1));
+  const SystemCurve* gr = nullptr;
+  for (const SystemCurve& cv : c.curves)
+    if (cv.kind == CurveKind::kGrazing) gr = &cv;
+  ASSERT_NE(gr, nullptr);
+  EXPECT_TRUE(gr->gap);
+  EXPECT_GT(gr->points.size(), 100u);
+  EXPECT_EQ(gr->ends.first.kind, CurveEndKind::kBorder);
+  EXPECT_EQ(gr->ends.last.kind, CurveEndKind::kBorder);
+  int checked = 0;
+  for (std::size_t i = 10; i < gr->points.size(); i += gr->points.size() / 6) {
+    const SystemCurvePoint& p = gr->points[i];
+    ForcedParams q = base;
+    q.force = p.p2;
+    OrbitBranchOptions o(ForcedModel::FlowDefaults());
+    o.palc.ds = o.palc.ds_max = 2e-4;
+    double best = NAN;
+    for (const double side : {1.0, -1.0}) {
+      q.omega = p.p1 + side * 2e-3;
+      const OrbitBranch b = ContinueOrbits(ForcedModel(q), ForcedModel::kOmegaIndex, p.orbit.start,
+                                           gr->section, p.p1 - side * 2e-3, o);
+      for (const OrbitRow& row : b.special)
+        if (row.label == SpecialKind::kGrazing &&
+            !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))
+          best = row.p;
+      if (!std::isnan(best)) break;
+    }
+    std::printf("[ measured ] GR curve point Omega %.12f A %.6f: the run's GR %.2e away\n", p.p1,
+                p.p2, best - p.p1);
+    EXPECT_LT(std::abs(best - p.p1), 1e-10) << "A = " << p.p2;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
 }
 
 }  // namespace
