@@ -8,8 +8,9 @@
 //    the long-double reference map (reference/forced_lyapunov.hpp, RKF78 with
 //    its own variational equations) has the orbit as a fixed point with
 //    tr Phi = 2 (-2) and det Phi = 1;
-//  - the GR gap curve of forced_ns_seed.ini's pure-slip orbits against
-//    one-parameter runs in Omega, which locate its GR by their own bisection.
+//  - the GR gap curve and the NS curves of forced_ns_seed.ini against
+//    one-parameter runs in Omega, which locate GR and NS by their own
+//    bisection.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -198,6 +199,44 @@ TEST(SystemChartForcedParts, GapGrazingCurveMatchesOneParameterRuns) {
     ++checked;
   }
   EXPECT_GE(checked, 5);
+}
+
+// The NS curves bounding the 1:1 tongue of studies/forced_ns_seed.ini: at
+// every 12th point (A >= 0.01, both curves) a one-parameter run in Omega
+// through the point's orbit (its own start, branch and bisection of the NS
+// test, independent of the tracer) locates its NS at the point's Omega.
+TEST(SystemChartForcedParts, NsCurvePointsMatchOneParameterRunsInOmega) {
+  const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
+  const ForcedModel s(base);
+  const SystemChart c = ChartSystem(s, Options(s, 0.6, 1.6, 0.002, 0.1));
+  int checked = 0;
+  for (const SystemCurve& cv : c.curves) {
+    if (cv.kind != CurveKind::kTorus) continue;
+    EXPECT_GT(cv.points.size(), 50u) << cv.ends.Text();
+    for (std::size_t i = 0; i < cv.points.size(); i += 12) {
+      const SystemCurvePoint& p = cv.points[i];
+      if (p.p2 < 0.01) continue;  // near the tongue's tip
+      ForcedParams q = base;
+      q.force = p.p2;
+      OrbitBranchOptions o(ForcedModel::FlowDefaults());
+      o.palc.ds = o.palc.ds_max = 2e-4;
+      double best = NAN;
+      for (const double side : {1.0, -1.0}) {
+        q.omega = p.p1 + side * 2e-3;
+        const OrbitBranch b = ContinueOrbits(ForcedModel(q), ForcedModel::kOmegaIndex,
+                                             p.orbit.start, cv.section, p.p1 - side * 2e-3, o);
+        for (const OrbitRow& r : b.special)
+          if (r.label == SpecialKind::kTorus && !(std::abs(best - p.p1) <= std::abs(r.p - p.p1)))
+            best = r.p;
+        if (!std::isnan(best)) break;
+      }
+      std::printf("[ measured ] NS curve point Omega %.12f at force %.6f: run %.12f (%.1e)\n", p.p1,
+                  p.p2, best, std::abs(p.p1 - best));
+      EXPECT_NEAR(p.p1, best, 1e-9) << "force " << p.p2;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 6);
 }
 
 }  // namespace
