@@ -73,7 +73,7 @@ PySystemCurve CurveOf(const SystemCurve& c, int nt) {
 
 PySystemChart SystemChartOf(const py::object& system, const std::string& param, double from,
                             double to, const std::string& param2, double from2, double to2,
-                            int seed_lines, double max_step, bool hopf, bool orbits,
+                            int seed_lines, double max_step, bool hopf, bool orbits, int max_m,
                             std::optional<double> rtol, std::optional<double> atol) {
   const std::unique_ptr<System> s = SystemOf(system);  // InvalidArgument for another object
   SystemChartOptions o;
@@ -82,7 +82,7 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   for (const auto& [j, name] : {std::pair{pl.p1, param}, std::pair{pl.p2, param2}})
     if (j < 0) throw InvalidArgument("'" + name + "' is no parameter of this system");
   pl.from1 = from, pl.to1 = to, pl.from2 = from2, pl.to2 = to2;
-  o.seed_lines = seed_lines, o.max_step = max_step;
+  o.seed_lines = seed_lines, o.max_step = max_step, o.max_m = max_m;
   o.hopf_curves = hopf, o.orbit_curves = orbits;
   // The forced oscillator's own tolerances (rtol = atol = 1e-12), as ss_chart's.
   if (py::isinstance<ForcedParams>(system))
@@ -176,13 +176,15 @@ void BindSystemChart(py::module_& m) {
   m.def("chart", &SystemChartOf, py::arg("system"), py::arg("param"), py::arg("from_"),
         py::arg("to"), py::arg("param2"), py::arg("from2"), py::arg("to2"),
         py::arg("seed_lines") = 3, py::arg("max_step") = 0.01, py::arg("hopf") = true,
-        py::arg("orbits") = true, py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        py::arg("orbits") = true, py::arg("max_m") = 2, py::arg("rtol") = py::none(),
+        py::arg("atol") = py::none(),
         "chart(system, param, from_, to, param2, from2, to2, ...) for ForcedParams, "
         "ChainParams and CouplingParams (as ss_chart --system): HB curves of steady sliding "
         "and LP, PD, NS curves of periodic orbits (a forced system's on its stroboscopic "
         "section, with GR curves and rtol = atol = 1e-12 by default) in two of the system's "
-        "parameters, seeded by one-parameter runs on seed_lines lines per axis; a "
-        "SystemChart.");
+        "parameters, seeded by one-parameter runs on seed_lines lines per axis and the "
+        "doubled branches from their PD points (orbits of up to max_m forcing periods, or "
+        "doublings while 2^doublings <= max_m without a clock); a SystemChart.");
 }
 
 }  // namespace stickslip::python

@@ -707,7 +707,7 @@ def chart(params: Params, param: Optional[Parameter | str] = None, from_: Option
 def chart(system: Union[ForcedParams, ChainParams, CouplingParams], param: str, from_: float,
           to: float,
           param2: str, from2: float, to2: float, seed_lines: int = 3, max_step: float = 0.01,
-          hopf: bool = True, orbits: bool = True, rtol: Optional[float] = None,
+          hopf: bool = True, orbits: bool = True, max_m: int = 2, rtol: Optional[float] = None,
           atol: Optional[float] = None) -> SystemChart: ...
 def restart(dir: str, point: Union[str, int]) -> LabelledPoint: ...
 

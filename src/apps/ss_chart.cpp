@@ -80,7 +80,8 @@ po::options_description AppOptions() {
       "(default 3)")(
       "max_m", cli::Value()->value_name("M"),
       "forced: curves of orbits of period m <= M: each PD with 2m <= M starts the doubled "
-      "branch, whose points seed curves too, in [1, 8] (default 2)");
+      "branch, whose points seed curves too, in [1, 8] (default 2); --system: doubled "
+      "branches while 2^doublings <= M");
   cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
   cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;

@@ -34,7 +34,7 @@ double Required(const Arguments& args, const char* key) {
 }
 
 SystemChartOptions Configure(const Arguments& args, const System& s) {
-  for (const char* k : {"grid", "max_m", "restart", "point", "max_amplitude"})
+  for (const char* k : {"grid", "restart", "point", "max_amplitude"})
     if (args.Given(k)) throw UsageError(args.Source(k) + ": not with --system");
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
@@ -59,6 +59,11 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
                      args.Source("seed_lines") + ": must be in [0, " +
                      std::to_string(SystemChartOptions::kMaxSeedLines) + "]");
   o.seed_lines = static_cast<int>(lines);
+  const long max_m = args.Integer("max_m", o.max_m);
+  if (max_m < 1 || max_m > SystemChartOptions::kMaxMultiple)
+    throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
+                     ": must be in [1, " + std::to_string(SystemChartOptions::kMaxMultiple) + "]");
+  o.max_m = static_cast<int>(max_m);
   if (const std::string e = o.ValidationError(s); !e.empty()) throw UsageError(e);
   return o;
 }

@@ -57,7 +57,8 @@ TEST_F(ModeCouplingChartApp, BadInputsAreRefusedAndWriteNothing) {
       {{"--param", "zeta"}, "'zeta' is no parameter of mode_coupling"},
       {{"--to", "0.9"}, "mu_k = 0.9"},
       {{"--from2", "0.05"}, "empty or inverted"},
-      {{"--max_m", "2"}, "--max_m"},
+      {{"--max_m", "9"}, "--max_m"},
+      {{"--max_m", "0"}, "--max_m"},
       {{"--seed_lines", "21"}, "--seed_lines"},
       {{"--max_step", "0.9"}, "max_step"},
   };
