@@ -456,7 +456,7 @@ CHECKS += [
     (STRIB_BASIN, "0.841", "stribeck_forced_basin", lambda r: attractor(r, 1, "x")),
 ]
 
-# The forced (Omega, A) charts' curves (slow: 12 to 14 one-parameter runs each).
+# The forced (Omega, A) charts' curves (slow: about 60 one-parameter runs each).
 RUNS["stribeck_forced_chart"] = (SLOW, "ss_chart", study("stribeck_forced", "--grid", "0"), "")
 RUNS["seed_forced_chart"] = (SLOW, "ss_chart", study("seed_forced", "--grid", "0"), "")
 RUNS["r2_chart"] = (SLOW, "ss_chart", R2_CHART, "")
@@ -470,7 +470,7 @@ def upper_gr(r, col):
 
 
 def left_lp(r, end, col):
-    """The LP curve that ends on the SL point near (0.445, 0.19): its lowest or highest point."""
+    """The LP curve that ends at the cusp near (0.445, 0.19): its lowest or highest point."""
     low = {}
     for row in r.table("curves.tsv"):
         if row["curve"] == "LP":
@@ -492,22 +492,22 @@ def m2_curves(r):
     return len(re.findall(r"^  curve \d+ \w+ m=2:", r.stdout, re.M))
 
 
-STRIB_CURVES = "12 one-parameter runs and 14 curves; 24 seeds"
-SEED_CURVES = "18 curves from 14\none-parameter runs (46 s wall), 8 of them of m = 2"
+STRIB_CURVES = "58 one-parameter runs and 15 curves; 84 seeds"
+SEED_CURVES = "18 curves from 59\none-parameter runs (6.7 s wall), 8 of them of m = 2"
 GG = "Near Ω 0.4867,\nA 0.4935 it has a corner (GG)"
 LEFT_LP = "It runs from (Ω 0.445, A 0.19) up to (0.37, 0.6)"
 R2 = "two R2 points (Ω 1.981467,\nA 0.111154 and Ω 2.018449, A 0.114634)"
 CHECKS += [
-    (STRIB_CURVES, "12", "stribeck_forced_chart",
+    (STRIB_CURVES, "58", "stribeck_forced_chart",
      lambda r: r.printed(r"from (\d+) one-parameter runs")),
-    (STRIB_CURVES, "14", "stribeck_forced_chart", lambda r: r.printed(r"^(\d+) curves from")),
-    (STRIB_CURVES, "24", "stribeck_forced_chart", lambda r: r.printed(r"(\d+) seeds did not")),
+    (STRIB_CURVES, "15", "stribeck_forced_chart", lambda r: r.printed(r"^(\d+) curves from")),
+    (STRIB_CURVES, "84", "stribeck_forced_chart", lambda r: r.printed(r"(\d+) seeds gave no")),
     ("Its minimum, A ≈ 0.37 near\nΩ ≈ 0.93", "0.37", "stribeck_forced_chart",
      lambda r: upper_gr(r, "force")),
     ("Its minimum, A ≈ 0.37 near\nΩ ≈ 0.93", "0.93", "stribeck_forced_chart",
      lambda r: upper_gr(r, "omega")),
     (SEED_CURVES, "18", "seed_forced_chart", lambda r: r.printed(r"^(\d+) curves from")),
-    (SEED_CURVES, "14", "seed_forced_chart", lambda r: r.printed(r"from (\d+) one-parameter runs")),
+    (SEED_CURVES, "59", "seed_forced_chart", lambda r: r.printed(r"from (\d+) one-parameter runs")),
     (SEED_CURVES, "8", "seed_forced_chart", m2_curves),
     ("starts at A ≈ 0.45 near Ω ≈ 0.98", "0.45", "seed_forced_chart",
      lambda r: upper_gr(r, "force")),
@@ -519,10 +519,10 @@ CHECKS += [
     (LEFT_LP, "0.19", "seed_forced_chart", lambda r: left_lp(r, "low", "force")),
     (LEFT_LP, "0.37", "seed_forced_chart", lambda r: left_lp(r, "high", "omega")),
     (LEFT_LP, "0.6", "seed_forced_chart", lambda r: left_lp(r, "high", "force")),
-    ("It ends at (0.44522, 0.19134) on a grazing-sliding point (SL)", "0.44522",
-     "seed_forced_chart", lambda r: left_lp(r, "low", "omega")),
-    ("It ends at (0.44522, 0.19134) on a grazing-sliding point (SL)", "0.19134",
-     "seed_forced_chart", lambda r: left_lp(r, "low", "force")),
+    ("It ends at (0.44522, 0.19133)", "0.44522", "seed_forced_chart",
+     lambda r: left_lp(r, "low", "omega")),
+    ("It ends at (0.44522, 0.19133)", "0.19133", "seed_forced_chart",
+     lambda r: left_lp(r, "low", "force")),
     ("Below A ≈ 0.19 this branch has no fold", "0.19", "seed_forced_chart",
      lambda r: left_lp(r, "low", "force")),
     (R2, "1.981467", "r2_chart", lambda r: codim2(r, "R2", 0, "omega")),
@@ -781,6 +781,6 @@ CHECKS += [
      "0.4409585518", "seed", S("HB1", "v")),
     ("agrees with the one-parameter run (0.6519468583)", "0.6519468583", "stribeck",
      S("GR1", "v")),
-    ("the curves took 1.5 s (2 one-parameter runs)", "2", "ns_seed_chart",
+    ("took 0.4 s (12 one-parameter runs)", "12", "ns_seed_chart",
      lambda r: r.printed(r"from (\d+) one-parameter runs")),
 ]

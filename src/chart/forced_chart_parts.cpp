@@ -1,5 +1,4 @@
-// The forced chart's plane, names, validation and codimension-two points
-// (stickslip/chart/forced_chart.hpp).
+// The forced chart's validation (stickslip/chart/forced_chart.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -29,7 +28,10 @@ std::string ForcedChartOptions::ValidationError(const ForcedParams& base) const 
   if (max_period < 1 || max_period > iterate.keep / 2)
     return "max_period = " + std::to_string(max_period) + " must lie in [1, keep / 2]";
   if (threads < 1) return "threads must be >= 1";
-  return iterate.ValidationError();
+  e = iterate.ValidationError();
+  if (!e.empty()) return e;
+  const ForcedModel model(plane.At(base, plane.from1, plane.from2));
+  return SystemOptions(model, *this).ValidationError(model);
 }
 
 }  // namespace stickslip

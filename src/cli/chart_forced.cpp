@@ -107,24 +107,28 @@ std::string Describe(const Setup& s) {
 
 void PrintSummary(const ForcedChartResult& r, const Plane& pl, const std::string& model,
                   const std::string& dir, bool drawn, const std::string& figure) {
+  const SystemChart& c = r.chart;
   std::printf("ss_chart: forced oscillator, %s\n%zu curves from %d one-parameter runs in %.2f s",
-              model.c_str(), r.curves.size(), r.seed_runs, r.seconds);
+              model.c_str(), c.curves.size(), c.seed_runs, r.seconds);
   if (r.grid.n1 > 0)
     std::printf("; response grid %d x %d in %.2f s (%d failed)", r.grid.n1, r.grid.n2,
                 r.grid_seconds, r.grid.failed);
   std::printf("\n");
-  if (r.seeds_not_traced > 0)
-    std::printf("  %d seeds did not correct onto a curve (sliding points of stick-slip orbits)\n",
-                r.seeds_not_traced);
-  for (size_t i = 0; i < r.curves.size(); ++i) {
-    const ForcedCurve& c = r.curves[i];
-    std::printf("  curve %zu %s m=%d: %zu points, %.2f s, from %s; ends %s\n", i + 1, Name(c.kind),
-                c.m, c.points.size(), c.seconds, c.seed.c_str(), c.ends.Text().c_str());
+  if (c.failed_seed_runs + c.seeds_not_traced + c.cut_curves + c.duplicates > 0)
+    std::printf(
+        "  %d seed runs failed, %d seeds gave no curve, %d curves cut short, %d duplicates "
+        "dropped\n",
+        c.failed_seed_runs, c.seeds_not_traced, c.cut_curves, c.duplicates);
+  for (size_t i = 0; i < c.curves.size(); ++i) {
+    const SystemCurve& cv = c.curves[i];
+    std::printf("  curve %zu %s m=%d: %zu points, %.2f s, from %s; ends %s\n", i + 1, Name(cv.kind),
+                cv.section.turns, cv.points.size(), cv.seconds, cv.seed.c_str(),
+                cv.ends.Text().c_str());
   }
-  for (const ForcedCodim2& p : r.codim2)
+  for (const SystemCodim2& p : c.codim2)
     std::printf("  %-4s %s = %.8f  %s = %.8f  %s%s\n", Name(p.label), pl.p1.name().c_str(), p.p1,
                 pl.p2.name().c_str(), p.p2, p.description.c_str(),
-                p.method == ForcedCodim2Method::kChord ? " (chord: not refined)" : "");
+                p.method == Codim2Method::kChord ? " (chord: not refined)" : "");
   std::printf("wrote %s/curves.tsv, codim2.tsv, response.tsv, forced_chart.gp%s\n", dir.c_str(),
               drawn ? (", " + figure).c_str() : "");
 }

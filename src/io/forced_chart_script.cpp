@@ -66,16 +66,14 @@ void CurveLines(std::ostream& os, const ForcedChartResult& r) {
   for (const Style& st : styles)
     for (const bool multiple : {false, true}) {
       bool first = true;
-      for (size_t i = 0; i < r.curves.size(); ++i) {
-        if (r.curves[i].kind != st.kind || (r.curves[i].m > 1) != multiple) continue;
+      const std::vector<SystemCurve>& curves = r.chart.curves;
+      for (size_t i = 0; i < curves.size(); ++i) {
+        if (curves[i].kind != st.kind || (curves[i].section.turns > 1) != multiple) continue;
         const std::string title =
             multiple ? std::string(Name(st.kind)) + " of m ≥ 2 orbits" : st.title;
-        // NS: only where the multipliers are complex (flag, column 17, is 1
-        // on the neutral-saddle stretch of det DP = 1, which is no bifurcation).
-        const std::string only = st.kind == CurveKind::kTorus ? " && $17 == 0" : "";
-        os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << only
-           << " ? $2 : NaN) with lines lw " << (multiple ? 2.0 : st.width) << " lc rgb '"
-           << st.color << "' dt " << (multiple ? st.dash_multiple : st.dash)
+        os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
+           << (multiple ? 2.0 : st.width) << " lc rgb '" << st.color << "' dt "
+           << (multiple ? st.dash_multiple : st.dash)
            << (first ? " title " + GnuplotQuoted(title) : std::string(" notitle"));
         first = false;
       }
@@ -108,11 +106,11 @@ void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const Plane& pl)
     double x, y, hw, hh;  // centre and half sizes, pixels
   };
   std::vector<Box> taken;  // codim-2 points (a dot) and placed labels
-  for (const ForcedCodim2& p : r.codim2) {
+  for (const SystemCodim2& p : r.chart.codim2) {
     const auto q = px(p.p1, p.p2);
     taken.push_back({q[0], q[1], 3, 3});
   }
-  for (const ForcedCodim2& p : r.codim2) {
+  for (const SystemCodim2& p : r.chart.codim2) {
     if (p.label == Codim2Label::kSliding) continue;
     const std::string name = Name(p.label);
     const double hw = kCharW * name.size() / 2, hh = kTextH / 2;
@@ -126,7 +124,7 @@ void Codim2Labels(std::ostream& os, const ForcedChartResult& r, const Plane& pl)
                   at[1] + f * uy[k % 8] * (hh + kLabelGap), hw, hh};
       if (b.x - hw < 0 || b.x + hw > kPlotW || b.y - hh < 0 || b.y + hh > kPlotH) continue;
       double room = HUGE_VAL;  // to curves: from the box's centre, less its half diagonal
-      for (const ForcedCurve& c : r.curves)
+      for (const SystemCurve& c : r.chart.curves)
         for (size_t i = 1; i < c.points.size(); ++i) {
           const auto a = px(c.points[i - 1].p1, c.points[i - 1].p2);
           const auto e = px(c.points[i].p1, c.points[i].p2);
@@ -192,13 +190,14 @@ std::string ForcedChartScript(const ForcedChartResult& r, const Plane& pl, const
     os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(c, static_cast<int>(i))
        << "' title " << GnuplotQuoted(c.names[i]);
   CurveLines(os, r);
-  const auto sliding = [](const ForcedCodim2& p) { return p.label == Codim2Label::kSliding; };
+  const auto sliding = [](const SystemCodim2& p) { return p.label == Codim2Label::kSliding; };
   const std::string sl = Name(Codim2Label::kSliding);
-  if (std::any_of(r.codim2.begin(), r.codim2.end(), sliding))
+  const std::vector<SystemCodim2>& codim2 = r.chart.codim2;
+  if (std::any_of(codim2.begin(), codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq '" << sl
        << "' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title '" << sl
        << ", curve ends: sliding'";
-  if (!std::all_of(r.codim2.begin(), r.codim2.end(), sliding))
+  if (!std::all_of(codim2.begin(), codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne '" << sl
        << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title "
           "'codimension 2'";

@@ -168,9 +168,6 @@ struct Tolerances : FixedTolerances {
   /// times the rectangle's size (about sqrt of the map's error at rtol 1e-11
   /// ... 1e-14).
   double chart_difference = 1e-7;
-  /// Forced chart curves: central-difference step of the chord Jacobian,
-  /// times max(scale, |u|) (about cbrt(eps): truncation and rounding balanced).
-  double forced_curve_difference = 6e-6;
   /// Forced chart: two curves of one kind and period within this fraction of
   /// the rectangle are one (a seed found again on another seed line).
   double forced_same_curve = 2e-3;

@@ -62,9 +62,6 @@ struct FixedTolerances {
   // crossings in one step, issue 35); an NS point's pair lies within
   // kBranchTorusPair of the unit circle (a located one: 1e-9).
   static constexpr double kBranchMultiplierStep = 0.1, kBranchTorusPair = 1e-6;
-  // Forced chart curves: a section point beyond this (|x| or |x'|) has left
-  // the branch's domain (OrbitBranchOptions::max_amplitude's default).
-  static constexpr double kForcedCurveAmplitude = 1e3;
   // Forcing phase: Omega t within kPhaseUlps 1e-15 (1 + |Omega t|) of 2 pi is 0.
   static constexpr double kPhaseRounding = 1e-15, kPhaseUlps = 8;
 

@@ -18,17 +18,17 @@ namespace {
 namespace ref = stickslip::reference;
 using Real = long double;
 
-Params Quintic() {
+Params FoldQuintic() {
   Params p;
   p.k5 = 0.24;
   return p;
 }
 
-const ChartResult& QuinticChart() {
+const ChartResult& FoldQuinticChart() {
   static const ChartResult r = [] {
     ChartOptions o;
     o.plane = Plane{Parameter::kV, Parameter::kBeta, 0.05, 0.58, 0.0, 0.12};
-    return Chart(Quintic(), o);
+    return Chart(FoldQuintic(), o);
   }();
   return r;
 }
@@ -68,7 +68,7 @@ bool ReferenceFold(const Params& p, Real& x, Real& v) {
 }
 
 TEST(FoldCurve, QuinticFoldRunsFromGHToGRLP) {
-  const ChartResult& r = QuinticChart();
+  const ChartResult& r = FoldQuinticChart();
   const Curve* lp = FoldCurve(r);
   ASSERT_NE(lp, nullptr);
   EXPECT_EQ(lp->ends.Text(), "GH / GR-LP");
@@ -83,12 +83,12 @@ TEST(FoldCurve, QuinticFoldRunsFromGHToGRLP) {
 }
 
 TEST(FoldCurve, PointsAgainstTheReference) {
-  const Curve* lp = FoldCurve(QuinticChart());
+  const Curve* lp = FoldCurve(FoldQuinticChart());
   ASSERT_NE(lp, nullptr);
   ASSERT_GT(lp->points.size(), 20u);
   for (double frac : {0.3, 0.6, 0.85}) {
     const CurvePoint& c = lp->points[static_cast<size_t>(frac * lp->points.size())];
-    Params p = Quintic();
+    Params p = FoldQuintic();
     p.beta = c.p2;
     p.v = c.p1;
     // The section point from the chart's amplitude: x* ~ xbar + amplitude.
@@ -108,13 +108,13 @@ TEST(FoldCurve, PointsAtTheTightestToleranceWithin1e13) {
   o.orbit.flow.rtol = 1e-14;
   o.orbit.flow.atol = 1e-16;
   o.hopf_curves = true;
-  const ChartResult r = Chart(Quintic(), o);
+  const ChartResult r = Chart(FoldQuintic(), o);
   const Curve* lp = FoldCurve(r);
   ASSERT_NE(lp, nullptr);
   ASSERT_GT(lp->points.size(), 20u);
   for (double frac : {0.2, 0.45, 0.7, 0.9}) {
     const CurvePoint& c = lp->points[static_cast<size_t>(frac * lp->points.size())];
-    Params p = Quintic();
+    Params p = FoldQuintic();
     p.beta = c.p2;
     Real v = c.p1, x = Friction(p).Mu(c.p1) + c.amplitude;
     ASSERT_TRUE(ReferenceFold(p, x, v)) << "beta = " << c.p2;

@@ -1,7 +1,7 @@
-// The forced chart (issue 21 item 3): the GR curve of Den Hartog's non-stop
-// orbit against his closed-form stop condition, a PD curve point against a
-// one-parameter run located at that curve point's second parameter, and the
-// response grid's cells against the orbits FindForcedOrbits finds there.
+// The forced chart: a PD curve point (the one chart's, TraceOrbitCurve on
+// the forced chart's options) against a one-parameter run located at that
+// curve point's second parameter, and the response grid's cells against the
+// orbits FindForcedOrbits finds there.
 #include "stickslip/chart/forced_chart.hpp"
 
 #include <gtest/gtest.h>
@@ -18,19 +18,6 @@
 namespace stickslip {
 namespace {
 
-using forced_reference::Coulomb;
-
-// Den Hartog (1931), v = 0, beta = 0, mu_s = mu_k = mu: on the non-stop orbit
-// a reversal at x = -X has V cos(phi) = -X and V sin(phi) = mu U
-// (V = A / (1 - W^2), U = sin(pi/W) / (W (1 + cos(pi/W)))), so the slip
-// leaving it starts with x'' = X W^2 - mu: the motion goes on without a stop
-// while X W^2 > mu. With X = sqrt(V^2 - (mu U)^2) the boundary is
-//   A = mu |1 - W^2| sqrt(U^2 + W^-4).
-double DenHartogStopForce(double mu, double w) {
-  const double U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
-  return mu * std::abs(1 - w * w) * std::sqrt(U * U + 1 / (w * w * w * w));
-}
-
 ForcedChartOptions Options(ParameterAxis a1, double from1, double to1, ParameterAxis a2,
                            double from2, double to2) {
   ForcedChartOptions o;
@@ -39,39 +26,6 @@ ForcedChartOptions Options(ParameterAxis a1, double from1, double to1, Parameter
   o.flow.rtol = o.flow.atol = 1e-13;
   o.max_step = 0.02;
   return o;
-}
-
-TEST(ForcedChart, DenHartogGrazingCurveIsHisStopCondition) {
-  const double mu = 0.3;
-  for (const double w : {0.7, 1.5}) {  // one curve below and one above resonance
-    const ForcedChartOptions o = Options(Parameter::kOmega, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0,
-                                         Parameter::kForce, 0.05, 1.5);
-    // The non-stop orbit a little above the boundary, then the seed there.
-    const double a = DenHartogStopForce(mu, w) * 1.02;
-    const ForcedModel model(Coulomb(mu, mu, 0, 0, a, w));
-    ShootingOptions oo(ForcedModel::FlowDefaults());
-    oo.flow = o.flow;
-    const PeriodicOrbit orbit = ShootStroboscopic(model, a / (1 - w * w), 0.01, 1, oo);
-    ASSERT_TRUE(orbit.ok()) << orbit.message;
-    ASSERT_EQ(orbit.sticks, 0);
-    std::string why;
-    const ForcedCurve c = TraceForcedCurve(Coulomb(mu, mu, 0, 0, a, w), o, CurveKind::kGrazing, 1,
-                                           orbit.start.z[0], orbit.start.z[1], w, a, &why);
-    EXPECT_EQ(why, "") << c.ends.Text();
-    ASSERT_GT(c.points.size(), 10u);
-    double worst = 0;
-    for (const ForcedCurvePoint& p : c.points) {
-      const double ref = DenHartogStopForce(mu, p.p1);
-      EXPECT_NEAR(p.p2, ref, 1e-8 * std::max(1.0, ref)) << "Omega = " << p.p1;
-      EXPECT_TRUE(p.flag);  // the crossing margin
-      worst = std::max(worst, std::abs(p.p2 - ref));
-    }
-    std::printf(
-        "[ measured ] GR curve Omega in [%g, %g]: %zu points, %d evaluations, %.2f s, "
-        "max |A - A_DenHartog| = %.2e, ends %s\n",
-        c.points.front().p1, c.points.back().p1, c.points.size(), c.evaluations, c.seconds, worst,
-        c.ends.Text().c_str());
-  }
 }
 
 // The stribeck_forced study's scene (studies/stribeck_forced.ini).
@@ -104,15 +58,14 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const OrbitRow* pd = First(seed_run, SpecialKind::kPeriodDoubling);
   ASSERT_NE(pd, nullptr) << Name(seed_run.status);
   const ForcedChartOptions o = Options(Parameter::kOmega, 0.5, 0.8, Parameter::kForce, 0.25, 0.35);
-  std::string why;
-  const ForcedCurve c =
-      TraceForcedCurve(StribeckChartParams(0.3, pd->p), o, CurveKind::kPeriodDoubling,
-                       PeriodMultiple(seed_run), pd->start.z[0], pd->start.z[1], pd->p, 0.3, &why);
+  const ForcedModel model(StribeckChartParams(0.3, pd->p));
+  const SystemCurve c = TraceOrbitCurve(model, SystemOptions(model, o), CurveKind::kPeriodDoubling,
+                                        pd->start, pd->p, 0.3, seed_run.section, 1);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
   int checked = 0;
   for (const double target : {0.27, 0.33}) {
-    const ForcedCurvePoint* best = &c.points[0];
-    for (const ForcedCurvePoint& p : c.points)
+    const SystemCurvePoint* best = &c.points[0];
+    for (const SystemCurvePoint& p : c.points)
       if (std::abs(p.p2 - target) < std::abs(best->p2 - target)) best = &p;
     if (std::abs(best->p2 - target) > 0.01) continue;  // the curve ends before
     const OrbitBranch run = OmegaRun(best->p2);

@@ -14,6 +14,7 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "stickslip/chart/forced_chart.hpp"
+#include "stickslip/chart/system_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
@@ -34,6 +35,14 @@ ForcedChartOptions PointsChartOptions() {
   o.plane.from1 = 0.3, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
   o.max_step = 0.01;
   return o;
+}
+
+// The point's orbit at phase 0 (carried there from its section phase).
+FlowPoint AtPhaseZero(const ForcedModel& model, const SystemCurvePoint& p) {
+  const FlowPoint& z = p.orbit.start;
+  return testing_util::RunForced(model, z, z.t + (2 * M_PI - z.z[2]) / model.omega(), {},
+                                 BeltFlow())
+      .end;
 }
 
 // The m = 1 branch in Omega from 1 down to 0.3 at force a, from the state
@@ -58,14 +67,11 @@ bool Sliding(SpecialKind l) {
 
 // As Locate below, for any label `want` accepts; the fold's eigenvector (at
 // +1 if fold, else -1) sets the start's offset.
-double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(SpecialKind),
+double LocateAny(const SystemCurvePoint& p, int m, bool fold, bool (*want)(SpecialKind),
                  SpecialKind* found = nullptr, ParameterAxis axis = Parameter::kOmega) {
   const double at = axis == Parameter::kOmega ? p.p1 : p.p2;
   const ForcedModel model(Seed(p.p2, p.p1));
-  const double t0 = p.phase / model.omega();
-  const FlowPoint z = testing_util::RunForced(model, ForcedStart(model, t0, p.x0, p.xdot0),
-                                              model.period(), {}, BeltFlow())
-                          .end;
+  const FlowPoint z = AtPhaseZero(model, p);
   FlowRequest rq;
   rq.variational = true;
   const Mat2 M = testing_util::RunForced(model, ForcedStart(model, 0, z.z[0], z.z[1]),
@@ -95,22 +101,22 @@ double LocateAny(const ForcedCurvePoint& p, int m, bool fold, bool (*want)(Speci
   return best;
 }
 
-double Locate(const ForcedCurvePoint& p, int m, SpecialKind label) {
+double Locate(const SystemCurvePoint& p, int m, SpecialKind label) {
   if (label == SpecialKind::kFold)
     return LocateAny(p, m, true, [](SpecialKind l) { return l == SpecialKind::kFold; });
   return LocateAny(p, m, false, [](SpecialKind l) { return l == SpecialKind::kPeriodDoubling; });
 }
 
 // The curve point nearest force a, if within 0.01 of it.
-const ForcedCurvePoint* Near(const ForcedCurve& c, double a) {
-  const ForcedCurvePoint* best = nullptr;
-  for (const ForcedCurvePoint& p : c.points)
+const SystemCurvePoint* Near(const SystemCurve& c, double a) {
+  const SystemCurvePoint* best = nullptr;
+  for (const SystemCurvePoint& p : c.points)
     if (!best || std::abs(p.p2 - a) < std::abs(best->p2 - a)) best = &p;
   return best && std::abs(best->p2 - a) < 0.01 ? best : nullptr;
 }
 
 // Every point of c within max_step of the one before (scaled by the rectangle).
-void ExpectNoJumps(const ForcedCurve& c, const ForcedChartOptions& o) {
+void ExpectNoJumps(const SystemCurve& c, const ForcedChartOptions& o) {
   for (size_t i = 1; i < c.points.size(); ++i) {
     const double d = std::hypot((c.points[i].p1 - c.points[i - 1].p1) / o.plane.width1(),
                                 (c.points[i].p2 - c.points[i - 1].p2) / o.plane.width2());
@@ -129,15 +135,16 @@ int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double>
   for (const OrbitRow& s : run.special) {
     if (s.label != label) continue;
     ++seeds;
-    std::string why;
-    const ForcedCurve c = TraceForcedCurve(Seed(0.5, s.p), o, kind, PeriodMultiple(run),
-                                           s.start.z[0], s.start.z[1], s.p, 0.5, &why);
+    const ForcedModel model(Seed(0.5, s.p));
+    const SystemCurve c =
+        TraceOrbitCurve(model, SystemOptions(model, o), kind, s.start, s.p, 0.5, run.section, 1);
+    const int m = c.section.turns;
     EXPECT_GT(c.points.size(), 5u) << c.ends.Text();
     ExpectNoJumps(c, o);
     for (const double a : levels) {
-      const ForcedCurvePoint* p = Near(c, a);
+      const SystemCurvePoint* p = Near(c, a);
       if (!p) continue;
-      const double located = Locate(*p, c.m, label);
+      const double located = Locate(*p, m, label);
       EXPECT_NEAR(p->p1, located, 1e-8) << Name(label) << " at force " << p->p2;
       std::printf(
           "[ measured ] %s curve from Omega %.5f at force %.10f: Omega %.12f, one-parameter run "
@@ -153,12 +160,13 @@ int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double>
     // (measured 1e-12 to 7.5e-6; the last point before, as the tracer ended
     // without the bisection, lies up to max_step = 1e-2 away).
     for (const bool first : {true, false}) {
-      if ((first ? c.ends.first : c.ends.last).kind != CurveEndKind::kSliding) continue;
-      const ForcedCurvePoint& p = first ? c.points.front() : c.points.back();
+      const CurveEndKind end = (first ? c.ends.first : c.ends.last).kind;
+      if (end != CurveEndKind::kSliding && end != CurveEndKind::kStopped) continue;
+      const SystemCurvePoint& p = first ? c.points.front() : c.points.back();
       SpecialKind which = SpecialKind::kNone;
       const bool fold = label == SpecialKind::kFold;
-      const double w = LocateAny(p, c.m, fold, Sliding, &which);
-      const double a = LocateAny(p, c.m, fold, Sliding, nullptr, Parameter::kForce);
+      const double w = LocateAny(p, m, fold, Sliding, &which);
+      const double a = LocateAny(p, m, fold, Sliding, nullptr, Parameter::kForce);
       const double dw = (w - p.p1) / o.plane.width1(), da = (a - p.p2) / o.plane.width2();
       const double d = std::isnan(da)   ? std::abs(dw)
                        : std::isnan(dw) ? std::abs(da)

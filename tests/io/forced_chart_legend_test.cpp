@@ -27,16 +27,16 @@ TEST(ForcedChartLegend, EveryCurveKindHasItsOwnStyleAndCodim2DotsAKeyEntry) {
   for (CurveKind kind :
        {CurveKind::kGrazing, CurveKind::kFold, CurveKind::kPeriodDoubling, CurveKind::kTorus})
     for (int m : {1, 2}) {
-      ForcedCurve c;
-      c.kind = kind, c.m = m;
-      ForcedCurvePoint p;
+      SystemCurve c;
+      c.kind = kind, c.section.turns = m;
+      SystemCurvePoint p;
       p.p1 = 1, p.p2 = 0.5;
       c.points = {p, p};
-      r.curves.push_back(c);
+      r.chart.curves.push_back(c);
     }
-  ForcedCodim2 gg;
+  SystemCodim2 gg;
   gg.label = Codim2Label::kDoubleGrazing, gg.p1 = 1, gg.p2 = 0.5;
-  r.codim2.push_back(gg);
+  r.chart.codim2.push_back(gg);
   Plane pl = ForcedChartOptions().plane;
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 1;
   const std::string script = ForcedChartScript(r, pl, "test", FigureFormat::kPng);
@@ -93,17 +93,17 @@ TEST(ForcedChartLegend, Codim2LabelsKeepOffCurvesAndEachOther) {
   Plane pl = ForcedChartOptions().plane;
   pl.from1 = 0.5, pl.to1 = 1.5, pl.from2 = 0, pl.to2 = 1;
   for (double shift : {0.0, 0.02}) {  // two parallel curves, one through each point
-    ForcedCurve c;
+    SystemCurve c;
     c.kind = CurveKind::kTorus;
     for (int i = 0; i <= 20; ++i) {
-      ForcedCurvePoint p;
+      SystemCurvePoint p;
       p.p1 = 0.9 + shift + 0.01 * i, p.p2 = 0.4 + 0.01 * i;
       c.points.push_back(p);
     }
-    r.curves.push_back(c);
-    ForcedCodim2 r1;
+    r.chart.curves.push_back(c);
+    SystemCodim2 r1;
     r1.label = Codim2Label::kR1, r1.p1 = 1 + shift, r1.p2 = 0.5;
-    r.codim2.push_back(r1);
+    r.chart.codim2.push_back(r1);
   }
   const std::string script = ForcedChartScript(r, pl, "test", FigureFormat::kPng);
   std::vector<TextBox> boxes;
@@ -115,7 +115,7 @@ TEST(ForcedChartLegend, Codim2LabelsKeepOffCurvesAndEachOther) {
     return std::abs(x - b.x) < b.hw && std::abs(y - b.y) < b.hh;
   };
   for (const TextBox& b : boxes) {
-    for (const ForcedCurve& c : r.curves)
+    for (const SystemCurve& c : r.chart.curves)
       for (size_t i = 1; i < c.points.size(); ++i)
         for (int k = 0; k <= 50; ++k) {  // the segment, sampled every 0.6 px or closer
           const double t = k / 50.0;
@@ -125,7 +125,7 @@ TEST(ForcedChartLegend, Codim2LabelsKeepOffCurvesAndEachOther) {
               << "a curve runs through the label at " << b.x << ", " << b.y << "\n"
               << script;
         }
-    for (const ForcedCodim2& p : r.codim2)
+    for (const SystemCodim2& p : r.chart.codim2)
       EXPECT_FALSE(inside(b, (p.p1 - pl.from1) * 870, p.p2 * 576.2)) << "a label on a dot";
   }
   EXPECT_TRUE(std::abs(boxes[0].x - boxes[1].x) >= boxes[0].hw + boxes[1].hw ||

@@ -37,18 +37,19 @@ plot 'response.tsv' using 1:2:(0.0088374999999999999):(0.0069437499999999994):(C
      NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
      'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
-     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
+     'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
+     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
      'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
-     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
+     'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
      'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
+     'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding'
 unset output
