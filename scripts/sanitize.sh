@@ -92,11 +92,11 @@ ctest_log="$asan_build/ctest-sanitize.log"
 ctest_ok=1
 # Three long reference runs are left to the Release suite: each repeats, for
 # a minute or more under the sanitizers, code that shorter tests here run too
-# (the doubled chart curves are the forced chart's curves at m = 2 and 4:
-# ForcedChart*, ForcedCurvePoints.*; the sliding bifurcations: the other
+# (the doubled chart curves are the one chart's curves at m = 2 and 4:
+# SystemChartForced*, ForcedCurvePoints.*; the sliding bifurcations: the other
 # ForcedSwitchingSliding tests). Under ASan they took 185 s, 78 s and 33 s of
 # the suite's 609 s (docs/benchmarks.md, "CI build time").
-heavy='^(ForcedChartDoubled\.(Second|Third)DoublingCurveMatchesOneParameterRuns|'
+heavy='^(SystemChartDoubled\.(Second|Third)DoublingCurveMatchesOneParameterRuns|'
 heavy+='ForcedSwitchingSliding\.DenHartogFloorReferenceHasCrossingThenGrazingSlidingNoSwitching)$'
 # shellcheck disable=SC2086
 ctest --test-dir "$asan_build" --output-on-failure -j "$jobs" -L unit -E "$heavy" ${CTEST_ARGS:-} \

@@ -470,7 +470,7 @@ def upper_gr(r, col):
 
 
 def left_lp(r, end, col):
-    """The LP curve that ends at the cusp near (0.445, 0.19): its lowest or highest point."""
+    """The LP curve that ends near (0.445, 0.19): its lowest or highest point."""
     low = {}
     for row in r.table("curves.tsv"):
         if row["curve"] == "LP":

@@ -41,8 +41,10 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
     bool cut = false;
     r.grid = ForcedResponseGrid(base, o, &cut);
     r.grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    if (r.grid.failed > 0 && r.status == ChartStatus::kOk)
-      r.status = ChartStatus::kPartial, r.message = r.grid.failure;
+    if (r.grid.failed > 0) {
+      r.message = r.status == ChartStatus::kOk ? r.grid.failure : r.message + "; " + r.grid.failure;
+      r.status = ChartStatus::kPartial;
+    }
   }
   if (cancelled()) r.status = ChartStatus::kCancelled, r.message = "cancelled";
   return r;

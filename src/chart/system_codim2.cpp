@@ -197,6 +197,36 @@ void EndsAndCusps(const SystemChartOptions& o, SystemCurve* c) {
 
 }  // namespace
 
+// The curve's points in order (the back way's stretches reversed, then the
+// first, then the forward way's), each sampled on its stretch's problem, and
+// its codimension-two points (system_codim2.hpp).
+void Assemble(const std::vector<CurveStretch>& back, const CurveStretch& first,
+              const std::vector<CurveStretch>& fwd, const VectorXd saddle[2],
+              const SystemChartOptions& o, SystemCurve* curve) {
+  std::vector<CurveStretch> all;
+  for (auto it = back.rbegin(); it != back.rend(); ++it)
+    all.push_back({it->problem, std::vector<VectorXd>(it->u.rbegin(), it->u.rend())});
+  all.push_back(first);
+  all.insert(all.end(), fwd.begin(), fwd.end());
+  std::vector<TracedPoint> traced;
+  for (std::size_t k = 0; k < all.size(); ++k)
+    for (const VectorXd& u : all[k].u) {
+      if (o.cancelled && o.cancelled()) return;
+      SystemCurvePoint p;
+      std::string why;
+      if (!all[k].problem->Sample(u, &p.orbit, &p.test, &why)) continue;
+      const int i1 = all[k].problem->plane_index();
+      p.p1 = u[i1], p.p2 = u[i1 + 1];
+      for (int t = 0; t < 3; ++t) p.tests[t] = orbit_detail::RowTest(p.orbit, t);
+      curve->points.push_back(std::move(p));
+      traced.push_back({static_cast<int>(k), u});
+    }
+  std::vector<BeyondEnd> beyond;
+  if (saddle[0].size() > 0) beyond.push_back({true, 0, saddle[0]});
+  if (saddle[1].size() > 0) beyond.push_back({false, static_cast<int>(all.size()) - 1, saddle[1]});
+  LocateCodim2(all, traced, beyond, o, curve);
+}
+
 void LocateCodim2(const std::vector<CurveStretch>& all, const std::vector<TracedPoint>& traced,
                   const std::vector<BeyondEnd>& beyond, const SystemChartOptions& o,
                   SystemCurve* c) {

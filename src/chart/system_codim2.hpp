@@ -47,4 +47,13 @@ void LocateCodim2(const std::vector<CurveStretch>& stretches,
                   const std::vector<TracedPoint>& traced, const std::vector<BeyondEnd>& beyond,
                   const SystemChartOptions& o, SystemCurve* curve);
 
+/// The curve's points in order (the back way's stretches reversed, then the
+/// first, then the forward way's), each sampled on its stretch's problem,
+/// into curve->points, and its codimension-two points (LocateCodim2);
+/// saddle[0], saddle[1]: neutral saddles dropped beyond its first and last
+/// ends (empty: none).
+void Assemble(const std::vector<CurveStretch>& back, const CurveStretch& first,
+              const std::vector<CurveStretch>& fwd, const Eigen::VectorXd saddle[2],
+              const SystemChartOptions& o, SystemCurve* curve);
+
 }  // namespace stickslip

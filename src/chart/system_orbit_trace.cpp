@@ -148,6 +148,7 @@ class OrbitTracer {
     t.stop = [this, pr](const VectorXd& u) {
       bool saddle = false;
       std::string why = BadPoint(*pr, u, bound_, tol_, kind_, &saddle);
+      if (why.empty()) why = Creeps(u, pr->plane_index());
       if (!why.empty()) {
         bad_.push_back({u, why, saddle});
         return true;
@@ -155,6 +156,22 @@ class OrbitTracer {
       return clocked_ && pr->SlipGap(u) < Tolerances().forced_section_near_stick;
     };
     return t;
+  }
+
+  // Why the curve creeps at u, or "": kCurveCreepSteps accepted points in a
+  // row each less than kCurveCreepStep of the rectangle from the last (the
+  // corrector's steps shrink on a kink of the map ahead).
+  std::string Creeps(const VectorXd& u, int i1) {
+    const double w1 = o_.plane.to1 - o_.plane.from1, w2 = o_.plane.to2 - o_.plane.from2;
+    const bool small = last_.size() == u.size() &&
+                       std::hypot((u[i1] - last_[i1]) / w1, (u[i1 + 1] - last_[i1 + 1]) / w2) <
+                           Tolerances::kCurveCreepStep;
+    creep_ = small ? creep_ + 1 : 0;
+    last_ = u;
+    if (creep_ < Tolerances::kCurveCreepSteps) return {};
+    creep_ = 0;
+    return "the curve creeps: " + std::to_string(Tolerances::kCurveCreepSteps) + " steps under " +
+           Num(Tolerances::kCurveCreepStep) + " of the rectangle (a kink of the map ahead)";
   }
 
   // Drops a way's last point if it is bad, the end saying why; a neutral
@@ -242,6 +259,8 @@ class OrbitTracer {
   double bound_ = 0, tol_ = 0;
   bool clocked_ = false;
   GrazingMargin margin_ = GrazingMargin::kArrival;
+  VectorXd last_;  // the last accepted point (Creeps)
+  int creep_ = 0;
   struct Bad {
     VectorXd u;
     std::string why;
@@ -249,36 +268,6 @@ class OrbitTracer {
   };
   std::vector<Bad> bad_;
 };
-
-// The curve's points in order (the back way's stretches reversed, then the
-// first, then the forward way's), each sampled on its stretch's problem, and
-// its codimension-two points (system_codim2.hpp).
-void Assemble(const std::vector<CurveStretch>& back, const CurveStretch& first,
-              const std::vector<CurveStretch>& fwd, const VectorXd saddle[2],
-              const SystemChartOptions& o, SystemCurve* curve) {
-  std::vector<CurveStretch> all;
-  for (auto it = back.rbegin(); it != back.rend(); ++it)
-    all.push_back({it->problem, std::vector<VectorXd>(it->u.rbegin(), it->u.rend())});
-  all.push_back(first);
-  all.insert(all.end(), fwd.begin(), fwd.end());
-  std::vector<TracedPoint> traced;
-  for (std::size_t k = 0; k < all.size(); ++k)
-    for (const VectorXd& u : all[k].u) {
-      if (o.cancelled && o.cancelled()) return;
-      SystemCurvePoint p;
-      std::string why;
-      if (!all[k].problem->Sample(u, &p.orbit, &p.test, &why)) continue;
-      const int i1 = all[k].problem->plane_index();
-      p.p1 = u[i1], p.p2 = u[i1 + 1];
-      for (int t = 0; t < 3; ++t) p.tests[t] = orbit_detail::RowTest(p.orbit, t);
-      curve->points.push_back(std::move(p));
-      traced.push_back({static_cast<int>(k), u});
-    }
-  std::vector<BeyondEnd> beyond;
-  if (saddle[0].size() > 0) beyond.push_back({true, 0, saddle[0]});
-  if (saddle[1].size() > 0) beyond.push_back({false, static_cast<int>(all.size()) - 1, saddle[1]});
-  LocateCodim2(all, traced, beyond, o, curve);
-}
 
 }  // namespace
 

@@ -42,6 +42,12 @@ struct FixedTolerances {
   // R1 on an LP curve, R2 on a PD curve: two multipliers within this of +1
   // (-1) at the located point (else the NS test's zero is another pair's).
   static constexpr double kResonantPair = 1e-3;
+  // Chart curves: a way whose accepted points advance less than
+  // kCurveCreepStep of the rectangle kCurveCreepSteps times in a row ends
+  // there (on the Stribeck chart with max_m 8 two PD curves crept 2400 steps
+  // of about 1e-7 toward a kink: 78 s; chain2's PD curve crept 6 steps).
+  static constexpr double kCurveCreepStep = 1e-6;
+  static constexpr int kCurveCreepSteps = 20;
   // Orbit branches: the edge search behind a failed chord steps at least
   // kBranchEdgeStep (1 + |p|), and a switched branch's kBranchEdgeStep |range|.
   static constexpr double kBranchEdgeStep = 1e-6;

@@ -152,13 +152,12 @@ int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double>
           Name(label), s.p, p->p2, p->p1, located, std::abs(p->p1 - located));
       ++checked;
     }
-    // An end on a sliding point lies on the sliding curve: its distance to
-    // the chord between the sliding points of the runs in Omega at its force
-    // and in force at its Omega (each located by its own bisection), within
-    // 2e-5: the end is where the tracer's points stop correcting, and the
-    // chord's central differences (step 6e-6) straddle the kink before it
-    // (measured 1e-12 to 7.5e-6; the last point before, as the tracer ended
-    // without the bisection, lies up to max_step = 1e-2 away).
+    // An end where the map stops being smooth (or SL) lies on the sliding
+    // curve: its distance to the chord between the sliding points of the runs
+    // in Omega at its force and in force at its Omega (each located by its own
+    // bisection), within 2e-5 of the rectangle: the tracer stops at the first
+    // accepted point past the kink, not at the exact root of the two
+    // conditions (measured 1.4e-7 to 4.9e-6).
     for (const bool first : {true, false}) {
       const CurveEndKind end = (first ? c.ends.first : c.ends.last).kind;
       if (end != CurveEndKind::kSliding && end != CurveEndKind::kStopped) continue;

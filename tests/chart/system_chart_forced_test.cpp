@@ -1,11 +1,11 @@
 // The one chart (ChartSystem, system_chart.hpp) on the forced oscillator, a
 // system with a clock (studies/seed_forced.ini's (Omega, A) rectangle): its
-// LP and PD curves of stroboscopic orbits lie on the forced chart's
-// (ForcedChart: its own tracer, 2 x 2 test determinants and section
-// rephasing; its curves as committed in docs/figures/seed_forced_chart) to
-// that chart's chord accuracy, and at points of its PD curve
-// the forced branch in A (ContinueForced, which locates PD by bisection on
-// the test's sign along the branch) has its PD at the curve's A.
+// LP, PD and GR curves of stroboscopic orbits lie on those the forced chart's
+// own tracer drew before it was replaced (2 x 2 test determinants, its own
+// rephasing and seeds: tests/chart/data/seed_forced_forced_tracer_curves.tsv)
+// to that chart's chord accuracy, and at points of its PD curves the branch
+// in A (the one branch driver, which locates PD by bisection on the test's
+// sign along the branch) has its PD at the curve's A.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,8 +60,8 @@ TEST(SystemChartForced, CurvesLieOnTheForcedChartsCurves) {
   const SystemChart& c = Chart();
   EXPECT_EQ(c.status, ChartStatus::kOk) << c.message;
   // The forced chart's curves by kind and period multiple, as polylines.
-  const testing_util::Tsv f = testing_util::ReadTsv(
-      testing_util::ReadFile(STICKSLIP_SOURCE_DIR "/docs/figures/seed_forced_chart/curves.tsv"));
+  const testing_util::Tsv f = testing_util::ReadTsv(testing_util::ReadFile(
+      STICKSLIP_SOURCE_DIR "/tests/chart/data/seed_forced_forced_tracer_curves.tsv"));
   struct P {
     double p1, p2;
   };

@@ -21,7 +21,7 @@ set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
 set label "CP" at 0.65316437982255893,0.33354508886481576 center front font ',12' noenhanced
-set label "GG" at 0.45772784142177314,0.49351787875959957 center front font ',12' noenhanced
+set label "GG" at 0.45772787214741323,0.49351775035093437 center front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.011362499999999999):(0.0069437499999999994):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
      NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
      NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \

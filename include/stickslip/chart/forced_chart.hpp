@@ -44,7 +44,7 @@ struct ForcedChartOptions {
   Plane plane{Parameter::kOmega, Parameter::kForce, 0.5, 2, 0.05, 1};
   FlowOptions flow = ForcedModel::FlowDefaults();  ///< rtol, atol 1e-12 (forced flow defaults)
   int max_m = 2;                                   ///< curves of orbits of period multiple 1..max_m
-  int seed_lines = 3;         ///< one-parameter runs per axis, across the rectangle
+  int seed_lines = 3;         ///< lines per axis across the rectangle, each seeding curves
   double max_step = 0.01;     ///< largest curve step, fraction of the rectangle
   double max_amplitude = 50;  ///< seed branches stop at |x| = max_amplitude
   bool curves = true;
