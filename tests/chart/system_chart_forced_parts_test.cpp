@@ -167,6 +167,27 @@ TEST(SystemChartForcedParts, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMin
     }
 }
 
+// The Omega of the `label` point nearest p.p1 that a one-parameter run in
+// Omega at p's force, through p's orbit over p.p1 +- 2e-3 (either way first),
+// locates; NaN if none.
+double RunPointNear(const ForcedParams& base, const SystemCurvePoint& p,
+                    const PoincareSection& section, SpecialKind label) {
+  ForcedParams q = base;
+  q.force = p.p2;
+  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  o.palc.ds = o.palc.ds_max = 2e-4;
+  double best = NAN;
+  for (const double side : {1.0, -1.0}) {
+    q.omega = p.p1 + side * 2e-3;
+    const OrbitBranch b = ContinueOrbits(ForcedModel(q), ForcedModel::kOmegaIndex, p.orbit.start,
+                                         section, p.p1 - side * 2e-3, o);
+    for (const OrbitRow& r : b.special)
+      if (r.label == label && !(std::abs(best - p.p1) <= std::abs(r.p - p.p1))) best = r.p;
+    if (!std::isnan(best)) break;
+  }
+  return best;
+}
+
 // The GR curve of the pure-slip orbits on studies/forced_ns_seed.ini (the gap
 // margin, on the slip field without switching): it crosses the rectangle, and
 // at points across it a one-parameter run in Omega through the point's orbit
@@ -187,21 +208,7 @@ TEST(SystemChartForcedParts, GapGrazingCurveMatchesOneParameterRuns) {
   int checked = 0;
   for (std::size_t i = 10; i < gr->points.size(); i += gr->points.size() / 6) {
     const SystemCurvePoint& p = gr->points[i];
-    ForcedParams q = base;
-    q.force = p.p2;
-    OrbitBranchOptions o(ForcedModel::FlowDefaults());
-    o.palc.ds = o.palc.ds_max = 2e-4;
-    double best = NAN;
-    for (const double side : {1.0, -1.0}) {
-      q.omega = p.p1 + side * 2e-3;
-      const OrbitBranch b = ContinueOrbits(ForcedModel(q), ForcedModel::kOmegaIndex, p.orbit.start,
-                                           gr->section, p.p1 - side * 2e-3, o);
-      for (const OrbitRow& row : b.special)
-        if (row.label == SpecialKind::kGrazing &&
-            !(std::abs(best - p.p1) <= std::abs(row.p - p.p1)))
-          best = row.p;
-      if (!std::isnan(best)) break;
-    }
+    const double best = RunPointNear(base, p, gr->section, SpecialKind::kGrazing);
     std::printf("[ measured ] GR curve point Omega %.12f A %.6f: the run's GR %.2e away\n", p.p1,
                 p.p2, best - p.p1);
     EXPECT_LT(std::abs(best - p.p1), 1e-10) << "A = " << p.p2;
@@ -225,20 +232,7 @@ TEST(SystemChartForcedParts, NsCurvePointsMatchOneParameterRunsInOmega) {
     for (std::size_t i = 0; i < cv.points.size(); i += 12) {
       const SystemCurvePoint& p = cv.points[i];
       if (p.p2 < 0.01) continue;  // near the tongue's tip
-      ForcedParams q = base;
-      q.force = p.p2;
-      OrbitBranchOptions o(ForcedModel::FlowDefaults());
-      o.palc.ds = o.palc.ds_max = 2e-4;
-      double best = NAN;
-      for (const double side : {1.0, -1.0}) {
-        q.omega = p.p1 + side * 2e-3;
-        const OrbitBranch b = ContinueOrbits(ForcedModel(q), ForcedModel::kOmegaIndex,
-                                             p.orbit.start, cv.section, p.p1 - side * 2e-3, o);
-        for (const OrbitRow& r : b.special)
-          if (r.label == SpecialKind::kTorus && !(std::abs(best - p.p1) <= std::abs(r.p - p.p1)))
-            best = r.p;
-        if (!std::isnan(best)) break;
-      }
+      const double best = RunPointNear(base, p, cv.section, SpecialKind::kTorus);
       std::printf("[ measured ] NS curve point Omega %.12f at force %.6f: run %.12f (%.1e)\n", p.p1,
                   p.p2, best, std::abs(p.p1 - best));
       EXPECT_NEAR(p.p1, best, 1e-9) << "force " << p.p2;
