@@ -8,6 +8,7 @@
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -17,7 +18,8 @@
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/flow.hpp"
-#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 
 namespace stickslip::python {
 
@@ -59,7 +61,8 @@ struct PyForcedOrbit {
   bool stable = false, from_exit_map = false;
 };
 
-PyForcedOrbit MakeOrbit(const stickslip::PeriodicOrbit& o, int m, const std::vector<Vec2>& pts,
+PyForcedOrbit MakeOrbit(const stickslip::PeriodicOrbit& o, int m,
+                        const std::vector<Eigen::VectorXd>& pts,
                         bool exit_map) {
   PyForcedOrbit r;
   const Extrema e = OrbitExtrema(o);
@@ -140,29 +143,32 @@ PyForcedOrbit Orbit(const ForcedParams& p, double x0, double xdot0, int m,
     r = ShootStroboscopic(model, x0, xdot0, m, o);
   }
   if (!r.ok()) RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
-  return MakeOrbit(r, m, {Vec2(r.start.z[0], r.start.z[1])}, false);
+  return MakeOrbit(r, m, {r.start.z}, false);
 }
 
 std::vector<PyForcedOrbit> Scan(const ForcedParams& p, int max_m, int max_sticks, int grid,
                                 int exit_samples, double radius, std::optional<double> rtol,
                                 std::optional<double> atol) {
   const ForcedModel model(p);
-  ForcedScanOptions o;
+  OrbitSearchOptions o;
   o.orbit = ShootingOptions(FlowOf(rtol, atol));
   o.max_m = max_m, o.max_sticks = max_sticks, o.grid = grid, o.exit_samples = exit_samples;
-  o.radius = radius;
+  if (!(radius >= 0) || !std::isfinite(radius))
+    throw InvalidArgument("radius = " + Repr(radius) + " must be >= 0");
+  o.half_width = model.SearchBox();  // radius r: x within r, x' within r max(1, Omega)
+  if (radius > 0) o.half_width = {radius, radius * std::max(1.0, p.omega)};
   const std::string e = o.ValidationError();
   if (!e.empty()) throw InvalidArgument(e);
   Interrupt interrupt;
   o.cancelled = [&] { return interrupt(); };
-  ForcedOrbits r;
+  FoundOrbits r;
   {
     py::gil_scoped_release nogil;
-    r = FindForcedOrbits(model, o);
+    r = FindOrbits(model, o);
   }
   interrupt.RaiseIfInterrupted();
   std::vector<PyForcedOrbit> out;
-  for (const ForcedScanOrbit& s : r.orbits)
+  for (const FoundOrbit& s : r.orbits)
     out.push_back(MakeOrbit(s.orbit, s.m, s.points, s.from_exit_map));
   return out;
 }

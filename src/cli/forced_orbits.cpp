@@ -1,13 +1,14 @@
 // ss_simulate --force A --omega W --orbits (simulate_forced.hpp): every
 // periodic orbit of period multiple m <= --max_m at one parameter point, by
-// FindForcedOrbits (forced/orbit_scan.hpp), in orbits.tsv: one row per
+// FindOrbits (orbits/orbit_search.hpp), in orbits.tsv: one row per
 // stroboscopic point, the orbit's data repeated; orbits.gp draws the points.
 #include <iostream>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/simulate_forced.hpp"
-#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/forced/branch.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/io/figure_style.hpp"
 
 namespace stickslip::cli {
@@ -35,8 +36,10 @@ std::string OrbitsScript(const std::string& title, FigureFormat f) {
 
 int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::string& command) {
   const ForcedInputs in = ForcedInputsFromArguments(args);
-  ForcedScanOptions so;
+  const ForcedModel model(in.p);
+  OrbitSearchOptions so;
   so.orbit = ShootingOptions(in.flow);
+  so.half_width = model.SearchBox();
   so.max_m = static_cast<int>(args.Integer("max_m", so.max_m));
   if (so.max_m < 1 || so.max_m > kMaxPeriodMultiple)
     throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
@@ -49,7 +52,7 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
     app.run().Heartbeat("");
     return app.run().Cancelled();
   };
-  const ForcedOrbits r = FindForcedOrbits(ForcedModel(in.p), so);
+  const FoundOrbits r = FindOrbits(model, so);
   app.run().Phase("writing");
   const std::string title = DescribeModel(in.p.base) + " force=" + FormatNumber(in.p.force) +
                             " omega=" + FormatNumber(in.p.omega);
@@ -67,13 +70,13 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
               "stable", "found_by"});
   t.PrependMeta(meta);
   int index = 0;
-  for (const ForcedScanOrbit& so_ : r.orbits) {
+  for (const FoundOrbit& so_ : r.orbits) {
     const PeriodicOrbit& o = so_.orbit;
     const Extrema e = OrbitExtrema(o);
     ++index;
     for (size_t k = 0; k < so_.points.size(); ++k)
       t.AddRow({index, so_.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
-                static_cast<int>(k + 1), so_.points[k].x(), so_.points[k].y(), e.x_min, e.x_max,
+                static_cast<int>(k + 1), so_.points[k][0], so_.points[k][1], e.x_min, e.x_max,
                 e.xdot_min, e.xdot_max, o.multipliers[0].real(), o.multipliers[0].imag(),
                 o.multipliers[1].real(), o.multipliers[1].imag(), std::abs(o.multipliers[0]),
                 o.stable ? 1 : 0, so_.from_exit_map ? "exit-map" : "strobe"});
@@ -83,7 +86,7 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
   if (!app.Finish("orbits.gp", {figure}, {figure})) return kExitFailed;
   std::cout << prog << ": forced oscillator, " << title << "; " << r.orbits.size()
             << " periodic orbits with m <= " << so.max_m << "\n";
-  for (const ForcedScanOrbit& so_ : r.orbits)
+  for (const FoundOrbit& so_ : r.orbits)
     std::cout << "  m = " << so_.m << ", " << so_.orbit.sticks << " sticks, x_max "
               << FormatNumber(OrbitExtrema(so_.orbit).x_max) << ", |multiplier| "
               << FormatNumber(std::abs(so_.orbit.multipliers[0])) << ", "

@@ -9,7 +9,8 @@
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/forced/flow.hpp"
-#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/io/report.hpp"
 
 namespace stickslip::cli {
@@ -31,10 +32,10 @@ StartChoice StartChoiceFromArguments(const Arguments& args, bool restart) {
   c.all = args.Flag("all");
   if (args.Given("m")) {
     const long m = args.Integer("m", 0);
-    if (m < 1 || m > ForcedScanOptions::kMaxMultiple)
+    if (m < 1 || m > OrbitSearchOptions::kMaxMultiple)
       throw UsageError("invalid value '" + args.Text("m") + "' for " + args.Source("m") +
                        ": must be an integer in [1, " +
-                       std::to_string(ForcedScanOptions::kMaxMultiple) + "]");
+                       std::to_string(OrbitSearchOptions::kMaxMultiple) + "]");
     c.m = static_cast<int>(m);
   }
   if (restart) {  // --point is the restart's label
@@ -108,9 +109,9 @@ namespace {
 
 // The settled point lies on a scanned orbit: same m, near one of its points
 // (the settled iterate is within the attractor's contraction of it).
-bool SameOrbit(const ForcedScanOrbit& o, const StartOrbit& s) {
+bool SameOrbit(const FoundOrbit& o, const StartOrbit& s) {
   if (o.m != s.m) return false;
-  for (const Vec2& p : o.points)
+  for (const Eigen::VectorXd& p : o.points)
     if (std::abs(p[0] - s.x) + std::abs(p[1] - s.xdot) <=
         1e-5 * (1 + std::abs(s.x) + std::abs(s.xdot)))
       return true;
@@ -122,15 +123,16 @@ bool SameOrbit(const ForcedScanOrbit& o, const StartOrbit& s) {
 std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
                                     const std::optional<StartOrbit>& settled,
                                     const OrbitBranchOptions& o, int m, RunControl& run) {
-  ForcedScanOptions so;
+  OrbitSearchOptions so;
+  so.half_width = model.SearchBox();
   so.orbit = o.shooting;
   so.min_m = m > 0 ? m : 1;
   so.max_m = m > 0 ? m : kStartScanMaxM;
   so.cancelled = [&run] { return run.Cancelled(); };
-  const ForcedOrbits r = FindForcedOrbits(model, so);
+  const FoundOrbits r = FindOrbits(model, so);
   std::vector<StartOrbit> list;
   bool found = false;
-  for (const ForcedScanOrbit& f : r.orbits) {
+  for (const FoundOrbit& f : r.orbits) {
     if (std::abs(OrbitExtrema(f.orbit).x_max) > o.max_amplitude) continue;
     StartOrbit s;
     s.m = f.m, s.sticks = f.orbit.sticks, s.stable = f.orbit.stable;

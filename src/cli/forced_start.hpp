@@ -1,5 +1,5 @@
 // Where a forced branch starts (ss_continue --force without --restart): the
-// orbits at --from that a stroboscopic scan finds (FindForcedOrbits, m <=
+// orbits at --from that a stroboscopic scan finds (FindOrbits, orbit_search.hpp, m <=
 // kStartScanMaxM, or m = --m) together with the attractor the transient from
 // rest settles on (any m <= kSettleMaxPeriod), numbered by m, then x_max.
 // By default the branch starts on the attractor; --all starts one branch on
@@ -24,7 +24,7 @@ constexpr int kStartScanMaxM = 12;      // the scan's work grows like max_m^2
 constexpr int kSettleMaxPeriod = 32;    // the settled attractor's period bound
 
 // The options that choose the start, validated at entry (UsageError naming
-// the option): --all, --m M in [1, ForcedScanOptions::kMaxMultiple], --point N
+// the option): --all, --m M in [1, OrbitSearchOptions::kMaxMultiple], --point N
 // >= 1 (without --restart). Not with --restart or --switch.
 struct StartChoice {
   bool all = false;

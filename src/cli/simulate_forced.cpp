@@ -154,7 +154,7 @@ void AddSimulateForcedOptions(po::options_description& d) {
                   "cos(Omega t) = 1; default) or exit (every stick exit)")(
       "orbits", po::bool_switch(),
       "forced: instead of a trajectory, every periodic orbit of period multiple m <= max_m at "
-      "these parameters (stable or not; FindForcedOrbits), in orbits.tsv, one row per "
+      "these parameters (stable or not; FindOrbits), in orbits.tsv, one row per "
       "stroboscopic point")("max_m", Value()->value_name("M"),
                             "with --orbits: the largest period multiple, 1..12 (default 4)");
 }

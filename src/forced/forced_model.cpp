@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "numerics/numbers.hpp"
@@ -47,6 +48,12 @@ Mat2 ForcedModel::Jacobian(Mode m, double /*t*/, const Vec2& z) const {
       m == Mode::kSlipBelow ? -friction_.DMu(v() - z[1]) : -friction_.DMu(z[1] - v());
   J << 0.0, 1.0, -1.0, -two_beta_ + slope;
   return J;
+}
+
+std::array<double, 2> ForcedModel::SearchBox() const {
+  const double w = omega(), b = beta();
+  const double r = force() / std::max({std::abs(1 - w * w), 2 * b * w, 0.2}) + static_limit() + v();
+  return {r, r * std::max(1.0, w)};
 }
 
 Mode ForcedModel::ModeAfterArrival(Mode from, double t, double x) const {

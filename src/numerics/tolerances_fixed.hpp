@@ -23,6 +23,11 @@ struct FixedTolerances {
   // Forced scan: stroboscopic points within kSameStrobe (relative) are one
   // orbit (far above the orbits' 1e-12, far below two orbits' spacing).
   static constexpr double kSameStrobe = 1e-6;
+  // Orbit search (orbit_search.hpp): a box of starts not given is the extent
+  // of a run of kSearchBoxPeriods clock periods from its centre, times
+  // kSearchBoxGrowth, and at least kSearchBoxFloor (1 + |centre|).
+  static constexpr double kSearchBoxPeriods = 10, kSearchBoxGrowth = 1.5;
+  static constexpr double kSearchBoxFloor = 1e-3;
   // Forced exit map: |dg/dt| below kExitMapFold is a fold (the map's slope 1).
   static constexpr double kExitMapFold = 1e-14;
   // Forced shooting: det(DP^m - I) below kSingularShooting (1 + max |a_ij|) is

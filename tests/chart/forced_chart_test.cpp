@@ -1,7 +1,7 @@
 // The forced chart: a PD curve point (the one chart's, TraceOrbitCurve on
 // the forced chart's options) against a one-parameter run located at that
 // curve point's second parameter, and the response grid's cells against the
-// orbits FindForcedOrbits finds there.
+// orbits FindOrbits finds there.
 #include "stickslip/chart/forced_chart.hpp"
 
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include "forced_run.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/forced/orbit_scan.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 
 namespace stickslip {
 namespace {
@@ -81,7 +81,7 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   EXPECT_GE(checked, 1) << c.ends.Text();
 }
 
-// Response cells against FindForcedOrbits at the cell centre: a periodic cell
+// Response cells against FindOrbits at the cell centre: a periodic cell
 // (m <= 4) has a stable orbit of that m and stick count there; a chaotic
 // cell has no stable orbit of m <= 4.
 TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
@@ -98,13 +98,14 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
       const bool check =
           (a.kind == AttractorKind::kPeriodic && a.m <= 4) || a.kind == AttractorKind::kChaotic;
       if (!check) continue;
-      ForcedScanOptions so;
-      so.orbit.flow = o.flow;
+      const ForcedModel model(StribeckChartParams(g.x2[j], g.x1[i]));
+      OrbitSearchOptions so;
+      so.orbit = ShootingOptions(o.flow);
       so.max_m = 4, so.max_sticks = 6;
-      const ForcedOrbits f =
-          FindForcedOrbits(ForcedModel(StribeckChartParams(g.x2[j], g.x1[i])), so);
+      so.half_width = model.SearchBox();
+      const FoundOrbits f = FindOrbits(model, so);
       bool match = false, any_stable = false;
-      for (const ForcedScanOrbit& s : f.orbits) {
+      for (const FoundOrbit& s : f.orbits) {
         any_stable = any_stable || s.orbit.stable;
         match = match || (s.orbit.stable && s.m == a.m && s.orbit.sticks == a.sticks);
       }

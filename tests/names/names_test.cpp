@@ -20,7 +20,6 @@
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/forced/orbit_scan.hpp"
 #include "stickslip/integrate/flow.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/orbits/orbit.hpp"

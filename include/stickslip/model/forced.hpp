@@ -5,6 +5,7 @@
 // |x + 2 beta v - A cos(Omega t)| <= mu_s.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -79,6 +80,11 @@ class ForcedModel final : public System {
   double omega() const { return p_.omega; }
   double period() const { return 2 * M_PI / p_.omega; }
   double static_limit() const { return p_.base.mu_s; }
+  /// The half-widths in (x, x') of the box of stroboscopic starts an orbit
+  /// search scans (OrbitSearchOptions::half_width): x within r = A /
+  /// max(|1 - Omega^2|, 2 beta Omega, 0.2) + mu_s + v (the linear response's
+  /// amplitude, bounded at resonance), x' within r max(1, Omega).
+  std::array<double, 2> SearchBox() const;
 
   /// The slip force on the mode's branch, extended smoothly across x' = v.
   double SlipForce(Mode m, double xdot) const {

@@ -16,6 +16,7 @@
 
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/orbits/orbit_status.hpp"
 
 namespace stickslip {
 
@@ -30,20 +31,6 @@ struct OrbitScanOptions {
   std::function<bool()> cancelled;  // polled by the flow; empty: never
   // Empty if valid, else one line naming the offending value.
   std::string ValidationError() const;
-};
-
-enum class OrbitScanStatus {
-  kOk,
-  kFailed,     // an integration failed; message says where
-  kCancelled,  // cancelled() returned true
-};
-template <>
-struct EnumNames<OrbitScanStatus> {
-  static constexpr NamedValue<OrbitScanStatus> kTable[] = {
-      {OrbitScanStatus::kOk, "ok"},
-      {OrbitScanStatus::kFailed, "failed"},
-      {OrbitScanStatus::kCancelled, "cancelled"},
-  };
 };
 
 struct PeriodicOrbits {

@@ -39,4 +39,20 @@ struct EnumNames<OrbitStatus> {
   };
 };
 
+/// How a scan for every orbit at a parameter point ended (orbit_scan.hpp,
+/// orbit_search.hpp).
+enum class OrbitScanStatus {
+  kOk,
+  kFailed,     // an integration failed; message says where
+  kCancelled,  // cancelled() returned true
+};
+template <>
+struct EnumNames<OrbitScanStatus> {
+  static constexpr NamedValue<OrbitScanStatus> kTable[] = {
+      {OrbitScanStatus::kOk, "ok"},
+      {OrbitScanStatus::kFailed, "failed"},
+      {OrbitScanStatus::kCancelled, "cancelled"},
+  };
+};
+
 }  // namespace stickslip
