@@ -22,6 +22,16 @@ SystemChartOptions SystemOptions(const ForcedModel& model, const ForcedChartOpti
   return so;
 }
 
+ResponseOptions ResponseOptionsOf(const ForcedChartOptions& o) {
+  ResponseOptions ro;
+  ro.n1 = o.n1, ro.n2 = o.n2;
+  AttractorOptions& a = ro.attractor;
+  a.iterate = o.iterate, a.iterate.flow = o.flow, a.max_period = o.max_period;
+  a.max_amplitude = o.max_amplitude, a.threads = o.threads;
+  ro.cancelled = o.cancelled;
+  return ro;
+}
+
 ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions& o) {
   const std::string e = o.ValidationError(base);
   if (!e.empty()) throw InvalidArgument(e);
@@ -37,10 +47,8 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
   r.status = r.chart.status, r.message = r.chart.message;
   r.seconds = r.chart.seconds;
   if (o.n1 > 0 && !cancelled()) {
-    const auto t1 = std::chrono::steady_clock::now();
-    bool cut = false;
-    r.grid = ForcedResponseGrid(base, o, &cut);
-    r.grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    r.grid = Responses(model, SystemOptions(model, o).plane, ResponseOptionsOf(o));
+    r.grid_seconds = r.grid.seconds;
     if (r.grid.failed > 0) {
       r.message = r.status == ChartStatus::kOk ? r.grid.failure : r.message + "; " + r.grid.failure;
       r.status = ChartStatus::kPartial;

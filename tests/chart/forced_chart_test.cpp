@@ -89,8 +89,8 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
   o.flow.rtol = o.flow.atol = 1e-12;
   o.iterate.flow = o.flow;
   o.n1 = 8, o.n2 = 5;
-  bool cancelled = false;
-  const ResponseGrid g = ForcedResponseGrid(StribeckChartParams(0.3, 0.8), o, &cancelled);
+  const ForcedModel base(StribeckChartParams(0.3, 0.8));
+  const ResponseGrid g = Responses(base, SystemOptions(base, o).plane, ResponseOptionsOf(o));
   int periodic = 0, chaotic = 0;
   for (int j = 0; j < g.n2; ++j)
     for (int i = 0; i < g.n1; ++i) {

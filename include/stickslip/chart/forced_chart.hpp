@@ -1,10 +1,7 @@
 // The chart of the forced oscillator in two of its parameters, e.g. the
 // (Omega, A) map: the one chart's curves of LP, PD, NS and GR and their
 // codimension-two points (ChartSystem, system_chart.hpp, on ForcedModel), and
-// the response type on a grid of the rectangle (period m and sticks per period
-// of the attractor reached, quasi-periodic, chaotic by the largest Lyapunov
-// exponent: chaos/lyapunov.hpp). Chaotic and quasi-periodic zones have no
-// exact boundaries: the grid is a raster.
+// the response grid of the rectangle (Responses, response_grid.hpp).
 #pragma once
 
 #include <complex>
@@ -14,26 +11,12 @@
 
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chart/chart.hpp"
+#include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/names.hpp"
 
 namespace stickslip {
-
-/// The response at one grid cell: the attractor reached from the previous
-/// cell's end state (each row of the grid swept along p1 like an orbit
-/// diagram), classified as forced_basin.hpp does. kUndecided is reported as
-/// quasi-periodic: not periodic within max_period and not chaotic.
-struct ResponseGrid {
-  int n1 = 0, n2 = 0;
-  std::vector<double> x1, x2;        ///< cell centres
-  std::vector<Attractor> cells;      ///< n1 * n2, index j * n1 + i (p1 fastest)
-  std::vector<double> lyapunov_err;  ///< the exponent's standard error per cell
-  std::vector<char> done;            ///< 0: not reached (cancelled)
-  int failed = 0;
-  std::string failure;  ///< the first failed cell and why
-  const Attractor& at(int i, int j) const { return cells[static_cast<size_t>(j) * n1 + i]; }
-};
 
 struct ForcedChartOptions {
   /// max_step's upper bound (a curve across the rectangle in at least 2 steps).
@@ -77,8 +60,8 @@ ForcedChartResult ForcedChart(const ForcedParams& base, const ForcedChartOptions
 /// parameter indices, the flow, max_m, seed lines, step, max_amplitude).
 SystemChartOptions SystemOptions(const ForcedModel& model, const ForcedChartOptions& options);
 
-/// The response grid alone (ForcedChart's second half).
-ResponseGrid ForcedResponseGrid(const ForcedParams& base, const ForcedChartOptions& options,
-                                bool* cancelled);
+/// The response grid's options for these (cells, iteration, flow, max_period,
+/// max_amplitude, threads, cancelled).
+ResponseOptions ResponseOptionsOf(const ForcedChartOptions& options);
 
 }  // namespace stickslip
