@@ -54,9 +54,12 @@ constexpr const char* kNotes =
     "--param2 name two of its parameters, --from, --to, --from2 and --to2 are required. HB\n"
     "curves of steady sliding and LP, PD and NS curves of periodic orbits are traced from the\n"
     "special points of one-parameter runs on --seed_lines lines per axis (each from the\n"
-    "attractors settled on at 5 points of the line). Outputs: curves.tsv, codim2.tsv (SL,\n"
-    "LPPD, R1, R2, CP), chart.gp and chart.png (docs/systems.md, \"Charts\"). A curve cut\n"
-    "short or a failed seed run makes it partial (exit 1). Its solver defaults are the\n"
+    "attractors settled on at 5 points of the line); --grid N shades N x N cells by the\n"
+    "attractor reached there (on the maxima of the first component, each row swept along\n"
+    "--param from the blocks carried by the belt). Outputs: curves.tsv, codim2.tsv (SL,\n"
+    "LPPD, R1, R2, CP), response.tsv (with --grid), chart.gp and chart.png (docs/systems.md,\n"
+    "\"Charts\"). A curve cut short, a failed seed run or a failed cell makes it partial\n"
+    "(exit 1). Its solver defaults are the\n"
     "library's (--max_steps 200000, no time limit on a return).\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 
@@ -74,7 +77,8 @@ po::options_description AppOptions() {
       "grid", cli::Value()->value_name("N"),
       "also classify an N x N grid of cell centres, a check of the region polygons: the "
       "summary counts the cells whose region differs from the polygon drawn there "
-      "(default 0: none); forced: the response grid, N x N cells (default 40, 0: none)")(
+      "(default 0: none); forced and --system: the response grid, N x N cells, each the "
+      "attractor reached there (forced: default 40; --system: default 0, none)")(
       "seed_lines", cli::Value()->value_name("N"),
       "forced and --system: lines per axis whose one-parameter runs seed the curves, in [0, 20] "
       "(default 3)")(

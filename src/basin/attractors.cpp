@@ -125,6 +125,7 @@ Attractor ClassifyAttractor(const System& s, const SectionRun& r, const Attracto
   a.z = Eigen::VectorXd::Zero(s.tangent_dimension());
   a.lyapunov = r.lyapunov;
   if (r.status == LyapunovStatus::kDiverged) return a.kind = AttractorKind::kUnbounded, a;
+  if (r.status == LyapunovStatus::kContactOpen) return a.kind = AttractorKind::kContactLost, a;
   if (r.status == LyapunovStatus::kRest) {  // settled where no return follows
     a.kind = AttractorKind::kRest, a.m = 1;
     a.z = r.end.z.head(s.tangent_dimension());
@@ -230,8 +231,9 @@ AttractorBasins ClassifyAttractors(const System& sys, const AttractorOptions& o)
           [&stop] { return stop.load(std::memory_order_relaxed); }, &r);
       if (r.status == LyapunovStatus::kCancelled) return;
       found[k] = a;
-      if (found[k].kind == AttractorKind::kFailed || r.status == LyapunovStatus::kNoReturn)
-        b.starts[k].message = r.message;  // why it failed, or why it is undecided
+      if (found[k].kind == AttractorKind::kFailed || r.status == LyapunovStatus::kNoReturn ||
+          found[k].kind == AttractorKind::kContactLost)
+        b.starts[k].message = r.message;  // why it failed, is undecided, or where contact was lost
     } catch (const std::exception& ex) {  // no exception leaves the worker
       found[k].kind = AttractorKind::kFailed;
       b.starts[k].message = ex.what();

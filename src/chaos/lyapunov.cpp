@@ -163,8 +163,9 @@ void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double res
     if (eq.stable()) run->lyapunov = eq.max_real;
     return;
   }
-  run->status =
-      r.status == FlowStatus::kCancelled ? LyapunovStatus::kCancelled : LyapunovStatus::kFlowFailed;
+  run->status = r.status == FlowStatus::kCancelled     ? LyapunovStatus::kCancelled
+                : r.status == FlowStatus::kContactOpen ? LyapunovStatus::kContactOpen
+                                                       : LyapunovStatus::kFlowFailed;
   run->message = r.message + where;
 }
 

@@ -9,12 +9,17 @@
 #include "cli/app.hpp"
 #include "cli/system_choice.hpp"
 #include "cli/system_restart.hpp"
+#include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
+#include "stickslip/io/response_report.hpp"
 #include "stickslip/io/system_chart_report.hpp"
 
 namespace stickslip::cli {
 
 namespace {
+
+// --grid's largest side, as the forced chart's.
+constexpr long kMaxGridSide = 400;
 
 // A parameter of s by the option `key` (UsageError naming it otherwise).
 int Axis(const Arguments& args, const System& s, const char* key) {
@@ -34,7 +39,7 @@ double Required(const Arguments& args, const char* key) {
 }
 
 SystemChartOptions Configure(const Arguments& args, const System& s) {
-  for (const char* k : {"grid", "restart", "point", "max_amplitude"})
+  for (const char* k : {"restart", "point", "max_amplitude"})
     if (args.Given(k)) throw UsageError(args.Source(k) + ": not with --system");
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
@@ -68,15 +73,35 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
   return o;
 }
 
+// --grid N: the response grid of N x N cells (0, the default: none),
+// validated for s with the chart's flow and amplitude bound.
+ResponseOptions Grid(const Arguments& args, const System& s, const SystemChartOptions& o) {
+  const long n = args.Integer("grid", 0);
+  if (n != 0 && (n < 2 || n > kMaxGridSide))
+    throw UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
+                     ": must be 0 (no response grid) or in [2, " + std::to_string(kMaxGridSide) +
+                     "]");
+  ResponseOptions ro;
+  ro.n1 = ro.n2 = static_cast<int>(n);
+  ro.attractor.iterate.flow = o.branch.shooting.flow;
+  ro.attractor.max_amplitude = o.branch.max_amplitude;
+  if (const std::string e = ro.ValidationError(s); n > 0 && !e.empty())
+    throw UsageError(args.Source("grid") + ": " + e);
+  return ro;
+}
+
 // "complete", "partial: 2 curves cut short, ..." or "partial (interrupted ...)".
-std::string Status(const SystemChart& c, RunControl& run) {
-  if (c.status == ChartStatus::kOk) return "complete";
-  if (c.status == ChartStatus::kCancelled) return "partial (" + run.Reason() + ")";
-  return "partial: " + c.message;
+std::string Status(const SystemChart& c, const ResponseGrid& g, RunControl& run) {
+  if (c.status == ChartStatus::kCancelled || g.cancelled) return "partial (" + run.Reason() + ")";
+  if (c.status == ChartStatus::kOk && g.failed == 0) return "complete";
+  std::string why = c.status == ChartStatus::kOk ? "" : c.message;
+  if (g.failed > 0) why += (why.empty() ? "" : "; ") + g.failure;
+  return "partial: " + why;
 }
 
 void PrintSummary(const std::string& prog, const System& s, const SystemChart& c,
-                  const std::string& model, const std::string& dir, const std::string& figure) {
+                  const ResponseGrid& g, const std::string& model, const std::string& dir,
+                  const std::string& figure) {
   const std::string p1 = s.ParameterName(c.plane.p1), p2 = s.ParameterName(c.plane.p2);
   std::printf("%s: %s; %s x %s\n%d curves, %d points, %d seed runs in %.2f s\n", prog.c_str(),
               model.c_str(), p1.c_str(), p2.c_str(), static_cast<int>(c.curves.size()), c.points(),
@@ -94,7 +119,10 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
   for (const SystemCodim2& p : c.codim2)
     std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", Name(p.label), p1.c_str(), p.p1, p2.c_str(),
                 p.p2, p.description.c_str());
-  std::printf("wrote %s/curves.tsv, codim2.tsv%s\n", dir.c_str(),
+  if (g.n1 > 0)
+    std::printf("response grid %d x %d in %.2f s (%d failed)\n", g.n1, g.n2, g.seconds, g.failed);
+  std::printf("wrote %s/curves.tsv, codim2.tsv%s%s\n", dir.c_str(),
+              g.n1 > 0 ? ", response.tsv" : "",
               figure.empty() ? "" : (", chart.gp, " + figure).c_str());
 }
 
@@ -103,12 +131,13 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
 int RunSystemChart(const Arguments& args, const std::string& prog, const std::string& command) {
   const std::unique_ptr<System> s = SystemFromArguments(args);
   SystemChartOptions o = Configure(args, *s);
+  ResponseOptions ro = Grid(args, *s, o);
   const FlowOptions& flow = o.branch.shooting.flow;
   const std::string model =
       DescribeSystem(*s, SystemChoiceOf(args), o.plane.p1, o.plane.p2, "[axis]");
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("chart", format);
-  AppRun app(prog, args, "chart", {"curves.tsv", "codim2.tsv", "chart.gp", figure});
+  AppRun app(prog, args, "chart", {"curves.tsv", "codim2.tsv", "response.tsv", "chart.gp", figure});
   RunControl& run = app.run();
   run.Phase("following curves");
   o.cancelled = [&run] {
@@ -117,6 +146,14 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
   };
   o.branch.palc.cancelled = o.cancelled;
   const SystemChart c = ChartSystem(*s, o);
+  ResponseGrid grid;
+  if (ro.n1 > 0 && !run.Cancelled()) {
+    run.Phase("classifying the response grid");
+    ro.cancelled = o.cancelled;
+    grid = Responses(*s, o.plane, ro);
+  }
+  const bool complete = c.status == ChartStatus::kOk && !grid.cancelled && grid.failed == 0;
+  const std::string status = Status(c, grid, run);
   Metadata meta = ToolMetadata(prog, command);
   meta.emplace_back("system", model);
   AddRestartMetadata(*s, SystemChoiceOf(args), UncheckedModelFromArguments(args), flow,
@@ -128,7 +165,10 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
        {"range", s->ParameterName(o.plane.p1) + " = [" + FormatNumber(o.plane.from1) + ", " +
                      FormatNumber(o.plane.to1) + "], " + s->ParameterName(o.plane.p2) + " = [" +
                      FormatNumber(o.plane.from2) + ", " + FormatNumber(o.plane.to2) + "]"},
-       {"status", Status(c, run)}});
+       {"status", status}});
+  if (ro.n1 > 0)
+    meta.emplace_back("grid", std::to_string(ro.n1) + " x " + std::to_string(ro.n2) +
+                                  " cells, each row swept along " + s->ParameterName(o.plane.p1));
   auto text = [&meta](TsvTable t) {
     t.PrependMeta(meta);
     return t.str();
@@ -136,16 +176,18 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
   run.Phase("writing");
   app.out().Write("curves.tsv", text(SystemCurvesTable(*s, c)));
   app.out().Write("codim2.tsv", text(SystemCodim2Table(*s, c)));
-  const std::string title =
-      EnhancedText(model) + (c.status == ChartStatus::kOk ? "" : " (partial)");
-  if (app.plots()) app.out().Write("chart.gp", SystemChartScript(*s, c, title, format));
-  const std::vector<std::string> stale =
-      app.plots() ? std::vector<std::string>{} : std::vector<std::string>{"chart.gp"};
+  if (ro.n1 > 0)
+    app.out().Write("response.tsv", text(ResponseGridTable(grid, s->ParameterName(o.plane.p1),
+                                                           s->ParameterName(o.plane.p2))));
+  const std::string title = EnhancedText(model) + (complete ? "" : " (partial)");
+  if (app.plots()) app.out().Write("chart.gp", SystemChartScript(*s, c, title, format, &grid));
+  std::vector<std::string> stale;
+  if (!app.plots()) stale.push_back("chart.gp");
+  if (ro.n1 == 0) stale.push_back("response.tsv");
   if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return kExitFailed;
-  PrintSummary(prog, *s, c, model, app.out().dir(),
+  PrintSummary(prog, *s, c, grid, model, app.out().dir(),
                app.plots() && app.gnuplot().ok() ? figure : std::string());
-  return app.ExitCode(c.status == ChartStatus::kOk ? std::string()
-                                                   : "partial chart written: " + Status(c, run));
+  return app.ExitCode(complete ? std::string() : "partial chart written: " + status);
 }
 
 }  // namespace stickslip::cli

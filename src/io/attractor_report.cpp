@@ -33,7 +33,8 @@ TsvTable AttractorStartTable(const System& sys, const AttractorBasins& b, const 
   for (const AttractorStart& s : b.starts) {
     if (s.attractor < 0) continue;
     const Attractor& a = b.attractors[s.attractor];
-    const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded;
+    const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded &&
+                          a.kind != AttractorKind::kContactLost;
     if (measured && !std::isfinite(s.lyapunov))
       throw InvalidArgument("basin start " + u + " = " + FormatNumber(s.at[0]) +
                             " has a non-finite exponent");
@@ -114,10 +115,11 @@ std::string AttractorScript(const System& sys, const AttractorBasins& b, const S
      << "]\nset style fill solid 1.0 noborder\nplot ";
   for (size_t i = 0; i < b.attractors.size(); ++i) {
     const Attractor& a = b.attractors[i];
-    const char* colour = a.kind == AttractorKind::kChaotic     ? "#000000"
-                         : a.kind == AttractorKind::kUndecided ? kUndecidedGrey
-                         : a.kind == AttractorKind::kUnbounded ? "#ffffff"
-                                                               : SeriesColor(static_cast<int>(i));
+    const char* colour = a.kind == AttractorKind::kChaotic       ? "#000000"
+                         : a.kind == AttractorKind::kUndecided   ? kUndecidedGrey
+                         : a.kind == AttractorKind::kUnbounded   ? "#ffffff"
+                         : a.kind == AttractorKind::kContactLost ? kFillContactLost
+                                                                 : SeriesColor(static_cast<int>(i));
     os << (i ? ", \\\n     " : "") << "'" << f.stem << ".tsv' using '" << u
        << "':(column('attractor') == " << i << " ? column('" << w << "') : 1/0):("
        << FormatNumber(1.02 * dx) << "):("  // 2%: no seams

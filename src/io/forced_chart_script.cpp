@@ -13,39 +13,6 @@ namespace stickslip {
 
 namespace {
 
-// Periodic fills: a hue per m (1 blue, 2 green, 3 orange, 4 purple, 5+
-// ochre), darker for fewer sticks per period of the orbit (ColorBrewer).
-const char* const kPeriodic[5][4] = {{"#08519c", "#3182bd", "#6baed6", "#bdd7e7"},
-                                     {"#006d2c", "#31a354", "#74c476", "#bae4b3"},
-                                     {"#a63603", "#e6550d", "#fd8d3c", "#fdbe85"},
-                                     {"#54278f", "#756bb1", "#9e9ac8", "#cbc9e2"},
-                                     {"#8c6d31", "#bd9e39", "#e7ba52", "#e7cb94"}};
-
-std::string Fill(const ResponseClasses& c, int cls) {
-  switch (c.kinds[cls]) {
-    case AttractorKind::kPeriodic: {
-      // Shades of the m's hue in the classes' order (fewer sticks darker).
-      const std::string m = c.names[cls].substr(0, c.names[cls].find(','));
-      int m_index = 0, shade = 0;
-      for (int k = 0; k < cls; ++k) shade += c.names[k].rfind(m, 0) == 0;
-      for (int k = 1; k <= 5; ++k)
-        if (m == "m = " + std::to_string(k) || (k == 5 && m.rfind("m >=", 0) == 0)) m_index = k - 1;
-      return kPeriodic[m_index][std::min(shade, 3)];
-    }
-    case AttractorKind::kRest:
-      return "#ffffff";
-    case AttractorKind::kUndecided:
-      return "#d9d9d9";
-    case AttractorKind::kChaotic:
-      return "#404040";
-    case AttractorKind::kUnbounded:
-      return "#fbb4ae";
-    case AttractorKind::kFailed:
-      return "#ff0000";
-  }
-  return "#ffffff";
-}
-
 void CurveLines(std::ostream& os, const ForcedChartResult& r) {
   struct Style {
     CurveKind kind;
@@ -168,27 +135,12 @@ std::string ForcedChartScript(const ForcedChartResult& r, const Plane& pl, const
      << "set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 "
         "samplen 3 font ',11'\n"
      << "set tics out nomirror front\nset border 3 front\n";
-  os << "array C[" << std::max<size_t>(1, c.names.size()) << "] = [";
-  for (size_t i = 0; i < c.names.size(); ++i)
-    os << (i ? ", " : "") << "0x" << Fill(c, static_cast<int>(i)).substr(1);
-  if (c.names.empty()) os << "0xffffff";
-  os << "]\n";
+  ResponsePalette(os, c);
   // SL ends are many and crowd where curves bunch: a marker with a key entry,
   // not a text label each; the codimension-two points keep their names.
   Codim2Labels(os, r, pl);
-  // Half a cell and 1 % more: neighbours overlap, so that no hairline of the
-  // background shows between them (antialiased edges).
-  const double dx = g.n1 > 0 ? pl.width1() / g.n1 / 2 * 1.01 : 0,
-               dy = g.n2 > 0 ? pl.width2() / g.n2 / 2 * 1.01 : 0;
   os << "plot ";
-  if (g.n1 > 0)
-    os << "'response.tsv' using 1:2:(" << dx << "):(" << dy
-       << "):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle";
-  else
-    os << "NaN notitle";
-  for (size_t i = 0; i < c.names.size(); ++i)
-    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << Fill(c, static_cast<int>(i))
-       << "' title " << GnuplotQuoted(c.names[i]);
+  ResponseRaster(os, g, c, pl.width1(), pl.width2());
   CurveLines(os, r);
   const auto sliding = [](const SystemCodim2& p) { return p.label == Codim2Label::kSliding; };
   const std::string sl = Name(Codim2Label::kSliding);

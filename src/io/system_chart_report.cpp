@@ -5,6 +5,7 @@
 #include <complex>
 #include <sstream>
 
+#include "stickslip/io/response_report.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 
 namespace stickslip {
@@ -63,7 +64,8 @@ TsvTable SystemCodim2Table(const System& s, const SystemChart& c) {
 }
 
 std::string SystemChartScript(const System& s, const SystemChart& c, const std::string& title,
-                              FigureFormat format) {
+                              FigureFormat format, const ResponseGrid* grid) {
+  const bool cells = grid != nullptr && grid->n1 > 0;
   const SystemPlane& pl = c.plane;
   struct Style {
     CurveKind kind;
@@ -81,7 +83,8 @@ std::string SystemChartScript(const System& s, const SystemChart& c, const std::
   os << "# A system's chart written by ss_chart; run `gnuplot chart.gp` in this directory.\n"
      << "# curves.tsv: HB red, LP black, PD black dashed, NS magenta, GR blue; codim2.tsv: SL "
         "open\n"
-     << "# circles, the others black dots with their labels.\n"
+     << "# circles, the others black dots with their labels"
+     << (cells ? "; response.tsv: the cells by the attractor reached.\n" : ".\n")
      << "if (!exists('suffix')) suffix = ''\n"
      << FigureTerminal(format, 900, 700) << "set output '" << FigureFile("chart", format)
      << "'.suffix\n"
@@ -92,12 +95,19 @@ std::string SystemChartScript(const System& s, const SystemChart& c, const std::
      << "set yrange [" << pl.from2 << ":" << pl.to2 << "]\n"
      << "set title \"" << title << "\"\n"
      << "set key outside below horizontal font ',11'\n"
-     << "set tics out nomirror\nset border 3\nset grid lc rgb '#e0e0e0'\n";
+     << "set tics out nomirror front\nset border 3 front\n"
+     << (cells ? "" : "set grid lc rgb '#e0e0e0'\n");
   for (const SystemCodim2& p : c.codim2)
     if (p.label != Codim2Label::kSliding)
       os << "set label " << GnuplotQuoted(Name(p.label)) << " at " << p.p1 << "," << p.p2
          << " offset 1,0.6 front font ',11' noenhanced\n";
-  os << "plot NaN notitle";
+  const ResponseClasses rc = cells ? ClassifyResponses(*grid) : ResponseClasses();
+  if (cells) ResponsePalette(os, rc);
+  os << "plot ";
+  if (cells)
+    ResponseRaster(os, *grid, rc, pl.to1 - pl.from1, pl.to2 - pl.from2);
+  else
+    os << "NaN notitle";
   for (const Style& st : styles) {
     bool first = true;
     for (std::size_t i = 0; i < c.curves.size(); ++i) {

@@ -105,6 +105,32 @@ TEST_F(SystemApp, ChainOrbitDiagramKeepsTheBlocksInStep) {
   EXPECT_TRUE(tu::Contains(t.meta.at("system"), "v=[swept]"));
 }
 
+// ss_chart --system --grid N: the response grid's N x N cells in
+// response.tsv, drawn under the curves; a run with --grid 0 (none) removes
+// an older response.tsv; sides outside [2, 400] are refused by name.
+TEST_F(SystemApp, ChartGridWritesTheResponseCells) {
+  const std::string study = STICKSLIP_SOURCE_DIR "/studies/chain2_chart.ini";
+  const std::string dir = NewDir();
+  auto r = RunOut("ss_chart", dir, {"--study", study, "--seed_lines", "0", "--grid", "3"},
+                  tu::HaveGnuplot());
+  ASSERT_EQ(r.outcome.code, tu::HaveGnuplot() ? 0 : 3) << r.err;
+  const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/response.tsv"));
+  EXPECT_EQ(t.meta.at("status"), "complete");
+  EXPECT_EQ(t.meta.at("grid"), "3 x 3 cells, each row swept along v");
+  ASSERT_EQ(t.rows.size(), 9u);
+  for (const char* c : {"v", "kc", "class", "response", "m", "sticks", "lyapunov"})
+    EXPECT_GE(t.Column(c), 0) << c;
+  EXPECT_NEAR(std::stod(t.rows[0][0]), 0.1 + 0.4 / 6, 1e-15);  // cell centres, v fastest
+  EXPECT_NEAR(std::stod(t.rows[3][1]), 0.1 + 0.9 / 2, 1e-15);
+  EXPECT_TRUE(tu::Contains(tu::ReadFile(dir + "/out/chart.gp"), "'response.tsv' using 1:2"));
+  EXPECT_TRUE(tu::Contains(r.out, "response grid 3 x 3"));
+  r = RunOut("ss_chart", dir, {"--study", study, "--seed_lines", "0", "--grid", "0"});
+  EXPECT_EQ(r.outcome.code, 0) << r.err;
+  EXPECT_FALSE(tu::Exists(dir + "/out/response.tsv"));
+  for (const char* side : {"1", "401", "-2"})
+    ExpectRejected("ss_chart", {"--study", study, "--grid", side}, {"--grid", side});
+}
+
 TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   const std::vector<std::string> run = {"--param", "v", "--to", "0.4"};
   auto with = [&](std::vector<std::string> a) {

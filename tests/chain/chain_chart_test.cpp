@@ -5,9 +5,14 @@
 // which locate NS by bisection on the sign of its test along the branch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "chain/chain.hpp"
+#include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/equilibria/steady_branch.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
@@ -84,6 +89,46 @@ TEST(ChainChart, HopfCurveIsTheHurwitzDeterminantsZero) {
   }
 }
 
+// The response grid (response_grid.hpp) below the NS curve, off the cells
+// next to it: there the stick-slip orbit the curve follows is unstable, so
+// no cell reaches it (the attractor is the torus: quasi-periodic, locked at
+// a long period, or chaotic). Above the curve the rows carry whichever of
+// the coexisting attractors they reached first (here m = 3 orbits), so no
+// class is asserted there.
+void TorusBelowTheCurve(const System& s, const SystemCurve& ns) {
+  std::vector<std::pair<double, double>> curve;  // (v, kc)
+  for (const SystemCurvePoint& p : ns.points) curve.emplace_back(p.p1, p.p2);
+  std::sort(curve.begin(), curve.end());
+  const int sticks = ns.points[0].orbit.sticks;
+  SystemPlane pl = Plane(s).plane;
+  pl.from1 = 0.24, pl.to1 = 0.38, pl.from2 = 0.1, pl.to2 = 0.45;
+  ResponseOptions o;
+  o.n1 = 7, o.n2 = 10;
+  const ResponseGrid g = Responses(s, pl, o);
+  ASSERT_EQ(g.failed, 0) << g.failure;
+  const double h = (pl.to2 - pl.from2) / o.n2;
+  int below = 0, torus = 0;
+  for (int i = 0; i < g.n1; ++i) {
+    const auto hi = std::lower_bound(curve.begin(), curve.end(), std::make_pair(g.x1[i], 0.0));
+    ASSERT_TRUE(hi != curve.begin() && hi != curve.end()) << "v " << g.x1[i];
+    const auto lo = hi - 1;
+    const double kc =
+        lo->second + (hi->second - lo->second) * (g.x1[i] - lo->first) / (hi->first - lo->first);
+    for (int j = 0; j < g.n2 && g.x2[j] < kc - h; ++j) {
+      const Attractor& a = g.at(i, j);
+      EXPECT_FALSE(a.kind == AttractorKind::kPeriodic && a.m == 1 && a.sticks == sticks)
+          << "v " << g.x1[i] << ", kc " << g.x2[j];
+      torus += a.kind == AttractorKind::kUndecided || a.kind == AttractorKind::kChaotic ||
+               (a.kind == AttractorKind::kPeriodic && a.m >= 5);
+      ++below;
+    }
+  }
+  std::printf("[ measured ] %d cells below the NS curve, %d of them on a torus, in %.2f s\n", below,
+              torus, g.seconds);
+  EXPECT_GE(below, 10);
+  EXPECT_GE(torus, below - 2);
+}
+
 TEST(ChainChart, TorusCurveMeetsTheBranchTorusPoints) {
   PoincareSection section;
   const OrbitRow seed = TorusPoint(0.3, &section);
@@ -106,6 +151,7 @@ TEST(ChainChart, TorusCurveMeetsTheBranchTorusPoints) {
   ASSERT_LT(std::abs(near->p1 - 0.35), 0.02);
   const OrbitRow at = TorusPoint(near->p1, &section);
   EXPECT_NEAR(at.p, near->p2, 1e-8);
+  TorusBelowTheCurve(s, ns);
 }
 
 }  // namespace

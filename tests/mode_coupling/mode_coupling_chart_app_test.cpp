@@ -6,6 +6,7 @@
 // nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -19,6 +20,44 @@ namespace tu = stickslip::testing_util;
 class ModeCouplingChartApp : public tu::AppTest {};
 
 const std::string kChartStudy = STICKSLIP_SOURCE_DIR "/studies/brake_chart.ini";
+
+// The study's response grid (grid = 32) against the closed-form flutter
+// threshold and the traced LP curve, off the cells next to either: left of
+// mu_k*(beta) steady sliding is stable and the start comes to rest; right of
+// the LP curve below the cusp (beta < 0.022) there is no stick-slip orbit and
+// steady sliding is unstable, so the contact opens.
+void CheckResponse(const tu::Tsv& g, const tu::Tsv& curves,
+                   stickslip::mode_coupling::CouplingParams p) {
+  EXPECT_EQ(g.meta.at("status"), "complete");
+  ASSERT_EQ(g.rows.size(), 32u * 32u);
+  std::vector<std::pair<double, double>> lp;  // (beta, mu_k) below the cusp
+  for (const auto& row : curves.rows)
+    if (row[2] == "LP" && std::stod(row[1]) < 0.0235)
+      lp.emplace_back(std::stod(row[1]), std::stod(row[0]));
+  std::sort(lp.begin(), lp.end());
+  ASSERT_GT(lp.size(), 10u);
+  const double w = 0.15 / 32;  // a cell's width in mu_k
+  int rest = 0, lost = 0;
+  for (const auto& row : g.rows) {
+    const double mu = std::stod(row[0]), beta = std::stod(row[1]);
+    p.beta = beta;
+    if (mu < stickslip::mode_coupling::FlutterMuK(p) - w) {
+      EXPECT_EQ(row[3], "rest") << "mu_k " << mu << ", beta " << beta;
+      ++rest;
+    }
+    if (beta > 0.022 || beta < lp.front().first) continue;
+    const auto hi = std::lower_bound(lp.begin(), lp.end(), std::make_pair(beta, 0.0));
+    const auto lo = hi - 1;
+    const double mu_lp =
+        lo->second + (hi->second - lo->second) * (beta - lo->first) / (hi->first - lo->first);
+    if (mu > mu_lp + w) {
+      EXPECT_EQ(row[3], "contact-lost") << "mu_k " << mu << ", beta " << beta;
+      ++lost;
+    }
+  }
+  EXPECT_GT(rest, 300);
+  EXPECT_GT(lost, 200);
+}
 
 TEST_F(ModeCouplingChartApp, StudyCurvesAgreeWithTheClosedFormAndTheirTests) {
   const auto r = RunOut("ss_chart", dir_, {"--study", kChartStudy});
@@ -49,6 +88,7 @@ TEST_F(ModeCouplingChartApp, StudyCurvesAgreeWithTheClosedFormAndTheirTests) {
   ASSERT_EQ(codim2.rows.size(), 1u);
   EXPECT_EQ(codim2.rows[0][0], "CP");
   EXPECT_TRUE(tu::Contains(r.out, "contact-lost"));
+  CheckResponse(tu::ReadTsv(tu::ReadFile(dir_ + "/out/response.tsv")), curves, p);
 }
 
 TEST_F(ModeCouplingChartApp, BadInputsAreRefusedAndWriteNothing) {

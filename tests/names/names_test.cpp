@@ -80,8 +80,8 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("SectionKind", SectionKind::kSurface);
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
   Covers("FigureFormat", FigureFormat::kSvg);
-  Covers("AttractorKind", AttractorKind::kFailed);
-  Covers("LyapunovStatus", LyapunovStatus::kRest);
+  Covers("AttractorKind", AttractorKind::kContactLost);
+  Covers("LyapunovStatus", LyapunovStatus::kContactOpen);
   Covers("SweepDirection", SweepDirection::kDown);
   Covers("Parameter", Parameter::kOmega);
   Covers("BranchStatus", BranchStatus::kContactLost);

@@ -1,6 +1,6 @@
 # A system's chart written by ss_chart; run `gnuplot chart.gp` in this directory.
 # curves.tsv: HB red, LP black, PD black dashed, NS magenta, GR blue; codim2.tsv: SL open
-# circles, the others black dots with their labels.
+# circles, the others black dots with their labels; response.tsv: the cells by the attractor reached.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 900,700 enhanced font 'Sans,12'
 set output 'chart.png'.suffix
@@ -13,11 +13,17 @@ set xrange [0.45000000000000001:0.59999999999999998]
 set yrange [0.01:0.029999999999999999]
 set title "mode\\_coupling: β=[axis] k11=1 k22=1.5 k12=-0.3 gamma=1 v=0.5 μ_s=0.8 μ_k=[axis]"
 set key outside below horizontal font ',11'
-set tics out nomirror
-set border 3
-set grid lc rgb '#e0e0e0'
+set tics out nomirror front
+set border 3 front
 set label "CP" at 0.53588356390956615,0.024420528293237542 offset 1,0.6 front font ',11' noenhanced
-plot NaN notitle, \
+array C[6] = [0x08519c, 0x3182bd, 0xffffff, 0xd9d9d9, 0x404040, 0xffe066]
+plot 'response.tsv' using 1:2:(0.0023671874999999995):(0.00031562499999999993):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
+     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 lc rgb '#ffffff' title "rest", \
+     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
+     NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
+     NaN with boxes fs solid 1.0 lc rgb '#ffe066' title "contact-lost", \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title "HB of steady sliding", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
      'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.2 lc rgb 'black' notitle

@@ -24,13 +24,25 @@
 
 namespace stickslip {
 
-enum class AttractorKind { kPeriodic, kRest, kChaotic, kUndecided, kUnbounded, kFailed };
+/// What a start reaches. kContactLost: a contact's normal force reached 0 on
+/// the way (the block lifts off; the model ends there), an outcome, not a
+/// failure.
+enum class AttractorKind {
+  kPeriodic,
+  kRest,
+  kChaotic,
+  kUndecided,
+  kUnbounded,
+  kFailed,
+  kContactLost
+};
 template <>
 struct EnumNames<AttractorKind> {
   static constexpr NamedValue<AttractorKind> kTable[] = {
-      {AttractorKind::kPeriodic, "periodic"},   {AttractorKind::kRest, "rest"},
-      {AttractorKind::kChaotic, "chaotic"},     {AttractorKind::kUndecided, "undecided"},
-      {AttractorKind::kUnbounded, "unbounded"}, {AttractorKind::kFailed, "failed"},
+      {AttractorKind::kPeriodic, "periodic"},        {AttractorKind::kRest, "rest"},
+      {AttractorKind::kChaotic, "chaotic"},          {AttractorKind::kUndecided, "undecided"},
+      {AttractorKind::kUnbounded, "unbounded"},      {AttractorKind::kFailed, "failed"},
+      {AttractorKind::kContactLost, "contact-lost"},
   };
 };
 

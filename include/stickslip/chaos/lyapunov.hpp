@@ -65,16 +65,21 @@ enum class LyapunovStatus {
   kFlowFailed,  ///< the flow failed or ran out of work (message says where)
   kDiverged,    ///< a state component passed max_amplitude
   kCancelled,
-  kNoReturn,  ///< a surface section: no return within max_return_time (not at rest)
-  kRest,      ///< a surface section: settled at a stable rest point (end), no more
-              ///< returns; lyapunov is steady sliding's largest real part there
+  kNoReturn,     ///< a surface section: no return within max_return_time (not at rest)
+  kRest,         ///< a surface section: settled at a stable rest point (end), no more
+                 ///< returns; lyapunov is steady sliding's largest real part there
+  kContactOpen,  ///< a contact's normal force reached 0 (end; message says where)
 };
 template <>
 struct EnumNames<LyapunovStatus> {
   static constexpr NamedValue<LyapunovStatus> kTable[] = {
-      {LyapunovStatus::kDone, "done"},          {LyapunovStatus::kFlowFailed, "flow-failed"},
-      {LyapunovStatus::kDiverged, "diverged"},  {LyapunovStatus::kCancelled, "cancelled"},
-      {LyapunovStatus::kNoReturn, "no-return"}, {LyapunovStatus::kRest, "rest"},
+      {LyapunovStatus::kDone, "done"},
+      {LyapunovStatus::kFlowFailed, "flow-failed"},
+      {LyapunovStatus::kDiverged, "diverged"},
+      {LyapunovStatus::kCancelled, "cancelled"},
+      {LyapunovStatus::kNoReturn, "no-return"},
+      {LyapunovStatus::kRest, "rest"},
+      {LyapunovStatus::kContactOpen, "contact-open"},
   };
 };
 

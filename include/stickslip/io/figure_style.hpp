@@ -53,6 +53,7 @@ extern const char* const kFillStickSlip;
 extern const char* const kFillPureSlip;
 extern const char* const kFillEquilibrium;
 extern const char* const kFillUndecided;
+extern const char* const kFillContactLost;  ///< AttractorKind::kContactLost
 /// Colours of series that are not kinds (methods of a benchmark), in order.
 const char* SeriesColor(int i);
 

@@ -11,18 +11,9 @@
 #include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/io/response_report.hpp"
 
 namespace stickslip {
-
-/// The response classes of a grid, in a fixed order: periodic (m, sticks)
-/// by m then sticks (m >= 5 one class), then rest, quasi-periodic, chaotic, unbounded, failed
-/// (only those present). class_of[k] indexes names for cell k (-1: not done).
-struct ResponseClasses {
-  std::vector<std::string> names;  ///< "m = 1, 1 stick", "chaotic", ...
-  std::vector<AttractorKind> kinds;
-  std::vector<int> class_of;
-};
-ResponseClasses ClassifyResponses(const ResponseGrid& g);
 
 /// Columns: <p1>, <p2>, curve (LP, PD, NS, GR), id (1-based), m, phase (the
 /// section's forcing phase Omega t of x0, xdot0), x0, xdot0,
@@ -32,10 +23,7 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g);
 TsvTable ForcedCurvesTable(const ForcedChartResult& r, const Plane& pl, const std::string& model);
 /// Columns: label (R1, R2, LPPD, SL), <p1>, <p2>, curve (its id), on (its kind), description.
 TsvTable ForcedCodim2Table(const ForcedChartResult& r, const Plane& pl, const std::string& model);
-/// One row per grid cell, p1 fastest: <p1>, <p2> (the cell centre), class
-/// (index into the comment lines' list), response (periodic, rest,
-/// quasi-periodic, chaotic, unbounded, failed), m, sticks (per m periods),
-/// lyapunov, lyapunov_err. Cells not reached (cancelled) are left out.
+/// response.tsv (ResponseGridTable, response_report.hpp) with the model and status.
 TsvTable ResponseTable(const ForcedChartResult& r, const Plane& pl, const std::string& model);
 
 /// Draws forced_chart.<ext> from response.tsv, curves.tsv and codim2.tsv.

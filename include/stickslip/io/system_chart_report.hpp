@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
@@ -27,8 +28,9 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c);
 TsvTable SystemCodim2Table(const System& s, const SystemChart& c);
 /// chart.gp: the curves from curves.tsv (HB red, LP black, PD black dashed,
 /// NS magenta, GR blue) and codim2.tsv's points (SL open circles, the others filled)
-/// in the rectangle.
+/// in the rectangle; with a grid of cells, over response.tsv's cells filled
+/// by response class (ResponseRaster, response_report.hpp).
 std::string SystemChartScript(const System& s, const SystemChart& c, const std::string& title,
-                              FigureFormat format);
+                              FigureFormat format, const ResponseGrid* grid = nullptr);
 
 }  // namespace stickslip
