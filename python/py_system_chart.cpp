@@ -2,16 +2,20 @@
 // Python module (chart/system_chart.hpp; as ss_chart --system): HB curves of steady
 // sliding and LP, PD and NS curves of periodic orbits in two parameters, as
 // bound types of read-only arrays; the tracing runs without the GIL, with
-// Ctrl-C. The belt's chart(params, ...) keeps its own.
+// Ctrl-C; with grid = N, the response grid of N x N cells (response_grid.hpp).
+// The belt's chart(params, ...) keeps its own.
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "py_common.hpp"
+#include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/system_branch_report.hpp"
@@ -36,11 +40,21 @@ struct PyCodim2 {
   double p1 = 0, p2 = 0;
 };
 
+// The response grid's cells as (n2, n1) arrays, p1 fastest along a row.
+struct PyResponse {
+  py::array p1, p2;                     // cell centres, n1 and n2
+  py::array kind, m, sticks, lyapunov;  // (n2, n1)
+  int failed = 0;
+  std::string failure;
+  double seconds = 0;
+};
+
 struct PySystemChart {
   std::string param, param2, status, message;
   std::vector<std::string> state_names;
   std::vector<PySystemCurve> curves;
   std::vector<PyCodim2> codim2;
+  std::optional<PyResponse> response;
   int seed_runs = 0, failed_seed_runs = 0, seeds_not_traced = 0, cut_curves = 0, duplicates = 0;
   double seconds = 0;
 };
@@ -71,10 +85,35 @@ PySystemCurve CurveOf(const SystemCurve& c, int nt) {
   return out;
 }
 
+// A 1-D array as n2 rows of n1, read-only.
+py::array Grid(const py::array& flat, int n2, int n1) {
+  py::array a = flat.attr("reshape")(n2, n1);
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+PyResponse ResponseOf(const ResponseGrid& g) {
+  PyResponse r;
+  std::vector<std::string> kind;
+  std::vector<int> m, sticks;
+  std::vector<double> lyapunov;
+  for (const Attractor& a : g.cells) {
+    kind.push_back(Name(a.kind));
+    m.push_back(a.kind == AttractorKind::kPeriodic ? a.m : 0), sticks.push_back(a.sticks);
+    lyapunov.push_back(std::isfinite(a.lyapunov) ? a.lyapunov : 0.0);
+  }
+  r.p1 = ReadOnly(g.x1), r.p2 = ReadOnly(g.x2);
+  r.kind = Grid(ReadOnlyStrings(kind), g.n2, g.n1), r.m = Grid(ReadOnly(m), g.n2, g.n1);
+  r.sticks = Grid(ReadOnly(sticks), g.n2, g.n1);
+  r.lyapunov = Grid(ReadOnly(lyapunov), g.n2, g.n1);
+  r.failed = g.failed, r.failure = g.failure, r.seconds = g.seconds;
+  return r;
+}
+
 PySystemChart SystemChartOf(const py::object& system, const std::string& param, double from,
                             double to, const std::string& param2, double from2, double to2,
                             int seed_lines, double max_step, bool hopf, bool orbits, int max_m,
-                            std::optional<double> rtol, std::optional<double> atol) {
+                            std::optional<double> rtol, std::optional<double> atol, int grid) {
   const std::unique_ptr<System> s = SystemOf(system);  // InvalidArgument for another object
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
@@ -91,13 +130,20 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   if (rtol) flow.rtol = *rtol;
   if (atol) flow.atol = *atol;
   if (const std::string e = o.ValidationError(*s); !e.empty()) throw InvalidArgument(e);
+  ResponseOptions ro;
+  ro.n1 = ro.n2 = grid;
+  ro.attractor.iterate.flow = flow, ro.attractor.max_amplitude = o.branch.max_amplitude;
+  if (const std::string e = ro.ValidationError(*s); grid != 0 && !e.empty())
+    throw InvalidArgument("grid = " + std::to_string(grid) + ": " + e);
   Interrupt interrupt;
-  o.cancelled = [&] { return interrupt(); };
+  o.cancelled = ro.cancelled = [&] { return interrupt(); };
   o.branch.palc.cancelled = o.cancelled;
   SystemChart r;
+  ResponseGrid g;
   {
     py::gil_scoped_release nogil;
     r = ChartSystem(*s, o);
+    if (grid > 0 && !interrupt()) g = Responses(*s, o.plane, ro);
   }
   interrupt.RaiseIfInterrupted();
   PySystemChart out;
@@ -112,6 +158,14 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   for (const SystemCodim2& p : r.codim2)
     out.codim2.push_back(
         {Name(p.label), CurveLabel(p.on), p.description, Name(p.method), p.curve, p.p1, p.p2});
+  if (grid > 0) {
+    out.response = ResponseOf(g);
+    if (g.failed > 0 && r.status == ChartStatus::kOk) {
+      out.status = Name(ChartStatus::kPartial), out.message = g.failure;
+    } else if (g.failed > 0) {
+      out.message += "; " + g.failure;
+    }
+  }
   return out;
 }
 
@@ -152,13 +206,30 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("p2", &PyCodim2::p2)
       .def_readonly("description", &PyCodim2::description)
       .def_readonly("located", &PyCodim2::located);
+  py::class_<PyResponse>(m, "ResponseGrid",
+                         "The response grid of chart(system, ..., grid=N): p1 and p2 the cell "
+                         "centres, and per cell (rows along p2, p1 fastest: shape (N, N)) "
+                         "kind (periodic, rest, undecided: quasi-periodic, chaotic, unbounded, "
+                         "contact-lost, failed), m (periodic: returns per period, else 0), "
+                         "sticks (per m returns) and lyapunov (the largest exponent, 0 where "
+                         "not measured); failed counts failed cells, failure names the first.")
+      .def_readonly("p1", &PyResponse::p1)
+      .def_readonly("p2", &PyResponse::p2)
+      .def_readonly("kind", &PyResponse::kind)
+      .def_readonly("m", &PyResponse::m)
+      .def_readonly("sticks", &PyResponse::sticks)
+      .def_readonly("lyapunov", &PyResponse::lyapunov)
+      .def_readonly("failed", &PyResponse::failed)
+      .def_readonly("failure", &PyResponse::failure)
+      .def_readonly("seconds", &PyResponse::seconds);
   py::class_<PySystemChart>(
       m, "SystemChart",
       "Result of chart(system, ...): param, param2, curves (SystemCurve), "
       "codim2 (SystemCodim2), status (ok; partial where a curve was cut "
       "short or a seed run failed, message says which; cancelled), "
       "seed_runs, failed_seed_runs, seeds_not_traced, cut_curves, duplicates (curves "
-      "dropped: most of their points on one drawn), seconds.")
+      "dropped: most of their points on one drawn), seconds; response (a ResponseGrid with "
+      "grid=N, else None).")
       .def_readonly("param", &PySystemChart::param)
       .def_readonly("param2", &PySystemChart::param2)
       .def_readonly("state_names", &PySystemChart::state_names)
@@ -171,20 +242,23 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("seeds_not_traced", &PySystemChart::seeds_not_traced)
       .def_readonly("cut_curves", &PySystemChart::cut_curves)
       .def_readonly("duplicates", &PySystemChart::duplicates)
-      .def_readonly("seconds", &PySystemChart::seconds);
+      .def_readonly("seconds", &PySystemChart::seconds)
+      .def_readonly("response", &PySystemChart::response);
   // After the belt's chart(params, ...).
   m.def("chart", &SystemChartOf, py::arg("system"), py::arg("param"), py::arg("from_"),
         py::arg("to"), py::arg("param2"), py::arg("from2"), py::arg("to2"),
         py::arg("seed_lines") = 3, py::arg("max_step") = 0.01, py::arg("hopf") = true,
         py::arg("orbits") = true, py::arg("max_m") = 2, py::arg("rtol") = py::none(),
-        py::arg("atol") = py::none(),
+        py::arg("atol") = py::none(), py::arg("grid") = 0,
         "chart(system, param, from_, to, param2, from2, to2, ...) for ForcedParams, "
         "ChainParams and CouplingParams (as ss_chart --system): HB curves of steady sliding "
         "and LP, PD, NS curves of periodic orbits (a forced system's on its stroboscopic "
         "section, with GR curves and rtol = atol = 1e-12 by default) in two of the system's "
         "parameters, seeded by one-parameter runs on seed_lines lines per axis and the "
         "doubled branches from their PD points (orbits of up to max_m forcing periods, or "
-        "doublings while 2^doublings <= max_m without a clock); a SystemChart.");
+        "doublings while 2^doublings <= max_m without a clock); with grid=N (0: none, else 1 "
+        "to 1000) also the attractor reached at N x N cell centres, each row swept along "
+        "param (SystemChart.response); a SystemChart.");
 }
 
 }  // namespace stickslip::python

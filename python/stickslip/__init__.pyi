@@ -708,7 +708,7 @@ def chart(system: Union[ForcedParams, ChainParams, CouplingParams], param: str, 
           to: float,
           param2: str, from2: float, to2: float, seed_lines: int = 3, max_step: float = 0.01,
           hopf: bool = True, orbits: bool = True, max_m: int = 2, rtol: Optional[float] = None,
-          atol: Optional[float] = None) -> SystemChart: ...
+          atol: Optional[float] = None, grid: int = 0) -> SystemChart: ...
 def restart(dir: str, point: Union[str, int]) -> LabelledPoint: ...
 
 # Sweeps (stickslip._sweep): grid x sample on Dask, serially, or on a cluster.
@@ -869,6 +869,17 @@ class SystemCodim2:
     description: str
     located: str
 
+class ResponseGrid:
+    p1: Array
+    p2: Array
+    kind: Array
+    m: Array
+    sticks: Array
+    lyapunov: Array
+    failed: int
+    failure: str
+    seconds: float
+
 class SystemChart:
     param: str
     param2: str
@@ -883,6 +894,7 @@ class SystemChart:
     cut_curves: int
     duplicates: int
     seconds: float
+    response: Optional[ResponseGrid]
 
 class AttractorBasins:
     slice: List[str]

@@ -175,6 +175,34 @@ class SteadyBranchAndSettle(unittest.TestCase):
         with self.assertRaises(ValueError):  # mu_k reaches mu_s on the border
             stickslip.chart(self.brake(0.52), "mu_k", 0.45, 0.9, "beta", 0.01, 0.03)
 
+    def test_chart_grid_rests_below_the_flutter_threshold(self):
+        """chart(system, ..., grid=N): every cell more than a cell left of the closed-form
+        flutter threshold mu_k*(beta) comes to rest; right of the fold the contact opens."""
+        c = stickslip.chart(self.brake(0.52), "mu_k", 0.45, 0.6, "beta", 0.01, 0.03,
+                            seed_lines=0, rtol=1e-12, atol=1e-12, grid=8)
+        self.assertEqual(c.status, "ok", c.message)
+        g = c.response
+        self.assertEqual(g.kind.shape, (8, 8))
+        self.assertEqual((len(g.p1), len(g.p2), g.failed), (8, 8, 0))
+        self.assertFalse(g.kind.flags.writeable)
+        width = 0.15 / 8
+        rest = 0
+        for j, beta in enumerate(g.p2):
+            star = stickslip.CouplingParams(beta=beta, k11=1.0, k22=1.5, k12=-0.3, gamma=1.0,
+                                            v=0.5, law=self.brake(0.52).law).flutter_mu_k
+            for i, mu in enumerate(g.p1):
+                if mu < star - width:
+                    self.assertEqual(g.kind[j, i], "rest", (mu, beta))
+                    rest += 1
+        self.assertGreaterEqual(rest, 16)
+        self.assertIn("contact-lost", set(g.kind.ravel()))
+        self.assertTrue(np.all(np.isfinite(g.lyapunov)))
+        self.assertIsNone(stickslip.chart(self.brake(0.52), "mu_k", 0.45, 0.6, "beta", 0.01,
+                                          0.03, seed_lines=0).response)
+        with self.assertRaises(ValueError):
+            stickslip.chart(self.brake(0.52), "mu_k", 0.45, 0.6, "beta", 0.01, 0.03,
+                            seed_lines=0, grid=-1)
+
     def test_settled_orbit_closes_under_the_flow(self):
         """The brake above mu_k*: the orbit settle refines returns to its start after one
         period of a plain run at a tighter tolerance (no Newton)."""
