@@ -194,10 +194,11 @@ py::dict SystemDiagram(const py::object& system, const std::string& parameter, d
 }  // namespace
 
 void BindAttractors(py::module_& m) {
-  py::class_<PyAttractor>(m, "Attractor",
-                          "One attractor of attractor_basins(): kind (periodic, rest, chaotic, "
-                          "undecided, unbounded, failed), m (returns per period), sticks, its "
-                          "section point z (the state but the phase) and cycle (m rows).")
+  py::class_<PyAttractor>(
+      m, "Attractor",
+      "One attractor of attractor_basins(): kind (periodic, rest, chaotic, "
+      "undecided, unbounded, failed, contact-lost, settling), m (returns per period), sticks, its "
+      "section point z (the state but the phase) and cycle (m rows).")
       .def_readonly("kind", &PyAttractor::kind)
       .def_readonly("label", &PyAttractor::label)
       .def_readonly("m", &PyAttractor::m)
@@ -212,7 +213,7 @@ void BindAttractors(py::module_& m) {
                 "Result of attractor_basins(): per start (the slice's first component fastest) "
                 "u, w (its two components, named in `slice`), attractor (index into "
                 "`attractors`; a failed start's is a `failed` one; -1: not run) and lyapunov; "
-                "`failures` says why a start failed or never returned.")
+                "`failures` says why a start failed, never returned or lost contact.")
       .def_readonly("slice", &B::slice)
       .def_readonly("state_names", &B::state_names)
       .def_readonly("u", &B::u)

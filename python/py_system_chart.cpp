@@ -100,7 +100,9 @@ PyResponse ResponseOf(const ResponseGrid& g) {
   for (const Attractor& a : g.cells) {
     kind.push_back(Name(a.kind));
     m.push_back(a.kind == AttractorKind::kPeriodic ? a.m : 0), sticks.push_back(a.sticks);
-    lyapunov.push_back(std::isfinite(a.lyapunov) ? a.lyapunov : 0.0);
+    const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded &&
+                          a.kind != AttractorKind::kContactLost;
+    lyapunov.push_back(measured && std::isfinite(a.lyapunov) ? a.lyapunov : 0.0);
   }
   r.p1 = ReadOnly(g.x1), r.p2 = ReadOnly(g.x2);
   r.kind = Grid(ReadOnlyStrings(kind), g.n2, g.n1), r.m = Grid(ReadOnly(m), g.n2, g.n1);
@@ -206,13 +208,14 @@ void BindSystemChart(py::module_& m) {
       .def_readonly("p2", &PyCodim2::p2)
       .def_readonly("description", &PyCodim2::description)
       .def_readonly("located", &PyCodim2::located);
-  py::class_<PyResponse>(m, "ResponseGrid",
-                         "The response grid of chart(system, ..., grid=N): p1 and p2 the cell "
-                         "centres, and per cell (rows along p2, p1 fastest: shape (N, N)) "
-                         "kind (periodic, rest, undecided: quasi-periodic, chaotic, unbounded, "
-                         "contact-lost, failed), m (periodic: returns per period, else 0), "
-                         "sticks (per m returns) and lyapunov (the largest exponent, 0 where "
-                         "not measured); failed counts failed cells, failure names the first.")
+  py::class_<PyResponse>(
+      m, "ResponseGrid",
+      "The response grid of chart(system, ..., grid=N): p1 and p2 the cell "
+      "centres, and per cell (rows along p2, p1 fastest: shape (N, N)) "
+      "kind (periodic, rest, settling, undecided: quasi-periodic, chaotic, "
+      "unbounded, contact-lost, failed), m (periodic: returns per period, else 0), "
+      "sticks (per m returns) and lyapunov (the largest exponent, 0 where "
+      "not measured); failed counts failed cells, failure names the first.")
       .def_readonly("p1", &PyResponse::p1)
       .def_readonly("p2", &PyResponse::p2)
       .def_readonly("kind", &PyResponse::kind)

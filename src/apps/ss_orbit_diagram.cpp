@@ -31,8 +31,9 @@ constexpr const char* kNotes =
     "run on at most --threads threads, capped by the machine's hardware threads.\n"
     "Outputs in --out (written as one set): orbit_diagram.tsv (one row per section point),\n"
     "lyapunov.tsv (one row per value), orbit_diagram.gp and orbit_diagram.png (.pdf, .svg).\n"
-    "A value whose flow fails or passes --max_amplitude is a `# failed:` line; the next\n"
-    "starts from rest. An interrupted run writes the values done, marked partial.\n"
+    "A value whose flow fails or passes --max_amplitude is a `# failed:` line, one whose\n"
+    "contact opens a `# contact lost:` line (not a failure); the next starts from rest.\n"
+    "An interrupted run writes the values done, marked partial.\n"
     "The forced flow's rtol and atol default to 1e-12. --integrator cvode integrates the\n"
     "slip phases by CVODE instead of Taylor series: an independent check of the exponent.\n"
     "--system chain|mode_coupling: the map is the returns to x1' = 0 falling (the maxima of\n"
@@ -243,14 +244,18 @@ int Main(int argc, char** argv) {
   const std::string model = Describe(args, s), axis = s.labels.param;
   const std::string unit = forced ? " forcing periods" : " returns";
   cli::Metadata meta = Metadata(args, s, cli::CommandLine(argc, argv), model);
-  meta.insert(meta.end(),
-              {{"swept", axis + " from " + ss::FormatNumber(s.o.from) + " to " +
-                             ss::FormatNumber(s.o.to) + ", " + std::to_string(s.o.n) + " values"},
-               {"transient", std::to_string(s.o.iterate.transient) + unit},
-               {"keep", std::to_string(s.o.iterate.keep) + unit},
-               {"section", forced ? "forcing phase 0 (cos Omega t = 1)" : s.labels.section},
-               {"status", d.cancelled ? "partial (" + run.Reason() + ")"
-                                      : std::to_string(d.failed) + " values failed"}});
+  meta.insert(
+      meta.end(),
+      {{"swept", axis + " from " + ss::FormatNumber(s.o.from) + " to " + ss::FormatNumber(s.o.to) +
+                     ", " + std::to_string(s.o.n) + " values"},
+       {"transient", std::to_string(s.o.iterate.transient) + unit},
+       {"keep", std::to_string(s.o.iterate.keep) + unit},
+       {"section", forced ? "forcing phase 0 (cos Omega t = 1)" : s.labels.section},
+       {"status", d.cancelled ? "partial (" + run.Reason() + ")"
+                              : std::to_string(d.failed) + " values failed" +
+                                    (d.contact_lost > 0
+                                         ? ", " + std::to_string(d.contact_lost) + " lost contact"
+                                         : std::string())}});
   run.Phase("writing");
   ss::TsvTable points = ss::OrbitDiagramTable(*s.system, d, s.labels),
                exps = ss::ExponentTable(*s.system, d, s.labels);
@@ -269,8 +274,8 @@ int Main(int argc, char** argv) {
   if (!app.Finish("orbit_diagram.gp", drawn, {figure})) return cli::kExitFailed;
   std::cout << kProg << ": " << (forced ? "forced oscillator, " : "") << model << "\n"
             << axis << " from " << ss::FormatNumber(s.o.from) << " to " << ss::FormatNumber(s.o.to)
-            << ": " << exps.rows() << " values done, " << d.failed << " failed, in "
-            << ss::FormatNumber(std::round(d.seconds * 1e3) / 1e3) << " s\n"
+            << ": " << exps.rows() << " values done, " << d.failed << " failed, " << d.contact_lost
+            << " lost contact, in " << ss::FormatNumber(std::round(d.seconds * 1e3) / 1e3) << " s\n"
             << "wrote " << app.out().dir() << "/orbit_diagram.tsv, lyapunov.tsv, orbit_diagram.gp"
             << (app.gnuplot().ok() && !drawn.empty() ? " and " + figure : std::string()) << "\n";
   std::string partial;

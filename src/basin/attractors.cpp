@@ -148,6 +148,14 @@ Attractor ClassifyAttractor(const System& s, const SectionRun& r, const Attracto
   for (const SectionPoint& q : p) sticks += q.sticks;
   a.sticks = static_cast<int>(std::lround(sticks / K));
   a.sticks_per_period = sticks / K;
+  // Settling: every kept return on one side of the last (K >= kSettlingReturns)
+  // with an exponent clearly off 0 (a spiral, not a torus of rotation near 0).
+  const bool drifting =
+      K >= Tolerances::kSettlingReturns && std::abs(r.lyapunov) > 3 * r.lyapunov_err;
+  bool up = drifting, down = drifting;
+  for (int k = 1; k < K; ++k)
+    up = up && p[k].z[0] > p[k - 1].z[0], down = down && p[k].z[0] < p[k - 1].z[0];
+  if (up || down) return a.kind = AttractorKind::kSettling, a;
   a.kind = r.lyapunov > std::max(3 * r.lyapunov_err, tol.ChaoticExponentFloor())
                ? AttractorKind::kChaotic
                : AttractorKind::kUndecided;
@@ -164,8 +172,8 @@ Attractor ClassifyStart(const System& sys, const PoincareSection& section, const
   Attractor a = ClassifyAttractor(sys, *r, o);
   LyapunovOptions more = o.iterate;
   more.transient = more.align = o.iterate.align;
-  while (a.kind == AttractorKind::kUndecided && r->status == LyapunovStatus::kDone &&
-         more.keep <= o.max_keep / 4) {
+  while ((a.kind == AttractorKind::kUndecided || a.kind == AttractorKind::kSettling) &&
+         r->status == LyapunovStatus::kDone && more.keep <= o.max_keep / 4) {
     more.keep *= 4;
     *r = IterateSection(sys, r->end, section, more, cancelled, o.max_amplitude);
     a = ClassifyAttractor(sys, *r, o);

@@ -94,6 +94,21 @@ int Diverged(const Eigen::VectorXd& z, double a) {
   return -1;
 }
 
+// A start with a contact already open (its normal force <= 0) is outside
+// the model: the run ends at once as kContactOpen.
+bool OpenAtStart(const System& s, const FlowPoint& start, SectionRun* run) {
+  for (int i = 0; i < s.contacts(); ++i) {
+    const std::optional<ContactVelocity> n = s.NormalForce(i);
+    if (!n || n->At(start.z.data()) > 0) continue;
+    run->status = LyapunovStatus::kContactOpen;
+    run->message = "contact " + std::to_string(i) + " is open at the start (normal force " +
+                   Num(n->At(start.z.data())) + ")";
+    run->end = start;
+    return true;
+  }
+  return false;
+}
+
 // The kept point at z after the return r (its switches recorded).
 SectionPoint Point(const System& s, const FlowPoint& z, const FlowRun& r,
                    const std::vector<FlowSwitch>& switches, double dt) {
@@ -201,6 +216,7 @@ SectionRun IterateSection(const System& s, const FlowPoint& start, const Poincar
   const Eigen::VectorXd clocks = start.z.tail(n - nt);
   const double rest_tol = Tolerances::From(o.flow.rtol, o.flow.atol).SectionCycle();
   SectionRun run;
+  if (OpenAtStart(s, start, &run)) return run;
   run.points.reserve(o.keep);
   TangentProduct tangent(nt, o.keep, o.batches);
   std::vector<FlowSwitch> switches;
@@ -228,6 +244,15 @@ SectionRun IterateSection(const System& s, const FlowPoint& start, const Poincar
     run.steps += r.steps;
     if (r.status != (timed ? FlowStatus::kTimeLimit : FlowStatus::kSection)) {
       EndWithout(s, r, timed, k, rest_tol, &run);
+      const int far = Diverged(r.end.z.head(nt), max_amplitude);
+      const bool lost =
+          run.status == LyapunovStatus::kNoReturn || run.status == LyapunovStatus::kFlowFailed;
+      if (lost && far >= 0) {  // drifted off with no return (a stuck drift)
+        run.status = LyapunovStatus::kDiverged;
+        run.message = "|" + s.StateName(far) + "| = " + Num(r.end.z[far]) + " passed " +
+                      Num(max_amplitude) + " before return " + std::to_string(k) +
+                      ", t = " + Num(r.end.t);
+      }
       if (run.status == LyapunovStatus::kRest) z = r.end;
       break;
     }

@@ -173,7 +173,8 @@ OrbitDiagram ComputeOrbitDiagram(const System& base, int j, const OrbitDiagramOp
   d.error = pool.error;
   d.cancelled = stop.load();
   for (const DiagramColumn& c : d.columns) {
-    if (c.computed && !c.settled()) ++d.failed;
+    if (c.computed && !c.settled())
+      ++(c.run.status == LyapunovStatus::kContactOpen ? d.contact_lost : d.failed);
     d.steps += c.run.steps;
   }
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -18,8 +18,10 @@ bool Done(const DiagramColumn& c) { return c.computed && c.settled(); }
 void AddFailures(const OrbitDiagram& d, const std::string& param, TsvTable& t) {
   for (const DiagramColumn& c : d.columns)
     if (c.computed && !Done(c))
-      t.AddComment(std::string("failed: ") + Name(c.direction) + " " + param + " = " +
-                   FormatNumber(c.value) + ": " + Name(c.run.status) + ", " + c.run.message);
+      t.AddComment(std::string(c.run.status == LyapunovStatus::kContactOpen ? "contact lost: "
+                                                                            : "failed: ") +
+                   Name(c.direction) + " " + param + " = " + FormatNumber(c.value) + ": " +
+                   Name(c.run.status) + ", " + c.run.message);
 }
 
 void CheckFinite(double x, const DiagramColumn& c, const std::string& param) {

@@ -22,6 +22,7 @@ std::string ResponseOptions::ValidationError(const System& system) const {
 }
 
 FlowPoint BeltStart(const System& s) {
+  if (const std::string e = ContactVelocityError(s); !e.empty()) throw InvalidArgument(e);
   FlowPoint p{0, Eigen::VectorXd::Zero(s.dimension()), ModeSet()};
   for (int c = 0; c < s.contacts(); ++c) {
     const ContactVelocity h = s.Contact(c);
@@ -52,13 +53,14 @@ class Row {
 };
 
 void Row::operator()(int j) const {
-  const std::unique_ptr<System> s = base_.Clone();
+  std::unique_ptr<System> s;
   const AttractorOptions& bo = o_.attractor;
   FlowPoint z;
   bool fresh = true;
   for (int i = 0; i < g_.n1 && !poll_(); ++i) {
     const size_t k = static_cast<size_t>(j) * g_.n1 + i;
     try {
+      if (!s) s = base_.Clone();
       s->SetParameterValue(pl_.p1, g_.x1[i]);
       s->SetParameterValue(pl_.p2, g_.x2[j]);
       if (const std::string e = s->ValidationError(); !e.empty()) throw InvalidArgument(e);
@@ -105,6 +107,12 @@ ResponseGrid Responses(const System& system, const SystemPlane& pl, const Respon
   g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!pool.ok() && pool.threads == 0) {  // no thread started: every cell failed, and why
     g.failed = static_cast<int>(n), g.failure = pool.error;
+    return g;
+  }
+  if (!pool.ok()) {  // a task's escaped error (none expected: each cell catches its own)
+    g.failed = 1, g.failure = pool.error;
+    for (size_t k = 0; k < n; ++k)
+      g.failed += g.done[k] && g.cells[k].kind == AttractorKind::kFailed;
     return g;
   }
   for (size_t k = 0; k < n; ++k) {

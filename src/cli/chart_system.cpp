@@ -166,9 +166,6 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
                      FormatNumber(o.plane.to1) + "], " + s->ParameterName(o.plane.p2) + " = [" +
                      FormatNumber(o.plane.from2) + ", " + FormatNumber(o.plane.to2) + "]"},
        {"status", status}});
-  if (ro.n1 > 0)
-    meta.emplace_back("grid", std::to_string(ro.n1) + " x " + std::to_string(ro.n2) +
-                                  " cells, each row swept along " + s->ParameterName(o.plane.p1));
   auto text = [&meta](TsvTable t) {
     t.PrependMeta(meta);
     return t.str();
@@ -176,14 +173,14 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
   run.Phase("writing");
   app.out().Write("curves.tsv", text(SystemCurvesTable(*s, c)));
   app.out().Write("codim2.tsv", text(SystemCodim2Table(*s, c)));
-  if (ro.n1 > 0)
+  if (grid.n1 > 0)  // not where the curves were cut short before the grid
     app.out().Write("response.tsv", text(ResponseGridTable(grid, s->ParameterName(o.plane.p1),
                                                            s->ParameterName(o.plane.p2))));
   const std::string title = EnhancedText(model) + (complete ? "" : " (partial)");
   if (app.plots()) app.out().Write("chart.gp", SystemChartScript(*s, c, title, format, &grid));
   std::vector<std::string> stale;
   if (!app.plots()) stale.push_back("chart.gp");
-  if (ro.n1 == 0) stale.push_back("response.tsv");
+  if (grid.n1 == 0) stale.push_back("response.tsv");
   if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return kExitFailed;
   PrintSummary(prog, *s, c, grid, model, app.out().dir(),
                app.plots() && app.gnuplot().ok() ? figure : std::string());

@@ -3,13 +3,15 @@
 // FindOrbits (orbits/orbit_search.hpp), in orbits.tsv: one row per
 // stroboscopic point, the orbit's data repeated; orbits.gp draws the points.
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/simulate_forced.hpp"
 #include "stickslip/forced/branch.hpp"
-#include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 
 namespace stickslip::cli {
 
@@ -17,19 +19,33 @@ namespace {
 
 constexpr int kMaxPeriodMultiple = 12;  // the scan's work grows like max_m^2
 
-std::string OrbitsScript(const std::string& title, FigureFormat f) {
+// The script plots only the series that have points (gnuplot fails on a
+// series that is NaN throughout): stable and unstable stroboscopic points,
+// or an empty frame that says none was found.
+std::string OrbitsScript(const std::string& title, FigureFormat f, int stable, int unstable) {
   std::string s = FigurePreamble(f, 950, 750);
   s += "set output " + GnuplotQuoted(FigureFile("orbits", f)) + "\n";
   s += "set title \"periodic orbits, stroboscopic points (cos Ωt = 1)\\n\" . " +
        GnuplotQuoted(FigureTitle(title, {})) + "\n";
   s += "set xlabel 'displacement x (dimensionless)'\nset ylabel 'velocity dx/dt (dimensionless)'\n";
   s += "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
-  s += "plot 'orbits.tsv' using (column('stable') == 1 ? $7 : NaN):8:(sprintf('m=%d', "
-       "column('m'))) with labels point pt 7 ps 1.2 lc rgb '#1f77b4' offset 1,1 title 'stable', "
-       "\\\n";
-  s += "     'orbits.tsv' using (column('stable') == 0 ? $7 : NaN):8 with points pt 6 ps 1.2 "
-       "lc rgb '#d62728' title 'unstable'\n";
-  return s;
+  if (stable + unstable == 0)
+    return s +
+           "set xrange [-1:1]\nset yrange [-1:1]\n"
+           "set label 'no periodic orbit found' at graph 0.5, graph 0.5 center\n"
+           "plot NaN notitle\n";
+  std::vector<std::string> series;
+  if (stable > 0)
+    series.push_back(
+        "'orbits.tsv' using (column('stable') == 1 ? $7 : NaN):8:(sprintf('m=%d', "
+        "column('m'))) with labels point pt 7 ps 1.2 lc rgb '#1f77b4' offset 1,1 title 'stable'");
+  if (unstable > 0)
+    series.push_back(
+        "'orbits.tsv' using (column('stable') == 0 ? $7 : NaN):8 with points pt 6 ps 1.2 "
+        "lc rgb '#d62728' title 'unstable'");
+  s += "plot " + series[0];
+  if (series.size() > 1) s += ", \\\n     " + series[1];
+  return s + "\n";
 }
 
 }  // namespace
@@ -57,7 +73,11 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
   const std::string title = DescribeModel(in.p.base) + " force=" + FormatNumber(in.p.force) +
                             " omega=" + FormatNumber(in.p.omega);
   Metadata meta = RunMetadata(prog, command, in.p.base, in.shown);
-  const std::string partial = r.ok() ? "" : "scan cancelled (" + app.run().Reason() + ")";
+  std::string partial;
+  if (r.status == OrbitScanStatus::kCancelled)
+    partial = "scan cancelled (" + app.run().Reason() + ")";
+  else if (!r.ok())
+    partial = "scan failed: " + r.message;
   meta.insert(meta.end(), {{"model", "forced oscillator, " + title},
                            {"force", FormatNumber(in.p.force)},
                            {"omega", FormatNumber(in.p.omega)},
@@ -82,7 +102,10 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
                 o.stable ? 1 : 0, so_.from_exit_map ? "exit-map" : "strobe"});
   }
   app.out().Write("orbits.tsv", t.str());
-  app.out().Write("orbits.gp", OrbitsScript(title, format));
+  int stable = 0, unstable = 0;  // stroboscopic points of each
+  for (const FoundOrbit& f : r.orbits)
+    (f.orbit.stable ? stable : unstable) += static_cast<int>(f.points.size());
+  app.out().Write("orbits.gp", OrbitsScript(title, format, stable, unstable));
   if (!app.Finish("orbits.gp", {figure}, {figure})) return kExitFailed;
   std::cout << prog << ": forced oscillator, " << title << "; " << r.orbits.size()
             << " periodic orbits with m <= " << so.max_m << "\n";

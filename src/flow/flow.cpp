@@ -81,7 +81,8 @@ std::string SystemError(const System& s) {
   if (s.contacts() < 1 || s.contacts() > ModeSet::kMaxContacts)
     return "Flow: contacts = " + std::to_string(s.contacts()) + " must lie in [1, " +
            std::to_string(ModeSet::kMaxContacts) + "]";
-  return s.ValidationError();
+  const std::string e = s.ValidationError();
+  return e.empty() ? ContactVelocityError(s) : e;
 }
 }  // namespace
 

@@ -119,6 +119,7 @@ std::string AttractorScript(const System& sys, const AttractorBasins& b, const S
                          : a.kind == AttractorKind::kUndecided   ? kUndecidedGrey
                          : a.kind == AttractorKind::kUnbounded   ? "#ffffff"
                          : a.kind == AttractorKind::kContactLost ? kFillContactLost
+                         : a.kind == AttractorKind::kSettling    ? kFillSettling
                                                                  : SeriesColor(static_cast<int>(i));
     os << (i ? ", \\\n     " : "") << "'" << f.stem << ".tsv' using '" << u
        << "':(column('attractor') == " << i << " ? column('" << w << "') : 1/0):("

@@ -15,6 +15,7 @@ const char* const kFillPureSlip = "#fdbf6f";
 const char* const kFillEquilibrium = "#d9d9d9";
 const char* const kFillUndecided = "#ffffff";
 const char* const kFillContactLost = "#ffe066";
+const char* const kFillSettling = "#c7eae5";
 
 bool ParseFigureFormat(const std::string& text, FigureFormat* f) { return FromName(text, f); }
 

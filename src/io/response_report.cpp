@@ -22,8 +22,13 @@ std::string PeriodicName(int m, int sticks) {
                       : std::to_string(sticks) + (sticks == 1 ? " stick" : " sticks"));
 }
 
-// A failed or unbounded cell's exponent is no number: "-".
-TsvTable::Cell Number(double x) { return std::isfinite(x) ? TsvTable::Cell(x) : "-"; }
+// An exponent that was not measured (a failed, unbounded or contact-lost
+// cell) or is no number: "-".
+TsvTable::Cell Number(double x, AttractorKind k) {
+  const bool measured = k != AttractorKind::kFailed && k != AttractorKind::kUnbounded &&
+                        k != AttractorKind::kContactLost;
+  return measured && std::isfinite(x) ? TsvTable::Cell(x) : "-";
+}
 
 std::string KindName(AttractorKind k) {
   return k == AttractorKind::kUndecided ? "quasi-periodic" : Name(k);
@@ -57,9 +62,9 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g) {
     c.names.push_back(PeriodicName(m, s));
     c.kinds.push_back(AttractorKind::kPeriodic);
   }
-  for (AttractorKind k :
-       {AttractorKind::kRest, AttractorKind::kUndecided, AttractorKind::kChaotic,
-        AttractorKind::kUnbounded, AttractorKind::kContactLost, AttractorKind::kFailed})
+  for (AttractorKind k : {AttractorKind::kRest, AttractorKind::kSettling, AttractorKind::kUndecided,
+                          AttractorKind::kChaotic, AttractorKind::kUnbounded,
+                          AttractorKind::kContactLost, AttractorKind::kFailed})
     if (std::find(others.begin(), others.end(), k) != others.end()) {
       c.names.push_back(KindName(k));
       c.kinds.push_back(k);
@@ -89,7 +94,7 @@ TsvTable ResponseGridTable(const ResponseGrid& g, const std::string& p1, const s
     const Attractor& a = g.cells[k];
     const bool periodic = a.kind == AttractorKind::kPeriodic;
     t.AddRow({g.x1[k % g.n1], g.x2[k / g.n1], c.class_of[k], KindName(a.kind), periodic ? a.m : 0,
-              a.sticks, Number(a.lyapunov), Number(g.lyapunov_err[k])});
+              a.sticks, Number(a.lyapunov, a.kind), Number(g.lyapunov_err[k], a.kind)});
   }
   return t;
 }
@@ -115,6 +120,8 @@ std::string ResponseFill(const ResponseClasses& c, int cls) {
       return "#fbb4ae";
     case AttractorKind::kContactLost:
       return kFillContactLost;
+    case AttractorKind::kSettling:
+      return kFillSettling;
     case AttractorKind::kFailed:
       return "#ff0000";
   }
@@ -140,8 +147,8 @@ void ResponseRaster(std::ostream& os, const ResponseGrid& g, const ResponseClass
   else
     os << "NaN notitle";
   for (size_t i = 0; i < c.names.size(); ++i)
-    os << ", \\\n     NaN with boxes fs solid 1.0 lc rgb '" << ResponseFill(c, static_cast<int>(i))
-       << "' title " << GnuplotQuoted(c.names[i]);
+    os << ", \\\n     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '"
+       << ResponseFill(c, static_cast<int>(i)) << "' title " << GnuplotQuoted(c.names[i]);
 }
 
 }  // namespace stickslip

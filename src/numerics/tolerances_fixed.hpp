@@ -28,6 +28,10 @@ struct FixedTolerances {
   // kSearchBoxGrowth, and at least kSearchBoxFloor (1 + |centre|).
   static constexpr double kSearchBoxPeriods = 10, kSearchBoxGrowth = 1.5;
   static constexpr double kSearchBoxFloor = 1e-3;
+  // Attractors (basin/attractors.hpp): kept returns monotone in component 0
+  // are settling only from this many on (a random sequence of K is monotone
+  // with probability 2 / K!).
+  static constexpr int kSettlingReturns = 8;
   // Forced exit map: |dg/dt| below kExitMapFold is a fold (the map's slope 1).
   static constexpr double kExitMapFold = 1e-14;
   // Forced shooting: det(DP^m - I) below kSingularShooting (1 + max |a_ij|) is

@@ -181,7 +181,8 @@ FlowPoint Search::ExitStart(int contact, Mode side, double t) const {
   p.mode = ModeOf(s_, p.z);
   p.mode.set(contact, Mode::kStick);
   const double sign = side == Mode::kSlipBelow ? 1 : -1;  // lambda = +mu_s N leaves below
-  s_.ProjectOnExit(p.mode, contact, sign * s_.StaticLimit(contact, p.z), p.z);
+  for (int pass = 0; pass < 2; ++pass)  // again at the moved state: a limit mu_s N(z)
+    s_.ProjectOnExit(p.mode, contact, sign * s_.StaticLimit(contact, p.z), p.z);
   p.mode.set(contact, side);
   return p;
 }

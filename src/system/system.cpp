@@ -3,7 +3,10 @@
 #include "stickslip/system/system.hpp"
 
 #include <cmath>
+#include <string>
 #include <vector>
+
+#include "numerics/numbers.hpp"
 
 namespace stickslip {
 
@@ -21,6 +24,24 @@ int System::ParameterIndex(const std::string& name) const {
   for (int j = 0; j < parameters(); ++j)
     if (ParameterName(j) == name) return j;
   return -1;
+}
+
+std::string ContactVelocityError(const System& s) {
+  const int tangent = s.dimension() - s.clocks();
+  for (int c = 0; c < s.contacts(); ++c) {
+    const ContactVelocity h = s.Contact(c);
+    const std::string name = "contact " + std::to_string(c) + "'s velocity";
+    if (h.size < 1 || h.size > ContactVelocity::kMaxTerms)
+      return name + " has " + std::to_string(h.size) + " terms, not 1 to " +
+             std::to_string(ContactVelocity::kMaxTerms);
+    for (int t = 0; t < h.size; ++t)
+      if (h.terms[t].index < 0 || h.terms[t].index >= tangent ||
+          !(std::isfinite(h.terms[t].weight) && h.terms[t].weight != 0))
+        return name + "'s term " + std::to_string(t) + " (component " +
+               std::to_string(h.terms[t].index) + ", weight " + Num(h.terms[t].weight) +
+               ") must be a state component with a finite nonzero weight";
+  }
+  return "";
 }
 
 // One Newton step on r(z) = lambda_i(z) - bound along the gradient of r,

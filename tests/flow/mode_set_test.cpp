@@ -26,6 +26,8 @@ namespace {
 
 struct Pair {
   double e = -0.5, k = 1, c = 0, v = 0.2, mu_s = 0.4, mu_k = 0.3;
+  int terms = 1;      // of each contact's velocity (a bad system: 0)
+  double weight = 1;  // of its term (a bad system: 0)
 };
 
 class MassCoupled final : public System {
@@ -47,8 +49,8 @@ class MassCoupled final : public System {
   int DerivativeOf(int i) const override { return i % 2 == 0 ? i + 1 : -1; }
   ContactVelocity Contact(int i) const override {
     ContactVelocity c;
-    c.terms[0] = {2 * i + 1, 1.0};
-    c.size = 1;
+    c.terms[0] = {2 * i + 1, p_.weight};
+    c.size = p_.terms;
     c.speed = p_.v;
     return c;
   }
@@ -140,6 +142,25 @@ TEST(ModeSets, ContactOrderIsInconsistentTheEnumerationIsNot) {
   EXPECT_EQ(r.consistent, 1);
   EXPECT_EQ(r.mode, Both(Mode::kStick, Mode::kStick));
   EXPECT_EQ(ModeOf(s, z), Both(Mode::kStick, Mode::kStick));
+}
+
+// A contact velocity with no term, or a term of weight 0, defines no
+// surface: the flow refuses the system by name (ContactVelocityError).
+TEST(ModeSets, ContactVelocityWithoutATermIsRefused) {
+  Pair p;
+  p.terms = 0;
+  try {
+    const MassCoupled s(p);
+    Flow flow(s, FlowOptions{});
+    ADD_FAILURE() << "no terms accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("contact 0's velocity has 0 terms"), std::string::npos)
+        << e.what();
+  }
+  p = Pair();
+  p.weight = 0;
+  EXPECT_THROW(Flow(MassCoupled(p), FlowOptions()), InvalidArgument);
+  EXPECT_EQ(ContactVelocityError(MassCoupled(Pair())), "");
 }
 
 TEST(ModeSets, OneContactGivesFilippovsRule) {

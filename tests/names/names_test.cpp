@@ -80,7 +80,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("SectionKind", SectionKind::kSurface);
   Covers("OrbitScanStatus", OrbitScanStatus::kCancelled);
   Covers("FigureFormat", FigureFormat::kSvg);
-  Covers("AttractorKind", AttractorKind::kContactLost);
+  Covers("AttractorKind", AttractorKind::kSettling);
   Covers("LyapunovStatus", LyapunovStatus::kContactOpen);
   Covers("SweepDirection", SweepDirection::kDown);
   Covers("Parameter", Parameter::kOmega);

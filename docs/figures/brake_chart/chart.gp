@@ -16,14 +16,14 @@ set key outside below horizontal font ',11'
 set tics out nomirror front
 set border 3 front
 set label "CP" at 0.53588356390956615,0.024420528293237542 offset 1,0.6 front font ',11' noenhanced
-array C[6] = [0x08519c, 0x3182bd, 0xffffff, 0xd9d9d9, 0x404040, 0xffe066]
+array C[6] = [0x08519c, 0x3182bd, 0xffffff, 0xc7eae5, 0xd9d9d9, 0xffe066]
 plot 'response.tsv' using 1:2:(0.0023671874999999995):(0.00031562499999999993):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
-     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#ffffff' title "rest", \
-     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
-     NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
-     NaN with boxes fs solid 1.0 lc rgb '#ffe066' title "contact-lost", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#ffffff' title "rest", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#c7eae5' title "settling", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#ffe066' title "contact-lost", \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb '#c00000' dt 1 title "HB of steady sliding", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
      'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.2 lc rgb 'black' notitle

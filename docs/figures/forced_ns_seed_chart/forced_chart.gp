@@ -19,14 +19,15 @@ set bmargin at screen 0.26
 set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
 set tics out nomirror front
 set border 3 front
-array C[4] = [0x08519c, 0x3182bd, 0x8c6d31, 0xd9d9d9]
+array C[5] = [0x08519c, 0x3182bd, 0x8c6d31, 0xc7eae5, 0xd9d9d9]
 set label "R1" at 0.95209284364822822,0.0056012896286581773 center front font ',12' noenhanced
 set label "R1" at 1.0340741248910748,0.0036860340375502302 center front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.012625000000000001):(0.0012372500000000001):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
-     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
-     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#8c6d31' title "m >= 5", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#c7eae5' title "settling", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) title "NS, Neimark-Sacker", \
      'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) notitle, \

@@ -1,4 +1,4 @@
-# The orbit diagram of ss_orbit_diagram: stroboscopic section points (phase 0) and
+# The orbit diagram of ss_orbit_diagram: section points (forcing phase 0) and
 # the largest Lyapunov exponent against omega.
 set terminal pngcairo size 1100,900 enhanced font 'Sans,12'
 set encoding utf8
@@ -34,7 +34,7 @@ set tmargin 3
 set bmargin 0.5
 set title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3"
 set format x ''
-set ylabel 'displacement x at forcing phase 0'
+set ylabel "displacement x at forcing phase 0"
 plot 'orbit_diagram.tsv' using (sel('down', 'omega')):'x' with points pt 7 ps 0.25 lc rgb '#d55e00' title 'sweep down', \
      'orbit_diagram.tsv' using (sel('up', 'omega')):'x' with points pt 7 ps 0.12 lc rgb '#0072b2' title 'sweep up'
 unset title
@@ -43,7 +43,7 @@ set origin 0, 0
 set tmargin 0.5
 set bmargin 7
 set format x '% g'
-set xlabel 'forcing frequency Ω'
+set xlabel "forcing frequency Ω"
 set ylabel 'largest Lyapunov exponent λ_1'
 set key outside below center horizontal
 plot 0 with lines ls 7 notitle, \

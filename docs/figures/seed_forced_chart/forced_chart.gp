@@ -19,25 +19,26 @@ set bmargin at screen 0.26
 set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
 set tics out nomirror front
 set border 3 front
-array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xd9d9d9, 0x404040]
+array C[16] = [0x08519c, 0x3182bd, 0x6baed6, 0xbdd7e7, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0xfd8d3c, 0x54278f, 0x756bb1, 0x8c6d31, 0xc7eae5, 0xd9d9d9, 0x404040]
 set label "CP" at 0.65316437982255893,0.33354508886481576 center front font ',12' noenhanced
 set label "GG" at 0.45772787214741323,0.49351775035093437 center front font ',12' noenhanced
 plot 'response.tsv' using 1:2:(0.011362499999999999):(0.0069437499999999994):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
-     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#6baed6' title "m = 1, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#bdd7e7' title "m = 1, 3 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#006d2c' title "m = 2, 1 stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#31a354' title "m = 2, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#74c476' title "m = 2, 3 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#a63603' title "m = 3, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#e6550d' title "m = 3, 3 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#fd8d3c' title "m = 3, 4 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#54278f' title "m = 4, 4 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#756bb1' title "m = 4, 5 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
-     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
-     NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#6baed6' title "m = 1, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#bdd7e7' title "m = 1, 3 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#006d2c' title "m = 2, 1 stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#31a354' title "m = 2, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#74c476' title "m = 2, 3 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#a63603' title "m = 3, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#e6550d' title "m = 3, 3 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#fd8d3c' title "m = 3, 4 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#54278f' title "m = 4, 4 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#756bb1' title "m = 4, 5 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#8c6d31' title "m >= 5", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#c7eae5' title "settling", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#404040' title "chaotic", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
      'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \

@@ -27,7 +27,7 @@ attractor	x	xdot
 EOD
 set output 'basins_forced.png'
 set title "Stribeck law: β = 0.05, v = 0.25, μ_s = 0.4, μ_k = 0.25, v_s = 0.2, A = 0.3, Ω = 0.627"
-set xlabel 'displacement x at forcing phase 0 (dimensionless)'
+set xlabel "displacement x at forcing phase 0 (dimensionless)"
 set ylabel "velocity x' at forcing phase 0 (dimensionless)"
 unset grid
 set bmargin 8.5

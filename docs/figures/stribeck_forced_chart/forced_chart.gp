@@ -21,21 +21,21 @@ set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0x54278f, 0x756bb1, 0x9e9ac8, 0xcbc9e2, 0x8c6d31, 0xd9d9d9, 0x404040]
 plot 'response.tsv' using 1:2:(0.0088374999999999999):(0.0069437499999999994):(C[int($3)+1]) with boxxyerror fs solid 1.0 noborder lc rgb variable notitle, \
-     NaN with boxes fs solid 1.0 lc rgb '#08519c' title "m = 1, no stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#3182bd' title "m = 1, 1 stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#6baed6' title "m = 1, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#006d2c' title "m = 2, 1 stick", \
-     NaN with boxes fs solid 1.0 lc rgb '#31a354' title "m = 2, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#74c476' title "m = 2, 3 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#a63603' title "m = 3, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#e6550d' title "m = 3, 3 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#54278f' title "m = 4, 2 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#756bb1' title "m = 4, 3 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#9e9ac8' title "m = 4, 4 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#cbc9e2' title "m = 4, 5 sticks", \
-     NaN with boxes fs solid 1.0 lc rgb '#8c6d31' title "m >= 5", \
-     NaN with boxes fs solid 1.0 lc rgb '#d9d9d9' title "quasi-periodic", \
-     NaN with boxes fs solid 1.0 lc rgb '#404040' title "chaotic", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#08519c' title "m = 1, no stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#3182bd' title "m = 1, 1 stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#6baed6' title "m = 1, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#006d2c' title "m = 2, 1 stick", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#31a354' title "m = 2, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#74c476' title "m = 2, 3 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#a63603' title "m = 3, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#e6550d' title "m = 3, 3 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#54278f' title "m = 4, 2 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#756bb1' title "m = 4, 3 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#9e9ac8' title "m = 4, 4 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#cbc9e2' title "m = 4, 5 sticks", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#8c6d31' title "m >= 5", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
+     NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#404040' title "chaotic", \
      'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
      'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \

@@ -26,7 +26,9 @@ namespace stickslip {
 
 /// What a start reaches. kContactLost: a contact's normal force reached 0 on
 /// the way (the block lifts off; the model ends there), an outcome, not a
-/// failure.
+/// failure. kSettling: the kept returns still drift one way in component 0
+/// (a slow spiral onto or off a rest point or cycle, next to an HB or NS):
+/// not yet decided, and neither chaos nor a torus.
 enum class AttractorKind {
   kPeriodic,
   kRest,
@@ -34,7 +36,8 @@ enum class AttractorKind {
   kUndecided,
   kUnbounded,
   kFailed,
-  kContactLost
+  kContactLost,
+  kSettling
 };
 template <>
 struct EnumNames<AttractorKind> {
@@ -42,7 +45,7 @@ struct EnumNames<AttractorKind> {
       {AttractorKind::kPeriodic, "periodic"},        {AttractorKind::kRest, "rest"},
       {AttractorKind::kChaotic, "chaotic"},          {AttractorKind::kUndecided, "undecided"},
       {AttractorKind::kUnbounded, "unbounded"},      {AttractorKind::kFailed, "failed"},
-      {AttractorKind::kContactLost, "contact-lost"},
+      {AttractorKind::kContactLost, "contact-lost"}, {AttractorKind::kSettling, "settling"},
   };
 };
 

@@ -70,8 +70,11 @@ struct DiagramColumn {
 
 struct OrbitDiagram {
   std::vector<DiagramColumn> columns;  ///< the up sweep, then the down sweep
-  int failed = 0;                      ///< computed values neither kDone nor kRest
-  int threads = 0;                     ///< worker threads that ran
+  int failed = 0;                      ///< computed values neither kDone, kRest nor kContactOpen
+  /// Computed values whose run lost contact (kContactOpen: the model ends
+  /// there, an outcome, not a failure); they have no section points.
+  int contact_lost = 0;
+  int threads = 0;    ///< worker threads that ran
   std::string error;  ///< not empty: no worker thread could start (nothing computed)
   bool cancelled = false;
   double seconds = 0;  ///< wall time

@@ -54,6 +54,7 @@ extern const char* const kFillPureSlip;
 extern const char* const kFillEquilibrium;
 extern const char* const kFillUndecided;
 extern const char* const kFillContactLost;  ///< AttractorKind::kContactLost
+extern const char* const kFillSettling;     ///< AttractorKind::kSettling
 /// Colours of series that are not kinds (methods of a benchmark), in order.
 const char* SeriesColor(int i);
 

@@ -14,8 +14,8 @@
 namespace stickslip {
 
 /// The response classes of a grid, in a fixed order: periodic (m, sticks)
-/// by m then sticks (m >= 5 one class), then rest, quasi-periodic, chaotic, unbounded, failed
-/// (only those present). class_of[k] indexes names for cell k (-1: not done).
+/// by m then sticks (m >= 5 one class), then rest, quasi-periodic, chaotic, unbounded,
+/// contact-lost, failed (only those present). class_of[k] indexes names for cell k (-1: not done).
 struct ResponseClasses {
   std::vector<std::string> names;  ///< "m = 1, 1 stick", "chaotic", ...
   std::vector<AttractorKind> kinds;
@@ -25,14 +25,15 @@ ResponseClasses ClassifyResponses(const ResponseGrid& g);
 
 /// response.tsv: one row per grid cell, p1 fastest: <p1>, <p2> (the cell
 /// centre), class (index into the comment lines' list), response (periodic,
-/// rest, quasi-periodic, chaotic, unbounded, failed), m, sticks (per m
-/// periods), lyapunov, lyapunov_err. Cells not reached (cancelled) are left
+/// rest, quasi-periodic, chaotic, unbounded, contact-lost, failed), m,
+/// sticks (per m periods), lyapunov, lyapunov_err ("-" where not measured). Cells not reached (cancelled) are left
 /// out. A comment names the grid and its classes.
 TsvTable ResponseGridTable(const ResponseGrid& g, const std::string& p1, const std::string& p2);
 
 /// The fill of class `cls`: a hue per m (1 blue, 2 green, 3 orange, 4
 /// purple, 5+ ochre), darker for fewer sticks; rest white, quasi-periodic
-/// light grey, chaotic dark grey, unbounded pink, failed red ("#rrggbb").
+/// light grey, chaotic dark grey, unbounded pink, contact-lost yellow,
+/// failed red ("#rrggbb").
 std::string ResponseFill(const ResponseClasses& c, int cls);
 
 /// gnuplot: `array C[...] = [...]`, the classes' fills (one line).

@@ -45,6 +45,12 @@ struct ContactVelocity {
   }
 };
 
+/// Empty if every contact's velocity has 1 to kMaxTerms terms, each of a
+/// state component (clocks excluded) with a finite nonzero weight; else one
+/// line naming the contact (the flow refuses such a system).
+class System;
+std::string ContactVelocityError(const System& s);
+
 /// A contact's event functions differentiated in one parameter
 /// (System::ContactParameterDerivative).
 struct ContactSensitivity {
