@@ -100,9 +100,7 @@ PyResponse ResponseOf(const ResponseGrid& g) {
   for (const Attractor& a : g.cells) {
     kind.push_back(Name(a.kind));
     m.push_back(a.kind == AttractorKind::kPeriodic ? a.m : 0), sticks.push_back(a.sticks);
-    const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded &&
-                          a.kind != AttractorKind::kContactLost;
-    lyapunov.push_back(measured && std::isfinite(a.lyapunov) ? a.lyapunov : 0.0);
+    lyapunov.push_back(HasExponent(a.kind) && std::isfinite(a.lyapunov) ? a.lyapunov : 0.0);
   }
   r.p1 = ReadOnly(g.x1), r.p2 = ReadOnly(g.x2);
   r.kind = Grid(ReadOnlyStrings(kind), g.n2, g.n1), r.m = Grid(ReadOnly(m), g.n2, g.n1);

@@ -114,6 +114,10 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
               << FormatNumber(OrbitExtrema(so_.orbit).x_max) << ", |multiplier| "
               << FormatNumber(std::abs(so_.orbit.multipliers[0])) << ", "
               << (so_.orbit.stable ? "stable" : "unstable") << "\n";
+  if (r.shots > 0 && r.converged == 0)  // none found is not none there (a slow settling)
+    std::cerr << prog << ": note: none of the " << r.shots
+              << " Newton solves converged; an orbit may still exist (a simulation at these "
+                 "parameters shows where the motion settles)\n";
   std::cout << "wrote " << app.out().dir() << "/orbits.tsv, orbits.gp"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   return app.ExitCode(partial);

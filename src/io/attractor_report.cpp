@@ -33,8 +33,7 @@ TsvTable AttractorStartTable(const System& sys, const AttractorBasins& b, const 
   for (const AttractorStart& s : b.starts) {
     if (s.attractor < 0) continue;
     const Attractor& a = b.attractors[s.attractor];
-    const bool measured = a.kind != AttractorKind::kFailed && a.kind != AttractorKind::kUnbounded &&
-                          a.kind != AttractorKind::kContactLost;
+    const bool measured = HasExponent(a.kind);
     if (measured && !std::isfinite(s.lyapunov))
       throw InvalidArgument("basin start " + u + " = " + FormatNumber(s.at[0]) +
                             " has a non-finite exponent");

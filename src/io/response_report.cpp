@@ -25,9 +25,7 @@ std::string PeriodicName(int m, int sticks) {
 // An exponent that was not measured (a failed, unbounded or contact-lost
 // cell) or is no number: "-".
 TsvTable::Cell Number(double x, AttractorKind k) {
-  const bool measured = k != AttractorKind::kFailed && k != AttractorKind::kUnbounded &&
-                        k != AttractorKind::kContactLost;
-  return measured && std::isfinite(x) ? TsvTable::Cell(x) : "-";
+  return HasExponent(k) && std::isfinite(x) ? TsvTable::Cell(x) : "-";
 }
 
 std::string KindName(AttractorKind k) {

@@ -49,6 +49,13 @@ struct EnumNames<AttractorKind> {
   };
 };
 
+/// Whether a start or cell of this kind has a measured Lyapunov exponent
+/// (not a failed, unbounded or contact-lost one, whose run ended early).
+inline bool HasExponent(AttractorKind k) {
+  return k != AttractorKind::kFailed && k != AttractorKind::kUnbounded &&
+         k != AttractorKind::kContactLost;
+}
+
 struct Attractor {
   AttractorKind kind = AttractorKind::kUndecided;
   int m = 0;       ///< period in returns (periodic, rest)
