@@ -1,5 +1,6 @@
 #include "cli/run_control.hpp"
 
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -18,14 +19,29 @@ namespace {
 
 // Read by the worker thread too: a lock-free atomic, safe in a signal handler.
 std::atomic<int> g_signal{0};
+std::atomic<long long> g_first_ns{0};  // when the first signal came
 static_assert(std::atomic<int>::is_always_lock_free);
+static_assert(std::atomic<long long>::is_always_lock_free);
+
+// A second signal within this of the first is the same interrupt delivered
+// twice: timeout(1) signals the app and then its process group.
+constexpr long long kSameInterruptNs = 200'000'000;
+
+long long MonotonicNs() {  // clock_gettime is async-signal-safe (POSIX)
+  timespec ts{};
+  ::clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<long long>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
+}
 
 void OnSignal(int sig) {
-  if (g_signal != 0) {  // the second one: the default action, at once
+  const long long now = MonotonicNs();
+  if (g_signal != 0) {  // a second interrupt: the default action, at once
+    if (now - g_first_ns.load() < kSameInterruptNs) return;
     std::signal(sig, SIG_DFL);
     std::raise(sig);
     return;
   }
+  g_first_ns = now;
   g_signal = sig;
 }
 

@@ -90,6 +90,23 @@ TEST_F(BasinApp, MaxTimeAndSigintLeaveAWholePartialFile) {
   EXPECT_TRUE(Contains(tsv, "# status: partial (cancelled)"));
 }
 
+// timeout(1) sends its signal to the app and then to the app's process
+// group: two copies of one interrupt, here 50 ms apart. The app takes them
+// as one (exit 1, a whole partial file); only a later second signal ends it
+// at once (run_control.cpp).
+TEST_F(BasinApp, ATwiceDeliveredInterruptIsOneInterrupt) {
+  const std::string cmd = "cd " + dir_ + " && { " + kApp + " --study " + kStudies +
+                          "/stribeck_basin.ini --nx 600 --ny 600 --no_plots --out " + Out() +
+                          " > stdout 2> stderr & p=$!; sleep 2; kill -INT $p; sleep 0.05; "
+                          "kill -INT $p; wait $p; echo $? > rc; }";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(ReadFile(dir_ + "/rc"), "1\n") << ReadFile(dir_ + "/stderr");
+  EXPECT_TRUE(Contains(ReadFile(dir_ + "/stderr"), "interrupted by signal 2"));
+  const std::string tsv = ReadFile(Out() + "/basins.tsv");
+  EXPECT_TRUE(Contains(tsv, "# status: partial (cancelled)"));
+  EXPECT_EQ(tsv.back(), '\n');
+}
+
 TEST_F(BasinApp, HelpNamesTheOutputsAndVersionPrintsIt) {
   EXPECT_EQ(Run("--help"), 0);
   EXPECT_TRUE(Contains(out_, "basins.tsv"));
