@@ -10,6 +10,7 @@
 #include "numerics/numbers.hpp"
 #include "parallel/pool.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 
 namespace stickslip {
 
@@ -24,11 +25,7 @@ std::string ResponseOptions::ValidationError(const System& system) const {
 FlowPoint BeltStart(const System& s) {
   if (const std::string e = ContactVelocityError(s); !e.empty()) throw InvalidArgument(e);
   FlowPoint p{0, Eigen::VectorXd::Zero(s.dimension()), ModeSet()};
-  for (int c = 0; c < s.contacts(); ++c) {
-    const ContactVelocity h = s.Contact(c);
-    const ContactVelocity::Term& last = h.terms[h.size - 1];
-    p.z[last.index] -= h.At(p.z.data()) / last.weight;
-  }
+  for (int c = 0; c < s.contacts(); ++c) OntoSurface(s.Contact(c), p.z);
   p.mode = ModeOf(s, p.z);
   return p;
 }

@@ -7,6 +7,7 @@
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 
 namespace stickslip {
 
@@ -170,14 +171,12 @@ void Search::Strobe() {
 }
 
 // A stick exit of `contact` at time t into `side`: the centre with the
-// clock at t, the contact's velocity 0 (by its last term) and its stick
+// clock at t, the contact's velocity 0 (OntoSurface) and its stick
 // force on the limit the side leaves over (System::ProjectOnExit).
 FlowPoint Search::ExitStart(int contact, Mode side, double t) const {
   FlowPoint p{t, center_, ModeSet()};
   p.z[clock_] = 2 * M_PI * t / T_;
-  const ContactVelocity h = s_.Contact(contact);
-  const ContactVelocity::Term& last = h.terms[h.size - 1];
-  p.z[last.index] -= h.At(p.z.data()) / last.weight;
+  OntoSurface(s_.Contact(contact), p.z);
   p.mode = ModeOf(s_, p.z);
   p.mode.set(contact, Mode::kStick);
   const double sign = side == Mode::kSlipBelow ? 1 : -1;  // lambda = +mu_s N leaves below

@@ -46,7 +46,7 @@ struct ResponseOptions {
   std::string ValidationError(const System& system) const;
 };
 
-/// The start of every row: each contact's velocity 0 (its last term set, as
+/// The start of every row: each contact's velocity 0 (OntoSurface, as
 /// a block carried by the belt), the other components and the clock at 0,
 /// in Filippov's mode (ModeOf).
 FlowPoint BeltStart(const System& system);
