@@ -40,27 +40,21 @@ constexpr const char* kNotes =
     "and a first return is given up after time 50; a longer run is an orbit running away.\n"
     "Study files: model and solver keys at top level, this app's keys in [chart].\n"
     "An interrupted or failed run writes the curves so far, marked partial.\n"
-    "Forced oscillator: --force A, --omega W, or an axis omega or force selects\n"
-    "it; the axes are two of its parameters, the law's, force and omega (defaults\n"
-    "omega [0.5, 2] x force [0.05, 1]). LP, PD, NS and GR curves (GR: where non-stop motion ends) "
-    "are traced from\n"
-    "the special points of one-parameter runs on --seed_lines lines per axis; --grid N (default "
-    "40)\n"
-    "classifies N x N cells by the attractor reached (period m and sticks, quasi-periodic,\n"
-    "chaotic by the largest Lyapunov exponent; each row swept along --param). Outputs:\n"
-    "curves.tsv, codim2.tsv (R1, R2, LPPD, SL, CP, GG), response.tsv, forced_chart.gp and\n"
-    "forced_chart.png; a curve cut short or a failed seed run makes it partial (exit 1).\n"
-    "A system of several masses or contacts (--system chain or mode_coupling): --param and\n"
-    "--param2 name two of its parameters, --from, --to, --from2 and --to2 are required. HB\n"
-    "curves of steady sliding and LP, PD and NS curves of periodic orbits are traced from the\n"
-    "special points of one-parameter runs on --seed_lines lines per axis (each from the\n"
-    "attractors settled on at 5 points of the line); --grid N shades N x N cells by the\n"
-    "attractor reached there (on the maxima of the first component, each row swept along\n"
-    "--param from the blocks carried by the belt). Outputs: curves.tsv, codim2.tsv (SL,\n"
-    "LPPD, R1, R2, CP), response.tsv (with --grid), chart.gp and chart.png (docs/systems.md,\n"
-    "\"Charts\"). A curve cut short, a failed seed run or a failed cell makes it partial\n"
-    "(exit 1). Its solver defaults are the\n"
-    "library's (--max_steps 200000, no time limit on a return).\n";
+    "Forced oscillator: --force A, --omega W, or an axis omega or force selects it; the\n"
+    "axes are two of its parameters, the law's, force and omega (defaults omega [0.5, 2] x\n"
+    "force [0.05, 1]), its flow's rtol and atol 1e-12 and --grid 40. A system of several\n"
+    "masses or contacts (--system chain or mode_coupling): --param and --param2 name two of\n"
+    "its parameters, and --from, --to, --from2 and --to2 are required. Both are charts of\n"
+    "one kind (docs/systems.md, \"Charts\"): HB curves of steady sliding (no forcing) and LP,\n"
+    "PD, NS and GR curves of periodic orbits (GR, forced: where non-stop motion ends) are\n"
+    "traced from the special points of one-parameter runs on --seed_lines lines per axis;\n"
+    "--grid N shades N x N cells by the attractor reached there (period m and sticks,\n"
+    "quasi-periodic, chaotic by the largest Lyapunov exponent, rest, contact lost; each row\n"
+    "swept along --param from the blocks carried by the belt; forced: on the stroboscopic\n"
+    "map, else on the maxima of the first component). Outputs: curves.tsv, codim2.tsv (SL,\n"
+    "LPPD, R1, R2, CP, GG), response.tsv (with a grid), chart.gp and chart.png. A curve cut\n"
+    "short, a failed seed run or a failed cell makes it partial (exit 1). The solver\n"
+    "defaults of --system are the library's (--max_steps 200000, no time limit on a return).\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 
 po::options_description AppOptions() {
@@ -195,11 +189,15 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_chart [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
-  if (cli::SystemRequested(args))
-    return cli::RunSystemChart(args, kProg, cli::CommandLine(argc, argv));
+  if (cli::SystemRequested(args)) {
+    cli::ChartJob job = cli::SystemChartJob(args, kProg, cli::CommandLine(argc, argv));
+    return cli::RunChart(args, kProg, job);
+  }
   cli::RefuseSystem(args, kProg);
-  if (cli::ForcedChartRequested(args))
-    return cli::RunForcedChart(args, kProg, cli::CommandLine(argc, argv));
+  if (cli::ForcedChartRequested(args)) {
+    cli::ChartJob job = cli::ForcedChartJob(args, kProg, cli::CommandLine(argc, argv));
+    return cli::RunChart(args, kProg, job);
+  }
   ss::Params base;
   ss::ChartOptions opts = Configure(args, &base);
   const ss::Plane& pl = opts.plane;

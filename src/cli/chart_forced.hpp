@@ -1,20 +1,19 @@
-// ss_chart for the harmonically forced oscillator: the
-// chart in two of omega, force, v, beta (--param, --param2) with the LP, PD,
-// NS and GR curves, their codimension-two points and the response grid
-// (stickslip/chart/forced_chart.hpp); curves.tsv, codim2.tsv, response.tsv
-// and forced_chart.png through the one output path (cli/app.hpp).
+// ss_chart for the harmonically forced oscillator (ForcedModel): the chart in
+// two of its parameters (--param, --param2; default the (omega, force) map)
+// with the LP, PD, NS and GR curves, their codimension-two points and a 40 x 40
+// response grid, run as every system's chart (chart_system.hpp).
 #pragma once
 
 #include <string>
 
-#include "cli/study.hpp"
+#include "cli/chart_system.hpp"
 
 namespace stickslip::cli {
 
 // True when ss_chart is asked for the forced oscillator: --force given, or an
 // axis (--param, --param2) that is omega or force.
 bool ForcedChartRequested(const Arguments& args);
-// The whole forced chart run; returns the exit code.
-int RunForcedChart(const Arguments& args, const std::string& prog, const std::string& command);
+// The forced oscillator's chart. Throws UsageError on bad input.
+ChartJob ForcedChartJob(const Arguments& args, const std::string& prog, const std::string& command);
 
 }  // namespace stickslip::cli

@@ -18,9 +18,6 @@ namespace stickslip::cli {
 
 namespace {
 
-// --grid's largest side, as the forced chart's.
-constexpr long kMaxGridSide = 400;
-
 // A parameter of s by the option `key` (UsageError naming it otherwise).
 int Axis(const Arguments& args, const System& s, const char* key) {
   if (!args.Given(key))
@@ -77,9 +74,9 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
 // validated for s with the chart's flow and amplitude bound.
 ResponseOptions Grid(const Arguments& args, const System& s, const SystemChartOptions& o) {
   const long n = args.Integer("grid", 0);
-  if (n != 0 && (n < 2 || n > kMaxGridSide))
+  if (n != 0 && (n < 2 || n > kMaxChartGrid))
     throw UsageError("invalid value '" + args.Text("grid") + "' for " + args.Source("grid") +
-                     ": must be 0 (no response grid) or in [2, " + std::to_string(kMaxGridSide) +
+                     ": must be 0 (no response grid) or in [2, " + std::to_string(kMaxChartGrid) +
                      "]");
   ResponseOptions ro;
   ro.n1 = ro.n2 = static_cast<int>(n);
@@ -90,9 +87,9 @@ ResponseOptions Grid(const Arguments& args, const System& s, const SystemChartOp
   return ro;
 }
 
-// "complete", "partial: 2 curves cut short, ..." or "partial (interrupted ...)".
+// "complete", "partial: 2 curves cut short, ..." or "cut short (interrupted ...)".
 std::string Status(const SystemChart& c, const ResponseGrid& g, RunControl& run) {
-  if (c.status == ChartStatus::kCancelled || g.cancelled) return "partial (" + run.Reason() + ")";
+  if (c.status == ChartStatus::kCancelled || g.cancelled) return "cut short (" + run.Reason() + ")";
   if (c.status == ChartStatus::kOk && g.failed == 0) return "complete";
   std::string why = c.status == ChartStatus::kOk ? "" : c.message;
   if (g.failed > 0) why += (why.empty() ? "" : "; ") + g.failure;
@@ -103,24 +100,26 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
                   const ResponseGrid& g, const std::string& model, const std::string& dir,
                   const std::string& figure) {
   const std::string p1 = s.ParameterName(c.plane.p1), p2 = s.ParameterName(c.plane.p2);
-  std::printf("%s: %s; %s x %s\n%d curves, %d points, %d seed runs in %.2f s\n", prog.c_str(),
-              model.c_str(), p1.c_str(), p2.c_str(), static_cast<int>(c.curves.size()), c.points(),
-              c.seed_runs, c.seconds);
+  std::printf("%s: %s; %s x %s\n%d curves, %d points, from %d one-parameter runs in %.2f s\n",
+              prog.c_str(), model.c_str(), p1.c_str(), p2.c_str(),
+              static_cast<int>(c.curves.size()), c.points(), c.seed_runs, c.seconds);
   if (c.failed_seed_runs + c.seeds_not_traced + c.cut_curves + c.duplicates > 0)
     std::printf(
         "%d seed runs failed, %d seeds gave no curve, %d curves cut short, %d duplicates dropped\n",
         c.failed_seed_runs, c.seeds_not_traced, c.cut_curves, c.duplicates);
   for (size_t i = 0; i < c.curves.size(); ++i) {
     const SystemCurve& cv = c.curves[i];
-    std::printf("  curve %zu %s: %zu points, %d evaluations, %.2f s, ends %s\n", i + 1,
-                CurveLabel(cv.kind), cv.points.size(), cv.evaluations, cv.seconds,
-                cv.ends.Text().c_str());
+    std::printf("  curve %zu %s m=%d: %zu points, %d evaluations, %.2f s, from %s; ends %s\n",
+                i + 1, CurveLabel(cv.kind),
+                cv.kind == CurveKind::kHopf ? 0 : PeriodMultiple(cv.section), cv.points.size(),
+                cv.evaluations, cv.seconds, cv.seed.c_str(), cv.ends.Text().c_str());
   }
   for (const SystemCodim2& p : c.codim2)
     std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", Name(p.label), p1.c_str(), p.p1, p2.c_str(),
                 p.p2, p.description.c_str());
   if (g.n1 > 0)
-    std::printf("response grid %d x %d in %.2f s (%d failed)\n", g.n1, g.n2, g.seconds, g.failed);
+    std::printf("response grid %d x %d in %.2f s (%d failed%s)\n", g.n1, g.n2, g.seconds, g.failed,
+                g.cancelled ? ", cut short" : "");
   std::printf("wrote %s/curves.tsv, codim2.tsv%s%s\n", dir.c_str(),
               g.n1 > 0 ? ", response.tsv" : "",
               figure.empty() ? "" : (", chart.gp, " + figure).c_str());
@@ -128,13 +127,30 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
 
 }  // namespace
 
-int RunSystemChart(const Arguments& args, const std::string& prog, const std::string& command) {
-  const std::unique_ptr<System> s = SystemFromArguments(args);
-  SystemChartOptions o = Configure(args, *s);
-  ResponseOptions ro = Grid(args, *s, o);
-  const FlowOptions& flow = o.branch.shooting.flow;
-  const std::string model =
-      DescribeSystem(*s, SystemChoiceOf(args), o.plane.p1, o.plane.p2, "[axis]");
+ChartJob SystemChartJob(const Arguments& args, const std::string& prog,
+                        const std::string& command) {
+  ChartJob job;
+  job.system = SystemFromArguments(args);
+  const System& s = *job.system;
+  job.chart = Configure(args, s);
+  job.grid = Grid(args, s, job.chart);
+  const FlowOptions& flow = job.chart.branch.shooting.flow;
+  job.model =
+      DescribeSystem(s, SystemChoiceOf(args), job.chart.plane.p1, job.chart.plane.p2, "[axis]");
+  job.title = EnhancedText(job.model);
+  job.meta = ToolMetadata(prog, command);
+  job.meta.emplace_back("system", job.model);
+  AddRestartMetadata(s, SystemChoiceOf(args), UncheckedModelFromArguments(args), flow,
+                     job.chart.branch.max_amplitude, nullptr, job.meta);
+  job.meta.insert(job.meta.end(),
+                  {{"rtol", FormatNumber(flow.rtol)}, {"atol", FormatNumber(flow.atol)}});
+  return job;
+}
+
+int RunChart(const Arguments& args, const std::string& prog, ChartJob& job) {
+  const System& s = *job.system;
+  SystemChartOptions& o = job.chart;
+  ResponseOptions& ro = job.grid;
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("chart", format);
   AppRun app(prog, args, "chart", {"curves.tsv", "codim2.tsv", "response.tsv", "chart.gp", figure});
@@ -145,25 +161,20 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
     return run.Cancelled();
   };
   o.branch.palc.cancelled = o.cancelled;
-  const SystemChart c = ChartSystem(*s, o);
+  const SystemChart c = ChartSystem(s, o);
   ResponseGrid grid;
   if (ro.n1 > 0 && !run.Cancelled()) {
     run.Phase("classifying the response grid");
     ro.cancelled = o.cancelled;
-    grid = Responses(*s, o.plane, ro);
+    grid = Responses(s, o.plane, ro);
   }
   const bool complete = c.status == ChartStatus::kOk && !grid.cancelled && grid.failed == 0;
   const std::string status = Status(c, grid, run);
-  Metadata meta = ToolMetadata(prog, command);
-  meta.emplace_back("system", model);
-  AddRestartMetadata(*s, SystemChoiceOf(args), UncheckedModelFromArguments(args), flow,
-                     o.branch.max_amplitude, nullptr, meta);
+  Metadata meta = job.meta;
   meta.insert(
       meta.end(),
-      {{"rtol", FormatNumber(flow.rtol)},
-       {"atol", FormatNumber(flow.atol)},
-       {"range", s->ParameterName(o.plane.p1) + " = [" + FormatNumber(o.plane.from1) + ", " +
-                     FormatNumber(o.plane.to1) + "], " + s->ParameterName(o.plane.p2) + " = [" +
+      {{"range", s.ParameterName(o.plane.p1) + " = [" + FormatNumber(o.plane.from1) + ", " +
+                     FormatNumber(o.plane.to1) + "], " + s.ParameterName(o.plane.p2) + " = [" +
                      FormatNumber(o.plane.from2) + ", " + FormatNumber(o.plane.to2) + "]"},
        {"status", status}});
   auto text = [&meta](TsvTable t) {
@@ -171,20 +182,20 @@ int RunSystemChart(const Arguments& args, const std::string& prog, const std::st
     return t.str();
   };
   run.Phase("writing");
-  app.out().Write("curves.tsv", text(SystemCurvesTable(*s, c)));
-  app.out().Write("codim2.tsv", text(SystemCodim2Table(*s, c)));
+  app.out().Write("curves.tsv", text(SystemCurvesTable(s, c)));
+  app.out().Write("codim2.tsv", text(SystemCodim2Table(s, c)));
   if (grid.n1 > 0)  // not where the curves were cut short before the grid
-    app.out().Write("response.tsv", text(ResponseGridTable(grid, s->ParameterName(o.plane.p1),
-                                                           s->ParameterName(o.plane.p2))));
-  const std::string title = EnhancedText(model) + (complete ? "" : " (partial)");
-  if (app.plots()) app.out().Write("chart.gp", SystemChartScript(*s, c, title, format, &grid));
+    app.out().Write("response.tsv", text(ResponseGridTable(grid, s.ParameterName(o.plane.p1),
+                                                           s.ParameterName(o.plane.p2))));
+  const std::string title = job.title + (complete ? "" : " (partial)");
+  if (app.plots()) app.out().Write("chart.gp", SystemChartScript(s, c, title, format, &grid));
   std::vector<std::string> stale;
   if (!app.plots()) stale.push_back("chart.gp");
   if (grid.n1 == 0) stale.push_back("response.tsv");
   if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return kExitFailed;
-  PrintSummary(prog, *s, c, grid, model, app.out().dir(),
+  PrintSummary(prog, s, c, grid, job.model, app.out().dir(),
                app.plots() && app.gnuplot().ok() ? figure : std::string());
-  return app.ExitCode(complete ? std::string() : "partial chart written: " + status);
+  return app.ExitCode(complete ? std::string() : "chart written, " + status);
 }
 
 }  // namespace stickslip::cli

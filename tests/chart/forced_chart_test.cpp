@@ -2,8 +2,6 @@
 // the forced chart's options) against a one-parameter run located at that
 // curve point's second parameter, and the response grid's cells against the
 // orbits FindOrbits finds there.
-#include "stickslip/chart/forced_chart.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +9,8 @@
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
+#include "stickslip/chart/response_grid.hpp"
+#include "stickslip/chart/system_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
@@ -18,12 +18,17 @@
 namespace stickslip {
 namespace {
 
-ForcedChartOptions Options(ParameterAxis a1, double from1, double to1, ParameterAxis a2,
+// The forced tools' chart settings (ss_chart's forced run) on the rectangle,
+// at rtol = atol = 1e-13.
+SystemChartOptions Options(ParameterAxis a1, double from1, double to1, ParameterAxis a2,
                            double from2, double to2) {
-  ForcedChartOptions o;
-  o.plane.p1 = a1, o.plane.p2 = a2;
+  SystemChartOptions o;
+  o.plane.p1 = a1.index(), o.plane.p2 = a2.index();
   o.plane.from1 = from1, o.plane.to1 = to1, o.plane.from2 = from2, o.plane.to2 = to2;
-  o.flow.rtol = o.flow.atol = 1e-13;
+  FlowOptions flow = ForcedModel::FlowDefaults();
+  flow.rtol = flow.atol = 1e-13;
+  o.branch = OrbitBranchOptions(flow);
+  o.branch.max_amplitude = 50;
   o.max_step = 0.02;
   return o;
 }
@@ -57,10 +62,10 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const OrbitBranch seed_run = OmegaRun(0.3);
   const OrbitRow* pd = First(seed_run, SpecialKind::kPeriodDoubling);
   ASSERT_NE(pd, nullptr) << Name(seed_run.status);
-  const ForcedChartOptions o = Options(Parameter::kOmega, 0.5, 0.8, Parameter::kForce, 0.25, 0.35);
+  const SystemChartOptions o = Options(Parameter::kOmega, 0.5, 0.8, Parameter::kForce, 0.25, 0.35);
   const ForcedModel model(StribeckChartParams(0.3, pd->p));
-  const SystemCurve c = TraceOrbitCurve(model, SystemOptions(model, o), CurveKind::kPeriodDoubling,
-                                        pd->start, pd->p, 0.3, seed_run.section, 1);
+  const SystemCurve c = TraceOrbitCurve(model, o, CurveKind::kPeriodDoubling, pd->start, pd->p, 0.3,
+                                        seed_run.section, 1);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
   int checked = 0;
   for (const double target : {0.27, 0.33}) {
@@ -85,12 +90,13 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
 // (m <= 4) has a stable orbit of that m and stick count there; a chaotic
 // cell has no stable orbit of m <= 4.
 TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
-  ForcedChartOptions o = Options(Parameter::kOmega, 0.56, 1.0, Parameter::kForce, 0.1, 0.5);
-  o.flow.rtol = o.flow.atol = 1e-12;
-  o.iterate.flow = o.flow;
-  o.n1 = 8, o.n2 = 5;
+  const SystemChartOptions o = Options(Parameter::kOmega, 0.56, 1.0, Parameter::kForce, 0.1, 0.5);
+  ResponseOptions ro;  // ss_chart's forced run's, at 1e-12
+  ro.n1 = 8, ro.n2 = 5;
+  ro.attractor.iterate.flow = ForcedModel::FlowDefaults();
+  const FlowOptions& flow = ro.attractor.iterate.flow;
   const ForcedModel base(StribeckChartParams(0.3, 0.8));
-  const ResponseGrid g = Responses(base, SystemOptions(base, o).plane, ResponseOptionsOf(o));
+  const ResponseGrid g = Responses(base, o.plane, ro);
   int periodic = 0, chaotic = 0;
   for (int j = 0; j < g.n2; ++j)
     for (int i = 0; i < g.n1; ++i) {
@@ -100,7 +106,7 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
       if (!check) continue;
       const ForcedModel model(StribeckChartParams(g.x2[j], g.x1[i]));
       OrbitSearchOptions so;
-      so.orbit = ShootingOptions(o.flow);
+      so.orbit = ShootingOptions(flow);
       so.max_m = 4, so.max_sticks = 6;
       so.half_width = model.SearchBox();
       const FoundOrbits f = FindOrbits(model, so);

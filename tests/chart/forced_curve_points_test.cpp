@@ -13,7 +13,6 @@
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
-#include "stickslip/chart/forced_chart.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/forced/branch.hpp"
 
@@ -30,9 +29,13 @@ FlowOptions BeltFlow() {
 }
 
 // The study's chart: Omega 0.3..1.2, A 0.05..0.6, its tolerances (1e-12).
-ForcedChartOptions PointsChartOptions() {
-  ForcedChartOptions o;
+SystemChartOptions PointsChartOptions() {
+  SystemChartOptions o;
+  o.plane.p1 = ParameterAxis(Parameter::kOmega).index();
+  o.plane.p2 = ParameterAxis(Parameter::kForce).index();
   o.plane.from1 = 0.3, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
+  o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  o.branch.max_amplitude = 50;
   o.max_step = 0.01;
   return o;
 }
@@ -116,10 +119,11 @@ const SystemCurvePoint* Near(const SystemCurve& c, double a) {
 }
 
 // Every point of c within max_step of the one before (scaled by the rectangle).
-void ExpectNoJumps(const SystemCurve& c, const ForcedChartOptions& o) {
+void ExpectNoJumps(const SystemCurve& c, const SystemChartOptions& o) {
+  const double w1 = o.plane.to1 - o.plane.from1, w2 = o.plane.to2 - o.plane.from2;
   for (size_t i = 1; i < c.points.size(); ++i) {
-    const double d = std::hypot((c.points[i].p1 - c.points[i - 1].p1) / o.plane.width1(),
-                                (c.points[i].p2 - c.points[i - 1].p2) / o.plane.width2());
+    const double d = std::hypot((c.points[i].p1 - c.points[i - 1].p1) / w1,
+                                (c.points[i].p2 - c.points[i - 1].p2) / w2);
     EXPECT_LE(d, 1.01 * o.max_step)
         << Name(c.kind) << " from (" << c.points[i - 1].p1 << ", " << c.points[i - 1].p2 << ") to ("
         << c.points[i].p1 << ", " << c.points[i].p2 << ")";
@@ -130,14 +134,13 @@ void ExpectNoJumps(const SystemCurve& c, const ForcedChartOptions& o) {
 // for jumps and its points near `levels` against one-parameter runs.
 int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double> levels) {
   const OrbitBranch run = SeedRun(0.5);
-  const ForcedChartOptions o = PointsChartOptions();
+  const SystemChartOptions o = PointsChartOptions();
   int checked = 0, seeds = 0, ends = 0;
   for (const OrbitRow& s : run.special) {
     if (s.label != label) continue;
     ++seeds;
     const ForcedModel model(Seed(0.5, s.p));
-    const SystemCurve c =
-        TraceOrbitCurve(model, SystemOptions(model, o), kind, s.start, s.p, 0.5, run.section, 1);
+    const SystemCurve c = TraceOrbitCurve(model, o, kind, s.start, s.p, 0.5, run.section, 1);
     const int m = c.section.turns;
     EXPECT_GT(c.points.size(), 5u) << c.ends.Text();
     ExpectNoJumps(c, o);
@@ -166,7 +169,8 @@ int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double>
       const bool fold = label == SpecialKind::kFold;
       const double w = LocateAny(p, m, fold, Sliding, &which);
       const double a = LocateAny(p, m, fold, Sliding, nullptr, Parameter::kForce);
-      const double dw = (w - p.p1) / o.plane.width1(), da = (a - p.p2) / o.plane.width2();
+      const double dw = (w - p.p1) / (o.plane.to1 - o.plane.from1),
+                   da = (a - p.p2) / (o.plane.to2 - o.plane.from2);
       const double d = std::isnan(da)   ? std::abs(dw)
                        : std::isnan(dw) ? std::abs(da)
                                         : std::abs(dw * da) / std::hypot(dw, da);

@@ -13,7 +13,7 @@
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/chart/chart.hpp"
-#include "stickslip/chart/forced_chart.hpp"
+#include "stickslip/chart/system_chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/estimates/estimates.hpp"

@@ -1,9 +1,9 @@
-# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
-# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 thinner with their own dashes; codim2.tsv: SL open circles, the others black dots with labels.
+# A chart written by ss_chart; run `gnuplot chart.gp` in this directory.
+# curves.tsv: HB orange, GR red, LP black, PD black dashed, NS magenta, m >= 2 thinner with
+# their own dashes; codim2.tsv: SL open circles, the others black dots with labels; response.tsv: the cells by the attractor reached.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
-set output 'forced_chart.png'.suffix
+set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
 set encoding utf8
@@ -28,7 +28,7 @@ plot 'response.tsv' using 1:2:(0.012625000000000001):(0.0012372500000000001):(C[
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#8c6d31' title "m >= 5", \
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#c7eae5' title "settling", \
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
-     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
+     'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, grazing", \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) title "NS, Neimark-Sacker", \
      'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) notitle, \
      'codim2.tsv' using 2:(strcol(1) ne 'SL' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title 'codimension 2'

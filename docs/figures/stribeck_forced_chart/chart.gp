@@ -1,9 +1,9 @@
-# Forced chart written by ss_chart; run `gnuplot forced_chart.gp` in this directory.
-# Cells (response.tsv): the attractor reached there; curves (curves.tsv): GR red,
-# LP black, PD black dashed, NS magenta, m >= 2 thinner with their own dashes; codim2.tsv: SL open circles, the others black dots with labels.
+# A chart written by ss_chart; run `gnuplot chart.gp` in this directory.
+# curves.tsv: HB orange, GR red, LP black, PD black dashed, NS magenta, m >= 2 thinner with
+# their own dashes; codim2.tsv: SL open circles, the others black dots with labels; response.tsv: the cells by the attractor reached.
 if (!exists('suffix')) suffix = ''
 set terminal pngcairo size 1000,860 enhanced font 'Sans,12'
-set output 'forced_chart.png'.suffix
+set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
 set encoding utf8
@@ -36,7 +36,7 @@ plot 'response.tsv' using 1:2:(0.0088374999999999999):(0.0069437499999999994):(C
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#8c6d31' title "m >= 5", \
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#404040' title "chaotic", \
-     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, non-stop motion ends", \
+     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 title "GR, grazing", \
      'curves.tsv' using 1:($4 == 12 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 15 ? $2 : NaN) with lines lw 3.5 lc rgb '#c00000' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
@@ -51,5 +51,5 @@ plot 'response.tsv' using 1:2:(0.0088374999999999999):(0.0069437499999999994):(C
      'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, curve ends: sliding'
+     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, a curve ends: sliding'
 unset output
