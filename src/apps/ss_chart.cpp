@@ -42,7 +42,8 @@ constexpr const char* kNotes =
     "An interrupted or failed run writes the curves so far, marked partial.\n"
     "Forced oscillator: --force A, --omega W, or an axis omega or force selects it; the\n"
     "axes are two of its parameters, the law's, force and omega (defaults omega [0.5, 2] x\n"
-    "force [0.05, 1]), its flow's rtol and atol 1e-12 and --grid 40. A system of several\n"
+    "force [0.05, 1]; --force 0.3 where force is no axis), its flow's rtol and atol 1e-12\n"
+    "and --grid 40. A system of several\n"
     "masses or contacts (--system chain or mode_coupling): --param and --param2 name two of\n"
     "its parameters, and --from, --to, --from2 and --to2 are required. Both are charts of\n"
     "one kind (docs/systems.md, \"Charts\"): HB curves of steady sliding (no forcing) and LP,\n"
@@ -53,8 +54,10 @@ constexpr const char* kNotes =
     "swept along --param from the blocks carried by the belt; forced: on the stroboscopic\n"
     "map, else on the maxima of the first component). Outputs: curves.tsv, codim2.tsv (SL,\n"
     "LPPD, R1, R2, CP, GG), response.tsv (with a grid), chart.gp and chart.png. A curve cut\n"
-    "short, a failed seed run or a failed cell makes it partial (exit 1). The solver\n"
-    "defaults of --system are the library's (--max_steps 200000, no time limit on a return).\n";
+    "short, a failed seed run or a failed cell makes it partial (exit 1). --max_amplitude X\n"
+    "ends seed branches and grid cells past |x| = X (forced: default 50; --system: 1000).\n"
+    "Their solver defaults are the library's (--max_steps 200000, no time limit on a\n"
+    "return). --no_plots writes the tables only (with a grid, response.tsv too).\n";
 constexpr const char* kExample = "\nExample: ss_chart --study studies/seed_chart.ini --out chart";
 
 po::options_description AppOptions() {
@@ -80,7 +83,9 @@ po::options_description AppOptions() {
       "forced: curves of orbits of period m <= M: each PD with 2m <= M starts the doubled "
       "branch, whose points seed curves too, in [1, 8] (default 2); --system: doubled "
       "branches while 2^doublings <= M");
-  cli::AddRunOptions(d, "chart", "only curves.tsv and codim2.tsv: no regions, no gnuplot");
+  cli::AddRunOptions(d, "chart",
+                     "only the tables: curves.tsv and codim2.tsv (response.tsv with a grid); no "
+                     "regions, no gnuplot");
   cli::AddRestartOptions(d);  // the model from a GR or HB point; its curve is followed first
   return d;
 }

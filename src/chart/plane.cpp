@@ -117,33 +117,4 @@ PlaneError Plane::Check(const Params& base) const {
   return out;
 }
 
-std::string Plane::ValidationError(const ForcedParams& base) const {
-  if (p1 == p2) return "the two axes are both " + p1.name();
-  for (const ParameterAxis& a : {p1, p2})
-    if (std::string e = AxisError(a, base.base.law, true); !e.empty()) return e;
-  for (double x : {from1, to1, from2, to2})
-    if (!std::isfinite(x)) return "a range end is not finite";
-  if (!(from1 < to1)) return "the first range is empty or inverted: from >= to";
-  if (!(from2 < to2)) return "the second range is empty or inverted: from2 >= to2";
-  // As the belt chart's (plane.hpp): a narrower range cannot hold a curve's steps.
-  if (width1() < kMinRelativeWidth * std::max(std::abs(from1), std::abs(to1)) ||
-      width2() < kMinRelativeWidth * std::max(std::abs(from2), std::abs(to2)))
-    return "a range is narrower than " + Num(kMinRelativeWidth) + " max(|from|, |to|)";
-  constexpr int kEdge = 17;
-  for (int k = 0; k < kEdge; ++k) {
-    const double f = static_cast<double>(k) / (kEdge - 1);
-    const double pts[4][2] = {{from1 + f * width1(), from2},
-                              {from1 + f * width1(), to2},
-                              {from1, from2 + f * width2()},
-                              {to1, from2 + f * width2()}};
-    for (const auto& pt : pts) {
-      const std::string e = stickslip::ValidationError(At(base, pt[0], pt[1]));
-      if (!e.empty())
-        return "at " + p1.name() + " = " + Num(pt[0], 6) + ", " + p2.name() + " = " +
-               Num(pt[1], 6) + ": " + e;
-    }
-  }
-  return {};
-}
-
 }  // namespace stickslip

@@ -17,7 +17,7 @@ void AddRunOptions(po::options_description& d, const std::string& default_out,
       "no_plots", po::bool_switch(), no_plots_help.c_str())(
       "max_time", Value()->value_name("S"),
       "wall-time limit in seconds, every phase (gnuplot too); the result so far is kept, "
-      "marked partial (default none)");
+      "marked partial (default 0: none)");
   AddFormatOption(d);
 }
 

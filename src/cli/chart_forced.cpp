@@ -45,17 +45,25 @@ SystemPlane PlaneOf(const Arguments& args, ForcedParams& p) {
   pl.from1 = args.Number("from", range(a1).from), pl.to1 = args.Number("to", range(a1).to);
   pl.from2 = args.Number("from2", range(a2).from), pl.to2 = args.Number("to2", range(a2).to);
   if (!(pl.from1 < pl.to1))
-    throw UsageError(args.Source("to") + " = " + FormatNumber(pl.to1) +
-                     " must exceed --from = " + FormatNumber(pl.from1));
+    throw UsageError(args.Source("to") + " = " + FormatNumber(pl.to1) + " must exceed " +
+                     args.Source("from") + " = " + FormatNumber(pl.from1));
   if (!(pl.from2 < pl.to2))
-    throw UsageError(args.Source("to2") + " = " + FormatNumber(pl.to2) +
-                     " must exceed --from2 = " + FormatNumber(pl.from2));
+    throw UsageError(args.Source("to2") + " = " + FormatNumber(pl.to2) + " must exceed " +
+                     args.Source("from2") + " = " + FormatNumber(pl.from2));
   for (const auto& [from, to, a, b] :
        {std::tuple{pl.from1, pl.to1, "from", "to"}, std::tuple{pl.from2, pl.to2, "from2", "to2"}})
     if (to - from < kMinRelativeWidth * std::max(std::abs(from), std::abs(to)))
       throw UsageError(args.Source(b) + " = " + FormatNumber(to) + " is too close to --" + a +
                        " = " + FormatNumber(from) + ": the width must be >= " +
                        FormatNumber(kMinRelativeWidth) + " max(|--" + a + "|, |--" + b + "|)");
+  // Each range end on its own, the other parameters as given (valid): the end is to blame.
+  for (const auto& [a, x, key] :
+       {std::tuple{a1, pl.from1, "from"}, std::tuple{a1, pl.to1, "to"},
+        std::tuple{a2, pl.from2, "from2"}, std::tuple{a2, pl.to2, "to2"}}) {
+    ForcedParams at = p;
+    a.Set(at, x);
+    CheckForcedModel(args, at, " at " + args.Source(key), a.name());
+  }
   a1.Set(p, pl.from1), a2.Set(p, pl.from2);
   return pl;
 }
@@ -102,6 +110,7 @@ ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
   p.base = UncheckedModelFromArguments(args);
   p.force = args.Number("force", 0.3);
   p.omega = args.Number("omega", 1);
+  CheckForcedModel(args, p);  // every option as given, an axis's too (it is not used)
   ChartJob job;
   SystemChartOptions& o = job.chart;
   o.plane = PlaneOf(args, p);
@@ -114,16 +123,13 @@ ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
     e = x.what();
   }
   if (!e.empty()) throw UsageError("invalid forced chart rectangle (--from .. --to2): " + e);
-  FlowOptions flow = FlowOptionsFromArguments(args);
-  if (!args.Given("rtol")) flow.rtol = ForcedModel::kFlowTol;  // the forced flow's 1e-12
-  if (!args.Given("atol")) flow.atol = ForcedModel::kFlowTol;
-  FlowOptions run = ForcedModel::FlowDefaults();
-  run.rtol = flow.rtol, run.atol = flow.atol, run.max_steps = flow.max_steps;
+  // The forced flow's (rtol = atol = 1e-12, its switch cap) with the apps' step cap.
+  FlowOptions defaults = ForcedModel::FlowDefaults();
+  defaults.max_steps = FlowOptions().max_steps;
+  const FlowOptions run = FlowOptionsFromArguments(args, defaults);
   o.branch = OrbitBranchOptions(run);  // every map on the chart's flow, its step cap too
-  o.branch.max_amplitude = args.Number("max_amplitude", kDefaultAmplitude);
-  if (!(o.branch.max_amplitude > 0))
-    throw UsageError(args.Source("max_amplitude") + " must be > 0");
-  o.max_step = args.Number("max_step", o.max_step);
+  o.branch.max_amplitude = MaxAmplitudeFromArguments(args, kDefaultAmplitude);
+  o.max_step = MaxStepFromArguments(args, o.max_step);
   o.seed_lines = static_cast<int>(
       Bounded(args, "seed_lines", o.seed_lines, 0, SystemChartOptions::kMaxSeedLines));
   o.max_m = static_cast<int>(Bounded(args, "max_m", o.max_m, 1, SystemChartOptions::kMaxMultiple));
@@ -143,15 +149,21 @@ ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
   const std::string described = Describe(p, *model, o.plane);
   job.model = "forced oscillator, " + described;
   job.title = FigureTitle(described, {n1, n2});
-  job.meta = RunMetadata(prog, command, p.base, flow);
+  job.meta = RunMetadata(prog, command, p.base, run);
   for (auto& [key, value] : job.meta)  // the axes' base values are never used
     if (key == n1 || key == n2) value = "axis";
+  for (ParameterAxis a : {Parameter::kForce, Parameter::kOmega})
+    job.meta.push_back(
+        {a.name(), a.name() == n1 || a.name() == n2 ? "axis" : FormatNumber(a.Get(p))});
   job.meta.push_back({"model", job.model});
-  job.meta.push_back({"grid", std::to_string(ro.n1) + " x " + std::to_string(ro.n2) + ", " +
-                                  std::to_string(ro.attractor.iterate.transient) +
-                                  " transient and " + std::to_string(ro.attractor.iterate.keep) +
-                                  " kept forcing periods per cell"});
+  job.meta.push_back(
+      {"grid", ro.n1 == 0 ? std::string("none")
+                          : std::to_string(ro.n1) + " x " + std::to_string(ro.n2) + ", " +
+                                std::to_string(ro.attractor.iterate.transient) + " transient and " +
+                                std::to_string(ro.attractor.iterate.keep) +
+                                " kept forcing periods per cell"});
   job.meta.push_back({"max_m", std::to_string(o.max_m)});
+  job.meta.push_back({"max_amplitude", FormatNumber(o.branch.max_amplitude)});
   job.system = std::move(model);
   return job;
 }

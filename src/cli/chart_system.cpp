@@ -36,7 +36,7 @@ double Required(const Arguments& args, const char* key) {
 }
 
 SystemChartOptions Configure(const Arguments& args, const System& s) {
-  for (const char* k : {"restart", "point", "max_amplitude"})
+  for (const char* k : {"restart", "point"})
     if (args.Given(k)) throw UsageError(args.Source(k) + ": not with --system");
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
@@ -49,12 +49,8 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
     throw UsageError(args.Source("from") + ", " + args.Source("to") + ", " + args.Source("from2") +
                      ", " + args.Source("to2") + ": " + e);
   o.branch = OrbitBranchOptions(FlowOptionsFromArguments(args));
-  o.max_step = args.Number("max_step", o.max_step);
-  if (!(o.max_step >= 1.0 / kMaxCurvePoints && o.max_step <= SystemChartOptions::kMaxStepLimit))
-    throw UsageError("invalid value '" + args.Text("max_step") + "' for " +
-                     args.Source("max_step") + ": must be in [1/" +
-                     std::to_string(kMaxCurvePoints) + ", " +
-                     FormatNumber(SystemChartOptions::kMaxStepLimit) + "]");
+  o.branch.max_amplitude = MaxAmplitudeFromArguments(args, o.branch.max_amplitude);
+  o.max_step = MaxStepFromArguments(args, o.max_step);
   const long lines = args.Integer("seed_lines", o.seed_lines);
   if (lines < 0 || lines > SystemChartOptions::kMaxSeedLines)
     throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
@@ -98,7 +94,7 @@ std::string Status(const SystemChart& c, const ResponseGrid& g, RunControl& run)
 
 void PrintSummary(const std::string& prog, const System& s, const SystemChart& c,
                   const ResponseGrid& g, const std::string& model, const std::string& dir,
-                  const std::string& figure) {
+                  bool script, const std::string& figure) {
   const std::string p1 = s.ParameterName(c.plane.p1), p2 = s.ParameterName(c.plane.p2);
   std::printf("%s: %s; %s x %s\n%d curves, %d points, from %d one-parameter runs in %.2f s\n",
               prog.c_str(), model.c_str(), p1.c_str(), p2.c_str(),
@@ -109,10 +105,13 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
         c.failed_seed_runs, c.seeds_not_traced, c.cut_curves, c.duplicates);
   for (size_t i = 0; i < c.curves.size(); ++i) {
     const SystemCurve& cv = c.curves[i];
-    std::printf("  curve %zu %s m=%d: %zu points, %d evaluations, %.2f s, from %s; ends %s\n",
-                i + 1, CurveLabel(cv.kind),
-                cv.kind == CurveKind::kHopf ? 0 : PeriodMultiple(cv.section), cv.points.size(),
-                cv.evaluations, cv.seconds, cv.seed.c_str(), cv.ends.Text().c_str());
+    // m: forcing periods (a clock's section); an autonomous orbit's returns are in curves.tsv.
+    const std::string m = cv.kind != CurveKind::kHopf && cv.section.kind == SectionKind::kTime
+                              ? " m=" + std::to_string(cv.section.turns)
+                              : "";
+    std::printf("  curve %zu %s%s: %zu points, %d evaluations, %.2f s, from %s; ends %s\n", i + 1,
+                CurveLabel(cv.kind), m.c_str(), cv.points.size(), cv.evaluations, cv.seconds,
+                cv.seed.c_str(), cv.ends.Text().c_str());
   }
   for (const SystemCodim2& p : c.codim2)
     std::printf("  %-5s %s = %.12f  %s = %.12f  %s\n", Name(p.label), p1.c_str(), p.p1, p2.c_str(),
@@ -120,12 +119,30 @@ void PrintSummary(const std::string& prog, const System& s, const SystemChart& c
   if (g.n1 > 0)
     std::printf("response grid %d x %d in %.2f s (%d failed%s)\n", g.n1, g.n2, g.seconds, g.failed,
                 g.cancelled ? ", cut short" : "");
-  std::printf("wrote %s/curves.tsv, codim2.tsv%s%s\n", dir.c_str(),
-              g.n1 > 0 ? ", response.tsv" : "",
-              figure.empty() ? "" : (", chart.gp, " + figure).c_str());
+  std::printf("wrote %s/curves.tsv, codim2.tsv%s%s%s\n", dir.c_str(),
+              g.n1 > 0 ? ", response.tsv" : "", script ? ", chart.gp" : "",
+              figure.empty() ? "" : (", " + figure).c_str());
 }
 
 }  // namespace
+
+double MaxAmplitudeFromArguments(const Arguments& args, double fallback) {
+  const double a = args.Number("max_amplitude", fallback);
+  if (!(a > 0) || !std::isfinite(a))
+    throw UsageError(args.Source("max_amplitude") + " = " + args.Text("max_amplitude") +
+                     ": must be a finite number > 0");
+  return a;
+}
+
+double MaxStepFromArguments(const Arguments& args, double fallback) {
+  const double step = args.Number("max_step", fallback);
+  if (!(step >= 1.0 / kMaxCurvePoints && step <= SystemChartOptions::kMaxStepLimit))
+    throw UsageError("invalid value '" + args.Text("max_step") + "' for " +
+                     args.Source("max_step") + ": must be in [1/" +
+                     std::to_string(kMaxCurvePoints) + ", " +
+                     FormatNumber(SystemChartOptions::kMaxStepLimit) + "]");
+  return step;
+}
 
 ChartJob SystemChartJob(const Arguments& args, const std::string& prog,
                         const std::string& command) {
@@ -148,6 +165,9 @@ ChartJob SystemChartJob(const Arguments& args, const std::string& prog,
 }
 
 int RunChart(const Arguments& args, const std::string& prog, ChartJob& job) {
+  if (job.chart.seed_lines == 0 && job.grid.n1 == 0)
+    throw UsageError(args.Source("seed_lines") + " = 0 with no grid (--grid 0): the chart " +
+                     "would compute nothing; give seed lines or a grid");
   const System& s = *job.system;
   SystemChartOptions& o = job.chart;
   ResponseOptions& ro = job.grid;
@@ -167,6 +187,8 @@ int RunChart(const Arguments& args, const std::string& prog, ChartJob& job) {
     run.Phase("classifying the response grid");
     ro.cancelled = o.cancelled;
     grid = Responses(s, o.plane, ro);
+  } else if (ro.n1 > 0) {
+    grid.cancelled = true;  // cut short before the grid, after the curves' last poll
   }
   const bool complete = c.status == ChartStatus::kOk && !grid.cancelled && grid.failed == 0;
   const std::string status = Status(c, grid, run);
@@ -193,7 +215,7 @@ int RunChart(const Arguments& args, const std::string& prog, ChartJob& job) {
   if (!app.plots()) stale.push_back("chart.gp");
   if (grid.n1 == 0) stale.push_back("response.tsv");
   if (!app.Finish("chart.gp", {figure}, {figure}, stale)) return kExitFailed;
-  PrintSummary(prog, s, c, grid, job.model, app.out().dir(),
+  PrintSummary(prog, s, c, grid, job.model, app.out().dir(), app.plots(),
                app.plots() && app.gnuplot().ok() ? figure : std::string());
   return app.ExitCode(complete ? std::string() : "chart written, " + status);
 }

@@ -29,6 +29,12 @@ struct ChartJob {
   Metadata meta;         ///< every file's header, before the range and status
 };
 
+// --max_amplitude (default `fallback`), finite and > 0; UsageError naming it otherwise.
+double MaxAmplitudeFromArguments(const Arguments& args, double fallback);
+// --max_step (default `fallback`) in [1 / kMaxCurvePoints, kMaxStepLimit];
+// UsageError naming it otherwise.
+double MaxStepFromArguments(const Arguments& args, double fallback);
+
 // --system's chart (--param, --param2, --from .. --to2 required). Throws
 // UsageError on bad input.
 ChartJob SystemChartJob(const Arguments& args, const std::string& prog, const std::string& command);

@@ -62,7 +62,7 @@ const std::vector<std::string>& KnownOutputNames() {
                                   "regions.tsv",
                                   "chart.gp",
                                   "response.tsv",
-                                  "forced_chart.gp",
+                                  "forced_chart.gp",  // an older version's forced chart
                                   "basins.tsv",
                                   "orbits.tsv",
                                   "basins.gp",

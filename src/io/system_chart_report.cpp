@@ -23,7 +23,9 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c) {
   for (int i = 0; i < s.dimension(); ++i) cols.push_back(StateColumn(s, i) + "_0");
   for (int i = 0; i < nt; ++i) cols.push_back(StateColumn(s, i) + "_min");
   for (int i = 0; i < nt; ++i) cols.push_back(StateColumn(s, i) + "_max");
-  for (int i = 1; i <= nt; ++i)
+  // With a clock DP^m on the tangent components, else DP on a surface: one fewer.
+  const int nm = s.clocks() > 0 ? nt : nt - 1;
+  for (int i = 1; i <= nm; ++i)
     for (const char* part : {"_re", "_im"}) cols.push_back("mult" + std::to_string(i) + part);
   cols.insert(cols.end(), {"mult_max", "test"});
   TsvTable t(cols);
@@ -47,7 +49,7 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c) {
       for (const Eigen::VectorXd* v : {&o.lo, &o.hi})
         for (int i = 0; i < nt; ++i) row.emplace_back(hb ? o.start.z[i] : (*v)[i]);
       double mult = 0;
-      for (int i = 0; i < nt; ++i) {
+      for (int i = 0; i < nm; ++i) {
         const std::complex<double> mu =
             i < static_cast<int>(o.multipliers.size()) ? o.multipliers[i] : 0.0;
         row.emplace_back(mu.real());

@@ -49,10 +49,11 @@ void CurveLines(std::ostream& os, const SystemChart& c) {
       bool first = true;
       for (size_t i = 0; i < c.curves.size(); ++i) {
         const SystemCurve& cv = c.curves[i];
-        const bool m2 = cv.kind != CurveKind::kHopf && PeriodMultiple(cv.section) > 1;
+        // Period multiples of a clock's (an autonomous orbit's returns are no multiple).
+        const bool m2 = cv.section.kind == SectionKind::kTime && cv.section.turns > 1;
         if (cv.kind != st.kind || m2 != multiple) continue;
         const std::string title =
-            multiple ? std::string(Name(st.kind)) + " of m ≥ 2 orbits" : st.title;
+            multiple ? std::string(Name(st.kind)) + " of m >= 2 orbits" : st.title;
         os << ", \\\n     'curves.tsv' using 1:($4 == " << i + 1 << " ? $2 : NaN) with lines lw "
            << (multiple ? 2.0 : st.width) << " lc rgb '" << st.color << "' dt "
            << (multiple ? st.dash_multiple : st.dash)
@@ -62,8 +63,9 @@ void CurveLines(std::ostream& os, const SystemChart& c) {
     }
 }
 
-// The plot area in pixels (the margins below on a 1000 x 860 page) and a
-// label's size: 8 px per character of the 12-pt font, 16 px high.
+// The plot area in pixels (about gnuplot's on the 1000 x 860 page with a key
+// of 3 rows of 4 or 6 of 3) and a label's size: 8 px per character of the
+// 12-pt font, 16 px high.
 constexpr int kPlaces = 16;  // where a label may go: 8 directions, 2 distances
 constexpr double kPlotW = 870, kPlotH = 576.2, kCharW = 8, kTextH = 16, kLabelGap = 6;
 
@@ -135,8 +137,8 @@ void Codim2Points(std::ostream& os, const SystemChart& c) {
   const std::string sl = Name(Codim2Label::kSliding);
   if (std::any_of(c.codim2.begin(), c.codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) eq '" << sl
-       << "' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title '" << sl
-       << ", a curve ends: sliding'";
+       << "' ? $3 : NaN) with points pt 6 ps 1.6 lw 2 lc rgb 'black' title '" << sl
+       << ", sliding end'";
   if (!std::all_of(c.codim2.begin(), c.codim2.end(), sliding))
     os << ", \\\n     'codim2.tsv' using 2:(strcol(1) ne '" << sl
        << "' ? $3 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title 'codimension 2'";
@@ -159,15 +161,16 @@ std::string SystemChartScript(const System& s, const SystemChart& c, const std::
      << FigureTerminal(format, 1000, 860) << "set output '" << FigureFile("chart", format)
      << "'.suffix\n"
      << "set datafile separator '\\t'\nset datafile columnheaders\nset encoding utf8\n"
-     << "set xlabel " << GnuplotQuoted(AxisLabel(s, pl.p1)) << "\n"
+     << "set xlabel " << GnuplotQuoted(AxisLabel(s, pl.p1)) << " offset 0,0.5\n"
      << "set ylabel " << GnuplotQuoted(AxisLabel(s, pl.p2)) << "\n"
      << "set xrange [" << pl.from1 << ":" << pl.to1 << "]\n"
      << "set yrange [" << pl.from2 << ":" << pl.to2 << "]\n"
-     << "set title \"" << title << "\"\n"
-     << "set lmargin at screen 0.1\nset rmargin at screen 0.97\n"
-     << "set tmargin at screen 0.93\nset bmargin at screen 0.26\n"
-     << "set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 "
-        "samplen 3 font ',11'\n"
+     << "set title \"" << title
+     << "\"\n"
+     // Margins by gnuplot, so the key below fits at any --size (a column: fewer
+     // key columns, more rows); the label places assume the screen size's plot area.
+     << "set rmargin 3\n"
+     << "set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'\n"
      << "set tics out nomirror front\nset border 3 front\n"
      << (cells ? "" : "set grid lc rgb '#e0e0e0'\n");
   const ResponseClasses rc = cells ? ClassifyResponses(*grid) : ResponseClasses();

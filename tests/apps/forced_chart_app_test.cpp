@@ -49,6 +49,11 @@ TEST_F(ForcedChartAppTest, DenHartogChartHasHisStopCurve) {
     if (row[t.Column("curve")] != "GR") continue;
     const double w = std::stod(row[t.Column("omega")]), a = std::stod(row[t.Column("force")]);
     EXPECT_NEAR(a, DenHartogStopForce(0.3, w), 1e-8) << "omega = " << w;
+    // The multipliers, the larger first, and mult_max the larger's modulus.
+    auto at = [&](const char* c) { return std::stod(row[t.Column(c)]); };
+    const double m1 = std::hypot(at("mult1_re"), at("mult1_im"));
+    EXPECT_GE(m1, std::hypot(at("mult2_re"), at("mult2_im"))) << "omega = " << w;
+    EXPECT_NEAR(at("mult_max"), m1, 1e-15 * (1 + m1)) << "omega = " << w;
     ++gr;
   }
   EXPECT_GT(gr, 10) << out_;
@@ -77,6 +82,12 @@ TEST_F(ForcedChartAppTest, BadInputExits2NamingTheOption) {
       {base + "--param2 force --max_m 0", "--max_m"},
       {base + "--param2 force --restart plots --point 2", "--restart"},  // was ignored
       {base + "--param2 force --point 2", "--point"},
+      {"--force -0.3", "--force"},  // an axis: its value is not used, but checked
+      {"--force 0.3 --omega 0", "--omega"},
+      {"--force 0.3 --param v --param2 beta --omega -1", "--omega"},  // not "rectangle"
+      {base + "--param2 force --from -0.5", "--from"},                // the end at fault
+      {base + "--param2 force --max_amplitude 0", "--max_amplitude = 0"},
+      {base + "--param2 force --seed_lines 0 --grid 0", "--seed_lines"},  // nothing to do
       {"--param v --param2 beta --seed_lines 2", "--seed_lines"},  // a belt chart: forced only
       {"--param v --param2 beta --max_m 4", "--max_m"},
   };

@@ -1,5 +1,5 @@
 // The forced chart: a PD curve point (the one chart's, TraceOrbitCurve on
-// the forced chart's options) against a one-parameter run located at that
+// ss_chart's forced settings) against a one-parameter run located at that
 // curve point's second parameter, and the response grid's cells against the
 // orbits FindOrbits finds there.
 #include <gtest/gtest.h>

@@ -65,8 +65,10 @@ TEST_F(ModeCouplingChartApp, StudyCurvesAgreeWithTheClosedFormAndTheirTests) {
   const tu::Tsv curves = tu::ReadTsv(tu::ReadFile(dir_ + "/out/curves.tsv"));
   const tu::Tsv codim2 = tu::ReadTsv(tu::ReadFile(dir_ + "/out/codim2.tsv"));
   EXPECT_EQ(curves.meta.at("status"), "complete");
-  for (const char* c : {"mu_k", "beta", "curve", "x_min", "ydot_max", "mult_max", "test"})
+  for (const char* c :
+       {"mu_k", "beta", "curve", "x_min", "ydot_max", "mult3_im", "mult_max", "test"})
     EXPECT_GE(curves.Column(c), 0) << c;
+  EXPECT_LT(curves.Column("mult4_re"), 0) << "the surface section's DP has three multipliers";
   stickslip::mode_coupling::CouplingParams p;
   p.law.law = stickslip::LawKind::kCoulomb;
   p.law.mu_s = 0.8;

@@ -7,16 +7,13 @@ set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
 set encoding utf8
-set xlabel "kinetic friction coefficient μ_k"
+set xlabel "kinetic friction coefficient μ_k" offset 0,0.5
 set ylabel "damping ratio β"
 set xrange [0.45000000000000001:0.59999999999999998]
 set yrange [0.01:0.029999999999999999]
 set title "mode\\_coupling: β=[axis] k11=1 k22=1.5 k12=-0.3 gamma=1 v=0.5 μ_s=0.8 μ_k=[axis]"
-set lmargin at screen 0.1
-set rmargin at screen 0.97
-set tmargin at screen 0.93
-set bmargin at screen 0.26
-set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
+set rmargin 3
+set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'
 set tics out nomirror front
 set border 3 front
 array C[6] = [0x08519c, 0x3182bd, 0xffffff, 0xc7eae5, 0xd9d9d9, 0xffe066]

@@ -7,16 +7,13 @@ set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
 set encoding utf8
-set xlabel "belt speed v"
+set xlabel "belt speed v" offset 0,0.5
 set ylabel "kc"
 set xrange [0.10000000000000001:0.5]
 set yrange [0.10000000000000001:1]
 set title "chain: v=[axis] kc=[axis] β=0.05 m1=1 c1=0.1 k1=1 mu\\_s1=0.4 m2=1.3 c2=0.1 k2=1 mu\\_s2=0.4"
-set lmargin at screen 0.1
-set rmargin at screen 0.97
-set tmargin at screen 0.93
-set bmargin at screen 0.26
-set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
+set rmargin 3
+set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0x006d2c, 0x31a354, 0x74c476, 0x54278f, 0x756bb1, 0x9e9ac8, 0xcbc9e2, 0x8c6d31, 0xffffff, 0xc7eae5, 0xd9d9d9, 0x404040]
@@ -37,8 +34,8 @@ plot 'response.tsv' using 1:2:(0.0063125000000000004):(0.014203125):(C[int($3)+1
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#d9d9d9' title "quasi-periodic", \
      NaN with boxes fs solid 1.0 border lc rgb '#909090' lc rgb '#404040' title "chaotic", \
      'curves.tsv' using 1:($4 == 1 ? $2 : NaN) with lines lw 3.5 lc rgb '#e66100' dt 1 title "HB of steady sliding", \
-     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
-     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 title "LP, fold", \
+     'curves.tsv' using 1:($4 == 4 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb '#ff00ff' dt (10,4,2,4) title "NS, Neimark-Sacker", \
-     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, a curve ends: sliding'
+     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.6 lw 2 lc rgb 'black' title 'SL, sliding end'
 unset output

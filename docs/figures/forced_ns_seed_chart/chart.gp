@@ -7,16 +7,13 @@ set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
 set encoding utf8
-set xlabel "forcing frequency Ω"
+set xlabel "forcing frequency Ω" offset 0,0.5
 set ylabel "force amplitude A"
 set xrange [0.59999999999999998:1.6000000000000001]
 set yrange [0.002:0.10000000000000001]
 set title "cubic law: β = 0.05, v = 0.42, μ_s = 0.4, μ_m = 0.25, v_m = 0.5"
-set lmargin at screen 0.1
-set rmargin at screen 0.97
-set tmargin at screen 0.93
-set bmargin at screen 0.26
-set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
+set rmargin 3
+set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'
 set tics out nomirror front
 set border 3 front
 array C[5] = [0x08519c, 0x3182bd, 0x8c6d31, 0xc7eae5, 0xd9d9d9]

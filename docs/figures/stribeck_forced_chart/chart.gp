@@ -7,16 +7,13 @@ set output 'chart.png'.suffix
 set datafile separator '\t'
 set datafile columnheaders
 set encoding utf8
-set xlabel "forcing frequency Ω"
+set xlabel "forcing frequency Ω" offset 0,0.5
 set ylabel "force amplitude A"
 set xrange [0.5:1.2]
 set yrange [0.050000000000000003:0.59999999999999998]
 set title "Stribeck law: β = 0.05, v = 0.25, μ_s = 0.4, μ_k = 0.25, v_s = 0.2"
-set lmargin at screen 0.1
-set rmargin at screen 0.97
-set tmargin at screen 0.93
-set bmargin at screen 0.26
-set key at screen 0.53, screen 0.01 center bottom horizontal maxcols 4 width 1 samplen 3 font ',11'
+set rmargin 3
+set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'
 set tics out nomirror front
 set border 3 front
 array C[15] = [0x08519c, 0x3182bd, 0x6baed6, 0x006d2c, 0x31a354, 0x74c476, 0xa63603, 0xe6550d, 0x54278f, 0x756bb1, 0x9e9ac8, 0xcbc9e2, 0x8c6d31, 0xd9d9d9, 0x404040]
@@ -43,13 +40,13 @@ plot 'response.tsv' using 1:2:(0.0088374999999999999):(0.0069437499999999994):(C
      'curves.tsv' using 1:($4 == 2 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 11 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
      'curves.tsv' using 1:($4 == 14 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt 1 notitle, \
-     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 6 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) title "LP of m >= 2 orbits", \
      'curves.tsv' using 1:($4 == 8 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (2,3) notitle, \
      'curves.tsv' using 1:($4 == 3 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) title "PD, period doubling", \
      'curves.tsv' using 1:($4 == 10 ? $2 : NaN) with lines lw 2.5 lc rgb 'black' dt (8,4) notitle, \
-     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m ≥ 2 orbits", \
+     'curves.tsv' using 1:($4 == 5 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) title "PD of m >= 2 orbits", \
      'curves.tsv' using 1:($4 == 7 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'curves.tsv' using 1:($4 == 9 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
      'curves.tsv' using 1:($4 == 13 ? $2 : NaN) with lines lw 2 lc rgb 'black' dt (8,3,2,3) notitle, \
-     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.2 lw 1.5 lc rgb 'black' title 'SL, a curve ends: sliding'
+     'codim2.tsv' using 2:(strcol(1) eq 'SL' ? $3 : NaN) with points pt 6 ps 1.6 lw 2 lc rgb 'black' title 'SL, sliding end'
 unset output

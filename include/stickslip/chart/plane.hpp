@@ -1,4 +1,4 @@
-// The parameter plane of a chart, the belt's or the forced oscillator's: two
+// The parameter plane of the belt's chart: two
 // of its parameters (axes, the one lens) and a rectangle in them. Every point
 // of the rectangle must be a valid model.
 #pragma once
@@ -42,10 +42,6 @@ struct Plane {
   // is blamed on the range end that reaches it (from the corner (from, from2)
   // along each edge), or on the rectangle.
   PlaneError Check(const Params& base) const;
-  // The forced oscillator's: empty if valid for `base`, else one line (an
-  // axis the law has not, equal axes, an empty or inverted range, or a corner
-  // or edge point, 17 per edge, that is no valid model).
-  std::string ValidationError(const ForcedParams& base) const;
   // base (Params or ForcedParams) with the two axes set to (x1, x2).
   template <class P>
   P At(const P& base, double x1, double x2) const {

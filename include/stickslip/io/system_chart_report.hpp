@@ -18,8 +18,9 @@ namespace stickslip {
 /// PeriodMultiple; HB: 0), period, sticks, crossings, <z>_0 per state
 /// component (the orbit's section point, a clock's phase included; HB: the
 /// rest point), then <z>_min and <z>_max per tangent component (HB: both the
-/// rest point's), mult<k>_re and mult<k>_im per tangent component (the
-/// Floquet multipliers, the largest modulus first; HB: 0), mult_max (the
+/// rest point's), mult<k>_re and mult<k>_im (the Floquet multipliers, the
+/// largest modulus first: one per tangent component with a clock, one fewer
+/// on an autonomous system's surface section; HB: 0), mult_max (the
 /// largest |multiplier|; HB: 0) and test (the curve's test function there). A
 /// comment line per curve: its kind (GR: its margin), m, points, seed and ends.
 TsvTable SystemCurvesTable(const System& s, const SystemChart& c);
@@ -28,8 +29,8 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c);
 /// point).
 TsvTable SystemCodim2Table(const System& s, const SystemChart& c);
 /// chart.gp, on a 1000 x 860 page: the curves from curves.tsv (HB orange, GR red,
-/// LP black, PD black dashed, NS magenta; those of m >= 2 orbits thinner, with
-/// their own dashes) and codim2.tsv's points (SL open circles, the others
+/// LP black, PD black dashed, NS magenta; with a clock, those of m >= 2
+/// forcing periods thinner, with their own dashes) and codim2.tsv's points (SL open circles, the others
 /// filled dots, each named by a label placed where it keeps most room from the
 /// curves, the points and the other labels) in the rectangle; with a grid of
 /// cells, over response.tsv's cells filled by response class (ResponseRaster,
