@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/orbits/shooting.hpp"
 

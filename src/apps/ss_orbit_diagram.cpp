@@ -13,7 +13,7 @@
 #include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "cli/system_choice.hpp"
-#include "stickslip/chaos/report.hpp"
+#include "stickslip/io/orbit_diagram_report.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;

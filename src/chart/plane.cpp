@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "numerics/numbers.hpp"
-#include "stickslip/io/report.hpp"
 
 namespace stickslip {
 
@@ -30,8 +29,8 @@ std::string RangeError(double from, double to, const char* from_name, const char
   const double scale = std::max(std::abs(from), std::abs(to));
   if (to - from < kMinRelativeWidth * scale) {
     std::ostringstream os;
-    os << to_name << " = " << FormatNumber(to) << " is too close to " << from_name << " = "
-       << FormatNumber(from) << ": the width " << Num(to - from, 12)
+    os << to_name << " = " << RoundTrip(to) << " is too close to " << from_name << " = "
+       << RoundTrip(from) << ": the width " << Num(to - from, 12)
        << " must be >= " << Num(kMinRelativeWidth, 12) << " max(|" << from_name << "|, |" << to_name
        << "|)";
     return os.str();

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cli/study.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip::cli {

@@ -14,7 +14,7 @@
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/flow.hpp"
-#include "stickslip/forced/report.hpp"
+#include "stickslip/io/resonance_report.hpp"
 
 namespace stickslip::cli {
 

@@ -12,7 +12,7 @@
 
 #include "cli/physical.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "stickslip/forced/report.hpp"
+#include "stickslip/io/resonance_report.hpp"
 
 namespace stickslip::cli {
 

@@ -38,7 +38,7 @@
 #include <vector>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 
@@ -105,13 +106,7 @@ void SyncFiles(const std::vector<std::string>& paths) {
   close_all();
 }
 
-std::string FormatNumber(double x) {
-  if (std::isnan(x)) return "nan";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round trip
-  return std::string(buf, r.ptr);
-}
+std::string FormatNumber(double x) { return RoundTrip(x); }
 
 TsvTable::TsvTable(std::vector<std::string> columns) : columns_(std::move(columns)) {
   if (columns_.empty()) throw InvalidArgument("TsvTable: no columns");

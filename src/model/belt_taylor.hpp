@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "integrate/mu_series.hpp"
+#include "model/mu_series.hpp"
 #include "integrate/series.hpp"
 #include "numerics/kernel.hpp"
 #include "stickslip/model/parameter_axis.hpp"

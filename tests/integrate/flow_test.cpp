@@ -1,5 +1,5 @@
 // Event-driven simulation against closed forms and an independent integrator.
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include "integrate/taylor_stepper.hpp"
 #include "numerics/tolerances.hpp"
 #include "reference/reference_orbit.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip {

@@ -8,7 +8,7 @@
 
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/params.hpp"
 
 namespace stickslip {

@@ -20,7 +20,7 @@
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"

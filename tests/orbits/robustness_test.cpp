@@ -40,7 +40,7 @@
 
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/model.hpp"
 #include "stickslip/model/params.hpp"
 #include "stickslip/orbits/orbit.hpp"

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/shooting.hpp"
 #include "stickslip/system/taylor_field.hpp"

@@ -8,7 +8,7 @@
 
 #include "stickslip/errors.hpp"
 #include "stickslip/forced/branch.hpp"
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit_status.hpp"
 

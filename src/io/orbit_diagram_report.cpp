@@ -1,5 +1,5 @@
-// The orbit diagram's tables and figure (chaos/report.hpp).
-#include "stickslip/chaos/report.hpp"
+// The orbit diagram's tables and figure (stickslip/io/orbit_diagram_report.hpp).
+#include "stickslip/io/orbit_diagram_report.hpp"
 
 #include <algorithm>
 #include <cmath>

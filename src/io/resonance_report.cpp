@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/report.hpp"
+#include "stickslip/io/resonance_report.hpp"
 
 namespace stickslip {
 
