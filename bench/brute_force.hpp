@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "stickslip/integrate/flow.hpp"
+#include "stickslip/model/belt_flow.hpp"
 
 namespace bench {
 
