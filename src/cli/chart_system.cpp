@@ -154,7 +154,7 @@ ChartJob SystemChartJob(const Arguments& args, const std::string& prog,
   const FlowOptions& flow = job.chart.branch.shooting.flow;
   job.model =
       DescribeSystem(s, SystemChoiceOf(args), job.chart.plane.p1, job.chart.plane.p2, "[axis]");
-  job.title = EnhancedText(job.model);
+  job.title = SystemFigureTitle(job.model);
   job.meta = ToolMetadata(prog, command);
   job.meta.emplace_back("system", job.model);
   AddRestartMetadata(s, SystemChoiceOf(args), UncheckedModelFromArguments(args), flow,

@@ -119,6 +119,21 @@ bool TitleShows(const std::string& key, const std::string& value,
 }
 }  // namespace
 
+std::string SystemFigureTitle(const std::string& description) {
+  const std::size_t colon = description.find(": ");
+  std::istringstream in(colon == std::string::npos ? description : description.substr(colon + 2));
+  std::string out =
+      colon == std::string::npos ? "" : EnhancedText(description.substr(0, colon)) + ":";
+  const char* sep = " ";
+  for (std::string word; in >> word;) {
+    const std::size_t eq = word.find('=');
+    if (eq == std::string::npos || word.compare(eq + 1, 1, "[") == 0) continue;
+    out += sep + EnhancedText(word.substr(0, eq)) + " = " + word.substr(eq + 1);
+    sep = ", ";
+  }
+  return out;
+}
+
 std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes) {
   std::vector<std::string> items;  // "key=value" (a value may hold spaces) or "(...)"
   std::istringstream in(description);

@@ -11,7 +11,7 @@ set xlabel "kinetic friction coefficient μ_k" offset 0,0.5
 set ylabel "damping ratio β"
 set xrange [0.45000000000000001:0.59999999999999998]
 set yrange [0.01:0.029999999999999999]
-set title "mode\\_coupling: β=[axis] k11=1 k22=1.5 k12=-0.3 gamma=1 v=0.5 μ_s=0.8 μ_k=[axis]"
+set title "mode\\_coupling: k11 = 1, k22 = 1.5, k12 = -0.3, gamma = 1, v = 0.5, μ_s = 0.8"
 set rmargin 3
 set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'
 set tics out nomirror front

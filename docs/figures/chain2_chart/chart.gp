@@ -11,7 +11,7 @@ set xlabel "belt speed v" offset 0,0.5
 set ylabel "kc"
 set xrange [0.10000000000000001:0.5]
 set yrange [0.10000000000000001:1]
-set title "chain: v=[axis] kc=[axis] β=0.05 m1=1 c1=0.1 k1=1 mu\\_s1=0.4 m2=1.3 c2=0.1 k2=1 mu\\_s2=0.4"
+set title "chain: β = 0.05, m1 = 1, c1 = 0.1, k1 = 1, mu\\_s1 = 0.4, m2 = 1.3, c2 = 0.1, k2 = 1, mu\\_s2 = 0.4"
 set rmargin 3
 set key outside below center horizontal maxcols 4 width 0 samplen 2 font ',11'
 set tics out nomirror front
