@@ -4,13 +4,15 @@ and include/stickslip/ in the code block under "## How it works", top first,
 folders on one line one level) each include only their own headers and those
 of folders above them. Every folder of src/ (but cli/ and apps/, the command
 line, which may use all) must be on the map. A back-arrow is allowed only as a
-line 'path -> folder  # why' of scripts/layers_allow.txt, each used.
+line 'path -> folder  # why' of scripts/layers_allow.txt, each used. A public
+header (include/) includes only public ones (stickslip/...), and no include is
+relative (../).
 Usage: check_layers.py [ROOT] | --self-test. Exit 1 on a violation."""
 import os
 import re
 import sys
 
-INCLUDE = re.compile(r'^\s*#\s*include\s+"(?:stickslip/)?([a-z_]+)/', re.M)
+INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]((?:stickslip/)?)([a-z_.]+)/', re.M)
 COMMAND_LINE = {'cli', 'apps'}
 
 
@@ -35,9 +37,12 @@ def read_allowed(text):
     allowed = set()
     for line in text.splitlines():
         line = line.split('#', 1)[0].strip()
-        if line:
-            path, folder = (x.strip() for x in line.split('->'))
-            allowed.add((path, folder))
+        if not line:
+            continue
+        if line.count('->') != 1:
+            raise ValueError("layers_allow.txt: '%s' is no 'path -> folder' line" % line)
+        path, folder = (x.strip() for x in line.split('->'))
+        allowed.add((path, folder))
     return allowed
 
 
@@ -61,7 +66,13 @@ def check(root, levels, allowed, read=lambda p: open(p, encoding='utf-8').read()
         if sub not in levels:
             problems.append('%s: folder %s/ is not on the README\'s map' % (path, sub))
             continue
-        for target in INCLUDE.findall(read(os.path.join(root, path))):
+        public = path.startswith('include' + os.sep)
+        for prefix, target in INCLUDE.findall(read(os.path.join(root, path))):
+            if target == '..':
+                problems.append('%s: a relative include (../): name the folder' % path)
+                continue
+            if public and not prefix and target in levels:
+                problems.append('%s: a public header includes the private %s/' % (path, target))
             if target == sub or target not in levels or levels[target] <= levels[sub]:
                 continue
             if (path, target) in allowed:
@@ -80,15 +91,23 @@ def self_test():
         for rel, text in {'src/a/x.cpp': '#include "b/y.hpp"\n',
                           'src/b/y.hpp': '#include "stickslip/a/x.hpp"\n',
                           'include/stickslip/a/z.hpp': '#include "stickslip/c/w.hpp"\n',
-                          'src/cli/q.cpp': '#include "c/w.hpp"\n'}.items():
+                          'src/cli/q.cpp': '#include "c/w.hpp"\n',
+                          'include/stickslip/b/v.hpp': '#include <stickslip/a/x.hpp>\n'
+                                                       '#include "b/private.hpp"\n'}.items():
             os.makedirs(os.path.dirname(os.path.join(root, rel)), exist_ok=True)
             open(os.path.join(root, rel), 'w').write(text)
         levels = read_map('## How it works\n```\na/    A\nb/  c/   B and C\n```\n')
         assert levels == {'a': 0, 'b': 1, 'c': 1}, levels
         got = check(root, levels, set())
-        assert len(got) == 2 and 'src/a/x.cpp' in got[0] and 'z.hpp' in got[1], got
+        assert len(got) == 3 and 'src/a/x.cpp' in got[0] and 'z.hpp' in got[1], got
+        assert 'private b/' in got[2], got
         got = check(root, levels, {('src/a/x.cpp', 'b'), ('src/a/x.cpp', 'c')})
-        assert len(got) == 2 and 'no longer needed' in got[1], got
+        assert len(got) == 3 and 'no longer needed' in got[2], got
+        try:
+            read_allowed('src/a/x.cpp b\n')
+            raise AssertionError('a line without -> was taken')
+        except ValueError:
+            pass
     print('check_layers self-test passed')
 
 

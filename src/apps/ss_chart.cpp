@@ -195,13 +195,13 @@ int Main(int argc, char** argv) {
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
   if (cli::SystemRequested(args)) {
-    cli::ChartJob job = cli::SystemChartJob(args, kProg, cli::CommandLine(argc, argv));
-    return cli::RunChart(args, kProg, job);
+    return cli::RunChart(args, kProg,
+                         cli::SystemChartJob(args, kProg, cli::CommandLine(argc, argv)));
   }
   cli::RefuseSystem(args, kProg);
   if (cli::ForcedChartRequested(args)) {
-    cli::ChartJob job = cli::ForcedChartJob(args, kProg, cli::CommandLine(argc, argv));
-    return cli::RunChart(args, kProg, job);
+    return cli::RunChart(args, kProg,
+                         cli::ForcedChartJob(args, kProg, cli::CommandLine(argc, argv)));
   }
   ss::Params base;
   ss::ChartOptions opts = Configure(args, &base);

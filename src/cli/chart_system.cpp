@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <tuple>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
@@ -35,6 +36,26 @@ double Required(const Arguments& args, const char* key) {
   return args.Number(key, 0);
 }
 
+// Each range ordered, and each end a valid system with the other parameters
+// as given: a bad end is blamed on its own option or study line.
+void CheckRangeEnds(const Arguments& args, const System& s, const SystemPlane& pl) {
+  for (const auto& [from, to, a, b] :
+       {std::tuple{pl.from1, pl.to1, "from", "to"}, std::tuple{pl.from2, pl.to2, "from2", "to2"}})
+    if (!(from < to))
+      throw UsageError(args.Source(b) + " = " + FormatNumber(to) + " must exceed " +
+                       args.Source(a) + " = " + FormatNumber(from));
+  if (!s.ValidationError().empty()) return;  // the rectangle's check names it
+  const std::unique_ptr<System> at = s.Clone();
+  for (const auto& [j, x, key] :
+       {std::tuple{pl.p1, pl.from1, "from"}, std::tuple{pl.p1, pl.to1, "to"},
+        std::tuple{pl.p2, pl.from2, "from2"}, std::tuple{pl.p2, pl.to2, "to2"}}) {
+    at->Assign(s);
+    at->SetParameterValue(j, x);
+    if (const std::string e = at->ValidationError(); !e.empty())
+      throw UsageError(args.Source(key) + " = " + FormatNumber(x) + ": " + e);
+  }
+}
+
 SystemChartOptions Configure(const Arguments& args, const System& s) {
   for (const char* k : {"restart", "point"})
     if (args.Given(k)) throw UsageError(args.Source(k) + ": not with --system");
@@ -45,6 +66,7 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
   if (pl.p1 == pl.p2) throw UsageError(args.Source("param2") + ": the two axes must differ");
   pl.from1 = Required(args, "from"), pl.to1 = Required(args, "to");
   pl.from2 = Required(args, "from2"), pl.to2 = Required(args, "to2");
+  CheckRangeEnds(args, s, pl);
   if (const std::string e = pl.ValidationError(s); !e.empty())
     throw UsageError(args.Source("from") + ", " + args.Source("to") + ", " + args.Source("from2") +
                      ", " + args.Source("to2") + ": " + e);
@@ -164,7 +186,7 @@ ChartJob SystemChartJob(const Arguments& args, const std::string& prog,
   return job;
 }
 
-int RunChart(const Arguments& args, const std::string& prog, ChartJob& job) {
+int RunChart(const Arguments& args, const std::string& prog, ChartJob job) {
   if (job.chart.seed_lines == 0 && job.grid.n1 == 0)
     throw UsageError(args.Source("seed_lines") + " = 0 with no grid (--grid 0): the chart " +
                      "would compute nothing; give seed lines or a grid");

@@ -39,7 +39,8 @@ double MaxStepFromArguments(const Arguments& args, double fallback);
 // UsageError on bad input.
 ChartJob SystemChartJob(const Arguments& args, const std::string& prog, const std::string& command);
 
-// Runs the job; returns the exit code.
-int RunChart(const Arguments& args, const std::string& prog, ChartJob& job);
+// Runs the job (its cancel hooks then refer to this run: the job is spent);
+// returns the exit code.
+int RunChart(const Arguments& args, const std::string& prog, ChartJob job);
 
 }  // namespace stickslip::cli

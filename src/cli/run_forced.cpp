@@ -232,8 +232,9 @@ po::options_description ForcingOptions() {
                   "belt model)")("omega", Value()->value_name("W"),
                                  "forcing frequency over the natural one, > 0 (default 1)")(
       "max_amplitude", Value()->value_name("X"),
-      "forced: a branch ends where |x| passes X (default 50); the forced oscillator's "
-      "rtol and atol default to 1e-12");
+      "forced: a branch ends where |x| passes X (default 50); ss_chart: seed branches and "
+      "grid cells end there (forced 50, --system 1000); the forced oscillator's rtol and "
+      "atol default to 1e-12");
   return d;
 }
 

@@ -124,7 +124,7 @@ std::string SystemFigureTitle(const std::string& description) {
   std::istringstream in(colon == std::string::npos ? description : description.substr(colon + 2));
   std::string out =
       colon == std::string::npos ? "" : EnhancedText(description.substr(0, colon)) + ":";
-  const char* sep = " ";
+  const char* sep = out.empty() ? "" : " ";
   for (std::string word; in >> word;) {
     const std::size_t eq = word.find('=');
     if (eq == std::string::npos || word.compare(eq + 1, 1, "[") == 0) continue;

@@ -52,8 +52,8 @@ TsvTable SystemCurvesTable(const System& s, const SystemChart& c) {
       for (int i = 0; i < nm; ++i) {
         const std::complex<double> mu =
             i < static_cast<int>(o.multipliers.size()) ? o.multipliers[i] : 0.0;
-        row.emplace_back(mu.real());
-        row.emplace_back(mu.imag());
+        row.emplace_back(mu.real() + 0.0);  // + 0.0: no -0 written
+        row.emplace_back(mu.imag() + 0.0);
         mult = std::max(mult, std::abs(mu));
       }
       row.emplace_back(mult);

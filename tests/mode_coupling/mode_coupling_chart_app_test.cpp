@@ -98,7 +98,7 @@ TEST_F(ModeCouplingChartApp, BadInputsAreRefusedAndWriteNothing) {
       {{"--param2", "mu_k"}, "the two axes must differ"},
       {{"--param", "zeta"}, "'zeta' is no parameter of mode_coupling"},
       {{"--to", "0.9"}, "mu_k = 0.9"},
-      {{"--from2", "0.05"}, "empty or inverted"},
+      {{"--from2", "0.05"}, "must exceed --from2 = 0.05"},  // the to2 of the study
       {{"--max_m", "9"}, "--max_m"},
       {{"--max_m", "0"}, "--max_m"},
       {{"--seed_lines", "21"}, "--seed_lines"},

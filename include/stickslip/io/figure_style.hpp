@@ -73,7 +73,7 @@ std::string EnhancedText(const std::string& plain);
 /// parameters on the axes (their values are the axes).
 std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes);
 /// A title from a system's line "chain: v=[axis] kc=0.2 beta=0.05 ...":
-/// "chain: β = 0.05, kc = 0.2, ..." in enhanced text, leaving out the
+/// "chain: kc = 0.2, β = 0.05, ..." in enhanced text, leaving out the
 /// parameters whose value is bracketed (the axes, the continued one).
 std::string SystemFigureTitle(const std::string& description);
 /// A double-quoted gnuplot string holding `text` (backslashes and quotes escaped).
