@@ -71,8 +71,9 @@ TEST(FigureStyle, FormatNamesAndTitles) {
   EXPECT_EQ(FigureTitle("law=coulomb beta=0 force=1 omega=[0.75, 2.5]", {"omega"}),
             "Coulomb law: β = 0, A = 1");
   // A system's line: the bracketed (axes, continued) left out, names as symbols.
-  EXPECT_EQ(SystemFigureTitle("chain: v=[axis] kc=0.2 beta=0.05 mu_s1=0.4 k1=[continued]"),
-            "chain: kc = 0.2, β = 0.05, μ_{s1} = 0.4");
+  EXPECT_EQ(SystemFigureTitle("chain: v=[axis] kc=0.2 beta=0.05 mu_s=0.4 k1=[continued]"),
+            "chain: kc = 0.2, β = 0.05, μ_s = 0.4");
+  EXPECT_EQ(SystemFigureTitle("kc=0.2"), "kc = 0.2");  // no name: no leading blank
   EXPECT_EQ(ParameterAxisLabel(Parameter::kForce), "force amplitude A");
   EXPECT_EQ(ParameterAxisLabel(Parameter::kBeta), "damping ratio β");
   EXPECT_NE(FigurePreamble(FigureFormat::kPdf, 1000, 700).find("pdfcairo size 10in,7in"),
