@@ -42,10 +42,14 @@ struct LawSeries {
       case LawKind::kCubic:
         p2[k] = Cauchy(s, s, k);
         p3[k] = Cauchy(p2, s, k);
-        p4[k] = Cauchy(p2, p2, k);
-        p5[k] = Cauchy(p4, s, k);
-        mu[k] = (k == 0 ? mu_s : 0.0) - a * s[k] + b * p3[k] - c * p5[k];
-        dmu[k] = (k == 0 ? -a : 0.0) + 3 * b * p2[k] - 5 * c * p4[k];
+        mu[k] = (k == 0 ? mu_s : 0.0) - a * s[k] + b * p3[k];
+        dmu[k] = (k == 0 ? -a : 0.0) + 3 * b * p2[k];
+        if (c != 0) {  // the quintic term (k5; the seed's law has none): two products more
+          p4[k] = Cauchy(p2, p2, k);
+          p5[k] = Cauchy(p4, s, k);
+          mu[k] -= c * p5[k];
+          dmu[k] -= 5 * c * p4[k];
+        }
         return;
       case LawKind::kCoulomb:
         mu[k] = k == 0 ? a : 0.0;
