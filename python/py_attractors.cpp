@@ -164,11 +164,12 @@ py::dict SystemDiagram(const py::object& system, const std::string& parameter, d
   std::vector<double> value, lyap, err, point_value, z;
   std::vector<std::string> dir, point_dir, names;
   std::vector<int> sticks, exits;
-  py::list failed;
+  py::list failed, contact_lost;  // a contact opening is where the model ends, not a failure
   for (const DiagramColumn& c : r.columns) {
     if (!c.computed) continue;
     if (!c.settled()) {
-      failed.append(py::make_tuple(Name(c.direction), c.value, Name(c.run.status), c.run.message));
+      (c.run.status == LyapunovStatus::kContactOpen ? contact_lost : failed)
+          .append(py::make_tuple(Name(c.direction), c.value, Name(c.run.status), c.run.message));
       continue;
     }
     value.push_back(c.value), dir.push_back(Name(c.direction));
@@ -187,7 +188,8 @@ py::dict SystemDiagram(const py::object& system, const std::string& parameter, d
   d["value"] = ReadOnly(point_value), d["direction"] = ReadOnlyStrings(point_dir);
   d["z"] = ReadOnlyRows(z, nt), d["names"] = names;
   d["sticks"] = ReadOnly(sticks), d["exits"] = ReadOnly(exits);
-  d["failed"] = failed, d["seconds"] = r.seconds, d["steps"] = r.steps;
+  d["failed"] = failed, d["contact_lost"] = contact_lost;
+  d["seconds"] = r.seconds, d["steps"] = r.steps;
   return d;
 }
 
@@ -247,7 +249,8 @@ void BindAttractors(py::module_& m) {
         "(as ss_orbit_diagram --system): a row per kept section point (value, direction, z "
         "with columns `names`, sticks, exits) on the returns to x1' = 0 falling; per value "
         "`columns` (lyapunov; a value settled on steady sliding: one point, the largest real "
-        "part there); the values that failed with why (failed).");
+        "part there); the values whose contact opened (contact_lost: the model ends there) "
+        "and those that failed (failed), each with why.");
 }
 
 }  // namespace stickslip::python

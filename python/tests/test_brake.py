@@ -32,6 +32,23 @@ class Flutter(unittest.TestCase):
         self.assertGreater(above, 0)
 
 
+class OrbitDiagram(unittest.TestCase):
+    def test_values_past_the_fold_lose_contact_and_are_no_failures(self):
+        # Right of the chart's LP curve (beta 0.02: mu_k 0.528) no stick-slip orbit exists
+        # and the contact opens (docs/systems.md); left of the flutter threshold 0.515
+        # steady sliding is stable.
+        s = brake.system(0.58)
+        d = stickslip.orbit_diagram(s, "mu_k", 0.57, 0.6, n=3, transient=100, keep=20,
+                                    down=False)
+        self.assertEqual(d["failed"], [])
+        self.assertEqual([round(v, 12) for _, v, _, _ in d["contact_lost"]], [0.57, 0.585, 0.6])
+        self.assertTrue(all(st == "contact-open" for _, _, st, _ in d["contact_lost"]))
+        d = stickslip.orbit_diagram(s, "mu_k", 0.45, 0.48, n=2, transient=100, keep=20,
+                                    down=False)
+        self.assertEqual((d["failed"], d["contact_lost"]), ([], []))
+        self.assertEqual(len(d["columns"]["value"]), 2)
+
+
 @unittest.skipUnless(HAVE_SCIPY, "python3-scipy is missing (scripts/setup.sh installs it): the "
                      "independent integrator needs it")
 class Orbits(unittest.TestCase):
