@@ -204,6 +204,8 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   } else if (!leg.cancelled) {
     leg.end = {CutEnd(r.status), r.message};
     leg.cut = leg.end.Text();
+  } else {
+    leg.end.kind = CurveEndKind::kCancelled;
   }
   leg.evaluations = palc.evaluations() - before;
   return leg;
@@ -248,7 +250,9 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   fwd.end.kind = back.end.kind = CurveEndKind::kBorder;
   if (!leaves(tangent)) fwd = Follow(palc, options, c.u, fixed, tangent);
   t.cancelled = fwd.cancelled;
-  if (!fwd.closed && !fwd.cancelled && !leaves(-tangent))
+  if (fwd.cancelled)
+    back.end.kind = CurveEndKind::kCancelled;  // the way back not taken
+  else if (!fwd.closed && !leaves(-tangent))
     back = Follow(palc, options, c.u, fixed, -tangent);
   if (fwd.u.empty() && back.u.empty()) fwd.u.push_back(c.u);
   t.cancelled = t.cancelled || back.cancelled;

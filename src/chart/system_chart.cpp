@@ -129,7 +129,10 @@ SystemCurve TraceHopfCurve(const System& system, const SystemChartOptions& o, do
   curve.ends = r.ends;
   curve.evaluations = r.evaluations;
   for (VectorXd u : r.u) {
-    if (o.cancelled && o.cancelled()) break;
+    if (o.cancelled && o.cancelled()) {  // the points beyond are not sampled
+      curve.ends.last = {CurveEndKind::kCancelled, ""};
+      break;
+    }
     Polish(problem, o.plane, &u);
     SystemCurvePoint p;
     SteadyState s;

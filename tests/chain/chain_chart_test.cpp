@@ -89,6 +89,29 @@ TEST(ChainChart, HopfCurveIsTheHurwitzDeterminantsZero) {
   }
 }
 
+// A curve cut short by the cancel hook says so at both ends (the way followed
+// and the way back not taken); it read "border / border".
+TEST(ChainChart, ACancelledCurveEndsCancelled) {
+  const Chain s = Unequal(0.3, 0.5);
+  SteadyBranchOptions so;
+  so.points = 201;
+  const SteadyBranch line = ContinueSteadySliding(s, s.ParameterIndex("v"), 0.6, so);
+  ASSERT_FALSE(line.special.empty());
+  SystemChartOptions o = Plane(s);
+  int polls = 0;
+  o.cancelled = [&polls] { return ++polls > 300; };
+  o.branch.palc.cancelled = o.cancelled;
+  const SystemCurve hb = TraceHopfCurve(s, o, line.special[0].p, 0.5, 1);
+  // Cut while its points were sampled (296 polls in): 96 of its 102 points.
+  EXPECT_EQ(hb.ends.last.kind, CurveEndKind::kCancelled) << hb.ends.Text();
+  EXPECT_GT(hb.points.size(), 0u);
+  EXPECT_LT(hb.points.size(), 102u);
+  polls = 0;
+  o.cancelled = [&polls] { return ++polls > 100; };  // while it was traced
+  o.branch.palc.cancelled = o.cancelled;
+  EXPECT_EQ(TraceHopfCurve(s, o, line.special[0].p, 0.5, 1).ends.Text(), "cancelled / cancelled");
+}
+
 // The response grid (response_grid.hpp) below the NS curve, off the cells
 // next to it: there the stick-slip orbit the curve follows is unstable, so
 // no cell reaches it (the attractor is the torus: quasi-periodic, locked at

@@ -106,7 +106,7 @@ TEST(Names, FormerSwitchNamesAreThoseOfTheDocs) {
 TEST(Names, TablesCoverEveryEnumerator) {
   // The enums are dense from 0: a table as long as the enum covers it.
   EXPECT_EQ(NameCount<CurvePointType>(), static_cast<size_t>(CurvePointType::kFold) + 1);
-  EXPECT_EQ(NameCount<CurveEndKind>(), static_cast<size_t>(CurveEndKind::kCorner) + 1);
+  EXPECT_EQ(NameCount<CurveEndKind>(), static_cast<size_t>(CurveEndKind::kCancelled) + 1);
   EXPECT_EQ(NameCount<Codim2Label>(), static_cast<size_t>(Codim2Label::kCusp) + 1);
   EXPECT_EQ(NameCount<PalcStatus>(), static_cast<size_t>(PalcStatus::kStartFailed) + 1);
   for (size_t i = 0; i < NameCount<CurvePointType>(); ++i)

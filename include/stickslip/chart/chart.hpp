@@ -85,6 +85,7 @@ enum class CurveEndKind {
   kNoStart,          // the start point could not be corrected (why says why)
   kContactLost,      // a contact's normal force reaches 0 on the orbit (why says where)
   kCorner,           // GR: meets another GR curve at a corner (GG; why: the tracer's end)
+  kCancelled,        // cut short by a signal or the time limit (the way not ended)
 };
 template <>
 struct EnumNames<CurveEndKind> {
@@ -104,6 +105,7 @@ struct EnumNames<CurveEndKind> {
       {CurveEndKind::kNoStart, "start failed"},
       {CurveEndKind::kContactLost, "contact-lost"},
       {CurveEndKind::kCorner, "corner"},
+      {CurveEndKind::kCancelled, "cancelled"},
   };
 };
 
