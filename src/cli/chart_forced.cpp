@@ -127,6 +127,9 @@ ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
   FlowOptions defaults = ForcedModel::FlowDefaults();
   defaults.max_steps = FlowOptions().max_steps;
   const FlowOptions run = FlowOptionsFromArguments(args, defaults);
+  if (run.integrator != Integrator::kTaylor)  // its GR curves' runs need Taylor's (limits.md)
+    throw UsageError(args.Source(args.Given("integrator") ? "integrator" : "method") +
+                     ": the forced chart is integrated by Taylor series only");
   o.branch = OrbitBranchOptions(run);  // every map on the chart's flow, its step cap too
   o.branch.max_amplitude = MaxAmplitudeFromArguments(args, kDefaultAmplitude);
   o.max_step = MaxStepFromArguments(args, o.max_step);

@@ -88,6 +88,7 @@ TEST_F(ForcedChartAppTest, BadInputExits2NamingTheOption) {
       {base + "--param2 force --from -0.5", "--from"},                // the end at fault
       {base + "--param2 force --max_amplitude 0", "--max_amplitude = 0"},
       {base + "--param2 force --seed_lines 0 --grid 0", "--seed_lines"},  // nothing to do
+      {base + "--param2 force --integrator cvode", "--integrator"},       // Taylor only
       {"--param v --param2 beta --seed_lines 2", "--seed_lines"},  // a belt chart: forced only
       {"--param v --param2 beta --max_m 4", "--max_m"},
   };
