@@ -211,6 +211,19 @@ Leg Follow(Palc& palc, const TraceOptions& o, const VectorXd& u0, int fixed,
   return leg;
 }
 
+// Once the cancel hook holds (it stays set), an end that reads as a failure
+// (a start, a step or a correction that failed on the cut-short run) is the cut.
+void EndsCancelled(const TraceOptions& o, TraceResult* t) {
+  if (!(o.cancelled && o.cancelled())) return;
+  t->cancelled = true;
+  for (CurveEnd* e : {&t->ends.first, &t->ends.last})
+    if (e->kind == CurveEndKind::kNoStart || e->kind == CurveEndKind::kStartFailed ||
+        e->kind == CurveEndKind::kStepTooSmall || e->kind == CurveEndKind::kMaxPoints)
+      *e = {CurveEndKind::kCancelled, ""};
+  if (t->ends.last.kind == CurveEndKind::kNone) t->ends.last.kind = CurveEndKind::kCancelled;
+  t->cut.clear();
+}
+
 }  // namespace
 
 TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const VectorXd& u0,
@@ -225,6 +238,7 @@ TraceResult TraceOneWay(PalcProblem& problem, const TraceOptions& options, const
   t.evaluations = leg.evaluations;
   t.cancelled = leg.cancelled;
   t.stopped = leg.stopped;
+  EndsCancelled(options, &t);
   return t;
 }
 
@@ -238,6 +252,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
     t.ends.first = {CurveEndKind::kNoStart, c.why};
     t.cut = t.ends.Text();
     t.evaluations = palc.evaluations();
+    EndsCancelled(options, &t);
     return t;
   }
   const VectorXd tangent = palc.Tangent(c.jac, VectorXd());
@@ -250,10 +265,12 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   fwd.end.kind = back.end.kind = CurveEndKind::kBorder;
   if (!leaves(tangent)) fwd = Follow(palc, options, c.u, fixed, tangent);
   t.cancelled = fwd.cancelled;
-  if (fwd.cancelled)
-    back.end.kind = CurveEndKind::kCancelled;  // the way back not taken
-  else if (!fwd.closed && !leaves(-tangent))
-    back = Follow(palc, options, c.u, fixed, -tangent);
+  if (!fwd.closed && !leaves(-tangent)) {
+    if (fwd.cancelled)
+      back.end.kind = CurveEndKind::kCancelled;  // the way back not taken
+    else
+      back = Follow(palc, options, c.u, fixed, -tangent);
+  }
   if (fwd.u.empty() && back.u.empty()) fwd.u.push_back(c.u);
   t.cancelled = t.cancelled || back.cancelled;
   t.u.assign(back.u.rbegin(), back.u.rend());
@@ -267,6 +284,7 @@ TraceResult TraceBothWays(PalcProblem& problem, const TraceOptions& options, con
   }
   t.cut = back.cut.empty() ? fwd.cut : back.cut;
   t.evaluations = palc.evaluations();
+  EndsCancelled(options, &t);
   return t;
 }
 

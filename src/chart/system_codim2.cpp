@@ -211,10 +211,19 @@ void Assemble(const std::vector<CurveStretch>& back, const CurveStretch& first,
   std::vector<TracedPoint> traced;
   for (std::size_t k = 0; k < all.size(); ++k)
     for (const VectorXd& u : all[k].u) {
-      if (o.cancelled && o.cancelled()) return;
+      if (o.cancelled && o.cancelled()) {  // the points beyond are not sampled
+        curve->ends.last = {CurveEndKind::kCancelled, ""};
+        return;
+      }
       SystemCurvePoint p;
       std::string why;
-      if (!all[k].problem->Sample(u, &p.orbit, &p.test, &why)) continue;
+      if (!all[k].problem->Sample(u, &p.orbit, &p.test, &why)) {
+        if (o.cancelled && o.cancelled()) {  // the sample cut short, not a bad point
+          curve->ends.last = {CurveEndKind::kCancelled, ""};
+          return;
+        }
+        continue;
+      }
       const int i1 = all[k].problem->plane_index();
       p.p1 = u[i1], p.p2 = u[i1 + 1];
       for (int t = 0; t < 3; ++t) p.tests[t] = orbit_detail::RowTest(p.orbit, t);

@@ -208,9 +208,12 @@ class OrbitTracer {
     constexpr int kRestarts = 20;
     const int i1 = pr->plane_index();
     for (int k = 0; k < kRestarts; ++k) {
+      if (o_.cancelled && o_.cancelled()) return {CurveEndKind::kCancelled, ""};
       FlowPoint start;
       std::string why;
-      if (!pr->Rephase(u, &start, &why)) return {CurveEndKind::kStartFailed, why};
+      if (!pr->Rephase(u, &start, &why))
+        return o_.cancelled && o_.cancelled() ? CurveEnd{CurveEndKind::kCancelled, ""}
+                                              : CurveEnd{CurveEndKind::kStartFailed, why};
       pr = Problem(start, u[i1], u[i1 + 1]);
       OrbitRow row;
       row.p = u[i1], row.start = start;
@@ -307,14 +310,16 @@ SystemCurve TraceOrbitCurve(const System& system, const SystemChartOptions& o, C
   curve.evaluations = r.evaluations;
   std::vector<CurveStretch> back, fwd;
   // Stopped near the section's stick: on at a new section start, each way.
-  if (curve.ends.first.kind == CurveEndKind::kStopped && !bad_first && r.u.size() >= 2) {
+  if (curve.ends.first.kind == CurveEndKind::kStopped && !bad_first && r.u.size() >= 2 &&
+      !r.cancelled) {
     const VectorXd &a = r.u[1], &b = r.u[0];
     curve.ends.first = tracer.GoOn(problem, b, {b[i1] - a[i1], b[i1 + 1] - a[i1 + 1]}, &back,
                                    &curve.evaluations, &saddle[0]);
   } else {
     curve.ends.first = OrbitTracer::EndOf(*problem, curve.ends.first);
   }
-  if (curve.ends.last.kind == CurveEndKind::kStopped && !bad_last && r.u.size() >= 2) {
+  if (curve.ends.last.kind == CurveEndKind::kStopped && !bad_last && r.u.size() >= 2 &&
+      !r.cancelled) {
     const VectorXd &a = r.u[r.u.size() - 2], &b = r.u.back();
     curve.ends.last = tracer.GoOn(problem, b, {b[i1] - a[i1], b[i1 + 1] - a[i1 + 1]}, &fwd,
                                   &curve.evaluations, &saddle[1]);

@@ -128,7 +128,7 @@ ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
   defaults.max_steps = FlowOptions().max_steps;
   const FlowOptions run = FlowOptionsFromArguments(args, defaults);
   if (run.integrator != Integrator::kTaylor)  // its GR curves' runs need Taylor's (limits.md)
-    throw UsageError(args.Source(args.Given("integrator") ? "integrator" : "method") +
+    throw UsageError(args.Source("integrator") +
                      ": the forced chart is integrated by Taylor series only");
   o.branch = OrbitBranchOptions(run);  // every map on the chart's flow, its step cap too
   o.branch.max_amplitude = MaxAmplitudeFromArguments(args, kDefaultAmplitude);

@@ -112,6 +112,38 @@ TEST(ChainChart, ACancelledCurveEndsCancelled) {
   EXPECT_EQ(TraceHopfCurve(s, o, line.special[0].p, 0.5, 1).ends.Text(), "cancelled / cancelled");
 }
 
+// An orbit curve cut at any moment never reads as whole: with fewer points
+// than the uncut curve, one of its ends is `cancelled` (one cut while its
+// points were sampled read as the uncut curve's ends).
+TEST(ChainChart, ACancelledOrbitCurveSaysSo) {
+  PoincareSection section;
+  const OrbitRow seed = TorusPoint(0.3, &section);
+  const Chain s = Unequal(0.3, seed.p);
+  SystemChartOptions counted = Plane(s);
+  long total = 0;  // the uncut trace's polls of the hook: cuts at fractions of them
+  counted.cancelled = [&total] { return ++total < 0; };
+  counted.branch.palc.cancelled = counted.cancelled;
+  const SystemCurve whole =
+      TraceOrbitCurve(s, counted, CurveKind::kTorus, seed.start, 0.3, seed.p, section, 0);
+  ASSERT_GT(whole.points.size(), 10u);
+  for (long cut : {total / 1000, total / 10, total / 2, total * 9 / 10, total - 2}) {
+    SystemChartOptions o = Plane(s);
+    long polls = 0;
+    o.cancelled = [&polls, cut] { return ++polls > cut; };
+    o.branch.palc.cancelled = o.cancelled;
+    const SystemCurve c =
+        TraceOrbitCurve(s, o, CurveKind::kTorus, seed.start, 0.3, seed.p, section, 0);
+    if (c.points.size() < whole.points.size())
+      EXPECT_NE(c.ends.Text().find("cancelled"), std::string::npos)
+          << "cut after " << cut << " polls: " << c.points.size() << " points, ends "
+          << c.ends.Text();
+    else
+      EXPECT_EQ(c.ends.Text(), whole.ends.Text()) << "cut after " << cut;
+    std::printf("[ measured ] cut after %ld of %ld polls: %zu of %zu points, ends %s\n", cut, total,
+                c.points.size(), whole.points.size(), c.ends.Text().c_str());
+  }
+}
+
 // The response grid (response_grid.hpp) below the NS curve, off the cells
 // next to it: there the stick-slip orbit the curve follows is unstable, so
 // no cell reaches it (the attractor is the torus: quasi-periodic, locked at
