@@ -80,14 +80,6 @@ struct Setup {
   std::string model;  // one line
 };
 
-long Count(const cli::Arguments& args, const char* name, long fallback, long lo, long hi) {
-  const long n = args.Integer(name, fallback);
-  if (n < lo || n > hi)
-    throw cli::UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
-                          ": must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return n;
-}
-
 // The forced oscillator and its swept parameter (checked at --from and --to).
 void ConfigureForced(const cli::Arguments& args, Setup& s) {
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
@@ -153,10 +145,10 @@ Setup Configure(const cli::Arguments& args) {
     cli::RefuseSystem(args, kProg);  // --set, --blocks or [system] without --system
     ConfigureForced(args, s);
   }
-  s.o.n = static_cast<int>(Count(args, "n", 200, 2, 100000));
-  s.o.iterate.transient = static_cast<int>(Count(args, "transient", 500, 0, 1000000));
-  s.o.iterate.keep = static_cast<int>(Count(args, "keep", 200, 10, 1000000));
-  s.o.threads = args.Given("threads") ? static_cast<int>(Count(args, "threads", 0, 1, 1024)) : 0;
+  s.o.n = static_cast<int>(args.IntegerIn("n", 200, 2, 100000));
+  s.o.iterate.transient = static_cast<int>(args.IntegerIn("transient", 500, 0, 1000000));
+  s.o.iterate.keep = static_cast<int>(args.IntegerIn("keep", 200, 10, 1000000));
+  s.o.threads = args.Given("threads") ? static_cast<int>(args.IntegerIn("threads", 0, 1, 1024)) : 0;
   s.o.iterate.align = std::min(s.o.iterate.align, s.o.iterate.transient);
   const std::string dir = args.Text("direction", "both");
   if (dir != "up" && dir != "down" && dir != "both")
@@ -170,7 +162,7 @@ Setup Configure(const cli::Arguments& args) {
         std::to_string(s.o.iterate.keep) + " x " + std::to_string(s.o.up + s.o.down) +
         " directions = " + ss::FormatNumber(points) + " section points, more than " +
         ss::FormatNumber(ss::OrbitDiagramOptions::kMaxPoints) + " (held in memory)");
-  s.o.chunks = static_cast<int>(Count(args, "chunks", 1, 1, s.o.n));
+  s.o.chunks = static_cast<int>(args.IntegerIn("chunks", 1, 1, s.o.n));
   s.o.max_amplitude = args.Number("max_amplitude", 50);
   if (!(s.o.max_amplitude > 0))
     throw cli::UsageError(args.Source("max_amplitude") + " must be > 0");

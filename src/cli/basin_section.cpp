@@ -35,14 +35,6 @@ po::options_description SectionBasinOptionGroup() {
 
 namespace {
 
-long Count(const Arguments& args, const char* name, long fallback, long lo, long hi) {
-  const long n = args.Integer(name, fallback);
-  if (n < lo || n > hi)
-    throw UsageError("invalid value '" + args.Text(name) + "' for " + args.Source(name) +
-                     ": must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return n;
-}
-
 // The forced oscillator of --force and --omega, checked.
 ForcedParams ForcedFromArguments(const Arguments& args) {
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
@@ -84,8 +76,8 @@ void SliceFromArguments(const Arguments& args, const System& s, bool forced, Sta
     for (int c = 0; c < 2; ++c)  // steady sliding +-1 by default
       g->lo[c] = g->base[g->components[c]] - 1, g->hi[c] = g->base[g->components[c]] + 1;
   }
-  g->n[0] = static_cast<int>(Count(args, "nx", 41, 1, 2000));
-  g->n[1] = static_cast<int>(Count(args, "ny", 41, 1, 2000));
+  g->n[0] = static_cast<int>(args.IntegerIn("nx", 41, 1, 2000));
+  g->n[1] = static_cast<int>(args.IntegerIn("ny", 41, 1, 2000));
   const char* box[] = {"x_min", "x_max", "xdot_min", "xdot_max"};
   int given = 0;
   for (const char* k : box) given += args.Given(k);
@@ -104,12 +96,12 @@ AttractorOptions Configure(const Arguments& args, const System& s, bool forced, 
       throw UsageError(args.Source(o) + ": not with " + (forced ? "--force" : "--system"));
   AttractorOptions o;
   SliceFromArguments(args, s, forced, &o.slice);
-  o.iterate.transient = static_cast<int>(Count(args, "transient", 300, 0, 1000000));
-  o.iterate.keep = static_cast<int>(Count(args, "keep", 64, 8, 1000000));
+  o.iterate.transient = static_cast<int>(args.IntegerIn("transient", 300, 0, 1000000));
+  o.iterate.keep = static_cast<int>(args.IntegerIn("keep", 64, 8, 1000000));
   o.iterate.align = std::min(o.iterate.align, o.iterate.transient);
   o.iterate.batches = std::min(o.iterate.batches, o.iterate.keep);
-  o.max_period = static_cast<int>(Count(args, "max_period", 16, 1, o.iterate.keep / 2));
-  o.threads = args.Given("threads") ? static_cast<int>(Count(args, "threads", 0, 1, 1024)) : 0;
+  o.max_period = static_cast<int>(args.IntegerIn("max_period", 16, 1, o.iterate.keep / 2));
+  o.threads = args.Given("threads") ? static_cast<int>(args.IntegerIn("threads", 0, 1, 1024)) : 0;
   o.max_amplitude = args.Number("max_amplitude", 50);
   if (!(o.max_amplitude > 0)) throw UsageError(args.Source("max_amplitude") + " must be > 0");
   *flow = FlowOptionsFromArguments(args);

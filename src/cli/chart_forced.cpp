@@ -68,14 +68,6 @@ SystemPlane PlaneOf(const Arguments& args, ForcedParams& p) {
   return pl;
 }
 
-long Bounded(const Arguments& args, const char* key, long fallback, long lo, long hi) {
-  const long n = args.Integer(key, fallback);
-  if (n < lo || n > hi)
-    throw UsageError("invalid value '" + args.Text(key) + "' for " + args.Source(key) +
-                     ": must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return n;
-}
-
 // "law=cubic beta=0.05 ... force=0.3 omega=[0.5, 2] ...": the law's
 // parameters and the forcing, the axes as their ranges.
 std::string Describe(const ForcedParams& p, const ForcedModel& m, const SystemPlane& pl) {
@@ -134,8 +126,8 @@ ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
   o.branch.max_amplitude = MaxAmplitudeFromArguments(args, kDefaultAmplitude);
   o.max_step = MaxStepFromArguments(args, o.max_step);
   o.seed_lines = static_cast<int>(
-      Bounded(args, "seed_lines", o.seed_lines, 0, SystemChartOptions::kMaxSeedLines));
-  o.max_m = static_cast<int>(Bounded(args, "max_m", o.max_m, 1, SystemChartOptions::kMaxMultiple));
+      args.IntegerIn("seed_lines", o.seed_lines, 0, SystemChartOptions::kMaxSeedLines));
+  o.max_m = static_cast<int>(args.IntegerIn("max_m", o.max_m, 1, SystemChartOptions::kMaxMultiple));
   if (const std::string oe = o.ValidationError(*model); !oe.empty())
     throw UsageError("invalid forced chart options: " + oe);
   const long grid = args.Integer("grid", kDefaultGrid);

@@ -73,17 +73,9 @@ SystemChartOptions Configure(const Arguments& args, const System& s) {
   o.branch = OrbitBranchOptions(FlowOptionsFromArguments(args));
   o.branch.max_amplitude = MaxAmplitudeFromArguments(args, o.branch.max_amplitude);
   o.max_step = MaxStepFromArguments(args, o.max_step);
-  const long lines = args.Integer("seed_lines", o.seed_lines);
-  if (lines < 0 || lines > SystemChartOptions::kMaxSeedLines)
-    throw UsageError("invalid value '" + args.Text("seed_lines") + "' for " +
-                     args.Source("seed_lines") + ": must be in [0, " +
-                     std::to_string(SystemChartOptions::kMaxSeedLines) + "]");
-  o.seed_lines = static_cast<int>(lines);
-  const long max_m = args.Integer("max_m", o.max_m);
-  if (max_m < 1 || max_m > SystemChartOptions::kMaxMultiple)
-    throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
-                     ": must be in [1, " + std::to_string(SystemChartOptions::kMaxMultiple) + "]");
-  o.max_m = static_cast<int>(max_m);
+  o.seed_lines = static_cast<int>(
+      args.IntegerIn("seed_lines", o.seed_lines, 0, SystemChartOptions::kMaxSeedLines));
+  o.max_m = static_cast<int>(args.IntegerIn("max_m", o.max_m, 1, SystemChartOptions::kMaxMultiple));
   if (const std::string e = o.ValidationError(s); !e.empty()) throw UsageError(e);
   return o;
 }

@@ -105,6 +105,14 @@ long Arguments::Integer(const std::string& name, long fallback) const {
   return value;
 }
 
+long Arguments::IntegerIn(const std::string& name, long fallback, long lo, long hi) const {
+  const long n = Integer(name, fallback);
+  if (n < lo || n > hi)
+    throw UsageError("invalid value '" + Text(name) + "' for " + Source(name) + ": must be in [" +
+                     std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return n;
+}
+
 bool Arguments::Flag(const std::string& name) const {
   const auto it = vm_.find(name);
   return it != vm_.end() && !it->second.empty() && it->second.as<bool>();

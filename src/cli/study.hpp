@@ -88,6 +88,8 @@ class Arguments {
   double Number(const std::string& name, double fallback) const;
   std::optional<double> OptionalNumber(const std::string& name) const;
   long Integer(const std::string& name, long fallback) const;
+  // Integer(), in [lo, hi]; UsageError naming Source(name) and the bounds otherwise.
+  long IntegerIn(const std::string& name, long fallback, long lo, long hi) const;
   // A po::bool_switch() flag.
   bool Flag(const std::string& name) const;
   // The study file read, empty if none.
