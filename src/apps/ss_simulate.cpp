@@ -1,7 +1,7 @@
-// ss_simulate: one trajectory of the belt model (or, with --force, of the
-// forced oscillator: cli/simulate_forced.hpp), written into --out DIR as
-// trajectory.tsv (metadata lines, then the header t, x, xdot, mode) and drawn
-// as trajectory.png unless --no_plots.
+// ss_simulate: one trajectory of the belt model (or, with --force or
+// --system, of the forced oscillator or another system: cli/simulate_system.hpp), written into
+// --out DIR as trajectory.tsv (metadata lines, then the header t, x, xdot, mode) and drawn as
+// trajectory.png unless --no_plots.
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -35,10 +35,12 @@ constexpr const char* kNotes =
     "model, run and solver settings, status), then the header line 't<TAB>x<TAB>xdot<TAB>mode'\n"
     "(mode: slip-below, stick, slip-above), then one row every --dt and one at every switch.\n"
     "Stick rows have xdot == v exactly. trajectory.gp draws trajectory.png (phase portrait\n"
-    "and time series). With --force A > 0 (the forced oscillator, dimensionless inputs):\n"
-    "a column phase (Omega t mod 2 pi) follows, and section.tsv holds the Poincare section\n"
-    "(--section strobe: every forcing period, at cos(Omega t) = 1; exit: every stick exit),\n"
-    "drawn as section.png (strobe: x' against x; exit: the exit-phase map).\n"
+    "and time series). With --force A > 0 (the forced oscillator, dimensionless inputs) or\n"
+    "--system, the columns are t, every state component (the forced oscillator's x, xdot,\n"
+    "theta = Omega t mod 2 pi) and mode, and section.tsv (n, then the same columns) holds\n"
+    "the Poincare section (--section strobe: every forcing period, at cos(Omega t) = 1;\n"
+    "exit: every stick exit), drawn as section.png (strobe: x' against x; exit: the\n"
+    "return map of the stick exits' forcing phase, or of the first component).\n"
     "Study files: key = value lines ('#' comments); keys outside sections are model\n"
     "and solver options, [simulate] holds this app's keys; the command line wins.\n"
     "The files are written as one set (docs/reliability.md); a run cut short writes the\n"
@@ -230,10 +232,10 @@ int Main(int argc, char** argv) {
       throw cli::UsageError(args.Source(name) + (forced ? " needs --orbits"
                                                         : " needs the forced oscillator: give "
                                                           "--force A > 0"));
-  if (forced) return cli::SimulateForcedApp(args, kProg, command);
+  if (forced) return cli::SimulateSystemApp(args, kProg, command);
   if (args.Given("section"))
     throw cli::UsageError(args.Source("section") +
-                          " needs the forced oscillator: give --force A > 0");
+                          " needs the forced oscillator (--force A > 0) or --system");
   return SimulateBelt(args, command);
 }
 

@@ -1,7 +1,6 @@
-// ss_simulate's shared range options and its forced run:
-// --force A --omega W give the forced oscillator's trajectory and its
-// Poincare section (--section strobe|exit), in --out DIR as trajectory.tsv,
-// section.tsv, trajectory.gp and the figures trajectory.png, section.png.
+// ss_simulate's shared range options and the forced oscillator's inputs
+// (--force A --omega W); its trajectory is drawn by the one system path
+// (simulate_system.hpp), its orbit list by ForcedOrbitsApp.
 #pragma once
 
 #include <boost/program_options.hpp>
@@ -32,12 +31,10 @@ struct ForcedInputs {
 };
 ForcedInputs ForcedInputsFromArguments(const Arguments& args);
 
-// --section strobe|exit, --orbits, --max_m.
+// --section strobe|exit|none, --orbits, --max_m.
 void AddSimulateForcedOptions(po::options_description& d);
-// The whole forced run; returns the exit code.
 // ss_simulate --force --orbits: every periodic orbit at one parameter point
 // (forced_orbits.cpp); returns the exit code.
 int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::string& command);
-int SimulateForcedApp(const Arguments& args, const std::string& prog, const std::string& command);
 
 }  // namespace stickslip::cli

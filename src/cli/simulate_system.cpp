@@ -1,10 +1,9 @@
-// ss_simulate --system (simulate_system.hpp).
+// ss_simulate for the forced oscillator and --system (simulate_system.hpp).
 #include "cli/simulate_system.hpp"
 
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
@@ -14,12 +13,24 @@
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/system_branch_report.hpp"
+#include "stickslip/io/trajectory_report.hpp"
 
 namespace stickslip::cli {
 
 namespace {
 
 constexpr double kDisturbance = 0.01;  // the default start: steady sliding, z_0 moved by this
+
+// The run: its system, start and settings, all checked before anything runs.
+struct Scene {
+  std::unique_ptr<System> system;
+  Eigen::VectorXd z0;
+  SimulationOptions o;
+  SimulateRange range;
+  Metadata meta;      // the model and solver lines of both tables
+  std::string title;  // as drawn
+  std::string model;  // stdout's description
+};
 
 // --state: n comma-separated numbers; else steady sliding moved by kDisturbance.
 Eigen::VectorXd StartState(const Arguments& args, const System& s) {
@@ -40,29 +51,97 @@ Eigen::VectorXd StartState(const Arguments& args, const System& s) {
   return z;
 }
 
-// Two panels: the first contact's coordinate and rate (phase portrait), and
-// every displacement (a component some other one is the rate of) against t.
-std::string PlotScript(const System& s, const std::string& figure, const std::string& title,
-                       FigureFormat format) {
-  std::ostringstream os;
-  os << FigurePreamble(format, 1400, 650) << "set output " << GnuplotQuoted(figure) << "\n"
-     << "set multiplot layout 1,2 title " << GnuplotQuoted(EnhancedText(title)) << "\n"
-     << "set xlabel " << GnuplotQuoted(EnhancedText(s.StateName(0))) << "\nset ylabel "
-     << GnuplotQuoted(EnhancedText(s.StateName(1))) << "\nset title 'phase portrait'\nunset key\n"
-     << "plot 'trajectory.tsv' using '" << StateColumn(s, 0) << "':'" << StateColumn(s, 1)
-     << "' with lines ls 1 lw 1.5 notitle\n"
-     << "set key\nset xlabel 'time t'\nset ylabel 'displacements'\nset title 'time series'\n"
-     << "plot ";
-  int k = 0;
-  for (int i = 0; i < s.tangent_dimension(); ++i) {
-    if (s.DerivativeOf(i) < 0) continue;
-    os << (k ? ", \\\n  " : "") << "'trajectory.tsv' using 't':'" << StateColumn(s, i)
-       << "' with lines lw 1.5 lc rgb '" << SeriesColor(k) << "' title "
-       << GnuplotQuoted(EnhancedText(s.StateName(i)));
-    ++k;
-  }
-  os << "\nunset multiplot\n";
-  return os.str();
+// --section strobe|exit|none (default: strobe with a clock, else none).
+SimulationSection SectionOf(const Arguments& args, const System& s) {
+  const std::string text = args.Text("section", s.clocks() ? "strobe" : "none");
+  SimulationSection sec = SimulationSection::kNone;
+  if (!FromName(text, &sec))
+    throw UsageError("invalid value '" + text + "' for " + args.Source("section") +
+                     ": must be strobe, exit or none");
+  if (sec == SimulationSection::kStrobe && !s.clocks())
+    throw UsageError(args.Source("section") + " strobe needs a forcing (a clock); --system " +
+                     args.Text("system") + " is autonomous: give exit or none");
+  return sec;
+}
+
+Scene ForcedScene(const Arguments& args, const std::string& prog, const std::string& command) {
+  const ForcedInputs in = ForcedInputsFromArguments(args);
+  Scene sc;
+  sc.system = std::make_unique<ForcedModel>(in.p);
+  sc.range = SimulateRangeFromArguments(args, in.p.base.v);
+  sc.z0 = Eigen::Vector3d(sc.range.x0, sc.range.xdot0, 0);
+  sc.o.flow = in.flow;
+  const std::string params = DescribeModel(in.p.base) + " force=" + FormatNumber(in.p.force) +
+                             " omega=" + FormatNumber(in.p.omega);
+  sc.model = "forced oscillator, " + params;
+  sc.title = FigureTitle(params, {});
+  sc.meta = RunMetadata(prog, command, in.p.base, in.shown);
+  sc.meta.insert(sc.meta.end(), {{"model", sc.model},
+                                 {"force", FormatNumber(in.p.force)},
+                                 {"omega", FormatNumber(in.p.omega)}});
+  return sc;
+}
+
+Scene ChosenScene(const Arguments& args, const std::string& prog, const std::string& command) {
+  for (const char* o : {"x0", "xdot0", "orbits", "max_m", "max_amplitude"})
+    if (args.Given(o))
+      throw UsageError(args.Source(o) +
+                       " applies to the belt and the forced oscillator; give "
+                       "--state with --system " +
+                       args.Text("system"));
+  Scene sc;
+  sc.system = SystemFromArguments(args);
+  sc.range = SimulateRangeFromArguments(args, 0);
+  sc.o.flow = FlowOptionsFromArguments(args);
+  sc.z0 = StartState(args, *sc.system);
+  sc.model = DescribeSystem(*sc.system, SystemChoiceOf(args), -1);
+  sc.title = SystemFigureTitle(sc.model);
+  sc.meta = ToolMetadata(prog, command);
+  sc.meta.insert(sc.meta.end(), {{"system", sc.model},
+                                 {"rtol", FormatNumber(sc.o.flow.rtol)},
+                                 {"atol", FormatNumber(sc.o.flow.atol)}});
+  return sc;
+}
+
+// The first clock's period 2 pi / omega (0: none).
+double ClockPeriod(const System& s, const Eigen::VectorXd& z) {
+  if (!s.clocks()) return 0;
+  Eigen::VectorXd f(s.dimension());
+  s.Field(ModeOf(s, z), z, f);
+  return 2 * M_PI / f[s.tangent_dimension()];
+}
+
+Scene SceneOf(const Arguments& args, const std::string& prog, const std::string& command) {
+  Scene sc =
+      SystemRequested(args) ? ChosenScene(args, prog, command) : ForcedScene(args, prog, command);
+  sc.o.section = SectionOf(args, *sc.system);
+  sc.o.period = ClockPeriod(*sc.system, sc.z0);
+  sc.o.t_end = sc.range.t_end, sc.o.dt = sc.range.dt, sc.o.max_rows = sc.range.max_rows;
+  sc.o.extrema = {0};
+  if (sc.o.section == SimulationSection::kStrobe &&
+      sc.range.t_end / sc.o.period > sc.range.max_rows)
+    throw UsageError("t_end / (2 pi / omega) = " + FormatNumber(sc.range.t_end / sc.o.period) +
+                     " section points is more than " + args.Source("max_rows") + " = " +
+                     std::to_string(sc.range.max_rows));
+  sc.meta.emplace_back("section", Name(sc.o.section));
+  return sc;
+}
+
+// The figures the run draws.
+std::vector<std::string> Figures(const Scene& sc, FigureFormat format) {
+  std::vector<std::string> f = {FigureFile("trajectory", format)};
+  if (sc.o.section != SimulationSection::kNone) f.push_back(FigureFile("section", format));
+  return f;
+}
+
+void PrintSummary(const std::string& prog, const Scene& sc, const Simulation& r, long rows) {
+  const System& s = *sc.system;
+  std::cout << prog << ": " << sc.model << "\n"
+            << rows << " rows to t = " << FormatNumber(r.end.t) << " (" << Name(r.status) << ")";
+  if (sc.o.section != SimulationSection::kNone)
+    std::cout << ", " << r.section_points << " section points (" << Name(sc.o.section) << ")";
+  std::cout << ", " << r.sticks << " sticks, " << r.crossings << " crossings; " << s.StateName(0)
+            << " in [" << FormatNumber(r.lo[0]) << ", " << FormatNumber(r.hi[0]) << "]\n";
 }
 
 }  // namespace
@@ -74,67 +153,64 @@ void AddSimulateSystemOptions(po::options_description& d) {
 }
 
 int SimulateSystemApp(const Arguments& args, const std::string& prog, const std::string& command) {
-  for (const char* o : {"x0", "xdot0", "section", "orbits", "max_m", "max_amplitude"})
-    if (args.Given(o))
-      throw UsageError(args.Source(o) +
-                       " applies to the belt and the forced oscillator; give "
-                       "--state with --system " +
-                       args.Text("system"));
-  const std::unique_ptr<System> s = SystemFromArguments(args);
-  const SimulateRange range = SimulateRangeFromArguments(args, 0);
-  const FlowOptions options = FlowOptionsFromArguments(args);
-  const Eigen::VectorXd z0 = StartState(args, *s);
+  Scene sc = SceneOf(args, prog, command);
+  const System& s = *sc.system;
   const FigureFormat format = FigureFormatOf(args);
-  const std::string figure = FigureFile("trajectory", format);
-  AppRun app(prog, args, "plots/simulate", {"trajectory.tsv", "trajectory.gp", figure});
+  const bool sectioned = sc.o.section != SimulationSection::kNone;
+  const std::vector<std::string> figures = Figures(sc, format);
+  std::vector<std::string> files = {"trajectory.tsv", "trajectory.gp"};
+  if (sectioned) files.push_back("section.tsv");
+  files.insert(files.end(), figures.begin(), figures.end());
+  AppRun app(prog, args, "plots/simulate", files);
   RunControl& run = app.run();
-  std::vector<std::string> columns = {"t"};
-  for (int i = 0; i < s->dimension(); ++i) columns.push_back(StateColumn(*s, i));
-  columns.push_back("mode");
-  TsvTable table(columns);
-  const std::string model = DescribeSystem(*s, SystemChoiceOf(args), -1);
-  for (const auto& [key, value] : ToolMetadata(prog, command)) table.AddMeta(key, value);
-  table.AddMeta("system", model);
-  table.AddMeta("t_end", FormatNumber(range.t_end));
-  table.AddMeta("dt", FormatNumber(range.dt));
-  table.AddMeta("rtol", FormatNumber(options.rtol));
-  table.AddMeta("atol", FormatNumber(options.atol));
-  SimulationOptions o;
-  o.flow = options, o.t_end = range.t_end, o.dt = range.dt, o.max_rows = range.max_rows;
-  o.cancelled = [&] { return run.Cancelled(); };
+  TsvTable traj(TrajectoryColumns(s)), section(SectionColumns(s));
+  sc.o.cancelled = [&] { return run.Cancelled(); };
   SimulationSink sink;
   sink.row = [&](double t, const double* z, const ModeSet& m) {
-    std::vector<TsvTable::Cell> row = {t};
-    for (int i = 0; i < s->dimension(); ++i) row.emplace_back(z[i]);
-    row.emplace_back(ModeSetName(m, s->contacts()));
-    table.AddRow(row);
-    run.Progress("t = " + FormatNumber(t), t / range.t_end, t, "time units");
+    traj.AddRow(TrajectoryRow(s, -1, t, z, m));
+    run.Progress("t = " + FormatNumber(t), t / sc.range.t_end, t, "time units");
+  };
+  sink.section = [&](long n, double t, const double* z, const ModeSet& m) {
+    section.AddRow(TrajectoryRow(s, n, t, z, m));
   };
   run.Phase("integrating");
-  const Simulation r = Simulate(*s, FlowPoint{0, z0, ModeOf(*s, z0)}, o, sink);
-  if (r.status == SimulationStatus::kRowLimit)
-    throw UsageError(args.Source("max_rows") + " = " + std::to_string(range.max_rows) +
-                     ": the rows at switches took the table past it by t = " +
-                     FormatNumber(r.end.t) + "; use a shorter --t_end or a larger --dt");
+  const Simulation r = Simulate(s, FlowPoint{0, sc.z0, ModeOf(s, sc.z0)}, sc.o, sink);
+  if (r.status == SimulationStatus::kRowLimit)  // bad input found late: nothing written
+    throw UsageError(args.Source("t_end") + " " + args.Text("t_end", "100") + " with " +
+                     args.Source("dt") + " " + args.Text("dt", "0.01") + ": " + r.message +
+                     "; use a shorter --t_end or a larger --dt");
   run.Phase("writing");
-  if (!r.ok()) {  // the rows so far, marked partial; no figure
-    const std::string why =
-        r.message + (r.status == SimulationStatus::kCancelled ? " (" + run.Reason() + ")" : "");
-    table.AddMeta("status", "partial (" + why + ")");
-    app.out().Write("trajectory.tsv", table.str());
-    app.out().Commit({"trajectory.gp", figure});
-    return app.ExitCode(why + "; the trajectory so far is written, marked partial");
+  const bool partial = !r.ok();
+  const std::string why =
+      r.message + (r.status == SimulationStatus::kCancelled ? " (" + run.Reason() + ")" : "");
+  Metadata meta = sc.meta;
+  meta.emplace_back("status", partial ? "partial (" + why + ")"
+                              : r.status == SimulationStatus::kContactOpen
+                                  ? "complete: contact " + std::to_string(r.opened) +
+                                        " opens at t = " + FormatNumber(r.end.t) + ", the run ends"
+                                  : std::string("complete"));
+  for (TsvTable* t : {&traj, &section}) {
+    t->PrependMeta(meta);
+    AddRangeMeta(*t, sc.range);
   }
-  table.AddMeta("status", r.status == SimulationStatus::kContactOpen
-                              ? "complete: contact " + std::to_string(r.opened) +
-                                    " opens at t = " + FormatNumber(r.end.t) + ", the run ends"
-                              : std::string("complete"));
-  app.out().Write("trajectory.tsv", table.str());
-  app.out().Write("trajectory.gp", PlotScript(*s, figure, model, format));
-  if (!app.Finish("trajectory.gp", {figure}, {figure})) return kExitFailed;
-  std::cout << prog << ": " << table.rows() << " rows to t = " << FormatNumber(r.end.t) << " ("
-            << Name(r.status) << ", " << r.sticks << " sticks); wrote " << app.out().dir()
-            << "/trajectory.tsv" << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
+  app.out().Write("trajectory.tsv", traj.str());
+  if (sectioned) app.out().Write("section.tsv", section.str());
+  if (partial) {  // the rows so far, marked partial; no figure
+    std::vector<std::string> gone = {"trajectory.gp"};
+    gone.insert(gone.end(), figures.begin(), figures.end());
+    app.out().Commit(gone);
+    return app.ExitCode(why + "; the trajectory so far is written to " + app.out().dir() +
+                        ", marked partial");
+  }
+  TrajectoryFigure fig;
+  fig.title = sc.title, fig.format = format, fig.section = sc.o.section;
+  fig.t_end = r.end.t, fig.period = s.clocks() ? sc.o.period : 0;
+  app.out().Write("trajectory.gp", TrajectoryScript(s, fig));
+  if (!app.Finish("trajectory.gp", figures, figures)) return kExitFailed;
+  PrintSummary(prog, sc, r, traj.rows());
+  std::cout << "wrote " << app.out().dir() << "/trajectory.tsv"
+            << (sectioned ? ", section.tsv" : "") << ", trajectory.gp"
+            << (app.gnuplot().ok() ? " and the figures" : "") << "\n";
   return app.ExitCode("");
 }
 

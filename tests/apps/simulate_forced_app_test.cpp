@@ -64,7 +64,7 @@ TEST_F(SimulateForcedApp, StroboscopicSectionSettlesOnDenHartogsOrbit) {
   EXPECT_NEAR(std::stod(a[x]), std::stod(b[x]), 1e-8);
   EXPECT_NEAR(std::stod(a[xd]), std::stod(b[xd]), 1e-8);
   // Over the last period the rows (every 0.001) reach Den Hartog's amplitude.
-  const size_t tt = Col(r.traj, "t"), tx = Col(r.traj, "x"), ph = Col(r.traj, "phase");
+  const size_t tt = Col(r.traj, "t"), tx = Col(r.traj, "x"), ph = Col(r.traj, "theta");
   double x_max = -1e9;
   for (const auto& row : r.traj.rows) {
     if (std::stod(row[tt]) >= 300 - T) x_max = std::max(x_max, std::stod(row[tx]));
@@ -83,7 +83,7 @@ TEST_F(SimulateForcedApp, ExitSectionLiesOnTheStickBandsEdge) {
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   EXPECT_EQ(r.section.meta.at("section"), "exit");
   const size_t t = Col(r.section, "t"), x = Col(r.section, "x"), xd = Col(r.section, "xdot"),
-               mode = Col(r.section, "mode"), ph = Col(r.section, "phase");
+               mode = Col(r.section, "mode"), ph = Col(r.section, "theta");
   ASSERT_GT(r.section.rows.size(), 5u);
   for (const auto& row : r.section.rows) {
     EXPECT_EQ(std::stod(row[xd]), v);

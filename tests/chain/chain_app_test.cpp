@@ -200,6 +200,10 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_simulate", {"--system", "chain", "--state", "1,2,3,4,"}, {"--state", "4"});
   ExpectRejected("ss_simulate", {"--system", "mode_coupling", "--state", "0.5,0,2,0"},
                  {"--state", "contact 0 is open"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--section", "strobe"},
+                 {"--section strobe", "autonomous"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--section", "every"},
+                 {"'every' for --section"});
   // A [system] section without a system, and an unknown key in it.
   const std::string study = dir_ + "/bad.ini";
   tu::WriteFile(study, "law = cubic\n[system]\nkc = 1\n");
@@ -237,6 +241,36 @@ TEST_F(SystemApp, RunsThatEndEarlyEndCleanly) {
              {"--system", "chain", "--max_rows", "101", "--t_end", "1", "--dt", "0.01"});
   EXPECT_EQ(r.outcome.code, 0) << r.err;
   EXPECT_EQ(tu::ReadTsv(tu::ReadFile(dir + "/out/trajectory.tsv")).rows.size(), 101u);
+}
+
+// ss_simulate --system chain --section exit: every section point is a stick
+// exit, so some block moves with the belt (x_i' = v exactly) with its stick
+// force on the static limit, |2 beta v + x_i + kc (x_i - x_j)| = mu_s (the
+// chain's stick law, docs/systems.md), and that block's contact slips after.
+TEST_F(SystemApp, ExitSectionLiesOnABlocksStickEdge) {
+  const std::string dir = NewDir();
+  const double beta = 0.05, v = 0.3, kc = 0.5, mu_s = 0.4;
+  const auto r = RunOut("ss_simulate", dir,
+                        {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2.ini", "--v", "0.3",
+                         "--section", "exit", "--t_end", "200"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv sec = tu::ReadTsv(tu::ReadFile(dir + "/out/section.tsv"));
+  EXPECT_EQ(sec.meta.at("section"), "exit");
+  ASSERT_GT(sec.rows.size(), 10u);
+  for (size_t k = 0; k < sec.rows.size(); ++k) {
+    const auto& row = sec.rows[k];
+    EXPECT_EQ(std::stol(row[sec.Column("n")]), static_cast<long>(k));
+    const double x[2] = {std::stod(row[sec.Column("x1")]), std::stod(row[sec.Column("x2")])};
+    const double xd[2] = {std::stod(row[sec.Column("x1dot")]), std::stod(row[sec.Column("x2dot")])};
+    const std::string mode = row[sec.Column("mode")];
+    int on_edge = 0;
+    for (int i = 0; i < 2; ++i) {
+      const double f = 2 * beta * v + x[i] + kc * (x[i] - x[1 - i]);
+      const std::string own = mode.substr(i ? mode.find(',') + 1 : 0, 5);
+      if (xd[i] == v && std::abs(std::abs(f) - mu_s) < 1e-9 && own != "stick") ++on_edge;
+    }
+    EXPECT_GE(on_edge, 1) << "row " << k << ": " << mode;
+  }
 }
 
 }  // namespace

@@ -22,26 +22,28 @@ set style textbox opaque noborder margins 1,1
 set output "trajectory.png"
 set bmargin 9
 set multiplot layout 1,2 title "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3, Ω = 0.6"
-set xlabel 'displacement x'
-set ylabel 'velocity dx/dt'
+set offsets 0, 0, graph 0.04, graph 0.04
+set xlabel "x"
+set ylabel "x'"
 set title 'phase portrait'
-plot 'trajectory.tsv' using 2:($1 < 300 ? $3 : NaN) with lines lw 1 lc rgb '#b0b0b0' title 'transient (t < 300)', \
-     'trajectory.tsv' using 2:($1 >= 300 ? $3 : NaN) with lines ls 1 lw 1.5 title 'after the transient (t ≥ 300)', \
-     'trajectory.tsv' using 2:(strcol(4) eq 'stick' ? $3 : NaN) with lines ls 9 title 'sticking (dx/dt = v)'
+plot 'trajectory.tsv' using (column('x')):(column('t') < 300 ? column('xdot') : NaN) with lines lw 1 lc rgb '#b0b0b0' title "transient (t < 300)", \
+     'trajectory.tsv' using (column('x')):(column('t') >= 300 ? column('xdot') : NaN) with lines ls 1 lw 1.5 title "after the transient (t ≥ 300)", \
+     'trajectory.tsv' using (column('x')):(substr(strcol('mode'), 1, 5) eq 'stick' ? column('xdot') : NaN) with lines ls 9 title "sticking"
+set offsets 0, 0, 0, 0
 set xlabel 'time t'
-set ylabel 'x, dx/dt'
+set ylabel "x, x'"
 set title "time series: the last 8 forcing periods"
 set xrange [516.2241959042722:600]
-plot 'trajectory.tsv' using 1:2 with lines ls 1 lw 1.5 title 'displacement x', \
-     'trajectory.tsv' using 1:3 with lines ls 3 lw 1.5 title 'velocity dx/dt'
+plot 'trajectory.tsv' using 't':'x' with lines lw 1.5 lc rgb '#0072b2' title "displacement x", \
+     'trajectory.tsv' using 't':'xdot' with lines lw 1.5 lc rgb '#d55e00' title "velocity x'"
 unset multiplot
 set autoscale x
 set bmargin 7
 set terminal pngcairo size 950,750 enhanced font 'Sans,12'
 set output "section.png"
-set title "stroboscopic section (cos Ωt = 1)\n" . "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3, Ω = 0.6"
-set xlabel 'displacement x (dimensionless)'
-set ylabel 'velocity dx/dt (dimensionless)'
+set title "stroboscopic section (every forcing period)\n" . "cubic law: β = 0.05, v = 0.25, μ_s = 0.4, μ_m = 0.25, v_m = 0.5, A = 0.3, Ω = 0.6"
+set xlabel "x"
+set ylabel "x'"
 set offsets graph 0.04, graph 0.04, graph 0.04, graph 0.04
-plot 'section.tsv' using 4:($2 < 300 ? $5 : NaN) with points pt 6 ps 0.6 lc rgb '#b0b0b0' title 'transient (t < 300)', \
-     'section.tsv' using 4:($2 >= 300 ? $5 : NaN) with points pt 7 ps 0.8 lc rgb '#0072b2' title 'after the transient (t ≥ 300)'
+plot 'section.tsv' using (column('x')):(column('t') < 300 ? column('xdot') : NaN) with points pt 6 ps 0.6 lc rgb '#b0b0b0' title "transient (t < 300)", \
+     'section.tsv' using (column('x')):(column('t') >= 300 ? column('xdot') : NaN) with points pt 7 ps 0.8 lc rgb '#0072b2' title "after the transient (t ≥ 300)"
