@@ -6,17 +6,25 @@
 //     (stickslip::Shooting; docs/theory.md, "One shooting") with its Floquet
 //     multipliers, and
 //  3. continued in the belt speed v (stickslip::ContinueOrbits; docs/theory.md,
-//     "One branch driver"), with its special points.
-// It checks three things it can verify and exits 1 if one fails: the stick
-// phase collapses the state, so the orbit's multiplier is 0; a plain Flow run
-// from the orbit's start returns to the next stick exit after the period; the
-// branch's first row is the shot orbit.
+//     "One branch driver"), with its special points,
+//  4. charted in (v, beta) (stickslip::ChartSystem): the Hopf curve of steady
+//     sliding, and
+//  5. its basins on the (x, x') plane (stickslip::ClassifyAttractors).
+// It checks what it can verify and exits 1 if one fails: the stick phase
+// collapses the state, so the orbit's multiplier is 0; a plain Flow run from
+// the orbit's start returns to the next stick exit after the period; the
+// branch's first row is the shot orbit, and at its grazing end a plain run
+// sticks for no time; every point of the Hopf curve lies on the closed form
+// 2 beta = (mu_s - mu_k)/v_s exp(-v/v_s) - eta; the basins' rest point is
+// steady sliding, x = mu(v), and their cycle's maximum is the shot orbit's.
 #include "own_system.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "stickslip/basin/attractors.hpp"
+#include "stickslip/chart/system_chart.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/flow.hpp"
@@ -87,6 +95,45 @@ ss::OrbitBranch Continue(const own::StribeckBelt& belt, const ss::PeriodicOrbit&
   return b;
 }
 
+// 4. The Hopf curve of steady sliding in (v, beta) and the largest distance
+// of its points from the closed form beta(v) (own_system.hpp, Rest).
+double HopfCurve(const own::StribeckBelt& belt, int* points) {
+  const own::BeltParams& p = belt.params();
+  ss::SystemChartOptions o;
+  o.plane = {belt.ParameterIndex("v"), belt.ParameterIndex("beta"), 0.2, 0.8, 0.02, 0.1};
+  o.orbit_curves = false;  // HB only: the orbit curves take longer
+  const ss::SystemChart c = ss::ChartSystem(belt, o);
+  double worst = 0;
+  *points = 0;
+  for (const ss::SystemCurve& curve : c.curves) {
+    if (curve.kind != ss::CurveKind::kHopf) continue;
+    for (const ss::SystemCurvePoint& q : curve.points) {
+      const double beta = ((p.mu_s - p.mu_k) / p.v_s * std::exp(-q.p1 / p.v_s) - p.eta) / 2;
+      worst = std::max(worst, std::abs(q.p2 - beta));
+      ++*points;
+    }
+  }
+  std::printf("\nchart in (v, beta): %zu curves, %d HB points, status %s, %.3f s\n",
+              c.curves.size(), *points, ss::Name(c.status), c.seconds);
+  return worst;
+}
+
+// 5. Basins at belt speed v on a 9 x 9 grid of (x, x') around steady sliding.
+ss::AttractorBasins Basins(const own::StribeckBelt& belt) {
+  ss::AttractorOptions o;
+  o.slice.base = Eigen::Vector2d(belt.Mu(belt.params().v), 0);
+  o.slice.lo = {o.slice.base[0] - 1, -1};
+  o.slice.hi = {o.slice.base[0] + 1, 1};
+  o.slice.n = {9, 9};
+  const ss::AttractorBasins b = ss::ClassifyAttractors(belt, o);
+  std::printf("\nbasins at v = %g: %zu attractors, %d failed, %.2f s\n", belt.params().v,
+              b.attractors.size(), b.failed, b.seconds);
+  for (const ss::Attractor& a : b.attractors)
+    std::printf("  %-9s m = %d, %d sticks, x = %.10f, %d starts\n", ss::Name(a.kind), a.m, a.sticks,
+                a.z[0], a.starts);
+  return b;
+}
+
 int Run() {
   own::BeltParams p;  // beta 0.05, v 0.3, mu_s 0.4, mu_k 0.25, v_s 0.5, eta 0.02
   const own::StribeckBelt belt(p);
@@ -143,6 +190,34 @@ int Run() {
                   (r0.start.z - orbit.start.z).lpNorm<Eigen::Infinity>()});
   }
   ok &= Check(first && d <= 1e-9, "|first row - shot orbit|", d, 1e-9);
+  // Its end, where the stick phase shrinks to nothing (the orbit turns into
+  // a pure-slip one there): a plain run from the last row barely sticks.
+  const bool ends = !b.rows.empty() && b.rows.back().label != ss::SpecialKind::kNone;
+  const double t_stick = ends ? StickTime(belt, b.rows.back()) : 1.0;
+  ok &= Check(ends && t_stick <= 1e-4, "stick time at the branch's end", t_stick, 1e-4);
+
+  int hb_points = 0;
+  const double hb = HopfCurve(belt, &hb_points);
+  ok &= Check(hb_points >= 10 && hb <= 1e-8, "|HB curve - closed form| in beta", hb, 1e-8);
+
+  // Above v_HB (and below GR) steady sliding and the stick-slip orbit both
+  // attract: the rest point is mu(v) and the cycle's maximum the orbit's.
+  own::BeltParams q = p;
+  q.v = 0.5;
+  const own::StribeckBelt fast(q);
+  // Its stick exit is (mu_s - 2 beta v, v): the orbit's start on the section.
+  const ss::FlowPoint exit_q{0, Eigen::Vector2d(q.mu_s - 2 * q.beta * q.v, q.v),
+                             ss::ModeSet(ss::Mode::kSlipBelow)};
+  const ss::PeriodicOrbit at_q =
+      ss::Shooting(fast, so).Find(exit_q, ss::PoincareSection::StickExit(0));
+  const ss::AttractorBasins basins = Basins(fast);
+  double rest = 1, cycle = 1;
+  for (const ss::Attractor& a : basins.attractors) {
+    if (a.kind == ss::AttractorKind::kRest) rest = std::abs(a.z[0] - fast.Mu(q.v));
+    if (a.kind == ss::AttractorKind::kPeriodic && at_q.ok()) cycle = std::abs(a.z[0] - at_q.hi[0]);
+  }
+  ok &= Check(rest <= 1e-8, "|basins' rest point - mu(v)|", rest, 1e-8);
+  ok &= Check(cycle <= 1e-8, "|basins' cycle x_max - shot orbit's|", cycle, 1e-8);
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }

@@ -22,7 +22,8 @@ except KeyboardInterrupt:
 """
 
 # Each runs for seconds to minutes uninterrupted (measured on this machine:
-# simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart 27 s,
+# simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart
+# with max_step 5e-5 on CVODE over 20 s (on Taylor it now takes 1 s: its signal came too late),
 # its regions on 1000 x 1000 cells about 90 s, orbit_diagram 5000 values and forced_basins
 # 401 x 401 starts well over 10 s each; smallest_disturbance at n = 10**8 about 20 s; orbits on
 # CVODE, 10^5 rows, 0.3 ms each: 15 s or more).
@@ -38,7 +39,7 @@ CALLS = """{
  "basins": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801),
  "basins_progress": lambda: stickslip.basins(stickslip.Params(), nx=801, ny=801,
                                              progress=lambda *a: None),
- "chart": lambda: stickslip.chart(stickslip.Params(), max_step=5e-5),
+ "chart": lambda: stickslip.chart(stickslip.Params(), max_step=5e-5, integrator="cvode"),
  "chart_regions": lambda: stickslip.chart(stickslip.Params(), regions=(1000, 1000)),
  "orbit_diagram": lambda: stickslip.orbit_diagram(stickslip.ForcedParams(stickslip.Params(
      "stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25), force=0.3, omega=0.5),
