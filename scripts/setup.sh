@@ -15,7 +15,7 @@ done
 build=${1:-build}
 shift || true
 
-packages=(g++ make cmake ninja-build libeigen3-dev libnlopt-cxx-dev libsundials-dev
+packages=(g++ make cmake ninja-build pkg-config libeigen3-dev libnlopt-cxx-dev libsundials-dev libginac-dev
           libboost-program-options-dev libboost-dev libgtest-dev gnuplot-nox
           python3-dev pybind11-dev python3-pybind11 python3-numpy
           python3-pip python3-setuptools python3-wheel python3-venv

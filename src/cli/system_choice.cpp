@@ -7,6 +7,7 @@
 
 #include "chain/chain.hpp"
 #include "mode_coupling/mode_coupling.hpp"
+#include "model_file/model_file.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/report.hpp"
 
@@ -38,6 +39,17 @@ std::vector<Arguments::Setting> Settings(const Arguments& args) {
 
 std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const Params& law,
                               long blocks) {
+  if (choice == SystemChoice::kModel) {
+    for (const char* o : {"law", "mu_m", "v_m", "k5", "v_s", "delta"})
+      if (args.Given(o))
+        throw UsageError(args.Source(o) + ": the model file " + args.Text("model") +
+                         " has its own laws (set its parameters with --set)");
+    try {
+      return model_file::ReadModel(args.Text("model"));
+    } catch (const InvalidArgument& e) {
+      throw UsageError(args.Source("model") + " " + e.what());
+    }
+  }
   if (choice == SystemChoice::kChain) {
     const long n = args.Integer("blocks", blocks);
     if (n < 1 || n > kMaxBlocks)
@@ -71,7 +83,10 @@ po::options_description SystemOptions() {
       "system", Value()->value_name("NAME"),
       "belt (default), chain (blocks on a belt, coupled by springs) or "
       "mode_coupling (a brake model of two modes): ss_continue, ss_simulate and ss_basin")(
-      "blocks", Value()->value_name("N"), "chain: the number of blocks, in [1, 64] (default 2)")(
+      "model", Value()->value_name("FILE"),
+      "a model file: the system it writes down (docs/model_files.md); every app that takes "
+      "--system takes it")("blocks", Value()->value_name("N"),
+                           "chain: the number of blocks, in [1, 64] (default 2)")(
       "set", Value()->value_name("A=X,B=Y"),
       "the system's parameters by their own names, applied in order (a study file's [system] "
       "section, then these; docs/systems.md lists them, and so does an unknown name's error)");
@@ -80,10 +95,15 @@ po::options_description SystemOptions() {
 
 SystemChoice SystemChoiceOf(const Arguments& args) {
   SystemChoice c = SystemChoice::kBelt;
-  const std::string name = args.Text("system", "belt");
+  const std::string name = args.Text("system", args.Given("model") ? "model" : "belt");
+  if (args.Given("model") && name != "model")
+    throw UsageError(args.Source("model") + " and " + args.Source("system") + " " + name +
+                     ": give one of them");
+  if (name == "model" && !args.Given("model"))
+    throw UsageError(args.Source("system") + " model needs --model FILE");
   if (!FromName(name, &c))
     throw UsageError(args.Source("system") + ": unknown system '" + name +
-                     "' (expected belt, chain or mode_coupling)");
+                     "' (expected belt, chain or mode_coupling, or --model FILE)");
   return c;
 }
 
@@ -117,6 +137,8 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
   std::unique_ptr<System> s;
   try {
     s = Build(choice, args, law, restart ? restart->blocks : 2);
+  } catch (const UsageError&) {
+    throw;
   } catch (const InvalidArgument& e) {
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e.what());
   }
@@ -127,7 +149,8 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
   for (const Arguments::Setting& set : Settings(args)) {
     const int j = s->ParameterIndex(set.key);
     if (j < 0)
-      throw UsageError(set.where + ": '" + set.key + "' is no parameter of " + Name(choice) +
+      throw UsageError(set.where + ": '" + set.key + "' is no parameter of " +
+                       (choice == SystemChoice::kModel ? model_file::ModelName(*s) : Name(choice)) +
                        " (its parameters: " + ParameterList(*s) + ")");
     s->SetParameterValue(j, ParseNumber(set.value, set.where + " " + set.key));
   }
@@ -162,7 +185,7 @@ std::string ParameterList(const System& s) {
 
 std::string DescribeSystem(const System& s, SystemChoice choice, int continued, int other,
                            const char* mark) {
-  std::string out = Name(choice);
+  std::string out = choice == SystemChoice::kModel ? model_file::ModelName(s) : Name(choice);
   for (int j = 0; j < s.parameters(); ++j)
     out += (j ? " " : ": ") + s.ParameterName(j) + "=" +
            (j == continued || j == other ? std::string(mark) : FormatNumber(s.ParameterValue(j)));

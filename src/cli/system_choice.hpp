@@ -4,6 +4,7 @@
 // brake model (systems/mode_coupling).
 //   --system NAME        belt (default), chain, mode_coupling
 //   --blocks N           chain: the number of blocks (default 2)
+//   --model FILE         a model file (docs/model_files.md): the system it writes
 //   --set A=1,B=2        any of the system's parameters by its own name
 // A study file's [system] section holds the same `name = value` lines; --set
 // overrides them name by name. The law comes from --law and its coefficients
@@ -22,10 +23,11 @@
 
 namespace stickslip::cli {
 
-enum class SystemChoice { kBelt, kChain, kModeCoupling };
+enum class SystemChoice { kBelt, kChain, kModeCoupling, kModel };
 
 po::options_description SystemOptions();
-// The --system given (kBelt by default); UsageError for an unknown name.
+// The --system given (kBelt by default; kModel with --model FILE);
+// UsageError for an unknown name.
 SystemChoice SystemChoiceOf(const Arguments& args);
 // True for a system other than the belt and the forced oscillator.
 inline bool SystemRequested(const Arguments& args) {
@@ -61,6 +63,7 @@ struct EnumNames<cli::SystemChoice> {
       {cli::SystemChoice::kBelt, "belt"},
       {cli::SystemChoice::kChain, "chain"},
       {cli::SystemChoice::kModeCoupling, "mode_coupling"},
+      {cli::SystemChoice::kModel, "model"},
   };
 };
 }  // namespace stickslip

@@ -1,0 +1,63 @@
+// A model file compiled (symbolic.cpp): per mode, a tape whose outputs are
+// the field, the sticking contacts' stick forces and static limits, and (in
+// the full tape) the Jacobian and the stick forces' gradients; per contact,
+// the linear forms of its velocity and normal force. Immutable once made,
+// shared by every copy of the system.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model_file/tape.hpp"
+
+namespace stickslip::model_file {
+
+struct ModeProgram {
+  bool consistent = true;       ///< false: the sticking set's stick forces are not determined
+  Tape plain;                   ///< outputs: field, then aux (per sticking contact: lambda, limit)
+  Tape full;                    ///< the same outputs, then J (row-major), then d lambda / dz
+  std::vector<int> field, aux;  ///< node indexes in plain
+  std::vector<int> full_field, full_aux;          ///< in full
+  std::vector<int> jacobian;                      ///< n x n, row-major, in full
+  std::vector<std::vector<int>> lambda_gradient;  ///< per sticking contact, n, in full
+};
+
+/// A linear form sum_t w_t z_t - speed, its w_t and speed as nodes of the
+/// contact tape (functions of the parameters alone); -1: w_t is 0.
+struct LinearForm {
+  std::vector<int> weight;
+  int speed = -1;
+};
+
+/// A parameter-only denominator: it may not be 0.
+struct Denominator {
+  int node = 0;  ///< in the contact tape
+  int line = 0;
+  std::string text;
+};
+
+struct Compiled {
+  std::string source, name;
+  int n = 0, k = 0;
+  std::vector<std::string> state_names, parameters;
+  std::vector<double> defaults;
+  std::vector<ModeProgram> modes;  ///< index sum_c mode_c 3^c (Mode's order)
+  /// Parameter-only (and state-linear) quantities: per contact the velocity
+  /// and normal forms, the static coefficient and the normal's constancy.
+  Tape contact;
+  std::vector<LinearForm> velocity, normal;
+  std::vector<bool> normal_varies;
+  std::vector<int> static_coefficient;  ///< nodes in contact
+  std::vector<std::string> contact_names;
+  std::vector<int> static_lines;  ///< the static line, else the law's
+  std::vector<Denominator> denominators;
+};
+
+/// A number for messages: %.12g.
+std::string Number(double x);
+/// Compiles a read spec; throws InvalidArgument "<file>:<line>: <problem>".
+struct ModelSpec;
+std::shared_ptr<const Compiled> Compile(const ModelSpec& spec);
+
+}  // namespace stickslip::model_file

@@ -1,0 +1,46 @@
+// The compiler of a model file (compiled.hpp): symbolic.cpp checks and
+// parses its expressions, symbolic_modes.cpp solves and records each mode.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model_file/compiled.hpp"
+#include "model_file/model_spec.hpp"
+#include "model_file/recorder.hpp"
+
+namespace stickslip::model_file {
+
+class Compiler {
+ public:
+  explicit Compiler(const ModelSpec& spec) : spec_(spec) {}
+  std::shared_ptr<const Compiled> Run();
+
+ private:
+  using ex = GiNaC::ex;
+  void Symbols();
+  void ParseAll();
+  void ParseContact(std::size_t c);
+  ex Parse(const Located& l, bool state, bool forces, bool slip, const std::string& what);
+  void CheckPowers(const Located& l);
+  void CheckSmooth(const ex& e, const Located& l);
+  LinearForm Linear(const ex& e, const Located& l, const std::string& what);
+  void Parameters(const ex& e, const Located& l);
+  void CheckLinearInForces();
+  ex Rate(int t, const GiNaC::exmap& forces) const;  // f_t with the forces substituted
+  void Mode(int index);
+  void Record(ModeProgram& p, const std::vector<ex>& field, const std::vector<ex>& aux,
+              const std::vector<ex>& lambdas);
+
+  const ModelSpec& spec_;
+  std::vector<GiNaC::symbol> state_, params_, forces_;
+  GiNaC::symbol s_{"s"};
+  std::vector<ex> eq_, velocity_, law_, normal_, static_;
+  std::shared_ptr<Compiled> out_ = std::make_shared<Compiled>();
+  std::unique_ptr<Recorder> contact_;
+};
+
+}  // namespace stickslip::model_file

@@ -1,0 +1,44 @@
+// A model file's lines, read and sorted (model_file.hpp gives the grammar;
+// docs/model_files.md): names, parameters with defaults, equations and
+// contacts, each with the line it came from. Expressions are still text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stickslip::model_file {
+
+/// An expression's text and its line (0: not given).
+struct Located {
+  std::string text;
+  int line = 0;
+};
+
+struct ContactSpec {
+  std::string name;  ///< the force's symbol in the equations
+  Located velocity, law, normal, static_limit;
+};
+
+struct ModelSpec {
+  std::string source;  ///< the file, for messages
+  std::string name;    ///< `name = ...`, else the file's stem
+  std::vector<std::string> coordinates;
+  int coordinates_line = 0;
+  std::vector<std::string> parameters;
+  std::vector<double> defaults;
+  std::vector<int> parameter_lines;
+  std::vector<Located> equations;  ///< one per coordinate, in their order
+  std::vector<ContactSpec> contacts;
+};
+
+/// Throws InvalidArgument "<source>:<line>: <problem>".
+[[noreturn]] void Fail(const std::string& source, int line, const std::string& problem);
+/// The lines of a model file, sorted and checked for form (names, numbers,
+/// one equation per coordinate, a law per contact); the expressions are
+/// checked by Compile (symbolic.hpp).
+ModelSpec ReadSpec(const std::string& text, const std::string& source);
+/// x' -> x__dot (the symbols the parser reads), and back for messages.
+std::string MangleRates(const std::string& expression);
+std::string UnmangleRates(const std::string& text);
+
+}  // namespace stickslip::model_file

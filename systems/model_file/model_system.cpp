@@ -1,0 +1,172 @@
+// A model file's system (model_system.hpp).
+#include "model_file/model_system.hpp"
+
+#include <cmath>
+
+#include "model_file/model_file.hpp"
+#include "model_file/model_spec.hpp"
+#include "stickslip/errors.hpp"
+
+namespace stickslip::model_file {
+
+namespace {
+
+int ModeIndex(const ModeSet& m, int k) {
+  int index = 0;
+  for (int c = k - 1; c >= 0; --c) index = 3 * index + static_cast<int>(m[c]);
+  return index;
+}
+
+// The linear form of the contact tape's values.
+ContactVelocity Form(const LinearForm& f, const std::vector<double>& v) {
+  ContactVelocity out;
+  for (std::size_t t = 0; t < f.weight.size(); ++t)
+    if (f.weight[t] >= 0 && out.size < ContactVelocity::kMaxTerms)
+      out.terms[out.size++] = {static_cast<int>(t), v[f.weight[t]]};
+  out.speed = v[f.speed];
+  return out;
+}
+
+}  // namespace
+
+ModelSystem::ModelSystem(std::shared_ptr<const Compiled> c) : c_(std::move(c)), p_(c_->defaults) {
+  Update();
+}
+
+void ModelSystem::Update() {
+  contact_values_.resize(c_->contact.size());
+  const std::vector<double> zero(c_->n, 0.0);
+  c_->contact.Values(zero.data(), p_.data(), contact_values_.data());
+  velocity_.clear(), normal_.clear(), static_.clear();
+  for (int i = 0; i < c_->k; ++i) {
+    velocity_.push_back(Form(c_->velocity[i], contact_values_));
+    normal_.push_back(Form(c_->normal[i], contact_values_));
+    static_.push_back(contact_values_[c_->static_coefficient[i]]);
+  }
+}
+
+bool ModelSystem::Assign(const System& s) {
+  const auto* o = dynamic_cast<const ModelSystem*>(&s);
+  if (!o || o->c_ != c_) return false;
+  p_ = o->p_, velocity_ = o->velocity_, normal_ = o->normal_, static_ = o->static_;
+  contact_values_ = o->contact_values_;
+  return true;
+}
+
+std::string ModelSystem::ValidationError() const {
+  for (int j = 0; j < parameters(); ++j)
+    if (!std::isfinite(p_[j])) return c_->parameters[j] + " must be finite";
+  for (const Denominator& d : c_->denominators)
+    if (!(contact_values_[d.node] != 0) || !std::isfinite(contact_values_[d.node]))
+      return UnmangleRates(d.text) + " = " + Number(contact_values_[d.node]) + " divides (" +
+             c_->source + ":" + std::to_string(d.line) + ")";
+  for (int i = 0; i < c_->k; ++i)
+    if (!(static_[i] > 0) || !std::isfinite(static_[i]))
+      return "the static coefficient of contact " + c_->contact_names[i] + " is " +
+             Number(static_[i]) + " (" + c_->source + ":" + std::to_string(c_->static_lines[i]) +
+             "): it must be > 0";
+  return "";
+}
+
+void ModelSystem::SetParameterValue(int j, double value) {
+  p_[j] = value;
+  Update();
+}
+
+std::optional<ContactVelocity> ModelSystem::NormalForce(int i) const {
+  if (!c_->normal_varies[i]) return std::nullopt;
+  return normal_[i];
+}
+
+double ModelSystem::StaticLimit(int i, ConstState z) const {
+  return static_[i] * normal_[i].At(z.data());
+}
+
+void ModelSystem::StaticLimitGradient(int i, ConstState, StateOut g) const {
+  g.setZero();
+  for (int t = 0; t < normal_[i].size; ++t)
+    g[normal_[i].terms[t].index] = static_[i] * normal_[i].terms[t].weight;
+}
+
+const ModeProgram& ModelSystem::Program(const ModeSet& m) const {
+  const ModeProgram& p = c_->modes[ModeIndex(m, c_->k)];
+  if (!p.consistent)
+    throw InvalidArgument(c_->source + ": mode " + ModeSetName(m, c_->k) +
+                          ": the sticking contacts' forces are not determined (a singular set)");
+  return p;
+}
+
+void ModelSystem::Values(const Tape& t, ConstState z, std::vector<double>& out) const {
+  out.resize(t.size());
+  t.Values(z.data(), p_.data(), out.data());
+}
+
+void ModelSystem::Field(const ModeSet& m, ConstState z, StateOut f) const {
+  const ModeProgram& p = Program(m);
+  thread_local std::vector<double> v;
+  Values(p.plain, z, v);
+  for (int t = 0; t < c_->n; ++t) f[t] = v[p.field[t]];
+}
+
+void ModelSystem::Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const {
+  const ModeProgram& p = Program(m);
+  thread_local std::vector<double> v;
+  Values(p.full, z, v);
+  for (int r = 0; r < c_->n; ++r)
+    for (int u = 0; u < c_->n; ++u) J(r, u) = v[p.jacobian[r * c_->n + u]];
+}
+
+// Contact i's place among the sticking contacts of m.
+static int StickSlot(const ModeSet& m, int i) {
+  int q = 0;
+  for (int c = 0; c < i; ++c) q += m.sticks(c);
+  return q;
+}
+
+double ModelSystem::StickForce(const ModeSet& m, int i, ConstState z) const {
+  const ModeProgram& p = Program(m);
+  thread_local std::vector<double> v;
+  Values(p.plain, z, v);
+  return v[p.aux[2 * StickSlot(m, i)]];
+}
+
+void ModelSystem::StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const {
+  const ModeProgram& p = Program(m);
+  thread_local std::vector<double> v;
+  Values(p.full, z, v);
+  const std::vector<int>& grad = p.lambda_gradient[StickSlot(m, i)];
+  for (int u = 0; u < c_->n; ++u) g[u] = v[grad[u]];
+}
+
+bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
+  if (m.AnySticks()) return false;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(c_->n), f(c_->n);
+  Eigen::MatrixXd J(c_->n, c_->n);
+  for (int it = 0; it < 50; ++it) {  // Newton on f(x) = 0
+    Field(m, x, f);
+    Jacobian(m, x, J);
+    const Eigen::VectorXd dx = J.fullPivLu().solve(-f);
+    if (!dx.allFinite()) return false;
+    x += dx;
+    if (dx.lpNorm<Eigen::Infinity>() <= 1e-14 * (1 + x.lpNorm<Eigen::Infinity>())) break;
+  }
+  Field(m, x, f);
+  if (!x.allFinite() || f.lpNorm<Eigen::Infinity>() > 1e-10 * (1 + x.lpNorm<Eigen::Infinity>()))
+    return false;
+  for (int c = 0; c < c_->k; ++c) {  // on the mode's side of every contact
+    const double h = velocity_[c].At(x.data());
+    if ((m[c] == Mode::kSlipBelow && !(h < 0)) || (m[c] == Mode::kSlipAbove && !(h > 0)))
+      return false;
+  }
+  Jacobian(m, x, J);
+  *stable = J.eigenvalues().real().maxCoeff() < 0;
+  z = x;
+  return true;
+}
+
+std::string ModelName(const System& s) {
+  const auto* m = dynamic_cast<const ModelSystem*>(&s);
+  return m ? m->compiled().name : std::string();
+}
+
+}  // namespace stickslip::model_file

@@ -1,0 +1,170 @@
+// A model file's expressions, checked, solved per mode and recorded
+// (compiled.hpp; docs/model_files.md). GiNaC parses and differentiates. In a
+// mode the sign of each slip speed is fixed, so each law is smooth there; a
+// sticking contact's force is the one that keeps its velocity at 0,
+// h_c' = sum_t dh_c/dz_t f_t = 0 (Filippov's sliding motion), solved
+// symbolically for the sticking set (GiNaC's lsolve).
+#include <ginac/ginac.h>
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "model_file/compiler.hpp"
+
+namespace stickslip::model_file {
+
+using GiNaC::ex;
+
+ex Compiler::Parse(const Located& l, bool state, bool forces, bool slip, const std::string& what) {
+  GiNaC::symtab table;
+  if (state)
+    for (const GiNaC::symbol& z : state_) table[z.get_name()] = z;
+  if (forces)
+    for (const GiNaC::symbol& f : forces_) table[f.get_name()] = f;
+  for (const GiNaC::symbol& p : params_) table[p.get_name()] = p;
+  if (slip) table["s"] = s_;
+  GiNaC::parser reader(table, true);
+  CheckPowers(l);
+  ex e;
+  try {
+    e = reader(MangleRates(l.text));
+  } catch (const std::exception& x) {
+    std::string m = x.what();  // "GiNaC: parse error at line 0, column 0: ..."
+    const auto at = m.find(": ", m.find("column"));
+    if (m.rfind("GiNaC: parse error", 0) == 0 && at != std::string::npos)
+      m = "parse error: " + m.substr(at + 2);
+    const auto q = m.find("symbol \"");
+    if (q != std::string::npos && m.find("not found") != std::string::npos)
+      m = "unknown name " + m.substr(q + 7, m.find('"', q + 8) - q - 6) +
+          " (not a coordinate, a rate x', a parameter" + (forces ? ", a contact force" : "") +
+          (slip ? " or the slip speed s" : "") + ")";
+    Fail(spec_.source, l.line, what + " = '" + l.text + "': " + m);
+  }
+  CheckSmooth(e, l);
+  Parameters(e, l);
+  return e;
+}
+
+// GiNaC evaluates a number's power exactly when it parses it: 9^(9^9) would
+// take hours. Exponents are a number up to kMaxExponent, or an expression
+// without a power of its own.
+void Compiler::CheckPowers(const Located& l) {
+  constexpr double kMaxExponent = 1000;
+  const std::string& t = l.text;
+  for (std::size_t at = t.find('^'); at != std::string::npos; at = t.find('^', at + 1)) {
+    std::size_t i = t.find_first_not_of(' ', at + 1);
+    if (i == std::string::npos) break;
+    if (t[i] == '(') {
+      int depth = 0;
+      std::size_t j = i;
+      for (; j < t.size(); ++j) {
+        depth += t[j] == '(' ? 1 : t[j] == ')' ? -1 : 0;
+        if (depth == 0) break;
+      }
+      if (t.substr(i, j - i).find('^') != std::string::npos)
+        Fail(spec_.source, l.line, "'" + t + "': a power in an exponent is refused");
+      continue;
+    }
+    if (t[i] == '-' || t[i] == '+') ++i;
+    char* end = nullptr;
+    const double x = std::strtod(t.c_str() + i, &end);
+    if (end != t.c_str() + i && !(std::abs(x) <= kMaxExponent))
+      Fail(spec_.source, l.line,
+           "'" + t + "': the exponent " +
+               t.substr(i, static_cast<std::size_t>(end - t.c_str()) - i) + " is above 1000");
+  }
+}
+
+void Compiler::CheckSmooth(const ex& e, const Located& l) {
+  static const std::set<std::string> smooth = {"exp", "log", "sin", "cos", "sinh", "cosh", "tanh"};
+  static const std::set<std::string> kinks = {"abs", "csgn", "step", "Heaviside", "sign"};
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_real())
+      Fail(spec_.source, l.line, "'" + l.text + "' has a complex number");
+    if (!GiNaC::is_a<GiNaC::function>(*it)) continue;
+    const std::string f = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+    if (kinks.count(f))
+      Fail(spec_.source, l.line,
+           f + " is not smooth: write each mode's smooth expression (a law for s >= 0; "
+               "the sign of the slip is the mode's)");
+    if (!smooth.count(f))
+      Fail(spec_.source, l.line,
+           "the function " + f +
+               " is not supported (exp, log, sin, cos, sinh, cosh, tanh, sqrt "
+               "and powers are)");
+  }
+}
+
+// Every parameter-only denominator is recorded: it may not be 0.
+void Compiler::Parameters(const ex& e, const Located& l) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!GiNaC::is_a<GiNaC::power>(*it)) continue;
+    const ex base = it->op(0), expo = it->op(1);
+    bool state = false;
+    for (const GiNaC::symbol& z : state_) state = state || base.has(z);
+    for (const GiNaC::symbol& f : forces_) state = state || base.has(f);
+    state = state || base.has(s_);
+    if (state || GiNaC::is_a<GiNaC::numeric>(base) || !GiNaC::is_a<GiNaC::numeric>(expo) ||
+        !GiNaC::ex_to<GiNaC::numeric>(expo).is_negative())
+      continue;
+    std::ostringstream text;
+    text << base;
+    out_->denominators.push_back({contact_->Node(base), l.line, text.str()});
+  }
+}
+
+LinearForm Compiler::Linear(const ex& e, const Located& l, const std::string& what) {
+  LinearForm form;
+  int terms = 0;
+  GiNaC::exmap zero;
+  for (const GiNaC::symbol& z : state_) zero[z] = 0;
+  for (const GiNaC::symbol& z : state_) {
+    const ex d = e.diff(z);
+    for (const GiNaC::symbol& u : state_)
+      if (d.has(u))
+        Fail(spec_.source, l.line,
+             what + " '" + l.text + "' is not linear in the state (its derivative in " +
+                 z.get_name() + " depends on " + u.get_name() + ")");
+    form.weight.push_back(d.is_zero() ? -1 : contact_->Node(d));
+    terms += !d.is_zero();
+  }
+  if (terms > 4)
+    Fail(spec_.source, l.line, what + " '" + l.text + "' reads more than 4 state components");
+  form.speed = contact_->Node(-e.subs(zero));
+  return form;
+}
+
+void Compiler::CheckLinearInForces() {
+  for (std::size_t c = 0; c < forces_.size(); ++c) {
+    bool used = false;
+    for (std::size_t i = 0; i < eq_.size(); ++i) {
+      const ex e = eq_[i].expand();
+      const ex c1 = e.coeff(forces_[c], 1), c0 = e.coeff(forces_[c], 0);
+      if (c1.has(forces_[c]) || c0.has(forces_[c]) || e.degree(forces_[c]) > 1)
+        Fail(spec_.source, spec_.equations[i].line,
+             "the force " + spec_.contacts[c].name + " enters " + spec_.coordinates[i] +
+                 "'' = ... nonlinearly (it must be a sum of terms coefficient * " +
+                 spec_.contacts[c].name + ")");
+      used = used || !c1.is_zero();
+    }
+    if (!used)
+      Fail(spec_.source, spec_.contacts[c].velocity.line,
+           "the force " + spec_.contacts[c].name + " appears in no equation");
+    // It must act on its own contact: h_c' has it with a nonzero coefficient.
+    GiNaC::exmap none;
+    ex h_rate = 0;
+    for (std::size_t t = 0; t < state_.size(); ++t)
+      h_rate += velocity_[c].diff(state_[t]) * Rate(t, none);
+    if (GiNaC::normal(h_rate.expand().coeff(forces_[c], 1)).is_zero())
+      Fail(spec_.source, spec_.contacts[c].velocity.line,
+           "the force " + spec_.contacts[c].name + " does not act on its own velocity '" +
+               spec_.contacts[c].velocity.text + "' (it cannot hold it at 0 in stick)");
+  }
+}
+
+ex Compiler::Rate(int t, const GiNaC::exmap& forces) const {
+  return t % 2 == 0 ? ex(state_[t + 1]) : eq_[t / 2].subs(forces);
+}
+
+}  // namespace stickslip::model_file

@@ -1,0 +1,170 @@
+// A model file's modes, solved and recorded (compiler.hpp): in each, the
+// slipping contacts' forces sigma N mu(s) with s = -sigma h (sigma = +1
+// below the surface, -1 above), the sticking ones' from h' = 0.
+#include <ginac/ginac.h>
+
+#include <cmath>
+
+#include "model_file/compiler.hpp"
+#include "stickslip/system/mode.hpp"
+
+namespace stickslip::model_file {
+
+using GiNaC::ex;
+
+namespace {
+constexpr std::size_t kMaxModelContacts = 4;  // 3^4 modes, each solved and recorded when read
+}  // namespace
+
+void Compiler::Symbols() {
+  out_->source = spec_.source, out_->name = spec_.name;
+  out_->n = 2 * static_cast<int>(spec_.coordinates.size());
+  out_->k = static_cast<int>(spec_.contacts.size());
+  for (const std::string& x : spec_.coordinates) {
+    state_.emplace_back(x);
+    state_.emplace_back(MangleRates(x + "'"));
+    out_->state_names.insert(out_->state_names.end(), {x, x + "'"});
+  }
+  for (const std::string& p : spec_.parameters) params_.emplace_back(p);
+  for (const ContactSpec& c : spec_.contacts) forces_.emplace_back(c.name);
+  out_->parameters = spec_.parameters;
+  out_->defaults = spec_.defaults;
+}
+
+void Compiler::ParseContact(std::size_t c) {
+  const ContactSpec& spec = spec_.contacts[c];
+  velocity_.push_back(Parse(spec.velocity, true, false, false, "contact " + spec.name));
+  out_->velocity.push_back(Linear(velocity_[c], spec.velocity, "contact " + spec.name));
+  bool moves = false;
+  for (int w : out_->velocity.back().weight) moves = moves || w >= 0;
+  if (!moves)
+    Fail(spec_.source, spec.velocity.line,
+         "contact " + spec.name + " = '" + spec.velocity.text +
+             "' depends on no state component (a relative velocity such as x' - v)");
+  law_.push_back(Parse(spec.law, false, false, true, "law " + spec.name));
+  normal_.push_back(spec.normal.line ? Parse(spec.normal, true, false, false, "normal " + spec.name)
+                                     : ex(1));
+  out_->normal.push_back(Linear(normal_[c], spec.normal, "normal " + spec.name));
+  bool varies = false;
+  for (int w : out_->normal.back().weight) varies = varies || w >= 0;
+  out_->normal_varies.push_back(varies);
+  if (spec.static_limit.line) {
+    static_.push_back(Parse(spec.static_limit, false, false, false, "static " + spec.name));
+  } else {
+    try {
+      static_.push_back(law_[c].subs(s_ == 0));
+    } catch (const std::exception&) {
+      Fail(spec_.source, spec.law.line,
+           "law " + spec.name + " has no value at s = 0: give 'static " + spec.name + " = ...'");
+    }
+  }
+  out_->static_coefficient.push_back(contact_->Node(static_[c]));
+  out_->contact_names.push_back(spec.name);
+  out_->static_lines.push_back(spec.static_limit.line ? spec.static_limit.line : spec.law.line);
+}
+
+void Compiler::ParseAll() {
+  for (std::size_t i = 0; i < spec_.equations.size(); ++i)
+    eq_.push_back(Parse(spec_.equations[i], true, true, false, spec_.coordinates[i] + "''"));
+  for (std::size_t c = 0; c < spec_.contacts.size(); ++c) ParseContact(c);
+}
+
+std::shared_ptr<const Compiled> Compiler::Run() {
+  if (spec_.contacts.size() > kMaxModelContacts)
+    Fail(spec_.source, spec_.contacts[kMaxModelContacts].velocity.line,
+         "more than " + std::to_string(kMaxModelContacts) +
+             " contacts: a model file's 3^k modes are solved when it is read (docs/limits.md)");
+  Symbols();
+  contact_ = std::make_unique<Recorder>(&out_->contact, state_, params_);
+  try {
+    ParseAll();
+    CheckLinearInForces();
+    std::vector<double> values(out_->contact.size()), z(state_.size(), 0.0);
+    out_->contact.Values(z.data(), out_->defaults.data(), values.data());
+    for (const Denominator& d : out_->denominators)
+      if (!(values[d.node] != 0) || !std::isfinite(values[d.node]))
+        Fail(spec_.source, d.line,
+             "divides by " + d.text + " = " + Number(values[d.node]) +
+                 " at the parameters' values given");
+    int modes = 1;
+    for (int c = 0; c < out_->k; ++c) modes *= 3;
+    out_->modes.resize(modes);
+    for (int m = 0; m < modes; ++m) Mode(m);
+  } catch (const std::invalid_argument& e) {  // the recorder's refusal
+    Fail(spec_.source, 0, std::string("cannot record ") + e.what());
+  }
+  return out_;
+}
+
+void Compiler::Mode(int index) {
+  ModeProgram& p = out_->modes[index];
+  std::vector<stickslip::Mode> mode(out_->k);
+  for (int c = 0, r = index; c < out_->k; ++c, r /= 3)
+    mode[c] = static_cast<stickslip::Mode>(r % 3);
+  GiNaC::exmap forces;
+  GiNaC::lst unknowns, conditions;
+  for (int c = 0; c < out_->k; ++c) {
+    if (mode[c] == stickslip::Mode::kStick) {
+      unknowns.append(forces_[c]);
+      continue;
+    }
+    const int sigma = mode[c] == stickslip::Mode::kSlipBelow ? 1 : -1;
+    forces[forces_[c]] = sigma * normal_[c] * law_[c].subs(s_ == -sigma * velocity_[c]);
+  }
+  for (int c = 0; c < out_->k; ++c) {
+    if (mode[c] != stickslip::Mode::kStick) continue;
+    ex rate = 0;  // h_c' = sum_t dh_c/dz_t f_t
+    for (std::size_t t = 0; t < state_.size(); ++t)
+      rate += velocity_[c].diff(state_[t]) * Rate(static_cast<int>(t), forces);
+    conditions.append(rate == 0);
+  }
+  std::vector<ex> lambdas;
+  if (unknowns.nops()) {
+    ex sol;
+    try {
+      sol = GiNaC::lsolve(conditions, unknowns);
+    } catch (const std::exception&) {
+      p.consistent = false;
+      return;
+    }
+    if (sol.nops() != unknowns.nops()) {  // singular: the stick forces are not determined
+      p.consistent = false;
+      return;
+    }
+    for (std::size_t j = 0; j < sol.nops(); ++j) {
+      forces[unknowns.op(j)] = sol.op(j).rhs();
+      lambdas.push_back(sol.op(j).rhs());
+    }
+  }
+  std::vector<ex> field, aux;
+  for (std::size_t t = 0; t < state_.size(); ++t)
+    field.push_back(Rate(static_cast<int>(t), forces));
+  for (int c = 0, q = 0; c < out_->k; ++c)
+    if (mode[c] == stickslip::Mode::kStick)
+      aux.insert(aux.end(), {lambdas[q++], static_[c] * normal_[c]});
+  Record(p, field, aux, lambdas);
+}
+
+void Compiler::Record(ModeProgram& p, const std::vector<ex>& field, const std::vector<ex>& aux,
+                      const std::vector<ex>& lambdas) {
+  Recorder plain(&p.plain, state_, params_), full(&p.full, state_, params_);
+  for (const ex& f : field) p.field.push_back(plain.Node(f)), p.full_field.push_back(full.Node(f));
+  for (const ex& a : aux) p.aux.push_back(plain.Node(a)), p.full_aux.push_back(full.Node(a));
+  for (const ex& f : field)
+    for (const GiNaC::symbol& z : state_) p.jacobian.push_back(full.Node(f.diff(z)));
+  for (const ex& l : lambdas) {
+    std::vector<int> g;
+    for (const GiNaC::symbol& z : state_) g.push_back(full.Node(l.diff(z)));
+    p.lambda_gradient.push_back(g);
+  }
+  p.plain.Seal();
+  p.full.Seal();
+}
+
+}  // namespace stickslip::model_file
+
+namespace stickslip::model_file {
+
+std::shared_ptr<const Compiled> Compile(const ModelSpec& spec) { return Compiler(spec).Run(); }
+
+}  // namespace stickslip::model_file

@@ -1,0 +1,157 @@
+// Model files in the apps (--model FILE; docs/model_files.md): the belt and
+// the brake written as files give the built-in systems' branches row for
+// row, and every refusal of a bad file is exit 2 with one line naming the
+// file, its line and the problem, and nothing written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app_test_util.hpp"
+
+namespace {
+
+namespace tu = stickslip::testing_util;
+
+class ModelFileApp : public tu::AppTest {
+ protected:
+  // Both runs' tables: the same rows, every number within tol relative (the
+  // Floquet multipliers within mult_tol), text equal.
+  void ExpectSameTables(const std::string& a, const std::string& b, const std::string& file,
+                        double tol, double mult_tol) {
+    const tu::Tsv x = tu::ReadTsv(tu::ReadFile(a + "/out/" + file));
+    const tu::Tsv y = tu::ReadTsv(tu::ReadFile(b + "/out/" + file));
+    ASSERT_EQ(x.rows.size(), y.rows.size()) << file;
+    ASSERT_GT(x.rows.size(), 1u) << file;
+    double worst = 0, worst_mult = 0;
+    for (std::size_t i = 0; i < x.rows.size(); ++i)
+      for (std::size_t c = 0; c < x.rows[i].size(); ++c) {
+        char* end = nullptr;
+        const double u = std::strtod(x.rows[i][c].c_str(), &end);
+        if (*end != '\0' || x.rows[i][c].empty()) {
+          EXPECT_EQ(x.rows[i][c], y.rows[i][c]) << file << " row " << i << " " << x.columns[c];
+          continue;
+        }
+        const double w = std::stod(y.rows[i][c]);
+        if (std::isnan(u) && std::isnan(w)) continue;
+        double& to = x.columns[c].rfind("mult", 0) == 0 ? worst_mult : worst;
+        const double d = std::abs(u - w) / (1 + std::abs(w));
+        EXPECT_LE(d, 1e-6) << file << " row " << i << " " << x.columns[c] << ": " << x.rows[i][c]
+                           << " vs " << y.rows[i][c];
+        to = std::max(to, d);
+      }
+    EXPECT_LE(worst, tol) << file;
+    EXPECT_LE(worst_mult, mult_tol) << file;
+  }
+  // A model file of `text` in the test's directory; ss_simulate refuses it.
+  void ExpectRefused(const std::string& text, const std::vector<std::string>& parts) {
+    const std::string dir = NewDir(), file = dir + "/bad.ini";
+    tu::WriteFile(file, text);
+    const auto r = RunOut("ss_simulate", dir, {"--model", file});
+    EXPECT_EQ(r.outcome.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const std::string& p : parts) EXPECT_TRUE(tu::Contains(r.err, p)) << p << ": " << r.err;
+    EXPECT_FALSE(tu::Exists(dir + "/out")) << r.err;
+  }
+};
+
+const std::string kModels = STICKSLIP_SOURCE_DIR "/studies/models/";
+
+TEST_F(ModelFileApp, TheBeltFileGivesTheBuiltInBranch) {
+  const std::string a = NewDir(), b = NewDir();
+  const auto file =
+      RunOut("ss_continue", a,
+             {"--model", kModels + "belt.ini", "--param", "v", "--from", "0.05", "--to", "0.5"});
+  const auto built = RunOut("ss_continue", b,
+                            {"--system", "chain", "--blocks", "1", "--set", "kc=0", "--param", "v",
+                             "--from", "0.05", "--to", "0.5"});
+  EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
+  EXPECT_TRUE(tu::Contains(file.out, "HB at 0.4409585518")) << file.out;
+  EXPECT_TRUE(tu::Contains(file.out, "GR at 0.3957902887")) << file.out;
+  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-12);  // 3.3e-16 measured
+  ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-12);
+}
+
+// studies/brake.ini's run (flutter at mu_k 0.515, a fold, contact loss)
+// with the brake written as a model file, normal force 1 - gamma y.
+TEST_F(ModelFileApp, TheBrakeFileGivesTheBuiltInBranch) {
+  const std::string a = NewDir(), b = NewDir();
+  const auto file = RunOut("ss_continue", a,
+                           {"--model", kModels + "mode_coupling.ini", "--mu_s", "0.8", "--rtol",
+                            "1e-12", "--atol", "1e-12", "--param", "mu_k", "--from", "0.3", "--to",
+                            "0.7", "--start_at", "0.52", "--max_step", "0.05"});
+  const auto built =
+      RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/brake.ini"});
+  EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
+  EXPECT_TRUE(tu::Contains(file.out, "CL at")) << file.out;
+  // Measured: states 5e-13; multipliers 3.2e-12 where a complex pair meets on
+  // the real axis (rows 24-26: a perturbation e of M moves them by sqrt(e)).
+  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-11);
+  ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-11);
+}
+
+// studies/chain2.ini's run (two coupled seed blocks, two contacts: 9 modes)
+// with the chain written as a model file.
+TEST_F(ModelFileApp, TheChainFileGivesTheBuiltInBranch) {
+  const std::string a = NewDir(), b = NewDir();
+  const auto file = RunOut("ss_continue", a,
+                           {"--model", kModels + "chain2.ini", "--param", "v", "--from", "0.05",
+                            "--to", "0.5", "--start_at", "0.3"});
+  const auto built =
+      RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2.ini"});
+  EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
+  // Measured: states 7.7e-15 (246 rows); the multipliers 1.3e-8 on the last
+  // rows before the grazing point, where the return map's derivative grows
+  // without bound (the stick time vanishes like a square root): there a
+  // rounding of 1e-16 in the orbit moves them that much, in either code.
+  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-7);
+  ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-7);
+}
+
+TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
+  const std::string head = "coordinates = x\nparameter v = 0.25\nparameter mu = 0.4\n";
+  const std::string law = "contact F = x' - v\nlaw F = mu\n";
+  ExpectRefused(head + "x'' = -x + F + q\n" + law, {"bad.ini:4", "q"});
+  ExpectRefused("coordinates = x, y\nparameter v = 0.25\nx'' = -x + F\n" + law,
+                {"bad.ini:1", "no equation y''", "2 coordinates, 1 equations"});
+  ExpectRefused(head + "x'' = -x + F\nx'' = F\n" + law, {"bad.ini:5", "a second equation"});
+  ExpectRefused(head + "x'' = -x + F\ncontact F = v\nlaw F = mu\n",
+                {"bad.ini:5", "depends on no state component"});
+  ExpectRefused(head + "x'' = -x + F\ncontact F = x'*x' - v\nlaw F = mu\n",
+                {"bad.ini:5", "not linear in the state"});
+  ExpectRefused(
+      head + "parameter vs = 0\nx'' = -x + F\ncontact F = x' - v\nlaw F = mu/(1 + s/vs)\n",
+      {"bad.ini:7", "divides by vs"});
+  ExpectRefused(head + "x'' = -x + F\ncontact F = x' - v\nlaw F = mu*abs(s)\n",
+                {"bad.ini:6", "abs is not smooth"});
+  ExpectRefused(head + "x'' = -x + F^2\n" + law, {"bad.ini:4", "nonlinearly"});
+  ExpectRefused(
+      "coordinates = x, y\nparameter v = 0.25\nparameter mu = 0.4\nx'' = -x\n"
+      "y'' = -y + F\n" +
+          law,
+      {"bad.ini:6", "does not act on its own velocity"});
+  ExpectRefused(head + "x'' = -x + F\ncontact F = x' - v\n", {"bad.ini:5", "has no law"});
+  ExpectRefused(head + "x'' = -x + F\n" + law + "friction = 3\n",
+                {"bad.ini:7", "unknown key 'friction'"});
+  ExpectRefused(head + "parameter v = 1\n", {"bad.ini:4", "the name 'v' is used twice"});
+  ExpectRefused(head + "x'' = -x + F\n" + law + "static F = -1\n", {"static coefficient"});
+  ExpectRefused(head + "x'' = -x + F + 9^(9^9)\n" + law, {"bad.ini:4", "a power in an exponent"});
+  ExpectRefused(head + "x'' = -x + F + 2^5000\n" + law, {"bad.ini:4", "is above 1000"});
+  // The options around the file.
+  const std::string dir = NewDir();
+  auto r = RunOut("ss_simulate", dir, {"--model", dir + "/none.ini"});
+  EXPECT_EQ(r.outcome.code, 2);
+  EXPECT_TRUE(tu::Contains(r.err, "none.ini: cannot read the model file")) << r.err;
+  r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--system", "chain"});
+  EXPECT_TRUE(tu::Contains(r.err, "give one of them")) << r.err;
+  r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--law", "coulomb"});
+  EXPECT_TRUE(tu::Contains(r.err, "has its own laws")) << r.err;
+  r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--set", "vv=1"});
+  EXPECT_TRUE(tu::Contains(r.err, "'vv' is no parameter of belt")) << r.err;
+  EXPECT_FALSE(tu::Exists(dir + "/out"));
+}
+
+}  // namespace
