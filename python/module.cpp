@@ -188,6 +188,7 @@ PYBIND11_MODULE(_core, m) {
   BindBatch(m);
   BindOrbitBranch(m);
   BindSystems(m);
+  BindModel(m);
   BindSystemRuns(m);
   BindSystemBranch(m);
   BindAttractors(m);

@@ -143,12 +143,15 @@ void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, 
 void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
 void BindAttractors(py::module_& m);    // py_attractors.cpp: basins(system), attractor_basins
 void BindSystemChart(py::module_& m);  // py_system_chart.cpp: chart(system, ...) (after BindCharts)
+void BindModel(py::module_& m);        // py_model.cpp: System (a model file's system, issue 33)
 
 // The System a Python parameter object stands for (Params, ForcedParams,
-// ChainParams, CouplingParams); InvalidArgument for anything else.
+// ChainParams, CouplingParams, System); InvalidArgument for anything else.
 std::unique_ptr<System> SystemOf(const py::object& system);
 // The several-mass systems (py_systems.cpp): nullptr for another object.
 std::unique_ptr<System> SeveralMassSystemOf(const py::object& system);
+/// A stickslip.System's (py_model.cpp), else nullptr.
+std::unique_ptr<System> ModelSystemOf(const py::object& system);
 // The Poincare section named `name` ('stroboscopic', 'stick-exit',
 // 'xdot-falling') through z, closing after m returns (py_orbit_branch.cpp);
 // a stick exit is that of `contact`.

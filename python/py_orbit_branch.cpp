@@ -34,11 +34,12 @@ struct PyOrbitBranch {
 
 std::unique_ptr<System> SystemOf(const py::object& system) {
   if (auto several = SeveralMassSystemOf(system)) return several;  // py_systems.cpp
+  if (auto own = ModelSystemOf(system)) return own;                // py_model.cpp
   if (py::isinstance<ForcedParams>(system))
     return std::make_unique<ForcedModel>(system.cast<ForcedParams>());
   if (py::isinstance<Params>(system)) return std::make_unique<Model>(system.cast<Params>());
   throw InvalidArgument("system: " + py::repr(system).cast<std::string>() +
-                        " is neither Params, ForcedParams, ChainParams nor CouplingParams");
+                        " is neither Params, ForcedParams, ChainParams, CouplingParams nor System");
 }
 
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
