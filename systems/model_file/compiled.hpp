@@ -18,8 +18,8 @@ struct ModeProgram {
   Tape plain;                   ///< outputs: field, then aux (per sticking contact: lambda, limit)
   Tape full;                    ///< the same outputs, then J (row-major), then d lambda / dz
   std::vector<int> field, aux;  ///< node indexes in plain
-  std::vector<int> full_field, full_aux;          ///< in full
-  std::vector<int> jacobian;                      ///< n x n, row-major, in full
+  std::vector<int> full_field, full_aux;  ///< in full
+  std::vector<int> jacobian;  ///< tangent x tangent (the clock left out), row-major, in full
   std::vector<std::vector<int>> lambda_gradient;  ///< per sticking contact, n, in full
 };
 
@@ -39,7 +39,7 @@ struct Denominator {
 
 struct Compiled {
   std::string source, name;
-  int n = 0, k = 0;
+  int n = 0, k = 0, clocks = 0;  ///< the clock, if any, is the last state component
   std::vector<std::string> state_names, parameters;
   std::vector<double> defaults;
   std::vector<ModeProgram> modes;  ///< index sum_c mode_c 3^c (Mode's order)

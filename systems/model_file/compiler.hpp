@@ -39,6 +39,7 @@ class Compiler {
   std::vector<GiNaC::symbol> state_, params_, forces_;
   GiNaC::symbol s_{"s"};
   std::vector<ex> eq_, velocity_, law_, normal_, static_;
+  ex clock_rate_;  // the clock's frequency (parameters only)
   std::shared_ptr<Compiled> out_ = std::make_shared<Compiled>();
   std::unique_ptr<Recorder> contact_;
 };

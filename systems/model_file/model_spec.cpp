@@ -126,6 +126,12 @@ void Reader::Line(const std::string& raw, int line) {
     spec_.name = value;
   } else if (key == "coordinates") {
     Coordinates(value, line);
+  } else if (words[0] == "clock") {
+    if (words.size() != 2) Fail(spec_.source, line, "expected: clock NAME = RATE");
+    if (!spec_.clock.empty()) Fail(spec_.source, line, "a second clock (one forcing phase only)");
+    Name(words[1], line);
+    spec_.clock = words[1];
+    spec_.clock_rate = {value, line};
   } else if (words[0] == "parameter") {
     Parameter(words, value, line);
   } else if (words[0] == "contact" || words[0] == "law" || words[0] == "normal" ||
@@ -134,8 +140,8 @@ void Reader::Line(const std::string& raw, int line) {
   } else {
     Fail(spec_.source, line,
          "unknown key '" + key +
-             "' (expected name, coordinates, parameter P, X'', contact F, law F, normal F or "
-             "static F)");
+             "' (expected name, coordinates, parameter P, X'', contact F, law F, normal F, "
+             "static F or clock T)");
   }
 }
 

@@ -29,6 +29,8 @@ struct ModelSpec {
   std::vector<int> parameter_lines;
   std::vector<Located> equations;  ///< one per coordinate, in their order
   std::vector<ContactSpec> contacts;
+  std::string clock;  ///< `clock theta = omega`: a phase state theta' = omega (empty: none)
+  Located clock_rate;
 };
 
 /// Throws InvalidArgument "<source>:<line>: <problem>".

@@ -112,8 +112,9 @@ void ModelSystem::Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const {
   const ModeProgram& p = Program(m);
   thread_local std::vector<double> v;
   Values(p.full, z, v);
-  for (int r = 0; r < c_->n; ++r)
-    for (int u = 0; u < c_->n; ++u) J(r, u) = v[p.jacobian[r * c_->n + u]];
+  const int nt = tangent_dimension();
+  for (int r = 0; r < nt; ++r)
+    for (int u = 0; u < nt; ++u) J(r, u) = v[p.jacobian[r * nt + u]];
 }
 
 // Contact i's place among the sticking contacts of m.
@@ -139,7 +140,7 @@ void ModelSystem::StickForceGradient(const ModeSet& m, int i, ConstState z, Stat
 }
 
 bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
-  if (m.AnySticks()) return false;
+  if (m.AnySticks() || c_->clocks) return false;  // a forcing has no rest point
   Eigen::VectorXd x = Eigen::VectorXd::Zero(c_->n), f(c_->n);
   Eigen::MatrixXd J(c_->n, c_->n);
   for (int it = 0; it < 50; ++it) {  // Newton on f(x) = 0

@@ -27,8 +27,11 @@ class ModelSystem final : public System {
 
   int dimension() const override { return c_->n; }
   int contacts() const override { return c_->k; }
+  int clocks() const override { return c_->clocks; }
   std::string StateName(int i) const override { return c_->state_names[i]; }
-  int DerivativeOf(int i) const override { return i % 2 == 0 ? i + 1 : -1; }
+  int DerivativeOf(int i) const override {
+    return i % 2 == 0 && i < tangent_dimension() ? i + 1 : -1;
+  }
 
   ContactVelocity Contact(int i) const override { return velocity_[i]; }
   std::optional<ContactVelocity> NormalForce(int i) const override;

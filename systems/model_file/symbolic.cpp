@@ -164,6 +164,7 @@ void Compiler::CheckLinearInForces() {
 }
 
 ex Compiler::Rate(int t, const GiNaC::exmap& forces) const {
+  if (t >= 2 * static_cast<int>(eq_.size())) return clock_rate_;  // theta' = omega
   return t % 2 == 0 ? ex(state_[t + 1]) : eq_[t / 2].subs(forces);
 }
 

@@ -25,6 +25,12 @@ void Compiler::Symbols() {
     state_.emplace_back(MangleRates(x + "'"));
     out_->state_names.insert(out_->state_names.end(), {x, x + "'"});
   }
+  if (!spec_.clock.empty()) {
+    state_.emplace_back(spec_.clock);
+    out_->state_names.push_back(spec_.clock);
+    out_->clocks = 1;
+    ++out_->n;
+  }
   for (const std::string& p : spec_.parameters) params_.emplace_back(p);
   for (const ContactSpec& c : spec_.contacts) forces_.emplace_back(c.name);
   out_->parameters = spec_.parameters;
@@ -35,6 +41,9 @@ void Compiler::ParseContact(std::size_t c) {
   const ContactSpec& spec = spec_.contacts[c];
   velocity_.push_back(Parse(spec.velocity, true, false, false, "contact " + spec.name));
   out_->velocity.push_back(Linear(velocity_[c], spec.velocity, "contact " + spec.name));
+  if (out_->clocks && out_->velocity.back().weight.back() >= 0)
+    Fail(spec_.source, spec.velocity.line,
+         "contact " + spec.name + " reads the clock " + spec_.clock + " (a phase, not a velocity)");
   bool moves = false;
   for (int w : out_->velocity.back().weight) moves = moves || w >= 0;
   if (!moves)
@@ -66,6 +75,8 @@ void Compiler::ParseContact(std::size_t c) {
 void Compiler::ParseAll() {
   for (std::size_t i = 0; i < spec_.equations.size(); ++i)
     eq_.push_back(Parse(spec_.equations[i], true, true, false, spec_.coordinates[i] + "''"));
+  if (!spec_.clock.empty())
+    clock_rate_ = Parse(spec_.clock_rate, false, false, false, "clock " + spec_.clock);
   for (std::size_t c = 0; c < spec_.contacts.size(); ++c) ParseContact(c);
 }
 
@@ -150,8 +161,10 @@ void Compiler::Record(ModeProgram& p, const std::vector<ex>& field, const std::v
   Recorder plain(&p.plain, state_, params_), full(&p.full, state_, params_);
   for (const ex& f : field) p.field.push_back(plain.Node(f)), p.full_field.push_back(full.Node(f));
   for (const ex& a : aux) p.aux.push_back(plain.Node(a)), p.full_aux.push_back(full.Node(a));
-  for (const ex& f : field)
-    for (const GiNaC::symbol& z : state_) p.jacobian.push_back(full.Node(f.diff(z)));
+  const std::size_t tangent = state_.size() - out_->clocks;  // J leaves the clock out
+  for (std::size_t r = 0; r < tangent; ++r)
+    for (std::size_t u = 0; u < tangent; ++u)
+      p.jacobian.push_back(full.Node(field[r].diff(state_[u])));
   for (const ex& l : lambdas) {
     std::vector<int> g;
     for (const GiNaC::symbol& z : state_) g.push_back(full.Node(l.diff(z)));

@@ -140,6 +140,9 @@ TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
   ExpectRefused(head + "x'' = -x + F\n" + law + "static F = -1\n", {"static coefficient"});
   ExpectRefused(head + "x'' = -x + F + 9^(9^9)\n" + law, {"bad.ini:4", "a power in an exponent"});
   ExpectRefused(head + "x'' = -x + F + 2^5000\n" + law, {"bad.ini:4", "is above 1000"});
+  ExpectRefused(head + "clock th = v\nx'' = -x + F\ncontact F = x' - th\nlaw F = mu\n",
+                {"bad.ini:6", "reads the clock th"});
+  ExpectRefused(head + "clock th = v\nclock ph = v\n", {"bad.ini:5", "a second clock"});
   // The options around the file.
   const std::string dir = NewDir();
   auto r = RunOut("ss_simulate", dir, {"--model", dir + "/none.ini"});

@@ -18,6 +18,7 @@
 #include "mode_coupling/mode_coupling.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
+#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip::model_file {
@@ -101,6 +102,36 @@ TEST(ModelFile, ShootingFindsTheSameOrbitWithTheSameMultipliers) {
   EXPECT_NEAR(a.period, b.period, 1e-11);
   EXPECT_NEAR(a.hi[0], b.hi[0], 1e-11);
   EXPECT_EQ(a.sticks, b.sticks);
+}
+
+// The forced belt (a clock theta' = omega in the file) against ForcedModel:
+// the seed_forced study's trajectory from (0, v, 0), and its stroboscopic
+// period-1 orbit at Omega = 0.8 with its multipliers.
+TEST(ModelFile, TheForcedFileRunsAsTheBuiltInForcedOscillator) {
+  const std::unique_ptr<System> file = ReadModel(kModels + "forced.ini");
+  ASSERT_EQ(file->clocks(), 1);
+  EXPECT_EQ(file->StateName(2), "theta");
+  ForcedParams p;  // the seed set, A = 0.3, Omega = 0.6
+  p.force = 0.3, p.omega = 0.6;
+  const ForcedModel built(p);
+  ExpectSameRows(*file, built, Eigen::Vector3d(0, 0.25, 0), 300, 1e-11);
+  file->SetParameterValue(file->ParameterIndex("omega"), 0.8);
+  p.omega = 0.8;
+  const ForcedModel at(p);
+  ShootingOptions o;
+  o.flow.rtol = o.flow.atol = 1e-12;
+  const FlowPoint guess{0, Eigen::Vector3d(0.6, 0.1, 0), ModeSet()};
+  const PeriodicOrbit a =
+      Shooting(*file, o).Find(guess, PoincareSection::Stroboscopic(*file, guess.z, 1));
+  const PeriodicOrbit b =
+      Shooting(at, o).Find(guess, PoincareSection::Stroboscopic(at, guess.z, 1));
+  ASSERT_TRUE(a.ok()) << a.message;
+  ASSERT_TRUE(b.ok()) << b.message;
+  EXPECT_NEAR(a.start.z[0], b.start.z[0], 1e-12);  // equal, measured
+  EXPECT_NEAR(a.start.z[1], b.start.z[1], 1e-12);
+  ASSERT_EQ(a.multipliers.size(), b.multipliers.size());
+  for (std::size_t i = 0; i < a.multipliers.size(); ++i)  // 6.7e-16 measured
+    EXPECT_NEAR(std::abs(a.multipliers[i] - b.multipliers[i]), 0, 1e-12) << i;
 }
 
 }  // namespace
