@@ -226,7 +226,15 @@ int Main(int argc, char** argv) {
     return cli::SimulateSystemApp(args, kProg, command);
   cli::RefuseSystem(args, kProg, {"state"});
   const bool forced = cli::ForcedRequested(args);
-  if (forced && args.Flag("orbits")) return cli::ForcedOrbitsApp(args, kProg, command);
+  if (forced && args.Flag("orbits")) {
+    if (args.Given("section"))
+      throw cli::UsageError(args.Source("section") +
+                            " applies to a trajectory, not to --orbits (a list of orbits)");
+    return cli::ForcedOrbitsApp(args, kProg, command);
+  }
+  if (forced && args.Given("max_amplitude"))
+    throw cli::UsageError(args.Source("max_amplitude") +
+                          " bounds a branch or a chart; a trajectory has --max_rows");
   for (const char* name : {"orbits", "max_m"})
     if (args.Given(name) && (!forced || std::string(name) == "max_m"))
       throw cli::UsageError(args.Source(name) + (forced ? " needs --orbits"

@@ -44,6 +44,15 @@ Eigen::VectorXd StartState(const Arguments& args, const System& s) {
   Eigen::VectorXd z(s.dimension());
   for (int i = 0; i < s.dimension(); ++i)
     z[i] = ParseNumber(items[i], args.Source("state") + " component " + std::to_string(i + 1));
+  // A clock's phase modulo 2 pi: unreduced, 1e20 + Omega t would not move.
+  constexpr double kMaxPhase = 1e9;  // beyond it a double keeps under 7 digits of the phase
+  for (int i = s.tangent_dimension(); i < s.dimension(); ++i) {
+    if (!(std::abs(z[i]) <= kMaxPhase))
+      throw UsageError(args.Source("state") + " component " + std::to_string(i + 1) + " (" +
+                       s.StateName(i) + ") = " + items[i] +
+                       ": a phase beyond 1e9 has too few digits left; give it in [0, 2 pi)");
+    z[i] = ClockPhase(z[i]);
+  }
   for (int c = 0; c < s.contacts(); ++c)
     if (const auto n = s.NormalForce(c); n && !(n->At(z.data()) > 0))
       throw UsageError(args.Source("state") + " = '" + text + "': contact " + std::to_string(c) +
@@ -83,12 +92,15 @@ Scene ForcedScene(const Arguments& args, const std::string& prog, const std::str
 }
 
 Scene ChosenScene(const Arguments& args, const std::string& prog, const std::string& command) {
-  for (const char* o : {"x0", "xdot0", "orbits", "max_m", "max_amplitude"})
+  const std::string name =
+      args.Given("model") ? "--model " + args.Text("model") : "--system " + args.Text("system");
+  for (const char* o : {"x0", "xdot0"})
     if (args.Given(o))
-      throw UsageError(args.Source(o) +
-                       " applies to the belt and the forced oscillator; give "
-                       "--state with --system " +
-                       args.Text("system"));
+      throw UsageError(args.Source(o) + " applies to the belt and the forced oscillator; give " +
+                       "--state with " + name);
+  for (const char* o : {"orbits", "max_m", "max_amplitude"})
+    if (args.Given(o))
+      throw UsageError(args.Source(o) + " applies to the forced oscillator only, not to " + name);
   Scene sc;
   sc.system = SystemFromArguments(args);
   sc.range = SimulateRangeFromArguments(args, 0);
@@ -116,6 +128,10 @@ Scene SceneOf(const Arguments& args, const std::string& prog, const std::string&
       SystemRequested(args) ? ChosenScene(args, prog, command) : ForcedScene(args, prog, command);
   sc.o.section = SectionOf(args, *sc.system);
   sc.o.period = ClockPeriod(*sc.system, sc.z0);
+  if (sc.system->clocks() && !(sc.o.period > 0 && std::isfinite(sc.o.period)))
+    throw UsageError("the clock " + sc.system->StateName(sc.system->tangent_dimension()) +
+                     " turns at rate " + FormatNumber(2 * M_PI / sc.o.period) +
+                     ": it must be > 0 (check the parameters set by --set or the model file)");
   sc.o.t_end = sc.range.t_end, sc.o.dt = sc.range.dt, sc.o.max_rows = sc.range.max_rows;
   sc.o.extrema = {0};
   if (sc.o.section == SimulationSection::kStrobe &&
@@ -189,9 +205,17 @@ int SimulateSystemApp(const Arguments& args, const std::string& prog, const std:
                                   ? "complete: contact " + std::to_string(r.opened) +
                                         " opens at t = " + FormatNumber(r.end.t) + ", the run ends"
                                   : std::string("complete"));
+  std::string start;
+  for (int i = 0; i < s.dimension(); ++i) start += (i ? "," : "") + FormatNumber(sc.z0[i]);
   for (TsvTable* t : {&traj, &section}) {
     t->PrependMeta(meta);
-    AddRangeMeta(*t, sc.range);
+    if (SystemRequested(args)) {  // the start as --state takes it
+      t->AddMeta("state", start);
+      t->AddMeta("t_end", FormatNumber(sc.range.t_end));
+      t->AddMeta("dt", FormatNumber(sc.range.dt));
+    } else {
+      AddRangeMeta(*t, sc.range);
+    }
   }
   app.out().Write("trajectory.tsv", traj.str());
   if (sectioned) app.out().Write("section.tsv", section.str());

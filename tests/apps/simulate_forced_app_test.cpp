@@ -134,6 +134,8 @@ TEST_F(SimulateForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
       {{"--force", "1", "--section", "poincare"}, "'poincare' for --section"},
       {{"--force", "1", "--mass", "1"}, "--mass"},
       {{"--force", "1", "--t_end", "0"}, "--t_end"},
+      {{"--force", "1", "--section", "exit", "--orbits"}, "--section applies to a trajectory"},
+      {{"--force", "1", "--max_amplitude", "3"}, "--max_amplitude bounds a branch"},
   };
   for (const auto& c : cases) {
     const std::string dir = NewDir();

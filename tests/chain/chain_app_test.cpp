@@ -204,6 +204,8 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
                  {"--section strobe", "autonomous"});
   ExpectRejected("ss_simulate", {"--system", "chain", "--section", "every"},
                  {"'every' for --section"});
+  ExpectRejected("ss_simulate", {"--system", "chain", "--orbits"},
+                 {"--orbits", "forced oscillator only", "--system chain"});
   // A [system] section without a system, and an unknown key in it.
   const std::string study = dir_ + "/bad.ini";
   tu::WriteFile(study, "law = cubic\n[system]\nkc = 1\n");
@@ -256,6 +258,8 @@ TEST_F(SystemApp, ExitSectionLiesOnABlocksStickEdge) {
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv sec = tu::ReadTsv(tu::ReadFile(dir + "/out/section.tsv"));
   EXPECT_EQ(sec.meta.at("section"), "exit");
+  EXPECT_EQ(sec.meta.count("x0"), 0u);  // the start is the state, every component
+  EXPECT_EQ(std::count(sec.meta.at("state").begin(), sec.meta.at("state").end(), ','), 3);
   ASSERT_GT(sec.rows.size(), 10u);
   for (size_t k = 0; k < sec.rows.size(); ++k) {
     const auto& row = sec.rows[k];

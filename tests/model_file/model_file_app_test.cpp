@@ -152,6 +152,10 @@ TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
   EXPECT_TRUE(tu::Contains(r.err, "give one of them")) << r.err;
   r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--law", "coulomb"});
   EXPECT_TRUE(tu::Contains(r.err, "has its own laws")) << r.err;
+  r = RunOut("ss_simulate", dir, {"--model", kModels + "forced.ini", "--state", "0,0.25,1e20"});
+  EXPECT_TRUE(tu::Contains(r.err, "component 3 (theta) = 1e20")) << r.err;
+  r = RunOut("ss_simulate", dir, {"--model", kModels + "forced.ini", "--set", "omega=0"});
+  EXPECT_TRUE(tu::Contains(r.err, "the clock theta turns at rate 0")) << r.err;
   r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--set", "vv=1"});
   EXPECT_TRUE(tu::Contains(r.err, "'vv' is no parameter of belt")) << r.err;
   EXPECT_FALSE(tu::Exists(dir + "/out"));
