@@ -170,8 +170,14 @@ void Compiler::Record(ModeProgram& p, const std::vector<ex>& field, const std::v
     for (const GiNaC::symbol& z : state_) g.push_back(full.Node(l.diff(z)));
     p.lambda_gradient.push_back(g);
   }
-  p.plain.Seal();
-  p.full.Seal();
+  std::vector<int> plain_out = p.field, full_out = p.full_field;
+  plain_out.insert(plain_out.end(), p.aux.begin(), p.aux.end());
+  full_out.insert(full_out.end(), p.full_aux.begin(), p.full_aux.end());
+  full_out.insert(full_out.end(), p.jacobian.begin(), p.jacobian.end());
+  for (const std::vector<int>& g : p.lambda_gradient)
+    full_out.insert(full_out.end(), g.begin(), g.end());
+  p.plain.Seal(plain_out);
+  p.full.Seal(full_out);
 }
 
 }  // namespace stickslip::model_file

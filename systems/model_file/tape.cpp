@@ -38,10 +38,53 @@ double Cauchy(int lo, int k, const double* u, const double* w) {
 
 }  // namespace
 
-void Tape::Seal() {
+// Node i as base * factor with a constant factor (a new constant node for
+// 1 / c or -c): a product or quotient by a constant, or a negation.
+bool Tape::Scale(int i, int* base, int* factor) {
+  const Node n = nodes_[i];
+  if (constant_[i]) return false;
+  if (n.op == Op::kMul && (constant_[n.a] || constant_[n.b])) {
+    *base = constant_[n.a] ? n.b : n.a, *factor = constant_[n.a] ? n.a : n.b;
+    return true;
+  }
+  if (n.op == Op::kDiv && constant_[n.b]) {
+    *base = n.a, *factor = Add({Op::kDiv, Add({Op::kConst, 0, 0, 1.0}), n.b, 0});
+    return true;
+  }
+  if (n.op == Op::kNeg) {
+    *base = n.a, *factor = Add({Op::kConst, 0, 0, -1.0});
+    return true;
+  }
+  return false;
+}
+
+// (k f) g -> k (f g): a chain of scalings costs one product per order.
+void Tape::Fold() {
+  const int n = size();
+  for (int i = 0; i < n; ++i) {
+    int base = 0, factor = 0, inner_base = 0, inner_factor = 0;
+    if (!Scale(i, &base, &factor) || !Scale(base, &inner_base, &inner_factor)) continue;
+    const int product = Add({Op::kMul, inner_factor, factor, 0});
+    nodes_[i] = {Op::kMul, inner_base, product, 0};
+  }
+}
+
+void Tape::Seal(const std::vector<int>& outputs) {
+  Fold();
+  std::vector<bool> live(size(), false);
+  for (int o : outputs) live[o] = true;
+  for (int i = size() - 1; i >= 0; --i) {
+    const Node& n = nodes_[i];
+    if (!live[i] || n.op == Op::kState || n.op == Op::kParam || n.op == Op::kConst) continue;
+    live[n.a] = true;
+    const bool binary = n.op == Op::kAdd || n.op == Op::kSub || n.op == Op::kMul ||
+                        n.op == Op::kDiv || n.op == Op::kSin || n.op == Op::kCos ||
+                        n.op == Op::kSinh || n.op == Op::kCosh;  // a pair reads its partner
+    if (binary) live[n.b] = true;
+  }
   program_.clear();
   for (int i = 0; i < size(); ++i) {
-    if (constant_[i]) continue;
+    if (constant_[i] || !live[i]) continue;
     const Node& n = nodes_[i];
     Instr in{Step::kOther, i, n.a, n.b};
     switch (n.op) {
@@ -185,7 +228,14 @@ void Tape::Compute(int i, int k, const TaylorRow* state, const double* params,
 }
 
 void Tape::Values(const double* z, const double* params, double* out) const {
-  for (int i = 0; i < size(); ++i) {
+  // The constants first: Fold's products are made after the nodes that use them.
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 0; i < size(); ++i)
+      if (constant_[i] == (pass == 0)) Value(i, z, params, out);
+}
+
+void Tape::Value(int i, const double* z, const double* params, double* out) const {
+  {
     const Node& n = nodes_[i];
     const bool input = n.op == Op::kState || n.op == Op::kParam || n.op == Op::kConst;
     const double u = input ? 0 : out[n.a], w = input ? 0 : out[n.b];

@@ -48,8 +48,10 @@ class Tape {
   int size() const { return static_cast<int>(nodes_.size()); }
   const Node& node(int i) const { return nodes_[i]; }
 
-  /// Prepares Order's program for orders k >= 1 (after the last Add).
-  void Seal();
+  /// Prepares Order's program (after the last Add): a product of products or
+  /// quotients by constants becomes one product by a constant node, and the
+  /// nodes no output needs are left out.
+  void Seal(const std::vector<int>& outputs);
   /// The constant nodes' rows (coefficient 0, zeros past it) at these
   /// parameters: once, before Order's calls on the same rows.
   void Constants(const double* params, TaylorRow* rows) const;
@@ -70,6 +72,9 @@ class Tape {
     int node, a, b;
   };
   void Compute(int i, int k, const TaylorRow* state, const double* params, TaylorRow* rows) const;
+  void Value(int i, const double* z, const double* params, double* out) const;
+  bool Scale(int i, int* base, int* factor);  // node i = base * factor, factor constant
+  void Fold();
 
   std::vector<Node> nodes_;
   std::vector<bool> constant_;
