@@ -71,7 +71,7 @@ TEST_F(ModelFileApp, TheBeltFileGivesTheBuiltInBranch) {
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
   EXPECT_TRUE(tu::Contains(file.out, "HB at 0.4409585518")) << file.out;
   EXPECT_TRUE(tu::Contains(file.out, "GR at 0.3957902887")) << file.out;
-  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-12);  // 3.3e-16 measured
+  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-12);  // 2.8e-16 measured
   ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-12);
 }
 
@@ -87,7 +87,7 @@ TEST_F(ModelFileApp, TheBrakeFileGivesTheBuiltInBranch) {
       RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/brake.ini"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
   EXPECT_TRUE(tu::Contains(file.out, "CL at")) << file.out;
-  // Measured: states 5e-13; multipliers 3.2e-12 where a complex pair meets on
+  // Measured: states 4.3e-13; multipliers 2.8e-12 where a complex pair meets on
   // the real axis (rows 24-26: a perturbation e of M moves them by sqrt(e)).
   ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-11);
   ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-11);
@@ -103,7 +103,7 @@ TEST_F(ModelFileApp, TheChainFileGivesTheBuiltInBranch) {
   const auto built =
       RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2.ini"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
-  // Measured: states 7.7e-15 (246 rows); the multipliers 1.3e-8 on the last
+  // Measured: states 7.6e-15 (246 rows); the multipliers 1e-8 on the last
   // rows before the grazing point, where the return map's derivative grows
   // without bound (the stick time vanishes like a square root): there a
   // rounding of 1e-16 in the orbit moves them that much, in either code.
