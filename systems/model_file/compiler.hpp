@@ -30,6 +30,10 @@ class Compiler {
   LinearForm Linear(const ex& e, const Located& l, const std::string& what);
   void Parameters(const ex& e, const Located& l);
   void CheckLinearInForces();
+  void CheckLaw(std::size_t c);
+  double At(const ex& e, const std::vector<double>& z) const;
+  void Solve(const std::vector<ex>& rates, const std::vector<int>& sticking,
+             std::vector<ex>* lambdas, bool* consistent) const;
   ex Rate(int t, const GiNaC::exmap& forces) const;  // f_t with the forces substituted
   void Mode(int index);
   void Record(ModeProgram& p, const std::vector<ex>& field, const std::vector<ex>& aux,

@@ -44,8 +44,16 @@ class Reader {
  private:
   void Name(const std::string& name, int line) {
     if (!Identifier(name)) Fail(spec_.source, line, "'" + name + "' is not a name");
-    if (name == "s" || name == "t")
-      Fail(spec_.source, line, "'" + name + "' is reserved (s: a law's slip speed; t: time)");
+    static const char* reserved[] = {"s",    "t",    "I",      "Pi",     "Euler", "Catalan", "exp",
+                                     "log",  "sin",  "cos",    "tan",    "sinh",  "cosh",    "tanh",
+                                     "sqrt", "pow",  "abs",    "csgn",   "step",  "atan",    "asin",
+                                     "acos", "zeta", "tgamma", "lgamma", "Order", "Li2"};
+    for (const char* r : reserved)
+      if (name == r)
+        Fail(spec_.source, line,
+             "'" + name +
+                 "' is reserved (s: a law's slip speed; t: time; the others name GiNaC's "
+                 "constants and functions)");
     for (const std::string& used : names_)
       if (used == name) Fail(spec_.source, line, "the name '" + name + "' is used twice");
     names_.push_back(name);
@@ -199,6 +207,46 @@ ModelSpec ReadSpec(const std::string& text, const std::string& source) {
     spec.name = stem.substr(0, stem.find('.'));
   }
   return spec;
+}
+
+std::string ExactNumbers(const std::string& e, const std::string& source, int line) {
+  std::string out;
+  std::size_t i = 0;
+  auto digit = [&](std::size_t k) {
+    return k < e.size() && std::isdigit(static_cast<unsigned char>(e[k]));
+  };
+  while (i < e.size()) {
+    const bool in_name =
+        !out.empty() && (std::isalnum(static_cast<unsigned char>(out.back())) || out.back() == '_');
+    if (in_name || !(digit(i) || (e[i] == '.' && digit(i + 1)))) {
+      out += e[i++];
+      continue;
+    }
+    std::string digits;
+    int scale = 0;  // the value is digits x 10^scale
+    for (; digit(i); ++i) digits += e[i];
+    if (i < e.size() && e[i] == '.')
+      for (++i; digit(i); ++i) digits += e[i], --scale;
+    if (i < e.size() && (e[i] == 'e' || e[i] == 'E') &&
+        (digit(i + 1) || ((e[i + 1] == '-' || e[i + 1] == '+') && digit(i + 2)))) {
+      const std::size_t from = ++i;
+      if (e[i] == '-' || e[i] == '+') ++i;
+      while (digit(i)) ++i;
+      const long x = std::strtol(e.substr(from, i - from).c_str(), nullptr, 10);
+      if (std::labs(x) > 400)
+        Fail(source, line,
+             "the number '" + e.substr(0, 0) + digits + "e" + std::to_string(x) +
+                 "' is beyond 1e+-400");
+      scale += static_cast<int>(x);
+    }
+    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+    if (scale >= 0) {
+      out += "(" + digits + std::string(static_cast<std::size_t>(scale), '0') + ")";
+    } else {
+      out += "(" + digits + "/1" + std::string(static_cast<std::size_t>(-scale), '0') + ")";
+    }
+  }
+  return out;
 }
 
 std::string MangleRates(const std::string& e) {

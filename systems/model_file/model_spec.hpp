@@ -39,6 +39,11 @@ struct ModelSpec {
 /// one equation per coordinate, a law per contact); the expressions are
 /// checked by Compile (symbolic.hpp).
 ModelSpec ReadSpec(const std::string& text, const std::string& source);
+/// Every decimal number of an expression as an exact fraction (0.25 ->
+/// (25/100), 1e-3 -> (1/1000)): GiNaC then computes exactly, and the same in
+/// every run (its floats made the stick forces' solution depend on term
+/// order). Fails naming the line for an exponent beyond +-400.
+std::string ExactNumbers(const std::string& expression, const std::string& source, int line);
 /// x' -> x__dot (the symbols the parser reads), and back for messages.
 std::string MangleRates(const std::string& expression);
 std::string UnmangleRates(const std::string& text);

@@ -61,6 +61,11 @@ std::string ModelSystem::ValidationError() const {
       return UnmangleRates(d.text) + " = " + Number(contact_values_[d.node]) + " divides (" +
              c_->source + ":" + std::to_string(d.line) + ")";
   for (int i = 0; i < c_->k; ++i)
+    if (!c_->normal_varies[i] && !(-normal_[i].speed > 0 && std::isfinite(normal_[i].speed)))
+      return "the normal force of contact " + c_->contact_names[i] + " is " +
+             Number(normal_[i].speed == 0 ? 0.0 : -normal_[i].speed) +
+             ": a constant normal force must be > 0";
+  for (int i = 0; i < c_->k; ++i)
     if (!(static_[i] > 0) || !std::isfinite(static_[i]))
       return "the static coefficient of contact " + c_->contact_names[i] + " is " +
              Number(static_[i]) + " (" + c_->source + ":" + std::to_string(c_->static_lines[i]) +
@@ -89,11 +94,7 @@ void ModelSystem::StaticLimitGradient(int i, ConstState, StateOut g) const {
 }
 
 const ModeProgram& ModelSystem::Program(const ModeSet& m) const {
-  const ModeProgram& p = c_->modes[ModeIndex(m, c_->k)];
-  if (!p.consistent)
-    throw InvalidArgument(c_->source + ": mode " + ModeSetName(m, c_->k) +
-                          ": the sticking contacts' forces are not determined (a singular set)");
-  return p;
+  return c_->modes[ModeIndex(m, c_->k)];
 }
 
 void ModelSystem::Values(const Tape& t, ConstState z, std::vector<double>& out) const {
@@ -103,6 +104,7 @@ void ModelSystem::Values(const Tape& t, ConstState z, std::vector<double>& out) 
 
 void ModelSystem::Field(const ModeSet& m, ConstState z, StateOut f) const {
   const ModeProgram& p = Program(m);
+  if (!p.consistent) return f.setConstant(NAN), void();  // a singular stick set: no field
   thread_local std::vector<double> v;
   Values(p.plain, z, v);
   for (int t = 0; t < c_->n; ++t) f[t] = v[p.field[t]];
@@ -110,6 +112,7 @@ void ModelSystem::Field(const ModeSet& m, ConstState z, StateOut f) const {
 
 void ModelSystem::Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const {
   const ModeProgram& p = Program(m);
+  if (!p.consistent) return J.setConstant(NAN), void();
   thread_local std::vector<double> v;
   Values(p.full, z, v);
   const int nt = tangent_dimension();
@@ -126,6 +129,7 @@ static int StickSlot(const ModeSet& m, int i) {
 
 double ModelSystem::StickForce(const ModeSet& m, int i, ConstState z) const {
   const ModeProgram& p = Program(m);
+  if (!p.consistent) return NAN;  // never within a static limit: the set is not chosen
   thread_local std::vector<double> v;
   Values(p.plain, z, v);
   return v[p.aux[2 * StickSlot(m, i)]];
@@ -133,6 +137,7 @@ double ModelSystem::StickForce(const ModeSet& m, int i, ConstState z) const {
 
 void ModelSystem::StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const {
   const ModeProgram& p = Program(m);
+  if (!p.consistent) return g.setConstant(NAN), void();
   thread_local std::vector<double> v;
   Values(p.full, z, v);
   const std::vector<int>& grad = p.lambda_gradient[StickSlot(m, i)];

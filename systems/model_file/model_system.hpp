@@ -18,7 +18,9 @@ class ModelSystem final : public System {
   explicit ModelSystem(std::shared_ptr<const Compiled> c);
   const Compiled& compiled() const { return *c_; }
   const std::vector<double>& values() const { return p_; }
-  /// The mode's program (InvalidArgument if its stick forces are not determined).
+  /// The mode's program; where its stick forces are not determined (a
+  /// singular set: not consistent) every field and force is NaN, so that the
+  /// mode is never chosen and a run that needs it fails saying where.
   const ModeProgram& Program(const ModeSet& m) const;
 
   std::unique_ptr<System> Clone() const override { return std::make_unique<ModelSystem>(*this); }

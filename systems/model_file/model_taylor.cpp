@@ -4,6 +4,7 @@
 // take J's series: Phi_{k+1} = sum_{j=0..k} J_j Phi_{k-j} / (k+1); the
 // auxiliary rows are the sticking contacts' lambda and static limit.
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -48,6 +49,10 @@ class ModelField final : public TaylorField {
 
 void ModelField::Coefficients(int order, const TaylorLayout& l, TaylorRow* c) {
   const ModeProgram& p = *program_;
+  if (!p.consistent) {  // a singular stick set: the stepper reports non-finite coefficients
+    for (int r = 0; r < l.rows(); ++r) std::fill(c[r] + 1, c[r] + kTaylorRowSize, NAN);
+    return;
+  }
   const bool var = l.variational;
   const Tape& tape = var ? p.full : p.plain;
   const std::vector<int>& field = var ? p.full_field : p.field;

@@ -28,7 +28,7 @@ ex Compiler::Parse(const Located& l, bool state, bool forces, bool slip, const s
   CheckPowers(l);
   ex e;
   try {
-    e = reader(MangleRates(l.text));
+    e = reader(ExactNumbers(MangleRates(l.text), spec_.source, l.line));
   } catch (const std::exception& x) {
     std::string m = x.what();  // "GiNaC: parse error at line 0, column 0: ..."
     const auto at = m.find(": ", m.find("column"));
@@ -51,7 +51,12 @@ ex Compiler::Parse(const Located& l, bool state, bool forces, bool slip, const s
 // without a power of its own.
 void Compiler::CheckPowers(const Located& l) {
   constexpr double kMaxExponent = 1000;
+  constexpr int kMaxDepth = 64;  // GiNaC's parser recurses per parenthesis
   const std::string& t = l.text;
+  int depth = 0;
+  for (char c : t)
+    if ((depth += c == '(' ? 1 : c == ')' ? -1 : 0) > kMaxDepth)
+      Fail(spec_.source, l.line, "parentheses nested deeper than 64");
   for (std::size_t at = t.find('^'); at != std::string::npos; at = t.find('^', at + 1)) {
     std::size_t i = t.find_first_not_of(' ', at + 1);
     if (i == std::string::npos) break;
@@ -62,8 +67,15 @@ void Compiler::CheckPowers(const Located& l) {
         depth += t[j] == '(' ? 1 : t[j] == ')' ? -1 : 0;
         if (depth == 0) break;
       }
-      if (t.substr(i, j - i).find('^') != std::string::npos)
+      const std::string inner = t.substr(i + 1, j > i ? j - i - 1 : 0);
+      if (inner.find('^') != std::string::npos)
         Fail(spec_.source, l.line, "'" + t + "': a power in an exponent is refused");
+      char* end = nullptr;  // a number in parentheses: the same bound
+      const double x = std::strtod(inner.c_str(), &end);
+      if (end != inner.c_str() &&
+          inner.find_first_not_of(" ", end - inner.c_str()) == std::string::npos &&
+          !(std::abs(x) <= kMaxExponent))
+        Fail(spec_.source, l.line, "'" + t + "': the exponent " + inner + " is above 1000");
       continue;
     }
     if (t[i] == '-' || t[i] == '+') ++i;
@@ -135,31 +147,56 @@ LinearForm Compiler::Linear(const ex& e, const Located& l, const std::string& wh
   return form;
 }
 
+// The value of a parameter-and-state expression at the parameters' defaults
+// and the state z (NaN if it is not a finite real number there).
+double Compiler::At(const ex& e, const std::vector<double>& z) const {
+  GiNaC::exmap at;
+  for (std::size_t t = 0; t < state_.size(); ++t) at[state_[t]] = z[t];
+  for (std::size_t j = 0; j < params_.size(); ++j) at[params_[j]] = spec_.defaults[j];
+  try {
+    const ex v = GiNaC::evalf(e.subs(at));
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return NAN;
+    return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+  } catch (const std::exception&) {
+    return NAN;
+  }
+}
+
+// Each force enters linearly (its derivative free of every force: no F^2,
+// 1/F or F G), somewhere, and pushes its own contact's velocity up: the
+// coefficient of F in h'' is > 0 at the defaults and the state 0 (as the
+// belt's x'' = ... + F, so that lambda > 0 means it would slip below).
 void Compiler::CheckLinearInForces() {
+  const std::vector<double> zero(state_.size(), 0.0);
   for (std::size_t c = 0; c < forces_.size(); ++c) {
     bool used = false;
+    const std::string& name = spec_.contacts[c].name;
     for (std::size_t i = 0; i < eq_.size(); ++i) {
-      const ex e = eq_[i].expand();
-      const ex c1 = e.coeff(forces_[c], 1), c0 = e.coeff(forces_[c], 0);
-      if (c1.has(forces_[c]) || c0.has(forces_[c]) || e.degree(forces_[c]) > 1)
-        Fail(spec_.source, spec_.equations[i].line,
-             "the force " + spec_.contacts[c].name + " enters " + spec_.coordinates[i] +
-                 "'' = ... nonlinearly (it must be a sum of terms coefficient * " +
-                 spec_.contacts[c].name + ")");
-      used = used || !c1.is_zero();
+      const ex d = eq_[i].diff(forces_[c]);
+      for (const GiNaC::symbol& f : forces_)
+        if (d.has(f))
+          Fail(spec_.source, spec_.equations[i].line,
+               "the force " + name + " enters " + spec_.coordinates[i] +
+                   "'' = ... nonlinearly (it must be a sum of terms coefficient * " + name +
+                   ", the coefficient free of every force)");
+      used = used || !d.is_zero();
     }
     if (!used)
       Fail(spec_.source, spec_.contacts[c].velocity.line,
-           "the force " + spec_.contacts[c].name + " appears in no equation");
-    // It must act on its own contact: h_c' has it with a nonzero coefficient.
-    GiNaC::exmap none;
+           "the force " + name + " appears in no equation");
     ex h_rate = 0;
     for (std::size_t t = 0; t < state_.size(); ++t)
-      h_rate += velocity_[c].diff(state_[t]) * Rate(t, none);
-    if (GiNaC::normal(h_rate.expand().coeff(forces_[c], 1)).is_zero())
+      h_rate += velocity_[c].diff(state_[t]) * Rate(t, GiNaC::exmap());
+    const double own = At(h_rate.diff(forces_[c]), zero);
+    if (!(own > 0))
       Fail(spec_.source, spec_.contacts[c].velocity.line,
-           "the force " + spec_.contacts[c].name + " does not act on its own velocity '" +
-               spec_.contacts[c].velocity.text + "' (it cannot hold it at 0 in stick)");
+           "the force " + name +
+               (own < 0 ? " pulls its own velocity '" : " does not act on its own velocity '") +
+               spec_.contacts[c].velocity.text +
+               (own < 0 ? "' down (its coefficient in the equations must be > 0: write the law's "
+                          "sign into the equation as + " +
+                              name + ")"
+                        : "' (it cannot hold it at 0 in stick)"));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "model_file/compiler.hpp"
+#include "stickslip/errors.hpp"
 #include "stickslip/system/mode.hpp"
 
 namespace stickslip::model_file {
@@ -89,7 +90,6 @@ std::shared_ptr<const Compiled> Compiler::Run() {
   contact_ = std::make_unique<Recorder>(&out_->contact, state_, params_);
   try {
     ParseAll();
-    CheckLinearInForces();
     std::vector<double> values(out_->contact.size()), z(state_.size(), 0.0);
     out_->contact.Values(z.data(), out_->defaults.data(), values.data());
     for (const Denominator& d : out_->denominators)
@@ -97,12 +97,18 @@ std::shared_ptr<const Compiled> Compiler::Run() {
         Fail(spec_.source, d.line,
              "divides by " + d.text + " = " + Number(values[d.node]) +
                  " at the parameters' values given");
+    for (std::size_t c = 0; c < spec_.contacts.size(); ++c) CheckLaw(c);
+    CheckLinearInForces();
     int modes = 1;
     for (int c = 0; c < out_->k; ++c) modes *= 3;
     out_->modes.resize(modes);
     for (int m = 0; m < modes; ++m) Mode(m);
+  } catch (const InvalidArgument&) {
+    throw;
   } catch (const std::invalid_argument& e) {  // the recorder's refusal
     Fail(spec_.source, 0, std::string("cannot record ") + e.what());
+  } catch (const std::exception& e) {  // GiNaC's or CLN's arithmetic
+    Fail(spec_.source, 0, std::string("cannot evaluate the model: ") + e.what());
   }
   return out_;
 }
@@ -113,40 +119,26 @@ void Compiler::Mode(int index) {
   for (int c = 0, r = index; c < out_->k; ++c, r /= 3)
     mode[c] = static_cast<stickslip::Mode>(r % 3);
   GiNaC::exmap forces;
-  GiNaC::lst unknowns, conditions;
+  std::vector<int> sticking;
   for (int c = 0; c < out_->k; ++c) {
     if (mode[c] == stickslip::Mode::kStick) {
-      unknowns.append(forces_[c]);
+      sticking.push_back(c);
       continue;
     }
     const int sigma = mode[c] == stickslip::Mode::kSlipBelow ? 1 : -1;
     forces[forces_[c]] = sigma * normal_[c] * law_[c].subs(s_ == -sigma * velocity_[c]);
   }
-  for (int c = 0; c < out_->k; ++c) {
-    if (mode[c] != stickslip::Mode::kStick) continue;
-    ex rate = 0;  // h_c' = sum_t dh_c/dz_t f_t
+  std::vector<ex> rates;  // h_c' = sum_t dh_c/dz_t f_t, linear in the sticking forces
+  for (int c : sticking) {
+    ex rate = 0;
     for (std::size_t t = 0; t < state_.size(); ++t)
       rate += velocity_[c].diff(state_[t]) * Rate(static_cast<int>(t), forces);
-    conditions.append(rate == 0);
+    rates.push_back(rate);
   }
   std::vector<ex> lambdas;
-  if (unknowns.nops()) {
-    ex sol;
-    try {
-      sol = GiNaC::lsolve(conditions, unknowns);
-    } catch (const std::exception&) {
-      p.consistent = false;
-      return;
-    }
-    if (sol.nops() != unknowns.nops()) {  // singular: the stick forces are not determined
-      p.consistent = false;
-      return;
-    }
-    for (std::size_t j = 0; j < sol.nops(); ++j) {
-      forces[unknowns.op(j)] = sol.op(j).rhs();
-      lambdas.push_back(sol.op(j).rhs());
-    }
-  }
+  Solve(rates, sticking, &lambdas, &p.consistent);
+  if (!p.consistent) return;  // singular: the stick forces are not determined
+  for (std::size_t j = 0; j < sticking.size(); ++j) forces[forces_[sticking[j]]] = lambdas[j];
   std::vector<ex> field, aux;
   for (std::size_t t = 0; t < state_.size(); ++t)
     field.push_back(Rate(static_cast<int>(t), forces));
