@@ -38,6 +38,10 @@ def missing_requirements():
         missing.append(("the Python headers (Python.h in %s)" % include, "python3-dev"))
     if shutil.which("cmake") is None:
         missing.append(("cmake", "cmake"))
+    if shutil.which("pkg-config") is None:
+        missing.append(("pkg-config", "pkg-config"))
+    if not os.path.exists("/usr/include/ginac/ginac.h"):  # model files
+        missing.append(("GiNaC (ginac/ginac.h)", "libginac-dev"))
     return missing
 
 

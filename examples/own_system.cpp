@@ -134,6 +134,28 @@ ss::AttractorBasins Basins(const own::StribeckBelt& belt) {
   return b;
 }
 
+// Above v_HB (and below GR) steady sliding and the stick-slip orbit both
+// attract: the rest point is mu(v) and the cycle's maximum the orbit's.
+bool CheckBasins(const own::BeltParams& p, const ss::ShootingOptions& so) {
+  own::BeltParams q = p;
+  q.v = 0.5;
+  const own::StribeckBelt fast(q);
+  // Its stick exit is (mu_s - 2 beta v, v): the orbit's start on the section.
+  const ss::FlowPoint exit_q{0, Eigen::Vector2d(q.mu_s - 2 * q.beta * q.v, q.v),
+                             ss::ModeSet(ss::Mode::kSlipBelow)};
+  const ss::PeriodicOrbit at_q =
+      ss::Shooting(fast, so).Find(exit_q, ss::PoincareSection::StickExit(0));
+  const ss::AttractorBasins basins = Basins(fast);
+  double rest = 1, cycle = 1;
+  for (const ss::Attractor& a : basins.attractors) {
+    if (a.kind == ss::AttractorKind::kRest) rest = std::abs(a.z[0] - fast.Mu(q.v));
+    if (a.kind == ss::AttractorKind::kPeriodic && at_q.ok()) cycle = std::abs(a.z[0] - at_q.hi[0]);
+  }
+  bool ok = Check(rest <= 1e-8, "|basins' rest point - mu(v)|", rest, 1e-8);
+  ok &= Check(cycle <= 1e-8, "|basins' cycle x_max - shot orbit's|", cycle, 1e-8);
+  return ok;
+}
+
 int Run() {
   own::BeltParams p;  // beta 0.05, v 0.3, mu_s 0.4, mu_k 0.25, v_s 0.5, eta 0.02
   const own::StribeckBelt belt(p);
@@ -200,24 +222,7 @@ int Run() {
   const double hb = HopfCurve(belt, &hb_points);
   ok &= Check(hb_points >= 10 && hb <= 1e-8, "|HB curve - closed form| in beta", hb, 1e-8);
 
-  // Above v_HB (and below GR) steady sliding and the stick-slip orbit both
-  // attract: the rest point is mu(v) and the cycle's maximum the orbit's.
-  own::BeltParams q = p;
-  q.v = 0.5;
-  const own::StribeckBelt fast(q);
-  // Its stick exit is (mu_s - 2 beta v, v): the orbit's start on the section.
-  const ss::FlowPoint exit_q{0, Eigen::Vector2d(q.mu_s - 2 * q.beta * q.v, q.v),
-                             ss::ModeSet(ss::Mode::kSlipBelow)};
-  const ss::PeriodicOrbit at_q =
-      ss::Shooting(fast, so).Find(exit_q, ss::PoincareSection::StickExit(0));
-  const ss::AttractorBasins basins = Basins(fast);
-  double rest = 1, cycle = 1;
-  for (const ss::Attractor& a : basins.attractors) {
-    if (a.kind == ss::AttractorKind::kRest) rest = std::abs(a.z[0] - fast.Mu(q.v));
-    if (a.kind == ss::AttractorKind::kPeriodic && at_q.ok()) cycle = std::abs(a.z[0] - at_q.hi[0]);
-  }
-  ok &= Check(rest <= 1e-8, "|basins' rest point - mu(v)|", rest, 1e-8);
-  ok &= Check(cycle <= 1e-8, "|basins' cycle x_max - shot orbit's|", cycle, 1e-8);
+  ok &= CheckBasins(p, so);
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }

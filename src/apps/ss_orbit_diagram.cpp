@@ -118,10 +118,9 @@ void ConfigureSystem(const cli::Arguments& args, Setup& s) {
   s.param = s.system->ParameterIndex(name);
   if (s.param < 0)
     throw cli::UsageError(args.Source("param") + " = " + name + ": no parameter of " +
-                          args.Text("system") + " (" + cli::ParameterList(*s.system) + ")");
+                          cli::SystemLabel(args) + " (" + cli::ParameterList(*s.system) + ")");
   for (const char* end : {"from", "to"})
-    if (!args.Given(end))
-      throw cli::UsageError("--system " + args.Text("system") + " needs --" + end);
+    if (!args.Given(end)) throw cli::UsageError(cli::SystemLabel(args) + " needs --" + end);
   s.o.from = args.Number("from", 0), s.o.to = args.Number("to", 0);
   if (s.o.from == s.o.to)
     throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");

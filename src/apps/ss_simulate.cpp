@@ -1,7 +1,8 @@
-// ss_simulate: one trajectory of the belt model (or, with --force or
-// --system, of the forced oscillator or another system: cli/simulate_system.hpp), written into
-// --out DIR as trajectory.tsv (metadata lines, then the header t, x, xdot, mode) and drawn as
-// trajectory.png unless --no_plots.
+// ss_simulate: one trajectory of the belt model (or, with --force, --system
+// or --model, of the forced oscillator or another system, their columns named
+// from the system: cli/simulate_system.hpp), written into --out DIR as
+// trajectory.tsv (metadata lines, then the header: the belt's t, x, xdot,
+// mode) and drawn as trajectory.png unless --no_plots.
 #include <cmath>
 #include <iostream>
 #include <optional>

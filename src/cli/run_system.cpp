@@ -75,7 +75,7 @@ SystemSetup Configure(const Arguments& args) {
   for (const char* o : {"all", "m", "floquet", "no_estimates"})
     if (args.Given(o) && (args.map()[o].value().type() != typeid(bool) || args.Flag(o)))
       throw UsageError(args.Source(o) + " applies to the belt and the forced oscillator, not to " +
-                       "--system " + args.Text("system"));
+                       SystemLabel(args));
   SystemSetup s;
   if (args.Given("restart")) s.restart = SystemRestartFromArguments(args);
   if (args.Given("point") && !s.restart)
@@ -88,7 +88,7 @@ SystemSetup Configure(const Arguments& args) {
   if (s.restart) FromName(s.restart->system, &s.choice);  // known: SystemFromArguments built it
   const std::string system = Name(s.choice);
   if (!args.Given("param") && !s.restart)
-    throw UsageError("--param is required with --system " + system + " (one of " +
+    throw UsageError("--param is required with " + SystemLabel(args) + " (one of " +
                      ParameterList(*s.system) + ")");
   const std::string param = args.Text("param", s.restart ? s.restart->continued : "");
   s.param = s.system->ParameterIndex(param);

@@ -76,9 +76,9 @@ ForcedInputs ForcedInputsFromArguments(const Arguments& args) {
 
 void AddSimulateForcedOptions(po::options_description& d) {
   d.add_options()("section", Value()->value_name("KIND"),
-                  "forced or --system: the Poincare section in section.tsv: strobe (every "
-                  "forcing period, cos(Omega t) = 1; the forced default), exit (every stick "
-                  "exit of any contact) or none (the --system default)")(
+                  "forced, --system or --model: the Poincare section in section.tsv: strobe "
+                  "(every forcing period, cos(Omega t) = 1; the default with a forcing), exit "
+                  "(every stick exit of any contact) or none (the default without one)")(
       "orbits", po::bool_switch(),
       "forced: instead of a trajectory, every periodic orbit of period multiple m <= max_m at "
       "these parameters (stable or not; FindOrbits), in orbits.tsv, one row per "

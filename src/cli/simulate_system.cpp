@@ -68,8 +68,8 @@ SimulationSection SectionOf(const Arguments& args, const System& s) {
     throw UsageError("invalid value '" + text + "' for " + args.Source("section") +
                      ": must be strobe, exit or none");
   if (sec == SimulationSection::kStrobe && !s.clocks())
-    throw UsageError(args.Source("section") + " strobe needs a forcing (a clock); --system " +
-                     args.Text("system") + " is autonomous: give exit or none");
+    throw UsageError(args.Source("section") + " strobe needs a forcing (a clock); " +
+                     SystemLabel(args) + " is autonomous: give exit or none");
   return sec;
 }
 
@@ -92,8 +92,7 @@ Scene ForcedScene(const Arguments& args, const std::string& prog, const std::str
 }
 
 Scene ChosenScene(const Arguments& args, const std::string& prog, const std::string& command) {
-  const std::string name =
-      args.Given("model") ? "--model " + args.Text("model") : "--system " + args.Text("system");
+  const std::string name = SystemLabel(args);
   for (const char* o : {"x0", "xdot0"})
     if (args.Given(o))
       throw UsageError(args.Source(o) + " applies to the belt and the forced oscillator; give " +
@@ -164,8 +163,9 @@ void PrintSummary(const std::string& prog, const Scene& sc, const Simulation& r,
 
 void AddSimulateSystemOptions(po::options_description& d) {
   d.add_options()("state", Value()->value_name("Z1,Z2,..."),
-                  "--system: the start, every state component in order (default: steady "
-                  "sliding with the first component moved by 0.01)");
+                  "--system or --model: the start, every state component in order (default: "
+                  "steady sliding, or the origin where there is none, with the first "
+                  "component moved by 0.01)");
 }
 
 int SimulateSystemApp(const Arguments& args, const std::string& prog, const std::string& command) {

@@ -79,10 +79,9 @@ po::options_description SystemOptions() {
   po::options_description d(
       "System (docs/systems.md; default the belt, or the forced oscillator "
       "with --force)");
-  d.add_options()(
-      "system", Value()->value_name("NAME"),
-      "belt (default), chain (blocks on a belt, coupled by springs) or "
-      "mode_coupling (a brake model of two modes): ss_continue, ss_simulate and ss_basin")(
+  d.add_options()("system", Value()->value_name("NAME"),
+                  "belt (default), chain (blocks on a belt, coupled by springs) or "
+                  "mode_coupling (a brake model of two modes): every app takes it")(
       "model", Value()->value_name("FILE"),
       "a model file: the system it writes down (docs/model_files.md); every app that takes "
       "--system takes it")("blocks", Value()->value_name("N"),
@@ -111,12 +110,13 @@ void RefuseSystem(const Arguments& args, const std::string& prog,
                   const std::vector<std::string>& also) {
   if (SystemRequested(args))
     throw UsageError(args.Source("system") + " = " + args.Text("system") + ": " + prog +
-                     " takes the belt and the forced oscillator only (ss_continue, "
-                     "ss_simulate and ss_basin take every system)");
+                     " takes the belt and the forced oscillator only (the other apps take every "
+                     "system)");
   std::vector<std::string> options = {"set", "blocks"};
   options.insert(options.end(), also.begin(), also.end());
   for (const std::string& o : options)
-    if (args.Given(o)) throw UsageError(args.Source(o) + " needs --system chain or mode_coupling");
+    if (args.Given(o))
+      throw UsageError(args.Source(o) + " needs --system chain or mode_coupling, or --model FILE");
   if (!args.settings().empty())
     throw UsageError(args.settings().front().where +
                      ": a [system] section needs system = chain or mode_coupling");
@@ -127,6 +127,9 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
   if (restart && !FromName(restart->system, &choice))
     throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": unknown system '" +
                      restart->system + "'");
+  if (choice == SystemChoice::kModel && !args.Given("model"))
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") +
+                     ": the run was of a model file; give it again with --model FILE");
   if (args.Given("blocks") && choice != SystemChoice::kChain)
     throw UsageError(args.Source("blocks") + " needs --system chain");
   for (const char* o : {"mass", "damping", "stiffness", "belt_speed", "force", "omega"})
@@ -143,9 +146,13 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e.what());
   }
   if (restart) SetRestartParameters(args, *restart, s.get());
-  for (const char* o : {"beta", "v", "mu_s", "mu_k"})  // the model options the system names
+  for (const char* o : {"beta", "v", "mu_s", "mu_k"}) {  // the model options the system names
     if (args.Given(o) && s->ParameterIndex(o) >= 0)
       s->SetParameterValue(s->ParameterIndex(o), args.Number(o, 0));
+    else if (args.Given(o) && choice == SystemChoice::kModel)  // a model names its own
+      throw UsageError(args.Source(o) + ": " + model_file::ModelName(*s) + " has no parameter " +
+                       o + " (its parameters: " + ParameterList(*s) + ")");
+  }
   for (const Arguments::Setting& set : Settings(args)) {
     const int j = s->ParameterIndex(set.key);
     if (j < 0)
@@ -164,6 +171,11 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e);
   }
   return s;
+}
+
+std::string SystemLabel(const Arguments& args) {
+  return args.Given("model") ? "--model " + args.Text("model")
+                             : "--system " + args.Text("system", "belt");
 }
 
 std::vector<std::string> CommaItems(const std::string& text) {

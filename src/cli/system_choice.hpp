@@ -48,6 +48,8 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args,
 // reads `mark` (a chart's second axis: both then "[axis]").
 std::string DescribeSystem(const System& s, SystemChoice choice, int continued, int other = -1,
                            const char* mark = "[continued]");
+// "--model FILE" or "--system NAME": the system as the command line chose it.
+std::string SystemLabel(const Arguments& args);
 // The items of a comma-separated list, each trimmed of blanks; every item,
 // an empty one (",," or a trailing ",") included.
 std::vector<std::string> CommaItems(const std::string& text);

@@ -48,15 +48,18 @@ void OntoSurface(const ContactVelocity& h, StateOut z) {
   for (int t = 0; t < h.size; ++t) z[h.terms[t].index] -= g * h.terms[t].weight / norm2;
   // The projection leaves h at rounding, on either side: an arrival that
   // crossed would fire again at every segment start (a run of steps of one
-  // ulp). The component of the largest weight is moved, by ulps, until h is 0.
+  // ulp). The component of the largest weight is moved, by up to 8 ulps,
+  // toward h = 0, until h is 0 or has changed sign.
   int big = 0;
   for (int t = 1; t < h.size; ++t)
     if (std::abs(h.terms[t].weight) > std::abs(h.terms[big].weight)) big = t;
   double& zb = z[h.terms[big].index];
-  for (int ulp = 0; ulp < 8; ++ulp) {
-    const double r = h.At(z.data());
-    if (r == 0) break;
-    zb = std::nextafter(zb, (r > 0) == (h.terms[big].weight > 0) ? -HUGE_VAL : HUGE_VAL);
+  double r = h.At(z.data());
+  const bool positive = r > 0;
+  const double away = positive == (h.terms[big].weight > 0) ? -HUGE_VAL : HUGE_VAL;
+  for (int ulp = 0; ulp < 8 && r != 0 && (r > 0) == positive; ++ulp) {
+    zb = std::nextafter(zb, away);
+    r = h.At(z.data());
   }
 }
 

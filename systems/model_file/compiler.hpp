@@ -1,5 +1,6 @@
 // The compiler of a model file (compiled.hpp): symbolic.cpp checks and
-// parses its expressions, symbolic_modes.cpp solves and records each mode.
+// parses its expressions, symbolic_modes.cpp builds and records each mode,
+// symbolic_solve.cpp solves its sticking forces and checks the laws at s = 0.
 #pragma once
 
 #include <ginac/ginac.h>

@@ -222,6 +222,7 @@ std::string ExactNumbers(const std::string& e, const std::string& source, int li
       out += e[i++];
       continue;
     }
+    const std::size_t start = i;
     std::string digits;
     int scale = 0;  // the value is digits x 10^scale
     for (; digit(i); ++i) digits += e[i];
@@ -233,10 +234,8 @@ std::string ExactNumbers(const std::string& e, const std::string& source, int li
       if (e[i] == '-' || e[i] == '+') ++i;
       while (digit(i)) ++i;
       const long x = std::strtol(e.substr(from, i - from).c_str(), nullptr, 10);
-      if (std::labs(x) > 400)
-        Fail(source, line,
-             "the number '" + e.substr(0, 0) + digits + "e" + std::to_string(x) +
-                 "' is beyond 1e+-400");
+      if (std::labs(x) > 400 || i - from > 4)
+        Fail(source, line, "the number '" + e.substr(start, i - start) + "' is beyond 1e+-400");
       scale += static_cast<int>(x);
     }
     digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));

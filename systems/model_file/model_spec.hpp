@@ -37,7 +37,7 @@ struct ModelSpec {
 [[noreturn]] void Fail(const std::string& source, int line, const std::string& problem);
 /// The lines of a model file, sorted and checked for form (names, numbers,
 /// one equation per coordinate, a law per contact); the expressions are
-/// checked by Compile (symbolic.hpp).
+/// checked by Compile (compiled.hpp, compiler.hpp).
 ModelSpec ReadSpec(const std::string& text, const std::string& source);
 /// Every decimal number of an expression as an exact fraction (0.25 ->
 /// (25/100), 1e-3 -> (1/1000)): GiNaC then computes exactly, and the same in

@@ -101,7 +101,7 @@ Recorder::Signed Recorder::Power(const ex& base, const ex& exponent) {
     return Rec(GiNaC::exp(exponent * GiNaC::log(base)));
   const GiNaC::numeric q = GiNaC::ex_to<GiNaC::numeric>(exponent);
   const Signed b = Rec(base);
-  if (q.is_integer() && GiNaC::abs(q) <= GiNaC::numeric(64)) {
+  if (q.is_integer() && GiNaC::abs(q) <= GiNaC::numeric(1000)) {  // the parser's bound
     const int k = std::abs(q.to_int());
     if (k == 0) return {Constant(1), 1};
     int result = -1, square = b.node;  // by squaring

@@ -1,11 +1,11 @@
-// A model file's expressions, checked, solved per mode and recorded
-// (compiled.hpp; docs/model_files.md). GiNaC parses and differentiates. In a
-// mode the sign of each slip speed is fixed, so each law is smooth there; a
-// sticking contact's force is the one that keeps its velocity at 0,
-// h_c' = sum_t dh_c/dz_t f_t = 0 (Filippov's sliding motion), solved
-// symbolically for the sticking set (GiNaC's lsolve).
+// A model file's expressions, parsed and checked (compiler.hpp;
+// docs/model_files.md): GiNaC parses and differentiates; every name must be
+// known, every function smooth, every number's power bounded, each force
+// linear in its equations and pushing its own contact's velocity up. The
+// modes are solved in symbolic_modes.cpp and symbolic_solve.cpp.
 #include <ginac/ginac.h>
 
+#include <cctype>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -26,9 +26,10 @@ ex Compiler::Parse(const Located& l, bool state, bool forces, bool slip, const s
   if (slip) table["s"] = s_;
   GiNaC::parser reader(table, true);
   CheckPowers(l);
+  const std::string exact = ExactNumbers(MangleRates(l.text), spec_.source, l.line);
   ex e;
   try {
-    e = reader(ExactNumbers(MangleRates(l.text), spec_.source, l.line));
+    e = reader(exact);
   } catch (const std::exception& x) {
     std::string m = x.what();  // "GiNaC: parse error at line 0, column 0: ..."
     const auto at = m.find(": ", m.find("column"));
@@ -58,7 +59,7 @@ void Compiler::CheckPowers(const Located& l) {
     if ((depth += c == '(' ? 1 : c == ')' ? -1 : 0) > kMaxDepth)
       Fail(spec_.source, l.line, "parentheses nested deeper than 64");
   for (std::size_t at = t.find('^'); at != std::string::npos; at = t.find('^', at + 1)) {
-    std::size_t i = t.find_first_not_of(' ', at + 1);
+    std::size_t i = t.find_first_not_of(" +-", at + 1);  // a sign first: 9^-(...) too
     if (i == std::string::npos) break;
     if (t[i] == '(') {
       int depth = 0;
@@ -70,15 +71,20 @@ void Compiler::CheckPowers(const Located& l) {
       const std::string inner = t.substr(i + 1, j > i ? j - i - 1 : 0);
       if (inner.find('^') != std::string::npos)
         Fail(spec_.source, l.line, "'" + t + "': a power in an exponent is refused");
-      char* end = nullptr;  // a number in parentheses: the same bound
+      // Without a name it is a number GiNaC evaluates exactly: one number, up to 1000.
+      bool named = false;
+      for (char c : inner) named = named || std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+      char* end = nullptr;
       const double x = std::strtod(inner.c_str(), &end);
-      if (end != inner.c_str() &&
-          inner.find_first_not_of(" ", end - inner.c_str()) == std::string::npos &&
-          !(std::abs(x) <= kMaxExponent))
-        Fail(spec_.source, l.line, "'" + t + "': the exponent " + inner + " is above 1000");
+      const bool one_number =
+          end != inner.c_str() &&
+          inner.find_first_not_of(" ", end - inner.c_str()) == std::string::npos;
+      if (!named && !(one_number && std::abs(x) <= kMaxExponent))
+        Fail(spec_.source, l.line,
+             "'" + t + "': the exponent (" + inner +
+                 ") must be one number up to 1000, or an expression of the parameters or state");
       continue;
     }
-    if (t[i] == '-' || t[i] == '+') ++i;
     char* end = nullptr;
     const double x = std::strtod(t.c_str() + i, &end);
     if (end != t.c_str() + i && !(std::abs(x) <= kMaxExponent))

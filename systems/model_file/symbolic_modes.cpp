@@ -1,6 +1,7 @@
 // A model file's modes, solved and recorded (compiler.hpp): in each, the
 // slipping contacts' forces sigma N mu(s) with s = -sigma h (sigma = +1
-// below the surface, -1 above), the sticking ones' from h' = 0.
+// below the surface, -1 above), the sticking ones' from h' = 0
+// (symbolic_solve.cpp).
 #include <ginac/ginac.h>
 
 #include <cmath>
@@ -60,15 +61,18 @@ void Compiler::ParseContact(std::size_t c) {
   out_->normal_varies.push_back(varies);
   if (spec.static_limit.line) {
     static_.push_back(Parse(spec.static_limit, false, false, false, "static " + spec.name));
+    out_->static_coefficient.push_back(contact_->Node(static_[c]));
   } else {
-    try {
+    try {  // the law at s = 0, where GiNaC may find log(0) or a pole
       static_.push_back(law_[c].subs(s_ == 0));
+      out_->static_coefficient.push_back(contact_->Node(static_[c]));
     } catch (const std::exception&) {
       Fail(spec_.source, spec.law.line,
-           "law " + spec.name + " has no value at s = 0: give 'static " + spec.name + " = ...'");
+           "law " + spec.name + " = '" + spec.law.text +
+               "' is not smooth at s = 0 (it has no value there), where every slip starts; a "
+               "power of s needs a numeric whole exponent >= 0");
     }
   }
-  out_->static_coefficient.push_back(contact_->Node(static_[c]));
   out_->contact_names.push_back(spec.name);
   out_->static_lines.push_back(spec.static_limit.line ? spec.static_limit.line : spec.law.line);
 }

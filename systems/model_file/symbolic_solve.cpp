@@ -74,6 +74,20 @@ void Compiler::Solve(const std::vector<ex>& rates, const std::vector<int>& stick
 void Compiler::CheckLaw(std::size_t c) {
   const ContactSpec& spec = spec_.contacts[c];
   const std::vector<double> zero(state_.size(), 0.0);
+  // A power of something that vanishes with s needs a whole exponent >= 0:
+  // s^3.5 has finite derivatives up to order 3, yet its recurrence divides by s.
+  for (auto it = law_[c].preorder_begin(); it != law_[c].preorder_end(); ++it) {
+    if (!GiNaC::is_a<GiNaC::power>(*it) || !it->op(0).has(s_)) continue;
+    const ex q = it->op(1);
+    const bool whole =
+        GiNaC::is_a<GiNaC::numeric>(q) && GiNaC::ex_to<GiNaC::numeric>(q).is_nonneg_integer();
+    const bool base_vanishes = std::abs(At(it->op(0).subs(s_ == 0), zero)) == 0;
+    if (!whole && base_vanishes)
+      Fail(spec_.source, spec.law.line,
+           "law " + spec.name + " = '" + spec.law.text +
+               "' is not smooth at s = 0: a power of s needs a numeric whole exponent >= 0 "
+               "(every slip starts at s = 0)");
+  }
   ex d = law_[c];
   for (int k = 0; k <= 3; ++k, d = d.diff(s_)) {
     double v = NAN;

@@ -1,5 +1,5 @@
-// The tape's recurrences (tape.hpp; ../shared design notes, section 7; Jorba
-// & Zou 2005, section 3.1).
+// The tape's recurrences (tape.hpp; Jorba & Zou 2005, section 3.1;
+// Griewank & Walther 2008, ch. 13).
 #include "model_file/tape.hpp"
 
 #include <algorithm>

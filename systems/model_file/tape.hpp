@@ -1,7 +1,7 @@
 // A tape of elementary operations and their Taylor recurrences (Jorba & Zou
 // 2005, section 3; Griewank & Walther, "Evaluating Derivatives", ch. 13;
-// ../docs/theory.md, "Model files"): a model file's fields, Jacobians and
-// event rows, recorded once from their symbolic form (symbolic.hpp) and run
+// docs/model_files.md): a model file's fields, Jacobians and event rows,
+// recorded once from their symbolic form (recorder.hpp) and run
 // order by order. Inputs are the state's components and the parameters;
 // outputs are nodes. Each operation's k-th coefficient costs O(k).
 #pragma once

@@ -148,10 +148,17 @@ TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
                 {"bad.ini:6", "reads the clock th"});
   ExpectRefused(head + "clock th = v\nclock ph = v\n", {"bad.ini:5", "a second clock"});
   ExpectRefused(head + "x'' = -x + F\ncontact F = x' - v\nlaw F = mu - 0.2*sqrt(s)\n",
-                {"bad.ini:6", "not smooth at s = 0", "derivative of order 1"});
+                {"bad.ini:6", "not smooth at s = 0"});
   ExpectRefused(head + "x'' = -x - F\n" + law, {"bad.ini:5", "pulls its own velocity"});
   ExpectRefused(head + "x'' = -x + F + 1/F\n" + law, {"bad.ini:4", "nonlinearly"});
   ExpectRefused(head + "parameter Pi = 3\n", {"bad.ini:4", "'Pi' is reserved"});
+  ExpectRefused(head + "x'' = -x + F + 0*9^-(9^9)\n" + law,
+                {"bad.ini:4", "a power in an exponent"});
+  ExpectRefused(head + "x'' = -x + F + 0*9^(9*9*9*9)\n" + law,
+                {"bad.ini:4", "must be one number up to 1000"});
+  ExpectRefused(head + "x'' = -x + F\ncontact F = x' - v\nlaw F = mu - 0.1*s^3.5\n",
+                {"bad.ini:6", "numeric whole exponent"});
+  ExpectRefused(head + "x'' = -x + F + 15e500\n" + law, {"bad.ini:4", "'15e500' is beyond"});
   ExpectRefused(head + "x'' = -x + F\n" + law + "normal F = -1\n",
                 {"normal force of contact F is -1"});
   ExpectRefused(
@@ -170,6 +177,8 @@ TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
   EXPECT_TRUE(tu::Contains(r.err, "component 3 (theta) = 1e20")) << r.err;
   r = RunOut("ss_simulate", dir, {"--model", kModels + "forced.ini", "--set", "omega=0"});
   EXPECT_TRUE(tu::Contains(r.err, "the clock theta turns at rate 0")) << r.err;
+  r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--mu_k", "0.3"});
+  EXPECT_TRUE(tu::Contains(r.err, "--mu_k: belt has no parameter mu_k")) << r.err;
   r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--set", "vv=1"});
   EXPECT_TRUE(tu::Contains(r.err, "'vv' is no parameter of belt")) << r.err;
   EXPECT_FALSE(tu::Exists(dir + "/out"));
