@@ -37,6 +37,15 @@ std::vector<Arguments::Setting> Settings(const Arguments& args) {
   return out;
 }
 
+// --model's path; a study file's relative one is read from the study's folder.
+std::string ModelPath(const Arguments& args) {
+  const std::string path = args.Text("model");
+  const bool from_study = args.Source("model").rfind("--", 0) != 0;
+  if (!from_study || path.empty() || path[0] == '/') return path;
+  const std::size_t slash = args.study().find_last_of('/');
+  return slash == std::string::npos ? path : args.study().substr(0, slash + 1) + path;
+}
+
 std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const Params& law,
                               long blocks) {
   if (choice == SystemChoice::kModel) {
@@ -45,7 +54,7 @@ std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const 
         throw UsageError(args.Source(o) + ": the model file " + args.Text("model") +
                          " has its own laws (set its parameters with --set)");
     try {
-      return model_file::ReadModel(args.Text("model"));
+      return model_file::ReadModel(ModelPath(args));
     } catch (const InvalidArgument& e) {
       throw UsageError(args.Source("model") + " " + e.what());
     }

@@ -115,6 +115,24 @@ TEST_F(ModelFileApp, TheChainFileGivesTheBuiltInBranch) {
   ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-7);
 }
 
+// A study file names its model by a path from its own folder
+// (studies/belt_model.ini: model = models/belt.ini), wherever the app runs.
+TEST_F(ModelFileApp, AStudyReadsItsModelFromItsOwnFolder) {
+  const std::string dir = NewDir();
+  const auto r =
+      RunOut("ss_continue", dir, {"--study", STICKSLIP_SOURCE_DIR "/studies/belt_model.ini"});
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const tu::Tsv b = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+  EXPECT_EQ(b.meta.at("system").rfind("belt:", 0), 0u) << b.meta.at("system");
+  EXPECT_GT(b.rows.size(), 200u);
+  const std::string study = dir + "/mine.ini";
+  tu::WriteFile(study, "model = none.ini\n[continue]\nparam = v\nto = 0.3\n");
+  const auto bad = RunOut("ss_continue", NewDir(), {"--study", study});
+  EXPECT_EQ(bad.outcome.code, 2);
+  EXPECT_TRUE(tu::Contains(bad.err, "mine.ini:1")) << bad.err;
+  EXPECT_TRUE(tu::Contains(bad.err, dir + "/none.ini: cannot read the model file")) << bad.err;
+}
+
 TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
   const std::string head = "coordinates = x\nparameter v = 0.25\nparameter mu = 0.4\n";
   const std::string law = "contact F = x' - v\nlaw F = mu\n";
