@@ -229,12 +229,12 @@ int Main(int argc, char** argv) {
   const bool forced = cli::ForcedRequested(args);
   if (forced && args.Flag("orbits")) {
     // A study's [simulate] section is for its trajectory: only the command line's is refused.
-    if (args.Given("section") && args.Source("section").rfind("--", 0) == 0)
+    if (args.OnCommandLine("section"))
       throw cli::UsageError(args.Source("section") +
                             " applies to a trajectory, not to --orbits (a list of orbits)");
     return cli::ForcedOrbitsApp(args, kProg, command);
   }
-  if (forced && args.Given("max_amplitude") && args.Source("max_amplitude").rfind("--", 0) == 0)
+  if (forced && args.OnCommandLine("max_amplitude"))
     throw cli::UsageError(args.Source("max_amplitude") +
                           " bounds a branch or a chart; a trajectory has --max_rows");
   for (const char* name : {"orbits", "max_m"})

@@ -14,6 +14,7 @@
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 #include "stickslip/io/trajectory_report.hpp"
+#include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip::cli {
 
@@ -114,19 +115,12 @@ Scene ChosenScene(const Arguments& args, const std::string& prog, const std::str
   return sc;
 }
 
-// The first clock's period 2 pi / omega (0: none).
-double ClockPeriod(const System& s, const Eigen::VectorXd& z) {
-  if (!s.clocks()) return 0;
-  Eigen::VectorXd f(s.dimension());
-  s.Field(ModeOf(s, z), z, f);
-  return 2 * M_PI / f[s.tangent_dimension()];
-}
-
 Scene SceneOf(const Arguments& args, const std::string& prog, const std::string& command) {
   Scene sc =
       SystemRequested(args) ? ChosenScene(args, prog, command) : ForcedScene(args, prog, command);
   sc.o.section = SectionOf(args, *sc.system);
-  sc.o.period = ClockPeriod(*sc.system, sc.z0);
+  // The clock's period 2 pi / omega, as the one shooting's section takes it (0: none).
+  sc.o.period = sc.system->clocks() ? PoincareSection::Stroboscopic(*sc.system, sc.z0, 1).time : 0;
   if (sc.system->clocks() && !(sc.o.period > 0 && std::isfinite(sc.o.period)))
     throw UsageError("the clock " + sc.system->StateName(sc.system->tangent_dimension()) +
                      " turns at rate " + FormatNumber(2 * M_PI / sc.o.period) +

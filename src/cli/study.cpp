@@ -67,6 +67,10 @@ bool Arguments::Given(const std::string& name) const {
   return it != vm_.end() && !it->second.empty() && !it->second.defaulted();
 }
 
+bool Arguments::OnCommandLine(const std::string& name) const {
+  return Given(name) && origin_.find(name) == origin_.end();
+}
+
 std::string Arguments::Source(const std::string& name) const {
   const auto it = origin_.find(name);
   if (it != origin_.end()) return name + " (" + it->second + ")";

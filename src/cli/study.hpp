@@ -77,6 +77,8 @@ class Arguments {
   const po::variables_map& map() const { return vm_; }
   // Given on the command line or in the study file (a default does not count).
   bool Given(const std::string& name) const;
+  // Given on the command line itself (not by the study file).
+  bool OnCommandLine(const std::string& name) const;
   // Where a given option came from: "--beta" or "beta (studies/seed.ini:7)".
   std::string Source(const std::string& name) const;
   // Just the place: "--beta" or "studies/seed.ini:7".

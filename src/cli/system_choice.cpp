@@ -40,8 +40,7 @@ std::vector<Arguments::Setting> Settings(const Arguments& args) {
 // --model's path; a study file's relative one is read from the study's folder.
 std::string ModelPath(const Arguments& args) {
   const std::string path = args.Text("model");
-  const bool from_study = args.Source("model").rfind("--", 0) != 0;
-  if (!from_study || path.empty() || path[0] == '/') return path;
+  if (args.OnCommandLine("model") || path.empty() || path[0] == '/') return path;
   const std::size_t slash = args.study().find_last_of('/');
   return slash == std::string::npos ? path : args.study().substr(0, slash + 1) + path;
 }

@@ -36,6 +36,7 @@ class Compiler {
   void Solve(const std::vector<ex>& rates, const std::vector<int>& sticking,
              std::vector<ex>* lambdas, bool* consistent) const;
   ex Rate(int t, const GiNaC::exmap& forces) const;  // f_t with the forces substituted
+  ex VelocityRate(std::size_t c, const GiNaC::exmap& forces) const;  // h_c' = sum dh_c/dz_t f_t
   void Mode(int index);
   void Record(ModeProgram& p, const std::vector<ex>& field, const std::vector<ex>& aux,
               const std::vector<ex>& lambdas);

@@ -190,10 +190,7 @@ void Compiler::CheckLinearInForces() {
     if (!used)
       Fail(spec_.source, spec_.contacts[c].velocity.line,
            "the force " + name + " appears in no equation");
-    ex h_rate = 0;
-    for (std::size_t t = 0; t < state_.size(); ++t)
-      h_rate += velocity_[c].diff(state_[t]) * Rate(t, GiNaC::exmap());
-    const double own = At(h_rate.diff(forces_[c]), zero);
+    const double own = At(VelocityRate(c, GiNaC::exmap()).diff(forces_[c]), zero);
     if (!(own > 0))
       Fail(spec_.source, spec_.contacts[c].velocity.line,
            "the force " + name +
@@ -204,6 +201,13 @@ void Compiler::CheckLinearInForces() {
                               name + ")"
                         : "' (it cannot hold it at 0 in stick)"));
   }
+}
+
+ex Compiler::VelocityRate(std::size_t c, const GiNaC::exmap& forces) const {
+  ex rate = 0;
+  for (std::size_t t = 0; t < state_.size(); ++t)
+    rate += velocity_[c].diff(state_[t]) * Rate(static_cast<int>(t), forces);
+  return rate;
 }
 
 ex Compiler::Rate(int t, const GiNaC::exmap& forces) const {

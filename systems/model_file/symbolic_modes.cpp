@@ -133,12 +133,7 @@ void Compiler::Mode(int index) {
     forces[forces_[c]] = sigma * normal_[c] * law_[c].subs(s_ == -sigma * velocity_[c]);
   }
   std::vector<ex> rates;  // h_c' = sum_t dh_c/dz_t f_t, linear in the sticking forces
-  for (int c : sticking) {
-    ex rate = 0;
-    for (std::size_t t = 0; t < state_.size(); ++t)
-      rate += velocity_[c].diff(state_[t]) * Rate(static_cast<int>(t), forces);
-    rates.push_back(rate);
-  }
+  for (int c : sticking) rates.push_back(VelocityRate(c, forces));
   std::vector<ex> lambdas;
   Solve(rates, sticking, &lambdas, &p.consistent);
   if (!p.consistent) return;  // singular: the stick forces are not determined
