@@ -28,7 +28,7 @@ struct PySteadyBranch {
 struct PySettled {
   bool found = false, stable = false;
   std::string message;
-  int contact = 0, returns = 0, stick_exits = 0, sticks = 0;
+  int contact = 0, returns = 0, turns = 0, stick_exits = 0, sticks = 0;
   py::array start, multipliers;
   double period = 0;
 };
@@ -97,7 +97,10 @@ PySettled SettlePy(const py::object& system, const Eigen::VectorXd& state, doubl
   none.attr("setflags")(py::arg("write") = false);
   out.multipliers = std::move(none);
   if (!r.found) return out;
-  out.contact = r.section.contact, out.returns = r.section.returns;
+  if (r.section.kind == SectionKind::kTime)
+    out.turns = r.section.turns;
+  else
+    out.contact = r.section.contact, out.returns = r.section.returns;
   out.period = r.orbit.period, out.stable = r.orbit.stable, out.sticks = r.orbit.sticks;
   out.start = ReadOnly(
       std::vector<double>(r.orbit.start.z.data(), r.orbit.start.z.data() + r.orbit.start.z.size()));
@@ -129,11 +132,14 @@ void BindSystemBranch(py::module_& m) {
   py::class_<S>(m, "SettledOrbit",
                 "Result of settle(): the stick-slip orbit a run settles on (found), on the stick "
                 "exit of `contact` closing after `returns` exits: system_orbit(system, start, "
-                "m=returns, contact=contact) and continue_orbits take the same section.")
+                "m=returns, contact=contact) and continue_orbits take the same section. A system "
+                "with a clock: the periodic orbit of its stroboscopic map, `turns` clock turns "
+                "(returns 0).")
       .def_readonly("found", &S::found)
       .def_readonly("message", &S::message)
       .def_readonly("contact", &S::contact)
       .def_readonly("returns", &S::returns)
+      .def_readonly("turns", &S::turns)
       .def_readonly("stick_exits", &S::stick_exits)
       .def_readonly("start", &S::start)
       .def_readonly("period", &S::period)
@@ -149,7 +155,8 @@ void BindSystemBranch(py::module_& m) {
         py::arg("max_returns") = 32, py::arg("rtol") = none, py::arg("atol") = none,
         "The stick-slip orbit a run of an autonomous system from `state` settles on after "
         "`transient` time units, refined by Newton on its stick-exit section (C++ "
-        "SettleOnStickSlip); found False with the reason in message otherwise.");
+        "SettleOnStickSlip); with a clock, the periodic orbit its stroboscopic map settles on; "
+        "found False with the reason in message otherwise.");
 }
 
 }  // namespace stickslip::python

@@ -952,6 +952,7 @@ class SettledOrbit:
     message: str
     contact: int
     returns: int
+    turns: int
     stick_exits: int
     start: Array
     period: float

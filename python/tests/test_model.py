@@ -42,6 +42,32 @@ class ModelSystem(unittest.TestCase):
         self.assertLess(np.max(np.abs(a.p - b.p)), 1e-12)
         self.assertLess(np.max(np.abs(a.period - b.period)), 1e-12)
 
+    def test_a_forced_file_settles_on_its_stroboscopic_map(self):
+        """forced.ini (a clock): settle finds the periodic orbit of the stroboscopic map,
+        turns clock turns long, which a plain run at a tighter tolerance closes."""
+        forced = stickslip.System.from_file(os.path.join(MODELS, "forced.ini"))
+        forced["omega"] = 1.0
+        s = stickslip.settle(forced, [0.01, 0.0, 0.0])
+        self.assertTrue(s.found, s.message)
+        self.assertEqual((s.turns, s.returns), (1, 0))
+        self.assertAlmostEqual(s.period, 2 * np.pi, delta=1e-12)
+        run = stickslip.simulate(forced, s.start, t_end=s.period, dt=s.period, rtol=1e-13,
+                                 atol=1e-13)
+        np.testing.assert_allclose(run.z[-1][:2], s.start[:2], atol=1e-9)
+
+    def test_the_drill_strings_steady_rotation_slips_above(self):
+        """drill_string.ini (first-order states): steady rotation has the bit slipping above
+        its contact velocity 0, at T_m = (c_r + c_b) w + W_ob R_b mu(w)."""
+        drill = stickslip.System.from_file(os.path.join(MODELS, "drill_string.ini"))
+        self.assertEqual(drill.state_names, ["phi", "w_r", "w_b"])
+        rest = stickslip.steady_sliding(drill)
+        w = rest.z[2]
+        p = drill.parameters
+        mu = p["mu_cb"] + (p["mu_sb"] - p["mu_cb"]) * np.exp(-p["gamma_b"] * w)
+        self.assertAlmostEqual((p["c_r"] + p["c_b"]) * w + p["W_ob"] * p["R_b"] * mu, p["T_m"],
+                               delta=1e-8)
+        self.assertGreater(w, 0)
+
     def test_bad_text_and_values_are_refused_by_name(self):
         with self.assertRaisesRegex(stickslip.InvalidArgument, r"mine.ini:2: .*unknown name \"q\""):
             stickslip.System.from_text("coordinates = x\nx'' = -x + F + q\ncontact F = x'\n"

@@ -153,11 +153,17 @@ SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
   return SettleOnStickSlip(*at, NearSteadySliding(*at, s.disturbance), o);
 }
 
-// A restart's orbit, as if settled on: its point and section.
-SettledOrbit AtPoint(const SystemPoint& sp) {
+// A restart's orbit, as if settled on: its point and section (a clock's:
+// its turns at the point's parameters).
+SettledOrbit AtPoint(const SystemSetup& s, const SystemPoint& sp) {
   SettledOrbit o;
   o.found = true;
   o.section = sp.section;
+  if (sp.section.kind == SectionKind::kTime) {
+    std::unique_ptr<System> at = s.system->Clone();
+    at->SetParameterValue(s.param, s.start_at);
+    o.section = PoincareSection::Stroboscopic(*at, sp.start.z, sp.section.turns);
+  }
   o.orbit.start = sp.start;
   o.orbit.period = sp.period;
   return o;
@@ -235,15 +241,20 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
                {"to", FormatNumber(s.to)},
                {"start_at", FormatNumber(s.start_at)},
                {"orbit", s.restart       ? std::string("the restart point's orbit, no settling")
-                         : settled.found ? "the attractor settled on from steady sliding + " +
-                                               FormatNumber(s.disturbance) + " after " +
+                         : settled.found ? "the attractor settled on from " +
+                                               std::string(s.system->clocks() ? "the origin"
+                                                                              : "steady sliding") +
+                                               " + " + FormatNumber(s.disturbance) + " after " +
                                                FormatNumber(s.settle.transient) + " time units"
                                          : "none: " + NoOrbit(settled)},
                {"rtol", FormatNumber(s.flow.rtol)},
                {"atol", FormatNumber(s.flow.atol)},
                {"steady_status", Name(r.steady.status)}});
-  const int returns = settled.section.returns * (s.doubled ? 2 : 1);  // ContinueDoubled's
-  const PoincareSection section = PoincareSection::StickExit(settled.section.contact, returns);
+  PoincareSection section = settled.section;  // ContinueDoubled's: twice the returns or turns
+  if (section.kind == SectionKind::kTime)
+    section.turns *= s.doubled ? 2 : 1;
+  else
+    section = PoincareSection::StickExit(section.contact, section.returns * (s.doubled ? 2 : 1));
   AddRestartMetadata(*s.system, s.choice, s.law, s.flow, s.max_amplitude,
                      settled.found ? &section : nullptr, meta);
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
@@ -256,8 +267,10 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
 void PrintSummary(const std::string& prog, const std::string& model, const SystemSetup& s,
                   const SystemRun& r, const SettledOrbit& settled) {
   std::cout << prog << ": " << model << ", from " << FormatNumber(s.from) << " to "
-            << FormatNumber(s.to) << "\nsteady sliding: " << r.steady.rows.size() << " rows, "
-            << Name(r.steady.status) << "\n";
+            << FormatNumber(s.to) << "\n";
+  if (s.system->clocks() == 0)
+    std::cout << "steady sliding: " << r.steady.rows.size() << " rows, " << Name(r.steady.status)
+              << "\n";
   if (!settled.found)
     std::cerr << prog << ": note: no stick-slip orbit: " << NoOrbit(settled) << "\n";
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
@@ -286,10 +299,13 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   SteadyBranchOptions so;
   so.points = static_cast<int>(std::ceil(1 / s.max_step)) + 1;
   so.cancelled = [&run] { return run.Cancelled(); };
-  r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
+  if (s.system->clocks() == 0)  // a forcing has no rest point
+    r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
+  else
+    r.steady.status = BranchStatus::kReachedEnd;
   run.Phase("settling");
   const SettledOrbit settled = run.Cancelled() ? SettledOrbit()
-                               : s.restart     ? AtPoint(*s.restart)
+                               : s.restart     ? AtPoint(s, *s.restart)
                                                : Settle(s, run);
   run.Phase("continuing");
   const bool fold = s.restart && s.restart->type == "LP";

@@ -64,6 +64,10 @@ void AddRestartMetadata(const System& s, SystemChoice choice, const Params& law,
                            {"max_steps", std::to_string(flow.max_steps)},
                            {"max_amplitude", FormatNumber(max_amplitude)}});
   if (!section) return;
+  if (section->kind == SectionKind::kTime) {  // a clock's: m turns
+    meta.emplace_back("section_turns", std::to_string(section->turns));
+    return;
+  }
   meta.insert(meta.end(), {{"section_contact", std::to_string(section->contact)},
                            {"section_returns", std::to_string(section->returns)}});
 }

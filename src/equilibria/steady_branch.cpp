@@ -35,7 +35,7 @@ bool Locate(System& s, int j, const SteadyRow& a, const SteadyRow& b, const Stea
   for (int i = 0; i < Tolerances::kBranchBisectionCap; ++i) {
     mid.p = 0.5 * (lo + hi);
     s.SetParameterValue(j, mid.p);
-    mid.state = SteadySliding(s);
+    mid.state = SteadySliding(s, a.state);
     if (!mid.state.found || mid.state.eigenvalues.empty()) return false;
     ((mid.state.max_real < 0) == lo_negative ? lo : hi) = mid.p;
     if (std::abs(hi - lo) <= o.locate_tol * (1 + std::abs(lo))) break;
@@ -93,7 +93,7 @@ SteadyBranch ContinueSteadySliding(const System& system, int parameter, double t
       out.message = "at " + name + " = " + Num(row.p, 12) + ": " + invalid;
       break;
     }
-    row.state = SteadySliding(*s);
+    row.state = out.rows.empty() ? SteadySliding(*s) : SteadySliding(*s, out.rows.back().state);
     double normal = 0;
     const int open = row.state.found ? OpenContact(*s, row.state, &normal) : -1;
     if (!row.state.found || open >= 0) {

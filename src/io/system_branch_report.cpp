@@ -17,7 +17,7 @@ std::vector<SystemLine> SystemLines(const System& s, const SystemRun& run) {
   for (const SteadyRow& r : run.steady.rows) {
     SystemLine l;
     l.p = r.p, l.kind = "equilibrium", l.lo = l.hi = l.z0 = r.state.z.head(s.tangent_dimension());
-    l.z0 = r.state.z;
+    l.z0 = r.state.z, l.mode = r.state.mode;
     l.max_real = r.state.max_real, l.stable = r.state.stable();
     l.label = r.label, l.description = r.description;
     out.push_back(std::move(l));

@@ -78,9 +78,14 @@ void ReadRun(const Table& t, SystemPoint* sp) {
   sp->max_amplitude = t.MetaFinite("max_amplitude");
   if (!(sp->max_amplitude > 0))
     throw Corrupt(t, "max_amplitude = '" + t.Meta("max_amplitude") + "' must be > 0");
-  const auto contact = t.MetaWhole("section_contact", 0, ModeSet::kMaxContacts - 1);
-  const auto returns = t.MetaWhole("section_returns", 1, kMaxReturns);
-  sp->section = PoincareSection::StickExit(static_cast<int>(contact), static_cast<int>(returns));
+  if (t.meta.count("section_turns")) {  // a clock's: its time set where the system is known
+    sp->section.kind = SectionKind::kTime;
+    sp->section.turns = static_cast<int>(t.MetaWhole("section_turns", 1, kMaxReturns));
+  } else {
+    const auto contact = t.MetaWhole("section_contact", 0, ModeSet::kMaxContacts - 1);
+    const auto returns = t.MetaWhole("section_returns", 1, kMaxReturns);
+    sp->section = PoincareSection::StickExit(static_cast<int>(contact), static_cast<int>(returns));
+  }
   sp->run_from = t.MetaFinite("from");
   sp->run_to = t.MetaFinite("to");
   if (sp->run_from == sp->run_to)

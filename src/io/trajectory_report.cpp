@@ -41,17 +41,21 @@ void Portrait(std::ostringstream& os, const System& s, const std::string& ts,
      << Q(s.contacts() > 1 ? "contact 1 sticking" : "sticking") << "\n";
 }
 
-// The displacements against t (one: it and its rate), over the last
-// kShownPeriods periods of a clock.
+// The displacements against t (one: it and its rate; none, as a model of
+// first-order states: every state), over the last kShownPeriods periods of a
+// clock.
 void TimeSeries(std::ostringstream& os, const System& s, const TrajectoryFigure& f) {
   std::vector<int> shown;
   for (int i = 0; i < s.tangent_dimension(); ++i)
     if (s.DerivativeOf(i) >= 0) shown.push_back(i);
-  const bool one = shown.size() == 1;
+  const bool states = shown.empty();
+  for (int i = 0; states && i < s.tangent_dimension(); ++i) shown.push_back(i);
+  const bool one = shown.size() == 1 && !states;
   if (one) shown.push_back(s.DerivativeOf(shown[0]));
   os << "set xlabel 'time t'\nset ylabel "
-     << Q(one ? EnhancedText(s.StateName(shown[0]) + ", " + s.StateName(shown[1]))
-              : "displacements")
+     << Q(one      ? EnhancedText(s.StateName(shown[0]) + ", " + s.StateName(shown[1]))
+          : states ? "states"
+                   : "displacements")
      << "\n";
   // Without a clock: the last kShownPeriods periods 2 pi of the dimensionless
   // oscillator (unit natural frequency).
@@ -73,7 +77,10 @@ void TimeSeries(std::ostringstream& os, const System& s, const TrajectoryFigure&
     const bool rate = one && k == 1;
     os << (k ? ", \\\n     " : "") << "'trajectory.tsv' using 't':'" << StateColumn(s, i)
        << "' with lines lw 1.5 lc rgb '" << SeriesColor(k) << "' title "
-       << Q(EnhancedText((rate ? "velocity " : "displacement ") + s.StateName(i)));
+       << Q(EnhancedText((states ? ""
+                          : rate ? "velocity "
+                                 : "displacement ") +
+                         s.StateName(i)));
   }
   os << "\nunset multiplot\nset autoscale x\n";
 }

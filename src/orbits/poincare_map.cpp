@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "numerics/numbers.hpp"
+#include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/switching.hpp"
 #include "stickslip/orbits/shooting.hpp"
@@ -102,6 +103,16 @@ bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jaco
                           " components, the system " + std::to_string(s.dimension()));
   FlowPoint at = z;
   if (section.kind == SectionKind::kTime) at.mode = ModeOf(s, at.z);
+  // A start on a stick exit within rounding of its contact's surface lies on
+  // it: a corrector's rounding (h = -5e-39 for a contact speed of 0) would
+  // arrive at once and close a cycle of period 1e-20 through stick (a drill
+  // bit, docs/model_files.md). Farther off (a parameter moved under a fixed
+  // start), the map starts where it is given.
+  if (section.kind == SectionKind::kStickExit) {
+    const ContactVelocity h = s.Contact(section.contact);
+    if (std::abs(h.At(at.z.data())) <= Tolerances::kEventRounding * (1 + std::abs(h.speed)))
+      OntoSurface(h, at.z);
+  }
   Prepare(at, section, jacobian, true);
   if (!Evaluate(at, section, orbit)) return false;
   if (jacobian) {

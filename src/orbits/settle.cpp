@@ -30,6 +30,70 @@ int Recurrence(const std::vector<FlowSwitch>& exits, int max, double* closest) {
   return 0;
 }
 
+// A system with a clock: its state at every clock turn (the stroboscopic
+// map), kept for the last max_returns + 1 turns; the least m for which the
+// point m turns back is within kSettleRecur of the last (the tangent block:
+// the clock has turned) gives Stroboscopic(m) and Shooting::Find's guess.
+SettledOrbit SettleStroboscopic(const System& system, const Eigen::VectorXd& z0,
+                                const SettleOptions& options) {
+  SettledOrbit out;
+  Shooting shooting(system, options.shooting);
+  Flow& flow = shooting.flow();
+  if (options.cancelled) flow.set_cancel(options.cancelled);
+  const int nt = system.tangent_dimension(), clock = system.dimension() - 1;
+  const double turn = PoincareSection::Stroboscopic(system, z0, 1).time;
+  const long turns = std::max(1L, std::lround(std::ceil(options.transient / turn)));
+  std::vector<Eigen::VectorXd> kept;
+  FlowRequest req;
+  req.max_steps = options.shooting.max_steps;  // per turn
+  FlowRun run;
+  run.end = FlowPoint{0, z0, ModeOf(system, z0)};
+  for (long k = 1; k <= turns; ++k) {
+    req.t_max = k * turn;
+    const FlowPoint from = run.end;
+    flow.Run(from, req, &run);
+    out.stick_exits += run.exits;
+    if (run.status != FlowStatus::kTimeLimit) break;
+    kept.push_back(run.end.z);
+    if (kept.size() > static_cast<std::size_t>(options.max_returns) + 1) kept.erase(kept.begin());
+  }
+  out.run = run.status;
+  if (run.status != FlowStatus::kTimeLimit) {
+    out.message = run.status == FlowStatus::kCancelled
+                      ? "cancelled"
+                      : "the settling run ended " + std::string(Name(run.status)) +
+                            " at t = " + Num(run.end.t) +
+                            (run.message.empty() ? "" : ": " + run.message);
+    return out;
+  }
+  const Eigen::VectorXd& last = kept.back();
+  const double scale = 1 + last.head(nt).lpNorm<Eigen::Infinity>();
+  double closest = INFINITY;
+  int m = 0;
+  const int n = static_cast<int>(kept.size());
+  for (int r = 1; r < n && m == 0; ++r) {
+    const double d = (kept[n - 1 - r] - last).head(nt).lpNorm<Eigen::Infinity>() / scale;
+    closest = std::min(closest, d);
+    if (d <= Tolerances::kSettleRecur) m = r;
+  }
+  if (m == 0) {
+    out.message = "no clock-turn point recurs within " + std::to_string(options.max_returns) +
+                  " turns (closest " + Num(closest, 3) + "): not settled, or not periodic";
+    return out;
+  }
+  // At theta = 0 (the turns' phase is 2 pi k to rounding): Newton refines the rest.
+  FlowPoint start{0, last, run.end.mode};
+  start.z[clock] = 0;
+  out.recurred = true;
+  out.section = PoincareSection::Stroboscopic(system, start.z, m);
+  out.orbit = shooting.Find(start, out.section);
+  out.found = out.orbit.ok();
+  if (!out.found)
+    out.message = "Newton from the settled clock-turn point failed (" +
+                  std::string(Name(out.orbit.status)) + "): " + out.orbit.message;
+  return out;
+}
+
 }  // namespace
 
 std::string SettleOptions::ValidationError() const {
@@ -42,11 +106,13 @@ std::string SettleOptions::ValidationError() const {
 SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
                                const SettleOptions& options) {
   std::string e = options.ValidationError();
-  if (e.empty() && system.clocks() > 0)
-    e = "the system has a clock: its orbits are found on a stroboscopic section";
+  if (e.empty() && system.clocks() > 1)
+    e = "the system has " + std::to_string(system.clocks()) +
+        " clocks: no one stroboscopic section";
   if (e.empty() && (z0.size() != system.dimension() || !z0.allFinite()))
     e = "the start must have " + std::to_string(system.dimension()) + " finite components";
   if (!e.empty()) throw InvalidArgument(e);
+  if (system.clocks() == 1) return SettleStroboscopic(system, z0, options);
   SettledOrbit out;
   Shooting shooting(system, options.shooting);
   Flow& flow = shooting.flow();

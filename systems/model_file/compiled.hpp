@@ -41,6 +41,7 @@ struct Compiled {
   std::string source, name;
   int n = 0, k = 0, clocks = 0;  ///< the clock, if any, is the last state component
   std::vector<std::string> state_names, parameters;
+  std::vector<int> derivative_of;  ///< per component: x -> the index of x', else -1
   std::vector<double> defaults;
   std::vector<ModeProgram> modes;  ///< index sum_c mode_c 3^c (Mode's order)
   /// Parameter-only (and state-linear) quantities: per contact the velocity
@@ -52,6 +53,8 @@ struct Compiled {
   std::vector<std::string> contact_names;
   std::vector<int> static_lines;  ///< the static line, else the law's
   std::vector<Denominator> denominators;
+  /// The clock's rate (clocks: a node of the contact tape; it must be > 0).
+  Denominator clock_rate{-1, 0, ""};
 };
 
 /// A number for messages: %.12g.

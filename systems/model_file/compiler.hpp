@@ -43,6 +43,7 @@ class Compiler {
 
   const ModelSpec& spec_;
   std::vector<GiNaC::symbol> state_, params_, forces_;
+  std::vector<int> equation_of_;  // per state component but the clock: its equation, -1: x -> x'
   GiNaC::symbol s_{"s"};
   std::vector<ex> eq_, velocity_, law_, normal_, static_;
   ex clock_rate_;  // the clock's frequency (parameters only)

@@ -64,26 +64,35 @@ class Reader {
     Fail(spec_.source, line,
          key + " " + name + ": no contact " + name + " (declare it: contact " + name + " = ...)");
   }
-  void Coordinates(const std::string& value, int line);
+  void Coordinates(const std::string& value, int line, int order);
   void Parameter(const std::vector<std::string>& words, const std::string& value, int line);
   void Contact(const std::vector<std::string>& words, const std::string& value, int line);
 
   ModelSpec spec_;
   std::vector<std::string> names_;
   std::vector<std::pair<std::string, Located>> equations_;
+  std::vector<int> equation_orders_;
 };
 
-void Reader::Coordinates(const std::string& value, int line) {
-  if (spec_.coordinates_line)
+// `coordinates = x, y` (order 2: x'' = ...) or `states = w` (order 1:
+// w' = ...); the coordinates come first in the state.
+void Reader::Coordinates(const std::string& value, int line, int order) {
+  int& first = order == 2 ? spec_.coordinates_line : spec_.states_line;
+  const char* key = order == 2 ? "coordinates" : "states";
+  if (first)
     Fail(spec_.source, line,
-         "a second coordinates line (the first: line " + std::to_string(spec_.coordinates_line) +
-             ")");
-  spec_.coordinates_line = line;
+         std::string("a second ") + key + " line (the first: line " + std::to_string(first) + ")");
+  first = line;
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < spec_.orders.size() && spec_.orders[i] == 2; ++i) at = i + 1;
+  if (order == 1) at = spec_.orders.size();
   std::string item;
   std::istringstream is(value);
   while (std::getline(is, item, ',')) {
     Name(Trim(item), line);
-    spec_.coordinates.push_back(Trim(item));
+    spec_.coordinates.insert(spec_.coordinates.begin() + static_cast<long>(at), Trim(item));
+    spec_.orders.insert(spec_.orders.begin() + static_cast<long>(at), order);
+    ++at;
   }
 }
 
@@ -128,12 +137,16 @@ void Reader::Line(const std::string& raw, int line) {
   if (key.empty()) Fail(spec_.source, line, "no key before '='");
   if (value.empty()) Fail(spec_.source, line, key + ": no value after '='");
   const std::vector<std::string> words = Words(key);
-  if (key.size() > 2 && key.compare(key.size() - 2, 2, "''") == 0) {
-    equations_.push_back({Trim(key.substr(0, key.size() - 2)), {value, line}});
+  const int primes = key.size() > 2 && key.compare(key.size() - 2, 2, "''") == 0 ? 2
+                     : key.size() > 1 && key.back() == '\''                      ? 1
+                                                                                 : 0;
+  if (primes) {
+    equations_.push_back({Trim(key.substr(0, key.size() - primes)), {value, line}});
+    equation_orders_.push_back(primes);
   } else if (key == "name") {
     spec_.name = value;
-  } else if (key == "coordinates") {
-    Coordinates(value, line);
+  } else if (key == "coordinates" || key == "states") {
+    Coordinates(value, line, key == "coordinates" ? 2 : 1);
   } else if (words[0] == "clock") {
     if (words.size() != 2) Fail(spec_.source, line, "expected: clock NAME = RATE");
     if (!spec_.clock.empty()) Fail(spec_.source, line, "a second clock (one forcing phase only)");
@@ -148,31 +161,44 @@ void Reader::Line(const std::string& raw, int line) {
   } else {
     Fail(spec_.source, line,
          "unknown key '" + key +
-             "' (expected name, coordinates, parameter P, X'', contact F, law F, normal F, "
-             "static F or clock T)");
+             "' (expected name, coordinates, states, parameter P, X'', W', contact F, law F, "
+             "normal F, static F or clock T)");
   }
 }
 
 ModelSpec Reader::Finish() {
-  if (spec_.coordinates.empty()) Fail(spec_.source, 0, "no 'coordinates = x, ...' line");
+  if (spec_.coordinates.empty())
+    Fail(spec_.source, 0, "no 'coordinates = x, ...' or 'states = w, ...' line");
   spec_.equations.assign(spec_.coordinates.size(), Located());
-  for (const auto& [who, e] : equations_) {
+  auto lhs = [](const std::string& who, int order) { return who + std::string(order, '\''); };
+  for (std::size_t q = 0; q < equations_.size(); ++q) {
+    const auto& [who, e] = equations_[q];
+    const int order = equation_orders_[q];
     std::size_t i = 0;
     while (i < spec_.coordinates.size() && spec_.coordinates[i] != who) ++i;
     if (i == spec_.coordinates.size())
-      Fail(spec_.source, e.line, who + "'' = ...: '" + who + "' is not a coordinate");
+      Fail(spec_.source, e.line,
+           lhs(who, order) + " = ...: '" + who + "' is not a " +
+               (order == 2 ? "coordinate" : "state (declare it: states = " + who + ")"));
+    if (spec_.orders[i] != order)
+      Fail(spec_.source, e.line,
+           lhs(who, order) + " = ...: " + who + " is a " +
+               (spec_.orders[i] == 2 ? "coordinate: write " : "first-order state: write ") +
+               lhs(who, spec_.orders[i]) + " = ...");
     if (spec_.equations[i].line)
       Fail(spec_.source, e.line,
-           "a second equation for " + who + "'' (the first: line " +
+           "a second equation for " + lhs(who, order) + " (the first: line " +
                std::to_string(spec_.equations[i].line) + ")");
     spec_.equations[i] = e;
   }
   for (std::size_t i = 0; i < spec_.coordinates.size(); ++i)
     if (!spec_.equations[i].line)
-      Fail(spec_.source, spec_.coordinates_line,
-           "no equation " + spec_.coordinates[i] + "'' = ... for coordinate " +
-               spec_.coordinates[i] + " (" + std::to_string(spec_.coordinates.size()) +
-               " coordinates, " + std::to_string(equations_.size()) + " equations)");
+      Fail(spec_.source, spec_.orders[i] == 2 ? spec_.coordinates_line : spec_.states_line,
+           "no equation " + lhs(spec_.coordinates[i], spec_.orders[i]) + " = ... for " +
+               (spec_.orders[i] == 2 ? "coordinate " : "state ") + spec_.coordinates[i] + " (" +
+               std::to_string(spec_.coordinates.size()) +
+               (spec_.states_line ? " coordinates and states, " : " coordinates, ") +
+               std::to_string(equations_.size()) + " equations)");
   if (spec_.contacts.empty()) Fail(spec_.source, 0, "no 'contact F = ...' line");
   for (const ContactSpec& c : spec_.contacts)
     if (!c.law.line) Fail(spec_.source, c.velocity.line, "contact " + c.name + " has no law line");

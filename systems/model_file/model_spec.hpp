@@ -22,12 +22,15 @@ struct ContactSpec {
 struct ModelSpec {
   std::string source;  ///< the file, for messages
   std::string name;    ///< `name = ...`, else the file's stem
+  /// The coordinates x (each gives the state x, x'), then the first-order
+  /// states w (`states = w`: the state w alone), in declaration order.
   std::vector<std::string> coordinates;
-  int coordinates_line = 0;
+  std::vector<int> orders;  ///< per name: 2 (x'' = ...) or 1 (w' = ...)
+  int coordinates_line = 0, states_line = 0;
   std::vector<std::string> parameters;
   std::vector<double> defaults;
   std::vector<int> parameter_lines;
-  std::vector<Located> equations;  ///< one per coordinate, in their order
+  std::vector<Located> equations;  ///< one per name of `coordinates`, in their order
   std::vector<ContactSpec> contacts;
   std::string clock;  ///< `clock theta = omega`: a phase state theta' = omega (empty: none)
   Located clock_rate;

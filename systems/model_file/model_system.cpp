@@ -60,6 +60,12 @@ std::string ModelSystem::ValidationError() const {
     if (!(contact_values_[d.node] != 0) || !std::isfinite(contact_values_[d.node]))
       return UnmangleRates(d.text) + " = " + Number(contact_values_[d.node]) + " divides (" +
              c_->source + ":" + std::to_string(d.line) + ")";
+  if (c_->clocks) {
+    const double rate = contact_values_[c_->clock_rate.node];
+    if (!(rate > 0) || !std::isfinite(rate))
+      return "the clock's rate " + c_->clock_rate.text + " = " + Number(rate) + " (" + c_->source +
+             ":" + std::to_string(c_->clock_rate.line) + ") must be > 0";
+  }
   for (int i = 0; i < c_->k; ++i)
     if (!c_->normal_varies[i] && !(-normal_[i].speed > 0 && std::isfinite(normal_[i].speed)))
       return "the normal force of contact " + c_->contact_names[i] + " is " +
@@ -144,11 +150,11 @@ void ModelSystem::StickForceGradient(const ModeSet& m, int i, ConstState z, Stat
   for (int u = 0; u < c_->n; ++u) g[u] = v[grad[u]];
 }
 
-bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
-  if (m.AnySticks() || c_->clocks) return false;  // a forcing has no rest point
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(c_->n), f(c_->n);
+// Newton on f(x) = 0 from x; true if it converged to a finite point.
+bool ModelSystem::Newton(const ModeSet& m, Eigen::VectorXd& x) const {
+  Eigen::VectorXd f(c_->n);
   Eigen::MatrixXd J(c_->n, c_->n);
-  for (int it = 0; it < 50; ++it) {  // Newton on f(x) = 0
+  for (int it = 0; it < 50; ++it) {
     Field(m, x, f);
     Jacobian(m, x, J);
     const Eigen::VectorXd dx = J.fullPivLu().solve(-f);
@@ -157,17 +163,46 @@ bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
     if (dx.lpNorm<Eigen::Infinity>() <= 1e-14 * (1 + x.lpNorm<Eigen::Infinity>())) break;
   }
   Field(m, x, f);
-  if (!x.allFinite() || f.lpNorm<Eigen::Infinity>() > 1e-10 * (1 + x.lpNorm<Eigen::Infinity>()))
-    return false;
-  for (int c = 0; c < c_->k; ++c) {  // on the mode's side of every contact
-    const double h = velocity_[c].At(x.data());
-    if ((m[c] == Mode::kSlipBelow && !(h < 0)) || (m[c] == Mode::kSlipAbove && !(h > 0)))
-      return false;
+  return x.allFinite() && f.lpNorm<Eigen::Infinity>() <= 1e-10 * (1 + x.lpNorm<Eigen::Infinity>());
+}
+
+// Newton from the guess z, if any (the first rest point on the mode's side
+// of every contact from there); else from the state 0 and from states that
+// put every contact's velocity on the mode's side at 0.01 ... 100 (a
+// Stribeck law's field may lead Newton from 0 to the root on the other side,
+// and a drill's steady rotations come in pairs): the first stable one, else
+// the first.
+bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
+  if (m.AnySticks() || c_->clocks) return false;  // a forcing has no rest point
+  bool found = false;
+  Eigen::MatrixXd J(c_->n, c_->n);
+  const Eigen::VectorXd guess = z;
+  const bool near = guess.allFinite() && guess.any();
+  for (int start = near ? -1 : 0; start <= 5; ++start) {
+    Eigen::VectorXd x = start < 0 ? guess : Eigen::VectorXd::Zero(c_->n);
+    for (int c = 0; start > 0 && c < c_->k; ++c) {
+      const ContactVelocity& h = velocity_[c];
+      double norm = 0;
+      for (int t = 0; t < h.size; ++t) norm += h.terms[t].weight * h.terms[t].weight;
+      const double side = m[c] == Mode::kSlipAbove ? 1 : -1;
+      const double shift = (side * std::pow(10.0, start - 3) - h.At(x.data())) / norm;
+      for (int t = 0; t < h.size; ++t) x[h.terms[t].index] += shift * h.terms[t].weight;
+    }
+    if (!Newton(m, x)) continue;
+    bool side = true;
+    for (int c = 0; c < c_->k; ++c) {
+      const double h = velocity_[c].At(x.data());
+      side = side &&
+             !((m[c] == Mode::kSlipBelow && !(h < 0)) || (m[c] == Mode::kSlipAbove && !(h > 0)));
+    }
+    if (!side) continue;
+    Jacobian(m, x, J);
+    const bool here = J.eigenvalues().real().maxCoeff() < 0;
+    if (!found || here) z = x, *stable = here;
+    found = true;
+    if (here || start < 0) break;
   }
-  Jacobian(m, x, J);
-  *stable = J.eigenvalues().real().maxCoeff() < 0;
-  z = x;
-  return true;
+  return found;
 }
 
 std::string ModelName(const System& s) {

@@ -31,9 +31,7 @@ class ModelSystem final : public System {
   int contacts() const override { return c_->k; }
   int clocks() const override { return c_->clocks; }
   std::string StateName(int i) const override { return c_->state_names[i]; }
-  int DerivativeOf(int i) const override {
-    return i % 2 == 0 && i < tangent_dimension() ? i + 1 : -1;
-  }
+  int DerivativeOf(int i) const override { return c_->derivative_of[i]; }
 
   ContactVelocity Contact(int i) const override { return velocity_[i]; }
   std::optional<ContactVelocity> NormalForce(int i) const override;
@@ -61,6 +59,7 @@ class ModelSystem final : public System {
 
   std::shared_ptr<const Compiled> c_;
   std::vector<double> p_;
+  bool Newton(const ModeSet& m, Eigen::VectorXd& x) const;
   std::vector<ContactVelocity> velocity_, normal_;
   std::vector<double> static_;  // the static coefficients
   std::vector<double> contact_values_;

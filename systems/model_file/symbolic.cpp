@@ -38,8 +38,8 @@ ex Compiler::Parse(const Located& l, bool state, bool forces, bool slip, const s
     const auto q = m.find("symbol \"");
     if (q != std::string::npos && m.find("not found") != std::string::npos)
       m = "unknown name " + m.substr(q + 7, m.find('"', q + 8) - q - 6) +
-          " (not a coordinate, a rate x', a parameter" + (forces ? ", a contact force" : "") +
-          (slip ? " or the slip speed s" : "") + ")";
+          " (not a coordinate, a rate x', a state, a parameter" +
+          (forces ? ", a contact force" : "") + (slip ? " or the slip speed s" : "") + ")";
     Fail(spec_.source, l.line, what + " = '" + l.text + "': " + m);
   }
   CheckSmooth(e, l);
@@ -183,7 +183,8 @@ void Compiler::CheckLinearInForces() {
         if (d.has(f))
           Fail(spec_.source, spec_.equations[i].line,
                "the force " + name + " enters " + spec_.coordinates[i] +
-                   "'' = ... nonlinearly (it must be a sum of terms coefficient * " + name +
+                   std::string(spec_.orders[i], '\'') +
+                   " = ... nonlinearly (it must be a sum of terms coefficient * " + name +
                    ", the coefficient free of every force)");
       used = used || !d.is_zero();
     }
@@ -211,8 +212,9 @@ ex Compiler::VelocityRate(std::size_t c, const GiNaC::exmap& forces) const {
 }
 
 ex Compiler::Rate(int t, const GiNaC::exmap& forces) const {
-  if (t >= 2 * static_cast<int>(eq_.size())) return clock_rate_;  // theta' = omega
-  return t % 2 == 0 ? ex(state_[t + 1]) : eq_[t / 2].subs(forces);
+  if (t >= static_cast<int>(equation_of_.size())) return clock_rate_;  // theta' = omega
+  const int e = equation_of_[static_cast<std::size_t>(t)];
+  return e < 0 ? ex(state_[t + 1]) : eq_[static_cast<std::size_t>(e)].subs(forces);
 }
 
 }  // namespace stickslip::model_file

@@ -20,18 +20,29 @@ constexpr std::size_t kMaxModelContacts = 4;  // 3^4 modes, each solved and reco
 
 void Compiler::Symbols() {
   out_->source = spec_.source, out_->name = spec_.name;
-  out_->n = 2 * static_cast<int>(spec_.coordinates.size());
   out_->k = static_cast<int>(spec_.contacts.size());
-  for (const std::string& x : spec_.coordinates) {
+  for (std::size_t i = 0; i < spec_.coordinates.size(); ++i) {  // x, x' or w
+    const std::string& x = spec_.coordinates[i];
+    equation_of_.push_back(-1);  // x: its rate is the symbol x'
     state_.emplace_back(x);
+    out_->state_names.push_back(x);
+    if (spec_.orders[i] == 1) {
+      equation_of_.back() = static_cast<int>(i);
+      continue;
+    }
+    equation_of_.push_back(static_cast<int>(i));
     state_.emplace_back(MangleRates(x + "'"));
-    out_->state_names.insert(out_->state_names.end(), {x, x + "'"});
+    out_->state_names.push_back(x + "'");
   }
+  out_->n = static_cast<int>(state_.size());
+  for (std::size_t t = 0; t < equation_of_.size(); ++t)
+    out_->derivative_of.push_back(equation_of_[t] < 0 ? static_cast<int>(t) + 1 : -1);
   if (!spec_.clock.empty()) {
     state_.emplace_back(spec_.clock);
     out_->state_names.push_back(spec_.clock);
     out_->clocks = 1;
     ++out_->n;
+    out_->derivative_of.push_back(-1);
   }
   for (const std::string& p : spec_.parameters) params_.emplace_back(p);
   for (const ContactSpec& c : spec_.contacts) forces_.emplace_back(c.name);
@@ -79,9 +90,12 @@ void Compiler::ParseContact(std::size_t c) {
 
 void Compiler::ParseAll() {
   for (std::size_t i = 0; i < spec_.equations.size(); ++i)
-    eq_.push_back(Parse(spec_.equations[i], true, true, false, spec_.coordinates[i] + "''"));
-  if (!spec_.clock.empty())
+    eq_.push_back(Parse(spec_.equations[i], true, true, false,
+                        spec_.coordinates[i] + std::string(spec_.orders[i], '\'')));
+  if (!spec_.clock.empty()) {
     clock_rate_ = Parse(spec_.clock_rate, false, false, false, "clock " + spec_.clock);
+    out_->clock_rate = {contact_->Node(clock_rate_), spec_.clock_rate.line, spec_.clock_rate.text};
+  }
   for (std::size_t c = 0; c < spec_.contacts.size(); ++c) ParseContact(c);
 }
 

@@ -15,6 +15,7 @@
 #include "stickslip/errors.hpp"
 #include "stickslip/model/forced.hpp"
 #include "stickslip/model/model.hpp"
+#include "stickslip/orbits/settle.hpp"
 
 namespace stickslip {
 namespace {
@@ -171,6 +172,29 @@ TEST(Shooting, ForcedOrbitThroughTwoSectionsHasOneSetOfMultipliers) {
   std::printf("[ measured ] multipliers: stroboscopic %.12g, %.3g; stick exit %.12g, %.3g\n",
               std::abs(strobe.multipliers[0]), std::abs(strobe.multipliers[1]),
               std::abs(o.multipliers[0]), std::abs(o.multipliers[1]));
+}
+
+// A system with a clock settles on its stroboscopic map (settle.hpp): from
+// rest, the forced Coulomb belt above reaches a periodic attractor whose
+// point the coulomb closed form maps onto itself over its m periods.
+TEST(Shooting, AClockedSystemSettlesOnItsStroboscopicMap) {
+  ForcedParams p = Floor(0.8);
+  p.base.beta = 0.05, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v = 0.2, p.force = 0.3;
+  const ForcedModel m(p);
+  SettleOptions o;
+  o.shooting = TightShooting();
+  const SettledOrbit st = SettleOnStickSlip(m, Eigen::Vector3d(0, 0, 0), o);
+  ASSERT_TRUE(st.found) << st.message;
+  EXPECT_EQ(st.section.kind, SectionKind::kTime);
+  ASSERT_GE(st.section.turns, 1);
+  EXPECT_NEAR(st.orbit.period, st.section.turns * 2 * M_PI / 0.8, 1e-12);
+  EXPECT_EQ(st.orbit.start.z[2], 0);  // at theta = 0
+  EXPECT_TRUE(st.orbit.stable);
+  const Eigen::Vector2d back =
+      ClosedFormMap(p, 0, st.orbit.start.z[0], st.orbit.start.z[1], st.orbit.period);
+  EXPECT_NEAR(back[0], st.orbit.start.z[0], 1e-11);
+  EXPECT_NEAR(back[1], st.orbit.start.z[1], 1e-11);
+  EXPECT_THROW(SettleOnStickSlip(m, Eigen::Vector2d(0, 0), o), InvalidArgument);
 }
 
 TEST(Shooting, MisuseThrowsAndAMissingReturnIsAStatus) {

@@ -32,9 +32,11 @@ struct SystemPoint {
   double p = 0;           ///< its value at the point
   FlowOptions flow;       ///< that run's integrator and tolerances
   double max_amplitude = 0;
-  PoincareSection section;  ///< the stick-exit section the branch was traced on
-  FlowPoint start;          ///< the orbit's point on it, with its mode (contacts in order)
-  int contacts = 0;         ///< the mode's contacts (the items of mode_0)
+  /// The section the branch was traced on: a stick exit, or a clock's m
+  /// turns (kind kTime, turns m; its time is the system's at the point).
+  PoincareSection section;
+  FlowPoint start;   ///< the orbit's point on it, with its mode (contacts in order)
+  int contacts = 0;  ///< the mode's contacts (the items of mode_0)
   double period = 0;
   /// That run's range (its --from and --to).
   double run_from = std::numeric_limits<double>::quiet_NaN();

@@ -134,6 +134,8 @@ class System {
   /// An equilibrium of mode m's field, if it has one, and whether it is
   /// stable: near it the flow treats extrema as noise, and it ends a run
   /// that has settled on a stable one to within the integration noise.
+  /// z holds a guess on entry (all 0: none) for a system that solves for
+  /// it (a model file's Newton: the rest point nearest a branch's last).
   virtual bool Rest(const ModeSet& /*m*/, StateOut /*z*/, bool* /*stable*/) const { return false; }
 
   // --- Parameters (a lens is an index here) ---
