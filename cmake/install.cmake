@@ -1,11 +1,14 @@
 # Install rules and the exported package: find_package(stickslip) then link
-# stickslip::stickslip.
+# stickslip::stickslip (and stickslip::model_file to read model files).
 include(CMakePackageConfigHelpers)
 
-install(TARGETS stickslip EXPORT stickslipTargets
+install(TARGETS stickslip stickslip_model_file EXPORT stickslipTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# Model files from C++: ReadModel / ParseModel (the rest of systems/model_file is private).
+install(FILES ${PROJECT_SOURCE_DIR}/systems/model_file/model_file.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/stickslip)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/stickslip DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.hpp")
 install(TARGETS ${STICKSLIP_APP_TARGETS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -13,4 +13,5 @@ cmake -S examples -B "$tmp/example" -DCMAKE_PREFIX_PATH="$tmp/prefix" \
 cmake --build "$tmp/example" >/dev/null
 "$tmp/example/seed_branch"
 "$tmp/example/own_system"
+"$tmp/example/own_model"
 "$tmp/prefix/bin/ss_continue" --version
