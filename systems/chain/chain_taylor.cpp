@@ -32,7 +32,11 @@ class ChainField final : public TaylorField {
     mode_ = m;
     const int n = c->blocks();
     laws_.resize(n);
-    for (int i = 0; i < n; ++i) laws_[i].Set(c->params().blocks[i].law);
+    cubic_ = true;
+    for (int i = 0; i < n; ++i) {
+      laws_[i].Set(c->params().blocks[i].law);
+      cubic_ = cubic_ && laws_[i].law == LawKind::kCubic;
+    }
     sticking_ = m.Sticking();
     center_.assign(2 * n, 0.0);
     bool below = true;
@@ -47,8 +51,15 @@ class ChainField final : public TaylorField {
     return i < static_cast<int>(center_.size()) ? center_[i] : 0.0;
   }
   void Coefficients(int order, const TaylorLayout& l, TaylorRow* c) override;
+  // Six orders above Jorba & Zou's where every block's law is cubic, as the
+  // belt's (BeltTaylorField): 14 % less time per two-block orbit
+  // (bench/chain_orbit_bench, rtol 1e-12; 3 and 9 orders gained less).
+  int ExtraOrder(double /*eps*/, bool /*in_steps*/) const override {
+    return cubic_ ? kCubicExtraOrder : 0;
+  }
 
  private:
+  static constexpr int kCubicExtraOrder = 6;
   // Coefficient k + 1 of block i's two state rows (and the law's series).
   void StateNext(int i, int k, TaylorRow* c);
   void PhiNext(int i, int k, const TaylorLayout& l, TaylorRow* c);
@@ -58,6 +69,7 @@ class ChainField final : public TaylorField {
   const Chain* chain_ = nullptr;
   ModeSet mode_;
   int sticking_ = 0;
+  bool cubic_ = false;
   std::vector<LawSeries> laws_;
   std::vector<double> center_, rest_;
 };

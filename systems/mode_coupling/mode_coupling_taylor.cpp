@@ -18,6 +18,8 @@ using systems::Cauchy;
 constexpr int kN = kTaylorRowSize;
 
 class CouplingField final : public TaylorField {
+  static constexpr int kExtraOrder = 6;
+
  public:
   bool Bind(const System& s, const ModeSet& m) override {
     const auto* o = dynamic_cast<const ModeCoupling*>(&s);
@@ -30,6 +32,9 @@ class CouplingField final : public TaylorField {
   }
   int AuxRows() const override { return stick_ ? 2 : 0; }
   void Coefficients(int order, const TaylorLayout& l, TaylorRow* c) override;
+  // Six orders above Jorba & Zou's, as every other field of the one core
+  // (the chain's cubic, the model files' tape): its products are few.
+  int ExtraOrder(double /*eps*/, bool /*in_steps*/) const override { return kExtraOrder; }
 
  private:
   void Slip(int k, TaylorRow* c);
