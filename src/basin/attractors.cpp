@@ -80,7 +80,7 @@ bool Vanishes(const System& s, const SectionPoint& q, double tol) {
 // agree to the cycle tolerance before they reach the rest point.
 std::optional<Eigen::VectorXd> NearStableRest(const System& s, const std::vector<SectionPoint>& p,
                                               double tol) {
-  Eigen::VectorXd rest(s.dimension());
+  Eigen::VectorXd rest = Eigen::VectorXd::Zero(s.dimension());  // no guess
   bool stable = false;
   if (p.empty() || !s.Rest(p.back().mode, rest, &stable) || !stable) return std::nullopt;
   const Eigen::VectorXd z = rest.head(s.tangent_dimension());

@@ -197,7 +197,8 @@ Section MaximaSection(const System& s) {
   const int d = s.DerivativeOf(0);
   if (d < 0)
     throw InvalidArgument("component " + s.StateName(0) +
-                          " has no velocity component: give the section");
+                          " has no velocity component (a first-order state): the maxima "
+                          "section needs a coordinate first, or give the section");
   Section x;
   x.g.terms[0] = {d, 1.0};
   x.g.size = 1;

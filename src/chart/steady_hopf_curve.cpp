@@ -34,7 +34,10 @@ bool SteadyHopfProblem::Sample(const VectorXd& u, SteadyState* state, double* te
   system_->SetParameterValue(p2_, u[1]);
   *why = system_->ValidationError();
   if (!why->empty()) return false;
-  *state = SteadySliding(*system_);
+  // From the last sample's rest point: a curve follows one of several (a
+  // drill's fast and slow steady rotations), never jumps to another.
+  *state = near_.found ? SteadySliding(*system_, near_) : SteadySliding(*system_);
+  if (state->found) near_ = *state;
   if (!state->found) {
     *why = "no steady sliding at " + system_->ParameterName(p1_) + " = " + Num(u[0]) + ", " +
            system_->ParameterName(p2_) + " = " + Num(u[1]);

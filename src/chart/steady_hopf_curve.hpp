@@ -4,8 +4,9 @@
 // (Kuznetsov 2004, ch. 3). It is O(1) for any n, where the bialternate
 // product prod_{i<j} (lambda_i + lambda_j) has n(n-1)/2 factors and under- or
 // overflows, and it vanishes at Hopf points only (no neutral saddles). The
-// rest point is explicit (System::Rest), so the test is a function of
-// (p1, p2) alone; its gradient by central differences.
+// rest point is explicit (System::Rest; where a model file has several, the
+// one nearest the last sample's), so the test is a function of (p1, p2)
+// alone; its gradient by central differences.
 #pragma once
 
 #include <Eigen/Dense>
@@ -33,6 +34,7 @@ class SteadyHopfProblem final : public PalcProblem {
  private:
   std::unique_ptr<System> system_;  // its p1, p2 set at every sample
   int p1_, p2_;
+  mutable SteadyState near_;  // the last sample's rest point, the next one's guess
 };
 
 }  // namespace stickslip

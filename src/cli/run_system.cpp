@@ -47,6 +47,10 @@ void ConfigureRestart(const Arguments& args, SystemSetup& s) {
                      std::to_string(sp.contacts) + " contacts, the system " +
                      std::to_string(s.system->dimension()) + " and " +
                      std::to_string(s.system->contacts()));
+  if ((sp.section.kind == SectionKind::kTime) != (s.system->clocks() == 1))
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": its orbits are on " +
+                     (sp.section.kind == SectionKind::kTime ? "a clock's turns" : "a stick exit") +
+                     ", and the system has " + std::to_string(s.system->clocks()) + " clocks");
   if (args.Given("start_at"))
     throw UsageError(args.Source("start_at") + ": a restart starts at its point");
   const double p = s.system->ParameterValue(s.param);
@@ -136,7 +140,7 @@ SystemSetup Configure(const Arguments& args) {
   s.flow = FlowOptionsFromArguments(args, s.restart ? s.restart->flow : FlowOptions());
   s.settle.shooting.flow = s.flow;
   s.settle.transient = args.Number("transient", s.settle.transient);
-  // Each contact may stick once per period: the recurrence looks that far.
+  // Each contact may stick once per period: the recurrence looks that far (a clock: turns).
   s.settle.max_returns = std::max(s.settle.max_returns, 2 * s.system->contacts());
   s.disturbance = args.Number("disturbance", s.disturbance);
   if (const std::string e = s.settle.ValidationError(); !e.empty())
@@ -144,7 +148,7 @@ SystemSetup Configure(const Arguments& args) {
   return s;
 }
 
-// The attractor at start_at, from steady sliding displaced by the disturbance.
+// The attractor at start_at, from steady sliding (a clock: the origin) + the disturbance.
 SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, s.start_at);
@@ -153,8 +157,7 @@ SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
   return SettleOnStickSlip(*at, NearSteadySliding(*at, s.disturbance), o);
 }
 
-// A restart's orbit, as if settled on: its point and section (a clock's:
-// its turns at the point's parameters).
+// A restart's orbit, as if settled on: its point and section (a clock's turns at its parameters).
 SettledOrbit AtPoint(const SystemSetup& s, const SystemPoint& sp) {
   SettledOrbit o;
   o.found = true;
@@ -249,7 +252,8 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
                                          : "none: " + NoOrbit(settled)},
                {"rtol", FormatNumber(s.flow.rtol)},
                {"atol", FormatNumber(s.flow.atol)},
-               {"steady_status", Name(r.steady.status)}});
+               {"steady_status", s.system->clocks() ? std::string("none: a clock, no rest point")
+                                                    : std::string(Name(r.steady.status))}});
   PoincareSection section = settled.section;  // ContinueDoubled's: twice the returns or turns
   if (section.kind == SectionKind::kTime)
     section.turns *= s.doubled ? 2 : 1;
@@ -299,10 +303,8 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   SteadyBranchOptions so;
   so.points = static_cast<int>(std::ceil(1 / s.max_step)) + 1;
   so.cancelled = [&run] { return run.Cancelled(); };
-  if (s.system->clocks() == 0)  // a forcing has no rest point
-    r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
-  else
-    r.steady.status = BranchStatus::kReachedEnd;
+  r.steady.status = BranchStatus::kReachedEnd;  // a forcing has no rest point
+  if (s.system->clocks() == 0) r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
   run.Phase("settling");
   const SettledOrbit settled = run.Cancelled() ? SettledOrbit()
                                : s.restart     ? AtPoint(s, *s.restart)
@@ -322,10 +324,13 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);
   Metadata meta = FileMetadata(s, r, settled, model, ToolMetadata(prog, command));
   if (s.restart) meta.emplace_back("restart", DescribeSystemRestart(args, *s.restart));
-  if (s.doubled)
-    meta.emplace_back("switch", "period-doubled branch, returns " +
-                                    std::to_string(s.restart->section.returns) + " -> " +
-                                    std::to_string(2 * s.restart->section.returns));
+  if (s.doubled) {
+    const bool turns = s.restart->section.kind == SectionKind::kTime;
+    const int m = turns ? s.restart->section.turns : s.restart->section.returns;
+    meta.emplace_back("switch", std::string("period-doubled branch, ") +
+                                    (turns ? "turns " : "returns ") + std::to_string(m) + " -> " +
+                                    std::to_string(2 * m));
+  }
   meta.emplace_back("status", partial.empty() ? "complete" : "partial: " + partial);
   TsvTable branch = SystemBranchTable(*s.system, r), special = SystemSpecialTable(*s.system, r);
   branch.PrependMeta(meta);

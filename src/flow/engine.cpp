@@ -170,7 +170,7 @@ void Engine::UseEvents() {
     set->rest_epoch = -1;
   }
   if (set->rest_epoch != system_epoch_) {
-    set->rest.resize(n_);
+    set->rest.setZero(n_);  // no guess (System::Rest reads one)
     set->has_rest = !mode_.AnySticks() && s_->Rest(mode_, set->rest, &set->rest_stable);
     set->rest_epoch = system_epoch_;
   }

@@ -78,6 +78,9 @@ void ReadRun(const Table& t, SystemPoint* sp) {
   sp->max_amplitude = t.MetaFinite("max_amplitude");
   if (!(sp->max_amplitude > 0))
     throw Corrupt(t, "max_amplitude = '" + t.Meta("max_amplitude") + "' must be > 0");
+  if (t.meta.count("section_turns") &&
+      (t.meta.count("section_contact") || t.meta.count("section_returns")))
+    throw Corrupt(t, "section_turns and section_contact/section_returns: two sections");
   if (t.meta.count("section_turns")) {  // a clock's: its time set where the system is known
     sp->section.kind = SectionKind::kTime;
     sp->section.turns = static_cast<int>(t.MetaWhole("section_turns", 1, kMaxReturns));

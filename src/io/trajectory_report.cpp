@@ -41,15 +41,20 @@ void Portrait(std::ostringstream& os, const System& s, const std::string& ts,
      << Q(s.contacts() > 1 ? "contact 1 sticking" : "sticking") << "\n";
 }
 
-// The displacements against t (one: it and its rate; none, as a model of
-// first-order states: every state), over the last kShownPeriods periods of a
-// clock.
+// The displacements and first-order states against t (one displacement
+// alone: it and its rate), over the last kShownPeriods periods of a clock.
 void TimeSeries(std::ostringstream& os, const System& s, const TrajectoryFigure& f) {
+  const int nt = s.tangent_dimension();
+  std::vector<bool> rate(static_cast<std::size_t>(nt), false);
+  for (int i = 0; i < nt; ++i)
+    if (const int d = s.DerivativeOf(i); d >= 0 && d < nt) rate[static_cast<std::size_t>(d)] = true;
   std::vector<int> shown;
-  for (int i = 0; i < s.tangent_dimension(); ++i)
-    if (s.DerivativeOf(i) >= 0) shown.push_back(i);
-  const bool states = shown.empty();
-  for (int i = 0; states && i < s.tangent_dimension(); ++i) shown.push_back(i);
+  bool states = false;  // a first-order state among them
+  for (int i = 0; i < nt; ++i)
+    if (!rate[static_cast<std::size_t>(i)]) {
+      shown.push_back(i);
+      states = states || s.DerivativeOf(i) < 0;
+    }
   const bool one = shown.size() == 1 && !states;
   if (one) shown.push_back(s.DerivativeOf(shown[0]));
   os << "set xlabel 'time t'\nset ylabel "
@@ -74,12 +79,12 @@ void TimeSeries(std::ostringstream& os, const System& s, const TrajectoryFigure&
   os << "plot ";
   for (size_t k = 0; k < shown.size(); ++k) {
     const int i = shown[k];
-    const bool rate = one && k == 1;
+    const bool velocity = one && k == 1;
     os << (k ? ", \\\n     " : "") << "'trajectory.tsv' using 't':'" << StateColumn(s, i)
        << "' with lines lw 1.5 lc rgb '" << SeriesColor(k) << "' title "
-       << Q(EnhancedText((states ? ""
-                          : rate ? "velocity "
-                                 : "displacement ") +
+       << Q(EnhancedText((velocity                 ? "velocity "
+                          : s.DerivativeOf(i) >= 0 ? "displacement "
+                                                   : "") +
                          s.StateName(i)));
   }
   os << "\nunset multiplot\nset autoscale x\n";

@@ -147,6 +147,9 @@ struct FixedTolerances {
   // Settling: the run goes in this many pieces, each keeping only the stick
   // exits the recurrence needs (a bound on the switches held).
   static constexpr int kSettleChunks = 64;
+  // Settling a system with a clock: at most this many clock turns (a run
+  // call per turn; a transient of 1e9 turns would not end).
+  static constexpr double kSettleMaxTurns = 1e7;
 
   // --- The flow's rounding windows (flow/engine.cpp) ---
   // A start in stick lies on its surface and within its band to this times

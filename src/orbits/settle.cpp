@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <vector>
 
 #include "numerics/numbers.hpp"
@@ -42,20 +43,29 @@ SettledOrbit SettleStroboscopic(const System& system, const Eigen::VectorXd& z0,
   if (options.cancelled) flow.set_cancel(options.cancelled);
   const int nt = system.tangent_dimension(), clock = system.dimension() - 1;
   const double turn = PoincareSection::Stroboscopic(system, z0, 1).time;
-  const long turns = std::max(1L, std::lround(std::ceil(options.transient / turn)));
-  std::vector<Eigen::VectorXd> kept;
+  const double turns = std::ceil(options.transient / turn);
+  if (!(turns <= Tolerances::kSettleMaxTurns)) {
+    out.message = "the transient " + Num(options.transient) + " is " + Num(turns, 3) +
+                  " clock turns of " + Num(turn, 6) + ", more than " +
+                  Num(Tolerances::kSettleMaxTurns, 3);
+    return out;
+  }
+  std::deque<Eigen::VectorXd> kept;
   FlowRequest req;
-  req.max_steps = options.shooting.max_steps;  // per turn
+  // The whole run's step budget, as the autonomous settle's.
+  long budget = options.shooting.max_steps * 100;
   FlowRun run;
   run.end = FlowPoint{0, z0, ModeOf(system, z0)};
-  for (long k = 1; k <= turns; ++k) {
-    req.t_max = k * turn;
+  for (long k = 1; k <= static_cast<long>(turns); ++k) {
+    req.t_max = static_cast<double>(k) * turn;
+    req.max_steps = std::max(1L, budget);
     const FlowPoint from = run.end;
     flow.Run(from, req, &run);
+    budget -= run.steps;
     out.stick_exits += run.exits;
     if (run.status != FlowStatus::kTimeLimit) break;
     kept.push_back(run.end.z);
-    if (kept.size() > static_cast<std::size_t>(options.max_returns) + 1) kept.erase(kept.begin());
+    if (kept.size() > static_cast<std::size_t>(options.max_returns) + 1) kept.pop_front();
   }
   out.run = run.status;
   if (run.status != FlowStatus::kTimeLimit) {
@@ -64,6 +74,11 @@ SettledOrbit SettleStroboscopic(const System& system, const Eigen::VectorXd& z0,
                       : "the settling run ended " + std::string(Name(run.status)) +
                             " at t = " + Num(run.end.t) +
                             (run.message.empty() ? "" : ": " + run.message);
+    return out;
+  }
+  if (kept.size() < 2) {
+    out.message = "the transient " + Num(options.transient) +
+                  " holds fewer than 2 clock turns of " + Num(turn, 6);
     return out;
   }
   const Eigen::VectorXd& last = kept.back();
@@ -81,9 +96,9 @@ SettledOrbit SettleStroboscopic(const System& system, const Eigen::VectorXd& z0,
                   " turns (closest " + Num(closest, 3) + "): not settled, or not periodic";
     return out;
   }
-  // At theta = 0 (the turns' phase is 2 pi k to rounding): Newton refines the rest.
+  // At the start's own phase (the turns' are it + 2 pi k, to rounding).
   FlowPoint start{0, last, run.end.mode};
-  start.z[clock] = 0;
+  start.z[clock] = std::remainder(z0[clock], 2 * M_PI);
   out.recurred = true;
   out.section = PoincareSection::Stroboscopic(system, start.z, m);
   out.orbit = shooting.Find(start, out.section);
@@ -150,11 +165,12 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
   double closest = INFINITY;
   const int r = exits.size() < 2 ? 0 : Recurrence(exits, options.max_returns, &closest);
   if (r == 0) {
-    out.message = exits.empty() ? "no stick phase after t = " + Num(options.transient) +
-                                      " (steady sliding or a pure-slip motion)"
-                                : "no stick exit recurs within " +
-                                      std::to_string(options.max_returns) + " exits (closest " +
-                                      Num(closest, 3) + "): not settled, or not periodic";
+    out.message =
+        exits.size() < 2
+            ? (exits.empty() ? "no stick phase" : "a single stick exit") + std::string(" by t = ") +
+                  Num(options.transient) + " (then steady sliding or a pure-slip motion)"
+            : "no stick exit recurs within " + std::to_string(options.max_returns) +
+                  " exits (closest " + Num(closest, 3) + "): not settled, or not periodic";
     return out;
   }
   const FlowSwitch& last = exits.back();

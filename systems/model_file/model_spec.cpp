@@ -86,6 +86,7 @@ void Reader::Coordinates(const std::string& value, int line, int order) {
   std::size_t at = 0;
   for (std::size_t i = 0; i < spec_.orders.size() && spec_.orders[i] == 2; ++i) at = i + 1;
   if (order == 1) at = spec_.orders.size();
+  if (value.back() == ',') Name("", line);  // "x," names nothing after its comma
   std::string item;
   std::istringstream is(value);
   while (std::getline(is, item, ',')) {
@@ -199,6 +200,17 @@ ModelSpec Reader::Finish() {
                std::to_string(spec_.coordinates.size()) +
                (spec_.states_line ? " coordinates and states, " : " coordinates, ") +
                std::to_string(equations_.size()) + " equations)");
+  for (std::size_t i = 0; i < spec_.coordinates.size(); ++i)  // x's rate is the column xdot
+    for (const std::string& other : spec_.coordinates)
+      if (spec_.orders[i] == 2 && other == spec_.coordinates[i] + "dot")
+        Fail(spec_.source, spec_.orders[i] == 2 ? spec_.coordinates_line : spec_.states_line,
+             "the name '" + other + "' is the column of " + spec_.coordinates[i] +
+                 "' in the tables: choose another");
+  int components = 0;
+  for (int order : spec_.orders) components += order;
+  if (components < 2)
+    Fail(spec_.source, spec_.states_line,
+         "one state component: a model needs at least two (a coordinate x, or two states)");
   if (spec_.contacts.empty()) Fail(spec_.source, 0, "no 'contact F = ...' line");
   for (const ContactSpec& c : spec_.contacts)
     if (!c.law.line) Fail(spec_.source, c.velocity.line, "contact " + c.name + " has no law line");

@@ -166,12 +166,20 @@ bool ModelSystem::Newton(const ModeSet& m, Eigen::VectorXd& x) const {
   return x.allFinite() && f.lpNorm<Eigen::Infinity>() <= 1e-10 * (1 + x.lpNorm<Eigen::Infinity>());
 }
 
-// Newton from the guess z, if any (the first rest point on the mode's side
-// of every contact from there); else from the state 0 and from states that
-// put every contact's velocity on the mode's side at 0.01 ... 100 (a
-// Stribeck law's field may lead Newton from 0 to the root on the other side,
-// and a drill's steady rotations come in pairs): the first stable one, else
-// the first.
+// The speed of sliding at x: the sum of the contacts' |h|.
+double ModelSystem::Sliding(const Eigen::VectorXd& x) const {
+  double sum = 0;
+  for (int c = 0; c < c_->k; ++c) sum += std::abs(velocity_[c].At(x.data()));
+  return sum;
+}
+
+// Newton from the guess z, if any (the rest point there if on the mode's
+// side of every contact, else none: a branch stops rather than jump to
+// another rest point); else from the state 0 and from states that put every
+// contact's velocity on the mode's side at 0.01 ... 100 (a Stribeck law's
+// field may lead Newton from 0 to the root on the other side, and a drill's
+// steady rotations come in pairs): the first stable one, else the fastest
+// sliding (the drill's fast rotation, unstable below its Hopf point).
 bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
   if (m.AnySticks() || c_->clocks) return false;  // a forcing has no rest point
   bool found = false;
@@ -188,17 +196,18 @@ bool ModelSystem::Rest(const ModeSet& m, StateOut z, bool* stable) const {
       const double shift = (side * std::pow(10.0, start - 3) - h.At(x.data())) / norm;
       for (int t = 0; t < h.size; ++t) x[h.terms[t].index] += shift * h.terms[t].weight;
     }
-    if (!Newton(m, x)) continue;
-    bool side = true;
-    for (int c = 0; c < c_->k; ++c) {
+    bool side = Newton(m, x);
+    for (int c = 0; side && c < c_->k; ++c) {
       const double h = velocity_[c].At(x.data());
-      side = side &&
-             !((m[c] == Mode::kSlipBelow && !(h < 0)) || (m[c] == Mode::kSlipAbove && !(h > 0)));
+      side = (m[c] == Mode::kSlipBelow && h < 0) || (m[c] == Mode::kSlipAbove && h > 0);
     }
-    if (!side) continue;
+    if (!side) {
+      if (start < 0) return false;
+      continue;
+    }
     Jacobian(m, x, J);
     const bool here = J.eigenvalues().real().maxCoeff() < 0;
-    if (!found || here) z = x, *stable = here;
+    if (!found || here || Sliding(x) > Sliding(z)) z = x, *stable = here;
     found = true;
     if (here || start < 0) break;
   }

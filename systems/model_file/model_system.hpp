@@ -60,6 +60,7 @@ class ModelSystem final : public System {
   std::shared_ptr<const Compiled> c_;
   std::vector<double> p_;
   bool Newton(const ModeSet& m, Eigen::VectorXd& x) const;
+  double Sliding(const Eigen::VectorXd& x) const;
   std::vector<ContactVelocity> velocity_, normal_;
   std::vector<double> static_;  // the static coefficients
   std::vector<double> contact_values_;

@@ -157,6 +157,17 @@ TEST_F(ModelFileApp, TheForcedFileGivesTheForcedOscillatorsSpecialPoints) {
       RunOut("ss_continue", d, {"--restart", b + "/out", "--point", "PD1", "--switch"});
   EXPECT_EQ(doubled.outcome.code, built_doubled.outcome.code) << doubled.err;
   same(points(c), points(d));
+  EXPECT_EQ(tu::ReadTsv(tu::ReadFile(c + "/out/branch.tsv")).meta.at("switch"),
+            "period-doubled branch, turns 1 -> 2");
+  // A clock's restart on a system without one (the phase a plain state) is refused by name.
+  const std::string e = NewDir(), plain = e + "/plain.ini";
+  std::string text = tu::ReadFile(kModels + "forced.ini");
+  text.replace(text.find("clock theta = omega"), 19, "states = theta\ntheta' = omega");
+  tu::WriteFile(plain, text);
+  const auto wrong =
+      RunOut("ss_continue", e, {"--model", plain, "--restart", a + "/out", "--point", "PD1"});
+  EXPECT_EQ(wrong.outcome.code, 2) << wrong.err;
+  EXPECT_TRUE(tu::Contains(wrong.err, "its orbits are on a clock's turns")) << wrong.err;
 }
 
 // A study file names its model by a path from its own folder

@@ -20,6 +20,7 @@
 #pragma GCC diagnostic pop
 
 #include "model_file/model_file.hpp"
+#include "stickslip/chart/system_chart.hpp"
 #include "stickslip/equilibria/steady_branch.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/errors.hpp"
@@ -75,19 +76,26 @@ TEST(ModelFileStates, AStateAndACoordinateAreWrittenAsDeclared) {
             "bad.ini:1: no equation w' = ... for state w (2 coordinates and states, 1 equations)");
   EXPECT_EQ(refusal("states = u\nstates = w\nu' = F\n" + law),
             "bad.ini:2: a second states line (the first: line 1)");
-  EXPECT_EQ(refusal("states = u\nu' = -u' + F\n" + law),
+  EXPECT_EQ(refusal("states = u\nu' = -u + F\n" + law),
+            "bad.ini:1: one state component: a model needs at least two (a coordinate x, or two "
+            "states)");
+  EXPECT_EQ(refusal("states = u, w,\nu' = -u + F\nw' = -w\n" + law),
+            "bad.ini:1: '' is not a name");
+  EXPECT_EQ(refusal("coordinates = u\nstates = udot\nu'' = -u + F\nudot' = -udot\n" + law),
+            "bad.ini:1: the name 'udot' is the column of u' in the tables: choose another");
+  EXPECT_EQ(refusal("states = u, w\nu' = -u' + F\nw' = -w\n" + law),
             "bad.ini:2: u' = '-u' + F': unknown name \"u'\" (not a coordinate, a rate x', a "
             "state, a parameter, a contact force)");
 }
 
 // The drill string's parameters, read from the file.
 struct Drill {
-  LReal J_r, J_b, k_t, c_t, c_r, c_b, torque_limit, rock, mu_c, mu_s, gamma, T_m;
+  LReal J_r, J_b, k_t, c_t, c_r, c_b, torque_limit, rock, mu_c, mu_s, gamma, T_m, W_ob;
   explicit Drill(const System& s) {
     auto p = [&](const char* name) { return LReal(s.ParameterValue(s.ParameterIndex(name))); };
     J_r = p("J_r"), J_b = p("J_b"), k_t = p("k_t"), c_t = p("c_t"), c_r = p("c_r");
     c_b = p("c_b"), mu_c = p("mu_cb"), mu_s = p("mu_sb"), gamma = p("gamma_b"), T_m = p("T_m");
-    rock = p("W_ob") * p("R_b");
+    W_ob = p("W_ob"), rock = W_ob * p("R_b");
     torque_limit = mu_s * rock;
   }
   void Slip(const DrillState& z, DrillState& dz) const {  // the bit turning forward, w_b > 0
@@ -202,10 +210,41 @@ TEST(ModelFileStates, TheDrillStringsHopfPointIsTheClosedForm) {
   for (const SteadyRow& r : b.special)
     if (r.label == SpecialKind::kHopf) {
       ++hopf;
-      EXPECT_NEAR(r.p, double(t_hopf), 1e-9 * double(t_hopf));
+      EXPECT_NEAR(r.p, double(t_hopf), 1e-12 * double(t_hopf));  // 5.4e-15 measured
     }
   EXPECT_EQ(hopf, 1);
   EXPECT_NEAR(double(t_hopf), 9268.897787273090, 1e-8);
+}
+
+// The Hopf curve in (T_m, W_ob) (ChartSystem): d* does not depend on W_ob,
+// so every point lies on T_m*(W_ob) of the closed form above. It followed
+// one steady rotation only once the curve's samples took the last one's rest
+// point as Newton's guess: before, the test jumped between the fast and the
+// slow rotation, and 26271 points crawled 4e-6 off the curve.
+TEST(ModelFileStates, TheDrillStringsHopfCurveIsTheClosedForm) {
+  const std::unique_ptr<System> s = ReadModel(kModelDir + "drill_string.ini");
+  const Drill d(*s);
+  SystemChartOptions o;
+  o.plane = {s->ParameterIndex("T_m"), s->ParameterIndex("W_ob"), 9240, 10685, 80000, 110000};
+  o.orbit_curves = false;
+  const SystemChart c = ChartSystem(*s, o);
+  const double d_star = -277.08630707087289;  // the closed form's root, as above
+  int points = 0;
+  double worst = 0;
+  for (const SystemCurve& curve : c.curves) {
+    if (curve.kind != CurveKind::kHopf) continue;
+    for (const SystemCurvePoint& q : curve.points) {
+      const LReal rock = d.rock / d.W_ob * q.p2;  // W_ob R_b at this W_ob
+      const LReal w = -std::log((d.c_b - d_star) / (d.gamma * (d.mu_s - d.mu_c) * rock)) / d.gamma;
+      const LReal t =
+          (d.c_r + d.c_b) * w + rock * (d.mu_c + (d.mu_s - d.mu_c) * std::exp(-d.gamma * w));
+      worst = std::max(worst, std::abs(q.p1 - double(t)) / double(t));
+      ++points;
+    }
+  }
+  EXPECT_GE(points, 40);
+  EXPECT_LE(points, 1000);
+  EXPECT_LE(worst, 1e-12);  // 2e-16 measured
 }
 
 }  // namespace

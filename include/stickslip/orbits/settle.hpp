@@ -18,7 +18,7 @@ namespace stickslip {
 struct SettleOptions {
   ShootingOptions shooting;  ///< the run's flow and the refining Newton
   double transient = 3000;   ///< the run's length (> 0)
-  int max_returns = 32;      ///< the longest recurrence looked for, in stick exits
+  int max_returns = 32;      ///< the longest recurrence looked for, in stick exits (clock turns)
   std::function<bool()> cancelled;
   std::string ValidationError() const;
 };
