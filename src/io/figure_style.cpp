@@ -124,12 +124,30 @@ std::string SystemFigureTitle(const std::string& description) {
   std::istringstream in(colon == std::string::npos ? description : description.substr(colon + 2));
   std::string out =
       colon == std::string::npos ? "" : EnhancedText(description.substr(0, colon)) + ":";
+  std::size_t line = out.size();  // the current line's plain length, about
   const char* sep = out.empty() ? "" : " ";
   for (std::string word; in >> word;) {
     const std::size_t eq = word.find('=');
     if (eq == std::string::npos || word.compare(eq + 1, 1, "[") == 0) continue;
+    if (line + word.size() + 4 > kTitleWidth) sep = *sep == ',' ? ",\n" : "\n", line = 0;
     out += sep + EnhancedText(word.substr(0, eq)) + " = " + word.substr(eq + 1);
+    line += word.size() + 4;
     sep = ", ";
+  }
+  return out;
+}
+
+std::string WrapWords(const std::string& text, std::size_t width) {
+  std::istringstream in(text);
+  std::string out;
+  std::size_t line = 0;
+  for (std::string word; in >> word;) {
+    if (line > 0 && line + 1 + word.size() > width)
+      out += '\n', line = 0;
+    else if (line > 0)
+      out += ' ', ++line;
+    out += word;
+    line += word.size();
   }
   return out;
 }

@@ -8,6 +8,7 @@
 // through EnhancedText so names like beta and mu_s print as symbols.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -72,10 +73,17 @@ std::string EnhancedText(const std::string& plain);
 /// "cubic law: β = 0.05, ... (partial)" in enhanced text, leaving out the
 /// parameters on the axes (their values are the axes).
 std::string FigureTitle(const std::string& description, const std::vector<std::string>& axes);
+/// A title line's length in characters, about: wider lines break (a model
+/// file's twelve parameters overflowed the figures' width).
+inline constexpr std::size_t kTitleWidth = 110;
 /// A title from a system's line "chain: v=[axis] kc=0.2 beta=0.05 ...":
 /// "chain: kc = 0.2, β = 0.05, ..." in enhanced text, leaving out the
-/// parameters whose value is bracketed (the axes, the continued one).
+/// parameters whose value is bracketed (the axes, the continued one),
+/// broken into lines of about kTitleWidth.
 std::string SystemFigureTitle(const std::string& description);
+/// The words of `text` in lines of at most `width` characters (a longer word
+/// alone), joined by newlines.
+std::string WrapWords(const std::string& text, std::size_t width);
 /// A double-quoted gnuplot string holding `text` (backslashes and quotes escaped).
 std::string GnuplotQuoted(const std::string& text);
 /// The axis words for a parameter: "belt speed v", "damping ratio β", ...
