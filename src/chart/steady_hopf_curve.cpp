@@ -34,10 +34,16 @@ bool SteadyHopfProblem::Sample(const VectorXd& u, SteadyState* state, double* te
   system_->SetParameterValue(p2_, u[1]);
   *why = system_->ValidationError();
   if (!why->empty()) return false;
-  // From the last sample's rest point: a curve follows one of several (a
-  // drill's fast and slow steady rotations), never jumps to another.
-  *state = near_.found ? SteadySliding(*system_, near_) : SteadySliding(*system_);
-  if (state->found) near_ = *state;
+  // From the rest point of the first or the last sample, whichever lies
+  // nearer in (p1, p2) (a curve's second leg starts at its seed): a curve
+  // follows one of several (a drill's fast and slow steady rotations).
+  const bool last = !seed_.found || (u - near_u_).norm() <= (u - seed_u_).norm();
+  const SteadyState& guess = last ? near_ : seed_;
+  *state = guess.found ? SteadySliding(*system_, guess) : SteadySliding(*system_);
+  if (state->found) {
+    if (!seed_.found) seed_ = *state, seed_u_ = u;
+    near_ = *state, near_u_ = u;
+  }
   if (!state->found) {
     *why = "no steady sliding at " + system_->ParameterName(p1_) + " = " + Num(u[0]) + ", " +
            system_->ParameterName(p2_) + " = " + Num(u[1]);

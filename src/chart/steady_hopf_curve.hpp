@@ -34,7 +34,9 @@ class SteadyHopfProblem final : public PalcProblem {
  private:
   std::unique_ptr<System> system_;  // its p1, p2 set at every sample
   int p1_, p2_;
-  mutable SteadyState near_;  // the last sample's rest point, the next one's guess
+  // The first and the last sample's rest points and (p1, p2): Newton's guesses.
+  mutable SteadyState seed_, near_;
+  mutable Eigen::VectorXd seed_u_, near_u_;
 };
 
 }  // namespace stickslip

@@ -48,7 +48,9 @@ SteadyState SteadySliding(const System& s) {
     SteadyState r = SteadySliding(s, m);
     if (r.found) return r;
   }
-  return SteadySliding(s, ModeSet());
+  SteadyState none;
+  none.z.setZero(s.dimension());
+  return none;
 }
 
 Eigen::VectorXd NearSteadySliding(const System& s, double d) {

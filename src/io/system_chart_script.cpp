@@ -165,8 +165,8 @@ std::string SystemChartScript(const System& s, const SystemChart& c, const std::
      << "set ylabel " << GnuplotQuoted(AxisLabel(s, pl.p2)) << "\n"
      << "set xrange [" << pl.from1 << ":" << pl.to1 << "]\n"
      << "set yrange [" << pl.from2 << ":" << pl.to2 << "]\n"
-     << "set title \"" << title
-     << "\"\n"
+     << "set title " << GnuplotQuoted(title)
+     << "\n"
      // Margins by gnuplot, so the key below fits at any --size (a column: fewer
      // key columns, more rows); the label places assume the screen size's plot area.
      << "set rmargin 3\n"

@@ -110,8 +110,7 @@ bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jaco
   // start), the map starts where it is given.
   if (section.kind == SectionKind::kStickExit) {
     const ContactVelocity h = s.Contact(section.contact);
-    if (std::abs(h.At(at.z.data())) <= Tolerances::kEventRounding * (1 + std::abs(h.speed)))
-      OntoSurface(h, at.z);
+    if (std::abs(h.At(at.z.data())) <= Tolerances::StickStart(h.speed, 0)) OntoSurface(h, at.z);
   }
   Prepare(at, section, jacobian, true);
   if (!Evaluate(at, section, orbit)) return false;

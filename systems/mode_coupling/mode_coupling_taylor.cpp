@@ -33,7 +33,8 @@ class CouplingField final : public TaylorField {
   int AuxRows() const override { return stick_ ? 2 : 0; }
   void Coefficients(int order, const TaylorLayout& l, TaylorRow* c) override;
   // Six orders above Jorba & Zou's, as every other field of the one core
-  // (the chain's cubic, the model files' tape): its products are few.
+  // (the chain's cubic, the model files' tape; its own gain not measured):
+  // its products are few.
   int ExtraOrder(double /*eps*/, bool /*in_steps*/) const override { return kExtraOrder; }
 
  private:

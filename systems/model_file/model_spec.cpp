@@ -201,10 +201,10 @@ ModelSpec Reader::Finish() {
                (spec_.states_line ? " coordinates and states, " : " coordinates, ") +
                std::to_string(equations_.size()) + " equations)");
   for (std::size_t i = 0; i < spec_.coordinates.size(); ++i)  // x's rate is the column xdot
-    for (const std::string& other : spec_.coordinates)
-      if (spec_.orders[i] == 2 && other == spec_.coordinates[i] + "dot")
-        Fail(spec_.source, spec_.orders[i] == 2 ? spec_.coordinates_line : spec_.states_line,
-             "the name '" + other + "' is the column of " + spec_.coordinates[i] +
+    for (std::size_t j = 0; j < spec_.coordinates.size(); ++j)
+      if (spec_.orders[i] == 2 && spec_.coordinates[j] == spec_.coordinates[i] + "dot")
+        Fail(spec_.source, spec_.orders[j] == 2 ? spec_.coordinates_line : spec_.states_line,
+             "the name '" + spec_.coordinates[j] + "' is the column of " + spec_.coordinates[i] +
                  "' in the tables: choose another");
   int components = 0;
   for (int order : spec_.orders) components += order;

@@ -170,6 +170,26 @@ TEST_F(ModelFileApp, TheForcedFileGivesTheForcedOscillatorsSpecialPoints) {
   EXPECT_TRUE(tu::Contains(wrong.err, "its orbits are on a clock's turns")) << wrong.err;
 }
 
+// The drill string's chart (docs/model_files.md): its title of twelve
+// parameters breaks into two lines, which chart.gp must quote as gnuplot
+// reads them (a raw newline inside the quotes was an invalid command).
+TEST_F(ModelFileApp, TheDrillStringsChartWritesItsFigure) {
+  const std::string dir = NewDir();
+  const auto r =
+      RunOut("ss_chart", dir,
+             {"--model", kModels + "drill_string.ini", "--param", "T_m", "--from", "9240", "--to",
+              "10685", "--param2", "W_ob", "--from2", "80000", "--to2", "110000"},
+             true);  // with the figure: gnuplot must read the script
+  ASSERT_EQ(r.outcome.code, 0) << r.err;
+  const std::string gp = tu::ReadFile(dir + "/out/chart.gp");
+  const auto at = gp.find("set title \"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string line = gp.substr(at, gp.find('\n', at) - at);
+  EXPECT_NE(line.find("\\n"), std::string::npos) << line;  // two lines, as gnuplot's escape
+  EXPECT_EQ(line.back(), '"') << line;
+  EXPECT_TRUE(tu::Contains(r.out, "curve 1 HB: 88 points")) << r.out;
+}
+
 // A study file names its model by a path from its own folder
 // (studies/belt_model.ini: model = models/belt.ini), wherever the app runs.
 TEST_F(ModelFileApp, AStudyReadsItsModelFromItsOwnFolder) {
