@@ -31,6 +31,13 @@ int Recurrence(const std::vector<FlowSwitch>& exits, int max, double* closest) {
   return 0;
 }
 
+// Why a settling run that did not reach its transient ended.
+std::string Ended(const FlowRun& run) {
+  if (run.status == FlowStatus::kCancelled) return "cancelled";
+  return "the settling run ended " + std::string(Name(run.status)) + " at t = " + Num(run.end.t) +
+         (run.message.empty() ? "" : ": " + run.message);
+}
+
 // A system with a clock: its state at every clock turn (the stroboscopic
 // map), kept for the last max_returns + 1 turns; the least m for which the
 // point m turns back is within kSettleRecur of the last (the tangent block:
@@ -69,11 +76,7 @@ SettledOrbit SettleStroboscopic(const System& system, const Eigen::VectorXd& z0,
   }
   out.run = run.status;
   if (run.status != FlowStatus::kTimeLimit) {
-    out.message = run.status == FlowStatus::kCancelled
-                      ? "cancelled"
-                      : "the settling run ended " + std::string(Name(run.status)) +
-                            " at t = " + Num(run.end.t) +
-                            (run.message.empty() ? "" : ": " + run.message);
+    out.message = Ended(run);
     return out;
   }
   if (kept.size() < 2) {
@@ -155,11 +158,7 @@ SettledOrbit SettleOnStickSlip(const System& system, const Eigen::VectorXd& z0,
   out.run = run.status;
   const std::vector<FlowSwitch>& exits = kept;
   if (run.status != FlowStatus::kTimeLimit) {
-    out.message = run.status == FlowStatus::kCancelled
-                      ? "cancelled"
-                      : "the settling run ended " + std::string(Name(run.status)) +
-                            " at t = " + Num(run.end.t) +
-                            (run.message.empty() ? "" : ": " + run.message);
+    out.message = Ended(run);
     return out;
   }
   double closest = INFINITY;
