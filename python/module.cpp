@@ -186,6 +186,7 @@ PYBIND11_MODULE(_core, m) {
   BindForced(m);
   BindRestart(m);
   BindBatch(m);
+  BindSystemBatch(m);
   BindOrbitBranch(m);
   BindSystems(m);
   BindModel(m);

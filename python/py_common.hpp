@@ -137,6 +137,7 @@ void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
 void BindBatch(py::module_& m);         // py_batch.cpp: orbits()
+void BindSystemBatch(py::module_& m);   // py_system_batch.cpp: orbits(system, ...) (after BindBatch)
 void BindOrbitBranch(py::module_& m);   // py_orbit_branch.cpp: continue_orbits() (after BindForced)
 void BindSystems(py::module_& m);       // py_systems.cpp: ChainParams, CouplingParams (issue 32)
 void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
@@ -146,7 +147,7 @@ void BindSystemChart(py::module_& m);  // py_system_chart.cpp: chart(system, ...
 void BindModel(py::module_& m);        // py_model.cpp: System (a model file's system, issue 33)
 
 // The System a Python parameter object stands for (Params, ForcedParams,
-// ChainParams, CouplingParams, System); InvalidArgument for anything else.
+// ChainParams, CouplingParams, System); TypeError for anything else.
 std::unique_ptr<System> SystemOf(const py::object& system);
 // The several-mass systems (py_systems.cpp): nullptr for another object.
 std::unique_ptr<System> SeveralMassSystemOf(const py::object& system);

@@ -5,8 +5,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,9 +20,40 @@ namespace stickslip::python {
 
 namespace {
 
+// The system and the text it was read from (a pickle rebuilds it from the
+// text and the parameters' current values: Dask sends systems to workers).
 struct PySystem {
   std::shared_ptr<System> system;
+  std::string text, source;
 };
+
+PySystem FromText(const std::string& text, const std::string& source) {
+  return PySystem{model_file::ParseModel(text, source), text, source};
+}
+
+PySystem FromFile(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || in.bad()) throw InvalidArgument(path + ": cannot read the model file");
+  return FromText(text.str(), path);
+}
+
+py::tuple GetState(const PySystem& s) {
+  std::vector<double> values;
+  for (int j = 0; j < s.system->parameters(); ++j) values.push_back(s.system->ParameterValue(j));
+  return py::make_tuple(s.text, s.source, values);
+}
+
+PySystem SetState(const py::tuple& t) {
+  if (t.size() != 3) throw InvalidArgument("System: a pickle of 3 entries is needed");
+  PySystem s = FromText(t[0].cast<std::string>(), t[1].cast<std::string>());
+  const auto values = t[2].cast<std::vector<double>>();
+  if (static_cast<int>(values.size()) != s.system->parameters())
+    throw InvalidArgument("System: the pickle's parameters do not match its text");
+  for (int j = 0; j < s.system->parameters(); ++j) s.system->SetParameterValue(j, values[j]);
+  return s;
+}
 
 int IndexOf(const PySystem& s, const std::string& name) {
   const int j = s.system->ParameterIndex(name);
@@ -65,18 +98,11 @@ void BindModel(py::module_& m) {
                        "System.from_file(path) or System.from_text(text). Every function that "
                        "takes a system takes it. s['v'] reads a parameter, s['v'] = 0.3 sets it.")
       .def_static(
-          "from_file",
-          [](const std::string& path) { return PySystem{model_file::ReadModel(path)}; },
-          py::arg("path"),
+          "from_file", &FromFile, py::arg("path"),
           "The system of the model file at path; InvalidArgument '<file>:<line>: <problem>' "
           "for a bad file.")
-      .def_static(
-          "from_text",
-          [](const std::string& text, const std::string& source) {
-            return PySystem{model_file::ParseModel(text, source)};
-          },
-          py::arg("text"), py::arg("source") = "<text>",
-          "The system of a model file's text; source names it in messages.")
+      .def_static("from_text", &FromText, py::arg("text"), py::arg("source") = "<text>",
+                  "The system of a model file's text; source names it in messages.")
       .def_property_readonly("name",
                              [](const PySystem& s) { return model_file::ModelName(*s.system); })
       .def_property_readonly("dimension", [](const PySystem& s) { return s.system->dimension(); })
@@ -96,14 +122,18 @@ void BindModel(py::module_& m) {
                                return p;
                              })
       .def(
-          "copy", [](const PySystem& s) { return PySystem{s.system->Clone()}; },
+          "copy",
+          [](const PySystem& s) {
+            return PySystem{s.system->Clone(), s.text, s.source};
+          },
           "An independent copy (its parameters set apart from this one's).")
       .def("__getitem__",
            [](const PySystem& s, const std::string& name) {
              return s.system->ParameterValue(IndexOf(s, name));
            })
       .def("__setitem__", &SetByName)
-      .def("__repr__", &SystemRepr);
+      .def("__repr__", &SystemRepr)
+      .def(py::pickle(&GetState, &SetState));
 }
 
 }  // namespace stickslip::python

@@ -38,8 +38,9 @@ std::unique_ptr<System> SystemOf(const py::object& system) {
   if (py::isinstance<ForcedParams>(system))
     return std::make_unique<ForcedModel>(system.cast<ForcedParams>());
   if (py::isinstance<Params>(system)) return std::make_unique<Model>(system.cast<Params>());
-  throw InvalidArgument("system: " + py::repr(system).cast<std::string>() +
-                        " is neither Params, ForcedParams, ChainParams, CouplingParams nor System");
+  throw py::type_error("system: " + py::repr(system).cast<std::string>() + " is a " +
+                       py::str(py::type::of(system).attr("__name__")).cast<std::string>() +
+                       ", not Params, ForcedParams, ChainParams, CouplingParams or System");
 }
 
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,

@@ -20,6 +20,7 @@ from ._core import __doc__ as _core_doc  # noqa: F401
 from ._core import __version__, git_commit  # noqa: F401
 from ._sweep import (SweepError, SweepResult, forced_orbits, group_stats,  # noqa: F401
                      read_sweep, stick_slip_orbit, stick_slip_orbits, sweep)
+from ._system_orbits import system_orbits  # noqa: F401
 from . import _display as _display_module, plot  # noqa: E402
 from ._physical import continue_physical  # noqa: E402,F401
 

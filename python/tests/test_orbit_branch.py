@@ -61,7 +61,7 @@ class OrbitBranchTest(unittest.TestCase):
             with self.assertRaises(ValueError) as e:
                 stickslip.continue_orbits(bp, **args)
             self.assertIn(word, str(e.exception))
-        with self.assertRaises(ValueError):
+        with self.assertRaises(TypeError):
             stickslip.continue_orbits("belt", "v", [0.5, 0.0], 0.38)
 
 

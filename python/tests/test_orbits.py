@@ -167,7 +167,7 @@ class ForcedOrbits(unittest.TestCase):
         p = seed_forced()
         value_errors = [({"nope": [0.1]}, "column 'nope' is not a parameter of the forced cubic"),
                         ({"mu_k": [0.1]}, "column 'mu_k' is not a parameter"),
-                        ({"omega": [0.5, 0.0]}, "row 1: omega"),
+                        ({"omega": [0.5, 0.0]}, "row 1 (omega = 0): omega = 0 must be"),
                         ({"force": [0.1, math.nan]}, "row 1: force = nan is not finite"),
                         ({"omega": [0.5], "force": [0.1, 0.2]}, "columns differ in length"),
                         ({}, "no parameter column")]

@@ -5,17 +5,19 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "batch_rows.hpp"
 #include "numerics/max_abs.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
+#include "system_columns.hpp"
 
 namespace stickslip {
 
 namespace {
+
+using batch_detail::SetRow;
 
 // A row costs a transient and a Newton solve (about 0.1 ms): small blocks
 // balance the workers, and a thread pays for its start within a block.
@@ -23,60 +25,6 @@ constexpr std::size_t kSystemBlockRows = 16;
 constexpr std::size_t kSystemThreadRows = 32;
 // Newton iterations from a run that did not recur (system_batch.hpp, step 3).
 constexpr int kUnsettledNewton = 8;
-
-// The column checks; empty if the columns are usable.
-std::string ColumnError(const System& base, const std::vector<SystemColumn>& columns) {
-  if (columns.empty()) return "no parameter column: give at least one";
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    const int j = columns[c].parameter;
-    if (j < 0 || j >= base.parameters())
-      return "column " + std::to_string(c) + ": parameter index " + std::to_string(j) +
-             " is not one of the system's " + std::to_string(base.parameters());
-    for (std::size_t d = 0; d < c; ++d)
-      if (columns[d].parameter == j) return "column '" + base.ParameterName(j) + "' is given twice";
-    if (columns[c].values.size() != columns[0].values.size()) {
-      std::ostringstream os;
-      os << "columns differ in length: " << base.ParameterName(columns[0].parameter) << " "
-         << columns[0].values.size() << ", " << base.ParameterName(j) << " "
-         << columns[c].values.size();
-      return os.str();
-    }
-  }
-  return {};
-}
-
-void SetRow(const std::vector<SystemColumn>& columns, std::size_t i, System& s) {
-  for (const SystemColumn& c : columns) s.SetParameterValue(c.parameter, c.values[i]);
-}
-
-// The first row whose system is invalid, as one line; empty if none.
-std::string RowError(const System& base, const std::vector<SystemColumn>& columns,
-                     std::size_t rows) {
-  const std::unique_ptr<System> s = base.Clone();
-  for (std::size_t i = 0; i < rows; ++i) {
-    SetRow(columns, i, *s);
-    for (const SystemColumn& c : columns)
-      if (!std::isfinite(c.values[i]))
-        return "row " + std::to_string(i) + ": " + base.ParameterName(c.parameter) + " = " +
-               Num(c.values[i]) + " is not finite";
-    const std::string err = s->ValidationError();
-    if (!err.empty()) return "row " + std::to_string(i) + ": " + err;
-  }
-  return {};
-}
-
-SystemBatch Sized(std::size_t rows, int tangent) {
-  SystemBatch b;
-  b.tangent = tangent;
-  b.status.assign(rows, OrbitStatus::kCancelled);
-  b.m.assign(rows, 0);
-  b.sticks.assign(rows, 0);
-  b.period.assign(rows, 0.0);
-  b.multiplier.assign(rows, 0.0);
-  for (auto* col : {&b.start, &b.lo, &b.hi}) col->assign(rows * tangent, 0.0);
-  b.stable.assign(rows, 0);
-  return b;
-}
 
 OrbitStatus FromFlow(FlowStatus s) {
   return s == FlowStatus::kCancelled ? OrbitStatus::kCancelled : OrbitStatus::kIntegratorFailed;
@@ -264,15 +212,12 @@ SystemBatch StroboscopicOrbits(const System& base, const std::vector<SystemColum
     err = "a stroboscopic section needs a system with one clock, not " +
           std::to_string(base.clocks());
   SystemBatchOptions o = options;
-  if (o.start.size() == 0) o.start = Eigen::VectorXd::Zero(base.dimension());
-  if (err.empty() && o.start.size() != base.dimension())
-    err = "the start has " + std::to_string(o.start.size()) + " components, the system " +
-          std::to_string(base.dimension());
-  if (err.empty()) err = ColumnError(base, columns);
+  if (err.empty()) err = batch_detail::StartError(base, &o.start);
+  if (err.empty()) err = batch_detail::ColumnError(base, columns);
   const std::size_t rows = columns.empty() ? 0 : columns[0].values.size();
-  if (err.empty()) err = RowError(base, columns, rows);
+  if (err.empty()) err = batch_detail::RowError(base, columns, rows);
   if (!err.empty()) throw InvalidArgument(err);
-  SystemBatch out = Sized(rows, base.tangent_dimension());
+  SystemBatch out = batch_detail::Sized(rows, base.tangent_dimension());
   if (rows == 0) return out;
   if (o.cancelled && o.cancelled()) {
     out.cancelled = true;

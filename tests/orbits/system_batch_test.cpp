@@ -245,9 +245,9 @@ TEST(SystemBatch, BadColumnsAndOptionsAreRefusedBeforeAnyWork) {
   ExpectRefused({{99, {1.0}}}, o, "parameter index 99");
   ExpectRefused({{mu, {0.4}}, {mu, {0.4}}}, o, "'mu_s' is given twice");
   ExpectRefused({{mu, {0.4, 0.4}}, {ForcedModel::kOmegaIndex, {1.0}}}, o, "differ in length");
-  ExpectRefused({{mu, {0.4, -1.0}}}, o, "row 1: mu_s");
+  ExpectRefused({{mu, {0.4, -1.0}}}, o, "row 1 (mu_s = -1): mu_s");
   ExpectRefused({{mu, {0.4, NAN}}}, o, "row 1: mu_s = nan");
-  ExpectRefused({{ForcedModel::kOmegaIndex, {1.0, 0.0}}}, o, "row 1: omega");
+  ExpectRefused({{ForcedModel::kOmegaIndex, {1.0, 0.0}}}, o, "row 1 (omega = 0): omega");
   SystemBatchOptions bad = o;
   bad.max_m = 0;
   ExpectRefused({{mu, {0.4}}}, bad, "max_m = 0");

@@ -67,7 +67,11 @@ struct SystemBatchOptions {
 struct SystemBatch {
   int tangent = 0;  ///< tangent components per row of start, lo and hi
   std::vector<OrbitStatus> status;
-  std::vector<std::int32_t> m;       ///< clock periods per period of the orbit
+  /// Section crossings per period: clock periods (StroboscopicOrbits) or
+  /// stick exits of `contact` (SettledOrbits, settled_batch.hpp).
+  std::vector<std::int32_t> m;
+  /// The contact whose stick exit is the section; -1 on a stroboscopic one.
+  std::vector<std::int32_t> contact;
   std::vector<std::int32_t> sticks;  ///< stick phases per period of the orbit
   std::vector<double> period;        ///< m periods of the clock
   /// Row-major, `tangent` per row: the orbit's point on the section (phase

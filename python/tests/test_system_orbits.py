@@ -1,0 +1,117 @@
+"""stickslip.orbits(system, columns) and system_orbits (ctest: Python.SystemOrbits):
+the settled stick-slip orbits of a model file's undamped coulomb belt against the
+closed form (slip arc a circle about x = mu_k of radius sqrt(v^2 + d^2), d =
+mu_s - mu_k; period pi + 2 atan(v / d) + 2 d / v), the drill string's row at
+T_m = 10000 against reference/drill_string_reference.py (mpmath Taylor, 40
+digits: 5.092532911302433), rows equal to settle() one at a time, a clocked
+model on the stroboscopic batch, System pickling, a sweep through a
+LocalCluster equal to the serial one, and bad input refused by name."""
+import os
+import pickle
+import unittest
+
+import numpy as np
+
+import stickslip
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
+COULOMB = """name = coulomb_belt
+coordinates = x
+parameter v = 0.2
+parameter mu_s = 0.4
+parameter mu_k = 0.25
+x'' = -x + F
+contact F = x' - v
+law F = mu_k
+static F = mu_s
+"""
+OK, NO_RETURN = int(stickslip.OrbitStatus.ok), int(stickslip.OrbitStatus.no_return)
+
+
+class SystemOrbits(unittest.TestCase):
+    def test_undamped_coulomb_model_matches_the_closed_form(self):
+        s = stickslip.System.from_text(COULOMB)
+        v = np.array([0.05, 0.1, 0.15, 0.2, 0.24])  # from rest x' reaches mu_k = 0.25 > v
+        mu_s = np.array([0.3, 0.4, 0.35, 0.5, 0.6])
+        r = stickslip.orbits(s, {"v": v, "mu_s": mu_s}, transient=200, rtol=1e-12, atol=1e-14)
+        d = mu_s - 0.25
+        np.testing.assert_array_equal(r["status"], OK)
+        np.testing.assert_allclose(r["period"], np.pi + 2 * np.arctan(v / d) + 2 * d / v,
+                                   rtol=1e-11, atol=0)
+        np.testing.assert_allclose(r["x_max"], 0.25 + np.hypot(v, d), rtol=0, atol=1e-10)
+        np.testing.assert_allclose(r["x'_min"], -np.hypot(v, d), rtol=0, atol=1e-10)
+        np.testing.assert_allclose(r["x"], mu_s, rtol=0, atol=1e-12)  # the stick exit x = mu_s
+        np.testing.assert_array_equal(r["m"], 1)
+        np.testing.assert_array_equal(r["contact"], 0)
+        np.testing.assert_array_equal(r["sticks"], 1)
+        for k, a in r.items():
+            self.assertFalse(a.flags.writeable, k)
+            self.assertEqual(a.shape, (5,), k)
+
+    def test_drill_row_matches_the_mpmath_reference_and_settle(self):
+        drill = stickslip.System.from_file(os.path.join(ROOT, "studies/models/drill_string.ini"))
+        t_m = np.array([9900.0, 10000.0, 10300.0])
+        r = stickslip.orbits(drill, {"T_m": t_m}, threads=2)
+        self.assertTrue(np.all(r["stick_slip"]))
+        self.assertAlmostEqual(r["period"][1], 5.092532911302433, delta=1e-11)
+        for i, t in enumerate(t_m):
+            one = drill.copy()
+            one["T_m"] = t
+            s = stickslip.settle(one, np.zeros(3))
+            self.assertTrue(s.found, s.message)
+            self.assertEqual(s.period, r["period"][i])
+            self.assertEqual(s.returns, r["m"][i])
+            self.assertEqual(s.stable, bool(r["stable"][i]))
+            np.testing.assert_array_equal(s.start, [r["phi"][i], r["w_r"][i], r["w_b"][i]])
+
+    def test_steady_sliding_rows_have_no_return_and_zeros(self):
+        s = stickslip.System.from_text(COULOMB.replace("x'' = -x + F", "x'' = -0.1*x' - x + F"))
+        r = stickslip.orbits(s, {"v": [0.1, 3.0]}, state=[0.0, 0.0], transient=300)
+        self.assertEqual(r["status"][0], OK)
+        self.assertEqual(r["status"][1], NO_RETURN)  # slides on: the flow never meets the belt
+        self.assertEqual(r["period"][1], 0)
+        self.assertEqual(r["contact"][1], -1)
+
+    def test_a_clocked_model_takes_the_stroboscopic_batch(self):
+        forced = stickslip.System.from_file(os.path.join(ROOT, "studies/models/forced.ini"))
+        r = stickslip.orbits(forced, {"omega": [0.8, 1.2]})
+        np.testing.assert_array_equal(r["contact"], -1)
+        ok = r["status"] == OK
+        self.assertTrue(np.any(ok))
+        np.testing.assert_allclose(r["period"][ok], r["m"][ok] * 2 * np.pi / np.array([0.8, 1.2])[ok],
+                                   rtol=1e-13)
+
+    def test_a_system_pickles_with_its_parameters(self):
+        s = stickslip.System.from_text(COULOMB, "mine.ini")
+        s["v"] = 0.3
+        t = pickle.loads(pickle.dumps(s))
+        self.assertEqual(t["v"], 0.3)
+        self.assertEqual(repr(t), repr(s))
+
+    def test_sweep_on_a_local_cluster_equals_the_serial_one(self):
+        s = stickslip.System.from_text(COULOMB)
+        fn = stickslip.system_orbits(s, transient=200)
+        grid = {"v": np.linspace(0.05, 0.24, 12)}
+        serial = stickslip.sweep(fn, grid, scheduler="serial")
+        dask = stickslip.sweep(fn, grid, n_workers=2, chunk_size=3)
+        self.assertIn("period", serial.columns)
+        for c in serial.columns:
+            np.testing.assert_array_equal(serial[c], dask[c], c)
+        self.assertTrue(np.all(serial["stick_slip"] == 1))
+
+    def test_bad_input_is_refused_by_name(self):
+        s = stickslip.System.from_text(COULOMB)
+        with self.assertRaisesRegex(ValueError, "column 'w' is no parameter"):
+            stickslip.orbits(s, {"w": [1.0]})
+        with self.assertRaisesRegex(TypeError, "columns must be a dict"):
+            stickslip.orbits(s, [1.0])
+        with self.assertRaisesRegex(ValueError, "start has 3 components"):
+            stickslip.orbits(s, {"v": [0.2]}, state=[0, 0, 0])
+        with self.assertRaisesRegex(ValueError, r"row 0 \(mu_s = -1\): the static coefficient"):
+            stickslip.orbits(s, {"mu_s": [-1.0]})
+        with self.assertRaisesRegex(ValueError, "threads"):
+            stickslip.system_orbits(s, threads=2)
+
+
+if __name__ == "__main__":
+    unittest.main()
