@@ -62,8 +62,7 @@ struct PyForcedOrbit {
 };
 
 PyForcedOrbit MakeOrbit(const stickslip::PeriodicOrbit& o, int m,
-                        const std::vector<Eigen::VectorXd>& pts,
-                        bool exit_map) {
+                        const std::vector<Eigen::VectorXd>& pts, bool exit_map) {
   PyForcedOrbit r;
   const Extrema e = OrbitExtrema(o);
   r.m = m, r.sticks = o.sticks, r.crossings = o.crossings, r.iterations = o.iterations;
@@ -193,7 +192,8 @@ void BindForcedTypes(py::module_& m) {
       .value("closed", BranchStatus::kClosed)
       .value("cancelled", BranchStatus::kCancelled)
       .value("left_range", BranchStatus::kLeftRange)
-      .value("contact_lost", BranchStatus::kContactLost);
+      .value("contact_lost", BranchStatus::kContactLost)
+      .value("sequence_ended", BranchStatus::kSequenceEnded);
   py::class_<ForcedParams>(m, "ForcedParams",
                            "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
                            "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")

@@ -137,6 +137,7 @@ class BranchStatus(enum.IntEnum):
     cancelled = 6
     left_range = 7
     contact_lost = 8
+    sequence_ended = 9
 
 LawLike = Union[str, Law]
 IntegratorLike = Union[str, Integrator, None]

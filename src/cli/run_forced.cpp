@@ -315,8 +315,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;
   const BranchStatus last = pieces.back().branch.status;
-  if (last != BranchStatus::kReachedEnd && last != BranchStatus::kClosed &&
-      !(pieces.size() == 2 && last == BranchStatus::kUnbounded))
+  if (!Complete(last) && !(pieces.size() == 2 && last == BranchStatus::kUnbounded))
     partial = "partial branch written (" + status + ")";
   return app.ExitCode(partial);
 }

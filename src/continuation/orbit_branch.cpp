@@ -250,14 +250,7 @@ void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, VectorXd u0, int
       out->special.push_back(before);
       out->rows.push_back(before);
     } else if (after.p == last.p) {  // no orbit beyond: the branch ends at the edge
-      out->message += "; " + why;
-      if (std::isfinite(before.p)) {
-        out->special.push_back(orbit_detail::EdgeWithoutOrbit(problem, before, pdir, o.locate_tol));
-        out->rows.push_back(out->special.back());
-        if (out->special.back().label == SpecialKind::kContactLoss)
-          out->status = BranchStatus::kContactLost;
-      }
-      return;
+      return orbit_detail::EndAtEdge(problem, before, pdir, o.locate_tol, why, out);
     }  // else: the orbit goes on past the failure (natural steps); on from there
     ++out->jumps;
     u0 = problem.Unknowns(after.start, after.p);

@@ -165,4 +165,21 @@ OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double 
   return point;
 }
 
+void EndAtEdge(OrbitProblem& problem, const OrbitRow& before, double dir, double tol,
+               const std::string& why, OrbitBranch* out) {
+  out->message += "; " + why;
+  if (!std::isfinite(before.p)) return;  // not located: cut short (step-too-small)
+  out->special.push_back(EdgeWithoutOrbit(problem, before, dir, tol));
+  out->rows.push_back(out->special.back());
+  const OrbitRow& end = out->special.back();
+  if (end.label == SpecialKind::kContactLoss) {
+    out->status = BranchStatus::kContactLost;
+    return;
+  }
+  // The sequence's natural end: the step's failure was its symptom.
+  out->status = BranchStatus::kSequenceEnded;
+  out->message = "the switching sequence ends at " + std::string(Name(end.label)) +
+                 " (p = " + Num(end.p, 15) + "), with no periodic orbit of the same period beyond";
+}
+
 }  // namespace stickslip::orbit_detail

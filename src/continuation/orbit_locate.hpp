@@ -79,5 +79,10 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
 // the search beyond (problem.Opened()), else labelled by the switching
 // counts of one period from its state just past the edge.
 OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol);
+// The branch ends at that edge: its labelled row (when `before` was located)
+// ends the rows and special points, with status contact-lost at CL, else
+// sequence-ended; `why` is added to the message where it was not located.
+void EndAtEdge(OrbitProblem& problem, const OrbitRow& before, double dir, double tol,
+               const std::string& why, OrbitBranch* out);
 
 }  // namespace stickslip::orbit_detail

@@ -21,6 +21,13 @@ struct ModeProgram {
   std::vector<int> full_field, full_aux;  ///< in full
   std::vector<int> jacobian;  ///< tangent x tangent (the clock left out), row-major, in full
   std::vector<std::vector<int>> lambda_gradient;  ///< per sticking contact, n, in full
+  /// Per parameter j, the tape of a run with the column dz/dp_j: the full
+  /// tape's outputs (the same node numbers: copies of its recording, each
+  /// sealed on its own outputs) and df/dp_j (n), the aux rows' d/dp_j (as
+  /// aux) and, with a clock, df/dtheta on the tangent block.
+  std::vector<Tape> column;
+  std::vector<std::vector<int>> dfield, daux;  ///< per parameter
+  std::vector<int> dclock;                     ///< tangent entries
 };
 
 /// A linear form sum_t w_t z_t - speed, its w_t and speed as nodes of the
@@ -55,6 +62,10 @@ struct Compiled {
   std::vector<Denominator> denominators;
   /// The clock's rate (clocks: a node of the contact tape; it must be > 0).
   Denominator clock_rate{-1, 0, ""};
+  /// d h_c / dp_j per contact and parameter (linear in the state) and the
+  /// clock rate's d/dp_j, as nodes of the contact tape.
+  std::vector<std::vector<int>> dvelocity;
+  std::vector<int> dclock_rate;
 };
 
 /// A number for messages: %.12g.

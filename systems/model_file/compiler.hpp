@@ -40,6 +40,7 @@ class Compiler {
   void Mode(int index);
   void Record(ModeProgram& p, const std::vector<ex>& field, const std::vector<ex>& aux,
               const std::vector<ex>& lambdas);
+  void RecordColumns(ModeProgram& p, const std::vector<int>& full_out);
 
   const ModelSpec& spec_;
   std::vector<GiNaC::symbol> state_, params_, forces_;

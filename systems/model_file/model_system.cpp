@@ -150,6 +150,25 @@ void ModelSystem::StickForceGradient(const ModeSet& m, int i, ConstState z, Stat
   for (int u = 0; u < c_->n; ++u) g[u] = v[grad[u]];
 }
 
+ContactSensitivity ModelSystem::ContactParameterDerivative(const ModeSet& m, int i, int j,
+                                                           ConstState z) const {
+  ContactSensitivity d;
+  thread_local std::vector<double> v;
+  Values(c_->contact, z, v);
+  d.speed = -v[c_->dvelocity[i][j]];  // h = w.z - speed: d speed/dp = -dh/dp at z
+  const ModeProgram& p = Program(m);
+  if (!p.consistent || !m.sticks(i)) return d;
+  Values(p.column[j], z, v);
+  const int q = StickSlot(m, i);
+  d.stick_force = v[p.daux[j][2 * q]];
+  d.static_limit = v[p.daux[j][2 * q + 1]];
+  return d;
+}
+
+double ModelSystem::ClockRateDerivative(int, int j) const {
+  return c_->clocks ? contact_values_[c_->dclock_rate[j]] : 0.0;
+}
+
 // Newton on f(x) = 0 from x; true if it converged to a finite point.
 bool ModelSystem::Newton(const ModeSet& m, Eigen::VectorXd& x) const {
   Eigen::VectorXd f(c_->n);

@@ -43,6 +43,11 @@ class ModelSystem final : public System {
   void Field(const ModeSet& m, ConstState z, StateOut f) const override;
   void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const override;
   std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest& request) const override;
+  /// Every parameter: its column's field is derived from the file (compiled.hpp).
+  bool SupportsParameterColumn(int j) const override { return j >= 0 && j < parameters(); }
+  ContactSensitivity ContactParameterDerivative(const ModeSet& m, int i, int j,
+                                                ConstState z) const override;
+  double ClockRateDerivative(int c, int j) const override;
   /// Newton from the origin on the field of a mode without stick; the point
   /// must lie on that mode's side of every contact.
   bool Rest(const ModeSet& m, StateOut z, bool* stable) const override;

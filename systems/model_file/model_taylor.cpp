@@ -2,10 +2,13 @@
 // order by order (tape.hpp). With coefficients 0..k of the state, the
 // tape's order k gives f_k, so z_{k+1} = f_k / (k+1); the variational rows
 // take J's series: Phi_{k+1} = sum_{j=0..k} J_j Phi_{k-j} / (k+1); the
-// auxiliary rows are the sticking contacts' lambda and static limit.
+// parameter column z_p' = J z_p + (df/dtheta) theta_p + df/dp likewise (the
+// tape of that parameter, compiled.hpp); the auxiliary rows are the sticking
+// contacts' lambda and static limit.
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "model_file/model_file.hpp"
@@ -19,6 +22,7 @@ class ModelField final : public TaylorField {
   static constexpr int kExtraOrder = 6;
 
  public:
+  explicit ModelField(std::optional<int> parameter) : parameter_(parameter) {}
   bool Bind(const System& s, const ModeSet& m) override {
     const auto* o = dynamic_cast<const ModelSystem*>(&s);
     if (!o) return false;
@@ -41,8 +45,11 @@ class ModelField final : public TaylorField {
     double value;
   };
   void Phi(int k, const TaylorLayout& l, TaylorRow* c) const;
-  void Entries(const Tape& tape, int n);
+  void Column(int k, const TaylorLayout& l, TaylorRow* c) const;
+  void Entries(const Tape& tape, const std::vector<int>& jacobian, int n);
+  void Cauchy(const Entry& e, const double* q, int k, double* s) const;
 
+  std::optional<int> parameter_;  // the column's, if the runs ask for one
   const ModeProgram* program_ = nullptr;
   std::vector<double> params_;
   int aux_ = 0;
@@ -58,10 +65,10 @@ void ModelField::Coefficients(int order, const TaylorLayout& l, TaylorRow* c) {
     for (int r = 0; r < l.rows(); ++r) std::fill(c[r] + 1, c[r] + kTaylorRowSize, NAN);
     return;
   }
-  const bool var = l.variational;
-  const Tape& tape = var ? p.full : p.plain;
-  const std::vector<int>& field = var ? p.full_field : p.field;
-  const std::vector<int>& aux = var ? p.full_aux : p.aux;
+  const bool var = l.variational, col = l.column && parameter_;
+  const Tape& tape = col ? p.column[*parameter_] : var ? p.full : p.plain;
+  const std::vector<int>& field = var || col ? p.full_field : p.field;
+  const std::vector<int>& aux = var || col ? p.full_aux : p.aux;
   if (capacity_ < tape.size()) {
     rows_ = std::make_unique<TaylorRow[]>(tape.size());
     capacity_ = tape.size();
@@ -70,7 +77,7 @@ void ModelField::Coefficients(int order, const TaylorLayout& l, TaylorRow* c) {
   if (prepared_ != &tape) {
     tape.Constants(params_.data(), rows_.get());
     prepared_ = &tape;
-    if (var) Entries(tape, l.tangent);
+    if (var || col) Entries(tape, p.jacobian, l.tangent);
   }
   for (int k = 0; k <= order; ++k) {
     tape.Order(k, c, rows_.get());
@@ -78,6 +85,7 @@ void ModelField::Coefficients(int order, const TaylorLayout& l, TaylorRow* c) {
     const double inv = 1.0 / (k + 1);
     for (int t = 0; t < l.n; ++t) c[t][k + 1] = rows_[field[t]][k] * inv;
     if (var) Phi(k, l, c);
+    if (col) Column(k, l, c);
   }
   for (int q = 0; q < aux_; ++q) {
     double* row = c[l.aux_first() + q];
@@ -86,8 +94,18 @@ void ModelField::Coefficients(int order, const TaylorLayout& l, TaylorRow* c) {
   }
 }
 
-// Coefficient k+1 of Phi = dz/dz0 (column-major) from J's series 0..k; a
-// constant entry of J is one product, a zero one none.
+// s += coefficient k of J_e q (a Cauchy product; a constant entry is one
+// product, a zero one none).
+void ModelField::Cauchy(const Entry& e, const double* q, int k, double* s) const {
+  if (e.constant) {
+    *s += e.value * q[k];
+    return;
+  }
+  const double* J = rows_[e.node];
+  for (int j = 0; j <= k; ++j) *s += J[j] * q[k - j];
+}
+
+// Coefficient k+1 of Phi = dz/dz0 (column-major) from J's series 0..k.
 void ModelField::Phi(int k, const TaylorLayout& l, TaylorRow* c) const {
   const int n = l.tangent;
   const double inv = 1.0 / (k + 1);
@@ -95,24 +113,37 @@ void ModelField::Phi(int k, const TaylorLayout& l, TaylorRow* c) const {
     const int base = l.phi() + col * n;
     for (int r = 0; r < n; ++r) {
       double s = 0;
-      for (const Entry& e : entries_[r]) {
-        const double* q = c[base + e.u];
-        if (e.constant) {
-          s += e.value * q[k];
-        } else {
-          const double* J = rows_[e.node];
-          for (int j = 0; j <= k; ++j) s += J[j] * q[k - j];
-        }
-      }
+      for (const Entry& e : entries_[r]) Cauchy(e, c[base + e.u], k, &s);
       c[base + r][k + 1] = s * inv;
     }
   }
 }
 
+// Coefficient k+1 of the column z_p (all n rows): J z_p on the tangent
+// block, plus df/dtheta theta_p with a clock, plus df/dp; a clock's row has
+// the rate d omega / dp (a constant), so theta_p = (t - t0) d omega / dp.
+void ModelField::Column(int k, const TaylorLayout& l, TaylorRow* c) const {
+  const ModeProgram& p = *program_;
+  const int nt = l.tangent, j = *parameter_;
+  const double inv = 1.0 / (k + 1);
+  const int base = l.param();
+  for (int r = 0; r < l.n; ++r) {
+    double s = rows_[p.dfield[j][r]][k];
+    if (r < nt) {
+      for (const Entry& e : entries_[r]) Cauchy(e, c[base + e.u], k, &s);
+      if (!p.dclock.empty()) {
+        const double* g = rows_[p.dclock[r]];
+        const double* th = c[base + nt];
+        for (int i = 0; i <= k; ++i) s += g[i] * th[k - i];
+      }
+    }
+    c[base + r][k + 1] = s * inv;
+  }
+}
+
 // J's nonzero entries per row, after the constant rows are in place.
-void ModelField::Entries(const Tape& tape, int n) {
+void ModelField::Entries(const Tape& tape, const std::vector<int>& jac, int n) {
   entries_.assign(n, {});
-  const std::vector<int>& jac = program_->jacobian;
   for (int r = 0; r < n; ++r)
     for (int u = 0; u < n; ++u) {
       const int node = jac[r * n + u];
@@ -125,10 +156,8 @@ void ModelField::Entries(const Tape& tape, int n) {
 
 }  // namespace
 
-std::unique_ptr<TaylorField> ModelSystem::MakeTaylorField(const TaylorRequest&) const {
-  // No parameter column (SupportsParameterColumn stays false): the branch
-  // driver takes dF/dp by differences.
-  return std::make_unique<ModelField>();
+std::unique_ptr<TaylorField> ModelSystem::MakeTaylorField(const TaylorRequest& request) const {
+  return std::make_unique<ModelField>(request.parameter);
 }
 
 }  // namespace stickslip::model_file

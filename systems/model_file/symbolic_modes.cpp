@@ -63,6 +63,9 @@ void Compiler::ParseContact(std::size_t c) {
     Fail(spec_.source, spec.velocity.line,
          "contact " + spec.name + " = '" + spec.velocity.text +
              "' depends on no state component (a relative velocity such as x' - v)");
+  std::vector<int> dh;  // d h_c / dp_j: the parameter column's crossing (ContactSensitivity)
+  for (const GiNaC::symbol& q : params_) dh.push_back(contact_->Node(velocity_[c].diff(q)));
+  out_->dvelocity.push_back(dh);
   law_.push_back(Parse(spec.law, false, false, true, "law " + spec.name));
   normal_.push_back(spec.normal.line ? Parse(spec.normal, true, false, false, "normal " + spec.name)
                                      : ex(1));
@@ -95,6 +98,8 @@ void Compiler::ParseAll() {
   if (!spec_.clock.empty()) {
     clock_rate_ = Parse(spec_.clock_rate, false, false, false, "clock " + spec_.clock);
     out_->clock_rate = {contact_->Node(clock_rate_), spec_.clock_rate.line, spec_.clock_rate.text};
+    for (const GiNaC::symbol& q : params_)
+      out_->dclock_rate.push_back(contact_->Node(clock_rate_.diff(q)));
   }
   for (std::size_t c = 0; c < spec_.contacts.size(); ++c) ParseContact(c);
 }
@@ -181,8 +186,34 @@ void Compiler::Record(ModeProgram& p, const std::vector<ex>& field, const std::v
   full_out.insert(full_out.end(), p.jacobian.begin(), p.jacobian.end());
   for (const std::vector<int>& g : p.lambda_gradient)
     full_out.insert(full_out.end(), g.begin(), g.end());
+  RecordColumns(p, full_out);
   p.plain.Seal(plain_out);
   p.full.Seal(full_out);
+}
+
+// The parameter columns (compiled.hpp): every d/dp_j by forward-mode rules
+// on the full tape's recording (Tape::Derivative), copied and sealed once per
+// parameter before the full tape is sealed without them.
+void Compiler::RecordColumns(ModeProgram& p, const std::vector<int>& full_out) {
+  const int tangent = out_->n - out_->clocks;
+  if (out_->clocks) {
+    const std::vector<int> rows(p.full_field.begin(), p.full_field.begin() + tangent);
+    p.dclock = p.full.Derivative(rows, Op::kState, out_->n - 1);
+  }
+  std::vector<int> rows = p.full_field;
+  rows.insert(rows.end(), p.full_aux.begin(), p.full_aux.end());
+  for (std::size_t j = 0; j < params_.size(); ++j) {
+    const std::vector<int> d = p.full.Derivative(rows, Op::kParam, static_cast<int>(j));
+    p.dfield.emplace_back(d.begin(), d.begin() + out_->n);
+    p.daux.emplace_back(d.begin() + out_->n, d.end());
+  }
+  for (std::size_t j = 0; j < params_.size(); ++j) {
+    std::vector<int> outputs = full_out;
+    for (const std::vector<int>* v : {&p.dclock, &p.dfield[j], &p.daux[j]})
+      outputs.insert(outputs.end(), v->begin(), v->end());
+    p.column.push_back(p.full);
+    p.column.back().Seal(outputs);
+  }
 }
 
 }  // namespace stickslip::model_file

@@ -71,17 +71,25 @@ void Tape::Fold() {
 
 void Tape::Seal(const std::vector<int>& outputs) {
   Fold();
+  // Every node an output reads, by a worklist: Fold's products come after
+  // the nodes that read them.
   std::vector<bool> live(size(), false);
-  for (int o : outputs) live[o] = true;
-  for (int i = size() - 1; i >= 0; --i) {
-    const Node& n = nodes_[i];
-    if (!live[i] || n.op == Op::kState || n.op == Op::kParam || n.op == Op::kConst) continue;
-    live[n.a] = true;
+  std::vector<int> todo;
+  auto mark = [&](int i) {
+    if (!live[i]) live[i] = true, todo.push_back(i);
+  };
+  for (int o : outputs) mark(o);
+  while (!todo.empty()) {
+    const Node& n = nodes_[todo.back()];
+    todo.pop_back();
+    if (n.op == Op::kState || n.op == Op::kParam || n.op == Op::kConst) continue;
+    mark(n.a);
     const bool binary = n.op == Op::kAdd || n.op == Op::kSub || n.op == Op::kMul ||
                         n.op == Op::kDiv || n.op == Op::kSin || n.op == Op::kCos ||
                         n.op == Op::kSinh || n.op == Op::kCosh;  // a pair reads its partner
-    if (binary) live[n.b] = true;
+    if (binary) mark(n.b);
   }
+  live_ = live;
   program_.clear();
   for (int i = 0; i < size(); ++i) {
     if (constant_[i] || !live[i]) continue;
@@ -153,7 +161,7 @@ void Tape::Order(int k, const TaylorRow* state, TaylorRow* rows) const {
 
 void Tape::Constants(const double* params, TaylorRow* rows) const {
   for (int i = 0; i < size(); ++i) {
-    if (!constant_[i]) continue;
+    if (!constant_[i] || (!live_.empty() && !live_[i])) continue;
     std::fill(rows[i], rows[i] + kTaylorRowSize, 0.0);
     Compute(i, 0, nullptr, params, rows);
   }
@@ -231,7 +239,7 @@ void Tape::Values(const double* z, const double* params, double* out) const {
   // The constants first: Fold's products are made after the nodes that use them.
   for (int pass = 0; pass < 2; ++pass)
     for (int i = 0; i < size(); ++i)
-      if (constant_[i] == (pass == 0)) Value(i, z, params, out);
+      if (constant_[i] == (pass == 0) && (live_.empty() || live_[i])) Value(i, z, params, out);
 }
 
 void Tape::Value(int i, const double* z, const double* params, double* out) const {

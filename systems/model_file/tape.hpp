@@ -40,6 +40,10 @@ class Tape {
  public:
   /// Appends a node; returns its index. Arguments must be earlier nodes.
   int Add(const Node& n);
+  /// The derivatives of `outputs` in one input (kState or kParam, its index),
+  /// appended as nodes by forward-mode rules (tape_derivative.cpp); before
+  /// Seal. A zero derivative is a constant node 0.
+  std::vector<int> Derivative(const std::vector<int>& outputs, Op input, int index);
   /// Sets node i's second argument (a sin node's cos partner, made after it).
   void SetB(int i, int b) { nodes_[i].b = b; }
   /// Whether node i is constant in time (parameters and constants only): its
@@ -53,14 +57,16 @@ class Tape {
   /// nodes no output needs are left out.
   void Seal(const std::vector<int>& outputs);
   /// The constant nodes' rows (coefficient 0, zeros past it) at these
-  /// parameters: once, before Order's calls on the same rows.
+  /// parameters, those an output needs: once, before Order's calls on the
+  /// same rows.
   void Constants(const double* params, TaylorRow* rows) const;
   /// Coefficient k of every node that varies, given coefficients 0..k of the
   /// state rows (state[i][j]); coefficients 0..k-1 of every node are in
   /// `rows` from the calls before (k = 0, 1, ... in turn), the constant
   /// nodes' from Constants.
   void Order(int k, const TaylorRow* state, TaylorRow* rows) const;
-  /// Every node's value at the point (coefficient 0 only).
+  /// The value at the point (coefficient 0 only) of every node an output
+  /// needs (after Seal), else of every node.
   void Values(const double* z, const double* params, double* out) const;
 
  private:
@@ -79,6 +85,7 @@ class Tape {
   std::vector<Node> nodes_;
   std::vector<bool> constant_;
   std::vector<Instr> program_;
+  std::vector<bool> live_;  // after Seal: the nodes an output needs (Values, Constants)
 };
 
 }  // namespace stickslip::model_file

@@ -107,12 +107,14 @@ TEST_F(ModelFileApp, TheChainFileGivesTheBuiltInBranch) {
   const auto built =
       RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2.ini"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
-  // Measured: states 7.5e-15 (246 rows); the multipliers 1e-8 on the last
-  // rows before the grazing point, where the return map's derivative grows
-  // without bound (the stick time vanishes like a square root): there a
-  // rounding of 1e-16 in the orbit moves them that much, in either code.
-  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-7);
-  ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-7);
+  // Measured: states 7.5e-15 (246 rows); the multipliers 1.3e-7 at the
+  // grazing point's row (1e-8 on the rows before it), where the return map's
+  // derivative grows without bound (the stick time vanishes like a square
+  // root): there a rounding of 1e-16 in the orbit moves them that much, in
+  // either code (the file's parameter column is exact, the built-in chain's
+  // by differences).
+  ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-6);
+  ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-6);
 }
 
 // The forced belt written as a model file (clock theta = omega) through

@@ -8,8 +8,8 @@
 #include <set>
 #include <string>
 
-#include "stickslip/basin/basin.hpp"
 #include "stickslip/basin/attractors.hpp"
+#include "stickslip/basin/basin.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/chart/chart.hpp"
@@ -20,8 +20,8 @@
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/orbit.hpp"
-#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 #include "stickslip/orbits/shooting.hpp"
@@ -84,7 +84,7 @@ TEST(Names, FormerSwitchTablesRoundTripAndCoverTheirEnums) {
   Covers("LyapunovStatus", LyapunovStatus::kContactOpen);
   Covers("SweepDirection", SweepDirection::kDown);
   Covers("Parameter", Parameter::kOmega);
-  Covers("BranchStatus", BranchStatus::kContactLost);
+  Covers("BranchStatus", BranchStatus::kSequenceEnded);
   Covers("SimulationStatus", SimulationStatus::kRowLimit);
   Covers("SimulationSection", SimulationSection::kNone);
   Covers("CurveKind", CurveKind::kTorus);

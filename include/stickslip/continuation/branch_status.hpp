@@ -18,23 +18,35 @@ enum class BranchStatus {
   /// A contact's normal force reached 0 (labelled CL): beyond, the contact
   /// opens and the system is another one (issue 32).
   kContactLost,
+  /// The orbit's switching sequence ends at a located nonsmooth point (GR,
+  /// SW, AD, CR: the last row) and no periodic orbit of the same period
+  /// exists beyond: the branch's natural end on its section.
+  kSequenceEnded,
 };
 template <>
 struct EnumNames<BranchStatus> {
   static constexpr NamedValue<BranchStatus> kTable[] = {
-      {BranchStatus::kReachedEnd, "reached-end"},      {BranchStatus::kUnbounded, "unbounded"},
-      {BranchStatus::kStepTooSmall, "step-too-small"}, {BranchStatus::kStartFailed, "start-failed"},
-      {BranchStatus::kMaxPoints, "max-points"},        {BranchStatus::kClosed, "closed"},
-      {BranchStatus::kCancelled, "cancelled"},         {BranchStatus::kLeftRange, "left-range"},
+      {BranchStatus::kReachedEnd, "reached-end"},
+      {BranchStatus::kUnbounded, "unbounded"},
+      {BranchStatus::kStepTooSmall, "step-too-small"},
+      {BranchStatus::kStartFailed, "start-failed"},
+      {BranchStatus::kMaxPoints, "max-points"},
+      {BranchStatus::kClosed, "closed"},
+      {BranchStatus::kCancelled, "cancelled"},
+      {BranchStatus::kLeftRange, "left-range"},
       {BranchStatus::kContactLost, "contact-lost"},
+      {BranchStatus::kSequenceEnded, "sequence-ended"},
   };
 };
 
-/// Whether a branch ended where it should: at its end, closed, or at CL
-/// (anything else was cut short).
+/// Whether a branch ended where it should: at its end, closed, at CL, where
+/// its switching sequence ends, or past its start after a fold (it left its
+/// window [from, to], AUTO-07p's normal end at RL0, RL1); anything else was
+/// cut short.
 inline bool Complete(BranchStatus s) {
   return s == BranchStatus::kReachedEnd || s == BranchStatus::kClosed ||
-         s == BranchStatus::kContactLost;
+         s == BranchStatus::kContactLost || s == BranchStatus::kSequenceEnded ||
+         s == BranchStatus::kLeftRange;
 }
 
 }  // namespace stickslip
