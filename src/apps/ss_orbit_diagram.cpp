@@ -130,10 +130,7 @@ void ConfigureSystem(const cli::Arguments& args, Setup& s) {
     const std::string e = at->ValidationError();
     if (!e.empty()) throw cli::UsageError(args.Source(end) + " = " + args.Text(end) + ": " + e);
   }
-  const ss::Section x = ss::MaximaSection(*s.system);
-  s.labels = {name, name,
-              s.system->StateName(x.g.terms[0].index) + " = 0 falling (maxima of " +
-                  s.system->StateName(0) + ")"};
+  s.labels = {name, name, cli::DefaultSectionText(*s.system)};
 }
 
 Setup Configure(const cli::Arguments& args) {

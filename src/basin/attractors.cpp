@@ -44,8 +44,6 @@ std::string AttractorOptions::ValidationError(const System& s) const {
   if (s.clocks() > 1) return "a system with more than one clock has no one stroboscopic map";
   if (s.clocks() == 1 && surface)
     return "a system with a clock is classified on its stroboscopic section, not a surface";
-  if (s.clocks() == 0 && !surface && s.DerivativeOf(0) < 0)
-    return "component " + s.StateName(0) + " has no velocity: the options must give the section";
   return iterate.ValidationError();
 }
 

@@ -195,14 +195,16 @@ bool FieldVanishes(const System& s, const ModeSet& m, ConstState z, double tol) 
 
 Section MaximaSection(const System& s) {
   const int d = s.DerivativeOf(0);
-  if (d < 0)
-    throw InvalidArgument("component " + s.StateName(0) +
-                          " has no velocity component (a first-order state): the maxima "
-                          "section needs a coordinate first, or give the section");
   Section x;
-  x.g.terms[0] = {d, 1.0};
-  x.g.size = 1;
   x.direction = -1;
+  if (d >= 0) {
+    x.g.terms[0] = {d, 1.0};
+    x.g.size = 1;
+    return x;
+  }
+  x.g = s.Contact(0);  // h(z) = w.z - speed
+  const SteadyState rest = SteadySliding(s);
+  if (rest.found) x.g.speed += x.g.At(rest.z.data());  // h(z) - h(rest) = 0
   return x;
 }
 

@@ -153,9 +153,7 @@ Described Describe(const Arguments& args, const std::string& prog, const std::st
                                  {"integrator", Name(flow.integrator)},
                                  {"rtol", FormatNumber(flow.rtol)},
                                  {"atol", FormatNumber(flow.atol)}});
-    const Section x = MaximaSection(s);
-    section = "returns to " + s.StateName(x.g.terms[0].index) + " = 0 falling (maxima of " +
-              s.StateName(0) + ")";
+    section = "returns to " + DefaultSectionText(s);
     unit = "returns";
     d.title = EnhancedText(Wrapped(d.model, 90));
     d.figure.stem = "basins";

@@ -8,6 +8,7 @@
 #include "chain/chain.hpp"
 #include "mode_coupling/mode_coupling.hpp"
 #include "model_file/model_file.hpp"
+#include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/report.hpp"
 
@@ -210,6 +211,18 @@ std::string DescribeSystem(const System& s, SystemChoice choice, int continued, 
     out += (j ? " " : ": ") + s.ParameterName(j) + "=" +
            (j == continued || j == other ? std::string(mark) : FormatNumber(s.ParameterValue(j)));
   return out;
+}
+
+std::string DefaultSectionText(const System& s) {
+  const Section x = MaximaSection(s);
+  if (s.DerivativeOf(0) >= 0)
+    return s.StateName(x.g.terms[0].index) + " = 0 falling (maxima of " + s.StateName(0) + ")";
+  std::string h;  // contact 0's relative velocity, as its terms
+  for (int t = 0; t < x.g.size; ++t)
+    h += (t ? " + " : "") +
+         (x.g.terms[t].weight == 1 ? "" : FormatNumber(x.g.terms[t].weight) + " ") +
+         s.StateName(x.g.terms[t].index);
+  return h + " = its value at steady sliding, falling";
 }
 
 }  // namespace stickslip::cli

@@ -55,6 +55,10 @@ std::string SystemLabel(const Arguments& args);
 std::vector<std::string> CommaItems(const std::string& text);
 // The system's parameter names, ", "-separated.
 std::string ParameterList(const System& s);
+/// The words for an autonomous system's default section (MaximaSection):
+/// "x1' = 0 falling (maxima of x1)", or for a first-order state first
+/// "w_b = its value at steady sliding, falling".
+std::string DefaultSectionText(const System& s);
 
 }  // namespace stickslip::cli
 

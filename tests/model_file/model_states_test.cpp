@@ -20,6 +20,7 @@
 #pragma GCC diagnostic pop
 
 #include "model_file/model_file.hpp"
+#include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/equilibria/steady_branch.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
@@ -129,25 +130,32 @@ LReal Until(const Field& field, const Event& event, DrillState& z) {
   return hi;
 }
 
-TEST(ModelFileStates, TheDrillStringsStickSlipOrbitMatchesAnIndependentIntegrator) {
-  const std::unique_ptr<System> s = ReadModel(kModelDir + "drill_string.ini");
-  ASSERT_EQ(s->dimension(), 3);
-  const Drill d(*s);
-  // The return map from a stick exit (w_b = 0, k_t phi + c_t w_r at the
-  // limit), iterated onto the stable orbit.
+// The reference's stable stick-slip orbit: the return map from a stick exit
+// (w_b = 0, k_t phi + c_t w_r at the limit) iterated until it stops moving;
+// its exit and period; *moved the last step.
+DrillState SettledExit(const Drill& d, LReal* period, LReal* moved) {
   DrillState exit{(d.torque_limit - d.c_t * 3) / d.k_t, 3, 0};
-  LReal period = 0, slip = 0, moved = 1;
-  for (int n = 0; n < 200 && moved > 1e-17L; ++n) {
+  *moved = 1;
+  for (int n = 0; n < 200 && *moved > 1e-17L; ++n) {
     DrillState z = exit;
-    slip = Until([&](const DrillState& y, DrillState& dy) { d.Slip(y, dy); },
-                 [](const DrillState& y) { return -y[2]; }, z);
+    const LReal slip = Until([&](const DrillState& y, DrillState& dy) { d.Slip(y, dy); },
+                             [](const DrillState& y) { return -y[2]; }, z);
     z[2] = 0;
     const LReal stick =
         Until([&](const DrillState& y, DrillState& dy) { d.Stick(y, dy); },
               [&](const DrillState& y) { return d.k_t * y[0] + d.c_t * y[1] - d.torque_limit; }, z);
-    moved = std::abs(z[1] - exit[1]);
-    exit = z, period = slip + stick;
+    *moved = std::abs(z[1] - exit[1]);
+    exit = z, *period = slip + stick;
   }
+  return exit;
+}
+
+TEST(ModelFileStates, TheDrillStringsStickSlipOrbitMatchesAnIndependentIntegrator) {
+  const std::unique_ptr<System> s = ReadModel(kModelDir + "drill_string.ini");
+  ASSERT_EQ(s->dimension(), 3);
+  const Drill d(*s);
+  LReal period = 0, moved = 1;
+  const DrillState exit = SettledExit(d, &period, &moved);
   ASSERT_LE(moved, 1e-15L) << "the reference did not settle";
   ShootingOptions o;
   o.flow.rtol = o.flow.atol = 1e-13;
@@ -244,6 +252,51 @@ TEST(ModelFileStates, TheDrillStringsHopfCurveIsTheClosedForm) {
   EXPECT_GE(points, 40);
   EXPECT_LE(points, 1000);
   EXPECT_LE(worst, 1e-12);  // 2e-16 measured
+}
+
+// A model of first-order states alone has no maxima of a coordinate to cut
+// its orbits at: its default section (MaximaSection) is the bit speed falling
+// through its steady-rotation value. The orbit diagram's point at T_m = 10000
+// against the reference's crossing of that plane (Odeint, long double), and
+// its Lyapunov exponent (the map iterated on that plane) against ln|mu| / T
+// of the shooting's orbit on the stick exit (another section, another code).
+TEST(ModelFileStates, TheDrillStringsOrbitDiagramCutsAtItsSteadyBitSpeed) {
+  const std::unique_ptr<System> s = ReadModel(kModelDir + "drill_string.ini");
+  const Drill d(*s);
+  LReal period = 0, moved = 1;
+  DrillState z = SettledExit(d, &period, &moved);
+  ASSERT_LE(moved, 1e-15L);
+  const SteadyState rest = SteadySliding(*s);
+  ASSERT_TRUE(rest.found);
+  const LReal w_rest = rest.z[2];
+  const auto slip = [&](const DrillState& y, DrillState& dy) { d.Slip(y, dy); };
+  Until(slip, [&](const DrillState& y) { return y[2] - w_rest; }, z);  // rising
+  Until(slip, [&](const DrillState& y) { return w_rest - y[2]; }, z);  // falling: the section
+  OrbitDiagramOptions o;
+  o.from = 10000, o.to = 10100, o.n = 2, o.down = false;
+  o.iterate.flow.rtol = o.iterate.flow.atol = 1e-13;
+  const OrbitDiagram od = ComputeOrbitDiagram(*s, s->ParameterIndex("T_m"), o);
+  ASSERT_FALSE(od.columns.empty());
+  const DiagramColumn& c = od.columns.front();
+  ASSERT_EQ(c.value, 10000);
+  ASSERT_EQ(c.run.status, LyapunovStatus::kDone) << c.run.message;
+  ASSERT_FALSE(c.run.points.empty());
+  for (const SectionPoint& q : c.run.points) {  // period 1: one point
+    EXPECT_NEAR(q.z[0], double(z[0]), 1e-10);
+    EXPECT_NEAR(q.z[1], double(z[1]), 1e-10);
+    EXPECT_NEAR(q.z[2], double(w_rest), 1e-12);
+  }
+  ShootingOptions so;
+  so.flow.rtol = so.flow.atol = 1e-13;
+  const FlowPoint guess{0, Eigen::Vector3d(13.6, 2.35, 0), ModeSet(Mode::kSlipAbove)};
+  const PeriodicOrbit orbit = Shooting(*s, so).Find(guess, PoincareSection::StickExit(0));
+  ASSERT_TRUE(orbit.ok()) << orbit.message;
+  const double lambda = std::log(std::abs(orbit.multipliers.front())) / orbit.period;
+  EXPECT_NEAR(c.run.lyapunov, lambda, 1e-9 * std::abs(lambda));
+  std::printf("[ measured ] section point (%.15g, %.15g) vs reference %.3e; lyapunov %.15g vs "
+              "ln|mu|/T %.15g\n",
+              c.run.points.front().z[0], c.run.points.front().z[1],
+              std::abs(c.run.points.front().z[0] - double(z[0])), c.run.lyapunov, lambda);
 }
 
 }  // namespace

@@ -120,9 +120,11 @@ SectionRun IterateStroboscopic(const System& system, const FlowPoint& start,
 /// relative to 1 + |z|: a rest point.
 bool FieldVanishes(const System& system, const ModeSet& m, ConstState z, double tol);
 
-/// The default section of an autonomous second-order system: the maxima of
-/// component 0 (its velocity, DerivativeOf(0), falling through 0). Throws
-/// InvalidArgument if component 0 has no velocity component.
+/// The default section of an autonomous system: the maxima of component 0
+/// (its velocity, DerivativeOf(0), falling through 0); where component 0 is
+/// a first-order state (no velocity: a drill string's twist), contact 0's
+/// relative velocity falling through its value at steady sliding (0 where
+/// there is none), which a stick-slip orbit crosses once a period.
 Section MaximaSection(const System& system);
 
 }  // namespace stickslip
