@@ -10,6 +10,8 @@
 #include <optional>
 
 #include "py_columns.hpp"
+#include "stickslip/equilibria/steady_sliding.hpp"
+#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/settled_batch.hpp"
 
 namespace stickslip::python {
@@ -23,37 +25,96 @@ SystemColumn SystemColumnOf(const System& s, const py::handle& key, const py::ha
   return {j, Values(name, values)};
 }
 
-// The batch without the GIL, with Ctrl-C.
-SystemBatch Run(const System& s, const std::vector<SystemColumn>& cols, const py::object& state,
-                int threads, std::optional<double> transient, std::optional<int> max_m,
-                double recurrence, const FlowOptions& flow) {
+// The keyword arguments, checked under the GIL: each refusal names its
+// argument (a TypeError for a wrong type, a ValueError for a bad value).
+struct Args {
+  int threads = 0;
+  std::optional<double> transient;
+  std::optional<int> max_m;
+  std::optional<double> recurrence;
   Eigen::VectorXd start;
-  if (!state.is_none()) start = state.cast<Eigen::VectorXd>();
+};
+
+int Integer(const char* name, const py::object& x) {
+  if (py::isinstance<py::bool_>(x) || !py::isinstance<py::int_>(x))
+    throw py::type_error(std::string("orbits: ") + name + " must be an integer, not " +
+                         py::repr(x).cast<std::string>());
+  const long long v = x.cast<long long>();  // OverflowError beyond 64 bits
+  if (v < 0 || v > (1 << 30))
+    throw InvalidArgument(std::string("orbits: ") + name + " = " + std::to_string(v) +
+                          " must lie in [0, 2^30]");
+  return static_cast<int>(v);
+}
+
+std::optional<double> Number(const char* name, const py::object& x) {
+  if (x.is_none()) return std::nullopt;
+  if (py::isinstance<py::bool_>(x) ||
+      !(py::isinstance<py::int_>(x) || py::isinstance<py::float_>(x)))
+    throw py::type_error(std::string("orbits: ") + name + " must be a number, not " +
+                         py::repr(x).cast<std::string>());
+  return x.cast<double>();
+}
+
+Args ArgsOf(const System& s, const py::object& threads, const py::object& state,
+            const py::object& transient, const py::object& max_m, const py::object& recurrence) {
+  Args a;
+  a.threads = Integer("threads", threads);
+  a.transient = Number("transient", transient);
+  if (!max_m.is_none()) {
+    a.max_m = Integer("max_m", max_m);
+    if (*a.max_m < 1) throw InvalidArgument("orbits: max_m = 0 must be >= 1");
+  }
+  a.recurrence = Number("recurrence", recurrence);
+  if (a.recurrence && s.clocks() == 0)
+    throw InvalidArgument("orbits: recurrence applies to a system with a clock (its periods)");
+  if (state.is_none()) return a;
+  const py::array arr = py::module_::import("numpy").attr("asarray")(state);
+  const char kind = arr.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::type_error("orbits: state must hold real numbers, not " +
+                         py::repr(state).cast<std::string>());
+  if (arr.ndim() != 1 || arr.shape(0) != s.dimension()) {
+    std::string names;
+    for (int i = 0; i < s.dimension(); ++i) names += (i ? ", " : "") + s.StateName(i);
+    throw InvalidArgument("orbits: state must be " + std::to_string(s.dimension()) + " numbers (" +
+                          names + "), not of shape " +
+                          py::str(arr.attr("shape")).cast<std::string>());
+  }
+  const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(arr);
+  a.start = Eigen::Map<const Eigen::VectorXd>(d.data(), d.size());
+  return a;
+}
+
+// The batch without the GIL, with Ctrl-C.
+SystemBatch Run(const System& s, const std::vector<SystemColumn>& cols, const Args& a,
+                const FlowOptions& flow) {
   Interrupt interrupt;
   SystemBatch b;
   if (s.clocks() > 0) {
     SystemBatchOptions o;
     o.shooting.flow = flow;
-    o.start = start;
-    if (transient) {
-      if (!(*transient >= 0 && *transient == std::floor(*transient)))
+    o.start = a.start;
+    if (a.transient) {
+      if (!(*a.transient >= 0 && *a.transient == std::floor(*a.transient)))
         throw InvalidArgument(
-            "orbits: transient = " + py::repr(py::float_(*transient)).cast<std::string>() +
+            "orbits: transient = " + py::repr(py::float_(*a.transient)).cast<std::string>() +
             " must be a whole number of clock periods >= 0");
-      o.transient = static_cast<int>(std::min(*transient, 2e9));
+      o.transient = static_cast<int>(std::min(*a.transient, 2e9));
     }
-    if (max_m) o.max_m = *max_m;
-    o.recurrence = recurrence, o.threads = threads;
+    if (a.max_m) o.max_m = *a.max_m;
+    if (a.recurrence) o.recurrence = *a.recurrence;
+    o.threads = a.threads;
     o.cancelled = [&] { return interrupt(); };
     py::gil_scoped_release nogil;
     b = StroboscopicOrbits(s, cols, o);  // InvalidArgument before any work
   } else {
     SettledBatchOptions o;
     o.settle.shooting.flow = flow;
-    o.start = start;
-    if (transient) o.settle.transient = *transient;
-    if (max_m) o.settle.max_returns = *max_m;
-    o.threads = threads;
+    o.start = a.start;
+    o.start_of = [](const System& row) { return NearSteadySliding(row, 0.01); };
+    if (a.transient) o.settle.transient = *a.transient;
+    if (a.max_m) o.settle.max_returns = *a.max_m;
+    o.threads = a.threads;
     o.cancelled = [&] { return interrupt(); };
     py::gil_scoped_release nogil;
     b = SettledOrbits(s, cols, o);
@@ -70,10 +131,22 @@ std::vector<double> Column(const std::vector<double>& block, int tangent, int k)
   return c;
 }
 
-py::dict SystemOrbits(const py::object& system, const py::object& columns, int threads,
-                      const py::object& state, std::optional<double> transient,
-                      std::optional<int> max_m, double recurrence, std::optional<double> rtol,
+py::dict SystemOrbits(const py::object& system, const py::object& columns,
+                      const py::object& threads, const py::object& state,
+                      const py::object& transient, const py::object& max_m,
+                      const py::object& recurrence, std::optional<double> rtol,
                       std::optional<double> atol) {
+  Integer("threads", threads);  // a wrong type named before the overload's advice
+  // Params and ForcedParams have overloads of their own (py_batch.cpp): a
+  // call that reaches this one gave them arguments those do not take.
+  if (py::isinstance<Params>(system))
+    throw py::type_error(
+        "orbits(Params, columns, ...) takes threads, floquet, rtol, atol, integrator and method "
+        "(its stick-slip orbits); for a settled orbit of the belt give a System");
+  if (py::isinstance<ForcedParams>(system))
+    throw py::type_error(
+        "orbits(ForcedParams, columns, ...) takes threads, x0, xdot0, transient (a whole number "
+        "of periods), max_m, recurrence, rtol, atol, integrator and method");
   if (!py::isinstance<py::dict>(columns))
     throw py::type_error("orbits: columns must be a dict {parameter name: 1-D values}, not " +
                          TypeName(columns));
@@ -82,7 +155,8 @@ py::dict SystemOrbits(const py::object& system, const py::object& columns, int t
   for (const auto& item : columns.cast<py::dict>())
     cols.push_back(SystemColumnOf(*s, item.first, item.second));
   const FlowOptions flow = Solver(ShootingOptions().flow, rtol, atol, py::none(), py::none());
-  SystemBatch b = Run(*s, cols, state, threads, transient, max_m, recurrence, flow);
+  const Args args = ArgsOf(*s, threads, state, transient, max_m, recurrence);
+  SystemBatch b = Run(*s, cols, args, flow);
   const std::size_t n = b.rows();
   std::vector<bool> found(n), stick_slip(n), stable(n);
   std::vector<std::uint8_t> status(n);
@@ -115,13 +189,16 @@ py::dict SystemOrbits(const py::object& system, const py::object& columns, int t
 
 void BindSystemBatch(py::module_& m) {
   const py::object none = py::none();
-  m.def("orbits", &SystemOrbits, py::arg("system"), py::arg("columns"), py::arg("threads") = 0,
-        py::arg("state") = none, py::arg("transient") = none, py::arg("max_m") = none,
-        py::arg("recurrence") = 1e-3, py::arg("rtol") = none, py::arg("atol") = none,
+  m.def("orbits", &SystemOrbits, py::arg("system"), py::arg("columns"),
+        py::arg("threads") = py::int_(0), py::arg("state") = none, py::arg("transient") = none,
+        py::arg("max_m") = none, py::arg("recurrence") = none, py::arg("rtol") = none,
+        py::arg("atol") = none,
         "The periodic orbit of any system (ChainParams, CouplingParams, a model file's System, "
         "...) at every row of columns, e.g. orbits(System.from_file('drill.ini'), {'T_m': t}): "
-        "row i is the system with each column's value i, every row started from `state` (default "
-        "the origin). An autonomous system settles for `transient` time units (default 3000) on "
+        "row i is the system with each column's value i, every row started from `state` "
+        "(default: the row's steady sliding with its first component moved by 0.01, or the "
+        "origin so moved where there is none; a system with a clock: the origin). An autonomous "
+        "system settles for `transient` time units (default 3000) on "
         "the stick-slip orbit whose stick exit recurs within max_m exits (default 32), refined "
         "by Newton (C++ SettledOrbits); a system with a clock integrates `transient` clock "
         "periods (default 20) and shoots the least m <= max_m (default 4) that recurs within "
@@ -131,8 +208,10 @@ void BindSystemBatch(py::module_& m) {
         "clock periods per period), contact (the contact whose stick exit is the section, -1 on "
         "a stroboscopic one), sticks, period, then per state component its value at the orbit's "
         "start and its extremes (NAME, NAME_min, NAME_max), and multiplier (the largest "
-        "|Floquet multiplier|). A row without an orbit holds zeros. Unknown names and invalid "
-        "values raise ValueError before any work; Ctrl-C raises KeyboardInterrupt.");
+        "|Floquet multiplier|). A row without an orbit holds zeros. recurrence applies to a "
+        "system with a clock only. Unknown names and invalid values raise ValueError before any "
+        "work; Ctrl-C raises KeyboardInterrupt. Params and ForcedParams have their own overloads "
+        "(a keyword of this one given to them is a TypeError).");
 }
 
 }  // namespace stickslip::python

@@ -114,7 +114,7 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
                             double to, const std::string& param2, double from2, double to2,
                             int seed_lines, double max_step, bool hopf, bool orbits, int max_m,
                             std::optional<double> rtol, std::optional<double> atol, int grid) {
-  const std::unique_ptr<System> s = SystemOf(system);  // InvalidArgument for another object
+  const std::unique_ptr<System> s = SystemOf(system);  // TypeError for another object
   SystemChartOptions o;
   SystemPlane& pl = o.plane;
   pl.p1 = s->ParameterIndex(param), pl.p2 = s->ParameterIndex(param2);

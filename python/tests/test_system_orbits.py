@@ -33,7 +33,8 @@ class SystemOrbits(unittest.TestCase):
         s = stickslip.System.from_text(COULOMB)
         v = np.array([0.05, 0.1, 0.15, 0.2, 0.24])  # from rest x' reaches mu_k = 0.25 > v
         mu_s = np.array([0.3, 0.4, 0.35, 0.5, 0.6])
-        r = stickslip.orbits(s, {"v": v, "mu_s": mu_s}, transient=200, rtol=1e-12, atol=1e-14)
+        r = stickslip.orbits(s, {"v": v, "mu_s": mu_s}, state=[0.0, 0.0], transient=200,
+                             rtol=1e-12, atol=1e-14)
         d = mu_s - 0.25
         np.testing.assert_array_equal(r["status"], OK)
         np.testing.assert_allclose(r["period"], np.pi + 2 * np.arctan(v / d) + 2 * d / v,
@@ -51,8 +52,12 @@ class SystemOrbits(unittest.TestCase):
     def test_drill_row_matches_the_mpmath_reference_and_settle(self):
         drill = stickslip.System.from_file(os.path.join(ROOT, "studies/models/drill_string.ini"))
         t_m = np.array([9900.0, 10000.0, 10300.0])
-        r = stickslip.orbits(drill, {"T_m": t_m}, threads=2)
+        # From rest (the default start, steady rotation nudged, stays there:
+        # it is stable and coexists with stick-slip).
+        r = stickslip.orbits(drill, {"T_m": t_m}, threads=2, state=np.zeros(3))
         self.assertTrue(np.all(r["stick_slip"]))
+        steady = stickslip.orbits(drill, {"T_m": t_m})
+        np.testing.assert_array_equal(steady["status"], NO_RETURN)
         self.assertAlmostEqual(r["period"][1], 5.092532911302433, delta=1e-11)
         for i, t in enumerate(t_m):
             one = drill.copy()
@@ -72,6 +77,13 @@ class SystemOrbits(unittest.TestCase):
         self.assertEqual(r["period"][1], 0)
         self.assertEqual(r["contact"][1], -1)
 
+    def test_a_chain_of_like_blocks_starts_off_step_by_default(self):
+        # From steady sliding nudged (the default), not the origin, where two
+        # like blocks would move in step and miss their attractor.
+        r = stickslip.orbits(stickslip.ChainParams(), {"v": np.linspace(0.05, 0.35, 7)})
+        np.testing.assert_array_equal(r["status"], OK)
+        self.assertTrue(np.all(r["stick_slip"]))
+
     def test_a_clocked_model_takes_the_stroboscopic_batch(self):
         forced = stickslip.System.from_file(os.path.join(ROOT, "studies/models/forced.ini"))
         r = stickslip.orbits(forced, {"omega": [0.8, 1.2]})
@@ -90,7 +102,7 @@ class SystemOrbits(unittest.TestCase):
 
     def test_sweep_on_a_local_cluster_equals_the_serial_one(self):
         s = stickslip.System.from_text(COULOMB)
-        fn = stickslip.system_orbits(s, transient=200)
+        fn = stickslip.system_orbits(s, state=[0.0, 0.0], transient=200)
         grid = {"v": np.linspace(0.05, 0.24, 12)}
         serial = stickslip.sweep(fn, grid, scheduler="serial")
         dask = stickslip.sweep(fn, grid, n_workers=2, chunk_size=3)
@@ -105,12 +117,27 @@ class SystemOrbits(unittest.TestCase):
             stickslip.orbits(s, {"w": [1.0]})
         with self.assertRaisesRegex(TypeError, "columns must be a dict"):
             stickslip.orbits(s, [1.0])
-        with self.assertRaisesRegex(ValueError, "start has 3 components"):
+        with self.assertRaisesRegex(ValueError, r"state must be 2 numbers \(x, x'\)"):
             stickslip.orbits(s, {"v": [0.2]}, state=[0, 0, 0])
+        with self.assertRaisesRegex(TypeError, "state must hold real numbers"):
+            stickslip.orbits(s, {"v": [0.2]}, state="abc")
+        with self.assertRaisesRegex(TypeError, "threads must be an integer"):
+            stickslip.orbits(s, {"v": [0.2]}, threads=1.5)
+        with self.assertRaisesRegex(ValueError, "max_m = 0 must be >= 1"):
+            stickslip.orbits(s, {"v": [0.2]}, max_m=0)
+        with self.assertRaisesRegex(ValueError, "recurrence applies to a system with a clock"):
+            stickslip.orbits(s, {"v": [0.2]}, recurrence=1e-3)
         with self.assertRaisesRegex(ValueError, r"row 0 \(mu_s = -1\): the static coefficient"):
             stickslip.orbits(s, {"mu_s": [-1.0]})
         with self.assertRaisesRegex(ValueError, "threads"):
             stickslip.system_orbits(s, threads=2)
+        # The belt's and the forced oscillator's own overloads: a keyword of
+        # this one given to them is refused, not run on another path.
+        with self.assertRaisesRegex(TypeError, "orbits\\(Params"):
+            stickslip.orbits(stickslip.Params(), {"v": [0.2]}, transient=100)
+        fp = stickslip.ForcedParams(stickslip.Params(), force=0.3, omega=0.8)
+        with self.assertRaisesRegex(TypeError, "orbits\\(ForcedParams"):
+            stickslip.orbits(fp, {"omega": [0.8]}, transient=20.5)
 
 
 if __name__ == "__main__":

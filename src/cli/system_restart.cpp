@@ -55,9 +55,9 @@ void AddRestartMetadata(const System& s, SystemChoice choice, const Params& law,
         (coefficients.empty() ? "" : ",") + name + "=" + FormatNumber(GetParameter(law, name));
   meta.emplace_back("system_name", Name(choice));
   if (choice == SystemChoice::kChain) meta.emplace_back("blocks", std::to_string(s.contacts()));
-  meta.insert(meta.end(), {{"law", Name(law.law)},
-                           {"law_parameters", coefficients},
-                           {"parameters", parameters},
+  if (choice != SystemChoice::kModel)  // a model file's laws are its own: in its parameters
+    meta.insert(meta.end(), {{"law", Name(law.law)}, {"law_parameters", coefficients}});
+  meta.insert(meta.end(), {{"parameters", parameters},
                            {"integrator", flow.integrator == Integrator::kCvode
                                               ? std::string("cvode ") + Name(flow.method)
                                               : std::string(Name(flow.integrator))},

@@ -140,7 +140,9 @@ bool StickSplits(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& 
 
 }  // namespace
 
-OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol) {
+OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol,
+                          bool* classified) {
+  if (classified) *classified = true;
   OrbitRow beyond = before, point = before;
   beyond.p = before.p + dir * Tolerances::kBranchBeyondEdge * tol * (1 + std::abs(before.p));
   // Labelled by the switching counts of one period just beyond, from the
@@ -154,7 +156,10 @@ OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double 
   }
   point.label = SpecialKind::kSliding;
   point.description = "the switching sequence changes (unclassified: the run beyond failed)";
-  if (problem.Counts(&beyond)) ClassifySliding(problem, before, beyond, &point);
+  if (problem.Counts(&beyond))
+    ClassifySliding(problem, before, beyond, &point);
+  else if (classified)
+    *classified = false;
   if (StickSplits(problem, before, beyond)) {
     point.label = SpecialKind::kAdding;  // the slip that splits the stick is not short: a jump
     point.description =
@@ -169,13 +174,15 @@ void EndAtEdge(OrbitProblem& problem, const OrbitRow& before, double dir, double
                const std::string& why, OrbitBranch* out) {
   out->message += "; " + why;
   if (!std::isfinite(before.p)) return;  // not located: cut short (step-too-small)
-  out->special.push_back(EdgeWithoutOrbit(problem, before, dir, tol));
+  bool classified = true;
+  out->special.push_back(EdgeWithoutOrbit(problem, before, dir, tol, &classified));
   out->rows.push_back(out->special.back());
   const OrbitRow& end = out->special.back();
   if (end.label == SpecialKind::kContactLoss) {
     out->status = BranchStatus::kContactLost;
     return;
   }
+  if (!classified) return;  // the run beyond failed: cut short (step-too-small)
   // The sequence's natural end: the step's failure was its symptom.
   out->status = BranchStatus::kSequenceEnded;
   out->message = "the switching sequence ends at " + std::string(Name(end.label)) +

@@ -78,10 +78,14 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
 // beyond (the parameter moving by dir = +-1): CL where a contact opened in
 // the search beyond (problem.Opened()), else labelled by the switching
 // counts of one period from its state just past the edge.
-OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol);
+// *classified (if given) is false where the run beyond failed (an
+// unclassified SL).
+OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double dir, double tol,
+                          bool* classified = nullptr);
 // The branch ends at that edge: its labelled row (when `before` was located)
 // ends the rows and special points, with status contact-lost at CL, else
-// sequence-ended; `why` is added to the message where it was not located.
+// sequence-ended; an edge not located or not classified (the run beyond it
+// failed) keeps step-too-small, with `why` added to the message.
 void EndAtEdge(OrbitProblem& problem, const OrbitRow& before, double dir, double tol,
                const std::string& why, OrbitBranch* out);
 

@@ -64,9 +64,12 @@ void ReadRun(const Table& t, SystemPoint* sp) {
   sp->system = t.Meta("system_name");
   if (sp->system == "chain")
     sp->blocks = static_cast<int>(t.MetaWhole("blocks", 1, ModeSet::kMaxContacts));
-  try {
-    sp->law.law = LawFromName(t.Meta("law"));
-    for (const auto& [name, value] : Pairs(t, "law_parameters")) SetParameter(sp->law, name, value);
+  try {  // a model file's run has no built-in law
+    if (sp->system != "model") {
+      sp->law.law = LawFromName(t.Meta("law"));
+      for (const auto& [name, value] : Pairs(t, "law_parameters"))
+        SetParameter(sp->law, name, value);
+    }
   } catch (const RestartError&) {
     throw;
   } catch (const InvalidArgument& e) {

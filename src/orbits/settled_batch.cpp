@@ -59,7 +59,14 @@ void Work(const System& base, const std::vector<SystemColumn>& columns,
   for (std::size_t begin, end; queue.Take(&begin, &end);) {
     for (std::size_t i = begin; i < end && !queue.Cancelled(); ++i) {
       batch_detail::SetRow(columns, i, *system);
-      Store(SettleOnStickSlip(*system, options.start, settle), i, out);
+      const Eigen::VectorXd start = options.start.size() ? options.start
+                                    : options.start_of   ? options.start_of(*system)
+                                                       : Eigen::VectorXd::Zero(system->dimension());
+      if (start.size() != system->dimension() || !start.allFinite()) {  // start_of's
+        out.status[i] = OrbitStatus::kIntegratorFailed;
+        continue;
+      }
+      Store(SettleOnStickSlip(*system, start, settle), i, out);
     }
     queue.Done(end - begin);
   }
@@ -81,7 +88,9 @@ SystemBatch SettledOrbits(const System& base, const std::vector<SystemColumn>& c
   if (err.empty() && base.clocks() != 0)
     err = "a system with a clock settles on its stroboscopic section: StroboscopicOrbits";
   SettledBatchOptions o = options;
-  if (err.empty()) err = batch_detail::StartError(base, &o.start);
+  if (err.empty() && o.start.size() && o.start.size() != base.dimension())
+    err = "the start has " + std::to_string(o.start.size()) + " components, the system " +
+          std::to_string(base.dimension());
   if (err.empty()) err = batch_detail::ColumnError(base, columns);
   const std::size_t rows = columns.empty() ? 0 : columns[0].values.size();
   if (err.empty()) err = batch_detail::RowError(base, columns, rows);

@@ -155,7 +155,7 @@ ContactSensitivity ModelSystem::ContactParameterDerivative(const ModeSet& m, int
   ContactSensitivity d;
   thread_local std::vector<double> v;
   Values(c_->contact, z, v);
-  d.speed = -v[c_->dvelocity[i][j]];  // h = w.z - speed: d speed/dp = -dh/dp at z
+  d.speed = -v[c_->dvelocity[i][j]];  // -dh/dp at z (h = w.z - speed; w may read p too)
   const ModeProgram& p = Program(m);
   if (!p.consistent || !m.sticks(i)) return d;
   Values(p.column[j], z, v);

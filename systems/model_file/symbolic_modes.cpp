@@ -191,28 +191,25 @@ void Compiler::Record(ModeProgram& p, const std::vector<ex>& field, const std::v
   p.full.Seal(full_out);
 }
 
-// The parameter columns (compiled.hpp): every d/dp_j by forward-mode rules
-// on the full tape's recording (Tape::Derivative), copied and sealed once per
-// parameter before the full tape is sealed without them.
+// The parameter columns (compiled.hpp): per parameter j, a copy of the full
+// tape's recording with d/dp_j (and df/dtheta) by forward-mode rules
+// (Tape::Derivative), sealed on its outputs; before the full tape is sealed.
 void Compiler::RecordColumns(ModeProgram& p, const std::vector<int>& full_out) {
-  const int tangent = out_->n - out_->clocks;
-  if (out_->clocks) {
-    const std::vector<int> rows(p.full_field.begin(), p.full_field.begin() + tangent);
-    p.dclock = p.full.Derivative(rows, Op::kState, out_->n - 1);
-  }
+  const std::vector<int> clock_rows(p.full_field.begin(), p.full_field.end() - out_->clocks);
   std::vector<int> rows = p.full_field;
   rows.insert(rows.end(), p.full_aux.begin(), p.full_aux.end());
   for (std::size_t j = 0; j < params_.size(); ++j) {
-    const std::vector<int> d = p.full.Derivative(rows, Op::kParam, static_cast<int>(j));
+    Tape t = p.full;  // each copy carries its own parameter's nodes only
+    // df/dtheta first: the same nodes in every copy.
+    if (out_->clocks) p.dclock = t.Derivative(clock_rows, Op::kState, out_->n - 1);
+    const std::vector<int> d = t.Derivative(rows, Op::kParam, static_cast<int>(j));
     p.dfield.emplace_back(d.begin(), d.begin() + out_->n);
     p.daux.emplace_back(d.begin() + out_->n, d.end());
-  }
-  for (std::size_t j = 0; j < params_.size(); ++j) {
     std::vector<int> outputs = full_out;
     for (const std::vector<int>* v : {&p.dclock, &p.dfield[j], &p.daux[j]})
       outputs.insert(outputs.end(), v->begin(), v->end());
-    p.column.push_back(p.full);
-    p.column.back().Seal(outputs);
+    t.Seal(outputs);
+    p.column.push_back(std::move(t));
   }
 }
 

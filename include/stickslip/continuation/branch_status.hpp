@@ -18,9 +18,9 @@ enum class BranchStatus {
   /// A contact's normal force reached 0 (labelled CL): beyond, the contact
   /// opens and the system is another one (issue 32).
   kContactLost,
-  /// The orbit's switching sequence ends at a located nonsmooth point (GR,
-  /// SW, AD, CR: the last row) and no periodic orbit of the same period
-  /// exists beyond: the branch's natural end on its section.
+  /// The orbit's switching sequence ends at a located and classified
+  /// nonsmooth point (GR, SL, AD, CR: the last row) and no periodic orbit of
+  /// the same period exists beyond: the branch's natural end on its section.
   kSequenceEnded,
 };
 template <>
@@ -39,14 +39,12 @@ struct EnumNames<BranchStatus> {
   };
 };
 
-/// Whether a branch ended where it should: at its end, closed, at CL, where
-/// its switching sequence ends, or past its start after a fold (it left its
-/// window [from, to], AUTO-07p's normal end at RL0, RL1); anything else was
-/// cut short.
+/// Whether a branch ended where it should: at its end, closed, at CL, or
+/// where its switching sequence ends; anything else was cut short (a branch
+/// that turned back past its start, left-range, has not been traced beyond).
 inline bool Complete(BranchStatus s) {
   return s == BranchStatus::kReachedEnd || s == BranchStatus::kClosed ||
-         s == BranchStatus::kContactLost || s == BranchStatus::kSequenceEnded ||
-         s == BranchStatus::kLeftRange;
+         s == BranchStatus::kContactLost || s == BranchStatus::kSequenceEnded;
 }
 
 }  // namespace stickslip

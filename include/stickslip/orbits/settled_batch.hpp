@@ -23,8 +23,14 @@ struct SettledBatchOptions {
   /// The run's transient, longest recurrence and Newton's flow
   /// (settle.cancelled is not used: see `cancelled`).
   SettleOptions settle;
-  /// The start of every row (dimension() entries); empty: the origin.
+  /// The start of every row (dimension() entries); empty: start_of(the
+  /// row's system), else the origin.
   Eigen::VectorXd start;
+  /// Called on the worker threads, one row's system each (Python passes
+  /// NearSteadySliding: steady sliding with its first component moved by
+  /// 0.01, so that a chain of like blocks does not start in step). A start
+  /// of another size or not finite makes the row kIntegratorFailed.
+  std::function<Eigen::VectorXd(const System&)> start_of;
   /// Worker threads, capped by the hardware threads; 0: all of them.
   int threads = 0;
   /// Polled on the calling thread only, as SystemBatchOptions::cancelled.

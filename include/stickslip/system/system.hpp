@@ -120,9 +120,10 @@ class System {
   /// says yes also gives the events' derivatives in j below (their defaults
   /// say the events do not depend on it).
   virtual bool SupportsParameterColumn(int /*j*/) const { return false; }
-  /// d/dp_j of contact i's event functions at z (mode m has i sticking): the
-  /// velocity's speed (ContactVelocity::speed), the stick force lambda_i and
-  /// the static limit. The flow carries the column dz/dp across switches
+  /// d/dp_j of contact i's event functions at z (mode m has i sticking):
+  /// speed = -dh/dp_j at z (the velocity's speed where only it depends on
+  /// p_j; with weights that do, their dw/dp_j . z too), the stick force
+  /// lambda_i and the static limit. The flow carries the column dz/dp across switches
   /// with them (the saltation of a parameter, docs/theory.md).
   virtual ContactSensitivity ContactParameterDerivative(const ModeSet& /*m*/, int /*i*/, int /*j*/,
                                                         ConstState /*z*/) const {
