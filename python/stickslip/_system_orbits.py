@@ -11,7 +11,8 @@ class system_orbits:
     for them use scheduler="serial" or build the system inside your own fn.
 
         drill = stickslip.System.from_file("studies/models/drill_string.ini")
-        r = stickslip.sweep(stickslip.system_orbits(drill), {"T_m": np.linspace(9900, 10600, 64)})
+        fn = stickslip.system_orbits(drill, state=[0, 0, 0])   # from rest: stick-slip
+        r = stickslip.sweep(fn, {"T_m": np.linspace(9900, 10600, 64)})
     """
 
     batch = True
