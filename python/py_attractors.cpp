@@ -233,7 +233,8 @@ void BindAttractors(py::module_& m) {
       "components (`slice`, names; default the first two) through `base` (default steady "
       "sliding, or zeros with a forcing phase), over x_range and y_range (default base +- 1; "
       "+-1.5 with a phase). A forced system's section is the stroboscopic one, an autonomous "
-      "system's the returns to its first velocity's zero, falling.";
+      "system's the returns to its first velocity's zero, falling (a first-order state first: "
+      "contact 0's velocity through its value at steady sliding, falling).";
   for (const char* name : {"attractor_basins", "basins"})
     m.def(name, &AttractorBasinsOf, py::arg("system"), py::arg("nx") = 41, py::arg("ny") = 41,
           py::arg("slice") = none, py::arg("base") = none, py::arg("x_range") = none,

@@ -218,6 +218,15 @@ void BindBatch(py::module_& m) {
         "0), x_min, x_max, xdot_min, xdot_max, multiplier (the largest |Floquet multiplier|), "
         "stable. A row without an orbit holds zeros. Unknown names and invalid values raise "
         "ValueError before any work; Ctrl-C raises KeyboardInterrupt.");
+  // The two overloads above by name, for orbits(system)'s forwarding (py_system_batch.cpp).
+  m.def("_orbits_belt", &Orbits, py::arg("params"), py::arg("columns"), py::arg("threads") = 0,
+        py::arg("floquet") = false, py::arg("rtol") = none, py::arg("atol") = none,
+        py::arg("integrator") = none, py::arg("method") = none);
+  m.def("_orbits_forced", &ForcedOrbits, py::arg("params"), py::arg("columns"),
+        py::arg("threads") = 0, py::arg("x0") = 0.0, py::arg("xdot0") = 0.0,
+        py::arg("transient") = 20, py::arg("max_m") = 4, py::arg("recurrence") = 1e-3,
+        py::arg("rtol") = none, py::arg("atol") = none, py::arg("integrator") = none,
+        py::arg("method") = none);
   m.def("_tsv_rows", &TsvRows, py::arg("data"),
         "Rows of a 2-D float array as TSV bytes, each value as repr() writes it.");
 }

@@ -35,24 +35,29 @@ struct Args {
   Eigen::VectorXd start;
 };
 
+// An integer (a Python or NumPy one: __index__), never a bool.
 int Integer(const char* name, const py::object& x) {
-  if (py::isinstance<py::bool_>(x) || !py::isinstance<py::int_>(x))
+  if (py::isinstance<py::bool_>(x) || !PyIndex_Check(x.ptr()))
     throw py::type_error(std::string("orbits: ") + name + " must be an integer, not " +
                          py::repr(x).cast<std::string>());
-  const long long v = x.cast<long long>();  // OverflowError beyond 64 bits
-  if (v < 0 || v > (1 << 30))
-    throw InvalidArgument(std::string("orbits: ") + name + " = " + std::to_string(v) +
+  const py::int_ i = py::reinterpret_steal<py::int_>(PyNumber_Index(x.ptr()));
+  if (!i) throw py::error_already_set();
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
+  if (overflow || v < 0 || v > (1 << 30))
+    throw InvalidArgument(std::string("orbits: ") + name + " = " + py::repr(x).cast<std::string>() +
                           " must lie in [0, 2^30]");
   return static_cast<int>(v);
 }
 
+// A real number (Python's or NumPy's), never a bool, a str or a complex.
 std::optional<double> Number(const char* name, const py::object& x) {
   if (x.is_none()) return std::nullopt;
-  if (py::isinstance<py::bool_>(x) ||
-      !(py::isinstance<py::int_>(x) || py::isinstance<py::float_>(x)))
+  if (py::isinstance<py::bool_>(x) || PyComplex_Check(x.ptr()) || !PyNumber_Check(x.ptr()) ||
+      py::isinstance<py::str>(x))
     throw py::type_error(std::string("orbits: ") + name + " must be a number, not " +
                          py::repr(x).cast<std::string>());
-  return x.cast<double>();
+  return py::float_(x).cast<double>();
 }
 
 Args ArgsOf(const System& s, const py::object& threads, const py::object& state,
@@ -136,17 +141,34 @@ py::dict SystemOrbits(const py::object& system, const py::object& columns,
                       const py::object& transient, const py::object& max_m,
                       const py::object& recurrence, std::optional<double> rtol,
                       std::optional<double> atol) {
-  Integer("threads", threads);  // a wrong type named before the overload's advice
-  // Params and ForcedParams have overloads of their own (py_batch.cpp): a
-  // call that reaches this one gave them arguments those do not take.
-  if (py::isinstance<Params>(system))
-    throw py::type_error(
-        "orbits(Params, columns, ...) takes threads, floquet, rtol, atol, integrator and method "
-        "(its stick-slip orbits); for a settled orbit of the belt give a System");
-  if (py::isinstance<ForcedParams>(system))
-    throw py::type_error(
-        "orbits(ForcedParams, columns, ...) takes threads, x0, xdot0, transient (a whole number "
-        "of periods), max_m, recurrence, rtol, atol, integrator and method");
+  // Params and ForcedParams have overloads of their own (py_batch.cpp), which
+  // this one, of loose types, may catch first (a NumPy or int value where
+  // they take a double): forwarded with the keywords they share, else a
+  // TypeError that names theirs.
+  const py::module_ core = py::module_::import("stickslip._core");
+  if (py::isinstance<Params>(system)) {
+    if (!state.is_none() || !transient.is_none() || !max_m.is_none() || !recurrence.is_none())
+      throw py::type_error(
+          "orbits(Params, columns, ...) takes threads, floquet, rtol, atol, integrator and "
+          "method (its stick-slip orbits); for a settled orbit of the belt give a System");
+    return core
+        .attr("_orbits_belt")(system, columns, py::arg("threads") = Integer("threads", threads),
+                              py::arg("rtol") = rtol, py::arg("atol") = atol)
+        .cast<py::dict>();
+  }
+  if (py::isinstance<ForcedParams>(system)) {
+    if (!state.is_none())
+      throw py::type_error(
+          "orbits(ForcedParams, columns, ...) takes threads, x0, xdot0, transient (a whole "
+          "number of periods), max_m, recurrence, rtol, atol, integrator and method");
+    py::dict kw;
+    kw["threads"] = Integer("threads", threads);
+    if (!transient.is_none()) kw["transient"] = Integer("transient", transient);
+    if (!max_m.is_none()) kw["max_m"] = Integer("max_m", max_m);
+    if (!recurrence.is_none()) kw["recurrence"] = *Number("recurrence", recurrence);
+    kw["rtol"] = rtol, kw["atol"] = atol;
+    return core.attr("_orbits_forced")(system, columns, **kw).cast<py::dict>();
+  }
   if (!py::isinstance<py::dict>(columns))
     throw py::type_error("orbits: columns must be a dict {parameter name: 1-D values}, not " +
                          TypeName(columns));

@@ -137,7 +137,12 @@ class SystemOrbits(unittest.TestCase):
             stickslip.orbits(stickslip.Params(), {"v": [0.2]}, transient=100)
         fp = stickslip.ForcedParams(stickslip.Params(), force=0.3, omega=0.8)
         with self.assertRaisesRegex(TypeError, "orbits\\(ForcedParams"):
+            stickslip.orbits(fp, {"omega": [0.8]}, state=[0, 0, 0])
+        with self.assertRaisesRegex(TypeError, "transient must be an integer, not 20.5"):
             stickslip.orbits(fp, {"omega": [0.8]}, transient=20.5)
+        # NumPy integers reach the forced overload's own rows (x0, xdot0 columns).
+        r = stickslip.orbits(fp, {"omega": [0.8]}, transient=np.int64(20), threads=np.int64(1))
+        self.assertIn("xdot0", r)
 
 
 if __name__ == "__main__":

@@ -123,7 +123,7 @@ OrbitDiagram ComputeOrbitDiagram(const System& base, int j, const OrbitDiagramOp
     throw InvalidArgument("parameter index " + std::to_string(j) + " must lie in [0, " +
                           std::to_string(base.parameters() - 1) + "]");
   if (base.clocks() > 1) throw InvalidArgument("a system with more than one clock");
-  if (base.clocks() == 0 && !o.surface) MaximaSection(base);  // throws without a velocity
+  if (base.clocks() == 0 && !o.surface) MaximaSection(base);  // its steady sliding, once
   for (double v : {o.from, o.to}) {
     std::unique_ptr<System> s = base.Clone();
     s->SetParameterValue(j, v);

@@ -222,7 +222,7 @@ std::string DefaultSectionText(const System& s) {
     h += (t ? " + " : "") +
          (x.g.terms[t].weight == 1 ? "" : FormatNumber(x.g.terms[t].weight) + " ") +
          s.StateName(x.g.terms[t].index);
-  return h + " = its value at steady sliding, falling";
+  return h + " = its value at steady sliding (0 where there is none), falling";
 }
 
 }  // namespace stickslip::cli

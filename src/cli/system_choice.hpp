@@ -57,7 +57,7 @@ std::vector<std::string> CommaItems(const std::string& text);
 std::string ParameterList(const System& s);
 /// The words for an autonomous system's default section (MaximaSection):
 /// "x1' = 0 falling (maxima of x1)", or for a first-order state first
-/// "w_b = its value at steady sliding, falling".
+/// "w_b = its value at steady sliding (0 where there is none), falling".
 std::string DefaultSectionText(const System& s);
 
 }  // namespace stickslip::cli

@@ -156,15 +156,14 @@ OrbitRow EdgeWithoutOrbit(OrbitProblem& problem, const OrbitRow& before, double 
   }
   point.label = SpecialKind::kSliding;
   point.description = "the switching sequence changes (unclassified: the run beyond failed)";
-  if (problem.Counts(&beyond))
-    ClassifySliding(problem, before, beyond, &point);
-  else if (classified)
-    *classified = false;
+  const bool known = problem.Counts(&beyond) && ClassifySliding(problem, before, beyond, &point);
+  if (classified) *classified = known;
   if (StickSplits(problem, before, beyond)) {
     point.label = SpecialKind::kAdding;  // the slip that splits the stick is not short: a jump
     point.description =
         "adding-sliding: the stick force reaches the static limit inside a stick phase, which "
         "splits (the slip is not short: the map jumps)";
+    if (classified) *classified = true;  // the split is a classification
   }
   point.description += "; no periodic orbit of the same period beyond";
   return point;

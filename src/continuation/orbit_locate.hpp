@@ -49,8 +49,9 @@ bool Sliding(Palc& palc, OrbitProblem& problem, const TracePoint& a, const Trace
 
 // The label of a located change of the switching sequence from `before` to
 // `after` (the orbits either side): GR, AD, CR, else SL, with a one-line
-// description, set on *point (orbit_sliding.cpp).
-void ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& after,
+// description, set on *point (orbit_sliding.cpp). False where a run either
+// side failed: the point stays an unclassified SL.
+bool ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& after,
                      OrbitRow* point);
 
 // ", sticks 0 -> 1, crossings 2 -> 1": the counts that differ from a to b.

@@ -73,7 +73,7 @@ const char* Crossing(int ds, int dc) {
 
 }  // namespace
 
-void ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& after,
+bool ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitRow& after,
                      OrbitRow* point) {
   const int ds = after.sticks - before.sticks, dc = after.crossings - before.crossings;
   const std::string change = SequenceChange(before, after);
@@ -83,11 +83,11 @@ void ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitR
                                           problem.shooting().options().flow.atol);
   std::vector<FlowSwitch> sb, sa;
   const System* s = problem.Switches(before, &sb);
-  if (!s) return;  // unclassified: the system is invalid there
+  if (!s) return false;  // unclassified: the system is invalid there
   const double near = ArrivalToLimit(*s, sb);
   const double width = Width(*s, before);
   s = problem.Switches(after, &sa);
-  if (!s) return;
+  if (!s) return false;
   const double far = ArrivalToLimit(*s, sa);
   // A crossing is born or lost only where an arrival passes the static limit,
   // never by a tangency (outside the limit the surface is crossed
@@ -116,6 +116,7 @@ void ClassifySliding(OrbitProblem& problem, const OrbitRow& before, const OrbitR
           (ds > 0 ? "a stick phase is born" : "a stick phase vanishes") + change;
     }
   }
+  return true;
 }
 
 }  // namespace stickslip::orbit_detail
