@@ -36,19 +36,10 @@ OrbitStatus StatusOf(const SettledOrbit& r) {
 void Store(const SettledOrbit& r, std::size_t i, SystemBatch& out) {
   out.status[i] = StatusOf(r);
   if (!r.found) return;
-  const PeriodicOrbit& o = r.orbit;
-  const int nt = out.tangent;
   out.m[i] = r.section.returns;
   out.contact[i] = r.section.contact;
-  out.sticks[i] = o.sticks;
-  out.period[i] = o.period;
-  for (int c = 0; c < nt; ++c) {
-    out.start[i * nt + c] = o.start.z[c];
-    out.lo[i * nt + c] = o.lo.size() > c ? o.lo[c] : 0.0;
-    out.hi[i * nt + c] = o.hi.size() > c ? o.hi[c] : 0.0;
-  }
-  out.multiplier[i] = o.multipliers.empty() ? 0.0 : std::abs(o.multipliers.front());
-  out.stable[i] = o.stable ? 1 : 0;
+  out.period[i] = r.orbit.period;
+  batch_detail::StoreOrbit(r.orbit, i, out);
 }
 
 void Work(const System& base, const std::vector<SystemColumn>& columns,
@@ -87,28 +78,13 @@ SystemBatch SettledOrbits(const System& base, const std::vector<SystemColumn>& c
   if (err.empty()) err = base.ValidationError();
   if (err.empty() && base.clocks() != 0)
     err = "a system with a clock settles on its stroboscopic section: StroboscopicOrbits";
-  SettledBatchOptions o = options;
-  if (err.empty() && o.start.size() && o.start.size() != base.dimension())
-    err = "the start has " + std::to_string(o.start.size()) + " components, the system " +
+  if (err.empty() && options.start.size() && options.start.size() != base.dimension())
+    err = "the start has " + std::to_string(options.start.size()) + " components, the system " +
           std::to_string(base.dimension());
-  if (err.empty()) err = batch_detail::ColumnError(base, columns);
-  const std::size_t rows = columns.empty() ? 0 : columns[0].values.size();
-  if (err.empty()) err = batch_detail::RowError(base, columns, rows);
-  if (!err.empty()) throw InvalidArgument(err);
-  SystemBatch out = batch_detail::Sized(rows, base.tangent_dimension());
-  if (rows == 0) return out;
-  if (o.cancelled && o.cancelled()) {
-    out.cancelled = true;
-    return out;
-  }
-  batch_detail::RowQueue queue(rows, kSettledBlockRows);
-  const batch_detail::RowsRun run =
-      batch_detail::RunRows(queue, o.threads, kSettledThreadRows, o.cancelled, o.progress,
-                            [&](batch_detail::RowQueue& q) { Work(base, columns, o, q, out); });
-  out.threads = run.threads;
-  out.error = run.error;
-  out.cancelled = run.cancelled;
-  return out;
+  return batch_detail::RunColumns(
+      base, columns, err, kSettledBlockRows, kSettledThreadRows, options.threads, options.cancelled,
+      options.progress,
+      [&](batch_detail::RowQueue& q, SystemBatch& out) { Work(base, columns, options, q, out); });
 }
 
 }  // namespace stickslip

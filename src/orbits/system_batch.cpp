@@ -86,17 +86,9 @@ struct Worker {
   void Store(const PeriodicOrbit& o, int m, double T, std::size_t i, SystemBatch& out) const {
     out.status[i] = o.status;
     if (!o.ok()) return;
-    const int nt = out.tangent;
     out.m[i] = m;
-    out.sticks[i] = o.sticks;
     out.period[i] = m * T;
-    for (int c = 0; c < nt; ++c) {
-      out.start[i * nt + c] = o.start.z[c];
-      out.lo[i * nt + c] = o.lo.size() > c ? o.lo[c] : 0.0;
-      out.hi[i * nt + c] = o.hi.size() > c ? o.hi[c] : 0.0;
-    }
-    out.multiplier[i] = o.multipliers.empty() ? 0.0 : std::abs(o.multipliers.front());
-    out.stable[i] = o.stable ? 1 : 0;
+    batch_detail::StoreOrbit(o, i, out);
   }
 
   // Steps 1-3 of system_batch.hpp, period by period: the first section point
@@ -213,24 +205,9 @@ SystemBatch StroboscopicOrbits(const System& base, const std::vector<SystemColum
           std::to_string(base.clocks());
   SystemBatchOptions o = options;
   if (err.empty()) err = batch_detail::StartError(base, &o.start);
-  if (err.empty()) err = batch_detail::ColumnError(base, columns);
-  const std::size_t rows = columns.empty() ? 0 : columns[0].values.size();
-  if (err.empty()) err = batch_detail::RowError(base, columns, rows);
-  if (!err.empty()) throw InvalidArgument(err);
-  SystemBatch out = batch_detail::Sized(rows, base.tangent_dimension());
-  if (rows == 0) return out;
-  if (o.cancelled && o.cancelled()) {
-    out.cancelled = true;
-    return out;
-  }
-  batch_detail::RowQueue queue(rows, kSystemBlockRows);
-  const batch_detail::RowsRun run = batch_detail::RunRows(
-      queue, o.threads, kSystemThreadRows, o.cancelled, o.progress,
-      [&](batch_detail::RowQueue& q) { Worker(base, columns, o, q).Work(out); });
-  out.threads = run.threads;
-  out.error = run.error;
-  out.cancelled = run.cancelled;
-  return out;
+  return batch_detail::RunColumns(
+      base, columns, err, kSystemBlockRows, kSystemThreadRows, o.threads, o.cancelled, o.progress,
+      [&](batch_detail::RowQueue& q, SystemBatch& out) { Worker(base, columns, o, q).Work(out); });
 }
 
 }  // namespace stickslip

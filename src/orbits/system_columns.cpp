@@ -5,7 +5,9 @@
 #include <memory>
 #include <sstream>
 
+#include "batch_rows.hpp"
 #include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip::batch_detail {
 
@@ -72,6 +74,42 @@ std::string StartError(const System& base, Eigen::VectorXd* start) {
   if (start->size() == base.dimension()) return {};
   return "the start has " + std::to_string(start->size()) + " components, the system " +
          std::to_string(base.dimension());
+}
+
+void StoreOrbit(const PeriodicOrbit& o, std::size_t i, SystemBatch& out) {
+  const int nt = out.tangent;
+  out.sticks[i] = o.sticks;
+  for (int c = 0; c < nt; ++c) {
+    out.start[i * nt + c] = o.start.z[c];
+    out.lo[i * nt + c] = o.lo.size() > c ? o.lo[c] : 0.0;
+    out.hi[i * nt + c] = o.hi.size() > c ? o.hi[c] : 0.0;
+  }
+  out.multiplier[i] = o.multipliers.empty() ? 0.0 : std::abs(o.multipliers.front());
+  out.stable[i] = o.stable ? 1 : 0;
+}
+
+SystemBatch RunColumns(const System& base, const std::vector<SystemColumn>& columns,
+                       std::string err, std::size_t block, std::size_t thread_rows, int threads,
+                       const std::function<bool()>& cancelled,
+                       const std::function<void(std::size_t)>& progress,
+                       const std::function<void(RowQueue&, SystemBatch&)>& work) {
+  if (err.empty()) err = ColumnError(base, columns);
+  const std::size_t rows = columns.empty() ? 0 : columns[0].values.size();
+  if (err.empty()) err = RowError(base, columns, rows);
+  if (!err.empty()) throw InvalidArgument(err);
+  SystemBatch out = Sized(rows, base.tangent_dimension());
+  if (rows == 0) return out;
+  if (cancelled && cancelled()) {
+    out.cancelled = true;
+    return out;
+  }
+  RowQueue queue(rows, block);
+  const RowsRun run =
+      RunRows(queue, threads, thread_rows, cancelled, progress, [&](RowQueue& q) { work(q, out); });
+  out.threads = run.threads;
+  out.error = run.error;
+  out.cancelled = run.cancelled;
+  return out;
 }
 
 }  // namespace stickslip::batch_detail

@@ -69,10 +69,9 @@ void Tape::Fold() {
   }
 }
 
-void Tape::Seal(const std::vector<int>& outputs) {
-  Fold();
-  // Every node an output reads, by a worklist: Fold's products come after
-  // the nodes that read them.
+// Every node an output reads, by a worklist: Fold's products come after
+// the nodes that read them.
+std::vector<bool> Tape::Reads(const std::vector<int>& outputs) const {
   std::vector<bool> live(size(), false);
   std::vector<int> todo;
   auto mark = [&](int i) {
@@ -89,6 +88,12 @@ void Tape::Seal(const std::vector<int>& outputs) {
                         n.op == Op::kSinh || n.op == Op::kCosh;  // a pair reads its partner
     if (binary) mark(n.b);
   }
+  return live;
+}
+
+void Tape::Seal(const std::vector<int>& outputs) {
+  Fold();
+  const std::vector<bool> live = Reads(outputs);
   live_ = live;
   program_.clear();
   for (int i = 0; i < size(); ++i) {

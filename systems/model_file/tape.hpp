@@ -80,6 +80,7 @@ class Tape {
   void Compute(int i, int k, const TaylorRow* state, const double* params, TaylorRow* rows) const;
   void Value(int i, const double* z, const double* params, double* out) const;
   bool Scale(int i, int* base, int* factor);  // node i = base * factor, factor constant
+  std::vector<bool> Reads(const std::vector<int>& outputs) const;  // the nodes they read
   void Fold();
 
   std::vector<Node> nodes_;

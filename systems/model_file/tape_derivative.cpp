@@ -11,24 +11,8 @@ namespace stickslip::model_file {
 
 std::vector<int> Tape::Derivative(const std::vector<int>& outputs, Op input, int index) {
   const int n = size();
-  // Only the nodes an output reads (a worklist, as Seal's).
-  std::vector<bool> need(n, false);
-  std::vector<int> todo;
-  auto mark = [&](int i) {
-    if (!need[i]) need[i] = true, todo.push_back(i);
-  };
-  for (int o : outputs) mark(o);
-  while (!todo.empty()) {
-    const Node& nd = nodes_[todo.back()];
-    todo.pop_back();
-    if (nd.op == Op::kState || nd.op == Op::kParam || nd.op == Op::kConst) continue;
-    mark(nd.a);
-    const bool reads_b = nd.op == Op::kAdd || nd.op == Op::kSub || nd.op == Op::kMul ||
-                         nd.op == Op::kDiv || nd.op == Op::kSin || nd.op == Op::kCos ||
-                         nd.op == Op::kSinh || nd.op == Op::kCosh;
-    if (reads_b) mark(nd.b);
-  }
-  std::vector<int> d(n, -1);  // -1: the derivative is 0
+  const std::vector<bool> need = Reads(outputs);  // only the nodes an output reads
+  std::vector<int> d(n, -1);                      // -1: the derivative is 0
   auto add = [&](int x, int y) { return x < 0 ? y : y < 0 ? x : Add({Op::kAdd, x, y, 0}); };
   auto mul = [&](int x, int y) { return x < 0 || y < 0 ? -1 : Add({Op::kMul, x, y, 0}); };
   auto neg = [&](int x) { return x < 0 ? -1 : Add({Op::kNeg, x, 0, 0}); };
