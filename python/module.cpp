@@ -191,6 +191,7 @@ PYBIND11_MODULE(_core, m) {
   BindSystems(m);
   BindModel(m);
   BindSystemRuns(m);
+  BindSystemOrbit(m);
   BindSystemBranch(m);
   BindAttractors(m);
   BindSystemChart(m);

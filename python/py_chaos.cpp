@@ -1,7 +1,7 @@
 // The forced oscillator's chaos tools in the Python module (issue 21):
 // stroboscopic (iterates of the stroboscopic map with the largest Lyapunov
-// exponent), orbit_diagram (as ss_orbit_diagram) and forced_basins (as
-// ss_basin --force), each without the GIL with Ctrl-C polled by the cancel
+// exponent) and orbit_diagram (as ss_orbit_diagram; basins: basins(system),
+// py_attractors.cpp), each without the GIL with Ctrl-C polled by the cancel
 // hooks. Values are only those the library computed: a failed value is a
 // status with its message, never a NaN.
 #include <pybind11/stl.h>
@@ -11,7 +11,6 @@
 #include <cstdint>
 
 #include "py_forced.hpp"
-#include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/report.hpp"
@@ -131,52 +130,6 @@ py::dict Diagram(ForcedParams base, ParameterAxis axis, double from, double to, 
   return d;
 }
 
-py::dict ForcedBasinsOf(const ForcedParams& p, int nx, int ny, std::pair<double, double> x_range,
-                        std::pair<double, double> xdot_range, std::optional<int> transient,
-                        std::optional<int> keep, std::optional<int> max_period, int threads,
-                        std::optional<double> rtol, std::optional<double> atol) {
-  const ForcedModel model(p);
-  AttractorOptions o;
-  StartSlice& g = o.slice;
-  g.n = {nx, ny};
-  g.lo = {x_range.first, xdot_range.first}, g.hi = {x_range.second, xdot_range.second};
-  o.threads = threads;
-  o.iterate = IterateOptions(o.iterate, transient, keep, rtol, atol);
-  o.max_period = max_period.value_or(std::clamp(o.iterate.keep / 2, 1, o.max_period));
-  Check(o.ValidationError(model));
-  Interrupt interrupt;
-  o.cancelled = [&] { return interrupt(); };
-  AttractorBasins r;
-  {
-    py::gil_scoped_release nogil;
-    r = ClassifyAttractors(model, o);
-  }
-  interrupt.RaiseIfInterrupted();
-  if (!r.error.empty()) RaiseNumerical("forced_basins: " + r.error);
-  if (r.cancelled) RaiseNumerical("forced_basins: cancelled");
-  std::vector<double> x, xd, lyap;
-  std::vector<int> att;
-  for (const AttractorStart& s : r.starts)
-    x.push_back(s.at[0]), xd.push_back(s.at[1]), att.push_back(s.attractor),
-        lyap.push_back(s.lyapunov);
-  py::list attractors;
-  for (const Attractor& a : r.attractors) {
-    py::dict q;
-    q["kind"] = Name(a.kind), q["m"] = a.m, q["sticks"] = a.sticks;
-    q["sticks_per_period"] = a.sticks_per_period;
-    q["x"] = a.z[0], q["xdot"] = a.z[1], q["lyapunov"] = a.lyapunov, q["starts"] = a.starts;
-    std::vector<double> cx, cxd;  // periodic: the cycle's m section points
-    for (const auto& c : a.cycle) cx.push_back(c[0]), cxd.push_back(c[1]);
-    q["cycle_x"] = ReadOnly(cx), q["cycle_xdot"] = ReadOnly(cxd);
-    attractors.append(q);
-  }
-  py::dict d;
-  d["x"] = ReadOnly(x), d["xdot"] = ReadOnly(xd), d["attractor"] = ReadOnly(att);
-  d["lyapunov"] = ReadOnly(lyap), d["attractors"] = attractors;
-  d["failed"] = r.failed, d["seconds"] = r.seconds;
-  return d;
-}
-
 }  // namespace
 
 void BindChaos(py::module_& m) {
@@ -194,21 +147,6 @@ void BindChaos(py::module_& m) {
         "The orbit diagram (as ss_orbit_diagram): one row per kept section point (value, "
         "direction, x, xdot, stuck, sticks, exits, exit_phase), per value the exponent "
         "(columns), and the values that failed with why (failed).");
-  m.def("forced_basins", &ForcedBasinsOf, py::arg("params"), py::arg("nx") = 41, py::arg("ny") = 41,
-        py::arg("x_range") = std::pair{-1.5, 1.5}, py::arg("xdot_range") = std::pair{-1.5, 1.5},
-        py::arg("transient") = none, py::arg("keep") = none, py::arg("max_period") = none,
-        py::arg("threads") = 2, py::arg("rtol") = none, py::arg("atol") = none,
-        "Basins on the stroboscopic section (as ss_basin --force; threads capped by the "
-        "hardware threads): per start (x fastest) the "
-        "index of its attractor (-1: failed) and its exponent; attractors as dicts (kind, m, "
-        "sticks, sticks_per_period, x, xdot, lyapunov, starts). max_period defaults to min(16, "
-        "keep / 2).");
-  // The belt's name for the forced oscillator too (issue 31 item 8), after basins(Params).
-  m.def("basins", &ForcedBasinsOf, py::arg("params"), py::arg("nx") = 41, py::arg("ny") = 41,
-        py::arg("x_range") = std::pair{-1.5, 1.5}, py::arg("xdot_range") = std::pair{-1.5, 1.5},
-        py::arg("transient") = none, py::arg("keep") = none, py::arg("max_period") = none,
-        py::arg("threads") = 2, py::arg("rtol") = none, py::arg("atol") = none,
-        "basins(ForcedParams, ...): forced_basins'.");
 }
 
 }  // namespace stickslip::python

@@ -3,7 +3,10 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include "stickslip/errors.hpp"
+#include "stickslip/model/forced.hpp"
 
 namespace stickslip::python {
 
@@ -126,6 +129,24 @@ py::array ReadOnlyRows(const std::vector<double>& flat, int cols) {
   py::array_t<double> a({rows, static_cast<py::ssize_t>(cols)}, flat.data());
   a.attr("setflags")(py::arg("write") = false);
   return std::move(a);
+}
+
+Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
+  if (state.size() != s.dimension())
+    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
+                          std::to_string(s.dimension()));
+  for (Eigen::Index i = 0; i < state.size(); ++i)
+    if (!std::isfinite(state[i]))
+      throw InvalidArgument("state[" + std::to_string(i) + "] = " + Repr(state[i]) +
+                            " must be finite");
+  return state;
+}
+
+FlowOptions FlowFor(const py::object& system, std::optional<double> rtol,
+                    std::optional<double> atol) {
+  const FlowOptions base =
+      py::isinstance<ForcedParams>(system) ? ForcedModel::FlowDefaults() : FlowOptions();
+  return Solver(base, rtol, atol, py::none(), py::none());
 }
 
 }  // namespace stickslip::python

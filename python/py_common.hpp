@@ -62,6 +62,21 @@ py::array ReadOnly(const std::vector<T>& v) {
 py::array ReadOnlyBool(const std::vector<bool>& v);
 // Row-major values, `cols` per row, as a read-only 2-D array (rows x cols).
 py::array ReadOnlyRows(const std::vector<double>& flat, int cols);
+// A read-only copy of an Eigen matrix or vector (rows x cols).
+// (vector: its values as a 1-D array).
+template <typename M>
+py::array ReadOnlyMatrix(const M& a, bool vector) {
+  using T = typename M::Scalar;
+  py::array_t<T> out = vector ? py::array_t<T>(a.size())
+                              : py::array_t<T>({static_cast<py::ssize_t>(a.rows()),
+                                                static_cast<py::ssize_t>(a.cols())});
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      out.mutable_data()[i * a.cols() + j] = a(i, j);  // row-major
+  out.attr("setflags")(py::arg("write") = false);
+  return std::move(out);
+}
+
 // A read-only NumPy array of strings (dtype U).
 py::array ReadOnlyStrings(const std::vector<std::string>& v);
 
@@ -136,11 +151,12 @@ void BindCompute(py::module_& m);
 void BindCharts(py::module_& m);
 void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
-void BindBatch(py::module_& m);         // py_batch.cpp: orbits()
-void BindSystemBatch(py::module_& m);   // py_system_batch.cpp: orbits(system, ...) (after BindBatch)
-void BindOrbitBranch(py::module_& m);   // py_orbit_branch.cpp: continue_orbits() (after BindForced)
-void BindSystems(py::module_& m);       // py_systems.cpp: ChainParams, CouplingParams (issue 32)
-void BindSystemRuns(py::module_& m);    // py_system_runs.cpp: simulate_system, system_orbit, ...
+void BindBatch(py::module_& m);        // py_batch.cpp: orbits()
+void BindSystemBatch(py::module_& m);  // py_system_batch.cpp: orbits(system, ...) (after BindBatch)
+void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
+void BindSystems(py::module_& m);      // py_systems.cpp: ChainParams, CouplingParams (issue 32)
+void BindSystemRuns(py::module_& m);   // py_system_runs.cpp: simulate_system, steady_sliding
+void BindSystemOrbit(py::module_& m);  // py_system_orbit.cpp: periodic_orbit(s)(system, ...)
 void BindSystemBranch(py::module_& m);  // py_system_branch.cpp: steady_branch, settle
 void BindAttractors(py::module_& m);    // py_attractors.cpp: basins(system), attractor_basins
 void BindSystemChart(py::module_& m);  // py_system_chart.cpp: chart(system, ...) (after BindCharts)
@@ -162,6 +178,14 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
 // exit its contact in the slip it leaves into (the way lambda points).
 FlowPoint SectionStart(const System& s, const PoincareSection& section,
                        const Eigen::VectorXd& state);
+
+// `state` as a system's: its size, every value finite (InvalidArgument naming it).
+Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state);
+// The flow's options for a system: the forced oscillator's own tolerances
+// (rtol = atol = 1e-12, ForcedModel::FlowDefaults), else the flow's; rtol and
+// atol over them.
+FlowOptions FlowFor(const py::object& system, std::optional<double> rtol,
+                    std::optional<double> atol);
 
 // `result["name"]` for `result.name`: the dicts of earlier versions.
 py::object GetItem(const py::object& self, const std::string& key);

@@ -1,11 +1,12 @@
 // Running any system from Python (issue 32): simulate_system (the one flow,
-// flow.hpp), system_orbit (the one shooting, shooting.hpp) and steady_sliding
-// (equilibria/steady_sliding.hpp), for Params, ForcedParams, ChainParams and
+// flow.hpp) and steady_sliding (equilibria/steady_sliding.hpp; orbits:
+// py_system_orbit.cpp), for Params, ForcedParams, ChainParams and
 // CouplingParams alike (SystemOf). Each computes without the GIL, with Ctrl-C.
 #include <pybind11/complex.h>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/model/forced.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip::python {
@@ -34,46 +36,11 @@ struct PySystemTrajectory {
   double t_stick = 0;
 };
 
-struct PySystemOrbit {
-  OrbitStatus status = OrbitStatus::kNotConverged;
-  std::string message, mode;
-  py::array start, monodromy, multipliers, lo, hi;
-  std::vector<std::string> modes;
-  double period = 0, update = 0;
-  bool stable = false;
-  int sticks = 0, exits = 0, crossings = 0, iterations = 0;
-};
-
 struct PySteadyState {
   bool found = false, stable = false;
   py::array z, eigenvalues;
   double max_real = 0;
 };
-
-// A read-only copy of an Eigen matrix or vector (rows x cols).
-template <typename M>
-py::array ReadOnlyMatrix(const M& a, bool vector) {
-  using T = typename M::Scalar;
-  py::array_t<T> out = vector ? py::array_t<T>(a.size())
-                              : py::array_t<T>({static_cast<py::ssize_t>(a.rows()),
-                                                static_cast<py::ssize_t>(a.cols())});
-  for (Eigen::Index i = 0; i < a.rows(); ++i)
-    for (Eigen::Index j = 0; j < a.cols(); ++j)
-      out.mutable_data()[i * a.cols() + j] = a(i, j);  // row-major
-  out.attr("setflags")(py::arg("write") = false);
-  return std::move(out);
-}
-
-Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
-  if (state.size() != s.dimension())
-    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
-                          std::to_string(s.dimension()));
-  for (Eigen::Index i = 0; i < state.size(); ++i)
-    if (!std::isfinite(state[i]))
-      throw InvalidArgument("state[" + std::to_string(i) + "] = " + Repr(state[i]) +
-                            " must be finite");
-  return state;
-}
 
 // The stroboscopic section's spacing: `period`, else one period of the
 // system's clock (a forced system's 2 pi / Omega).
@@ -101,10 +68,7 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   if (!(std::floor(t_end / dt) + 1 <= static_cast<double>(max_rows)))
     throw InvalidArgument("t_end / dt = " + Repr(t_end / dt) + " gives more rows than max_rows = " +
                           std::to_string(max_rows) + " (raise max_rows or dt)");
-  // The forced oscillator's own tolerances, as simulate_forced's (rtol = atol = 1e-12).
-  const FlowOptions base =
-      py::isinstance<ForcedParams>(system) ? ForcedModel::FlowDefaults() : FlowOptions();
-  const FlowOptions options = Solver(base, rtol, atol, py::none(), py::none());
+  const FlowOptions options = FlowFor(system, rtol, atol);
   const int n = s->dimension(), k = s->contacts();
   std::vector<double> t, z, st, sz;
   std::vector<std::string> mode;
@@ -148,43 +112,6 @@ PySystemTrajectory SimulateSystem(const py::object& system, const Eigen::VectorX
   return out;
 }
 
-PySystemOrbit Orbit(const py::object& system, const Eigen::VectorXd& state,
-                    const std::string& section, int m, std::optional<int> turns,
-                    std::optional<double> rtol, std::optional<double> atol, int contact) {
-  const std::unique_ptr<System> s = SystemOf(system);
-  const Eigen::VectorXd z0 = CheckedState(*s, state);
-  ShootingOptions o;
-  o.flow = Solver(o.flow, rtol, atol, py::none(), py::none());
-  const std::string err = o.ValidationError();
-  if (!err.empty()) throw InvalidArgument(err);
-  const PoincareSection sec = SectionOf(*s, section, z0, m, turns, contact);
-  const FlowPoint guess = SectionStart(*s, sec, z0);
-  Interrupt interrupt;
-  PeriodicOrbit r;
-  {
-    py::gil_scoped_release nogil;
-    Shooting shooting(*s, o);
-    shooting.flow().set_cancel([&] { return interrupt(); });
-    r = shooting.Find(guess, sec);
-  }
-  interrupt.RaiseIfInterrupted();
-  if (!r.ok()) RaiseNumerical(std::string(Name(r.status)) + ": " + r.message);
-  PySystemOrbit out;
-  const int k = s->contacts();
-  out.status = r.status, out.message = r.message, out.mode = ModeSetName(r.start.mode, k);
-  out.start = ReadOnlyMatrix(r.start.z, true);
-  out.monodromy = ReadOnlyMatrix(r.monodromy, false);
-  Eigen::VectorXcd mu(static_cast<Eigen::Index>(r.multipliers.size()));
-  for (size_t i = 0; i < r.multipliers.size(); ++i) mu[i] = r.multipliers[i];
-  out.multipliers = ReadOnlyMatrix(mu, true);
-  out.lo = ReadOnlyMatrix(r.lo, true), out.hi = ReadOnlyMatrix(r.hi, true);
-  for (const ModeSet& ms : r.modes) out.modes.push_back(ModeSetName(ms, k));
-  out.period = r.period, out.update = r.update, out.stable = r.stable;
-  out.sticks = r.sticks, out.exits = r.exits, out.crossings = r.crossings;
-  out.iterations = r.iterations;
-  return out;
-}
-
 PySteadyState Steady(const py::object& system) {
   const std::unique_ptr<System> s = SystemOf(system);
   const SteadyState r = SteadySliding(*s);
@@ -220,24 +147,6 @@ void BindSystemRuns(py::module_& m) {
       .def_readonly("exits", &T::exits)
       .def_readonly("crossings", &T::crossings)
       .def_readonly("t_stick", &T::t_stick);
-  using O = PySystemOrbit;
-  py::class_<O>(m, "SystemOrbit", "Result of system_orbit(): a periodic orbit of any system.")
-      .def_readonly("status", &O::status)
-      .def_readonly("message", &O::message)
-      .def_readonly("start", &O::start)
-      .def_readonly("mode", &O::mode)
-      .def_readonly("period", &O::period)
-      .def_readonly("monodromy", &O::monodromy)
-      .def_readonly("multipliers", &O::multipliers)
-      .def_readonly("stable", &O::stable)
-      .def_readonly("sticks", &O::sticks)
-      .def_readonly("exits", &O::exits)
-      .def_readonly("crossings", &O::crossings)
-      .def_readonly("modes", &O::modes)
-      .def_readonly("lo", &O::lo)
-      .def_readonly("hi", &O::hi)
-      .def_readonly("iterations", &O::iterations)
-      .def_readonly("update", &O::update);
   using S = PySteadyState;
   py::class_<S>(m, "SteadyState", "Result of steady_sliding().")
       .def_readonly("found", &S::found)
@@ -257,18 +166,6 @@ void BindSystemRuns(py::module_& m) {
           py::arg("dt") = 0.01, py::arg("max_rows") = 1000000, py::arg("rtol") = none,
           py::arg("atol") = none, py::arg("section") = SimulationSection::kNone,
           py::arg("period") = none, doc);
-  m.def("system_orbit", &Orbit, py::arg("system"), py::arg("state"),
-        py::arg("section") = "stick-exit", py::arg("m") = 1, py::arg("turns") = none,
-        py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
-        "The periodic orbit of any system through the one near `state` on `section` (as "
-        "continue_orbits'), by the one shooting (C++ Shooting::Find), with its monodromy and "
-        "multipliers. NumericalError where Newton fails.");
-  // The same under the belt's name (issue 31 item 8): periodic_orbit(system, state, ...)
-  // for any system, after the belt's periodic_orbit(params, a_guess, ...).
-  m.def("periodic_orbit", &Orbit, py::arg("system"), py::arg("state"),
-        py::arg("section") = "stick-exit", py::arg("m") = 1, py::arg("turns") = none,
-        py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
-        "periodic_orbit(system, state, section, ...): system_orbit's, for any system.");
   m.def("steady_sliding", &Steady, py::arg("system"),
         "Steady sliding of any system with every contact slipping below (C++ SteadySliding): "
         "its state z and the Jacobian's eigenvalues, the largest real part first.");

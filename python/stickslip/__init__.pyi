@@ -244,46 +244,6 @@ class ForcedParams:
     def __init__(self, params: Params, force: float = 0.0, omega: float = 1.0) -> None: ...
     def validation_error(self) -> str: ...
 
-class ForcedTrajectory:
-    t: Array
-    x: Array
-    xdot: Array
-    mode: Array
-    phase: Array
-    section: SimulationSection
-    section_t: Array
-    section_x: Array
-    section_xdot: Array
-    section_phase: Array
-    sticks: int
-    exits: int
-    crossings: int
-    steps: int
-    x_min: float
-    x_max: float
-    xdot_min: float
-    xdot_max: float
-    def __getitem__(self, key: str) -> Any: ...
-
-class ForcedOrbit:
-    m: int
-    sticks: int
-    crossings: int
-    iterations: int
-    x0: float
-    xdot0: float
-    period: float
-    x_min: float
-    x_max: float
-    xdot_min: float
-    xdot_max: float
-    multipliers: Array
-    monodromy: Array
-    points: Array
-    stable: bool
-    from_exit_map: bool
-    def __getitem__(self, key: str) -> Any: ...
-
 class ForcedBranch:
     axis: Parameter
     status: BranchStatus
@@ -579,17 +539,6 @@ def simulate(system: SystemLike, state: Any, t_end: float = 100.0, dt: float = 0
              max_rows: int = 1000000, rtol: Optional[float] = None, atol: Optional[float] = None,
              section: SimulationSection = SimulationSection.none,
              period: Optional[float] = None) -> SystemTrajectory: ...
-def simulate_forced(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
-                    t_end: float = 100.0, dt: float = 0.01,
-                    section: SimulationSection = SimulationSection.strobe, max_rows: int = 1000000,
-                    rtol: Optional[float] = None,
-                    atol: Optional[float] = None) -> ForcedTrajectory: ...
-def forced_orbit(params: ForcedParams, x0: float, xdot0: float, m: int = 1,
-                 rtol: Optional[float] = None, atol: Optional[float] = None) -> ForcedOrbit: ...
-def find_forced_orbits(params: ForcedParams, max_m: int = 4, max_sticks: int = 4, grid: int = 5,
-                       exit_samples: int = 48, radius: float = 0.0,
-                       rtol: Optional[float] = None,
-                       atol: Optional[float] = None) -> List[ForcedOrbit]: ...
 def continue_forced(params: ForcedParams, axis: Parameter | str, from_: float, to: float,
                     x_guess: Optional[float] = None, xdot_guess: Optional[float] = None,
                     m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
@@ -620,18 +569,12 @@ def orbit_diagram(system: Union[ChainParams, CouplingParams], parameter: str, fr
                   keep: Optional[int] = None, up: bool = True, down: bool = True, chunks: int = 1,
                   max_amplitude: float = 50.0, rtol: Optional[float] = None,
                   atol: Optional[float] = None) -> Dict[str, Any]: ...
-def forced_basins(params: ForcedParams, nx: int = 41, ny: int = 41,
-                  x_range: Tuple[float, float] = (-1.5, 1.5),
-                  xdot_range: Tuple[float, float] = (-1.5, 1.5),
-                  transient: Optional[int] = None, keep: Optional[int] = None,
-                  max_period: Optional[int] = None, threads: int = 2,
-                  rtol: Optional[float] = None, atol: Optional[float] = None) -> Dict[str, Any]: ...
 @overload
 def periodic_orbit(params: Params, a_guess: Optional[float] = None, floquet: bool = False,
                    rtol: Optional[float] = None, atol: Optional[float] = None,
                    integrator: IntegratorLike = None, method: MethodLike = None) -> Orbit: ...
 @overload
-def periodic_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m: int = 1,
+def periodic_orbit(system: SystemLike, state: Any, section: Optional[str] = None, m: int = 1,
                    turns: Optional[int] = None, rtol: Optional[float] = None,
                    atol: Optional[float] = None, contact: int = 0) -> SystemOrbit: ...
 @overload
@@ -671,20 +614,15 @@ def orbits(system: Union[ChainParams, CouplingParams, System], columns: Mapping[
            recurrence: float = 1e-3, rtol: Optional[float] = None,
            atol: Optional[float] = None) -> Dict[str, npt.NDArray[Any]]: ...
 @overload
-def periodic_orbits(params: ForcedParams, max_m: int = 4, max_sticks: int = 4, grid: int = 5,
-                    exit_samples: int = 48, radius: float = 0.0, rtol: Optional[float] = None,
-                    atol: Optional[float] = None) -> List[ForcedOrbit]: ...
+def periodic_orbits(system: Union[ForcedParams, System], max_m: int = 4, max_sticks: int = 4,
+                    grid: int = 5, exit_samples: int = 48, radius: float = 0.0,
+                    rtol: Optional[float] = None,
+                    atol: Optional[float] = None) -> List[SystemOrbit]: ...
 @overload
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
                     method: MethodLike = None,
                     options: Optional[OrbitScanOptions] = None) -> PeriodicOrbits: ...
-@overload
-def basins(params: ForcedParams, nx: int = 41, ny: int = 41,
-           x_range: Tuple[float, float] = (-1.5, 1.5),
-           xdot_range: Tuple[float, float] = (-1.5, 1.5), transient: Optional[int] = None,
-           keep: Optional[int] = None, max_period: Optional[int] = None, threads: int = 2,
-           rtol: Optional[float] = None, atol: Optional[float] = None) -> Dict[str, Any]: ...
 @overload
 def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            x_range: Optional[Tuple[float, float]] = None,
@@ -694,7 +632,8 @@ def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            options: Optional[BasinOptions] = None,
            progress: Optional[Callable[[int, int], Any]] = None) -> Basins: ...
 @overload
-def basins(system: Union[ChainParams, CouplingParams], nx: int = 41, ny: int = 41,
+def basins(system: Union[ForcedParams, ChainParams, CouplingParams, System], nx: int = 41,
+           ny: int = 41,
            slice: Optional[Tuple[str, str]] = None, base: Optional[Any] = None,
            x_range: Optional[Tuple[float, float]] = None,
            y_range: Optional[Tuple[float, float]] = None, transient: Optional[int] = None,
@@ -843,6 +782,9 @@ class SystemOrbit:
     hi: Array
     iterations: int
     update: float
+    points: Array
+    turns: int
+    from_exit_map: bool
 
 class SteadyState:
     found: bool
@@ -856,7 +798,7 @@ def simulate_system(system: SystemLike, state: Any, t_end: float = 100.0, dt: fl
                     atol: Optional[float] = None,
                     section: SimulationSection = SimulationSection.none,
                     period: Optional[float] = None) -> SystemTrajectory: ...
-def system_orbit(system: SystemLike, state: Any, section: str = "stick-exit", m: int = 1,
+def system_orbit(system: SystemLike, state: Any, section: Optional[str] = None, m: int = 1,
                  turns: Optional[int] = None, rtol: Optional[float] = None,
                  atol: Optional[float] = None, contact: int = 0) -> SystemOrbit: ...
 def steady_sliding(system: SystemLike) -> SteadyState: ...
@@ -937,6 +879,7 @@ class AttractorBasins:
     failures: List[str]
     failed: int
     seconds: float
+    def plot(self, ax: Any = None) -> Any: ...
 
 def attractor_basins(system: SystemLike, nx: int = 41, ny: int = 41,
                      slice: Optional[Tuple[str, str]] = None, base: Optional[Any] = None,

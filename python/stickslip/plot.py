@@ -31,7 +31,7 @@ SYMBOLS = {"beta": r"$\beta$", "v": r"$v$", "mu_s": r"$\mu_s$", "mu_m": r"$\mu_m
            "k5": r"$k_5$", "omega": r"$\Omega$", "force": r"$A$", "x_max": r"$x_{max}$",
            "x_min": r"$x_{min}$", "xdot_min": r"$\dot x_{min}$", "xdot_max": r"$\dot x_{max}$",
            "period": "period", "t_stick": "time in stick", "multiplier": "multiplier",
-           "amplitude": "amplitude", "x": r"$x$", "xdot": r"$\dot x$"}
+           "amplitude": "amplitude", "x": r"$x$", "xdot": r"$\dot x$", "x'": r"$\dot x$"}
 
 
 def label(name):
@@ -209,23 +209,26 @@ def basins(b, ax=None, legend=True):
     return ax
 
 
-def forced_basins(d, nx, ny, ax=None):
-    """forced_basins()'s dict: each start coloured by its attractor (gray: failed)."""
+def attractor_basins(b, ax=None):
+    """basins(system)'s AttractorBasins: each start of the slice coloured by its
+    attractor (gray: not run), each attractor's cycle marked and numbered."""
     ax = _axes(ax)
-    att = np.asarray(d["attractor"]).reshape(ny, nx)
-    masked = np.ma.masked_less(att, 0)
+    u, w = np.asarray(b.u), np.asarray(b.w)
+    nx = len(np.unique(u))
+    ny = u.size // nx
+    att = np.asarray(b.attractor).reshape(ny, nx)
     ax.set_facecolor("#d9d9d9")
-    ax.pcolormesh(np.asarray(d["x"]).reshape(ny, nx), np.asarray(d["xdot"]).reshape(ny, nx),
-                  masked, cmap="tab10", vmin=-0.5, vmax=9.5, shading="nearest", rasterized=True)
-    for i, a in enumerate(d["attractors"]):
+    ax.pcolormesh(u.reshape(ny, nx), w.reshape(ny, nx), np.ma.masked_less(att, 0), cmap="tab10",
+                  vmin=-0.5, vmax=9.5, shading="nearest", rasterized=True)
+    i, j = (b.state_names.index(n) for n in b.slice)
+    for k, a in enumerate(b.attractors):
         # a periodic attractor's m section points (its cycle), else its one point
-        cx = a["cycle_x"] if len(a.get("cycle_x", [])) else [a["x"]]
-        cy = a["cycle_xdot"] if len(a.get("cycle_xdot", [])) else [a["xdot"]]
-        ax.plot(cx, cy, "o", color="black", ms=4)
-        ax.annotate("%d: %s m=%d" % (i, a["kind"], a["m"]), (a["x"], a["xdot"]), xytext=(4, 4),
+        pts = np.asarray(a.cycle) if len(a.cycle) else np.asarray(a.z)[None, :]
+        ax.plot(pts[:, i], pts[:, j], "o", color="black", ms=4)
+        ax.annotate("%d: %s m=%d" % (k, a.kind, a.m), (a.z[i], a.z[j]), xytext=(4, 4),
                     textcoords="offset points", fontsize="small")
-    ax.set_xlabel(label("x"))
-    ax.set_ylabel(label("xdot"))
+    ax.set_xlabel(label(b.slice[0]))
+    ax.set_ylabel(label(b.slice[1]))
     return ax
 
 
@@ -273,8 +276,9 @@ def forced_branch(b, y="x_max", ax=None, labels=True):
 
 
 def install(core):
-    """b.plot(...) on Branch, Chart, Basins and ForcedBranch."""
+    """b.plot(...) on Branch, Chart, Basins, AttractorBasins and ForcedBranch."""
     core.Branch.plot = branch
     core.Chart.plot = chart
     core.Basins.plot = basins
+    core.AttractorBasins.plot = attractor_basins
     core.ForcedBranch.plot = forced_branch

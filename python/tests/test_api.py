@@ -122,11 +122,11 @@ class EveryResultArrayReadOnly(unittest.TestCase):
         fp = stickslip.ForcedParams(sp, force=0.3, omega=0.617)
         w = "omega"
         s = stickslip.stroboscopic(fp, 0.0, 0.25, transient=100, keep=2)
-        fo = stickslip.forced_orbit(fp, s["x"][0], s["xdot"][0])
+        fo = stickslip.periodic_orbit(fp, [s["x"][0], s["xdot"][0], 0.0])
         branch = stickslip.continue_forced(fp, w, 0.62, 0.617, x_guess=fo.x0, xdot_guess=fo.xdot0)
         pd = [q for q in branch.special_points if q.label == "PD"][0]
         return {
-            "basins": lambda: stickslip.basins(p, nx=3, ny=3),
+            "basins": lambda: (stickslip.basins(p, nx=3, ny=3), stickslip.basins(fp, nx=2, ny=2)),
             "chart": lambda: (stickslip.chart(p), stickslip.chart(
                 stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.52)),
                 "mu_k", 0.5, 0.55, "beta", 0.015, 0.025, seed_lines=1)),
@@ -135,24 +135,23 @@ class EveryResultArrayReadOnly(unittest.TestCase):
                                                                    hi=pd.p + 0.003),
             "continue_forced": lambda: branch,
             "continue_orbits": lambda: stickslip.continue_orbits(
-                fp, "omega", [fo.x0, fo.xdot0, 0.0], 0.615, max_step=0.5),
+                fp, "omega", fo.start, 0.615, max_step=0.5),
             "continue_physical": lambda: stickslip.continue_physical(
                 mass=2.0, stiffness=800.0, damping=4.0, belt_speed=0.1, mu_s=0.4, mu_m=0.25,
                 speed_m=0.2, from_=0.1, to=0.12),
-            "find_forced_orbits": lambda: stickslip.find_forced_orbits(fp, max_m=2, grid=3),
-            "forced_basins": lambda: stickslip.forced_basins(fp, nx=2, ny=2),
             "attractor_basins": lambda: stickslip.attractor_basins(
                 stickslip.ChainParams(2, kc=0.2), nx=2, ny=2, transient=20, keep=8),
-            "forced_orbit": lambda: fo,
             "orbits": lambda: (stickslip.orbits(p, {"v": [0.25, 0.47]}, floquet=True),
                                stickslip.orbits(fp, {"omega": [0.6, 0.52]})),
             "orbit_curve": lambda: stickslip.orbit_curve(p, orbit, n=20),
             "orbit_diagram": lambda: stickslip.orbit_diagram(fp, w, 0.61, 0.62, n=3,
                                                              transient=50, keep=4),
-            "periodic_orbit": lambda: orbit,
-            "periodic_orbits": lambda: stickslip.periodic_orbits(p),
-            "simulate": lambda: stickslip.simulate(p, t_end=2.0),
-            "simulate_forced": lambda: stickslip.simulate_forced(fp, t_end=20.0),
+            "periodic_orbit": lambda: (orbit, fo),
+            "periodic_orbits": lambda: (stickslip.periodic_orbits(p),
+                                        stickslip.periodic_orbits(fp, max_m=2, grid=3)),
+            "simulate": lambda: (stickslip.simulate(p, t_end=2.0),
+                                 stickslip.simulate(fp, [0.0, 0.25, 0.0], t_end=20.0,
+                                                    section=stickslip.SimulationSection.strobe)),
             "simulate_system": lambda: stickslip.simulate_system(
                 stickslip.ChainParams(2, kc=0.2), [0.0, 0.25, 0.1, 0.25], t_end=2.0),
             "steady_sliding": lambda: stickslip.steady_sliding(stickslip.CouplingParams()),

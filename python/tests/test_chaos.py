@@ -20,7 +20,7 @@ def stribeck(omega):
 def settled_orbit(omega, m=1):
     """The attracting m-orbit at omega: from the map's iterate, closed by Newton."""
     s = stickslip.stroboscopic(stribeck(omega), 0.0, 0.25, transient=300, keep=1)
-    return stickslip.forced_orbit(stribeck(omega), s["x"][0], s["xdot"][0], m=m)
+    return stickslip.periodic_orbit(stribeck(omega), [s["x"][0], s["xdot"][0], 0.0], m=m)
 
 
 class Switch(unittest.TestCase):
@@ -67,10 +67,10 @@ class Chaos(unittest.TestCase):
     def test_exponent_on_a_periodic_orbit_is_floquets(self):
         o = settled_orbit(0.7)
         mu = max(abs(z) for z in o.multipliers)
-        s = stickslip.stroboscopic(stribeck(0.7), o.x0, o.xdot0, transient=100, keep=200)
+        s = stickslip.stroboscopic(stribeck(0.7), o.start[0], o.start[1], transient=100, keep=200)
         self.assertAlmostEqual(s["lyapunov"], math.log(mu) / o.period, delta=1e-3)
         self.assertTrue(np.all(s["sticks"] == o.sticks))
-        np.testing.assert_allclose(s["x"], o.x0, atol=1e-9)
+        np.testing.assert_allclose(s["x"], o.start[0], atol=1e-9)
 
     def test_orbit_diagram_settles_on_newtons_orbit(self):
         d = stickslip.orbit_diagram(stribeck(0.7), stickslip.Parameter.omega, 0.69, 0.71, n=3,
@@ -81,24 +81,24 @@ class Chaos(unittest.TestCase):
         np.testing.assert_allclose(sorted(set(d["value"])), [0.69, 0.7, 0.71], rtol=1e-15)
         at = np.isclose(d["value"], 0.7, rtol=0, atol=1e-15)
         o = settled_orbit(0.7)
-        np.testing.assert_allclose(d["x"][at], o.x0, atol=1e-9)
-        np.testing.assert_allclose(d["xdot"][at], o.xdot0, atol=1e-9)
+        np.testing.assert_allclose(d["x"][at], o.start[0], atol=1e-9)
+        np.testing.assert_allclose(d["xdot"][at], o.start[1], atol=1e-9)
         self.assertTrue(np.all(d["columns"]["lyapunov"] < 0))
 
     def test_basin_attractors_are_newtons_orbits(self):
-        b = stickslip.forced_basins(stribeck(0.7), nx=3, ny=3, transient=300, keep=16)
-        self.assertEqual(len(b["attractor"]), 9)
-        self.assertEqual(b["failed"], 0)
-        periodic = [a for a in b["attractors"] if a["kind"] == "periodic"]
+        b = stickslip.basins(stribeck(0.7), nx=3, ny=3, transient=300, keep=16)
+        self.assertEqual(len(b.attractor), 9)
+        self.assertEqual(b.failed, 0)
+        periodic = [a for a in b.attractors if a.kind == "periodic"]
         self.assertTrue(periodic)
-        self.assertEqual(sum(a["starts"] for a in b["attractors"]), 9)
+        self.assertEqual(sum(a.starts for a in b.attractors), 9)
         for a in periodic:
-            o = stickslip.forced_orbit(stribeck(0.7), a["x"], a["xdot"], m=a["m"])
-            self.assertLess(math.hypot(o.x0 - a["x"], o.xdot0 - a["xdot"]), 1e-8)
-            self.assertEqual(o.sticks, a["sticks"])
+            o = stickslip.periodic_orbit(stribeck(0.7), [a.z[0], a.z[1], 0.0], m=a.m)
+            self.assertLess(math.hypot(o.start[0] - a.z[0], o.start[1] - a.z[1]), 1e-8)
+            self.assertEqual(o.sticks, a.sticks)
             # its cycle: m section points, the first the attractor's own
-            self.assertEqual(len(a["cycle_x"]), a["m"])
-            self.assertEqual((a["cycle_x"][0], a["cycle_xdot"][0]), (a["x"], a["xdot"]))
+            self.assertEqual(a.cycle.shape[0], a.m)
+            np.testing.assert_array_equal(a.cycle[0], a.z)
 
     def test_bad_input_names_the_option(self):
         with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):
@@ -120,7 +120,7 @@ class Bounds(unittest.TestCase):
             stickslip.orbit_diagram(stribeck(0.7), stickslip.Parameter.omega, 0.6, 0.7, n=2,
                                     transient=big)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "transient"):
-            stickslip.forced_basins(stribeck(0.7), nx=1, ny=1, transient=big)
+            stickslip.basins(stribeck(0.7), nx=1, ny=1, transient=big)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "keep"):
             stickslip.stroboscopic(stribeck(0.7), keep=10**6 + 1)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "section points"):
@@ -131,25 +131,25 @@ class Bounds(unittest.TestCase):
         # align (50) was not exposed and had to be <= transient; now min(50, transient),
         # as the apps. Newton's orbit is the reference, as above.
         o = settled_orbit(0.7)
-        s = stickslip.stroboscopic(stribeck(0.7), o.x0, o.xdot0, transient=10, keep=20)
-        np.testing.assert_allclose(s["x"], o.x0, atol=1e-9)
-        s0 = stickslip.stroboscopic(stribeck(0.7), o.x0, o.xdot0, transient=0, keep=20)
-        np.testing.assert_allclose(s0["x"], o.x0, atol=1e-9)
+        s = stickslip.stroboscopic(stribeck(0.7), o.start[0], o.start[1], transient=10, keep=20)
+        np.testing.assert_allclose(s["x"], o.start[0], atol=1e-9)
+        s0 = stickslip.stroboscopic(stribeck(0.7), o.start[0], o.start[1], transient=0, keep=20)
+        np.testing.assert_allclose(s0["x"], o.start[0], atol=1e-9)
 
     def test_a_box_must_be_finite_and_bounded(self):
         for box in ((-math.inf, math.inf), (-1e308, 1e308), (0, math.nan)):
             with self.assertRaisesRegex(stickslip.InvalidArgument, "box"):
-                stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, x_range=box)
+                stickslip.basins(stribeck(0.7), nx=2, ny=2, x_range=box)
 
     def test_threads_are_capped_by_the_hardware(self):
         # threads=5000 started 5000 threads (under a memory limit: abort); now a pool
         # of at most os.cpu_count() threads classifies the same starts.
-        a = stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, transient=50, keep=16, threads=5000)
-        b = stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, transient=50, keep=16, threads=1)
-        np.testing.assert_array_equal(a["attractor"], b["attractor"])
-        np.testing.assert_array_equal(a["lyapunov"], b["lyapunov"])
+        a = stickslip.basins(stribeck(0.7), nx=2, ny=2, transient=50, keep=16, threads=5000)
+        b = stickslip.basins(stribeck(0.7), nx=2, ny=2, transient=50, keep=16, threads=1)
+        np.testing.assert_array_equal(a.attractor, b.attractor)
+        np.testing.assert_array_equal(a.lyapunov, b.lyapunov)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "threads"):
-            stickslip.forced_basins(stribeck(0.7), nx=2, ny=2, threads=-1)
+            stickslip.basins(stribeck(0.7), nx=2, ny=2, threads=-1)
 
     def test_non_finite_starts_and_options_name_the_argument(self):
         with self.assertRaisesRegex(stickslip.InvalidArgument, "x0 = nan"):

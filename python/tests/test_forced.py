@@ -31,47 +31,49 @@ class Forced(unittest.TestCase):
     def test_orbit_and_scan_give_den_hartogs_amplitude(self):
         for w in (0.8, 1.5, 2.2):
             p = den_hartog_params(w)
-            o = stickslip.forced_orbit(p, 0.5, 0.0)
-            self.assertAlmostEqual(o.x_max, den_hartog(0.3, 1, w), delta=1e-9)
-            self.assertEqual((o.m, o.sticks), (1, 0))
-            orbits = stickslip.find_forced_orbits(p)
-            nonstop = [q for q in orbits if q.m == 1 and q.sticks == 0]
+            o = stickslip.periodic_orbit(p, [0.5, 0.0, 0.0])  # the clock's section by default
+            self.assertEqual(type(o), stickslip.SystemOrbit)
+            self.assertAlmostEqual(o.hi[0], den_hartog(0.3, 1, w), delta=1e-9)
+            self.assertEqual((o.turns, o.sticks), (1, 0))
+            self.assertAlmostEqual(o.period, 2 * math.pi / w, delta=1e-12)
+            orbits = stickslip.periodic_orbits(p)
+            nonstop = [q for q in orbits if q.turns == 1 and q.sticks == 0]
             self.assertEqual(len(nonstop), 1)
-            self.assertAlmostEqual(nonstop[0].x_max, den_hartog(0.3, 1, w), delta=1e-9)
-            self.assertEqual(nonstop[0].points.shape, (1, 2))
+            self.assertAlmostEqual(nonstop[0].hi[0], den_hartog(0.3, 1, w), delta=1e-9)
+            self.assertEqual(nonstop[0].points.shape, (1, 3))
+            np.testing.assert_allclose(nonstop[0].points[0], o.start, rtol=0, atol=1e-9)
 
     def test_simulation_settles_on_den_hartogs_orbit(self):
         w = 1.5
         T = 2 * math.pi / w
-        tr = stickslip.simulate_forced(den_hartog_params(w), t_end=300.0, dt=0.001)
+        tr = stickslip.simulate(den_hartog_params(w), [0.0, 0.0, 0.0], t_end=300.0, dt=0.001,
+                                section=stickslip.SimulationSection.strobe)
         n = len(tr.section_t)
         self.assertEqual(n, int(300 / T) + 1)
         np.testing.assert_allclose(tr.section_t, T * np.arange(n), rtol=1e-12, atol=1e-12)
+        self.assertEqual(tr.names, ["x", "x'", "theta"])
         last = tr.t >= 300 - T
-        self.assertAlmostEqual(tr.x[last].max(), den_hartog(0.3, 1, w), delta=1e-5)
+        self.assertAlmostEqual(tr.z[last, 0].max(), den_hartog(0.3, 1, w), delta=1e-5)
         self.assertTrue(set(tr.mode) <= {"slip-below", "slip-above", "stick"})
-        exits = stickslip.simulate_forced(den_hartog_params(w), t_end=30.0,
-                                          section=stickslip.ForcedSection.exit)
+        exits = stickslip.simulate(den_hartog_params(w), [0.0, 0.0, 0.0], t_end=30.0,
+                                   section=stickslip.SimulationSection.exit)
         self.assertEqual(len(exits.section_t), exits.exits)
 
     def test_one_simulate_takes_any_system(self):
-        # simulate(system, state) runs the same Simulate as simulate_forced, at
-        # the same tolerances: the same rows and section points, to rounding
-        # (simulate_forced also records the extremes, which moves the steps).
+        # The strobe's points are the rows' states at n T: the same run at the
+        # forced oscillator's tolerances, the section points on t = n T exactly.
         p = den_hartog_params(1.5)
-        old = stickslip.simulate_forced(p, x0=0.2, xdot0=0.0, t_end=40.0, dt=0.05)
-        new = stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=40.0, dt=0.05,
+        T = 2 * math.pi / 1.5
+        new = stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=40.0, dt=T / 8,
                                  section=stickslip.SimulationSection.strobe)
-        np.testing.assert_allclose(new.t, old.t, rtol=0, atol=1e-12)
-        np.testing.assert_allclose(new.z[:, :2], np.column_stack([old.x, old.xdot]), rtol=0,
-                                   atol=1e-12)
-        np.testing.assert_array_equal(new.mode, old.mode)
-        np.testing.assert_array_equal(new.section_t, old.section_t)  # n T exactly
-        np.testing.assert_allclose(new.section_z[:, :2],
-                                   np.column_stack([old.section_x, old.section_xdot]),
-                                   rtol=0, atol=1e-12)
+        n = len(new.section_t)
+        np.testing.assert_array_equal(new.section_t, T * np.arange(n))
+        on_grid = [np.argmin(abs(new.t - t)) for t in new.section_t]
+        np.testing.assert_allclose(new.section_z[:, :2], new.z[on_grid, :2], rtol=0, atol=1e-12)
+        turn = new.section_z[:, 2] / (2 * math.pi)  # the phase at whole turns
+        np.testing.assert_allclose(turn, np.round(turn), rtol=0, atol=1e-12)
         self.assertEqual(new.section, stickslip.SimulationSection.strobe)
-        plain = stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=40.0, dt=0.05)
+        plain = stickslip.simulate(p, [0.2, 0.0, 0.0], t_end=40.0, dt=T / 8)
         self.assertEqual(plain.section_z.shape, (0, 3))
         np.testing.assert_allclose(plain.z, new.z, rtol=0, atol=1e-10)
         chain = stickslip.ChainParams(2)
@@ -146,10 +148,14 @@ class Forced(unittest.TestCase):
         # periodic_orbits and basins on the forced oscillator are its scan and basins.
         found = stickslip.periodic_orbits(p, max_m=1)
         self.assertEqual(len(found), 1)
-        self.assertAlmostEqual(found[0].x_max, den_hartog(0.3, 1, 2.0), delta=1e-9)
-        grid = dict(nx=3, ny=3, transient=20, keep=16)
-        self.assertEqual(list(stickslip.basins(p, **grid)["attractor"]),
-                         list(stickslip.forced_basins(p, **grid)["attractor"]))
+        self.assertAlmostEqual(found[0].hi[0], den_hartog(0.3, 1, 2.0), delta=1e-9)
+        d = stickslip.basins(p, nx=3, ny=3, transient=60, keep=16)
+        self.assertEqual(type(d), stickslip.AttractorBasins)
+        self.assertEqual(d.slice, ["x", "x'"])
+        self.assertEqual(list(d.attractor), [0] * 9)  # every start on Den Hartog's orbit
+        a = d.attractors[0]
+        self.assertEqual((a.kind, a.m, a.starts), ("periodic", 1, 9))
+        np.testing.assert_allclose(a.z[:2], o.start[:2], rtol=0, atol=1e-8)
         # The belt's own signatures stay.
         self.assertEqual(type(stickslip.periodic_orbit(stickslip.Params())), stickslip.Orbit)
         self.assertEqual(type(stickslip.periodic_orbits(stickslip.Params())),
@@ -179,19 +185,23 @@ class Forced(unittest.TestCase):
             self.assertLess(abs(ns.mult_max[end] - 1), 1e-7)
 
     def test_arrays_are_read_only_and_bad_input_raises(self):
-        tr = stickslip.simulate_forced(den_hartog_params(1.5), t_end=5.0)
-        for a in (tr.t, tr.x, tr.section_x, tr.mode):
+        tr = stickslip.simulate(den_hartog_params(1.5), [0.0, 0.0, 0.0], t_end=5.0,
+                                section=stickslip.SimulationSection.strobe)
+        for a in (tr.t, tr.z, tr.section_z, tr.mode):
             with self.assertRaises(ValueError):
                 a[0] = a[0]
-        o = stickslip.forced_orbit(den_hartog_params(1.5), 0.5, 0.0)
-        with self.assertRaises(ValueError):
-            o.multipliers[0] = 0
+        o = stickslip.periodic_orbit(den_hartog_params(1.5), [0.5, 0.0, 0.0])
+        for a in (o.multipliers, o.start, o.points):
+            with self.assertRaises(ValueError):
+                a[0] = 0
         with self.assertRaisesRegex(stickslip.InvalidArgument, "omega"):
-            stickslip.forced_orbit(den_hartog_params(-1.0), 0.5, 0.0)
+            stickslip.periodic_orbit(den_hartog_params(-1.0), [0.5, 0.0, 0.0])
         with self.assertRaisesRegex(stickslip.InvalidArgument, "max_m"):
-            stickslip.find_forced_orbits(den_hartog_params(1.5), max_m=0)
+            stickslip.periodic_orbits(den_hartog_params(1.5), max_m=0)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "no forcing clock"):
+            stickslip.periodic_orbits(stickslip.ChainParams(2))
         with self.assertRaisesRegex(stickslip.InvalidArgument, "dt"):
-            stickslip.simulate_forced(den_hartog_params(1.5), dt=0.0)
+            stickslip.simulate(den_hartog_params(1.5), [0.0, 0.0, 0.0], dt=0.0)
 
 
 CHILD = r"""
@@ -199,9 +209,9 @@ import sys, time, stickslip
 p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
                            force=1.0, omega=1.5)
 calls = {
-    "simulate_forced": lambda: stickslip.simulate_forced(p, t_end=1e7, dt=1.0,
-                                                         max_rows=10000001),
-    "find_forced_orbits": lambda: stickslip.find_forced_orbits(p, max_m=64, grid=100),
+    "simulate": lambda: stickslip.simulate(p, [0.0, 0.0, 0.0], t_end=1e7, dt=1.0,
+                                           max_rows=10000001),
+    "periodic_orbits": lambda: stickslip.periodic_orbits(p, max_m=64, grid=100),
 }
 print("ready", flush=True)
 try:
@@ -214,7 +224,7 @@ except KeyboardInterrupt:
 
 class CtrlC(unittest.TestCase):
     def test_long_forced_calls_stop_on_sigint(self):
-        for name in ("simulate_forced", "find_forced_orbits"):
+        for name in ("simulate", "periodic_orbits"):
             child = subprocess.Popen([sys.executable, "-c", CHILD, name], stdout=subprocess.PIPE,
                                      text=True, env=os.environ)
             try:

@@ -24,7 +24,7 @@ except KeyboardInterrupt:
 # Each runs for seconds to minutes uninterrupted (measured on this machine:
 # simulate 130 s, continue_branch with max_step 5e-5 on CVODE 10 s, basins 801 x 801 11 s, chart
 # with max_step 5e-5 on CVODE over 20 s (on Taylor it now takes 1 s: its signal came too late),
-# its regions on 1000 x 1000 cells about 90 s, orbit_diagram 5000 values and forced_basins
+# its regions on 1000 x 1000 cells about 90 s, orbit_diagram 5000 values and basins
 # 401 x 401 starts well over 10 s each; smallest_disturbance at n = 10**8 about 20 s; orbits on
 # CVODE, 10^5 rows, 0.3 ms each: 15 s or more).
 CALLS = """{
@@ -46,7 +46,7 @@ CALLS = """{
      stickslip.Parameter.omega, 0.5, 1.0, n=5000),
  "smallest_disturbance": lambda: stickslip.smallest_disturbance(stickslip.Params(v=0.42),
      stickslip.periodic_orbit(stickslip.Params(v=0.42), a_guess=0.3), n=10**8),
- "forced_basins": lambda: stickslip.forced_basins(stickslip.ForcedParams(stickslip.Params(),
+ "basins_forced": lambda: stickslip.basins(stickslip.ForcedParams(stickslip.Params(),
      force=0.2, omega=0.8), nx=401, ny=401),
 }"""
 
@@ -126,8 +126,8 @@ class CtrlC(unittest.TestCase):
     def test_orbit_diagram(self):
         self.check("orbit_diagram")
 
-    def test_forced_basins(self):
-        self.check("forced_basins")
+    def test_basins_of_the_forced_oscillator(self):
+        self.check("basins_forced")
 
     def test_orbits(self):  # the batch polls the signal on the calling thread, its workers stop
         self.check("orbits")

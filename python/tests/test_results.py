@@ -231,12 +231,15 @@ class Figures(unittest.TestCase):
         self.assertTrue(ax.get_lines())
         plt.close(ax.figure)
 
-    def test_forced_basins_plot_marks_every_attractor(self):
+    def test_attractor_basins_plot_marks_every_attractor(self):
         import matplotlib.pyplot as plt
         fp = stickslip.ForcedParams(stickslip.Params(), force=0.2, omega=0.8)
-        d = stickslip.forced_basins(fp, nx=8, ny=6)
-        ax = plot.forced_basins(d, 8, 6)
-        self.assertEqual(len(ax.texts), len(d["attractors"]))
+        d = stickslip.basins(fp, nx=8, ny=6)
+        ax = d.plot()
+        self.assertEqual(len(ax.texts), len(d.attractors))
+        mesh = ax.collections[0].get_array()
+        np.testing.assert_array_equal(np.ma.filled(mesh, -1).ravel(), d.attractor)  # x fastest
+        self.assertEqual(ax.get_xlabel(), plot.label("x"))
         plt.close(ax.figure)
 
     def test_basins_plot(self):
