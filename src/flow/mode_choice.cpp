@@ -3,9 +3,12 @@
 // slip-above for each, keep the candidates whose sticking contacts hold
 // within their static limits and whose slipping ones could not (Filippov's
 // rule contact by contact, all at once; the enumeration Acary & Brogliato
-// 2008, ch. 12, describe before the relay/LCP form).
+// 2008, ch. 12, describe before the relay/LCP form), and beyond a few
+// contacts least-index pivoting on the same conditions (PivotedMode).
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <unordered_set>
 
 #include "flow/engine.hpp"
 #include "numerics/tolerances.hpp"
@@ -61,7 +64,43 @@ int Enumerate(const System& s, const ModeSet& base, const std::vector<int>& on, 
   }
   return found;
 }
+
+// The mode a contact of `on` that is not consistent in m takes: stuck past
+// its limit it slips the way lambda points; slipping, it sticks where held
+// within its limit, else slips the way the held force points.
+Mode Flipped(const System& s, const ModeSet& m, int j, ConstState z) {
+  if (m.sticks(j)) return Released(s.StickForce(m, j, z));
+  ModeSet held = m;
+  held.set(j, Mode::kStick);
+  const double lambda = s.StickForce(held, j, z);
+  return std::abs(lambda) <= s.StaticLimit(j, z) ? Mode::kStick : Released(lambda);
+}
 }  // namespace
+
+ModeChoiceResult PivotedMode(const System& s, const ModeSet& base, const std::vector<int>& on,
+                             ConstState z) {
+  ModeChoiceResult r;
+  r.candidates = static_cast<int>(on.size());
+  r.mode = base;
+  for (int c : on) r.mode.set(c, Mode::kStick);
+  const long q = r.candidates, cap = 3 * q * q + 3;
+  std::unordered_set<std::string> seen;
+  std::string key(on.size(), ' ');
+  for (long flips = 0; flips <= cap; ++flips) {
+    const auto bad =
+        std::find_if(on.begin(), on.end(), [&](int c) { return !Consistent(s, r.mode, c, z); });
+    if (bad == on.end()) {
+      r.choice = ModeChoice::kPivoted;
+      r.consistent = 1;
+      return r;
+    }
+    for (size_t k = 0; k < on.size(); ++k) key[k] = static_cast<char>(r.mode[on[k]]);
+    if (!seen.insert(key).second) break;  // a cycle
+    r.mode.set(*bad, Flipped(s, r.mode, *bad, z));
+  }
+  r.choice = ModeChoice::kTooMany;
+  return r;
+}
 
 ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vector<int> on,
                                 ConstState z) {
@@ -71,11 +110,11 @@ ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vecto
   for (;;) {
     r.candidates = static_cast<int>(on.size());
     if (r.candidates > kMaxEnumeratedContacts) {
-      r.choice = ModeChoice::kTooMany;
-      r.mode = ContactOrder(s, base, on, z);
-      return r;
+      r = PivotedMode(s, base, on, z);
+      if (r.choice != ModeChoice::kPivoted) return r;
+    } else {
+      r.consistent = Enumerate(s, base, on, z, &r.mode);
     }
-    r.consistent = Enumerate(s, base, on, z, &r.mode);
     if (r.consistent != 1) {
       r.choice = r.consistent == 0 ? ModeChoice::kInconsistent : ModeChoice::kAmbiguous;
       r.mode = ContactOrder(s, base, on, z);
@@ -91,7 +130,7 @@ ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vecto
     }
     if (!grew) break;
   }
-  r.choice = ModeChoice::kUnique;
+  if (r.choice != ModeChoice::kPivoted) r.choice = ModeChoice::kUnique;
   return r;
 }
 

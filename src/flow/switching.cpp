@@ -146,7 +146,7 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
   if (!AlsoArriving(detected, &arrivals)) return false;
   for (int c : arrivals) OntoSurface(contacts_[c], z_);
   const ModeChoiceResult r = ConsistentMode(*s_, mode_, arrivals, z_);
-  if (r.choice != ModeChoice::kUnique) {
+  if (!Resolved(r.choice)) {
     const FlowStatus st = r.choice == ModeChoice::kAmbiguous      ? FlowStatus::kAmbiguousMode
                           : r.choice == ModeChoice::kInconsistent ? FlowStatus::kInconsistentMode
                                                                   : FlowStatus::kTooManyAtOnce;

@@ -15,7 +15,8 @@ enum class ModeChoice {
   kUnique,        ///< exactly one consistent candidate
   kAmbiguous,     ///< several consistent candidates (mode: the first)
   kInconsistent,  ///< none (mode: the contact-order rule's)
-  kTooMany,       ///< more than kMaxEnumeratedContacts candidates' contacts
+  kTooMany,       ///< more than kMaxEnumeratedContacts, and pivoting found no consistent set
+  kPivoted,       ///< more than kMaxEnumeratedContacts: the consistent set pivoting found
 };
 template <>
 struct EnumNames<ModeChoice> {
@@ -24,11 +25,15 @@ struct EnumNames<ModeChoice> {
       {ModeChoice::kAmbiguous, "ambiguous"},
       {ModeChoice::kInconsistent, "inconsistent"},
       {ModeChoice::kTooMany, "too-many"},
+      {ModeChoice::kPivoted, "pivoted"},
   };
 };
+/// A choice the flow takes: the one consistent set, or the one pivoting found.
+inline bool Resolved(ModeChoice c) { return c == ModeChoice::kUnique || c == ModeChoice::kPivoted; }
 
-/// At most this many contacts are enumerated at once (3^12 candidates).
-constexpr int kMaxEnumeratedContacts = 12;
+/// At most this many contacts are enumerated at once (3^8 candidates); more
+/// are resolved by pivoting (PivotedMode).
+constexpr int kMaxEnumeratedContacts = 8;
 
 struct ModeChoiceResult {
   ModeChoice choice = ModeChoice::kUnique;
@@ -46,9 +51,20 @@ struct ModeChoiceResult {
 /// |lambda_j| > StaticLimit_j pointing to its side (lambda_j > 0: below).
 /// A sticking contact outside `on` whose lambda leaves its limit in the
 /// chosen mode joins the candidates and the enumeration is repeated. One
-/// contact alone gives ModeAfterArrival's mode.
+/// contact alone gives ModeAfterArrival's mode. More than
+/// kMaxEnumeratedContacts contacts are resolved by PivotedMode instead.
 ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vector<int> on,
                                 ConstState z);
+
+/// The consistency conditions of ConsistentMode solved by least-index
+/// pivoting (Murty 1974's rule for the LCP, on the three modes of each
+/// contact; docs/theory.md, "Modes as sets"): from every contact of `on`
+/// stuck, the lowest contact whose mode is not consistent takes the mode its
+/// force points to, until none is left: kPivoted with that set, whether or
+/// not another consistent set exists. A set met twice, or more flips than
+/// 3 q^2 + 3 for q contacts, is kTooMany with the last set.
+ModeChoiceResult PivotedMode(const System& s, const ModeSet& base, const std::vector<int>& on,
+                             ConstState z);
 
 /// Mode m at a start z, with every sticking contact that sits on its static
 /// limit (to kEventRounding) while the stick force moves out,
