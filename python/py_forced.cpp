@@ -1,7 +1,7 @@
 // The forced oscillator in the Python module (issue 20, item 6):
 // x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
 // Parameter enum (ForcedAxis), and simulate_forced, forced_orbit and
-// find_forced_orbits (branches: py_forced_branch.cpp), each without the GIL with
+// find_forced_orbits (branches: py_orbit_branch.cpp), each without the GIL with
 // Ctrl-C polled by the library's cancel hooks (py_common.hpp, Interrupt).
 #include "py_forced.hpp"
 
@@ -255,7 +255,6 @@ void BindForcedTypes(py::module_& m) {
 
 void BindForced(py::module_& m) {
   BindForcedTypes(m);
-  BindForcedBranch(m);
   BindChaos(m);
   m.def("simulate_forced", &SimulateForced, py::arg("params"), py::arg("x0") = 0.0,
         py::arg("xdot0") = py::none(), py::arg("t_end") = 100.0, py::arg("dt") = 0.01,
