@@ -153,7 +153,7 @@ void BindForced(py::module_& m);  // py_forced.cpp
 void BindRestart(py::module_& m);
 void BindBatch(py::module_& m);        // py_batch.cpp: orbits()
 void BindSystemBatch(py::module_& m);  // py_system_batch.cpp: orbits(system, ...) (after BindBatch)
-void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits() (after BindForced)
+void BindOrbitBranch(py::module_& m);  // py_orbit_branch.cpp: continue_orbits, continue_doubled
 void BindSystems(py::module_& m);      // py_systems.cpp: ChainParams, CouplingParams (issue 32)
 void BindSystemRuns(py::module_& m);   // py_system_runs.cpp: simulate_system, steady_sliding
 void BindSystemOrbit(py::module_& m);  // py_system_orbit.cpp: periodic_orbit(s)(system, ...)

@@ -31,7 +31,6 @@ void BindForcedTypes(py::module_& m) {
                             "A parameter of the oscillators, the one lens: the belt's, then the "
                             "forcing's (force, omega). Functions take a member or its name.");
   for (const auto& e : EnumNames<Parameter>::kTable) axis.value(e.name, e.value);
-  m.attr("ForcedAxis") = axis;  // its older name
   py::enum_<BranchStatus>(m, "BranchStatus", "How a branch ended (every system's).")
       .value("reached_end", BranchStatus::kReachedEnd)
       .value("unbounded", BranchStatus::kUnbounded)
@@ -64,7 +63,6 @@ void BindForcedTypes(py::module_& m) {
 
 void BindForced(py::module_& m) {
   BindForcedTypes(m);
-  BindForcedBranch(m);
   BindChaos(m);
 }
 

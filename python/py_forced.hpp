@@ -1,5 +1,4 @@
-// Shared pieces of the forced oscillator's bindings (py_forced.cpp,
-// py_forced_branch.cpp, py_chaos.cpp).
+// Shared pieces of the forced oscillator's bindings (py_forced.cpp, py_chaos.cpp).
 #pragma once
 
 #include <optional>
@@ -21,7 +20,6 @@ LyapunovOptions IterateOptions(LyapunovOptions o, std::optional<int> transient,
                                std::optional<int> keep, std::optional<double> rtol,
                                std::optional<double> atol);
 
-void BindForcedBranch(py::module_& m);  // py_forced_branch.cpp
-void BindChaos(py::module_& m);         // py_chaos.cpp
+void BindChaos(py::module_& m);  // py_chaos.cpp
 
 }  // namespace stickslip::python

@@ -137,7 +137,6 @@ void BindOptions(py::module_& m) {
       .value("strobe", SimulationSection::kStrobe)
       .value("exit", SimulationSection::kExit)
       .value("none", SimulationSection::kNone);
-  m.attr("ForcedSection") = m.attr("SimulationSection");  // its older name
   Options<FlowOptions>(m, "FlowOptions", "Integrator settings of every run.")
       .def_readwrite("rtol", &FlowOptions::rtol, "relative tolerance (1e-11)")
       .def_readwrite("atol", &FlowOptions::atol, "absolute tolerance (1e-13)")

@@ -1,7 +1,8 @@
 // The one branch driver in the Python module: continue_orbits(system, ...)
-// for the belt (Params) and the forced oscillator (ForcedParams) alike, on a
-// stroboscopic, stick-exit or x' = 0 section, without the GIL and with Ctrl-C
-// (docs/library.md, "Python").
+// (also continue_branch) for any system, on a stroboscopic, stick-exit or
+// x' = 0 section, without the GIL and with Ctrl-C (docs/library.md, "Python").
+#include "py_orbit_branch.hpp"
+
 #include <pybind11/complex.h>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -10,27 +11,14 @@
 #include <complex>
 #include <memory>
 
-#include "py_common.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/model/forced.hpp"
 #include "stickslip/model/model.hpp"
 
 namespace stickslip::python {
-
-namespace {
-
-struct PyOrbitBranch {
-  BranchStatus status = BranchStatus::kStartFailed;
-  std::string message, parameter;
-  py::array p, state, period, sticks, exits, crossings, lo, hi, multipliers, stable, label;
-  std::vector<py::tuple> special;  // (label, p, description)
-  int jumps = 0, evaluations = 0;
-  double seconds = 0;
-};
-
-}  // namespace
 
 std::unique_ptr<System> SystemOf(const py::object& system) {
   if (auto several = SeveralMassSystemOf(system)) return several;  // py_systems.cpp
@@ -102,10 +90,14 @@ py::array Matrix(const std::vector<std::vector<T>>& rows, py::ssize_t cols) {
   return std::move(a);
 }
 
-PyOrbitBranch Convert(const OrbitBranch& b, const System& s, int j) {
+}  // namespace
+
+PyOrbitBranch ConvertBranch(const OrbitBranch& b, const System& s, int j, const py::object& system,
+                            double from, double to) {
   PyOrbitBranch out;
   out.status = b.status, out.message = b.message, out.parameter = s.ParameterName(j);
   out.jumps = b.jumps, out.evaluations = b.evaluations, out.seconds = b.seconds;
+  for (int i = 0; i < s.dimension(); ++i) out.state_names.push_back(s.StateName(i));
   std::vector<double> p, period;
   std::vector<int> sticks, exits, crossings;
   std::vector<bool> stable;
@@ -131,30 +123,76 @@ PyOrbitBranch Convert(const OrbitBranch& b, const System& s, int j) {
   out.multipliers = Matrix(mu, static_cast<py::ssize_t>(k));
   for (const OrbitRow& r : b.special)
     out.special.push_back(py::make_tuple(Name(r.label), r.p, r.description));
+  out.special_points = SpecialOrbits(b, s, j, system, from, to);
   return out;
 }
 
-PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& parameter,
-                               const Eigen::VectorXd& state, double to, const std::string& section,
-                               int m, std::optional<int> turns, double max_amplitude,
-                               std::optional<double> max_step, std::optional<double> rtol,
-                               std::optional<double> atol, int contact) {
-  const std::unique_ptr<System> s = SystemOf(system);
-  const int j = s->ParameterIndex(parameter);
-  if (j < 0) throw InvalidArgument("parameter = '" + parameter + "' is no parameter of the system");
-  if (state.size() != s->dimension())
-    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
-                          std::to_string(s->dimension()));
-  OrbitBranchOptions o;
+int ParameterOf(const py::object& system, const System& s, const std::string& name) {
+  const bool forced = py::isinstance<ForcedParams>(system);
+  if (forced || py::isinstance<Params>(system)) {  // the lens: one of the law's (or the forcing's)
+    const ParameterAxis axis(name);                // unknown: InvalidArgument naming it
+    const LawKind law =
+        forced ? system.cast<const ForcedParams&>().base.law : system.cast<const Params&>().law;
+    if (const std::string e = AxisError(axis, law, forced); !e.empty()) throw InvalidArgument(e);
+  }
+  const int j = s.ParameterIndex(name);
+  if (j < 0) throw InvalidArgument("parameter = '" + name + "' is no parameter of the system");
+  return j;
+}
+
+OrbitBranchOptions BranchOptionsOf(const py::object& system, double width, double max_amplitude,
+                                   std::optional<double> max_step, std::optional<double> rtol,
+                                   std::optional<double> atol) {
+  // The forced oscillator's own tolerances (rtol = atol = 1e-12), as ss_continue --force's.
+  OrbitBranchOptions o = py::isinstance<ForcedParams>(system)
+                             ? OrbitBranchOptions(ForcedModel::FlowDefaults())
+                             : OrbitBranchOptions();
   o.shooting.flow = Solver(o.shooting.flow, rtol, atol, py::none(), py::none());
   o.max_amplitude = max_amplitude;
-  const double width = std::abs(to - s->ParameterValue(j));
   if (max_step) {
     if (!(*max_step > 0) || !std::isfinite(*max_step))
       throw InvalidArgument("max_step = " + Repr(*max_step) + " must be a finite number > 0");
     o.palc.ds_max = *max_step * width;  // a share of the range, as ss_continue's --max_step
     o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   }
+  return o;
+}
+
+namespace {
+
+// "(x, x', ...)" with every digit.
+std::string TupleText(const Eigen::VectorXd& z) {
+  std::string out;
+  for (Eigen::Index i = 0; i < z.size(); ++i) out += (i ? ", " : "(") + Repr(z[i]);
+  return out + ")";
+}
+
+// A parameter's name, or a Parameter member's (the lens of the belt and the forced oscillator).
+std::string NameOf(const py::object& parameter) {
+  if (py::isinstance<py::str>(parameter)) return parameter.cast<std::string>();
+  if (py::isinstance<Parameter>(parameter))
+    return ParameterAxis(parameter.cast<Parameter>()).name();
+  throw py::type_error("parameter must be a str or a Parameter, not " +
+                       py::repr(parameter).cast<std::string>());
+}
+
+PyOrbitBranch ContinueOrbitsPy(const py::object& system, const py::object& parameter_name,
+                               const Eigen::VectorXd& state, double to, const std::string& section,
+                               int m, std::optional<int> turns, double max_amplitude,
+                               std::optional<double> max_step, std::optional<double> rtol,
+                               std::optional<double> atol, int contact) {
+  const std::unique_ptr<System> s = SystemOf(system);
+  const int j = ParameterOf(system, *s, NameOf(parameter_name));
+  if (state.size() != s->dimension())
+    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
+                          std::to_string(s->dimension()));
+  if (!state.allFinite()) throw InvalidArgument("state = " + TupleText(state) + " must be finite");
+  if (m < 1 || m > kMaxPeriodMultiple)  // as the apps bound it
+    throw InvalidArgument("m = " + std::to_string(m) + " must lie in [1, " +
+                          std::to_string(kMaxPeriodMultiple) + "]");
+  const double from = s->ParameterValue(j);
+  OrbitBranchOptions o =
+      BranchOptionsOf(system, std::abs(to - from), max_amplitude, max_step, rtol, atol);
   const PoincareSection sec = SectionOf(*s, section, state, m, turns, contact);
   const FlowPoint guess = SectionStart(*s, sec, state);
   Interrupt interrupt;
@@ -165,7 +203,7 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
     b = ContinueOrbits(*s, j, guess, sec, to, o);
   }
   interrupt.RaiseIfInterrupted();
-  return Convert(b, *s, j);
+  return ConvertBranch(b, *s, j, system, from, to);
 }
 
 }  // namespace
@@ -173,11 +211,13 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const std::string& para
 void BindOrbitBranch(py::module_& m) {
   using B = PyOrbitBranch;
   py::class_<B> b(m, "OrbitBranch",
-                  "Result of continue_orbits(): one row per orbit, the special points among "
-                  "them (label LP, PD, NS or SL).");
+                  "Result of continue_orbits() (continue_branch(), continue_doubled()): one row "
+                  "per orbit, the special points among them (label LP, PD, NS, GR, ...), each "
+                  "whole in special_points (SpecialOrbit).");
   b.def_readonly("status", &B::status)
       .def_readonly("message", &B::message)
       .def_readonly("parameter", &B::parameter)
+      .def_readonly("state_names", &B::state_names, "the names of state's columns")
       .def_readonly("p", &B::p)
       .def_readonly("state", &B::state)
       .def_readonly("period", &B::period)
@@ -189,7 +229,9 @@ void BindOrbitBranch(py::module_& m) {
       .def_readonly("multipliers", &B::multipliers)
       .def_readonly("stable", &B::stable)
       .def_readonly("label", &B::label)
-      .def_readonly("special", &B::special)
+      .def_readonly("special", &B::special, "(label, p, description) of each special point")
+      .def_readonly("special_points", &B::special_points,
+                    "each special point as a SpecialOrbit: continue_doubled() starts at a PD one")
       .def_readonly("jumps", &B::jumps)
       .def_readonly("evaluations", &B::evaluations)
       .def_readonly("seconds", &B::seconds)
@@ -197,7 +239,6 @@ void BindOrbitBranch(py::module_& m) {
         return "<OrbitBranch " + x.parameter + ", " + std::to_string(x.p.size()) + " rows, " +
                Name(x.status) + ">";
       });
-  m.attr("ForcedBranchStatus") = m.attr("BranchStatus");  // its older name
   const py::object none = py::none();
   m.def("continue_orbits", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
         py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
@@ -210,7 +251,8 @@ void BindOrbitBranch(py::module_& m) {
         "periods (default m) on a forced system; 'xdot-falling': the "
         "belt's x' = 0; `contact`: the stick-exit section's contact), continued in `parameter` "
         "from its value in `system` to `to`, with the "
-        "LP, PD, NS and SL points located (the one branch driver, C++ ContinueOrbits).");
+        "LP, PD, NS, GR, ... points located (the one branch driver, C++ ContinueOrbits); "
+        "max_step: a share of |to - p| (default: 0.02 absolute).");
   // The same under the belt's name (issue 31 item 8), after the belt's
   // continue_branch(params, param, from_, to, ...).
   m.def("continue_branch", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
@@ -219,6 +261,7 @@ void BindOrbitBranch(py::module_& m) {
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
         "continue_branch(system, parameter, state, to, section, ...): continue_orbits', for "
         "any system.");
+  BindSpecialOrbit(m);  // SpecialOrbit, continue_doubled (py_special_orbit.cpp)
 }
 
 }  // namespace stickslip::python

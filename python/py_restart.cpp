@@ -20,8 +20,8 @@ namespace {
 ContinuationOptions BranchOptions(const LabelledPoint& lp, std::optional<ParameterAxis> param,
                                   std::optional<double> to) {
   if (lp.forced)
-    throw InvalidArgument(lp.label + " is a point of a forced run: continue_forced(point." +
-                          "forced_params(), axis, from_, to, *point.state, m=point.m)");
+    throw InvalidArgument(lp.label + " is a point of a forced run: continue_branch(point." +
+                          "forced_params(), parameter, (*point.state, 0.0), to, m=point.m)");
   ContinuationOptions o;
   o.param = param.value_or(lp.param);
   const ParameterRange r = RangeFromPoint(lp.params, o.param);
@@ -96,8 +96,8 @@ void BindRestart(py::module_& m) {
             fp.base = lp.params, fp.force = lp.force, fp.omega = lp.omega;
             return fp;
           },
-          "A forced run's point: its ForcedParams; with state (the stroboscopic point at "
-          "theta = 0) and m it starts continue_forced there.")
+          "A forced run's point: its ForcedParams; with (*state, 0.0) (the stroboscopic point "
+          "at theta = 0) and m it starts continue_branch there.")
       .def("options", &BranchOptions, py::arg("param") = none, py::arg("to") = none,
            "ContinuationOptions of a new branch in param (default: the run's) from the point "
            "to the far end of default_range (or to), with the run's solver: "

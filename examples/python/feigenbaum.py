@@ -19,9 +19,8 @@ def scene(force, omega):
 def cascade(force, hi=0.8, lo=0.5, depth=6):
     """The Omegas of the first PD of the m = 1, 2, 4, ... branches below hi."""
     s = stickslip.stroboscopic(scene(force, hi), 0.0, 0.25, transient=200, keep=1)
-    b = stickslip.continue_forced(scene(force, hi), stickslip.Parameter.omega, hi, lo,
-                                  x_guess=s["x"][0], xdot_guess=s["xdot"][0], max_step=0.01,
-                                  rtol=1e-13, atol=1e-13)
+    b = stickslip.continue_branch(scene(force, hi), "omega", [s["x"][0], s["xdot"][0], 0.0], lo,
+                                  max_step=0.01, rtol=1e-13, atol=1e-13)
     pds, m = [], 1
     for _ in range(depth):
         pd = next((q for q in b.special_points if q.label == "PD" and q.m == m), None)

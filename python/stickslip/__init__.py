@@ -25,4 +25,4 @@ from . import _display as _display_module, plot  # noqa: E402
 from ._physical import continue_physical  # noqa: E402,F401
 
 _display_module.install()  # reprs, _repr_html_, to_pandas, to_tsv, save, restart
-plot.install(_core)  # Branch.plot, Chart.plot, Basins.plot, AttractorBasins.plot, ForcedBranch.plot
+plot.install(_core)  # Branch.plot, Chart.plot, Basins.plot, AttractorBasins.plot, OrbitBranch.plot

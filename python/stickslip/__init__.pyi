@@ -121,12 +121,10 @@ class Parameter(enum.IntEnum):
     k5 = 8
     force = 9
     omega = 10
-ForcedAxis: type[Parameter]
 class SimulationSection(enum.IntEnum):
     strobe = 0
     exit = 1
     none = 2
-ForcedSection: type[SimulationSection]
 class BranchStatus(enum.IntEnum):
     reached_end = 0
     unbounded = 1
@@ -244,31 +242,6 @@ class ForcedParams:
     def __init__(self, params: Params, force: float = 0.0, omega: float = 1.0) -> None: ...
     def validation_error(self) -> str: ...
 
-class ForcedBranch:
-    axis: Parameter
-    status: BranchStatus
-    message: str
-    p: Array
-    x0: Array
-    xdot0: Array
-    m: Array
-    sticks: Array
-    crossings: Array
-    x_min: Array
-    x_max: Array
-    xdot_min: Array
-    xdot_max: Array
-    stable: Array
-    multipliers: Array
-    special: List[Tuple[str, float, float]]
-    special_points: List[ForcedSpecialPoint]
-    jumps: int
-    evaluations: int
-    seconds: float
-    def __getitem__(self, key: str) -> Any: ...
-    def to_pandas(self) -> Any: ...
-    def to_tsv(self, path: Any) -> None: ...
-    def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True) -> Any: ...
 
 class OrbitBranch:
     status: BranchStatus
@@ -285,33 +258,39 @@ class OrbitBranch:
     multipliers: Array
     stable: Array
     label: Array
+    state_names: List[str]
     special: List[Tuple[str, float, str]]
+    special_points: List[SpecialOrbit]
     jumps: int
     evaluations: int
     seconds: float
+    def to_pandas(self) -> Any: ...
+    def to_tsv(self, path: Any) -> None: ...
+    def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True) -> Any: ...
 
-ForcedBranchStatus: type[BranchStatus]
 
-class ForcedSpecialPoint:
+class SpecialOrbit:
     label: str
+    lab: str
     description: str
-    axis: Parameter
-    params: ForcedParams
+    parameter: str
     p: float
-    x0: float
-    xdot0: float
-    run_from: float
-    run_to: float
-    m: int
+    state: Array
+    period: float
     sticks: int
+    exits: int
     crossings: int
-    x_min: float
-    x_max: float
-    xdot_min: float
-    xdot_max: float
+    lo: Array
+    hi: Array
     multipliers: Array
     stable: bool
-    def __getitem__(self, key: str) -> Any: ...
+    section: str
+    m: int
+    turns: int
+    contact: int
+    run_from: float
+    run_to: float
+    system: Any
 
 class Trajectory:
     t: Array
@@ -539,20 +518,15 @@ def simulate(system: SystemLike, state: Any, t_end: float = 100.0, dt: float = 0
              max_rows: int = 1000000, rtol: Optional[float] = None, atol: Optional[float] = None,
              section: SimulationSection = SimulationSection.none,
              period: Optional[float] = None) -> SystemTrajectory: ...
-def continue_forced(params: ForcedParams, axis: Parameter | str, from_: float, to: float,
-                    x_guess: Optional[float] = None, xdot_guess: Optional[float] = None,
-                    m: int = 1, max_amplitude: float = 1e3, max_step: Optional[float] = None,
-                    rtol: Optional[float] = None,
-                    atol: Optional[float] = None) -> ForcedBranch: ...
-def continue_orbits(system: SystemLike, parameter: str, state: Any, to: float,
+def continue_orbits(system: SystemLike, parameter: Parameter | str, state: Any, to: float,
                     section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
                     max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None, atol: Optional[float] = None,
                     contact: int = 0) -> OrbitBranch: ...
-def continue_doubled(point: ForcedSpecialPoint, lo: Optional[float] = None,
+def continue_doubled(point: SpecialOrbit, lo: Optional[float] = None,
                      hi: Optional[float] = None, max_amplitude: float = 1e3,
                      max_step: Optional[float] = None, rtol: Optional[float] = None,
-                     atol: Optional[float] = None) -> ForcedBranch: ...
+                     atol: Optional[float] = None) -> OrbitBranch: ...
 def stroboscopic(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
                  transient: Optional[int] = None, keep: Optional[int] = None,
                  max_amplitude: float = 1e6, rtol: Optional[float] = None,
@@ -587,7 +561,7 @@ def continue_branch(params: Params, param: Optional[Parameter | str] = None, fro
                     progress: Optional[Callable[[int, float, str, bool], Any]] = None
                     ) -> Branch: ...
 @overload
-def continue_branch(system: SystemLike, parameter: str, state: Any, to: float,
+def continue_branch(system: SystemLike, parameter: Parameter | str, state: Any, to: float,
                     section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
                     max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None, atol: Optional[float] = None,

@@ -8,6 +8,8 @@ import html
 import os
 import tempfile
 
+import numpy as np
+
 from . import _core
 
 
@@ -216,21 +218,43 @@ def _trajectory_summary(t):
             ("switches", t.switches), ("x range", "[%.6g, %.6g]" % (t.x_min, t.x_max))]
 
 
-def _forced_pandas(b):
+def _column_name(state_name):
+    """A state component's name as a column's: x' is xdot."""
+    return state_name.replace("'", "dot")
+
+
+def state_columns(b):
+    """An OrbitBranch's state components as column names (x, xdot, theta, ...)."""
+    return [_column_name(n) for n in b.state_names]
+
+
+def orbit_columns(b):
+    """An OrbitBranch's rows by column: the parameter, the section point (x0,
+    xdot0, theta0, ...), period, sticks, exits, crossings, each tangent
+    component's least and greatest value on the orbit (x_min, x_max, xdot_min,
+    ...), stable, label and the largest |multiplier|."""
+    names = state_columns(b)
+    cols = {b.parameter: b.p}
+    cols.update(("%s0" % n, b.state[:, i]) for i, n in enumerate(names))
+    cols.update(period=b.period, sticks=b.sticks, exits=b.exits, crossings=b.crossings)
+    for i in range(b.hi.shape[1]):
+        cols[names[i] + "_min"], cols[names[i] + "_max"] = b.lo[:, i], b.hi[:, i]
+    mult = np.abs(b.multipliers)
+    cols.update(stable=b.stable, label=b.label,
+                mult_max=mult.max(axis=1) if mult.shape[1] else np.full(len(b.p), np.nan))
+    return cols
+
+
+def _orbit_branch_pandas(b):
     import pandas as pd
-    mult = b.multipliers
-    df = pd.DataFrame({_name(b.axis): b.p, "x0": b.x0, "xdot0": b.xdot0, "m": b.m,
-                       "sticks": b.sticks, "crossings": b.crossings, "x_min": b.x_min,
-                       "x_max": b.x_max, "xdot_min": b.xdot_min, "xdot_max": b.xdot_max,
-                       "stable": b.stable,
-                       "mult_max": abs(mult).max(axis=1) if len(mult) else []})
+    df = pd.DataFrame(orbit_columns(b))
     df.insert(df.shape[1], "pt", range(1, len(df) + 1))
     return df
 
 
-def _forced_summary(b):
-    return [("status", _status(b)), ("points", len(b.p)),
-            ("special", ", ".join("%s %s=%.6g" % (q.label, _name(b.axis), q.p)
+def _orbit_branch_summary(b):
+    return [("status", _status(b)), ("parameter", b.parameter), ("points", len(b.p)),
+            ("special", ", ".join("%s %s=%.6g" % (q.lab, b.parameter, q.p)
                                   for q in b.special_points) or "none")]
 
 
@@ -267,7 +291,7 @@ def install():
     _generic(_core.Chart, "Chart", _chart_summary, _chart_pandas)
     _generic(_core.Basins, "Basins", _basins_summary, _basins_pandas)
     _generic(_core.Trajectory, "Trajectory", _trajectory_summary, _trajectory_pandas)
-    _generic(_core.ForcedBranch, "ForcedBranch", _forced_summary, _forced_pandas)
+    _generic(_core.OrbitBranch, "OrbitBranch", _orbit_branch_summary, _orbit_branch_pandas)
     _generic(_core.PeriodicOrbits, "PeriodicOrbits", _orbits_summary)
     _generic(_core.Orbit, "Orbit", lambda o: [
         ("kind", _name(o.kind)), ("period", "%.10g" % o.period),

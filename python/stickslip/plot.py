@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 
+from . import _display
+
 KIND_COLOR = {"stick-slip": "#0072b2", "pure-slip": "#d55e00", "equilibrium": "#606060"}
 KIND_TITLE = {"stick-slip": "stick-slip", "pure-slip": "pure slip", "equilibrium": "steady sliding"}
 LINE_WIDTH = 2.0
@@ -249,12 +251,25 @@ def orbit_diagram(d, axis="omega", y="x", ax=None):
     return ax
 
 
-def forced_branch(b, y="x_max", ax=None, labels=True):
-    """A ForcedBranch (resonance curve): stable solid, unstable dashed, special points labelled."""
+def _special_value(b, q, y):
+    """Column y of orbit_columns() at a SpecialOrbit q of the OrbitBranch b."""
+    for i, n in enumerate(_display.state_columns(b)):
+        if y == n + "0":
+            return q.state[i]
+        if y in (n + "_min", n + "_max") and i < len(q.hi):
+            return (q.lo if y.endswith("_min") else q.hi)[i]
+    if y == "mult_max":
+        return np.abs(q.multipliers).max() if len(q.multipliers) else math.nan
+    return getattr(q, y, math.nan)
+
+
+def orbit_branch(b, y="x_max", ax=None, labels=True):
+    """An OrbitBranch (continue_branch, continue_doubled; e.g. a resonance
+    curve): column y of orbit_columns() (x_max: b.hi[:, 0]) against the
+    parameter, stable solid, unstable dashed, special points labelled (PD1)."""
     ax = _axes(ax)
-    axis = str(b.axis).split(".")[-1]
-    mult = np.abs(np.asarray(b.multipliers)).max(axis=1) if len(b.p) else np.array([])
-    runs = stability_runs(b.p, getattr(b, y), b.stable, None, b.m, mult,
+    cols = _display.orbit_columns(b)
+    runs = stability_runs(b.p, cols[y], b.stable, None, None, cols["mult_max"],
                           breaks=[q.p for q in b.special_points])
     seen = set()
     for ps, ys, st, _ in runs:
@@ -262,23 +277,23 @@ def forced_branch(b, y="x_max", ax=None, labels=True):
                 linestyle="-" if st else UNSTABLE_DASH,
                 label=None if st in seen else ("stable" if st else "unstable"))
         seen.add(st)
-    pts = [(q.p, getattr(q, y), q.label) for q in b.special_points]
+    pts = [(q.p, _special_value(b, q, y), q.lab) for q in b.special_points]
     if pts:
         ax.plot([q[0] for q in pts], [q[1] for q in pts], "o", color="black", ms=5, zorder=5)
         if labels:
             for x, v, lab in pts:
                 ax.annotate(lab, (x, v), xytext=(4, 4), textcoords="offset points",
                             fontsize="small")
-    ax.set_xlabel(label(axis))
+    ax.set_xlabel(label(b.parameter))
     ax.set_ylabel(label(y))
     ax.legend(loc="best", fontsize="small")
     return ax
 
 
 def install(core):
-    """b.plot(...) on Branch, Chart, Basins, AttractorBasins and ForcedBranch."""
+    """b.plot(...) on Branch, Chart, Basins, AttractorBasins and OrbitBranch."""
     core.Branch.plot = branch
     core.Chart.plot = chart
     core.Basins.plot = basins
     core.AttractorBasins.plot = attractor_basins
-    core.ForcedBranch.plot = forced_branch
+    core.OrbitBranch.plot = orbit_branch

@@ -123,17 +123,18 @@ class EveryResultArrayReadOnly(unittest.TestCase):
         w = "omega"
         s = stickslip.stroboscopic(fp, 0.0, 0.25, transient=100, keep=2)
         fo = stickslip.periodic_orbit(fp, [s["x"][0], s["xdot"][0], 0.0])
-        branch = stickslip.continue_forced(fp, w, 0.62, 0.617, x_guess=fo.x0, xdot_guess=fo.xdot0)
+        branch = stickslip.continue_branch(stickslip.ForcedParams(sp, force=0.3, omega=0.62), w,
+                                           fo.start, 0.617, max_step=0.02)
         pd = [q for q in branch.special_points if q.label == "PD"][0]
         return {
             "basins": lambda: (stickslip.basins(p, nx=3, ny=3), stickslip.basins(fp, nx=2, ny=2)),
             "chart": lambda: (stickslip.chart(p), stickslip.chart(
                 stickslip.CouplingParams(law=stickslip.Params("coulomb", mu_s=0.8, mu_k=0.52)),
                 "mu_k", 0.5, 0.55, "beta", 0.015, 0.025, seed_lines=1)),
-            "continue_branch": lambda: stickslip.continue_branch(p, "v", from_=0.3, to=0.5),
+            "continue_branch": lambda: (stickslip.continue_branch(p, "v", from_=0.3, to=0.5),
+                                        branch),
             "continue_doubled": lambda: stickslip.continue_doubled(pd, lo=pd.p - 0.003,
                                                                    hi=pd.p + 0.003),
-            "continue_forced": lambda: branch,
             "continue_orbits": lambda: stickslip.continue_orbits(
                 fp, "omega", fo.start, 0.615, max_step=0.5),
             "continue_physical": lambda: stickslip.continue_physical(

@@ -27,8 +27,7 @@ class Switch(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         o = settled_orbit(0.7)
-        cls.branch = stickslip.continue_forced(stribeck(0.7), stickslip.Parameter.omega, 0.7,
-                                               0.6, x_guess=o.x0, xdot_guess=o.xdot0,
+        cls.branch = stickslip.continue_branch(stribeck(0.7), "omega", o.start, 0.6,
                                                max_step=0.04, rtol=1e-13, atol=1e-13)
 
     def test_doubled_branch_is_the_attractor_of_the_map(self):
@@ -36,29 +35,33 @@ class Switch(unittest.TestCase):
         self.assertTrue(pds, [q.label for q in self.branch.special_points])
         pd = pds[0]
         self.assertEqual((pd.m, pd.run_from, pd.run_to), (1, 0.7, 0.6))
-        self.assertAlmostEqual(pd.params.omega, pd.p, delta=0)
+        self.assertEqual((pd.section, pd.lab, pd.parameter), ("stroboscopic", "PD1", "omega"))
+        self.assertAlmostEqual(pd.system.omega, pd.p, delta=0)
         self.assertAlmostEqual(pd.multipliers[0].real, -1, delta=1e-6)
         d = stickslip.continue_doubled(pd, lo=pd.p - 0.006, hi=pd.p + 0.006, max_step=0.33,
                                        rtol=1e-13, atol=1e-13)
         self.assertEqual(d.status, stickslip.BranchStatus.reached_end, d.message)
-        self.assertTrue(np.all(d.m == 2))
+        self.assertTrue(all(q.m == 2 for q in d.special_points))
+        self.assertTrue(np.allclose(d.period, 2 * 2 * math.pi / d.p, rtol=1e-12))  # m = 2
         self.assertLess(d.p[0], pd.p)  # supercritical: it opens toward lower Omega
         # A stable row away from the PD: 300 periods of the plain map from a
         # point off the orbit end on the row's 2-cycle.
         k = int(np.argmax(np.abs(d.p - pd.p) * d.stable))
         self.assertTrue(d.stable[k])
-        s = stickslip.stroboscopic(stribeck(d.p[k]), d.x0[k] + 1e-3, d.xdot0[k], transient=300,
-                                   keep=2)
-        gap = min(math.hypot(x - d.x0[k], xd - d.xdot0[k]) for x, xd in zip(s["x"], s["xdot"]))
+        x0, xdot0 = d.state[k, 0], d.state[k, 1]
+        s = stickslip.stroboscopic(stribeck(d.p[k]), x0 + 1e-3, xdot0, transient=300, keep=2)
+        gap = min(math.hypot(x - x0, xd - xdot0) for x, xd in zip(s["x"], s["xdot"]))
         self.assertLess(gap, 1e-8)
         self.assertGreater(abs(s["x"][0] - s["x"][1]), 1e-4)  # two points: a 2-cycle
 
     def test_only_a_period_doubling_switches(self):
         others = [q for q in self.branch.special_points if q.label != "PD"]
         pd = [q for q in self.branch.special_points if q.label == "PD"][0]
-        if others:
-            with self.assertRaisesRegex(stickslip.InvalidArgument, "not a period doubling"):
-                stickslip.continue_doubled(others[0])
+        self.assertTrue(others)  # a CR and two LP before the PD
+        for q in others:
+            with self.assertRaisesRegex(stickslip.InvalidArgument, r"label %s \(%s\) is not a "
+                                        r"period doubling" % (q.label, q.lab)):
+                stickslip.continue_doubled(q)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "must bracket"):
             stickslip.continue_doubled(pd, lo=pd.p + 0.001, hi=pd.p + 0.01)
 
@@ -156,14 +159,14 @@ class Bounds(unittest.TestCase):
             stickslip.stroboscopic(stribeck(0.7), math.nan)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "xdot0 = inf"):
             stickslip.stroboscopic(stribeck(0.7), 0.0, math.inf)
-        omega = stickslip.Parameter.omega
         cases = (({"m": 0}, r"m = 0 must lie in \[1, 1000\]"),
                  ({"max_amplitude": 0}, "max_amplitude = 0"),
                  ({"max_amplitude": math.nan}, "max_amplitude = nan"),
-                 ({"x_guess": math.nan}, "x_guess = nan"))
+                 ({"state": [math.nan, 0.25, 0.0]}, r"state = \(nan, 0.25, 0.0\)"))
         for kw, message in cases:
+            kw = {"state": [0.0, 0.25, 0.0], **kw}
             with self.assertRaisesRegex(stickslip.InvalidArgument, message):
-                stickslip.continue_forced(stribeck(0.7), omega, 0.7, 0.6, **kw)
+                stickslip.continue_branch(stribeck(0.7), "omega", to=0.6, **kw)
 
 
 if __name__ == "__main__":

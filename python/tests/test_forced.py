@@ -97,16 +97,16 @@ class Forced(unittest.TestCase):
 
     def test_continuation_matches_den_hartog_on_every_row(self):
         p = den_hartog_params(1.5)
-        o = stickslip.forced_orbit(p, 0.5, 0.0)
-        b = stickslip.continue_forced(p, stickslip.ForcedAxis.omega, 1.5, 2.5, x_guess=o.x0,
-                                      xdot_guess=o.xdot0)
+        o = stickslip.periodic_orbit(p, [0.5, 0.0, 0.0])
+        b = stickslip.continue_branch(p, stickslip.Parameter.omega, o.start,
+                                      2.5, max_step=0.02)
         self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
-        self.assertIs(stickslip.ForcedBranchStatus, stickslip.BranchStatus)  # the older name
         self.assertGreater(len(b.p), 20)
         self.assertAlmostEqual(b.p[-1], 2.5, delta=1e-12)
         X = np.array([den_hartog(0.3, 1, w) for w in b.p])
-        np.testing.assert_allclose(b.x_max, X, atol=1e-9, rtol=0)
-        self.assertTrue(np.all(b.sticks == 0) and np.all(b.m == 1))
+        np.testing.assert_allclose(b.hi[:, 0], X, atol=1e-9, rtol=0)
+        # m = 1: one forcing period per row
+        self.assertTrue(np.all(b.sticks == 0) and np.allclose(b.period, 2 * math.pi / b.p))
         self.assertEqual(b.multipliers.shape, (len(b.p), 2))
 
     def test_any_parameter_by_member_or_name_is_the_axis(self):
@@ -114,17 +114,15 @@ class Forced(unittest.TestCase):
         # held), its axis by name, against his closed form X(mu_k) on every row.
         p = den_hartog_params(2.0)
         V = 1 / (1 - 4.0)
-        b = stickslip.continue_forced(p, "mu_k", 0.3, 0.05, x_guess=V, xdot_guess=0.01)
+        b = stickslip.continue_branch(p, "mu_k", [V, 0.01, 0.0], 0.05, max_step=0.02)
         self.assertEqual(b.status, stickslip.BranchStatus.reached_end)
-        self.assertEqual(b.axis, stickslip.Parameter.mu_k)
-        self.assertIs(stickslip.ForcedAxis, stickslip.Parameter)  # the older name
+        self.assertEqual(b.parameter, stickslip.Parameter.mu_k.name)
         X = np.array([den_hartog(mu, 1, 2.0) for mu in b.p])
-        np.testing.assert_allclose(b.x_max, X, atol=1e-9, rtol=0)
+        np.testing.assert_allclose(b.hi[:, 0], X, atol=1e-9, rtol=0)
         with self.assertRaisesRegex(ValueError, "'mu_m' does not apply"):
-            stickslip.continue_forced(p, stickslip.Parameter.mu_m, 0.2, 0.1, x_guess=V,
-                                      xdot_guess=0.01)
+            stickslip.continue_branch(p, stickslip.Parameter.mu_m, [V, 0.01, 0.0], 0.1)
         with self.assertRaisesRegex(ValueError, "unknown parameter 'gamma'"):
-            stickslip.continue_forced(p, "gamma", 0.2, 0.1, x_guess=V, xdot_guess=0.01)
+            stickslip.continue_branch(p, "gamma", [V, 0.01, 0.0], 0.1)
         # The belt's functions take the same lens, and refuse the forcing's.
         belt = stickslip.Params()
         self.assertEqual(stickslip.default_range(belt, stickslip.Parameter.v), (0.05, 0.5))

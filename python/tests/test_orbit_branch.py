@@ -2,6 +2,7 @@
 stroboscopic section (Den Hartog's closed form) and on the belt's x' = 0 section
 (its grazing against ss_continue's GR, computed by the belt's own driver)."""
 import math
+import os
 import unittest
 
 import numpy as np
@@ -47,6 +48,34 @@ class OrbitBranchTest(unittest.TestCase):
         gr = [s.p for s in r.special if s.kind == stickslip.SpecialKind.grazing]
         self.assertEqual(len(gr), 1)
         self.assertAlmostEqual(p, gr[0], delta=1e-9)
+
+    def test_special_orbits_carry_their_run_and_system(self):
+        # The GR point whole (SpecialOrbit): its row of the branch, its run,
+        # and the run's system at its p, of the type it came as.
+        b = stickslip.continue_orbits(stickslip.Params(v=0.42), "v", [0.55, 0.0], 0.38,
+                                      section="xdot-falling")
+        q, = b.special_points
+        self.assertEqual((q.label, q.lab, q.parameter, q.section, q.m, q.turns),
+                         ("GR", "GR1", "v", "xdot-falling", 1, 0))
+        self.assertEqual((q.run_from, q.run_to), (0.42, 0.38))
+        self.assertEqual(b.special[0], (q.label, q.p, q.description))
+        row = int(np.flatnonzero(b.label == "GR")[0])
+        np.testing.assert_array_equal(q.state, b.state[row])
+        np.testing.assert_array_equal(q.hi, b.hi[row])
+        self.assertEqual(type(q.system), stickslip.Params)
+        self.assertEqual(q.system.v, q.p)
+        with self.assertRaisesRegex(ValueError, r"label GR \(GR1\) is not a period doubling"):
+            stickslip.continue_doubled(q)
+        models = os.path.join(os.path.dirname(__file__), "..", "..", "studies", "models")
+        start = [0.4 - 2 * 0.05 * 0.25, 0.25]  # the seed's stick exit
+        for system in (stickslip.System.from_file(os.path.join(models, "belt.ini")),
+                       stickslip.ChainParams(blocks=1, law=stickslip.Params(), kc=0.0)):
+            b = stickslip.continue_orbits(system, "v", start, 0.5, section="stick-exit")
+            q, = b.special_points
+            self.assertEqual((q.lab, q.section, q.contact, q.m), ("GR1", "stick-exit", 0, 1))
+            self.assertEqual(type(q.system), type(system))
+            self.assertEqual(q.system["v"] if type(system) is stickslip.System else q.system.v,
+                             q.p)
 
     def test_bad_input_names_the_argument(self):
         bp = stickslip.Params(v=0.42)

@@ -138,7 +138,7 @@ if __name__ == "__main__":
 
 
 class ForcedRestart(unittest.TestCase):
-    """A forced run's labelled point (ss_continue --force) starts continue_forced there.
+    """A forced run's labelled point (ss_continue --force) starts continue_branch there.
     Reference: Den Hartog's closed form (1931) of the non-stop orbit, X = sqrt(V^2 - (mu U)^2),
     V = A / (1 - W^2), U = sin(pi / W) / (W (1 + cos(pi / W)))."""
 
@@ -159,15 +159,15 @@ class ForcedRestart(unittest.TestCase):
                 lp.options("beta")  # a belt branch from a forced point
             with self.assertRaisesRegex(ValueError, "forced run"):
                 lp.chart_options()  # nor a belt chart (its axis is no belt parameter)
-            b = stickslip.continue_forced(lp.forced_params(), stickslip.Parameter.force,
-                                          lp.force, 2.0, *lp.state, m=lp.m)
+            b = stickslip.continue_branch(lp.forced_params(), stickslip.Parameter.force,
+                                          (*lp.state, 0.0), 2.0, m=lp.m, max_step=0.02)
         self.assertGreater(len(b.p), 10)
         self.assertAlmostEqual(b.p[0], 1.0, delta=1e-12)
-        self.assertAlmostEqual(b.x0[0], lp.state[0], delta=1e-9)
+        self.assertAlmostEqual(b.state[0, 0], lp.state[0], delta=1e-9)
         w, mu = lp.omega, 0.3
         u = math.sin(math.pi / w) / (w * (1 + math.cos(math.pi / w)))
         worst = 0.0
-        for a, x_max in zip(b.p, b.x_max):
+        for a, x_max in zip(b.p, b.hi[:, 0]):
             v = a / (1 - w * w)
             worst = max(worst, abs(x_max - math.sqrt(v * v - (mu * u) ** 2)) / x_max)
         self.assertLess(worst, 1e-9)

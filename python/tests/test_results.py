@@ -220,12 +220,12 @@ class Figures(unittest.TestCase):
         # Den Hartog's floor: a resonance curve (test_forced checks its values).
         p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
                                                     v=0.0), force=1.0, omega=1.5)
-        o = stickslip.forced_orbit(p, 0.5, 0.0)
-        b = stickslip.continue_forced(p, stickslip.Parameter.omega, 1.5, 2.5, x_guess=o.x0,
-                                      xdot_guess=o.xdot0)
+        o = stickslip.periodic_orbit(p, [0.5, 0.0, 0.0])
+        b = stickslip.continue_branch(p, stickslip.Parameter.omega, o.start, 2.5,
+                                      max_step=0.02)
         self.assertIn("points %d" % len(b.p), repr(b))
         df = b.to_pandas()
-        np.testing.assert_array_equal(df["x_max"].to_numpy(), b.x_max)
+        np.testing.assert_array_equal(df["x_max"].to_numpy(), b.hi[:, 0])
         self.assertEqual(list(df["pt"][:2]), [1, 2])
         ax = b.plot()
         self.assertTrue(ax.get_lines())
