@@ -32,9 +32,11 @@ class ChainField final : public TaylorField {
     mode_ = m;
     const int n = c->blocks();
     laws_.resize(n);
+    inverse_mass_.resize(n);
     cubic_ = true;
     for (int i = 0; i < n; ++i) {
       laws_[i].Set(c->params().blocks[i].law);
+      inverse_mass_[i] = 1 / c->params().blocks[i].m;
       cubic_ = cubic_ && laws_[i].law == LawKind::kCubic;
     }
     sticking_ = m.Sticking();
@@ -71,7 +73,7 @@ class ChainField final : public TaylorField {
   int sticking_ = 0;
   bool cubic_ = false;
   std::vector<LawSeries> laws_;
-  std::vector<double> center_, rest_;
+  std::vector<double> center_, rest_, inverse_mass_;
 };
 
 void ChainField::StateNext(int i, int k, TaylorRow* c) {
@@ -91,8 +93,9 @@ void ChainField::StateNext(int i, int k, TaylorRow* c) {
   double spring = b.k * x[k];
   if (i > 0) spring += p.kc * (x[k] - c[2 * i - 2][k]);
   if (i + 1 < chain_->blocks()) spring += p.kc * (x[k] - c[2 * i + 2][k]);
-  x[k + 1] = xd[k] / (k + 1);
-  xd[k + 1] = (-b.c * xd[k] - spring + sigma * law.mu[k]) / (b.m * (k + 1));
+  const double inv = systems::kReciprocals.r[k];
+  x[k + 1] = xd[k] * inv;
+  xd[k + 1] = (-b.c * xd[k] - spring + sigma * law.mu[k]) * (inverse_mass_[i] * inv);
 }
 
 // Phi' = J Phi, column by column: J's slip row of block i has
@@ -102,6 +105,7 @@ void ChainField::PhiNext(int i, int k, const TaylorLayout& l, TaylorRow* c) {
   const Block& b = p.blocks[i];
   const int n = l.n;
   const LawSeries& law = laws_[i];
+  const double inv = systems::kReciprocals.r[k], inv_m = inverse_mass_[i] * inv;
   for (int col = 0; col < l.tangent; ++col) {
     TaylorRow* phi = c + l.phi() + col * n;
     double* px = phi[2 * i];
@@ -113,8 +117,8 @@ void ChainField::PhiNext(int i, int k, const TaylorLayout& l, TaylorRow* c) {
     double spring = b.k * px[k];
     if (i > 0) spring += p.kc * (px[k] - phi[2 * i - 2][k]);
     if (i + 1 < chain_->blocks()) spring += p.kc * (px[k] - phi[2 * i + 2][k]);
-    px[k + 1] = pv[k] / (k + 1);
-    pv[k + 1] = (-b.c * pv[k] - Cauchy(law.dmu, pv, k) - spring) / (b.m * (k + 1));
+    px[k + 1] = pv[k] * inv;
+    pv[k + 1] = (-b.c * pv[k] - Cauchy(law.dmu, pv, k) - spring) * inv_m;
   }
 }
 

@@ -12,12 +12,30 @@
 
 namespace stickslip::systems {
 
-/// The Cauchy product's coefficient k of a and b.
+/// The Cauchy product's coefficient k of a and b, in four partial sums
+/// (independent chains of additions, which the processor overlaps).
 inline double Cauchy(const double* a, const double* b, int k) {
-  double s = 0;
-  for (int j = 0; j <= k; ++j) s += a[j] * b[k - j];
-  return s;
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int j = 0;
+  for (; j + 3 <= k; j += 4) {
+    s0 += a[j] * b[k - j];
+    s1 += a[j + 1] * b[k - j - 1];
+    s2 += a[j + 2] * b[k - j - 2];
+    s3 += a[j + 3] * b[k - j - 3];
+  }
+  for (; j <= k; ++j) s0 += a[j] * b[k - j];
+  return (s0 + s1) + (s2 + s3);
 }
+
+/// 1 / (k + 1) for k < kTaylorRowSize, so that a recurrence multiplies
+/// where it would divide (a division costs several multiplications).
+struct Reciprocals {
+  double r[kTaylorRowSize];
+  constexpr Reciprocals() : r() {
+    for (int k = 0; k < kTaylorRowSize; ++k) r[k] = 1.0 / (k + 1);
+  }
+};
+inline constexpr Reciprocals kReciprocals{};
 
 /// mu(s(t)) and mu'(s(t)) of one law: set s[0..k], then Next(k).
 struct LawSeries {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/law_series.hpp"
 #include "model_file/model_file.hpp"
 #include "model_file/model_system.hpp"
 
@@ -101,8 +102,7 @@ void ModelField::Cauchy(const Entry& e, const double* q, int k, double* s) const
     *s += e.value * q[k];
     return;
   }
-  const double* J = rows_[e.node];
-  for (int j = 0; j <= k; ++j) *s += J[j] * q[k - j];
+  *s += systems::Cauchy(rows_[e.node], q, k);
 }
 
 // Coefficient k+1 of Phi = dz/dz0 (column-major) from J's series 0..k.

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/law_series.hpp"
+
 namespace stickslip::model_file {
 
 int Tape::Add(const Node& n) {
@@ -22,18 +24,18 @@ int Tape::Add(const Node& n) {
 
 namespace {
 
-// sum_{j=1..k} j u_j w_{k-j}
+// sum_{j=1..k} j u_j w_{k-j}, in two partial sums (common/law_series.hpp)
 double Weighted(int k, const double* u, const double* w) {
-  double s = 0;
-  for (int j = 1; j <= k; ++j) s += j * u[j] * w[k - j];
-  return s;
+  double s0 = 0, s1 = 0;
+  int j = 1;
+  for (; j + 1 <= k; j += 2) s0 += j * u[j] * w[k - j], s1 += (j + 1) * u[j + 1] * w[k - j - 1];
+  if (j <= k) s0 += j * u[j] * w[k - j];
+  return s0 + s1;
 }
 
 // sum_{j=lo..k} u_j w_{k-j}
 double Cauchy(int lo, int k, const double* u, const double* w) {
-  double s = 0;
-  for (int j = lo; j <= k; ++j) s += u[j] * w[k - j];
-  return s;
+  return systems::Cauchy(u + lo, w, k - lo);
 }
 
 }  // namespace
