@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks the numbers of docs/studies.md against the runs that print them.
+"""Checks the numbers of docs/studies.md and docs/systems.md against the runs that print them.
 
 Usage: check_study_numbers.py BUILD_DIR [--slow | --all] [--list] [--keep DIR [--reuse]]
        check_study_numbers.py --self-test
@@ -35,6 +35,7 @@ import study_numbers
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PAGE = os.path.join(ROOT, "docs", "studies.md")
+PAGES = [PAGE, os.path.join(ROOT, "docs", "systems.md")]
 
 
 class Run:
@@ -179,7 +180,7 @@ def check(runs, flat, tiers, listing):
         how = how[0] if how else "digits"
         where = re.sub(r"\s+", " ", passage)
         if where not in flat or quoted not in where:
-            print("studies.md: passage not found (or number not in it): %r" % passage)
+            print("docs: passage not found (or number not in it): %r" % passage)
             bad += 1
             continue
         if study_numbers.RUNS[run][0] not in tiers:
@@ -210,8 +211,7 @@ def self_test():
              ("0.0131", (0.0150, 0.001), "err", True), ("0.0131", (0.0160, 0.001), "err", False),
              ("67", 66.96, "rounded", True), ("67", 66.4, "rounded", False)]
     bad = [c for c in cases if agrees(c[0], c[1], c[2]) != c[3]]
-    page = open(PAGE).read()
-    flat = re.sub(r"\s+", " ", page)
+    flat = " ".join(re.sub(r"\s+", " ", open(p).read()) for p in PAGES)
     edited = flat.replace("v_GR = 0.3957902888", "v_GR = 0.3957902889")
     if check({}, flat, set(), False)[1] != 0 or check({}, edited, set(), False)[1] != 1:
         bad.append("the edited page")
@@ -226,7 +226,7 @@ def main():
         sys.exit(__doc__)
     tiers = {"slow"} if "--slow" in sys.argv else {"fast"}
     tiers = {"fast", "slow"} if "--all" in sys.argv else tiers
-    flat = re.sub(r"\s+", " ", open(PAGE).read())
+    flat = " ".join(re.sub(r"\s+", " ", open(p).read()) for p in PAGES)
     keep = sys.argv[sys.argv.index("--keep") + 1] if "--keep" in sys.argv else None
     if keep:
         os.makedirs(keep, exist_ok=True)

@@ -66,5 +66,12 @@ run "$build/ss_basin" --study studies/chain2_basin.ini --out "$fig/chain2_basin"
 run "$build/ss_orbit_diagram" --study studies/chain2.ini --from 0.05 --to 0.45 --n 200 \
   --transient 300 --keep 100 --out "$fig/chain2_od"
 run "$build/ss_chart" --study studies/brake_chart.ini --out "$fig/brake_chart"
+# The other studies of several masses: two unequal blocks, the Coulomb chain
+# (steady sliding, a center, and its trajectory into step) and ten blocks.
+run "$build/ss_continue" --study studies/chain2_asym.ini --out "$fig/chain2_asym"
+for study in chain2_coulomb chain10; do
+  run "$build/ss_continue" --study "studies/$study.ini" --out "$fig/$study"
+  run "$build/ss_simulate" --study "studies/$study.ini" --out "$fig/$study"
+done
 run "$build/ss_chart" --study studies/chain2_chart.ini --out "$fig/chain2_chart"
 du -sh "$fig"

@@ -73,6 +73,13 @@ RUNS = {
     "stribeck_chart": (FAST, "ss_chart", study("stribeck_chart"), ""),
     "quintic_chart": (FAST, "ss_chart", study("quintic_chart"), "plots"),
     "leine_chart": (FAST, "ss_chart", study("leine_chart"), "plots"),
+    # docs/systems.md: the chain studies.
+    "chain2_kc02": (FAST, "ss_continue", study("chain2", "--set", "kc=0.2"), ""),
+    "chain2_asym": (FAST, "ss_continue", study("chain2_asym"), ""),
+    "chain2_coulomb": (FAST, "ss_continue", study("chain2_coulomb"), ""),
+    "chain2_coulomb_sim": (FAST, "ss_simulate", study("chain2_coulomb"), ""),
+    "chain10": (FAST, "ss_continue", study("chain10"), ""),
+    "chain10_sim": (FAST, "ss_simulate", study("chain10"), ""),
 }
 
 
@@ -783,4 +790,82 @@ CHECKS += [
      S("GR1", "v")),
     ("took 0.4 s (12 one-parameter runs)", "12", "ns_seed_chart",
      lambda r: r.printed(r"from (\d+) one-parameter runs")),
+]
+
+
+# docs/systems.md: the chain studies (two unequal blocks, the Coulomb chain, ten blocks).
+def branch_row(r, branch, col, k=0):
+    return float([row for row in r.table("branch.tsv") if row["branch"] == branch][k][col])
+
+
+def in_step_from(r, col):
+    """The first stick exit from which x1 = x2 (1e-9) at every exit (section.tsv)."""
+    rows = r.table("section.tsv")
+    same = [abs(float(q["x1"]) - float(q["x2"])) < 1e-9 for q in rows]
+    k = next(i for i in range(len(rows)) if all(same[i:]))
+    return float(rows[k][col])
+
+
+def late_range(r, k, t0=400):
+    xs = [float(q["x1"]) for q in r.table("trajectory.tsv") if float(q["t"]) >= t0]
+    return (min(xs), max(xs))[k]
+
+
+def exit_gap(r):
+    ts = [float(q["t"]) for q in r.table("section.tsv")]
+    return ts[-1] - ts[-3]
+
+
+KC02 = ("w = √(1 + 2kc) = 1.18322, a stable orbit with the blocks' extremes equal, of period "
+        "5.4337 at\nv = 0.3, and branch 1 ending at SL, v = 0.39521")
+ASYM_HEAD = ["steady sliding: 102 rows, reached-end", "branch 1: 41 rows, sequence-ended",
+             "branch 2: 62 rows, sequence-ended"]
+ASYM_ROW = ("its x1 runs over [0.00924, 0.55471], the heavier block's x2 over\n"
+            "[0.15314, 0.42347]. The period is 4.89608")
+COULOMB_SIM = ("6307 rows to t = 600 (complete), 153 section points (exit), 153 sticks, 0 crossings; "
+               "x1 in [0.06072007950742299, 0.53241128440428]")
+CHAIN10_SIM = ("2210 rows to t = 300 (complete), 353 section points (exit), 355 sticks, 1 crossings; "
+               "x1 in [-0.13623802826185943, 0.6698721218397475]")
+for line, run in [(l, "chain2_asym") for l in ASYM_HEAD] + [(COULOMB_SIM, "chain2_coulomb_sim"),
+                                                             (CHAIN10_SIM, "chain10_sim")]:
+    for k, q in enumerate(re.findall(NUM, line)):
+        CHECKS.append((line, q, run, (lambda h, k: lambda r: quoted_line(r, h, k))(line[:12], k)))
+CHECKS += [
+    (KC02, "1.18322", "chain2_kc02", lambda r: r.described("HB1", r"w = ([0-9.]+)")),
+    (KC02, "5.4337", "chain2_kc02", lambda r: branch_row(r, "1", "period")),
+    (KC02, "0.39521", "chain2_kc02", S("SL1", "v")),
+    ("d = 0, v = 0.44095855184409716, whatever m2", "0.44095855184409716", "chain2_asym",
+     S("HB1", "v")),
+    ("w = 1.31481 and 0.87823; the run reports the first", "1.31481", "chain2_asym",
+     lambda r: r.described("HB1", r"w = ([0-9.]+)")),
+    (ASYM_ROW, "0.00924", "chain2_asym", lambda r: branch_row(r, "1", "x1_min")),
+    (ASYM_ROW, "0.55471", "chain2_asym", lambda r: branch_row(r, "1", "x1_max")),
+    (ASYM_ROW, "0.15314", "chain2_asym", lambda r: branch_row(r, "1", "x2_min")),
+    (ASYM_ROW, "0.42347", "chain2_asym", lambda r: branch_row(r, "1", "x2_max")),
+    (ASYM_ROW, "4.89608", "chain2_asym", lambda r: branch_row(r, "1", "period")),
+    ("a complex pair of modulus 0.92316", "0.92316", "chain2_asym",
+     lambda r: branch_row(r, "1", "mult_max")),
+    ("ends at GR1, v = 0.40082", "0.40082", "chain2_asym", S("GR1", "v")),
+    ("ends at GR2, v = 0.14195", "0.14195", "chain2_asym", S("GR2", "v")),
+    ("From section point 75 on, at\n  t = 357.83", "75", "chain2_coulomb_sim",
+     lambda r: in_step_from(r, "n")),
+    ("From section point 75 on, at\n  t = 357.83", "357.83", "chain2_coulomb_sim",
+     lambda r: in_step_from(r, "t")),
+    ("(x1 from 0.07639 to 0.52361 after t = 400)", "0.07639", "chain2_coulomb_sim",
+     lambda r: late_range(r, 0)),
+    ("(x1 from 0.07639 to 0.52361 after t = 400)", "0.52361", "chain2_coulomb_sim",
+     lambda r: late_range(r, 1)),
+    ("Their exits come 6.3558900892 apart", "6.3558900892", "chain2_coulomb_sim", exit_gap),
+    ("steady sliding: 101 rows, reached-end ss_continue: note: no stick-slip orbit: no stick phase",
+     "101", "chain2_coulomb", lambda r: r.rows()),
+    ("largest real part 0 in every row", "0", "chain2_coulomb",
+     lambda r: max(abs(float(q["max_real"])) for q in r.table("branch.tsv"))),
+    ("x1 =\n  x2 = μk = 0.3)", "0.3", "chain2_coulomb",
+     lambda r: max(float(q[c]) for q in r.table("branch.tsv") for c in ("x1_0", "x2_0"))),
+    ("The reported w = 1.51954 is w_6", "1.51954", "chain10",
+     lambda r: r.described("HB1", r"w = ([0-9.]+)")),
+    ("in 32 exits after 3000 time units (the closest 0.223)", "0.223", "chain10",
+     lambda r: float(re.search(r"closest ([0-9.]+)", r.meta("branch.tsv", "orbit")).group(1))),
+    ("The blocks stick about 1.2 times per time unit", "1.2", "chain10_sim",
+     lambda r: r.printed(r"(\d+) sticks") / 300),
 ]
