@@ -1,9 +1,9 @@
 // Basins and orbit diagrams of any system on a Poincare section in the Python
 // module (issue 31 items 6 and 8, issue 32 item 3; basin/attractors.hpp,
 // chaos/orbit_diagram.hpp): basins(system, ...) and orbit_diagram(system,
-// parameter, ...) for ChainParams and CouplingParams (the belt's and the
-// forced oscillator's keep theirs), and attractor_basins(system, ...) for
-// every system, the belt included. Results are bound types of read-only arrays;
+// parameter, ...) for every system but the belt's Params (its basins and the
+// forced oscillator's orbit_diagram keep their own), and attractor_basins(system,
+// ...) for every system, the belt included. Results are bound types of read-only arrays;
 // the classification runs without the GIL, with Ctrl-C.
 #include <pybind11/stl.h>
 
@@ -64,6 +64,7 @@ StartSlice Slice(const System& s, const std::optional<std::pair<std::string, std
   if (names) g.components = {Component(s, names->first), Component(s, names->second)};
   const bool clock = s.clocks() > 0;
   const SteadyState rest = clock ? SteadyState() : SteadySliding(s);
+  if (base) CheckedState(s, *base, "base");  // its size, every value finite
   g.base = base ? *base : (rest.found ? rest.z : Eigen::VectorXd::Zero(s.dimension()));
   const double half = clock ? 1.5 : 1.0;
   for (int c = 0; c < 2; ++c) {

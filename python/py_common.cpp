@@ -131,13 +131,14 @@ py::array ReadOnlyRows(const std::vector<double>& flat, int cols) {
   return std::move(a);
 }
 
-Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state) {
+Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state,
+                             const std::string& name) {
   if (state.size() != s.dimension())
-    throw InvalidArgument("state: " + std::to_string(state.size()) + " values, the system has " +
+    throw InvalidArgument(name + ": " + std::to_string(state.size()) + " values, the system has " +
                           std::to_string(s.dimension()));
   for (Eigen::Index i = 0; i < state.size(); ++i)
     if (!std::isfinite(state[i]))
-      throw InvalidArgument("state[" + std::to_string(i) + "] = " + Repr(state[i]) +
+      throw InvalidArgument(name + "[" + std::to_string(i) + "] = " + Repr(state[i]) +
                             " must be finite");
   return state;
 }

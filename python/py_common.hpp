@@ -174,13 +174,16 @@ std::unique_ptr<System> ModelSystemOf(const py::object& system);
 // a stick exit is that of `contact`.
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
                           std::optional<int> turns, int contact = 0);
+// The section a name gives; none: a clock's stroboscopic one, else the stick exit.
+std::string SectionOrDefault(const System& s, const std::optional<std::string>& section);
 // The start point on `section` at `state`: Filippov's mode, and on a stick
 // exit its contact in the slip it leaves into (the way lambda points).
 FlowPoint SectionStart(const System& s, const PoincareSection& section,
                        const Eigen::VectorXd& state);
 
 // `state` as a system's: its size, every value finite (InvalidArgument naming it).
-Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state);
+Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state,
+                             const std::string& name = "state");
 // The flow's options for a system: the forced oscillator's own tolerances
 // (rtol = atol = 1e-12, ForcedModel::FlowDefaults), else the flow's; rtol and
 // atol over them.

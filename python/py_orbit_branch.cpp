@@ -31,6 +31,10 @@ std::unique_ptr<System> SystemOf(const py::object& system) {
                        ", not Params, ForcedParams, ChainParams, CouplingParams or System");
 }
 
+std::string SectionOrDefault(const System& s, const std::optional<std::string>& section) {
+  return section.value_or(s.clocks() == 1 ? "stroboscopic" : "stick-exit");
+}
+
 PoincareSection SectionOf(const System& s, const std::string& name, const Eigen::VectorXd& z, int m,
                           std::optional<int> turns, int contact) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
@@ -43,7 +47,7 @@ PoincareSection SectionOf(const System& s, const std::string& name, const Eigen:
                           ": a forced system's stick-exit section only, >= 1");
   if (name == "stroboscopic") {
     if (s.clocks() != 1)
-      throw InvalidArgument("section: 'stroboscopic' needs a forced system (ForcedParams)");
+      throw InvalidArgument("section: 'stroboscopic' needs a system with one forcing clock");
     return PoincareSection::Stroboscopic(s, z, m);
   }
   if (name == "stick-exit")  // m exits close the orbit; a clock turns `turns` (m) times
@@ -177,8 +181,9 @@ std::string NameOf(const py::object& parameter) {
 }
 
 PyOrbitBranch ContinueOrbitsPy(const py::object& system, const py::object& parameter_name,
-                               const Eigen::VectorXd& state, double to, const std::string& section,
-                               int m, std::optional<int> turns, double max_amplitude,
+                               const Eigen::VectorXd& state, double to,
+                               const std::optional<std::string>& section, int m,
+                               std::optional<int> turns, double max_amplitude,
                                std::optional<double> max_step, std::optional<double> rtol,
                                std::optional<double> atol, int contact) {
   const std::unique_ptr<System> s = SystemOf(system);
@@ -193,7 +198,8 @@ PyOrbitBranch ContinueOrbitsPy(const py::object& system, const py::object& param
   const double from = s->ParameterValue(j);
   OrbitBranchOptions o =
       BranchOptionsOf(system, std::abs(to - from), max_amplitude, max_step, rtol, atol);
-  const PoincareSection sec = SectionOf(*s, section, state, m, turns, contact);
+  const PoincareSection sec =
+      SectionOf(*s, SectionOrDefault(*s, section), state, m, turns, contact);
   const FlowPoint guess = SectionStart(*s, sec, state);
   Interrupt interrupt;
   o.palc.cancelled = [&] { return interrupt(); };
@@ -241,14 +247,15 @@ void BindOrbitBranch(py::module_& m) {
       });
   const py::object none = py::none();
   m.def("continue_orbits", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
-        py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
+        py::arg("state"), py::arg("to"), py::arg("section") = none, py::arg("m") = 1,
         py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
         "The branch of periodic orbits of `system` (Params: the belt; ForcedParams: the forced "
         "oscillator; ChainParams, CouplingParams: the several-mass systems) through the one near "
         "`state` (x, x'[, theta]) on `section` "
-        "('stroboscopic': m forcing periods; 'stick-exit': the m-th exit, after `turns` forcing "
-        "periods (default m) on a forced system; 'xdot-falling': the "
+        "('stroboscopic': m forcing periods, the default with a clock; 'stick-exit': the m-th "
+        "exit, after `turns` forcing periods (default m) with a clock, the default without; "
+        "'xdot-falling': the "
         "belt's x' = 0; `contact`: the stick-exit section's contact), continued in `parameter` "
         "from its value in `system` to `to`, with the "
         "LP, PD, NS, GR, ... points located (the one branch driver, C++ ContinueOrbits); "
@@ -256,7 +263,7 @@ void BindOrbitBranch(py::module_& m) {
   // The same under the belt's name (issue 31 item 8), after the belt's
   // continue_branch(params, param, from_, to, ...).
   m.def("continue_branch", &ContinueOrbitsPy, py::arg("system"), py::arg("parameter"),
-        py::arg("state"), py::arg("to"), py::arg("section") = "stroboscopic", py::arg("m") = 1,
+        py::arg("state"), py::arg("to"), py::arg("section") = none, py::arg("m") = 1,
         py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
         "continue_branch(system, parameter, state, to, section, ...): continue_orbits', for "

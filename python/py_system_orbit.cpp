@@ -60,11 +60,6 @@ PySystemOrbit OrbitOf(const System& s, const PeriodicOrbit& r,
   return out;
 }
 
-// The section a name gives; none: a clock's stroboscopic one, else the stick exit.
-std::string SectionName(const System& s, const std::optional<std::string>& section) {
-  return section.value_or(s.clocks() == 1 ? "stroboscopic" : "stick-exit");
-}
-
 PySystemOrbit Orbit(const py::object& system, const Eigen::VectorXd& state,
                     const std::optional<std::string>& section, int m, std::optional<int> turns,
                     std::optional<double> rtol, std::optional<double> atol, int contact) {
@@ -73,7 +68,7 @@ PySystemOrbit Orbit(const py::object& system, const Eigen::VectorXd& state,
   const ShootingOptions o(FlowFor(system, rtol, atol));
   const std::string err = o.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
-  const PoincareSection sec = SectionOf(*s, SectionName(*s, section), z0, m, turns, contact);
+  const PoincareSection sec = SectionOf(*s, SectionOrDefault(*s, section), z0, m, turns, contact);
   const FlowPoint guess = SectionStart(*s, sec, z0);
   Interrupt interrupt;
   PeriodicOrbit r;
@@ -130,8 +125,8 @@ void BindSystemOrbit(py::module_& m) {
   py::class_<O>(m, "SystemOrbit",
                 "Result of periodic_orbit(system, state) and periodic_orbits(system): a periodic "
                 "orbit of any system, its section point `start` (the full state, a clock's phase "
-                "last), its `points` on the section over one period (a forced orbit of m forcing "
-                "periods: its m stroboscopic points), `turns` of the clock per period.")
+                "last), `points` (periodic_orbits: a forced orbit's m stroboscopic points; "
+                "periodic_orbit: its start), `turns` of the clock per period.")
       .def_readonly("status", &O::status)
       .def_readonly("message", &O::message)
       .def_readonly("start", &O::start)

@@ -266,7 +266,7 @@ class OrbitBranch:
     seconds: float
     def to_pandas(self) -> Any: ...
     def to_tsv(self, path: Any) -> None: ...
-    def plot(self, y: str = "x_max", ax: Any = None, labels: bool = True) -> Any: ...
+    def plot(self, y: Optional[str] = None, ax: Any = None, labels: bool = True) -> Any: ...
 
 
 class SpecialOrbit:
@@ -519,7 +519,7 @@ def simulate(system: SystemLike, state: Any, t_end: float = 100.0, dt: float = 0
              section: SimulationSection = SimulationSection.none,
              period: Optional[float] = None) -> SystemTrajectory: ...
 def continue_orbits(system: SystemLike, parameter: Parameter | str, state: Any, to: float,
-                    section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
+                    section: Optional[str] = None, m: int = 1, turns: Optional[int] = None,
                     max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None, atol: Optional[float] = None,
                     contact: int = 0) -> OrbitBranch: ...
@@ -562,7 +562,7 @@ def continue_branch(params: Params, param: Optional[Parameter | str] = None, fro
                     ) -> Branch: ...
 @overload
 def continue_branch(system: SystemLike, parameter: Parameter | str, state: Any, to: float,
-                    section: str = "stroboscopic", m: int = 1, turns: Optional[int] = None,
+                    section: Optional[str] = None, m: int = 1, turns: Optional[int] = None,
                     max_amplitude: float = 1e3, max_step: Optional[float] = None,
                     rtol: Optional[float] = None, atol: Optional[float] = None,
                     contact: int = 0) -> OrbitBranch: ...

@@ -263,12 +263,17 @@ def _special_value(b, q, y):
     return getattr(q, y, math.nan)
 
 
-def orbit_branch(b, y="x_max", ax=None, labels=True):
+def orbit_branch(b, y=None, ax=None, labels=True):
     """An OrbitBranch (continue_branch, continue_doubled; e.g. a resonance
-    curve): column y of orbit_columns() (x_max: b.hi[:, 0]) against the
-    parameter, stable solid, unstable dashed, special points labelled (PD1)."""
+    curve): column y of orbit_columns() (default the first component's
+    greatest value, x_max or x1_max: b.hi[:, 0]) against the parameter,
+    stable solid, unstable dashed, special points labelled (PD1)."""
     ax = _axes(ax)
     cols = _display.orbit_columns(b)
+    if y is None:
+        y = _display.state_columns(b)[0] + "_max"
+    if y not in cols:
+        raise KeyError("y = %r: an OrbitBranch has the columns %s" % (y, ", ".join(cols)))
     runs = stability_runs(b.p, cols[y], b.stable, None, None, cols["mult_max"],
                           breaks=[q.p for q in b.special_points])
     seen = set()

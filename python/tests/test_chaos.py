@@ -143,6 +143,10 @@ class Bounds(unittest.TestCase):
         for box in ((-math.inf, math.inf), (-1e308, 1e308), (0, math.nan)):
             with self.assertRaisesRegex(stickslip.InvalidArgument, "box"):
                 stickslip.basins(stribeck(0.7), nx=2, ny=2, x_range=box)
+        with self.assertRaisesRegex(stickslip.InvalidArgument, r"base\[2\] = nan must be finite"):
+            stickslip.basins(stribeck(0.7), nx=2, ny=2, base=[0.0, 0.0, math.nan])
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "base: 2 values, the system has 3"):
+            stickslip.basins(stribeck(0.7), nx=2, ny=2, base=[0.0, 0.0])
 
     def test_threads_are_capped_by_the_hardware(self):
         # threads=5000 started 5000 threads (under a memory limit: abort); now a pool

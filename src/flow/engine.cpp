@@ -130,7 +130,8 @@ void Engine::Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
   switched_at_.assign(k_, NAN);  // no allocation once warm (same k)
   if (rq.observer && rq.output_dt > 0) StartOutput(rq);
   if (rq.step_observer) rq.step_observer(t_, z_.data(), mode_);
-  RootRepeats stalls(Tolerances::kSwitchStalls);
+  // k contacts in step may each stick or leave in turn at one t (to rounding).
+  RootRepeats stalls(Tolerances::kSwitchStalls + 2 * k_);
   for (;;) {
     if (r.switches > flow_.options_.max_switches) {
       Fail(FlowStatus::kTooManySwitches,

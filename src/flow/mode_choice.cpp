@@ -107,12 +107,20 @@ ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vecto
   ModeChoiceResult r;
   std::sort(on.begin(), on.end());
   on.erase(std::unique(on.begin(), on.end()), on.end());
+  bool pivoted = false;
   for (;;) {
-    r.candidates = static_cast<int>(on.size());
-    if (r.candidates > kMaxEnumeratedContacts) {
+    const int q = static_cast<int>(on.size());
+    pivoted = false;
+    if (q > kMaxEnumeratedContacts) {  // pivoting; where it cycles, enumeration up to 12
       r = PivotedMode(s, base, on, z);
-      if (r.choice != ModeChoice::kPivoted) return r;
-    } else {
+      pivoted = r.choice == ModeChoice::kPivoted;
+      if (!pivoted && q > kMaxEnumeratedAfterCycle) {
+        r.mode = ContactOrder(s, base, on, z);
+        return r;
+      }
+    }
+    if (!pivoted) {
+      r.candidates = q;
       r.consistent = Enumerate(s, base, on, z, &r.mode);
     }
     if (r.consistent != 1) {
@@ -130,7 +138,7 @@ ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vecto
     }
     if (!grew) break;
   }
-  if (r.choice != ModeChoice::kPivoted) r.choice = ModeChoice::kUnique;
+  r.choice = pivoted ? ModeChoice::kPivoted : ModeChoice::kUnique;
   return r;
 }
 

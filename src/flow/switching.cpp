@@ -152,7 +152,9 @@ bool Engine::SwitchAtOnce(const std::vector<int>& roots) {
                                                                   : FlowStatus::kTooManyAtOnce;
     std::string what = Name(r.choice);
     what += " mode of " + std::to_string(r.candidates) + " contacts switching at once (" +
-            std::to_string(r.consistent) + " consistent)";
+            (r.choice == ModeChoice::kTooMany ? std::string("pivoting cycled")
+                                              : std::to_string(r.consistent) + " consistent") +
+            ")";
     return Fail(st, what + Place(t_, z_.data()));
   }
   if (rq_->stop_at_stick)

@@ -124,7 +124,8 @@ struct FixedTolerances {
   static constexpr int kTempFileAttempts = 100;
   // The flow (flow/engine.cpp): switches in a row at one t (to rounding)
   // before switching that does not advance t is a failure (a stick entered
-  // and left at once, a few contacts in turn; 8 as the forced flow had).
+  // and left at once, a few contacts in turn; 8 as the forced flow had),
+  // plus two per contact (k blocks in step, each switching in turn).
   static constexpr int kSwitchStalls = 8;
 
   // Orbit branches: two runs' switches within this share of the period of

@@ -102,5 +102,28 @@ TEST(Chain, SynchronizedBlocksRunTheSeedOrbit) {
   ASSERT_EQ(oc.multipliers.size(), 3u);
 }
 
+// Twenty identical blocks started in step stay in step (to rounding) on the
+// one block's motion: at every stick entry and exit they switch within
+// rounding of one instant, each in turn (the flow allows two switches per
+// contact at one t; eight in all stopped twelve blocks at t = 81).
+TEST(Chain, TwentyBlocksInStepRunTheOneBlocksMotion) {
+  Params p;
+  const Chain one(Uniform(1, p, 0)), twenty(Uniform(20, p, 0.5));
+  FlowRequest rq;
+  rq.t_max = 300;
+  Flow f1(one, Tight()), f20(twenty, Tight());
+  const FlowRun r1 = f1.Run(FlowPoint{0, Eigen::Vector2d(0.1, 0.0), ModeSet()}, rq);
+  Eigen::VectorXd z(40);
+  for (int i = 0; i < 20; ++i) z[2 * i] = 0.1, z[2 * i + 1] = 0.0;
+  const FlowRun r20 = f20.Run(FlowPoint{0, z, ModeSet()}, rq);
+  ASSERT_EQ(r1.status, FlowStatus::kTimeLimit) << r1.message;
+  ASSERT_EQ(r20.status, FlowStatus::kTimeLimit) << r20.message;
+  EXPECT_EQ(r20.sticks, 20 * r1.sticks);
+  for (int i = 0; i < 20; ++i) {
+    EXPECT_NEAR(r20.end.z[2 * i], r1.end.z[0], 1e-8) << i;
+    EXPECT_NEAR(r20.end.z[2 * i + 1], r1.end.z[1], 1e-8) << i;
+  }
+}
+
 }  // namespace
 }  // namespace stickslip::chain

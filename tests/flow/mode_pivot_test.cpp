@@ -209,6 +209,74 @@ TEST(ModePivot, SixteenBlocksStickAndLeaveAtOnce) {
   EXPECT_EQ(r.end.mode, ModeSet());
 }
 
+// The consistency conditions written out again (docs/theory.md, "Modes as
+// sets"), and every candidate of `on` tried: how many sets hold, the first.
+bool HoldsIn(const System& s, const ModeSet& m, int i, ConstState z) {
+  if (m.sticks(i)) return std::abs(s.StickForce(m, i, z)) <= s.StaticLimit(i, z);
+  ModeSet held = m;
+  held.set(i, Mode::kStick);
+  const double lambda = s.StickForce(held, i, z);
+  const Mode side = lambda > 0 ? Mode::kSlipBelow : Mode::kSlipAbove;
+  return std::abs(lambda) > s.StaticLimit(i, z) && m[i] == side;
+}
+int BruteForce(const System& s, const std::vector<int>& on, ConstState z, ModeSet* first) {
+  static constexpr Mode kAll[] = {Mode::kSlipAbove, Mode::kStick, Mode::kSlipBelow};
+  long total = 1;
+  for (size_t j = 0; j < on.size(); ++j) total *= 3;
+  int found = 0;
+  ModeSet m;
+  for (long code = 0; code < total; ++code) {
+    long c = code;
+    for (int i : on) m.set(i, kAll[c % 3]), c /= 3;
+    bool ok = true;
+    for (size_t j = 0; ok && j < on.size(); ++j) ok = HoldsIn(s, m, on[j], z);
+    if (ok && found++ == 0) *first = m;
+  }
+  return found;
+}
+
+// Past the enumeration's 8 contacts: 9 to 11 coupled blocks in random states,
+// the flow's choice (pivoting) against every candidate tried here.
+TEST(ModePivot, PastEightContactsFindsTheOneSet) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> x(-0.8, 0.8);
+  int unique = 0;
+  for (int k = 9; k <= 11; ++k)
+    for (double e : {-0.05, 0.2, 0.45, 0.8}) {
+      const MassCoupledK s(k, e);
+      for (int trial = 0; trial < (k == 11 ? 2 : 5); ++trial) {
+        std::vector<double> pos(k);
+        for (double& p : pos) p = x(rng);
+        const Eigen::VectorXd z = OnAll(pos);
+        ModeSet want;
+        if (BruteForce(s, All(k), z, &want) != 1) continue;
+        ++unique;
+        const ModeChoiceResult r = ConsistentMode(s, ModeSet(), All(k), z);
+        EXPECT_TRUE(Resolved(r.choice)) << "k " << k << " e " << e;
+        EXPECT_EQ(r.mode, want) << "k " << k << " e " << e << " trial " << trial;
+      }
+    }
+  std::printf("[ measured ] %d states of 9 to 11 contacts with one consistent set: all found\n",
+              unique);
+  EXPECT_GT(unique, 40);
+}
+
+// Where pivoting cycles (nine blocks, M nearly singular: 1 + 8e = 0.001),
+// the enumeration still finds the one set (a state found by a review's
+// random search).
+TEST(ModePivot, ACycleFallsBackToTheEnumeration) {
+  const MassCoupledK s(9, -0.999 / 8);
+  const Eigen::VectorXd z = OnAll({-1.9013007667852113, 1.6899257950143616, -1.2410385718179111,
+                                   0.58176688932245613, -0.047442802867267986, 1.8160963870261253,
+                                   0.76936020750802303, -1.9441788510412492, -1.1336349975799238});
+  EXPECT_EQ(PivotedMode(s, ModeSet(), All(9), z).choice, ModeChoice::kTooMany);
+  ModeSet want;
+  ASSERT_EQ(BruteForce(s, All(9), z, &want), 1);
+  const ModeChoiceResult r = ConsistentMode(s, ModeSet(), All(9), z);
+  EXPECT_EQ(r.choice, ModeChoice::kUnique);
+  EXPECT_EQ(r.mode, want);
+}
+
 // Pivoting from the all-stuck set where the least index must give way: two
 // blocks of the pair above (e = -0.5) pushed apart, so that block 0 held
 // alone needs more than mu_s: the same set as the enumeration.

@@ -65,7 +65,7 @@ enum class FlowStatus {
   kTooMuchWork,       // FlowRequest::max_steps steps before t_max
   kInconsistentMode,  // contacts switched at once and no mode is consistent (ConsistentMode)
   kAmbiguousMode,     // contacts switched at once and several modes are consistent
-  kTooManyAtOnce,     // more than kMaxEnumeratedContacts at once, and pivoting found no set
+  kTooManyAtOnce,     // over kMaxEnumeratedAfterCycle at once, and pivoting cycled
   kContactOpen,       // a contact's normal force fell to 0 (System::NormalForce)
   kSwitchCount,       // FlowRequest::stop_after_switches switches (Simulate runs on from there)
 };

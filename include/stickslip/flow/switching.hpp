@@ -15,7 +15,7 @@ enum class ModeChoice {
   kUnique,        ///< exactly one consistent candidate
   kAmbiguous,     ///< several consistent candidates (mode: the first)
   kInconsistent,  ///< none (mode: the contact-order rule's)
-  kTooMany,       ///< more than kMaxEnumeratedContacts, and pivoting found no consistent set
+  kTooMany,       ///< more than kMaxEnumeratedAfterCycle, pivoting cycled (mode: contact order)
   kPivoted,       ///< more than kMaxEnumeratedContacts: the consistent set pivoting found
 };
 template <>
@@ -32,14 +32,16 @@ struct EnumNames<ModeChoice> {
 inline bool Resolved(ModeChoice c) { return c == ModeChoice::kUnique || c == ModeChoice::kPivoted; }
 
 /// At most this many contacts are enumerated at once (3^8 candidates); more
-/// are resolved by pivoting (PivotedMode).
+/// are resolved by pivoting (PivotedMode), and where pivoting cycles, up to
+/// kMaxEnumeratedAfterCycle (3^12 candidates) are enumerated after all.
 constexpr int kMaxEnumeratedContacts = 8;
+constexpr int kMaxEnumeratedAfterCycle = 12;
 
 struct ModeChoiceResult {
   ModeChoice choice = ModeChoice::kUnique;
   ModeSet mode;
-  int candidates = 0;  ///< contacts enumerated
-  int consistent = 0;  ///< consistent candidates found
+  int candidates = 0;  ///< contacts enumerated or pivoted
+  int consistent = 0;  ///< consistent candidates found (pivoted: 1, the one it stopped at)
 };
 
 /// The consistent mode after the contacts `on` (each on its surface h_i = 0
@@ -62,7 +64,8 @@ ModeChoiceResult ConsistentMode(const System& s, const ModeSet& base, std::vecto
 /// stuck, the lowest contact whose mode is not consistent takes the mode its
 /// force points to, until none is left: kPivoted with that set, whether or
 /// not another consistent set exists. A set met twice, or more flips than
-/// 3 q^2 + 3 for q contacts, is kTooMany with the last set.
+/// 3 q^2 + 3 for q contacts, is kTooMany with the last set (which need not
+/// be consistent; a set may exist all the same).
 ModeChoiceResult PivotedMode(const System& s, const ModeSet& base, const std::vector<int>& on,
                              ConstState z);
 
