@@ -152,18 +152,19 @@ py::dict ForcedOrbits(const ForcedParams& base, const py::object& columns, int t
 
 // x as Python's repr writes it: the shortest digits that read back exactly
 // (std::to_chars), in exponent form for x < 1e-4 or x >= 1e16, else fixed
-// with ".0" on whole numbers.
+// with ".0" on whole numbers. NaN (does not apply) is an empty cell; inf is
+// refused (no nan or inf is written, docs/formats.md).
 void AppendRepr(double x, std::string& out) {
-  if (std::isnan(x)) {
-    out += "nan";
-    return;
-  }
+  if (std::isnan(x)) return;
+  if (std::isinf(x))
+    throw InvalidArgument("_tsv_rows: " + std::string(x > 0 ? "inf" : "-inf") +
+                          " is not a finite number");
   char buf[64];
   auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::scientific);
   const char* e = std::find(buf, r.ptr, 'e');
   int exponent = 0;
   if (e != r.ptr) std::from_chars(e + (e[1] == '+' ? 2 : 1), r.ptr, exponent);
-  if (std::isinf(x) || exponent >= 16 || exponent < -4) {
+  if (exponent >= 16 || exponent < -4) {
     out.append(buf, r.ptr);
     return;
   }

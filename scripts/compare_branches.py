@@ -8,7 +8,8 @@ special_points.tsv), e.g. ss_basin's basins.tsv,orbits.tsv.
 
 For each file: the same header, the same number of
 rows, text cells equal, and every numeric cell within tol (absolute, scaled
-by max(1, |base|)); nan must match nan. NEW may have more columns after
+by max(1, |base|)); a cell that does not apply (empty, or nan as older files
+wrote it) must match one that does not apply. NEW may have more columns after
 BASE's (new columns appended: pt, lab, x_start, ...): those are not compared,
 and the count is reported. Either layout is read: the header as
 the first '#' line (before 0.1.0's metadata) or as the first line without '#'.
@@ -38,6 +39,8 @@ def read(path):
 
 
 def number(s):
+    if s == "":  # does not apply: as older files' nan
+        return math.nan
     try:
         return float(s)
     except ValueError:

@@ -5,7 +5,8 @@ Usage: compare_curves.py OLD/curves.tsv NEW/curves.tsv [--tol 1e-12]
 
 For each curve (type, id) of either file: its point counts; where the counts
 agree, the largest relative difference of the numeric cells row by row
-(relative to max(1, |old|)) and the number of text or nan cells that differ;
+(relative to max(1, |old|)) and the number of text or nan cells that differ (an
+empty cell, not applicable, matches an older file's nan);
 and the largest distance of a NEW point from OLD's polyline of that curve, in
 units of the chart's ranges (OLD's `# range:` line; the first two columns are
 the chart's axes). A NEW point farther than tol from OLD's end vertices and
@@ -75,6 +76,7 @@ def cells(old, new):
     worst, other = 0.0, 0
     for ro, rn in zip(old, new):
         for u, w in zip(ro, rn):
+            u, w = u or "nan", w or "nan"  # empty: does not apply, as older files' nan
             try:
                 a, b = float(u), float(w)
             except ValueError:
@@ -82,7 +84,7 @@ def cells(old, new):
                 continue
             if math.isfinite(a) and math.isfinite(b):
                 worst = max(worst, abs(a - b) / max(1.0, abs(a)))
-            elif u != w:
+            elif u.lower() != w.lower():
                 other += 1
     return worst, other
 

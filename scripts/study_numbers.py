@@ -275,7 +275,7 @@ for q, col in zip(("6.284854776", "1.144838229", "1.160460219", "1.107135", "1.1
     CHECKS.append((PURE_ROW, q, "strib13_up", (lambda c: lambda r: first_of(r, "pure-slip", c))(col)))
 CHECKS += [
     ("grows from 0 at HB to 0.196\nat the fold", "0.196", "stribeck",
-     lambda r: r.argmax("dist_energy", "v", where=lambda row: row["dist_energy"] != "nan")[0]),
+     lambda r: r.argmax("dist_energy", "v", where=lambda row: row["dist_energy"] not in ("", "nan"))[0]),
 ]
 # The (v, beta) charts: linear interpolation on curves.tsv.
 for row in SEED_CHART:

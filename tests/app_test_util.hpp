@@ -72,6 +72,16 @@ inline std::vector<std::string> SplitTabs(const std::string& line) {
   return cells;
 }
 
+// The lines of a TSV's text that are not '#' lines: its header and cells (a
+// check for "nan" must not see the metadata's paths, e.g. a checkout's).
+inline std::string DataLines(const std::string& text) {
+  std::istringstream is(text);
+  std::string out;
+  for (std::string line; std::getline(is, line);)
+    if (line.rfind("#", 0) != 0) out += line + "\n";
+  return out;
+}
+
 inline Tsv ReadTsv(const std::string& text) {
   Tsv t;
   std::istringstream is(text);

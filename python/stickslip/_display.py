@@ -20,12 +20,27 @@ def _name(x):
 
 
 def _num(x):
-    """A number as TSV text: the shortest round-trip form, as the apps write it."""
+    """A number as TSV text: the shortest round-trip form, as the apps write it;
+    NaN (does not apply) an empty cell. ValueError for inf: never written."""
     if isinstance(x, float) or hasattr(x, "dtype") and x.dtype.kind == "f":
-        return repr(float(x))
+        v = float(x)
+        if v != v:
+            return ""
+        if v in (float("inf"), float("-inf")):
+            raise ValueError("%r is not a finite number" % v)
+        return repr(v)
     if isinstance(x, (bool,)) or hasattr(x, "dtype") and x.dtype.kind == "b":
         return "1" if x else "0"
     return str(x)
+
+
+def _finite_or_text(x):
+    """x, or None for a number _num refuses."""
+    try:
+        _num(x)
+        return x
+    except ValueError:
+        return None
 
 
 def _status(r):
@@ -165,8 +180,12 @@ def _table_tsv(df, path, meta):
         lines.append("# commit: %s" % _core.git_commit)
     lines += ["# %s: %s" % (k, str(v).replace("\n", " ")) for k, v in meta]
     lines.append("\t".join(df.columns))
-    for row in df.itertuples(index=False):
-        lines.append("\t".join(_num(c) for c in row))
+    for i, row in enumerate(df.itertuples(index=False), 1):
+        try:
+            lines.append("\t".join(_num(c) for c in row))
+        except ValueError as e:
+            bad = next(n for n, c in zip(df.columns, row) if _finite_or_text(c) is None)
+            raise ValueError("to_tsv: column '%s', row %d: %s" % (bad, i, e)) from None
     _write(path, "\n".join(lines) + "\n")
 
 

@@ -62,6 +62,7 @@ class Restart(unittest.TestCase):
         self.assertAlmostEqual(lp.period, 2 * math.pi, delta=1e-12)
         _, branch = read_tsv(os.path.join(self.run_dir, "branch.tsv"))
         last = stickslip.restart(self.run_dir, len(branch))  # steady sliding at v = 0.5
+        self.assertEqual(branch[-1]["period"], "")  # does not apply: empty, never nan
         self.assertEqual((last.type, last.p), ("equilibrium", 0.5))
         self.assertIsNone(last.period)
         gr = stickslip.restart(self.run_dir, self.special["GR1"]["pt"])  # by point number
@@ -89,16 +90,16 @@ class Restart(unittest.TestCase):
             self.assertLess(near, 1e-9, lab)
 
     @staticmethod
-    def edit(path, what):
-        """HB1's period, or the '# from:' line, made nan."""
+    def edit(path, what, value="nan"):
+        """HB1's period, or the '# from:' line, made nan (or value)."""
         with open(path) as f:
             lines = f.read().splitlines()
         for i, line in enumerate(lines):
             if what == "from" and line.startswith("# from: "):
-                lines[i] = "# from: nan"
+                lines[i] = "# from: " + value
             if what == "period" and line.startswith("HB\t"):
                 cells = line.split("\t")
-                cells[2] = "nan"
+                cells[2] = value
                 lines[i] = "\t".join(cells)
         with open(path, "w") as f:
             f.write("\n".join(lines) + "\n")
@@ -119,6 +120,7 @@ class Restart(unittest.TestCase):
                 ("zero", lambda: os.symlink("/dev/zero", sp), "not a regular file"),
                 ("big", lambda: os.truncate(sp, 65 << 20), "more than 67108864 bytes"),
                 ("nan", lambda: self.edit(sp, "period"), "has period = nan"),
+                ("empty", lambda: self.edit(sp, "period", ""), r"has period = \(empty\)"),
                 ("from", lambda: self.edit(sp, "from"), "'# from: nan'")):
             shutil.rmtree(bad, ignore_errors=True)
             shutil.copytree(self.run_dir, bad)

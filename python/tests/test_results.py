@@ -127,6 +127,22 @@ class ShowThemselves(unittest.TestCase):
         self.assertEqual(head, ["t", "x", "xdot", "mode"])
         self.assertEqual(float(rows[-1]["x"]), t.x[-1])
 
+    def test_tsv_cells_are_empty_where_nan_and_inf_is_refused(self):
+        import pandas as pd  # no nan or inf is written: NaN (does not apply) is an empty cell
+        from stickslip import _display
+        with tempfile.TemporaryDirectory() as d:
+            Seed.get().to_tsv(os.path.join(d, "branch.tsv"))
+            _, head, rows = read_tsv(os.path.join(d, "branch.tsv"))
+            eq = [r for r in rows if r["kind"] == "equilibrium"]
+            self.assertTrue(eq)
+            self.assertEqual({(r["period"], r["t_stick"]) for r in eq}, {("", "")})
+            self.assertFalse([c for r in rows for c in r.values() if c.lower() in ("nan", "inf")])
+            path = os.path.join(d, "t.tsv")
+            _display._table_tsv(pd.DataFrame({"p": [1, 2], "a": [1.5, math.nan]}), path, [])
+            self.assertEqual([r["a"] for r in read_tsv(path)[2]], ["1.5", ""])
+            with self.assertRaisesRegex(ValueError, "column 'a', row 2: inf is not a finite"):
+                _display._table_tsv(pd.DataFrame({"p": [1, 2], "a": [1.5, math.inf]}), path, [])
+
 
 class RestartFromPython(unittest.TestCase):
     def test_hopf_point_of_a_python_branch_starts_a_beta_branch(self):

@@ -168,6 +168,15 @@ class Sweep(unittest.TestCase):
         self.assertEqual(lines[:2], ["# k: v", "a\tb\tc\td"])
         self.assertEqual(lines[2:], ["\t".join(map(repr, row)) for row in data.tolist()])
 
+    def test_nan_is_an_empty_cell_and_inf_is_refused(self):
+        # No nan or inf is written: NaN (does not apply) is an empty cell.
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "rows.tsv")
+            stickslip.SweepResult(["a", "b"], [[1.0, math.nan]], {}).to_tsv(path)
+            self.assertEqual(open(path).read(), "a\tb\n1.0\t\n")
+            with self.assertRaisesRegex(ValueError, "inf is not a finite number"):
+                stickslip.SweepResult(["a", "b"], [[1.0, math.inf]], {}).to_tsv(path)
+
     def test_bad_input_names_the_argument(self):
         for kwargs, word in [({"grid": {"v": []}}, "'v' is empty"),
                              ({"grid": {"v": [0.1, float("nan")]}}, "not finite"),

@@ -118,12 +118,16 @@ TsvTable BranchTable(const ContinuationResult& r, const std::string& model_descr
     row.emplace_back(p.p);
     row.emplace_back(Name(p.kind));
     row.emplace_back(p.branch);
-    for (double x : {p.period, p.extrema.x_min, p.extrema.x_max, p.extrema.xdot_min,
-                     p.extrema.xdot_max, p.t_stick, p.multiplier})
+    // Steady sliding has no period or t_stick: empty cells.
+    const bool eq = p.kind == PointKind::kEquilibrium;
+    row.push_back(eq ? TsvTable::Cell("") : TsvTable::Cell(p.period));
+    for (double x : {p.extrema.x_min, p.extrema.x_max, p.extrema.xdot_min, p.extrema.xdot_max})
       row.emplace_back(x);
+    row.push_back(eq ? TsvTable::Cell("") : TsvTable::Cell(p.t_stick));
+    row.emplace_back(p.multiplier);
     row.emplace_back(p.stable ? 1 : 0);
     row.emplace_back(p.amplitude);
-    for (const auto& c : extra) row.emplace_back(c.values[i]);
+    for (const auto& c : extra) row.push_back(TsvTable::Cell::OrEmpty(c.values[i]));
     row.emplace_back(static_cast<int>(i) + 1);
     row.emplace_back(p.x_start);
     row.emplace_back(p.xdot_start);
@@ -155,7 +159,7 @@ TsvTable SpecialPointTable(const ContinuationResult& r, const std::vector<ExtraC
     std::vector<TsvTable::Cell> row = {
         SpecialLabel(s.kind), s.p,          s.period, s.extrema.x_min, s.extrema.x_max,
         s.extrema.xdot_min,   s.description};
-    for (const auto& c : extra) row.emplace_back(c.values[i]);
+    for (const auto& c : extra) row.push_back(TsvTable::Cell::OrEmpty(c.values[i]));
     row.insert(row.end(), {rows[i], labels[i], s.x_start, s.xdot_start});
     t.AddRow(row);
   }

@@ -151,7 +151,10 @@ void MultiplierFigure(std::ostringstream& os, const ContinuationResult& r, doubl
 // estimates.png: x'_min and the x range of the branch against the seed's
 // estimates (3.17) and the averaging amplitude. Extra columns of
 // CompareEstimates: 13 r1, 15 a_ps, 17/18 the seed's x bounds.
-void EstimatesFigure(std::ostringstream& os, bool periodic, FigureFormat format,
+// Their cells are empty where they do not apply. gnuplot skips a row with an
+// empty cell, drawing the line across it; read into arrays by row (pt), the
+// cell is NaN there, and the line breaks as it should.
+void EstimatesFigure(std::ostringstream& os, bool periodic, std::size_t rows, FigureFormat format,
                      const std::string& ext, const FigureUnits& units) {
   os << FigureTerminal(format, 1000, 1000) << "set output 'estimates" << ext << "'.suffix\n";
   if (!periodic) {
@@ -160,14 +163,20 @@ void EstimatesFigure(std::ostringstream& os, bool periodic, FigureFormat format,
     return;
   }
   const std::string po = "(strcol(2) ne 'equilibrium')";
+  os << "N = " << rows << "\n";
+  for (const int col : {13, 15, 17, 18})
+    os << "array E" << col << "[N]\ndo for [i = 1:N] { E" << col << "[i] = NaN }\n"
+       << "stats 'branch.tsv' using (E" << col << "[int(column('pt'))] = $" << col
+       << ", 0) nooutput\n";
+  auto e = [](int col) { return "E" + std::to_string(col) + "[int(column('pt'))]"; };
   os << "set multiplot layout 2,1\nset lmargin 12\n"
      << "set title 'smallest slip velocity: computed and estimated'\n"
      << "set ylabel " << GnuplotQuoted("smallest velocity dx/dt" + units.SpeedUnit()) << "\n"
      << "plot 'branch.tsv' using ($1*up):(" << po << " ? $" << kXdMin << "*uv : NaN) with lines ls "
      << kStyleReference << " title 'computed', \\\n"
-     << "     '' using ($1*up):($13*uv) with lines ls " << kStyleEstimate1
+     << "     '' using ($1*up):(" << e(13) << "*uv) with lines ls " << kStyleEstimate1
      << " title 'seed (3.17): r_1', \\\n"
-     << "     '' using ($1*up):(-$15*uv) with lines ls " << kStyleEstimate2
+     << "     '' using ($1*up):(-" << e(15) << "*uv) with lines ls " << kStyleEstimate2
      << " title 'averaging: -a_{ps}'\n"
      << "set title \"displacement range: computed and the seed's bound\"\n"
      << "set ylabel " << GnuplotQuoted("displacement x" + units.LengthUnit()) << "\n"
@@ -175,9 +184,9 @@ void EstimatesFigure(std::ostringstream& os, bool periodic, FigureFormat format,
      << kStyleReference << " title 'computed', \\\n"
      << "     '' using ($1*up):(" << po << " ? $" << kXMin << "*ul : NaN) with lines ls "
      << kStyleReference << " notitle, \\\n"
-     << "     '' using ($1*up):($18*ul) with lines ls " << kStyleBound
+     << "     '' using ($1*up):(" << e(18) << "*ul) with lines ls " << kStyleBound
      << " title \"the seed's bound (x max, x min)\", \\\n"
-     << "     '' using ($1*up):($17*ul) with lines ls " << kStyleBound << " notitle\n"
+     << "     '' using ($1*up):(" << e(17) << "*ul) with lines ls " << kStyleBound << " notitle\n"
      << "unset multiplot\nunset output\n";
 }
 }  // namespace
@@ -248,7 +257,7 @@ std::string BifurcationScript(const ContinuationResult& r, const std::string& ti
            r, lo, hi, [](const SpecialPoint& s) { return s.period; }, periodic_point, "ut"),
        Curves(r, kPeriod, true, false) + Key(r, true, false), periodic);
   MultiplierFigure(os, r, lo, hi, periodic, equilibrium, format, ext);
-  if (estimates) EstimatesFigure(os, periodic, format, ext, units);
+  if (estimates) EstimatesFigure(os, periodic, r.points.size(), format, ext, units);
   return os.str();
 }
 

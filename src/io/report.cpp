@@ -141,6 +141,11 @@ void TsvTable::AddRow(const std::vector<Cell>& cells) {
     if (cells[i].is_text() && HasControl(cells[i].text()))
       throw InvalidArgument("TsvTable: cell in column '" + columns_[i] +
                             "' has a tab or line break");
+    if (!cells[i].finite())  // no nan or inf is written (an empty cell: does not apply)
+      throw InvalidArgument("TsvTable: " + cells[i].text() + " in column '" + columns_[i] +
+                            "', row " + std::to_string(rows_ + 1) + ": not a finite number");
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
     if (i > 0) body_ += '\t';
     body_ += cells[i].text();
   }

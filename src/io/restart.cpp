@@ -73,12 +73,14 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   }
   const std::string x = lp->forced ? "x0" : "x_start", xdot = lp->forced ? "xdot0" : "xdot_start";
   lp->state = Vec2(t.Number(row[t.Column(x)], x), t.Number(row[t.Column(xdot)], xdot));
-  lp->period = t.Number(row[t.Column("period")], "period");
+  const std::string& period = row[t.Column("period")];
+  lp->period = t.Optional(period, "period");  // empty on steady sliding
   // Only steady sliding (an equilibrium row) has no period.
   const bool periodic = lp->type != Name(PointKind::kEquilibrium);
   if (periodic && !(std::isfinite(lp->period) && lp->period > 0))
-    throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label + " has period = " +
-                                       row[t.Column("period")] + ", not a finite number > 0");
+    throw RestartError(Part::kRun, "'" + t.path + "': the point " + lp->label +
+                                       " has period = " + (period.empty() ? "(empty)" : period) +
+                                       ", not a finite number > 0");
   if (lp->forced)
     lp->m = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, LabelledPoint::kMaxM));
   std::string err = lp->forced ? ValidationError(ForcedParams{lp->params, lp->force, lp->omega})

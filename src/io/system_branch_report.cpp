@@ -6,7 +6,6 @@
 #include <map>
 
 #include "io/system_rows.hpp"
-#include "numerics/numbers.hpp"
 
 namespace stickslip {
 
@@ -63,19 +62,24 @@ std::vector<std::string> Columns(const System& s, const SystemRun& run, int k) {
   return c;
 }
 
+// A row's cells; what does not apply is empty (no nan): the period, the
+// multipliers and mult_max on equilibrium rows, multipliers past the row's
+// count, max_real on orbit rows.
 std::vector<TsvTable::Cell> Cells(const SystemLine& l, int k, int pt, int contacts) {
   const bool eq = l.branch == 0;
+  const TsvTable::Cell none("");
   std::vector<TsvTable::Cell> row = {
-      l.branch, l.p, l.kind, l.sticks, l.exits, l.crossings, eq ? kNan : l.period};
+      l.branch, l.p, l.kind, l.sticks, l.exits, l.crossings, eq ? none : l.period};
   for (Eigen::Index i = 0; i < l.lo.size(); ++i) row.insert(row.end(), {l.lo[i], l.hi[i]});
   for (Eigen::Index i = 0; i < l.z0.size(); ++i) row.emplace_back(l.z0[i]);
   row.emplace_back(ModeSetName(l.mode, contacts));
   for (int j = 0; j < k; ++j) {
-    const bool has = j < static_cast<int>(l.multipliers.size());
-    row.insert(row.end(),
-               {has ? l.multipliers[j].real() : kNan, has ? l.multipliers[j].imag() : kNan});
+    if (j < static_cast<int>(l.multipliers.size()))
+      row.insert(row.end(), {l.multipliers[j].real(), l.multipliers[j].imag()});
+    else
+      row.insert(row.end(), {none, none});
   }
-  row.insert(row.end(), {eq ? kNan : l.mult_max, eq ? l.max_real : kNan, l.stable ? 1 : 0, pt});
+  row.insert(row.end(), {eq ? none : l.mult_max, eq ? l.max_real : none, l.stable ? 1 : 0, pt});
   return row;
 }
 

@@ -124,7 +124,7 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* s
     sp->start.mode.set(sp->contacts, m);
     from = comma + 1;
   }
-  sp->period = t.Number(row[t.Column("period")], "period");
+  sp->period = t.Optional(row[t.Column("period")], "period");  // empty on steady sliding
   if (!std::isfinite(sp->p) || !sp->start.z.allFinite() ||
       (sp->periodic() && !(std::isfinite(sp->period) && sp->period > 0)))
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + sp->label +

@@ -3,6 +3,7 @@
 // Every failure is a RestartError of Part::kRun naming the file.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,6 +24,11 @@ struct Table {
   const std::string& Meta(const std::string& key) const;
   /// A cell or metadata value as a number; throws naming `what` if it is none.
   double Number(const std::string& text, const std::string& what) const;
+  /// Number, or NaN for an empty cell (a value that does not apply; older
+  /// files wrote `nan` there, which Number reads as NaN too).
+  double Optional(const std::string& text, const std::string& what) const {
+    return text.empty() ? std::numeric_limits<double>::quiet_NaN() : Number(text, what);
+  }
   /// Number, refusing nan and inf ("'path' is corrupt: what = 'text' is not
   /// finite").
   double Finite(const std::string& text, const std::string& what) const;

@@ -85,6 +85,25 @@ TEST_F(Restart, FromHopfPointInBetaFindsTheClosedFormHopfPoint) {
   }
 }
 
+// HB1's row of branch.tsv is steady sliding: its period and t_stick are empty
+// cells (never nan), and a restart from its number reads it.
+TEST_F(Restart, FromASteadySlidingRowWithEmptyCells) {
+  const Tsv b = Table(Seed() + "/branch.tsv");
+  const std::string pt = Cell(Table(Seed() + "/special_points.tsv"), "lab", "HB1", "pt");
+  ASSERT_FALSE(pt.empty());
+  const auto& row = b.rows.at(std::stoi(pt) - 1);
+  EXPECT_EQ(row[b.Column("period")], "");
+  EXPECT_EQ(row[b.Column("t_stick")], "");
+  const std::string out = dir_ + "/row";
+  ASSERT_EQ(Run("ss_continue", "--restart " + Seed() + " --point " + pt +
+                                   " --param beta --from 0.01 --to 0.3 --no_plots --out " + out),
+            0)
+      << err_;
+  const std::string beta = Cell(Table(out + "/special_points.tsv"), "lab", "HB1", "beta");
+  ASSERT_FALSE(beta.empty());
+  EXPECT_NEAR(std::stod(beta), HopfBeta(std::stod(row[b.Column("v")])), 1e-10);
+}
+
 TEST_F(Restart, FromGrazingPointMatchesAFreshRunAtItsParameters) {
   const std::string v_text = Cell(Table(Seed() + "/special_points.tsv"), "lab", "GR1", "v");
   const std::string range = " --param beta --from 0.02 --to 0.1 --no_plots --no_estimates";
@@ -153,8 +172,8 @@ namespace {
 
 // Issue 35: a restart file gets a study file's checks. A FIFO must not block
 // (--max_time cannot stop an open()), /dev/zero must not be read into memory,
-// a junk file over 64 MiB is refused unread; period = nan and '# from: nan' are
-// corrupt. Every case exits 2 within seconds, naming --restart, in both apps.
+// a junk file over 64 MiB is refused unread; period = nan or empty and '# from:
+// nan' are corrupt. Every case exits 2 within seconds, naming --restart, in both apps.
 TEST_F(Restart, RestartFilesMustBeRegularFilesOfBoundedSizeAndFiniteValues) {
   const std::string s = Seed();
   auto copy = [&](const std::string& name) {
@@ -163,11 +182,13 @@ TEST_F(Restart, RestartFilesMustBeRegularFilesOfBoundedSizeAndFiniteValues) {
   };
   const std::string fifo = copy("fifo"), zero = copy("zero"), big = copy("big");
   const std::string nan_period = copy("nan_period"), nan_from = copy("nan_from");
+  const std::string no_period = copy("no_period");
   const std::string sp = "/special_points.tsv";
   ASSERT_EQ(
       std::system(("rm " + fifo + sp + " && mkfifo " + fifo + sp + " && rm " + zero + sp +
                    " && ln -s /dev/zero " + zero + sp + " && truncate -s 65M " + big + sp +
                    " && sed -i 's/^HB\\t\\([^\\t]*\\)\\t[^\\t]*/HB\\t\\1\\tnan/' " + nan_period +
+                   sp + " && sed -i 's/^HB\\t\\([^\\t]*\\)\\t[^\\t]*/HB\\t\\1\\t/' " + no_period +
                    sp + " && sed -i 's/^# from: .*/# from: nan/' " + nan_from + sp)
                       .c_str()),
       0);
@@ -176,6 +197,7 @@ TEST_F(Restart, RestartFilesMustBeRegularFilesOfBoundedSizeAndFiniteValues) {
       {zero, "not a regular file"},
       {big, "68157440 bytes, more than 67108864 bytes (64 MiB)"},
       {nan_period, "the point HB1 has period = nan"},
+      {no_period, "the point HB1 has period = (empty)"},
       {nan_from, "'# from: nan' and '# to: 0.5' must be finite"},
   };
   for (const char* app : {"ss_continue", "ss_chart"})

@@ -4,7 +4,7 @@
 // (an independent check: a row of the first run, at the parameter value the
 // restart is sent to, against the restart's last row); in a second parameter
 // the first row is the point's orbit. Bad restarts exit 2 with one line that
-// names the option, and write nothing.
+// names the option, and write nothing. Cells that do not apply are empty.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -243,6 +243,55 @@ TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
   ExpectSameOrbit(t, rows.back(), first, want, "v", 1e-9);
   const tu::Tsv special = Table(Study("chain2") + "/special_points.tsv");
   ExpectSameOrbit(t, rows.front(), special, Labelled(special, "GR1"), "v", 1e-9);
+}
+
+// No nan or inf is written: what does not apply is an empty cell (the period,
+// the multipliers and mult_max on steady sliding, max_real on orbit rows).
+TEST_F(SystemRestart, NotApplicableCellsAreEmptyNeverNan) {
+  for (const char* study : {"brake", "chain2"})
+    for (const char* file : {"/branch.tsv", "/special_points.tsv"}) {
+      const std::string path = Study(study) + file;
+      const tu::Tsv t = Table(path);
+      ASSERT_FALSE(t.rows.empty()) << path;
+      int eq = 0, orbits = 0;
+      for (const Row& r : t.rows) {
+        ASSERT_EQ(r.size(), t.columns.size()) << path;
+        for (std::size_t j = 0; j < r.size(); ++j) {
+          std::string cell = r[j];
+          std::transform(cell.begin(), cell.end(), cell.begin(), ::tolower);
+          EXPECT_TRUE(cell.find("nan") == std::string::npos &&
+                      cell.find("inf") == std::string::npos)
+              << path << " " << t.columns[j] << " = " << r[j];
+        }
+        const bool steady = r[t.Column("branch")] == "0";
+        ++(steady ? eq : orbits);
+        for (const std::string& c : t.columns) {
+          const bool na =
+              c == "max_real" ? !steady : steady && (c == "period" || c.rfind("mult", 0) == 0);
+          EXPECT_EQ(r[t.Column(c)].empty(), na)
+              << path << " " << c << " = '" << r[t.Column(c)] << "'";
+        }
+      }
+      EXPECT_TRUE(eq > 0 && orbits > 0) << path;  // HB1 in special_points.tsv too
+    }
+}
+
+// A file of an older run, with nan where this one has empty cells, still restarts.
+TEST_F(SystemRestart, OlderFilesWithNanStillRestart) {
+  const std::string old = dir_ + "/old";
+  const std::string nan = "sed -i -e ':a' -e 's/\\t\\t/\\tnan\\t/' -e 'ta' ";
+  ASSERT_EQ(
+      std::system(("cp -r " + Study("chain2") + " " + old + " && " + nan + old + "/branch.tsv " +
+                   old + "/special_points.tsv && grep -q 'nan' " + old + "/special_points.tsv")
+                      .c_str()),
+      0);
+  ASSERT_EQ(Continue("--restart " + old + " --point GR1 --to 0.39", dir_ + "/from_old"), 0) << err_;
+  const tu::Tsv t = Table(dir_ + "/from_old/branch.tsv"),
+                sp = Table(Study("chain2") + "/special_points.tsv");
+  ASSERT_FALSE(Branch(t, 1).empty());
+  ExpectSameOrbit(t, Branch(t, 1).front(), sp, Labelled(sp, "GR1"), "v", 1e-9);
+  EXPECT_EQ(Continue("--restart " + old + " --point HB1", dir_ + "/bad"), 2);
+  EXPECT_TRUE(tu::Contains(err_, "--point HB1 is a point of steady sliding")) << err_;
 }
 
 TEST_F(SystemRestart, BadRestartsExitTwoWithOneLineNamingTheOption) {

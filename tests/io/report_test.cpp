@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <set>
@@ -181,6 +182,61 @@ TEST(Report, TableStartsWithMetadataThenAHeaderWithoutHash) {
   EXPECT_EQ(t.str(),
             "# tool: ss_continue 0.1.0\n# beta: 0.05\n# status: complete\n"
             "v\tkind\n0.25\tstick-slip\n");
+}
+
+// No nan or inf is written: a value that does not apply is an empty cell, and
+// a number that is not finite is refused, naming its column and row, with
+// the table left as it was.
+TEST(Report, NotApplicableIsAnEmptyCellAndNonFiniteIsRefused) {
+  TsvTable t({"v", "period"});
+  t.AddRow({0.25, TsvTable::Cell::OrEmpty(std::nan(""))});
+  t.AddRow({0.5, TsvTable::Cell::OrEmpty(2.5)});
+  t.AddRow({0.75, ""});
+  for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+    try {
+      t.AddRow({1.0, bad});
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("column 'period', row 4: not a finite number"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(t.AddRow({1.0, TsvTable::Cell::OrEmpty(HUGE_VAL)}), InvalidArgument);
+  EXPECT_EQ(t.rows(), 3u);
+  EXPECT_EQ(t.str(), "v\tperiod\n0.25\t\n0.5\t2.5\n0.75\t\n");
+}
+
+// Steady sliding's period and t_stick and an extra column's NaN are empty
+// cells of branch.tsv and special_points.tsv.
+TEST(Report, BranchTablesWriteNotApplicableAsEmptyCells) {
+  ContinuationResult r;
+  BranchPoint orbit;
+  orbit.p = 0.1, orbit.period = 5, orbit.t_stick = 1, orbit.kind = PointKind::kStickSlip;
+  BranchPoint eq;
+  eq.p = 0.3, eq.period = eq.t_stick = std::nan("");
+  r.points = {orbit, eq};
+  SpecialPoint sp;
+  sp.p = 0.2, sp.period = 4;
+  r.special = {sp};
+  const std::vector<ExtraColumn> extra = {{"r1", {0.5, std::nan("")}}};
+  const std::string branch = BranchTable(r, "m", extra).str();
+  const std::string special = SpecialPointTable(r, {{"period_s", {std::nan("")}}}).str();
+  for (const std::string& text : {branch, special}) {
+    EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+    EXPECT_EQ(text.find("inf"), std::string::npos) << text;
+  }
+  const testing_util::Tsv b = testing_util::ReadTsv(branch);
+  ASSERT_EQ(b.rows.size(), 2u);
+  for (const char* c : {"period", "t_stick", "r1"}) {
+    ASSERT_GE(b.Column(c), 0) << c;
+    EXPECT_NE(b.rows[0][b.Column(c)], "") << c;
+    EXPECT_EQ(b.rows[1][b.Column(c)], "") << c;
+  }
+  const testing_util::Tsv s = testing_util::ReadTsv(special);
+  ASSERT_EQ(s.rows.size(), 1u);
+  EXPECT_EQ(s.rows[0][s.Column("period")], "4");
+  EXPECT_EQ(s.rows[0][s.Column("period_s")], "");
 }
 
 TEST(Report, MetadataKeyWithColonOrLineBreakIsRejected) {

@@ -3,6 +3,7 @@
 // No printing here; failures are exceptions (stickslip::Error).
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,11 +30,13 @@ void WriteFileAtomically(const std::string& path, const std::string& content,
 /// file and the reason.
 void SyncFiles(const std::vector<std::string>& paths);
 
-/// A number as TSV text: the shortest form that reads back to the same double
-/// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise.
+/// A number as text: the shortest form that reads back to the same double
+/// ("0.25", "1e-05", "-3.0000000000000004"); "nan", "inf", "-inf" otherwise
+/// (for messages: a table refuses them, TsvTable::AddRow).
 std::string FormatNumber(double x);
 
-/// An extra column of a table, one value per row (nan where it does not apply).
+/// An extra column of a table, one value per row (NaN where it does not apply:
+/// an empty cell in the file, TsvTable::Cell::OrEmpty).
 struct ExtraColumn {
   std::string name;
   std::vector<double> values;
@@ -53,10 +56,14 @@ class TsvTable {
   explicit TsvTable(std::vector<std::string> columns);
 
   /// One cell: a number (formatted by FormatNumber) or text without tabs or
-  /// newlines.
+  /// newlines. A value that does not apply is an empty cell (Cell("")), never
+  /// nan: AddRow refuses a number that is not finite.
   class Cell {
    public:
-    Cell(double x) : text_(FormatNumber(x)) {}                // NOLINT: implicit by design
+    Cell(double x) : text_(FormatNumber(x)), finite_(std::isfinite(x)) {}  // NOLINT: implicit
+    /// x, or an empty cell where x is NaN (the library's "does not apply");
+    /// an infinite x stays a number that AddRow refuses.
+    static Cell OrEmpty(double x) { return std::isnan(x) ? Cell("") : Cell(x); }
     Cell(int x) : text_(std::to_string(x)) {}                 // NOLINT
     Cell(long x) : text_(std::to_string(x)) {}                // NOLINT
     Cell(unsigned long x) : text_(std::to_string(x)) {}       // NOLINT
@@ -64,10 +71,13 @@ class TsvTable {
     Cell(const std::string& s) : text_(s), is_text_(true) {}  // NOLINT
     const std::string& text() const { return text_; }
     bool is_text() const { return is_text_; }
+    /// False for a number that is nan or inf.
+    bool finite() const { return finite_; }
 
    private:
     std::string text_;
     bool is_text_ = false;
+    bool finite_ = true;
   };
 
   /// A "# text" line before the header. Throws InvalidArgument if the text
@@ -78,8 +88,9 @@ class TsvTable {
   void AddMeta(const std::string& key, const std::string& value);
   /// The same lines, placed before every line added so far.
   void PrependMeta(const std::vector<std::pair<std::string, std::string>>& lines);
-  /// Throws InvalidArgument if the cell count differs from the column count
-  /// or a text cell has a tab or newline.
+  /// Throws InvalidArgument if the cell count differs from the column count,
+  /// a text cell has a tab or newline, or a number is nan or inf (naming the
+  /// column and row); the table is then unchanged.
   void AddRow(const std::vector<Cell>& cells);
   /// Room for n more rows of about `bytes_per_row` characters (no copies of a
   /// long table's text as it grows).
