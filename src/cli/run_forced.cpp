@@ -150,7 +150,7 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
 
 // --all, --m, --point: the branches from the chosen orbits of the start list,
 // printed first (UsageError if --point names none).
-std::vector<ForcedPiece> TraceChosen(const BranchSetup& s, const StartChoice& c, RunControl& run) {
+std::vector<OrbitBranch> TraceChosen(const BranchSetup& s, const StartChoice& c, RunControl& run) {
   ForcedParams p = s.p;
   s.axis.Set(p, s.from);
   const ForcedModel model(p);
@@ -160,11 +160,10 @@ std::vector<ForcedPiece> TraceChosen(const BranchSetup& s, const StartChoice& c,
   const std::string where = std::string(s.axis.name()) + " = " + FormatNumber(s.from);
   PrintStartOrbits(std::cout, list, where);
   const std::vector<StartOrbit> chosen = ChooseStart(list, c, where);
-  std::vector<ForcedPiece> pieces;
+  std::vector<OrbitBranch> pieces;
   for (const StartOrbit& o : chosen) {
     if (run.Cancelled()) break;
-    pieces.push_back({ContinueFrom(s.p, s.axis, s.from, s.to, o, s.opts, run),
-                      static_cast<int>(pieces.size()) + 1});
+    pieces.push_back(ContinueFrom(s.p, s.axis, s.from, s.to, o, s.opts, run));
   }
   return pieces;
 }
@@ -185,21 +184,21 @@ std::string Value(const BranchSetup& s, ParameterAxis a) {
 }
 
 // "branch 1 reached-end; branch 2 ..." for the metadata and the summary.
-std::string StatusOf(const std::vector<ForcedPiece>& pieces) {
+std::string StatusOf(const std::vector<OrbitBranch>& pieces) {
   std::string status;
-  for (const ForcedPiece& piece : pieces)
-    status += (status.empty() ? "" : "; ") + std::string("branch ") + std::to_string(piece.index) +
-              " " + Name(piece.branch.status) +
-              (piece.branch.message.empty() ? "" : " (" + piece.branch.message + ")");
+  for (size_t i = 0; i < pieces.size(); ++i)
+    status += (status.empty() ? "" : "; ") + std::string("branch ") + std::to_string(i + 1) + " " +
+              Name(pieces[i].status) +
+              (pieces[i].message.empty() ? "" : " (" + pieces[i].message + ")");
   return status;
 }
 
 // The run's summary on stdout: range, rows, status, gap and special points.
 void PrintSummary(const std::string& prog, const BranchSetup& s, const std::string& model,
                   const std::string& status, const std::string& gap,
-                  const std::vector<ForcedPiece>& pieces, LogDetail detail) {
+                  const std::vector<OrbitBranch>& pieces, LogDetail detail) {
   size_t rows = 0;
-  for (const ForcedPiece& piece : pieces) rows += piece.branch.rows.size();
+  for (const OrbitBranch& piece : pieces) rows += piece.rows.size();
   std::cout << prog << ": forced oscillator, " << s.axis.name() << " from " << FormatNumber(s.from)
             << " to " << FormatNumber(s.to) << "; " << model << "\n"
             << rows << " rows; " << status << "\n";
@@ -208,17 +207,17 @@ void PrintSummary(const std::string& prog, const BranchSetup& s, const std::stri
 }
 
 // True (after one line on stderr) if no branch has a row.
-bool NoRows(const std::string& prog, const BranchSetup& s, const std::vector<ForcedPiece>& pieces) {
-  for (const ForcedPiece& piece : pieces)
-    if (!piece.branch.rows.empty()) return false;
+bool NoRows(const std::string& prog, const BranchSetup& s, const std::vector<OrbitBranch>& pieces) {
+  for (const OrbitBranch& piece : pieces)
+    if (!piece.rows.empty()) return false;
   std::cerr << prog << ": error: no periodic orbit"
             << (s.choice.m > 0 ? " of period m = " + std::to_string(s.choice.m) : "") << " at "
             << s.axis.name() << " = " << FormatNumber(s.from);
   if (pieces.empty())
     std::cerr << " in the start list";
   else
-    std::cerr << " (" << Name(pieces[0].branch.status)
-              << (pieces[0].branch.message.empty() ? "" : ": " + pieces[0].branch.message) << ")";
+    std::cerr << " (" << Name(pieces[0].status)
+              << (pieces[0].message.empty() ? "" : ": " + pieces[0].message) << ")";
   std::cerr << "; nothing written\n";
   return true;
 }
@@ -256,21 +255,21 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
                                           figure};
   AppRun app(prog, args, "plots", names);
   app.run().Phase("continuing");
-  std::vector<ForcedPiece> pieces(1);
+  std::vector<OrbitBranch> pieces(1);
   if (s.choice.scan())
     pieces = TraceChosen(s, s.choice, app.run());
   else
-    pieces[0].branch = Trace(s, s.from, s.to, app.run());
-  if (s.doubled && !pieces[0].branch.rows.empty())  // the side the 2m branch opens toward
-    s.to = pieces[0].branch.rows.front().p < s.from ? s.lo : s.hi;
+    pieces[0] = Trace(s, s.from, s.to, app.run());
+  if (s.doubled && !pieces[0].rows.empty())  // the side the 2m branch opens toward
+    s.to = pieces[0].rows.front().p < s.from ? s.lo : s.hi;
   if (NoRows(prog, s, pieces)) return kExitFailed;  // nothing to write or draw
   std::string gap;
   std::vector<double> gap_ends;
-  if (pieces[0].branch.status == BranchStatus::kUnbounded && !s.doubled && !s.choice.scan()) {
+  if (pieces[0].status == BranchStatus::kUnbounded && !s.doubled && !s.choice.scan()) {
     // Undamped resonance: trace the other end too; between them x is unbounded.
-    pieces.push_back({Trace(s, s.to, s.from, app.run()), 2});
-    const auto& a = pieces[0].branch.rows;
-    const auto& b = pieces[1].branch.rows;
+    pieces.push_back(Trace(s, s.to, s.from, app.run()));
+    const auto& a = pieces[0].rows;
+    const auto& b = pieces[1].rows;
     if (!a.empty() && !b.empty()) {
       gap_ends = {a.back().p, b.back().p};
       gap = "not traced between " + FormatNumber(a.back().p) + " and " + FormatNumber(b.back().p) +
@@ -299,7 +298,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   meta.emplace_back("status", status);
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;
-  for (const ForcedPiece& piece : pieces) specials += static_cast<int>(piece.branch.special.size());
+  for (const OrbitBranch& piece : pieces) specials += static_cast<int>(piece.special.size());
   TsvTable branch = ForcedBranchTable(pieces, s.axis, s.p);
   TsvTable special = ForcedSpecialTable(pieces, s.axis, s.p);
   branch.PrependMeta(meta);
@@ -314,7 +313,7 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, resonance.gp"
             << (app.gnuplot().ok() ? " and " + figure : "") << "\n";
   std::string partial;
-  const BranchStatus last = pieces.back().branch.status;
+  const BranchStatus last = pieces.back().status;
   if (!Complete(last) && !(pieces.size() == 2 && last == BranchStatus::kUnbounded))
     partial = "partial branch written (" + status + ")";
   return app.ExitCode(partial);

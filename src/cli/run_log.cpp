@@ -102,7 +102,7 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
   }
 }
 
-void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, const ForcedParams& p,
+void PrintForcedLog(std::ostream& os, const std::vector<OrbitBranch>& pieces, const ForcedParams& p,
                     ParameterAxis axis, LogDetail detail) {
   const std::string param = axis.name();
   if (detail == LogDetail::kEveryPoint) {
@@ -113,21 +113,21 @@ void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, co
   int pt = 0;
   std::map<SpecialKind, int> count;
   std::vector<std::string> special;
-  for (const ForcedPiece& piece : pieces)
-    for (const OrbitRow& r : piece.branch.rows) {
+  for (size_t i = 0; i < pieces.size(); ++i)
+    for (const OrbitRow& r : pieces[i].rows) {
       ++pt;
       std::string lab;
       if (r.label != SpecialKind::kNone)
         lab = std::string(Name(r.label)) + std::to_string(++count[r.label]);
       ForcedParams at = p;
       axis.Set(at, r.p);
-      const int m = PeriodMultiple(piece.branch);
+      const int m = PeriodMultiple(pieces[i]);
       const double period = m * 2 * M_PI / at.omega;
       const Extrema e = RowExtrema(r);
       if (detail == LogDetail::kEveryPoint) {
         const double mu = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
         std::ostringstream line;
-        line << "  " << Pad(std::to_string(pt), 6) << Pad(std::to_string(piece.index), 8)
+        line << "  " << Pad(std::to_string(pt), 6) << Pad(std::to_string(i + 1), 8)
              << Pad(r.sticks > 0 ? "stick-slip" : "non-stop", 12) << Pad(Fixed(r.p, 10), 16)
              << Pad(std::to_string(m), 4) << Pad(Fixed(period, 6), 11) << Pad(Fixed(e.x_min, 6), 11)
              << Pad(Fixed(e.x_max, 6), 11) << Pad(Fixed(mu, 6), 11)

@@ -25,7 +25,7 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
                     const std::optional<Scales>& scales);
 
 // The forced branch (its pieces in branch.tsv's order, pt counted over them).
-void PrintForcedLog(std::ostream& os, const std::vector<ForcedPiece>& pieces, const ForcedParams& p,
+void PrintForcedLog(std::ostream& os, const std::vector<OrbitBranch>& pieces, const ForcedParams& p,
                     ParameterAxis axis, LogDetail detail);
 
 }  // namespace stickslip::cli

@@ -1,10 +1,11 @@
 // The forced branch as TSV tables and the resonance figure's script.
+#include "stickslip/io/resonance_report.hpp"
+
 #include <cmath>
 #include <map>
 #include <sstream>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/io/resonance_report.hpp"
 
 namespace stickslip {
 
@@ -16,11 +17,11 @@ std::vector<std::string> Columns(ParameterAxis axis) {
           "mult1_im", "mult2_re",  "mult2_im", "mult_max", "stable",    "pt"};
 }
 
-std::vector<TsvTable::Cell> Cells(const OrbitRow& r, const ForcedPiece& piece,
+std::vector<TsvTable::Cell> Cells(const OrbitRow& r, int piece, const OrbitBranch& branch,
                                   const ForcedParams& p, ParameterAxis axis) {
   ForcedParams at = p;
   axis.Set(at, r.p);
-  const int m = PeriodMultiple(piece.branch);
+  const int m = PeriodMultiple(branch);
   const double period = m * 2 * M_PI / at.omega;
   const double mult_max = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
   const Extrema e = RowExtrema(r);
@@ -41,7 +42,7 @@ std::vector<TsvTable::Cell> Cells(const OrbitRow& r, const ForcedPiece& piece,
     if (!std::isfinite(x))
       throw InvalidArgument("forced branch row at " + std::string(axis.name()) + " = " +
                             FormatNumber(r.p) + " has a non-finite value");
-  return {piece.index,     r.p,         m,
+  return {piece,           r.p,         m,
           r.sticks,        r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
           numbers[1],      numbers[2],  numbers[3],
           numbers[4],      period,      numbers[6],
@@ -50,50 +51,52 @@ std::vector<TsvTable::Cell> Cells(const OrbitRow& r, const ForcedPiece& piece,
           r.stable ? 1 : 0};
 }
 
-// Every row with its point number (pt, 1-based over the pieces) and, for the
-// special ones, the label with its index per type (GR1, CR1, PD1, ...).
+// Every row with its piece (1-based), its point number (pt, 1-based over the
+// pieces) and, for the special ones, the label with its index per type (GR1,
+// CR1, PD1, ...).
 template <class F>
-void ForEachRow(const std::vector<ForcedPiece>& pieces, F f) {
+void ForEachRow(const std::vector<OrbitBranch>& pieces, F f) {
   int pt = 0;
   std::map<SpecialKind, int> count;
-  for (const ForcedPiece& piece : pieces)
-    for (const OrbitRow& r : piece.branch.rows) {
+  for (size_t i = 0; i < pieces.size(); ++i)
+    for (const OrbitRow& r : pieces[i].rows) {
       ++pt;
       const std::string lab = r.label == SpecialKind::kNone
                                   ? ""
                                   : std::string(Name(r.label)) + std::to_string(++count[r.label]);
-      f(piece, r, pt, lab);
+      f(static_cast<int>(i) + 1, pieces[i], r, pt, lab);
     }
 }
 
 }  // namespace
 
-TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
+TsvTable ForcedBranchTable(const std::vector<OrbitBranch>& pieces, ParameterAxis axis,
                            const ForcedParams& p) {
   auto cols = Columns(axis);
   TsvTable t(cols);
-  ForEachRow(pieces, [&](const ForcedPiece& piece, const OrbitRow& r, int pt, const std::string&) {
-    auto cells = Cells(r, piece, p, axis);
-    cells.push_back(pt);
-    t.AddRow(cells);
-  });
+  ForEachRow(pieces,
+             [&](int piece, const OrbitBranch& b, const OrbitRow& r, int pt, const std::string&) {
+               auto cells = Cells(r, piece, b, p, axis);
+               cells.push_back(pt);
+               t.AddRow(cells);
+             });
   return t;
 }
 
-TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
+TsvTable ForcedSpecialTable(const std::vector<OrbitBranch>& pieces, ParameterAxis axis,
                             const ForcedParams& p) {
   auto cols = Columns(axis);
   cols.insert(cols.begin(), "label");
   cols.insert(cols.end(), {"lab", "description"});
   TsvTable t(cols);
-  ForEachRow(pieces,
-             [&](const ForcedPiece& piece, const OrbitRow& r, int pt, const std::string& lab) {
-               if (lab.empty()) return;
-               auto cells = Cells(r, piece, p, axis);
-               cells.insert(cells.begin(), Name(r.label));
-               cells.insert(cells.end(), {pt, lab, r.description});
-               t.AddRow(cells);
-             });
+  ForEachRow(pieces, [&](int piece, const OrbitBranch& b, const OrbitRow& r, int pt,
+                         const std::string& lab) {
+    if (lab.empty()) return;
+    auto cells = Cells(r, piece, b, p, axis);
+    cells.insert(cells.begin(), Name(r.label));
+    cells.insert(cells.end(), {pt, lab, r.description});
+    t.AddRow(cells);
+  });
   return t;
 }
 

@@ -1,6 +1,6 @@
 // Many contacts at one instant (switching.hpp, PivotedMode): the least-index
 // pivoting finds the consistent set the enumeration finds, and takes the flow
-// past the enumeration's bound. The system couples K blocks by their masses,
+// past the enumeration's bound. The system (mass_coupled.hpp) couples K blocks by their masses,
 // M x'' = g + r, g_i = -k x_i - c x_i', r_i contact i's friction force
 // (slip below: +mu_k, above: -mu_k; stick: the force that holds x_i'' = 0),
 // so that every sticking contact's force depends on the others' modes; the
@@ -14,112 +14,26 @@
 #include <random>
 #include <vector>
 
+#include "flow/mass_coupled.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/flow/switching.hpp"
-#include "stickslip/system/taylor_field.hpp"
 
 namespace stickslip {
 namespace {
 
-class MassCoupledK final : public System {
- public:
-  // M = mass (I + e (J - I)) (J all ones): K blocks, all alike. Its inverse
-  // is a I + b J, which keeps the arithmetic of alike blocks alike.
-  MassCoupledK(int k, double e, double mass = 1, double c = 0.1) : k_(k), c_(c) {
-    a_ = 1 / (mass * (1 - e));
-    b_ = -e / (mass * (1 - e) * (1 + (k - 1) * e));
-  }
-  std::unique_ptr<System> Clone() const override { return std::make_unique<MassCoupledK>(*this); }
-  bool Assign(const System& s) override {
-    const auto* o = dynamic_cast<const MassCoupledK*>(&s);
-    if (o) *this = *o;
-    return o != nullptr;
-  }
-  std::string ValidationError() const override { return ""; }
-  int dimension() const override { return 2 * k_; }
-  int contacts() const override { return k_; }
-  std::string StateName(int i) const override {
-    return "x" + std::to_string(i / 2 + 1) + (i % 2 ? "'" : "");
-  }
-  int DerivativeOf(int i) const override { return i % 2 == 0 ? i + 1 : -1; }
-  ContactVelocity Contact(int i) const override {
-    ContactVelocity c;
-    c.terms[0] = {2 * i + 1, 1.0};
-    c.size = 1;
-    c.speed = kV;
-    return c;
-  }
-  // u = g + r with r_S = 0: slip forces, and the sticking contacts' r_S
-  // from (W (u + r_S))_S = 0, W_SS = a I + b J inverted by Sherman-Morrison.
-  Eigen::VectorXd Forces(const ModeSet& m, ConstState z) const {
-    Eigen::VectorXd u(k_), r = Eigen::VectorXd::Zero(k_);
-    double total = 0;
-    for (int i = 0; i < k_; ++i) {
-      if (!m.sticks(i)) r[i] = m[i] == Mode::kSlipBelow ? kMuK : -kMuK;
-      total += u[i] = -z[2 * i] - c_ * z[2 * i + 1] + r[i];
-    }
-    double free_sum = 0;
-    int s = 0;
-    for (int i = 0; i < k_; ++i)
-      if (m.sticks(i)) free_sum += a_ * u[i] + b_ * total, ++s;
-    for (int i = 0; i < k_; ++i)
-      if (m.sticks(i)) r[i] = -(a_ * u[i] + b_ * total - b_ / (a_ + s * b_) * free_sum) / a_;
-    return r;
-  }
-  double StickForce(const ModeSet& m, int i, ConstState z) const override {
-    return Forces(m, z)[i];
-  }
-  void StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const override {
-    Eigen::VectorXd y = z;
-    const double f0 = StickForce(m, i, z);
-    for (int j = 0; j < 2 * k_; ++j) {  // affine in z: exact differences of step 1
-      y = z;
-      y[j] += 1;
-      g[j] = StickForce(m, i, y) - f0;
-    }
-  }
-  double StaticLimit(int, ConstState) const override { return kMuS; }
-  void Field(const ModeSet& m, ConstState z, StateOut f) const override {
-    const Eigen::VectorXd r = Forces(m, z);
-    Eigen::VectorXd u(k_);
-    double total = 0;
-    for (int i = 0; i < k_; ++i) total += u[i] = -z[2 * i] - c_ * z[2 * i + 1] + r[i];
-    for (int i = 0; i < k_; ++i) {
-      f[2 * i] = m.sticks(i) ? kV : z[2 * i + 1];
-      f[2 * i + 1] = m.sticks(i) ? 0.0 : a_ * u[i] + b_ * total;
-    }
-  }
-  void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const override {
-    const int n = 2 * k_;
-    Eigen::VectorXd f0(n), f1(n), y(n);
-    Field(m, z, f0);
-    for (int j = 0; j < n; ++j) {
-      y = z;
-      y[j] += 1;
-      Field(m, y, f1);
-      J.col(j) = f1 - f0;
-    }
-  }
-  std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest&) const override {
-    throw InvalidArgument("MassCoupledK: CVODE only");
-  }
-  int parameters() const override { return 0; }
-  std::string ParameterName(int) const override { return ""; }
-  double ParameterValue(int) const override { return 0; }
-  void SetParameterValue(int, double) override {}
-
-  static constexpr double kV = 0.2, kMuS = 0.4, kMuK = 0.3;
-
- private:
-  int k_;
-  double a_ = 1, b_ = 0, c_ = 0.1;
-};
+// K alike blocks (mass_coupled.hpp), damped by c as the random states here are.
+MassCoupled Blocks(int k, double e, double mass = 1, double c = 0.1) {
+  Coupling p;
+  p.blocks = k, p.e = e, p.mass = mass, p.c = c;
+  return MassCoupled(p);
+}
+const Coupling kLaw;  // v, mu_s, mu_k
 
 // Every contact on its surface x_i' = v at positions x.
 Eigen::VectorXd OnAll(const std::vector<double>& x) {
   Eigen::VectorXd z(2 * x.size());
-  for (size_t i = 0; i < x.size(); ++i) z[2 * i] = x[i], z[2 * i + 1] = MassCoupledK::kV;
+  for (size_t i = 0; i < x.size(); ++i) z[2 * i] = x[i], z[2 * i + 1] = kLaw.v;
   return z;
 }
 
@@ -138,7 +52,7 @@ TEST(ModePivot, FindsTheSetTheEnumerationFinds) {
   int unique = 0, none = 0, several = 0, one_of_several = 0;
   for (int k = 2; k <= kMaxEnumeratedContacts; ++k)
     for (double e : {-0.1, 0.2, 0.45}) {
-      const MassCoupledK s(k, e);
+      const MassCoupled s = Blocks(k, e);
       for (int trial = 0; trial < 60; ++trial) {
         std::vector<double> pos(k);
         for (double& p : pos) p = x(rng);
@@ -174,7 +88,7 @@ TEST(ModePivot, SixteenBlocksStickAndLeaveAtOnce) {
   constexpr int kBlocks = 16;
   static_assert(kBlocks > kMaxEnumeratedContacts);
   const double e = 0.2, mass = 1 + (kBlocks - 1) * e;
-  const MassCoupledK s(kBlocks, e, 1.0, 0.0);
+  const MassCoupled s = Blocks(kBlocks, e, 1.0, 0.0);
   FlowOptions fo;
   fo.integrator = Integrator::kCvode;
   fo.rtol = 1e-11;
@@ -200,11 +114,11 @@ TEST(ModePivot, SixteenBlocksStickAndLeaveAtOnce) {
     EXPECT_EQ(sw[kBlocks + i].kind, SwitchKind::kStickOut) << i;
   }
   EXPECT_EQ(sw[kBlocks - 1].after, stuck);
-  const double w = 1 / std::sqrt(mass), a = MassCoupledK::kMuK + 0.35;
-  const double t_in = std::asin(MassCoupledK::kV / (a * w)) / w;
+  const double w = 1 / std::sqrt(mass), a = kLaw.mu_k + 0.35;
+  const double t_in = std::asin(kLaw.v / (a * w)) / w;
   EXPECT_NEAR(sw[0].t, t_in, 1e-8);
-  EXPECT_NEAR(sw[0].z[0], MassCoupledK::kMuK - a * std::cos(w * t_in), 1e-8);
-  EXPECT_NEAR(r.end.t, t_in + (MassCoupledK::kMuS - sw[0].z[0]) / MassCoupledK::kV, 1e-8);
+  EXPECT_NEAR(sw[0].z[0], kLaw.mu_k - a * std::cos(w * t_in), 1e-8);
+  EXPECT_NEAR(r.end.t, t_in + (kLaw.mu_s - sw[0].z[0]) / kLaw.v, 1e-8);
   for (int i = 1; i < kBlocks; ++i) EXPECT_NEAR(r.end.z[2 * i], r.end.z[0], 1e-15) << i;
   EXPECT_EQ(r.end.mode, ModeSet());
 }
@@ -243,7 +157,7 @@ TEST(ModePivot, PastEightContactsFindsTheOneSet) {
   int unique = 0;
   for (int k = 9; k <= 11; ++k)
     for (double e : {-0.05, 0.2, 0.45, 0.8}) {
-      const MassCoupledK s(k, e);
+      const MassCoupled s = Blocks(k, e);
       for (int trial = 0; trial < (k == 11 ? 2 : 5); ++trial) {
         std::vector<double> pos(k);
         for (double& p : pos) p = x(rng);
@@ -265,7 +179,7 @@ TEST(ModePivot, PastEightContactsFindsTheOneSet) {
 // the enumeration still finds the one set (a state found by a review's
 // random search).
 TEST(ModePivot, ACycleFallsBackToTheEnumeration) {
-  const MassCoupledK s(9, -0.999 / 8);
+  const MassCoupled s = Blocks(9, -0.999 / 8);
   const Eigen::VectorXd z = OnAll({-1.9013007667852113, 1.6899257950143616, -1.2410385718179111,
                                    0.58176688932245613, -0.047442802867267986, 1.8160963870261253,
                                    0.76936020750802303, -1.9441788510412492, -1.1336349975799238});
@@ -281,7 +195,7 @@ TEST(ModePivot, ACycleFallsBackToTheEnumeration) {
 // blocks of the pair above (e = -0.5) pushed apart, so that block 0 held
 // alone needs more than mu_s: the same set as the enumeration.
 TEST(ModePivot, ReleasesTheLeastIndexFirst) {
-  const MassCoupledK s(2, -0.5);
+  const MassCoupled s = Blocks(2, -0.5);
   const Eigen::VectorXd z = OnAll({-0.3, 0.9});
   const ModeChoiceResult en = ConsistentMode(s, ModeSet(), {0, 1}, z);
   const ModeChoiceResult pv = PivotedMode(s, ModeSet(), {0, 1}, z);

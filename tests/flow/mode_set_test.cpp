@@ -1,6 +1,6 @@
 // Modes as sets (switching.hpp, ConsistentMode): contacts that switch at one
-// instant take the one consistent mode. The system here couples two blocks
-// by their masses alone, M = [[1, e], [e, 1]], M x'' = g + r, g_i = -k x_i -
+// instant take the one consistent mode. The system here (mass_coupled.hpp)
+// couples two blocks by their masses alone, M = [[1, e], [e, 1]], M x'' = g + r, g_i = -k x_i -
 // c x_i', r_i the friction force of contact i (slip below: +mu_k, above:
 // -mu_k; stick: the force that holds x_i'' = 0). A sticking contact's force
 // then depends on whether the other one sticks: the contact-order rule can
@@ -16,105 +16,13 @@
 #include <memory>
 #include <vector>
 
+#include "flow/mass_coupled.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/flow/switching.hpp"
-#include "stickslip/system/taylor_field.hpp"
 
 namespace stickslip {
 namespace {
-
-struct Pair {
-  double e = -0.5, k = 1, c = 0, v = 0.2, mu_s = 0.4, mu_k = 0.3;
-  int terms = 1;      // of each contact's velocity (a bad system: 0)
-  double weight = 1;  // of its term (a bad system: 0)
-};
-
-class MassCoupled final : public System {
- public:
-  explicit MassCoupled(const Pair& p) : p_(p) {}
-  std::unique_ptr<System> Clone() const override { return std::make_unique<MassCoupled>(*this); }
-  bool Assign(const System& s) override {
-    const auto* o = dynamic_cast<const MassCoupled*>(&s);
-    if (o) *this = *o;
-    return o != nullptr;
-  }
-  std::string ValidationError() const override { return ""; }
-  int dimension() const override { return 4; }
-  int contacts() const override { return 2; }
-  std::string StateName(int i) const override {
-    static const char* n[] = {"x1", "x1'", "x2", "x2'"};
-    return n[i];
-  }
-  int DerivativeOf(int i) const override { return i % 2 == 0 ? i + 1 : -1; }
-  ContactVelocity Contact(int i) const override {
-    ContactVelocity c;
-    c.terms[0] = {2 * i + 1, p_.weight};
-    c.size = p_.terms;
-    c.speed = p_.v;
-    return c;
-  }
-  // The forces r of mode m at z: slip forces, and the holding forces of the
-  // sticking contacts from (M^-1 (g + r))_S = 0.
-  Eigen::Vector2d Forces(const ModeSet& m, ConstState z) const {
-    Eigen::Matrix2d M;
-    M << 1, p_.e, p_.e, 1;
-    const Eigen::Matrix2d W = M.inverse();
-    Eigen::Vector2d g, r = Eigen::Vector2d::Zero();
-    for (int i = 0; i < 2; ++i) {
-      g[i] = -p_.k * z[2 * i] - p_.c * z[2 * i + 1];
-      if (!m.sticks(i)) r[i] = m[i] == Mode::kSlipBelow ? p_.mu_k : -p_.mu_k;
-    }
-    if (m.sticks(0) && m.sticks(1)) return -g;
-    for (int i = 0; i < 2; ++i)
-      if (m.sticks(i)) r[i] = -g[i] - W(i, 1 - i) * (g[1 - i] + r[1 - i]) / W(i, i);
-    return r;
-  }
-  double StickForce(const ModeSet& m, int i, ConstState z) const override {
-    return Forces(m, z)[i];
-  }
-  void StickForceGradient(const ModeSet& m, int i, ConstState z, StateOut g) const override {
-    Eigen::VectorXd y = z;
-    const double f0 = StickForce(m, i, z);
-    for (int j = 0; j < 4; ++j) {  // affine in z: exact differences of step 1
-      y = z;
-      y[j] += 1;
-      g[j] = StickForce(m, i, y) - f0;
-    }
-  }
-  double StaticLimit(int, ConstState) const override { return p_.mu_s; }
-  void Field(const ModeSet& m, ConstState z, StateOut f) const override {
-    Eigen::Matrix2d M;
-    M << 1, p_.e, p_.e, 1;
-    const Eigen::Vector2d r = Forces(m, z);
-    Eigen::Vector2d g(-p_.k * z[0] - p_.c * z[1], -p_.k * z[2] - p_.c * z[3]);
-    const Eigen::Vector2d a = M.inverse() * (g + r);
-    for (int i = 0; i < 2; ++i) {
-      f[2 * i] = m.sticks(i) ? p_.v : z[2 * i + 1];
-      f[2 * i + 1] = m.sticks(i) ? 0.0 : a[i];
-    }
-  }
-  void Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const override {
-    Eigen::VectorXd f0(4), f1(4), y(4);
-    Field(m, z, f0);
-    for (int j = 0; j < 4; ++j) {
-      y = z;
-      y[j] += 1;
-      Field(m, y, f1);
-      J.col(j) = f1 - f0;
-    }
-  }
-  std::unique_ptr<TaylorField> MakeTaylorField(const TaylorRequest&) const override {
-    throw InvalidArgument("MassCoupled: CVODE only");
-  }
-  int parameters() const override { return 0; }
-  std::string ParameterName(int) const override { return ""; }
-  double ParameterValue(int) const override { return 0; }
-  void SetParameterValue(int, double) override {}
-
- private:
-  Pair p_;
-};
 
 ModeSet Both(Mode a, Mode b) {
   ModeSet m;
@@ -124,14 +32,14 @@ ModeSet Both(Mode a, Mode b) {
 }
 
 // Both contacts on their surfaces with g = (-x1, -x2) (c = 0).
-Eigen::VectorXd OnBoth(const Pair& p, double x1, double x2) {
+Eigen::VectorXd OnBoth(const Coupling& p, double x1, double x2) {
   Eigen::VectorXd z(4);
   z << x1, p.v, x2, p.v;
   return z;
 }
 
 TEST(ModeSets, ContactOrderIsInconsistentTheEnumerationIsNot) {
-  const Pair p;
+  const Coupling p;
   const MassCoupled s(p);
   const Eigen::VectorXd z = OnBoth(p, -0.3, -0.3);
   // The hand computation in the header comment.
@@ -147,7 +55,7 @@ TEST(ModeSets, ContactOrderIsInconsistentTheEnumerationIsNot) {
 // A contact velocity with no term, or a term of weight 0, defines no
 // surface: the flow refuses the system by name (ContactVelocityError).
 TEST(ModeSets, ContactVelocityWithoutATermIsRefused) {
-  Pair p;
+  Coupling p;
   p.terms = 0;
   try {
     const MassCoupled s(p);
@@ -157,14 +65,14 @@ TEST(ModeSets, ContactVelocityWithoutATermIsRefused) {
     EXPECT_NE(std::string(e.what()).find("contact 0's velocity has 0 terms"), std::string::npos)
         << e.what();
   }
-  p = Pair();
+  p = Coupling();
   p.weight = 0;
   EXPECT_THROW(Flow(MassCoupled(p), FlowOptions()), InvalidArgument);
-  EXPECT_EQ(ContactVelocityError(MassCoupled(Pair())), "");
+  EXPECT_EQ(ContactVelocityError(MassCoupled(Coupling())), "");
 }
 
 TEST(ModeSets, OneContactGivesFilippovsRule) {
-  const Pair p;
+  const Coupling p;
   const MassCoupled s(p);
   Eigen::VectorXd z = OnBoth(p, -0.3, -0.3);
   z[3] = 0.1;  // contact 1 below its surface
@@ -180,7 +88,7 @@ TEST(ModeSets, OneContactGivesFilippovsRule) {
 // e = -0.8, g = (0.6, -0.6): {stick, slip-below} and {slip-above, stick}
 // are both consistent (found by the same enumeration in Python, numpy 2x2).
 TEST(ModeSets, TwoConsistentSetsAreAmbiguous) {
-  Pair p;
+  Coupling p;
   p.e = -0.8;
   const MassCoupled s(p);
   const Eigen::VectorXd z = OnBoth(p, -0.6, 0.6);
@@ -198,7 +106,7 @@ TEST(ModeSets, TwoConsistentSetsAreAmbiguous) {
 // (identical arithmetic) with g = -x in (1/6, 0.4]: both stick, the motion
 // stays symmetric, and both leave at x = mu_s together.
 TEST(ModeSets, SimultaneousArrivalTakesTheConsistentSet) {
-  const Pair p;
+  const Coupling p;
   const MassCoupled s(p);
   FlowOptions fo;
   fo.integrator = Integrator::kCvode;

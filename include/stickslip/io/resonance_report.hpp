@@ -14,22 +14,19 @@
 
 namespace stickslip {
 
-/// One traced piece of a forced run; a run from both ends has two.
-struct ForcedPiece {
-  OrbitBranch branch;  ///< its m: PeriodMultiple(branch)
-  int index = 1;       ///< the `branch` column
-};
-
 /// Columns: branch, <axis>, m, sticks, crossings, kind, x_min, x_max,
 /// xdot_min, xdot_max, period, x0, xdot0, mult1_re, mult1_im, mult2_re,
 /// mult2_im, mult_max (the largest modulus), stable, pt (the row's number,
 /// 1-based). Throws InvalidArgument if a value is not finite.
-TsvTable ForcedBranchTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
+/// `pieces`: the traced pieces of a forced run (a run from both ends has
+/// two), numbered 1, 2, ... in the `branch` column; each one's m is
+/// PeriodMultiple(piece).
+TsvTable ForcedBranchTable(const std::vector<OrbitBranch>& pieces, ParameterAxis axis,
                            const ForcedParams& p);
 /// label, then the same columns, then lab (GR1, CR1, PD1, ...: the label
 /// with its index per type, as AUTO-07p's LAB) and description (one line),
 /// for the located special points.
-TsvTable ForcedSpecialTable(const std::vector<ForcedPiece>& pieces, ParameterAxis axis,
+TsvTable ForcedSpecialTable(const std::vector<OrbitBranch>& pieces, ParameterAxis axis,
                             const ForcedParams& p);
 
 /// Den Hartog's non-stop setting: coulomb, mu_s = mu_k, v = 0, beta = 0, in omega.
