@@ -224,7 +224,7 @@ bool Engine::Segment() {
   if (variational_) {
     Eigen::Map<const Eigen::MatrixXd> phi(y + n_, nt_, nt_);
     tmp_.noalias() = phi * M_;
-    M_ = tmp_;
+    M_.swap(tmp_);
     if (column_) {  // C <- Phi C + the segment's own column
       ctmp_.noalias() = phi * C_;
       C_ = ctmp_ + Eigen::Map<const Eigen::VectorXd>(y + p.layout.param(), nt_);

@@ -134,8 +134,9 @@ class Engine {
   std::unique_ptr<Stepper> plain_, var_, param_;
   std::optional<int> param_index_;  // param_'s column
   // Scratch for switches.
-  Eigen::VectorXd f_before_, f_after_, grad_, grad2_;
+  Eigen::VectorXd f_before_, f_after_, grad_, grad2_, jump_;
   Eigen::MatrixXd S_, tmp_;
+  Eigen::RowVectorXd row_;  // grad^T M in a saltation (tmp_ keeps its n x n)
   std::vector<int> arrivals_;
 };
 

@@ -162,7 +162,7 @@ ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) { return ModeChoiceOf(
 
 ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
   const int n = s.dimension();
-  Eigen::VectorXd f(n), g(n), gl(n);
+  Eigen::VectorXd f, g, gl;  // sized at the first edge only (every flow's start reads this)
   bool field = false;
   const ModeSet held = m;  // every contact's edge judged in the start's own field
   for (int i = 0; i < s.contacts(); ++i) {
@@ -170,7 +170,7 @@ ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
     const double lambda = s.StickForce(held, i, z), limit = s.StaticLimit(i, z);
     const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
     if (std::abs(lambda) < limit - slack) continue;
-    if (!field) s.Field(held, z, f), field = true;
+    if (!field) f.resize(n), g.resize(n), gl.resize(n), s.Field(held, z, f), field = true;
     s.StickForceGradient(held, i, z, g);
     s.StaticLimitGradient(i, z, gl);
     if ((lambda > 0 ? 1 : -1) * g.dot(f) - gl.dot(f) > 0) m.set(i, Released(lambda));

@@ -281,15 +281,16 @@ void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen:
   const double den = grad.dot(f_before_);
   if (den == 0) return;  // a tangential event: no finite saltation (measure zero)
   // M <- S M = M + ((f+ - f-) / den) (grad^T M), on the tangent block.
-  tmp_.noalias() = grad.head(nt_).transpose() * M_;
-  M_.noalias() += ((f_after_ - f_before_).head(nt_) / den) * tmp_;
+  row_.noalias() = grad.head(nt_).transpose() * M_;
+  jump_ = (f_after_ - f_before_).head(nt_) / den;
+  M_.noalias() += jump_ * row_;
   if (!column_) return;
   // The parameter as a state of rate 0: the event time moves by -(grad .
   // dz/dp + g_p) / den, and the column by (f+ - f-) times minus that (the
   // clocks' column is (t - t0) d omega / dp).
   double q = grad.head(nt_).dot(C_) + g_p;
   for (int j = 0; j < n_ - nt_; ++j) q += grad[nt_ + j] * (t_ - t_start_) * clock_drate_[j];
-  C_ += ((f_after_ - f_before_).head(nt_) / den) * q;
+  C_ += jump_ * q;
 }
 
 double Engine::ArrivalDp(int c) const {

@@ -209,7 +209,7 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
       // The forced oscillator's two columns in one pass, as its own
       // recurrences had them (PhiColumnsNext); the belt's one at a time.
-      Columns<Forced>(k, inv, dmu, r);
+      Columns<Forced, L == LawKind::kCoulomb>(k, inv, dmu, r);
       if (r.col && kind_ == ParamKind::kAffine)
         r.col[1][k + 1] += ParamTerm(r, k, muk, muk_shifted, dmu) * inv;
     }

@@ -55,7 +55,9 @@ class BeltTaylorField final : public TaylorField {
   STICKSLIP_KERNEL void Cubic3(int order, const Rows& r, const Order0& o0);
   template <bool Var, bool Forced>
   void Cubic3Dispatch(int order, const Rows& r);
-  template <bool Newest>
+  // ConstJ: J constant over the step (coulomb: mu'(s) = 0 in slip), so each
+  // sum with cc is its one term cc_0 q_k (the same value: the others are 0).
+  template <bool Newest, bool ConstJ = false>
   void Columns(int k, double inv, double dmu, const Rows& r);
   void Stick(int order, const TaylorLayout& layout, TaylorRow* c);
   // theta's column row: d theta / dp, of rate 1 for omega's column, else 0.
@@ -86,12 +88,17 @@ class BeltTaylorField final : public TaylorField {
 };
 
 // Phi' = J Phi and the parameter column (beta, v) at order k + 1, cc_ set to k.
-template <bool Newest>
+template <bool Newest, bool ConstJ>
 __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, double inv, double dmu,
                                                                     const Rows& r) {
   const double* cc = cc_.c();
   TaylorRow* phi = r.phi;
-  if constexpr (Newest) {
+  if constexpr (ConstJ) {
+    for (int col = 0; col < 4; col += 2) {
+      phi[col][k + 1] = phi[col + 1][k] * inv;
+      phi[col + 1][k + 1] = (-phi[col][k] + phi[col + 1][k] * cc[0]) * inv;
+    }
+  } else if constexpr (Newest) {
     // Cubic3: the newest terms (j = 0 and k) last, as there; Phi's two
     // columns against cc in one pass (the same sums as one at a time).
     PhiColumnsNext(phi[0], phi[1], phi[2], phi[3], cc, k, inv);
@@ -103,7 +110,8 @@ __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, doubl
   }
   if (!r.col) return;
   const double* p = r.col[1];
-  const double cq = !Newest  ? Cauchy(p, cc, k)
+  const double cq = ConstJ    ? p[k] * cc[0]
+                    : !Newest ? Cauchy(p, cc, k)
                     : k == 0 ? p[0] * cc[0]
                              : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
   r.col[0][k + 1] = r.col[1][k] * inv;

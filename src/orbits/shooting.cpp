@@ -122,13 +122,16 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
     }
     dp_.diagonal().array() -= 1.0;  // DP - I
     const Eigen::MatrixXd& A = dp_;
-    if (std::abs(A.determinant()) <=
+    lu_.compute(A);  // what A.determinant() computes, once for the solve too
+    if (std::abs(lu_.determinant()) <=
         Tolerances::kSingularShooting * (1 + A.cwiseAbs().maxCoeff())) {
       o.status = OrbitStatus::kSingular;
       o.message = "DP - I is singular (a multiplier at 1) at t = " + Num(z.t);
       return o;
     }
-    Eigen::VectorXd dz = -A.partialPivLu().solve(r_);
+    dz_ = lu_.solve(r_);
+    Eigen::VectorXd& dz = dz_;
+    dz = -dz;
     const double size = 1 + MaxAbs(z.z.head(nu));
     // A long step is cut (damped Newton): the state's by a share of its size,
     // a clock's to a quarter turn.

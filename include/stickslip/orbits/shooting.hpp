@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit_status.hpp"
@@ -164,6 +166,8 @@ class Shooting {
   FlowRun run_;
   Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column
   Eigen::VectorXd r_;           // P(z) - z on the unknowns
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // DP - I, kept: no allocation per step
+  Eigen::VectorXd dz_;
   Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry
   bool has_dpdp_ = false;
   Eigen::VectorXd f0_, f1_, grad_, grad2_;
