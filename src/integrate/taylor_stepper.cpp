@@ -98,22 +98,25 @@ double TaylorStepper::StateScale(const double* y) const {
 // the clocks' and the column's clock rows (their series are exact).
 double TaylorStepper::StepSize(int order, int jz_order) const {
   const TaylorRow* r = c();
-  auto norm = [&](int k) {
-    double m = 0;
-    for (int i = 0; i < clock_first_; ++i) m = std::max(m, std::abs(r[i][k]));
-    for (int i = clock_last_; i < col_clock_first_; ++i) m = std::max(m, std::abs(r[i][k]));
-    for (int i = col_clock_last_; i < rows_n_; ++i) m = std::max(m, std::abs(r[i][k]));
-    return m;
+  // One pass over the counted rows: the scale z0 and the norms of orders
+  // order - 1 and order (max is exact: the same values as three passes).
+  double z0 = 0, n1 = 0, n2 = 0;
+  auto row = [&](const double* ri) {
+    z0 = std::max(z0, std::abs(ri[0]));
+    n1 = std::max(n1, std::abs(ri[order - 1]));
+    n2 = std::max(n2, std::abs(ri[order]));
   };
-  double z0 = 0;
-  for (int i = 0; i < clock_first_; ++i)
+  for (int i = 0; i < clock_first_; ++i) {
     z0 = std::max(z0, std::min(std::abs(r[i][0]), std::abs(r[i][0] - center_[i])));
-  for (int i = clock_last_; i < col_clock_first_; ++i) z0 = std::max(z0, std::abs(r[i][0]));
-  for (int i = col_clock_last_; i < rows_n_; ++i) z0 = std::max(z0, std::abs(r[i][0]));
+    n1 = std::max(n1, std::abs(r[i][order - 1]));
+    n2 = std::max(n2, std::abs(r[i][order]));
+  }
+  for (int i = clock_last_; i < col_clock_first_; ++i) row(r[i]);
+  for (int i = col_clock_last_; i < rows_n_; ++i) row(r[i]);
   const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
-  const double r1 = (log_scale - std::log(norm(order - 1))) / (order - 1);
-  const double r2 = (log_scale - std::log(norm(order))) / order;
+  const double r1 = (log_scale - std::log(n1)) / (order - 1);
+  const double r2 = (log_scale - std::log(n2)) / order;
   if (order == jz_order) return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (order - 1));
   const int p = jz_order;
   return std::exp(std::min(r1, r2) - (2.0 + 0.7 / (p - 1)) * (p + 1) / (order + 1));
