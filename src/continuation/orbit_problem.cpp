@@ -74,13 +74,27 @@ std::string OrbitProblem::DomainError(const VectorXd& u) const {
   return e;
 }
 
+void OrbitProblem::BoundReturn() {
+  const double full = o_.shooting.max_return_time;
+  shooting_.set_max_return_time(
+      period_ > 0 ? std::min(full, Tolerances::kBranchReturnPeriods * period_) : full);
+}
+
+void OrbitProblem::Returned(double period) {
+  if (period > 0 && std::isfinite(period)) period_ = period;
+}
+
 bool OrbitProblem::MapAt(double p, const FlowPoint& z, bool jacobian, VectorXd* r, PeriodicOrbit* o,
                          std::string* why) {
   system_->SetParameterValue(j_, p);
   *why = system_->ValidationError();
   if (!why->empty()) return false;
   shooting_.set_system(*system_);
-  if (shooting_.Map(z, SectionAt(z), jacobian, r, o)) return true;
+  BoundReturn();
+  if (shooting_.Map(z, SectionAt(z), jacobian, r, o)) {
+    Returned(o->period);
+    return true;
+  }
   last_failure_ = o->status;
   opened_ = opened_ || o->status == OrbitStatus::kContactOpen;
   *why = o->message;
@@ -92,6 +106,7 @@ bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
   *why = system_->ValidationError();
   if (!why->empty()) return false;
   shooting_.set_system(*system_);
+  BoundReturn();
   const PeriodicOrbit o = shooting_.Find(z, SectionAt(z));
   if (!o.ok()) {
     opened_ = opened_ || o.status == OrbitStatus::kContactOpen;
@@ -99,6 +114,7 @@ bool OrbitProblem::FindAt(double p, const FlowPoint& z, std::string* why) {
     return false;
   }
   last_ = o;
+  Returned(o.period);
   last_u_ = Unknowns(o.start, p);
   jac_.resize(0, 0);  // Newton's, not kept
   *why = DomainError(last_u_);

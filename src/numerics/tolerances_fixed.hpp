@@ -117,6 +117,10 @@ struct FixedTolerances {
   // Orbit branches: periods of the settling run beyond an edge where Newton
   // from the edge's orbit finds no orbit of another sequence.
   static constexpr int kBranchSettlePeriods = 200;
+  // Orbit branches: an event section's map that has not returned within
+  // this many periods of the last map that did has no return (the flow's
+  // max_return_time, 2000, is hundreds of a branch's periods).
+  static constexpr double kBranchReturnPeriods = 20;
   // Chart regions (chart_regions.cpp): section-map returns from the exit
   // point before a run neither decayed nor settled is judged (kRegionLive).
   static constexpr int kRegionMapReturns = 150;
