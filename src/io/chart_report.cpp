@@ -34,7 +34,7 @@ TsvTable CurvesTable(const ChartResult& r, const Plane& plane, const std::string
     for (const CurvePoint& p : c.points) {
       const bool hb = c.kind == CurveKind::kHopf;
       t.AddRow({p.p1, p.p2, CurveLabel(c.kind), static_cast<int>(i + 1), p.period, p.amplitude,
-                p.multiplier, hb ? TsvTable::Cell(p.l1) : TsvTable::Cell("-"), Name(p.type),
+                p.multiplier, hb ? TsvTable::Cell(p.l1) : TsvTable::Cell(""), Name(p.type),
                 p.unphysical ? 1 : 0});
     }
   }

@@ -23,9 +23,9 @@ std::string PeriodicName(int m, int sticks) {
 }
 
 // An exponent that was not measured (a failed, unbounded or contact-lost
-// cell) or is no number: "-".
+// cell) or is no number: an empty cell (not applicable).
 TsvTable::Cell Number(double x, AttractorKind k) {
-  return HasExponent(k) && std::isfinite(x) ? TsvTable::Cell(x) : "-";
+  return HasExponent(k) && std::isfinite(x) ? TsvTable::Cell(x) : TsvTable::Cell("");
 }
 
 std::string KindName(AttractorKind k) {
