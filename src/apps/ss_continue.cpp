@@ -12,7 +12,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/estimates_text.hpp"
-#include "cli/forced_start.hpp"
+#include "cli/clock_start.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_continuation.hpp"

@@ -7,12 +7,13 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
-#include "cli/forced_start.hpp"
+#include "cli/clock_start.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_log.hpp"
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/io/resonance_report.hpp"
 
@@ -112,10 +113,30 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   return s;
 }
 
+// ContinueForced from the orbit o (its m and point), cancelled by run.
+OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double from, double to,
+                         const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run) {
+  OrbitBranchOptions c = opts;
+  c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
+  OrbitBranch b = ContinueForced(base, axis, from, to, o.z[0], o.z[1], o.m, c);
+  if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
+  return b;
+}
+
+// The forced oscillator's start (clock_start.hpp): from rest (x, x') = (0, v),
+// the scan's box its SearchBox.
+ClockStart StartOf(const ForcedModel& model, const OrbitBranchOptions& opts) {
+  ClockStart c;
+  c.rest = ForcedStart(model, 0, 0, model.v()).z;
+  c.opts = opts;
+  c.box = model.SearchBox();
+  return c;
+}
+
 // The branch from the attractor the transient from rest settles on, with its
 // period (a period-11 attractor at Omega 1.5 on the seed belt at A 0.1);
 // if that is not periodic, Newton at m = 1 from the settled state; if that
-// fails, the first stable orbit of the start scan (forced_start.hpp).
+// fails, the first stable orbit of the start scan (clock_start.hpp).
 OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   s.axis.Set(p, from);
@@ -129,18 +150,19 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
     if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
     return b;
   }
-  const Vec2 z = SettledState(model, s.opts);
-  const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
+  const ClockStart c = StartOf(model, s.opts);
+  const Eigen::VectorXd z = SettledState(model, c);
+  const std::optional<StartOrbit> settled = SettledStart(model, z, c, run);
   if (settled && settled->m > 1) {
     OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
     if (b.status != BranchStatus::kStartFailed) return b;
   }
   StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
   newton.m = s.m;
-  newton.x = z[0], newton.xdot = z[1];
+  newton.z = z;
   OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
   if (b.status != BranchStatus::kStartFailed || run.Cancelled()) return b;
-  const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, 0, run);
+  const std::vector<StartOrbit> list = StartOrbits(model, settled, c, 0, run);
   for (const StartOrbit& o : ChooseStart(list, StartChoice(), "")) {
     OrbitBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
     if (c.status != BranchStatus::kStartFailed) return c;
@@ -154,9 +176,10 @@ std::vector<OrbitBranch> TraceChosen(const BranchSetup& s, const StartChoice& c,
   ForcedParams p = s.p;
   s.axis.Set(p, s.from);
   const ForcedModel model(p);
-  const Vec2 z = SettledState(model, s.opts);
-  const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
-  const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, c.m, run);
+  const ClockStart start = StartOf(model, s.opts);
+  const std::optional<StartOrbit> settled =
+      SettledStart(model, SettledState(model, start), start, run);
+  const std::vector<StartOrbit> list = StartOrbits(model, settled, start, c.m, run);
   const std::string where = std::string(s.axis.name()) + " = " + FormatNumber(s.from);
   PrintStartOrbits(std::cout, list, where);
   const std::vector<StartOrbit> chosen = ChooseStart(list, c, where);

@@ -1,5 +1,5 @@
-// The orbits a forced branch starts on (forced_start.hpp).
-#include "cli/forced_start.hpp"
+// The orbits a branch of a system with a clock starts on (clock_start.hpp).
+#include "cli/clock_start.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,23 +8,49 @@
 #include "cli/app.hpp"
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
-#include "stickslip/forced/flow.hpp"
-#include "stickslip/forced/orbit.hpp"
-#include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/orbits/orbit_search.hpp"
 
 namespace stickslip::cli {
 
+namespace {
+
+// The state of tangent point z at phase 0 (the clock at 0), in Filippov's mode.
+FlowPoint AtPhase0(const System& system, const Eigen::VectorXd& z) {
+  Eigen::VectorXd full = Eigen::VectorXd::Zero(system.dimension());
+  full.head(z.size()) = z;
+  return {0, full, ModeOf(system, full)};
+}
+
+double MultMax(const PeriodicOrbit& o) {
+  double m = 0;
+  for (const auto& mu : o.multipliers) m = std::max(m, std::abs(mu));
+  return m;
+}
+
+// The settled point lies on a scanned orbit: same m, near one of its points
+// (the settled iterate is within the attractor's contraction of it).
+bool SameOrbit(const FoundOrbit& o, const StartOrbit& s) {
+  if (o.m != s.m) return false;
+  const Eigen::Index n = s.z.size();
+  for (const Eigen::VectorXd& p : o.points)
+    if ((p.head(n) - s.z).lpNorm<1>() <= 1e-5 * (1 + s.z.lpNorm<1>())) return true;
+  return false;
+}
+
+}  // namespace
+
 void AddStartOptions(po::options_description& d) {
   d.add_options()("all", po::bool_switch(),
-                  "forced: continue a branch from each orbit of the start list (the orbits at "
-                  "--from that the scan finds, m <= 12, and the attractor reached from rest, any "
-                  "m <= 32; printed, numbered by m then x_max)")(
+                  "a system with a clock (the forced oscillator): continue a branch from each "
+                  "orbit of the start list (the orbits at --from that the scan finds, m <= 12, "
+                  "and the attractor reached from rest, any m <= 32; printed, numbered by m then "
+                  "x_max)")(
       "m", Value()->value_name("M"),
-      "forced: start on an orbit of least period M forcing periods, in [1, 64] (the attractor "
-      "if one has period M, else the first); with --all each orbit of period M; --point N (no "
-      "--restart) starts on orbit N of the start list (default: the attractor reached from "
-      "rest)");
+      "a system with a clock: start on an orbit of least period M clock turns, in [1, 64] (the "
+      "attractor if one has period M, else the first); with --all each orbit of period M; "
+      "--point N (no --restart) starts on orbit N of the start list (default: the attractor "
+      "reached from rest)");
 }
 
 StartChoice StartChoiceFromArguments(const Arguments& args, bool restart) {
@@ -59,87 +85,68 @@ StartChoice StartChoiceFromArguments(const Arguments& args, bool restart) {
   return c;
 }
 
-Vec2 SettledState(const ForcedModel& model, const OrbitBranchOptions& o) {
+Eigen::VectorXd SettledState(const System& system, const ClockStart& c) {
+  const int n = system.tangent_dimension();
   FlowRequest rq;
-  rq.t_max = kTransientPeriods * model.period();
-  rq.max_steps = o.shooting.flow.max_steps;
-  rq.extrema = {0, 1};
-  const FlowRun tr = Flow(model, o.shooting.flow).Run(ForcedStart(model, 0, 0, model.v()), rq);
-  if (Reached(tr) && std::abs(tr.end.z[0]) <= o.max_amplitude)
-    return Vec2(tr.end.z[0], tr.end.z[1]);
-  return Vec2(0, model.v());
+  rq.t_max = kTransientPeriods * PoincareSection::Stroboscopic(system, c.rest, 1).time;
+  rq.max_steps = c.opts.shooting.flow.max_steps;
+  for (int i = 0; i < std::min(n, 2); ++i) rq.extrema.push_back(i);
+  const FlowRun tr =
+      Flow(system, c.opts.shooting.flow).Run({0, c.rest, ModeOf(system, c.rest)}, rq);
+  const bool reached = tr.status == FlowStatus::kTimeLimit || tr.status == FlowStatus::kStickExit;
+  if (reached && std::abs(tr.end.z[0]) <= c.opts.max_amplitude) return tr.end.z.head(n);
+  return c.rest.head(n);
 }
 
-OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double from, double to,
-                         const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run) {
-  OrbitBranchOptions c = opts;
-  c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
-  OrbitBranch b = ContinueForced(base, axis, from, to, o.x, o.xdot, o.m, c);
-  if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
-  return b;
-}
-
-std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
-                                       const OrbitBranchOptions& o, RunControl& run) {
+std::optional<StartOrbit> SettledStart(const System& system, const Eigen::VectorXd& z,
+                                       const ClockStart& c, RunControl& run) {
   AttractorOptions bo;
   bo.max_period = kSettleMaxPeriod;
-  bo.iterate.flow = o.shooting.flow;
+  bo.iterate.flow = c.opts.shooting.flow;
   bo.iterate.transient = bo.iterate.align;
   bo.iterate.keep = 2 * kSettleMaxPeriod;
-  bo.max_amplitude = o.max_amplitude;
+  bo.max_amplitude = c.opts.max_amplitude;
   const SectionRun r = IterateStroboscopic(
-      model, ForcedStart(model, 0, x, xdot), bo.iterate, [&run] { return run.Cancelled(); },
-      o.max_amplitude);
+      system, AtPhase0(system, z), bo.iterate, [&run] { return run.Cancelled(); },
+      c.opts.max_amplitude);
   if (r.status != LyapunovStatus::kDone) return std::nullopt;
-  const Attractor a = ClassifyAttractor(model, r, bo);
+  const Attractor a = ClassifyAttractor(system, r, bo);
   if (a.kind != AttractorKind::kPeriodic) return std::nullopt;
   StartOrbit s;
   s.m = a.m, s.sticks = a.sticks, s.stable = true, s.settled = true;
-  s.x = a.z[0], s.xdot = a.z[1];
+  s.z = a.z;
   // Its extrema and multipliers: the orbit solved from the settled point.
-  const PeriodicOrbit orbit = ShootStroboscopic(model, a.z[0], a.z[1], a.m, o.shooting);
+  const FlowPoint at = AtPhase0(system, a.z);
+  const PeriodicOrbit orbit =
+      Shooting(system, c.opts.shooting)
+          .Find({0, at.z, ModeSet()}, PoincareSection::Stroboscopic(system, at.z, a.m));
   if (orbit.ok()) {
-    s.x_max = OrbitExtrema(orbit).x_max;
-    s.mult_max = std::abs(orbit.multipliers[0]);
+    s.x_max = orbit.hi.size() ? orbit.hi[0] : 0;
+    s.mult_max = MultMax(orbit);
   }
   return s;
 }
 
-namespace {
-
-// The settled point lies on a scanned orbit: same m, near one of its points
-// (the settled iterate is within the attractor's contraction of it).
-bool SameOrbit(const FoundOrbit& o, const StartOrbit& s) {
-  if (o.m != s.m) return false;
-  for (const Eigen::VectorXd& p : o.points)
-    if (std::abs(p[0] - s.x) + std::abs(p[1] - s.xdot) <=
-        1e-5 * (1 + std::abs(s.x) + std::abs(s.xdot)))
-      return true;
-  return false;
-}
-
-}  // namespace
-
-std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
-                                    const std::optional<StartOrbit>& settled,
-                                    const OrbitBranchOptions& o, int m, RunControl& run) {
+std::vector<StartOrbit> StartOrbits(const System& system, const std::optional<StartOrbit>& settled,
+                                    const ClockStart& c, int m, RunControl& run) {
   OrbitSearchOptions so;
-  so.half_width = model.SearchBox();
-  so.orbit = o.shooting;
+  so.half_width = c.box;
+  so.orbit = c.opts.shooting;
   so.min_m = m > 0 ? m : 1;
   so.max_m = m > 0 ? m : kStartScanMaxM;
   so.cancelled = [&run] { return run.Cancelled(); };
-  const FoundOrbits r = FindOrbits(model, so);
+  const FoundOrbits r = FindOrbits(system, so);
   std::vector<StartOrbit> list;
   bool found = false;
   for (const FoundOrbit& f : r.orbits) {
-    if (std::abs(OrbitExtrema(f.orbit).x_max) > o.max_amplitude) continue;
+    const double x_max = f.orbit.hi.size() ? f.orbit.hi[0] : 0;
+    if (std::abs(x_max) > c.opts.max_amplitude) continue;
     StartOrbit s;
     s.m = f.m, s.sticks = f.orbit.sticks, s.stable = f.orbit.stable;
+    s.z = f.points[0].head(system.tangent_dimension());
     s.settled = settled && SameOrbit(f, *settled);
     found = found || s.settled;
-    s.x = f.points[0][0], s.xdot = f.points[0][1];
-    s.x_max = OrbitExtrema(f.orbit).x_max, s.mult_max = std::abs(f.orbit.multipliers[0]);
+    s.x_max = x_max, s.mult_max = MultMax(f.orbit);
     list.push_back(s);
   }
   if (settled && !found && (m == 0 || settled->m == m)) list.push_back(*settled);
@@ -165,6 +172,24 @@ std::vector<StartOrbit> ChooseStart(const std::vector<StartOrbit>& list, const S
       if (s.stable && (s.settled || !settled)) return {s};
   if (c.m > 0 && !list.empty()) return {list.front()};
   return {};
+}
+
+std::vector<SettledOrbit> ChosenStarts(const System& at, const ClockStart& c,
+                                       const StartChoice& choice, const std::string& where,
+                                       std::ostream& os, RunControl& run) {
+  const std::optional<StartOrbit> settled = SettledStart(at, SettledState(at, c), c, run);
+  const std::vector<StartOrbit> list = StartOrbits(at, settled, c, choice.m, run);
+  PrintStartOrbits(os, list, where);
+  std::vector<SettledOrbit> out;
+  for (const StartOrbit& o : ChooseStart(list, choice, where)) {
+    SettledOrbit s;
+    s.found = true;
+    s.orbit.start = AtPhase0(at, o.z);
+    s.section = PoincareSection::Stroboscopic(at, s.orbit.start.z, o.m);
+    s.orbit.period = s.section.time;
+    out.push_back(std::move(s));
+  }
+  return out;
 }
 
 void PrintStartOrbits(std::ostream& os, const std::vector<StartOrbit>& list,

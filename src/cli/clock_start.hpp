@@ -1,12 +1,14 @@
-// Where a forced branch starts (ss_continue --force without --restart): the
-// orbits at --from that a stroboscopic scan finds (FindOrbits, orbit_search.hpp, m <=
-// kStartScanMaxM, or m = --m) together with the attractor the transient from
+// Where a branch of a system with a clock starts (ss_continue; the forced
+// oscillator, a model file's `clock theta = omega`): the orbits at the start
+// that a stroboscopic scan finds (FindOrbits, orbit_search.hpp, m <=
+// kStartScanMaxM, or m = --m) together with the attractor a transient from
 // rest settles on (any m <= kSettleMaxPeriod), numbered by m, then x_max.
 // By default the branch starts on the attractor; --all starts one branch on
 // each orbit, --m M on the period-M attractor (else the first period-M
 // orbit), --point N on orbit N of the list.
 #pragma once
 
+#include <array>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -14,8 +16,8 @@
 
 #include "cli/run_control.hpp"
 #include "cli/study.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
+#include "stickslip/orbits/settle.hpp"
 
 namespace stickslip::cli {
 
@@ -36,37 +38,49 @@ StartChoice StartChoiceFromArguments(const Arguments& args, bool restart);
 // The options of the choice, for the help text.
 void AddStartOptions(po::options_description& d);
 
+// What a start needs besides the system (one clock): the state at rest the
+// transient starts from (clock 0; its mode Filippov's), the orbits' flow and
+// shooting, the amplitude bound and the scan's box (0: FindOrbits' default).
+struct ClockStart {
+  Eigen::VectorXd rest;
+  OrbitBranchOptions opts;
+  std::array<double, 2> box{0, 0};
+};
+
 struct StartOrbit {
   int m = 1, sticks = 0;
   bool stable = false;
-  bool settled = false;                             // the attractor the transient from rest reached
-  double x = 0, xdot = 0, x_max = 0, mult_max = 0;  // its point at phase 0
+  bool settled = false;            // the attractor the transient from rest reached
+  Eigen::VectorXd z;               // its point at phase 0
+  double x_max = 0, mult_max = 0;  // of the first component; the largest |multiplier|
 };
 
-// The state after kTransientPeriods forcing periods from rest, at t = N T
-// (from rest itself if the transient fails or leaves max_amplitude).
-Vec2 SettledState(const ForcedModel& model, const OrbitBranchOptions& o);
+// The state after kTransientPeriods clock turns from rest (the rest state
+// itself if the transient fails or leaves max_amplitude).
+Eigen::VectorXd SettledState(const System& system, const ClockStart& c);
 
-// ContinueForced from the orbit o (its m and point), cancelled by run.
-OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double from, double to,
-                         const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run);
-
-// The attractor the state (x, xdot) at phase 0 settles on, if periodic with
+// The attractor the state z at phase 0 settles on, if periodic with
 // m <= kSettleMaxPeriod: its m, sticks and section point.
-std::optional<StartOrbit> SettledStart(const ForcedModel& model, double x, double xdot,
-                                       const OrbitBranchOptions& o, RunControl& run);
+std::optional<StartOrbit> SettledStart(const System& system, const Eigen::VectorXd& z,
+                                       const ClockStart& c, RunControl& run);
 
 // The start list: the scan's orbits (m = choice.m, else 1..kStartScanMaxM)
 // and the settled orbit if the scan missed it; by m, then x_max.
-std::vector<StartOrbit> StartOrbits(const ForcedModel& model,
-                                    const std::optional<StartOrbit>& settled,
-                                    const OrbitBranchOptions& o, int m, RunControl& run);
+std::vector<StartOrbit> StartOrbits(const System& system, const std::optional<StartOrbit>& settled,
+                                    const ClockStart& c, int m, RunControl& run);
 
 // The orbits the choice selects (throws UsageError naming --point or --m if
 // it selects none); the default choice: the settled orbit, else the first
 // stable one, else none.
 std::vector<StartOrbit> ChooseStart(const std::vector<StartOrbit>& list, const StartChoice& c,
                                     const std::string& where);
+
+// The start list of `at` (its parameters the start's), printed on os, and the
+// orbits the choice selects, each as an orbit settled on: its point at phase 0
+// on the stroboscopic section of its m turns (UsageError as ChooseStart).
+std::vector<SettledOrbit> ChosenStarts(const System& at, const ClockStart& c,
+                                       const StartChoice& choice, const std::string& where,
+                                       std::ostream& os, RunControl& run);
 
 // "start orbits at omega = 1.5 (--point N continues orbit N):" and a line each.
 void PrintStartOrbits(std::ostream& os, const std::vector<StartOrbit>& list,
