@@ -174,6 +174,56 @@ std::vector<StartOrbit> ChooseStart(const std::vector<StartOrbit>& list, const S
   return {};
 }
 
+Eigen::VectorXd RestOnContacts(const System& system) {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(system.dimension());
+  for (int i = 0; i < system.contacts(); ++i) {
+    const ContactVelocity g = system.Contact(i);
+    if (g.size == 0 || g.terms[0].weight == 0) continue;
+    double h = g.speed;  // sum w_t z_t = speed, solved for the first term's component
+    for (int t = 1; t < g.size; ++t) h -= g.terms[t].weight * z[g.terms[t].index];
+    z[g.terms[0].index] = h / g.terms[0].weight;
+  }
+  return z;
+}
+
+SettledOrbit AsSettled(const System& at, const StartOrbit& o) {
+  SettledOrbit s;
+  s.found = true;
+  s.orbit.start = AtPhase0(at, o.z);
+  s.section = PoincareSection::Stroboscopic(at, s.orbit.start.z, o.m);
+  s.orbit.period = s.section.time;
+  return s;
+}
+
+OrbitBranch TraceFromDefaultStart(const System& at, const ClockStart& c, RunControl& run,
+                                  const std::function<OrbitBranch(const SettledOrbit&)>& trace,
+                                  SettledOrbit* used) {
+  auto attempt = [&](const StartOrbit& o, OrbitBranch* b) {
+    *used = AsSettled(at, o);
+    *b = trace(*used);
+    used->found = b->status != BranchStatus::kStartFailed;
+    return used->found || run.Cancelled();
+  };
+  const Eigen::VectorXd z = SettledState(at, c);
+  const std::optional<StartOrbit> settled = SettledStart(at, z, c, run);
+  OrbitBranch b;
+  if (settled && settled->m > 1 && attempt(*settled, &b)) return b;
+  StartOrbit newton;  // m = 1 from the transient's end
+  newton.z = z;
+  if (attempt(newton, &b)) return b;
+  const SettledOrbit failed = *used;
+  for (const StartOrbit& o : ChooseStart(StartOrbits(at, settled, c, 0, run), StartChoice(), "")) {
+    OrbitBranch other;
+    if (attempt(o, &other)) return other;
+  }
+  *used = failed;
+  used->found = false;
+  used->recurred = true;  // Newton failed: a numerical failure
+  used->message = "no periodic orbit: " + std::string(Name(b.status)) +
+                  (b.message.empty() ? "" : " (" + b.message + ")");
+  return b;
+}
+
 std::vector<SettledOrbit> ChosenStarts(const System& at, const ClockStart& c,
                                        const StartChoice& choice, const std::string& where,
                                        std::ostream& os, RunControl& run) {
@@ -181,14 +231,7 @@ std::vector<SettledOrbit> ChosenStarts(const System& at, const ClockStart& c,
   const std::vector<StartOrbit> list = StartOrbits(at, settled, c, choice.m, run);
   PrintStartOrbits(os, list, where);
   std::vector<SettledOrbit> out;
-  for (const StartOrbit& o : ChooseStart(list, choice, where)) {
-    SettledOrbit s;
-    s.found = true;
-    s.orbit.start = AtPhase0(at, o.z);
-    s.section = PoincareSection::Stroboscopic(at, s.orbit.start.z, o.m);
-    s.orbit.period = s.section.time;
-    out.push_back(std::move(s));
-  }
+  for (const StartOrbit& o : ChooseStart(list, choice, where)) out.push_back(AsSettled(at, o));
   return out;
 }
 

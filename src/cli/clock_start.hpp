@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -55,6 +56,11 @@ struct StartOrbit {
   double x_max = 0, mult_max = 0;  // of the first component; the largest |multiplier|
 };
 
+// The state at rest on the contacts: 0 but where a contact's relative
+// velocity names a component, that component at the contact's speed (the
+// forced belt's (x, x', theta) = (0, v, 0)).
+Eigen::VectorXd RestOnContacts(const System& system);
+
 // The state after kTransientPeriods clock turns from rest (the rest state
 // itself if the transient fails or leaves max_amplitude).
 Eigen::VectorXd SettledState(const System& system, const ClockStart& c);
@@ -74,6 +80,20 @@ std::vector<StartOrbit> StartOrbits(const System& system, const std::optional<St
 // stable one, else none.
 std::vector<StartOrbit> ChooseStart(const std::vector<StartOrbit>& list, const StartChoice& c,
                                     const std::string& where);
+
+// An orbit of the list as one settled on: its point at phase 0 on the
+// stroboscopic section of its m turns.
+SettledOrbit AsSettled(const System& at, const StartOrbit& o);
+
+// The default start at `at`'s parameters: the attractor the transient from
+// rest settles on if its m > 1, else Newton at m = 1 from the transient's
+// end, else the start list's default orbits. `trace` is called on each in
+// turn until its branch starts (status other than kStartFailed) or the run
+// is cancelled; returns that branch (else the Newton's) and sets *used to
+// its start (found false where none started).
+OrbitBranch TraceFromDefaultStart(const System& at, const ClockStart& c, RunControl& run,
+                                  const std::function<OrbitBranch(const SettledOrbit&)>& trace,
+                                  SettledOrbit* used);
 
 // The start list of `at` (its parameters the start's), printed on os, and the
 // orbits the choice selects, each as an orbit settled on: its point at phase 0

@@ -133,10 +133,9 @@ ClockStart StartOf(const ForcedModel& model, const OrbitBranchOptions& opts) {
   return c;
 }
 
-// The branch from the attractor the transient from rest settles on, with its
-// period (a period-11 attractor at Omega 1.5 on the seed belt at A 0.1);
-// if that is not periodic, Newton at m = 1 from the settled state; if that
-// fails, the first stable orbit of the start scan (clock_start.hpp).
+// A restart's branch from its point, else the branch from the default start
+// (TraceFromDefaultStart, clock_start.hpp: a period-11 attractor at Omega 1.5
+// on the seed belt at A 0.1).
 OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   s.axis.Set(p, from);
@@ -150,24 +149,16 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
     if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
     return b;
   }
-  const ClockStart c = StartOf(model, s.opts);
-  const Eigen::VectorXd z = SettledState(model, c);
-  const std::optional<StartOrbit> settled = SettledStart(model, z, c, run);
-  if (settled && settled->m > 1) {
-    OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
-    if (b.status != BranchStatus::kStartFailed) return b;
-  }
-  StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
-  newton.m = s.m;
-  newton.z = z;
-  OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
-  if (b.status != BranchStatus::kStartFailed || run.Cancelled()) return b;
-  const std::vector<StartOrbit> list = StartOrbits(model, settled, c, 0, run);
-  for (const StartOrbit& o : ChooseStart(list, StartChoice(), "")) {
-    OrbitBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
-    if (c.status != BranchStatus::kStartFailed) return c;
-  }
-  return b;
+  SettledOrbit used;
+  return TraceFromDefaultStart(
+      model, StartOf(model, s.opts), run,
+      [&](const SettledOrbit& o) {
+        StartOrbit start;  // m = 1 from the transient's end: a restart's m at its far end
+        start.m = o.section.turns == 1 ? s.m : o.section.turns;
+        start.z = o.orbit.start.z.head(2);
+        return ContinueFrom(s.p, s.axis, from, to, start, s.opts, run);
+      },
+      &used);
 }
 
 // --all, --m, --point: the branches from the chosen orbits of the start list,

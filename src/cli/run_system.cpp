@@ -71,19 +71,49 @@ OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, 
   return ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
 }
 
-// The orbits the run starts on: a clock's chosen from its start list
-// (clock_start.hpp), else the one settled on (or the restart's), if found.
+// A system with a clock: its start from rest (clock_start.hpp), the scan's
+// box FindOrbits' own.
+ClockStart ClockStartOf(const SystemSetup& s, const System& at) {
+  ClockStart c;
+  c.rest = RestOnContacts(at);
+  c.opts = BranchOptions(s);
+  return c;
+}
+
+// The orbits a restart or a clock's start list (--all, --m, --point) starts on.
 std::vector<SettledOrbit> Starts(const SystemSetup& s, const SettledOrbit& settled,
                                  RunControl& run) {
   if (!s.start.scan())
     return settled.found ? std::vector<SettledOrbit>{settled} : std::vector<SettledOrbit>();
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, s.start_at);
-  ClockStart c;
-  c.rest = NearSteadySliding(*at, s.disturbance);
-  c.opts = BranchOptions(s);
   const std::string where = s.system->ParameterName(s.param) + " = " + FormatNumber(s.start_at);
-  return ChosenStarts(*at, c, s.start, where, std::cout, run);
+  return ChosenStarts(*at, ClockStartOf(s, *at), s.start, where, std::cout, run);
+}
+
+// The piece from the start at p toward `to`: a clock's default start
+// (TraceFromDefaultStart), else the attractor settled on. *used: its start.
+OrbitBranch FirstPiece(const SystemSetup& s, double p, double to, RunControl& run,
+                       SettledOrbit* used) {
+  auto trace = [&](const SettledOrbit& o) { return Piece(s, o, to, 0, run, p); };
+  if (s.system->clocks() == 1) {
+    std::unique_ptr<System> at = s.system->Clone();
+    at->SetParameterValue(s.param, p);
+    return TraceFromDefaultStart(*at, ClockStartOf(s, *at), run, trace, used);
+  }
+  *used = Settle(s, p, run);
+  return used->found ? trace(*used) : OrbitBranch();
+}
+
+// Without a restart or a start list: branch 1 from the start at --start_at
+// toward --to, branch 2 from the same orbit back toward --from.
+void TraceDefault(const SystemSetup& s, RunControl& run, SystemRun& r, SettledOrbit* settled) {
+  const bool up = s.start_at != s.to;
+  OrbitBranch first = FirstPiece(s, s.start_at, up ? s.to : s.from, run, settled);
+  if (!settled->found) return;
+  r.pieces.push_back(std::move(first)), r.numbers.push_back(up ? 1 : 2);
+  if (up && s.start_at != s.from)
+    r.pieces.push_back(Piece(s, *settled, s.from, 0, run, s.start_at)), r.numbers.push_back(2);
 }
 
 // The pieces from each start: toward --to (1) and back toward --from (2; the
@@ -119,9 +149,9 @@ std::string TraceOtherEnds(const SystemSetup& s, RunControl& run, SystemRun& r) 
   for (std::size_t i = 0; i < n; ++i) {
     if (r.pieces[i].status != BranchStatus::kUnbounded || run.Cancelled()) continue;
     const double end = r.numbers[i] % 2 ? s.to : s.from;
-    const SettledOrbit settled = Settle(s, end, run);
+    SettledOrbit settled;
+    OrbitBranch b = FirstPiece(s, end, s.start_at, run, &settled);
     if (!settled.found) continue;
-    OrbitBranch b = Piece(s, settled, s.start_at, 0, run, end);
     const auto& a = r.pieces[i].rows;
     if (!a.empty() && !b.rows.empty())
       gap += (gap.empty() ? "" : "; ") + std::string("not traced between ") +
@@ -250,17 +280,19 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   r.steady.status = BranchStatus::kReachedEnd;  // a forcing has no rest point
   if (s.system->clocks() == 0) r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
   run.Phase("settling");
-  SettledOrbit settled = run.Cancelled()  ? SettledOrbit()
-                         : s.restart      ? AtPoint(s, *s.restart)
-                         : s.start.scan() ? SettledOrbit()
-                                          : Settle(s, s.start_at, run);
-  const std::vector<SettledOrbit> starts = Starts(s, settled, run);
-  if (s.start.scan()) {  // the first chosen orbit stands for the start (its section)
-    settled.message = "no orbit of the start list chosen";
-    if (!starts.empty()) settled = starts.front();
+  SettledOrbit settled;
+  if (!run.Cancelled() && (s.restart || s.start.scan())) {
+    if (s.restart) settled = AtPoint(s, *s.restart);
+    const std::vector<SettledOrbit> starts = Starts(s, settled, run);
+    if (s.start.scan()) {  // the first chosen orbit stands for the start (its section)
+      settled.message = "no orbit of the start list chosen";
+      if (!starts.empty()) settled = starts.front();
+    }
+    run.Phase("continuing");
+    TracePieces(s, starts, run, r);
+  } else if (!run.Cancelled()) {
+    TraceDefault(s, run, r, &settled);
   }
-  run.Phase("continuing");
-  TracePieces(s, starts, run, r);
   const std::string gap = TraceOtherEnds(s, run, r);
   const std::string partial = Partial(r, settled, run, !gap.empty());
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);

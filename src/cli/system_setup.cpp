@@ -54,6 +54,23 @@ void ConfigureRestart(const Arguments& args, SystemSetup& s) {
   s.from = sp.run_from, s.to = sp.run_to;
 }
 
+// A clock's start list (clock_start.hpp): --all, --m, --point N without
+// --restart; and no settling run's options for a clock.
+void ConfigureStart(const Arguments& args, SystemSetup& s) {
+  const bool scan = args.Flag("all") || args.Given("m") || (args.Given("point") && !s.restart);
+  if (scan && s.system->clocks() != 1)
+    throw UsageError(args.Source(args.Flag("all")  ? "all"
+                                 : args.Given("m") ? "m"
+                                                   : "point") +
+                     " chooses a start orbit of a system with a clock; " + SystemLabel(args) +
+                     " has none" + (args.Given("point") ? " (--point needs --restart DIR)" : ""));
+  s.start = StartChoiceFromArguments(args, s.restart.has_value());
+  for (const char* o : {"transient", "disturbance"})  // clock_start.hpp: no settling run
+    if (args.Given(o) && s.system->clocks() == 1)
+      throw UsageError(args.Source(o) + ": a system with a clock starts from rest on its " +
+                       "contacts after " + std::to_string(kTransientPeriods) + " clock turns");
+}
+
 }  // namespace
 
 SystemSetup ConfigureSystemRun(const Arguments& args) {
@@ -66,15 +83,7 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
     throw UsageError(args.Source("switch") + " needs --restart DIR --point PDn");
   s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
   s.system = SystemFromArguments(args, s.restart ? &*s.restart : nullptr);
-  // A clock's start list (clock_start.hpp): --all, --m, --point N without --restart.
-  const bool scan = args.Flag("all") || args.Given("m") || (args.Given("point") && !s.restart);
-  if (scan && s.system->clocks() != 1)
-    throw UsageError(args.Source(args.Flag("all")  ? "all"
-                                 : args.Given("m") ? "m"
-                                                   : "point") +
-                     " chooses a start orbit of a system with a clock; " + SystemLabel(args) +
-                     " has none" + (args.Given("point") ? " (--point needs --restart DIR)" : ""));
-  s.start = StartChoiceFromArguments(args, s.restart.has_value());
+  ConfigureStart(args, s);
   s.choice = SystemChoiceOf(args);
   if (s.restart) FromName(s.restart->system, &s.choice);  // known: SystemFromArguments built it
   const std::string system = Name(s.choice);
