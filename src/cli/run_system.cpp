@@ -172,10 +172,11 @@ po::options_description SystemRunOptions() {
                   "where the stick-slip attractor is sought, between --from and --to (default "
                   "--from); its branch is traced to --to and back to --from")(
       "transient", Value()->value_name("T"),
-      "the settling run's length in time units (default 3000)")(
+      "the settling run's length in time units (default 3000; not with a clock, whose run "
+      "from rest lasts 200 turns)")(
       "disturbance", Value()->value_name("D"),
       "the settling run starts at steady sliding with the first component moved by D "
-      "(default 0.01)");
+      "(default 0.01; not with a clock)");
   return d;
 }
 
