@@ -16,6 +16,7 @@
 #include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/io/resonance_report.hpp"
+#include "stickslip/io/system_branch_report.hpp"
 
 namespace stickslip::cli {
 
@@ -313,8 +314,12 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;
   for (const OrbitBranch& piece : pieces) specials += static_cast<int>(piece.special.size());
-  TsvTable branch = ForcedBranchTable(pieces, s.axis, s.p);
-  TsvTable special = ForcedSpecialTable(pieces, s.axis, s.p);
+  SystemRun r;  // the system's tables (system_branch_report.hpp): no steady sliding
+  r.parameter = s.axis.index();
+  r.pieces = pieces;
+  for (std::size_t i = 0; i < pieces.size(); ++i) r.numbers.push_back(static_cast<int>(i) + 1);
+  const ForcedModel system(s.p);
+  TsvTable branch = SystemBranchTable(system, r), special = SystemSpecialTable(system, r);
   branch.PrependMeta(meta);
   special.PrependMeta(meta);
   app.out().Write("branch.tsv", branch.str());
