@@ -20,7 +20,7 @@ namespace stickslip::cli {
 
 namespace {
 
-// The attractor at p, from steady sliding (a clock: the origin) + the disturbance.
+// The stick-slip attractor at p (no clock), from steady sliding + the disturbance.
 SettledOrbit Settle(const SystemSetup& s, double p, RunControl& run) {
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, p);
