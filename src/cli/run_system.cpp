@@ -154,10 +154,11 @@ std::string TraceOtherEnds(const SystemSetup& s, RunControl& run, SystemRun& r) 
     if (!settled.found) continue;
     const auto& a = r.pieces[i].rows;
     if (!a.empty() && !b.rows.empty())
-      gap += (gap.empty() ? "" : "; ") + std::string("not traced between ") +
-             FormatNumber(a.back().p) + " and " + FormatNumber(b.rows.back().p) +
-             ": |x| > max_amplitude " + FormatNumber(s.max_amplitude) +
-             " there (unbounded resonance)";
+      r.gap.insert(r.gap.end(), {a.back().p, b.rows.back().p}),
+          gap += (gap.empty() ? "" : "; ") + std::string("not traced between ") +
+                 FormatNumber(a.back().p) + " and " + FormatNumber(b.rows.back().p) +
+                 ": |x| > max_amplitude " + FormatNumber(s.max_amplitude) +
+                 " there (unbounded resonance)";
     r.numbers.push_back(*std::max_element(r.numbers.begin(), r.numbers.end()) + 1);
     r.pieces.push_back(std::move(b));
   }

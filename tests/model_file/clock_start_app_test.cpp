@@ -155,6 +155,10 @@ TEST_F(ClockStartApp, AnUnboundedResonanceIsTracedFromBothEnds) {
   EXPECT_LT(worst, 1e-7);
   EXPECT_LT(end1, 1) << "branch 1 stops below the resonance";
   EXPECT_EQ(end2, 2.5) << "branch 2 starts at --to";
+  // The figure shades the gap, from branch 1's last Omega to branch 2's.
+  const std::string gp = tu::ReadFile(dir + "/out/bifurcation.gp");
+  EXPECT_TRUE(tu::Contains(gp, "rect from " + t.meta.at("gap").substr(19, 10))) << gp;
+  EXPECT_TRUE(tu::Contains(gp, "not traced: unbounded")) << gp;
   std::printf("[ measured ] %d non-stop rows: max |x_max - X| / max(1, X) = %.2e\n", compared,
               worst);
 }
