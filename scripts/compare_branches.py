@@ -2,9 +2,14 @@
 """Compare two ss_continue output directories numerically, column by column.
 
 Usage: compare_branches.py BASE_DIR NEW_DIR [--tol 1e-12] [--files A.tsv,B.tsv]
+                           [--rename OLD=NEW,...] [--text OLD=NEW,...]
 
 --files names other files to compare the same way (default branch.tsv,
 special_points.tsv), e.g. ss_basin's basins.tsv,orbits.tsv.
+--rename compares by name across renamed and reordered columns: each of BASE's
+columns (OLD renamed NEW) is picked out of NEW wherever it stands, NEW's others
+not compared; --text renames BASE's text cells (e.g. the forced tables before
+they were the system's: --rename x0=x_0,xdot0=xdot_0 --text non-stop=pure-slip).
 
 For each file: the same header, the same number of
 rows, text cells equal, and every numeric cell within tol (absolute, scaled
@@ -47,13 +52,26 @@ def number(s):
         return None
 
 
-def compare(base, new, tol):
+def pairs(text):
+    return dict(item.split("=", 1) for item in text.split(",")) if text else {}
+
+
+def compare(base, new, tol, rename=None, text=None):
     hb, cb, rb = read(base)
     hn, cn, rn = read(new)
     errors = []
     added = 0
+    if rename is not None:  # by name: BASE's columns, renamed, picked out of NEW
+        want = [rename.get(c, c) for c in hb]
+        missing = [c for c in want if c not in hn]
+        if missing:
+            return [f"columns not in NEW: {missing}"], 0.0, len(rb), 0
+        added = len(hn) - len(want)
+        rn = [[r[hn.index(c)] for c in want] for r in rn]
+        rb = [[(text or {}).get(x, x) for x in r] for r in rb]
+        hn = hb
     if hn[:len(hb)] == hb:  # columns appended after BASE's: compare BASE's only
-        added = len(hn) - len(hb)
+        added = max(added, len(hn) - len(hb))
         rn = [r[:len(hb)] for r in rn]
     else:
         errors.append(f"header differs: {hb} vs {hn}")
@@ -92,7 +110,16 @@ def main():
     args = sys.argv[1:]
     tol = 1e-12
     names = ("branch.tsv", "special_points.tsv")
+    rename, text = None, None
     try:
+        if "--rename" in args:
+            k = args.index("--rename")
+            rename = pairs(args[k + 1])
+            del args[k:k + 2]
+        if "--text" in args:
+            k = args.index("--text")
+            text = pairs(args[k + 1])
+            del args[k:k + 2]
         if "--files" in args:
             k = args.index("--files")
             names = tuple(args[k + 1].split(","))
@@ -108,7 +135,8 @@ def main():
         return 2
     ok = True
     for name in names:
-        errors, worst, n, added = compare(f"{args[0]}/{name}", f"{args[1]}/{name}", tol)
+        errors, worst, n, added = compare(f"{args[0]}/{name}", f"{args[1]}/{name}", tol, rename,
+                                          text)
         status = "equal" if not errors else f"{len(errors)} differences"
         if added:
             status += f" ({added} new columns not compared)"

@@ -11,8 +11,8 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/clock_start.hpp"
 #include "cli/estimates_text.hpp"
-#include "cli/forced_start.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_continuation.hpp"
@@ -57,7 +57,7 @@ constexpr const char* kNotes =
     "--point HB1 starts at that point: its parameters, solver options and continued\n"
     "parameter are the defaults, --from is its value (--to the far end of the range).\n"
     "A forced run (--param: its law's, force or omega) restarts from a point (PD1, ...)\n"
-    "at its stroboscopic state (x0, xdot0); no --force needed.\n";
+    "at its stroboscopic state (x_0, xdot_0); no --force needed.\n";
 constexpr const char* kExample =
     "\nExample: ss_continue --study studies/seed.ini --param v --from 0.05 --to 0.5\n"
     "         ss_continue --restart plots --point HB1 --param beta --out hb_beta";

@@ -7,14 +7,16 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
-#include "cli/forced_start.hpp"
+#include "cli/clock_start.hpp"
 #include "cli/restart.hpp"
 #include "cli/run_log.hpp"
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/forced/branch.hpp"
 #include "stickslip/forced/flow.hpp"
 #include "stickslip/io/resonance_report.hpp"
+#include "stickslip/io/system_branch_report.hpp"
 
 namespace stickslip::cli {
 
@@ -112,10 +114,29 @@ BranchSetup Configure(const Arguments& args, const std::optional<LabelledPoint>&
   return s;
 }
 
-// The branch from the attractor the transient from rest settles on, with its
-// period (a period-11 attractor at Omega 1.5 on the seed belt at A 0.1);
-// if that is not periodic, Newton at m = 1 from the settled state; if that
-// fails, the first stable orbit of the start scan (forced_start.hpp).
+// ContinueForced from the orbit o (its m and point), cancelled by run.
+OrbitBranch ContinueFrom(const ForcedParams& base, ParameterAxis axis, double from, double to,
+                         const StartOrbit& o, const OrbitBranchOptions& opts, RunControl& run) {
+  OrbitBranchOptions c = opts;
+  c.palc.cancelled = [&run] { return run.Cancelled(); };  // SIGINT, --max_time
+  OrbitBranch b = ContinueForced(base, axis, from, to, o.z[0], o.z[1], o.m, c);
+  if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
+  return b;
+}
+
+// The forced oscillator's start (clock_start.hpp): from rest (x, x') = (0, v),
+// the scan's box its SearchBox.
+ClockStart StartOf(const ForcedModel& model, const OrbitBranchOptions& opts) {
+  ClockStart c;
+  c.rest = ForcedStart(model, 0, 0, model.v()).z;
+  c.opts = opts;
+  c.box = model.SearchBox();
+  return c;
+}
+
+// A restart's branch from its point, else the branch from the default start
+// (TraceFromDefaultStart, clock_start.hpp: a period-11 attractor at Omega 1.5
+// on the seed belt at A 0.1).
 OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run) {
   ForcedParams p = s.p;
   s.axis.Set(p, from);
@@ -129,23 +150,16 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
     if (b.status == BranchStatus::kCancelled) b.message = run.Reason();
     return b;
   }
-  const Vec2 z = SettledState(model, s.opts);
-  const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
-  if (settled && settled->m > 1) {
-    OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, *settled, s.opts, run);
-    if (b.status != BranchStatus::kStartFailed) return b;
-  }
-  StartOrbit newton;  // m = 1 (a restart's m at its far end) from the settled state
-  newton.m = s.m;
-  newton.x = z[0], newton.xdot = z[1];
-  OrbitBranch b = ContinueFrom(s.p, s.axis, from, to, newton, s.opts, run);
-  if (b.status != BranchStatus::kStartFailed || run.Cancelled()) return b;
-  const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, 0, run);
-  for (const StartOrbit& o : ChooseStart(list, StartChoice(), "")) {
-    OrbitBranch c = ContinueFrom(s.p, s.axis, from, to, o, s.opts, run);
-    if (c.status != BranchStatus::kStartFailed) return c;
-  }
-  return b;
+  SettledOrbit used;
+  return TraceFromDefaultStart(
+      model, StartOf(model, s.opts), run,
+      [&](const SettledOrbit& o) {
+        StartOrbit start;  // m = 1 from the transient's end: a restart's m at its far end
+        start.m = o.section.turns == 1 ? s.m : o.section.turns;
+        start.z = o.orbit.start.z.head(2);
+        return ContinueFrom(s.p, s.axis, from, to, start, s.opts, run);
+      },
+      &used);
 }
 
 // --all, --m, --point: the branches from the chosen orbits of the start list,
@@ -154,9 +168,10 @@ std::vector<OrbitBranch> TraceChosen(const BranchSetup& s, const StartChoice& c,
   ForcedParams p = s.p;
   s.axis.Set(p, s.from);
   const ForcedModel model(p);
-  const Vec2 z = SettledState(model, s.opts);
-  const std::optional<StartOrbit> settled = SettledStart(model, z[0], z[1], s.opts, run);
-  const std::vector<StartOrbit> list = StartOrbits(model, settled, s.opts, c.m, run);
+  const ClockStart start = StartOf(model, s.opts);
+  const std::optional<StartOrbit> settled =
+      SettledStart(model, SettledState(model, start), start, run);
+  const std::vector<StartOrbit> list = StartOrbits(model, settled, start, c.m, run);
   const std::string where = std::string(s.axis.name()) + " = " + FormatNumber(s.from);
   PrintStartOrbits(std::cout, list, where);
   const std::vector<StartOrbit> chosen = ChooseStart(list, c, where);
@@ -299,8 +314,12 @@ int RunForced(const Arguments& args, const std::string& prog, const std::string&
   if (!gap.empty()) meta.emplace_back("gap", gap);
   int specials = 0;
   for (const OrbitBranch& piece : pieces) specials += static_cast<int>(piece.special.size());
-  TsvTable branch = ForcedBranchTable(pieces, s.axis, s.p);
-  TsvTable special = ForcedSpecialTable(pieces, s.axis, s.p);
+  SystemRun r;  // the system's tables (system_branch_report.hpp): no steady sliding
+  r.parameter = s.axis.index();
+  r.pieces = pieces;
+  for (std::size_t i = 0; i < pieces.size(); ++i) r.numbers.push_back(static_cast<int>(i) + 1);
+  const ForcedModel system(s.p);
+  TsvTable branch = SystemBranchTable(system, r), special = SystemSpecialTable(system, r);
   branch.PrependMeta(meta);
   special.PrependMeta(meta);
   app.out().Write("branch.tsv", branch.str());

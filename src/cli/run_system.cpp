@@ -1,6 +1,7 @@
 // ss_continue --system (run_system.hpp).
 #include "cli/run_system.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "cli/app.hpp"
 #include "cli/system_choice.hpp"
 #include "cli/system_restart.hpp"
+#include "cli/system_setup.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 #include "stickslip/orbits/settle.hpp"
@@ -18,140 +20,10 @@ namespace stickslip::cli {
 
 namespace {
 
-// The rows of steady sliding are held: 1 / max_step + 1 of them at most.
-constexpr double kMinMaxStep = 1e-5;
-
-struct SystemSetup {
-  std::unique_ptr<System> system;  // at --from
-  SystemChoice choice = SystemChoice::kChain;
-  Params law;  // the contacts' law, as given
-  std::optional<SystemPoint> restart;
-  bool doubled = false;  // --switch: the period-doubled branch from a PD point
-  int param = 0;
-  double from = 0, to = 0, start_at = 0, max_step = 0.01, disturbance = 0.01;
-  double max_amplitude = OrbitBranchOptions().max_amplitude;
-  FlowOptions flow;
-  SettleOptions settle;
-};
-
-// A restart's start and range (system_restart.hpp): the run starts at the
-// point's value; in the run's own parameter it goes by default to the far end
-// of that run's range (at an LP: the end on the side of the fold's branch;
-// --switch: the doubled branch within that range), in another --to is
-// required.
-void ConfigureRestart(const Arguments& args, SystemSetup& s) {
-  const SystemPoint& sp = *s.restart;
-  if (sp.start.z.size() != s.system->dimension() || sp.contacts != s.system->contacts())
-    throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": the point has " +
-                     std::to_string(sp.start.z.size()) + " state components and " +
-                     std::to_string(sp.contacts) + " contacts, the system " +
-                     std::to_string(s.system->dimension()) + " and " +
-                     std::to_string(s.system->contacts()));
-  if ((sp.section.kind == SectionKind::kTime) != (s.system->clocks() == 1))
-    throw UsageError(args.Source("restart") + " " + args.Text("restart") + ": its orbits are on " +
-                     (sp.section.kind == SectionKind::kTime ? "a clock's turns" : "a stick exit") +
-                     ", and the system has " + std::to_string(s.system->clocks()) + " clocks");
-  if (args.Given("start_at"))
-    throw UsageError(args.Source("start_at") + ": a restart starts at its point");
-  const double p = s.system->ParameterValue(s.param);
-  s.start_at = s.from = p;
-  const bool same = s.system->ParameterName(s.param) == sp.continued;
-  if (same) {
-    s.to = std::abs(sp.run_to - p) >= std::abs(sp.run_from - p) ? sp.run_to : sp.run_from;
-    const double end =
-        sp.fold_side > 0 ? std::max(sp.run_from, sp.run_to) : std::min(sp.run_from, sp.run_to);
-    if (sp.type == "LP" && (end - p) * sp.fold_side > 0) s.to = end;
-  } else if (!args.Given("to"))
-    throw UsageError("--to is required with --restart in " + s.system->ParameterName(s.param) +
-                     " (the run's parameter is " + sp.continued + ")");
-  if (!args.Flag("switch")) return;
-  if (sp.type != "PD")
-    throw UsageError(args.Source("switch") + " needs --point PDn (a period doubling), not " +
-                     sp.label + " (" + sp.type + ")");
-  if (!same)
-    throw UsageError(args.Source("switch") + " continues the doubled branch in " + sp.continued +
-                     ", the PD point's parameter");
-  s.doubled = true;
-  s.from = sp.run_from, s.to = sp.run_to;
-}
-
-SystemSetup Configure(const Arguments& args) {
-  for (const char* o : {"all", "m", "floquet", "no_estimates"})
-    if (args.Given(o) && (args.map()[o].value().type() != typeid(bool) || args.Flag(o)))
-      throw UsageError(args.Source(o) + " applies to the belt and the forced oscillator, not to " +
-                       SystemLabel(args));
-  SystemSetup s;
-  if (args.Given("restart")) s.restart = SystemRestartFromArguments(args);
-  if (args.Given("point") && !s.restart)
-    throw UsageError(args.Source("point") + " " + args.Text("point") + " needs --restart DIR");
-  if (args.Flag("switch") && !s.restart)
-    throw UsageError(args.Source("switch") + " needs --restart DIR --point PDn");
-  s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
-  s.system = SystemFromArguments(args, s.restart ? &*s.restart : nullptr);
-  s.choice = SystemChoiceOf(args);
-  if (s.restart) FromName(s.restart->system, &s.choice);  // known: SystemFromArguments built it
-  const std::string system = Name(s.choice);
-  if (!args.Given("param") && !s.restart)
-    throw UsageError("--param is required with " + SystemLabel(args) + " (one of " +
-                     ParameterList(*s.system) + ")");
-  const std::string param = args.Text("param", s.restart ? s.restart->continued : "");
-  s.param = s.system->ParameterIndex(param);
-  if (s.param < 0)
-    throw UsageError(args.Source("param") + ": '" + param + "' is no parameter of " + system +
-                     " (its parameters: " + ParameterList(*s.system) + ")");
-  s.from = s.system->ParameterValue(s.param);
-  if (s.restart) ConfigureRestart(args, s);
-  if (!args.Given("to") && !s.restart) throw UsageError("--to is required with --system");
-  s.from = args.Number("from", s.from);
-  s.to = args.Number("to", s.to);
-  if (s.to == s.from) throw UsageError(args.Source("to") + " must differ from --from");
-  for (const auto& [name, value] : {std::pair{"from", s.from}, std::pair{"to", s.to}}) {
-    std::unique_ptr<System> at = s.system->Clone();
-    at->SetParameterValue(s.param, value);
-    if (const std::string e = at->ValidationError(); !e.empty())
-      throw UsageError((args.Given(name) ? args.Source(name) : std::string("--") + name) + " = " +
-                       FormatNumber(value) + ": " + e);
-  }
-  s.system->SetParameterValue(s.param, s.from);
-  if (!s.restart) s.start_at = args.Number("start_at", s.from);
-  if (!(std::min(s.from, s.to) <= s.start_at && s.start_at <= std::max(s.from, s.to)))
-    throw UsageError(
-        (s.restart ? "--restart " + args.Text("restart") + " point " + args.Text("point") + ": its "
-                   : args.Source("start_at") + " = ") +
-        param + " = " + FormatNumber(s.start_at) + " must lie between --from and --to" +
-        (s.doubled ? ", not at either" : ""));
-  if (s.doubled && (s.start_at == s.from || s.start_at == s.to))
-    throw UsageError(args.Source("switch") + ": the PD point's " + param + " = " +
-                     FormatNumber(s.start_at) + " must lie strictly between --from and --to");
-  s.max_step = args.Number("max_step", s.max_step);
-  if (!(s.max_step >= kMinMaxStep && s.max_step <= 1))
-    throw UsageError(args.Source("max_step") + " = " + FormatNumber(s.max_step) + " must lie in [" +
-                     FormatNumber(kMinMaxStep) + ", 1] (1 / max_step rows of steady sliding)");
-  if (s.max_step * std::abs(s.to - s.from) < OrbitBranchOptions().palc.ds_min)
-    throw UsageError(
-        "--max_step x |--to - --from| = " + FormatNumber(s.max_step * std::abs(s.to - s.from)) +
-        " is below the branch's smallest step " + FormatNumber(OrbitBranchOptions().palc.ds_min) +
-        ": widen the range or raise --max_step");
-  s.max_amplitude =
-      args.Number("max_amplitude", s.restart ? s.restart->max_amplitude : s.max_amplitude);
-  if (!(s.max_amplitude > 0))
-    throw UsageError(args.Source("max_amplitude") + " = " + FormatNumber(s.max_amplitude) +
-                     " must be > 0");
-  s.flow = FlowOptionsFromArguments(args, s.restart ? s.restart->flow : FlowOptions());
-  s.settle.shooting.flow = s.flow;
-  s.settle.transient = args.Number("transient", s.settle.transient);
-  // Each contact may stick once per period: the recurrence looks that far (a clock: turns).
-  s.settle.max_returns = std::max(s.settle.max_returns, 2 * s.system->contacts());
-  s.disturbance = args.Number("disturbance", s.disturbance);
-  if (const std::string e = s.settle.ValidationError(); !e.empty())
-    throw UsageError(args.Source("transient") + ": " + e);
-  return s;
-}
-
-// The attractor at start_at, from steady sliding (a clock: the origin) + the disturbance.
-SettledOrbit Settle(const SystemSetup& s, RunControl& run) {
+// The stick-slip attractor at p (no clock), from steady sliding + the disturbance.
+SettledOrbit Settle(const SystemSetup& s, double p, RunControl& run) {
   std::unique_ptr<System> at = s.system->Clone();
-  at->SetParameterValue(s.param, s.start_at);
+  at->SetParameterValue(s.param, p);
   SettleOptions o = s.settle;
   o.cancelled = [&run] { return run.Cancelled(); };
   return SettleOnStickSlip(*at, NearSteadySliding(*at, s.disturbance), o);
@@ -172,25 +44,125 @@ SettledOrbit AtPoint(const SystemSetup& s, const SystemPoint& sp) {
   return o;
 }
 
-// The branch from the start to `to`; a restart's leaves along the tangent
-// (at an LP, `side` 1 or -1 picks the half; 0 elsewhere); --switch: the doubled branch from the
-// PD point to whichever end it opens toward.
-OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, int side,
-                  RunControl& run) {
-  std::unique_ptr<System> at = s.system->Clone();
-  at->SetParameterValue(s.param, s.start_at);
+// The branch options of every piece (and a clock's start list).
+OrbitBranchOptions BranchOptions(const SystemSetup& s) {
   OrbitBranchOptions o;
   o.shooting.flow = s.flow;
   o.palc.ds_max = s.max_step * std::abs(s.to - s.from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
-  o.palc.cancelled = [&run] { return run.Cancelled(); };
   o.max_amplitude = s.max_amplitude;
+  return o;
+}
+
+// The branch from the start (at `from`) to `to`; a restart's leaves along the tangent
+// (at an LP, `side` 1 or -1 picks the half; 0 elsewhere); --switch: the doubled branch from the
+// PD point to whichever end it opens toward.
+OrbitBranch Piece(const SystemSetup& s, const SettledOrbit& settled, double to, int side,
+                  RunControl& run, double from) {
+  std::unique_ptr<System> at = s.system->Clone();
+  at->SetParameterValue(s.param, from);
+  OrbitBranchOptions o = BranchOptions(s);
+  o.palc.cancelled = [&run] { return run.Cancelled(); };
   if (s.doubled)
     return ContinueDoubled(*at, s.param, settled.orbit.start, settled.section,
                            std::min(s.from, s.to), std::max(s.from, s.to), o);
   if (s.restart)
     return ContinueOrbitsFrom(*at, s.param, settled.orbit.start, settled.section, to, side, o);
   return ContinueOrbits(*at, s.param, settled.orbit.start, settled.section, to, o);
+}
+
+// A system with a clock: its start from rest (clock_start.hpp), the scan's
+// box FindOrbits' own.
+ClockStart ClockStartOf(const SystemSetup& s, const System& at) {
+  ClockStart c;
+  c.rest = RestOnContacts(at);
+  c.opts = BranchOptions(s);
+  return c;
+}
+
+// The orbits a restart or a clock's start list (--all, --m, --point) starts on.
+std::vector<SettledOrbit> Starts(const SystemSetup& s, const SettledOrbit& settled,
+                                 RunControl& run) {
+  if (!s.start.scan())
+    return settled.found ? std::vector<SettledOrbit>{settled} : std::vector<SettledOrbit>();
+  std::unique_ptr<System> at = s.system->Clone();
+  at->SetParameterValue(s.param, s.start_at);
+  const std::string where = s.system->ParameterName(s.param) + " = " + FormatNumber(s.start_at);
+  return ChosenStarts(*at, ClockStartOf(s, *at), s.start, where, std::cout, run);
+}
+
+// The piece from the start at p toward `to`: a clock's default start
+// (TraceFromDefaultStart), else the attractor settled on. *used: its start.
+OrbitBranch FirstPiece(const SystemSetup& s, double p, double to, RunControl& run,
+                       SettledOrbit* used) {
+  auto trace = [&](const SettledOrbit& o) { return Piece(s, o, to, 0, run, p); };
+  if (s.system->clocks() == 1) {
+    std::unique_ptr<System> at = s.system->Clone();
+    at->SetParameterValue(s.param, p);
+    return TraceFromDefaultStart(*at, ClockStartOf(s, *at), run, trace, used);
+  }
+  *used = Settle(s, p, run);
+  return used->found ? trace(*used) : OrbitBranch();
+}
+
+// Without a restart or a start list: branch 1 from the start at --start_at
+// toward --to, branch 2 from the same orbit back toward --from.
+void TraceDefault(const SystemSetup& s, RunControl& run, SystemRun& r, SettledOrbit* settled) {
+  const bool up = s.start_at != s.to;
+  OrbitBranch first = FirstPiece(s, s.start_at, up ? s.to : s.from, run, settled);
+  if (!settled->found) return;
+  r.pieces.push_back(std::move(first)), r.numbers.push_back(up ? 1 : 2);
+  if (up && s.start_at != s.from)
+    r.pieces.push_back(Piece(s, *settled, s.from, 0, run, s.start_at)), r.numbers.push_back(2);
+}
+
+// The pieces from each start: toward --to (1) and back toward --from (2; the
+// numbers stay where one is not traced); a fold's restart: both halves;
+// --switch: the doubled branch. A start list's pieces are numbered in turn.
+void TracePieces(const SystemSetup& s, const std::vector<SettledOrbit>& starts, RunControl& run,
+                 SystemRun& r) {
+  const bool fold = s.restart && s.restart->type == "LP";
+  int first = 1;
+  for (const SettledOrbit& start : starts) {
+    if (s.doubled) {
+      r.pieces.push_back(Piece(s, start, s.to, 0, run, s.start_at)), r.numbers.push_back(first);
+    } else {
+      if (s.start_at != s.to)
+        r.pieces.push_back(Piece(s, start, s.to, fold ? 1 : 0, run, s.start_at)),
+            r.numbers.push_back(first);
+      if (s.start_at != s.from || (fold && s.start_at != s.to))
+        r.pieces.push_back(Piece(s, start, fold ? s.to : s.from, fold ? -1 : 0, run, s.start_at)),
+            r.numbers.push_back(first + 1);
+    }
+    first = s.start.scan() ? static_cast<int>(r.pieces.size()) + 1 : first + 2;
+  }
+}
+
+// A piece that left max_amplitude (kUnbounded: an undamped resonance) is
+// traced from its far end too, back toward --start_at, as the next branch;
+// the interval between is named (the files' `gap`). Not for a restart, a
+// start list or --switch.
+std::string TraceOtherEnds(const SystemSetup& s, RunControl& run, SystemRun& r) {
+  std::string gap;
+  if (s.restart || s.start.scan()) return gap;
+  const std::size_t n = r.pieces.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (r.pieces[i].status != BranchStatus::kUnbounded || run.Cancelled()) continue;
+    const double end = r.numbers[i] % 2 ? s.to : s.from;
+    SettledOrbit settled;
+    OrbitBranch b = FirstPiece(s, end, s.start_at, run, &settled);
+    if (!settled.found) continue;
+    const auto& a = r.pieces[i].rows;
+    if (!a.empty() && !b.rows.empty())
+      r.gap.insert(r.gap.end(), {a.back().p, b.rows.back().p}),
+          gap += (gap.empty() ? "" : "; ") + std::string("not traced between ") +
+                 FormatNumber(a.back().p) + " and " + FormatNumber(b.rows.back().p) +
+                 ": |x| > max_amplitude " + FormatNumber(s.max_amplitude) +
+                 " there (unbounded resonance)";
+    r.numbers.push_back(*std::max_element(r.numbers.begin(), r.numbers.end()) + 1);
+    r.pieces.push_back(std::move(b));
+  }
+  return gap;
 }
 
 }  // namespace
@@ -201,10 +173,11 @@ po::options_description SystemRunOptions() {
                   "where the stick-slip attractor is sought, between --from and --to (default "
                   "--from); its branch is traced to --to and back to --from")(
       "transient", Value()->value_name("T"),
-      "the settling run's length in time units (default 3000)")(
+      "the settling run's length in time units (default 3000; not with a clock, whose run "
+      "from rest lasts 200 turns)")(
       "disturbance", Value()->value_name("D"),
       "the settling run starts at steady sliding with the first component moved by D "
-      "(default 0.01)");
+      "(default 0.01; not with a clock)");
   return d;
 }
 
@@ -217,13 +190,13 @@ std::string NoOrbit(const SettledOrbit& settled) {
 
 // Why the run is cut short ("" if complete): the first piece that did not
 // end where it should, or a settling run that failed or was cancelled.
-std::string Partial(const SystemRun& r, const SettledOrbit& settled, RunControl& run) {
+std::string Partial(const SystemRun& r, const SettledOrbit& settled, RunControl& run, bool gap) {
   auto cut = [&](const std::string& what, BranchStatus b, const std::string& message) {
     return what + " " + Name(b) + ": " + (b == BranchStatus::kCancelled ? run.Reason() : message);
   };
   if (!Complete(r.steady.status)) return cut("steady sliding", r.steady.status, r.steady.message);
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
-    if (!Complete(r.pieces[i].status))
+    if (!Complete(r.pieces[i].status) && !(gap && r.pieces[i].status == BranchStatus::kUnbounded))
       return cut("branch " + std::to_string(r.numbers[i]), r.pieces[i].status, r.pieces[i].message);
   if (settled.found) return "";
   if (run.Cancelled()) return "no attractor: " + run.Reason();
@@ -237,23 +210,26 @@ std::string Partial(const SystemRun& r, const SettledOrbit& settled, RunControl&
 
 Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrbit& settled,
                       const std::string& model, Metadata meta) {
-  meta.insert(meta.end(),
-              {{"system", model},
-               {"continued", s.system->ParameterName(s.param)},
-               {"from", FormatNumber(s.from)},
-               {"to", FormatNumber(s.to)},
-               {"start_at", FormatNumber(s.start_at)},
-               {"orbit", s.restart       ? std::string("the restart point's orbit, no settling")
-                         : settled.found ? "the attractor settled on from " +
-                                               std::string(s.system->clocks() ? "the origin"
-                                                                              : "steady sliding") +
-                                               " + " + FormatNumber(s.disturbance) + " after " +
-                                               FormatNumber(s.settle.transient) + " time units"
-                                         : "none: " + NoOrbit(settled)},
-               {"rtol", FormatNumber(s.flow.rtol)},
-               {"atol", FormatNumber(s.flow.atol)},
-               {"steady_status", s.system->clocks() ? std::string("none: a clock, no rest point")
-                                                    : std::string(Name(r.steady.status))}});
+  meta.insert(
+      meta.end(),
+      {{"system", model},
+       {"continued", s.system->ParameterName(s.param)},
+       {"from", FormatNumber(s.from)},
+       {"to", FormatNumber(s.to)},
+       {"start_at", FormatNumber(s.start_at)},
+       {"orbit", s.restart        ? std::string("the restart point's orbit, no settling")
+                 : s.start.scan() ? "the start list's orbits at " + FormatNumber(s.start_at) +
+                                        (settled.found ? "" : ": none chosen")
+                 : settled.found
+                     ? "the attractor settled on from " +
+                           std::string(s.system->clocks() ? "the origin" : "steady sliding") +
+                           " + " + FormatNumber(s.disturbance) + " after " +
+                           FormatNumber(s.settle.transient) + " time units"
+                     : "none: " + NoOrbit(settled)},
+       {"rtol", FormatNumber(s.flow.rtol)},
+       {"atol", FormatNumber(s.flow.atol)},
+       {"steady_status", s.system->clocks() ? std::string("none: a clock, no rest point")
+                                            : std::string(Name(r.steady.status))}});
   PoincareSection section = settled.section;  // ContinueDoubled's: twice the returns or turns
   if (section.kind == SectionKind::kTime)
     section.turns *= s.doubled ? 2 : 1;
@@ -291,7 +267,7 @@ void PrintSummary(const std::string& prog, const std::string& model, const Syste
 }  // namespace
 
 int RunSystem(const Arguments& args, const std::string& prog, const std::string& command) {
-  SystemSetup s = Configure(args);
+  SystemSetup s = ConfigureSystemRun(args);
   const FigureFormat format = FigureFormatOf(args);
   std::vector<std::string> names = {"branch.tsv", "special_points.tsv", "bifurcation.gp"};
   for (const std::string& f : SystemBranchFigures(format)) names.push_back(f);
@@ -306,21 +282,21 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   r.steady.status = BranchStatus::kReachedEnd;  // a forcing has no rest point
   if (s.system->clocks() == 0) r.steady = ContinueSteadySliding(*s.system, s.param, s.to, so);
   run.Phase("settling");
-  const SettledOrbit settled = run.Cancelled() ? SettledOrbit()
-                               : s.restart     ? AtPoint(s, *s.restart)
-                                               : Settle(s, run);
-  run.Phase("continuing");
-  const bool fold = s.restart && s.restart->type == "LP";
-  if (s.doubled && settled.found) {
-    r.pieces.push_back(Piece(s, settled, s.to, 0, run)), r.numbers.push_back(1);
-  } else if (settled.found) {  // 1 toward --to, 2 back toward --from (a fold: both halves)
-    if (s.start_at != s.to)
-      r.pieces.push_back(Piece(s, settled, s.to, fold ? 1 : 0, run)), r.numbers.push_back(1);
-    if (s.start_at != s.from || (fold && s.start_at != s.to))
-      r.pieces.push_back(Piece(s, settled, fold ? s.to : s.from, fold ? -1 : 0, run)),
-          r.numbers.push_back(2);
+  SettledOrbit settled;
+  if (!run.Cancelled() && (s.restart || s.start.scan())) {
+    if (s.restart) settled = AtPoint(s, *s.restart);
+    const std::vector<SettledOrbit> starts = Starts(s, settled, run);
+    if (s.start.scan()) {  // the first chosen orbit stands for the start (its section)
+      settled.message = "no orbit of the start list chosen";
+      if (!starts.empty()) settled = starts.front();
+    }
+    run.Phase("continuing");
+    TracePieces(s, starts, run, r);
+  } else if (!run.Cancelled()) {
+    TraceDefault(s, run, r, &settled);
   }
-  const std::string partial = Partial(r, settled, run);
+  const std::string gap = TraceOtherEnds(s, run, r);
+  const std::string partial = Partial(r, settled, run, !gap.empty());
   const std::string model = DescribeSystem(*s.system, s.choice, s.param);
   Metadata meta = FileMetadata(s, r, settled, model, ToolMetadata(prog, command));
   if (s.restart) meta.emplace_back("restart", DescribeSystemRestart(args, *s.restart));
@@ -332,6 +308,7 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
                                     std::to_string(2 * m));
   }
   meta.emplace_back("status", partial.empty() ? "complete" : "partial: " + partial);
+  if (!gap.empty()) meta.emplace_back("gap", gap);
   TsvTable branch = SystemBranchTable(*s.system, r), special = SystemSpecialTable(*s.system, r);
   branch.PrependMeta(meta);
   special.PrependMeta(meta);

@@ -1,104 +1,11 @@
-// The forced branch as TSV tables and the resonance figure's script.
+// The forced branch's resonance figure script (resonance_report.hpp).
 #include "stickslip/io/resonance_report.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 
-#include "stickslip/errors.hpp"
-
 namespace stickslip {
-
-namespace {
-
-std::vector<std::string> Columns(ParameterAxis axis) {
-  return {"branch",   axis.name(), "m",        "sticks",   "crossings", "kind",  "x_min",
-          "x_max",    "xdot_min",  "xdot_max", "period",   "x0",        "xdot0", "mult1_re",
-          "mult1_im", "mult2_re",  "mult2_im", "mult_max", "stable",    "pt"};
-}
-
-std::vector<TsvTable::Cell> Cells(const OrbitRow& r, int piece, const OrbitBranch& branch,
-                                  const ForcedParams& p, ParameterAxis axis) {
-  ForcedParams at = p;
-  axis.Set(at, r.p);
-  const int m = PeriodMultiple(branch);
-  const double period = m * 2 * M_PI / at.omega;
-  const double mult_max = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
-  const Extrema e = RowExtrema(r);
-  const double numbers[] = {r.p,
-                            e.x_min,
-                            e.x_max,
-                            e.xdot_min,
-                            e.xdot_max,
-                            period,
-                            r.start.z[0],
-                            r.start.z[1],
-                            r.multipliers[0].real(),
-                            r.multipliers[0].imag(),
-                            r.multipliers[1].real(),
-                            r.multipliers[1].imag(),
-                            mult_max};
-  for (double x : numbers)
-    if (!std::isfinite(x))
-      throw InvalidArgument("forced branch row at " + std::string(axis.name()) + " = " +
-                            FormatNumber(r.p) + " has a non-finite value");
-  return {piece,           r.p,         m,
-          r.sticks,        r.crossings, r.sticks > 0 ? "stick-slip" : "non-stop",
-          numbers[1],      numbers[2],  numbers[3],
-          numbers[4],      period,      numbers[6],
-          numbers[7],      numbers[8],  numbers[9],
-          numbers[10],     numbers[11], mult_max,
-          r.stable ? 1 : 0};
-}
-
-// Every row with its piece (1-based), its point number (pt, 1-based over the
-// pieces) and, for the special ones, the label with its index per type (GR1,
-// CR1, PD1, ...).
-template <class F>
-void ForEachRow(const std::vector<OrbitBranch>& pieces, F f) {
-  int pt = 0;
-  std::map<SpecialKind, int> count;
-  for (size_t i = 0; i < pieces.size(); ++i)
-    for (const OrbitRow& r : pieces[i].rows) {
-      ++pt;
-      const std::string lab = r.label == SpecialKind::kNone
-                                  ? ""
-                                  : std::string(Name(r.label)) + std::to_string(++count[r.label]);
-      f(static_cast<int>(i) + 1, pieces[i], r, pt, lab);
-    }
-}
-
-}  // namespace
-
-TsvTable ForcedBranchTable(const std::vector<OrbitBranch>& pieces, ParameterAxis axis,
-                           const ForcedParams& p) {
-  auto cols = Columns(axis);
-  TsvTable t(cols);
-  ForEachRow(pieces,
-             [&](int piece, const OrbitBranch& b, const OrbitRow& r, int pt, const std::string&) {
-               auto cells = Cells(r, piece, b, p, axis);
-               cells.push_back(pt);
-               t.AddRow(cells);
-             });
-  return t;
-}
-
-TsvTable ForcedSpecialTable(const std::vector<OrbitBranch>& pieces, ParameterAxis axis,
-                            const ForcedParams& p) {
-  auto cols = Columns(axis);
-  cols.insert(cols.begin(), "label");
-  cols.insert(cols.end(), {"lab", "description"});
-  TsvTable t(cols);
-  ForEachRow(pieces, [&](int piece, const OrbitBranch& b, const OrbitRow& r, int pt,
-                         const std::string& lab) {
-    if (lab.empty()) return;
-    auto cells = Cells(r, piece, b, p, axis);
-    cells.insert(cells.begin(), Name(r.label));
-    cells.insert(cells.end(), {pt, lab, r.description});
-    t.AddRow(cells);
-  });
-  return t;
-}
 
 bool DenHartogApplies(const ForcedParams& p, ParameterAxis axis) {
   return axis == Parameter::kOmega && p.base.law == LawKind::kCoulomb &&
@@ -131,7 +38,7 @@ std::string ResonanceScript(const ForcedParams& p, ParameterAxis axis, int piece
      << "array X[N]; array Y[N]; array B[N]; array K[N]; array S[N]; array P[N]; array D[2*N]\n"
      << "array R[4] = [0, 0, 0, 0]  # rows per style: a key entry only for a drawn style\n"
      << "stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('" << ax
-     << "'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'non-stop'), "
+     << "'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'pure-slip'), "
         "S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) "
         "nooutput\n";
   if (specials > 0) os << "stats 'special_points.tsv' using (P[int(c('pt'))] = 1, 0) nooutput\n";
@@ -155,9 +62,9 @@ std::string ResonanceScript(const ForcedParams& p, ParameterAxis axis, int piece
        << "D(w) = V(w)**2 - (mu * U(w))**2\n"
        << "DH(w) = D(w) > 0 ? sqrt(D(w)) : 1/0\n";
   os << "plot \\\n";
-  // The belt figures' styles (figure_style.hpp): stick-slip blue, non-stop
-  // (pure slip) vermillion; stable solid, unstable dashed.
-  const char* kinds[] = {"non-stop", "stick-slip"};
+  // The belt figures' styles (figure_style.hpp): stick-slip blue, pure-slip
+  // (non-stop) vermillion; stable solid, unstable dashed.
+  const char* kinds[] = {"pure-slip", "stick-slip"};  // the tables' kind
   const int styles[] = {kStylePureSlip, kStyleStickSlip};
   bool first = true;
   for (int k = 0; k < 2; ++k)
@@ -169,7 +76,7 @@ std::string ResonanceScript(const ForcedParams& p, ParameterAxis axis, int piece
     }
   for (int b = 1; b <= pieces && dh; ++b)  // on the computed non-stop rows only
     os << ", \\\n  'branch.tsv' using '" << ax << "':(c('branch') == " << b
-       << " && strcol('kind') eq 'non-stop' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
+       << " && strcol('kind') eq 'pure-slip' ? DH(c('" << ax << "')) : 1/0) with lines lw 1 "
        << "dt (4, 6) lc rgb 'black' "
        << (b == 1 ? "title 'Den Hartog (1931) closed form'" : "notitle");
   // LP, PD, NS and the sliding points, located (special_points.tsv), labelled

@@ -71,7 +71,8 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   } else {
     lp->param.Set(lp->params, lp->p);
   }
-  const std::string x = lp->forced ? "x0" : "x_start", xdot = lp->forced ? "xdot0" : "xdot_start";
+  // A forced run's tables are the system's (x_0, xdot_0: its point at phase 0).
+  const std::string x = lp->forced ? "x_0" : "x_start", xdot = lp->forced ? "xdot_0" : "xdot_start";
   lp->state = Vec2(t.Number(row[t.Column(x)], x), t.Number(row[t.Column(xdot)], xdot));
   const std::string& period = row[t.Column("period")];
   lp->period = t.Optional(period, "period");  // empty on steady sliding

@@ -27,6 +27,7 @@ std::vector<SystemLine> SystemLines(const System& s, const SystemRun& run) {
       l.branch = b < run.numbers.size() ? run.numbers[b] : static_cast<int>(b) + 1, l.p = r.p;
       l.kind = r.sticks > 0 ? "stick-slip" : "pure-slip";
       l.sticks = r.sticks, l.exits = r.exits, l.crossings = r.crossings;
+      l.turns = run.pieces[b].section.kind == SectionKind::kTime ? run.pieces[b].section.turns : 0;
       l.period = r.period, l.lo = r.lo, l.hi = r.hi, l.z0 = r.start.z, l.mode = r.start.mode;
       l.multipliers = r.multipliers, l.stable = r.stable;
       l.mult_max = 0;
@@ -52,6 +53,7 @@ using io_detail::SystemLine;
 std::vector<std::string> Columns(const System& s, const SystemRun& run, int k) {
   std::vector<std::string> c = {
       "branch", s.ParameterName(run.parameter), "kind", "sticks", "exits", "crossings", "period"};
+  if (s.clocks() == 1) c.insert(c.begin() + 2, "m");  // the period in clock turns
   for (int i = 0; i < s.tangent_dimension(); ++i)
     c.insert(c.end(), {StateColumn(s, i) + "_min", StateColumn(s, i) + "_max"});
   for (int i = 0; i < s.dimension(); ++i) c.push_back(StateColumn(s, i) + "_0");
@@ -65,14 +67,15 @@ std::vector<std::string> Columns(const System& s, const SystemRun& run, int k) {
 // A row's cells; what does not apply is empty (no nan): the period, the
 // multipliers and mult_max on equilibrium rows, multipliers past the row's
 // count, max_real on orbit rows.
-std::vector<TsvTable::Cell> Cells(const SystemLine& l, int k, int pt, int contacts) {
+std::vector<TsvTable::Cell> Cells(const System& s, const SystemLine& l, int k, int pt) {
   const bool eq = l.branch == 0;
   const TsvTable::Cell none("");
   std::vector<TsvTable::Cell> row = {
       l.branch, l.p, l.kind, l.sticks, l.exits, l.crossings, eq ? none : l.period};
+  if (s.clocks() == 1) row.insert(row.begin() + 2, l.turns);
   for (Eigen::Index i = 0; i < l.lo.size(); ++i) row.insert(row.end(), {l.lo[i], l.hi[i]});
   for (Eigen::Index i = 0; i < l.z0.size(); ++i) row.emplace_back(l.z0[i]);
-  row.emplace_back(ModeSetName(l.mode, contacts));
+  row.emplace_back(ModeSetName(l.mode, s.contacts()));
   for (int j = 0; j < k; ++j) {
     if (j < static_cast<int>(l.multipliers.size()))
       row.insert(row.end(), {l.multipliers[j].real(), l.multipliers[j].imag()});
@@ -109,7 +112,7 @@ TsvTable SystemBranchTable(const System& s, const SystemRun& run) {
   const int k = io_detail::Multipliers(lines);
   TsvTable t(Columns(s, run, k));
   int pt = 0;
-  for (const SystemLine& l : lines) t.AddRow(Cells(l, k, ++pt, s.contacts()));
+  for (const SystemLine& l : lines) t.AddRow(Cells(s, l, k, ++pt));
   return t;
 }
 
@@ -125,7 +128,7 @@ TsvTable SystemSpecialTable(const System& s, const SystemRun& run) {
   for (const SystemLine& l : lines) {
     ++pt;
     if (l.label == SpecialKind::kNone) continue;
-    std::vector<TsvTable::Cell> row = Cells(l, k, pt, s.contacts());
+    std::vector<TsvTable::Cell> row = Cells(s, l, k, pt);
     row.insert(row.begin(), Name(l.label));
     row.emplace_back(std::string(Name(l.label)) + std::to_string(++count[l.label]));
     row.emplace_back(l.description);

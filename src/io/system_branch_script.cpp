@@ -85,6 +85,13 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
      << "set xlabel " << GnuplotQuoted(EnhancedText(p)) << "\nset autoscale xfix\n"
      << "set ylabel " << GnuplotQuoted(EnhancedText(s.StateName(0) + " (min and max)")) << "\n"
      << "set offsets 0, 0, graph 0.12, graph 0.05\n";
+  for (std::size_t i = 0; i + 1 < run.gap.size(); i += 2)  // shaded in every panel
+    os << "set object " << i / 2 + 1 << " rect from "
+       << FormatNumber(std::min(run.gap[i], run.gap[i + 1])) << ", graph 0 to "
+       << FormatNumber(std::max(run.gap[i], run.gap[i + 1]))
+       << ", graph 1 fc rgb '#e8e8e8' fs solid noborder behind\nset label " << i / 2 + 1
+       << " 'not traced: unbounded' at " << FormatNumber(std::max(run.gap[i], run.gap[i + 1]))
+       << ", graph 0.93 offset 1, 0 tc rgb '#555555'\n";
   Panel(os, lines, p, {x + "_max", x + "_min"}, true, false);
   // The located points, labelled above and below in turn (gnuplot 5.4
   // crashes on a labels plot without a defined point: the second only with two).
@@ -96,7 +103,7 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
        << "_max') : 1/0):'lab' with labels offset 0, " << (k ? "-1.2" : "1.2")
        << " boxed font ',10' notitle";
   if (orbits) {
-    os << "\nset key off\nset bmargin 3.5\nset offsets 0, 0, graph 0.05, graph 0.05\n"
+    os << "\nunset label\nset key off\nset bmargin 3.5\nset offsets 0, 0, graph 0.05, graph 0.05\n"
        << "set ylabel 'period'\n";
     Panel(os, lines, p, {"period"}, false, true);
     os << "\nset ylabel 'largest |Floquet multiplier|'\nset yrange [0:*]\n";

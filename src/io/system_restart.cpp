@@ -3,6 +3,7 @@
 // columns.
 #include "stickslip/io/system_restart.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -125,6 +126,10 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* s
     from = comma + 1;
   }
   sp->period = t.Optional(row[t.Column("period")], "period");  // empty on steady sliding
+  // A clock's turns per period: the row's own (a start list's pieces differ).
+  if (sp->section.kind == SectionKind::kTime &&
+      std::find(t.header.begin(), t.header.end(), "m") != t.header.end())
+    sp->section.turns = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, kMaxReturns));
   if (!std::isfinite(sp->p) || !sp->start.z.allFinite() ||
       (sp->periodic() && !(std::isfinite(sp->period) && sp->period > 0)))
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + sp->label +

@@ -16,6 +16,7 @@ struct SystemLine {
   double p = 0;
   std::string kind;  ///< equilibrium, stick-slip, pure-slip
   int sticks = 0, exits = 0, crossings = 0;
+  int turns = 0;  ///< a clock's turns per period (its piece's section), else 0
   double period = 0;
   Eigen::VectorXd lo, hi, z0;
   ModeSet mode;  ///< z0's mode (steady sliding: every contact slips below)

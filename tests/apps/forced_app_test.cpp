@@ -41,7 +41,7 @@ TEST_F(ForcedApp, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   for (const auto& row : t.rows) {
     ASSERT_EQ(row.size(), t.columns.size());
     EXPECT_EQ(row[m], "1");
-    if (row[kind] != "non-stop") continue;
+    if (row[kind] != "pure-slip") continue;
     EXPECT_EQ(row[sticks], "0");
     const double w = std::stod(row[omega]), x = std::stod(row[x_max]);
     const double X = DenHartogX(0.3, 1, w);
@@ -178,8 +178,8 @@ TEST_F(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
   EXPECT_EQ(b.meta.at("to"), "2");
   EXPECT_TRUE(tu::Contains(b.meta.at("restart"), "CR1")) << b.meta.at("restart");
   const double w = std::stod(b.meta.at("omega")), a = Cell(b, 0, "force");
-  const double dx = std::abs(Cell(b, 0, "x0") - Cell(sp, 0, "x0"));
-  const double dv = std::abs(Cell(b, 0, "xdot0") - Cell(sp, 0, "xdot0"));
+  const double dx = std::abs(Cell(b, 0, "x_0") - Cell(sp, 0, "x_0"));
+  const double dv = std::abs(Cell(b, 0, "xdot_0") - Cell(sp, 0, "xdot_0"));
   EXPECT_NEAR(w, Cell(sp, 0, "omega"), 1e-9);
   EXPECT_NEAR(a, 0.5, 1e-9);
   EXPECT_LT(dx, 1e-9);
@@ -200,7 +200,7 @@ TEST_F(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
   ASSERT_EQ(r0.outcome.code, 0) << r0.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
   size_t i = 0;
-  while (i < t.rows.size() && !(t.rows[i][Col(t, "kind")] == "non-stop" &&
+  while (i < t.rows.size() && !(t.rows[i][Col(t, "kind")] == "pure-slip" &&
                                 Cell(t, i, "omega") > 1.5 && Cell(t, i, "omega") < 1.6))
     ++i;
   ASSERT_LT(i, t.rows.size());
@@ -213,12 +213,12 @@ TEST_F(ForcedApp, RestartInForceFromNonStopRowMatchesDenHartog) {
   const double w = std::stod(b.meta.at("omega"));
   EXPECT_NEAR(w, Cell(t, i, "omega"), 1e-9);
   EXPECT_NEAR(Cell(b, 0, "force"), 1, 1e-9);
-  EXPECT_NEAR(Cell(b, 0, "x0"), Cell(t, i, "x0"), 1e-9);
-  EXPECT_NEAR(Cell(b, 0, "xdot0"), Cell(t, i, "xdot0"), 1e-9);
+  EXPECT_NEAR(Cell(b, 0, "x_0"), Cell(t, i, "x_0"), 1e-9);
+  EXPECT_NEAR(Cell(b, 0, "xdot_0"), Cell(t, i, "xdot_0"), 1e-9);
   int compared = 0;
   double worst = 0;
   for (size_t k = 0; k < b.rows.size(); ++k) {
-    if (b.rows[k][Col(b, "kind")] != "non-stop") continue;
+    if (b.rows[k][Col(b, "kind")] != "pure-slip") continue;
     const double a = Cell(b, k, "force"), X = DenHartogX(0.3, a, w);
     EXPECT_NEAR(Cell(b, k, "x_max"), X, 1e-9 * std::max(1.0, X)) << "A = " << a;
     worst = std::max(worst, std::abs(Cell(b, k, "x_max") - X) / std::max(1.0, X));

@@ -73,7 +73,7 @@ TEST_F(ForcedStartApp, StartsOnThePeriodElevenAttractorWhereNoPeriodOneOrbitIs) 
   EXPECT_EQ(row[t.Column("m")], "11");
   EXPECT_EQ(row[t.Column("sticks")], "5");
   EXPECT_EQ(row[t.Column("stable")], "1");
-  ExpectFixedPointOfPm(Cell(t, row, "x0"), Cell(t, row, "xdot0"), 11, 5);
+  ExpectFixedPointOfPm(Cell(t, row, "x_0"), Cell(t, row, "xdot_0"), 11, 5);
 }
 
 // The scan's three orbits at Omega 1.5 (as ss_simulate --orbits --max_m 12
@@ -106,7 +106,7 @@ TEST_F(ForcedStartApp, AllContinuesEachOrbitOfTheStartList) {
     EXPECT_EQ((*first)[t.Column("sticks")], std::to_string(w.sticks));
     EXPECT_EQ((*first)[t.Column("stable")], std::to_string(w.stable));
     EXPECT_EQ(Cell(t, *first, "mult_max") < 1, w.stable == 1);
-    ExpectFixedPointOfPm(Cell(t, *first, "x0"), Cell(t, *first, "xdot0"), w.m, w.sticks);
+    ExpectFixedPointOfPm(Cell(t, *first, "x_0"), Cell(t, *first, "xdot_0"), w.m, w.sticks);
   }
 }
 
@@ -123,7 +123,7 @@ TEST_F(ForcedStartApp, PeriodAndPointChooseOneOrbit) {
   EXPECT_EQ(row[t.Column("sticks")], "5");
   EXPECT_EQ(row[t.Column("stable")], "0");
   EXPECT_GT(Cell(t, row, "mult_max"), 1.5);
-  ExpectFixedPointOfPm(Cell(t, row, "x0"), Cell(t, row, "xdot0"), 11, 5);
+  ExpectFixedPointOfPm(Cell(t, row, "x_0"), Cell(t, row, "xdot_0"), 11, 5);
   for (const auto& other : t.rows) EXPECT_EQ(other[t.Column("branch")], "1");
 }
 

@@ -48,8 +48,8 @@ TEST_F(ForcedSwitchApp, DoubledBranchStartsAtThePdPointAndIsTwoPeriodic) {
   for (size_t i = 0; i < two.rows.size(); ++i) EXPECT_EQ(two.rows[i][two.Column("m")], "2");
   // The first row: next to the PD point (the pitchfork's offset ~ ds).
   EXPECT_LT(std::abs(Num(two, 0, "omega") - w_pd), 1e-4);
-  EXPECT_LT(std::hypot(Num(two, 0, "x0") - Num(one, pd, "x0"),
-                       Num(two, 0, "xdot0") - Num(one, pd, "xdot0")),
+  EXPECT_LT(std::hypot(Num(two, 0, "x_0") - Num(one, pd, "x_0"),
+                       Num(two, 0, "xdot_0") - Num(one, pd, "xdot_0")),
             0.02);
   // The last row at omega = 0.612: closes after two forcing periods of the
   // reference map, not after one.
@@ -60,7 +60,7 @@ TEST_F(ForcedSwitchApp, DoubledBranchStartsAtThePdPointAndIsTwoPeriodic) {
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = 0.25;
   p.force = 0.3, p.omega = Num(two, last, "omega");
   const stickslip::reference::ForcedRef m(p);
-  const double x0 = Num(two, last, "x0"), y0 = Num(two, last, "xdot0");
+  const double x0 = Num(two, last, "x_0"), y0 = Num(two, last, "xdot_0");
   const auto a = stickslip::reference::RefOnePeriod(m, x0, y0, y0 == 0.25, 1e-16L);
   const auto b = stickslip::reference::RefOnePeriod(m, a.x, a.y, a.stuck, 1e-16L);
   ASSERT_TRUE(a.ok && b.ok);

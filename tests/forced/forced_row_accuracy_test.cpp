@@ -17,9 +17,10 @@
 #include <cstdlib>
 #include <string>
 
-#include "cli/forced_start.hpp"
+#include "cli/clock_start.hpp"
 #include "forced_curve_reference.hpp"
 #include "stickslip/forced/branch.hpp"
+#include "stickslip/forced/flow.hpp"
 
 namespace stickslip {
 namespace {
@@ -86,7 +87,7 @@ struct Study {
   int stride;
 };
 
-// The app's branch (run_forced.cpp, Trace): the state after the transient
+// The app's branch (run_forced.cpp, Trace; clock_start.hpp): the state after the transient
 // from rest, Newton at m = 1 there, ContinueForced at the app's defaults.
 OrbitBranch AppBranch(const Study& s, double from, double to) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
@@ -95,7 +96,11 @@ OrbitBranch AppBranch(const Study& s, double from, double to) {
   o.max_amplitude = s.max_amplitude;
   ForcedParams at = s.p;
   ParameterAxis(Parameter::kOmega).Set(at, from);
-  const Vec2 z = cli::SettledState(ForcedModel(at), o);
+  const ForcedModel model(at);
+  cli::ClockStart c;
+  c.rest = ForcedStart(model, 0, 0, model.v()).z;
+  c.opts = o;
+  const Eigen::VectorXd z = cli::SettledState(model, c);
   return ContinueForced(s.p, Parameter::kOmega, from, to, z[0], z[1], 1, o);
 }
 

@@ -195,14 +195,16 @@ TEST_F(ModelFileApp, TheForcedStribeckFileGivesTheBuiltInBranchRowByRow) {
   int columns = 0;
   for (std::size_t c = 0; c < x.columns.size(); ++c) {
     const std::string& name = x.columns[c];
-    const int d = y.Column(name == "x_0" ? "x0" : name == "xdot_0" ? "xdot0" : name);
+    const int d = y.Column(name);  // the forced run writes the system's tables
     if (d < 0 || name == "pt") continue;
     ++columns;
     for (std::size_t i = 0; i < x.rows.size(); ++i) {
       const std::string &u = x.rows[i][c], &w = y.rows[i][d];
       const bool fold = std::abs(std::abs(std::stod(y.rows[i][y.Column("mult_max")])) - 1) < 1e-8;
-      // The forced tables call a motion without stick "non-stop", the system's "pure-slip".
-      if (name == "kind") EXPECT_EQ(u, w == "non-stop" ? "pure-slip" : w) << "row " << i;
+      if (name == "kind" || name == "mode_0" || u.empty() || w.empty()) {  // text, or empty
+        EXPECT_EQ(u, w) << name << " row " << i;
+        continue;
+      }
       if (name == "stable" && !fold) EXPECT_EQ(u, w) << name << " row " << i;
       if (name == "kind" || name == "stable") continue;
       const double e = std::abs(std::stod(u) - std::stod(w)) / (1 + std::abs(std::stod(w)));

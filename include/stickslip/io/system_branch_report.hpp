@@ -22,6 +22,9 @@ struct SystemRun {
   SteadyBranch steady;
   std::vector<OrbitBranch> pieces;  ///< toward to, then back toward from
   std::vector<int> numbers;         ///< each piece's branch number (default 1, 2, ...)
+  /// Intervals of the parameter not traced (an unbounded resonance between
+  /// two pieces), as pairs of ends; the figure shades them.
+  std::vector<double> gap;
 };
 
 /// A column name for state component i: StateName with ' as "dot".
