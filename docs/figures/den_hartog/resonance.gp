@@ -32,7 +32,7 @@ stats 'branch.tsv' using 1 nooutput
 N = STATS_records
 array X[N]; array Y[N]; array B[N]; array K[N]; array S[N]; array P[N]; array D[2*N]
 array R[4] = [0, 0, 0, 0]  # rows per style: a key entry only for a drawn style
-stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('omega'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'non-stop'), S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) nooutput
+stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('omega'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'pure-slip'), S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) nooutput
 owner(i) = P[i + 1] && !P[i] ? i : i + 1
 seg(i, k, s) = i >= 1 && i < N && B[i] == B[i + 1] ? (K[owner(i)] == k && S[owner(i)] == s) : 0
 row(j) = int((j + 1) / 2)
@@ -45,9 +45,9 @@ V(w) = A / (1 - w*w); U(w) = sin(pi/w) / (w * (1 + cos(pi/w)))
 D(w) = V(w)**2 - (mu * U(w))**2
 DH(w) = D(w) > 0 ? sqrt(D(w)) : 1/0
 plot \
-  D using (X[row($1)]):(sel($1, 1, 1)) with lines ls 3 title (R[4] > 0 ? 'non-stop, stable' : ''), \
-  D using (X[row($1)]):(sel($1, 1, 0)) with lines ls 4 title (R[3] > 0 ? 'non-stop, unstable' : ''), \
+  D using (X[row($1)]):(sel($1, 1, 1)) with lines ls 3 title (R[4] > 0 ? 'pure-slip, stable' : ''), \
+  D using (X[row($1)]):(sel($1, 1, 0)) with lines ls 4 title (R[3] > 0 ? 'pure-slip, unstable' : ''), \
   D using (X[row($1)]):(sel($1, 0, 1)) with lines ls 1 title (R[2] > 0 ? 'stick-slip, stable' : ''), \
   D using (X[row($1)]):(sel($1, 0, 0)) with lines ls 2 title (R[1] > 0 ? 'stick-slip, unstable' : ''), \
-  'branch.tsv' using 'omega':(c('branch') == 1 && strcol('kind') eq 'non-stop' ? DH(c('omega')) : 1/0) with lines lw 1 dt (4, 6) lc rgb 'black' title 'Den Hartog (1931) closed form', \
-  'branch.tsv' using 'omega':(c('branch') == 2 && strcol('kind') eq 'non-stop' ? DH(c('omega')) : 1/0) with lines lw 1 dt (4, 6) lc rgb 'black' notitle
+  'branch.tsv' using 'omega':(c('branch') == 1 && strcol('kind') eq 'pure-slip' ? DH(c('omega')) : 1/0) with lines lw 1 dt (4, 6) lc rgb 'black' title 'Den Hartog (1931) closed form', \
+  'branch.tsv' using 'omega':(c('branch') == 2 && strcol('kind') eq 'pure-slip' ? DH(c('omega')) : 1/0) with lines lw 1 dt (4, 6) lc rgb 'black' notitle

@@ -32,15 +32,15 @@ stats 'branch.tsv' using 1 nooutput
 N = STATS_records
 array X[N]; array Y[N]; array B[N]; array K[N]; array S[N]; array P[N]; array D[2*N]
 array R[4] = [0, 0, 0, 0]  # rows per style: a key entry only for a drawn style
-stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('omega'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'non-stop'), S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) nooutput
+stats 'branch.tsv' using (i = int($0) + 1, X[i] = c('omega'), Y[i] = c('x_max'), B[i] = c('branch'), K[i] = (strcol('kind') eq 'pure-slip'), S[i] = c('stable'), P[i] = 0, R[1 + 2 * K[i] + S[i]] = R[1 + 2 * K[i] + S[i]] + 1, 0) nooutput
 stats 'special_points.tsv' using (P[int(c('pt'))] = 1, 0) nooutput
 owner(i) = P[i + 1] && !P[i] ? i : i + 1
 seg(i, k, s) = i >= 1 && i < N && B[i] == B[i + 1] ? (K[owner(i)] == k && S[owner(i)] == s) : 0
 row(j) = int((j + 1) / 2)
 sel(j, k, s) = int(j) % 2 ? (seg(row(j) - 1, k, s) || seg(row(j), k, s) ? Y[row(j)] : NaN) : (seg(row(j), k, s) ? Y[row(j)] : NaN)
 plot \
-  D using (X[row($1)]):(sel($1, 1, 1)) with lines ls 3 title (R[4] > 0 ? 'non-stop, stable' : ''), \
-  D using (X[row($1)]):(sel($1, 1, 0)) with lines ls 4 title (R[3] > 0 ? 'non-stop, unstable' : ''), \
+  D using (X[row($1)]):(sel($1, 1, 1)) with lines ls 3 title (R[4] > 0 ? 'pure-slip, stable' : ''), \
+  D using (X[row($1)]):(sel($1, 1, 0)) with lines ls 4 title (R[3] > 0 ? 'pure-slip, unstable' : ''), \
   D using (X[row($1)]):(sel($1, 0, 1)) with lines ls 1 title (R[2] > 0 ? 'stick-slip, stable' : ''), \
   D using (X[row($1)]):(sel($1, 0, 0)) with lines ls 2 title (R[1] > 0 ? 'stick-slip, unstable' : ''), \
   'special_points.tsv' using 'omega':'x_max' with points ls 8 notitle, \
