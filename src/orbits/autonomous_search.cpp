@@ -110,7 +110,8 @@ class AutonomousSearch {
     return !r_.ok();
   }
   bool Transient(const Eigen::VectorXd& z0, std::vector<FlowSwitch>* exits);
-  bool OnePeriod(const PeriodicOrbit& p, int returns, AutonomousOrbit* o);
+  bool OnePeriod(const PeriodicOrbit& p, int returns, AutonomousOrbit* o,
+                 std::vector<ModeSet>* modes);
   void Add(const PeriodicOrbit& p, const PoincareSection& sec, int start);
 
   const System& s_;
@@ -144,9 +145,11 @@ bool AutonomousSearch::Transient(const Eigen::VectorXd& z0, std::vector<FlowSwit
   return run_.status == FlowStatus::kTimeLimit;
 }
 
-// The orbit's exits over one period (the run to its returns-th exit) and
-// its stick phases per contact; false where that run fails.
-bool AutonomousSearch::OnePeriod(const PeriodicOrbit& p, int returns, AutonomousOrbit* o) {
+// The orbit's exits over one period (the run to its returns-th exit), the
+// modes they leave into, and its stick phases per contact; false where that
+// run fails.
+bool AutonomousSearch::OnePeriod(const PeriodicOrbit& p, int returns, AutonomousOrbit* o,
+                                 std::vector<ModeSet>* modes) {
   std::vector<FlowSwitch> switches;
   FlowRequest req;
   req.max_steps = o_.orbit.max_steps;
@@ -157,26 +160,32 @@ bool AutonomousSearch::OnePeriod(const PeriodicOrbit& p, int returns, Autonomous
   if (run_.status != FlowStatus::kStickExit) return false;
   o->points.assign(1, p.start.z);
   o->point_contacts.assign(1, o->section.contact);
+  modes->assign(1, p.start.mode);
   o->sticks.assign(s_.contacts(), 0);
   for (const FlowSwitch& e : switches) {
     if (e.kind == SwitchKind::kStickIn) ++o->sticks[e.contact];
     if (e.kind == SwitchKind::kStickOut)
-      o->points.push_back(e.z), o->point_contacts.push_back(e.contact);
+      o->points.push_back(e.z), o->point_contacts.push_back(e.contact), modes->push_back(e.after);
   }
-  o->points.pop_back(), o->point_contacts.pop_back();  // the closing exit: the start again
+  // The closing exit: the start again.
+  o->points.pop_back(), o->point_contacts.pop_back(), modes->pop_back();
   return true;
 }
 
-// A converged orbit: at its least number of returns, kept if new.
+// A converged orbit: at its least number of returns (an exit k in the
+// start's state and mode: k returns close it), kept if new: not of a known
+// orbit's period and sticks through one of its exits (any contact's, as
+// identical blocks in step leave stick at one instant).
 void AutonomousSearch::Add(const PeriodicOrbit& p, const PoincareSection& sec, int start) {
   AutonomousOrbit o;
   o.orbit = p, o.section = sec, o.start = start;
-  if (!OnePeriod(o.orbit, sec.returns, &o)) return;
+  std::vector<ModeSet> modes;
+  if (!OnePeriod(o.orbit, sec.returns, &o, &modes)) return;
   for (int k = 1; k < static_cast<int>(o.points.size()); ++k)
-    if (o.point_contacts[k] == sec.contact && SameExit(o.points[0], o.points[k])) {
+    if (modes[k] == modes[0] && SameExit(o.points[0], o.points[k])) {
       o.section.returns = k;  // a multiple of a shorter orbit
       o.orbit = shooting_.Find(p.start, o.section);
-      if (!o.orbit.ok() || !OnePeriod(o.orbit, k, &o)) return;
+      if (!o.orbit.ok() || !OnePeriod(o.orbit, k, &o, &modes)) return;
       break;
     }
   const double T = o.orbit.period;
@@ -184,8 +193,7 @@ void AutonomousSearch::Add(const PeriodicOrbit& p, const PoincareSection& sec, i
     if (std::abs(known.orbit.period - T) > kSameExit * (1 + T) || known.sticks != o.sticks)
       continue;
     for (std::size_t j = 0; j < known.points.size(); ++j)
-      if (known.point_contacts[j] == sec.contact && SameExit(known.points[j], o.orbit.start.z))
-        return;
+      if (SameExit(known.points[j], o.orbit.start.z)) return;
   }
   r_.orbits.push_back(std::move(o));
 }
@@ -218,7 +226,9 @@ bool AutonomousSearch::From(int i) {
       const PeriodicOrbit p = shooting_.Find(FlowPoint{0, z, exits[last].after}, sec);
       if (p.status == OrbitStatus::kCancelled) r_.status = OrbitScanStatus::kCancelled;
       if (!r_.ok()) return false;
-      if (p.ok()) ++r_.converged, Add(p, sec, i);
+      if (!p.ok()) continue;  // the next recurrence, if any
+      ++r_.converged;
+      Add(p, sec, i);
       break;
     }
   }
