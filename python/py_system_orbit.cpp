@@ -48,6 +48,7 @@ PySystemOrbit OrbitOf(const System& s, const PeriodicOrbit& r,
   PySystemOrbit out;
   const int k = s.contacts();
   out.status = r.status, out.message = r.message, out.mode = ModeSetName(r.start.mode, k);
+  out.origin = ReadOnlyMatrix(Eigen::VectorXd(), true);  // autonomous scans set it
   out.start = ReadOnlyMatrix(r.start.z, true);
   out.monodromy = ReadOnlyMatrix(r.monodromy, false);
   Eigen::VectorXcd mu(static_cast<Eigen::Index>(r.multipliers.size()));
