@@ -588,10 +588,15 @@ def orbits(system: Union[ChainParams, CouplingParams, System], columns: Mapping[
            recurrence: float = 1e-3, rtol: Optional[float] = None,
            atol: Optional[float] = None) -> Dict[str, npt.NDArray[Any]]: ...
 @overload
-def periodic_orbits(system: Union[ForcedParams, System], max_m: int = 4, max_sticks: int = 4,
-                    grid: int = 5, exit_samples: int = 48, radius: float = 0.0,
-                    rtol: Optional[float] = None,
-                    atol: Optional[float] = None) -> List[SystemOrbit]: ...
+def periodic_orbits(system: Union[ForcedParams, ChainParams, CouplingParams, System],
+                    max_m: Optional[int] = None, max_sticks: Optional[int] = None,
+                    grid: Optional[int] = None, exit_samples: Optional[int] = None,
+                    radius: Optional[float] = None, rtol: Optional[float] = None,
+                    atol: Optional[float] = None, amplitudes: Optional[Sequence[float]] = None,
+                    transient: Optional[float] = None,
+                    starts: Optional[Sequence[npt.ArrayLike]] = None,
+                    max_returns: Optional[int] = None,
+                    scale: Optional[float] = None) -> List[SystemOrbit]: ...
 @overload
 def periodic_orbits(params: Params, samples: Optional[int] = None, rtol: Optional[float] = None,
                     atol: Optional[float] = None, integrator: IntegratorLike = None,
@@ -759,6 +764,13 @@ class SystemOrbit:
     points: Array
     turns: int
     from_exit_map: bool
+    contact: int
+    returns: int
+    contact_sticks: List[int]
+    origin: Array
+    origin_mode: int
+    origin_imaginary: bool
+    origin_amplitude: float
 
 class SteadyState:
     found: bool

@@ -196,8 +196,8 @@ class Forced(unittest.TestCase):
             stickslip.periodic_orbit(den_hartog_params(-1.0), [0.5, 0.0, 0.0])
         with self.assertRaisesRegex(stickslip.InvalidArgument, "max_m"):
             stickslip.periodic_orbits(den_hartog_params(1.5), max_m=0)
-        with self.assertRaisesRegex(stickslip.InvalidArgument, "no forcing clock"):
-            stickslip.periodic_orbits(stickslip.ChainParams(2))
+        with self.assertRaisesRegex(stickslip.InvalidArgument, "grid is an option of a system with"):
+            stickslip.periodic_orbits(stickslip.ChainParams(2), grid=3)
         with self.assertRaisesRegex(stickslip.InvalidArgument, "dt"):
             stickslip.simulate(den_hartog_params(1.5), [0.0, 0.0, 0.0], dt=0.0)
 

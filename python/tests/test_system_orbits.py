@@ -147,3 +147,58 @@ class SystemOrbits(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class AutonomousScan(unittest.TestCase):
+    """periodic_orbits(system) of two identical seed blocks at v = 0.3 (C++
+    FindAutonomousOrbits): the synchronized orbit is the belt's own (its
+    periodic_orbits(params)), the alternating one has x2(t) = x1(t + T/2) at
+    the period ss_continue gives (docs/figures/chain2/branch.tsv)."""
+
+    def chain(self, kc):
+        law = stickslip.Params("cubic", beta=0.05, mu_s=0.4, mu_m=0.25, v_m=0.5, v=0.3)
+        return law, stickslip.ChainParams(2, law=law, kc=kc)
+
+    def test_synchronized_orbit_is_the_belts_and_the_alternating_one_is_found(self):
+        law, chain = self.chain(0.5)
+        belt = stickslip.periodic_orbits(law).stick_slip
+        orbits = stickslip.periodic_orbits(chain)
+        sync = [o for o in orbits if abs(o.start[0] - o.start[2]) < 1e-9]
+        self.assertEqual(len(sync), 1)
+        o = sync[0]
+        self.assertAlmostEqual(o.period, belt.period, delta=1e-9)
+        self.assertAlmostEqual(o.lo[0], belt.x_min, delta=1e-9)
+        self.assertAlmostEqual(o.hi[0], belt.x_max, delta=1e-9)
+        self.assertEqual(o.contact_sticks, [1, 1])
+        self.assertEqual(len(o.multipliers), 3)
+        self.assertEqual(o.origin.shape, (4,))
+        alt = [o for o in orbits if abs(o.period - 4.525710084704488) < 1e-8]
+        self.assertEqual(len(alt), 1)
+        a = alt[0]
+        self.assertTrue(a.stable)
+        # Its section points: block 1's exit, then block 2's with the blocks swapped.
+        self.assertEqual(list(a.points.shape), [2, 4])
+        swapped = a.points[1][[2, 3, 0, 1]]
+        np.testing.assert_allclose(swapped, a.points[0], atol=1e-8)
+
+    def test_given_starts_and_bad_options(self):
+        law, chain = self.chain(0.5)
+        # No modal starts: one given start with the blocks in step stays in step.
+        found = stickslip.periodic_orbits(chain, amplitudes=[], starts=[[0.6, 0.0, 0.6, 0.0]],
+                                          transient=100.0)
+        self.assertEqual(len(found), 1)
+        self.assertEqual(found[0].origin_mode, -1)
+        np.testing.assert_array_equal(found[0].origin, [0.6, 0.0, 0.6, 0.0])
+        self.assertAlmostEqual(found[0].period, stickslip.periodic_orbits(law).stick_slip.period,
+                               delta=1e-9)
+        with self.assertRaisesRegex(ValueError, "amplitudes"):
+            stickslip.periodic_orbits(chain, amplitudes=[0.0])
+        with self.assertRaisesRegex(ValueError, "transient"):
+            stickslip.periodic_orbits(chain, transient=-1.0)
+        with self.assertRaisesRegex(ValueError, "grid"):
+            stickslip.periodic_orbits(chain, grid=3)
+        with self.assertRaisesRegex(ValueError, "starts"):
+            stickslip.periodic_orbits(chain, starts=[[0.0, 0.0]])
+        with self.assertRaisesRegex(ValueError, "transient"):
+            stickslip.periodic_orbits(stickslip.ForcedParams(law, force=0.1, omega=1.0),
+                                      transient=10.0)

@@ -152,6 +152,10 @@ struct FixedTolerances {
   // Settling: the run goes in this many pieces, each keeping only the stick
   // exits the recurrence needs (a bound on the switches held).
   static constexpr int kSettleChunks = 64;
+  // Autonomous orbit scan (orbits/autonomous_search.cpp): a stick exit of a
+  // run within this of an earlier one of its contact (as kSettleRecur) is a
+  // guess for Newton on that section.
+  static constexpr double kScanRecur = 1e-3;
   // Settling a system with a clock: at most this many clock turns (a run
   // call per turn; a transient of 1e9 turns would not end).
   static constexpr double kSettleMaxTurns = 1e7;

@@ -258,7 +258,8 @@ FoundOrbits FindOrbits(const System& system, const OrbitSearchOptions& options) 
   std::string e = options.ValidationError();
   const int n = system.dimension();
   if (e.empty() && system.clocks() != 1)
-    e = "an orbit search needs a system with one clock, not " + std::to_string(system.clocks());
+    e = "an orbit search needs a system with one clock, not " + std::to_string(system.clocks()) +
+        (system.clocks() == 0 ? " (FindAutonomousOrbits scans one with none)" : "");
   if (e.empty() && (options.plane[0] >= n - 1 || options.plane[1] >= n - 1))
     e = "plane = (" + std::to_string(options.plane[0]) + ", " + std::to_string(options.plane[1]) +
         "): the components are 0.." + std::to_string(n - 2) + " (the clock is " +

@@ -10,6 +10,11 @@
 //    circle map; with more masses the exits through the centre are sampled).
 // Found orbits are reduced to their least period and deduplicated by their
 // stroboscopic points (an orbit of multiple m has m of them).
+// FindAutonomousOrbits is the same scan for a system with no clock: runs
+// from steady sliding disturbed along each of its modes (and from given
+// states) settle for a transient, then Newton on each contact's stick-exit
+// section from the run's last exits; orbits are kept once, compared on
+// their stick exits (any point of the orbit may be its section point).
 #pragma once
 
 #include <array>
@@ -67,5 +72,60 @@ struct FoundOrbits {
 /// plane component out of range or the clock, a centre of the wrong size or
 /// not finite) or the system has not exactly one clock.
 FoundOrbits FindOrbits(const System& system, const OrbitSearchOptions& options);
+
+struct AutonomousSearchOptions {
+  /// Upper bounds: amplitudes, starts, max_returns.
+  static constexpr int kMaxAmplitudes = 16, kMaxStarts = 256, kMaxReturns = 64;
+  static constexpr double kMaxAmplitude = 10;
+  /// Steady sliding is sought in every pure-slip mode up to this many
+  /// contacts (as SteadySliding), beyond in "all below" only.
+  static constexpr int kRestModeContacts = 6;
+  ShootingOptions orbit;
+  /// Starts at steady sliding + a scale d, d each mode's direction (the real
+  /// and imaginary parts of a complex eigenvector, a real eigenvector) at
+  /// max norm 1; each a in (0, kMaxAmplitude].
+  std::vector<double> amplitudes{0.01, 0.1, 0.3};
+  double scale = 0;                     ///< 0: max(1, |steady sliding|) (max norm)
+  double transient = 300;               ///< each start's run, in time units (> 0)
+  int max_returns = 16;                 ///< the longest recurrence looked for, in stick exits
+  std::vector<Eigen::VectorXd> starts;  ///< given states, run after the modal starts
+  std::function<bool()> cancelled;      ///< polled between runs and shots; empty: never
+  std::string ValidationError() const;
+};
+
+/// Where a scan's run started.
+struct ScanStart {
+  Eigen::VectorXd z;
+  int mode = -1;           ///< the rest point's eigenvalue (largest real part first); -1: given
+  bool imaginary = false;  ///< the imaginary part of its eigenvector (else the real part)
+  double amplitude = 0;    ///< times the scale (given: 0)
+};
+
+/// One orbit of an autonomous system.
+struct AutonomousOrbit {
+  PeriodicOrbit orbit;      ///< on `section`, at its least number of returns
+  PoincareSection section;  ///< StickExit(contact, returns)
+  std::vector<int> sticks;  ///< stick phases per period, per contact
+  /// Its stick exits over one period from the start (the start first), with
+  /// their contacts.
+  std::vector<Eigen::VectorXd> points;
+  std::vector<int> point_contacts;
+  int start = 0;  ///< AutonomousOrbits::starts' index of the run it was first found from
+};
+
+struct AutonomousOrbits {
+  OrbitScanStatus status = OrbitScanStatus::kOk;  ///< kOk or kCancelled (the orbits so far kept)
+  std::string message;                            ///< the first failed run's, if any
+  std::vector<AutonomousOrbit> orbits;            ///< by period
+  std::vector<ScanStart> starts;                  ///< every run's start, modal ones first
+  int failed = 0;     ///< runs that ended before their transient (integrator failures)
+  int shots = 0;      ///< Newton solves started
+  int converged = 0;  ///< of them converged (before deduplication)
+  bool ok() const { return status == OrbitScanStatus::kOk; }
+};
+
+/// Throws InvalidArgument if the options are not valid, a given start has
+/// the wrong size or is not finite, or the system has a clock.
+AutonomousOrbits FindAutonomousOrbits(const System& system, const AutonomousSearchOptions& options);
 
 }  // namespace stickslip
