@@ -29,6 +29,10 @@ void TaylorStepper::EventPolynomials(int n) {
       // hp_ (the powers of h) is 0 past the order, the rows finite.
       if (single) {
         for (int k = 0; k <= n; ++k) g[k] = r0[k] * hp[k];
+      } else if (f.size == 2) {  // a stick exit, lambda -+ limit: the same sums
+        const double* __restrict r1 = r[f.terms[1].row];
+        const double w0 = f.terms[0].weight, w1 = f.terms[1].weight;
+        for (int k = 0; k <= n; ++k) g[k] = (0.0 + w0 * r0[k] + w1 * r1[k]) * hp[k];
       } else {
         for (int k = 0; k <= n; ++k) {
           double s = 0;

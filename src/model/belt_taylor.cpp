@@ -249,27 +249,6 @@ void BeltTaylorField::ResolveParameter() {
   }
 }
 
-// Coefficient k of df_2/dp (ResolveParameter), from this step's series; the
-// shifted law's coefficient k is computed in the same loop (Recurrences).
-double BeltTaylorField::ParamTerm(const Rows& r, int k, double muk, double muk_shifted,
-                                  double dmu) const {
-  switch (kind_) {
-    case ParamKind::kBeta:
-      return -2 * r.xd[k];
-    case ParamKind::kV:
-      return dmu;
-    case ParamKind::kAffine:
-      return sigma_ * (muk_shifted - muk) / dp_;
-    case ParamKind::kForce:  // d(A cos theta)/dA
-      return cos_.c()[k];
-    case ParamKind::kOmega: {  // -A sin(theta) d theta / d Omega, a linear series
-      const double* th = r.col[2];
-      return -force_ * (sin_.c()[k] * th[0] + (k > 0 ? sin_.c()[k - 1] * th[1] : 0.0));
-    }
-  }
-  return 0;
-}
-
 std::unique_ptr<TaylorField> Model::MakeTaylorField(const TaylorRequest& request) const {
   return std::make_unique<BeltTaylorField>(request);
 }

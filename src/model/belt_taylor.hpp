@@ -7,8 +7,8 @@
 
 #include <optional>
 
-#include "model/mu_series.hpp"
 #include "integrate/series.hpp"
+#include "model/mu_series.hpp"
 #include "numerics/kernel.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
@@ -87,6 +87,30 @@ class BeltTaylorField final : public TaylorField {
   double dp_ = 1;
 };
 
+// Coefficient k of df_2/dp (ResolveParameter), from this step's series; the
+// shifted law's coefficient k is computed in the same loop (Recurrences).
+// Inline: a call per order cost 4 % of a Den Hartog run (docs/benchmarks.md).
+__attribute__((always_inline)) inline double BeltTaylorField::ParamTerm(const Rows& r, int k,
+                                                                        double muk,
+                                                                        double muk_shifted,
+                                                                        double dmu) const {
+  switch (kind_) {
+    case ParamKind::kBeta:
+      return -2 * r.xd[k];
+    case ParamKind::kV:
+      return dmu;
+    case ParamKind::kAffine:
+      return sigma_ * (muk_shifted - muk) / dp_;
+    case ParamKind::kForce:  // d(A cos theta)/dA
+      return cos_.c()[k];
+    case ParamKind::kOmega: {  // -A sin(theta) d theta / d Omega, a linear series
+      const double* th = r.col[2];
+      return -force_ * (sin_.c()[k] * th[0] + (k > 0 ? sin_.c()[k - 1] * th[1] : 0.0));
+    }
+  }
+  return 0;
+}
+
 // Phi' = J Phi and the parameter column (beta, v) at order k + 1, cc_ set to k.
 template <bool Newest, bool ConstJ>
 __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, double inv, double dmu,
@@ -112,8 +136,8 @@ __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, doubl
   const double* p = r.col[1];
   const double cq = ConstJ    ? p[k] * cc[0]
                     : !Newest ? Cauchy(p, cc, k)
-                    : k == 0 ? p[0] * cc[0]
-                             : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
+                    : k == 0  ? p[0] * cc[0]
+                              : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
   r.col[0][k + 1] = r.col[1][k] * inv;
   r.col[1][k + 1] = (-r.col[0][k] + cq) * inv;
   if (kind_ != ParamKind::kAffine) r.col[1][k + 1] += ParamTerm(r, k, 0, 0, dmu) * inv;
