@@ -209,9 +209,9 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
       // The forced oscillator's two columns in one pass, as its own
       // recurrences had them (PhiColumnsNext); the belt's one at a time.
-      Columns<Forced, L == LawKind::kCoulomb>(k, inv, dmu, r);
+      Columns<Forced, L == LawKind::kCoulomb, true>(k, inv, dmu, r);
       if (r.col && kind_ == ParamKind::kAffine)
-        r.col[1][k + 1] += ParamTerm(r, k, muk, muk_shifted, dmu) * inv;
+        r.col[1][k + 1] += ParamTermInline(r, k, muk, muk_shifted, dmu) * inv;
     }
   }
 }
@@ -247,6 +247,11 @@ void BeltTaylorField::ResolveParameter() {
     dp_ = std::max(1.0, std::abs(axis.Get(q_)));
     mu_shifted_.emplace(Friction(axis.At(q_, axis.Get(q_) + dp_)));
   }
+}
+
+double BeltTaylorField::ParamTerm(const Rows& r, int k, double muk, double muk_shifted,
+                                  double dmu) const {
+  return ParamTermInline(r, k, muk, muk_shifted, dmu);
 }
 
 std::unique_ptr<TaylorField> Model::MakeTaylorField(const TaylorRequest& request) const {
