@@ -179,7 +179,10 @@ void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, 
   double rest[kTaylorMaxOrder + 1];  // g on [u, 1] after a passed root
   double u0 = 0;
   for (int guard = 0; guard <= 2 * deg + 2; ++guard) {
-    const PolyRoot pr = FirstSignChange(poly, d, sign, zero_sign);
+    // The first search of an undeflated g is past its quadratic bound (above).
+    const PolyRoot pr = guard == 0 && !deflated
+                            ? FirstSignChangePast(poly, d, sign, zero_sign, tail)
+                            : FirstSignChange(poly, d, sign, zero_sign);
     if (!pr.found) return;
     const double u = pr.u == 1 ? 1.0 : u0 + (1 - u0) * pr.u;
     // A surface just left, back on the mode's side at the start's time (two
