@@ -171,18 +171,15 @@ void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, 
   state_[i] = kTracked;
   if (!deflated) {
     const double q[3] = {g0, deg >= 1 ? base[1] : 0.0, deg >= 2 ? base[2] : 0.0};
-    if (QuadraticBoundExcludes(q, deg, sign, tail)) return;  // the common case
+    if (QuadraticBoundExcludes(q, deg, sign, tail)) return;  // the common case; else past it
     own();
   }
   const double* poly = gi;
   int d = deg;
-  double rest[kTaylorMaxOrder + 1];  // g on [u, 1] after a passed root
-  double u0 = 0;
+  double rest[kTaylorMaxOrder + 1], u0 = 0;  // rest: g on [u, 1] after a passed root
   for (int guard = 0; guard <= 2 * deg + 2; ++guard) {
-    // The first search of an undeflated g is past its quadratic bound (above).
-    const PolyRoot pr = guard == 0 && !deflated
-                            ? FirstSignChangePast(poly, d, sign, zero_sign, tail)
-                            : FirstSignChange(poly, d, sign, zero_sign);
+    const PolyRoot pr = guard > 0 || deflated ? FirstSignChange(poly, d, sign, zero_sign)
+                                              : FirstSignChangePast(poly, d, sign, zero_sign, tail);
     if (!pr.found) return;
     const double u = pr.u == 1 ? 1.0 : u0 + (1 - u0) * pr.u;
     // A surface just left, back on the mode's side at the start's time (two
