@@ -113,7 +113,7 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
   double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
-  const double g0 = g(u0), g1 = g(u1);
+  const double g0 = u0 == 0 ? c[0] : g(u0), g1 = g(u1);  // g(0) = c_0, as Horner gives it
   if (g0 != g1) {  // start from the secant (regula falsi) point
     const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
     if (xs > u0 && xs < u1) x = xs;
@@ -159,15 +159,19 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
 }  // namespace
 
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
-  PolyRoot out;
   const double tail = AbsSum(c + 3, n - 2);  // sum_{k>=3} |c_k|
+  // The cheap bound first, then the Bernstein hull.
+  if (QuadraticBoundExcludes(c, n, sign, tail)) return PolyRoot();
+  return FirstSignChangePast(c, n, sign, zero_sign, tail);
+}
+
+PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, double tail) {
+  PolyRoot out;
   double scale = tail;
   for (int k = 0; k <= std::min(n, 2); ++k) scale += std::abs(c[k]);
   if (scale == 0) return out;
   // Rounding of the conversion and the halvings: a few ulp of sum |c_k| per degree.
   const double margin = Tolerances::PolyMargin(n, scale);
-  // The cheap bound first, then the Bernstein hull.
-  if (QuadraticBoundExcludes(c, n, sign, tail)) return out;
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
   // Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no

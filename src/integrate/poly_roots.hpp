@@ -22,6 +22,9 @@ struct PolyRoot {
 // c[0..n], n <= 40: power coefficients in u. sign (+1 or -1) is the sign of
 // g just after u = 0; zero_sign is the sign an exact 0 counts as.
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign);
+// The same, past the quadratic bound (QuadraticBoundExcludes(c, n, sign,
+// tail) is false): tail = sum_{k>=3} |c_k|.
+PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, double tail);
 
 // The coefficients in w of c(u + (1 - u) w), w in [0, 1]: c on [u, 1]
 // (Taylor shift by repeated synthetic division, then scaling).

@@ -29,6 +29,10 @@ void TaylorStepper::EventPolynomials(int n) {
       // hp_ (the powers of h) is 0 past the order, the rows finite.
       if (single) {
         for (int k = 0; k <= n; ++k) g[k] = r0[k] * hp[k];
+      } else if (f.size == 2) {  // a stick exit, lambda -+ limit: the same sums
+        const double* __restrict r1 = r[f.terms[1].row];
+        const double w0 = f.terms[0].weight, w1 = f.terms[1].weight;
+        for (int k = 0; k <= n; ++k) g[k] = (0.0 + w0 * r0[k] + w1 * r1[k]) * hp[k];
       } else {
         for (int k = 0; k <= n; ++k) {
           double s = 0;
@@ -167,15 +171,15 @@ void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, 
   state_[i] = kTracked;
   if (!deflated) {
     const double q[3] = {g0, deg >= 1 ? base[1] : 0.0, deg >= 2 ? base[2] : 0.0};
-    if (QuadraticBoundExcludes(q, deg, sign, tail)) return;  // the common case
+    if (QuadraticBoundExcludes(q, deg, sign, tail)) return;  // the common case; else past it
     own();
   }
   const double* poly = gi;
   int d = deg;
-  double rest[kTaylorMaxOrder + 1];  // g on [u, 1] after a passed root
-  double u0 = 0;
+  double rest[kTaylorMaxOrder + 1], u0 = 0;  // rest: g on [u, 1] after a passed root
   for (int guard = 0; guard <= 2 * deg + 2; ++guard) {
-    const PolyRoot pr = FirstSignChange(poly, d, sign, zero_sign);
+    const PolyRoot pr = guard > 0 || deflated ? FirstSignChange(poly, d, sign, zero_sign)
+                                              : FirstSignChangePast(poly, d, sign, zero_sign, tail);
     if (!pr.found) return;
     const double u = pr.u == 1 ? 1.0 : u0 + (1 - u0) * pr.u;
     // A surface just left, back on the mode's side at the start's time (two

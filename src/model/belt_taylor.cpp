@@ -209,9 +209,9 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
       // The forced oscillator's two columns in one pass, as its own
       // recurrences had them (PhiColumnsNext); the belt's one at a time.
-      Columns<Forced, L == LawKind::kCoulomb>(k, inv, dmu, r);
+      Columns<Forced, L == LawKind::kCoulomb, true>(k, inv, dmu, r);
       if (r.col && kind_ == ParamKind::kAffine)
-        r.col[1][k + 1] += ParamTerm(r, k, muk, muk_shifted, dmu) * inv;
+        r.col[1][k + 1] += ParamTermInline(r, k, muk, muk_shifted, dmu) * inv;
     }
   }
 }
@@ -249,25 +249,9 @@ void BeltTaylorField::ResolveParameter() {
   }
 }
 
-// Coefficient k of df_2/dp (ResolveParameter), from this step's series; the
-// shifted law's coefficient k is computed in the same loop (Recurrences).
 double BeltTaylorField::ParamTerm(const Rows& r, int k, double muk, double muk_shifted,
                                   double dmu) const {
-  switch (kind_) {
-    case ParamKind::kBeta:
-      return -2 * r.xd[k];
-    case ParamKind::kV:
-      return dmu;
-    case ParamKind::kAffine:
-      return sigma_ * (muk_shifted - muk) / dp_;
-    case ParamKind::kForce:  // d(A cos theta)/dA
-      return cos_.c()[k];
-    case ParamKind::kOmega: {  // -A sin(theta) d theta / d Omega, a linear series
-      const double* th = r.col[2];
-      return -force_ * (sin_.c()[k] * th[0] + (k > 0 ? sin_.c()[k - 1] * th[1] : 0.0));
-    }
-  }
-  return 0;
+  return ParamTermInline(r, k, muk, muk_shifted, dmu);
 }
 
 std::unique_ptr<TaylorField> Model::MakeTaylorField(const TaylorRequest& request) const {

@@ -7,8 +7,8 @@
 
 #include <optional>
 
-#include "model/mu_series.hpp"
 #include "integrate/series.hpp"
+#include "model/mu_series.hpp"
 #include "numerics/kernel.hpp"
 #include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/model/params.hpp"
@@ -57,14 +57,18 @@ class BeltTaylorField final : public TaylorField {
   void Cubic3Dispatch(int order, const Rows& r);
   // ConstJ: J constant over the step (coulomb: mu'(s) = 0 in slip), so each
   // sum with cc is its one term cc_0 q_k (the same value: the others are 0).
-  template <bool Newest, bool ConstJ = false>
+  template <bool Newest, bool ConstJ = false, bool InlineTerm = false>
   void Columns(int k, double inv, double dmu, const Rows& r);
   void Stick(int order, const TaylorLayout& layout, TaylorRow* c);
   // theta's column row: d theta / dp, of rate 1 for omega's column, else 0.
   void ClockColumn(int order, TaylorRow* col) const;
   void Forcing(int order, double theta0);
   void ResolveParameter();
+  // Out of line for the seed law's kernel (its x86-64-v3 clone would fuse
+  // the inline sums into FMAs: other roundings); inline (InlineTerm) where
+  // the baseline code calls it, once per order.
   double ParamTerm(const Rows& r, int k, double muk, double muk_shifted, double dmu) const;
+  double ParamTermInline(const Rows& r, int k, double muk, double muk_shifted, double dmu) const;
 
   TaylorRequest request_;
   Params q_;
@@ -87,8 +91,32 @@ class BeltTaylorField final : public TaylorField {
   double dp_ = 1;
 };
 
+// Coefficient k of df_2/dp (ResolveParameter), from this step's series; the
+// shifted law's coefficient k is computed in the same loop (Recurrences).
+// Inline: a call per order cost 4 % of a Den Hartog run (docs/benchmarks.md).
+__attribute__((always_inline)) inline double BeltTaylorField::ParamTermInline(const Rows& r, int k,
+                                                                              double muk,
+                                                                              double muk_shifted,
+                                                                              double dmu) const {
+  switch (kind_) {
+    case ParamKind::kBeta:
+      return -2 * r.xd[k];
+    case ParamKind::kV:
+      return dmu;
+    case ParamKind::kAffine:
+      return sigma_ * (muk_shifted - muk) / dp_;
+    case ParamKind::kForce:  // d(A cos theta)/dA
+      return cos_.c()[k];
+    case ParamKind::kOmega: {  // -A sin(theta) d theta / d Omega, a linear series
+      const double* th = r.col[2];
+      return -force_ * (sin_.c()[k] * th[0] + (k > 0 ? sin_.c()[k - 1] * th[1] : 0.0));
+    }
+  }
+  return 0;
+}
+
 // Phi' = J Phi and the parameter column (beta, v) at order k + 1, cc_ set to k.
-template <bool Newest, bool ConstJ>
+template <bool Newest, bool ConstJ, bool InlineTerm>
 __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, double inv, double dmu,
                                                                     const Rows& r) {
   const double* cc = cc_.c();
@@ -112,11 +140,13 @@ __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, doubl
   const double* p = r.col[1];
   const double cq = ConstJ    ? p[k] * cc[0]
                     : !Newest ? Cauchy(p, cc, k)
-                    : k == 0 ? p[0] * cc[0]
-                             : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
+                    : k == 0  ? p[0] * cc[0]
+                              : CauchyRange(p, cc, 1, k - 1, k) + (p[0] * cc[k] + p[k] * cc[0]);
   r.col[0][k + 1] = r.col[1][k] * inv;
   r.col[1][k + 1] = (-r.col[0][k] + cq) * inv;
-  if (kind_ != ParamKind::kAffine) r.col[1][k + 1] += ParamTerm(r, k, 0, 0, dmu) * inv;
+  if (kind_ != ParamKind::kAffine)
+    r.col[1][k + 1] +=
+        (InlineTerm ? ParamTermInline(r, k, 0, 0, dmu) : ParamTerm(r, k, 0, 0, dmu)) * inv;
 }
 
 }  // namespace stickslip
