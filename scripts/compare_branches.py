@@ -68,8 +68,9 @@ def compare(base, new, tol, rename=None, text=None):
             return [f"columns not in NEW: {missing}"], 0.0, len(rb), 0
         added = len(hn) - len(want)
         rn = [[r[hn.index(c)] for c in want] for r in rn]
-        rb = [[(text or {}).get(x, x) for x in r] for r in rb]
         hn = hb
+    if text:  # BASE's text cells renamed, with or without --rename
+        rb = [[text.get(x, x) for x in r] for r in rb]
     if hn[:len(hb)] == hb:  # columns appended after BASE's: compare BASE's only
         added = max(added, len(hn) - len(hb))
         rn = [r[:len(hb)] for r in rn]

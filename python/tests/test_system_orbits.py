@@ -145,10 +145,6 @@ class SystemOrbits(unittest.TestCase):
         self.assertIn("xdot0", r)
 
 
-if __name__ == "__main__":
-    unittest.main()
-
-
 class AutonomousScan(unittest.TestCase):
     """periodic_orbits(system) of two identical seed blocks at v = 0.3 (C++
     FindAutonomousOrbits): the synchronized orbit is the belt's own (its
@@ -202,3 +198,7 @@ class AutonomousScan(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "transient"):
             stickslip.periodic_orbits(stickslip.ForcedParams(law, force=0.1, omega=1.0),
                                       transient=10.0)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -198,23 +198,28 @@ SettledOrbit AsSettled(const System& at, const StartOrbit& o) {
 OrbitBranch TraceFromDefaultStart(const System& at, const ClockStart& c, RunControl& run,
                                   const std::function<OrbitBranch(const SettledOrbit&)>& trace,
                                   SettledOrbit* used) {
-  auto attempt = [&](const StartOrbit& o, OrbitBranch* b) {
+  const std::string after = " after " + std::to_string(kTransientPeriods) +
+                            " clock turns from rest on the contacts";
+  auto attempt = [&](const StartOrbit& o, const std::string& how, OrbitBranch* b) {
     *used = AsSettled(at, o);
     *b = trace(*used);
     used->found = b->status != BranchStatus::kStartFailed;
+    if (used->found) used->message = how + " (m = " + std::to_string(o.m) + ")";
     return used->found || run.Cancelled();
   };
   const Eigen::VectorXd z = SettledState(at, c);
   const std::optional<StartOrbit> settled = SettledStart(at, z, c, run);
   OrbitBranch b;
-  if (settled && settled->m > 1 && attempt(*settled, &b)) return b;
-  StartOrbit newton;  // m = 1 from the transient's end
+  if (settled && settled->m > 1 && attempt(*settled, "the attractor reached" + after, &b))
+    return b;
+  StartOrbit newton;  // m = newton_m from the transient's end
+  newton.m = c.newton_m;
   newton.z = z;
-  if (attempt(newton, &b)) return b;
+  if (attempt(newton, "Newton from the state" + after, &b)) return b;
   const SettledOrbit failed = *used;
   for (const StartOrbit& o : ChooseStart(StartOrbits(at, settled, c, 0, run), StartChoice(), "")) {
     OrbitBranch other;
-    if (attempt(o, &other)) return other;
+    if (attempt(o, "an orbit of the start list", &other)) return other;
   }
   *used = failed;
   used->found = false;

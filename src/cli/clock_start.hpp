@@ -46,6 +46,7 @@ struct ClockStart {
   Eigen::VectorXd rest;
   OrbitBranchOptions opts;
   std::array<double, 2> box{0, 0};
+  int newton_m = 1;  // the period multiple Newton tries (a restart's m at its far end)
 };
 
 struct StartOrbit {
@@ -90,7 +91,8 @@ SettledOrbit AsSettled(const System& at, const StartOrbit& o);
 // end, else the start list's default orbits. `trace` is called on each in
 // turn until its branch starts (status other than kStartFailed) or the run
 // is cancelled; returns that branch (else the Newton's) and sets *used to
-// its start (found false where none started).
+// its start (found false where none started; found: its message says which
+// start it was, for the files' metadata).
 OrbitBranch TraceFromDefaultStart(const System& at, const ClockStart& c, RunControl& run,
                                   const std::function<OrbitBranch(const SettledOrbit&)>& trace,
                                   SettledOrbit* used);

@@ -95,7 +95,7 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
     const Extrema e = OrbitExtrema(o);
     ++index;
     for (size_t k = 0; k < so_.points.size(); ++k)
-      t.AddRow({index, so_.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "non-stop",
+      t.AddRow({index, so_.m, o.sticks, o.crossings, o.sticks > 0 ? "stick-slip" : "pure-slip",
                 static_cast<int>(k + 1), so_.points[k][0], so_.points[k][1], e.x_min, e.x_max,
                 e.xdot_min, e.xdot_max, o.multipliers[0].real(), o.multipliers[0].imag(),
                 o.multipliers[1].real(), o.multipliers[1].imag(), std::abs(o.multipliers[0]),

@@ -151,11 +151,13 @@ OrbitBranch Trace(const BranchSetup& s, double from, double to, RunControl& run)
     return b;
   }
   SettledOrbit used;
+  ClockStart c = StartOf(model, s.opts);
+  c.newton_m = s.m;  // a restart's m at its far end
   return TraceFromDefaultStart(
-      model, StartOf(model, s.opts), run,
+      model, c, run,
       [&](const SettledOrbit& o) {
-        StartOrbit start;  // m = 1 from the transient's end: a restart's m at its far end
-        start.m = o.section.turns == 1 ? s.m : o.section.turns;
+        StartOrbit start;
+        start.m = o.section.turns;
         start.z = o.orbit.start.z.head(2);
         return ContinueFrom(s.p, s.axis, from, to, start, s.opts, run);
       },

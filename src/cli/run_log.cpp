@@ -128,7 +128,7 @@ void PrintForcedLog(std::ostream& os, const std::vector<OrbitBranch>& pieces, co
         const double mu = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
         std::ostringstream line;
         line << "  " << Pad(std::to_string(pt), 6) << Pad(std::to_string(i + 1), 8)
-             << Pad(r.sticks > 0 ? "stick-slip" : "non-stop", 12) << Pad(Fixed(r.p, 10), 16)
+             << Pad(r.sticks > 0 ? "stick-slip" : "pure-slip", 12) << Pad(Fixed(r.p, 10), 16)
              << Pad(std::to_string(m), 4) << Pad(Fixed(period, 6), 11) << Pad(Fixed(e.x_min, 6), 11)
              << Pad(Fixed(e.x_max, 6), 11) << Pad(Fixed(mu, 6), 11)
              << Pad(r.stable ? "stable" : "unstable", 10) << lab;

@@ -220,10 +220,11 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
        {"orbit", s.restart        ? std::string("the restart point's orbit, no settling")
                  : s.start.scan() ? "the start list's orbits at " + FormatNumber(s.start_at) +
                                         (settled.found ? "" : ": none chosen")
+                 : settled.found && s.system->clocks() == 1
+                     ? settled.message  // which default start (TraceFromDefaultStart)
                  : settled.found
-                     ? "the attractor settled on from " +
-                           std::string(s.system->clocks() ? "the origin" : "steady sliding") +
-                           " + " + FormatNumber(s.disturbance) + " after " +
+                     ? "the attractor settled on from steady sliding + " +
+                           FormatNumber(s.disturbance) + " after " +
                            FormatNumber(s.settle.transient) + " time units"
                      : "none: " + NoOrbit(settled)},
        {"rtol", FormatNumber(s.flow.rtol)},

@@ -81,7 +81,9 @@ void OrbitProblem::BoundReturn() {
 }
 
 void OrbitProblem::Returned(double period) {
-  if (period > 0 && std::isfinite(period)) period_ = period;
+  // The longest return seen: a trial point's short return never tightens the
+  // bound below a period the branch has had.
+  if (period > 0 && std::isfinite(period)) period_ = std::max(period_, period);
 }
 
 bool OrbitProblem::MapAt(double p, const FlowPoint& z, bool jacobian, VectorXd* r, PeriodicOrbit* o,

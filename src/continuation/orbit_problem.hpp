@@ -85,7 +85,7 @@ class OrbitProblem final : public PalcProblem {
              std::string* why);
   bool Difference(double p, const FlowPoint& z, Eigen::MatrixXd* jac, std::string* why);
   // An event section's return is looked for within kBranchReturnPeriods of
-  // the period of the last map that returned (period_; none yet: the
+  // the longest period of the maps that returned (period_; none yet: the
   // shooting's max_return_time): a map that has not returned by then is far
   // from the branch, as a run beyond a grazing edge that slips on.
   void BoundReturn();
@@ -103,7 +103,7 @@ class OrbitProblem final : public PalcProblem {
   bool opened_ = false;
   OrbitStatus last_failure_ = OrbitStatus::kOk;
   int polishes_ = 0;
-  double period_ = 0;  // of the last map that returned (BoundReturn)
+  double period_ = 0;  // the longest of the maps that returned (BoundReturn)
 };
 
 /// The section at system s for the state z: a stroboscopic section's time

@@ -71,8 +71,13 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   } else {
     lp->param.Set(lp->params, lp->p);
   }
-  // A forced run's tables are the system's (x_0, xdot_0: its point at phase 0).
-  const std::string x = lp->forced ? "x_0" : "x_start", xdot = lp->forced ? "xdot_0" : "xdot_start";
+  // A forced run's tables are the system's (x_0, xdot_0: its point at phase 0;
+  // files written before they were named x0, xdot0).
+  const auto& h = t.header;
+  const bool older = lp->forced && std::find(h.begin(), h.end(), "x_0") == h.end() &&
+                     std::find(h.begin(), h.end(), "x0") != h.end();
+  const std::string x = !lp->forced ? "x_start" : older ? "x0" : "x_0";
+  const std::string xdot = !lp->forced ? "xdot_start" : older ? "xdot0" : "xdot_0";
   lp->state = Vec2(t.Number(row[t.Column(x)], x), t.Number(row[t.Column(xdot)], xdot));
   const std::string& period = row[t.Column("period")];
   lp->period = t.Optional(period, "period");  // empty on steady sliding

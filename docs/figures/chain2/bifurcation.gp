@@ -44,6 +44,7 @@ plot 'branch.tsv' using 'v':(sel(0, 'equilibrium', 0) ? c('x1_max') : 1/0) with 
   'special_points.tsv' using 'v':'x1_max' with points ls 8 notitle, \
   'special_points.tsv' using 'v':(int($0) % 2 == 0 ? c('x1_max') : 1/0):'lab' with labels offset 0, 1.2 boxed font ',10' notitle, \
   'special_points.tsv' using 'v':(int($0) % 2 == 1 ? c('x1_max') : 1/0):'lab' with labels offset 0, -1.2 boxed font ',10' notitle
+unset label
 set key off
 set bmargin 3.5
 set offsets 0, 0, graph 0.05, graph 0.05
