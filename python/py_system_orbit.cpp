@@ -128,6 +128,18 @@ std::vector<PySystemOrbit> ForcedScan(const py::object& system, const System& s,
   return out;
 }
 
+// An empty scan says why, as a RuntimeWarning: its counts and the first
+// failed run's message (an error if warnings are errors).
+void WarnNoOrbit(const AutonomousOrbits& r) {
+  std::string w =
+      "periodic_orbits: no periodic orbit found (" + std::to_string(r.starts.size()) + " starts" +
+      (r.starts.empty() ? ": no steady sliding to start from and no starts given" : "") + ", " +
+      std::to_string(r.failed) + " runs failed, " + std::to_string(r.shots) + " Newton solves, " +
+      std::to_string(r.converged) + " converged)";
+  if (!r.message.empty()) w += "; first failed run: " + r.message;
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 // Every orbit of an autonomous system (FindAutonomousOrbits).
 std::vector<PySystemOrbit> AutonomousScan(const System& s, AutonomousSearchOptions o) {
   const std::string e = o.ValidationError();
@@ -140,6 +152,7 @@ std::vector<PySystemOrbit> AutonomousScan(const System& s, AutonomousSearchOptio
     r = FindAutonomousOrbits(s, o);
   }
   interrupt.RaiseIfInterrupted();
+  if (r.orbits.empty()) WarnNoOrbit(r);
   std::vector<PySystemOrbit> out;
   for (const AutonomousOrbit& f : r.orbits) {
     PySystemOrbit p = OrbitOf(s, f.orbit, f.points);

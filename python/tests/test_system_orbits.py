@@ -199,6 +199,16 @@ class AutonomousScan(unittest.TestCase):
             stickslip.periodic_orbits(stickslip.ForcedParams(law, force=0.1, omega=1.0),
                                       transient=10.0)
 
+    def test_an_empty_scan_says_why(self):
+        # The brake model at its defaults: steady sliding is stable (every
+        # eigenvalue's real part < 0), so every run from it decays and no
+        # stick exit recurs: no orbit, and a RuntimeWarning with the counts.
+        system = stickslip.CouplingParams()
+        self.assertLess(max(e.real for e in stickslip.steady_sliding(system).eigenvalues), 0)
+        with self.assertWarnsRegex(RuntimeWarning, r"no periodic orbit found \(\d+ starts"):
+            orbits = stickslip.periodic_orbits(system)
+        self.assertEqual(orbits, [])
+
 
 if __name__ == "__main__":
     unittest.main()
