@@ -14,6 +14,7 @@
 
 #include "app_test_util.hpp"
 #include "forced_reference.hpp"
+#include "forced_fixed_point.hpp"
 #include "forced_run.hpp"
 #include "stickslip/forced/flow.hpp"
 
@@ -29,30 +30,7 @@ double Cell(const tu::Tsv& t, const std::vector<std::string>& row, const std::st
   return std::stod(row[t.Column(col)]);
 }
 
-// (x0, xdot0) at Omega = 1.5, A = 0.1 on the seed belt, iterated by the
-// built-in model's flow at rtol = atol = 1e-13: back within 1e-8 after m
-// periods and not before, with `sticks` stick phases on the way.
-void ExpectFixedPointOfPm(double x0, double xdot0, int m, int sticks) {
-  stickslip::ForcedParams p;
-  p.force = 0.1, p.omega = 1.5;
-  const stickslip::ForcedModel model(p);
-  stickslip::FlowOptions o = stickslip::ForcedModel::FlowDefaults();
-  o.rtol = o.atol = 1e-13;
-  stickslip::FlowPoint z = stickslip::ForcedStart(model, 0, x0, xdot0);
-  int counted = 0;
-  for (int k = 1; k <= m; ++k) {
-    const stickslip::FlowRun run = tu::RunForced(model, z, k * model.period(), {}, o);
-    ASSERT_TRUE(stickslip::Reached(run)) << run.message;
-    z = run.end;
-    counted += run.sticks;
-    const double gap = std::hypot(z.z[0] - x0, z.z[1] - xdot0);
-    if (k < m)
-      EXPECT_GT(gap, 1e-3) << "back after " << k << " of m = " << m << " periods";
-    else
-      EXPECT_LT(gap, 1e-8) << "m = " << m;
-  }
-  EXPECT_EQ(counted, sticks) << "m = " << m;
-}
+using stickslip::testing_util::ExpectFixedPointOfPm;
 
 const std::vector<std::string> kAt = {"--model", kForcedFile, "--set",  "force=0.1,omega=1.5",
                                       "--param", "omega",     "--from", "1.5",
