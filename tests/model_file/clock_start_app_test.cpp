@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "app_test_util.hpp"
-#include "forced_reference.hpp"
 #include "forced_fixed_point.hpp"
+#include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "stickslip/forced/flow.hpp"
 
