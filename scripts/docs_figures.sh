@@ -60,7 +60,7 @@ for chart in seed_chart stribeck_chart quintic_chart leine_chart; do
 done
 # Systems with several masses or contacts (docs/systems.md). The chain's branch
 # ends at GR with no orbit of its period beyond: exit 1 (partial) by design.
-"$build/ss_continue" --study studies/brake.ini --out "$fig/brake" >/dev/null
+"$build/ss_continue" --study studies/mode_coupling.ini --out "$fig/mode_coupling" >/dev/null
 "$build/ss_continue" --study studies/chain2.ini --out "$fig/chain2" >/dev/null 2>&1 || [[ $? -eq 1 ]]
 run "$build/ss_basin" --study studies/chain2_basin.ini --out "$fig/chain2_basin"
 run "$build/ss_orbit_diagram" --study studies/chain2.ini --from 0.05 --to 0.45 --n 200 \

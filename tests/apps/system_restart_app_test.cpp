@@ -29,7 +29,7 @@ class SystemRestart : public tu::AppTest {
     std::string tmpl = ::testing::TempDir() + "ss_sysrestart_XXXXXX";
     ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
     shared_ = tmpl;
-    for (const char* study : {"brake", "chain2"}) {
+    for (const char* study : {"mode_coupling", "chain2"}) {
       const std::string out = shared_ + "/" + study;
       const std::string cmd = std::string(STICKSLIP_BIN_DIR) + "/ss_continue --study " +
                               STICKSLIP_SOURCE_DIR + "/studies/" + study +
@@ -89,8 +89,8 @@ std::string SystemRestart::shared_;
 // to the mu_k of a row of the first run (one on its stable side, one on its
 // unstable side), the half of that stability must end on that row.
 TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
-  const tu::Tsv first = Table(Study("brake") + "/branch.tsv");
-  const tu::Tsv special = Table(Study("brake") + "/special_points.tsv");
+  const tu::Tsv first = Table(Study("mode_coupling") + "/branch.tsv");
+  const tu::Tsv special = Table(Study("mode_coupling") + "/special_points.tsv");
   const std::vector<Row> b1 = Branch(first, 1);
   int lp = -1;
   for (int i = 0; i < static_cast<int>(b1.size()); ++i)
@@ -100,7 +100,7 @@ TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
     const Row& want = b1.at(target);
     const std::string out = dir_ + "/lp" + std::to_string(target);
     ASSERT_EQ(
-        Continue("--restart " + Study("brake") + " --point LP1 --to " + want[first.Column("mu_k")],
+        Continue("--restart " + Study("mode_coupling") + " --point LP1 --to " + want[first.Column("mu_k")],
                  out),
         0)
         << err_;
@@ -120,8 +120,8 @@ TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
 
 // The unstable half from the LP ends where the first run's did: at CL.
 TEST_F(SystemRestart, BrakeFoldInMuKFindsTheFirstRunsContactLoss) {
-  ASSERT_EQ(Continue("--restart " + Study("brake") + " --point LP1", dir_ + "/cl"), 0) << err_;
-  const tu::Tsv first = Table(Study("brake") + "/special_points.tsv");
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1", dir_ + "/cl"), 0) << err_;
+  const tu::Tsv first = Table(Study("mode_coupling") + "/special_points.tsv");
   const tu::Tsv t = Table(dir_ + "/cl/special_points.tsv");
   ExpectSameOrbit(t, Labelled(t, "CL1"), first, Labelled(first, "CL1"), "mu_k", 1e-9);
   EXPECT_EQ(t.meta.at("continued"), "mu_k");
@@ -131,9 +131,9 @@ TEST_F(SystemRestart, BrakeFoldInMuKFindsTheFirstRunsContactLoss) {
 // In v, the first row of each half is the LP's orbit of the first run.
 TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
   ASSERT_EQ(
-      Continue("--restart " + Study("brake") + " --point LP1 --param v --to 0.4", dir_ + "/v"), 0)
+      Continue("--restart " + Study("mode_coupling") + " --point LP1 --param v --to 0.4", dir_ + "/v"), 0)
       << err_;
-  const tu::Tsv first = Table(Study("brake") + "/special_points.tsv");
+  const tu::Tsv first = Table(Study("mode_coupling") + "/special_points.tsv");
   const Row lp = Labelled(first, "LP1");
   const tu::Tsv t = Table(dir_ + "/v/branch.tsv");
   EXPECT_EQ(t.meta.at("continued"), "v");
@@ -141,7 +141,7 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
   for (int b : {1, 2}) {
     const std::vector<Row> rows = Branch(t, b);
     ASSERT_GE(rows.size(), 2u) << b;
-    EXPECT_NEAR(At(t, rows.front(), "v"), 0.5, 1e-9);  // the brake study's v
+    EXPECT_NEAR(At(t, rows.front(), "v"), 0.5, 1e-9);  // the mode-coupling study's v
     EXPECT_NEAR(At(t, rows.front(), "period"), At(first, lp, "period"), 1e-9);
     for (const char* c : {"x_0", "xdot_0", "y_0", "ydot_0"})
       EXPECT_NEAR(At(t, rows.front(), c), At(first, lp, c), 1e-9) << c;
@@ -152,8 +152,8 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
 // LP1 given by its point number is the same fold: two halves, one of each
 // stability ending on the first run's row, as by its label.
 TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
-  const tu::Tsv first = Table(Study("brake") + "/branch.tsv");
-  const tu::Tsv special = Table(Study("brake") + "/special_points.tsv");
+  const tu::Tsv first = Table(Study("mode_coupling") + "/branch.tsv");
+  const tu::Tsv special = Table(Study("mode_coupling") + "/special_points.tsv");
   const std::string pt = Labelled(special, "LP1")[special.Column("pt")];
   const std::vector<Row> b1 = Branch(first, 1);
   int lp = -1;
@@ -162,7 +162,7 @@ TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
   ASSERT_GE(lp, 4);
   const Row& want = b1.at(lp - 3);
   const std::string out = dir_ + "/bynumber";
-  ASSERT_EQ(Continue("--restart " + Study("brake") + " --point " + pt + " --to " +
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point " + pt + " --to " +
                          want[first.Column("mu_k")],
                      out),
             0)
@@ -186,7 +186,7 @@ TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
 // the LP lie, and both halves get there.
 TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
   const std::string run = dir_ + "/range";
-  ASSERT_EQ(std::system(("cp -r " + Study("brake") + " " + run +
+  ASSERT_EQ(std::system(("cp -r " + Study("mode_coupling") + " " + run +
                          " && sed -i 's/^# from: .*/# from: 0.5/' " + run + "/branch.tsv " + run +
                          "/special_points.tsv")
                             .c_str()),
@@ -212,7 +212,7 @@ TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
 TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
   const std::string out = dir_ + "/late";
   EXPECT_EQ(
-      Continue("--restart " + Study("brake") + " --point LP1 --max_step 1e-4 --max_time 0.5", out),
+      Continue("--restart " + Study("mode_coupling") + " --point LP1 --max_step 1e-4 --max_time 0.5", out),
       1)
       << err_;
   const tu::Tsv t = Table(out + "/branch.tsv");
@@ -248,7 +248,7 @@ TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
 // No nan or inf is written: what does not apply is an empty cell (the period,
 // the multipliers and mult_max on steady sliding, max_real on orbit rows).
 TEST_F(SystemRestart, NotApplicableCellsAreEmptyNeverNan) {
-  for (const char* study : {"brake", "chain2"})
+  for (const char* study : {"mode_coupling", "chain2"})
     for (const char* file : {"/branch.tsv", "/special_points.tsv"}) {
       const std::string path = Study(study) + file;
       const tu::Tsv t = Table(path);

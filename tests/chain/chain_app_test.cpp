@@ -232,7 +232,7 @@ TEST_F(SystemApp, RunsThatEndEarlyEndCleanly) {
   EXPECT_TRUE(tu::Contains(r.err, "steady sliding step-too-small: no steady sliding at k11"));
   dir = NewDir();
   r = RunOut("ss_continue", dir,
-             {"--study", STICKSLIP_SOURCE_DIR "/studies/brake.ini", "--set", "beta=0.5"},
+             {"--study", STICKSLIP_SOURCE_DIR "/studies/mode_coupling.ini", "--set", "beta=0.5"},
              tu::HaveGnuplot());
   EXPECT_EQ(r.outcome.code, tu::HaveGnuplot() ? 0 : 3) << r.err;
   EXPECT_TRUE(tu::Contains(r.err, "note: no stick-slip orbit: no stick phase"));
