@@ -109,6 +109,20 @@ TEST_F(ChainStudyApp, TenBlocksCrossTogetherAtTheModesFrequencies) {
     for (int i = 1; i <= 10; ++i)
       EXPECT_NEAR(Cell(branch, row, "x" + std::to_string(i) + "_0"), mu, 1e-12) << v << " " << i;
   }
+  // The figure's title: block 5's stiffness is k5 as k4 and k6 are, not the
+  // cubic law's quintic term k_5; its lines fit the 1000 px figure (<= 96).
+  const std::string gp = tu::ReadFile(dir_ + "/out/bifurcation.gp");
+  const std::size_t at = gp.find("title \"chain:");
+  ASSERT_NE(at, std::string::npos);
+  const std::string title = gp.substr(at, gp.find('\n', at) - at);
+  EXPECT_TRUE(tu::Contains(title, " k5=1 ")) << title;
+  EXPECT_FALSE(tu::Contains(title, "k_5")) << title;
+  std::size_t line = 0, longest = 0;
+  for (std::size_t i = title.find('"') + 1; i < title.size(); ++i, ++line) {
+    if (title.compare(i, 2, "\\n") == 0) longest = std::max(longest, line), line = 0, i += 2;
+    if (title.compare(i, 3, "\\\\_") == 0) i += 2;  // an escaped _: one character shown
+  }
+  EXPECT_LE(std::max(longest, line), 97u) << title;  // and the closing quote
 }
 // The coulomb chain's trajectory from the study's start, every row against
 // the closed-form pieces of chain_coulomb_reference.hpp (the reference of
