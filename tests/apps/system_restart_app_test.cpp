@@ -1,5 +1,5 @@
 // Restarts of the systems' runs (docs/systems.md, "Restarts"): the brake
-// study's LP and the chain2 study's GR, read back from the first run's files
+// study's LP and the chain2 study's GR (at kc = 0.5), read back from the first run's files
 // and continued in the same parameter, must give the first run's rows there
 // (an independent check: a row of the first run, at the parameter value the
 // restart is sent to, against the restart's last row); in a second parameter
@@ -32,9 +32,11 @@ class SystemRestart : public tu::AppTest {
     for (const char* study : {"mode_coupling", "chain2"}) {
       const std::string out = shared_ + "/" + study;
       const std::string cmd = std::string(STICKSLIP_BIN_DIR) + "/ss_continue --study " +
-                              STICKSLIP_SOURCE_DIR + "/studies/" + study +
-                              ".ini --no_plots --out " + out + " >/dev/null 2>&1";
-      // chain2 ends at its GR with no orbit beyond: exit 1 (docs/systems.md).
+                              STICKSLIP_SOURCE_DIR + "/studies/" + study + ".ini" +
+                              (std::string(study) == "chain2" ? " --set kc=0.5" : "") +
+                              " --no_plots --out " + out + " >/dev/null 2>&1";
+      // chain2 at kc = 0.5 (the study's is 0.2, whose branch ends at SL) ends
+      // at its GR with no orbit of its period beyond (docs/systems.md).
       const int status = std::system(cmd.c_str());
       ASSERT_TRUE(tu::Exists(out + "/special_points.tsv")) << cmd << ": " << status;
     }
@@ -99,10 +101,10 @@ TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
   for (int target : {lp - 3, lp + 3}) {  // stable before the fold, unstable after
     const Row& want = b1.at(target);
     const std::string out = dir_ + "/lp" + std::to_string(target);
-    ASSERT_EQ(
-        Continue("--restart " + Study("mode_coupling") + " --point LP1 --to " + want[first.Column("mu_k")],
-                 out),
-        0)
+    ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1 --to " +
+                           want[first.Column("mu_k")],
+                       out),
+              0)
         << err_;
     const tu::Tsv t = Table(out + "/branch.tsv");
     EXPECT_EQ(t.meta.at("status"), "complete");
@@ -120,7 +122,8 @@ TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
 
 // The unstable half from the LP ends where the first run's did: at CL.
 TEST_F(SystemRestart, BrakeFoldInMuKFindsTheFirstRunsContactLoss) {
-  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1", dir_ + "/cl"), 0) << err_;
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1", dir_ + "/cl"), 0)
+      << err_;
   const tu::Tsv first = Table(Study("mode_coupling") + "/special_points.tsv");
   const tu::Tsv t = Table(dir_ + "/cl/special_points.tsv");
   ExpectSameOrbit(t, Labelled(t, "CL1"), first, Labelled(first, "CL1"), "mu_k", 1e-9);
@@ -130,8 +133,9 @@ TEST_F(SystemRestart, BrakeFoldInMuKFindsTheFirstRunsContactLoss) {
 
 // In v, the first row of each half is the LP's orbit of the first run.
 TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
-  ASSERT_EQ(
-      Continue("--restart " + Study("mode_coupling") + " --point LP1 --param v --to 0.4", dir_ + "/v"), 0)
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1 --param v --to 0.4",
+                     dir_ + "/v"),
+            0)
       << err_;
   const tu::Tsv first = Table(Study("mode_coupling") + "/special_points.tsv");
   const Row lp = Labelled(first, "LP1");
@@ -211,9 +215,10 @@ TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
 // steady sliding, 10001 rows, takes a few ms.
 TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
   const std::string out = dir_ + "/late";
-  EXPECT_EQ(
-      Continue("--restart " + Study("mode_coupling") + " --point LP1 --max_step 1e-4 --max_time 0.5", out),
-      1)
+  EXPECT_EQ(Continue("--restart " + Study("mode_coupling") +
+                         " --point LP1 --max_step 1e-4 --max_time 0.5",
+                     out),
+            1)
       << err_;
   const tu::Tsv t = Table(out + "/branch.tsv");
   ASSERT_EQ(t.meta.at("steady_status"), "reached-end") << "the limit fell before the branch";
@@ -226,7 +231,7 @@ TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
   EXPECT_TRUE(tu::Contains(err_, "cancelled")) << err_;
 }
 
-// From chain2's GR back down in v, to the v of a row of the first run.
+// From chain2's GR (kc = 0.5) back down in v, to the v of a row of the first run.
 TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
   const tu::Tsv first = Table(Study("chain2") + "/branch.tsv");
   const std::vector<Row> b1 = Branch(first, 1);

@@ -120,15 +120,16 @@ TEST_F(ChainStartListApp, PointPicksOneOrbitOfTheList) {
   EXPECT_EQ(found_sync, 1);
 }
 
-// Two unequal blocks (chain2_asym, m2 = 1.5) at v = 0.3: the list's second
+// Two unequal blocks (chain2_asym, m2 = 1.5) at kc = 0.5, v = 0.3: the list's second
 // orbit (both blocks stick twice) closes after 4 stick exits, the first's
 // after 1; branch 2's rows name their own section, and a restart from its
 // last row continues that orbit (its first row is the row, period and state).
 TEST_F(ChainStartListApp, ABranchOnItsOwnSectionRestartsOnIt) {
   const std::string first = NewDir(), again = NewDir();
-  const AppRun r = RunOut("ss_continue", first,
-                          {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2_asym.ini", "--from",
-                           "0.3", "--to", "0.302", "--start_at", "0.3", "--all"});
+  const AppRun r =
+      RunOut("ss_continue", first,
+             {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2_asym.ini", "--set", "kc=0.5",
+              "--from", "0.3", "--to", "0.302", "--start_at", "0.3", "--all"});
   ASSERT_EQ(r.outcome.code, 0) << r.err;
   const tu::Tsv t = tu::ReadTsv(tu::ReadFile(first + "/out/branch.tsv"));
   EXPECT_EQ(t.meta.at("section_returns"), "1");
