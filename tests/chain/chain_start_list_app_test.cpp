@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "app_test_util.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace {
 namespace start_list {  // unity builds: its own names beside the other chain app tests
