@@ -59,11 +59,11 @@ for chart in seed_chart stribeck_chart quintic_chart leine_chart; do
   run "$build/ss_chart" --study "studies/$chart.ini" --out "$fig/$chart"
 done
 # Systems with several masses or contacts (docs/systems.md). The chain's branch
-# ends at GR with no orbit of its period beyond: exit 1 (partial) by design.
-"$build/ss_continue" --study studies/brake.ini --out "$fig/brake" >/dev/null
+# ends at SL with no orbit of its period beyond (sequence-ended, exit 0).
+"$build/ss_continue" --study studies/mode_coupling.ini --out "$fig/mode_coupling" >/dev/null
 "$build/ss_continue" --study studies/chain2.ini --out "$fig/chain2" >/dev/null 2>&1 || [[ $? -eq 1 ]]
 run "$build/ss_basin" --study studies/chain2_basin.ini --out "$fig/chain2_basin"
-run "$build/ss_orbit_diagram" --study studies/chain2.ini --from 0.05 --to 0.45 --n 200 \
+run "$build/ss_orbit_diagram" --study studies/chain2.ini --set kc=0.5 --from 0.05 --to 0.45 --n 200 \
   --transient 300 --keep 100 --out "$fig/chain2_od"
 run "$build/ss_chart" --study studies/brake_chart.ini --out "$fig/brake_chart"
 # The other studies of several masses: two unequal blocks, the Coulomb chain

@@ -9,7 +9,7 @@ scripts/setup.sh --target ss_apps --target stickslip_python build
 ./build/ss_continue --study studies/seed.ini --out plots
 scripts/seed_figures.sh build
 # The mode-coupling brake model (docs/systems.md): steady sliding, HB, the stick-slip branch.
-./build/ss_continue --study studies/brake.ini --out plots/brake
+./build/ss_continue --study studies/mode_coupling.ini --out plots/mode_coupling
 # Stability charts in two parameters (ss_chart), each into plots/<study>/.
 for chart in seed_chart stribeck_chart quintic_chart leine_chart seed_mu_chart; do
   ./build/ss_chart --study "studies/$chart.ini"

@@ -74,8 +74,14 @@ RUNS = {
     "quintic_chart": (FAST, "ss_chart", study("quintic_chart"), "plots"),
     "leine_chart": (FAST, "ss_chart", study("leine_chart"), "plots"),
     # docs/systems.md: the chain studies.
-    "chain2_kc02": (FAST, "ss_continue", study("chain2", "--set", "kc=0.2"), ""),
+    "chain2": (FAST, "ss_continue", study("chain2"), ""),
+    "chain2_kc05": (FAST, "ss_continue", study("chain2", "--set", "kc=0.5"), ""),
+    "chain2_list": (FAST, "ss_continue", study("chain2", "--from", "0.3", "--to", "0.302", "--all"),
+                    ""),
     "chain2_asym": (FAST, "ss_continue", study("chain2_asym"), ""),
+    "chain2_asym_list": (FAST, "ss_continue",
+                         study("chain2_asym", "--from", "0.3", "--to", "0.302", "--all"), ""),
+    "chain2_asym_kc05": (FAST, "ss_continue", study("chain2_asym", "--set", "kc=0.5"), ""),
     "chain2_coulomb": (FAST, "ss_continue", study("chain2_coulomb"), ""),
     "chain2_coulomb_sim": (FAST, "ss_simulate", study("chain2_coulomb"), ""),
     "chain10": (FAST, "ss_continue", study("chain10"), ""),
@@ -816,37 +822,68 @@ def exit_gap(r):
     return ts[-1] - ts[-3]
 
 
-KC02 = ("w = √(1 + 2kc) = 1.18322, a stable orbit with the blocks' extremes equal, of period "
-        "5.4337 at\nv = 0.3, and branch 1 ending at SL, v = 0.39521")
-ASYM_HEAD = ["steady sliding: 102 rows, reached-end", "branch 1: 41 rows, sequence-ended",
-             "branch 2: 62 rows, sequence-ended"]
+CHAIN2 = ("- **Branch 1** ends at SL, v = 0.39521, where both stick phases end (exits 2 → 0)")
+CHAIN2_T = ("block's extremes are the other's, and both stick once per period. Its period is 5.4337 at\n"
+            "  v = 0.3, near the out-of-phase mode's 2π/w = 5.310, w = √(1 + 2kc) = 1.18322")
+KC05 = ("HB, with w = √(1 + 2kc) = 1.41421, a stable orbit with the blocks half a period apart, of\n"
+        "period 4.5257 at v = 0.3 (near 2π/√2 = 4.443), and branch 1 ending at GR, v = 0.3948974826")
+ASYM_HEAD = ["branch 1: 18 rows, sequence-ended", "branch 2: 17 rows, sequence-ended"]
+ASYM05_HEAD = ["branch 1: 41 rows, sequence-ended", "branch 2: 62 rows, sequence-ended"]
+ASYM = ("- **The attractor at v = 0.3 is long**: period 29.45572, six stick phases a period (three\n"
+        "  per block), x1 over [−0.11951, 0.65768] and x2 over [−0.17862, 0.72536], largest multiplier\n"
+        "  0.52371 (stable). Its branch is short: up to SL1, v = 0.30585, and down to SL2,\n"
+        "  v = 0.29513")
 ASYM_ROW = ("its x1 runs over [0.00924, 0.55471], the heavier block's x2 over\n"
-            "[0.15314, 0.42347]. The period is 4.89608")
+            "  [0.15314, 0.42347]. The period is 4.89608")
 COULOMB_SIM = ("6307 rows to t = 600 (complete), 153 section points (exit), 153 sticks, 0 crossings; "
                "x1 in [0.06072007950742299, 0.53241128440428]")
 CHAIN10_SIM = ("2210 rows to t = 300 (complete), 353 section points (exit), 355 sticks, 1 crossings; "
                "x1 in [-0.13623802826185943, 0.6698721218397475]")
-for line, run in [(l, "chain2_asym") for l in ASYM_HEAD] + [(COULOMB_SIM, "chain2_coulomb_sim"),
-                                                             (CHAIN10_SIM, "chain10_sim")]:
+for line, run in ([(l, "chain2_asym") for l in ASYM_HEAD] +
+                  [(l, "chain2_asym_kc05") for l in ASYM05_HEAD] +
+                  [(COULOMB_SIM, "chain2_coulomb_sim"), (CHAIN10_SIM, "chain10_sim")]):
     for k, q in enumerate(re.findall(NUM, line)):
         CHECKS.append((line, q, run, (lambda h, k: lambda r: quoted_line(r, h, k))(line[:12], k)))
 CHECKS += [
-    (KC02, "1.18322", "chain2_kc02", lambda r: r.described("HB1", r"w = ([0-9.]+)")),
-    (KC02, "5.4337", "chain2_kc02", lambda r: branch_row(r, "1", "period")),
-    (KC02, "0.39521", "chain2_kc02", S("SL1", "v")),
+    ("1: period 5.433667724740548, sticks 1, 1 (per contact), |multiplier| 0.24463498200056197",
+     "5.433667724740548", "chain2_list", lambda r: r.printed(r"1: period ([0-9.]+)")),
+    ("1: period 5.433667724740548, sticks 1, 1 (per contact), |multiplier| 0.24463498200056197",
+     "0.24463498200056197", "chain2_list", lambda r: r.printed(r"1: period .*\|multiplier\| ([0-9.]+)")),
+    ("2: period 6.461249807003621, sticks 1, 1 (per contact), |multiplier| 1.153292062190169",
+     "6.461249807003621", "chain2_list", lambda r: r.printed(r"2: period ([0-9.]+)")),
+    ("2: period 6.461249807003621, sticks 1, 1 (per contact), |multiplier| 1.153292062190169",
+     "1.153292062190169", "chain2_list", lambda r: r.printed(r"2: period .*\|multiplier\| ([0-9.]+)")),
+    (CHAIN2, "0.39521", "chain2", S("SL1", "v")),
+    (CHAIN2_T, "5.4337", "chain2", lambda r: branch_row(r, "1", "period")),
+    (CHAIN2_T, "1.18322", "chain2", lambda r: r.described("HB1", r"w = ([0-9.]+)")),
+    (KC05, "1.41421", "chain2_kc05", lambda r: r.described("HB1", r"w = ([0-9.]+)")),
+    (KC05, "4.5257", "chain2_kc05", lambda r: branch_row(r, "1", "period")),
+    (KC05, "0.3948974826", "chain2_kc05", S("GR1", "v")),
     ("d = 0, v = 0.44095855184409716, whatever m2", "0.44095855184409716", "chain2_asym",
      S("HB1", "v")),
-    ("w = 1.31481 and 0.87823; the run reports the first", "1.31481", "chain2_asym",
+    ("w = 1.12169 and 0.86128; the run reports the first", "1.12169", "chain2_asym",
      lambda r: r.described("HB1", r"w = ([0-9.]+)")),
-    (ASYM_ROW, "0.00924", "chain2_asym", lambda r: branch_row(r, "1", "x1_min")),
-    (ASYM_ROW, "0.55471", "chain2_asym", lambda r: branch_row(r, "1", "x1_max")),
-    (ASYM_ROW, "0.15314", "chain2_asym", lambda r: branch_row(r, "1", "x2_min")),
-    (ASYM_ROW, "0.42347", "chain2_asym", lambda r: branch_row(r, "1", "x2_max")),
-    (ASYM_ROW, "4.89608", "chain2_asym", lambda r: branch_row(r, "1", "period")),
-    ("a complex pair of modulus 0.92316", "0.92316", "chain2_asym",
+    (ASYM, "29.45572", "chain2_asym", lambda r: branch_row(r, "1", "period")),
+    (ASYM, "0.11951", "chain2_asym", lambda r: -branch_row(r, "1", "x1_min")),
+    (ASYM, "0.65768", "chain2_asym", lambda r: branch_row(r, "1", "x1_max")),
+    (ASYM, "0.17862", "chain2_asym", lambda r: -branch_row(r, "1", "x2_min")),
+    (ASYM, "0.72536", "chain2_asym", lambda r: branch_row(r, "1", "x2_max")),
+    (ASYM, "0.52371", "chain2_asym", lambda r: branch_row(r, "1", "mult_max")),
+    (ASYM, "0.30585", "chain2_asym", S("SL1", "v")),
+    ("has a second stable orbit, period 29.38938 with sticks 4 and 2", "29.38938",
+     "chain2_asym_list", lambda r: r.printed(r"1: period ([0-9.]+), sticks 4, 2 .*, stable")),
+    (ASYM, "0.29513", "chain2_asym", S("SL2", "v")),
+    ("- HB at the same v, with w = 1.31481 and 0.87823", "1.31481", "chain2_asym_kc05",
+     lambda r: r.described("HB1", r"w = ([0-9.]+)")),
+    (ASYM_ROW, "0.00924", "chain2_asym_kc05", lambda r: branch_row(r, "1", "x1_min")),
+    (ASYM_ROW, "0.55471", "chain2_asym_kc05", lambda r: branch_row(r, "1", "x1_max")),
+    (ASYM_ROW, "0.15314", "chain2_asym_kc05", lambda r: branch_row(r, "1", "x2_min")),
+    (ASYM_ROW, "0.42347", "chain2_asym_kc05", lambda r: branch_row(r, "1", "x2_max")),
+    (ASYM_ROW, "4.89608", "chain2_asym_kc05", lambda r: branch_row(r, "1", "period")),
+    ("a complex pair of modulus 0.92316", "0.92316", "chain2_asym_kc05",
      lambda r: branch_row(r, "1", "mult_max")),
-    ("ends at GR1, v = 0.40082", "0.40082", "chain2_asym", S("GR1", "v")),
-    ("ends at GR2, v = 0.14195", "0.14195", "chain2_asym", S("GR2", "v")),
+    ("ends at GR1, v = 0.40082", "0.40082", "chain2_asym_kc05", S("GR1", "v")),
+    ("ends at GR2, v = 0.14195", "0.14195", "chain2_asym_kc05", S("GR2", "v")),
     ("From section point 75 on, at\n  t = 357.83", "75", "chain2_coulomb_sim",
      lambda r: in_step_from(r, "n")),
     ("From section point 75 on, at\n  t = 357.83", "357.83", "chain2_coulomb_sim",

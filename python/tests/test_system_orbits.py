@@ -149,7 +149,7 @@ class AutonomousScan(unittest.TestCase):
     """periodic_orbits(system) of two identical seed blocks at v = 0.3 (C++
     FindAutonomousOrbits): the synchronized orbit is the belt's own (its
     periodic_orbits(params)), the alternating one has x2(t) = x1(t + T/2) at
-    the period ss_continue gives (docs/figures/chain2/branch.tsv)."""
+    the period ss_continue gives (ss_continue --study chain2 --set kc=0.5)."""
 
     def chain(self, kc):
         law = stickslip.Params("cubic", beta=0.05, mu_s=0.4, mu_m=0.25, v_m=0.5, v=0.3)

@@ -41,16 +41,18 @@ bool SameOrbit(const FoundOrbit& o, const StartOrbit& s) {
 }  // namespace
 
 void AddStartOptions(po::options_description& d) {
-  d.add_options()("all", po::bool_switch(),
-                  "a system with a clock (the forced oscillator): continue a branch from each "
-                  "orbit of the start list (the orbits at --from that the scan finds, m <= 12, "
-                  "and the attractor reached from rest, any m <= 32; printed, numbered by m then "
-                  "x_max)")(
+  d.add_options()(
+      "all", po::bool_switch(),
+      "continue a branch from each orbit of the start list, printed and numbered: with "
+      "a clock (the forced oscillator) the orbits at --from that the scan finds, m <= "
+      "12, and the attractor reached from rest, any m <= 32, by m then x_max; with "
+      "none (chain, mode_coupling) the orbits at --start_at that runs from steady sliding "
+      "moved along each mode settle on, by period")(
       "m", Value()->value_name("M"),
       "a system with a clock: start on an orbit of least period M clock turns, in [1, 64] (the "
       "attractor if one has period M, else the first); with --all each orbit of period M; "
-      "--point N (no --restart) starts on orbit N of the start list (default: the attractor "
-      "reached from rest)");
+      "--point N (no --restart) starts on orbit N of the start list, with a clock or none "
+      "(default: the attractor reached from rest, or settled on from steady sliding)");
 }
 
 StartChoice StartChoiceFromArguments(const Arguments& args, bool restart) {
@@ -198,8 +200,8 @@ SettledOrbit AsSettled(const System& at, const StartOrbit& o) {
 OrbitBranch TraceFromDefaultStart(const System& at, const ClockStart& c, RunControl& run,
                                   const std::function<OrbitBranch(const SettledOrbit&)>& trace,
                                   SettledOrbit* used) {
-  const std::string after = " after " + std::to_string(kTransientPeriods) +
-                            " clock turns from rest on the contacts";
+  const std::string after =
+      " after " + std::to_string(kTransientPeriods) + " clock turns from rest on the contacts";
   auto attempt = [&](const StartOrbit& o, const std::string& how, OrbitBranch* b) {
     *used = AsSettled(at, o);
     *b = trace(*used);
@@ -210,8 +212,7 @@ OrbitBranch TraceFromDefaultStart(const System& at, const ClockStart& c, RunCont
   const Eigen::VectorXd z = SettledState(at, c);
   const std::optional<StartOrbit> settled = SettledStart(at, z, c, run);
   OrbitBranch b;
-  if (settled && settled->m > 1 && attempt(*settled, "the attractor reached" + after, &b))
-    return b;
+  if (settled && settled->m > 1 && attempt(*settled, "the attractor reached" + after, &b)) return b;
   StartOrbit newton;  // m = newton_m from the transient's end
   newton.m = c.newton_m;
   newton.z = z;

@@ -9,6 +9,7 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
+#include "cli/autonomous_start.hpp"
 #include "cli/system_choice.hpp"
 #include "cli/system_restart.hpp"
 #include "cli/system_setup.hpp"
@@ -80,7 +81,7 @@ ClockStart ClockStartOf(const SystemSetup& s, const System& at) {
   return c;
 }
 
-// The orbits a restart or a clock's start list (--all, --m, --point) starts on.
+// The orbits a restart or a start list (--all, --point; a clock's --m) starts on.
 std::vector<SettledOrbit> Starts(const SystemSetup& s, const SettledOrbit& settled,
                                  RunControl& run) {
   if (!s.start.scan())
@@ -88,6 +89,8 @@ std::vector<SettledOrbit> Starts(const SystemSetup& s, const SettledOrbit& settl
   std::unique_ptr<System> at = s.system->Clone();
   at->SetParameterValue(s.param, s.start_at);
   const std::string where = s.system->ParameterName(s.param) + " = " + FormatNumber(s.start_at);
+  if (s.system->clocks() == 0)  // no clock: the autonomous scan's list (autonomous_start.hpp)
+    return ChosenAutonomousStarts(*at, BranchOptions(s), s.start, where, std::cout, run);
   return ChosenStarts(*at, ClockStartOf(s, *at), s.start, where, std::cout, run);
 }
 
@@ -222,11 +225,10 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
                                         (settled.found ? "" : ": none chosen")
                  : settled.found && s.system->clocks() == 1
                      ? settled.message  // which default start (TraceFromDefaultStart)
-                 : settled.found
-                     ? "the attractor settled on from steady sliding + " +
-                           FormatNumber(s.disturbance) + " after " +
-                           FormatNumber(s.settle.transient) + " time units"
-                     : "none: " + NoOrbit(settled)},
+                 : settled.found ? "the attractor settled on from steady sliding + " +
+                                       FormatNumber(s.disturbance) + " after " +
+                                       FormatNumber(s.settle.transient) + " time units"
+                                 : "none: " + NoOrbit(settled)},
        {"rtol", FormatNumber(s.flow.rtol)},
        {"atol", FormatNumber(s.flow.atol)},
        {"steady_status", s.system->clocks() ? std::string("none: a clock, no rest point")
@@ -238,10 +240,17 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
     section = PoincareSection::StickExit(section.contact, section.returns * (s.doubled ? 2 : 1));
   AddRestartMetadata(*s.system, s.choice, s.law, s.flow, s.max_amplitude,
                      settled.found ? &section : nullptr, meta);
-  for (std::size_t i = 0; i < r.pieces.size(); ++i)
-    meta.emplace_back("branch_" + std::to_string(r.numbers[i]) + "_status",
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    const std::string b = "branch_" + std::to_string(r.numbers[i]);
+    meta.emplace_back(b + "_status",
                       std::string(Name(r.pieces[i].status)) +
                           (r.pieces[i].message.empty() ? "" : ": " + r.pieces[i].message));
+    const PoincareSection& own = r.pieces[i].section;  // a start list's orbit on another section
+    if (settled.found && own.kind == SectionKind::kStickExit &&
+        (own.contact != section.contact || own.returns != section.returns))
+      meta.insert(meta.end(), {{b + "_section_contact", std::to_string(own.contact)},
+                               {b + "_section_returns", std::to_string(own.returns)}});
+  }
   return meta;
 }
 

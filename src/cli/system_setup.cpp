@@ -54,21 +54,22 @@ void ConfigureRestart(const Arguments& args, SystemSetup& s) {
   s.from = sp.run_from, s.to = sp.run_to;
 }
 
-// A clock's start list (clock_start.hpp): --all, --m, --point N without
-// --restart; and no settling run's options for a clock.
+// A start list: a clock's (clock_start.hpp; --all, --m, --point N without
+// --restart), else the autonomous scan's (autonomous_start.hpp; --all,
+// --point N, no --m, and its own runs: no settling run's options).
 void ConfigureStart(const Arguments& args, SystemSetup& s) {
-  const bool scan = args.Flag("all") || args.Given("m") || (args.Given("point") && !s.restart);
-  if (scan && s.system->clocks() != 1)
-    throw UsageError(args.Source(args.Flag("all")  ? "all"
-                                 : args.Given("m") ? "m"
-                                                   : "point") +
-                     " chooses a start orbit of a system with a clock; " + SystemLabel(args) +
-                     " has none" + (args.Given("point") ? " (--point needs --restart DIR)" : ""));
+  if (args.Given("m") && s.system->clocks() != 1)
+    throw UsageError(args.Source("m") + " counts clock turns; " + SystemLabel(args) +
+                     " has no clock (--all or --point N picks from its start list)");
   s.start = StartChoiceFromArguments(args, s.restart.has_value());
-  for (const char* o : {"transient", "disturbance"})  // clock_start.hpp: no settling run
-    if (args.Given(o) && s.system->clocks() == 1)
-      throw UsageError(args.Source(o) + ": a system with a clock starts from rest on its " +
-                       "contacts after " + std::to_string(kTransientPeriods) + " clock turns");
+  const bool clock = s.system->clocks() == 1;
+  for (const char* o : {"transient", "disturbance"})  // no settling run
+    if (args.Given(o) && (clock || s.start.scan()))
+      throw UsageError(args.Source(o) + ": " +
+                       (clock ? "a system with a clock starts from rest on its contacts after " +
+                                    std::to_string(kTransientPeriods) + " clock turns"
+                              : std::string("the start list's runs start along each mode of "
+                                            "steady sliding (FindAutonomousOrbits), not settled")));
 }
 
 }  // namespace

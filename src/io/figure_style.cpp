@@ -70,19 +70,19 @@ std::string FigurePreamble(FigureFormat f, int width, int height) {
 
 namespace {
 // The symbol of a parameter name, in enhanced text; empty if it has none.
-std::string Symbol(const std::string& w) {
+std::string Symbol(const std::string& w, bool law) {
   if (w == "beta") return "β";
   if (w == "delta") return "δ";
   if (w == "mu_s" || w == "mu_m" || w == "mu_k") return "μ_" + w.substr(3);
   if (w == "v_m" || w == "v_s") return "v_" + w.substr(2);
-  if (w == "k5") return "k_5";
-  if (w == "omega") return "Ω";  // the forced oscillator: A cos(Ω t)
+  if (w == "k5" && law) return "k_5";  // seed eq. 3.3's quintic term
+  if (w == "omega") return "Ω";        // the forced oscillator: A cos(Ω t)
   if (w == "force") return "A";
   return "";
 }
 }  // namespace
 
-std::string EnhancedText(const std::string& plain) {
+std::string EnhancedText(const std::string& plain, bool law) {
   std::string out;
   std::size_t i = 0;
   while (i < plain.size()) {
@@ -92,7 +92,7 @@ std::string EnhancedText(const std::string& plain) {
       ++j;
     if (j > i) {
       const std::string word = plain.substr(i, j - i);
-      const std::string sym = Symbol(word);
+      const std::string sym = Symbol(word, law);
       if (!sym.empty()) {
         out += sym;
       } else {
@@ -123,14 +123,14 @@ std::string SystemFigureTitle(const std::string& description) {
   const std::size_t colon = description.find(": ");
   std::istringstream in(colon == std::string::npos ? description : description.substr(colon + 2));
   std::string out =
-      colon == std::string::npos ? "" : EnhancedText(description.substr(0, colon)) + ":";
+      colon == std::string::npos ? "" : EnhancedText(description.substr(0, colon), false) + ":";
   std::size_t line = out.size();  // the current line's plain length, about
   const char* sep = out.empty() ? "" : " ";
   for (std::string word; in >> word;) {
     const std::size_t eq = word.find('=');
     if (eq == std::string::npos || word.compare(eq + 1, 1, "[") == 0) continue;
     if (line + word.size() + 4 > kTitleWidth) sep = *sep == ',' ? ",\n" : "\n", line = 0;
-    out += sep + EnhancedText(word.substr(0, eq)) + " = " + word.substr(eq + 1);
+    out += sep + EnhancedText(word.substr(0, eq), false) + " = " + word.substr(eq + 1);
     line += word.size() + 4;
     sep = ", ";
   }

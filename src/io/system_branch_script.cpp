@@ -14,6 +14,10 @@ namespace stickslip {
 
 namespace {
 
+// A title line's length in characters: the figure is 1000 px wide, and
+// chain10's lines of 104-108 ran past its edges at kTitleWidth.
+constexpr std::size_t kSystemTitleWidth = 96;
+
 using io_detail::SystemLine;
 
 int Style(const std::string& kind, bool stable) {
@@ -71,7 +75,8 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
      << FigurePreamble(format, 1000, orbits ? 1150 : 560) << "set output '"
      << FigureFile("bifurcation", format) << "'\n";
   if (lines.empty())  // nothing computed: an empty frame that says so
-    return os.str() + "set title " + GnuplotQuoted(EnhancedText(WrapWords(title, kTitleWidth))) +
+    return os.str() + "set title " +
+           GnuplotQuoted(EnhancedText(WrapWords(title, kSystemTitleWidth), false)) +
            "\nset xrange [0:1]\nset yrange [0:1]\nset label 1 'no rows' at graph 0.5, graph 0.5 "
            "center\nplot NaN notitle\n";
   os << "c(name) = column(name)\n"
@@ -81,7 +86,7 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
   os << "sel(b, k, s) = c('branch') == b && strcol('kind') eq k && "
         "(c('stable') == s || P[int(c('pt'))])\n"
      << "set multiplot layout " << (orbits ? 3 : 1) << ", 1 title "
-     << GnuplotQuoted(EnhancedText(WrapWords(title, kTitleWidth))) << "\n"
+     << GnuplotQuoted(EnhancedText(WrapWords(title, kSystemTitleWidth), false)) << "\n"
      << "set xlabel " << GnuplotQuoted(EnhancedText(p)) << "\nset autoscale xfix\n"
      << "set ylabel " << GnuplotQuoted(EnhancedText(s.StateName(0) + " (min and max)")) << "\n"
      << "set offsets 0, 0, graph 0.12, graph 0.05\n";

@@ -130,6 +130,12 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* s
   if (sp->section.kind == SectionKind::kTime &&
       std::find(t.header.begin(), t.header.end(), "m") != t.header.end())
     sp->section.turns = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, kMaxReturns));
+  // A stick-exit branch of a start list on its own section (branch_N_section_*).
+  const std::string own = "branch_" + std::to_string(sp->branch) + "_section_";
+  if (sp->section.kind == SectionKind::kStickExit && t.meta.count(own + "returns"))
+    sp->section = PoincareSection::StickExit(
+        static_cast<int>(t.MetaWhole(own + "contact", 0, ModeSet::kMaxContacts - 1)),
+        static_cast<int>(t.MetaWhole(own + "returns", 1, kMaxReturns)));
   if (!std::isfinite(sp->p) || !sp->start.z.allFinite() ||
       (sp->periodic() && !(std::isfinite(sp->period) && sp->period > 0)))
     throw RestartError(Part::kRun, "'" + t.path + "': the point " + sp->label +

@@ -1,5 +1,5 @@
 // Restarts of the systems' runs (docs/systems.md, "Restarts"): the brake
-// study's LP and the chain2 study's GR, read back from the first run's files
+// study's LP and the chain2 study's GR (at kc = 0.5), read back from the first run's files
 // and continued in the same parameter, must give the first run's rows there
 // (an independent check: a row of the first run, at the parameter value the
 // restart is sent to, against the restart's last row); in a second parameter
@@ -29,12 +29,14 @@ class SystemRestart : public tu::AppTest {
     std::string tmpl = ::testing::TempDir() + "ss_sysrestart_XXXXXX";
     ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
     shared_ = tmpl;
-    for (const char* study : {"brake", "chain2"}) {
+    for (const char* study : {"mode_coupling", "chain2"}) {
       const std::string out = shared_ + "/" + study;
       const std::string cmd = std::string(STICKSLIP_BIN_DIR) + "/ss_continue --study " +
-                              STICKSLIP_SOURCE_DIR + "/studies/" + study +
-                              ".ini --no_plots --out " + out + " >/dev/null 2>&1";
-      // chain2 ends at its GR with no orbit beyond: exit 1 (docs/systems.md).
+                              STICKSLIP_SOURCE_DIR + "/studies/" + study + ".ini" +
+                              (std::string(study) == "chain2" ? " --set kc=0.5" : "") +
+                              " --no_plots --out " + out + " >/dev/null 2>&1";
+      // chain2 at kc = 0.5 (the study's is 0.2, whose branch ends at SL) ends
+      // at its GR with no orbit of its period beyond (docs/systems.md).
       const int status = std::system(cmd.c_str());
       ASSERT_TRUE(tu::Exists(out + "/special_points.tsv")) << cmd << ": " << status;
     }
@@ -89,8 +91,8 @@ std::string SystemRestart::shared_;
 // to the mu_k of a row of the first run (one on its stable side, one on its
 // unstable side), the half of that stability must end on that row.
 TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
-  const tu::Tsv first = Table(Study("brake") + "/branch.tsv");
-  const tu::Tsv special = Table(Study("brake") + "/special_points.tsv");
+  const tu::Tsv first = Table(Study("mode_coupling") + "/branch.tsv");
+  const tu::Tsv special = Table(Study("mode_coupling") + "/special_points.tsv");
   const std::vector<Row> b1 = Branch(first, 1);
   int lp = -1;
   for (int i = 0; i < static_cast<int>(b1.size()); ++i)
@@ -99,10 +101,10 @@ TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
   for (int target : {lp - 3, lp + 3}) {  // stable before the fold, unstable after
     const Row& want = b1.at(target);
     const std::string out = dir_ + "/lp" + std::to_string(target);
-    ASSERT_EQ(
-        Continue("--restart " + Study("brake") + " --point LP1 --to " + want[first.Column("mu_k")],
-                 out),
-        0)
+    ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1 --to " +
+                           want[first.Column("mu_k")],
+                       out),
+              0)
         << err_;
     const tu::Tsv t = Table(out + "/branch.tsv");
     EXPECT_EQ(t.meta.at("status"), "complete");
@@ -120,8 +122,9 @@ TEST_F(SystemRestart, BrakeFoldInMuKEndsOnTheFirstRunsRows) {
 
 // The unstable half from the LP ends where the first run's did: at CL.
 TEST_F(SystemRestart, BrakeFoldInMuKFindsTheFirstRunsContactLoss) {
-  ASSERT_EQ(Continue("--restart " + Study("brake") + " --point LP1", dir_ + "/cl"), 0) << err_;
-  const tu::Tsv first = Table(Study("brake") + "/special_points.tsv");
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1", dir_ + "/cl"), 0)
+      << err_;
+  const tu::Tsv first = Table(Study("mode_coupling") + "/special_points.tsv");
   const tu::Tsv t = Table(dir_ + "/cl/special_points.tsv");
   ExpectSameOrbit(t, Labelled(t, "CL1"), first, Labelled(first, "CL1"), "mu_k", 1e-9);
   EXPECT_EQ(t.meta.at("continued"), "mu_k");
@@ -130,10 +133,11 @@ TEST_F(SystemRestart, BrakeFoldInMuKFindsTheFirstRunsContactLoss) {
 
 // In v, the first row of each half is the LP's orbit of the first run.
 TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
-  ASSERT_EQ(
-      Continue("--restart " + Study("brake") + " --point LP1 --param v --to 0.4", dir_ + "/v"), 0)
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point LP1 --param v --to 0.4",
+                     dir_ + "/v"),
+            0)
       << err_;
-  const tu::Tsv first = Table(Study("brake") + "/special_points.tsv");
+  const tu::Tsv first = Table(Study("mode_coupling") + "/special_points.tsv");
   const Row lp = Labelled(first, "LP1");
   const tu::Tsv t = Table(dir_ + "/v/branch.tsv");
   EXPECT_EQ(t.meta.at("continued"), "v");
@@ -141,7 +145,7 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
   for (int b : {1, 2}) {
     const std::vector<Row> rows = Branch(t, b);
     ASSERT_GE(rows.size(), 2u) << b;
-    EXPECT_NEAR(At(t, rows.front(), "v"), 0.5, 1e-9);  // the brake study's v
+    EXPECT_NEAR(At(t, rows.front(), "v"), 0.5, 1e-9);  // the mode-coupling study's v
     EXPECT_NEAR(At(t, rows.front(), "period"), At(first, lp, "period"), 1e-9);
     for (const char* c : {"x_0", "xdot_0", "y_0", "ydot_0"})
       EXPECT_NEAR(At(t, rows.front(), c), At(first, lp, c), 1e-9) << c;
@@ -152,8 +156,8 @@ TEST_F(SystemRestart, BrakeFoldInVStartsOnThePointsOrbit) {
 // LP1 given by its point number is the same fold: two halves, one of each
 // stability ending on the first run's row, as by its label.
 TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
-  const tu::Tsv first = Table(Study("brake") + "/branch.tsv");
-  const tu::Tsv special = Table(Study("brake") + "/special_points.tsv");
+  const tu::Tsv first = Table(Study("mode_coupling") + "/branch.tsv");
+  const tu::Tsv special = Table(Study("mode_coupling") + "/special_points.tsv");
   const std::string pt = Labelled(special, "LP1")[special.Column("pt")];
   const std::vector<Row> b1 = Branch(first, 1);
   int lp = -1;
@@ -162,7 +166,7 @@ TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
   ASSERT_GE(lp, 4);
   const Row& want = b1.at(lp - 3);
   const std::string out = dir_ + "/bynumber";
-  ASSERT_EQ(Continue("--restart " + Study("brake") + " --point " + pt + " --to " +
+  ASSERT_EQ(Continue("--restart " + Study("mode_coupling") + " --point " + pt + " --to " +
                          want[first.Column("mu_k")],
                      out),
             0)
@@ -186,7 +190,7 @@ TEST_F(SystemRestart, BrakeFoldByNumberIsAFoldToo) {
 // the LP lie, and both halves get there.
 TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
   const std::string run = dir_ + "/range";
-  ASSERT_EQ(std::system(("cp -r " + Study("brake") + " " + run +
+  ASSERT_EQ(std::system(("cp -r " + Study("mode_coupling") + " " + run +
                          " && sed -i 's/^# from: .*/# from: 0.5/' " + run + "/branch.tsv " + run +
                          "/special_points.tsv")
                             .c_str()),
@@ -211,9 +215,10 @@ TEST_F(SystemRestart, BrakeFoldDefaultsToTheBranchSide) {
 // steady sliding, 10001 rows, takes a few ms.
 TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
   const std::string out = dir_ + "/late";
-  EXPECT_EQ(
-      Continue("--restart " + Study("brake") + " --point LP1 --max_step 1e-4 --max_time 0.5", out),
-      1)
+  EXPECT_EQ(Continue("--restart " + Study("mode_coupling") +
+                         " --point LP1 --max_step 1e-4 --max_time 0.5",
+                     out),
+            1)
       << err_;
   const tu::Tsv t = Table(out + "/branch.tsv");
   ASSERT_EQ(t.meta.at("steady_status"), "reached-end") << "the limit fell before the branch";
@@ -226,7 +231,7 @@ TEST_F(SystemRestart, RestartStoppedByMaxTimeIsCancelled) {
   EXPECT_TRUE(tu::Contains(err_, "cancelled")) << err_;
 }
 
-// From chain2's GR back down in v, to the v of a row of the first run.
+// From chain2's GR (kc = 0.5) back down in v, to the v of a row of the first run.
 TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
   const tu::Tsv first = Table(Study("chain2") + "/branch.tsv");
   const std::vector<Row> b1 = Branch(first, 1);
@@ -248,7 +253,7 @@ TEST_F(SystemRestart, ChainGrazingInVEndsOnTheFirstRunsRow) {
 // No nan or inf is written: what does not apply is an empty cell (the period,
 // the multipliers and mult_max on steady sliding, max_real on orbit rows).
 TEST_F(SystemRestart, NotApplicableCellsAreEmptyNeverNan) {
-  for (const char* study : {"brake", "chain2"})
+  for (const char* study : {"mode_coupling", "chain2"})
     for (const char* file : {"/branch.tsv", "/special_points.tsv"}) {
       const std::string path = Study(study) + file;
       const tu::Tsv t = Table(path);

@@ -1,6 +1,6 @@
 // An orbit branch's map on a stick-exit section gives up kBranchReturnPeriods
 // periods of the last orbit after its start, not after the shooting's
-// max_return_time (2000): the two-block chain study (studies/chain2.ini) past
+// max_return_time (2000): the two-block chain study (studies/chain2.ini at kc = 0.5) past
 // its GR (v = 0.395) has no stick phase, and the search beyond the edge once
 // ran 2000 time units per Newton (0.7 s of the study's 0.73 s,
 // docs/benchmarks.md). The reference for "no return": the flow alone from the

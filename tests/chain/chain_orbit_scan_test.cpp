@@ -3,7 +3,7 @@
 // (x1 = x2) must be the belt's own orbit (FindPeriodicOrbits on the 1-DOF
 // Model: period and x range); at kc = 0.5 the alternating one
 // (x2(t) = x1(t + T/2)) is found too, at the period ss_continue gives
-// (docs/figures/chain2/branch.tsv); the synchronized orbit's transverse
+// (ss_continue --study chain2 --set kc=0.5); the synchronized orbit's transverse
 // multiplier at kc = 0.2 is the one checked against Boost.Odeint in
 // chain_floquet_test.cpp (docs/theory.md).
 #include <gtest/gtest.h>
@@ -97,7 +97,7 @@ TEST(ChainOrbitScan, FindsTheSynchronizedOrbitAsTheBeltsAndTheAlternatingOne) {
     // both attract at v = 0.3, kc = 0.5).
     EXPECT_EQ(sync->orbit.stable, kc == 0.5);
     // The alternating orbit's period: ss_continue's branch at v = 0.3
-    // (kc 0.5: docs/figures/chain2/branch.tsv; kc 0.2: docs/systems.md, 5.4337).
+    // (kc 0.5: --study chain2 --set kc=0.5; kc 0.2: docs/figures/chain2/branch.tsv, 5.4337).
     const double period = kc == 0.5 ? 4.525710084704488 : 5.4337;
     const double tol = kc == 0.5 ? 1e-8 : 5e-5;
     int alternating = 0;

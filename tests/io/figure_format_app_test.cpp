@@ -74,6 +74,10 @@ TEST(FigureStyle, FormatNamesAndTitles) {
   EXPECT_EQ(SystemFigureTitle("chain: v=[axis] kc=0.2 beta=0.05 mu_s=0.4 k1=[continued]"),
             "chain: kc = 0.2, β = 0.05, μ_s = 0.4");
   EXPECT_EQ(SystemFigureTitle("kc=0.2"), "kc = 0.2");  // no name: no leading blank
+  // A system's k5 (a chain's block-5 stiffness) is not the cubic law's k_5.
+  EXPECT_EQ(SystemFigureTitle("chain: k4=1 k5=1"), "chain: k4 = 1, k5 = 1");
+  EXPECT_EQ(EnhancedText("c5=0.1 k5=1", false), "c5=0.1 k5=1");
+  EXPECT_EQ(EnhancedText("k5=1"), "k_5=1");
   EXPECT_EQ(ParameterAxisLabel(Parameter::kForce), "force amplitude A");
   EXPECT_EQ(ParameterAxisLabel(Parameter::kBeta), "damping ratio β");
   EXPECT_NE(FigurePreamble(FigureFormat::kPdf, 1000, 700).find("pdfcairo size 10in,7in"),

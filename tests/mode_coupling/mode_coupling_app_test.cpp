@@ -1,4 +1,4 @@
-// ss_continue --study brake (studies/brake.ini; docs/systems.md): the
+// ss_continue --study mode_coupling (studies/mode_coupling.ini; docs/systems.md): the
 // mode-coupling brake model through the app. Steady sliding's HB against the
 // closed form mu_k* (mode_coupling.hpp); every stick-slip row of branch.tsv
 // against an independent integrator: Boost.Odeint's Dormand-Prince at 1e-13
@@ -26,8 +26,8 @@ namespace ode = boost::numeric::odeint;
 using State = std::array<double, 4>;
 class ModeCouplingApp : public tu::AppTest {};
 
-const std::string kStudy = STICKSLIP_SOURCE_DIR "/studies/brake.ini";
-// The study's set (studies/brake.ini).
+const std::string kStudy = STICKSLIP_SOURCE_DIR "/studies/mode_coupling.ini";
+// The study's set (studies/mode_coupling.ini).
 constexpr double kBeta = 0.02, kK11 = 1, kK22 = 1.5, kK12 = -0.3, kGamma = 1, kV = 0.5, kMuS = 0.8;
 
 // Slip below the belt (x' < v) under Coulomb friction mu_k, or stick (x' = v).

@@ -101,7 +101,7 @@ TEST(ModeCouplingChart, FoldCurveMeetsTheBranchFolds) {
       if (r.label == SpecialKind::kFold) found = r.p;
     EXPECT_NEAR(found, p.p1, 1e-9) << "beta " << p.p2;
   }
-  // The study's fold at beta = 0.02 (docs/systems.md, "The brake study").
+  // The study's fold at beta = 0.02 (docs/systems.md, "The mode-coupling study").
   double at = 0;
   for (const SystemCurvePoint& p : lp->points)
     if (std::abs(p.p2 - 0.02) < 1e-15) at = p.p1;

@@ -85,17 +85,18 @@ TEST_F(ClockStartApp, PeriodAndPointChooseOneOrbitAndItsRowsKeepTheirPeriod) {
   for (const auto& other : t.rows) EXPECT_EQ(other[t.Column("branch")], "1");
 }
 
-// Without a clock the choice is refused: exit 2, one line naming it.
-TEST_F(ClockStartApp, AStartChoiceNeedsAClock) {
+// Without a clock --m (clock turns) is refused: exit 2, one line naming it
+// (--all and --point take the autonomous scan's list: chain_start_list_app_test.cpp).
+TEST_F(ClockStartApp, ClockTurnsNeedAClock) {
   for (const std::vector<std::string>& extra :
-       {std::vector<std::string>{"--all"}, {"--m", "2"}, {"--point", "1"}}) {
+       {std::vector<std::string>{"--m", "2"}, {"--all", "--m", "1"}}) {
     const std::string dir = NewDir();
     std::vector<std::string> a = {"--system", "chain", "--param", "v", "--to", "0.3"};
     a.insert(a.end(), extra.begin(), extra.end());
     const AppRun r = RunOut("ss_continue", dir, a);
     EXPECT_EQ(r.outcome.code, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_TRUE(tu::Contains(r.err, extra[0])) << r.err;
+    EXPECT_TRUE(tu::Contains(r.err, "--m counts clock turns")) << r.err;
     EXPECT_FALSE(tu::Exists(dir + "/out")) << r.err;
   }
 }

@@ -78,7 +78,7 @@ TEST_F(ModelFileApp, TheBeltFileGivesTheBuiltInBranch) {
   ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-12);
 }
 
-// studies/brake.ini's run (flutter at mu_k 0.515, a fold, contact loss)
+// studies/mode_coupling.ini's run (flutter at mu_k 0.515, a fold, contact loss)
 // with the brake written as a model file, normal force 1 - gamma y.
 TEST_F(ModelFileApp, TheBrakeFileGivesTheBuiltInBranch) {
   const std::string a = NewDir(), b = NewDir();
@@ -87,7 +87,7 @@ TEST_F(ModelFileApp, TheBrakeFileGivesTheBuiltInBranch) {
                             "1e-12", "--atol", "1e-12", "--param", "mu_k", "--from", "0.3", "--to",
                             "0.7", "--start_at", "0.52", "--max_step", "0.05"});
   const auto built =
-      RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/brake.ini"});
+      RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/mode_coupling.ini"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
   EXPECT_TRUE(tu::Contains(file.out, "CL at")) << file.out;
   // Measured: states 3.3e-13; multipliers 2e-12 where a complex pair meets on
@@ -96,15 +96,15 @@ TEST_F(ModelFileApp, TheBrakeFileGivesTheBuiltInBranch) {
   ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-11);
 }
 
-// studies/chain2.ini's run (two coupled seed blocks, two contacts: 9 modes)
-// with the chain written as a model file.
+// studies/chain2.ini's run at kc = 0.5, the model file's (two coupled seed
+// blocks, two contacts: 9 modes) with the chain written as a model file.
 TEST_F(ModelFileApp, TheChainFileGivesTheBuiltInBranch) {
   const std::string a = NewDir(), b = NewDir();
   const auto file = RunOut("ss_continue", a,
                            {"--model", kModels + "chain2.ini", "--param", "v", "--from", "0.05",
                             "--to", "0.5", "--start_at", "0.3"});
-  const auto built =
-      RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2.ini"});
+  const auto built = RunOut(
+      "ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/chain2.ini", "--set", "kc=0.5"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
   // Measured: states 7.5e-15 (246 rows); the multipliers 1.3e-7 at the
   // grazing point's row (1e-8 on the rows before it), where the return map's

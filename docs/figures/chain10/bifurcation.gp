@@ -28,7 +28,7 @@ array P[N]
 do for [i = 1:N] { P[i] = 0 }
 stats 'special_points.tsv' using (P[int(c('pt'))] = 1, 0) nooutput
 sel(b, k, s) = c('branch') == b && strcol('kind') eq k && (c('stable') == s || P[int(c('pt'))])
-set multiplot layout 1, 1 title "chain: v=[continued] kc=0.5 β=0.05 m1=1 c1=0.1 k1=1 mu\\_s1=0.4 m2=1 c2=0.1 k2=1 mu\\_s2=0.4 m3=1 c3=0.1 k3=1\nmu\\_s3=0.4 m4=1 c4=0.1 k4=1 mu\\_s4=0.4 m5=1 c5=0.1 k_5=1 mu\\_s5=0.4 m6=1 c6=0.1 k6=1 mu\\_s6=0.4 m7=1 c7=0.1 k7=1\nmu\\_s7=0.4 m8=1 c8=0.1 k8=1 mu\\_s8=0.4 m9=1 c9=0.1 k9=1 mu\\_s9=0.4 m10=1 c10=0.1 k10=1 mu\\_s10=0.4"
+set multiplot layout 1, 1 title "chain: v=[continued] kc=0.5 β=0.05 m1=1 c1=0.1 k1=1 mu\\_s1=0.4 m2=1 c2=0.1 k2=1 mu\\_s2=0.4 m3=1\nc3=0.1 k3=1 mu\\_s3=0.4 m4=1 c4=0.1 k4=1 mu\\_s4=0.4 m5=1 c5=0.1 k5=1 mu\\_s5=0.4 m6=1 c6=0.1 k6=1\nmu\\_s6=0.4 m7=1 c7=0.1 k7=1 mu\\_s7=0.4 m8=1 c8=0.1 k8=1 mu\\_s8=0.4 m9=1 c9=0.1 k9=1 mu\\_s9=0.4 m10=1\nc10=0.1 k10=1 mu\\_s10=0.4"
 set xlabel "v"
 set autoscale xfix
 set ylabel "x1 (min and max)"

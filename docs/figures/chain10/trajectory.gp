@@ -21,7 +21,7 @@ set bmargin 7
 set style textbox opaque noborder margins 1,1
 set output "trajectory.png"
 set bmargin 9
-set multiplot layout 1,2 title "chain: v = 0.3, kc = 0.5, β = 0.05, m1 = 1, c1 = 0.1, k1 = 1, mu\\_s1 = 0.4, m2 = 1, c2 = 0.1, k2 = 1,\nmu\\_s2 = 0.4, m3 = 1, c3 = 0.1, k3 = 1, mu\\_s3 = 0.4, m4 = 1, c4 = 0.1, k4 = 1, mu\\_s4 = 0.4, m5 = 1, c5 = 0.1,\nk_5 = 1, mu\\_s5 = 0.4, m6 = 1, c6 = 0.1, k6 = 1, mu\\_s6 = 0.4, m7 = 1, c7 = 0.1, k7 = 1, mu\\_s7 = 0.4, m8 = 1,\nc8 = 0.1, k8 = 1, mu\\_s8 = 0.4, m9 = 1, c9 = 0.1, k9 = 1, mu\\_s9 = 0.4, m10 = 1, c10 = 0.1, k10 = 1,\nmu\\_s10 = 0.4"
+set multiplot layout 1,2 title "chain: v = 0.3, kc = 0.5, β = 0.05, m1 = 1, c1 = 0.1, k1 = 1, mu\\_s1 = 0.4, m2 = 1, c2 = 0.1, k2 = 1,\nmu\\_s2 = 0.4, m3 = 1, c3 = 0.1, k3 = 1, mu\\_s3 = 0.4, m4 = 1, c4 = 0.1, k4 = 1, mu\\_s4 = 0.4, m5 = 1, c5 = 0.1,\nk5 = 1, mu\\_s5 = 0.4, m6 = 1, c6 = 0.1, k6 = 1, mu\\_s6 = 0.4, m7 = 1, c7 = 0.1, k7 = 1, mu\\_s7 = 0.4, m8 = 1,\nc8 = 0.1, k8 = 1, mu\\_s8 = 0.4, m9 = 1, c9 = 0.1, k9 = 1, mu\\_s9 = 0.4, m10 = 1, c10 = 0.1, k10 = 1,\nmu\\_s10 = 0.4"
 set offsets 0, 0, graph 0.04, graph 0.04
 set xlabel "x1"
 set ylabel "x1'"
@@ -49,7 +49,7 @@ set autoscale x
 set bmargin 7
 set terminal pngcairo size 950,750 enhanced font 'Sans,12'
 set output "section.png"
-set title "exit map (stick exits)\n" . "chain: v = 0.3, kc = 0.5, β = 0.05, m1 = 1, c1 = 0.1, k1 = 1, mu\\_s1 = 0.4, m2 = 1, c2 = 0.1, k2 = 1,\nmu\\_s2 = 0.4, m3 = 1, c3 = 0.1, k3 = 1, mu\\_s3 = 0.4, m4 = 1, c4 = 0.1, k4 = 1, mu\\_s4 = 0.4, m5 = 1, c5 = 0.1,\nk_5 = 1, mu\\_s5 = 0.4, m6 = 1, c6 = 0.1, k6 = 1, mu\\_s6 = 0.4, m7 = 1, c7 = 0.1, k7 = 1, mu\\_s7 = 0.4, m8 = 1,\nc8 = 0.1, k8 = 1, mu\\_s8 = 0.4, m9 = 1, c9 = 0.1, k9 = 1, mu\\_s9 = 0.4, m10 = 1, c10 = 0.1, k10 = 1,\nmu\\_s10 = 0.4"
+set title "exit map (stick exits)\n" . "chain: v = 0.3, kc = 0.5, β = 0.05, m1 = 1, c1 = 0.1, k1 = 1, mu\\_s1 = 0.4, m2 = 1, c2 = 0.1, k2 = 1,\nmu\\_s2 = 0.4, m3 = 1, c3 = 0.1, k3 = 1, mu\\_s3 = 0.4, m4 = 1, c4 = 0.1, k4 = 1, mu\\_s4 = 0.4, m5 = 1, c5 = 0.1,\nk5 = 1, mu\\_s5 = 0.4, m6 = 1, c6 = 0.1, k6 = 1, mu\\_s6 = 0.4, m7 = 1, c7 = 0.1, k7 = 1, mu\\_s7 = 0.4, m8 = 1,\nc8 = 0.1, k8 = 1, mu\\_s8 = 0.4, m9 = 1, c9 = 0.1, k9 = 1, mu\\_s9 = 0.4, m10 = 1, c10 = 0.1, k10 = 1,\nmu\\_s10 = 0.4"
 set xlabel "x1 at stick exit n"
 set ylabel "x1 at stick exit n+1"
 set size square

@@ -28,7 +28,7 @@ array P[N]
 do for [i = 1:N] { P[i] = 0 }
 stats 'special_points.tsv' using (P[int(c('pt'))] = 1, 0) nooutput
 sel(b, k, s) = c('branch') == b && strcol('kind') eq k && (c('stable') == s || P[int(c('pt'))])
-set multiplot layout 3, 1 title "chain: v=[continued] kc=0.5 β=0.05 m1=1 c1=0.1 k1=1 mu\\_s1=0.4 m2=1.5 c2=0.1 k2=1 mu\\_s2=0.4"
+set multiplot layout 3, 1 title "chain: v=[continued] kc=0.2 β=0.05 m1=1 c1=0.1 k1=1 mu\\_s1=0.4 m2=1.5 c2=0.1 k2=1 mu\\_s2=0.4"
 set xlabel "v"
 set autoscale xfix
 set ylabel "x1 (min and max)"
@@ -44,6 +44,7 @@ plot 'branch.tsv' using 'v':(sel(0, 'equilibrium', 0) ? c('x1_max') : 1/0) with 
   'special_points.tsv' using 'v':'x1_max' with points ls 8 notitle, \
   'special_points.tsv' using 'v':(int($0) % 2 == 0 ? c('x1_max') : 1/0):'lab' with labels offset 0, 1.2 boxed font ',10' notitle, \
   'special_points.tsv' using 'v':(int($0) % 2 == 1 ? c('x1_max') : 1/0):'lab' with labels offset 0, -1.2 boxed font ',10' notitle
+unset label
 set key off
 set bmargin 3.5
 set offsets 0, 0, graph 0.05, graph 0.05

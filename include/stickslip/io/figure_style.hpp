@@ -67,8 +67,9 @@ std::string FigureTerminal(FigureFormat f, int width, int height);
 std::string FigurePreamble(FigureFormat f, int width, int height);
 /// Text for gnuplot's enhanced mode: parameter names as symbols (beta -> β,
 /// mu_s -> μ with subscript s, delta -> δ, k5 -> k_5), other special
-/// characters (_ ^ { } @ & ~) escaped.
-std::string EnhancedText(const std::string& plain);
+/// characters (_ ^ { } @ & ~) escaped. law false: a system's names, where k5
+/// is not the cubic law's quintic term (a chain's block-5 stiffness) but text.
+std::string EnhancedText(const std::string& plain, bool law = true);
 /// A title from a model line "law=cubic beta=0.05 v=[0.05, 0.5] ... (partial)":
 /// "cubic law: β = 0.05, ... (partial)" in enhanced text, leaving out the
 /// parameters on the axes (their values are the axes).

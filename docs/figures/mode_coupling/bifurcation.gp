@@ -46,6 +46,7 @@ plot 'branch.tsv' using 'mu_k':(sel(0, 'equilibrium', 0) ? c('x_max') : 1/0) wit
   'special_points.tsv' using 'mu_k':'x_max' with points ls 8 notitle, \
   'special_points.tsv' using 'mu_k':(int($0) % 2 == 0 ? c('x_max') : 1/0):'lab' with labels offset 0, 1.2 boxed font ',10' notitle, \
   'special_points.tsv' using 'mu_k':(int($0) % 2 == 1 ? c('x_max') : 1/0):'lab' with labels offset 0, -1.2 boxed font ',10' notitle
+unset label
 set key off
 set bmargin 3.5
 set offsets 0, 0, graph 0.05, graph 0.05
