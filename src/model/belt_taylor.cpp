@@ -85,17 +85,24 @@ int BeltTaylorField::ExtraOrder(double eps, bool in_steps) const {
 }
 
 // The forcing's series to order + 1: cos and sin of theta = theta0 + Omega t;
-// with ac, as: A cos and A sin to order in the same pass (the auxiliary rows).
+// with ac, as: A cos and A sin to order (the auxiliary rows). The recurrence
+// carries c_k, s_k in registers: stores to the rows, which may alias the
+// series for all the compiler knows, would make each order reload them.
 void BeltTaylorField::Forcing(int order, double theta0, double* ac, double* as) {
   double* co = cos_.c();
   double* si = sin_.c();
-  co[0] = std::cos(theta0);
-  si[0] = std::sin(theta0);
+  const double w = omega_;
+  double ck = std::cos(theta0), sk = std::sin(theta0);
+  co[0] = ck;
+  si[0] = sk;
   for (int k = 0; k <= order; ++k) {
-    if (ac) ac[k] = force_ * co[k], as[k] = force_ * si[k];
-    co[k + 1] = -omega_ * si[k] * kBeltInverse.r[k];
-    si[k + 1] = omega_ * co[k] * kBeltInverse.r[k];
+    const double c1 = -w * sk * kBeltInverse.r[k], s1 = w * ck * kBeltInverse.r[k];
+    co[k + 1] = ck = c1;
+    si[k + 1] = sk = s1;
   }
+  if (!ac) return;
+  const double a = force_;
+  for (int k = 0; k <= order; ++k) ac[k] = a * co[k], as[k] = a * si[k];
 }
 
 // Stick (x' = v): x = x0 + v t, Phi and the column constant (the stick field
