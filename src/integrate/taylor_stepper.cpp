@@ -96,33 +96,23 @@ double TaylorStepper::StateScale(const double* y) const {
 // rho from z_{q-1}, z_q and the step that keeps their error per step,
 // (h / rho)^(q+1) = (e^-2 exp(-0.7 / (p - 1)))^(p+1). Every row counts but
 // the clocks' and the column's clock rows (their series are exact).
-// state_z0: StateScale of the step's start (rows [0, m_)), whose order 0 the
-// coefficients hold; the auxiliary rows add theirs. Returns NaN where a
-// coefficient is not finite, *finite false (its test, in the same pass).
-double TaylorStepper::StepSize(int order, int jz_order, double state_z0, bool* finite) const {
+double TaylorStepper::StepSize(int order, int jz_order) const {
   const TaylorRow* r = c();
-  // One pass over the rows: the norms of orders order - 1 and order (max is
-  // exact: the same values as separate passes) and the finiteness probe
-  // (0 * c is 0 for finite c and NaN otherwise).
-  double z0 = state_z0, n1 = 0, n2 = 0, probe = 0;
-  const int lo = std::max(0, order - 1);
-  auto test = [&](const double* ri) { probe += 0.0 * ri[0] + 0.0 * ri[lo] + 0.0 * ri[order]; };
-  auto norms = [&](const double* ri) {
+  // One pass over the counted rows: the scale z0 and the norms of orders
+  // order - 1 and order (max is exact: the same values as three passes).
+  double z0 = 0, n1 = 0, n2 = 0;
+  auto row = [&](const double* ri) {
+    z0 = std::max(z0, std::abs(ri[0]));
     n1 = std::max(n1, std::abs(ri[order - 1]));
     n2 = std::max(n2, std::abs(ri[order]));
   };
-  for (int i = 0; i < clock_first_; ++i) test(r[i]), norms(r[i]);
-  if (!p_->clock_rate)  // clocks of the step polynomial's own: tested, not counted
-    for (int i = clock_first_; i < clock_last_; ++i) test(r[i]);
-  for (int i = clock_last_; i < col_clock_first_; ++i) test(r[i]), norms(r[i]);
-  for (int i = col_clock_first_; i < col_clock_last_; ++i) test(r[i]);
-  for (int i = col_clock_last_; i < m_; ++i) test(r[i]), norms(r[i]);
-  for (int i = m_; i < rows_n_; ++i) {  // auxiliary rows: counted, not tested
-    z0 = std::max(z0, std::abs(r[i][0]));
-    norms(r[i]);
+  for (int i = 0; i < clock_first_; ++i) {
+    z0 = std::max(z0, std::min(std::abs(r[i][0]), std::abs(r[i][0] - center_[i])));
+    n1 = std::max(n1, std::abs(r[i][order - 1]));
+    n2 = std::max(n2, std::abs(r[i][order]));
   }
-  *finite = probe == 0;
-  if (!*finite) return NAN;
+  for (int i = clock_last_; i < col_clock_first_; ++i) row(r[i]);
+  for (int i = col_clock_last_; i < rows_n_; ++i) row(r[i]);
   const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
   const double r1 = (log_scale - std::log(n1)) / (order - 1);
@@ -130,6 +120,24 @@ double TaylorStepper::StepSize(int order, int jz_order, double state_z0, bool* f
   if (order == jz_order) return std::exp(std::min(r1, r2) - 2.0 - 0.7 / (order - 1));
   const int p = jz_order;
   return std::exp(std::min(r1, r2) - (2.0 + 0.7 / (p - 1)) * (p + 1) / (order + 1));
+}
+
+// A non-finite coefficient of order j >= 1 makes every later one of its
+// chain non-finite (each order is sums and products of the ones before,
+// divided by finite constants; 0 * inf and inf - inf are NaN): order 0 and
+// the last two orders of each row tell (a constant field, as in stick,
+// carries nothing up from order 0).
+inline bool TaylorStepper::FiniteCoefficients() const {
+  // 0 * c is 0 for finite c and NaN otherwise: one branch.
+  const TaylorRow* r = c();
+  double probe = 0;
+  // The state, Phi and column rows (the auxiliary ones follow from them;
+  // anchored clocks are exact).
+  const int skip_to = p_->clock_rate ? clock_last_ : clock_first_;
+  const int lo = std::max(0, order_ - 1);
+  for (int i = 0; i < m_; i = i + 1 == clock_first_ ? skip_to : i + 1)
+    probe += 0.0 * r[i][0] + 0.0 * r[i][lo] + 0.0 * r[i][order_];
+  return probe == 0;
 }
 
 bool TaylorStepper::NewStep() {
@@ -146,23 +154,16 @@ bool TaylorStepper::NewStep() {
   const int jz_order = relative ? order_rel_ : order_abs_;
   order_ = std::min(kTaylorMaxOrder, jz_order + (relative ? extra_rel_ : extra_abs_));
   Coefficients(order_);
-  bool finite = true;
-  double h = StepSize(order_, jz_order, z0, &finite);
   // The extra orders overflow on a stiff field (v_m 1e-6): JZ's order then,
   // the entries past it finite again (NewStep's sums run past the order).
-  // A non-finite coefficient of order j >= 1 makes every later one of its
-  // chain non-finite (each order is sums and products of the ones before,
-  // divided by finite constants; 0 * inf and inf - inf are NaN): order 0 and
-  // the last two orders of each row tell (a constant field, as in stick,
-  // carries nothing up from order 0; StepSize tests them).
-  if (!finite) {
+  if (!FiniteCoefficients()) {
     if (order_ == jz_order) return Failed("non-finite Taylor coefficients");
     for (int i = 0; i < rows_n_; ++i) std::fill(r[i] + jz_order + 1, r[i] + kTaylorRowSize, 0.0);
     Coefficients(order_ = jz_order);
-    h = StepSize(order_, jz_order, z0, &finite);
-    if (!finite) return Failed("non-finite Taylor coefficients");
+    if (!FiniteCoefficients()) return Failed("non-finite Taylor coefficients");
     ++orders_.fallbacks;
   }
+  double h = StepSize(order_, jz_order);
   if (std::isnan(h)) return Failed("non-finite step size");
   if (std::isinf(h)) h = Tolerances::kTaylorRestStep;  // higher coefficients all 0: at rest
   h = std::min(h, tstop_ - ta_);

@@ -90,12 +90,13 @@ class TaylorStepper final : public Stepper {
   TaylorRow* c() { return reinterpret_cast<TaylorRow*>(rows_.data()); }
   const TaylorRow* c() const { return reinterpret_cast<const TaylorRow*>(rows_.data()); }
   bool NewStep();
+  bool FiniteCoefficients() const;
   void Coefficients(int order) {
     TaylorRow* r = c();
     for (int i = 0; i < m_; ++i) r[i][0] = yend_[i];
     field_->Coefficients(order, layout_, r);
   }
-  double StepSize(int order, int jz_order, double state_z0, bool* finite) const;
+  double StepSize(int order, int jz_order) const;
   double StateScale(const double* y) const;
   void Events(double h);
   // The step polynomial at tau = t - ta (the clocks at t itself).
