@@ -12,11 +12,11 @@
 #include "cli/run_log.hpp"
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/flow.hpp"
 #include "stickslip/io/resonance_report.hpp"
 #include "stickslip/io/system_branch_report.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip::cli {
 

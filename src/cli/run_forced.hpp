@@ -1,6 +1,6 @@
 // ss_continue for the harmonically forced oscillator:
 // --force A --omega W, --param omega|force|v|beta. Validated once at entry,
-// started from a transient, continued by ContinueForced (forced/branch.hpp),
+// started from a transient, continued by ContinueForced (continuation/forced_branch.hpp),
 // written as branch.tsv, special_points.tsv and the resonance figure.
 #pragma once
 

@@ -19,8 +19,8 @@
 
 #include "cli/clock_start.hpp"
 #include "forced_curve_reference.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 namespace {

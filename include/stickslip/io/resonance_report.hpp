@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
 
