@@ -67,7 +67,8 @@ struct Event {
 };
 
 // A non-terminal event's hook: function g, direction, and the stepper's
-// state y at the root.
+// state y at the root (its first n rows, the state; the Taylor stepper
+// leaves the variational rows after them out).
 struct EventHook {
   void (*fn)(void* context, int g, const double* y) = nullptr;
   void* context = nullptr;

@@ -104,7 +104,7 @@ void TaylorStepper::Events(double h) {
     if (roots.first > 1 && (1 - pr.u) * h <= Tolerances::StepEndRounding(tb_))
       state_[pr.i] = kDeflate;
     if (!p_->on_event.fn || !ev.Passes(pr.i, pr.direction)) continue;
-    Evaluate(ta_ + pr.u * h, hook_y_.data());
+    Evaluate(ta_ + pr.u * h, hook_y_.data(), layout_.n);  // the state: what hooks read
     p_->on_event(pr.i, hook_y_.data());
   }
   if (roots.first > 1) return;

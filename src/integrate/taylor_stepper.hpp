@@ -100,10 +100,12 @@ class TaylorStepper final : public Stepper {
   double StateScale(const double* y) const;
   void Events(double h);
   // The step polynomial at tau = t - ta (the clocks at t itself).
-  void Evaluate(double t, double* out) const {
+  // rows: the first rows only (the state's n for an event hook, EventHook).
+  void Evaluate(double t, double* out, int rows = -1) const {
     const TaylorRow* r = c();
     const double tau = t - ta_;
-    for (int i = 0; i < m_; ++i) out[i] = Horner(r[i], order_, tau);
+    const int m = rows < 0 ? m_ : rows;
+    for (int i = 0; i < m; ++i) out[i] = Horner(r[i], order_, tau);
     Clocks(t, out);
   }
   // The clock rows at t, from the problem's rates and offsets.

@@ -84,23 +84,32 @@ int BeltTaylorField::ExtraOrder(double eps, bool in_steps) const {
   return cubic3_ && !affine_column ? Tolerances::kTaylorExtraOrderCubic : 0;
 }
 
-// The forcing's series to order + 1: cos and sin of theta = theta0 + Omega t.
-void BeltTaylorField::Forcing(int order, double theta0) {
+// The forcing's series to order + 1: cos and sin of theta = theta0 + Omega t;
+// with ac, as: A cos and A sin to order (the auxiliary rows). The recurrence
+// carries c_k, s_k in registers: stores to the rows, which may alias the
+// series for all the compiler knows, would make each order reload them.
+void BeltTaylorField::Forcing(int order, double theta0, double* ac, double* as) {
   double* co = cos_.c();
   double* si = sin_.c();
-  co[0] = std::cos(theta0);
-  si[0] = std::sin(theta0);
+  const double w = omega_;
+  double ck = std::cos(theta0), sk = std::sin(theta0);
+  co[0] = ck;
+  si[0] = sk;
   for (int k = 0; k <= order; ++k) {
-    co[k + 1] = -omega_ * si[k] * kBeltInverse.r[k];
-    si[k + 1] = omega_ * co[k] * kBeltInverse.r[k];
+    const double c1 = -w * sk * kBeltInverse.r[k], s1 = w * ck * kBeltInverse.r[k];
+    co[k + 1] = ck = c1;
+    si[k + 1] = sk = s1;
   }
+  if (!ac) return;
+  const double a = force_;
+  for (int k = 0; k <= order; ++k) ac[k] = a * co[k], as[k] = a * si[k];
 }
 
 // Stick (x' = v): x = x0 + v t, Phi and the column constant (the stick field
 // does not depend on the state), theta' = Omega; the auxiliary rows are the
 // stick force lambda = x + 2 beta v - A cos(theta) and its limit mu_s.
 void BeltTaylorField::Stick(int order, const TaylorLayout& layout, TaylorRow* c) {
-  if (forced_) Forcing(order, c[2][0]);
+  if (forced_) Forcing(order, c[2][0], nullptr, nullptr);
   for (int i = 0; i < layout.aux_first(); ++i) std::fill(c[i] + 1, c[i] + order + 1, 0.0);
   c[0][1] = v_;
   if (forced_) c[2][1] = omega_;
@@ -129,12 +138,9 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
   const Rows r{c[0], c[1], var ? c + layout.phi() : nullptr,
                layout.column ? c + layout.param() : nullptr};
   if (forced_) {
-    Forcing(order, c[2][0]);
+    Forcing(order, c[2][0], c[layout.aux_first()], c[layout.aux_first() + 1]);
     std::fill(c[2] + 1, c[2] + order + 1, 0.0);
     c[2][1] = omega_;
-    double* ac = c[layout.aux_first()];
-    double* as = c[layout.aux_first() + 1];
-    for (int k = 0; k <= order; ++k) ac[k] = force_ * cos_.c()[k], as[k] = force_ * sin_.c()[k];
     if (r.col) ClockColumn(order, r.col);
   }
   const bool affine_column = layout.column && kind_ == ParamKind::kAffine;

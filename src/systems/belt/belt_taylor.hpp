@@ -62,7 +62,7 @@ class BeltTaylorField final : public TaylorField {
   void Stick(int order, const TaylorLayout& layout, TaylorRow* c);
   // theta's column row: d theta / dp, of rate 1 for omega's column, else 0.
   void ClockColumn(int order, TaylorRow* col) const;
-  void Forcing(int order, double theta0);
+  void Forcing(int order, double theta0, double* ac, double* as);
   void ResolveParameter();
   // Out of line for the seed law's kernel (its x86-64-v3 clone would fuse
   // the inline sums into FMAs: other roundings); inline (InlineTerm) where
