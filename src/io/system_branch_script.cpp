@@ -7,7 +7,6 @@
 #include <set>
 #include <sstream>
 
-#include "io/system_rows.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 #include "stickslip/model/forced.hpp"
 
@@ -15,7 +14,24 @@ namespace stickslip {
 
 namespace {
 
-using io_detail::SystemLine;
+// What the script needs of a row: its branch, kind (K's code), stability and
+// whether it is a located point (a light pass over the run, no copy of the rows).
+struct Line {
+  int branch = 0, kind = 0;
+  bool stable = false, special = false;
+};
+
+std::vector<Line> Lines(const SystemRun& run) {
+  std::vector<Line> out;
+  out.reserve(run.steady.rows.size());
+  for (const SteadyRow& r : run.steady.rows)
+    out.push_back({0, 0, r.state.stable(), r.label != SpecialKind::kNone});
+  for (std::size_t b = 0; b < run.pieces.size(); ++b)
+    for (const OrbitRow& r : run.pieces[b].rows)
+      out.push_back({b < run.numbers.size() ? run.numbers[b] : static_cast<int>(b) + 1,
+                     r.sticks > 0 ? 1 : 2, r.stable, r.label != SpecialKind::kNone});
+  return out;
+}
 
 int Style(const std::string& kind, bool stable) {
   const int base = kind == "stick-slip"  ? kStyleStickSlip
@@ -27,18 +43,16 @@ int Style(const std::string& kind, bool stable) {
 // The kinds by their code in the script's array K.
 constexpr const char* kKinds[] = {"equilibrium", "stick-slip", "pure-slip"};
 
-int KindCode(const std::string& kind) { return kind == kKinds[1] ? 1 : kind == kKinds[2] ? 2 : 0; }
-
 // One panel: the columns `ys` (their blocks of the array Y) of every (kind,
 // stability) that has rows, one curve each over all branches; the key names
 // each once. A segment between two rows of a branch takes the style of the
 // row that is not a located point (where the stability or the kind changes),
 // else the later row's, so that every segment is drawn once (sel, below).
-void Panel(std::ostream& os, const std::vector<SystemLine>& lines, const std::vector<int>& ys,
-           bool key, bool orbits_only) {
+void Panel(std::ostream& os, const std::vector<Line>& lines, const std::vector<int>& ys, bool key,
+           bool orbits_only) {
   std::set<std::pair<int, bool>> drawn;
-  for (const SystemLine& l : lines)
-    if (!(orbits_only && l.branch == 0)) drawn.insert({KindCode(l.kind), l.stable});
+  for (const Line& l : lines)
+    if (!(orbits_only && l.branch == 0)) drawn.insert({l.kind, l.stable});
   bool first = true;
   os << "plot ";
   for (const auto& [k, stable] : drawn)
@@ -127,13 +141,13 @@ std::vector<std::string> SystemBranchFigures(FigureFormat format) {
 
 std::string SystemBranchScript(const System& s, const SystemRun& run, const std::string& title,
                                FigureFormat format) {
-  const std::vector<SystemLine> lines = io_detail::SystemLines(s, run);
+  const std::vector<Line> lines = Lines(run);
   const std::string p = s.ParameterName(run.parameter);
   const std::string x = StateColumn(s, 0);
   int specials = 0;
   bool orbits = false;  // without orbit rows: the first panel alone
-  for (const SystemLine& l : lines) {
-    specials += l.label != SpecialKind::kNone;
+  for (const Line& l : lines) {
+    specials += l.special;
     orbits = orbits || l.branch > 0;
   }
   std::ostringstream os;
@@ -163,7 +177,7 @@ std::string SystemBranchScript(const System& s, const SystemRun& run, const std:
        << " 'not traced: unbounded' at " << FormatNumber(std::max(run.gap[i], run.gap[i + 1]))
        << ", graph 0.93 offset 1, 0 tc rgb '#555555'\n";
   std::set<int> branches;
-  for (const SystemLine& l : lines)
+  for (const Line& l : lines)
     if (l.branch > 0) branches.insert(l.branch);
   const std::string dh = DenHartogCurve(s, p, branches);  // its functions, then its plot terms
   const std::size_t split = dh.rfind("DH(w) =");
