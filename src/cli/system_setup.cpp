@@ -93,6 +93,8 @@ void ConfigureStart(const Arguments& args, SystemSetup& s) {
 
 }  // namespace
 
+// The system is built before the law is read: it names physical inputs
+// (--mass, ...) as refused, where the law would ask for their partners.
 SystemSetup ConfigureSystemRun(const Arguments& args) {
   for (const char* o : {"floquet", "no_estimates"})
     if (args.Given(o) && (args.map()[o].value().type() != typeid(bool) || args.Flag(o)))
@@ -101,8 +103,8 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   if (args.Given("restart")) s.restart = SystemRestartFromArguments(args);
   if (args.Flag("switch") && !s.restart)
     throw UsageError(args.Source("switch") + " needs --restart DIR --point PDn");
-  s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
   s.system = SystemFromArguments(args, s.restart ? &*s.restart : nullptr);
+  s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
   ConfigureStart(args, s);
   s.choice = SystemChoiceOf(args);
   if (s.restart) FromName(s.restart->system, &s.choice);  // known: SystemFromArguments built it

@@ -93,6 +93,7 @@ TEST_F(ForcedApp, BadForcedInputIsExitTwoNamingTheOption) {
       {{"--force", "1", "--param", "mu_k"}, "--param"},  // the cubic law has none
       {{"--force", "1", "--param", "gamma"}, "--param"},
       {{"--force", "1", "--restart", "plots", "--point", "PD1"}, "--restart"},
+      {{"--force", "1", "--mass", "1"}, "--mass: the forced oscillator takes dimensionless inputs"},
   };
   for (const auto& c : cases) {
     const std::string dir = NewDir();
