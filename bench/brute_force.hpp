@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "stickslip/model/belt_flow.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
 
 namespace bench {
 

@@ -10,8 +10,8 @@
 #include <cstdlib>
 
 #include "chain/chain.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace {
 namespace ss = stickslip;

@@ -15,8 +15,8 @@
 #include <random>
 #include <vector>
 
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/system_batch.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace ss = stickslip;
 

@@ -11,7 +11,7 @@
 #include <functional>
 #include <vector>
 
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "tests/forced_reference.hpp"
 
 namespace {

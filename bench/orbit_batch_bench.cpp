@@ -14,8 +14,8 @@
 #include <random>
 #include <vector>
 
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_batch.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace ss = stickslip;
 

@@ -9,9 +9,9 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 int main(int argc, char** argv) {
   namespace ss = stickslip;

@@ -7,7 +7,7 @@
 
 #include "integrate/cvode.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/friction.hpp"
+#include "stickslip/systems/belt/friction.hpp"
 
 namespace bench {
 

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace bench {
 

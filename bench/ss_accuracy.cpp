@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "reference/reference_orbit.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace {
 

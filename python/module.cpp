@@ -12,9 +12,9 @@
 
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/belt/params.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 #include "stickslip/version.hpp"
 
 namespace py = pybind11;

@@ -14,9 +14,9 @@
 #include "py_columns.hpp"
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/orbit_batch.hpp"
 #include "stickslip/orbits/system_batch.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 // The one lens (parameter_axis.hpp) in Python: a Parameter member or its
 // name in, a Parameter out. An unknown name raises ValueError (InvalidArgument).

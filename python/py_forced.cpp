@@ -10,7 +10,7 @@
 #include "py_common.hpp"
 #include "stickslip/continuation/branch_status.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

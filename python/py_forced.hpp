@@ -5,7 +5,7 @@
 
 #include "py_common.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip::python {
 

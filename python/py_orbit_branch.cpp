@@ -12,11 +12,11 @@
 #include <memory>
 
 #include "stickslip/chaos/lyapunov.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

@@ -9,7 +9,7 @@
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/io/restart.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

@@ -14,8 +14,8 @@
 #include "mode_coupling/mode_coupling.hpp"
 #include "py_orbit_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

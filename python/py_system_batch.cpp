@@ -11,8 +11,8 @@
 
 #include "py_columns.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/settled_batch.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

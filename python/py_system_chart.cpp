@@ -19,7 +19,7 @@
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/system_branch_report.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

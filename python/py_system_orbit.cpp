@@ -16,9 +16,9 @@
 
 #include "py_common.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

@@ -17,9 +17,9 @@
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::python {
 

@@ -1,9 +1,10 @@
 // Independent reference integrator for the belt model (seed eq. 3.5), used by the
 // tests and the benchmark to check the CVODE-based library. It shares no physics with the
-// library: the friction laws and the slip fields are re-derived here from the seed (3.3), (3.5), and
-// stickslip::Params is only an input carrier. Integration is Boost.Odeint's Runge-Kutta-Fehlberg
-// 7(8) in long double with step control; every event (arrival at x' = v, extrema of x and x') is
-// located by re-stepping from the start of the accepted step and bisecting on the step length.
+// library: the friction laws and the slip fields are re-derived here from the seed (3.3), (3.5),
+// and stickslip::Params is only an input carrier. Integration is Boost.Odeint's
+// Runge-Kutta-Fehlberg 7(8) in long double with step control; every event (arrival at x' = v,
+// extrema of x and x') is located by re-stepping from the start of the accepted step and bisecting
+// on the step length.
 #pragma once
 
 #include <algorithm>
@@ -12,7 +13,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 // Odeint's steppers copy their uninitialized scratch arrays on construction; silence GCC's
 // -Wuninitialized about that for odeint and this header only.
@@ -226,8 +227,8 @@ void AddStepExtremes(const Stepper<N>& st, const State<N>& s0, Real t0, Real h, 
 // Integrates mode sigma from (x, v) until the first arrival at y = v (d = sigma (y - v) falls
 // to 0). Near grazing the arrival is an almost tangential touch, so besides sign changes of d
 // at step ends it watches the minimum of d (root of d' = sigma y'): if that minimum is <= 0,
-// the crossing is located between the step start and the minimum (di Bernardo et al. 2008, grazing).
-// The start itself (d = 0) is not an event. Returns false if no arrival before t_max.
+// the crossing is located between the step start and the minimum (di Bernardo et al. 2008,
+// grazing). The start itself (d = 0) is not an event. Returns false if no arrival before t_max.
 inline bool SlipSegment(const Model& m, int sigma, Real x_start, Real tol, Real t_max, Real& t,
                         Real& x_arrival, Extremes& e) {
   Stepper<2> st(SlipField<2>{&m, sigma}, tol);
@@ -282,8 +283,9 @@ struct StickSlipOrbit {
 };
 
 // The stick-slip orbit through the exit point (x0, v), x0 = mu_s - 2 beta v (seed,
-// case 1: the return map on Ω is constant): slip from (x0, v) until the first arrival in Ω, crossing
-// x' = v outside the stick interval into the other slip mode, then stick for (x0 - x_a) / v.
+// case 1: the return map on Ω is constant): slip from (x0, v) until the first arrival in Ω,
+// crossing x' = v outside the stick interval into the other slip mode, then stick for (x0 - x_a) /
+// v.
 inline StickSlipOrbit StickSlip(const Params& p, Real tol = 1e-17L, Real t_max = 2000,
                                 int max_crossings = 50) {
   const Model m(p);

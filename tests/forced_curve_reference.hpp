@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "forced_reference.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 
 namespace stickslip::forced_reference {
 

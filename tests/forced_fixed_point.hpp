@@ -10,8 +10,8 @@
 #include <cmath>
 
 #include "forced_run.hpp"
-#include "stickslip/forced/flow.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/flow.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::testing_util {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "reference/forced_lyapunov.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::forced_reference {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "reference/reference_orbit.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::forced_reference {
 

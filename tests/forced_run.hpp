@@ -1,11 +1,11 @@
 // A run of the forced oscillator on the one flow for the tests: from a forced
-// point (forced/flow.hpp) to t_end, with the forced flow's defaults and the
+// point (systems/forced/flow.hpp) to t_end, with the forced flow's defaults and the
 // extremes of x and x' recorded.
 #pragma once
 
 #include <vector>
 
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip::testing_util {
 

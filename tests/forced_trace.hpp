@@ -3,7 +3,7 @@
 #pragma once
 
 #include "forced_run.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 
 namespace stickslip::testing_util {
 

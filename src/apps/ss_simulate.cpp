@@ -21,7 +21,7 @@
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/io/report.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace ss = stickslip;
 namespace cli = stickslip::cli;

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "numerics/tolerances.hpp"
-#include "stickslip/model/friction.hpp"
+#include "stickslip/systems/belt/friction.hpp"
 
 namespace stickslip {
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cli/study.hpp"
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip::cli {
 

@@ -8,7 +8,7 @@
 #include "cli/app.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/io/figure_style.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 

@@ -9,7 +9,7 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/simulate_forced.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/io/report.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip::cli {
 

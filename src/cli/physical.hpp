@@ -9,7 +9,7 @@
 
 #include "cli/study.hpp"
 #include "stickslip/io/figure_style.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip::cli {
 

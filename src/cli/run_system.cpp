@@ -15,8 +15,8 @@
 #include "cli/system_setup.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/system_branch_report.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 

@@ -10,8 +10,8 @@
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/flow/simulate.hpp"
-#include "stickslip/forced/flow.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip::cli {
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "cli/study.hpp"
-#include "stickslip/forced/flow.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip::cli {
 

@@ -38,9 +38,9 @@
 #include <vector>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/parameter_axis.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip::cli {
 

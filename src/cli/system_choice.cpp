@@ -11,7 +11,7 @@
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/report.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 

@@ -4,7 +4,7 @@
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
 #include "stickslip/io/report.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cli/app.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 

@@ -5,7 +5,7 @@
 
 #include "continuation/special_points.hpp"
 #include "numerics/tolerances.hpp"
-#include "stickslip/model/friction.hpp"
+#include "stickslip/systems/belt/friction.hpp"
 
 namespace stickslip {
 

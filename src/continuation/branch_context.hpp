@@ -13,7 +13,7 @@
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

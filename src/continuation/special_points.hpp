@@ -11,8 +11,8 @@
 
 #include "numerics/roots.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

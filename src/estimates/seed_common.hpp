@@ -8,7 +8,7 @@
 
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 namespace seed_detail {

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/parameter_axis.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

@@ -11,7 +11,7 @@
 #include "io/tsv_read.hpp"
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/io/report.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "stickslip/io/system_branch_report.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 

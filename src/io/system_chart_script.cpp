@@ -9,7 +9,7 @@
 
 #include "stickslip/io/response_report.hpp"
 #include "stickslip/io/system_chart_report.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

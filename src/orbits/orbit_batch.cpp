@@ -6,7 +6,7 @@
 
 #include "batch_rows.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 

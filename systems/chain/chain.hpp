@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/friction.hpp"
-#include "stickslip/model/params.hpp"
 #include "stickslip/system/system.hpp"
+#include "stickslip/systems/belt/friction.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip::chain {
 

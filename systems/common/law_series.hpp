@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "stickslip/model/params.hpp"
 #include "stickslip/system/taylor_field.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip::systems {
 

@@ -16,8 +16,8 @@
 #include "app_test_util.hpp"
 #include "forced_fixed_point.hpp"
 #include "forced_run.hpp"
-#include "stickslip/forced/flow.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/flow.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace {
 

@@ -12,8 +12,8 @@
 
 #include "forced_run.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/orbit.hpp"
 #include "stickslip/io/attractor_report.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

@@ -17,9 +17,9 @@
 #include "chain/chain.hpp"
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/io/attractor_report.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip::chain {
 namespace {

@@ -16,8 +16,8 @@
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/equilibria/steady_branch.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip::chain {
 namespace {

@@ -14,8 +14,8 @@
 #include <cmath>
 
 #include "chain/chain.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip::chain {
 namespace {

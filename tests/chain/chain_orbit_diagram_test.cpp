@@ -10,8 +10,8 @@
 #include "chain/chain.hpp"
 #include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip::chain {
 namespace {

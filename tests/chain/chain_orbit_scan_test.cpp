@@ -15,10 +15,10 @@
 
 #include "chain/chain.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::chain {
 namespace {

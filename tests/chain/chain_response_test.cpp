@@ -10,8 +10,8 @@
 
 #include "chain/chain.hpp"
 #include "stickslip/chart/response_grid.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip::chain {
 namespace {

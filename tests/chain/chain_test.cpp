@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "stickslip/flow/flow.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip::chain {
 namespace {

@@ -12,7 +12,7 @@
 #include "forced_run.hpp"
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

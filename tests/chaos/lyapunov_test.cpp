@@ -14,7 +14,7 @@
 #include "forced_reference.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

@@ -11,8 +11,8 @@
 #include "forced_run.hpp"
 #include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
 
 namespace stickslip {

@@ -14,7 +14,7 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 
 namespace stickslip {
 namespace {

@@ -11,8 +11,8 @@
 #include <cstdio>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 namespace {

@@ -15,7 +15,7 @@
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {

@@ -21,7 +21,7 @@
 #include "forced_run.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

@@ -16,8 +16,8 @@
 
 #include "../app_test_util.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

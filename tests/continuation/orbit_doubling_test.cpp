@@ -15,7 +15,7 @@
 #include "forced_reference.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

@@ -6,8 +6,8 @@
 #include <Eigen/Dense>
 
 #include "stickslip/flow/flow.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace {
 

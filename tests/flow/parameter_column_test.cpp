@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "stickslip/flow/flow.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace {
 

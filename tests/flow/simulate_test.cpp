@@ -9,7 +9,7 @@
 
 #include "coulomb_damped.hpp"
 #include "forced_run.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/flow/switching.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace {
 

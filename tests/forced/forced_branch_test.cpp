@@ -1,6 +1,8 @@
 // Continuation of the forced oscillator in Omega (issue 20, item 4): the Den
 // Hartog run (coulomb mu_s = mu_k = 0.3, v = 0, beta = 0, A = 1) against his
 // closed form on every non-stop row.
+#include "stickslip/continuation/forced_branch.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,8 +10,7 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "integrate/event_driver.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 #include "tests/forced_reference.hpp"
 
 namespace stickslip {

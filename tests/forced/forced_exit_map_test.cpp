@@ -11,8 +11,8 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "forced_trace.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

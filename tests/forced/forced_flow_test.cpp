@@ -7,7 +7,7 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 namespace {

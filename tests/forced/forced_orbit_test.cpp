@@ -1,12 +1,13 @@
 // Periodic orbits of the forced oscillator (issue 20, item 2): Den Hartog's
 // non-stop solution, multipliers against closed-form differences, and
 // periodicity checked by the closed-form simulation.
+#include "stickslip/orbits/forced_orbit.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "forced_reference.hpp"
-#include "stickslip/forced/orbit.hpp"
 
 namespace stickslip {
 namespace {

@@ -19,8 +19,8 @@
 
 #include "cli/clock_start.hpp"
 #include "forced_curve_reference.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 namespace {
@@ -87,8 +87,9 @@ struct Study {
   int stride;
 };
 
-// The app's branch (run_forced.cpp, Trace; clock_start.hpp): the state after the transient
-// from rest, Newton at m = 1 there, ContinueForced at the app's defaults.
+// The app's branch (run_system.cpp, FirstPiece; clock_start.hpp): the state after the transient
+// from rest, Newton at m = 1 there, ContinueForced (the app's ContinueOrbits on the same
+// stroboscopic section) at the app's defaults.
 OrbitBranch AppBranch(const Study& s, double from, double to) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);

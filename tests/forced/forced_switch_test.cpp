@@ -12,9 +12,9 @@
 
 #include "forced_run.hpp"
 #include "reference/forced_lyapunov.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/orbit.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {
 namespace {

@@ -20,8 +20,8 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "forced_trace.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "integrate/stepper.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 namespace {

@@ -1,12 +1,11 @@
 // Event-driven simulation against closed forms and an independent integrator.
-#include "stickslip/model/belt_flow.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
 
 namespace stickslip {
 namespace {

@@ -1,4 +1,5 @@
-// The reference integrator against closed forms and published values (seed eqs. 3.5, 3.16; Leine et al. 1998).
+// The reference integrator against closed forms and published values (seed eqs. 3.5, 3.16; Leine et
+// al. 1998).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +7,7 @@
 #include <string>
 
 #include "reference/reference_orbit.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip::reference {
 namespace {

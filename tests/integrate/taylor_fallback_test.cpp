@@ -11,8 +11,8 @@
 #include "integrate/taylor_stepper.hpp"
 #include "numerics/tolerances.hpp"
 #include "reference/reference_orbit.hpp"
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 namespace {

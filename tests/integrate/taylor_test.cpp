@@ -8,8 +8,8 @@
 
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "stickslip/io/system_chart_report.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

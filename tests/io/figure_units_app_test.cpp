@@ -12,7 +12,7 @@
 
 #include "app_test_util.hpp"
 #include "stickslip/io/figure_style.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 #include "test_paths.hpp"
 
 namespace stickslip {

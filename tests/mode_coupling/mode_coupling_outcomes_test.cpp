@@ -14,7 +14,7 @@
 #include "stickslip/basin/attractors.hpp"
 #include "stickslip/chart/response_grid.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
-#include "stickslip/model/friction.hpp"
+#include "stickslip/systems/belt/friction.hpp"
 
 namespace stickslip::mode_coupling {
 namespace {

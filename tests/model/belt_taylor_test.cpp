@@ -7,9 +7,9 @@
 #include <cmath>
 #include <optional>
 
-#include "stickslip/model/model.hpp"
-#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/system/taylor_field.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "reference/reference_orbit.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 namespace {

@@ -1,6 +1,6 @@
 // The Filippov model: steady sliding, Hopf point, modes, saltation matrices
 // (seed eqs. 3.5-3.8, 3.16).
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Parameters: validation messages, names, the seed's scaling (section 3).
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 namespace {

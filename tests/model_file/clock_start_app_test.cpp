@@ -16,7 +16,7 @@
 #include "forced_fixed_point.hpp"
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace {
 

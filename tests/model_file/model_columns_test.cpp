@@ -13,8 +13,8 @@
 #include "model_file/model_file.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/flow/flow.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::model_file {
 namespace {

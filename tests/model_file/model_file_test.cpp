@@ -18,8 +18,8 @@
 #include "mode_coupling/mode_coupling.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
-#include "stickslip/model/forced.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::model_file {
 namespace {

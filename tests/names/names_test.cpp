@@ -15,16 +15,16 @@
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/estimates/estimates.hpp"
 #include "stickslip/flow/simulate.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/forced/orbit.hpp"
 #include "stickslip/io/figure_style.hpp"
-#include "stickslip/model/belt_flow.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/orbit_scan.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
 
 namespace stickslip {
 namespace {

@@ -12,7 +12,7 @@
 #include "coulomb_damped.hpp"
 #include "parallel/pool.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "forced_reference.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/orbit.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 namespace {

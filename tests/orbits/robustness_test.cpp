@@ -40,10 +40,10 @@
 
 #include "stickslip/continuation/continuation.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/model.hpp"
-#include "stickslip/model/params.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/belt/params.hpp"
 #include "wall_bound.hpp"
 
 namespace ss = stickslip;

@@ -14,10 +14,10 @@
 #include <string>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/orbits/orbit.hpp"
 #include "stickslip/orbits/shooting.hpp"
 #include "stickslip/system/taylor_field.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
 
 namespace stickslip {
 namespace {

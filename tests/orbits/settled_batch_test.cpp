@@ -10,8 +10,8 @@
 #include <optional>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

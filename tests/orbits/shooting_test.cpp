@@ -13,9 +13,9 @@
 #include "forced_reference.hpp"
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

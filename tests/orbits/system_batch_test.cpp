@@ -10,8 +10,8 @@
 
 #include "forced_reference.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/orbit.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "stickslip/basin/basin.hpp"
 #include "stickslip/basin/clipped_area.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

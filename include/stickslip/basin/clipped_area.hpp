@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 

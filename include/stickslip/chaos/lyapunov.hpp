@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/forced/flow.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 

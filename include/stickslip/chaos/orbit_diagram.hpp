@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "stickslip/chaos/lyapunov.hpp"
-#include "stickslip/forced/branch.hpp"
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/names.hpp"
 
 namespace stickslip {

@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "stickslip/continuation/special_kind.hpp"
-#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

@@ -10,8 +10,8 @@
 #include <limits>
 #include <string>
 
-#include "stickslip/model/params.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

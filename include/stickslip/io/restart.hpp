@@ -6,11 +6,11 @@
 #include <limits>
 #include <string>
 
+#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
-#include "stickslip/model/belt_flow.hpp"
-#include "stickslip/model/parameter_axis.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/belt_flow.hpp"
 #include "stickslip/names.hpp"
 #include "stickslip/orbits/orbit_status.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
 
 namespace stickslip {
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/orbits/orbit.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

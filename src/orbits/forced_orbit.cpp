@@ -1,11 +1,12 @@
 // The forced oscillator's orbits on the one shooting (orbits/shooting.hpp):
 // its stroboscopic map and its exit-phase map are the time and stick-exit
 // sections of ForcedModel (x, x', theta).
+#include "stickslip/orbits/forced_orbit.hpp"
+
 #include <cmath>
 #include <memory>
 
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/orbit.hpp"
 
 namespace stickslip {
 

@@ -12,9 +12,9 @@
 #include "stickslip/continuation/branch_status.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/continuation/palc.hpp"
-#include "stickslip/forced/orbit.hpp"
-#include "stickslip/model/parameter_axis.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 

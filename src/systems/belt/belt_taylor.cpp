@@ -3,7 +3,7 @@
 // parameter column, law by law (MuSeries: the series of mu(s)); the forcing
 // A cos(theta) (Jorba & Zou 2005, section 2: c_{k+1} = -Omega s_k / (k+1),
 // s_{k+1} = Omega c_k / (k+1)); and the stick mode's rows.
-#include "model/belt_taylor.hpp"
+#include "systems/belt/belt_taylor.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +12,8 @@
 
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/forced.hpp"
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 namespace {

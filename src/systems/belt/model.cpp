@@ -1,4 +1,4 @@
-#include "stickslip/model/model.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "stickslip/model/friction.hpp"
+#include "stickslip/systems/belt/friction.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,8 +8,8 @@
 
 #include <complex>
 
-#include "stickslip/forced/flow.hpp"
 #include "stickslip/orbits/shooting.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 

@@ -14,8 +14,8 @@
 
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/integrate/extrema.hpp"
-#include "stickslip/model/model.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/systems/belt/model.hpp"
 
 namespace stickslip {
 

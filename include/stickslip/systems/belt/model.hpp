@@ -1,16 +1,16 @@
 // The Filippov belt model, seed eq. (3.5): a one-contact system on the one
 // system interface (friction_system.hpp, system.hpp). Fields, Jacobians,
 // stick condition, steady sliding; its Taylor recurrences are
-// src/model/belt_taylor.cpp (shared with the forced oscillator, forced.hpp).
+// src/systems/belt/belt_taylor.cpp (shared with the forced oscillator, forced.hpp).
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include "stickslip/model/friction.hpp"
-#include "stickslip/model/friction_system.hpp"
-#include "stickslip/model/parameter_axis.hpp"
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/friction.hpp"
+#include "stickslip/systems/belt/friction_system.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

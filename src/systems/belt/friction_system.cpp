@@ -1,5 +1,5 @@
 // The one-contact systems' projection onto a stick exit (friction_system.hpp).
-#include "stickslip/model/friction_system.hpp"
+#include "stickslip/systems/belt/friction_system.hpp"
 
 namespace stickslip {
 

@@ -1,13 +1,14 @@
 // The forced oscillator's branches on the one branch driver (orbit_branch.hpp):
 // ContinueForced and ContinueDoubled in the forced rows, on the stroboscopic
 // section of m forcing periods of the forced model (a System with a clock).
+#include "stickslip/continuation/forced_branch.hpp"
+
 #include <cmath>
 #include <string>
 
 #include "numerics/numbers.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/forced/branch.hpp"
 
 namespace stickslip {
 

@@ -3,7 +3,7 @@
 // little for orders k - 1 and k - 2; with the forcing A cos(theta) when Forced.
 #include <algorithm>
 
-#include "model/belt_taylor.hpp"
+#include "systems/belt/belt_taylor.hpp"
 
 namespace stickslip {
 // With s = sigma (v - x'), s_k = -sigma x'_k (k >= 1), w = s^2 and

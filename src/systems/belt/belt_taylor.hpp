@@ -1,4 +1,4 @@
-// Private to src/model/: the Taylor recurrences of the belt (seed eq. 3.5)
+// Private to src/systems/: the Taylor recurrences of the belt (seed eq. 3.5)
 // and of the forced oscillator (the belt plus A cos(theta), theta' = Omega):
 // one field for both, with the variational equations, the parameter column
 // and the stick mode's rows (belt_taylor.cpp: laws by MuSeries, stick,
@@ -8,11 +8,11 @@
 #include <optional>
 
 #include "integrate/series.hpp"
-#include "model/mu_series.hpp"
 #include "numerics/kernel.hpp"
-#include "stickslip/model/parameter_axis.hpp"
-#include "stickslip/model/params.hpp"
 #include "stickslip/system/taylor_field.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
+#include "stickslip/systems/belt/params.hpp"
+#include "systems/belt/mu_series.hpp"
 
 namespace stickslip {
 

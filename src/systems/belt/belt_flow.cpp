@@ -1,6 +1,6 @@
-// The belt's view of the one flow (model/belt_flow.hpp): a StopRule as a
+// The belt's view of the one flow (systems/belt/belt_flow.hpp): a StopRule as a
 // request, the run as 2-D results.
-#include "stickslip/model/belt_flow.hpp"
+#include "stickslip/systems/belt/belt_flow.hpp"
 
 #include "stickslip/errors.hpp"
 

@@ -1,6 +1,6 @@
-// The forced oscillator's points on the one flow (forced/flow.hpp): the state
+// The forced oscillator's points on the one flow (systems/forced/flow.hpp): the state
 // (x, x', theta = Omega t) of ForcedModel.
-#include "stickslip/forced/flow.hpp"
+#include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
 

@@ -2,7 +2,7 @@
 // of seed eq. (3.5). A small value type: no virtual calls on the hot path.
 #pragma once
 
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

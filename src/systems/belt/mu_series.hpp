@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "integrate/series.hpp"
-#include "stickslip/model/friction.hpp"
+#include "stickslip/systems/belt/friction.hpp"
 
 namespace stickslip {
 

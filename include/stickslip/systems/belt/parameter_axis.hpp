@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

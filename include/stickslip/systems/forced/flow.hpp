@@ -5,7 +5,7 @@
 
 #include "stickslip/flow/flow.hpp"
 #include "stickslip/integrate/extrema.hpp"
-#include "stickslip/model/forced.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 

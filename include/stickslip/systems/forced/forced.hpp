@@ -10,10 +10,10 @@
 #include <string>
 
 #include "stickslip/flow/flow_options.hpp"
-#include "stickslip/model/friction.hpp"
-#include "stickslip/model/model.hpp"
-#include "stickslip/model/params.hpp"
 #include "stickslip/system/system.hpp"
+#include "stickslip/systems/belt/friction.hpp"
+#include "stickslip/systems/belt/model.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 namespace stickslip {
 

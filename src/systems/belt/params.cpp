@@ -1,4 +1,4 @@
-#include "stickslip/model/params.hpp"
+#include "stickslip/systems/belt/params.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "numerics/numbers.hpp"
 #include "stickslip/errors.hpp"
-#include "stickslip/model/parameter_axis.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
 
 namespace stickslip {
 
