@@ -41,7 +41,17 @@ struct PySystemOrbit {
   py::array origin;
   bool origin_imaginary = false;
   double origin_amplitude = 0;
+  double largest = 0;  // the largest |multiplier| (0 if none), for the repr
 };
+
+std::string OrbitRepr(const PySystemOrbit& o) {
+  std::string r = "<SystemOrbit " + std::string(Name(o.status));
+  if (o.status != OrbitStatus::kOk) return r + ": " + o.message + ">";
+  r += ": period " + Repr(o.period);
+  if (o.turns > 0) r += ", m = " + std::to_string(o.turns);
+  r += ", sticks " + std::to_string(o.sticks) + ", largest |multiplier| " + Repr(o.largest);
+  return r + (o.stable ? ", stable>" : ", unstable>");
+}
 
 PySystemOrbit OrbitOf(const System& s, const PeriodicOrbit& r,
                       const std::vector<Eigen::VectorXd>& points) {
@@ -53,6 +63,7 @@ PySystemOrbit OrbitOf(const System& s, const PeriodicOrbit& r,
   out.monodromy = ReadOnlyMatrix(r.monodromy, false);
   Eigen::VectorXcd mu(static_cast<Eigen::Index>(r.multipliers.size()));
   for (size_t i = 0; i < r.multipliers.size(); ++i) mu[i] = r.multipliers[i];
+  out.largest = mu.size() > 0 ? mu.cwiseAbs().maxCoeff() : 0.0;
   out.multipliers = ReadOnlyMatrix(mu, true);
   out.lo = ReadOnlyMatrix(r.lo, true), out.hi = ReadOnlyMatrix(r.hi, true);
   Eigen::MatrixXd rows(static_cast<Eigen::Index>(points.size()), r.start.z.size());
@@ -234,7 +245,8 @@ void BindSystemOrbit(py::module_& m) {
                     "... that start's mode of steady sliding (eigenvalue index; -1: given)")
       .def_readonly("origin_imaginary", &O::origin_imaginary,
                     "... along its eigenvector's imaginary part (else the real part)")
-      .def_readonly("origin_amplitude", &O::origin_amplitude, "... times the scale");
+      .def_readonly("origin_amplitude", &O::origin_amplitude, "... times the scale")
+      .def("__repr__", &OrbitRepr);
   const py::object none = py::none();
   const char* orbit_doc =
       "The periodic orbit of any system through the one near `state` (its state_names' order, a "

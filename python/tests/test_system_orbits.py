@@ -176,6 +176,9 @@ class AutonomousScan(unittest.TestCase):
         self.assertEqual(list(a.points.shape), [2, 4])
         swapped = a.points[1][[2, 3, 0, 1]]
         np.testing.assert_allclose(swapped, a.points[0], atol=1e-8)
+        # Its repr reads back the period, sticks, largest |multiplier| and stability.
+        self.assertEqual(repr(a), "<SystemOrbit ok: period %r, sticks %d, largest |multiplier| %r, "
+                         "stable>" % (a.period, a.sticks, max(abs(m) for m in a.multipliers)))
 
     def test_given_starts_and_bad_options(self):
         law, chain = self.chain(0.5)

@@ -188,7 +188,7 @@ int OrbitCurveProblem::ShorterPeriod(const OrbitRow& r) {
     };
     orbit_.Switches(part, &switches, last, &reached);
     if (reached && end.size() == nt &&
-        (end - r.start.z.head(nt)).lpNorm<Eigen::Infinity>() < Tolerances().forced_lower_period)
+        (end - r.start.z.head(nt)).lpNorm<Eigen::Infinity>() < Tolerances().curve_lower_period)
       return m / d;
   }
   return 0;

@@ -68,7 +68,7 @@ class OrbitCurveProblem final : public PalcProblem {
   bool Rephase(const Eigen::VectorXd& u, FlowPoint* start, std::string* why);
   /// A stroboscopic section of m > 1 clock turns: k > 1 where row r's orbit
   /// (just sampled: its p2 held) comes back to its start, within
-  /// Tolerances::forced_lower_period, after m / k turns (it has a shorter
+  /// Tolerances::curve_lower_period, after m / k turns (it has a shorter
   /// period); else 0.
   int ShorterPeriod(const OrbitRow& r);
   /// The smallest |h_i| at u's section point (orbit_problem.hpp).

@@ -62,7 +62,7 @@ TraceOptions TraceFor(const SystemChartOptions& o, int i1) {
   t.i1 = i1;
   t.max_step = o.max_step;
   const FlowOptions& flow = o.branch.shooting.flow;
-  t.tol = Tolerances::From(flow.rtol, flow.atol).ForcedCurveCorrector();
+  t.tol = Tolerances::From(flow.rtol, flow.atol).SystemCurveCorrector();
   t.cancelled = o.cancelled;
   return t;
 }

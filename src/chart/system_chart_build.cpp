@@ -26,7 +26,7 @@ bool NearSystemCurve(const std::vector<SystemCurve>& curves, const SystemSeed& s
   const Eigen::Vector2d scale(pl.to1 - pl.from1, pl.to2 - pl.from2);
   for (const SystemCurve& c : curves)
     if (c.kind == s.kind && c.section.turns == s.section.turns &&
-        NearPolyline(c.points, Eigen::Vector2d(s.p1, s.p2), scale, Tolerances().forced_same_curve))
+        NearPolyline(c.points, Eigen::Vector2d(s.p1, s.p2), scale, Tolerances().chart_same_curve))
       return true;
   return false;
 }
@@ -41,7 +41,7 @@ bool Duplicate(const std::vector<SystemCurve>& curves, const SystemCurve& c,
     std::size_t on = 0;
     for (const SystemCurvePoint& p : c.points)
       on += NearPolyline(d.points, Eigen::Vector2d(p.p1, p.p2), scale,
-                         Tolerances().forced_same_curve);
+                         Tolerances().chart_same_curve);
     if (2 * on > c.points.size()) return true;
   }
   return false;
@@ -61,7 +61,7 @@ bool Cut(const CurveEnd& e) {
 // the tracer stopped or was cut, become corners (CurveEndKind::kCorner).
 void FindDoubleGrazing(std::vector<SystemCurve>& curves, const SystemPlane& pl,
                        std::vector<SystemCodim2>* out) {
-  const double tol = Tolerances().forced_double_grazing;
+  const double tol = Tolerances().chart_double_grazing;
   auto inner = [](const SystemCurve& c, bool first) {
     const CurveEndKind k = (first ? c.ends.first : c.ends.last).kind;
     return !c.points.empty() &&

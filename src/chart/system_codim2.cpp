@@ -126,7 +126,7 @@ class Locator {
   Locator(const std::vector<CurveStretch>& all, const SystemChartOptions& o, SystemCurve* c)
       : all_(all), o_(o), c_(c) {
     const FlowOptions& flow = o.branch.shooting.flow;
-    tol_ = Tolerances::From(flow.rtol, flow.atol).ForcedCurveCorrector();
+    tol_ = Tolerances::From(flow.rtol, flow.atol).SystemCurveCorrector();
   }
 
   // The zero of w.test between a (test ga) and b (gb) on stretch k, if any.

@@ -4,7 +4,7 @@
 // section; where the orbit sticks at the section the map is not smooth, so
 // the section starts in a slip phase (OrbitCurveProblem::Rephase) and moves
 // on whenever the section point comes within Tolerances::
-// forced_section_near_stick of a contact's surface: the curve is then
+// curve_section_near_stick of a contact's surface: the curve is then
 // continued in stretches, each at its own clock phase.
 #include <chrono>
 #include <cmath>
@@ -37,7 +37,7 @@ CurveEnd SameCurve(OrbitCurveProblem& problem, const PalcPoint& last, const Palc
   const VectorXd d = (next.u - last.u).cwiseQuotient(scale);
   const double ds = last.tangent.dot(d), off = (d - ds * last.tangent).norm();
   const int i1 = problem.plane_index();
-  if (!(off <= Tolerances().forced_branch_offset * std::abs(ds)))
+  if (!(off <= Tolerances().curve_branch_offset * std::abs(ds)))
     return {CurveEndKind::kBranchJump, "the corrector moved " + Num(off / std::abs(ds), 3) +
                                            " steps off the predictor at (" + Num(next.u[i1], 6) +
                                            ", " + Num(next.u[i1 + 1], 6) + ")"};
@@ -109,7 +109,7 @@ class OrbitTracer {
     bo_.palc.cancelled = o.cancelled;  // also inside every run of the flow
     const FlowOptions& flow = o.branch.shooting.flow;
     bound_ = Tolerances::From(flow.rtol, flow.atol).CurveResidual();
-    tol_ = Tolerances::From(flow.rtol, flow.atol).ForcedCurveCorrector();
+    tol_ = Tolerances::From(flow.rtol, flow.atol).SystemCurveCorrector();
     clocked_ = section.kind == SectionKind::kTime && system.clocks() == 1;
   }
   bool clocked() const { return clocked_; }
@@ -153,7 +153,7 @@ class OrbitTracer {
         bad_.push_back({u, why, saddle});
         return true;
       }
-      return clocked_ && pr->SlipGap(u) < Tolerances().forced_section_near_stick;
+      return clocked_ && pr->SlipGap(u) < Tolerances().curve_section_near_stick;
     };
     return t;
   }

@@ -138,7 +138,7 @@ struct Tolerances : FixedTolerances {
   static double PolyProbe(double u) { return 8e-16 * Scale(u) + 1e-17; }
 
   static double Scale(double t) { return std::max(1.0, t < 0 ? -t : t); }
-  /// Forced flow, slip leaving x' = v at a stick exit: x'' there below this
+  /// Flow, slip leaving x' = v at a stick exit: x'' there below this
   /// times the state's scale is rounding (64 machine epsilons; rtol-free).
   static constexpr double SurfaceRounding() { return 64 * 2.220446049250313e-16; }
 
@@ -168,37 +168,37 @@ struct Tolerances : FixedTolerances {
   /// times the rectangle's size (about sqrt of the map's error at rtol 1e-11
   /// ... 1e-14).
   double chart_difference = 1e-7;
-  /// Forced chart: two curves of one kind and period within this fraction of
+  /// System chart: two curves of one kind and period within this fraction of
   /// the rectangle are one (a seed found again on another seed line).
-  double forced_same_curve = 2e-3;
-  /// Forced chart: two GR curves of one period whose inner ends lie within
+  double chart_same_curve = 2e-3;
+  /// System chart: two GR curves of one period whose inner ends lie within
   /// this fraction of the rectangle meet at a double grazing (GG; seed_forced:
   /// 8e-7 apart, two touches of x' = v at once).
-  double forced_double_grazing = 1e-4;
-  /// Forced chart curves: a section point within this of x' = v is near the
+  double chart_double_grazing = 1e-4;
+  /// System chart curves: a section point within this of x' = v is near the
   /// stick phase (the map is not smooth there): the section moves on.
-  double forced_section_near_stick = 1e-3;
-  /// Chart curves (forced and systems): an accepted point's residual (orbit and test
+  double curve_section_near_stick = 1e-3;
+  /// Chart curves of orbits (any system): an accepted point's residual (orbit and test
   /// function, max norm) above this is no root: the way ends there.
   double curve_residual = 1e-8;
   /// The one chart's bound on an accepted point's residual: curve_residual, or
   /// 1e3 rtol where the flow's own error is larger (the test is a product of
   /// multipliers from a run at rtol).
   double CurveResidual() const { return std::max(curve_residual, 1e3 * rtol); }
-  /// Forced chart curves: an accepted point whose corrector moved it more
+  /// System chart curves: an accepted point whose corrector moved it more
   /// than this times the step off the predictor (scaled, across the last
   /// tangent) left the branch: the way ends there (on the seed_forced chart
   /// curves stay below 0.23, jumps measured 7.2 to 972: docs/limits.md).
-  double forced_branch_offset = 0.5;
-  /// Forced chart curves: the end of a curve where it leaves its branch
+  double curve_branch_offset = 0.5;
+  /// System chart curves: the end of a curve where it leaves its branch
   /// (a sliding point), bisected on the last step to this (scaled arclength).
   double chart_end_bisection = 1e-10;
-  /// Forced chart curves: an m orbit whose point comes back after d < m
+  /// System chart curves: an m orbit whose point comes back after d < m
   /// periods to within this (max norm) has period d: no m curve there.
-  double forced_lower_period = 1e-6;
-  /// Forced chart curves: the corrector's tolerance on the scaled update,
+  double curve_lower_period = 1e-6;
+  /// System chart curves: the corrector's tolerance on the scaled update,
   /// max(1e-11, 10 rtol) (the differenced Jacobian's noise; 1e-12 stalled).
-  double ForcedCurveCorrector() const { return std::max(1e-11, 10 * rtol); }
+  double SystemCurveCorrector() const { return std::max(1e-11, 10 * rtol); }
   /// Basins: a start within on_belt * (1 + v) of x' = v is on the belt
   /// surface (rounding of the start's coordinates).
   double on_belt = 1e-12;
@@ -224,27 +224,27 @@ struct Tolerances : FixedTolerances {
   /// Pure-slip rows at one p whose amplitudes agree within same_amplitude
   /// max(1, a) are one row.
   double same_amplitude = 1e-6;
-  /// Forced branches: a slip phase shorter than this fraction of the orbit's
+  /// Orbit branches: a slip phase shorter than this fraction of the orbit's
   /// period at a located sliding point is the one adding-sliding creates
   /// (its length grows like sqrt(|p - p*|) <= 1e-5 within 1e-10; issue 20).
   double VanishingPhase() const { return 1e-4; }
-  /// Forced branches: a crossing of x' = v this close to the stick band's edge
+  /// Orbit branches: a crossing of x' = v this close to the stick band's edge
   /// (times 1 + the orbit's width) is on it at a located sliding point.
   double BandEdge() const { return std::max(1e-8, 1e3 * rtol); }
-  /// Forced basins (basin/attractors.hpp): stroboscopic points of one
+  /// Basins on a section (basin/attractors.hpp): section points of one
   /// periodic cycle agree to this, relative to 1 + |z|: max(1e-6, 1e3 rtol).
   double SectionCycle() const { return std::max(1e-6, 1e3 * rtol); }
   /// ... and two periodic attractors are one if their points agree to max(1e-4, 1e5 rtol).
   double SameAttractor() const { return std::max(1e-4, 1e5 * rtol); }
   /// A start is chaotic if its largest exponent exceeds max(3 err, this floor) (1 / time).
   double ChaoticExponentFloor() const { return 1e-3; }
-  /// Forced PD switching: the point's multiplier must lie within this of -1
+  /// PD switching: the point's multiplier must lie within this of -1
   /// (a located PD has it within 1e-9; issue 20).
   double FlipMultiplier() const { return 1e-3; }
-  /// Forced PD switching: the first point of the doubled branch is on it (not
+  /// PD switching: the first point of the doubled branch is on it (not
   /// back on the m orbit) if |P^m z - z| exceeds this times the offset h.
   double DoubledSplit() const { return 0.5; }
-  /// Forced branches: one-sided slopes of P^m in p that differ by more than
+  /// Orbit branches: one-sided slopes of P^m in p that differ by more than
   /// this times (1 + the kept one) straddle a jump of the map, not a kink.
   static constexpr double kJumpSlopeRatio = 100;
 
@@ -318,8 +318,8 @@ struct Tolerances : FixedTolerances {
   // --- Limits round two: the decimal-form thresholds (scripts/check_limits.py) ---
   // PALC: a last chord within kClosedCurveGap chord lengths of the first point closes the curve.
   static constexpr double kClosedCurveGap = 0.1;
-  // Forced shooting: a Newton step over kForcedNewtonCap (1 + |z|) is cut to it (damped Newton).
-  static constexpr double kForcedNewtonCap = 0.5;
+  // Shooting: a Newton step over kNewtonCap (1 + |z|) is cut to it (damped Newton).
+  static constexpr double kNewtonCap = 0.5;
   // Batched stroboscopic orbits: a fixed point of P^m is one of P^d if P^d moves it by at most
   // kLeastPeriod (1 + |z|) (the Newton tolerance's 1e-12 times the map's error growth).
   static constexpr double kLeastPeriod = 1e-8;

@@ -135,7 +135,7 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
     const double size = 1 + MaxAbs(z.z.head(nu));
     // A long step is cut (damped Newton): the state's by a share of its size,
     // a clock's to a quarter turn.
-    const double norm = MaxAbs(dz.head(nt)), cap = Tolerances::kForcedNewtonCap * size;
+    const double norm = MaxAbs(dz.head(nt)), cap = Tolerances::kNewtonCap * size;
     if (norm > cap) dz.head(nt) *= cap / norm;
     if (nu > nt && std::abs(dz[nt]) > M_PI / 2) dz[nt] = std::copysign(M_PI / 2, dz[nt]);
     o.update = MaxAbs(dz);
