@@ -193,7 +193,8 @@ CHECKS = [
      lambda r: r.printed(r"stick band at x = ([0-9.]+)")),
     ("Its period, 6.4394749 = t1 + Δ/v", "6.4394749", "coulomb", S("GR1", "period")),
     ("at CR1's Ω = 0.7167891507042515", "0.7167891507042515", "cr_force",
-     lambda r: float(r.meta("branch.tsv", "omega"))),
+     lambda r: float(dict(kv.split("=") for kv in r.meta("branch.tsv", "parameters").split(","))
+                     ["omega"])),
     ("locates CR again at A = 0.5000000000000168", "0.5000000000000168", "cr_force",
      S("CR1", "force")),
     (DH_ROWS, "1103", "den_hartog", lambda r: r.rows()),

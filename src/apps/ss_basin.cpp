@@ -11,7 +11,6 @@
 #include "cli/basin_curve.hpp"
 #include "cli/basin_section.hpp"
 #include "cli/physical.hpp"
-#include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "cli/system_choice.hpp"
 #include "stickslip/io/basin_report.hpp"

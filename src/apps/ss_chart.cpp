@@ -13,7 +13,6 @@
 #include "cli/chart_system.hpp"
 #include "cli/physical.hpp"
 #include "cli/restart.hpp"
-#include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "cli/system_choice.hpp"
 #include "stickslip/chart/chart.hpp"

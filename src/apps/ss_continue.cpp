@@ -17,7 +17,6 @@
 #include "cli/restart.hpp"
 #include "cli/run_continuation.hpp"
 #include "cli/run_control.hpp"
-#include "cli/run_forced.hpp"
 #include "cli/run_log.hpp"
 #include "cli/run_system.hpp"
 #include "cli/study.hpp"
@@ -237,16 +236,16 @@ int Main(int argc, char** argv) {
   if (cli::HelpOrVersion(std::cout, args, kProg, "ss_continue [--study FILE] [options]", desc,
                          std::string(kNotes) + cli::kExitCodeHelp + kExample))
     return 0;
-  if (cli::SystemRequested(args) || cli::SystemRestartRequested(args))  // docs/systems.md
+  // The belt's own run, else the system run (docs/systems.md): --system,
+  // --model, the forced oscillator (--force) or a restart of one of them.
+  if (cli::SystemRequested(args) || cli::SystemRestartRequested(args) ||
+      cli::SystemChoiceOf(args) == cli::SystemChoice::kForced)
     return cli::RunSystem(args, kProg, cli::CommandLine(argc, argv));
   cli::RefuseSystem(args, kProg, {"start_at", "transient", "disturbance"});
-  // A forced run's point restarts the forced oscillator (its files say so).
-  // Without --restart, a forced run's --point is an orbit of its start list.
-  std::optional<ss::LabelledPoint> restart;
-  if (args.Given("restart") || !cli::ForcedRequested(args))
-    restart = cli::RestartFromArguments(args);
-  if ((restart && restart->forced) || cli::ForcedRequested(args))
-    return cli::RunForced(args, kProg, cli::CommandLine(argc, argv), restart);
+  cli::ForcedRequested(args);  // --omega or --param omega without a forcing: UsageError
+  const std::optional<ss::LabelledPoint> restart = cli::RestartFromArguments(args);
+  if (restart && restart->forced)  // a forced run's point from before its files named the system
+    return cli::RunSystem(args, kProg, cli::CommandLine(argc, argv));
   for (const char* o : {"all", "m"})
     if (args.Given(o) && (std::string(o) != "all" || args.Flag("all")))
       throw cli::UsageError(args.Source(o) +

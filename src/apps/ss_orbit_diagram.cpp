@@ -10,7 +10,6 @@
 
 #include "cli/about.hpp"
 #include "cli/app.hpp"
-#include "cli/run_forced.hpp"
 #include "cli/study.hpp"
 #include "cli/system_choice.hpp"
 #include "stickslip/io/orbit_diagram_report.hpp"

@@ -14,7 +14,6 @@
 #include "cli/output.hpp"
 #include "cli/physical.hpp"
 #include "cli/run_control.hpp"
-#include "cli/run_forced.hpp"
 #include "cli/simulate_forced.hpp"
 #include "cli/simulate_system.hpp"
 #include "cli/study.hpp"

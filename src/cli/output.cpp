@@ -56,7 +56,7 @@ const std::vector<std::string>& KnownOutputNames() {
     std::vector<std::string> n = {"branch.tsv",
                                   "special_points.tsv",
                                   "bifurcation.gp",
-                                  "resonance.gp",
+                                  "resonance.gp",  // an older version's forced figure
                                   "curves.tsv",
                                   "codim2.tsv",
                                   "regions.tsv",

@@ -11,6 +11,7 @@
 #include "cli/estimates_text.hpp"
 #include "continuation/labels.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/io/system_branch_report.hpp"
 
 namespace stickslip::cli {
 namespace {
@@ -102,43 +103,50 @@ void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail det
   }
 }
 
-void PrintForcedLog(std::ostream& os, const std::vector<OrbitBranch>& pieces, const ForcedParams& p,
-                    ParameterAxis axis, LogDetail detail) {
-  const std::string param = axis.name();
-  if (detail == LogDetail::kEveryPoint) {
+void PrintSystemLog(std::ostream& os, const System& s, const SystemRun& r, LogDetail detail) {
+  const std::string param = s.ParameterName(r.parameter), x = StateColumn(s, 0);
+  if (detail == LogDetail::kEveryPoint)
     os << "points:\n  " << Pad("pt", 6) << Pad("branch", 8) << Pad("kind", 12) << Pad(param, 16)
-       << Pad("m", 4) << Pad("period", 11) << Pad("x_min", 11) << Pad("x_max", 11)
+       << Pad("m", 4) << Pad("period", 11) << Pad(x + "_min", 11) << Pad(x + "_max", 11)
        << Pad("|mu|max", 11) << Pad("stability", 10) << "lab\n";
-  }
   int pt = 0;
   std::map<SpecialKind, int> count;
   std::vector<std::string> special;
-  for (size_t i = 0; i < pieces.size(); ++i)
-    for (const OrbitRow& r : pieces[i].rows) {
-      ++pt;
-      std::string lab;
-      if (r.label != SpecialKind::kNone)
-        lab = std::string(Name(r.label)) + std::to_string(++count[r.label]);
-      ForcedParams at = p;
-      axis.Set(at, r.p);
-      const int m = PeriodMultiple(pieces[i]);
-      const double period = m * 2 * M_PI / at.omega;
-      const Extrema e = RowExtrema(r);
-      if (detail == LogDetail::kEveryPoint) {
-        const double mu = std::max(std::abs(r.multipliers[0]), std::abs(r.multipliers[1]));
-        std::ostringstream line;
-        line << "  " << Pad(std::to_string(pt), 6) << Pad(std::to_string(i + 1), 8)
-             << Pad(r.sticks > 0 ? "stick-slip" : "pure-slip", 12) << Pad(Fixed(r.p, 10), 16)
-             << Pad(std::to_string(m), 4) << Pad(Fixed(period, 6), 11) << Pad(Fixed(e.x_min, 6), 11)
-             << Pad(Fixed(e.x_max, 6), 11) << Pad(Fixed(mu, 6), 11)
-             << Pad(r.stable ? "stable" : "unstable", 10) << lab;
-        Row(os, line.str());
-      }
-      if (!lab.empty())
-        special.push_back("  " + lab + "  pt " + std::to_string(pt) + "  " + param + " = " +
-                          FormatNumber(r.p) + "  x_max " + FormatNumber(e.x_max) + "  " +
-                          r.description);
+  // One row: its label counted in branch.tsv's order; the table's line with
+  // --verbose (an orbit's m: its section's turns or returns).
+  auto row = [&](int branch, const std::string& kind, double p, int m, double period,
+                 const Eigen::VectorXd* lo, const Eigen::VectorXd* hi, double mu, bool stable,
+                 SpecialKind label, const std::string& description) {
+    ++pt;
+    std::string lab;
+    if (label != SpecialKind::kNone)
+      lab = std::string(Name(label)) + std::to_string(++count[label]);
+    const bool orbit = lo && lo->size() > 0 && hi->size() > 0;
+    if (detail == LogDetail::kEveryPoint)
+      Row(os, "  " + Pad(std::to_string(pt), 6) + Pad(std::to_string(branch), 8) + Pad(kind, 12) +
+                  Pad(Fixed(p, 10), 16) + Pad(m > 0 ? std::to_string(m) : "-", 4) +
+                  Pad(m > 0 ? Fixed(period, 6) : "-", 11) +
+                  Pad(orbit ? Fixed((*lo)[0], 6) : "-", 11) +
+                  Pad(orbit ? Fixed((*hi)[0], 6) : "-", 11) + Pad(Fixed(mu, 6), 11) +
+                  Pad(stable ? "stable" : "unstable", 10) + lab);
+    if (!lab.empty())
+      special.push_back(
+          "  " + lab + "  pt " + std::to_string(pt) + "  " + param + " = " + FormatNumber(p) +
+          (orbit ? "  " + x + "_max " + FormatNumber((*hi)[0]) : "") + "  " + description);
+  };
+  for (const SteadyRow& q : r.steady.rows)  // |mu|max: the largest real part
+    row(0, "equilibrium", q.p, 0, 0, nullptr, nullptr, q.state.max_real, q.state.stable(), q.label,
+        q.description);
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    const PoincareSection& sec = r.pieces[i].section;
+    const int m = sec.kind == SectionKind::kTime ? sec.turns : sec.returns;
+    for (const OrbitRow& q : r.pieces[i].rows) {
+      double mu = 0;
+      for (const auto& z : q.multipliers) mu = std::max(mu, std::abs(z));
+      row(r.numbers[i], q.sticks > 0 ? "stick-slip" : "pure-slip", q.p, std::max(m, 1), q.period,
+          &q.lo, &q.hi, mu, q.stable, q.label, q.description);
     }
+  }
   os << "special points (restart one with --restart DIR --point LAB or PT):\n";
   if (special.empty()) os << "  none\n";
   for (const std::string& line : special) os << line << "\n";

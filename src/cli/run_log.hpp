@@ -12,7 +12,7 @@
 
 #include "cli/physical.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "stickslip/io/resonance_report.hpp"
+#include "stickslip/io/system_branch_report.hpp"
 
 namespace stickslip::cli {
 
@@ -24,8 +24,10 @@ enum class LogDetail { kSpecialPoints, kEveryPoint };
 void PrintBranchLog(std::ostream& os, const ContinuationResult& r, LogDetail detail,
                     const std::optional<Scales>& scales);
 
-// The forced branch (its pieces in branch.tsv's order, pt counted over them).
-void PrintForcedLog(std::ostream& os, const std::vector<OrbitBranch>& pieces, const ForcedParams& p,
-                    ParameterAxis axis, LogDetail detail);
+// A system's run (ss_continue --system, --model, --force): the same, pt and
+// labels counted as branch.tsv and special_points.tsv count them (steady
+// sliding's rows, then each piece's); an orbit's m is its section's turns
+// (a clock) or returns, steady sliding's |mu|max its largest real part.
+void PrintSystemLog(std::ostream& os, const System& s, const SystemRun& r, LogDetail detail);
 
 }  // namespace stickslip::cli

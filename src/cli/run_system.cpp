@@ -10,12 +10,14 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/autonomous_start.hpp"
+#include "cli/run_log.hpp"
 #include "cli/system_choice.hpp"
 #include "cli/system_restart.hpp"
 #include "cli/system_setup.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/system_branch_report.hpp"
 #include "stickslip/orbits/settle.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 
@@ -78,6 +80,7 @@ ClockStart ClockStartOf(const SystemSetup& s, const System& at) {
   ClockStart c;
   c.rest = RestOnContacts(at);
   c.opts = BranchOptions(s);
+  if (const auto* f = dynamic_cast<const ForcedModel*>(&at)) c.box = f->SearchBox();
   return c;
 }
 
@@ -171,7 +174,7 @@ std::string TraceOtherEnds(const SystemSetup& s, RunControl& run, SystemRun& r) 
 }  // namespace
 
 po::options_description SystemRunOptions() {
-  po::options_description d("With --system (docs/systems.md)");
+  po::options_description d("With --system, --model or --force (docs/systems.md)");
   d.add_options()("start_at", Value()->value_name("P"),
                   "where the stick-slip attractor is sought, between --from and --to (default "
                   "--from); its branch is traced to --to and back to --from")(
@@ -255,7 +258,8 @@ Metadata FileMetadata(const SystemSetup& s, const SystemRun& r, const SettledOrb
 }
 
 void PrintSummary(const std::string& prog, const std::string& model, const SystemSetup& s,
-                  const SystemRun& r, const SettledOrbit& settled) {
+                  const SystemRun& r, const SettledOrbit& settled, const std::string& gap,
+                  LogDetail detail) {
   std::cout << prog << ": " << model << ", from " << FormatNumber(s.from) << " to "
             << FormatNumber(s.to) << "\n";
   if (s.system->clocks() == 0)
@@ -265,13 +269,10 @@ void PrintSummary(const std::string& prog, const std::string& model, const Syste
     std::cerr << prog << ": note: no stick-slip orbit: " << NoOrbit(settled) << "\n";
   for (std::size_t i = 0; i < r.pieces.size(); ++i)
     std::cout << "branch " << r.numbers[i] << ": " << r.pieces[i].rows.size() << " rows, "
-              << Name(r.pieces[i].status) << "\n";
-  auto point = [](SpecialKind k, double p, const std::string& what) {
-    std::cout << "  " << Name(k) << " at " << FormatNumber(p) << ": " << what << "\n";
-  };
-  for (const SteadyRow& p : r.steady.special) point(p.label, p.p, p.description);
-  for (const OrbitBranch& b : r.pieces)
-    for (const OrbitRow& p : b.special) point(p.label, p.p, p.description);
+              << Name(r.pieces[i].status)
+              << (r.pieces[i].message.empty() ? "" : " (" + r.pieces[i].message + ")") << "\n";
+  if (!gap.empty()) std::cout << "gap: " << gap << "\n";
+  PrintSystemLog(std::cout, *s.system, r, detail);
 }
 
 }  // namespace
@@ -327,7 +328,8 @@ int RunSystem(const Arguments& args, const std::string& prog, const std::string&
   app.out().Write("bifurcation.gp", SystemBranchScript(*s.system, r, model, format));
   if (!app.Finish("bifurcation.gp", SystemBranchFigures(format), SystemBranchFigures(format)))
     return kExitFailed;
-  PrintSummary(prog, model, s, r, settled);
+  PrintSummary(prog, model, s, r, settled, gap,
+               args.Flag("verbose") ? LogDetail::kEveryPoint : LogDetail::kSpecialPoints);
   std::cout << "wrote " << app.out().dir() << "/branch.tsv, special_points.tsv, bifurcation.gp"
             << (app.gnuplot().ok() ? " and the figure" : "") << "\n";
   return app.ExitCode(partial);

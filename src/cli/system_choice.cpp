@@ -11,6 +11,7 @@
 #include "stickslip/chaos/lyapunov.hpp"
 #include "stickslip/equilibria/steady_sliding.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 
@@ -66,6 +67,14 @@ std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const 
                        std::to_string(kMaxBlocks) + "]");
     return std::make_unique<chain::Chain>(chain::Uniform(static_cast<int>(n), law, 0));
   }
+  if (choice == SystemChoice::kForced) {  // its parameters: the law's, then A and Omega
+    ForcedParams p;
+    p.base = law;
+    p.force = args.Number("force", 0);
+    p.omega = args.Number("omega", 1);
+    CheckForcedModel(args, p);
+    return std::make_unique<ForcedModel>(p);
+  }
   mode_coupling::CouplingParams c;
   c.law = law;
   return std::make_unique<mode_coupling::ModeCoupling>(c);
@@ -101,9 +110,38 @@ po::options_description SystemOptions() {
   return d;
 }
 
+po::options_description ForcingOptions() {
+  po::options_description d("Model, forcing (x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t))");
+  d.add_options()("force", Value()->value_name("A"),
+                  "force amplitude A >= 0; != 0 selects the forced oscillator (default 0: the "
+                  "belt model)")("omega", Value()->value_name("W"),
+                                 "forcing frequency over the natural one, > 0 (default 1)")(
+      "max_amplitude", Value()->value_name("X"),
+      "forced: a branch ends where |x| passes X (default 50); ss_chart: seed branches and "
+      "grid cells end there (forced 50, --system 1000); the forced oscillator's rtol and "
+      "atol default to 1e-12");
+  return d;
+}
+
+bool ForcedRequested(const Arguments& args) {
+  const std::string param = args.Text("param", "");
+  const bool forced = args.Number("force", 0) != 0 || param == "force";
+  if (!forced && !args.Given("restart") && (args.Given("omega") || param == "omega"))
+    throw UsageError((args.Given("omega") ? args.Source("omega") : args.Source("param")) +
+                     " needs the forced oscillator: give --force A > 0");
+  return forced;
+}
+
 SystemChoice SystemChoiceOf(const Arguments& args) {
   SystemChoice c = SystemChoice::kBelt;
+  if (!args.Given("system") && !args.Given("model"))  // ForcedRequested's test, without its error
+    return args.Number("force", 0) != 0 || args.Text("param", "") == "force" ? SystemChoice::kForced
+                                                                             : c;
   const std::string name = args.Text("system", args.Given("model") ? "model" : "belt");
+  if (name == Name(SystemChoice::kForced))
+    throw UsageError(args.Source("system") +
+                     " forced: the forced oscillator is chosen with "
+                     "--force A (A != 0)");
   if (args.Given("model") && name != "model")
     throw UsageError(args.Source("model") + " and " + args.Source("system") + " " + name +
                      ": give one of them");
@@ -141,10 +179,14 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
                      ": the run was of a model file; give it again with --model FILE");
   if (args.Given("blocks") && choice != SystemChoice::kChain)
     throw UsageError(args.Source("blocks") + " needs --system chain");
+  const bool forced = choice == SystemChoice::kForced;
   for (const char* o : {"mass", "damping", "stiffness", "belt_speed", "force", "omega"})
-    if (args.Given(o))
-      throw UsageError(args.Source(o) + ": --system " + Name(choice) +
-                       " takes dimensionless inputs without forcing");
+    if (args.Given(o) && !(forced && (o == std::string("force") || o == std::string("omega"))))
+      throw UsageError(args.Source(o) + (forced ? ": the forced oscillator takes dimensionless "
+                                                  "inputs"
+                                                : ": --system " + std::string(Name(choice)) +
+                                                      " takes dimensionless inputs without "
+                                                      "forcing"));
   const Params law = UncheckedModelFromArguments(args, restart ? restart->law : Params());
   std::unique_ptr<System> s;
   try {
@@ -155,6 +197,9 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
     throw UsageError(std::string("--system ") + Name(choice) + ": " + e.what());
   }
   if (restart) SetRestartParameters(args, *restart, s.get());
+  for (int j = 0; forced && j < s->parameters(); ++j)  // each an option: given ones override
+    if (args.Given(s->ParameterName(j)))
+      s->SetParameterValue(j, args.Number(s->ParameterName(j), 0));
   for (const char* o : {"beta", "v", "mu_s", "mu_k"}) {  // the model options the system names
     if (args.Given(o) && s->ParameterIndex(o) >= 0)
       s->SetParameterValue(s->ParameterIndex(o), args.Number(o, 0));

@@ -23,15 +23,25 @@
 
 namespace stickslip::cli {
 
-enum class SystemChoice { kBelt, kChain, kModeCoupling, kModel };
+// kForced: the forced oscillator (ForcedModel), chosen by --force A != 0 or
+// --param force, or by a forced run's restart; no --system name.
+enum class SystemChoice { kBelt, kChain, kModeCoupling, kModel, kForced };
 
 po::options_description SystemOptions();
-// The --system given (kBelt by default; kModel with --model FILE);
-// UsageError for an unknown name.
+// The forcing options (--force, --omega, --max_amplitude), in the model group.
+po::options_description ForcingOptions();
+// True when the forced oscillator is asked for: --force A != 0, or --param
+// force. Throws UsageError for --omega or --param omega without a forcing
+// (a restart's point may have one).
+bool ForcedRequested(const Arguments& args);
+// The --system given (kBelt by default; kModel with --model FILE; kForced
+// with --force A != 0 or --param force, ForcedRequested); UsageError for an
+// unknown name.
 SystemChoice SystemChoiceOf(const Arguments& args);
 // True for a system other than the belt and the forced oscillator.
 inline bool SystemRequested(const Arguments& args) {
-  return SystemChoiceOf(args) != SystemChoice::kBelt;
+  const SystemChoice c = SystemChoiceOf(args);
+  return c != SystemChoice::kBelt && c != SystemChoice::kForced;
 }
 // The app takes only the belt and the forced oscillator: UsageError naming
 // --system where another is chosen (or --set, --blocks, `also`, [system] given).
@@ -70,6 +80,7 @@ struct EnumNames<cli::SystemChoice> {
       {cli::SystemChoice::kChain, "chain"},
       {cli::SystemChoice::kModeCoupling, "mode_coupling"},
       {cli::SystemChoice::kModel, "model"},
+      {cli::SystemChoice::kForced, "forced"},
   };
 };
 }  // namespace stickslip

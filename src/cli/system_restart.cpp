@@ -2,7 +2,9 @@
 #include "cli/system_restart.hpp"
 
 #include "cli/physical.hpp"
+#include "cli/restart.hpp"
 #include "stickslip/io/report.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 
@@ -11,7 +13,39 @@ bool SystemRestartRequested(const Arguments& args) {
          IsSystemRun(args.Text("restart"), args.Text("point"));
 }
 
+namespace {
+
+// A forced run's point written before its files named the system (no
+// '# system:' line; restart.hpp reads it, x0/xdot0 or the system's columns)
+// as the forced system's: its m turns, its point at theta = 0.
+SystemPoint ForcedPoint(const Arguments& args) {
+  const LabelledPoint lp = *RestartFromArguments(args);
+  if (!lp.forced)  // a belt point carries no forcing
+    throw UsageError(args.Source("restart") + " " + args.Text("restart") +
+                     " is a belt run: its restart cannot add a forcing (--force, --omega, "
+                     "--param omega|force)");
+  SystemPoint sp;
+  sp.label = lp.label, sp.pt = lp.pt, sp.type = lp.type, sp.branch = 1;
+  sp.system = Name(SystemChoice::kForced);
+  sp.law = lp.params;
+  const ForcedModel m(ForcedParams{lp.params, lp.force, lp.omega});
+  for (int j = 0; j < m.parameters(); ++j)
+    sp.parameters.emplace_back(m.ParameterName(j), m.ParameterValue(j));
+  sp.continued = lp.ParamName(), sp.p = lp.p, sp.flow = lp.flow;
+  sp.max_amplitude = 50;  // the forced run's default then
+  sp.start = {0, Eigen::Vector3d(lp.state.x(), lp.state.y(), 0), ModeSet(Mode::kSlipBelow)};
+  sp.section = PoincareSection::Stroboscopic(m, sp.start.z, lp.m);
+  sp.contacts = 1, sp.period = lp.period, sp.run_from = lp.run_from, sp.run_to = lp.run_to;
+  return sp;
+}
+
+}  // namespace
+
 SystemPoint SystemRestartFromArguments(const Arguments& args) {
+  // Without --system or --model: a forced run's older files too.
+  if (args.Given("point") && !args.Given("system") && !args.Given("model") &&
+      !IsSystemRun(args.Text("restart"), args.Text("point")))
+    return ForcedPoint(args);
   if (!args.Given("point"))
     throw UsageError(args.Source("restart") + " " + args.Text("restart") +
                      " needs --point LABEL (LP1, PD1, GR1, ... or a point number)");

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cli/app.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip::cli {
 
@@ -12,6 +13,20 @@ namespace {
 
 // The rows of steady sliding are held: 1 / max_step + 1 of them at most.
 constexpr double kMinMaxStep = 1e-5;
+// The forced oscillator's defaults: --max_step, --max_amplitude.
+constexpr double kForcedMaxStep = 0.02, kForcedMaxAmplitude = 50;
+
+// The forced oscillator's defaults, and its --param checked against the
+// law's axes and the forcing's (AxisFromArguments' messages). Its flow:
+// rtol = atol = 1e-12 (ForcedModel::FlowDefaults: at the belt's 1e-11 the
+// corrector, tol 1e-11, stalls on the flow's noise) and its switch cap, with
+// the apps' step cap.
+void ForcedDefaults(const Arguments& args, SystemSetup& s) {
+  AxisFromArguments(args, "param", s.restart ? s.restart->continued : "omega", s.law.law, true);
+  s.max_step = kForcedMaxStep, s.max_amplitude = kForcedMaxAmplitude;
+  s.flow = ForcedModel::FlowDefaults();
+  s.flow.max_steps = FlowOptions().max_steps;
+}
 
 // A restart's start and range (system_restart.hpp): the run starts at the
 // point's value; in the run's own parameter it goes by default to the far end
@@ -40,6 +55,11 @@ void ConfigureRestart(const Arguments& args, SystemSetup& s) {
     const double end =
         sp.fold_side > 0 ? std::max(sp.run_from, sp.run_to) : std::min(sp.run_from, sp.run_to);
     if (sp.type == "LP" && (end - p) * sp.fold_side > 0) s.to = end;
+  } else if (s.choice == SystemChoice::kForced) {  // the far end of its default range
+    const auto& f = static_cast<const ForcedModel&>(*s.system);
+    const ParameterRange r =
+        DefaultRange(f.params(), ParameterAxis(s.system->ParameterName(s.param)));
+    s.to = std::abs(r.to - p) >= std::abs(r.from - p) ? r.to : r.from;
   } else if (!args.Given("to"))
     throw UsageError("--to is required with --restart in " + s.system->ParameterName(s.param) +
                      " (the run's parameter is " + sp.continued + ")");
@@ -74,6 +94,8 @@ void ConfigureStart(const Arguments& args, SystemSetup& s) {
 
 }  // namespace
 
+// The system is built before the law is read: it names physical inputs
+// (--mass, ...) as refused, where the law would ask for their partners.
 SystemSetup ConfigureSystemRun(const Arguments& args) {
   for (const char* o : {"floquet", "no_estimates"})
     if (args.Given(o) && (args.map()[o].value().type() != typeid(bool) || args.Flag(o)))
@@ -82,23 +104,33 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   if (args.Given("restart")) s.restart = SystemRestartFromArguments(args);
   if (args.Flag("switch") && !s.restart)
     throw UsageError(args.Source("switch") + " needs --restart DIR --point PDn");
-  s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
   s.system = SystemFromArguments(args, s.restart ? &*s.restart : nullptr);
+  s.law = UncheckedModelFromArguments(args, s.restart ? s.restart->law : Params());
   ConfigureStart(args, s);
   s.choice = SystemChoiceOf(args);
   if (s.restart) FromName(s.restart->system, &s.choice);  // known: SystemFromArguments built it
   const std::string system = Name(s.choice);
-  if (!args.Given("param") && !s.restart)
+  const bool forced = s.choice == SystemChoice::kForced;
+  if (forced) ForcedDefaults(args, s);
+  if (!args.Given("param") && !s.restart && !forced)
     throw UsageError("--param is required with " + SystemLabel(args) + " (one of " +
                      ParameterList(*s.system) + ")");
-  const std::string param = args.Text("param", s.restart ? s.restart->continued : "");
+  const std::string param = args.Text("param", s.restart ? s.restart->continued
+                                               : forced  ? "omega"
+                                                         : "");
   s.param = s.system->ParameterIndex(param);
   if (s.param < 0)
     throw UsageError(args.Source("param") + ": '" + param + "' is no parameter of " + system +
                      " (its parameters: " + ParameterList(*s.system) + ")");
   s.from = s.system->ParameterValue(s.param);
+  if (forced && !s.restart) {  // the forced oscillator's default range (params.hpp)
+    const auto& f = static_cast<const ForcedModel&>(*s.system);
+    const ParameterRange range = DefaultRange(f.params(), ParameterAxis(param));
+    s.from = range.from, s.to = range.to;
+  }
   if (s.restart) ConfigureRestart(args, s);
-  if (!args.Given("to") && !s.restart) throw UsageError("--to is required with --system");
+  if (!args.Given("to") && !s.restart && !forced)
+    throw UsageError("--to is required with --system");
   s.from = args.Number("from", s.from);
   s.to = args.Number("to", s.to);
   if (s.to == s.from) throw UsageError(args.Source("to") + " must differ from --from");
@@ -111,15 +143,15 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   }
   s.system->SetParameterValue(s.param, s.from);
   if (!s.restart) s.start_at = args.Number("start_at", s.from);
+  if (s.doubled && !(std::min(s.from, s.to) < s.start_at && s.start_at < std::max(s.from, s.to)))
+    throw UsageError(args.Source("switch") + ": the PD point's " + param + " = " +
+                     FormatNumber(s.start_at) + " must lie strictly between --from " +
+                     FormatNumber(s.from) + " and --to " + FormatNumber(s.to));
   if (!(std::min(s.from, s.to) <= s.start_at && s.start_at <= std::max(s.from, s.to)))
     throw UsageError(
         (s.restart ? "--restart " + args.Text("restart") + " point " + args.Text("point") + ": its "
                    : args.Source("start_at") + " = ") +
-        param + " = " + FormatNumber(s.start_at) + " must lie between --from and --to" +
-        (s.doubled ? ", not at either" : ""));
-  if (s.doubled && (s.start_at == s.from || s.start_at == s.to))
-    throw UsageError(args.Source("switch") + ": the PD point's " + param + " = " +
-                     FormatNumber(s.start_at) + " must lie strictly between --from and --to");
+        param + " = " + FormatNumber(s.start_at) + " must lie between --from and --to");
   s.max_step = args.Number("max_step", s.max_step);
   if (!(s.max_step >= kMinMaxStep && s.max_step <= 1))
     throw UsageError(args.Source("max_step") + " = " + FormatNumber(s.max_step) + " must lie in [" +
@@ -134,7 +166,7 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   if (!(s.max_amplitude > 0))
     throw UsageError(args.Source("max_amplitude") + " = " + FormatNumber(s.max_amplitude) +
                      " must be > 0");
-  s.flow = FlowOptionsFromArguments(args, s.restart ? s.restart->flow : FlowOptions());
+  s.flow = FlowOptionsFromArguments(args, s.restart ? s.restart->flow : s.flow);
   s.settle.shooting.flow = s.flow;
   s.settle.transient = args.Number("transient", s.settle.transient);
   // Each contact may stick once per period: the recurrence looks that far (a clock: turns).

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <regex>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "io/tsv_read.hpp"
@@ -24,18 +27,34 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
   const std::string& tool = t.Meta("tool");
   if (tool.rfind("ss_continue", 0) != 0 && tool.rfind(kPythonTool, 0) != 0)
     throw RestartError(Part::kRun, "'" + t.path + "' was not written by ss_continue");
-  if (const auto system = t.meta.find("system"); system != t.meta.end())
-    throw RestartError(Part::kRun, "'" + t.path + "' is a run of --system " +
-                                       system->second.substr(0, system->second.find(':')) +
-                                       ": ss_continue restarts it with that system only");
+  // The parameters by name: the metadata's lines, or a system run's
+  // `parameters` line ("beta=0,...,omega=1.5"; the forced oscillator's is read here).
+  std::map<std::string, std::string> values = t.meta;
+  bool forced_system = false;
+  if (const auto system = t.meta.find("system"); system != t.meta.end()) {
+    const std::string name = system->second.substr(0, system->second.find(':'));
+    if (name != "forced")
+      throw RestartError(Part::kRun, "'" + t.path + "' is a run of --system " + name +
+                                         ": ss_continue restarts it with that system only");
+    forced_system = true;
+    std::istringstream items(t.Meta("parameters"));
+    for (std::string item; std::getline(items, item, ',');)
+      if (const auto eq = item.find('='); eq != std::string::npos)
+        values[item.substr(0, eq)] = item.substr(eq + 1);
+  }
+  auto value = [&](const std::string& key) {
+    const auto it = values.find(key);
+    return it == values.end() ? t.Meta(key) : it->second;  // t.Meta: throws naming the key
+  };
   try {
     lp->params.law = LawFromName(t.Meta("law"));
   } catch (const InvalidArgument& e) {
     throw RestartError(Part::kRun, "'" + t.path + "': " + e.what());
   }
   const std::string continued = t.Meta("continued");
-  const auto model = t.meta.find("model");  // run_forced.cpp: "forced oscillator, ..."
-  lp->forced = model != t.meta.end() && model->second.rfind("forced oscillator", 0) == 0;
+  const auto model = t.meta.find("model");  // an older forced run's: "forced oscillator, ..."
+  lp->forced =
+      forced_system || (model != t.meta.end() && model->second.rfind("forced oscillator", 0) == 0);
   const std::vector<ParameterAxis> axes = ParameterAxes(lp->params.law, lp->forced);
   const auto axis = std::find_if(axes.begin(), axes.end(),
                                  [&](const ParameterAxis& a) { return a.name() == continued; });
@@ -45,9 +64,9 @@ void ReadModel(const Table& t, LabelledPoint* lp) {
                                        " of the " + Name(lp->params.law) + " law");
   lp->param = *axis;
   for (const std::string& name : ParameterNames(lp->params.law))
-    if (name != continued) SetParameter(lp->params, name, t.Number(t.Meta(name), name));
-  if (lp->forced && continued != "force") lp->force = t.Number(t.Meta("force"), "force");
-  if (lp->forced && continued != "omega") lp->omega = t.Number(t.Meta("omega"), "omega");
+    if (name != continued) SetParameter(lp->params, name, t.Number(value(name), name));
+  if (lp->forced && continued != "force") lp->force = t.Number(value("force"), "force");
+  if (lp->forced && continued != "omega") lp->omega = t.Number(value("omega"), "omega");
   lp->flow = io_detail::ReadFlowOptions(t);
   const auto from = t.meta.find("from"), to = t.meta.find("to");
   if (from != t.meta.end() && to != t.meta.end()) {

@@ -159,7 +159,7 @@ TEST_F(FigureMarksApp, ForcedBasinFigureDrawsEverySectionPointOfAPeriodicAttract
   EXPECT_EQ(pts.size(), want);
 }
 
-// The forced Stribeck belt's resonance figure: a label drawn above its point
+// The forced Stribeck belt's figure (its first panel): a label drawn above its point
 // (even rows of special_points.tsv, offset 1.2 characters up) has 6 % of the
 // y range above it, one below has 6 % under it; LP2 at x_max 0.887 was cut by
 // the top border at 0.9.
@@ -172,10 +172,11 @@ TEST_F(FigureMarksApp, ResonanceLabelsHaveRoomInsideThePlot) {
                {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/" + study + ".ini"});
     ASSERT_EQ(r.outcome.code, 0) << r.err;
     const std::string out = dir + "/out";
-    std::string gp = tu::ReadFile(out + "/resonance.gp");
+    std::string gp = tu::ReadFile(out + "/bifurcation.gp");
     const auto at = gp.find("set output");
     ASSERT_NE(at, std::string::npos);
     gp.replace(at, gp.find('\n', at) - at, "set output '/dev/null'");
+    gp = gp.substr(0, gp.find("\nunset label\n") + 1);  // the first panel: x's extremes
     tu::WriteFile(out + "/range.gp",
                   gp + "set print 'range.txt'\nprint sprintf('%.17g %.17g', GPVAL_Y_MIN, "
                        "GPVAL_Y_MAX)\n");

@@ -107,7 +107,7 @@ std::map<std::string, int> DrawnTitles(const std::string& dir, const std::string
   return n;
 }
 
-// The floor and Den Hartog resonance figures: every key entry names a curve
+// The floor and Den Hartog bifurcation figures: every key entry names a curve
 // with points (no "unstable" entry over a branch that is stable throughout).
 TEST_F(FigureStylesApp, ResonanceKeyNamesOnlyCurvesWithData) {
   if (!tu::HaveGnuplot()) GTEST_SKIP() << "no gnuplot";
@@ -117,7 +117,7 @@ TEST_F(FigureStylesApp, ResonanceKeyNamesOnlyCurvesWithData) {
         RunOut("ss_continue", dir,
                {"--study", std::string(STICKSLIP_SOURCE_DIR) + "/studies/" + study + ".ini"});
     ASSERT_EQ(r.outcome.code, 0) << r.err;
-    const auto titles = DrawnTitles(dir + "/out", "resonance.gp");
+    const auto titles = DrawnTitles(dir + "/out", "bifurcation.gp");
     ASSERT_GE(titles.size(), 1u) << study;
     for (const auto& [title, points] : titles)
       EXPECT_GT(points, 0) << study << ": key entry '" << title << "' has no data";

@@ -44,7 +44,7 @@ TEST_F(ForcedSwitchApp, DoubledBranchStartsAtThePdPointAndIsTwoPeriodic) {
       << err_;
   const tu::Tsv two = Table(dir_ + "/two/branch.tsv");
   ASSERT_GT(two.rows.size(), 5u);
-  EXPECT_TRUE(tu::Contains(two.meta.at("switch"), "m = 1 -> 2"));
+  EXPECT_TRUE(tu::Contains(two.meta.at("switch"), "turns 1 -> 2")) << two.meta.at("switch");
   for (size_t i = 0; i < two.rows.size(); ++i) EXPECT_EQ(two.rows[i][two.Column("m")], "2");
   // The first row: next to the PD point (the pitchfork's offset ~ ds).
   EXPECT_LT(std::abs(Num(two, 0, "omega") - w_pd), 1e-4);

@@ -1,4 +1,5 @@
-// The data behind the resonance figure's styles: the script ss_continue
+// The data behind the forced figure's styles (bifurcation.gp's first panel,
+// x_max and x_min against omega): the script ss_continue
 // writes is run by gnuplot into a table (set table), and every drawn segment
 // is matched to its two branch.tsv rows. A style change must fall at the
 // stability change: a segment next to a located special point (where the
@@ -78,7 +79,7 @@ TEST_F(ResonanceFigureApp, StyleChangesFallOnTheLocatedPoints) {
                     (row[br.Column("stable")] == "1" ? ", stable" : ", unstable"));
   }
   // The script as it is, its output redirected into a table at full precision.
-  std::string gp = tu::ReadFile(out + "/resonance.gp");
+  std::string gp = tu::ReadFile(out + "/bifurcation.gp");
   const auto at = gp.find("set output");
   ASSERT_NE(at, std::string::npos);
   gp.replace(

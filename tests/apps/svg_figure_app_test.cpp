@@ -22,7 +22,7 @@ TEST_F(SvgFigureApp, SpaceAfterASubscriptIsPreserved) {
               "--from", "0.7", "--to", "0.65", "--format", "svg"},
              true);
   ASSERT_EQ(r.outcome.code, 0) << r.err;
-  const std::string svg = tu::ReadFile(dir + "/out/resonance.svg");
+  const std::string svg = tu::ReadFile(dir + "/out/bifurcation.svg");
   const auto root = svg.find("<svg");
   ASSERT_NE(root, std::string::npos);
   const std::string tag = svg.substr(root, svg.find('>', root) - root);

@@ -87,8 +87,9 @@ struct Study {
   int stride;
 };
 
-// The app's branch (run_forced.cpp, Trace; clock_start.hpp): the state after the transient
-// from rest, Newton at m = 1 there, ContinueForced at the app's defaults.
+// The app's branch (run_system.cpp, FirstPiece; clock_start.hpp): the state after the transient
+// from rest, Newton at m = 1 there, ContinueForced (the app's ContinueOrbits on the same
+// stroboscopic section) at the app's defaults.
 OrbitBranch AppBranch(const Study& s, double from, double to) {
   OrbitBranchOptions o(ForcedModel::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);

@@ -126,7 +126,7 @@ TEST_F(FigureFormatTest, EveryAppDrawsEachFormatWhole) {
   EXPECT_NE(cli::FigureError(dir_ + "/cut.pdf").find("truncated"), std::string::npos);
 }
 
-// Every forced study draws its resonance figure whole. floor_static has one
+// Every forced study draws its figure (bifurcation.png) whole. floor_static has one
 // special point: its figure once crashed gnuplot 5.4 (a labels plot with no
 // defined point), and the run exited 1.
 TEST_F(FigureFormatTest, ForcedStudiesDrawTheirResonanceFigure) {
@@ -135,7 +135,7 @@ TEST_F(FigureFormatTest, ForcedStudiesDrawTheirResonanceFigure) {
     const std::string out = dir_ + "/" + study;
     ASSERT_EQ(Run("ss_continue", "--study " + kStudies + "/" + study + ".ini --out " + out), 0)
         << study << ": " << err_;
-    EXPECT_EQ(cli::FigureError(out + "/resonance.png"), "") << study;
+    EXPECT_EQ(cli::FigureError(out + "/bifurcation.png"), "") << study;
   }
 }
 

@@ -72,8 +72,11 @@ TEST_F(ModelFileApp, TheBeltFileGivesTheBuiltInBranch) {
                             {"--system", "chain", "--blocks", "1", "--set", "kc=0", "--param", "v",
                              "--from", "0.05", "--to", "0.5"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
-  EXPECT_TRUE(tu::Contains(file.out, "HB at 0.4409585518")) << file.out;
-  EXPECT_TRUE(tu::Contains(file.out, "GR at 0.3957902887")) << file.out;
+  // The log's special points: "  HB1  pt 200  v = 0.44095855184...  x_max ...".
+  EXPECT_TRUE(tu::Contains(file.out, "  HB1  pt ")) << file.out;
+  EXPECT_TRUE(tu::Contains(file.out, "  v = 0.4409585518")) << file.out;
+  EXPECT_TRUE(tu::Contains(file.out, "  GR1  pt ")) << file.out;
+  EXPECT_TRUE(tu::Contains(file.out, "  v = 0.3957902887")) << file.out;
   ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-12);  // 5.3e-16 measured
   ExpectSameTables(a, b, "special_points.tsv", 1e-12, 1e-12);
 }
@@ -89,7 +92,7 @@ TEST_F(ModelFileApp, TheBrakeFileGivesTheBuiltInBranch) {
   const auto built =
       RunOut("ss_continue", b, {"--study", STICKSLIP_SOURCE_DIR "/studies/mode_coupling.ini"});
   EXPECT_EQ(file.outcome.code, built.outcome.code) << file.err;
-  EXPECT_TRUE(tu::Contains(file.out, "CL at")) << file.out;
+  EXPECT_TRUE(tu::Contains(file.out, "  CL1  pt ")) << file.out;
   // Measured: states 3.3e-13; multipliers 2e-12 where a complex pair meets on
   // the real axis (rows 24-26: a perturbation e of M moves them by sqrt(e)).
   ExpectSameTables(a, b, "branch.tsv", 1e-12, 1e-11);
