@@ -823,7 +823,7 @@ def exit_gap(r):
     return ts[-1] - ts[-3]
 
 
-CHAIN2 = ("- **Branch 1** ends at SL, v = 0.39521, where both stick phases end (exits 2 → 0)")
+CHAIN2 = ("- **Branch 1** ends at GR, v = 0.3952149311, where both stick phases vanish (sticks 2 → 0)")
 CHAIN2_T = ("block's extremes are the other's, and both stick once per period. Its period is 5.4337 at\n"
             "  v = 0.3, near the out-of-phase mode's 2π/w = 5.310, w = √(1 + 2kc) = 1.18322")
 KC05 = ("HB, with w = √(1 + 2kc) = 1.41421, a stable orbit with the blocks half a period apart, of\n"
@@ -854,7 +854,7 @@ CHECKS += [
      "6.461249807003621", "chain2_list", lambda r: r.printed(r"2: period ([0-9.]+)")),
     ("2: period 6.461249807003621, sticks 1, 1 (per contact), |multiplier| 1.153292062190169",
      "1.153292062190169", "chain2_list", lambda r: r.printed(r"2: period .*\|multiplier\| ([0-9.]+)")),
-    (CHAIN2, "0.39521", "chain2", S("SL1", "v")),
+    (CHAIN2, "0.3952149311", "chain2", S("GR1", "v")),
     (CHAIN2_T, "5.4337", "chain2", lambda r: branch_row(r, "1", "period")),
     (CHAIN2_T, "1.18322", "chain2", lambda r: r.described("HB1", r"w = ([0-9.]+)")),
     (KC05, "1.41421", "chain2_kc05", lambda r: r.described("HB1", r"w = ([0-9.]+)")),

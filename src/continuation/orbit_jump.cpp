@@ -2,7 +2,9 @@
 // parameter (orbit_locate.hpp): JumpAcross walks along one switching
 // sequence, BisectEdge locates where it ends, EdgeWithoutOrbit labels an
 // edge with no orbit of the same period beyond.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,18 @@ bool OrbitAt(OrbitProblem& problem, const OrbitRow& from, double p, OrbitRow* ou
   return true;
 }
 
+// The branch's orbit: its switching counts, and a period that does not jump
+// from `from`'s (another orbit of the same counts nearby, as a chain's
+// in-phase orbit beside its out-of-phase one, is not the branch's). The
+// period may move by kBranchEdgePeriod plus twice the parameter's relative
+// step (a period that scales like 1/p, as a forcing's 2 pi m / Omega).
+bool OnBranch(const OrbitRow& orb, const OrbitRow& ref, const OrbitRow& from) {
+  const double dp =
+      from.p != 0 ? std::abs((orb.p - from.p) / from.p) : std::numeric_limits<double>::infinity();
+  return SameStructure(orb, ref) && std::abs(orb.period - from.period) <=
+                                        (Tolerances::kBranchEdgePeriod + 2 * dp) * from.period;
+}
+
 }  // namespace
 
 bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, OrbitRow* before,
@@ -31,13 +45,9 @@ bool BisectEdge(OrbitProblem& problem, OrbitRow lo, double hi, double tol, Orbit
   const OrbitRow ref = lo;
   OrbitRow orb, prev = lo;
   bool have_prev = false;
-  // The same orbit: its switching counts, and a period that does not jump
-  // (another orbit of the same counts nearby, as a chain's in-phase orbit
-  // beside its out-of-phase one, is not the branch's).
   auto good = [&](double p, const OrbitRow& from) {
     std::string w;
-    return OrbitAt(problem, from, p, &orb, &w) && SameStructure(orb, ref) &&
-           std::abs(orb.period - from.period) <= Tolerances::kBranchEdgePeriod * from.period;
+    return OrbitAt(problem, from, p, &orb, &w) && OnBranch(orb, ref, from);
   };
   for (int it = 0;
        it < Tolerances::kBranchBisectionCap && std::abs(hi - lo.p) > tol * (1 + std::abs(lo.p));
@@ -99,7 +109,7 @@ bool JumpAcross(OrbitProblem& problem, const OrbitRow& last, double dir, double 
   double hi = clamp(last.p + dir * step);
   for (int k = 0;; ++k) {  // the first value past the edge
     std::string w;
-    if (!OrbitAt(problem, lo, hi, &orb, &w) || !SameStructure(orb, last)) break;
+    if (!OrbitAt(problem, lo, hi, &orb, &w) || !OnBranch(orb, last, lo)) break;
     lo = orb;
     if (k == Tolerances::kBranchEdgeWalk || hi == limit) {
       *why = "an orbit of the same switching sequence goes on to " + Num(hi, 12);

@@ -35,24 +35,41 @@ const std::string kChain = STICKSLIP_SOURCE_DIR "/studies/chain2.ini";
 // is the single block's 2 beta + mu'(v) = 0: with mu(s) = mu_s - k1 s + k3 s^3
 // (k1 = 0.45, k3 = 0.6 for the seed's mu_m, v_m), v = sqrt((k1 - 2 beta) / (3 k3)).
 // The orbit's blocks move half a period apart: each block's extremes are the
-// other's. Its stick phases end together at SL (kc = 0.2, the study's; GR at
-// kc = 0.5), where the branch ends.
+// other's. Its stick phases end together at GR (at kc = 0.2, the study's, as
+// at kc = 0.5), where the branch ends. The located edge is the branch's own
+// orbit: the in-step orbit (x1 = x2, 19 % longer) has the same switching
+// counts 1e-7 beyond, and once passed for the edge.
 TEST_F(SystemApp, ChainStudyHopfIsTheSingleBlocksAndItsOrbitsAreSymmetric) {
   const auto r = RunOut("ss_continue", dir_, {"--study", kChain});
-  ASSERT_EQ(r.outcome.code, 0) << r.err;  // the branch ends at SL: no orbit of its kind beyond
+  ASSERT_EQ(r.outcome.code, 0) << r.err;  // the branch ends at GR: no orbit of its kind beyond
   const tu::Tsv branch = tu::ReadTsv(tu::ReadFile(dir_ + "/out/branch.tsv"));
   const tu::Tsv special = tu::ReadTsv(tu::ReadFile(dir_ + "/out/special_points.tsv"));
   EXPECT_EQ(branch.meta.at("status"), "complete");
   EXPECT_TRUE(tu::Contains(branch.meta.at("branch_1_status"),
                            "sequence-ended: the switching "
-                           "sequence ends at SL"))
+                           "sequence ends at GR"))
       << branch.meta.at("branch_1_status");
   ASSERT_EQ(special.rows.size(), 2u);
   const double hb = std::sqrt((0.45 - 0.1) / 1.8);
   EXPECT_EQ(special.rows[0][special.Column("lab")], "HB1");
   EXPECT_NEAR(std::stod(special.rows[0][special.Column("v")]), hb, 1e-12);
-  EXPECT_EQ(special.rows[1][special.Column("lab")], "SL1");
-  EXPECT_TRUE(tu::Contains(special.rows[1].back(), "exits 2 -> 0"));
+  EXPECT_EQ(special.rows[1][special.Column("lab")], "GR1");
+  EXPECT_TRUE(tu::Contains(special.rows[1].back(), "sticks 2 -> 0, exits 2 -> 0"));
+  // The edge row continues branch 1: its period within 1e-4 of the row before
+  // it (by v), its blocks not in step.
+  const auto& e = special.rows[1];
+  const double v_e = std::stod(e[special.Column("v")]);
+  double v_prev = -1, t_prev = 0;
+  for (const auto& row : branch.rows) {
+    const double v = std::stod(row[branch.Column("v")]);
+    if (row[branch.Column("branch")] == "1" && v < v_e && v > v_prev)
+      v_prev = v, t_prev = std::stod(row[branch.Column("period")]);
+  }
+  EXPECT_NEAR(std::stod(e[special.Column("period")]), t_prev, 1e-4 * t_prev);
+  EXPECT_GT(std::abs(std::stod(e[special.Column("x1_0")]) - std::stod(e[special.Column("x2_0")])) +
+                std::abs(std::stod(e[special.Column("x1dot_0")]) -
+                         std::stod(e[special.Column("x2dot_0")])),
+            1e-3);
   int rows = 0;
   for (const auto& row : branch.rows) {
     if (row[branch.Column("kind")] != "stick-slip") continue;
@@ -67,7 +84,7 @@ TEST_F(SystemApp, ChainStudyHopfIsTheSingleBlocksAndItsOrbitsAreSymmetric) {
 }
 
 // Basins of the chain study at v = 0.45, where steady sliding is stable and
-// no stick-slip orbit is left (beyond the study's SL at 0.395): every start
+// no stick-slip orbit is left (beyond the study's GR at 0.395): every start
 // on the (x1, x1') slice comes to rest at steady sliding, x_i = mu(v) in
 // closed form (identical blocks, the coupling spring unstretched).
 TEST_F(SystemApp, ChainBasinsRestOnSteadySlidingInClosedForm) {
