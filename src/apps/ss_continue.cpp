@@ -249,7 +249,8 @@ int Main(int argc, char** argv) {
   for (const char* o : {"all", "m"})
     if (args.Given(o) && (std::string(o) != "all" || args.Flag("all")))
       throw cli::UsageError(args.Source(o) +
-                            " chooses the start orbit of a forced branch: give --force A > 0");
+                            " chooses a start orbit of the forced oscillator or a --system or "
+                            "--model run (the belt's start is its attractor)");
   if (args.Flag("switch"))
     throw cli::UsageError(args.Source("switch") +
                           " needs --restart DIR --point PDn of a forced run (the belt's "

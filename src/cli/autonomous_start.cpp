@@ -39,6 +39,10 @@ std::vector<SettledOrbit> ChosenAutonomousStarts(const System& at, const OrbitBr
                                                  RunControl& run) {
   const std::vector<AutonomousStart> list = AutonomousStartOrbits(at, opts, run);
   PrintAutonomousStarts(os, list, where);
+  if (run.Cancelled()) {  // a list cut short is no list to choose from: nothing continued
+    os << "  (the scan was cut short: no orbit of it continued)\n";
+    return {};
+  }
   if (choice.point > static_cast<int>(list.size()))
     throw UsageError("invalid value '" + std::to_string(choice.point) +
                      "' for --point: the start list at " + where + " has " +

@@ -215,6 +215,12 @@ std::unique_ptr<System> SystemFromArguments(const Arguments& args, const SystemP
                        " (its parameters: " + ParameterList(*s) + ")");
     s->SetParameterValue(j, ParseNumber(set.value, set.where + " " + set.key));
   }
+  if (forced && s->ParameterValue(s->ParameterIndex("force")) == 0) {  // A = 0: no forcing
+    std::string where = args.Given("force") ? args.Source("force") : "--force";
+    for (const Arguments::Setting& set : Settings(args))
+      if (set.key == "force") where = set.where + " force";
+    throw UsageError(where + " = 0: the forced oscillator needs a force A != 0");
+  }
   if (const std::string e = s->ValidationError(); !e.empty()) {
     // Blamed on the last setting the message names, else on --system.
     const std::vector<Arguments::Setting> all = Settings(args);

@@ -130,7 +130,7 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   }
   if (s.restart) ConfigureRestart(args, s);
   if (!args.Given("to") && !s.restart && !forced)
-    throw UsageError("--to is required with --system");
+    throw UsageError("--to is required with " + SystemLabel(args));
   s.from = args.Number("from", s.from);
   s.to = args.Number("to", s.to);
   if (s.to == s.from) throw UsageError(args.Source("to") + " must differ from --from");

@@ -198,6 +198,19 @@ TEST_F(ForcedApp, RestartFromLabelInForceStartsAtThePoint) {
   EXPECT_LT(dx, 1e-9);
   EXPECT_LT(dv, 1e-9);
   EXPECT_NEAR(Cell(b, b.rows.size() - 1, "force"), 2, 1e-12);
+  // A = 0 on the restart is no forced oscillator: refused by name, nothing written.
+  for (const std::vector<std::string>& zero :
+       {std::vector<std::string>{"--force", "0"}, std::vector<std::string>{"--set", "force=0"}}) {
+    const std::string dir3 = NewDir();
+    std::vector<std::string> a = {"--restart", dir + "/out", "--point", "CR1", "--to", "0.5"};
+    a.insert(a.end(), zero.begin(), zero.end());
+    const AppRun e = RunOut("ss_continue", dir3, a);
+    EXPECT_EQ(e.outcome.code, 2) << e.err;
+    EXPECT_TRUE(tu::Contains(e.err, "force = 0: the forced oscillator needs a force A != 0"))
+        << e.err;
+    EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+    EXPECT_FALSE(tu::Exists(dir3 + "/out")) << e.err;
+  }
   std::printf("[ measured ] first row - CR1: omega %.1e, A %.1e, x0 %.1e, xdot0 %.1e\n",
               std::abs(w - Cell(sp, 0, "omega")), std::abs(a - 0.5), dx, dv);
 }

@@ -35,8 +35,8 @@ class SystemRestart : public tu::AppTest {
                               STICKSLIP_SOURCE_DIR + "/studies/" + study + ".ini" +
                               (std::string(study) == "chain2" ? " --set kc=0.5" : "") +
                               " --no_plots --out " + out + " >/dev/null 2>&1";
-      // chain2 at kc = 0.5 (the study's is 0.2, whose branch ends at SL) ends
-      // at its GR with no orbit of its period beyond (docs/systems.md).
+      // chain2 at kc = 0.5 (the study's is 0.2) ends at its GR with no orbit
+      // of its period beyond (docs/systems.md).
       const int status = std::system(cmd.c_str());
       ASSERT_TRUE(tu::Exists(out + "/special_points.tsv")) << cmd << ": " << status;
     }

@@ -153,6 +153,16 @@ TEST_F(ChainStartListApp, ABranchOnItsOwnSectionRestartsOnIt) {
     EXPECT_NEAR(Cell(u, row, c), Cell(t, last, c), 1e-9) << c;
 }
 
+// A scan cut short by --max_time continues nothing and says so: the time
+// limit's exit code (1) and status, never a --point refused for a short list.
+TEST_F(ChainStartListApp, AScanCutShortByTheTimeLimitSaysSo) {
+  const std::string dir = NewDir();
+  const AppRun r = RunOut("ss_continue", dir, At({"--point", "2", "--max_time", "0.001"}));
+  EXPECT_EQ(r.outcome.code, 1) << r.err;
+  EXPECT_TRUE(tu::Contains(r.out, "the scan was cut short")) << r.out;
+  EXPECT_FALSE(tu::Contains(r.err, "--point")) << r.err;
+}
+
 // Refused: exit 2, one line naming the option and value, no --out folder.
 TEST_F(ChainStartListApp, APointBeyondTheListAndClockTurnsAreRefused) {
   struct Bad {
