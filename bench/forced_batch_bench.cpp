@@ -38,13 +38,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "forced_batch_bench: DRAWS >= 1, OMEGAS >= 2, REPEATS >= 1\n");
     return 2;
   }
-  ss::ForcedParams p;
+  ss::ForcedBeltParams p;
   p.base.beta = 0.05, p.base.v = 0.25, p.force = 0.3, p.omega = 0.6;
   std::mt19937_64 rng(1);
   std::normal_distribution<double> mu_s(0.4, 0.02);
   std::vector<double> draw(draws);
   for (double& d : draw) d = mu_s(rng);
-  ss::SystemColumn w{ss::ForcedModel::kOmegaIndex, {}};
+  ss::SystemColumn w{ss::ForcedBelt::kOmegaIndex, {}};
   ss::SystemColumn mu{static_cast<int>(ss::Parameter::kMuS), {}};
   for (int i = 0; i < omegas; ++i)
     for (double d : draw) w.values.push_back(0.5 + 1.0 * i / (omegas - 1)), mu.values.push_back(d);
@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < repeats; ++r) {
       const double c0 = CpuSeconds();
       const auto t0 = std::chrono::steady_clock::now();
-      const ss::SystemBatch b = ss::StroboscopicOrbits(ss::ForcedModel(p), {w, mu}, o);
+      const ss::SystemBatch b = ss::StroboscopicOrbits(ss::ForcedBelt(p), {w, mu}, o);
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double cpu = CpuSeconds() - c0;

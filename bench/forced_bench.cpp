@@ -35,16 +35,16 @@ double MedianMicros(const std::function<void()>& f, int reps) {
   return t[reps / 2];
 }
 
-ForcedParams Belt() {  // the exit-map test's coulomb belt, one stick per period
-  ForcedParams p;
+ForcedBeltParams Belt() {  // the exit-map test's coulomb belt, one stick per period
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
   p.force = 0.3, p.omega = 0.8;
   return p;
 }
 
-ForcedParams DenHartog(double w) {
-  ForcedParams p;
+ForcedBeltParams DenHartog(double w) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = p.base.mu_k = 0.3, p.base.beta = 0, p.base.v = 0;
   p.force = 1, p.omega = w;
@@ -52,9 +52,9 @@ ForcedParams DenHartog(double w) {
 }
 
 void StickSlipOrbit(double rtol) {
-  const ForcedParams p = Belt();
-  const ForcedModel m(p);
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  const ForcedBeltParams p = Belt();
+  const ForcedBelt m(p);
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   o.flow.rtol = o.flow.atol = rtol;
   const PeriodicOrbit exact = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
   const double t_exit = exact.start.t, x_exit = exact.start.z[0];
@@ -90,8 +90,8 @@ void StickSlipOrbit(double rtol) {
 }
 
 void NonStopOrbit(double rtol) {
-  const ForcedModel m(DenHartog(1.3));
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  const ForcedBelt m(DenHartog(1.3));
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   o.flow.rtol = o.flow.atol = rtol;
   const PeriodicOrbit exact = ShootStroboscopic(m, -1.4, 0.01, 1, o);
   const double x0 = exact.start.z[0], xdot0 = exact.start.z[1];
@@ -113,7 +113,7 @@ void NonStopOrbit(double rtol) {
 }
 
 void DenHartogRun() {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-12;
   o.max_amplitude = 10;
   o.palc.ds_max = 0.05;
@@ -138,7 +138,7 @@ void DenHartogRun() {
 // The resonance curve as bench/peers/scipy_forced.py sweeps it: 500 values of
 // Omega in [1.2, 2.5], each orbit by stroboscopic Newton from the previous one.
 void ResonanceSweep() {
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-12;
   double worst = 0;
   const double t = MedianMicros(
@@ -147,7 +147,7 @@ void ResonanceSweep() {
         worst = 0;
         for (int i = 0; i < 500; ++i) {
           const double w = 1.2 + 1.3 * i / 499;
-          const PeriodicOrbit orbit = ShootStroboscopic(ForcedModel(DenHartog(w)), x, xd, 1, o);
+          const PeriodicOrbit orbit = ShootStroboscopic(ForcedBelt(DenHartog(w)), x, xd, 1, o);
           x = orbit.start.z[0], xd = orbit.start.z[1];
           const double V = 1 / (1 - w * w), U = std::sin(M_PI / w) / (w * (1 + std::cos(M_PI / w)));
           worst = std::max(worst,

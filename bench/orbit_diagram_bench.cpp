@@ -21,7 +21,7 @@ double Seconds(clockid_t id) {
   return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-void Measure(const char* name, const ForcedParams& p, double from, double to, int n, bool both,
+void Measure(const char* name, const ForcedBeltParams& p, double from, double to, int n, bool both,
              int chunks = 1) {
   OrbitDiagramOptions o;
   o.from = from, o.to = to, o.n = n;
@@ -41,11 +41,11 @@ void Measure(const char* name, const ForcedParams& p, double from, double to, in
 
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 1000;
-  ForcedParams belt;
+  ForcedBeltParams belt;
   belt.base.law = LawKind::kCoulomb;
   belt.base.mu_s = 0.4, belt.base.mu_k = 0.25, belt.base.beta = 0.05, belt.base.v = 0.2;
   belt.force = 0.3;
-  ForcedParams chaotic = belt;
+  ForcedBeltParams chaotic = belt;
   chaotic.base.law = LawKind::kStribeck;
   chaotic.base.beta = 0.01, chaotic.base.v = 0.1, chaotic.force = 0.5;
   std::printf("orbit diagram, %d values x (500 + 200) forcing periods, rtol = atol = 1e-12\n", n);

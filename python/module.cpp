@@ -47,7 +47,7 @@ double NumberOf(const std::string& name, const py::handle& x) {
 // v = 0 (a fixed floor) and Coulomb's mu_k = mu_s; the belt's computations
 // check those two themselves.
 void ValidateAnyModel(const ss::Params& p) {
-  ss::ForcedParams fp;
+  ss::ForcedBeltParams fp;
   fp.base = p;
   const std::string err = ss::ValidationError(fp);
   if (!err.empty()) throw ss::InvalidArgument(err);

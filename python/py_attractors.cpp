@@ -242,7 +242,7 @@ void BindAttractors(py::module_& m) {
           py::arg("y_range") = none, py::arg("transient") = none, py::arg("keep") = none,
           py::arg("max_period") = none, py::arg("threads") = 2, py::arg("rtol") = none,
           py::arg("atol") = none, doc);
-  // After the forced oscillator's orbit_diagram(ForcedParams, axis, ...).
+  // After the forced oscillator's orbit_diagram(ForcedBeltParams, axis, ...).
   m.def("orbit_diagram", &SystemDiagram, py::arg("system"), py::arg("parameter"), py::arg("from_"),
         py::arg("to"), py::arg("n") = 200, py::arg("transient") = none, py::arg("keep") = none,
         py::arg("up") = true, py::arg("down") = true, py::arg("chunks") = 1,

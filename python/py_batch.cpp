@@ -30,14 +30,14 @@ ParameterColumn ColumnOf(const py::handle& key, const py::handle& values) {
 }
 
 // A forced column: a parameter of the law, force or omega.
-SystemColumn ForcedColumnOf(const ForcedModel& model, const py::handle& key,
+SystemColumn ForcedColumnOf(const ForcedBelt& model, const py::handle& key,
                             const py::handle& values) {
   const std::string name = KeyOf(key);
   const int j = model.ParameterIndex(name);
   const auto axes = ParameterAxes(model.params().base.law);
   const bool of_law = std::any_of(axes.begin(), axes.end(),
                                   [&](const ParameterAxis& a) { return a.name() == name; });
-  if (j < 0 || (j < ForcedModel::kForceIndex && !of_law))
+  if (j < 0 || (j < ForcedBelt::kForceIndex && !of_law))
     throw InvalidArgument("orbits: column '" + name + "' is not a parameter of the forced " +
                           Name(model.params().base.law) + " oscillator");
   return {j, Values(name, values)};
@@ -90,19 +90,19 @@ py::dict Orbits(const Params& base, const py::object& columns, int threads, bool
 }
 
 // The forced oscillator's stroboscopic orbits (orbits/system_batch.hpp).
-py::dict ForcedOrbits(const ForcedParams& base, const py::object& columns, int threads, double x0,
-                      double xdot0, int transient, int max_m, double recurrence,
+py::dict ForcedOrbits(const ForcedBeltParams& base, const py::object& columns, int threads,
+                      double x0, double xdot0, int transient, int max_m, double recurrence,
                       std::optional<double> rtol, std::optional<double> atol,
                       const py::object& integrator, const py::object& method) {
   if (!py::isinstance<py::dict>(columns))
     throw py::type_error("orbits: columns must be a dict {parameter name: 1-D values}, not " +
                          TypeName(columns));
-  const ForcedModel model(base);  // InvalidArgument for an invalid base
+  const ForcedBelt model(base);  // InvalidArgument for an invalid base
   std::vector<SystemColumn> cols;
   for (const auto& item : columns.cast<py::dict>())
     cols.push_back(ForcedColumnOf(model, item.first, item.second));
   SystemBatchOptions o;
-  o.shooting.flow = Solver(ForcedModel::FlowDefaults(), rtol, atol, integrator, method);
+  o.shooting.flow = Solver(ForcedBelt::FlowDefaults(), rtol, atol, integrator, method);
   o.start = Eigen::Vector3d(x0, xdot0, 0);
   o.transient = transient, o.max_m = max_m, o.recurrence = recurrence;
   o.threads = threads;
@@ -209,7 +209,7 @@ void BindBatch(py::module_& m) {
         py::arg("max_m") = 4, py::arg("recurrence") = 1e-3, py::arg("rtol") = none,
         py::arg("atol") = none, py::arg("integrator") = none, py::arg("method") = none,
         "The forced oscillator's periodic orbit at every row of columns, e.g. "
-        "orbits(ForcedParams(Params(), force=0.3), {'omega': w, 'mu_s': mu_s}); columns name a "
+        "orbits(ForcedBeltParams(Params(), force=0.3), {'omega': w, 'mu_s': mu_s}); columns name a "
         "parameter of the law, force or omega. Each row integrates `transient` forcing periods "
         "from (x0, xdot0) at phase 0, takes the least m <= max_m whose stroboscopic point "
         "recurs within recurrence (1 + |z|), and shoots the m-periodic orbit from it "

@@ -54,10 +54,10 @@ struct Points {
   }
 };
 
-py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xdot0,
+py::dict Stroboscopic(const ForcedBeltParams& p, double x0, std::optional<double> xdot0,
                       std::optional<int> transient, std::optional<int> keep, double max_amplitude,
                       std::optional<double> rtol, std::optional<double> atol) {
-  const ForcedModel model(p);  // throws InvalidArgument naming the value
+  const ForcedBelt model(p);  // throws InvalidArgument naming the value
   const LyapunovOptions o = IterateOptions(LyapunovOptions(), transient, keep, rtol, atol);
   Check(o.ValidationError());
   const double xd0 = xdot0.value_or(p.base.v);
@@ -86,7 +86,7 @@ py::dict Stroboscopic(const ForcedParams& p, double x0, std::optional<double> xd
   return d;
 }
 
-py::dict Diagram(ForcedParams base, ParameterAxis axis, double from, double to, int n,
+py::dict Diagram(ForcedBeltParams base, ParameterAxis axis, double from, double to, int n,
                  std::optional<int> transient, std::optional<int> keep, bool up, bool down,
                  int chunks, double max_amplitude, std::optional<double> rtol,
                  std::optional<double> atol) {

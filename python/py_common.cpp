@@ -146,7 +146,7 @@ Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state,
 FlowOptions FlowFor(const py::object& system, std::optional<double> rtol,
                     std::optional<double> atol) {
   const FlowOptions base =
-      py::isinstance<ForcedParams>(system) ? ForcedModel::FlowDefaults() : FlowOptions();
+      py::isinstance<ForcedBeltParams>(system) ? ForcedBelt::FlowDefaults() : FlowOptions();
   return Solver(base, rtol, atol, py::none(), py::none());
 }
 

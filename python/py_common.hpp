@@ -162,7 +162,7 @@ void BindAttractors(py::module_& m);    // py_attractors.cpp: basins(system), at
 void BindSystemChart(py::module_& m);  // py_system_chart.cpp: chart(system, ...) (after BindCharts)
 void BindModel(py::module_& m);        // py_model.cpp: System (a model file's system, issue 33)
 
-// The System a Python parameter object stands for (Params, ForcedParams,
+// The System a Python parameter object stands for (Params, ForcedBeltParams,
 // ChainParams, CouplingParams, System); TypeError for anything else.
 std::unique_ptr<System> SystemOf(const py::object& system);
 // The several-mass systems (py_systems.cpp): nullptr for another object.
@@ -185,7 +185,7 @@ FlowPoint SectionStart(const System& s, const PoincareSection& section,
 Eigen::VectorXd CheckedState(const System& s, const Eigen::VectorXd& state,
                              const std::string& name = "state");
 // The flow's options for a system: the forced oscillator's own tolerances
-// (rtol = atol = 1e-12, ForcedModel::FlowDefaults), else the flow's; rtol and
+// (rtol = atol = 1e-12, ForcedBelt::FlowDefaults), else the flow's; rtol and
 // atol over them.
 FlowOptions FlowFor(const py::object& system, std::optional<double> rtol,
                     std::optional<double> atol);

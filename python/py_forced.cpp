@@ -1,5 +1,5 @@
 // The forced oscillator's parameters in the Python module (issue 20, item 6):
-// x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedParams, the
+// x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t). ForcedBeltParams, the
 // Parameter enum (the one lens) and BranchStatus; it runs through the
 // functions of every system (simulate, periodic_orbit, periodic_orbits,
 // basins: py_system_runs.cpp, py_attractors.cpp; issue 31 item 8).
@@ -15,7 +15,7 @@
 namespace stickslip::python {
 
 FlowOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
-  FlowOptions o = ForcedModel::FlowDefaults();
+  FlowOptions o = ForcedBelt::FlowDefaults();
   if (rtol) o.rtol = *rtol;
   if (atol) o.atol = *atol;
   const std::string e = o.ValidationError();
@@ -25,7 +25,7 @@ FlowOptions FlowOf(std::optional<double> rtol, std::optional<double> atol) {
 
 namespace {
 
-// The enums and ForcedParams.
+// The enums and ForcedBeltParams.
 void BindForcedTypes(py::module_& m) {
   py::enum_<Parameter> axis(m, "Parameter",
                             "A parameter of the oscillators, the one lens: the belt's, then the "
@@ -42,20 +42,21 @@ void BindForcedTypes(py::module_& m) {
       .value("left_range", BranchStatus::kLeftRange)
       .value("contact_lost", BranchStatus::kContactLost)
       .value("sequence_ended", BranchStatus::kSequenceEnded);
-  py::class_<ForcedParams>(m, "ForcedParams",
-                           "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
-                           "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")
+  py::class_<ForcedBeltParams>(
+      m, "ForcedBeltParams",
+      "x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t): the belt "
+      "parameters (v >= 0; v = 0 is a fixed floor) plus force A and omega.")
       .def(py::init([](const Params& base, double force, double omega) {
-             ForcedParams p;
+             ForcedBeltParams p;
              p.base = base, p.force = force, p.omega = omega;
              return p;
            }),
            py::arg("params"), py::arg("force") = 0.0, py::arg("omega") = 1.0)
-      .def_readwrite("params", &ForcedParams::base)
-      .def_readwrite("force", &ForcedParams::force)
-      .def_readwrite("omega", &ForcedParams::omega)
+      .def_readwrite("params", &ForcedBeltParams::base)
+      .def_readwrite("force", &ForcedBeltParams::force)
+      .def_readwrite("omega", &ForcedBeltParams::omega)
       .def(
-          "validation_error", [](const ForcedParams& p) { return ValidationError(p); },
+          "validation_error", [](const ForcedBeltParams& p) { return ValidationError(p); },
           "'' if valid, else one line naming the value");
 }
 

@@ -23,12 +23,12 @@ namespace stickslip::python {
 std::unique_ptr<System> SystemOf(const py::object& system) {
   if (auto several = SeveralMassSystemOf(system)) return several;  // py_systems.cpp
   if (auto own = ModelSystemOf(system)) return own;                // py_model.cpp
-  if (py::isinstance<ForcedParams>(system))
-    return std::make_unique<ForcedModel>(system.cast<ForcedParams>());
+  if (py::isinstance<ForcedBeltParams>(system))
+    return std::make_unique<ForcedBelt>(system.cast<ForcedBeltParams>());
   if (py::isinstance<Params>(system)) return std::make_unique<Model>(system.cast<Params>());
   throw py::type_error("system: " + py::repr(system).cast<std::string>() + " is a " +
                        py::str(py::type::of(system).attr("__name__")).cast<std::string>() +
-                       ", not Params, ForcedParams, ChainParams, CouplingParams or System");
+                       ", not Params, ForcedBeltParams, ChainParams, CouplingParams or System");
 }
 
 std::string SectionOrDefault(const System& s, const std::optional<std::string>& section) {
@@ -132,11 +132,11 @@ PyOrbitBranch ConvertBranch(const OrbitBranch& b, const System& s, int j, const 
 }
 
 int ParameterOf(const py::object& system, const System& s, const std::string& name) {
-  const bool forced = py::isinstance<ForcedParams>(system);
+  const bool forced = py::isinstance<ForcedBeltParams>(system);
   if (forced || py::isinstance<Params>(system)) {  // the lens: one of the law's (or the forcing's)
     const ParameterAxis axis(name);                // unknown: InvalidArgument naming it
     const LawKind law =
-        forced ? system.cast<const ForcedParams&>().base.law : system.cast<const Params&>().law;
+        forced ? system.cast<const ForcedBeltParams&>().base.law : system.cast<const Params&>().law;
     if (const std::string e = AxisError(axis, law, forced); !e.empty()) throw InvalidArgument(e);
   }
   const int j = s.ParameterIndex(name);
@@ -148,8 +148,8 @@ OrbitBranchOptions BranchOptionsOf(const py::object& system, double width, doubl
                                    std::optional<double> max_step, std::optional<double> rtol,
                                    std::optional<double> atol) {
   // The forced oscillator's own tolerances (rtol = atol = 1e-12), as ss_continue --force's.
-  OrbitBranchOptions o = py::isinstance<ForcedParams>(system)
-                             ? OrbitBranchOptions(ForcedModel::FlowDefaults())
+  OrbitBranchOptions o = py::isinstance<ForcedBeltParams>(system)
+                             ? OrbitBranchOptions(ForcedBelt::FlowDefaults())
                              : OrbitBranchOptions();
   o.shooting.flow = Solver(o.shooting.flow, rtol, atol, py::none(), py::none());
   o.max_amplitude = max_amplitude;
@@ -250,7 +250,7 @@ void BindOrbitBranch(py::module_& m) {
         py::arg("state"), py::arg("to"), py::arg("section") = none, py::arg("m") = 1,
         py::arg("turns") = none, py::arg("max_amplitude") = 1e3, py::arg("max_step") = none,
         py::arg("rtol") = none, py::arg("atol") = none, py::arg("contact") = 0,
-        "The branch of periodic orbits of `system` (Params: the belt; ForcedParams: the forced "
+        "The branch of periodic orbits of `system` (Params: the belt; ForcedBeltParams: the forced "
         "oscillator; ChainParams, CouplingParams: the several-mass systems) through the one near "
         "`state` (x, x'[, theta]) on `section` "
         "('stroboscopic': m forcing periods, the default with a clock; 'stick-exit': the m-th "

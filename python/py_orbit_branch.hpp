@@ -37,11 +37,11 @@ struct PyOrbitBranch {
 };
 
 // The index of `name` in s, the run's system `system`; for Params and
-// ForcedParams a parameter of the law (or the forcing's) only.
+// ForcedBeltParams a parameter of the law (or the forcing's) only.
 int ParameterOf(const py::object& system, const System& s, const std::string& name);
 
 // The driver's options for a run over `width` of the parameter: the forced
-// oscillator's own tolerances for ForcedParams (rtol = atol = 1e-12);
+// oscillator's own tolerances for ForcedBeltParams (rtol = atol = 1e-12);
 // max_step a share of width (default: the driver's ds_max).
 OrbitBranchOptions BranchOptionsOf(const py::object& system, double width, double max_amplitude,
                                    std::optional<double> max_step, std::optional<double> rtol,

@@ -92,11 +92,11 @@ void BindRestart(py::module_& m) {
           "forced_params",
           [](const LabelledPoint& lp) {
             if (!lp.forced) throw InvalidArgument(lp.label + " is a point of a belt run");
-            ForcedParams fp;
+            ForcedBeltParams fp;
             fp.base = lp.params, fp.force = lp.force, fp.omega = lp.omega;
             return fp;
           },
-          "A forced run's point: its ForcedParams; with (*state, 0.0) (the stroboscopic point "
+          "A forced run's point: its ForcedBeltParams; with (*state, 0.0) (the stroboscopic point "
           "at theta = 0) and m it starts continue_branch there.")
       .def("options", &BranchOptions, py::arg("param") = none, py::arg("to") = none,
            "ContinuationOptions of a new branch in param (default: the run's) from the point "

@@ -26,8 +26,8 @@ py::object SystemAt(const py::object& system, const System& s, int j, double p) 
   std::unique_ptr<System> at = s.Clone();
   at->SetParameterValue(j, p);
   const auto copy = py::return_value_policy::copy;
-  if (py::isinstance<ForcedParams>(system))
-    return py::cast(dynamic_cast<const ForcedModel&>(*at).params(), copy);
+  if (py::isinstance<ForcedBeltParams>(system))
+    return py::cast(dynamic_cast<const ForcedBelt&>(*at).params(), copy);
   if (py::isinstance<Params>(system))
     return py::cast(dynamic_cast<const Model&>(*at).params(), copy);
   if (py::isinstance<chain::ChainParams>(system))

@@ -2,7 +2,7 @@
 // one core at many parameter points in one call. A system with a clock takes
 // the stroboscopic batch (orbits/system_batch.hpp), an autonomous one the
 // settled stick-slip batch (orbits/settled_batch.hpp). The belt's Params and
-// the forced oscillator's ForcedParams keep their own overloads (py_batch.cpp),
+// the forced oscillator's ForcedBeltParams keep their own overloads (py_batch.cpp),
 // bound first.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -141,7 +141,7 @@ py::dict SystemOrbits(const py::object& system, const py::object& columns,
                       const py::object& transient, const py::object& max_m,
                       const py::object& recurrence, std::optional<double> rtol,
                       std::optional<double> atol) {
-  // Params and ForcedParams have overloads of their own (py_batch.cpp), which
+  // Params and ForcedBeltParams have overloads of their own (py_batch.cpp), which
   // this one, of loose types, may catch first (a NumPy or int value where
   // they take a double): forwarded with the keywords they share, else a
   // TypeError that names theirs.
@@ -156,10 +156,10 @@ py::dict SystemOrbits(const py::object& system, const py::object& columns,
                               py::arg("rtol") = rtol, py::arg("atol") = atol)
         .cast<py::dict>();
   }
-  if (py::isinstance<ForcedParams>(system)) {
+  if (py::isinstance<ForcedBeltParams>(system)) {
     if (!state.is_none())
       throw py::type_error(
-          "orbits(ForcedParams, columns, ...) takes threads, x0, xdot0, transient (a whole "
+          "orbits(ForcedBeltParams, columns, ...) takes threads, x0, xdot0, transient (a whole "
           "number of periods), max_m, recurrence, rtol, atol, integrator and method");
     py::dict kw;
     kw["threads"] = Integer("threads", threads);
@@ -211,29 +211,30 @@ py::dict SystemOrbits(const py::object& system, const py::object& columns,
 
 void BindSystemBatch(py::module_& m) {
   const py::object none = py::none();
-  m.def("orbits", &SystemOrbits, py::arg("system"), py::arg("columns"),
-        py::arg("threads") = py::int_(0), py::arg("state") = none, py::arg("transient") = none,
-        py::arg("max_m") = none, py::arg("recurrence") = none, py::arg("rtol") = none,
-        py::arg("atol") = none,
-        "The periodic orbit of any system (ChainParams, CouplingParams, a model file's System, "
-        "...) at every row of columns, e.g. orbits(System.from_file('drill.ini'), {'T_m': t}): "
-        "row i is the system with each column's value i, every row started from `state` "
-        "(default: the row's steady sliding with its first component moved by 0.01, or the "
-        "origin so moved where there is none; a system with a clock: the origin). An autonomous "
-        "system settles for `transient` time units (default 3000) on "
-        "the stick-slip orbit whose stick exit recurs within max_m exits (default 32), refined "
-        "by Newton (C++ SettledOrbits); a system with a clock integrates `transient` clock "
-        "periods (default 20) and shoots the least m <= max_m (default 4) that recurs within "
-        "recurrence (C++ StroboscopicOrbits). Returns a dict of read-only arrays, one entry per "
-        "row: status (OrbitStatus codes: ok; no-return where the run has fewer than two stick "
-        "exits; aperiodic where none recurs; ...), found, stick_slip, stable, m (stick exits or "
-        "clock periods per period), contact (the contact whose stick exit is the section, -1 on "
-        "a stroboscopic one), sticks, period, then per state component its value at the orbit's "
-        "start and its extremes (NAME, NAME_min, NAME_max), and multiplier (the largest "
-        "|Floquet multiplier|). A row without an orbit holds zeros. recurrence applies to a "
-        "system with a clock only. Unknown names and invalid values raise ValueError before any "
-        "work; Ctrl-C raises KeyboardInterrupt. Params and ForcedParams have their own overloads "
-        "(a keyword of this one given to them is a TypeError).");
+  m.def(
+      "orbits", &SystemOrbits, py::arg("system"), py::arg("columns"),
+      py::arg("threads") = py::int_(0), py::arg("state") = none, py::arg("transient") = none,
+      py::arg("max_m") = none, py::arg("recurrence") = none, py::arg("rtol") = none,
+      py::arg("atol") = none,
+      "The periodic orbit of any system (ChainParams, CouplingParams, a model file's System, "
+      "...) at every row of columns, e.g. orbits(System.from_file('drill.ini'), {'T_m': t}): "
+      "row i is the system with each column's value i, every row started from `state` "
+      "(default: the row's steady sliding with its first component moved by 0.01, or the "
+      "origin so moved where there is none; a system with a clock: the origin). An autonomous "
+      "system settles for `transient` time units (default 3000) on "
+      "the stick-slip orbit whose stick exit recurs within max_m exits (default 32), refined "
+      "by Newton (C++ SettledOrbits); a system with a clock integrates `transient` clock "
+      "periods (default 20) and shoots the least m <= max_m (default 4) that recurs within "
+      "recurrence (C++ StroboscopicOrbits). Returns a dict of read-only arrays, one entry per "
+      "row: status (OrbitStatus codes: ok; no-return where the run has fewer than two stick "
+      "exits; aperiodic where none recurs; ...), found, stick_slip, stable, m (stick exits or "
+      "clock periods per period), contact (the contact whose stick exit is the section, -1 on "
+      "a stroboscopic one), sticks, period, then per state component its value at the orbit's "
+      "start and its extremes (NAME, NAME_min, NAME_max), and multiplier (the largest "
+      "|Floquet multiplier|). A row without an orbit holds zeros. recurrence applies to a "
+      "system with a clock only. Unknown names and invalid values raise ValueError before any "
+      "work; Ctrl-C raises KeyboardInterrupt. Params and ForcedBeltParams have their own overloads "
+      "(a keyword of this one given to them is a TypeError).");
 }
 
 }  // namespace stickslip::python

@@ -1,4 +1,4 @@
-// chart(system, ...) for ForcedParams, ChainParams and CouplingParams in the
+// chart(system, ...) for ForcedBeltParams, ChainParams and CouplingParams in the
 // Python module (chart/system_chart.hpp; as ss_chart --system): HB curves of steady
 // sliding and LP, PD and NS curves of periodic orbits in two parameters, as
 // bound types of read-only arrays; the tracing runs without the GIL, with
@@ -124,8 +124,8 @@ PySystemChart SystemChartOf(const py::object& system, const std::string& param, 
   o.seed_lines = seed_lines, o.max_step = max_step, o.max_m = max_m;
   o.hopf_curves = hopf, o.orbit_curves = orbits;
   // The forced oscillator's own tolerances (rtol = atol = 1e-12), as ss_chart's.
-  if (py::isinstance<ForcedParams>(system))
-    o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  if (py::isinstance<ForcedBeltParams>(system))
+    o.branch = OrbitBranchOptions(ForcedBelt::FlowDefaults());
   FlowOptions& flow = o.branch.shooting.flow;
   if (rtol) flow.rtol = *rtol;
   if (atol) flow.atol = *atol;
@@ -251,7 +251,7 @@ void BindSystemChart(py::module_& m) {
         py::arg("seed_lines") = 3, py::arg("max_step") = 0.01, py::arg("hopf") = true,
         py::arg("orbits") = true, py::arg("max_m") = 2, py::arg("rtol") = py::none(),
         py::arg("atol") = py::none(), py::arg("grid") = 0,
-        "chart(system, param, from_, to, param2, from2, to2, ...) for ForcedParams, "
+        "chart(system, param, from_, to, param2, from2, to2, ...) for ForcedBeltParams, "
         "ChainParams and CouplingParams (as ss_chart --system): HB curves of steady sliding "
         "and LP, PD, NS curves of periodic orbits (a forced system's on its stroboscopic "
         "section, with GR curves and rtol = atol = 1e-12 by default) in two of the system's "

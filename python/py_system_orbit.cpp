@@ -117,7 +117,7 @@ std::vector<PySystemOrbit> ForcedScan(const py::object& system, const System& s,
   o.max_m = max_m, o.max_sticks = max_sticks, o.grid = grid, o.exit_samples = exit_samples;
   if (!(radius >= 0) || !std::isfinite(radius))
     throw InvalidArgument("radius = " + Repr(radius) + " must be >= 0");
-  const auto* forced = dynamic_cast<const ForcedModel*>(&s);
+  const auto* forced = dynamic_cast<const ForcedBelt*>(&s);
   if (forced) o.half_width = forced->SearchBox();
   if (radius > 0)  // x within r, x' within r max(1, Omega)
     o.half_width = {radius, radius * (forced ? std::max(1.0, forced->omega()) : 1.0)};
@@ -266,7 +266,7 @@ void BindSystemOrbit(py::module_& m) {
         py::arg("amplitudes") = none, py::arg("transient") = none, py::arg("starts") = none,
         py::arg("max_returns") = none, py::arg("scale") = none,
         "Every periodic orbit of a system at one parameter point, a list of SystemOrbit. With a "
-        "forcing clock (ForcedParams, a model file's System with a clock; C++ FindOrbits): m = "
+        "forcing clock (ForcedBeltParams, a model file's System with a clock; C++ FindOrbits): m = "
         "1..max_m (4) forcing periods, Newton on the stroboscopic map from a grid x grid (5) box "
         "of starts (the forced oscillator's linear response box, or +- radius) and on the "
         "exit-phase map (max_sticks 4, exit_samples 48); by m. Autonomous (ChainParams, "

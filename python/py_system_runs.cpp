@@ -1,6 +1,6 @@
 // Running any system from Python (issue 32): simulate_system (the one flow,
 // flow.hpp) and steady_sliding (equilibria/steady_sliding.hpp; orbits:
-// py_system_orbit.cpp), for Params, ForcedParams, ChainParams and
+// py_system_orbit.cpp), for Params, ForcedBeltParams, ChainParams and
 // CouplingParams alike (SystemOf). Each computes without the GIL, with Ctrl-C.
 #include <pybind11/complex.h>
 #include <pybind11/eigen.h>
@@ -156,7 +156,7 @@ void BindSystemRuns(py::module_& m) {
       .def_readonly("stable", &S::stable);
   const py::object none = py::none();
   const char* doc =
-      "One trajectory of any system (Params, ForcedParams, ChainParams, CouplingParams) from "
+      "One trajectory of any system (Params, ForcedBeltParams, ChainParams, CouplingParams) from "
       "`state` (its state_names' order) at t = 0, one row every dt and at every switch, and with "
       "`section` its Poincare section (strobe: every `period`, by default the forcing's 2 pi / "
       "Omega; exit: every stick exit) in section_t, section_z; the one Simulate (C++). More "

@@ -35,7 +35,7 @@ struct ForcedRef {
   bool stribeck, cubic;
   LReal k1,
       k3;  // cubic (seed eq. 3.5): K1 = 3 (mu_s - mu_m) / (2 v_m), K3 = (mu_s - mu_m) / (2 v_m^3)
-  explicit ForcedRef(const ForcedParams& p)
+  explicit ForcedRef(const ForcedBeltParams& p)
       : beta(p.base.beta),
         v(p.base.v),
         mu_s(p.base.mu_s),
@@ -166,7 +166,7 @@ struct RefLyapunov {
 };
 
 // Transient, alignment and kept periods as in chaos/lyapunov.hpp.
-inline RefLyapunov RefLargestExponent(const ForcedParams& p, LReal x0, LReal y0, int transient,
+inline RefLyapunov RefLargestExponent(const ForcedBeltParams& p, LReal x0, LReal y0, int transient,
                                       int align, int keep, int batches, LReal tol = 1e-16L) {
   const ForcedRef m(p);
   const LReal T = 2 * std::acos(LReal(-1)) / m.w;

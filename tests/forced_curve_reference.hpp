@@ -65,7 +65,7 @@ class CurveReference {
   static constexpr Real kDt = 2e-2L;
   Real mu_step = 1e-4L;  // the multipliers' difference step (relative)
 
-  explicit CurveReference(const ForcedParams& p)
+  explicit CurveReference(const ForcedBeltParams& p)
       : law_(p.base), beta_(p.base.beta), v_(p.base.v), a_(p.force) {}
 
   // The difference step of Near's Newton is 1e-8; where the row lies within

@@ -16,10 +16,10 @@
 namespace stickslip::testing_util {
 
 inline void ExpectFixedPointOfPm(double x0, double xdot0, int m, int sticks) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.force = 0.1, p.omega = 1.5;
-  const ForcedModel model(p);
-  FlowOptions o = ForcedModel::FlowDefaults();
+  const ForcedBelt model(p);
+  FlowOptions o = ForcedBelt::FlowDefaults();
   o.rtol = o.atol = 1e-13;
   FlowPoint z = ForcedStart(model, 0, x0, xdot0);
   int counted = 0;

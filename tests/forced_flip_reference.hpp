@@ -15,7 +15,7 @@ using reference::LReal;
 
 // det(Phi + I) at the reference map's fixed point near (x, y), which it
 // updates; ok false if Newton fails or the orbit has no single stick.
-inline LReal RefFlip(const ForcedParams& p, LReal* x, LReal* y, bool* ok) {
+inline LReal RefFlip(const ForcedBeltParams& p, LReal* x, LReal* y, bool* ok) {
   const reference::ForcedRef m(p);
   for (int it = 0; it < 30; ++it) {
     const reference::RefPeriod r = reference::RefOnePeriod(m, *x, *y, false, 1e-17L);

@@ -17,8 +17,9 @@
 namespace stickslip::forced_reference {
 
 /// The library's parameters of a coulomb scene (the tests' shorthand).
-inline ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, double a, double w) {
-  ForcedParams p;
+inline ForcedBeltParams Coulomb(double mu_s, double mu_k, double beta, double v, double a,
+                                double w) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = mu_s, p.base.mu_k = mu_k, p.base.beta = beta, p.base.v = v;
   p.force = a, p.omega = w;
@@ -26,21 +27,21 @@ inline ForcedParams Coulomb(double mu_s, double mu_k, double beta, double v, dou
 }
 
 // A law at mu_s 0.4, mu_k 0.25 (the seed's pair) under A cos(w t).
-inline ForcedParams Belt(LawKind law, double beta, double v, double a, double w) {
-  ForcedParams p = Coulomb(0.4, 0.25, beta, v, a, w);
+inline ForcedBeltParams Belt(LawKind law, double beta, double v, double a, double w) {
+  ForcedBeltParams p = Coulomb(0.4, 0.25, beta, v, a, w);
   p.base.law = law;
   return p;
 }
 
 // The seed's cubic law (its mu_m 0.25, v_m 0.5) at beta 0.05 and belt speed v under
 // A cos(w t): studies/seed_forced.ini (v 0.25) and forced_ns_seed.ini (v 0.42).
-inline ForcedParams SeedBelt(double v, double a, double w) {
+inline ForcedBeltParams SeedBelt(double v, double a, double w) {
   return Belt(LawKind::kCubic, 0.05, v, a, w);
 }
 
 // studies/stribeck_forced.ini's law (v_s 0.2) at beta 0.05 and belt speed v.
-inline ForcedParams StribeckBelt(double v, double a, double w) {
-  ForcedParams p = Belt(LawKind::kStribeck, 0.05, v, a, w);
+inline ForcedBeltParams StribeckBelt(double v, double a, double w) {
+  ForcedBeltParams p = Belt(LawKind::kStribeck, 0.05, v, a, w);
   p.base.v_s = 0.2;
   return p;
 }

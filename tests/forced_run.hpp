@@ -9,8 +9,8 @@
 
 namespace stickslip::testing_util {
 
-inline FlowRun RunForced(const ForcedModel& m, const FlowPoint& start, double t_end,
-                         FlowRequest rq = {}, const FlowOptions& o = ForcedModel::FlowDefaults()) {
+inline FlowRun RunForced(const ForcedBelt& m, const FlowPoint& start, double t_end,
+                         FlowRequest rq = {}, const FlowOptions& o = ForcedBelt::FlowDefaults()) {
   rq.t_max = t_end;
   if (rq.extrema.empty()) rq.extrema = {0, 1};
   if (rq.max_steps == 0) rq.max_steps = o.max_steps;
@@ -18,9 +18,9 @@ inline FlowRun RunForced(const ForcedModel& m, const FlowPoint& start, double t_
 }
 
 /// The switches of such a run.
-inline std::vector<FlowSwitch> RunSwitches(const ForcedModel& m, const FlowPoint& start,
+inline std::vector<FlowSwitch> RunSwitches(const ForcedBelt& m, const FlowPoint& start,
                                            double t_end,
-                                           const FlowOptions& o = ForcedModel::FlowDefaults()) {
+                                           const FlowOptions& o = ForcedBelt::FlowDefaults()) {
   std::vector<FlowSwitch> switches;
   FlowRequest rq;
   rq.switches = &switches;

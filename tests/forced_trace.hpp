@@ -7,15 +7,15 @@
 
 namespace stickslip::testing_util {
 
-inline OrbitBranch Trace(ForcedParams p, ParameterAxis axis, double from, double to,
+inline OrbitBranch Trace(ForcedBeltParams p, ParameterAxis axis, double from, double to,
                          const OrbitBranchOptions& o) {
   axis.Set(p, from);
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   const FlowRun tr = RunForced(m, ForcedStart(m, 0, 0, p.base.v), 200 * m.period());
   return ContinueForced(p, axis, from, to, tr.end.z[0], tr.end.z[1], 1, o);
 }
 
-inline OrbitBranch TraceOmega(const ForcedParams& p, double from, double to,
+inline OrbitBranch TraceOmega(const ForcedBeltParams& p, double from, double to,
                               const OrbitBranchOptions& o) {
   return Trace(p, Parameter::kOmega, from, to, o);
 }

@@ -49,7 +49,7 @@ cells = [
         "fewer values): the section points against Omega, swept up and down."),
     new_code_cell(
         "st = stickslip.Params(law='stribeck', beta=0.01, v=0.1, mu_s=0.4, mu_k=0.25, v_s=0.5)\n"
-        "fp = stickslip.ForcedParams(st, force=0.5)\n"
+        "fp = stickslip.ForcedBeltParams(st, force=0.5)\n"
         "d = stickslip.orbit_diagram(fp, stickslip.Parameter.omega, 0.2, 1.2, n=100)\n"
         "stickslip.plot.orbit_diagram(d, axis='omega', y='x');"),
 ]

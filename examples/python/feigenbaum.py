@@ -13,7 +13,7 @@ import stickslip
 
 def scene(force, omega):
     p = stickslip.Params("stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25)
-    return stickslip.ForcedParams(p, force=force, omega=omega)
+    return stickslip.ForcedBeltParams(p, force=force, omega=omega)
 
 
 def cascade(force, hi=0.8, lo=0.5, depth=6):

@@ -234,7 +234,7 @@ class BasinOptions:
     def __init__(self) -> None: ...
     def validation_error(self) -> str: ...
 
-class ForcedParams:
+class ForcedBeltParams:
     """x'' + 2 beta x' + x = F(x' - v) + A cos(Omega t) (issue 20)."""
     params: Params
     force: float
@@ -499,7 +499,7 @@ class LabelledPoint:
     force: float
     omega: float
     m: int
-    def forced_params(self) -> ForcedParams: ...
+    def forced_params(self) -> ForcedBeltParams: ...
     def options(self, param: Optional[Parameter | str] = None,
                 to: Optional[float] = None) -> ContinuationOptions: ...
     def chart_options(self, param2: Parameter | str = "beta", from_: float = 0.05, to: float = 0.6,
@@ -527,12 +527,12 @@ def continue_doubled(point: SpecialOrbit, lo: Optional[float] = None,
                      hi: Optional[float] = None, max_amplitude: float = 1e3,
                      max_step: Optional[float] = None, rtol: Optional[float] = None,
                      atol: Optional[float] = None) -> OrbitBranch: ...
-def stroboscopic(params: ForcedParams, x0: float = 0.0, xdot0: Optional[float] = None,
+def stroboscopic(params: ForcedBeltParams, x0: float = 0.0, xdot0: Optional[float] = None,
                  transient: Optional[int] = None, keep: Optional[int] = None,
                  max_amplitude: float = 1e6, rtol: Optional[float] = None,
                  atol: Optional[float] = None) -> Dict[str, Any]: ...
 @overload
-def orbit_diagram(params: ForcedParams, axis: Parameter | str, from_: float, to: float, n: int = 200,
+def orbit_diagram(params: ForcedBeltParams, axis: Parameter | str, from_: float, to: float, n: int = 200,
                   transient: Optional[int] = None, keep: Optional[int] = None, up: bool = True,
                   down: bool = True, chunks: int = 1, max_amplitude: float = 50.0,
                   rtol: Optional[float] = None,
@@ -576,7 +576,7 @@ def orbits(params: Params, columns: Mapping[str, npt.ArrayLike], threads: int = 
            integrator: IntegratorLike = None,
            method: MethodLike = None) -> Dict[str, npt.NDArray[Any]]: ...
 @overload
-def orbits(params: ForcedParams, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
+def orbits(params: ForcedBeltParams, columns: Mapping[str, npt.ArrayLike], threads: int = 0,
            x0: float = 0.0, xdot0: float = 0.0, transient: int = 20, max_m: int = 4,
            recurrence: float = 1e-3, rtol: Optional[float] = None, atol: Optional[float] = None,
            integrator: IntegratorLike = None,
@@ -588,7 +588,7 @@ def orbits(system: Union[ChainParams, CouplingParams, System], columns: Mapping[
            recurrence: float = 1e-3, rtol: Optional[float] = None,
            atol: Optional[float] = None) -> Dict[str, npt.NDArray[Any]]: ...
 @overload
-def periodic_orbits(system: Union[ForcedParams, ChainParams, CouplingParams, System],
+def periodic_orbits(system: Union[ForcedBeltParams, ChainParams, CouplingParams, System],
                     max_m: Optional[int] = None, max_sticks: Optional[int] = None,
                     grid: Optional[int] = None, exit_samples: Optional[int] = None,
                     radius: Optional[float] = None, rtol: Optional[float] = None,
@@ -611,7 +611,7 @@ def basins(params: Params, nx: Optional[int] = None, ny: Optional[int] = None,
            options: Optional[BasinOptions] = None,
            progress: Optional[Callable[[int, int], Any]] = None) -> Basins: ...
 @overload
-def basins(system: Union[ForcedParams, ChainParams, CouplingParams, System], nx: int = 41,
+def basins(system: Union[ForcedBeltParams, ChainParams, CouplingParams, System], nx: int = 41,
            ny: int = 41,
            slice: Optional[Tuple[str, str]] = None, base: Optional[Any] = None,
            x_range: Optional[Tuple[float, float]] = None,
@@ -629,7 +629,7 @@ def chart(params: Params, param: Optional[Parameter | str] = None, from_: Option
           integrator: IntegratorLike = None, method: MethodLike = None,
           options: Optional[ChartOptions] = None) -> Chart: ...
 @overload
-def chart(system: Union[ForcedParams, ChainParams, CouplingParams], param: str, from_: float,
+def chart(system: Union[ForcedBeltParams, ChainParams, CouplingParams], param: str, from_: float,
           to: float,
           param2: str, from2: float, to2: float, seed_lines: int = 3, max_step: float = 0.01,
           hopf: bool = True, orbits: bool = True, max_m: int = 2, rtol: Optional[float] = None,
@@ -726,7 +726,7 @@ class System:
     def __getitem__(self, name: str) -> float: ...
     def __setitem__(self, name: str, value: float) -> None: ...
 
-SystemLike = Union[Params, ForcedParams, ChainParams, CouplingParams, System]
+SystemLike = Union[Params, ForcedBeltParams, ChainParams, CouplingParams, System]
 
 class SystemTrajectory:
     t: Array

@@ -467,12 +467,12 @@ def forced_orbits(columns):
     """A ready-made batch fn for forced sweeps: studies/seed_forced.ini's
     oscillator (cubic law, beta 0.05, v 0.25, A 0.3, Omega 0.6) with the chunk's
     columns (omega, force or a parameter of the law), by stickslip.orbits on a
-    ForcedParams in one call on one thread: the attractor after 20 forcing
+    ForcedBeltParams in one call on one thread: the attractor after 20 forcing
     periods from rest, its least period m <= 4 and the orbit shot on it.
     found 1 with m, sticks, amplitude (x_max - x_min)/2, period, stable; rows
     with no period up to 4 (aperiodic) give found 0 and zeros."""
-    from . import ForcedParams, Params, orbits
-    p = ForcedParams(Params(beta=0.05, v=0.25), force=0.3, omega=0.6)
+    from . import ForcedBeltParams, Params, orbits
+    p = ForcedBeltParams(Params(beta=0.05, v=0.25), force=0.3, omega=0.6)
     r = orbits(p, columns, threads=1)
     return {"found": r["found"].astype(float), "stick_slip": r["stick_slip"].astype(float),
             "m": r["m"].astype(float), "sticks": r["sticks"].astype(float),

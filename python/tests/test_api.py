@@ -119,11 +119,11 @@ class EveryResultArrayReadOnly(unittest.TestCase):
         slip = stickslip.Params()
         slip.v = 0.42  # a stable pure-slip orbit inside the stick-slip one
         sp = stickslip.Params("stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25)
-        fp = stickslip.ForcedParams(sp, force=0.3, omega=0.617)
+        fp = stickslip.ForcedBeltParams(sp, force=0.3, omega=0.617)
         w = "omega"
         s = stickslip.stroboscopic(fp, 0.0, 0.25, transient=100, keep=2)
         fo = stickslip.periodic_orbit(fp, [s["x"][0], s["xdot"][0], 0.0])
-        branch = stickslip.continue_branch(stickslip.ForcedParams(sp, force=0.3, omega=0.62), w,
+        branch = stickslip.continue_branch(stickslip.ForcedBeltParams(sp, force=0.3, omega=0.62), w,
                                            fo.start, 0.617, max_step=0.02)
         pd = [q for q in branch.special_points if q.label == "PD"][0]
         return {

@@ -14,7 +14,7 @@ import stickslip
 def stribeck(omega):
     """The forced Stribeck scene of studies/stribeck_forced.ini."""
     p = stickslip.Params("stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25)
-    return stickslip.ForcedParams(p, force=0.3, omega=omega)
+    return stickslip.ForcedBeltParams(p, force=0.3, omega=omega)
 
 
 def settled_orbit(omega, m=1):

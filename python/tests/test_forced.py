@@ -23,7 +23,7 @@ def den_hartog(mu, a, w):
 
 
 def den_hartog_params(w):
-    return stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
+    return stickslip.ForcedBeltParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
                                   force=1.0, omega=w)
 
 
@@ -160,10 +160,10 @@ class Forced(unittest.TestCase):
                          stickslip.PeriodicOrbits)
 
     def test_chart_of_the_tongue_ends_its_ns_curves_at_r1(self):
-        """chart(ForcedParams, ...) as studies/forced_ns_seed.ini's [chart]: the 1:1 tongue's
+        """chart(ForcedBeltParams, ...) as studies/forced_ns_seed.ini's [chart]: the 1:1 tongue's
         NS curves end where the pair turns real, each at an R1 refined on the curve next to
         its last point; the GR curve of the pure-slip orbits follows their gap to x' = v."""
-        p = stickslip.ForcedParams(stickslip.Params("cubic", beta=0.05, v=0.42, mu_s=0.4,
+        p = stickslip.ForcedBeltParams(stickslip.Params("cubic", beta=0.05, v=0.42, mu_s=0.4,
                                                     mu_m=0.25, v_m=0.5), force=0.05, omega=1.3)
         c = stickslip.chart(p, "omega", 0.6, 1.6, "force", 0.002, 0.1)
         self.assertEqual(c.status, "ok", c.message)
@@ -204,7 +204,7 @@ class Forced(unittest.TestCase):
 
 CHILD = r"""
 import sys, time, stickslip
-p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
+p = stickslip.ForcedBeltParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
                            force=1.0, omega=1.5)
 calls = {
     "simulate": lambda: stickslip.simulate(p, [0.0, 0.0, 0.0], t_end=1e7, dt=1.0,

@@ -41,12 +41,12 @@ CALLS = """{
                                              progress=lambda *a: None),
  "chart": lambda: stickslip.chart(stickslip.Params(), max_step=5e-5, integrator="cvode"),
  "chart_regions": lambda: stickslip.chart(stickslip.Params(), regions=(1000, 1000)),
- "orbit_diagram": lambda: stickslip.orbit_diagram(stickslip.ForcedParams(stickslip.Params(
+ "orbit_diagram": lambda: stickslip.orbit_diagram(stickslip.ForcedBeltParams(stickslip.Params(
      "stribeck", mu_s=0.4, mu_k=0.25, v_s=0.2, beta=0.05, v=0.25), force=0.3, omega=0.5),
      stickslip.Parameter.omega, 0.5, 1.0, n=5000),
  "smallest_disturbance": lambda: stickslip.smallest_disturbance(stickslip.Params(v=0.42),
      stickslip.periodic_orbit(stickslip.Params(v=0.42), a_guess=0.3), n=10**8),
- "basins_forced": lambda: stickslip.basins(stickslip.ForcedParams(stickslip.Params(),
+ "basins_forced": lambda: stickslip.basins(stickslip.ForcedBeltParams(stickslip.Params(),
      force=0.2, omega=0.8), nx=401, ny=401),
 }"""
 

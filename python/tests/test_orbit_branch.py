@@ -19,7 +19,7 @@ def den_hartog_x(mu, a, w):
 
 class OrbitBranchTest(unittest.TestCase):
     def test_den_hartog_rows_match_the_closed_form(self):
-        fp = stickslip.ForcedParams(
+        fp = stickslip.ForcedBeltParams(
             stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0, v=0.0),
             force=1.0, omega=0.75)
         b = stickslip.continue_orbits(fp, "omega", [1 / (1 - 0.75 ** 2), 0.01, 0.0], 2.5,

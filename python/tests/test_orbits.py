@@ -107,11 +107,11 @@ FORCED_KEYS = ["status", "found", "stick_slip", "stable", "m", "sticks", "period
 
 def seed_forced(omega=0.6):
     """studies/seed_forced.ini's oscillator."""
-    return stickslip.ForcedParams(stickslip.Params(beta=0.05, v=0.25), force=0.3, omega=omega)
+    return stickslip.ForcedBeltParams(stickslip.Params(beta=0.05, v=0.25), force=0.3, omega=omega)
 
 
 class ForcedOrbits(unittest.TestCase):
-    """stickslip.orbits on a ForcedParams: the stroboscopic orbits of
+    """stickslip.orbits on a ForcedBeltParams: the stroboscopic orbits of
     orbits/system_batch.hpp, each row against periodic_orbit (the single-orbit
     API) from the row's point, and Den Hartog's non-stop amplitude."""
 
@@ -143,7 +143,7 @@ class ForcedOrbits(unittest.TestCase):
 
     def test_non_stop_rows_match_den_hartog(self):
         w = np.array([1.3, 1.5, 2.0, 2.5])
-        p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
+        p = stickslip.ForcedBeltParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
                                                     v=0.0), force=1.0, omega=1.3)
         r = stickslip.orbits(p, {"omega": w}, x0=-0.5, transient=0, max_m=1, rtol=1e-14,
                              atol=1e-14)

@@ -234,7 +234,7 @@ class Figures(unittest.TestCase):
     def test_forced_branch_shows_itself_and_plots(self):
         import matplotlib.pyplot as plt
         # Den Hartog's floor: a resonance curve (test_forced checks its values).
-        p = stickslip.ForcedParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
+        p = stickslip.ForcedBeltParams(stickslip.Params("coulomb", mu_s=0.3, mu_k=0.3, beta=0.0,
                                                     v=0.0), force=1.0, omega=1.5)
         o = stickslip.periodic_orbit(p, [0.5, 0.0, 0.0])
         b = stickslip.continue_branch(p, stickslip.Parameter.omega, o.start, 2.5,
@@ -249,7 +249,7 @@ class Figures(unittest.TestCase):
 
     def test_attractor_basins_plot_marks_every_attractor(self):
         import matplotlib.pyplot as plt
-        fp = stickslip.ForcedParams(stickslip.Params(), force=0.2, omega=0.8)
+        fp = stickslip.ForcedBeltParams(stickslip.Params(), force=0.2, omega=0.8)
         d = stickslip.basins(fp, nx=8, ny=6)
         ax = d.plot()
         self.assertEqual(len(ax.texts), len(d.attractors))

@@ -135,8 +135,8 @@ class SystemOrbits(unittest.TestCase):
         # this one given to them is refused, not run on another path.
         with self.assertRaisesRegex(TypeError, "orbits\\(Params"):
             stickslip.orbits(stickslip.Params(), {"v": [0.2]}, transient=100)
-        fp = stickslip.ForcedParams(stickslip.Params(), force=0.3, omega=0.8)
-        with self.assertRaisesRegex(TypeError, "orbits\\(ForcedParams"):
+        fp = stickslip.ForcedBeltParams(stickslip.Params(), force=0.3, omega=0.8)
+        with self.assertRaisesRegex(TypeError, "orbits\\(ForcedBeltParams"):
             stickslip.orbits(fp, {"omega": [0.8]}, state=[0, 0, 0])
         with self.assertRaisesRegex(TypeError, "transient must be an integer, not 20.5"):
             stickslip.orbits(fp, {"omega": [0.8]}, transient=20.5)
@@ -199,7 +199,7 @@ class AutonomousScan(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "starts"):
             stickslip.periodic_orbits(chain, starts=[[0.0, 0.0]])
         with self.assertRaisesRegex(ValueError, "transient"):
-            stickslip.periodic_orbits(stickslip.ForcedParams(law, force=0.1, omega=1.0),
+            stickslip.periodic_orbits(stickslip.ForcedBeltParams(law, force=0.1, omega=1.0),
                                       transient=10.0)
 
     def test_an_empty_scan_says_why(self):

@@ -70,7 +70,7 @@ po::options_description AppOptions() {
 }
 
 struct Setup {
-  ss::ForcedParams p;                  // the forced oscillator's (without --system)
+  ss::ForcedBeltParams p;              // the forced oscillator's (without --system)
   std::unique_ptr<ss::System> system;  // what is swept: p's model, or --system's
   int param = 0;                       // its parameter index
   ss::OrbitDiagramOptions o;
@@ -97,15 +97,15 @@ void ConfigureForced(const cli::Arguments& args, Setup& s) {
   s.o.to = args.Number("to", range.to);
   // Every given value is checked, the swept one too (--omega -1 with --param
   // omega); a swept one not given is checked at --from and --to below only.
-  if (args.Given(s.o.axis.name())) cli::CheckForcedModel(args, s.p);
+  if (args.Given(s.o.axis.name())) cli::CheckForcedBelt(args, s.p);
   if (s.o.from == s.o.to)
     throw cli::UsageError(args.Source("to") + " = " + args.Text("to") + " equals --from");
   for (const char* end : {"from", "to"}) {
-    ss::ForcedParams at = s.p;
+    ss::ForcedBeltParams at = s.p;
     s.o.axis.Set(at, end[0] == 'f' ? s.o.from : s.o.to);
-    cli::CheckForcedModel(args, at, " at --" + std::string(end), s.o.axis.name());
+    cli::CheckForcedBelt(args, at, " at --" + std::string(end), s.o.axis.name());
   }
-  s.system = std::make_unique<ss::ForcedModel>(s.p);
+  s.system = std::make_unique<ss::ForcedBelt>(s.p);
   s.param = s.o.axis.index();
   s.labels = {s.o.axis.name(), ss::ParameterAxisLabel(s.o.axis), "forcing phase 0"};
 }

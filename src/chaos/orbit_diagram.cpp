@@ -104,16 +104,16 @@ void Sweep(const System& base, int j, const OrbitDiagramOptions& o,
 
 }  // namespace
 
-OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOptions& o) {
+OrbitDiagram ComputeOrbitDiagram(const ForcedBeltParams& base, const OrbitDiagramOptions& o) {
   if (const std::string ae = AxisError(o.axis, base.base.law, true); !ae.empty())
     throw InvalidArgument(ae);
   for (double v : {o.from, o.to}) {
-    ForcedParams p = base;
+    ForcedBeltParams p = base;
     o.axis.Set(p, v);
     const std::string pe = ValidationError(p);
     if (!pe.empty()) throw InvalidArgument(pe);
   }
-  return ComputeOrbitDiagram(ForcedModel(base), o.axis.index(), o);
+  return ComputeOrbitDiagram(ForcedBelt(base), o.axis.index(), o);
 }
 
 OrbitDiagram ComputeOrbitDiagram(const System& base, int j, const OrbitDiagramOptions& o) {

@@ -36,12 +36,12 @@ po::options_description SectionBasinOptionGroup() {
 namespace {
 
 // The forced oscillator of --force and --omega, checked.
-ForcedParams ForcedFromArguments(const Arguments& args) {
+ForcedBeltParams ForcedFromArguments(const Arguments& args) {
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
   if (args.Given("slice")) throw UsageError(args.Source("slice") + " needs --system");
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base = UncheckedModelFromArguments(args);
   p.force = args.Number("force", 0);
   p.omega = args.Number("omega", 1);
@@ -135,7 +135,7 @@ struct Described {
 };
 
 Described Describe(const Arguments& args, const std::string& prog, const std::string& command,
-                   const System& s, const ForcedParams* fp, const AttractorOptions& o,
+                   const System& s, const ForcedBeltParams* fp, const AttractorOptions& o,
                    const FlowOptions& flow) {
   Described d;
   const std::string u = s.StateName(o.slice.components[0]), w = s.StateName(o.slice.components[1]);
@@ -184,12 +184,12 @@ void CheckBoxCorners(const Arguments& args) {
 
 int RunSectionBasin(const Arguments& args, const std::string& prog, const std::string& command) {
   const bool forced = !SystemRequested(args);
-  std::unique_ptr<ForcedParams> fp;
+  std::unique_ptr<ForcedBeltParams> fp;
   std::unique_ptr<System> s;
   if (forced) {
     RefuseSystem(args, prog);  // --set, --blocks or a [system] section without --system
-    fp = std::make_unique<ForcedParams>(ForcedFromArguments(args));
-    s = std::make_unique<ForcedModel>(*fp);
+    fp = std::make_unique<ForcedBeltParams>(ForcedFromArguments(args));
+    s = std::make_unique<ForcedBelt>(*fp);
   } else {
     s = SystemFromArguments(args);
   }

@@ -30,9 +30,9 @@ void Refuse(const Arguments& args) {
 }
 
 // The axes (default omega, force) and the rectangle (the chart's own ranges
-// of omega and force, the others the forced oscillator's) as ForcedModel's
+// of omega and force, the others the forced oscillator's) as ForcedBelt's
 // parameter indices (Parameter's order); p takes the rectangle's corner.
-SystemPlane PlaneOf(const Arguments& args, ForcedParams& p) {
+SystemPlane PlaneOf(const Arguments& args, ForcedBeltParams& p) {
   const ParameterAxis a1 = AxisFromArguments(args, "param", "omega", p.base.law, true);
   const ParameterAxis a2 = AxisFromArguments(args, "param2", "force", p.base.law, true);
   if (a1 == a2) throw UsageError(args.Source("param2") + " = " + a2.name() + " equals --param");
@@ -60,9 +60,9 @@ SystemPlane PlaneOf(const Arguments& args, ForcedParams& p) {
   for (const auto& [a, x, key] :
        {std::tuple{a1, pl.from1, "from"}, std::tuple{a1, pl.to1, "to"},
         std::tuple{a2, pl.from2, "from2"}, std::tuple{a2, pl.to2, "to2"}}) {
-    ForcedParams at = p;
+    ForcedBeltParams at = p;
     a.Set(at, x);
-    CheckForcedModel(args, at, " at " + args.Source(key), a.name());
+    CheckForcedBelt(args, at, " at " + args.Source(key), a.name());
   }
   a1.Set(p, pl.from1), a2.Set(p, pl.from2);
   return pl;
@@ -70,7 +70,7 @@ SystemPlane PlaneOf(const Arguments& args, ForcedParams& p) {
 
 // "law=cubic beta=0.05 ... force=0.3 omega=[0.5, 2] ...": the law's
 // parameters and the forcing, the axes as their ranges.
-std::string Describe(const ForcedParams& p, const ForcedModel& m, const SystemPlane& pl) {
+std::string Describe(const ForcedBeltParams& p, const ForcedBelt& m, const SystemPlane& pl) {
   std::string d = "law=" + std::string(Name(p.base.law));
   auto range = [](double a, double b) {
     return "[" + FormatNumber(a) + ", " + FormatNumber(b) + "]";
@@ -98,25 +98,25 @@ bool ForcedChartRequested(const Arguments& args) {
 ChartJob ForcedChartJob(const Arguments& args, const std::string& prog,
                         const std::string& command) {
   Refuse(args);
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base = UncheckedModelFromArguments(args);
   p.force = args.Number("force", 0.3);
   p.omega = args.Number("omega", 1);
-  CheckForcedModel(args, p);  // every option as given, an axis's too (it is not used)
+  CheckForcedBelt(args, p);  // every option as given, an axis's too (it is not used)
   ChartJob job;
   SystemChartOptions& o = job.chart;
   o.plane = PlaneOf(args, p);
-  std::unique_ptr<ForcedModel> model;
+  std::unique_ptr<ForcedBelt> model;
   std::string e;
   try {
-    model = std::make_unique<ForcedModel>(p);
+    model = std::make_unique<ForcedBelt>(p);
     e = o.plane.ValidationError(*model);
   } catch (const InvalidArgument& x) {
     e = x.what();
   }
   if (!e.empty()) throw UsageError("invalid forced chart rectangle (--from .. --to2): " + e);
   // The forced flow's (rtol = atol = 1e-12, its switch cap) with the apps' step cap.
-  FlowOptions defaults = ForcedModel::FlowDefaults();
+  FlowOptions defaults = ForcedBelt::FlowDefaults();
   defaults.max_steps = FlowOptions().max_steps;
   const FlowOptions run = FlowOptionsFromArguments(args, defaults);
   if (run.integrator != Integrator::kTaylor)  // its GR curves' runs need Taylor's (limits.md)

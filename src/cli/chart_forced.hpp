@@ -1,4 +1,4 @@
-// ss_chart for the harmonically forced oscillator (ForcedModel): the chart in
+// ss_chart for the harmonically forced oscillator (ForcedBelt): the chart in
 // two of its parameters (--param, --param2; default the (omega, force) map)
 // with the LP, PD, NS and GR curves, their codimension-two points and a 40 x 40
 // response grid, run as every system's chart (chart_system.hpp).

@@ -52,7 +52,7 @@ std::string OrbitsScript(const std::string& title, FigureFormat f, int stable, i
 
 int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::string& command) {
   const ForcedInputs in = ForcedInputsFromArguments(args);
-  const ForcedModel model(in.p);
+  const ForcedBelt model(in.p);
   OrbitSearchOptions so;
   so.orbit = ShootingOptions(in.flow);
   so.half_width = model.SearchBox();

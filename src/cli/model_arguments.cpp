@@ -176,8 +176,8 @@ ParameterAxis AxisFromArguments(const Arguments& args, const char* key, const st
                    " parameters under the " + Name(law) + " law are " + list);
 }
 
-void CheckForcedModel(const Arguments& args, const ForcedParams& p, const std::string& where,
-                      const std::string& swept) {
+void CheckForcedBelt(const Arguments& args, const ForcedBeltParams& p, const std::string& where,
+                     const std::string& swept) {
   const std::string err = ValidationError(p);
   if (err.empty()) return;
   const std::string name = err.substr(0, err.find(' '));

@@ -80,7 +80,7 @@ ClockStart ClockStartOf(const SystemSetup& s, const System& at) {
   ClockStart c;
   c.rest = RestOnContacts(at);
   c.opts = BranchOptions(s);
-  if (const auto* f = dynamic_cast<const ForcedModel*>(&at)) c.box = f->SearchBox();
+  if (const auto* f = dynamic_cast<const ForcedBelt*>(&at)) c.box = f->SearchBox();
   return c;
 }
 

@@ -53,14 +53,14 @@ void AddRangeMeta(TsvTable& table, const SimulateRange& r) {
 
 ForcedInputs ForcedInputsFromArguments(const Arguments& args) {
   ForcedInputs in;
-  ForcedParams& p = in.p;
+  ForcedBeltParams& p = in.p;
   for (const char* phys : {"mass", "damping", "stiffness", "belt_speed"})
     if (args.Given(phys))
       throw UsageError(args.Source(phys) + ": the forced oscillator takes dimensionless inputs");
   p.base = UncheckedModelFromArguments(args);
   p.force = args.Number("force", 0);
   p.omega = args.Number("omega", 1);
-  CheckForcedModel(args, p);
+  CheckForcedBelt(args, p);
   FlowOptions& flow = in.shown;
   flow = FlowOptionsFromArguments(args);
   if (flow.integrator != Integrator::kTaylor)

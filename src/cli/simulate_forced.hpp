@@ -25,8 +25,8 @@ void AddRangeMeta(TsvTable& table, const SimulateRange& r);
 // solver options (validated: UsageError naming the option). `shown` is what
 // the metadata prints.
 struct ForcedInputs {
-  ForcedParams p;
-  FlowOptions flow = ForcedModel::FlowDefaults();
+  ForcedBeltParams p;
+  FlowOptions flow = ForcedBelt::FlowDefaults();
   FlowOptions shown;
 };
 ForcedInputs ForcedInputsFromArguments(const Arguments& args);

@@ -77,7 +77,7 @@ SimulationSection SectionOf(const Arguments& args, const System& s) {
 Scene ForcedScene(const Arguments& args, const std::string& prog, const std::string& command) {
   const ForcedInputs in = ForcedInputsFromArguments(args);
   Scene sc;
-  sc.system = std::make_unique<ForcedModel>(in.p);
+  sc.system = std::make_unique<ForcedBelt>(in.p);
   sc.range = SimulateRangeFromArguments(args, in.p.base.v);
   sc.z0 = Eigen::Vector3d(sc.range.x0, sc.range.xdot0, 0);
   sc.o.flow = in.flow;

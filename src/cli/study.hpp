@@ -157,8 +157,8 @@ ParameterAxis AxisFromArguments(const Arguments& args, const char* key, const st
 // Throws UsageError "invalid forced model<where>: <error> (from <origin>)" if
 // p is no valid forced model, naming where the offending value came from
 // unless it is `swept` (a swept parameter's value is the range end in <where>).
-void CheckForcedModel(const Arguments& args, const ForcedParams& p, const std::string& where = "",
-                      const std::string& swept = "");
+void CheckForcedBelt(const Arguments& args, const ForcedBeltParams& p,
+                     const std::string& where = "", const std::string& swept = "");
 // The solver options from SolverOptions(), validated (throws UsageError);
 // what is not given keeps its value in `defaults`.
 FlowOptions FlowOptionsFromArguments(const Arguments& args,

@@ -68,12 +68,12 @@ std::unique_ptr<System> Build(SystemChoice choice, const Arguments& args, const 
     return std::make_unique<chain::Chain>(chain::Uniform(static_cast<int>(n), law, 0));
   }
   if (choice == SystemChoice::kForced) {  // its parameters: the law's, then A and Omega
-    ForcedParams p;
+    ForcedBeltParams p;
     p.base = law;
     p.force = args.Number("force", 0);
     p.omega = args.Number("omega", 1);
-    CheckForcedModel(args, p);
-    return std::make_unique<ForcedModel>(p);
+    CheckForcedBelt(args, p);
+    return std::make_unique<ForcedBelt>(p);
   }
   mode_coupling::CouplingParams c;
   c.law = law;

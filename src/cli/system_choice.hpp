@@ -23,7 +23,7 @@
 
 namespace stickslip::cli {
 
-// kForced: the forced oscillator (ForcedModel), chosen by --force A != 0 or
+// kForced: the forced oscillator (ForcedBelt), chosen by --force A != 0 or
 // --param force, or by a forced run's restart; no --system name.
 enum class SystemChoice { kBelt, kChain, kModeCoupling, kModel, kForced };
 

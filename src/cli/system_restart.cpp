@@ -28,7 +28,7 @@ SystemPoint ForcedPoint(const Arguments& args) {
   sp.label = lp.label, sp.pt = lp.pt, sp.type = lp.type, sp.branch = 1;
   sp.system = Name(SystemChoice::kForced);
   sp.law = lp.params;
-  const ForcedModel m(ForcedParams{lp.params, lp.force, lp.omega});
+  const ForcedBelt m(ForcedBeltParams{lp.params, lp.force, lp.omega});
   for (int j = 0; j < m.parameters(); ++j)
     sp.parameters.emplace_back(m.ParameterName(j), m.ParameterValue(j));
   sp.continued = lp.ParamName(), sp.p = lp.p, sp.flow = lp.flow;

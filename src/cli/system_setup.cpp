@@ -18,13 +18,13 @@ constexpr double kForcedMaxStep = 0.02, kForcedMaxAmplitude = 50;
 
 // The forced oscillator's defaults, and its --param checked against the
 // law's axes and the forcing's (AxisFromArguments' messages). Its flow:
-// rtol = atol = 1e-12 (ForcedModel::FlowDefaults: at the belt's 1e-11 the
+// rtol = atol = 1e-12 (ForcedBelt::FlowDefaults: at the belt's 1e-11 the
 // corrector, tol 1e-11, stalls on the flow's noise) and its switch cap, with
 // the apps' step cap.
 void ForcedDefaults(const Arguments& args, SystemSetup& s) {
   AxisFromArguments(args, "param", s.restart ? s.restart->continued : "omega", s.law.law, true);
   s.max_step = kForcedMaxStep, s.max_amplitude = kForcedMaxAmplitude;
-  s.flow = ForcedModel::FlowDefaults();
+  s.flow = ForcedBelt::FlowDefaults();
   s.flow.max_steps = FlowOptions().max_steps;
 }
 
@@ -56,7 +56,7 @@ void ConfigureRestart(const Arguments& args, SystemSetup& s) {
         sp.fold_side > 0 ? std::max(sp.run_from, sp.run_to) : std::min(sp.run_from, sp.run_to);
     if (sp.type == "LP" && (end - p) * sp.fold_side > 0) s.to = end;
   } else if (s.choice == SystemChoice::kForced) {  // the far end of its default range
-    const auto& f = static_cast<const ForcedModel&>(*s.system);
+    const auto& f = static_cast<const ForcedBelt&>(*s.system);
     const ParameterRange r =
         DefaultRange(f.params(), ParameterAxis(s.system->ParameterName(s.param)));
     s.to = std::abs(r.to - p) >= std::abs(r.from - p) ? r.to : r.from;
@@ -124,7 +124,7 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
                      " (its parameters: " + ParameterList(*s.system) + ")");
   s.from = s.system->ParameterValue(s.param);
   if (forced && !s.restart) {  // the forced oscillator's default range (params.hpp)
-    const auto& f = static_cast<const ForcedModel&>(*s.system);
+    const auto& f = static_cast<const ForcedBelt&>(*s.system);
     const ParameterRange range = DefaultRange(f.params(), ParameterAxis(param));
     s.from = range.from, s.to = range.to;
   }

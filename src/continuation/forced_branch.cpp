@@ -25,10 +25,10 @@ std::string OptionsError(int m, const OrbitBranchOptions& o) {
 
 // ContinueForced's checks: the model at from, the range (to finite and !=
 // from), m and the options, then a start guess that is not finite.
-std::string StartError(const ForcedParams& base, ParameterAxis axis, double from, double to,
+std::string StartError(const ForcedBeltParams& base, ParameterAxis axis, double from, double to,
                        double x_guess, double xdot_guess, int m, const OrbitBranchOptions& o) {
   if (std::string e = AxisError(axis, base.base.law, true); !e.empty()) return e;
-  ForcedParams at_from = base;
+  ForcedBeltParams at_from = base;
   axis.Set(at_from, from);
   if (std::string e = ValidationError(at_from); !e.empty()) return e;
   if (!(to != from) || !std::isfinite(to)) return "to must be finite and != from";
@@ -45,21 +45,22 @@ FlowPoint Strobe(double x, double xdot) {
 
 }  // namespace
 
-OrbitBranch ContinueForced(const ForcedParams& base, ParameterAxis axis, double from, double to,
+OrbitBranch ContinueForced(const ForcedBeltParams& base, ParameterAxis axis, double from, double to,
                            double x_guess, double xdot_guess, int m,
                            const OrbitBranchOptions& options) {
   const std::string e = StartError(base, axis, from, to, x_guess, xdot_guess, m, options);
   if (!e.empty()) throw InvalidArgument(e);
-  ForcedParams at = base;
+  ForcedBeltParams at = base;
   axis.Set(at, from);
-  const ForcedModel model(at);
+  const ForcedBelt model(at);
   const FlowPoint guess = Strobe(x_guess, xdot_guess);
   return ContinueOrbits(model, axis.index(), guess,
                         PoincareSection::Stroboscopic(model, guess.z, m), to, options);
 }
 
-OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ParameterAxis axis, double x0, double xdot0,
-                            double lo, double hi, int m, const OrbitBranchOptions& options) {
+OrbitBranch ContinueDoubled(const ForcedBeltParams& at_pd, ParameterAxis axis, double x0,
+                            double xdot0, double lo, double hi, int m,
+                            const OrbitBranchOptions& options) {
   if (const std::string e = ValidationError(at_pd); !e.empty()) throw InvalidArgument(e);
   if (const std::string e = AxisError(axis, at_pd.base.law, true); !e.empty())
     throw InvalidArgument(e);
@@ -71,7 +72,7 @@ OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ParameterAxis axis, doubl
   if (const std::string e = OptionsError(m, options); !e.empty()) throw InvalidArgument(e);
   if (!(std::isfinite(x0) && std::isfinite(xdot0)))
     throw InvalidArgument("x0 = " + Num(x0) + ", xdot0 = " + Num(xdot0) + ": both must be finite");
-  const ForcedModel model(at_pd);
+  const ForcedBelt model(at_pd);
   const FlowPoint pd = Strobe(x0, xdot0);
   return ContinueDoubled(model, axis.index(), pd, PoincareSection::Stroboscopic(model, pd.z, m), lo,
                          hi, options);

@@ -83,7 +83,7 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
   const std::string name = lp->ParamName();
   lp->p = t.Number(row[t.Column(name)], name);
   if (lp->forced) {  // the forcing or a belt parameter of the forced model
-    ForcedParams fp;
+    ForcedBeltParams fp;
     fp.base = lp->params, fp.force = lp->force, fp.omega = lp->omega;
     lp->param.Set(fp, lp->p);
     lp->params = fp.base, lp->force = fp.force, lp->omega = fp.omega;
@@ -108,7 +108,7 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, LabelledPoint*
                                        ", not a finite number > 0");
   if (lp->forced)
     lp->m = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, LabelledPoint::kMaxM));
-  std::string err = lp->forced ? ValidationError(ForcedParams{lp->params, lp->force, lp->omega})
+  std::string err = lp->forced ? ValidationError(ForcedBeltParams{lp->params, lp->force, lp->omega})
                                : ValidationError(lp->params);
   if (err.empty() && lp->forced && !(lp->m >= 1 && lp->m <= LabelledPoint::kMaxM))
     err = "m out of range";

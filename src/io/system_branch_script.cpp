@@ -100,7 +100,7 @@ void Arrays(std::ostream& os, const std::string& p, const std::string& x, bool o
 // Coulomb friction with mu_s = mu_k, no damping, no belt (v = 0), continued
 // in Omega; else "".
 std::string DenHartogCurve(const System& s, const std::string& p, const std::set<int>& branches) {
-  const auto* f = dynamic_cast<const ForcedModel*>(&s);
+  const auto* f = dynamic_cast<const ForcedBelt*>(&s);
   if (!f || p != "omega") return "";
   const Params& b = f->params().base;
   if (!(b.law == LawKind::kCoulomb && b.mu_s == b.mu_k && b.v == 0 && b.beta == 0)) return "";
@@ -126,7 +126,7 @@ std::string DenHartogCurve(const System& s, const std::string& p, const std::set
 // oscillator's as the belt's figures write theirs (FigureTitle: its law, then
 // its coefficients and forcing but the continued one, in symbols).
 std::string Heading(const System& s, const std::string& title, const std::string& p) {
-  const auto* f = dynamic_cast<const ForcedModel*>(&s);
+  const auto* f = dynamic_cast<const ForcedBelt*>(&s);
   if (!f) return EnhancedText(WrapWords(title, kSystemTitleWidth), false);
   const LawKind law = f->params().base.law;
   std::string d = "law=" + std::string(Name(law));

@@ -1,6 +1,6 @@
 // The forced oscillator's orbits on the one shooting (orbits/shooting.hpp):
 // its stroboscopic map and its exit-phase map are the time and stick-exit
-// sections of ForcedModel (x, x', theta).
+// sections of ForcedBelt (x, x', theta).
 #include "stickslip/orbits/forced_orbit.hpp"
 
 #include <cmath>
@@ -19,7 +19,7 @@ void Multipliers(const Mat2& M, std::complex<double> out[2]) {
   if (std::abs(out[1]) > std::abs(out[0])) std::swap(out[0], out[1]);
 }
 
-int PeriodMultiple(const ForcedModel& model, const PeriodicOrbit& o) {
+int PeriodMultiple(const ForcedBelt& model, const PeriodicOrbit& o) {
   return static_cast<int>(std::lround(o.period / model.period()));
 }
 
@@ -28,7 +28,7 @@ namespace {
 // One shooting per thread for the options last used (a forced orbit is shot
 // per scan point: the flow and its buffers are kept, the model assigned).
 // An exit-phase search sets its own return time, so that is not compared.
-Shooting& CachedShooting(const ForcedModel& model, const ShootingOptions& o) {
+Shooting& CachedShooting(const ForcedBelt& model, const ShootingOptions& o) {
   const std::string err = o.ValidationError();
   if (!err.empty()) throw InvalidArgument(err);
   thread_local std::unique_ptr<Shooting> cached;
@@ -47,7 +47,7 @@ Shooting& CachedShooting(const ForcedModel& model, const ShootingOptions& o) {
 
 }  // namespace
 
-PeriodicOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot0, int m,
+PeriodicOrbit ShootStroboscopic(const ForcedBelt& model, double x0, double xdot0, int m,
                                 const ShootingOptions& options) {
   if (m < 1) throw InvalidArgument("m = " + std::to_string(m) + " must be >= 1");
   Shooting& shooting = CachedShooting(model, options);
@@ -62,7 +62,7 @@ PeriodicOrbit ShootStroboscopic(const ForcedModel& model, double x0, double xdot
 // exit to the next is a circle map t_e -> t'; on the one shooting it is the
 // stick-exit section of (x, x', theta), closing after `sticks` exits and m
 // turns of theta.
-PeriodicOrbit ExitPhaseOrbit(const ForcedModel& model, double t_guess, Mode exit_mode, int sticks,
+PeriodicOrbit ExitPhaseOrbit(const ForcedBelt& model, double t_guess, Mode exit_mode, int sticks,
                              int m, const ShootingOptions& options) {
   if (m < 1 || sticks < 1) throw InvalidArgument("m and sticks must be >= 1");
   if (exit_mode == Mode::kStick) throw InvalidArgument("exit_mode must be a slip mode");

@@ -33,7 +33,7 @@ TEST_F(ForcedOrbitsApp, ListsEveryOrbitAndEachClosesOnTheReferenceMap) {
   ASSERT_EQ(t.rows.size(), 3u);  // m = 1 (one point) and m = 2 (two points)
   EXPECT_EQ(t.meta.at("status"), "complete");
   auto num = [&](size_t r, const std::string& c) { return std::stod(t.rows[r][t.Column(c)]); };
-  stickslip::ForcedParams p;
+  stickslip::ForcedBeltParams p;
   p.base.law = stickslip::LawKind::kStribeck;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = 0.25;
   p.force = 0.3, p.omega = 0.612;

@@ -55,7 +55,7 @@ TEST_F(ForcedSwitchApp, DoubledBranchStartsAtThePdPointAndIsTwoPeriodic) {
   // reference map, not after one.
   const size_t last = two.rows.size() - 1;
   EXPECT_NEAR(Num(two, last, "omega"), 0.612, 1e-12);
-  stickslip::ForcedParams p;
+  stickslip::ForcedBeltParams p;
   p.base.law = stickslip::LawKind::kStribeck;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2, p.base.beta = 0.05, p.base.v = 0.25;
   p.force = 0.3, p.omega = Num(two, last, "omega");

@@ -18,8 +18,8 @@
 namespace stickslip {
 namespace {
 
-ForcedParams Belt(double omega) {
-  ForcedParams p;
+ForcedBeltParams Belt(double omega) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
   p.force = 0.3, p.omega = omega;
@@ -27,7 +27,7 @@ ForcedParams Belt(double omega) {
 }
 
 TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
-  const ForcedModel m(Belt(0.45));
+  const ForcedBelt m(Belt(0.45));
   AttractorOptions o;
   o.slice.n = {11, 11};
   o.slice.lo = {0.3, -0.2}, o.slice.hi = {0.8, 0.2};
@@ -48,7 +48,7 @@ TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
     } else {
       EXPECT_EQ(a.sticks, 1);
       const PeriodicOrbit orbit =
-          ShootStroboscopic(m, a.z[0], a.z[1], 1, ShootingOptions(ForcedModel::FlowDefaults()));
+          ShootStroboscopic(m, a.z[0], a.z[1], 1, ShootingOptions(ForcedBelt::FlowDefaults()));
       ASSERT_TRUE(orbit.ok()) << orbit.message;
       EXPECT_NEAR(orbit.start.z[0], a.z[0], 1e-7);
       EXPECT_EQ(orbit.sticks, 1);
@@ -63,10 +63,10 @@ TEST(ForcedBasin, CoexistingPureSlipAndStickSlipOrbits) {
 }
 
 TEST(ForcedBasin, ChaoticStartsAreChaotic) {
-  ForcedParams p = Belt(0.35);
+  ForcedBeltParams p = Belt(0.35);
   p.base.law = LawKind::kStribeck;
   p.base.beta = 0.01, p.base.v = 0.1, p.force = 0.5;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   AttractorOptions o;
   o.slice.n = {2, 2};
   o.iterate.keep = 400;
@@ -83,10 +83,10 @@ TEST(ForcedBasin, ChaoticStartsAreChaotic) {
 // undecided at first depends on the trajectory's rounding, so a 3 x 3 grid
 // about (0.8, -0.35) is classified and every undecided one is followed.
 TEST(ForcedBasin, WeaklyChaoticStartRunsOnUntilDecided) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.beta = 0.05, p.base.v = 0.25;  // the seed's cubic law (mu_s 0.4, mu_m 0.25, v_m 0.5)
   p.force = 0.3, p.omega = 0.559;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   AttractorOptions o;
   o.slice.n = {3, 3};
   o.slice.lo = {0.7, -0.45}, o.slice.hi = {0.9, -0.25};
@@ -116,7 +116,7 @@ TEST(ForcedBasin, WeaklyChaoticStartRunsOnUntilDecided) {
 }
 
 TEST(ForcedBasin, InvalidOptionsThrow) {
-  const ForcedModel m(Belt(0.45));
+  const ForcedBelt m(Belt(0.45));
   AttractorOptions o;
   o.max_period = 100;  // > keep / 2
   EXPECT_THROW(ClassifyAttractors(m, o), InvalidArgument);
@@ -127,9 +127,9 @@ TEST(ForcedBasin, InvalidOptionsThrow) {
 // study at Omega = 0.617 (docs/studies.md), against stroboscopic shooting of
 // P^2 from it and the cycle's other point one forcing period on.
 TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
-  ForcedParams p = Belt(0.617);
+  ForcedBeltParams p = Belt(0.617);
   p.base.law = LawKind::kStribeck, p.base.v_s = 0.2, p.base.v = 0.25;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   AttractorOptions o;
   o.slice.n = {3, 3};
   const AttractorBasins b = ClassifyAttractors(m, o);
@@ -137,7 +137,7 @@ TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
   for (const Attractor& a : b.attractors) {
     if (a.kind != AttractorKind::kPeriodic || a.m != 2) continue;
     const PeriodicOrbit orbit =
-        ShootStroboscopic(m, a.z[0], a.z[1], 2, ShootingOptions(ForcedModel::FlowDefaults()));
+        ShootStroboscopic(m, a.z[0], a.z[1], 2, ShootingOptions(ForcedBelt::FlowDefaults()));
     ASSERT_TRUE(orbit.ok()) << orbit.message;
     EXPECT_NEAR(orbit.start.z[0], a.z[0], 1e-7);
     const FlowRun half = testing_util::RunForced(
@@ -155,7 +155,7 @@ TEST(ForcedBasin, RepresentativeIsTheCyclesSmallestX) {
 // chaotic; a chaotic attractor reports its measured sticks per period (2 in 3
 // periods here: 0.67, which `sticks` rounds to 1) in its label.
 TEST(ForcedBasin, ChaoticOnlyBeyondTheExponentsErrorWithMeanSticks) {
-  const ForcedModel m(Belt(0.45));
+  const ForcedBelt m(Belt(0.45));
   SectionRun r;
   for (int k = 0; k < 60; ++k) {  // no period up to 16: x = k^2 mod 61
     SectionPoint q;
@@ -180,9 +180,9 @@ TEST(ForcedBasin, ChaoticOnlyBeyondTheExponentsErrorWithMeanSticks) {
 // forced seed belt a weakly stable period-27 orbit (18 sticks) attracts starts
 // that max_period 16 leaves undecided; against stroboscopic shooting of P^27.
 TEST(ForcedBasin, PeriodLimitIsAnOption) {
-  ForcedParams p = Belt(0.558);
+  ForcedBeltParams p = Belt(0.558);
   p.base.law = LawKind::kCubic, p.base.mu_m = 0.25, p.base.v_m = 0.5, p.base.v = 0.25;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   AttractorOptions o;
   o.slice.n = {3, 3};
   o.max_period = 32;
@@ -192,7 +192,7 @@ TEST(ForcedBasin, PeriodLimitIsAnOption) {
     if (a.kind == AttractorKind::kPeriodic && a.m == 27) {
       EXPECT_EQ(a.sticks, 18);
       const PeriodicOrbit orbit =
-          ShootStroboscopic(m, a.z[0], a.z[1], 27, ShootingOptions(ForcedModel::FlowDefaults()));
+          ShootStroboscopic(m, a.z[0], a.z[1], 27, ShootingOptions(ForcedBelt::FlowDefaults()));
       ASSERT_TRUE(orbit.ok()) << orbit.message;
       EXPECT_NEAR(orbit.start.z[0], a.z[0], 1e-6);
       EXPECT_TRUE(orbit.stable);

@@ -142,7 +142,7 @@ TEST(ChainOrbitScan, BadOptionsThrowAndCancellingKeepsTheOrbitsSoFar) {
   throws([](AutonomousSearchOptions& o) { o.max_returns = 0; });
   throws([](AutonomousSearchOptions& o) { o.starts = {Eigen::VectorXd::Zero(3)}; });
   throws([](AutonomousSearchOptions& o) { o.starts = {Eigen::Vector4d(0, NAN, 0, 0)}; });
-  EXPECT_THROW(FindAutonomousOrbits(ForcedModel(ForcedParams()), AutonomousSearchOptions()),
+  EXPECT_THROW(FindAutonomousOrbits(ForcedBelt(ForcedBeltParams()), AutonomousSearchOptions()),
                InvalidArgument);
   AutonomousSearchOptions o;
   o.amplitudes = {0.3};

@@ -17,7 +17,7 @@
 namespace stickslip {
 namespace {
 
-ForcedParams Params(LawKind law, double beta, double v, double force, double omega) {
+ForcedBeltParams Params(LawKind law, double beta, double v, double force, double omega) {
   return forced_reference::Belt(law, beta, v, force, omega);
 }
 
@@ -30,7 +30,7 @@ LyapunovOptions Cvode(double rtol) {
 
 TEST(LyapunovCvode, ChaoticStribeckAgreesWithTaylor) {
   // The chaotic point of forced_stribeck_orbit_diagram.ini (lyapunov_test.cpp).
-  const ForcedModel m(Params(LawKind::kStribeck, 0.01, 0.1, 0.5, 0.35));
+  const ForcedBelt m(Params(LawKind::kStribeck, 0.01, 0.1, 0.5, 0.35));
   LyapunovOptions taylor;
   LyapunovOptions cvode = Cvode(1e-10);
   for (LyapunovOptions* o : {&taylor, &cvode}) o->transient = 200, o->keep = 1000;
@@ -47,10 +47,10 @@ TEST(LyapunovCvode, ChaoticStribeckAgreesWithTaylor) {
 }
 
 TEST(LyapunovCvode, StickSlipWindowMatchesExitMapMultiplier) {
-  const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  const ForcedBelt m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), Cvode(1e-10));
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   const PeriodicOrbit exit = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
   ASSERT_TRUE(exit.ok()) << exit.message;
   EXPECT_NEAR(r.lyapunov, std::log(std::abs(exit.multipliers[0].real())) / m.period(), 1e-3);
@@ -61,8 +61,8 @@ TEST(LyapunovCvode, StickSlipWindowMatchesExitMapMultiplier) {
 // rootfinding on the flow's extremum events): they agree with the Taylor
 // flow's at a tighter tolerance. Below CVODE's floor the flow refuses.
 TEST(LyapunovCvode, CvodeExtremesInsideStepsAgreeWithTaylor) {
-  const ForcedModel m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
-  FlowOptions o = ForcedModel::FlowDefaults();
+  const ForcedBelt m(Params(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  FlowOptions o = ForcedBelt::FlowDefaults();
   o.rtol = o.atol = 1e-13;
   const FlowPoint start = ForcedStart(m, 0, 0, 0.2);
   const FlowRun taylor = testing_util::RunForced(m, start, 3 * m.period(), {}, o);

@@ -19,7 +19,7 @@
 namespace stickslip {
 namespace {
 
-ForcedParams LyapunovParams(LawKind law, double beta, double v, double force, double omega) {
+ForcedBeltParams LyapunovParams(LawKind law, double beta, double v, double force, double omega) {
   return forced_reference::Belt(law, beta, v, force, omega);
 }
 
@@ -28,8 +28,8 @@ ForcedParams LyapunovParams(LawKind law, double beta, double v, double force, do
 constexpr double kAligned = 1e-12;
 
 // ln|mu_max| / T of the stroboscopic fixed point shot from the run's last point.
-double FloquetExponent(const ForcedModel& m, const SectionRun& r) {
-  ShootingOptions o(ForcedModel::FlowDefaults());
+double FloquetExponent(const ForcedBelt& m, const SectionRun& r) {
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   const PeriodicOrbit orbit = ShootStroboscopic(m, r.end.z[0], r.end.z[1], 1, o);
   EXPECT_TRUE(orbit.ok()) << orbit.message;
   EXPECT_TRUE(orbit.stable);
@@ -39,10 +39,10 @@ double FloquetExponent(const ForcedModel& m, const SectionRun& r) {
 TEST(Lyapunov, StickSlipWindowMatchesExitMapMultiplier) {
   // One stick per period (forced_bench's belt): one multiplier 0 (stick
   // collapses x'), the other the exit map's derivative.
-  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  const ForcedBelt m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   const PeriodicOrbit exit = ExitPhaseOrbit(m, 1.9, Mode::kSlipBelow, 1, 1, o);
   ASSERT_TRUE(exit.ok()) << exit.message;
   const double from_exit_map = std::log(std::abs(exit.multipliers[0].real())) / m.period();
@@ -62,7 +62,7 @@ TEST(Lyapunov, StickSlipWindowMatchesExitMapMultiplier) {
 // K (measured 9.4e-15); a complex pair turns the tangent, so the estimate
 // converges like 1/K (measured 4.7e-5 at K = 200).
 void ConvergenceOnNonStopOrbit(double omega, double at_defaults, bool every_k) {
-  const ForcedModel m(LyapunovParams(LawKind::kStribeck, 0.02, 0.2, 1.0, omega));
+  const ForcedBelt m(LyapunovParams(LawKind::kStribeck, 0.02, 0.2, 1.0, omega));
   double floquet = 0, last_err = 1;
   std::printf("omega %.3f: K, lambda, |lambda - floquet|\n", omega);
   for (int keep : {25, 50, 100, 200, 400, 800}) {
@@ -93,7 +93,7 @@ TEST(Lyapunov, NonStopComplexMultipliersMatchFloquet) {
 
 TEST(Lyapunov, LinearPureSlipIsMinusBeta) {
   // Coulomb pure slip is linear: both multipliers have modulus exp(-beta T).
-  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.4));
+  const ForcedBelt m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.4));
   const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), LyapunovOptions());
   ASSERT_EQ(r.status, LyapunovStatus::kDone) << r.message;
   std::printf("[ measured ] linear pure slip: |lambda + beta| %.2e\n", std::abs(r.lyapunov + 0.05));
@@ -104,8 +104,8 @@ TEST(Lyapunov, LinearPureSlipIsMinusBeta) {
 
 TEST(Lyapunov, ChaoticTaylorAgreesWithOdeintReference) {
   // Stribeck, beta 0.01, v 0.1, A 0.5, Omega 0.35: positive exponent, about 1.8 sticks per period.
-  const ForcedParams p = LyapunovParams(LawKind::kStribeck, 0.01, 0.1, 0.5, 0.35);
-  const ForcedModel m(p);
+  const ForcedBeltParams p = LyapunovParams(LawKind::kStribeck, 0.01, 0.1, 0.5, 0.35);
+  const ForcedBelt m(p);
   LyapunovOptions o;
   o.transient = 200, o.keep = 1000;
   const SectionRun r = IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.1), o);
@@ -121,7 +121,7 @@ TEST(Lyapunov, ChaoticTaylorAgreesWithOdeintReference) {
 }
 
 TEST(Lyapunov, InvalidOptionsThrow) {
-  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  const ForcedBelt m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   LyapunovOptions o;
   o.keep = 0;
   EXPECT_THROW(IterateStroboscopic(m, ForcedStart(m, 0, 0, 0.2), o), InvalidArgument);
@@ -130,7 +130,7 @@ TEST(Lyapunov, InvalidOptionsThrow) {
 // A run that passes max_amplitude ends on its last section point within it,
 // at phase 0 (SectionRun::end), not on the point beyond.
 TEST(Lyapunov, DivergedRunEndsOnItsLastPointWithinBounds) {
-  const ForcedModel m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
+  const ForcedBelt m(LyapunovParams(LawKind::kCoulomb, 0.05, 0.2, 0.3, 0.8));
   LyapunovOptions o;
   o.transient = 10, o.keep = 10, o.align = 5, o.batches = 2;
   const double bound = 0.1;  // the start lies within it, the attractor does not

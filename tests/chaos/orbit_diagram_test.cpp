@@ -14,8 +14,8 @@
 namespace stickslip {
 namespace {
 
-ForcedParams CoulombBelt() {
-  ForcedParams p;
+ForcedBeltParams CoulombBelt() {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
   p.force = 0.3;

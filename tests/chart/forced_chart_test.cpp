@@ -25,7 +25,7 @@ SystemChartOptions Options(ParameterAxis a1, double from1, double to1, Parameter
   SystemChartOptions o;
   o.plane.p1 = a1.index(), o.plane.p2 = a2.index();
   o.plane.from1 = from1, o.plane.to1 = to1, o.plane.from2 = from2, o.plane.to2 = to2;
-  FlowOptions flow = ForcedModel::FlowDefaults();
+  FlowOptions flow = ForcedBelt::FlowDefaults();
   flow.rtol = flow.atol = 1e-13;
   o.branch = OrbitBranchOptions(flow);
   o.branch.max_amplitude = 50;
@@ -34,16 +34,16 @@ SystemChartOptions Options(ParameterAxis a1, double from1, double to1, Parameter
 }
 
 // The stribeck_forced study's scene (studies/stribeck_forced.ini).
-ForcedParams StribeckChartParams(double a, double w) {
+ForcedBeltParams StribeckChartParams(double a, double w) {
   return forced_reference::StribeckBelt(0.25, a, w);
 }
 
 // The m = 1 branch in Omega from 0.8 down at force a, from a settled state.
 OrbitBranch OmegaRun(double a) {
-  const ForcedModel model(StribeckChartParams(a, 0.8));
+  const ForcedBelt model(StribeckChartParams(a, 0.8));
   const FlowRun tr =
       testing_util::RunForced(model, ForcedStart(model, 0, 0, 0.25), 200 * model.period());
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
   return ContinueForced(StribeckChartParams(a, 0.8), Parameter::kOmega, 0.8, 0.5, tr.end.z[0],
@@ -63,7 +63,7 @@ TEST(ForcedChart, PeriodDoublingCurvePointMatchesOneParameterRun) {
   const OrbitRow* pd = First(seed_run, SpecialKind::kPeriodDoubling);
   ASSERT_NE(pd, nullptr) << Name(seed_run.status);
   const SystemChartOptions o = Options(Parameter::kOmega, 0.5, 0.8, Parameter::kForce, 0.25, 0.35);
-  const ForcedModel model(StribeckChartParams(0.3, pd->p));
+  const ForcedBelt model(StribeckChartParams(0.3, pd->p));
   const SystemCurve c = TraceOrbitCurve(model, o, CurveKind::kPeriodDoubling, pd->start, pd->p, 0.3,
                                         seed_run.section, 1);
   ASSERT_GT(c.points.size(), 5u) << c.ends.Text();
@@ -93,9 +93,9 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
   const SystemChartOptions o = Options(Parameter::kOmega, 0.56, 1.0, Parameter::kForce, 0.1, 0.5);
   ResponseOptions ro;  // ss_chart's forced run's, at 1e-12
   ro.n1 = 8, ro.n2 = 5;
-  ro.attractor.iterate.flow = ForcedModel::FlowDefaults();
+  ro.attractor.iterate.flow = ForcedBelt::FlowDefaults();
   const FlowOptions& flow = ro.attractor.iterate.flow;
-  const ForcedModel base(StribeckChartParams(0.3, 0.8));
+  const ForcedBelt base(StribeckChartParams(0.3, 0.8));
   const ResponseGrid g = Responses(base, o.plane, ro);
   int periodic = 0, chaotic = 0;
   for (int j = 0; j < g.n2; ++j)
@@ -104,7 +104,7 @@ TEST(ForcedChart, ResponseCellsAgreeWithTheOrbitsFoundThere) {
       const bool check =
           (a.kind == AttractorKind::kPeriodic && a.m <= 4) || a.kind == AttractorKind::kChaotic;
       if (!check) continue;
-      const ForcedModel model(StribeckChartParams(g.x2[j], g.x1[i]));
+      const ForcedBelt model(StribeckChartParams(g.x2[j], g.x1[i]));
       OrbitSearchOptions so;
       so.orbit = ShootingOptions(flow);
       so.max_m = 4, so.max_sticks = 6;

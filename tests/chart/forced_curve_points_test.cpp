@@ -20,10 +20,10 @@ namespace stickslip {
 namespace {
 
 // studies/seed_forced.ini: the seed set forced by A cos(Omega t).
-ForcedParams Seed(double a, double w) { return forced_reference::SeedBelt(0.25, a, w); }
+ForcedBeltParams Seed(double a, double w) { return forced_reference::SeedBelt(0.25, a, w); }
 
 FlowOptions BeltFlow() {
-  FlowOptions f = ForcedModel::FlowDefaults();
+  FlowOptions f = ForcedBelt::FlowDefaults();
   f.rtol = f.atol = 1e-13;
   return f;
 }
@@ -34,14 +34,14 @@ SystemChartOptions PointsChartOptions() {
   o.plane.p1 = ParameterAxis(Parameter::kOmega).index();
   o.plane.p2 = ParameterAxis(Parameter::kForce).index();
   o.plane.from1 = 0.3, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
-  o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  o.branch = OrbitBranchOptions(ForcedBelt::FlowDefaults());
   o.branch.max_amplitude = 50;
   o.max_step = 0.01;
   return o;
 }
 
 // The point's orbit at phase 0 (carried there from its section phase).
-FlowPoint AtPhaseZero(const ForcedModel& model, const SystemCurvePoint& p) {
+FlowPoint AtPhaseZero(const ForcedBelt& model, const SystemCurvePoint& p) {
   const FlowPoint& z = p.orbit.start;
   return testing_util::RunForced(model, z, z.t + (2 * M_PI - z.z[2]) / model.omega(), {},
                                  BeltFlow())
@@ -51,7 +51,7 @@ FlowPoint AtPhaseZero(const ForcedModel& model, const SystemCurvePoint& p) {
 // The m = 1 branch in Omega from 1 down to 0.3 at force a, from the state
 // settled over 200 periods at Omega = 1 (as ss_continue starts).
 OrbitBranch SeedRun(double a) {
-  const ForcedModel model(Seed(a, 1));
+  const ForcedBelt model(Seed(a, 1));
   const FlowRun tr = testing_util::RunForced(model, ForcedStart(model, 0, 0, 0.25),
                                              200 * model.period(), {}, BeltFlow());
   OrbitBranchOptions o(BeltFlow());
@@ -73,7 +73,7 @@ bool Sliding(SpecialKind l) {
 double LocateAny(const SystemCurvePoint& p, int m, bool fold, bool (*want)(SpecialKind),
                  SpecialKind* found = nullptr, ParameterAxis axis = Parameter::kOmega) {
   const double at = axis == Parameter::kOmega ? p.p1 : p.p2;
-  const ForcedModel model(Seed(p.p2, p.p1));
+  const ForcedBelt model(Seed(p.p2, p.p1));
   const FlowPoint z = AtPhaseZero(model, p);
   FlowRequest rq;
   rq.variational = true;
@@ -139,7 +139,7 @@ int CheckCurves(SpecialKind label, CurveKind kind, std::initializer_list<double>
   for (const OrbitRow& s : run.special) {
     if (s.label != label) continue;
     ++seeds;
-    const ForcedModel model(Seed(0.5, s.p));
+    const ForcedBelt model(Seed(0.5, s.p));
     const SystemCurve c = TraceOrbitCurve(model, o, kind, s.start, s.p, 0.5, run.section, 1);
     const int m = c.section.turns;
     EXPECT_GT(c.points.size(), 5u) << c.ends.Text();

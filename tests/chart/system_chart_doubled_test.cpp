@@ -21,7 +21,7 @@
 namespace stickslip {
 namespace system_doubled {
 
-ForcedParams Stribeck(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
+ForcedBeltParams Stribeck(double a, double w) { return forced_reference::StribeckBelt(0.25, a, w); }
 
 // The Omegas of the PD points of the period-`target` orbits at force a.
 void CollectPds(double a, const OrbitBranch& b, int m, int target, OrbitBranchOptions o,
@@ -39,7 +39,7 @@ void CollectPds(double a, const OrbitBranch& b, int m, int target, OrbitBranchOp
 }
 
 std::vector<double> DoubledPds(double a, int m) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds = o.palc.ds_max = 0.01;
   const OrbitBranch b = testing_util::TraceOmega(Stribeck(a, 0.8), 0.8, 0.5, o);
   std::vector<double> pds;
@@ -49,11 +49,11 @@ std::vector<double> DoubledPds(double a, int m) {
 
 // The scene's curves, seeded on the lines force 0.325 and Omega 0.85.
 SystemChart CascadeChart(int max_m) {
-  const ForcedModel s(Stribeck(0.3, 0.6));
+  const ForcedBelt s(Stribeck(0.3, 0.6));
   SystemChartOptions o;
   o.plane.p1 = s.ParameterIndex("omega"), o.plane.p2 = s.ParameterIndex("force");
   o.plane.from1 = 0.5, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
-  o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  o.branch = OrbitBranchOptions(ForcedBelt::FlowDefaults());
   o.seed_lines = 1;
   o.max_m = max_m;
   return ChartSystem(s, o);
@@ -94,7 +94,7 @@ TEST(SystemChartDoubled, SecondDoublingCurveMatchesOneParameterRuns) {
 // fresh shooting of its stroboscopic map at the point (no continuation, no
 // test function).
 double NearestToMinusOne(const SystemCurvePoint& p, int m) {
-  const ForcedModel model(Stribeck(p.p2, p.p1));
+  const ForcedBelt model(Stribeck(p.p2, p.p1));
   ShootingOptions o;
   o.flow.rtol = o.flow.atol = 1e-13;
   Shooting shooting(model, o);

@@ -40,7 +40,7 @@ SystemChartOptions Options(const System& s, double from1, double to1, double fro
   SystemChartOptions o;
   o.plane.p1 = s.ParameterIndex("omega"), o.plane.p2 = s.ParameterIndex("force");
   o.plane.from1 = from1, o.plane.to1 = to1, o.plane.from2 = from2, o.plane.to2 = to2;
-  o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+  o.branch = OrbitBranchOptions(ForcedBelt::FlowDefaults());
   return o;
 }
 
@@ -49,7 +49,7 @@ TEST(SystemChartForcedParts, DenHartogGrazingCurveIsHisStopCondition) {
   for (const double w : {0.7, 1.5}) {  // one curve below and one above resonance
     // The non-stop orbit a little above the boundary, then the curve from it.
     const double a = DenHartogStopForce(mu, w) * 1.02;
-    const ForcedModel model(forced_reference::Coulomb(mu, mu, 0, 0, a, w));
+    const ForcedBelt model(forced_reference::Coulomb(mu, mu, 0, 0, a, w));
     SystemChartOptions o = Options(model, w < 1 ? 0.6 : 1.2, w < 1 ? 0.9 : 2.0, 0.05, 1.5);
     o.branch.shooting.flow.rtol = o.branch.shooting.flow.atol = 1e-13;
     o.max_step = 0.02;
@@ -84,11 +84,11 @@ struct RefCheck {
   LReal residual, trace, det;
   int sticks;
 };
-RefCheck Reference(const ForcedParams& base, const SystemCodim2& x) {
-  ForcedParams p = base;
+RefCheck Reference(const ForcedBeltParams& base, const SystemCodim2& x) {
+  ForcedBeltParams p = base;
   p.omega = x.p1, p.force = x.p2;
-  const ForcedModel model(p);
-  FlowOptions f = ForcedModel::FlowDefaults();
+  const ForcedBelt model(p);
+  FlowOptions f = ForcedBelt::FlowDefaults();
   f.rtol = f.atol = 1e-14;
   const FlowPoint& z = x.orbit.start;
   const FlowRun to0 =
@@ -104,8 +104,8 @@ RefCheck Reference(const ForcedParams& base, const SystemCodim2& x) {
 }
 
 TEST(SystemChartForcedParts, R1WhereTheNsCurvesEndHasBothMultipliersAtPlusOne) {
-  const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
-  const ForcedModel s(base);
+  const ForcedBeltParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
+  const ForcedBelt s(base);
   const SystemChart c = ChartSystem(s, Options(s, 0.6, 1.6, 0.002, 0.1));  // the study's [chart]
   int n = 0;
   for (const SystemCodim2& x : c.codim2) {
@@ -132,8 +132,8 @@ TEST(SystemChartForcedParts, R1WhereTheNsCurvesEndHasBothMultipliersAtPlusOne) {
 // defining systems that must give one point, which the reference map has as
 // a fixed point with tr Phi = -2 and det Phi = 1.
 TEST(SystemChartForcedParts, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMinusOne) {
-  const ForcedParams base = forced_reference::StribeckBelt(0.41, 0.05, 1);
-  const ForcedModel s(base);
+  const ForcedBeltParams base = forced_reference::StribeckBelt(0.41, 0.05, 1);
+  const ForcedBelt s(base);
   const SystemChart c = ChartSystem(s, Options(s, 0.6, 2.4, 0.002, 0.16));
   std::vector<const SystemCodim2*> pd, ns;
   for (const SystemCodim2& x : c.codim2)
@@ -170,16 +170,16 @@ TEST(SystemChartForcedParts, R2OnPdAndNsCurvesIsOnePointWithBothMultipliersAtMin
 // The Omega of the `label` point nearest p.p1 that a one-parameter run in
 // Omega at p's force, through p's orbit over p.p1 +- 2e-3 (either way first),
 // locates; NaN if none.
-double RunPointNear(const ForcedParams& base, const SystemCurvePoint& p,
+double RunPointNear(const ForcedBeltParams& base, const SystemCurvePoint& p,
                     const PoincareSection& section, SpecialKind label) {
-  ForcedParams q = base;
+  ForcedBeltParams q = base;
   q.force = p.p2;
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds = o.palc.ds_max = 2e-4;
   double best = NAN;
   for (const double side : {1.0, -1.0}) {
     q.omega = p.p1 + side * 2e-3;
-    const OrbitBranch b = ContinueOrbits(ForcedModel(q), ForcedModel::kOmegaIndex, p.orbit.start,
+    const OrbitBranch b = ContinueOrbits(ForcedBelt(q), ForcedBelt::kOmegaIndex, p.orbit.start,
                                          section, p.p1 - side * 2e-3, o);
     for (const OrbitRow& r : b.special)
       if (r.label == label && !(std::abs(best - p.p1) <= std::abs(r.p - p.p1))) best = r.p;
@@ -194,8 +194,8 @@ double RunPointNear(const ForcedParams& base, const SystemCurvePoint& p,
 // (the one branch driver, its own bisection of the switching sequence's
 // change) locates its GR at the curve's Omega.
 TEST(SystemChartForcedParts, GapGrazingCurveMatchesOneParameterRuns) {
-  const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
-  const ForcedModel s(base);
+  const ForcedBeltParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
+  const ForcedBelt s(base);
   const SystemChart c = ChartSystem(s, Options(s, 0.6, 1.6, 0.002, 0.1));
   const SystemCurve* gr = nullptr;
   for (const SystemCurve& cv : c.curves)
@@ -222,8 +222,8 @@ TEST(SystemChartForcedParts, GapGrazingCurveMatchesOneParameterRuns) {
 // through the point's orbit (its own start, branch and bisection of the NS
 // test, independent of the tracer) locates its NS at the point's Omega.
 TEST(SystemChartForcedParts, NsCurvePointsMatchOneParameterRunsInOmega) {
-  const ForcedParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
-  const ForcedModel s(base);
+  const ForcedBeltParams base = forced_reference::SeedBelt(0.42, 0.05, 1.3);
+  const ForcedBelt s(base);
   const SystemChart c = ChartSystem(s, Options(s, 0.6, 1.6, 0.002, 0.1));
   int checked = 0;
   for (const SystemCurve& cv : c.curves) {

@@ -22,19 +22,19 @@
 namespace stickslip {
 namespace {
 
-ForcedParams SeedForced() {
-  ForcedParams p;  // the seed's cubic law, beta 0.05, v 0.25
+ForcedBeltParams SeedForced() {
+  ForcedBeltParams p;  // the seed's cubic law, beta 0.05, v 0.25
   p.force = 0.3, p.omega = 0.6;
   return p;
 }
 
 const SystemChart& Chart() {
   static const SystemChart chart = [] {
-    const ForcedModel s(SeedForced());
+    const ForcedBelt s(SeedForced());
     SystemChartOptions o;
     o.plane.p1 = s.ParameterIndex("omega"), o.plane.p2 = s.ParameterIndex("force");
     o.plane.from1 = 0.3, o.plane.to1 = 1.2, o.plane.from2 = 0.05, o.plane.to2 = 0.6;
-    o.branch = OrbitBranchOptions(ForcedModel::FlowDefaults());
+    o.branch = OrbitBranchOptions(ForcedBelt::FlowDefaults());
     return ChartSystem(s, o);
   }();
   return chart;
@@ -110,15 +110,15 @@ TEST(SystemChartForced, PeriodDoublingCurveMeetsTheForcedBranchesPD) {
     if (cv.kind != CurveKind::kPeriodDoubling || cv.points.size() < 20) continue;
     for (const std::size_t i : {cv.points.size() / 4, cv.points.size() / 2}) {
       const SystemCurvePoint& p = cv.points[i];
-      ForcedParams q = SeedForced();
+      ForcedBeltParams q = SeedForced();
       q.omega = p.p1, q.force = p.p2 - 5e-4;
-      const ForcedModel s(q);
-      OrbitBranchOptions o(ForcedModel::FlowDefaults());
+      const ForcedBelt s(q);
+      OrbitBranchOptions o(ForcedBelt::FlowDefaults());
       o.palc.ds = o.palc.ds_max = 1e-4;
       // From the curve's orbit (its section phase and m), as a guess 5e-4
       // below in A (Newton pulls it on).
       const OrbitBranch b =
-          ContinueOrbits(s, ForcedModel::kForceIndex, p.orbit.start, cv.section, p.p2 + 5e-4, o);
+          ContinueOrbits(s, ForcedBelt::kForceIndex, p.orbit.start, cv.section, p.p2 + 5e-4, o);
       double found = -1;
       for (const OrbitRow& r : b.special)
         if (r.label == SpecialKind::kPeriodDoubling) found = r.p;

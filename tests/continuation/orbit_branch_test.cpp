@@ -42,12 +42,12 @@ FlowPoint AtPhase0(double x, double xdot) {
 
 // The undamped coulomb floor (mu = 0.3, A = 1, v = 0): unbounded at Omega = 1.
 TEST(OrbitBranch, DenHartogRowsMatchTheClosedForm) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = p.base.mu_k = 0.3;
   p.base.beta = 0, p.base.v = 0;
   p.force = 1, p.omega = 0.75;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   OrbitBranchOptions o = Tight();
   o.max_amplitude = 10;
   o.palc.ds_max = 0.05;
@@ -75,8 +75,8 @@ TEST(OrbitBranch, DenHartogRowsMatchTheClosedForm) {
 // twice before GR1 0.57949. Each located PD must sit inside the reference's
 // sign change of det(Phi + I), and each LP have a multiplier at +1.
 TEST(OrbitBranch, BothPeriodDoublingsOfTheSeedStudyMatchTheReference) {
-  ForcedParams p = forced_reference::SeedBelt(0.25, 0.3, 1);
-  const ForcedModel m(p);
+  ForcedBeltParams p = forced_reference::SeedBelt(0.25, 0.3, 1);
+  const ForcedBelt m(p);
   // 200 periods from (0, v) settle on the m = 1 orbit.
   Flow flow(m, FlowOptions());
   FlowRequest rq;

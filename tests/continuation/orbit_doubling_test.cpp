@@ -21,7 +21,7 @@ namespace stickslip {
 namespace {
 
 // studies/stribeck_forced.ini's scene (v 0.25, A 0.3) at Omega.
-ForcedParams Scene(double omega) { return forced_reference::StribeckBelt(0.25, 0.3, omega); }
+ForcedBeltParams Scene(double omega) { return forced_reference::StribeckBelt(0.25, 0.3, omega); }
 
 OrbitBranchOptions Options() {
   OrbitBranchOptions o;
@@ -32,7 +32,7 @@ OrbitBranchOptions Options() {
 
 // The first PD of the m = 1 branch from Omega = 0.7 down.
 OrbitRow FirstPeriodDoubling() {
-  const ForcedModel m(Scene(0.7));
+  const ForcedBelt m(Scene(0.7));
   Flow flow(m, FlowOptions());
   FlowRequest rq;
   rq.t_max = 200 * 2 * M_PI / 0.7;
@@ -50,7 +50,7 @@ TEST(OrbitDoubling, StroboscopicAndStickExitSectionsGiveTheSameDoubledOrbits) {
   const OrbitRow pd = FirstPeriodDoubling();
   ASSERT_EQ(pd.label, SpecialKind::kPeriodDoubling);
   ASSERT_EQ(pd.sticks, 1);
-  const ForcedModel m(Scene(pd.p));
+  const ForcedBelt m(Scene(pd.p));
   const int j = m.ParameterIndex("omega");
   const double lo = pd.p - 0.006, hi = pd.p + 0.006;
   const OrbitBranch strobe = ContinueDoubled(
@@ -85,7 +85,7 @@ TEST(OrbitDoubling, StroboscopicAndStickExitSectionsGiveTheSameDoubledOrbits) {
 }
 
 TEST(OrbitDoubling, MisuseThrowsAndAPointWithoutAFlipIsRefused) {
-  const ForcedModel m(Scene(0.7));
+  const ForcedBelt m(Scene(0.7));
   const int j = m.ParameterIndex("omega");
   const FlowPoint z{0, Eigen::Vector3d(0, 0.25, 0), ModeSet()};
   const PoincareSection s = PoincareSection::Stroboscopic(m, z.z, 1);

@@ -54,9 +54,9 @@ TEST(FlowReuse, ANewParameterGivesWhatANewFlowGives) {
 }
 
 TEST(FlowReuse, ANewForcingGivesWhatANewFlowGives) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.force = 0.3, p.omega = 0.8;
-  Flow reused{ForcedModel(p), FlowOptions()};
+  Flow reused{ForcedBelt(p), FlowOptions()};
   FlowPoint start;
   start.z = Eigen::Vector3d(0.1, 0.0, 0.0);
   start.mode = ModeSet(Mode::kSlipBelow);
@@ -65,8 +65,8 @@ TEST(FlowReuse, ANewForcingGivesWhatANewFlowGives) {
   rq.variational = true;
   const FlowRun before = reused.Run(start, rq);
   p.force = 0.5, p.omega = 1.1;
-  reused.set_system(ForcedModel(p));
-  Flow fresh{ForcedModel(p), FlowOptions()};
+  reused.set_system(ForcedBelt(p));
+  Flow fresh{ForcedBelt(p), FlowOptions()};
   const FlowRun a = reused.Run(start, rq), b = fresh.Run(start, rq);
   ExpectSame(a, b);
   EXPECT_NE(a.end.z, before.end.z);

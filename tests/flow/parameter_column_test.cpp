@@ -106,19 +106,19 @@ TEST(ParameterColumn, FromAStickStart) {
   start.z = Eigen::Vector2d(0.1, p.v);
   start.mode = ModeSet(Mode::kStick);
   CheckColumn(Model(p), start, 30, {"beta", "v", "mu_s", "mu_m"}, 1);
-  ForcedParams f;
+  ForcedBeltParams f;
   f.force = 0.5, f.omega = 1.1;
   start.z = Eigen::Vector3d(0.1, f.base.v, 0.3);
-  CheckColumn(ForcedModel(f), start, 30, {"beta", "v", "mu_s", "force", "omega"}, 1);
+  CheckColumn(ForcedBelt(f), start, 30, {"beta", "v", "mu_s", "force", "omega"}, 1);
 }
 
 TEST(ParameterColumn, ForcedThroughStickPhasesAndTheClock) {
-  ForcedParams p;  // 13 switches by t = 30, the same on either side of each p
+  ForcedBeltParams p;  // 13 switches by t = 30, the same on either side of each p
   p.force = 0.5, p.omega = 1.1;
   FlowPoint start;
   start.z = Eigen::Vector3d(0.1, 0.0, 0.3);
   start.mode = ModeSet(Mode::kSlipBelow);
-  CheckColumn(ForcedModel(p), start, 30, {"beta", "v", "mu_s", "force", "omega"});
+  CheckColumn(ForcedBelt(p), start, 30, {"beta", "v", "mu_s", "force", "omega"});
 }
 
 // dP/dp of the residual P(z) - z at a fixed z against differences of the
@@ -165,9 +165,9 @@ TEST(ParameterColumn, BeltStickExitMap) {
 }
 
 TEST(ParameterColumn, ForcedStroboscopicAndStickExitMaps) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.force = 0.3, p.omega = 0.8;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   FlowPoint z;
   z.z = Eigen::Vector3d(0.1, 0.0, 0.3);
   z.mode = ModeSet(Mode::kSlipBelow);

@@ -74,17 +74,17 @@ TEST(Simulate, DenseRowsFollowTheCoulombClosedForm) {
 
 // The forced Stribeck scene of studies/stribeck_forced.ini at Omega = 0.6,
 // past its period-doubling cascade.
-ForcedParams StribeckScene() {
-  ForcedParams p;
+ForcedBeltParams StribeckScene() {
+  ForcedBeltParams p;
   p.base.law = LawKind::kStribeck;
   p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
   p.force = 0.3, p.omega = 0.6;
   return p;
 }
 
-SimulationOptions Options(const ForcedModel& model, double t_end, double dt, SimulationSection s) {
+SimulationOptions Options(const ForcedBelt& model, double t_end, double dt, SimulationSection s) {
   SimulationOptions o;
-  o.flow = ForcedModel::FlowDefaults();
+  o.flow = ForcedBelt::FlowDefaults();
   o.t_end = t_end, o.dt = dt, o.section = s, o.period = model.period();
   return o;
 }
@@ -94,8 +94,8 @@ SimulationOptions Options(const ForcedModel& model, double t_end, double dt, Sim
 // gave x'' of either sign at the start of slip, and the flow went straight
 // back into stick at the same t (mu(0+) = mu_s: the field is continuous there).
 TEST(Simulate, LongStribeckRunCompletesAndEveryExitIsOnTheEdge) {
-  const ForcedParams p = StribeckScene();
-  const ForcedModel model(p);
+  const ForcedBeltParams p = StribeckScene();
+  const ForcedBelt model(p);
   const Recorded rec = Record(model, ForcedStart(model, 0, 0, p.base.v),
                               Options(model, 3000, 1000, SimulationSection::kExit));
   ASSERT_EQ(rec.r.status, SimulationStatus::kComplete) << rec.r.message;
@@ -116,9 +116,9 @@ TEST(Simulate, LongStribeckRunCompletesAndEveryExitIsOnTheEdge) {
 // term, above Deflate's noise relative to the O(h^2) polynomial; its sign
 // sent the flow back into stick at the same t ("switching does not advance t").
 TEST(Simulate, ShortStepAfterAStickExitLeavesTheSurface) {
-  ForcedParams p;  // the seed set, forced: studies/seed_forced.ini
+  ForcedBeltParams p;  // the seed set, forced: studies/seed_forced.ini
   p.force = 0.3, p.omega = 0.6;
-  const ForcedModel model(p);
+  const ForcedBelt model(p);
   std::vector<FlowSwitch> events;
   FlowRequest rq;
   rq.switches = &events;
@@ -137,7 +137,7 @@ TEST(Simulate, ShortStepAfterAStickExitLeavesTheSurface) {
 // grid, every multiple of dt plus one per switch, by time; and they agree
 // with a run without the section (no stops) to the flow's tolerance.
 TEST(Simulate, StroboscopicPointsAreAtMultiplesOfThePeriod) {
-  const ForcedModel model(StribeckScene());
+  const ForcedBelt model(StribeckScene());
   const FlowPoint start = ForcedStart(model, 0, 0.1, 0);
   const Recorded rec = Record(model, start, Options(model, 100, 0.3, SimulationSection::kStrobe));
   ASSERT_TRUE(rec.r.ok()) << rec.r.message;
@@ -159,7 +159,7 @@ TEST(Simulate, StroboscopicPointsAreAtMultiplesOfThePeriod) {
 // A start between rows whose next multiple of dt rounds onto it (0.29 / 0.01
 // = 28.999...): the first row after the start lies after it, none at it.
 TEST(Simulate, StartBetweenRowsRoundsItsFirstBreakpointForward) {
-  const ForcedModel model(StribeckScene());
+  const ForcedBelt model(StribeckScene());
   const Recorded rec = Record(model, ForcedStart(model, 0.29, 0.1, 0),
                               Options(model, 1, 0.01, SimulationSection::kStrobe));
   ASSERT_TRUE(rec.r.ok()) << rec.r.message;
@@ -174,8 +174,8 @@ TEST(Simulate, StartBetweenRowsRoundsItsFirstBreakpointForward) {
 // switches, and integrates as one run would (every switch restarts the
 // stepper), row for row and bit for bit. Within one dt it is a failure.
 TEST(Simulate, SwitchBoundIsPerOutputIntervalAndContinuesBitForBit) {
-  const ForcedParams p = StribeckScene();
-  const ForcedModel model(p);
+  const ForcedBeltParams p = StribeckScene();
+  const ForcedBelt model(p);
   const FlowPoint start = ForcedStart(model, 0, 0, p.base.v);
   const SimulationOptions one = Options(model, 600, 1, SimulationSection::kExit);
   SimulationOptions chunked = one;
@@ -203,9 +203,9 @@ TEST(Simulate, SwitchBoundIsPerOutputIntervalAndContinuesBitForBit) {
 // section time (0.9 against T = 0.9000000000000001) is given once, not again
 // from the run that starts at T.
 TEST(Simulate, SectionAtTheEndAndRowsAtChunkEdgesAreGivenOnce) {
-  ForcedParams p = StribeckScene();
+  ForcedBeltParams p = StribeckScene();
   p.omega = 2 * M_PI;  // T = 1 exactly
-  const ForcedModel unit(p);
+  const ForcedBelt unit(p);
   ASSERT_EQ(unit.period(), 1.0);
   const Recorded a = Record(unit, ForcedStart(unit, 0, 0.1, 0),
                             Options(unit, 10, 0.25, SimulationSection::kStrobe));
@@ -213,7 +213,7 @@ TEST(Simulate, SectionAtTheEndAndRowsAtChunkEdgesAreGivenOnce) {
   ASSERT_EQ(a.section.size(), 11u);
   EXPECT_EQ(a.section.back().t, 10.0);
   p.omega = 20.94395102393195;  // T = 0.3 to rounding: 3 T falls on the row 9 dt
-  const ForcedModel tight(p);
+  const ForcedBelt tight(p);
   const Recorded b = Record(tight, ForcedStart(tight, 0, 0.1, 0),
                             Options(tight, 3, 0.1, SimulationSection::kStrobe));
   ASSERT_TRUE(b.r.ok()) << b.r.message;
@@ -225,7 +225,7 @@ TEST(Simulate, SectionAtTheEndAndRowsAtChunkEdgesAreGivenOnce) {
 // The row bound counts rows and section points and stops the run there,
 // with the rows so far given; a cancel hook stops it with its own status.
 TEST(Simulate, RowLimitAndCancelStopWithTheirStatus) {
-  const ForcedModel model(StribeckScene());
+  const ForcedBelt model(StribeckScene());
   const FlowPoint start = ForcedStart(model, 0, 0.1, 0);
   SimulationOptions o = Options(model, 100, 0.01, SimulationSection::kStrobe);
   o.max_rows = 500;

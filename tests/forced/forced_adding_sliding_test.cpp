@@ -44,7 +44,7 @@ bool StuckOrbit(const ref::Setup& s, Real x_guess, int* sticks) {
 }
 
 // The stick count of that orbit at Omega = w.
-int SticksOfOrbit(const ForcedParams& p, Real w, Real x_guess) {
+int SticksOfOrbit(const ForcedBeltParams& p, Real w, Real x_guess) {
   const ref::Setup s{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force), w};
   int sticks = 0;
   EXPECT_TRUE(StuckOrbit(s, x_guess, &sticks)) << "no orbit at Omega = " << double(w);
@@ -54,8 +54,8 @@ int SticksOfOrbit(const ForcedParams& p, Real w, Real x_guess) {
 // Coulomb mu_s = mu_k = 0.3, beta 0.05, v 0.1, A 0.4: near Omega = 0.41025
 // the two stick phases of the m = 1 orbit merge (2 -> 1 with Omega up).
 TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouchesMuS) {
-  const ForcedParams p = ref::Coulomb(0.3, 0.3, 0.05, 0.1, 0.4, 1);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  const ForcedBeltParams p = ref::Coulomb(0.3, 0.3, 0.05, 0.1, 0.4, 1);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.005;
   const OrbitBranch b = testing_util::TraceOmega(p, 0.38, 0.44, o);
   const OrbitRow* ad = nullptr;
@@ -85,8 +85,8 @@ TEST(ForcedAddingSliding, FilippovCoulombStickPhasesMergeWhereTheStickForceTouch
 // accepted as stalled. One event, one label, at the edge of the 1-stick orbits
 // (the secant on the closed-form pieces finds none beyond it).
 TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
-  const ForcedParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.1, 0.6, 1);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  const ForcedBeltParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.1, 0.6, 1);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = 0.02 * 0.02;
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   const OrbitBranch b = testing_util::TraceOmega(p, 0.35, 0.37, o);
@@ -122,8 +122,8 @@ TEST(ForcedAddingSliding, StickSplitWithAJumpIsOneLabelAtTheEdge) {
 // step-too-small. The sweep now goes on toward `to`: it reaches v = 0.5, and
 // a stable row near v = 0.3 is an orbit of the closed-form pieces.
 TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
-  ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  ForcedBeltParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::Trace(p, Parameter::kV, 0, 0.5, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -151,8 +151,8 @@ TEST(ForcedAddingSliding, FloorRunInVGoesOnTowardItsEndAfterAJump) {
 // not taken: the run is cut short and says so (it once ended "reached-end",
 // with no message, at v = 0.185).
 TEST(ForcedAddingSliding, FloorRunInVOutOfJumpsSaysSo) {
-  const ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  const ForcedBeltParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   o.max_jumps = 0;
   const OrbitBranch b = testing_util::Trace(p, Parameter::kV, 0, 0.5, o);

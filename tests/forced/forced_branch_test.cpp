@@ -18,8 +18,8 @@ namespace {
 // Den Hartog (1931), checked against the closed-form pieces in forced_orbit_test.cpp.
 using forced_reference::DenHartogX;
 
-ForcedParams DenHartog() {
-  ForcedParams p;
+ForcedBeltParams DenHartog() {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = p.base.mu_k = 0.3;
   p.base.beta = 0, p.base.v = 0;
@@ -30,7 +30,7 @@ ForcedParams DenHartog() {
 // Without damping the amplitude grows without bound at Omega = 1 (mu < pi A / 4):
 // one branch from each end, each stopped at |x| = 10.
 TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.max_amplitude = 10;
   o.palc.ds_max = 0.05;
@@ -64,14 +64,14 @@ TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
 // stroboscopic branch (det(DP + I) = 0), checked by the exit-phase map, whose
 // multiplier comes from the exit time's derivative instead.
 TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0, p.base.v = 0.2;
   p.force = 0.3, p.omega = 0.8;
-  const ForcedModel m0(p);
+  const ForcedBelt m0(p);
   const FlowRun transient =
       testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0.2), 200 * m0.period());
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.palc.ds_max = 0.05;
   const OrbitBranch b =
@@ -87,7 +87,7 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   EXPECT_NEAR(pd.multipliers[0].real(), -1, 1e-9);
   // The exit-phase map at the located Omega: its multiplier is -1 there too.
   p.omega = pd.p;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   std::vector<FlowSwitch> events;
   FlowRequest rq;
   rq.switches = &events;
@@ -98,7 +98,7 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   for (const auto& e : events)
     if (e.kind == SwitchKind::kStickOut) t_exit = e.t, mode = e.after[0];
   ASSERT_GE(t_exit, 0);
-  ShootingOptions oo(ForcedModel::FlowDefaults());
+  ShootingOptions oo(ForcedBelt::FlowDefaults());
   oo.flow = o.shooting.flow;
   const PeriodicOrbit exit = ExitPhaseOrbit(m, t_exit, mode, 1, 1, oo);
   ASSERT_TRUE(exit.ok()) << exit.message;
@@ -118,10 +118,10 @@ namespace {
 // the Den Hartog branch in the kinetic coefficient mu_k at Omega = 2 (mu_s =
 // 0.3 held) against his closed form X(mu_k) on every non-stop row.
 TEST(OrbitBranch, ContinuesABeltParameterOfTheForcedModel) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.palc.ds_max = 0.01;
-  ForcedParams p = DenHartog();
+  ForcedBeltParams p = DenHartog();
   p.omega = 2;
   const double V = 1 / (1 - 4.0);
   const OrbitBranch b = ContinueForced(p, Parameter::kMuK, 0.3, 0.05, V, 0.01, 1, o);

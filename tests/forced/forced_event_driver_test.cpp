@@ -1,4 +1,4 @@
-// The forced oscillator (ForcedModel: x, x', theta = Omega t) on the one
+// The forced oscillator (ForcedBelt: x, x', theta = Omega t) on the one
 // flow's steppers in the one event loop (RunSegment): the terminal arrival on x' = v and the
 // non-terminal extrema of x and x' against the closed form of a coulomb slip
 // piece under A cos(Omega t) (forced_reference.hpp, long double), located
@@ -31,8 +31,8 @@ void Record(void* context, int g, const double* y) {
 // (the arrival).
 class ForcedEventDriver : public ::testing::Test {
  protected:
-  const ForcedParams p_ = ref::Coulomb(0.4, 0.25, 0.05, 0.3, 0.5, 0.8);
-  const ForcedModel m_{p_};
+  const ForcedBeltParams p_ = ref::Coulomb(0.4, 0.25, 0.05, 0.3, 0.5, 0.8);
+  const ForcedBelt m_{p_};
   const ref::Setup s_{reference::Law(p_.base), p_.base.beta, p_.base.v, p_.force, p_.omega};
   const ref::CoulombPiece piece_{s_, 1, 0.3L, 1.0L, -1.0L};
   const double omega_ = 0.8, zero_ = 0;

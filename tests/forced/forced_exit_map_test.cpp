@@ -22,7 +22,7 @@ using ref::Real;
 
 // The closed-form simulation from the exit at t_e into mode sigma (+1 below):
 // the time of its `sticks`-th next exit.
-Real ClosedFormReturn(const ForcedParams& p, Real t_e, int sigma, int sticks) {
+Real ClosedFormReturn(const ForcedBeltParams& p, Real t_e, int sigma, int sticks) {
   const ref::Setup s{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega};
   ref::PieceSim<ref::CoulombPiece> sim(s);
   Real t = t_e, x = sigma * s.law.mu_s - 2 * s.beta * s.v + s.a * std::cos(s.w * t_e), y = s.v;
@@ -35,18 +35,18 @@ Real ClosedFormReturn(const ForcedParams& p, Real t_e, int sigma, int sticks) {
 }
 
 // An exit time and side after a transient of 60 forcing periods.
-void GuessExit(const ForcedModel& m, double* t, Mode* mode) {
+void GuessExit(const ForcedBelt& m, double* t, Mode* mode) {
   for (const FlowSwitch& e : testing_util::RunSwitches(m, ForcedStart(m, 0, 0, 0), 60 * m.period()))
     if (e.kind == SwitchKind::kStickOut) *t = e.t, *mode = e.after[0];
 }
 
-void Check(const ForcedParams& p, int sticks, int m) {
-  const ForcedModel model(p);
+void Check(const ForcedBeltParams& p, int sticks, int m) {
+  const ForcedBelt model(p);
   double t_guess = -1;
   Mode mode = Mode::kSlipBelow;
   GuessExit(model, &t_guess, &mode);
   ASSERT_GT(t_guess, 0) << "no stick exit in the transient";
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-14;
   const PeriodicOrbit orbit = ExitPhaseOrbit(model, t_guess, mode, sticks, m, o);
   ASSERT_TRUE(orbit.ok()) << orbit.message;
@@ -78,7 +78,7 @@ void Check(const ForcedParams& p, int sticks, int m) {
 }
 
 TEST(ForcedExitMap, BeltStickSlipOrbitMatchesCoulombClosedForm) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
   p.force = 0.3, p.omega = 0.8;
@@ -86,7 +86,7 @@ TEST(ForcedExitMap, BeltStickSlipOrbitMatchesCoulombClosedForm) {
 }
 
 TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = 0.4, p.base.mu_k = 0.3, p.base.beta = 0.05, p.base.v = 0;
   p.force = 0.7, p.omega = 0.6;
@@ -99,17 +99,17 @@ TEST(ForcedExitMap, FloorTwoStopOrbitMatchesCoulombClosedForm) {
 // not mu < 1). Started from the branch's rows (the transient finds the
 // doubled attractors there); its multiplier against the stroboscopic one.
 TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
-  const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
+  const ForcedBeltParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
   const OrbitBranch b =
-      testing_util::TraceOmega(p, 0.62, 0.605, OrbitBranchOptions(ForcedModel::FlowDefaults()));
+      testing_util::TraceOmega(p, 0.62, 0.605, OrbitBranchOptions(ForcedBelt::FlowDefaults()));
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int checked = 0;
   double lowest = 0;
   for (const OrbitRow& r : b.rows) {
     if (r.p > 0.618 || r.label != SpecialKind::kNone) continue;
-    ForcedParams q = p;
+    ForcedBeltParams q = p;
     q.omega = r.p;
-    const ForcedModel model(q);
+    const ForcedBelt model(q);
     double t = -1;
     Mode mode = Mode::kSlipBelow;
     for (const FlowSwitch& e : testing_util::RunSwitches(
@@ -117,7 +117,7 @@ TEST(ForcedExitMap, FlipUnstableStickSlipOrbitsAreUnstable) {
       if (e.kind == SwitchKind::kStickOut) t = e.t, mode = e.after[0];
     ASSERT_GT(t, 0) << "Omega = " << r.p;
     const PeriodicOrbit o =
-        ExitPhaseOrbit(model, t, mode, 1, 1, ShootingOptions(ForcedModel::FlowDefaults()));
+        ExitPhaseOrbit(model, t, mode, 1, 1, ShootingOptions(ForcedBelt::FlowDefaults()));
     ASSERT_TRUE(o.ok()) << o.message;
     EXPECT_NEAR(o.multipliers[0].real(), r.multipliers[0].real(), 1e-8) << "Omega = " << r.p;
     EXPECT_LT(o.multipliers[0].real(), -1) << "Omega = " << r.p;

@@ -27,7 +27,7 @@ using reference::LReal;
 // The reference's roots of det(Phi + I) on a grid of n steps over [lo, hi],
 // each bisected to 1e-13, from the state of the branch row nearest each value
 // (after the last fold).
-std::vector<double> RefFlipRoots(ForcedParams p, const OrbitBranch& b, double lo, double hi,
+std::vector<double> RefFlipRoots(ForcedBeltParams p, const OrbitBranch& b, double lo, double hi,
                                  int n) {
   auto at = [&](double w, LReal* x, LReal* y) {
     p.omega = w;
@@ -90,7 +90,7 @@ void ExpectDescriptionsFollowCounts(const OrbitBranch& b) {
 }
 
 // The branch's PD points within (lo, hi) against the reference's roots.
-void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, double hi,
+void ExpectEveryFlip(const ForcedBeltParams& p, double from, double to, double lo, double hi,
                      const OrbitBranchOptions& o, const char* name) {
   const OrbitBranch b = testing_util::TraceOmega(p, from, to, o);
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -112,15 +112,15 @@ void ExpectEveryFlip(const ForcedParams& p, double from, double to, double lo, d
 // Stribeck: PD1 0.61821, PD2 0.58000, GR1 0.57876; the window ends inside the
 // single-valued stick-slip stretch between GR1 and the folds (LP 0.62374).
 TEST(ForcedFlip, StribeckStudyBothCrossingsOfMinusOne) {
-  const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.8);
-  ExpectEveryFlip(p, 0.8, 0.5, 0.5790, 0.6230, OrbitBranchOptions(ForcedModel::FlowDefaults()),
+  const ForcedBeltParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.8);
+  ExpectEveryFlip(p, 0.8, 0.5, 0.5790, 0.6230, OrbitBranchOptions(ForcedBelt::FlowDefaults()),
                   "stribeck");
 }
 
 // The seed belt: PD1 0.61397, PD2 0.58019, GR1 0.57949 (LP 0.62849).
 TEST(ForcedFlip, SeedStudyBothCrossingsOfMinusOne) {
-  const ForcedParams p = forced_reference::SeedBelt(0.25, 0.3, 1);
-  ExpectEveryFlip(p, 1, 0.5, 0.5797, 0.6280, OrbitBranchOptions(ForcedModel::FlowDefaults()),
+  const ForcedBeltParams p = forced_reference::SeedBelt(0.25, 0.3, 1);
+  ExpectEveryFlip(p, 1, 0.5, 0.5797, 0.6280, OrbitBranchOptions(ForcedBelt::FlowDefaults()),
                   "seed");
 }
 
@@ -129,8 +129,8 @@ TEST(ForcedFlip, SeedStudyBothCrossingsOfMinusOne) {
 // two steps (measured: 3 rows); the step is halved while the multiplier moves by more
 // than 0.1, and both are found.
 TEST(ForcedFlip, TwoCrossingsInOneLongStep) {
-  const ForcedParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  const ForcedBeltParams p = forced_reference::StribeckBelt(0.25, 0.3, 0.62);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds = o.palc.ds_max = 0.05;
   const OrbitBranch b = testing_util::TraceOmega(p, 0.62, 0.5795, o);
   ASSERT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;

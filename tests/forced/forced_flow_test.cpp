@@ -17,20 +17,20 @@ using ref::Real;
 
 using ref::Coulomb;
 
-ref::Setup SetupOf(const ForcedParams& p) {
+ref::Setup SetupOf(const ForcedBeltParams& p) {
   return {reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega};
 }
 
 struct Case {
-  ForcedParams p;
+  ForcedBeltParams p;
   double x0, xdot0, t_end;
 };
 
 // Runs both and compares every event time and x, and the end state.
 template <class Piece>
 void CompareWithReference(const Case& c, double tol, int min_events, double rtol = 1e-13) {
-  const ForcedModel m(c.p);
-  FlowOptions o = ForcedModel::FlowDefaults();
+  const ForcedBelt m(c.p);
+  FlowOptions o = ForcedBelt::FlowDefaults();
   o.rtol = o.atol = rtol;
   std::vector<FlowSwitch> events;
   FlowRequest rq;
@@ -86,14 +86,14 @@ TEST(ForcedFlow, ForcedBeltMatchesCoulombClosedForm) {
 
 // The seed's cubic law on the forced belt, against the long-double RKF78.
 TEST(ForcedFlow, ForcedSeedBeltMatchesLongDoubleReference) {
-  ForcedParams p;  // the seed set
+  ForcedBeltParams p;  // the seed set
   p.force = 0.3, p.omega = 0.8;
   CompareWithReference<ref::OdeintPiece>({p, 0.3, 0.25, 80}, 1e-11, 6);
 }
 
 // Stribeck on the floor: reversals and stops where the law is smooth (mu(0+) = mu_s).
 TEST(ForcedFlow, StribeckFloorMatchesLongDoubleReference) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kStribeck;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.3, p.base.beta = 0.05, p.base.v = 0;
   p.force = 0.9, p.omega = 0.6;
@@ -103,10 +103,10 @@ TEST(ForcedFlow, StribeckFloorMatchesLongDoubleReference) {
 // The state transition matrix with saltation (crossings, stick in, stick out)
 // against central differences of the closed-form simulation in long double.
 TEST(ForcedFlow, JacobianMatchesClosedFormDifferences) {
-  for (const ForcedParams& p : {Coulomb(0.4, 0.3, 0.05, 0.1, 0.6, 0.9),  // sticks on a belt
-                                Coulomb(0.3, 0.2, 0.02, 0, 1, 1.3)}) {   // reversals on a floor
-    const ForcedModel m(p);
-    FlowOptions o = ForcedModel::FlowDefaults();
+  for (const ForcedBeltParams& p : {Coulomb(0.4, 0.3, 0.05, 0.1, 0.6, 0.9),  // sticks on a belt
+                                    Coulomb(0.3, 0.2, 0.02, 0, 1, 1.3)}) {   // reversals on a floor
+    const ForcedBelt m(p);
+    FlowOptions o = ForcedBelt::FlowDefaults();
     o.rtol = o.atol = 1e-14;
     FlowRequest rq;
     rq.variational = true;
@@ -138,11 +138,11 @@ TEST(ForcedFlow, JacobianMatchesClosedFormDifferences) {
 // belt's stick-slip orbit (long-double reference, reference/reference_orbit.hpp).
 TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
   for (const LawKind law : {LawKind::kCubic, LawKind::kStribeck, LawKind::kCoulomb}) {
-    ForcedParams p;  // the seed set
+    ForcedBeltParams p;  // the seed set
     p.base.law = law;
     if (law == LawKind::kCoulomb) p.base.beta = 0;  // damped, its slip spirals into x = mu_k
-    const ForcedModel m(p);
-    FlowOptions o = ForcedModel::FlowDefaults();
+    const ForcedBelt m(p);
+    FlowOptions o = ForcedBelt::FlowDefaults();
     o.rtol = o.atol = 1e-13;
     FlowRequest rq;
     rq.stop_at_exit = 1;
@@ -166,10 +166,10 @@ TEST(ForcedFlow, WithoutForcingTheSeedOrbitComesBack) {
 
 // v = 0 and |x| + A < mu_s: the block never leaves stick.
 TEST(ForcedFlow, HeldBlockStaysPut) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb, p.base.v = 0, p.base.mu_s = 0.4, p.base.mu_k = 0.3;
   p.force = 0.2, p.omega = 1.7;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   const FlowRun run = testing_util::RunForced(m, ForcedStart(m, 0, 0.1, 0), 50);
   EXPECT_EQ(run.end.mode[0], Mode::kStick);
   EXPECT_EQ(run.end.z[0], 0.1);
@@ -180,10 +180,10 @@ TEST(ForcedFlow, HeldBlockStaysPut) {
 // A stick band edge reached for 1e-4 of a period only (max |phi| = mu_s + 1e-9):
 // the exit is still found, at its closed-form time acos(-(mu_s - x) / A) / Omega.
 TEST(ForcedFlow, BarelyReachedBandEdgeEndsTheStick) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb, p.base.v = 0, p.base.mu_s = 0.4, p.base.mu_k = 0.3;
   p.force = 0.3 + 1e-9, p.omega = 1.7;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   FlowRequest rq;
   rq.stop_at_exit = 1;
   const FlowRun run = testing_util::RunForced(m, ForcedStart(m, 0, 0.1, 0), 10, rq);
@@ -196,11 +196,11 @@ TEST(ForcedFlow, BarelyReachedBandEdgeEndsTheStick) {
 // a circle of radius r = v + 1e-10 about (mu_k, 0)) arrives at
 // t = pi + asin(v / r): the touch is found inside a step.
 TEST(ForcedFlow, BarelyReachedSurfaceEndsTheSlip) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb, p.base.beta = 0, p.base.v = 0.25;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25;
   p.force = 0;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   const double r = 0.25 + 1e-10;
   const std::vector<FlowSwitch> events =
       testing_util::RunSwitches(m, ForcedStart(m, 0, 0.25 + r, 0), 10);
@@ -210,19 +210,19 @@ TEST(ForcedFlow, BarelyReachedSurfaceEndsTheSlip) {
 }
 
 TEST(ForcedFlow, InvalidInputIsNamed) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.force = -1;
   EXPECT_NE(ValidationError(p).find("force"), std::string::npos);
   p.force = 0.5, p.omega = 0;
   EXPECT_NE(ValidationError(p).find("omega"), std::string::npos);
   p.omega = 1, p.base.v = -0.1;
   EXPECT_NE(ValidationError(p).find("v = "), std::string::npos);
-  EXPECT_THROW(ForcedModel{p}, InvalidArgument);
+  EXPECT_THROW(ForcedBelt{p}, InvalidArgument);
   p.base.v = 0;
   EXPECT_EQ(ValidationError(p), "");
-  FlowOptions o = ForcedModel::FlowDefaults();
+  FlowOptions o = ForcedBelt::FlowDefaults();
   o.rtol = 0;
-  EXPECT_THROW(Flow(ForcedModel(p), o), InvalidArgument);
+  EXPECT_THROW(Flow(ForcedBelt(p), o), InvalidArgument);
 }
 
 }  // namespace

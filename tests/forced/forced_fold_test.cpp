@@ -28,7 +28,7 @@ const Real kPi = std::acos(Real(-1));
 // The time from the stick exit at phase theta to the next stick exit, minus
 // one forcing period (0 on a 1-stick orbit of m = 1). NaN if the run has
 // no single stick phase in between.
-Real ExitGap(const ForcedParams& p, Real w, Real theta) {
+Real ExitGap(const ForcedBeltParams& p, Real w, Real theta) {
   const ref::Setup s{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force), w};
   ref::PieceSim<ref::OdeintPiece> sim(s);
   sim.dt = 1e-2L;
@@ -44,7 +44,7 @@ Real ExitGap(const ForcedParams& p, Real w, Real theta) {
 }
 
 // Omega(theta): the root of ExitGap in Omega by the secant method from w0.
-Real OmegaAt(const ForcedParams& p, Real theta, Real w0) {
+Real OmegaAt(const ForcedBeltParams& p, Real theta, Real w0) {
   Real a = w0, b = w0 * (1 + Real(1e-6)), fa = ExitGap(p, a, theta);
   for (int i = 0; i < 30; ++i) {
     const Real fb = ExitGap(p, b, theta);
@@ -57,7 +57,7 @@ Real OmegaAt(const ForcedParams& p, Real theta, Real w0) {
 
 // The exit phase (mod 2 pi) of the orbit of row r (the reference's run from
 // its stroboscopic point).
-Real ExitPhase(const ForcedParams& p, const OrbitRow& r) {
+Real ExitPhase(const ForcedBeltParams& p, const OrbitRow& r) {
   const ref::Setup s{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force),
                      Real(r.p)};
   ref::PieceSim<ref::OdeintPiece> sim(s);
@@ -71,7 +71,7 @@ Real ExitPhase(const ForcedParams& p, const OrbitRow& r) {
 
 // The extremum of Omega(theta) within +-half_width of the LP row's exit
 // phase: a minimum if sign = +1, a maximum if sign = -1.
-Real ReferenceFold(const ForcedParams& p, const OrbitRow& lp, Real half_width, int sign) {
+Real ReferenceFold(const ForcedBeltParams& p, const OrbitRow& lp, Real half_width, int sign) {
   const Real theta0 = ExitPhase(p, lp);
   Real w = lp.p;  // the last root: the next secant's start
   auto f = [&](Real theta) {
@@ -90,9 +90,9 @@ struct Fold {
   int sign;     // +1: Omega has a minimum there along the branch, -1: a maximum
 };
 
-void CheckFolds(const ForcedParams& p, double from, double to, const std::vector<Fold>& folds) {
+void CheckFolds(const ForcedBeltParams& p, double from, double to, const std::vector<Fold>& folds) {
   OrbitBranchOptions o(
-      ForcedModel::FlowDefaults());  // as ss_continue: max_step 0.02 of the range, rtol 1e-12
+      ForcedBelt::FlowDefaults());  // as ss_continue: max_step 0.02 of the range, rtol 1e-12
   o.palc.ds_max = 0.02 * std::abs(to - from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   const OrbitBranch b = testing_util::TraceOmega(p, from, to, o);
@@ -113,8 +113,8 @@ void CheckFolds(const ForcedParams& p, double from, double to, const std::vector
 // The forced Stribeck scene (studies/stribeck_forced.ini): the m = 1 branch
 // from Omega = 0.8 down turns at a minimum 0.62374 and a maximum 0.63020.
 TEST(ForcedFold, StribeckSceneFoldsAreTheExtremaOfTheExitPhaseFamily) {
-  const ForcedParams p = [] {
-    ForcedParams q = ref::Belt(LawKind::kStribeck, 0.05, 0.25, 0.3, 0.8);
+  const ForcedBeltParams p = [] {
+    ForcedBeltParams q = ref::Belt(LawKind::kStribeck, 0.05, 0.25, 0.3, 0.8);
     q.base.v_s = 0.2;
     return q;
   }();
@@ -124,7 +124,7 @@ TEST(ForcedFold, StribeckSceneFoldsAreTheExtremaOfTheExitPhaseFamily) {
 // The forced seed belt (studies/seed_forced.ini) at A = 0.18: a minimum at
 // 0.71747 and a maximum at 0.72817 of the 1-stick branch.
 TEST(ForcedFold, SeedBeltFoldsAreTheExtremaOfTheExitPhaseFamily) {
-  ForcedParams p = ref::Belt(LawKind::kCubic, 0.05, 0.25, 0.18, 1);
+  ForcedBeltParams p = ref::Belt(LawKind::kCubic, 0.05, 0.25, 0.18, 1);
   p.base.mu_m = 0.25, p.base.v_m = 0.5;
   CheckFolds(p, 1, 0.3, {{0.71747, +1}, {0.72817, -1}});
 }

@@ -23,10 +23,10 @@ namespace {
 
 using reference::LReal;
 
-ForcedParams Scene(double v) { return forced_reference::StribeckBelt(v, 0.05, 1.5); }
+ForcedBeltParams Scene(double v) { return forced_reference::StribeckBelt(v, 0.05, 1.5); }
 
 // det of the reference map's Jacobian at its fixed point near (x, y).
-LReal RefDet(const ForcedParams& p, LReal x, LReal y, bool* ok) {
+LReal RefDet(const ForcedBeltParams& p, LReal x, LReal y, bool* ok) {
   const reference::ForcedRef m(p);
   for (int it = 0; it < 20; ++it) {
     const reference::RefPeriod r = reference::RefOnePeriod(m, x, y, false, 1e-17L);
@@ -48,7 +48,7 @@ LReal RefDet(double v, LReal x, LReal y, bool* ok) { return RefDet(Scene(v), x, 
 
 // The root of det(Phi) - 1 in Omega between lo (stable) and hi (unstable),
 // by bisection on the reference map, from the state (x, y) at phase 0.
-double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
+double RefNsOmega(ForcedBeltParams p, double lo, double hi, double x, double y) {
   bool ok = false;
   p.omega = lo;
   EXPECT_LT(RefDet(p, x, y, &ok), 1) << "Omega = " << lo;
@@ -63,7 +63,7 @@ double RefNsOmega(ForcedParams p, double lo, double hi, double x, double y) {
 }
 
 TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::Trace(Scene(0.6), Parameter::kV, 0.6, 0.3, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -98,9 +98,9 @@ TEST(ForcedNeimarkSacker, LocatedWhereTheReferenceMapsPairLeavesTheUnitCircle) {
 // its amplitude makes the mean slope of mu steep enough. Both NS points
 // against det(Phi) = 1 of the reference map bisected in Omega.
 TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
-  ForcedParams p = Scene(0.41);
+  ForcedBeltParams p = Scene(0.41);
   p.force = 0.02;
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::TraceOmega(p, 2, 0.6, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
@@ -124,8 +124,8 @@ TEST(ForcedNeimarkSacker, InOmegaBothSidesOfTheResonance) {
 // v = 0.42, A = 0.05, in Omega): the 1:1 tongue's two sides, where the locked
 // pure-slip orbit is stable towards Omega = 1.
 TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
-  ForcedParams p = forced_reference::SeedBelt(0.42, 0.05, 1);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  ForcedBeltParams p = forced_reference::SeedBelt(0.42, 0.05, 1);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   const OrbitBranch b = testing_util::TraceOmega(p, 1.3, 0.6, o);
   int checked = 0;
@@ -149,10 +149,10 @@ TEST(ForcedNeimarkSacker, SeedBeltTongueInOmega) {
 // through a PD and back. Two PD points and no NS; an NS point would have to
 // be a complex pair on the unit circle (the rule: TorusPairIsComplex...).
 TEST(ForcedNeimarkSacker, NoneBesideR2WhereThePairIsReal) {
-  ForcedParams p = Scene(0.41);
+  ForcedBeltParams p = Scene(0.41);
   p.force = 0.113;
   const OrbitBranch b =
-      testing_util::TraceOmega(p, 2.4, 1.6, OrbitBranchOptions(ForcedModel::FlowDefaults()));
+      testing_util::TraceOmega(p, 2.4, 1.6, OrbitBranchOptions(ForcedBelt::FlowDefaults()));
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int pd = 0;
   for (const OrbitRow& s : b.special) {

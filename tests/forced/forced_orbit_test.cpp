@@ -73,8 +73,8 @@ Real DenHartogFromPieces(Real mu, Real a, Real w) {
   return -1;
 }
 
-ForcedParams DenHartog(double w) {
-  ForcedParams p;
+ForcedBeltParams DenHartog(double w) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = p.base.mu_k = 0.3;
   p.base.beta = 0, p.base.v = 0;
@@ -96,11 +96,11 @@ TEST(ForcedOrbit, DenHartogFormulaSolvesTheClosedFormPieces) {
 }
 
 TEST(ForcedOrbit, NonStopOrbitsMatchDenHartog) {
-  ShootingOptions o(ForcedModel::FlowDefaults());
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-14;
   double worst = 0;
   for (double w : kOmegas) {
-    const ForcedModel m(DenHartog(w));
+    const ForcedBelt m(DenHartog(w));
     const double V = 1 / (1 - w * w);
     const PeriodicOrbit orbit = ShootStroboscopic(m, V, 0.01, 1, o);
     ASSERT_TRUE(orbit.ok()) << "Omega = " << w << ": " << orbit.message;
@@ -117,7 +117,7 @@ TEST(ForcedOrbit, NonStopOrbitsMatchDenHartog) {
 }
 
 // The closed-form simulation (long double) from z over the period: its end.
-Vec2 ClosedFormMap(const ForcedParams& p, Real x, Real y, Real t_end) {
+Vec2 ClosedFormMap(const ForcedBeltParams& p, Real x, Real y, Real t_end) {
   ref::PieceSim<ref::CoulombPiece> sim(
       ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
   Real t = 0;
@@ -127,10 +127,10 @@ Vec2 ClosedFormMap(const ForcedParams& p, Real x, Real y, Real t_end) {
 
 // A fixed point is one for the closed-form map too, and its multipliers are
 // those of the closed-form map's central differences.
-void CheckAgainstClosedForm(const ForcedParams& p, double x0, double xdot0, int m) {
-  ShootingOptions o(ForcedModel::FlowDefaults());
+void CheckAgainstClosedForm(const ForcedBeltParams& p, double x0, double xdot0, int m) {
+  ShootingOptions o(ForcedBelt::FlowDefaults());
   o.flow.rtol = o.flow.atol = 1e-14;
-  const ForcedModel model(p);
+  const ForcedBelt model(p);
   const PeriodicOrbit orbit = ShootStroboscopic(model, x0, xdot0, m, o);
   ASSERT_TRUE(orbit.ok()) << orbit.message;
   const Vec2 end = ClosedFormMap(p, orbit.start.z[0], orbit.start.z[1], orbit.period);
@@ -162,19 +162,19 @@ void CheckAgainstClosedForm(const ForcedParams& p, double x0, double xdot0, int 
 }
 
 TEST(ForcedOrbit, DampedNonStopOrbitIsAFixedPointOfTheClosedForm) {
-  ForcedParams p = DenHartog(1.3);
+  ForcedBeltParams p = DenHartog(1.3);
   p.base.beta = 0.05, p.base.mu_s = 0.35;
   CheckAgainstClosedForm(p, -1.4, 0.0, 1);
 }
 
 TEST(ForcedOrbit, FloorStickSlipOrbitIsAFixedPointOfTheClosedForm) {
-  ForcedParams p = DenHartog(0.6);
+  ForcedBeltParams p = DenHartog(0.6);
   p.base.beta = 0.05, p.base.mu_s = 0.4, p.force = 0.7;
   CheckAgainstClosedForm(p, 0.5, 0.0, 1);
 }
 
 TEST(ForcedOrbit, BeltStickSlipOrbitIsAFixedPointOfTheClosedForm) {
-  ForcedParams p = DenHartog(0.8);
+  ForcedBeltParams p = DenHartog(0.8);
   p.base.beta = 0.05, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v = 0.2, p.force = 0.3;
   CheckAgainstClosedForm(p, 0.3, 0.2, 1);
 }

@@ -79,7 +79,7 @@ bool Sliding(SpecialKind l) {
 
 struct Study {
   const char* name;
-  ForcedParams p;
+  ForcedBeltParams p;
   double from, to, max_amplitude;
   bool both_ends;  // unbounded resonance: the app traces from each end
   // Every stride-th row and every special one are compared (the reference
@@ -91,13 +91,13 @@ struct Study {
 // from rest, Newton at m = 1 there, ContinueForced (the app's ContinueOrbits on the same
 // stroboscopic section) at the app's defaults.
 OrbitBranch AppBranch(const Study& s, double from, double to) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
   o.max_amplitude = s.max_amplitude;
-  ForcedParams at = s.p;
+  ForcedBeltParams at = s.p;
   ParameterAxis(Parameter::kOmega).Set(at, from);
-  const ForcedModel model(at);
+  const ForcedBelt model(at);
   cli::ClockStart c;
   c.rest = ForcedStart(model, 0, 0, model.v()).z;
   c.opts = o;

@@ -17,19 +17,20 @@ namespace {
 namespace ref = forced_reference;
 using ref::Real;
 
-OrbitBranch Trace(ForcedParams p, double from, double to, double ds_max) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+OrbitBranch Trace(ForcedBeltParams p, double from, double to, double ds_max) {
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = ds_max;
   return testing_util::TraceOmega(p, from, to, o);
 }
 
-ref::Setup SetupOf(const ForcedParams& p, Real w) {
+ref::Setup SetupOf(const ForcedBeltParams& p, Real w) {
   return ref::Setup{reference::Law(p.base), Real(p.base.beta), Real(p.base.v), Real(p.force), w};
 }
 
 // The closed-form pieces from (x0, x0') at t = 0 over `periods` forcing
 // periods; the events of the last one.
-std::vector<ref::Event> LastPeriod(const ForcedParams& p, Real w, Real x0, Real y0, int periods) {
+std::vector<ref::Event> LastPeriod(const ForcedBeltParams& p, Real w, Real x0, Real y0,
+                                   int periods) {
   ref::PieceSim<ref::CoulombPiece> sim(SetupOf(p, w));
   sim.dt = 5e-3L;
   const Real T = 2 * std::acos(Real(-1)) / w;
@@ -46,7 +47,7 @@ std::vector<ref::Event> LastPeriod(const ForcedParams& p, Real w, Real x0, Real 
 // phase that merges with the next one (mu_s > mu_k holds it): crossing-
 // sliding, which the branch once labelled SW, 9e-6 short of the edge.
 TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
-  const ForcedParams p = ref::Coulomb(0.4, 0.25, 0, 0.2, 0.3, 1);
+  const ForcedBeltParams p = ref::Coulomb(0.4, 0.25, 0, 0.2, 0.3, 1);
   const OrbitBranch b = Trace(p, 1.15, 1.25, 0.005);
   const OrbitRow* point = nullptr;
   for (const OrbitRow& r : b.special)
@@ -81,7 +82,7 @@ TEST(ForcedSlidingKinds, BeltCrossingReachingTheBandIsCrossingSliding) {
 // band's edge and turns into a crossing: crossing-sliding from the stick side,
 // which the branch once labelled SW at its last row, 2.4e-5 short.
 TEST(ForcedSlidingKinds, StickEntryReachingTheBandIsCrossingSliding) {
-  const ForcedParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.3, 0.3, 1);
+  const ForcedBeltParams p = ref::Coulomb(0.4, 0.25, 0.05, 0.3, 0.3, 1);
   // Two runs: the one from 0.3 ends where its 1-stick orbits end, at Omega
   // 0.6436414 (no m = 1 orbit just beyond; it once went on through points
   // with residual 3e-6); the one from 0.7 is on the orbits of the CR.
@@ -146,8 +147,8 @@ namespace {
 // symmetric, x_min = -x_max, by x -> -x, t -> t + T/2); the search across a
 // jump of the map once stepped below v = 0 and threw "v = -0.085 must be >= 0".
 TEST(ForcedSlidingKinds, FloorRunContinuesInVFromZeroWithinTheDomain) {
-  ForcedParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  ForcedBeltParams p = ref::Coulomb(0.4, 0.3, 0.1, 0, 0.5, 0.542525324500101);
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = o.palc.ds = 0.01;
   OrbitBranch b;
   ASSERT_NO_THROW(b = testing_util::Trace(p, Parameter::kV, 0, 0.5, o));

@@ -21,16 +21,16 @@ namespace {
 namespace ref = forced_reference;
 using ref::Real;
 
-ForcedParams Coulomb(double mu_s, double mu_k, double v, double beta, double a) {
-  ForcedParams p;
+ForcedBeltParams Coulomb(double mu_s, double mu_k, double v, double beta, double a) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = mu_s, p.base.mu_k = mu_k, p.base.v = v, p.base.beta = beta;
   p.force = a;
   return p;
 }
 
-OrbitBranch Trace(ForcedParams p, double from, double to) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+OrbitBranch Trace(ForcedBeltParams p, double from, double to) {
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);
   return testing_util::TraceOmega(p, from, to, o);
 }
@@ -125,7 +125,7 @@ bool SymmetricReversal(const ref::Setup& s, Real* t_r, Real* x_r) {
 // above the second. Each CR: the reversal on the band's edge, by bisection
 // on the closed-form orbit.
 TEST(ForcedSliding, CrossingSlidingMatchesTheClosedFormReversal) {
-  ForcedParams p = Coulomb(0.4, 0.25, 0, 0.05, 0.5);
+  ForcedBeltParams p = Coulomb(0.4, 0.25, 0, 0.05, 0.5);
   const OrbitBranch b = Trace(p, 0.5, 2.5);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   const auto cr = WithLabel(b, SpecialKind::kCrossing);
@@ -133,7 +133,7 @@ TEST(ForcedSliding, CrossingSlidingMatchesTheClosedFormReversal) {
   for (const OrbitRow& point : cr) {
     // Start Newton from the library's reversal (a crossing with x > 0).
     p.omega = point.p;
-    const ForcedModel m(p);
+    const ForcedBelt m(p);
     std::vector<FlowSwitch> ev;
     FlowRequest rq;
     rq.switches = &ev;

@@ -19,8 +19,8 @@
 namespace stickslip {
 namespace {
 
-ForcedParams StribeckScene(double omega) {
-  ForcedParams p;
+ForcedBeltParams StribeckScene(double omega) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kStribeck;
   p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
   p.base.beta = 0.05, p.base.v = 0.25;
@@ -29,7 +29,7 @@ ForcedParams StribeckScene(double omega) {
 }
 
 OrbitBranchOptions Options() {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
   o.palc.ds_max = 0.004;
   o.palc.ds = 0.004;
@@ -38,8 +38,8 @@ OrbitBranchOptions Options() {
 
 // The m = 1 branch from Omega = 0.7 down to 0.6 and its first PD.
 OrbitRow FirstPeriodDoubling() {
-  const ForcedParams p = StribeckScene(0.7);
-  const ForcedModel m(p);
+  const ForcedBeltParams p = StribeckScene(0.7);
+  const ForcedBelt m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
   const OrbitBranch b =
       ContinueForced(p, Parameter::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], 1, Options());
@@ -79,9 +79,9 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   // the m orbit's multiplier is -(1 + a), the 2-cycle's (1 - 2a)^2 ~ 1 - 4a,
   // so (1 - mu_2m) / |1 + mu_m| -> 4 at the PD (mu_m by separate shooting).
   const OrbitRow& r0 = d.rows.front();
-  ShootingOptions oo(ForcedModel::FlowDefaults());
+  ShootingOptions oo(ForcedBelt::FlowDefaults());
   oo.flow = Options().shooting.flow;
-  const ForcedModel m0(StribeckScene(r0.p));
+  const ForcedBelt m0(StribeckScene(r0.p));
   const PeriodicOrbit single = ShootStroboscopic(m0, pd.start.z[0], pd.start.z[1], 1, oo);
   ASSERT_TRUE(single.ok());
   const double flip = std::abs(1 + single.multipliers[0].real());
@@ -99,7 +99,7 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   const OrbitRow& far = d.rows.back();
   EXPECT_NEAR(far.p, pd.p - 0.006, 1e-12);
   ASSERT_TRUE(far.stable);
-  const ForcedParams q = StribeckScene(far.p);
+  const ForcedBeltParams q = StribeckScene(far.p);
   const reference::ForcedRef m(q);
   reference::LReal x = far.start.z[0] + 1e-4, y = far.start.z[1];
   bool stuck = far.start.z[1] == q.base.v;
@@ -119,10 +119,10 @@ TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
 
 TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   OrbitBranchOptions o = Options();
-  const ForcedParams p = StribeckScene(0.7);
-  const ForcedModel m(p);
+  const ForcedBeltParams p = StribeckScene(0.7);
+  const ForcedBelt m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
-  ShootingOptions oo(ForcedModel::FlowDefaults());
+  ShootingOptions oo(ForcedBelt::FlowDefaults());
   oo.flow = o.shooting.flow;
   const PeriodicOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
   ASSERT_TRUE(orbit.ok());

@@ -29,7 +29,7 @@ namespace {
 namespace ref = forced_reference;
 using ref::Real;
 
-const ForcedParams kFloor = ref::Coulomb(0.3, 0.3, 0, 0, 1, 1);
+const ForcedBeltParams kFloor = ref::Coulomb(0.3, 0.3, 0, 0, 1, 1);
 
 ref::Setup SetupAt(Real w) {
   return ref::Setup{reference::Law(kFloor.base), Real(0), Real(0), Real(1), w};
@@ -106,7 +106,7 @@ struct Events {
   Real omega1a, omega1b, omega2;
 };
 Events ReferenceEvents() {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.max_amplitude = 20;
   const OrbitBranch b = testing_util::TraceOmega(kFloor, 0.48, 0.4801, o);
   EXPECT_FALSE(b.rows.empty()) << b.message;
@@ -160,13 +160,13 @@ TEST(ForcedSwitchingSliding, DenHartogFloorReferenceHasCrossingThenGrazingSlidin
 // fix the crossings-only changes were SW (at 0.4807234 in the app's run,
 // at 0.49999998 (sticks 1 -> 1, crossings 1 -> 2... ) here).
 TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
-  OrbitBranchOptions o(ForcedModel::FlowDefaults());
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.max_amplitude = 20;
   o.palc.ds_max = 0.009;  // ss_continue's 0.02 |to - from|
   o.palc.ds = std::min(o.palc.ds, o.palc.ds_max);
-  ForcedParams p0 = kFloor;
+  ForcedBeltParams p0 = kFloor;
   p0.omega = 0.3;
-  const ForcedModel m0(p0);
+  const ForcedBelt m0(p0);
   const FlowRun tr =
       testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0), 200 * m0.period(), {}, o.shooting.flow);
   const OrbitBranch b =

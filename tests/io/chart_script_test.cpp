@@ -29,7 +29,7 @@ SystemChart Chart(double from1, double to1, double from2, double to2) {
 }
 
 std::string Script(const SystemChart& c) {
-  return SystemChartScript(ForcedModel(ForcedParams()), c, "test", FigureFormat::kPng);
+  return SystemChartScript(ForcedBelt(ForcedBeltParams()), c, "test", FigureFormat::kPng);
 }
 
 // The style of a plot line: from "lw" to "title" (width, colour, dashes).

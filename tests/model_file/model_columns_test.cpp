@@ -1,6 +1,6 @@
 // Parameter columns derived from a model file (compiled.hpp, model_taylor.cpp):
 // dz/dp of a run against the built-in forced oscillator's hand-written columns
-// (ForcedModel: belt_taylor.cpp, a field and saltations of its own) and,
+// (ForcedBelt: belt_taylor.cpp, a field and saltations of its own) and,
 // where the built-in has none, against central differences of runs at a
 // tighter tolerance; then the forced Stribeck branch with its PD points,
 // through the one branch driver, row by row against the built-in's.
@@ -35,8 +35,8 @@ contact F = x' - v
 law F = mu_k + (mu_s - mu_k)*exp(-s/v_s)
 )";
 
-ForcedParams StribeckBuiltIn() {
-  ForcedParams p;
+ForcedBeltParams StribeckBuiltIn() {
+  ForcedBeltParams p;
   p.base.law = LawKind::kStribeck;
   p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
   p.force = 0.3, p.omega = 0.8;
@@ -44,7 +44,7 @@ ForcedParams StribeckBuiltIn() {
 }
 
 FlowOptions ColumnTol(double tol) {
-  FlowOptions o = ForcedModel::FlowDefaults();
+  FlowOptions o = ForcedBelt::FlowDefaults();
   o.rtol = o.atol = tol;
   return o;
 }
@@ -66,7 +66,7 @@ FlowRun ColumnRun(const System& s, int j, double t_end, double tol) {
 
 TEST(ModelColumns, ARunsColumnIsTheBuiltInsOrCentralDifferences) {
   const std::unique_ptr<System> file = ParseModel(kStribeckForced, "stribeck_forced.ini");
-  const ForcedModel built(StribeckBuiltIn());
+  const ForcedBelt built(StribeckBuiltIn());
   const double t_end = 25;  // several stick phases and exits
   int against_builtin = 0, against_differences = 0;
   double worst_builtin = 0, worst_differences = 0;
@@ -114,7 +114,7 @@ TEST(ModelColumns, ARunsColumnIsTheBuiltInsOrCentralDifferences) {
 // parameter columns exact, the same steps, rows and special points.
 TEST(ModelColumns, TheForcedStribeckBranchIsTheBuiltInsRowByRow) {
   const std::unique_ptr<System> file = ParseModel(kStribeckForced, "stribeck_forced.ini");
-  const ForcedModel built(StribeckBuiltIn());
+  const ForcedBelt built(StribeckBuiltIn());
   SettleOptions so;
   so.shooting.flow = ColumnTol(1e-12);
   const SettledOrbit start = SettleOnStickSlip(built, Eigen::Vector3d(0, 0, 0), so);

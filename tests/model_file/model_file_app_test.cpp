@@ -122,7 +122,7 @@ TEST_F(ModelFileApp, TheChainFileGivesTheBuiltInBranch) {
 // The forced belt written as a model file (clock theta = omega) through
 // ss_continue's one system path (a stroboscopic settle, the one branch
 // driver) against the built-in forced oscillator's --force path
-// (studies/seed_forced.ini, ForcedModel's hand-written field): the same
+// (studies/seed_forced.ini, ForcedBelt's hand-written field): the same
 // special points in the same order. Then the PD's doubled branch from a
 // restart of each.
 TEST_F(ModelFileApp, TheForcedFileGivesTheForcedOscillatorsSpecialPoints) {

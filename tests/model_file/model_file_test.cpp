@@ -104,20 +104,20 @@ TEST(ModelFile, ShootingFindsTheSameOrbitWithTheSameMultipliers) {
   EXPECT_EQ(a.sticks, b.sticks);
 }
 
-// The forced belt (a clock theta' = omega in the file) against ForcedModel:
+// The forced belt (a clock theta' = omega in the file) against ForcedBelt:
 // the seed_forced study's trajectory from (0, v, 0), and its stroboscopic
 // period-1 orbit at Omega = 0.8 with its multipliers.
 TEST(ModelFile, TheForcedFileRunsAsTheBuiltInForcedOscillator) {
   const std::unique_ptr<System> file = ReadModel(kModels + "forced.ini");
   ASSERT_EQ(file->clocks(), 1);
   EXPECT_EQ(file->StateName(2), "theta");
-  ForcedParams p;  // the seed set, A = 0.3, Omega = 0.6
+  ForcedBeltParams p;  // the seed set, A = 0.3, Omega = 0.6
   p.force = 0.3, p.omega = 0.6;
-  const ForcedModel built(p);
+  const ForcedBelt built(p);
   ExpectSameRows(*file, built, Eigen::Vector3d(0, 0.25, 0), 300, 1e-11);
   file->SetParameterValue(file->ParameterIndex("omega"), 0.8);
   p.omega = 0.8;
-  const ForcedModel at(p);
+  const ForcedBelt at(p);
   ShootingOptions o;
   o.flow.rtol = o.flow.atol = 1e-12;
   const FlowPoint guess{0, Eigen::Vector3d(0.6, 0.1, 0), ModeSet()};

@@ -24,16 +24,16 @@ using ref::Real;
 using ref::Coulomb;
 
 // The forced tools' search: the forced flow's defaults, the model's box.
-OrbitSearchOptions ForcedSearch(const ForcedModel& model) {
+OrbitSearchOptions ForcedSearch(const ForcedBelt& model) {
   OrbitSearchOptions o;
-  o.orbit = ShootingOptions(ForcedModel::FlowDefaults());
+  o.orbit = ShootingOptions(ForcedBelt::FlowDefaults());
   o.half_width = model.SearchBox();
   return o;
 }
 
-FoundOrbits Scan(const ForcedParams& p, bool model_box = true) {
+FoundOrbits Scan(const ForcedBeltParams& p, bool model_box = true) {
   const auto t0 = std::chrono::steady_clock::now();
-  const ForcedModel model(p);
+  const ForcedBelt model(p);
   OrbitSearchOptions o = ForcedSearch(model);
   if (!model_box) o.half_width = {0, 0};
   const FoundOrbits r = FindOrbits(model, o);
@@ -75,7 +75,7 @@ TEST(OrbitSearch, FindsDenHartogsNonStopOrbit) {
 
 // Each orbit's stroboscopic points are mapped onto each other by the
 // closed-form simulation, which sticks as often.
-void CheckAgainstClosedForm(const ForcedParams& p, const FoundOrbits& r) {
+void CheckAgainstClosedForm(const ForcedBeltParams& p, const FoundOrbits& r) {
   for (const FoundOrbit& o : r.orbits) {
     ASSERT_EQ(static_cast<int>(o.points.size()), o.m);
     ref::PieceSim<ref::CoulombPiece> sim(
@@ -93,7 +93,7 @@ void CheckAgainstClosedForm(const ForcedParams& p, const FoundOrbits& r) {
 }
 
 TEST(OrbitSearch, FloorStickSlipOrbitsAgreeWithTheClosedForm) {
-  const ForcedParams p = Coulomb(0.4, 0.3, 0.05, 0, 0.7, 0.6);
+  const ForcedBeltParams p = Coulomb(0.4, 0.3, 0.05, 0, 0.7, 0.6);
   const FoundOrbits r = Scan(p);
   ASSERT_TRUE(r.ok());
   int stick_slip = 0;
@@ -103,7 +103,7 @@ TEST(OrbitSearch, FloorStickSlipOrbitsAgreeWithTheClosedForm) {
 }
 
 TEST(OrbitSearch, BeltStickSlipOrbitsAgreeWithTheClosedForm) {
-  const ForcedParams p = Coulomb(0.4, 0.25, 0.05, 0.2, 0.3, 0.8);
+  const ForcedBeltParams p = Coulomb(0.4, 0.25, 0.05, 0.2, 0.3, 0.8);
   const FoundOrbits r = Scan(p);
   ASSERT_TRUE(r.ok());
   ASSERT_FALSE(r.orbits.empty());
@@ -115,7 +115,7 @@ TEST(OrbitSearch, BeltStickSlipOrbitsAgreeWithTheClosedForm) {
 // with the m = 1 orbit unstable; the long-double RKF78 reference maps its two
 // stroboscopic points onto each other.
 TEST(OrbitSearch, FindsThePeriodDoubledOrbit) {
-  ForcedParams p;
+  ForcedBeltParams p;
   p.base.law = LawKind::kStribeck;
   p.base.beta = 0.05, p.base.v = 0.25, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v_s = 0.2;
   p.force = 0.3, p.omega = 0.612;
@@ -142,7 +142,7 @@ TEST(OrbitSearch, FindsThePeriodDoubledOrbit) {
 }
 
 TEST(OrbitSearch, RejectsBadOptions) {
-  const ForcedModel model(Coulomb(0.3, 0.3, 0, 0, 1, 1.5));
+  const ForcedBelt model(Coulomb(0.3, 0.3, 0, 0, 1, 1.5));
   OrbitSearchOptions o;
   o.max_m = 0;
   EXPECT_THROW(FindOrbits(model, o), InvalidArgument);
@@ -164,7 +164,7 @@ TEST(OrbitSearch, RejectsBadOptions) {
 }
 
 TEST(OrbitSearch, CancelKeepsWhatWasFound) {
-  const ForcedModel model(Coulomb(0.3, 0.3, 0, 0, 1, 1.5));
+  const ForcedBelt model(Coulomb(0.3, 0.3, 0, 0, 1, 1.5));
   OrbitSearchOptions o = ForcedSearch(model);
   int polls = 0;
   const FoundOrbits all = FindOrbits(model, o);

@@ -153,10 +153,10 @@ TEST(SettledBatch, MisuseIsRefusedByName) {
   o = SettledOptions(1);
   o.settle.transient = -1;
   EXPECT_THROW(SettledOrbits(belt, cols, o), InvalidArgument);
-  ForcedParams fp;
+  ForcedBeltParams fp;
   fp.force = 0.1;
   try {
-    SettledOrbits(ForcedModel(fp), {{ForcedModel::kOmegaIndex, {1.0}}}, SettledOptions(1));
+    SettledOrbits(ForcedBelt(fp), {{ForcedBelt::kOmegaIndex, {1.0}}}, SettledOptions(1));
     ADD_FAILURE() << "a clocked system was taken";
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("StroboscopicOrbits"), std::string::npos) << e.what();

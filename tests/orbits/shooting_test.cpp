@@ -89,8 +89,8 @@ TEST(Shooting, BeltPureSlipOnASurfaceMatchesTheReference) {
 namespace ref = forced_reference;
 using ref::Real;
 
-ForcedParams Floor(double w) {
-  ForcedParams p;
+ForcedBeltParams Floor(double w) {
+  ForcedBeltParams p;
   p.base.law = LawKind::kCoulomb;
   p.base.mu_s = p.base.mu_k = 0.3;
   p.base.beta = 0, p.base.v = 0;
@@ -103,7 +103,7 @@ ForcedParams Floor(double w) {
 // against its closed-form pieces in tests/forced/forced_orbit_test.cpp.
 TEST(Shooting, StroboscopicMapFindsDenHartogsNonStopOrbits) {
   for (double w : {0.75, 0.9, 1.3, 2.0}) {
-    const ForcedModel m(Floor(w));
+    const ForcedBelt m(Floor(w));
     Shooting shooting(m, TightShooting());
     const Eigen::Vector3d z(1 / (1 - w * w), 0.01, 0);
     const PeriodicOrbit o =
@@ -121,7 +121,7 @@ TEST(Shooting, StroboscopicMapFindsDenHartogsNonStopOrbits) {
 }
 
 // The closed-form map over t_end from (t0, x, y): its end.
-Eigen::Vector2d ClosedFormMap(const ForcedParams& p, Real t0, Real x, Real y, Real t_end) {
+Eigen::Vector2d ClosedFormMap(const ForcedBeltParams& p, Real t0, Real x, Real y, Real t_end) {
   ref::PieceSim<ref::CoulombPiece> sim(
       ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
   sim.Run(t0, x, y, t_end);
@@ -133,9 +133,9 @@ Eigen::Vector2d ClosedFormMap(const ForcedParams& p, Real t0, Real x, Real y, Re
 // same multipliers from both sections' Jacobians (the stick exit's carries
 // the clock's column from the flow identity).
 TEST(Shooting, ForcedOrbitThroughTwoSectionsHasOneSetOfMultipliers) {
-  ForcedParams p = Floor(0.8);
+  ForcedBeltParams p = Floor(0.8);
   p.base.beta = 0.05, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v = 0.2, p.force = 0.3;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   Shooting shooting(m, TightShooting());
   const Eigen::Vector3d z0(0.3, 0.2, 0);
   const PeriodicOrbit strobe =
@@ -178,9 +178,9 @@ TEST(Shooting, ForcedOrbitThroughTwoSectionsHasOneSetOfMultipliers) {
 // rest, the forced Coulomb belt above reaches a periodic attractor whose
 // point the coulomb closed form maps onto itself over its m periods.
 TEST(Shooting, AClockedSystemSettlesOnItsStroboscopicMap) {
-  ForcedParams p = Floor(0.8);
+  ForcedBeltParams p = Floor(0.8);
   p.base.beta = 0.05, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v = 0.2, p.force = 0.3;
-  const ForcedModel m(p);
+  const ForcedBelt m(p);
   SettleOptions o;
   o.shooting = TightShooting();
   const SettledOrbit st = SettleOnStickSlip(m, Eigen::Vector3d(0, 0, 0), o);

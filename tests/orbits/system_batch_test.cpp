@@ -21,11 +21,11 @@ using ref::Real;
 
 // The coulomb belt of forced_orbit_test's closed-form scenes: mu_k 0.25,
 // beta 0.05, v 0.2, A 0.3.
-ForcedParams Belt() { return ref::Coulomb(0.4, 0.25, 0.05, 0.2, 0.3, 0.8); }
+ForcedBeltParams Belt() { return ref::Coulomb(0.4, 0.25, 0.05, 0.2, 0.3, 0.8); }
 
 // Omega over [0.6, 1.2] by mu_s over [0.3, 0.5], Omega slowest.
 std::vector<SystemColumn> BatchGrid(int nw, int nmu) {
-  SystemColumn w{ForcedModel::kOmegaIndex, {}}, mu{static_cast<int>(Parameter::kMuS), {}};
+  SystemColumn w{ForcedBelt::kOmegaIndex, {}}, mu{static_cast<int>(Parameter::kMuS), {}};
   for (int i = 0; i < nw; ++i)
     for (int j = 0; j < nmu; ++j) {
       w.values.push_back(0.6 + 0.6 * i / (nw - 1));
@@ -42,15 +42,15 @@ SystemBatchOptions BatchOptions(int threads) {
   return o;
 }
 
-ForcedParams RowParams(const ForcedParams& base, const std::vector<SystemColumn>& cols,
-                       std::size_t i) {
-  ForcedModel m(base);
+ForcedBeltParams RowParams(const ForcedBeltParams& base, const std::vector<SystemColumn>& cols,
+                           std::size_t i) {
+  ForcedBelt m(base);
   for (const SystemColumn& c : cols) m.SetParameterValue(c.parameter, c.values[i]);
   return m.params();
 }
 
 // The closed-form map over t_end from (x, y) at t = 0.
-Vec2 ClosedFormMap(const ForcedParams& p, Real x, Real y, Real t_end) {
+Vec2 ClosedFormMap(const ForcedBeltParams& p, Real x, Real y, Real t_end) {
   ref::PieceSim<ref::CoulombPiece> sim(
       ref::Setup{reference::Law(p.base), p.base.beta, p.base.v, p.force, p.omega});
   Real t = 0;
@@ -59,9 +59,9 @@ Vec2 ClosedFormMap(const ForcedParams& p, Real x, Real y, Real t_end) {
 }
 
 TEST(SystemBatch, ForcedRowsAreFixedPointsOfTheClosedFormMap) {
-  const ForcedParams base = Belt();
+  const ForcedBeltParams base = Belt();
   const auto cols = BatchGrid(7, 5);
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(base), cols, BatchOptions(2));
+  const SystemBatch b = StroboscopicOrbits(ForcedBelt(base), cols, BatchOptions(2));
   ASSERT_EQ(b.rows(), 35u);
   ASSERT_EQ(b.tangent, 2);
   EXPECT_TRUE(b.error.empty()) << b.error;
@@ -69,7 +69,7 @@ TEST(SystemBatch, ForcedRowsAreFixedPointsOfTheClosedFormMap) {
   int with_sticks = 0, multiples = 0;
   for (std::size_t i = 0; i < b.rows(); ++i) {
     if (b.status[i] != OrbitStatus::kOk) continue;
-    const ForcedParams p = RowParams(base, cols, i);
+    const ForcedBeltParams p = RowParams(base, cols, i);
     const double x0 = b.start[2 * i], y0 = b.start[2 * i + 1];
     EXPECT_NEAR(b.period[i], b.m[i] * 2 * M_PI / p.omega, 1e-13 * b.period[i]);
     const Vec2 end = ClosedFormMap(p, x0, y0, b.period[i]);
@@ -95,15 +95,15 @@ TEST(SystemBatch, ForcedRowsAreFixedPointsOfTheClosedFormMap) {
 // Every row equals the single-orbit API (ShootStroboscopic, the forced
 // adapter) started from the row's point with the row's m.
 TEST(SystemBatch, ForcedRowsEqualTheSingleOrbitApi) {
-  const ForcedParams base = Belt();
+  const ForcedBeltParams base = Belt();
   const auto cols = BatchGrid(5, 4);
   const SystemBatchOptions opt = BatchOptions(1);
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(base), cols, opt);
-  ShootingOptions fo(ForcedModel::FlowDefaults());
+  const SystemBatch b = StroboscopicOrbits(ForcedBelt(base), cols, opt);
+  ShootingOptions fo(ForcedBelt::FlowDefaults());
   fo.flow.rtol = fo.flow.atol = 1e-13;
   for (std::size_t i = 0; i < b.rows(); ++i) {
     if (b.status[i] != OrbitStatus::kOk) continue;
-    const ForcedModel model(RowParams(base, cols, i));
+    const ForcedBelt model(RowParams(base, cols, i));
     const PeriodicOrbit o =
         ShootStroboscopic(model, b.start[2 * i], b.start[2 * i + 1], b.m[i], fo);
     ASSERT_TRUE(o.ok()) << "row " << i << ": " << o.message;
@@ -119,14 +119,14 @@ TEST(SystemBatch, ForcedRowsEqualTheSingleOrbitApi) {
 }
 
 TEST(SystemBatch, NonStopRowsMatchDenHartog) {
-  ForcedParams base = ref::Coulomb(0.3, 0.3, 0, 0, 1, 1.3);
-  SystemColumn w{ForcedModel::kOmegaIndex, {1.3, 1.5, 1.75, 2, 2.25, 2.5}};
+  ForcedBeltParams base = ref::Coulomb(0.3, 0.3, 0, 0, 1, 1.3);
+  SystemColumn w{ForcedBelt::kOmegaIndex, {1.3, 1.5, 1.75, 2, 2.25, 2.5}};
   SystemBatchOptions o = BatchOptions(2);
   o.start = Eigen::Vector3d(-0.5, 0.0, 0);
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.transient = 0;  // Newton from the start: the undamped approach is slow
   o.max_m = 1;
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(base), {w}, o);
+  const SystemBatch b = StroboscopicOrbits(ForcedBelt(base), {w}, o);
   for (std::size_t i = 0; i < b.rows(); ++i) {
     ASSERT_EQ(b.status[i], OrbitStatus::kOk) << "Omega = " << w.values[i];
     EXPECT_EQ(b.sticks[i], 0);
@@ -138,8 +138,8 @@ TEST(SystemBatch, NonStopRowsMatchDenHartog) {
 
 TEST(SystemBatch, OneAndTwoThreadsGiveTheSameColumns) {
   const auto cols = BatchGrid(12, 10);
-  const SystemBatch one = StroboscopicOrbits(ForcedModel(Belt()), cols, BatchOptions(1));
-  const SystemBatch two = StroboscopicOrbits(ForcedModel(Belt()), cols, BatchOptions(2));
+  const SystemBatch one = StroboscopicOrbits(ForcedBelt(Belt()), cols, BatchOptions(1));
+  const SystemBatch two = StroboscopicOrbits(ForcedBelt(Belt()), cols, BatchOptions(2));
   EXPECT_EQ(one.threads, 1);
   EXPECT_EQ(two.threads, 2);
   EXPECT_EQ(one.status, two.status);
@@ -154,17 +154,17 @@ TEST(SystemBatch, OneAndTwoThreadsGiveTheSameColumns) {
 }
 
 // The seed belt forced at A 0.3 (studies/seed_forced.ini).
-ForcedParams BatchSeed(double w) { return ref::SeedBelt(0.25, 0.3, w); }
+ForcedBeltParams BatchSeed(double w) { return ref::SeedBelt(0.25, 0.3, w); }
 
 TEST(SystemBatch, FailedRowsKeepTheirStatusAndZeros) {
   // Omega 0.52: no period up to 4 (the orbit diagram's chaotic band); one
   // Newton step from the start: kNotConverged.
-  SystemColumn w{ForcedModel::kOmegaIndex, {0.52, 0.53}};
+  SystemColumn w{ForcedBelt::kOmegaIndex, {0.52, 0.53}};
   SystemBatchOptions o = BatchOptions(1);
   o.start = Eigen::Vector3d(0, 0, 0);
-  SystemBatch b = StroboscopicOrbits(ForcedModel(BatchSeed(0.52)), {w}, o);
+  SystemBatch b = StroboscopicOrbits(ForcedBelt(BatchSeed(0.52)), {w}, o);
   o.transient = 0, o.max_m = 1, o.shooting.max_newton = 1;
-  const SystemBatch c = StroboscopicOrbits(ForcedModel(BatchSeed(0.52)), {w}, o);
+  const SystemBatch c = StroboscopicOrbits(ForcedBelt(BatchSeed(0.52)), {w}, o);
   for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_EQ(b.status[i], OrbitStatus::kAperiodic);
     EXPECT_EQ(c.status[i], OrbitStatus::kNotConverged);
@@ -183,17 +183,17 @@ TEST(SystemBatch, FailedRowsKeepTheirStatusAndZeros) {
 // after 2 (complex multipliers). The row is still the period-1 orbit, equal to
 // the single-orbit API's, not a doubled copy of it.
 TEST(SystemBatch, SlowlyAttractingOrbitsKeepTheirLeastPeriod) {
-  SystemColumn w{ForcedModel::kOmegaIndex, {1.45, 1.5}};
+  SystemColumn w{ForcedBelt::kOmegaIndex, {1.45, 1.5}};
   SystemBatchOptions o = BatchOptions(2);
   o.start = Eigen::Vector3d(0, 0, 0);
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(BatchSeed(1.45)), {w}, o);
-  ShootingOptions fo(ForcedModel::FlowDefaults());
+  const SystemBatch b = StroboscopicOrbits(ForcedBelt(BatchSeed(1.45)), {w}, o);
+  ShootingOptions fo(ForcedBelt::FlowDefaults());
   fo.flow.rtol = fo.flow.atol = 1e-13;
   for (std::size_t i = 0; i < 2; ++i) {
     ASSERT_EQ(b.status[i], OrbitStatus::kOk) << i;
     EXPECT_EQ(b.m[i], 1) << i;
     EXPECT_GT(b.multiplier[i], 0.8) << i;
-    const PeriodicOrbit r = ShootStroboscopic(ForcedModel(BatchSeed(w.values[i])), b.start[2 * i],
+    const PeriodicOrbit r = ShootStroboscopic(ForcedBelt(BatchSeed(w.values[i])), b.start[2 * i],
                                               b.start[2 * i + 1], 1, fo);
     ASSERT_TRUE(r.ok());
     EXPECT_NEAR(std::abs(r.multipliers[0]), b.multiplier[i], 1e-9);
@@ -210,7 +210,7 @@ TEST(SystemBatch, CancelStopsTheRowsAndReportsProgress) {
     o.progress = [&](std::size_t done) { last = done; };
     // 10^4 rows (~0.25 s on two threads): the pool polls the hook every
     // 20 ms, so most rows are still queued when it fires.
-    const SystemBatch b = StroboscopicOrbits(ForcedModel(Belt()), BatchGrid(40, 250), o);
+    const SystemBatch b = StroboscopicOrbits(ForcedBelt(Belt()), BatchGrid(40, 250), o);
     EXPECT_TRUE(b.cancelled) << threads;
     const auto cancelled = std::count(b.status.begin(), b.status.end(), OrbitStatus::kCancelled);
     EXPECT_GT(cancelled, 5000) << threads;
@@ -223,7 +223,7 @@ TEST(SystemBatch, CancelStopsTheRowsAndReportsProgress) {
   }
   SystemBatchOptions o = BatchOptions(1);
   o.cancelled = [] { return true; };
-  const SystemBatch b = StroboscopicOrbits(ForcedModel(Belt()), BatchGrid(3, 3), o);
+  const SystemBatch b = StroboscopicOrbits(ForcedBelt(Belt()), BatchGrid(3, 3), o);
   EXPECT_TRUE(b.cancelled);
   EXPECT_EQ(b.found(), 0u);
 }
@@ -231,7 +231,7 @@ TEST(SystemBatch, CancelStopsTheRowsAndReportsProgress) {
 void ExpectRefused(const std::vector<SystemColumn>& cols, const SystemBatchOptions& o,
                    const std::string& needle) {
   try {
-    StroboscopicOrbits(ForcedModel(Belt()), cols, o);
+    StroboscopicOrbits(ForcedBelt(Belt()), cols, o);
     ADD_FAILURE() << "accepted; expected " << needle;
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
@@ -244,10 +244,10 @@ TEST(SystemBatch, BadColumnsAndOptionsAreRefusedBeforeAnyWork) {
   ExpectRefused({}, o, "no parameter column");
   ExpectRefused({{99, {1.0}}}, o, "parameter index 99");
   ExpectRefused({{mu, {0.4}}, {mu, {0.4}}}, o, "'mu_s' is given twice");
-  ExpectRefused({{mu, {0.4, 0.4}}, {ForcedModel::kOmegaIndex, {1.0}}}, o, "differ in length");
+  ExpectRefused({{mu, {0.4, 0.4}}, {ForcedBelt::kOmegaIndex, {1.0}}}, o, "differ in length");
   ExpectRefused({{mu, {0.4, -1.0}}}, o, "row 1 (mu_s = -1): mu_s");
   ExpectRefused({{mu, {0.4, NAN}}}, o, "row 1: mu_s = nan");
-  ExpectRefused({{ForcedModel::kOmegaIndex, {1.0, 0.0}}}, o, "row 1 (omega = 0): omega");
+  ExpectRefused({{ForcedBelt::kOmegaIndex, {1.0, 0.0}}}, o, "row 1 (omega = 0): omega");
   SystemBatchOptions bad = o;
   bad.max_m = 0;
   ExpectRefused({{mu, {0.4}}}, bad, "max_m = 0");
@@ -259,7 +259,7 @@ TEST(SystemBatch, BadColumnsAndOptionsAreRefusedBeforeAnyWork) {
   ExpectRefused({{mu, {0.4}}}, bad, "the start has 2 components");
   bad = o, bad.threads = -1;
   ExpectRefused({{mu, {0.4}}}, bad, "threads = -1");
-  EXPECT_EQ(StroboscopicOrbits(ForcedModel(Belt()), {{mu, {}}}, o).rows(), 0u);
+  EXPECT_EQ(StroboscopicOrbits(ForcedBelt(Belt()), {{mu, {}}}, o).rows(), 0u);
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ namespace stickslip {
 struct LyapunovOptions {
   /// transient's and keep's upper bound (1e6 returns each), as the apps'.
   static constexpr int kMaxPeriods = 1000000;
-  FlowOptions flow = ForcedModel::FlowDefaults();
+  FlowOptions flow = ForcedBelt::FlowDefaults();
   int transient = 500;   ///< returns (forcing periods) discarded
   int keep = 200;        ///< returns recorded (section points, exponent)
   int align = 50;        ///< last transient returns that align the tangent matrix

@@ -88,6 +88,6 @@ struct OrbitDiagram {
 OrbitDiagram ComputeOrbitDiagram(const System& base, int parameter,
                                  const OrbitDiagramOptions& options);
 /// The forced oscillator, options.axis swept (any of the law's, force, omega).
-OrbitDiagram ComputeOrbitDiagram(const ForcedParams& base, const OrbitDiagramOptions& options);
+OrbitDiagram ComputeOrbitDiagram(const ForcedBeltParams& base, const OrbitDiagramOptions& options);
 
 }  // namespace stickslip

@@ -42,7 +42,7 @@ struct Plane {
   // is blamed on the range end that reaches it (from the corner (from, from2)
   // along each edge), or on the rectangle.
   PlaneError Check(const Params& base) const;
-  // base (Params or ForcedParams) with the two axes set to (x1, x2).
+  // base (Params or ForcedBeltParams) with the two axes set to (x1, x2).
   template <class P>
   P At(const P& base, double x1, double x2) const {
     P q = base;

@@ -1,5 +1,5 @@
 // The forced oscillator's branches on the one branch driver (orbit_branch.hpp):
-// the stroboscopic residual P^m(z; p) - z = 0 in (x, x', p) of ForcedModel,
+// the stroboscopic residual P^m(z; p) - z = 0 in (x, x', p) of ForcedBelt,
 // started from its parameters and a guess (x, x') at theta = 0. The rows,
 // special points (LP, PD, NS, GR, AD, CR, SL: special_kind.hpp) and statuses
 // are the driver's; a row's start is (x, x', theta).
@@ -30,10 +30,10 @@ inline constexpr int kMaxPeriodMultiple = 1000;
 
 /// Traces the branch of m-periodic orbits (m in [1, kMaxPeriodMultiple])
 /// through the orbit near (x_guess, xdot_guess) at p = from toward p = to.
-/// The forced tools pass OrbitBranchOptions(ForcedModel::FlowDefaults()).
+/// The forced tools pass OrbitBranchOptions(ForcedBelt::FlowDefaults()).
 /// Throws InvalidArgument on invalid parameters, options or a non-finite
 /// guess. options.palc.cancelled (if set) is polled before every correction.
-OrbitBranch ContinueForced(const ForcedParams& base, ParameterAxis axis, double from, double to,
+OrbitBranch ContinueForced(const ForcedBeltParams& base, ParameterAxis axis, double from, double to,
                            double x_guess, double xdot_guess, int m,
                            const OrbitBranchOptions& options);
 
@@ -48,7 +48,8 @@ OrbitBranch ContinueForced(const ForcedParams& base, ParameterAxis axis, double 
 /// the point has no multiplier near -1 or the start falls back onto the m
 /// orbit. Throws InvalidArgument on invalid parameters, options or bounds
 /// (lo < p_PD < hi).
-OrbitBranch ContinueDoubled(const ForcedParams& at_pd, ParameterAxis axis, double x0, double xdot0,
-                            double lo, double hi, int m, const OrbitBranchOptions& options);
+OrbitBranch ContinueDoubled(const ForcedBeltParams& at_pd, ParameterAxis axis, double x0,
+                            double xdot0, double lo, double hi, int m,
+                            const OrbitBranchOptions& options);
 
 }  // namespace stickslip

@@ -52,7 +52,7 @@ bool BeltTaylorField::Bind(const System& s, const ModeSet& m) {
     law = &belt->friction();
     forced_ = false;
     force_ = omega_ = 0;
-  } else if (const auto* f = dynamic_cast<const ForcedModel*>(&s)) {
+  } else if (const auto* f = dynamic_cast<const ForcedBelt*>(&s)) {
     q_ = f->params().base;
     law = &f->friction();
     forced_ = true;
@@ -231,8 +231,8 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
 void BeltTaylorField::ResolveParameter() {
   const int j = *request_.parameter;
   mu_shifted_.reset();
-  if (forced_ && (j == ForcedModel::kForceIndex || j == ForcedModel::kOmegaIndex)) {
-    kind_ = j == ForcedModel::kForceIndex ? ParamKind::kForce : ParamKind::kOmega;
+  if (forced_ && (j == ForcedBelt::kForceIndex || j == ForcedBelt::kOmegaIndex)) {
+    kind_ = j == ForcedBelt::kForceIndex ? ParamKind::kForce : ParamKind::kOmega;
     parameter_.reset();
     return;
   }
@@ -264,7 +264,7 @@ std::unique_ptr<TaylorField> Model::MakeTaylorField(const TaylorRequest& request
   return std::make_unique<BeltTaylorField>(request);
 }
 
-std::unique_ptr<TaylorField> ForcedModel::MakeTaylorField(const TaylorRequest& request) const {
+std::unique_ptr<TaylorField> ForcedBelt::MakeTaylorField(const TaylorRequest& request) const {
   return std::make_unique<BeltTaylorField>(request);
 }
 

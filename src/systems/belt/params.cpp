@@ -125,7 +125,7 @@ ParameterRange DefaultRange(const Params& base, const ParameterAxis& axis) {
   }
 }
 
-ParameterRange DefaultRange(const ForcedParams& base, const ParameterAxis& axis) {
+ParameterRange DefaultRange(const ForcedBeltParams& base, const ParameterAxis& axis) {
   switch (axis.id()) {
     case Parameter::kOmega:
       return {0.75, 2.5};

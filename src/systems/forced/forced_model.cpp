@@ -8,7 +8,7 @@
 
 namespace stickslip {
 
-std::string ValidationError(const ForcedParams& p) {
+std::string ValidationError(const ForcedBeltParams& p) {
   if (!std::isfinite(p.force) || p.force < 0)
     return "force = " + Num(p.force, 12) + " must be a finite number >= 0";
   if (!std::isfinite(p.omega) || p.omega <= 0)
@@ -31,17 +31,17 @@ std::string ValidationError(const ForcedParams& p) {
 }
 
 namespace {
-const ForcedParams& Checked(const ForcedParams& p) {
+const ForcedBeltParams& Checked(const ForcedBeltParams& p) {
   const std::string e = ValidationError(p);
   if (!e.empty()) throw InvalidArgument(e);
   return p;
 }
 }  // namespace
 
-ForcedModel::ForcedModel(const ForcedParams& p)
+ForcedBelt::ForcedBelt(const ForcedBeltParams& p)
     : p_(Checked(p)), friction_(p.base), two_beta_(2 * p.base.beta) {}
 
-Mat2 ForcedModel::Jacobian(Mode m, double /*t*/, const Vec2& z) const {
+Mat2 ForcedBelt::Jacobian(Mode m, double /*t*/, const Vec2& z) const {
   Mat2 J = Mat2::Zero();
   if (m == Mode::kStick) return J;
   const double slope =
@@ -50,20 +50,20 @@ Mat2 ForcedModel::Jacobian(Mode m, double /*t*/, const Vec2& z) const {
   return J;
 }
 
-std::array<double, 2> ForcedModel::SearchBox() const {
+std::array<double, 2> ForcedBelt::SearchBox() const {
   const double w = omega(), b = beta();
   const double r = force() / std::max({std::abs(1 - w * w), 2 * b * w, 0.2}) + static_limit() + v();
   return {r, r * std::max(1.0, w)};
 }
 
-Mode ForcedModel::ModeAfterArrival(Mode from, double t, double x) const {
+Mode ForcedBelt::ModeAfterArrival(Mode from, double t, double x) const {
   const double f = StickForce(t, x);
   if (std::abs(f) <= p_.base.mu_s) return Mode::kStick;
   (void)from;
   return f > 0 ? Mode::kSlipBelow : Mode::kSlipAbove;
 }
 
-Mat2 ForcedModel::SaltationCrossing(Mode before, Mode after, double t, double x) const {
+Mat2 ForcedBelt::SaltationCrossing(Mode before, Mode after, double t, double x) const {
   // h = x' - v, grad h = (0, 1), dh/dt = 0: S = I + (f+ - f-) (0, 1) / a-.
   const Vec2 z(x, v());
   const Vec2 df = Field(after, t, z) - Field(before, t, z);
@@ -72,7 +72,7 @@ Mat2 ForcedModel::SaltationCrossing(Mode before, Mode after, double t, double x)
   return S;
 }
 
-Mat2 ForcedModel::SaltationStickOut(Mode after, double t, double x) const {
+Mat2 ForcedBelt::SaltationStickOut(Mode after, double t, double x) const {
   // h = StickForce(t, x) -+ mu_s, grad h = (1, 0), grad h . f_stick + dh/dt = StickForceRate.
   const Vec2 z(x, v());
   const Vec2 df = Field(after, t, z) - Field(Mode::kStick, t, z);
@@ -86,15 +86,15 @@ Mat2 ForcedModel::SaltationStickOut(Mode after, double t, double x) const {
 // --- The system interface: state (x, x', theta), theta' = Omega ---
 namespace stickslip {
 
-bool ForcedModel::Assign(const System& s) {
-  const auto* m = dynamic_cast<const ForcedModel*>(&s);
+bool ForcedBelt::Assign(const System& s) {
+  const auto* m = dynamic_cast<const ForcedBelt*>(&s);
   if (m) *this = *m;
   return m != nullptr;
 }
 
-std::string ForcedModel::StateName(int i) const { return i == 0 ? "x" : i == 1 ? "x'" : "theta"; }
+std::string ForcedBelt::StateName(int i) const { return i == 0 ? "x" : i == 1 ? "x'" : "theta"; }
 
-ContactVelocity ForcedModel::Contact(int) const {
+ContactVelocity ForcedBelt::Contact(int) const {
   ContactVelocity c;
   c.terms[0] = {1, 1.0};
   c.size = 1;
@@ -102,19 +102,19 @@ ContactVelocity ForcedModel::Contact(int) const {
   return c;
 }
 
-double ForcedModel::StickForce(const ModeSet&, int, ConstState z) const {
+double ForcedBelt::StickForce(const ModeSet&, int, ConstState z) const {
   return z[0] + two_beta_ * v() - p_.force * std::cos(z[2]);
 }
 
-void ForcedModel::StickForceGradient(const ModeSet&, int, ConstState z, StateOut g) const {
+void ForcedBelt::StickForceGradient(const ModeSet&, int, ConstState z, StateOut g) const {
   g << 1.0, 0.0, p_.force * std::sin(z[2]);
 }
 
-void ForcedModel::ProjectOnExit(const ModeSet&, int, double bound, StateOut z) const {
+void ForcedBelt::ProjectOnExit(const ModeSet&, int, double bound, StateOut z) const {
   z[0] = bound - two_beta_ * v() + p_.force * std::cos(z[2]);
 }
 
-void ForcedModel::Field(const ModeSet& m, ConstState z, StateOut f) const {
+void ForcedBelt::Field(const ModeSet& m, ConstState z, StateOut f) const {
   if (m[0] == Mode::kStick) {
     f << v(), 0.0, p_.omega;
     return;
@@ -122,38 +122,38 @@ void ForcedModel::Field(const ModeSet& m, ConstState z, StateOut f) const {
   f << z[1], -z[0] - two_beta_ * z[1] + SlipForce(m[0], z[1]) + p_.force * std::cos(z[2]), p_.omega;
 }
 
-void ForcedModel::Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const {
+void ForcedBelt::Jacobian(const ModeSet& m, ConstState z, MatrixOut J) const {
   J = Jacobian(m[0], 0.0, Vec2(z[0], z[1]));
 }
 
-bool ForcedModel::Rest(const ModeSet& m, StateOut z, bool* stable) const {
+bool ForcedBelt::Rest(const ModeSet& m, StateOut z, bool* stable) const {
   if (p_.force != 0 || m[0] != Mode::kSlipBelow || !(v() > 0)) return false;
   z << friction_.Mu(v()), 0.0, 0.0;  // steady sliding, as Model::SteadySliding
   *stable = two_beta_ + friction_.DMu(v()) > 0;
   return true;
 }
 
-bool ForcedModel::SupportsParameterColumn(int j) const {
+bool ForcedBelt::SupportsParameterColumn(int j) const {
   if (j == kForceIndex || j == kOmegaIndex) return true;
   return j >= 0 && j < kForceIndex &&
          ParameterColumnSupported(p_.base.law, ParameterAxis(static_cast<Parameter>(j)));
 }
 
-ContactSensitivity ForcedModel::ContactParameterDerivative(const ModeSet&, int, int j,
-                                                           ConstState z) const {
+ContactSensitivity ForcedBelt::ContactParameterDerivative(const ModeSet&, int, int j,
+                                                          ConstState z) const {
   if (j == kForceIndex) return {0, -std::cos(z[2]), 0};
   return j < kForceIndex ? BeltContactDerivative(p_.base, j) : ContactSensitivity{};
 }
 
-int ForcedModel::parameters() const { return kOmegaIndex + 1; }
+int ForcedBelt::parameters() const { return kOmegaIndex + 1; }
 
-std::string ForcedModel::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
+std::string ForcedBelt::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
 
-double ForcedModel::ParameterValue(int j) const {
+double ForcedBelt::ParameterValue(int j) const {
   return ParameterAxis(static_cast<Parameter>(j)).Get(p_);
 }
 
-void ForcedModel::SetParameterValue(int j, double value) {
+void ForcedBelt::SetParameterValue(int j, double value) {
   const ParameterAxis axis(static_cast<Parameter>(j));
   axis.Set(p_, value);
   if (axis.forcing()) return;

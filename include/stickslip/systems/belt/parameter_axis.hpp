@@ -1,6 +1,6 @@
 // A parameter of the friction oscillators as a type, the one lens: the
 // continued parameter, a chart's axes, the parameter column, for the belt
-// (Params) and the forced oscillator (ForcedParams: the belt's and force,
+// (Params) and the forced oscillator (ForcedBeltParams: the belt's and force,
 // omega). Its index is the parameter's index in either System (model.hpp,
 // forced.hpp). Resolved once to the member it stands for, so that a point on
 // the axis is one assignment. Names are read and written at the edges only
@@ -15,7 +15,7 @@
 
 namespace stickslip {
 
-/// One parameter of Params or ForcedParams.
+/// One parameter of Params or ForcedBeltParams.
 class ParameterAxis {
  public:
   ParameterAxis(Parameter id)  // NOLINT: implicit
@@ -25,7 +25,7 @@ class ParameterAxis {
   explicit ParameterAxis(const std::string& name);
 
   Parameter id() const { return id_; }
-  /// The parameter's index in a System's parameters (Model, ForcedModel).
+  /// The parameter's index in a System's parameters (Model, ForcedBelt).
   int index() const { return static_cast<int>(id_); }
   /// A parameter of the forcing (force, omega), which the belt has not.
   bool forcing() const { return member_ == nullptr; }
@@ -36,10 +36,10 @@ class ParameterAxis {
   /// The belt's value; throws InvalidArgument on a forcing axis.
   double Get(const Params& p) const { return p.*Member(); }
   void Set(Params& p, double value) const { p.*Member() = value; }
-  double Get(const ForcedParams& p) const {
+  double Get(const ForcedBeltParams& p) const {
     return member_ ? p.base.*member_ : id_ == Parameter::kForce ? p.force : p.omega;
   }
-  void Set(ForcedParams& p, double value) const {
+  void Set(ForcedBeltParams& p, double value) const {
     (member_ ? p.base.*member_ : id_ == Parameter::kForce ? p.force : p.omega) = value;
   }
   /// base with this parameter set to value.

@@ -50,7 +50,7 @@ struct Params {
 
 /// The parameters of the friction oscillators by name, in the order of their
 /// System parameter indexes: the belt's (the members of Params), then the
-/// forcing's (force A and omega, ForcedParams). EnumNames<Parameter> is the
+/// forcing's (force A and omega, ForcedBeltParams). EnumNames<Parameter> is the
 /// one table of their printed names (options, TSV columns and metadata).
 enum class Parameter { kBeta, kV, kMuS, kMuM, kVM, kMuK, kVS, kDelta, kK5, kForce, kOmega };
 template <>
@@ -118,19 +118,19 @@ void Validate(const Params& p);
 /// The belt parameters plus a harmonic forcing A cos(Omega t) (forced.hpp).
 /// Here v >= 0 (v = 0: a fixed floor) and the coulomb law may have mu_k =
 /// mu_s (Den Hartog).
-struct ForcedParams {
+struct ForcedBeltParams {
   Params base;
   double force = 0;  ///< A, in the unit of the friction coefficients
   double omega = 1;  ///< Omega, forcing over natural frequency
 };
 
 /// Empty if valid, else one line naming the offending value.
-std::string ValidationError(const ForcedParams& p);
+std::string ValidationError(const ForcedBeltParams& p);
 
 /// The forced oscillator's default range of a parameter: omega 0.75 -> 2.5,
 /// force 0.1 -> 2, v 0 -> 0.5 (from the fixed floor), beta 0 -> 0.3, the
 /// others as the belt's (DefaultRange above).
-ParameterRange DefaultRange(const ForcedParams& base, const ParameterAxis& axis);
+ParameterRange DefaultRange(const ForcedBeltParams& base, const ParameterAxis& axis);
 
 /// Physical inputs and the seed's scaling (section 3): L = M g / K,
 /// omega0 = sqrt(K / M), t0 = 1 / omega0, 2 beta = C / sqrt(K M),

@@ -1,4 +1,4 @@
-// The forced oscillator's points on the one flow (flow/flow.hpp): ForcedModel
+// The forced oscillator's points on the one flow (flow/flow.hpp): ForcedBelt
 // is a system with the phase theta = Omega t, so a run of it is a Flow::Run
 // from a ForcedStart.
 #pragma once
@@ -12,9 +12,9 @@ namespace stickslip {
 /// The forced oscillator's state at time t as a start of the one flow: (x, x',
 /// theta = Omega t) with Filippov's mode: slip by the sign of x' - v; on x' = v
 /// stick inside the band, else the slip side the force points to.
-FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot);
+FlowPoint ForcedStart(const ForcedBelt& m, double t, double x, double xdot);
 /// The same in a given mode (trusted; x' = v in stick).
-FlowPoint ForcedStart(const ForcedModel& m, double t, double x, double xdot, Mode mode);
+FlowPoint ForcedStart(const ForcedBelt& m, double t, double x, double xdot, Mode mode);
 
 /// The extremes of x and x' from recorded extremes of the components 0, 1
 /// (a run's, an orbit's or a branch row's lo and hi), else Extrema::Empty().

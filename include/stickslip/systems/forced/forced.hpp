@@ -21,14 +21,14 @@ namespace stickslip {
 /// theta' = Omega (a clock, COCO's way of making forcing autonomous), state
 /// (x, x', theta); its parameters are the belt's (Parameter's order), then
 /// force and omega.
-class ForcedModel final : public System {
+class ForcedBelt final : public System {
  public:
   static constexpr int kStateSize = 2;
   /// The parameter indexes of A and Omega (after the belt's).
   static constexpr int kForceIndex = static_cast<int>(Parameter::kForce),
                        kOmegaIndex = static_cast<int>(Parameter::kOmega);
   /// Throws InvalidArgument naming the offending value.
-  explicit ForcedModel(const ForcedParams& p);
+  explicit ForcedBelt(const ForcedBeltParams& p);
   /// The tolerance its tools default to (rtol = atol): at the belt's 1e-11
   /// the branch corrector, tol 1e-11, stalls on the flow's noise.
   static constexpr double kFlowTol = 1e-12;
@@ -42,7 +42,7 @@ class ForcedModel final : public System {
   }
 
   // --- The system interface (theta = Omega t) ---
-  std::unique_ptr<System> Clone() const override { return std::make_unique<ForcedModel>(*this); }
+  std::unique_ptr<System> Clone() const override { return std::make_unique<ForcedBelt>(*this); }
   bool Assign(const System& s) override;
   std::string ValidationError() const override { return stickslip::ValidationError(p_); }
   int dimension() const override { return 3; }
@@ -72,7 +72,7 @@ class ForcedModel final : public System {
   double ParameterValue(int j) const override;
   void SetParameterValue(int j, double value) override;
 
-  const ForcedParams& params() const { return p_; }
+  const ForcedBeltParams& params() const { return p_; }
   const Friction& friction() const { return friction_; }
   double v() const { return p_.base.v; }
   double beta() const { return p_.base.beta; }
@@ -127,7 +127,7 @@ class ForcedModel final : public System {
   Mat2 SaltationStickOut(Mode after, double t, double x) const;
 
  private:
-  ForcedParams p_;
+  ForcedBeltParams p_;
   Friction friction_;
   double two_beta_;
 };
