@@ -907,3 +907,37 @@ CHECKS += [
     ("The blocks stick about 1.2 times per time unit", "1.2", "chain10_sim",
      lambda r: r.printed(r"(\d+) sticks") / 300),
 ]
+
+# docs/systems.md: the chain's orbit diagram (kc = 0.5, 400 values, seconds).
+RUNS["chain2_od"] = (FAST, "ss_orbit_diagram", study(
+    "chain2", "--set", "kc=0.5", "--from", "0.05", "--to", "0.45", "--n", "200", "--transient",
+    "300", "--keep", "100"), "")
+
+
+def od_value(r, direction, v, col, table="lyapunov.tsv"):
+    """Column col of the first row of that sweep nearest v."""
+    rows = [q for q in r.table(table) if q["direction"] == direction]
+    return float(min(rows, key=lambda q: abs(float(q["v"]) - v))[col])
+
+
+CHECKS += [
+    ("maximum 0.6494 at v = 0.3, λ₁ = −0.328)", "0.6494", "chain2_od",
+     lambda r: od_value(r, "up", 0.3, "x1_max")),
+    ("maximum 0.6494 at v = 0.3, λ₁ = −0.328)", "0.328", "chain2_od",
+     lambda r: -od_value(r, "up", 0.3, "lyapunov")),
+    ("starts at v = 0.05 with the blocks out of step (x1's maximum 0.430, x2", "0.430",
+     "chain2_od", lambda r: od_value(r, "up", 0.05, "x1_max")),
+    ("0.429 at the section). It falls into step at v = 0.146", "0.429", "chain2_od",
+     lambda r: od_value(r, "up", 0.05, "x2", "orbit_diagram.tsv")),
+    ("out of step (x1 0.444, x2 0.418 at v = 0.05)", "0.444", "chain2_od",
+     lambda r: od_value(r, "down", 0.05, "x1_max")),
+    ("out of step (x1 0.444, x2 0.418 at v = 0.05)", "0.418", "chain2_od",
+     lambda r: od_value(r, "down", 0.05, "x2", "orbit_diagram.tsv")),
+    ("the same λ₁ at each v (−0.51017 at v = 0.05)", "0.51017", "chain2_od",
+     lambda r: -od_value(r, "up", 0.05, "lyapunov")),
+    ("the same λ₁ at each v (−0.51017 at v = 0.05)", "0.51017", "chain2_od",
+     lambda r: -od_value(r, "down", 0.05, "lyapunov")),
+    ("+0.0048) lie where the in-step orbit turns unstable", "0.0048", "chain2_od",
+     lambda r: max(float(q["lyapunov"]) for q in r.table("lyapunov.tsv"))),
+    ("−0.00725 at v = 0.45", "0.00725", "chain2_od", lambda r: -od_value(r, "up", 0.45, "lyapunov")),
+]
