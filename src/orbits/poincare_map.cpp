@@ -94,6 +94,28 @@ void Shooting::Residual(const FlowPoint& z, const PoincareSection& p) {
   if (n > nt) r_[nt] -= 2 * M_PI * p.turns;
 }
 
+namespace {
+
+// A contact other than the section's that sticks at the section point stays
+// on its stick set when a parameter moves that set (a chain's block at belt
+// speed v, continued in v): the map starts on it. True if a start moved.
+bool OntoStickSets(const System& s, const PoincareSection& section, FlowPoint* at) {
+  if (section.kind == SectionKind::kTime) return false;  // its mode follows the state
+  bool moved = false;
+  for (int c = 0; c < s.contacts(); ++c) {
+    if (!at->mode.sticks(c) || (section.kind == SectionKind::kStickExit && c == section.contact))
+      continue;
+    const ContactVelocity h = s.Contact(c);
+    const double slack = Tolerances::StickStart(h.speed, s.StaticLimit(c, at->z));
+    if (std::abs(h.At(at->z.data())) <= slack) continue;  // on it, as the flow takes it
+    OntoSurface(h, at->z);
+    moved = true;
+  }
+  return moved;
+}
+
+}  // namespace
+
 bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jacobian,
                    Eigen::VectorXd* residual, PeriodicOrbit* orbit) {
   Check(section);
@@ -112,6 +134,7 @@ bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jaco
     const ContactVelocity h = s.Contact(section.contact);
     if (std::abs(h.At(at.z.data())) <= Tolerances::StickStart(h.speed, 0)) OntoSurface(h, at.z);
   }
+  const bool moved = OntoStickSets(s, section, &at);
   Prepare(at, section, jacobian, true);
   if (!Evaluate(at, section, orbit)) return false;
   if (jacobian) {
@@ -125,6 +148,7 @@ bool Shooting::Map(const FlowPoint& z, const PoincareSection& section, bool jaco
     orbit->steps = run_.steps;
   }
   orbit->status = OrbitStatus::kOk;
+  if (moved) r_ += at.z - z.z;  // P(at) - z: the corrector moves the stuck components too
   *residual = r_;
   return true;
 }

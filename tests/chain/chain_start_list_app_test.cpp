@@ -153,6 +153,36 @@ TEST_F(ChainStartListApp, ABranchOnItsOwnSectionRestartsOnIt) {
     EXPECT_NEAR(Cell(u, row, c), Cell(t, last, c), 1e-9) << c;
 }
 
+// Identical blocks at kc = 0.5, v = 0.05: the out-of-step orbit comes as two
+// mirror images (blocks swapped), orbits 2 and 3 of the list. On one, block 2
+// sticks at the section point (x2' = v): as v moves, the map starts with x2'
+// at the new v (it stopped, "stick mode requested off the stick set"). Both
+// branches reach v = 0.1, each the other's mirror there.
+TEST_F(ChainStartListApp, AStuckBlockFollowsTheBeltAsVMoves) {
+  std::vector<std::vector<std::string>> last;
+  tu::Tsv t;
+  for (const char* n : {"2", "3"}) {
+    const std::string dir = NewDir();
+    const AppRun r = RunOut("ss_continue", dir,
+                            {"--study", kChain, "--set", "kc=0.5", "--from", "0.05", "--to", "0.1",
+                             "--start_at", "0.05", "--point", n});
+    ASSERT_EQ(r.outcome.code, 0) << n << ": " << r.err;
+    t = tu::ReadTsv(tu::ReadFile(dir + "/out/branch.tsv"));
+    const auto b = Branches(t);
+    ASSERT_EQ(b.count(1), 1u);
+    const auto end = std::max_element(b.at(1).begin(), b.at(1).end(), [&](auto& a, auto& c) {
+      return Cell(t, a, "v") < Cell(t, c, "v");
+    });
+    EXPECT_EQ(Cell(t, *end, "v"), 0.1);
+    last.push_back(*end);
+  }
+  EXPECT_NEAR(Cell(t, last[0], "period"), Cell(t, last[1], "period"), 1e-9);
+  for (const char* c : {"_min", "_max", "dot_min", "dot_max"})
+    EXPECT_NEAR(Cell(t, last[0], std::string("x1") + c), Cell(t, last[1], std::string("x2") + c),
+                1e-9)
+        << c;
+}
+
 // A scan cut short by --max_time continues nothing and says so: the time
 // limit's exit code (1) and status, never a --point refused for a short list.
 TEST_F(ChainStartListApp, AScanCutShortByTheTimeLimitSaysSo) {
