@@ -106,6 +106,23 @@ void RestrictToTail(const double* c, int n, double u, double* out) {
 }
 
 namespace {
+// Horner(a, n, u) and Horner(b, n, u) in one loop: the same operations in the
+// same order as each alone, their four chains interleaved.
+inline void HornerPair(const double* a, const double* b, int n, double u, double* ga, double* gb) {
+  const double u2 = u * u;
+  int k = n % 2 == 0 ? n : n - 1;  // highest even index
+  double ea = a[k], oa = n % 2 == 1 ? a[n] : 0.0;
+  double eb = b[k], ob = n % 2 == 1 ? b[n] : 0.0;
+  for (k -= 2; k >= 0; k -= 2) {
+    ea = ea * u2 + a[k];
+    oa = oa * u2 + a[k + 1];
+    eb = eb * u2 + b[k];
+    ob = ob * u2 + b[k + 1];
+  }
+  *ga = ea + u * oa;
+  *gb = eb + u * ob;
+}
+
 // The first point of [u0, u1] where sign * g has changed sign, given that it
 // has at u1 and not at u0: Newton on the polynomial, safeguarded by the
 // bracket [lo, hi] (g has `sign` at lo and not at hi), then bisection.
@@ -118,13 +135,14 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
     const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
     if (xs > u0 && xs < u1) x = xs;
   }
-  // g' by its own coefficients: two independent even/odd Horner chains each
-  // (one serial chain for g and g' together bounded the loop's latency).
-  double dc[kMaxDegree];
+  // g' by its own coefficients (dc_n = 0: Horner to degree n gives g' as
+  // to n - 1); g and g' in one loop of four independent chains.
+  double dc[kMaxDegree + 1];
   for (int k = 1; k <= n; ++k) dc[k - 1] = k * c[k];
+  dc[n] = 0;
   for (int it = 0; it < Tolerances::kPolyNewtonCap; ++it) {
-    const double dg = n >= 1 ? Horner(dc, n - 1, x) : 0.0;
-    const double gx = g(x);
+    double gx, dg;
+    HornerPair(c, dc, n, x, &gx, &dg);
     (Sign(gx, zero_sign) != sign ? hi : lo) = x;
     double next = x - gx / dg;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
