@@ -124,14 +124,16 @@ inline void HornerPair(const double* a, const double* b, int n, double u, double
 }
 
 // The first point of [u0, u1] where sign * g has changed sign, given that it
-// has at u1 and not at u0: Newton on the polynomial, safeguarded by the
-// bracket [lo, hi] (g has `sign` at lo and not at hi), then bisection.
-double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, double u1) {
+// has at u1 (g1 = g(u1), the caller's) and not at u0: Newton on the
+// polynomial, safeguarded by the bracket [lo, hi] (g has `sign` at lo and not
+// at hi), then bisection.
+double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, double u1,
+                  double g1) {
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
   double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
-  const double g0 = u0 == 0 ? c[0] : g(u0), g1 = g(u1);  // g(0) = c_0, as Horner gives it
-  if (g0 != g1) {  // start from the secant (regula falsi) point
+  const double g0 = u0 == 0 ? c[0] : g(u0);  // g(0) = c_0, as Horner gives it
+  if (g0 != g1) {                            // start from the secant (regula falsi) point
     const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
     if (xs > u0 && xs < u1) x = xs;
   }
@@ -195,7 +197,10 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
   // Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no
   // isolation needed.
   if (Monotone(c, n)) {
-    if (changed(1.0)) out = {true, RefineRoot(c, n, sign, zero_sign, 0.0, 1.0)};
+    out.monotone = true;
+    const double g1 = g(1.0);
+    if (Sign(g1, zero_sign) != sign)
+      out.found = true, out.u = RefineRoot(c, n, sign, zero_sign, 0.0, 1.0, g1);
     return out;
   }
 
@@ -221,7 +226,8 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
       continue;
     }
     const double u0 = p.u0, u1 = p.u1;
-    const bool end_changed = changed(u1);
+    const double g1 = g(u1);
+    const bool end_changed = Sign(g1, zero_sign) != sign;
     const bool isolated = variations == 1 && end_changed && !changed(u0);
     // Within rounding of 0 (lower >= -margin), only a sign change that shows
     // in the values counts: halving further would chase noise.
@@ -238,7 +244,7 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
         return out;
       }
       out.found = true;
-      out.u = RefineRoot(c, n, sign, zero_sign, u0, u1);
+      out.u = RefineRoot(c, n, sign, zero_sign, u0, u1, g1);
       return out;
     }
     // Halve: the right half below the left one on the stack.

@@ -209,7 +209,7 @@ void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, 
     // contacts leaving stick at once): a touch, passed, not a step of 0.
     const bool touch = deflated && f.surface && ta_ + u * h == ta_ && -sign == zero_sign;
     if (u > roots.first || roots.Add(i, u, -sign, !touch && ev.Stops(i, -sign)) || u >= 1) return;
-    if (guard == 0 && Monotone(gi, deg)) return;  // the only root on [0, 1]
+    if (guard == 0 && pr.monotone) return;  // the only root on [0, 1]
     // Passed: go on from u with g / (w - u) (the root is not an event twice).
     sign = -sign;
     RestrictToTail(gi, deg, u, rest);
