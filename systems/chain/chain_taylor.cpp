@@ -29,7 +29,6 @@ class ChainField final : public TaylorField {
     const auto* c = dynamic_cast<const Chain*>(&s);
     if (!c) return false;
     chain_ = c;
-    mode_ = m;
     const int n = c->blocks();
     laws_.resize(n);
     inverse_mass_.resize(n);
@@ -39,12 +38,19 @@ class ChainField final : public TaylorField {
       inverse_mass_[i] = 1 / c->params().blocks[i].m;
       cubic_ = cubic_ && laws_[i].law == LawKind::kCubic;
     }
+    rest_.resize(n);
+    has_rest_ = c->RestPositions(rest_.data());
+    return BindMode(m);
+  }
+  // Every block sliding below: the step measures x_i about its rest position.
+  bool BindMode(const ModeSet& m) override {
+    const int n = chain_->blocks();
+    mode_ = m;
     sticking_ = m.Sticking();
     center_.assign(2 * n, 0.0);
-    bool below = true;
-    for (int i = 0; i < n; ++i) below = below && m[i] == Mode::kSlipBelow;
-    rest_.resize(n);
-    if (below && c->RestPositions(rest_.data()))
+    bool below = has_rest_;
+    for (int i = 0; i < n && below; ++i) below = m[i] == Mode::kSlipBelow;
+    if (below)
       for (int i = 0; i < n; ++i) center_[2 * i] = rest_[i];
     return true;
   }
@@ -72,6 +78,7 @@ class ChainField final : public TaylorField {
   ModeSet mode_;
   int sticking_ = 0;
   bool cubic_ = false;
+  bool has_rest_ = false;  // rest_ holds the rest positions (Chain::RestPositions)
   std::vector<LawSeries> laws_;
   std::vector<double> center_, rest_, inverse_mass_;
 };

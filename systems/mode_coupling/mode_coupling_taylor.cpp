@@ -26,6 +26,9 @@ class CouplingField final : public TaylorField {
     if (!o) return false;
     p_ = o->params();
     law_.Set(p_.law);
+    return BindMode(m);
+  }
+  bool BindMode(const ModeSet& m) override {
     stick_ = m.sticks(0);
     sigma_ = m[0] == Mode::kSlipBelow ? 1.0 : -1.0;
     return true;

@@ -27,8 +27,12 @@ class ModelField final : public TaylorField {
   bool Bind(const System& s, const ModeSet& m) override {
     const auto* o = dynamic_cast<const ModelSystem*>(&s);
     if (!o) return false;
-    program_ = &o->Program(m);
+    model_ = o;
     params_ = o->values();
+    return BindMode(m);
+  }
+  bool BindMode(const ModeSet& m) override {
+    program_ = &model_->Program(m);
     aux_ = 2 * m.Sticking();
     prepared_ = nullptr;  // the constant rows are the new mode's, at these parameters
     return true;
@@ -50,7 +54,8 @@ class ModelField final : public TaylorField {
   void Entries(const Tape& tape, const std::vector<int>& jacobian, int n);
   void Cauchy(const Entry& e, const double* q, int k, double* s) const;
 
-  std::optional<int> parameter_;  // the column's, if the runs ask for one
+  std::optional<int> parameter_;        // the column's, if the runs ask for one
+  const ModelSystem* model_ = nullptr;  // the bound system
   const ModeProgram* program_ = nullptr;
   std::vector<double> params_;
   int aux_ = 0;
