@@ -304,7 +304,10 @@ bool Engine::Done(FlowStatus s) {
   r.end.mode = mode_;
   r.jacobian = M_;
   r.has_dzdp = column_ && !column_lost_;
-  r.dzdp = column_ ? C_ : Eigen::VectorXd::Zero(nt_);
+  if (column_)
+    r.dzdp = C_;
+  else
+    r.dzdp.setZero(nt_);  // no temporary: a run's end allocates nothing once warm
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.
   const bool sampled = r.switches > 0 && last_switch_t_ == t_;

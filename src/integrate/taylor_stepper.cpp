@@ -15,8 +15,10 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   p_ = &problem;
   // The system's recurrences for this mode (taylor_field.hpp); Bind refuses
   // a system of another type.
-  const bool bound = field_ && problem.system_epoch >= 0 && problem.system == bound_system_ &&
-                     problem.system_epoch == bound_epoch_ && problem.mode == bound_mode_;
+  // The same system and values in another mode: BindMode, if the field can.
+  const bool same = field_ && problem.system_epoch >= 0 && problem.system == bound_system_ &&
+                    problem.system_epoch == bound_epoch_;
+  const bool bound = same && (problem.mode == bound_mode_ || field_->BindMode(problem.mode));
   if (!bound && (!field_ || !field_->Bind(*problem.system, problem.mode))) {
     TaylorRequest rq;
     rq.variational = variational_;

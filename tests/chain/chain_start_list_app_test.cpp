@@ -185,11 +185,19 @@ TEST_F(ChainStartListApp, AStuckBlockFollowsTheBeltAsVMoves) {
 
 // A scan cut short by --max_time continues nothing and says so: the time
 // limit's exit code (1) and status, never a --point refused for a short list.
+// 1 ms may run out in the scan or, on a loaded machine, already in the
+// steady-sliding branch before it (the scan is then not run): either way the
+// log says which phase was cut and the files' status is partial.
 TEST_F(ChainStartListApp, AScanCutShortByTheTimeLimitSaysSo) {
   const std::string dir = NewDir();
   const AppRun r = RunOut("ss_continue", dir, At({"--point", "2", "--max_time", "0.001"}));
   EXPECT_EQ(r.outcome.code, 1) << r.err;
-  EXPECT_TRUE(tu::Contains(r.out, "the scan was cut short")) << r.out;
+  const bool in_scan = tu::Contains(r.out, "the scan was cut short");
+  const bool before_scan = tu::Contains(r.out, "steady sliding: ") &&
+                           tu::Contains(r.out, " rows, cancelled") &&
+                           !tu::Contains(r.out, "start orbits at");
+  EXPECT_TRUE(in_scan || before_scan) << r.out;
+  EXPECT_TRUE(tu::Contains(tu::ReadFile(dir + "/out/branch.tsv"), "# status: partial: ")) << dir;
   EXPECT_FALSE(tu::Contains(r.err, "--point")) << r.err;
 }
 

@@ -37,6 +37,10 @@ class TaylorField {
   /// At the start of a segment: mode m of system s. False if s is not of the
   /// type that made this field (the stepper then asks s for a new one).
   virtual bool Bind(const System& s, const ModeSet& m) = 0;
+  /// After Bind, the same system with the same values in another mode m:
+  /// true if the field switched to m without reading the system again
+  /// (a mode change at every switch); false (the default): Bind is called.
+  virtual bool BindMode(const ModeSet& /*m*/) { return false; }
   /// After Bind: the auxiliary rows this mode fills (at least two per
   /// sticking contact: lambda_i, then its static limit).
   virtual int AuxRows() const = 0;

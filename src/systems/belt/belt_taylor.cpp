@@ -26,9 +26,6 @@ namespace {
 // measured time per forcing period is least (docs/benchmarks.md).
 constexpr double kLinearWork = 25, kStepMargin = 0.7 + 1.4;
 int OrderByWork(double eps) {
-  thread_local double last_eps = 0;
-  thread_local int last_order = 0;
-  if (eps == last_eps) return last_order;
   const double L = -std::log(eps) + kStepMargin;
   int best = 2;
   double best_work = INFINITY;
@@ -36,7 +33,6 @@ int OrderByWork(double eps) {
     const double work = std::log(p * (p + kLinearWork)) + L / (p - 1);
     if (work < best_work) best_work = work, best = p;
   }
-  last_eps = eps, last_order = best;
   return best;
 }
 // JZ (3.8): p = ceil(-ln(eps) / 2 + 1), as the stepper's OrderFor.
@@ -65,21 +61,38 @@ bool BeltTaylorField::Bind(const System& s, const ModeSet& m) {
   v_ = q_.v;
   two_beta_ = 2 * q_.beta;
   mu_s_ = q_.mu_s;
-  stick_ = m[0] == Mode::kStick;
-  sigma_ = m[0] == Mode::kSlipBelow ? 1 : -1;
   const Friction& friction = *law;
   // The series' entries are cleared or set before they are read, each step
   // (the leading zeros are never written): a new law only needs a new one.
   if (!mu_ || !mu_->Of(friction)) mu_.emplace(friction);
   cubic3_ = law_ == LawKind::kCubic && mu_->cubic(5) == 0;
-  x_center_ = !forced_ && m[0] == Mode::kSlipBelow ? friction.Mu(v_) : 0.0;
+  friction_ = &friction;
+  mu_v_ = NAN;  // mu(v), read in slip below only (BindMode)
   if (request_.parameter) ResolveParameter();
+  return BindMode(m);
+}
+
+bool BeltTaylorField::BindMode(const ModeSet& m) {
+  stick_ = m[0] == Mode::kStick;
+  sigma_ = m[0] == Mode::kSlipBelow ? 1 : -1;
+  if (!forced_ && m[0] == Mode::kSlipBelow && std::isnan(mu_v_)) mu_v_ = friction_->Mu(v_);
+  x_center_ = !forced_ && m[0] == Mode::kSlipBelow ? mu_v_ : 0.0;
   return true;
 }
 
 int BeltTaylorField::ExtraOrder(double eps, bool in_steps) const {
   if (stick_) return 0;
-  if (forced_) return in_steps ? 0 : std::max(0, OrderByWork(eps) - JzOrder(eps));
+  if (forced_) {
+    if (in_steps) return 0;
+    // Two tolerances (rtol, atol) a stepper asks for at every segment: cached.
+    for (const ExtraCache& e : extra_cache_)
+      if (e.eps == eps) return e.extra;
+    ExtraCache& e = extra_cache_[next_cache_];
+    next_cache_ ^= 1;
+    e.eps = eps;
+    e.extra = std::max(0, OrderByWork(eps) - JzOrder(eps));
+    return e.extra;
+  }
   const bool affine_column = request_.parameter && kind_ == ParamKind::kAffine;
   return cubic3_ && !affine_column ? Tolerances::kTaylorExtraOrderCubic : 0;
 }

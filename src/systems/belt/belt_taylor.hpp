@@ -24,6 +24,7 @@ class BeltTaylorField final : public TaylorField {
   explicit BeltTaylorField(const TaylorRequest& rq) : request_(rq) {}
 
   bool Bind(const System& s, const ModeSet& m) override;
+  bool BindMode(const ModeSet& m) override;
   int AuxRows() const override { return stick_ ? 2 : (forced_ ? 2 : 0); }
   void Coefficients(int order, const TaylorLayout& layout, TaylorRow* c) override;
   // The seed law's loop (Cubic3) only: the other laws keep JZ's rule (at
@@ -80,6 +81,16 @@ class BeltTaylorField final : public TaylorField {
   bool forced_ = false;  // + A cos(theta), theta' = Omega (state row 2)
   double force_ = 0, omega_ = 0, mu_s_ = 0;
   double x_center_ = 0;  // steady sliding's x in slip below (ScaleCenter)
+  // The bound system's law and mu(v) (x_center_ in slip below; NaN: not yet).
+  const Friction* friction_ = nullptr;
+  // ExtraOrder of the forced field's last two tolerances (it depends on eps only).
+  struct ExtraCache {
+    double eps = NAN;
+    int extra = 0;
+  };
+  mutable ExtraCache extra_cache_[2];
+  mutable int next_cache_ = 0;
+  double mu_v_ = 0;
   // The series of s = sigma (v - x'), of -2 beta - mu'(s), of cos, sin theta.
   Series<kTaylorMaxOrder + 1> s_, cc_, cos_, sin_;
   std::optional<MuSeries> mu_;
