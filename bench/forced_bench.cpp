@@ -11,7 +11,8 @@
 #include <functional>
 #include <vector>
 
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 #include "tests/forced_reference.hpp"
 
 namespace {
@@ -112,6 +113,17 @@ void NonStopOrbit(double rtol) {
       std::abs(OrbitExtrema(exact).x_max - std::sqrt(V * V - 0.09 * U * U)));
 }
 
+// The m = 1 branch in Omega from `from` to `to` through the Den Hartog guess
+// (x, x') = (1 / (1 - Omega^2), 0.01) at theta = 0: the one driver on the
+// stroboscopic section, as ss_continue --force runs it.
+OrbitBranch DenHartogBranch(double from, double to, const OrbitBranchOptions& o) {
+  const ForcedBelt m(DenHartog(from));
+  const FlowPoint guess{0, Eigen::Vector3d(1 / (1 - from * from), 0.01, 0),
+                        ModeSet(Mode::kSlipBelow)};
+  return ContinueOrbits(m, ParameterAxis(Parameter::kOmega).index(), guess,
+                        PoincareSection::Stroboscopic(m, guess.z, 1), to, o);
+}
+
 void DenHartogRun() {
   OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-12;
@@ -123,9 +135,7 @@ void DenHartogRun() {
         rows = 0;
         for (const double from : {0.75, 2.5}) {
           const double to = from == 0.75 ? 2.5 : 0.75;
-          rows += ContinueForced(DenHartog(from), Parameter::kOmega, from, to,
-                                 1 / (1 - from * from), 0.01, 1, o)
-                      .rows.size();
+          rows += DenHartogBranch(from, to, o).rows.size();
         }
       },
       11);

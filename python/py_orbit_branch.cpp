@@ -12,7 +12,6 @@
 #include <memory>
 
 #include "stickslip/chaos/lyapunov.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/systems/belt/model.hpp"

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "forced_reference.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 
 namespace stickslip::forced_reference {
 

@@ -9,15 +9,15 @@
 #include "cli/about.hpp"
 #include "cli/app.hpp"
 #include "cli/simulate_forced.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/io/figure_style.hpp"
+#include "stickslip/orbits/forced_orbit.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
 
 namespace stickslip::cli {
 
 namespace {
 
-constexpr int kMaxPeriodMultiple = 12;  // the scan's work grows like max_m^2
+constexpr int kMaxScanMultiple = 12;  // the scan's work grows like max_m^2
 
 // The script plots only the series that have points (gnuplot fails on a
 // series that is NaN throughout): stable and unstable stroboscopic points,
@@ -57,9 +57,9 @@ int ForcedOrbitsApp(const Arguments& args, const std::string& prog, const std::s
   so.orbit = ShootingOptions(in.flow);
   so.half_width = model.SearchBox();
   so.max_m = static_cast<int>(args.Integer("max_m", so.max_m));
-  if (so.max_m < 1 || so.max_m > kMaxPeriodMultiple)
+  if (so.max_m < 1 || so.max_m > kMaxScanMultiple)
     throw UsageError("invalid value '" + args.Text("max_m") + "' for " + args.Source("max_m") +
-                     ": must be an integer in [1, " + std::to_string(kMaxPeriodMultiple) + "]");
+                     ": must be an integer in [1, " + std::to_string(kMaxScanMultiple) + "]");
   const FigureFormat format = FigureFormatOf(args);
   const std::string figure = FigureFile("orbits", format);
   AppRun app(prog, args, "plots/orbits", {"orbits.tsv", "orbits.gp", figure});

@@ -19,17 +19,6 @@ using Eigen::VectorXd;
 using orbit_detail::OrbitProblem;
 using orbit_detail::TracePoint;
 
-std::string OrbitBranchOptions::ValidationError() const {
-  std::string e = shooting.ValidationError();
-  if (!e.empty()) return e;
-  if (!(max_amplitude > 0) || !std::isfinite(max_amplitude))
-    return "max_amplitude = " + Num(max_amplitude) + " must be a finite number > 0";
-  if (!(locate_tol > 0 && locate_tol < 1))
-    return "locate_tol = " + Num(locate_tol) + " must be in (0, 1)";
-  if (max_jumps < 0) return "max_jumps = " + std::to_string(max_jumps) + " must be >= 0";
-  return "";
-}
-
 namespace {
 
 // One trace's monitor: rows, the end at p = to, the special points between
@@ -264,29 +253,6 @@ void Trace(Palc& palc, OrbitProblem& problem, Monitor& monitor, VectorXd u0, int
 
 namespace orbit_detail {
 
-void CheckInputs(const System& system, int parameter, const FlowPoint& guess, double to,
-                 const OrbitBranchOptions& options) {
-  std::string e = system.ValidationError();
-  if (e.empty()) e = options.ValidationError();
-  if (e.empty() && (parameter < 0 || parameter >= system.parameters()))
-    e = "parameter = " + std::to_string(parameter) + " is not one of the system's " +
-        std::to_string(system.parameters());
-  if (e.empty() && guess.z.size() != system.dimension())
-    e = "the guess has " + std::to_string(guess.z.size()) + " components, the system " +
-        std::to_string(system.dimension());
-  if (e.empty() && !guess.z.allFinite()) e = "the guess is not finite";
-  if (e.empty() && (!std::isfinite(to) || to == system.ParameterValue(parameter)))
-    e = "to = " + Num(to) + " must be finite and differ from " + system.ParameterName(parameter) +
-        " = " + Num(system.ParameterValue(parameter));
-  if (e.empty()) {
-    std::unique_ptr<System> end = system.Clone();
-    end->SetParameterValue(parameter, to);
-    e = end->ValidationError();
-    if (!e.empty()) e = "at " + system.ParameterName(parameter) + " = to: " + e;
-  }
-  if (!e.empty()) throw InvalidArgument(e);
-}
-
 OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int parameter,
                         const VectorXd& u0, int fixed, const VectorXd& along, double from,
                         double to, const OrbitBranchOptions& options) {
@@ -312,7 +278,7 @@ OrbitBranch TraceBranch(OrbitProblem& problem, const System& system, int paramet
 OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
                            const PoincareSection& section, double to,
                            const OrbitBranchOptions& options) {
-  orbit_detail::CheckInputs(system, parameter, guess, to, options);
+  orbit_detail::CheckInputs(system, parameter, guess, section, to, options);
   const auto start = std::chrono::steady_clock::now();
   const double from = system.ParameterValue(parameter);
   OrbitProblem problem(system, parameter, guess, section, options);

@@ -58,6 +58,7 @@ PoincareSection Doubled(const PoincareSection& s) {
 OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint& pd,
                             const PoincareSection& section, double lo, double hi,
                             const OrbitBranchOptions& options) {
+  orbit_detail::CheckParameter(system, parameter);  // before its value is read
   const double p_pd = system.ParameterValue(parameter);
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo < p_pd && p_pd < hi))
     throw InvalidArgument("ContinueDoubled: the bounds must be finite with lo < " + Num(p_pd, 12) +
@@ -65,8 +66,8 @@ OrbitBranch ContinueDoubled(const System& system, int parameter, const FlowPoint
   {  // the checks at a bound where the system is valid (the branch may not reach the other)
     std::unique_ptr<System> at_hi = system.Clone();
     at_hi->SetParameterValue(parameter, hi);
-    orbit_detail::CheckInputs(system, parameter, pd, at_hi->ValidationError().empty() ? hi : lo,
-                              options);
+    orbit_detail::CheckInputs(system, parameter, pd, section,
+                              at_hi->ValidationError().empty() ? hi : lo, options);
   }
   const auto start = std::chrono::steady_clock::now();
   const std::string at = system.ParameterName(parameter) + " = " + Num(p_pd, 12);

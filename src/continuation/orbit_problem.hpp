@@ -114,10 +114,14 @@ PoincareSection SectionFor(const System& s, const PoincareSection& section,
 /// rate (x, not x'; System::DerivativeOf).
 std::vector<bool> Displacements(const System& s);
 
-/// ContinueOrbits' checks: throws InvalidArgument on an invalid system,
-/// options, parameter index, guess or end `to`.
-void CheckInputs(const System& system, int parameter, const FlowPoint& guess, double to,
-                 const OrbitBranchOptions& options);
+/// Throws InvalidArgument, naming it, on a parameter index out of range or
+/// one the system does not depend on (System::ParameterError).
+void CheckParameter(const System& system, int parameter);
+/// ContinueOrbits' checks (orbit_inputs.cpp): throws InvalidArgument, naming
+/// the value, on an invalid system, options (PALC's on the section's
+/// unknowns), parameter, guess, end `to` or section turns.
+void CheckInputs(const System& system, int parameter, const FlowPoint& guess,
+                 const PoincareSection& section, double to, const OrbitBranchOptions& options);
 
 /// The branch from u0 (its component `fixed` held by the first correction,
 /// traced along `along`, unscaled) of `parameter` between from and to:

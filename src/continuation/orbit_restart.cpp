@@ -18,7 +18,7 @@ namespace stickslip {
 OrbitBranch ContinueOrbitsFrom(const System& system, int parameter, const FlowPoint& start,
                                const PoincareSection& section, double to, int side,
                                const OrbitBranchOptions& options) {
-  orbit_detail::CheckInputs(system, parameter, start, to, options);
+  orbit_detail::CheckInputs(system, parameter, start, section, to, options);
   if (side < -1 || side > 1)
     throw InvalidArgument("ContinueOrbitsFrom: side = " + std::to_string(side) +
                           " must be -1, 0 or 1");

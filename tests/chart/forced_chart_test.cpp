@@ -9,9 +9,9 @@
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
+#include "forced_trace.hpp"
 #include "stickslip/chart/response_grid.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/orbits/forced_orbit.hpp"
 #include "stickslip/orbits/orbit_search.hpp"
 
@@ -46,8 +46,8 @@ OrbitBranch OmegaRun(double a) {
   OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(StribeckChartParams(a, 0.8), Parameter::kOmega, 0.8, 0.5, tr.end.z[0],
-                        tr.end.z[1], 1, o);
+  return testing_util::StrobeBranch(StribeckChartParams(a, 0.8), Parameter::kOmega, 0.8, 0.5,
+                                    tr.end.z[0], tr.end.z[1], 1, o);
 }
 
 const OrbitRow* First(const OrbitBranch& b, SpecialKind l) {

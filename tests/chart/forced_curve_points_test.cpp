@@ -1,6 +1,6 @@
 // Forced chart curves (issue 21 item 3) on the seed_forced scene against
 // one-parameter runs: a curve point's LP or PD is located again by
-// ContinueForced in Omega at that point's force (its own start, branch and
+// ContinueOrbits in Omega at that point's force (its own start, branch and
 // bisection: independent of the two-parameter tracer); a curve's end on a
 // sliding point lies on the sliding curve those runs locate; and a traced
 // curve has no segment longer than its largest step (a jump to another
@@ -13,8 +13,8 @@
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
+#include "forced_trace.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
 
 namespace stickslip {
 namespace {
@@ -56,7 +56,8 @@ OrbitBranch SeedRun(double a) {
                                              200 * model.period(), {}, BeltFlow());
   OrbitBranchOptions o(BeltFlow());
   o.palc.ds = o.palc.ds_max = 0.006;
-  return ContinueForced(Seed(a, 1), Parameter::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1], 1, o);
+  return testing_util::StrobeBranch(Seed(a, 1), Parameter::kOmega, 1, 0.3, tr.end.z[0], tr.end.z[1],
+                                    1, o);
 }
 
 // The special point `label` nearest Omega = p.p1 of the one-parameter run in
@@ -91,8 +92,8 @@ double LocateAny(const SystemCurvePoint& p, int m, bool fold, bool (*want)(Speci
   for (const double side : {1.0, -1.0})
     for (const double sign : {1.0, -1.0}) {
       const OrbitBranch b =
-          ContinueForced(Seed(p.p2, p.p1), axis, at + side * 2e-3, at - side * 2e-3,
-                         z.z[0] + sign * h * e[0], z.z[1] + sign * h * e[1], m, o);
+          testing_util::StrobeBranch(Seed(p.p2, p.p1), axis, at + side * 2e-3, at - side * 2e-3,
+                                     z.z[0] + sign * h * e[0], z.z[1] + sign * h * e[1], m, o);
       for (const OrbitRow& r : b.special)
         if (want(r.label) && std::abs(r.p - at) < 1e-3 &&
             !(std::abs(best - at) <= std::abs(r.p - at))) {

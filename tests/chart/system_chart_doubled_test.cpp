@@ -15,7 +15,7 @@
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {
@@ -32,8 +32,10 @@ void CollectPds(double a, const OrbitBranch& b, int m, int target, OrbitBranchOp
       pds->push_back(r.p);
       continue;
     }
-    const OrbitBranch d = ContinueDoubled(Stribeck(a, r.p), Parameter::kOmega, r.start.z[0],
-                                          r.start.z[1], 0.5, 0.8, m, o);
+    const ForcedBelt at(Stribeck(a, r.p));
+    const FlowPoint pd = testing_util::StrobePoint(r.start.z[0], r.start.z[1]);
+    const OrbitBranch d = ContinueDoubled(at, ParameterAxis(Parameter::kOmega).index(), pd,
+                                          PoincareSection::Stroboscopic(at, pd.z, m), 0.5, 0.8, o);
     CollectPds(a, d, 2 * m, target, o, pds);
   }
 }

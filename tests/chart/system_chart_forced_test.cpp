@@ -16,7 +16,7 @@
 
 #include "../app_test_util.hpp"
 #include "stickslip/chart/system_chart.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {

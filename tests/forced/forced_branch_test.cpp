@@ -1,14 +1,15 @@
 // Continuation of the forced oscillator in Omega (issue 20, item 4): the Den
 // Hartog run (coulomb mu_s = mu_k = 0.3, v = 0, beta = 0, A = 1) against his
 // closed form on every non-stop row.
-#include "stickslip/continuation/forced_branch.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
 
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
+#include "forced_trace.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/orbits/forced_orbit.hpp"
 
@@ -39,7 +40,8 @@ TEST(OrbitBranch, DenHartogRunMatchesClosedFormOnEveryNonStopRow) {
   for (const double from : {0.75, 2.5}) {
     const double to = from == 0.75 ? 2.5 : 0.75;
     const double V = 1 / (1 - from * from);
-    const OrbitBranch b = ContinueForced(DenHartog(), Parameter::kOmega, from, to, V, 0.01, 1, o);
+    const OrbitBranch b =
+        testing_util::StrobeBranch(DenHartog(), Parameter::kOmega, from, to, V, 0.01, 1, o);
     EXPECT_EQ(b.status, BranchStatus::kUnbounded) << b.message;
     EXPECT_GT(b.rows.size(), 20u);
     for (const OrbitRow& r : b.rows) {
@@ -74,8 +76,8 @@ TEST(OrbitBranch, PeriodDoublingAgreesWithTheExitPhaseMap) {
   OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-14;
   o.palc.ds_max = 0.05;
-  const OrbitBranch b =
-      ContinueForced(p, Parameter::kOmega, 0.8, 2, transient.end.z[0], transient.end.z[1], 1, o);
+  const OrbitBranch b = testing_util::StrobeBranch(p, Parameter::kOmega, 0.8, 2, transient.end.z[0],
+                                                   transient.end.z[1], 1, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   std::vector<OrbitRow> pds;  // the sliding points are tested in forced_sliding_test
   for (const OrbitRow& r : b.special)
@@ -124,7 +126,7 @@ TEST(OrbitBranch, ContinuesABeltParameterOfTheForcedModel) {
   ForcedBeltParams p = DenHartog();
   p.omega = 2;
   const double V = 1 / (1 - 4.0);
-  const OrbitBranch b = ContinueForced(p, Parameter::kMuK, 0.3, 0.05, V, 0.01, 1, o);
+  const OrbitBranch b = testing_util::StrobeBranch(p, Parameter::kMuK, 0.3, 0.05, V, 0.01, 1, o);
   EXPECT_EQ(b.status, BranchStatus::kReachedEnd) << b.message;
   int compared = 0;
   for (const OrbitRow& r : b.rows) {
@@ -136,13 +138,59 @@ TEST(OrbitBranch, ContinuesABeltParameterOfTheForcedModel) {
   EXPECT_EQ(b.rows.back().p, 0.05);
   std::printf("[ measured ] mu_k 0.3 -> 0.05: %zu rows, %d non-stop, %d evaluations\n",
               b.rows.size(), compared, b.evaluations);
-  // A parameter the law has not is refused, naming it.
+}
+
+// The one driver refuses a bad input of a stroboscopic branch by name before
+// it starts (InvalidArgument, never a start that failed): the message names
+// the value.
+void ExpectRefused(const std::function<void()>& run, const std::string& words) {
   try {
-    ContinueForced(p, Parameter::kMuM, 0.25, 0.2, V, 0.01, 1, o);
-    ADD_FAILURE() << "mu_m accepted under the coulomb law";
+    run();
+    ADD_FAILURE() << "accepted; expected: " << words;
   } catch (const InvalidArgument& e) {
-    EXPECT_NE(std::string(e.what()).find("'mu_m' does not apply"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
   }
+}
+
+TEST(OrbitBranch, AStroboscopicBranchRefusesBadInputsByName) {
+  OrbitBranchOptions o(ForcedBelt::FlowDefaults());
+  ForcedBeltParams p = DenHartog();
+  p.omega = 2;
+  const ForcedBelt m(p);
+  const int omega = ParameterAxis(Parameter::kOmega).index();
+  const FlowPoint z = testing_util::StrobePoint(-1 / 3.0, 0.01);
+  const PoincareSection s = PoincareSection::Stroboscopic(m, z.z, 1);
+  const auto from = [&](const FlowPoint& guess, const PoincareSection& sec, double to,
+                        const OrbitBranchOptions& oo) {
+    return [&m, omega, guess, sec, to, oo] { ContinueOrbits(m, omega, guess, sec, to, oo); };
+  };
+  // A parameter the law has not (mu_m is Stribeck's), here and at a PD.
+  ExpectRefused([&] { ContinueOrbits(m, int(Parameter::kMuM), z, s, 0.2, o); },
+                "'mu_m' does not apply");
+  ExpectRefused([&] { ContinueDoubled(m, int(Parameter::kMuM), z, s, 0.1, 0.3, o); },
+                "'mu_m' does not apply");
+  // m outside [1, kMaxPeriodMultiple].
+  ExpectRefused([&] { PoincareSection::Stroboscopic(m, z.z, 0); }, "m = 0");
+  ExpectRefused(from(z, PoincareSection::Stroboscopic(m, z.z, 1001), 2.5, o),
+                "m = 1001 must lie in [1, 1000]");
+  // The range: to finite and not the start's value.
+  ExpectRefused(from(z, s, 2, o), "to = 2 must be finite and differ from omega = 2");
+  ExpectRefused(from(z, s, NAN, o), "to = nan");
+  // A guess that is not finite, its values named.
+  ExpectRefused(from(testing_util::StrobePoint(NAN, 0.01), s, 2.5, o),
+                "the guess (x, x', theta) = (nan, 0.01, 0) is not finite");
+  // The system at the start and at the end.
+  ForcedBelt bad(p);
+  bad.SetParameterValue(int(Parameter::kMuK), 0.5);  // > mu_s
+  ExpectRefused([&] { ContinueOrbits(bad, omega, z, s, 2.5, o); }, "mu_k = 0.5");
+  ExpectRefused(from(z, s, -1, o), "at omega = to");
+  // PALC's options, checked on the section's unknowns (x, x', Omega).
+  OrbitBranchOptions steps = o;
+  steps.palc.ds = 10 * steps.palc.ds_max;
+  ExpectRefused(from(z, s, 2.5, steps), "ds_min <= ds <= ds_max");
+  steps = o;
+  steps.palc.scale = Eigen::VectorXd::Ones(2);
+  ExpectRefused(from(z, s, 2.5, steps), "scale has 2 entries, need 3");
 }
 
 }  // namespace

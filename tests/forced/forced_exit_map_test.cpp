@@ -11,7 +11,7 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "forced_trace.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/orbits/forced_orbit.hpp"
 
 namespace stickslip {

@@ -16,7 +16,7 @@
 #include "forced_flip_reference.hpp"
 #include "forced_reference.hpp"
 #include "forced_trace.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 
 namespace stickslip {
 namespace {

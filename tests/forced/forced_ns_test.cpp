@@ -16,7 +16,7 @@
 #include "forced_trace.hpp"
 #include "reference/forced_lyapunov.hpp"
 #include "src/continuation/orbit_problem.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 
 namespace stickslip {
 namespace {

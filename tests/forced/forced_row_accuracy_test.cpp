@@ -19,7 +19,7 @@
 
 #include "cli/clock_start.hpp"
 #include "forced_curve_reference.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "forced_trace.hpp"
 #include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
@@ -88,8 +88,8 @@ struct Study {
 };
 
 // The app's branch (run_system.cpp, FirstPiece; clock_start.hpp): the state after the transient
-// from rest, Newton at m = 1 there, ContinueForced (the app's ContinueOrbits on the same
-// stroboscopic section) at the app's defaults.
+// from rest, Newton at m = 1 there, ContinueOrbits on the stroboscopic section
+// (testing_util::StrobeBranch) at the app's defaults.
 OrbitBranch AppBranch(const Study& s, double from, double to) {
   OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.palc.ds_max = 0.02 * std::abs(to - from);
@@ -102,7 +102,7 @@ OrbitBranch AppBranch(const Study& s, double from, double to) {
   c.rest = ForcedStart(model, 0, 0, model.v()).z;
   c.opts = o;
   const Eigen::VectorXd z = cli::SettledState(model, c);
-  return ContinueForced(s.p, Parameter::kOmega, from, to, z[0], z[1], 1, o);
+  return testing_util::StrobeBranch(s.p, Parameter::kOmega, from, to, z[0], z[1], 1, o);
 }
 
 template <class Piece>

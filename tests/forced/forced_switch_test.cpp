@@ -9,10 +9,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "forced_run.hpp"
+#include "forced_trace.hpp"
 #include "reference/forced_lyapunov.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/orbits/forced_orbit.hpp"
 
@@ -28,6 +29,17 @@ ForcedBeltParams StribeckScene(double omega) {
   return p;
 }
 
+// The doubled branch from the stroboscopic point (x0, x0') of the
+// m-periodic orbit of p (at its PD) between lo and hi: ContinueDoubled on
+// the stroboscopic section.
+OrbitBranch Doubled(const ForcedBeltParams& p, double x0, double xdot0, double lo, double hi, int m,
+                    const OrbitBranchOptions& o) {
+  const ForcedBelt at(p);
+  const FlowPoint pd = testing_util::StrobePoint(x0, xdot0);
+  return ContinueDoubled(at, ParameterAxis(Parameter::kOmega).index(), pd,
+                         PoincareSection::Stroboscopic(at, pd.z, m), lo, hi, o);
+}
+
 OrbitBranchOptions Options() {
   OrbitBranchOptions o(ForcedBelt::FlowDefaults());
   o.shooting.flow.rtol = o.shooting.flow.atol = 1e-13;
@@ -41,8 +53,8 @@ OrbitRow FirstPeriodDoubling() {
   const ForcedBeltParams p = StribeckScene(0.7);
   const ForcedBelt m(p);
   const FlowRun tr = testing_util::RunForced(m, ForcedStart(m, 0, 0, 0.25), 200 * m.period());
-  const OrbitBranch b =
-      ContinueForced(p, Parameter::kOmega, 0.7, 0.6, tr.end.z[0], tr.end.z[1], 1, Options());
+  const OrbitBranch b = testing_util::StrobeBranch(p, Parameter::kOmega, 0.7, 0.6, tr.end.z[0],
+                                                   tr.end.z[1], 1, Options());
   for (const OrbitRow& r : b.special)
     if (r.label == SpecialKind::kPeriodDoubling) return r;
   ADD_FAILURE() << "no PD on the m = 1 branch: " << Name(b.status) << " " << b.message;
@@ -52,8 +64,8 @@ OrbitRow FirstPeriodDoubling() {
 TEST(ForcedSwitch, DoubledBranchEmanatesFromThePeriodDoubling) {
   const OrbitRow pd = FirstPeriodDoubling();
   ASSERT_EQ(pd.label, SpecialKind::kPeriodDoubling);
-  const OrbitBranch d = ContinueDoubled(StribeckScene(pd.p), Parameter::kOmega, pd.start.z[0],
-                                        pd.start.z[1], pd.p - 0.006, pd.p + 0.006, 1, Options());
+  const OrbitBranch d = Doubled(StribeckScene(pd.p), pd.start.z[0], pd.start.z[1], pd.p - 0.006,
+                                pd.p + 0.006, 1, Options());
   ASSERT_GE(d.rows.size(), 4u) << Name(d.status) << " " << d.message;
   EXPECT_EQ(d.status, BranchStatus::kReachedEnd) << d.message;
   // Supercritical: the doubled branch opens toward lower Omega, stable there.
@@ -126,13 +138,18 @@ TEST(ForcedSwitch, RefusesAPointWithoutAFlip) {
   oo.flow = o.shooting.flow;
   const PeriodicOrbit orbit = ShootStroboscopic(m, tr.end.z[0], tr.end.z[1], 1, oo);
   ASSERT_TRUE(orbit.ok());
-  const OrbitBranch d =
-      ContinueDoubled(p, Parameter::kOmega, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, 1, o);
+  const OrbitBranch d = Doubled(p, orbit.start.z[0], orbit.start.z[1], 0.6, 0.8, 1, o);
   EXPECT_EQ(d.status, BranchStatus::kStartFailed);
   EXPECT_NE(d.message.find("not a period doubling"), std::string::npos) << d.message;
   EXPECT_TRUE(d.rows.empty());
   EXPECT_EQ(PeriodMultiple(d), 2);  // the section it would have had, also on failure
-  EXPECT_THROW(ContinueDoubled(p, Parameter::kOmega, 0, 0, 0.8, 0.9, 1, o), InvalidArgument);
+  // Bounds that do not bracket the PD's Omega (0.7) are refused by name.
+  try {
+    Doubled(p, 0, 0, 0.8, 0.9, 1, o);
+    ADD_FAILURE() << "bounds 0.8, 0.9 accepted at Omega = 0.7";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("lo < 0.7 < hi"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -20,7 +20,7 @@
 #include "forced_reference.hpp"
 #include "forced_run.hpp"
 #include "forced_trace.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/systems/forced/flow.hpp"
 
 namespace stickslip {
@@ -169,8 +169,8 @@ TEST(ForcedSwitchingSliding, DenHartogFloorRunLabelsNoSwitchingSliding) {
   const ForcedBelt m0(p0);
   const FlowRun tr =
       testing_util::RunForced(m0, ForcedStart(m0, 0, 0, 0), 200 * m0.period(), {}, o.shooting.flow);
-  const OrbitBranch b =
-      ContinueForced(kFloor, Parameter::kOmega, 0.3, 0.75, tr.end.z[0], tr.end.z[1], 1, o);
+  const OrbitBranch b = testing_util::StrobeBranch(kFloor, Parameter::kOmega, 0.3, 0.75,
+                                                   tr.end.z[0], tr.end.z[1], 1, o);
   ASSERT_FALSE(b.rows.empty()) << b.message;
   int cr_near_omega1 = 0;
   for (const OrbitRow& r : b.special) {

@@ -10,7 +10,7 @@
 
 #include "app_test_util.hpp"
 #include "cli/gnuplot.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/io/branch_report.hpp"
 #include "stickslip/io/figure_style.hpp"
 #include "test_paths.hpp"

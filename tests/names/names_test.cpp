@@ -15,7 +15,7 @@
 #include "stickslip/chart/chart.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/continuation/continuation.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/estimates/estimates.hpp"
 #include "stickslip/flow/simulate.hpp"

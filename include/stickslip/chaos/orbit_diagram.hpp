@@ -15,8 +15,9 @@
 #include <vector>
 
 #include "stickslip/chaos/lyapunov.hpp"
-#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/names.hpp"
+#include "stickslip/systems/belt/parameter_axis.hpp"
+#include "stickslip/systems/forced/forced.hpp"
 
 namespace stickslip {
 

@@ -1,5 +1,5 @@
 // How a branch of periodic orbits ended: one status for every system's
-// branches (orbit_branch.hpp) and the forced oscillator's (continuation/forced_branch.hpp).
+// branches (orbit_branch.hpp).
 #pragma once
 
 #include "stickslip/names.hpp"

@@ -30,9 +30,14 @@
 #include "stickslip/continuation/branch_status.hpp"
 #include "stickslip/continuation/palc.hpp"
 #include "stickslip/continuation/special_kind.hpp"
+#include "stickslip/integrate/extrema.hpp"
 #include "stickslip/orbits/shooting.hpp"
 
 namespace stickslip {
+
+/// The most clock turns per period of a branch's section (m <= 1000 forcing
+/// periods, as a restart file's).
+inline constexpr int kMaxPeriodMultiple = 1000;
 
 /// Settings of ContinueOrbits, validated once.
 struct OrbitBranchOptions {
@@ -80,12 +85,24 @@ struct OrbitBranch {
   PoincareSection section;
 };
 
+/// The extremes of components 0 and 1 (x and x') of a row (OrbitRow::lo,
+/// hi); Extrema::Empty() where the shooting did not record them.
+inline Extrema RowExtrema(const OrbitRow& r) { return ExtremaOf(r.lo, r.hi); }
+
+/// The period multiple m of a branch: its section's clock turns.
+inline int PeriodMultiple(const OrbitBranch& b) { return b.section.turns; }
+
 /// The branch of the orbit through `guess` on `section` of `system`, in its
 /// parameter `parameter` from its value in `system` to `to`. A stroboscopic
 /// section's time follows the clock's frequency along the branch (its turns
-/// stay). Throws InvalidArgument on an invalid system, options, parameter
-/// index, range or section. options.palc.cancelled (if set) is polled by the
-/// corrector loop, between the jumps and inside every run of the flow.
+/// stay). Throws InvalidArgument, naming the value, on an invalid system or
+/// options (PALC's too), a parameter index out of range or one the system
+/// does not depend on (System::ParameterError: mu_m under the coulomb law),
+/// a guess that is not finite, `to` not finite or equal to the start's
+/// value, an end where the system is invalid, or a section that is invalid
+/// (Stroboscopic refuses m < 1) or has more than kMaxPeriodMultiple turns.
+/// options.palc.cancelled (if set) is polled by the corrector loop, between
+/// the jumps and inside every run of the flow.
 OrbitBranch ContinueOrbits(const System& system, int parameter, const FlowPoint& guess,
                            const PoincareSection& section, double to,
                            const OrbitBranchOptions& options);

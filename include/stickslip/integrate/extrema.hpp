@@ -2,6 +2,7 @@
 // type for the flow, the orbits, the continuation and the forced oscillator.
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <limits>
 
@@ -31,5 +32,11 @@ struct Extrema {
   /// (x_max - x_min) / 2: the amplitude of a stick-slip orbit.
   double HalfSpanX() const { return (x_max - x_min) / 2; }
 };
+
+/// The extremes of x and x' from recorded extremes of the components 0, 1
+/// (a run's, an orbit's or a branch row's lo and hi), else Extrema::Empty().
+inline Extrema ExtremaOf(const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+  return lo.size() >= 2 && hi.size() >= 2 ? Extrema{lo[0], hi[0], lo[1], hi[1]} : Extrema::Empty();
+}
 
 }  // namespace stickslip

@@ -6,7 +6,6 @@
 #include <limits>
 #include <string>
 
-#include "stickslip/continuation/forced_branch.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/systems/belt/belt_flow.hpp"
 #include "stickslip/systems/belt/parameter_axis.hpp"

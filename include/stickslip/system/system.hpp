@@ -142,6 +142,10 @@ class System {
   // --- Parameters (a lens is an index here) ---
   virtual int parameters() const = 0;
   virtual std::string ParameterName(int j) const = 0;
+  /// Empty if the field depends on parameter j (0 <= j < parameters()), else
+  /// one line naming it: a branch in it would not move (the belt's mu_m
+  /// under the coulomb law). Every parameter applies unless overridden.
+  virtual std::string ParameterError(int /*j*/) const { return ""; }
   virtual double ParameterValue(int j) const = 0;
   /// Sets parameter j (ValidationError() tells whether the result is valid).
   virtual void SetParameterValue(int j, double value) = 0;

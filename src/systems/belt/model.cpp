@@ -53,6 +53,10 @@ int Model::parameters() const { return kBeltParameters; }
 
 std::string Model::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
 
+std::string Model::ParameterError(int j) const {
+  return AxisError(ParameterAxis(static_cast<Parameter>(j)), p_.law);
+}
+
 double Model::ParameterValue(int j) const {
   return ParameterAxis(static_cast<Parameter>(j)).Get(p_);
 }

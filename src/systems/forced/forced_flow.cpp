@@ -15,8 +15,4 @@ FlowPoint ForcedStart(const ForcedBelt& m, double t, double x, double xdot, Mode
   return {t, Eigen::Vector3d(x, mode == Mode::kStick ? m.v() : xdot, m.omega() * t), ModeSet(mode)};
 }
 
-Extrema ExtremaOf(const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
-  return lo.size() >= 2 && hi.size() >= 2 ? Extrema{lo[0], hi[0], lo[1], hi[1]} : Extrema::Empty();
-}
-
 }  // namespace stickslip

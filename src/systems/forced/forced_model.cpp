@@ -149,6 +149,10 @@ int ForcedBelt::parameters() const { return kOmegaIndex + 1; }
 
 std::string ForcedBelt::ParameterName(int j) const { return Name(static_cast<Parameter>(j)); }
 
+std::string ForcedBelt::ParameterError(int j) const {
+  return AxisError(ParameterAxis(static_cast<Parameter>(j)), p_.base.law, true);
+}
+
 double ForcedBelt::ParameterValue(int j) const {
   return ParameterAxis(static_cast<Parameter>(j)).Get(p_);
 }

@@ -79,6 +79,8 @@ class Model final : public FrictionSystem {
   // The parameters by index (Parameter's order).
   int parameters() const override;
   std::string ParameterName(int j) const override;
+  /// AxisError: a parameter of another friction law.
+  std::string ParameterError(int j) const override;
   double ParameterValue(int j) const override;
   void SetParameterValue(int j, double value) override;
 

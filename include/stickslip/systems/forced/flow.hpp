@@ -16,10 +16,7 @@ FlowPoint ForcedStart(const ForcedBelt& m, double t, double x, double xdot);
 /// The same in a given mode (trusted; x' = v in stick).
 FlowPoint ForcedStart(const ForcedBelt& m, double t, double x, double xdot, Mode mode);
 
-/// The extremes of x and x' from recorded extremes of the components 0, 1
-/// (a run's, an orbit's or a branch row's lo and hi), else Extrema::Empty().
-Extrema ExtremaOf(const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
-/// A run's (FlowRequest::extrema = {0, 1}).
+/// A run's extremes of x and x' (FlowRequest::extrema = {0, 1}; ExtremaOf).
 inline Extrema RunExtrema(const FlowRun& r) { return ExtremaOf(r.lo, r.hi); }
 
 /// A run of the forced model reached its end: the time or the requested stick exit.

@@ -69,6 +69,8 @@ class ForcedBelt final : public System {
   bool Rest(const ModeSet& m, StateOut z, bool* stable) const override;
   int parameters() const override;
   std::string ParameterName(int j) const override;
+  /// AxisError: a parameter of another friction law.
+  std::string ParameterError(int j) const override;
   double ParameterValue(int j) const override;
   void SetParameterValue(int j, double value) override;
 
