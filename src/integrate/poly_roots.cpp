@@ -106,25 +106,45 @@ void RestrictToTail(const double* c, int n, double u, double* out) {
 }
 
 namespace {
+// Horner(a, n, u) and Horner(b, n, u) in one loop: the same operations in the
+// same order as each alone, their four chains interleaved.
+inline void HornerPair(const double* a, const double* b, int n, double u, double* ga, double* gb) {
+  const double u2 = u * u;
+  int k = n % 2 == 0 ? n : n - 1;  // highest even index
+  double ea = a[k], oa = n % 2 == 1 ? a[n] : 0.0;
+  double eb = b[k], ob = n % 2 == 1 ? b[n] : 0.0;
+  for (k -= 2; k >= 0; k -= 2) {
+    ea = ea * u2 + a[k];
+    oa = oa * u2 + a[k + 1];
+    eb = eb * u2 + b[k];
+    ob = ob * u2 + b[k + 1];
+  }
+  *ga = ea + u * oa;
+  *gb = eb + u * ob;
+}
+
 // The first point of [u0, u1] where sign * g has changed sign, given that it
-// has at u1 and not at u0: Newton on the polynomial, safeguarded by the
-// bracket [lo, hi] (g has `sign` at lo and not at hi), then bisection.
-double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, double u1) {
+// has at u1 (g1 = g(u1), the caller's) and not at u0: Newton on the
+// polynomial, safeguarded by the bracket [lo, hi] (g has `sign` at lo and not
+// at hi), then bisection.
+double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, double u1,
+                  double g1) {
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
   double lo = u0, hi = u1, x = 0.5 * (u0 + u1);
-  const double g0 = u0 == 0 ? c[0] : g(u0), g1 = g(u1);  // g(0) = c_0, as Horner gives it
-  if (g0 != g1) {  // start from the secant (regula falsi) point
+  const double g0 = u0 == 0 ? c[0] : g(u0);  // g(0) = c_0, as Horner gives it
+  if (g0 != g1) {                            // start from the secant (regula falsi) point
     const double xs = u0 - g0 * (u1 - u0) / (g1 - g0);
     if (xs > u0 && xs < u1) x = xs;
   }
-  // g' by its own coefficients: two independent even/odd Horner chains each
-  // (one serial chain for g and g' together bounded the loop's latency).
-  double dc[kMaxDegree];
+  // g' by its own coefficients (dc_n = 0: Horner to degree n gives g' as
+  // to n - 1); g and g' in one loop of four independent chains.
+  double dc[kMaxDegree + 1];
   for (int k = 1; k <= n; ++k) dc[k - 1] = k * c[k];
+  dc[n] = 0;
   for (int it = 0; it < Tolerances::kPolyNewtonCap; ++it) {
-    const double dg = n >= 1 ? Horner(dc, n - 1, x) : 0.0;
-    const double gx = g(x);
+    double gx, dg;
+    HornerPair(c, dc, n, x, &gx, &dg);
     (Sign(gx, zero_sign) != sign ? hi : lo) = x;
     double next = x - gx / dg;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -177,7 +197,10 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
   // Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no
   // isolation needed.
   if (Monotone(c, n)) {
-    if (changed(1.0)) out = {true, RefineRoot(c, n, sign, zero_sign, 0.0, 1.0)};
+    out.monotone = true;
+    const double g1 = g(1.0);
+    if (Sign(g1, zero_sign) != sign)
+      out.found = true, out.u = RefineRoot(c, n, sign, zero_sign, 0.0, 1.0, g1);
     return out;
   }
 
@@ -203,7 +226,8 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
       continue;
     }
     const double u0 = p.u0, u1 = p.u1;
-    const bool end_changed = changed(u1);
+    const double g1 = g(u1);
+    const bool end_changed = Sign(g1, zero_sign) != sign;
     const bool isolated = variations == 1 && end_changed && !changed(u0);
     // Within rounding of 0 (lower >= -margin), only a sign change that shows
     // in the values counts: halving further would chase noise.
@@ -220,7 +244,7 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
         return out;
       }
       out.found = true;
-      out.u = RefineRoot(c, n, sign, zero_sign, u0, u1);
+      out.u = RefineRoot(c, n, sign, zero_sign, u0, u1, g1);
       return out;
     }
     // Halve: the right half below the left one on the stack.

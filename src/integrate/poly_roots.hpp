@@ -16,7 +16,8 @@ namespace stickslip {
 
 struct PolyRoot {
   bool found = false;
-  double u = 0;  // the first u in (0, 1] where the sign differs from `sign`
+  double u = 0;           // the first u in (0, 1] where the sign differs from `sign`
+  bool monotone = false;  // the search found c monotone on [0, 1] (Monotone)
 };
 
 // c[0..n], n <= 40: power coefficients in u. sign (+1 or -1) is the sign of

@@ -2,11 +2,34 @@
 // functions (events.hpp) on each step polynomial, none missed (poly_roots.hpp,
 // after heyoka's event detection, Biscani & Izzo 2021, MNRAS 504, section 4).
 #include <algorithm>
+#include <cmath>
 
 #include "integrate/poly_roots.hpp"
 #include "integrate/taylor_stepper.hpp"
 
 namespace stickslip {
+
+namespace {
+// g_k = coef(k) for k <= deg, returning sum_{k>=3} |g_k| summed as AbsSum
+// sums it (two lanes, an odd last term after them): the same tail, from the
+// values in registers, not reloaded from g (a load across two stores).
+template <class Coef>
+inline double FillWithTail(double* __restrict g, int deg, Coef coef) {
+  for (int k = 0; k < 3 && k <= deg; ++k) g[k] = coef(k);
+  double s0 = 0, s1 = 0;
+  int k = 3;
+  for (; k + 1 <= deg; k += 2) {
+    const double a = coef(k), b = coef(k + 1);
+    g[k] = a;
+    g[k + 1] = b;
+    s0 += std::abs(a);
+    s1 += std::abs(b);
+  }
+  double tail = s0 + s1;
+  if (k <= deg) tail += std::abs(g[k] = coef(k));
+  return tail;
+}
+}  // namespace
 
 // The step polynomial in u = tau / h of each function of its own shape
 // (EventFunction::base); the others share it, with their own g_0 (g0_).
@@ -26,34 +49,34 @@ void TaylorStepper::EventPolynomials(int n) {
     const double* __restrict r0 = r[f.terms[0].row];
     const bool single = f.size == 1 && f.terms[0].weight == 1;
     if (!f.derivative) {
-      // hp_ (the powers of h) is 0 past the order, the rows finite.
+      // tail_: sum_{k>=3} |g_k| for the quadratic bound.
       if (single) {
-        for (int k = 0; k <= n; ++k) g[k] = r0[k] * hp[k];
+        tail_[i] = FillWithTail(g, n, [&](int k) { return r0[k] * hp[k]; });
       } else if (f.size == 2) {  // a stick exit, lambda -+ limit: the same sums
         const double* __restrict r1 = r[f.terms[1].row];
         const double w0 = f.terms[0].weight, w1 = f.terms[1].weight;
-        for (int k = 0; k <= n; ++k) g[k] = (0.0 + w0 * r0[k] + w1 * r1[k]) * hp[k];
+        tail_[i] =
+            FillWithTail(g, n, [&](int k) { return (0.0 + w0 * r0[k] + w1 * r1[k]) * hp[k]; });
       } else {
-        for (int k = 0; k <= n; ++k) {
+        tail_[i] = FillWithTail(g, n, [&](int k) {
           double s = 0;
           for (int t = 0; t < f.size; ++t) s += f.terms[t].weight * r[f.terms[t].row][k];
-          g[k] = s * hp[k];
-        }
+          return s * hp[k];
+        });
       }
       g[n + 1] = 0;
-      tail_[i] = AbsSum(g + 3, n - 2);  // sum_{k>=3} |g_k| for the quadratic bound
     } else {
       if (single) {
-        for (int k = 0; k < n; ++k) g[k] = kOrdinals.k[k + 1] * r0[k + 1] * hp[k];
+        tail_[i] =
+            FillWithTail(g, n - 1, [&](int k) { return kOrdinals.k[k + 1] * r0[k + 1] * hp[k]; });
       } else {
-        for (int k = 0; k < n; ++k) {
+        tail_[i] = FillWithTail(g, n - 1, [&](int k) {
           double s = 0;
           for (int t = 0; t < f.size; ++t) s += f.terms[t].weight * r[f.terms[t].row][k + 1];
-          g[k] = kOrdinals.k[k + 1] * s * hp[k];
-        }
+          return kOrdinals.k[k + 1] * s * hp[k];
+        });
       }
       g[n] = g[n + 1] = 0;  // the derivative has degree n - 1
-      tail_[i] = AbsSum(g + 3, n - 3);
     }
     raw0_[i] = g[0];
     g0_[i] = g[0] - f.offset;
@@ -186,7 +209,7 @@ void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, 
     // contacts leaving stick at once): a touch, passed, not a step of 0.
     const bool touch = deflated && f.surface && ta_ + u * h == ta_ && -sign == zero_sign;
     if (u > roots.first || roots.Add(i, u, -sign, !touch && ev.Stops(i, -sign)) || u >= 1) return;
-    if (guard == 0 && Monotone(gi, deg)) return;  // the only root on [0, 1]
+    if (guard == 0 && pr.monotone) return;  // the only root on [0, 1]
     // Passed: go on from u with g / (w - u) (the root is not an event twice).
     sign = -sign;
     RestrictToTail(gi, deg, u, rest);

@@ -98,23 +98,24 @@ double TaylorStepper::StateScale(const double* y) const {
 // rho from z_{q-1}, z_q and the step that keeps their error per step,
 // (h / rho)^(q+1) = (e^-2 exp(-0.7 / (p - 1)))^(p+1). Every row counts but
 // the clocks' and the column's clock rows (their series are exact).
-double TaylorStepper::StepSize(int order, int jz_order) const {
+double TaylorStepper::StepSize(int order, int jz_order, double state_scale) const {
   const TaylorRow* r = c();
-  // One pass over the counted rows: the scale z0 and the norms of orders
-  // order - 1 and order (max is exact: the same values as three passes).
-  double z0 = 0, n1 = 0, n2 = 0;
-  auto row = [&](const double* ri) {
-    z0 = std::max(z0, std::abs(ri[0]));
+  // One pass over the counted rows: the norms of orders order - 1 and order
+  // and the scale z0, the integrated rows' StateScale of their order 0 (the
+  // state at ta) and the auxiliary rows' (max is exact: the same values as
+  // separate passes).
+  double z0 = state_scale, n1 = 0, n2 = 0;
+  auto norms = [&](const double* ri) {
     n1 = std::max(n1, std::abs(ri[order - 1]));
     n2 = std::max(n2, std::abs(ri[order]));
   };
-  for (int i = 0; i < clock_first_; ++i) {
-    z0 = std::max(z0, std::min(std::abs(r[i][0]), std::abs(r[i][0] - center_[i])));
-    n1 = std::max(n1, std::abs(r[i][order - 1]));
-    n2 = std::max(n2, std::abs(r[i][order]));
+  for (int i = 0; i < clock_first_; ++i) norms(r[i]);
+  for (int i = clock_last_; i < col_clock_first_; ++i) norms(r[i]);
+  for (int i = col_clock_last_; i < m_; ++i) norms(r[i]);
+  for (int i = std::max(m_, col_clock_last_); i < rows_n_; ++i) {
+    z0 = std::max(z0, std::abs(r[i][0]));
+    norms(r[i]);
   }
-  for (int i = clock_last_; i < col_clock_first_; ++i) row(r[i]);
-  for (int i = col_clock_last_; i < rows_n_; ++i) row(r[i]);
   const double log_scale = rtol_ * z0 > atol_ ? std::log(z0) : 0.0;
   // min over j of (scale / |z_j|)^(1/j), as logarithms (|z_j| = 0: +inf).
   const double r1 = (log_scale - std::log(n1)) / (order - 1);
@@ -165,7 +166,7 @@ bool TaylorStepper::NewStep() {
     if (!FiniteCoefficients()) return Failed("non-finite Taylor coefficients");
     ++orders_.fallbacks;
   }
-  double h = StepSize(order_, jz_order);
+  double h = StepSize(order_, jz_order, z0);  // r[i][0] = yend_[i]: StateScale's z0
   if (std::isnan(h)) return Failed("non-finite step size");
   if (std::isinf(h)) h = Tolerances::kTaylorRestStep;  // higher coefficients all 0: at rest
   h = std::min(h, tstop_ - ta_);

@@ -96,7 +96,8 @@ class TaylorStepper final : public Stepper {
     for (int i = 0; i < m_; ++i) r[i][0] = yend_[i];
     field_->Coefficients(order, layout_, r);
   }
-  double StepSize(int order, int jz_order) const;
+  // state_scale: StateScale of the state at the step start.
+  double StepSize(int order, int jz_order, double state_scale) const;
   double StateScale(const double* y) const;
   void Events(double h);
   // The step polynomial at tau = t - ta (the clocks at t itself).
