@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "io/tsv_read.hpp"
+#include "stickslip/continuation/orbit_branch.hpp"
 #include "stickslip/system/mode.hpp"
 
 namespace stickslip {
@@ -85,9 +86,11 @@ void ReadRun(const Table& t, SystemPoint* sp) {
   if (t.meta.count("section_turns") &&
       (t.meta.count("section_contact") || t.meta.count("section_returns")))
     throw Corrupt(t, "section_turns and section_contact/section_returns: two sections");
-  if (t.meta.count("section_turns")) {  // a clock's: its time set where the system is known
+  // A clock's turns: at most the branch driver's (kMaxPeriodMultiple), its time
+  // set where the system is known.
+  if (t.meta.count("section_turns")) {
     sp->section.kind = SectionKind::kTime;
-    sp->section.turns = static_cast<int>(t.MetaWhole("section_turns", 1, kMaxReturns));
+    sp->section.turns = static_cast<int>(t.MetaWhole("section_turns", 1, kMaxPeriodMultiple));
   } else {
     const auto contact = t.MetaWhole("section_contact", 0, ModeSet::kMaxContacts - 1);
     const auto returns = t.MetaWhole("section_returns", 1, kMaxReturns);
@@ -129,7 +132,7 @@ void ReadRow(const Table& t, const std::vector<std::string>& row, SystemPoint* s
   // A clock's turns per period: the row's own (a start list's pieces differ).
   if (sp->section.kind == SectionKind::kTime &&
       std::find(t.header.begin(), t.header.end(), "m") != t.header.end())
-    sp->section.turns = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, kMaxReturns));
+    sp->section.turns = static_cast<int>(t.Whole(row[t.Column("m")], "m", 1, kMaxPeriodMultiple));
   // A stick-exit branch of a start list on its own section (branch_N_section_*).
   const std::string own = "branch_" + std::to_string(sp->branch) + "_section_";
   if (sp->section.kind == SectionKind::kStickExit && t.meta.count(own + "returns"))

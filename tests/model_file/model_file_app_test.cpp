@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <regex>
 #include <string>
 #include <utility>
@@ -173,6 +174,20 @@ TEST_F(ModelFileApp, TheForcedFileGivesTheForcedOscillatorsSpecialPoints) {
       RunOut("ss_continue", e, {"--model", plain, "--restart", a + "/out", "--point", "PD1"});
   EXPECT_EQ(wrong.outcome.code, 2) << wrong.err;
   EXPECT_TRUE(tu::Contains(wrong.err, "its orbits are on a clock's turns")) << wrong.err;
+  // More clock turns than the branch driver takes (kMaxPeriodMultiple = 1000):
+  // the restart file is refused by name, not the section the driver was given.
+  const std::string f = NewDir() + "/turns";
+  ASSERT_EQ(std::system(("cp -r " + a + "/out " + f + " && sed -i 's/^# section_turns: 1$/" +
+                         "# section_turns: 1001/' " + f + "/branch.tsv")
+                            .c_str()),
+            0);
+  const auto turns = RunOut("ss_continue", NewDir(),
+                            {"--model", kModels + "forced.ini", "--restart", f, "--point", "3"});
+  EXPECT_EQ(turns.outcome.code, 2) << turns.err;
+  EXPECT_TRUE(tu::Contains(turns.err,
+                           "branch.tsv' is corrupt: section_turns = '1001' is not a "
+                           "whole number from 1 to 1000"))
+      << turns.err;
 }
 
 // studies/stribeck_forced.ini's branch on the built-in forced oscillator's
