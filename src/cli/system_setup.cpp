@@ -122,6 +122,10 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   if (s.param < 0)
     throw UsageError(args.Source("param") + ": '" + param + "' is no parameter of " + system +
                      " (its parameters: " + ParameterList(*s.system) + ")");
+  // One the system does not depend on (System::ParameterError): refused here,
+  // not by the branch driver after the steady branch.
+  if (const std::string e = s.system->ParameterError(s.param); !e.empty())
+    throw UsageError(args.Source("param") + ": " + e);
   s.from = s.system->ParameterValue(s.param);
   if (forced && !s.restart) {  // the forced oscillator's default range (params.hpp)
     const auto& f = static_cast<const ForcedBelt&>(*s.system);

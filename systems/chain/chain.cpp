@@ -179,6 +179,11 @@ std::string Chain::ParameterName(int j) const {
   return std::string(kBlock[(j - 3) % 4]) + std::to_string((j - 3) / 4 + 1);
 }
 
+std::string Chain::ParameterError(int j) const {
+  if (j == 1 && blocks() == 1) return "'kc' does not apply to a chain of one block (no coupling)";
+  return "";
+}
+
 double Chain::ParameterValue(int j) const {
   if (j == 0) return p_.v;
   if (j == 1) return p_.kc;

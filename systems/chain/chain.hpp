@@ -82,6 +82,8 @@ class Chain final : public System {
   /// "mu_s<i>" for i = 1..N.
   int parameters() const override { return 3 + 4 * blocks(); }
   std::string ParameterName(int j) const override;
+  // kc with one block: it couples no neighbours (the block's field does not depend on it).
+  std::string ParameterError(int j) const override;
   double ParameterValue(int j) const override;
   void SetParameterValue(int j, double value) override;
 

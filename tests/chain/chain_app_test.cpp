@@ -193,6 +193,11 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   ExpectRejected("ss_continue", with({"--system", "chain", "--force", "0.1"}), {"--force"});
   ExpectRejected("ss_continue", {"--system", "chain", "--param", "gamma", "--to", "1"},
                  {"--param", "'gamma' is no parameter of chain"});
+  // A parameter the system does not depend on: one block has no coupling
+  // (a flat branch in kc before).
+  ExpectRejected("ss_continue",
+                 {"--system", "chain", "--blocks", "1", "--param", "kc", "--to", "0.5"},
+                 {"--param", "'kc' does not apply to a chain of one block"});
   ExpectRejected("ss_continue", {"--system", "chain", "--param", "v"}, {"--to"});
   ExpectRejected("ss_continue", with({"--system", "chain", "--start_at", "0.9"}),
                  {"--start_at", "0.9"});
