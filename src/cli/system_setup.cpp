@@ -92,6 +92,19 @@ void ConfigureStart(const Arguments& args, SystemSetup& s) {
                                             "steady sliding (FindAutonomousOrbits), not settled")));
 }
 
+// --param's index: a parameter of the system, and one it depends on
+// (System::ParameterError: refused here, not by the branch driver later).
+int ParameterOf(const Arguments& args, const System& s, const std::string& param,
+                const std::string& system) {
+  const int j = s.ParameterIndex(param);
+  if (j < 0)
+    throw UsageError(args.Source("param") + ": '" + param + "' is no parameter of " + system +
+                     " (its parameters: " + ParameterList(s) + ")");
+  if (const std::string e = s.ParameterError(j); !e.empty())
+    throw UsageError(args.Source("param") + ": " + e);
+  return j;
+}
+
 }  // namespace
 
 // The system is built before the law is read: it names physical inputs
@@ -118,14 +131,7 @@ SystemSetup ConfigureSystemRun(const Arguments& args) {
   const std::string param = args.Text("param", s.restart ? s.restart->continued
                                                : forced  ? "omega"
                                                          : "");
-  s.param = s.system->ParameterIndex(param);
-  if (s.param < 0)
-    throw UsageError(args.Source("param") + ": '" + param + "' is no parameter of " + system +
-                     " (its parameters: " + ParameterList(*s.system) + ")");
-  // One the system does not depend on (System::ParameterError): refused here,
-  // not by the branch driver after the steady branch.
-  if (const std::string e = s.system->ParameterError(s.param); !e.empty())
-    throw UsageError(args.Source("param") + ": " + e);
+  s.param = ParameterOf(args, *s.system, param, system);
   s.from = s.system->ParameterValue(s.param);
   if (forced && !s.restart) {  // the forced oscillator's default range (params.hpp)
     const auto& f = static_cast<const ForcedBelt&>(*s.system);
