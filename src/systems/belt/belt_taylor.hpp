@@ -83,6 +83,7 @@ class BeltTaylorField final : public TaylorField {
   double x_center_ = 0;  // steady sliding's x in slip below (ScaleCenter)
   // The bound system's law and mu(v) (x_center_ in slip below; NaN: not yet).
   const Friction* friction_ = nullptr;
+  double mu_v_ = 0;
   // ExtraOrder of the forced field's last two tolerances (it depends on eps only).
   struct ExtraCache {
     double eps = NAN;
@@ -90,7 +91,6 @@ class BeltTaylorField final : public TaylorField {
   };
   mutable ExtraCache extra_cache_[2];
   mutable int next_cache_ = 0;
-  double mu_v_ = 0;
   // The series of s = sigma (v - x'), of -2 beta - mu'(s), of cos, sin theta.
   Series<kTaylorMaxOrder + 1> s_, cc_, cos_, sin_;
   std::optional<MuSeries> mu_;
