@@ -150,21 +150,25 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
   const bool var = layout.variational;
   const Rows r{c[0], c[1], var ? c + layout.phi() : nullptr,
                layout.column ? c + layout.param() : nullptr};
+  const bool affine_column = layout.column && kind_ == ParamKind::kAffine;
+  const bool cubic3 = cubic3_ && !affine_column;
   if (forced_) {
-    Forcing(order, c[2][0], c[layout.aux_first()], c[layout.aux_first() + 1]);
+    double* ac = c[layout.aux_first()];
+    double* as = c[layout.aux_first() + 1];
+    // The seed law's kernel reads the whole forcing series first; the other
+    // laws' recurrences carry it along, order by order (ForcingRows after).
+    Forcing(cubic3 ? order : -1, c[2][0], cubic3 ? ac : nullptr, cubic3 ? as : nullptr);
     std::fill(c[2] + 1, c[2] + order + 1, 0.0);
     c[2][1] = omega_;
     if (r.col) ClockColumn(order, r.col);
-  }
-  const bool affine_column = layout.column && kind_ == ParamKind::kAffine;
-  if (cubic3_ && !affine_column) {
-    if (forced_)
+    if (cubic3)
       return var ? Cubic3Dispatch<true, true>(order, r) : Cubic3Dispatch<false, true>(order, r);
-    return var ? Cubic3Dispatch<true, false>(order, r) : Cubic3Dispatch<false, false>(order, r);
+    ForcedRecurrences(order, r, var);
+    return ForcingRows(order, ac, as);
   }
-#define STICKSLIP_LAW(L)                                                                       \
-  if (forced_)                                                                                 \
-    return var ? Recurrences<L, true, true>(order, r) : Recurrences<L, false, true>(order, r); \
+  if (cubic3)
+    return var ? Cubic3Dispatch<true, false>(order, r) : Cubic3Dispatch<false, false>(order, r);
+#define STICKSLIP_LAW(L) \
   return var ? Recurrences<L, true, false>(order, r) : Recurrences<L, false, false>(order, r);
   switch (law_) {
     case LawKind::kCubic:
@@ -179,6 +183,35 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
 #undef STICKSLIP_LAW
 }
 
+void BeltTaylorField::ForcedRecurrences(int order, const Rows& r, bool var) {
+#define STICKSLIP_LAW(L) \
+  return var ? Recurrences<L, true, true>(order, r) : Recurrences<L, false, true>(order, r);
+  switch (law_) {
+    case LawKind::kCubic:
+      STICKSLIP_LAW(LawKind::kCubic)
+    case LawKind::kCoulomb:
+      STICKSLIP_LAW(LawKind::kCoulomb)
+    case LawKind::kStribeck:
+      STICKSLIP_LAW(LawKind::kStribeck)
+    case LawKind::kLeine:
+      STICKSLIP_LAW(LawKind::kLeine)
+  }
+#undef STICKSLIP_LAW
+}
+
+// The forcing's last order (Forcing's, to order + 1) and the rows A cos,
+// A sin, after Recurrences carried the series to order.
+void BeltTaylorField::ForcingRows(int order, double* ac, double* as) {
+  double* co = cos_.c();
+  double* si = sin_.c();
+  const double w = omega_, inv = kBeltInverse.r[order];
+  const double c1 = -w * si[order] * inv, s1 = w * co[order] * inv;
+  co[order + 1] = c1;
+  si[order + 1] = s1;
+  const double a = force_;
+  for (int k = 0; k <= order; ++k) ac[k] = a * co[k], as[k] = a * si[k];
+}
+
 // Seed eq. (3.5) on one slip branch, x'' = -x - 2 beta x' + sigma mu(s)
 // (+ A cos theta), and Phi' = J Phi with J = [0 1; -1 c], c = -2 beta -
 // mu'(s), and the parameter column z_p' = J z_p + df/dp: coefficient k + 1
@@ -189,7 +222,12 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
   MuSeries& mu = *mu_;
   double* s = s_.c();
   double* cc = cc_.c();
-  const double* co = cos_.c();
+  double* co = cos_.c();
+  double* si = sin_.c();
+  // The forcing's series (Forcing's recurrence, in this loop: its chain runs
+  // beside x's), c_k and s_k carried in registers.
+  const double w = omega_;
+  double ck = Forced ? co[0] : 0.0, sk = Forced ? si[0] : 0.0;
   double* x = r.x;
   double* xd = r.xd;
   // Zeros in s past the order so far: the sums of products in MuSeries::Old
@@ -208,7 +246,7 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
       // waiting for the products of s_k (the chain from x'_k is short).
       const double sigma_alpha = mu.Alpha<L>(k, sigma_);
       if constexpr (Forced)
-        xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k] + a * co[k]) * inv;
+        xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k] + a * ck) * inv;
       else
         xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k]) * inv;
     }
@@ -219,10 +257,15 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
     x[k + 1] = xd[k] * inv;
     if (k == 0) {
       if constexpr (Forced)
-        xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk + a * co[0];
+        xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk + a * ck;
       else
         xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk;
       damp = two_beta + mu.slope();
+    }
+    if constexpr (Forced) {
+      const double c1 = -w * sk * inv, s1 = w * ck * inv;
+      co[k + 1] = ck = c1;
+      si[k + 1] = sk = s1;
     }
     if constexpr (Var) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
