@@ -221,15 +221,7 @@ bool Engine::Segment() {
   std::copy(y, y + n_, z_.data());
   for (int j = 0; j < n_ - nt_; ++j) z_[nt_ + j] = clock_rate_[j] * t_ + clock_offset_[j];
   if (mode_.AnySticks()) r.t_stick += t_ - t0;
-  if (variational_) {
-    Eigen::Map<const Eigen::MatrixXd> phi(y + n_, nt_, nt_);
-    tmp_.noalias() = phi * M_;
-    M_.swap(tmp_);
-    if (column_) {  // C <- Phi C + the segment's own column
-      ctmp_.noalias() = phi * C_;
-      C_ = ctmp_ + Eigen::Map<const Eigen::VectorXd>(y + p.layout.param(), nt_);
-    }
-  }
+  if (variational_) AdvanceTangent(y, p.layout);
   switch (e.kind) {
     case SegmentEnd::kEvent:
       Extend(z_.data());
@@ -256,6 +248,31 @@ bool Engine::Segment() {
       return Fail(FlowStatus::kIntegratorFailed, Where(e.t, y, e.reason));
   }
   return Fail(FlowStatus::kIntegratorFailed, "unknown segment end");
+}
+
+// M <- Phi M and, with the column, C <- Phi C + the segment's own column.
+// nt = 2 (the belt, the forced oscillator) on fixed sizes: no dynamic-size
+// product kernels per segment, and the same sums of two products.
+void Engine::AdvanceTangent(const double* y, const TaylorLayout& layout) {
+  if (nt_ == 2) {
+    const Eigen::Map<const Eigen::Matrix2d> phi(y + n_);
+    Eigen::Map<Eigen::Matrix2d> M(M_.data());
+    const Eigen::Matrix2d pm = phi * M;
+    M = pm;
+    if (column_) {
+      Eigen::Map<Eigen::Vector2d> C(C_.data());
+      const Eigen::Vector2d pc = phi * C;
+      C = pc + Eigen::Map<const Eigen::Vector2d>(y + layout.param());
+    }
+    return;
+  }
+  Eigen::Map<const Eigen::MatrixXd> phi(y + n_, nt_, nt_);
+  tmp_.noalias() = phi * M_;
+  M_.swap(tmp_);
+  if (column_) {
+    ctmp_.noalias() = phi * C_;
+    C_ = ctmp_ + Eigen::Map<const Eigen::VectorXd>(y + layout.param(), nt_);
+  }
 }
 
 // y0: the state, Phi = I, the column (0 but its clocks' (t - t0) d omega / dp).

@@ -75,6 +75,7 @@ class Engine {
   std::string Place(double t, const double* y, int digits = 17) const;
   Stepper& Solver();
   void InitialRows(const TaylorLayout& layout);
+  void AdvanceTangent(const double* y, const TaylorLayout& layout);
   static void OnEvent(void* self, int g, const double* y);
   static void OnStep(void* self, double t, const double* y);
   static void OnOutput(void* self, double t, const double* y);

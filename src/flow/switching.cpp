@@ -281,9 +281,15 @@ void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen:
   const double den = grad.dot(f_before_);
   if (den == 0) return;  // a tangential event: no finite saltation (measure zero)
   // M <- S M = M + ((f+ - f-) / den) (grad^T M), on the tangent block.
-  row_.noalias() = grad.head(nt_).transpose() * M_;
   jump_ = (f_after_ - f_before_).head(nt_) / den;
-  M_.noalias() += jump_ * row_;
+  if (nt_ == 2) {  // fixed sizes, as AdvanceTangent
+    Eigen::Map<Eigen::Matrix2d> M(M_.data());
+    const Eigen::RowVector2d row = grad.head<2>().transpose() * M;
+    M.noalias() += jump_.head<2>() * row;
+  } else {
+    row_.noalias() = grad.head(nt_).transpose() * M_;
+    M_.noalias() += jump_ * row_;
+  }
   if (!column_) return;
   // The parameter as a state of rate 0: the event time moves by -(grad .
   // dz/dp + g_p) / den, and the column by (f+ - f-) times minus that (the
