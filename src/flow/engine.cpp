@@ -89,26 +89,14 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   clock_drate_.assign(clocks, 0.0);
   for (int j = 0; j < clocks && column_; ++j)
     clock_drate_[j] = s_->ClockRateDerivative(j, *flow_.parameter_);
-  if (clocks > 0) {
+  if (clocks > 0 && clock_epoch_ != system_epoch_) {  // a clock's rate is the same in every mode
     f_before_.resize(n_);
     s_->Field(mode_, z_, f_before_);
-    for (int j = 0; j < clocks; ++j) {
-      clock_rate_[j] = f_before_[nt_ + j];
-      clock_offset_[j] = z_[nt_ + j] - clock_rate_[j] * t_;
-    }
+    for (int j = 0; j < clocks; ++j) clock_rate_[j] = f_before_[nt_ + j];
+    clock_epoch_ = system_epoch_;
   }
-  // A start in stick has no direction off its surface: Phi projected on it.
-  for (int i = 0; i < k_ && variational_; ++i) {
-    if (!mode_.sticks(i)) continue;
-    const ContactVelocity& c = contacts_[i];
-    Eigen::VectorXd g = Eigen::VectorXd::Zero(nt_);
-    for (int t = 0; t < c.size; ++t)
-      if (c.terms[t].index < nt_) g[c.terms[t].index] += c.terms[t].weight;
-    if (!(g.squaredNorm() > 0)) continue;
-    M_ -= g * (g.transpose() * M_) / g.squaredNorm();
-    // And the start moved onto the surface as the parameter moves it (h = g z - s(p)).
-    if (column_) C_ -= g * (ArrivalDp(i) / g.squaredNorm());
-  }
+  for (int j = 0; j < clocks; ++j) clock_offset_[j] = z_[nt_ + j] - clock_rate_[j] * t_;
+  if (variational_) ProjectStartTangent();
 }
 
 // The grid origin + k dt (FlowRequest::output_origin): the start is sampled
@@ -248,31 +236,6 @@ bool Engine::Segment() {
       return Fail(FlowStatus::kIntegratorFailed, Where(e.t, y, e.reason));
   }
   return Fail(FlowStatus::kIntegratorFailed, "unknown segment end");
-}
-
-// M <- Phi M and, with the column, C <- Phi C + the segment's own column.
-// nt = 2 (the belt, the forced oscillator) on fixed sizes: no dynamic-size
-// product kernels per segment, and the same sums of two products.
-void Engine::AdvanceTangent(const double* y, const TaylorLayout& layout) {
-  if (nt_ == 2) {
-    const Eigen::Map<const Eigen::Matrix2d> phi(y + n_);
-    Eigen::Map<Eigen::Matrix2d> M(M_.data());
-    const Eigen::Matrix2d pm = phi * M;
-    M = pm;
-    if (column_) {
-      Eigen::Map<Eigen::Vector2d> C(C_.data());
-      const Eigen::Vector2d pc = phi * C;
-      C = pc + Eigen::Map<const Eigen::Vector2d>(y + layout.param());
-    }
-    return;
-  }
-  Eigen::Map<const Eigen::MatrixXd> phi(y + n_, nt_, nt_);
-  tmp_.noalias() = phi * M_;
-  M_.swap(tmp_);
-  if (column_) {
-    ctmp_.noalias() = phi * C_;
-    C_ = ctmp_ + Eigen::Map<const Eigen::VectorXd>(y + layout.param(), nt_);
-  }
 }
 
 // y0: the state, Phi = I, the column (0 but its clocks' (t - t0) d omega / dp).

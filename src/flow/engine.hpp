@@ -1,6 +1,7 @@
 // Private to src/flow/: one Run of the flow (flow.hpp), segment by segment.
 // engine.cpp: the loop, the segments and their events; switching.cpp: the
-// Filippov rule at every event and the saltation matrices.
+// Filippov rule at every event; tangent.cpp: M = dz/dz0 (and the column)
+// across segments and saltations.
 #pragma once
 
 #include <Eigen/Dense>
@@ -75,6 +76,8 @@ class Engine {
   std::string Place(double t, const double* y, int digits = 17) const;
   Stepper& Solver();
   void InitialRows(const TaylorLayout& layout);
+  // tangent.cpp: M (and C) at a start in stick, across a segment.
+  void ProjectStartTangent();
   void AdvanceTangent(const double* y, const TaylorLayout& layout);
   static void OnEvent(void* self, int g, const double* y);
   static void OnStep(void* self, double t, const double* y);
@@ -107,6 +110,7 @@ class Engine {
   std::vector<double> clock_drate_;                // d omega / dp of each clock (column_)
   Eigen::VectorXd rest_;                           // the mode's rest point, if any
   std::vector<double> clock_rate_, clock_offset_;  // clocks = rate t + offset
+  long clock_epoch_ = -1;                          // clock_rate_ is of this system epoch
   double output_origin_ = 0;                       // samples at origin + k output_dt
   long next_output_ = 0;                           // the next sample's k
   double last_switch_t_ = 0;                       // where the last switch was recorded

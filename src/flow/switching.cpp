@@ -271,34 +271,6 @@ void Engine::Exit(int c, int sign, const ModeSet& detected) {
   Record(SwitchKind::kStickOut, c, before, after);
 }
 
-void Engine::Saltation(const ModeSet& before, const ModeSet& after, const Eigen::VectorXd& grad,
-                       double g_p) {
-  if (!variational_) return;
-  f_before_.resize(n_);
-  f_after_.resize(n_);
-  s_->Field(before, z_, f_before_);
-  s_->Field(after, z_, f_after_);
-  const double den = grad.dot(f_before_);
-  if (den == 0) return;  // a tangential event: no finite saltation (measure zero)
-  // M <- S M = M + ((f+ - f-) / den) (grad^T M), on the tangent block.
-  jump_ = (f_after_ - f_before_).head(nt_) / den;
-  if (nt_ == 2) {  // fixed sizes, as AdvanceTangent
-    Eigen::Map<Eigen::Matrix2d> M(M_.data());
-    const Eigen::RowVector2d row = grad.head<2>().transpose() * M;
-    M.noalias() += jump_.head<2>() * row;
-  } else {
-    row_.noalias() = grad.head(nt_).transpose() * M_;
-    M_.noalias() += jump_ * row_;
-  }
-  if (!column_) return;
-  // The parameter as a state of rate 0: the event time moves by -(grad .
-  // dz/dp + g_p) / den, and the column by (f+ - f-) times minus that (the
-  // clocks' column is (t - t0) d omega / dp).
-  double q = grad.head(nt_).dot(C_) + g_p;
-  for (int j = 0; j < n_ - nt_; ++j) q += grad[nt_ + j] * (t_ - t_start_) * clock_drate_[j];
-  C_ += jump_ * q;
-}
-
 double Engine::ArrivalDp(int c) const {
   if (!column_) return 0;
   return -s_->ContactParameterDerivative(mode_, c, *flow_.parameter_, z_).speed;
