@@ -50,6 +50,9 @@ struct Compiled {
   std::vector<std::string> state_names, parameters;
   std::vector<int> derivative_of;  ///< per component: x -> the index of x', else -1
   std::vector<double> defaults;
+  /// Per parameter: whether any expression of the file reads it (after
+  /// GiNaC's own simplification); one that none reads is no axis to follow.
+  std::vector<bool> parameter_used;
   std::vector<ModeProgram> modes;  ///< index sum_c mode_c 3^c (Mode's order)
   /// Parameter-only (and state-linear) quantities: per contact the velocity
   /// and normal forms, the static coefficient and the normal's constancy.

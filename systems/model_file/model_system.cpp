@@ -84,6 +84,12 @@ void ModelSystem::SetParameterValue(int j, double value) {
   Update();
 }
 
+std::string ModelSystem::ParameterError(int j) const {
+  if (j < 0 || j >= parameters() || c_->parameter_used[j]) return "";
+  return "parameter '" + c_->parameters[j] + "' appears in no expression of " + c_->source +
+         " (a branch in it would be flat)";
+}
+
 std::optional<ContactVelocity> ModelSystem::NormalForce(int i) const {
   if (!c_->normal_varies[i]) return std::nullopt;
   return normal_[i];

@@ -56,6 +56,8 @@ class ModelSystem final : public System {
   std::string ParameterName(int j) const override { return c_->parameters[j]; }
   double ParameterValue(int j) const override { return p_[j]; }
   void SetParameterValue(int j, double value) override;
+  /// A parameter no expression of the file reads (a branch in it is flat).
+  std::string ParameterError(int j) const override;
 
  private:
   void Update();  // the contact forms at the parameters

@@ -44,6 +44,8 @@ ex Compiler::Parse(const Located& l, bool state, bool forces, bool slip, const s
   }
   CheckSmooth(e, l);
   Parameters(e, l);
+  for (std::size_t j = 0; j < params_.size(); ++j)
+    if (e.has(params_[j])) out_->parameter_used[j] = true;
   return e;
 }
 

@@ -48,6 +48,7 @@ void Compiler::Symbols() {
   for (const ContactSpec& c : spec_.contacts) forces_.emplace_back(c.name);
   out_->parameters = spec_.parameters;
   out_->defaults = spec_.defaults;
+  out_->parameter_used.assign(params_.size(), false);
 }
 
 void Compiler::ParseContact(std::size_t c) {

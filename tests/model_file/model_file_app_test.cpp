@@ -355,6 +355,14 @@ TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
   EXPECT_TRUE(tu::Contains(r.err, "--mu_k: belt has no parameter mu_k")) << r.err;
   r = RunOut("ss_simulate", dir, {"--model", kModels + "belt.ini", "--set", "vv=1"});
   EXPECT_TRUE(tu::Contains(r.err, "'vv' is no parameter of belt")) << r.err;
+  // A parameter no expression reads: no axis for a branch (flat before).
+  const std::string unread = dir + "/unread.ini";
+  tu::WriteFile(unread, "coordinates = x\nparameter v = 0.25\nparameter mu = 0.4\n"
+                        "parameter c = 3\nx'' = -x + F\ncontact F = x' - v\nlaw F = mu\n");
+  r = RunOut("ss_continue", dir, {"--model", unread, "--param", "c", "--to", "4"});
+  EXPECT_EQ(r.outcome.code, 2) << r.err;
+  EXPECT_TRUE(tu::Contains(r.err, "--param")) << r.err;
+  EXPECT_TRUE(tu::Contains(r.err, "parameter 'c' appears in no expression of")) << r.err;
   EXPECT_FALSE(tu::Exists(dir + "/out"));
 }
 

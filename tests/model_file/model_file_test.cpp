@@ -221,5 +221,26 @@ TEST(ModelFile, MutatedFilesAreReadOrRefusedByName) {
   EXPECT_GT(read, 500);  // a comment or a number changed: still a model
 }
 
+// A parameter no expression reads is no axis: ParameterError names it; one
+// that a law, a contact, a clock or a static line reads is; one that GiNaC's
+// own simplification cancels (k x - k x) is read by none.
+TEST(ModelFile, AParameterNoExpressionReadsIsRefusedAsAnAxis) {
+  const std::string head =
+      "coordinates = x\nparameter v = 0.25\nparameter mu = 0.4\nparameter k = 2\n"
+      "parameter w = 1.3\nparameter ms = 0.5\nparameter unused = 7\n";
+  const std::unique_ptr<System> s = ParseModel(
+      head + "clock th = w\nx'' = -x + k*x - k*x + F + 0.1*cos(th)\ncontact F = x' - v\n"
+             "law F = mu\nstatic F = ms\n",
+      "axes.ini");
+  for (const char* used : {"v", "mu", "w", "ms"})
+    EXPECT_EQ(s->ParameterError(s->ParameterIndex(used)), "") << used;
+  for (const char* unread : {"k", "unused"}) {
+    const std::string e = s->ParameterError(s->ParameterIndex(unread));
+    EXPECT_NE(e.find(std::string("parameter '") + unread + "' appears in no expression of axes.ini"),
+              std::string::npos)
+        << e;
+  }
+}
+
 }  // namespace
 }  // namespace stickslip::model_file
