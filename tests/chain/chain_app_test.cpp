@@ -209,6 +209,10 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
     a.insert(a.end(), plane.begin(), plane.end());
     ExpectRejected("ss_chart", a, {key, "'kc' does not apply to a chain of one block"});
   }
+  ExpectRejected("ss_orbit_diagram",
+                 {"--system", "chain", "--blocks", "1", "--param", "kc", "--from", "0.1", "--to",
+                  "1", "--n", "2"},
+                 {"--param", "'kc' does not apply to a chain of one block"});
   ExpectRejected("ss_continue", {"--system", "chain", "--param", "v"}, {"--to"});
   ExpectRejected("ss_continue", with({"--system", "chain", "--start_at", "0.9"}),
                  {"--start_at", "0.9"});

@@ -16,6 +16,7 @@
 
 #include "chain/chain.hpp"
 #include "mode_coupling/mode_coupling.hpp"
+#include "stickslip/chaos/orbit_diagram.hpp"
 #include "stickslip/chart/system_chart.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
@@ -252,6 +253,10 @@ TEST(ModelFile, AParameterNoExpressionReadsIsRefusedAsAnAxis) {
   EXPECT_THROW(ChartSystem(*s, o), InvalidArgument);
   o.plane.p2 = s->ParameterIndex("mu");
   EXPECT_EQ(o.plane.ValidationError(*s), "");
+  // And an orbit diagram's (every column the same).
+  OrbitDiagramOptions d;
+  d.from = 1, d.to = 3, d.n = 2;
+  EXPECT_THROW(ComputeOrbitDiagram(*s, s->ParameterIndex("k"), d), InvalidArgument);
 }
 
 }  // namespace
