@@ -118,6 +118,8 @@ void ConfigureSystem(const cli::Arguments& args, Setup& s) {
   if (s.param < 0)
     throw cli::UsageError(args.Source("param") + " = " + name + ": no parameter of " +
                           cli::SystemLabel(args) + " (" + cli::ParameterList(*s.system) + ")");
+  if (const std::string e = s.system->ParameterError(s.param); !e.empty())  // a flat diagram
+    throw cli::UsageError(args.Source("param") + ": " + e);
   for (const char* end : {"from", "to"})
     if (!args.Given(end)) throw cli::UsageError(cli::SystemLabel(args) + " needs --" + end);
   s.o.from = args.Number("from", 0), s.o.to = args.Number("to", 0);

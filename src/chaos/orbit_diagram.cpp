@@ -122,6 +122,8 @@ OrbitDiagram ComputeOrbitDiagram(const System& base, int j, const OrbitDiagramOp
   if (j < 0 || j >= base.parameters())
     throw InvalidArgument("parameter index " + std::to_string(j) + " must lie in [0, " +
                           std::to_string(base.parameters() - 1) + "]");
+  // A parameter the system does not depend on: every column the same (as AxisError above).
+  if (const std::string pe = base.ParameterError(j); !pe.empty()) throw InvalidArgument(pe);
   if (base.clocks() > 1) throw InvalidArgument("a system with more than one clock");
   if (base.clocks() == 0 && !o.surface) MaximaSection(base);  // its steady sliding, once
   for (double v : {o.from, o.to}) {

@@ -78,6 +78,8 @@ std::string SystemPlane::ValidationError(const System& s) const {
   if (p1 < 0 || p1 >= np || p2 < 0 || p2 >= np)
     return "a chart's axes are parameter indices in [0, " + std::to_string(np - 1) + "]";
   if (p1 == p2) return "the two axes are both " + s.ParameterName(p1);
+  for (int j : {p1, p2})  // an axis the system does not depend on: every curve flat in it
+    if (std::string e = s.ParameterError(j); !e.empty()) return e;
   for (double x : {from1, to1, from2, to2})
     if (!std::isfinite(x)) return "a range end is not finite";
   if (!(from1 < to1)) return "the first range is empty or inverted: from >= to";

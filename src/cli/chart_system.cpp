@@ -19,7 +19,8 @@ namespace stickslip::cli {
 
 namespace {
 
-// A parameter of s by the option `key` (UsageError naming it otherwise).
+// A parameter of s by the option `key`, one s depends on (UsageError naming
+// the option otherwise).
 int Axis(const Arguments& args, const System& s, const char* key) {
   if (!args.Given(key))
     throw UsageError("--" + std::string(key) + " is required with --system (one of " +
@@ -28,6 +29,8 @@ int Axis(const Arguments& args, const System& s, const char* key) {
   if (j < 0)
     throw UsageError(args.Source(key) + " = '" + args.Text(key) + "' is no parameter of " +
                      Name(SystemChoiceOf(args)) + " (its parameters: " + ParameterList(s) + ")");
+  if (const std::string e = s.ParameterError(j); !e.empty())  // as ss_continue's --param
+    throw UsageError(args.Source(key) + ": " + e);
   return j;
 }
 

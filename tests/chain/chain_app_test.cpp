@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "app_test_util.hpp"
@@ -197,6 +198,20 @@ TEST_F(SystemApp, BadSystemInputIsRefusedByName) {
   // (a flat branch in kc before).
   ExpectRejected("ss_continue",
                  {"--system", "chain", "--blocks", "1", "--param", "kc", "--to", "0.5"},
+                 {"--param", "'kc' does not apply to a chain of one block"});
+  // The same for either axis of a chart, before any run (a partial chart before).
+  const std::vector<std::string> plane = {"--from",  "0.1", "--to",  "1",
+                                          "--from2", "0.1", "--to2", "0.3"};
+  for (const auto& [p1, p2, key] :
+       {std::tuple{"kc", "v", "--param"}, std::tuple{"v", "kc", "--param2"}}) {
+    std::vector<std::string> a = {"--system", "chain", "--blocks", "1",
+                                  "--param",  p1,      "--param2", p2};
+    a.insert(a.end(), plane.begin(), plane.end());
+    ExpectRejected("ss_chart", a, {key, "'kc' does not apply to a chain of one block"});
+  }
+  ExpectRejected("ss_orbit_diagram",
+                 {"--system", "chain", "--blocks", "1", "--param", "kc", "--from", "0.1", "--to",
+                  "1", "--n", "2"},
                  {"--param", "'kc' does not apply to a chain of one block"});
   ExpectRejected("ss_continue", {"--system", "chain", "--param", "v"}, {"--to"});
   ExpectRejected("ss_continue", with({"--system", "chain", "--start_at", "0.9"}),

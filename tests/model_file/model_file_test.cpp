@@ -16,6 +16,8 @@
 
 #include "chain/chain.hpp"
 #include "mode_coupling/mode_coupling.hpp"
+#include "stickslip/chaos/orbit_diagram.hpp"
+#include "stickslip/chart/system_chart.hpp"
 #include "stickslip/errors.hpp"
 #include "stickslip/flow/simulate.hpp"
 #include "stickslip/orbits/shooting.hpp"
@@ -228,18 +230,33 @@ TEST(ModelFile, AParameterNoExpressionReadsIsRefusedAsAnAxis) {
   const std::string head =
       "coordinates = x\nparameter v = 0.25\nparameter mu = 0.4\nparameter k = 2\n"
       "parameter w = 1.3\nparameter ms = 0.5\nparameter unused = 7\n";
-  const std::unique_ptr<System> s = ParseModel(
-      head + "clock th = w\nx'' = -x + k*x - k*x + F + 0.1*cos(th)\ncontact F = x' - v\n"
-             "law F = mu\nstatic F = ms\n",
-      "axes.ini");
+  const std::unique_ptr<System> s =
+      ParseModel(head +
+                     "clock th = w\nx'' = -x + k*x - k*x + F + 0.1*cos(th)\ncontact F = x' - v\n"
+                     "law F = mu\nstatic F = ms\n",
+                 "axes.ini");
   for (const char* used : {"v", "mu", "w", "ms"})
     EXPECT_EQ(s->ParameterError(s->ParameterIndex(used)), "") << used;
   for (const char* unread : {"k", "unused"}) {
     const std::string e = s->ParameterError(s->ParameterIndex(unread));
-    EXPECT_NE(e.find(std::string("parameter '") + unread + "' appears in no expression of axes.ini"),
-              std::string::npos)
+    EXPECT_NE(
+        e.find(std::string("parameter '") + unread + "' appears in no expression of axes.ini"),
+        std::string::npos)
         << e;
   }
+  // A chart's axis too (SystemPlane; ChartSystem refuses it before any run).
+  SystemChartOptions o;
+  o.plane = {s->ParameterIndex("v"), s->ParameterIndex("k"), 0.1, 0.3, 1, 3};
+  EXPECT_NE(o.ValidationError(*s).find("parameter 'k' appears in no expression of axes.ini"),
+            std::string::npos)
+      << o.ValidationError(*s);
+  EXPECT_THROW(ChartSystem(*s, o), InvalidArgument);
+  o.plane.p2 = s->ParameterIndex("mu");
+  EXPECT_EQ(o.plane.ValidationError(*s), "");
+  // And an orbit diagram's (every column the same).
+  OrbitDiagramOptions d;
+  d.from = 1, d.to = 3, d.n = 2;
+  EXPECT_THROW(ComputeOrbitDiagram(*s, s->ParameterIndex("k"), d), InvalidArgument);
 }
 
 }  // namespace

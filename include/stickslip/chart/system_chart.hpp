@@ -38,7 +38,8 @@ struct SystemPlane {
   int p1 = 0, p2 = 1;
   double from1 = 0, to1 = 1, from2 = 0, to2 = 1;
   /// Empty if valid for `system`, else one line naming the offending value:
-  /// an index out of range, equal axes, a range not finite, empty, inverted
+  /// an index out of range, equal axes, an axis the system does not depend
+  /// on (System::ParameterError), a range not finite, empty, inverted
   /// or narrower than kMinRelativeWidth, or a point of the rectangle's
   /// border (17 per edge) where the system is invalid.
   std::string ValidationError(const System& system) const;
