@@ -13,7 +13,7 @@ void Engine::ProjectStartTangent() {
   for (int i = 0; i < k_; ++i) {
     if (!mode_.sticks(i)) continue;
     const ContactVelocity& c = contacts_[i];
-    Eigen::VectorXd& g = grad_;  // scratch: no allocation once warm
+    Eigen::VectorXd& g = grad_;  // scratch (no temporary per start)
     g.setZero(nt_);
     for (int t = 0; t < c.size; ++t)
       if (c.terms[t].index < nt_) g[c.terms[t].index] += c.terms[t].weight;

@@ -363,6 +363,16 @@ TEST_F(ModelFileApp, EveryBadFileIsOneLineNamingItsLine) {
   EXPECT_EQ(r.outcome.code, 2) << r.err;
   EXPECT_TRUE(tu::Contains(r.err, "--param")) << r.err;
   EXPECT_TRUE(tu::Contains(r.err, "parameter 'c' appears in no expression of")) << r.err;
+  // The same axis in a chart and an orbit diagram.
+  r = RunOut("ss_chart", dir,
+             {"--model", unread, "--param", "v", "--from", "0.1", "--to", "0.3", "--param2", "c",
+              "--from2", "1", "--to2", "4"});
+  EXPECT_EQ(r.outcome.code, 2) << r.err;
+  EXPECT_TRUE(tu::Contains(r.err, "--param2: parameter 'c' appears in no expression")) << r.err;
+  r = RunOut("ss_orbit_diagram", dir,
+             {"--model", unread, "--param", "c", "--from", "1", "--to", "4"});
+  EXPECT_EQ(r.outcome.code, 2) << r.err;
+  EXPECT_TRUE(tu::Contains(r.err, "--param: parameter 'c' appears in no expression")) << r.err;
   EXPECT_FALSE(tu::Exists(dir + "/out"));
 }
 
