@@ -163,29 +163,19 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
     if (r.col) ClockColumn(order, r.col);
     if (cubic3)
       return var ? Cubic3Dispatch<true, true>(order, r) : Cubic3Dispatch<false, true>(order, r);
-    ForcedRecurrences(order, r, var);
+    LawRecurrences<true>(order, r, var);
     return ForcingRows(order, ac, as);
   }
   if (cubic3)
     return var ? Cubic3Dispatch<true, false>(order, r) : Cubic3Dispatch<false, false>(order, r);
-#define STICKSLIP_LAW(L) \
-  return var ? Recurrences<L, true, false>(order, r) : Recurrences<L, false, false>(order, r);
-  switch (law_) {
-    case LawKind::kCubic:
-      STICKSLIP_LAW(LawKind::kCubic)
-    case LawKind::kCoulomb:
-      STICKSLIP_LAW(LawKind::kCoulomb)
-    case LawKind::kStribeck:
-      STICKSLIP_LAW(LawKind::kStribeck)
-    case LawKind::kLeine:
-      STICKSLIP_LAW(LawKind::kLeine)
-  }
-#undef STICKSLIP_LAW
+  LawRecurrences<false>(order, r, var);
 }
 
-void BeltTaylorField::ForcedRecurrences(int order, const Rows& r, bool var) {
+// The laws' recurrences but the seed law's kernel, by law and variational rows.
+template <bool Forced>
+void BeltTaylorField::LawRecurrences(int order, const Rows& r, bool var) {
 #define STICKSLIP_LAW(L) \
-  return var ? Recurrences<L, true, true>(order, r) : Recurrences<L, false, true>(order, r);
+  return var ? Recurrences<L, true, Forced>(order, r) : Recurrences<L, false, Forced>(order, r);
   switch (law_) {
     case LawKind::kCubic:
       STICKSLIP_LAW(LawKind::kCubic)

@@ -64,9 +64,10 @@ class BeltTaylorField final : public TaylorField {
   // theta's column row: d theta / dp, of rate 1 for omega's column, else 0.
   void ClockColumn(int order, TaylorRow* col) const;
   void Forcing(int order, double theta0, double* ac, double* as);
-  // The laws but the seed's kernel with the forcing: Recurrences carries
-  // the forcing's series; ForcingRows then ends it and fills A cos, A sin.
-  void ForcedRecurrences(int order, const Rows& r, bool var);
+  // The laws but the seed's kernel (with the forcing, Recurrences carries
+  // its series; ForcingRows then ends it and fills A cos, A sin).
+  template <bool Forced>
+  void LawRecurrences(int order, const Rows& r, bool var);
   void ForcingRows(int order, double* ac, double* as);
   void ResolveParameter();
   // Out of line for the seed law's kernel (its x86-64-v3 clone would fuse
