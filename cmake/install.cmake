@@ -2,7 +2,8 @@
 # stickslip::stickslip (and stickslip::model_file to read model files).
 include(CMakePackageConfigHelpers)
 
-install(TARGETS stickslip stickslip_model_file EXPORT stickslipTargets
+install(TARGETS stickslip stickslip_model_file stickslip_model_file_core stickslip_model_compiler
+  EXPORT stickslipTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
@@ -12,6 +13,8 @@ install(FILES ${PROJECT_SOURCE_DIR}/systems/model_file/model_file.hpp
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/stickslip DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.hpp")
 install(TARGETS ${STICKSLIP_APP_TARGETS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The apps' model compiler, loaded when they read a model file (CMakeLists.txt).
+install(TARGETS stickslip_model_compiler_module LIBRARY DESTINATION ${STICKSLIP_MODEL_MODULE_DIR})
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/CITATION.cff
   ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/stickslip)
 # The docs (with their figures) and the studies: `--study NAME` finds an

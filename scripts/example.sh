@@ -15,3 +15,7 @@ cmake --build "$tmp/example" >/dev/null
 "$tmp/example/own_system"
 "$tmp/example/own_model"
 "$tmp/prefix/bin/ss_continue" --version
+# The installed apps' model compiler (a module in LIBDIR/stickslip, found from bin/).
+"$tmp/prefix/bin/ss_simulate" --model "$tmp/prefix/share/stickslip/studies/models/belt.ini" \
+  --t_end 20 --no_plots --out "$tmp/simulate" >/dev/null
+test -s "$tmp/simulate/trajectory.tsv"

@@ -215,9 +215,3 @@ void Compiler::RecordColumns(ModeProgram& p, const std::vector<int>& full_out) {
 }
 
 }  // namespace stickslip::model_file
-
-namespace stickslip::model_file {
-
-std::shared_ptr<const Compiled> Compile(const ModelSpec& spec) { return Compiler(spec).Run(); }
-
-}  // namespace stickslip::model_file

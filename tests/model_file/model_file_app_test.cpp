@@ -224,7 +224,9 @@ TEST_F(ModelFileApp, TheForcedStribeckFileGivesTheBuiltInBranchRowByRow) {
         EXPECT_EQ(u, w) << name << " row " << i;
         continue;
       }
-      if (name == "stable" && !fold) EXPECT_EQ(u, w) << name << " row " << i;
+      if (name == "stable" && !fold) {
+        EXPECT_EQ(u, w) << name << " row " << i;
+      }
       if (name == "stable") continue;
       const double e = std::abs(std::stod(u) - std::stod(w)) / (1 + std::abs(std::stod(w)));
       (name.rfind("mult", 0) == 0 ? worst_mult : worst) =
