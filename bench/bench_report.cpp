@@ -72,28 +72,29 @@ ss::TsvTable Table(const std::vector<Row>& rows, const Reference& ref, const Pro
   t.AddMeta("ss_continue", "process (default rtol 1e-11), medians: --no_plots " + Ms(pt.full) +
                                " ms, --no_plots --no_estimates " + Ms(pt.no_estimates) +
                                " ms, start-up (--help) " + Ms(pt.startup) + " ms");
+  using E = ss::TsvTable::Cell;  // NaN: does not apply (an empty cell, never "nan")
   for (const Row& r : rows)
     t.AddRow({r.method,
-              r.rtol,
-              r.eps,
+              E::OrEmpty(r.rtol),
+              E::OrEmpty(r.eps),
               r.runs,
-              r.t,
-              r.cpu,
-              r.t_branch,
-              r.t_eval,
+              E::OrEmpty(r.t),
+              E::OrEmpty(r.cpu),
+              E::OrEmpty(r.t_branch),
+              E::OrEmpty(r.t_eval),
               r.steps,
               r.points,
-              r.err_period,
-              r.err_xmax,
-              r.err_gr,
-              r.err_hb,
+              E::OrEmpty(r.err_period),
+              E::OrEmpty(r.err_xmax),
+              E::OrEmpty(r.err_gr),
+              E::OrEmpty(r.err_hb),
               r.n_gr,
               r.n_hb,
               r.n_lp,
               r.kinds,
               r.same,
-              r.speedup_orbits,
-              r.speedup_branch,
+              E::OrEmpty(r.speedup_orbits),
+              E::OrEmpty(r.speedup_branch),
               r.note.empty() ? "-" : r.note});
   return t;
 }
