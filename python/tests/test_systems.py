@@ -149,6 +149,9 @@ class SteadyBranchAndSettle(unittest.TestCase):
         self.assertTrue(np.all(b.stable == (b.max_real < 0)))
         with self.assertRaises(ValueError):
             stickslip.steady_branch(self.brake(0.3), "gamma2", 0.7)
+        # A parameter the system does not read: refused, as ss_continue does (a flat line).
+        with self.assertRaisesRegex(ValueError, "'mu_m' does not apply to the coulomb law"):
+            stickslip.steady_branch(stickslip.Params("coulomb", mu_s=0.4, mu_k=0.3), "mu_m", 0.5)
 
     def test_chart_hopf_curve_is_the_flutter_closed_form_and_its_fold_has_a_cusp(self):
         """chart(system, ...) as ss_chart --study brake_chart: every HB point at mu_k*(beta);

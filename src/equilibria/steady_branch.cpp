@@ -71,6 +71,7 @@ SteadyBranch ContinueSteadySliding(const System& system, int parameter, double t
   if (e.empty() && (parameter < 0 || parameter >= system.parameters()))
     e = "parameter = " + std::to_string(parameter) + " is not one of the system's " +
         std::to_string(system.parameters());
+  if (e.empty()) e = system.ParameterError(parameter);  // a flat branch otherwise
   const double from = e.empty() ? system.ParameterValue(parameter) : 0;
   if (e.empty() && (!std::isfinite(to) || to == from))
     e = "to = " + Num(to) + " must be finite and differ from " + system.ParameterName(parameter) +

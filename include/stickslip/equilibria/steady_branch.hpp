@@ -50,7 +50,8 @@ struct SteadyBranch {
 /// where there is none at the start; kContactLost where a normal force at the
 /// rest point falls to 0 or below (the rows end before); kStepTooSmall where
 /// the rest point ceases to exist. Throws InvalidArgument on an invalid
-/// system, options, parameter index or range.
+/// system, options, parameter index or range, or a parameter the system
+/// does not depend on (System::ParameterError).
 SteadyBranch ContinueSteadySliding(const System& system, int parameter, double to,
                                    const SteadyBranchOptions& options);
 
