@@ -23,7 +23,10 @@ std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& M) {
     e = {tr / 2 + disc, tr / 2 - disc};
   } else if (M.rows() == 1) {
     e = {M(0, 0)};
-  } else if (M.rows() > 2) {
+  } else if (M.rows() == 3) {  // a forced orbit's exit section: fixed size, no allocation
+    const Eigen::EigenSolver<Eigen::Matrix3d> es(Eigen::Matrix3d(M), false);
+    e.assign(es.eigenvalues().data(), es.eigenvalues().data() + 3);
+  } else if (M.rows() > 3) {
     const Eigen::EigenSolver<Eigen::MatrixXd> es(M, false);
     e.assign(es.eigenvalues().data(), es.eigenvalues().data() + M.rows());
   }
