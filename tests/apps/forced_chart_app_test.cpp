@@ -66,8 +66,9 @@ TEST_F(ForcedChartAppTest, TimeLimitCutsItShort) {
   EXPECT_EQ(Chart(args), 1) << err_;
   EXPECT_TRUE(Contains(err_, "cut short")) << err_;
   EXPECT_TRUE(Contains(ReadFile(dir_ + "/c/curves.tsv"), "# status: cut short")) << out_;
-  if (Exists(dir_ + "/c/response.tsv"))  // the curves may take the whole second
+  if (Exists(dir_ + "/c/response.tsv")) {  // the curves may take the whole second
     EXPECT_TRUE(Contains(ReadFile(dir_ + "/c/response.tsv"), "# status: cut short")) << out_;
+  }
 }
 
 TEST_F(ForcedChartAppTest, BadInputExits2NamingTheOption) {
