@@ -176,6 +176,17 @@ double RefineRoot(const double* c, int n, int sign, int zero_sign, double u0, do
   }
   return hi;
 }
+
+// Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no
+// isolation needed.
+PolyRoot MonotoneRoot(const double* c, int n, int sign, int zero_sign) {
+  PolyRoot out;
+  out.monotone = true;
+  const double g1 = Horner(c, n, 1.0);
+  if (Sign(g1, zero_sign) != sign)
+    out.found = true, out.u = RefineRoot(c, n, sign, zero_sign, 0.0, 1.0, g1);
+  return out;
+}
 }  // namespace
 
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
@@ -194,16 +205,9 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
   const double margin = Tolerances::PolyMargin(n, scale);
   auto g = [&](double u) { return Horner(c, n, u); };
   auto changed = [&](double u) { return Sign(g(u), zero_sign) != sign; };
-  // Monotone on [0, 1]: one root at most, there iff the sign at 1 differs; no
-  // isolation needed.
-  if (Monotone(c, n)) {
-    out.monotone = true;
-    const double g1 = g(1.0);
-    if (Sign(g1, zero_sign) != sign)
-      out.found = true, out.u = RefineRoot(c, n, sign, zero_sign, 0.0, 1.0, g1);
-    return out;
-  }
-
+  if (Monotone(c, n)) return MonotoneRoot(c, n, sign, zero_sign);
+  // The cubic part's bound, before the Bernstein coefficients (O(n^2)).
+  if (CubicBoundExcludes(c, n, sign, tail - (n >= 3 ? std::abs(c[3]) : 0.0), scale)) return out;
   // Depth-first, left half first: the first interval that holds a sign change
   // holds the first root.
   Piece stack[kMaxDepth + 2];

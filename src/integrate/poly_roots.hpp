@@ -43,6 +43,28 @@ inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail
   return q_min - tail > margin;
 }
 
+// The same by the cubic part, for the search past the quadratic bound: sign *
+// (c0 + ... + c3 u^3) stays above tail4 = sum_{k>=4} |c_k| by more than
+// rounding; its minimum on [0, 1] is at an end or where its derivative
+// vanishes (a root of 3 c3 u^2 + 2 c2 u + c1, by the stable formula).
+// Twice PolyMargin exceeds Horner's rounding (Higham 2002, eq. 5.3: 2 n eps
+// sum |c_k|) with the tail's own: where this excludes, no evaluation of the
+// polynomial changes sign, so the search past it finds no root either.
+inline bool CubicBoundExcludes(const double* c, int n, int sign, double tail4, double scale) {
+  const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0,
+               q3 = n >= 3 ? sign * c[3] : 0.0;
+  const double margin = 2 * Tolerances::PolyMargin(n, scale) + tail4;
+  auto q = [&](double u) { return q0 + u * (q1 + u * (q2 + u * q3)); };
+  if (!(q0 > margin) || !(q0 + q1 + q2 + q3 > margin)) return false;
+  const double a = 3 * q3, b = 2 * q2;
+  auto inside_above = [&](double u) { return !(u > 0 && u < 1) || q(u) > margin; };
+  if (a == 0) return b == 0 || inside_above(-q1 / b);
+  const double d = b * b - 4 * a * q1;
+  if (d < 0) return true;  // q monotone: the ends decide
+  const double s = -0.5 * (b + std::copysign(std::sqrt(d), b));
+  return inside_above(s / a) && (s == 0 || inside_above(q1 / s));
+}
+
 // Whether c (degree n) is strictly monotone on [0, 1]: its derivative's
 // quadratic bound excludes a root there. Then c has at most one root on [0, 1].
 inline bool Monotone(const double* c, int n) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace ss = stickslip;
 
@@ -47,4 +48,58 @@ TEST(PolyRoots, NearTouchIsNoRoot) {
   const double c[4] = {0.16 + 1e-3, -0.64, 0.2, 1};
   EXPECT_FALSE(ss::Monotone(c, 3));
   EXPECT_FALSE(ss::FirstSignChange(c, 3, 1, 1).found);
+}
+
+namespace {
+double AbsSumFrom(const double* c, int n, int from) {
+  double s = 0;
+  for (int k = from; k <= n; ++k) s += std::abs(c[k]);
+  return s;
+}
+}  // namespace
+
+// 0.2 - u/2 + u^2/2 - u^3/10 + 1e-4 u^4: the quadratic bound fails (|c_3| =
+// 0.1 in its tail exceeds the quadratic's minimum 0.075); the cubic's minimum
+// (0.058 near u = 0.61) clears the tail 1e-4. Sampled at 10^5 points in long
+// double, the polynomial stays above 0.058.
+TEST(PolyRoots, CubicBoundExcludesWhereTheQuadraticCannot) {
+  const double c[5] = {0.2, -0.5, 0.5, -0.1, 1e-4};
+  long double lowest = INFINITY;
+  for (int i = 0; i <= 100000; ++i) {
+    const long double u = i / 100000.0L;
+    lowest = std::min(lowest, c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * c[4]))));
+  }
+  EXPECT_GT(lowest, 0.058L);
+  EXPECT_FALSE(ss::QuadraticBoundExcludes(c, 4, 1, AbsSumFrom(c, 4, 3)));
+  EXPECT_TRUE(ss::CubicBoundExcludes(c, 4, 1, AbsSumFrom(c, 4, 4), AbsSumFrom(c, 4, 0)));
+  EXPECT_FALSE(ss::FirstSignChange(c, 4, 1, 1).found);
+  // The same with the sign turned: -g is excluded for sign -1, not for +1.
+  double m[5];
+  for (int k = 0; k < 5; ++k) m[k] = -c[k];
+  EXPECT_TRUE(ss::CubicBoundExcludes(m, 4, -1, AbsSumFrom(m, 4, 4), AbsSumFrom(m, 4, 0)));
+  EXPECT_FALSE(ss::CubicBoundExcludes(m, 4, 1, AbsSumFrom(m, 4, 4), AbsSumFrom(m, 4, 0)));
+}
+
+// g = (r - u) p(u), p > 0 on [0, 1] of degree 19 with decaying random
+// coefficients, so g changes sign at r exactly: the bound must never exclude
+// it, and the search finds r (to the root's conditioning). 20000 draws, r
+// from 1e-6 to 1 - 1e-6.
+TEST(PolyRoots, CubicBoundNeverExcludesAKnownRoot) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  constexpr int kN = 20;
+  int excluded = 0, missed = 0;
+  for (int draw = 0; draw < 20000; ++draw) {
+    const double r = draw % 4 == 0 ? 1e-6 : (draw % 4 == 1 ? 1 - 1e-6 : 0.5 * (1 + unit(rng)));
+    long double p[kN] = {1.5L};  // p_0 = 1.5 > sum |p_k|, k >= 1
+    for (int k = 1; k < kN; ++k) p[k] = unit(rng) * std::pow(0.5, k);
+    double c[kN + 1];
+    for (int k = 0; k <= kN; ++k)  // (r - u) p(u)
+      c[k] = static_cast<double>((k < kN ? r * p[k] : 0.0L) - (k > 0 ? p[k - 1] : 0.0L));
+    if (ss::CubicBoundExcludes(c, kN, 1, AbsSumFrom(c, kN, 4), AbsSumFrom(c, kN, 0))) ++excluded;
+    const ss::PolyRoot root = ss::FirstSignChange(c, kN, 1, 1);
+    if (!root.found || std::abs(root.u - r) > 1e-9) ++missed;
+  }
+  EXPECT_EQ(excluded, 0);
+  EXPECT_EQ(missed, 0);
 }
