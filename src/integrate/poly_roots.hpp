@@ -37,6 +37,7 @@ void RestrictToTail(const double* c, int n, double u, double* out);
 inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail) {
   const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0;
   const double scale = std::abs(q0) + std::abs(q1) + std::abs(q2) + tail;
+  if (!Tolerances::PolyBoundsApply(scale)) return false;  // q1^2 would underflow or overflow
   const double margin = Tolerances::PolyMargin(n, scale);
   double q_min = std::min(q0, q0 + q1 + q2);
   if (q2 > 0 && -q1 > 0 && -q1 < 2 * q2) q_min = std::min(q_min, q0 - q1 * q1 / (4 * q2));
@@ -47,12 +48,14 @@ inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail
 // (c0 + ... + c3 u^3) stays above tail4 = sum_{k>=4} |c_k| by more than
 // rounding; its minimum on [0, 1] is at an end or where its derivative
 // vanishes (a root of 3 c3 u^2 + 2 c2 u + c1, by the stable formula).
-// Twice PolyMargin exceeds Horner's rounding (Higham 2002, eq. 5.3: 2 n eps
-// sum |c_k|) with the tail's own: where this excludes, no evaluation of the
-// polynomial changes sign, so the search past it finds no root either.
+// Twice PolyMargin exceeds the rounding of Horner's rule on the even and odd
+// parts (Higham 2002, eq. 5.3, for 1.5 n + 3 operations) with the tail's own:
+// where this excludes, no evaluation of the polynomial changes sign, so the
+// search past it finds no root either.
 inline bool CubicBoundExcludes(const double* c, int n, int sign, double tail4, double scale) {
   const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0,
                q3 = n >= 3 ? sign * c[3] : 0.0;
+  if (!Tolerances::PolyBoundsApply(scale)) return false;  // b^2 - 4 a q1 would not be finite
   const double margin = 2 * Tolerances::PolyMargin(n, scale) + tail4;
   auto q = [&](double u) { return q0 + u * (q1 + u * (q2 + u * q3)); };
   if (!(q0 > margin) || !(q0 + q1 + q2 + q3 > margin)) return false;

@@ -128,6 +128,10 @@ struct Tolerances : FixedTolerances {
   /// Event roots on a step polynomial (poly_roots.cpp): rounding of the
   /// Bernstein conversion and halvings, a few ulp of scale per degree.
   static double PolyMargin(int degree, double scale) { return 2.0 * (degree + 1) * kEps * scale; }
+  /// The quadratic and cubic bounds (poly_roots.hpp) square coefficients:
+  /// they judge only a polynomial whose sum |c_k| lies within these, where no
+  /// product of two of them that matters overflows or underflows.
+  static bool PolyBoundsApply(double scale) { return scale >= 1e-100 && scale <= 1e100; }
   /// An interval of u in [0, 1] this narrow is one point (about 1.8 eps).
   static double PolyWidth(double u) { return 4e-16 * Scale(u); }
   /// Newton on a step polynomial stops at a step below this (quadratic

@@ -103,3 +103,41 @@ TEST(PolyRoots, CubicBoundNeverExcludesAKnownRoot) {
   EXPECT_EQ(excluded, 0);
   EXPECT_EQ(missed, 0);
 }
+
+// Cubics whose minimum on (0, 1) lies inside, below 0, while both ends are
+// positive: the bound must look at the interior critical points (each root of
+// the derivative's quadratic formula in turn), and at its margin.
+TEST(PolyRoots, CubicBoundSeesTheInteriorMinimumAndItsMargin) {
+  // 0.24 - u + u^2 + 0.001 u^3: minimum about -0.0099 near u = 0.5.
+  const double a[4] = {0.24, -1, 1, 0.001};
+  // 0.03 + 0.075 u - 0.825 u^2 + u^3: minimum -0.01375 at u = 0.5 exactly.
+  const double b[4] = {0.03, 0.075, -0.825, 1};
+  for (const double* c : {a, b}) {
+    EXPECT_FALSE(ss::CubicBoundExcludes(c, 3, 1, 0.0, AbsSumFrom(c, 3, 0)));
+    EXPECT_TRUE(ss::FirstSignChange(c, 3, 1, 1).found);
+  }
+  const double min_b = 0.03 + 0.075 * 0.5 - 0.825 * 0.25 + 0.125;
+  EXPECT_NEAR(min_b, -0.01375, 1e-15);
+  // 1 + 1e-15 - u^4: positive on [0, 1] by 1e-15, within the margin.
+  const double m[5] = {1 + 1e-15, 0, 0, 0, -1};
+  EXPECT_FALSE(ss::CubicBoundExcludes(m, 4, 1, 1.0, AbsSumFrom(m, 4, 0)));
+}
+
+// The same root whatever the polynomial's size: (u - 0.2)(u - 0.7) and the
+// first cubic above, scaled to 1e154 (b^2 overflows), to 1e-165 (q1^2
+// underflows) and to 1e-301: the bounds step aside, the Bernstein search
+// finds the root the unscaled polynomial has.
+TEST(PolyRoots, BoundsStepAsideForHugeAndTinyCoefficients) {
+  const double quad[3] = {0.14, -0.9, 1}, cubic[4] = {0.24, -1, 1, 0.001};
+  const double cubic_root = ss::FirstSignChange(cubic, 3, 1, 1).u;
+  for (double f : {1e154, 1e-165, 1e-301}) {
+    double q[3], c[4];
+    for (int k = 0; k < 3; ++k) q[k] = quad[k] * f;
+    for (int k = 0; k < 4; ++k) c[k] = cubic[k] * f;
+    const ss::PolyRoot rq = ss::FirstSignChange(q, 2, 1, 1), rc = ss::FirstSignChange(c, 3, 1, 1);
+    ASSERT_TRUE(rq.found) << f;
+    EXPECT_NEAR(rq.u, 0.2, 1e-12) << f;
+    ASSERT_TRUE(rc.found) << f;
+    EXPECT_NEAR(rc.u, cubic_root, 1e-12) << f;
+  }
+}
