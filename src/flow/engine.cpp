@@ -150,6 +150,12 @@ void Engine::UseEvents() {
   for (EventSet& e : sets_)
     if (e.used && e.mode == mode_) set = &e;
   const bool fresh = !set;
+  // The current set's events live in problem_, swapped in (no copy per
+  // segment): returned to their set before another is built or swapped in.
+  if (cur_ && cur_ != set) {
+    problem_.events.Swap(cur_->events);
+    cur_ = nullptr;
+  }
   if (fresh) {
     set = &sets_[next_set_];
     next_set_ = (next_set_ + 1) % kEventSets;
@@ -163,11 +169,13 @@ void Engine::UseEvents() {
     set->has_rest = !mode_.AnySticks() && s_->Rest(mode_, set->rest, &set->rest_stable);
     set->rest_epoch = system_epoch_;
   }
-  if (fresh || cur_ != set) problem_.events = set->events;
-  cur_ = set;
+  if (cur_ != set) {
+    problem_.events.Swap(set->events);
+    cur_ = set;
+  }
   // A start just off a surface that reaches it at once arrives there.
   for (int k : set->arrival_events) {
-    const int c = set->roles[set->events.event(k).g].index;
+    const int c = set->roles[problem_.events.event(k).g].index;
     problem_.events.SetAtStart(k, contacts_[c].At(z_.data()) != 0);
   }
 }
@@ -240,8 +248,10 @@ bool Engine::Segment() {
 
 // y0: the state, Phi = I, the column (0 but its clocks' (t - t0) d omega / dp).
 void Engine::InitialRows(const TaylorLayout& layout) {
-  y0_.assign(layout.aux_first(), 0.0);
+  const size_t m = layout.aux_first();
+  if (y0_.size() < m) y0_.resize(m);
   std::copy(z_.data(), z_.data() + n_, y0_.begin());
+  std::fill(y0_.begin() + n_, y0_.begin() + m, 0.0);
   if (variational_)
     for (int j = 0; j < nt_; ++j) y0_[n_ + j * nt_ + j] = 1.0;
   if (column_)

@@ -46,10 +46,14 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   clock_last_ = n;
   col_clock_first_ = layout_.column ? layout_.param() + layout_.tangent : m_;
   col_clock_last_ = layout_.column ? layout_.param() + n : m_;
-  center_.resize(n);
+  AtLeast(center_, n);
   for (int i = 0; i < n; ++i) center_[i] = field_->ScaleCenter(i);
-  yend_.assign(y0, y0 + m_);
-  y_.assign(y0, y0 + m_);
+  // Buffers only grow: a mode's segment after another's of fewer rows or
+  // events reuses them (entries past m_ and nf_ are not read).
+  AtLeast(yend_, m_);
+  AtLeast(y_, m_);
+  std::copy(y0, y0 + m_, yend_.begin());
+  std::copy(y0, y0 + m_, y_.begin());
   // No step yet: the "step" [t0, t0] is the start itself (dense output there).
   order_ = 0;
   for (int i = 0; i < m_; ++i) rows_[static_cast<size_t>(i) * kTaylorRowSize] = y0[i];
@@ -61,16 +65,16 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   fresh_segment_ = true;
   surface_scale_ = 1;
   for (int i = 0; i < layout_.tangent; ++i) surface_scale_ += std::abs(y0[i]);
-  hook_y_.resize(m_);
-  const int nf = problem.events.functions();
-  state_.resize(nf);
-  sign_.resize(nf);
-  rf_.resize(nf);
+  AtLeast(hook_y_, m_);
+  const int nf = nf_ = problem.events.functions();
+  AtLeast(state_, nf);
+  AtLeast(sign_, nf);
+  AtLeast(rf_, nf);
   for (int i = 0; i < nf; ++i) state_[i] = kFresh, sign_[i] = 1, rf_[i] = 0;
-  poly_.resize(static_cast<size_t>(nf) * kTaylorRowSize);
-  tail_.resize(nf);
-  g0_.resize(nf);
-  raw0_.resize(nf);
+  AtLeast(poly_, static_cast<size_t>(nf) * kTaylorRowSize);
+  AtLeast(tail_, nf);
+  AtLeast(g0_, nf);
+  AtLeast(raw0_, nf);
 }
 
 bool TaylorStepper::Failed(const std::string& what) {

@@ -26,6 +26,12 @@ inline int OrderFor(double eps) {
   return std::min(kTaylorMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
 }
 
+// v.size() >= n, its entries kept (Reset's buffers grow, never shrink).
+template <class T>
+inline void AtLeast(std::vector<T>& v, size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+
 class TaylorStepper final : public Stepper {
  public:
   // parameter: also the column dz/dp for that parameter index.
@@ -42,7 +48,7 @@ class TaylorStepper final : public Stepper {
   void SetStopTime(double t) override { tstop_ = t; }
   StepOutcome Advance(double tout, double* t) override;
   const double* y() const override { return y_.data(); }
-  void RootInfo(int* rf) const override { std::copy(rf_.begin(), rf_.end(), rf); }
+  void RootInfo(int* rf) const override { std::copy(rf_.begin(), rf_.begin() + nf_, rf); }
   double CurrentTime() override { return tb_; }
   double SegmentStart() const override { return t0_; }
   long steps() const override { return orders_.steps; }
@@ -148,6 +154,7 @@ class TaylorStepper final : public Stepper {
   std::vector<double> yend_, y_;  // state at tb, at t
   // Per event function: sign tracking, sign, this step's roots; per base
   // polynomial: its coefficients and tail.
+  int nf_ = 0;  // the segment's event functions (the vectors below may be longer)
   std::vector<SignState> state_;
   std::vector<int> sign_, rf_;
   // g0_: each function's g_0.
