@@ -224,8 +224,10 @@ bool Engine::Arrive(int c) {
   const ModeSet before = mode_;
   OntoSurface(contacts_[c], z_);
   const ModeSet next = ModeAfterArrival(*s_, before, c, z_);
-  grad_.resize(n_);
-  ContactGradient(*s_, c, grad_);
+  if (variational_) {  // the saltation's gradient (the contact's weights, as ContactGradient)
+    grad_.resize(n_);
+    SurfaceGradient(contacts_[c], grad_);
+  }
   if (next[c] == Mode::kStick) {
     const ModeSet& stick = next;
     if (rq_->stop_at_stick) return Done(FlowStatus::kStick);

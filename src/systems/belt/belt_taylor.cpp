@@ -175,7 +175,9 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
 template <bool Forced>
 void BeltTaylorField::LawRecurrences(int order, const Rows& r, bool var) {
 #define STICKSLIP_LAW(L) \
-  return var ? Recurrences<L, true, Forced>(order, r) : Recurrences<L, false, Forced>(order, r);
+  return !var    ? Recurrences<L, false, Forced, false>(order, r) \
+         : r.col ? Recurrences<L, true, Forced, true>(order, r)   \
+                 : Recurrences<L, true, Forced, false>(order, r);
   switch (law_) {
     case LawKind::kCubic:
       STICKSLIP_LAW(LawKind::kCubic)
@@ -206,7 +208,7 @@ void BeltTaylorField::ForcingRows(int order, double* ac, double* as) {
 // (+ A cos theta), and Phi' = J Phi with J = [0 1; -1 c], c = -2 beta -
 // mu'(s), and the parameter column z_p' = J z_p + df/dp: coefficient k + 1
 // from those up to k.
-template <LawKind L, bool Var, bool Forced>
+template <LawKind L, bool Var, bool Forced, bool Col>
 void BeltTaylorField::Recurrences(int order, const Rows& r) {
   const double v = v_, two_beta = two_beta_, a = force_;
   MuSeries& mu = *mu_;
@@ -225,7 +227,7 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
   for (int k = 0; k < order + kPad; ++k) s[k] = 0;
   mu.Begin<L>(order);
   double damp = 0;  // 2 beta + mu'(s_0)
-  MuSeries* shifted = Var && r.col && mu_shifted_ ? &*mu_shifted_ : nullptr;
+  MuSeries* shifted = Col && Var && r.col && mu_shifted_ ? &*mu_shifted_ : nullptr;
   if (shifted) shifted->Begin<L>(order);
   for (int k = 0; k < order; ++k) {
     mu.Old<L, Var>(k, s);
@@ -236,7 +238,7 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
       // waiting for the products of s_k (the chain from x'_k is short).
       const double sigma_alpha = mu.Alpha<L>(k, sigma_);
       if constexpr (Forced)
-        xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k] + a * ck) * inv;
+        xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k] + a * (Var ? co[k] : ck)) * inv;
       else
         xd[k + 1] = ((sigma_alpha - x[k]) - damp * xd[k]) * inv;
     }
@@ -247,12 +249,15 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
     x[k + 1] = xd[k] * inv;
     if (k == 0) {
       if constexpr (Forced)
-        xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk + a * ck;
+        xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk + a * co[0];
       else
         xd[1] = -x[0] - two_beta * xd[0] + sigma_ * muk;
       damp = two_beta + mu.slope();
     }
-    if constexpr (Forced) {
+    if constexpr (Forced && Var) {  // from memory: registers held for the columns' sums
+      co[k + 1] = -w * si[k] * inv;
+      si[k + 1] = w * co[k] * inv;
+    } else if constexpr (Forced) {
       const double c1 = -w * sk * inv, s1 = w * ck * inv;
       co[k + 1] = ck = c1;
       si[k + 1] = sk = s1;
@@ -261,8 +266,8 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
       cc[k] = (k == 0 ? -two_beta : 0.0) - dmu;
       // The forced oscillator's two columns in one pass, as its own
       // recurrences had them (PhiColumnsNext); the belt's one at a time.
-      Columns<Forced, L == LawKind::kCoulomb, true>(k, inv, dmu, r);
-      if (r.col && kind_ == ParamKind::kAffine)
+      Columns<Forced, L == LawKind::kCoulomb, true, Col>(k, inv, dmu, r);
+      if (Col && r.col && kind_ == ParamKind::kAffine)
         r.col[1][k + 1] += ParamTermInline(r, k, muk, muk_shifted, dmu) * inv;
     }
   }

@@ -44,7 +44,9 @@ class BeltTaylorField final : public TaylorField {
   };
 
  private:
-  template <LawKind L, bool Var, bool Forced>
+  // Col: r.col may be set (false: the column's code is compiled out, and
+  // with it the registers it held).
+  template <LawKind L, bool Var, bool Forced, bool Col>
   void Recurrences(int order, const Rows& r);
   // Order 0 of the seed law's loop, outside its kernel clones: x'' at the
   // step start exactly as the model's field computes it (no FMA), which the
@@ -58,7 +60,7 @@ class BeltTaylorField final : public TaylorField {
   void Cubic3Dispatch(int order, const Rows& r);
   // ConstJ: J constant over the step (coulomb: mu'(s) = 0 in slip), so each
   // sum with cc is its one term cc_0 q_k (the same value: the others are 0).
-  template <bool Newest, bool ConstJ = false, bool InlineTerm = false>
+  template <bool Newest, bool ConstJ = false, bool InlineTerm = false, bool Col = true>
   void Columns(int k, double inv, double dmu, const Rows& r);
   void Stick(int order, const TaylorLayout& layout, TaylorRow* c);
   // theta's column row: d theta / dp, of rate 1 for omega's column, else 0.
@@ -132,7 +134,7 @@ __attribute__((always_inline)) inline double BeltTaylorField::ParamTermInline(co
 }
 
 // Phi' = J Phi and the parameter column (beta, v) at order k + 1, cc_ set to k.
-template <bool Newest, bool ConstJ, bool InlineTerm>
+template <bool Newest, bool ConstJ, bool InlineTerm, bool Col>
 __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, double inv, double dmu,
                                                                     const Rows& r) {
   const double* cc = cc_.c();
@@ -152,7 +154,7 @@ __attribute__((always_inline)) inline void BeltTaylorField::Columns(int k, doubl
       phi[col + 1][k + 1] = (-phi[col][k] + Cauchy(phi[col + 1], cc, k)) * inv;
     }
   }
-  if (!r.col) return;
+  if (!Col || !r.col) return;
   const double* p = r.col[1];
   const double cq = ConstJ    ? p[k] * cc[0]
                     : !Newest ? Cauchy(p, cc, k)
