@@ -174,7 +174,7 @@ void BeltTaylorField::Coefficients(int order, const TaylorLayout& layout, Taylor
 // The laws' recurrences but the seed law's kernel, by law and variational rows.
 template <bool Forced>
 void BeltTaylorField::LawRecurrences(int order, const Rows& r, bool var) {
-#define STICKSLIP_LAW(L) \
+#define STICKSLIP_LAW(L)                                          \
   return !var    ? Recurrences<L, false, Forced, false>(order, r) \
          : r.col ? Recurrences<L, true, Forced, true>(order, r)   \
                  : Recurrences<L, true, Forced, false>(order, r);
