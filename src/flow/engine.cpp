@@ -208,10 +208,12 @@ bool Engine::Segment() {
   const double t0 = t_;
   const SegmentEnd e = RunSegment(cv, p, t_, y0_.data(), rq_->t_max, out, &roots_);
   FlowRun& r = *out_;
-  r.steps += cv.steps();
-  flow_.total_steps_ += cv.steps();
-  r.orders.Merge(cv.orders());
-  flow_.taylor_orders_.Merge(cv.orders());
+  const long steps = cv.steps();
+  const TaylorOrders orders = cv.orders();
+  r.steps += steps;
+  flow_.total_steps_ += steps;
+  r.orders.Merge(orders);
+  flow_.taylor_orders_.Merge(orders);
   const double* y = e.y;
   t_ = e.t;
   std::copy(y, y + n_, z_.data());

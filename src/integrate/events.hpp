@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "stickslip/system/mode.hpp"
@@ -84,6 +85,7 @@ class EventList {
     events_.clear();
     stop_.clear();
     pass_.clear();
+    passing_ = false;
   }
   // Returns the function's index: an identical function's if there is one
   // (one function may carry a terminal and a non-terminal event).
@@ -108,12 +110,15 @@ class EventList {
   }
   void Add(const Event& e) {
     events_.push_back(e);
+    passing_ = passing_ || !e.terminal;
     int& mask = e.terminal ? stop_[e.g] : pass_[e.g];
     mask = mask == 0 ? e.direction : (mask == e.direction ? mask : kAnyRoot);
   }
   int functions() const { return static_cast<int>(functions_.size()); }
   const EventFunction& function(int i) const { return functions_[i]; }
   int events() const { return static_cast<int>(events_.size()); }
+  // Whether some event is not terminal (a stepper finds roots inside its steps).
+  bool AnyPassing() const { return passing_; }
   void SetAtStart(int k, bool at_start) { events_[k].at_start = at_start; }
   const Event& event(int k) const { return events_[k]; }
   // O(1): the vectors' buffers change hands.
@@ -122,6 +127,7 @@ class EventList {
     events_.swap(o.events_);
     stop_.swap(o.stop_);
     pass_.swap(o.pass_);
+    std::swap(passing_, o.passing_);
   }
 
   bool Stops(int i, int direction) const { return Has(stop_[i], direction); }
@@ -137,6 +143,7 @@ class EventList {
   std::vector<EventFunction> functions_;
   std::vector<Event> events_;
   std::vector<int> stop_, pass_;
+  bool passing_ = false;
 };
 
 }  // namespace stickslip

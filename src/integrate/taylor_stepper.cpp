@@ -27,9 +27,7 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
     field_->Bind(*problem.system, problem.mode);
   }
   bound_system_ = problem.system, bound_epoch_ = problem.system_epoch, bound_mode_ = problem.mode;
-  bool in_steps = false;  // a non-terminal event: roots inside steps
-  for (int k = 0; k < problem.events.events(); ++k)
-    in_steps = in_steps || !problem.events.event(k).terminal;
+  const bool in_steps = problem.events.AnyPassing();  // roots inside steps
   extra_rel_ = field_->ExtraOrder(rtol_, in_steps);
   extra_abs_ = field_->ExtraOrder(atol_, in_steps);
   layout_ = problem.layout;
