@@ -46,7 +46,10 @@ class MuSeries {
   // and mu'_k in *dmu when D (every call of this series passes the same D).
   template <LawKind L>
   void Begin(int order) {
-    const int rows = L == LawKind::kCubic ? (degree_ >= 5 ? 3 : 1) : L == LawKind::kCoulomb ? 0 : 3;
+    // The cubic's and Leine's sums read w_[.][k] (and padding) at Old(k): cleared.
+    // Stribeck's read only coefficients below k (CauchyNewestLast), each written
+    // by New before; Coulomb has no rows.
+    const int rows = L == LawKind::kCubic ? (degree_ >= 5 ? 3 : 1) : L == LawKind::kLeine ? 3 : 0;
     for (int r = 0; r < rows; ++r)
       for (int k = 0; k < order + kPad; ++k) w_[r].c()[k] = 0;
   }
