@@ -222,9 +222,11 @@ void BeltTaylorField::Recurrences(int order, const Rows& r) {
   double ck = Forced ? co[0] : 0.0, sk = Forced ? si[0] : 0.0;
   double* x = r.x;
   double* xd = r.xd;
-  // Zeros in s past the order so far: the sums of products in MuSeries::Old
-  // leave out what is new. (c and cc only need finite entries there.)
-  for (int k = 0; k < order + kPad; ++k) s[k] = 0;
+  // Zeros in s past the order so far: the cubic's sums of products in
+  // MuSeries::Old leave out what is new (the other laws' never read s past k).
+  // (c and cc only need finite entries there.)
+  if constexpr (L == LawKind::kCubic)
+    for (int k = 0; k < order + kPad; ++k) s[k] = 0;
   mu.Begin<L>(order);
   double damp = 0;  // 2 beta + mu'(s_0)
   MuSeries* shifted = Col && Var && r.col && mu_shifted_ ? &*mu_shifted_ : nullptr;
