@@ -32,7 +32,7 @@ class MuSeries {
     if (law_ == LawKind::kStribeck) inv_b_ = 1 / b_;
   }
   LawKind law() const { return law_; }
-  // Whether this is f's series (Bind keeps it then: Begin clears per step).
+  // Whether this is f's series (Bind keeps it then: Begin readies it per step).
   bool Of(const Friction& f) const {
     return law_ == f.law_ && mu_s_ == f.mu_s_ && a_ == f.a_ && b_ == f.b_ && k5_ == f.c_;
   }
@@ -40,10 +40,11 @@ class MuSeries {
   // cubic: the odd coefficient c_j of mu_s + c_1 s + c_3 s^3 + c_5 s^5 (j = 1, 3, 5).
   double cubic(int j) const { return c_[j]; }
 
-  // Each step: Begin(order) clears the series; then for k = 0, 1, ...: Old(k)
-  // while s_k and later are still 0 (the sums of products of earlier
-  // coefficients, off the critical path), then New(k) once s_k is set: mu_k,
-  // and mu'_k in *dmu when D (every call of this series passes the same D).
+  // Each step: Begin(order) clears the rows the law's sums read past k; then
+  // for k = 0, 1, ...: Old(k) before s_k is set (the sums of products of
+  // earlier coefficients, off the critical path; the cubic's need s_k and
+  // later 0), then New(k) once s_k is set: mu_k, and mu'_k in *dmu when D
+  // (every call of this series passes the same D).
   template <LawKind L>
   void Begin(int order) {
     // The cubic's and Leine's sums read w_[.][k] (and padding) at Old(k): cleared.
