@@ -251,7 +251,7 @@ bool Engine::Segment() {
 // y0: the state, Phi = I, the column (0 but its clocks' (t - t0) d omega / dp).
 void Engine::InitialRows(const TaylorLayout& layout) {
   const size_t m = layout.aux_first();
-  if (y0_.size() < m) y0_.resize(m);
+  AtLeast(y0_, m);
   std::copy(z_.data(), z_.data() + n_, y0_.begin());
   std::fill(y0_.begin() + n_, y0_.begin() + m, 0.0);
   if (variational_)

@@ -21,6 +21,13 @@
 
 namespace stickslip {
 
+// v.size() >= n, its entries kept (per-segment buffers grow, never shrink:
+// alternating modes reuse them).
+template <class T>
+inline void AtLeast(std::vector<T>& v, size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+
 // A step end the stepper shows: each Taylor step's, CVODE's returns only.
 struct StepHook {
   void (*fn)(void* context, double t, const double* y) = nullptr;

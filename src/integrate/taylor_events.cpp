@@ -91,7 +91,6 @@ void TaylorStepper::Events(double h) {
   const EventList& ev = p_->events;
   const int nf = ev.functions();
   if (nf == 0) {
-    std::fill(rf_.begin(), rf_.begin() + nf_, 0);
     passed_root_ = false;
     return;
   }
@@ -106,7 +105,7 @@ void TaylorStepper::Events(double h) {
   roots.rf = rf_.data();
   roots.nf = nf;
   roots.passed = &passed_;
-  std::fill(rf_.begin(), rf_.begin() + nf_, 0);
+  std::fill(rf_.begin(), rf_.begin() + nf, 0);
   for (int i = 0; i < nf; ++i) {
     const EventFunction& f = ev.function(i);
     if (!f.surface && at_rest) {

@@ -26,12 +26,6 @@ inline int OrderFor(double eps) {
   return std::min(kTaylorMaxOrder, static_cast<int>(std::ceil(-0.5 * std::log(eps) + 1.0)));
 }
 
-// v.size() >= n, its entries kept (Reset's buffers grow, never shrink).
-template <class T>
-inline void AtLeast(std::vector<T>& v, size_t n) {
-  if (v.size() < n) v.resize(n);
-}
-
 class TaylorStepper final : public Stepper {
  public:
   // parameter: also the column dz/dp for that parameter index.
