@@ -32,6 +32,8 @@ def lines_by_function(path, min_ir):
 
     with open(path) as f:
         for line in f:
+            if line.startswith("positions:") and "instr" not in line:
+                raise ValueError("its positions are not instructions")
             key, _, value = line.rstrip("\n").partition("=")
             if key in ("fn", "ob") and value:
                 current[key] = name(key, value)
@@ -61,8 +63,19 @@ def lines_by_function(path, min_ir):
 def main():
     if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
-    lines = lines_by_function(sys.argv[1], int(sys.argv[2]))
-    top = int(sys.argv[3]) if len(sys.argv) == 4 else 30
+    try:
+        min_ir = int(sys.argv[2])
+        top = int(sys.argv[3]) if len(sys.argv) == 4 else 30
+    except ValueError:
+        sys.exit("hot_lines.py: MIN and TOP are integers, not %s" % " ".join(sys.argv[2:]))
+    try:
+        lines = lines_by_function(sys.argv[1], min_ir)
+    except (OSError, KeyError, AttributeError, ValueError) as e:
+        sys.exit("hot_lines.py: %s is not a callgrind file with --dump-instr=yes (%s)" %
+                 (sys.argv[1], e))
+    if not lines:
+        sys.exit("hot_lines.py: %s holds no instruction costs (callgrind --dump-instr=yes)" %
+                 sys.argv[1])
     counts = collections.Counter(
         {(ob.rsplit("/", 1)[-1], fn): len(s) for (ob, fn), s in lines.items()})
     total = sum(counts.values())
