@@ -2,27 +2,32 @@
 """The hot code's footprint: distinct 64-byte lines of machine code run often.
 
 Usage: /usr/bin/python3 scripts/hot_lines.py CALLGRIND_OUT MIN [TOP]
-CALLGRIND_OUT is written by valgrind --tool=callgrind --dump-instr=yes. A
-line counts when one of its instructions ran at least MIN times (the number
-of periods, say, for "run every period"). Prints the total (lines and bytes:
-compare with the L1 instruction cache, 32 KiB on this machine) and the TOP
-functions (default 30) by their lines. A loop whose code does not fit the
-cache fetches it again on every pass, whatever its instruction count
-(docs/benchmarks.md, "The one flow's code footprint").
+CALLGRIND_OUT is written by valgrind --tool=callgrind --dump-instr=yes (the
+default positions "instr line" or "instr"; not --collect-jumps). An
+instruction is hot when it ran at least MIN times in all (the number of
+periods, say, for "run every period"); a line is hot when it holds the start
+of a hot instruction. Prints the distinct hot lines (and bytes: compare with
+the L1 instruction cache, 32 KiB on this machine) and the TOP functions
+(default 30) by their hot lines; a line two functions share counts once in
+the total. A loop whose code does not fit the cache fetches it again on every
+pass, whatever its instruction count (docs/benchmarks.md, "The one flow's
+code footprint").
 """
 import collections
 import re
 import sys
 
-POSITION = re.compile(r"^(0x[0-9a-f]+|\+\d+|-\d+|\*)\s+\S+\s+(\d+)")
 NAMED = re.compile(r"\((\d+)\)(?: (.*))?")
+ADDRESS = re.compile(r"^(0x[0-9a-f]+|\+\d+|-\d+|\*)$")
 
 
-def lines_by_function(path, min_ir):
+def costs_by_instruction(path):
+    """{(object, function): {address: Ir}}: self costs, summed per instruction
+    (valgrind may give one instruction several cost lines)."""
     names = {"fn": {}, "ob": {}}
     current = {"fn": None, "ob": None}
-    lines = collections.defaultdict(set)
-    addr, after_calls = 0, False
+    costs = collections.defaultdict(collections.Counter)
+    addr, after_calls, columns = 0, False, None
 
     def name(kind, text):
         m = NAMED.match(text)
@@ -32,8 +37,12 @@ def lines_by_function(path, min_ir):
 
     with open(path) as f:
         for line in f:
-            if line.startswith("positions:") and "instr" not in line:
-                raise ValueError("its positions are not instructions")
+            if line.startswith("positions:"):
+                positions = line.split()[1:]
+                if positions[0] != "instr":
+                    raise ValueError("its positions are not instructions")
+                columns = len(positions)
+                continue
             key, _, value = line.rstrip("\n").partition("=")
             if key in ("fn", "ob") and value:
                 current[key] = name(key, value)
@@ -41,13 +50,15 @@ def lines_by_function(path, min_ir):
             if key in ("cfn", "cob") and value:
                 name(key[1:], value)  # compressed names first seen in a call
                 continue
+            if key in ("jump", "jcnd"):
+                raise ValueError("it was collected with --collect-jumps")
             if key == "calls":
-                after_calls = True  # the next position line is the call's inclusive cost
+                after_calls = True  # the next cost line is the call's inclusive cost
                 continue
-            m = POSITION.match(line)
-            if not m:
+            fields = line.split()
+            if columns is None or len(fields) <= columns or not ADDRESS.match(fields[0]):
                 continue
-            a = m.group(1)
+            a = fields[0]
             if a.startswith("0x"):
                 addr = int(a, 16)
             elif a[0] in "+-":
@@ -55,9 +66,10 @@ def lines_by_function(path, min_ir):
             if after_calls:
                 after_calls = False
                 continue
-            if int(m.group(2)) >= min_ir:
-                lines[(current["ob"], current["fn"])].add(addr >> 6)
-    return lines
+            costs[(current["ob"], current["fn"])][addr] += int(fields[columns])  # Ir
+    if columns is None:
+        raise ValueError("it has no positions line")
+    return costs
 
 
 def main():
@@ -69,17 +81,20 @@ def main():
     except ValueError:
         sys.exit("hot_lines.py: MIN and TOP are integers, not %s" % " ".join(sys.argv[2:]))
     try:
-        lines = lines_by_function(sys.argv[1], min_ir)
-    except (OSError, KeyError, AttributeError, ValueError) as e:
+        costs = costs_by_instruction(sys.argv[1])
+    except (OSError, KeyError, AttributeError, IndexError, ValueError) as e:
         sys.exit("hot_lines.py: %s is not a callgrind file with --dump-instr=yes (%s)" %
                  (sys.argv[1], e))
-    if not lines:
+    hot, counts = set(), collections.Counter()
+    for (ob, fn), by_addr in costs.items():
+        lines = {a >> 6 for a, ir in by_addr.items() if ir >= min_ir}
+        if lines:
+            counts[(ob.rsplit("/", 1)[-1], fn)] = len(lines)
+            hot |= {(ob, line) for line in lines}
+    if not costs:
         sys.exit("hot_lines.py: %s holds no instruction costs (callgrind --dump-instr=yes)" %
                  sys.argv[1])
-    counts = collections.Counter(
-        {(ob.rsplit("/", 1)[-1], fn): len(s) for (ob, fn), s in lines.items()})
-    total = sum(counts.values())
-    print("hot lines %d = %d bytes" % (total, 64 * total))
+    print("hot lines %d = %.1f KiB" % (len(hot), 64 * len(hot) / 1024))
     for (ob, fn), c in counts.most_common(top):
         print("%5d  %-18s %s" % (c, ob[:18], fn[:120]))
 
