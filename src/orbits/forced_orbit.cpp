@@ -28,20 +28,20 @@ namespace {
 // One shooting per thread for the options last used (a forced orbit is shot
 // per scan point: the flow and its buffers are kept, the model assigned).
 // An exit-phase search sets its own return time, so that is not compared.
+// Options equal to the cached ones were validated when it was made; its
+// return time is validated as it is set.
 Shooting& CachedShooting(const ForcedBelt& model, const ShootingOptions& o) {
-  const std::string err = o.ValidationError();
-  if (!err.empty()) throw InvalidArgument(err);
   thread_local std::unique_ptr<Shooting> cached;
   if (cached) {
     const ShootingOptions& c = cached->options();
     if (c.flow == o.flow && c.max_newton == o.max_newton && c.tol == o.tol &&
-        c.max_steps == o.max_steps && c.extrema == o.extrema) {
+        c.max_steps == o.max_steps && c.extrema == o.extrema && c.switching == o.switching) {
       cached->set_system(model);
       cached->set_max_return_time(o.max_return_time);
       return *cached;
     }
   }
-  cached = std::make_unique<Shooting>(model, o);
+  cached = std::make_unique<Shooting>(model, o);  // throws InvalidArgument for bad options
   return *cached;
 }
 

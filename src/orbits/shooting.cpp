@@ -96,8 +96,36 @@ void Shooting::Check(const PoincareSection& p) const {
 }
 
 namespace {
-// The largest |entry| of v.
+bool Singular(double det, double max_abs) {
+  return std::abs(det) <= Tolerances::kSingularShooting * (1 + max_abs);
+}
+
+// dz = -A^-1 r at a fixed size: no heap and no blocked code for the belt's 2
+// and the forced oscillator's 3 unknowns. Not for 4: its fixed solve rounds
+// otherwise than the dynamic one, and that alone turns chain2_asym's branch 2
+// back at a fold instead of ending it at a sequence change (docs/benchmarks.md).
+template <int N>
+bool SolveFixed(const Eigen::MatrixXd& A, const Eigen::VectorXd& r, Eigen::VectorXd* dz) {
+  const Eigen::Matrix<double, N, N> a = A;
+  const Eigen::PartialPivLU<Eigen::Matrix<double, N, N>> lu(a);
+  if (Singular(lu.determinant(), a.cwiseAbs().maxCoeff())) return false;
+  *dz = -lu.solve(Eigen::Matrix<double, N, 1>(r));
+  return true;
+}
 }  // namespace
+
+// dz = -(DP - I)^-1 r by partial pivoting; false where DP - I is singular.
+bool Shooting::NewtonStep() {
+  const Eigen::Index n = dp_.rows();
+  if (n == 1) return SolveFixed<1>(dp_, r_, &dz_);
+  if (n == 2) return SolveFixed<2>(dp_, r_, &dz_);
+  if (n == 3) return SolveFixed<3>(dp_, r_, &dz_);
+  lu_.compute(dp_);  // what dp_.determinant() computes, once for the solve too
+  if (Singular(lu_.determinant(), dp_.cwiseAbs().maxCoeff())) return false;
+  dz_ = lu_.solve(r_);
+  dz_ = -dz_;
+  return true;
+}
 
 PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& section) {
   Check(section);
@@ -121,17 +149,12 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
       return o;
     }
     dp_.diagonal().array() -= 1.0;  // DP - I
-    const Eigen::MatrixXd& A = dp_;
-    lu_.compute(A);  // what A.determinant() computes, once for the solve too
-    if (std::abs(lu_.determinant()) <=
-        Tolerances::kSingularShooting * (1 + A.cwiseAbs().maxCoeff())) {
+    if (!NewtonStep()) {
       o.status = OrbitStatus::kSingular;
       o.message = "DP - I is singular (a multiplier at 1) at t = " + Num(z.t);
       return o;
     }
-    dz_ = lu_.solve(r_);
     Eigen::VectorXd& dz = dz_;
-    dz = -dz;
     const double size = 1 + MaxAbs(z.z.head(nu));
     // A long step is cut (damped Newton): the state's by a share of its size,
     // a clock's to a quarter turn.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 #include "forced_reference.hpp"
 
@@ -177,6 +178,32 @@ TEST(ForcedOrbit, BeltStickSlipOrbitIsAFixedPointOfTheClosedForm) {
   ForcedBeltParams p = DenHartog(0.8);
   p.base.beta = 0.05, p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.v = 0.2, p.force = 0.3;
   CheckAgainstClosedForm(p, 0.3, 0.2, 1);
+}
+
+// A shooting per thread is kept between calls with equal options: one with
+// switching off after one with it on must not reuse it. Off, the start's
+// slip-above field x'' + 2 beta x' + x = -mu_k + A cos(Omega t) goes on across
+// x' = 0; its periodic solution is x = -mu_k + Re(A e^{i Omega t} / D),
+// D = 1 - Omega^2 + 2 i beta Omega, with x'(0) > 0 (slip-above at the start).
+TEST(ForcedOrbit, SwitchingOffIsNotAnsweredByTheCachedSwitchingShooting) {
+  ForcedBeltParams p = DenHartog(1.3);
+  p.base.beta = 0.05;
+  const ForcedBelt m(p);
+  ShootingOptions o(ForcedBelt::FlowDefaults());
+  o.flow.rtol = o.flow.atol = 1e-13;
+  const PeriodicOrbit on = ShootStroboscopic(m, -1.4, 0.3, 1, o);
+  ASSERT_TRUE(on.ok()) << on.message;
+  EXPECT_EQ(on.crossings, 2);
+  o.switching = false;
+  const PeriodicOrbit off = ShootStroboscopic(m, -1.4, 0.3, 1, o);
+  ASSERT_TRUE(off.ok()) << off.message;
+  const std::complex<double> a =
+      p.force / std::complex<double>(1 - p.omega * p.omega, 2 * p.base.beta * p.omega);
+  const double x0 = -p.base.mu_k + a.real(), xdot0 = (std::complex<double>(0, p.omega) * a).real();
+  ASSERT_GT(xdot0, 0);
+  EXPECT_EQ(off.crossings, 0);
+  EXPECT_NEAR(off.start.z[0], x0, 1e-10);
+  EXPECT_NEAR(off.start.z[1], xdot0, 1e-10);
 }
 
 }  // namespace

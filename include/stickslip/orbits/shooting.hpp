@@ -158,6 +158,7 @@ class Shooting {
   void MapParameterDerivative(const FlowPoint& z, const PoincareSection& s);
   void EventGradient(const PoincareSection& s);
   void OntoSection(const PoincareSection& s, FlowPoint* z) const;
+  bool NewtonStep();  // dz_ from dp_ (DP - I) and r_; false where singular
   void Describe(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o) const;
 
   ShootingOptions options_;
