@@ -12,7 +12,7 @@
 
 namespace stickslip {
 
-// Formats only on failure: shooting validates its options per call, and
+// Formats only on failure: a caller may validate options per call, and
 // building a stream every time cost 12 % of forced_bench (callgrind).
 std::string FlowOptions::ValidationError() const {
   using T = Tolerances;

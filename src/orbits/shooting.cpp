@@ -101,9 +101,10 @@ bool Singular(double det, double max_abs) {
 }
 
 // dz = -A^-1 r at a fixed size: no heap and no blocked code for the belt's 2
-// and the forced oscillator's 3 unknowns. Not for 4: its fixed solve rounds
-// otherwise than the dynamic one, and that alone turns chain2_asym's branch 2
-// back at a fold instead of ending it at a sequence change (docs/benchmarks.md).
+// and the forced oscillator's 3 unknowns. From 3 on the fixed solve rounds
+// otherwise than the dynamic one; at 4 that alone turns chain2_asym's branch 2
+// back at a fold instead of ending it at a sequence change (docs/benchmarks.md),
+// so 4 and more keep the dynamic solve.
 template <int N>
 bool SolveFixed(const Eigen::MatrixXd& A, const Eigen::VectorXd& r, Eigen::VectorXd* dz) {
   const Eigen::Matrix<double, N, N> a = A;
