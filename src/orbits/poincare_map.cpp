@@ -191,26 +191,21 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   const Eigen::MatrixXd& J = run_.jacobian;
   full_.setIdentity(n, n);
   full_.topLeftCorner(nt, nt) = J;
-  EventGradient(p);
-  if (n > 3) {   // Eigen's products, as they were: the chains' results stay bit for bit
-    if (n > nt)  // the clock's column: Phi f(z0) = f(z(T)), theta' = omega
-      full_.col(nt).head(nt) = (f1_.head(nt) - J * f0_.head(nt)) / f0_[nt];
-    // DP = (I - f g^T / (g . f)) Phi at the arrival.
-    dp_ = full_ - f1_ * (grad_.transpose() * full_) / grad_.dot(f1_);
-  } else {  // the same by loops, without the products' heap temporaries
-    if (n > nt)
-      for (int i = 0; i < nt; ++i) {
-        double Jf0 = 0;
-        for (int k = 0; k < nt; ++k) Jf0 += J(i, k) * f0_[k];
-        full_(i, nt) = (f1_[i] - Jf0) / f0_[nt];
-      }
-    const double gf = grad_.dot(f1_);
-    dp_.resize(n, n);
-    for (int j = 0; j < n; ++j) {
-      double gPhi = 0;  // (g^T Phi)_j
-      for (int k = 0; k < n; ++k) gPhi += grad_[k] * full_(k, j);
-      for (int i = 0; i < n; ++i) dp_(i, j) = full_(i, j) - f1_[i] * gPhi / gf;
+  if (n > nt)  // the clock's column: Phi f(z0) = f(z(T)), theta' = omega
+    for (int i = 0; i < nt; ++i) {
+      double Jf0 = 0;
+      for (int k = 0; k < nt; ++k) Jf0 += J(i, k) * f0_[k];
+      full_(i, nt) = (f1_[i] - Jf0) / f0_[nt];
     }
+  EventGradient(p);
+  // DP = (I - f g^T / (g . f)) Phi at the arrival, by loops: Eigen's products
+  // would take their temporaries from the heap.
+  const double gf = grad_.dot(f1_);
+  dp_.resize(n, n);
+  for (int j = 0; j < n; ++j) {
+    double gPhi = 0;  // (g^T Phi)_j
+    for (int k = 0; k < n; ++k) gPhi += grad_[k] * full_(k, j);
+    for (int i = 0; i < n; ++i) dp_(i, j) = full_(i, j) - f1_[i] * gPhi / gf;
   }
   Residual(z, p);
   MapParameterDerivative(z, p);
