@@ -14,6 +14,7 @@ namespace {
 constexpr int kMaxDegree = 40;
 constexpr int kMaxDepth = 60;     // halvings: 2^-60 is below double resolution on [0, 1]
 constexpr int kMaxPieces = 2000;  // a bound on the work where g stays near 0
+constexpr int kLowDegree = 8;     // LowHullExcludes
 
 struct Piece {
   double u0, u1;
@@ -187,6 +188,23 @@ PolyRoot MonotoneRoot(const double* c, int n, int sign, int zero_sign) {
     out.found = true, out.u = RefineRoot(c, n, sign, zero_sign, 0.0, 1.0, g1);
   return out;
 }
+// Whether sign * c stays above 0 on [0, 1] by the Bernstein hull of its
+// first kLowDegree + 1 terms less the rest, sum_{k > kLowDegree} |c_k|, with
+// twice the rounding margin (as CubicBoundExcludes): then no evaluation of c
+// changes sign there, and the full search finds no root either. Most calls
+// past the cubic bound have none, and this hull costs a sixth of the full
+// degree's (docs/benchmarks.md, "A low-degree hull").
+bool LowHullExcludes(const double* c, int n, int sign, double scale) {
+  if (n <= kLowDegree) return false;
+  double rest = 0;
+  for (int k = kLowDegree + 1; k <= n; ++k) rest += std::abs(c[k]);
+  double b[kLowDegree + 1];
+  ToBernstein(c, kLowDegree, b);
+  double lower = INFINITY;
+  for (int i = 0; i <= kLowDegree; ++i) lower = std::min(lower, sign * b[i]);
+  return lower - rest > 2 * Tolerances::PolyMargin(n, scale);
+}
+
 }  // namespace
 
 PolyRoot FirstSignChange(const double* c, int n, int sign, int zero_sign) {
@@ -208,6 +226,7 @@ PolyRoot FirstSignChangePast(const double* c, int n, int sign, int zero_sign, do
   if (Monotone(c, n)) return MonotoneRoot(c, n, sign, zero_sign);
   // The cubic part's bound, before the Bernstein coefficients (O(n^2)).
   if (CubicBoundExcludes(c, n, sign, tail - (n >= 3 ? std::abs(c[3]) : 0.0), scale)) return out;
+  if (LowHullExcludes(c, n, sign, scale)) return out;
   // Depth-first, left half first: the first interval that holds a sign change
   // holds the first root.
   Piece stack[kMaxDepth + 2];

@@ -141,3 +141,36 @@ TEST(PolyRoots, BoundsStepAsideForHugeAndTinyCoefficients) {
     EXPECT_NEAR(rc.u, cubic_root, 1e-12) << f;
   }
 }
+
+// 1e-3 - 2e-3 u^12: its only root, 0.5^(1/12), comes from a term past the
+// low-degree hull (FirstSignChangePast): the hull's slack must keep it.
+TEST(PolyRoots, RootMadeByHighTermsIsFound) {
+  double c[13] = {1e-3};
+  c[12] = -2e-3;
+  const ss::PolyRoot root = ss::FirstSignChange(c, 12, 1, 1);
+  ASSERT_TRUE(root.found);
+  EXPECT_NEAR(root.u, std::pow(0.5, 1.0 / 12), 8 * kUlp);
+}
+
+// (u - r)^2 q(u) + d with q > 0 on [0, 1] (degree 20): positive, at least d,
+// with a minimum near r that the quadratic and cubic bounds cannot see past:
+// no root, whichever hull decides it.
+TEST(PolyRoots, NearDoubleRootsOfDegreeTwentyAreNoRoots) {
+  std::mt19937_64 rng(47);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  constexpr int kN = 20;
+  int found = 0;
+  for (int draw = 0; draw < 5000; ++draw) {
+    const double r = 0.5 * (1 + unit(rng)), d = std::pow(10.0, -3 - 6 * (0.5 + 0.5 * unit(rng)));
+    long double q[kN - 1] = {1.5L};  // q_0 = 1.5 > sum |q_k|, k >= 1
+    for (int k = 1; k < kN - 1; ++k) q[k] = unit(rng) * std::pow(0.5, k);
+    const long double s[3] = {static_cast<long double>(r) * r, -2.0L * r, 1.0L};  // (u - r)^2
+    long double p[kN + 1] = {};
+    for (int k = 0; k < kN - 1; ++k)
+      for (int j = 0; j < 3; ++j) p[k + j] += q[k] * s[j];
+    double c[kN + 1];
+    for (int k = 0; k <= kN; ++k) c[k] = static_cast<double>(p[k] + (k == 0 ? d : 0.0L));
+    if (ss::FirstSignChange(c, kN, 1, 1).found) ++found;
+  }
+  EXPECT_EQ(found, 0);
+}
