@@ -152,9 +152,9 @@ TEST(PolyRoots, RootMadeByHighTermsIsFound) {
   EXPECT_NEAR(root.u, std::pow(0.5, 1.0 / 12), 8 * kUlp);
 }
 
-// (u - r)^2 q(u) + d with q > 0 on [0, 1] (degree 20): positive, at least d,
-// with a minimum near r that the quadratic and cubic bounds cannot see past:
-// no root, whichever hull decides it.
+// (u - r)^2 q(u) + d with q > 0 on [0, 1] (degree 20): at least d (1e-9 to
+// 1e-3) everywhere, with that minimum near r: no root, whichever of the
+// bounds and hulls decides it.
 TEST(PolyRoots, NearDoubleRootsOfDegreeTwentyAreNoRoots) {
   std::mt19937_64 rng(47);
   std::uniform_real_distribution<double> unit(-1, 1);
