@@ -35,9 +35,7 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   s_ = flow_.system_.get();
   rq_ = &rq;
   out_ = out;
-  n_ = s_->dimension();
-  nt_ = s_->tangent_dimension();
-  k_ = s_->contacts();
+  if (!system_read_) ReadSystem();  // and n_, nt_, k_
   if (start.z.size() != n_)
     throw InvalidArgument("Flow::Run: the start has " + std::to_string(start.z.size()) +
                           " components, the system " + std::to_string(n_));
@@ -50,7 +48,6 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   for (int j : rq.extrema)
     if (j < 0 || j >= n_) throw InvalidArgument("Flow::Run: extremum of no component " + Num(j));
   CheckStart(*s_, start);
-  if (!system_read_) ReadSystem();
   for (int i = 0; i < k_; ++i)
     if (normals_[i] && !(normals_[i]->At(start.z.data()) > 0))
       throw InvalidArgument("Flow::Run: contact " + std::to_string(i) +
@@ -149,14 +146,7 @@ void Engine::UseEvents() {
   EventSet* set = nullptr;
   for (EventSet& e : sets_)
     if (e.used && e.mode == mode_) set = &e;
-  const bool fresh = !set;
-  // The current set's events live in problem_, swapped in (no copy per
-  // segment): returned to their set before another is built or swapped in.
-  if (cur_ && cur_ != set) {
-    problem_.events.Swap(cur_->events);
-    cur_ = nullptr;
-  }
-  if (fresh) {
+  if (!set) {
     set = &sets_[next_set_];
     next_set_ = (next_set_ + 1) % kEventSets;
     set->mode = mode_;
@@ -169,14 +159,13 @@ void Engine::UseEvents() {
     set->has_rest = !mode_.AnySticks() && s_->Rest(mode_, set->rest, &set->rest_stable);
     set->rest_epoch = system_epoch_;
   }
-  if (cur_ != set) {
-    problem_.events.Swap(set->events);
-    cur_ = set;
-  }
+  // The set's own list, in place (no copy per segment).
+  cur_ = set;
+  problem_.shared = &set->events;
   // A start just off a surface that reaches it at once arrives there.
   for (int k : set->arrival_events) {
-    const int c = set->roles[problem_.events.event(k).g].index;
-    problem_.events.SetAtStart(k, contacts_[c].At(z_.data()) != 0);
+    const int c = set->roles[set->events.event(k).g].index;
+    set->events.SetAtStart(k, contacts_[c].At(z_.data()) != 0);
   }
 }
 
@@ -199,7 +188,6 @@ bool Engine::Segment() {
   UseEvents();  // and the mode's rest point
   p.has_rest = cur_->has_rest;
   const bool stable = cur_->rest_stable;
-  rest_ = cur_->rest;
   InitialRows(p.layout);
   SegmentOutput out;
   if (rq_->observer && rq_->output_dt > 0)
@@ -233,7 +221,7 @@ bool Engine::Segment() {
       if (p.has_rest && stable && Settled(y)) {
         // Settled on stable steady sliding, where it stays: the rest of the
         // segment is that rest point, and no event can follow.
-        z_ = rest_;
+        z_ = cur_->rest;
         const double t_rest = std::isfinite(rq_->t_max) ? rq_->t_max : e.t_end;
         for (; out.on() && out.at() < t_rest; ++next_output_)
           rq_->observer(out.at(), z_.data(), mode_);

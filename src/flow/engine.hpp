@@ -44,7 +44,7 @@ class Engine {
   bool Segment();
   void BuildEvents(EventSet& set);
   void AddOpenEvents(EventSet& set);
-  // The events of the current mode (built or reused) in problem_.
+  // The events of the current mode (built or reused), shared with problem_.
   void UseEvents();
   void ReadSystem();
   // The switches at a terminal root (switching.cpp); false when the run ends.
@@ -108,7 +108,6 @@ class Engine {
   double t_start_ = 0;                             // the run's start (a clock's column)
   bool column_lost_ = false;                       // settled at rest: no column reported
   std::vector<double> clock_drate_;                // d omega / dp of each clock (column_)
-  Eigen::VectorXd rest_;                           // the mode's rest point, if any
   std::vector<double> clock_rate_, clock_offset_;  // clocks = rate t + offset
   long clock_epoch_ = -1;                          // clock_rate_ is of this system epoch
   double output_origin_ = 0;                       // samples at origin + k output_dt

@@ -41,6 +41,9 @@ bool Engine::SameShape(const FlowRequest& rq) const {
 // The system's contacts and derivatives: event sets built for the same ones
 // are kept (a parameter changed), their rest points recomputed.
 void Engine::ReadSystem() {
+  n_ = s_->dimension();
+  nt_ = s_->tangent_dimension();
+  k_ = s_->contacts();
   bool same =
       static_cast<int>(contacts_.size()) == k_ && static_cast<int>(derivative_of_.size()) == n_;
   for (int i = 0; same && i < k_; ++i) {

@@ -25,7 +25,7 @@ class CvodeStepper final : public Stepper {
   void Reset(const SegmentProblem& problem, double t0, const double* y0) override {
     p_ = &problem;
     // At least one root function: the cancel hook is polled from there.
-    const int nroots = std::max(1, problem.events.functions());
+    const int nroots = std::max(1, problem.Events().functions());
     if (!cv_) {
       cv_ = std::make_unique<Cvode>(size(), o_.method, o_.rtol, o_.atol, o_.max_steps,
                                     variational_ ? &CvodeStepper::RhsVar : &CvodeStepper::Rhs,
@@ -82,7 +82,7 @@ class CvodeStepper final : public Stepper {
   }
   const double* y() const override { return cv_->y(); }
   void RootInfo(int* roots_found) const override {
-    if (p_->events.functions() > 0) cv_->RootInfo(roots_found);
+    if (p_->Events().functions() > 0) cv_->RootInfo(roots_found);
   }
   double CurrentTime() override { return cv_->CurrentTime(); }
   double SegmentStart() const override { return t_start_; }
@@ -156,9 +156,10 @@ class CvodeStepper final : public Stepper {
     // that moves no root (an arrival's toward the mode's side).
     const bool at_rest = p.has_rest && p.AtRest(z, self->f_.data());
     const double bias = Tolerances::kRootZeroBias;
-    if (p.events.functions() == 0) g[0] = 1.0;  // no event: the cancel poll only
-    for (int i = 0; i < p.events.functions(); ++i) {
-      const EventFunction& fn = p.events.function(i);
+    const EventList& ev = p.Events();
+    if (ev.functions() == 0) g[0] = 1.0;  // no event: the cancel poll only
+    for (int i = 0; i < ev.functions(); ++i) {
+      const EventFunction& fn = ev.function(i);
       if (!fn.surface && at_rest) {
         g[i] = 1.0;
         continue;

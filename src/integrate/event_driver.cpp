@@ -19,7 +19,7 @@ void Emit(const SegmentOutput& out, double t, const double* y) {
 int Dispatch(const SegmentProblem& p, const int* rf, const double* y, std::vector<int>* terminal,
              int* direction) {
   int first = -1;
-  const EventList& ev = p.events;
+  const EventList& ev = p.Events();
   for (int i = 0; i < ev.functions(); ++i) {
     (*terminal)[i] = 0;
     if (rf[i] == 0) continue;
@@ -35,8 +35,9 @@ int Dispatch(const SegmentProblem& p, const int* rf, const double* y, std::vecto
 // Whether a root at the stepper's (re)start is an event: only a terminal
 // event that counts at the start (Event::at_start).
 bool CountsAtStart(const SegmentProblem& p, const int* rf) {
-  for (int i = 0; i < p.events.functions(); ++i)
-    if (rf[i] != 0 && p.events.AtStart(i, rf[i])) return true;
+  const EventList& ev = p.Events();
+  for (int i = 0; i < ev.functions(); ++i)
+    if (rf[i] != 0 && ev.AtStart(i, rf[i])) return true;
   return false;
 }
 
@@ -53,7 +54,7 @@ long FirstSample(double origin, double dt, double t) {
 SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, const double* y0,
                       double t_max, const SegmentOutput& out, std::vector<int>* roots) {
   cv.Reset(problem, t0, y0);
-  const int nf = problem.events.functions();
+  const int nf = problem.Events().functions();
   roots->assign(nf, 0);
   constexpr int kSmall = 16;
   int rf_small[kSmall];

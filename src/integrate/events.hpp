@@ -9,7 +9,6 @@
 #pragma once
 
 #include <functional>
-#include <utility>
 #include <vector>
 
 #include "stickslip/system/mode.hpp"
@@ -121,15 +120,6 @@ class EventList {
   bool AnyPassing() const { return passing_; }
   void SetAtStart(int k, bool at_start) { events_[k].at_start = at_start; }
   const Event& event(int k) const { return events_[k]; }
-  // O(1): the vectors' buffers change hands.
-  void Swap(EventList& o) noexcept {
-    functions_.swap(o.functions_);
-    events_.swap(o.events_);
-    stop_.swap(o.stop_);
-    pass_.swap(o.pass_);
-    std::swap(passing_, o.passing_);
-  }
-
   bool Stops(int i, int direction) const { return Has(stop_[i], direction); }
   bool Passes(int i, int direction) const { return Has(pass_[i], direction); }
   bool AtStart(int i, int dir) const {

@@ -47,7 +47,9 @@ class BernsteinTable {
   double ratio_[kSize];
 };
 
-void ToBernstein(const double* c, int n, double* b) {
+// Out of line: one copy for both hulls (the hot code's footprint,
+// docs/benchmarks.md, "Where the fetch cliff is").
+[[gnu::noinline]] void ToBernstein(const double* c, int n, double* b) {
   static const BernsteinTable table;
   for (int i = 0; i <= n; ++i) {
     const double* r = table.Row(n, i);

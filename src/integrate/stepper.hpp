@@ -47,7 +47,11 @@ struct SegmentProblem {
   double rtol = 0, atol = 0;
   TaylorLayout layout;                            // state, Phi, column; aux rows are the field's
   const std::function<bool()>* cancel = nullptr;  // polled after every step, if set
+  // The segment's events: `events`, or the list `shared` points to (the
+  // flow's per-mode lists, used in place: no copy or swap per segment).
   EventList events;
+  const EventList* shared = nullptr;
+  const EventList& Events() const { return shared ? *shared : events; }
   EventHook on_event{};  // every non-terminal event a stepper passes
   StepHook on_step{};    // every step end (not one cut at a terminal root)
   // Clocks (System::clocks, the last state rows) as exact functions of t:

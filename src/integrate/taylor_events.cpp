@@ -34,7 +34,7 @@ inline double FillWithTail(double* __restrict g, int deg, Coef coef) {
 // The step polynomial in u = tau / h of each function of its own shape
 // (EventFunction::base); the others share it, with their own g_0 (g0_).
 void TaylorStepper::EventPolynomials(int n) {
-  const EventList& ev = p_->events;
+  const EventList& ev = p_->Events();
   const TaylorRow* r = c();
   const double* __restrict hp = hp_;
   const int nf = ev.functions();
@@ -88,7 +88,7 @@ void TaylorStepper::EventPolynomials(int n) {
 // are passed to the problem's hook.
 void TaylorStepper::Events(double h) {
   const int n = order_;
-  const EventList& ev = p_->events;
+  const EventList& ev = p_->Events();
   const int nf = ev.functions();
   if (nf == 0) {
     passed_root_ = false;
@@ -143,8 +143,8 @@ void TaylorStepper::Events(double h) {
 // stops or beyond roots.first: passed ones go to roots.passed.
 void TaylorStepper::EventRoots(int i, const double* base, int deg, double tail, double h,
                                Roots& roots) {
-  const EventFunction& f = p_->events.function(i);
-  const EventList& ev = p_->events;
+  const EventList& ev = p_->Events();
+  const EventFunction& f = ev.function(i);
   const int zero_sign = f.zero_sign;
   // g = base with g_0 = g0_[i]: the quick exclusion reads g_0..g_2, the rest
   // of the search a copy (gc) with this function's g_0.

@@ -27,7 +27,7 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
     field_->Bind(*problem.system, problem.mode);
   }
   bound_system_ = problem.system, bound_epoch_ = problem.system_epoch, bound_mode_ = problem.mode;
-  const bool in_steps = problem.events.AnyPassing();  // roots inside steps
+  const bool in_steps = problem.Events().AnyPassing();  // roots inside steps
   extra_rel_ = field_->ExtraOrder(rtol_, in_steps);
   extra_abs_ = field_->ExtraOrder(atol_, in_steps);
   layout_ = problem.layout;
@@ -44,12 +44,9 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   clock_last_ = n;
   col_clock_first_ = layout_.column ? layout_.param() + layout_.tangent : m_;
   col_clock_last_ = layout_.column ? layout_.param() + n : m_;
-  AtLeast(center_, n);
+  const int nf = nf_ = problem.Events().functions();
+  if (n > sized_n_ || m_ > sized_m_ || nf > sized_nf_) Grow(n, nf);
   for (int i = 0; i < n; ++i) center_[i] = field_->ScaleCenter(i);
-  // Buffers only grow: a mode's segment after another's of fewer rows or
-  // events reuses them (entries past m_ and nf_ are not read).
-  AtLeast(yend_, m_);
-  AtLeast(y_, m_);
   std::copy(y0, y0 + m_, yend_.begin());
   std::copy(y0, y0 + m_, y_.begin());
   // No step yet: the "step" [t0, t0] is the start itself (dense output there).
@@ -63,16 +60,25 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   fresh_segment_ = true;
   surface_scale_ = 1;
   for (int i = 0; i < layout_.tangent; ++i) surface_scale_ += std::abs(y0[i]);
-  AtLeast(hook_y_, m_);
-  const int nf = nf_ = problem.events.functions();
-  AtLeast(state_, nf);
-  AtLeast(sign_, nf);
-  AtLeast(rf_, nf);
   for (int i = 0; i < nf; ++i) state_[i] = kFresh, sign_[i] = 1, rf_[i] = 0;
-  AtLeast(poly_, static_cast<size_t>(nf) * kTaylorRowSize);
-  AtLeast(tail_, nf);
-  AtLeast(g0_, nf);
-  AtLeast(raw0_, nf);
+}
+
+// Buffers only grow: a mode's segment after another's of fewer rows or
+// events reuses them (entries past m_ and nf_ are not read).
+void TaylorStepper::Grow(int n, int nf) {
+  sized_n_ = std::max(sized_n_, n), sized_m_ = std::max(sized_m_, m_);
+  sized_nf_ = std::max(sized_nf_, nf);
+  AtLeast(center_, sized_n_);
+  AtLeast(yend_, sized_m_);
+  AtLeast(y_, sized_m_);
+  AtLeast(hook_y_, sized_m_);
+  AtLeast(state_, sized_nf_);
+  AtLeast(sign_, sized_nf_);
+  AtLeast(rf_, sized_nf_);
+  AtLeast(poly_, static_cast<size_t>(sized_nf_) * kTaylorRowSize);
+  AtLeast(tail_, sized_nf_);
+  AtLeast(g0_, sized_nf_);
+  AtLeast(raw0_, sized_nf_);
 }
 
 bool TaylorStepper::Failed(const std::string& what) {

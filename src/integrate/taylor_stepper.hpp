@@ -116,6 +116,9 @@ class TaylorStepper final : public Stepper {
       y[j] = p_->clock_rate[j - clock_first_] * t + p_->clock_offset[j - clock_first_];
   }
   bool Failed(const std::string& what);
+  // Sizes the buffers for n state rows, m_ rows and nf event functions.
+  // Out of line: it runs once per shape, not in the segment's hot code.
+  [[gnu::noinline]] void Grow(int n, int nf);
 
   double rtol_, atol_;
   long max_steps_;
@@ -159,7 +162,8 @@ class TaylorStepper final : public Stepper {
   bool fresh_segment_ = false;  // the first step of a segment, or after a root returned
   double surface_scale_ = 1;    // the state's size, for SurfaceRounding
   std::vector<double> hook_y_;
-  TaylorOrders orders_;  // the steps since Reset and their orders
+  int sized_n_ = 0, sized_m_ = 0, sized_nf_ = 0;  // what the buffers hold (Grow)
+  TaylorOrders orders_;                           // the steps since Reset and their orders
   std::string error_;
 };
 
