@@ -74,8 +74,8 @@ def main():
     args = sys.argv[1:]
     wide = "--wide" in args
     args = [a for a in args if a != "--wide"]
-    if len(args) > 1:
-        sys.exit(__doc__)
+    if len(args) > 1 or any(a.startswith("-") for a in args):
+        sys.exit("fetch_cliff.py: expected [PROCESSES] [--wide], not %s" % " ".join(sys.argv[1:]))
     try:
         processes = int(args[0]) if args else 5
     except ValueError:
@@ -86,7 +86,10 @@ def main():
         src, exe = os.path.join(d, "cliff.c"), os.path.join(d, "cliff")
         with open(src, "w") as f:
             f.write(program(wide))
-        subprocess.run(["gcc", "-O1", src, "-o", exe], check=True)
+        try:
+            subprocess.run(["gcc", "-O1", src, "-o", exe], check=True)
+        except (OSError, subprocess.CalledProcessError) as e:
+            sys.exit("fetch_cliff.py: gcc could not build the program (%s)" % e)
         print("ns per 64-byte line; columns: hot code per pass, KiB")
         print("".join("%6d" % k for k in KIB))
         for _ in range(processes):
