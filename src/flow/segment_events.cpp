@@ -38,8 +38,9 @@ bool Engine::SameShape(const FlowRequest& rq) const {
   return true;
 }
 
-// The system's contacts and derivatives: event sets built for the same ones
-// are kept (a parameter changed), their rest points recomputed.
+// The system's dimensions, contacts and derivatives (read once per system,
+// Invalidate): event sets built for the same ones are kept (a parameter
+// changed), their rest points recomputed.
 void Engine::ReadSystem() {
   n_ = s_->dimension();
   nt_ = s_->tangent_dimension();
