@@ -88,7 +88,7 @@ class TangentProduct {
 };
 
 // The first component with |z_i| above a (or not finite), else -1.
-int Diverged(const Eigen::VectorXd& z, double a) {
+int Diverged(ConstState z, double a) {  // a view: no copy of head(nt) per return
   for (int i = 0; i < z.size(); ++i)
     if (!(std::abs(z[i]) <= a)) return i;
   return -1;
@@ -159,9 +159,19 @@ void Check(const System& s, const FlowPoint& start, const PoincareSection& p,
     throw InvalidArgument("a system with a clock is iterated on its stroboscopic section");
 }
 
+// Return k passed max_amplitude in component `big`. The ends of an
+// iteration are out of line and cold: the loop runs every return (the hot
+// code's footprint, docs/benchmarks.md, "Where the fetch cliff is").
+[[gnu::noinline, gnu::cold]] void DivergedIn(const System& s, int big, int k,
+                                             double max_amplitude, SectionRun* run) {
+  run->status = LyapunovStatus::kDiverged;
+  run->message = "|" + s.StateName(big) + "| passed " + Num(max_amplitude) + " in return " +
+                 std::to_string(k);
+}
+
 // The end of return k that is not a return: the run's status and message.
-void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double rest_tol,
-                SectionRun* run) {
+void EndStatus(const System& s, const FlowRun& r, bool timed, int k, double rest_tol,
+               SectionRun* run) {
   const std::string where =
       std::string(timed ? " (period " : " (return ") + std::to_string(k) + ")";
   if (!timed && r.status == FlowStatus::kTimeLimit) {
@@ -182,6 +192,22 @@ void EndWithout(const System& s, const FlowRun& r, bool timed, int k, double res
                 : r.status == FlowStatus::kContactOpen ? LyapunovStatus::kContactOpen
                                                        : LyapunovStatus::kFlowFailed;
   run->message = r.message + where;
+}
+
+// The end of return k that is not a return, and a drift past max_amplitude
+// with no return (a stuck drift).
+[[gnu::noinline, gnu::cold]] void EndWithout(const System& s, const FlowRun& r, bool timed, int k,
+                                             double rest_tol, double max_amplitude,
+                                             SectionRun* run) {
+  EndStatus(s, r, timed, k, rest_tol, run);
+  const int far = Diverged(r.end.z.head(s.tangent_dimension()), max_amplitude);
+  const bool lost =
+      run->status == LyapunovStatus::kNoReturn || run->status == LyapunovStatus::kFlowFailed;
+  if (!lost || far < 0) return;
+  run->status = LyapunovStatus::kDiverged;
+  run->message = "|" + s.StateName(far) + "| = " + Num(r.end.z[far]) + " passed " +
+                 Num(max_amplitude) + " before return " + std::to_string(k) +
+                 ", t = " + Num(r.end.t);
 }
 
 }  // namespace
@@ -246,24 +272,13 @@ SectionRun IterateSection(const System& s, const FlowPoint& start, const Poincar
     flow.Run(z, rq, &r);
     run.steps += r.steps;
     if (r.status != (timed ? FlowStatus::kTimeLimit : FlowStatus::kSection)) {
-      EndWithout(s, r, timed, k, rest_tol, &run);
-      const int far = Diverged(r.end.z.head(nt), max_amplitude);
-      const bool lost =
-          run.status == LyapunovStatus::kNoReturn || run.status == LyapunovStatus::kFlowFailed;
-      if (lost && far >= 0) {  // drifted off with no return (a stuck drift)
-        run.status = LyapunovStatus::kDiverged;
-        run.message = "|" + s.StateName(far) + "| = " + Num(r.end.z[far]) + " passed " +
-                      Num(max_amplitude) + " before return " + std::to_string(k) +
-                      ", t = " + Num(r.end.t);
-      }
+      EndWithout(s, r, timed, k, rest_tol, max_amplitude, &run);
       if (run.status == LyapunovStatus::kRest) z = r.end;
       break;
     }
     const int big = Diverged(r.end.z.head(nt), max_amplitude);
     if (big >= 0) {  // end: the last state within bounds
-      run.status = LyapunovStatus::kDiverged;
-      run.message = "|" + s.StateName(big) + "| passed " + Num(max_amplitude) + " in return " +
-                    std::to_string(k);
+      DivergedIn(s, big, k, max_amplitude, &run);
       break;
     }
     const double dt = r.end.t - z.t;

@@ -35,32 +35,11 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   s_ = flow_.system_.get();
   rq_ = &rq;
   out_ = out;
-  if (!system_read_) ReadSystem();  // and n_, nt_, k_
-  if (start.z.size() != n_)
-    throw InvalidArgument("Flow::Run: the start has " + std::to_string(start.z.size()) +
-                          " components, the system " + std::to_string(n_));
-  if (!start.z.allFinite()) throw InvalidArgument("Flow::Run: start state is not finite");
-  if (!(rq.t_max > start.t)) throw InvalidArgument("Flow::Run: t_max must be > t0");
-  if (!rq.switching && start.mode.AnySticks())
-    throw InvalidArgument("Flow::Run: a run without switching needs a slip start");
-  if (rq.parameter_column && !flow_.has_parameter_column())
-    throw InvalidArgument("Flow::Run: a parameter column needs set_parameter_column and Taylor");
-  for (int j : rq.extrema)
-    if (j < 0 || j >= n_) throw InvalidArgument("Flow::Run: extremum of no component " + Num(j));
-  CheckStart(*s_, start);
-  for (int i = 0; i < k_; ++i)
-    if (normals_[i] && !(normals_[i]->At(start.z.data()) > 0))
-      throw InvalidArgument("Flow::Run: contact " + std::to_string(i) +
-                            " is open at the start (normal force <= 0)");
+  if (!system_read_) ReadSystem();  // and n_, nt_, k_ and the run's buffers
+  CheckRun(start, rq);
   variational_ = rq.variational || rq.parameter_column;
   column_ = rq.parameter_column;
-  if (!SameShape(rq)) {
-    ForgetEvents();
-    shape_switching_ = rq.switching, shape_in_steps_ = rq.extrema_in_steps;
-    shape_var_ = variational_, shape_col_ = column_;
-    shape_extrema_ = rq.extrema;
-    shape_sections_ = rq.sections;
-  }
+  if (!SameShape(rq)) Reshape(rq);
   FlowRun& r = *out;
   r.status = FlowStatus::kTimeLimit;
   r.message.clear();
@@ -71,29 +50,24 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   const int ne = static_cast<int>(rq.extrema.size());
   r.lo.resize(ne), r.hi.resize(ne);
   for (int p = 0; p < ne; ++p) r.lo[p] = r.hi[p] = start.z[rq.extrema[p]];
-  C_.setZero(nt_);  // r.dzdp and has_dzdp are set by Done
+  C_.setZero();  // sized by ReadSystem; r.dzdp and has_dzdp are set by Done
   t_start_ = start.t, column_lost_ = false;
   r.steps = 0, r.orders = TaylorOrders();
   t_ = start.t;
-  z_ = start.z;
+  std::copy(start.z.data(), start.z.data() + n_, z_.data());  // z_ sized by ReadSystem
   mode_ = ReleasedAtEdge(*s_, start.mode, start.z);  // an exit at t = 0 is taken now
-  r.modes.assign(1, mode_);
-  M_.setIdentity(nt_, nt_);
+  r.modes.resize(1);  // not assign(1, .): no out-of-line fill per run
+  r.modes[0] = mode_;
+  M_.setIdentity();  // sized by ReadSystem
   // Clocks as exact functions of t (their rate is their field's entry).
   const int clocks = n_ - nt_;
-  clock_rate_.resize(clocks);
-  clock_offset_.resize(clocks);
-  clock_drate_.assign(clocks, 0.0);
-  for (int j = 0; j < clocks && column_; ++j)
-    clock_drate_[j] = s_->ClockRateDerivative(j, *flow_.parameter_);
-  if (clocks > 0 && clock_epoch_ != system_epoch_) {  // a clock's rate is the same in every mode
-    f_before_.resize(n_);
-    s_->Field(mode_, z_, f_before_);
-    for (int j = 0; j < clocks; ++j) clock_rate_[j] = f_before_[nt_ + j];
-    clock_epoch_ = system_epoch_;
-  }
+  if (column_)
+    for (int j = 0; j < clocks; ++j)
+      clock_drate_[j] = s_->ClockRateDerivative(j, *flow_.parameter_);
+  if (clocks > 0 && clock_epoch_ != system_epoch_) ReadClockRates();
   for (int j = 0; j < clocks; ++j) clock_offset_[j] = z_[nt_ + j] - clock_rate_[j] * t_;
   if (variational_) ProjectStartTangent();
+  StartProblem();
 }
 
 // The grid origin + k dt (FlowRequest::output_origin): the start is sampled
@@ -112,7 +86,7 @@ void Engine::Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
   Start(start, rq, out);
   FlowRun& r = *out;
   last_switch_t_ = NAN;
-  switched_at_.assign(k_, NAN);  // no allocation once warm (same k)
+  std::fill(switched_at_.begin(), switched_at_.end(), NAN);  // sized by ReadSystem
   if (rq.observer && rq.output_dt > 0) StartOutput(rq);
   if (rq.step_observer) rq.step_observer(t_, z_.data(), mode_);
   // k contacts in step may each stick or leave in turn at one t (to rounding).
@@ -169,12 +143,12 @@ void Engine::UseEvents() {
   }
 }
 
-bool Engine::Segment() {
+// The segment problem's parts that hold for the whole run.
+void Engine::StartProblem() {
   const FlowOptions& o = flow_.options_;
   SegmentProblem& p = problem_;
   p.system = s_;
   p.system_epoch = system_epoch_;
-  p.mode = mode_;
   p.contacts = k_;
   p.rtol = o.rtol;
   p.atol = o.atol;
@@ -185,6 +159,12 @@ bool Engine::Segment() {
       (!rq_->extrema_in_steps || rq_->step_observer) ? StepHook{&Engine::OnStep, this} : StepHook{};
   p.clock_rate = clock_rate_.data();
   p.clock_offset = clock_offset_.data();
+  solver_ = &Solver();
+}
+
+bool Engine::Segment() {
+  SegmentProblem& p = problem_;
+  p.mode = mode_;
   UseEvents();  // and the mode's rest point
   p.has_rest = cur_->has_rest;
   const bool stable = cur_->rest_stable;
@@ -192,7 +172,7 @@ bool Engine::Segment() {
   SegmentOutput out;
   if (rq_->observer && rq_->output_dt > 0)
     out = SegmentOutput{rq_->output_dt, output_origin_, &next_output_, &Engine::OnOutput, this};
-  Stepper& cv = Solver();
+  Stepper& cv = *solver_;
   const double t0 = t_;
   const SegmentEnd e = RunSegment(cv, p, t_, y0_.data(), rq_->t_max, out, &roots_);
   FlowRun& r = *out_;
@@ -276,18 +256,25 @@ void Engine::Extend(const double* z) {
   }
 }
 
+namespace {
+// dst = src, sized as src: one small copy out of line for the run's three
+// results (Eigen's inline assignment is a vectorised loop per use).
+template <class M>
+[[gnu::noinline]] void CopyOf(const M& src, M* dst) {
+  if (dst->rows() != src.rows() || dst->cols() != src.cols()) dst->resize(src.rows(), src.cols());
+  std::copy(src.data(), src.data() + src.size(), dst->data());
+}
+}  // namespace
+
 bool Engine::Done(FlowStatus s) {
   FlowRun& r = *out_;
   r.status = s;
   r.end.t = t_;
-  r.end.z = z_;
+  CopyOf(z_, &r.end.z);
   r.end.mode = mode_;
-  r.jacobian = M_;
+  CopyOf(M_, &r.jacobian);
   r.has_dzdp = column_ && !column_lost_;
-  if (column_)
-    r.dzdp = C_;
-  else
-    r.dzdp.setZero(nt_);  // no temporary: a run's end allocates nothing once warm
+  CopyOf(C_, &r.dzdp);  // 0 without a column (Start)
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.
   const bool sampled = r.switches > 0 && last_switch_t_ == t_;

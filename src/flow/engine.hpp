@@ -40,6 +40,10 @@ class Engine {
   struct EventSet;
   // Checks the start (InvalidArgument) and sets the run's state and result.
   void Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out);
+  void CheckRun(const FlowPoint& start, const FlowRequest& rq) const;  // InvalidArgument
+  void Reshape(const FlowRequest& rq);  // a request of another shape: events rebuilt
+  void ReadClockRates();
+  void StartProblem();
   // One segment in the current mode; false when the run ends.
   bool Segment();
   void BuildEvents(EventSet& set);
@@ -67,7 +71,7 @@ class Engine {
   void Record(SwitchKind kind, int contact, const ModeSet& before, const ModeSet& after);
   bool Done(FlowStatus s);
   void StartOutput(const FlowRequest& rq);
-  bool Fail(FlowStatus s, const std::string& why);
+  [[gnu::cold]] bool Fail(FlowStatus s, const std::string& why);
   void Extend(const double* z);
   bool Settled(const double* y) const;
   // "taylor failed at t = ... in <mode> at x = ..., x' = ...: reason".
@@ -136,6 +140,7 @@ class Engine {
   std::vector<int> roots_;
   std::vector<double> y0_;
   std::unique_ptr<Stepper> plain_, var_, param_;
+  Stepper* solver_ = nullptr;  // the run's (Solver)
   std::optional<int> param_index_;  // param_'s column
   // Scratch for switches.
   Eigen::VectorXd f_before_, f_after_, grad_, grad2_, jump_;

@@ -160,20 +160,34 @@ ModeChoiceResult ModeChoiceOf(const System& s, const Eigen::VectorXd& z) {
 
 ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) { return ModeChoiceOf(s, z).mode; }
 
-ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
+namespace {
+// ReleasedAtEdge from the first sticking contact at its edge on (out of
+// line: every flow's start runs ReleasedAtEdge, and most start in slip).
+[[gnu::noinline]] ModeSet ReleaseFrom(const System& s, ModeSet m, ConstState z, int first) {
   const int n = s.dimension();
-  Eigen::VectorXd f, g, gl;  // sized at the first edge only (every flow's start reads this)
-  bool field = false;
+  Eigen::VectorXd f(n), g(n), gl(n);
   const ModeSet held = m;  // every contact's edge judged in the start's own field
-  for (int i = 0; i < s.contacts(); ++i) {
+  s.Field(held, z, f);
+  for (int i = first; i < s.contacts(); ++i) {
     if (!held.sticks(i)) continue;
     const double lambda = s.StickForce(held, i, z), limit = s.StaticLimit(i, z);
     const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
     if (std::abs(lambda) < limit - slack) continue;
-    if (!field) f.resize(n), g.resize(n), gl.resize(n), s.Field(held, z, f), field = true;
     s.StickForceGradient(held, i, z, g);
     s.StaticLimitGradient(i, z, gl);
     if ((lambda > 0 ? 1 : -1) * g.dot(f) - gl.dot(f) > 0) m.set(i, Released(lambda));
+  }
+  return m;
+}
+}  // namespace
+
+ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
+  if (!m.AnySticks()) return m;
+  for (int i = 0; i < s.contacts(); ++i) {
+    if (!m.sticks(i)) continue;
+    const double lambda = s.StickForce(m, i, z), limit = s.StaticLimit(i, z);
+    const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
+    if (std::abs(lambda) >= limit - slack) return ReleaseFrom(s, m, z, i);
   }
   return m;
 }

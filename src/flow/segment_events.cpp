@@ -1,10 +1,14 @@
 // The events of one segment (engine.hpp): for each slipping contact its
 // arrival on h_i = 0, for each sticking one its exits at lambda_i = +-limit
-// (the field's auxiliary rows), the extrema asked for, and the sections.
+// (the field's auxiliary rows), the extrema asked for, and the sections;
+// and the run's shape: the system read, the request checked.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "flow/engine.hpp"
+#include "numerics/numbers.hpp"
+#include "stickslip/errors.hpp"
 
 namespace stickslip::flow_detail {
 
@@ -63,6 +67,15 @@ void Engine::ReadSystem() {
   }
   ++system_epoch_;
   system_read_ = true;
+  // Per-run buffers of the system's shape (Start, Run: no resize per run).
+  const int clocks = n_ - nt_;
+  clock_rate_.resize(clocks);
+  clock_offset_.resize(clocks);
+  clock_drate_.assign(clocks, 0.0);  // 0 unless a run asks for the column
+  switched_at_.resize(k_);
+  z_.resize(n_);
+  M_.resize(nt_, nt_);
+  C_.resize(nt_);
   if (same) return;
   ForgetEvents();
   contacts_.resize(k_);
@@ -179,6 +192,44 @@ void Engine::AddOpenEvents(EventSet& set) {
     set.roles[g] = {FunctionRole::kOpen, i, 0};
     ev.Add(Event{g, -1, true});
   }
+}
+
+// Out of line, as the other rare parts of a run's start: the run's set-up
+// is hot code of every repeated run (docs/benchmarks.md, "Where the fetch
+// cliff is").
+[[gnu::noinline]] void Engine::CheckRun(const FlowPoint& start, const FlowRequest& rq) const {
+  if (start.z.size() != n_)
+    throw InvalidArgument("Flow::Run: the start has " + std::to_string(start.z.size()) +
+                          " components, the system " + std::to_string(n_));
+  if (!start.z.allFinite()) throw InvalidArgument("Flow::Run: start state is not finite");
+  if (!(rq.t_max > start.t)) throw InvalidArgument("Flow::Run: t_max must be > t0");
+  if (!rq.switching && start.mode.AnySticks())
+    throw InvalidArgument("Flow::Run: a run without switching needs a slip start");
+  if (rq.parameter_column && !flow_.has_parameter_column())
+    throw InvalidArgument("Flow::Run: a parameter column needs set_parameter_column and Taylor");
+  for (int j : rq.extrema)
+    if (j < 0 || j >= n_) throw InvalidArgument("Flow::Run: extremum of no component " + Num(j));
+  CheckStart(*s_, start);
+  for (int i = 0; i < k_; ++i)
+    if (normals_[i] && !(normals_[i]->At(start.z.data()) > 0))
+      throw InvalidArgument("Flow::Run: contact " + std::to_string(i) +
+                            " is open at the start (normal force <= 0)");
+}
+
+[[gnu::noinline]] void Engine::Reshape(const FlowRequest& rq) {
+  ForgetEvents();
+  shape_switching_ = rq.switching, shape_in_steps_ = rq.extrema_in_steps;
+  shape_var_ = variational_, shape_col_ = column_;
+  shape_extrema_ = rq.extrema;
+  shape_sections_ = rq.sections;
+}
+
+// A clock's rate is its field's entry, the same in every mode.
+[[gnu::noinline]] void Engine::ReadClockRates() {
+  f_before_.resize(n_);
+  s_->Field(mode_, z_, f_before_);
+  for (int j = nt_; j < n_; ++j) clock_rate_[j - nt_] = f_before_[j];
+  clock_epoch_ = system_epoch_;
 }
 
 }  // namespace stickslip::flow_detail

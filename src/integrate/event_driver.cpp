@@ -15,18 +15,19 @@ void Emit(const SegmentOutput& out, double t, const double* y) {
 }
 
 // The events at a root: non-terminal hooks in the order of the functions;
-// the terminal ones are kept in *terminal. Returns the first terminal one.
-int Dispatch(const SegmentProblem& p, const int* rf, const double* y, std::vector<int>* terminal,
-             int* direction) {
+// the roots rf[i] of terminal ones are kept, the others set to 0 (in place).
+// Returns the first terminal one.
+int Dispatch(const SegmentProblem& p, int* rf, const double* y, int* direction) {
   int first = -1;
   const EventList& ev = p.Events();
   for (int i = 0; i < ev.functions(); ++i) {
-    (*terminal)[i] = 0;
-    if (rf[i] == 0) continue;
-    if (p.on_event.fn && ev.Passes(i, rf[i])) p.on_event(i, y);
-    if (ev.Stops(i, rf[i])) {
-      (*terminal)[i] = rf[i];
-      if (first < 0) first = i, *direction = rf[i];
+    const int r = rf[i];
+    rf[i] = 0;
+    if (r == 0) continue;
+    if (p.on_event.fn && ev.Passes(i, r)) p.on_event(i, y);
+    if (ev.Stops(i, r)) {
+      rf[i] = r;
+      if (first < 0) first = i, *direction = r;
     }
   }
   return first;
@@ -54,13 +55,12 @@ long FirstSample(double origin, double dt, double t) {
 SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, const double* y0,
                       double t_max, const SegmentOutput& out, std::vector<int>* roots) {
   cv.Reset(problem, t0, y0);
-  const int nf = problem.Events().functions();
-  roots->assign(nf, 0);
-  constexpr int kSmall = 16;
-  int rf_small[kSmall];
-  std::vector<int> rf_big;
-  int* rfp = rf_small;
-  if (nf > kSmall) rf_big.resize(nf), rfp = rf_big.data();
+  const size_t nf = static_cast<size_t>(problem.Events().functions());
+  // The stepper's root flags in *roots itself (Dispatch keeps the terminal
+  // ones): no buffer of its own per segment.
+  if (roots->size() != nf) roots->resize(nf);
+  std::fill(roots->begin(), roots->end(), 0);
+  int* rfp = roots->data();
   SegmentEnd end;
   // A finite stop time (CVODE's), extended in chunks until t_max.
   end.t_end = std::min(t_max, t0 + Tolerances::kStopTimeChunk);
@@ -70,7 +70,7 @@ SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, con
   const bool sampling = out.on();
   while (sampling && out.at() <= t0 + Tolerances::OutputAtStart(t0)) ++*out.next;
   // Each root function fires once per instant (two repeats per function).
-  RootRepeats repeats(2 * std::max(nf, 3));
+  RootRepeats repeats(2 * std::max(static_cast<int>(nf), 3));
   auto done = [&](SegmentEnd::Kind kind, double t) {
     end.kind = kind;
     end.t = t;
@@ -101,7 +101,7 @@ SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, con
       // an event, unless an event says it counts at the start.
       const double start = cv.SegmentStart();
       if (t - start <= Tolerances::EventAtStart(start) && !CountsAtStart(problem, rfp)) continue;
-      end.g = Dispatch(problem, rfp, cv.y(), roots, &end.direction);
+      end.g = Dispatch(problem, rfp, cv.y(), &end.direction);
       if (end.g >= 0) return done(SegmentEnd::kEvent, t);
       continue;
     }

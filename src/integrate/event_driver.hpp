@@ -46,7 +46,8 @@ long FirstSample(double origin, double dt, double t);
 
 // Integrates problem's field from (t0, y0) until a terminal event or t_max.
 // Roots that no event asks for are passed. *roots (one per function) holds
-// the terminal roots of a kEvent end.
+// the terminal roots of a kEvent end (after another end: the last roots
+// the stepper reported).
 SegmentEnd RunSegment(Stepper& cv, const SegmentProblem& problem, double t0, const double* y0,
                       double t_max, const SegmentOutput& out, std::vector<int>* roots);
 
