@@ -81,12 +81,24 @@ void TaylorStepper::Grow(int n, int nf) {
   AtLeast(raw0_, sized_nf_);
 }
 
-bool TaylorStepper::Failed(const std::string& what) {
+bool TaylorStepper::Failed(const char* what) {
   rows_dirty_ = true;  // perhaps non-finite coefficients
   std::ostringstream os;
   os << "taylor: " << what << " at t = " << ta_;
   error_ = os.str();
   return false;
+}
+
+bool TaylorStepper::StepUnderflow(double h) {
+  std::ostringstream os;
+  os << "step-size underflow (h = " << h << ")";
+  return Failed(os.str().c_str());
+}
+
+void TaylorStepper::TooManySteps(double tout) {
+  std::ostringstream os;
+  os << "too many steps (" << max_steps_ << ") before t = " << tout;
+  error_ = os.str();
 }
 
 // The size of the state for the choice of rtol or atol (and JZ's scale):
@@ -180,11 +192,7 @@ bool TaylorStepper::NewStep() {
   h = std::min(h, tstop_ - ta_);
   // Underflow: the step no longer moves t (fast fields take tiny steps near
   // t = 0, as CVODE does).
-  if (!(h > 0) || ta_ + h == ta_) {
-    std::ostringstream os;
-    os << "step-size underflow (h = " << h << ")";
-    return Failed(os.str());
-  }
+  if (!(h > 0) || ta_ + h == ta_) return StepUnderflow(h);
   ++orders_.steps;
   orders_.sum += order_;
   orders_.min = std::min(orders_.min, order_);
@@ -241,10 +249,8 @@ StepOutcome TaylorStepper::Advance(double tout, double* t) {
       return StepOutcome::kReached;
     }
     if (taken >= max_steps_) {
-      std::ostringstream os;
-      os << "too many steps (" << max_steps_ << ") before t = " << tout;
       at(tb_, yend_);
-      error_ = os.str();
+      TooManySteps(tout);
       return StepOutcome::kTooMuchWork;
     }
     if (!NewStep()) {

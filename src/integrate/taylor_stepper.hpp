@@ -115,7 +115,10 @@ class TaylorStepper final : public Stepper {
     for (int j = clock_first_; j < clock_last_; ++j)
       y[j] = p_->clock_rate[j - clock_first_] * t + p_->clock_offset[j - clock_first_];
   }
-  bool Failed(const std::string& what);
+  // The failures, out of line and cold (the step's hot code stays dense).
+  [[gnu::cold, gnu::noinline]] bool Failed(const char* what);
+  [[gnu::cold, gnu::noinline]] bool StepUnderflow(double h);
+  [[gnu::cold, gnu::noinline]] void TooManySteps(double tout);
   // Sizes the buffers for n state rows, m_ rows and nf event functions.
   // Out of line: it runs once per shape, not in the segment's hot code.
   [[gnu::noinline]] void Grow(int n, int nf);
