@@ -162,11 +162,11 @@ void Check(const System& s, const FlowPoint& start, const PoincareSection& p,
 // Return k passed max_amplitude in component `big`. The ends of an
 // iteration are out of line and cold: the loop runs every return (the hot
 // code's footprint, docs/benchmarks.md, "Where the fetch cliff is").
-[[gnu::noinline, gnu::cold]] void DivergedIn(const System& s, int big, int k,
-                                             double max_amplitude, SectionRun* run) {
+[[gnu::noinline, gnu::cold]] void DivergedIn(const System& s, int big, int k, double max_amplitude,
+                                             SectionRun* run) {
   run->status = LyapunovStatus::kDiverged;
-  run->message = "|" + s.StateName(big) + "| passed " + Num(max_amplitude) + " in return " +
-                 std::to_string(k);
+  run->message =
+      "|" + s.StateName(big) + "| passed " + Num(max_amplitude) + " in return " + std::to_string(k);
 }
 
 // The end of return k that is not a return: the run's status and message.

@@ -55,7 +55,7 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   r.steps = 0, r.orders = TaylorOrders();
   t_ = start.t;
   std::copy(start.z.data(), start.z.data() + n_, z_.data());  // z_ sized by ReadSystem
-  mode_ = ReleasedAtEdge(*s_, start.mode, start.z);  // an exit at t = 0 is taken now
+  mode_ = ReleasedAtEdge(*s_, start.mode, start.z);           // an exit at t = 0 is taken now
   r.modes.resize(1);  // not assign(1, .): no out-of-line fill per run
   r.modes[0] = mode_;
   M_.setIdentity();  // sized by ReadSystem

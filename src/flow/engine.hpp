@@ -140,7 +140,7 @@ class Engine {
   std::vector<int> roots_;
   std::vector<double> y0_;
   std::unique_ptr<Stepper> plain_, var_, param_;
-  Stepper* solver_ = nullptr;  // the run's (Solver)
+  Stepper* solver_ = nullptr;       // the run's (Solver)
   std::optional<int> param_index_;  // param_'s column
   // Scratch for switches.
   Eigen::VectorXd f_before_, f_after_, grad_, grad2_, jump_;

@@ -187,7 +187,8 @@ ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
     if (!m.sticks(i)) continue;
     const double lambda = s.StickForce(m, i, z), limit = s.StaticLimit(i, z);
     const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
-    if (std::abs(lambda) >= limit - slack) return ReleaseFrom(s, m, z, i);
+    // At the edge (or NaN): judged in full there.
+    if (!(std::abs(lambda) < limit - slack)) return ReleaseFrom(s, m, z, i);
   }
   return m;
 }
