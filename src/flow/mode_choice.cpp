@@ -161,6 +161,14 @@ ModeChoiceResult ModeChoiceOf(const System& s, const Eigen::VectorXd& z) {
 ModeSet ModeOf(const System& s, const Eigen::VectorXd& z) { return ModeChoiceOf(s, z).mode; }
 
 namespace {
+// Whether sticking contact i is not inside its static limit by the start's
+// slack (at the edge, or NaN), with its stick force.
+bool AtEdge(const System& s, const ModeSet& m, int i, ConstState z, double* lambda) {
+  *lambda = s.StickForce(m, i, z);
+  const double limit = s.StaticLimit(i, z);
+  return !(std::abs(*lambda) < limit - Tolerances::StickStart(s.Contact(i).speed, limit));
+}
+
 // ReleasedAtEdge from the first sticking contact at its edge on (out of
 // line: every flow's start runs ReleasedAtEdge, and most start in slip).
 [[gnu::noinline]] ModeSet ReleaseFrom(const System& s, ModeSet m, ConstState z, int first) {
@@ -169,10 +177,8 @@ namespace {
   const ModeSet held = m;  // every contact's edge judged in the start's own field
   s.Field(held, z, f);
   for (int i = first; i < s.contacts(); ++i) {
-    if (!held.sticks(i)) continue;
-    const double lambda = s.StickForce(held, i, z), limit = s.StaticLimit(i, z);
-    const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
-    if (std::abs(lambda) < limit - slack) continue;
+    double lambda;
+    if (!held.sticks(i) || !AtEdge(s, held, i, z, &lambda)) continue;
     s.StickForceGradient(held, i, z, g);
     s.StaticLimitGradient(i, z, gl);
     if ((lambda > 0 ? 1 : -1) * g.dot(f) - gl.dot(f) > 0) m.set(i, Released(lambda));
@@ -183,13 +189,9 @@ namespace {
 
 ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
   if (!m.AnySticks()) return m;
-  for (int i = 0; i < s.contacts(); ++i) {
-    if (!m.sticks(i)) continue;
-    const double lambda = s.StickForce(m, i, z), limit = s.StaticLimit(i, z);
-    const double slack = Tolerances::StickStart(s.Contact(i).speed, limit);
-    // At the edge (or NaN): judged in full there.
-    if (!(std::abs(lambda) < limit - slack)) return ReleaseFrom(s, m, z, i);
-  }
+  double lambda;
+  for (int i = 0; i < s.contacts(); ++i)
+    if (m.sticks(i) && AtEdge(s, m, i, z, &lambda)) return ReleaseFrom(s, m, z, i);
   return m;
 }
 

@@ -71,7 +71,7 @@ void Engine::ReadSystem() {
   const int clocks = n_ - nt_;
   clock_rate_.resize(clocks);
   clock_offset_.resize(clocks);
-  clock_drate_.assign(clocks, 0.0);  // 0 unless a run asks for the column
+  clock_drate_.assign(clocks, 0.0);  // read with a column only, which Start fills first
   switched_at_.resize(k_);
   z_.resize(n_);
   M_.resize(nt_, nt_);
