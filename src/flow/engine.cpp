@@ -17,18 +17,14 @@ namespace stickslip::flow_detail {
 
 Engine::Engine(Flow& flow) : flow_(flow) {}
 
-Stepper& Engine::Solver() {
-  const FlowOptions& o = flow_.options_;
-  if (column_) {
-    if (!param_ || param_index_ != flow_.parameter_) {
-      param_ = MakeStepper(o, *s_, true, flow_.parameter_);
-      param_index_ = flow_.parameter_;
-    }
-    return *param_;
+Stepper& Engine::Solver(EventSet& set) {
+  const int kind = column_ ? 2 : variational_ ? 1 : 0;
+  if (set.stepper_kind != kind || (column_ && set.stepper_param != flow_.parameter_)) {
+    const std::optional<int> param = column_ ? flow_.parameter_ : std::nullopt;
+    set.stepper = MakeStepper(flow_.options_, *s_, variational_, param);
+    set.stepper_kind = kind, set.stepper_param = param;
   }
-  auto& slot = variational_ ? var_ : plain_;
-  if (!slot) slot = MakeStepper(o, *s_, variational_, std::nullopt);
-  return *slot;
+  return *set.stepper;
 }
 
 void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
@@ -50,15 +46,17 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   const int ne = static_cast<int>(rq.extrema.size());
   r.lo.resize(ne), r.hi.resize(ne);
   for (int p = 0; p < ne; ++p) r.lo[p] = r.hi[p] = start.z[rq.extrema[p]];
-  C_.setZero();  // sized by ReadSystem; r.dzdp and has_dzdp are set by Done
   t_start_ = start.t, column_lost_ = false;
   r.steps = 0, r.orders = TaylorOrders();
   t_ = start.t;
   std::copy(start.z.data(), start.z.data() + n_, z_.data());  // z_ sized by ReadSystem
-  mode_ = ReleasedAtEdge(*s_, start.mode, start.z);           // an exit at t = 0 is taken now
+  // An exit at t = 0 is taken now (a slip start has none).
+  mode_ = start.mode.AnySticks() ? ReleasedAtEdge(*s_, start.mode, start.z) : start.mode;
   r.modes.resize(1);  // not assign(1, .): no out-of-line fill per run
   r.modes[0] = mode_;
-  M_.setIdentity();  // sized by ReadSystem
+  // M_ = I, C_ = 0 (r.dzdp and has_dzdp are set by Done): a run without
+  // Phi leaves them so, and the next needs no reset.
+  if (variational_ || !tangent_fresh_) ResetTangent();
   // Clocks as exact functions of t (their rate is their field's entry).
   const int clocks = n_ - nt_;
   if (column_)
@@ -126,6 +124,7 @@ void Engine::UseEvents() {
     set->mode = mode_;
     BuildEvents(*set);
     set->used = true;
+    set->key = ++keys_;
     set->rest_epoch = -1;
   }
   if (set->rest_epoch != system_epoch_) {
@@ -144,6 +143,12 @@ void Engine::UseEvents() {
 }
 
 // The segment problem's parts that hold for the whole run.
+[[gnu::noinline]] void Engine::ResetTangent() {
+  M_.setIdentity();  // sized by ReadSystem
+  C_.setZero();
+  tangent_fresh_ = !variational_;
+}
+
 void Engine::StartProblem() {
   const FlowOptions& o = flow_.options_;
   SegmentProblem& p = problem_;
@@ -159,7 +164,6 @@ void Engine::StartProblem() {
       (!rq_->extrema_in_steps || rq_->step_observer) ? StepHook{&Engine::OnStep, this} : StepHook{};
   p.clock_rate = clock_rate_.data();
   p.clock_offset = clock_offset_.data();
-  solver_ = &Solver();
 }
 
 bool Engine::Segment() {
@@ -168,20 +172,18 @@ bool Engine::Segment() {
   UseEvents();  // and the mode's rest point
   p.has_rest = cur_->has_rest;
   const bool stable = cur_->rest_stable;
-  InitialRows(p.layout);
   SegmentOutput out;
   if (rq_->observer && rq_->output_dt > 0)
     out = SegmentOutput{rq_->output_dt, output_origin_, &next_output_, &Engine::OnOutput, this};
-  Stepper& cv = *solver_;
+  p.setup = cur_->key;
+  Stepper& cv = Solver(*cur_);
   const double t0 = t_;
-  const SegmentEnd e = RunSegment(cv, p, t_, y0_.data(), rq_->t_max, out, &roots_);
+  // Without Phi or the column the rows are the state itself: no copy.
+  const double* y0 = variational_ ? InitialRows(p.layout) : z_.data();
+  const SegmentEnd e = RunSegment(cv, p, t_, y0, rq_->t_max, out, &roots_);
   FlowRun& r = *out_;
-  const long steps = cv.steps();
-  const TaylorOrders orders = cv.orders();
-  r.steps += steps;
-  flow_.total_steps_ += steps;
-  r.orders.Merge(orders);
-  flow_.taylor_orders_.Merge(orders);
+  r.steps += cv.steps();
+  r.orders.Merge(cv.orders());  // the flow's totals take the run's (Flow::Run)
   const double* y = e.y;
   t_ = e.t;
   std::copy(y, y + n_, z_.data());
@@ -217,7 +219,7 @@ bool Engine::Segment() {
 }
 
 // y0: the state, Phi = I, the column (0 but its clocks' (t - t0) d omega / dp).
-void Engine::InitialRows(const TaylorLayout& layout) {
+const double* Engine::InitialRows(const TaylorLayout& layout) {
   const size_t m = layout.aux_first();
   AtLeast(y0_, m);
   std::copy(z_.data(), z_.data() + n_, y0_.begin());
@@ -227,6 +229,7 @@ void Engine::InitialRows(const TaylorLayout& layout) {
   if (column_)
     for (int j = 0; j < n_ - nt_; ++j)
       y0_[layout.param() + nt_ + j] = (t_ - t_start_) * clock_drate_[j];
+  return y0_.data();
 }
 
 std::string Engine::Where(double t, const double* y, const std::string& reason) const {

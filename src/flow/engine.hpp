@@ -44,6 +44,7 @@ class Engine {
   void Reshape(const FlowRequest& rq);  // a request of another shape: events rebuilt
   void ReadClockRates();
   void StartProblem();
+  void ResetTangent();  // M_ = I, C_ = 0
   // One segment in the current mode; false when the run ends.
   bool Segment();
   void BuildEvents(EventSet& set);
@@ -78,8 +79,9 @@ class Engine {
   std::string Where(double t, const double* y, const std::string& reason) const;
   // " at t = ... in <mode> at x = ..., x' = ...".
   std::string Place(double t, const double* y, int digits = 17) const;
-  Stepper& Solver();
-  void InitialRows(const TaylorLayout& layout);
+  // The stepper of set's mode, made for the run's kind (plain, Phi, column).
+  Stepper& Solver(EventSet& set);
+  const double* InitialRows(const TaylorLayout& layout);  // y0_, filled
   // tangent.cpp: M (and C) at a start in stick, across a segment.
   void ProjectStartTangent();
   void AdvanceTangent(const double* y, const TaylorLayout& layout);
@@ -108,6 +110,7 @@ class Engine {
   Eigen::VectorXd z_;
   ModeSet mode_;
   Eigen::MatrixXd M_;                              // d z / d z0 on the tangent block
+  bool tangent_fresh_ = false;                     // M_ = I and C_ = 0 (ResetTangent)
   Eigen::VectorXd C_, ctmp_;                       // d z / dp on the tangent block (column_)
   double t_start_ = 0;                             // the run's start (a clock's column)
   bool column_lost_ = false;                       // settled at rest: no column reported
@@ -132,6 +135,12 @@ class Engine {
     bool has_rest = false, rest_stable = false;  // System::Rest of the mode
     Eigen::VectorXd rest;
     long rest_epoch = -1;  // rest is of the system read at this epoch
+    // Its own stepper, bound to its mode once (SegmentProblem::setup = key):
+    // a segment in a mode met before only restarts it.
+    long key = -1;
+    std::unique_ptr<Stepper> stepper;
+    int stepper_kind = -1;             // 0 plain, 1 Phi, 2 the column
+    std::optional<int> stepper_param;  // the column's parameter
   };
   static constexpr int kEventSets = 4;
   EventSet sets_[kEventSets];
@@ -139,9 +148,7 @@ class Engine {
   EventSet* cur_ = nullptr;
   std::vector<int> roots_;
   std::vector<double> y0_;
-  std::unique_ptr<Stepper> plain_, var_, param_;
-  Stepper* solver_ = nullptr;       // the run's (Solver)
-  std::optional<int> param_index_;  // param_'s column
+  long keys_ = 0;  // the setup keys given out (EventSet::key)
   // Scratch for switches.
   Eigen::VectorXd f_before_, f_after_, grad_, grad2_, jump_;
   Eigen::MatrixXd S_, tmp_;

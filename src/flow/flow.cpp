@@ -118,6 +118,8 @@ void Flow::set_parameter_column(int j) {
 void Flow::Run(const FlowPoint& start, const FlowRequest& request, FlowRun* out) {
   if (!engine_) engine_ = std::make_unique<flow_detail::Engine>(*this);
   engine_->Run(start, request, out);
+  total_steps_ += out->steps;  // once per run, not per segment (same sums)
+  taylor_orders_.Merge(out->orders);
 }
 
 }  // namespace stickslip

@@ -76,6 +76,7 @@ void Engine::ReadSystem() {
   z_.resize(n_);
   M_.resize(nt_, nt_);
   C_.resize(nt_);
+  tangent_fresh_ = false;
   if (same) return;
   ForgetEvents();
   contacts_.resize(k_);

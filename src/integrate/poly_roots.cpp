@@ -47,9 +47,10 @@ class BernsteinTable {
   double ratio_[kSize];
 };
 
-// Out of line: one copy for both hulls (the hot code's footprint,
-// docs/benchmarks.md, "Where the fetch cliff is").
-[[gnu::noinline]] void ToBernstein(const double* c, int n, double* b) {
+// Out of line and not cloned: one copy for both hulls, not a constant-
+// degree clone beside it (the hot code's footprint, docs/benchmarks.md,
+// "Where the fetch cliff is").
+[[gnu::noinline, gnu::noclone]] void ToBernstein(const double* c, int n, double* b) {
   static const BernsteinTable table;
   for (int i = 0; i <= n; ++i) {
     const double* r = table.Row(n, i);

@@ -52,7 +52,8 @@ inline bool QuadraticBoundExcludes(const double* c, int n, int sign, double tail
 // parts (Higham 2002, eq. 5.3, for 1.5 n + 3 operations) with the tail's own:
 // where this excludes, no evaluation of the polynomial changes sign, so the
 // search past it finds no root either.
-inline bool CubicBoundExcludes(const double* c, int n, int sign, double tail4, double scale) {
+[[gnu::noinline]] inline bool CubicBoundExcludes(const double* c, int n, int sign, double tail4,
+                                                 double scale) {
   const double q0 = sign * c[0], q1 = n >= 1 ? sign * c[1] : 0.0, q2 = n >= 2 ? sign * c[2] : 0.0,
                q3 = n >= 3 ? sign * c[3] : 0.0;
   if (!Tolerances::PolyBoundsApply(scale)) return false;  // b^2 - 4 a q1 would not be finite
@@ -80,7 +81,9 @@ inline bool Monotone(const double* c, int n) {
 // The polynomial at u by Horner's rule in u^2 on its even and odd parts: two
 // independent chains of half the length (the latency of one chain bounds
 // plain Horner).
-inline double Horner(const double* c, int n, double u) {
+// Out of line (one copy for every caller: the hot code's footprint,
+// docs/benchmarks.md).
+[[gnu::noinline]] inline double Horner(const double* c, int n, double u) {
   const double u2 = u * u;
   int k = n % 2 == 0 ? n : n - 1;  // highest even index
   double even = c[k], odd = n % 2 == 1 ? c[n] : 0.0;

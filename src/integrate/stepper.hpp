@@ -43,6 +43,10 @@ struct SegmentProblem {
   // again); -1: always bind.
   long system_epoch = -1;
   ModeSet mode;
+  // A key of the mode, its events and the layout: a stepper Reset with the
+  // same key (>= 0) and system epoch as at its last Reset keeps its binding
+  // and sizes, and only restarts (-1: never assume so).
+  long setup = -1;
   int contacts = 1;
   double rtol = 0, atol = 0;
   TaylorLayout layout;                            // state, Phi, column; aux rows are the field's

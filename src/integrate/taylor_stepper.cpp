@@ -12,7 +12,30 @@
 namespace stickslip {
 
 void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double* y0) {
+  // The same mode, events and values as at the last Reset: only a restart.
+  const bool same = problem.setup >= 0 && problem.setup == setup_ && &problem == p_ &&
+                    problem.system == bound_system_ && problem.system_epoch == bound_epoch_ &&
+                    !rows_dirty_;
   p_ = &problem;
+  if (!same) Setup(problem);
+  std::copy(y0, y0 + m_, yend_.begin());
+  std::copy(y0, y0 + m_, y_.begin());
+  // No step yet: the "step" [t0, t0] is the start itself (dense output there).
+  order_ = 0;
+  for (int i = 0; i < m_; ++i) rows_[static_cast<size_t>(i) * kTaylorRowSize] = y0[i];
+  ta_ = tb_ = t_ = t0_ = t0;
+  tstop_ = INFINITY;
+  orders_ = TaylorOrders();
+  orders_.min = kTaylorMaxOrder;
+  pending_ = passed_root_ = false;
+  fresh_segment_ = true;
+  surface_scale_ = 1;
+  for (int i = 0; i < layout_.tangent; ++i) surface_scale_ += std::abs(y0[i]);
+  for (int i = 0; i < nf_; ++i) state_[i] = kFresh, sign_[i] = 1, rf_[i] = 0;
+}
+
+void TaylorStepper::Setup(const SegmentProblem& problem) {
+  setup_ = problem.setup;
   // The system's recurrences for this mode (taylor_field.hpp); Bind refuses
   // a system of another type.
   // The same system and values in another mode: BindMode, if the field can.
@@ -47,20 +70,6 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
   const int nf = nf_ = problem.Events().functions();
   if (n > sized_n_ || m_ > sized_m_ || nf > sized_nf_) Grow(n, nf);
   for (int i = 0; i < n; ++i) center_[i] = field_->ScaleCenter(i);
-  std::copy(y0, y0 + m_, yend_.begin());
-  std::copy(y0, y0 + m_, y_.begin());
-  // No step yet: the "step" [t0, t0] is the start itself (dense output there).
-  order_ = 0;
-  for (int i = 0; i < m_; ++i) rows_[static_cast<size_t>(i) * kTaylorRowSize] = y0[i];
-  ta_ = tb_ = t_ = t0_ = t0;
-  tstop_ = INFINITY;
-  orders_ = TaylorOrders();
-  orders_.min = kTaylorMaxOrder;
-  pending_ = passed_root_ = false;
-  fresh_segment_ = true;
-  surface_scale_ = 1;
-  for (int i = 0; i < layout_.tangent; ++i) surface_scale_ += std::abs(y0[i]);
-  for (int i = 0; i < nf; ++i) state_[i] = kFresh, sign_[i] = 1, rf_[i] = 0;
 }
 
 // Buffers only grow: a mode's segment after another's of fewer rows or
@@ -221,6 +230,14 @@ bool TaylorStepper::NewStep() {
     Evaluate(tb_, yend_.data());
   }
   return true;
+}
+
+void TaylorStepper::Evaluate(double t, double* out, int rows) const {
+  const TaylorRow* r = c();
+  const double tau = t - ta_;
+  const int m = rows < 0 ? m_ : rows;
+  for (int i = 0; i < m; ++i) out[i] = Horner(r[i], order_, tau);
+  Clocks(t, out);
 }
 
 StepOutcome TaylorStepper::Advance(double tout, double* t) {

@@ -102,15 +102,11 @@ class TaylorStepper final : public Stepper {
   void Events(double h);
   // The step polynomial at tau = t - ta (the clocks at t itself).
   // rows: the first rows only (the state's n for an event hook, EventHook).
-  void Evaluate(double t, double* out, int rows = -1) const {
-    const TaylorRow* r = c();
-    const double tau = t - ta_;
-    const int m = rows < 0 ? m_ : rows;
-    for (int i = 0; i < m; ++i) out[i] = Horner(r[i], order_, tau);
-    Clocks(t, out);
-  }
+  // Out of line: one copy for the dense output, a cut step's end and the
+  // hooks (the hot code's footprint, docs/benchmarks.md).
+  [[gnu::noinline]] void Evaluate(double t, double* out, int rows = -1) const;
   // The clock rows at t, from the problem's rates and offsets.
-  void Clocks(double t, double* y) const {
+  [[gnu::noinline]] void Clocks(double t, double* y) const {
     if (!p_->clock_rate) return;  // no anchors: the step polynomial's own
     for (int j = clock_first_; j < clock_last_; ++j)
       y[j] = p_->clock_rate[j - clock_first_] * t + p_->clock_offset[j - clock_first_];
@@ -119,6 +115,8 @@ class TaylorStepper final : public Stepper {
   [[gnu::cold, gnu::noinline]] bool Failed(const char* what);
   [[gnu::cold, gnu::noinline]] bool StepUnderflow(double h);
   [[gnu::cold, gnu::noinline]] void TooManySteps(double tout);
+  // Reset's binding and sizes for a problem of another setup key.
+  [[gnu::noinline]] void Setup(const SegmentProblem& problem);
   // Sizes the buffers for n state rows, m_ rows and nf event functions.
   // Out of line: it runs once per shape, not in the segment's hot code.
   [[gnu::noinline]] void Grow(int n, int nf);
@@ -147,6 +145,7 @@ class TaylorStepper final : public Stepper {
   const System* bound_system_ = nullptr;
   long bound_epoch_ = -1;
   ModeSet bound_mode_;
+  long setup_ = -1;                 // the setup key of the last Setup (SegmentProblem::setup)
   std::vector<double> center_;      // TaylorField::ScaleCenter per state component
   double ta_ = 0, tb_ = 0, t_ = 0;  // step [ta, tb]; t the last time returned
   double t0_ = 0;                   // the last Reset's start

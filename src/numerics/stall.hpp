@@ -32,7 +32,9 @@ struct RootRepeats {
   double t = NAN;  // where the run of repeats began
   int count = 0;
   int limit;
-  bool Stuck(double t_event) {
+  // Out of line: one copy for the segment loop and the run loop, not one
+  // inlined into each (the hot code's footprint, docs/benchmarks.md).
+  [[gnu::noinline]] bool Stuck(double t_event) {
     const bool same = std::abs(t_event - t) <= Tolerances::RootRepeat(t);
     count = same ? count + 1 : 0;
     if (!same) t = t_event;

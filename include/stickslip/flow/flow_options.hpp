@@ -96,7 +96,7 @@ struct TaylorOrders {
   long sum = 0;          // the sum of their orders (mean: sum / steps)
   int min = 0, max = 0;  // over those steps; 0 without steps
   long fallbacks = 0;    // steps recomputed at p: their order p + extra overflowed
-  void Merge(const TaylorOrders& o) {
+  [[gnu::noinline]] void Merge(const TaylorOrders& o) {
     fallbacks += o.fallbacks;
     if (o.steps == 0) return;
     min = steps == 0 ? o.min : std::min(min, o.min);
