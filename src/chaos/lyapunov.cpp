@@ -4,6 +4,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
@@ -282,8 +283,15 @@ SectionRun IterateSection(const System& s, const FlowPoint& start, const Poincar
       break;
     }
     const double dt = r.end.t - z.t;
-    z = r.end;
-    if (timed) z.t = 0, z.z.tail(n - nt) = clocks, OntoStickSurfaces(s, z.mode, z.z);
+    // z = r.end (both of the system's size), clocks back to the start's phase
+    // on a time section: libc's copies, not an inlined vector loop each.
+    z.t = timed ? 0.0 : r.end.t;
+    z.mode = r.end.mode;
+    std::memcpy(z.z.data(), r.end.z.data(), sizeof(double) * (timed ? nt : n));
+    if (timed) {
+      std::memcpy(z.z.data() + nt, clocks.data(), sizeof(double) * (n - nt));
+      OntoStickSurfaces(s, z.mode, z.z);
+    }
     if (rq.variational) {
       ReturnJacobian(s, section, r, f, g, &J);
       if (!tangent.Apply(J, dt, kept)) {
