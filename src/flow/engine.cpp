@@ -19,12 +19,13 @@ Engine::Engine(Flow& flow) : flow_(flow) {}
 
 Stepper& Engine::Solver(EventSet& set) {
   const int kind = column_ ? 2 : variational_ ? 1 : 0;
-  if (set.stepper_kind != kind || (column_ && set.stepper_param != flow_.parameter_)) {
+  std::unique_ptr<Stepper>& slot = set.steppers[kind];
+  if (!slot || (column_ && set.column_param != flow_.parameter_)) {
     const std::optional<int> param = column_ ? flow_.parameter_ : std::nullopt;
-    set.stepper = MakeStepper(flow_.options_, *s_, variational_, param);
-    set.stepper_kind = kind, set.stepper_param = param;
+    slot = MakeStepper(flow_.options_, *s_, variational_, param);
+    if (column_) set.column_param = param;
   }
-  return *set.stepper;
+  return *slot;
 }
 
 void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {

@@ -137,10 +137,11 @@ class Engine {
     long rest_epoch = -1;  // rest is of the system read at this epoch
     // Its own stepper, bound to its mode once (SegmentProblem::setup = key):
     // a segment in a mode met before only restarts it.
+    // One per kind (0 plain, 1 Phi, 2 the column): runs that alternate
+    // kinds (a start in stick or in slip) keep each.
     long key = -1;
-    std::unique_ptr<Stepper> stepper;
-    int stepper_kind = -1;             // 0 plain, 1 Phi, 2 the column
-    std::optional<int> stepper_param;  // the column's parameter
+    std::unique_ptr<Stepper> steppers[3];
+    std::optional<int> column_param;  // steppers[2]'s parameter
   };
   static constexpr int kEventSets = 4;
   EventSet sets_[kEventSets];

@@ -35,7 +35,7 @@ void TaylorStepper::Reset(const SegmentProblem& problem, double t0, const double
 }
 
 void TaylorStepper::Setup(const SegmentProblem& problem) {
-  setup_ = problem.setup;
+  setup_ = -1;  // the key last: a Setup cut short by an exception is not kept
   // The system's recurrences for this mode (taylor_field.hpp); Bind refuses
   // a system of another type.
   // The same system and values in another mode: BindMode, if the field can.
@@ -70,6 +70,7 @@ void TaylorStepper::Setup(const SegmentProblem& problem) {
   const int nf = nf_ = problem.Events().functions();
   if (n > sized_n_ || m_ > sized_m_ || nf > sized_nf_) Grow(n, nf);
   for (int i = 0; i < n; ++i) center_[i] = field_->ScaleCenter(i);
+  setup_ = problem.setup;
 }
 
 // Buffers only grow: a mode's segment after another's of fewer rows or
