@@ -143,13 +143,13 @@ void Engine::UseEvents() {
   }
 }
 
-// The segment problem's parts that hold for the whole run.
 [[gnu::noinline]] void Engine::ResetTangent() {
   M_.setIdentity();  // sized by ReadSystem
   C_.setZero();
   tangent_fresh_ = !variational_;
 }
 
+// The segment problem's parts that hold for the whole run.
 void Engine::StartProblem() {
   const FlowOptions& o = flow_.options_;
   SegmentProblem& p = problem_;
