@@ -135,10 +135,10 @@ class Engine {
     bool has_rest = false, rest_stable = false;  // System::Rest of the mode
     Eigen::VectorXd rest;
     long rest_epoch = -1;  // rest is of the system read at this epoch
-    // Its own stepper, bound to its mode once (SegmentProblem::setup = key):
-    // a segment in a mode met before only restarts it.
-    // One per kind (0 plain, 1 Phi, 2 the column): runs that alternate
-    // kinds (a start in stick or in slip) keep each.
+    // Its own steppers, one per kind (0 plain, 1 Phi, 2 the column), each
+    // bound to the mode once (SegmentProblem::setup = key): a segment in a
+    // mode met before only restarts one, and runs that alternate kinds keep
+    // each.
     long key = -1;
     std::unique_ptr<Stepper> steppers[3];
     std::optional<int> column_param;  // steppers[2]'s parameter

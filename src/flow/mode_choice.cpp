@@ -188,7 +188,6 @@ bool AtEdge(const System& s, const ModeSet& m, int i, ConstState z, double* lamb
 }  // namespace
 
 ModeSet ReleasedAtEdge(const System& s, ModeSet m, ConstState z) {
-  if (!m.AnySticks()) return m;
   double lambda;
   for (int i = 0; i < s.contacts(); ++i)
     if (m.sticks(i) && AtEdge(s, m, i, z, &lambda)) return ReleaseFrom(s, m, z, i);
