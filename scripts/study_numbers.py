@@ -846,10 +846,10 @@ for line, run in ([(l, "chain2_asym") for l in ASYM_HEAD] +
     for k, q in enumerate(re.findall(NUM, line)):
         CHECKS.append((line, q, run, (lambda h, k: lambda r: quoted_line(r, h, k))(line[:12], k)))
 CHECKS += [
-    ("1: period 5.433667724740548, sticks 1, 1 (per contact), |multiplier| 0.24463498200056197",
+    ("1: period 5.433667724740548, sticks 1, 1 (per contact), |multiplier| 0.24463498200056205",
      "5.433667724740548", "chain2_list", lambda r: r.printed(r"1: period ([0-9.]+)")),
-    ("1: period 5.433667724740548, sticks 1, 1 (per contact), |multiplier| 0.24463498200056197",
-     "0.24463498200056197", "chain2_list", lambda r: r.printed(r"1: period .*\|multiplier\| ([0-9.]+)")),
+    ("1: period 5.433667724740548, sticks 1, 1 (per contact), |multiplier| 0.24463498200056205",
+     "0.24463498200056205", "chain2_list", lambda r: r.printed(r"1: period .*\|multiplier\| ([0-9.]+)")),
     ("2: period 6.461249807003621, sticks 1, 1 (per contact), |multiplier| 1.153292062190169",
      "6.461249807003621", "chain2_list", lambda r: r.printed(r"2: period ([0-9.]+)")),
     ("2: period 6.461249807003621, sticks 1, 1 (per contact), |multiplier| 1.153292062190169",

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "numerics/dense_copy.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/stall.hpp"
 #include "stickslip/errors.hpp"
@@ -261,25 +262,15 @@ void Engine::Extend(const double* z) {
   }
 }
 
-namespace {
-// dst = src, sized as src: one small copy out of line for the run's three
-// results (Eigen's inline assignment is a vectorised loop per use).
-template <class M>
-[[gnu::noinline]] void CopyOf(const M& src, M* dst) {
-  if (dst->rows() != src.rows() || dst->cols() != src.cols()) dst->resize(src.rows(), src.cols());
-  std::copy(src.data(), src.data() + src.size(), dst->data());
-}
-}  // namespace
-
 bool Engine::Done(FlowStatus s) {
   FlowRun& r = *out_;
   r.status = s;
   r.end.t = t_;
-  CopyOf(z_, &r.end.z);
+  CopyInto(z_, &r.end.z);
   r.end.mode = mode_;
-  CopyOf(M_, &r.jacobian);
+  CopyInto(M_, &r.jacobian);
   r.has_dzdp = column_ && !column_lost_;
-  CopyOf(C_, &r.dzdp);  // 0 without a column (Start)
+  CopyInto(C_, &r.dzdp);  // 0 without a column (Start)
   Extend(z_.data());
   // The end's sample, unless a switch there just gave it.
   const bool sampled = r.switches > 0 && last_switch_t_ == t_;

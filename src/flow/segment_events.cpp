@@ -51,12 +51,7 @@ void Engine::ReadSystem() {
   k_ = s_->contacts();
   bool same =
       static_cast<int>(contacts_.size()) == k_ && static_cast<int>(derivative_of_.size()) == n_;
-  for (int i = 0; same && i < k_; ++i) {
-    const ContactVelocity c = s_->Contact(i), &o = contacts_[i];
-    same = c.size == o.size && c.speed == o.speed;
-    for (int t = 0; same && t < c.size; ++t)
-      same = c.terms[t].index == o.terms[t].index && c.terms[t].weight == o.terms[t].weight;
-  }
+  for (int i = 0; same && i < k_; ++i) same = SameFunctional(s_->Contact(i), contacts_[i]);
   for (int i = 0; same && i < n_; ++i) same = derivative_of_[i] == s_->DerivativeOf(i);
   same = same && static_cast<int>(normals_.size()) == k_;
   for (int i = 0; same && i < k_; ++i) {

@@ -1,10 +1,11 @@
-// The max-norm of a vector, 0 for an empty one.
+// The max-norm of a vector, 0 for an empty one, nan if it holds a nan; out
+// of line, on a Ref: a head() binds without a temporary on the heap.
 #pragma once
 
 #include <Eigen/Core>
 
 namespace stickslip {
 
-inline double MaxAbs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+double MaxAbs(Eigen::Ref<const Eigen::VectorXd> v);
 
 }  // namespace stickslip

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "numerics/dense_copy.hpp"
+#include "numerics/max_abs.hpp"
 #include "numerics/numbers.hpp"
 #include "numerics/tolerances.hpp"
 #include "stickslip/errors.hpp"
@@ -15,26 +17,76 @@ namespace stickslip {
 namespace {
 // The eigenvalues of M by modulus, the largest first (2 x 2 in closed form:
 // lambda^2 - tr lambda + det = 0).
-std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& M) {
+std::vector<std::complex<double>> Eigenvalues(Eigen::Ref<const Eigen::MatrixXd> M) {
   std::vector<std::complex<double>> e;
   if (M.rows() == 2) {
-    const double tr = M.trace(), det = M.determinant();
+    // det as Eigen's partial-pivoting LU gives it, to the bit, without its
+    // dynamic-size code: rows swapped when |m10| > |m00|, then -+ u00 u11
+    // (no division where u00 = 0, as the LU's).
+    const bool swap = std::abs(M(1, 0)) > std::abs(M(0, 0));
+    const double u00 = swap ? M(1, 0) : M(0, 0);
+    const double u11 =
+        (swap ? M(0, 1) : M(1, 1)) - (swap ? M(0, 0) : M(1, 0)) / u00 * (swap ? M(1, 1) : M(0, 1));
+    const double tr = M(0, 0) + M(1, 1);
+    const double det =
+        u00 == 0 ? u00 * (M(1, 1) - M(1, 0) * M(0, 1)) : (swap ? -(u00 * u11) : u00 * u11);
     const std::complex<double> disc = std::sqrt(std::complex<double>(tr * tr / 4 - det));
     e = {tr / 2 + disc, tr / 2 - disc};
   } else if (M.rows() == 1) {
     e = {M(0, 0)};
-  } else if (M.rows() == 3) {  // a forced orbit's exit section: fixed size, no allocation
-    const Eigen::EigenSolver<Eigen::Matrix3d> es(Eigen::Matrix3d(M), false);
-    e.assign(es.eigenvalues().data(), es.eigenvalues().data() + 3);
-  } else if (M.rows() > 3) {
+  } else if (M.rows() > 2) {
     const Eigen::EigenSolver<Eigen::MatrixXd> es(M, false);
     e.assign(es.eigenvalues().data(), es.eigenvalues().data() + M.rows());
   }
-  std::stable_sort(e.begin(), e.end(),
-                   [](const std::complex<double>& a, const std::complex<double>& b) {
-                     return std::abs(a) > std::abs(b);
-                   });
+  auto larger = [](const std::complex<double>& a, const std::complex<double>& b) {
+    return std::abs(a) > std::abs(b);
+  };
+  if (e.size() == 2) {  // stable_sort's buffer comes from the heap
+    if (larger(e[1], e[0])) std::swap(e[0], e[1]);
+  } else if (e.size() > 2) {
+    std::stable_sort(e.begin(), e.end(), larger);
+  }
   return e;
+}
+
+// An event section's DP = (I - f g^T / (g . f)) Phi has g^T DP = 0: its
+// multiplier 0 is the flow's direction, not the orbit's. With the
+// reflection H = I - c v v^T taking g to a multiple of e_1, B = H DP H has
+// a first row of 0, and the rest of the spectrum is its trailing block's
+// (deflation by a Householder reflection; Golub & Van Loan 2013, ch. 7).
+// g is scaled by its largest entry first (as LAPACK's dlarfg), so that its
+// squares neither under- nor overflow. By loops into kept buffers (v, w: n
+// each): no temporaries on the heap.
+[[gnu::noinline]] void Deflate(const Eigen::MatrixXd& DP, const Eigen::VectorXd& g,
+                               Eigen::MatrixXd* B, Eigen::VectorXd* v, Eigen::VectorXd* w) {
+  const int n = static_cast<int>(DP.rows());
+  B->resize(n, n);
+  v->resize(n);
+  w->resize(n);
+  const double* m = DP.data();
+  double *b = B->data(), *vd = v->data(), *wd = w->data();
+  const double scale = MaxAbs(g);
+  double gg = 0;
+  for (int k = 0; k < n; ++k) {
+    vd[k] = g[k] / scale;
+    gg += vd[k] * vd[k];
+  }
+  vd[0] += std::copysign(std::sqrt(gg), vd[0]);
+  double vv = 0;
+  for (int k = 0; k < n; ++k) vv += vd[k] * vd[k];
+  const double c = 2 / vv;
+  for (int i = 0; i < n; ++i) {  // w = c DP v
+    double sum = 0;
+    for (int k = 0; k < n; ++k) sum += m[i + k * n] * vd[k];
+    wd[i] = c * sum;
+  }
+  for (int j = 0; j < n; ++j)  // B = DP H
+    for (int i = 0; i < n; ++i) b[i + j * n] = m[i + j * n] - wd[i] * vd[j];
+  for (int j = 0; j < n; ++j) {  // B = H B
+    double sum = 0;
+    for (int k = 0; k < n; ++k) sum += vd[k] * b[k + j * n];
+    for (int i = 0; i < n; ++i) b[i + j * n] -= c * sum * vd[i];
+  }
 }
 }  // namespace
 
@@ -89,12 +141,10 @@ bool Shooting::Evaluate(const FlowPoint& z, const PoincareSection& p, PeriodicOr
 void Shooting::Residual(const FlowPoint& z, const PoincareSection& p) {
   const System& s = system();
   const int n = s.dimension(), nt = s.tangent_dimension();
-  if (p.kind == SectionKind::kTime) {
-    r_ = run_.end.z.head(nt) - z.z.head(nt);
-    return;
-  }
-  r_ = run_.end.z - z.z;
-  if (n > nt) r_[nt] -= 2 * M_PI * p.turns;
+  const int nu = p.kind == SectionKind::kTime ? nt : n;  // the unknowns
+  r_.resize(nu);
+  for (int i = 0; i < nu; ++i) r_[i] = run_.end.z[i] - z.z[i];
+  if (nu > nt) r_[nt] -= 2 * M_PI * p.turns;
 }
 
 namespace {
@@ -172,14 +222,14 @@ void Shooting::EventGradient(const PoincareSection& p) {
   grad2_.resize(n);
   s.StickForceGradient(stick, c, run_.end.z, grad_);
   s.StaticLimitGradient(c, run_.end.z, grad2_);
-  grad_ -= sign * grad2_;
+  for (int i = 0; i < n; ++i) grad_[i] -= sign * grad2_[i];
 }
 
 void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   const System& s = system();
   const int n = s.dimension(), nt = s.tangent_dimension();
   if (p.kind == SectionKind::kTime) {
-    dp_ = run_.jacobian;
+    CopyInto(run_.jacobian, &dp_);
     Residual(z, p);
     MapParameterDerivative(z, p);
     return;
@@ -189,8 +239,9 @@ void Shooting::MapJacobian(const FlowPoint& z, const PoincareSection& p) {
   s.Field(z.mode, z.z, f0_);
   s.Field(run_.end.mode, run_.end.z, f1_);
   const Eigen::MatrixXd& J = run_.jacobian;
-  full_.setIdentity(n, n);
-  full_.topLeftCorner(nt, nt) = J;
+  full_.resize(n, n);  // [J 0; 0 I], by a loop: one small copy, not Eigen's two
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) full_(i, j) = i < nt && j < nt ? J(i, j) : (i == j ? 1.0 : 0.0);
   if (n > nt)  // the clock's column: Phi f(z0) = f(z(T)), theta' = omega
     for (int i = 0; i < nt; ++i) {
       double Jf0 = 0;
@@ -265,21 +316,27 @@ void Shooting::OntoSection(const PoincareSection& p, FlowPoint* z) const {
   s.ProjectOnExit(stick, c, sign * s.StaticLimit(c, z->z), z->z);
 }
 
-void Shooting::Describe(const FlowPoint& z, const PoincareSection& p, PeriodicOrbit* o) const {
-  o->start = z;
+void Shooting::Describe(const FlowPoint& z, const PoincareSection& p, PeriodicOrbit* o) {
+  o->start.t = z.t;  // one out-of-line copy per vector (dense_copy.hpp)
+  CopyInto(z.z, &o->start.z);
+  o->start.mode = z.mode;
   o->period = run_.end.t - z.t;
-  o->monodromy = dp_;
-  o->multipliers = Eigenvalues(dp_);
-  // An event section's DP maps the flow direction to 0: not a multiplier.
-  if (p.kind != SectionKind::kTime && !o->multipliers.empty()) o->multipliers.pop_back();
+  CopyInto(dp_, &o->monodromy);
+  if (p.kind == SectionKind::kTime) {
+    o->multipliers = Eigenvalues(dp_);
+  } else {
+    const int n = static_cast<int>(dp_.rows());
+    Deflate(dp_, grad_, &full_, &f0_, &col_);  // MapJacobian's scratch, done with
+    o->multipliers = Eigenvalues(full_.bottomRightCorner(n - 1, n - 1));
+  }
   o->stable = true;
   for (const auto& mu : o->multipliers) o->stable = o->stable && std::abs(mu) < 1;
   o->sticks = run_.sticks;
   o->exits = run_.exits;
   o->crossings = run_.crossings;
   o->modes = run_.modes;
-  o->lo = run_.lo;
-  o->hi = run_.hi;
+  CopyInto(run_.lo, &o->lo);
+  CopyInto(run_.hi, &o->hi);
   o->steps = run_.steps;
 }
 

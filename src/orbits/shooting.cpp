@@ -169,7 +169,7 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
       o.status = OrbitStatus::kOk;
       return o;
     }
-    z.z.head(nu) += dz;
+    for (int i = 0; i < nu; ++i) z.z[i] += dz[i];
     OntoSection(section, &z);
   }
   o.status = OrbitStatus::kNotConverged;

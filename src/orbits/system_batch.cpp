@@ -57,7 +57,8 @@ struct Worker {
       if (*m % d != 0) continue;
       request.t_max = z.t + d * T;
       shooting->flow().Run(z, request, &run);
-      if (run.status != FlowStatus::kTimeLimit || MaxAbs(run.end.z.head(nt) - z.z.head(nt)) > tol)
+      if (run.status != FlowStatus::kTimeLimit ||
+          !(MaxAbs(run.end.z.head(nt) - z.z.head(nt)) <= tol))
         continue;
       section->time = d * T;
       section->turns = d;

@@ -30,14 +30,15 @@ std::string ContactVelocityError(const System& s) {
   const int tangent = s.dimension() - s.clocks();
   for (int c = 0; c < s.contacts(); ++c) {
     const ContactVelocity h = s.Contact(c);
-    const std::string name = "contact " + std::to_string(c) + "'s velocity";
+    // The name only on failure: this runs for each system a flow is given.
+    auto name = [c] { return "contact " + std::to_string(c) + "'s velocity"; };
     if (h.size < 1 || h.size > ContactVelocity::kMaxTerms)
-      return name + " has " + std::to_string(h.size) + " terms, not 1 to " +
+      return name() + " has " + std::to_string(h.size) + " terms, not 1 to " +
              std::to_string(ContactVelocity::kMaxTerms);
     for (int t = 0; t < h.size; ++t)
       if (h.terms[t].index < 0 || h.terms[t].index >= tangent ||
           !(std::isfinite(h.terms[t].weight) && h.terms[t].weight != 0))
-        return name + "'s term " + std::to_string(t) + " (component " +
+        return name() + "'s term " + std::to_string(t) + " (component " +
                std::to_string(h.terms[t].index) + ", weight " + Num(h.terms[t].weight) +
                ") must be a state component with a finite nonzero weight";
   }

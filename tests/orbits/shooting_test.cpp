@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -169,6 +171,15 @@ TEST(Shooting, ForcedOrbitThroughTwoSectionsHasOneSetOfMultipliers) {
     EXPECT_LT(std::abs(o.multipliers[i] - strobe.multipliers[i]), 1e-9)
         << i << ": " << o.multipliers[i] << " vs " << strobe.multipliers[i];
   EXPECT_EQ(o.stable, strobe.stable);
+  // The exit section's multipliers by deflation are the monodromy's whole
+  // spectrum by Eigen's QR algorithm, less the flow direction's 0.
+  const Eigen::VectorXcd all = Eigen::EigenSolver<Eigen::MatrixXd>(o.monodromy).eigenvalues();
+  std::vector<std::complex<double>> qr(all.data(), all.data() + all.size());
+  std::sort(qr.begin(), qr.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+  for (int i = 0; i < 2; ++i)
+    EXPECT_LT(std::abs(o.multipliers[i] - qr[i]), 1e-13 * (1 + std::abs(qr[i])))
+        << i << ": " << o.multipliers[i] << " vs " << qr[i];
+  EXPECT_LT(std::abs(qr[2]), 1e-13);
   std::printf("[ measured ] multipliers: stroboscopic %.12g, %.3g; stick exit %.12g, %.3g\n",
               std::abs(strobe.multipliers[0]), std::abs(strobe.multipliers[1]),
               std::abs(o.multipliers[0]), std::abs(o.multipliers[1]));

@@ -10,7 +10,8 @@
 // Poincare map's Jacobian; Leine & Nijmeijer 2004, ch. 7), where g is the
 // event's gradient; a clock's column of Phi follows from the flow identity
 // Phi f(z0) = f(z(T)). The Floquet multipliers are DP's eigenvalues, less
-// the 0 of the flow direction on an event section.
+// the 0 of the flow direction on an event section (deflated exactly: g^T DP
+// = 0; docs/theory.md, "One shooting").
 #pragma once
 
 #include <complex>
@@ -159,19 +160,19 @@ class Shooting {
   void EventGradient(const PoincareSection& s);
   void OntoSection(const PoincareSection& s, FlowPoint* z) const;
   bool NewtonStep();  // dz_ from dp_ (DP - I) and r_; false where singular
-  void Describe(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o) const;
+  void Describe(const FlowPoint& z, const PoincareSection& s, PeriodicOrbit* o);
 
   ShootingOptions options_;
   Flow flow_;
   FlowRequest request_;
   FlowRun run_;
-  Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column
+  Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column (then Describe's scratch)
   Eigen::VectorXd r_;           // P(z) - z on the unknowns
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // DP - I, kept: no allocation per step
   Eigen::VectorXd dz_;
-  Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry
+  Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry (and scratch)
   bool has_dpdp_ = false;
-  Eigen::VectorXd f0_, f1_, grad_, grad2_;
+  Eigen::VectorXd f0_, f1_, grad_, grad2_;  // f0_: then Describe's scratch
 };
 
 }  // namespace stickslip
