@@ -326,8 +326,8 @@ void Shooting::Describe(const FlowPoint& z, const PoincareSection& p, PeriodicOr
     o->multipliers = Eigenvalues(dp_);
   } else {
     const int n = static_cast<int>(dp_.rows());
-    Deflate(dp_, grad_, &full_, &f0_, &col_);  // MapJacobian's scratch, done with
-    o->multipliers = Eigenvalues(full_.bottomRightCorner(n - 1, n - 1));
+    Deflate(dp_, grad_, &hdph_, &house_, &hw_);
+    o->multipliers = Eigenvalues(hdph_.bottomRightCorner(n - 1, n - 1));
   }
   o->stable = true;
   for (const auto& mu : o->multipliers) o->stable = o->stable && std::abs(mu) < 1;

@@ -166,13 +166,15 @@ class Shooting {
   Flow flow_;
   FlowRequest request_;
   FlowRun run_;
-  Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column (then Describe's scratch)
+  Eigen::MatrixXd dp_, full_;   // DP; Phi with the clock's column
   Eigen::VectorXd r_;           // P(z) - z on the unknowns
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // DP - I, kept: no allocation per step
   Eigen::VectorXd dz_;
-  Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry (and scratch)
+  Eigen::VectorXd dpdp_, col_;  // dP/dp; the column with the clock's entry
   bool has_dpdp_ = false;
-  Eigen::VectorXd f0_, f1_, grad_, grad2_;  // f0_: then Describe's scratch
+  Eigen::VectorXd f0_, f1_, grad_, grad2_;
+  Eigen::MatrixXd hdph_;        // Describe's deflation: H DP H,
+  Eigen::VectorXd house_, hw_;  // its reflection's v and c DP v
 };
 
 }  // namespace stickslip
