@@ -15,6 +15,7 @@
 #include "forced_reference.hpp"
 #include "reference/reference_orbit.hpp"
 #include "stickslip/errors.hpp"
+#include "stickslip/flow/switching.hpp"
 #include "stickslip/orbits/settle.hpp"
 #include "stickslip/systems/belt/model.hpp"
 #include "stickslip/systems/forced/forced.hpp"
@@ -226,6 +227,35 @@ TEST(Shooting, MisuseThrowsAndAMissingReturnIsAStatus) {
   ShootingOptions bad;
   bad.tol = 0;
   EXPECT_THROW(Shooting(m, bad), InvalidArgument);
+}
+
+// A map without switching (a grazing curve's gap margin) from a state that
+// sticks: Den Hartog's block at rest on the floor (x' = v = 0) with the
+// spring balancing the force at theta = 0 (x = A), where Filippov's rule
+// sticks. It has no slip field to follow: a status, not an exception (it
+// escaped ss_chart once, from a Newton iterate on the surface). With
+// switching the same start is an ordinary one.
+TEST(Shooting, AStickingStartWithoutSwitchingIsAStatus) {
+  const ForcedBelt m(Floor(1.75));
+  const Eigen::Vector3d z(1.0, 0.0, 0.0);
+  ASSERT_TRUE(ModeOf(m, z).sticks(0));
+  const PoincareSection strobe = PoincareSection::Stroboscopic(m, z, 1);
+  ShootingOptions opt = TightShooting();
+  opt.switching = false;
+  Shooting gap(m, opt);
+  const PeriodicOrbit o = gap.Find(At(z, Mode::kSlipBelow), strobe);
+  EXPECT_EQ(o.status, OrbitStatus::kSticks);
+  EXPECT_NE(o.message.find("without switching"), std::string::npos) << o.message;
+  Eigen::VectorXd r;
+  PeriodicOrbit mapped;
+  EXPECT_FALSE(gap.Map(At(z, Mode::kSlipBelow), strobe, true, &r, &mapped));
+  EXPECT_EQ(mapped.status, OrbitStatus::kSticks);
+  opt.switching = true;
+  Shooting switching(m, opt);
+  EXPECT_TRUE(switching.Map(At(z, Mode::kSlipBelow), strobe, true, &r, &mapped)) << mapped.message;
+  ASSERT_FALSE(mapped.modes.empty());
+  EXPECT_TRUE(mapped.modes[0].sticks(0));  // the run starts in stick and leaves it
+  EXPECT_GT(mapped.exits, 0);
 }
 
 }  // namespace

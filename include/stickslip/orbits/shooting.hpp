@@ -77,7 +77,8 @@ struct ShootingOptions {
   bool extrema = true;  ///< PeriodicOrbit::lo, hi
   /// false: every run stays on its start mode's smooth field, continued
   /// across the contacts' surfaces (a grazing curve's orbits: the gap to a
-  /// surface is smooth through 0 there).
+  /// surface is smooth through 0 there). A start that sticks then has no
+  /// such field: the map ends there with OrbitStatus::kSticks.
   bool switching = true;
   long max_steps = 1000000;  ///< flow steps per evaluation of the map
   std::string ValidationError() const;
