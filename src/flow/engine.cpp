@@ -37,7 +37,7 @@ void Engine::Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) 
   CheckRun(start, rq);
   variational_ = rq.variational || rq.parameter_column;
   column_ = rq.parameter_column;
-  if (!SameShape(rq)) Reshape(rq);
+  UseShape(rq);
   FlowRun& r = *out;
   r.status = FlowStatus::kTimeLimit;
   r.message.clear();
@@ -120,11 +120,12 @@ void Engine::Run(const FlowPoint& start, const FlowRequest& rq, FlowRun* out) {
 void Engine::UseEvents() {
   EventSet* set = nullptr;
   for (EventSet& e : sets_)
-    if (e.used && e.mode == mode_) set = &e;
+    if (e.used && e.mode == mode_ && e.shape == shape_) set = &e;
   if (!set) {
     set = &sets_[next_set_];
     next_set_ = (next_set_ + 1) % kEventSets;
     set->mode = mode_;
+    set->shape = shape_;
     BuildEvents(*set);
     set->used = true;
     set->key = ++keys_;

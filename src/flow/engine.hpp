@@ -41,13 +41,15 @@ class Engine {
   // Checks the start (InvalidArgument) and sets the run's state and result.
   void Start(const FlowPoint& start, const FlowRequest& rq, FlowRun* out);
   void CheckRun(const FlowPoint& start, const FlowRequest& rq) const;  // InvalidArgument
-  void Reshape(const FlowRequest& rq);  // a request of another shape: events rebuilt
+  void Reshape(const FlowRequest& rq);  // a new shape: its slot's event sets rebuilt
   void ReadClockRates();
   void StartProblem();
   void ResetTangent();  // M_ = I, C_ = 0
   // One segment in the current mode; false when the run ends.
   bool Segment();
   void BuildEvents(EventSet& set);
+  int AddFunction(EventSet& set, const EventFunction& f);  // its index; roles grown
+  void AddExtremumEvents(EventSet& set);  // rq_'s extrema (held back: none, the steps kept)
   void AddOpenEvents(EventSet& set);
   // The events of the current mode (built or reused), shared with problem_.
   void UseEvents();
@@ -100,11 +102,19 @@ class Engine {
   std::vector<int> derivative_of_;
   bool system_read_ = false;  // contacts_, derivative_of_ are the system's
   long system_epoch_ = 0;     // counts the systems read (rest points, Taylor binds)
-  // The request's shape the event sets were built for (SameShape).
-  bool shape_switching_ = true, shape_in_steps_ = true, shape_var_ = false, shape_col_ = false;
-  std::vector<int> shape_extrema_;
-  std::vector<Section> shape_sections_;
-  bool SameShape(const FlowRequest& rq) const;
+  // The request shapes the event sets were built for, the last two (a
+  // Newton solve's runs hold their extrema back, then seek them: Find).
+  struct Shape {
+    bool used = false;
+    bool switching = true, in_steps = true, hold = false, var = false, col = false;
+    std::vector<int> extrema;
+    std::vector<Section> sections;
+  };
+  static constexpr int kShapes = 2;
+  Shape shapes_[kShapes];
+  int shape_ = 0, next_shape_ = 0;  // the run's shape; the one a new shape replaces
+  bool SameShape(const Shape& s, const FlowRequest& rq) const;
+  void UseShape(const FlowRequest& rq);  // shape_: rq's, kept or new
   // The run's state between segments.
   double t_ = 0;
   Eigen::VectorXd z_;
@@ -128,6 +138,7 @@ class Engine {
   struct EventSet {
     bool used = false;
     ModeSet mode;
+    int shape = 0;  // the slot of shapes_ it was built for
     EventList events;
     std::vector<FunctionRole> roles;
     std::vector<std::vector<int>> extremum_of;
@@ -143,7 +154,7 @@ class Engine {
     std::unique_ptr<Stepper> steppers[3];
     std::optional<int> column_param;  // steppers[2]'s parameter
   };
-  static constexpr int kEventSets = 4;
+  static constexpr int kEventSets = 4 * kShapes;
   EventSet sets_[kEventSets];
   int next_set_ = 0;
   EventSet* cur_ = nullptr;

@@ -31,15 +31,25 @@ bool SameFunctional(const ContactVelocity& a, const ContactVelocity& b) {
 }
 }  // namespace
 
-// Whether rq asks for the events built last (extrema, sections, switching).
-bool Engine::SameShape(const FlowRequest& rq) const {
-  if (rq.switching != shape_switching_ || rq.extrema_in_steps != shape_in_steps_ ||
-      variational_ != shape_var_ || column_ != shape_col_ || rq.extrema != shape_extrema_ ||
-      rq.sections.size() != shape_sections_.size())
+// Whether rq asks for the events of shape s (extrema, sections, switching).
+bool Engine::SameShape(const Shape& s, const FlowRequest& rq) const {
+  if (!s.used || rq.switching != s.switching || rq.extrema_in_steps != s.in_steps ||
+      rq.hold_extrema != s.hold || variational_ != s.var || column_ != s.col ||
+      rq.extrema != s.extrema || rq.sections.size() != s.sections.size())
     return false;
   for (size_t i = 0; i < rq.sections.size(); ++i)
-    if (!SameSection(rq.sections[i], shape_sections_[i])) return false;
+    if (!SameSection(rq.sections[i], s.sections[i])) return false;
   return true;
+}
+
+void Engine::UseShape(const FlowRequest& rq) {
+  if (SameShape(shapes_[shape_], rq)) return;
+  for (int i = 0; i < kShapes; ++i)
+    if (SameShape(shapes_[i], rq)) {
+      shape_ = i;
+      return;
+    }
+  Reshape(rq);
 }
 
 // The system's dimensions, contacts and derivatives (read once per system,
@@ -92,14 +102,7 @@ void Engine::BuildEvents(EventSet& set) {
   set.roles.clear();
   set.extremum_of.clear();
   set.arrival_events.clear();
-  auto add = [&](const EventFunction& f) {
-    const int i = ev.Add(f);
-    if (i == static_cast<int>(set.roles.size())) {
-      set.roles.emplace_back();
-      set.extremum_of.emplace_back();
-    }
-    return i;
-  };
+  auto add = [&](const EventFunction& f) { return AddFunction(set, f); };
   const FlowRequest& rq = *rq_;
   const int aux = problem_.layout.aux_first();
   int rank = 0;  // among the sticking contacts: their aux rows
@@ -134,23 +137,7 @@ void Engine::BuildEvents(EventSet& set) {
     set.arrival_events.push_back(ev.events());
     ev.Add(Event{g, kAnyRoot, true, false});
   }
-  for (int p = 0; rq.extrema_in_steps && p < static_cast<int>(rq.extrema.size()); ++p) {
-    const int j = rq.extrema[p];
-    EventFunction f;
-    f.size = 1;
-    f.terms[0] = {derivative_of_[j] >= 0 ? derivative_of_[j] : j, 1.0};
-    f.derivative = derivative_of_[j] < 0;
-    // The extremum of x where x' = v is an arrival (v = 0: a floor): the
-    // switch there records it (Extend), and its roots are not sought twice.
-    bool arrival = false;
-    for (int i = 0; i < ev.functions(); ++i)
-      arrival = arrival || (set.roles[i].kind == FunctionRole::kArrival &&
-                            ev.function(i).SameShape(f) && ev.function(i).offset == f.offset);
-    if (arrival) continue;
-    const int g = add(f);
-    set.extremum_of[g].push_back(p);
-    ev.Add(Event{g, kAnyRoot, false});
-  }
+  AddExtremumEvents(set);
   AddOpenEvents(set);
   for (int sx = 0; sx < static_cast<int>(rq.sections.size()); ++sx) {
     const Section& sec = rq.sections[sx];
@@ -171,6 +158,41 @@ void Engine::BuildEvents(EventSet& set) {
 namespace stickslip::flow_detail {
 
 // A normal force falling to 0 ends the run (kContactOpen), in every mode.
+int Engine::AddFunction(EventSet& set, const EventFunction& f) {
+  const int i = set.events.Add(f);
+  if (i == static_cast<int>(set.roles.size())) {
+    set.roles.emplace_back();
+    set.extremum_of.emplace_back();
+  }
+  return i;
+}
+
+void Engine::AddExtremumEvents(EventSet& set) {
+  const FlowRequest& rq = *rq_;
+  EventList& ev = set.events;
+  for (int p = 0; rq.extrema_in_steps && p < static_cast<int>(rq.extrema.size()); ++p) {
+    const int j = rq.extrema[p];
+    EventFunction f;
+    f.size = 1;
+    f.terms[0] = {derivative_of_[j] >= 0 ? derivative_of_[j] : j, 1.0};
+    f.derivative = derivative_of_[j] < 0;
+    // The extremum of x where x' = v is an arrival (v = 0: a floor): the
+    // switch there records it (Extend), and its roots are not sought twice.
+    bool arrival = false;
+    for (int i = 0; i < ev.functions(); ++i)
+      arrival = arrival || (set.roles[i].kind == FunctionRole::kArrival &&
+                            ev.function(i).SameShape(f) && ev.function(i).offset == f.offset);
+    if (arrival) continue;
+    if (rq.hold_extrema) {  // left out; the steps as with them
+      ev.HoldPassing();
+      continue;
+    }
+    const int g = AddFunction(set, f);
+    set.extremum_of[g].push_back(p);
+    ev.Add(Event{g, kAnyRoot, false});
+  }
+}
+
 void Engine::AddOpenEvents(EventSet& set) {
   EventList& ev = set.events;
   for (int i = 0; i < k_; ++i) {
@@ -180,11 +202,7 @@ void Engine::AddOpenEvents(EventSet& set) {
     f.size = c.size;
     for (int t = 0; t < c.size; ++t) f.terms[t] = {c.terms[t].index, c.terms[t].weight};
     f.offset = c.speed;
-    const int g = ev.Add(f);
-    if (g == static_cast<int>(set.roles.size())) {
-      set.roles.emplace_back();
-      set.extremum_of.emplace_back();
-    }
+    const int g = AddFunction(set, f);
     set.roles[g] = {FunctionRole::kOpen, i, 0};
     ev.Add(Event{g, -1, true});
   }
@@ -213,11 +231,16 @@ void Engine::AddOpenEvents(EventSet& set) {
 }
 
 [[gnu::noinline]] void Engine::Reshape(const FlowRequest& rq) {
-  ForgetEvents();
-  shape_switching_ = rq.switching, shape_in_steps_ = rq.extrema_in_steps;
-  shape_var_ = variational_, shape_col_ = column_;
-  shape_extrema_ = rq.extrema;
-  shape_sections_ = rq.sections;
+  shape_ = next_shape_;
+  next_shape_ = (next_shape_ + 1) % kShapes;
+  for (EventSet& e : sets_)
+    if (e.shape == shape_) e.used = false;
+  Shape& s = shapes_[shape_];
+  s.used = true;
+  s.switching = rq.switching, s.in_steps = rq.extrema_in_steps, s.hold = rq.hold_extrema;
+  s.var = variational_, s.col = column_;
+  s.extrema = rq.extrema;
+  s.sections = rq.sections;
 }
 
 // A clock's rate is its field's entry, the same in every mode.

@@ -121,6 +121,8 @@ class EventList {
   int events() const { return static_cast<int>(events_.size()); }
   // Whether some event is not terminal (a stepper finds roots inside its steps).
   bool AnyPassing() const { return passing_; }
+  // Steps as AnyPassing's, for non-terminal events held back (left out).
+  void HoldPassing() { passing_ = true; }
   void SetAtStart(int k, bool at_start) { events_[k].at_start = at_start; }
   const Event& event(int k) const { return events_[k]; }
   bool Stops(int i, int direction) const { return Has(stop_[i], direction); }

@@ -324,6 +324,9 @@ struct Tolerances : FixedTolerances {
   static constexpr double kClosedCurveGap = 0.1;
   // Shooting: a Newton step over kNewtonCap (1 + |z|) is cut to it (damped Newton).
   static constexpr double kNewtonCap = 0.5;
+  // Shooting: Newton's evaluations seek the orbit's extremes once an update is below
+  // kSeekExtrema sqrt(tol) (1 + |z|): the next one, about its square, then likely converges.
+  static constexpr double kSeekExtrema = 100;
   // Batched stroboscopic orbits: a fixed point of P^m is one of P^d if P^d moves it by at most
   // kLeastPeriod (1 + |z|) (the Newton tolerance's 1e-12 times the map's error growth).
   static constexpr double kLeastPeriod = 1e-8;

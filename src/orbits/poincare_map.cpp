@@ -29,6 +29,7 @@ void Shooting::Prepare(const FlowPoint& z, const PoincareSection& p, bool variat
   if (options_.extrema && variational)
     for (int i = 0; i < s.tangent_dimension(); ++i) rq.extrema.push_back(i);
   rq.extrema_in_steps = options_.flow.integrator == Integrator::kTaylor;
+  rq.hold_extrema = false;
   rq.max_steps = options_.max_steps;
 }
 

@@ -141,6 +141,12 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
   FlowPoint z = guess;
   if (timed) z.mode = ModeOf(s, z.z);
   Prepare(z, section);  // Newton in z only: no parameter column
+  // The extremes are the converged evaluation's alone: Newton's iterates
+  // hold them back (the same steps, to the bit, without their roots) until
+  // an update foretells convergence, and a converged evaluation that held
+  // them back is run again for them. (CVODE's are its step ends.)
+  bool seeking = request_.extrema.empty() || !request_.extrema_in_steps;
+  request_.hold_extrema = !seeking;
   for (o.iterations = 1; o.iterations <= options_.max_newton; ++o.iterations) {
     if (!Evaluate(z, section, &o)) return o;
     if (!dp_.allFinite() || !r_.allFinite()) {  // g . f = 0: a tangential arrival
@@ -165,9 +171,22 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
     o.update = MaxAbs(dz);
     dp_.diagonal().array() += 1.0;
     if (o.update <= options_.tol * size) {
+      if (!seeking) {  // once more, for the extremes
+        request_.hold_extrema = false;
+        if (!Evaluate(z, section, &o)) return o;
+        // DP as the Newton step leaves it, (DP - I) + I: the bits of an
+        // evaluation that sought them.
+        dp_.diagonal().array() -= 1.0;
+        dp_.diagonal().array() += 1.0;
+      }
       Describe(z, section, &o);
       o.status = OrbitStatus::kOk;
       return o;
+    }
+    // Quadratic convergence: the next update about this one squared.
+    if (!seeking && o.update <= Tolerances::kSeekExtrema * std::sqrt(options_.tol) * size) {
+      seeking = true;
+      request_.hold_extrema = false;
     }
     for (int i = 0; i < nu; ++i) z.z[i] += dz[i];
     OntoSection(section, &z);

@@ -72,4 +72,39 @@ TEST(FlowReuse, ANewForcingGivesWhatANewFlowGives) {
   EXPECT_NE(a.end.z, before.end.z);
 }
 
+// Held extrema (FlowRequest::hold_extrema, Newton's early evaluations): the
+// steps and the end of a run that seeks them, to the bit, without their
+// extremes; leaving them out instead changes the steps (the forced field
+// takes a higher order where no roots are sought inside steps). One flow
+// alternating the two shapes keeps both sets of events.
+TEST(FlowReuse, HeldExtremaTakeTheStepsOfARunThatSeeksThem) {
+  ForcedBeltParams p;  // forced_bench's stick-slip belt
+  p.base.mu_s = 0.4, p.base.mu_k = 0.25, p.base.beta = 0.05, p.base.v = 0.2;
+  p.force = 0.3, p.omega = 0.8;
+  const ForcedBelt m(p);
+  FlowOptions o = ForcedBelt::FlowDefaults();
+  o.rtol = o.atol = 1e-12;
+  FlowPoint start;
+  start.z = Eigen::Vector3d(0.1, 0.0, 0.0);
+  start.mode = ModeSet(Mode::kSlipBelow);
+  FlowRequest seek;
+  seek.t_max = 30;
+  seek.variational = true;
+  seek.extrema = {0, 1};
+  FlowRequest held = seek, none = seek;
+  held.hold_extrema = true;
+  none.extrema.clear();
+  Flow flow{m, o}, fresh{m, o};
+  const FlowRun a = flow.Run(start, seek), b = flow.Run(start, held);
+  const FlowRun c = flow.Run(start, seek), n = fresh.Run(start, none);
+  EXPECT_GT(a.sticks, 0);
+  EXPECT_EQ(b.steps, a.steps);
+  EXPECT_EQ(b.end.t, a.end.t);
+  EXPECT_EQ(b.end.z, a.end.z);
+  EXPECT_EQ(b.jacobian, a.jacobian);
+  EXPECT_GT(a.hi[0], b.hi[0]);  // held: x's largest at a switch or an end only
+  ExpectSame(c, a);
+  EXPECT_LT(n.steps, a.steps);
+}
+
 }  // namespace

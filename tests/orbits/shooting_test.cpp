@@ -120,6 +120,15 @@ TEST(Shooting, StroboscopicMapFindsDenHartogsNonStopOrbits) {
     EXPECT_EQ(o.crossings, 2);
     EXPECT_NEAR(o.period, 2 * M_PI / w, 1e-15 * o.period);
     EXPECT_EQ(o.multipliers.size(), 2u);
+    // From the orbit itself Newton converges at once, on an evaluation that
+    // held its extremes back: it is run again for them.
+    const PeriodicOrbit again = shooting.Find(o.start, PoincareSection::Stroboscopic(m, z, 1));
+    ASSERT_TRUE(again.ok()) << again.message;
+    EXPECT_EQ(again.iterations, 1);
+    ASSERT_EQ(again.hi.size(), 2);
+    EXPECT_NEAR(again.hi[0], X, 1e-9) << "Omega = " << w;
+    EXPECT_NEAR(again.lo[0], -X, 1e-9) << "Omega = " << w;
+    EXPECT_EQ(again.crossings, 2);
   }
 }
 

@@ -122,7 +122,9 @@ class Shooting {
   /// Newton from `guess` (kTime: its mode is Filippov's at the state; event
   /// sections: its mode is trusted). Throws InvalidArgument for a section
   /// the system cannot have (a contact out of range, an event section on a
-  /// system with several clocks, returns < 1).
+  /// system with several clocks, returns < 1). Only the evaluations near
+  /// convergence seek the extremes (ShootingOptions::extrema): the orbit's
+  /// are those of the evaluation at its start.
   PeriodicOrbit Find(const FlowPoint& guess, const PoincareSection& section);
 
   /// One evaluation of the map at z, no Newton (a continuation's residual):
