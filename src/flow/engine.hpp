@@ -133,7 +133,7 @@ class Engine {
   std::vector<double> switched_at_;                // per contact: its last switch's t
   // The segment's problem; the events of the last few modes (a mode's
   // events, the roles of its functions, the extremum components each
-  // records, its arrivals), reused while the request keeps its shape.
+  // records, its arrivals), reused by runs of the shape it was built for.
   SegmentProblem problem_;
   struct EventSet {
     bool used = false;

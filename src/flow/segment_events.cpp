@@ -157,7 +157,6 @@ void Engine::BuildEvents(EventSet& set) {
 
 namespace stickslip::flow_detail {
 
-// A normal force falling to 0 ends the run (kContactOpen), in every mode.
 int Engine::AddFunction(EventSet& set, const EventFunction& f) {
   const int i = set.events.Add(f);
   if (i == static_cast<int>(set.roles.size())) {
@@ -193,6 +192,7 @@ void Engine::AddExtremumEvents(EventSet& set) {
   }
 }
 
+// A normal force falling to 0 ends the run (kContactOpen), in every mode.
 void Engine::AddOpenEvents(EventSet& set) {
   EventList& ev = set.events;
   for (int i = 0; i < k_; ++i) {

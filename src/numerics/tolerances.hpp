@@ -325,7 +325,7 @@ struct Tolerances : FixedTolerances {
   // Shooting: a Newton step over kNewtonCap (1 + |z|) is cut to it (damped Newton).
   static constexpr double kNewtonCap = 0.5;
   // Shooting: Newton's evaluations seek the orbit's extremes once an update is below
-  // kSeekExtrema sqrt(tol) (1 + |z|): the next one, about its square, then likely converges.
+  // kSeekExtrema sqrt(tol) (1 + |z|): quadratic convergence then ends within about two more.
   static constexpr double kSeekExtrema = 100;
   // Batched stroboscopic orbits: a fixed point of P^m is one of P^d if P^d moves it by at most
   // kLeastPeriod (1 + |z|) (the Newton tolerance's 1e-12 times the map's error growth).

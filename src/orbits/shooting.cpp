@@ -143,12 +143,19 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
   Prepare(z, section);  // Newton in z only: no parameter column
   // The extremes are the converged evaluation's alone: Newton's iterates
   // hold them back (the same steps, to the bit, without their roots) until
-  // an update foretells convergence, and a converged evaluation that held
-  // them back is run again for them. (CVODE's are its step ends.)
+  // an update is small enough that convergence is near, and a converged
+  // evaluation that held them back is run again for them. A held run that
+  // fails is run again seeking them (a segment's step cap counts from the
+  // last root passed, extrema's included). (CVODE's are its step ends.)
   bool seeking = request_.extrema.empty() || !request_.extrema_in_steps;
   request_.hold_extrema = !seeking;
   for (o.iterations = 1; o.iterations <= options_.max_newton; ++o.iterations) {
-    if (!Evaluate(z, section, &o)) return o;
+    if (!Evaluate(z, section, &o)) {
+      if (seeking) return o;
+      seeking = true;
+      request_.hold_extrema = false;
+      if (!Evaluate(z, section, &o)) return o;
+    }
     if (!dp_.allFinite() || !r_.allFinite()) {  // g . f = 0: a tangential arrival
       o.status = OrbitStatus::kSingular;
       o.message = "the map's Jacobian is not finite (a tangential arrival on the section) at t = " +

@@ -129,6 +129,14 @@ TEST(Shooting, StroboscopicMapFindsDenHartogsNonStopOrbits) {
     EXPECT_NEAR(again.hi[0], X, 1e-9) << "Omega = " << w;
     EXPECT_NEAR(again.lo[0], -X, 1e-9) << "Omega = " << w;
     EXPECT_EQ(again.crossings, 2);
+    // Its re-run seeks them on the steps of one evaluation at its start.
+    Eigen::VectorXd r;
+    PeriodicOrbit mapped;
+    ASSERT_TRUE(
+        shooting.Map(again.start, PoincareSection::Stroboscopic(m, z, 1), true, &r, &mapped));
+    EXPECT_EQ(mapped.lo, again.lo);
+    EXPECT_EQ(mapped.hi, again.hi);
+    EXPECT_EQ(mapped.period, again.period);
   }
 }
 

@@ -88,11 +88,13 @@ struct FlowRequest {
   /// of their derivatives when extrema_in_steps, else at step ends.
   std::vector<int> extrema;
   bool extrema_in_steps = true;
-  /// With extrema_in_steps: their roots are not sought, but every step is
-  /// the one a run seeking them takes (the Taylor field keeps its order for
-  /// roots inside steps), so the run ends in the same state to the bit; lo
-  /// and hi then hold the start, the switches and the end only. For
-  /// Newton's evaluations before the last (Shooting::Find).
+  /// Taylor, with extrema_in_steps: their roots are not sought, but every
+  /// step is the one a run seeking them takes (the Taylor field keeps its
+  /// order for roots inside steps), so the run ends in the same state to the
+  /// bit; lo and hi then hold the start, the switches and the end only. One
+  /// exception: max_steps counts a segment's steps from the last root passed,
+  /// and a held run passes none of the extrema's. For Newton's evaluations
+  /// before the last (Shooting::Find).
   bool hold_extrema = false;
   long max_steps = 0;  ///< > 0: at most this many steps per run (kTooMuchWork)
   /// Samples at output_origin + k output_dt (k an integer; the start's t
