@@ -147,13 +147,12 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
   // evaluation that held them back is run again for them. A held run that
   // fails is run again seeking them (a segment's step cap counts from the
   // last root passed, extrema's included). (CVODE's are its step ends.)
-  bool seeking = request_.extrema.empty() || !request_.extrema_in_steps;
-  request_.hold_extrema = !seeking;
+  bool& held = request_.hold_extrema;
+  held = !request_.extrema.empty() && request_.extrema_in_steps;
   for (o.iterations = 1; o.iterations <= options_.max_newton; ++o.iterations) {
     if (!Evaluate(z, section, &o)) {
-      if (seeking) return o;
-      seeking = true;
-      request_.hold_extrema = false;
+      if (!held) return o;
+      held = false;
       if (!Evaluate(z, section, &o)) return o;
     }
     if (!dp_.allFinite() || !r_.allFinite()) {  // g . f = 0: a tangential arrival
@@ -178,8 +177,8 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
     o.update = MaxAbs(dz);
     dp_.diagonal().array() += 1.0;
     if (o.update <= options_.tol * size) {
-      if (!seeking) {  // once more, for the extremes
-        request_.hold_extrema = false;
+      if (held) {  // once more, for the extremes
+        held = false;
         if (!Evaluate(z, section, &o)) return o;
         // DP as the Newton step leaves it, (DP - I) + I: the bits of an
         // evaluation that sought them.
@@ -190,11 +189,8 @@ PeriodicOrbit Shooting::Find(const FlowPoint& guess, const PoincareSection& sect
       o.status = OrbitStatus::kOk;
       return o;
     }
-    // Quadratic convergence: the next update about this one squared.
-    if (!seeking && o.update <= Tolerances::kSeekExtrema * std::sqrt(options_.tol) * size) {
-      seeking = true;
-      request_.hold_extrema = false;
-    }
+    // Quadratic convergence: within about two more evaluations.
+    if (o.update <= Tolerances::kSeekExtrema * std::sqrt(options_.tol) * size) held = false;
     for (int i = 0; i < nu; ++i) z.z[i] += dz[i];
     OntoSection(section, &z);
   }

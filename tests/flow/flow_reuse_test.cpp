@@ -24,6 +24,20 @@ FlowRun RunBelt(Flow& flow, double x0) {
   return flow.Run(start, rq);
 }
 
+// The forced oscillator's slip start at x = 0.1 and a 30-long run with Phi.
+FlowPoint ForcedStart() {
+  FlowPoint start;
+  start.z = Eigen::Vector3d(0.1, 0.0, 0.0);
+  start.mode = ModeSet(Mode::kSlipBelow);
+  return start;
+}
+FlowRequest WithPhi() {
+  FlowRequest rq;
+  rq.t_max = 30;
+  rq.variational = true;
+  return rq;
+}
+
 void ExpectSame(const FlowRun& a, const FlowRun& b) {
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.sticks, b.sticks);
@@ -57,12 +71,8 @@ TEST(FlowReuse, ANewForcingGivesWhatANewFlowGives) {
   ForcedBeltParams p;
   p.force = 0.3, p.omega = 0.8;
   Flow reused{ForcedBelt(p), FlowOptions()};
-  FlowPoint start;
-  start.z = Eigen::Vector3d(0.1, 0.0, 0.0);
-  start.mode = ModeSet(Mode::kSlipBelow);
-  FlowRequest rq;
-  rq.t_max = 30;
-  rq.variational = true;
+  const FlowPoint start = ForcedStart();
+  const FlowRequest rq = WithPhi();
   const FlowRun before = reused.Run(start, rq);
   p.force = 0.5, p.omega = 1.1;
   reused.set_system(ForcedBelt(p));
@@ -84,12 +94,8 @@ TEST(FlowReuse, HeldExtremaTakeTheStepsOfARunThatSeeksThem) {
   const ForcedBelt m(p);
   FlowOptions o = ForcedBelt::FlowDefaults();
   o.rtol = o.atol = 1e-12;
-  FlowPoint start;
-  start.z = Eigen::Vector3d(0.1, 0.0, 0.0);
-  start.mode = ModeSet(Mode::kSlipBelow);
-  FlowRequest seek;
-  seek.t_max = 30;
-  seek.variational = true;
+  const FlowPoint start = ForcedStart();
+  FlowRequest seek = WithPhi();
   seek.extrema = {0, 1};
   FlowRequest held = seek, none = seek;
   held.hold_extrema = true;
